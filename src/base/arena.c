@@ -1,0 +1,104 @@
+/* Bump-pointer arenas: see arena.h. Blocks form a singly linked list; a reset
+ * rewinds to the first block and later allocations walk forward through the
+ * blocks already owned before asking malloc for a new one. */
+#include "base/arena.h"
+
+#include <stdlib.h>
+#include <string.h>
+
+struct arena_block {
+    arena_block *next;
+    size_t size; /* usable bytes after the header */
+    _Alignas(16) unsigned char data[];
+};
+
+enum { ARENA_ALIGN = 16 };
+
+void arena_init(arena *a, size_t block_size)
+{
+    memset(a, 0, sizeof *a);
+    a->block_size = block_size ? block_size : 64 * 1024;
+}
+
+void arena_free(arena *a)
+{
+    arena_block *b = a->first;
+    while (b) {
+        arena_block *next = b->next;
+        free(b);
+        b = next;
+    }
+    a->first = a->head = NULL;
+    a->used = 0;
+}
+
+void arena_reset(arena *a)
+{
+    a->head = a->first;
+    a->used = 0;
+}
+
+void *arena_alloc(arena *a, size_t size)
+{
+    if (size > SIZE_MAX - ARENA_ALIGN)
+        return NULL;
+    size = (size + ARENA_ALIGN - 1) & ~(size_t)(ARENA_ALIGN - 1);
+    if (size == 0)
+        size = ARENA_ALIGN;
+    if (!a->head && a->first) {
+        a->head = a->first;
+        a->used = 0;
+    }
+    while (a->head) {
+        if (a->head->size - a->used >= size) {
+            void *p = a->head->data + a->used;
+            a->used += size;
+            return p;
+        }
+        if (!a->head->next)
+            break;
+        a->head = a->head->next;
+        a->used = 0;
+    }
+    size_t block = size > a->block_size ? size : a->block_size;
+    if (block > SIZE_MAX - sizeof(arena_block))
+        return NULL;
+    arena_block *b = malloc(sizeof(arena_block) + block);
+    if (!b)
+        return NULL;
+    a->block_allocs++;
+    b->size = block;
+    /* Insert after head so blocks already owned further on stay reachable. */
+    if (a->head) {
+        b->next = a->head->next;
+        a->head->next = b;
+    } else {
+        b->next = a->first;
+        a->first = b;
+    }
+    a->head = b;
+    a->used = size;
+    return b->data;
+}
+
+void *arena_calloc(arena *a, size_t count, size_t size)
+{
+    if (size && count > SIZE_MAX / size)
+        return NULL;
+    void *p = arena_alloc(a, count * size);
+    if (p)
+        memset(p, 0, count * size);
+    return p;
+}
+
+arena_mark arena_save(const arena *a)
+{
+    arena_mark m = {a->head, a->used};
+    return m;
+}
+
+void arena_restore(arena *a, arena_mark mark)
+{
+    a->head = mark.block;
+    a->used = mark.used;
+}

@@ -1,0 +1,44 @@
+/* Bump-pointer arenas.
+ *
+ * Scene data (tree nodes, polyhedron planes, names) lives in an arena freed
+ * with the scene. Ray queries use a per-thread scratch arena that is reset
+ * after every pixel sample: arena_reset keeps the blocks it has, so after the
+ * first few samples the render loop allocates nothing. Size arithmetic is
+ * checked for overflow; an allocation that cannot be satisfied returns NULL.
+ */
+#ifndef SPANCAST_BASE_ARENA_H
+#define SPANCAST_BASE_ARENA_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+typedef struct arena_block arena_block;
+
+typedef struct arena {
+    arena_block *head;     /* block being filled */
+    arena_block *first;    /* first block: blocks form a list kept across resets */
+    size_t block_size;     /* minimum size of a new block */
+    size_t used;           /* bytes handed out in head */
+    uint64_t block_allocs; /* malloc calls made, for the no-malloc-in-loop check */
+} arena;
+
+void arena_init(arena *a, size_t block_size);
+/* Frees every block. */
+void arena_free(arena *a);
+/* Forgets every allocation but keeps the blocks for reuse. */
+void arena_reset(arena *a);
+/* Returns size bytes aligned to 16, or NULL when out of memory. */
+void *arena_alloc(arena *a, size_t size);
+/* Returns count * size bytes (zeroed), NULL on overflow or out of memory. */
+void *arena_calloc(arena *a, size_t count, size_t size);
+
+/* Saves and restores the allocation point, to free a temporary tail. */
+typedef struct arena_mark {
+    arena_block *block;
+    size_t used;
+} arena_mark;
+
+arena_mark arena_save(const arena *a);
+void arena_restore(arena *a, arena_mark mark);
+
+#endif

@@ -1,0 +1,135 @@
+/* The compiled CSG tree and its ray queries.
+ *
+ * The scene builder (src/scene/) describes the solid through csg_builder:
+ * leaves (a primitive with its transform and colour) and boolean nodes over
+ * node ids. csg_builder_finish freezes it into an immutable csg_tree: flat
+ * node and leaf arrays, world bounds per node, the scene scale for
+ * tolerances. The renderer only ever sees a const csg_tree.
+ *
+ * Queries (all reentrant; per-call memory comes from a caller-owned scratch
+ * arena, which the caller resets after each pixel sample):
+ *   csg_spans      ALL_SPANS: the full span list within [tmin, tmax];
+ *   csg_first_hit  FIRST_HIT: the first surface crossing within [tmin, tmax];
+ *   csg_any_hit    ANY_HIT: whether any surface lies within [tmin, tmax].
+ * Difference and intersection evaluate their first child first and clip the
+ * others to what is left; a node whose box the ray misses is skipped.
+ */
+#ifndef SPANCAST_CSG_CSG_H
+#define SPANCAST_CSG_CSG_H
+
+#include <stdint.h>
+
+#include "base/arena.h"
+#include "csg/prim.h"
+#include "csg/span.h"
+#include "math/vec.h"
+#include "spancast/spancast.h"
+
+#define CSG_EMPTY UINT32_MAX /* node id of the empty solid */
+
+typedef enum csg_op { CSG_LEAF, CSG_UNION, CSG_INTERSECTION, CSG_DIFFERENCE } csg_op;
+
+typedef struct csg_leaf {
+    prim prim;
+    affine to_world;
+    affine to_local;    /* inverse of to_world */
+    float color[4];     /* RGBA, 0..1 */
+    uint32_t object_id; /* index of the leaf in source order, for the id AOV */
+    sc_location loc;    /* where the leaf was written */
+} csg_leaf;
+
+typedef struct csg_node {
+    csg_op op;
+    uint32_t leaf;        /* CSG_LEAF: index into leaves */
+    uint32_t first_child; /* others: children are child_ids[first_child ..] */
+    uint32_t child_count;
+    bbox bounds; /* world bounds */
+} csg_node;
+
+typedef struct csg_tree {
+    arena mem; /* owns every array below */
+    csg_node *nodes;
+    uint32_t node_count;
+    uint32_t *child_ids;
+    csg_leaf *leaves;
+    uint32_t leaf_count;
+    uint32_t root;  /* CSG_EMPTY when the solid is empty */
+    uint32_t depth; /* levels of boolean nodes above the deepest leaf, + 1 */
+    bbox bounds;    /* world bounds of the root */
+    double scale;   /* characteristic length: max of extent and |coordinates| */
+} csg_tree;
+
+/* ---- building ---- */
+
+typedef struct csg_builder csg_builder;
+
+csg_builder *csg_builder_new(void);
+void csg_builder_free(csg_builder *b);
+
+/* Memory that will belong to the finished tree (polyhedron planes, names).
+ * Returns NULL on allocation failure. */
+void *csg_builder_alloc(csg_builder *b, size_t size);
+
+/* Adds a leaf; to_world must be invertible (the builder of the scene checks
+ * and flattens singular transforms itself). Returns its node id, or
+ * CSG_EMPTY when the allocation failed (see csg_builder_failed). */
+uint32_t csg_builder_leaf(csg_builder *b, const prim *p, const affine *to_world,
+                          const float color[4], sc_location loc);
+
+/* Adds a boolean node over children (node ids, CSG_EMPTY allowed) and
+ * returns its id. Empty operands are simplified away: a union drops them, an
+ * intersection with one is empty, a difference with an empty first operand
+ * is empty and drops empty subtrahends; a node left with one child is that
+ * child; a node with none is CSG_EMPTY. */
+uint32_t csg_builder_op(csg_builder *b, csg_op op, const uint32_t *children,
+                        uint32_t count);
+
+/* 1 when an allocation failed since the builder was made. */
+int csg_builder_failed(const csg_builder *b);
+
+/* Freezes the tree with the given root (CSG_EMPTY for an empty solid) and
+ * frees the builder in every case. On success *out owns the tree (free with
+ * csg_tree_free). */
+sc_status csg_builder_finish(csg_builder *b, uint32_t root, csg_tree **out,
+                             sc_error *error);
+
+void csg_tree_free(csg_tree *t);
+
+/* ---- queries ---- */
+
+typedef struct csg_ray {
+    vec3 o, d; /* d need not be unit length */
+    double tmin, tmax;
+} csg_ray;
+
+typedef struct csg_hit {
+    double t;
+    uint32_t leaf;
+    uint16_t part;
+    uint8_t flip;    /* the surface normal is flipped (subtracted surface) */
+    uint8_t exiting; /* the ray leaves the solid here (its origin was inside) */
+} csg_hit;
+
+/* The scene-relative tolerance, in units of the ray parameter, for rays
+ * from o along d: 1e-9 of the larger of the scene's scale and the distance
+ * from o to the scene, divided by |d|. */
+double csg_eps(const csg_tree *t, vec3 o, vec3 d);
+
+/* ALL_SPANS: the spans of the solid along the ray, clipped to [tmin, tmax]
+ * (a clipped end has leaf SPAN_NO_LEAF). Memory from scratch. Returns 0 on
+ * allocation failure, 1 otherwise. */
+int csg_spans(const csg_tree *t, const csg_ray *r, arena *scratch, span_list *out);
+
+/* FIRST_HIT: 1 and *hit when a surface crosses the ray within [tmin, tmax]. */
+int csg_first_hit(const csg_tree *t, const csg_ray *r, arena *scratch, csg_hit *hit);
+
+/* ANY_HIT: 1 when a surface crosses the ray within [tmin, tmax]. */
+int csg_any_hit(const csg_tree *t, const csg_ray *r, arena *scratch);
+
+/* Unit world normal at a hit, outward from the solid (flip applied). */
+vec3 csg_hit_normal(const csg_tree *t, const csg_ray *r, const csg_hit *hit);
+
+/* Point membership of the whole tree (the oracle for tests). */
+int csg_inside(const csg_tree *t, vec3 p);
+
+#endif

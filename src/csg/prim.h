@@ -1,0 +1,83 @@
+/* Primitives: the leaves of a CSG tree, in their local frame.
+ *
+ * A closed set of kinds dispatched by switch, each with the same small set
+ * of operations:
+ *   prim_bounds  local axis-aligned bounds;
+ *   prim_spans   the span list of a local ray o + t d (all crossings, with
+ *                surface parts; d is not normalised, t means the same point
+ *                as in the world frame);
+ *   prim_normal  outward normal (not normalised) at a local point on the
+ *                given part; called only for the hit that survives the
+ *                booleans;
+ *   prim_inside  point membership, the oracle the tests compare spans with.
+ * Every primitive here is convex, so its span list has at most one span.
+ */
+#ifndef SPANCAST_CSG_PRIM_H
+#define SPANCAST_CSG_PRIM_H
+
+#include <stdint.h>
+
+#include "csg/span.h"
+#include "math/vec.h"
+
+typedef enum prim_kind {
+    PRIM_SPHERE,   /* |p| <= r */
+    PRIM_BOX,      /* lo <= p <= hi */
+    PRIM_CYLINDER, /* frustum along z: z0 <= z <= z1, radius r0 at z0 to r1 at z1 */
+    PRIM_CONVEX,   /* intersection of halfspaces n . p <= d */
+    PRIM_KIND_COUNT
+} prim_kind;
+
+/* A plane n . p = d; inside is n . p <= d. n need not be unit length. */
+typedef struct plane {
+    vec3 n;
+    double d;
+} plane;
+
+typedef struct prim {
+    prim_kind kind;
+    union {
+        struct {
+            double r;
+        } sphere;
+        struct {
+            vec3 lo, hi;
+        } box;
+        struct {
+            double z0, z1; /* z0 < z1 */
+            double r0, r1; /* radii at z0 and z1, >= 0, not both 0 */
+        } cylinder;
+        struct {
+            const plane *planes; /* owned by the scene arena */
+            uint32_t count;
+            bbox bounds; /* of the polyhedron's vertices */
+        } convex;
+    } u;
+} prim;
+
+/* Surface parts. */
+enum {
+    PRIM_PART_SPHERE = 0,
+    /* box: 0 -x, 1 +x, 2 -y, 3 +y, 4 -z, 5 +z */
+    PRIM_PART_CYL_SIDE = 0,
+    PRIM_PART_CYL_BOTTOM = 1,
+    PRIM_PART_CYL_TOP = 2
+    /* convex: the plane index */
+};
+
+bbox prim_bounds(const prim *p);
+
+/* Writes at most cap spans of the local ray to out (sorted, disjoint), with
+ * leaf set in every span end; returns the count. The spans cover the whole
+ * line, not only t >= 0: callers clip. Never NaN or Inf. */
+uint32_t prim_spans(const prim *p, uint32_t leaf, vec3 o, vec3 d, span *out,
+                    uint32_t cap);
+
+vec3 prim_normal(const prim *p, vec3 local_point, uint16_t part);
+
+int prim_inside(const prim *p, vec3 local_point);
+
+/* Upper bound on the spans one ray can produce, for sizing buffers. */
+uint32_t prim_max_spans(const prim *p);
+
+#endif

@@ -1,0 +1,108 @@
+/* Affine transforms and boxes: see vec.h. */
+#include "math/vec.h"
+
+affine affine_identity(void)
+{
+    affine a = {{{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}}};
+    return a;
+}
+
+affine affine_mul(const affine *a, const affine *b)
+{
+    affine r;
+    for (int i = 0; i < 3; i++) {
+        for (int j = 0; j < 4; j++) {
+            double s = a->m[i][0] * b->m[0][j] + a->m[i][1] * b->m[1][j] +
+                       a->m[i][2] * b->m[2][j];
+            if (j == 3)
+                s += a->m[i][3];
+            r.m[i][j] = s;
+        }
+    }
+    return r;
+}
+
+double affine_det(const affine *a)
+{
+    const double(*m)[4] = a->m;
+    return m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) -
+           m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
+           m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
+}
+
+/* The linear part is called singular when |det| <= 1e-14 * (product of its
+ * row lengths): by Hadamard's inequality |det| never exceeds that product,
+ * so the ratio is a scale-free measure of how flat the map is, and 1e-14
+ * leaves the inverse's entries well inside double precision. */
+int affine_invert(const affine *a, affine *out)
+{
+    const double(*m)[4] = a->m;
+    double det = affine_det(a);
+    double rows = 1.0;
+    for (int i = 0; i < 3; i++)
+        rows *= sqrt(m[i][0] * m[i][0] + m[i][1] * m[i][1] + m[i][2] * m[i][2]);
+    if (!isfinite(det) || !(fabs(det) > 1e-14 * rows))
+        return 0;
+    double id = 1.0 / det;
+    affine r;
+    r.m[0][0] = (m[1][1] * m[2][2] - m[1][2] * m[2][1]) * id;
+    r.m[0][1] = (m[0][2] * m[2][1] - m[0][1] * m[2][2]) * id;
+    r.m[0][2] = (m[0][1] * m[1][2] - m[0][2] * m[1][1]) * id;
+    r.m[1][0] = (m[1][2] * m[2][0] - m[1][0] * m[2][2]) * id;
+    r.m[1][1] = (m[0][0] * m[2][2] - m[0][2] * m[2][0]) * id;
+    r.m[1][2] = (m[0][2] * m[1][0] - m[0][0] * m[1][2]) * id;
+    r.m[2][0] = (m[1][0] * m[2][1] - m[1][1] * m[2][0]) * id;
+    r.m[2][1] = (m[0][1] * m[2][0] - m[0][0] * m[2][1]) * id;
+    r.m[2][2] = (m[0][0] * m[1][1] - m[0][1] * m[1][0]) * id;
+    for (int i = 0; i < 3; i++)
+        r.m[i][3] = -(r.m[i][0] * m[0][3] + r.m[i][1] * m[1][3] + r.m[i][2] * m[2][3]);
+    *out = r;
+    return 1;
+}
+
+bbox bbox_empty(void)
+{
+    bbox b = {{INFINITY, INFINITY, INFINITY}, {-INFINITY, -INFINITY, -INFINITY}};
+    return b;
+}
+
+bbox bbox_union(bbox a, bbox b)
+{
+    if (bbox_is_empty(&a))
+        return b;
+    if (bbox_is_empty(&b))
+        return a;
+    bbox r = {v3_min(a.lo, b.lo), v3_max(a.hi, b.hi)};
+    return r;
+}
+
+bbox bbox_intersect(bbox a, bbox b)
+{
+    bbox r = {v3_max(a.lo, b.lo), v3_min(a.hi, b.hi)};
+    if (r.lo.x > r.hi.x || r.lo.y > r.hi.y || r.lo.z > r.hi.z)
+        return bbox_empty();
+    return r;
+}
+
+bbox bbox_add_point(bbox b, vec3 p)
+{
+    if (bbox_is_empty(&b)) {
+        bbox r = {p, p};
+        return r;
+    }
+    bbox r = {v3_min(b.lo, p), v3_max(b.hi, p)};
+    return r;
+}
+
+bbox bbox_transform(const affine *a, bbox b)
+{
+    if (bbox_is_empty(&b))
+        return b;
+    bbox r = bbox_empty();
+    for (int i = 0; i < 8; i++) {
+        vec3 c =
+            v3(i & 1 ? b.hi.x : b.lo.x, i & 2 ? b.hi.y : b.lo.y, i & 4 ? b.hi.z : b.lo.z);
+        r = bbox_add_point(r, affine_point(a, c));
+    }
+    return r;
+}
