@@ -77,7 +77,7 @@ static contract make_contract(v3d eye, v3d center, double fov_deg, int w, int h,
     v3d fz = cross(c.f, z);
     c.r = unit(dot(fz, fz) > 0 ? fz : cross(c.f, y));
     c.u = cross(c.r, c.f);
-    c.a = tan(fov_deg * M_PI / 360.0);
+    c.a = tan(fov_deg * 3.14159265358979323846 / 360.0);
     c.dist = sqrt(dot(sub(center, eye), sub(center, eye)));
     c.w = w;
     c.h = h;

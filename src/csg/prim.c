@@ -237,7 +237,7 @@ static uint32_t cylinder_spans(const prim *p, uint32_t leaf, vec3 o, vec3 d, spa
              * inside too. Rounding near the apex can make both meet it;
              * then that convexity argument says the whole slab interval is
              * the answer. */
-            int first = lo >= t_in;  /* (-inf, lo] meets [t_in, t_out] */
+            int first = lo >= t_in;   /* (-inf, lo] meets [t_in, t_out] */
             int second = hi <= t_out; /* [hi, inf) meets it */
             if (first && second) {
                 /* keep the slab interval */
@@ -326,8 +326,7 @@ bbox prim_bounds(const prim *p)
     return b;
 }
 
-uint32_t prim_spans(const prim *p, uint32_t leaf, vec3 o, vec3 d, span *out,
-                    uint32_t cap)
+uint32_t prim_spans(const prim *p, uint32_t leaf, vec3 o, vec3 d, span *out, uint32_t cap)
 {
     /* A zero direction is no ray: every t names the same point. */
     if (!(v3_dot(d, d) > 0) || !v3_is_finite(o) || !v3_is_finite(d))
@@ -363,8 +362,8 @@ vec3 prim_normal(const prim *p, vec3 q, uint16_t part)
             return v3(0, 0, -1);
         if (part == PRIM_PART_CYL_TOP)
             return v3(0, 0, 1);
-        double s = (p->u.cylinder.r1 - p->u.cylinder.r0) /
-                   (p->u.cylinder.z1 - p->u.cylinder.z0);
+        double s =
+            (p->u.cylinder.r1 - p->u.cylinder.r0) / (p->u.cylinder.z1 - p->u.cylinder.z0);
         /* (x, y, -s w(z)) with w(z) replaced by the point's own radius
          * rho = |(x, y)|: on the surface the two agree, and for a point that
          * rounding left slightly off it this stays rho (x/rho, y/rho, -s),

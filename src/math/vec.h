@@ -146,8 +146,12 @@ static inline vec3 bbox_extent(const bbox *b)
 
 /* Slab test of the ray o + t d against b, restricted to [*t0, *t1]; narrows
  * them to the overlap and returns 1 when it is not empty. A zero direction
- * component is handled by IEEE infinities; the comparison is written so
- * that NaN (0 * inf at a slab on the plane) keeps the interval. */
+ * component is handled by IEEE infinities: off the slab both ends are
+ * infinite of the same sign (a miss), inside it of opposite signs (no
+ * bound). With the origin on one of the slab's planes that end is
+ * 0 * inf = NaN while the other is infinite; the closed slab then holds the
+ * whole line, so the axis is skipped (ordering a NaN against the other end
+ * would instead drop the ray). */
 static inline int bbox_ray(const bbox *b, vec3 o, vec3 inv_d, double *t0, double *t1)
 {
     double lo = *t0, hi = *t1;
@@ -155,6 +159,8 @@ static inline int bbox_ray(const bbox *b, vec3 o, vec3 inv_d, double *t0, double
     for (int k = 0; k < 3; k++) {
         double ta = (blo[k] - bo[k]) * bi[k];
         double tb = (bhi[k] - bo[k]) * bi[k];
+        if (isnan(ta) || isnan(tb))
+            continue;
         double tn = ta < tb ? ta : tb;
         double tf = ta < tb ? tb : ta;
         if (tn > lo)

@@ -1,0 +1,1055 @@
+/* Tests of src/csg/csg.c through csg_builder and the three queries.
+ *
+ * 1. Coincident faces. difference() { cube(10); cube([10, 10, 5]); } and
+ *    two cubes sharing a face, whose exact solids are boxes, under the
+ *    identity and under rotations by non-axis angles (with a mirror and a
+ *    non-uniform scale): grids of rays through the shared faces from many
+ *    directions, including rays lying in the coincident planes, must give
+ *    the box's span (no slivers, no speckles), and the first hit must lie on
+ *    the box face that the ray enters.
+ * 2. The property test. Seeded random trees (every primitive kind, boolean
+ *    depth 4, random affine maps with mirrors and non-uniform scales
+ *    composed down the tree) and random rays through their bounds: every
+ *    span list is sorted, disjoint and finite, agrees with csg_inside
+ *    sampled along the ray (inside each span, in each gap, just beyond
+ *    every end, and at random) except within a tolerance of a span end, and
+ *    csg_first_hit / csg_any_hit agree with it.
+ * 3. Bounds culling. Every ray of (2) is also evaluated by brute force
+ *    (every leaf, no boxes, no clipping of the operands) and the two span
+ *    lists must be identical; rays that miss the root's box yield nothing.
+ */
+#include <math.h>
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <string.h>
+#include <time.h>
+
+#include <cmocka.h>
+
+#include "csg/csg.h"
+
+static const double PI = 3.14159265358979323846;
+
+static const float white[4] = {1, 1, 1, 1};
+static const sc_location no_loc = {NULL, 0, 0};
+
+/* ---- random numbers (xorshift64*, seeded per test) ---- */
+
+typedef struct rng {
+    uint64_t s;
+} rng;
+
+static uint64_t next_u64(rng *r)
+{
+    r->s ^= r->s >> 12;
+    r->s ^= r->s << 25;
+    r->s ^= r->s >> 27;
+    return r->s * 0x2545F4914F6CDD1DULL;
+}
+
+static double uniform(rng *r)
+{
+    return (double)(next_u64(r) >> 11) * 0x1p-53;
+}
+
+static double uniform_in(rng *r, double lo, double hi)
+{
+    return lo + (hi - lo) * uniform(r);
+}
+
+static uint32_t below(rng *r, uint32_t n)
+{
+    return (uint32_t)(next_u64(r) % n);
+}
+
+static vec3 unit_vector(rng *r)
+{
+    for (;;) {
+        vec3 v = v3(uniform_in(r, -1, 1), uniform_in(r, -1, 1), uniform_in(r, -1, 1));
+        double l = v3_dot(v, v);
+        if (l > 1e-4 && l <= 1)
+            return v3_scale(v, 1 / sqrt(l));
+    }
+}
+
+/* ---- affine maps ---- */
+
+/* Rotation by angle about the unit axis (Rodrigues). */
+static affine rotation(vec3 axis, double angle)
+{
+    vec3 k = v3_normalize(axis);
+    double c = cos(angle), s = sin(angle), u = 1 - c;
+    affine a = {
+        {{c + k.x * k.x * u, k.x * k.y * u - k.z * s, k.x * k.z * u + k.y * s, 0},
+         {k.y * k.x * u + k.z * s, c + k.y * k.y * u, k.y * k.z * u - k.x * s, 0},
+         {k.z * k.x * u - k.y * s, k.z * k.y * u + k.x * s, c + k.z * k.z * u, 0}}};
+    return a;
+}
+
+static affine scaling(vec3 s)
+{
+    affine a = {{{s.x, 0, 0, 0}, {0, s.y, 0, 0}, {0, 0, s.z, 0}}};
+    return a;
+}
+
+static affine translation(vec3 t)
+{
+    affine a = affine_identity();
+    a.m[0][3] = t.x;
+    a.m[1][3] = t.y;
+    a.m[2][3] = t.z;
+    return a;
+}
+
+/* translate * rotate * scale, scale per axis in [0.2, 5] (log-uniform) with
+ * a random sign, so mirrors and strong non-uniform scales are common. */
+static affine random_affine(rng *r)
+{
+    vec3 s;
+    double *sv = &s.x;
+    for (int k = 0; k < 3; k++) {
+        sv[k] = exp(uniform_in(r, log(0.2), log(5.0)));
+        if (next_u64(r) & 1)
+            sv[k] = -sv[k];
+    }
+    affine rs = scaling(s);
+    affine rot = rotation(unit_vector(r), uniform_in(r, 0, 2 * PI));
+    affine tr =
+        translation(v3(uniform_in(r, -1, 1), uniform_in(r, -1, 1), uniform_in(r, -1, 1)));
+    affine a = affine_mul(&rot, &rs);
+    return affine_mul(&tr, &a);
+}
+
+/* ---- span list checks shared by the tests ---- */
+
+static int list_is_well_formed(const csg_tree *t, const csg_ray *ray, span_list s)
+{
+    for (uint32_t i = 0; i < s.n; i++) {
+        const span *v = &s.v[i];
+        if (!isfinite(v->in.t) || !isfinite(v->out.t) || !(v->in.t <= v->out.t))
+            return 0;
+        if (v->in.t < ray->tmin || v->out.t > ray->tmax)
+            return 0;
+        if (i > 0 && !(s.v[i - 1].out.t < v->in.t))
+            return 0;
+        const span_end *ends[2] = {&v->in, &v->out};
+        for (int k = 0; k < 2; k++) {
+            if (ends[k]->leaf == SPAN_NO_LEAF) {
+                /* Only a clipped end refers to no surface. */
+                if (ends[k]->t != ray->tmin && ends[k]->t != ray->tmax)
+                    return 0;
+            } else if (ends[k]->leaf >= t->leaf_count) {
+                return 0;
+            }
+        }
+    }
+    return 1;
+}
+
+/* csg_first_hit must report the first span end at or after tmin that lies
+ * on a surface, and csg_any_hit whether there is one. */
+static int first_hit_agrees(const csg_tree *t, const csg_ray *ray, span_list s,
+                            arena *scratch)
+{
+    const span_end *want = NULL;
+    int exiting = 0;
+    if (s.n > 0) {
+        if (s.v[0].in.leaf != SPAN_NO_LEAF) {
+            want = &s.v[0].in;
+        } else if (s.v[0].out.leaf != SPAN_NO_LEAF) {
+            want = &s.v[0].out;
+            exiting = 1;
+        }
+    }
+    csg_hit hit;
+    int got = csg_first_hit(t, ray, scratch, &hit);
+    if (got != (want != NULL) || csg_any_hit(t, ray, scratch) != got)
+        return 0;
+    if (!got)
+        return 1;
+    if (hit.t != want->t || hit.leaf != want->leaf || hit.part != want->part ||
+        hit.flip != want->flip || hit.exiting != exiting)
+        return 0;
+    vec3 n = csg_hit_normal(t, ray, &hit);
+    return v3_is_finite(n) && fabs(v3_length(n) - 1) < 1e-12;
+}
+
+/* ---- 1. coincident faces ---- */
+
+typedef struct box_scene {
+    const char *name;
+    csg_tree *tree;
+    bbox exact;      /* the solid, a box, in model coordinates */
+    bbox leaves[2];  /* the two cubes, in model coordinates */
+    affine to_world; /* model to world */
+    int map;         /* index of to_world in the test's list */
+} box_scene;
+
+static uint32_t add_box(csg_builder *b, vec3 lo, vec3 hi, const affine *to_world)
+{
+    prim p = {.kind = PRIM_BOX};
+    p.u.box.lo = lo;
+    p.u.box.hi = hi;
+    uint32_t id = csg_builder_leaf(b, &p, to_world, white, no_loc);
+    assert_int_not_equal(id, CSG_EMPTY);
+    return id;
+}
+
+static csg_tree *finish(csg_builder *b, uint32_t root)
+{
+    csg_tree *t = NULL;
+    sc_error err;
+    assert_int_equal(csg_builder_finish(b, root, &t, &err), SC_OK);
+    assert_non_null(t);
+    return t;
+}
+
+/* The scenes, under the model-to-world map m:
+ *   0 difference() { cube(10); cube([10, 10, 5]); }       -> [0,10]^2 x [5,10]
+ *   1 the same with the subtrahend written as
+ *     scale([1, 1, 0.5]) cube(10) (a different map, so its faces coincide
+ *     with the first cube's only up to rounding)            -> [0,10]^2 x [5,10]
+ *   2 union() { cube(10); translate([10, 0, 0]) cube(10); } -> [0,20] x [0,10]^2 */
+static box_scene make_box_scene(int which, const affine *m)
+{
+    box_scene s = {0};
+    s.to_world = *m;
+    csg_builder *b = csg_builder_new();
+    assert_non_null(b);
+    vec3 zero = v3(0, 0, 0), ten = v3(10, 10, 10);
+    uint32_t kids[2];
+    kids[0] = add_box(b, zero, ten, m);
+    if (which == 0) {
+        s.name = "difference, same map";
+        kids[1] = add_box(b, zero, v3(10, 10, 5), m);
+        s.tree = finish(b, csg_builder_op(b, CSG_DIFFERENCE, kids, 2));
+        s.exact = (bbox){v3(0, 0, 5), ten};
+        s.leaves[1] = (bbox){zero, v3(10, 10, 5)};
+    } else if (which == 1) {
+        s.name = "difference, scaled subtrahend";
+        affine half = scaling(v3(1, 1, 0.5));
+        affine mb = affine_mul(m, &half);
+        kids[1] = add_box(b, zero, ten, &mb);
+        s.tree = finish(b, csg_builder_op(b, CSG_DIFFERENCE, kids, 2));
+        s.exact = (bbox){v3(0, 0, 5), ten};
+        s.leaves[1] = (bbox){zero, v3(10, 10, 5)};
+    } else {
+        s.name = "union sharing a face";
+        affine shift = translation(v3(10, 0, 0));
+        affine mb = affine_mul(m, &shift);
+        kids[1] = add_box(b, zero, ten, &mb);
+        s.tree = finish(b, csg_builder_op(b, CSG_UNION, kids, 2));
+        s.exact = (bbox){zero, v3(20, 10, 10)};
+        s.leaves[1] = (bbox){v3(10, 0, 0), v3(20, 10, 10)};
+    }
+    s.leaves[0] = (bbox){zero, ten};
+    return s;
+}
+
+/* The exact span of the model-space ray o + t d (|d| = 1) in the box, and
+ * whether the ray is a graze: lying within tol of the plane of a face it is
+ * parallel to, or meeting the box in no more than tol. A graze may give the
+ * span or nothing. *face is the entered face (box part numbering). */
+static int exact_box_span(const bbox *b, vec3 o, vec3 d, double tol, double *t0,
+                          double *t1, int *face, int *graze)
+{
+    const double *po = &o.x, *pd = &d.x, *lo = &b->lo.x, *hi = &b->hi.x;
+    double a = -INFINITY, z = INFINITY;
+    *graze = 0;
+    *face = -1;
+    for (int k = 0; k < 3; k++) {
+        if (fabs(pd[k]) < 1e-12) {
+            if (fabs(po[k] - lo[k]) <= tol || fabs(po[k] - hi[k]) <= tol)
+                *graze = 1;
+            if (po[k] < lo[k] || po[k] > hi[k])
+                return 0;
+            continue;
+        }
+        double ta = (lo[k] - po[k]) / pd[k], tb = (hi[k] - po[k]) / pd[k];
+        double tn = fmin(ta, tb), tf = fmax(ta, tb);
+        if (tn > a) {
+            a = tn;
+            *face = 2 * k + (pd[k] > 0 ? 0 : 1);
+        }
+        z = fmin(z, tf);
+    }
+    if (z - a <= 1e-6) /* a corner or an edge: a point, or a sliver eps removes */
+        *graze = 1;
+    if (!(a <= z))
+        return 0;
+    *t0 = a;
+    *t1 = z;
+    return 1;
+}
+
+/* Whether the model point p on the entered face lies within tol of an edge
+ * of the solid or of one of its two cubes. There two faces meet and either
+ * may be reported: where the ray enters the union through the edge that a
+ * cube's face shares with the seam plane x = 10, the cube on the far side
+ * enters through that edge and its tie between two slabs decides which face
+ * it names (the other cube's span there has length zero and is gone), so
+ * the seam face may be named even though the union's surface there is the
+ * other one. Only rays that meet the edge exactly see this. */
+static int near_edge(const box_scene *s, vec3 p, int face, double tol)
+{
+    const bbox *boxes[3] = {&s->exact, &s->leaves[0], &s->leaves[1]};
+    for (int k = 0; k < 3; k++) {
+        if (k == face / 2)
+            continue;
+        double x = v3_get(p, k);
+        for (int i = 0; i < 3; i++) {
+            if (fabs(x - v3_get(boxes[i]->lo, k)) <= tol ||
+                fabs(x - v3_get(boxes[i]->hi, k)) <= tol)
+                return 1;
+        }
+    }
+    return 0;
+}
+
+typedef struct coincident_stats {
+    long rays, grazes, seams, seam_cracks, spans, failures;
+} coincident_stats;
+
+static void shoot_box_scene(const box_scene *s, vec3 target, vec3 dir, arena *scratch,
+                            coincident_stats *st)
+{
+    const double tol = 1e-9; /* model units: 1e-10 of the scene's size */
+    vec3 d = v3_normalize(dir);
+    vec3 o = v3_madd(target, d, -40);
+    csg_ray ray = {affine_point(&s->to_world, o), affine_vector(&s->to_world, d), 0,
+                   INFINITY};
+    double e0 = 0, e1 = 0;
+    int face, graze;
+    int want = exact_box_span(&s->exact, o, d, tol, &e0, &e1, &face, &graze);
+    span_list got;
+    assert_true(csg_spans(s->tree, &ray, scratch, &got));
+    assert_true(list_is_well_formed(s->tree, &ray, got));
+    assert_true(first_hit_agrees(s->tree, &ray, got, scratch));
+    /* A ray in the plane of a cube's face inside the solid (the seam
+     * x = 10 of the union, the plane z = 5 where the subtrahend's top meets
+     * the remaining solid's bottom is a face, not a seam). Under the
+     * identity it lies exactly in that plane in both cubes' frames and must
+     * give the whole span. Under any other map each cube's frame holds its
+     * own rounding of it, about 1e-16 of the scene's size to either side,
+     * and where the two roundings fall on the outer sides of the seam the
+     * ray misses both cubes: a crack as wide as the rounding, which no
+     * tolerance along the ray can close. Such rays are counted and checked
+     * like grazes. */
+    int seam = 0;
+    for (int k = 0; k < 3; k++) {
+        double dk = v3_get(d, k), ok_ = v3_get(o, k);
+        for (int i = 0; i < 2 && fabs(dk) < 1e-12; i++) {
+            double planes[2] = {v3_get(s->leaves[i].lo, k), v3_get(s->leaves[i].hi, k)};
+            for (int j = 0; j < 2; j++) {
+                if (fabs(ok_ - planes[j]) <= tol && ok_ > v3_get(s->exact.lo, k) + tol &&
+                    ok_ < v3_get(s->exact.hi, k) - tol)
+                    seam = 1;
+            }
+        }
+    }
+    int loose = graze || (seam && s->map != 0);
+    st->rays++;
+    st->grazes += graze;
+    st->seams += seam;
+    st->spans += got.n;
+    int ok = 1;
+    if (loose) {
+        /* The ray lies within rounding of a face plane: its rounded copy in
+         * each leaf's frame may cross that plane anywhere, so any part of
+         * the exact span may show, but nothing outside it. */
+        for (uint32_t i = 0; ok && i < got.n; i++)
+            ok = want && got.v[i].in.t >= e0 - tol && got.v[i].out.t <= e1 + tol;
+        if (seam && !graze && got.n != 1)
+            st->seam_cracks++;
+    } else {
+        ok = (int)got.n == want;
+        if (ok && got.n == 1)
+            ok = fabs(got.v[0].in.t - e0) <= tol && fabs(got.v[0].out.t - e1) <= tol;
+    }
+    if (ok && got.n == 1 && !loose && !near_edge(s, v3_madd(o, d, e0), face, tol)) {
+        /* The first hit is on the entered face: its world normal is the
+         * face's model normal carried to the world. */
+        csg_hit hit;
+        assert_true(csg_first_hit(s->tree, &ray, scratch, &hit));
+        vec3 n = csg_hit_normal(s->tree, &ray, &hit);
+        vec3 fn = v3(0, 0, 0);
+        double sign = (face & 1) ? 1 : -1;
+        if (face / 2 == 0)
+            fn.x = sign;
+        else if (face / 2 == 1)
+            fn.y = sign;
+        else
+            fn.z = sign;
+        affine to_model;
+        assert_true(affine_invert(&s->to_world, &to_model));
+        vec3 wn = v3_normalize(affine_vector_transposed(&to_model, fn));
+        ok = v3_length(v3_sub(n, wn)) < 1e-9;
+        if (!ok && st->failures < 10)
+            print_error(
+                "normal (%g %g %g) (leaf %u part %u flip %u), expected (%g %g %g) "
+                "face %d\n",
+                n.x, n.y, n.z, hit.leaf, hit.part, hit.flip, wn.x, wn.y, wn.z, face);
+    }
+    if (!ok && ++st->failures <= 10) {
+        print_error(
+            "%s (map %d): ray through (%.17g %.17g %.17g) along (%.17g %.17g %.17g): "
+            "expected %d span [%.17g, %.17g]%s, got %u",
+            s->name, s->map, target.x, target.y, target.z, d.x, d.y, d.z, want, e0, e1,
+            graze ? " (graze)" : "", got.n);
+        for (uint32_t i = 0; i < got.n; i++)
+            print_error(" [%.17g, %.17g]", got.v[i].in.t, got.v[i].out.t);
+        print_error("\n");
+    }
+    arena_reset(scratch);
+}
+
+/* Directions: along each axis both ways, in each coordinate plane, and
+ * oblique. With the grids below, the axis and in-plane directions put rays
+ * exactly in the coincident planes and along the shared edges. */
+static const double directions[][3] = {
+    {1, 0, 0},    {-1, 0, 0},   {0, 1, 0},       {0, -1, 0},     {0, 0, 1},
+    {0, 0, -1},   {1, 1, 0},    {1, -2, 0},      {0, 1, 1},      {0, -1, 3},
+    {1, 0, 1},    {-2, 0, 1},   {0.3, -0.2, 1},  {1, 0.7, -0.4}, {-0.6, 0.8, 0.1},
+    {-1, -1, -1}, {1, 1e-3, 0}, {0.05, 1, -0.02}};
+
+static void test_coincident_faces(void **state)
+{
+    (void)state;
+    affine maps[4];
+    maps[0] = affine_identity();
+    {
+        affine r = rotation(v3(1, 2, 3), 0.7), t = translation(v3(3, -2, 1));
+        maps[1] = affine_mul(&t, &r);
+    }
+    {
+        /* A mirror and a non-uniform scale under a rotation by 2.1 rad. */
+        affine r = rotation(v3(-2, 1, 0.5), 2.1), s = scaling(v3(-1.5, 2, 0.7));
+        affine t = translation(v3(-40, 25, 7));
+        affine rs = affine_mul(&r, &s);
+        maps[2] = affine_mul(&t, &rs);
+    }
+    {
+        affine r = rotation(v3(0.3, -0.1, 1), PI / 7), s = scaling(v3(0.01, 0.01, 0.01));
+        maps[3] = affine_mul(&r, &s);
+    }
+    arena scratch;
+    arena_init(&scratch, 0);
+    coincident_stats st = {0};
+    for (int which = 0; which < 3; which++) {
+        for (int mi = 0; mi < 4; mi++) {
+            box_scene s = make_box_scene(which, &maps[mi]);
+            s.map = mi;
+            for (size_t di = 0; di < sizeof directions / sizeof directions[0]; di++) {
+                vec3 dir = v3(directions[di][0], directions[di][1], directions[di][2]);
+                /* A grid over the coincident faces, edges included: for the
+                 * differences the plane z = 5 and the side faces x = 0,
+                 * x = 10 below it; for the union the plane x = 10. */
+                for (int i = 0; i <= 8; i++) {
+                    for (int j = 0; j <= 8; j++) {
+                        double u = 1.25 * i, v = 1.25 * j, w = 0.625 * j;
+                        if (which < 2) {
+                            shoot_box_scene(&s, v3(u, v, 5), dir, &scratch, &st);
+                            shoot_box_scene(&s, v3(0, u, w), dir, &scratch, &st);
+                            shoot_box_scene(&s, v3(10, u, w), dir, &scratch, &st);
+                            shoot_box_scene(&s, v3(u, 0, w), dir, &scratch, &st);
+                        } else {
+                            shoot_box_scene(&s, v3(10, u, v), dir, &scratch, &st);
+                            shoot_box_scene(&s, v3(10 + 0.5 * u, u, 10), dir, &scratch,
+                                            &st);
+                        }
+                    }
+                }
+            }
+            csg_tree_free(s.tree);
+        }
+    }
+    arena_free(&scratch);
+    print_message("coincident faces: %ld rays (%ld grazing a face, %ld in a seam plane, "
+                  "%ld of those cracked by rounding), %ld spans, %ld failures\n",
+                  st.rays, st.grazes, st.seams, st.seam_cracks, st.spans, st.failures);
+    assert_int_equal(st.failures, 0);
+}
+
+/* ---- 2 and 3. random trees ---- */
+
+enum { TREE_LEVELS = 4 };
+
+typedef struct gen {
+    rng r;
+    csg_builder *b;
+    uint32_t kinds_used; /* bit per prim_kind */
+    uint32_t leaves;
+} gen;
+
+static void add_plane(plane *p, vec3 n, vec3 through)
+{
+    p->n = n;
+    p->d = v3_dot(n, through);
+}
+
+/* A random convex polyhedron: a random tetrahedron, an octahedron with
+ * random face offsets, or a box clipped by random planes. */
+static int random_convex(gen *g, prim *p)
+{
+    plane *planes = csg_builder_alloc(g->b, 10 * sizeof(plane));
+    assert_non_null(planes);
+    uint32_t flavour = below(&g->r, 3), count = 0;
+    bbox bounds = bbox_empty();
+    if (flavour == 0) {
+        vec3 v[4];
+        for (;;) {
+            for (int i = 0; i < 4; i++)
+                v[i] = v3(uniform_in(&g->r, -1.5, 1.5), uniform_in(&g->r, -1.5, 1.5),
+                          uniform_in(&g->r, -1.5, 1.5));
+            vec3 e1 = v3_sub(v[1], v[0]), e2 = v3_sub(v[2], v[0]),
+                 e3 = v3_sub(v[3], v[0]);
+            if (fabs(v3_dot(v3_cross(e1, e2), e3)) > 0.5)
+                break;
+        }
+        static const int face[4][4] = {
+            {0, 1, 2, 3}, {0, 1, 3, 2}, {0, 2, 3, 1}, {1, 2, 3, 0}};
+        for (int f = 0; f < 4; f++) {
+            vec3 a = v[face[f][0]], b = v[face[f][1]], c = v[face[f][2]];
+            vec3 n = v3_cross(v3_sub(b, a), v3_sub(c, a));
+            if (v3_dot(n, v3_sub(v[face[f][3]], a)) > 0)
+                n = v3_neg(n);
+            add_plane(&planes[count++], n, a);
+        }
+        for (int i = 0; i < 4; i++)
+            bounds = bbox_add_point(bounds, v[i]);
+    } else if (flavour == 1) {
+        for (int i = 0; i < 8; i++) {
+            vec3 n = v3(i & 1 ? -1 : 1, i & 2 ? -1 : 1, i & 4 ? -1 : 1);
+            planes[count].n = n;
+            planes[count++].d = uniform_in(&g->r, 0.6, 1.4);
+        }
+        /* Every point satisfies |x| + |y| + |z| <= max d. */
+        double m = 0;
+        for (uint32_t i = 0; i < count; i++)
+            m = fmax(m, planes[i].d);
+        bounds = (bbox){v3(-m, -m, -m), v3(m, m, m)};
+    } else {
+        vec3 h = v3(uniform_in(&g->r, 0.4, 1.5), uniform_in(&g->r, 0.4, 1.5),
+                    uniform_in(&g->r, 0.4, 1.5));
+        const double *hv = &h.x;
+        for (int k = 0; k < 3; k++) {
+            vec3 n = v3(k == 0, k == 1, k == 2);
+            planes[count].n = n;
+            planes[count++].d = hv[k];
+            planes[count].n = v3_neg(n);
+            planes[count++].d = hv[k];
+        }
+        for (int i = 0; i < 4; i++) {
+            vec3 n = v3_scale(unit_vector(&g->r), uniform_in(&g->r, 0.5, 3));
+            planes[count].n = n;
+            planes[count++].d = v3_length(n) * uniform_in(&g->r, 0.2, 1.0);
+        }
+        bounds = (bbox){v3_neg(h), h};
+    }
+    p->kind = PRIM_CONVEX;
+    p->u.convex.planes = planes;
+    p->u.convex.count = count;
+    p->u.convex.bounds = bounds;
+    return 1;
+}
+
+static prim random_prim(gen *g, uint32_t kind)
+{
+    prim p = {.kind = (prim_kind)kind};
+    switch (kind) {
+    case PRIM_SPHERE:
+        p.u.sphere.r = uniform_in(&g->r, 0.4, 1.8);
+        break;
+    case PRIM_BOX: {
+        vec3 c = v3(uniform_in(&g->r, -0.5, 0.5), uniform_in(&g->r, -0.5, 0.5),
+                    uniform_in(&g->r, -0.5, 0.5));
+        vec3 h = v3(uniform_in(&g->r, 0.2, 1.5), uniform_in(&g->r, 0.2, 1.5),
+                    uniform_in(&g->r, 0.2, 1.5));
+        p.u.box.lo = v3_sub(c, h);
+        p.u.box.hi = v3_add(c, h);
+        break;
+    }
+    case PRIM_CYLINDER: {
+        p.u.cylinder.z0 = -uniform_in(&g->r, 0.2, 1.5);
+        p.u.cylinder.z1 = uniform_in(&g->r, 0.2, 1.5);
+        double r0 = uniform_in(&g->r, 0.3, 1.5), r1 = uniform_in(&g->r, 0.3, 1.5);
+        switch (below(&g->r, 4)) {
+        case 0:
+            r0 = 0; /* cone, apex at the bottom */
+            break;
+        case 1:
+            r1 = 0; /* apex at the top */
+            break;
+        case 2:
+            r1 = r0; /* cylinder */
+            break;
+        default:
+            break;
+        }
+        p.u.cylinder.r0 = r0;
+        p.u.cylinder.r1 = r1;
+        break;
+    }
+    default:
+        random_convex(g, &p);
+        break;
+    }
+    return p;
+}
+
+/* A subtree below the accumulated map parent; the first child of every
+ * boolean node is itself boolean down to TREE_LEVELS, so the tree has that
+ * many boolean levels. */
+static uint32_t random_node(gen *g, const affine *parent, int level)
+{
+    /* Every leaf gets a map of its own, half the boolean nodes one for their
+     * whole subtree (OpenSCAD's nested multmatrix). */
+    affine m = *parent;
+    if (level == TREE_LEVELS || below(&g->r, 2)) {
+        affine local = random_affine(&g->r);
+        m = affine_mul(parent, &local);
+    }
+    if (level == TREE_LEVELS) {
+        uint32_t kind = below(&g->r, PRIM_KIND_COUNT);
+        g->kinds_used |= 1u << kind;
+        g->leaves++;
+        prim p = random_prim(g, kind);
+        uint32_t id = csg_builder_leaf(g->b, &p, &m, white, no_loc);
+        assert_int_not_equal(id, CSG_EMPTY);
+        return id;
+    }
+    uint32_t kids[3], count = 2 + below(&g->r, 2);
+    for (uint32_t k = 0; k < count; k++)
+        kids[k] = random_node(g, &m, k == 0 || below(&g->r, 2) ? level + 1 : TREE_LEVELS);
+    /* Intersections and differences of random shapes are often empty:
+     * weight union 3, difference 2, intersection 1. */
+    static const csg_op ops[6] = {CSG_UNION,      CSG_UNION,      CSG_UNION,
+                                  CSG_DIFFERENCE, CSG_DIFFERENCE, CSG_INTERSECTION};
+    csg_op op = ops[below(&g->r, 6)];
+    uint32_t id = csg_builder_op(g->b, op, kids, count);
+    assert_int_not_equal(id, CSG_EMPTY);
+    return id;
+}
+
+/* Brute force: every leaf's spans, combined with no box tests and no
+ * narrowing of the operands, then clipped as csg_spans clips. */
+static span_list brute_node(const csg_tree *t, uint32_t id, vec3 o, vec3 d, double eps,
+                            arena *a)
+{
+    const csg_node *n = &t->nodes[id];
+    if (n->op == CSG_LEAF) {
+        const csg_leaf *l = &t->leaves[n->leaf];
+        uint32_t cap = prim_max_spans(&l->prim);
+        span_list r = {arena_alloc(a, cap * sizeof(span)), 0};
+        assert_non_null(r.v);
+        r.n = prim_spans(&l->prim, n->leaf, affine_point(&l->to_local, o),
+                         affine_vector(&l->to_local, d), r.v, cap);
+        r.n = span_regularize(r.v, r.n, eps);
+        return r;
+    }
+    const uint32_t *kids = &t->child_ids[n->first_child];
+    span_list acc = brute_node(t, kids[0], o, d, eps, a);
+    span_op op = n->op == CSG_UNION          ? SPAN_UNION
+                 : n->op == CSG_INTERSECTION ? SPAN_INTERSECTION
+                                             : SPAN_DIFFERENCE;
+    for (uint32_t k = 1; k < n->child_count; k++) {
+        int oom = 0;
+        acc = span_combine(op, acc, brute_node(t, kids[k], o, d, eps, a), eps, a, &oom);
+        assert_int_equal(oom, 0);
+    }
+    return acc;
+}
+
+static span_list brute_spans(const csg_tree *t, const csg_ray *ray, arena *a)
+{
+    span_list none = {NULL, 0};
+    if (t->root == CSG_EMPTY)
+        return none;
+    span_list all = brute_node(t, t->root, ray->o, ray->d, csg_eps(t, ray->o, ray->d), a);
+    span *v = arena_alloc(a, (all.n + 1) * sizeof(span));
+    assert_non_null(v);
+    uint32_t n = 0;
+    for (uint32_t i = 0; i < all.n; i++) {
+        span s = all.v[i];
+        if (s.out.t <= ray->tmin || s.in.t >= ray->tmax)
+            continue;
+        if (s.in.t < ray->tmin)
+            s.in = (span_end){ray->tmin, SPAN_NO_LEAF, 0, 0};
+        if (s.out.t > ray->tmax)
+            s.out = (span_end){ray->tmax, SPAN_NO_LEAF, 0, 0};
+        v[n++] = s;
+    }
+    span_list r = {v, n};
+    return r;
+}
+
+static int same_lists(span_list a, span_list b)
+{
+    if (a.n != b.n)
+        return 0;
+    for (uint32_t i = 0; i < a.n; i++) {
+        const span_end *x[2] = {&a.v[i].in, &a.v[i].out},
+                       *y[2] = {&b.v[i].in, &b.v[i].out};
+        for (int k = 0; k < 2; k++) {
+            if (x[k]->t != y[k]->t || x[k]->leaf != y[k]->leaf ||
+                x[k]->part != y[k]->part || x[k]->flip != y[k]->flip)
+                return 0;
+        }
+    }
+    return 1;
+}
+
+typedef struct property_stats {
+    long trees, leaves, rays, misses, rays_with_spans, spans, samples, skipped,
+        disagreements;
+    long bad_lists, bad_first_hits, culling_mismatches;
+    uint32_t max_depth;
+} property_stats;
+
+/* Compares the span list with csg_inside at t; returns 1 when they agree or
+ * t lies within tol of a span end (where either answer is right). */
+static int sample(const csg_tree *t, const csg_ray *ray, span_list s, double t_s,
+                  double tol, property_stats *st)
+{
+    int in_span = 0;
+    double nearest = INFINITY;
+    for (uint32_t i = 0; i < s.n; i++) {
+        if (t_s >= s.v[i].in.t && t_s <= s.v[i].out.t)
+            in_span = 1;
+        nearest = fmin(nearest, fmin(fabs(t_s - s.v[i].in.t), fabs(t_s - s.v[i].out.t)));
+    }
+    if (nearest <= tol) {
+        st->skipped++;
+        return 1;
+    }
+    st->samples++;
+    return csg_inside(t, v3_madd(ray->o, ray->d, t_s)) == in_span;
+}
+
+static void report_disagreement(const csg_tree *t, const csg_ray *ray, span_list s,
+                                double t_s, uint64_t seed, long tree_index)
+{
+    print_error("tree %ld (seed %#llx): ray o = (%.17g %.17g %.17g) d = (%.17g %.17g "
+                "%.17g) [%g, %g]: csg_inside at t = %.17g is %d; spans:",
+                tree_index, (unsigned long long)seed, ray->o.x, ray->o.y, ray->o.z,
+                ray->d.x, ray->d.y, ray->d.z, ray->tmin, ray->tmax, t_s,
+                csg_inside(t, v3_madd(ray->o, ray->d, t_s)));
+    for (uint32_t i = 0; i < s.n; i++)
+        print_error(" [%.17g (leaf %u part %u), %.17g (leaf %u part %u)]", s.v[i].in.t,
+                    s.v[i].in.leaf, s.v[i].in.part, s.v[i].out.t, s.v[i].out.leaf,
+                    s.v[i].out.part);
+    print_error("\n");
+}
+
+/* One random ray through the tree's bounds: aimed at a random point of
+ * the bounds, or (more often, since random trees are sparse) at a point
+ * near the centre of a random leaf. */
+static csg_ray random_ray(rng *r, const csg_tree *t)
+{
+    const bbox *b = &t->bounds;
+    vec3 ext = bbox_extent(b);
+    double diag = v3_length(ext);
+    vec3 target = v3(uniform_in(r, b->lo.x, b->hi.x), uniform_in(r, b->lo.y, b->hi.y),
+                     uniform_in(r, b->lo.z, b->hi.z));
+    if (below(r, 3) != 0) {
+        const csg_leaf *l = &t->leaves[below(r, t->leaf_count)];
+        bbox local = prim_bounds(&l->prim);
+        vec3 c = bbox_center(&local), h = v3_scale(bbox_extent(&local), 0.3);
+        vec3 p = v3(c.x + h.x * uniform_in(r, -1, 1), c.y + h.y * uniform_in(r, -1, 1),
+                    c.z + h.z * uniform_in(r, -1, 1));
+        target = affine_point(&l->to_world, p);
+    }
+    vec3 dir = unit_vector(r);
+    uint32_t kind = below(r, 10);
+    if (kind == 0) {
+        /* along an axis: zero direction components */
+        int axis = (int)below(r, 3);
+        dir = v3(axis == 0, axis == 1, axis == 2);
+        if (next_u64(r) & 1)
+            dir = v3_neg(dir);
+    } else if (kind == 1) {
+        /* in a coordinate plane */
+        int axis = (int)below(r, 3);
+        if (axis == 0)
+            dir.x = 0;
+        else if (axis == 1)
+            dir.y = 0;
+        else
+            dir.z = 0;
+        dir = v3_normalize(dir);
+    }
+    /* Origins from inside the bounds to a few diagonals away; direction
+     * lengths from 0.1 to 10. */
+    vec3 o = v3_madd(target, dir, -uniform_in(r, 0, 3) * diag);
+    double len = exp(uniform_in(r, log(0.1), log(10.0)));
+    csg_ray ray = {o, v3_scale(dir, len), -INFINITY, INFINITY};
+    return ray;
+}
+
+static void test_random_trees(void **state)
+{
+    (void)state;
+    const long tree_count = 250, rays_per_tree = 440;
+    property_stats st = {0};
+    arena scratch, brute;
+    arena_init(&scratch, 0);
+    arena_init(&brute, 0);
+    uint32_t kinds = 0;
+    clock_t start = clock();
+    rng rays = {0x853c49e6748fea9bULL};
+    for (long ti = 0; ti < tree_count; ti++) {
+        uint64_t seed =
+            0x9e3779b97f4a7c15ULL * (uint64_t)(ti + 1) ^ 0xda942042e4dd58b5ULL;
+        gen g = {{seed}, csg_builder_new(), 0, 0};
+        assert_non_null(g.b);
+        affine id = affine_identity();
+        uint32_t root = random_node(&g, &id, 0);
+        csg_tree *t = finish(g.b, root);
+        kinds |= g.kinds_used;
+        st.trees++;
+        st.leaves += g.leaves;
+        if (t->depth > st.max_depth)
+            st.max_depth = t->depth;
+        assert_true(t->depth >= TREE_LEVELS + 1);
+        if (t->root == CSG_EMPTY || bbox_is_empty(&t->bounds)) {
+            csg_tree_free(t);
+            continue;
+        }
+        for (long ri = 0; ri < rays_per_tree; ri++) {
+            csg_ray ray = random_ray(&rays, t);
+            double dlen = v3_length(ray.d);
+            /* Where the ray crosses the bounds, grown by a tenth: samples
+             * are taken there. */
+            bbox grown = t->bounds;
+            vec3 pad = v3_scale(bbox_extent(&t->bounds), 0.1);
+            grown.lo = v3_sub(grown.lo, pad);
+            grown.hi = v3_add(grown.hi, pad);
+            double c0 = -INFINITY, c1 = INFINITY;
+            vec3 inv = v3(1 / ray.d.x, 1 / ray.d.y, 1 / ray.d.z);
+            if (!bbox_ray(&grown, ray.o, inv, &c0, &c1)) {
+                /* Aimed at a leaf outside the solid's bounds (clipped away by
+                 * an intersection or a difference): nothing to see. */
+                span_list s;
+                assert_true(csg_spans(t, &ray, &scratch, &s));
+                assert_int_equal(s.n, 0);
+                assert_true(first_hit_agrees(t, &ray, s, &scratch));
+                st.rays++;
+                st.misses++;
+                arena_reset(&scratch);
+                continue;
+            }
+            if (below(&rays, 2)) {
+                /* A finite range inside that stretch, so ends get clipped. */
+                double a = uniform_in(&rays, c0, c1), b = uniform_in(&rays, c0, c1);
+                ray.tmin = fmin(a, b);
+                ray.tmax = fmax(a, b);
+                c0 = ray.tmin;
+                c1 = ray.tmax;
+            }
+            /* The tolerance at span ends: 1e-7 of the scene's scale, in
+             * units of t. */
+            double tol = 1e-7 * t->scale / dlen;
+
+            span_list s;
+            assert_true(csg_spans(t, &ray, &scratch, &s));
+            st.rays++;
+            st.spans += s.n;
+            st.rays_with_spans += s.n > 0;
+            if (!list_is_well_formed(t, &ray, s)) {
+                st.bad_lists++;
+                report_disagreement(t, &ray, s, NAN, seed, ti);
+            }
+            if (!first_hit_agrees(t, &ray, s, &scratch))
+                st.bad_first_hits++;
+            span_list ref = brute_spans(t, &ray, &brute);
+            if (!same_lists(s, ref)) {
+                st.culling_mismatches++;
+                if (st.culling_mismatches <= 3) {
+                    print_error("culling changed the answer:\n");
+                    report_disagreement(t, &ray, s, NAN, seed, ti);
+                    report_disagreement(t, &ray, ref, NAN, seed, ti);
+                }
+            }
+
+            /* Samples: the middle of every span and gap, 2 tol inside and
+             * outside every end, and random points. */
+            double ts[64];
+            int nt = 0;
+            double prev = c0;
+            for (uint32_t i = 0; i < s.n && nt < 56; i++) {
+                ts[nt++] = 0.5 * (prev + s.v[i].in.t);
+                ts[nt++] = 0.5 * (s.v[i].in.t + s.v[i].out.t);
+                ts[nt++] = s.v[i].in.t - 2 * tol;
+                ts[nt++] = s.v[i].in.t + 2 * tol;
+                ts[nt++] = s.v[i].out.t - 2 * tol;
+                ts[nt++] = s.v[i].out.t + 2 * tol;
+                prev = s.v[i].out.t;
+            }
+            ts[nt++] = 0.5 * (prev + c1);
+            for (int k = 0; k < 4; k++)
+                ts[nt++] = uniform_in(&rays, c0, c1);
+            for (int k = 0; k < nt; k++) {
+                if (!(ts[k] >= c0 && ts[k] <= c1))
+                    continue;
+                if (!sample(t, &ray, s, ts[k], tol, &st)) {
+                    st.disagreements++;
+                    if (st.disagreements <= 5)
+                        report_disagreement(t, &ray, s, ts[k], seed, ti);
+                }
+            }
+            arena_reset(&scratch);
+            arena_reset(&brute);
+        }
+        csg_tree_free(t);
+    }
+    double seconds = (double)(clock() - start) / CLOCKS_PER_SEC;
+    arena_free(&scratch);
+    arena_free(&brute);
+    print_message("random trees: %ld trees (%ld leaves, depth up to %u), %ld rays "
+                  "(%ld missing the bounds, %ld with spans, %ld spans), %ld samples (%ld "
+                  "within tolerance of an "
+                  "end), %ld disagreements, %ld bad lists, %ld bad first hits, %ld "
+                  "culling mismatches, %.2f s\n",
+                  st.trees, st.leaves, st.max_depth, st.rays, st.misses,
+                  st.rays_with_spans, st.spans, st.samples, st.skipped, st.disagreements,
+                  st.bad_lists, st.bad_first_hits, st.culling_mismatches, seconds);
+    assert_int_equal(kinds, (1u << PRIM_KIND_COUNT) - 1);
+    assert_true(st.rays >= 100000);
+    assert_true(st.rays_with_spans > st.rays / 4);
+    assert_int_equal(st.disagreements, 0);
+    assert_int_equal(st.bad_lists, 0);
+    assert_int_equal(st.bad_first_hits, 0);
+    assert_int_equal(st.culling_mismatches, 0);
+}
+
+/* ---- 3. bounds culling, directly ---- */
+
+/* union() { sphere at the origin; difference() { far box; sphere } } with
+ * the far part 100 units away: rays that miss the root box or the far
+ * part's box give what brute force gives, and nothing at all when they miss
+ * the root box. */
+static void test_bounds_culling(void **state)
+{
+    (void)state;
+    csg_builder *b = csg_builder_new();
+    assert_non_null(b);
+    prim sphere = {.kind = PRIM_SPHERE};
+    sphere.u.sphere.r = 1;
+    prim box = {.kind = PRIM_BOX};
+    box.u.box.lo = v3(-2, -2, -2);
+    box.u.box.hi = v3(2, 2, 2);
+    affine id = affine_identity(), far = translation(v3(100, 0, 0));
+    affine far_sphere = translation(v3(101.5, 0, 0));
+    uint32_t near_id = csg_builder_leaf(b, &sphere, &id, white, no_loc);
+    uint32_t diff[2] = {csg_builder_leaf(b, &box, &far, white, no_loc),
+                        csg_builder_leaf(b, &sphere, &far_sphere, white, no_loc)};
+    uint32_t far_id = csg_builder_op(b, CSG_DIFFERENCE, diff, 2);
+    uint32_t kids[2] = {near_id, far_id};
+    csg_tree *t = finish(b, csg_builder_op(b, CSG_UNION, kids, 2));
+    /* The root box spans x in [-1, 102], y and z in [-2, 2]. */
+    assert_true(t->bounds.lo.x == -1 && t->bounds.hi.x == 102);
+    arena scratch, ref;
+    arena_init(&scratch, 0);
+    arena_init(&ref, 0);
+    rng r = {0x1234567887654321ULL};
+    for (int i = 0; i < 20000; i++) {
+        vec3 o =
+            v3(uniform_in(&r, -10, 110), uniform_in(&r, -6, 6), uniform_in(&r, -6, 6));
+        vec3 d = unit_vector(&r);
+        if (i % 3 == 0)
+            d = v3(0, uniform_in(&r, -1, 1), uniform_in(&r, -1, 1)); /* d.x = 0 */
+        csg_ray ray = {o, d, uniform_in(&r, -20, 0), uniform_in(&r, 0, 20)};
+        span_list s, want = brute_spans(t, &ray, &ref);
+        assert_true(csg_spans(t, &ray, &scratch, &s));
+        assert_true(same_lists(s, want));
+        double t0 = ray.tmin, t1 = ray.tmax;
+        vec3 inv = v3(1 / d.x, 1 / d.y, 1 / d.z);
+        if (!bbox_ray(&t->bounds, o, inv, &t0, &t1)) {
+            assert_int_equal(s.n, 0);
+            csg_hit hit;
+            assert_false(csg_first_hit(t, &ray, &scratch, &hit));
+            assert_false(csg_any_hit(t, &ray, &scratch));
+        }
+        arena_reset(&scratch);
+        arena_reset(&ref);
+    }
+    /* Hits on each part with the other part's box missed. */
+    csg_ray ray = {v3(-5, 0, 0), v3(1, 0, 0), 0, 10};
+    csg_hit hit;
+    assert_true(csg_first_hit(t, &ray, &scratch, &hit));
+    assert_true(hit.t == 4 && hit.leaf == 0 && hit.flip == 0);
+    ray = (csg_ray){v3(100, 0, 10), v3(0, 0, -1), 0, INFINITY};
+    assert_true(csg_first_hit(t, &ray, &scratch, &hit));
+    assert_true(hit.t == 8 && hit.leaf == 1 && hit.part == 5);
+    ray = (csg_ray){v3(110, 0, 0), v3(-1, 0, 0), 0, INFINITY};
+    assert_true(csg_first_hit(t, &ray, &scratch, &hit));
+    /* Enters the box's +x face at x = 102, inside the subtracted sphere
+     * (x from 100.5 to 102.5): the first surface is the sphere, flipped, at
+     * x = 100.5. */
+    assert_true(fabs(hit.t - 9.5) < 1e-12 && hit.leaf == 2 && hit.flip == 1);
+    vec3 n = csg_hit_normal(t, &ray, &hit);
+    assert_true(fabs(n.x - 1) < 1e-12);
+    /* Missing everything: the gap between the parts. */
+    ray = (csg_ray){v3(50, 0, -10), v3(0, 0, 1), 0, INFINITY};
+    span_list s;
+    assert_true(csg_spans(t, &ray, &scratch, &s));
+    assert_int_equal(s.n, 0);
+    assert_false(csg_any_hit(t, &ray, &scratch));
+    arena_free(&scratch);
+    arena_free(&ref);
+    csg_tree_free(t);
+}
+
+/* A ray lying in the plane of a box face, parallel to it. bbox_ray meets
+ * 0 * inf = NaN at the slab of that plane; the box culling must keep the
+ * ray (the closed box holds the line), or rays along the seam of
+ * union() { cube(10); translate([10, 0, 0]) cube(10); } see a crack where
+ * both cubes are culled. */
+static void test_ray_in_face_plane(void **state)
+{
+    (void)state;
+    bbox cube = {v3(0, 0, 0), v3(10, 10, 10)};
+    double t0 = -INFINITY, t1 = INFINITY;
+    assert_true(bbox_ray(&cube, v3(10, -5, 5), v3(INFINITY, 1, INFINITY), &t0, &t1));
+    assert_true(t0 == 5 && t1 == 15);
+    t0 = -INFINITY, t1 = INFINITY;
+    assert_true(bbox_ray(&cube, v3(0, -5, 10), v3(-INFINITY, 1, -INFINITY), &t0, &t1));
+    assert_true(t0 == 5 && t1 == 15);
+    t0 = -INFINITY, t1 = INFINITY;
+    assert_false(bbox_ray(&cube, v3(10.5, -5, 5), v3(INFINITY, 1, INFINITY), &t0, &t1));
+
+    csg_builder *b = csg_builder_new();
+    assert_non_null(b);
+    affine id = affine_identity(), shift = translation(v3(10, 0, 0));
+    uint32_t kids[2] = {add_box(b, v3(0, 0, 0), v3(10, 10, 10), &id),
+                        add_box(b, v3(0, 0, 0), v3(10, 10, 10), &shift)};
+    csg_tree *t = finish(b, csg_builder_op(b, CSG_UNION, kids, 2));
+    arena scratch;
+    arena_init(&scratch, 0);
+    const csg_ray rays[3] = {{v3(10, -5, 5), v3(0, 1, 0), 0, INFINITY},
+                             {v3(10, 5, -5), v3(0, 0, 1), 0, INFINITY},
+                             {v3(10, 15, 15), v3(0, -1, -1), 0, INFINITY}};
+    for (int i = 0; i < 3; i++) {
+        span_list s;
+        assert_true(csg_spans(t, &rays[i], &scratch, &s));
+        assert_int_equal(s.n, 1);
+        assert_true(s.v[0].in.t == 5);
+        assert_true(s.v[0].out.t == 15);
+    }
+    arena_free(&scratch);
+    csg_tree_free(t);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_coincident_faces),
+        cmocka_unit_test(test_random_trees),
+        cmocka_unit_test(test_bounds_culling),
+        cmocka_unit_test(test_ray_in_face_plane),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
