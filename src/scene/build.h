@@ -1,0 +1,58 @@
+/* The scene builder: syntax tree in, CSG tree out.
+ *
+ * It gives each node name its meaning, as OpenSCAD 2021.01 does:
+ *   group, union, render, color, multmatrix   union of the children
+ *   difference                                first child minus the others
+ *   intersection                              intersection of the children
+ *   cube, sphere, cylinder, polyhedron        leaves (polyhedron: convex only)
+ * Transforms (multmatrix, row-major 4x4) nest and accumulate into each
+ * leaf's to_world; an inner colour wins over an outer one; leaves without a
+ * colour get OpenSCAD's default face colour (Cornfield, #f9d72c).
+ *
+ * Modifiers: '*' drops the node (its subtree is not looked at); '%' keeps
+ * the subtree out of the solid, and out of its parent's operation, but still
+ * checks it; '#' changes nothing in the solid; the first '!' in file order
+ * (outside dropped subtrees) makes its subtree the whole design, without
+ * its ancestors' transforms or colours, as OpenSCAD's root modifier does.
+ *
+ * Every node OpenSCAD can write is known by name; those spancast cannot
+ * render yet, and spancast's own extension nodes, are SC_ERR_UNSUPPORTED
+ * at their name; any other name is an error too. Unknown arguments are
+ * ignored and the last of repeated ones wins, as in OpenSCAD.
+ *
+ * Things OpenSCAD turns into no geometry (a zero or negative size, a
+ * singular transform) become the empty solid with a warning at their
+ * position. The walk over the syntax tree uses an explicit stack.
+ */
+#ifndef SPANCAST_SCENE_BUILD_H
+#define SPANCAST_SCENE_BUILD_H
+
+#include <stddef.h>
+
+#include "csg/csg.h"
+#include "scene/parse.h"
+#include "spancast/spancast.h"
+
+/* OpenSCAD's default face colour, Cornfield #f9d72c, alpha 1. */
+#define BUILD_DEFAULT_COLOR                                                              \
+    {                                                                                    \
+        249 / 255.0f, 215 / 255.0f, 44 / 255.0f, 1.0f                                    \
+    }
+
+/* Builds the CSG tree of syntax. On success *out owns the tree (free with
+ * csg_tree_free) and *warnings is a malloc'd array of *warning_count
+ * warnings in source order (NULL when there are none; free with free()).
+ * On failure nothing is returned and error says where and why. */
+sc_status build_tree(const parse_tree *syntax, csg_tree **out, sc_error **warnings,
+                     size_t *warning_count, sc_error *error);
+
+/* Looks up an OpenSCAD colour: a CSS/SVG name (any case) or "#rgb",
+ * "#rgba", "#rrggbb", "#rrggbbaa". Returns 1 and fills rgba (0..1) when
+ * known, else 0. (colors.c) */
+int colors_lookup(const char *name, size_t length, float rgba[4]);
+
+/* The colour table, for tests: its size and the index-th name. */
+size_t colors_count(void);
+const char *colors_name(size_t index);
+
+#endif

@@ -1,0 +1,246 @@
+/* Tests of the .csg lexer (src/scene/lex.c): every token kind with its
+ * value and position, OpenSCAD's string escapes, comments, and every lexer
+ * error message, exactly. */
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <cmocka.h>
+
+#include <math.h>
+#include <string.h>
+
+#include "scene/lex.h"
+
+typedef struct lexed {
+    arena mem;
+    lex_token tokens[64];
+    int count;
+    sc_status status;
+    sc_error error;
+} lexed;
+
+/* Reads every token of text (or up to the first error). */
+static void lex_all(lexed *out, const char *text)
+{
+    memset(out, 0, sizeof *out);
+    arena_init(&out->mem, 0);
+    lexer lx;
+    lex_init(&lx, "t.csg", text, strlen(text), &out->mem);
+    for (;;) {
+        lex_token tok;
+        out->status = lex_next(&lx, &tok, &out->error);
+        if (out->status != SC_OK)
+            return;
+        assert_true(out->count < 64);
+        out->tokens[out->count++] = tok;
+        if (tok.kind == LEX_EOF)
+            return;
+    }
+}
+
+static void check_error(const char *text, const char *expected)
+{
+    lexed l;
+    lex_all(&l, text);
+    char buf[1024];
+    assert_int_equal(l.status, SC_ERR_SYNTAX);
+    assert_string_equal(sc_error_format(&l.error, buf, sizeof buf), expected);
+    arena_free(&l.mem);
+}
+
+static void test_punctuation_and_modifiers(void **state)
+{
+    (void)state;
+    lexed l;
+    lex_all(&l, "( ) [ ] { } , ; = % # ! *");
+    const lex_kind kinds[] = {LEX_LPAREN, LEX_RPAREN,  LEX_LBRACKET, LEX_RBRACKET,
+                              LEX_LBRACE, LEX_RBRACE,  LEX_COMMA,    LEX_SEMICOLON,
+                              LEX_EQUALS, LEX_PERCENT, LEX_HASH,     LEX_BANG,
+                              LEX_STAR,   LEX_EOF};
+    assert_int_equal(l.count, 14);
+    assert_int_equal(l.tokens[13].kind, LEX_EOF);
+    assert_int_equal(l.tokens[13].column, 26);
+    for (int i = 0; i < 13; i++) {
+        assert_int_equal(l.tokens[i].kind, kinds[i]);
+        assert_int_equal(l.tokens[i].line, 1);
+        assert_int_equal(l.tokens[i].column, 1 + 2 * i);
+    }
+    assert_string_equal(lex_kind_name(LEX_RPAREN), "')'");
+    assert_string_equal(lex_kind_name(LEX_NUMBER), "a number");
+    assert_string_equal(lex_kind_name(LEX_EOF), "end of file");
+    arena_free(&l.mem);
+}
+
+static void test_identifiers_and_keywords(void **state)
+{
+    (void)state;
+    lexed l;
+    lex_all(&l, "cube $fn _x1 $1 true false undef trueish infinity");
+    const lex_kind kinds[] = {LEX_IDENT, LEX_IDENT, LEX_IDENT, LEX_IDENT, LEX_TRUE,
+                              LEX_FALSE, LEX_UNDEF, LEX_IDENT, LEX_IDENT, LEX_EOF};
+    assert_int_equal(l.count, 10);
+    for (int i = 0; i < 10; i++)
+        assert_int_equal(l.tokens[i].kind, kinds[i]);
+    assert_int_equal(l.tokens[1].length, 3);
+    assert_memory_equal(l.tokens[1].start, "$fn", 3);
+    assert_int_equal(l.tokens[1].column, 6);
+    assert_memory_equal(l.tokens[7].start, "trueish", 7);
+    arena_free(&l.mem);
+}
+
+static void test_numbers(void **state)
+{
+    (void)state;
+    lexed l;
+    lex_all(&l, "0 42 -1.5e-3 1e+10 .5 5. +2 -.25 1E5 2.5e2 -0 1e-07 -1.5e-05 "
+                "0.707107 1e-400");
+    const double values[] = {0,   42,  -1.5e-3, 1e10, .5,      5.0,      2, -.25,
+                             1e5, 250, -0.0,    1e-7, -1.5e-5, 0.707107, 0};
+    int n = (int)(sizeof values / sizeof values[0]);
+    assert_int_equal(l.count, n + 1);
+    for (int i = 0; i < n; i++) {
+        assert_int_equal(l.tokens[i].kind, LEX_NUMBER);
+        assert_true(l.tokens[i].number == values[i]);
+    }
+    assert_true(signbit(l.tokens[10].number)); /* -0 keeps its sign */
+    assert_int_equal(l.tokens[2].column, 6);
+    assert_int_equal(l.tokens[2].length, 7);
+    arena_free(&l.mem);
+}
+
+static void test_inf_and_nan(void **state)
+{
+    (void)state;
+    lexed l;
+    lex_all(&l, "inf -inf +inf nan -nan [inf]");
+    assert_int_equal(l.count, 9);
+    assert_true(isinf(l.tokens[0].number) && l.tokens[0].number > 0);
+    assert_true(isinf(l.tokens[1].number) && l.tokens[1].number < 0);
+    assert_true(isinf(l.tokens[2].number) && l.tokens[2].number > 0);
+    assert_true(isnan(l.tokens[3].number));
+    assert_true(isnan(l.tokens[4].number));
+    for (int i = 0; i < 5; i++)
+        assert_int_equal(l.tokens[i].kind, LEX_NUMBER);
+    assert_int_equal(l.tokens[6].kind, LEX_NUMBER);
+    arena_free(&l.mem);
+}
+
+static void check_string(const char *text, const char *expected, size_t length)
+{
+    lexed l;
+    lex_all(&l, text);
+    assert_int_equal(l.status, SC_OK);
+    assert_int_equal(l.tokens[0].kind, LEX_STRING);
+    assert_int_equal(l.tokens[0].string_length, length);
+    assert_memory_equal(l.tokens[0].string, expected, length);
+    assert_int_equal(l.tokens[0].string[length], '\0');
+    assert_int_equal(l.tokens[1].kind, LEX_EOF);
+    arena_free(&l.mem);
+}
+
+static void test_strings(void **state)
+{
+    (void)state;
+    check_string("\"\"", "", 0);
+    check_string("\"plain text\"", "plain text", 10);
+    check_string("\"a\\\"b\\\\c\"", "a\"b\\c", 5);
+    check_string("\"\\n\\t\\r\"", "\n\t\r", 3);
+    check_string("\"\\x41\\x7e\\x00\"", "A~ ", 3);
+    check_string("\"\\x80\"", "x80", 3); /* only 00..7f: the backslash is dropped */
+    check_string("\"\\u00e9\"", "\xc3\xa9", 2); /* U+00E9 in UTF-8 */
+    check_string("\"\\u20AC\"", "\xe2\x82\xac", 3);
+    check_string("\"\\U01F600\"", "\xf0\x9f\x98\x80", 4);
+    check_string("\"\\u0000\\ud800\\U110000\"", "   ", 3); /* invalid code points */
+    check_string("\"\\q\\u12\"", "qu12", 4); /* unknown escapes lose the backslash */
+    check_string("\"a\nb\r\nc\"", "abc", 3); /* raw line breaks are dropped */
+    check_string("\"caf\xc3\xa9\"", "caf\xc3\xa9", 5);
+}
+
+static void test_string_lines(void **state)
+{
+    (void)state;
+    lexed l;
+    lex_all(&l, "\"a\nb\" x");
+    assert_int_equal(l.tokens[1].kind, LEX_IDENT);
+    assert_int_equal(l.tokens[1].line, 2);
+    assert_int_equal(l.tokens[1].column, 4);
+    arena_free(&l.mem);
+}
+
+static void test_comments_and_positions(void **state)
+{
+    (void)state;
+    lexed l;
+    lex_all(&l, "// line comment\n"
+                "a /* block\n"
+                "comment */ b\r\n"
+                "\tc\xc2\xa0"
+                "d // end");
+    assert_int_equal(l.count, 5);
+    assert_int_equal(l.tokens[0].line, 2);
+    assert_int_equal(l.tokens[0].column, 1);
+    assert_int_equal(l.tokens[1].line, 3);
+    assert_int_equal(l.tokens[1].column, 12);
+    assert_int_equal(l.tokens[2].line, 4);
+    assert_int_equal(l.tokens[2].column, 2);
+    assert_int_equal(l.tokens[3].line, 4);
+    assert_int_equal(l.tokens[3].column, 5); /* after the 2-byte no-break space */
+    assert_int_equal(l.tokens[4].kind, LEX_EOF);
+    assert_int_equal(l.tokens[4].line, 4);
+    arena_free(&l.mem);
+}
+
+static void test_eof_repeats(void **state)
+{
+    (void)state;
+    arena mem;
+    arena_init(&mem, 0);
+    lexer lx;
+    lex_init(&lx, "t.csg", "", 0, &mem);
+    lex_token tok;
+    for (int i = 0; i < 3; i++) {
+        assert_int_equal(lex_next(&lx, &tok, NULL), SC_OK);
+        assert_int_equal(tok.kind, LEX_EOF);
+        assert_int_equal(tok.line, 1);
+        assert_int_equal(tok.column, 1);
+    }
+    arena_free(&mem);
+}
+
+static void test_errors(void **state)
+{
+    (void)state;
+    check_error("cube @", "t.csg:1:6: error: unexpected character '@'");
+    check_error("\n  \xc3\xa9", "t.csg:2:3: error: unexpected character '\xc3\xa9'");
+    check_error("a\x01", "t.csg:1:2: error: unexpected byte 0x01");
+    check_error("\xff", "t.csg:1:1: error: unexpected byte 0xff");
+    check_error("x = - 1", "t.csg:1:5: error: unexpected character '-'");
+    check_error("$", "t.csg:1:1: error: unexpected character '$'");
+    check_error("a(\"abc", "t.csg:1:3: error: unterminated string");
+    check_error("\"abc\\\"", "t.csg:1:1: error: unterminated string");
+    check_error("a\n  /* never closed\n", "t.csg:2:3: error: unterminated comment");
+    check_error("1e", "t.csg:1:1: error: malformed number '1e'");
+    check_error("x 1e+", "t.csg:1:3: error: malformed number '1e+'");
+    check_error("12abc", "t.csg:1:1: error: malformed number '12abc'");
+    check_error("1.2.3", "t.csg:1:1: error: malformed number '1.2.3'");
+    check_error("-1x", "t.csg:1:1: error: malformed number '-1x'");
+    check_error("[1e999]", "t.csg:1:2: error: number out of range '1e999'");
+    check_error("-1e999", "t.csg:1:1: error: number out of range '-1e999'");
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_punctuation_and_modifiers),
+        cmocka_unit_test(test_identifiers_and_keywords),
+        cmocka_unit_test(test_numbers),
+        cmocka_unit_test(test_inf_and_nan),
+        cmocka_unit_test(test_strings),
+        cmocka_unit_test(test_string_lines),
+        cmocka_unit_test(test_comments_and_positions),
+        cmocka_unit_test(test_eof_repeats),
+        cmocka_unit_test(test_errors),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}

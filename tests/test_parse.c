@@ -1,0 +1,346 @@
+/* Tests of the .csg parser (src/scene/parse.c): the syntax tree (names,
+ * modifiers, named and positional arguments, nested vectors, children,
+ * positions), argument lookup, the nesting limits, and every parser error
+ * message, exactly. */
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <cmocka.h>
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "scene/parse.h"
+
+static parse_tree *parse_ok(const char *text)
+{
+    parse_tree *t = NULL;
+    sc_error e;
+    sc_status st = parse_text("m.csg", text, strlen(text), &t, &e);
+    if (st != SC_OK)
+        fail_msg("unexpected error: %s", e.message);
+    assert_non_null(t);
+    return t;
+}
+
+static void check_error_status(const char *text, sc_status status, const char *expected)
+{
+    parse_tree *t = (parse_tree *)1;
+    sc_error e;
+    assert_int_equal(parse_text("m.csg", text, strlen(text), &t, &e), status);
+    assert_null(t);
+    char buf[1024];
+    assert_string_equal(sc_error_format(&e, buf, sizeof buf), expected);
+}
+
+static void check_error(const char *text, const char *expected)
+{
+    check_error_status(text, SC_ERR_SYNTAX, expected);
+}
+
+static void test_empty(void **state)
+{
+    (void)state;
+    parse_tree *t = parse_ok("  // nothing\n ; ;");
+    assert_null(t->first);
+    assert_int_equal(t->count, 0);
+    assert_int_equal(t->node_count, 0);
+    parse_tree_free(t);
+}
+
+static void test_openscad_export(void **state)
+{
+    (void)state;
+    /* As OpenSCAD 2021.01 writes it. */
+    parse_tree *t = parse_ok(
+        "group() {\n"
+        "\tmultmatrix([[1, 0, 0, 10], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]) {\n"
+        "\t\tcylinder($fn = 0, $fa = 12, $fs = 2, h = 10, r1 = 2, r2 = 2, center = "
+        "false);\n"
+        "\t}\n"
+        "\tcolor([1, 0, 0, 1]) {\n"
+        "\t\tcube(size = [1, 2, 3], center = true);\n"
+        "\t}\n"
+        "\tgroup();\n"
+        "}\n");
+    assert_int_equal(t->count, 1);
+    assert_int_equal(t->node_count, 6);
+    const parse_node *g = t->first;
+    assert_string_equal(g->name, "group");
+    assert_int_equal(g->arg_count, 0);
+    assert_int_equal(g->child_count, 3);
+    assert_true(g->has_block);
+    assert_int_equal(g->block_line, 1);
+    assert_int_equal(g->depth, 1);
+    assert_null(g->parent);
+
+    const parse_node *mm = g->first_child;
+    assert_string_equal(mm->name, "multmatrix");
+    assert_int_equal(mm->loc.line, 2);
+    assert_int_equal(mm->loc.column, 2);
+    assert_string_equal(mm->loc.file, "m.csg");
+    assert_int_equal(mm->arg_count, 1);
+    assert_null(mm->args[0].name);
+    const parse_value *m = &mm->args[0].value;
+    assert_int_equal(m->kind, PARSE_VECTOR);
+    assert_int_equal(m->u.vector.count, 4);
+    assert_int_equal(m->line, 2);
+    assert_int_equal(m->column, 13);
+    assert_int_equal(m->u.vector.items[0].kind, PARSE_VECTOR);
+    assert_int_equal(m->u.vector.items[0].u.vector.count, 4);
+    assert_true(m->u.vector.items[0].u.vector.items[3].u.number == 10);
+    assert_int_equal(m->u.vector.items[0].u.vector.items[3].column, 24);
+    assert_true(m->u.vector.items[3].u.vector.items[3].u.number == 1);
+    assert_ptr_equal(mm->parent, g);
+    assert_int_equal(mm->depth, 2);
+
+    const parse_node *cyl = mm->first_child;
+    assert_string_equal(cyl->name, "cylinder");
+    assert_int_equal(cyl->depth, 3);
+    assert_false(cyl->has_block);
+    assert_int_equal(cyl->arg_count, 7);
+    assert_string_equal(cyl->args[0].name, "$fn");
+    assert_int_equal(cyl->args[0].loc.column, 12);
+    assert_string_equal(cyl->args[6].name, "center");
+    assert_int_equal(cyl->args[6].value.kind, PARSE_BOOL);
+    assert_false(cyl->args[6].value.u.boolean);
+    double fn, fa, fs;
+    parse_node_resolution(cyl, &fn, &fa, &fs);
+    assert_true(fn == 0 && fa == 12 && fs == 2);
+
+    const parse_node *col = mm->next;
+    assert_string_equal(col->name, "color");
+    assert_int_equal(col->child_count, 1);
+    const parse_node *empty = col->next;
+    assert_string_equal(empty->name, "group");
+    assert_false(empty->has_block);
+    assert_int_equal(empty->child_count, 0);
+    assert_null(empty->next);
+    parse_tree_free(t);
+}
+
+static void test_values(void **state)
+{
+    (void)state;
+    parse_tree *t =
+        parse_ok("n(1, -2.5e-1, \"s\\n\", true, false, undef, [], [[]], [1, [2, "
+                 "[3]],], x = [1, 2, ],);");
+    const parse_node *n = t->first;
+    assert_int_equal(n->arg_count, 10);
+    assert_int_equal(n->args[0].value.kind, PARSE_NUMBER);
+    assert_true(n->args[1].value.u.number == -0.25);
+    assert_int_equal(n->args[2].value.kind, PARSE_STRING);
+    assert_string_equal(n->args[2].value.u.string.chars, "s\n");
+    assert_int_equal(n->args[2].value.u.string.length, 2);
+    assert_true(n->args[3].value.kind == PARSE_BOOL && n->args[3].value.u.boolean);
+    assert_true(n->args[4].value.kind == PARSE_BOOL && !n->args[4].value.u.boolean);
+    assert_int_equal(n->args[5].value.kind, PARSE_UNDEF);
+    assert_int_equal(n->args[6].value.kind, PARSE_VECTOR);
+    assert_int_equal(n->args[6].value.u.vector.count, 0);
+    assert_int_equal(n->args[7].value.u.vector.count, 1);
+    assert_int_equal(n->args[7].value.u.vector.items[0].u.vector.count, 0);
+    const parse_value *v = &n->args[8].value;
+    assert_int_equal(v->u.vector.count, 2);
+    const parse_value *inner = &v->u.vector.items[1];
+    assert_int_equal(inner->u.vector.count, 2);
+    assert_true(inner->u.vector.items[0].u.number == 2);
+    assert_int_equal(inner->u.vector.items[1].u.vector.count, 1);
+    assert_true(inner->u.vector.items[1].u.vector.items[0].u.number == 3);
+    assert_string_equal(n->args[9].name, "x");
+    assert_int_equal(n->args[9].value.u.vector.count, 2);
+    parse_tree_free(t);
+}
+
+static void test_modifiers(void **state)
+{
+    (void)state;
+    parse_tree *t = parse_ok("%a(); #b(); !c(); *d(); #%e(); * ! # % f(); g();");
+    const unsigned expected[] = {PARSE_MOD_BACKGROUND,
+                                 PARSE_MOD_HIGHLIGHT,
+                                 PARSE_MOD_ROOT,
+                                 PARSE_MOD_DISABLE,
+                                 PARSE_MOD_HIGHLIGHT | PARSE_MOD_BACKGROUND,
+                                 PARSE_MOD_DISABLE | PARSE_MOD_ROOT |
+                                     PARSE_MOD_HIGHLIGHT | PARSE_MOD_BACKGROUND,
+                                 0};
+    const parse_node *n = t->first;
+    for (int i = 0; i < 7; i++, n = n->next) {
+        assert_non_null(n);
+        assert_int_equal(n->modifiers, expected[i]);
+    }
+    assert_null(n);
+    /* The node's position is its name's, after the modifiers. */
+    assert_int_equal(t->first->next->next->next->next->loc.column, 27);
+    parse_tree_free(t);
+}
+
+static void test_arg_lookup(void **state)
+{
+    (void)state;
+    parse_tree *t = parse_ok("cylinder(5, 1, r2 = 3, h = 7, 9, h = 8, center = true);");
+    const parse_node *n = t->first;
+    const parse_arg *h = parse_node_arg(n, "h", 0);
+    assert_non_null(h);
+    assert_true(h->value.u.number == 8); /* the last of three wins */
+    assert_true(parse_node_arg(n, "r1", 1)->value.u.number == 1);
+    assert_true(parse_node_arg(n, "r2", 2)->value.u.number == 9); /* positional after */
+    assert_null(parse_node_arg(n, "r", -1));
+    assert_null(parse_node_arg(n, "x", 5));
+    assert_true(parse_node_arg(n, "center", 3)->value.u.boolean);
+    double fn, fa, fs;
+    parse_node_resolution(n, &fn, &fa, &fs);
+    assert_true(fn == 0 && fa == 12 && fs == 2);
+    parse_tree_free(t);
+
+    t = parse_ok("sphere($fn = 64, $fs = 0.5, $fa = \"x\", r = 1);");
+    parse_node_resolution(t->first, &fn, &fa, &fs);
+    assert_true(fn == 64 && fa == 12 && fs == 0.5);
+    parse_tree_free(t);
+}
+
+static void test_next_node(void **state)
+{
+    (void)state;
+    parse_tree *t = parse_ok("a() { b() { c(); } d(); } e() { f(); }");
+    const char *order = "abcdef";
+    const parse_node *n = t->first;
+    for (int i = 0; i < 6; i++, n = parse_next_node(n, 0))
+        assert_int_equal(n->name[0], order[i]);
+    assert_null(n);
+    n = parse_next_node(t->first->first_child, 1); /* skip c */
+    assert_string_equal(n->name, "d");
+    assert_null(parse_next_node(t->first->next, 1));
+    parse_tree_free(t);
+}
+
+static void test_empty_block(void **state)
+{
+    (void)state;
+    parse_tree *t = parse_ok("union() { }\nunion() {}");
+    assert_true(t->first->has_block);
+    assert_int_equal(t->first->child_count, 0);
+    assert_int_equal(t->count, 2);
+    parse_tree_free(t);
+}
+
+/* n levels of "group() {", a cube, then n "}". */
+static char *nested(int n, const char *open, const char *leaf, const char *close)
+{
+    size_t lo = strlen(open), ll = strlen(leaf), lc = strlen(close);
+    char *s = malloc((size_t)n * (lo + lc) + ll + 1);
+    assert_non_null(s);
+    char *p = s;
+    for (int i = 0; i < n; i++, p += lo)
+        memcpy(p, open, lo);
+    memcpy(p, leaf, ll);
+    p += ll;
+    for (int i = 0; i < n; i++, p += lc)
+        memcpy(p, close, lc);
+    *p = '\0';
+    return s;
+}
+
+static void test_deep_nodes(void **state)
+{
+    (void)state;
+    char *text = nested(PARSE_MAX_DEPTH - 1, "group(){", "cube();", "}");
+    parse_tree *t = parse_ok(text);
+    assert_int_equal(t->node_count, PARSE_MAX_DEPTH);
+    const parse_node *n = t->first;
+    while (n->first_child)
+        n = n->first_child;
+    assert_int_equal(n->depth, PARSE_MAX_DEPTH);
+    parse_tree_free(t);
+    free(text);
+
+    text = nested(PARSE_MAX_DEPTH, "group(){", "cube();", "}");
+    check_error_status(text, SC_ERR_LIMIT,
+                       "m.csg:1:80001: error: too many nested nodes (limit is 10000)");
+    free(text);
+}
+
+static void test_deep_vectors(void **state)
+{
+    (void)state;
+    char *text = nested(PARSE_MAX_DEPTH, "[", "1", "]");
+    size_t n = strlen(text);
+    char *call = malloc(n + 8);
+    memcpy(call, "a(", 2);
+    memcpy(call + 2, text, n);
+    memcpy(call + 2 + n, ");", 3);
+    parse_tree *t = parse_ok(call);
+    const parse_value *v = &t->first->args[0].value;
+    int depth = 0;
+    while (v->kind == PARSE_VECTOR) {
+        v = &v->u.vector.items[0];
+        depth++;
+    }
+    assert_int_equal(depth, PARSE_MAX_DEPTH);
+    assert_true(v->u.number == 1);
+    parse_tree_free(t);
+    free(call);
+    free(text);
+
+    text = nested(PARSE_MAX_DEPTH + 1, "[", "1", "]");
+    n = strlen(text);
+    call = malloc(n + 8);
+    memcpy(call, "a(", 2);
+    memcpy(call + 2, text, n);
+    memcpy(call + 2 + n, ");", 3);
+    check_error_status(call, SC_ERR_LIMIT,
+                       "m.csg:1:10003: error: too many nested vectors (limit is 10000)");
+    free(call);
+    free(text);
+}
+
+static void test_errors(void **state)
+{
+    (void)state;
+    check_error("cube(size = 1;",
+                "m.csg:1:14: error: expected ')' (to close '(' at line 1)");
+    check_error("group() {\n"
+                "  multmatrix(\n"
+                "    m = [[1, 0, 0, 0]]\n"
+                "    x = 1) {}\n"
+                "}",
+                "m.csg:4:5: error: expected ')' (to close '(' at line 2)");
+    check_error("a(m = [[1, 2], [3, 4]);",
+                "m.csg:1:22: error: expected ']' (to close '[' at line 1)");
+    check_error("a(m = [1\n2]);",
+                "m.csg:2:1: error: expected ']' (to close '[' at line 1)");
+    check_error("group() {\n  cube();\n",
+                "m.csg:3:1: error: expected '}' (to close '{' at line 1)");
+    check_error("cube();\n}", "m.csg:2:1: error: unmatched '}'");
+    check_error("{ cube(); }", "m.csg:1:1: error: expected a node name before '{'");
+    check_error("# { cube(); }", "m.csg:1:3: error: expected a node name before '{'");
+    check_error("cube(); 5;", "m.csg:1:9: error: expected a node name, found a number");
+    check_error("%", "m.csg:1:2: error: expected a node name, found end of file");
+    check_error("cube(); = 1", "m.csg:1:9: error: expected a node name, found '='");
+    check_error("cube;", "m.csg:1:5: error: expected '(' after node name 'cube'");
+    check_error("cube()", "m.csg:1:7: error: expected ';' or '{' after node");
+    check_error("cube() cube();", "m.csg:1:8: error: expected ';' or '{' after node");
+    check_error("cube(size = );", "m.csg:1:13: error: expected a value, found ')'");
+    check_error("cube(, 1);", "m.csg:1:6: error: expected a value, found ','");
+    check_error("a([1, , 2]);", "m.csg:1:7: error: expected a value, found ','");
+    check_error("a([1, 2", "m.csg:1:8: error: expected ']' (to close '[' at line 1)");
+    check_error("a(x);", "m.csg:1:4: error: expected '=' after argument name 'x'");
+    check_error("a(x = y);", "m.csg:1:7: error: expected a value, found a name");
+    check_error("a(", "m.csg:1:3: error: expected a value, found end of file");
+    /* Lexer errors come through unchanged. */
+    check_error("cube(size = @);", "m.csg:1:13: error: unexpected character '@'");
+    check_error("text(t = \"abc);", "m.csg:1:10: error: unterminated string");
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_empty),        cmocka_unit_test(test_openscad_export),
+        cmocka_unit_test(test_values),       cmocka_unit_test(test_modifiers),
+        cmocka_unit_test(test_arg_lookup),   cmocka_unit_test(test_next_node),
+        cmocka_unit_test(test_empty_block),  cmocka_unit_test(test_deep_nodes),
+        cmocka_unit_test(test_deep_vectors), cmocka_unit_test(test_errors),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
