@@ -1,0 +1,259 @@
+/* Tests of image output (src/render/image_io.cpp).
+ *
+ * Each writer's file is read back through OpenImageIO (render/image_read.h)
+ * and compared with the framebuffer; depth keeps +inf. The failure cases
+ * check the exact messages and that a failed write leaves an existing
+ * target as it was and no temporary file behind.
+ */
+#define _POSIX_C_SOURCE 200809L
+
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+
+#include <cmocka.h>
+#include <dirent.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include "render/image_io.h"
+#include "render/image_read.h"
+#include "spancast/spancast.h"
+
+#ifndef SPANCAST_TEST_WORK
+#define SPANCAST_TEST_WORK "test_image_io.work"
+#endif
+
+static char work[1024];
+
+static const char *path_in_work(char *buf, size_t size, const char *name)
+{
+    snprintf(buf, size, "%s/%s", work, name);
+    return buf;
+}
+
+static int setup(void **state)
+{
+    (void)state;
+    snprintf(work, sizeof work, "%s", SPANCAST_TEST_WORK);
+    char cmd[2200];
+    snprintf(cmd, sizeof cmd, "rm -rf '%s' && mkdir -p '%s'", work, work);
+    return system(cmd) == 0 ? 0 : -1;
+}
+
+/* A 5 x 3 framebuffer with a gradient, a mask and a depth with misses. */
+static sc_framebuffer *make_fb(void)
+{
+    sc_framebuffer *fb = calloc(1, sizeof *fb);
+    fb->width = 5;
+    fb->height = 3;
+    size_t n = 15;
+    fb->color = malloc(n * 3 * sizeof(float));
+    fb->mask = malloc(n);
+    fb->depth = malloc(n * sizeof(float));
+    for (size_t p = 0; p < n; p++) {
+        fb->color[3 * p + 0] = (float)p / 14.0f;
+        fb->color[3 * p + 1] = 1.0f - (float)p / 14.0f;
+        fb->color[3 * p + 2] = 0.5f;
+        fb->mask[p] = (p % 3) ? 255 : 0;
+        fb->depth[p] = (p % 3) ? 1.25f + (float)p : INFINITY;
+    }
+    return fb;
+}
+
+/* Entries of the work folder whose names start with '.' other than . and
+ * .. (leftover temporaries). */
+static int hidden_entries(void)
+{
+    DIR *d = opendir(work);
+    assert_non_null(d);
+    int count = 0;
+    struct dirent *e;
+    while ((e = readdir(d)))
+        if (e->d_name[0] == '.' && strcmp(e->d_name, ".") && strcmp(e->d_name, ".."))
+            count++;
+    closedir(d);
+    return count;
+}
+
+static void read_back(const char *path, image_data *img)
+{
+    char err[512];
+    if (!image_read(path, img, err, sizeof err))
+        fail_msg("%s", err);
+}
+
+static void test_color_png(void **state)
+{
+    (void)state;
+    sc_framebuffer *fb = make_fb();
+    char path[1100];
+    sc_error e;
+    path_in_work(path, sizeof path, "color.png");
+    assert_int_equal(sc_framebuffer_write_color(fb, path, &e), SC_OK);
+    image_data img;
+    read_back(path, &img);
+    assert_int_equal(img.width, 5);
+    assert_int_equal(img.height, 3);
+    assert_int_equal(img.channels, 3);
+    for (size_t k = 0; k < 45; k++) {
+        float want = roundf(fb->color[k] * 255.0f) / 255.0f;
+        assert_true(fabsf(img.pixels[k] - want) < 1e-6f);
+    }
+    image_data_free(&img);
+    /* float formats keep the values */
+    path_in_work(path, sizeof path, "color.exr");
+    assert_int_equal(sc_framebuffer_write_color(fb, path, &e), SC_OK);
+    read_back(path, &img);
+    assert_int_equal(img.channels, 3);
+    assert_memory_equal(img.pixels, fb->color, 45 * sizeof(float));
+    image_data_free(&img);
+    assert_int_equal(hidden_entries(), 0);
+    sc_framebuffer_release(fb);
+}
+
+static void test_mask_and_depth(void **state)
+{
+    (void)state;
+    sc_framebuffer *fb = make_fb();
+    char path[1100];
+    sc_error e;
+    image_data img;
+    path_in_work(path, sizeof path, "mask.png");
+    assert_int_equal(sc_framebuffer_write_mask(fb, path, &e), SC_OK);
+    read_back(path, &img);
+    assert_int_equal(img.channels, 1);
+    for (size_t p = 0; p < 15; p++)
+        assert_true(img.pixels[p] == (fb->mask[p] ? 1.0f : 0.0f));
+    image_data_free(&img);
+
+    const char *names[] = {"depth.exr", "depth.tif", "DEPTH.EXR"};
+    for (int k = 0; k < 3; k++) {
+        path_in_work(path, sizeof path, names[k]);
+        assert_int_equal(sc_framebuffer_write_depth(fb, path, &e), SC_OK);
+        read_back(path, &img);
+        assert_int_equal(img.channels, 1);
+        for (size_t p = 0; p < 15; p++) {
+            if (isinf(fb->depth[p]))
+                assert_true(isinf(img.pixels[p]) && img.pixels[p] > 0);
+            else
+                assert_true(img.pixels[p] == fb->depth[p]);
+        }
+        image_data_free(&img);
+    }
+    assert_int_equal(hidden_entries(), 0);
+    sc_framebuffer_release(fb);
+}
+
+static void test_format_errors(void **state)
+{
+    (void)state;
+    sc_framebuffer *fb = make_fb();
+    sc_error e;
+    assert_int_equal(sc_framebuffer_write_color(fb, "x.foo", &e), SC_ERR_ARGUMENT);
+    assert_string_equal(e.message, "cannot write 'x.foo': unknown image format");
+    assert_int_equal(sc_framebuffer_write_mask(fb, "noextension", &e), SC_ERR_ARGUMENT);
+    assert_string_equal(e.message, "cannot write 'noextension': unknown image format");
+    assert_int_equal(sc_framebuffer_write_color(fb, "dir.png/name", &e), SC_ERR_ARGUMENT);
+    assert_string_equal(e.message, "cannot write 'dir.png/name': unknown image format");
+    assert_int_equal(sc_framebuffer_write_depth(fb, "d.png", &e), SC_ERR_ARGUMENT);
+    assert_string_equal(e.message, "cannot write depth to 'd.png': depth needs a "
+                                   "floating-point format (.exr or .tif)");
+    assert_int_equal(imgio_check("a.PNG", IMGIO_COLOR, &e), SC_OK);
+    assert_int_equal(imgio_check("a.jpg", IMGIO_MASK, &e), SC_OK);
+    assert_int_equal(imgio_check("a.jpg", IMGIO_DEPTH, &e), SC_ERR_ARGUMENT);
+
+    sc_framebuffer none;
+    memset(&none, 0, sizeof none);
+    assert_int_equal(sc_framebuffer_write_depth(&none, "d.exr", &e), SC_ERR_ARGUMENT);
+    assert_string_equal(e.message, "the framebuffer has no depth buffer");
+    sc_framebuffer_release(fb);
+}
+
+static void write_text(const char *path, const char *text)
+{
+    FILE *f = fopen(path, "w");
+    assert_non_null(f);
+    fputs(text, f);
+    fclose(f);
+}
+
+static void test_failures_keep_target(void **state)
+{
+    (void)state;
+    sc_framebuffer *fb = make_fb();
+    char path[1100], dir[1100];
+    sc_error e;
+
+    /* a folder that does not exist */
+    path_in_work(path, sizeof path, "missing/out.png");
+    assert_int_equal(sc_framebuffer_write_color(fb, path, &e), SC_ERR_IO);
+    char want[1300];
+    snprintf(want, sizeof want, "cannot write '%s': No such file or directory", path);
+    assert_string_equal(e.message, want);
+
+    /* a "folder" that is a file */
+    path_in_work(dir, sizeof dir, "plain");
+    write_text(dir, "x");
+    path_in_work(path, sizeof path, "plain/out.png");
+    assert_int_equal(sc_framebuffer_write_color(fb, path, &e), SC_ERR_IO);
+    snprintf(want, sizeof want, "cannot write '%s': Not a directory", path);
+    assert_string_equal(e.message, want);
+
+    /* the target is a folder: the image is written, the rename fails, and
+     * the temporary goes away */
+    path_in_work(path, sizeof path, "taken.png");
+    assert_int_equal(mkdir(path, 0755), 0);
+    assert_int_equal(sc_framebuffer_write_color(fb, path, &e), SC_ERR_IO);
+    snprintf(want, sizeof want, "cannot write '%s': Is a directory", path);
+    assert_string_equal(e.message, want);
+    struct stat st;
+    assert_int_equal(stat(path, &st), 0);
+    assert_true(S_ISDIR(st.st_mode));
+    assert_int_equal(hidden_entries(), 0);
+
+    /* a read-only folder (meaningless for root, who may write anyway) */
+    if (geteuid() != 0) {
+        path_in_work(dir, sizeof dir, "readonly");
+        assert_int_equal(mkdir(dir, 0755), 0);
+        path_in_work(path, sizeof path, "readonly/out.png");
+        write_text(path, "old");
+        assert_int_equal(chmod(dir, 0555), 0);
+        assert_int_equal(sc_framebuffer_write_color(fb, path, &e), SC_ERR_IO);
+        snprintf(want, sizeof want, "cannot write '%s': Permission denied", path);
+        assert_string_equal(e.message, want);
+        chmod(dir, 0755);
+        FILE *f = fopen(path, "r");
+        char buf[8] = {0};
+        assert_non_null(f);
+        assert_non_null(fgets(buf, sizeof buf, f));
+        fclose(f);
+        assert_string_equal(buf, "old");
+    }
+
+    /* an existing target is replaced whole on success */
+    path_in_work(path, sizeof path, "replace.png");
+    write_text(path, "old contents");
+    assert_int_equal(sc_framebuffer_write_mask(fb, path, &e), SC_OK);
+    image_data img;
+    read_back(path, &img);
+    assert_int_equal(img.width, 5);
+    image_data_free(&img);
+    assert_int_equal(hidden_entries(), 0);
+    sc_framebuffer_release(fb);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_color_png),
+        cmocka_unit_test(test_mask_and_depth),
+        cmocka_unit_test(test_format_errors),
+        cmocka_unit_test(test_failures_keep_target),
+    };
+    return cmocka_run_group_tests(tests, setup, NULL);
+}
