@@ -122,7 +122,7 @@ void sc_render_options_init(sc_render_options *options);
  * NULL. */
 typedef struct sc_framebuffer {
     int width, height;
-    float *color;  /* RGB, 3 floats per pixel, linear 0..1 */
+    float *color;  /* RGB, 3 floats per pixel, display (sRGB-encoded) values 0..1 */
     float *depth;  /* distance along the ray to the hit, +inf on a miss */
     uint8_t *mask; /* 255 where the camera ray hits, 0 elsewhere */
     float *normal; /* world normal, 3 floats per pixel, 0 on a miss */
