@@ -143,9 +143,11 @@ check
 "$bin" info m.csg >info.txt 2>stderr.txt || fail "info failed"
 cat >want.txt <<'EOF'
 model:  m.csg
-nodes:  3
-leaves: 2
-depth:  2
+nodes:  3 (3 as written)
+leaves: 2 (2 as written)
+depth:  2 (2 as written)
+bvh:    0 nodes
+kinds:  1 sphere, 1 box
 bounds: [-5, -5, -5] to [5, 5, 5]
 EOF
 cmp -s info.txt want.txt || fail "info printed: $(cat info.txt)"

@@ -14,6 +14,8 @@
  *    sampled along the ray (inside each span, in each gap, just beyond
  *    every end, and at random) except within a tolerance of a span end, and
  *    csg_first_hit / csg_any_hit agree with it.
+ *    Every fifth tree is wide (unions and differences of 8 or more
+ *    operands), so the BVHs built for those are part of the test.
  * 3. Bounds culling. Every ray of (2) is also evaluated by brute force
  *    (every leaf, no boxes, no clipping of the operands) and the two span
  *    lists must be identical; rays that miss the root's box yield nothing.
@@ -150,7 +152,8 @@ static int list_is_well_formed(const csg_tree *t, const csg_ray *ray, span_list 
 }
 
 /* csg_first_hit must report the first span end at or after tmin that lies
- * on a surface, and csg_any_hit whether there is one. */
+ * on a surface, and csg_any_hit whether the solid meets the ray's range
+ * (whether the clipped span list is not empty). */
 static int first_hit_agrees(const csg_tree *t, const csg_ray *ray, span_list s,
                             arena *scratch)
 {
@@ -166,7 +169,7 @@ static int first_hit_agrees(const csg_tree *t, const csg_ray *ray, span_list s,
     }
     csg_hit hit;
     int got = csg_first_hit(t, ray, scratch, &hit);
-    if (got != (want != NULL) || csg_any_hit(t, ray, scratch) != got)
+    if (got != (want != NULL) || csg_any_hit(t, ray, scratch) != (s.n > 0))
         return 0;
     if (!got)
         return 1;
@@ -634,6 +637,22 @@ static uint32_t random_node(gen *g, const affine *parent, int level)
     return id;
 }
 
+/* A wide tree: a difference whose first operand is a union of 8 to 31
+ * random subtrees and which subtracts 8 to 15 random leaves, so that both
+ * get a BVH when compiled; as deep as random_node's trees. */
+static uint32_t random_wide(gen *g)
+{
+    affine id = affine_identity();
+    uint32_t parts[32], cut[16];
+    uint32_t n = 8 + below(&g->r, 24), m = 8 + below(&g->r, 8);
+    for (uint32_t k = 0; k < n; k++)
+        parts[k] = random_node(g, &id, 2);
+    cut[0] = csg_builder_op(g->b, CSG_UNION, parts, n);
+    for (uint32_t k = 1; k <= m; k++)
+        cut[k] = random_node(g, &id, TREE_LEVELS);
+    return csg_builder_op(g->b, CSG_DIFFERENCE, cut, m + 1);
+}
+
 /* Brute force: every leaf's spans, combined with no box tests and no
  * narrowing of the operands, then clipped as csg_spans clips. */
 static span_list brute_node(const csg_tree *t, uint32_t id, vec3 o, vec3 d, double eps,
@@ -705,7 +724,7 @@ static int same_lists(span_list a, span_list b)
 typedef struct property_stats {
     long trees, leaves, rays, misses, rays_with_spans, spans, samples, skipped,
         disagreements;
-    long bad_lists, bad_first_hits, culling_mismatches;
+    long bad_lists, bad_first_hits, culling_mismatches, bvh_nodes;
     uint32_t max_depth;
 } property_stats;
 
@@ -806,14 +825,17 @@ static void test_random_trees(void **state)
         gen g = {{seed}, csg_builder_new(), 0, 0};
         assert_non_null(g.b);
         affine id = affine_identity();
-        uint32_t root = random_node(&g, &id, 0);
+        /* Every fifth tree is wide, to exercise the BVHs. */
+        uint32_t root = ti % 5 == 4 ? random_wide(&g) : random_node(&g, &id, 0);
         csg_tree *t = finish(g.b, root);
+        st.bvh_nodes += t->bvh_node_count;
         kinds |= g.kinds_used;
         st.trees++;
         st.leaves += g.leaves;
-        if (t->depth > st.max_depth)
-            st.max_depth = t->depth;
-        assert_true(t->depth >= TREE_LEVELS + 1);
+        if (t->source_depth > st.max_depth)
+            st.max_depth = t->source_depth;
+        /* The tree as generated; compiling may flatten it. */
+        assert_true(t->source_depth >= TREE_LEVELS + 1);
         if (t->root == CSG_EMPTY || bbox_is_empty(&t->bounds)) {
             csg_tree_free(t);
             continue;
@@ -912,10 +934,11 @@ static void test_random_trees(void **state)
                   "(%ld missing the bounds, %ld with spans, %ld spans), %ld samples (%ld "
                   "within tolerance of an "
                   "end), %ld disagreements, %ld bad lists, %ld bad first hits, %ld "
-                  "culling mismatches, %.2f s\n",
+                  "culling mismatches, %ld BVH nodes, %.2f s\n",
                   st.trees, st.leaves, st.max_depth, st.rays, st.misses,
                   st.rays_with_spans, st.spans, st.samples, st.skipped, st.disagreements,
-                  st.bad_lists, st.bad_first_hits, st.culling_mismatches, seconds);
+                  st.bad_lists, st.bad_first_hits, st.culling_mismatches, st.bvh_nodes,
+                  seconds);
     assert_int_equal(kinds, (1u << PRIM_KIND_COUNT) - 1);
     assert_true(st.rays >= 100000);
     assert_true(st.rays_with_spans > st.rays / 4);
@@ -923,6 +946,7 @@ static void test_random_trees(void **state)
     assert_int_equal(st.bad_lists, 0);
     assert_int_equal(st.bad_first_hits, 0);
     assert_int_equal(st.culling_mismatches, 0);
+    assert_true(st.bvh_nodes > 0);
 }
 
 /* ---- 3. bounds culling, directly ---- */

@@ -82,12 +82,24 @@ int sc_scene_bounds(const sc_scene *scene, double lo[3], double hi[3]);
 size_t sc_scene_warning_count(const sc_scene *scene);
 const sc_error *sc_scene_warning(const sc_scene *scene, size_t index);
 
-/* Tree statistics for `spancast info`. */
+/* Tree statistics for `spancast info`: the compiled tree, and the tree as
+ * the file describes it before simplification. */
+#define SC_LEAF_KINDS 16
+
 typedef struct sc_scene_info {
     size_t node_count; /* boolean nodes and leaves of the compiled tree */
     size_t leaf_count;
     size_t depth;
+    size_t source_node_count; /* the same before simplification */
+    size_t source_leaf_count;
+    size_t source_depth;
+    size_t bvh_node_count; /* over wide unions and differences */
+    size_t
+        leaf_kinds[SC_LEAF_KINDS]; /* compiled leaves per kind, see sc_leaf_kind_name */
 } sc_scene_info;
+
+/* Name of leaf kind index k ("sphere", "box", ...), NULL past the last. */
+const char *sc_leaf_kind_name(int k);
 
 void sc_scene_get_info(const sc_scene *scene, sc_scene_info *info);
 

@@ -389,9 +389,19 @@ static int run_info(const cli_args *a)
     sc_scene_get_info(scene, &info);
     double lo[3], hi[3];
     printf("model:  %s\n", a->input);
-    printf("nodes:  %zu\n", info.node_count);
-    printf("leaves: %zu\n", info.leaf_count);
-    printf("depth:  %zu\n", info.depth);
+    printf("nodes:  %zu (%zu as written)\n", info.node_count, info.source_node_count);
+    printf("leaves: %zu (%zu as written)\n", info.leaf_count, info.source_leaf_count);
+    printf("depth:  %zu (%zu as written)\n", info.depth, info.source_depth);
+    printf("bvh:    %zu nodes\n", info.bvh_node_count);
+    printf("kinds: ");
+    const char *sep = " ";
+    for (int k = 0; sc_leaf_kind_name(k); k++) {
+        if (!info.leaf_kinds[k])
+            continue;
+        printf("%s%zu %s", sep, info.leaf_kinds[k], sc_leaf_kind_name(k));
+        sep = ", ";
+    }
+    printf("%s\n", *sep == ' ' ? " none" : "");
     if (sc_scene_bounds(scene, lo, hi))
         printf("bounds: [%g, %g, %g] to [%g, %g, %g]\n", lo[0], lo[1], lo[2], hi[0],
                hi[1], hi[2]);

@@ -1,20 +1,27 @@
-/* Building the CSG tree and answering ray queries on it.
+/* Building the CSG tree, compiling it, and answering ray queries on it.
  *
  * The builder collects nodes in growable arrays (children are always built
- * before their parent, so node ids increase towards the root) and, when
- * finished, copies them into flat arrays in the tree's arena and computes
- * world bounds bottom-up: a leaf's box is its local box transformed; a union
- * bounds its children's union, an intersection their intersection, a
- * difference its first child.
+ * before their parent, so node ids increase towards the root). Compiling
+ * (csg_builder_finish) walks the nodes reachable from the root in that
+ * order, so every node sees its children already compiled, and rewrites
+ * them into a simpler tree (see csg.h): world bounds bottom-up (a leaf's box
+ * is its local box transformed; a union bounds its children's union, an
+ * intersection their intersection, a difference its first child), nested
+ * booleans of one kind flattened, empties and subtracted solids that cannot
+ * touch dropped. A last pass keeps only what the new root reaches, in flat
+ * arrays in the tree's arena, and builds a BVH over the operands of wide
+ * nodes. Nothing here recurses on the input's nesting.
  *
- * A query walks the tree recursively (its depth is bounded by the scene
- * builder's nesting limit). Each node first tests its box against the part
- * of the ray that can still matter; a leaf carries the ray into its local
- * frame without renormalising and asks its primitive for spans; boolean
- * nodes fold their children's span lists with span_combine. Intersection and
- * difference evaluate their first child first: an empty result ends the
- * node, and the other children are only tested against the stretch of ray
- * the first child occupies.
+ * A query walks the compiled tree recursively (its depth is what is left
+ * after flattening, bounded by the scene builder's nesting limit). Each node
+ * first tests its box against the part of the ray that can still matter; a
+ * leaf carries the ray into its local frame without renormalising and asks
+ * its primitive for spans; boolean nodes fold their children's span lists
+ * with span_combine. Intersection and difference evaluate their first child
+ * first: an empty result ends the node, and the other children are only
+ * tested against the stretch of ray the first child occupies. Unions (and
+ * the subtrahends of a difference) are visited through their BVH when they
+ * have one, near side first.
  */
 #include "csg/csg.h"
 
@@ -22,6 +29,7 @@
 #include <string.h>
 
 #include "base/error.h"
+#include "csg/bvh.h"
 
 struct csg_builder {
     arena mem; /* becomes the tree's arena */
@@ -113,7 +121,7 @@ uint32_t csg_builder_leaf(csg_builder *b, const prim *p, const affine *to_world,
     memcpy(l->color, color, sizeof l->color);
     l->object_id = b->leaf_count;
     l->loc = loc;
-    csg_node n = {CSG_LEAF, b->leaf_count, 0, 0, bbox_empty()};
+    csg_node n = {CSG_LEAF, b->leaf_count, 0, 0, CSG_NO_BVH, bbox_empty()};
     uint32_t id = add_node(b, &n);
     if (id != CSG_EMPTY)
         b->leaf_count++;
@@ -151,8 +159,196 @@ uint32_t csg_builder_op(csg_builder *b, csg_op op, const uint32_t *children,
         if (children[i] != CSG_EMPTY)
             b->child_ids[b->child_count++] = children[i];
     }
-    csg_node n = {op, 0, first, kept, bbox_empty()};
+    csg_node n = {op, 0, first, kept, CSG_NO_BVH, bbox_empty()};
     return add_node(b, &n);
+}
+
+/* ---- compiling ---- */
+
+typedef struct id_vec {
+    uint32_t *v;
+    uint32_t n, cap;
+} id_vec;
+
+static int id_push(id_vec *a, uint32_t x)
+{
+    if (!grow((void **)&a->v, &a->cap, a->n + 1, sizeof *a->v))
+        return 0;
+    a->v[a->n++] = x;
+    return 1;
+}
+
+static int boxes_overlap(const bbox *a, const bbox *b)
+{
+    bbox i = bbox_intersect(*a, *b);
+    return !bbox_is_empty(&i);
+}
+
+/* The compiled nodes before the final compaction; child lists index kids. */
+typedef struct compiler {
+    const csg_builder *src;
+    csg_node *nodes;
+    uint32_t count, cap;
+    id_vec kids;
+    id_vec operands; /* of the node being compiled */
+    int failed;
+} compiler;
+
+static uint32_t emit(compiler *c, const csg_node *n)
+{
+    if (!grow((void **)&c->nodes, &c->cap, c->count + 1, sizeof *c->nodes)) {
+        c->failed = 1;
+        return CSG_EMPTY;
+    }
+    c->nodes[c->count] = *n;
+    return c->count++;
+}
+
+static void add_operand(compiler *c, uint32_t id)
+{
+    if (!id_push(&c->operands, id))
+        c->failed = 1;
+}
+
+/* Adds node m as an operand, or its children when it is a node of the same
+ * kind (flattening). */
+static void add_flattened(compiler *c, uint32_t m, csg_op op)
+{
+    const csg_node *n = &c->nodes[m];
+    if (n->op != op) {
+        add_operand(c, m);
+        return;
+    }
+    for (uint32_t k = 0; k < n->child_count; k++)
+        add_operand(c, c->kids.v[n->first_child + k]);
+}
+
+/* Compiles boolean source node n, whose children map already gives. Returns
+ * the compiled id, or CSG_EMPTY. */
+static uint32_t compile_op(compiler *c, const csg_node *n, const uint32_t *map)
+{
+    const uint32_t *src_kids = &c->src->child_ids[n->first_child];
+    c->operands.n = 0;
+    bbox bounds = bbox_empty();
+    if (n->op == CSG_DIFFERENCE) {
+        uint32_t first = map[src_kids[0]];
+        if (first == CSG_EMPTY)
+            return CSG_EMPTY;
+        bounds = c->nodes[first].bounds;
+        add_flattened(c, first, CSG_DIFFERENCE);
+        for (uint32_t k = 1; k < n->child_count; k++) {
+            uint32_t m = map[src_kids[k]];
+            if (m == CSG_EMPTY)
+                continue;
+            /* A union subtracted is its children subtracted one by one. */
+            const csg_node *sub = &c->nodes[m];
+            uint32_t count = sub->op == CSG_UNION ? sub->child_count : 1;
+            for (uint32_t g = 0; g < count; g++) {
+                uint32_t id = sub->op == CSG_UNION ? c->kids.v[sub->first_child + g] : m;
+                if (boxes_overlap(&c->nodes[id].bounds, &bounds))
+                    add_operand(c, id);
+            }
+        }
+    } else {
+        for (uint32_t k = 0; k < n->child_count; k++) {
+            uint32_t m = map[src_kids[k]];
+            if (m == CSG_EMPTY) {
+                if (n->op == CSG_INTERSECTION)
+                    return CSG_EMPTY;
+                continue;
+            }
+            add_flattened(c, m, n->op);
+        }
+        for (uint32_t k = 0; k < c->operands.n; k++) {
+            const bbox *b = &c->nodes[c->operands.v[k]].bounds;
+            if (n->op == CSG_UNION)
+                bounds = bbox_union(bounds, *b);
+            else
+                bounds = k == 0 ? *b : bbox_intersect(bounds, *b);
+        }
+        if (n->op == CSG_INTERSECTION && bbox_is_empty(&bounds))
+            return CSG_EMPTY;
+    }
+    if (c->failed || c->operands.n == 0)
+        return CSG_EMPTY;
+    if (c->operands.n == 1)
+        return c->operands.v[0];
+    csg_node out = {n->op, 0, c->kids.n, c->operands.n, CSG_NO_BVH, bounds};
+    for (uint32_t k = 0; k < c->operands.n; k++) {
+        if (!id_push(&c->kids, c->operands.v[k])) {
+            c->failed = 1;
+            return CSG_EMPTY;
+        }
+    }
+    return emit(c, &out);
+}
+
+/* Marks the nodes that root reaches among count nodes whose children have
+ * smaller ids than their parents; returns the number marked, or 0 on
+ * allocation failure (*marks then NULL). */
+static uint32_t mark_reachable(const csg_node *nodes, const uint32_t *kids,
+                               uint32_t count, uint32_t root, unsigned char **marks)
+{
+    *marks = calloc(count ? count : 1, 1);
+    if (!*marks || root == CSG_EMPTY)
+        return 0;
+    uint32_t reached = 0;
+    (*marks)[root] = 1;
+    for (uint32_t i = root + 1; i-- > 0;) {
+        if (!(*marks)[i])
+            continue;
+        reached++;
+        const csg_node *n = &nodes[i];
+        if (n->op != CSG_LEAF)
+            for (uint32_t k = 0; k < n->child_count; k++)
+                (*marks)[kids[n->first_child + k]] = 1;
+    }
+    return reached;
+}
+
+/* Depth of every marked node (children first); returns the root's. */
+static uint32_t depths(const csg_node *nodes, const uint32_t *kids, uint32_t count,
+                       const unsigned char *marks, uint32_t *depth, uint32_t root)
+{
+    for (uint32_t i = 0; i < count; i++) {
+        if (!marks[i])
+            continue;
+        const csg_node *n = &nodes[i];
+        uint32_t d = 0;
+        if (n->op != CSG_LEAF)
+            for (uint32_t k = 0; k < n->child_count; k++)
+                if (depth[kids[n->first_child + k]] > d)
+                    d = depth[kids[n->first_child + k]];
+        depth[i] = d + 1;
+    }
+    return root == CSG_EMPTY ? 0 : depth[root];
+}
+
+/* Builds the BVHs of the tree's wide nodes; returns 0 when memory ran out. */
+static int build_bvhs(csg_tree *t, bvh_nodes *out)
+{
+    bbox *boxes = NULL;
+    uint32_t boxes_cap = 0;
+    for (uint32_t i = 0; i < t->node_count; i++) {
+        csg_node *n = &t->nodes[i];
+        uint32_t skip = n->op == CSG_DIFFERENCE ? 1 : 0;
+        if ((n->op != CSG_UNION && n->op != CSG_DIFFERENCE) || n->child_count - skip < 8)
+            continue;
+        uint32_t count = n->child_count - skip, first = n->first_child + skip;
+        if (!grow((void **)&boxes, &boxes_cap, count, sizeof *boxes)) {
+            free(boxes);
+            return 0;
+        }
+        for (uint32_t k = 0; k < count; k++)
+            boxes[k] = t->nodes[t->child_ids[first + k]].bounds;
+        n->bvh = bvh_build(out, &t->child_ids[first], boxes, count, first);
+        if (n->bvh == CSG_NO_BVH) {
+            free(boxes);
+            return 0;
+        }
+    }
+    free(boxes);
+    return 1;
 }
 
 /* Copies count items of size elem into the arena; NULL on failure (or when
@@ -167,62 +363,148 @@ static void *arena_copy(arena *a, const void *src, size_t count, size_t elem)
     return p;
 }
 
+/* Freezes the compiled nodes that root reaches into t; returns 0 when
+ * memory ran out. */
+static int freeze(csg_tree *t, compiler *c, uint32_t root)
+{
+    unsigned char *marks;
+    uint32_t reached = mark_reachable(c->nodes, c->kids.v, c->count, root, &marks);
+    uint32_t *renumber = calloc(c->count ? c->count : 1, sizeof *renumber);
+    csg_node *nodes = calloc(reached ? reached : 1, sizeof *nodes);
+    id_vec kids = {NULL, 0, 0};
+    csg_leaf *leaves =
+        calloc(c->src->leaf_count ? c->src->leaf_count : 1, sizeof *leaves);
+    bvh_nodes bvh = {NULL, 0, 0};
+    int ok = marks && renumber && nodes && leaves;
+    uint32_t count = 0, leaf_count = 0;
+    for (uint32_t i = 0; ok && i < c->count; i++) {
+        if (!marks[i])
+            continue;
+        csg_node n = c->nodes[i];
+        if (n.op == CSG_LEAF) {
+            leaves[leaf_count] = c->src->leaves[n.leaf];
+            n.leaf = leaf_count++;
+        } else {
+            uint32_t first = kids.n;
+            for (uint32_t k = 0; k < n.child_count; k++)
+                ok = ok && id_push(&kids, renumber[c->kids.v[n.first_child + k]]);
+            n.first_child = first;
+        }
+        renumber[i] = count;
+        nodes[count++] = n;
+    }
+    if (ok) {
+        t->root = root == CSG_EMPTY ? CSG_EMPTY : renumber[root];
+        t->node_count = count;
+        t->leaf_count = leaf_count;
+        t->nodes = nodes;
+        t->child_ids = kids.v;
+        ok = build_bvhs(t, &bvh);
+    }
+    if (ok) {
+        uint32_t *depth = calloc(count ? count : 1, sizeof *depth);
+        unsigned char *all = malloc(count ? count : 1);
+        ok = depth && all;
+        if (ok) {
+            memset(all, 1, count ? count : 1);
+            t->depth = depths(nodes, kids.v, count, all, depth, t->root);
+        }
+        free(depth);
+        free(all);
+    }
+    if (ok) {
+        t->nodes = arena_copy(&t->mem, nodes, count, sizeof *nodes);
+        t->child_ids = arena_copy(&t->mem, kids.v, kids.n, sizeof *kids.v);
+        t->leaves = arena_copy(&t->mem, leaves, leaf_count, sizeof *leaves);
+        t->bvh_nodes = arena_copy(&t->mem, bvh.v, bvh.count, sizeof *bvh.v);
+        t->bvh_node_count = bvh.count;
+        ok = (!count || t->nodes) && (!kids.n || t->child_ids) &&
+             (!leaf_count || t->leaves) && (!bvh.count || t->bvh_nodes);
+    }
+    free(marks);
+    free(renumber);
+    free(nodes);
+    free(kids.v);
+    free(leaves);
+    free(bvh.v);
+    return ok;
+}
+
+/* Source statistics and world bounds of the builder's nodes. */
+static int measure_source(csg_builder *b, uint32_t root, csg_tree *t)
+{
+    for (uint32_t i = 0; i < b->node_count; i++) {
+        csg_node *n = &b->nodes[i];
+        if (n->op != CSG_LEAF)
+            continue;
+        const csg_leaf *l = &b->leaves[n->leaf];
+        n->bounds = bbox_transform(&l->to_world, prim_bounds(&l->prim));
+    }
+    unsigned char *marks;
+    t->source_node_count =
+        mark_reachable(b->nodes, b->child_ids, b->node_count, root, &marks);
+    uint32_t *depth = calloc(b->node_count ? b->node_count : 1, sizeof *depth);
+    int ok = marks && depth;
+    if (ok) {
+        t->source_depth =
+            depths(b->nodes, b->child_ids, b->node_count, marks, depth, root);
+        for (uint32_t i = 0; i < b->node_count; i++)
+            t->source_leaf_count += marks[i] && b->nodes[i].op == CSG_LEAF;
+    }
+    free(marks);
+    free(depth);
+    return ok;
+}
+
+static int compile(csg_builder *b, uint32_t root, csg_tree *t)
+{
+    if (!measure_source(b, root, t))
+        return 0;
+    compiler c = {b, NULL, 0, 0, {NULL, 0, 0}, {NULL, 0, 0}, 0};
+    uint32_t *map = malloc((b->node_count ? b->node_count : 1) * sizeof *map);
+    unsigned char *marks;
+    mark_reachable(b->nodes, b->child_ids, b->node_count, root, &marks);
+    int ok = map && marks;
+    uint32_t new_root = CSG_EMPTY;
+    for (uint32_t i = 0; ok && i < b->node_count; i++) {
+        map[i] = CSG_EMPTY;
+        if (!marks[i])
+            continue;
+        const csg_node *n = &b->nodes[i];
+        map[i] = n->op == CSG_LEAF ? emit(&c, n) : compile_op(&c, n, map);
+        ok = !c.failed;
+    }
+    if (ok && root != CSG_EMPTY)
+        new_root = map[root];
+    ok = ok && freeze(t, &c, new_root);
+    free(map);
+    free(marks);
+    free(c.nodes);
+    free(c.kids.v);
+    free(c.operands.v);
+    return ok;
+}
+
 sc_status csg_builder_finish(csg_builder *b, uint32_t root, csg_tree **out,
                              sc_error *error)
 {
     *out = NULL;
     if (!b)
         return err_set(error, SC_ERR_NOMEM, NULL, "out of memory");
-    if (b->failed) {
+    csg_tree *t = b->failed ? NULL : calloc(1, sizeof *t);
+    if (!t) {
         csg_builder_free(b);
         return err_set(error, SC_ERR_NOMEM, NULL, "out of memory");
-    }
-    csg_tree *t = calloc(1, sizeof *t);
-    uint32_t *depth = calloc(b->node_count ? b->node_count : 1, sizeof *depth);
-    if (!t || !depth) {
-        free(t);
-        free(depth);
-        csg_builder_free(b);
-        return err_set(error, SC_ERR_NOMEM, NULL, "out of memory");
-    }
-    /* Bounds and depth bottom-up: children have smaller ids. */
-    for (uint32_t i = 0; i < b->node_count; i++) {
-        csg_node *n = &b->nodes[i];
-        if (n->op == CSG_LEAF) {
-            const csg_leaf *l = &b->leaves[n->leaf];
-            bbox local = prim_bounds(&l->prim);
-            n->bounds = bbox_transform(&l->to_world, local);
-            depth[i] = 1;
-            continue;
-        }
-        const uint32_t *kids = &b->child_ids[n->first_child];
-        bbox box = b->nodes[kids[0]].bounds;
-        uint32_t d = depth[kids[0]];
-        for (uint32_t k = 1; k < n->child_count; k++) {
-            const csg_node *c = &b->nodes[kids[k]];
-            if (n->op == CSG_UNION)
-                box = bbox_union(box, c->bounds);
-            else if (n->op == CSG_INTERSECTION)
-                box = bbox_intersect(box, c->bounds);
-            if (depth[kids[k]] > d)
-                d = depth[kids[k]];
-        }
-        n->bounds = box;
-        depth[i] = d + 1;
     }
     t->mem = b->mem;
     memset(&b->mem, 0, sizeof b->mem);
-    t->node_count = b->node_count;
-    t->leaf_count = b->leaf_count;
-    t->nodes = arena_copy(&t->mem, b->nodes, b->node_count, sizeof *b->nodes);
-    t->child_ids =
-        arena_copy(&t->mem, b->child_ids, b->child_count, sizeof *b->child_ids);
-    t->leaves = arena_copy(&t->mem, b->leaves, b->leaf_count, sizeof *b->leaves);
-    int failed = (b->node_count && !t->nodes) || (b->child_count && !t->child_ids) ||
-                 (b->leaf_count && !t->leaves);
-    t->root = root;
-    t->bounds = root == CSG_EMPTY ? bbox_empty() : t->nodes[root].bounds;
-    t->depth = root == CSG_EMPTY ? 0 : depth[root];
+    int ok = compile(b, root, t);
+    csg_builder_free(b);
+    if (!ok) {
+        csg_tree_free(t);
+        return err_set(error, SC_ERR_NOMEM, NULL, "out of memory");
+    }
+    t->bounds = t->root == CSG_EMPTY ? bbox_empty() : t->nodes[t->root].bounds;
     t->scale = 1.0;
     if (!bbox_is_empty(&t->bounds)) {
         vec3 ext = bbox_extent(&t->bounds);
@@ -230,12 +512,6 @@ sc_status csg_builder_finish(csg_builder *b, uint32_t root, csg_tree **out,
                         fmax(v3_max_abs(t->bounds.lo), v3_max_abs(t->bounds.hi)));
         if (s > 0 && isfinite(s))
             t->scale = s;
-    }
-    free(depth);
-    csg_builder_free(b);
-    if (failed) {
-        csg_tree_free(t);
-        return err_set(error, SC_ERR_NOMEM, NULL, "out of memory");
     }
     *out = t;
     return SC_OK;
@@ -251,15 +527,25 @@ void csg_tree_free(csg_tree *t)
 
 /* ---- queries ---- */
 
+typedef enum eval_mode {
+    EVAL_ALL,   /* the node's spans, complete within the range */
+    EVAL_FIRST, /* correct up to the first crossing after the range start */
+    EVAL_ANY    /* stop as soon as the solid is seen inside the range */
+} eval_mode;
+
 typedef struct eval_ctx {
     const csg_tree *tree;
     vec3 o, d, inv_d;
     double eps;
     arena *scratch;
+    csg_counters *counters; /* never NULL inside a query */
     int oom;
+    int blocked; /* EVAL_ANY found the solid in the range */
 } eval_ctx;
 
 static const span_list no_spans = {NULL, 0};
+
+static span_list eval(eval_ctx *c, uint32_t id, double lo, double hi, eval_mode mode);
 
 static span_list eval_leaf(eval_ctx *c, const csg_node *n)
 {
@@ -272,40 +558,159 @@ static span_list eval_leaf(eval_ctx *c, const csg_node *n)
     }
     vec3 o = affine_point(&l->to_local, c->o);
     vec3 d = affine_vector(&l->to_local, c->d);
+    c->counters->prim_tests++;
     r.n = prim_spans(&l->prim, n->leaf, o, d, r.v, cap);
     r.n = span_regularize(r.v, r.n, c->eps);
     return r;
 }
 
-/* The spans of node id that matter within [tmin, tmax]; spans may extend
- * beyond that range (primitives report whole spans), callers clip. */
-static span_list eval(eval_ctx *c, uint32_t id, double tmin, double tmax)
+static int overlaps(span_list s, double lo, double hi)
+{
+    for (uint32_t k = 0; k < s.n; k++)
+        if (s.v[k].out.t > lo && s.v[k].in.t < hi)
+            return 1;
+    return 0;
+}
+
+static span_list combine(eval_ctx *c, span_op op, span_list a, span_list b)
+{
+    c->counters->span_ops++;
+    return span_combine(op, a, b, c->eps, c->scratch, &c->oom);
+}
+
+typedef struct union_state {
+    span_list acc;
+    eval_mode mode;
+    int narrowed; /* EVAL_FIRST moved hi to the running first entry */
+} union_state;
+
+/* The first span of s that reaches past lo, or NULL. */
+static const span *first_after(span_list s, double lo)
+{
+    for (uint32_t k = 0; k < s.n; k++)
+        if (s.v[k].out.t > lo)
+            return &s.v[k];
+    return NULL;
+}
+
+/* Adds operand id to a union's running result. In EVAL_ANY mode a blocker
+ * ends the query. In EVAL_FIRST mode, while the range start lies outside
+ * the union, *hi narrows to the union's first entry: later operands can
+ * only move that entry closer. (If a later operand puts the range start
+ * inside, the first crossing is an exit, which operands beyond the narrowed
+ * range can move; eval then evaluates the union again in full.) */
+static int visit_union(eval_ctx *c, void *state, uint32_t id, double *lo, double *hi)
+{
+    union_state *u = state;
+    span_list s = eval(c, id, *lo, *hi, u->mode == EVAL_ANY ? EVAL_ANY : EVAL_ALL);
+    if (c->blocked || c->oom)
+        return 0;
+    if (u->mode == EVAL_ANY && overlaps(s, *lo, *hi)) {
+        c->blocked = 1;
+        return 0;
+    }
+    u->acc = combine(c, SPAN_UNION, u->acc, s);
+    if (c->oom)
+        return 0;
+    const span *first = u->mode == EVAL_FIRST ? first_after(u->acc, *lo) : NULL;
+    if (first && first->in.t >= *lo && first->in.t < *hi) {
+        *hi = first->in.t;
+        u->narrowed = 1;
+    }
+    return 1;
+}
+
+/* Visits the operands of n held by its BVH (or, without one, the listed
+ * operands from index skip on) that the ray's [lo, hi] can meet, near side
+ * first, calling visit until it returns 0. */
+typedef int (*operand_visit)(eval_ctx *c, void *state, uint32_t id, double *lo,
+                             double *hi);
+
+static void for_operands(eval_ctx *c, const csg_node *n, uint32_t skip, double lo,
+                         double hi, operand_visit visit, void *state)
+{
+    const uint32_t *ids = c->tree->child_ids;
+    if (n->bvh == CSG_NO_BVH) {
+        for (uint32_t k = skip; k < n->child_count; k++)
+            if (!visit(c, state, ids[n->first_child + k], &lo, &hi))
+                return;
+        return;
+    }
+    uint32_t stack[BVH_MAX_DEPTH];
+    uint32_t sp = 0;
+    stack[sp++] = n->bvh;
+    const double *dir = &c->d.x;
+    while (sp > 0) {
+        const csg_bvh_node *b = &c->tree->bvh_nodes[stack[--sp]];
+        c->counters->bvh_nodes++;
+        double t0 = lo - c->eps, t1 = hi + c->eps;
+        if (!bbox_ray(&b->bounds, c->o, c->inv_d, &t0, &t1))
+            continue;
+        if (b->count) {
+            for (uint32_t k = 0; k < b->count; k++)
+                if (!visit(c, state, ids[b->index + k], &lo, &hi))
+                    return;
+            continue;
+        }
+        uint32_t near = (uint32_t)(b - c->tree->bvh_nodes) + 1, far = b->index;
+        if (dir[b->axis] < 0) {
+            uint32_t swap = near;
+            near = far;
+            far = swap;
+        }
+        stack[sp++] = far;
+        stack[sp++] = near;
+    }
+}
+
+typedef struct cut_state {
+    span_list acc;
+    span_op op;
+} cut_state;
+
+/* Intersects or subtracts operand id; narrows [lo, hi] to what is left. */
+static int visit_cut(eval_ctx *c, void *state, uint32_t id, double *lo, double *hi)
+{
+    cut_state *s = state;
+    s->acc = combine(c, s->op, s->acc, eval(c, id, *lo, *hi, EVAL_ALL));
+    if (c->oom || s->acc.n == 0)
+        return 0;
+    *lo = fmax(*lo, s->acc.v[0].in.t);
+    *hi = fmin(*hi, s->acc.v[s->acc.n - 1].out.t);
+    return 1;
+}
+
+/* The spans of node id that matter within [lo, hi]; spans may extend beyond
+ * that range (primitives report whole spans), callers clip. */
+static span_list eval(eval_ctx *c, uint32_t id, double lo, double hi, eval_mode mode)
 {
     const csg_node *n = &c->tree->nodes[id];
-    double t0 = tmin - c->eps, t1 = tmax + c->eps;
+    c->counters->nodes++;
+    double t0 = lo - c->eps, t1 = hi + c->eps;
     if (!bbox_ray(&n->bounds, c->o, c->inv_d, &t0, &t1))
         return no_spans;
     if (n->op == CSG_LEAF)
         return eval_leaf(c, n);
-
-    const uint32_t *kids = &c->tree->child_ids[n->first_child];
-    span_list acc = eval(c, kids[0], tmin, tmax);
-    for (uint32_t k = 1; k < n->child_count && !c->oom; k++) {
-        if (n->op == CSG_UNION) {
-            acc = span_combine(SPAN_UNION, acc, eval(c, kids[k], tmin, tmax), c->eps,
-                               c->scratch, &c->oom);
-            continue;
+    if (n->op == CSG_UNION) {
+        union_state u = {no_spans, mode, 0};
+        for_operands(c, n, 0, lo, hi, visit_union, &u);
+        const span *first = u.narrowed ? first_after(u.acc, lo) : NULL;
+        if (first && first->in.t < lo) {
+            u.acc = no_spans;
+            u.mode = EVAL_ALL;
+            for_operands(c, n, 0, lo, hi, visit_union, &u);
         }
-        if (acc.n == 0)
-            break;
-        /* Only where the first operand's solid lies can the others matter. */
-        double lo = fmax(tmin, acc.v[0].in.t), hi = fmin(tmax, acc.v[acc.n - 1].out.t);
-        span_list other = eval(c, kids[k], lo, hi);
-        acc =
-            span_combine(n->op == CSG_INTERSECTION ? SPAN_INTERSECTION : SPAN_DIFFERENCE,
-                         acc, other, c->eps, c->scratch, &c->oom);
+        return c->oom ? no_spans : u.acc;
     }
-    return c->oom ? no_spans : acc;
+    cut_state s = {eval(c, c->tree->child_ids[n->first_child], lo, hi, EVAL_ALL),
+                   n->op == CSG_INTERSECTION ? SPAN_INTERSECTION : SPAN_DIFFERENCE};
+    if (c->oom || s.acc.n == 0)
+        return no_spans;
+    /* Only where the first operand's solid lies can the others matter. */
+    double first_lo = fmax(lo, s.acc.v[0].in.t);
+    double first_hi = fmin(hi, s.acc.v[s.acc.n - 1].out.t);
+    for_operands(c, n, 1, first_lo, first_hi, visit_cut, &s);
+    return c->oom ? no_spans : s.acc;
 }
 
 double csg_eps(const csg_tree *t, vec3 o, vec3 d)
@@ -321,29 +726,37 @@ double csg_eps(const csg_tree *t, vec3 o, vec3 d)
     return 1e-9 * fmax(t->scale, dist) / len;
 }
 
-static void init_ctx(eval_ctx *c, const csg_tree *t, const csg_ray *r, arena *scratch)
+/* Runs a query from the root; returns 0 on allocation failure. */
+static int run(const csg_tree *t, const csg_ray *r, arena *scratch,
+               csg_counters *counters, eval_mode mode, span_list *out, int *blocked)
 {
-    c->tree = t;
-    c->o = r->o;
-    c->d = r->d;
-    c->inv_d = v3(1.0 / r->d.x, 1.0 / r->d.y, 1.0 / r->d.z);
-    c->eps = csg_eps(t, r->o, r->d);
-    c->scratch = scratch;
-    c->oom = 0;
-}
-
-int csg_spans(const csg_tree *t, const csg_ray *r, arena *scratch, span_list *out)
-{
+    csg_counters unused = {0, 0, 0, 0, 0};
+    eval_ctx c;
+    c.tree = t;
+    c.o = r->o;
+    c.d = r->d;
+    c.inv_d = v3(1.0 / r->d.x, 1.0 / r->d.y, 1.0 / r->d.z);
+    c.eps = csg_eps(t, r->o, r->d);
+    c.scratch = scratch;
+    c.counters = counters ? counters : &unused;
+    c.oom = 0;
+    c.blocked = 0;
+    c.counters->queries++;
     *out = no_spans;
+    *blocked = 0;
     if (t->root == CSG_EMPTY || !(r->tmin <= r->tmax))
         return 1;
-    eval_ctx c;
-    init_ctx(&c, t, r, scratch);
-    span_list all = eval(&c, t->root, r->tmin, r->tmax);
-    if (c.oom)
-        return 0;
-    /* Clip to [tmin, tmax]; a clipped end refers to no surface. The list
-     * may be shared with a leaf or child result, so write a copy. */
+    *out = eval(&c, t->root, r->tmin, r->tmax, mode);
+    *blocked = c.blocked;
+    return !c.oom;
+}
+
+/* Clips a root span list to [tmin, tmax] into new scratch memory (the list
+ * may be shared with a leaf or child result); a clipped end refers to no
+ * surface. Returns 0 on allocation failure. */
+static int clip(span_list all, const csg_ray *r, arena *scratch, span_list *out)
+{
+    *out = no_spans;
     uint32_t first = 0, last = all.n;
     while (first < all.n && all.v[first].out.t <= r->tmin)
         first++;
@@ -351,11 +764,11 @@ int csg_spans(const csg_tree *t, const csg_ray *r, arena *scratch, span_list *ou
         last--;
     if (first == last)
         return 1;
-    span *v = arena_alloc(scratch, (size_t)(last - first) * sizeof(span));
+    uint32_t n = last - first;
+    span *v = arena_alloc(scratch, (size_t)n * sizeof(span));
     if (!v)
         return 0;
-    memcpy(v, all.v + first, (size_t)(last - first) * sizeof(span));
-    uint32_t n = last - first;
+    memcpy(v, all.v + first, (size_t)n * sizeof(span));
     if (v[0].in.t < r->tmin) {
         v[0].in.t = r->tmin;
         v[0].in.leaf = SPAN_NO_LEAF;
@@ -373,10 +786,28 @@ int csg_spans(const csg_tree *t, const csg_ray *r, arena *scratch, span_list *ou
     return 1;
 }
 
-int csg_first_hit(const csg_tree *t, const csg_ray *r, arena *scratch, csg_hit *hit)
+int csg_spans_counted(const csg_tree *t, const csg_ray *r, arena *scratch,
+                      csg_counters *counters, span_list *out)
 {
-    span_list s;
-    if (!csg_spans(t, r, scratch, &s) || s.n == 0)
+    span_list all;
+    int blocked;
+    *out = no_spans;
+    return run(t, r, scratch, counters, EVAL_ALL, &all, &blocked) &&
+           clip(all, r, scratch, out);
+}
+
+int csg_spans(const csg_tree *t, const csg_ray *r, arena *scratch, span_list *out)
+{
+    return csg_spans_counted(t, r, scratch, NULL, out);
+}
+
+int csg_first_hit_counted(const csg_tree *t, const csg_ray *r, arena *scratch,
+                          csg_counters *counters, csg_hit *hit)
+{
+    span_list all, s;
+    int blocked;
+    if (!run(t, r, scratch, counters, EVAL_FIRST, &all, &blocked) ||
+        !clip(all, r, scratch, &s) || s.n == 0)
         return 0;
     const span_end *e = &s.v[0].in;
     int exiting = 0;
@@ -395,10 +826,24 @@ int csg_first_hit(const csg_tree *t, const csg_ray *r, arena *scratch, csg_hit *
     return 1;
 }
 
+int csg_first_hit(const csg_tree *t, const csg_ray *r, arena *scratch, csg_hit *hit)
+{
+    return csg_first_hit_counted(t, r, scratch, NULL, hit);
+}
+
+int csg_any_hit_counted(const csg_tree *t, const csg_ray *r, arena *scratch,
+                        csg_counters *counters)
+{
+    span_list all;
+    int blocked;
+    if (!run(t, r, scratch, counters, EVAL_ANY, &all, &blocked))
+        return 0;
+    return blocked || overlaps(all, r->tmin, r->tmax);
+}
+
 int csg_any_hit(const csg_tree *t, const csg_ray *r, arena *scratch)
 {
-    csg_hit hit;
-    return csg_first_hit(t, r, scratch, &hit);
+    return csg_any_hit_counted(t, r, scratch, NULL);
 }
 
 vec3 csg_hit_normal(const csg_tree *t, const csg_ray *r, const csg_hit *hit)

@@ -12,7 +12,9 @@
  *   csg_first_hit  FIRST_HIT: the first surface crossing within [tmin, tmax];
  *   csg_any_hit    ANY_HIT: whether any surface lies within [tmin, tmax].
  * Difference and intersection evaluate their first child first and clip the
- * others to what is left; a node whose box the ray misses is skipped.
+ * others to what is left; a node whose box the ray misses is skipped; a
+ * union asked for the first hit narrows the rest of the ray to its first
+ * entry as it goes, and one asked for any hit stops at its first blocker.
  */
 #ifndef SPANCAST_CSG_CSG_H
 #define SPANCAST_CSG_CSG_H
@@ -43,20 +45,49 @@ typedef struct csg_node {
     uint32_t leaf;        /* CSG_LEAF: index into leaves */
     uint32_t first_child; /* others: children are child_ids[first_child ..] */
     uint32_t child_count;
-    bbox bounds; /* world bounds */
+    uint32_t bvh; /* root in bvh_nodes over the union's children or the
+                     difference's subtrahends; CSG_NO_BVH when none */
+    bbox bounds;  /* world bounds */
 } csg_node;
 
+#define CSG_NO_BVH UINT32_MAX
+
+/* A node of a bounding volume hierarchy over the children of a wide union
+ * (or the subtrahends of a wide difference). Depth-first layout: an
+ * interior node's left child follows it, its right child is at index. */
+typedef struct csg_bvh_node {
+    bbox bounds;
+    uint32_t index; /* interior: right child; leaf: first operand's position in
+                       child_ids (a BVH reorders its node's operands) */
+    uint16_t count; /* leaf: number of items; 0 for an interior node */
+    uint8_t axis;   /* interior: the split axis, for near-first traversal */
+} csg_bvh_node;
+
+/* Per-thread query counters; a query adds to them when given one. */
+typedef struct csg_counters {
+    uint64_t queries;    /* csg_spans / csg_first_hit / csg_any_hit calls */
+    uint64_t nodes;      /* tree nodes whose box was tested */
+    uint64_t bvh_nodes;  /* BVH nodes whose box was tested */
+    uint64_t prim_tests; /* primitive span computations */
+    uint64_t span_ops;   /* boolean merges of two span lists */
+} csg_counters;
+
 typedef struct csg_tree {
-    arena mem; /* owns every array below */
-    csg_node *nodes;
+    arena mem;       /* owns every array below */
+    csg_node *nodes; /* only nodes reachable from the root; children
+                        before parents */
     uint32_t node_count;
     uint32_t *child_ids;
     csg_leaf *leaves;
     uint32_t leaf_count;
+    csg_bvh_node *bvh_nodes;
+    uint32_t bvh_node_count;
     uint32_t root;  /* CSG_EMPTY when the solid is empty */
     uint32_t depth; /* levels of boolean nodes above the deepest leaf, + 1 */
     bbox bounds;    /* world bounds of the root */
     double scale;   /* characteristic length: max of extent and |coordinates| */
+    /* The tree as described, before simplification (reachable part). */
+    uint32_t source_node_count, source_leaf_count, source_depth;
 } csg_tree;
 
 /* ---- building ---- */
@@ -87,9 +118,15 @@ uint32_t csg_builder_op(csg_builder *b, csg_op op, const uint32_t *children,
 /* 1 when an allocation failed since the builder was made. */
 int csg_builder_failed(const csg_builder *b);
 
-/* Freezes the tree with the given root (CSG_EMPTY for an empty solid) and
- * frees the builder in every case. On success *out owns the tree (free with
- * csg_tree_free). */
+/* Compiles the tree with the given root (CSG_EMPTY for an empty solid) and
+ * frees the builder in every case. Compiling simplifies: nested unions and
+ * intersections are flattened into their parent, a difference whose first
+ * operand is a difference takes over its operands, a union subtracted is
+ * subtracted child by child, subtracted solids whose box misses the first
+ * operand's box are dropped, an intersection whose boxes do not overlap is
+ * empty, and empties propagate. Wide unions and differences (8 or more
+ * operands) get a BVH (binned SAH) over their operands' boxes. On success *out owns the
+ * tree (free with csg_tree_free). */
 sc_status csg_builder_finish(csg_builder *b, uint32_t root, csg_tree **out,
                              sc_error *error);
 
@@ -123,8 +160,18 @@ int csg_spans(const csg_tree *t, const csg_ray *r, arena *scratch, span_list *ou
 /* FIRST_HIT: 1 and *hit when a surface crosses the ray within [tmin, tmax]. */
 int csg_first_hit(const csg_tree *t, const csg_ray *r, arena *scratch, csg_hit *hit);
 
-/* ANY_HIT: 1 when a surface crosses the ray within [tmin, tmax]. */
+/* ANY_HIT: 1 when the solid meets the open segment (tmin, tmax) of the ray
+ * (for shadow rays: something lies between the point and the light). Stops
+ * at the first operand of a union that shows it. */
 int csg_any_hit(const csg_tree *t, const csg_ray *r, arena *scratch);
+
+/* The same three queries, adding to *counters (which may be NULL). */
+int csg_spans_counted(const csg_tree *t, const csg_ray *r, arena *scratch,
+                      csg_counters *counters, span_list *out);
+int csg_first_hit_counted(const csg_tree *t, const csg_ray *r, arena *scratch,
+                          csg_counters *counters, csg_hit *hit);
+int csg_any_hit_counted(const csg_tree *t, const csg_ray *r, arena *scratch,
+                        csg_counters *counters);
 
 /* Unit world normal at a hit, outward from the solid (flip applied). */
 vec3 csg_hit_normal(const csg_tree *t, const csg_ray *r, const csg_hit *hit);

@@ -77,6 +77,9 @@ vec3 prim_normal(const prim *p, vec3 local_point, uint16_t part);
 
 int prim_inside(const prim *p, vec3 local_point);
 
+/* The kind's name as `spancast info` prints it. */
+const char *prim_kind_name(prim_kind kind);
+
 /* Upper bound on the spans one ray can produce, for sizing buffers. */
 uint32_t prim_max_spans(const prim *p);
 

@@ -154,33 +154,22 @@ const sc_error *sc_scene_warning(const sc_scene *scene, size_t index)
     return index < scene->warning_count ? &scene->warnings[index] : NULL;
 }
 
-/* Counts the nodes reachable from the root: node ids grow towards the root,
- * so one downward sweep from the root marks every descendant. */
+/* The compiled tree holds only what its root reaches, so its arrays are
+ * the counts; the source figures were measured when it was compiled. */
 void sc_scene_get_info(const sc_scene *scene, sc_scene_info *info)
 {
     memset(info, 0, sizeof *info);
     const csg_tree *t = scene->tree;
     if (!t || t->root == CSG_EMPTY)
         return;
+    info->node_count = t->node_count;
+    info->leaf_count = t->leaf_count;
     info->depth = t->depth;
-    unsigned char *reached = calloc(t->root + 1, 1);
-    if (!reached) {
-        info->node_count = t->node_count;
-        info->leaf_count = t->leaf_count;
-        return;
-    }
-    reached[t->root] = 1;
-    for (uint32_t i = t->root + 1; i-- > 0;) {
-        if (!reached[i])
-            continue;
-        const csg_node *n = &t->nodes[i];
-        info->node_count++;
-        if (n->op == CSG_LEAF) {
-            info->leaf_count++;
-            continue;
-        }
-        for (uint32_t k = 0; k < n->child_count; k++)
-            reached[t->child_ids[n->first_child + k]] = 1;
-    }
-    free(reached);
+    info->source_node_count = t->source_node_count;
+    info->source_leaf_count = t->source_leaf_count;
+    info->source_depth = t->source_depth;
+    info->bvh_node_count = t->bvh_node_count;
+    for (uint32_t i = 0; i < t->leaf_count; i++)
+        if ((int)t->leaves[i].prim.kind < SC_LEAF_KINDS)
+            info->leaf_kinds[t->leaves[i].prim.kind]++;
 }

@@ -1,0 +1,180 @@
+/* Binned-SAH BVH construction: see bvh.h. */
+#include "csg/bvh.h"
+
+#include <stdlib.h>
+#include <string.h>
+
+enum { BINS = 16, LEAF_SIZE = 4, SAH_DEPTH = 40 };
+
+static double half_area(const bbox *b)
+{
+    if (bbox_is_empty(b))
+        return 0;
+    vec3 e = bbox_extent(b);
+    return e.x * e.y + e.y * e.z + e.z * e.x;
+}
+
+static uint32_t push_node(bvh_nodes *out)
+{
+    if (out->count == out->cap) {
+        uint32_t cap = out->cap ? out->cap * 2 : 64;
+        if (cap <= out->cap)
+            return CSG_NO_BVH;
+        csg_bvh_node *v = realloc(out->v, (size_t)cap * sizeof *v);
+        if (!v)
+            return CSG_NO_BVH;
+        out->v = v;
+        out->cap = cap;
+    }
+    memset(&out->v[out->count], 0, sizeof out->v[0]);
+    return out->count++;
+}
+
+static void swap_items(uint32_t *ids, bbox *boxes, uint32_t i, uint32_t j)
+{
+    uint32_t t = ids[i];
+    ids[i] = ids[j];
+    ids[j] = t;
+    bbox b = boxes[i];
+    boxes[i] = boxes[j];
+    boxes[j] = b;
+}
+
+static double centre_on(const bbox *b, int axis)
+{
+    return 0.5 * (v3_get(b->lo, axis) + v3_get(b->hi, axis));
+}
+
+/* Reorders [0, count) so the first half has the smaller centres along axis
+ * (quickselect on the middle position). */
+static void median_split(uint32_t *ids, bbox *boxes, uint32_t count, int axis)
+{
+    uint32_t lo = 0, hi = count - 1, k = count / 2;
+    while (lo < hi) {
+        double pivot = centre_on(&boxes[(lo + hi) / 2], axis);
+        uint32_t i = lo, j = hi;
+        while (i <= j) {
+            while (centre_on(&boxes[i], axis) < pivot)
+                i++;
+            while (centre_on(&boxes[j], axis) > pivot)
+                j--;
+            if (i <= j) {
+                swap_items(ids, boxes, i, j);
+                i++;
+                if (j == 0)
+                    break;
+                j--;
+            }
+        }
+        if (k <= j)
+            hi = j;
+        else if (k >= i)
+            lo = i;
+        else
+            break;
+    }
+}
+
+static uint32_t build(bvh_nodes *out, uint32_t *ids, bbox *boxes, uint32_t count,
+                      uint32_t base, int depth)
+{
+    uint32_t node = push_node(out);
+    if (node == CSG_NO_BVH)
+        return CSG_NO_BVH;
+    bbox bounds = bbox_empty(), centres = bbox_empty();
+    for (uint32_t i = 0; i < count; i++) {
+        bounds = bbox_union(bounds, boxes[i]);
+        centres = bbox_add_point(centres, bbox_center(&boxes[i]));
+    }
+    out->v[node].bounds = bounds;
+    vec3 ext = bbox_extent(&centres);
+    int axis = ext.x >= ext.y && ext.x >= ext.z ? 0 : ext.y >= ext.z ? 1 : 2;
+    double lo = v3_get(centres.lo, axis), width = v3_get(ext, axis);
+
+    uint32_t split = 0;
+    if (count > LEAF_SIZE && width > 0 && depth < SAH_DEPTH) {
+        uint32_t bin_count[BINS] = {0};
+        bbox bin_box[BINS];
+        for (int b = 0; b < BINS; b++)
+            bin_box[b] = bbox_empty();
+        double scale = BINS / width;
+        for (uint32_t i = 0; i < count; i++) {
+            int b = (int)((centre_on(&boxes[i], axis) - lo) * scale);
+            b = b < 0 ? 0 : b >= BINS ? BINS - 1 : b;
+            bin_count[b]++;
+            bin_box[b] = bbox_union(bin_box[b], boxes[i]);
+        }
+        /* Sweep from the right to get the area and count right of each
+         * split, then from the left to price every split. */
+        double right_area[BINS];
+        uint32_t right_count[BINS];
+        bbox acc = bbox_empty();
+        uint32_t n = 0;
+        for (int b = BINS - 1; b > 0; b--) {
+            acc = bbox_union(acc, bin_box[b]);
+            n += bin_count[b];
+            right_area[b] = half_area(&acc);
+            right_count[b] = n;
+        }
+        double best = half_area(&bounds) * count; /* cost of a leaf */
+        int best_bin = 0;
+        acc = bbox_empty();
+        n = 0;
+        for (int b = 1; b < BINS; b++) {
+            acc = bbox_union(acc, bin_box[b - 1]);
+            n += bin_count[b - 1];
+            if (n == 0 || right_count[b] == 0)
+                continue;
+            double cost = half_area(&acc) * n + right_area[b] * right_count[b];
+            if (cost < best) {
+                best = cost;
+                best_bin = b;
+            }
+        }
+        if (best_bin > 0) {
+            uint32_t i = 0, j = count;
+            while (i < j) {
+                int b = (int)((centre_on(&boxes[i], axis) - lo) * scale);
+                b = b < 0 ? 0 : b >= BINS ? BINS - 1 : b;
+                if (b < best_bin)
+                    i++;
+                else
+                    swap_items(ids, boxes, i, --j);
+            }
+            split = i;
+        } else if (count > 4 * LEAF_SIZE) {
+            /* Even a leaf this large is cheaper by area; split anyway so a
+             * ray never tests dozens of operands in one go. */
+            median_split(ids, boxes, count, axis);
+            split = count / 2;
+        }
+    } else if (count > LEAF_SIZE) {
+        median_split(ids, boxes, count, axis);
+        split = count / 2;
+    }
+
+    if (split == 0 || split == count) {
+        /* At most 4 * LEAF_SIZE operands reach here: larger sets split. */
+        out->v[node].index = base;
+        out->v[node].count = (uint16_t)count;
+        return node;
+    }
+    out->v[node].axis = (uint8_t)axis;
+    if (build(out, ids, boxes, split, base, depth + 1) == CSG_NO_BVH)
+        return CSG_NO_BVH;
+    uint32_t right =
+        build(out, ids + split, boxes + split, count - split, base + split, depth + 1);
+    if (right == CSG_NO_BVH)
+        return CSG_NO_BVH;
+    out->v[node].index = right;
+    out->v[node].count = 0;
+    return node;
+}
+
+uint32_t bvh_build(bvh_nodes *out, uint32_t *ids, bbox *boxes, uint32_t count,
+                   uint32_t items_base)
+{
+    if (count == 0)
+        return CSG_NO_BVH;
+    return build(out, ids, boxes, count, items_base, 0);
+}
