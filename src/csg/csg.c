@@ -680,6 +680,81 @@ static int visit_cut(eval_ctx *c, void *state, uint32_t id, double *lo, double *
     return 1;
 }
 
+/* Intersection or difference n over [lo, hi]: the first operand in full,
+ * the others only where it lies. */
+static span_list eval_cut(eval_ctx *c, const csg_node *n, double lo, double hi)
+{
+    cut_state s = {eval(c, c->tree->child_ids[n->first_child], lo, hi, EVAL_ALL),
+                   n->op == CSG_INTERSECTION ? SPAN_INTERSECTION : SPAN_DIFFERENCE};
+    if (c->oom || s.acc.n == 0)
+        return no_spans;
+    /* Only where the first operand's solid lies can the others matter. */
+    double first_lo = fmax(lo, s.acc.v[0].in.t);
+    double first_hi = fmin(hi, s.acc.v[s.acc.n - 1].out.t);
+    for_operands(c, n, 1, first_lo, first_hi, visit_cut, &s);
+    return c->oom ? no_spans : s.acc;
+}
+
+/* The first crossing after lo of a span list, or INFINITY. */
+static double first_crossing(span_list s, double lo)
+{
+    const span *f = first_after(s, lo);
+    return !f ? INFINITY : f->in.t >= lo ? f->in.t : f->out.t;
+}
+
+/* The part of a window's result from the first operand's first entry on.
+ * Before that entry the result is empty, but a window's evaluation may show
+ * solid there (operands cut only within the window); a span reaching over
+ * the entry starts at it, on the first operand's surface. */
+static span_list from_entry(eval_ctx *c, span_list r, const span_end *entry)
+{
+    uint32_t k = 0;
+    while (k < r.n && r.v[k].out.t <= entry->t)
+        k++;
+    if (k == r.n)
+        return no_spans;
+    if (k == 0 && r.v[0].in.t >= entry->t)
+        return r;
+    span_list out = {arena_alloc(c->scratch, (size_t)(r.n - k) * sizeof(span)), r.n - k};
+    if (!out.v) {
+        c->oom = 1;
+        return no_spans;
+    }
+    memcpy(out.v, r.v + k, (size_t)out.n * sizeof(span));
+    if (out.v[0].in.t < entry->t)
+        out.v[0].in = *entry;
+    return out;
+}
+
+/* Intersection or difference n asked for its first crossing: rather than
+ * its whole first operand along the ray, it evaluates growing windows
+ * [start, start + step], doubling step, until the window holds a crossing.
+ * The result is exact within a window, so a crossing found inside it is
+ * the first one. The first window starts where the first operand (asked for
+ * its own first crossing, which a union finds cheaply) begins: before that
+ * the result is empty. With a BVH below, the cost follows the solids near
+ * the first hit instead of every solid along the ray. */
+static span_list eval_cut_first(eval_ctx *c, const csg_node *n, double lo, double hi)
+{
+    span_list a = eval(c, c->tree->child_ids[n->first_child], lo, hi, EVAL_FIRST);
+    const span *f = first_after(a, lo);
+    if (c->oom || !f)
+        return no_spans;
+    span_end entry = f->in;
+    int outside = entry.t > lo; /* the ray starts outside the first operand */
+    double start = outside ? entry.t : lo;
+    double step = fmax(f->out.t - start, 16 * c->eps);
+    for (;;) {
+        double end = fmin(hi, start + step);
+        span_list r = eval_cut(c, n, start, end);
+        if (outside)
+            r = from_entry(c, r, &entry);
+        if (c->oom || end >= hi || first_crossing(r, lo) < end - c->eps)
+            return r;
+        step *= 2;
+    }
+}
+
 /* The spans of node id that matter within [lo, hi]; spans may extend beyond
  * that range (primitives report whole spans), callers clip. */
 static span_list eval(eval_ctx *c, uint32_t id, double lo, double hi, eval_mode mode)
@@ -702,15 +777,9 @@ static span_list eval(eval_ctx *c, uint32_t id, double lo, double hi, eval_mode 
         }
         return c->oom ? no_spans : u.acc;
     }
-    cut_state s = {eval(c, c->tree->child_ids[n->first_child], lo, hi, EVAL_ALL),
-                   n->op == CSG_INTERSECTION ? SPAN_INTERSECTION : SPAN_DIFFERENCE};
-    if (c->oom || s.acc.n == 0)
-        return no_spans;
-    /* Only where the first operand's solid lies can the others matter. */
-    double first_lo = fmax(lo, s.acc.v[0].in.t);
-    double first_hi = fmin(hi, s.acc.v[s.acc.n - 1].out.t);
-    for_operands(c, n, 1, first_lo, first_hi, visit_cut, &s);
-    return c->oom ? no_spans : s.acc;
+    /* Beyond its box the node is empty: no window need reach further. */
+    return mode == EVAL_FIRST ? eval_cut_first(c, n, lo, fmin(hi, t1))
+                              : eval_cut(c, n, lo, hi);
 }
 
 double csg_eps(const csg_tree *t, vec3 o, vec3 d)
