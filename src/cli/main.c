@@ -419,7 +419,7 @@ static int parse_args(cli_args *a, int argc, char **argv)
                                    arg[1] == '-' ? spec->name : "-o");
             value = argv[++k];
         }
-        if (spec->takes_value && !*value)
+        if (spec->takes_value && value && !*value)
             return usage_error("option '%s' expects a value",
                                arg[1] == '-' ? spec->name : "-o");
         int st = apply_option(a, spec->id, value);
