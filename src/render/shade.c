@@ -228,7 +228,9 @@ void shade_ray(const shade_scene *s, shade_thread *th, const csg_ray *ray,
             double r0 = (n1 - n2) / (n1 + n2);
             r0 *= r0;
             double c = 1 - (n1 > n2 ? cos_t : cos_i);
-            double fresnel = r0 + (1 - r0) * c * c * c * c * c;
+            /* Equal indices make no interface: the exact Fresnel terms
+             * vanish at every angle, where Schlick's would not. */
+            double fresnel = n1 == n2 ? 0 : r0 + (1 - r0) * c * c * c * c * c;
             kr += kt * fresnel;
             kt *= 1 - fresnel;
         }
