@@ -66,8 +66,9 @@ idiff -fail 0 -failpercent 0 -warn 0 cut.exr crop.exr >/dev/null ||
 
 # --max-depth: 0 turns the mirror and the glass off
 check
+"$bin" render "$model" -o d5.exr $size -q || fail "default depth failed"
 "$bin" render "$model" -o d0.exr $size -q --max-depth=0 || fail "max-depth 0 failed"
-idiff -fail 0 -failpercent 0 -warn 0 d0.exr cam.png >/dev/null 2>&1 &&
+idiff -fail 0 -failpercent 0 -warn 0 d0.exr d5.exr >/dev/null 2>&1 &&
     fail "--max-depth=0 changed nothing"
 
 # statistics
