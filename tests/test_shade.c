@@ -276,6 +276,37 @@ static void test_total_internal_reflection(void **state)
     sc_framebuffer_release(fb);
 }
 
+/* Between two parallel mirrors of reflect 0.5 the camera ray bounces for
+ * ever; the k-th mirror ray carries 0.5^k of the pixel, so with the
+ * throughput cut-off at 1/1000 exactly 9 are cast (0.5^9 > 1/1000 >
+ * 0.5^10), however deep --max-depth allows, and max depth 3 allows 3. */
+static uint64_t mirror_rays(int max_depth)
+{
+    static const char text[] =
+        "camera(eye = [0, 0, 0], center = [1, 0, 0]);\n"
+        "light(direction = [0, 0, -1]);\n"
+        "material(reflect = 0.5) {\n"
+        "  multmatrix([[1, 0, 0, 5], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]) {\n"
+        "    cube(size = [1, 100, 100], center = true);\n"
+        "  }\n"
+        "  multmatrix([[1, 0, 0, -5], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]) {\n"
+        "    cube(size = [1, 100, 100], center = true);\n"
+        "  }\n"
+        "}\n";
+    sc_framebuffer *fb = render_text(text, 1, 1, 1, max_depth);
+    uint64_t rays = fb->stats.reflection_rays;
+    sc_framebuffer_release(fb);
+    return rays;
+}
+
+static void test_depth_and_cutoff(void **state)
+{
+    (void)state;
+    assert_int_equal(mirror_rays(64), 9);
+    assert_int_equal(mirror_rays(3), 3);
+    assert_int_equal(mirror_rays(0), 0);
+}
+
 /* ---- soft shadows ---- */
 
 /* The middle row of a view from above of a floor with a wall on it, lit
@@ -330,6 +361,7 @@ int main(void)
         cmocka_unit_test(test_mirror),
         cmocka_unit_test(test_refraction_through_drilled_block),
         cmocka_unit_test(test_total_internal_reflection),
+        cmocka_unit_test(test_depth_and_cutoff),
         cmocka_unit_test(test_soft_shadows),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
