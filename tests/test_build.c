@@ -622,8 +622,7 @@ static void test_unsupported(void **state)
         "hull",    "minkowski",  "linear_extrude", "rotate_extrude", "import",
         "surface", "projection", "offset",         "circle",         "square",
         "polygon", "text",       "resize",         "roof",           "intersection_for",
-        "torus",   "quadric",    "halfspace",      "implicit",       "material",
-        "light",   "camera",     "background"};
+        "torus",   "quadric",    "halfspace",      "implicit"};
     for (size_t i = 0; i < sizeof names / sizeof names[0]; i++) {
         char text[256], expected[256];
         snprintf(text, sizeof text, "group() {\n  cube();\n\n    %s() { cube(); }\n}",

@@ -16,6 +16,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "render/color.h"
 #include "render/render.h"
 #include "scene/scene.h"
 
@@ -308,7 +309,8 @@ static void test_threads_identical(void **state)
             misses++;
             assert_true(v3_length(nv) == 0);
             assert_true(one->color[3 * p] == 1.0f && one->color[3 * p + 1] == 1.0f);
-            assert_true(one->color[3 * p + 2] == 229.0f / 255.0f);
+            assert_true(one->color[3 * p + 2] ==
+                        (float)color_srgb_to_linear(229.0f / 255.0f));
         }
     }
     assert_true(misses > 0 && misses < (int)n);
@@ -320,7 +322,8 @@ static void test_threads_identical(void **state)
 
 /* Seen from inside a sphere every pixel hits its far wall, whose outward
  * normal faces away from the viewer; shading uses the reversed normal, so
- * the centre is lit by the key light, not only by the ambient term. */
+ * the centre is lit by a point light beside the eye (inside the solid too,
+ * so nothing shadows it), not only by the ambient term. */
 static void test_two_sided(void **state)
 {
     (void)state;
@@ -331,7 +334,19 @@ static void test_two_sided(void **state)
     o.height = 21;
     o.want_mask = o.want_normal = 1;
     set_lookat(&o, v3(0, -1, 0), v3(0, 1, 0));
-    sc_framebuffer *fb = render(s.tree, &o);
+    shading *look = shading_new();
+    assert_non_null(look);
+    shading_light light;
+    memset(&light, 0, sizeof light);
+    light.kind = SHADING_LIGHT_POINT;
+    light.position = v3(0.5, -1, 0.5);
+    light.color[0] = light.color[1] = light.color[2] = 1;
+    light.intensity = 1;
+    assert_true(shading_add_light(look, &light));
+    sc_framebuffer *fb = NULL;
+    sc_error e;
+    assert_int_equal(render_scene(s.tree, look, &o, &fb, &e), SC_OK);
+    shading_free(look);
     size_t n = (size_t)o.width * o.height;
     for (size_t p = 0; p < n; p++)
         assert_int_equal(fb->mask[p], 255);
@@ -339,7 +354,8 @@ static void test_two_sided(void **state)
     /* the normal AOV keeps the outward normal: +y at the far wall */
     assert_true(fb->normal[3 * centre + 1] > 0.99f);
     for (int k = 0; k < 3; k++)
-        assert_true(fb->color[3 * centre + k] > base_color[k] * 0.25 * 1.5);
+        assert_true(fb->color[3 * centre + k] >
+                    color_srgb_to_linear(base_color[k]) * SHADING_DEFAULT_AMBIENT * 1.5);
     sc_framebuffer_release(fb);
     csg_tree_free(s.tree);
 }
@@ -384,7 +400,7 @@ static void test_empty_scene(void **state)
     for (size_t p = 0; p < 200; p++) {
         assert_int_equal(fb->mask[p], 0);
         assert_true(isinf(fb->depth[p]));
-        assert_true(fb->color[3 * p + 2] == 229.0f / 255.0f);
+        assert_true(fb->color[3 * p + 2] == (float)color_srgb_to_linear(229.0f / 255.0f));
     }
     sc_framebuffer_release(fb);
     csg_tree_free(tree);

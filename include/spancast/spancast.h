@@ -126,18 +126,49 @@ typedef struct sc_render_options {
     int autocenter; /* OpenSCAD --autocenter: look at the model's centre */
     int threads;    /* 0 = all cores */
     int want_color, want_depth, want_mask, want_normal; /* which buffers to fill */
+    int want_id;                                        /* fill the object id buffer */
+    double up[3];  /* up hint of SC_CAMERA_VECTOR (default 0, 0, 1) */
+    int spp;       /* samples per pixel, stratified and jittered (default 1) */
+    int max_depth; /* reflection and refraction bounces (default 5) */
+    int region[4]; /* x0, y0, x1, y1 (exclusive): render only this crop of the
+                      width x height image; all 0 (default): the whole image */
+    /* Called now and then from one rendering thread with the fraction done
+     * (0..1), and once with 1 at the end; NULL: not called. */
+    void (*progress)(void *user, double fraction);
+    void *progress_user;
 } sc_render_options;
 
 void sc_render_options_init(sc_render_options *options);
+
+/* Applies the scene's own settings to options: a camera() node in the file
+ * sets camera_mode (SC_CAMERA_VECTOR), camera, up, fov_deg and projection.
+ * Call it after sc_render_options_init and before applying the user's own
+ * choices, so that those override the file. Returns 1 when the file has a
+ * camera, else 0 (options unchanged). */
+int sc_render_options_from_scene(sc_render_options *options, const sc_scene *scene);
+
+/* Counters of one render, summed over threads. */
+typedef struct sc_render_stats {
+    uint64_t camera_rays, shadow_rays, reflection_rays, refraction_rays;
+    uint64_t primitive_tests; /* leaf span computations */
+    uint64_t span_operations; /* boolean merges of two span lists */
+    double setup_seconds;     /* camera, lights, buffers */
+    double trace_seconds;     /* the parallel render loop */
+    int threads;              /* threads that rendered */
+} sc_render_stats;
 
 /* The rendered image: row-major, row 0 at the top. Buffers not asked for are
  * NULL. */
 typedef struct sc_framebuffer {
     int width, height;
-    float *color;  /* RGB, 3 floats per pixel, display (sRGB-encoded) values 0..1 */
+    float *color;  /* RGB, 3 floats per pixel, scene-linear (sRGB primaries), >= 0 */
     float *depth;  /* distance along the ray to the hit, +inf on a miss */
     uint8_t *mask; /* 255 where the camera ray hits, 0 elsewhere */
     float *normal; /* world normal, 3 floats per pixel, 0 on a miss */
+    int32_t *id;   /* index of the leaf the camera ray hit (source order), -1 on a miss */
+    int x0, y0;    /* where this image lies in the full image (--region), else 0 */
+    char camera_info[256]; /* the camera in words, for the files' metadata */
+    sc_render_stats stats;
 } sc_framebuffer;
 
 /* Renders the scene. On success *framebuffer is owned by the caller (release
@@ -148,6 +179,9 @@ sc_status sc_render(const sc_scene *scene, const sc_render_options *options,
 void sc_framebuffer_release(sc_framebuffer *framebuffer);
 
 /* Image output through OpenImageIO; the format follows the file extension.
+ * Colour goes to 8-bit formats (PNG, JPEG, ...) sRGB-encoded, to float
+ * formats (EXR, float TIFF, ...) as the linear values; every file carries
+ * the software name and the camera in its metadata.
  * Each writes a temporary file in the target's folder and renames it into
  * place, so a failure never leaves a partial file or destroys an existing
  * one. */
@@ -157,6 +191,12 @@ sc_status sc_framebuffer_write_mask(const sc_framebuffer *fb, const char *path,
                                     sc_error *error);
 sc_status sc_framebuffer_write_depth(const sc_framebuffer *fb, const char *path,
                                      sc_error *error);
+/* World normals as float channels X, Y, Z; object ids as one float channel
+ * "id" (-1 on a miss). Both need a float format (.exr or .tif). */
+sc_status sc_framebuffer_write_normal(const sc_framebuffer *fb, const char *path,
+                                      sc_error *error);
+sc_status sc_framebuffer_write_id(const sc_framebuffer *fb, const char *path,
+                                  sc_error *error);
 
 #ifdef __cplusplus
 }

@@ -3,7 +3,8 @@
  * This is the only place that reads argv, prints to the terminal or exits;
  * everything else goes through the public library API. Commands:
  *
- *   spancast render MODEL -o OUT [--mask=FILE] [--depth=FILE] [camera options]
+ *   spancast render MODEL -o OUT [--mask=FILE] [--depth=FILE] [--normal=FILE]
+ *                         [--id=FILE] [camera, sampling and report options]
  *   spancast info MODEL
  *   spancast --help | --version
  *
@@ -13,6 +14,11 @@
  * them, "file:line:col: error: ..."); 2 for a bad command line
  * ("spancast: error: ..."). Output names are checked before the model is
  * loaded, so a typo in an extension costs no render time.
+ *
+ * Settings come in three layers: the library's defaults, then the model
+ * file's own (a camera() node), then the command line. The command line is
+ * read once before loading (to fail fast) and applied again on top of the
+ * file's settings after loading.
  */
 #define _POSIX_C_SOURCE 200809L
 
@@ -23,9 +29,11 @@
 #include <stdlib.h>
 #include <string.h>
 #include <time.h>
+#include <unistd.h>
 
 #include "render/image_io.h"
 #include "render/render.h"
+#include "render/shade.h"
 #include "spancast/spancast.h"
 
 #ifndef SPANCAST_VERSION
@@ -48,6 +56,10 @@ static const char usage_text[] =
     "  --mask=FILE            coverage mask: 255 where the model is hit, 0 elsewhere\n"
     "  --depth=FILE           distance from the ray origin to the hit, 32-bit float,\n"
     "                         +inf on a miss (.exr or .tif)\n"
+    "  --normal=FILE          world-space normal at the hit, 3 floats, 0 on a miss\n"
+    "                         (.exr or .tif)\n"
+    "  --id=FILE              index of the leaf hit (source order), -1 on a miss\n"
+    "                         (.exr or .tif)\n"
     "  --camera=EX,EY,EZ,CX,CY,CZ\n"
     "                         look from eye E at centre C, z up\n"
     "  --camera=TX,TY,TZ,RX,RY,RZ,D\n"
@@ -58,11 +70,18 @@ static const char usage_text[] =
     "  --projection=p|o       perspective (default) or orthographic\n"
     "  --viewall              move the camera until the whole model is in view\n"
     "  --autocenter           with --viewall: look at the centre of the model\n"
+    "  --spp=N                samples per pixel, stratified and jittered (default 1)\n"
+    "  --max-depth=N          reflection and refraction bounces (default 5)\n"
+    "  --region=X0,Y0,X1,Y1   render only this crop (X1, Y1 exclusive)\n"
     "  --threads=N            worker threads (default 0: all cores)\n"
-    "  -q, --quiet            no summary line on stderr\n"
+    "  --stats[=json]         print rays by kind, primitive tests, span operations\n"
+    "                         and time per stage on stdout\n"
+    "  -q, --quiet            no progress bar and no summary line on stderr\n"
     "\n"
-    "Without --camera, spancast looks at the centre of the model from OpenSCAD's\n"
-    "default direction (rotate 55,0,25), far enough to show all of it.\n"
+    "Without --camera, spancast uses the model's camera() node if it has one, else\n"
+    "it looks at the centre of the model from OpenSCAD's default direction\n"
+    "(rotate 55,0,25), far enough to show all of it. Command-line options win\n"
+    "over the file's settings.\n"
     "A value may also follow its option as the next argument: --fov 30.\n"
     "\n"
     "Exit status: 0 success; 1 the model could not be loaded, or an image not\n"
@@ -173,30 +192,48 @@ typedef enum opt_id {
     OPT_VIEWALL,
     OPT_AUTOCENTER,
     OPT_THREADS,
-    OPT_QUIET
+    OPT_QUIET,
+    OPT_NORMAL,
+    OPT_ID,
+    OPT_SPP,
+    OPT_MAX_DEPTH,
+    OPT_REGION,
+    OPT_STATS
 } opt_id;
 
 typedef struct opt_spec {
     const char *name;
     opt_id id;
-    int takes_value;
+    int takes_value; /* 0 no, 1 yes, 2 optional (only as --opt=value) */
     int render_only; /* rejected by 'info' */
 } opt_spec;
 
 static const opt_spec options_table[] = {
-    {"--output", OPT_OUTPUT, 1, 1},         {"--mask", OPT_MASK, 1, 1},
-    {"--depth", OPT_DEPTH, 1, 1},           {"--camera", OPT_CAMERA, 1, 1},
-    {"--imgsize", OPT_IMGSIZE, 1, 1},       {"--fov", OPT_FOV, 1, 1},
-    {"--projection", OPT_PROJECTION, 1, 1}, {"--viewall", OPT_VIEWALL, 0, 1},
-    {"--autocenter", OPT_AUTOCENTER, 0, 1}, {"--threads", OPT_THREADS, 1, 1},
+    {"--output", OPT_OUTPUT, 1, 1},
+    {"--mask", OPT_MASK, 1, 1},
+    {"--depth", OPT_DEPTH, 1, 1},
+    {"--camera", OPT_CAMERA, 1, 1},
+    {"--imgsize", OPT_IMGSIZE, 1, 1},
+    {"--fov", OPT_FOV, 1, 1},
+    {"--projection", OPT_PROJECTION, 1, 1},
+    {"--viewall", OPT_VIEWALL, 0, 1},
+    {"--autocenter", OPT_AUTOCENTER, 0, 1},
+    {"--threads", OPT_THREADS, 1, 1},
     {"--quiet", OPT_QUIET, 0, 0},
+    {"--normal", OPT_NORMAL, 1, 1},
+    {"--id", OPT_ID, 1, 1},
+    {"--spp", OPT_SPP, 1, 1},
+    {"--max-depth", OPT_MAX_DEPTH, 1, 1},
+    {"--region", OPT_REGION, 1, 1},
+    {"--stats", OPT_STATS, 2, 1},
 };
 
 typedef struct cli_args {
     int render; /* 1: render, 0: info */
     const char *input;
-    const char *output, *mask, *depth;
+    const char *output, *mask, *depth, *normal, *id;
     int quiet;
+    int stats; /* 0 none, 1 text, 2 JSON */
     sc_render_options options;
 } cli_args;
 
@@ -276,6 +313,47 @@ static int apply_option(cli_args *a, opt_id id, const char *value)
     case OPT_QUIET:
         a->quiet = 1;
         return 0;
+    case OPT_NORMAL:
+        a->normal = value;
+        return 0;
+    case OPT_ID:
+        a->id = value;
+        return 0;
+    case OPT_SPP: {
+        long n;
+        if (!parse_int(value, 1, RENDER_MAX_SPP, &n))
+            return usage_error("--spp expects an integer from 1 to %d", RENDER_MAX_SPP);
+        o->spp = (int)n;
+        return 0;
+    }
+    case OPT_MAX_DEPTH: {
+        long n;
+        if (!parse_int(value, 0, SHADE_MAX_DEPTH, &n))
+            return usage_error("--max-depth expects an integer from 0 to %d",
+                               SHADE_MAX_DEPTH);
+        o->max_depth = (int)n;
+        return 0;
+    }
+    case OPT_REGION: {
+        double v[4];
+        int ok = parse_numbers(value, v, 4) == 4;
+        for (int k = 0; ok && k < 4; k++)
+            ok = v[k] == floor(v[k]) && v[k] >= 0 && v[k] <= RENDER_MAX_SIDE;
+        if (!ok || !(v[0] < v[2] && v[1] < v[3]))
+            return usage_error("--region expects X0,Y0,X1,Y1 with 0 <= X0 < X1 and "
+                               "0 <= Y0 < Y1 (X1, Y1 exclusive)");
+        for (int k = 0; k < 4; k++)
+            o->region[k] = (int)v[k];
+        return 0;
+    }
+    case OPT_STATS:
+        if (!value)
+            a->stats = 1;
+        else if (!strcmp(value, "json"))
+            a->stats = 2;
+        else
+            return usage_error("--stats takes no value or '=json'");
+        return 0;
     }
     return 0;
 }
@@ -335,13 +413,13 @@ static int parse_args(cli_args *a, int argc, char **argv)
         if (spec->render_only && !a->render)
             return usage_error("option '%s' does not apply to '%s'",
                                arg[1] == '-' ? spec->name : "-o", command);
-        if (spec->takes_value && !has_value) {
+        if (spec->takes_value == 1 && !has_value) {
             if (k + 1 >= argc)
                 return usage_error("option '%s' expects a value",
                                    arg[1] == '-' ? spec->name : "-o");
             value = argv[++k];
         }
-        if (spec->takes_value && !*value)
+        if (spec->takes_value && value && !*value)
             return usage_error("option '%s' expects a value",
                                arg[1] == '-' ? spec->name : "-o");
         int st = apply_option(a, spec->id, value);
@@ -411,22 +489,105 @@ static int run_info(const cli_args *a)
     return 0;
 }
 
-static int run_render(cli_args *a)
+/* The progress bar: redrawn when the whole percentage changes. */
+typedef struct progress_bar {
+    int shown; /* last percentage drawn, -1 before the first */
+} progress_bar;
+
+static void draw_progress(void *user, double fraction)
+{
+    progress_bar *bar = user;
+    int percent = (int)(fraction * 100);
+    if (percent == bar->shown)
+        return;
+    bar->shown = percent;
+    char cells[41];
+    int filled = percent * 40 / 100;
+    for (int k = 0; k < 40; k++)
+        cells[k] = k < filled ? '#' : '.';
+    cells[40] = '\0';
+    fprintf(stderr, "\rspancast: [%s] %3d%%", cells, percent);
+    if (percent == 100)
+        fputc('\n', stderr);
+    fflush(stderr);
+}
+
+typedef struct stage_times {
+    double load, write, total;
+} stage_times;
+
+static void print_stats(const cli_args *a, const sc_framebuffer *fb, const stage_times *t)
+{
+    const sc_render_stats *s = &fb->stats;
+    uint64_t rays =
+        s->camera_rays + s->shadow_rays + s->reflection_rays + s->refraction_rays;
+    if (a->stats == 2) {
+        printf("{\"image\": {\"width\": %d, \"height\": %d, \"spp\": %d, "
+               "\"threads\": %d},\n",
+               fb->width, fb->height, a->options.spp, s->threads);
+        printf(" \"rays\": {\"camera\": %llu, \"shadow\": %llu, \"reflection\": %llu, "
+               "\"refraction\": %llu, \"total\": %llu},\n",
+               (unsigned long long)s->camera_rays, (unsigned long long)s->shadow_rays,
+               (unsigned long long)s->reflection_rays,
+               (unsigned long long)s->refraction_rays, (unsigned long long)rays);
+        printf(" \"primitive_tests\": %llu, \"span_operations\": %llu,\n",
+               (unsigned long long)s->primitive_tests,
+               (unsigned long long)s->span_operations);
+        printf(" \"seconds\": {\"load\": %.6f, \"setup\": %.6f, \"trace\": %.6f, "
+               "\"write\": %.6f, \"total\": %.6f}}\n",
+               t->load, s->setup_seconds, s->trace_seconds, t->write, t->total);
+        return;
+    }
+    printf("image:            %dx%d, %d sample%s per pixel, %d thread%s\n", fb->width,
+           fb->height, a->options.spp, a->options.spp == 1 ? "" : "s", s->threads,
+           s->threads == 1 ? "" : "s");
+    printf("rays:             %llu (camera %llu, shadow %llu, reflection %llu, "
+           "refraction %llu)\n",
+           (unsigned long long)rays, (unsigned long long)s->camera_rays,
+           (unsigned long long)s->shadow_rays, (unsigned long long)s->reflection_rays,
+           (unsigned long long)s->refraction_rays);
+    printf("primitive tests:  %llu\n", (unsigned long long)s->primitive_tests);
+    printf("span operations:  %llu\n", (unsigned long long)s->span_operations);
+    printf(
+        "seconds:          load %.3f, setup %.3f, trace %.3f, write %.3f, total %.3f\n",
+        t->load, s->setup_seconds, s->trace_seconds, t->write, t->total);
+}
+
+static int run_render(cli_args *a, int argc, char **argv)
 {
     /* Reject output names OpenImageIO cannot write before any work. */
     sc_error error;
     if (imgio_check(a->output, IMGIO_COLOR, &error) ||
         (a->mask && imgio_check(a->mask, IMGIO_MASK, &error)) ||
-        (a->depth && imgio_check(a->depth, IMGIO_DEPTH, &error)))
+        (a->depth && imgio_check(a->depth, IMGIO_DEPTH, &error)) ||
+        (a->normal && imgio_check(a->normal, IMGIO_NORMAL, &error)) ||
+        (a->id && imgio_check(a->id, IMGIO_ID, &error)))
         return usage_error("%s", error.message);
 
     double start = seconds_now();
     sc_scene *scene = load(a->input);
     if (!scene)
         return EXIT_FAILED;
+    stage_times times;
+    times.load = seconds_now() - start;
+    /* The file's settings, then the command line over them again. */
+    cli_args again;
+    memset(&again, 0, sizeof again);
+    again.render = 1;
+    sc_render_options_init(&again.options);
+    sc_render_options_from_scene(&again.options, scene);
+    (void)parse_args(&again, argc, argv); /* succeeded once already */
+    a->options = again.options;
     a->options.want_color = 1;
     a->options.want_mask = a->mask != NULL;
     a->options.want_depth = a->depth != NULL;
+    a->options.want_normal = a->normal != NULL;
+    a->options.want_id = a->id != NULL;
+    progress_bar bar = {-1};
+    if (!a->quiet && isatty(STDERR_FILENO)) {
+        a->options.progress = draw_progress;
+        a->options.progress_user = &bar;
+    }
     sc_framebuffer *fb = NULL;
     int status = 0;
     sc_status st = sc_render(scene, &a->options, &fb, &error);
@@ -436,16 +597,25 @@ static int run_render(cli_args *a)
         sc_scene_release(scene);
         return st == SC_ERR_ARGUMENT ? EXIT_USAGE : EXIT_FAILED;
     }
+    double written = seconds_now();
     if (sc_framebuffer_write_color(fb, a->output, &error) != SC_OK ||
         (a->mask && sc_framebuffer_write_mask(fb, a->mask, &error) != SC_OK) ||
-        (a->depth && sc_framebuffer_write_depth(fb, a->depth, &error) != SC_OK)) {
+        (a->depth && sc_framebuffer_write_depth(fb, a->depth, &error) != SC_OK) ||
+        (a->normal && sc_framebuffer_write_normal(fb, a->normal, &error) != SC_OK) ||
+        (a->id && sc_framebuffer_write_id(fb, a->id, &error) != SC_OK)) {
         print_error(&error);
         status = EXIT_FAILED;
     }
+    times.write = seconds_now() - written;
+    times.total = seconds_now() - start;
     if (status == 0 && !a->quiet)
-        fprintf(stderr, "spancast: wrote %s%s%s%s%s (%dx%d) in %.3f s\n", a->output,
-                a->mask ? ", " : "", a->mask ? a->mask : "", a->depth ? ", " : "",
-                a->depth ? a->depth : "", fb->width, fb->height, seconds_now() - start);
+        fprintf(stderr, "spancast: wrote %s%s%s%s%s%s%s%s%s (%dx%d) in %.3f s\n",
+                a->output, a->mask ? ", " : "", a->mask ? a->mask : "",
+                a->depth ? ", " : "", a->depth ? a->depth : "", a->normal ? ", " : "",
+                a->normal ? a->normal : "", a->id ? ", " : "", a->id ? a->id : "",
+                fb->width, fb->height, times.total);
+    if (status == 0 && a->stats)
+        print_stats(a, fb, &times);
     sc_framebuffer_release(fb);
     sc_scene_release(scene);
     return status;
@@ -481,5 +651,5 @@ int main(int argc, char **argv)
     int st = parse_args(&a, argc, argv);
     if (st)
         return st;
-    return a.render ? run_render(&a) : run_info(&a);
+    return a.render ? run_render(&a, argc, argv) : run_info(&a);
 }

@@ -128,6 +128,12 @@ uint32_t csg_builder_leaf(csg_builder *b, const prim *p, const affine *to_world,
     return id;
 }
 
+void csg_builder_set_material(csg_builder *b, uint32_t id, uint32_t material)
+{
+    if (id < b->node_count && b->nodes[id].op == CSG_LEAF)
+        b->leaves[b->nodes[id].leaf].material = material;
+}
+
 uint32_t csg_builder_op(csg_builder *b, csg_op op, const uint32_t *children,
                         uint32_t count)
 {
@@ -560,6 +566,7 @@ static span_list eval_leaf(eval_ctx *c, const csg_node *n)
     vec3 d = affine_vector(&l->to_local, c->d);
     c->counters->prim_tests++;
     r.n = prim_spans(&l->prim, n->leaf, o, d, r.v, cap);
+    c->scratch->prim_tests++;
     r.n = span_regularize(r.v, r.n, c->eps);
     return r;
 }

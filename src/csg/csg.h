@@ -37,6 +37,7 @@ typedef struct csg_leaf {
     affine to_local;    /* inverse of to_world */
     float color[4];     /* RGBA, 0..1 */
     uint32_t object_id; /* index of the leaf in source order, for the id AOV */
+    uint32_t material;  /* index into the scene's material table; 0: the default */
     sc_location loc;    /* where the leaf was written */
 } csg_leaf;
 
@@ -106,6 +107,10 @@ void *csg_builder_alloc(csg_builder *b, size_t size);
  * CSG_EMPTY when the allocation failed (see csg_builder_failed). */
 uint32_t csg_builder_leaf(csg_builder *b, const prim *p, const affine *to_world,
                           const float color[4], sc_location loc);
+
+/* Sets the material index of the leaf that node id (from csg_builder_leaf)
+ * names; ignores CSG_EMPTY and ids of boolean nodes. */
+void csg_builder_set_material(csg_builder *b, uint32_t id, uint32_t material);
 
 /* Adds a boolean node over children (node ids, CSG_EMPTY allowed) and
  * returns its id. Empty operands are simplified away: a union drops them, an

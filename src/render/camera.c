@@ -169,9 +169,13 @@ sc_status cam_view_from_options(const sc_render_options *options, const bbox *bo
         return st;
     int viewall = options->viewall, autocenter = options->autocenter;
     switch (options->camera_mode) {
-    case SC_CAMERA_VECTOR:
+    case SC_CAMERA_VECTOR: {
         st = cam_view_lookat(options->camera, view, error);
+        vec3 up = v3(options->up[0], options->up[1], options->up[2]);
+        if (!st && v3_is_finite(up) && v3_length(up) > 0)
+            view->up = v3_normalize(up); /* a camera() node's up; +z by default */
         break;
+    }
     case SC_CAMERA_GIMBAL:
         st = cam_view_gimbal(options->camera, view, error);
         break;

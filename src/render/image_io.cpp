@@ -24,8 +24,13 @@
 #include <fcntl.h>
 #include <unistd.h>
 
+#ifndef SPANCAST_VERSION
+#define SPANCAST_VERSION "0.1.0" /* as the command line reports it */
+#endif
+
 extern "C" {
 #include "base/error.h"
+#include "render/color.h"
 }
 
 namespace
@@ -86,11 +91,13 @@ sc_status check(const char *path, imgio_kind kind, sc_error *error)
     if (!probe)
         return err_set(error, SC_ERR_ARGUMENT, nullptr,
                        "cannot write '%s': unknown image format", path);
-    if (kind == IMGIO_DEPTH && !depth_format(ext))
+    static const char *const float_kinds[] = {nullptr, nullptr, "depth", "normals",
+                                              "ids"};
+    if (kind >= IMGIO_DEPTH && !depth_format(ext))
         return err_set(error, SC_ERR_ARGUMENT, nullptr,
-                       "cannot write depth to '%s': depth needs a floating-point "
+                       "cannot write %s to '%s': %s needs a floating-point "
                        "format (.exr or .tif)",
-                       path);
+                       float_kinds[kind], path, float_kinds[kind]);
     return SC_OK;
 }
 
@@ -141,7 +148,7 @@ std::string create_temporary(const std::string &path)
 sc_status write_image(const char *path, imgio_kind kind, int width, int height,
                       const std::vector<std::string> &channel_names,
                       OIIO::TypeDesc file_type, OIIO::TypeDesc data_type,
-                      const void *data, sc_error *error)
+                      const void *data, const char *camera, sc_error *error)
 {
     sc_status st = check(path, kind, error);
     if (st)
@@ -158,8 +165,14 @@ sc_status write_image(const char *path, imgio_kind kind, int width, int height,
     } else {
         OIIO::ImageSpec spec(width, height, (int)channel_names.size(), file_type);
         spec.channelnames = channel_names;
-        if (kind == IMGIO_COLOR) // display values, also in float files
-            spec.attribute("oiio:ColorSpace", "sRGB");
+        if (kind == IMGIO_COLOR) // 8-bit: sRGB-encoded; float: linear (color.h)
+            spec.attribute("oiio:ColorSpace",
+                           file_type == OIIO::TypeDesc::UINT8 ? "sRGB" : "Linear");
+        spec.attribute("Software", "spancast " SPANCAST_VERSION);
+        if (camera && camera[0]) {
+            spec.attribute("ImageDescription", std::string("camera: ") + camera);
+            spec.attribute("spancast:camera", camera);
+        }
         if (!out->open(tmp, spec))
             failure = trimmed(out->geterror());
         else if (!out->write_image(data_type, data))
@@ -204,10 +217,17 @@ sc_status color_body(const sc_framebuffer *fb, const char *path, sc_error *error
 {
     if (!fb || !fb->color)
         return no_buffer("colour", error);
-    OIIO::TypeDesc type = float_color_format(extension_of(path)) ? OIIO::TypeDesc::FLOAT
-                                                                 : OIIO::TypeDesc::UINT8;
-    return write_image(path, IMGIO_COLOR, fb->width, fb->height, {"R", "G", "B"}, type,
-                       OIIO::TypeDesc::FLOAT, fb->color, error);
+    if (float_color_format(extension_of(path)))
+        return write_image(path, IMGIO_COLOR, fb->width, fb->height, {"R", "G", "B"},
+                           OIIO::TypeDesc::FLOAT, OIIO::TypeDesc::FLOAT, fb->color,
+                           fb->camera_info, error);
+    size_t values = (size_t)fb->width * (size_t)fb->height * 3;
+    std::vector<unsigned char> encoded(values);
+    for (size_t k = 0; k < values; k++)
+        encoded[k] = color_linear_to_srgb8(fb->color[k]);
+    return write_image(path, IMGIO_COLOR, fb->width, fb->height, {"R", "G", "B"},
+                       OIIO::TypeDesc::UINT8, OIIO::TypeDesc::UINT8, encoded.data(),
+                       fb->camera_info, error);
 }
 
 sc_status mask_body(const sc_framebuffer *fb, const char *path, sc_error *error)
@@ -215,7 +235,8 @@ sc_status mask_body(const sc_framebuffer *fb, const char *path, sc_error *error)
     if (!fb || !fb->mask)
         return no_buffer("mask", error);
     return write_image(path, IMGIO_MASK, fb->width, fb->height, {"Y"},
-                       OIIO::TypeDesc::UINT8, OIIO::TypeDesc::UINT8, fb->mask, error);
+                       OIIO::TypeDesc::UINT8, OIIO::TypeDesc::UINT8, fb->mask,
+                       fb->camera_info, error);
 }
 
 sc_status depth_body(const sc_framebuffer *fb, const char *path, sc_error *error)
@@ -223,7 +244,31 @@ sc_status depth_body(const sc_framebuffer *fb, const char *path, sc_error *error
     if (!fb || !fb->depth)
         return no_buffer("depth", error);
     return write_image(path, IMGIO_DEPTH, fb->width, fb->height, {"Z"},
-                       OIIO::TypeDesc::FLOAT, OIIO::TypeDesc::FLOAT, fb->depth, error);
+                       OIIO::TypeDesc::FLOAT, OIIO::TypeDesc::FLOAT, fb->depth,
+                       fb->camera_info, error);
+}
+
+sc_status normal_body(const sc_framebuffer *fb, const char *path, sc_error *error)
+{
+    if (!fb || !fb->normal)
+        return no_buffer("normal", error);
+    return write_image(path, IMGIO_NORMAL, fb->width, fb->height, {"X", "Y", "Z"},
+                       OIIO::TypeDesc::FLOAT, OIIO::TypeDesc::FLOAT, fb->normal,
+                       fb->camera_info, error);
+}
+
+sc_status id_body(const sc_framebuffer *fb, const char *path, sc_error *error)
+{
+    if (!fb || !fb->id)
+        return no_buffer("id", error);
+    // Ids as floats: exact up to 2^24 leaves, and -1 survives.
+    size_t pixels = (size_t)fb->width * (size_t)fb->height;
+    std::vector<float> ids(pixels);
+    for (size_t k = 0; k < pixels; k++)
+        ids[k] = (float)fb->id[k];
+    return write_image(path, IMGIO_ID, fb->width, fb->height, {"id"},
+                       OIIO::TypeDesc::FLOAT, OIIO::TypeDesc::FLOAT, ids.data(),
+                       fb->camera_info, error);
 }
 
 } // namespace
@@ -256,4 +301,16 @@ extern "C" sc_status sc_framebuffer_write_depth(const sc_framebuffer *fb,
                                                 const char *path, sc_error *error)
 {
     return guarded(error, depth_body, fb, path);
+}
+
+extern "C" sc_status sc_framebuffer_write_normal(const sc_framebuffer *fb,
+                                                 const char *path, sc_error *error)
+{
+    return guarded(error, normal_body, fb, path);
+}
+
+extern "C" sc_status sc_framebuffer_write_id(const sc_framebuffer *fb, const char *path,
+                                             sc_error *error)
+{
+    return guarded(error, id_body, fb, path);
 }

@@ -11,7 +11,12 @@
  *           half floats, 0 or 1);
  *   depth   one 32-bit float channel "Z", +inf where the ray misses, and
  *           only in .exr (.sxr .mxr) or float TIFF (.tif .tiff); any other
- *           known extension is an error, never a silently quantised file.
+ *           known extension is an error, never a silently quantised file;
+ *   normal  three float channels X, Y, Z, same formats as depth;
+ *   id      one float channel "id" (leaf index, -1 on a miss), same formats.
+ * Colour is linear in float files and sRGB-encoded in 8-bit ones (color.h).
+ * Every file carries "Software" and the camera ("ImageDescription" and
+ * "spancast:camera") in its metadata.
  */
 #ifndef SPANCAST_RENDER_IMAGE_IO_H
 #define SPANCAST_RENDER_IMAGE_IO_H
@@ -22,7 +27,13 @@
 extern "C" {
 #endif
 
-typedef enum imgio_kind { IMGIO_COLOR, IMGIO_MASK, IMGIO_DEPTH } imgio_kind;
+typedef enum imgio_kind {
+    IMGIO_COLOR,
+    IMGIO_MASK,
+    IMGIO_DEPTH, /* this one and those below need a float format */
+    IMGIO_NORMAL,
+    IMGIO_ID
+} imgio_kind;
 
 /* Checks, without touching the file system, that path names a format
  * OpenImageIO can write and that suits kind. Returns SC_OK or

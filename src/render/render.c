@@ -1,45 +1,35 @@
-/* The render loop: camera rays, first-hit queries, shading, buffers.
+/* The render loop: camera rays, shading, buffers.
  *
- * The image is cut into 16 x 16 tiles handed to OpenMP threads one at a
- * time (schedule dynamic), so a thread that drew cheap background tiles takes
- * more. Every pixel is computed from its own ray alone, so the buffers do not
- * depend on the thread count or the order of the tiles. Each thread owns a
- * scratch arena for the span lists of its queries, reset after every pixel
- * sample; the buffers are allocated before the loop, so the loop itself
- * never calls malloc once the arena holds its first block.
+ * The image (or the --region crop of it) is cut into 16 x 16 tiles handed
+ * to OpenMP threads one at a time (schedule dynamic), so a thread that drew
+ * cheap background tiles takes more. Every pixel sample is computed from
+ * its own rays and its own random numbers, seeded by the pixel's position
+ * in the full image and the sample's index (sample.h), so the buffers do
+ * not depend on the thread count, the order of the tiles or the crop. Each
+ * thread owns a scratch arena for the span lists of its queries, reset after
+ * every pixel sample; the buffers are allocated before the loop, so the
+ * loop itself never calls malloc once the arena holds its first blocks.
  *
- * Shading is Blinn-Phong under a fixed rig of two directional lights and
- * ambient light, all relative to the camera (a key light from the upper left
- * and towards the viewer, a weaker fill from the lower right), so every view
- * is lit; there are no shadows yet. Surfaces are two-sided: a hit whose
- * outward normal faces away from the viewer (the ray started inside the
- * solid) is shaded with the reversed normal. Colours are display values
- * (sRGB-encoded, as OpenSCAD's colours are): lighting multiplies them
- * directly, like fixed-function OpenGL, and they are written to 8-bit files
- * without a transfer curve. The colour buffer therefore holds display values,
- * not scene-linear light.
+ * Colour is the mean of the pixel's samples, each traced by shade_ray
+ * (shade.h) in linear light (color.h). The AOVs (mask, depth, normal, id)
+ * come from the ray through the pixel's centre alone, so they are exact
+ * and the same at any sample count. Progress is reported from the thread
+ * that started the render, after each tile it finishes.
  */
 #include "render/render.h"
 
 #include <math.h>
 #include <omp.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "base/arena.h"
 #include "base/error.h"
 #include "render/camera.h"
+#include "render/sample.h"
+#include "render/shade.h"
 #include "scene/scene.h"
-
-/* The light rig, as directions towards the lights in camera coordinates
- * (right, up, towards the viewer) and intensities. */
-static const double key_light[3] = {-0.5, 0.6, 0.8};
-static const double fill_light[3] = {0.6, -0.3, 0.7};
-static const double key_intensity = 0.65;
-static const double fill_intensity = 0.25;
-static const double ambient = 0.25;
-static const double specular = 0.2; /* white highlight of the key light */
-static const double shininess = 40.0;
 
 void sc_render_options_init(sc_render_options *options)
 {
@@ -51,98 +41,119 @@ void sc_render_options_init(sc_render_options *options)
     options->projection = SC_PROJECTION_PERSPECTIVE;
     options->threads = 0;
     options->want_color = 1;
+    options->up[2] = 1;
+    options->spp = 1;
+    options->max_depth = 5;
+}
+
+int sc_render_options_from_scene(sc_render_options *options, const sc_scene *scene)
+{
+    const shading *look = scene ? scene_shading(scene) : NULL;
+    if (!look || !look->has_camera)
+        return 0;
+    const shading_camera *c = &look->camera;
+    options->camera_mode = SC_CAMERA_VECTOR;
+    memcpy(options->camera, c->eye, sizeof c->eye);
+    memcpy(options->camera + 3, c->center, sizeof c->center);
+    memcpy(options->up, c->up, sizeof c->up);
+    options->fov_deg = c->fov_deg;
+    options->projection = c->projection;
+    return 1;
 }
 
 typedef struct render_ctx {
     const csg_tree *tree;
     camera cam;
-    vec3 key_dir, fill_dir; /* unit world directions towards the lights */
+    shade_scene shade;
+    int spp, grid_width;
+    int x0, y0; /* the crop's corner in the full image */
     sc_framebuffer *fb;
 } render_ctx;
 
-static vec3 camera_to_world(const camera *cam, const double c[3])
-{
-    vec3 w = v3_scale(cam->r, c[0]);
-    w = v3_madd(w, cam->u, c[1]);
-    w = v3_madd(w, cam->f, -c[2]);
-    return v3_normalize(w);
-}
+/* Per-thread state and counters. */
+typedef struct render_thread {
+    arena scratch;
+    shade_counters count;
+    uint64_t camera_rays;
+} render_thread;
 
-static float clamp01(double v)
-{
-    return v <= 0 ? 0.0f : v >= 1 ? 1.0f : (float)v;
-}
-
-/* Blinn-Phong of base under the rig; n is the shading normal (facing the
- * viewer), view the unit direction towards the viewer. */
-static void shade(const render_ctx *c, const float base[4], vec3 n, vec3 view,
-                  float out[3])
-{
-    double diffuse = ambient + key_intensity * fmax(0.0, v3_dot(n, c->key_dir)) +
-                     fill_intensity * fmax(0.0, v3_dot(n, c->fill_dir));
-    double highlight = 0;
-    if (v3_dot(n, c->key_dir) > 0) {
-        vec3 h = v3_normalize(v3_add(c->key_dir, view));
-        highlight = specular * pow(fmax(0.0, v3_dot(n, h)), shininess);
-    }
-    for (int k = 0; k < 3; k++)
-        out[k] = clamp01(base[k] * diffuse + highlight);
-}
-
-static void render_pixel(const render_ctx *c, arena *scratch, int i, int j)
+static void render_pixel(const render_ctx *c, render_thread *th, int i, int j)
 {
     sc_framebuffer *fb = c->fb;
     size_t p = (size_t)j * (size_t)fb->width + (size_t)i;
-    csg_ray ray;
-    cam_ray(&c->cam, i, j, 0.5, 0.5, &ray.o, &ray.d);
-    ray.tmin = 0;
-    ray.tmax = INFINITY;
-    csg_hit hit;
-    int found = csg_first_hit(c->tree, &ray, scratch, &hit);
+    int x = c->x0 + i, y = c->y0 + j; /* in the full image */
+    int aovs = fb->mask || fb->depth || fb->normal || fb->id;
 
-    if (fb->mask)
-        fb->mask[p] = found ? 255 : 0;
-    if (fb->depth)
-        fb->depth[p] = found ? (float)(hit.t * v3_length(ray.d)) : INFINITY;
-    if (!found) {
-        if (fb->color) {
-            fb->color[3 * p + 0] = RENDER_BACKGROUND_R;
-            fb->color[3 * p + 1] = RENDER_BACKGROUND_G;
-            fb->color[3 * p + 2] = RENDER_BACKGROUND_B;
+    /* The centre ray: the AOVs, and the colour at one sample per pixel. */
+    csg_ray centre;
+    csg_hit hit;
+    int found = 0;
+    if (aovs || c->spp == 1) {
+        cam_ray(&c->cam, x, y, 0.5, 0.5, &centre.o, &centre.d);
+        centre.tmin = 0;
+        centre.tmax = INFINITY;
+        th->camera_rays++;
+        found = csg_first_hit(c->tree, &centre, &th->scratch, &hit);
+        if (fb->mask)
+            fb->mask[p] = found ? 255 : 0;
+        if (fb->depth)
+            fb->depth[p] = found ? (float)(hit.t * v3_length(centre.d)) : INFINITY;
+        if (fb->id)
+            fb->id[p] = found ? (int32_t)c->tree->leaves[hit.leaf].object_id : -1;
+        if (fb->normal) {
+            vec3 n = found ? csg_hit_normal(c->tree, &centre, &hit) : v3(0, 0, 0);
+            fb->normal[3 * p + 0] = (float)n.x;
+            fb->normal[3 * p + 1] = (float)n.y;
+            fb->normal[3 * p + 2] = (float)n.z;
         }
-        if (fb->normal)
-            fb->normal[3 * p + 0] = fb->normal[3 * p + 1] = fb->normal[3 * p + 2] = 0;
+    }
+    if (!fb->color) {
+        arena_reset(&th->scratch);
         return;
     }
-    if (!fb->color && !fb->normal)
-        return;
-    vec3 n = csg_hit_normal(c->tree, &ray, &hit);
-    if (fb->normal) {
-        fb->normal[3 * p + 0] = (float)n.x;
-        fb->normal[3 * p + 1] = (float)n.y;
-        fb->normal[3 * p + 2] = (float)n.z;
+    double sum[3] = {0, 0, 0};
+    for (int s = 0; s < c->spp; s++) {
+        shade_thread st;
+        st.scratch = &th->scratch;
+        st.rng = sample_rng_for((uint32_t)x, (uint32_t)y, (uint32_t)s);
+        memset(&st.count, 0, sizeof st.count);
+        double rgb[3];
+        if (c->spp == 1) {
+            if (found)
+                shade_ray(&c->shade, &st, &centre, &hit, 0, 1.0, rgb);
+            else
+                memcpy(rgb, c->shade.background, sizeof rgb);
+        } else {
+            double sx, sy;
+            sample_offset(s, c->spp, c->grid_width, &st.rng, &sx, &sy);
+            csg_ray ray;
+            cam_ray(&c->cam, x, y, sx, sy, &ray.o, &ray.d);
+            ray.tmin = 0;
+            ray.tmax = INFINITY;
+            th->camera_rays++;
+            shade_ray(&c->shade, &st, &ray, NULL, 0, 1.0 / c->spp, rgb);
+        }
+        for (int k = 0; k < 3; k++)
+            sum[k] += rgb[k];
+        th->count.shadow_rays += st.count.shadow_rays;
+        th->count.reflection_rays += st.count.reflection_rays;
+        th->count.refraction_rays += st.count.refraction_rays;
+        arena_reset(&th->scratch);
     }
-    if (fb->color) {
-        vec3 view = v3_normalize(v3_neg(ray.d));
-        if (v3_dot(n, view) < 0) /* seen from inside the solid */
-            n = v3_neg(n);
-        shade(c, c->tree->leaves[hit.leaf].color, n, view, &fb->color[3 * p]);
-    }
+    for (int k = 0; k < 3; k++)
+        fb->color[3 * p + k] = (float)(sum[k] / c->spp);
 }
 
-static void render_tile(const render_ctx *c, arena *scratch, int tile, int tiles_x)
+static void render_tile(const render_ctx *c, render_thread *th, int tile, int tiles_x)
 {
     int x0 = (tile % tiles_x) * RENDER_TILE_SIZE;
     int y0 = (tile / tiles_x) * RENDER_TILE_SIZE;
     int x1 = x0 + RENDER_TILE_SIZE < c->fb->width ? x0 + RENDER_TILE_SIZE : c->fb->width;
     int y1 =
         y0 + RENDER_TILE_SIZE < c->fb->height ? y0 + RENDER_TILE_SIZE : c->fb->height;
-    for (int j = y0; j < y1; j++) {
-        for (int i = x0; i < x1; i++) {
-            render_pixel(c, scratch, i, j);
-            arena_reset(scratch);
-        }
-    }
+    for (int j = y0; j < y1; j++)
+        for (int i = x0; i < x1; i++)
+            render_pixel(c, th, i, j);
 }
 
 void sc_framebuffer_release(sc_framebuffer *fb)
@@ -153,18 +164,20 @@ void sc_framebuffer_release(sc_framebuffer *fb)
     free(fb->depth);
     free(fb->mask);
     free(fb->normal);
+    free(fb->id);
     free(fb);
 }
 
-/* Allocates the buffers options ask for; NULL when out of memory. */
-static sc_framebuffer *framebuffer_new(const sc_render_options *o)
+/* Allocates the buffers options ask for, width x height; NULL when out of
+ * memory. */
+static sc_framebuffer *framebuffer_new(const sc_render_options *o, int width, int height)
 {
     sc_framebuffer *fb = calloc(1, sizeof *fb);
     if (!fb)
         return NULL;
-    fb->width = o->width;
-    fb->height = o->height;
-    size_t pixels = (size_t)o->width * (size_t)o->height;
+    fb->width = width;
+    fb->height = height;
+    size_t pixels = (size_t)width * (size_t)height;
     int ok = 1;
     if (o->want_color)
         ok &= (fb->color = malloc(pixels * 3 * sizeof(float))) != NULL;
@@ -174,11 +187,18 @@ static sc_framebuffer *framebuffer_new(const sc_render_options *o)
         ok &= (fb->mask = malloc(pixels)) != NULL;
     if (o->want_normal)
         ok &= (fb->normal = malloc(pixels * 3 * sizeof(float))) != NULL;
+    if (o->want_id)
+        ok &= (fb->id = malloc(pixels * sizeof(int32_t))) != NULL;
     if (!ok) {
         sc_framebuffer_release(fb);
         return NULL;
     }
     return fb;
+}
+
+static int has_region(const sc_render_options *o)
+{
+    return o->region[0] || o->region[1] || o->region[2] || o->region[3];
 }
 
 static sc_status check_options(const sc_render_options *o, sc_error *error)
@@ -191,12 +211,44 @@ static sc_status check_options(const sc_render_options *o, sc_error *error)
     if (o->threads < 0)
         return err_set(error, SC_ERR_ARGUMENT, NULL,
                        "thread count must not be negative (got %d)", o->threads);
+    if (o->spp < 1 || o->spp > RENDER_MAX_SPP)
+        return err_set(error, SC_ERR_ARGUMENT, NULL,
+                       "samples per pixel must be 1 to %d (got %d)", RENDER_MAX_SPP,
+                       o->spp);
+    if (o->max_depth < 0 || o->max_depth > SHADE_MAX_DEPTH)
+        return err_set(error, SC_ERR_ARGUMENT, NULL,
+                       "maximum depth must be 0 to %d (got %d)", SHADE_MAX_DEPTH,
+                       o->max_depth);
+    const int *r = o->region;
+    if (has_region(o) && !(r[0] >= 0 && r[1] >= 0 && r[0] < r[2] && r[1] < r[3] &&
+                           r[2] <= o->width && r[3] <= o->height))
+        return err_set(error, SC_ERR_ARGUMENT, NULL,
+                       "region %d,%d,%d,%d is not a non-empty crop of the %dx%d image",
+                       r[0], r[1], r[2], r[3], o->width, o->height);
     return SC_OK;
 }
 
-sc_status render_tree(const csg_tree *tree, const sc_render_options *options,
-                      sc_framebuffer **framebuffer, sc_error *error)
+static double seconds_now(void)
 {
+    return omp_get_wtime();
+}
+
+static void describe_camera(const camera *cam, double fov_deg, char *out, size_t size)
+{
+    snprintf(out, size,
+             "eye %.9g,%.9g,%.9g center %.9g,%.9g,%.9g up %.9g,%.9g,%.9g fov %.9g "
+             "projection %s",
+             cam->eye.x, cam->eye.y, cam->eye.z, cam->center.x, cam->center.y,
+             cam->center.z, cam->u.x, cam->u.y, cam->u.z, fov_deg,
+             cam->projection == SC_PROJECTION_ORTHOGRAPHIC ? "orthographic"
+                                                           : "perspective");
+}
+
+sc_status render_scene(const csg_tree *tree, const shading *look,
+                       const sc_render_options *options, sc_framebuffer **framebuffer,
+                       sc_error *error)
+{
+    double start = seconds_now();
     *framebuffer = NULL;
     sc_render_options defaults;
     if (!options) {
@@ -210,6 +262,8 @@ sc_status render_tree(const csg_tree *tree, const sc_render_options *options,
     render_ctx c;
     memset(&c, 0, sizeof c);
     c.tree = tree;
+    c.spp = options->spp;
+    c.grid_width = sample_grid_width(options->spp);
     bbox bounds = tree->root == CSG_EMPTY ? bbox_empty() : tree->bounds;
     cam_view view;
     st = cam_view_from_options(options, &bounds, &view, error);
@@ -219,34 +273,78 @@ sc_status render_tree(const csg_tree *tree, const sc_render_options *options,
                   options->height, error);
     if (st)
         return st;
-    c.key_dir = camera_to_world(&c.cam, key_light);
-    c.fill_dir = camera_to_world(&c.cam, fill_light);
-
-    c.fb = framebuffer_new(options);
+    int width = options->width, height = options->height;
+    if (has_region(options)) {
+        c.x0 = options->region[0];
+        c.y0 = options->region[1];
+        width = options->region[2] - c.x0;
+        height = options->region[3] - c.y0;
+    }
+    c.fb = framebuffer_new(options, width, height);
     if (!c.fb)
         return err_set(error, SC_ERR_NOMEM, NULL, "out of memory for a %dx%d image",
-                       options->width, options->height);
+                       width, height);
+    c.fb->x0 = c.x0;
+    c.fb->y0 = c.y0;
+    describe_camera(&c.cam, options->fov_deg, c.fb->camera_info,
+                    sizeof c.fb->camera_info);
+    st = shade_prepare(&c.shade, tree, look, &c.cam, options->max_depth, error);
+    if (st) {
+        sc_framebuffer_release(c.fb);
+        return st;
+    }
 
     int threads = options->threads > 0 ? options->threads : omp_get_max_threads();
-    int tiles_x = (options->width + RENDER_TILE_SIZE - 1) / RENDER_TILE_SIZE;
-    int tiles_y = (options->height + RENDER_TILE_SIZE - 1) / RENDER_TILE_SIZE;
+    int tiles_x = (width + RENDER_TILE_SIZE - 1) / RENDER_TILE_SIZE;
+    int tiles_y = (height + RENDER_TILE_SIZE - 1) / RENDER_TILE_SIZE;
     int tiles = tiles_x * tiles_y; /* at most 2048 * 2048 */
+    int done = 0;
+    sc_render_stats *stats = &c.fb->stats;
+    stats->threads = threads;
+    double traced = seconds_now();
+    stats->setup_seconds = traced - start;
 
 #pragma omp parallel num_threads(threads)
     {
-        arena scratch;
-        arena_init(&scratch, 0);
+        render_thread th;
+        memset(&th, 0, sizeof th);
+        arena_init(&th.scratch, 0);
         /* Take the first block now rather than inside the loop. */
-        (void)arena_alloc(&scratch, 1);
-        arena_reset(&scratch);
+        (void)arena_alloc(&th.scratch, 1);
+        arena_reset(&th.scratch);
+        int reporter = omp_get_thread_num() == 0 && options->progress;
 #pragma omp for schedule(dynamic, 1)
-        for (int tile = 0; tile < tiles; tile++)
-            render_tile(&c, &scratch, tile, tiles_x);
-        arena_free(&scratch);
+        for (int tile = 0; tile < tiles; tile++) {
+            render_tile(&c, &th, tile, tiles_x);
+            int now;
+#pragma omp atomic capture
+            now = ++done;
+            if (reporter)
+                options->progress(options->progress_user, (double)now / tiles);
+        }
+#pragma omp critical(render_stats)
+        {
+            stats->camera_rays += th.camera_rays;
+            stats->shadow_rays += th.count.shadow_rays;
+            stats->reflection_rays += th.count.reflection_rays;
+            stats->refraction_rays += th.count.refraction_rays;
+            stats->primitive_tests += th.scratch.prim_tests;
+            stats->span_operations += th.scratch.span_ops;
+        }
+        arena_free(&th.scratch);
     }
-
+    if (options->progress)
+        options->progress(options->progress_user, 1.0);
+    shade_release(&c.shade);
+    stats->trace_seconds = seconds_now() - traced;
     *framebuffer = c.fb;
     return SC_OK;
+}
+
+sc_status render_tree(const csg_tree *tree, const sc_render_options *options,
+                      sc_framebuffer **framebuffer, sc_error *error)
+{
+    return render_scene(tree, NULL, options, framebuffer, error);
 }
 
 sc_status sc_render(const sc_scene *scene, const sc_render_options *options,
@@ -257,5 +355,6 @@ sc_status sc_render(const sc_scene *scene, const sc_render_options *options,
     if (!scene || !framebuffer)
         return err_set(error, SC_ERR_ARGUMENT, NULL,
                        "sc_render needs a scene and a framebuffer pointer");
-    return render_tree(scene_tree(scene), options, framebuffer, error);
+    return render_scene(scene_tree(scene), scene_shading(scene), options, framebuffer,
+                        error);
 }

@@ -1,20 +1,23 @@
-/* The renderer's internal entry point and shading constants.
+/* The renderer's internal entry points and constants.
  *
- * sc_render (public) renders a loaded scene; render_tree does the same for a
- * bare compiled tree, so tests can render trees they build directly. The
- * default light rig is fixed to the camera, so every view is lit the same
- * way; it is written here so that tests and documentation can name it.
+ * sc_render (public) renders a loaded scene; render_scene does the same for
+ * a compiled tree and its shading record, render_tree for a bare tree (the
+ * default light rig and materials), so tests can render trees they build
+ * directly. Shading itself is in shade.h.
  */
 #ifndef SPANCAST_RENDER_RENDER_H
 #define SPANCAST_RENDER_RENDER_H
 
 #include "csg/csg.h"
+#include "scene/shading.h"
 #include "spancast/spancast.h"
 
 #define RENDER_TILE_SIZE 16   /* tiles of 16 x 16 pixels are scheduled over threads */
 #define RENDER_MAX_SIDE 32768 /* largest image width or height */
+#define RENDER_MAX_SPP 65536  /* most samples per pixel */
 
-/* OpenSCAD's Cornfield background, #ffffe5, as display values. */
+/* OpenSCAD's Cornfield background, #ffffe5, as display values (the
+ * framebuffer holds their linear equivalent: color.h). */
 #define RENDER_BACKGROUND_R 1.0f
 #define RENDER_BACKGROUND_G 1.0f
 #define RENDER_BACKGROUND_B (229.0f / 255.0f)
@@ -24,5 +27,10 @@
  * is NULL and error is filled. */
 sc_status render_tree(const csg_tree *tree, const sc_render_options *options,
                       sc_framebuffer **framebuffer, sc_error *error);
+
+/* The same with a shading record (NULL: as render_tree). */
+sc_status render_scene(const csg_tree *tree, const shading *look,
+                       const sc_render_options *options, sc_framebuffer **framebuffer,
+                       sc_error *error);
 
 #endif

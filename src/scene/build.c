@@ -37,6 +37,7 @@
 #include <string.h>
 
 #include "base/error.h"
+#include "scene/build_shading.h"
 
 typedef enum node_kind {
     KIND_UNION, /* group, union, render */
@@ -48,6 +49,10 @@ typedef enum node_kind {
     KIND_SPHERE,
     KIND_CYLINDER,
     KIND_POLYHEDRON,
+    KIND_MATERIAL, /* spancast's shading nodes: build_shading.c */
+    KIND_LIGHT,
+    KIND_CAMERA,
+    KIND_BACKGROUND,
     KIND_UNSUPPORTED, /* known, not rendered yet */
     KIND_UNKNOWN
 } node_kind;
@@ -88,10 +93,10 @@ static const struct {
     {"quadric", KIND_UNSUPPORTED},
     {"halfspace", KIND_UNSUPPORTED},
     {"implicit", KIND_UNSUPPORTED},
-    {"material", KIND_UNSUPPORTED},
-    {"light", KIND_UNSUPPORTED},
-    {"camera", KIND_UNSUPPORTED},
-    {"background", KIND_UNSUPPORTED},
+    {"material", KIND_MATERIAL},
+    {"light", KIND_LIGHT},
+    {"camera", KIND_CAMERA},
+    {"background", KIND_BACKGROUND},
 };
 
 static node_kind kind_of(const char *name)
@@ -115,6 +120,7 @@ typedef struct frame {
     int counted;     /* the result is an operand of the parent */
     size_t first_id; /* children's results start here on the id stack */
     float color[4];
+    uint32_t material; /* index into the shading record's materials */
     affine to_world;
 } frame;
 
@@ -128,6 +134,7 @@ typedef struct builder {
     size_t id_count, id_cap;
     frame *frames;
     size_t frame_count, frame_cap;
+    shading *shading;       /* lights, materials, camera, background */
     const parse_node *root; /* the first '!' node, or NULL */
     uint32_t root_id;       /* its result */
 } builder;
@@ -272,6 +279,7 @@ static sc_status add_leaf(builder *b, const parse_node *n, const prim *p,
                           const frame *state, uint32_t *id)
 {
     *id = csg_builder_leaf(b->csg, p, &state->to_world, state->color, n->loc);
+    csg_builder_set_material(b->csg, *id, state->material);
     return csg_builder_failed(b->csg) ? nomem(b) : SC_OK;
 }
 
@@ -827,10 +835,17 @@ static sc_status visit(builder *b, const parse_node *n, int *opened)
         f.emit = 1;
         f.to_world = affine_identity();
         memcpy(f.color, default_color, sizeof f.color);
+        f.material = 0;
     }
     if (n->modifiers & PARSE_MOD_BACKGROUND)
         f.emit = 0;
     f.counted = f.emit;
+    if (kind == KIND_LIGHT)
+        return build_light(b->shading, b->syntax, n, &f.to_world, f.emit, b->error);
+    if (kind == KIND_CAMERA)
+        return build_camera(b->shading, b->syntax, n, f.emit, b->error);
+    if (kind == KIND_BACKGROUND)
+        return build_background(b->shading, b->syntax, n, f.emit, b->error);
     if (is_leaf(kind)) {
         if (n->child_count > 0 && f.emit &&
             (st = warn(b, &n->loc, "'%s' takes no children; they are ignored",
@@ -869,6 +884,10 @@ static sc_status visit(builder *b, const parse_node *n, int *opened)
         }
     } else if (kind == KIND_COLOR) {
         if ((st = read_color(b, n, f.emit, f.color)) != SC_OK)
+            return st;
+    } else if (kind == KIND_MATERIAL) {
+        if ((st = build_material(b->shading, b->syntax, n, f.emit, &f.material, f.color,
+                                 b->error)) != SC_OK)
             return st;
     }
     *opened = 1;
@@ -918,7 +937,15 @@ static sc_status walk(builder *b, uint32_t *root)
 sc_status build_tree(const parse_tree *syntax, csg_tree **out, sc_error **warnings,
                      size_t *warning_count, sc_error *error)
 {
+    return build_scene(syntax, out, NULL, warnings, warning_count, error);
+}
+
+sc_status build_scene(const parse_tree *syntax, csg_tree **out, shading **look,
+                      sc_error **warnings, size_t *warning_count, sc_error *error)
+{
     *out = NULL;
+    if (look)
+        *look = NULL;
     *warnings = NULL;
     *warning_count = 0;
     builder b;
@@ -928,22 +955,32 @@ sc_status build_tree(const parse_tree *syntax, csg_tree **out, sc_error **warnin
     b.root = find_root(syntax);
     b.root_id = CSG_EMPTY;
     b.csg = csg_builder_new();
-    if (!b.csg)
+    b.shading = shading_new();
+    if (!b.csg || !b.shading) {
+        csg_builder_free(b.csg);
+        shading_free(b.shading);
         return err_set(error, SC_ERR_NOMEM, NULL, "out of memory");
+    }
     uint32_t root = CSG_EMPTY;
     sc_status st = walk(&b, &root);
     free(b.ids);
     free(b.frames);
     if (st != SC_OK) {
         csg_builder_free(b.csg);
+        shading_free(b.shading);
         free(b.warnings);
         return st;
     }
     st = csg_builder_finish(b.csg, root, out, error);
     if (st != SC_OK) {
+        shading_free(b.shading);
         free(b.warnings);
         return st;
     }
+    if (look)
+        *look = b.shading;
+    else
+        shading_free(b.shading);
     *warnings = b.warnings;
     *warning_count = b.warning_count;
     return SC_OK;

@@ -5,6 +5,8 @@
  *   difference                                first child minus the others
  *   intersection                              intersection of the children
  *   cube, sphere, cylinder, polyhedron        leaves (polyhedron: convex only)
+ *   material                                  union; sets its children's material
+ *   light, camera, background                 no geometry (build_shading.h)
  * Transforms (multmatrix, row-major 4x4) nest and accumulate into each
  * leaf's to_world; an inner colour wins over an outer one; leaves without a
  * colour get OpenSCAD's default face colour (Cornfield, #f9d72c).
@@ -16,7 +18,7 @@
  * its ancestors' transforms or colours, as OpenSCAD's root modifier does.
  *
  * Every node OpenSCAD can write is known by name; those spancast cannot
- * render yet, and spancast's own extension nodes, are SC_ERR_UNSUPPORTED
+ * render yet, and spancast's own geometry extension nodes, are SC_ERR_UNSUPPORTED
  * at their name; any other name is an error too. Unknown arguments are
  * ignored and the last of repeated ones wins, as in OpenSCAD.
  *
@@ -31,6 +33,7 @@
 
 #include "csg/csg.h"
 #include "scene/parse.h"
+#include "scene/shading.h"
 #include "spancast/spancast.h"
 
 /* OpenSCAD's default face colour, Cornfield #f9d72c, alpha 1. */
@@ -45,6 +48,12 @@
  * On failure nothing is returned and error says where and why. */
 sc_status build_tree(const parse_tree *syntax, csg_tree **out, sc_error **warnings,
                      size_t *warning_count, sc_error *error);
+
+/* The same, and also the scene's shading record (lights, materials, camera,
+ * background: build_shading.h) in *look when look is not NULL (free with
+ * shading_free). */
+sc_status build_scene(const parse_tree *syntax, csg_tree **out, shading **look,
+                      sc_error **warnings, size_t *warning_count, sc_error *error);
 
 /* Looks up an OpenSCAD colour: a CSS/SVG name (any case) or "#rgb",
  * "#rgba", "#rrggbb", "#rrggbbaa". Returns 1 and fills rgba (0..1) when

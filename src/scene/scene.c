@@ -48,7 +48,8 @@ sc_status sc_scene_load_string(const char *name, const char *text, size_t length
     parse_tree *syntax = NULL;
     sc_status st = parse_text(s->path, text ? text : "", length, &syntax, error);
     if (st == SC_OK)
-        st = build_tree(syntax, &s->tree, &s->warnings, &s->warning_count, error);
+        st = build_scene(syntax, &s->tree, &s->look, &s->warnings, &s->warning_count,
+                         error);
     parse_tree_free(syntax);
     if (st != SC_OK) {
         sc_scene_release(s);
@@ -122,6 +123,7 @@ void sc_scene_release(sc_scene *scene)
     if (!scene)
         return;
     csg_tree_free(scene->tree);
+    shading_free(scene->look);
     free(scene->path);
     free(scene->warnings);
     free(scene);

@@ -1,0 +1,102 @@
+/* Whitted-style shading: what a ray sees.
+ *
+ * shade_ray follows one ray into the scene: at its first hit it adds the
+ * material's ambient term and, for every light that a shadow ray (an
+ * ANY_HIT query) finds unblocked, Blinn-Phong diffuse and specular terms;
+ * then it follows a mirror ray (weight reflect) and a refracted ray (weight
+ * transmit), the two split by Schlick's Fresnel approximation, with total
+ * internal reflection sending everything to the mirror ray. Recursion stops
+ * at max_depth bounces or when a ray's weight in the pixel falls below
+ * SHADE_CUTOFF. A ray that hits nothing sees the background.
+ *
+ * Refraction through CSG solids follows the span list: a refracted ray
+ * starts just inside the solid and its first hit is where it leaves
+ * (csg_first_hit reports exiting), which for a drilled block is the wall of
+ * the hole, not the far face. Which side is inside comes from the outward
+ * normal the booleans give each surface (subtracted surfaces flipped): a
+ * ray along the outward normal is leaving. The medium inside a solid has the
+ * index of refraction of the material of the surface the ray crossed.
+ *
+ * Secondary rays start off the surface, not on it: the hit point is moved
+ * along the surface normal (towards the side the ray leaves on) by
+ * SHADE_OFFSET times the larger of the query tolerance csg_eps at the point
+ * and 1e-9 of the distance the ray travelled, so the offset follows the
+ * scene's scale and the hit's rounding error (which grows with both), and
+ * stays far below any wall thickness the tolerance can resolve. Moving along
+ * the normal, not along the ray, keeps grazing rays from re-hitting the
+ * surface they leave (no shadow acne) and never carries a point through a
+ * wall thicker than the offset (no light leaks).
+ *
+ * Lights: point, sphere and directional (shading.h). A sphere light is
+ * sampled at one point per pixel sample, uniformly on the disc of its
+ * radius facing the shaded point, so soft shadows converge with --spp.
+ * A scene without lights gets the default rig: two directional lights fixed
+ * to the camera (a key light from the upper left and towards the viewer, a
+ * weaker fill from the lower right), which cast shadows like any other.
+ */
+#ifndef SPANCAST_RENDER_SHADE_H
+#define SPANCAST_RENDER_SHADE_H
+
+#include <stdint.h>
+
+#include "base/arena.h"
+#include "csg/csg.h"
+#include "render/camera.h"
+#include "render/sample.h"
+#include "scene/shading.h"
+
+#define SHADE_CUTOFF 1e-3  /* rays carrying less of the pixel are not followed */
+#define SHADE_OFFSET 4.0   /* secondary ray origins, in units of the tolerance */
+#define SHADE_MAX_DEPTH 64 /* largest max_depth accepted */
+
+typedef struct shade_light {
+    int directional;
+    vec3 position;   /* point and sphere lights */
+    vec3 to_light;   /* directional: unit direction towards the light */
+    double radius;   /* sphere light; 0 for a point */
+    double color[3]; /* linear, times the intensity */
+} shade_light;
+
+typedef struct shade_material {
+    double ambient, diffuse, specular, shininess, reflect, transmit, ior, checker;
+    double color2[3]; /* linear */
+} shade_material;
+
+/* Everything shading needs, prepared once per render (shade_prepare) and
+ * read-only while rendering. */
+typedef struct shade_scene {
+    const csg_tree *tree;
+    shade_material *materials;
+    uint32_t material_count;
+    double *leaf_color; /* 3 linear values per leaf */
+    shade_light *lights;
+    uint32_t light_count;
+    double background[3]; /* linear */
+    int max_depth;
+} shade_scene;
+
+/* Per-thread counters. */
+typedef struct shade_counters {
+    uint64_t shadow_rays, reflection_rays, refraction_rays;
+} shade_counters;
+
+/* One thread's state for one pixel sample. */
+typedef struct shade_thread {
+    arena *scratch; /* query memory; the caller resets it after the sample */
+    sample_rng rng; /* the sample's random numbers */
+    shade_counters count;
+} shade_thread;
+
+/* Prepares s for tree under look (NULL: no lights, default materials) seen
+ * by cam. Returns SC_OK, or SC_ERR_NOMEM with error filled. */
+sc_status shade_prepare(shade_scene *s, const csg_tree *tree, const shading *look,
+                        const camera *cam, int max_depth, sc_error *error);
+void shade_release(shade_scene *s);
+
+/* The linear colour seen along ray (depth bounces so far, weight its share
+ * of the pixel). hit is the ray's first hit when the caller has already
+ * found it, NULL to query. Writes out[3]. */
+void shade_ray(const shade_scene *s, shade_thread *th, const csg_ray *ray,
+               const csg_hit *hit, int depth, double weight, double out[3]);
+
+#endif
