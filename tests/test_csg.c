@@ -152,8 +152,7 @@ static int list_is_well_formed(const csg_tree *t, const csg_ray *ray, span_list 
 }
 
 /* csg_first_hit must report the first span end at or after tmin that lies
- * on a surface, and csg_any_hit whether the solid meets the ray's range
- * (whether the clipped span list is not empty). */
+ * on a surface, and csg_any_hit whether there is one. */
 static int first_hit_agrees(const csg_tree *t, const csg_ray *ray, span_list s,
                             arena *scratch)
 {
@@ -169,7 +168,7 @@ static int first_hit_agrees(const csg_tree *t, const csg_ray *ray, span_list s,
     }
     csg_hit hit;
     int got = csg_first_hit(t, ray, scratch, &hit);
-    if (got != (want != NULL) || csg_any_hit(t, ray, scratch) != (s.n > 0))
+    if (got != (want != NULL) || csg_any_hit(t, ray, scratch) != got)
         return 0;
     if (!got)
         return 1;

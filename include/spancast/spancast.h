@@ -151,7 +151,10 @@ int sc_render_options_from_scene(sc_render_options *options, const sc_scene *sce
 typedef struct sc_render_stats {
     uint64_t camera_rays, shadow_rays, reflection_rays, refraction_rays;
     uint64_t primitive_tests; /* leaf span computations */
-    uint64_t span_operations; /* boolean merges of two span lists */
+    uint64_t span_operations; /* boolean merges of two non-empty span lists */
+    uint64_t node_visits;     /* CSG tree nodes whose box a ray was tested against */
+    uint64_t bvh_node_visits; /* BVH nodes whose box a ray was tested against */
+    uint64_t scratch_mallocs; /* blocks the per-thread scratch arenas took from malloc */
     double setup_seconds;     /* camera, lights, buffers */
     double trace_seconds;     /* the parallel render loop */
     int threads;              /* threads that rendered */

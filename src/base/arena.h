@@ -20,11 +20,6 @@ typedef struct arena {
     size_t block_size;     /* minimum size of a new block */
     size_t used;           /* bytes handed out in head */
     uint64_t block_allocs; /* malloc calls made, for the no-malloc-in-loop check */
-    /* Query counters: a scratch arena belongs to one thread, so the queries
-     * that use it count their work here without atomics (the per-thread
-     * resource of BRL-CAD's struct resource). Never reset by arena_reset. */
-    uint64_t prim_tests; /* leaf span computations (csg.c) */
-    uint64_t span_ops;   /* merges of two non-empty span lists (span.c) */
 } arena;
 
 void arena_init(arena *a, size_t block_size);

@@ -533,6 +533,10 @@ static void print_stats(const cli_args *a, const sc_framebuffer *fb, const stage
         printf(" \"primitive_tests\": %llu, \"span_operations\": %llu,\n",
                (unsigned long long)s->primitive_tests,
                (unsigned long long)s->span_operations);
+        printf(" \"node_visits\": %llu, \"bvh_node_visits\": %llu, "
+               "\"scratch_mallocs\": %llu,\n",
+               (unsigned long long)s->node_visits, (unsigned long long)s->bvh_node_visits,
+               (unsigned long long)s->scratch_mallocs);
         printf(" \"seconds\": {\"load\": %.6f, \"setup\": %.6f, \"trace\": %.6f, "
                "\"write\": %.6f, \"total\": %.6f}}\n",
                t->load, s->setup_seconds, s->trace_seconds, t->write, t->total);
@@ -548,6 +552,9 @@ static void print_stats(const cli_args *a, const sc_framebuffer *fb, const stage
            (unsigned long long)s->refraction_rays);
     printf("primitive tests:  %llu\n", (unsigned long long)s->primitive_tests);
     printf("span operations:  %llu\n", (unsigned long long)s->span_operations);
+    printf("node visits:      %llu (BVH %llu)\n", (unsigned long long)s->node_visits,
+           (unsigned long long)s->bvh_node_visits);
+    printf("scratch mallocs:  %llu\n", (unsigned long long)s->scratch_mallocs);
     printf(
         "seconds:          load %.3f, setup %.3f, trace %.3f, write %.3f, total %.3f\n",
         t->load, s->setup_seconds, s->trace_seconds, t->write, t->total);

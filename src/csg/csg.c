@@ -566,7 +566,6 @@ static span_list eval_leaf(eval_ctx *c, const csg_node *n)
     vec3 d = affine_vector(&l->to_local, c->d);
     c->counters->prim_tests++;
     r.n = prim_spans(&l->prim, n->leaf, o, d, r.v, cap);
-    c->scratch->prim_tests++;
     r.n = span_regularize(r.v, r.n, c->eps);
     return r;
 }
@@ -581,7 +580,7 @@ static int overlaps(span_list s, double lo, double hi)
 
 static span_list combine(eval_ctx *c, span_op op, span_list a, span_list b)
 {
-    c->counters->span_ops++;
+    c->counters->span_ops += a.n && b.n;
     return span_combine(op, a, b, c->eps, c->scratch, &c->oom);
 }
 
@@ -914,7 +913,23 @@ int csg_any_hit_counted(const csg_tree *t, const csg_ray *r, arena *scratch,
     int blocked;
     if (!run(t, r, scratch, counters, EVAL_ANY, &all, &blocked))
         return 0;
-    return blocked || overlaps(all, r->tmin, r->tmax);
+    if (!blocked && !overlaps(all, r->tmin, r->tmax))
+        return 0;
+    /* The solid meets the segment. From a start outside it, that means a
+     * surface lies in between; from a start inside (rare for shadow rays,
+     * which leave a surface on its outer side), only if the segment gets
+     * out. Membership at the start needs only the operands around it. */
+    csg_ray start = *r;
+    start.tmax = r->tmin;
+    if (!run(t, &start, scratch, counters, EVAL_ALL, &all, &blocked))
+        return 0;
+    int inside = 0;
+    for (uint32_t k = 0; k < all.n && !inside; k++)
+        inside = all.v[k].in.t <= r->tmin && all.v[k].out.t > r->tmin;
+    if (!inside)
+        return 1;
+    csg_hit hit;
+    return csg_first_hit_counted(t, r, scratch, counters, &hit);
 }
 
 int csg_any_hit(const csg_tree *t, const csg_ray *r, arena *scratch)

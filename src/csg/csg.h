@@ -70,7 +70,7 @@ typedef struct csg_counters {
     uint64_t nodes;      /* tree nodes whose box was tested */
     uint64_t bvh_nodes;  /* BVH nodes whose box was tested */
     uint64_t prim_tests; /* primitive span computations */
-    uint64_t span_ops;   /* boolean merges of two span lists */
+    uint64_t span_ops;   /* boolean merges of two non-empty span lists */
 } csg_counters;
 
 typedef struct csg_tree {
@@ -165,9 +165,10 @@ int csg_spans(const csg_tree *t, const csg_ray *r, arena *scratch, span_list *ou
 /* FIRST_HIT: 1 and *hit when a surface crosses the ray within [tmin, tmax]. */
 int csg_first_hit(const csg_tree *t, const csg_ray *r, arena *scratch, csg_hit *hit);
 
-/* ANY_HIT: 1 when the solid meets the open segment (tmin, tmax) of the ray
- * (for shadow rays: something lies between the point and the light). Stops
- * at the first operand of a union that shows it. */
+/* ANY_HIT: 1 when a surface crosses the ray within [tmin, tmax], the same
+ * answer as csg_first_hit's (for shadow rays: something lies between the
+ * point and the light). A union stops at its first operand that meets the
+ * segment; only a segment that starts inside the solid needs more. */
 int csg_any_hit(const csg_tree *t, const csg_ray *r, arena *scratch);
 
 /* The same three queries, adding to *counters (which may be NULL). */

@@ -44,7 +44,6 @@ span_list span_combine(span_op op, span_list a, span_list b, double eps, arena *
     if (b.n == 0)
         return op == SPAN_INTERSECTION ? r : a;
 
-    scratch->span_ops++;
     uint32_t cap = a.n + b.n;
     r.v = arena_alloc(scratch, (size_t)cap * sizeof(span));
     if (!r.v) {

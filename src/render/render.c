@@ -74,6 +74,7 @@ typedef struct render_ctx {
 typedef struct render_thread {
     arena scratch;
     shade_counters count;
+    csg_counters csg;
     uint64_t camera_rays;
 } render_thread;
 
@@ -93,7 +94,7 @@ static void render_pixel(const render_ctx *c, render_thread *th, int i, int j)
         centre.tmin = 0;
         centre.tmax = INFINITY;
         th->camera_rays++;
-        found = csg_first_hit(c->tree, &centre, &th->scratch, &hit);
+        found = csg_first_hit_counted(c->tree, &centre, &th->scratch, &th->csg, &hit);
         if (fb->mask)
             fb->mask[p] = found ? 255 : 0;
         if (fb->depth)
@@ -115,6 +116,7 @@ static void render_pixel(const render_ctx *c, render_thread *th, int i, int j)
     for (int s = 0; s < c->spp; s++) {
         shade_thread st;
         st.scratch = &th->scratch;
+        st.csg = &th->csg;
         st.rng = sample_rng_for((uint32_t)x, (uint32_t)y, (uint32_t)s);
         memset(&st.count, 0, sizeof st.count);
         double rgb[3];
@@ -328,8 +330,11 @@ sc_status render_scene(const csg_tree *tree, const shading *look,
             stats->shadow_rays += th.count.shadow_rays;
             stats->reflection_rays += th.count.reflection_rays;
             stats->refraction_rays += th.count.refraction_rays;
-            stats->primitive_tests += th.scratch.prim_tests;
-            stats->span_operations += th.scratch.span_ops;
+            stats->primitive_tests += th.csg.prim_tests;
+            stats->span_operations += th.csg.span_ops;
+            stats->node_visits += th.csg.nodes;
+            stats->bvh_node_visits += th.csg.bvh_nodes;
+            stats->scratch_mallocs += th.scratch.block_allocs;
         }
         arena_free(&th.scratch);
     }

@@ -166,7 +166,7 @@ static void direct_light(const shade_scene *s, shade_thread *th, const shade_mat
         if (!(nl > 0))
             continue;
         th->count.shadow_rays++;
-        if (csg_any_hit(s->tree, &shadow, th->scratch))
+        if (csg_any_hit_counted(s->tree, &shadow, th->scratch, th->csg))
             continue;
         double highlight = 0;
         if (m->specular > 0) {
@@ -184,7 +184,7 @@ void shade_ray(const shade_scene *s, shade_thread *th, const csg_ray *ray,
     csg_hit found;
     const csg_hit *hit = known;
     if (!hit) {
-        if (!csg_first_hit(s->tree, ray, th->scratch, &found)) {
+        if (!csg_first_hit_counted(s->tree, ray, th->scratch, th->csg, &found)) {
             memcpy(out, s->background, 3 * sizeof *out);
             return;
         }

@@ -85,6 +85,7 @@ typedef struct shade_thread {
     arena *scratch; /* query memory; the caller resets it after the sample */
     sample_rng rng; /* the sample's random numbers */
     shade_counters count;
+    csg_counters *csg; /* the thread's query counters */
 } shade_thread;
 
 /* Prepares s for tree under look (NULL: no lights, default materials) seen
