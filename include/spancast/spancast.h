@@ -11,6 +11,7 @@
 #ifndef SPANCAST_SPANCAST_H
 #define SPANCAST_SPANCAST_H
 
+#include <signal.h>
 #include <stddef.h>
 #include <stdint.h>
 
@@ -26,7 +27,8 @@ typedef enum sc_status {
     SC_ERR_LIMIT,       /* a documented resource limit was exceeded */
     SC_ERR_IO,          /* a file could not be read or written */
     SC_ERR_NOMEM,       /* out of memory */
-    SC_ERR_ARGUMENT     /* invalid API or command-line argument */
+    SC_ERR_ARGUMENT,    /* invalid API or command-line argument */
+    SC_ERR_CANCELLED    /* the caller's cancel flag was set (e.g. by SIGINT) */
 } sc_status;
 
 /* A source position; line and column count from 1, 0 means "no position". */
@@ -114,6 +116,11 @@ typedef struct sc_render_options {
     int autocenter; /* OpenSCAD --autocenter: look at the model's centre */
     int threads;    /* 0 = all cores */
     int want_color, want_depth, want_mask, want_normal; /* which buffers to fill */
+    /* Cancellation: when not NULL and *cancel becomes non-zero (a signal
+     * handler may set it), sc_render stops within a tile and returns
+     * SC_ERR_CANCELLED, and the writers of its framebuffer give up without
+     * touching their target. NULL by default. */
+    const volatile sig_atomic_t *cancel;
 } sc_render_options;
 
 void sc_render_options_init(sc_render_options *options);
@@ -126,10 +133,13 @@ typedef struct sc_framebuffer {
     float *depth;  /* distance along the ray to the hit, +inf on a miss */
     uint8_t *mask; /* 255 where the camera ray hits, 0 elsewhere */
     float *normal; /* world normal, 3 floats per pixel, 0 on a miss */
+    const volatile sig_atomic_t *cancel; /* the render options' cancel flag */
 } sc_framebuffer;
 
 /* Renders the scene. On success *framebuffer is owned by the caller (release
- * with sc_framebuffer_release). */
+ * with sc_framebuffer_release). The buffers' size is checked before they are
+ * allocated: more than 16 GiB, or more than the machine's memory, is
+ * SC_ERR_LIMIT (docs/limits.md). */
 sc_status sc_render(const sc_scene *scene, const sc_render_options *options,
                     sc_framebuffer **framebuffer, sc_error *error);
 
@@ -138,7 +148,8 @@ void sc_framebuffer_release(sc_framebuffer *framebuffer);
 /* Image output through OpenImageIO; the format follows the file extension.
  * Each writes a temporary file in the target's folder and renames it into
  * place, so a failure never leaves a partial file or destroys an existing
- * one. */
+ * one. When fb->cancel is set before the rename, the temporary is removed,
+ * the target is left as it was and the call returns SC_ERR_CANCELLED. */
 sc_status sc_framebuffer_write_color(const sc_framebuffer *fb, const char *path,
                                      sc_error *error);
 sc_status sc_framebuffer_write_mask(const sc_framebuffer *fb, const char *path,

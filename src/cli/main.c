@@ -13,11 +13,21 @@
  * them, "file:line:col: error: ..."); 2 for a bad command line
  * ("spancast: error: ..."). Output names are checked before the model is
  * loaded, so a typo in an extension costs no render time.
+ *
+ * Interrupts: during `render`, SIGINT and SIGTERM only set a flag (the one
+ * mutable static of the program: a signal handler has nowhere else to
+ * write, and a volatile sig_atomic_t store is all it does). The library
+ * polls the flag through sc_render_options.cancel: the render stops at the
+ * next tile, and a writer removes its temporary and leaves its target as it
+ * was. The tool then prints "spancast: interrupted" and dies of the same
+ * signal, so its parent sees an interrupted process (status 130 or 143 in
+ * a shell). A second signal before that kills the process at once.
  */
 #define _POSIX_C_SOURCE 200809L
 
 #include <errno.h>
 #include <math.h>
+#include <signal.h>
 #include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -355,6 +365,48 @@ static int parse_args(cli_args *a, int argc, char **argv)
     return 0;
 }
 
+/* ---- interrupts ---- */
+
+static volatile sig_atomic_t interrupt_signal; /* 0, or the signal received */
+
+static void on_interrupt(int sig)
+{
+    if (interrupt_signal) {
+        signal(sig, SIG_DFL); /* a second interrupt: stop now */
+        raise(sig);
+        return;
+    }
+    interrupt_signal = sig;
+}
+
+static void catch_interrupts(void)
+{
+    struct sigaction sa;
+    memset(&sa, 0, sizeof sa);
+    sa.sa_handler = on_interrupt;
+    sigemptyset(&sa.sa_mask);
+    const int signals[2] = {SIGINT, SIGTERM};
+    for (int k = 0; k < 2; k++) {
+        struct sigaction old;
+        /* A signal the parent set to be ignored (a shell's background job
+         * ignores SIGINT) stays ignored. */
+        if (sigaction(signals[k], NULL, &old) == 0 && old.sa_handler == SIG_IGN)
+            continue;
+        sigaction(signals[k], &sa, NULL);
+    }
+}
+
+/* After an interrupt: says so and ends the process by the same signal. */
+static int die_interrupted(void)
+{
+    int sig = interrupt_signal;
+    fputs("spancast: interrupted\n", stderr);
+    fflush(stderr);
+    signal(sig, SIG_DFL);
+    raise(sig);
+    return 128 + sig; /* not reached */
+}
+
 /* ---- commands ---- */
 
 static double seconds_now(void)
@@ -411,15 +463,21 @@ static int run_render(cli_args *a)
         return usage_error("%s", error.message);
 
     double start = seconds_now();
+    catch_interrupts();
     sc_scene *scene = load(a->input);
+    if (interrupt_signal)
+        return die_interrupted();
     if (!scene)
         return EXIT_FAILED;
+    a->options.cancel = &interrupt_signal;
     a->options.want_color = 1;
     a->options.want_mask = a->mask != NULL;
     a->options.want_depth = a->depth != NULL;
     sc_framebuffer *fb = NULL;
     int status = 0;
     sc_status st = sc_render(scene, &a->options, &fb, &error);
+    if (st == SC_ERR_CANCELLED)
+        return die_interrupted();
     if (st != SC_OK) {
         /* An argument error here comes from the command line's camera. */
         print_error(&error);
@@ -429,6 +487,8 @@ static int run_render(cli_args *a)
     if (sc_framebuffer_write_color(fb, a->output, &error) != SC_OK ||
         (a->mask && sc_framebuffer_write_mask(fb, a->mask, &error) != SC_OK) ||
         (a->depth && sc_framebuffer_write_depth(fb, a->depth, &error) != SC_OK)) {
+        if (error.status == SC_ERR_CANCELLED)
+            return die_interrupted();
         print_error(&error);
         status = EXIT_FAILED;
     }

@@ -8,6 +8,13 @@
 // with O_EXCL and mode 0666 (less the umask), so the final file has the
 // permissions a plain create would give it.
 //
+// Cancellation: the framebuffer carries the caller's cancel flag (set, for
+// instance, by the command line's SIGINT handler). The writer polls it before
+// it creates the temporary, between chunks of scanlines (OpenImageIO's
+// progress callback, which stops the write) and just before the rename; once
+// it is set, the temporary is removed and the target is not touched. Only a
+// flag read is involved, so nothing here has to be async-signal-safe.
+//
 // This is the one C++ file of the library: a thin layer that converts
 // OpenImageIO's errors into sc_error values and never lets an exception out.
 #include "render/image_io.h"
@@ -15,6 +22,7 @@
 #include <OpenImageIO/imageio.h>
 
 #include <cerrno>
+#include <csignal>
 #include <cstdint>
 #include <cstring>
 #include <ctime>
@@ -136,16 +144,36 @@ std::string create_temporary(const std::string &path)
     return std::string();
 }
 
+bool cancelled(const volatile sig_atomic_t *cancel)
+{
+    return cancel && *cancel;
+}
+
+// OpenImageIO's progress callback: returning true stops the write.
+bool progress(void *cancel, float /* done */)
+{
+    return cancelled(static_cast<const volatile sig_atomic_t *>(cancel));
+}
+
+sc_status interrupted(sc_error *error)
+{
+    return err_set(error, SC_ERR_CANCELLED, nullptr, "interrupted");
+}
+
 // Writes width x height pixels of channels values of data_type (rows from
 // the top, no padding) to path as file_type, through a temporary file.
+// Gives up (SC_ERR_CANCELLED) as soon as *cancel is set.
 sc_status write_image(const char *path, imgio_kind kind, int width, int height,
                       const std::vector<std::string> &channel_names,
                       OIIO::TypeDesc file_type, OIIO::TypeDesc data_type,
-                      const void *data, sc_error *error)
+                      const void *data, const volatile sig_atomic_t *cancel,
+                      sc_error *error)
 {
     sc_status st = check(path, kind, error);
     if (st)
         return st;
+    if (cancelled(cancel))
+        return interrupted(error);
     std::string tmp = create_temporary(path);
     if (tmp.empty())
         return err_set(error, SC_ERR_IO, nullptr, "cannot write '%s': %s", path,
@@ -162,10 +190,16 @@ sc_status write_image(const char *path, imgio_kind kind, int width, int height,
             spec.attribute("oiio:ColorSpace", "sRGB");
         if (!out->open(tmp, spec))
             failure = trimmed(out->geterror());
-        else if (!out->write_image(data_type, data))
+        else if (!out->write_image(data_type, data, OIIO::AutoStride, OIIO::AutoStride,
+                                   OIIO::AutoStride, progress,
+                                   const_cast<sig_atomic_t *>(cancel)))
             failure = trimmed(out->geterror());
         if (!out->close() && failure.empty())
             failure = trimmed(out->geterror());
+    }
+    if (cancelled(cancel)) {
+        std::remove(tmp.c_str());
+        return interrupted(error);
     }
     if (failure.empty() && std::rename(tmp.c_str(), path) != 0)
         failure = std::strerror(errno);
@@ -207,7 +241,7 @@ sc_status color_body(const sc_framebuffer *fb, const char *path, sc_error *error
     OIIO::TypeDesc type = float_color_format(extension_of(path)) ? OIIO::TypeDesc::FLOAT
                                                                  : OIIO::TypeDesc::UINT8;
     return write_image(path, IMGIO_COLOR, fb->width, fb->height, {"R", "G", "B"}, type,
-                       OIIO::TypeDesc::FLOAT, fb->color, error);
+                       OIIO::TypeDesc::FLOAT, fb->color, fb->cancel, error);
 }
 
 sc_status mask_body(const sc_framebuffer *fb, const char *path, sc_error *error)
@@ -215,7 +249,8 @@ sc_status mask_body(const sc_framebuffer *fb, const char *path, sc_error *error)
     if (!fb || !fb->mask)
         return no_buffer("mask", error);
     return write_image(path, IMGIO_MASK, fb->width, fb->height, {"Y"},
-                       OIIO::TypeDesc::UINT8, OIIO::TypeDesc::UINT8, fb->mask, error);
+                       OIIO::TypeDesc::UINT8, OIIO::TypeDesc::UINT8, fb->mask, fb->cancel,
+                       error);
 }
 
 sc_status depth_body(const sc_framebuffer *fb, const char *path, sc_error *error)
@@ -223,7 +258,8 @@ sc_status depth_body(const sc_framebuffer *fb, const char *path, sc_error *error
     if (!fb || !fb->depth)
         return no_buffer("depth", error);
     return write_image(path, IMGIO_DEPTH, fb->width, fb->height, {"Z"},
-                       OIIO::TypeDesc::FLOAT, OIIO::TypeDesc::FLOAT, fb->depth, error);
+                       OIIO::TypeDesc::FLOAT, OIIO::TypeDesc::FLOAT, fb->depth,
+                       fb->cancel, error);
 }
 
 } // namespace

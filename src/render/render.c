@@ -132,6 +132,8 @@ static void render_pixel(const render_ctx *c, arena *scratch, int i, int j)
 
 static void render_tile(const render_ctx *c, arena *scratch, int tile, int tiles_x)
 {
+    if (c->fb->cancel && *c->fb->cancel)
+        return; /* cancelled: the remaining tiles are skipped */
     int x0 = (tile % tiles_x) * RENDER_TILE_SIZE;
     int y0 = (tile / tiles_x) * RENDER_TILE_SIZE;
     int x1 = x0 + RENDER_TILE_SIZE < c->fb->width ? x0 + RENDER_TILE_SIZE : c->fb->width;
@@ -164,6 +166,7 @@ static sc_framebuffer *framebuffer_new(const sc_render_options *o)
         return NULL;
     fb->width = o->width;
     fb->height = o->height;
+    fb->cancel = o->cancel;
     size_t pixels = (size_t)o->width * (size_t)o->height;
     int ok = 1;
     if (o->want_color)
@@ -204,6 +207,8 @@ sc_status render_tree(const csg_tree *tree, const sc_render_options *options,
         options = &defaults;
     }
     sc_status st = check_options(options, error);
+    if (st == SC_OK)
+        st = render_check_memory(options, error);
     if (st)
         return st;
 
@@ -245,6 +250,10 @@ sc_status render_tree(const csg_tree *tree, const sc_render_options *options,
         arena_free(&scratch);
     }
 
+    if (options->cancel && *options->cancel) {
+        sc_framebuffer_release(c.fb);
+        return err_set(error, SC_ERR_CANCELLED, NULL, "interrupted");
+    }
     *framebuffer = c.fb;
     return SC_OK;
 }

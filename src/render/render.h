@@ -11,8 +11,9 @@
 #include "csg/csg.h"
 #include "spancast/spancast.h"
 
-#define RENDER_TILE_SIZE 16   /* tiles of 16 x 16 pixels are scheduled over threads */
-#define RENDER_MAX_SIDE 32768 /* largest image width or height */
+#define RENDER_TILE_SIZE 16      /* tiles of 16 x 16 pixels are scheduled over threads */
+#define RENDER_MAX_SIDE 32768    /* largest image width or height */
+#define RENDER_MAX_MEMORY_GIB 16 /* largest total size of the buffers of a render */
 
 /* OpenSCAD's Cornfield background, #ffffe5, as display values. */
 #define RENDER_BACKGROUND_R 1.0f
@@ -24,5 +25,9 @@
  * is NULL and error is filled. */
 sc_status render_tree(const csg_tree *tree, const sc_render_options *options,
                       sc_framebuffer **framebuffer, sc_error *error);
+
+/* SC_ERR_LIMIT when the buffers options ask for exceed RENDER_MAX_MEMORY_GIB
+ * or the machine's physical memory; SC_OK otherwise. (budget.c) */
+sc_status render_check_memory(const sc_render_options *options, sc_error *error);
 
 #endif
