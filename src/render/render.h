@@ -11,9 +11,11 @@
 #include "csg/csg.h"
 #include "spancast/spancast.h"
 
-#define RENDER_TILE_SIZE 16      /* tiles of 16 x 16 pixels are scheduled over threads */
-#define RENDER_MAX_SIDE 32768    /* largest image width or height */
-#define RENDER_MAX_MEMORY_GIB 16 /* largest total size of the buffers of a render */
+#define RENDER_TILE_SIZE 16   /* tiles of 16 x 16 pixels are scheduled over threads */
+#define RENDER_MAX_SIDE 32768 /* largest image width or height */
+
+/* Largest total size of a render's image buffers, in GiB (budget.c). */
+#define RENDER_MAX_MEMORY_GIB 16
 
 /* OpenSCAD's Cornfield background, #ffffe5, as display values. */
 #define RENDER_BACKGROUND_R 1.0f
