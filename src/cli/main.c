@@ -34,6 +34,9 @@
 #include <string.h>
 #include <time.h>
 
+#include <sys/stat.h>
+#include <unistd.h>
+
 #include "render/image_io.h"
 #include "render/render.h"
 #include "spancast/spancast.h"
@@ -453,6 +456,38 @@ static int run_info(const cli_args *a)
     return 0;
 }
 
+/* Checks that path can be created: its folder exists, is a folder and is
+ * writable, and path itself is not a folder. Prints the error the writer
+ * would give and returns 0 when not, so a doomed render is never started
+ * and an earlier output is not written when a later one cannot be. */
+static int output_writable(const char *path)
+{
+    const char *slash = strrchr(path, '/');
+    char folder[4096];
+    if (!slash) {
+        strcpy(folder, ".");
+    } else {
+        size_t n = slash == path ? 1 : (size_t)(slash - path);
+        if (n >= sizeof folder)
+            return 1; /* let the writer judge */
+        memcpy(folder, path, n);
+        folder[n] = '\0';
+    }
+    struct stat st;
+    int code = 0;
+    if (stat(folder, &st) != 0)
+        code = errno;
+    else if (!S_ISDIR(st.st_mode))
+        code = ENOTDIR;
+    else if (access(folder, W_OK | X_OK) != 0)
+        code = errno;
+    else if (stat(path, &st) == 0 && S_ISDIR(st.st_mode))
+        code = EISDIR;
+    if (code)
+        fprintf(stderr, "spancast: error: cannot write '%s': %s\n", path, strerror(code));
+    return code == 0;
+}
+
 static int run_render(cli_args *a)
 {
     /* Reject output names OpenImageIO cannot write before any work. */
@@ -461,6 +496,9 @@ static int run_render(cli_args *a)
         (a->mask && imgio_check(a->mask, IMGIO_MASK, &error)) ||
         (a->depth && imgio_check(a->depth, IMGIO_DEPTH, &error)))
         return usage_error("%s", error.message);
+    if (!output_writable(a->output) || (a->mask && !output_writable(a->mask)) ||
+        (a->depth && !output_writable(a->depth)))
+        return EXIT_FAILED;
 
     double start = seconds_now();
     catch_interrupts();
