@@ -33,6 +33,11 @@
 #include "scene/parse.h"
 #include "spancast/spancast.h"
 
+/* The largest $fn a node may set: it is the number of polygon sides that
+ * OpenSCAD-faithful rendering builds, so an absurd value must not reach it.
+ * A larger or non-finite $fn is an error at the value (docs/limits.md). */
+#define BUILD_MAX_FN 10000
+
 /* OpenSCAD's default face colour, Cornfield #f9d72c, alpha 1. */
 #define BUILD_DEFAULT_COLOR                                                              \
     {                                                                                    \
