@@ -220,6 +220,12 @@ sc_status csg_builder_finish(csg_builder *b, uint32_t root, csg_tree **out,
     t->leaves = arena_copy(&t->mem, b->leaves, b->leaf_count, sizeof *b->leaves);
     int failed = (b->node_count && !t->nodes) || (b->child_count && !t->child_ids) ||
                  (b->leaf_count && !t->leaves);
+    if (failed) { /* before anything reads the arrays that are missing */
+        free(depth);
+        csg_builder_free(b);
+        csg_tree_free(t);
+        return err_set(error, SC_ERR_NOMEM, NULL, "out of memory");
+    }
     t->root = root;
     t->bounds = root == CSG_EMPTY ? bbox_empty() : t->nodes[root].bounds;
     t->depth = root == CSG_EMPTY ? 0 : depth[root];
@@ -233,10 +239,6 @@ sc_status csg_builder_finish(csg_builder *b, uint32_t root, csg_tree **out,
     }
     free(depth);
     csg_builder_free(b);
-    if (failed) {
-        csg_tree_free(t);
-        return err_set(error, SC_ERR_NOMEM, NULL, "out of memory");
-    }
     *out = t;
     return SC_OK;
 }

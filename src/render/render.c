@@ -237,17 +237,28 @@ sc_status render_tree(const csg_tree *tree, const sc_render_options *options,
     int tiles_y = (options->height + RENDER_TILE_SIZE - 1) / RENDER_TILE_SIZE;
     int tiles = tiles_x * tiles_y; /* at most 2048 * 2048 */
 
+    int out_of_memory = 0; /* a thread could not get its scratch arena */
 #pragma omp parallel num_threads(threads)
     {
         arena scratch;
         arena_init(&scratch, 0);
         /* Take the first block now rather than inside the loop. */
-        (void)arena_alloc(&scratch, 1);
+        int ready = arena_alloc(&scratch, 1) != NULL;
         arena_reset(&scratch);
+        if (!ready) {
+#pragma omp atomic write
+            out_of_memory = 1;
+        }
 #pragma omp for schedule(dynamic, 1)
-        for (int tile = 0; tile < tiles; tile++)
-            render_tile(&c, &scratch, tile, tiles_x);
+        for (int tile = 0; tile < tiles; tile++) {
+            if (ready)
+                render_tile(&c, &scratch, tile, tiles_x);
+        }
         arena_free(&scratch);
+    }
+    if (out_of_memory) {
+        sc_framebuffer_release(c.fb);
+        return err_set(error, SC_ERR_NOMEM, NULL, "out of memory");
     }
 
     if (options->cancel && *options->cancel) {
