@@ -25,13 +25,13 @@ fail() {
     fails=$((fails + 1))
 }
 
-python3 - >slow.csg <<'PY'
-print("union() {")
-for i in range(4000):
-    print(f"  multmatrix([[1, 0, 0, {(i % 64) * 1.5}], [0, 1, 0, {(i // 64) * 1.5}], "
-          "[0, 0, 1, 0], [0, 0, 0, 1]]) { sphere(r = 1); }")
-print("}")
-PY
+awk 'BEGIN {
+    print "union() {"
+    for (i = 0; i < 4000; i++)
+        printf "  multmatrix([[1, 0, 0, %g], [0, 1, 0, %g], [0, 0, 1, 0], [0, 0, 0, 1]]) { sphere(r = 1); }\n",
+            (i % 64) * 1.5, int(i / 64) * 1.5
+    print "}"
+}' >slow.csg
 printf 'group();\n' >empty.csg
 printf 'an older image, not a PNG at all\n' >out/old.png
 input_sum=$(sha256sum slow.csg empty.csg)

@@ -14,9 +14,6 @@
 #define RENDER_TILE_SIZE 16   /* tiles of 16 x 16 pixels are scheduled over threads */
 #define RENDER_MAX_SIDE 32768 /* largest image width or height */
 
-/* Largest total size of a render's image buffers, in GiB (budget.c). */
-#define RENDER_MAX_MEMORY_GIB 16
-
 /* OpenSCAD's Cornfield background, #ffffe5, as display values. */
 #define RENDER_BACKGROUND_R 1.0f
 #define RENDER_BACKGROUND_G 1.0f
@@ -27,6 +24,9 @@
  * is NULL and error is filled. */
 sc_status render_tree(const csg_tree *tree, const sc_render_options *options,
                       sc_framebuffer **framebuffer, sc_error *error);
+
+/* Largest total size of a render's image buffers, in GiB. */
+#define RENDER_MAX_MEMORY_GIB 16
 
 /* SC_ERR_LIMIT when the buffers options ask for exceed RENDER_MAX_MEMORY_GIB
  * or the machine's physical memory; SC_OK otherwise. (budget.c) */
