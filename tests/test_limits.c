@@ -4,7 +4,8 @@
  * in a vector, bytes in a string and $fn are checked through the public
  * loader; the size of a render's buffers through sc_render, which must fail
  * before it allocates anything (a 32768 x 32768 render with every buffer
- * would need 29 GiB). Nesting depth has its own tests in test_parse.c and
+ * would need 29 GiB), and the size of a polyhedron the convex path takes.
+ * Nesting depth has its own tests in test_parse.c and
  * test_build.c. */
 #include <setjmp.h>
 #include <stdarg.h>
@@ -12,6 +13,7 @@
 #include <stdint.h>
 #include <cmocka.h>
 
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -121,6 +123,42 @@ static void test_fn(void **state)
                         "m.csg:1:22: error: $fn 1e+06 is too large (limit is 10000)");
 }
 
+/* A convex bipyramid over an n-gon: n + 2 points, 2 n faces, closed. */
+static char *bipyramid(int n)
+{
+    size_t size = (size_t)n * 120 + 256;
+    char *s = malloc(size), *p = s;
+    assert_non_null(s);
+    p += sprintf(p, "polyhedron(points = [[0, 0, -1], [0, 0, 1]");
+    for (int i = 0; i < n; i++)
+        p += sprintf(p, ", [%.17g, %.17g, 0]", cos(6.283185307179586 * i / n),
+                     sin(6.283185307179586 * i / n));
+    p += sprintf(p, "], faces = [");
+    for (int i = 0; i < n; i++) {
+        int a = 2 + i, b = 2 + (i + 1) % n;
+        p += sprintf(p, "%s[0, %d, %d], [1, %d, %d]", i ? ", " : "", b, a, a, b);
+    }
+    sprintf(p, "]);");
+    return s;
+}
+
+static void test_polyhedron_work(void **state)
+{
+    (void)state;
+    char buf[1024];
+    /* 2 n (n + 2) face-point pairs: n = 7070 is 99 998 080, n = 7071 is
+     * 100 026 366. */
+    char *text = bipyramid(7070);
+    assert_int_equal(load(text, strlen(text), buf, sizeof buf), SC_OK);
+    free(text);
+    text = bipyramid(7071);
+    assert_int_equal(load(text, strlen(text), buf, sizeof buf), SC_ERR_LIMIT);
+    assert_string_equal(buf, "m.csg:1:1: error: polyhedron with 14142 faces and 7073 "
+                             "points is too large (limit is 100000000 faces times "
+                             "points)");
+    free(text);
+}
+
 static void test_render_memory(void **state)
 {
     (void)state;
@@ -167,9 +205,9 @@ static void test_render_memory(void **state)
 int main(void)
 {
     const struct CMUnitTest tests[] = {
-        cmocka_unit_test(test_node_count),    cmocka_unit_test(test_vector_length),
-        cmocka_unit_test(test_string_length), cmocka_unit_test(test_fn),
-        cmocka_unit_test(test_render_memory),
+        cmocka_unit_test(test_node_count),      cmocka_unit_test(test_vector_length),
+        cmocka_unit_test(test_string_length),   cmocka_unit_test(test_fn),
+        cmocka_unit_test(test_polyhedron_work), cmocka_unit_test(test_render_memory),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -623,6 +623,13 @@ static sc_status build_polyhedron(builder *b, const parse_node *n, const frame *
         mesh_free(&m);
         return st;
     }
+    /* The plane-set path compares every face with every point (and every
+     * plane with the others), so its work is bounded before it starts. */
+    if (st == SC_OK && (uint64_t)m.face_count * m.point_count > BUILD_MAX_POLYHEDRON_WORK)
+        st = err_set(b->error, SC_ERR_LIMIT, &n->loc,
+                     "polyhedron with %u faces and %u points is too large (limit is %d "
+                     "faces times points)",
+                     m.face_count, m.point_count, BUILD_MAX_POLYHEDRON_WORK);
     if (st == SC_OK)
         st = check_closed(b, n, &m);
     uint32_t count = 0;

@@ -38,6 +38,11 @@
  * A larger or non-finite $fn is an error at the value (docs/limits.md). */
 #define BUILD_MAX_FN 10000
 
+/* The largest polyhedron the convex plane-set path takes, as faces times
+ * points (its cost): 100000000 is about 10000 faces over 10000 points, a
+ * fraction of a second. */
+#define BUILD_MAX_POLYHEDRON_WORK 100000000
+
 /* OpenSCAD's default face colour, Cornfield #f9d72c, alpha 1. */
 #define BUILD_DEFAULT_COLOR                                                              \
     {                                                                                    \
