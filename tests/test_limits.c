@@ -123,6 +123,42 @@ static void test_fn(void **state)
                         "m.csg:1:22: error: $fn 1e+06 is too large (limit is 10000)");
 }
 
+/* The deepest tree the nesting limit allows, rendered on worker threads:
+ * every level is a union of a sphere and the level below, so no level
+ * collapses into its only child, and the recursive ray queries go 9999
+ * levels deep on each thread's own stack. */
+static void test_deep_render(void **state)
+{
+    (void)state;
+    const int levels = PARSE_MAX_DEPTH - 1;
+    char *text = malloc((size_t)levels * 26 + 16), *p = text;
+    assert_non_null(text);
+    for (int i = 0; i < levels; i++)
+        p += sprintf(p, "union() { sphere(r = 1); ");
+    p += sprintf(p, "cube(1);");
+    for (int i = 0; i < levels; i++)
+        *p++ = '}';
+    *p = '\0';
+    sc_scene *scene = NULL;
+    sc_error e;
+    assert_int_equal(sc_scene_load_string("m.csg", text, strlen(text), NULL, &scene, &e),
+                     SC_OK);
+    sc_scene_info info;
+    sc_scene_get_info(scene, &info);
+    assert_int_equal(info.depth, (size_t)levels + 1);
+    sc_render_options o;
+    sc_render_options_init(&o);
+    o.width = o.height = 16;
+    o.threads = 2;
+    o.want_mask = 1;
+    sc_framebuffer *fb = NULL;
+    assert_int_equal(sc_render(scene, &o, &fb, &e), SC_OK);
+    assert_int_equal(fb->mask[8 * 16 + 8], 255); /* the default view is centred */
+    sc_framebuffer_release(fb);
+    sc_scene_release(scene);
+    free(text);
+}
+
 /* A convex bipyramid over an n-gon: n + 2 points, 2 n faces, closed. */
 static char *bipyramid(int n)
 {
@@ -205,9 +241,10 @@ static void test_render_memory(void **state)
 int main(void)
 {
     const struct CMUnitTest tests[] = {
-        cmocka_unit_test(test_node_count),      cmocka_unit_test(test_vector_length),
-        cmocka_unit_test(test_string_length),   cmocka_unit_test(test_fn),
-        cmocka_unit_test(test_polyhedron_work), cmocka_unit_test(test_render_memory),
+        cmocka_unit_test(test_node_count),    cmocka_unit_test(test_vector_length),
+        cmocka_unit_test(test_string_length), cmocka_unit_test(test_fn),
+        cmocka_unit_test(test_deep_render),   cmocka_unit_test(test_polyhedron_work),
+        cmocka_unit_test(test_render_memory),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
