@@ -74,5 +74,21 @@ while IFS= read -r line; do
     [ -z "$(ls -A folder.png)" ] || fail "spancast $args wrote into folder.png"
 done <"$corpus/cmdlines.txt"
 
+# A folder without write permission. Root may write anywhere, so this case
+# runs only for other users (CI may run as either).
+if [ "$(id -u)" != 0 ]; then
+    checks=$((checks + 1))
+    mkdir locked
+    chmod 555 locked
+    "$bin" render m.csg -o locked/x.png --imgsize=8,8 2>stderr.txt
+    rc=$?
+    want="spancast: error: cannot write 'locked/x.png': Permission denied"
+    [ "$rc" = 1 ] && [ "$(cat stderr.txt)" = "$want" ] ||
+        fail "locked folder: exit $rc, stderr '$(cat stderr.txt)'"
+    chmod 755 locked
+else
+    echo "note: running as root, the write-permission case does not apply"
+fi
+
 echo "$checks checks, $fails failed"
 [ "$fails" = 0 ]
