@@ -11,6 +11,7 @@
 #ifndef SPANCAST_SPANCAST_H
 #define SPANCAST_SPANCAST_H
 
+#include <signal.h>
 #include <stddef.h>
 #include <stdint.h>
 
@@ -26,7 +27,8 @@ typedef enum sc_status {
     SC_ERR_LIMIT,       /* a documented resource limit was exceeded */
     SC_ERR_IO,          /* a file could not be read or written */
     SC_ERR_NOMEM,       /* out of memory */
-    SC_ERR_ARGUMENT     /* invalid API or command-line argument */
+    SC_ERR_ARGUMENT,    /* invalid API or command-line argument */
+    SC_ERR_CANCELLED    /* the caller's cancel flag was set (e.g. by SIGINT) */
 } sc_status;
 
 /* A source position; line and column count from 1, 0 means "no position". */
@@ -136,6 +138,11 @@ typedef struct sc_render_options {
      * (0..1), and once with 1 at the end; NULL: not called. */
     void (*progress)(void *user, double fraction);
     void *progress_user;
+    /* Cancellation: when not NULL and *cancel becomes non-zero (a signal
+     * handler may set it), sc_render stops within a tile and returns
+     * SC_ERR_CANCELLED, and the writers of its framebuffer give up without
+     * touching their target. NULL by default. */
+    const volatile sig_atomic_t *cancel;
 } sc_render_options;
 
 void sc_render_options_init(sc_render_options *options);
@@ -172,10 +179,13 @@ typedef struct sc_framebuffer {
     int x0, y0;    /* where this image lies in the full image (--region), else 0 */
     char camera_info[256]; /* the camera in words, for the files' metadata */
     sc_render_stats stats;
+    const volatile sig_atomic_t *cancel; /* the render options' cancel flag */
 } sc_framebuffer;
 
 /* Renders the scene. On success *framebuffer is owned by the caller (release
- * with sc_framebuffer_release). */
+ * with sc_framebuffer_release). The buffers' size is checked before they are
+ * allocated: more than 16 GiB, or more than the machine's memory, is
+ * SC_ERR_LIMIT (docs/limits.md). */
 sc_status sc_render(const sc_scene *scene, const sc_render_options *options,
                     sc_framebuffer **framebuffer, sc_error *error);
 
@@ -187,7 +197,8 @@ void sc_framebuffer_release(sc_framebuffer *framebuffer);
  * the software name and the camera in its metadata.
  * Each writes a temporary file in the target's folder and renames it into
  * place, so a failure never leaves a partial file or destroys an existing
- * one. */
+ * one. When fb->cancel is set before the rename, the temporary is removed,
+ * the target is left as it was and the call returns SC_ERR_CANCELLED. */
 sc_status sc_framebuffer_write_color(const sc_framebuffer *fb, const char *path,
                                      sc_error *error);
 sc_status sc_framebuffer_write_mask(const sc_framebuffer *fb, const char *path,

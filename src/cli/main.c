@@ -19,16 +19,29 @@
  * file's own (a camera() node), then the command line. The command line is
  * read once before loading (to fail fast) and applied again on top of the
  * file's settings after loading.
+ *
+ * Interrupts: during `render`, SIGINT and SIGTERM only set a flag (the one
+ * mutable static of the program: a signal handler has nowhere else to
+ * write, and a volatile sig_atomic_t store is all it does). The library
+ * polls the flag through sc_render_options.cancel: the render stops at the
+ * next tile, and a writer removes its temporary and leaves its target as it
+ * was. The tool then prints "spancast: interrupted" and dies of the same
+ * signal, so its parent sees an interrupted process (status 130 or 143 in
+ * a shell). A second signal before that kills the process at once.
  */
 #define _POSIX_C_SOURCE 200809L
 
 #include <errno.h>
 #include <math.h>
+#include <signal.h>
 #include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <time.h>
+#include <unistd.h>
+
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include "render/image_io.h"
@@ -433,6 +446,48 @@ static int parse_args(cli_args *a, int argc, char **argv)
     return 0;
 }
 
+/* ---- interrupts ---- */
+
+static volatile sig_atomic_t interrupt_signal; /* 0, or the signal received */
+
+static void on_interrupt(int sig)
+{
+    if (interrupt_signal) {
+        signal(sig, SIG_DFL); /* a second interrupt: stop now */
+        raise(sig);
+        return;
+    }
+    interrupt_signal = sig;
+}
+
+static void catch_interrupts(void)
+{
+    struct sigaction sa;
+    memset(&sa, 0, sizeof sa);
+    sa.sa_handler = on_interrupt;
+    sigemptyset(&sa.sa_mask);
+    const int signals[2] = {SIGINT, SIGTERM};
+    for (int k = 0; k < 2; k++) {
+        struct sigaction old;
+        /* A signal the parent set to be ignored (a shell's background job
+         * ignores SIGINT) stays ignored. */
+        if (sigaction(signals[k], NULL, &old) == 0 && old.sa_handler == SIG_IGN)
+            continue;
+        sigaction(signals[k], &sa, NULL);
+    }
+}
+
+/* After an interrupt: says so and ends the process by the same signal. */
+static int die_interrupted(void)
+{
+    int sig = interrupt_signal;
+    fputs("spancast: interrupted\n", stderr);
+    fflush(stderr);
+    signal(sig, SIG_DFL);
+    raise(sig);
+    return 128 + sig; /* not reached */
+}
+
 /* ---- commands ---- */
 
 static double seconds_now(void)
@@ -487,6 +542,38 @@ static int run_info(const cli_args *a)
         printf("bounds: empty\n");
     sc_scene_release(scene);
     return 0;
+}
+
+/* Checks that path can be created: its folder exists, is a folder and is
+ * writable, and path itself is not a folder. Prints the error the writer
+ * would give and returns 0 when not, so a doomed render is never started
+ * and an earlier output is not written when a later one cannot be. */
+static int output_writable(const char *path)
+{
+    const char *slash = strrchr(path, '/');
+    char folder[4096];
+    if (!slash) {
+        strcpy(folder, ".");
+    } else {
+        size_t n = slash == path ? 1 : (size_t)(slash - path);
+        if (n >= sizeof folder)
+            return 1; /* let the writer judge */
+        memcpy(folder, path, n);
+        folder[n] = '\0';
+    }
+    struct stat st;
+    int code = 0;
+    if (stat(folder, &st) != 0)
+        code = errno;
+    else if (!S_ISDIR(st.st_mode))
+        code = ENOTDIR;
+    else if (access(folder, W_OK | X_OK) != 0)
+        code = errno;
+    else if (stat(path, &st) == 0 && S_ISDIR(st.st_mode))
+        code = EISDIR;
+    if (code)
+        fprintf(stderr, "spancast: error: cannot write '%s': %s\n", path, strerror(code));
+    return code == 0;
 }
 
 /* The progress bar: redrawn when the whole percentage changes. */
@@ -570,9 +657,16 @@ static int run_render(cli_args *a, int argc, char **argv)
         (a->normal && imgio_check(a->normal, IMGIO_NORMAL, &error)) ||
         (a->id && imgio_check(a->id, IMGIO_ID, &error)))
         return usage_error("%s", error.message);
+    if (!output_writable(a->output) || (a->mask && !output_writable(a->mask)) ||
+        (a->depth && !output_writable(a->depth)) ||
+        (a->normal && !output_writable(a->normal)) || (a->id && !output_writable(a->id)))
+        return EXIT_FAILED;
 
     double start = seconds_now();
+    catch_interrupts();
     sc_scene *scene = load(a->input);
+    if (interrupt_signal)
+        return die_interrupted();
     if (!scene)
         return EXIT_FAILED;
     stage_times times;
@@ -585,6 +679,7 @@ static int run_render(cli_args *a, int argc, char **argv)
     sc_render_options_from_scene(&again.options, scene);
     (void)parse_args(&again, argc, argv); /* succeeded once already */
     a->options = again.options;
+    a->options.cancel = &interrupt_signal;
     a->options.want_color = 1;
     a->options.want_mask = a->mask != NULL;
     a->options.want_depth = a->depth != NULL;
@@ -598,6 +693,8 @@ static int run_render(cli_args *a, int argc, char **argv)
     sc_framebuffer *fb = NULL;
     int status = 0;
     sc_status st = sc_render(scene, &a->options, &fb, &error);
+    if (st == SC_ERR_CANCELLED)
+        return die_interrupted();
     if (st != SC_OK) {
         /* An argument error here comes from the command line's camera. */
         print_error(&error);
@@ -610,6 +707,8 @@ static int run_render(cli_args *a, int argc, char **argv)
         (a->depth && sc_framebuffer_write_depth(fb, a->depth, &error) != SC_OK) ||
         (a->normal && sc_framebuffer_write_normal(fb, a->normal, &error) != SC_OK) ||
         (a->id && sc_framebuffer_write_id(fb, a->id, &error) != SC_OK)) {
+        if (error.status == SC_ERR_CANCELLED)
+            return die_interrupted();
         print_error(&error);
         status = EXIT_FAILED;
     }

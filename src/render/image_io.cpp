@@ -8,6 +8,13 @@
 // with O_EXCL and mode 0666 (less the umask), so the final file has the
 // permissions a plain create would give it.
 //
+// Cancellation: the framebuffer carries the caller's cancel flag (set, for
+// instance, by the command line's SIGINT handler). The writer polls it before
+// it creates the temporary, between chunks of scanlines (OpenImageIO's
+// progress callback, which stops the write) and just before the rename; once
+// it is set, the temporary is removed and the target is not touched. Only a
+// flag read is involved, so nothing here has to be async-signal-safe.
+//
 // This is the one C++ file of the library: a thin layer that converts
 // OpenImageIO's errors into sc_error values and never lets an exception out.
 #include "render/image_io.h"
@@ -15,6 +22,7 @@
 #include <OpenImageIO/imageio.h>
 
 #include <cerrno>
+#include <csignal>
 #include <cstdint>
 #include <cstring>
 #include <ctime>
@@ -143,16 +151,36 @@ std::string create_temporary(const std::string &path)
     return std::string();
 }
 
+bool cancelled(const volatile sig_atomic_t *cancel)
+{
+    return cancel && *cancel;
+}
+
+// OpenImageIO's progress callback: returning true stops the write.
+bool progress(void *cancel, float /* done */)
+{
+    return cancelled(static_cast<const volatile sig_atomic_t *>(cancel));
+}
+
+sc_status interrupted(sc_error *error)
+{
+    return err_set(error, SC_ERR_CANCELLED, nullptr, "interrupted");
+}
+
 // Writes width x height pixels of channels values of data_type (rows from
 // the top, no padding) to path as file_type, through a temporary file.
+// Gives up (SC_ERR_CANCELLED) as soon as *cancel is set.
 sc_status write_image(const char *path, imgio_kind kind, int width, int height,
                       const std::vector<std::string> &channel_names,
                       OIIO::TypeDesc file_type, OIIO::TypeDesc data_type,
-                      const void *data, const char *camera, sc_error *error)
+                      const void *data, const char *camera,
+                      const volatile sig_atomic_t *cancel, sc_error *error)
 {
     sc_status st = check(path, kind, error);
     if (st)
         return st;
+    if (cancelled(cancel))
+        return interrupted(error);
     std::string tmp = create_temporary(path);
     if (tmp.empty())
         return err_set(error, SC_ERR_IO, nullptr, "cannot write '%s': %s", path,
@@ -173,12 +201,26 @@ sc_status write_image(const char *path, imgio_kind kind, int width, int height,
             spec.attribute("ImageDescription", std::string("camera: ") + camera);
             spec.attribute("spancast:camera", camera);
         }
+        // Loading the format's plugin takes a while the first time: look at
+        // the flag again before open() starts a file that close() would
+        // have to finish (libpng complains about a file without rows).
+        if (cancelled(cancel)) {
+            out.reset();
+            std::remove(tmp.c_str());
+            return interrupted(error);
+        }
         if (!out->open(tmp, spec))
             failure = trimmed(out->geterror());
-        else if (!out->write_image(data_type, data))
+        else if (!out->write_image(data_type, data, OIIO::AutoStride, OIIO::AutoStride,
+                                   OIIO::AutoStride, progress,
+                                   const_cast<sig_atomic_t *>(cancel)))
             failure = trimmed(out->geterror());
         if (!out->close() && failure.empty())
             failure = trimmed(out->geterror());
+    }
+    if (cancelled(cancel)) {
+        std::remove(tmp.c_str());
+        return interrupted(error);
     }
     if (failure.empty() && std::rename(tmp.c_str(), path) != 0)
         failure = std::strerror(errno);
@@ -220,14 +262,14 @@ sc_status color_body(const sc_framebuffer *fb, const char *path, sc_error *error
     if (float_color_format(extension_of(path)))
         return write_image(path, IMGIO_COLOR, fb->width, fb->height, {"R", "G", "B"},
                            OIIO::TypeDesc::FLOAT, OIIO::TypeDesc::FLOAT, fb->color,
-                           fb->camera_info, error);
+                           fb->camera_info, fb->cancel, error);
     size_t values = (size_t)fb->width * (size_t)fb->height * 3;
     std::vector<unsigned char> encoded(values);
     for (size_t k = 0; k < values; k++)
         encoded[k] = color_linear_to_srgb8(fb->color[k]);
     return write_image(path, IMGIO_COLOR, fb->width, fb->height, {"R", "G", "B"},
                        OIIO::TypeDesc::UINT8, OIIO::TypeDesc::UINT8, encoded.data(),
-                       fb->camera_info, error);
+                       fb->camera_info, fb->cancel, error);
 }
 
 sc_status mask_body(const sc_framebuffer *fb, const char *path, sc_error *error)
@@ -236,7 +278,7 @@ sc_status mask_body(const sc_framebuffer *fb, const char *path, sc_error *error)
         return no_buffer("mask", error);
     return write_image(path, IMGIO_MASK, fb->width, fb->height, {"Y"},
                        OIIO::TypeDesc::UINT8, OIIO::TypeDesc::UINT8, fb->mask,
-                       fb->camera_info, error);
+                       fb->camera_info, fb->cancel, error);
 }
 
 sc_status depth_body(const sc_framebuffer *fb, const char *path, sc_error *error)
@@ -245,7 +287,7 @@ sc_status depth_body(const sc_framebuffer *fb, const char *path, sc_error *error
         return no_buffer("depth", error);
     return write_image(path, IMGIO_DEPTH, fb->width, fb->height, {"Z"},
                        OIIO::TypeDesc::FLOAT, OIIO::TypeDesc::FLOAT, fb->depth,
-                       fb->camera_info, error);
+                       fb->camera_info, fb->cancel, error);
 }
 
 sc_status normal_body(const sc_framebuffer *fb, const char *path, sc_error *error)
@@ -254,7 +296,7 @@ sc_status normal_body(const sc_framebuffer *fb, const char *path, sc_error *erro
         return no_buffer("normal", error);
     return write_image(path, IMGIO_NORMAL, fb->width, fb->height, {"X", "Y", "Z"},
                        OIIO::TypeDesc::FLOAT, OIIO::TypeDesc::FLOAT, fb->normal,
-                       fb->camera_info, error);
+                       fb->camera_info, fb->cancel, error);
 }
 
 sc_status id_body(const sc_framebuffer *fb, const char *path, sc_error *error)
@@ -268,7 +310,7 @@ sc_status id_body(const sc_framebuffer *fb, const char *path, sc_error *error)
         ids[k] = (float)fb->id[k];
     return write_image(path, IMGIO_ID, fb->width, fb->height, {"id"},
                        OIIO::TypeDesc::FLOAT, OIIO::TypeDesc::FLOAT, ids.data(),
-                       fb->camera_info, error);
+                       fb->camera_info, fb->cancel, error);
 }
 
 } // namespace

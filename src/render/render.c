@@ -148,6 +148,8 @@ static void render_pixel(const render_ctx *c, render_thread *th, int i, int j)
 
 static void render_tile(const render_ctx *c, render_thread *th, int tile, int tiles_x)
 {
+    if (c->fb->cancel && *c->fb->cancel)
+        return; /* cancelled: the remaining tiles are skipped */
     int x0 = (tile % tiles_x) * RENDER_TILE_SIZE;
     int y0 = (tile / tiles_x) * RENDER_TILE_SIZE;
     int x1 = x0 + RENDER_TILE_SIZE < c->fb->width ? x0 + RENDER_TILE_SIZE : c->fb->width;
@@ -179,6 +181,7 @@ static sc_framebuffer *framebuffer_new(const sc_render_options *o, int width, in
         return NULL;
     fb->width = width;
     fb->height = height;
+    fb->cancel = o->cancel;
     size_t pixels = (size_t)width * (size_t)height;
     int ok = 1;
     if (o->want_color)
@@ -258,6 +261,8 @@ sc_status render_scene(const csg_tree *tree, const shading *look,
         options = &defaults;
     }
     sc_status st = check_options(options, error);
+    if (st == SC_OK)
+        st = render_check_memory(options, error);
     if (st)
         return st;
 
@@ -306,18 +311,24 @@ sc_status render_scene(const csg_tree *tree, const shading *look,
     double traced = seconds_now();
     stats->setup_seconds = traced - start;
 
+    int out_of_memory = 0; /* a thread could not get its scratch arena */
 #pragma omp parallel num_threads(threads)
     {
         render_thread th;
         memset(&th, 0, sizeof th);
         arena_init(&th.scratch, 0);
         /* Take the first block now rather than inside the loop. */
-        (void)arena_alloc(&th.scratch, 1);
+        int ready = arena_alloc(&th.scratch, 1) != NULL;
         arena_reset(&th.scratch);
+        if (!ready) {
+#pragma omp atomic write
+            out_of_memory = 1;
+        }
         int reporter = omp_get_thread_num() == 0 && options->progress;
 #pragma omp for schedule(dynamic, 1)
         for (int tile = 0; tile < tiles; tile++) {
-            render_tile(&c, &th, tile, tiles_x);
+            if (ready)
+                render_tile(&c, &th, tile, tiles_x);
             int now;
 #pragma omp atomic capture
             now = ++done;
@@ -342,6 +353,14 @@ sc_status render_scene(const csg_tree *tree, const shading *look,
         options->progress(options->progress_user, 1.0);
     shade_release(&c.shade);
     stats->trace_seconds = seconds_now() - traced;
+    if (out_of_memory) {
+        sc_framebuffer_release(c.fb);
+        return err_set(error, SC_ERR_NOMEM, NULL, "out of memory");
+    }
+    if (options->cancel && *options->cancel) {
+        sc_framebuffer_release(c.fb);
+        return err_set(error, SC_ERR_CANCELLED, NULL, "interrupted");
+    }
     *framebuffer = c.fb;
     return SC_OK;
 }

@@ -32,5 +32,11 @@ sc_status render_tree(const csg_tree *tree, const sc_render_options *options,
 sc_status render_scene(const csg_tree *tree, const shading *look,
                        const sc_render_options *options, sc_framebuffer **framebuffer,
                        sc_error *error);
+/* Largest total size of a render's image buffers, in GiB. */
+#define RENDER_MAX_MEMORY_GIB 16
+
+/* SC_ERR_LIMIT when the buffers options ask for exceed RENDER_MAX_MEMORY_GIB
+ * or the machine's physical memory; SC_OK otherwise. (budget.c) */
+sc_status render_check_memory(const sc_render_options *options, sc_error *error);
 
 #endif

@@ -631,6 +631,13 @@ static sc_status build_polyhedron(builder *b, const parse_node *n, const frame *
         mesh_free(&m);
         return st;
     }
+    /* The plane-set path compares every face with every point (and every
+     * plane with the others), so its work is bounded before it starts. */
+    if (st == SC_OK && (uint64_t)m.face_count * m.point_count > BUILD_MAX_POLYHEDRON_WORK)
+        st = err_set(b->error, SC_ERR_LIMIT, &n->loc,
+                     "polyhedron with %u faces and %u points is too large (limit is %d "
+                     "faces times points)",
+                     m.face_count, m.point_count, BUILD_MAX_POLYHEDRON_WORK);
     if (st == SC_OK)
         st = check_closed(b, n, &m);
     uint32_t count = 0;
@@ -784,7 +791,9 @@ static sc_status pop_frame(builder *b)
         size_t count = b->id_count - f.first_id;
         if (count > UINT32_MAX)
             return nomem(b);
-        id = csg_builder_op(b->csg, f.op, b->ids + f.first_id, (uint32_t)count);
+        /* No id pushed yet means no id array at all: NULL + 0 is undefined. */
+        const uint32_t *children = count ? b->ids + f.first_id : NULL;
+        id = csg_builder_op(b->csg, f.op, children, (uint32_t)count);
         if (csg_builder_failed(b->csg))
             return nomem(b);
     }
@@ -810,6 +819,20 @@ static const parse_node *find_root(const parse_tree *syntax)
     return NULL;
 }
 
+/* $fn, where a node sets it to a number, must be finite and at most
+ * BUILD_MAX_FN (zero or negative means "use $fa and $fs", as in OpenSCAD). */
+static sc_status check_fn(builder *b, const parse_node *n)
+{
+    const parse_value *v = arg(n, "$fn", -1);
+    if (!v || v->kind != PARSE_NUMBER || v->u.number <= BUILD_MAX_FN)
+        return SC_OK;
+    sc_location loc = value_loc(b, v);
+    if (isnan(v->u.number))
+        return err_set(b->error, SC_ERR_SEMANTIC, &loc, "$fn must be a number (got nan)");
+    return err_set(b->error, SC_ERR_LIMIT, &loc, "$fn %g is too large (limit is %d)",
+                   v->u.number, BUILD_MAX_FN);
+}
+
 /* Visits one node: a leaf delivers its result; a boolean node opens a
  * frame for its children. *opened says which. */
 static sc_status visit(builder *b, const parse_node *n, int *opened)
@@ -822,6 +845,8 @@ static sc_status visit(builder *b, const parse_node *n, int *opened)
     if (kind == KIND_UNSUPPORTED)
         return err_set(b->error, SC_ERR_UNSUPPORTED, &n->loc, "'%s' is not supported yet",
                        n->name);
+    if ((st = check_fn(b, n)) != SC_OK)
+        return st;
     if ((n->modifiers & PARSE_MOD_ROOT) && n != b->root &&
         (st = warn(b, &n->loc,
                    "root modifier '!' is used more than once; only the first is used")) !=

@@ -36,6 +36,16 @@
 #include "scene/shading.h"
 #include "spancast/spancast.h"
 
+/* The largest $fn a node may set: it is the number of polygon sides that
+ * OpenSCAD-faithful rendering builds, so an absurd value must not reach it.
+ * A larger or non-finite $fn is an error at the value (docs/limits.md). */
+#define BUILD_MAX_FN 10000
+
+/* The largest polyhedron the convex plane-set path takes, as faces times
+ * points (its cost): 100000000 is about 10000 faces over 10000 points, a
+ * fraction of a second. */
+#define BUILD_MAX_POLYHEDRON_WORK 100000000
+
 /* OpenSCAD's default face colour, Cornfield #f9d72c, alpha 1. */
 #define BUILD_DEFAULT_COLOR                                                              \
     {                                                                                    \

@@ -372,6 +372,9 @@ static sc_status lex_string(lexer *lx, lex_token *tok, sc_error *error)
         return err_set(error, SC_ERR_SYNTAX, &loc, "unterminated string");
     const char *raw = lx->p + 1;
     size_t n = (size_t)(close - raw);
+    if (n > LEX_MAX_STRING)
+        return err_set(error, SC_ERR_LIMIT, &loc, "string too long (limit is %d bytes)",
+                       LEX_MAX_STRING);
     /* Decoding never lengthens: every escape is at least as long as its
      * UTF-8 result (\uHHHH: 6 bytes for at most 3, \UHHHHHH: 8 for 4). */
     char *out = arena_alloc(lx->strings, n + 1);

@@ -19,6 +19,8 @@
 #include "base/arena.h"
 #include "spancast/spancast.h"
 
+#define LEX_MAX_STRING 1000000 /* bytes between a string's quotes */
+
 typedef enum lex_kind {
     LEX_EOF,
     LEX_IDENT,  /* [$]?[A-Za-z0-9_]+ not starting with a digit */
@@ -66,7 +68,8 @@ void lex_init(lexer *lx, const char *file, const char *text, size_t length,
               arena *strings);
 
 /* Reads the next token into *tok. Returns SC_OK, SC_ERR_SYNTAX (with the
- * position of the offending character) or SC_ERR_NOMEM. At the end of the
+ * position of the offending character), SC_ERR_LIMIT (a string longer than
+ * LEX_MAX_STRING, at its opening quote) or SC_ERR_NOMEM. At the end of the
  * text it keeps returning LEX_EOF. */
 sc_status lex_next(lexer *lx, lex_token *tok, sc_error *error);
 

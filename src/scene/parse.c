@@ -200,6 +200,13 @@ static sc_status parse_value_into(parser *ps, parse_value *out)
                 *out = v;
                 return SC_OK;
             }
+            if (ps->value_count - ps->open[ps->open_count - 1].start >=
+                PARSE_MAX_VECTOR) {
+                sc_location loc = {ps->tree->file, v.line, v.column};
+                return err_set(ps->error, SC_ERR_LIMIT, &loc,
+                               "too many items in a vector (limit is %d)",
+                               PARSE_MAX_VECTOR);
+            }
             if ((st = push_value(ps, &v)) != SC_OK)
                 return st;
             if (ps->tok.kind == LEX_COMMA) {
@@ -337,6 +344,11 @@ static sc_status parse_statements(parser *ps)
             sc_location loc = token_loc(ps);
             return err_set(ps->error, SC_ERR_LIMIT, &loc,
                            "too many nested nodes (limit is %d)", PARSE_MAX_DEPTH);
+        }
+        if (tree->node_count >= PARSE_MAX_NODES) {
+            sc_location loc = token_loc(ps);
+            return err_set(ps->error, SC_ERR_LIMIT, &loc, "too many nodes (limit is %d)",
+                           PARSE_MAX_NODES);
         }
         parse_node *node = arena_calloc(&tree->mem, 1, sizeof *node);
         if (!node || !(node->name = token_text(ps)))

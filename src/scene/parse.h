@@ -16,7 +16,10 @@
  *
  * Nesting is handled with explicit stacks, never recursion, so no input can
  * overflow the C stack; nodes and vectors are each limited to
- * PARSE_MAX_DEPTH levels. Everything lives in one arena owned by the tree.
+ * PARSE_MAX_DEPTH levels. A file holds at most PARSE_MAX_NODES nodes and a
+ * vector at most PARSE_MAX_VECTOR items (docs/limits.md), so memory stays
+ * proportional to what a real model needs. Everything lives in one arena
+ * owned by the tree.
  */
 #ifndef SPANCAST_SCENE_PARSE_H
 #define SPANCAST_SCENE_PARSE_H
@@ -28,6 +31,9 @@
 #include "spancast/spancast.h"
 
 #define PARSE_MAX_DEPTH 10000 /* nested nodes, and nested vectors */
+
+#define PARSE_MAX_NODES 1000000  /* nodes in a file */
+#define PARSE_MAX_VECTOR 1000000 /* items in one vector */
 
 typedef enum parse_value_kind {
     PARSE_UNDEF,

@@ -1,0 +1,82 @@
+/* Replays every fuzzer finding in tests/fuzz-regressions/ through the same
+ * load path the fuzzer drives (fuzz/harness.h: load, compile, 8 x 8 render).
+ *
+ * Each file is an input that once crashed, leaked or tripped a sanitizer;
+ * here it must load or fail with a message, render or fail with a message,
+ * and leave nothing behind. The normal build checks the library's promises;
+ * the sanitizer build of scripts/test checks memory and undefined behaviour
+ * on exactly these inputs. scripts/fuzz replays them under clang too.
+ */
+#include <dirent.h>
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include <cmocka.h>
+
+#include "../fuzz/harness.h"
+
+static const char folder[] = SPANCAST_SOURCE_DIR "/tests/fuzz-regressions";
+
+/* Reads a whole file; NULL when it cannot be read. */
+static char *read_all(const char *path, size_t *length)
+{
+    FILE *f = fopen(path, "rb");
+    if (!f)
+        return NULL;
+    size_t cap = 4096, n = 0;
+    char *buf = malloc(cap);
+    while (buf) {
+        n += fread(buf + n, 1, cap - n, f);
+        if (n < cap)
+            break;
+        char *bigger = realloc(buf, cap * 2);
+        if (!bigger) {
+            free(buf);
+            buf = NULL;
+            break;
+        }
+        buf = bigger;
+        cap *= 2;
+    }
+    fclose(f);
+    *length = n;
+    return buf;
+}
+
+static void test_replay_all(void **state)
+{
+    (void)state;
+    DIR *dir = opendir(folder);
+    assert_non_null(dir);
+    int replayed = 0;
+    struct dirent *entry;
+    while ((entry = readdir(dir)) != NULL) {
+        if (entry->d_name[0] == '.')
+            continue;
+        char path[4096];
+        snprintf(path, sizeof path, "%s/%s", folder, entry->d_name);
+        size_t length = 0;
+        char *text = read_all(path, &length);
+        assert_non_null(text);
+        int result = fuzz_one((const uint8_t *)text, length);
+        if (result != 0)
+            fail_msg("%s: the library broke a promise on this input", entry->d_name);
+        free(text);
+        replayed++;
+    }
+    closedir(dir);
+    print_message("replayed %d fuzzer findings\n", replayed);
+    assert_true(replayed > 0);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_replay_all),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
