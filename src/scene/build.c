@@ -37,6 +37,7 @@
 #include <string.h>
 
 #include "base/error.h"
+#include "scene/build_curved.h"
 
 typedef enum node_kind {
     KIND_UNION, /* group, union, render */
@@ -48,6 +49,9 @@ typedef enum node_kind {
     KIND_SPHERE,
     KIND_CYLINDER,
     KIND_POLYHEDRON,
+    KIND_TORUS, /* torus, quadric, implicit: build_implicit.c */
+    KIND_QUADRIC,
+    KIND_IMPLICIT,
     KIND_UNSUPPORTED, /* known, not rendered yet */
     KIND_UNKNOWN
 } node_kind;
@@ -84,10 +88,10 @@ static const struct {
     {"roof", KIND_UNSUPPORTED},
     {"intersection_for", KIND_UNSUPPORTED},
     /* spancast's own extensions. */
-    {"torus", KIND_UNSUPPORTED},
-    {"quadric", KIND_UNSUPPORTED},
+    {"torus", KIND_TORUS},
+    {"quadric", KIND_QUADRIC},
     {"halfspace", KIND_UNSUPPORTED},
-    {"implicit", KIND_UNSUPPORTED},
+    {"implicit", KIND_IMPLICIT},
     {"material", KIND_UNSUPPORTED},
     {"light", KIND_UNSUPPORTED},
     {"camera", KIND_UNSUPPORTED},
@@ -105,7 +109,7 @@ static node_kind kind_of(const char *name)
 
 static int is_leaf(node_kind kind)
 {
-    return kind >= KIND_CUBE && kind <= KIND_POLYHEDRON;
+    return kind >= KIND_CUBE && kind <= KIND_IMPLICIT;
 }
 
 typedef struct frame {
@@ -650,6 +654,25 @@ static sc_status build_polyhedron(builder *b, const parse_node *n, const frame *
     return st;
 }
 
+/* torus, quadric, implicit (build_implicit.c). */
+static sc_status build_curved(builder *b, const parse_node *n, node_kind kind,
+                              const frame *state, uint32_t *id)
+{
+    build_ctx c = {b->syntax->file, b->csg, b->error};
+    const char *empty = NULL;
+    prim p;
+    memset(&p, 0, sizeof p);
+    sc_status st = kind == KIND_TORUS ? build_torus(&c, n, state->emit, &p, &empty)
+                   : kind == KIND_QUADRIC
+                       ? build_quadric(&c, n, state->emit, &p, &empty)
+                       : build_implicit(&c, n, state->emit, &p, &empty);
+    if (st != SC_OK || !state->emit)
+        return st;
+    if (empty)
+        return warn(b, &n->loc, "%s", empty);
+    return add_leaf(b, n, &p, state, id);
+}
+
 /* ---- boolean nodes with arguments ---- */
 
 /* multmatrix(m = [[...], [...], [...], [0, 0, 0, 1]]): a row-major 4x4
@@ -846,6 +869,11 @@ static sc_status visit(builder *b, const parse_node *n, int *opened)
             break;
         case KIND_CYLINDER:
             st = build_cylinder(b, n, &f, &id);
+            break;
+        case KIND_TORUS:
+        case KIND_QUADRIC:
+        case KIND_IMPLICIT:
+            st = build_curved(b, n, kind, &f, &id);
             break;
         default:
             st = build_polyhedron(b, n, &f, &id);
