@@ -408,6 +408,36 @@ static int parse_expr(parser *p)
     }
 }
 
+/* Drops the instructions the result does not use (constants that folding
+ * consumed) and renumbers the rest, keeping their order, so that the
+ * result is the last register. */
+static void compact(expr_program *o, uint32_t result)
+{
+    uint8_t live[EXPR_MAX_CODE] = {0};
+    uint16_t renumber[EXPR_MAX_CODE];
+    live[result] = 1;
+    for (uint32_t i = result + 1; i-- > 0;) {
+        if (!live[i] || o->code[i].op <= EXPR_CONST)
+            continue;
+        live[o->code[i].a] = 1;
+        live[o->code[i].b] = 1;
+    }
+    uint32_t n = 0;
+    for (uint32_t i = 0; i <= result; i++) {
+        if (!live[i])
+            continue;
+        expr_insn in = o->code[i];
+        in.a = renumber[in.a];
+        in.b = renumber[in.b];
+        if (in.op <= EXPR_CONST)
+            in.a = in.b = 0;
+        o->code[n] = in;
+        o->constant[n] = o->constant[i];
+        renumber[i] = (uint16_t)n++;
+    }
+    o->count = n;
+}
+
 int expr_compile(const char *source, size_t length, const expr_param *params,
                  uint32_t param_count, expr_program *out, expr_error *error)
 {
@@ -429,20 +459,7 @@ int expr_compile(const char *source, size_t length, const expr_param *params,
         return fail(&p, p.pos, "unexpected byte 0x%02x in expression", (unsigned char)c) +
                1;
     }
-    /* The result must be the last register. */
-    if ((uint32_t)r != out->count - 1) {
-        if (out->count >= EXPR_MAX_CODE)
-            return fail(&p, p.pos, "expression is too long (limit is %d operations)",
-                        EXPR_MAX_CODE) +
-                   1;
-        if (out->code[r].op == EXPR_CONST) {
-            emit_const(&p, out->constant[r]);
-        } else {
-            expr_insn in = {EXPR_MAX, (uint16_t)r, (uint16_t)r, 0};
-            out->code[out->count] = in;
-            out->constant[out->count++] = 0;
-        }
-    }
+    compact(out, (uint32_t)r);
     return 1;
 }
 
