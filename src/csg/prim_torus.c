@@ -26,9 +26,13 @@
  * cut that range into pieces on which q is monotone, hence holds at most
  * one root. A piece holds a root exactly when F differs in sign at its
  * ends; that root is then polished by safeguarded Newton-bisection on F
- * itself, computed from the point, not from the coefficients:
- * (rho - R)^2 + z^2 - r^2 = (h - r)(h + r) with h = hypot(rho - R, z), whose
- * difference h - r is exact near the surface (Sterbenz). Signs of F, not
+ * itself, computed from the point, not from the coefficients, with the
+ * larger of the two squares paired with r^2: (rho - R)^2 + (z - r)(z + r)
+ * when |z| >= |rho - R|, else (rho - R - r)(rho - R + r) + z^2. Near the
+ * surface the paired difference (z - r or rho - R - r) is exact (Sterbenz)
+ * and the other term is small and accurate, so F keeps its relative
+ * accuracy even for a ray grazing the top of the tube, where r^2 - z^2 is
+ * tiny and (rho - R)^2 must be compared with it. Signs of F, not
  * of the ill-conditioned coefficients of q, decide which pieces hold a
  * root, so the crossings found always alternate, and a tangent ray (a
  * double root, no sign change) yields no sliver. The ends of the range lie
@@ -39,17 +43,25 @@
 
 #include "csg/prim_curved.h"
 
+/* F at a local point, rho = |(x, y)| given. */
+static double torus_value(double big_r, double r, double rho, double z)
+{
+    double w = rho - big_r;
+    if (fabs(z) >= fabs(w))
+        return w * w + (z - r) * (z + r);
+    return (w - r) * (w + r) + z * z;
+}
+
 /* F and its derivative along u at c + s u. */
 static double torus_f(double big_r, double r, vec3 c, vec3 u, double s, double *df)
 {
     vec3 p = v3_madd(c, u, s);
     double rho = hypot(p.x, p.y);
-    double h = hypot(rho - big_r, p.z);
     if (df) {
         double drho = rho > 0 ? (p.x * u.x + p.y * u.y) / rho : 0;
         *df = 2 * (rho - big_r) * drho + 2 * p.z * u.z;
     }
-    return (h - r) * (h + r);
+    return torus_value(big_r, r, rho, p.z);
 }
 
 static double poly_eval(const double *c, int deg, double x)
@@ -202,9 +214,7 @@ vec3 prim_torus_normal(const prim *p, vec3 q)
 
 int prim_torus_inside(const prim *p, vec3 q)
 {
-    double rho = hypot(q.x, q.y);
-    double h = hypot(rho - p->u.torus.major, q.z);
-    return h <= p->u.torus.minor;
+    return torus_value(p->u.torus.major, p->u.torus.minor, hypot(q.x, q.y), q.z) <= 0;
 }
 
 bbox prim_torus_bounds(const prim *p)

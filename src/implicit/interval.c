@@ -1,6 +1,6 @@
 /* Outward-rounded interval arithmetic: see interval.h for the rounding
- * rule (nextafter by one ulp after correctly rounded operations, a relative
- * 4-ulp widening after libm functions). */
+ * rule (a step of one or two ulps outward after correctly rounded
+ * operations, a relative 4-ulp widening after libm functions). */
 #include "implicit/interval.h"
 
 #include <float.h>
@@ -8,13 +8,19 @@
 
 static const double PI = 3.14159265358979323846;
 
+/* One step outward, of at least one ulp: |x| 2^-52 is at least the ulp of
+ * a normal x (and at least the spacing below it, which is smaller at a
+ * power of two), so the exact x - |x| 2^-52 lies at least one spacing
+ * below x and rounding to nearest cannot bring it back to x; the smallest
+ * subnormal covers zero and subnormals. Cheaper than nextafter (a libm
+ * call), at the price of sometimes stepping two ulps. Infinite ends stay. */
 static double down(double x)
 {
-    return nextafter(x, -INFINITY);
+    return isfinite(x) ? x - (fabs(x) * DBL_EPSILON + DBL_TRUE_MIN) : x;
 }
 static double up(double x)
 {
-    return nextafter(x, INFINITY);
+    return isfinite(x) ? x + (fabs(x) * DBL_EPSILON + DBL_TRUE_MIN) : x;
 }
 /* Widening for results of libm functions. */
 static double wdown(double x)
@@ -115,6 +121,29 @@ ix ix_sqr(ix a)
     return ix_make(0, up(fmax(l, h)));
 }
 
+/* x^n for n >= 1 by repeated squaring: at most 2 log2(n) roundings of
+ * half an ulp each, so within n + 2 ulps relative for any n >= 1 (the
+ * slack ix_powi widens by). */
+static double ipow(double x, int n)
+{
+    double r = 1;
+    while (n > 0) {
+        if (n & 1)
+            r *= x;
+        x *= x;
+        n >>= 1;
+    }
+    return r;
+}
+static double pdown(double x, double rel)
+{
+    return isfinite(x) ? x - (fabs(x) * rel + DBL_TRUE_MIN) : x;
+}
+static double pup(double x, double rel)
+{
+    return isfinite(x) ? x + (fabs(x) * rel + DBL_TRUE_MIN) : x;
+}
+
 ix ix_powi(ix a, int n)
 {
     if (n == 0)
@@ -125,16 +154,17 @@ ix ix_powi(ix a, int n)
         return a;
     if (n == 2)
         return ix_sqr(a);
-    double l = pow(a.lo, n), h = pow(a.hi, n);
+    double l = ipow(a.lo, n), h = ipow(a.hi, n);
+    double slack = (n + 2) * DBL_EPSILON;
     if (n % 2 == 1)
-        return ix_make(wdown(l), wup(h)); /* increasing */
+        return ix_make(pdown(l, slack), pup(h, slack)); /* increasing */
     if (a.lo >= 0)
-        return ix_make(fmax(0, wdown(l)), wup(h));
+        return ix_make(fmax(0, pdown(l, slack)), pup(h, slack));
     if (a.hi <= 0)
-        return ix_make(fmax(0, wdown(h)), wup(l));
+        return ix_make(fmax(0, pdown(h, slack)), pup(l, slack));
     if (isnan(l) || isnan(h))
         return ix_make(NAN, NAN);
-    return ix_make(0, wup(fmax(l, h)));
+    return ix_make(0, pup(fmax(l, h), slack));
 }
 
 ix ix_sqrt(ix a)

@@ -6,9 +6,11 @@
  * arguments (where f is defined). Rounding is made outward without touching
  * the FPU rounding mode (fesetround is global state, slow to switch, and
  * not honoured by every libm): each end is computed in round-to-nearest and
- * then moved one ulp outward with nextafter. For + - * / and sqrt IEEE 754
- * gives the correctly rounded result, which lies within half an ulp of the
- * exact one, so one ulp outward encloses it. For libm functions (exp, log,
+ * then moved outward by x -+ (|x| 2^-52 + 2^-1074), a step of at least one
+ * ulp (nextafter's single ulp, without its libm call; sometimes two). For
+ * + - * / and sqrt IEEE 754 gives the correctly rounded result, which lies
+ * within half an ulp of the exact one, so one ulp outward encloses it. For
+ * libm functions (exp, log,
  * sin, cos, tan, atan2), whose results are not correctly rounded, the ends
  * are widened by 4 ulps relative plus the smallest subnormal, more than the
  * documented error of glibc's implementations (at most 1-2 ulps).
