@@ -184,6 +184,7 @@ static const char *const enclosure_cases[] = {
     "abs(sin(x)*cos(y) + sin(y)*cos(z) + sin(z)*cos(x)) - 0.3",
     "(x*x + y*y + z*z - 1)^3",
     "atan2(z - 1, y + x) * floor(2 * z) / (1 + x*x)",
+    "max(sqrt(x), 0.1) + min(log(y), z)",
 };
 
 static void test_interval_enclosure(void **state)
@@ -212,8 +213,9 @@ static void test_interval_enclosure(void **state)
             vec3 seed =
                 v3(uniform_in(&r, -2, 2), uniform_in(&r, -2, 2), uniform_in(&r, -2, 2));
             ix dF;
+            int undefined;
             ix F = expr_eval_ix(&p, ix_make(lo[0], hi[0]), ix_make(lo[1], hi[1]),
-                                ix_make(lo[2], hi[2]), seed, &dF);
+                                ix_make(lo[2], hi[2]), seed, &dF, &undefined);
             for (int s = 0; s < 24; s++) {
                 double u[3];
                 for (int k = 0; k < 3; k++) {
@@ -225,8 +227,12 @@ static void test_interval_enclosure(void **state)
                 double v = expr_eval(&p, q);
                 double dv;
                 double v2 = expr_eval_dual(&p, q, seed, &dv);
-                if (isnan(v))
-                    continue; /* outside the domain */
+                if (isnan(v)) {
+                    /* outside the domain: the evaluator must have said so */
+                    assert_true(undefined != 0);
+                    continue;
+                }
+                assert_true(undefined != 2);
                 assert_true(v == v2 || (isnan(v) && isnan(v2)));
                 checks++;
                 if (!ix_contains(F, v))
@@ -353,6 +359,28 @@ static void test_known_roots(void **state)
     assert_true(fabs(r.t[0] + 0.8) <= 1e-14 && fabs(r.t[1] - 0.8) <= 1e-14);
 }
 
+/* Fields undefined on part of the ray (NaN counts as outside): the sign
+ * change at the edge of the domain is a crossing like any other, so the
+ * crossings still alternate. sqrt(x) - 0.5 < 0 on [0, 0.25); log(x) + 1
+ * < 0 on (0, 1/e); max(sqrt(x), 0.1) - 0.5 < 0 on x < 0.25, since fmax
+ * drops a NaN operand: there it is inside from x = -1 on. */
+static void test_domain_edges(void **state)
+{
+    (void)state;
+    vec3 o = v3(0, 0, 0), dx = v3(1, 0, 0);
+    solve_result r = crossings("sqrt(x) - 0.5", SOLVE_INTERVAL, 1e-9, o, dx, -1, 1);
+    assert_false(r.inside_start);
+    assert_int_equal(r.total, 2);
+    assert_true(fabs(r.t[0]) <= 1e-9 && fabs(r.t[1] - 0.25) <= 1e-15);
+    r = crossings("log(x) + 1", SOLVE_INTERVAL, 1e-9, o, dx, -1, 1);
+    assert_int_equal(r.total, 2);
+    assert_true(fabs(r.t[0]) <= 1e-9 && fabs(r.t[1] - exp(-1)) <= 1e-15);
+    r = crossings("max(sqrt(x), 0.1) - 0.5", SOLVE_INTERVAL, 1e-9, o, dx, -1, 1);
+    assert_true(r.inside_start);
+    assert_int_equal(r.total, 1);
+    assert_true(fabs(r.t[0] - 0.25) <= 1e-15);
+}
+
 /* Near-double roots: (x - a)(x - a - delta) has two crossings delta
  * apart. The interval method finds both for every delta above its
  * tolerance, at random positions; fixed steps longer than delta cannot. */
@@ -474,6 +502,7 @@ int main(void)
         cmocka_unit_test(test_interval_rules),
         cmocka_unit_test(test_dual_derivatives),
         cmocka_unit_test(test_known_roots),
+        cmocka_unit_test(test_domain_edges),
         cmocka_unit_test(test_near_double_roots),
         cmocka_unit_test(test_lipschitz),
         cmocka_unit_test(test_span_cap),

@@ -428,6 +428,8 @@ static void test_spans_agree_with_inside(void **state)
         "smin(sqrt(x*x + y*y + z*z) - 0.8, max(abs(x - 0.9), abs(y), abs(z)) - 0.4, 0.3)",
         "(x*x + y*y + z*z - 1)^3",
         "z - 0.2 * sin(5 * x) * cos(4 * y)",
+        "sqrt(x + 0.8) - 0.9 + 0.3 * y", /* NaN (outside) for x < -0.8 */
+        "max(log(x + 1), -1) + y * y + z * z - 0.5",
     };
     for (size_t i = 0; i < sizeof fields / sizeof fields[0]; i++) {
         expr_program f;

@@ -680,12 +680,25 @@ static ix ix_apply(const expr_insn *in, ix a, ix b)
     }
 }
 
-ix expr_eval_ix(const expr_program *p, ix x, ix y, ix z, vec3 seed, ix *derivative)
+/* Where f is NaN. The double evaluator gives NaN for sqrt of a negative
+ * and log of a negative number, and NaN spreads through every operation
+ * but min and max (fmin and fmax return the other operand); the solvers
+ * read NaN as outside. Each register carries, beside the enclosure of its
+ * values where they are numbers, whether it may be NaN at some point of
+ * the box (some) and whether it is NaN at every point (all). */
+typedef struct nan_state {
+    uint8_t some, all;
+} nan_state;
+
+ix expr_eval_ix(const expr_program *p, ix x, ix y, ix z, vec3 seed, ix *derivative,
+                int *undefined)
 {
     ix v[EXPR_MAX_CODE], d[EXPR_MAX_CODE];
+    nan_state nan[EXPR_MAX_CODE];
     int want = derivative != NULL;
     for (uint32_t i = 0; i < p->count; i++) {
         const expr_insn *in = &p->code[i];
+        nan[i].some = nan[i].all = 0;
         switch (in->op) {
         case EXPR_X:
             v[i] = x, d[i] = ix_point(seed.x);
@@ -702,14 +715,57 @@ ix expr_eval_ix(const expr_program *p, ix x, ix y, ix z, vec3 seed, ix *derivati
         default:
             break;
         }
-        v[i] = ix_apply(in, v[in->a], v[in->b]);
+        ix a = v[in->a], b = v[in->b];
+        nan_state na = nan[in->a], nb = nan[in->b];
+        if (in->op == EXPR_MIN || in->op == EXPR_MAX) {
+            /* NaN only where both are; where one is, the other is taken */
+            nan[i].some = na.some && nb.some;
+            nan[i].all = na.all && nb.all;
+            if (na.all || nb.all) {
+                v[i] = na.all ? b : a;
+                d[i] = na.all ? d[in->b] : d[in->a];
+                continue;
+            }
+            v[i] = ix_apply(in, a, b);
+            if (want)
+                d[i] = ix_derivative(in, a, b, v[i], d[in->a], d[in->b]);
+            if (na.some) {
+                v[i] = ix_hull(v[i], b);
+                d[i] = ix_hull(d[i], d[in->b]);
+            }
+            if (nb.some) {
+                v[i] = ix_hull(v[i], a);
+                d[i] = ix_hull(d[i], d[in->a]);
+            }
+            continue;
+        }
+        int unary = in->a == in->b;
+        nan[i].some = na.some || (!unary && nb.some);
+        nan[i].all = na.all || (!unary && nb.all);
+        if ((in->op == EXPR_SQRT || in->op == EXPR_LOG) && !(a.lo >= 0)) {
+            nan[i].some = 1;
+            nan[i].all |= a.hi < 0;
+        }
+        if (in->op == EXPR_POWI && in->n == 0) /* pow(NaN, 0) = 1 */
+            nan[i].some = nan[i].all = 0;
+        v[i] = ix_apply(in, a, b);
         if (want)
-            d[i] = ix_derivative(in, v[in->a], v[in->b], v[i], d[in->a], d[in->b]);
+            d[i] = ix_derivative(in, a, b, v[i], d[in->a], d[in->b]);
     }
-    if (!p->count) {
+    int state = 0;
+    if (!p->count)
+        state = 1;
+    else if (nan[p->count - 1].all)
+        state = 2;
+    else if (nan[p->count - 1].some)
+        state = 1;
+    if (undefined)
+        *undefined = state;
+    /* Where f may be NaN nothing bounds its sign: say so (NaN ends). */
+    if (state) {
         if (want)
-            *derivative = ix_entire();
-        return ix_entire();
+            *derivative = ix_make(NAN, NAN);
+        return ix_make(NAN, NAN);
     }
     if (want)
         *derivative = d[p->count - 1];

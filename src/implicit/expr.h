@@ -31,7 +31,10 @@
  *   expr_eval_ix    an interval enclosure of the value over a box of
  *                   points, and optionally of the derivative along a seed
  *                   (the points x = X(t) with X' = seed): a guaranteed
- *                   enclosure with outward rounding (interval.h).
+ *                   enclosure with outward rounding (interval.h). Where
+ *                   f is NaN on part of the box (sqrt or log of a
+ *                   negative, whose NaN min and max do not drop) it says
+ *                   so instead.
  */
 #ifndef SPANCAST_IMPLICIT_EXPR_H
 #define SPANCAST_IMPLICIT_EXPR_H
@@ -105,8 +108,12 @@ double expr_eval(const expr_program *p, vec3 q);
 double expr_eval_dual(const expr_program *p, vec3 q, vec3 seed, double *derivative);
 
 /* Encloses f over the box X x Y x Z; when derivative is not NULL, also
- * encloses the derivative along seed (constant over the box). */
-ix expr_eval_ix(const expr_program *p, ix x, ix y, ix z, vec3 seed, ix *derivative);
+ * encloses the derivative along seed (constant over the box). When
+ * undefined is not NULL it is set to 0 when f is a number at every point
+ * of the box, 1 when it may be NaN at some point, 2 when it is NaN at
+ * every point; in the last two cases the enclosures are NaN (unknown). */
+ix expr_eval_ix(const expr_program *p, ix x, ix y, ix z, vec3 seed, ix *derivative,
+                int *undefined);
 
 /* The name of an operation, for dumps and tests. */
 const char *expr_op_name(expr_op op);

@@ -108,8 +108,11 @@ static void solve_interval(const expr_program *f, const solve_options *opt, vec3
         ix y = ix_add(ix_point(o.y), ix_mul(tt, ix_point(d.y)));
         ix z = ix_add(ix_point(o.z), ix_mul(tt, ix_point(d.z)));
         ix df;
-        ix fv = expr_eval_ix(f, x, y, z, d, &df);
+        int undefined;
+        ix fv = expr_eval_ix(f, x, y, z, d, &df, &undefined);
         r->evals++;
+        if (undefined == 2)
+            continue; /* NaN throughout: outside throughout */
         int unknown = isnan(fv.lo) || isnan(fv.hi);
         if (!unknown && (fv.lo >= 0 || fv.hi < 0))
             continue; /* one sign throughout: no crossing */
