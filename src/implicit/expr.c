@@ -513,6 +513,12 @@ double expr_eval_dual(const expr_program *p, vec3 q, vec3 seed, double *derivati
         default:
             break;
         }
+        if (in->op == EXPR_SIN || in->op == EXPR_COS) {
+            double s = sin(a), c = cos(a); /* one sincos call */
+            v[i] = in->op == EXPR_SIN ? s : c;
+            d[i] = (in->op == EXPR_SIN ? c : -s) * da;
+            continue;
+        }
         double r = apply(in->op, a, b, in->n), dr = 0;
         switch (in->op) {
         case EXPR_ADD:
@@ -544,12 +550,6 @@ double expr_eval_dual(const expr_program *p, vec3 q, vec3 seed, double *derivati
             break;
         case EXPR_MAX:
             dr = a >= b ? da : db;
-            break;
-        case EXPR_SIN:
-            dr = cos(a) * da;
-            break;
-        case EXPR_COS:
-            dr = -sin(a) * da;
             break;
         case EXPR_TAN:
             dr = (1 + r * r) * da;
@@ -748,6 +748,14 @@ ix expr_eval_ix(const expr_program *p, ix x, ix y, ix z, vec3 seed, ix *derivati
         }
         if (in->op == EXPR_POWI && in->n == 0) /* pow(NaN, 0) = 1 */
             nan[i].some = nan[i].all = 0;
+        if (want && (in->op == EXPR_SIN || in->op == EXPR_COS)) {
+            /* the derivative needs the other function over a */
+            ix sa, ca;
+            ix_sincos(a, &sa, &ca);
+            v[i] = in->op == EXPR_SIN ? sa : ca;
+            d[i] = ix_mul(in->op == EXPR_SIN ? ca : ix_neg(sa), d[in->a]);
+            continue;
+        }
         v[i] = ix_apply(in, a, b);
         if (want)
             d[i] = ix_derivative(in, a, b, v[i], d[in->a], d[in->b]);

@@ -85,11 +85,12 @@ ix ix_mul(ix a, ix b)
 {
     double p0 = times(a.lo, b.lo), p1 = times(a.lo, b.hi);
     double p2 = times(a.hi, b.lo), p3 = times(a.hi, b.hi);
-    double lo = fmin(fmin(p0, p1), fmin(p2, p3));
-    double hi = fmax(fmax(p0, p1), fmax(p2, p3));
     if (isnan(p0) || isnan(p1) || isnan(p2) || isnan(p3))
         return ix_make(NAN, NAN);
-    return ix_make(down(lo), up(hi));
+    /* plain comparisons: no NaN is left, and fmin is a libm call */
+    double lo0 = p0 < p1 ? p0 : p1, lo1 = p2 < p3 ? p2 : p3;
+    double hi0 = p0 < p1 ? p1 : p0, hi1 = p2 < p3 ? p3 : p2;
+    return ix_make(down(lo0 < lo1 ? lo0 : lo1), up(hi0 < hi1 ? hi1 : hi0));
 }
 
 ix ix_div(ix a, ix b)
@@ -224,13 +225,15 @@ static int hits_lattice(double lo, double hi, double c, double period)
 }
 
 /* sin or cos (phase 0 or pi/2 for the peak at phase + 2 k pi). */
-static ix periodic(ix a, double peak, double (*fn)(double))
+/* sin or cos over a from its values l, h at the ends: the range of the
+ * ends, extended to 1 or -1 where a peak (phase + 2 k pi) or a trough
+ * lies inside. */
+static ix periodic(ix a, double l, double h, double peak)
 {
     /* Beyond 2^50 the spacing of doubles nears the period: no structure
      * is left to follow. */
     if (!(a.hi - a.lo < 2 * PI) || !(fabs(a.lo) < 0x1p50) || !(fabs(a.hi) < 0x1p50))
         return ix_make(-1, 1);
-    double l = fn(a.lo), h = fn(a.hi);
     double lo = wdown(fmin(l, h)), hi = wup(fmax(l, h));
     if (hits_lattice(a.lo, a.hi, peak, 2 * PI))
         hi = 1;
@@ -241,12 +244,21 @@ static ix periodic(ix a, double peak, double (*fn)(double))
 
 ix ix_sin(ix a)
 {
-    return periodic(a, PI / 2, sin);
+    return periodic(a, sin(a.lo), sin(a.hi), PI / 2);
 }
 
 ix ix_cos(ix a)
 {
-    return periodic(a, 0, cos);
+    return periodic(a, cos(a.lo), cos(a.hi), 0);
+}
+
+void ix_sincos(ix a, ix *s, ix *c)
+{
+    /* sin and cos of the same argument side by side: compilers merge
+     * them into one sincos call. */
+    double sl = sin(a.lo), cl = cos(a.lo), sh = sin(a.hi), ch = cos(a.hi);
+    *s = periodic(a, sl, sh, PI / 2);
+    *c = periodic(a, cl, ch, 0);
 }
 
 ix ix_tan(ix a)

@@ -57,6 +57,7 @@ ix ix_exp(ix a);
 ix ix_log(ix a);
 ix ix_sin(ix a);
 ix ix_cos(ix a);
+void ix_sincos(ix a, ix *s, ix *c); /* both, for about the price of one */
 ix ix_tan(ix a);
 ix ix_atan2(ix y, ix x);
 ix ix_floor(ix a);
