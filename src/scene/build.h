@@ -5,6 +5,8 @@
  *   difference                                first child minus the others
  *   intersection                              intersection of the children
  *   cube, sphere, cylinder, polyhedron        leaves (polyhedron: convex only)
+ *   torus, quadric, implicit                  spancast's curved leaves
+ *                                             (build_implicit.c)
  * Transforms (multmatrix, row-major 4x4) nest and accumulate into each
  * leaf's to_world; an inner colour wins over an outer one; leaves without a
  * colour get OpenSCAD's default face colour (Cornfield, #f9d72c).
