@@ -7,7 +7,9 @@
  *    directions, including rays lying in the coincident planes, must give
  *    the box's span (no slivers, no speckles), and the first hit must lie on
  *    the box face that the ray enters.
- * 2. The property test. Seeded random trees (every primitive kind, boolean
+ * 2. The property test. Seeded random trees (every primitive kind, the
+ *    torus, clipped quadrics and implicit surfaces with several spans per
+ *    ray among them, boolean
  *    depth 4, random affine maps with mirrors and non-uniform scales
  *    composed down the tree) and random rays through their bounds: every
  *    span list is sorted, disjoint and finite, agrees with csg_inside
@@ -32,6 +34,8 @@
 #include <cmocka.h>
 
 #include "csg/csg.h"
+#include "implicit/expr.h"
+#include "implicit/solve.h"
 
 static const double PI = 3.14159265358979323846;
 
@@ -593,6 +597,51 @@ static prim random_prim(gen *g, uint32_t kind)
         }
         p.u.cylinder.r0 = r0;
         p.u.cylinder.r1 = r1;
+        break;
+    }
+    case PRIM_TORUS:
+        p.u.torus.major = uniform_in(&g->r, 0.6, 1.5);
+        p.u.torus.minor = p.u.torus.major * uniform_in(&g->r, 0.1, 0.6);
+        break;
+    case PRIM_QUADRIC: {
+        /* a family (cone, hyperboloids, paraboloid, saddle, cylinder,
+         * sphere), perturbed, in a random box about the origin */
+        static const double families[6][10] = {
+            {1, 1, -1, 0, 0, 0, 0, 0, 0, 0},   {1, 1, -0.5, 0, 0, 0, 0, 0, 0, -0.3},
+            {1, 1, -1, 0, 0, 0, 0, 0, 0, 0.2}, {1, 2, 0, 0, 0, 0, 0, 0, -1, 0},
+            {1, -1, 0, 0, 0, 0, 0, 0, -1, 0},  {2, 1, 0, 0.5, 0, 0, 0, 0, 0, -0.8}};
+        const double *f = families[below(&g->r, 6)];
+        for (int i = 0; i < 10; i++)
+            p.u.quadric.a[i] = f[i] + (f[i] != 0 ? uniform_in(&g->r, -0.2, 0.2) : 0);
+        p.u.quadric.box.lo =
+            v3(-uniform_in(&g->r, 0.4, 1.5), -uniform_in(&g->r, 0.4, 1.5),
+               -uniform_in(&g->r, 0.4, 1.5));
+        p.u.quadric.box.hi = v3(uniform_in(&g->r, 0.4, 1.5), uniform_in(&g->r, 0.4, 1.5),
+                                uniform_in(&g->r, 0.4, 1.5));
+        break;
+    }
+    case PRIM_IMPLICIT: {
+        /* smooth, kinked (min, max, abs), blended (smin) and periodic
+         * fields, with the default method; the bytecode belongs to the
+         * tree */
+        static const char *const fields[5] = {
+            "x*x + y*y + z*z - R*R + 0.1 * sin(4 * x) * cos(3 * y)",
+            "abs(sin(2*x)*cos(2*y) + sin(2*y)*cos(2*z) + sin(2*z)*cos(2*x)) - 0.4",
+            "smin(sqrt(x*x + y*y + z*z) - R, max(abs(x - 0.6), abs(y), abs(z)) - 0.3, "
+            "0.2)",
+            "(x*x + y*y + z*z - R*R)^3",
+            "max(abs(x) + abs(y) + abs(z) - 1.2 * R, 0.3 - sqrt(x*x + y*y))"};
+        const char *src = fields[below(&g->r, 5)];
+        expr_program *prog = csg_builder_alloc(g->b, sizeof *prog);
+        assert_non_null(prog);
+        expr_param param = {"R", uniform_in(&g->r, 0.5, 1.2)};
+        expr_error e;
+        assert_true(expr_compile(src, strlen(src), &param, 1, prog, &e));
+        double h = uniform_in(&g->r, 0.8, 1.6);
+        p.u.implicit.program = prog;
+        p.u.implicit.box = (bbox){v3(-h, -h, -h), v3(h, h, h)};
+        p.u.implicit.tolerance = 1e-9 * h;
+        p.u.implicit.method = SOLVE_INTERVAL;
         break;
     }
     default:

@@ -44,6 +44,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include "cli/bench.h"
 #include "render/image_io.h"
 #include "render/render.h"
 #include "render/shade.h"
@@ -58,6 +59,7 @@ enum { EXIT_FAILED = 1, EXIT_USAGE = 2 };
 static const char usage_text[] =
     "usage: spancast render MODEL -o OUT.png [options]\n"
     "       spancast info MODEL\n"
+    "       spancast bench accuracy --csv FILE [--plot FILE.png] [--rays N]\n"
     "       spancast --help | --version\n"
     "\n"
     "Renders a CSG model (OpenSCAD's .csg export, plus spancast's own nodes)\n"
@@ -742,6 +744,8 @@ int main(int argc, char **argv)
     if (argc < 2)
         return usage_error("missing command (try 'spancast --help')");
     const char *command = argv[1];
+    if (!strcmp(command, "bench"))
+        return bench_main(argc - 2, argv + 2);
     cli_args a;
     memset(&a, 0, sizeof a);
     sc_render_options_init(&a.options);

@@ -47,6 +47,8 @@
 
 #include <math.h>
 
+#include "csg/prim_curved.h"
+
 /* Writes the span [t_in, t_out] when it is finite and ordered; returns the
  * number of spans written (0 or 1). */
 static uint32_t emit(uint32_t leaf, double t_in, uint16_t part_in, double t_out,
@@ -320,6 +322,15 @@ bbox prim_bounds(const prim *p)
     case PRIM_CONVEX:
         b = p->u.convex.bounds;
         break;
+    case PRIM_TORUS:
+        b = prim_torus_bounds(p);
+        break;
+    case PRIM_QUADRIC:
+        b = p->u.quadric.box;
+        break;
+    case PRIM_IMPLICIT:
+        b = p->u.implicit.box;
+        break;
     case PRIM_KIND_COUNT:
         break;
     }
@@ -340,6 +351,12 @@ uint32_t prim_spans(const prim *p, uint32_t leaf, vec3 o, vec3 d, span *out, uin
         return cylinder_spans(p, leaf, o, d, out, cap);
     case PRIM_CONVEX:
         return convex_spans(p, leaf, o, d, out, cap);
+    case PRIM_TORUS:
+        return prim_torus_spans(p, leaf, o, d, out, cap);
+    case PRIM_QUADRIC:
+        return prim_quadric_spans(p, leaf, o, d, out, cap);
+    case PRIM_IMPLICIT:
+        return prim_implicit_spans(p, leaf, o, d, out, cap);
     case PRIM_KIND_COUNT:
         break;
     }
@@ -384,6 +401,12 @@ vec3 prim_normal(const prim *p, vec3 q, uint16_t part)
         if (part < p->u.convex.count)
             return p->u.convex.planes[part].n;
         return v3(0, 0, 1);
+    case PRIM_TORUS:
+        return prim_torus_normal(p, q);
+    case PRIM_QUADRIC:
+        return prim_quadric_normal(p, q, part);
+    case PRIM_IMPLICIT:
+        return prim_implicit_normal(p, q, part);
     case PRIM_KIND_COUNT:
         break;
     }
@@ -413,6 +436,12 @@ int prim_inside(const prim *p, vec3 q)
                 return 0;
         }
         return 1;
+    case PRIM_TORUS:
+        return prim_torus_inside(p, q);
+    case PRIM_QUADRIC:
+        return prim_quadric_inside(p, q);
+    case PRIM_IMPLICIT:
+        return prim_implicit_inside(p, q);
     case PRIM_KIND_COUNT:
         break;
     }
@@ -421,6 +450,14 @@ int prim_inside(const prim *p, vec3 q)
 
 uint32_t prim_max_spans(const prim *p)
 {
-    (void)p; /* every primitive here is convex */
-    return 1;
+    switch (p->kind) {
+    case PRIM_TORUS:
+        return 2; /* a line meets a torus at most four times */
+    case PRIM_QUADRIC:
+        return 2; /* two pieces of the line (a < 0), each clipped to the box */
+    case PRIM_IMPLICIT:
+        return PRIM_IMPLICIT_MAX_SPANS;
+    default:
+        return 1; /* convex */
+    }
 }

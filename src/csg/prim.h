@@ -10,7 +10,9 @@
  *                given part; called only for the hit that survives the
  *                booleans;
  *   prim_inside  point membership, the oracle the tests compare spans with.
- * Every primitive here is convex, so its span list has at most one span.
+ * Sphere, box, frustum and convex polyhedron are convex: one span at most.
+ * Torus, clipped quadric and implicit surface (prim_curved.h) can give
+ * several; prim_max_spans bounds every kind.
  */
 #ifndef SPANCAST_CSG_PRIM_H
 #define SPANCAST_CSG_PRIM_H
@@ -25,6 +27,9 @@ typedef enum prim_kind {
     PRIM_BOX,      /* lo <= p <= hi */
     PRIM_CYLINDER, /* frustum along z: z0 <= z <= z1, radius r0 at z0 to r1 at z1 */
     PRIM_CONVEX,   /* intersection of halfspaces n . p <= d */
+    PRIM_TORUS,    /* (|(x, y)| - R)^2 + z^2 <= r^2, 0 < r < R (prim_torus.c) */
+    PRIM_QUADRIC,  /* Q(p) <= 0 within a box (prim_quadric.c) */
+    PRIM_IMPLICIT, /* f(p) < 0 within a box (prim_implicit.c) */
     PRIM_KIND_COUNT
 } prim_kind;
 
@@ -33,6 +38,12 @@ typedef struct plane {
     vec3 n;
     double d;
 } plane;
+
+struct expr_program;
+
+/* Spans an implicit leaf gives one ray at most; see prim_implicit.c for
+ * what happens to a ray that crosses its surface more often. */
+#define PRIM_IMPLICIT_MAX_SPANS 16
 
 typedef struct prim {
     prim_kind kind;
@@ -52,6 +63,21 @@ typedef struct prim {
             uint32_t count;
             bbox bounds; /* of the polyhedron's vertices */
         } convex;
+        struct {
+            double major, minor; /* R, r */
+        } torus;
+        struct {
+            double a[10]; /* A..J: A x^2 + B y^2 + C z^2 + D xy + E yz + F xz
+                             + G x + H y + I z + J */
+            bbox box;     /* the clipping box */
+        } quadric;
+        struct {
+            const struct expr_program *program; /* owned by the tree's arena */
+            bbox box;                           /* the clipping box */
+            double tolerance;                   /* root-finding tolerance, length */
+            double lipschitz;                   /* bound on |grad f| for sphere tracing */
+            int method;                         /* solve_method */
+        } implicit;
     } u;
 } prim;
 

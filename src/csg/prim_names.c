@@ -13,6 +13,12 @@ const char *prim_kind_name(prim_kind kind)
         return "cylinder";
     case PRIM_CONVEX:
         return "convex polyhedron";
+    case PRIM_TORUS:
+        return "torus";
+    case PRIM_QUADRIC:
+        return "quadric";
+    case PRIM_IMPLICIT:
+        return "implicit";
     case PRIM_KIND_COUNT:
         break;
     }

@@ -38,6 +38,7 @@
 
 #include "base/error.h"
 #include "scene/build_shading.h"
+#include "scene/build_curved.h"
 
 typedef enum node_kind {
     KIND_UNION, /* group, union, render */
@@ -49,6 +50,9 @@ typedef enum node_kind {
     KIND_SPHERE,
     KIND_CYLINDER,
     KIND_POLYHEDRON,
+    KIND_TORUS, /* torus, quadric, implicit: build_implicit.c */
+    KIND_QUADRIC,
+    KIND_IMPLICIT, /* the last leaf kind (is_leaf) */
     KIND_MATERIAL, /* spancast's shading nodes: build_shading.c */
     KIND_LIGHT,
     KIND_CAMERA,
@@ -89,10 +93,10 @@ static const struct {
     {"roof", KIND_UNSUPPORTED},
     {"intersection_for", KIND_UNSUPPORTED},
     /* spancast's own extensions. */
-    {"torus", KIND_UNSUPPORTED},
-    {"quadric", KIND_UNSUPPORTED},
+    {"torus", KIND_TORUS},
+    {"quadric", KIND_QUADRIC},
     {"halfspace", KIND_UNSUPPORTED},
-    {"implicit", KIND_UNSUPPORTED},
+    {"implicit", KIND_IMPLICIT},
     {"material", KIND_MATERIAL},
     {"light", KIND_LIGHT},
     {"camera", KIND_CAMERA},
@@ -110,7 +114,7 @@ static node_kind kind_of(const char *name)
 
 static int is_leaf(node_kind kind)
 {
-    return kind >= KIND_CUBE && kind <= KIND_POLYHEDRON;
+    return kind >= KIND_CUBE && kind <= KIND_IMPLICIT;
 }
 
 typedef struct frame {
@@ -665,6 +669,25 @@ static sc_status build_polyhedron(builder *b, const parse_node *n, const frame *
     return st;
 }
 
+/* torus, quadric, implicit (build_implicit.c). */
+static sc_status build_curved(builder *b, const parse_node *n, node_kind kind,
+                              const frame *state, uint32_t *id)
+{
+    build_ctx c = {b->syntax->file, b->csg, b->error};
+    const char *empty = NULL;
+    prim p;
+    memset(&p, 0, sizeof p);
+    sc_status st = kind == KIND_TORUS ? build_torus(&c, n, state->emit, &p, &empty)
+                   : kind == KIND_QUADRIC
+                       ? build_quadric(&c, n, state->emit, &p, &empty)
+                       : build_implicit(&c, n, state->emit, &p, &empty);
+    if (st != SC_OK || !state->emit)
+        return st;
+    if (empty)
+        return warn(b, &n->loc, "%s", empty);
+    return add_leaf(b, n, &p, state, id);
+}
+
 /* ---- boolean nodes with arguments ---- */
 
 /* multmatrix(m = [[...], [...], [...], [0, 0, 0, 1]]): a row-major 4x4
@@ -886,6 +909,11 @@ static sc_status visit(builder *b, const parse_node *n, int *opened)
             break;
         case KIND_CYLINDER:
             st = build_cylinder(b, n, &f, &id);
+            break;
+        case KIND_TORUS:
+        case KIND_QUADRIC:
+        case KIND_IMPLICIT:
+            st = build_curved(b, n, kind, &f, &id);
             break;
         default:
             st = build_polyhedron(b, n, &f, &id);

@@ -7,6 +7,8 @@
  *   cube, sphere, cylinder, polyhedron        leaves (polyhedron: convex only)
  *   material                                  union; sets its children's material
  *   light, camera, background                 no geometry (build_shading.h)
+ *   torus, quadric, implicit                  spancast's curved leaves
+ *                                             (build_implicit.c)
  * Transforms (multmatrix, row-major 4x4) nest and accumulate into each
  * leaf's to_world; an inner colour wins over an outer one; leaves without a
  * colour get OpenSCAD's default face colour (Cornfield, #f9d72c).

@@ -305,8 +305,10 @@ static const char *string_end(const char *p, const char *end)
 }
 
 /* Decodes the escapes of raw[0 .. n) into out (at least n bytes); returns
- * the decoded length. */
-static size_t decode_string(const char *raw, size_t n, char *out)
+ * the decoded length. With stop_at set, stops as soon as the decoded
+ * length would pass *stop_at and stores there the raw offset reached
+ * (lex_string_locate). */
+static size_t decode_string(const char *raw, size_t n, char *out, size_t *stop_at)
 {
     size_t k = 0;
     const char *p = raw, *end = raw + n;
@@ -316,6 +318,8 @@ static size_t decode_string(const char *raw, size_t n, char *out)
             p++;
             continue;
         }
+        if (stop_at && k >= *stop_at)
+            break;
         if (c != '\\') {
             out[k++] = c;
             p++;
@@ -361,7 +365,44 @@ static size_t decode_string(const char *raw, size_t n, char *out)
         p++;
     }
     out[k] = '\0';
+    if (stop_at)
+        *stop_at = (size_t)(p - raw);
     return k;
+}
+
+void lex_string_locate(const char *raw, size_t raw_length, int quote_line,
+                       int quote_column, size_t offset, int *line, int *column)
+{
+    /* Decoding never lengthens (lex_string), so raw_length + 1 bytes hold
+     * any prefix; a small buffer serves strings up to its size, longer
+     * ones are decoded in the same pass without keeping the bytes. */
+    char buf[256];
+    char *out = buf;
+    char *heap = NULL;
+    if (raw_length + 1 > sizeof buf) {
+        heap = malloc(raw_length + 1);
+        out = heap;
+    }
+    size_t stop = offset;
+    if (out)
+        decode_string(raw, raw_length, out, &stop);
+    else
+        stop = offset < raw_length ? offset : raw_length; /* no memory: approximate */
+    free(heap);
+    /* Skip raw line breaks that come before the character. */
+    while (stop < raw_length && (raw[stop] == '\n' || raw[stop] == '\r'))
+        stop++;
+    int l = quote_line, c = quote_column + 1;
+    for (size_t i = 0; i < stop; i++) {
+        if (raw[i] == '\n') {
+            l++;
+            c = 1;
+        } else {
+            c++;
+        }
+    }
+    *line = l;
+    *column = c;
 }
 
 static sc_status lex_string(lexer *lx, lex_token *tok, sc_error *error)
@@ -382,7 +423,7 @@ static sc_status lex_string(lexer *lx, lex_token *tok, sc_error *error)
         return err_set(error, SC_ERR_NOMEM, NULL, "out of memory");
     tok->kind = LEX_STRING;
     tok->string = out;
-    tok->string_length = decode_string(raw, n, out);
+    tok->string_length = decode_string(raw, n, out, NULL);
     /* Keep line numbers right across raw line breaks in the string. */
     for (const char *q = raw; q < close; q++) {
         if (*q == '\n') {

@@ -73,6 +73,15 @@ void lex_init(lexer *lx, const char *file, const char *text, size_t length,
  * text it keeps returning LEX_EOF. */
 sc_status lex_next(lexer *lx, lex_token *tok, sc_error *error);
 
+/* The source position of byte `offset` of a string's decoded contents,
+ * given its raw text (between the quotes, raw[0 .. raw_length)) and the
+ * position of its opening quote: escapes and raw line breaks are walked as
+ * the lexer decodes them, so the position names the character as written
+ * (the backslash of an escape). An offset at or past the end names the
+ * closing quote. */
+void lex_string_locate(const char *raw, size_t raw_length, int quote_line,
+                       int quote_column, size_t offset, int *line, int *column);
+
 /* A short description of a token kind for messages: "')'", "a number", ... */
 const char *lex_kind_name(lex_kind kind);
 

@@ -154,6 +154,14 @@ static sc_status parse_value_into(parser *ps, parse_value *out)
             v.kind = PARSE_STRING;
             v.u.string.chars = ps->tok.string;
             v.u.string.length = ps->tok.string_length;
+            /* The raw text between the quotes, kept for positions inside
+             * the string (expressions report errors there). */
+            v.u.string.raw_length = ps->tok.length - 2;
+            v.u.string.raw = arena_alloc(&ps->tree->mem, ps->tok.length - 1);
+            if (!v.u.string.raw)
+                return err_set(ps->error, SC_ERR_NOMEM, NULL, "out of memory");
+            memcpy((char *)v.u.string.raw, ps->tok.start + 1, ps->tok.length - 2);
+            ((char *)v.u.string.raw)[ps->tok.length - 2] = '\0';
             break;
         case LEX_TRUE:
         case LEX_FALSE:

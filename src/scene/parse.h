@@ -53,6 +53,9 @@ struct parse_value {
         struct {
             const char *chars; /* decoded, NUL-terminated */
             size_t length;
+            const char *raw; /* as written between the quotes (for positions
+                                inside the string, see lex_string_locate) */
+            size_t raw_length;
         } string;
         struct {
             const parse_value *items;

@@ -1,0 +1,34 @@
+/* Builder of spancast's own curved leaves (build_implicit.c):
+ *   torus(r1, r2)                         major radius r1 in the xy plane,
+ *                                         minor radius r2
+ *   quadric(a, bounds)                    A x^2 + B y^2 + C z^2 + D xy
+ *                                         + E yz + F xz + G x + H y + I z + J
+ *                                         <= 0 inside the box bounds
+ *   implicit(f, bounds, method, tolerance, params, lipschitz)
+ *                                         f(x, y, z) < 0 inside the box
+ * build.c dispatches to these; each reads and checks its node's arguments
+ * and, when emit is set, fills the primitive (the implicit's bytecode is
+ * allocated from the tree's memory). A shape that makes no geometry sets
+ * *empty to a warning message instead.
+ */
+#ifndef SPANCAST_SCENE_BUILD_CURVED_H
+#define SPANCAST_SCENE_BUILD_CURVED_H
+
+#include "csg/csg.h"
+#include "scene/parse.h"
+#include "spancast/spancast.h"
+
+typedef struct build_ctx {
+    const char *file; /* for positions */
+    csg_builder *csg; /* owner of the bytecode */
+    sc_error *error;
+} build_ctx;
+
+sc_status build_torus(const build_ctx *c, const parse_node *n, int emit, prim *out,
+                      const char **empty);
+sc_status build_quadric(const build_ctx *c, const parse_node *n, int emit, prim *out,
+                        const char **empty);
+sc_status build_implicit(const build_ctx *c, const parse_node *n, int emit, prim *out,
+                         const char **empty);
+
+#endif
