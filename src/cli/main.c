@@ -59,6 +59,8 @@ static const char usage_text[] =
     "  --viewall              move the camera until the whole model is in view\n"
     "  --autocenter           with --viewall: look at the centre of the model\n"
     "  --threads=N            worker threads (default 0: all cores)\n"
+    "  --faithful             spheres and cylinders as the polyhedra OpenSCAD makes\n"
+    "                         from $fn, $fa, $fs (default: exact solids)\n"
     "  -q, --quiet            no summary line on stderr\n"
     "\n"
     "Without --camera, spancast looks at the centre of the model from OpenSCAD's\n"
@@ -173,7 +175,8 @@ typedef enum opt_id {
     OPT_VIEWALL,
     OPT_AUTOCENTER,
     OPT_THREADS,
-    OPT_QUIET
+    OPT_QUIET,
+    OPT_FAITHFUL
 } opt_id;
 
 typedef struct opt_spec {
@@ -189,7 +192,7 @@ static const opt_spec options_table[] = {
     {"--imgsize", OPT_IMGSIZE, 1, 1},       {"--fov", OPT_FOV, 1, 1},
     {"--projection", OPT_PROJECTION, 1, 1}, {"--viewall", OPT_VIEWALL, 0, 1},
     {"--autocenter", OPT_AUTOCENTER, 0, 1}, {"--threads", OPT_THREADS, 1, 1},
-    {"--quiet", OPT_QUIET, 0, 0},
+    {"--quiet", OPT_QUIET, 0, 0},           {"--faithful", OPT_FAITHFUL, 0, 0},
 };
 
 typedef struct cli_args {
@@ -197,6 +200,7 @@ typedef struct cli_args {
     const char *input;
     const char *output, *mask, *depth;
     int quiet;
+    int faithful; /* --faithful: OpenSCAD's polyhedra for spheres and cylinders */
     sc_render_options options;
 } cli_args;
 
@@ -275,6 +279,9 @@ static int apply_option(cli_args *a, opt_id id, const char *value)
     }
     case OPT_QUIET:
         a->quiet = 1;
+        return 0;
+    case OPT_FAITHFUL:
+        a->faithful = 1;
         return 0;
     }
     return 0;
@@ -364,10 +371,11 @@ static double seconds_now(void)
     return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
 }
 
-static sc_scene *load(const char *path)
+static sc_scene *load(const char *path, int faithful)
 {
     sc_load_options lo;
     sc_load_options_init(&lo);
+    lo.faithful = faithful;
     sc_scene *scene = NULL;
     sc_error error;
     if (sc_scene_load(path, &lo, &scene, &error) != SC_OK) {
@@ -382,7 +390,7 @@ static sc_scene *load(const char *path)
 
 static int run_info(const cli_args *a)
 {
-    sc_scene *scene = load(a->input);
+    sc_scene *scene = load(a->input, a->faithful);
     if (!scene)
         return EXIT_FAILED;
     sc_scene_info info;
@@ -411,7 +419,7 @@ static int run_render(cli_args *a)
         return usage_error("%s", error.message);
 
     double start = seconds_now();
-    sc_scene *scene = load(a->input);
+    sc_scene *scene = load(a->input, a->faithful);
     if (!scene)
         return EXIT_FAILED;
     a->options.want_color = 1;
