@@ -10,11 +10,14 @@
  *   mask: at most 0.05 % of the pixels differ, and every differing pixel is
  *   within 1 pixel of a silhouette edge of the reference (its 3 x 3
  *   neighbourhood in the reference mask holds both a hit and a miss);
- *   depth: relative difference at most 1e-5 (float32 carries 6e-8; the
- *   margin covers vertices rounded to float32, some 20 units in the last
- *   place of depth on faces seen at up to 80 degrees) where both hit, away
- *   from edges: the pixel's 3 x 3 neighbourhood is all hits in both masks
- *   and the reference depth is continuous across it (see is_edge).
+ *   depth: relative difference at most 1e-5 where both hit, away from
+ *   edges: the pixel's 3 x 3 neighbourhood is all hits in both masks and
+ *   the reference depth is continuous across it (see is_edge). The
+ *   reference's vertices are float32 (relative rounding 6e-8) and, before
+ *   CGAL booleans, snapped by OpenSCAD to a grid of 2^-20 (about 1e-6
+ *   absolute); a moved vertex moves the depth by its shift over the cosine
+ *   of the incidence. 1e-5 leaves room for both on the suite's models,
+ *   which are a few units across or more and seen from tens of units.
  *
  * Exact mode (--exact): spancast renders the true solid, the reference is
  * OpenSCAD's mesh of a sphere or cylinder of radius R with FN fragments.
