@@ -58,7 +58,7 @@ const char *sc_error_format(const sc_error *error, char *buf, size_t size);
 typedef struct sc_scene sc_scene;
 
 typedef struct sc_load_options {
-    int faithful; /* reserved: render OpenSCAD's polygons for curved solids */
+    int faithful; /* spheres and cylinders as OpenSCAD's polyhedra for $fn, $fa, $fs */
 } sc_load_options;
 
 void sc_load_options_init(sc_load_options *options);

@@ -89,6 +89,8 @@ static const char usage_text[] =
     "  --max-depth=N          reflection and refraction bounces (default 5)\n"
     "  --region=X0,Y0,X1,Y1   render only this crop (X1, Y1 exclusive)\n"
     "  --threads=N            worker threads (default 0: all cores)\n"
+    "  --faithful             spheres and cylinders as the polyhedra OpenSCAD makes\n"
+    "                         from $fn, $fa, $fs (default: exact solids)\n"
     "  --stats[=json]         print rays by kind, primitive tests, span operations\n"
     "                         and time per stage on stdout\n"
     "  -q, --quiet            no progress bar and no summary line on stderr\n"
@@ -213,7 +215,8 @@ typedef enum opt_id {
     OPT_SPP,
     OPT_MAX_DEPTH,
     OPT_REGION,
-    OPT_STATS
+    OPT_STATS,
+    OPT_FAITHFUL
 } opt_id;
 
 typedef struct opt_spec {
@@ -241,6 +244,7 @@ static const opt_spec options_table[] = {
     {"--max-depth", OPT_MAX_DEPTH, 1, 1},
     {"--region", OPT_REGION, 1, 1},
     {"--stats", OPT_STATS, 2, 1},
+    {"--faithful", OPT_FAITHFUL, 0, 0},
 };
 
 typedef struct cli_args {
@@ -248,7 +252,8 @@ typedef struct cli_args {
     const char *input;
     const char *output, *mask, *depth, *normal, *id;
     int quiet;
-    int stats; /* 0 none, 1 text, 2 JSON */
+    int stats;    /* 0 none, 1 text, 2 JSON */
+    int faithful; /* --faithful: OpenSCAD's polyhedra for spheres and cylinders */
     sc_render_options options;
 } cli_args;
 
@@ -368,6 +373,9 @@ static int apply_option(cli_args *a, opt_id id, const char *value)
             a->stats = 2;
         else
             return usage_error("--stats takes no value or '=json'");
+        return 0;
+    case OPT_FAITHFUL:
+        a->faithful = 1;
         return 0;
     }
     return 0;
@@ -499,10 +507,11 @@ static double seconds_now(void)
     return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
 }
 
-static sc_scene *load(const char *path)
+static sc_scene *load(const char *path, int faithful)
 {
     sc_load_options lo;
     sc_load_options_init(&lo);
+    lo.faithful = faithful;
     sc_scene *scene = NULL;
     sc_error error;
     if (sc_scene_load(path, &lo, &scene, &error) != SC_OK) {
@@ -517,7 +526,7 @@ static sc_scene *load(const char *path)
 
 static int run_info(const cli_args *a)
 {
-    sc_scene *scene = load(a->input);
+    sc_scene *scene = load(a->input, a->faithful);
     if (!scene)
         return EXIT_FAILED;
     sc_scene_info info;
@@ -666,7 +675,7 @@ static int run_render(cli_args *a, int argc, char **argv)
 
     double start = seconds_now();
     catch_interrupts();
-    sc_scene *scene = load(a->input);
+    sc_scene *scene = load(a->input, a->faithful);
     if (interrupt_signal)
         return die_interrupted();
     if (!scene)

@@ -39,6 +39,7 @@
 #include "base/error.h"
 #include "scene/build_shading.h"
 #include "scene/build_curved.h"
+#include "scene/faithful.h"
 
 typedef enum node_kind {
     KIND_UNION, /* group, union, render */
@@ -139,6 +140,7 @@ typedef struct builder {
     frame *frames;
     size_t frame_count, frame_cap;
     shading *shading;       /* lights, materials, camera, background */
+    int faithful;           /* OpenSCAD's polyhedra for spheres and cylinders */
     const parse_node *root; /* the first '!' node, or NULL */
     uint32_t root_id;       /* its result */
 } builder;
@@ -337,6 +339,12 @@ static sc_status build_sphere(builder *b, const parse_node *n, const frame *stat
     memset(&p, 0, sizeof p);
     p.kind = PRIM_SPHERE;
     p.u.sphere.r = r;
+    if (b->faithful) {
+        double fn, fa, fs;
+        parse_node_resolution(n, &fn, &fa, &fs);
+        if ((st = faithful_sphere(b->csg, r, fn, fa, fs, &n->loc, &p, b->error)) != SC_OK)
+            return st;
+    }
     return add_leaf(b, n, &p, state, id);
 }
 
@@ -375,6 +383,13 @@ static sc_status build_cylinder(builder *b, const parse_node *n, const frame *st
     p.u.cylinder.z1 = center ? h / 2 : h;
     p.u.cylinder.r0 = r1;
     p.u.cylinder.r1 = r2;
+    if (b->faithful) {
+        double fn, fa, fs;
+        parse_node_resolution(n, &fn, &fa, &fs);
+        if ((st = faithful_cylinder(b->csg, p.u.cylinder.z0, p.u.cylinder.z1, r1, r2, fn,
+                                    fa, fs, &n->loc, &p, b->error)) != SC_OK)
+            return st;
+    }
     return add_leaf(b, n, &p, state, id);
 }
 
@@ -987,14 +1002,15 @@ static sc_status walk(builder *b, uint32_t *root)
     return csg_builder_failed(b->csg) ? nomem(b) : SC_OK;
 }
 
-sc_status build_tree(const parse_tree *syntax, csg_tree **out, sc_error **warnings,
-                     size_t *warning_count, sc_error *error)
+sc_status build_tree(const parse_tree *syntax, int faithful, csg_tree **out,
+                     sc_error **warnings, size_t *warning_count, sc_error *error)
 {
-    return build_scene(syntax, out, NULL, warnings, warning_count, error);
+    return build_scene(syntax, faithful, out, NULL, warnings, warning_count, error);
 }
 
-sc_status build_scene(const parse_tree *syntax, csg_tree **out, shading **look,
-                      sc_error **warnings, size_t *warning_count, sc_error *error)
+sc_status build_scene(const parse_tree *syntax, int faithful, csg_tree **out,
+                      shading **look, sc_error **warnings, size_t *warning_count,
+                      sc_error *error)
 {
     *out = NULL;
     if (look)
@@ -1005,6 +1021,7 @@ sc_status build_scene(const parse_tree *syntax, csg_tree **out, shading **look,
     memset(&b, 0, sizeof b);
     b.syntax = syntax;
     b.error = error;
+    b.faithful = faithful;
     b.root = find_root(syntax);
     b.root_id = CSG_EMPTY;
     b.csg = csg_builder_new();

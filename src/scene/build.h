@@ -54,18 +54,20 @@
         249 / 255.0f, 215 / 255.0f, 44 / 255.0f, 1.0f                                    \
     }
 
-/* Builds the CSG tree of syntax. On success *out owns the tree (free with
- * csg_tree_free) and *warnings is a malloc'd array of *warning_count
+/* Builds the CSG tree of syntax; with faithful set, spheres and cylinders
+ * become OpenSCAD's polyhedra for their $fn, $fa, $fs (faithful.h). On success *out owns
+ * the tree (free with csg_tree_free) and *warnings is a malloc'd array of *warning_count
  * warnings in source order (NULL when there are none; free with free()).
  * On failure nothing is returned and error says where and why. */
-sc_status build_tree(const parse_tree *syntax, csg_tree **out, sc_error **warnings,
-                     size_t *warning_count, sc_error *error);
+sc_status build_tree(const parse_tree *syntax, int faithful, csg_tree **out,
+                     sc_error **warnings, size_t *warning_count, sc_error *error);
 
 /* The same, and also the scene's shading record (lights, materials, camera,
  * background: build_shading.h) in *look when look is not NULL (free with
  * shading_free). */
-sc_status build_scene(const parse_tree *syntax, csg_tree **out, shading **look,
-                      sc_error **warnings, size_t *warning_count, sc_error *error);
+sc_status build_scene(const parse_tree *syntax, int faithful, csg_tree **out,
+                      shading **look, sc_error **warnings, size_t *warning_count,
+                      sc_error *error);
 
 /* Looks up an OpenSCAD colour: a CSS/SVG name (any case) or "#rgb",
  * "#rgba", "#rrggbb", "#rrggbbaa". Returns 1 and fills rgba (0..1) when

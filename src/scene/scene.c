@@ -35,7 +35,6 @@ sc_status sc_scene_load_string(const char *name, const char *text, size_t length
                                const sc_load_options *options, sc_scene **scene,
                                sc_error *error)
 {
-    (void)options; /* faithful mode is not implemented yet */
     err_clear(error);
     *scene = NULL;
     if (!text && length)
@@ -48,8 +47,8 @@ sc_status sc_scene_load_string(const char *name, const char *text, size_t length
     parse_tree *syntax = NULL;
     sc_status st = parse_text(s->path, text ? text : "", length, &syntax, error);
     if (st == SC_OK)
-        st = build_scene(syntax, &s->tree, &s->look, &s->warnings, &s->warning_count,
-                         error);
+        st = build_scene(syntax, options && options->faithful, &s->tree, &s->look,
+                         &s->warnings, &s->warning_count, error);
     parse_tree_free(syntax);
     if (st != SC_OK) {
         sc_scene_release(s);

@@ -1,0 +1,69 @@
+#!/usr/bin/env bash
+# One model of the cross-check suite (see CMakeLists.txt here):
+#   run.sh SPANCAST REFCAST COMPARE MODEL.scad WORKDIR W,H
+# OpenSCAD writes MODEL.csg (spancast's input) and, from that .csg itself,
+# the binary STL mesh (the reference), so both sides start from the same
+# 6-digit numbers. spancast --faithful and refcast render mask and depth on
+# the camera the model names in its comments:
+#   // camera: EX,EY,EZ,CX,CY,CZ       (required)
+#   // projection: o                   (optional; default perspective)
+#   // exact: sphere|cylinder,R,FN     (optional: also render the exact
+#                                       solid and check it against the mesh
+#                                       within the tessellation's bound)
+# compare judges each pair and prints its row; the rows also go to
+# WORKDIR/rows, which tests/crosscheck/report gathers. Exits non-zero when
+# any check fails.
+set -euo pipefail
+spancast=$1 refcast=$2 compare=$3 model=$4 work=$5 size=$6
+name=$(basename "$model" .scad)
+rm -rf "$work"
+mkdir -p "$work"
+work=$(cd "$work" && pwd)
+
+setting() { sed -n "s|^// $1: *||p" "$model" | head -n 1; }
+camera=$(setting camera)
+projection=$(setting projection)
+exact=$(setting exact)
+[[ -n "$camera" ]] || { echo "$model: no '// camera:' line" >&2; exit 2; }
+view=(--camera="$camera" --imgsize="$size" --projection="${projection:-p}")
+
+now() { date +%s.%N; }
+elapsed() { awk -v a="$1" -v b="$2" 'BEGIN { printf "%.2f", b - a }'; }
+
+cp "$model" "$work/$name.scad"
+openscad -o "$work/$name.csg" "$work/$name.scad" >"$work/openscad.log" 2>&1 ||
+    { cat "$work/openscad.log" >&2; exit 1; }
+t0=$(now)
+openscad --export-format binstl -o "$work/$name.stl" "$work/$name.csg" \
+    >>"$work/openscad.log" 2>&1 || { cat "$work/openscad.log" >&2; exit 1; }
+t1=$(now)
+mesh_time=$(elapsed "$t0" "$t1")
+"$refcast" "$work/$name.stl" "${view[@]}" --mask="$work/ref_mask.png" \
+    --depth="$work/ref_depth.exr" --cos="$work/ref_cos.exr"
+
+status=0
+: >"$work/rows"
+# check LABEL [--faithful] [compare options]: render with spancast, compare.
+check() {
+    local label=$1 mode=$2
+    shift 2
+    local row seconds
+    "$spancast" render "$work/$name.csg" $mode "${view[@]}" -o "$work/$label.png" \
+        --mask="$work/${label}_mask.png" --depth="$work/${label}_depth.exr" \
+        2>"$work/$label.log" || { cat "$work/$label.log" >&2; exit 1; }
+    # spancast's summary line: load, render and write, in seconds.
+    seconds=$(sed -n 's/^spancast: wrote .* in \([0-9.]*\) s$/\1/p' "$work/$label.log")
+    if row=$("$compare" "$work/ref_mask.png" "$work/ref_depth.exr" \
+        "$work/${label}_mask.png" "$work/${label}_depth.exr" "$@"); then
+        result=pass
+    else
+        result=FAIL
+        status=1
+    fi
+    echo "$label $row $mesh_time ${seconds:-?} $result" | tee -a "$work/rows"
+}
+check "$name" --faithful
+if [[ -n "$exact" ]]; then
+    check "$name.exact" "" --exact="$exact" --cos="$work/ref_cos.exr"
+fi
+exit $status
