@@ -10,10 +10,13 @@
 //
 // Cancellation: the framebuffer carries the caller's cancel flag (set, for
 // instance, by the command line's SIGINT handler). The writer polls it before
-// it creates the temporary, between chunks of scanlines (OpenImageIO's
-// progress callback, which stops the write) and just before the rename; once
-// it is set, the temporary is removed and the target is not touched. Only a
-// flag read is involved, so nothing here has to be async-signal-safe.
+// it creates the temporary, before it opens the image in it, and after the
+// image is complete, just before the rename; once it is set, the temporary is
+// removed and the target is not touched. A write that has begun is finished
+// first: stopping one midway (OpenImageIO's progress callback) makes libpng
+// print an error of its own on stderr for the file it cannot close, and an
+// image write is short beside the render before it. Only a flag read is
+// involved, so nothing here has to be async-signal-safe.
 //
 // This is the one C++ file of the library: a thin layer that converts
 // OpenImageIO's errors into sc_error values and never lets an exception out.
@@ -156,12 +159,6 @@ bool cancelled(const volatile sig_atomic_t *cancel)
     return cancel && *cancel;
 }
 
-// OpenImageIO's progress callback: returning true stops the write.
-bool progress(void *cancel, float /* done */)
-{
-    return cancelled(static_cast<const volatile sig_atomic_t *>(cancel));
-}
-
 sc_status interrupted(sc_error *error)
 {
     return err_set(error, SC_ERR_CANCELLED, nullptr, "interrupted");
@@ -211,9 +208,7 @@ sc_status write_image(const char *path, imgio_kind kind, int width, int height,
         }
         if (!out->open(tmp, spec))
             failure = trimmed(out->geterror());
-        else if (!out->write_image(data_type, data, OIIO::AutoStride, OIIO::AutoStride,
-                                   OIIO::AutoStride, progress,
-                                   const_cast<sig_atomic_t *>(cancel)))
+        else if (!out->write_image(data_type, data))
             failure = trimmed(out->geterror());
         if (!out->close() && failure.empty())
             failure = trimmed(out->geterror());
