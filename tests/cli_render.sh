@@ -148,6 +148,8 @@ leaves: 2 (2 as written)
 depth:  2 (2 as written)
 bvh:    0 nodes
 kinds:  1 sphere, 1 box
+lights: none (the default rig)
+materials: 0 mirror, 0 glass, 0 checkered leaves
 bounds: [-5, -5, -5] to [5, 5, 5]
 EOF
 cmp -s info.txt want.txt || fail "info printed: $(cat info.txt)"

@@ -95,9 +95,13 @@ typedef struct sc_scene_info {
     size_t source_node_count; /* the same before simplification */
     size_t source_leaf_count;
     size_t source_depth;
-    size_t bvh_node_count; /* over wide unions and differences */
-    size_t
-        leaf_kinds[SC_LEAF_KINDS]; /* compiled leaves per kind, see sc_leaf_kind_name */
+    size_t bvh_node_count;            /* over wide unions and differences */
+    size_t leaf_kinds[SC_LEAF_KINDS]; /* leaves per kind (sc_leaf_kind_name) */
+    /* Features the scene uses, which decide the render paths: */
+    size_t lights;         /* light() nodes; 0: the default rig */
+    size_t mirror_leaves;  /* leaves whose material reflects */
+    size_t glass_leaves;   /* leaves whose material transmits */
+    size_t checker_leaves; /* leaves with a checkerboard material */
 } sc_scene_info;
 
 /* Name of leaf kind index k ("sphere", "box", ...), NULL past the last. */

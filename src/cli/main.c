@@ -546,6 +546,12 @@ static int run_info(const cli_args *a)
         sep = ", ";
     }
     printf("%s\n", *sep == ' ' ? " none" : "");
+    if (info.lights)
+        printf("lights: %zu\n", info.lights);
+    else
+        printf("lights: none (the default rig)\n");
+    printf("materials: %zu mirror, %zu glass, %zu checkered leaves\n", info.mirror_leaves,
+           info.glass_leaves, info.checker_leaves);
     if (sc_scene_bounds(scene, lo, hi))
         printf("bounds: [%g, %g, %g] to [%g, %g, %g]\n", lo[0], lo[1], lo[2], hi[0],
                hi[1], hi[2]);

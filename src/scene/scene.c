@@ -170,7 +170,17 @@ void sc_scene_get_info(const sc_scene *scene, sc_scene_info *info)
     info->source_leaf_count = t->source_leaf_count;
     info->source_depth = t->source_depth;
     info->bvh_node_count = t->bvh_node_count;
-    for (uint32_t i = 0; i < t->leaf_count; i++)
-        if ((int)t->leaves[i].prim.kind < SC_LEAF_KINDS)
-            info->leaf_kinds[t->leaves[i].prim.kind]++;
+    const shading *look = scene->look;
+    info->lights = look ? look->light_count : 0;
+    for (uint32_t i = 0; i < t->leaf_count; i++) {
+        const csg_leaf *l = &t->leaves[i];
+        if ((int)l->prim.kind < SC_LEAF_KINDS)
+            info->leaf_kinds[l->prim.kind]++;
+        if (!look || l->material >= look->material_count)
+            continue;
+        const shading_material *m = &look->materials[l->material];
+        info->mirror_leaves += m->reflect > 0;
+        info->glass_leaves += m->transmit > 0;
+        info->checker_leaves += m->checker > 0;
+    }
 }
