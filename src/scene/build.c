@@ -25,9 +25,9 @@
  * by exactly two faces); it takes the plane path when convex: no point may
  * lie on the outer side of a face plane by more than 1e-5 of the largest
  * coordinate, which absorbs the 6 significant digits OpenSCAD writes
- * numbers with. Other polyhedra become triangle meshes (build_mesh.c). (The centroid of
- * the points would orient the planes too, but it can sit on a face of a non-convex mesh;
- * the extremes of the points cannot mislead.)
+ * numbers with. (The centroid of the points would orient the planes too,
+ * but it can sit on a face of a non-convex mesh; the extremes of the points
+ * cannot mislead.) Other polyhedra become triangle meshes (build_mesh.c).
  */
 #include "scene/build.h"
 
