@@ -45,11 +45,27 @@ static int compare_u64(const void *a, const void *b)
     return x < y ? -1 : x > y;
 }
 
+/* An edge for messages: point numbers, or for a file (whose points an STL
+ * does not number) the coordinates of its ends. */
+static const char *edge_name(char *buf, size_t size, const vec3 *points,
+                             int by_coordinates, uint64_t edge)
+{
+    uint32_t p = (uint32_t)(edge >> 32), q = (uint32_t)(edge & 0xffffffffu);
+    if (by_coordinates)
+        snprintf(buf, size, "(%g, %g, %g)-(%g, %g, %g)", points[p].x, points[p].y,
+                 points[p].z, points[q].x, points[q].y, points[q].z);
+    else
+        snprintf(buf, size, "%u-%u", p, q);
+    return buf;
+}
+
 /* Closed and consistently oriented, else an error naming an edge. */
 static sc_status check_edges(const build_ctx *c, const sc_location *loc, const char *what,
-                             const uint32_t *indices, const uint32_t *face_start,
-                             uint32_t face_count)
+                             const vec3 *points, const uint32_t *indices,
+                             const uint32_t *face_start, uint32_t face_count)
 {
+    int by_coordinates = strcmp(what, "polyhedron") != 0;
+    char name[256];
     uint32_t total = face_start[face_count];
     uint64_t *directed = malloc((size_t)(total ? total : 1) * sizeof *directed);
     uint64_t *undirected = malloc((size_t)(total ? total : 1) * sizeof *undirected);
@@ -77,20 +93,20 @@ static sc_status check_edges(const build_ctx *c, const sc_location *loc, const c
         while (j < count && undirected[j] == undirected[i])
             j++;
         if (j - i != 2)
-            st = err_set(c->error, SC_ERR_SEMANTIC, loc,
-                         "%s is not closed (edge %u-%u is used by %zu face%s)", what,
-                         (unsigned)(undirected[i] >> 32),
-                         (unsigned)(undirected[i] & 0xffffffffu), j - i,
-                         j - i == 1 ? "" : "s");
+            st = err_set(
+                c->error, SC_ERR_SEMANTIC, loc,
+                "%s is not closed (edge %s is used by %zu face%s)", what,
+                edge_name(name, sizeof name, points, by_coordinates, undirected[i]),
+                j - i, j - i == 1 ? "" : "s");
         i = j;
     }
     for (size_t i = 0; i + 1 < count && st == SC_OK; i++) {
         if (directed[i] == directed[i + 1])
-            st = err_set(c->error, SC_ERR_SEMANTIC, loc,
-                         "%s is not consistently oriented (edge %u-%u runs the same way "
-                         "in two faces)",
-                         what, (unsigned)(directed[i] >> 32),
-                         (unsigned)(directed[i] & 0xffffffffu));
+            st = err_set(
+                c->error, SC_ERR_SEMANTIC, loc,
+                "%s is not consistently oriented (edge %s runs the same way in "
+                "two faces)",
+                what, edge_name(name, sizeof name, points, by_coordinates, directed[i]));
     }
     free(directed);
     free(undirected);
@@ -102,7 +118,7 @@ sc_status build_mesh_prim(const build_ctx *c, const sc_location *loc, const char
                           const uint32_t *indices, const uint32_t *face_start,
                           uint32_t face_count, prim *out, const char **empty)
 {
-    sc_status st = check_edges(c, loc, what, indices, face_start, face_count);
+    sc_status st = check_edges(c, loc, what, points, indices, face_start, face_count);
     if (st != SC_OK)
         return st;
     size_t tri_count = 0;
