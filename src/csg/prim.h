@@ -11,8 +11,8 @@
  *                booleans;
  *   prim_inside  point membership, the oracle the tests compare spans with.
  * Sphere, box, frustum and convex polyhedron are convex: one span at most.
- * Torus, clipped quadric and implicit surface (prim_curved.h) can give
- * several; prim_max_spans bounds every kind.
+ * Torus, clipped quadric and implicit surface (prim_curved.h) and triangle
+ * mesh (prim_mesh.h) can give several; prim_max_spans bounds every kind.
  */
 #ifndef SPANCAST_CSG_PRIM_H
 #define SPANCAST_CSG_PRIM_H
