@@ -1,9 +1,9 @@
 /* Tests of the mesh builder (src/scene/build_mesh.c): non-convex polyhedra
  * become mesh leaves with the right solid, convex ones keep the planes,
  * either winding is taken, open and inconsistently wound meshes are errors
- * naming an edge, and import reads ASCII STL, binary STL and OFF files
+ * naming an edge, import reads ASCII STL, binary STL and OFF files
  * relative to the model file, with exact messages for what it cannot
- * read. */
+ * read, and linear_extrude (build_extrude.c) builds prisms. */
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>
@@ -272,12 +272,75 @@ static void test_import(void **state)
     sc_scene_release(s);
 }
 
+/* linear_extrude of square, circle and polygon children: holes by nesting,
+ * circles as OpenSCAD's polygons, unions of children, 2D transforms,
+ * centring; twist, scale and other 2D nodes are errors. */
+static void test_linear_extrude(void **state)
+{
+    (void)state;
+    sc_scene *s = load(
+        "m.csg",
+        "linear_extrude(height = 10, center = false, convexity = 1, scale = [1, 1], $fn "
+        "= 0, $fa = 12, $fs = 2) {\n polygon(points = [[0, 0], [20, 0], [20, 20], [0, "
+        "20], [5, 5], [15, 5], [15, 15], [5, 15]], paths = [[0, 1, 2, 3], [4, 5, 6, 7]], "
+        "convexity = 1);\n}");
+    assert_int_equal(only_kind(s), PRIM_MESH);
+    assert_true(inside(s, 2, 2, 5));
+    assert_true(inside(s, 18, 10, 9.9));
+    assert_false(inside(s, 10, 10, 5)); /* the hole */
+    assert_false(inside(s, 2, 2, 10.1));
+    assert_false(inside(s, 2, 2, -0.1));
+    sc_scene_release(s);
+
+    s = load("m.csg",
+             "linear_extrude(height = 5, center = true) {\n"
+             "  circle($fn = 6, $fa = 12, $fs = 2, r = 8);\n"
+             "  multmatrix([[1, 0, 0, 5], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]) {\n"
+             "    square(size = [10, 4], center = true);\n  }\n"
+             "  polygon(points = [[0, 10], [4, 20], [0, 14], [-4, 20]]);\n"
+             "  %square(size = 100);\n}");
+    assert_true(inside(s, 0, 0, 2.4));
+    assert_false(inside(s, 0, 0, 2.6));
+    assert_true(inside(s, 7.9, 0, 0));
+    assert_false(inside(s, 0, 7.5, 0)); /* outside the hexagon, inside the circle */
+    assert_true(inside(s, 9.5, 0, 0));  /* the square alone */
+    assert_true(inside(s, 5, 1.9, 0));  /* both */
+    assert_true(inside(s, 0, 12, 0));   /* the arrow */
+    assert_false(inside(s, 0, 16, 0));  /* its notch */
+    assert_false(inside(s, 50, 50, 0)); /* '%' is not part of it */
+    sc_scene_release(s);
+
+    /* a mirrored child keeps its solid */
+    s = load("m.csg", "linear_extrude(height = 1) { multmatrix([[-1, 0, 0, 0], [0, 1, 0, "
+                      "0], [0, 0, 1, 0], [0, 0, 0, 1]]) { square(size = [2, 1]); } }");
+    assert_true(inside(s, -1, 0.5, 0.5));
+    assert_false(inside(s, 1, 0.5, 0.5));
+    sc_scene_release(s);
+
+    check_error("m.csg", "linear_extrude(height = 1, scale = 2) { square(); }",
+                SC_ERR_UNSUPPORTED,
+                "m.csg:1:1: error: linear_extrude with scale is not supported yet");
+    check_error(
+        "m.csg",
+        "linear_extrude(height = 1) {\n  difference() { square(2); square(1); }\n}",
+        SC_ERR_UNSUPPORTED,
+        "m.csg:2:3: error: 'difference' inside linear_extrude is not supported yet");
+    check_error("m.csg", "linear_extrude(height = 1) { sphere(); }", SC_ERR_UNSUPPORTED,
+                "m.csg:1:30: error: 'sphere' inside linear_extrude is not supported yet");
+    s = load("m.csg", "linear_extrude(height = 0) { square(); }");
+    assert_int_equal(sc_scene_warning_count(s), 1);
+    assert_string_equal(sc_scene_warning(s, 0)->message,
+                        "linear_extrude without height or area is empty");
+    sc_scene_release(s);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_nonconvex_polyhedron),
         cmocka_unit_test(test_mesh_errors),
         cmocka_unit_test(test_import),
+        cmocka_unit_test(test_linear_extrude),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

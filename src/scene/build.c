@@ -53,8 +53,9 @@ typedef enum node_kind {
     KIND_SPHERE,
     KIND_CYLINDER,
     KIND_POLYHEDRON,
-    KIND_IMPORT, /* build_mesh.c */
-    KIND_TORUS,  /* torus, quadric, implicit: build_implicit.c */
+    KIND_IMPORT,         /* build_mesh.c */
+    KIND_LINEAR_EXTRUDE, /* build_extrude.c; its children are its own */
+    KIND_TORUS,          /* torus, quadric, implicit: build_implicit.c */
     KIND_QUADRIC,
     KIND_IMPLICIT, /* the last leaf kind (is_leaf) */
     KIND_MATERIAL, /* spancast's shading nodes: build_shading.c */
@@ -83,7 +84,7 @@ static const struct {
     /* What else OpenSCAD writes. */
     {"hull", KIND_UNSUPPORTED},
     {"minkowski", KIND_UNSUPPORTED},
-    {"linear_extrude", KIND_UNSUPPORTED},
+    {"linear_extrude", KIND_LINEAR_EXTRUDE},
     {"rotate_extrude", KIND_UNSUPPORTED},
     {"import", KIND_IMPORT},
     {"surface", KIND_UNSUPPORTED},
@@ -712,14 +713,16 @@ static sc_status build_curved(builder *b, const parse_node *n, node_kind kind,
     return add_leaf(b, n, &p, state, id);
 }
 
-/* import(file = "...") (build_mesh.c). */
-static sc_status build_import_leaf(builder *b, const parse_node *n, const frame *state,
-                                   uint32_t *id)
+/* import(file = "...") (build_mesh.c), or else linear_extrude
+ * (build_extrude.c). */
+static sc_status build_import_leaf(builder *b, const parse_node *n, int import,
+                                   const frame *state, uint32_t *id)
 {
     build_ctx c = {b->syntax->file, b->csg, b->error};
     const char *empty = NULL;
     prim p;
-    sc_status st = build_import(&c, n, state->emit, &p, &empty);
+    sc_status st = import ? build_import(&c, n, state->emit, &p, &empty)
+                          : build_linear_extrude(&c, n, state->emit, &p, &empty);
     if (st != SC_OK || !state->emit)
         return st;
     if (empty)
@@ -934,7 +937,7 @@ static sc_status visit(builder *b, const parse_node *n, int *opened)
     if (kind == KIND_BACKGROUND)
         return build_background(b->shading, b->syntax, n, f.emit, b->error);
     if (is_leaf(kind)) {
-        if (n->child_count > 0 && f.emit &&
+        if (n->child_count > 0 && f.emit && kind != KIND_LINEAR_EXTRUDE &&
             (st = warn(b, &n->loc, "'%s' takes no children; they are ignored",
                        n->name)) != SC_OK)
             return st;
@@ -955,7 +958,8 @@ static sc_status visit(builder *b, const parse_node *n, int *opened)
             st = build_curved(b, n, kind, &f, &id);
             break;
         case KIND_IMPORT:
-            st = build_import_leaf(b, n, &f, &id);
+        case KIND_LINEAR_EXTRUDE:
+            st = build_import_leaf(b, n, kind == KIND_IMPORT, &f, &id);
             break;
         default:
             st = build_polyhedron(b, n, &f, &id);
