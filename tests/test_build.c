@@ -619,9 +619,8 @@ static void test_unsupported(void **state)
 {
     (void)state;
     static const char *names[] = {
-        "hull",   "minkowski", "linear_extrude",   "rotate_extrude",
-        "import", "surface",   "projection",       "offset",
-        "circle", "square",    "polygon",          "text",
+        "hull",   "minkowski", "rotate_extrude",   "surface",  "projection",
+        "offset", "circle",    "square",           "polygon",  "text",
         "resize", "roof",      "intersection_for", "halfspace"};
     for (size_t i = 0; i < sizeof names / sizeof names[0]; i++) {
         char text[256], expected[256];
@@ -634,9 +633,10 @@ static void test_unsupported(void **state)
     check_error("group() {\n  cube();\n    %hull() {\n cube(); }\n}", SC_ERR_UNSUPPORTED,
                 "m.csg:3:6: error: 'hull' is not supported yet");
     check_error(
-        "linear_extrude(height = 10, center = false, convexity = 1, scale = [1, 1], "
+        "linear_extrude(height = 10, center = false, convexity = 1, twist = 90, "
         "$fn = 0, $fa = 12, $fs = 2) {\n  circle($fn = 0, $fa = 12, $fs = 2, r = 2);\n}",
-        SC_ERR_UNSUPPORTED, "m.csg:1:1: error: 'linear_extrude' is not supported yet");
+        SC_ERR_UNSUPPORTED,
+        "m.csg:1:1: error: linear_extrude with twist is not supported yet");
     check_error("group() { foo(); }", SC_ERR_SEMANTIC,
                 "m.csg:1:11: error: unknown node 'foo'");
     check_error("Cube();", SC_ERR_SEMANTIC, "m.csg:1:1: error: unknown node 'Cube'");
@@ -735,23 +735,7 @@ static void test_polyhedron_convex(void **state)
 static void test_polyhedron_errors(void **state)
 {
     (void)state;
-    /* Non-convex: a notch pushed into the top face of the cube. */
-    check_error(
-        "\n polyhedron(points = [[0, 0, 0], [2, 0, 0], [2, 2, 0], [0, 2, 0], [0, 0, 2], "
-        "[2, 0, 2], [2, 2, 2], [0, 2, 2], [1, 1, 1]], faces = [[0, 1, 2, 3], [4, 5, 1, "
-        "0], [5, 6, 2, 1], [6, 7, 3, 2], [7, 4, 0, 3], [4, 8, 5], [5, 8, 6], [6, 8, 7], "
-        "[7, 8, 4]]);",
-        SC_ERR_UNSUPPORTED,
-        "m.csg:2:2: error: polyhedron is not convex (non-convex meshes are not "
-        "supported yet)");
-    /* Two disjoint tetrahedra make a closed mesh that is not convex. */
-    check_error(
-        "polyhedron(points = [[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1], [5, 0, 0], "
-        "[6, 0, 0], [5, 1, 0], [5, 0, 1]], faces = [[0, 1, 2], [0, 3, 1], [0, 2, 3], "
-        "[1, 3, 2], [4, 5, 6], [4, 7, 5], [4, 6, 7], [5, 7, 6]]);",
-        SC_ERR_UNSUPPORTED,
-        "m.csg:1:1: error: polyhedron is not convex (non-convex meshes are not "
-        "supported yet)");
+    /* Non-convex polyhedra are meshes now (test_build_mesh.c). */
     /* Open: the cube without its top. */
     check_error(
         "polyhedron(points = " CUBE_POINTS ", faces = [[0, 1, 2, 3], [4, 5, 1, 0], "

@@ -8,8 +8,8 @@
  *    the box's span (no slivers, no speckles), and the first hit must lie on
  *    the box face that the ray enters.
  * 2. The property test. Seeded random trees (every primitive kind, the
- *    torus, clipped quadrics and implicit surfaces with several spans per
- *    ray among them, boolean
+ *    torus, clipped quadrics, implicit surfaces and triangle meshes with
+ *    several spans per ray among them, boolean
  *    depth 4, random affine maps with mirrors and non-uniform scales
  *    composed down the tree) and random rays through their bounds: every
  *    span list is sorted, disjoint and finite, agrees with csg_inside
@@ -34,6 +34,7 @@
 #include <cmocka.h>
 
 #include "csg/csg.h"
+#include "csg/prim_mesh.h"
 #include "implicit/expr.h"
 #include "implicit/solve.h"
 
@@ -562,6 +563,66 @@ static int random_convex(gen *g, prim *p)
     return 1;
 }
 
+/* A random closed mesh, non-convex: a sphere with a random radius at each
+ * vertex (star-shaped), or a torus of triangles (two spans along many
+ * rays). */
+static void random_mesh(gen *g, prim *p)
+{
+    enum { RINGS = 7, SEGMENTS = 9 };
+    vec3 pts[RINGS * SEGMENTS + 2];
+    uint32_t tris[3 * 2 * RINGS * SEGMENTS], np = 0, nt = 0;
+#define TRI(a, b, c)                                                                     \
+    do {                                                                                 \
+        tris[3 * nt] = (a);                                                              \
+        tris[3 * nt + 1] = (b);                                                          \
+        tris[3 * nt + 2] = (c);                                                          \
+        nt++;                                                                            \
+    } while (0)
+    const double pi = 3.14159265358979323846;
+    if (below(&g->r, 2)) {
+        double big = uniform_in(&g->r, 0.7, 1.3),
+               small = big * uniform_in(&g->r, 0.2, 0.6);
+        for (uint32_t i = 0; i < RINGS; i++)
+            for (uint32_t j = 0; j < SEGMENTS; j++) {
+                double u = 2 * pi * j / SEGMENTS, v = 2 * pi * i / RINGS;
+                double w = big + small * cos(v);
+                pts[np++] = v3(w * cos(u), w * sin(u), small * sin(v));
+            }
+        for (uint32_t i = 0; i < RINGS; i++)
+            for (uint32_t j = 0; j < SEGMENTS; j++) {
+                uint32_t a = i * SEGMENTS + j, b = i * SEGMENTS + (j + 1) % SEGMENTS;
+                uint32_t c = ((i + 1) % RINGS) * SEGMENTS + (j + 1) % SEGMENTS,
+                         d = ((i + 1) % RINGS) * SEGMENTS + j;
+                TRI(a, c, d);
+                TRI(a, b, c);
+            }
+    } else {
+        pts[np++] = v3(0, 0, -uniform_in(&g->r, 0.5, 1.5));
+        for (uint32_t i = 1; i < RINGS; i++)
+            for (uint32_t j = 0; j < SEGMENTS; j++) {
+                double th = pi * i / RINGS - pi / 2, ph = 2 * pi * j / SEGMENTS;
+                double r = uniform_in(&g->r, 0.5, 1.5);
+                pts[np++] = v3(r * cos(th) * cos(ph), r * cos(th) * sin(ph), r * sin(th));
+            }
+        pts[np++] = v3(0, 0, uniform_in(&g->r, 0.5, 1.5));
+        uint32_t top = np - 1;
+        for (uint32_t j = 0; j < SEGMENTS; j++) {
+            uint32_t j1 = (j + 1) % SEGMENTS;
+            TRI(0, 1 + j1, 1 + j);
+            TRI(top, 1 + (RINGS - 2) * SEGMENTS + j, 1 + (RINGS - 2) * SEGMENTS + j1);
+            for (uint32_t i = 1; i + 1 < RINGS; i++) {
+                uint32_t a = 1 + (i - 1) * SEGMENTS;
+                TRI(a + j, a + j1, a + SEGMENTS + j1);
+                TRI(a + j, a + SEGMENTS + j1, a + SEGMENTS + j);
+            }
+        }
+    }
+#undef TRI
+    p->kind = PRIM_MESH;
+    p->u.mesh.mesh = prim_mesh_create(g->b, pts, tris, nt);
+    assert_non_null(p->u.mesh.mesh);
+}
+
 static prim random_prim(gen *g, uint32_t kind)
 {
     prim p = {.kind = (prim_kind)kind};
@@ -644,6 +705,9 @@ static prim random_prim(gen *g, uint32_t kind)
         p.u.implicit.method = SOLVE_INTERVAL;
         break;
     }
+    case PRIM_MESH:
+        random_mesh(g, &p);
+        break;
     default:
         random_convex(g, &p);
         break;

@@ -189,11 +189,10 @@ static void test_polyhedron_work(void **state)
     char *text = bipyramid(7070);
     assert_int_equal(load(text, strlen(text), buf, sizeof buf), SC_OK);
     free(text);
+    /* Past the limit the plane path is not tried: the polyhedron becomes a
+     * triangle mesh (build_mesh.c), whose cost grows as n log n. */
     text = bipyramid(7071);
-    assert_int_equal(load(text, strlen(text), buf, sizeof buf), SC_ERR_LIMIT);
-    assert_string_equal(buf, "m.csg:1:1: error: polyhedron with 14142 faces and 7073 "
-                             "points is too large (limit is 100000000 faces times "
-                             "points)");
+    assert_int_equal(load(text, strlen(text), buf, sizeof buf), SC_OK);
     free(text);
 }
 

@@ -8,6 +8,8 @@
  *   spancast info MODEL
  *   spancast --help | --version
  *
+ * MODEL is a .csg file, or a .scad file converted by OpenSCAD (scad.c).
+ *
  * Every option that takes a value accepts it as --opt=value or as the next
  * argument. Exit status: 0 on success; 1 when the model cannot be loaded or
  * the image cannot be rendered or written (messages as the library formats
@@ -45,6 +47,7 @@
 #include <unistd.h>
 
 #include "cli/bench.h"
+#include "cli/scad.h"
 #include "render/image_io.h"
 #include "render/render.h"
 #include "render/shade.h"
@@ -514,7 +517,9 @@ static sc_scene *load(const char *path, int faithful)
     lo.faithful = faithful;
     sc_scene *scene = NULL;
     sc_error error;
-    if (sc_scene_load(path, &lo, &scene, &error) != SC_OK) {
+    sc_status st = scad_is_source(path) ? scad_load(path, &lo, &scene, &error)
+                                        : sc_scene_load(path, &lo, &scene, &error);
+    if (st != SC_OK) {
         print_error(&error);
         return NULL;
     }

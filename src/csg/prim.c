@@ -48,6 +48,7 @@
 #include <math.h>
 
 #include "csg/prim_curved.h"
+#include "csg/prim_mesh.h"
 
 /* Writes the span [t_in, t_out] when it is finite and ordered; returns the
  * number of spans written (0 or 1). */
@@ -331,6 +332,9 @@ bbox prim_bounds(const prim *p)
     case PRIM_IMPLICIT:
         b = p->u.implicit.box;
         break;
+    case PRIM_MESH:
+        b = p->u.mesh.mesh->bounds;
+        break;
     case PRIM_KIND_COUNT:
         break;
     }
@@ -357,6 +361,8 @@ uint32_t prim_spans(const prim *p, uint32_t leaf, vec3 o, vec3 d, span *out, uin
         return prim_quadric_spans(p, leaf, o, d, out, cap);
     case PRIM_IMPLICIT:
         return prim_implicit_spans(p, leaf, o, d, out, cap);
+    case PRIM_MESH:
+        return prim_mesh_spans(p, leaf, o, d, out, cap);
     case PRIM_KIND_COUNT:
         break;
     }
@@ -407,6 +413,8 @@ vec3 prim_normal(const prim *p, vec3 q, uint16_t part)
         return prim_quadric_normal(p, q, part);
     case PRIM_IMPLICIT:
         return prim_implicit_normal(p, q, part);
+    case PRIM_MESH:
+        return prim_mesh_normal(p, q, part);
     case PRIM_KIND_COUNT:
         break;
     }
@@ -442,6 +450,8 @@ int prim_inside(const prim *p, vec3 q)
         return prim_quadric_inside(p, q);
     case PRIM_IMPLICIT:
         return prim_implicit_inside(p, q);
+    case PRIM_MESH:
+        return prim_mesh_inside(p, q);
     case PRIM_KIND_COUNT:
         break;
     }
@@ -457,6 +467,8 @@ uint32_t prim_max_spans(const prim *p)
         return 2; /* two pieces of the line (a < 0), each clipped to the box */
     case PRIM_IMPLICIT:
         return PRIM_IMPLICIT_MAX_SPANS;
+    case PRIM_MESH:
+        return prim_mesh_max_spans(p);
     default:
         return 1; /* convex */
     }

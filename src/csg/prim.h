@@ -11,8 +11,8 @@
  *                booleans;
  *   prim_inside  point membership, the oracle the tests compare spans with.
  * Sphere, box, frustum and convex polyhedron are convex: one span at most.
- * Torus, clipped quadric and implicit surface (prim_curved.h) can give
- * several; prim_max_spans bounds every kind.
+ * Torus, clipped quadric and implicit surface (prim_curved.h) and triangle
+ * mesh (prim_mesh.h) can give several; prim_max_spans bounds every kind.
  */
 #ifndef SPANCAST_CSG_PRIM_H
 #define SPANCAST_CSG_PRIM_H
@@ -30,6 +30,7 @@ typedef enum prim_kind {
     PRIM_TORUS,    /* (|(x, y)| - R)^2 + z^2 <= r^2, 0 < r < R (prim_torus.c) */
     PRIM_QUADRIC,  /* Q(p) <= 0 within a box (prim_quadric.c) */
     PRIM_IMPLICIT, /* f(p) < 0 within a box (prim_implicit.c) */
+    PRIM_MESH,     /* closed triangle mesh (prim_mesh.c) */
     PRIM_KIND_COUNT
 } prim_kind;
 
@@ -40,6 +41,7 @@ typedef struct plane {
 } plane;
 
 struct expr_program;
+struct prim_mesh;
 
 /* Spans an implicit leaf gives one ray at most; see prim_implicit.c for
  * what happens to a ray that crosses its surface more often. */
@@ -78,6 +80,9 @@ typedef struct prim {
             double lipschitz;                   /* bound on |grad f| for sphere tracing */
             int method;                         /* solve_method */
         } implicit;
+        struct {
+            const struct prim_mesh *mesh; /* owned by the tree's arena */
+        } mesh;
     } u;
 } prim;
 

@@ -19,6 +19,8 @@ const char *prim_kind_name(prim_kind kind)
         return "quadric";
     case PRIM_IMPLICIT:
         return "implicit";
+    case PRIM_MESH:
+        return "mesh";
     case PRIM_KIND_COUNT:
         break;
     }

@@ -22,11 +22,12 @@
  * Rather than trust the winding, each face plane is oriented by the points:
  * a convex polyhedron lies entirely on one side of each of its face planes,
  * and that side is inside. The polyhedron must be closed (every edge shared
- * by exactly two faces) and convex: no point may lie on the outer side of a
- * face plane by more than 1e-5 of the largest coordinate, which absorbs the
- * 6 significant digits OpenSCAD writes numbers with. (The centroid of the
- * points would orient the planes too, but it can sit on a face of a
- * non-convex mesh; the extremes of the points cannot mislead.)
+ * by exactly two faces); it takes the plane path when convex: no point may
+ * lie on the outer side of a face plane by more than 1e-5 of the largest
+ * coordinate, which absorbs the 6 significant digits OpenSCAD writes
+ * numbers with. (The centroid of the points would orient the planes too,
+ * but it can sit on a face of a non-convex mesh; the extremes of the points
+ * cannot mislead.) Other polyhedra become triangle meshes (build_mesh.c).
  */
 #include "scene/build.h"
 
@@ -39,6 +40,7 @@
 #include "base/error.h"
 #include "scene/build_shading.h"
 #include "scene/build_curved.h"
+#include "scene/build_mesh.h"
 #include "scene/faithful.h"
 
 typedef enum node_kind {
@@ -51,7 +53,9 @@ typedef enum node_kind {
     KIND_SPHERE,
     KIND_CYLINDER,
     KIND_POLYHEDRON,
-    KIND_TORUS, /* torus, quadric, implicit: build_implicit.c */
+    KIND_IMPORT,         /* build_mesh.c */
+    KIND_LINEAR_EXTRUDE, /* build_extrude.c; its children are its own */
+    KIND_TORUS,          /* torus, quadric, implicit: build_implicit.c */
     KIND_QUADRIC,
     KIND_IMPLICIT, /* the last leaf kind (is_leaf) */
     KIND_MATERIAL, /* spancast's shading nodes: build_shading.c */
@@ -80,9 +84,9 @@ static const struct {
     /* What else OpenSCAD writes. */
     {"hull", KIND_UNSUPPORTED},
     {"minkowski", KIND_UNSUPPORTED},
-    {"linear_extrude", KIND_UNSUPPORTED},
+    {"linear_extrude", KIND_LINEAR_EXTRUDE},
     {"rotate_extrude", KIND_UNSUPPORTED},
-    {"import", KIND_UNSUPPORTED},
+    {"import", KIND_IMPORT},
     {"surface", KIND_UNSUPPORTED},
     {"projection", KIND_UNSUPPORTED},
     {"offset", KIND_UNSUPPORTED},
@@ -544,9 +548,8 @@ static sc_status check_closed(builder *b, const parse_node *n, mesh *m)
  * Each plane is oriented by the points themselves: all of them must lie on
  * one side, within tol, and inside is that side. A plane with every point
  * on it means the polyhedron is flat. Returns the plane count in *count;
- * 0 means the polyhedron has no volume. */
-static sc_status convex_planes(builder *b, const parse_node *n, mesh *m, uint32_t *count,
-                               bbox *bounds)
+ * 0 means the polyhedron has no volume, UINT32_MAX that it is not convex. */
+static sc_status convex_planes(builder *b, mesh *m, uint32_t *count, bbox *bounds)
 {
     *count = 0;
     /* The points the faces use: their bounds and scale. */
@@ -610,10 +613,9 @@ static sc_status convex_planes(builder *b, const parse_node *n, mesh *m, uint32_
             lo = -t;
         }
         if (hi > tol) {
-            st = err_set(
-                b->error, SC_ERR_UNSUPPORTED, &n->loc,
-                "polyhedron is not convex (non-convex meshes are not supported yet)");
-            break;
+            *count = UINT32_MAX; /* not convex: the mesh path takes it */
+            free(used);
+            return SC_OK;
         }
         int duplicate = 0;
         for (uint32_t k = 0; k < planes && !duplicate; k++)
@@ -650,19 +652,27 @@ static sc_status build_polyhedron(builder *b, const parse_node *n, const frame *
         mesh_free(&m);
         return st;
     }
-    /* The plane-set path compares every face with every point (and every
-     * plane with the others), so its work is bounded before it starts. */
-    if (st == SC_OK && (uint64_t)m.face_count * m.point_count > BUILD_MAX_POLYHEDRON_WORK)
-        st = err_set(b->error, SC_ERR_LIMIT, &n->loc,
-                     "polyhedron with %u faces and %u points is too large (limit is %d "
-                     "faces times points)",
-                     m.face_count, m.point_count, BUILD_MAX_POLYHEDRON_WORK);
     if (st == SC_OK)
         st = check_closed(b, n, &m);
-    uint32_t count = 0;
+    /* The plane-set path compares every face with every point (and every
+     * plane with the others), so larger polyhedra go to the mesh path
+     * (build_mesh.c), as do the ones that are not convex. */
+    uint32_t count = UINT32_MAX;
     bbox bounds;
-    if (st == SC_OK)
-        st = convex_planes(b, n, &m, &count, &bounds);
+    if (st == SC_OK &&
+        (uint64_t)m.face_count * m.point_count <= BUILD_MAX_POLYHEDRON_WORK)
+        st = convex_planes(b, &m, &count, &bounds);
+    if (st == SC_OK && count == UINT32_MAX) {
+        build_ctx c = {b->syntax->file, b->csg, b->error};
+        const char *empty = NULL;
+        prim p;
+        st = build_mesh_prim(&c, &n->loc, "polyhedron", m.points, m.point_count,
+                             m.indices, m.face_start, m.face_count, &p, &empty);
+        if (st == SC_OK && state->emit)
+            st = empty ? warn(b, &n->loc, "%s", empty) : add_leaf(b, n, &p, state, id);
+        mesh_free(&m);
+        return st;
+    }
     if (st == SC_OK && state->emit && count == 0)
         st = warn(b, &n->loc, "polyhedron without volume is empty");
     if (st == SC_OK && state->emit && count > 0) {
@@ -696,6 +706,23 @@ static sc_status build_curved(builder *b, const parse_node *n, node_kind kind,
                    : kind == KIND_QUADRIC
                        ? build_quadric(&c, n, state->emit, &p, &empty)
                        : build_implicit(&c, n, state->emit, &p, &empty);
+    if (st != SC_OK || !state->emit)
+        return st;
+    if (empty)
+        return warn(b, &n->loc, "%s", empty);
+    return add_leaf(b, n, &p, state, id);
+}
+
+/* import(file = "...") (build_mesh.c), or else linear_extrude
+ * (build_extrude.c). */
+static sc_status build_import_leaf(builder *b, const parse_node *n, int import,
+                                   const frame *state, uint32_t *id)
+{
+    build_ctx c = {b->syntax->file, b->csg, b->error};
+    const char *empty = NULL;
+    prim p;
+    sc_status st = import ? build_import(&c, n, state->emit, &p, &empty)
+                          : build_linear_extrude(&c, n, state->emit, &p, &empty);
     if (st != SC_OK || !state->emit)
         return st;
     if (empty)
@@ -910,7 +937,7 @@ static sc_status visit(builder *b, const parse_node *n, int *opened)
     if (kind == KIND_BACKGROUND)
         return build_background(b->shading, b->syntax, n, f.emit, b->error);
     if (is_leaf(kind)) {
-        if (n->child_count > 0 && f.emit &&
+        if (n->child_count > 0 && f.emit && kind != KIND_LINEAR_EXTRUDE &&
             (st = warn(b, &n->loc, "'%s' takes no children; they are ignored",
                        n->name)) != SC_OK)
             return st;
@@ -929,6 +956,10 @@ static sc_status visit(builder *b, const parse_node *n, int *opened)
         case KIND_QUADRIC:
         case KIND_IMPLICIT:
             st = build_curved(b, n, kind, &f, &id);
+            break;
+        case KIND_IMPORT:
+        case KIND_LINEAR_EXTRUDE:
+            st = build_import_leaf(b, n, kind == KIND_IMPORT, &f, &id);
             break;
         default:
             st = build_polyhedron(b, n, &f, &id);

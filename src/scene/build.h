@@ -4,7 +4,10 @@
  *   group, union, render, color, multmatrix   union of the children
  *   difference                                first child minus the others
  *   intersection                              intersection of the children
- *   cube, sphere, cylinder, polyhedron        leaves (polyhedron: convex only)
+ *   cube, sphere, cylinder, polyhedron        leaves (polyhedron: convex ones as
+ *                                             planes, others as meshes)
+ *   import                                    an STL or OFF mesh (build_mesh.h)
+ *   linear_extrude                            a prism of its 2D children (build_mesh.h)
  *   material                                  union; sets its children's material
  *   light, camera, background                 no geometry (build_shading.h)
  *   torus, quadric, implicit                  spancast's curved leaves

@@ -1,0 +1,154 @@
+/* `spancast render model.scad`: OpenSCAD source through OpenSCAD itself.
+ *
+ * spancast reads OpenSCAD's flattened CSG, not its language; a .scad file is
+ * first converted with `openscad -o TMP/NAME.csg /abs/model.scad`, both
+ * paths absolute (OpenSCAD writes a relative -o path next to its input), in
+ * a private directory made by mkdtemp under $TMPDIR (or /tmp). OpenSCAD's
+ * own output goes to a log in that directory; when it fails, its last
+ * non-empty line is the message. The .csg is loaded under the name
+ * DIR/NAME.csg, DIR being the source's directory: OpenSCAD writes import
+ * paths as the source gave them, relative to the source, and spancast
+ * resolves them relative to the loaded file's name. Error positions in the
+ * converted text therefore read DIR/NAME.csg, the file `openscad -o
+ * NAME.csg` would have written. Every temporary file is removed before
+ * returning. OpenSCAD 2021.01 writes numbers with 6 significant digits.
+ */
+#define _XOPEN_SOURCE 700 /* realpath, mkdtemp */
+
+#include "cli/scad.h"
+
+#include <errno.h>
+#include <fcntl.h>
+#include <limits.h>
+#include <spawn.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+extern char **environ;
+
+int scad_is_source(const char *path)
+{
+    size_t n = strlen(path);
+    if (n < 5)
+        return 0;
+    const char *e = path + n - 5;
+    return e[0] == '.' && (e[1] | 32) == 's' && (e[2] | 32) == 'c' &&
+           (e[3] | 32) == 'a' && (e[4] | 32) == 'd';
+}
+
+static sc_status fail(sc_error *error, sc_status status, const char *format,
+                      const char *a, const char *b)
+{
+    memset(error, 0, sizeof *error);
+    error->status = status;
+    snprintf(error->message, sizeof error->message, format, a, b);
+    return status;
+}
+
+/* The last non-empty line of the file at path, into buf. */
+static void last_line(const char *path, char *buf, size_t size)
+{
+    buf[0] = 0;
+    FILE *f = fopen(path, "r");
+    if (!f)
+        return;
+    char line[512];
+    while (fgets(line, sizeof line, f)) {
+        size_t n = strlen(line);
+        while (n > 0 && (line[n - 1] == '\n' || line[n - 1] == '\r'))
+            line[--n] = 0;
+        if (n > 0)
+            snprintf(buf, size, "%s", line);
+    }
+    fclose(f);
+}
+
+static char *read_text(const char *path, size_t *size)
+{
+    FILE *f = fopen(path, "rb");
+    if (!f)
+        return NULL;
+    char *buf = NULL;
+    size_t len = 0, cap = 0;
+    for (;;) {
+        if (len == cap) {
+            cap = cap ? 2 * cap : 65536;
+            char *next = realloc(buf, cap);
+            if (!next) {
+                free(buf);
+                fclose(f);
+                return NULL;
+            }
+            buf = next;
+        }
+        size_t got = fread(buf + len, 1, cap - len, f);
+        len += got;
+        if (got == 0)
+            break;
+    }
+    fclose(f);
+    *size = len;
+    return buf;
+}
+
+sc_status scad_load(const char *path, const sc_load_options *options, sc_scene **scene,
+                    sc_error *error)
+{
+    *scene = NULL;
+    char source[PATH_MAX];
+    if (!realpath(path, source))
+        return fail(error, SC_ERR_IO, "cannot open '%s': %s", path, strerror(errno));
+    const char *tmp = getenv("TMPDIR");
+    char dir[PATH_MAX];
+    snprintf(dir, sizeof dir, "%s/spancast-XXXXXX", tmp && tmp[0] ? tmp : "/tmp");
+    if (!mkdtemp(dir))
+        return fail(error, SC_ERR_IO, "cannot make a temporary directory in '%s': %s",
+                    tmp && tmp[0] ? tmp : "/tmp", strerror(errno));
+    const char *base = strrchr(source, '/') + 1; /* realpath is absolute */
+    char csg[PATH_MAX + 16], log[PATH_MAX + 16], name[PATH_MAX + 16];
+    snprintf(csg, sizeof csg, "%s/%.*s.csg", dir, (int)(strlen(base) - 5), base);
+    snprintf(log, sizeof log, "%s/openscad.log", dir);
+    snprintf(name, sizeof name, "%.*s.csg", (int)(strlen(source) - 5), source);
+
+    posix_spawn_file_actions_t actions;
+    posix_spawn_file_actions_init(&actions);
+    posix_spawn_file_actions_addopen(&actions, 1, log, O_WRONLY | O_CREAT | O_TRUNC,
+                                     0600);
+    posix_spawn_file_actions_adddup2(&actions, 1, 2);
+    char *argv[] = {"openscad", "-o", csg, source, NULL};
+    pid_t pid;
+    int spawned = posix_spawnp(&pid, "openscad", &actions, NULL, argv, environ);
+    posix_spawn_file_actions_destroy(&actions);
+    sc_status st = SC_OK;
+    if (spawned != 0) {
+        st = fail(error, SC_ERR_IO,
+                  "cannot convert '%s': OpenSCAD is not installed ('openscad' %s)", path,
+                  spawned == ENOENT ? "was not found in PATH" : strerror(spawned));
+    } else {
+        int status = 0;
+        while (waitpid(pid, &status, 0) < 0 && errno == EINTR)
+            ;
+        if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) {
+            char last[400];
+            last_line(log, last, sizeof last);
+            st = fail(error, SC_ERR_IO, "OpenSCAD could not convert '%s': %s", path,
+                      last[0] ? last : "it failed without a message");
+        }
+    }
+    if (st == SC_OK) {
+        size_t size = 0;
+        char *text = read_text(csg, &size);
+        if (!text)
+            st = fail(error, SC_ERR_IO, "OpenSCAD wrote no CSG for '%s'%s", path, "");
+        else
+            st = sc_scene_load_string(name, text, size, options, scene, error);
+        free(text);
+    }
+    unlink(csg);
+    unlink(log);
+    rmdir(dir);
+    return st;
+}

@@ -1,0 +1,51 @@
+/* Triangle-mesh leaves (prim_mesh.c): closed meshes from `polyhedron` (the
+ * non-convex ones) and `import`, with a hierarchy of boxes over their
+ * triangles. prim.c dispatches to the operations below; they mean what
+ * they mean in prim.h.
+ */
+#ifndef SPANCAST_CSG_PRIM_MESH_H
+#define SPANCAST_CSG_PRIM_MESH_H
+
+#include <stdint.h>
+
+#include "csg/prim.h"
+
+/* The most spans a mesh leaf gives one ray, and the most crossings it
+ * sorts exactly; past either, the rest of the line up to the mesh's last
+ * crossing is filled (see prim_mesh.c). A mesh with n triangles has at
+ * most n / 2 spans, so small meshes get smaller buffers. */
+#define PRIM_MESH_MAX_SPANS 32
+#define PRIM_MESH_MAX_CROSSINGS 256
+
+/* A node of the triangle hierarchy: a leaf when count > 0 (triangles
+ * start .. start + count - 1), else an inner node whose children are the
+ * next node and node start. */
+typedef struct prim_mesh_node {
+    bbox box; /* padded by a scene-relative margin, see prim_mesh.c */
+    uint32_t start, count;
+} prim_mesh_node;
+
+typedef struct prim_mesh {
+    const vec3 *v; /* 3 corners per triangle, in hierarchy order */
+    const vec3 *n; /* per triangle, (b - a) x (c - a), outward */
+    const prim_mesh_node *nodes;
+    uint32_t tri_count, node_count;
+    bbox bounds; /* of the corners, unpadded */
+} prim_mesh;
+
+struct csg_builder;
+
+/* Builds the mesh of tri_count triangles (three indices into points each,
+ * wound so that (b - a) x (c - a) points out of the solid) in b's arena;
+ * triangles without area are dropped. Returns NULL when memory ran out or
+ * no triangle has area. */
+const prim_mesh *prim_mesh_create(struct csg_builder *b, const vec3 *points,
+                                  const uint32_t *tris, uint32_t tri_count);
+
+uint32_t prim_mesh_spans(const prim *p, uint32_t leaf, vec3 o, vec3 d, span *out,
+                         uint32_t cap);
+vec3 prim_mesh_normal(const prim *p, vec3 q, uint16_t part);
+int prim_mesh_inside(const prim *p, vec3 q);
+uint32_t prim_mesh_max_spans(const prim *p);
+
+#endif

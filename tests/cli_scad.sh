@@ -1,0 +1,69 @@
+# `spancast render model.scad`: conversion through OpenSCAD. The knob model
+# (an imported STL, drilled) renders from its .scad exactly as from its
+# .csg (relative imports resolve beside the source), the temporary
+# directory is gone afterwards, a source OpenSCAD rejects gives OpenSCAD's
+# last message, and without openscad in PATH the error says so. The
+# conversion part is skipped (exit 0, with a note) when openscad is missing;
+# the missing-OpenSCAD message is checked either way.
+#
+# Run as: bash cli_scad.sh <path-to-spancast> <source-dir> <work-dir>
+set -u
+bin=$(cd "$(dirname "$1")" && pwd)/$(basename "$1")
+src=$(cd "$2" && pwd)
+work=$3
+rm -rf "$work"
+mkdir -p "$work/tmp"
+work=$(cd "$work" && pwd)
+cd "$work" || exit 1
+
+fails=0
+fail() {
+    echo "FAIL: $*"
+    fails=$((fails + 1))
+}
+
+# No OpenSCAD: a PATH without it.
+printf 'cube(1);\n' >cube.scad
+PATH=/nonexistent "$bin" render cube.scad -o none.png -q 2>err.txt
+rc=$?
+want="spancast: error: cannot convert 'cube.scad': OpenSCAD is not installed ('openscad' was not found in PATH)"
+[ "$rc" = 1 ] || fail "without openscad: exit $rc (want 1)"
+[ "$(cat err.txt)" = "$want" ] || fail "without openscad: got '$(cat err.txt)'"
+[ -e none.png ] && fail "without openscad: an image was written"
+
+if ! command -v openscad >/dev/null; then
+    echo "skipped: openscad is not installed (conversion not checked)"
+    [ "$fails" = 0 ] || exit 1
+    exit 0
+fi
+
+export TMPDIR="$work/tmp"
+"$bin" render "$src/models/knob_part.scad" -o scad.png --imgsize=96,96 --threads=1 -q ||
+    fail "knob_part.scad did not render"
+"$bin" render "$src/models/knob_part.csg" -o csg.png --imgsize=96,96 --threads=1 -q ||
+    fail "knob_part.csg did not render"
+cmp -s scad.png csg.png || fail "knob_part: .scad and .csg renders differ"
+[ -z "$(ls -A "$work/tmp")" ] || fail "temporary files left: $(ls -A "$work/tmp")"
+
+printf 'cube(;\n' >bad.scad
+"$bin" render bad.scad -o bad.png -q 2>err.txt
+rc=$?
+want="spancast: error: OpenSCAD could not convert 'bad.scad': Can't parse file '$work/bad.scad'!"
+[ "$rc" = 1 ] || fail "bad.scad: exit $rc (want 1)"
+[ "$(cat err.txt)" = "$want" ] || fail "bad.scad: got '$(cat err.txt)'"
+[ -e bad.png ] && fail "bad.scad: an image was written"
+[ -z "$(ls -A "$work/tmp")" ] || fail "temporary files left after a failure"
+
+# An error inside the converted model names the .csg beside the source.
+printf 'import("open.stl");\n' >open.scad
+printf 'solid o\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 0 1 0\nendloop\nendfacet\nendsolid o\n' >open.stl
+"$bin" render open.scad -o open.png -q 2>err.txt
+want="$work/open.csg:1:15: error: imported mesh is not closed (edge (0, 0, 0)-(0, 1, 0) is used by 1 face)"
+[ "$(cat err.txt)" = "$want" ] || fail "open.scad: got '$(cat err.txt)'"
+[ -e open.csg ] && fail "open.scad: a .csg was left beside the source"
+
+if [ "$fails" != 0 ]; then
+    echo "$fails failure(s)"
+    exit 1
+fi
+echo "cli_scad: all checks passed"

@@ -1,0 +1,351 @@
+/* Tests of the triangle-mesh leaf (src/csg/prim_mesh.c): rays through
+ * vertices and edges counted once (watertightness), entries and exits by
+ * facing, non-convex spans against membership, the span and crossing caps
+ * and what happens past them, normals of meshes with more than 65536
+ * triangles, and winding membership. */
+#include <math.h>
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <cmocka.h>
+#include <stdlib.h>
+
+#include "csg/csg.h"
+#include "csg/prim_mesh.h"
+
+static const double PI = 3.14159265358979323846;
+
+typedef struct soup {
+    vec3 *p;
+    uint32_t *t;
+    uint32_t np, nt;
+} soup;
+
+static void soup_point(soup *s, vec3 p)
+{
+    s->p = realloc(s->p, (s->np + 1) * sizeof *s->p);
+    assert_non_null(s->p);
+    s->p[s->np++] = p;
+}
+
+static void soup_tri(soup *s, uint32_t a, uint32_t b, uint32_t c)
+{
+    s->t = realloc(s->t, (s->nt + 1) * 3 * sizeof *s->t);
+    assert_non_null(s->t);
+    s->t[3 * s->nt] = a;
+    s->t[3 * s->nt + 1] = b;
+    s->t[3 * s->nt + 2] = c;
+    s->nt++;
+}
+
+/* An outward-wound box lo..hi, each face split along a diagonal. */
+static void soup_box(soup *s, vec3 lo, vec3 hi)
+{
+    uint32_t b = s->np;
+    for (int i = 0; i < 8; i++)
+        soup_point(s, v3(i & 1 ? hi.x : lo.x, i & 2 ? hi.y : lo.y, i & 4 ? hi.z : lo.z));
+    static const int q[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4},
+                                {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
+    for (int f = 0; f < 6; f++) {
+        soup_tri(s, b + q[f][0], b + q[f][1], b + q[f][2]);
+        soup_tri(s, b + q[f][0], b + q[f][2], b + q[f][3]);
+    }
+}
+
+/* A UV sphere of radius r, outward: rings * segments quads. */
+static void soup_sphere(soup *s, double r, int rings, int segments)
+{
+    uint32_t b = s->np;
+    soup_point(s, v3(0, 0, -r));
+    for (int i = 1; i < rings; i++) {
+        double th = PI * i / rings - PI / 2;
+        for (int j = 0; j < segments; j++) {
+            double ph = 2 * PI * j / segments;
+            soup_point(s, v3(r * cos(th) * cos(ph), r * cos(th) * sin(ph), r * sin(th)));
+        }
+    }
+    soup_point(s, v3(0, 0, r));
+    uint32_t top = s->np - 1;
+#define RING(i, j) (b + 1 + (uint32_t)((i)-1) * segments + (uint32_t)((j) % segments))
+    for (int j = 0; j < segments; j++) {
+        soup_tri(s, b, RING(1, j + 1), RING(1, j));
+        soup_tri(s, top, RING(rings - 1, j), RING(rings - 1, j + 1));
+        for (int i = 1; i + 1 < rings; i++) {
+            soup_tri(s, RING(i, j), RING(i, j + 1), RING(i + 1, j + 1));
+            soup_tri(s, RING(i, j), RING(i + 1, j + 1), RING(i + 1, j));
+        }
+    }
+#undef RING
+}
+
+/* t from barycentric interpolation: exact up to a few roundings. */
+static int near(double a, double b)
+{
+    return fabs(a - b) <= 1e-12 * fmax(1, fabs(b));
+}
+
+static prim make(csg_builder *b, soup *s)
+{
+    prim p = {.kind = PRIM_MESH};
+    p.u.mesh.mesh = prim_mesh_create(b, s->p, s->t, s->nt);
+    assert_non_null(p.u.mesh.mesh);
+    free(s->p);
+    free(s->t);
+    s->p = NULL;
+    s->t = NULL;
+    s->np = s->nt = 0;
+    return p;
+}
+
+static uint64_t next(uint64_t *x)
+{
+    *x ^= *x << 13;
+    *x ^= *x >> 7;
+    *x ^= *x << 17;
+    return *x;
+}
+
+static double uniform(uint64_t *x, double lo, double hi)
+{
+    return lo + (hi - lo) * (double)(next(x) >> 11) / 9007199254740992.0;
+}
+
+/* The unit cube: rays along each axis through the face centres (on the
+ * diagonal of the two triangles of each face) give exactly one span [1, 2]
+ * (from one unit before the near face), entering at a face whose normal
+ * faces the ray; rays along the cube's faces and edges (the rest of the
+ * grid {0, 0.5, 1}^2) give that span or none. */
+static void test_cube_edges_and_vertices(void **state)
+{
+    (void)state;
+    csg_builder *b = csg_builder_new();
+    soup s = {0};
+    soup_box(&s, v3(0, 0, 0), v3(1, 1, 1));
+    prim p = make(b, &s);
+    assert_int_equal(prim_max_spans(&p), 6);
+    for (int axis = 0; axis < 3; axis++) {
+        for (int sign = -1; sign <= 1; sign += 2) {
+            for (int i = 0; i <= 2; i++) {
+                for (int j = 0; j <= 2; j++) {
+                    double u = i / 2.0, v = j / 2.0, start = sign > 0 ? -1 : 2;
+                    vec3 o = axis == 0   ? v3(start, u, v)
+                             : axis == 1 ? v3(u, start, v)
+                                         : v3(u, v, start);
+                    vec3 d = v3(axis == 0 ? sign : 0, axis == 1 ? sign : 0,
+                                axis == 2 ? sign : 0);
+                    span out[8];
+                    uint32_t n = prim_spans(&p, 7, o, d, out, 8);
+                    /* a ray along the boundary is tangent: the
+                     * perturbation puts it inside or outside, whole */
+                    int boundary = i != 1 || j != 1;
+                    if (boundary && n == 0)
+                        continue;
+                    assert_int_equal(n, 1);
+                    assert_true(near(out[0].in.t, 1) && near(out[0].out.t, 2));
+                    assert_int_equal(out[0].in.leaf, 7);
+                    vec3 nin = prim_normal(&p, v3_madd(o, d, 1), out[0].in.part);
+                    vec3 nout = prim_normal(&p, v3_madd(o, d, 2), out[0].out.part);
+                    assert_true(v3_dot(nin, d) < 0);
+                    assert_true(v3_dot(nout, d) > 0);
+                }
+            }
+        }
+    }
+    csg_builder_free(b);
+}
+
+/* A closed sphere mesh: every line from the centre through a vertex or a
+ * point of an edge (where two or more triangles meet) crosses the surface
+ * exactly twice, one span; no ray slips between faces. */
+static void test_watertight_sphere(void **state)
+{
+    (void)state;
+    csg_builder *b = csg_builder_new();
+    soup s = {0};
+    soup_sphere(&s, 1.3, 9, 14);
+    vec3 *pts = malloc(s.np * sizeof *pts);
+    uint32_t *tris = malloc(s.nt * 3 * sizeof *tris);
+    assert_true(pts && tris);
+    uint32_t np = s.np, nt = s.nt;
+    for (uint32_t i = 0; i < np; i++)
+        pts[i] = s.p[i];
+    for (uint32_t i = 0; i < 3 * nt; i++)
+        tris[i] = s.t[i];
+    prim p = make(b, &s);
+    uint64_t rng = 12345;
+    uint32_t rays = 0;
+    for (uint32_t t = 0; t < nt; t++) {
+        vec3 a = pts[tris[3 * t]], c = pts[tris[3 * t + 1]];
+        for (int k = 0; k < 4; k++) {
+            /* a vertex, then points along an edge */
+            double w = k == 0 ? 0 : uniform(&rng, 0, 1);
+            vec3 target = v3_add(v3_scale(a, 1 - w), v3_scale(c, w));
+            vec3 centre = v3(uniform(&rng, -0.1, 0.1), uniform(&rng, -0.1, 0.1),
+                             uniform(&rng, -0.1, 0.1));
+            vec3 d = v3_sub(target, centre);
+            span out[8];
+            uint32_t n = prim_spans(&p, 0, centre, d, out, 8);
+            assert_int_equal(n, 1);
+            assert_true(out[0].in.t < 0 && fabs(out[0].out.t - 1) < 1e-12);
+            rays++;
+        }
+    }
+    assert_int_equal(rays, 4 * nt);
+    free(pts);
+    free(tris);
+    csg_builder_free(b);
+}
+
+/* A U shape (three boxes touching face to face would not be one closed
+ * mesh, so two disjoint prongs and a bar under them): random rays agree
+ * with membership at the midpoints of spans and gaps. */
+static void test_nonconvex_against_inside(void **state)
+{
+    (void)state;
+    csg_builder *b = csg_builder_new();
+    soup s = {0};
+    soup_box(&s, v3(-2, -1, -1), v3(-1, 1, 1));
+    soup_box(&s, v3(1, -1, -1), v3(2, 1, 1));
+    soup_sphere(&s, 0.8, 7, 11);
+    prim p = make(b, &s);
+    uint64_t rng = 99;
+    uint32_t multi = 0;
+    for (int r = 0; r < 3000; r++) {
+        vec3 o = v3(uniform(&rng, -4, 4), uniform(&rng, -4, 4), uniform(&rng, -4, 4));
+        vec3 d = v3_sub(
+            v3(uniform(&rng, -2, 2), uniform(&rng, -1, 1), uniform(&rng, -1, 1)), o);
+        span out[PRIM_MESH_MAX_SPANS];
+        uint32_t n = prim_spans(&p, 0, o, d, out, prim_max_spans(&p));
+        multi += n > 1;
+        for (uint32_t k = 0; k < n; k++) {
+            assert_true(out[k].in.t <= out[k].out.t);
+            if (k > 0)
+                assert_true(out[k - 1].out.t <= out[k].in.t);
+            double len = out[k].out.t - out[k].in.t;
+            if (len > 1e-6)
+                assert_true(prim_inside(&p, v3_madd(o, d, out[k].in.t + 0.5 * len)));
+            if (k > 0 && out[k].in.t - out[k - 1].out.t > 1e-6)
+                assert_false(prim_inside(
+                    &p, v3_madd(o, d, 0.5 * (out[k - 1].out.t + out[k].in.t))));
+        }
+        if (n > 0) {
+            assert_false(prim_inside(&p, v3_madd(o, d, out[0].in.t - 0.01)));
+            assert_false(prim_inside(&p, v3_madd(o, d, out[n - 1].out.t + 0.01)));
+        } else {
+            assert_false(prim_inside(&p, o));
+        }
+    }
+    assert_true(multi > 100);
+    assert_true(prim_inside(&p, v3(-1.5, 0, 0)));
+    assert_true(prim_inside(&p, v3(0, 0, 0)));
+    assert_false(prim_inside(&p, v3(0.9, 0, 0)));
+    assert_true(prim_inside(&p, v3(-1, 0.5, 0.5))); /* on the surface: closed */
+    csg_builder_free(b);
+}
+
+/* count disjoint unit boxes in a row along x, gaps of 1. */
+static prim comb(csg_builder *b, int count)
+{
+    soup s = {0};
+    for (int i = 0; i < count; i++)
+        soup_box(&s, v3(2 * i, 0, 0), v3(2 * i + 1, 1, 1));
+    return make(b, &s);
+}
+
+/* Past the span cap: the first cap - 1 spans are exact and the last one
+ * runs from the cap-th entry to the mesh's last exit. Past the crossing
+ * cap (256, 128 boxes): the spans of the 256 nearest crossings are exact
+ * and the last one reaches the last exit. */
+static void test_caps(void **state)
+{
+    (void)state;
+    csg_builder *b = csg_builder_new();
+    vec3 o = v3(-0.5, 0.3, 0.6), d = v3(1, 0, 0);
+    prim p = comb(b, 40);
+    assert_int_equal(prim_max_spans(&p), PRIM_MESH_MAX_SPANS);
+    span out[200];
+    uint32_t n = prim_spans(&p, 0, o, d, out, prim_max_spans(&p));
+    assert_int_equal(n, PRIM_MESH_MAX_SPANS);
+    for (uint32_t k = 0; k + 1 < n; k++) {
+        assert_true(near(out[k].in.t, 2 * k + 0.5));
+        assert_true(near(out[k].out.t, 2 * k + 1.5));
+    }
+    assert_true(near(out[n - 1].in.t, 2 * (n - 1) + 0.5));
+    assert_true(near(out[n - 1].out.t, 2 * 39 + 1.5));
+    /* with room for all 40 */
+    n = prim_spans(&p, 0, o, d, out, 200);
+    assert_int_equal(n, 40);
+    assert_true(near(out[39].in.t, 78.5) && near(out[39].out.t, 79.5));
+
+    prim q = comb(b, 150);
+    n = prim_spans(&q, 0, o, d, out, 200);
+    assert_int_equal(n, PRIM_MESH_MAX_CROSSINGS / 2);
+    for (uint32_t k = 0; k + 1 < n; k++)
+        assert_true(near(out[k].in.t, 2 * k + 0.5) && near(out[k].out.t, 2 * k + 1.5));
+    assert_true(near(out[n - 1].in.t, 2 * (n - 1) + 0.5));
+    assert_true(near(out[n - 1].out.t, 2 * 149 + 1.5));
+    /* membership counts every crossing, however many */
+    assert_true(prim_inside(&q, v3(2 * 140 + 0.5, 0.5, 0.5)));
+    assert_false(prim_inside(&q, v3(2 * 140 + 1.5, 0.5, 0.5)));
+    csg_builder_free(b);
+}
+
+/* A sphere mesh of more than 65536 triangles: the 16-bit part names the
+ * triangle modulo 65536; the normal at each first hit is still the hit
+ * triangle's (close to the radial direction). */
+static void test_normals_of_large_meshes(void **state)
+{
+    (void)state;
+    csg_builder *b = csg_builder_new();
+    soup s = {0};
+    soup_sphere(&s, 1, 130, 270);
+    assert_true(s.nt > 65536);
+    prim p = make(b, &s);
+    uint64_t rng = 7;
+    for (int r = 0; r < 400; r++) {
+        vec3 o = v3(uniform(&rng, -3, 3), uniform(&rng, -3, 3), 5);
+        vec3 d = v3_sub(v3(uniform(&rng, -0.6, 0.6), uniform(&rng, -0.6, 0.6), 0), o);
+        span out[PRIM_MESH_MAX_SPANS];
+        uint32_t n = prim_spans(&p, 0, o, d, out, prim_max_spans(&p));
+        assert_int_equal(n, 1);
+        vec3 q = v3_madd(o, d, out[0].in.t);
+        vec3 nrm = prim_normal(&p, q, out[0].in.part);
+        double c = v3_dot(nrm, q) / (v3_length(nrm) * v3_length(q));
+        assert_true(c > 0.999);
+    }
+    csg_builder_free(b);
+}
+
+/* A triangle without area makes no mesh; a zero direction gives nothing;
+ * a ray along a face's plane meets only the faces across it. */
+static void test_degenerate(void **state)
+{
+    (void)state;
+    csg_builder *b = csg_builder_new();
+    vec3 pts[3] = {{0, 0, 0}, {1, 0, 0}, {2, 0, 0}};
+    uint32_t tri[3] = {0, 1, 2};
+    assert_null(prim_mesh_create(b, pts, tri, 1)); /* no area */
+    prim p = comb(b, 1);
+    span out[4];
+    assert_int_equal(prim_spans(&p, 0, v3(0, 0, 0), v3(0, 0, 0), out, 4), 0);
+    /* a ray in the plane of a face, along it: only the side faces count */
+    uint32_t n = prim_spans(&p, 0, v3(-1, 0, 0.5), v3(1, 0, 0), out, 4);
+    assert_true(n <= 1);
+    if (n == 1)
+        assert_true(near(out[0].in.t, 1) && near(out[0].out.t, 2));
+    csg_builder_free(b);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_cube_edges_and_vertices),
+        cmocka_unit_test(test_watertight_sphere),
+        cmocka_unit_test(test_nonconvex_against_inside),
+        cmocka_unit_test(test_caps),
+        cmocka_unit_test(test_normals_of_large_meshes),
+        cmocka_unit_test(test_degenerate),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
