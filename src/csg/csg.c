@@ -788,17 +788,30 @@ static span_list eval(eval_ctx *c, uint32_t id, double lo, double hi, eval_mode 
                               : eval_cut(c, n, lo, hi);
 }
 
+/* Two parts, in length units. The resolution: 1e-9 of the solid's extent,
+ * the size below which coincident faces fuse and slivers vanish. The
+ * rounding: a coordinate of magnitude X (the scene far from the origin, or
+ * the ray's origin far from the scene) carries errors of a few ulps of X,
+ * which tied surfaces must also absorb; 2^-40 of X is 8192 ulps, room for a
+ * chain of roundings and a ray at a shallow angle. Both terms used to be
+ * 1e-9 (9e6 ulps): a part of size 1 moved to 1e8, or seen from 1e9 away,
+ * then lost every feature below 0.1 or 1 unit, which double precision
+ * resolves down to 1e-8 (tests/test_stability.c, translation and far
+ * camera). The extent falls back to the scale for a solid of no extent. */
 double csg_eps(const csg_tree *t, vec3 o, vec3 d)
 {
-    double dist = 0;
+    double dist = 0, extent = t->scale;
     if (!bbox_is_empty(&t->bounds)) {
         vec3 center = bbox_center(&t->bounds);
         dist = v3_length(v3_sub(o, center));
+        double e = v3_max_abs(bbox_extent(&t->bounds));
+        if (e > 0 && isfinite(e))
+            extent = e;
     }
     double len = v3_length(d);
     if (!(len > 0))
         len = 1;
-    return 1e-9 * fmax(t->scale, dist) / len;
+    return fmax(1e-9 * extent, 0x1p-40 * fmax(t->scale, dist)) / len;
 }
 
 /* Runs a query from the root; returns 0 on allocation failure. */
