@@ -8,6 +8,7 @@
  * per-pixel bound; the ray cases (grazing, tangent, thin) check span lists
  * against the point-membership oracle csg_inside.
  */
+#include <dirent.h>
 #include <malloc.h>
 #include <math.h>
 #include <setjmp.h>
@@ -19,6 +20,9 @@
 #include <string.h>
 
 #include <cmocka.h>
+#if defined(__SANITIZE_ADDRESS__)
+#include <sanitizer/allocator_interface.h>
+#endif
 
 #include "csg/csg.h"
 #include "render/stability.h"
@@ -112,6 +116,99 @@ static void test_random_similarities(void **state)
         stab_similarity x = stab_random(seed, -6, 6, 2.0, 1e3);
         compare_clean("part.csg", NULL, &x);
     }
+}
+
+/* ---- the metamorphic check over every model ---- */
+
+typedef struct model_list {
+    char paths[256][512];
+    int n;
+} model_list;
+
+/* Every .csg under dir, recursively, except the hostile corpora (files that
+ * must fail to load, or may crash a careless loader). */
+static void find_models(const char *dir, model_list *list)
+{
+    DIR *d = opendir(dir);
+    if (!d)
+        return;
+    struct dirent *e;
+    while ((e = readdir(d))) {
+        if (e->d_name[0] == '.' || !strcmp(e->d_name, "bad-input") ||
+            !strcmp(e->d_name, "fuzz-regressions"))
+            continue;
+        char path[512];
+        snprintf(path, sizeof path, "%s/%s", dir, e->d_name);
+        size_t n = strlen(path);
+        if (n > 4 && !strcmp(path + n - 4, ".csg")) {
+            assert_true(list->n < 256);
+            memcpy(list->paths[list->n++], path, n + 1);
+        } else {
+            find_models(path, list);
+        }
+    }
+    closedir(d);
+}
+
+static char *read_path(const char *path)
+{
+    FILE *f = fopen(path, "rb");
+    assert_non_null(f);
+    fseek(f, 0, SEEK_END);
+    long n = ftell(f);
+    fseek(f, 0, SEEK_SET);
+    char *text = malloc((size_t)n + 1);
+    assert_non_null(text);
+    assert_int_equal(fread(text, 1, (size_t)n, f), (size_t)n);
+    text[n] = 0;
+    fclose(f);
+    return text;
+}
+
+static void test_metamorphic_all_models(void **state)
+{
+    (void)state;
+    static model_list list;
+    list.n = 0;
+    find_models(SPANCAST_SOURCE_DIR "/models", &list);
+    find_models(SPANCAST_SOURCE_DIR "/tests", &list);
+    assert_true(list.n >= 10);
+    uint64_t pixels = 0, hits = 0;
+    for (int m = 0; m < list.n; m++) {
+        char *text = read_path(list.paths[m]);
+        for (uint64_t k = 0; k < 3; k++) {
+            /* Rotation, scale over 12 decades, translation up to 1000 times
+             * the scaled model's radius. */
+            sc_error e;
+            stab_result r;
+            sc_scene *probe = load_text(text);
+            double lo[3], hi[3], radius = 1;
+            if (sc_scene_bounds(probe, lo, hi))
+                radius = 0.5 * sqrt((hi[0] - lo[0]) * (hi[0] - lo[0]) +
+                                    (hi[1] - lo[1]) * (hi[1] - lo[1]) +
+                                    (hi[2] - lo[2]) * (hi[2] - lo[2]));
+            sc_scene_release(probe);
+            stab_similarity x = stab_random(1000 * (uint64_t)m + k, -6, 6, radius, 1e3);
+            if (stab_compare(list.paths[m], text, NULL, &x, 24, &r, &e) != SC_OK)
+                fail_msg("%s", e.message);
+            if (r.mask_mismatches || r.nan_count || r.depth_violations)
+                print_message("%s (seed %llu): mismatches %llu nan %llu depth %llu "
+                              "(max rel %.3g)\n",
+                              list.paths[m], (unsigned long long)(1000 * m + (int)k),
+                              (unsigned long long)r.mask_mismatches,
+                              (unsigned long long)r.nan_count,
+                              (unsigned long long)r.depth_violations,
+                              r.max_rel_depth_error);
+            assert_int_equal(r.mask_mismatches, 0);
+            assert_int_equal(r.nan_count, 0);
+            assert_int_equal(r.depth_violations, 0);
+            pixels += r.pixels;
+            hits += r.hits;
+        }
+        free(text);
+    }
+    print_message("metamorphic: %d models, %llu pixels, %llu hits, all identical\n",
+                  list.n, (unsigned long long)pixels, (unsigned long long)hits);
 }
 
 /* ---- coincident faces ---- */
@@ -351,10 +448,16 @@ static char *wide_union(int leaves)
     return text;
 }
 
+/* Bytes the program holds on the heap (AddressSanitizer replaces malloc and
+ * keeps its own count). */
 static size_t heap_in_use(void)
 {
+#if defined(__SANITIZE_ADDRESS__)
+    return __sanitizer_get_current_allocated_bytes();
+#else
     struct mallinfo2 m = mallinfo2();
     return m.uordblks + m.hblkhd;
+#endif
 }
 
 static void test_wide_union(void **state)
@@ -431,6 +534,7 @@ int main(void)
         cmocka_unit_test(test_scale),
         cmocka_unit_test(test_translation),
         cmocka_unit_test(test_random_similarities),
+        cmocka_unit_test(test_metamorphic_all_models),
         cmocka_unit_test(test_coincident),
         cmocka_unit_test(test_tangent_sphere_cylinder_torus),
         cmocka_unit_test(test_grazing_face),
