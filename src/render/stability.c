@@ -252,3 +252,104 @@ sc_status stab_compare(const char *name, const char *text, const char *moved_tex
     sc_scene_release(base);
     return SC_OK;
 }
+
+/* 1 when every span of the solid along ray is no longer than eps: the far
+ * camera's regularisation (its eps is 2^-40 of its distance, csg_eps)
+ * removes exactly those, by the rule, so missing them is not a mismatch. */
+static int below_resolution(const csg_tree *t, const csg_ray *ray, double eps,
+                            arena *scratch)
+{
+    span_list l;
+    if (!csg_spans(t, ray, scratch, &l))
+        return 0;
+    for (uint32_t i = 0; i < l.n; i++)
+        if (l.v[i].out.t - l.v[i].in.t > eps)
+            return 0;
+    return 1;
+}
+
+sc_status stab_far_camera(const char *name, const char *text, double distance, int size,
+                          stab_result *out, sc_error *error)
+{
+    memset(out, 0, sizeof *out);
+    sc_scene *scene = NULL;
+    sc_status st = sc_scene_load_string(name, text, strlen(text), NULL, &scene, error);
+    if (st != SC_OK)
+        return st;
+    const csg_tree *t = scene_tree(scene);
+    out->pixels = (uint64_t)size * (uint64_t)size;
+    if (!bbox_is_empty(&t->bounds)) {
+        vec3 center = bbox_center(&t->bounds);
+        double radius = v3_length(bbox_extent(&t->bounds)) / 2;
+        double near = 10 * radius;
+        vec3 d = v3_normalize(v3(-0.5773, -0.6421, -0.5049));
+        vec3 right = v3_normalize(v3_cross(d, v3(0, 0, 1))), up = v3_cross(right, d);
+        arena scratch;
+        arena_init(&scratch, 1 << 16);
+        for (int j = 0; j < size; j++)
+            for (int i = 0; i < size; i++) {
+                double x = (2 * (i + 0.5) / size - 1) * radius;
+                double y = (1 - 2 * (j + 0.5) / size) * radius;
+                vec3 target = v3_add(center, v3_add(v3_scale(right, x), v3_scale(up, y)));
+                csg_ray rn = {v3_madd(target, d, -near), d, 0, INFINITY};
+                csg_ray rf = {v3_madd(target, d, -distance), d, 0, INFINITY};
+                csg_hit hn, hf;
+                int a = csg_first_hit(t, &rn, &scratch, &hn);
+                int b = csg_first_hit(t, &rf, &scratch, &hf);
+                out->hits += (uint64_t)a;
+                if (a && !b && below_resolution(t, &rn, csg_eps(t, rf.o, rf.d), &scratch))
+                    out->below_resolution++;
+                else
+                    out->mask_mismatches += (uint64_t)(a != b);
+                int finite_a = !a || hit_is_finite(t, &rn, &hn);
+                int finite_b = !b || hit_is_finite(t, &rf, &hf);
+                out->nan_count += (uint64_t)!finite_a + (uint64_t)!finite_b;
+                if (a && b && finite_a && finite_b && hf.t > 0) {
+                    /* distance - near is exact for the distances used
+                     * (both have few significant bits), so the difference
+                     * is the far ray's rounding: a few ulps of distance. */
+                    double rel = fabs(hf.t - (distance - near) - hn.t) / hf.t;
+                    if (rel > out->max_rel_depth_error)
+                        out->max_rel_depth_error = rel;
+                    out->depth_violations += rel > STAB_ULPS * UNIT_ROUNDOFF;
+                }
+                arena_reset(&scratch);
+            }
+        arena_free(&scratch);
+    }
+    sc_scene_release(scene);
+    return SC_OK;
+}
+
+char *stab_deep_differences(int levels)
+{
+    size_t room = (size_t)levels * 120 + 64, n = 0;
+    char *text = malloc(room);
+    if (!text)
+        return NULL;
+    for (int i = 0; i < levels; i++)
+        n += (size_t)snprintf(text + n, room - n,
+                              "difference() { cube(size = %.17g, center = true);\n",
+                              2.0 - 1.9 * i / levels);
+    n += (size_t)snprintf(text + n, room - n, "sphere(r = 0.01);");
+    for (int i = 0; i < levels; i++)
+        text[n++] = '}';
+    text[n] = 0;
+    return text;
+}
+
+char *stab_wide_union(int leaves)
+{
+    size_t room = (size_t)leaves * 100 + 64, n = 0;
+    char *text = malloc(room);
+    if (!text)
+        return NULL;
+    n += (size_t)snprintf(text + n, room - n, "union() {\n");
+    for (int i = 0; i < leaves; i++)
+        n += (size_t)snprintf(text + n, room - n,
+                              "multmatrix([[1,0,0,%d],[0,1,0,%d],[0,0,1,0],[0,0,0,1]]) "
+                              "{ cube(size = 0.5); }\n",
+                              i % 400, i / 400);
+    snprintf(text + n, room - n, "}\n");
+    return text;
+}

@@ -35,6 +35,8 @@ typedef struct stab_result {
     uint64_t nan_count;       /* hits whose t or normal is not finite (either model) */
     double max_rel_depth_error; /* max |t' - t| / t over pixels hit in both */
     uint64_t depth_violations;  /* pixels whose error exceeds their bound (see docs) */
+    uint64_t below_resolution;  /* far camera: near hits whose every span is shorter
+                                   than the far ray's eps (removed by the rule) */
 } stab_result;
 
 /* A random similarity from seed: a uniform rotation, scale 10^u with u
@@ -57,5 +59,21 @@ sc_status stab_compare(const char *name, const char *text, const char *moved_tex
 /* Counts the NaN results of the same camera's rays through one tree: hits
  * whose t or normal is not finite. *hits gets the number of hits. */
 uint64_t stab_nan_scan(const csg_tree *tree, int size, uint64_t *hits);
+
+/* The far-camera case: the model seen from distance along the harness
+ * camera's direction, with the field of view shrunk to frame it, against the
+ * same rays started 10 radii from the model. Both are orthographic in effect
+ * (parallel rays, origins on a grid across the view); out's depth error is
+ * |t_far - (distance - near) - t_near| / t_far. A near hit whose spans are
+ * all shorter than the far ray's eps counts as below_resolution, not as a
+ * mismatch. */
+sc_status stab_far_camera(const char *name, const char *text, double distance, int size,
+                          stab_result *out, sc_error *error);
+
+/* Generated models (malloc'd text, NULL when out of memory): levels nested
+ * differences of shrinking centred cubes around a small sphere, and a union
+ * of leaves cubes on a grid. */
+char *stab_deep_differences(int levels);
+char *stab_wide_union(int leaves);
 
 #endif
