@@ -99,11 +99,13 @@ static void test_translation(void **state)
     (void)state;
     const double offsets[] = {1e6, 1e8};
     for (size_t i = 0; i < 2; i++) {
-        stab_similarity x = stab_scaled(1, 1, 1, v3(offsets[i], -0.6 * offsets[i], 0.3 * offsets[i]));
+        stab_similarity x =
+            stab_scaled(1, 1, 1, v3(offsets[i], -0.6 * offsets[i], 0.3 * offsets[i]));
         compare_clean("part.csg", NULL, &x);
         /* Tied faces far from the origin still fuse (the rounding part of
          * eps, csg_eps). */
-        compare_clean("coincident_difference_expected.csg", "coincident_difference.csg", &x);
+        compare_clean("coincident_difference_expected.csg", "coincident_difference.csg",
+                      &x);
         compare_clean("coincident_union_expected.csg", "coincident_union.csg", &x);
     }
 }
@@ -429,6 +431,37 @@ static size_t heap_in_use(void)
 #endif
 }
 
+/* Scratch bytes one ray takes through n nested shells (2n crossings). */
+static size_t deep_ray_bytes(int levels)
+{
+    char *text = stab_deep_differences(levels);
+    sc_scene *s = load_text(text);
+    free(text);
+    arena scratch;
+    arena_init(&scratch, 1 << 12);
+    size_t before = heap_in_use();
+    csg_ray r = {v3(-5, 0.001, 0.0013), v3(1, 0, 0), 0, INFINITY};
+    span_list l;
+    assert_true(csg_spans(scene_tree(s), &r, &scratch, &l));
+    assert_true(l.n >= (uint32_t)levels / 2);
+    size_t bytes = heap_in_use() - before;
+    arena_free(&scratch);
+    sc_scene_release(s);
+    return bytes;
+}
+
+static void test_deep_query_memory(void **state)
+{
+    (void)state;
+    /* Four times the depth, about four times the scratch memory (each level
+     * used to keep its own copy of the list below it: sixteen times). */
+    size_t small = deep_ray_bytes(1000), large = deep_ray_bytes(4000);
+    double ratio = (double)large / (double)small;
+    print_message("deep ray: %zu and %zu scratch bytes, ratio %.2f\n", small, large,
+                  ratio);
+    assert_true(ratio < 6);
+}
+
 static void test_wide_union(void **state)
 {
     (void)state;
@@ -449,7 +482,8 @@ static void test_wide_union(void **state)
     /* Memory linear in the tree: ten times the leaves, about ten times the
      * bytes (the BVH and arrays grow by doubling, hence the slack). */
     double ratio = (double)bytes[1] / (double)bytes[0];
-    print_message("wide union: %zu and %zu bytes, ratio %.2f\n", bytes[0], bytes[1], ratio);
+    print_message("wide union: %zu and %zu bytes, ratio %.2f\n", bytes[0], bytes[1],
+                  ratio);
     assert_true(ratio > 5 && ratio < 20);
 }
 
@@ -495,6 +529,7 @@ int main(void)
         cmocka_unit_test(test_ill_conditioned),
         cmocka_unit_test(test_singular_is_empty),
         cmocka_unit_test(test_deep_differences),
+        cmocka_unit_test(test_deep_query_memory),
         cmocka_unit_test(test_wide_union),
         cmocka_unit_test(test_far_camera),
     };
