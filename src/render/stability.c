@@ -68,7 +68,8 @@ stab_similarity stab_random(uint64_t seed, double log10_scale_lo, double log10_s
     double a = sqrt(1 - u1), b = sqrt(u1);
     double w = a * sin(two_pi * u2), x = a * cos(two_pi * u2);
     double y = b * sin(two_pi * u3), z = b * cos(two_pi * u3);
-    double s = pow(10, log10_scale_lo + (log10_scale_hi - log10_scale_lo) * uniform(&state));
+    double s =
+        pow(10, log10_scale_lo + (log10_scale_hi - log10_scale_lo) * uniform(&state));
     stab_similarity r;
     r.m[0][0] = s * (1 - 2 * (y * y + z * z));
     r.m[0][1] = s * (2 * (x * y - z * w));
@@ -79,8 +80,8 @@ stab_similarity stab_random(uint64_t seed, double log10_scale_lo, double log10_s
     r.m[2][0] = s * (2 * (x * z - y * w));
     r.m[2][1] = s * (2 * (y * z + x * w));
     r.m[2][2] = s * (1 - 2 * (x * x + y * y));
-    vec3 dir = v3_normalize(v3(uniform(&state) - 0.5, uniform(&state) - 0.5,
-                               uniform(&state) - 0.5));
+    vec3 dir = v3_normalize(
+        v3(uniform(&state) - 0.5, uniform(&state) - 0.5, uniform(&state) - 0.5));
     r.t = v3_scale(dir, translation_ratio * s * radius * uniform(&state));
     return r;
 }
@@ -211,10 +212,9 @@ sc_status stab_compare(const char *name, const char *text, const char *moved_tex
          * model and the camera, times the condition number (a rounding
          * error of u X in world moves a point by up to u X |m^-1| in model
          * units, and X itself is up to |m| times the model's coordinates). */
-        double magnitude =
-            norm * inverse_norm *
-            (inverse_norm * v3_length(x->t) + v3_length(bbox_center(&a->bounds)) + radius +
-             cam.distance);
+        double magnitude = norm * inverse_norm *
+                           (inverse_norm * v3_length(x->t) +
+                            v3_length(bbox_center(&a->bounds)) + radius + cam.distance);
         arena scratch;
         arena_init(&scratch, 1 << 16);
         for (int j = 0; j < size; j++)

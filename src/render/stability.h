@@ -30,9 +30,9 @@ typedef struct stab_similarity {
 
 typedef struct stab_result {
     uint64_t pixels;
-    uint64_t hits;            /* pixels whose ray hits the untransformed model */
-    uint64_t mask_mismatches; /* hit in one, miss in the other */
-    uint64_t nan_count;       /* hits whose t or normal is not finite (either model) */
+    uint64_t hits;              /* pixels whose ray hits the untransformed model */
+    uint64_t mask_mismatches;   /* hit in one, miss in the other */
+    uint64_t nan_count;         /* hits whose t or normal is not finite (either model) */
     double max_rel_depth_error; /* max |t' - t| / t over pixels hit in both */
     uint64_t depth_violations;  /* pixels whose error exceeds their bound (see docs) */
     uint64_t below_resolution;  /* far camera: near hits whose every span is shorter
