@@ -703,7 +703,8 @@ typedef struct cut_state {
 static int visit_cut(eval_ctx *c, void *state, uint32_t id, double *lo, double *hi)
 {
     cut_state *s = state;
-    s->acc = keep(c, s->start, combine(c, s->op, s->acc, eval(c, id, *lo, *hi, EVAL_ALL)));
+    s->acc =
+        keep(c, s->start, combine(c, s->op, s->acc, eval(c, id, *lo, *hi, EVAL_ALL)));
     if (c->oom || s->acc.n == 0)
         return 0;
     *lo = fmax(*lo, s->acc.v[0].in.t);
@@ -717,7 +718,8 @@ static span_list eval_cut(eval_ctx *c, const csg_node *n, double lo, double hi)
 {
     arena_mark start = arena_save(c->scratch);
     cut_state s = {eval(c, c->tree->child_ids[n->first_child], lo, hi, EVAL_ALL),
-                   n->op == CSG_INTERSECTION ? SPAN_INTERSECTION : SPAN_DIFFERENCE, start};
+                   n->op == CSG_INTERSECTION ? SPAN_INTERSECTION : SPAN_DIFFERENCE,
+                   start};
     if (c->oom || s.acc.n == 0)
         return no_spans;
     /* Only where the first operand's solid lies can the others matter. */
