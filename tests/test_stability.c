@@ -21,7 +21,9 @@
 
 #include <cmocka.h>
 #if defined(__SANITIZE_ADDRESS__)
-#include <sanitizer/allocator_interface.h>
+/* The sanitizer runtime's count (sanitizer/allocator_interface.h, which
+ * Debian ships only with some compilers). */
+size_t __sanitizer_get_current_allocated_bytes(void);
 #endif
 
 #include "csg/csg.h"
