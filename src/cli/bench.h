@@ -6,7 +6,8 @@
  * argv[0] the benchmark's name. Returns the exit status. */
 int bench_main(int argc, char **argv);
 
-/* `spancast bench stability --csv FILE [--dir DIR] [--size N]`
+/* `spancast bench stability --csv FILE [--dir DIR] [--size N]
+ * [--depth N]`
  * (bench_stability.c), argv[0] "stability". Returns the exit status. */
 int bench_stability_main(int argc, char **argv);
 

@@ -22,8 +22,9 @@
  *                    condition number 1.4e9, 1e6 and 1
  *   singular         part.csg under a singular matrix: the empty solid with
  *                    one warning, so every hit would be a mismatch
- *   deep_differences_10000, wide_union_100000   generated trees, moved by a
- *                    random similarity (the deep one on an 8 x 8 image)
+ *   deep_differences_D, wide_union_100000   generated trees, moved by a
+ *                    random similarity (the deep one D = --depth levels,
+ *                    default 10000, on an 8 x 8 image)
  *   far_camera_1e9   part.csg from 1e9 away against 10 radii away
  *   model:FILE       every model in DIR/models under 3 random similarities
  * The exit status is 1 when a case has a mismatch, a NaN or a depth error
@@ -49,6 +50,7 @@ typedef struct row {
 typedef struct bench {
     const char *dir;
     int size;
+    int depth; /* levels of the deep case (--depth), the multmatrix included */
     row *rows;
     int count, room;
     int failed; /* a load failed or a case broke its bound */
@@ -276,15 +278,17 @@ static void run_cases(bench *b)
     compare_case(b, "mirror", part, NULL, &mirror, 1);
     singular_case(b, part);
 
-    /* 9998 differences around a leaf, inside the harness's multmatrix: the
-     * moved model is 10000 levels deep, the limit. */
-    char *deep = stab_deep_differences(9998);
+    /* depth - 2 differences around a leaf, inside the harness's multmatrix:
+     * the moved model is depth levels deep (default 10000, the limit). */
+    char *deep = stab_deep_differences(b->depth - 2);
+    char deep_name[64];
+    snprintf(deep_name, sizeof deep_name, "deep_differences_%d", b->depth);
     stab_similarity move = stab_random(3, -6, 6, 2.0, 1e3);
     /* A ray through all 5000 shells costs quadratic time in the depth (each
      * level merges the list below it), so this case uses an 8 x 8 image. */
     int size = b->size;
     b->size = size < 8 ? size : 8;
-    compare_case(b, "deep_differences_10000", deep, NULL, &move, 1);
+    compare_case(b, deep_name, deep, NULL, &move, 1);
     b->size = size;
     free(deep);
     char *wide = stab_wide_union(100000);
@@ -338,10 +342,12 @@ int bench_stability_main(int argc, char **argv)
     memset(&b, 0, sizeof b);
     b.dir = ".";
     b.size = 64;
+    b.depth = 10000;
     for (int i = 1; i < argc; i++) {
         const char *a = argv[i];
         const char *value = i + 1 < argc ? argv[i + 1] : NULL;
-        if (strcmp(a, "--csv") && strcmp(a, "--dir") && strcmp(a, "--size")) {
+        if (strcmp(a, "--csv") && strcmp(a, "--dir") && strcmp(a, "--size") &&
+            strcmp(a, "--depth")) {
             fprintf(stderr, "spancast: error: unknown option '%s'\n", a);
             return 2;
         }
@@ -354,6 +360,15 @@ int bench_stability_main(int argc, char **argv)
             csv = value;
         } else if (!strcmp(a, "--dir")) {
             b.dir = value;
+        } else if (!strcmp(a, "--depth")) {
+            char *end;
+            long n = strtol(value, &end, 10);
+            if (*end || n < 3 || n > 10000) {
+                fprintf(stderr, "spancast: error: --depth expects an integer from 3 to "
+                                "10000 (levels of the deep case)\n");
+                return 2;
+            }
+            b.depth = (int)n;
         } else {
             char *end;
             long n = strtol(value, &end, 10);

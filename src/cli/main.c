@@ -60,7 +60,7 @@ static const char usage_text[] =
     "usage: spancast render MODEL -o OUT.png [options]\n"
     "       spancast info MODEL\n"
     "       spancast bench accuracy --csv FILE [--plot FILE.png] [--rays N]\n"
-    "       spancast bench stability --csv FILE [--dir DIR] [--size N]\n"
+    "       spancast bench stability --csv FILE [--dir DIR] [--size N] [--depth N]\n"
     "       spancast --help | --version\n"
     "\n"
     "Renders a CSG model (OpenSCAD's .csg export, plus spancast's own nodes)\n"
