@@ -63,6 +63,7 @@ static const char usage_text[] =
     "usage: spancast render MODEL -o OUT.png [options]\n"
     "       spancast info MODEL\n"
     "       spancast bench accuracy --csv FILE [--plot FILE.png] [--rays N]\n"
+    "       spancast bench stability --csv FILE [--dir DIR] [--size N] [--depth N]\n"
     "       spancast --help | --version\n"
     "\n"
     "Renders a CSG model (OpenSCAD's .csg export, plus spancast's own nodes)\n"
@@ -764,6 +765,8 @@ int main(int argc, char **argv)
     if (argc < 2)
         return usage_error("missing command (try 'spancast --help')");
     const char *command = argv[1];
+    if (!strcmp(command, "bench") && argc > 2 && !strcmp(argv[2], "stability"))
+        return bench_stability_main(argc - 2, argv + 2);
     if (!strcmp(command, "bench"))
         return bench_main(argc - 2, argv + 2);
     cli_args a;

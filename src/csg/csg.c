@@ -578,6 +578,29 @@ static int overlaps(span_list s, double lo, double hi)
     return 0;
 }
 
+/* Frees everything allocated in scratch since mark except the list r,
+ * which moves to mark. A boolean's inputs die once it has combined them,
+ * but a bump arena keeps them: a ray through n nested shells made every
+ * level keep its own copy of the list below it, n^2 spans in all (1.6 GB
+ * at 10000 levels). Moving the result down keeps one live list per level
+ * of recursion, linear in the tree. Correct because r (the only survivor)
+ * was allocated after mark or is not in scratch at all, so the copy's
+ * destination lies at or before its source, or elsewhere: memmove. */
+static span_list keep(eval_ctx *c, arena_mark mark, span_list r)
+{
+    arena_restore(c->scratch, mark);
+    if (r.n == 0)
+        return no_spans;
+    span *v = arena_alloc(c->scratch, (size_t)r.n * sizeof(span));
+    if (!v) {
+        c->oom = 1;
+        return no_spans;
+    }
+    memmove(v, r.v, (size_t)r.n * sizeof(span));
+    r.v = v;
+    return r;
+}
+
 static span_list combine(eval_ctx *c, span_op op, span_list a, span_list b)
 {
     c->counters->span_ops += a.n && b.n;
@@ -587,7 +610,8 @@ static span_list combine(eval_ctx *c, span_op op, span_list a, span_list b)
 typedef struct union_state {
     span_list acc;
     eval_mode mode;
-    int narrowed; /* EVAL_FIRST moved hi to the running first entry */
+    int narrowed;     /* EVAL_FIRST moved hi to the running first entry */
+    arena_mark start; /* scratch before the first operand (see keep) */
 } union_state;
 
 /* The first span of s that reaches past lo, or NULL. */
@@ -615,7 +639,7 @@ static int visit_union(eval_ctx *c, void *state, uint32_t id, double *lo, double
         c->blocked = 1;
         return 0;
     }
-    u->acc = combine(c, SPAN_UNION, u->acc, s);
+    u->acc = keep(c, u->start, combine(c, SPAN_UNION, u->acc, s));
     if (c->oom)
         return 0;
     const span *first = u->mode == EVAL_FIRST ? first_after(u->acc, *lo) : NULL;
@@ -672,13 +696,15 @@ static void for_operands(eval_ctx *c, const csg_node *n, uint32_t skip, double l
 typedef struct cut_state {
     span_list acc;
     span_op op;
+    arena_mark start; /* scratch before the first operand (see keep) */
 } cut_state;
 
 /* Intersects or subtracts operand id; narrows [lo, hi] to what is left. */
 static int visit_cut(eval_ctx *c, void *state, uint32_t id, double *lo, double *hi)
 {
     cut_state *s = state;
-    s->acc = combine(c, s->op, s->acc, eval(c, id, *lo, *hi, EVAL_ALL));
+    s->acc =
+        keep(c, s->start, combine(c, s->op, s->acc, eval(c, id, *lo, *hi, EVAL_ALL)));
     if (c->oom || s->acc.n == 0)
         return 0;
     *lo = fmax(*lo, s->acc.v[0].in.t);
@@ -690,8 +716,10 @@ static int visit_cut(eval_ctx *c, void *state, uint32_t id, double *lo, double *
  * the others only where it lies. */
 static span_list eval_cut(eval_ctx *c, const csg_node *n, double lo, double hi)
 {
+    arena_mark start = arena_save(c->scratch);
     cut_state s = {eval(c, c->tree->child_ids[n->first_child], lo, hi, EVAL_ALL),
-                   n->op == CSG_INTERSECTION ? SPAN_INTERSECTION : SPAN_DIFFERENCE};
+                   n->op == CSG_INTERSECTION ? SPAN_INTERSECTION : SPAN_DIFFERENCE,
+                   start};
     if (c->oom || s.acc.n == 0)
         return no_spans;
     /* Only where the first operand's solid lies can the others matter. */
@@ -773,32 +801,47 @@ static span_list eval(eval_ctx *c, uint32_t id, double lo, double hi, eval_mode 
     if (n->op == CSG_LEAF)
         return eval_leaf(c, n);
     if (n->op == CSG_UNION) {
-        union_state u = {no_spans, mode, 0};
+        union_state u = {no_spans, mode, 0, arena_save(c->scratch)};
         for_operands(c, n, 0, lo, hi, visit_union, &u);
         const span *first = u.narrowed ? first_after(u.acc, lo) : NULL;
         if (first && first->in.t < lo) {
-            u.acc = no_spans;
+            u.acc = keep(c, u.start, no_spans);
             u.mode = EVAL_ALL;
             for_operands(c, n, 0, lo, hi, visit_union, &u);
         }
         return c->oom ? no_spans : u.acc;
     }
     /* Beyond its box the node is empty: no window need reach further. */
-    return mode == EVAL_FIRST ? eval_cut_first(c, n, lo, fmin(hi, t1))
-                              : eval_cut(c, n, lo, hi);
+    if (mode != EVAL_FIRST)
+        return eval_cut(c, n, lo, hi);
+    arena_mark start = arena_save(c->scratch);
+    return keep(c, start, eval_cut_first(c, n, lo, fmin(hi, t1)));
 }
 
+/* Two parts, in length units. The resolution: 1e-9 of the solid's extent,
+ * the size below which coincident faces fuse and slivers vanish. The
+ * rounding: a coordinate of magnitude X (the scene far from the origin, or
+ * the ray's origin far from the scene) carries errors of a few ulps of X,
+ * which tied surfaces must also absorb; 2^-40 of X is 8192 ulps, room for a
+ * chain of roundings and a ray at a shallow angle. Both terms used to be
+ * 1e-9 (9e6 ulps): a part of size 1 moved to 1e8, or seen from 1e9 away,
+ * then lost every feature below 0.1 or 1 unit, which double precision
+ * resolves down to 1e-8 (tests/test_stability.c, translation and far
+ * camera). The extent falls back to the scale for a solid of no extent. */
 double csg_eps(const csg_tree *t, vec3 o, vec3 d)
 {
-    double dist = 0;
+    double dist = 0, extent = t->scale;
     if (!bbox_is_empty(&t->bounds)) {
         vec3 center = bbox_center(&t->bounds);
         dist = v3_length(v3_sub(o, center));
+        double e = v3_max_abs(bbox_extent(&t->bounds));
+        if (e > 0 && isfinite(e))
+            extent = e;
     }
     double len = v3_length(d);
     if (!(len > 0))
         len = 1;
-    return 1e-9 * fmax(t->scale, dist) / len;
+    return fmax(1e-9 * extent, 0x1p-40 * fmax(t->scale, dist)) / len;
 }
 
 /* Runs a query from the root; returns 0 on allocation failure. */

@@ -153,8 +153,8 @@ typedef struct csg_hit {
 } csg_hit;
 
 /* The scene-relative tolerance, in units of the ray parameter, for rays
- * from o along d: 1e-9 of the larger of the scene's scale and the distance
- * from o to the scene, divided by |d|. */
+ * from o along d: the larger of 1e-9 of the scene's extent and 2^-40 of the
+ * larger of its scale and the distance from o to the scene, divided by |d|. */
 double csg_eps(const csg_tree *t, vec3 o, vec3 d);
 
 /* ALL_SPANS: the spans of the solid along the ray, clipped to [tmin, tmax]

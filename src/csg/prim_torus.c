@@ -193,7 +193,28 @@ uint32_t prim_torus_spans(const prim *p, uint32_t leaf, vec3 o, vec3 d, span *ou
             roots[n++] = torus_root(big_r, r, c, u, ends[i - 1], ends[i]);
         f_prev = f_next;
     }
-    /* n is even: both ends lie outside. */
+    /* n is even: both ends lie outside. A gap whose midpoint F cannot tell
+     * from zero is a double root, not a gap: a ray that touches the tube
+     * from inside (along the tangent of the inner equator) has true
+     * F = -r s^2 / (R - r) < 0 on both sides of the touching point, but rho
+     * there rounds to the equator's radius, so F evaluates to 0 or a few ulps
+     * above it over a stretch of width ~sqrt(u) (2e-8 of R) and the sign
+     * test splits the chord there, wider than eps. The closure of the
+     * interior holds the touching point, so the regularised set is one
+     * chord: the two are merged. The test is the rounding bound of F: its
+     * terms are at most (R + r)^2 and each carries a few ulps. A ray that
+     * passes truly outside by more than that bound keeps its gap. */
+    double f_zero = 8 * DBL_EPSILON * (big_r + r) * (big_r + r);
+    int kept = 0;
+    for (int i = 0; i < n; i++) {
+        if (kept >= 2 && !(kept & 1) && i + 1 < n &&
+            torus_f(big_r, r, c, u, 0.5 * (roots[kept - 1] + roots[i]), NULL) <= f_zero) {
+            kept--; /* drop the exit; the next entry is dropped below */
+            continue;
+        }
+        roots[kept++] = roots[i];
+    }
+    n = kept;
     uint32_t count = 0;
     for (int i = 0; i + 1 < n && count < cap; i += 2) {
         span *s = &out[count++];
