@@ -186,7 +186,10 @@ static void test_metamorphic_all_models(void **state)
              * the scaled model's radius. */
             sc_error e;
             stab_result r;
-            sc_scene *probe = load_text(text);
+            /* Loaded from its path, so imports resolve beside the model. */
+            sc_scene *probe = NULL;
+            if (sc_scene_load(list.paths[m], NULL, &probe, &e) != SC_OK)
+                fail_msg("%s", e.message);
             double lo[3], hi[3], radius = 1;
             if (sc_scene_bounds(probe, lo, hi))
                 radius = 0.5 * sqrt((hi[0] - lo[0]) * (hi[0] - lo[0]) +

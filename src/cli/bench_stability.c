@@ -114,7 +114,7 @@ static row *new_row(bench *b, const char *name)
     }
     row *r = &b->rows[b->count++];
     memset(r, 0, sizeof *r);
-    snprintf(r->name, sizeof r->name, "%s", name);
+    snprintf(r->name, sizeof r->name, "%.*s", (int)sizeof r->name - 1, name);
     return r;
 }
 
@@ -131,9 +131,10 @@ static void add(stab_result *sum, const stab_result *r)
 }
 
 /* Runs a compare case and records its row; text and moved are the model
- * and the solid compared with it (NULL: the model). */
-static void compare_case(bench *b, const char *name, const char *text, const char *moved,
-                         const stab_similarity *x, int times)
+ * and the solid compared with it (NULL: the model); source names the file
+ * the text came from (positions, and imports relative to it), NULL: name. */
+static void compare_case(bench *b, const char *name, const char *source, const char *text,
+                         const char *moved, const stab_similarity *x, int times)
 {
     row *r = new_row(b, name);
     if (!r || !text) {
@@ -145,7 +146,8 @@ static void compare_case(bench *b, const char *name, const char *text, const cha
         stab_result one;
         sc_error e;
         stab_similarity xk = x ? *x : stab_random((uint64_t)k + 1, -6, 6, 2.0, 1e3);
-        if (stab_compare(name, text, moved, &xk, b->size, &one, &e) != SC_OK) {
+        if (stab_compare(source ? source : name, text, moved, &xk, b->size, &one, &e) !=
+            SC_OK) {
             fprintf(stderr, "spancast: error: %s: %s\n", name, e.message);
             b->failed = 1;
             return;
@@ -163,7 +165,7 @@ static void file_case(bench *b, const char *name, const char *file,
     if (moved_file && !moved)
         b->failed = 1;
     else
-        compare_case(b, name, text, moved, x, 1);
+        compare_case(b, name, NULL, text, moved, x, 1);
     free(text);
     free(moved);
 }
@@ -195,7 +197,7 @@ static void model_cases(bench *b)
         snprintf(path, sizeof path, "%s/%.255s", folder, file);
         snprintf(name, sizeof name, "model:%.255s", file);
         char *text = read_text(path);
-        compare_case(b, name, text, NULL, NULL, 3);
+        compare_case(b, name, path, text, NULL, NULL, 3);
         free(text);
     }
 }
@@ -250,7 +252,7 @@ static void run_cases(bench *b)
     file_case(b, "translate_1e6", "part.csg", NULL, &t6);
     file_case(b, "translate_1e8", "part.csg", NULL, &t8);
     char *part = read_case(b, "part.csg");
-    compare_case(b, "random_similarity", part, NULL, NULL, 8);
+    compare_case(b, "random_similarity", NULL, part, NULL, NULL, 8);
 
     stab_similarity identity = stab_scaled(1, 1, 1, v3(0, 0, 0));
     static const char *ops[] = {"union", "intersection", "difference"};
@@ -269,13 +271,13 @@ static void run_cases(bench *b)
     file_case(b, "edge_hole", "edge_hole.csg", NULL, &edge);
 
     stab_similarity flat = stab_scaled(1, 1, 1e-9, v3(0, 0, 0));
-    compare_case(b, "ill_scale_z_1e-9", part, NULL, &flat, 1);
+    compare_case(b, "ill_scale_z_1e-9", NULL, part, NULL, &flat, 1);
     stab_similarity shear = identity;
     shear.m[0][1] = 1e3;
     shear.m[1][2] = -200;
-    compare_case(b, "ill_shear", part, NULL, &shear, 1);
+    compare_case(b, "ill_shear", NULL, part, NULL, &shear, 1);
     stab_similarity mirror = stab_scaled(-1, 1, 1, v3(3, 0, 0));
-    compare_case(b, "mirror", part, NULL, &mirror, 1);
+    compare_case(b, "mirror", NULL, part, NULL, &mirror, 1);
     singular_case(b, part);
 
     /* depth - 2 differences around a leaf, inside the harness's multmatrix:
@@ -288,11 +290,11 @@ static void run_cases(bench *b)
      * level merges the list below it), so this case uses an 8 x 8 image. */
     int size = b->size;
     b->size = size < 8 ? size : 8;
-    compare_case(b, deep_name, deep, NULL, &move, 1);
+    compare_case(b, deep_name, NULL, deep, NULL, &move, 1);
     b->size = size;
     free(deep);
     char *wide = stab_wide_union(100000);
-    compare_case(b, "wide_union_100000", wide, NULL, &move, 1);
+    compare_case(b, "wide_union_100000", NULL, wide, NULL, &move, 1);
     free(wide);
 
     row *far = new_row(b, "far_camera_1e9");
