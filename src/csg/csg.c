@@ -29,6 +29,7 @@
 #include <string.h>
 
 #include "base/error.h"
+#include "base/grow.h"
 #include "csg/bvh.h"
 
 struct csg_builder {
@@ -41,25 +42,6 @@ struct csg_builder {
     uint32_t leaf_count, leaf_cap;
     int failed;
 };
-
-/* Grows *array (of elem-size items, capacity *cap) to hold need items.
- * Returns 0 on overflow or allocation failure, leaving the array as it was. */
-static int grow(void **array, uint32_t *cap, uint32_t need, size_t elem)
-{
-    if (need <= *cap)
-        return 1;
-    uint64_t n = *cap ? (uint64_t)*cap * 2 : 64;
-    while (n < need)
-        n *= 2;
-    if (n > UINT32_MAX - 1 || n > SIZE_MAX / elem)
-        return 0;
-    void *p = realloc(*array, (size_t)n * elem);
-    if (!p)
-        return 0;
-    *array = p;
-    *cap = (uint32_t)n;
-    return 1;
-}
 
 csg_builder *csg_builder_new(void)
 {
@@ -95,7 +77,8 @@ int csg_builder_failed(const csg_builder *b)
 
 static uint32_t add_node(csg_builder *b, const csg_node *n)
 {
-    if (!grow((void **)&b->nodes, &b->node_cap, b->node_count + 1, sizeof *b->nodes)) {
+    if (!grow_array32((void **)&b->nodes, &b->node_cap, b->node_count + 1,
+                      sizeof *b->nodes)) {
         b->failed = 1;
         return CSG_EMPTY;
     }
@@ -109,7 +92,8 @@ uint32_t csg_builder_leaf(csg_builder *b, const prim *p, const affine *to_world,
     affine to_local;
     if (b->failed || !affine_invert(to_world, &to_local))
         return CSG_EMPTY;
-    if (!grow((void **)&b->leaves, &b->leaf_cap, b->leaf_count + 1, sizeof *b->leaves)) {
+    if (!grow_array32((void **)&b->leaves, &b->leaf_cap, b->leaf_count + 1,
+                      sizeof *b->leaves)) {
         b->failed = 1;
         return CSG_EMPTY;
     }
@@ -155,8 +139,8 @@ uint32_t csg_builder_op(csg_builder *b, csg_op op, const uint32_t *children,
         return CSG_EMPTY;
     if (kept == 1)
         return last; /* for a difference, the only one kept is the first */
-    if (!grow((void **)&b->child_ids, &b->child_cap, b->child_count + kept,
-              sizeof *b->child_ids)) {
+    if (!grow_array32((void **)&b->child_ids, &b->child_cap, b->child_count + kept,
+                      sizeof *b->child_ids)) {
         b->failed = 1;
         return CSG_EMPTY;
     }
@@ -178,7 +162,7 @@ typedef struct id_vec {
 
 static int id_push(id_vec *a, uint32_t x)
 {
-    if (!grow((void **)&a->v, &a->cap, a->n + 1, sizeof *a->v))
+    if (!grow_array32((void **)&a->v, &a->cap, a->n + 1, sizeof *a->v))
         return 0;
     a->v[a->n++] = x;
     return 1;
@@ -202,7 +186,7 @@ typedef struct compiler {
 
 static uint32_t emit(compiler *c, const csg_node *n)
 {
-    if (!grow((void **)&c->nodes, &c->cap, c->count + 1, sizeof *c->nodes)) {
+    if (!grow_array32((void **)&c->nodes, &c->cap, c->count + 1, sizeof *c->nodes)) {
         c->failed = 1;
         return CSG_EMPTY;
     }
@@ -341,7 +325,7 @@ static int build_bvhs(csg_tree *t, bvh_nodes *out)
         if ((n->op != CSG_UNION && n->op != CSG_DIFFERENCE) || n->child_count - skip < 8)
             continue;
         uint32_t count = n->child_count - skip, first = n->first_child + skip;
-        if (!grow((void **)&boxes, &boxes_cap, count, sizeof *boxes)) {
+        if (!grow_array32((void **)&boxes, &boxes_cap, count, sizeof *boxes)) {
             free(boxes);
             return 0;
         }

@@ -38,6 +38,7 @@
 #include <string.h>
 
 #include "base/error.h"
+#include "base/grow.h"
 #include "scene/build_shading.h"
 #include "scene/build_curved.h"
 #include "scene/build_mesh.h"
@@ -149,26 +150,6 @@ typedef struct builder {
     uint32_t root_id;       /* its result */
 } builder;
 
-static int grow(void **array, size_t *cap, size_t need, size_t elem)
-{
-    if (need <= *cap)
-        return 1;
-    size_t n = *cap ? *cap : 16;
-    while (n < need) {
-        if (n > SIZE_MAX / 2)
-            return 0;
-        n *= 2;
-    }
-    if (n > SIZE_MAX / elem)
-        return 0;
-    void *p = realloc(*array, n * elem);
-    if (!p)
-        return 0;
-    *array = p;
-    *cap = n;
-    return 1;
-}
-
 static sc_status nomem(builder *b)
 {
     return err_set(b->error, SC_ERR_NOMEM, NULL, "out of memory");
@@ -184,8 +165,8 @@ static sc_status warn(builder *b, const sc_location *loc, const char *format, ..
     SC_PRINTF(3, 4);
 static sc_status warn(builder *b, const sc_location *loc, const char *format, ...)
 {
-    if (!grow((void **)&b->warnings, &b->warning_cap, b->warning_count + 1,
-              sizeof *b->warnings))
+    if (!grow_array((void **)&b->warnings, &b->warning_cap, b->warning_count + 1,
+                    sizeof *b->warnings))
         return nomem(b);
     char message[SC_ERROR_MESSAGE_MAX];
     va_list args;
@@ -198,7 +179,7 @@ static sc_status warn(builder *b, const sc_location *loc, const char *format, ..
 
 static sc_status push_id(builder *b, uint32_t id)
 {
-    if (!grow((void **)&b->ids, &b->id_cap, b->id_count + 1, sizeof *b->ids))
+    if (!grow_array((void **)&b->ids, &b->id_cap, b->id_count + 1, sizeof *b->ids))
         return nomem(b);
     b->ids[b->id_count++] = id;
     return SC_OK;
@@ -841,7 +822,8 @@ static sc_status read_color(builder *b, const parse_node *n, int emit, float col
 
 static sc_status push_frame(builder *b, const frame *f)
 {
-    if (!grow((void **)&b->frames, &b->frame_cap, b->frame_count + 1, sizeof *b->frames))
+    if (!grow_array((void **)&b->frames, &b->frame_cap, b->frame_count + 1,
+                    sizeof *b->frames))
         return nomem(b);
     b->frames[b->frame_count++] = *f;
     return SC_OK;

@@ -27,6 +27,7 @@
 #include <string.h>
 
 #include "base/error.h"
+#include "base/grow.h"
 #include "scene/build_mesh.h"
 #include "scene/faithful.h"
 
@@ -70,27 +71,10 @@ static sc_status nomem(const build_ctx *c, const parse_node *n)
     return err_set(c->error, SC_ERR_NOMEM, &n->loc, "out of memory");
 }
 
-static int grow(void **v, uint32_t *cap, uint32_t need, size_t elem)
-{
-    if (need <= *cap)
-        return 1;
-    uint32_t next = *cap ? *cap : 16;
-    while (next < need) {
-        if (next > UINT32_MAX / 4)
-            return 0;
-        next *= 2;
-    }
-    void *p = realloc(*v, (size_t)next * elem);
-    if (!p)
-        return 0;
-    *v = p;
-    *cap = next;
-    return 1;
-}
-
 static int begin_path(paths2d *p)
 {
-    if (!grow((void **)&p->start, &p->paths_cap, p->paths + 2, sizeof *p->start) ||
+    if (!grow_array32((void **)&p->start, &p->paths_cap, p->paths + 2,
+                      sizeof *p->start) ||
         !(p->hole = realloc(p->hole, (size_t)p->paths_cap * sizeof *p->hole)))
         return 0;
     p->start[p->paths] = p->count;
@@ -106,7 +90,7 @@ static int add_point(paths2d *p, const affine2 *m, double x, double y)
     uint32_t cap2 = p->cap * 2;
     if (need > cap2) {
         uint32_t cap = p->cap;
-        if (!grow((void **)&p->xy, &cap, need, sizeof *p->xy))
+        if (!grow_array32((void **)&p->xy, &cap, need, sizeof *p->xy))
             return 0;
         p->cap = cap / 2;
     }

@@ -32,6 +32,7 @@
 #include <string.h>
 
 #include "base/error.h"
+#include "base/grow.h"
 #include "csg/prim_mesh.h"
 
 static sc_status nomem(const build_ctx *c, const sc_location *loc)
@@ -190,27 +191,10 @@ static void mesh_file_free(mesh_file *m)
     free(m->face_start);
 }
 
-static int grow(void **v, uint32_t *cap, uint32_t need, size_t elem)
-{
-    if (need <= *cap)
-        return 1;
-    uint32_t next = *cap ? *cap : 64;
-    while (next < need) {
-        if (next > UINT32_MAX / 2)
-            return 0;
-        next *= 2;
-    }
-    void *p = realloc(*v, (size_t)next * elem);
-    if (!p)
-        return 0;
-    *v = p;
-    *cap = next;
-    return 1;
-}
-
 static int add_point(mesh_file *m, vec3 p)
 {
-    if (!grow((void **)&m->points, &m->point_cap, m->point_count + 1, sizeof(vec3)))
+    if (!grow_array32((void **)&m->points, &m->point_cap, m->point_count + 1,
+                      sizeof(vec3)))
         return 0;
     m->points[m->point_count++] = p;
     return 1;
@@ -218,7 +202,8 @@ static int add_point(mesh_file *m, vec3 p)
 
 static int add_index(mesh_file *m, uint32_t i)
 {
-    if (!grow((void **)&m->indices, &m->index_cap, m->index_count + 1, sizeof(uint32_t)))
+    if (!grow_array32((void **)&m->indices, &m->index_cap, m->index_count + 1,
+                      sizeof(uint32_t)))
         return 0;
     m->indices[m->index_count++] = i;
     return 1;
@@ -228,7 +213,8 @@ static int add_index(mesh_file *m, uint32_t i)
  * written by finish_faces. */
 static int start_face(mesh_file *m)
 {
-    if (!grow((void **)&m->face_start, &m->face_cap, m->face_count + 2, sizeof(uint32_t)))
+    if (!grow_array32((void **)&m->face_start, &m->face_cap, m->face_count + 2,
+                      sizeof(uint32_t)))
         return 0;
     m->face_start[m->face_count++] = m->index_count;
     return 1;
@@ -236,7 +222,8 @@ static int start_face(mesh_file *m)
 
 static int finish_faces(mesh_file *m)
 {
-    if (!grow((void **)&m->face_start, &m->face_cap, m->face_count + 1, sizeof(uint32_t)))
+    if (!grow_array32((void **)&m->face_start, &m->face_cap, m->face_count + 1,
+                      sizeof(uint32_t)))
         return 0;
     m->face_start[m->face_count] = m->index_count;
     return 1;

@@ -19,6 +19,7 @@
 #include <string.h>
 
 #include "base/error.h"
+#include "base/grow.h"
 #include "scene/lex.h"
 
 typedef struct open_vector {
@@ -38,28 +39,6 @@ typedef struct parser {
     parse_arg *args; /* the arguments of the node being read */
     size_t arg_count, arg_cap;
 } parser;
-
-/* Makes room for need items of elem bytes in *array (capacity *cap).
- * Returns 0 on overflow or allocation failure, leaving the array as it was. */
-static int grow(void **array, size_t *cap, size_t need, size_t elem)
-{
-    if (need <= *cap)
-        return 1;
-    size_t n = *cap ? *cap : 16;
-    while (n < need) {
-        if (n > SIZE_MAX / 2)
-            return 0;
-        n *= 2;
-    }
-    if (n > SIZE_MAX / elem)
-        return 0;
-    void *p = realloc(*array, n * elem);
-    if (!p)
-        return 0;
-    *array = p;
-    *cap = n;
-    return 1;
-}
 
 static sc_status nomem(parser *ps)
 {
@@ -103,8 +82,8 @@ static const char *token_text(parser *ps)
 
 static sc_status push_value(parser *ps, const parse_value *v)
 {
-    if (!grow((void **)&ps->values, &ps->value_cap, ps->value_count + 1,
-              sizeof *ps->values))
+    if (!grow_array((void **)&ps->values, &ps->value_cap, ps->value_count + 1,
+                    sizeof *ps->values))
         return nomem(ps);
     ps->values[ps->value_count++] = *v;
     return SC_OK;
@@ -181,8 +160,8 @@ static sc_status parse_value_into(parser *ps, parse_value *out)
             v.kind = PARSE_VECTOR;
             if ((st = push_value(ps, &v)) != SC_OK)
                 return st;
-            if (!grow((void **)&ps->open, &ps->open_cap, ps->open_count + 1,
-                      sizeof *ps->open))
+            if (!grow_array((void **)&ps->open, &ps->open_cap, ps->open_count + 1,
+                            sizeof *ps->open))
                 return nomem(ps);
             ps->open[ps->open_count].start = ps->value_count;
             ps->open[ps->open_count].line = ps->tok.line;
@@ -256,7 +235,8 @@ static sc_status parse_arguments(parser *ps, parse_node *node, int paren_line)
         }
         if ((st = parse_value_into(ps, &arg.value)) != SC_OK)
             return st;
-        if (!grow((void **)&ps->args, &ps->arg_cap, ps->arg_count + 1, sizeof *ps->args))
+        if (!grow_array((void **)&ps->args, &ps->arg_cap, ps->arg_count + 1,
+                        sizeof *ps->args))
             return nomem(ps);
         ps->args[ps->arg_count++] = arg;
         if (ps->tok.kind == LEX_COMMA) {

@@ -1,5 +1,6 @@
 /* The shading record of a scene: see shading.h. Plain growable arrays;
  * nothing here is used while rendering except by reading. */
+#include "base/grow.h"
 #include "scene/shading.h"
 
 #include <stdlib.h>
@@ -15,24 +16,6 @@ shading_material shading_default_material(void)
     m.shininess = SHADING_DEFAULT_SHININESS;
     m.ior = SHADING_DEFAULT_IOR;
     return m;
-}
-
-/* Grows *array to hold need items; 0 on overflow or allocation failure. */
-static int grow(void **array, uint32_t *cap, uint32_t need, size_t elem)
-{
-    if (need <= *cap)
-        return 1;
-    uint64_t n = *cap ? (uint64_t)*cap * 2 : 8;
-    while (n < need)
-        n *= 2;
-    if (n > UINT32_MAX - 1 || n > SIZE_MAX / elem)
-        return 0;
-    void *p = realloc(*array, (size_t)n * elem);
-    if (!p)
-        return 0;
-    *array = p;
-    *cap = (uint32_t)n;
-    return 1;
 }
 
 shading *shading_new(void)
@@ -59,7 +42,8 @@ void shading_free(shading *s)
 
 int shading_add_light(shading *s, const shading_light *light)
 {
-    if (!grow((void **)&s->lights, &s->light_cap, s->light_count + 1, sizeof *light))
+    if (!grow_array32((void **)&s->lights, &s->light_cap, s->light_count + 1,
+                      sizeof *light))
         return 0;
     s->lights[s->light_count++] = *light;
     return 1;
@@ -67,8 +51,8 @@ int shading_add_light(shading *s, const shading_light *light)
 
 uint32_t shading_add_material(shading *s, const shading_material *material)
 {
-    if (!grow((void **)&s->materials, &s->material_cap, s->material_count + 1,
-              sizeof *material))
+    if (!grow_array32((void **)&s->materials, &s->material_cap, s->material_count + 1,
+                      sizeof *material))
         return UINT32_MAX;
     s->materials[s->material_count] = *material;
     return s->material_count++;
