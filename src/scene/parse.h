@@ -32,7 +32,7 @@
 
 #define PARSE_MAX_DEPTH 10000 /* nested nodes, and nested vectors */
 
-#define PARSE_MAX_NODES 1000000  /* nodes in a file */
+#define PARSE_MAX_NODES 4000000  /* nodes in a file */
 #define PARSE_MAX_VECTOR 1000000 /* items in one vector */
 
 typedef enum parse_value_kind {
