@@ -64,7 +64,8 @@ static void test_node_count(void **state)
     free(text);
     text = repeat("", "cube();", "", PARSE_MAX_NODES + 1, "");
     assert_int_equal(load(text, strlen(text), buf, sizeof buf), SC_ERR_LIMIT);
-    assert_string_equal(buf, "m.csg:1:28000001: error: too many nodes (limit is 4000000)");
+    assert_string_equal(buf,
+                        "m.csg:1:28000001: error: too many nodes (limit is 4000000)");
     free(text);
 }
 
