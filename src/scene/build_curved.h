@@ -24,6 +24,15 @@ typedef struct build_ctx {
     sc_error *error;
 } build_ctx;
 
+/* Argument helpers shared by the builders of spancast's own leaves and of
+ * extrusions (build_args.c). build_arg: the value of the named or positional
+ * argument, NULL when absent or undef; build_loc: a value's position;
+ * build_wrong_type: the error for an argument of the wrong type. */
+const parse_value *build_arg(const parse_node *n, const char *name, int position);
+sc_location build_loc(const build_ctx *c, const parse_value *v);
+sc_status build_wrong_type(const build_ctx *c, const parse_node *n, const char *param,
+                           const parse_value *v, const char *expected);
+
 sc_status build_torus(const build_ctx *c, const parse_node *n, int emit, prim *out,
                       const char **empty);
 sc_status build_quadric(const build_ctx *c, const parse_node *n, int emit, prim *out,

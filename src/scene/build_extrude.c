@@ -45,27 +45,6 @@ typedef struct affine2 {
     double m[2][3];
 } affine2;
 
-static const parse_value *arg(const parse_node *n, const char *name, int position)
-{
-    const parse_arg *a = parse_node_arg(n, name, position);
-    return a && a->value.kind != PARSE_UNDEF ? &a->value : NULL;
-}
-
-static sc_location loc_of(const build_ctx *c, const parse_value *v)
-{
-    sc_location loc = {c->file, v->line, v->column};
-    return loc;
-}
-
-static sc_status wrong_type(const build_ctx *c, const parse_node *n, const char *param,
-                            const parse_value *v, const char *expected)
-{
-    sc_location loc = loc_of(c, v);
-    return err_set(c->error, SC_ERR_SEMANTIC, &loc,
-                   "wrong type for argument '%s' of '%s' (expected %s)", param, n->name,
-                   expected);
-}
-
 static sc_status nomem(const build_ctx *c, const parse_node *n)
 {
     return err_set(c->error, SC_ERR_NOMEM, &n->loc, "out of memory");
@@ -130,11 +109,11 @@ static int in_path(const paths2d *p, uint32_t k, double x, double y)
 static sc_status get_number(const build_ctx *c, const parse_node *n, const char *name,
                             int position, double *out)
 {
-    const parse_value *v = arg(n, name, position);
+    const parse_value *v = build_arg(n, name, position);
     if (!v)
         return SC_OK;
     if (v->kind != PARSE_NUMBER)
-        return wrong_type(c, n, name, v, "a number");
+        return build_wrong_type(c, n, name, v, "a number");
     *out = v->u.number;
     return SC_OK;
 }
@@ -144,7 +123,7 @@ static sc_status read_square(const build_ctx *c, const parse_node *n, const affi
 {
     double sx = 1, sy = 1;
     int center = 0;
-    const parse_value *v = arg(n, "size", 0);
+    const parse_value *v = build_arg(n, "size", 0);
     if (v && v->kind == PARSE_NUMBER) {
         sx = sy = v->u.number;
     } else if (v && v->kind == PARSE_VECTOR && v->u.vector.count == 2 &&
@@ -153,11 +132,11 @@ static sc_status read_square(const build_ctx *c, const parse_node *n, const affi
         sx = v->u.vector.items[0].u.number;
         sy = v->u.vector.items[1].u.number;
     } else if (v) {
-        return wrong_type(c, n, "size", v, "a number or [x, y]");
+        return build_wrong_type(c, n, "size", v, "a number or [x, y]");
     }
-    const parse_value *cv = arg(n, "center", 1);
+    const parse_value *cv = build_arg(n, "center", 1);
     if (cv && cv->kind != PARSE_BOOL)
-        return wrong_type(c, n, "center", cv, "true or false");
+        return build_wrong_type(c, n, "center", cv, "true or false");
     center = cv ? cv->u.boolean : 0;
     if (!(sx > 0 && sy > 0 && isfinite(sx) && isfinite(sy)))
         return SC_OK; /* no area */
@@ -204,11 +183,11 @@ static const char polygon_paths[] = "a vector of paths, each a vector of point i
 static sc_status read_polygon(const build_ctx *c, const parse_node *n, const affine2 *m,
                               paths2d *p)
 {
-    const parse_value *pts = arg(n, "points", 0), *paths = arg(n, "paths", 1);
+    const parse_value *pts = build_arg(n, "points", 0), *paths = build_arg(n, "paths", 1);
     if (!pts)
         return SC_OK;
     if (pts->kind != PARSE_VECTOR)
-        return wrong_type(c, n, "points", pts, polygon_points);
+        return build_wrong_type(c, n, "points", pts, polygon_points);
     uint32_t np = pts->u.vector.count;
     for (uint32_t i = 0; i < np; i++) {
         const parse_value *v = &pts->u.vector.items[i];
@@ -217,16 +196,16 @@ static sc_status read_polygon(const build_ctx *c, const parse_node *n, const aff
             v->u.vector.items[1].kind != PARSE_NUMBER ||
             !isfinite(v->u.vector.items[0].u.number) ||
             !isfinite(v->u.vector.items[1].u.number))
-            return wrong_type(c, n, "points", v, polygon_points);
+            return build_wrong_type(c, n, "points", v, polygon_points);
     }
     if (paths && paths->kind != PARSE_VECTOR)
-        return wrong_type(c, n, "paths", paths, polygon_paths);
+        return build_wrong_type(c, n, "paths", paths, polygon_paths);
     uint32_t first = p->paths;
     uint32_t count = paths ? paths->u.vector.count : 1;
     for (uint32_t k = 0; k < count; k++) {
         const parse_value *path = paths ? &paths->u.vector.items[k] : NULL;
         if (path && path->kind != PARSE_VECTOR)
-            return wrong_type(c, n, "paths", path, polygon_paths);
+            return build_wrong_type(c, n, "paths", path, polygon_paths);
         uint32_t len = path ? path->u.vector.count : np;
         if (!begin_path(p))
             return nomem(c, n);
@@ -236,7 +215,7 @@ static sc_status read_polygon(const build_ctx *c, const parse_node *n, const aff
                 const parse_value *iv = &path->u.vector.items[i];
                 if (iv->kind != PARSE_NUMBER || iv->u.number != floor(iv->u.number) ||
                     iv->u.number < 0 || iv->u.number >= np) {
-                    sc_location loc = loc_of(c, iv);
+                    sc_location loc = build_loc(c, iv);
                     return err_set(c->error, SC_ERR_SEMANTIC, &loc,
                                    "polygon path %u: point index is not one of the %u "
                                    "points",
@@ -282,7 +261,7 @@ static sc_status gather(const build_ctx *c, const parse_node *n, const affine2 *
         return read_polygon(c, n, m, p);
     affine2 inner = *m;
     if (strcmp(name, "multmatrix") == 0) {
-        const parse_value *v = arg(n, "m", 0);
+        const parse_value *v = build_arg(n, "m", 0);
         double a[4][4] = {{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}, {0, 0, 0, 1}};
         int ok = !v || (v->kind == PARSE_VECTOR && v->u.vector.count == 4);
         for (uint32_t r = 0; v && ok && r < 4; r++) {
@@ -325,14 +304,14 @@ sc_status build_linear_extrude(const build_ctx *c, const parse_node *n, int emit
     if ((st = get_number(c, n, "height", 0, &height)) != SC_OK ||
         (st = get_number(c, n, "twist", -1, &twist)) != SC_OK)
         return st;
-    const parse_value *cv = arg(n, "center", 1);
+    const parse_value *cv = build_arg(n, "center", 1);
     if (cv && cv->kind != PARSE_BOOL)
-        return wrong_type(c, n, "center", cv, "true or false");
+        return build_wrong_type(c, n, "center", cv, "true or false");
     int center = cv ? cv->u.boolean : 0;
     if (twist != 0)
         return err_set(c->error, SC_ERR_UNSUPPORTED, &n->loc,
                        "linear_extrude with twist is not supported yet");
-    const parse_value *sv = arg(n, "scale", -1);
+    const parse_value *sv = build_arg(n, "scale", -1);
     if (sv) {
         int one = (sv->kind == PARSE_NUMBER && sv->u.number == 1) ||
                   (sv->kind == PARSE_VECTOR && sv->u.vector.count == 2 &&

@@ -18,27 +18,6 @@
 #include "scene/build_curved.h"
 #include "scene/lex.h"
 
-static const parse_value *arg(const parse_node *n, const char *name, int position)
-{
-    const parse_arg *a = parse_node_arg(n, name, position);
-    return a && a->value.kind != PARSE_UNDEF ? &a->value : NULL;
-}
-
-static sc_location loc_of(const build_ctx *c, const parse_value *v)
-{
-    sc_location loc = {c->file, v->line, v->column};
-    return loc;
-}
-
-static sc_status wrong_type(const build_ctx *c, const parse_node *n, const char *param,
-                            const parse_value *v, const char *expected)
-{
-    sc_location loc = loc_of(c, v);
-    return err_set(c->error, SC_ERR_SEMANTIC, &loc,
-                   "wrong type for argument '%s' of '%s' (expected %s)", param, n->name,
-                   expected);
-}
-
 static sc_status missing(const build_ctx *c, const parse_node *n, const char *param)
 {
     return err_set(c->error, SC_ERR_SEMANTIC, &n->loc, "missing argument '%s' of '%s'",
@@ -48,12 +27,12 @@ static sc_status missing(const build_ctx *c, const parse_node *n, const char *pa
 static sc_status number_arg(const build_ctx *c, const parse_node *n, const char *name,
                             int position, int required, double *out, int *given)
 {
-    const parse_value *v = arg(n, name, position);
+    const parse_value *v = build_arg(n, name, position);
     *given = 0;
     if (!v)
         return required ? missing(c, n, name) : SC_OK;
     if (v->kind != PARSE_NUMBER)
-        return wrong_type(c, n, name, v, "a number");
+        return build_wrong_type(c, n, name, v, "a number");
     *out = v->u.number;
     *given = 1;
     return SC_OK;
@@ -79,16 +58,16 @@ static const char bounds_expected[] = "[[x0, y0, z0], [x1, y1, z1]]";
 static sc_status bounds_arg(const build_ctx *c, const parse_node *n, int position,
                             bbox *out, const char **empty)
 {
-    const parse_value *v = arg(n, "bounds", position);
+    const parse_value *v = build_arg(n, "bounds", position);
     if (!v)
         return missing(c, n, "bounds");
     double lo[3], hi[3];
     if (v->kind != PARSE_VECTOR || v->u.vector.count != 2 ||
         !numbers(&v->u.vector.items[0], 3, lo) || !numbers(&v->u.vector.items[1], 3, hi))
-        return wrong_type(c, n, "bounds", v, bounds_expected);
+        return build_wrong_type(c, n, "bounds", v, bounds_expected);
     for (int k = 0; k < 3; k++) {
         if (!isfinite(lo[k]) || !isfinite(hi[k])) {
-            sc_location loc = loc_of(c, v);
+            sc_location loc = build_loc(c, v);
             return err_set(c->error, SC_ERR_SEMANTIC, &loc,
                            "bounds of '%s' must be finite", n->name);
         }
@@ -134,15 +113,15 @@ sc_status build_torus(const build_ctx *c, const parse_node *n, int emit, prim *o
 sc_status build_quadric(const build_ctx *c, const parse_node *n, int emit, prim *out,
                         const char **empty)
 {
-    const parse_value *v = arg(n, "a", 0);
+    const parse_value *v = build_arg(n, "a", 0);
     if (!v)
         return missing(c, n, "a");
     double a[10];
     if (!numbers(v, 10, a))
-        return wrong_type(c, n, "a", v, "a vector of 10 numbers");
+        return build_wrong_type(c, n, "a", v, "a vector of 10 numbers");
     for (int i = 0; i < 10; i++) {
         if (!isfinite(a[i])) {
-            sc_location loc = loc_of(c, &v->u.vector.items[i]);
+            sc_location loc = build_loc(c, &v->u.vector.items[i]);
             return err_set(c->error, SC_ERR_SEMANTIC, &loc,
                            "quadric coefficient %d is not finite", i);
         }
@@ -179,19 +158,19 @@ static sc_status params_arg(const build_ctx *c, const parse_node *n, expr_param 
                             uint32_t *count)
 {
     *count = 0;
-    const parse_value *v = arg(n, "params", -1);
+    const parse_value *v = build_arg(n, "params", -1);
     if (!v)
         return SC_OK;
     if (v->kind != PARSE_VECTOR)
-        return wrong_type(c, n, "params", v, params_expected);
+        return build_wrong_type(c, n, "params", v, params_expected);
     for (uint32_t i = 0; i < v->u.vector.count; i++) {
         const parse_value *pair = &v->u.vector.items[i];
         if (pair->kind != PARSE_VECTOR || pair->u.vector.count != 2 ||
             pair->u.vector.items[0].kind != PARSE_STRING ||
             pair->u.vector.items[1].kind != PARSE_NUMBER)
-            return wrong_type(c, n, "params", pair, params_expected);
+            return build_wrong_type(c, n, "params", pair, params_expected);
         const parse_value *name = &pair->u.vector.items[0];
-        sc_location loc = loc_of(c, name);
+        sc_location loc = build_loc(c, name);
         const char *s = name->u.string.chars;
         size_t len = name->u.string.length;
         if (!valid_name(s, len))
@@ -217,21 +196,21 @@ static sc_status params_arg(const build_ctx *c, const parse_node *n, expr_param 
 sc_status build_implicit(const build_ctx *c, const parse_node *n, int emit, prim *out,
                          const char **empty)
 {
-    const parse_value *f = arg(n, "f", 0);
+    const parse_value *f = build_arg(n, "f", 0);
     if (!f)
         return missing(c, n, "f");
     if (f->kind != PARSE_STRING)
-        return wrong_type(c, n, "f", f, "a string");
+        return build_wrong_type(c, n, "f", f, "a string");
     bbox box;
     sc_status st = bounds_arg(c, n, 1, &box, empty);
     if (st != SC_OK)
         return st;
     solve_method method = SOLVE_INTERVAL;
-    const parse_value *m = arg(n, "method", -1);
+    const parse_value *m = build_arg(n, "method", -1);
     if (m && m->kind != PARSE_STRING)
-        return wrong_type(c, n, "method", m, "a string");
+        return build_wrong_type(c, n, "method", m, "a string");
     if (m && (method = solve_method_parse(m->u.string.chars)) == SOLVE_METHOD_COUNT) {
-        sc_location loc = loc_of(c, m);
+        sc_location loc = build_loc(c, m);
         return err_set(c->error, SC_ERR_SEMANTIC, &loc,
                        "unknown method '%s' (expected \"interval\", \"lipschitz\" or "
                        "\"march\")",
@@ -242,14 +221,14 @@ sc_status build_implicit(const build_ctx *c, const parse_node *n, int emit, prim
     if ((st = number_arg(c, n, "tolerance", -1, 0, &tolerance, &has_tolerance)) != SC_OK)
         return st;
     if (has_tolerance && !(tolerance > 0 && isfinite(tolerance))) {
-        sc_location loc = loc_of(c, arg(n, "tolerance", -1));
+        sc_location loc = build_loc(c, build_arg(n, "tolerance", -1));
         return err_set(c->error, SC_ERR_SEMANTIC, &loc,
                        "tolerance must be a positive number");
     }
     if ((st = number_arg(c, n, "lipschitz", -1, 0, &lipschitz, &has_lipschitz)) != SC_OK)
         return st;
     if (has_lipschitz && !(lipschitz > 0 && isfinite(lipschitz))) {
-        sc_location loc = loc_of(c, arg(n, "lipschitz", -1));
+        sc_location loc = build_loc(c, build_arg(n, "lipschitz", -1));
         return err_set(c->error, SC_ERR_SEMANTIC, &loc,
                        "lipschitz must be a positive number");
     }
