@@ -746,6 +746,16 @@ ix expr_eval_ix(const expr_program *p, ix x, ix y, ix z, vec3 seed, ix *derivati
             nan[i].some = 1;
             nan[i].all |= a.hi < 0;
         }
+        if ((in->op == EXPR_SIN || in->op == EXPR_COS || in->op == EXPR_TAN) &&
+            !(isfinite(a.lo) && isfinite(a.hi))) {
+            /* sin, cos and tan of an infinite argument are NaN, which their
+             * interval forms (bounded by 1, or by the poles) would hide: a
+             * field with an infinite coefficient then looked defined and
+             * undecided everywhere, and every ray bisected it down to the
+             * tolerance until the evaluation budget ran out. */
+            nan[i].some = 1;
+            nan[i].all |= a.lo == a.hi;
+        }
         if (in->op == EXPR_POWI && in->n == 0) /* pow(NaN, 0) = 1 */
             nan[i].some = nan[i].all = 0;
         if (want && (in->op == EXPR_SIN || in->op == EXPR_COS)) {
