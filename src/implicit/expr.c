@@ -717,6 +717,12 @@ ix expr_eval_ix(const expr_program *p, ix x, ix y, ix z, vec3 seed, ix *derivati
         }
         ix a = v[in->a], b = v[in->b];
         nan_state na = nan[in->a], nb = nan[in->b];
+        /* An operand with a NaN bound is undefined over the whole box (an
+         * operation on infinities, or a NaN constant): nothing bounds it. */
+        if (isnan(a.lo) || isnan(a.hi))
+            na.some = na.all = 1;
+        if (isnan(b.lo) || isnan(b.hi))
+            nb.some = nb.all = 1;
         if (in->op == EXPR_MIN || in->op == EXPR_MAX) {
             /* NaN only where both are; where one is, the other is taken */
             nan[i].some = na.some && nb.some;
@@ -773,7 +779,8 @@ ix expr_eval_ix(const expr_program *p, ix x, ix y, ix z, vec3 seed, ix *derivati
     int state = 0;
     if (!p->count)
         state = 1;
-    else if (nan[p->count - 1].all)
+    else if (nan[p->count - 1].all || isnan(v[p->count - 1].lo) ||
+             isnan(v[p->count - 1].hi))
         state = 2;
     else if (nan[p->count - 1].some)
         state = 1;
