@@ -22,6 +22,7 @@ typedef struct build_ctx {
     const char *file; /* for positions */
     csg_builder *csg; /* owner of the bytecode */
     sc_error *error;
+    int faithful; /* --faithful: OpenSCAD's polygons and polyhedra */
 } build_ctx;
 
 /* Argument helpers shared by the builders of spancast's own leaves and of
