@@ -23,6 +23,7 @@
 #include <string.h>
 
 #include "spancast/spancast.h"
+#include "test_util.h"
 
 void *__real_malloc(size_t size);
 void *__real_calloc(size_t count, size_t size);
@@ -59,17 +60,7 @@ static char *read_model(const char *relative, size_t *length)
 {
     char path[4096];
     snprintf(path, sizeof path, "%s/%s", SPANCAST_SOURCE_DIR, relative);
-    FILE *f = fopen(path, "rb");
-    assert_non_null(f);
-    fseek(f, 0, SEEK_END);
-    long n = ftell(f);
-    fseek(f, 0, SEEK_SET);
-    char *text = malloc((size_t)n + 1);
-    assert_non_null(text);
-    assert_int_equal(fread(text, 1, (size_t)n, f), (size_t)n);
-    fclose(f);
-    *length = (size_t)n;
-    return text;
+    return test_read_file(path, length);
 }
 
 /* Fails every allocation of a load in turn; returns how many there were. */

@@ -30,6 +30,7 @@ size_t __sanitizer_get_current_allocated_bytes(void);
 #include "csg/csg.h"
 #include "render/stability.h"
 #include "scene/scene.h"
+#include "test_util.h"
 
 #define IMAGE 32 /* pixels per side of the harness images */
 
@@ -37,17 +38,7 @@ static char *read_model(const char *name)
 {
     char path[1024];
     snprintf(path, sizeof path, "%s/tests/stability/%s", SPANCAST_SOURCE_DIR, name);
-    FILE *f = fopen(path, "rb");
-    assert_non_null(f);
-    fseek(f, 0, SEEK_END);
-    long n = ftell(f);
-    fseek(f, 0, SEEK_SET);
-    char *text = malloc((size_t)n + 1);
-    assert_non_null(text);
-    assert_int_equal(fread(text, 1, (size_t)n, f), (size_t)n);
-    text[n] = 0;
-    fclose(f);
-    return text;
+    return test_read_file(path, NULL);
 }
 
 static sc_scene *load_text(const char *text)
@@ -155,21 +146,6 @@ static void find_models(const char *dir, model_list *list)
     closedir(d);
 }
 
-static char *read_path(const char *path)
-{
-    FILE *f = fopen(path, "rb");
-    assert_non_null(f);
-    fseek(f, 0, SEEK_END);
-    long n = ftell(f);
-    fseek(f, 0, SEEK_SET);
-    char *text = malloc((size_t)n + 1);
-    assert_non_null(text);
-    assert_int_equal(fread(text, 1, (size_t)n, f), (size_t)n);
-    text[n] = 0;
-    fclose(f);
-    return text;
-}
-
 static void test_metamorphic_all_models(void **state)
 {
     (void)state;
@@ -180,7 +156,7 @@ static void test_metamorphic_all_models(void **state)
     assert_true(list.n >= 10);
     uint64_t pixels = 0, hits = 0;
     for (int m = 0; m < list.n; m++) {
-        char *text = read_path(list.paths[m]);
+        char *text = test_read_file(list.paths[m], NULL);
         for (uint64_t k = 0; k < 3; k++) {
             /* Rotation, scale over 12 decades, translation up to 1000 times
              * the scaled model's radius. */
