@@ -10,20 +10,9 @@
 #   cmdlines.txt               STATUS | ARGUMENTS | STDERR, one per line.
 #
 # Run as: bash cli_bad_input.sh <path-to-spancast> <source-dir> <work-dir>
-set -u
-bin=$(cd "$(dirname "$1")" && pwd)/$(basename "$1")
-corpus=$2/tests/bad-input
-work=$3
-rm -rf "$work"
+. "$(dirname "$0")/testlib.sh"
+corpus=$src/tests/bad-input
 mkdir -p "$work/out"
-work=$(cd "$work" && pwd)
-
-fails=0
-checks=0
-fail() {
-    echo "FAIL: $*"
-    fails=$((fails + 1))
-}
 
 cd "$corpus" || exit 1
 for model in *.csg; do

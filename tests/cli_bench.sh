@@ -6,18 +6,7 @@
 # (Timing is reported, never asserted.)
 #
 # Run as: bash cli_bench.sh <path-to-spancast> <source-dir> <work-dir>
-set -u
-bin=$(cd "$(dirname "$1")" && pwd)/$(basename "$1")
-work=$3
-rm -rf "$work"
-mkdir -p "$work"
-cd "$work" || exit 1
-
-fails=0
-fail() {
-    echo "FAIL: $*"
-    fails=$((fails + 1))
-}
+. "$(dirname "$0")/testlib.sh"
 
 "$bin" bench accuracy --csv acc.csv --rays 2 2>stderr.txt
 rc=$?

@@ -4,19 +4,7 @@
 # (Timing is reported, never asserted.)
 #
 # Run as: bash cli_bench_stability.sh <path-to-spancast> <source-dir> <work-dir>
-set -u
-bin=$(cd "$(dirname "$1")" && pwd)/$(basename "$1")
-src=$2
-work=$3
-rm -rf "$work"
-mkdir -p "$work"
-cd "$work" || exit 1
-
-fails=0
-fail() {
-    echo "FAIL: $*"
-    fails=$((fails + 1))
-}
+. "$(dirname "$0")/testlib.sh"
 
 # 10000 nested levels need about 5 MB of stack in the optimised build and
 # several times that under the sanitizers (docs/stability.md).

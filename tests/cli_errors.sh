@@ -3,15 +3,7 @@
 # --help and --version exit 0.
 #
 # Run as: bash cli_errors.sh <path-to-spancast> <source-dir> <work-dir>
-set -u
-bin=$(cd "$(dirname "$1")" && pwd)/$(basename "$1")
-work=$3
-rm -rf "$work"
-mkdir -p "$work"
-cd "$work" || exit 1
-
-fails=0
-checks=0
+. "$(dirname "$0")/testlib.sh"
 
 # expect STATUS STDERR ARGS...: runs spancast ARGS and compares the exit
 # status and the whole of stderr.

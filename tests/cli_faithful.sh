@@ -6,18 +6,7 @@
 # the limit is an error in faithful mode only.
 #
 # Run as: bash cli_faithful.sh <path-to-spancast> <source-dir> <work-dir>
-set -u
-bin=$(cd "$(dirname "$1")" && pwd)/$(basename "$1")
-work=$3
-rm -rf "$work"
-mkdir -p "$work"
-cd "$work" || exit 1
-
-fails=0
-fail() {
-    echo "FAIL: $*"
-    fails=$((fails + 1))
-}
+. "$(dirname "$0")/testlib.sh"
 
 printf 'sphere($fn = 4, $fa = 12, $fs = 2, r = 2);\n' >m.csg
 view=(--camera=0,0,10,0,0,0 --imgsize=41,41 --projection=o --fov=30 -q)

@@ -11,19 +11,8 @@
 # cancel flag before its rename.
 #
 # Run as: bash cli_interrupt.sh <path-to-spancast> <source-dir> <work-dir>
-set -u
-bin=$(cd "$(dirname "$1")" && pwd)/$(basename "$1")
-work=$3
-rm -rf "$work"
+. "$(dirname "$0")/testlib.sh"
 mkdir -p "$work/out"
-cd "$work" || exit 1
-
-fails=0
-checks=0
-fail() {
-    echo "FAIL: $*"
-    fails=$((fails + 1))
-}
 
 awk 'BEGIN {
     print "union() {"

@@ -5,12 +5,7 @@
 # Skipped (exit 0, with a note) when openscad 2021.01 or xvfb-run is missing.
 #
 # Run as: bash cli_openscad_camera.sh <path-to-spancast> <source-dir> <work-dir>
-set -u
-bin=$(cd "$(dirname "$1")" && pwd)/$(basename "$1")
-work=$3
-rm -rf "$work"
-mkdir -p "$work"
-cd "$work" || exit 1
+. "$(dirname "$0")/testlib.sh"
 
 for tool in openscad xvfb-run oiiotool idiff; do
     if ! command -v "$tool" >/dev/null; then

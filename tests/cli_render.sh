@@ -4,22 +4,7 @@
 # leaves a temporary behind.
 #
 # Run as: bash cli_render.sh <path-to-spancast> <source-dir> <work-dir>
-set -u
-bin=$(cd "$(dirname "$1")" && pwd)/$(basename "$1")
-work=$3
-rm -rf "$work"
-mkdir -p "$work"
-cd "$work" || exit 1
-
-fails=0
-checks=0
-fail() {
-    echo "FAIL: $*"
-    fails=$((fails + 1))
-}
-check() {
-    checks=$((checks + 1))
-}
+. "$(dirname "$0")/testlib.sh"
 
 cat >m.csg <<'EOF'
 difference() {

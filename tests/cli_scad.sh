@@ -7,20 +7,8 @@
 # the missing-OpenSCAD message is checked either way.
 #
 # Run as: bash cli_scad.sh <path-to-spancast> <source-dir> <work-dir>
-set -u
-bin=$(cd "$(dirname "$1")" && pwd)/$(basename "$1")
-src=$(cd "$2" && pwd)
-work=$3
-rm -rf "$work"
+. "$(dirname "$0")/testlib.sh"
 mkdir -p "$work/tmp"
-work=$(cd "$work" && pwd)
-cd "$work" || exit 1
-
-fails=0
-fail() {
-    echo "FAIL: $*"
-    fails=$((fails + 1))
-}
 
 # No OpenSCAD: a PATH without it.
 printf 'cube(1);\n' >cube.scad

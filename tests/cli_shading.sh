@@ -6,23 +6,7 @@
 # errors of the new options.
 #
 # Run as: bash cli_shading.sh <path-to-spancast> <source-dir> <work-dir>
-set -u
-bin=$(cd "$(dirname "$1")" && pwd)/$(basename "$1")
-src=$(cd "$2" && pwd)
-work=$3
-rm -rf "$work"
-mkdir -p "$work"
-cd "$work" || exit 1
-
-fails=0
-checks=0
-fail() {
-    echo "FAIL: $*"
-    fails=$((fails + 1))
-}
-check() {
-    checks=$((checks + 1))
-}
+. "$(dirname "$0")/testlib.sh"
 
 model=$src/models/whitted.csg
 size=--imgsize=96,72
