@@ -24,14 +24,17 @@
  * cylinder for dr = 0, or a disc for dz = 0, where every root has the same
  * t). Its parity of crossings is decided by signs only: the edge crosses
  * the trace an odd number of times exactly when G differs in sign at its
- * two ends, and G at a vertex is one number shared by the vertex's two
- * edges. So each closed contour crosses the trace an even number of times,
- * whatever rounding does to the root positions, and a ray through a vertex
- * counts it once or not at all, consistently. An edge with a sign change
- * gives its one root in [0, 1]; an edge without gives two roots when the
- * quadratic has two distinct ones inside (0, 1), else none. G at a vertex
- * is (r - rho)(r + rho), the difference of the square roots exact near the
- * trace (Sterbenz), so the sign holds for grazing rays.
+ * two ends (a zero counting as negative: the trace is taken a hair to the
+ * right, so a ray along the axis runs inside a profile that touches the
+ * axis, as the solid's interior does), and G at a vertex is one number
+ * shared by the vertex's two edges. So each closed contour crosses the
+ * trace an even number of times, whatever rounding does to the root
+ * positions, and a ray through a vertex counts it once or not at all,
+ * consistently. An edge with a sign change gives its one root in [0, 1];
+ * an edge without gives two roots when the quadratic has two distinct
+ * ones in [0, 1], else none. G at a vertex is (r - rho)(r + rho), the
+ * difference of the square roots exact near the trace (Sterbenz), so the
+ * sign holds for grazing rays.
  *
  * Edges, d_z = 0. The trace is the half-line z = o_z, r >= r_min (the
  * ray's distance from the axis), covered twice: r falls from infinity to
@@ -99,7 +102,9 @@ static int in_wedge(const prim_revolve *r, double x, double y)
 }
 
 /* The stretches of the line o + t d inside the wedge, at most two, with
- * the face each finite end lies on. Returns their number. */
+ * the face each finite end lies on. Returns their number. The line's xy
+ * projection crosses the two faces' planes at most once each, so the
+ * wedge's membership is constant on the three pieces between. */
 static int wedge_stretches(const prim_revolve *r, vec3 o, vec3 d, double lo[2],
                            double hi[2], uint16_t lo_part[2], uint16_t hi_part[2])
 {
@@ -120,10 +125,15 @@ static int wedge_stretches(const prim_revolve *r, vec3 o, vec3 d, double lo[2],
         double den = e[0] * d.y - e[1] * d.x;
         if (den == 0)
             continue; /* parallel: the line never crosses this face's plane */
+        /* Where the line crosses the face's plane. On the far side of the
+         * axis that is no face, but the cut is kept all the same: pieces
+         * are classified by a point inside them, so a cut where nothing
+         * changes only splits a piece in two that join again below, and a
+         * line through the axis (both cuts at the axis, where rounding
+         * puts the crossing on either side) needs both. */
         double t = -(e[0] * o.y - e[1] * o.x) / den;
-        double px = o.x + t * d.x, py = o.y + t * d.y;
-        if (!isfinite(t) || e[0] * px + e[1] * py < 0)
-            continue; /* crosses the plane on the other side of the axis */
+        if (!isfinite(t))
+            continue;
         cut[n] = t;
         cut_part[n] = k == 0 ? PRIM_REVOLVE_PART_START : PRIM_REVOLVE_PART_END;
         n++;
@@ -224,17 +234,47 @@ static void sort_crossings(crossing *v, uint32_t n)
     }
 }
 
+/* Newton steps on the trace's signed distance from the line of edge e,
+ *   h(t) = n_r (rho(t) - r0) + n_z (z(t) - z0),
+ * from the estimate t. The root found through the edge's parameter s is
+ * right in count but can lose digits in t: for a nearly level ray t =
+ * t(z0) + s dz / d_z adds large numbers, and the two crossings of an edge
+ * with both sides of the trace near the axis are a near-double root in s
+ * while far apart in t. In t, near the ray's closest point to the
+ * profile, h is well conditioned. A step longer than limit, or one not
+ * shorter than the one before, is refused: the estimate stays with its
+ * own root. */
+static double polish(const prim_revolve_edge *e, vec3 o, vec3 d, double t, double limit)
+{
+    double n_r = e->z1 - e->z0, n_z = e->r0 - e->r1, last = limit;
+    for (int it = 0; it < 4; it++) {
+        double x = o.x + t * d.x, y = o.y + t * d.y, rho = hypot(x, y);
+        if (!(rho > 0))
+            break;
+        double h = n_r * (rho - e->r0) + n_z * (o.z + t * d.z - e->z0);
+        double dh = n_r * (x * d.x + y * d.y) / rho + n_z * d.z;
+        double step = h / dh;
+        if (!(fabs(step) < last))
+            break;
+        t -= step;
+        last = fabs(step);
+    }
+    return t;
+}
+
 /* Crossings of the edges for d_z != 0 (see the top). */
 static uint32_t edge_crossings_slanted(const prim_revolve *r, vec3 o, vec3 d, crossing *v,
                                        uint32_t n)
 {
     double a_xy = d.x * d.x + d.y * d.y;
+    /* Newton's reach: a ten-thousandth of the profile's size along the ray */
+    double limit = 1e-4 * fmax(r->r_hi, r->z_hi - r->z_lo) / sqrt(v3_dot(d, d));
     for (uint32_t i = 0; i < r->edge_count; i++) {
         const prim_revolve_edge *e = &r->edges[i];
         double xa, ya, xb, yb;
         double ga = trace_g(o, d, e->r0, e->z0, &xa, &ya);
         double gb = trace_g(o, d, e->r1, e->z1, &xb, &yb);
-        int odd = (ga >= 0) != (gb >= 0);
+        int odd = (ga > 0) != (gb > 0);
         double ta = (e->z0 - o.z) / d.z, tau = (e->z1 - e->z0) / d.z;
         double dr = e->r1 - e->r0;
         double alpha = dr * dr - a_xy * tau * tau;
@@ -270,12 +310,12 @@ static uint32_t edge_crossings_slanted(const prim_revolve *r, vec3 o, vec3 d, cr
             }
             if (!(miss <= 1e-6)) {
                 double lo = 0, hi = 1;
-                int neg_lo = ga < 0;
+                int pos_lo = ga > 0;
                 for (int it = 0; it < 64; it++) {
                     double mid = 0.5 * (lo + hi), x, y;
                     double g = trace_g(o, d, e->r0 + mid * dr,
                                        e->z0 + mid * (e->z1 - e->z0), &x, &y);
-                    if ((g < 0) == neg_lo)
+                    if ((g > 0) == pos_lo)
                         lo = mid;
                     else
                         hi = mid;
@@ -283,10 +323,18 @@ static uint32_t edge_crossings_slanted(const prim_revolve *r, vec3 o, vec3 d, cr
                 best = 0.5 * (lo + hi);
             }
             best = fmin(1, fmax(0, best));
-            v[n++] = (crossing){ta + best * tau, e->region, (uint16_t)i};
-        } else if (roots == 2 && s[0] > 0 && s[1] < 1 && s[0] < s[1]) {
-            v[n++] = (crossing){ta + s[0] * tau, e->region, (uint16_t)i};
-            v[n++] = (crossing){ta + s[1] * tau, e->region, (uint16_t)i};
+            v[n++] = (crossing){polish(e, o, d, ta + best * tau, limit), e->region,
+                                (uint16_t)i};
+        } else if (e->r0 == 0 && e->r1 == 0) {
+            /* An edge on the axis: G = -rho^2 <= 0 along it, touching 0 only
+             * where the ray meets the axis; with the trace a hair to the
+             * right it is never crossed (a rounded pair of roots there
+             * would cut a gap into the solid's interior). */
+        } else if (roots == 2 && s[0] >= 0 && s[1] <= 1 && s[0] < s[1]) {
+            v[n++] = (crossing){polish(e, o, d, ta + s[0] * tau, limit), e->region,
+                                (uint16_t)i};
+            v[n++] = (crossing){polish(e, o, d, ta + s[1] * tau, limit), e->region,
+                                (uint16_t)i};
         }
     }
     return n;
@@ -304,8 +352,9 @@ static uint32_t edge_crossings_level(const prim_revolve *r, vec3 o, vec3 d, cros
         if ((e->z0 > o.z) == (e->z1 > o.z))
             continue;
         double rs = e->r0 + (o.z - e->z0) * (e->r1 - e->r0) / (e->z1 - e->z0);
-        if (!(rs >= r_min))
-            continue;
+        if (!(rs > r_min))
+            continue; /* missed, or touched: no crossing (the trace a hair
+                         to the right, as above) */
         double h = sqrt((rs - r_min) * (rs + r_min) / a_xy);
         v[n++] = (crossing){tc - h, e->region, (uint16_t)i};
         v[n++] = (crossing){tc + h, e->region, (uint16_t)i};
