@@ -323,6 +323,9 @@ static void test_errors(void **state)
         "[[0, 1, 3]]); }",
         SC_ERR_SEMANTIC,
         "m.csg:1:79: error: polygon path 0: point index is not one of the 3 points");
+    check_error("rotate_extrude(file = \"a.dxf\");", SC_ERR_UNSUPPORTED,
+                "m.csg:1:1: error: rotate_extrude of a file is not supported yet (use a "
+                "child import())");
     /* a profile past the edge limit */
     size_t cap = 64 * 1024;
     char *text = malloc(cap);

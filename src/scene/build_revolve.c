@@ -620,6 +620,10 @@ sc_status build_rotate_extrude(const build_ctx *c, const parse_node *n, int emit
         return build_wrong_type(c, n, "convexity", cv, "a number");
     if (!isfinite(angle) || angle <= -360 || angle > 360)
         angle = 360;
+    if (build_arg(n, "file", -1))
+        return err_set(c->error, SC_ERR_UNSUPPORTED, &n->loc,
+                       "rotate_extrude of a file is not supported yet (use a child "
+                       "import())");
     profile p;
     memset(&p, 0, sizeof p);
     affine2 id = {{{1, 0, 0}, {0, 1, 0}}};
