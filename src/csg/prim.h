@@ -31,6 +31,7 @@ typedef enum prim_kind {
     PRIM_QUADRIC,  /* Q(p) <= 0 within a box (prim_quadric.c) */
     PRIM_IMPLICIT, /* f(p) < 0 within a box (prim_implicit.c) */
     PRIM_MESH,     /* closed triangle mesh (prim_mesh.c) */
+    PRIM_REVOLVE,  /* profile revolved about z (prim_revolve.c) */
     PRIM_KIND_COUNT
 } prim_kind;
 
@@ -42,6 +43,7 @@ typedef struct plane {
 
 struct expr_program;
 struct prim_mesh;
+struct prim_revolve;
 
 /* Spans an implicit leaf gives one ray at most; see prim_implicit.c for
  * what happens to a ray that crosses its surface more often. */
@@ -83,6 +85,9 @@ typedef struct prim {
         struct {
             const struct prim_mesh *mesh; /* owned by the tree's arena */
         } mesh;
+        struct {
+            const struct prim_revolve *rev; /* owned by the tree's arena */
+        } revolve;
     } u;
 } prim;
 

@@ -42,6 +42,7 @@
 #include "scene/build_shading.h"
 #include "scene/build_curved.h"
 #include "scene/build_mesh.h"
+#include "scene/build_revolve.h"
 #include "scene/faithful.h"
 
 typedef enum node_kind {
@@ -56,6 +57,7 @@ typedef enum node_kind {
     KIND_POLYHEDRON,
     KIND_IMPORT,         /* build_mesh.c */
     KIND_LINEAR_EXTRUDE, /* build_extrude.c; its children are its own */
+    KIND_ROTATE_EXTRUDE, /* build_revolve.c; its children are its own */
     KIND_TORUS,          /* torus, quadric, implicit: build_implicit.c */
     KIND_QUADRIC,
     KIND_IMPLICIT, /* the last leaf kind (is_leaf) */
@@ -86,7 +88,7 @@ static const struct {
     {"hull", KIND_UNSUPPORTED},
     {"minkowski", KIND_UNSUPPORTED},
     {"linear_extrude", KIND_LINEAR_EXTRUDE},
-    {"rotate_extrude", KIND_UNSUPPORTED},
+    {"rotate_extrude", KIND_ROTATE_EXTRUDE},
     {"import", KIND_IMPORT},
     {"surface", KIND_UNSUPPORTED},
     {"projection", KIND_UNSUPPORTED},
@@ -711,6 +713,21 @@ static sc_status build_import_leaf(builder *b, const parse_node *n, int import,
     return add_leaf(b, n, &p, state, id);
 }
 
+/* rotate_extrude (build_revolve.c). */
+static sc_status build_revolve_leaf(builder *b, const parse_node *n, const frame *state,
+                                    uint32_t *id)
+{
+    build_ctx c = {b->syntax->file, b->csg, b->error, b->faithful};
+    const char *empty = NULL;
+    prim p;
+    sc_status st = build_rotate_extrude(&c, n, state->emit, &p, &empty);
+    if (st != SC_OK || !state->emit)
+        return st;
+    if (empty)
+        return warn(b, &n->loc, "%s", empty);
+    return add_leaf(b, n, &p, state, id);
+}
+
 /* ---- boolean nodes with arguments ---- */
 
 /* multmatrix(m = [[...], [...], [...], [0, 0, 0, 1]]): a row-major 4x4
@@ -920,6 +937,7 @@ static sc_status visit(builder *b, const parse_node *n, int *opened)
         return build_background(b->shading, b->syntax, n, f.emit, b->error);
     if (is_leaf(kind)) {
         if (n->child_count > 0 && f.emit && kind != KIND_LINEAR_EXTRUDE &&
+            kind != KIND_ROTATE_EXTRUDE &&
             (st = warn(b, &n->loc, "'%s' takes no children; they are ignored",
                        n->name)) != SC_OK)
             return st;
@@ -942,6 +960,9 @@ static sc_status visit(builder *b, const parse_node *n, int *opened)
         case KIND_IMPORT:
         case KIND_LINEAR_EXTRUDE:
             st = build_import_leaf(b, n, kind == KIND_IMPORT, &f, &id);
+            break;
+        case KIND_ROTATE_EXTRUDE:
+            st = build_revolve_leaf(b, n, &f, &id);
             break;
         default:
             st = build_polyhedron(b, n, &f, &id);
