@@ -85,5 +85,8 @@ int twod_clip_minkowski(twod_region *const *children, uint32_t count, twod_regio
  * at their position. */
 sc_status twod_from_children(const build_ctx *c, const parse_node *parent,
                              twod_region *out);
+/* The region of the 2D node n itself (circle, offset, ...), evaluated the
+ * same way. */
+sc_status twod_from_node(const build_ctx *c, const parse_node *n, twod_region *out);
 
 #endif

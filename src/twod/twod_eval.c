@@ -531,3 +531,9 @@ sc_status twod_from_children(const build_ctx *c, const parse_node *parent,
     free_children(regions, count);
     return st;
 }
+
+sc_status twod_from_node(const build_ctx *c, const parse_node *n, twod_region *out)
+{
+    eval e = {c, n->name};
+    return eval_node(&e, n, out, 1);
+}
