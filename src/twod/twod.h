@@ -55,7 +55,7 @@ int twod_hull(const double *xy, uint32_t count, twod_region *out);
 
 /* ---- the clipper (twod_clip.cpp); each returns a TWOD_CLIP_ code ---- */
 
-enum { TWOD_CLIP_OK = 0, TWOD_CLIP_NOMEM, TWOD_CLIP_RANGE };
+enum { TWOD_CLIP_OK = 0, TWOD_CLIP_NOMEM, TWOD_CLIP_RANGE, TWOD_CLIP_TOO_MANY };
 typedef enum twod_op { TWOD_UNION, TWOD_DIFFERENCE, TWOD_INTERSECTION } twod_op;
 typedef enum twod_join { TWOD_JOIN_ROUND, TWOD_JOIN_MITER, TWOD_JOIN_SQUARE } twod_join;
 

@@ -47,6 +47,8 @@ namespace
 
 const double miter_limit = 1000000.0;
 
+struct too_many_points {
+};
 struct range_error {
 };
 
@@ -87,6 +89,8 @@ void to_region(const PolyTree &tree, twod_region *out)
         if (!twod_begin_contour(out))
             throw std::bad_alloc();
         for (const IntPoint &p : cleaned) {
+            if (out->point_count >= TWOD_MAX_POINTS)
+                throw too_many_points();
             if (!twod_add_point(out, 1.0 * static_cast<double>(p.X) / TWOD_CLIPPER_SCALE,
                                 1.0 * static_cast<double>(p.Y) / TWOD_CLIPPER_SCALE))
                 throw std::bad_alloc();
@@ -167,6 +171,8 @@ template <typename F> int guarded(F f)
         return TWOD_CLIP_OK;
     } catch (const std::bad_alloc &) {
         return TWOD_CLIP_NOMEM;
+    } catch (const too_many_points &) {
+        return TWOD_CLIP_TOO_MANY;
     } catch (...) {
         /* range_error, or Clipper's clipperException for coordinates out
          * of its range */

@@ -64,6 +64,10 @@ static sc_status clip_status(const eval *e, const parse_node *n, int code)
         return SC_OK;
     if (code == TWOD_CLIP_NOMEM)
         return nomem(e, n);
+    if (code == TWOD_CLIP_TOO_MANY)
+        return err_set(e->c->error, SC_ERR_LIMIT, &n->loc,
+                       "%s: too many points in a 2D shape (limit is %u)", n->name,
+                       TWOD_MAX_POINTS);
     return err_set(e->c->error, SC_ERR_LIMIT, &n->loc,
                    "%s: coordinates out of range (limit is %g)", n->name, TWOD_MAX_COORD);
 }
@@ -229,7 +233,10 @@ static sc_status read_polygon(const eval *e, const parse_node *n, twod_region *o
             if (!(fabs(x) <= TWOD_MAX_COORD && fabs(y) <= TWOD_MAX_COORD))
                 return clip_status(e, n, TWOD_CLIP_RANGE);
             if (!twod_add_point(out, x, y))
-                return nomem(e, n);
+                return clip_status(e, n,
+                                   out->point_count >= TWOD_MAX_POINTS
+                                       ? TWOD_CLIP_TOO_MANY
+                                       : TWOD_CLIP_NOMEM);
         }
     }
     out->sanitized = 0;
