@@ -136,6 +136,30 @@ static void test_every_path(void **state)
     assert_true(count > 20);
 }
 
+/* The 2D engine and OpenSCAD's extrusions (src/twod/,
+ * build_extrude_faithful.c): regions, booleans, offset, hull, Minkowski
+ * sums, slices, merged and split tops, and a 2D object in a 3D model.
+ * (Clipper's own C++ allocations are not wrapped; the C paths are.) */
+static void test_extrusions(void **state)
+{
+    (void)state;
+    const char *text =
+        "linear_extrude(height = 5, twist = 90, scale = [0.5, 1], $fn = 8) {\n"
+        "  difference() { offset(r = 1, $fn = 8) { square(4); } circle(r = 1, $fn = 6); "
+        "}\n"
+        "  hull() { square(1); multmatrix([[1, 0, 0, 5], [0, 1, 0, 0], [0, 0, 1, 0], [0, "
+        "0, 0, 1]]) { circle(r = 1, $fn = 5); } }\n"
+        "  minkowski() { square(1); circle(r = 1, $fn = 4); }\n"
+        "  polygon(points = [[0, 0], [9, 0], [9, 9], [3, 3], [6, 3], [6, 6]], paths = "
+        "[[0, 1, 2], [3, 4, 5]]);\n}\n"
+        "linear_extrude(height = 2, scale = 0) { circle(r = 2, $fn = 7); }\n"
+        "linear_extrude(height = 2, scale = [1, 0]) { circle(r = 2, $fn = 7); }\n"
+        "square(2);\n";
+    long count = fail_each_load("extrude.csg", text, strlen(text));
+    print_message("extrude.csg: %ld allocations, each failed in turn\n", count);
+    assert_true(count > 20);
+}
+
 /* sc_render: every allocation of its buffers, in turn. */
 static void test_render(void **state)
 {
@@ -175,6 +199,7 @@ int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_models),
+        cmocka_unit_test(test_extrusions),
         cmocka_unit_test(test_every_path),
         cmocka_unit_test(test_render),
     };

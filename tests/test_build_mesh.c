@@ -274,7 +274,7 @@ static void test_import(void **state)
 
 /* linear_extrude of square, circle and polygon children: holes by nesting,
  * circles as OpenSCAD's polygons, unions of children, 2D transforms,
- * centring; twist, scale and other 2D nodes are errors. */
+ * centring; other 2D nodes are errors, a scale builds OpenSCAD's slices. */
 static void test_linear_extrude(void **state)
 {
     (void)state;
@@ -317,9 +317,11 @@ static void test_linear_extrude(void **state)
     assert_false(inside(s, 1, 0.5, 0.5));
     sc_scene_release(s);
 
-    check_error("m.csg", "linear_extrude(height = 1, scale = 2) { square(); }",
-                SC_ERR_UNSUPPORTED,
-                "m.csg:1:1: error: linear_extrude with scale is not supported yet");
+    /* a scale goes to OpenSCAD's slices (build_extrude_faithful.c) */
+    s = load("m.csg", "linear_extrude(height = 1, scale = 2) { square(); }");
+    assert_true(inside(s, 1.5, 1.5, 0.9));
+    assert_false(inside(s, 1.5, 1.5, 0.1));
+    sc_scene_release(s);
     check_error(
         "m.csg",
         "linear_extrude(height = 1) {\n  difference() { square(2); square(1); }\n}",

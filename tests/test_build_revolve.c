@@ -295,6 +295,41 @@ static void test_exact_matches_faithful(void **state)
     sc_scene_release(b);
 }
 
+/* 2D booleans and offsets in the profile go through the 2D engine: a
+ * square ring (a 4 x 4 square less a 2 x 2 one, centred at x = 5) revolves
+ * to a tube with a square channel, in both modes. */
+static void test_twod_profile(void **state)
+{
+    (void)state;
+    static const char text[] =
+        "rotate_extrude($fn = 64) {\n"
+        "  difference() {\n"
+        "    multmatrix(m = [[1, 0, 0, 5], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]) {\n"
+        "      square(size = [4, 4], center = true);\n"
+        "    }\n"
+        "    multmatrix(m = [[1, 0, 0, 5], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]) {\n"
+        "      square(size = [2, 2], center = true);\n"
+        "    }\n"
+        "  }\n"
+        "}\n";
+    for (int faithful = 0; faithful < 2; faithful++) {
+        sc_scene *s = load_mode(text, faithful);
+        assert_true(inside(s, 3.5, 0, 0) && inside(s, 0, -6.5, 1.5) &&
+                    inside(s, -5, 0, 1.5));
+        assert_false(inside(s, 5, 0, 0) || inside(s, 0, 5.5, 0.5) ||
+                     inside(s, 2.5, 0, 0) || inside(s, 7.5, 0, 0) ||
+                     inside(s, 5, 0, 2.5));
+        sc_scene_release(s);
+    }
+    sc_scene *s =
+        load("rotate_extrude() { offset(delta = 1) { multmatrix(m = [[1, 0, 0, "
+             "5], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]) { square(size = 2, "
+             "center = true); } } }");
+    assert_true(inside(s, 6.9, 0, 1.9) && inside(s, 0, 3.1, -1.9));
+    assert_false(inside(s, 7.1, 0, 0) || inside(s, 2.9, 0, 0) || inside(s, 5, 0, 2.1));
+    sc_scene_release(s);
+}
+
 static void test_errors(void **state)
 {
     (void)state;
@@ -307,14 +342,9 @@ static void test_errors(void **state)
                 SC_ERR_SEMANTIC,
                 "m.csg:1:1: error: all points for rotate_extrude() must have the same X "
                 "coordinate sign (range is -1.00 -> 2.00)");
-    check_error(
-        "rotate_extrude() {\n  difference() { square(size = 1); }\n}", SC_ERR_UNSUPPORTED,
-        "m.csg:2:3: error: 'difference' inside rotate_extrude is not supported yet");
-    check_error("rotate_extrude() { group() { offset(r = 1) { square(size = 1); } } }",
-                SC_ERR_UNSUPPORTED,
-                "m.csg:1:30: error: 'offset' inside rotate_extrude is not supported yet");
-    check_error("rotate_extrude() { cube(size = 1); }", SC_ERR_UNSUPPORTED,
-                "m.csg:1:20: error: 'cube' inside rotate_extrude is not supported yet");
+    check_error("rotate_extrude() { cube(size = 1); }", SC_ERR_SEMANTIC,
+                "m.csg:1:20: error: 'cube' is a 3D object inside a 2D operation "
+                "(rotate_extrude)");
     check_error("rotate_extrude(angle = \"x\") { square(size = 1); }", SC_ERR_SEMANTIC,
                 "m.csg:1:24: error: wrong type for argument 'angle' of 'rotate_extrude' "
                 "(expected a number)");
@@ -376,6 +406,7 @@ int main(void)
         cmocka_unit_test(test_cone),
         cmocka_unit_test(test_faithful),
         cmocka_unit_test(test_exact_matches_faithful),
+        cmocka_unit_test(test_twod_profile),
         cmocka_unit_test(test_errors),
         cmocka_unit_test(test_depth_guard),
     };

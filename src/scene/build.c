@@ -44,6 +44,7 @@
 #include "scene/build_mesh.h"
 #include "scene/build_revolve.h"
 #include "scene/faithful.h"
+#include "twod/twod.h"
 
 typedef enum node_kind {
     KIND_UNION, /* group, union, render */
@@ -58,6 +59,7 @@ typedef enum node_kind {
     KIND_IMPORT,         /* build_mesh.c */
     KIND_LINEAR_EXTRUDE, /* build_extrude.c; its children are its own */
     KIND_ROTATE_EXTRUDE, /* build_revolve.c; its children are its own */
+    KIND_TWOD,           /* 2D shapes: checked, then ignored with a warning */
     KIND_TORUS,          /* torus, quadric, implicit: build_implicit.c */
     KIND_QUADRIC,
     KIND_IMPLICIT, /* the last leaf kind (is_leaf) */
@@ -92,10 +94,10 @@ static const struct {
     {"import", KIND_IMPORT},
     {"surface", KIND_UNSUPPORTED},
     {"projection", KIND_UNSUPPORTED},
-    {"offset", KIND_UNSUPPORTED},
-    {"circle", KIND_UNSUPPORTED},
-    {"square", KIND_UNSUPPORTED},
-    {"polygon", KIND_UNSUPPORTED},
+    {"offset", KIND_TWOD},
+    {"circle", KIND_TWOD},
+    {"square", KIND_TWOD},
+    {"polygon", KIND_TWOD},
     {"text", KIND_UNSUPPORTED},
     {"resize", KIND_UNSUPPORTED},
     {"roof", KIND_UNSUPPORTED},
@@ -150,6 +152,9 @@ typedef struct builder {
     int faithful;           /* OpenSCAD's polyhedra for spheres and cylinders */
     const parse_node *root; /* the first '!' node, or NULL */
     uint32_t root_id;       /* its result */
+    /* the first 2D shape ignored in the 3D model, and the 3D leaves built */
+    const parse_node *first_2d;
+    size_t solid_leaves;
 } builder;
 
 static sc_status nomem(builder *b)
@@ -728,6 +733,24 @@ static sc_status build_revolve_leaf(builder *b, const parse_node *n, const frame
     return add_leaf(b, n, &p, state, id);
 }
 
+/* A 2D shape (circle, square, polygon, offset) among 3D objects: checked
+ * through the 2D engine, then the empty solid with a warning, as OpenSCAD
+ * ignores 2D objects in a 3D model. */
+static sc_status build_twod_ignored(builder *b, const parse_node *n, const frame *state)
+{
+    build_ctx c = {b->syntax->file, b->csg, b->error, b->faithful};
+    twod_region r;
+    twod_init(&r);
+    sc_status st = twod_from_node(&c, n, n->name, &r);
+    twod_free(&r);
+    if (st != SC_OK || !state->emit)
+        return st;
+    if (!b->first_2d)
+        b->first_2d = n;
+    return warn(b, &n->loc, "2D object '%s' in a 3D model is ignored (as in OpenSCAD)",
+                n->name);
+}
+
 /* ---- boolean nodes with arguments ---- */
 
 /* multmatrix(m = [[...], [...], [...], [0, 0, 0, 1]]): a row-major 4x4
@@ -937,11 +960,12 @@ static sc_status visit(builder *b, const parse_node *n, int *opened)
         return build_background(b->shading, b->syntax, n, f.emit, b->error);
     if (is_leaf(kind)) {
         if (n->child_count > 0 && f.emit && kind != KIND_LINEAR_EXTRUDE &&
-            kind != KIND_ROTATE_EXTRUDE &&
+            kind != KIND_ROTATE_EXTRUDE && kind != KIND_TWOD &&
             (st = warn(b, &n->loc, "'%s' takes no children; they are ignored",
                        n->name)) != SC_OK)
             return st;
         uint32_t id = CSG_EMPTY;
+        b->solid_leaves += f.emit && kind != KIND_TWOD;
         switch (kind) {
         case KIND_CUBE:
             st = build_cube(b, n, &f, &id);
@@ -963,6 +987,9 @@ static sc_status visit(builder *b, const parse_node *n, int *opened)
             break;
         case KIND_ROTATE_EXTRUDE:
             st = build_revolve_leaf(b, n, &f, &id);
+            break;
+        case KIND_TWOD:
+            st = build_twod_ignored(b, n, &f);
             break;
         default:
             st = build_polyhedron(b, n, &f, &id);
@@ -1069,6 +1096,10 @@ sc_status build_scene(const parse_tree *syntax, int faithful, csg_tree **out,
     sc_status st = walk(&b, &root);
     free(b.ids);
     free(b.frames);
+    if (st == SC_OK && b.first_2d && !b.solid_leaves)
+        st = err_set(error, SC_ERR_SEMANTIC, &b.first_2d->loc,
+                     "the model has only 2D objects, which have no 3D output (extrude "
+                     "them with linear_extrude)");
     if (st != SC_OK) {
         csg_builder_free(b.csg);
         shading_free(b.shading);

@@ -28,6 +28,7 @@
 
 #include "base/error.h"
 #include "base/grow.h"
+#include "scene/build_extrude_faithful.h"
 #include "scene/build_mesh.h"
 #include "scene/faithful.h"
 
@@ -308,9 +309,8 @@ sc_status build_linear_extrude(const build_ctx *c, const parse_node *n, int emit
     if (cv && cv->kind != PARSE_BOOL)
         return build_wrong_type(c, n, "center", cv, "true or false");
     int center = cv ? cv->u.boolean : 0;
-    if (twist != 0)
-        return err_set(c->error, SC_ERR_UNSUPPORTED, &n->loc,
-                       "linear_extrude with twist is not supported yet");
+    if (twist != 0 || c->faithful) /* OpenSCAD's slices: build_extrude_faithful.c */
+        return build_linear_extrude_faithful(c, n, emit, out, empty);
     const parse_value *sv = build_arg(n, "scale", -1);
     if (sv) {
         int one = (sv->kind == PARSE_NUMBER && sv->u.number == 1) ||
@@ -320,8 +320,7 @@ sc_status build_linear_extrude(const build_ctx *c, const parse_node *n, int emit
                    sv->u.vector.items[1].kind == PARSE_NUMBER &&
                    sv->u.vector.items[1].u.number == 1);
         if (!one)
-            return err_set(c->error, SC_ERR_UNSUPPORTED, &n->loc,
-                           "linear_extrude with scale is not supported yet");
+            return build_linear_extrude_faithful(c, n, emit, out, empty);
     }
     paths2d p;
     memset(&p, 0, sizeof p);

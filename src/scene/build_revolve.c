@@ -52,6 +52,7 @@
 #include "csg/prim_revolve.h"
 #include "scene/build_mesh.h"
 #include "scene/faithful.h"
+#include "twod/twod.h"
 
 enum { BUILD_REVOLVE_MAX_DEPTH = 1000 };
 
@@ -324,16 +325,39 @@ static sc_status read_polygon(const build_ctx *c, const parse_node *n, const aff
     return SC_OK;
 }
 
-/* The 2D nodes without a reader here. A 2D engine that computes such a
- * node's region as paths adds it with begin_region, then begin_path and
- * add_point per path, then mark_holes (or with holes already marked). */
+/* Adds the contours of a region the 2D engine (src/twod/) computed as one
+ * region of the profile, holes found by nesting as for a polygon's paths. */
+static sc_status add_twod(const build_ctx *c, const parse_node *n, const twod_region *r,
+                          const affine2 *m, profile *p)
+{
+    if (r->contour_count == 0)
+        return SC_OK;
+    uint32_t first = p->paths;
+    begin_region(p);
+    for (uint32_t k = 0; k < r->contour_count; k++) {
+        if (!begin_path(p))
+            return nomem(c, n);
+        for (uint32_t i = r->start[k]; i < r->start[k + 1]; i++) {
+            if (!add_point(p, m, r->xy[2 * i], r->xy[2 * i + 1]))
+                return nomem(c, n);
+        }
+    }
+    mark_holes(p, first);
+    return SC_OK;
+}
+
+/* The 2D nodes without a reader here (difference, intersection, offset,
+ * hull, minkowski): the 2D engine evaluates the node as OpenSCAD does. */
 static sc_status gather_other(const build_ctx *c, const parse_node *n, const affine2 *m,
                               profile *p)
 {
-    (void)m;
-    (void)p;
-    return err_set(c->error, SC_ERR_UNSUPPORTED, &n->loc,
-                   "'%s' inside rotate_extrude is not supported yet", n->name);
+    twod_region r;
+    twod_init(&r);
+    sc_status st = twod_from_node(c, n, "rotate_extrude", &r);
+    if (st == SC_OK)
+        st = add_twod(c, n, &r, m, p);
+    twod_free(&r);
+    return st;
 }
 
 static sc_status read_matrix2(const build_ctx *c, const parse_node *n, const affine2 *m,
@@ -627,8 +651,19 @@ sc_status build_rotate_extrude(const build_ctx *c, const parse_node *n, int emit
     profile p;
     memset(&p, 0, sizeof p);
     affine2 id = {{{1, 0, 0}, {0, 1, 0}}};
-    for (const parse_node *k = n->first_child; k && st == SC_OK; k = k->next)
-        st = gather(c, k, &id, &p, 1);
+    if (c->faithful) {
+        /* OpenSCAD unites the children in 2D first: its rings follow the
+         * united outline's points. */
+        twod_region r;
+        twod_init(&r);
+        st = twod_from_children(c, n, &r);
+        if (st == SC_OK)
+            st = add_twod(c, n, &r, &id, &p);
+        twod_free(&r);
+    } else {
+        for (const parse_node *k = n->first_child; k && st == SC_OK; k = k->next)
+            st = gather(c, k, &id, &p, 1);
+    }
     /* OpenSCAD's check, in its order, with its running range. */
     double min_x = 0, max_x = 0;
     for (uint32_t i = 0; st == SC_OK && i < p.count; i++) {

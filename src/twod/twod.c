@@ -1,0 +1,144 @@
+/* Regions of the 2D engine (twod.h): growable arrays of contours, their
+ * signed areas (the shoelace formula, positive counter-clockwise), and the
+ * convex hull of a point set.
+ *
+ * The hull is Andrew's monotone chain: the points sorted by x then y, a
+ * lower and an upper chain built by dropping every point that does not
+ * turn left (cross product <= 0), so collinear and repeated points are
+ * left out. The result is one counter-clockwise contour, as OpenSCAD's
+ * 2D hull (CGAL's convex_hull_2 on double points) makes it; where the
+ * contour starts does not change the region.
+ */
+#include <stdlib.h>
+#include <string.h>
+
+#include "base/grow.h"
+#include "twod/twod.h"
+
+void twod_init(twod_region *r)
+{
+    memset(r, 0, sizeof *r);
+}
+
+void twod_free(twod_region *r)
+{
+    free(r->xy);
+    free(r->start);
+    twod_init(r);
+}
+
+void twod_clear(twod_region *r)
+{
+    r->point_count = 0;
+    r->contour_count = 0;
+    r->sanitized = 0;
+}
+
+void twod_move(twod_region *dst, twod_region *src)
+{
+    if (dst == src)
+        return;
+    twod_free(dst);
+    *dst = *src;
+    twod_init(src);
+}
+
+int twod_begin_contour(twod_region *r)
+{
+    if (!grow_array32((void **)&r->start, &r->start_cap, r->contour_count + 2,
+                      sizeof *r->start))
+        return 0;
+    r->start[r->contour_count] = r->point_count;
+    r->contour_count++;
+    r->start[r->contour_count] = r->point_count;
+    return 1;
+}
+
+int twod_add_point(twod_region *r, double x, double y)
+{
+    if (r->point_count >= TWOD_MAX_POINTS || r->contour_count == 0)
+        return 0;
+    if (r->point_count + 1 > r->point_cap) {
+        uint32_t cap = r->point_cap * 2;
+        if (!grow_array32((void **)&r->xy, &cap, 2 * (r->point_count + 1), sizeof *r->xy))
+            return 0;
+        r->point_cap = cap / 2;
+    }
+    r->xy[2 * r->point_count] = x;
+    r->xy[2 * r->point_count + 1] = y;
+    r->point_count++;
+    r->start[r->contour_count] = r->point_count;
+    return 1;
+}
+
+double twod_contour_area(const twod_region *r, uint32_t k)
+{
+    double a = 0;
+    uint32_t s = r->start[k], e = r->start[k + 1];
+    for (uint32_t i = s; i < e; i++) {
+        uint32_t j = i + 1 < e ? i + 1 : s;
+        a += r->xy[2 * i] * r->xy[2 * j + 1] - r->xy[2 * j] * r->xy[2 * i + 1];
+    }
+    return a / 2;
+}
+
+double twod_area(const twod_region *r)
+{
+    double a = 0;
+    for (uint32_t k = 0; k < r->contour_count; k++)
+        a += twod_contour_area(r, k);
+    return a;
+}
+
+static int compare_xy(const void *pa, const void *pb)
+{
+    const double *a = pa, *b = pb;
+    if (a[0] != b[0])
+        return a[0] < b[0] ? -1 : 1;
+    return (a[1] > b[1]) - (a[1] < b[1]);
+}
+
+static double turn(const double *o, const double *a, const double *b)
+{
+    return (a[0] - o[0]) * (b[1] - o[1]) - (a[1] - o[1]) * (b[0] - o[0]);
+}
+
+int twod_hull(const double *xy, uint32_t count, twod_region *out)
+{
+    twod_clear(out);
+    if (count == 0)
+        return 1;
+    double *p = malloc((size_t)count * 2 * sizeof *p);
+    double *h = malloc(((size_t)count * 2 + 2) * 2 * sizeof *h);
+    if (!p || !h) {
+        free(p);
+        free(h);
+        return 0;
+    }
+    memcpy(p, xy, (size_t)count * 2 * sizeof *p);
+    qsort(p, count, 2 * sizeof *p, compare_xy);
+    size_t k = 0;
+    for (uint32_t i = 0; i < count; i++) { /* lower chain */
+        while (k >= 2 && turn(&h[2 * (k - 2)], &h[2 * (k - 1)], &p[2 * i]) <= 0)
+            k--;
+        h[2 * k] = p[2 * i];
+        h[2 * k + 1] = p[2 * i + 1];
+        k++;
+    }
+    for (size_t i = count - 1, lower = k + 1; i-- > 0;) { /* upper chain */
+        while (k >= lower && turn(&h[2 * (k - 2)], &h[2 * (k - 1)], &p[2 * i]) <= 0)
+            k--;
+        h[2 * k] = p[2 * i];
+        h[2 * k + 1] = p[2 * i + 1];
+        k++;
+    }
+    int ok = 1;
+    if (k > 3) { /* the last point repeats the first */
+        ok = twod_begin_contour(out);
+        for (size_t i = 0; ok && i + 1 < k; i++)
+            ok = twod_add_point(out, h[2 * i], h[2 * i + 1]);
+    }
+    free(p);
+    free(h);
+    return ok;
+}

@@ -1,0 +1,93 @@
+/* The 2D engine: regions in the plane, evaluated from OpenSCAD's 2D nodes
+ * the way OpenSCAD 2021.01 evaluates them (twod_eval.c), with its
+ * polygon clipper (Clipper 6.4, twod_clip.cpp).
+ *
+ * A region is a list of closed contours of double points. After
+ * evaluation through the clipper ("sanitized", as OpenSCAD calls it) the
+ * contours do not cross, outer contours run counter-clockwise and holes
+ * clockwise, and every coordinate lies on the clipper's grid of 2^-16.
+ * Shapes OpenSCAD does not pass through the clipper keep their exact
+ * points: a circle or square alone, a transformed copy of either, a hull.
+ */
+#ifndef SPANCAST_TWOD_TWOD_H
+#define SPANCAST_TWOD_TWOD_H
+
+#include <stdint.h>
+
+#include "scene/build_curved.h"
+
+/* OpenSCAD's clipper grid: coordinates are scaled by 2^16 and truncated to
+ * integers (ClipperUtils' CLIPPER_SCALE). */
+#define TWOD_CLIPPER_SCALE 65536.0
+/* Largest coordinate the engine accepts: Clipper's integer range (2^62)
+ * over the scale, with room for offsets and sums. */
+#define TWOD_MAX_COORD 1e12
+/* Most points in one region. */
+#define TWOD_MAX_POINTS 10000000u
+
+typedef struct twod_region {
+    double *xy;             /* 2 per point */
+    uint32_t *start;        /* contour k is points start[k] .. start[k + 1] - 1 */
+    uint32_t point_count;   /* points in all contours */
+    uint32_t contour_count; /* start has contour_count + 1 entries when > 0 */
+    uint32_t point_cap;     /* in points */
+    uint32_t start_cap;     /* in entries */
+    int sanitized;          /* passed through the clipper (OpenSCAD's flag) */
+} twod_region;
+
+void twod_init(twod_region *r);
+void twod_free(twod_region *r);
+void twod_clear(twod_region *r);
+/* Starts a new, empty contour; 0 when memory runs out. */
+int twod_begin_contour(twod_region *r);
+/* Adds a point to the last contour; 0 when memory runs out or the region
+ * would pass TWOD_MAX_POINTS. */
+int twod_add_point(twod_region *r, double x, double y);
+/* Signed area of contour k (positive counter-clockwise) and of the region. */
+double twod_contour_area(const twod_region *r, uint32_t k);
+double twod_area(const twod_region *r);
+/* Moves src into dst (dst freed first); src is left empty. */
+void twod_move(twod_region *dst, twod_region *src);
+/* out = the convex hull of count points (xy, 2 per point): one
+ * counter-clockwise contour without collinear points, or nothing when the
+ * points span no area. 0 when memory runs out. */
+int twod_hull(const double *xy, uint32_t count, twod_region *out);
+
+/* ---- the clipper (twod_clip.cpp); each returns a TWOD_CLIP_ code ---- */
+
+enum { TWOD_CLIP_OK = 0, TWOD_CLIP_NOMEM, TWOD_CLIP_RANGE, TWOD_CLIP_TOO_MANY };
+typedef enum twod_op { TWOD_UNION, TWOD_DIFFERENCE, TWOD_INTERSECTION } twod_op;
+typedef enum twod_join { TWOD_JOIN_ROUND, TWOD_JOIN_MITER, TWOD_JOIN_SQUARE } twod_join;
+
+/* OpenSCAD's sanitize: the even-odd union of r's contours (each turned
+ * counter-clockwise first unless r is already sanitized), in place. */
+int twod_clip_sanitize(twod_region *r);
+/* OpenSCAD's ClipperUtils::apply: children sanitized where they are not,
+ * then the first as subject and the others as clip (non-zero fill);
+ * intersection as a chain of binary intersections. out is replaced. */
+int twod_clip_apply(twod_region *const *children, uint32_t count, twod_op op,
+                    twod_region *out);
+/* OpenSCAD's offset: delta and arc_tolerance in model units, miter limit
+ * 1000000 as OpenSCAD fixes it. out is replaced. */
+int twod_clip_offset(const twod_region *in, double delta, twod_join join,
+                     double arc_tolerance, twod_region *out);
+/* OpenSCAD's 2D minkowski of count >= 2 regions (NULL entries are empty
+ * children, which it skips after the first). out is replaced. */
+int twod_clip_minkowski(twod_region *const *children, uint32_t count, twod_region *out);
+
+/* ---- evaluation (twod_eval.c) ---- */
+
+/* The union of parent's 2D children, as OpenSCAD 2021.01 evaluates them:
+ * circle, square, polygon, group/union/render/color, difference,
+ * intersection, multmatrix (its xy part), offset, hull and minkowski.
+ * '%' and '*' children are left out. out must be initialised; it is
+ * replaced. Errors (bad arguments, nodes that are not 2D, limits) are set
+ * at their position. */
+sc_status twod_from_children(const build_ctx *c, const parse_node *parent,
+                             twod_region *out);
+/* The region of the 2D node n itself (circle, offset, ...), evaluated the
+ * same way; outer names the node that asked, for messages. */
+sc_status twod_from_node(const build_ctx *c, const parse_node *n, const char *outer,
+                         twod_region *out);
+
+#endif

@@ -1,0 +1,274 @@
+/* The 2D engine's polygon clipper: OpenSCAD 2021.01's ClipperUtils on
+ * Clipper 6.4 (Debian's libpolyclipping), behind a C interface (twod.h).
+ *
+ * What OpenSCAD does, and this file repeats step by step:
+ *   - into the clipper, each point is scaled by 2^16 and converted to a
+ *     64-bit integer by truncation (C++'s double to integer conversion);
+ *     a region that is not sanitized has each contour turned
+ *     counter-clockwise first, a sanitized one keeps its orientation;
+ *   - sanitize: the even-odd union of the contours;
+ *   - booleans: every child sanitized where it is not, the first added as
+ *     subject and the others as clip, executed with non-zero fill for both;
+ *     an intersection of more than two is a chain of binary ones, each
+ *     result fed back as the next subject;
+ *   - offset: ClipperOffset with miter limit 1000000 and the caller's arc
+ *     tolerance (scaled), closed polygons;
+ *   - minkowski: the sum of each pair of contours as quads (one per pair of
+ *     edges, each turned counter-clockwise), plus each child's contours
+ *     moved to the first point of each counter-clockwise contour of the
+ *     other, united with non-zero fill; more than two children fold left;
+ *   - out of the clipper, the result tree's contours in its own order, each
+ *     cleaned (CleanPolygon: points within 1.415 grid units of their
+ *     neighbours' line are dropped), those of fewer than 3 points left out,
+ *     and divided by 2^16.
+ * Clipper reports its range errors and allocation failures by exceptions;
+ * none leaves this file.
+ */
+#include <algorithm>
+#include <cmath>
+#include <new>
+#include <vector>
+
+#include <clipper.hpp>
+
+extern "C" {
+#include "twod/twod.h"
+}
+
+using ClipperLib::cInt;
+using ClipperLib::IntPoint;
+using ClipperLib::Path;
+using ClipperLib::Paths;
+using ClipperLib::PolyNode;
+using ClipperLib::PolyTree;
+
+namespace
+{
+
+const double miter_limit = 1000000.0;
+
+struct too_many_points {
+};
+struct range_error {
+};
+
+Paths to_paths(const twod_region &r, bool keep_orientation)
+{
+    Paths out;
+    out.reserve(r.contour_count);
+    for (uint32_t k = 0; k < r.contour_count; k++) {
+        Path p;
+        p.reserve(r.start[k + 1] - r.start[k]);
+        for (uint32_t i = r.start[k]; i < r.start[k + 1]; i++) {
+            double x = r.xy[2 * i], y = r.xy[2 * i + 1];
+            if (!(std::fabs(x) <= TWOD_MAX_COORD && std::fabs(y) <= TWOD_MAX_COORD))
+                throw range_error();
+            p.emplace_back(static_cast<cInt>(x * TWOD_CLIPPER_SCALE),
+                           static_cast<cInt>(y * TWOD_CLIPPER_SCALE));
+        }
+        if (!keep_orientation && !ClipperLib::Orientation(p))
+            std::reverse(p.begin(), p.end());
+        out.push_back(std::move(p));
+    }
+    return out;
+}
+
+Paths to_paths(const twod_region &r)
+{
+    return to_paths(r, r.sanitized != 0);
+}
+
+void to_region(const PolyTree &tree, twod_region *out)
+{
+    twod_clear(out);
+    for (const PolyNode *node = tree.GetFirst(); node; node = node->GetNext()) {
+        Path cleaned;
+        ClipperLib::CleanPolygon(node->Contour, cleaned);
+        if (cleaned.size() < 3)
+            continue;
+        if (!twod_begin_contour(out))
+            throw std::bad_alloc();
+        for (const IntPoint &p : cleaned) {
+            if (out->point_count >= TWOD_MAX_POINTS)
+                throw too_many_points();
+            if (!twod_add_point(out, 1.0 * static_cast<double>(p.X) / TWOD_CLIPPER_SCALE,
+                                1.0 * static_cast<double>(p.Y) / TWOD_CLIPPER_SCALE))
+                throw std::bad_alloc();
+        }
+    }
+    out->sanitized = 1;
+}
+
+void sanitize_paths(const Paths &paths, PolyTree &result)
+{
+    ClipperLib::Clipper clipper;
+    clipper.AddPaths(paths, ClipperLib::ptSubject, true);
+    clipper.Execute(ClipperLib::ctUnion, result, ClipperLib::pftEvenOdd);
+}
+
+/* A child's paths as apply() takes them: sanitized where it is not. */
+Paths child_paths(const twod_region *r)
+{
+    if (!r)
+        return Paths();
+    Paths paths = to_paths(*r);
+    if (!r->sanitized) {
+        PolyTree tree;
+        sanitize_paths(paths, tree);
+        ClipperLib::PolyTreeToPaths(tree, paths);
+    }
+    return paths;
+}
+
+/* The quads of the sum of two closed contours (no union inside). */
+void minkowski_quads(const Path &poly, const Path &path, Paths &quads)
+{
+    size_t poly_count = poly.size(), path_count = path.size();
+    if (poly_count == 0 || path_count == 0)
+        return;
+    Paths moved(path_count);
+    for (size_t i = 0; i < path_count; i++) {
+        moved[i].reserve(poly_count);
+        for (size_t j = 0; j < poly_count; j++)
+            moved[i].emplace_back(path[i].X + poly[j].X, path[i].Y + poly[j].Y);
+    }
+    for (size_t i = 0; i < path_count; i++) {
+        for (size_t j = 0; j < poly_count; j++) {
+            Path quad;
+            quad.reserve(4);
+            quad.push_back(moved[i % path_count][j % poly_count]);
+            quad.push_back(moved[(i + 1) % path_count][j % poly_count]);
+            quad.push_back(moved[(i + 1) % path_count][(j + 1) % poly_count]);
+            quad.push_back(moved[i % path_count][(j + 1) % poly_count]);
+            if (!ClipperLib::Orientation(quad))
+                ClipperLib::ReversePath(quad);
+            quads.push_back(std::move(quad));
+        }
+    }
+}
+
+/* a moved to the first point of each counter-clockwise contour of b. */
+void minkowski_insides(const Paths &a, const Paths &b, Paths &target)
+{
+    for (const Path &b_path : b) {
+        if (b_path.empty() || !ClipperLib::Orientation(b_path))
+            continue;
+        IntPoint delta = b_path[0];
+        for (const Path &path : a) {
+            target.push_back(path);
+            for (IntPoint &p : target.back()) {
+                p.X += delta.X;
+                p.Y += delta.Y;
+            }
+        }
+    }
+}
+
+template <typename F> int guarded(F f)
+{
+    try {
+        f();
+        return TWOD_CLIP_OK;
+    } catch (const std::bad_alloc &) {
+        return TWOD_CLIP_NOMEM;
+    } catch (const too_many_points &) {
+        return TWOD_CLIP_TOO_MANY;
+    } catch (...) {
+        /* range_error, or Clipper's clipperException for coordinates out
+         * of its range */
+        return TWOD_CLIP_RANGE;
+    }
+}
+
+} // namespace
+
+extern "C" int twod_clip_sanitize(twod_region *r)
+{
+    return guarded([&] {
+        PolyTree tree;
+        sanitize_paths(to_paths(*r), tree);
+        to_region(tree, r);
+    });
+}
+
+extern "C" int twod_clip_apply(twod_region *const *children, uint32_t count, twod_op op,
+                               twod_region *out)
+{
+    return guarded([&] {
+        std::vector<Paths> all;
+        all.reserve(count);
+        for (uint32_t i = 0; i < count; i++)
+            all.push_back(child_paths(children[i]));
+        ClipperLib::Clipper clipper;
+        PolyTree result;
+        if (op == TWOD_INTERSECTION && all.size() >= 2) {
+            Paths source = all[0];
+            for (size_t i = 1; i < all.size(); i++) {
+                clipper.AddPaths(source, ClipperLib::ptSubject, true);
+                clipper.AddPaths(all[i], ClipperLib::ptClip, true);
+                clipper.Execute(ClipperLib::ctIntersection, result,
+                                ClipperLib::pftNonZero, ClipperLib::pftNonZero);
+                if (i + 1 != all.size()) {
+                    ClipperLib::PolyTreeToPaths(result, source);
+                    clipper.Clear();
+                }
+            }
+            to_region(result, out);
+            return;
+        }
+        for (size_t i = 0; i < all.size(); i++)
+            clipper.AddPaths(all[i], i == 0 ? ClipperLib::ptSubject : ClipperLib::ptClip,
+                             true);
+        ClipperLib::ClipType type = op == TWOD_UNION        ? ClipperLib::ctUnion
+                                    : op == TWOD_DIFFERENCE ? ClipperLib::ctDifference
+                                                            : ClipperLib::ctIntersection;
+        clipper.Execute(type, result, ClipperLib::pftNonZero, ClipperLib::pftNonZero);
+        to_region(result, out);
+    });
+}
+
+extern "C" int twod_clip_offset(const twod_region *in, double delta, twod_join join,
+                                double arc_tolerance, twod_region *out)
+{
+    return guarded([&] {
+        if (!(std::fabs(delta) <= TWOD_MAX_COORD))
+            throw range_error();
+        ClipperLib::JoinType type = join == TWOD_JOIN_ROUND   ? ClipperLib::jtRound
+                                    : join == TWOD_JOIN_MITER ? ClipperLib::jtMiter
+                                                              : ClipperLib::jtSquare;
+        ClipperLib::ClipperOffset offset(miter_limit, arc_tolerance * TWOD_CLIPPER_SCALE);
+        offset.AddPaths(to_paths(*in), type, ClipperLib::etClosedPolygon);
+        PolyTree result;
+        offset.Execute(result, delta * TWOD_CLIPPER_SCALE);
+        to_region(result, out);
+    });
+}
+
+extern "C" int twod_clip_minkowski(twod_region *const *children, uint32_t count,
+                                   twod_region *out)
+{
+    return guarded([&] {
+        ClipperLib::Clipper clipper;
+        Paths lhs = children[0] ? to_paths(*children[0]) : Paths();
+        for (uint32_t i = 1; i < count; i++) {
+            if (!children[i])
+                continue;
+            Paths terms;
+            Paths rhs = to_paths(*children[i]);
+            for (const Path &rhs_path : rhs)
+                for (const Path &lhs_path : lhs)
+                    minkowski_quads(lhs_path, rhs_path, terms);
+            minkowski_insides(lhs, rhs, terms);
+            minkowski_insides(rhs, lhs, terms);
+            clipper.Clear();
+            clipper.AddPaths(terms, ClipperLib::ptSubject, true);
+            if (i + 1 != count)
+                clipper.Execute(ClipperLib::ctUnion, lhs, ClipperLib::pftNonZero,
+                                ClipperLib::pftNonZero);
+        }
+        PolyTree result;
+        clipper.Execute(ClipperLib::ctUnion, result, ClipperLib::pftNonZero,
+                        ClipperLib::pftNonZero);
+        to_region(result, out);
+    });
+}

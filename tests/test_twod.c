@@ -1,0 +1,477 @@
+/* Tests of the 2D engine (src/twod/) and of OpenSCAD's twisted and scaled
+ * linear_extrude (src/scene/build_extrude_faithful.c): areas of booleans,
+ * offsets, hulls and Minkowski sums against hand-computed values, the
+ * orientation of outlines and holes, OpenSCAD's even-odd polygons, exact
+ * error messages and limits; extrusions are closed meshes whose volume is
+ * the analytic one (frustum, pyramid, wedge, twisted prism); 2D objects in
+ * a 3D model are ignored with a warning, and a model of 2D objects only is
+ * an error. */
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <cmocka.h>
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "csg/prim_mesh.h"
+#include "scene/build_extrude_faithful.h"
+#include "scene/parse.h"
+#include "scene/scene.h"
+#include "twod/twod.h"
+
+/* The region of the children of the first node of text ("group() {...}"),
+ * or the status of the failure with its message in error. */
+static sc_status region_of(const char *text, twod_region *r, char *error, size_t size)
+{
+    parse_tree *tree = NULL;
+    sc_error e;
+    sc_status st = parse_text("m.csg", text, strlen(text), &tree, &e);
+    assert_int_equal(st, SC_OK);
+    build_ctx c = {"m.csg", NULL, &e, 1};
+    twod_init(r);
+    st = twod_from_children(&c, tree->first, r);
+    if (st != SC_OK)
+        sc_error_format(&e, error, size);
+    parse_tree_free(tree);
+    return st;
+}
+
+static void region(const char *text, twod_region *r)
+{
+    char message[1024];
+    if (region_of(text, r, message, sizeof message) != SC_OK)
+        fail_msg("unexpected error: %s", message);
+}
+
+static void check_error(const char *text, sc_status status, const char *expected)
+{
+    twod_region r;
+    char message[1024];
+    assert_int_equal(region_of(text, &r, message, sizeof message), status);
+    assert_string_equal(message, expected);
+    twod_free(&r);
+}
+
+/* Area of text's region, and how many contours run each way. */
+static double area_of(const char *text, int *outers, int *holes)
+{
+    twod_region r;
+    region(text, &r);
+    double a = twod_area(&r);
+    *outers = *holes = 0;
+    for (uint32_t k = 0; k < r.contour_count; k++) {
+        if (twod_contour_area(&r, k) > 0)
+            (*outers)++;
+        else
+            (*holes)++;
+    }
+    twod_free(&r);
+    return a;
+}
+
+/* Clipper's grid is 2^-16: every point of a clipped region is within
+ * 2^-16 of the exact one, which moves an area of perimeter p by at most
+ * p 2^-16. */
+#define GRID (1.0 / 65536.0)
+#define PI 3.14159265358979323846
+
+static void test_booleans(void **state)
+{
+    (void)state;
+    int outers, holes;
+    /* two 2x2 squares overlapping in a 1x1 square */
+    assert_true(fabs(area_of("group() { square(2); multmatrix([[1, 0, 0, 1], [0, 1, 0, "
+                             "1], [0, 0, 1, 0], [0, 0, 0, 1]]) { square(2); } }",
+                             &outers, &holes) -
+                     7) < 12 * GRID);
+    assert_int_equal(outers, 1);
+    assert_int_equal(holes, 0);
+    /* a 4x4 square minus a diamond of radius 1 ($fn = 4): a hole, wound
+     * clockwise */
+    assert_true(fabs(area_of("group() { difference() { square(4, center = true); "
+                             "circle(r = 1, $fn = 4); } }",
+                             &outers, &holes) -
+                     14) < 24 * GRID);
+    assert_int_equal(outers, 1);
+    assert_int_equal(holes, 1);
+    /* intersection of three squares: [1, 2] x [1, 2] */
+    assert_true(
+        fabs(area_of("group() { intersection() { square(2); square(3); "
+                     "multmatrix([[1, 0, 0, 1], [0, 1, 0, 1], [0, 0, 1, 0], [0, 0, "
+                     "0, 1]]) { square(5); } } }",
+                     &outers, &holes) -
+             1) < 4 * GRID);
+    /* disjoint union: two outers */
+    assert_true(fabs(area_of("group() { square(1); multmatrix([[1, 0, 0, 3], [0, 1, 0, "
+                             "0], [0, 0, 1, 0], [0, 0, 0, 1]]) { square(1); } }",
+                             &outers, &holes) -
+                     2) < 8 * GRID);
+    assert_int_equal(outers, 2);
+    /* a mirrored square stays counter-clockwise */
+    assert_true(fabs(area_of("group() { multmatrix([[-1, 0, 0, 0], [0, 1, 0, 0], [0, 0, "
+                             "1, 0], [0, 0, 0, 1]]) { square([3, 2]); } }",
+                             &outers, &holes) -
+                     6) < 10 * GRID);
+    assert_int_equal(holes, 0);
+    /* a singular matrix empties its subtree; '%' and '*' children are out */
+    assert_true(area_of("group() { multmatrix([[1, 0, 0, 0], [0, 0, 0, 0], [0, 0, 1, "
+                        "0], [0, 0, 0, 1]]) { square(3); } %square(9); *square(9); }",
+                        &outers, &holes) == 0);
+    /* a single square is not clipped: exact */
+    twod_region r;
+    region("group() { square([0.3, 0.7], center = true); }", &r);
+    assert_int_equal(r.point_count, 4);
+    assert_true(r.xy[0] == -0.15 && r.xy[1] == -0.35);
+    twod_free(&r);
+}
+
+static void test_polygons(void **state)
+{
+    (void)state;
+    int outers, holes;
+    /* a 10x10 outline with a 4x4 path inside it: a hole (even-odd) */
+    assert_true(
+        fabs(area_of(
+                 "group() { polygon(points = [[0, 0], [10, 0], [10, 10], [0, 10], [3, "
+                 "3], [7, 3], [7, 7], [3, 7]], paths = [[0, 1, 2, 3], [4, 5, 6, 7]]); }",
+                 &outers, &holes) -
+             84) < 56 * GRID);
+    assert_int_equal(outers, 1);
+    assert_int_equal(holes, 1);
+    /* the hole wound the same way as the outline is still a hole */
+    assert_true(
+        fabs(area_of(
+                 "group() { polygon(points = [[0, 0], [10, 0], [10, 10], [0, 10], [3, "
+                 "3], [3, 7], [7, 7], [7, 3]], paths = [[0, 1, 2, 3], [4, 5, 6, 7]]); }",
+                 &outers, &holes) -
+             84) < 56 * GRID);
+    /* two paths overlapping by 2x4: even-odd leaves the overlap out */
+    assert_true(
+        fabs(
+            area_of("group() { polygon(points = [[0, 0], [4, 0], [4, 4], [0, 4], [2, 0], "
+                    "[6, 0], [6, 4], [2, 4]], paths = [[0, 1, 2, 3], [4, 5, 6, 7]]); }",
+                    &outers, &holes) -
+            16) < 40 * GRID);
+    /* a clockwise polygon is turned counter-clockwise; fewer than 3
+     * points is nothing */
+    assert_true(fabs(area_of("group() { polygon(points = [[0, 0], [0, 2], [2, 0]]); }",
+                             &outers, &holes) -
+                     2) < 8 * GRID);
+    assert_int_equal(outers, 1);
+    assert_true(
+        area_of("group() { polygon(points = [[0, 0], [0, 2]]); }", &outers, &holes) == 0);
+}
+
+static void test_offset_hull_minkowski(void **state)
+{
+    (void)state;
+    int outers, holes;
+    /* delta: the square grows by 1 on each side, mitred */
+    assert_true(
+        fabs(area_of("group() { offset(delta = 1) { square(2); } }", &outers, &holes) -
+             16) < 16 * GRID);
+    /* chamfer: each corner cut at distance 1 from the square's corner,
+     * removing (sqrt 2 - 1)^2 of the mitred corner: 4 + 8 sqrt 2 */
+    assert_true(
+        fabs(area_of("group() { offset(delta = 1, chamfer = true) { square(2); } }",
+                     &outers, &holes) -
+             (4 + 8 * sqrt(2))) < 16 * GRID);
+    /* r: 4 + 8 + pi, the arcs inscribed within the arc tolerance
+     * 1 - cos(180 / 360 degrees), so at most 2 pi (1 - cos 0.5 deg) short */
+    double a =
+        area_of("group() { offset(r = 1, $fn = 360) { square(2); } }", &outers, &holes);
+    double sag = 2 * PI * (1 - cos(0.5 * PI / 180));
+    assert_true(a <= 12 + PI + 16 * GRID);
+    assert_true(a >= 12 + PI - sag - 16 * GRID);
+    /* a negative r shrinks: 4x4 by -1 is 2x2 (convex corners stay sharp) */
+    assert_true(
+        fabs(area_of("group() { offset(r = -1) { square(4); } }", &outers, &holes) - 4) <
+        16 * GRID);
+    /* hull of two diamonds 4 apart: a 4x2 rectangle and two triangles */
+    twod_region r;
+    region(
+        "group() { hull() { circle(r = 1, $fn = 4); multmatrix([[1, 0, 0, 4], [0, 1, 0, "
+        "0], [0, 0, 1, 0], [0, 0, 0, 1]]) { circle(r = 1, $fn = 4); } } }",
+        &r);
+    assert_int_equal(r.contour_count, 1);
+    assert_int_equal(r.point_count, 6);
+    assert_true(fabs(twod_area(&r) - 10) < 1e-12);
+    twod_free(&r);
+    /* square + diamond: the square, four 2x1 sides and four quarter
+     * diamonds */
+    assert_true(fabs(area_of("group() { minkowski() { square(2); circle(r = 1, $fn = 4); "
+                             "} }",
+                             &outers, &holes) -
+                     14) < 16 * GRID);
+    assert_int_equal(outers, 1);
+    /* OpenSCAD: an empty child after the first is skipped */
+    assert_true(fabs(area_of("group() { minkowski() { square(2); square(0); circle(r = "
+                             "1, $fn = 4); } }",
+                             &outers, &holes) -
+                     14) < 16 * GRID);
+}
+
+static void test_errors(void **state)
+{
+    (void)state;
+    check_error("group() { circle(r = \"a\"); }", SC_ERR_SEMANTIC,
+                "m.csg:1:22: error: wrong type for argument 'r' of 'circle' (expected a "
+                "number)");
+    check_error("group() {\n  square(size = [1, 2, 3]);\n}", SC_ERR_SEMANTIC,
+                "m.csg:2:17: error: wrong type for argument 'size' of 'square' (expected "
+                "a number or [x, y])");
+    check_error("group() { polygon(points = [[0, 0], [1, 0], [0, 1]], paths = [[0, 1, "
+                "3]]); }",
+                SC_ERR_SEMANTIC,
+                "m.csg:1:70: error: polygon path 0: point index is not one of the 3 "
+                "points");
+    check_error("group() { offset(r = inf) { square(1); } }", SC_ERR_SEMANTIC,
+                "m.csg:1:11: error: offset: r must be finite");
+    check_error("group() { offset(delta = 1, chamfer = 1) { square(1); } }",
+                SC_ERR_SEMANTIC,
+                "m.csg:1:39: error: wrong type for argument 'chamfer' of 'offset' "
+                "(expected true or false)");
+    check_error("group() { offset(r = 1e6, $fa = 0.01, $fs = 0.01) { square(1); } }",
+                SC_ERR_LIMIT,
+                "m.csg:1:11: error: offset: $fn, $fa and $fs of radius 1e+06 give too "
+                "many fragments (limit is 4096)");
+    check_error("group() { difference() { square(1); cube(1); } }", SC_ERR_SEMANTIC,
+                "m.csg:1:37: error: 'cube' is a 3D object inside a 2D operation (group)");
+    check_error("group() { text(text = \"a\"); }", SC_ERR_UNSUPPORTED,
+                "m.csg:1:11: error: 'text' is not supported yet");
+    check_error("group() { projection() { cube(1); } }", SC_ERR_UNSUPPORTED,
+                "m.csg:1:11: error: 'projection' inside group is not supported yet");
+    check_error("group() { square(1e13); }", SC_ERR_LIMIT,
+                "m.csg:1:11: error: square: coordinates out of range (limit is 1e+12)");
+    check_error("group() { multmatrix([[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0]]) { "
+                "square(1); } }",
+                SC_ERR_SEMANTIC,
+                "m.csg:1:11: error: multmatrix: matrix must be 4x4 numbers");
+    /* the depth guard: 1001 nested groups under the outer one */
+    size_t depth = 1001, len = 0;
+    char *text = malloc(depth * 12 + 64);
+    assert_non_null(text);
+    len += (size_t)sprintf(text + len, "group() {");
+    for (size_t i = 0; i < depth; i++)
+        len += (size_t)sprintf(text + len, "group(){");
+    len += (size_t)sprintf(text + len, "square(1);");
+    for (size_t i = 0; i <= depth; i++)
+        len += (size_t)sprintf(text + len, "}");
+    check_error(text, SC_ERR_LIMIT,
+                "m.csg:1:8002: error: too many nested 2D nodes in group (limit is 1000)");
+    free(text);
+}
+
+/* ---- linear_extrude ---- */
+
+/* The mesh of the extrusion in text (one linear_extrude node). */
+static double extrude_volume(const char *text, int faithful, uint32_t *triangles)
+{
+    parse_tree *tree = NULL;
+    sc_error e;
+    assert_int_equal(parse_text("m.csg", text, strlen(text), &tree, &e), SC_OK);
+    csg_builder *b = csg_builder_new();
+    assert_non_null(b);
+    build_ctx c = {"m.csg", b, &e, faithful};
+    prim p;
+    const char *empty = NULL;
+    sc_status st = build_linear_extrude_faithful(&c, tree->first, 1, &p, &empty);
+    if (st != SC_OK) {
+        char buf[1024];
+        fail_msg("unexpected error: %s", sc_error_format(&e, buf, sizeof buf));
+    }
+    assert_null(empty);
+    assert_int_equal(p.kind, PRIM_MESH);
+    const prim_mesh *m = p.u.mesh.mesh;
+    double volume = 0;
+    for (uint32_t i = 0; i < m->tri_count; i++) {
+        vec3 a = m->v[3 * i], bb = m->v[3 * i + 1], cc = m->v[3 * i + 2];
+        volume += v3_dot(a, v3_cross(bb, cc)) / 6;
+    }
+    *triangles = m->tri_count;
+    csg_builder_free(b);
+    parse_tree_free(tree);
+    return volume;
+}
+
+static void test_extrude_volumes(void **state)
+{
+    (void)state;
+    uint32_t tris;
+    /* scale 0.5: a frustum of a 2x2 square, h/3 (A1 + A2 + sqrt(A1 A2));
+     * one slice, planar trapezoid sides: exact */
+    double v = extrude_volume("linear_extrude(height = 10, scale = 0.5) { square(2, "
+                              "center = true); }",
+                              1, &tris);
+    assert_true(fabs(v - 10.0 / 3 * (4 + 1 + 2)) < 1e-12 * 70);
+    assert_int_equal(tris, 4 * 2 + 2 * 2); /* sides, two caps as fans */
+    /* scale 0: a pyramid, A h / 3, the top merged into one apex */
+    v = extrude_volume("linear_extrude(height = 6, scale = 0) { square(3); }", 1, &tris);
+    assert_true(fabs(v - 9 * 6 / 3.0) < 1e-12 * 18);
+    /* scale [1, 0]: a wedge whose top is a segment; the section at
+     * height t h is 2 x 2 (1 - t): 2 h */
+    v = extrude_volume("linear_extrude(height = 5, scale = [1, 0]) { square(2, center = "
+                       "true); }",
+                       1, &tris);
+    assert_true(fabs(v - 10) < 1e-9);
+    /* a circle onto a segment: top points fall on each other along the
+     * segment, the mesh must still close (build_mesh_prim checks) */
+    v = extrude_volume("linear_extrude(height = 4, scale = [1, 0], $fn = 7) { circle(r = "
+                       "2, $fn = 7); }",
+                       1, &tris);
+    assert_true(v > 0);
+    /* twisted prism: each section is the rotated square, so the volume is
+     * A h; the mesh's sides are chords between slices 0.25 degrees apart,
+     * cutting in by at most r (1 - cos(0.125 deg)) = 3.4e-6 over the
+     * perimeter 8: |dV| <= 8 * 3.4e-6 * h */
+    v = extrude_volume(
+        "linear_extrude(height = 10, twist = 90, slices = 360) { square(2, "
+        "center = true); }",
+        1, &tris);
+    /* and to first order in the slice angle more: each side quad is a
+     * twisted quadrilateral split along its shorter diagonal, which bulges
+     * out of the hyperbolic paraboloid through its corners by
+     * d dh |e|^2 / 12 (d the slice's angle, dh its height, e the edge);
+     * over the 4 edges of length 2 and n slices: 16 (pi / 2) h / (12 n).
+     * The split along the longer diagonal would cut in by as much. What
+     * is left is second order: the paraboloid against the true twisted
+     * surface; it must be well under 1% of the first-order term here and
+     * shrink 4 times when the slices double. */
+    double first = 16 * (PI / 2) * 10 / (12 * 360.0);
+    double rest360 = v - 40 - first;
+    assert_true(fabs(rest360) < 0.01 * first);
+    v = extrude_volume(
+        "linear_extrude(height = 10, twist = 90, slices = 720) { square(2, "
+        "center = true); }",
+        1, &tris);
+    double rest720 = v - 40 - first / 2;
+    assert_true(fabs(rest720) < fabs(rest360) / 3);
+    /* a hole: a 4x4 square minus a 2x2 one, scaled 2 at the top: the
+     * frustum of the outer minus that of the hole: (7/3) h (16 - 4) */
+    v = extrude_volume("linear_extrude(height = 3, scale = 2) { difference() { square(4, "
+                       "center = true); square(2, center = true); } }",
+                       1, &tris);
+    assert_true(fabs(v - 3.0 / 3 * (12 + 48 + sqrt(12.0 * 48))) < 1e-9);
+}
+
+/* OpenSCAD's slice counts: $fn per 360 degrees of twist, at least one
+ * slice per 120 degrees; $fa and $fs otherwise; $fn slices for a
+ * non-uniform scale. Each slice of a square adds 4 quads, 8 triangles. */
+static void test_extrude_slices(void **state)
+{
+    (void)state;
+    uint32_t tris;
+    extrude_volume(
+        "linear_extrude(height = 10, twist = 90, $fn = 20) { square(2, center = "
+        "true); }",
+        1, &tris);
+    assert_int_equal(tris, 5 * 8 + 4); /* ceil(90 / 360 * 20) = 5 */
+    extrude_volume(
+        "linear_extrude(height = 1, twist = 360, $fn = 1) { square(2, center = "
+        "true); }",
+        1, &tris);
+    assert_int_equal(tris, 3 * 8 + 4); /* at least 360 / 120 */
+    /* $fa = 12: 90 / 12 -> 8; the helix of radius sqrt 2 over h = 10:
+     * 10.15 long / $fs 2 -> 6: the fewer */
+    extrude_volume(
+        "linear_extrude(height = 10, twist = 90, $fn = 0, $fa = 12, $fs = 2) { "
+        "square(2, center = true); }",
+        1, &tris);
+    assert_int_equal(tris, 6 * 8 + 4);
+    extrude_volume("linear_extrude(height = 10, scale = [2, 1], $fn = 4) { square(2, "
+                   "center = true); }",
+                   1, &tris);
+    assert_int_equal(tris, 4 * 8 + 4);
+    extrude_volume("linear_extrude(height = 10, scale = 3, $fn = 4) { square(2, center = "
+                   "true); }",
+                   1, &tris);
+    assert_int_equal(tris, 1 * 8 + 4); /* uniform scale: one slice */
+}
+
+static void check_load_error(const char *text, sc_status status, const char *expected)
+{
+    sc_scene *s = (sc_scene *)1;
+    sc_error e;
+    assert_int_equal(sc_scene_load_string("m.csg", text, strlen(text), NULL, &s, &e),
+                     status);
+    assert_null(s);
+    char buf[1024];
+    assert_string_equal(sc_error_format(&e, buf, sizeof buf), expected);
+}
+
+static void test_extrude_errors(void **state)
+{
+    (void)state;
+    check_load_error("linear_extrude(height = 1, scale = \"a\") { square(); }",
+                     SC_ERR_SEMANTIC,
+                     "m.csg:1:36: error: wrong type for argument 'scale' of "
+                     "'linear_extrude' (expected a number or [x, y])");
+    check_load_error("linear_extrude(height = 1, scale = [1, inf]) { square(); }",
+                     SC_ERR_SEMANTIC,
+                     "m.csg:1:36: error: linear_extrude: scale must be finite");
+    check_load_error("linear_extrude(height = 1, twist = inf) { square(); }",
+                     SC_ERR_SEMANTIC,
+                     "m.csg:1:36: error: linear_extrude: twist must be finite");
+    check_load_error(
+        "linear_extrude(height = 1, twist = 1, slices = 1e7) { square(); }", SC_ERR_LIMIT,
+        "m.csg:1:48: error: linear_extrude: 1e+07 slices are too many (limit "
+        "is 1000000)");
+    check_load_error(
+        "linear_extrude(height = 1, twist = 1, slices = 600000) { circle(r = "
+        "1, $fn = 8); }",
+        SC_ERR_LIMIT,
+        "m.csg:1:1: error: linear_extrude: 600000 slices of 8 points are too "
+        "many (limit is 2000000 side faces)");
+    check_load_error("linear_extrude(height = 1, twist = 10) {\n  text(text = \"a\");\n}",
+                     SC_ERR_UNSUPPORTED, "m.csg:2:3: error: 'text' is not supported yet");
+    check_load_error("linear_extrude(height = 1, twist = 10) {\n  sphere(1);\n}",
+                     SC_ERR_SEMANTIC,
+                     "m.csg:2:3: error: 'sphere' is a 3D object inside a 2D operation "
+                     "(linear_extrude)");
+}
+
+/* 2D shapes among 3D objects: a warning each, the empty solid; only 2D
+ * shapes: an error at the first. */
+static void test_2d_in_3d(void **state)
+{
+    (void)state;
+    const char *text = "union() {\n  cube(1);\n  circle(r = 5);\n}";
+    sc_scene *s = NULL;
+    sc_error e;
+    assert_int_equal(sc_scene_load_string("m.csg", text, strlen(text), NULL, &s, &e),
+                     SC_OK);
+    char buf[1024];
+    assert_int_equal(sc_scene_warning_count(s), 1);
+    assert_string_equal(
+        sc_error_format(sc_scene_warning(s, 0), buf, sizeof buf),
+        "m.csg:3:3: error: 2D object 'circle' in a 3D model is ignored (as "
+        "in OpenSCAD)");
+    sc_scene_release(s);
+    check_load_error("group() {\n  square(2);\n  offset(r = 1) { circle(r = 1); }\n}",
+                     SC_ERR_SEMANTIC,
+                     "m.csg:2:3: error: the model has only 2D objects, which have no 3D "
+                     "output (extrude them with linear_extrude)");
+    /* still checked */
+    check_load_error("cube(1);\nsquare(size = \"x\");", SC_ERR_SEMANTIC,
+                     "m.csg:2:15: error: wrong type for argument 'size' of 'square' "
+                     "(expected a number or [x, y])");
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_booleans),
+        cmocka_unit_test(test_polygons),
+        cmocka_unit_test(test_offset_hull_minkowski),
+        cmocka_unit_test(test_errors),
+        cmocka_unit_test(test_extrude_volumes),
+        cmocka_unit_test(test_extrude_slices),
+        cmocka_unit_test(test_extrude_errors),
+        cmocka_unit_test(test_2d_in_3d),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
