@@ -1,5 +1,8 @@
-/* linear_extrude(height, center) of 2D children, without twist or scale,
- * built as a prism mesh (build_mesh.c, prim_mesh.c).
+/* linear_extrude(height, center) of 2D children. In default (exact) mode,
+ * without twist or scale and with only the 2D nodes build_region.c reads,
+ * it is an exact extrusion leaf (build_region.c, prim_extrusion.c); in
+ * faithful mode, and for everything else, linear_extrude_fallback below
+ * builds it as a prism mesh (build_mesh.c, prim_mesh.c):
  *
  * The 2D children are gathered as closed paths in the plane: square (exact),
  * polygon with or without paths (exact), circle as the polygon OpenSCAD
@@ -29,6 +32,7 @@
 #include "base/error.h"
 #include "base/grow.h"
 #include "scene/build_mesh.h"
+#include "scene/build_region.h"
 #include "scene/faithful.h"
 
 enum { BUILD_EXTRUDE_MAX_DEPTH = 1000 };
@@ -296,8 +300,11 @@ static sc_status gather(const build_ctx *c, const parse_node *n, const affine2 *
     return SC_OK;
 }
 
-sc_status build_linear_extrude(const build_ctx *c, const parse_node *n, int emit,
-                               prim *out, const char **empty)
+/* The fallback: every linear_extrude the exact path (build_region.c) does
+ * not take, and every one in faithful mode, is built here, as a prism
+ * mesh of OpenSCAD's polygons. */
+static sc_status linear_extrude_fallback(const build_ctx *c, const parse_node *n,
+                                         int emit, prim *out, const char **empty)
 {
     double height = 100, twist = 0;
     sc_status st;
@@ -386,4 +393,12 @@ sc_status build_linear_extrude(const build_ctx *c, const parse_node *n, int emit
     free(p.start);
     free(p.hole);
     return st;
+}
+
+sc_status build_linear_extrude(const build_ctx *c, const parse_node *n, int emit,
+                               prim *out, const char **empty)
+{
+    if (!c->faithful && build_region_covers(n))
+        return build_region_extrude(c, n, emit, out, empty);
+    return linear_extrude_fallback(c, n, emit, out, empty);
 }

@@ -28,9 +28,10 @@ sc_status build_mesh_prim(const build_ctx *c, const sc_location *loc, const char
 sc_status build_import(const build_ctx *c, const parse_node *n, int emit, prim *out,
                        const char **empty);
 
-/* linear_extrude(height, center) of square, circle and polygon children
- * (build_extrude.c): a prism mesh; twist, scale and other 2D nodes are
- * SC_ERR_UNSUPPORTED. */
+/* linear_extrude(height, center) (build_extrude.c): exact in default mode
+ * without twist or scale (build_region.h), else a prism mesh of square,
+ * circle and polygon children; twist, scale and other 2D nodes are
+ * SC_ERR_UNSUPPORTED there. */
 sc_status build_linear_extrude(const build_ctx *c, const parse_node *n, int emit,
                                prim *out, const char **empty);
 
