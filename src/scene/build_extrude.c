@@ -398,7 +398,14 @@ static sc_status linear_extrude_fallback(const build_ctx *c, const parse_node *n
 sc_status build_linear_extrude(const build_ctx *c, const parse_node *n, int emit,
                                prim *out, const char **empty)
 {
-    if (!c->faithful && build_region_covers(n))
+    const parse_node *miss = NULL;
+    if (!c->faithful && build_region_covers(n, &miss))
         return build_region_extrude(c, n, emit, out, empty);
-    return linear_extrude_fallback(c, n, emit, out, empty);
+    sc_status st = linear_extrude_fallback(c, n, emit, out, empty);
+    /* Where the fallback lacks something the exact path has (a 2D
+     * difference), name the node neither path can build. */
+    if (st == SC_ERR_UNSUPPORTED && miss)
+        return err_set(c->error, SC_ERR_UNSUPPORTED, &miss->loc,
+                       "'%s' inside linear_extrude is not supported yet", miss->name);
+    return st;
 }

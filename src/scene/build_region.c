@@ -65,23 +65,31 @@ static const char *const op_names[] = {"group",        "union",      "render",
                                        "color",        "multmatrix", "difference",
                                        "intersection", NULL};
 
-static int covers(const parse_node *n, int depth)
+/* The first node below n (n included) the walk cannot read, or NULL. */
+static const parse_node *uncovered(const parse_node *n, int depth)
 {
     if (depth > BUILD_REGION_MAX_DEPTH ||
         (n->modifiers & (PARSE_MOD_DISABLE | PARSE_MOD_BACKGROUND)))
-        return 1; /* the walk reports the depth; '%' and '*' are not built */
+        return NULL; /* the walk reports the depth; '%' and '*' are not built */
     if (name_is(n, leaf_names))
-        return 1;
+        return NULL;
     if (!name_is(n, op_names))
-        return 0;
-    for (const parse_node *k = n->first_child; k; k = k->next)
-        if (!covers(k, depth + 1))
-            return 0;
-    return 1;
+        return n;
+    for (const parse_node *k = n->first_child; k; k = k->next) {
+        const parse_node *miss = uncovered(k, depth + 1);
+        if (miss)
+            return miss;
+    }
+    return NULL;
 }
 
-int build_region_covers(const parse_node *n)
+int build_region_covers(const parse_node *n, const parse_node **miss)
 {
+    *miss = NULL;
+    for (const parse_node *k = n->first_child; k && !*miss; k = k->next)
+        *miss = uncovered(k, 1);
+    if (*miss)
+        return 0;
     const parse_value *twist = build_arg(n, "twist", -1);
     if (twist && !(twist->kind == PARSE_NUMBER && twist->u.number == 0))
         return 0;
@@ -96,9 +104,6 @@ int build_region_covers(const parse_node *n)
         if (!one)
             return 0;
     }
-    for (const parse_node *k = n->first_child; k; k = k->next)
-        if (!covers(k, 1))
-            return 0;
     return 1;
 }
 

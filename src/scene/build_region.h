@@ -11,12 +11,13 @@
 /* Nesting of 2D nodes inside one linear_extrude (as the prism path's). */
 #define BUILD_REGION_MAX_DEPTH 1000
 
-/* 1 when the exact path takes this linear_extrude: twist absent or 0,
- * scale absent, 1 or [1, 1], and every 2D node below one of circle,
- * square, polygon, group, union, render, color, multmatrix, difference,
- * intersection ('%' and '*' subtrees are not looked at). Arguments are
- * not checked here. */
-int build_region_covers(const parse_node *n);
+/* 1 when the exact path takes this linear_extrude: every 2D node below one
+ * of circle, square, polygon, group, union, render, color, multmatrix,
+ * difference, intersection ('%' and '*' subtrees are not looked at), twist
+ * absent or 0, scale absent, 1 or [1, 1]. Otherwise 0, with *miss the
+ * first node (in file order) the exact path cannot read, or NULL when
+ * twist or scale is the reason. Arguments are not checked here. */
+int build_region_covers(const parse_node *n, const parse_node **miss);
 
 /* Builds the exact extrusion of n: height (default 100) and center are
  * read and checked, and the 2D subtree is walked with exact positions for
