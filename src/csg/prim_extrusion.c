@@ -31,6 +31,8 @@
  *            same number. The crossing is the edge's point at
  *            lambda = s(a) / (s(a) - s(b)), projected on the line; the
  *            crossings sorted by t, pairs of them are the spans (even-odd).
+ *            Edges are boxed 16 at a time (padded like the leaves' boxes,
+ *            below): a box the line misses skips its edges.
  *            normal  the edge's left normal (-(b - a)_y, (b - a)_x), or its
  *            opposite: the side the ray comes from at an entry, the side
  *            it goes to at an exit.
@@ -74,7 +76,8 @@ enum {
     PART_TOP = 1,
     PART_WALL = 2,
     PART_RESIDUES = 32767, /* walls per side that parts can tell apart */
-    LOCAL_SPANS = 64       /* the local sweep buffer (see above) */
+    LOCAL_SPANS = 64,      /* the local sweep buffer (see above) */
+    CHUNK = PRIM_EXTRUSION_CHUNK
 };
 
 /* ---- describing a region ---- */
@@ -267,7 +270,10 @@ const prim_extrusion *prim_extrusion_create(csg_builder *b, const prim_region *r
                                              sizeof *edges);
     prim_region_ellipse *ellipses = csg_builder_alloc(
         b, (size_t)(r->ellipse_count ? r->ellipse_count : 1) * sizeof *ellipses);
-    if (!e || !nodes || !edges || !ellipses)
+    uint32_t chunks = (r->edge_count + CHUNK - 1) / CHUNK;
+    double *chunk_boxes =
+        csg_builder_alloc(b, (size_t)(chunks ? chunks : 1) * 4 * sizeof *chunk_boxes);
+    if (!e || !nodes || !edges || !ellipses || !chunk_boxes)
         return NULL;
     memcpy(nodes, r->nodes, (size_t)r->node_count * sizeof *nodes);
     /* Leaf boxes are padded by 1e-9 of the region's size, far more than the
@@ -285,12 +291,31 @@ const prim_extrusion *prim_extrusion_create(csg_builder *b, const prim_region *r
     }
     if (r->edge_count)
         memcpy(edges, r->edges, (size_t)r->edge_count * 4 * sizeof *edges);
+    for (uint32_t c = 0; c < chunks; c++) {
+        double *cb = &chunk_boxes[4 * c];
+        cb[0] = cb[1] = INFINITY;
+        cb[2] = cb[3] = -INFINITY;
+        uint32_t end =
+            r->edge_count - c * CHUNK < CHUNK ? r->edge_count : (c + 1) * CHUNK;
+        for (uint32_t i = c * CHUNK; i < end; i++) {
+            const double *g = &edges[4 * i];
+            cb[0] = fmin(cb[0], fmin(g[0], g[2]));
+            cb[1] = fmin(cb[1], fmin(g[1], g[3]));
+            cb[2] = fmax(cb[2], fmax(g[0], g[2]));
+            cb[3] = fmax(cb[3], fmax(g[1], g[3]));
+        }
+        cb[0] -= pad;
+        cb[1] -= pad;
+        cb[2] += pad;
+        cb[3] += pad;
+    }
     if (r->ellipse_count)
         memcpy(ellipses, r->ellipses, (size_t)r->ellipse_count * sizeof *ellipses);
     e->nodes = nodes;
     e->node_count = r->node_count;
     e->edges = edges;
     e->edge_count = r->edge_count;
+    e->chunk_boxes = chunk_boxes;
     e->ellipses = ellipses;
     e->ellipse_count = r->ellipse_count;
     e->max_stack = max_stack;
@@ -466,8 +491,14 @@ static void sort_ends(span *v, uint32_t n)
 static uint32_t polygon_spans(const prim_extrusion *e, const prim_region_node *n,
                               line2 *l, span *out)
 {
-    uint32_t room = 2 * (n->count / 2), k = 0;
-    for (uint32_t i = n->index; i < n->index + n->count; i++) {
+    uint32_t room = 2 * (n->count / 2), k = 0, end = n->index + n->count;
+    for (uint32_t i = n->index; i < end; i++) {
+        if ((i == n->index || i % CHUNK == 0) &&
+            misses_box(l, &e->chunk_boxes[4 * (i / CHUNK)])) {
+            /* none of this chunk's edges meets the line: skip to the next */
+            i = (i / CHUNK + 1) * CHUNK - 1;
+            continue;
+        }
         const double *g = &e->edges[4 * i];
         double sa = diff_of_products(l->dx, g[1] - l->oy, l->dy, g[0] - l->ox);
         double sb = diff_of_products(l->dx, g[3] - l->oy, l->dy, g[2] - l->ox);

@@ -52,6 +52,9 @@ typedef struct prim_region {
  * builder's nesting limit keeps well below it). */
 #define PRIM_REGION_MAX_STACK 2048
 
+/* Edges per box of the one-level hierarchy over a polygon set's edges. */
+#define PRIM_EXTRUSION_CHUNK 16
+
 /* The most polygon edges one region may have. */
 #define PRIM_EXTRUSION_MAX_EDGES (1 << 26)
 
@@ -74,6 +77,7 @@ typedef struct prim_extrusion {
     uint32_t node_count;
     const double *edges; /* surface g < edge_count is edge g */
     uint32_t edge_count;
+    const double *chunk_boxes;           /* 2D box of edges 16 c .. 16 c + 15, padded */
     const prim_region_ellipse *ellipses; /* surface edge_count + k is ellipse k */
     uint32_t ellipse_count;
     uint32_t max_stack;  /* operands waiting at once */
