@@ -273,9 +273,13 @@ static sc_status read_polygon(walker *w, const parse_node *n, const affine2 *m,
         }
     }
     w->start[count] = at;
-    return prim_region_add_polygon(&w->region, w->xy, w->start, count, pushed)
-               ? SC_OK
-               : nomem(w, n);
+    if (!prim_region_add_polygon(&w->region, w->xy, w->start, count, pushed))
+        return nomem(w, n);
+    if (w->region.edge_count > PRIM_EXTRUSION_MAX_EDGES)
+        return err_set(c->error, SC_ERR_LIMIT, &n->loc,
+                       "linear_extrude has too many polygon edges (limit is %d)",
+                       PRIM_EXTRUSION_MAX_EDGES);
+    return SC_OK;
 }
 
 /* multmatrix's xy part after m: inner = m . M_xy. */
@@ -409,10 +413,6 @@ sc_status build_region_extrude(const build_ctx *c, const parse_node *n, int emit
         double z0 = center ? -height / 2 : 0, z1 = z0 + height;
         if (!(height > 0 && isfinite(height)) || !pushed || !(z0 < z1)) {
             *empty = "linear_extrude without height or area is empty";
-        } else if (w.region.edge_count > PRIM_EXTRUSION_MAX_EDGES) {
-            st = err_set(c->error, SC_ERR_LIMIT, &n->loc,
-                         "linear_extrude has too many polygon edges (limit is %d)",
-                         PRIM_EXTRUSION_MAX_EDGES);
         } else {
             const prim_extrusion *e = prim_extrusion_create(c->csg, &w.region, z0, z1);
             if (!e) {
