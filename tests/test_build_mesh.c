@@ -18,11 +18,14 @@
 #include "scene/build.h"
 #include "scene/scene.h"
 
-static sc_scene *load(const char *name, const char *text)
+static sc_scene *load_with(const char *name, const char *text, int faithful)
 {
     sc_scene *s = NULL;
     sc_error e;
-    sc_status st = sc_scene_load_string(name, text, strlen(text), NULL, &s, &e);
+    sc_load_options o;
+    sc_load_options_init(&o);
+    o.faithful = faithful;
+    sc_status st = sc_scene_load_string(name, text, strlen(text), &o, &s, &e);
     if (st != SC_OK) {
         char buf[1024];
         fail_msg("unexpected error: %s", sc_error_format(&e, buf, sizeof buf));
@@ -30,16 +33,36 @@ static sc_scene *load(const char *name, const char *text)
     return s;
 }
 
-static void check_error(const char *name, const char *text, sc_status status,
-                        const char *expected)
+static sc_scene *load(const char *name, const char *text)
+{
+    return load_with(name, text, 0);
+}
+
+/* The prism path of linear_extrude is faithful mode's (exact mode has its
+ * own, tested in test_prim_extrusion.c). */
+static sc_scene *load_faithful(const char *name, const char *text)
+{
+    return load_with(name, text, 1);
+}
+
+static void check_error_with(const char *name, const char *text, sc_status status,
+                             const char *expected, int faithful)
 {
     sc_scene *s = (sc_scene *)1;
     sc_error e;
-    assert_int_equal(sc_scene_load_string(name, text, strlen(text), NULL, &s, &e),
-                     status);
+    sc_load_options o;
+    sc_load_options_init(&o);
+    o.faithful = faithful;
+    assert_int_equal(sc_scene_load_string(name, text, strlen(text), &o, &s, &e), status);
     assert_null(s);
     char buf[1024];
     assert_string_equal(sc_error_format(&e, buf, sizeof buf), expected);
+}
+
+static void check_error(const char *name, const char *text, sc_status status,
+                        const char *expected)
+{
+    check_error_with(name, text, status, expected, 0);
 }
 
 static int inside(const sc_scene *s, double x, double y, double z)
@@ -272,13 +295,14 @@ static void test_import(void **state)
     sc_scene_release(s);
 }
 
-/* linear_extrude of square, circle and polygon children: holes by nesting,
- * circles as OpenSCAD's polygons, unions of children, 2D transforms,
- * centring; other 2D nodes are errors, a scale builds OpenSCAD's slices. */
+/* linear_extrude in faithful mode of square, circle and polygon children:
+ * holes by nesting, circles as OpenSCAD's polygons, unions of children, 2D
+ * transforms, centring; a scale builds OpenSCAD's slices, a 2D difference
+ * goes through the 2D engine, a 3D child is an error. */
 static void test_linear_extrude(void **state)
 {
     (void)state;
-    sc_scene *s = load(
+    sc_scene *s = load_faithful(
         "m.csg",
         "linear_extrude(height = 10, center = false, convexity = 1, scale = [1, 1], $fn "
         "= 0, $fa = 12, $fs = 2) {\n polygon(points = [[0, 0], [20, 0], [20, 20], [0, "
@@ -292,13 +316,14 @@ static void test_linear_extrude(void **state)
     assert_false(inside(s, 2, 2, -0.1));
     sc_scene_release(s);
 
-    s = load("m.csg",
-             "linear_extrude(height = 5, center = true) {\n"
-             "  circle($fn = 6, $fa = 12, $fs = 2, r = 8);\n"
-             "  multmatrix([[1, 0, 0, 5], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]) {\n"
-             "    square(size = [10, 4], center = true);\n  }\n"
-             "  polygon(points = [[0, 10], [4, 20], [0, 14], [-4, 20]]);\n"
-             "  %square(size = 100);\n}");
+    s = load_faithful(
+        "m.csg",
+        "linear_extrude(height = 5, center = true) {\n"
+        "  circle($fn = 6, $fa = 12, $fs = 2, r = 8);\n"
+        "  multmatrix([[1, 0, 0, 5], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]) {\n"
+        "    square(size = [10, 4], center = true);\n  }\n"
+        "  polygon(points = [[0, 10], [4, 20], [0, 14], [-4, 20]]);\n"
+        "  %square(size = 100);\n}");
     assert_true(inside(s, 0, 0, 2.4));
     assert_false(inside(s, 0, 0, 2.6));
     assert_true(inside(s, 7.9, 0, 0));
@@ -311,7 +336,8 @@ static void test_linear_extrude(void **state)
     sc_scene_release(s);
 
     /* a mirrored child keeps its solid */
-    s = load("m.csg", "linear_extrude(height = 1) { multmatrix([[-1, 0, 0, 0], [0, 1, 0, "
+    s = load_faithful("m.csg",
+                      "linear_extrude(height = 1) { multmatrix([[-1, 0, 0, 0], [0, 1, 0, "
                       "0], [0, 0, 1, 0], [0, 0, 0, 1]]) { square(size = [2, 1]); } }");
     assert_true(inside(s, -1, 0.5, 0.5));
     assert_false(inside(s, 1, 0.5, 0.5));
@@ -322,14 +348,15 @@ static void test_linear_extrude(void **state)
     assert_true(inside(s, 1.5, 1.5, 0.9));
     assert_false(inside(s, 1.5, 1.5, 0.1));
     sc_scene_release(s);
-    check_error(
-        "m.csg",
-        "linear_extrude(height = 1) {\n  difference() { square(2); square(1); }\n}",
-        SC_ERR_UNSUPPORTED,
-        "m.csg:2:3: error: 'difference' inside linear_extrude is not supported yet");
-    check_error("m.csg", "linear_extrude(height = 1) { sphere(); }", SC_ERR_UNSUPPORTED,
-                "m.csg:1:30: error: 'sphere' inside linear_extrude is not supported yet");
-    s = load("m.csg", "linear_extrude(height = 0) { square(); }");
+    s = load_faithful(
+        "m.csg", "linear_extrude(height = 1) {\n  difference() { square(2); square(1); }\n}");
+    assert_true(inside(s, 1.5, 1.5, 0.5));
+    assert_false(inside(s, 0.5, 0.5, 0.5));
+    sc_scene_release(s);
+    check_error("m.csg", "linear_extrude(height = 1) { sphere(); }", SC_ERR_SEMANTIC,
+                "m.csg:1:30: error: 'sphere' is a 3D object inside a 2D operation "
+                "(linear_extrude)");
+    s = load_faithful("m.csg", "linear_extrude(height = 0) { square(); }");
     assert_int_equal(sc_scene_warning_count(s), 1);
     assert_string_equal(sc_scene_warning(s, 0)->message,
                         "linear_extrude without height or area is empty");

@@ -48,6 +48,7 @@
 #include <math.h>
 
 #include "csg/prim_curved.h"
+#include "csg/prim_extrusion.h"
 #include "csg/prim_mesh.h"
 #include "csg/prim_revolve.h"
 
@@ -339,6 +340,9 @@ bbox prim_bounds(const prim *p)
     case PRIM_REVOLVE:
         b = prim_revolve_bounds(p);
         break;
+    case PRIM_EXTRUSION:
+        b = p->u.extrusion.ext->bounds;
+        break;
     case PRIM_KIND_COUNT:
         break;
     }
@@ -369,6 +373,8 @@ uint32_t prim_spans(const prim *p, uint32_t leaf, vec3 o, vec3 d, span *out, uin
         return prim_mesh_spans(p, leaf, o, d, out, cap);
     case PRIM_REVOLVE:
         return prim_revolve_spans(p, leaf, o, d, out, cap);
+    case PRIM_EXTRUSION:
+        return prim_extrusion_spans(p, leaf, o, d, out, cap);
     case PRIM_KIND_COUNT:
         break;
     }
@@ -423,6 +429,8 @@ vec3 prim_normal(const prim *p, vec3 q, uint16_t part)
         return prim_mesh_normal(p, q, part);
     case PRIM_REVOLVE:
         return prim_revolve_normal(p, q, part);
+    case PRIM_EXTRUSION:
+        return prim_extrusion_normal(p, q, part);
     case PRIM_KIND_COUNT:
         break;
     }
@@ -462,6 +470,8 @@ int prim_inside(const prim *p, vec3 q)
         return prim_mesh_inside(p, q);
     case PRIM_REVOLVE:
         return prim_revolve_inside(p, q);
+    case PRIM_EXTRUSION:
+        return prim_extrusion_inside(p, q);
     case PRIM_KIND_COUNT:
         break;
     }
@@ -481,6 +491,8 @@ uint32_t prim_max_spans(const prim *p)
         return prim_mesh_max_spans(p);
     case PRIM_REVOLVE:
         return prim_revolve_max_spans(p);
+    case PRIM_EXTRUSION:
+        return prim_extrusion_max_spans(p);
     default:
         return 1; /* convex */
     }

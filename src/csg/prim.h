@@ -32,6 +32,8 @@ typedef enum prim_kind {
     PRIM_IMPLICIT, /* f(p) < 0 within a box (prim_implicit.c) */
     PRIM_MESH,     /* closed triangle mesh (prim_mesh.c) */
     PRIM_REVOLVE,  /* profile revolved about z (prim_revolve.c) */
+    /* a 2D region extruded along z (prim_extrusion.c) */
+    PRIM_EXTRUSION,
     PRIM_KIND_COUNT
 } prim_kind;
 
@@ -44,6 +46,7 @@ typedef struct plane {
 struct expr_program;
 struct prim_mesh;
 struct prim_revolve;
+struct prim_extrusion;
 
 /* Spans an implicit leaf gives one ray at most; see prim_implicit.c for
  * what happens to a ray that crosses its surface more often. */
@@ -88,6 +91,9 @@ typedef struct prim {
         struct {
             const struct prim_revolve *rev; /* owned by the tree's arena */
         } revolve;
+        struct {
+            const struct prim_extrusion *ext; /* owned by the tree's arena */
+        } extrusion;
     } u;
 } prim;
 

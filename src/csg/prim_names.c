@@ -23,6 +23,8 @@ const char *prim_kind_name(prim_kind kind)
         return "mesh";
     case PRIM_REVOLVE:
         return "revolve";
+    case PRIM_EXTRUSION:
+        return "extrusion";
     case PRIM_KIND_COUNT:
         break;
     }

@@ -34,22 +34,9 @@ static inline int combined(span_op op, int in_a, int in_b)
     return 0;
 }
 
-span_list span_combine(span_op op, span_list a, span_list b, double eps, arena *scratch,
-                       int *oom)
+uint32_t span_merge(span_op op, span_list a, span_list b, span *out)
 {
-    span_list r = {NULL, 0};
-    /* Shortcuts that are exact consequences of the predicates. */
-    if (a.n == 0)
-        return op == SPAN_UNION ? b : r;
-    if (b.n == 0)
-        return op == SPAN_INTERSECTION ? r : a;
-
-    uint32_t cap = a.n + b.n;
-    r.v = arena_alloc(scratch, (size_t)cap * sizeof(span));
-    if (!r.v) {
-        *oom = 1;
-        return r;
-    }
+    uint32_t n = 0;
     uint32_t na = 2 * a.n, nb = 2 * b.n, ia = 0, ib = 0;
     int in_a = 0, in_b = 0, in_r = 0;
     while (ia < na || ib < nb) {
@@ -71,11 +58,31 @@ span_list span_combine(span_op op, span_list a, span_list b, double eps, arena *
         if (from_b && op == SPAN_DIFFERENCE)
             end.flip ^= 1;
         if (now)
-            r.v[r.n].in = end;
+            out[n].in = end;
         else
-            r.v[r.n++].out = end;
+            out[n++].out = end;
         in_r = now;
     }
+    return n;
+}
+
+span_list span_combine(span_op op, span_list a, span_list b, double eps, arena *scratch,
+                       int *oom)
+{
+    span_list r = {NULL, 0};
+    /* Shortcuts that are exact consequences of the predicates. */
+    if (a.n == 0)
+        return op == SPAN_UNION ? b : r;
+    if (b.n == 0)
+        return op == SPAN_INTERSECTION ? r : a;
+
+    uint32_t cap = a.n + b.n;
+    r.v = arena_alloc(scratch, (size_t)cap * sizeof(span));
+    if (!r.v) {
+        *oom = 1;
+        return r;
+    }
+    r.n = span_merge(op, a, b, r.v);
     r.n = span_regularize(r.v, r.n, eps);
     return r;
 }

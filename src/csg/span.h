@@ -51,6 +51,11 @@ typedef enum span_op { SPAN_UNION, SPAN_INTERSECTION, SPAN_DIFFERENCE } span_op;
 span_list span_combine(span_op op, span_list a, span_list b, double eps, arena *scratch,
                        int *oom);
 
+/* The sweep of span_combine without regularisation: writes the spans of a
+ * op b to out, which has room for a.n + b.n spans and may not overlap
+ * a or b; returns their count. Ties may leave zero-length spans or gaps. */
+uint32_t span_merge(span_op op, span_list a, span_list b, span *out);
+
 /* Applies the regularisation rule above in place; returns the new count. */
 uint32_t span_regularize(span *v, uint32_t n, double eps);
 

@@ -28,9 +28,9 @@ sc_status build_mesh_prim(const build_ctx *c, const sc_location *loc, const char
 sc_status build_import(const build_ctx *c, const parse_node *n, int emit, prim *out,
                        const char **empty);
 
-/* linear_extrude(height, center) of square, circle and polygon children
- * (build_extrude.c): a prism mesh; twist, scale and other 2D nodes are
- * SC_ERR_UNSUPPORTED. */
+/* linear_extrude (build_extrude.c): exact in default mode without twist or
+ * scale over the 2D nodes build_region.h reads, else OpenSCAD's mesh of it
+ * (build_extrude_faithful.h). */
 sc_status build_linear_extrude(const build_ctx *c, const parse_node *n, int emit,
                                prim *out, const char **empty);
 

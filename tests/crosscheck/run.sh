@@ -10,6 +10,11 @@
 #   // exact: sphere|cylinder,R,FN     (optional: also render the exact
 #                                       solid and check it against the mesh
 #                                       within the tessellation's bound)
+#   // exact: same                     (optional: the exact solid is the
+#                                       mesh's (polygons only); check it by
+#                                       the faithful rules)
+#   // faithful: skip REASON           (optional: no faithful row, for
+#                                       models faithful mode cannot build yet)
 # compare judges each pair and prints its row; the rows also go to
 # WORKDIR/rows, which tests/crosscheck/report gathers. Exits non-zero when
 # any check fails.
@@ -24,6 +29,7 @@ setting() { sed -n "s|^// $1: *||p" "$model" | head -n 1; }
 camera=$(setting camera)
 projection=$(setting projection)
 exact=$(setting exact)
+faithful=$(setting faithful)
 [[ -n "$camera" ]] || { echo "$model: no '// camera:' line" >&2; exit 2; }
 view=(--camera="$camera" --imgsize="$size" --projection="${projection:-p}")
 
@@ -62,8 +68,14 @@ check() {
     fi
     echo "$label $row $mesh_time ${seconds:-?} $result" | tee -a "$work/rows"
 }
-check "$name" --faithful
-if [[ -n "$exact" ]]; then
+if [[ "$faithful" == skip* ]]; then
+    echo "$name: no faithful row (${faithful#skip })"
+else
+    check "$name" --faithful
+fi
+if [[ "$exact" == same ]]; then
+    check "$name.exact" ""
+elif [[ -n "$exact" ]]; then
     check "$name.exact" "" --exact="$exact" --cos="$work/ref_cos.exr"
 fi
 exit $status
