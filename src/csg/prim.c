@@ -49,6 +49,7 @@
 
 #include "csg/prim_curved.h"
 #include "csg/prim_mesh.h"
+#include "csg/prim_outline.h"
 
 /* Writes the span [t_in, t_out] when it is finite and ordered; returns the
  * number of spans written (0 or 1). */
@@ -335,6 +336,9 @@ bbox prim_bounds(const prim *p)
     case PRIM_MESH:
         b = p->u.mesh.mesh->bounds;
         break;
+    case PRIM_OUTLINE:
+        b = p->u.outline.outline->bounds;
+        break;
     case PRIM_KIND_COUNT:
         break;
     }
@@ -363,6 +367,8 @@ uint32_t prim_spans(const prim *p, uint32_t leaf, vec3 o, vec3 d, span *out, uin
         return prim_implicit_spans(p, leaf, o, d, out, cap);
     case PRIM_MESH:
         return prim_mesh_spans(p, leaf, o, d, out, cap);
+    case PRIM_OUTLINE:
+        return prim_outline_spans(p, leaf, o, d, out, cap);
     case PRIM_KIND_COUNT:
         break;
     }
@@ -415,6 +421,8 @@ vec3 prim_normal(const prim *p, vec3 q, uint16_t part)
         return prim_implicit_normal(p, q, part);
     case PRIM_MESH:
         return prim_mesh_normal(p, q, part);
+    case PRIM_OUTLINE:
+        return prim_outline_normal(p, q, part);
     case PRIM_KIND_COUNT:
         break;
     }
@@ -452,6 +460,8 @@ int prim_inside(const prim *p, vec3 q)
         return prim_implicit_inside(p, q);
     case PRIM_MESH:
         return prim_mesh_inside(p, q);
+    case PRIM_OUTLINE:
+        return prim_outline_inside(p, q);
     case PRIM_KIND_COUNT:
         break;
     }
@@ -469,6 +479,8 @@ uint32_t prim_max_spans(const prim *p)
         return PRIM_IMPLICIT_MAX_SPANS;
     case PRIM_MESH:
         return prim_mesh_max_spans(p);
+    case PRIM_OUTLINE:
+        return prim_outline_max_spans(p);
     default:
         return 1; /* convex */
     }

@@ -31,6 +31,7 @@ typedef enum prim_kind {
     PRIM_QUADRIC,  /* Q(p) <= 0 within a box (prim_quadric.c) */
     PRIM_IMPLICIT, /* f(p) < 0 within a box (prim_implicit.c) */
     PRIM_MESH,     /* closed triangle mesh (prim_mesh.c) */
+    PRIM_OUTLINE,  /* prism of a curved outline, z0 <= z <= z1 (prim_outline.c) */
     PRIM_KIND_COUNT
 } prim_kind;
 
@@ -42,6 +43,7 @@ typedef struct plane {
 
 struct expr_program;
 struct prim_mesh;
+struct prim_outline;
 
 /* Spans an implicit leaf gives one ray at most; see prim_implicit.c for
  * what happens to a ray that crosses its surface more often. */
@@ -83,6 +85,9 @@ typedef struct prim {
         struct {
             const struct prim_mesh *mesh; /* owned by the tree's arena */
         } mesh;
+        struct {
+            const struct prim_outline *outline; /* owned by the tree's arena */
+        } outline;
     } u;
 } prim;
 

@@ -21,6 +21,8 @@ const char *prim_kind_name(prim_kind kind)
         return "implicit";
     case PRIM_MESH:
         return "mesh";
+    case PRIM_OUTLINE:
+        return "outline";
     case PRIM_KIND_COUNT:
         break;
     }

@@ -644,7 +644,7 @@ static sc_status build_polyhedron(builder *b, const parse_node *n, const frame *
         (uint64_t)m.face_count * m.point_count <= BUILD_MAX_POLYHEDRON_WORK)
         st = convex_planes(b, &m, &count, &bounds);
     if (st == SC_OK && count == UINT32_MAX) {
-        build_ctx c = {b->syntax->file, b->csg, b->error, b->faithful};
+        build_ctx c = {b->syntax->file, b->csg, b->error, b->faithful, NULL};
         const char *empty = NULL;
         prim p;
         st = build_mesh_prim(&c, &n->loc, "polyhedron", m.points, m.point_count,
@@ -679,7 +679,7 @@ static sc_status build_polyhedron(builder *b, const parse_node *n, const frame *
 static sc_status build_curved(builder *b, const parse_node *n, node_kind kind,
                               const frame *state, uint32_t *id)
 {
-    build_ctx c = {b->syntax->file, b->csg, b->error, b->faithful};
+    build_ctx c = {b->syntax->file, b->csg, b->error, b->faithful, NULL};
     const char *empty = NULL;
     prim p;
     memset(&p, 0, sizeof p);
@@ -699,13 +699,19 @@ static sc_status build_curved(builder *b, const parse_node *n, node_kind kind,
 static sc_status build_import_leaf(builder *b, const parse_node *n, int import,
                                    const frame *state, uint32_t *id)
 {
-    build_ctx c = {b->syntax->file, b->csg, b->error, b->faithful};
+    sc_error note = {SC_OK, "", 0, 0, ""}; /* a warning, e.g. a font fallback */
+    build_ctx c = {b->syntax->file, b->csg, b->error, b->faithful, &note};
     const char *empty = NULL;
     prim p;
     sc_status st = import ? build_import(&c, n, state->emit, &p, &empty)
                           : build_linear_extrude(&c, n, state->emit, &p, &empty);
     if (st != SC_OK || !state->emit)
         return st;
+    if (note.message[0]) {
+        sc_location at = {b->syntax->file, note.line, note.column};
+        if ((st = warn(b, &at, "%s", note.message)) != SC_OK)
+            return st;
+    }
     if (empty)
         return warn(b, &n->loc, "%s", empty);
     return add_leaf(b, n, &p, state, id);

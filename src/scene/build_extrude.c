@@ -29,6 +29,7 @@
 #include "base/error.h"
 #include "base/grow.h"
 #include "scene/build_mesh.h"
+#include "scene/build_text.h"
 #include "scene/faithful.h"
 
 enum { BUILD_EXTRUDE_MAX_DEPTH = 1000 };
@@ -323,6 +324,8 @@ sc_status build_linear_extrude(const build_ctx *c, const parse_node *n, int emit
             return err_set(c->error, SC_ERR_UNSUPPORTED, &n->loc,
                            "linear_extrude with scale is not supported yet");
     }
+    if (build_text_wanted(n)) /* text children: build_text.c */
+        return build_text_extrude(c, n, height, center, emit, out, empty);
     paths2d p;
     memset(&p, 0, sizeof p);
     affine2 id = {{{1, 0, 0}, {0, 1, 0}}};
