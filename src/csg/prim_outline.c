@@ -47,12 +47,15 @@
  * window's middle is inside the region.
  *
  * Normals: caps are -z and +z. A wall's part holds the segment's index
- * (modulo PRIM_OUTLINE_WALL_PARTS) and which side is out: entering the
+ * (modulo PRIM_OUTLINE_WALL_PARTS), which sixteenth of its parameter range
+ * the crossing lies in (so a cubic that loops back near itself is not
+ * asked about the wrong branch) and which side is out: entering the
  * region the outward normal is against d_xy, so it is the tangent turned
  * clockwise, (B'.y, -B'.x), when f decreases there; leaving, when f
  * increases. The normal at a hit point q is that turn of B'(s) at the s
- * of the segment closest to q (a coarse search refined by Newton steps;
- * among segments sharing the index residue, the closest wins).
+ * of the segment closest to q within that sixteenth (a coarse search
+ * refined by Newton steps; among segments sharing the index residue, the
+ * closest wins).
  *
  * Membership: the winding number of q from the crossings of the line
  * through q along +x with t < 0; a crossing at t = 0 puts q on the
@@ -152,7 +155,7 @@ static uint32_t critical_points(const double *c, uint32_t deg, double out[2])
 /* ---- line crossings ---- */
 
 uint32_t prim_outline_cross(const outline_seg *s, const double o[2], const double d[2],
-                            double t[3], int dw[3])
+                            double t[3], int dw[3], double u[3])
 {
     uint32_t deg = s->degree;
     double f[4];
@@ -198,6 +201,8 @@ uint32_t prim_outline_cross(const outline_seg *s, const double o[2], const doubl
         double px = bern(s->x, deg, sv), py = bern(s->y, deg, sv);
         t[n] = (d[0] * (px - o[0]) + d[1] * (py - o[1])) / dd;
         dw[n] = ca ? 1 : -1; /* + to -: f decreases */
+        if (u)
+            u[n] = sv;
         n++;
     }
     return n;
@@ -228,6 +233,7 @@ typedef struct crossing {
     double t;
     int dw;           /* +1 or -1 */
     uint32_t segment; /* index in segs */
+    double u;         /* the segment's parameter there */
 } crossing;
 
 typedef struct crossing_set {
@@ -239,12 +245,12 @@ typedef struct crossing_set {
     int on_ta;     /* a crossing exactly at ta */
 } crossing_set;
 
-static void keep_crossing(crossing_set *cs, double t, int dw, uint32_t seg)
+static void keep_crossing(crossing_set *cs, double t, int dw, uint32_t seg, double u)
 {
     if (t > cs->t_last)
         cs->t_last = t;
     if (cs->n < cs->cap) {
-        cs->v[cs->n++] = (crossing){t, dw, seg};
+        cs->v[cs->n++] = (crossing){t, dw, seg, u};
         return;
     }
     /* full: keep the smallest t; replace the largest when t is smaller */
@@ -254,7 +260,7 @@ static void keep_crossing(crossing_set *cs, double t, int dw, uint32_t seg)
         if (cs->v[i].t > cs->v[big].t)
             big = i;
     if (t < cs->v[big].t)
-        cs->v[big] = (crossing){t, dw, seg};
+        cs->v[big] = (crossing){t, dw, seg, u};
 }
 
 /* Collects the crossings of the line o + t d with the outline: those with
@@ -275,9 +281,9 @@ static void collect(const prim_outline *m, const double o[2], const double d[2],
             continue;
         }
         for (uint32_t i = b->start; i < b->start + b->count; i++) {
-            double t[3];
+            double t[3], u[3];
             int dw[3];
-            uint32_t k = prim_outline_cross(&m->segs[i], o, d, t, dw);
+            uint32_t k = prim_outline_cross(&m->segs[i], o, d, t, dw, u);
             for (uint32_t j = 0; j < k; j++) {
                 if (!isfinite(t[j]))
                     continue;
@@ -286,7 +292,7 @@ static void collect(const prim_outline *m, const double o[2], const double d[2],
                 } else if (t[j] <= tb) {
                     if (t[j] == ta)
                         cs->on_ta = 1;
-                    keep_crossing(cs, t[j], dw[j], i);
+                    keep_crossing(cs, t[j], dw[j], i, u[j]);
                 }
             }
         }
@@ -301,10 +307,13 @@ static int crossing_less(const void *a, const void *b)
     return (x->segment > y->segment) - (x->segment < y->segment);
 }
 
-static uint16_t wall_part(uint32_t segment, int right)
+static uint16_t wall_part(const crossing *x, int right)
 {
-    return (uint16_t)(2 + segment % PRIM_OUTLINE_WALL_PARTS) |
-           (uint16_t)(right ? PRIM_OUTLINE_PART_RIGHT : 0);
+    uint32_t bin = (uint32_t)(x->u * PRIM_OUTLINE_BINS);
+    if (bin >= PRIM_OUTLINE_BINS)
+        bin = PRIM_OUTLINE_BINS - 1;
+    uint32_t code = (x->segment % PRIM_OUTLINE_WALL_PARTS) * PRIM_OUTLINE_BINS + bin;
+    return (uint16_t)(2 + code) | (uint16_t)(right ? PRIM_OUTLINE_PART_RIGHT : 0);
 }
 
 /* Winding number of the plane point (x, y); on the boundary counts as 1. */
@@ -376,19 +385,19 @@ uint32_t prim_outline_spans(const prim *p, uint32_t leaf, vec3 o, vec3 d, span *
         if (w == 0 && nw != 0) {
             if (n == limit)
                 break;
-            out[n].in = (span_end){x->t, leaf, wall_part(x->segment, x->dw > 0), 0};
+            out[n].in = (span_end){x->t, leaf, wall_part(x, x->dw > 0), 0};
             open = 1;
         } else if (w != 0 && nw == 0) {
-            out[n].out = (span_end){x->t, leaf, wall_part(x->segment, x->dw < 0), 0};
+            out[n].out = (span_end){x->t, leaf, wall_part(x, x->dw < 0), 0};
             open = 0;
             n++;
             if (n == limit) {
                 w = nw;
                 if (i + 1 < cs.n) {
                     /* cap reached: stretch the last span to the last crossing */
-                    out[n - 1].out = (span_end){
-                        cs.v[cs.n - 1].t, leaf,
-                        wall_part(cs.v[cs.n - 1].segment, cs.v[cs.n - 1].dw < 0), 0};
+                    out[n - 1].out =
+                        (span_end){cs.v[cs.n - 1].t, leaf,
+                                   wall_part(&cs.v[cs.n - 1], cs.v[cs.n - 1].dw < 0), 0};
                 }
                 break;
             }
@@ -415,33 +424,63 @@ uint32_t prim_outline_spans(const prim *p, uint32_t leaf, vec3 o, vec3 d, span *
 
 /* ---- normals ---- */
 
-static double closest_s(const outline_seg *s, double x, double y, double *dist2)
+/* Refines u towards the point of s closest to (x, y) by Newton steps on
+ * g(u) = (B(u) - q) . B'(u), kept within [lo, hi]; returns the distance
+ * squared at the result. */
+static double refine(const outline_seg *s, double x, double y, double lo, double hi,
+                     double *u)
 {
     uint32_t deg = s->degree;
-    double best = 0, bd = INFINITY;
-    for (int k = 0; k <= 16; k++) {
-        double u = k / 16.0;
-        double dx = bern(s->x, deg, u) - x, dy = bern(s->y, deg, u) - y;
-        double e = dx * dx + dy * dy;
-        if (e < bd) {
-            bd = e;
-            best = u;
-        }
-    }
-    for (int it = 0; it < 8; it++) {
-        /* Newton on g(u) = (B(u) - q) . B'(u) with g' ~ |B'|^2 */
+    double best = *u;
+    double ex = bern(s->x, deg, best) - x, ey = bern(s->y, deg, best) - y;
+    double bd = ex * ex + ey * ey;
+    for (int it = 0; it < 16; it++) {
         double bx = bern(s->x, deg, best) - x, by = bern(s->y, deg, best) - y;
         double tx = bern_d(s->x, deg, best), ty = bern_d(s->y, deg, best);
-        double g = bx * tx + by * ty, h = tx * tx + ty * ty;
-        if (!(h > 0))
+        /* B'' by a difference of B' (exact for a quadratic's linear B') */
+        double h = 1e-6;
+        double ax = (bern_d(s->x, deg, best + h) - bern_d(s->x, deg, best - h)) / (2 * h);
+        double ay = (bern_d(s->y, deg, best + h) - bern_d(s->y, deg, best - h)) / (2 * h);
+        double g = bx * tx + by * ty, gd = tx * tx + ty * ty + bx * ax + by * ay;
+        if (!(gd > 0))
             break;
-        double u = fmin(1, fmax(0, best - g / h));
-        double ex = bern(s->x, deg, u) - x, ey = bern(s->y, deg, u) - y;
-        double e = ex * ex + ey * ey;
+        double next = fmin(hi, fmax(lo, best - g / gd));
+        double fx = bern(s->x, deg, next) - x, fy = bern(s->y, deg, next) - y;
+        double e = fx * fx + fy * fy;
         if (!(e < bd))
             break;
         bd = e;
-        best = u;
+        best = next;
+    }
+    *u = best;
+    return bd;
+}
+
+/* The parameter in [a, b] of the point of s closest to (x, y): every
+ * local minimum of 16 samples refined, the closest kept (a cubic may pass
+ * near the point on two branches); *dist2 is its distance squared. */
+static double closest_s(const outline_seg *s, double x, double y, double a, double b,
+                        double *dist2)
+{
+    enum { SAMPLES = 16 };
+    uint32_t deg = s->degree;
+    double e[SAMPLES + 1];
+    double step = (b - a) / SAMPLES;
+    for (int k = 0; k <= SAMPLES; k++) {
+        double u = a + k * step;
+        double dx = bern(s->x, deg, u) - x, dy = bern(s->y, deg, u) - y;
+        e[k] = dx * dx + dy * dy;
+    }
+    double best = 0, bd = INFINITY;
+    for (int k = 0; k <= SAMPLES; k++) {
+        if ((k > 0 && e[k - 1] < e[k]) || (k < SAMPLES && e[k + 1] < e[k]))
+            continue;
+        double u = a + k * step;
+        double d2 = refine(s, x, y, fmax(a, u - step), fmin(b, u + step), &u);
+        if (d2 < bd) {
+            bd = d2;
+            best = u;
+        }
     }
     *dist2 = bd;
     return best;
@@ -455,12 +494,16 @@ vec3 prim_outline_normal(const prim *p, vec3 q, uint16_t part)
     if (part == PRIM_OUTLINE_PART_TOP)
         return v3(0, 0, 1);
     int right = (part & PRIM_OUTLINE_PART_RIGHT) != 0;
-    uint32_t residue = (uint32_t)(part & ~PRIM_OUTLINE_PART_RIGHT) - 2;
+    uint32_t code = (uint32_t)(part & ~PRIM_OUTLINE_PART_RIGHT) - 2;
+    uint32_t residue = code / PRIM_OUTLINE_BINS, bin = code % PRIM_OUTLINE_BINS;
+    /* the bin, widened by a quarter bin each way for a rounding at its edge */
+    double a = fmax(0, (bin - 0.25) / PRIM_OUTLINE_BINS);
+    double b = fmin(1, (bin + 1.25) / PRIM_OUTLINE_BINS);
     double best_d = INFINITY, best_s = 0;
     const outline_seg *best = NULL;
     for (uint32_t i = residue; i < m->seg_count; i += PRIM_OUTLINE_WALL_PARTS) {
         double e;
-        double s = closest_s(&m->segs[i], q.x, q.y, &e);
+        double s = closest_s(&m->segs[i], q.x, q.y, a, b, &e);
         if (e < best_d) {
             best_d = e;
             best_s = s;

@@ -16,13 +16,16 @@
 #define PRIM_OUTLINE_MAX_SPANS 64
 #define PRIM_OUTLINE_MAX_CROSSINGS 512
 
-/* Surface parts: the caps, and walls. A wall part is 2 + the segment's
- * index modulo PRIM_OUTLINE_WALL_PARTS, with PRIM_OUTLINE_PART_RIGHT set
- * when the solid lies to the left of the segment's direction there (its
- * outward normal is the tangent turned clockwise). */
+/* Surface parts: the caps, and walls. A wall part is 2 + (the segment's
+ * index modulo PRIM_OUTLINE_WALL_PARTS) * PRIM_OUTLINE_BINS + the bin of
+ * the crossing's curve parameter (floor(u * PRIM_OUTLINE_BINS)), with
+ * PRIM_OUTLINE_PART_RIGHT set when the solid lies to the left of the
+ * segment's direction there (its outward normal is the tangent turned
+ * clockwise). */
 #define PRIM_OUTLINE_PART_BOTTOM 0
 #define PRIM_OUTLINE_PART_TOP 1
-#define PRIM_OUTLINE_WALL_PARTS 32766u
+#define PRIM_OUTLINE_WALL_PARTS 2046u
+#define PRIM_OUTLINE_BINS 16u
 #define PRIM_OUTLINE_PART_RIGHT 0x8000u
 
 /* One segment of a closed contour: a line (degree 1, points 0 and 1), a
@@ -59,12 +62,13 @@ const prim_outline *prim_outline_create(struct csg_builder *b, const outline_seg
                                         uint32_t count, double z0, double z1);
 
 /* The crossings of the line o + t d (d != 0) with segment s, in the
- * order of the segment's parameter: up to 3 line parameters t and the
- * change of winding number (+1 or -1) at each, counting a point on the
+ * order of the segment's parameter: up to 3 line parameters t, the
+ * segment's parameters u there (when u is not NULL) and the change of
+ * winding number (+1 or -1) at each, counting a point on the
  * line's left side (f = n . (p - o) >= 0 with n = (-d.y, d.x)) apart from
  * one on its right. Returns the count. Exposed for the tests. */
 uint32_t prim_outline_cross(const outline_seg *s, const double o[2], const double d[2],
-                            double t[3], int dw[3]);
+                            double t[3], int dw[3], double u[3]);
 
 uint32_t prim_outline_spans(const prim *p, uint32_t leaf, vec3 o, vec3 d, span *out,
                             uint32_t cap);
