@@ -795,6 +795,8 @@ static sc_status gather_text(const build_ctx *c, const parse_node *n, const affi
     text_shape s;
     if ((st = text_shape_build(c, n, &s, c->note)) != SC_OK)
         return st;
+    if (s.size == 0)
+        s.glyph_count = 0; /* every point at the origin: no area */
     for (uint32_t gi = 0; gi < s.glyph_count && st == SC_OK; gi++) {
         uint32_t first = g->seg_count;
         double area = 0;
