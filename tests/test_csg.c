@@ -1056,7 +1056,8 @@ static void test_random_trees(void **state)
             double ts[64];
             int nt = 0;
             double prev = c0;
-            for (uint32_t i = 0; i < s.n && nt < 56; i++) {
+            /* 6 a span, then 5 more: stop while all of them fit */
+            for (uint32_t i = 0; i < s.n && nt + 6 + 5 <= 64; i++) {
                 ts[nt++] = 0.5 * (prev + s.v[i].in.t);
                 ts[nt++] = 0.5 * (s.v[i].in.t + s.v[i].out.t);
                 ts[nt++] = s.v[i].in.t - 2 * tol;
