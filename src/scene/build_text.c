@@ -393,6 +393,16 @@ static void detect(const text_args *a, hb_script_t *script, hb_direction_t *dire
         *direction = HB_DIRECTION_LTR;
 }
 
+/* Resizes *v to count pairs of doubles; on failure *v is kept. */
+static int resize_pairs(double **v, uint32_t count)
+{
+    double *r = realloc(*v, 2 * (size_t)count * sizeof **v);
+    if (!r)
+        return 0;
+    *v = r;
+    return 1;
+}
+
 typedef struct glyph_rec {
     FT_Glyph glyph;
     double x_offset, y_offset, x_advance, y_advance; /* in 1.024e5 units */
@@ -482,10 +492,8 @@ static sc_status shape_text(const build_ctx *c, const parse_node *n, const text_
         uint32_t gi = out->glyph_count;
         if (!grow_array32((void **)&out->glyph_start, &out->glyph_cap, gi + 2,
                           sizeof *out->glyph_start) ||
-            !(out->offset = realloc(out->offset,
-                                    2 * (size_t)out->glyph_cap * sizeof *out->offset)) ||
-            !(out->advance = realloc(out->advance, 2 * (size_t)out->glyph_cap *
-                                                       sizeof *out->advance))) {
+            !resize_pairs(&out->offset, out->glyph_cap) ||
+            !resize_pairs(&out->advance, out->glyph_cap)) {
             st = nomem(c, n);
             break;
         }
