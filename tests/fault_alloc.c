@@ -91,7 +91,8 @@ static void test_models(void **state)
 {
     (void)state;
     const char *files[] = {"models/bracket.csg", "tests/data/openscad_export.csg",
-                           "models/pulley.csg", "models/extruded_plate.csg"};
+                           "models/pulley.csg", "models/extruded_plate.csg",
+                           "models/name_plate.csg"};
     for (size_t k = 0; k < sizeof files / sizeof files[0]; k++) {
         size_t length;
         char *text = read_model(files[k], &length);

@@ -618,9 +618,8 @@ static void test_root_modifier(void **state)
 static void test_unsupported(void **state)
 {
     (void)state;
-    static const char *names[] = {"hull",     "minkowski", "surface", "projection",
-                                  "text",     "resize",    "roof",    "intersection_for",
-                                  "halfspace"};
+    static const char *names[] = {"hull",   "minkowski", "surface",          "projection",
+                                  "resize", "roof",      "intersection_for", "halfspace"};
     for (size_t i = 0; i < sizeof names / sizeof names[0]; i++) {
         char text[256], expected[256];
         snprintf(text, sizeof text, "group() {\n  cube();\n\n    %s() { cube(); }\n}",
@@ -631,9 +630,11 @@ static void test_unsupported(void **state)
     }
     check_error("group() {\n  cube();\n    %hull() {\n cube(); }\n}", SC_ERR_UNSUPPORTED,
                 "m.csg:3:6: error: 'hull' is not supported yet");
-    check_error("linear_extrude(height = 10, center = false, convexity = 1, twist = 90, "
-                "$fn = 0, $fa = 12, $fs = 2) {\n  text(text = \"a\");\n}",
-                SC_ERR_UNSUPPORTED, "m.csg:2:3: error: 'text' is not supported yet");
+    check_error(
+        "linear_extrude(height = 10, center = false, convexity = 1, twist = 90, "
+        "$fn = 0, $fa = 12, $fs = 2) {\n  projection(cut = false) { cube(); }\n}",
+        SC_ERR_UNSUPPORTED,
+        "m.csg:2:3: error: 'projection' inside linear_extrude is not supported yet");
     check_error("group() { foo(); }", SC_ERR_SEMANTIC,
                 "m.csg:1:11: error: unknown node 'foo'");
     check_error("Cube();", SC_ERR_SEMANTIC, "m.csg:1:1: error: unknown node 'Cube'");

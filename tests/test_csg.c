@@ -35,6 +35,7 @@
 
 #include "csg/csg.h"
 #include "csg/prim_mesh.h"
+#include "csg/prim_outline.h"
 #include "implicit/expr.h"
 #include "implicit/solve.h"
 
@@ -623,6 +624,45 @@ static void random_mesh(gen *g, prim *p)
     assert_non_null(p->u.mesh.mesh);
 }
 
+/* An outline prism: a star-shaped loop of lines and quadratic and cubic
+ * curves (possibly crossing itself) with a loop wound the other way
+ * inside it, between random heights. */
+static void random_outline(gen *g, prim *p)
+{
+    outline_seg segs[16];
+    uint32_t n = 0;
+    for (int loop = 0; loop < 2; loop++) {
+        uint32_t k = loop ? 3 : 5 + below(&g->r, 5), first = n;
+        double radius = loop ? 0.4 : 1.4, sign = loop ? -1 : 1;
+        for (uint32_t i = 0; i < k; i++) {
+            double a = sign * 6.283185307179586 * (i + uniform_in(&g->r, 0, 0.4)) / k;
+            double rr = radius * uniform_in(&g->r, 0.6, 1.0);
+            memset(&segs[n + i], 0, sizeof segs[n + i]);
+            segs[n + i].x[0] = rr * cos(a);
+            segs[n + i].y[0] = rr * sin(a);
+        }
+        for (uint32_t i = 0; i < k; i++) {
+            outline_seg *s = &segs[n + i];
+            const outline_seg *next = &segs[first + (i + 1) % k];
+            s->degree = 1 + below(&g->r, 3);
+            s->x[s->degree] = next->x[0];
+            s->y[s->degree] = next->y[0];
+            for (uint32_t m = 1; m < s->degree; m++) {
+                double u = (double)m / s->degree;
+                s->x[m] = s->x[0] + u * (next->x[0] - s->x[0]) +
+                          uniform_in(&g->r, -0.3, 0.3) * radius;
+                s->y[m] = s->y[0] + u * (next->y[0] - s->y[0]) +
+                          uniform_in(&g->r, -0.3, 0.3) * radius;
+            }
+        }
+        n += k;
+    }
+    p->kind = PRIM_OUTLINE;
+    p->u.outline.outline = prim_outline_create(
+        g->b, segs, n, -uniform_in(&g->r, 0.2, 1.5), uniform_in(&g->r, 0.2, 1.5));
+    assert_non_null(p->u.outline.outline);
+}
+
 static prim random_prim(gen *g, uint32_t kind)
 {
     prim p = {.kind = (prim_kind)kind};
@@ -707,6 +747,9 @@ static prim random_prim(gen *g, uint32_t kind)
     }
     case PRIM_MESH:
         random_mesh(g, &p);
+        break;
+    case PRIM_OUTLINE:
+        random_outline(g, &p);
         break;
     default:
         random_convex(g, &p);
@@ -1013,7 +1056,8 @@ static void test_random_trees(void **state)
             double ts[64];
             int nt = 0;
             double prev = c0;
-            for (uint32_t i = 0; i < s.n && nt < 56; i++) {
+            /* 6 a span, then 5 more: stop while all of them fit */
+            for (uint32_t i = 0; i < s.n && nt + 6 + 5 <= 64; i++) {
                 ts[nt++] = 0.5 * (prev + s.v[i].in.t);
                 ts[nt++] = 0.5 * (s.v[i].in.t + s.v[i].out.t);
                 ts[nt++] = s.v[i].in.t - 2 * tol;

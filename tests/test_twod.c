@@ -31,7 +31,7 @@ static sc_status region_of(const char *text, twod_region *r, char *error, size_t
     sc_error e;
     sc_status st = parse_text("m.csg", text, strlen(text), &tree, &e);
     assert_int_equal(st, SC_OK);
-    build_ctx c = {"m.csg", NULL, &e, 1};
+    build_ctx c = {"m.csg", NULL, &e, 1, NULL};
     twod_init(r);
     st = twod_from_children(&c, tree->first, r);
     if (st != SC_OK)
@@ -166,6 +166,27 @@ static void test_polygons(void **state)
         area_of("group() { polygon(points = [[0, 0], [0, 2]]); }", &outers, &holes) == 0);
 }
 
+/* text: OpenSCAD's glyph polygons united; an 'o' is an outline and a hole,
+ * "oo" two of each, and the united region cut by a square loses area. */
+static void test_text(void **state)
+{
+    (void)state;
+    int outers, holes;
+    double one = area_of("group() { text(text = \"o\"); }", &outers, &holes);
+    assert_true(one > 0 && outers == 1 && holes == 1);
+    double two = area_of("group() { text(text = \"oo\"); }", &outers, &holes);
+    assert_true(outers == 2 && holes == 2);
+    /* the second 'o' sits elsewhere on the 2^-16 grid: each point moves by
+     * at most GRID per axis, and an 'o' of size 10 has less than 50 units
+     * of outline, so the area moves by less than 50 sqrt(2) GRID */
+    assert_true(fabs(two - 2 * one) < 2 * 50 * 1.5 * GRID);
+    double cut =
+        area_of("group() { difference() { text(text = \"oo\"); square(size = [100, "
+                "2]); } }",
+                &outers, &holes);
+    assert_true(cut > 0 && cut < two);
+}
+
 static void test_offset_hull_minkowski(void **state)
 {
     (void)state;
@@ -241,8 +262,9 @@ static void test_errors(void **state)
                 "many fragments (limit is 4096)");
     check_error("group() { difference() { square(1); cube(1); } }", SC_ERR_SEMANTIC,
                 "m.csg:1:37: error: 'cube' is a 3D object inside a 2D operation (group)");
-    check_error("group() { text(text = \"a\"); }", SC_ERR_UNSUPPORTED,
-                "m.csg:1:11: error: 'text' is not supported yet");
+    check_error("group() { text(text = 5); }", SC_ERR_SEMANTIC,
+                "m.csg:1:23: error: wrong type for argument 'text' of 'text' (expected a "
+                "string)");
     check_error("group() { projection() { cube(1); } }", SC_ERR_UNSUPPORTED,
                 "m.csg:1:11: error: 'projection' inside group is not supported yet");
     check_error("group() { square(1e13); }", SC_ERR_LIMIT,
@@ -276,7 +298,7 @@ static double extrude_volume(const char *text, int faithful, uint32_t *triangles
     assert_int_equal(parse_text("m.csg", text, strlen(text), &tree, &e), SC_OK);
     csg_builder *b = csg_builder_new();
     assert_non_null(b);
-    build_ctx c = {"m.csg", b, &e, faithful};
+    build_ctx c = {"m.csg", b, &e, faithful, NULL};
     prim p;
     const char *empty = NULL;
     sc_status st = build_linear_extrude_faithful(&c, tree->first, 1, &p, &empty);
@@ -426,8 +448,10 @@ static void test_extrude_errors(void **state)
         SC_ERR_LIMIT,
         "m.csg:1:1: error: linear_extrude: 600000 slices of 8 points are too "
         "many (limit is 2000000 side faces)");
-    check_load_error("linear_extrude(height = 1, twist = 10) {\n  text(text = \"a\");\n}",
-                     SC_ERR_UNSUPPORTED, "m.csg:2:3: error: 'text' is not supported yet");
+    check_load_error(
+        "linear_extrude(height = 1, twist = 10) {\n  text(text = 5);\n}", SC_ERR_SEMANTIC,
+        "m.csg:2:15: error: wrong type for argument 'text' of 'text' (expected "
+        "a string)");
     check_load_error("linear_extrude(height = 1, twist = 10) {\n  sphere(1);\n}",
                      SC_ERR_SEMANTIC,
                      "m.csg:2:3: error: 'sphere' is a 3D object inside a 2D operation "
@@ -466,6 +490,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_booleans),
         cmocka_unit_test(test_polygons),
+        cmocka_unit_test(test_text),
         cmocka_unit_test(test_offset_hull_minkowski),
         cmocka_unit_test(test_errors),
         cmocka_unit_test(test_extrude_volumes),

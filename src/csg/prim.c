@@ -51,6 +51,7 @@
 #include "csg/prim_extrusion.h"
 #include "csg/prim_mesh.h"
 #include "csg/prim_revolve.h"
+#include "csg/prim_outline.h"
 
 /* Writes the span [t_in, t_out] when it is finite and ordered; returns the
  * number of spans written (0 or 1). */
@@ -343,6 +344,9 @@ bbox prim_bounds(const prim *p)
     case PRIM_EXTRUSION:
         b = p->u.extrusion.ext->bounds;
         break;
+    case PRIM_OUTLINE:
+        b = p->u.outline.outline->bounds;
+        break;
     case PRIM_KIND_COUNT:
         break;
     }
@@ -375,6 +379,8 @@ uint32_t prim_spans(const prim *p, uint32_t leaf, vec3 o, vec3 d, span *out, uin
         return prim_revolve_spans(p, leaf, o, d, out, cap);
     case PRIM_EXTRUSION:
         return prim_extrusion_spans(p, leaf, o, d, out, cap);
+    case PRIM_OUTLINE:
+        return prim_outline_spans(p, leaf, o, d, out, cap);
     case PRIM_KIND_COUNT:
         break;
     }
@@ -431,6 +437,8 @@ vec3 prim_normal(const prim *p, vec3 q, uint16_t part)
         return prim_revolve_normal(p, q, part);
     case PRIM_EXTRUSION:
         return prim_extrusion_normal(p, q, part);
+    case PRIM_OUTLINE:
+        return prim_outline_normal(p, q, part);
     case PRIM_KIND_COUNT:
         break;
     }
@@ -472,6 +480,8 @@ int prim_inside(const prim *p, vec3 q)
         return prim_revolve_inside(p, q);
     case PRIM_EXTRUSION:
         return prim_extrusion_inside(p, q);
+    case PRIM_OUTLINE:
+        return prim_outline_inside(p, q);
     case PRIM_KIND_COUNT:
         break;
     }
@@ -493,6 +503,8 @@ uint32_t prim_max_spans(const prim *p)
         return prim_revolve_max_spans(p);
     case PRIM_EXTRUSION:
         return prim_extrusion_max_spans(p);
+    case PRIM_OUTLINE:
+        return prim_outline_max_spans(p);
     default:
         return 1; /* convex */
     }

@@ -34,6 +34,7 @@ typedef enum prim_kind {
     PRIM_REVOLVE,  /* profile revolved about z (prim_revolve.c) */
     /* a 2D region extruded along z (prim_extrusion.c) */
     PRIM_EXTRUSION,
+    PRIM_OUTLINE, /* prism of a curved outline, z0 <= z <= z1 (prim_outline.c) */
     PRIM_KIND_COUNT
 } prim_kind;
 
@@ -47,6 +48,7 @@ struct expr_program;
 struct prim_mesh;
 struct prim_revolve;
 struct prim_extrusion;
+struct prim_outline;
 
 /* Spans an implicit leaf gives one ray at most; see prim_implicit.c for
  * what happens to a ray that crosses its surface more often. */
@@ -94,6 +96,9 @@ typedef struct prim {
         struct {
             const struct prim_extrusion *ext; /* owned by the tree's arena */
         } extrusion;
+        struct {
+            const struct prim_outline *outline; /* owned by the tree's arena */
+        } outline;
     } u;
 } prim;
 

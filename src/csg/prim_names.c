@@ -25,6 +25,8 @@ const char *prim_kind_name(prim_kind kind)
         return "revolve";
     case PRIM_EXTRUSION:
         return "extrusion";
+    case PRIM_OUTLINE:
+        return "outline";
     case PRIM_KIND_COUNT:
         break;
     }

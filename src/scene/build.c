@@ -98,7 +98,7 @@ static const struct {
     {"circle", KIND_TWOD},
     {"square", KIND_TWOD},
     {"polygon", KIND_TWOD},
-    {"text", KIND_UNSUPPORTED},
+    {"text", KIND_TWOD},
     {"resize", KIND_UNSUPPORTED},
     {"roof", KIND_UNSUPPORTED},
     {"intersection_for", KIND_UNSUPPORTED},
@@ -651,7 +651,7 @@ static sc_status build_polyhedron(builder *b, const parse_node *n, const frame *
         (uint64_t)m.face_count * m.point_count <= BUILD_MAX_POLYHEDRON_WORK)
         st = convex_planes(b, &m, &count, &bounds);
     if (st == SC_OK && count == UINT32_MAX) {
-        build_ctx c = {b->syntax->file, b->csg, b->error, b->faithful};
+        build_ctx c = {b->syntax->file, b->csg, b->error, b->faithful, NULL};
         const char *empty = NULL;
         prim p;
         st = build_mesh_prim(&c, &n->loc, "polyhedron", m.points, m.point_count,
@@ -686,7 +686,7 @@ static sc_status build_polyhedron(builder *b, const parse_node *n, const frame *
 static sc_status build_curved(builder *b, const parse_node *n, node_kind kind,
                               const frame *state, uint32_t *id)
 {
-    build_ctx c = {b->syntax->file, b->csg, b->error, b->faithful};
+    build_ctx c = {b->syntax->file, b->csg, b->error, b->faithful, NULL};
     const char *empty = NULL;
     prim p;
     memset(&p, 0, sizeof p);
@@ -701,33 +701,26 @@ static sc_status build_curved(builder *b, const parse_node *n, node_kind kind,
     return add_leaf(b, n, &p, state, id);
 }
 
-/* import(file = "...") (build_mesh.c), or else linear_extrude
- * (build_extrude.c). */
-static sc_status build_import_leaf(builder *b, const parse_node *n, int import,
+/* import(file = "...") (build_mesh.c), linear_extrude (build_extrude.c)
+ * or rotate_extrude (build_revolve.c). */
+static sc_status build_import_leaf(builder *b, const parse_node *n, node_kind kind,
                                    const frame *state, uint32_t *id)
 {
-    build_ctx c = {b->syntax->file, b->csg, b->error, b->faithful};
+    sc_error note = {SC_OK, "", 0, 0, ""}; /* a warning, e.g. a font fallback */
+    build_ctx c = {b->syntax->file, b->csg, b->error, b->faithful, &note};
     const char *empty = NULL;
     prim p;
-    sc_status st = import ? build_import(&c, n, state->emit, &p, &empty)
-                          : build_linear_extrude(&c, n, state->emit, &p, &empty);
+    sc_status st = kind == KIND_IMPORT ? build_import(&c, n, state->emit, &p, &empty)
+                   : kind == KIND_LINEAR_EXTRUDE
+                       ? build_linear_extrude(&c, n, state->emit, &p, &empty)
+                       : build_rotate_extrude(&c, n, state->emit, &p, &empty);
     if (st != SC_OK || !state->emit)
         return st;
-    if (empty)
-        return warn(b, &n->loc, "%s", empty);
-    return add_leaf(b, n, &p, state, id);
-}
-
-/* rotate_extrude (build_revolve.c). */
-static sc_status build_revolve_leaf(builder *b, const parse_node *n, const frame *state,
-                                    uint32_t *id)
-{
-    build_ctx c = {b->syntax->file, b->csg, b->error, b->faithful};
-    const char *empty = NULL;
-    prim p;
-    sc_status st = build_rotate_extrude(&c, n, state->emit, &p, &empty);
-    if (st != SC_OK || !state->emit)
-        return st;
+    if (note.message[0]) {
+        sc_location at = {b->syntax->file, note.line, note.column};
+        if ((st = warn(b, &at, "%s", note.message)) != SC_OK)
+            return st;
+    }
     if (empty)
         return warn(b, &n->loc, "%s", empty);
     return add_leaf(b, n, &p, state, id);
@@ -738,7 +731,7 @@ static sc_status build_revolve_leaf(builder *b, const parse_node *n, const frame
  * ignores 2D objects in a 3D model. */
 static sc_status build_twod_ignored(builder *b, const parse_node *n, const frame *state)
 {
-    build_ctx c = {b->syntax->file, b->csg, b->error, b->faithful};
+    build_ctx c = {b->syntax->file, b->csg, b->error, b->faithful, NULL};
     twod_region r;
     twod_init(&r);
     sc_status st = twod_from_node(&c, n, n->name, &r);
@@ -983,10 +976,8 @@ static sc_status visit(builder *b, const parse_node *n, int *opened)
             break;
         case KIND_IMPORT:
         case KIND_LINEAR_EXTRUDE:
-            st = build_import_leaf(b, n, kind == KIND_IMPORT, &f, &id);
-            break;
         case KIND_ROTATE_EXTRUDE:
-            st = build_revolve_leaf(b, n, &f, &id);
+            st = build_import_leaf(b, n, kind, &f, &id);
             break;
         case KIND_TWOD:
             st = build_twod_ignored(b, n, &f);

@@ -23,6 +23,8 @@ typedef struct build_ctx {
     csg_builder *csg; /* owner of the bytecode */
     sc_error *error;
     int faithful; /* --faithful: OpenSCAD's polygons and polyhedra */
+    /* where a builder may leave one warning (a font fallback), or NULL */
+    sc_error *note;
 } build_ctx;
 
 /* Argument helpers shared by the builders of spancast's own leaves and of

@@ -37,6 +37,7 @@
 #include <string.h>
 
 #include "base/error.h"
+#include "scene/build_text.h"
 #include "scene/faithful.h"
 #include "twod/twod.h"
 
@@ -182,6 +183,34 @@ static sc_status read_circle(const eval *e, const parse_node *n, twod_region *ou
 
 static const char polygon_points[] = "a vector of [x, y] points";
 static const char polygon_paths[] = "a vector of paths, each a vector of point indices";
+
+/* text: OpenSCAD's glyph polygons (build_text.c), outlines counter-clockwise
+ * and holes clockwise, united with the non-zero rule as its text renderer
+ * unites them. A font fallback is the caller's warning (c->note). */
+static sc_status read_text(const eval *e, const parse_node *n, twod_region *out)
+{
+    text_polygons tp;
+    memset(&tp, 0, sizeof tp);
+    sc_status st = text_faithful_polygons(e->c, n, &tp, e->c->note);
+    twod_region glyphs;
+    twod_init(&glyphs);
+    for (uint32_t k = 0; st == SC_OK && k < tp.path_count; k++) {
+        if (!twod_begin_contour(&glyphs))
+            st = nomem(e, n);
+        for (uint32_t i = tp.start[k]; st == SC_OK && i < tp.start[k + 1]; i++) {
+            if (!twod_add_point(&glyphs, tp.xy[2 * i], tp.xy[2 * i + 1]))
+                st = nomem(e, n);
+        }
+    }
+    text_polygons_free(&tp);
+    if (st == SC_OK) {
+        glyphs.sanitized = 1; /* already oriented: the union keeps holes */
+        twod_region *one = &glyphs;
+        st = clip_status(e, n, twod_clip_apply(&one, 1, TWOD_UNION, out));
+    }
+    twod_free(&glyphs);
+    return st;
+}
 
 static sc_status read_polygon(const eval *e, const parse_node *n, twod_region *out)
 {
@@ -485,8 +514,7 @@ static sc_status eval_node(const eval *e, const parse_node *n, twod_region *out,
     if (strcmp(name, "polygon") == 0)
         return read_polygon(e, n, out);
     if (strcmp(name, "text") == 0)
-        return err_set(e->c->error, SC_ERR_UNSUPPORTED, &n->loc,
-                       "'text' is not supported yet");
+        return read_text(e, n, out);
     if (is_3d(name))
         return err_set(e->c->error, SC_ERR_SEMANTIC, &n->loc,
                        "'%s' is a 3D object inside a 2D operation (%s)", name, e->outer);
