@@ -57,10 +57,10 @@ typedef enum node_kind {
     KIND_POLYHEDRON,
     KIND_IMPORT,         /* build_mesh.c */
     KIND_LINEAR_EXTRUDE, /* build_extrude.c; its children are its own */
-    KIND_HULL,           /* hull, minkowski: build_hull.c; children their own */
-    KIND_MINKOWSKI,
-    KIND_SURFACE, /* build_surface.c */
-    KIND_TORUS,   /* torus, quadric, implicit: build_implicit.c */
+    KIND_HULL,           /* build_hull.c; its children are its own */
+    KIND_MINKOWSKI,      /* build_hull.c; its children are its own */
+    KIND_SURFACE,        /* build_surface.c */
+    KIND_TORUS,          /* torus, quadric, implicit: build_implicit.c */
     KIND_QUADRIC,
     KIND_IMPLICIT, /* the last leaf kind (is_leaf) */
     KIND_MATERIAL, /* spancast's shading nodes: build_shading.c */
