@@ -229,13 +229,9 @@ static int edge_of(const face *f, uint32_t a, uint32_t b)
     return 3;
 }
 
-static double dist2(vec3 a, vec3 b)
-{
-    vec3 d = v3_sub(a, b);
-    return v3_dot(d, d);
-}
-
-/* Four points spanning a tetrahedron, or 0 when the set is flat. */
+/* Four points spanning a tetrahedron, or 0 when the set is flat. Lengths
+ * are compared by their largest coordinate, which does not underflow as
+ * squares would. */
 static int initial_simplex(const qh *q, uint32_t s[4])
 {
     uint32_t ext[6] = {0, 0, 0, 0, 0, 0};
@@ -251,7 +247,7 @@ static int initial_simplex(const qh *q, uint32_t s[4])
     s[0] = s[1] = 0;
     for (int i = 0; i < 6; i++) {
         for (int j = i + 1; j < 6; j++) {
-            double d = dist2(q->p[ext[i]], q->p[ext[j]]);
+            double d = v3_max_abs(v3_sub(q->p[ext[i]], q->p[ext[j]]));
             if (d > best) {
                 best = d;
                 s[0] = ext[i];
@@ -265,8 +261,7 @@ static int initial_simplex(const qh *q, uint32_t s[4])
     best = 0;
     s[2] = NONE;
     for (uint32_t i = 0; i < q->count; i++) {
-        vec3 c = v3_cross(axis, v3_sub(q->p[i], q->p[s[0]]));
-        double d = v3_dot(c, c);
+        double d = v3_max_abs(v3_cross(axis, v3_sub(q->p[i], q->p[s[0]])));
         if (d > best) {
             best = d;
             s[2] = i;
@@ -501,7 +496,7 @@ hull3_status hull3_compute(const vec3 *points, uint32_t count, hull3 *out)
     if (count > HULL3_MAX_POINTS)
         return HULL3_RANGE;
     for (uint32_t i = 0; i < count; i++) {
-        if (!(v3_max_abs(points[i]) <= HULL3_MAX_COORD))
+        if (!v3_is_finite(points[i]) || !(v3_max_abs(points[i]) <= HULL3_MAX_COORD))
             return HULL3_RANGE;
     }
     if (count < 4)
