@@ -10,12 +10,13 @@
  * else is a .dat text file: lines of numbers separated by spaces or tabs;
  * empty lines and lines starting with '#' are skipped; line i gives row
  * i, its k-th number column k; rows shorter than the longest are padded
- * with 0. A token that is not a finite number is an error (OpenSCAD
+ * with 0 (after the floor below is found, as OpenSCAD does, so padding
+ * may touch the floor). A token that is not a finite number is an error (OpenSCAD
  * warns and stops reading there).
  *
  * Mesh, for a grid of `lines` rows and `columns` columns of values v(i, j)
  * at (x, y) = (j, i) (shifted by -(columns - 1) / 2 and -(lines - 1) / 2
- * with center), and floor = min(0, min v - 1):
+ * with center), and floor = min(0, min v - 1) over the values read:
  *   - each grid cell is four triangles meeting at its centre, whose
  *     height is the mean of the cell's corners;
  *   - each boundary edge of the grid is a wall quad down to the floor;
@@ -40,6 +41,7 @@
 typedef struct grid {
     double *v; /* lines * columns values, row by row */
     uint32_t lines, columns;
+    double floor_z; /* min(0, smallest value read - 1) */
 } grid;
 
 static sc_status nomem(const build_ctx *c, const sc_location *loc)
@@ -154,8 +156,10 @@ static sc_status read_dat(const build_ctx *c, const sc_location *loc, const char
     if (st == SC_OK) {
         g->lines = lines;
         g->columns = columns;
-        for (size_t i = 0; i < s.count && g->v; i++)
+        for (size_t i = 0; i < s.count && g->v; i++) {
             g->v[(size_t)s.row[i] * columns + s.col[i]] = s.v[i];
+            g->floor_z = fmin(g->floor_z, s.v[i] - 1);
+        }
     }
     free(s.v);
     free(s.row);
@@ -192,6 +196,7 @@ static sc_status read_png(const build_ctx *c, const sc_location *loc, const char
                 double pixel = 0.2126 * rgb[0] + 0.7152 * rgb[1] + 0.0722 * rgb[2];
                 double z = 100.0 / 255 * (invert ? 1 - pixel : pixel);
                 g->v[(size_t)(g->lines - 1 - y) * g->columns + x] = z;
+                g->floor_z = fmin(g->floor_z, z - 1);
             }
         }
     }
@@ -249,9 +254,7 @@ static sc_status surface_mesh(const build_ctx *c, const sc_location *loc, const 
                               int center, prim *out, const char **empty)
 {
     uint32_t L = g->lines, C = g->columns;
-    double floor_z = 0;
-    for (size_t i = 0; i < (size_t)L * C; i++)
-        floor_z = fmin(floor_z, g->v[i] - 1);
+    double floor_z = g->floor_z;
     double ox = center ? -((double)C - 1) / 2 : 0, oy = center ? -((double)L - 1) / 2 : 0;
     /* Points: L*C corners, (L-1)*(C-1) centres, then the boundary at the
      * floor (indexed by grid position through floor_index). */
@@ -401,7 +404,7 @@ sc_status build_surface(const build_ctx *c, const parse_node *n, int emit, prim 
     size_t size = 0;
     const char *why = NULL;
     unsigned char *bytes = slurp(path, &size, &why);
-    grid g = {NULL, 0, 0};
+    grid g = {NULL, 0, 0, 0};
     sc_status st = SC_OK;
     if (!bytes)
         st = err_set(c->error, SC_ERR_IO, &loc, "surface: cannot read '%s': %s", path,
