@@ -352,6 +352,21 @@ static void test_resize_boxes(void **state)
     s = load("resize([3, 0, 0]) { resize([100, 0, 0]) { cube(1); } }");
     check_bounds(s, v3(0, 0, 0), v3(3, 1, 1), 1e-13);
     sc_scene_release(s);
+    /* 60 nested resizes, alone and in a hull: each is measured once (a
+     * walk that measured them again at each level would never finish) */
+    char text[4096];
+    for (int in_hull = 0; in_hull < 2; in_hull++) {
+        strcpy(text, in_hull ? "hull() { " : "");
+        for (int i = 0; i < 60; i++)
+            strcat(text, "resize([3, 0, 0]) { ");
+        strcat(text, "cube(1);");
+        for (int i = 0; i < 60; i++)
+            strcat(text, " }");
+        strcat(text, in_hull ? " }" : "");
+        s = load(text);
+        check_bounds(s, v3(0, 0, 0), v3(3, 1, 1), 1e-12);
+        sc_scene_release(s);
+    }
     /* an empty child: nothing to resize */
     s = load("resize([3, 3, 3]) { cube(0); }");
     assert_int_equal(scene_tree(s)->root, CSG_EMPTY);

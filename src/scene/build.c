@@ -153,6 +153,8 @@ typedef struct builder {
     int faithful;           /* OpenSCAD's polyhedra for spheres and cylinders */
     const parse_node *root; /* the first '!' node, or NULL */
     uint32_t root_id;       /* its result */
+    /* resize matrices measured so far (build_hull.h) */
+    build_resize_cache *resize_cache;
 } builder;
 
 static sc_status nomem(builder *b)
@@ -723,9 +725,10 @@ static sc_status build_hull_leaf(builder *b, const parse_node *n, node_kind kind
     build_ctx c = {b->syntax->file, b->csg, b->error, b->faithful};
     const char *empty = NULL;
     build_prims leaves = {NULL, 0, 0};
-    sc_status st = kind == KIND_HULL
-                       ? build_hull(&c, n, state->emit, &leaves, &empty)
-                       : build_minkowski(&c, n, state->emit, &leaves, &empty);
+    sc_status st =
+        kind == KIND_HULL
+            ? build_hull(&c, n, state->emit, &b->resize_cache, &leaves, &empty)
+            : build_minkowski(&c, n, state->emit, &b->resize_cache, &leaves, &empty);
     uint32_t *ids = leaves.count ? calloc(leaves.count, sizeof *ids) : NULL;
     if (st == SC_OK && leaves.count && !ids)
         st = nomem(b);
@@ -1024,7 +1027,7 @@ static sc_status visit(builder *b, const parse_node *n, int *opened)
         build_ctx c = {b->syntax->file, b->csg, b->error, b->faithful};
         const char *warning = NULL;
         affine m;
-        if ((st = build_resize(&c, n, &m, &warning)) != SC_OK)
+        if ((st = build_resize(&c, n, &b->resize_cache, &m, &warning)) != SC_OK)
             return st;
         if (warning && f.emit && (st = warn(b, &n->loc, "%s", warning)) != SC_OK)
             return st;
@@ -1114,6 +1117,7 @@ sc_status build_scene(const parse_tree *syntax, int faithful, csg_tree **out,
     sc_status st = walk(&b, &root);
     free(b.ids);
     free(b.frames);
+    build_resize_cache_free(b.resize_cache);
     if (st != SC_OK) {
         csg_builder_free(b.csg);
         shading_free(b.shading);

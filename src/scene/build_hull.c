@@ -73,7 +73,93 @@ typedef struct walk {
     const build_ctx *c;
     const char *owner; /* "hull", "minkowski" or "resize", for messages */
     int convex;        /* parts must be convex (minkowski) */
+    build_resize_cache **cache;
 } walk;
+
+/* Each resize node's matrix, computed once per build: a resize inside a
+ * resize (or hull) would otherwise be measured again at every level above
+ * it, exponentially in the nesting. Open addressing on the node's
+ * address. */
+struct build_resize_cache {
+    const parse_node **keys;
+    affine *matrices;
+    const char **warnings;
+    size_t count, cap; /* cap is a power of two */
+};
+
+void build_resize_cache_free(build_resize_cache *cache)
+{
+    if (!cache)
+        return;
+    free(cache->keys);
+    free(cache->matrices);
+    free(cache->warnings);
+    free(cache);
+}
+
+static size_t slot_of(const build_resize_cache *cache, const parse_node *n)
+{
+    size_t h = (size_t)(uintptr_t)n;
+    h ^= h >> 17;
+    h *= (size_t)0x9e3779b97f4a7c15ull;
+    size_t i = (h ^ (h >> 29)) & (cache->cap - 1);
+    while (cache->keys[i] && cache->keys[i] != n)
+        i = (i + 1) & (cache->cap - 1);
+    return i;
+}
+
+static const affine *cache_find(const build_resize_cache *cache, const parse_node *n,
+                                const char **warning)
+{
+    if (!cache || !cache->cap)
+        return NULL;
+    size_t i = slot_of(cache, n);
+    if (!cache->keys[i])
+        return NULL;
+    *warning = cache->warnings[i];
+    return &cache->matrices[i];
+}
+
+/* Returns 0 when memory ran out. */
+static int cache_put(build_resize_cache **slot, const parse_node *n, const affine *m,
+                     const char *warning)
+{
+    build_resize_cache *cache = *slot;
+    if (!cache && !(cache = *slot = calloc(1, sizeof *cache)))
+        return 0;
+    if (2 * (cache->count + 1) > cache->cap) {
+        build_resize_cache grown = {NULL, NULL, NULL, 0,
+                                    cache->cap ? 2 * cache->cap : 64};
+        grown.keys = calloc(grown.cap, sizeof *grown.keys);
+        grown.matrices = malloc(grown.cap * sizeof *grown.matrices);
+        grown.warnings = malloc(grown.cap * sizeof *grown.warnings);
+        if (!grown.keys || !grown.matrices || !grown.warnings) {
+            free(grown.keys);
+            free(grown.matrices);
+            free(grown.warnings);
+            return 0;
+        }
+        for (size_t i = 0; i < cache->cap; i++) {
+            if (!cache->keys[i])
+                continue;
+            size_t j = slot_of(&grown, cache->keys[i]);
+            grown.keys[j] = cache->keys[i];
+            grown.matrices[j] = cache->matrices[i];
+            grown.warnings[j] = cache->warnings[i];
+        }
+        grown.count = cache->count;
+        free(cache->keys);
+        free(cache->matrices);
+        free(cache->warnings);
+        *cache = grown;
+    }
+    size_t i = slot_of(cache, n);
+    cache->keys[i] = n;
+    cache->matrices[i] = *m;
+    cache->warnings[i] = warning;
+    cache->count++;
+    return 1;
+}
 
 static sc_status nomem(const build_ctx *c, const sc_location *loc)
 {
@@ -492,8 +578,8 @@ static sc_status depth_error(const walk *w, const parse_node *n)
 
 static sc_status minkowski_parts(const walk *w, const parse_node *n, const affine *m,
                                  int depth, partlist *out);
-static sc_status resize_matrix(const build_ctx *c, const parse_node *n, int depth,
-                               affine *out, const char **warning);
+static sc_status resize_matrix(const walk *w, const parse_node *n, int depth, affine *out,
+                               const char **warning);
 
 /* Appends the convex parts (or, for a hull, point sets) of the children of
  * parent, through m, to out. */
@@ -516,7 +602,7 @@ static sc_status collect(const walk *w, const parse_node *parent, const affine *
             if (n->name[0] == 'm')
                 st = read_matrix(c, n, &local, &ok);
             else
-                st = resize_matrix(c, n, depth + 1, &local, &warning);
+                st = resize_matrix(w, n, depth + 1, &local, &warning);
             if (st == SC_OK && ok) {
                 affine inner = affine_mul(m, &local);
                 st = collect(w, n, &inner, depth + 1, out);
@@ -553,7 +639,7 @@ static sc_status collect(const walk *w, const parse_node *parent, const affine *
             }
             free(set.p);
         } else if (strcmp(n->name, "hull") == 0) {
-            walk inner = {c, "hull", 0};
+            walk inner = {c, "hull", 0, w->cache};
             partlist sub = {NULL, 0, 0};
             st = collect(&inner, n, m, depth + 1, &sub);
             pointset *part = NULL;
@@ -605,7 +691,7 @@ static sc_status reduce(const walk *w, const parse_node *n, partlist *l)
 static sc_status minkowski_parts(const walk *w, const parse_node *n, const affine *m,
                                  int depth, partlist *out)
 {
-    walk inner = {w->c, "minkowski", 1};
+    walk inner = {w->c, "minkowski", 1, w->cache};
     partlist acc = {NULL, 0, 0};
     sc_status st = SC_OK;
     int first = 1;
@@ -756,11 +842,11 @@ static sc_status emit_hull(const build_ctx *c, const parse_node *n, const points
     return push_prim(c, n, out, &p);
 }
 
-sc_status build_hull(const build_ctx *c, const parse_node *n, int emit, build_prims *out,
-                     const char **empty)
+sc_status build_hull(const build_ctx *c, const parse_node *n, int emit,
+                     build_resize_cache **cache, build_prims *out, const char **empty)
 {
     memset(out, 0, sizeof *out);
-    walk w = {c, "hull", 0};
+    walk w = {c, "hull", 0, cache};
     partlist parts = {NULL, 0, 0};
     affine id = affine_identity();
     sc_status st = collect(&w, n, &id, 0, &parts);
@@ -782,10 +868,11 @@ sc_status build_hull(const build_ctx *c, const parse_node *n, int emit, build_pr
 }
 
 sc_status build_minkowski(const build_ctx *c, const parse_node *n, int emit,
-                          build_prims *out, const char **empty)
+                          build_resize_cache **cache, build_prims *out,
+                          const char **empty)
 {
     memset(out, 0, sizeof *out);
-    walk w = {c, "minkowski", 1};
+    walk w = {c, "minkowski", 1, cache};
     partlist parts = {NULL, 0, 0};
     affine id = affine_identity();
     sc_status st = minkowski_parts(&w, n, &id, 0, &parts);
@@ -802,7 +889,7 @@ sc_status build_minkowski(const build_ctx *c, const parse_node *n, int emit,
 
 /* The six support values of the children of parent through m: out[2k] =
  * max x_k, out[2k + 1] = max -x_k; -inf where there is nothing. */
-static sc_status support(const build_ctx *c, const parse_node *parent, const affine *m,
+static sc_status support(const walk *w, const parse_node *parent, const affine *m,
                          int depth, double out[6]);
 
 static void support_points(const pointset *s, double out[6])
@@ -822,23 +909,23 @@ static vec3 row(const affine *m, int k)
     return v3(m->m[k][0], m->m[k][1], m->m[k][2]);
 }
 
-static sc_status support_node(const build_ctx *c, const parse_node *n, const affine *m,
+static sc_status support_node(const walk *w, const parse_node *n, const affine *m,
                               int depth, double out[6])
 {
-    walk w = {c, "resize", 0};
+    const build_ctx *c = w->c;
     sc_status st = SC_OK;
     if (is_name(n, group_names))
-        return support(c, n, m, depth + 1, out);
+        return support(w, n, m, depth + 1, out);
     if (strcmp(n->name, "multmatrix") == 0 || strcmp(n->name, "resize") == 0) {
         affine local;
         int ok = 1;
         const char *warning = NULL;
         st = n->name[0] == 'm' ? read_matrix(c, n, &local, &ok)
-                               : resize_matrix(c, n, depth + 1, &local, &warning);
+                               : resize_matrix(w, n, depth + 1, &local, &warning);
         if (st != SC_OK || !ok)
             return st;
         affine inner = affine_mul(m, &local);
-        return support(c, n, &inner, depth + 1, out);
+        return support(w, n, &inner, depth + 1, out);
     }
     if (strcmp(n->name, "difference") == 0 || strcmp(n->name, "intersection") == 0) {
         int first = 1;
@@ -849,7 +936,7 @@ static sc_status support_node(const build_ctx *c, const parse_node *n, const aff
                 continue;
             double s[6] = {-INFINITY, -INFINITY, -INFINITY,
                            -INFINITY, -INFINITY, -INFINITY};
-            if ((st = support_node(c, k, m, depth + 1, s)) != SC_OK)
+            if ((st = support_node(w, k, m, depth + 1, s)) != SC_OK)
                 return st;
             for (int i = 0; i < 6; i++)
                 acc[i] = first ? s[i] : fmin(acc[i], s[i]);
@@ -871,7 +958,7 @@ static sc_status support_node(const build_ctx *c, const parse_node *n, const aff
                 continue;
             double s[6] = {-INFINITY, -INFINITY, -INFINITY,
                            -INFINITY, -INFINITY, -INFINITY};
-            if ((st = support_node(c, k, any ? &linear : m, depth + 1, s)) != SC_OK)
+            if ((st = support_node(w, k, any ? &linear : m, depth + 1, s)) != SC_OK)
                 return st;
             if (isinf(s[0]) && s[0] < 0)
                 continue; /* no geometry: skipped, as OpenSCAD does */
@@ -950,24 +1037,22 @@ static sc_status support_node(const build_ctx *c, const parse_node *n, const aff
     view.first_child = view.last_child = &lone;
     view.child_count = 1;
     partlist parts = {NULL, 0, 0};
-    st = collect(&w, &view, m, depth + 1, &parts);
+    st = collect(w, &view, m, depth + 1, &parts);
     for (uint32_t i = 0; i < parts.count && st == SC_OK; i++)
         support_points(&parts.items[i], out);
     parts_free(&parts);
     return st;
 }
 
-static sc_status support(const build_ctx *c, const parse_node *parent, const affine *m,
+static sc_status support(const walk *w, const parse_node *parent, const affine *m,
                          int depth, double out[6])
 {
-    if (depth > BUILD_HULL_MAX_DEPTH) {
-        walk w = {c, "resize", 0};
-        return depth_error(&w, parent);
-    }
+    if (depth > BUILD_HULL_MAX_DEPTH)
+        return depth_error(w, parent);
     for (const parse_node *n = parent->first_child; n; n = n->next) {
         if (skipped(n) || is_name(n, shading_names))
             continue;
-        sc_status st = support_node(c, n, m, depth, out);
+        sc_status st = support_node(w, n, m, depth, out);
         if (st != SC_OK)
             return st;
     }
@@ -1002,9 +1087,29 @@ static sc_status read_triple(const build_ctx *c, const parse_node *n, const char
     return SC_OK;
 }
 
-static sc_status resize_matrix(const build_ctx *c, const parse_node *n, int depth,
-                               affine *out, const char **warning)
+/* The matrix of resize node n, measured (once per build: see the cache) or
+ * taken from the cache. */
+static sc_status measure(const walk *w, const parse_node *n, int depth, affine *out,
+                         const char **warning);
+
+static sc_status resize_matrix(const walk *w, const parse_node *n, int depth, affine *out,
+                               const char **warning)
 {
+    const affine *known = cache_find(*w->cache, n, warning);
+    if (known) {
+        *out = *known;
+        return SC_OK;
+    }
+    sc_status st = measure(w, n, depth, out, warning);
+    if (st == SC_OK && !cache_put(w->cache, n, out, *warning))
+        st = nomem(w->c, &n->loc);
+    return st;
+}
+
+static sc_status measure(const walk *w, const parse_node *n, int depth, affine *out,
+                         const char **warning)
+{
+    const build_ctx *c = w->c;
     double size[3] = {0, 0, 0}, autosize[3] = {0, 0, 0};
     *out = affine_identity();
     sc_status st = read_triple(c, n, "newsize", 0, 0, size);
@@ -1021,7 +1126,7 @@ static sc_status resize_matrix(const build_ctx *c, const parse_node *n, int dept
         }
     }
     double s[6] = {-INFINITY, -INFINITY, -INFINITY, -INFINITY, -INFINITY, -INFINITY};
-    if ((st = support(c, n, out, depth, s)) != SC_OK)
+    if ((st = support(w, n, out, depth, s)) != SC_OK)
         return st;
     if (isinf(s[0]) && s[0] < 0)
         return SC_OK; /* no geometry: nothing to resize */
@@ -1053,8 +1158,9 @@ static sc_status resize_matrix(const build_ctx *c, const parse_node *n, int dept
     return SC_OK;
 }
 
-sc_status build_resize(const build_ctx *c, const parse_node *n, affine *out,
-                       const char **warning)
+sc_status build_resize(const build_ctx *c, const parse_node *n,
+                       build_resize_cache **cache, affine *out, const char **warning)
 {
-    return resize_matrix(c, n, 0, out, warning);
+    walk w = {c, "resize", 0, cache};
+    return resize_matrix(&w, n, 0, out, warning);
 }
