@@ -474,7 +474,8 @@ static size_t chunk(unsigned char *out, const char *type, const unsigned char *d
 {
     size_t k = put32(out, n);
     memcpy(out + k, type, 4);
-    memcpy(out + k + 4, data, n);
+    if (n)
+        memcpy(out + k + 4, data, n);
     k += 4 + n;
     return k + put32(out + k, crc32_of(out + 4, 4 + n));
 }

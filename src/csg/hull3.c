@@ -113,6 +113,8 @@ static int exact_det4_sign(const vec3 rows[4])
                 n = grow(e, n, s * terms[i]);
         }
     }
+    if (n == 0)
+        return 0; /* every product was zero */
     /* A nonoverlapping expansion has the sign of its largest component. */
     double top = e[n - 1];
     return top > 0 ? 1 : top < 0 ? -1 : 0;
