@@ -111,9 +111,9 @@ expect_usage "cannot write depth to 'd.png': depth needs a floating-point format
     render m.csg -o x.png --depth=d.png
 
 # errors from the model: file:line:col, exit 1
-printf 'union() {\n  hull() {\n    cube(1);\n  }\n}\n' >hull.csg
-expect 1 "hull.csg:2:3: error: 'hull' is not supported yet" render hull.csg -o x.png
-expect 1 "hull.csg:2:3: error: 'hull' is not supported yet" info hull.csg
+printf 'union() {\n  projection() {\n    cube(1);\n  }\n}\n' >projection.csg
+expect 1 "projection.csg:2:3: error: 'projection' is not supported yet" render projection.csg -o x.png
+expect 1 "projection.csg:2:3: error: 'projection' is not supported yet" info projection.csg
 printf 'cube(1;\n' >syntax.csg
 expect_match 1 '^syntax\.csg:1:7: error: ' render syntax.csg -o x.png
 expect 1 "spancast: error: cannot open 'missing.csg': No such file or directory" \

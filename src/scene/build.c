@@ -41,6 +41,7 @@
 #include "base/grow.h"
 #include "scene/build_shading.h"
 #include "scene/build_curved.h"
+#include "scene/build_hull.h"
 #include "scene/build_mesh.h"
 #include "scene/build_revolve.h"
 #include "scene/faithful.h"
@@ -60,10 +61,14 @@ typedef enum node_kind {
     KIND_LINEAR_EXTRUDE, /* build_extrude.c; its children are its own */
     KIND_ROTATE_EXTRUDE, /* build_revolve.c; its children are its own */
     KIND_TWOD,           /* 2D shapes: checked, then ignored with a warning */
+    KIND_HULL,           /* build_hull.c; its children are its own */
+    KIND_MINKOWSKI,      /* build_hull.c; its children are its own */
+    KIND_SURFACE,        /* build_surface.c */
     KIND_TORUS,          /* torus, quadric, implicit: build_implicit.c */
     KIND_QUADRIC,
     KIND_IMPLICIT, /* the last leaf kind (is_leaf) */
     KIND_MATERIAL, /* spancast's shading nodes: build_shading.c */
+    KIND_RESIZE,   /* a scale from the children's box: build_hull.c */
     KIND_LIGHT,
     KIND_CAMERA,
     KIND_BACKGROUND,
@@ -87,19 +92,19 @@ static const struct {
     {"cylinder", KIND_CYLINDER},
     {"polyhedron", KIND_POLYHEDRON},
     /* What else OpenSCAD writes. */
-    {"hull", KIND_UNSUPPORTED},
-    {"minkowski", KIND_UNSUPPORTED},
+    {"hull", KIND_HULL},
+    {"minkowski", KIND_MINKOWSKI},
     {"linear_extrude", KIND_LINEAR_EXTRUDE},
     {"rotate_extrude", KIND_ROTATE_EXTRUDE},
     {"import", KIND_IMPORT},
-    {"surface", KIND_UNSUPPORTED},
+    {"surface", KIND_SURFACE},
     {"projection", KIND_UNSUPPORTED},
     {"offset", KIND_TWOD},
     {"circle", KIND_TWOD},
     {"square", KIND_TWOD},
     {"polygon", KIND_TWOD},
     {"text", KIND_TWOD},
-    {"resize", KIND_UNSUPPORTED},
+    {"resize", KIND_RESIZE},
     {"roof", KIND_UNSUPPORTED},
     {"intersection_for", KIND_UNSUPPORTED},
     /* spancast's own extensions. */
@@ -155,6 +160,8 @@ typedef struct builder {
     /* the first 2D shape ignored in the 3D model, and the 3D leaves built */
     const parse_node *first_2d;
     size_t solid_leaves;
+    /* resize matrices measured so far (build_hull.h) */
+    build_resize_cache *resize_cache;
 } builder;
 
 static sc_status nomem(builder *b)
@@ -744,6 +751,51 @@ static sc_status build_twod_ignored(builder *b, const parse_node *n, const frame
                 n->name);
 }
 
+/* hull and minkowski (build_hull.c): one or several convex leaves, united. */
+static sc_status build_hull_leaf(builder *b, const parse_node *n, node_kind kind,
+                                 const frame *state, uint32_t *id)
+{
+    build_ctx c = {b->syntax->file, b->csg, b->error, b->faithful, NULL};
+    const char *empty = NULL;
+    build_prims leaves = {NULL, 0, 0};
+    sc_status st =
+        kind == KIND_HULL
+            ? build_hull(&c, n, state->emit, &b->resize_cache, &leaves, &empty)
+            : build_minkowski(&c, n, state->emit, &b->resize_cache, &leaves, &empty);
+    uint32_t *ids = leaves.count ? calloc(leaves.count, sizeof *ids) : NULL;
+    if (st == SC_OK && leaves.count && !ids)
+        st = nomem(b);
+    if (st == SC_OK && state->emit && empty)
+        st = warn(b, &n->loc, "%s", empty);
+    for (uint32_t i = 0; st == SC_OK && state->emit && i < leaves.count; i++)
+        st = add_leaf(b, n, &leaves.items[i], state, &ids[i]);
+    if (st == SC_OK && leaves.count == 1)
+        *id = ids[0];
+    if (st == SC_OK && leaves.count > 1) {
+        *id = csg_builder_op(b->csg, CSG_UNION, ids, leaves.count);
+        if (csg_builder_failed(b->csg))
+            st = nomem(b);
+    }
+    free(ids);
+    free(leaves.items);
+    return st;
+}
+
+/* surface(file) (build_surface.c). */
+static sc_status build_surface_leaf(builder *b, const parse_node *n, const frame *state,
+                                    uint32_t *id)
+{
+    build_ctx c = {b->syntax->file, b->csg, b->error, b->faithful, NULL};
+    const char *empty = NULL;
+    prim p;
+    sc_status st = build_surface(&c, n, state->emit, &p, &empty);
+    if (st != SC_OK || !state->emit)
+        return st;
+    if (empty)
+        return warn(b, &n->loc, "%s", empty);
+    return add_leaf(b, n, &p, state, id);
+}
+
 /* ---- boolean nodes with arguments ---- */
 
 /* multmatrix(m = [[...], [...], [...], [0, 0, 0, 1]]): a row-major 4x4
@@ -953,7 +1005,8 @@ static sc_status visit(builder *b, const parse_node *n, int *opened)
         return build_background(b->shading, b->syntax, n, f.emit, b->error);
     if (is_leaf(kind)) {
         if (n->child_count > 0 && f.emit && kind != KIND_LINEAR_EXTRUDE &&
-            kind != KIND_ROTATE_EXTRUDE && kind != KIND_TWOD &&
+            kind != KIND_ROTATE_EXTRUDE && kind != KIND_TWOD && kind != KIND_HULL &&
+            kind != KIND_MINKOWSKI &&
             (st = warn(b, &n->loc, "'%s' takes no children; they are ignored",
                        n->name)) != SC_OK)
             return st;
@@ -982,6 +1035,13 @@ static sc_status visit(builder *b, const parse_node *n, int *opened)
         case KIND_TWOD:
             st = build_twod_ignored(b, n, &f);
             break;
+        case KIND_HULL:
+        case KIND_MINKOWSKI:
+            st = build_hull_leaf(b, n, kind, &f, &id);
+            break;
+        case KIND_SURFACE:
+            st = build_surface_leaf(b, n, &f, &id);
+            break;
         default:
             st = build_polyhedron(b, n, &f, &id);
             break;
@@ -1002,6 +1062,15 @@ static sc_status visit(builder *b, const parse_node *n, int *opened)
                 return st;
             f.emit = 0; /* still counted: the empty solid */
         }
+    } else if (kind == KIND_RESIZE) {
+        build_ctx c = {b->syntax->file, b->csg, b->error, b->faithful, NULL};
+        const char *warning = NULL;
+        affine m;
+        if ((st = build_resize(&c, n, &b->resize_cache, &m, &warning)) != SC_OK)
+            return st;
+        if (warning && f.emit && (st = warn(b, &n->loc, "%s", warning)) != SC_OK)
+            return st;
+        f.to_world = affine_mul(&f.to_world, &m);
     } else if (kind == KIND_COLOR) {
         if ((st = read_color(b, n, f.emit, f.color)) != SC_OK)
             return st;
@@ -1091,6 +1160,7 @@ sc_status build_scene(const parse_tree *syntax, int faithful, csg_tree **out,
         st = err_set(error, SC_ERR_SEMANTIC, &b.first_2d->loc,
                      "the model has only 2D objects, which have no 3D output (extrude "
                      "them with linear_extrude)");
+    build_resize_cache_free(b.resize_cache);
     if (st != SC_OK) {
         csg_builder_free(b.csg);
         shading_free(b.shading);

@@ -8,6 +8,7 @@
  *                                             planes, others as meshes)
  *   import                                    an STL or OFF mesh (build_mesh.h)
  *   linear_extrude                            a prism of its 2D children (build_mesh.h)
+ *   hull, minkowski, surface, resize          build_hull.h
  *   material                                  union; sets its children's material
  *   light, camera, background                 no geometry (build_shading.h)
  *   torus, quadric, implicit                  spancast's curved leaves

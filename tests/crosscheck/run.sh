@@ -15,6 +15,8 @@
 #                                       the faithful rules)
 #   // faithful: skip REASON           (optional: no faithful row, for
 #                                       models faithful mode cannot build yet)
+#   // data: FILE ...                  (optional: files beside the model
+#                                       that it reads, copied along)
 # compare judges each pair and prints its row; the rows also go to
 # WORKDIR/rows, which tests/crosscheck/report gathers. Exits non-zero when
 # any check fails.
@@ -37,6 +39,10 @@ now() { date +%s.%N; }
 elapsed() { awk -v a="$1" -v b="$2" 'BEGIN { printf "%.2f", b - a }'; }
 
 cp "$model" "$work/$name.scad"
+# Files the model reads (surface, import), named by `// data: FILE ...`.
+for data in $(setting data); do
+    cp "$(dirname "$model")/$data" "$work/"
+done
 openscad -o "$work/$name.csg" "$work/$name.scad" >"$work/openscad.log" 2>&1 ||
     { cat "$work/openscad.log" >&2; exit 1; }
 t0=$(now)

@@ -1,0 +1,645 @@
+/* Tests of hull(), minkowski(), resize() and surface() (build_hull.c,
+ * build_surface.c): solids and bounding boxes against hand computations,
+ * curved children hulled as OpenSCAD's polyhedra in both modes, unions of
+ * convex parts distributed over minkowski, OpenSCAD's resize rules, height
+ * maps from .dat text and PNG files, and the exact errors and warnings. */
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <cmocka.h>
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+
+#include "scene/build.h"
+#include "scene/scene.h"
+
+static sc_scene *load_opts(const char *name, const char *text, int faithful)
+{
+    sc_scene *s = NULL;
+    sc_error e;
+    sc_load_options o;
+    sc_load_options_init(&o);
+    o.faithful = faithful;
+    sc_status st = sc_scene_load_string(name, text, strlen(text), &o, &s, &e);
+    if (st != SC_OK) {
+        char buf[1024];
+        fail_msg("unexpected error: %s", sc_error_format(&e, buf, sizeof buf));
+    }
+    return s;
+}
+
+static sc_scene *load(const char *text)
+{
+    return load_opts("m.csg", text, 0);
+}
+
+static void check_error(const char *name, const char *text, sc_status status,
+                        const char *expected)
+{
+    sc_scene *s = (sc_scene *)1;
+    sc_error e;
+    assert_int_equal(sc_scene_load_string(name, text, strlen(text), NULL, &s, &e),
+                     status);
+    assert_null(s);
+    char buf[1024];
+    assert_string_equal(sc_error_format(&e, buf, sizeof buf), expected);
+}
+
+static void check_warning(const char *text, const char *expected)
+{
+    sc_scene *s = load(text);
+    assert_int_equal(sc_scene_warning_count(s), 1);
+    assert_string_equal(sc_scene_warning(s, 0)->message, expected);
+    assert_int_equal(scene_tree(s)->root, CSG_EMPTY);
+    sc_scene_release(s);
+}
+
+static int inside(const sc_scene *s, double x, double y, double z)
+{
+    return csg_inside(scene_tree(s), v3(x, y, z));
+}
+
+static void check_bounds(const sc_scene *s, vec3 lo, vec3 hi, double tol)
+{
+    bbox b = scene_tree(s)->bounds;
+    for (int k = 0; k < 3; k++) {
+        if (!(fabs(v3_get(b.lo, k) - v3_get(lo, k)) <= tol) ||
+            !(fabs(v3_get(b.hi, k) - v3_get(hi, k)) <= tol))
+            fail_msg("bounds [%.17g, %.17g, %.17g] to [%.17g, %.17g, %.17g], expected "
+                     "[%.17g, %.17g, %.17g] to [%.17g, %.17g, %.17g]",
+                     b.lo.x, b.lo.y, b.lo.z, b.hi.x, b.hi.y, b.hi.z, lo.x, lo.y, lo.z,
+                     hi.x, hi.y, hi.z);
+    }
+}
+
+#define PI 3.14159265358979323846
+
+/* ---- hull ---- */
+
+static void test_hull_boxes(void **state)
+{
+    (void)state;
+    /* two unit cubes 4 apart: the box [0, 5] x [0, 1] x [0, 1] */
+    sc_scene *s = load("hull() { cube(1); multmatrix([[1, 0, 0, 4], [0, 1, 0, 0], "
+                       "[0, 0, 1, 0], [0, 0, 0, 1]]) { cube(1); } }");
+    assert_int_equal(scene_tree(s)->leaf_count, 1);
+    assert_int_equal(scene_tree(s)->leaves[0].prim.kind, PRIM_CONVEX);
+    assert_int_equal(scene_tree(s)->leaves[0].prim.u.convex.count, 6);
+    assert_true(inside(s, 2.5, 0.5, 0.5));
+    assert_false(inside(s, 2.5, 1.01, 0.5));
+    check_bounds(s, v3(0, 0, 0), v3(5, 1, 1), 0);
+    sc_scene_release(s);
+    /* a cube and a point-like tip above: a pyramid (the cube's top corners
+     * to the apex), under group, colour and a rotation of the whole */
+    s = load(
+        "multmatrix([[0, -1, 0, 0], [1, 0, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]) { "
+        "hull() { color(\"red\") { cube(2, center = true); } group() {"
+        "polyhedron(points = [[0, 0, 4], [0.001, 0, 4], [0, 0.001, 4], [0, 0, 4.001]], "
+        "faces = [[0, 1, 2], [0, 3, 1], [0, 2, 3], [1, 3, 2]]); } %cube(50); } }");
+    assert_true(inside(s, 0, 0, 3.9));
+    assert_true(inside(s, 0.9, 0.9, 1.01));
+    assert_false(inside(s, 0.9, 0.9, 2.5));
+    assert_false(inside(s, 10, 10, 10)); /* the '%' cube is left out */
+    sc_scene_release(s);
+}
+
+/* Spheres are hulled as OpenSCAD's polyhedra, in default mode too: a
+ * sphere of 8 fragments has 4 rings, its top is flat at r cos(22.5°). */
+static void test_hull_curved(void **state)
+{
+    (void)state;
+    for (int faithful = 0; faithful < 2; faithful++) {
+        sc_scene *s = load_opts("m.csg", "hull() { sphere(r = 1, $fn = 8); }", faithful);
+        double top = cos(22.5 * PI / 180);
+        assert_true(inside(s, 0, 0, top - 1e-9));
+        assert_false(inside(s, 0, 0, top + 1e-9));
+        check_bounds(s, v3(-sin(67.5 * PI / 180), -sin(67.5 * PI / 180), -top),
+                     v3(sin(67.5 * PI / 180), sin(67.5 * PI / 180), top), 1e-12);
+        sc_scene_release(s);
+    }
+    /* a rounded box from eight spheres: a plane set or, with many faces, a
+     * mesh; the middle of each face is at the spheres' extent */
+    sc_scene *s = load(
+        "hull() { "
+        "multmatrix([[1,0,0,-5],[0,1,0,-3],[0,0,1,-1],[0,0,0,1]]) { sphere(1, $fn = 30); "
+        "}"
+        "multmatrix([[1,0,0,5],[0,1,0,-3],[0,0,1,-1],[0,0,0,1]]) { sphere(1, $fn = 30); }"
+        "multmatrix([[1,0,0,-5],[0,1,0,3],[0,0,1,-1],[0,0,0,1]]) { sphere(1, $fn = 30); }"
+        "multmatrix([[1,0,0,5],[0,1,0,3],[0,0,1,-1],[0,0,0,1]]) { sphere(1, $fn = 30); }"
+        "multmatrix([[1,0,0,-5],[0,1,0,-3],[0,0,1,1],[0,0,0,1]]) { sphere(1, $fn = 30); }"
+        "multmatrix([[1,0,0,5],[0,1,0,-3],[0,0,1,1],[0,0,0,1]]) { sphere(1, $fn = 30); }"
+        "multmatrix([[1,0,0,-5],[0,1,0,3],[0,0,1,1],[0,0,0,1]]) { sphere(1, $fn = 30); }"
+        "multmatrix([[1,0,0,5],[0,1,0,3],[0,0,1,1],[0,0,0,1]]) { sphere(1, $fn = 30); "
+        "}}");
+    double top = 1 + cos(6 * PI / 180); /* 15 rings: the cap ring at 6° */
+    assert_true(inside(s, 0, 0, top - 1e-9));
+    assert_false(inside(s, 0, 0, top + 1e-9));
+    assert_true(inside(s, 5.9, 0, 0));
+    assert_false(inside(s, 6.01, 0, 0));
+    sc_scene_release(s);
+}
+
+/* Extrusions inside a hull give OpenSCAD's polygon vertices in both modes
+ * (default mode builds exact extrusion and revolve leaves, which have no
+ * vertices of their own): a hexagon prism, and a revolved square ring. */
+static void test_hull_extrusions(void **state)
+{
+    (void)state;
+    for (int faithful = 0; faithful < 2; faithful++) {
+        sc_scene *s = load_opts(
+            "m.csg",
+            "hull() { linear_extrude(height = 2) { circle(r = 3, $fn = 6); } "
+            "multmatrix([[1,0,0,10],[0,1,0,0],[0,0,1,0],[0,0,0,1]]) { cube(1); } }",
+            faithful);
+        assert_true(inside(s, -2.9, 0, 1));     /* the hexagon's corner at (-3, 0) */
+        assert_false(inside(s, 0, 2.7, 1));     /* past its top edge, y = 2.598 */
+        assert_true(inside(s, 10.5, 0.5, 0.5)); /* the cube */
+        sc_scene_release(s);
+        s = load_opts(
+            "m.csg",
+            "hull() { rotate_extrude($fn = 4) { "
+            "multmatrix([[1,0,0,4],[0,1,0,0],[0,0,1,0],[0,0,0,1]]) { square(1); } "
+            "} }",
+            faithful);
+        /* four rings of points at radius 4 and 5 on the axes, z 0 to 1 */
+        assert_true(inside(s, 0, 0, 0.5) && inside(s, 4.9, 0, 0.5) &&
+                    inside(s, 0, -4.9, 0.9));
+        assert_false(inside(s, 3, 3, 0.5) || inside(s, 0, 0, 1.1));
+        sc_scene_release(s);
+    }
+}
+
+static void test_hull_errors(void **state)
+{
+    (void)state;
+    check_error("m.csg", "hull() {\n  difference() { cube(2); sphere(1); }\n}",
+                SC_ERR_UNSUPPORTED,
+                "m.csg:2:3: error: 'difference' inside hull is not supported yet");
+    check_error("m.csg", "hull() { group() { intersection() { cube(2); } } }",
+                SC_ERR_UNSUPPORTED,
+                "m.csg:1:20: error: 'intersection' inside hull is not supported yet");
+    check_error("m.csg", "hull() { torus(r1 = 2, r2 = 1); }", SC_ERR_UNSUPPORTED,
+                "m.csg:1:10: error: 'torus' inside hull is not supported yet");
+    check_error("m.csg", "hull() { sphere(r = \"x\"); }", SC_ERR_SEMANTIC,
+                "m.csg:1:21: error: wrong type for argument 'r' of 'sphere' (expected a "
+                "number)");
+    check_error("m.csg", "hull() { sphere(r = 1, $fn = 0, $fa = 0, $fs = 0); }",
+                SC_ERR_LIMIT,
+                "m.csg:1:10: error: hull: $fn, $fa and $fs of radius 1 give too many "
+                "fragments (limit is 4096)");
+    /* a '%' hull is still checked */
+    check_error("m.csg", "cube(); %hull() { difference() { cube(); } }",
+                SC_ERR_UNSUPPORTED,
+                "m.csg:1:19: error: 'difference' inside hull is not supported yet");
+    /* deep nesting is refused, not followed */
+    size_t depth = 1100;
+    char *text = malloc(depth * 10 + 64);
+    strcpy(text, "hull() { ");
+    for (size_t i = 0; i < depth; i++)
+        strcat(text, "group() {");
+    strcat(text, "cube();");
+    for (size_t i = 0; i < depth; i++)
+        strcat(text, "}");
+    strcat(text, " }");
+    check_error("m.csg", text, SC_ERR_LIMIT,
+                "m.csg:1:9010: error: too many nested nodes inside hull (limit is 1000)");
+    free(text);
+}
+
+static void test_hull_empty(void **state)
+{
+    (void)state;
+    check_warning("hull();", "hull without volume is empty");
+    check_warning("hull() { cube([1, 1, 0]); }", "hull without volume is empty");
+    /* two squares in one plane */
+    check_warning("hull() { polyhedron(points = [[0, 0, 0], [1, 0, 0], [0, 1, 0]], "
+                  "faces = [[0, 1, 2], [0, 2, 1]]); polyhedron(points = [[5, 5, 0], "
+                  "[6, 5, 0], [5, 6, 0]], faces = [[0, 1, 2], [0, 2, 1]]); }",
+                  "hull without volume is empty");
+}
+
+/* ---- minkowski ---- */
+
+static void test_minkowski(void **state)
+{
+    (void)state;
+    /* cubes add their sizes */
+    sc_scene *s = load("minkowski() { cube(2, center = true); cube([1, 3, 5], center = "
+                       "true); }");
+    check_bounds(s, v3(-1.5, -2.5, -3.5), v3(1.5, 2.5, 3.5), 1e-15);
+    assert_true(inside(s, 1.49, 2.49, 3.49));
+    sc_scene_release(s);
+    /* a plate and OpenSCAD's sphere of 16 fragments (8 rings): the extent
+     * grows by sin(78.75°) across and cos(11.25°) up */
+    s = load("minkowski() { cube([10, 6, 2], center = true); sphere(1, $fn = 16); }");
+    double across = sin(78.75 * PI / 180), up = cos(11.25 * PI / 180);
+    check_bounds(s, v3(-5 - across, -3 - across, -1 - up),
+                 v3(5 + across, 3 + across, 1 + up), 1e-12);
+    assert_true(inside(s, 5 + across - 1e-9, 0, 0));
+    assert_false(inside(s, 5 + across + 1e-9, 0, 0));
+    sc_scene_release(s);
+    /* a translated child: the sum of the offsets */
+    s = load(
+        "minkowski() { multmatrix([[1, 0, 0, 10], [0, 1, 0, 0], [0, 0, 1, 0], "
+        "[0, 0, 0, 1]]) { cube(1); } multmatrix([[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, "
+        "-3], [0, 0, 0, 1]]) { cylinder(h = 1, r = 1, $fn = 4); } }");
+    check_bounds(s, v3(9, -1, -3), v3(12, 2, -1), 1e-15);
+    sc_scene_release(s);
+}
+
+static void test_minkowski_union(void **state)
+{
+    (void)state;
+    /* a union of two cubes distributes: two leaves with the gap kept */
+    sc_scene *s = load("minkowski() { union() { cube(1); multmatrix([[1, 0, 0, 3], "
+                       "[0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]) { cube(1); } } "
+                       "cube(0.5, center = true); }");
+    assert_int_equal(scene_tree(s)->leaf_count, 2);
+    assert_true(inside(s, 1.2, 0.5, 0.5));
+    assert_false(inside(s, 2, 0.5, 0.5));
+    assert_true(inside(s, 2.8, 0.5, 0.5));
+    check_bounds(s, v3(-0.25, -0.25, -0.25), v3(4.25, 1.25, 1.25), 1e-15);
+    sc_scene_release(s);
+    /* a nested hull is one convex part; a convex polyhedron is one too */
+    s = load("minkowski() { hull() { cube(1); cube([3, 0.5, 0.5]); } "
+             "polyhedron(points = [[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1]], "
+             "faces = [[0, 1, 2], [0, 3, 1], [0, 2, 3], [1, 3, 2]]); }");
+    assert_int_equal(scene_tree(s)->leaf_count, 1);
+    check_bounds(s, v3(0, 0, 0), v3(4, 2, 2), 1e-15);
+    sc_scene_release(s);
+}
+
+#define NOTCH_POINTS                                                                     \
+    "[[0, 0, 0], [2, 0, 0], [2, 2, 0], [0, 2, 0], [0, 0, 2], [2, 0, 2], [2, 2, 2], "     \
+    "[0, 2, 2], [1, 1, 1]]"
+#define NOTCH_FACES                                                                      \
+    "[[0, 1, 2, 3], [4, 5, 1, 0], [5, 6, 2, 1], [6, 7, 3, 2], [7, 4, 0, 3], [4, 8, 5], " \
+    "[5, 8, 6], [6, 8, 7], [7, 8, 4]]"
+
+static void test_minkowski_errors(void **state)
+{
+    (void)state;
+    check_error(
+        "m.csg",
+        "minkowski() { cube(1);\n polyhedron(points = " NOTCH_POINTS
+        ", faces = " NOTCH_FACES "); }",
+        SC_ERR_UNSUPPORTED,
+        "m.csg:2:2: error: minkowski of a non-convex 'polyhedron' is not supported "
+        "yet");
+    check_error("m.csg", "minkowski() { cube(1); difference() { cube(2); } }",
+                SC_ERR_UNSUPPORTED,
+                "m.csg:1:24: error: 'difference' inside minkowski is not supported yet");
+    /* the same polyhedron inside a hull is fine: hull takes its points */
+    sc_scene *s = load("hull() { polyhedron(points = " NOTCH_POINTS
+                       ", faces = " NOTCH_FACES "); }");
+    assert_true(inside(s, 1, 1, 1.9));
+    sc_scene_release(s);
+    check_warning("minkowski() { cube(0); }", "minkowski without volume is empty");
+}
+
+/* ---- resize ---- */
+
+static void test_resize(void **state)
+{
+    (void)state;
+    sc_scene *s = load("resize([10, 0, 4]) { cube([2, 4, 8]); }");
+    check_bounds(s, v3(0, 0, 0), v3(10, 4, 4), 1e-14);
+    sc_scene_release(s);
+    /* auto: zero sizes take the largest asked scale (10 / 2) */
+    s = load(
+        "resize(newsize = [10, 0, 0], auto = [1, 0, 1], convexity = 0) { cube([2, 4, "
+        "8]); }");
+    check_bounds(s, v3(0, 0, 0), v3(10, 4, 40), 1e-13);
+    sc_scene_release(s);
+    s = load("resize([0, 8, 0], true) { cube([2, 4, 8]); }");
+    check_bounds(s, v3(0, 0, 0), v3(4, 8, 16), 1e-13);
+    sc_scene_release(s);
+    /* the exact sphere in default mode: a sphere of diameter 20 */
+    s = load("resize([20, 0, 0], auto = true) { sphere(3, $fn = 24); }");
+    check_bounds(s, v3(-10, -10, -10), v3(10, 10, 10), 1e-13);
+    sc_scene_release(s);
+    /* OpenSCAD's polyhedron in faithful mode: 5 fragments, 3 rings; the box
+     * of its points is scaled to the asked size */
+    s = load_opts("m.csg", "resize([20, 10, 6]) { sphere(3, $fn = 5); }", 1);
+    check_bounds(s, v3(-20 * cos(36 * PI / 180) / (1 + cos(36 * PI / 180)), -5, -3),
+                 v3(20 / (1 + cos(36 * PI / 180)), 5, 3), 1e-12);
+    sc_scene_release(s);
+    /* a sphere under a shear: its box is r |row|, not the box of a box */
+    s = load(
+        "resize([10, 0, 0]) { multmatrix([[1, 1, 0, 0], [-1, 1, 0, 0], [0, 0, 1, 0], "
+        "[0, 0, 0, 1]]) { sphere(1); } }");
+    assert_true(inside(s, 4.999, 0, 0));
+    assert_false(inside(s, 5.001, 0, 0));
+    assert_true(inside(s, 0, 1.414, 0));
+    assert_false(inside(s, 0, 1.415, 0));
+    sc_scene_release(s);
+    /* a cylinder on its side: x from 0 to its height 4 becomes 0 to 6 */
+    s = load("resize([6, 0, 0]) { multmatrix([[0, 0, 1, 0], [0, 1, 0, 0], [-1, 0, 0, 0], "
+             "[0, 0, 0, 1]]) { cylinder(h = 4, r1 = 1, r2 = 0.5); } }");
+    check_bounds(s, v3(0, -1, -1), v3(6, 1, 1), 1e-13);
+    sc_scene_release(s);
+    /* the scale is about the origin, not the box */
+    s = load("resize([4, 0, 0]) { multmatrix([[1, 0, 0, 10], [0, 1, 0, 0], [0, 0, 1, 0], "
+             "[0, 0, 0, 1]]) { cube(2); } }");
+    check_bounds(s, v3(20, 0, 0), v3(24, 2, 2), 1e-13);
+    sc_scene_release(s);
+}
+
+static void test_resize_boxes(void **state)
+{
+    (void)state;
+    /* a union: both children's box, [0, 4] in x */
+    sc_scene *s =
+        load("resize([8, 0, 0]) { cube(1); multmatrix([[1, 0, 0, 2], [0, 1, 0, 0], "
+             "[0, 0, 1, 0], [0, 0, 0, 1]]) { sphere(2); } }");
+    check_bounds(s, v3(0, -2, -2), v3(8, 2, 2), 1e-13);
+    sc_scene_release(s);
+    /* difference: the first child's box */
+    s = load("resize([1, 0, 0]) { difference() { cube([4, 1, 1]); cube([2, 1, 1]); } }");
+    assert_true(inside(s, 0.75, 0.5, 0.5));
+    assert_false(inside(s, 0.25, 0.5, 0.5));
+    sc_scene_release(s);
+    /* intersection: the smallest box in each direction */
+    s = load(
+        "resize([2, 0, 0]) { intersection() { cube([4, 1, 1]); cube([1, 3, 1]); } }");
+    check_bounds(s, v3(0, 0, 0), v3(2, 1, 1), 1e-13);
+    sc_scene_release(s);
+    /* minkowski: the boxes add; a torus: R + r across */
+    s = load(
+        "resize([12, 0, 0]) { minkowski() { cube(2, center = true); cube(4, center = "
+        "true); } }");
+    check_bounds(s, v3(-6, -3, -3), v3(6, 3, 3), 1e-13);
+    sc_scene_release(s);
+    s = load("resize([6, 0, 0]) { torus(r1 = 2, r2 = 1); }");
+    check_bounds(s, v3(-3, -3, -1), v3(3, 3, 1), 1e-13);
+    sc_scene_release(s);
+    /* nested resize */
+    s = load("resize([3, 0, 0]) { resize([100, 0, 0]) { cube(1); } }");
+    check_bounds(s, v3(0, 0, 0), v3(3, 1, 1), 1e-13);
+    sc_scene_release(s);
+    /* 60 nested resizes, alone and in a hull: each is measured once (a
+     * walk that measured them again at each level would never finish) */
+    char text[4096];
+    for (int in_hull = 0; in_hull < 2; in_hull++) {
+        strcpy(text, in_hull ? "hull() { " : "");
+        for (int i = 0; i < 60; i++)
+            strcat(text, "resize([3, 0, 0]) { ");
+        strcat(text, "cube(1);");
+        for (int i = 0; i < 60; i++)
+            strcat(text, " }");
+        strcat(text, in_hull ? " }" : "");
+        s = load(text);
+        check_bounds(s, v3(0, 0, 0), v3(3, 1, 1), 1e-12);
+        sc_scene_release(s);
+    }
+    /* an empty child: nothing to resize */
+    s = load("resize([3, 3, 3]) { cube(0); }");
+    assert_int_equal(scene_tree(s)->root, CSG_EMPTY);
+    sc_scene_release(s);
+}
+
+static void test_resize_errors(void **state)
+{
+    (void)state;
+    check_error("m.csg", "resize([1, -2, 0]) { cube(); }", SC_ERR_UNSUPPORTED,
+                "m.csg:1:8: error: resize to a negative size is not supported yet");
+    check_error("m.csg", "resize(newsize = 3) { cube(); }", SC_ERR_SEMANTIC,
+                "m.csg:1:18: error: wrong type for argument 'newsize' of 'resize' "
+                "(expected a vector of numbers)");
+    check_error("m.csg", "resize([1, 1, 1], auto = \"yes\") { cube(); }", SC_ERR_SEMANTIC,
+                "m.csg:1:26: error: wrong type for argument 'auto' of 'resize' (expected "
+                "true, false or a vector of them)");
+    check_error("m.csg", "resize([1, 1, 1]) { projection() { cube(); } }",
+                SC_ERR_UNSUPPORTED,
+                "m.csg:1:21: error: 'projection' inside resize is not supported yet");
+    /* a revolved square ring (z 0 to 1) stretched to height 2 */
+    sc_scene *r =
+        load("resize([0, 0, 2]) { rotate_extrude($fn = 4) { "
+             "multmatrix([[1,0,0,4],[0,1,0,0],[0,0,1,0],[0,0,0,1]]) { square(1); } "
+             "} }");
+    assert_true(inside(r, 4.5, 0, 1.9));
+    assert_false(inside(r, 4.5, 0, 2.1) || inside(r, 3.9, 0, 1));
+    sc_scene_release(r);
+    sc_scene *s =
+        load("resize([0, 0, 5]) { polyhedron(points = [[0, 0, 0], [1, 0, 0], [0, "
+             "1, 0]], faces = [[0, 1, 2], [0, 2, 1]]); }");
+    assert_true(sc_scene_warning_count(s) >= 1);
+    assert_string_equal(
+        sc_scene_warning(s, 0)->message,
+        "resize in a direction normal to a flat object is not implemented");
+    sc_scene_release(s);
+}
+
+/* ---- surface ---- */
+
+static const char *work(void)
+{
+    mkdir(SPANCAST_TEST_WORK, 0777);
+    return SPANCAST_TEST_WORK;
+}
+
+static void write_file(const char *name, const void *data, size_t size)
+{
+    char path[1024];
+    snprintf(path, sizeof path, "%s/%s", work(), name);
+    FILE *f = fopen(path, "wb");
+    assert_non_null(f);
+    assert_int_equal(fwrite(data, 1, size, f), size);
+    fclose(f);
+}
+
+static sc_scene *load_file(const char *name, const char *text)
+{
+    char path[1024];
+    snprintf(path, sizeof path, "%s/%s", work(), name);
+    return load_opts(path, text, 0);
+}
+
+static void test_surface_dat(void **state)
+{
+    (void)state;
+    /* two rows of three values; the second row is short (padded with 0) */
+    const char dat[] = "# heights\n\n1 2 3\r\n4\t5\n";
+    write_file("h.dat", dat, sizeof dat - 1);
+    sc_scene *s = load_file("m.csg", "surface(file = \"h.dat\", center = false, invert = "
+                                     "false);");
+    assert_int_equal(scene_tree(s)->leaves[0].prim.kind, PRIM_MESH);
+    /* x 0..2 (columns), y 0..1 (rows); the floor is min(0, 1 - 1) = 0 from
+     * the values read, before the padding */
+    check_bounds(s, v3(0, 0, 0), v3(2, 1, 5), 0);
+    /* each cell's centre is at its corners' mean: (1 + 2 + 4 + 5) / 4 and
+     * (2 + 3 + 5 + 0) / 4 */
+    assert_true(inside(s, 0.5, 0.5, 2.99));
+    assert_false(inside(s, 0.5, 0.5, 3.01));
+    assert_true(inside(s, 1.5, 0.5, 2.49));
+    assert_false(inside(s, 1.5, 0.5, 2.51));
+    assert_true(inside(s, 1.5, 0.5, 0.01));
+    assert_false(inside(s, 1.5, 0.5, -0.01));
+    sc_scene_release(s);
+    s = load_file("m.csg", "surface(file = \"h.dat\", center = true);");
+    check_bounds(s, v3(-1, -0.5, 0), v3(1, 0.5, 5), 0);
+    sc_scene_release(s);
+}
+
+/* A PNG file, grey, 8 bits, stored without compression. */
+static uint32_t crc32_of(const unsigned char *p, size_t n)
+{
+    uint32_t c = 0xffffffffu;
+    for (size_t i = 0; i < n; i++) {
+        c ^= p[i];
+        for (int k = 0; k < 8; k++)
+            c = c & 1 ? 0xedb88320u ^ (c >> 1) : c >> 1;
+    }
+    return c ^ 0xffffffffu;
+}
+
+static size_t put32(unsigned char *p, uint32_t v)
+{
+    p[0] = (unsigned char)(v >> 24);
+    p[1] = (unsigned char)(v >> 16);
+    p[2] = (unsigned char)(v >> 8);
+    p[3] = (unsigned char)v;
+    return 4;
+}
+
+static size_t chunk(unsigned char *out, const char *type, const unsigned char *data,
+                    uint32_t n)
+{
+    size_t k = put32(out, n);
+    memcpy(out + k, type, 4);
+    if (n)
+        memcpy(out + k + 4, data, n);
+    k += 4 + n;
+    return k + put32(out + k, crc32_of(out + 4, 4 + n));
+}
+
+static void write_png(const char *name, const unsigned char *grey, uint32_t w, uint32_t h)
+{
+    unsigned char raw[256], z[300], ihdr[13], file[600];
+    uint32_t n = 0;
+    for (uint32_t y = 0; y < h; y++) {
+        raw[n++] = 0; /* no filter */
+        for (uint32_t x = 0; x < w; x++)
+            raw[n++] = grey[y * w + x];
+    }
+    size_t k = 0;
+    z[k++] = 0x78;
+    z[k++] = 0x01;
+    z[k++] = 1; /* final stored block */
+    z[k++] = (unsigned char)n;
+    z[k++] = (unsigned char)(n >> 8);
+    z[k++] = (unsigned char)~n;
+    z[k++] = (unsigned char)(~n >> 8);
+    memcpy(z + k, raw, n);
+    k += n;
+    uint32_t a = 1, b = 0;
+    for (uint32_t i = 0; i < n; i++) {
+        a = (a + raw[i]) % 65521;
+        b = (b + a) % 65521;
+    }
+    k += put32(z + k, b << 16 | a);
+    put32(ihdr, w);
+    put32(ihdr + 4, h);
+    ihdr[8] = 8;  /* bits */
+    ihdr[9] = 0;  /* grey */
+    ihdr[10] = 0; /* deflate */
+    ihdr[11] = 0;
+    ihdr[12] = 0;
+    static const unsigned char sig[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
+    size_t m = 0;
+    memcpy(file, sig, 8);
+    m = 8;
+    m += chunk(file + m, "IHDR", ihdr, 13);
+    m += chunk(file + m, "IDAT", z, (uint32_t)k);
+    m += chunk(file + m, "IEND", NULL, 0);
+    write_file(name, file, m);
+}
+
+static void test_surface_png(void **state)
+{
+    (void)state;
+    /* 3 x 2 pixels; the top image row is the far row (y = 1) */
+    const unsigned char grey[6] = {255, 255, 255, 0, 51, 0};
+    write_png("h.png", grey, 3, 2);
+    sc_scene *s = load_file("m.csg", "surface(file = \"h.png\");");
+    /* 255 -> 100 (to rounding of the luma weights), 51 -> 20 */
+    bbox b = scene_tree(s)->bounds;
+    assert_true(fabs(b.hi.z - 100) <= 1e-9);
+    assert_true(b.lo.z == -1);
+    /* cell centres: (0 + 20 + 100 + 100) / 4 */
+    assert_true(inside(s, 0.5, 0.5, 54.9));
+    assert_false(inside(s, 0.5, 0.5, 55.1));
+    assert_true(inside(s, 1.5, 0.5, 54.9));
+    assert_false(inside(s, 1.5, 0.5, 55.1));
+    sc_scene_release(s);
+    /* invert: 100 / 255 (1 - L), below zero; the floor is 1 under it */
+    s = load_file("m.csg", "surface(file = \"h.png\", invert = true);");
+    b = scene_tree(s)->bounds;
+    assert_true(fabs(b.lo.z - (100.0 / 255 * (1 - 255.0) - 1)) <= 1e-9);
+    assert_true(fabs(b.hi.z - 100.0 / 255) <= 1e-12);
+    sc_scene_release(s);
+}
+
+static void test_surface_errors(void **state)
+{
+    (void)state;
+    char path[1024], expected[2048];
+    snprintf(path, sizeof path, "%s/m.csg", work());
+    const char *text = "surface(file = \"nope.dat\");";
+    snprintf(
+        expected, sizeof expected,
+        "%s:1:16: error: surface: cannot read '%s/nope.dat': No such file or directory",
+        path, work());
+    check_error(path, text, SC_ERR_IO, expected);
+    const char bad[] = "1 2 3\n4 x 6\n";
+    write_file("bad.dat", bad, sizeof bad - 1);
+    snprintf(expected, sizeof expected,
+             "%s:1:16: error: surface: '%s/bad.dat' line 2: 'x' is not a number", path,
+             work());
+    check_error(path, "surface(file = \"bad.dat\");", SC_ERR_SEMANTIC, expected);
+    /* a broken PNG */
+    const unsigned char broken[16] = {0x89, 'P',  'N', 'G', '\r', '\n',
+                                      0x1a, '\n', 0,   0,   0};
+    write_file("broken.png", broken, sizeof broken);
+    sc_scene *s = (sc_scene *)1;
+    sc_error e;
+    const char *t = "surface(file = \"broken.png\");";
+    assert_int_equal(sc_scene_load_string(path, t, strlen(t), NULL, &s, &e), SC_ERR_IO);
+    char buf[1024];
+    snprintf(expected, sizeof expected,
+             "%s:1:16: error: surface: cannot read PNG image '%s/broken.png': ", path,
+             work());
+    assert_memory_equal(sc_error_format(&e, buf, sizeof buf), expected, strlen(expected));
+    check_error("m.csg", "surface();", SC_ERR_SEMANTIC,
+                "m.csg:1:1: error: missing argument 'file' of 'surface'");
+    check_error(
+        "m.csg", "surface(file = 3);", SC_ERR_SEMANTIC,
+        "m.csg:1:16: error: wrong type for argument 'file' of 'surface' (expected "
+        "a file name)");
+    /* one row: no area */
+    const char one[] = "1 2 3\n";
+    write_file("one.dat", one, sizeof one - 1);
+    s = load_file("m.csg", "surface(file = \"one.dat\");");
+    assert_int_equal(sc_scene_warning_count(s), 1);
+    assert_string_equal(sc_scene_warning(s, 0)->message, "surface without area is empty");
+    sc_scene_release(s);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_hull_boxes),      cmocka_unit_test(test_hull_curved),
+        cmocka_unit_test(test_hull_extrusions), cmocka_unit_test(test_hull_errors),
+        cmocka_unit_test(test_hull_empty),      cmocka_unit_test(test_minkowski),
+        cmocka_unit_test(test_minkowski_union), cmocka_unit_test(test_minkowski_errors),
+        cmocka_unit_test(test_resize),          cmocka_unit_test(test_resize_boxes),
+        cmocka_unit_test(test_resize_errors),   cmocka_unit_test(test_surface_dat),
+        cmocka_unit_test(test_surface_png),     cmocka_unit_test(test_surface_errors),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
