@@ -10,6 +10,9 @@
 #   // exact: sphere|cylinder,R,FN     (optional: also render the exact
 #                                       solid and check it against the mesh
 #                                       within the tessellation's bound)
+#   // files: NAME...                  (optional: files beside the model,
+#                                       such as meshes it imports, copied
+#                                       with it so relative paths resolve)
 # compare judges each pair and prints its row; the rows also go to
 # WORKDIR/rows, which tests/crosscheck/report gathers. Exits non-zero when
 # any check fails.
@@ -31,6 +34,9 @@ now() { date +%s.%N; }
 elapsed() { awk -v a="$1" -v b="$2" 'BEGIN { printf "%.2f", b - a }'; }
 
 cp "$model" "$work/$name.scad"
+for file in $(setting files); do
+    cp "$(dirname "$model")/$file" "$work/"
+done
 openscad -o "$work/$name.csg" "$work/$name.scad" >"$work/openscad.log" 2>&1 ||
     { cat "$work/openscad.log" >&2; exit 1; }
 t0=$(now)
