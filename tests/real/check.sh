@@ -52,6 +52,7 @@ leaves=- nodes=-
 if "$spancast" info "$csg" >"$work/info.txt" 2>&1; then
     leaves=$(sed -n 's/^leaves: *\([0-9]*\).*/\1/p' "$work/info.txt")
     nodes=$(sed -n 's/^nodes: *\([0-9]*\).*/\1/p' "$work/info.txt")
+    leaves=${leaves:--} nodes=${nodes:--}
 fi
 
 # 2. The reference mesh, cached.
@@ -104,7 +105,7 @@ render() {
         -o "$work/$label.png" "$@" 2>"$work/$label.log"
     rc=$?
     t1=$(now)
-    eval "${label}_seconds=$(elapsed "$t0" "$t1")"
+    eval "${label}_seconds=$(elapsed "$t0" "$t1") ${label}_rc=$rc"
     if ((rc == 0)); then
         eval "${label}=ok"
     elif ((rc == 124)); then
@@ -117,33 +118,36 @@ render() {
 render exact
 render faithful --faithful --mask="$work/faithful_mask.png" --depth="$work/faithful_depth.exr"
 
-# 4. The cross-check.
-verdict=- mismatches=- max_err=- reason=
+# 4. The cross-check, whenever the faithful render and the mesh exist.
+verdict=- mismatches=- max_err=- reason= judged=
+if [[ $faithful != ok ]]; then
+    judged=$(first_error "$work/faithful.log")
+    judged="faithful: ${judged:-spancast exit status $faithful_rc}"
+elif [[ $cgal != ok ]]; then
+    judged="CGAL $cgal_status"
+elif [[ -z "${camera:-}" ]]; then
+    judged="$(cat "$work/fitcam.log")"
+elif ! "$refcast" "$stl" "${view[@]}" --mask="$work/ref_mask.png" \
+    --depth="$work/ref_depth.exr" 2>"$work/refcast.log"; then
+    judged="refcast: $(head -n 1 "$work/refcast.log")"
+elif row=$("$compare" "$work/ref_mask.png" "$work/ref_depth.exr" \
+    "$work/faithful_mask.png" "$work/faithful_depth.exr" 2>"$work/compare.log"); then
+    verdict=match
+    read -r _ mismatches _ max_err _ <<<"$row"
+else
+    verdict=MISMATCH
+    read -r _ mismatches _ max_err _ <<<"$row"
+    judged=$(grep -m 1 -E 'mismatches|tolerance' "$work/compare.log" ||
+        head -n 1 "$work/compare.log")
+fi
+# The reason: the exact render's error first, else the cross-check's.
 if [[ $exact != ok ]]; then
     reason=$(first_error "$work/exact.log")
-elif [[ $faithful != ok ]]; then
-    reason="faithful: $(first_error "$work/faithful.log")"
-elif [[ $cgal != ok ]]; then
-    reason="CGAL $cgal_status"
-elif [[ -z "${camera:-}" ]]; then
-    reason="$(cat "$work/fitcam.log")"
+    [[ -n "$reason" ]] || reason="spancast exit status $exact_rc: $(tail -n 1 "$work/exact.log")"
 else
-    "$refcast" "$stl" "${view[@]}" --mask="$work/ref_mask.png" \
-        --depth="$work/ref_depth.exr" 2>"$work/refcast.log" ||
-        reason="refcast: $(head -n 1 "$work/refcast.log")"
-    if [[ -z "$reason" ]]; then
-        if row=$("$compare" "$work/ref_mask.png" "$work/ref_depth.exr" \
-            "$work/faithful_mask.png" "$work/faithful_depth.exr" 2>"$work/compare.log"); then
-            verdict=match
-        else
-            verdict=MISMATCH
-            reason=$(grep -m 1 -E 'mismatches|tolerance' "$work/compare.log" ||
-                head -n 1 "$work/compare.log")
-        fi
-        read -r _ mismatches _ max_err _ <<<"$row"
-    fi
+    reason=$judged
 fi
 printf '%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\n' "$model" "$leaves" "$nodes" \
     "$exact" "$exact_seconds" "$faithful" "$faithful_seconds" "$cgal" "$cgal_seconds" \
-    "$verdict" "$mismatches" "$max_err" "$reason" | tee "$work/row"
+    "$verdict" "${mismatches:--}" "${max_err:--}" "$reason" | tee "$work/row"
 [[ $verdict == match && $exact == ok ]]
