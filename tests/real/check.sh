@@ -63,12 +63,12 @@ stl=$cache/$key.stl
 if [[ ! -e "$cache/$key.status" ]] || { grep -q '^timeout' "$cache/$key.status" &&
     [[ "$(cat "$cache/$key.limit" 2>/dev/null)" != "$cgal_limit" ]]; }; then
     t0=$(now)
-    timeout "$cgal_limit" openscad --export-format binstl -o "$stl.tmp" "$csg" \
+    timeout "$cgal_limit" openscad --export-format binstl -o "$stl.$$.tmp" "$csg" \
         >"$cache/$key.log" 2>&1
     rc=$?
     t1=$(now)
-    if ((rc == 0)) && [[ -s "$stl.tmp" ]]; then
-        mv "$stl.tmp" "$stl"
+    if ((rc == 0)) && [[ -s "$stl.$$.tmp" ]]; then
+        mv "$stl.$$.tmp" "$stl"
         echo ok >"$cache/$key.status"
     elif ((rc == 124)); then
         echo "timeout after ${cgal_limit} s" >"$cache/$key.status"
@@ -77,7 +77,7 @@ if [[ ! -e "$cache/$key.status" ]] || { grep -q '^timeout' "$cache/$key.status" 
             "$cache/$key.log" | tail -n 1)
         echo "error: ${msg:-OpenSCAD exit status $rc}" >"$cache/$key.status"
     fi
-    rm -f "$stl.tmp"
+    rm -f "$stl.$$.tmp"
     elapsed "$t0" "$t1" >"$cache/$key.seconds"
     echo "$cgal_limit" >"$cache/$key.limit"
 fi
