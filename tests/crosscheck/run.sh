@@ -15,8 +15,9 @@
 #                                       the faithful rules)
 #   // faithful: skip REASON           (optional: no faithful row, for
 #                                       models faithful mode cannot build yet)
-#   // data: FILE ...                  (optional: files beside the model
-#                                       that it reads, copied along)
+#   // files: NAME...                  (optional: files beside the model,
+#                                       meshes it imports, height maps, copied
+#                                       with it so relative paths resolve)
 # compare judges each pair and prints its row; the rows also go to
 # WORKDIR/rows, which tests/crosscheck/report gathers. Exits non-zero when
 # any check fails.
@@ -39,9 +40,9 @@ now() { date +%s.%N; }
 elapsed() { awk -v a="$1" -v b="$2" 'BEGIN { printf "%.2f", b - a }'; }
 
 cp "$model" "$work/$name.scad"
-# Files the model reads (surface, import), named by `// data: FILE ...`.
-for data in $(setting data); do
-    cp "$(dirname "$model")/$data" "$work/"
+# Files the model reads (import, surface), named by `// files: NAME ...`.
+for file in $(setting files); do
+    cp "$(dirname "$model")/$file" "$work/"
 done
 openscad -o "$work/$name.csg" "$work/$name.scad" >"$work/openscad.log" 2>&1 ||
     { cat "$work/openscad.log" >&2; exit 1; }

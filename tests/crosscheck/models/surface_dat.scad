@@ -1,4 +1,4 @@
 // surface() of a .dat height map (surface_dat.dat beside this file).
 // camera: 14,-12,16,2.5,2,1
-// data: surface_dat.dat
+// files: surface_dat.dat
 scale([1, 1, 0.5]) surface(file = "surface_dat.dat", center = false);
