@@ -349,7 +349,8 @@ static void test_linear_extrude(void **state)
     assert_false(inside(s, 1.5, 1.5, 0.1));
     sc_scene_release(s);
     s = load_faithful(
-        "m.csg", "linear_extrude(height = 1) {\n  difference() { square(2); square(1); }\n}");
+        "m.csg",
+        "linear_extrude(height = 1) {\n  difference() { square(2); square(1); }\n}");
     assert_true(inside(s, 1.5, 1.5, 0.5));
     assert_false(inside(s, 0.5, 0.5, 0.5));
     sc_scene_release(s);

@@ -35,6 +35,21 @@ const parse_value *build_arg(const parse_node *n, const char *name, int position
 sc_location build_loc(const build_ctx *c, const parse_value *v);
 sc_status build_wrong_type(const build_ctx *c, const parse_node *n, const char *param,
                            const parse_value *v, const char *expected);
+/* A number argument into *out (left alone when absent). */
+sc_status build_number(const build_ctx *c, const parse_node *n, const char *name,
+                       int position, double *out);
+/* A true/false argument into *out (left alone when absent). */
+sc_status build_bool(const build_ctx *c, const parse_node *n, const char *name,
+                     int position, int *out);
+/* A 2D node's multmatrix(m): m checked as a 4x4 affine matrix of finite
+ * numbers, and inner = outer after its xy part (x' = m00 x + m01 y + m03,
+ * y' = m10 x + m11 y + m13; z is dropped, as OpenSCAD flattens 2D
+ * children). Maps are rows [a b tx; c d ty]; inner may be outer. */
+sc_status build_matrix_xy(const build_ctx *c, const parse_node *n,
+                          const double outer[2][3], double inner[2][3]);
+/* square(size = s | [x, y], center = false)'s arguments. */
+sc_status build_square(const build_ctx *c, const parse_node *n, double *sx, double *sy,
+                       int *center);
 
 sc_status build_torus(const build_ctx *c, const parse_node *n, int emit, prim *out,
                       const char **empty);

@@ -72,18 +72,6 @@ static sc_status nomem(const build_ctx *c, const parse_node *n)
     return err_set(c->error, SC_ERR_NOMEM, &n->loc, "out of memory");
 }
 
-static sc_status get_number(const build_ctx *c, const parse_node *n, const char *name,
-                            int position, double *out)
-{
-    const parse_value *v = build_arg(n, name, position);
-    if (!v)
-        return SC_OK;
-    if (v->kind != PARSE_NUMBER)
-        return build_wrong_type(c, n, name, v, "a number");
-    *out = v->u.number;
-    return SC_OK;
-}
-
 static sc_status read_params(const build_ctx *c, const parse_node *n, params *p)
 {
     memset(p, 0, sizeof *p);
@@ -95,12 +83,12 @@ static sc_status read_params(const build_ctx *c, const parse_node *n, params *p)
     if (build_arg(n, "file", -1))
         return err_set(c->error, SC_ERR_UNSUPPORTED, &n->loc,
                        "linear_extrude of a file is not supported yet");
-    if ((st = get_number(c, n, "height", 0, &p->height)) != SC_OK ||
-        (st = get_number(c, n, "twist", -1, &p->twist)) != SC_OK ||
-        (st = get_number(c, n, "slices", -1, &p->slices)) != SC_OK ||
-        (st = get_number(c, n, "$fn", -1, &p->fn)) != SC_OK ||
-        (st = get_number(c, n, "$fa", -1, &p->fa)) != SC_OK ||
-        (st = get_number(c, n, "$fs", -1, &p->fs)) != SC_OK)
+    if ((st = build_number(c, n, "height", 0, &p->height)) != SC_OK ||
+        (st = build_number(c, n, "twist", -1, &p->twist)) != SC_OK ||
+        (st = build_number(c, n, "slices", -1, &p->slices)) != SC_OK ||
+        (st = build_number(c, n, "$fn", -1, &p->fn)) != SC_OK ||
+        (st = build_number(c, n, "$fa", -1, &p->fa)) != SC_OK ||
+        (st = build_number(c, n, "$fs", -1, &p->fs)) != SC_OK)
         return st;
     const parse_value *cv = build_arg(n, "center", 1);
     if (cv && cv->kind != PARSE_BOOL)

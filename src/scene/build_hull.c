@@ -199,27 +199,9 @@ static pointset *new_part(partlist *l)
 static sc_status get_number(const build_ctx *c, const parse_node *n, const char *name,
                             int position, double *out, int *given)
 {
-    const parse_value *v = build_arg(n, name, position);
     if (given)
-        *given = v != NULL;
-    if (!v)
-        return SC_OK;
-    if (v->kind != PARSE_NUMBER)
-        return build_wrong_type(c, n, name, v, "a number");
-    *out = v->u.number;
-    return SC_OK;
-}
-
-static sc_status get_bool(const build_ctx *c, const parse_node *n, const char *name,
-                          int position, int *out)
-{
-    const parse_value *v = build_arg(n, name, position);
-    if (!v)
-        return SC_OK;
-    if (v->kind != PARSE_BOOL)
-        return build_wrong_type(c, n, name, v, "true or false");
-    *out = v->u.boolean;
-    return SC_OK;
+        *given = build_arg(n, name, position) != NULL;
+    return build_number(c, n, name, position, out);
 }
 
 /* A diameter wins over a radius, as in OpenSCAD. */
@@ -278,7 +260,7 @@ static sc_status read_cube(const build_ctx *c, const parse_node *n, shape *s)
         if (!ok)
             return build_wrong_type(c, n, "size", v, "a number or a vector of 3 numbers");
     }
-    sc_status st = get_bool(c, n, "center", 1, &center);
+    sc_status st = build_bool(c, n, "center", 1, &center);
     if (st != SC_OK)
         return st;
     if (!positive_finite(size[0]) || !positive_finite(size[1]) ||
@@ -315,7 +297,7 @@ static sc_status read_cylinder(const build_ctx *c, const parse_node *n, shape *s
     if (st == SC_OK)
         st = get_radius(c, n, "d", "r", -1, &r, &has_r);
     if (st == SC_OK)
-        st = get_bool(c, n, "center", 3, &center);
+        st = build_bool(c, n, "center", 3, &center);
     if (st != SC_OK)
         return st;
     if (!has_r1)

@@ -112,18 +112,6 @@ static sc_status nomem(const walker *w, const parse_node *n)
     return err_set(w->c->error, SC_ERR_NOMEM, &n->loc, "out of memory");
 }
 
-static sc_status get_number(const build_ctx *c, const parse_node *n, const char *name,
-                            int position, double *out)
-{
-    const parse_value *v = build_arg(n, name, position);
-    if (!v)
-        return SC_OK;
-    if (v->kind != PARSE_NUMBER)
-        return build_wrong_type(c, n, name, v, "a number");
-    *out = v->u.number;
-    return SC_OK;
-}
-
 /* Room for count points in w->xy; returns 0 when memory ran out. */
 static int reserve_points(walker *w, uint64_t count)
 {
@@ -164,22 +152,11 @@ static sc_status read_square(walker *w, const parse_node *n, const affine2 *m,
                              int *pushed)
 {
     const build_ctx *c = w->c;
-    double sx = 1, sy = 1;
-    const parse_value *v = build_arg(n, "size", 0);
-    if (v && v->kind == PARSE_NUMBER) {
-        sx = sy = v->u.number;
-    } else if (v && v->kind == PARSE_VECTOR && v->u.vector.count == 2 &&
-               v->u.vector.items[0].kind == PARSE_NUMBER &&
-               v->u.vector.items[1].kind == PARSE_NUMBER) {
-        sx = v->u.vector.items[0].u.number;
-        sy = v->u.vector.items[1].u.number;
-    } else if (v) {
-        return build_wrong_type(c, n, "size", v, "a number or [x, y]");
-    }
-    const parse_value *cv = build_arg(n, "center", 1);
-    if (cv && cv->kind != PARSE_BOOL)
-        return build_wrong_type(c, n, "center", cv, "true or false");
-    int center = cv ? cv->u.boolean : 0;
+    double sx, sy;
+    int center;
+    sc_status st = build_square(c, n, &sx, &sy, &center);
+    if (st != SC_OK)
+        return st;
     if (!(sx > 0 && sy > 0 && isfinite(sx) && isfinite(sy)))
         return SC_OK; /* no area */
     double x0 = center ? -sx / 2 : 0, y0 = center ? -sy / 2 : 0;
@@ -201,11 +178,11 @@ static sc_status read_circle(walker *w, const parse_node *n, const affine2 *m,
 {
     double r = 1, d = NAN, unused;
     sc_status st;
-    if ((st = get_number(w->c, n, "r", 0, &r)) != SC_OK ||
-        (st = get_number(w->c, n, "d", -1, &d)) != SC_OK ||
-        (st = get_number(w->c, n, "$fn", -1, &unused)) != SC_OK ||
-        (st = get_number(w->c, n, "$fa", -1, &unused)) != SC_OK ||
-        (st = get_number(w->c, n, "$fs", -1, &unused)) != SC_OK)
+    if ((st = build_number(w->c, n, "r", 0, &r)) != SC_OK ||
+        (st = build_number(w->c, n, "d", -1, &d)) != SC_OK ||
+        (st = build_number(w->c, n, "$fn", -1, &unused)) != SC_OK ||
+        (st = build_number(w->c, n, "$fa", -1, &unused)) != SC_OK ||
+        (st = build_number(w->c, n, "$fs", -1, &unused)) != SC_OK)
         return st;
     if (!isnan(d))
         r = d / 2;
@@ -282,34 +259,6 @@ static sc_status read_polygon(walker *w, const parse_node *n, const affine2 *m,
     return SC_OK;
 }
 
-/* multmatrix's xy part after m: inner = m . M_xy. */
-static sc_status read_matrix(const walker *w, const parse_node *n, const affine2 *m,
-                             affine2 *inner)
-{
-    const parse_value *v = build_arg(n, "m", 0);
-    double a[4][4] = {{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}, {0, 0, 0, 1}};
-    int ok = !v || (v->kind == PARSE_VECTOR && v->u.vector.count == 4);
-    for (uint32_t r = 0; v && ok && r < 4; r++) {
-        const parse_value *row = &v->u.vector.items[r];
-        ok = row->kind == PARSE_VECTOR && row->u.vector.count == 4;
-        for (uint32_t k = 0; ok && k < 4; k++) {
-            ok = row->u.vector.items[k].kind == PARSE_NUMBER &&
-                 isfinite(row->u.vector.items[k].u.number);
-            if (ok)
-                a[r][k] = row->u.vector.items[k].u.number;
-        }
-    }
-    if (!ok)
-        return err_set(w->c->error, SC_ERR_SEMANTIC, &n->loc,
-                       "multmatrix: matrix must be 4x4 numbers");
-    for (int r = 0; r < 2; r++) {
-        for (int k = 0; k < 2; k++)
-            inner->m[r][k] = m->m[r][0] * a[0][k] + m->m[r][1] * a[1][k];
-        inner->m[r][2] = m->m[r][0] * a[0][3] + m->m[r][1] * a[1][3] + m->m[r][2];
-    }
-    return SC_OK;
-}
-
 static sc_status walk(walker *w, const parse_node *n, const affine2 *m, int depth,
                       int *pushed);
 
@@ -364,7 +313,7 @@ static sc_status walk(walker *w, const parse_node *n, const affine2 *m, int dept
         return read_polygon(w, n, m, pushed);
     if (strcmp(name, "multmatrix") == 0) {
         affine2 inner;
-        sc_status st = read_matrix(w, n, m, &inner);
+        sc_status st = build_matrix_xy(w->c, n, m->m, inner.m);
         if (st != SC_OK)
             return st;
         prim_region *r = &w->region;
@@ -396,7 +345,7 @@ sc_status build_region_extrude(const build_ctx *c, const parse_node *n, int emit
                                prim *out, const char **empty)
 {
     double height = 100;
-    sc_status st = get_number(c, n, "height", 0, &height);
+    sc_status st = build_number(c, n, "height", 0, &height);
     if (st != SC_OK)
         return st;
     const parse_value *cv = build_arg(n, "center", 1);

@@ -180,37 +180,14 @@ static void mark_holes(profile *p, uint32_t first)
     }
 }
 
-static sc_status get_number(const build_ctx *c, const parse_node *n, const char *name,
-                            int position, double *out)
-{
-    const parse_value *v = build_arg(n, name, position);
-    if (!v)
-        return SC_OK;
-    if (v->kind != PARSE_NUMBER)
-        return build_wrong_type(c, n, name, v, "a number");
-    *out = v->u.number;
-    return SC_OK;
-}
-
 static sc_status read_square(const build_ctx *c, const parse_node *n, const affine2 *m,
                              profile *p)
 {
-    double sx = 1, sy = 1;
-    const parse_value *v = build_arg(n, "size", 0);
-    if (v && v->kind == PARSE_NUMBER) {
-        sx = sy = v->u.number;
-    } else if (v && v->kind == PARSE_VECTOR && v->u.vector.count == 2 &&
-               v->u.vector.items[0].kind == PARSE_NUMBER &&
-               v->u.vector.items[1].kind == PARSE_NUMBER) {
-        sx = v->u.vector.items[0].u.number;
-        sy = v->u.vector.items[1].u.number;
-    } else if (v) {
-        return build_wrong_type(c, n, "size", v, "a number or [x, y]");
-    }
-    const parse_value *cv = build_arg(n, "center", 1);
-    if (cv && cv->kind != PARSE_BOOL)
-        return build_wrong_type(c, n, "center", cv, "true or false");
-    int center = cv ? cv->u.boolean : 0;
+    double sx, sy;
+    int center;
+    sc_status st = build_square(c, n, &sx, &sy, &center);
+    if (st != SC_OK)
+        return st;
     if (!(sx > 0 && sy > 0 && isfinite(sx) && isfinite(sy)))
         return SC_OK; /* no area */
     double x0 = center ? -sx / 2 : 0, y0 = center ? -sy / 2 : 0;
@@ -236,11 +213,11 @@ static sc_status read_circle(const build_ctx *c, const parse_node *n, const affi
 {
     double r = 1, d = NAN, fn = 0, fa = 12, fs = 2;
     sc_status st;
-    if ((st = get_number(c, n, "r", 0, &r)) != SC_OK ||
-        (st = get_number(c, n, "d", -1, &d)) != SC_OK ||
-        (st = get_number(c, n, "$fn", -1, &fn)) != SC_OK ||
-        (st = get_number(c, n, "$fa", -1, &fa)) != SC_OK ||
-        (st = get_number(c, n, "$fs", -1, &fs)) != SC_OK)
+    if ((st = build_number(c, n, "r", 0, &r)) != SC_OK ||
+        (st = build_number(c, n, "d", -1, &d)) != SC_OK ||
+        (st = build_number(c, n, "$fn", -1, &fn)) != SC_OK ||
+        (st = build_number(c, n, "$fa", -1, &fa)) != SC_OK ||
+        (st = build_number(c, n, "$fs", -1, &fs)) != SC_OK)
         return st;
     if (!isnan(d))
         r = d / 2;
@@ -360,34 +337,6 @@ static sc_status gather_other(const build_ctx *c, const parse_node *n, const aff
     return st;
 }
 
-static sc_status read_matrix2(const build_ctx *c, const parse_node *n, const affine2 *m,
-                              affine2 *inner)
-{
-    const parse_value *v = build_arg(n, "m", 0);
-    double a[4][4] = {{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}, {0, 0, 0, 1}};
-    int ok = !v || (v->kind == PARSE_VECTOR && v->u.vector.count == 4);
-    for (uint32_t r = 0; v && ok && r < 4; r++) {
-        const parse_value *row = &v->u.vector.items[r];
-        ok = row->kind == PARSE_VECTOR && row->u.vector.count == 4;
-        for (uint32_t k = 0; ok && k < 4; k++) {
-            ok = row->u.vector.items[k].kind == PARSE_NUMBER &&
-                 isfinite(row->u.vector.items[k].u.number);
-            if (ok)
-                a[r][k] = row->u.vector.items[k].u.number;
-        }
-    }
-    if (!ok)
-        return err_set(c->error, SC_ERR_SEMANTIC, &n->loc,
-                       "multmatrix: matrix must be 4x4 numbers");
-    /* inner = m after the matrix's xy part */
-    for (int r = 0; r < 2; r++)
-        for (int k = 0; k < 3; k++)
-            inner->m[r][k] = m->m[r][0] * (k < 2 ? a[0][k] : a[0][3]) +
-                             m->m[r][1] * (k < 2 ? a[1][k] : a[1][3]) +
-                             (k == 2 ? m->m[r][2] : 0);
-    return SC_OK;
-}
-
 static sc_status gather(const build_ctx *c, const parse_node *n, const affine2 *m,
                         profile *p, int depth)
 {
@@ -406,7 +355,7 @@ static sc_status gather(const build_ctx *c, const parse_node *n, const affine2 *
         return read_polygon(c, n, m, p);
     affine2 inner = *m;
     if (strcmp(name, "multmatrix") == 0) {
-        sc_status st = read_matrix2(c, n, m, &inner);
+        sc_status st = build_matrix_xy(c, n, m->m, inner.m);
         if (st != SC_OK)
             return st;
     } else if (strcmp(name, "group") != 0 && strcmp(name, "union") != 0 &&
@@ -634,10 +583,10 @@ sc_status build_rotate_extrude(const build_ctx *c, const parse_node *n, int emit
 {
     double angle = 360, fn = 0, fa = 12, fs = 2;
     sc_status st;
-    if ((st = get_number(c, n, "angle", -1, &angle)) != SC_OK ||
-        (st = get_number(c, n, "$fn", -1, &fn)) != SC_OK ||
-        (st = get_number(c, n, "$fa", -1, &fa)) != SC_OK ||
-        (st = get_number(c, n, "$fs", -1, &fs)) != SC_OK)
+    if ((st = build_number(c, n, "angle", -1, &angle)) != SC_OK ||
+        (st = build_number(c, n, "$fn", -1, &fn)) != SC_OK ||
+        (st = build_number(c, n, "$fa", -1, &fa)) != SC_OK ||
+        (st = build_number(c, n, "$fs", -1, &fs)) != SC_OK)
         return st;
     const parse_value *cv = build_arg(n, "convexity", -1);
     if (cv && cv->kind != PARSE_NUMBER)

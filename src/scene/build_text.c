@@ -116,18 +116,6 @@ static sc_status get_string(const build_ctx *c, const parse_node *n, const char 
     return SC_OK;
 }
 
-static sc_status get_number(const build_ctx *c, const parse_node *n, const char *name,
-                            int position, double *out)
-{
-    const parse_value *v = build_arg(n, name, position);
-    if (!v)
-        return SC_OK;
-    if (v->kind != PARSE_NUMBER)
-        return build_wrong_type(c, n, name, v, "a number");
-    *out = v->u.number;
-    return SC_OK;
-}
-
 static sc_status read_args(const build_ctx *c, const parse_node *n, text_args *a)
 {
     memset(a, 0, sizeof *a);
@@ -143,17 +131,17 @@ static sc_status read_args(const build_ctx *c, const parse_node *n, text_args *a
     a->valign = "baseline";
     sc_status st;
     if ((st = get_string(c, n, "text", 0, &a->text)) != SC_OK ||
-        (st = get_number(c, n, "size", 1, &a->size)) != SC_OK ||
+        (st = build_number(c, n, "size", 1, &a->size)) != SC_OK ||
         (st = get_string(c, n, "font", 2, &a->font)) != SC_OK ||
         (st = get_string(c, n, "direction", -1, &a->direction)) != SC_OK ||
         (st = get_string(c, n, "language", -1, &a->language)) != SC_OK ||
         (st = get_string(c, n, "script", -1, &a->script)) != SC_OK ||
         (st = get_string(c, n, "halign", -1, &a->halign)) != SC_OK ||
         (st = get_string(c, n, "valign", -1, &a->valign)) != SC_OK ||
-        (st = get_number(c, n, "spacing", -1, &a->spacing)) != SC_OK ||
-        (st = get_number(c, n, "$fn", -1, &a->fn)) != SC_OK ||
-        (st = get_number(c, n, "$fa", -1, &a->fa)) != SC_OK ||
-        (st = get_number(c, n, "$fs", -1, &a->fs)) != SC_OK)
+        (st = build_number(c, n, "spacing", -1, &a->spacing)) != SC_OK ||
+        (st = build_number(c, n, "$fn", -1, &a->fn)) != SC_OK ||
+        (st = build_number(c, n, "$fa", -1, &a->fa)) != SC_OK ||
+        (st = build_number(c, n, "$fs", -1, &a->fs)) != SC_OK)
         return st;
     const parse_value *tv = build_arg(n, "text", 0);
     a->length = tv ? tv->u.string.length : 0;
@@ -890,28 +878,9 @@ static sc_status gather(const build_ctx *c, const parse_node *n, const affine2 *
                        "'%s' inside linear_extrude is not supported yet", name);
     affine2 inner = *m;
     if (strcmp(name, "multmatrix") == 0) {
-        const parse_value *v = build_arg(n, "m", 0);
-        double a[4][4] = {{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}, {0, 0, 0, 1}};
-        int ok = !v || (v->kind == PARSE_VECTOR && v->u.vector.count == 4);
-        for (uint32_t r = 0; v && ok && r < 4; r++) {
-            const parse_value *row = &v->u.vector.items[r];
-            ok = row->kind == PARSE_VECTOR && row->u.vector.count == 4;
-            for (uint32_t k = 0; ok && k < 4; k++) {
-                ok = row->u.vector.items[k].kind == PARSE_NUMBER &&
-                     isfinite(row->u.vector.items[k].u.number);
-                if (ok)
-                    a[r][k] = row->u.vector.items[k].u.number;
-            }
-        }
-        if (!ok)
-            return err_set(c->error, SC_ERR_SEMANTIC, &n->loc,
-                           "multmatrix: matrix must be 4x4 numbers");
-        /* inner = m after the matrix's xy part (x' = a00 x + a01 y + a03) */
-        for (int r = 0; r < 2; r++) {
-            inner.m[r][0] = m->m[r][0] * a[0][0] + m->m[r][1] * a[1][0];
-            inner.m[r][1] = m->m[r][0] * a[0][1] + m->m[r][1] * a[1][1];
-            inner.m[r][2] = m->m[r][0] * a[0][3] + m->m[r][1] * a[1][3] + m->m[r][2];
-        }
+        sc_status st = build_matrix_xy(c, n, m->m, inner.m);
+        if (st != SC_OK)
+            return st;
     }
     for (const parse_node *k = n->first_child; k; k = k->next) {
         sc_status st = gather(c, k, &inner, g, depth + 1);

@@ -76,27 +76,9 @@ static sc_status clip_status(const eval *e, const parse_node *n, int code)
 static sc_status get_number(const eval *e, const parse_node *n, const char *name,
                             int position, double *out, int *given)
 {
-    const parse_value *v = build_arg(n, name, position);
     if (given)
-        *given = v != NULL;
-    if (!v)
-        return SC_OK;
-    if (v->kind != PARSE_NUMBER)
-        return build_wrong_type(e->c, n, name, v, "a number");
-    *out = v->u.number;
-    return SC_OK;
-}
-
-static sc_status get_bool(const eval *e, const parse_node *n, const char *name,
-                          int position, int *out)
-{
-    const parse_value *v = build_arg(n, name, position);
-    if (!v)
-        return SC_OK;
-    if (v->kind != PARSE_BOOL)
-        return build_wrong_type(e->c, n, name, v, "true or false");
-    *out = v->u.boolean;
-    return SC_OK;
+        *given = build_arg(n, name, position) != NULL;
+    return build_number(e->c, n, name, position, out);
 }
 
 /* $fn, $fa, $fs with OpenSCAD's defaults. */
@@ -115,20 +97,9 @@ static sc_status get_resolution(const eval *e, const parse_node *n, double *fn,
 
 static sc_status read_square(const eval *e, const parse_node *n, twod_region *out)
 {
-    double sx = 1, sy = 1;
-    int center = 0;
-    const parse_value *v = build_arg(n, "size", 0);
-    if (v && v->kind == PARSE_NUMBER) {
-        sx = sy = v->u.number;
-    } else if (v && v->kind == PARSE_VECTOR && v->u.vector.count == 2 &&
-               v->u.vector.items[0].kind == PARSE_NUMBER &&
-               v->u.vector.items[1].kind == PARSE_NUMBER) {
-        sx = v->u.vector.items[0].u.number;
-        sy = v->u.vector.items[1].u.number;
-    } else if (v) {
-        return build_wrong_type(e->c, n, "size", v, "a number or [x, y]");
-    }
-    sc_status st = get_bool(e, n, "center", 1, &center);
+    double sx, sy;
+    int center;
+    sc_status st = build_square(e->c, n, &sx, &sy, &center);
     if (st != SC_OK)
         return st;
     if (!(sx > 0 && sy > 0 && isfinite(sx) && isfinite(sy)))
@@ -331,35 +302,8 @@ static sc_status combine(const eval *e, const parse_node *n, twod_region *region
 
 static sc_status read_matrix(const eval *e, const parse_node *n, double m[2][3])
 {
-    const parse_value *v = build_arg(n, "m", 0);
-    double a[4][4] = {{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}, {0, 0, 0, 1}};
-    int ok = !v || (v->kind == PARSE_VECTOR && v->u.vector.count == 4);
-    for (uint32_t r = 0; v && ok && r < 4; r++) {
-        const parse_value *row = &v->u.vector.items[r];
-        ok = row->kind == PARSE_VECTOR && row->u.vector.count == 4;
-        for (uint32_t k = 0; ok && k < 4; k++) {
-            ok = row->u.vector.items[k].kind == PARSE_NUMBER;
-            if (ok)
-                a[r][k] = row->u.vector.items[k].u.number;
-        }
-    }
-    if (!ok)
-        return err_set(e->c->error, SC_ERR_SEMANTIC, &n->loc,
-                       "multmatrix: matrix must be 4x4 numbers");
-    for (int r = 0; r < 4; r++)
-        for (int k = 0; k < 4; k++)
-            if (!isfinite(a[r][k]))
-                return err_set(e->c->error, SC_ERR_SEMANTIC, &n->loc,
-                               "multmatrix: matrix entries must be finite");
-    if (a[3][0] != 0 || a[3][1] != 0 || a[3][2] != 0 || a[3][3] != 1)
-        return err_set(e->c->error, SC_ERR_SEMANTIC, &n->loc,
-                       "multmatrix: bottom row must be [0, 0, 0, 1]");
-    for (int r = 0; r < 2; r++) {
-        m[r][0] = a[r][0];
-        m[r][1] = a[r][1];
-        m[r][2] = a[r][3];
-    }
-    return SC_OK;
+    static const double id[2][3] = {{1, 0, 0}, {0, 1, 0}};
+    return build_matrix_xy(e->c, n, id, m);
 }
 
 static sc_status transform(const eval *e, const parse_node *n, double m[2][3],
@@ -394,7 +338,7 @@ static sc_status offset(const eval *e, const parse_node *n, twod_region *r)
         return st;
     if (!has_r) {
         if ((st = get_number(e, n, "delta", -1, &delta, &has_delta)) != SC_OK ||
-            (st = get_bool(e, n, "chamfer", -1, &chamfer)) != SC_OK)
+            (st = build_bool(e->c, n, "chamfer", -1, &chamfer)) != SC_OK)
             return st;
         if (has_delta)
             join = chamfer ? TWOD_JOIN_SQUARE : TWOD_JOIN_MITER;
