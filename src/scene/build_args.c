@@ -108,3 +108,34 @@ sc_status build_bool(const build_ctx *c, const parse_node *n, const char *name,
     *out = v->u.boolean;
     return SC_OK;
 }
+
+static const char polygon_points[] = "a vector of [x, y] points";
+
+sc_status build_polygon(const build_ctx *c, const parse_node *n,
+                        const parse_value **points, const parse_value **paths)
+{
+    const parse_value *pts = build_arg(n, "points", 0), *ps = build_arg(n, "paths", 1);
+    *points = pts;
+    *paths = ps;
+    if (!pts)
+        return SC_OK;
+    if (pts->kind != PARSE_VECTOR)
+        return build_wrong_type(c, n, "points", pts, polygon_points);
+    for (uint32_t i = 0; i < pts->u.vector.count; i++) {
+        const parse_value *v = &pts->u.vector.items[i];
+        if (v->kind != PARSE_VECTOR || v->u.vector.count != 2 ||
+            v->u.vector.items[0].kind != PARSE_NUMBER ||
+            v->u.vector.items[1].kind != PARSE_NUMBER ||
+            !isfinite(v->u.vector.items[0].u.number) ||
+            !isfinite(v->u.vector.items[1].u.number))
+            return build_wrong_type(c, n, "points", v, polygon_points);
+    }
+    if (ps && ps->kind != PARSE_VECTOR)
+        return build_wrong_type(c, n, "paths", ps, BUILD_POLYGON_PATHS);
+    for (uint32_t k = 0; ps && k < ps->u.vector.count; k++) {
+        if (ps->u.vector.items[k].kind != PARSE_VECTOR)
+            return build_wrong_type(c, n, "paths", &ps->u.vector.items[k],
+                                    BUILD_POLYGON_PATHS);
+    }
+    return SC_OK;
+}

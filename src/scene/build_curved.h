@@ -47,6 +47,12 @@ sc_status build_bool(const build_ctx *c, const parse_node *n, const char *name,
  * children). Maps are rows [a b tx; c d ty]; inner may be outer. */
 sc_status build_matrix_xy(const build_ctx *c, const parse_node *n,
                           const double outer[2][3], double inner[2][3]);
+/* polygon(points, paths)'s arguments: points (NULL when absent) a vector
+ * of finite [x, y], paths (NULL when absent) a vector of vectors; the
+ * indices in the paths are the caller's to check. */
+#define BUILD_POLYGON_PATHS "a vector of paths, each a vector of point indices"
+sc_status build_polygon(const build_ctx *c, const parse_node *n,
+                        const parse_value **points, const parse_value **paths);
 /* square(size = s | [x, y], center = false)'s arguments. */
 sc_status build_square(const build_ctx *c, const parse_node *n, double *sx, double *sy,
                        int *center);

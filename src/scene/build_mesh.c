@@ -448,8 +448,7 @@ static int ends_with(const char *s, const char *suffix)
     return 1;
 }
 
-/* Reads a whole file into a malloc'd buffer; returns NULL and sets *why. */
-static char *read_all(const char *path, size_t *size, const char **why)
+char *build_read_file(const char *path, size_t limit, size_t *size, const char **why)
 {
     FILE *f = fopen(path, "rb");
     if (!f) {
@@ -460,7 +459,7 @@ static char *read_all(const char *path, size_t *size, const char **why)
     size_t len = 0, cap = 0;
     for (;;) {
         if (len == cap) {
-            if (cap >= BUILD_MAX_MESH_FILE) {
+            if (cap >= limit) {
                 *why = "file is too large";
                 free(buf);
                 fclose(f);
@@ -526,7 +525,7 @@ sc_status build_import(const build_ctx *c, const parse_node *n, int emit, prim *
     strcpy(path + dir, name);
     size_t size = 0;
     const char *why = NULL;
-    char *text = read_all(path, &size, &why);
+    char *text = build_read_file(path, BUILD_MAX_MESH_FILE, &size, &why);
     if (!text) {
         sc_status st =
             err_set(c->error, SC_ERR_IO, &loc, "import: cannot read '%s': %s", path, why);

@@ -23,6 +23,11 @@ sc_status build_mesh_prim(const build_ctx *c, const sc_location *loc, const char
                           const uint32_t *indices, const uint32_t *face_start,
                           uint32_t face_count, prim *out, const char **empty);
 
+/* Reads a whole file of at most about limit bytes into a malloc'd,
+ * NUL-terminated buffer; returns NULL and sets *why (strerror's text, "file
+ * is too large", "out of memory" or "read error") on failure. */
+char *build_read_file(const char *path, size_t limit, size_t *size, const char **why);
+
 /* import(file): an STL (ASCII or binary) or OFF file, its path relative to
  * the directory of the file being read. */
 sc_status build_import(const build_ctx *c, const parse_node *n, int emit, prim *out,

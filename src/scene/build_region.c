@@ -49,9 +49,6 @@ typedef struct walker {
     uint32_t start_cap;
 } walker;
 
-static const char polygon_points[] = "a vector of [x, y] points";
-static const char polygon_paths[] = "a vector of paths, each a vector of point indices";
-
 static int name_is(const parse_node *n, const char *const *names)
 {
     for (; *names; names++)
@@ -196,23 +193,11 @@ static sc_status read_polygon(walker *w, const parse_node *n, const affine2 *m,
                               int *pushed)
 {
     const build_ctx *c = w->c;
-    const parse_value *pts = build_arg(n, "points", 0), *paths = build_arg(n, "paths", 1);
-    if (!pts)
-        return SC_OK;
-    if (pts->kind != PARSE_VECTOR)
-        return build_wrong_type(c, n, "points", pts, polygon_points);
+    const parse_value *pts, *paths;
+    sc_status pst = build_polygon(c, n, &pts, &paths);
+    if (pst != SC_OK || !pts)
+        return pst;
     uint32_t np = pts->u.vector.count;
-    for (uint32_t i = 0; i < np; i++) {
-        const parse_value *v = &pts->u.vector.items[i];
-        if (v->kind != PARSE_VECTOR || v->u.vector.count != 2 ||
-            v->u.vector.items[0].kind != PARSE_NUMBER ||
-            v->u.vector.items[1].kind != PARSE_NUMBER ||
-            !isfinite(v->u.vector.items[0].u.number) ||
-            !isfinite(v->u.vector.items[1].u.number))
-            return build_wrong_type(c, n, "points", v, polygon_points);
-    }
-    if (paths && paths->kind != PARSE_VECTOR)
-        return build_wrong_type(c, n, "paths", paths, polygon_paths);
     if (paths && paths->u.vector.count == 0)
         paths = NULL; /* OpenSCAD: one path through all the points */
     uint32_t count = paths ? paths->u.vector.count : 1;
@@ -220,7 +205,7 @@ static sc_status read_polygon(walker *w, const parse_node *n, const affine2 *m,
     for (uint32_t k = 0; k < count; k++) {
         const parse_value *path = paths ? &paths->u.vector.items[k] : NULL;
         if (path && path->kind != PARSE_VECTOR)
-            return build_wrong_type(c, n, "paths", path, polygon_paths);
+            return build_wrong_type(c, n, "paths", path, BUILD_POLYGON_PATHS);
         total += path ? path->u.vector.count : np;
     }
     if (!reserve_points(w, total) || !reserve_paths(w, count))

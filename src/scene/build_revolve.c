@@ -245,36 +245,21 @@ static sc_status read_circle(const build_ctx *c, const parse_node *n, const affi
     return SC_OK;
 }
 
-static const char polygon_points[] = "a vector of [x, y] points";
-static const char polygon_paths[] = "a vector of paths, each a vector of point indices";
-
 static sc_status read_polygon(const build_ctx *c, const parse_node *n, const affine2 *m,
                               profile *p)
 {
-    const parse_value *pts = build_arg(n, "points", 0), *paths = build_arg(n, "paths", 1);
-    if (!pts)
-        return SC_OK;
-    if (pts->kind != PARSE_VECTOR)
-        return build_wrong_type(c, n, "points", pts, polygon_points);
+    const parse_value *pts, *paths;
+    sc_status pst = build_polygon(c, n, &pts, &paths);
+    if (pst != SC_OK || !pts)
+        return pst;
     uint32_t np = pts->u.vector.count;
-    for (uint32_t i = 0; i < np; i++) {
-        const parse_value *v = &pts->u.vector.items[i];
-        if (v->kind != PARSE_VECTOR || v->u.vector.count != 2 ||
-            v->u.vector.items[0].kind != PARSE_NUMBER ||
-            v->u.vector.items[1].kind != PARSE_NUMBER ||
-            !isfinite(v->u.vector.items[0].u.number) ||
-            !isfinite(v->u.vector.items[1].u.number))
-            return build_wrong_type(c, n, "points", v, polygon_points);
-    }
-    if (paths && paths->kind != PARSE_VECTOR)
-        return build_wrong_type(c, n, "paths", paths, polygon_paths);
     begin_region(p);
     uint32_t first = p->paths;
     uint32_t count = paths ? paths->u.vector.count : 1;
     for (uint32_t k = 0; k < count; k++) {
         const parse_value *path = paths ? &paths->u.vector.items[k] : NULL;
         if (path && path->kind != PARSE_VECTOR)
-            return build_wrong_type(c, n, "paths", path, polygon_paths);
+            return build_wrong_type(c, n, "paths", path, BUILD_POLYGON_PATHS);
         uint32_t len = path ? path->u.vector.count : np;
         if (!begin_path(p))
             return nomem(c, n);

@@ -204,51 +204,6 @@ static sc_status read_png(const build_ctx *c, const sc_location *loc, const char
     return st;
 }
 
-/* Reads the whole file; NULL and *why on failure. */
-static unsigned char *slurp(const char *path, size_t *size, const char **why)
-{
-    FILE *f = fopen(path, "rb");
-    if (!f) {
-        *why = strerror(errno);
-        return NULL;
-    }
-    unsigned char *buf = NULL;
-    size_t len = 0, cap = 0;
-    for (;;) {
-        if (len == cap) {
-            if (cap >= BUILD_SURFACE_MAX_FILE) {
-                *why = "file is too large";
-                free(buf);
-                fclose(f);
-                return NULL;
-            }
-            cap = cap ? 2 * cap : 65536;
-            unsigned char *next = realloc(buf, cap + 1);
-            if (!next) {
-                *why = "out of memory";
-                free(buf);
-                fclose(f);
-                return NULL;
-            }
-            buf = next;
-        }
-        size_t got = fread(buf + len, 1, cap - len, f);
-        len += got;
-        if (got == 0)
-            break;
-    }
-    int failed = ferror(f);
-    fclose(f);
-    if (failed) {
-        *why = "read error";
-        free(buf);
-        return NULL;
-    }
-    buf[len] = 0;
-    *size = len;
-    return buf;
-}
-
 /* The mesh of g (see the top of this file). */
 static sc_status surface_mesh(const build_ctx *c, const sc_location *loc, const grid *g,
                               int center, prim *out, const char **empty)
@@ -403,7 +358,8 @@ sc_status build_surface(const build_ctx *c, const parse_node *n, int emit, prim 
     strcpy(path + dir, name);
     size_t size = 0;
     const char *why = NULL;
-    unsigned char *bytes = slurp(path, &size, &why);
+    unsigned char *bytes =
+        (unsigned char *)build_read_file(path, BUILD_SURFACE_MAX_FILE, &size, &why);
     grid g = {NULL, 0, 0, 0};
     sc_status st = SC_OK;
     if (!bytes)

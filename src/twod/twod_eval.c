@@ -152,9 +152,6 @@ static sc_status read_circle(const eval *e, const parse_node *n, twod_region *ou
     return SC_OK;
 }
 
-static const char polygon_points[] = "a vector of [x, y] points";
-static const char polygon_paths[] = "a vector of paths, each a vector of point indices";
-
 /* text: OpenSCAD's glyph polygons (build_text.c), outlines counter-clockwise
  * and holes clockwise, united with the non-zero rule as its text renderer
  * unites them. A font fallback is the caller's warning (c->note). */
@@ -185,23 +182,11 @@ static sc_status read_text(const eval *e, const parse_node *n, twod_region *out)
 
 static sc_status read_polygon(const eval *e, const parse_node *n, twod_region *out)
 {
-    const parse_value *pts = build_arg(n, "points", 0), *paths = build_arg(n, "paths", 1);
-    if (!pts)
-        return SC_OK;
-    if (pts->kind != PARSE_VECTOR)
-        return build_wrong_type(e->c, n, "points", pts, polygon_points);
+    const parse_value *pts, *paths;
+    sc_status pst = build_polygon(e->c, n, &pts, &paths);
+    if (pst != SC_OK || !pts)
+        return pst;
     uint32_t np = pts->u.vector.count;
-    for (uint32_t i = 0; i < np; i++) {
-        const parse_value *v = &pts->u.vector.items[i];
-        if (v->kind != PARSE_VECTOR || v->u.vector.count != 2 ||
-            v->u.vector.items[0].kind != PARSE_NUMBER ||
-            v->u.vector.items[1].kind != PARSE_NUMBER ||
-            !isfinite(v->u.vector.items[0].u.number) ||
-            !isfinite(v->u.vector.items[1].u.number))
-            return build_wrong_type(e->c, n, "points", v, polygon_points);
-    }
-    if (paths && paths->kind != PARSE_VECTOR)
-        return build_wrong_type(e->c, n, "paths", paths, polygon_paths);
     if (paths && paths->u.vector.count == 0)
         paths = NULL; /* OpenSCAD: an empty paths list means all points */
     if (!paths && np < 3)
@@ -210,7 +195,7 @@ static sc_status read_polygon(const eval *e, const parse_node *n, twod_region *o
     for (uint32_t k = 0; k < count; k++) {
         const parse_value *path = paths ? &paths->u.vector.items[k] : NULL;
         if (path && path->kind != PARSE_VECTOR)
-            return build_wrong_type(e->c, n, "paths", path, polygon_paths);
+            return build_wrong_type(e->c, n, "paths", path, BUILD_POLYGON_PATHS);
         uint32_t len = path ? path->u.vector.count : np;
         if (!twod_begin_contour(out))
             return nomem(e, n);
