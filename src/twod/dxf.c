@@ -506,7 +506,7 @@ static sc_status end_entity(reader *r)
         st = end_ellipse(r);
     } else if (is(r->mode, "INSERT")) {
         st = end_insert(r);
-    } else if (is(r->mode, "DIMENSION") && (!r->in_entities || layer_ok(r))) {
+    } else if (is(r->mode, "DIMENSION") && layer_ok(r)) {
         /* dimensions are annotations: no geometry */
     } else if (is(r->mode, "BLOCK")) {
         r->current_block = r->iddata;
