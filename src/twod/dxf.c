@@ -98,7 +98,8 @@ typedef struct reader {
     size_t xy_cap, point_cell_cap;
     seg *segs;
     uint32_t seg_count, seg_cap;
-    uint32_t added; /* segments added anywhere, for the limit */
+    uint32_t added;       /* segments added anywhere, for the limit */
+    uint32_t block_lines; /* segments added in BLOCKS */
     block *blocks;
     uint32_t block_count, block_cap;
     /* the entity being read */
@@ -288,6 +289,7 @@ static sc_status add_line(reader *r, double x1, double y1, double x2, double y2)
                        DXF_MAX_SEGMENTS);
     }
     r->added++;
+    r->block_lines += r->in_blocks;
     uint32_t c1 = grid_align(r, &x1, &y1);
     if (c1 == UINT32_MAX)
         return nomem(r);
@@ -719,7 +721,7 @@ static int shared_end(const reader *r, uint32_t idx, int j)
  * adds it to out as a contour (reversed; open paths keep their first
  * point). */
 static sc_status follow(reader *r, uint32_t cur, int cp, int closed, uint32_t *path,
-                        twod_region *out)
+                        uint32_t *count, twod_region *out)
 {
     uint32_t n = 0;
     path[n++] = r->segs[cur].p[cp];
@@ -744,6 +746,7 @@ static sc_status follow(reader *r, uint32_t cur, int cp, int closed, uint32_t *p
         if (!found)
             break;
     }
+    *count = n;
     if (!twod_begin_contour(out))
         return nomem(r);
     for (uint32_t j = 1; j < (closed ? n : n + 1); j++) {
@@ -762,16 +765,29 @@ static sc_status join_paths(reader *r, twod_region *out)
     if (!path)
         return nomem(r);
     sc_status st = SC_OK;
-    /* open paths: from the lowest segment with an unshared end */
-    for (int again = 1; again && st == SC_OK;) {
+    uint32_t n;
+    /* open paths: from the lowest segment with an unshared end. Segments
+     * below the last start had no unshared end, and only those listed in
+     * the cells of the path just taken can have one now, so the next
+     * search starts at the lowest of those; block segments listed under
+     * drawing indices break that reasoning, and with them every search
+     * starts at 0. */
+    for (uint32_t start = 0, again = 1; again && st == SC_OK;) {
         again = 0;
-        for (uint32_t idx = 0; idx < r->seg_count && !again; idx++) {
+        for (uint32_t idx = start; idx < r->seg_count && !again; idx++) {
             if (r->segs[idx].disabled)
                 continue;
             for (int j = 0; j < 2 && !again; j++) {
                 if (!shared_end(r, idx, j)) {
-                    st = follow(r, idx, j, 0, path, out);
+                    st = follow(r, idx, j, 0, path, &n, out);
                     again = 1;
+                    start = r->block_lines ? 0 : idx;
+                    for (uint32_t i = 0; i < n && start; i++) {
+                        const cell *e = &r->cells[r->point_cell[path[i]]];
+                        for (uint32_t q = 0; q < e->n; q++)
+                            if (e->k[q] < start && !r->segs[e->k[q]].disabled)
+                                start = e->k[q];
+                    }
                 }
             }
         }
@@ -779,7 +795,7 @@ static sc_status join_paths(reader *r, twod_region *out)
     /* closed paths: from the lowest remaining segment */
     for (uint32_t idx = 0; idx < r->seg_count && st == SC_OK; idx++)
         if (!r->segs[idx].disabled)
-            st = follow(r, idx, 0, 1, path, out);
+            st = follow(r, idx, 0, 1, path, &n, out);
     free(path);
     return st;
 }
