@@ -166,6 +166,35 @@ static void test_open_paths(void **state)
     twod_free(&r);
 }
 
+/* OpenSCAD's order of open paths, where taking one path leaves a lower
+ * segment with a free end: segment 1 (Q Y) is shared at both ends until
+ * the path from segment 2's free end R takes segment 0 at Q; the next path
+ * must start from segment 1 at Q, not from segment 4's free end H. */
+static void test_open_path_order(void **state)
+{
+    (void)state;
+    const char *text = "0\nSECTION\n2\nENTITIES\n"
+                       "0\nLINE\n10\n1\n20\n0\n11\n1\n21\n1\n"   /* 0: Q D */
+                       "0\nLINE\n10\n1\n20\n0\n11\n2\n21\n-1\n"  /* 1: Q Y */
+                       "0\nLINE\n10\n0\n20\n0\n11\n1\n21\n0\n"   /* 2: R Q */
+                       "0\nLINE\n10\n1\n20\n1\n11\n2\n21\n1\n"   /* 3: D F */
+                       "0\nLINE\n10\n2\n20\n-1\n11\n3\n21\n-1\n" /* 4: Y H */
+                       "0\nENDSEC\n0\nEOF\n";
+    dxf_options o = {0, 12, 2, NULL, 0, 0, 1};
+    sc_error e;
+    twod_region r;
+    twod_init(&r);
+    assert_int_equal(dxf_read(text, strlen(text), "d.dxf", &o, &r, NULL, &e), SC_OK);
+    assert_int_equal(r.contour_count, 2);
+    /* R Q D F reversed, then Q Y H reversed */
+    static const double want[] = {2, 1, 1, 1, 1, 0, 0, 0, 3, -1, 2, -1, 1, 0};
+    assert_int_equal(r.point_count, 7);
+    assert_int_equal(r.start[1], 4);
+    for (int i = 0; i < 14; i++)
+        assert_true(r.xy[i] == want[i]);
+    twod_free(&r);
+}
+
 static void check_error(const char *text, const char *expected)
 {
     twod_region r;
@@ -350,10 +379,10 @@ static void test_import(void **state)
 int main(void)
 {
     const struct CMUnitTest tests[] = {
-        cmocka_unit_test(test_layers),      cmocka_unit_test(test_origin_scale),
-        cmocka_unit_test(test_unsupported), cmocka_unit_test(test_open_paths),
-        cmocka_unit_test(test_errors),      cmocka_unit_test(test_malformed),
-        cmocka_unit_test(test_import),
+        cmocka_unit_test(test_layers),          cmocka_unit_test(test_origin_scale),
+        cmocka_unit_test(test_unsupported),     cmocka_unit_test(test_open_paths),
+        cmocka_unit_test(test_open_path_order), cmocka_unit_test(test_errors),
+        cmocka_unit_test(test_malformed),       cmocka_unit_test(test_import),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
