@@ -28,8 +28,14 @@
  *                                 f fragments of a circle of radius |r|
  *   hull()                        convex hull of every child's points
  *   minkowski()                   Clipper's Minkowski sum (twod_clip.cpp)
+ *   import(file = "x.dxf", layer, origin, scale, $fn, $fa, $fs)
+ *                          the drawing's contours as OpenSCAD's DxfData
+ *                          joins them (dxf.c), then sanitized; the file is
+ *                          found from the directory of the model. Other
+ *                          files are errors: .svg is not supported yet,
+ *                          .stl, .off and the like are 3D.
  * 3D nodes are errors (OpenSCAD drops them from a 2D operation with a
- * warning), text is not supported yet. The recursion over the children
+ * warning). The recursion over the children
  * has a depth guard (TWOD_MAX_DEPTH).
  */
 #include <math.h>
@@ -39,6 +45,7 @@
 #include "base/error.h"
 #include "scene/build_text.h"
 #include "scene/faithful.h"
+#include "twod/dxf.h"
 #include "twod/twod.h"
 
 enum { TWOD_MAX_DEPTH = 1000 };
@@ -416,11 +423,88 @@ static sc_status minkowski(const eval *e, const parse_node *n, twod_region *regi
     return clip_status(e, n, code);
 }
 
+static int has_suffix(const char *s, const char *suffix)
+{
+    size_t a = strlen(s), b = strlen(suffix);
+    if (a < b)
+        return 0;
+    for (size_t i = 0; i < b; i++) {
+        char x = s[a - b + i];
+        if (x >= 'A' && x <= 'Z')
+            x = (char)(x - 'A' + 'a');
+        if (x != suffix[i])
+            return 0;
+    }
+    return 1;
+}
+
+/* import of a DXF drawing (dxf.c), sanitized as OpenSCAD sanitizes a leaf's
+ * polygons. */
+static sc_status read_import(const eval *e, const parse_node *n, twod_region *out)
+{
+    const parse_value *file = build_arg(n, "file", 0);
+    if (!file)
+        return err_set(e->c->error, SC_ERR_SEMANTIC, &n->loc,
+                       "missing argument 'file' of 'import'");
+    if (file->kind != PARSE_STRING)
+        return build_wrong_type(e->c, n, "file", file, "a file name");
+    const char *name = file->u.string.chars;
+    sc_location loc = build_loc(e->c, file);
+    if (has_suffix(name, ".svg"))
+        return err_set(e->c->error, SC_ERR_UNSUPPORTED, &loc,
+                       "import of '%s' is not supported yet (2D: only .dxf files)", name);
+    if (!has_suffix(name, ".dxf"))
+        return err_set(e->c->error, SC_ERR_SEMANTIC, &loc,
+                       "import of '%s' inside %s: a 2D operation imports only 2D files "
+                       "(.dxf)",
+                       name, e->outer);
+    dxf_options o = {0, 12, 2, NULL, 0, 0, 1};
+    sc_status st;
+    if ((st = get_resolution(e, n, &o.fn, &o.fa, &o.fs)) != SC_OK ||
+        (st = get_number(e, n, "scale", -1, &o.scale, NULL)) != SC_OK)
+        return st;
+    const parse_value *layer = build_arg(n, "layer", -1);
+    if (layer && layer->kind != PARSE_STRING)
+        return build_wrong_type(e->c, n, "layer", layer, "a layer name");
+    o.layer = layer ? layer->u.string.chars : NULL;
+    const parse_value *origin = build_arg(n, "origin", -1);
+    if (origin) {
+        if (origin->kind != PARSE_VECTOR || origin->u.vector.count != 2 ||
+            origin->u.vector.items[0].kind != PARSE_NUMBER ||
+            origin->u.vector.items[1].kind != PARSE_NUMBER)
+            return build_wrong_type(e->c, n, "origin", origin, "[x, y]");
+        o.origin_x = origin->u.vector.items[0].u.number;
+        o.origin_y = origin->u.vector.items[1].u.number;
+    }
+    if (!isfinite(o.scale) || !isfinite(o.origin_x) || !isfinite(o.origin_y))
+        return err_set(e->c->error, SC_ERR_SEMANTIC, &n->loc,
+                       "import: origin and scale must be finite");
+    /* the directory of the file being read, when name is relative */
+    const char *f = e->c->file;
+    const char *slash = f ? strrchr(f, '/') : NULL;
+    size_t dir = name[0] != '/' && slash ? (size_t)(slash - f) + 1 : 0;
+    char *path = malloc(dir + strlen(name) + 1);
+    if (!path)
+        return nomem(e, n);
+    memcpy(path, f, dir);
+    strcpy(path + dir, name);
+    char unsupported[32];
+    st = dxf_read_file(path, &loc, &o, out, unsupported, e->c->error);
+    if (st == SC_OK && unsupported[0] && e->c->note && !e->c->note->message[0])
+        err_set(e->c->note, SC_OK, &loc,
+                "import: DXF entities '%s' in '%s' are ignored, as OpenSCAD ignores them",
+                unsupported, path);
+    free(path);
+    if (st == SC_OK && out->contour_count)
+        st = clip_status(e, n, twod_clip_sanitize(out));
+    return st;
+}
+
 static int is_3d(const char *name)
 {
     static const char *const names[] = {
-        "cube",   "sphere",  "cylinder", "polyhedron", "linear_extrude", "rotate_extrude",
-        "import", "surface", "torus",    "quadric",    "implicit",       "halfspace"};
+        "cube",    "sphere", "cylinder", "polyhedron", "linear_extrude", "rotate_extrude",
+        "surface", "torus",  "quadric",  "implicit",   "halfspace"};
     for (size_t i = 0; i < sizeof names / sizeof names[0]; i++)
         if (strcmp(names[i], name) == 0)
             return 1;
@@ -444,6 +528,8 @@ static sc_status eval_node(const eval *e, const parse_node *n, twod_region *out,
         return read_polygon(e, n, out);
     if (strcmp(name, "text") == 0)
         return read_text(e, n, out);
+    if (strcmp(name, "import") == 0)
+        return read_import(e, n, out);
     if (is_3d(name))
         return err_set(e->c->error, SC_ERR_SEMANTIC, &n->loc,
                        "'%s' is a 3D object inside a 2D operation (%s)", name, e->outer);

@@ -1,0 +1,388 @@
+/* Tests of the DXF reader (src/twod/dxf.c) and of import("x.dxf") in the
+ * 2D engine: a hand-written drawing with LINE, LWPOLYLINE, CIRCLE, ARC and
+ * an INSERT of a block, each on its own layer, gives the areas computed by
+ * hand (points snapped to OpenSCAD's 2^-10 grid); the layer filter, origin
+ * and scale; open paths closed; ignored entities named; exact messages for
+ * malformed files; and every prefix and many one-byte mutations of the
+ * drawing read or fail with a message, never crash. */
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <cmocka.h>
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+
+#include "scene/parse.h"
+#include "scene/scene.h"
+#include "twod/dxf.h"
+#include "twod/twod.h"
+
+/* Layers: "sq" a 10 x 10 square of four LINEs in scrambled order and
+ * direction with a CIRCLE of radius 2 inside; "poly" a closed LWPOLYLINE
+ * 4 x 3 at (30, 0); "arc" an ARC of radius 1 at (20, 0) from 0 to 180
+ * degrees closed by a LINE; "open" an open LWPOLYLINE (0, 20) (4, 20)
+ * (0, 23); "ins" an INSERT of block "tri" (the triangle (0, 0) (1, 0)
+ * (0, 1)) at (50, 0), x scaled by 2; "sp" a SPLINE. */
+static const char drawing[] =
+    "0\nSECTION\n2\nHEADER\n9\n$ACADVER\n1\nAC1015\n0\nENDSEC\n"
+    "0\nSECTION\n2\nBLOCKS\n"
+    "0\nBLOCK\n8\n0\n2\ntri\n10\n0.0\n20\n0.0\n"
+    "0\nLINE\n8\n0\n10\n0\n20\n0\n11\n1\n21\n0\n"
+    "0\nLINE\n8\n0\n10\n1\n20\n0\n11\n0\n21\n1\n"
+    "0\nLINE\n8\n0\n10\n0\n20\n1\n11\n0\n21\n0\n"
+    "0\nENDBLK\n8\n0\n"
+    "0\nENDSEC\n"
+    "0\nSECTION\n2\nENTITIES\n"
+    "0\nLINE\n8\nsq\n10\n10\n20\n10\n11\n0\n21\n10\n"
+    "0\nLINE\n8\nsq\n10\n0\n20\n0\n11\n10\n21\n0\n"
+    "0\nLINE\n8\nsq\n10\n0\n20\n10\n11\n0\n21\n0\n"
+    "0\nLINE\n8\nsq\n10\n10\n20\n0\n11\n10\n21\n10\n"
+    "0\nCIRCLE\n8\nsq\n10\n5\n20\n5\n30\n0\n40\n2\n"
+    "0\nLWPOLYLINE\n8\npoly\n90\n4\n70\n1\n"
+    "10\n30\n20\n0\n10\n34\n20\n0\n10\n34\n20\n3\n10\n30\n20\n3\n"
+    "0\nARC\n8\narc\n10\n20\n20\n0\n40\n1\n50\n0\n51\n180\n"
+    "0\nLINE\n8\narc\n10\n19\n20\n0\n11\n21\n21\n0\n"
+    "0\nLWPOLYLINE\n8\nopen\n90\n3\n70\n0\n"
+    "10\n0\n20\n20\n10\n4\n20\n20\n10\n0\n20\n23\n"
+    "0\nINSERT\n8\nins\n2\ntri\n10\n50\n20\n0\n41\n2\n"
+    "0\nSPLINE\n8\nsp\n10\n0\n20\n0\n"
+    "0\nENDSEC\n0\nEOF\n";
+
+/* the ARC at $fn = 8: half an octagon whose 45-degree points snap to
+ * 724 / 1024 */
+#define HALF_OCTAGON (2.0 * 724.0 / 1024.0)
+
+static sc_status read(const char *text, const char *layer, double origin_x, double scale,
+                      twod_region *r, char *unsupported, char *message, size_t size)
+{
+    dxf_options o = {8, 12, 2, layer, origin_x, 0, scale};
+    sc_error e;
+    twod_init(r);
+    sc_status st = dxf_read(text, strlen(text), "d.dxf", &o, r, unsupported, &e);
+    if (st == SC_OK && r->contour_count) {
+        r->sanitized = 0;
+        assert_int_equal(twod_clip_sanitize(r), TWOD_CLIP_OK);
+    }
+    if (st != SC_OK && message)
+        sc_error_format(&e, message, size);
+    return st;
+}
+
+static double area(const char *layer, double origin_x, double scale, uint32_t *contours)
+{
+    twod_region r;
+    char message[600];
+    char unsupported[32];
+    if (read(drawing, layer, origin_x, scale, &r, unsupported, message, sizeof message) !=
+        SC_OK)
+        fail_msg("unexpected error: %s", message);
+    double a = twod_area(&r);
+    if (contours)
+        *contours = r.contour_count;
+    twod_free(&r);
+    return a;
+}
+
+static void test_layers(void **state)
+{
+    (void)state;
+    uint32_t contours;
+    /* the square with the circle's diamond (radius 2, $fn = 8: an octagon
+     * snapped to the grid) as a hole */
+    double c = round(2 * sqrt(0.5) * 1024) / 1024; /* the snapped 45-degree point */
+    double octagon = 4 * 2 * c;                    /* 8 triangles of 2 * c / 2 */
+    assert_true(fabs(area("sq", 0, 1, &contours) - (100 - octagon)) < 1e-12);
+    assert_int_equal(contours, 2);
+    assert_true(fabs(area("poly", 0, 1, &contours) - 12) < 1e-12);
+    assert_int_equal(contours, 1);
+    assert_true(fabs(area("arc", 0, 1, &contours) - HALF_OCTAGON) < 1e-12);
+    assert_int_equal(contours, 1);
+    /* the open polyline is closed by its last edge */
+    assert_true(fabs(area("open", 0, 1, &contours) - 6) < 1e-12);
+    assert_int_equal(contours, 1);
+    /* the block's triangle, x scaled by 2 */
+    assert_true(fabs(area("ins", 0, 1, &contours) - 1) < 1e-12);
+    assert_int_equal(contours, 1);
+    assert_true(fabs(area("no such layer", 0, 1, &contours)) == 0);
+    assert_int_equal(contours, 0);
+    /* all layers: disjoint shapes, areas add up */
+    assert_true(fabs(area(NULL, 0, 1, NULL) -
+                     (100 - octagon + 12 + HALF_OCTAGON + 6 + 1)) < 1e-12);
+    assert_true(fabs(area("", 0, 1, NULL) - (100 - octagon + 12 + HALF_OCTAGON + 6 + 1)) <
+                1e-12);
+}
+
+static void test_origin_scale(void **state)
+{
+    (void)state;
+    twod_region r;
+    char message[600];
+    assert_int_equal(read(drawing, "poly", 30, 2, &r, NULL, message, sizeof message),
+                     SC_OK);
+    assert_true(fabs(twod_area(&r) - 48) < 1e-12);
+    double min_x = INFINITY, max_x = -INFINITY;
+    for (uint32_t i = 0; i < r.point_count; i++) {
+        min_x = fmin(min_x, r.xy[2 * i]);
+        max_x = fmax(max_x, r.xy[2 * i]);
+    }
+    assert_true(min_x == 0 && max_x == 8);
+    twod_free(&r);
+    /* the radius scales with the drawing */
+    assert_true(fabs(area("arc", 0, 2, NULL) - 4 * HALF_OCTAGON) < 1e-12);
+}
+
+static void test_unsupported(void **state)
+{
+    (void)state;
+    twod_region r;
+    char unsupported[32];
+    assert_int_equal(read(drawing, NULL, 0, 1, &r, unsupported, NULL, 0), SC_OK);
+    assert_string_equal(unsupported, "SPLINE");
+    twod_free(&r);
+    assert_int_equal(read(drawing, "sq", 0, 1, &r, unsupported, NULL, 0), SC_OK);
+    assert_string_equal(unsupported, "");
+    twod_free(&r);
+}
+
+/* Two segments meeting at one end and a third alone: the open paths come
+ * first, each from the lowest segment with a free end. */
+static void test_open_paths(void **state)
+{
+    (void)state;
+    const char *text = "0\nSECTION\n2\nENTITIES\n"
+                       "0\nLINE\n10\n0\n20\n0\n11\n2\n21\n0\n"
+                       "0\nLINE\n10\n2\n20\n0\n11\n2\n21\n2\n"
+                       "0\nLINE\n10\n5\n20\n5\n11\n6\n21\n5\n"
+                       "0\nENDSEC\n0\nEOF\n";
+    twod_region r;
+    assert_int_equal(read(text, NULL, 0, 1, &r, NULL, NULL, 0), SC_OK);
+    /* the triangle (0, 0) (2, 0) (2, 2); the lone segment has no area */
+    assert_true(fabs(twod_area(&r) - 2) < 1e-12);
+    twod_free(&r);
+}
+
+/* OpenSCAD's order of open paths, where taking one path leaves a lower
+ * segment with a free end: segment 1 (Q Y) is shared at both ends until
+ * the path from segment 2's free end R takes segment 0 at Q; the next path
+ * must start from segment 1 at Q, not from segment 4's free end H. */
+static void test_open_path_order(void **state)
+{
+    (void)state;
+    const char *text = "0\nSECTION\n2\nENTITIES\n"
+                       "0\nLINE\n10\n1\n20\n0\n11\n1\n21\n1\n"   /* 0: Q D */
+                       "0\nLINE\n10\n1\n20\n0\n11\n2\n21\n-1\n"  /* 1: Q Y */
+                       "0\nLINE\n10\n0\n20\n0\n11\n1\n21\n0\n"   /* 2: R Q */
+                       "0\nLINE\n10\n1\n20\n1\n11\n2\n21\n1\n"   /* 3: D F */
+                       "0\nLINE\n10\n2\n20\n-1\n11\n3\n21\n-1\n" /* 4: Y H */
+                       "0\nENDSEC\n0\nEOF\n";
+    dxf_options o = {0, 12, 2, NULL, 0, 0, 1};
+    sc_error e;
+    twod_region r;
+    twod_init(&r);
+    assert_int_equal(dxf_read(text, strlen(text), "d.dxf", &o, &r, NULL, &e), SC_OK);
+    assert_int_equal(r.contour_count, 2);
+    /* R Q D F reversed, then Q Y H reversed */
+    static const double want[] = {2, 1, 1, 1, 1, 0, 0, 0, 3, -1, 2, -1, 1, 0};
+    assert_int_equal(r.point_count, 7);
+    assert_int_equal(r.start[1], 4);
+    for (int i = 0; i < 14; i++)
+        assert_true(r.xy[i] == want[i]);
+    twod_free(&r);
+}
+
+static void check_error(const char *text, const char *expected)
+{
+    twod_region r;
+    char message[600];
+    assert_int_not_equal(read(text, NULL, 0, 1, &r, NULL, message, sizeof message),
+                         SC_OK);
+    assert_string_equal(message, expected);
+    twod_free(&r);
+}
+
+static void test_errors(void **state)
+{
+    (void)state;
+    check_error("0\nSECTION\n2\nENTITIES\n0\nLINE\n8\nx\n10\nabc\n",
+                "d.dxf:10:1: error: DXF value of group code 10 is not a finite number");
+    check_error("0\nSECTION\n2\nENTITIES\n0\nLINE\n10\n1e999\n",
+                "d.dxf:8:1: error: DXF value of group code 10 is not a finite number");
+    check_error("0\nSECTION\n2\nENTITIES\n0\nLINE\n10\n0x10\n",
+                "d.dxf:8:1: error: DXF value of group code 10 is not a finite number");
+    check_error("0\nSECTION\nzz\nENTITIES\n",
+                "d.dxf:3:1: error: DXF group code 'zz' is not an integer");
+    check_error("0\nSECTION\n2\nENTITIES\n0\nLWPOLYLINE\n70\n1.5\n",
+                "d.dxf:8:1: error: DXF value of group code 70 is not an integer");
+    check_error("0\nSECTION\n2\nENTITIES\n0\nLINE\n10\n1\n20\n1\n0\nEOF\n",
+                "d.dxf:6:1: error: DXF LINE needs 2 points (codes 10 and 20, 11 and 21)");
+    check_error("0\nSECTION\n2\nENTITIES\n0\nCIRCLE\n40\n1\n0\nEOF\n",
+                "d.dxf:6:1: error: DXF CIRCLE needs 1 point (codes 10 and 20)");
+    check_error("0\nSECTION\n2\nENTITIES\n0\nLWPOLYLINE\n10\n1\n20\n1\n10\n2\n0\nEOF\n",
+                "d.dxf:6:1: error: DXF LWPOLYLINE does not have as many x as y values "
+                "(codes 10 and 20)");
+    check_error(
+        "0\nSECTION\n2\nENTITIES\n0\nARC\n10\n0\n20\n0\n40\n1\n50\n0\n51\n-1e300\n"
+        "0\nEOF\n",
+        "d.dxf:6:1: error: DXF ARC angles are too far apart");
+    check_error(
+        "0\nSECTION\n2\nENTITIES\n0\nARC\n10\n0\n20\n0\n40\n1\n50\n0\n51\n1e9\n"
+        "0\nEOF\n",
+        "d.dxf:6:1: error: too many line segments in a DXF drawing (limit is 50000)");
+    check_error(
+        "0\nSECTION\n2\nENTITIES\n0\nLINE\n10\n0\n20\n0\n11\n1e13\n21\n0\n0\nEOF\n",
+        "d.dxf:6:1: error: DXF coordinates out of range (limit is 1e+12)");
+    /* blank lines at the end are the end */
+    twod_region r;
+    assert_int_equal(read("0\nSECTION\n2\nENTITIES\n0\nENDSEC\n0\nEOF\n\n\n \n", NULL, 0,
+                          1, &r, NULL, NULL, 0),
+                     SC_OK);
+    twod_free(&r);
+}
+
+/* Every prefix of the drawing, and the drawing with each byte replaced by
+ * each of a few others, reads or fails with a message. */
+static void test_malformed(void **state)
+{
+    (void)state;
+    size_t n = strlen(drawing);
+    char *text = malloc(n + 1);
+    assert_non_null(text);
+    static const char replacements[] = {'\n', '0', '9', '-', 'e', ' ', 'A', '\r'};
+    size_t failures = 0, reads = 0;
+    for (size_t cut = 0; cut <= n; cut++) {
+        memcpy(text, drawing, cut);
+        text[cut] = 0;
+        twod_region r;
+        char message[600] = "";
+        if (read(text, NULL, 0, 1, &r, NULL, message, sizeof message) != SC_OK) {
+            assert_true(strncmp(message, "d.dxf:", 6) == 0);
+            failures++;
+        }
+        reads++;
+        twod_free(&r);
+    }
+    for (size_t i = 0; i < n; i++) {
+        for (size_t k = 0; k < sizeof replacements; k++) {
+            memcpy(text, drawing, n + 1);
+            text[i] = replacements[k];
+            twod_region r;
+            char message[600] = "";
+            if (read(text, NULL, 0, 1, &r, NULL, message, sizeof message) != SC_OK) {
+                assert_true(strncmp(message, "d.dxf:", 6) == 0);
+                failures++;
+            }
+            reads++;
+            twod_free(&r);
+        }
+    }
+    free(text);
+    /* some mutations break the file, most do not */
+    assert_true(failures > 0 && failures < reads);
+}
+
+/* ---- import() in the 2D engine ---- */
+
+static const char *work_dir(void)
+{
+    mkdir(SPANCAST_TEST_WORK, 0777);
+    return SPANCAST_TEST_WORK;
+}
+
+static sc_status import_region(const char *csg, twod_region *r, char *message,
+                               size_t size)
+{
+    char path[1024];
+    snprintf(path, sizeof path, "%s/d.dxf", work_dir());
+    FILE *f = fopen(path, "wb");
+    assert_non_null(f);
+    fputs(drawing, f);
+    fclose(f);
+    char file[1024];
+    snprintf(file, sizeof file, "%s/m.csg", work_dir());
+    parse_tree *tree = NULL;
+    sc_error e;
+    assert_int_equal(parse_text(file, csg, strlen(csg), &tree, &e), SC_OK);
+    build_ctx c = {file, NULL, &e, 1, NULL};
+    twod_init(r);
+    sc_status st = twod_from_children(&c, tree->first, r);
+    if (st != SC_OK) {
+        /* the work folder's path is not part of the expected text */
+        char full[1200];
+        sc_error_format(&e, full, sizeof full);
+        const char *tail = strstr(full, "m.csg:");
+        snprintf(message, size, "%s", tail ? tail : full);
+    }
+    parse_tree_free(tree);
+    return st;
+}
+
+static void test_import(void **state)
+{
+    (void)state;
+    twod_region r;
+    char message[1200];
+    sc_status st = import_region("linear_extrude(height = 1) { import(file = \"d.dxf\", "
+                                 "layer = \"poly\", origin = "
+                                 "[30, 0], scale = 2, convexity = 1, $fn = 8, $fa = 12, "
+                                 "$fs = 2, timestamp = 0); }",
+                                 &r, message, sizeof message);
+    if (st != SC_OK)
+        fail_msg("unexpected error: %s", message);
+    assert_true(fabs(twod_area(&r) - 48) < 1e-12);
+    twod_free(&r);
+    /* union with a square overlapping the half disc's flat side */
+    st = import_region("linear_extrude(height = 1) { import(file = \"d.dxf\", layer = "
+                       "\"arc\", $fn = 8); multmatrix([[1, 0, 0, 19], [0, 1, 0, -1], [0, "
+                       "0, 1, 0], [0, 0, 0, 1]]) { square([2, 1]); } }",
+                       &r, message, sizeof message);
+    if (st != SC_OK)
+        fail_msg("unexpected error: %s", message);
+    assert_true(fabs(twod_area(&r) - (HALF_OCTAGON + 2)) < 1e-12);
+    twod_free(&r);
+    assert_int_equal(import_region("linear_extrude(height = 1) { import(file = "
+                                   "\"missing.dxf\"); }",
+                                   &r, message, sizeof message),
+                     SC_ERR_IO);
+    assert_true(strstr(message, "m.csg:1:44: error: import: cannot read '") == message);
+    assert_non_null(strstr(message, "missing.dxf': No such file or directory"));
+    twod_free(&r);
+    assert_int_equal(
+        import_region("linear_extrude(height = 1) { import(file = \"a.svg\"); }", &r,
+                      message, sizeof message),
+        SC_ERR_UNSUPPORTED);
+    assert_string_equal(message,
+                        "m.csg:1:44: error: import of 'a.svg' is not supported yet "
+                        "(2D: only .dxf files)");
+    twod_free(&r);
+    assert_int_equal(import_region("rotate_extrude() { import(file = \"a.stl\"); }", &r,
+                                   message, sizeof message),
+                     SC_ERR_SEMANTIC);
+    assert_string_equal(message,
+                        "m.csg:1:34: error: import of 'a.stl' inside rotate_extrude: "
+                        "a 2D operation imports only 2D files (.dxf)");
+    twod_free(&r);
+    assert_int_equal(
+        import_region(
+            "linear_extrude(height = 1) { import(file = \"d.dxf\", layer = 3); }", &r,
+            message, sizeof message),
+        SC_ERR_SEMANTIC);
+    assert_string_equal(message, "m.csg:1:61: error: wrong type for argument 'layer' of "
+                                 "'import' (expected a layer name)");
+    twod_free(&r);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_layers),          cmocka_unit_test(test_origin_scale),
+        cmocka_unit_test(test_unsupported),     cmocka_unit_test(test_open_paths),
+        cmocka_unit_test(test_open_path_order), cmocka_unit_test(test_errors),
+        cmocka_unit_test(test_malformed),       cmocka_unit_test(test_import),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
