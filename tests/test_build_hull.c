@@ -17,20 +17,11 @@
 
 #include "scene/build.h"
 #include "scene/scene.h"
+#include "test_util.h"
 
 static sc_scene *load_opts(const char *name, const char *text, int faithful)
 {
-    sc_scene *s = NULL;
-    sc_error e;
-    sc_load_options o;
-    sc_load_options_init(&o);
-    o.faithful = faithful;
-    sc_status st = sc_scene_load_string(name, text, strlen(text), &o, &s, &e);
-    if (st != SC_OK) {
-        char buf[1024];
-        fail_msg("unexpected error: %s", sc_error_format(&e, buf, sizeof buf));
-    }
-    return s;
+    return test_load(name, text, faithful);
 }
 
 static sc_scene *load(const char *text)
@@ -41,13 +32,7 @@ static sc_scene *load(const char *text)
 static void check_error(const char *name, const char *text, sc_status status,
                         const char *expected)
 {
-    sc_scene *s = (sc_scene *)1;
-    sc_error e;
-    assert_int_equal(sc_scene_load_string(name, text, strlen(text), NULL, &s, &e),
-                     status);
-    assert_null(s);
-    char buf[1024];
-    assert_string_equal(sc_error_format(&e, buf, sizeof buf), expected);
+    test_check_error(name, text, status, expected);
 }
 
 static void check_warning(const char *text, const char *expected)

@@ -20,6 +20,7 @@
 #include "scene/build_text.h"
 #include "scene/parse.h"
 #include "scene/scene.h"
+#include "test_util.h"
 
 /* ---- layout through text_shape_build ---- */
 
@@ -183,17 +184,7 @@ static void test_outlines_close(void **state)
 
 static sc_scene *load(const char *text, int faithful)
 {
-    sc_scene *s = NULL;
-    sc_error e;
-    sc_load_options o;
-    sc_load_options_init(&o);
-    o.faithful = faithful;
-    sc_status st = sc_scene_load_string("m.csg", text, strlen(text), &o, &s, &e);
-    if (st != SC_OK) {
-        char buf[1024];
-        fail_msg("unexpected error: %s", sc_error_format(&e, buf, sizeof buf));
-    }
-    return s;
+    return test_load("m.csg", text, faithful);
 }
 
 typedef struct rng {
@@ -351,13 +342,7 @@ static void test_long_text(void **state)
 
 static void check_error(const char *text, sc_status status, const char *expected)
 {
-    sc_scene *s = (sc_scene *)1;
-    sc_error e;
-    assert_int_equal(sc_scene_load_string("m.csg", text, strlen(text), NULL, &s, &e),
-                     status);
-    assert_null(s);
-    char buf[1024];
-    assert_string_equal(sc_error_format(&e, buf, sizeof buf), expected);
+    test_check_error("m.csg", text, status, expected);
 }
 
 /* One warning, at line 1, column, with message. */

@@ -22,6 +22,7 @@
 #include "scene/parse.h"
 #include "scene/scene.h"
 #include "twod/twod.h"
+#include "test_util.h"
 
 /* The region of the children of the first node of text ("group() {...}"),
  * or the status of the failure with its message in error. */
@@ -416,13 +417,7 @@ static void test_extrude_slices(void **state)
 
 static void check_load_error(const char *text, sc_status status, const char *expected)
 {
-    sc_scene *s = (sc_scene *)1;
-    sc_error e;
-    assert_int_equal(sc_scene_load_string("m.csg", text, strlen(text), NULL, &s, &e),
-                     status);
-    assert_null(s);
-    char buf[1024];
-    assert_string_equal(sc_error_format(&e, buf, sizeof buf), expected);
+    test_check_error("m.csg", text, status, expected);
 }
 
 static void test_extrude_errors(void **state)

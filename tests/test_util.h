@@ -4,6 +4,9 @@
 
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
+
+#include "spancast/spancast.h"
 
 /* The whole file at path, NUL-terminated (the terminator is not counted in
  * *length, which may be NULL); fails the test when it cannot be read. */
@@ -23,6 +26,37 @@ static inline char *test_read_file(const char *path, size_t *length)
     if (length)
         *length = (size_t)n;
     return text;
+}
+
+/* Loads text as the file name; fails the test with the message when the
+ * load fails. */
+static inline sc_scene *test_load(const char *name, const char *text, int faithful)
+{
+    sc_scene *s = NULL;
+    sc_error e;
+    sc_load_options o;
+    sc_load_options_init(&o);
+    o.faithful = faithful;
+    if (sc_scene_load_string(name, text, strlen(text), &o, &s, &e) != SC_OK) {
+        char buf[1024];
+        fail_msg("unexpected error: %s", sc_error_format(&e, buf, sizeof buf));
+    }
+    assert_non_null(s);
+    return s;
+}
+
+/* Loading text as the file name fails with status and exactly the message
+ * expected, and gives no scene. */
+static inline void test_check_error(const char *name, const char *text, sc_status status,
+                                    const char *expected)
+{
+    sc_scene *s = (sc_scene *)1;
+    sc_error e;
+    assert_int_equal(sc_scene_load_string(name, text, strlen(text), NULL, &s, &e),
+                     status);
+    assert_null(s);
+    char buf[1024];
+    assert_string_equal(sc_error_format(&e, buf, sizeof buf), expected);
 }
 
 #endif
