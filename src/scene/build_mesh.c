@@ -433,7 +433,7 @@ static const char *read_off(const char *text, size_t size, mesh_file *m, int *oo
     return finish_faces(m) ? NULL : (*oom = 1, "out of memory");
 }
 
-static int ends_with(const char *s, const char *suffix)
+int build_has_suffix(const char *s, const char *suffix)
 {
     size_t a = strlen(s), b = strlen(suffix);
     if (a < b)
@@ -446,6 +446,18 @@ static int ends_with(const char *s, const char *suffix)
             return 0;
     }
     return 1;
+}
+
+char *build_file_path(const build_ctx *c, const char *name)
+{
+    const char *slash = c->file ? strrchr(c->file, '/') : NULL;
+    size_t dir = name[0] != '/' && slash ? (size_t)(slash - c->file) + 1 : 0;
+    char *path = malloc(dir + strlen(name) + 1);
+    if (path) {
+        memcpy(path, c->file, dir);
+        strcpy(path + dir, name);
+    }
+    return path;
 }
 
 char *build_read_file(const char *path, size_t limit, size_t *size, const char **why)
@@ -508,21 +520,16 @@ sc_status build_import(const build_ctx *c, const parse_node *n, int emit, prim *
     }
     const char *name = a->value.u.string.chars;
     sc_location loc = {c->file, a->value.line, a->value.column};
-    int stl = ends_with(name, ".stl"), off = ends_with(name, ".off");
+    int stl = build_has_suffix(name, ".stl"), off = build_has_suffix(name, ".off");
     if (!stl && !off)
         return err_set(c->error, SC_ERR_UNSUPPORTED, &loc,
                        "import of '%s' is not supported yet (only .stl and .off files)",
                        name);
     if (!emit)
         return SC_OK;
-    /* the directory of the file being read, when name is relative */
-    const char *slash = c->file ? strrchr(c->file, '/') : NULL;
-    size_t dir = name[0] != '/' && slash ? (size_t)(slash - c->file) + 1 : 0;
-    char *path = malloc(dir + strlen(name) + 1);
+    char *path = build_file_path(c, name);
     if (!path)
         return nomem(c, &loc);
-    memcpy(path, c->file, dir);
-    strcpy(path + dir, name);
     size_t size = 0;
     const char *why = NULL;
     char *text = build_read_file(path, BUILD_MAX_MESH_FILE, &size, &why);

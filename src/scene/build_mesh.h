@@ -23,6 +23,12 @@ sc_status build_mesh_prim(const build_ctx *c, const sc_location *loc, const char
                           const uint32_t *indices, const uint32_t *face_start,
                           uint32_t face_count, prim *out, const char **empty);
 
+/* Does s end in suffix (lower case), ignoring the case of s? */
+int build_has_suffix(const char *s, const char *suffix);
+/* The path of a file a model names: relative names are relative to the
+ * directory of the file being read (c->file). malloc'd; NULL when memory
+ * runs out. */
+char *build_file_path(const build_ctx *c, const char *name);
 /* Reads a whole file of at most about limit bytes into a malloc'd,
  * NUL-terminated buffer; returns NULL and sets *why (strerror's text, "file
  * is too large", "out of memory" or "read error") on failure. */

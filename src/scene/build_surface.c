@@ -349,13 +349,9 @@ sc_status build_surface(const build_ctx *c, const parse_node *n, int emit, prim 
         return SC_OK;
     sc_location loc = build_loc(c, file);
     const char *name = file->u.string.chars;
-    const char *slash = c->file ? strrchr(c->file, '/') : NULL;
-    size_t dir = name[0] != '/' && slash ? (size_t)(slash - c->file) + 1 : 0;
-    char *path = malloc(dir + strlen(name) + 1);
+    char *path = build_file_path(c, name);
     if (!path)
         return nomem(c, &loc);
-    memcpy(path, c->file, dir);
-    strcpy(path + dir, name);
     size_t size = 0;
     const char *why = NULL;
     unsigned char *bytes =

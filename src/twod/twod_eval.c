@@ -43,6 +43,7 @@
 #include <string.h>
 
 #include "base/error.h"
+#include "scene/build_mesh.h"
 #include "scene/build_text.h"
 #include "scene/faithful.h"
 #include "twod/dxf.h"
@@ -423,21 +424,6 @@ static sc_status minkowski(const eval *e, const parse_node *n, twod_region *regi
     return clip_status(e, n, code);
 }
 
-static int has_suffix(const char *s, const char *suffix)
-{
-    size_t a = strlen(s), b = strlen(suffix);
-    if (a < b)
-        return 0;
-    for (size_t i = 0; i < b; i++) {
-        char x = s[a - b + i];
-        if (x >= 'A' && x <= 'Z')
-            x = (char)(x - 'A' + 'a');
-        if (x != suffix[i])
-            return 0;
-    }
-    return 1;
-}
-
 /* import of a DXF drawing (dxf.c), sanitized as OpenSCAD sanitizes a leaf's
  * polygons. */
 static sc_status read_import(const eval *e, const parse_node *n, twod_region *out)
@@ -450,10 +436,10 @@ static sc_status read_import(const eval *e, const parse_node *n, twod_region *ou
         return build_wrong_type(e->c, n, "file", file, "a file name");
     const char *name = file->u.string.chars;
     sc_location loc = build_loc(e->c, file);
-    if (has_suffix(name, ".svg"))
+    if (build_has_suffix(name, ".svg"))
         return err_set(e->c->error, SC_ERR_UNSUPPORTED, &loc,
                        "import of '%s' is not supported yet (2D: only .dxf files)", name);
-    if (!has_suffix(name, ".dxf"))
+    if (!build_has_suffix(name, ".dxf"))
         return err_set(e->c->error, SC_ERR_SEMANTIC, &loc,
                        "import of '%s' inside %s: a 2D operation imports only 2D files "
                        "(.dxf)",
@@ -479,15 +465,9 @@ static sc_status read_import(const eval *e, const parse_node *n, twod_region *ou
     if (!isfinite(o.scale) || !isfinite(o.origin_x) || !isfinite(o.origin_y))
         return err_set(e->c->error, SC_ERR_SEMANTIC, &n->loc,
                        "import: origin and scale must be finite");
-    /* the directory of the file being read, when name is relative */
-    const char *f = e->c->file;
-    const char *slash = f ? strrchr(f, '/') : NULL;
-    size_t dir = name[0] != '/' && slash ? (size_t)(slash - f) + 1 : 0;
-    char *path = malloc(dir + strlen(name) + 1);
+    char *path = build_file_path(e->c, name);
     if (!path)
         return nomem(e, n);
-    memcpy(path, f, dir);
-    strcpy(path + dir, name);
     char unsupported[32];
     st = dxf_read_file(path, &loc, &o, out, unsupported, e->c->error);
     if (st == SC_OK && unsupported[0] && e->c->note && !e->c->note->message[0])
