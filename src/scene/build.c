@@ -802,37 +802,14 @@ static sc_status build_surface_leaf(builder *b, const parse_node *n, const frame
  * affine matrix of finite numbers; no argument means the identity. */
 static sc_status read_matrix(builder *b, const parse_node *n, affine *out)
 {
-    *out = affine_identity();
-    const parse_value *v = arg(n, "m", 0);
-    if (!v)
-        return SC_OK;
+    build_ctx c = {b->syntax->file, b->csg, b->error, b->faithful, NULL};
     double m[4][4];
-    int ok = v->kind == PARSE_VECTOR && v->u.vector.count == 4;
-    for (uint32_t r = 0; ok && r < 4; r++) {
-        const parse_value *row = &v->u.vector.items[r];
-        ok = row->kind == PARSE_VECTOR && row->u.vector.count == 4;
-        for (uint32_t c = 0; ok && c < 4; c++) {
-            ok = row->u.vector.items[c].kind == PARSE_NUMBER;
-            if (ok)
-                m[r][c] = row->u.vector.items[c].u.number;
-        }
-    }
-    if (!ok)
-        return err_set(b->error, SC_ERR_SEMANTIC, &n->loc,
-                       "multmatrix: matrix must be 4x4 numbers");
-    for (int r = 0; r < 4; r++) {
-        for (int c = 0; c < 4; c++) {
-            if (!isfinite(m[r][c]))
-                return err_set(b->error, SC_ERR_SEMANTIC, &n->loc,
-                               "multmatrix: matrix entries must be finite");
-        }
-    }
-    if (m[3][0] != 0 || m[3][1] != 0 || m[3][2] != 0 || m[3][3] != 1)
-        return err_set(b->error, SC_ERR_SEMANTIC, &n->loc,
-                       "multmatrix: bottom row must be [0, 0, 0, 1]");
+    sc_status st = build_matrix(&c, n, m);
+    if (st != SC_OK)
+        return st;
     for (int r = 0; r < 3; r++)
-        for (int c = 0; c < 4; c++)
-            out->m[r][c] = m[r][c];
+        for (int k = 0; k < 4; k++)
+            out->m[r][k] = m[r][k];
     return SC_OK;
 }
 

@@ -38,11 +38,12 @@ sc_status build_number(const build_ctx *c, const parse_node *n, const char *name
     return SC_OK;
 }
 
-sc_status build_matrix_xy(const build_ctx *c, const parse_node *n,
-                          const double outer[2][3], double inner[2][3])
+sc_status build_matrix(const build_ctx *c, const parse_node *n, double a[4][4])
 {
+    static const double id[4][4] = {
+        {1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}, {0, 0, 0, 1}};
+    memcpy(a, id, sizeof id);
     const parse_value *v = build_arg(n, "m", 0);
-    double a[4][4] = {{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}, {0, 0, 0, 1}};
     int ok = !v || (v->kind == PARSE_VECTOR && v->u.vector.count == 4);
     for (uint32_t r = 0; v && ok && r < 4; r++) {
         const parse_value *row = &v->u.vector.items[r];
@@ -64,6 +65,16 @@ sc_status build_matrix_xy(const build_ctx *c, const parse_node *n,
     if (a[3][0] != 0 || a[3][1] != 0 || a[3][2] != 0 || a[3][3] != 1)
         return err_set(c->error, SC_ERR_SEMANTIC, &n->loc,
                        "multmatrix: bottom row must be [0, 0, 0, 1]");
+    return SC_OK;
+}
+
+sc_status build_matrix_xy(const build_ctx *c, const parse_node *n,
+                          const double outer[2][3], double inner[2][3])
+{
+    double a[4][4];
+    sc_status st = build_matrix(c, n, a);
+    if (st != SC_OK)
+        return st;
     double o[2][3];
     memcpy(o, outer, sizeof o); /* inner may be outer */
     for (int r = 0; r < 2; r++) {

@@ -41,6 +41,9 @@ sc_status build_number(const build_ctx *c, const parse_node *n, const char *name
 /* A true/false argument into *out (left alone when absent). */
 sc_status build_bool(const build_ctx *c, const parse_node *n, const char *name,
                      int position, int *out);
+/* multmatrix(m): a row-major 4x4 affine matrix of finite numbers with the
+ * bottom row [0, 0, 0, 1]; no argument is the identity. */
+sc_status build_matrix(const build_ctx *c, const parse_node *n, double m[4][4]);
 /* A 2D node's multmatrix(m): m checked as a 4x4 affine matrix of finite
  * numbers, and inner = outer after its xy part (x' = m00 x + m01 y + m03,
  * y' = m10 x + m11 y + m13; z is dropped, as OpenSCAD flattens 2D

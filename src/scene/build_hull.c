@@ -502,35 +502,11 @@ static sc_status mesh_points(const walk *w, const parse_node *n, const affine *m
 static sc_status read_matrix(const build_ctx *c, const parse_node *n, affine *out,
                              int *ok)
 {
-    *out = affine_identity();
     *ok = 1;
-    const parse_value *v = build_arg(n, "m", 0);
-    if (!v)
-        return SC_OK;
-    int good = v->kind == PARSE_VECTOR && v->u.vector.count == 4;
     double m[4][4];
-    for (uint32_t r = 0; good && r < 4; r++) {
-        const parse_value *row = &v->u.vector.items[r];
-        good = row->kind == PARSE_VECTOR && row->u.vector.count == 4;
-        for (uint32_t k = 0; good && k < 4; k++) {
-            good = row->u.vector.items[k].kind == PARSE_NUMBER;
-            if (good)
-                m[r][k] = row->u.vector.items[k].u.number;
-        }
-    }
-    if (!good)
-        return err_set(c->error, SC_ERR_SEMANTIC, &n->loc,
-                       "multmatrix: matrix must be 4x4 numbers");
-    for (int r = 0; r < 4; r++) {
-        for (int k = 0; k < 4; k++) {
-            if (!isfinite(m[r][k]))
-                return err_set(c->error, SC_ERR_SEMANTIC, &n->loc,
-                               "multmatrix: matrix entries must be finite");
-        }
-    }
-    if (m[3][0] != 0 || m[3][1] != 0 || m[3][2] != 0 || m[3][3] != 1)
-        return err_set(c->error, SC_ERR_SEMANTIC, &n->loc,
-                       "multmatrix: bottom row must be [0, 0, 0, 1]");
+    sc_status st = build_matrix(c, n, m);
+    if (st != SC_OK)
+        return st;
     for (int r = 0; r < 3; r++)
         for (int k = 0; k < 4; k++)
             out->m[r][k] = m[r][k];
