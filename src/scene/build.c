@@ -292,22 +292,10 @@ static sc_status add_leaf(builder *b, const parse_node *n, const prim *p,
 static sc_status build_cube(builder *b, const parse_node *n, const frame *state,
                             uint32_t *id)
 {
-    double size[3] = {1, 1, 1};
-    int center = 0;
-    const parse_value *v = arg(n, "size", 0);
-    if (v && v->kind == PARSE_NUMBER) {
-        size[0] = size[1] = size[2] = v->u.number;
-    } else if (v) {
-        int ok = v->kind == PARSE_VECTOR && v->u.vector.count == 3;
-        for (uint32_t i = 0; ok && i < 3; i++) {
-            ok = v->u.vector.items[i].kind == PARSE_NUMBER;
-            if (ok)
-                size[i] = v->u.vector.items[i].u.number;
-        }
-        if (!ok)
-            return wrong_type(b, n, "size", v, "a number or a vector of 3 numbers");
-    }
-    sc_status st = get_bool(b, n, "center", 1, &center);
+    double size[3];
+    int center;
+    build_ctx c = {b->syntax->file, b->csg, b->error, b->faithful, NULL};
+    sc_status st = build_cube_args(&c, n, size, &center);
     if (st != SC_OK || !state->emit)
         return st;
     if (!positive_finite(size[0]) || !positive_finite(size[1]) ||

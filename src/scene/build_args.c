@@ -150,3 +150,38 @@ sc_status build_polygon(const build_ctx *c, const parse_node *n,
     }
     return SC_OK;
 }
+
+sc_status build_cube_args(const build_ctx *c, const parse_node *n, double size[3],
+                          int *center)
+{
+    size[0] = size[1] = size[2] = 1;
+    *center = 0;
+    const parse_value *v = build_arg(n, "size", 0);
+    if (v && v->kind == PARSE_NUMBER) {
+        size[0] = size[1] = size[2] = v->u.number;
+    } else if (v) {
+        int ok = v->kind == PARSE_VECTOR && v->u.vector.count == 3;
+        for (uint32_t i = 0; ok && i < 3; i++) {
+            ok = v->u.vector.items[i].kind == PARSE_NUMBER;
+            if (ok)
+                size[i] = v->u.vector.items[i].u.number;
+        }
+        if (!ok)
+            return build_wrong_type(c, n, "size", v, "a number or a vector of 3 numbers");
+    }
+    return build_bool(c, n, "center", 1, center);
+}
+
+sc_status build_polygon_index(const build_ctx *c, const parse_value *v, uint32_t path,
+                              uint32_t count, uint32_t *index)
+{
+    if (v->kind != PARSE_NUMBER || v->u.number != floor(v->u.number) || v->u.number < 0 ||
+        v->u.number >= count) {
+        sc_location loc = build_loc(c, v);
+        return err_set(c->error, SC_ERR_SEMANTIC, &loc,
+                       "polygon path %u: point index is not one of the %u points", path,
+                       count);
+    }
+    *index = (uint32_t)v->u.number;
+    return SC_OK;
+}

@@ -56,6 +56,13 @@ sc_status build_matrix_xy(const build_ctx *c, const parse_node *n,
 #define BUILD_POLYGON_PATHS "a vector of paths, each a vector of point indices"
 sc_status build_polygon(const build_ctx *c, const parse_node *n,
                         const parse_value **points, const parse_value **paths);
+/* Entry of path number path of a polygon with count points: an integer
+ * index below count into *index, else the error at the entry. */
+sc_status build_polygon_index(const build_ctx *c, const parse_value *v, uint32_t path,
+                              uint32_t count, uint32_t *index);
+/* cube(size = s | [x, y, z], center = false)'s arguments. */
+sc_status build_cube_args(const build_ctx *c, const parse_node *n, double size[3],
+                          int *center);
 /* square(size = s | [x, y], center = false)'s arguments. */
 sc_status build_square(const build_ctx *c, const parse_node *n, double *sx, double *sy,
                        int *center);

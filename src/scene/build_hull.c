@@ -245,22 +245,9 @@ typedef struct shape {
 
 static sc_status read_cube(const build_ctx *c, const parse_node *n, shape *s)
 {
-    double size[3] = {1, 1, 1};
-    int center = 0;
-    const parse_value *v = build_arg(n, "size", 0);
-    if (v && v->kind == PARSE_NUMBER) {
-        size[0] = size[1] = size[2] = v->u.number;
-    } else if (v) {
-        int ok = v->kind == PARSE_VECTOR && v->u.vector.count == 3;
-        for (uint32_t i = 0; ok && i < 3; i++) {
-            ok = v->u.vector.items[i].kind == PARSE_NUMBER;
-            if (ok)
-                size[i] = v->u.vector.items[i].u.number;
-        }
-        if (!ok)
-            return build_wrong_type(c, n, "size", v, "a number or a vector of 3 numbers");
-    }
-    sc_status st = build_bool(c, n, "center", 1, &center);
+    double size[3];
+    int center;
+    sc_status st = build_cube_args(c, n, size, &center);
     if (st != SC_OK)
         return st;
     if (!positive_finite(size[0]) || !positive_finite(size[1]) ||

@@ -210,16 +210,10 @@ static sc_status read_polygon(const eval *e, const parse_node *n, twod_region *o
         for (uint32_t i = 0; i < len; i++) {
             uint32_t index = i;
             if (path) {
-                const parse_value *iv = &path->u.vector.items[i];
-                if (iv->kind != PARSE_NUMBER || iv->u.number != floor(iv->u.number) ||
-                    iv->u.number < 0 || iv->u.number >= np) {
-                    sc_location loc = build_loc(e->c, iv);
-                    return err_set(e->c->error, SC_ERR_SEMANTIC, &loc,
-                                   "polygon path %u: point index is not one of the %u "
-                                   "points",
-                                   k, np);
-                }
-                index = (uint32_t)iv->u.number;
+                sc_status ist =
+                    build_polygon_index(e->c, &path->u.vector.items[i], k, np, &index);
+                if (ist != SC_OK)
+                    return ist;
             }
             const parse_value *v = &pts->u.vector.items[index];
             double x = v->u.vector.items[0].u.number, y = v->u.vector.items[1].u.number;
