@@ -63,21 +63,19 @@ while IFS= read -r line; do
     [ -z "$(ls -A folder.png)" ] || fail "spancast $args wrote into folder.png"
 done <"$corpus/cmdlines.txt"
 
-# A folder without write permission. Root may write anywhere, so this case
-# runs only for other users (CI may run as either).
-if [ "$(id -u)" != 0 ]; then
-    checks=$((checks + 1))
-    mkdir locked
-    chmod 555 locked
-    "$bin" render m.csg -o locked/x.png --imgsize=8,8 2>stderr.txt
-    rc=$?
-    want="spancast: error: cannot write 'locked/x.png': Permission denied"
-    [ "$rc" = 1 ] && [ "$(cat stderr.txt)" = "$want" ] ||
-        fail "locked folder: exit $rc, stderr '$(cat stderr.txt)'"
-    chmod 755 locked
-else
-    echo "note: running as root, the write-permission case does not apply"
-fi
+# A folder without write permission. Root may write anywhere, so the case
+# runs as an ordinary user (run_unprivileged: 'nobody' when this is root).
+check
+unprivileged_dir
+cp m.csg "$udir/"
+run_unprivileged sh -c 'cd "$1" && mkdir locked && chmod 555 locked &&
+    { ./spancast render m.csg -o locked/x.png --imgsize=8,8 2>stderr.txt
+      echo $? >rc.txt; }' sh "$udir"
+rc=$(cat "$udir/rc.txt" 2>/dev/null)
+want="spancast: error: cannot write 'locked/x.png': Permission denied"
+[ "$rc" = 1 ] && [ "$(cat "$udir/stderr.txt")" = "$want" ] ||
+    fail "locked folder: exit ${rc:-none}, stderr '$(cat "$udir/stderr.txt" 2>&1)'"
+[ -z "$(ls -A "$udir/locked")" ] || fail "locked folder: it holds $(ls -A "$udir/locked")"
 
 echo "$checks checks, $fails failed"
 [ "$fails" = 0 ]

@@ -7,6 +7,7 @@
 #
 # Run as: bash cli_bench.sh <path-to-spancast> <source-dir> <work-dir>
 . "$(dirname "$0")/testlib.sh"
+require_tools gnuplot
 
 "$bin" bench accuracy --csv acc.csv --rays 2 2>stderr.txt
 rc=$?
@@ -28,13 +29,11 @@ awk -F, 'NR > 1 && (NF != 8 || $4 != 4) { bad++ } END { exit bad > 0 }' acc.csv 
 awk -F, 'NR > 1 && $2 == "interval" && $3 <= 0.001 && ($7 != 0 || $6 > 1e-12) { bad++ }
     END { exit bad > 0 }' acc.csv || fail "interval rows: $(grep interval acc.csv)"
 
-if command -v gnuplot >/dev/null; then
-    "$bin" bench accuracy --csv acc2.csv --plot acc.png --rays 1 2>/dev/null ||
-        fail "bench with --plot failed"
-    [ "$(head -c 8 acc.png | od -An -c | tr -d ' ')" = "211PNG\r\n032\n" ] ||
-        fail "acc.png is not a PNG"
-    ls ./*.tmp* >/dev/null 2>&1 && fail "temporary files left behind"
-fi
+"$bin" bench accuracy --csv acc2.csv --plot acc.png --rays 1 2>/dev/null ||
+    fail "bench with --plot failed"
+[ "$(head -c 8 acc.png | od -An -c | tr -d ' ')" = "211PNG\r\n032\n" ] ||
+    fail "acc.png is not a PNG"
+ls ./*.tmp* >/dev/null 2>&1 && fail "temporary files left behind"
 
 "$bin" bench accuracy --rays 2 2>err.txt
 [ $? = 2 ] || fail "missing --csv should exit 2"

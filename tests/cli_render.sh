@@ -105,18 +105,23 @@ rc=$?
 [ "$(cat stderr.txt)" = "spancast: error: cannot write 'taken.png': Is a directory" ] ||
     fail "folder as target: '$(cat stderr.txt)'"
 [ -d taken.png ] || fail "the folder in the way is gone"
-if [ "$(id -u)" != 0 ]; then
-    mkdir locked
-    cp keep.png locked/out.png
-    chmod 555 locked
-    "$bin" render m.csg -o locked/out.png --imgsize=8,8 2>stderr.txt
-    rc=$?
-    chmod 755 locked
-    [ "$rc" = 1 ] || fail "read-only folder exited $rc"
-    [ "$(cat stderr.txt)" = "spancast: error: cannot write 'locked/out.png': Permission denied" ] ||
-        fail "read-only folder: '$(cat stderr.txt)'"
-    cmp -s locked/out.png keep.png || fail "a read-only folder's file changed"
-fi
+# A read-only folder keeps its file. Root may write anywhere, so the case
+# runs as an ordinary user (run_unprivileged: 'nobody' when this is root).
+unprivileged_dir
+cp m.csg "$udir/"
+mkdir "$udir/locked"
+cp keep.png "$udir/locked/out.png"
+[ "$(id -u)" != 0 ] || chown -R nobody:nogroup "$udir"
+chmod 555 "$udir/locked"
+run_unprivileged sh -c 'cd "$1" && { ./spancast render m.csg -o locked/out.png \
+    --imgsize=8,8 2>stderr.txt; echo $? >rc.txt; }' sh "$udir"
+rc=$(cat "$udir/rc.txt" 2>/dev/null)
+chmod 755 "$udir/locked"
+[ "$rc" = 1 ] || fail "read-only folder exited ${rc:-nothing}"
+[ "$(cat "$udir/stderr.txt")" = "spancast: error: cannot write 'locked/out.png': Permission denied" ] ||
+    fail "read-only folder: '$(cat "$udir/stderr.txt" 2>&1)'"
+cmp -s "$udir/locked/out.png" keep.png || fail "a read-only folder's file changed"
+[ "$(ls -A "$udir/locked")" = out.png ] || fail "read-only folder holds $(ls -A "$udir/locked")"
 
 # no temporary file is ever left behind
 check

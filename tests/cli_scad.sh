@@ -3,8 +3,8 @@
 # .csg (relative imports resolve beside the source), the temporary
 # directory is gone afterwards, a source OpenSCAD rejects gives OpenSCAD's
 # last message, and without openscad in PATH the error says so. The
-# conversion part is skipped (exit 0, with a note) when openscad is missing;
-# the missing-OpenSCAD message is checked either way.
+# conversion part is skipped (exit 77, reported as skipped) when openscad
+# is missing; the missing-OpenSCAD message is checked either way.
 #
 # Run as: bash cli_scad.sh <path-to-spancast> <source-dir> <work-dir>
 . "$(dirname "$0")/testlib.sh"
@@ -19,11 +19,7 @@ want="spancast: error: cannot convert 'cube.scad': OpenSCAD is not installed ('o
 [ "$(cat err.txt)" = "$want" ] || fail "without openscad: got '$(cat err.txt)'"
 [ -e none.png ] && fail "without openscad: an image was written"
 
-if ! command -v openscad >/dev/null; then
-    echo "skipped: openscad is not installed (conversion not checked)"
-    [ "$fails" = 0 ] || exit 1
-    exit 0
-fi
+require_tools openscad
 
 export TMPDIR="$work/tmp"
 "$bin" render "$src/models/knob_part.scad" -o scad.png --imgsize=96,96 --threads=1 -q ||

@@ -7,6 +7,7 @@
 #
 # Run as: bash cli_shading.sh <path-to-spancast> <source-dir> <work-dir>
 . "$(dirname "$0")/testlib.sh"
+require_tools python3 script
 
 model=$src/models/whitted.csg
 size=--imgsize=96,72
@@ -68,10 +69,8 @@ for key in '"camera": 6912' '"shadow": ' '"reflection": ' '"refraction": ' \
     '"write": ' '"total": '; do
     grep -q "$key" stats.json || fail "--stats=json lacks '$key': $(cat stats.json)"
 done
-if command -v python3 >/dev/null; then
-    python3 -c 'import json, sys; json.load(open(sys.argv[1]))' stats.json ||
-        fail "--stats=json is not JSON"
-fi
+python3 -c 'import json, sys; json.load(open(sys.argv[1]))' stats.json ||
+    fail "--stats=json is not JSON"
 
 # the normal and id AOVs
 check
@@ -86,12 +85,10 @@ oiiotool id.exr --printstats | grep -q 'Stats Max: 2.000000' || fail "id max is 
 check
 "$bin" render "$model" -o p.png $size 2>err.txt || fail "render failed"
 grep -q '\[' err.txt && fail "progress bar on a non-terminal"
-if command -v script >/dev/null; then
-    script -qc "'$bin' render '$model' -o p.png $size" /dev/null >tty.txt
-    grep -q '100%' tty.txt || fail "no progress bar on a terminal: $(cat tty.txt)"
-    script -qc "'$bin' render '$model' -o p.png $size --quiet" /dev/null >tty.txt
-    [ -s tty.txt ] && fail "--quiet printed on a terminal: $(cat tty.txt)"
-fi
+script -qc "'$bin' render '$model' -o p.png $size" /dev/null >tty.txt
+grep -q '100%' tty.txt || fail "no progress bar on a terminal: $(cat tty.txt)"
+script -qc "'$bin' render '$model' -o p.png $size --quiet" /dev/null >tty.txt
+[ -s tty.txt ] && fail "--quiet printed on a terminal: $(cat tty.txt)"
 
 # usage errors
 check

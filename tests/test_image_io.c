@@ -5,7 +5,7 @@
  * check the exact messages and that a failed write leaves an existing
  * target as it was and no temporary file behind.
  */
-#define _POSIX_C_SOURCE 200809L
+#define _DEFAULT_SOURCE /* setgroups */
 
 #include <setjmp.h>
 #include <stdarg.h>
@@ -17,7 +17,11 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <grp.h>
+#include <pwd.h>
 #include <sys/stat.h>
+#include <sys/types.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include "render/color.h"
@@ -218,25 +222,6 @@ static void test_failures_keep_target(void **state)
     assert_true(S_ISDIR(st.st_mode));
     assert_int_equal(hidden_entries(), 0);
 
-    /* a read-only folder (meaningless for root, who may write anyway) */
-    if (geteuid() != 0) {
-        path_in_work(dir, sizeof dir, "readonly");
-        assert_int_equal(mkdir(dir, 0755), 0);
-        path_in_work(path, sizeof path, "readonly/out.png");
-        write_text(path, "old");
-        assert_int_equal(chmod(dir, 0555), 0);
-        assert_int_equal(sc_framebuffer_write_color(fb, path, &e), SC_ERR_IO);
-        snprintf(want, sizeof want, "cannot write '%s': Permission denied", path);
-        assert_string_equal(e.message, want);
-        chmod(dir, 0755);
-        FILE *f = fopen(path, "r");
-        char buf[8] = {0};
-        assert_non_null(f);
-        assert_non_null(fgets(buf, sizeof buf, f));
-        fclose(f);
-        assert_string_equal(buf, "old");
-    }
-
     /* an existing target is replaced whole on success */
     path_in_work(path, sizeof path, "replace.png");
     write_text(path, "old contents");
@@ -249,6 +234,93 @@ static void test_failures_keep_target(void **state)
     sc_framebuffer_release(fb);
 }
 
+/* The read-only folder case, in folder dir: a write into dir/readonly
+ * must fail with the exact message and leave the file there as it was, with
+ * no temporary beside it. Runs in a child process, so it reports with its
+ * exit status: 0 when every check holds, else the number of the check that
+ * failed (its reason on stderr). */
+static int readonly_case(sc_framebuffer *fb, const char *dir)
+{
+    char sub[1200], path[1300], want[1500];
+    snprintf(sub, sizeof sub, "%s/readonly", dir);
+    snprintf(path, sizeof path, "%s/out.png", sub);
+    if (mkdir(sub, 0755) != 0)
+        return 1;
+    FILE *f = fopen(path, "w");
+    if (!f || fputs("old", f) < 0 || fclose(f) != 0)
+        return 2;
+    if (chmod(sub, 0555) != 0)
+        return 3;
+    sc_error e;
+    sc_status st = sc_framebuffer_write_color(fb, path, &e);
+    snprintf(want, sizeof want, "cannot write '%s': Permission denied", path);
+    if (st != SC_ERR_IO || strcmp(e.message, want) != 0) {
+        fprintf(stderr, "read-only folder: status %d, '%s'\n", (int)st,
+                st == SC_OK ? "" : e.message);
+        return 4;
+    }
+    char buf[8] = {0};
+    f = fopen(path, "r");
+    if (!f || !fgets(buf, sizeof buf, f) || strcmp(buf, "old") != 0) {
+        fprintf(stderr, "read-only folder: the file now holds '%s'\n", buf);
+        return 5;
+    }
+    fclose(f);
+    DIR *d = opendir(sub);
+    int entries = 0;
+    for (struct dirent *x; d && (x = readdir(d));)
+        entries += strcmp(x->d_name, ".") && strcmp(x->d_name, "..");
+    if (d)
+        closedir(d);
+    if (entries != 1) {
+        fprintf(stderr, "read-only folder: %d entries, not just out.png\n", entries);
+        return 6;
+    }
+    chmod(sub, 0755);
+    return 0;
+}
+
+/* A write into a folder without write permission. Root may write anywhere,
+ * so as root the case runs in a child that has dropped to 'nobody', in a
+ * folder of /tmp that user owns (the build tree may sit under a folder it
+ * cannot enter); as any other user it runs in the work folder. */
+static void test_readonly_folder(void **state)
+{
+    (void)state;
+    sc_framebuffer *fb = make_fb();
+    char dir[1100];
+    const struct passwd *nobody = NULL;
+    if (geteuid() == 0) {
+        nobody = getpwnam("nobody");
+        assert_non_null(nobody);
+        snprintf(dir, sizeof dir, "/tmp/spancast-io.XXXXXX");
+        assert_non_null(mkdtemp(dir));
+        assert_int_equal(chown(dir, nobody->pw_uid, nobody->pw_gid), 0);
+    } else {
+        path_in_work(dir, sizeof dir, "unprivileged");
+        assert_int_equal(mkdir(dir, 0755), 0);
+    }
+    fflush(NULL);
+    pid_t child = fork();
+    assert_true(child >= 0);
+    if (child == 0) {
+        if (nobody && (setgroups(0, NULL) != 0 || setgid(nobody->pw_gid) != 0 ||
+                       setuid(nobody->pw_uid) != 0 || geteuid() == 0))
+            _exit(100);
+        _exit(readonly_case(fb, dir));
+    }
+    int status = 0;
+    assert_int_equal(waitpid(child, &status, 0), child);
+    if (nobody) {
+        char cmd[1200];
+        snprintf(cmd, sizeof cmd, "rm -rf '%s'", dir);
+        assert_int_equal(system(cmd), 0);
+    }
+    assert_true(WIFEXITED(status));
+    assert_int_equal(WEXITSTATUS(status), 0);
+    sc_framebuffer_release(fb);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -256,6 +328,7 @@ int main(void)
         cmocka_unit_test(test_mask_and_depth),
         cmocka_unit_test(test_format_errors),
         cmocka_unit_test(test_failures_keep_target),
+        cmocka_unit_test(test_readonly_folder),
     };
     return cmocka_run_group_tests(tests, setup, NULL);
 }

@@ -3,7 +3,8 @@
 # It sets bin (spancast, absolute), src (the source tree, absolute) and work
 # (emptied, absolute, and the current directory), and the counters the
 # scripts report with: fail MESSAGE counts and prints a failure, check
-# counts one check.
+# counts one check. skip and require_tools stop a test that cannot run
+# here; run_unprivileged runs a command as an ordinary user.
 set -u
 bin=$(cd "$(dirname "$1")" && pwd)/$(basename "$1")
 src=$(cd "$2" && pwd)
@@ -21,4 +22,56 @@ fail() {
 }
 check() {
     checks=$((checks + 1))
+}
+
+# skip REASON: the rest of the test cannot run on this machine. Exits 77,
+# which CTest reports as skipped (SKIP_RETURN_CODE), never as passed; a
+# failure counted before the skip still fails the test. scripts/test, which
+# installs every tool the suite uses, sets SPANCAST_NO_SKIP=1: there a skip
+# is a failure, since it means an install step is missing.
+skip() {
+    if [ "$fails" != 0 ]; then
+        echo "$fails failure(s) before the skip ($*)"
+        exit 1
+    fi
+    if [ "${SPANCAST_NO_SKIP:-0}" = 1 ]; then
+        echo "FAIL: cannot skip with SPANCAST_NO_SKIP=1: $*"
+        exit 1
+    fi
+    echo "skipped: $*"
+    exit 77
+}
+
+# require_tools TOOL...: skip unless every TOOL is in PATH.
+require_tools() {
+    local tool
+    for tool; do
+        command -v "$tool" >/dev/null || skip "$tool is not installed"
+    done
+}
+
+# unprivileged_dir: sets udir to a new, empty folder under /tmp that the
+# user of run_unprivileged owns, with a copy of spancast as $udir/spancast.
+# The checkout and build tree may sit under a folder that user cannot enter
+# (a mode-0700 home), so what it runs and reads is copied there. Removed
+# when the script exits.
+unprivileged_dir() {
+    [ "$(id -u)" != 0 ] || require_tools setpriv
+    udir=$(mktemp -d /tmp/spancast-test.XXXXXX) || exit 1
+    # shellcheck disable=SC2064 # expand now: the trap removes this folder
+    trap "rm -rf '$udir'" EXIT
+    cp "$bin" "$udir/spancast"
+    chmod 755 "$udir" "$udir/spancast"
+    [ "$(id -u)" != 0 ] || chown -R nobody:nogroup "$udir"
+}
+
+# run_unprivileged CMD...: runs CMD as an ordinary user. Root may write
+# anywhere, so a permission case run as root proves nothing; as root the
+# command runs as 'nobody' (setpriv, util-linux), otherwise as the caller.
+run_unprivileged() {
+    if [ "$(id -u)" = 0 ]; then
+        setpriv --reuid=nobody --regid=nogroup --clear-groups --reset-env -- "$@"
+    else
+        "$@"
+    fi
 }
