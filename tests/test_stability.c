@@ -28,6 +28,7 @@ size_t __sanitizer_get_current_allocated_bytes(void);
 #endif
 
 #include "csg/csg.h"
+#include "render/camera.h"
 #include "render/stability.h"
 #include "scene/scene.h"
 #include "test_util.h"
@@ -78,7 +79,8 @@ static stab_result compare_clean(const char *model, const char *expected,
 static void test_scale(void **state)
 {
     (void)state;
-    const double sizes[] = {1e-6, 1e-3, 1, 1e3, 1e6};
+    /* Not 1: the identity compares the model with itself and proves nothing. */
+    const double sizes[] = {1e-6, 1e-3, 1e3, 1e6};
     for (size_t i = 0; i < sizeof sizes / sizeof sizes[0]; i++) {
         stab_similarity x = stab_scaled(sizes[i], sizes[i], sizes[i], v3(0, 0, 0));
         stab_result r = compare_clean("part.csg", NULL, &x);
@@ -148,6 +150,80 @@ static void find_models(const char *dir, model_list *list)
     closedir(d);
 }
 
+/* The pixels of stab_compare's view of t that must be hits, and those that
+ * may be. The camera is the harness's (stability.c, harness_camera): the
+ * fixed oblique forward, fov 30, viewall with autocenter on t's bounds. A
+ * pixel whose centre ray passes through a point of the solid (csg_inside,
+ * tested at `samples` evenly spaced points of the ray's stretch through the
+ * bounds, and at points approaching either end of it) must be a hit; a
+ * pixel whose ray misses the bounds must not be.
+ * Checks both against csg_first_hit pixel by pixel and returns its hit
+ * count in *hits, so the caller can tie it to stab_compare's count. */
+static uint64_t must_hit(const csg_tree *t, int size, int samples, uint64_t *may,
+                         uint64_t *hits)
+{
+    *may = *hits = 0;
+    if (bbox_is_empty(&t->bounds))
+        return 0;
+    cam_view view;
+    view.center = v3(0, 0, 0);
+    view.forward = v3_normalize(v3(-0.5773, -0.6421, -0.5049));
+    view.up = v3(0, 0, 1);
+    cam_view_all(&view, &t->bounds, 1, 30.0);
+    camera cam;
+    sc_error e;
+    assert_int_equal(
+        cam_init(&cam, &view, 30.0, SC_PROJECTION_PERSPECTIVE, size, size, &e), SC_OK);
+    arena scratch;
+    arena_init(&scratch, 1 << 16);
+    uint64_t must = 0;
+    for (int j = 0; j < size; j++)
+        for (int i = 0; i < size; i++) {
+            csg_ray ray = {.tmin = 0, .tmax = INFINITY};
+            cam_ray(&cam, i, j, 0.5, 0.5, &ray.o, &ray.d);
+            csg_hit hit;
+            int got = csg_first_hit(t, &ray, &scratch, &hit);
+            arena_reset(&scratch);
+            *hits += (uint64_t)got;
+            /* the ray's stretch through the bounds (slabs) */
+            double t0 = 0, t1 = INFINITY;
+            for (int a = 0; a < 3; a++) {
+                double o = v3_get(ray.o, a), d = v3_get(ray.d, a);
+                double lo = v3_get(t->bounds.lo, a), hi = v3_get(t->bounds.hi, a);
+                if (d == 0) {
+                    if (o < lo || o > hi)
+                        t1 = -1;
+                    continue;
+                }
+                double ta = (lo - o) / d, tb = (hi - o) / d;
+                t0 = fmax(t0, fmin(ta, tb));
+                t1 = fmin(t1, fmax(ta, tb));
+            }
+            if (t0 > t1) {
+                if (got)
+                    fail_msg("pixel (%d, %d) hits outside the bounds", i, j);
+                continue;
+            }
+            ++*may;
+            int inside = 0;
+            for (int k = 0; k < samples && !inside; k++)
+                inside = csg_inside(
+                    t, v3_madd(ray.o, ray.d, t0 + (t1 - t0) * (k + 0.5) / samples));
+            /* a solid touches its bounds, possibly only in a thin layer:
+             * also points approaching each end of the stretch */
+            for (int k = 1; k <= 40 && !inside; k++) {
+                double step = (t1 - t0) * ldexp(1, -k);
+                inside = csg_inside(t, v3_madd(ray.o, ray.d, t0 + step)) ||
+                         csg_inside(t, v3_madd(ray.o, ray.d, t1 - step));
+            }
+            must += (uint64_t)inside;
+            if (inside && !got)
+                fail_msg("pixel (%d, %d) passes through the solid but misses it", i, j);
+        }
+    arena_free(&scratch);
+    return must;
+}
+
 static void test_metamorphic_all_models(void **state)
 {
     (void)state;
@@ -159,21 +235,29 @@ static void test_metamorphic_all_models(void **state)
     uint64_t pixels = 0, hits = 0;
     for (int m = 0; m < list.n; m++) {
         char *text = test_read_file(list.paths[m], NULL);
+        sc_error e;
+        /* Loaded from its path, so imports resolve beside the model. */
+        sc_scene *probe = NULL;
+        if (sc_scene_load(list.paths[m], NULL, &probe, &e) != SC_OK)
+            fail_msg("%s", e.message);
+        double lo[3], hi[3], radius = 1;
+        if (sc_scene_bounds(probe, lo, hi))
+            radius = 0.5 * sqrt((hi[0] - lo[0]) * (hi[0] - lo[0]) +
+                                (hi[1] - lo[1]) * (hi[1] - lo[1]) +
+                                (hi[2] - lo[2]) * (hi[2] - lo[2]));
+        /* Every model here is a solid framed by the view: some of its
+         * points lie on the sampled pixel rays, and those pixels must be
+         * hits (so a renderer that misses everything fails here). */
+        uint64_t may, probe_hits;
+        uint64_t must = must_hit(scene_tree(probe), 24, 64, &may, &probe_hits);
+        sc_scene_release(probe);
+        print_message("%s: %llu pixels must hit, %llu may\n", list.paths[m],
+                      (unsigned long long)must, (unsigned long long)may);
+        assert_true(must > 0);
         for (uint64_t k = 0; k < 3; k++) {
             /* Rotation, scale over 12 decades, translation up to 1000 times
              * the scaled model's radius. */
-            sc_error e;
             stab_result r;
-            /* Loaded from its path, so imports resolve beside the model. */
-            sc_scene *probe = NULL;
-            if (sc_scene_load(list.paths[m], NULL, &probe, &e) != SC_OK)
-                fail_msg("%s", e.message);
-            double lo[3], hi[3], radius = 1;
-            if (sc_scene_bounds(probe, lo, hi))
-                radius = 0.5 * sqrt((hi[0] - lo[0]) * (hi[0] - lo[0]) +
-                                    (hi[1] - lo[1]) * (hi[1] - lo[1]) +
-                                    (hi[2] - lo[2]) * (hi[2] - lo[2]));
-            sc_scene_release(probe);
             stab_similarity x = stab_random(1000 * (uint64_t)m + k, -6, 6, radius, 1e3);
             if (stab_compare(list.paths[m], text, NULL, &x, 24, &r, &e) != SC_OK)
                 fail_msg("%s", e.message);
@@ -185,6 +269,9 @@ static void test_metamorphic_all_models(void **state)
                               (unsigned long long)r.nan_count,
                               (unsigned long long)r.depth_violations,
                               r.max_rel_depth_error);
+            /* the same view of the same model: the same hits, which include
+             * every pixel that must hit */
+            assert_int_equal(r.hits, probe_hits);
             assert_int_equal(r.mask_mismatches, 0);
             assert_int_equal(r.nan_count, 0);
             assert_int_equal(r.depth_violations, 0);
