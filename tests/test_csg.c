@@ -7,15 +7,15 @@
  *    directions, including rays lying in the coincident planes, must give
  *    the box's span (no slivers, no speckles), and the first hit must lie on
  *    the box face that the ray enters.
- * 2. The property test. Seeded random trees (every primitive kind, the
- *    torus, clipped quadrics, implicit surfaces and triangle meshes with
- *    several spans per ray among them, boolean
- *    depth 4, random affine maps with mirrors and non-uniform scales
- *    composed down the tree) and random rays through their bounds: every
- *    span list is sorted, disjoint and finite, agrees with csg_inside
- *    sampled along the ray (inside each span, in each gap, just beyond
- *    every end, and at random) except within a tolerance of a span end, and
- *    csg_first_hit / csg_any_hit agree with it.
+ * 2. The property test. Seeded random trees (every primitive kind built,
+ *    the torus, clipped quadrics, implicit surfaces, triangle meshes,
+ *    outlines, solids of revolution and extrusions with several spans per
+ *    ray among them, boolean depth 4, random affine maps with mirrors and
+ *    non-uniform scales composed down the tree) and random rays through
+ *    their bounds: every span list is sorted, disjoint and finite, agrees
+ *    with csg_inside sampled along the ray (inside each span, in each gap,
+ *    just beyond every end, and at random) except within a tolerance of a
+ *    span end, and csg_first_hit / csg_any_hit agree with it.
  *    Every fifth tree is wide (unions and differences of 8 or more
  *    operands), so the BVHs built for those are part of the test.
  * 3. Bounds culling. Every ray of (2) is also evaluated by brute force
@@ -34,8 +34,10 @@
 #include <cmocka.h>
 
 #include "csg/csg.h"
+#include "csg/prim_extrusion.h"
 #include "csg/prim_mesh.h"
 #include "csg/prim_outline.h"
+#include "csg/prim_revolve.h"
 #include "implicit/expr.h"
 #include "implicit/solve.h"
 
@@ -488,9 +490,17 @@ enum { TREE_LEVELS = 4 };
 typedef struct gen {
     rng r;
     csg_builder *b;
-    uint32_t kinds_used; /* bit per prim_kind */
+    uint32_t kinds_used; /* bit per prim_kind, of the leaves actually built */
     uint32_t leaves;
 } gen;
+
+/* Memory that lives as long as the tree. */
+static void *tree_alloc(gen *g, size_t size)
+{
+    void *m = csg_builder_alloc(g->b, size);
+    assert_non_null(m);
+    return m;
+}
 
 static void add_plane(plane *p, vec3 n, vec3 through)
 {
@@ -663,6 +673,132 @@ static void random_outline(gen *g, prim *p)
     assert_non_null(p->u.outline.outline);
 }
 
+/* k points (2 numbers each) of a star-shaped loop about (cx, cy), at radii
+ * from 0.6 to 1 of `radius` and jittered angles, counter-clockwise when
+ * sign > 0. Consecutive angles differ by less than pi, so the loop is
+ * simple. */
+static void star(gen *g, double *xy, uint32_t k, double cx, double cy, double radius,
+                 double sign)
+{
+    for (uint32_t i = 0; i < k; i++) {
+        double a = sign * 2 * PI * (i + uniform_in(&g->r, 0, 0.4)) / k;
+        double rr = radius * uniform_in(&g->r, 0.6, 1.0);
+        xy[2 * i] = cx + rr * cos(a);
+        xy[2 * i + 1] = cy + rr * sin(a);
+    }
+}
+
+/* A solid of revolution: one or two regions of the (r, z) half-plane, each
+ * a star-shaped polygon (with a loop wound the other way about the same
+ * centre half the time, read even-odd with it; vertices left of the axis
+ * are moved onto it, so profiles touch the axis along an edge) or a disc
+ * (a horn torus a quarter of the time), revolved through a full turn or,
+ * half the time, a wedge of 20 to 340 degrees. */
+static void random_revolve(gen *g, prim *p)
+{
+    enum { MAX_POINTS = 2 * 8 };
+    uint32_t region_count = 1 + below(&g->r, 2);
+    prim_revolve *rev = tree_alloc(g, sizeof *rev);
+    prim_revolve_edge *edges = tree_alloc(g, region_count * MAX_POINTS * sizeof *edges);
+    prim_revolve_disc *discs = tree_alloc(g, region_count * sizeof *discs);
+    memset(rev, 0, sizeof *rev);
+    rev->edges = edges;
+    rev->discs = discs;
+    rev->region_count = region_count;
+    double r_lo = INFINITY, r_hi = -INFINITY, z_lo = INFINITY, z_hi = -INFINITY;
+    for (uint32_t k = 0; k < region_count; k++) {
+        double rc = uniform_in(&g->r, 0.3, 1.2), zc = uniform_in(&g->r, -0.6, 0.6);
+        if (below(&g->r, 3) == 0) {
+            double a = below(&g->r, 4) == 0 ? rc : rc * uniform_in(&g->r, 0.2, 0.9);
+            a = fmin(a, 0.7);
+            discs[rev->disc_count++] = (prim_revolve_disc){rc, zc, a, k};
+            r_lo = fmin(r_lo, rc - a), r_hi = fmax(r_hi, rc + a);
+            z_lo = fmin(z_lo, zc - a), z_hi = fmax(z_hi, zc + a);
+            continue;
+        }
+        uint32_t outer = 4 + below(&g->r, 5), hole = below(&g->r, 2) ? 3 : 0;
+        double *xy = tree_alloc(g, 2 * (outer + hole) * sizeof *xy);
+        uint32_t *start = tree_alloc(g, 3 * sizeof *start);
+        double radius = uniform_in(&g->r, 0.3, 0.8);
+        star(g, xy, outer, rc, zc, radius, 1);
+        star(g, xy + 2 * outer, hole, rc, zc, 0.3 * radius, -1);
+        start[0] = 0, start[1] = outer, start[2] = outer + hole;
+        for (uint32_t i = 0; i < outer + hole; i++) {
+            xy[2 * i] = fmax(0, xy[2 * i]);
+            r_lo = fmin(r_lo, xy[2 * i]), r_hi = fmax(r_hi, xy[2 * i]);
+            z_lo = fmin(z_lo, xy[2 * i + 1]), z_hi = fmax(z_hi, xy[2 * i + 1]);
+        }
+        uint32_t paths = hole ? 2 : 1;
+        for (uint32_t path = 0; path < paths; path++)
+            for (uint32_t i = start[path]; i < start[path + 1]; i++) {
+                uint32_t j = i + 1 < start[path + 1] ? i + 1 : start[path];
+                edges[rev->edge_count++] = (prim_revolve_edge){
+                    xy[2 * i], xy[2 * i + 1], xy[2 * j], xy[2 * j + 1], k};
+            }
+    }
+    rev->r_lo = fmax(0, r_lo), rev->r_hi = r_hi, rev->z_lo = z_lo, rev->z_hi = z_hi;
+    if (below(&g->r, 2)) {
+        double phi0 = uniform_in(&g->r, 0, 360), sweep = uniform_in(&g->r, 20, 340);
+        rev->partial = 1;
+        rev->sweep = sweep;
+        rev->start[0] = cos(phi0 * PI / 180), rev->start[1] = sin(phi0 * PI / 180);
+        rev->end[0] = cos((phi0 + sweep) * PI / 180);
+        rev->end[1] = sin((phi0 + sweep) * PI / 180);
+    }
+    p->kind = PRIM_REVOLVE;
+    p->u.revolve.rev = rev;
+}
+
+/* An extrusion: a postfix program of two or three operands (star-shaped
+ * polygon sets of one or two loops, possibly overlapping, and ellipses
+ * under random 2D maps with mirrors) joined by random operations, between
+ * random heights. */
+static void random_extrusion(gen *g, prim *p)
+{
+    prim_region region;
+    memset(&region, 0, sizeof region);
+    uint32_t operands = 2 + below(&g->r, 2);
+    for (uint32_t k = 0; k < operands; k++) {
+        double cx = uniform_in(&g->r, -0.6, 0.6), cy = uniform_in(&g->r, -0.6, 0.6);
+        int pushed = 0;
+        if (below(&g->r, 2)) {
+            /* A p + c with A a rotation times a scale (mirrored half the
+             * time); the ellipse is the image of the disc of radius r. */
+            double a = uniform_in(&g->r, 0, 2 * PI), r = uniform_in(&g->r, 0.4, 1.0);
+            double sx = uniform_in(&g->r, 0.4, 1.5), sy = uniform_in(&g->r, 0.4, 1.5);
+            if (below(&g->r, 2))
+                sx = -sx;
+            double m[2][3] = {{cos(a) * sx, -sin(a) * sy, cx},
+                              {sin(a) * sx, cos(a) * sy, cy}};
+            assert_true(prim_region_add_ellipse(&region, m, r, &pushed));
+        } else {
+            uint32_t first = 3 + below(&g->r, 6), second = below(&g->r, 2) ? 3 : 0;
+            double *xy = tree_alloc(g, 2 * (first + second) * sizeof *xy);
+            uint32_t *start = tree_alloc(g, 3 * sizeof *start);
+            double radius = uniform_in(&g->r, 0.5, 1.3);
+            star(g, xy, first, cx, cy, radius, 1);
+            star(g, xy + 2 * first, second, cx + uniform_in(&g->r, -0.4, 0.4),
+                 cy + uniform_in(&g->r, -0.4, 0.4), 0.5 * radius,
+                 below(&g->r, 2) ? 1 : -1);
+            start[0] = 0, start[1] = first, start[2] = first + second;
+            uint32_t paths = second ? 2 : 1;
+            assert_true(prim_region_add_polygon(&region, xy, start, paths, &pushed));
+        }
+        assert_true(pushed);
+        if (k > 0) {
+            static const prim_region_op ops[3] = {
+                PRIM_REGION_UNION, PRIM_REGION_INTERSECTION, PRIM_REGION_DIFFERENCE};
+            prim_region_op op = ops[below(&g->r, 3)];
+            assert_true(prim_region_add_op(&region, op));
+        }
+    }
+    double z0 = -uniform_in(&g->r, 0.2, 1.5), z1 = uniform_in(&g->r, 0.2, 1.5);
+    p->kind = PRIM_EXTRUSION;
+    p->u.extrusion.ext = prim_extrusion_create(g->b, &region, z0, z1);
+    assert_non_null(p->u.extrusion.ext);
+    prim_region_free(&region);
+}
+
 static prim random_prim(gen *g, uint32_t kind)
 {
     prim p = {.kind = (prim_kind)kind};
@@ -745,15 +881,23 @@ static prim random_prim(gen *g, uint32_t kind)
         p.u.implicit.method = SOLVE_INTERVAL;
         break;
     }
+    case PRIM_CONVEX:
+        random_convex(g, &p);
+        break;
     case PRIM_MESH:
         random_mesh(g, &p);
+        break;
+    case PRIM_REVOLVE:
+        random_revolve(g, &p);
+        break;
+    case PRIM_EXTRUSION:
+        random_extrusion(g, &p);
         break;
     case PRIM_OUTLINE:
         random_outline(g, &p);
         break;
     default:
-        random_convex(g, &p);
-        break;
+        fail_msg("no generator for primitive kind %u", kind);
     }
     return p;
 }
@@ -771,10 +915,10 @@ static uint32_t random_node(gen *g, const affine *parent, int level)
         m = affine_mul(parent, &local);
     }
     if (level == TREE_LEVELS) {
-        uint32_t kind = below(&g->r, PRIM_KIND_COUNT);
-        g->kinds_used |= 1u << kind;
+        prim p = random_prim(g, below(&g->r, PRIM_KIND_COUNT));
+        /* The kind built, which is what the test covers. */
+        g->kinds_used |= 1u << p.kind;
         g->leaves++;
-        prim p = random_prim(g, kind);
         uint32_t id = csg_builder_leaf(g->b, &p, &m, white, no_loc);
         assert_int_not_equal(id, CSG_EMPTY);
         return id;
@@ -1086,15 +1230,17 @@ static void test_random_trees(void **state)
     double seconds = (double)(clock() - start) / CLOCKS_PER_SEC;
     arena_free(&scratch);
     arena_free(&brute);
-    print_message("random trees: %ld trees (%ld leaves, depth up to %u), %ld rays "
-                  "(%ld missing the bounds, %ld with spans, %ld spans), %ld samples (%ld "
-                  "within tolerance of an "
-                  "end), %ld disagreements, %ld bad lists, %ld bad first hits, %ld "
-                  "culling mismatches, %ld BVH nodes, %.2f s\n",
-                  st.trees, st.leaves, st.max_depth, st.rays, st.misses,
-                  st.rays_with_spans, st.spans, st.samples, st.skipped, st.disagreements,
-                  st.bad_lists, st.bad_first_hits, st.culling_mismatches, st.bvh_nodes,
-                  seconds);
+    print_message(
+        "random trees: %ld trees (%ld leaves, kinds %#x of %#x, depth up to %u), "
+        "%ld rays "
+        "(%ld missing the bounds, %ld with spans, %ld spans), %ld samples (%ld "
+        "within tolerance of an "
+        "end), %ld disagreements, %ld bad lists, %ld bad first hits, %ld "
+        "culling mismatches, %ld BVH nodes, %.2f s\n",
+        st.trees, st.leaves, kinds, (1u << PRIM_KIND_COUNT) - 1, st.max_depth, st.rays,
+        st.misses, st.rays_with_spans, st.spans, st.samples, st.skipped, st.disagreements,
+        st.bad_lists, st.bad_first_hits, st.culling_mismatches, st.bvh_nodes, seconds);
+    /* Every kind was built (the mask is of the leaves made, not asked for). */
     assert_int_equal(kinds, (1u << PRIM_KIND_COUNT) - 1);
     assert_true(st.rays >= 100000);
     assert_true(st.rays_with_spans > st.rays / 4);
