@@ -7,15 +7,22 @@
  *    directions, including rays lying in the coincident planes, must give
  *    the box's span (no slivers, no speckles), and the first hit must lie on
  *    the box face that the ray enters.
- * 2. The property test. Seeded random trees (every primitive kind, the
- *    torus, clipped quadrics, implicit surfaces and triangle meshes with
- *    several spans per ray among them, boolean
- *    depth 4, random affine maps with mirrors and non-uniform scales
- *    composed down the tree) and random rays through their bounds: every
- *    span list is sorted, disjoint and finite, agrees with csg_inside
- *    sampled along the ray (inside each span, in each gap, just beyond
- *    every end, and at random) except within a tolerance of a span end, and
- *    csg_first_hit / csg_any_hit agree with it.
+ * 2. The property test. Seeded random trees (every primitive kind built,
+ *    the torus, clipped quadrics, implicit surfaces, triangle meshes,
+ *    outlines, solids of revolution and extrusions with several spans per
+ *    ray among them, boolean depth 4, random affine maps with mirrors and
+ *    non-uniform scales composed down the tree) and random rays through
+ *    their bounds: every span list is sorted, disjoint and finite, agrees
+ *    with an oracle of membership that shares no code with the leaves'
+ *    spans (the generator's own tree, and for meshes, outlines, revolves
+ *    and extrusions winding numbers from angles, see "independent
+ *    membership") except within a tolerance of a span end, sampled along
+ *    the ray where the answer puts them (inside each span, in each gap,
+ *    just beyond every end; csg_inside must agree with the oracle there
+ *    too) and where it does not: at random, on an even grid, and beside
+ *    and between every leaf's own crossings, so that a span the answer
+ *    misses is found however thin; csg_first_hit / csg_any_hit agree with
+ *    the span list.
  *    Every fifth tree is wide (unions and differences of 8 or more
  *    operands), so the BVHs built for those are part of the test.
  * 3. Bounds culling. Every ray of (2) is also evaluated by brute force
@@ -28,14 +35,17 @@
 #include <stddef.h>
 #include <stdint.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 #include <time.h>
 
 #include <cmocka.h>
 
 #include "csg/csg.h"
+#include "csg/prim_extrusion.h"
 #include "csg/prim_mesh.h"
 #include "csg/prim_outline.h"
+#include "csg/prim_revolve.h"
 #include "implicit/expr.h"
 #include "implicit/solve.h"
 
@@ -485,12 +495,84 @@ static void test_coincident_faces(void **state)
 
 enum { TREE_LEVELS = 4 };
 
+/* Closed paths of a 2D polygon set: path k is the points start[k] ..
+ * start[k + 1] - 1 of xy (2 numbers each). */
+typedef struct poly2 {
+    const double *xy;
+    const uint32_t *start;
+    uint32_t paths;
+} poly2;
+
+/* One step of an extrusion's region as the generator wrote it (postfix). */
+typedef struct region_item {
+    prim_region_op op;
+    double inv[2][2], c[2], r; /* ellipse: |inv (p - c)| <= r */
+    poly2 poly;                /* polygon set, read even-odd */
+} region_item;
+
+/* What the generator knows about a leaf, kept apart from what the library
+ * made of it, so the property test's membership oracle can be independent
+ * of the code under test (see "independent membership"). The arrays are
+ * in the tree's memory. */
+typedef struct oracle_leaf {
+    prim p;          /* as built: its kind, and prim_inside for the simple kinds */
+    affine to_local; /* inverse of the map the generator composed */
+    bbox box;        /* local bounds, from the generator's own numbers */
+    /* mesh: triangles of three indices into pts, wound outward */
+    const vec3 *pts;
+    const uint32_t *tris;
+    uint32_t tri_count;
+    /* outline: closed contours, nonzero rule, z0 <= z <= z1 */
+    const outline_seg *segs;
+    uint32_t seg_count;
+    double z0, z1; /* outline and extrusion slab */
+    /* revolve: (r, z) regions, each an even-odd polygon set, and discs
+     * (rc, zc, a); a wedge of sweep radians from phi0 when partial */
+    const poly2 *regions;
+    uint32_t region_count;
+    const double *discs;
+    uint32_t disc_count;
+    int partial;
+    double phi0, sweep;
+    /* extrusion: the region's postfix program */
+    const region_item *items;
+    uint32_t item_count;
+} oracle_leaf;
+
+/* The tree as generated, before the builder simplifies or compiles it. */
+typedef struct oracle_node {
+    csg_op op;
+    uint32_t leaf;         /* CSG_LEAF: index into gen.oleaves */
+    uint32_t first, count; /* others: children gen.okids[first ..] */
+} oracle_node;
+
+/* Generous for the largest tree random_wide makes: 31 level-2 subtrees of
+ * at most 9 leaves and 4 boolean nodes each, and 15 subtracted leaves. */
+enum { ORACLE_LEAVES = 512, ORACLE_NODES = 1024 };
+
 typedef struct gen {
     rng r;
     csg_builder *b;
-    uint32_t kinds_used; /* bit per prim_kind */
+    uint32_t kinds_used; /* bit per prim_kind, of the leaves actually built */
     uint32_t leaves;
+    oracle_leaf *oleaves; /* ORACLE_LEAVES */
+    oracle_node *onodes;  /* ORACLE_NODES */
+    uint32_t *okids;      /* ORACLE_NODES */
+    uint32_t oleaf_count, onode_count, okid_count;
 } gen;
+
+/* A node id from the builder and the same node in the generator's tree. */
+typedef struct made {
+    uint32_t id, node;
+} made;
+
+/* Memory that lives as long as the tree. */
+static void *tree_alloc(gen *g, size_t size)
+{
+    void *m = csg_builder_alloc(g->b, size);
+    assert_non_null(m);
+    return m;
+}
 
 static void add_plane(plane *p, vec3 n, vec3 through)
 {
@@ -567,7 +649,7 @@ static int random_convex(gen *g, prim *p)
 /* A random closed mesh, non-convex: a sphere with a random radius at each
  * vertex (star-shaped), or a torus of triangles (two spans along many
  * rays). */
-static void random_mesh(gen *g, prim *p)
+static void random_mesh(gen *g, prim *p, oracle_leaf *ol)
 {
     enum { RINGS = 7, SEGMENTS = 9 };
     vec3 pts[RINGS * SEGMENTS + 2];
@@ -622,12 +704,22 @@ static void random_mesh(gen *g, prim *p)
     p->kind = PRIM_MESH;
     p->u.mesh.mesh = prim_mesh_create(g->b, pts, tris, nt);
     assert_non_null(p->u.mesh.mesh);
+    vec3 *own_pts = tree_alloc(g, np * sizeof *own_pts);
+    uint32_t *own_tris = tree_alloc(g, 3 * nt * sizeof *own_tris);
+    memcpy(own_pts, pts, np * sizeof *own_pts);
+    memcpy(own_tris, tris, 3 * nt * sizeof *own_tris);
+    ol->pts = own_pts;
+    ol->tris = own_tris;
+    ol->tri_count = nt;
+    ol->box = bbox_empty();
+    for (uint32_t i = 0; i < np; i++)
+        ol->box = bbox_add_point(ol->box, pts[i]);
 }
 
 /* An outline prism: a star-shaped loop of lines and quadratic and cubic
  * curves (possibly crossing itself) with a loop wound the other way
  * inside it, between random heights. */
-static void random_outline(gen *g, prim *p)
+static void random_outline(gen *g, prim *p, oracle_leaf *ol)
 {
     outline_seg segs[16];
     uint32_t n = 0;
@@ -657,13 +749,191 @@ static void random_outline(gen *g, prim *p)
         }
         n += k;
     }
+    ol->z0 = -uniform_in(&g->r, 0.2, 1.5);
+    ol->z1 = uniform_in(&g->r, 0.2, 1.5);
     p->kind = PRIM_OUTLINE;
-    p->u.outline.outline = prim_outline_create(
-        g->b, segs, n, -uniform_in(&g->r, 0.2, 1.5), uniform_in(&g->r, 0.2, 1.5));
+    p->u.outline.outline = prim_outline_create(g->b, segs, n, ol->z0, ol->z1);
     assert_non_null(p->u.outline.outline);
+    outline_seg *own = tree_alloc(g, n * sizeof *own);
+    memcpy(own, segs, n * sizeof *own);
+    ol->segs = own;
+    ol->seg_count = n;
+    /* A Bezier curve lies in the hull of its control points. */
+    ol->box = bbox_empty();
+    for (uint32_t i = 0; i < n; i++)
+        for (uint32_t m = 0; m <= segs[i].degree; m++) {
+            ol->box = bbox_add_point(ol->box, v3(segs[i].x[m], segs[i].y[m], ol->z0));
+            ol->box = bbox_add_point(ol->box, v3(segs[i].x[m], segs[i].y[m], ol->z1));
+        }
 }
 
-static prim random_prim(gen *g, uint32_t kind)
+/* k points (2 numbers each) of a star-shaped loop about (cx, cy), at radii
+ * from 0.6 to 1 of `radius` and jittered angles, counter-clockwise when
+ * sign > 0. Consecutive angles differ by less than pi, so the loop is
+ * simple. */
+static void star(gen *g, double *xy, uint32_t k, double cx, double cy, double radius,
+                 double sign)
+{
+    for (uint32_t i = 0; i < k; i++) {
+        double a = sign * 2 * PI * (i + uniform_in(&g->r, 0, 0.4)) / k;
+        double rr = radius * uniform_in(&g->r, 0.6, 1.0);
+        xy[2 * i] = cx + rr * cos(a);
+        xy[2 * i + 1] = cy + rr * sin(a);
+    }
+}
+
+/* A solid of revolution: one or two regions of the (r, z) half-plane, each
+ * a star-shaped polygon (with a loop wound the other way about the same
+ * centre half the time, read even-odd with it; vertices left of the axis
+ * are moved onto it, so profiles touch the axis along an edge) or a disc
+ * (a horn torus a quarter of the time), revolved through a full turn or,
+ * half the time, a wedge of 20 to 340 degrees. */
+static void random_revolve(gen *g, prim *p, oracle_leaf *ol)
+{
+    enum { MAX_POINTS = 2 * 8 };
+    uint32_t region_count = 1 + below(&g->r, 2);
+    prim_revolve *rev = tree_alloc(g, sizeof *rev);
+    prim_revolve_edge *edges = tree_alloc(g, region_count * MAX_POINTS * sizeof *edges);
+    prim_revolve_disc *discs = tree_alloc(g, region_count * sizeof *discs);
+    poly2 *regions = tree_alloc(g, region_count * sizeof *regions);
+    double *own_discs = tree_alloc(g, 3 * region_count * sizeof *own_discs);
+    memset(rev, 0, sizeof *rev);
+    rev->edges = edges;
+    rev->discs = discs;
+    rev->region_count = region_count;
+    double r_lo = INFINITY, r_hi = -INFINITY, z_lo = INFINITY, z_hi = -INFINITY;
+    uint32_t polygons = 0;
+    for (uint32_t k = 0; k < region_count; k++) {
+        double rc = uniform_in(&g->r, 0.3, 1.2), zc = uniform_in(&g->r, -0.6, 0.6);
+        if (below(&g->r, 3) == 0) {
+            double a = below(&g->r, 4) == 0 ? rc : rc * uniform_in(&g->r, 0.2, 0.9);
+            a = fmin(a, 0.7);
+            discs[rev->disc_count] = (prim_revolve_disc){rc, zc, a, k};
+            double *d = &own_discs[3 * rev->disc_count++];
+            d[0] = rc, d[1] = zc, d[2] = a;
+            r_lo = fmin(r_lo, rc - a), r_hi = fmax(r_hi, rc + a);
+            z_lo = fmin(z_lo, zc - a), z_hi = fmax(z_hi, zc + a);
+            continue;
+        }
+        uint32_t outer = 4 + below(&g->r, 5), hole = below(&g->r, 2) ? 3 : 0;
+        double *xy = tree_alloc(g, 2 * (outer + hole) * sizeof *xy);
+        uint32_t *start = tree_alloc(g, 3 * sizeof *start);
+        double radius = uniform_in(&g->r, 0.3, 0.8);
+        star(g, xy, outer, rc, zc, radius, 1);
+        star(g, xy + 2 * outer, hole, rc, zc, 0.3 * radius, -1);
+        start[0] = 0, start[1] = outer, start[2] = outer + hole;
+        for (uint32_t i = 0; i < outer + hole; i++) {
+            xy[2 * i] = fmax(0, xy[2 * i]);
+            r_lo = fmin(r_lo, xy[2 * i]), r_hi = fmax(r_hi, xy[2 * i]);
+            z_lo = fmin(z_lo, xy[2 * i + 1]), z_hi = fmax(z_hi, xy[2 * i + 1]);
+        }
+        uint32_t paths = hole ? 2 : 1;
+        for (uint32_t path = 0; path < paths; path++)
+            for (uint32_t i = start[path]; i < start[path + 1]; i++) {
+                uint32_t j = i + 1 < start[path + 1] ? i + 1 : start[path];
+                edges[rev->edge_count++] = (prim_revolve_edge){
+                    xy[2 * i], xy[2 * i + 1], xy[2 * j], xy[2 * j + 1], k};
+            }
+        regions[polygons++] = (poly2){xy, start, paths};
+    }
+    rev->r_lo = fmax(0, r_lo), rev->r_hi = r_hi, rev->z_lo = z_lo, rev->z_hi = z_hi;
+    if (below(&g->r, 2)) {
+        double phi0 = uniform_in(&g->r, 0, 360), sweep = uniform_in(&g->r, 20, 340);
+        rev->partial = 1;
+        rev->sweep = sweep;
+        rev->start[0] = cos(phi0 * PI / 180), rev->start[1] = sin(phi0 * PI / 180);
+        rev->end[0] = cos((phi0 + sweep) * PI / 180);
+        rev->end[1] = sin((phi0 + sweep) * PI / 180);
+        ol->partial = 1;
+        ol->phi0 = phi0 * PI / 180;
+        ol->sweep = sweep * PI / 180;
+    }
+    p->kind = PRIM_REVOLVE;
+    p->u.revolve.rev = rev;
+    ol->regions = regions;
+    ol->region_count = polygons;
+    ol->discs = own_discs;
+    ol->disc_count = rev->disc_count;
+    ol->box = (bbox){v3(-r_hi, -r_hi, z_lo), v3(r_hi, r_hi, z_hi)};
+}
+
+/* An extrusion: a postfix program of two or three operands (star-shaped
+ * polygon sets of one or two loops, possibly overlapping, and ellipses
+ * under random 2D maps with mirrors) joined by random operations, between
+ * random heights. */
+static void random_extrusion(gen *g, prim *p, oracle_leaf *ol)
+{
+    prim_region region;
+    memset(&region, 0, sizeof region);
+    uint32_t operands = 2 + below(&g->r, 2), count = 0;
+    region_item *items = tree_alloc(g, (2 * operands - 1) * sizeof *items);
+    bbox box = bbox_empty();
+    for (uint32_t k = 0; k < operands; k++) {
+        region_item *it = &items[count++];
+        memset(it, 0, sizeof *it);
+        double cx = uniform_in(&g->r, -0.6, 0.6), cy = uniform_in(&g->r, -0.6, 0.6);
+        int pushed = 0;
+        if (below(&g->r, 2)) {
+            /* A p + c with A a rotation times a scale (mirrored half the
+             * time); the ellipse is the image of the disc of radius r. */
+            double a = uniform_in(&g->r, 0, 2 * PI), r = uniform_in(&g->r, 0.4, 1.0);
+            double sx = uniform_in(&g->r, 0.4, 1.5), sy = uniform_in(&g->r, 0.4, 1.5);
+            if (below(&g->r, 2))
+                sx = -sx;
+            double m[2][3] = {{cos(a) * sx, -sin(a) * sy, cx},
+                              {sin(a) * sx, cos(a) * sy, cy}};
+            assert_true(prim_region_add_ellipse(&region, m, r, &pushed));
+            double det = m[0][0] * m[1][1] - m[0][1] * m[1][0];
+            it->op = PRIM_REGION_ELLIPSE;
+            it->inv[0][0] = m[1][1] / det, it->inv[0][1] = -m[0][1] / det;
+            it->inv[1][0] = -m[1][0] / det, it->inv[1][1] = m[0][0] / det;
+            it->c[0] = cx, it->c[1] = cy, it->r = r;
+            /* p = c + A u with |u| <= r: |p_x - c_x| <= r |row 0 of A|. */
+            double hx = r * hypot(m[0][0], m[0][1]), hy = r * hypot(m[1][0], m[1][1]);
+            box = bbox_add_point(box, v3(cx - hx, cy - hy, 0));
+            box = bbox_add_point(box, v3(cx + hx, cy + hy, 0));
+        } else {
+            uint32_t first = 3 + below(&g->r, 6), second = below(&g->r, 2) ? 3 : 0;
+            double *xy = tree_alloc(g, 2 * (first + second) * sizeof *xy);
+            uint32_t *start = tree_alloc(g, 3 * sizeof *start);
+            double radius = uniform_in(&g->r, 0.5, 1.3);
+            star(g, xy, first, cx, cy, radius, 1);
+            star(g, xy + 2 * first, second, cx + uniform_in(&g->r, -0.4, 0.4),
+                 cy + uniform_in(&g->r, -0.4, 0.4), 0.5 * radius,
+                 below(&g->r, 2) ? 1 : -1);
+            start[0] = 0, start[1] = first, start[2] = first + second;
+            uint32_t paths = second ? 2 : 1;
+            assert_true(prim_region_add_polygon(&region, xy, start, paths, &pushed));
+            it->op = PRIM_REGION_POLYGON;
+            it->poly = (poly2){xy, start, paths};
+            for (uint32_t i = 0; i < first + second; i++)
+                box = bbox_add_point(box, v3(xy[2 * i], xy[2 * i + 1], 0));
+        }
+        assert_true(pushed);
+        if (k > 0) {
+            static const prim_region_op ops[3] = {
+                PRIM_REGION_UNION, PRIM_REGION_INTERSECTION, PRIM_REGION_DIFFERENCE};
+            prim_region_op op = ops[below(&g->r, 3)];
+            assert_true(prim_region_add_op(&region, op));
+            memset(&items[count], 0, sizeof items[count]);
+            items[count++].op = op;
+        }
+    }
+    ol->z0 = -uniform_in(&g->r, 0.2, 1.5);
+    ol->z1 = uniform_in(&g->r, 0.2, 1.5);
+    p->kind = PRIM_EXTRUSION;
+    p->u.extrusion.ext = prim_extrusion_create(g->b, &region, ol->z0, ol->z1);
+    assert_non_null(p->u.extrusion.ext);
+    prim_region_free(&region);
+    ol->items = items;
+    ol->item_count = count;
+    box.lo.z = ol->z0;
+    box.hi.z = ol->z1;
+    ol->box = box;
+}
+
+/* A leaf of the requested kind; *ol gets what the oracle needs. */
+static prim random_prim(gen *g, uint32_t kind, oracle_leaf *ol)
 {
     prim p = {.kind = (prim_kind)kind};
     switch (kind) {
@@ -745,23 +1015,75 @@ static prim random_prim(gen *g, uint32_t kind)
         p.u.implicit.method = SOLVE_INTERVAL;
         break;
     }
-    case PRIM_MESH:
-        random_mesh(g, &p);
-        break;
-    case PRIM_OUTLINE:
-        random_outline(g, &p);
-        break;
-    default:
+    case PRIM_CONVEX:
         random_convex(g, &p);
         break;
+    case PRIM_MESH:
+        random_mesh(g, &p, ol);
+        break;
+    case PRIM_REVOLVE:
+        random_revolve(g, &p, ol);
+        break;
+    case PRIM_EXTRUSION:
+        random_extrusion(g, &p, ol);
+        break;
+    case PRIM_OUTLINE:
+        random_outline(g, &p, ol);
+        break;
+    default:
+        fail_msg("no generator for primitive kind %u", kind);
     }
+    /* Local bounds of the simple kinds, from the numbers drawn above. */
+    switch (p.kind) {
+    case PRIM_SPHERE: {
+        double r = p.u.sphere.r;
+        ol->box = (bbox){v3(-r, -r, -r), v3(r, r, r)};
+        break;
+    }
+    case PRIM_BOX:
+        ol->box = (bbox){p.u.box.lo, p.u.box.hi};
+        break;
+    case PRIM_CYLINDER: {
+        double r = fmax(p.u.cylinder.r0, p.u.cylinder.r1);
+        ol->box = (bbox){v3(-r, -r, p.u.cylinder.z0), v3(r, r, p.u.cylinder.z1)};
+        break;
+    }
+    case PRIM_CONVEX:
+        ol->box = p.u.convex.bounds;
+        break;
+    case PRIM_TORUS: {
+        double r = p.u.torus.major + p.u.torus.minor, h = p.u.torus.minor;
+        ol->box = (bbox){v3(-r, -r, -h), v3(r, r, h)};
+        break;
+    }
+    case PRIM_QUADRIC:
+        ol->box = p.u.quadric.box;
+        break;
+    case PRIM_IMPLICIT:
+        ol->box = p.u.implicit.box;
+        break;
+    default:
+        break;
+    }
+    ol->p = p;
     return p;
 }
 
 /* A subtree below the accumulated map parent; the first child of every
  * boolean node is itself boolean down to TREE_LEVELS, so the tree has that
  * many boolean levels. */
-static uint32_t random_node(gen *g, const affine *parent, int level)
+static uint32_t add_oracle_node(gen *g, csg_op op, uint32_t leaf, const made *kids,
+                                uint32_t count)
+{
+    assert_true(g->onode_count < ORACLE_NODES && g->okid_count + count <= ORACLE_NODES);
+    oracle_node *n = &g->onodes[g->onode_count];
+    *n = (oracle_node){op, leaf, g->okid_count, count};
+    for (uint32_t k = 0; k < count; k++)
+        g->okids[g->okid_count++] = kids[k].node;
+    return g->onode_count++;
+}
+
+static made random_node(gen *g, const affine *parent, int level)
 {
     /* Every leaf gets a map of its own, half the boolean nodes one for their
      * whole subtree (OpenSCAD's nested multmatrix). */
@@ -771,47 +1093,614 @@ static uint32_t random_node(gen *g, const affine *parent, int level)
         m = affine_mul(parent, &local);
     }
     if (level == TREE_LEVELS) {
-        uint32_t kind = below(&g->r, PRIM_KIND_COUNT);
-        g->kinds_used |= 1u << kind;
+        assert_true(g->oleaf_count < ORACLE_LEAVES);
+        oracle_leaf *ol = &g->oleaves[g->oleaf_count];
+        memset(ol, 0, sizeof *ol);
+        prim p = random_prim(g, below(&g->r, PRIM_KIND_COUNT), ol);
+        /* The kind built, which is what the test covers. */
+        g->kinds_used |= 1u << p.kind;
         g->leaves++;
-        prim p = random_prim(g, kind);
-        uint32_t id = csg_builder_leaf(g->b, &p, &m, white, no_loc);
-        assert_int_not_equal(id, CSG_EMPTY);
-        return id;
+        assert_true(affine_invert(&m, &ol->to_local));
+        made leaf = {csg_builder_leaf(g->b, &p, &m, white, no_loc), 0};
+        assert_int_not_equal(leaf.id, CSG_EMPTY);
+        leaf.node = add_oracle_node(g, CSG_LEAF, g->oleaf_count++, NULL, 0);
+        return leaf;
     }
-    uint32_t kids[3], count = 2 + below(&g->r, 2);
-    for (uint32_t k = 0; k < count; k++)
+    made kids[3];
+    uint32_t ids[3], count = 2 + below(&g->r, 2);
+    for (uint32_t k = 0; k < count; k++) {
         kids[k] = random_node(g, &m, k == 0 || below(&g->r, 2) ? level + 1 : TREE_LEVELS);
+        ids[k] = kids[k].id;
+    }
     /* Intersections and differences of random shapes are often empty:
      * weight union 3, difference 2, intersection 1. */
     static const csg_op ops[6] = {CSG_UNION,      CSG_UNION,      CSG_UNION,
                                   CSG_DIFFERENCE, CSG_DIFFERENCE, CSG_INTERSECTION};
     csg_op op = ops[below(&g->r, 6)];
-    uint32_t id = csg_builder_op(g->b, op, kids, count);
-    assert_int_not_equal(id, CSG_EMPTY);
-    return id;
+    made node = {csg_builder_op(g->b, op, ids, count), 0};
+    assert_int_not_equal(node.id, CSG_EMPTY);
+    node.node = add_oracle_node(g, op, 0, kids, count);
+    return node;
 }
 
 /* A wide tree: a difference whose first operand is a union of 8 to 31
  * random subtrees and which subtracts 8 to 15 random leaves, so that both
  * get a BVH when compiled; as deep as random_node's trees. */
-static uint32_t random_wide(gen *g)
+static made random_wide(gen *g)
 {
     affine id = affine_identity();
-    uint32_t parts[32], cut[16];
+    made parts[32], cut[16];
+    uint32_t part_ids[32], cut_ids[16];
     uint32_t n = 8 + below(&g->r, 24), m = 8 + below(&g->r, 8);
-    for (uint32_t k = 0; k < n; k++)
+    for (uint32_t k = 0; k < n; k++) {
         parts[k] = random_node(g, &id, 2);
-    cut[0] = csg_builder_op(g->b, CSG_UNION, parts, n);
-    for (uint32_t k = 1; k <= m; k++)
+        part_ids[k] = parts[k].id;
+    }
+    cut[0].id = cut_ids[0] = csg_builder_op(g->b, CSG_UNION, part_ids, n);
+    cut[0].node = add_oracle_node(g, CSG_UNION, 0, parts, n);
+    for (uint32_t k = 1; k <= m; k++) {
         cut[k] = random_node(g, &id, TREE_LEVELS);
-    return csg_builder_op(g->b, CSG_DIFFERENCE, cut, m + 1);
+        cut_ids[k] = cut[k].id;
+    }
+    made root = {csg_builder_op(g->b, CSG_DIFFERENCE, cut_ids, m + 1), 0};
+    root.node = add_oracle_node(g, CSG_DIFFERENCE, 0, cut, m + 1);
+    return root;
+}
+
+/* ---- independent membership ---- */
+
+/* The property test's truth, from the generator's own description of each
+ * leaf and its own tree, not from prim_inside and csg_inside: for meshes,
+ * outlines, solids of revolution and extrusions prim_inside shares its
+ * crossing code with the span code under test, or could, so these decide
+ * membership by predicates that count no crossings of any line:
+ *   mesh        the generalised winding number, the sum of the solid
+ *               angles of the triangles (Van Oosterom and Strackee) over
+ *               4 pi: 1 inside a closed mesh wound outward, 0 outside;
+ *   outline     the winding number as the sum of the angles the curves
+ *               subtend, each curve split (de Casteljau) until the point
+ *               lies outside the box of a piece's control points: a piece
+ *               then lies in a half-plane through the point (the box is
+ *               convex and holds the piece), so the angle it sweeps is
+ *               under pi and equals the angle between its ends;
+ *   polygons    (the revolve's profile in (|(x, y)|, z), an extrusion's
+ *               polygon sets) the winding number as a sum of the angles
+ *               the edges subtend, odd for even-odd inside;
+ *   ellipses, discs and wedges  the closed-form tests.
+ * The simple kinds (sphere, box, frustum, convex, torus, quadric,
+ * implicit) use prim_inside, which is their closed form. Each answer is
+ * 1 (in), 0 (out) or -1 (no answer: the point lies on a surface, where
+ * rounding decides, or the sum is not near a whole number). The sums are
+ * whole numbers up to rounding, about 1e-15 per term, so 0.25 separates
+ * an answer from none with room to spare. */
+
+static int whole_number(double w, long *n)
+{
+    *n = lround(w);
+    return fabs(w - (double)*n) < 0.25;
+}
+
+static int mesh_member(const oracle_leaf *ol, vec3 q)
+{
+    double omega = 0;
+    for (uint32_t i = 0; i < ol->tri_count; i++) {
+        const uint32_t *tri = &ol->tris[3 * i];
+        vec3 a = v3_sub(ol->pts[tri[0]], q), b = v3_sub(ol->pts[tri[1]], q),
+             c = v3_sub(ol->pts[tri[2]], q);
+        double la = v3_length(a), lb = v3_length(b), lc = v3_length(c);
+        /* tan(omega / 2) = a . (b x c) / (la lb lc + (a . b) lc + (a . c) lb
+         * + (b . c) la), positive for a triangle wound counter-clockwise
+         * as seen from outside when q is inside. */
+        double num = v3_dot(a, v3_cross(b, c));
+        double den =
+            la * lb * lc + v3_dot(a, b) * lc + v3_dot(a, c) * lb + v3_dot(b, c) * la;
+        omega += 2 * atan2(num, den);
+    }
+    long n;
+    if (!whole_number(omega / (4 * PI), &n))
+        return -1;
+    return n > 0;
+}
+
+/* Halves of the Bezier curve of the given degree at u = 1/2. */
+static void split_curve(const double *x, const double *y, uint32_t degree, double *lx,
+                        double *ly, double *rx, double *ry)
+{
+    double wx[4], wy[4];
+    memcpy(wx, x, (degree + 1) * sizeof *wx);
+    memcpy(wy, y, (degree + 1) * sizeof *wy);
+    for (uint32_t level = 0; level <= degree; level++) {
+        lx[level] = wx[0];
+        ly[level] = wy[0];
+        rx[degree - level] = wx[degree - level];
+        ry[degree - level] = wy[degree - level];
+        for (uint32_t m = 0; m + level < degree; m++) {
+            wx[m] = 0.5 * (wx[m] + wx[m + 1]);
+            wy[m] = 0.5 * (wy[m] + wy[m + 1]);
+        }
+    }
+}
+
+/* Adds the angle the curve sweeps about (px, py) to *angle; 0 when the
+ * point is on it or closer than `depth` halvings can tell. */
+static int curve_angle(const double *x, const double *y, uint32_t degree, double px,
+                       double py, int depth, double *angle)
+{
+    double ax = x[0] - px, ay = y[0] - py, bx = x[degree] - px, by = y[degree] - py;
+    double cross = ax * by - ay * bx, dot = ax * bx + ay * by;
+    double lox = INFINITY, hix = -INFINITY, loy = INFINITY, hiy = -INFINITY;
+    for (uint32_t m = 0; m <= degree; m++) {
+        lox = fmin(lox, x[m]), hix = fmax(hix, x[m]);
+        loy = fmin(loy, y[m]), hiy = fmax(hiy, y[m]);
+    }
+    if (degree == 1) {
+        if (cross == 0 && dot <= 0)
+            return 0; /* on the segment */
+    } else if (!(px < lox || px > hix || py < loy || py > hiy)) {
+        double l[2][4], r[2][4];
+        if (depth == 0)
+            return 0;
+        split_curve(x, y, degree, l[0], l[1], r[0], r[1]);
+        return curve_angle(l[0], l[1], degree, px, py, depth - 1, angle) &&
+               curve_angle(r[0], r[1], degree, px, py, depth - 1, angle);
+    }
+    *angle += atan2(cross, dot);
+    return 1;
+}
+
+static int outline_member(const oracle_leaf *ol, vec3 q)
+{
+    if (q.z < ol->z0 || q.z > ol->z1)
+        return 0;
+    double angle = 0;
+    for (uint32_t i = 0; i < ol->seg_count; i++) {
+        const outline_seg *s = &ol->segs[i];
+        /* 52 halvings bring a piece to the last bit of its coordinates. */
+        if (!curve_angle(s->x, s->y, s->degree, q.x, q.y, 52, &angle))
+            return -1;
+    }
+    long n;
+    if (!whole_number(angle / (2 * PI), &n))
+        return -1;
+    return n != 0;
+}
+
+/* The winding number of the closed paths about (x, y), from the angles
+ * their edges subtend; 0 when the point is on an edge. */
+static int poly_winding(const poly2 *p, double x, double y, long *w)
+{
+    double angle = 0;
+    for (uint32_t path = 0; path < p->paths; path++) {
+        for (uint32_t i = p->start[path]; i < p->start[path + 1]; i++) {
+            uint32_t j = i + 1 < p->start[path + 1] ? i + 1 : p->start[path];
+            if (!curve_angle((double[]){p->xy[2 * i], p->xy[2 * j]},
+                             (double[]){p->xy[2 * i + 1], p->xy[2 * j + 1]}, 1, x, y, 0,
+                             &angle))
+                return 0;
+        }
+    }
+    return whole_number(angle / (2 * PI), w);
+}
+
+static int revolve_member(const oracle_leaf *ol, vec3 q)
+{
+    if (ol->partial) {
+        double phi = fmod(atan2(q.y, q.x) - ol->phi0, 2 * PI);
+        if (phi < 0)
+            phi += 2 * PI;
+        if (phi > ol->sweep)
+            return 0;
+    }
+    double rho = hypot(q.x, q.y);
+    for (uint32_t i = 0; i < ol->disc_count; i++) {
+        const double *c = &ol->discs[3 * i];
+        if ((rho - c[0]) * (rho - c[0]) + (q.z - c[1]) * (q.z - c[1]) <= c[2] * c[2])
+            return 1;
+    }
+    int unsure = 0;
+    for (uint32_t k = 0; k < ol->region_count; k++) {
+        long w;
+        if (!poly_winding(&ol->regions[k], rho, q.z, &w))
+            unsure = 1;
+        else if (w % 2 != 0)
+            return 1;
+    }
+    return unsure ? -1 : 0;
+}
+
+/* a and b, a or b, a and not b in three values (-1: unknown). */
+static int and3(int a, int b)
+{
+    return a == 0 || b == 0 ? 0 : a == 1 && b == 1 ? 1 : -1;
+}
+
+static int not3(int a)
+{
+    return a < 0 ? -1 : !a;
+}
+
+static int or3(int a, int b)
+{
+    return not3(and3(not3(a), not3(b)));
+}
+
+static int extrusion_member(const oracle_leaf *ol, vec3 q)
+{
+    if (q.z < ol->z0 || q.z > ol->z1)
+        return 0;
+    int stack[8], top = 0;
+    for (uint32_t i = 0; i < ol->item_count; i++) {
+        const region_item *it = &ol->items[i];
+        if (it->op == PRIM_REGION_ELLIPSE) {
+            double px = q.x - it->c[0], py = q.y - it->c[1];
+            double ux = it->inv[0][0] * px + it->inv[0][1] * py,
+                   uy = it->inv[1][0] * px + it->inv[1][1] * py;
+            stack[top++] = ux * ux + uy * uy <= it->r * it->r;
+        } else if (it->op == PRIM_REGION_POLYGON) {
+            long w;
+            stack[top++] = poly_winding(&it->poly, q.x, q.y, &w) ? w % 2 != 0 : -1;
+        } else {
+            int b = stack[--top], a = stack[top - 1];
+            stack[top - 1] = it->op == PRIM_REGION_UNION          ? or3(a, b)
+                             : it->op == PRIM_REGION_INTERSECTION ? and3(a, b)
+                                                                  : and3(a, not3(b));
+        }
+    }
+    return stack[0];
+}
+
+static int leaf_member(const oracle_leaf *ol, vec3 q)
+{
+    switch (ol->p.kind) {
+    case PRIM_MESH:
+        return mesh_member(ol, q);
+    case PRIM_OUTLINE:
+        return outline_member(ol, q);
+    case PRIM_REVOLVE:
+        return revolve_member(ol, q);
+    case PRIM_EXTRUSION:
+        return extrusion_member(ol, q);
+    default:
+        return prim_inside(&ol->p, q);
+    }
+}
+
+/* A ray in a leaf's frame, and the stretch [t0, t1] of it in the leaf's
+ * box (empty when t0 > t1): outside it the leaf is not asked. */
+typedef struct leaf_ray {
+    vec3 o, d;
+    double t0, t1;
+    /* mesh: where the ray crosses the planes of its triangles within them
+     * (sorted), and the winding number's answer on each stretch between
+     * (memo[i] for the stretch before cuts[i], -2 until asked) */
+    double *cuts;
+    uint32_t cut_count;
+    signed char *memo;
+} leaf_ray;
+
+static leaf_ray to_leaf(const oracle_leaf *ol, const csg_ray *ray)
+{
+    leaf_ray l = {affine_point(&ol->to_local, ray->o),
+                  affine_vector(&ol->to_local, ray->d),
+                  -INFINITY,
+                  INFINITY,
+                  NULL,
+                  0,
+                  NULL};
+    /* The box grown by 1e-9 of its size, far more than the rounding of the
+     * local ray, so no point of the solid is cut off. */
+    double pad = 1e-9 * v3_max_abs(bbox_extent(&ol->box));
+    for (int k = 0; k < 3; k++) {
+        double lo = v3_get(ol->box.lo, k) - pad, hi = v3_get(ol->box.hi, k) + pad;
+        double o = v3_get(l.o, k), d = v3_get(l.d, k);
+        if (d == 0) {
+            if (o < lo || o > hi)
+                l.t0 = INFINITY, l.t1 = -INFINITY;
+            continue;
+        }
+        double ta = (lo - o) / d, tb = (hi - o) / d;
+        l.t0 = fmax(l.t0, fmin(ta, tb));
+        l.t1 = fmin(l.t1, fmax(ta, tb));
+    }
+    return l;
+}
+
+/* ---- surfaces to sample near ---- */
+
+/* Ray parameters in [lo, hi]. */
+typedef struct t_list {
+    double *v;
+    uint32_t n, cap;
+    double lo, hi;
+} t_list;
+
+static void t_push(t_list *l, double t)
+{
+    if (!(t >= l->lo && t <= l->hi))
+        return;
+    assert_true(l->n < l->cap);
+    l->v[l->n++] = t;
+}
+
+/* Where the ray crosses the planes of the mesh's triangles inside them
+ * (with a little room at the edges: these are places to look, not
+ * answers). */
+static void mesh_crossings(const oracle_leaf *ol, const leaf_ray *l, t_list *out)
+{
+    for (uint32_t i = 0; i < ol->tri_count; i++) {
+        const uint32_t *tri = &ol->tris[3 * i];
+        vec3 a = ol->pts[tri[0]], b = ol->pts[tri[1]], c = ol->pts[tri[2]];
+        vec3 n = v3_cross(v3_sub(b, a), v3_sub(c, a));
+        double den = v3_dot(n, l->d);
+        if (den == 0)
+            continue;
+        double t = v3_dot(n, v3_sub(a, l->o)) / den, slack = -1e-9 * v3_dot(n, n);
+        vec3 q = v3_madd(l->o, l->d, t);
+        if (v3_dot(v3_cross(v3_sub(b, a), v3_sub(q, a)), n) >= slack &&
+            v3_dot(v3_cross(v3_sub(c, b), v3_sub(q, b)), n) >= slack &&
+            v3_dot(v3_cross(v3_sub(a, c), v3_sub(q, c)), n) >= slack)
+            t_push(out, t);
+    }
+}
+
+/* Where the ray's xy line crosses a curve: pieces whose control points
+ * straddle the line are halved, 40 times (a piece 1e-12 of the curve's
+ * size), then crossed at their chord. */
+static void curve_crossings(const double *x, const double *y, uint32_t degree,
+                            const leaf_ray *l, int depth, t_list *out)
+{
+    double nx = -l->d.y, ny = l->d.x, f[4];
+    int pos = 0, neg = 0;
+    for (uint32_t m = 0; m <= degree; m++) {
+        f[m] = nx * (x[m] - l->o.x) + ny * (y[m] - l->o.y);
+        pos |= f[m] >= 0;
+        neg |= f[m] <= 0;
+    }
+    if (!pos || !neg)
+        return;
+    if (degree == 1 || depth == 0) {
+        double s = f[0] != f[degree] ? f[0] / (f[0] - f[degree]) : 0.5;
+        double px = x[0] + s * (x[degree] - x[0]), py = y[0] + s * (y[degree] - y[0]);
+        t_push(out, (l->d.x * (px - l->o.x) + l->d.y * (py - l->o.y)) /
+                        (l->d.x * l->d.x + l->d.y * l->d.y));
+        return;
+    }
+    double lx[4], ly[4], rx[4], ry[4];
+    split_curve(x, y, degree, lx, ly, rx, ry);
+    curve_crossings(lx, ly, degree, l, depth - 1, out);
+    curve_crossings(rx, ry, degree, l, depth - 1, out);
+}
+
+static void poly_crossings(const poly2 *p, const leaf_ray *l, t_list *out)
+{
+    for (uint32_t path = 0; path < p->paths; path++) {
+        for (uint32_t i = p->start[path]; i < p->start[path + 1]; i++) {
+            uint32_t j = i + 1 < p->start[path + 1] ? i + 1 : p->start[path];
+            double x[2] = {p->xy[2 * i], p->xy[2 * j]},
+                   y[2] = {p->xy[2 * i + 1], p->xy[2 * j + 1]};
+            curve_crossings(x, y, 1, l, 0, out);
+        }
+    }
+}
+
+static void slab_crossings(double z0, double z1, const leaf_ray *l, t_list *out)
+{
+    if (l->d.z != 0) {
+        t_push(out, (z0 - l->o.z) / l->d.z);
+        t_push(out, (z1 - l->o.z) / l->d.z);
+    }
+}
+
+/* A revolved edge is a cone (a plane when level): its crossings are among
+ * the roots of (r0 + k (z(t) - z0))^2 = |xy(t)|^2, k = dr / dz (the others
+ * are on the mirror cone or past the edge's ends: only more places to
+ * look). The wedge's faces are the planes through the axis. The discs'
+ * tori are left to the leaf's own crossings and the even grid. */
+static void revolve_crossings(const oracle_leaf *ol, const leaf_ray *l, t_list *out)
+{
+    double qa = l->d.x * l->d.x + l->d.y * l->d.y, qb = l->o.x * l->d.x + l->o.y * l->d.y,
+           qc = l->o.x * l->o.x + l->o.y * l->o.y;
+    for (uint32_t k = 0; k < ol->region_count; k++) {
+        const poly2 *p = &ol->regions[k];
+        for (uint32_t path = 0; path < p->paths; path++) {
+            for (uint32_t i = p->start[path]; i < p->start[path + 1]; i++) {
+                uint32_t j = i + 1 < p->start[path + 1] ? i + 1 : p->start[path];
+                double r0 = p->xy[2 * i], z0 = p->xy[2 * i + 1], r1 = p->xy[2 * j],
+                       z1 = p->xy[2 * j + 1];
+                if (z1 == z0) {
+                    slab_crossings(z0, z0, l, out);
+                    continue;
+                }
+                double slope = (r1 - r0) / (z1 - z0);
+                double alpha = r0 + slope * (l->o.z - z0), beta = slope * l->d.z;
+                double a = beta * beta - qa, b = alpha * beta - qb,
+                       c = alpha * alpha - qc;
+                double disc = b * b - a * c;
+                if (a == 0) {
+                    if (b != 0)
+                        t_push(out, -c / (2 * b));
+                } else if (disc >= 0) {
+                    t_push(out, (-b + sqrt(disc)) / a);
+                    t_push(out, (-b - sqrt(disc)) / a);
+                }
+            }
+        }
+    }
+    if (ol->partial) {
+        double faces[2] = {ol->phi0, ol->phi0 + ol->sweep};
+        for (int k = 0; k < 2; k++) {
+            double nx = -sin(faces[k]), ny = cos(faces[k]);
+            double den = nx * l->d.x + ny * l->d.y;
+            if (den != 0)
+                t_push(out, -(nx * l->o.x + ny * l->o.y) / den);
+        }
+    }
+}
+
+static void extrusion_crossings(const oracle_leaf *ol, const leaf_ray *l, t_list *out)
+{
+    slab_crossings(ol->z0, ol->z1, l, out);
+    for (uint32_t i = 0; i < ol->item_count; i++) {
+        const region_item *it = &ol->items[i];
+        if (it->op == PRIM_REGION_POLYGON) {
+            poly_crossings(&it->poly, l, out);
+        } else if (it->op == PRIM_REGION_ELLIPSE) {
+            /* |u0 + t du|^2 = r^2 with u = inv (p - c). */
+            double px = l->o.x - it->c[0], py = l->o.y - it->c[1];
+            double u0x = it->inv[0][0] * px + it->inv[0][1] * py,
+                   u0y = it->inv[1][0] * px + it->inv[1][1] * py;
+            double dux = it->inv[0][0] * l->d.x + it->inv[0][1] * l->d.y,
+                   duy = it->inv[1][0] * l->d.x + it->inv[1][1] * l->d.y;
+            double a = dux * dux + duy * duy, b = u0x * dux + u0y * duy,
+                   c = u0x * u0x + u0y * u0y - it->r * it->r, disc = b * b - a * c;
+            if (a > 0 && disc >= 0) {
+                t_push(out, (-b + sqrt(disc)) / a);
+                t_push(out, (-b - sqrt(disc)) / a);
+            }
+        }
+    }
+}
+
+/* The crossings the oracle knows for the leaf, computed here. */
+static void leaf_crossings(const oracle_leaf *ol, const leaf_ray *l, t_list *out)
+{
+    if (!(l->t0 <= l->t1))
+        return;
+    switch (ol->p.kind) {
+    case PRIM_MESH:
+        for (uint32_t i = 0; i < l->cut_count; i++)
+            t_push(out, l->cuts[i]);
+        break;
+    case PRIM_OUTLINE:
+        slab_crossings(ol->z0, ol->z1, l, out);
+        for (uint32_t i = 0; i < ol->seg_count; i++)
+            curve_crossings(ol->segs[i].x, ol->segs[i].y, ol->segs[i].degree, l, 40, out);
+        break;
+    case PRIM_REVOLVE:
+        revolve_crossings(ol, l, out);
+        break;
+    case PRIM_EXTRUSION:
+        extrusion_crossings(ol, l, out);
+        break;
+    default:
+        break; /* the leaf's own spans (brute_node) give these */
+    }
+}
+
+/* The ray as the generator's tree sees it: leaf k's frame and box in
+ * leaves[k], and for node k a stretch [t0, t1] of the ray outside which the
+ * node's solid is not (from its leaves' boxes), in nodes[k]. */
+typedef struct tree_ray {
+    leaf_ray *leaves;
+    double (*nodes)[2];
+} tree_ray;
+
+static int compare_doubles(const void *a, const void *b)
+{
+    double x = *(const double *)a, y = *(const double *)b;
+    return (x > y) - (x < y);
+}
+
+/* Fills r for the ray (memory from scratch); nodes come after their
+ * children in g->onodes. */
+static void tree_ray_set(const gen *g, const csg_ray *ray, arena *scratch, tree_ray *r)
+{
+    for (uint32_t k = 0; k < g->oleaf_count; k++) {
+        const oracle_leaf *ol = &g->oleaves[k];
+        leaf_ray *l = &r->leaves[k];
+        *l = to_leaf(ol, ray);
+        if (ol->p.kind != PRIM_MESH || !(l->t0 <= l->t1))
+            continue;
+        t_list cuts = {arena_alloc(scratch, ol->tri_count * sizeof(double)), 0,
+                       ol->tri_count, -INFINITY, INFINITY};
+        l->memo = arena_alloc(scratch, ol->tri_count + 1);
+        assert_true(cuts.v && l->memo);
+        mesh_crossings(ol, l, &cuts);
+        qsort(cuts.v, cuts.n, sizeof *cuts.v, compare_doubles);
+        memset(l->memo, -2, cuts.n + 1);
+        l->cuts = cuts.v;
+        l->cut_count = cuts.n;
+    }
+    for (uint32_t k = 0; k < g->onode_count; k++) {
+        const oracle_node *n = &g->onodes[k];
+        double *v = r->nodes[k];
+        if (n->op == CSG_LEAF) {
+            v[0] = r->leaves[n->leaf].t0;
+            v[1] = r->leaves[n->leaf].t1;
+            continue;
+        }
+        const uint32_t *kids = &g->okids[n->first];
+        v[0] = r->nodes[kids[0]][0];
+        v[1] = r->nodes[kids[0]][1];
+        for (uint32_t c = 1; c < n->count && n->op != CSG_DIFFERENCE; c++) {
+            const double *w = r->nodes[kids[c]];
+            if (n->op == CSG_INTERSECTION) {
+                v[0] = fmax(v[0], w[0]);
+                v[1] = fmin(v[1], w[1]);
+            } else if (!(v[0] <= v[1])) {
+                v[0] = w[0];
+                v[1] = w[1];
+            } else if (w[0] <= w[1]) {
+                v[0] = fmin(v[0], w[0]);
+                v[1] = fmax(v[1], w[1]);
+            }
+        }
+    }
+}
+
+/* Membership of the point at t of the generator's tree. */
+static int tree_member(const gen *g, const tree_ray *r, uint32_t node, double t)
+{
+    const oracle_node *n = &g->onodes[node];
+    if (!(t >= r->nodes[node][0] && t <= r->nodes[node][1]))
+        return 0;
+    if (n->op == CSG_LEAF) {
+        const oracle_leaf *ol = &g->oleaves[n->leaf];
+        const leaf_ray *l = &r->leaves[n->leaf];
+        if (ol->p.kind != PRIM_MESH)
+            return leaf_member(ol, v3_madd(l->o, l->d, t));
+        /* The mesh's surface meets the ray only at l->cuts (a superset of
+         * its crossings), so its membership is constant between them: the
+         * winding number is asked once per stretch, at its middle, which
+         * keeps it affordable at hundreds of samples a ray. */
+        uint32_t lo = 0, hi = l->cut_count;
+        while (lo < hi) {
+            uint32_t mid = (lo + hi) / 2;
+            if (l->cuts[mid] <= t)
+                lo = mid + 1;
+            else
+                hi = mid;
+        }
+        if (l->memo[lo] == -2) {
+            double a = lo > 0 ? l->cuts[lo - 1] : l->t0,
+                   b = lo < l->cut_count ? l->cuts[lo] : l->t1;
+            l->memo[lo] =
+                (signed char)mesh_member(ol, v3_madd(l->o, l->d, 0.5 * (a + b)));
+        }
+        return l->memo[lo];
+    }
+    const uint32_t *kids = &g->okids[n->first];
+    int acc = tree_member(g, r, kids[0], t);
+    for (uint32_t k = 1; k < n->count; k++) {
+        if (n->op == CSG_UNION) {
+            if (acc == 1)
+                return 1;
+            acc = or3(acc, tree_member(g, r, kids[k], t));
+        } else {
+            if (acc == 0)
+                return 0;
+            int b = tree_member(g, r, kids[k], t);
+            acc = and3(acc, n->op == CSG_INTERSECTION ? b : not3(b));
+        }
+    }
+    return acc;
 }
 
 /* Brute force: every leaf's spans, combined with no box tests and no
- * narrowing of the operands, then clipped as csg_spans clips. */
+ * narrowing of the operands, then clipped as csg_spans clips. The ends of
+ * every leaf's own spans go to *ends when it is not NULL. */
 static span_list brute_node(const csg_tree *t, uint32_t id, vec3 o, vec3 d, double eps,
-                            arena *a)
+                            arena *a, t_list *ends)
 {
     const csg_node *n = &t->nodes[id];
     if (n->op == CSG_LEAF) {
@@ -821,28 +1710,35 @@ static span_list brute_node(const csg_tree *t, uint32_t id, vec3 o, vec3 d, doub
         assert_non_null(r.v);
         r.n = prim_spans(&l->prim, n->leaf, affine_point(&l->to_local, o),
                          affine_vector(&l->to_local, d), r.v, cap);
+        for (uint32_t i = 0; ends && i < r.n; i++) {
+            t_push(ends, r.v[i].in.t);
+            t_push(ends, r.v[i].out.t);
+        }
         r.n = span_regularize(r.v, r.n, eps);
         return r;
     }
     const uint32_t *kids = &t->child_ids[n->first_child];
-    span_list acc = brute_node(t, kids[0], o, d, eps, a);
+    span_list acc = brute_node(t, kids[0], o, d, eps, a, ends);
     span_op op = n->op == CSG_UNION          ? SPAN_UNION
                  : n->op == CSG_INTERSECTION ? SPAN_INTERSECTION
                                              : SPAN_DIFFERENCE;
     for (uint32_t k = 1; k < n->child_count; k++) {
         int oom = 0;
-        acc = span_combine(op, acc, brute_node(t, kids[k], o, d, eps, a), eps, a, &oom);
+        acc = span_combine(op, acc, brute_node(t, kids[k], o, d, eps, a, ends), eps, a,
+                           &oom);
         assert_int_equal(oom, 0);
     }
     return acc;
 }
 
-static span_list brute_spans(const csg_tree *t, const csg_ray *ray, arena *a)
+static span_list brute_spans(const csg_tree *t, const csg_ray *ray, arena *a,
+                             t_list *ends)
 {
     span_list none = {NULL, 0};
     if (t->root == CSG_EMPTY)
         return none;
-    span_list all = brute_node(t, t->root, ray->o, ray->d, csg_eps(t, ray->o, ray->d), a);
+    span_list all =
+        brute_node(t, t->root, ray->o, ray->d, csg_eps(t, ray->o, ray->d), a, ends);
     span *v = arena_alloc(a, (all.n + 1) * sizeof(span));
     assert_non_null(v);
     uint32_t n = 0;
@@ -877,16 +1773,20 @@ static int same_lists(span_list a, span_list b)
 }
 
 typedef struct property_stats {
-    long trees, leaves, rays, misses, rays_with_spans, spans, samples, skipped,
-        disagreements;
+    long trees, leaves, rays, misses, rays_with_spans, spans, samples, skipped, undecided,
+        disagreements, inside_mismatches, near_surface;
     long bad_lists, bad_first_hits, culling_mismatches, bvh_nodes;
     uint32_t max_depth;
 } property_stats;
 
-/* Compares the span list with csg_inside at t; returns 1 when they agree or
- * t lies within tol of a span end (where either answer is right). */
-static int sample(const csg_tree *t, const csg_ray *ray, span_list s, double t_s,
-                  double tol, property_stats *st)
+/* Compares the span list at t with the generator's tree (root `root`)
+ * and, when with_inside, csg_inside with
+ * that tree too. Returns 1 when the span list agrees, t lies within tol of
+ * a span end (where either answer is right) or the oracle has no answer
+ * there. */
+static int sample(const gen *g, const tree_ray *rays, uint32_t root, const csg_tree *t,
+                  const csg_ray *ray, span_list s, double t_s, double tol,
+                  int with_inside, property_stats *st)
 {
     int in_span = 0;
     double nearest = INFINITY;
@@ -899,17 +1799,24 @@ static int sample(const csg_tree *t, const csg_ray *ray, span_list s, double t_s
         st->skipped++;
         return 1;
     }
+    int want = tree_member(g, rays, root, t_s);
+    if (want < 0) {
+        st->undecided++;
+        return 1;
+    }
     st->samples++;
-    return csg_inside(t, v3_madd(ray->o, ray->d, t_s)) == in_span;
+    if (with_inside && csg_inside(t, v3_madd(ray->o, ray->d, t_s)) != want)
+        st->inside_mismatches++;
+    return want == in_span;
 }
 
 static void report_disagreement(const csg_tree *t, const csg_ray *ray, span_list s,
-                                double t_s, uint64_t seed, long tree_index)
+                                double t_s, int want, uint64_t seed, long tree_index)
 {
     print_error("tree %ld (seed %#llx): ray o = (%.17g %.17g %.17g) d = (%.17g %.17g "
-                "%.17g) [%g, %g]: csg_inside at t = %.17g is %d; spans:",
+                "%.17g) [%g, %g]: at t = %.17g the oracle says %d, csg_inside %d; spans:",
                 tree_index, (unsigned long long)seed, ray->o.x, ray->o.y, ray->o.z,
-                ray->d.x, ray->d.y, ray->d.z, ray->tmin, ray->tmax, t_s,
+                ray->d.x, ray->d.y, ray->d.z, ray->tmin, ray->tmax, t_s, want,
                 csg_inside(t, v3_madd(ray->o, ray->d, t_s)));
     for (uint32_t i = 0; i < s.n; i++)
         print_error(" [%.17g (leaf %u part %u), %.17g (leaf %u part %u)]", s.v[i].in.t,
@@ -963,10 +1870,26 @@ static csg_ray random_ray(rng *r, const csg_tree *t)
     return ray;
 }
 
+/* The even grid of samples along each ray: a span of more than 1/GRID of
+ * the ray's stretch in the bounds holds a grid point; thinner ones are
+ * found by the samples beside every leaf's crossings. */
+enum { GRID = 256 };
+
+/* Room for the leaf crossings of one ray: a wide tree has about 300
+ * leaves, and a ray through the boxes of all of them meets each a few
+ * times (a mesh up to 2 * 32, an outline a few dozen). */
+enum { NEAR_CAP = 1 << 14 };
+
 static void test_random_trees(void **state)
 {
     (void)state;
-    const long tree_count = 250, rays_per_tree = 440;
+    /* 130 rays a tree. Each ray now gets about 330 samples (the grid's
+     * 256 and 3 for each of about 26 leaf crossings) instead of about 9, and
+     * CI runs the test in the sanitizer build too, where a ray's spans take
+     * about 1 ms and its samples about 0.45 ms: 440 rays a tree took 107 s
+     * there, 130 take about 50 s on a loaded machine (and about 7 s in a
+     * release build), leaving room under a minute. */
+    const long tree_count = 250, rays_per_tree = 130;
     property_stats st = {0};
     arena scratch, brute;
     arena_init(&scratch, 0);
@@ -974,15 +1897,21 @@ static void test_random_trees(void **state)
     uint32_t kinds = 0;
     clock_t start = clock();
     rng rays = {0x853c49e6748fea9bULL};
+    oracle_leaf *oleaves = malloc(ORACLE_LEAVES * sizeof *oleaves);
+    oracle_node *onodes = malloc(ORACLE_NODES * sizeof *onodes);
+    uint32_t *okids = malloc(ORACLE_NODES * sizeof *okids);
+    tree_ray tray = {malloc(ORACLE_LEAVES * sizeof *tray.leaves),
+                     malloc(ORACLE_NODES * sizeof *tray.nodes)};
+    assert_true(oleaves && onodes && okids && tray.leaves && tray.nodes);
     for (long ti = 0; ti < tree_count; ti++) {
         uint64_t seed =
             0x9e3779b97f4a7c15ULL * (uint64_t)(ti + 1) ^ 0xda942042e4dd58b5ULL;
-        gen g = {{seed}, csg_builder_new(), 0, 0};
+        gen g = {{seed}, csg_builder_new(), 0, 0, oleaves, onodes, okids, 0, 0, 0};
         assert_non_null(g.b);
         affine id = affine_identity();
         /* Every fifth tree is wide, to exercise the BVHs. */
-        uint32_t root = ti % 5 == 4 ? random_wide(&g) : random_node(&g, &id, 0);
-        csg_tree *t = finish(g.b, root);
+        made root = ti % 5 == 4 ? random_wide(&g) : random_node(&g, &id, 0);
+        csg_tree *t = finish(g.b, root.id);
         st.bvh_nodes += t->bvh_node_count;
         kinds |= g.kinds_used;
         st.trees++;
@@ -1037,22 +1966,31 @@ static void test_random_trees(void **state)
             st.rays_with_spans += s.n > 0;
             if (!list_is_well_formed(t, &ray, s)) {
                 st.bad_lists++;
-                report_disagreement(t, &ray, s, NAN, seed, ti);
+                report_disagreement(t, &ray, s, NAN, -1, seed, ti);
             }
             if (!first_hit_agrees(t, &ray, s, &scratch))
                 st.bad_first_hits++;
-            span_list ref = brute_spans(t, &ray, &brute);
+            /* Every leaf's own crossings, from its span code and from the
+             * oracle's, to sample near. */
+            t_list near = {arena_alloc(&scratch, NEAR_CAP * sizeof(double)), 0, NEAR_CAP,
+                           c0, c1};
+            assert_non_null(near.v);
+            span_list ref = brute_spans(t, &ray, &brute, &near);
+            tree_ray_set(&g, &ray, &scratch, &tray);
+            for (uint32_t k = 0; k < g.oleaf_count; k++)
+                leaf_crossings(&g.oleaves[k], &tray.leaves[k], &near);
             if (!same_lists(s, ref)) {
                 st.culling_mismatches++;
                 if (st.culling_mismatches <= 3) {
                     print_error("culling changed the answer:\n");
-                    report_disagreement(t, &ray, s, NAN, seed, ti);
-                    report_disagreement(t, &ray, ref, NAN, seed, ti);
+                    report_disagreement(t, &ray, s, NAN, -1, seed, ti);
+                    report_disagreement(t, &ray, ref, NAN, -1, seed, ti);
                 }
             }
 
-            /* Samples: the middle of every span and gap, 2 tol inside and
-             * outside every end, and random points. */
+            /* Samples from the answer: the middle of every span and gap,
+             * 2 tol inside and outside every end, and random points; at
+             * these csg_inside is compared with the oracle too. */
             double ts[64];
             int nt = 0;
             double prev = c0;
@@ -1069,13 +2007,33 @@ static void test_random_trees(void **state)
             ts[nt++] = 0.5 * (prev + c1);
             for (int k = 0; k < 4; k++)
                 ts[nt++] = uniform_in(&rays, c0, c1);
-            for (int k = 0; k < nt; k++) {
-                if (!(ts[k] >= c0 && ts[k] <= c1))
+            /* Samples that do not depend on the answer: an even grid over
+             * [c0, c1], and 2 tol either side of every leaf surface found
+             * above and midway between consecutive ones. */
+            qsort(near.v, near.n, sizeof *near.v, compare_doubles);
+            uint32_t total = (uint32_t)nt + GRID + 3 * near.n;
+            double *all = arena_alloc(&scratch, total * sizeof *all);
+            assert_non_null(all);
+            memcpy(all, ts, (size_t)nt * sizeof *all);
+            uint32_t na = (uint32_t)nt;
+            for (int k = 0; k < GRID; k++)
+                all[na++] = c0 + (c1 - c0) * (k + 0.5) / GRID;
+            for (uint32_t i = 0; i < near.n; i++) {
+                all[na++] = near.v[i] - 2 * tol;
+                all[na++] = near.v[i] + 2 * tol;
+                all[na++] = 0.5 * (near.v[i] + (i + 1 < near.n ? near.v[i + 1] : c1));
+            }
+            st.near_surface += near.n;
+            for (uint32_t k = 0; k < na; k++) {
+                if (!(all[k] >= c0 && all[k] <= c1))
                     continue;
-                if (!sample(t, &ray, s, ts[k], tol, &st)) {
+                if (!sample(&g, &tray, root.node, t, &ray, s, all[k], tol,
+                            k < (uint32_t)nt, &st)) {
                     st.disagreements++;
                     if (st.disagreements <= 5)
-                        report_disagreement(t, &ray, s, ts[k], seed, ti);
+                        report_disagreement(t, &ray, s, all[k],
+                                            tree_member(&g, &tray, root.node, all[k]),
+                                            seed, ti);
                 }
             }
             arena_reset(&scratch);
@@ -1086,19 +2044,29 @@ static void test_random_trees(void **state)
     double seconds = (double)(clock() - start) / CLOCKS_PER_SEC;
     arena_free(&scratch);
     arena_free(&brute);
-    print_message("random trees: %ld trees (%ld leaves, depth up to %u), %ld rays "
-                  "(%ld missing the bounds, %ld with spans, %ld spans), %ld samples (%ld "
-                  "within tolerance of an "
-                  "end), %ld disagreements, %ld bad lists, %ld bad first hits, %ld "
-                  "culling mismatches, %ld BVH nodes, %.2f s\n",
-                  st.trees, st.leaves, st.max_depth, st.rays, st.misses,
-                  st.rays_with_spans, st.spans, st.samples, st.skipped, st.disagreements,
-                  st.bad_lists, st.bad_first_hits, st.culling_mismatches, st.bvh_nodes,
-                  seconds);
+    free(oleaves);
+    free(onodes);
+    free(okids);
+    free(tray.leaves);
+    free(tray.nodes);
+    print_message(
+        "random trees: %ld trees (%ld leaves, kinds %#x of %#x, depth up to %u), "
+        "%ld rays (%ld missing the bounds, %ld with spans, %ld spans, %ld leaf "
+        "crossings), %ld samples (%ld within tolerance of an end, %ld on a "
+        "surface to rounding), %ld disagreements, %ld csg_inside mismatches, "
+        "%ld bad lists, %ld bad first hits, %ld culling mismatches, %ld BVH "
+        "nodes, %.2f s\n",
+        st.trees, st.leaves, kinds, (1u << PRIM_KIND_COUNT) - 1, st.max_depth, st.rays,
+        st.misses, st.rays_with_spans, st.spans, st.near_surface, st.samples, st.skipped,
+        st.undecided, st.disagreements, st.inside_mismatches, st.bad_lists,
+        st.bad_first_hits, st.culling_mismatches, st.bvh_nodes, seconds);
+    /* Every kind was built (the mask is of the leaves made, not asked for). */
     assert_int_equal(kinds, (1u << PRIM_KIND_COUNT) - 1);
-    assert_true(st.rays >= 100000);
+    /* Only a tree whose solid is empty gets no rays. */
+    assert_true(st.rays > tree_count * rays_per_tree / 2);
     assert_true(st.rays_with_spans > st.rays / 4);
     assert_int_equal(st.disagreements, 0);
+    assert_int_equal(st.inside_mismatches, 0);
     assert_int_equal(st.bad_lists, 0);
     assert_int_equal(st.bad_first_hits, 0);
     assert_int_equal(st.culling_mismatches, 0);
@@ -1142,7 +2110,7 @@ static void test_bounds_culling(void **state)
         if (i % 3 == 0)
             d = v3(0, uniform_in(&r, -1, 1), uniform_in(&r, -1, 1)); /* d.x = 0 */
         csg_ray ray = {o, d, uniform_in(&r, -20, 0), uniform_in(&r, 0, 20)};
-        span_list s, want = brute_spans(t, &ray, &ref);
+        span_list s, want = brute_spans(t, &ray, &ref, NULL);
         assert_true(csg_spans(t, &ray, &scratch, &s));
         assert_true(same_lists(s, want));
         double t0 = ray.tmin, t1 = ray.tmax;
