@@ -38,12 +38,14 @@
  *   by DELTA moves in the image by at most K(t) = DELTA / f(t) pixels.
  *   mask: a mismatch is a pixel between the two silhouettes. Every
  *   mismatch must lie within ceil(K) + 1 pixels of a silhouette edge of
- *   the reference (the 1: rasterisation; near_silhouette adds it), K at
- *   the depth of the side that hits there. Their number is at most the
- *   area of that band, sum over the reference's contour pixels b (pixels
- *   with a 4-neighbour of the other kind, about two per pixel of contour
- *   length, one each side) of ceil(K_b) + 1, K_b at the nearest hit's
- *   depth: the band holds 2 ceil(K) + 1 pixels across per pixel of length.
+ *   either image (the 1: rasterisation; near_silhouette adds it), K at the
+ *   depth of the side that hits there: of either, since a feature thinner
+ *   than a pixel on the mesh's side may have no silhouette there at all.
+ *   Their number is at most the area of that band, the sum over the
+ *   contour pixels b of either image (pixels with a 4-neighbour of the
+ *   other kind, about two per pixel of contour length, one each side) of
+ *   ceil(K_b) + 1, K_b at the nearest hit's depth: the band holds
+ *   2 ceil(K) + 1 pixels across per pixel of length.
  *   depth: where both hit, let F be the reference's facet (normal n,
  *   incidence cos theta_m = --cos) and S the exact surface near the hit.
  *   Over F and its neighbours S's normal is within beta = 3 GAMMA of n
@@ -278,9 +280,12 @@ static double hit_depth(const images *im, int i, int j)
     double t = INFINITY;
     for (int k = 0; k < 4; k++) {
         int x = i + nb[k][0], y = j + nb[k][1];
-        if (x >= 0 && y >= 0 && x < im->ref_mask.width && y < im->ref_mask.height &&
-            hit(&im->ref_mask, x, y))
+        if (x < 0 || y < 0 || x >= im->ref_mask.width || y >= im->ref_mask.height)
+            continue;
+        if (hit(&im->ref_mask, x, y))
             t = fmin(t, at(&im->ref_depth, x, y));
+        if (hit(&im->mask, x, y))
+            t = fmin(t, at(&im->depth, x, y));
     }
     return t;
 }
@@ -296,7 +301,8 @@ static int judge_exact(const images *im, const exact_bound *b, counts *c)
         for (int j = 0; j < h; j++) {
             for (int i = 0; i < w; i++) {
                 size_t p = (size_t)j * (size_t)w + (size_t)i;
-                silhouette[p] = (unsigned char)near_silhouette(&im->ref_mask, i, j);
+                silhouette[p] = (unsigned char)(near_silhouette(&im->ref_mask, i, j) ||
+                                                near_silhouette(&im->mask, i, j));
                 edge[p] = (unsigned char)(hit(&im->ref_mask, i, j) &&
                                           hit(&im->mask, i, j) && is_edge(im, i, j));
             }
@@ -315,17 +321,18 @@ static int judge_exact(const images *im, const exact_bound *b, counts *c)
     static const int nb[4][2] = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}};
     for (int j = 0; j < h; j++) {
         for (int i = 0; i < w; i++) {
-            int ref_hit = hit(&im->ref_mask, i, j);
+            int ref_hit = hit(&im->ref_mask, i, j), our_hit = hit(&im->mask, i, j);
             for (int k = 0; k < 4; k++) {
                 int x = i + nb[k][0], y = j + nb[k][1];
                 if (x >= 0 && y >= 0 && x < w && y < h &&
-                    hit(&im->ref_mask, x, y) != ref_hit) {
+                    (hit(&im->ref_mask, x, y) != ref_hit ||
+                     hit(&im->mask, x, y) != our_hit)) {
                     band +=
                         (double)pixels_for(b, i, j, hit_depth(im, i, j), b->delta) + 1;
                     break;
                 }
             }
-            if (ref_hit != hit(&im->mask, i, j)) {
+            if (ref_hit != our_hit) {
                 c->mismatches++;
                 long k = pixels_for(b, i, j, hit_depth(im, i, j), b->delta);
                 if (!any_within(silhouette_sat, w, h, i, j, k) && c->far++ < 5)
