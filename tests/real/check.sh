@@ -8,18 +8,24 @@
 #      cached in BUILD_DIR/tests/real/cache under the .csg's checksum (the
 #      outcome too: a timeout or OpenSCAD's error is not retried until the
 #      .csg or the limit changes);
-#   3. spancast render in exact mode, then in --faithful mode with mask and
-#      depth, on the camera fitcam frames from the STL (spancast's default
-#      camera when there is no STL);
+#   3. spancast render in exact mode, then in --faithful mode, each with
+#      mask and depth, on the camera fitcam frames from the STL (spancast's
+#      default camera when there is no STL);
 #   4. the cross-check of tests/crosscheck: refcast casts the same rays into
 #      the STL and compare judges the faithful mask and depth against them
 #      (faithful rules: at most 0.05 % mask mismatches, all on silhouettes;
-#      relative depth error at most 1e-5).
+#      relative depth error at most 1e-5);
+#   5. the exact render against the same rays, within the chord-error bound
+#      tests/crosscheck/chord.py derives from the .csg (compare's exact
+#      rules; the faithful rules when the model has no curved leaf), or,
+#      when no bound is derived, the reason.
 # Writes WORKDIR/row, one tab-separated line: model, leaves, nodes, exact,
 # exact seconds, faithful, faithful seconds, cgal, cgal seconds, verdict,
-# mask mismatches, max depth error, reason (the first failure's message).
-# Exits 0 when both renders succeed and the cross-check matches, 1
-# otherwise, 2 on bad usage.
+# mask mismatches, max depth error, exact verdict (match, MISMATCH,
+# unbounded or -), its max depth error over the bound, reason (the first
+# failure's message; for a model that passes without an exact bound, why).
+# Exits 0 when both renders succeed, the faithful cross-check matches and
+# the exact one matches or has no bound, 1 otherwise, 2 on bad usage.
 set -uo pipefail
 if (($# < 4 || $# > 6)); then
     echo "usage: check.sh BUILD_DIR MODEL.csg WORKDIR W,H [CGAL_TIMEOUT [RENDER_TIMEOUT]]" >&2
@@ -30,6 +36,7 @@ cgal_limit=${5:-120} render_limit=${6:-120}
 spancast=$build/spancast
 refcast=$build/tests/reference/refcast
 compare=$build/tests/crosscheck/crosscheck_compare
+chord=$(cd "$(dirname "${BASH_SOURCE[0]}")/../crosscheck" && pwd)/chord.py
 fitcam=$build/tests/real/fitcam
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
 csg=$(cd "$(dirname "$csg")" && pwd)/$(basename "$csg")
@@ -115,7 +122,7 @@ render() {
         eval "${label}=FAIL"
     fi
 }
-render exact
+render exact --mask="$work/exact_mask.png" --depth="$work/exact_depth.exr"
 render faithful --faithful --mask="$work/faithful_mask.png" --depth="$work/faithful_depth.exr"
 
 # 4. The cross-check, whenever the faithful render and the mesh exist.
@@ -128,7 +135,7 @@ elif [[ $cgal != ok ]]; then
 elif [[ -z "${camera:-}" ]]; then
     judged="$(cat "$work/fitcam.log")"
 elif ! "$refcast" "$stl" "${view[@]}" --mask="$work/ref_mask.png" \
-    --depth="$work/ref_depth.exr" 2>"$work/refcast.log"; then
+    --depth="$work/ref_depth.exr" --cos="$work/ref_cos.exr" 2>"$work/refcast.log"; then
     judged="refcast: $(head -n 1 "$work/refcast.log")"
 elif row=$("$compare" "$work/ref_mask.png" "$work/ref_depth.exr" \
     "$work/faithful_mask.png" "$work/faithful_depth.exr" 2>"$work/compare.log"); then
@@ -140,14 +147,39 @@ else
     judged=$(grep -m 1 -E 'mismatches|tolerance' "$work/compare.log" ||
         head -n 1 "$work/compare.log")
 fi
-# The reason: the exact render's error first, else the cross-check's.
+# 5. The exact cross-check, whenever the exact render and the reference
+# images exist (refcast ran when the verdict is match or MISMATCH).
+exact_verdict=- exact_err=- exact_judged= note=
+if [[ $exact == ok && $verdict != - ]]; then
+    bound=$(python3 "$chord" "$csg" 2>"$work/chord.log") || bound="none chord.py failed"
+    exact_view=()
+    [[ $bound == "0 0" ]] ||
+        exact_view=(--exact="${bound/ /,}" --cos="$work/ref_cos.exr" --camera="$camera")
+    if [[ $bound == none* ]]; then
+        exact_verdict=unbounded
+        note="exact not checked: ${bound#none }"
+    elif row=$("$compare" "$work/ref_mask.png" "$work/ref_depth.exr" \
+        "$work/exact_mask.png" "$work/exact_depth.exr" "${exact_view[@]}" \
+        2>"$work/compare_exact.log"); then
+        exact_verdict=match
+        read -r _ _ _ exact_err _ <<<"$row"
+    else
+        exact_verdict=MISMATCH
+        read -r _ _ _ exact_err _ <<<"$row"
+        exact_judged="exact: $(grep -m 1 -E 'mismatches|tolerance' "$work/compare_exact.log" ||
+            head -n 1 "$work/compare_exact.log")"
+    fi
+fi
+# The reason: the exact render's error first, else the cross-checks'.
 if [[ $exact != ok ]]; then
     reason=$(first_error "$work/exact.log")
     [[ -n "$reason" ]] || reason="spancast exit status $exact_rc: $(tail -n 1 "$work/exact.log")"
 else
-    reason=$judged
+    reason=${judged:-${exact_judged:-$note}}
 fi
-printf '%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\n' "$model" "$leaves" "$nodes" \
-    "$exact" "$exact_seconds" "$faithful" "$faithful_seconds" "$cgal" "$cgal_seconds" \
-    "$verdict" "${mismatches:--}" "${max_err:--}" "$reason" | tee "$work/row"
-[[ $verdict == match && $exact == ok ]]
+printf '%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\n' "$model" "$leaves" \
+    "$nodes" "$exact" "$exact_seconds" "$faithful" "$faithful_seconds" "$cgal" \
+    "$cgal_seconds" "$verdict" "${mismatches:--}" "${max_err:--}" "$exact_verdict" \
+    "${exact_err:--}" "$reason" | tee "$work/row"
+[[ $verdict == match && $exact == ok && ($exact_verdict == match ||
+    $exact_verdict == unbounded) ]]

@@ -2,7 +2,6 @@
 // square and an overlapping triangle, rotated and mirrored: polygons only,
 // so the exact solid is the mesh's.
 // camera: -30,-55,60,2,1,0
-// exact: same
 rotate([0, 0, 20]) linear_extrude(height = 5, center = true)
     polygon(points = [[0, 0], [20, 0], [20, 14], [10, 20], [0, 14],
                       [5, 4], [15, 4], [15, 12], [5, 12]],

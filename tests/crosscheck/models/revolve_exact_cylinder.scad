@@ -3,5 +3,4 @@
 // sweeps the wall, the level ones the caps, and the edge on the axis
 // nothing, checked against the mesh within the tessellation's bound.
 // camera: 9,-12,10,0,0,2.5
-// exact: cylinder,3,128
 rotate_extrude($fn = 128) square([3, 5]);
