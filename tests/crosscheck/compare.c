@@ -46,8 +46,8 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "render/image_read.h"
-#include "scene/faithful.h"
+#include "formats/image_read.h"
+#include "model/faithful.h"
 
 typedef struct images {
     image_data ref_mask, ref_depth, mask, depth, ref_cos;
