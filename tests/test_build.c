@@ -1,4 +1,4 @@
-/* Tests of the scene builder and the scene API (src/scene/build.c,
+/* Tests of the scene builder and the scene API (src/build/build.c,
  * colors.c, scene.c): the meaning of every node OpenSCAD writes, the
  * modifiers, colours, transforms (singular and malformed), convex, open and
  * non-convex polyhedra, empty primitives, deep nesting, file loading, and
@@ -15,8 +15,8 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "scene/build.h"
-#include "scene/scene.h"
+#include "build/build.h"
+#include "build/scene.h"
 
 static sc_scene *load(const char *text)
 {

@@ -15,8 +15,8 @@
 #include <string.h>
 #include <sys/stat.h>
 
-#include "scene/build.h"
-#include "scene/scene.h"
+#include "build/build.h"
+#include "build/scene.h"
 #include "test_util.h"
 
 static sc_scene *load_opts(const char *name, const char *text, int faithful)

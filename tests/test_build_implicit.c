@@ -1,4 +1,4 @@
-/* Tests of the torus, quadric and implicit nodes (src/scene/
+/* Tests of the torus, quadric and implicit nodes (src/build/
  * build_implicit.c): what each builds (membership through csg_inside),
  * positional and named arguments, defaults, every error and warning
  * message exactly, and the position of an expression's syntax error
@@ -14,9 +14,9 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "build/build.h"
+#include "build/scene.h"
 #include "implicit/solve.h"
-#include "scene/build.h"
-#include "scene/scene.h"
 
 static sc_scene *load(const char *text)
 {

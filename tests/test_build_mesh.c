@@ -1,4 +1,4 @@
-/* Tests of the mesh builder (src/scene/build_mesh.c): non-convex polyhedra
+/* Tests of the mesh builder (src/build/build_mesh.c): non-convex polyhedra
  * become mesh leaves with the right solid, convex ones keep the planes,
  * either winding is taken, open and inconsistently wound meshes are errors
  * naming an edge, import reads ASCII STL, binary STL and OFF files
@@ -15,8 +15,8 @@
 #include <string.h>
 #include <sys/stat.h>
 
-#include "scene/build.h"
-#include "scene/scene.h"
+#include "build/build.h"
+#include "build/scene.h"
 
 static sc_scene *load_with(const char *name, const char *text, int faithful)
 {

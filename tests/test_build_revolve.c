@@ -1,4 +1,4 @@
-/* Tests of the rotate_extrude builder (src/scene/build_revolve.c): the
+/* Tests of the rotate_extrude builder (src/build/build_revolve.c): the
  * solid each profile makes (tube, torus, cone, partial and negative
  * angles, profiles at x < 0, transforms, holes, several children), the
  * leaf kind in each mode, OpenSCAD's fragment counts and caps in faithful
@@ -16,10 +16,10 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "build/build.h"
+#include "build/scene.h"
 #include "csg/prim_mesh.h"
 #include "csg/prim_revolve.h"
-#include "scene/build.h"
-#include "scene/scene.h"
 #include "test_util.h"
 
 static sc_scene *load_mode(const char *text, int faithful)

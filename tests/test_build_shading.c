@@ -1,4 +1,4 @@
-/* Tests of the shading nodes (src/scene/build_shading.c): light, material,
+/* Tests of the shading nodes (src/build/build_shading.c): light, material,
  * camera and background as the builder reads them into the scene's shading
  * record, the materials leaves get, how material() and color() nest (the
  * inner one wins), and the exact messages of bad arguments.
@@ -12,7 +12,7 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "scene/scene.h"
+#include "build/scene.h"
 #include "spancast/spancast.h"
 
 static sc_scene *load(const char *text)

@@ -1,4 +1,4 @@
-/* Tests of text() (src/scene/build_text.c): OpenSCAD's layout (kerning,
+/* Tests of text() (src/build/build_text.c): OpenSCAD's layout (kerning,
  * alignment, size scaling, spacing), the outline prism of real glyphs
  * against its own membership, faithful polygons that lie on the exact
  * curves, and the builder's messages for bad arguments and missing
@@ -14,12 +14,12 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "build/build.h"
+#include "build/build_text.h"
+#include "build/scene.h"
 #include "csg/csg.h"
 #include "csg/prim_outline.h"
-#include "scene/build.h"
-#include "scene/build_text.h"
-#include "scene/parse.h"
-#include "scene/scene.h"
+#include "syntax/parse.h"
 #include "test_util.h"
 
 /* ---- layout through text_shape_build ---- */

@@ -1,4 +1,4 @@
-/* Tests of the DXF reader (src/twod/dxf.c) and of import("x.dxf") in the
+/* Tests of the DXF reader (src/formats/dxf.c) and of import("x.dxf") in the
  * 2D engine: a hand-written drawing with LINE, LWPOLYLINE, CIRCLE, ARC and
  * an INSERT of a block, each on its own layer, gives the areas computed by
  * hand (points snapped to OpenSCAD's 2^-10 grid); the layer filter, origin
@@ -17,10 +17,10 @@
 #include <string.h>
 #include <sys/stat.h>
 
-#include "scene/parse.h"
-#include "scene/scene.h"
-#include "twod/dxf.h"
-#include "twod/twod.h"
+#include "build/build_twod.h"
+#include "build/scene.h"
+#include "formats/dxf.h"
+#include "syntax/parse.h"
 
 /* Layers: "sq" a 10 x 10 square of four LINEs in scrambled order and
  * direction with a CIRCLE of radius 2 inside; "poly" a closed LWPOLYLINE
@@ -402,7 +402,7 @@ static sc_status import_region(const char *csg, twod_region *r, char *message,
     assert_int_equal(parse_text(file, csg, strlen(csg), &tree, &e), SC_OK);
     build_ctx c = {file, NULL, &e, 1, NULL};
     twod_init(r);
-    sc_status st = twod_from_children(&c, tree->first, r);
+    sc_status st = build_twod_children(&c, tree->first, r);
     if (st != SC_OK) {
         /* the work folder's path is not part of the expected text */
         char full[1200];

@@ -21,7 +21,7 @@
 #include <string.h>
 #include <sys/stat.h>
 
-#include "render/image_read.h"
+#include "formats/image_read.h"
 
 #ifndef SPANCAST_BINARY
 #error "SPANCAST_BINARY must name the spancast executable"

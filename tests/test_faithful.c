@@ -1,4 +1,4 @@
-/* Tests of faithful mode (src/scene/faithful.c and its use by the builder):
+/* Tests of faithful mode (src/model/faithful.c and its use by the builder):
  * OpenSCAD 2021.01's fragment-count rule on a table of cases worked out by
  * hand from the rule, its degree trigonometry, and the plane sets of
  * spheres and cylinders checked against vertices computed here from the
@@ -18,8 +18,8 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "scene/faithful.h"
-#include "scene/scene.h"
+#include "build/scene.h"
+#include "model/faithful.h"
 
 static const double pi = 3.14159265358979323846;
 

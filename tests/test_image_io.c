@@ -1,4 +1,4 @@
-/* Tests of image output (src/render/image_io.cpp).
+/* Tests of image output (src/formats/image_io.cpp).
  *
  * Each writer's file is read back through OpenImageIO (render/image_read.h)
  * and compared with the framebuffer; depth keeps +inf. The failure cases
@@ -24,9 +24,9 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
-#include "render/color.h"
-#include "render/image_io.h"
-#include "render/image_read.h"
+#include "formats/color.h"
+#include "formats/image_io.h"
+#include "formats/image_read.h"
 #include "spancast/spancast.h"
 
 #ifndef SPANCAST_TEST_WORK

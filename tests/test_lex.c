@@ -1,4 +1,4 @@
-/* Tests of the .csg lexer (src/scene/lex.c): every token kind with its
+/* Tests of the .csg lexer (src/syntax/lex.c): every token kind with its
  * value and position, OpenSCAD's string escapes, comments, and every lexer
  * error message, exactly. */
 #include <setjmp.h>
@@ -10,7 +10,7 @@
 #include <math.h>
 #include <string.h>
 
-#include "scene/lex.h"
+#include "syntax/lex.h"
 
 typedef struct lexed {
     arena mem;

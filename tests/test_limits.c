@@ -18,10 +18,10 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "build/build.h"
 #include "render/render.h"
-#include "scene/build.h"
-#include "scene/lex.h"
-#include "scene/parse.h"
+#include "syntax/lex.h"
+#include "syntax/parse.h"
 
 /* Loads text; returns its status and the formatted error in buf. */
 static sc_status load(const char *text, size_t length, char *buf, size_t size)

@@ -1,4 +1,4 @@
-/* Tests of the .csg parser (src/scene/parse.c): the syntax tree (names,
+/* Tests of the .csg parser (src/syntax/parse.c): the syntax tree (names,
  * modifiers, named and positional arguments, nested vectors, children,
  * positions), argument lookup, the nesting limits, and every parser error
  * message, exactly. */
@@ -12,7 +12,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "scene/parse.h"
+#include "syntax/parse.h"
 
 static parse_tree *parse_ok(const char *text)
 {

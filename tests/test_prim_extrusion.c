@@ -1,5 +1,5 @@
 /* Tests of the extrusion leaf (src/csg/prim_extrusion.c) and of the exact
- * linear_extrude builder (src/scene/build_region.c): hits worked out by
+ * linear_extrude builder (src/build/build_region.c): hits worked out by
  * hand (a circle's wall, a square's slab, a hole, a polygon with a hole, an
  * ellipse, vertical and horizontal rays, normals of walls, subtracted walls
  * and caps), a sampled check of spans against prim_inside on seeded random
@@ -20,9 +20,9 @@
 
 #include <cmocka.h>
 
+#include "build/scene.h"
 #include "csg/csg.h"
 #include "csg/prim_extrusion.h"
-#include "scene/scene.h"
 #include "test_util.h"
 
 static const double PI = 3.14159265358979323846;

@@ -16,9 +16,9 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "render/color.h"
+#include "build/scene.h"
+#include "formats/color.h"
 #include "render/render.h"
-#include "scene/scene.h"
 
 typedef struct sphere_scene {
     vec3 center;

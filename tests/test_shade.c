@@ -23,7 +23,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "render/color.h"
+#include "formats/color.h"
 #include "render/render.h"
 #include "spancast/spancast.h"
 

@@ -27,10 +27,10 @@
 size_t __sanitizer_get_current_allocated_bytes(void);
 #endif
 
+#include "build/scene.h"
 #include "csg/csg.h"
 #include "render/camera.h"
 #include "render/stability.h"
-#include "scene/scene.h"
 #include "test_util.h"
 
 #define IMAGE 32 /* pixels per side of the harness images */

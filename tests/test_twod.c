@@ -1,5 +1,5 @@
 /* Tests of the 2D engine (src/twod/) and of OpenSCAD's twisted and scaled
- * linear_extrude (src/scene/build_extrude_faithful.c): areas of booleans,
+ * linear_extrude (src/build/build_extrude_faithful.c): areas of booleans,
  * offsets, hulls and Minkowski sums against hand-computed values, the
  * orientation of outlines and holes, OpenSCAD's even-odd polygons, exact
  * error messages and limits; extrusions are closed meshes whose volume is
@@ -17,11 +17,11 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "build/build_extrude_faithful.h"
+#include "build/build_twod.h"
+#include "build/scene.h"
 #include "csg/prim_mesh.h"
-#include "scene/build_extrude_faithful.h"
-#include "scene/parse.h"
-#include "scene/scene.h"
-#include "twod/twod.h"
+#include "syntax/parse.h"
 #include "test_util.h"
 
 /* The region of the children of the first node of text ("group() {...}"),
@@ -34,7 +34,7 @@ static sc_status region_of(const char *text, twod_region *r, char *error, size_t
     assert_int_equal(st, SC_OK);
     build_ctx c = {"m.csg", NULL, &e, 1, NULL};
     twod_init(r);
-    st = twod_from_children(&c, tree->first, r);
+    st = build_twod_children(&c, tree->first, r);
     if (st != SC_OK)
         sc_error_format(&e, error, size);
     parse_tree_free(tree);

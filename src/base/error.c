@@ -57,3 +57,8 @@ const char *sc_error_format(const sc_error *error, char *buf, size_t size)
         snprintf(buf, size, "error: %s", error->message);
     return buf;
 }
+
+sc_status err_nomem(sc_error *error, const sc_location *loc)
+{
+    return err_set(error, SC_ERR_NOMEM, loc, "out of memory");
+}

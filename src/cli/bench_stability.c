@@ -37,9 +37,9 @@
 #include <string.h>
 #include <time.h>
 
+#include "build/scene.h"
 #include "cli/bench.h"
 #include "render/stability.h"
-#include "scene/scene.h"
 
 typedef struct row {
     char name[96];

@@ -48,7 +48,7 @@
 
 #include "cli/bench.h"
 #include "cli/scad.h"
-#include "render/image_io.h"
+#include "formats/image_io.h"
 #include "render/render.h"
 #include "render/shade.h"
 #include "spancast/spancast.h"

@@ -480,11 +480,11 @@ sc_status csg_builder_finish(csg_builder *b, uint32_t root, csg_tree **out,
 {
     *out = NULL;
     if (!b)
-        return err_set(error, SC_ERR_NOMEM, NULL, "out of memory");
+        return err_nomem(error, NULL);
     csg_tree *t = b->failed ? NULL : calloc(1, sizeof *t);
     if (!t) {
         csg_builder_free(b);
-        return err_set(error, SC_ERR_NOMEM, NULL, "out of memory");
+        return err_nomem(error, NULL);
     }
     t->mem = b->mem;
     memset(&b->mem, 0, sizeof b->mem);
@@ -492,7 +492,7 @@ sc_status csg_builder_finish(csg_builder *b, uint32_t root, csg_tree **out,
     csg_builder_free(b);
     if (!ok) {
         csg_tree_free(t);
-        return err_set(error, SC_ERR_NOMEM, NULL, "out of memory");
+        return err_nomem(error, NULL);
     }
     t->bounds = t->root == CSG_EMPTY ? bbox_empty() : t->nodes[t->root].bounds;
     t->scale = 1.0;

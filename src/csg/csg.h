@@ -1,6 +1,6 @@
 /* The compiled CSG tree and its ray queries.
  *
- * The scene builder (src/scene/) describes the solid through csg_builder:
+ * The scene builder (src/build/) describes the solid through csg_builder:
  * leaves (a primitive with its transform and colour) and boolean nodes over
  * node ids. csg_builder_finish freezes it into an immutable csg_tree: flat
  * node and leaf arrays, world bounds per node, the scene scale for

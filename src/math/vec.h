@@ -90,6 +90,29 @@ static inline int v3_is_finite(vec3 a)
     return isfinite(a.x) && isfinite(a.y) && isfinite(a.z);
 }
 
+/* ---- 2D affine maps ---- */
+
+/* A map of the plane as rows [a b tx; c d ty]: x' = a x + b y + tx,
+ * y' = c x + d y + ty (OpenSCAD's 2D children under a multmatrix). */
+typedef struct affine2 {
+    double m[2][3];
+} affine2;
+
+static inline affine2 affine2_identity(void)
+{
+    affine2 id = {{{1, 0, 0}, {0, 1, 0}}};
+    return id;
+}
+
+/* The image of (x, y) under m into (*ox, *oy); the outputs may be the
+ * inputs' variables. */
+static inline void affine2_apply(const affine2 *m, double x, double y, double *ox,
+                                 double *oy)
+{
+    *ox = m->m[0][0] * x + m->m[0][1] * y + m->m[0][2];
+    *oy = m->m[1][0] * x + m->m[1][1] * y + m->m[1][2];
+}
+
 /* ---- affine transforms ---- */
 
 affine affine_identity(void);

@@ -26,10 +26,10 @@
 
 #include "base/arena.h"
 #include "base/error.h"
+#include "build/scene.h"
 #include "render/camera.h"
 #include "render/sample.h"
 #include "render/shade.h"
-#include "scene/scene.h"
 
 void sc_render_options_init(sc_render_options *options)
 {
@@ -355,7 +355,7 @@ sc_status render_scene(const csg_tree *tree, const shading *look,
     stats->trace_seconds = seconds_now() - traced;
     if (out_of_memory) {
         sc_framebuffer_release(c.fb);
-        return err_set(error, SC_ERR_NOMEM, NULL, "out of memory");
+        return err_nomem(error, NULL);
     }
     if (options->cancel && *options->cancel) {
         sc_framebuffer_release(c.fb);

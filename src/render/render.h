@@ -9,7 +9,7 @@
 #define SPANCAST_RENDER_RENDER_H
 
 #include "csg/csg.h"
-#include "scene/shading.h"
+#include "model/shading.h"
 #include "spancast/spancast.h"
 
 #define RENDER_TILE_SIZE 16   /* tiles of 16 x 16 pixels are scheduled over threads */

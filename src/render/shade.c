@@ -18,7 +18,7 @@
 #include <string.h>
 
 #include "base/error.h"
-#include "render/color.h"
+#include "formats/color.h"
 #include "render/render.h"
 
 /* The default rig, as directions towards the lights in camera coordinates
@@ -58,7 +58,7 @@ sc_status shade_prepare(shade_scene *s, const csg_tree *tree, const shading *loo
     s->leaf_color = calloc((size_t)tree->leaf_count * 3 + 3, sizeof *s->leaf_color);
     if (!s->materials || !s->lights || !s->leaf_color) {
         shade_release(s);
-        return err_set(error, SC_ERR_NOMEM, NULL, "out of memory");
+        return err_nomem(error, NULL);
     }
     s->material_count = materials;
     for (uint32_t i = 0; i < materials; i++) {

@@ -41,9 +41,9 @@
 
 #include "base/arena.h"
 #include "csg/csg.h"
+#include "model/shading.h"
 #include "render/camera.h"
 #include "render/sample.h"
-#include "scene/shading.h"
 
 #define SHADE_CUTOFF 1e-3  /* rays carrying less of the pixel are not followed */
 #define SHADE_OFFSET 4.0   /* secondary ray origins, in units of the tolerance */

@@ -25,8 +25,8 @@
 #include <string.h>
 
 #include "base/error.h"
+#include "build/scene.h"
 #include "render/camera.h"
-#include "scene/scene.h"
 
 #define STAB_ULPS 64.0
 #define STAB_GRAZE 1e-3
@@ -193,7 +193,7 @@ sc_status stab_compare(const char *name, const char *text, const char *moved_tex
     char *wrapped = wrap(moved_text ? moved_text : text, x);
     if (!wrapped) {
         sc_scene_release(base);
-        return err_set(error, SC_ERR_NOMEM, NULL, "out of memory");
+        return err_nomem(error, NULL);
     }
     st = sc_scene_load_string(name, wrapped, strlen(wrapped), NULL, &moved, error);
     free(wrapped);

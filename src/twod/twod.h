@@ -1,5 +1,5 @@
 /* The 2D engine: regions in the plane, evaluated from OpenSCAD's 2D nodes
- * the way OpenSCAD 2021.01 evaluates them (twod_eval.c), with its
+ * the way OpenSCAD 2021.01 evaluates them (build/build_twod.c), with its
  * polygon clipper (Clipper 6.4, twod_clip.cpp).
  *
  * A region is a list of closed contours of double points. After
@@ -14,7 +14,7 @@
 
 #include <stdint.h>
 
-#include "scene/build_curved.h"
+#include "spancast/spancast.h"
 
 /* OpenSCAD's clipper grid: coordinates are scaled by 2^16 and truncated to
  * integers (ClipperUtils' CLIPPER_SCALE). */
@@ -74,20 +74,5 @@ int twod_clip_offset(const twod_region *in, double delta, twod_join join,
 /* OpenSCAD's 2D minkowski of count >= 2 regions (NULL entries are empty
  * children, which it skips after the first). out is replaced. */
 int twod_clip_minkowski(twod_region *const *children, uint32_t count, twod_region *out);
-
-/* ---- evaluation (twod_eval.c) ---- */
-
-/* The union of parent's 2D children, as OpenSCAD 2021.01 evaluates them:
- * circle, square, polygon, group/union/render/color, difference,
- * intersection, multmatrix (its xy part), offset, hull and minkowski.
- * '%' and '*' children are left out. out must be initialised; it is
- * replaced. Errors (bad arguments, nodes that are not 2D, limits) are set
- * at their position. */
-sc_status twod_from_children(const build_ctx *c, const parse_node *parent,
-                             twod_region *out);
-/* The region of the 2D node n itself (circle, offset, ...), evaluated the
- * same way; outer names the node that asked, for messages. */
-sc_status twod_from_node(const build_ctx *c, const parse_node *n, const char *outer,
-                         twod_region *out);
 
 #endif

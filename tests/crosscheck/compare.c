@@ -75,7 +75,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "render/image_read.h"
+#include "formats/image_read.h"
 
 #define PI 3.14159265358979323846
 

@@ -1,0 +1,186 @@
+/* Loading a scene: the public sc_scene_* calls.
+ *
+ * sc_scene_load reads the whole file into memory and hands it to
+ * sc_scene_load_string, which runs the two scene stages (parse, then build)
+ * and keeps only their result: the compiled CSG tree and the warnings. The
+ * syntax tree is freed as soon as the CSG tree exists. The scene owns a copy
+ * of the file name, which every source location in the tree points to.
+ */
+#include "build/scene.h"
+
+#include <errno.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "base/error.h"
+#include "build/build.h"
+#include "syntax/parse.h"
+
+void sc_load_options_init(sc_load_options *options)
+{
+    memset(options, 0, sizeof *options);
+}
+
+static char *copy_string(const char *s)
+{
+    size_t n = strlen(s);
+    char *c = malloc(n + 1);
+    if (c)
+        memcpy(c, s, n + 1);
+    return c;
+}
+
+sc_status sc_scene_load_string(const char *name, const char *text, size_t length,
+                               const sc_load_options *options, sc_scene **scene,
+                               sc_error *error)
+{
+    err_clear(error);
+    *scene = NULL;
+    if (!text && length)
+        return err_set(error, SC_ERR_ARGUMENT, NULL, "no text to load");
+    sc_scene *s = calloc(1, sizeof *s);
+    if (!s || !(s->path = copy_string(name ? name : "<string>"))) {
+        free(s);
+        return err_nomem(error, NULL);
+    }
+    parse_tree *syntax = NULL;
+    sc_status st = parse_text(s->path, text ? text : "", length, &syntax, error);
+    if (st == SC_OK)
+        st = build_scene(syntax, options && options->faithful, &s->tree, &s->look,
+                         &s->warnings, &s->warning_count, error);
+    parse_tree_free(syntax);
+    if (st != SC_OK) {
+        sc_scene_release(s);
+        return st;
+    }
+    *scene = s;
+    return SC_OK;
+}
+
+/* Reads a whole file into a malloc'd buffer. */
+static sc_status read_file(const char *path, char **text, size_t *length, sc_error *error)
+{
+    *text = NULL;
+    *length = 0;
+    FILE *f = fopen(path, "rb");
+    if (!f)
+        return err_set(error, SC_ERR_IO, NULL, "cannot open '%s': %s", path,
+                       strerror(errno));
+    size_t cap = 0, n = 0;
+    char *buf = NULL;
+    for (;;) {
+        if (n == cap) {
+            size_t next = cap ? cap * 2 : 64 * 1024;
+            char *p = next > cap ? realloc(buf, next) : NULL;
+            if (!p) {
+                free(buf);
+                fclose(f);
+                return err_nomem(error, NULL);
+            }
+            buf = p;
+            cap = next;
+        }
+        size_t got = fread(buf + n, 1, cap - n, f);
+        n += got;
+        if (got == 0) {
+            if (ferror(f)) {
+                int code = errno;
+                free(buf);
+                fclose(f);
+                return err_set(error, SC_ERR_IO, NULL, "cannot read '%s': %s", path,
+                               strerror(code));
+            }
+            break;
+        }
+    }
+    fclose(f);
+    *text = buf;
+    *length = n;
+    return SC_OK;
+}
+
+sc_status sc_scene_load(const char *path, const sc_load_options *options,
+                        sc_scene **scene, sc_error *error)
+{
+    err_clear(error);
+    *scene = NULL;
+    if (!path)
+        return err_set(error, SC_ERR_ARGUMENT, NULL, "no file name");
+    char *text;
+    size_t length;
+    sc_status st = read_file(path, &text, &length, error);
+    if (st != SC_OK)
+        return st;
+    st = sc_scene_load_string(path, text, length, options, scene, error);
+    free(text);
+    return st;
+}
+
+void sc_scene_release(sc_scene *scene)
+{
+    if (!scene)
+        return;
+    csg_tree_free(scene->tree);
+    shading_free(scene->look);
+    free(scene->path);
+    free(scene->warnings);
+    free(scene);
+}
+
+int sc_scene_bounds(const sc_scene *scene, double lo[3], double hi[3])
+{
+    const csg_tree *t = scene->tree;
+    if (!t || t->root == CSG_EMPTY || bbox_is_empty(&t->bounds)) {
+        for (int i = 0; i < 3; i++)
+            lo[i] = hi[i] = 0;
+        return 0;
+    }
+    lo[0] = t->bounds.lo.x;
+    lo[1] = t->bounds.lo.y;
+    lo[2] = t->bounds.lo.z;
+    hi[0] = t->bounds.hi.x;
+    hi[1] = t->bounds.hi.y;
+    hi[2] = t->bounds.hi.z;
+    return 1;
+}
+
+size_t sc_scene_warning_count(const sc_scene *scene)
+{
+    return scene->warning_count;
+}
+
+const sc_error *sc_scene_warning(const sc_scene *scene, size_t index)
+{
+    return index < scene->warning_count ? &scene->warnings[index] : NULL;
+}
+
+/* The compiled tree holds only what its root reaches, so its arrays are
+ * the counts; the source figures were measured when it was compiled. */
+void sc_scene_get_info(const sc_scene *scene, sc_scene_info *info)
+{
+    memset(info, 0, sizeof *info);
+    const csg_tree *t = scene->tree;
+    if (!t || t->root == CSG_EMPTY)
+        return;
+    info->node_count = t->node_count;
+    info->leaf_count = t->leaf_count;
+    info->depth = t->depth;
+    info->source_node_count = t->source_node_count;
+    info->source_leaf_count = t->source_leaf_count;
+    info->source_depth = t->source_depth;
+    info->bvh_node_count = t->bvh_node_count;
+    const shading *look = scene->look;
+    info->lights = look ? look->light_count : 0;
+    for (uint32_t i = 0; i < t->leaf_count; i++) {
+        const csg_leaf *l = &t->leaves[i];
+        if ((int)l->prim.kind < SC_LEAF_KINDS)
+            info->leaf_kinds[l->prim.kind]++;
+        if (!look || l->material >= look->material_count)
+            continue;
+        const shading_material *m = &look->materials[l->material];
+        info->mirror_leaves += m->reflect > 0;
+        info->glass_leaves += m->transmit > 0;
+        info->checker_leaves += m->checker > 0;
+    }
+}

@@ -1,0 +1,491 @@
+/* linear_extrude(height, center, twist, slices, scale) built exactly as
+ * OpenSCAD 2021.01 builds it (its extrudePolygon and add_slice), as a
+ * closed mesh leaf (build_mesh_prim).
+ *
+ * The profile is the union of the 2D children through the 2D engine
+ * (build_twod_children). From z = h1 to h2 (0 and height, or -height/2 and
+ * height/2 centred) it is cut into `slices` layers. Ring j (0 .. slices)
+ * is every profile point p moved by diag(s_j) R(-a_j) at height
+ * h1 + (h2 - h1) j / slices, where a_j = twist j / slices degrees and
+ * s_j = 1 - (1 - scale) j / slices per axis (OpenSCAD's expressions in
+ * its order, with its degree sine and cosine). Between rings j and j + 1
+ * each profile edge (prev, curr) gives a quad, split into two triangles
+ * along the shorter diagonal: |prev_j - curr_j+1| against
+ * |curr_j - prev_j+1|, equal when they differ by at most 1e-5 of their
+ * sum, in which case the split follows the twist's direction and whether
+ * the contour is a hole. When the top ring has a zero scale the split is
+ * the other one, and the second triangle is left out where the quad's top
+ * edge has collapsed. The bottom cap is the profile at h1, the top cap the
+ * last ring (left out when a scale is 0: the top is a point or a segment).
+ *
+ * Slices: `slices` when given (> 0); else with twist OpenSCAD's helix rule
+ * (conical when the scale is uniform and not 1): at least one slice per
+ * 120 degrees, $fn per 360 degrees when $fn > 0, else the fewer of
+ * twist / $fa and the length of the path of the farthest point over $fs;
+ * without twist but with different x and y scales, $fn, else the longest
+ * diagonal path over $fs; otherwise 1.
+ *
+ * Making the mesh closed: points of neighbouring rings are computed once
+ * and shared. A top ring scaled to a point merges into one apex; one
+ * scaled onto a segment has its points merged where they coincide, and
+ * a triangle whose top edge passes over other top points is split at
+ * them, so each piece of the segment is used by two triangles.
+ */
+#include "build/build_extrude_faithful.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "base/error.h"
+#include "base/grow.h"
+#include "build/build_mesh.h"
+#include "build/build_twod.h"
+#include "model/faithful.h"
+
+/* Most slices of one extrusion. */
+#define MAX_SLICES 1000000.0
+/* OpenSCAD's GRID_FINE: radii below it get the minimum slice count. */
+#define GRID_FINE 0.00000095367431640625
+#define DEG2RAD (3.14159265358979323846 / 180.0)
+
+typedef struct params {
+    double height, twist, sx, sy, fn, fa, fs;
+    double slices; /* given slices, 0 when not given */
+    int center;
+} params;
+
+typedef struct mesh {
+    vec3 *points;
+    uint32_t ring; /* points per ring */
+    uint32_t *indices, *face_start;
+    size_t index_count, index_cap, face_count, face_cap;
+    uint32_t *top_map; /* top ring point -> merged point, or NULL */
+    uint32_t *line;    /* merged top points sorted along the segment */
+    uint32_t line_count;
+    int line_axis; /* 0: the top is on the x axis, 1: on the y axis */
+    uint32_t top;  /* first point of the top ring */
+} mesh;
+
+static sc_status read_params(const build_ctx *c, const parse_node *n, params *p)
+{
+    memset(p, 0, sizeof *p);
+    p->height = 100;
+    p->sx = p->sy = 1;
+    p->fa = 12;
+    p->fs = 2;
+    sc_status st;
+    if (build_arg(n, "file", -1))
+        return err_set(c->error, SC_ERR_UNSUPPORTED, &n->loc,
+                       "linear_extrude of a file is not supported yet");
+    if ((st = build_number(c, n, "height", 0, &p->height)) != SC_OK ||
+        (st = build_number(c, n, "twist", -1, &p->twist)) != SC_OK ||
+        (st = build_number(c, n, "slices", -1, &p->slices)) != SC_OK ||
+        (st = build_number(c, n, "$fn", -1, &p->fn)) != SC_OK ||
+        (st = build_number(c, n, "$fa", -1, &p->fa)) != SC_OK ||
+        (st = build_number(c, n, "$fs", -1, &p->fs)) != SC_OK)
+        return st;
+    const parse_value *cv = build_arg(n, "center", 1);
+    if (cv && cv->kind != PARSE_BOOL)
+        return build_wrong_type(c, n, "center", cv, "true or false");
+    p->center = cv ? cv->u.boolean : 0;
+    const parse_value *sv = build_arg(n, "scale", -1);
+    if (sv && sv->kind == PARSE_NUMBER) {
+        p->sx = p->sy = sv->u.number;
+    } else if (sv && sv->kind == PARSE_VECTOR && sv->u.vector.count == 2 &&
+               sv->u.vector.items[0].kind == PARSE_NUMBER &&
+               sv->u.vector.items[1].kind == PARSE_NUMBER) {
+        p->sx = sv->u.vector.items[0].u.number;
+        p->sy = sv->u.vector.items[1].u.number;
+    } else if (sv) {
+        return build_wrong_type(c, n, "scale", sv, "a number or [x, y]");
+    }
+    if (!isfinite(p->sx) || !isfinite(p->sy)) {
+        sc_location loc = build_loc(c, sv);
+        return err_set(c->error, SC_ERR_SEMANTIC, &loc,
+                       "linear_extrude: scale must be finite");
+    }
+    if (!isfinite(p->twist)) {
+        sc_location loc = build_loc(c, build_arg(n, "twist", -1));
+        return err_set(c->error, SC_ERR_SEMANTIC, &loc,
+                       "linear_extrude: twist must be finite");
+    }
+    /* OpenSCAD: negative scales are 0, slices are truncated to an integer
+     * and count when positive, a non-finite slice count is not given */
+    p->sx = p->sx < 0 ? 0 : p->sx;
+    p->sy = p->sy < 0 ? 0 : p->sy;
+    p->slices = isfinite(p->slices) && p->slices >= 1 ? trunc(p->slices) : 0;
+    if (p->slices > MAX_SLICES) {
+        sc_location loc = build_loc(c, build_arg(n, "slices", -1));
+        return err_set(c->error, SC_ERR_LIMIT, &loc,
+                       "linear_extrude: %g slices are too many (limit is %.0f)",
+                       p->slices, MAX_SLICES);
+    }
+    return SC_OK;
+}
+
+/* OpenSCAD's Calc::get_helix_slices, in doubles (no conversion of an
+ * unbounded count to int). */
+static double helix_slices(double r_sqr, double height, double twist, double fn,
+                           double fs, double fa)
+{
+    twist = fabs(twist);
+    double min_slices = fmax(ceil(twist / 120.0), 1);
+    if (sqrt(r_sqr) < GRID_FINE || isinf(fn) || isnan(fn))
+        return min_slices;
+    if (fn > 0.0)
+        return fmax(ceil(twist / 360.0 * fn), min_slices);
+    double fa_slices = ceil(twist / fa);
+    double t = twist * DEG2RAD, cc = height / t;
+    double fs_slices = ceil(t * sqrt(r_sqr + cc * cc) / fs);
+    return fmax(fmin(fa_slices, fs_slices), min_slices);
+}
+
+static double archimedes_length(double a, double theta)
+{
+    return 0.5 * a * (theta * sqrt(1 + theta * theta) + asinh(theta));
+}
+
+/* Calc::get_conical_helix_slices: twist with a uniform scale other than 1. */
+static double conical_slices(double r_sqr, double height, double twist, double scale,
+                             double fn, double fs, double fa)
+{
+    twist = fabs(twist);
+    double r = sqrt(r_sqr);
+    double min_slices = fmax(ceil(twist / 120.0), 1);
+    if (r < GRID_FINE || isinf(fn) || isnan(fn))
+        return min_slices;
+    if (fn > 0.0)
+        return fmax(ceil(twist * fn / 360), min_slices);
+    double rads = twist * DEG2RAD;
+    double angle_end = scale > 1 ? rads * scale / (scale - 1) : rads / (1 - scale);
+    double angle_start = angle_end - rads;
+    double a = r / angle_end;
+    double spiral = archimedes_length(a, angle_end) - archimedes_length(a, angle_start);
+    double total = sqrt(spiral * spiral + height * height);
+    double fs_slices = ceil(total / fs);
+    double fa_slices = ceil(twist / fa);
+    return fmax(fmin(fa_slices, fs_slices), min_slices);
+}
+
+/* Calc::get_diagonal_slices: different x and y scales, no twist. */
+static double diagonal_slices(double delta_sqr, double height, double fn, double fs)
+{
+    if (sqrt(delta_sqr) < GRID_FINE || isinf(fn) || isnan(fn))
+        return 1;
+    if (fn > 0.0)
+        return fmax(trunc(fn), 1);
+    return fmax(ceil(sqrt(delta_sqr + height * height) / fs), 1);
+}
+
+static double slice_count(const params *p, const twod_region *r)
+{
+    if (p->slices > 0)
+        return p->slices;
+    if (p->twist != 0) {
+        double max_r_sqr = 0;
+        for (uint32_t i = 0; i < r->point_count; i++) {
+            double x = r->xy[2 * i], y = r->xy[2 * i + 1];
+            max_r_sqr = fmax(max_r_sqr, x * x + y * y);
+        }
+        if ((p->sx == 1.0 && p->sy == 1.0) || p->sx != p->sy)
+            return helix_slices(max_r_sqr, p->height, p->twist, p->fn, p->fs, p->fa);
+        return conical_slices(max_r_sqr, p->height, p->twist, p->sx, p->fn, p->fs, p->fa);
+    }
+    if (p->sx != p->sy) {
+        double max_delta_sqr = 0;
+        for (uint32_t i = 0; i < r->point_count; i++) {
+            double x = r->xy[2 * i], y = r->xy[2 * i + 1];
+            double dx = x - x * p->sx, dy = y - y * p->sy;
+            max_delta_sqr = fmax(max_delta_sqr, dx * dx + dy * dy);
+        }
+        return diagonal_slices(max_delta_sqr, p->height, p->fn, p->fs);
+    }
+    return 1;
+}
+
+/* OpenSCAD's sgn_vdiff: -1, 0 or 1 as |a| is shorter, about equal (within
+ * 10 ppm of the sum) or longer than |b|. */
+static int sgn_vdiff(double ax, double ay, double bx, double by)
+{
+    double l1 = sqrt(ax * ax + ay * ay), l2 = sqrt(bx * bx + by * by);
+    double diff = 2 * fabs(l1 - l2) * 1e5;
+    return diff > l1 + l2 ? (l1 < l2 ? -1 : 1) : 0;
+}
+
+static int add_face(mesh *m, const uint32_t *v, uint32_t count)
+{
+    if (!grow_array((void **)&m->face_start, &m->face_cap, m->face_count + 2,
+                    sizeof *m->face_start) ||
+        !grow_array((void **)&m->indices, &m->index_cap, m->index_count + count,
+                    sizeof *m->indices) ||
+        m->index_count + count > UINT32_MAX)
+        return 0;
+    m->face_start[m->face_count++] = (uint32_t)m->index_count;
+    memcpy(m->indices + m->index_count, v, count * sizeof *v);
+    m->index_count += count;
+    m->face_start[m->face_count] = (uint32_t)m->index_count;
+    return 1;
+}
+
+static uint32_t vertex(const mesh *m, uint32_t ring, uint32_t i)
+{
+    uint32_t v = ring * m->ring + i;
+    return v >= m->top && m->top_map ? m->top_map[v - m->top] : v;
+}
+
+static double along(const mesh *m, uint32_t v)
+{
+    return m->line_axis == 0 ? m->points[v].x : m->points[v].y;
+}
+
+/* First index in the sorted segment points whose position is > t. */
+static uint32_t line_after(const mesh *m, double t)
+{
+    uint32_t lo = 0, hi = m->line_count;
+    while (lo < hi) {
+        uint32_t mid = lo + (hi - lo) / 2;
+        if (along(m, m->line[mid]) > t)
+            hi = mid;
+        else
+            lo = mid + 1;
+    }
+    return lo;
+}
+
+/* Adds triangle (a, b, c); degenerate ones (a repeated point) are left
+ * out, and on a segment-shaped top an edge over other top points is split
+ * at them. */
+static int add_triangle(mesh *m, uint32_t a, uint32_t b, uint32_t c)
+{
+    if (a == b || b == c || c == a)
+        return 1;
+    uint32_t t[3] = {a, b, c};
+    if (m->line) {
+        for (int e = 0; e < 3; e++) {
+            uint32_t u = t[e], v = t[(e + 1) % 3], w = t[(e + 2) % 3];
+            if (u < m->top || v < m->top)
+                continue;
+            double tu = along(m, u), tv = along(m, v);
+            int up = tu < tv;
+            uint32_t from = line_after(m, up ? tu : tv), to = line_after(m, up ? tv : tu);
+            /* points strictly between: [from, to) minus the end itself */
+            uint32_t prev = u;
+            for (uint32_t k = 0; k < to - from; k++) {
+                uint32_t q = m->line[up ? from + k : to - 1 - k];
+                if (q == v || along(m, q) == (up ? tv : tu))
+                    continue;
+                uint32_t f[3] = {w, prev, q};
+                if (!add_face(m, f, 3))
+                    return 0;
+                prev = q;
+            }
+            uint32_t f[3] = {w, prev, v};
+            return add_face(m, f, 3);
+        }
+    }
+    return add_face(m, t, 3);
+}
+
+static int compare_points(const void *pa, const void *pb, const vec3 *points)
+{
+    uint32_t a = *(const uint32_t *)pa, b = *(const uint32_t *)pb;
+    const vec3 *p = &points[a], *q = &points[b];
+    if (p->x != q->x)
+        return p->x < q->x ? -1 : 1;
+    if (p->y != q->y)
+        return p->y < q->y ? -1 : 1;
+    return (a > b) - (a < b);
+}
+
+/* qsort takes no context (the points): a merge sort of point indices. */
+static void sort_points(uint32_t *v, uint32_t *tmp, uint32_t count, const vec3 *points)
+{
+    if (count < 2)
+        return;
+    uint32_t half = count / 2;
+    sort_points(v, tmp, half, points);
+    sort_points(v + half, tmp, count - half, points);
+    uint32_t i = 0, j = half, k = 0;
+    while (i < half && j < count)
+        tmp[k++] = compare_points(&v[i], &v[j], points) <= 0 ? v[i++] : v[j++];
+    while (i < half)
+        tmp[k++] = v[i++];
+    while (j < count)
+        tmp[k++] = v[j++];
+    memcpy(v, tmp, count * sizeof *v);
+}
+
+/* Merges coinciding points of the top ring; on a segment-shaped top also
+ * lists the merged points along it. */
+static int merge_top(mesh *m, int segment_axis)
+{
+    uint32_t n = m->ring;
+    uint32_t *order = malloc((size_t)n * sizeof *order);
+    uint32_t *tmp = malloc((size_t)n * sizeof *tmp);
+    m->top_map = malloc((size_t)n * sizeof *m->top_map);
+    m->line = malloc((size_t)n * sizeof *m->line);
+    if (!order || !tmp || !m->top_map || !m->line) {
+        free(order);
+        free(tmp);
+        return 0;
+    }
+    for (uint32_t i = 0; i < n; i++)
+        order[i] = m->top + i;
+    sort_points(order, tmp, n, m->points);
+    m->line_count = 0;
+    for (uint32_t i = 0; i < n; i++) {
+        uint32_t v = order[i];
+        if (i > 0 && m->points[v].x == m->points[m->line[m->line_count - 1]].x &&
+            m->points[v].y == m->points[m->line[m->line_count - 1]].y) {
+            m->top_map[v - m->top] = m->line[m->line_count - 1];
+        } else {
+            m->top_map[v - m->top] = v;
+            m->line[m->line_count++] = v;
+        }
+    }
+    /* sorted by x then y: along the y axis when x is 0 throughout */
+    m->line_axis = segment_axis;
+    if (segment_axis < 0) {
+        free(m->line);
+        m->line = NULL;
+    }
+    free(order);
+    free(tmp);
+    return 1;
+}
+
+static void mesh_free(mesh *m)
+{
+    free(m->points);
+    free(m->indices);
+    free(m->face_start);
+    free(m->top_map);
+    free(m->line);
+}
+
+static sc_status extrude(const build_ctx *c, const parse_node *n, const params *p,
+                         const twod_region *r, uint32_t slices, prim *out,
+                         const char **empty)
+{
+    double h1 = p->center ? -p->height / 2.0 : 0,
+           h2 = p->center ? p->height / 2.0 : p->height;
+    mesh m;
+    memset(&m, 0, sizeof m);
+    m.ring = r->point_count;
+    m.top = slices * m.ring;
+    size_t total = ((size_t)slices + 1) * m.ring;
+    m.points = malloc(total * sizeof *m.points);
+    if (!m.points)
+        return err_nomem(c->error, &n->loc);
+    for (uint32_t j = 0; j <= slices; j++) {
+        double rot = p->twist * j / slices;
+        double scx = 1 - (1 - p->sx) * j / slices, scy = 1 - (1 - p->sy) * j / slices;
+        double h = h1 + (h2 - h1) * j / slices;
+        double cs = faithful_cos_deg(-rot), sn = faithful_sin_deg(-rot);
+        double m00 = scx * cs, m01 = scx * -sn, m10 = scy * sn, m11 = scy * cs;
+        for (uint32_t i = 0; i < m.ring; i++) {
+            double x = r->xy[2 * i], y = r->xy[2 * i + 1];
+            m.points[(size_t)j * m.ring + i] =
+                v3(m00 * x + m01 * y, m10 * x + m11 * y, h);
+        }
+    }
+    double top_sx = 1 - (1 - p->sx) * slices / slices;
+    double top_sy = 1 - (1 - p->sy) * slices / slices;
+    int top_zero = top_sx == 0 || top_sy == 0;
+    int ok = 1;
+    if (top_zero)
+        ok = merge_top(&m, top_sx == 0 && top_sy == 0 ? -1 : top_sy == 0 ? 0 : 1);
+    for (uint32_t j = 0; ok && j < slices; j++) {
+        double rot1 = p->twist * j / slices, rot2 = p->twist * (j + 1) / slices;
+        double s2x = 1 - (1 - p->sx) * (j + 1) / slices;
+        double s2y = 1 - (1 - p->sy) * (j + 1) / slices;
+        int any_zero = s2x == 0 || s2y == 0, any_non_zero = s2x != 0 || s2y != 0;
+        int back_twist = rot2 <= rot1;
+        for (uint32_t k = 0; ok && k < r->contour_count; k++) {
+            uint32_t s = r->start[k], len = r->start[k + 1] - s;
+            if (len == 0)
+                continue;
+            int positive = twod_contour_area(r, k) >= 0;
+            int flip = !positive ^ back_twist;
+            for (uint32_t i = 1; ok && i <= len; i++) {
+                uint32_t pi = s + i - 1, ci = s + i % len;
+                uint32_t p1 = vertex(&m, j, pi), c1 = vertex(&m, j, ci);
+                uint32_t p2 = vertex(&m, j + 1, pi), c2 = vertex(&m, j + 1, ci);
+                const vec3 *P1 = &m.points[(size_t)j * m.ring + pi];
+                const vec3 *C1 = &m.points[(size_t)j * m.ring + ci];
+                const vec3 *P2 = &m.points[(size_t)(j + 1) * m.ring + pi];
+                const vec3 *C2 = &m.points[(size_t)(j + 1) * m.ring + ci];
+                int diff =
+                    sgn_vdiff(P1->x - C2->x, P1->y - C2->y, C1->x - P2->x, C1->y - P2->y);
+                int split_first = diff == -1 || (diff == 0 && !flip);
+                int second =
+                    !any_zero || (any_non_zero && (P2->x != C2->x || P2->y != C2->y));
+                if (split_first ^ any_zero) {
+                    ok = add_triangle(&m, p1, c2, c1) &&
+                         (!second || add_triangle(&m, c2, p1, p2));
+                } else {
+                    ok = add_triangle(&m, p1, p2, c1) &&
+                         (!second || add_triangle(&m, p2, c2, c1));
+                }
+            }
+        }
+    }
+    /* caps, wound against the sides: the bottom as the contour runs, the
+     * top the other way */
+    uint32_t *face = malloc(((size_t)m.ring + 1) * sizeof *face);
+    ok = ok && face;
+    for (uint32_t k = 0; ok && k < r->contour_count; k++) {
+        uint32_t s = r->start[k], len = r->start[k + 1] - s;
+        if (len < 3)
+            continue;
+        for (uint32_t i = 0; i < len; i++)
+            face[i] = vertex(&m, 0, s + i);
+        ok = add_face(&m, face, len);
+        if (ok && !top_zero) {
+            for (uint32_t i = 0; i < len; i++)
+                face[i] = vertex(&m, slices, s + len - 1 - i);
+            ok = add_face(&m, face, len);
+        }
+    }
+    free(face);
+    sc_status st;
+    if (!ok)
+        st = err_nomem(c->error, &n->loc);
+    else
+        st = build_mesh_prim(c, &n->loc, "linear_extrude", m.points, (uint32_t)total,
+                             m.indices, m.face_start, (uint32_t)m.face_count, out, empty);
+    if (st == SC_OK && *empty)
+        *empty = "linear_extrude without height or area is empty";
+    mesh_free(&m);
+    return st;
+}
+
+sc_status build_linear_extrude_faithful(const build_ctx *c, const parse_node *n, int emit,
+                                        prim *out, const char **empty)
+{
+    params p;
+    sc_status st = read_params(c, n, &p);
+    if (st != SC_OK)
+        return st;
+    twod_region r;
+    twod_init(&r);
+    st = build_twod_children(c, n, &r);
+    if (st == SC_OK && emit) {
+        if (!(p.height > 0 && isfinite(p.height)) || !(fabs(twod_area(&r)) > 0)) {
+            *empty = "linear_extrude without height or area is empty";
+        } else {
+            double slices = slice_count(&p, &r);
+            if (!(slices <= MAX_SLICES) ||
+                slices * r.point_count > (double)BUILD_EXTRUDE_MAX_QUADS)
+                st = err_set(c->error, SC_ERR_LIMIT, &n->loc,
+                             "linear_extrude: %g slices of %u points are too many (limit "
+                             "is %u side faces)",
+                             slices, r.point_count, BUILD_EXTRUDE_MAX_QUADS);
+            else
+                st = extrude(c, n, &p, &r, (uint32_t)slices, out, empty);
+        }
+    }
+    twod_free(&r);
+    return st;
+}

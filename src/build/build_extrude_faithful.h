@@ -1,0 +1,20 @@
+/* linear_extrude as OpenSCAD 2021.01 builds it, with twist and scale
+ * (build_extrude_faithful.c). build_extrude.c routes twisted and scaled
+ * extrusions, and every extrusion in --faithful mode, here.
+ */
+#ifndef SPANCAST_BUILD_BUILD_EXTRUDE_FAITHFUL_H
+#define SPANCAST_BUILD_BUILD_EXTRUDE_FAITHFUL_H
+
+#include "build/build_curved.h"
+
+/* Most side quads (slices times outline points) of one extrusion. */
+#define BUILD_EXTRUDE_MAX_QUADS 2000000u
+
+/* linear_extrude(height, center, twist, slices, scale, $fn, $fa, $fs) of
+ * n's 2D children (build_twod_children): OpenSCAD's slices as a closed
+ * mesh leaf. Arguments are checked always; *out is filled only when emit
+ * is set, and an extrusion without height or area sets *empty instead. */
+sc_status build_linear_extrude_faithful(const build_ctx *c, const parse_node *n, int emit,
+                                        prim *out, const char **empty);
+
+#endif

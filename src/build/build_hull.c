@@ -1,0 +1,1116 @@
+/* hull(), minkowski() and resize(): the nodes whose result depends on the
+ * geometry of their children, built from the children's points.
+ *
+ * Points. Each child leaf gives the points of the polyhedron OpenSCAD 2021.01
+ * makes of it, carried into the hull node's frame by the multmatrix nodes
+ * between: a cube its 8 corners; a polyhedron the points its faces use;
+ * import, surface, linear_extrude and rotate_extrude (as in --faithful)
+ * the vertices of their meshes; sphere
+ * and cylinder OpenSCAD's polyhedra for their $fn, $fa, $fs (faithful.c's
+ * rings and circles), in default mode as in --faithful, since OpenSCAD
+ * hulls those polygons; a nested hull its children's points; a nested
+ * minkowski its parts' sums; a nested resize its children scaled. group,
+ * union, render, color and material pass their children through; '%' and
+ * '*' children are left out. difference, intersection and every other node
+ * are SC_ERR_UNSUPPORTED at their position (OpenSCAD hulls the vertices of
+ * the boolean's mesh, which needs a mesh boolean).
+ *
+ * hull: the convex hull of all the points (hull3.c, exact orientation
+ * tests), as a plane set, or as a mesh of its triangles when it has more
+ * than HULL_MAX_PLANES planes (the mesh leaf's box hierarchy keeps large
+ * hulls fast). A flat or empty hull is the empty solid with a warning.
+ *
+ * minkowski: each child is a list of convex parts (a leaf or hull is one
+ * part; a group of several gives several: A ⊕ (B ∪ C) = (A ⊕ B) ∪ (A ⊕ C)).
+ * A polyhedron or mesh leaf is one part when it is convex: when its volume
+ * is within 1e-6 of its hull's. The sum of convex parts P and Q is the hull
+ * of the pairwise sums of their vertices, so the result is the union, over
+ * every choice of one part per child, of the hull of the sums (the parts
+ * are first reduced to their hull vertices). Children without geometry are
+ * skipped, as OpenSCAD does.
+ *
+ * resize: OpenSCAD scales the child's mesh by newsize / size of its
+ * bounding box. The box here is the support function h(u) = max u . x
+ * over the child, in the six axis directions, which composes exactly:
+ * union, hull: max over children; minkowski: sum over children; multmatrix
+ * x -> M x + t: h(u) = h_child(M^T u) + u . t; sphere (exact mode):
+ * r |u|; cylinder (exact): max over its end discs of z_k u_z + r_k
+ * |(u_x, u_y)|; torus: R |(u_x, u_y)| + r |u|; point-built leaves: max over
+ * their points; quadric and implicit: their clipping box's corners. So
+ * the box is tight for all of these. difference takes its first child's
+ * box, intersection the smallest of its children's boxes in each direction:
+ * upper bounds, exact when the subtracted or intersected parts do not cut
+ * the extreme points (docs/hull.md).
+ *
+ * The walks recurse with a depth guard (BUILD_HULL_MAX_DEPTH).
+ */
+#include "build/build_hull.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "base/error.h"
+#include "base/grow.h"
+#include "build/build_mesh.h"
+#include "build/build_revolve.h"
+#include "csg/hull3.h"
+#include "csg/prim_mesh.h"
+#include "model/faithful.h"
+
+/* Above this many planes a hull is built as a triangle mesh. */
+enum { HULL_MAX_PLANES = 256 };
+
+typedef struct pointset {
+    vec3 *p;
+    uint32_t count, cap;
+} pointset;
+
+typedef struct partlist {
+    pointset *items;
+    uint32_t count, cap;
+} partlist;
+
+typedef struct walk {
+    const build_ctx *c;
+    const char *owner; /* "hull", "minkowski" or "resize", for messages */
+    int convex;        /* parts must be convex (minkowski) */
+    build_resize_cache **cache;
+} walk;
+
+/* Each resize node's matrix, computed once per build: a resize inside a
+ * resize (or hull) would otherwise be measured again at every level above
+ * it, exponentially in the nesting. Open addressing on the node's
+ * address. */
+struct build_resize_cache {
+    const parse_node **keys;
+    affine *matrices;
+    const char **warnings;
+    size_t count, cap; /* cap is a power of two */
+};
+
+void build_resize_cache_free(build_resize_cache *cache)
+{
+    if (!cache)
+        return;
+    free(cache->keys);
+    free(cache->matrices);
+    free(cache->warnings);
+    free(cache);
+}
+
+static size_t slot_of(const build_resize_cache *cache, const parse_node *n)
+{
+    size_t h = (size_t)(uintptr_t)n;
+    h ^= h >> 17;
+    h *= (size_t)0x9e3779b97f4a7c15ull;
+    size_t i = (h ^ (h >> 29)) & (cache->cap - 1);
+    while (cache->keys[i] && cache->keys[i] != n)
+        i = (i + 1) & (cache->cap - 1);
+    return i;
+}
+
+static const affine *cache_find(const build_resize_cache *cache, const parse_node *n,
+                                const char **warning)
+{
+    if (!cache || !cache->cap)
+        return NULL;
+    size_t i = slot_of(cache, n);
+    if (!cache->keys[i])
+        return NULL;
+    *warning = cache->warnings[i];
+    return &cache->matrices[i];
+}
+
+/* Returns 0 when memory ran out. */
+static int cache_put(build_resize_cache **slot, const parse_node *n, const affine *m,
+                     const char *warning)
+{
+    build_resize_cache *cache = *slot;
+    if (!cache && !(cache = *slot = calloc(1, sizeof *cache)))
+        return 0;
+    if (2 * (cache->count + 1) > cache->cap) {
+        build_resize_cache grown = {NULL, NULL, NULL, 0,
+                                    cache->cap ? 2 * cache->cap : 64};
+        grown.keys = calloc(grown.cap, sizeof *grown.keys);
+        grown.matrices = malloc(grown.cap * sizeof *grown.matrices);
+        grown.warnings = malloc(grown.cap * sizeof *grown.warnings);
+        if (!grown.keys || !grown.matrices || !grown.warnings) {
+            free(grown.keys);
+            free(grown.matrices);
+            free(grown.warnings);
+            return 0;
+        }
+        for (size_t i = 0; i < cache->cap; i++) {
+            if (!cache->keys[i])
+                continue;
+            size_t j = slot_of(&grown, cache->keys[i]);
+            grown.keys[j] = cache->keys[i];
+            grown.matrices[j] = cache->matrices[i];
+            grown.warnings[j] = cache->warnings[i];
+        }
+        grown.count = cache->count;
+        free(cache->keys);
+        free(cache->matrices);
+        free(cache->warnings);
+        *cache = grown;
+    }
+    size_t i = slot_of(cache, n);
+    cache->keys[i] = n;
+    cache->matrices[i] = *m;
+    cache->warnings[i] = warning;
+    cache->count++;
+    return 1;
+}
+
+static void parts_free(partlist *l)
+{
+    for (uint32_t i = 0; i < l->count; i++)
+        free(l->items[i].p);
+    free(l->items);
+    memset(l, 0, sizeof *l);
+}
+
+static int add_point(pointset *s, vec3 p)
+{
+    if (!grow_array32((void **)&s->p, &s->cap, s->count + 1, sizeof *s->p))
+        return 0;
+    s->p[s->count++] = p;
+    return 1;
+}
+
+/* A new, empty part at the end of l; NULL when memory ran out. */
+static pointset *new_part(partlist *l)
+{
+    if (!grow_array32((void **)&l->items, &l->cap, l->count + 1, sizeof *l->items))
+        return NULL;
+    pointset *s = &l->items[l->count++];
+    memset(s, 0, sizeof *s);
+    return s;
+}
+
+/* ---- arguments ---- */
+
+static sc_status get_number(const build_ctx *c, const parse_node *n, const char *name,
+                            int position, double *out, int *given)
+{
+    if (given)
+        *given = build_arg(n, name, position) != NULL;
+    return build_number(c, n, name, position, out);
+}
+
+/* A diameter wins over a radius, as in OpenSCAD. */
+static sc_status get_radius(const build_ctx *c, const parse_node *n, const char *diameter,
+                            const char *radius, int position, double *out, int *given)
+{
+    double d = 0;
+    int has_d;
+    sc_status st = get_number(c, n, diameter, -1, &d, &has_d);
+    if (st == SC_OK)
+        st = get_number(c, n, radius, position, out, given);
+    if (st == SC_OK && has_d) {
+        *out = d / 2;
+        *given = 1;
+    }
+    return st;
+}
+
+static int positive_finite(double x)
+{
+    return x > 0 && isfinite(x);
+}
+
+/* ---- leaves as shapes ---- */
+
+typedef enum shape_kind {
+    SHAPE_NONE, /* no geometry */
+    SHAPE_BOX,
+    SHAPE_SPHERE,
+    SHAPE_CYLINDER,
+} shape_kind;
+
+/* A cube, sphere or cylinder read from its arguments. */
+typedef struct shape {
+    shape_kind kind;
+    vec3 lo, hi;           /* box */
+    double r;              /* sphere */
+    double z0, z1, r0, r1; /* cylinder */
+    double fn, fa, fs;
+} shape;
+
+static sc_status read_cube(const build_ctx *c, const parse_node *n, shape *s)
+{
+    double size[3];
+    int center;
+    sc_status st = build_cube_args(c, n, size, &center);
+    if (st != SC_OK)
+        return st;
+    if (!positive_finite(size[0]) || !positive_finite(size[1]) ||
+        !positive_finite(size[2]))
+        return SC_OK;
+    vec3 sz = v3(size[0], size[1], size[2]);
+    s->kind = SHAPE_BOX;
+    s->lo = center ? v3_scale(sz, -0.5) : v3(0, 0, 0);
+    s->hi = center ? v3_scale(sz, 0.5) : sz;
+    return SC_OK;
+}
+
+static sc_status read_sphere(const build_ctx *c, const parse_node *n, shape *s)
+{
+    double r = 1;
+    int given;
+    sc_status st = get_radius(c, n, "d", "r", 0, &r, &given);
+    if (st != SC_OK || !positive_finite(r))
+        return st;
+    s->kind = SHAPE_SPHERE;
+    s->r = r;
+    return SC_OK;
+}
+
+static sc_status read_cylinder(const build_ctx *c, const parse_node *n, shape *s)
+{
+    double h = 1, r = 1, r1 = 1, r2 = 1;
+    int has_h, has_r, has_r1, has_r2, center = 0;
+    sc_status st = get_number(c, n, "h", 0, &h, &has_h);
+    if (st == SC_OK)
+        st = get_radius(c, n, "d1", "r1", 1, &r1, &has_r1);
+    if (st == SC_OK)
+        st = get_radius(c, n, "d2", "r2", 2, &r2, &has_r2);
+    if (st == SC_OK)
+        st = get_radius(c, n, "d", "r", -1, &r, &has_r);
+    if (st == SC_OK)
+        st = build_bool(c, n, "center", 3, &center);
+    if (st != SC_OK)
+        return st;
+    if (!has_r1)
+        r1 = r;
+    if (!has_r2)
+        r2 = r;
+    if (!positive_finite(h) || !(r1 >= 0 && r2 >= 0) || !isfinite(r1) || !isfinite(r2) ||
+        (r1 == 0 && r2 == 0))
+        return SC_OK;
+    s->kind = SHAPE_CYLINDER;
+    s->z0 = center ? -h / 2 : 0;
+    s->z1 = center ? h / 2 : h;
+    s->r0 = r1;
+    s->r1 = r2;
+    return SC_OK;
+}
+
+static sc_status read_shape(const build_ctx *c, const parse_node *n, shape *s)
+{
+    memset(s, 0, sizeof *s);
+    parse_node_resolution(n, &s->fn, &s->fa, &s->fs);
+    if (strcmp(n->name, "cube") == 0)
+        return read_cube(c, n, s);
+    if (strcmp(n->name, "sphere") == 0)
+        return read_sphere(c, n, s);
+    return read_cylinder(c, n, s);
+}
+
+/* Point k of a circle of radius r with f fragments at height z, as
+ * faithful.c places it. */
+static vec3 circle_point(double r, long k, long f, double z)
+{
+    double phi = (360.0 * (double)k) / (double)f;
+    return v3(r * faithful_cos_deg(phi), r * faithful_sin_deg(phi), z);
+}
+
+/* The vertices of OpenSCAD's polyhedron of shape s, through m. */
+static sc_status shape_points(const walk *w, const parse_node *n, const shape *s,
+                              const affine *m, pointset *out)
+{
+    if (s->kind == SHAPE_BOX) {
+        for (int k = 0; k < 8; k++) {
+            vec3 p = v3(k & 1 ? s->hi.x : s->lo.x, k & 2 ? s->hi.y : s->lo.y,
+                        k & 4 ? s->hi.z : s->lo.z);
+            if (!add_point(out, affine_point(m, p)))
+                return err_nomem((w->c)->error, (&n->loc));
+        }
+        return SC_OK;
+    }
+    double rmax = s->kind == SHAPE_SPHERE ? s->r : fmax(s->r0, s->r1);
+    long f = faithful_fragments(rmax, s->fn, s->fs, s->fa);
+    if (f < 0)
+        return err_set(w->c->error, SC_ERR_LIMIT, &n->loc,
+                       "%s: $fn, $fa and $fs of radius %g give too many fragments (limit "
+                       "is %d)",
+                       w->owner, rmax, FAITHFUL_MAX_FRAGMENTS);
+    if (s->kind == SHAPE_SPHERE) {
+        long rings = (f + 1) / 2;
+        for (long i = 0; i < rings; i++) {
+            double phi = (180.0 * ((double)i + 0.5)) / (double)rings;
+            double radius = s->r * faithful_sin_deg(phi);
+            double z = s->r * faithful_cos_deg(phi);
+            for (long k = 0; k < f; k++) {
+                if (!add_point(out, affine_point(m, circle_point(radius, k, f, z))))
+                    return err_nomem((w->c)->error, (&n->loc));
+            }
+        }
+        return SC_OK;
+    }
+    for (long k = 0; k < f; k++) {
+        if (!add_point(out, affine_point(m, circle_point(s->r0, k, f, s->z0))) ||
+            !add_point(out, affine_point(m, circle_point(s->r1, k, f, s->z1))))
+            return err_nomem((w->c)->error, (&n->loc));
+    }
+    return SC_OK;
+}
+
+/* ---- polyhedra and meshes ---- */
+
+static const char points_expected[] = "a vector of [x, y, z] points";
+static const char faces_expected[] = "a vector of faces, each a vector of point indices";
+
+/* The points a polyhedron's faces use, through m, and the volume its faces
+ * enclose (fans about each face's first point). */
+static sc_status polyhedron_points(const walk *w, const parse_node *n, const affine *m,
+                                   pointset *out, double *volume)
+{
+    const build_ctx *c = w->c;
+    const parse_value *pts = build_arg(n, "points", 0);
+    const char *faces_name = "faces";
+    const parse_value *faces = build_arg(n, "faces", 1);
+    if (!faces && (faces = build_arg(n, "triangles", -1)))
+        faces_name = "triangles";
+    *volume = 0;
+    if (!pts || !faces)
+        return SC_OK;
+    if (pts->kind != PARSE_VECTOR)
+        return build_wrong_type(c, n, "points", pts, points_expected);
+    if (faces->kind != PARSE_VECTOR)
+        return build_wrong_type(c, n, faces_name, faces, faces_expected);
+    uint32_t np = pts->u.vector.count;
+    vec3 *p = np ? malloc((size_t)np * sizeof *p) : NULL;
+    unsigned char *used = np ? calloc(np, 1) : NULL;
+    if (np && (!p || !used)) {
+        free(p);
+        free(used);
+        return err_nomem(c->error, (&n->loc));
+    }
+    sc_status st = SC_OK;
+    for (uint32_t i = 0; i < np && st == SC_OK; i++) {
+        const parse_value *pv = &pts->u.vector.items[i];
+        int ok = pv->kind == PARSE_VECTOR && pv->u.vector.count == 3;
+        double xyz[3] = {0, 0, 0};
+        for (int k = 0; ok && k < 3; k++) {
+            ok = pv->u.vector.items[k].kind == PARSE_NUMBER &&
+                 isfinite(pv->u.vector.items[k].u.number);
+            if (ok)
+                xyz[k] = pv->u.vector.items[k].u.number;
+        }
+        if (!ok)
+            st = build_wrong_type(c, n, "points", pv, points_expected);
+        else
+            p[i] = affine_point(m, v3(xyz[0], xyz[1], xyz[2]));
+    }
+    double six = 0;
+    for (uint32_t f = 0; f < faces->u.vector.count && st == SC_OK; f++) {
+        const parse_value *fv = &faces->u.vector.items[f];
+        if (fv->kind != PARSE_VECTOR) {
+            st = build_wrong_type(c, n, faces_name, fv, faces_expected);
+            break;
+        }
+        uint32_t first = 0, prev = 0;
+        for (uint32_t i = 0; i < fv->u.vector.count; i++) {
+            const parse_value *iv = &fv->u.vector.items[i];
+            double x = iv->kind == PARSE_NUMBER ? iv->u.number : -1;
+            if (!(x >= 0 && x < (double)np && x == floor(x))) {
+                sc_location loc = build_loc(c, iv);
+                st = err_set(
+                    c->error, SC_ERR_SEMANTIC, &loc,
+                    "polyhedron face %u: point index is not one of the %u points", f, np);
+                break;
+            }
+            uint32_t k = (uint32_t)x;
+            used[k] = 1;
+            if (i == 0)
+                first = k;
+            else if (i >= 2)
+                six += v3_dot(p[first], v3_cross(p[prev], p[k]));
+            prev = k;
+        }
+    }
+    for (uint32_t i = 0; i < np && st == SC_OK; i++) {
+        if (used[i] && !add_point(out, p[i]))
+            st = err_nomem(c->error, (&n->loc));
+    }
+    *volume = fabs(six) / 6;
+    free(p);
+    free(used);
+    return st;
+}
+
+/* import, linear_extrude, rotate_extrude, surface: their mesh's corners
+ * through m, and its volume. Extrusions are built as in --faithful, in
+ * both modes: OpenSCAD hulls the vertices of its polygons, and the exact
+ * leaves of default mode have none. */
+static sc_status mesh_points(const walk *w, const parse_node *n, const affine *m,
+                             pointset *out, double *volume)
+{
+    prim p;
+    memset(&p, 0, sizeof p);
+    const char *empty = NULL;
+    build_ctx fc = *w->c;
+    fc.faithful = 1;
+    sc_status st;
+    if (strcmp(n->name, "import") == 0)
+        st = build_import(w->c, n, 1, &p, &empty);
+    else if (strcmp(n->name, "surface") == 0)
+        st = build_surface(w->c, n, 1, &p, &empty);
+    else if (strcmp(n->name, "rotate_extrude") == 0)
+        st = build_rotate_extrude(&fc, n, 1, &p, &empty);
+    else
+        st = build_linear_extrude(&fc, n, 1, &p, &empty);
+    *volume = 0;
+    if (st != SC_OK || empty || p.kind != PRIM_MESH)
+        return st;
+    const prim_mesh *mesh = p.u.mesh.mesh;
+    double six = 0;
+    for (uint32_t t = 0; t < mesh->tri_count; t++) {
+        vec3 a = affine_point(m, mesh->v[3 * t]), b = affine_point(m, mesh->v[3 * t + 1]),
+             cc = affine_point(m, mesh->v[3 * t + 2]);
+        six += v3_dot(a, v3_cross(b, cc));
+        if (!add_point(out, a) || !add_point(out, b) || !add_point(out, cc))
+            return err_nomem((w->c)->error, (&n->loc));
+    }
+    *volume = fabs(six) / 6;
+    return SC_OK;
+}
+
+/* ---- the walk ---- */
+
+/* multmatrix(m): the matrix, or 0 in *ok for a singular one (no geometry). */
+static sc_status read_matrix(const build_ctx *c, const parse_node *n, affine *out,
+                             int *ok)
+{
+    *ok = 1;
+    double m[4][4];
+    sc_status st = build_matrix(c, n, m);
+    if (st != SC_OK)
+        return st;
+    for (int r = 0; r < 3; r++)
+        for (int k = 0; k < 4; k++)
+            out->m[r][k] = m[r][k];
+    affine inverse;
+    *ok = affine_invert(out, &inverse);
+    return SC_OK;
+}
+
+static int is_name(const parse_node *n, const char *const *names)
+{
+    for (; *names; names++) {
+        if (strcmp(n->name, *names) == 0)
+            return 1;
+    }
+    return 0;
+}
+
+static const char *const group_names[] = {"group", "union",    "render",
+                                          "color", "material", NULL};
+static const char *const shading_names[] = {"light", "camera", "background", NULL};
+static const char *const mesh_names[] = {"import", "linear_extrude", "rotate_extrude",
+                                         "surface", NULL};
+static const char *const shape_names[] = {"cube", "sphere", "cylinder", NULL};
+
+static int skipped(const parse_node *n)
+{
+    return (n->modifiers & (PARSE_MOD_DISABLE | PARSE_MOD_BACKGROUND)) != 0;
+}
+
+static sc_status depth_error(const walk *w, const parse_node *n)
+{
+    return err_set(w->c->error, SC_ERR_LIMIT, &n->loc,
+                   "too many nested nodes inside %s (limit is %d)", w->owner,
+                   BUILD_HULL_MAX_DEPTH);
+}
+
+static sc_status minkowski_parts(const walk *w, const parse_node *n, const affine *m,
+                                 int depth, partlist *out);
+static sc_status resize_matrix(const walk *w, const parse_node *n, int depth, affine *out,
+                               const char **warning);
+
+/* Appends the convex parts (or, for a hull, point sets) of the children of
+ * parent, through m, to out. */
+static sc_status collect(const walk *w, const parse_node *parent, const affine *m,
+                         int depth, partlist *out)
+{
+    const build_ctx *c = w->c;
+    if (depth > BUILD_HULL_MAX_DEPTH)
+        return depth_error(w, parent);
+    for (const parse_node *n = parent->first_child; n; n = n->next) {
+        if (skipped(n) || is_name(n, shading_names))
+            continue;
+        sc_status st = SC_OK;
+        if (is_name(n, group_names)) {
+            st = collect(w, n, m, depth + 1, out);
+        } else if (strcmp(n->name, "multmatrix") == 0 || strcmp(n->name, "resize") == 0) {
+            affine local;
+            int ok = 1;
+            const char *warning = NULL;
+            if (n->name[0] == 'm')
+                st = read_matrix(c, n, &local, &ok);
+            else
+                st = resize_matrix(w, n, depth + 1, &local, &warning);
+            if (st == SC_OK && ok) {
+                affine inner = affine_mul(m, &local);
+                st = collect(w, n, &inner, depth + 1, out);
+            }
+        } else if (is_name(n, shape_names)) {
+            shape s;
+            if ((st = read_shape(c, n, &s)) == SC_OK && s.kind != SHAPE_NONE) {
+                pointset *part = new_part(out);
+                st = part ? shape_points(w, n, &s, m, part)
+                          : err_nomem(c->error, (&n->loc));
+            }
+        } else if (strcmp(n->name, "polyhedron") == 0 || is_name(n, mesh_names)) {
+            pointset set = {NULL, 0, 0};
+            double volume = 0;
+            st = n->name[0] == 'p' ? polyhedron_points(w, n, m, &set, &volume)
+                                   : mesh_points(w, n, m, &set, &volume);
+            if (st == SC_OK && w->convex && set.count) {
+                hull3 h;
+                hull3_status hs = hull3_compute(set.p, set.count, &h);
+                if (hs == HULL3_NOMEM)
+                    st = err_nomem(c->error, (&n->loc));
+                else if (hs == HULL3_OK &&
+                         !(fabs(hull3_volume(&h) - volume) <= 1e-6 * hull3_volume(&h)))
+                    st = err_set(c->error, SC_ERR_UNSUPPORTED, &n->loc,
+                                 "minkowski of a non-convex '%s' is not supported yet",
+                                 n->name);
+                hull3_free(&h);
+            }
+            pointset *part = NULL;
+            if (st == SC_OK && set.count && !(part = new_part(out)))
+                st = err_nomem(c->error, (&n->loc));
+            if (part) {
+                *part = set;
+                set.p = NULL;
+            }
+            free(set.p);
+        } else if (strcmp(n->name, "hull") == 0) {
+            walk inner = {c, "hull", 0, w->cache};
+            partlist sub = {NULL, 0, 0};
+            st = collect(&inner, n, m, depth + 1, &sub);
+            pointset *part = NULL;
+            if (st == SC_OK && sub.count && !(part = new_part(out)))
+                st = err_nomem(c->error, (&n->loc));
+            for (uint32_t i = 0; part && i < sub.count && st == SC_OK; i++) {
+                for (uint32_t k = 0; k < sub.items[i].count && st == SC_OK; k++) {
+                    if (!add_point(part, sub.items[i].p[k]))
+                        st = err_nomem(c->error, (&n->loc));
+                }
+            }
+            parts_free(&sub);
+        } else if (strcmp(n->name, "minkowski") == 0) {
+            st = minkowski_parts(w, n, m, depth + 1, out);
+        } else {
+            st = err_set(c->error, SC_ERR_UNSUPPORTED, &n->loc,
+                         "'%s' inside %s is not supported yet", n->name, w->owner);
+        }
+        if (st != SC_OK)
+            return st;
+    }
+    return SC_OK;
+}
+
+/* Replaces each part by the vertices of its hull (flat parts keep their
+ * points). */
+static sc_status reduce(const walk *w, const parse_node *n, partlist *l)
+{
+    for (uint32_t i = 0; i < l->count; i++) {
+        hull3 h;
+        hull3_status hs = hull3_compute(l->items[i].p, l->items[i].count, &h);
+        if (hs == HULL3_NOMEM)
+            return err_nomem((w->c)->error, (&n->loc));
+        if (hs == HULL3_RANGE)
+            return err_set(w->c->error, SC_ERR_LIMIT, &n->loc,
+                           "%s: too many points or a coordinate too large", w->owner);
+        if (hs == HULL3_OK) {
+            free(l->items[i].p);
+            l->items[i].p = h.vertices;
+            l->items[i].count = l->items[i].cap = h.vertex_count;
+            h.vertices = NULL;
+            hull3_free(&h);
+        }
+    }
+    return SC_OK;
+}
+
+/* The parts of minkowski node n (through m) appended to out. */
+static sc_status minkowski_parts(const walk *w, const parse_node *n, const affine *m,
+                                 int depth, partlist *out)
+{
+    walk inner = {w->c, "minkowski", 1, w->cache};
+    partlist acc = {NULL, 0, 0};
+    sc_status st = SC_OK;
+    int first = 1;
+    if (depth > BUILD_HULL_MAX_DEPTH)
+        return depth_error(w, n);
+    for (const parse_node *child = n->first_child; child && st == SC_OK;
+         child = child->next) {
+        if (skipped(child))
+            continue;
+        partlist parts = {NULL, 0, 0};
+        /* Each child alone: collect walks the children of its argument, so
+         * walk a one-child view of the minkowski node. */
+        parse_node view = *n;
+        parse_node lone = *child;
+        lone.next = NULL;
+        view.first_child = view.last_child = &lone;
+        view.child_count = 1;
+        affine here = first ? *m : affine_identity();
+        st = collect(&inner, &view, &here, depth + 1, &parts);
+        if (st == SC_OK)
+            st = reduce(&inner, n, &parts);
+        if (st != SC_OK || parts.count == 0) {
+            parts_free(&parts);
+            continue;
+        }
+        if (first) {
+            acc = parts;
+            first = 0;
+            continue;
+        }
+        /* acc ⊕ parts, part by part; the new child is through m's linear
+         * part only (the translation is in acc already). */
+        affine linear = *m;
+        linear.m[0][3] = linear.m[1][3] = linear.m[2][3] = 0;
+        uint64_t combos = (uint64_t)acc.count * parts.count;
+        if (combos > BUILD_MINKOWSKI_MAX_PARTS) {
+            st = err_set(w->c->error, SC_ERR_LIMIT, &n->loc,
+                         "minkowski has too many convex parts (limit is %d)",
+                         BUILD_MINKOWSKI_MAX_PARTS);
+        }
+        partlist next = {NULL, 0, 0};
+        for (uint32_t i = 0; i < acc.count && st == SC_OK; i++) {
+            for (uint32_t j = 0; j < parts.count && st == SC_OK; j++) {
+                const pointset *a = &acc.items[i], *b = &parts.items[j];
+                if ((uint64_t)a->count * b->count > HULL3_MAX_POINTS) {
+                    st = err_set(w->c->error, SC_ERR_LIMIT, &n->loc,
+                                 "minkowski: too many points (limit is %u)",
+                                 HULL3_MAX_POINTS);
+                    break;
+                }
+                pointset *s = new_part(&next);
+                if (!s) {
+                    st = err_nomem((w->c)->error, (&n->loc));
+                    break;
+                }
+                for (uint32_t k = 0; k < a->count && st == SC_OK; k++) {
+                    for (uint32_t l = 0; l < b->count; l++) {
+                        if (!add_point(
+                                s, v3_add(a->p[k], affine_vector(&linear, b->p[l])))) {
+                            st = err_nomem((w->c)->error, (&n->loc));
+                            break;
+                        }
+                    }
+                }
+            }
+        }
+        parts_free(&parts);
+        parts_free(&acc);
+        acc = next;
+        if (st == SC_OK)
+            st = reduce(&inner, n, &acc);
+    }
+    for (uint32_t i = 0; i < acc.count && st == SC_OK; i++) {
+        pointset *s = new_part(out);
+        if (!s) {
+            st = err_nomem((w->c)->error, (&n->loc));
+            break;
+        }
+        *s = acc.items[i];
+        acc.items[i].p = NULL;
+    }
+    parts_free(&acc);
+    return st;
+}
+
+/* ---- emitting ---- */
+
+static sc_status push_prim(const build_ctx *c, const parse_node *n, build_prims *out,
+                           const prim *p)
+{
+    if (!grow_array32((void **)&out->items, &out->cap, out->count + 1,
+                      sizeof *out->items))
+        return err_nomem(c->error, (&n->loc));
+    out->items[out->count++] = *p;
+    return SC_OK;
+}
+
+/* The hull of points as a leaf appended to out; *flat counts hulls
+ * without volume. */
+static sc_status emit_hull(const build_ctx *c, const parse_node *n, const pointset *s,
+                           build_prims *out, int *flat)
+{
+    hull3 h;
+    hull3_status hs = hull3_compute(s->p, s->count, &h);
+    if (hs == HULL3_NOMEM)
+        return err_nomem(c->error, (&n->loc));
+    if (hs == HULL3_RANGE)
+        return err_set(c->error, SC_ERR_LIMIT, &n->loc,
+                       "%s: too many points or a coordinate too large", n->name);
+    if (hs == HULL3_FLAT) {
+        (*flat)++;
+        return SC_OK;
+    }
+    prim p;
+    memset(&p, 0, sizeof p);
+    sc_status st = SC_OK;
+    if (h.plane_count <= HULL_MAX_PLANES) {
+        plane *planes = csg_builder_alloc(c->csg, (size_t)h.plane_count * sizeof *planes);
+        if (!planes) {
+            hull3_free(&h);
+            return err_nomem(c->error, (&n->loc));
+        }
+        memcpy(planes, h.planes, (size_t)h.plane_count * sizeof *planes);
+        p.kind = PRIM_CONVEX;
+        p.u.convex.planes = planes;
+        p.u.convex.count = h.plane_count;
+        p.u.convex.bounds = h.bounds;
+    } else {
+        uint32_t *start = malloc(((size_t)h.tri_count + 1) * sizeof *start);
+        if (!start) {
+            hull3_free(&h);
+            return err_nomem(c->error, (&n->loc));
+        }
+        for (uint32_t t = 0; t <= h.tri_count; t++)
+            start[t] = 3 * t;
+        const char *empty = NULL;
+        st = build_mesh_prim(c, &n->loc, n->name, h.vertices, h.vertex_count, h.tris,
+                             start, h.tri_count, &p, &empty);
+        free(start);
+        if (st == SC_OK && empty)
+            (*flat)++;
+        if (st != SC_OK || empty) {
+            hull3_free(&h);
+            return st;
+        }
+    }
+    hull3_free(&h);
+    return push_prim(c, n, out, &p);
+}
+
+sc_status build_hull(const build_ctx *c, const parse_node *n, int emit,
+                     build_resize_cache **cache, build_prims *out, const char **empty)
+{
+    memset(out, 0, sizeof *out);
+    walk w = {c, "hull", 0, cache};
+    partlist parts = {NULL, 0, 0};
+    affine id = affine_identity();
+    sc_status st = collect(&w, n, &id, 0, &parts);
+    pointset all = {NULL, 0, 0};
+    for (uint32_t i = 0; i < parts.count && st == SC_OK; i++) {
+        for (uint32_t k = 0; k < parts.items[i].count && st == SC_OK; k++) {
+            if (!add_point(&all, parts.items[i].p[k]))
+                st = err_nomem(c->error, (&n->loc));
+        }
+    }
+    parts_free(&parts);
+    int flat = 0;
+    if (st == SC_OK && emit)
+        st = emit_hull(c, n, &all, out, &flat);
+    free(all.p);
+    if (st == SC_OK && emit && out->count == 0)
+        *empty = "hull without volume is empty";
+    return st;
+}
+
+sc_status build_minkowski(const build_ctx *c, const parse_node *n, int emit,
+                          build_resize_cache **cache, build_prims *out,
+                          const char **empty)
+{
+    memset(out, 0, sizeof *out);
+    walk w = {c, "minkowski", 1, cache};
+    partlist parts = {NULL, 0, 0};
+    affine id = affine_identity();
+    sc_status st = minkowski_parts(&w, n, &id, 0, &parts);
+    int flat = 0;
+    for (uint32_t i = 0; i < parts.count && st == SC_OK && emit; i++)
+        st = emit_hull(c, n, &parts.items[i], out, &flat);
+    parts_free(&parts);
+    if (st == SC_OK && emit && out->count == 0)
+        *empty = "minkowski without volume is empty";
+    return st;
+}
+
+/* ---- resize ---- */
+
+/* The six support values of the children of parent through m: out[2k] =
+ * max x_k, out[2k + 1] = max -x_k; -inf where there is nothing. */
+static sc_status support(const walk *w, const parse_node *parent, const affine *m,
+                         int depth, double out[6]);
+
+static void support_points(const pointset *s, double out[6])
+{
+    for (uint32_t i = 0; i < s->count; i++) {
+        for (int k = 0; k < 3; k++) {
+            double x = v3_get(s->p[i], k);
+            out[2 * k] = fmax(out[2 * k], x);
+            out[2 * k + 1] = fmax(out[2 * k + 1], -x);
+        }
+    }
+}
+
+/* Row k of m's linear part: the direction M^T e_k. */
+static vec3 row(const affine *m, int k)
+{
+    return v3(m->m[k][0], m->m[k][1], m->m[k][2]);
+}
+
+static sc_status support_node(const walk *w, const parse_node *n, const affine *m,
+                              int depth, double out[6])
+{
+    const build_ctx *c = w->c;
+    sc_status st = SC_OK;
+    if (is_name(n, group_names))
+        return support(w, n, m, depth + 1, out);
+    if (strcmp(n->name, "multmatrix") == 0 || strcmp(n->name, "resize") == 0) {
+        affine local;
+        int ok = 1;
+        const char *warning = NULL;
+        st = n->name[0] == 'm' ? read_matrix(c, n, &local, &ok)
+                               : resize_matrix(w, n, depth + 1, &local, &warning);
+        if (st != SC_OK || !ok)
+            return st;
+        affine inner = affine_mul(m, &local);
+        return support(w, n, &inner, depth + 1, out);
+    }
+    if (strcmp(n->name, "difference") == 0 || strcmp(n->name, "intersection") == 0) {
+        int first = 1;
+        double acc[6] = {-INFINITY, -INFINITY, -INFINITY,
+                         -INFINITY, -INFINITY, -INFINITY};
+        for (const parse_node *k = n->first_child; k; k = k->next) {
+            if (skipped(k) || is_name(k, shading_names))
+                continue;
+            double s[6] = {-INFINITY, -INFINITY, -INFINITY,
+                           -INFINITY, -INFINITY, -INFINITY};
+            if ((st = support_node(w, k, m, depth + 1, s)) != SC_OK)
+                return st;
+            for (int i = 0; i < 6; i++)
+                acc[i] = first ? s[i] : fmin(acc[i], s[i]);
+            first = 0;
+            if (n->name[0] == 'd')
+                break;
+        }
+        for (int i = 0; i < 6; i++)
+            out[i] = fmax(out[i], acc[i]);
+        return SC_OK;
+    }
+    if (strcmp(n->name, "minkowski") == 0) {
+        double sum[6] = {0, 0, 0, 0, 0, 0};
+        int any = 0;
+        affine linear = *m;
+        linear.m[0][3] = linear.m[1][3] = linear.m[2][3] = 0;
+        for (const parse_node *k = n->first_child; k; k = k->next) {
+            if (skipped(k) || is_name(k, shading_names))
+                continue;
+            double s[6] = {-INFINITY, -INFINITY, -INFINITY,
+                           -INFINITY, -INFINITY, -INFINITY};
+            if ((st = support_node(w, k, any ? &linear : m, depth + 1, s)) != SC_OK)
+                return st;
+            if (isinf(s[0]) && s[0] < 0)
+                continue; /* no geometry: skipped, as OpenSCAD does */
+            for (int i = 0; i < 6; i++)
+                sum[i] += s[i];
+            any = 1;
+        }
+        for (int i = 0; any && i < 6; i++)
+            out[i] = fmax(out[i], sum[i]);
+        return SC_OK;
+    }
+    vec3 t = v3(m->m[0][3], m->m[1][3], m->m[2][3]);
+    if (!c->faithful &&
+        (strcmp(n->name, "sphere") == 0 || strcmp(n->name, "cylinder") == 0)) {
+        shape s;
+        if ((st = read_shape(c, n, &s)) != SC_OK || s.kind == SHAPE_NONE)
+            return st;
+        for (int k = 0; k < 3; k++) {
+            vec3 u = row(m, k);
+            double h;
+            if (s.kind == SHAPE_SPHERE) {
+                h = s.r * v3_length(u);
+                out[2 * k] = fmax(out[2 * k], v3_get(t, k) + h);
+                out[2 * k + 1] = fmax(out[2 * k + 1], -v3_get(t, k) + h);
+                continue;
+            }
+            double radial = hypot(u.x, u.y);
+            for (int sign = 0; sign < 2; sign++) {
+                double uz = sign ? -u.z : u.z, tk = sign ? -v3_get(t, k) : v3_get(t, k);
+                h = fmax(s.z0 * uz + s.r0 * radial, s.z1 * uz + s.r1 * radial);
+                out[2 * k + sign] = fmax(out[2 * k + sign], tk + h);
+            }
+        }
+        return SC_OK;
+    }
+    if (strcmp(n->name, "torus") == 0 || strcmp(n->name, "quadric") == 0 ||
+        strcmp(n->name, "implicit") == 0) {
+        prim p;
+        memset(&p, 0, sizeof p);
+        const char *empty = NULL;
+        st = n->name[0] == 't'   ? build_torus(c, n, 1, &p, &empty)
+             : n->name[0] == 'q' ? build_quadric(c, n, 1, &p, &empty)
+                                 : build_implicit(c, n, 1, &p, &empty);
+        if (st != SC_OK || empty)
+            return st;
+        if (p.kind == PRIM_TORUS) {
+            for (int k = 0; k < 3; k++) {
+                vec3 u = row(m, k);
+                double h =
+                    p.u.torus.major * hypot(u.x, u.y) + p.u.torus.minor * v3_length(u);
+                out[2 * k] = fmax(out[2 * k], v3_get(t, k) + h);
+                out[2 * k + 1] = fmax(out[2 * k + 1], -v3_get(t, k) + h);
+            }
+            return SC_OK;
+        }
+        bbox box = p.kind == PRIM_QUADRIC ? p.u.quadric.box : p.u.implicit.box;
+        pointset corners = {NULL, 0, 0};
+        vec3 list[8];
+        for (int k = 0; k < 8; k++)
+            list[k] = affine_point(m, v3(k & 1 ? box.hi.x : box.lo.x,
+                                         k & 2 ? box.hi.y : box.lo.y,
+                                         k & 4 ? box.hi.z : box.lo.z));
+        corners.p = list;
+        corners.count = 8;
+        support_points(&corners, out);
+        return SC_OK;
+    }
+    /* Everything else through its points: cube, faithful sphere and
+     * cylinder, polyhedron, meshes, hull. */
+    parse_node view;
+    parse_node lone = *n;
+    lone.next = NULL;
+    memset(&view, 0, sizeof view);
+    view.name = "resize";
+    view.loc = n->loc;
+    view.first_child = view.last_child = &lone;
+    view.child_count = 1;
+    partlist parts = {NULL, 0, 0};
+    st = collect(w, &view, m, depth + 1, &parts);
+    for (uint32_t i = 0; i < parts.count && st == SC_OK; i++)
+        support_points(&parts.items[i], out);
+    parts_free(&parts);
+    return st;
+}
+
+static sc_status support(const walk *w, const parse_node *parent, const affine *m,
+                         int depth, double out[6])
+{
+    if (depth > BUILD_HULL_MAX_DEPTH)
+        return depth_error(w, parent);
+    for (const parse_node *n = parent->first_child; n; n = n->next) {
+        if (skipped(n) || is_name(n, shading_names))
+            continue;
+        sc_status st = support_node(w, n, m, depth, out);
+        if (st != SC_OK)
+            return st;
+    }
+    return SC_OK;
+}
+
+/* Reads a vector of up to 3 numbers (newsize) or flags (auto: true/false
+ * or numbers, as OpenSCAD writes them). */
+static sc_status read_triple(const build_ctx *c, const parse_node *n, const char *name,
+                             int position, int flags, double out[3])
+{
+    const parse_value *v = build_arg(n, name, position);
+    static const char numbers[] = "a vector of numbers";
+    static const char bools[] = "true, false or a vector of them";
+    if (!v)
+        return SC_OK;
+    if (flags && v->kind == PARSE_BOOL) {
+        out[0] = out[1] = out[2] = v->u.boolean;
+        return SC_OK;
+    }
+    if (v->kind != PARSE_VECTOR)
+        return build_wrong_type(c, n, name, v, flags ? bools : numbers);
+    for (uint32_t i = 0; i < v->u.vector.count && i < 3; i++) {
+        const parse_value *item = &v->u.vector.items[i];
+        if (flags && item->kind == PARSE_BOOL)
+            out[i] = item->u.boolean;
+        else if (item->kind == PARSE_NUMBER && isfinite(item->u.number))
+            out[i] = flags ? item->u.number != 0 : item->u.number;
+        else
+            return build_wrong_type(c, n, name, item, flags ? bools : numbers);
+    }
+    return SC_OK;
+}
+
+/* The matrix of resize node n, measured (once per build: see the cache) or
+ * taken from the cache. */
+static sc_status measure(const walk *w, const parse_node *n, int depth, affine *out,
+                         const char **warning);
+
+static sc_status resize_matrix(const walk *w, const parse_node *n, int depth, affine *out,
+                               const char **warning)
+{
+    const affine *known = cache_find(*w->cache, n, warning);
+    if (known) {
+        *out = *known;
+        return SC_OK;
+    }
+    sc_status st = measure(w, n, depth, out, warning);
+    if (st == SC_OK && !cache_put(w->cache, n, out, *warning))
+        st = err_nomem((w->c)->error, (&n->loc));
+    return st;
+}
+
+static sc_status measure(const walk *w, const parse_node *n, int depth, affine *out,
+                         const char **warning)
+{
+    const build_ctx *c = w->c;
+    double size[3] = {0, 0, 0}, autosize[3] = {0, 0, 0};
+    *out = affine_identity();
+    sc_status st = read_triple(c, n, "newsize", 0, 0, size);
+    if (st == SC_OK)
+        st = read_triple(c, n, "auto", 1, 1, autosize);
+    if (st != SC_OK)
+        return st;
+    for (int k = 0; k < 3; k++) {
+        if (size[k] < 0) {
+            const parse_value *v = build_arg(n, "newsize", 0);
+            sc_location loc = build_loc(c, v);
+            return err_set(c->error, SC_ERR_UNSUPPORTED, &loc,
+                           "resize to a negative size is not supported yet");
+        }
+    }
+    double s[6] = {-INFINITY, -INFINITY, -INFINITY, -INFINITY, -INFINITY, -INFINITY};
+    if ((st = support(w, n, out, depth, s)) != SC_OK)
+        return st;
+    if (isinf(s[0]) && s[0] < 0)
+        return SC_OK; /* no geometry: nothing to resize */
+    double extent[3], scale[3] = {1, 1, 1};
+    int largest = 0;
+    for (int k = 0; k < 3; k++) {
+        extent[k] = s[2 * k] + s[2 * k + 1];
+        if (size[k] > size[largest])
+            largest = k;
+    }
+    for (int k = 0; k < 3; k++) {
+        if (size[k] == 0)
+            continue;
+        if (!(extent[k] > 0)) {
+            *warning = "resize in a direction normal to a flat object is not implemented";
+            return SC_OK;
+        }
+        scale[k] = size[k] / extent[k];
+    }
+    double autoscale = size[largest] != 0 ? size[largest] / extent[largest] : 1;
+    for (int k = 0; k < 3; k++) {
+        if (autosize[k] != 0 && size[k] == 0)
+            scale[k] = autoscale;
+        if (!(isfinite(scale[k]) && scale[k] > 0))
+            return err_set(c->error, SC_ERR_SEMANTIC, &n->loc,
+                           "resize: the scale is not finite");
+        out->m[k][k] = scale[k];
+    }
+    return SC_OK;
+}
+
+sc_status build_resize(const build_ctx *c, const parse_node *n,
+                       build_resize_cache **cache, affine *out, const char **warning)
+{
+    walk w = {c, "resize", 0, cache};
+    return resize_matrix(&w, n, 0, out, warning);
+}

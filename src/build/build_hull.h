@@ -1,0 +1,62 @@
+/* Builders of hull(), minkowski(), resize() (build_hull.c) and surface()
+ * (build_surface.c). See docs/hull.md.
+ */
+#ifndef SPANCAST_BUILD_BUILD_HULL_H
+#define SPANCAST_BUILD_BUILD_HULL_H
+
+#include <stdint.h>
+
+#include "build/build_curved.h"
+#include "math/vec.h"
+
+/* Nesting below a hull, minkowski or resize node that their walks follow. */
+#define BUILD_HULL_MAX_DEPTH 1000
+
+/* The most convex parts a minkowski() result may have (the product of its
+ * children's part counts). */
+#define BUILD_MINKOWSKI_MAX_PARTS 4096
+
+/* The most grid points a surface() height map may have. */
+#define BUILD_SURFACE_MAX_POINTS (1024u * 1024u)
+
+/* The largest .dat file surface() reads, in bytes. */
+#define BUILD_SURFACE_MAX_FILE (64u * 1024u * 1024u)
+
+/* Leaves one node builds: items is malloc'd (free it), count may be 0. */
+typedef struct build_prims {
+    prim *items;
+    uint32_t count, cap;
+} build_prims;
+
+/* The matrices of the resize nodes measured so far in one build (owned by
+ * the caller, created on first use; free with build_resize_cache_free). */
+typedef struct build_resize_cache build_resize_cache;
+
+void build_resize_cache_free(build_resize_cache *cache);
+
+/* hull() of its 3D children: one convex leaf (a plane set, or a mesh of the
+ * hull's triangles when it has many faces), in the hull node's frame. A
+ * hull without volume sets *empty to a warning. With emit clear, the
+ * children are only checked. */
+sc_status build_hull(const build_ctx *c, const parse_node *n, int emit,
+                     build_resize_cache **cache, build_prims *out, const char **empty);
+
+/* minkowski() of convex children, or unions of convex parts: one convex
+ * leaf per combination of parts, to be united. */
+sc_status build_minkowski(const build_ctx *c, const parse_node *n, int emit,
+                          build_resize_cache **cache, build_prims *out,
+                          const char **empty);
+
+/* resize(newsize, auto): the scale (a diagonal matrix in *out) that
+ * OpenSCAD 2021.01 applies to the children, from their bounding box in the
+ * resize node's frame. *warning is set (and *out the identity) when a
+ * non-zero size is asked of a flat child. */
+sc_status build_resize(const build_ctx *c, const parse_node *n,
+                       build_resize_cache **cache, affine *out, const char **warning);
+
+/* surface(file, center, invert): the closed mesh OpenSCAD 2021.01 builds
+ * from a .dat height map or a PNG image (build_surface.c). */
+sc_status build_surface(const build_ctx *c, const parse_node *n, int emit, prim *out,
+                        const char **empty);
+
+#endif

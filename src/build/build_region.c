@@ -1,0 +1,352 @@
+/* The exact linear_extrude: linear_extrude(height, center) without twist
+ * or scale, its 2D children read into a region tree (prim_extrusion.h)
+ * whose leaves are exact:
+ *   circle(r | d)           an ellipse: the circle under the 2D part of the
+ *                           transforms above it (a true circle, not
+ *                           OpenSCAD's polygon: $fn, $fa, $fs are checked
+ *                           and not used)
+ *   square(size, center)    a polygon set of one path
+ *   polygon(points, paths)  a polygon set, inside by the even-odd rule
+ *                           over its paths (OpenSCAD's reading); no paths,
+ *                           or an empty vector of them, is one path
+ *                           through all the points
+ * and whose inner nodes are OpenSCAD's 2D operations:
+ *   group, union, render, color   union of the children
+ *   multmatrix                    union, under the matrix's xy part
+ *                                 (its rows and columns 0, 1 and the
+ *                                 translation); a singular one is empty
+ *   difference                    the first child minus the others
+ *   intersection                  the intersection of the children
+ * A child without area (a zero radius or size, no points) is empty as in
+ * OpenSCAD's 2D evaluator: a union drops it, an intersection with it and a
+ * difference from it are empty. '%' and '*' children are left out.
+ *
+ * build_region_covers says beforehand whether a linear_extrude is this
+ * path's; anything else (twist, scale, offset, text, 3D nodes, ...) goes
+ * to the prism path in build_extrude.c. The walk recurses over the 2D
+ * nodes with a depth guard (BUILD_REGION_MAX_DEPTH); bad arguments are
+ * errors at the value, with the messages of the prism path.
+ */
+#include "build/build_region.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "base/error.h"
+#include "csg/prim_extrusion.h"
+
+typedef struct walker {
+    const build_ctx *c;
+    prim_region region;
+    double *xy; /* the polygon being read, 2 per point */
+    uint32_t xy_cap;
+    uint32_t *start; /* its paths' first points, and one past the last */
+    uint32_t start_cap;
+} walker;
+
+static int name_is(const parse_node *n, const char *const *names)
+{
+    for (; *names; names++)
+        if (strcmp(n->name, *names) == 0)
+            return 1;
+    return 0;
+}
+
+static const char *const leaf_names[] = {"circle", "square", "polygon", NULL};
+static const char *const op_names[] = {"group",        "union",      "render",
+                                       "color",        "multmatrix", "difference",
+                                       "intersection", NULL};
+
+/* The first node below n (n included) the walk cannot read, or NULL. */
+static const parse_node *uncovered(const parse_node *n, int depth)
+{
+    if (depth > BUILD_REGION_MAX_DEPTH ||
+        (n->modifiers & (PARSE_MOD_DISABLE | PARSE_MOD_BACKGROUND)))
+        return NULL; /* the walk reports the depth; '%' and '*' are not built */
+    if (name_is(n, leaf_names))
+        return NULL;
+    if (!name_is(n, op_names))
+        return n;
+    for (const parse_node *k = n->first_child; k; k = k->next) {
+        const parse_node *miss = uncovered(k, depth + 1);
+        if (miss)
+            return miss;
+    }
+    return NULL;
+}
+
+int build_region_covers(const parse_node *n, const parse_node **miss)
+{
+    *miss = NULL;
+    for (const parse_node *k = n->first_child; k && !*miss; k = k->next)
+        *miss = uncovered(k, 1);
+    if (*miss)
+        return 0;
+    const parse_value *twist = build_arg(n, "twist", -1);
+    if (twist && !(twist->kind == PARSE_NUMBER && twist->u.number == 0))
+        return 0;
+    const parse_value *sv = build_arg(n, "scale", -1);
+    if (sv) {
+        int one = (sv->kind == PARSE_NUMBER && sv->u.number == 1) ||
+                  (sv->kind == PARSE_VECTOR && sv->u.vector.count == 2 &&
+                   sv->u.vector.items[0].kind == PARSE_NUMBER &&
+                   sv->u.vector.items[0].u.number == 1 &&
+                   sv->u.vector.items[1].kind == PARSE_NUMBER &&
+                   sv->u.vector.items[1].u.number == 1);
+        if (!one)
+            return 0;
+    }
+    return 1;
+}
+
+/* Room for count points in w->xy; returns 0 when memory ran out. */
+static int reserve_points(walker *w, uint64_t count)
+{
+    if (count <= w->xy_cap)
+        return 1;
+    if (count > UINT32_MAX / 4)
+        return 0;
+    double *p = realloc(w->xy, (size_t)count * 2 * sizeof *p);
+    if (!p)
+        return 0;
+    w->xy = p;
+    w->xy_cap = (uint32_t)count;
+    return 1;
+}
+
+static int reserve_paths(walker *w, uint64_t count)
+{
+    if (count + 1 <= w->start_cap)
+        return 1;
+    if (count >= UINT32_MAX / 8)
+        return 0;
+    uint32_t *p = realloc(w->start, (size_t)(count + 1) * sizeof *p);
+    if (!p)
+        return 0;
+    w->start = p;
+    w->start_cap = (uint32_t)(count + 1);
+    return 1;
+}
+
+static void put_point(walker *w, uint32_t i, const affine2 *m, double x, double y)
+{
+    affine2_apply(m, x, y, &w->xy[2 * i], &w->xy[2 * i + 1]);
+}
+
+/* square(size = s | [x, y], center = false) */
+static sc_status read_square(walker *w, const parse_node *n, const affine2 *m,
+                             int *pushed)
+{
+    const build_ctx *c = w->c;
+    double sx, sy;
+    int center;
+    sc_status st = build_square(c, n, &sx, &sy, &center);
+    if (st != SC_OK)
+        return st;
+    if (!(sx > 0 && sy > 0 && isfinite(sx) && isfinite(sy)))
+        return SC_OK; /* no area */
+    double x0 = center ? -sx / 2 : 0, y0 = center ? -sy / 2 : 0;
+    if (!reserve_points(w, 4) || !reserve_paths(w, 1))
+        return err_nomem(w->c->error, &n->loc);
+    put_point(w, 0, m, x0, y0);
+    put_point(w, 1, m, x0 + sx, y0);
+    put_point(w, 2, m, x0 + sx, y0 + sy);
+    put_point(w, 3, m, x0, y0 + sy);
+    w->start[0] = 0;
+    w->start[1] = 4;
+    return prim_region_add_polygon(&w->region, w->xy, w->start, 1, pushed)
+               ? SC_OK
+               : err_nomem(w->c->error, &n->loc);
+}
+
+/* circle(r = 1 | d) */
+static sc_status read_circle(walker *w, const parse_node *n, const affine2 *m,
+                             int *pushed)
+{
+    double r = 1, d = NAN, unused;
+    sc_status st;
+    if ((st = build_number(w->c, n, "r", 0, &r)) != SC_OK ||
+        (st = build_number(w->c, n, "d", -1, &d)) != SC_OK ||
+        (st = build_number(w->c, n, "$fn", -1, &unused)) != SC_OK ||
+        (st = build_number(w->c, n, "$fa", -1, &unused)) != SC_OK ||
+        (st = build_number(w->c, n, "$fs", -1, &unused)) != SC_OK)
+        return st;
+    if (!isnan(d))
+        r = d / 2;
+    if (!(r > 0 && isfinite(r)))
+        return SC_OK;
+    return prim_region_add_ellipse(&w->region, m->m, r, pushed)
+               ? SC_OK
+               : err_nomem(w->c->error, &n->loc);
+}
+
+/* polygon(points = [[x, y], ...], paths = [[i, j, ...], ...] | undef) */
+static sc_status read_polygon(walker *w, const parse_node *n, const affine2 *m,
+                              int *pushed)
+{
+    const build_ctx *c = w->c;
+    const parse_value *pts, *paths;
+    sc_status pst = build_polygon(c, n, &pts, &paths);
+    if (pst != SC_OK || !pts)
+        return pst;
+    uint32_t np = pts->u.vector.count;
+    if (paths && paths->u.vector.count == 0)
+        paths = NULL; /* OpenSCAD: one path through all the points */
+    uint32_t count = paths ? paths->u.vector.count : 1;
+    uint64_t total = 0;
+    for (uint32_t k = 0; k < count; k++) {
+        const parse_value *path = paths ? &paths->u.vector.items[k] : NULL;
+        if (path && path->kind != PARSE_VECTOR)
+            return build_wrong_type(c, n, "paths", path, BUILD_POLYGON_PATHS);
+        total += path ? path->u.vector.count : np;
+    }
+    if (!reserve_points(w, total) || !reserve_paths(w, count))
+        return err_nomem(w->c->error, &n->loc);
+    uint32_t at = 0;
+    for (uint32_t k = 0; k < count; k++) {
+        const parse_value *path = paths ? &paths->u.vector.items[k] : NULL;
+        uint32_t len = path ? path->u.vector.count : np;
+        w->start[k] = at;
+        for (uint32_t i = 0; i < len; i++) {
+            uint32_t index = i;
+            if (path) {
+                sc_status ist =
+                    build_polygon_index(c, &path->u.vector.items[i], k, np, &index);
+                if (ist != SC_OK)
+                    return ist;
+            }
+            const parse_value *v = &pts->u.vector.items[index];
+            put_point(w, at++, m, v->u.vector.items[0].u.number,
+                      v->u.vector.items[1].u.number);
+        }
+    }
+    w->start[count] = at;
+    if (!prim_region_add_polygon(&w->region, w->xy, w->start, count, pushed))
+        return err_nomem(w->c->error, &n->loc);
+    if (w->region.edge_count > PRIM_EXTRUSION_MAX_EDGES)
+        return err_set(c->error, SC_ERR_LIMIT, &n->loc,
+                       "linear_extrude has too many polygon edges (limit is %d)",
+                       PRIM_EXTRUSION_MAX_EDGES);
+    return SC_OK;
+}
+
+static sc_status walk(walker *w, const parse_node *n, const affine2 *m, int depth,
+                      int *pushed);
+
+/* The children of n combined by op; *pushed says whether a region was
+ * pushed (an empty result pushes nothing and leaves no trace). */
+static sc_status walk_children(walker *w, const parse_node *n, const affine2 *m,
+                               prim_region_op op, int depth, int *pushed)
+{
+    prim_region *r = &w->region;
+    uint32_t nodes = r->node_count, edges = r->edge_count, ellipses = r->ellipse_count;
+    int operands = 0, seen = 0, empty = 0;
+    for (const parse_node *k = n->first_child; k; k = k->next) {
+        if (k->modifiers & (PARSE_MOD_DISABLE | PARSE_MOD_BACKGROUND))
+            continue;
+        int p = 0;
+        sc_status st = walk(w, k, m, depth + 1, &p);
+        if (st != SC_OK)
+            return st;
+        if (!p && (op == PRIM_REGION_INTERSECTION ||
+                   (op == PRIM_REGION_DIFFERENCE && seen == 0)))
+            empty = 1;
+        seen++;
+        if (p && !empty && ++operands >= 2 && !prim_region_add_op(r, op))
+            return err_nomem(w->c->error, &n->loc);
+    }
+    if (empty) {
+        r->node_count = nodes;
+        r->edge_count = edges;
+        r->ellipse_count = ellipses;
+        operands = 0;
+    }
+    *pushed = operands > 0;
+    return SC_OK;
+}
+
+static sc_status walk(walker *w, const parse_node *n, const affine2 *m, int depth,
+                      int *pushed)
+{
+    *pushed = 0;
+    if (depth > BUILD_REGION_MAX_DEPTH)
+        return err_set(w->c->error, SC_ERR_LIMIT, &n->loc,
+                       "too many nested nodes in linear_extrude (limit is %d)",
+                       BUILD_REGION_MAX_DEPTH);
+    if (n->modifiers & (PARSE_MOD_DISABLE | PARSE_MOD_BACKGROUND))
+        return SC_OK;
+    const char *name = n->name;
+    if (strcmp(name, "square") == 0)
+        return read_square(w, n, m, pushed);
+    if (strcmp(name, "circle") == 0)
+        return read_circle(w, n, m, pushed);
+    if (strcmp(name, "polygon") == 0)
+        return read_polygon(w, n, m, pushed);
+    if (strcmp(name, "multmatrix") == 0) {
+        affine2 inner;
+        sc_status st = build_matrix_xy(w->c, n, m->m, inner.m);
+        if (st != SC_OK)
+            return st;
+        prim_region *r = &w->region;
+        uint32_t nodes = r->node_count, edges = r->edge_count,
+                 ellipses = r->ellipse_count;
+        st = walk_children(w, n, &inner, PRIM_REGION_UNION, depth, pushed);
+        double det = inner.m[0][0] * inner.m[1][1] - inner.m[0][1] * inner.m[1][0];
+        if (st == SC_OK && *pushed && !(det != 0)) {
+            /* flattened onto a line or a point: no area (the children were
+             * still read, for their errors) */
+            r->node_count = nodes;
+            r->edge_count = edges;
+            r->ellipse_count = ellipses;
+            *pushed = 0;
+        }
+        return st;
+    }
+    if (strcmp(name, "difference") == 0)
+        return walk_children(w, n, m, PRIM_REGION_DIFFERENCE, depth, pushed);
+    if (strcmp(name, "intersection") == 0)
+        return walk_children(w, n, m, PRIM_REGION_INTERSECTION, depth, pushed);
+    if (name_is(n, op_names))
+        return walk_children(w, n, m, PRIM_REGION_UNION, depth, pushed);
+    return err_set(w->c->error, SC_ERR_UNSUPPORTED, &n->loc,
+                   "'%s' inside linear_extrude is not supported yet", name);
+}
+
+sc_status build_region_extrude(const build_ctx *c, const parse_node *n, int emit,
+                               prim *out, const char **empty)
+{
+    double height = 100;
+    sc_status st = build_number(c, n, "height", 0, &height);
+    if (st != SC_OK)
+        return st;
+    const parse_value *cv = build_arg(n, "center", 1);
+    if (cv && cv->kind != PARSE_BOOL)
+        return build_wrong_type(c, n, "center", cv, "true or false");
+    int center = cv ? cv->u.boolean : 0;
+    walker w;
+    memset(&w, 0, sizeof w);
+    w.c = c;
+    affine2 id = affine2_identity();
+    int pushed = 0;
+    st = walk_children(&w, n, &id, PRIM_REGION_UNION, 0, &pushed);
+    if (st == SC_OK && emit) {
+        double z0 = center ? -height / 2 : 0, z1 = z0 + height;
+        if (!(height > 0 && isfinite(height)) || !pushed || !(z0 < z1)) {
+            *empty = "linear_extrude without height or area is empty";
+        } else {
+            const prim_extrusion *e = prim_extrusion_create(c->csg, &w.region, z0, z1);
+            if (!e) {
+                st = err_nomem((&w)->c->error, &n->loc);
+            } else {
+                memset(out, 0, sizeof *out);
+                out->kind = PRIM_EXTRUSION;
+                out->u.extrusion.ext = e;
+            }
+        }
+    }
+    prim_region_free(&w.region);
+    free(w.xy);
+    free(w.start);
+    return st;
+}

@@ -1,0 +1,623 @@
+/* rotate_extrude(angle, convexity, $fn, $fa, $fs) of 2D children.
+ *
+ * The children are gathered into a profile in OpenSCAD's 2D coordinates
+ * (x, y): regions, each a set of closed paths read even-odd (a polygon
+ * with its paths, a square) or a circle, under group, union, render, color
+ * and multmatrix (its xy part). The profile is their union. Every region
+ * also keeps the polygon OpenSCAD makes of it (a circle's points for its
+ * $fn, $fa, $fs), which gives OpenSCAD's checks and the faithful mesh.
+ * Other 2D nodes (difference, intersection, offset, text, hull, ...) are
+ * "not supported yet" at their position; a 2D engine that turns such a
+ * node into paths plugs in at gather_other, adding one region.
+ *
+ * OpenSCAD 2021.01 (GeometryEvaluator.cc, rotatePolygon), whose rules this
+ * follows:
+ *   - angle: 360 when absent or not finite, and when <= -360 or > 360; 0
+ *     gives nothing. Positive angles sweep counter-clockwise from +x,
+ *     negative ones clockwise.
+ *   - all x must have one sign: min_x and max_x start at 0 and follow the
+ *     points in order; when max_x - min_x exceeds both max_x and |min_x|
+ *     (points strictly on both sides) it stops with "all points for
+ *     rotate_extrude() must have the same X coordinate sign (range is
+ *     min_x -> max_x)", the range so far, two decimals. A profile wholly at
+ *     x <= 0 is allowed: a point (x, y) goes to (x cos a, x sin a, y), so
+ *     it sweeps the mirrored profile from 180 degrees.
+ *   - fragments: get_fragments_from_r(max_x - min_x, $fn, $fs, $fa)
+ *     * |angle| / 360, at least 1, truncated.
+ *   - rings: for 360, ring k at a = -90 + k * 360 / f (k = 0 .. f - 1,
+ *     the last quad strip closing onto ring 0); otherwise f + 1 rings,
+ *     ring 0 at a = 90 and ring k at 90 - k * angle / f. A profile point
+ *     goes to (x sin a, x cos a, y). Each profile edge between two rings is
+ *     two triangles, and a partial angle closes with the profile itself as
+ *     the start and end caps.
+ *
+ * Exact mode builds PRIM_REVOLVE (prim_revolve.c): edges in (r, z) =
+ * (|x|, y), each path wound so that its region lies on its left (outlines
+ * counter-clockwise, holes clockwise, holes found by nesting within their
+ * polygon as linear_extrude does), and circles as discs (a torus each). A
+ * circle under a transform that is not a similarity (an ellipse, whose
+ * revolution is a quartic that is no torus) and a circle whose exact disc
+ * would reach across the axis (its polygon does not) are their OpenSCAD
+ * polygon. Faithful mode builds OpenSCAD's mesh through build_mesh_prim.
+ * The walk over the children recurses with a depth guard.
+ */
+#include "build/build_revolve.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "base/error.h"
+#include "base/grow.h"
+#include "build/build_mesh.h"
+#include "build/build_twod.h"
+#include "csg/prim_revolve.h"
+#include "model/faithful.h"
+
+enum { BUILD_REVOLVE_MAX_DEPTH = 1000 };
+
+/* An exact circle: centre, radius, and the path holding its polygon. */
+typedef struct profile_circle {
+    double cx, cy, r;
+    uint32_t path;
+    int exact; /* the transform was a similarity */
+} profile_circle;
+
+typedef struct profile {
+    double *xy; /* 2 per point */
+    uint32_t count, cap;
+    uint32_t *start; /* path p is points start[p] .. start[p + 1] - 1 */
+    uint32_t *region;
+    int *hole;
+    uint32_t paths, paths_cap;
+    uint32_t regions;
+    profile_circle *circles;
+    uint32_t circle_count, circle_cap;
+} profile;
+
+static void profile_free(profile *p)
+{
+    free(p->xy);
+    free(p->start);
+    free(p->region);
+    free(p->hole);
+    free(p->circles);
+}
+
+/* Opens a new region; the paths that follow belong to it. */
+static void begin_region(profile *p)
+{
+    p->regions++;
+}
+
+static int begin_path(profile *p)
+{
+    uint32_t cap = p->paths_cap;
+    if (!grow_array32((void **)&p->start, &cap, p->paths + 2, sizeof *p->start))
+        return 0;
+    int *hole = realloc(p->hole, (size_t)cap * sizeof *hole);
+    if (!hole)
+        return 0;
+    p->hole = hole;
+    uint32_t *region = realloc(p->region, (size_t)cap * sizeof *region);
+    if (!region)
+        return 0;
+    p->region = region;
+    p->paths_cap = cap;
+    p->start[p->paths] = p->count;
+    p->hole[p->paths] = 0;
+    p->region[p->paths] = p->regions - 1;
+    p->paths++;
+    p->start[p->paths] = p->count;
+    return 1;
+}
+
+static int add_point(profile *p, const affine2 *m, double x, double y)
+{
+    uint32_t need = 2 * (p->count + 1);
+    uint32_t cap2 = p->cap * 2;
+    if (need > cap2) {
+        uint32_t cap = p->cap;
+        if (!grow_array32((void **)&p->xy, &cap, need, sizeof *p->xy))
+            return 0;
+        p->cap = cap / 2;
+    }
+    affine2_apply(m, x, y, &p->xy[2 * p->count], &p->xy[2 * p->count + 1]);
+    p->count++;
+    p->start[p->paths] = p->count;
+    return 1;
+}
+
+static double path_area(const profile *p, uint32_t k)
+{
+    double a = 0;
+    uint32_t s = p->start[k], e = p->start[k + 1];
+    for (uint32_t i = s; i < e; i++) {
+        uint32_t j = i + 1 < e ? i + 1 : s;
+        a += p->xy[2 * i] * p->xy[2 * j + 1] - p->xy[2 * j] * p->xy[2 * i + 1];
+    }
+    return a / 2;
+}
+
+/* Even-odd: is (x, y) inside path k? */
+static int in_path(const profile *p, uint32_t k, double x, double y)
+{
+    int in = 0;
+    uint32_t s = p->start[k], e = p->start[k + 1];
+    for (uint32_t i = s; i < e; i++) {
+        uint32_t j = i + 1 < e ? i + 1 : s;
+        double xi = p->xy[2 * i], yi = p->xy[2 * i + 1];
+        double xj = p->xy[2 * j], yj = p->xy[2 * j + 1];
+        if ((yi > y) != (yj > y) && x < xi + (y - yi) * (xj - xi) / (yj - yi))
+            in = !in;
+    }
+    return in;
+}
+
+/* Marks the holes among paths first .. p->paths - 1 (one polygon): a path
+ * inside an odd number of the others. */
+static void mark_holes(profile *p, uint32_t first)
+{
+    for (uint32_t k = first; k < p->paths; k++) {
+        if (p->start[k + 1] - p->start[k] < 3)
+            continue;
+        double x = p->xy[2 * p->start[k]], y = p->xy[2 * p->start[k] + 1];
+        int depth = 0;
+        for (uint32_t j = first; j < p->paths; j++)
+            if (j != k && p->start[j + 1] - p->start[j] >= 3 && in_path(p, j, x, y))
+                depth++;
+        p->hole[k] = depth % 2;
+    }
+}
+
+static sc_status read_square(const build_ctx *c, const parse_node *n, const affine2 *m,
+                             profile *p)
+{
+    double sx, sy;
+    int center;
+    sc_status st = build_square(c, n, &sx, &sy, &center);
+    if (st != SC_OK)
+        return st;
+    if (!(sx > 0 && sy > 0 && isfinite(sx) && isfinite(sy)))
+        return SC_OK; /* no area */
+    double x0 = center ? -sx / 2 : 0, y0 = center ? -sy / 2 : 0;
+    begin_region(p);
+    if (!begin_path(p) || !add_point(p, m, x0, y0) || !add_point(p, m, x0 + sx, y0) ||
+        !add_point(p, m, x0 + sx, y0 + sy) || !add_point(p, m, x0, y0 + sy))
+        return err_nomem(c->error, &n->loc);
+    return SC_OK;
+}
+
+/* Is the 2x2 part of m a rotation or reflection times a uniform scale? */
+static int similarity(const affine2 *m)
+{
+    double a = m->m[0][0], b = m->m[0][1], cc = m->m[1][0], d = m->m[1][1];
+    double size = fmax(fmax(fabs(a), fabs(b)), fmax(fabs(cc), fabs(d)));
+    double tol = 1e-9 * size;
+    return (fabs(a - d) <= tol && fabs(b + cc) <= tol) ||
+           (fabs(a + d) <= tol && fabs(b - cc) <= tol);
+}
+
+static sc_status read_circle(const build_ctx *c, const parse_node *n, const affine2 *m,
+                             profile *p)
+{
+    double r = 1, d = NAN, fn = 0, fa = 12, fs = 2;
+    sc_status st;
+    if ((st = build_number(c, n, "r", 0, &r)) != SC_OK ||
+        (st = build_number(c, n, "d", -1, &d)) != SC_OK ||
+        (st = build_number(c, n, "$fn", -1, &fn)) != SC_OK ||
+        (st = build_number(c, n, "$fa", -1, &fa)) != SC_OK ||
+        (st = build_number(c, n, "$fs", -1, &fs)) != SC_OK)
+        return st;
+    if (!isnan(d))
+        r = d / 2;
+    if (!(r > 0 && isfinite(r)))
+        return SC_OK;
+    long f = faithful_fragments(r, fn, fs, fa);
+    if (f < 0)
+        return err_set(c->error, SC_ERR_LIMIT, &n->loc,
+                       "circle has too many fragments (limit is %d)",
+                       FAITHFUL_MAX_FRAGMENTS);
+    if (!grow_array32((void **)&p->circles, &p->circle_cap, p->circle_count + 1,
+                      sizeof *p->circles))
+        return err_nomem(c->error, &n->loc);
+    begin_region(p);
+    if (!begin_path(p))
+        return err_nomem(c->error, &n->loc);
+    double det = m->m[0][0] * m->m[1][1] - m->m[0][1] * m->m[1][0];
+    p->circles[p->circle_count++] = (profile_circle){
+        m->m[0][2], m->m[1][2], r * sqrt(fabs(det)), p->paths - 1, similarity(m)};
+    for (long k = 0; k < f; k++) {
+        double a = 360.0 * (double)k / (double)f;
+        if (!add_point(p, m, r * faithful_cos_deg(a), r * faithful_sin_deg(a)))
+            return err_nomem(c->error, &n->loc);
+    }
+    return SC_OK;
+}
+
+static sc_status read_polygon(const build_ctx *c, const parse_node *n, const affine2 *m,
+                              profile *p)
+{
+    const parse_value *pts, *paths;
+    sc_status pst = build_polygon(c, n, &pts, &paths);
+    if (pst != SC_OK || !pts)
+        return pst;
+    uint32_t np = pts->u.vector.count;
+    begin_region(p);
+    uint32_t first = p->paths;
+    uint32_t count = paths ? paths->u.vector.count : 1;
+    for (uint32_t k = 0; k < count; k++) {
+        const parse_value *path = paths ? &paths->u.vector.items[k] : NULL;
+        if (path && path->kind != PARSE_VECTOR)
+            return build_wrong_type(c, n, "paths", path, BUILD_POLYGON_PATHS);
+        uint32_t len = path ? path->u.vector.count : np;
+        if (!begin_path(p))
+            return err_nomem(c->error, &n->loc);
+        for (uint32_t i = 0; i < len; i++) {
+            uint32_t index = i;
+            if (path) {
+                sc_status ist =
+                    build_polygon_index(c, &path->u.vector.items[i], k, np, &index);
+                if (ist != SC_OK)
+                    return ist;
+            }
+            const parse_value *v = &pts->u.vector.items[index];
+            if (!add_point(p, m, v->u.vector.items[0].u.number,
+                           v->u.vector.items[1].u.number))
+                return err_nomem(c->error, &n->loc);
+        }
+    }
+    mark_holes(p, first);
+    return SC_OK;
+}
+
+/* Adds the contours of a region the 2D engine (src/twod/) computed as one
+ * region of the profile, holes found by nesting as for a polygon's paths. */
+static sc_status add_twod(const build_ctx *c, const parse_node *n, const twod_region *r,
+                          const affine2 *m, profile *p)
+{
+    if (r->contour_count == 0)
+        return SC_OK;
+    uint32_t first = p->paths;
+    begin_region(p);
+    for (uint32_t k = 0; k < r->contour_count; k++) {
+        if (!begin_path(p))
+            return err_nomem(c->error, &n->loc);
+        for (uint32_t i = r->start[k]; i < r->start[k + 1]; i++) {
+            if (!add_point(p, m, r->xy[2 * i], r->xy[2 * i + 1]))
+                return err_nomem(c->error, &n->loc);
+        }
+    }
+    mark_holes(p, first);
+    return SC_OK;
+}
+
+/* The 2D nodes without a reader here (difference, intersection, offset,
+ * hull, minkowski): the 2D engine evaluates the node as OpenSCAD does. */
+static sc_status gather_other(const build_ctx *c, const parse_node *n, const affine2 *m,
+                              profile *p)
+{
+    twod_region r;
+    twod_init(&r);
+    sc_status st = build_twod_node(c, n, "rotate_extrude", &r);
+    if (st == SC_OK)
+        st = add_twod(c, n, &r, m, p);
+    twod_free(&r);
+    return st;
+}
+
+static sc_status gather(const build_ctx *c, const parse_node *n, const affine2 *m,
+                        profile *p, int depth)
+{
+    if (depth > BUILD_REVOLVE_MAX_DEPTH)
+        return err_set(c->error, SC_ERR_LIMIT, &n->loc,
+                       "too many nested nodes in rotate_extrude (limit is %d)",
+                       BUILD_REVOLVE_MAX_DEPTH);
+    if (n->modifiers & (PARSE_MOD_DISABLE | PARSE_MOD_BACKGROUND))
+        return SC_OK;
+    const char *name = n->name;
+    if (strcmp(name, "square") == 0)
+        return read_square(c, n, m, p);
+    if (strcmp(name, "circle") == 0)
+        return read_circle(c, n, m, p);
+    if (strcmp(name, "polygon") == 0)
+        return read_polygon(c, n, m, p);
+    affine2 inner = *m;
+    if (strcmp(name, "multmatrix") == 0) {
+        sc_status st = build_matrix_xy(c, n, m->m, inner.m);
+        if (st != SC_OK)
+            return st;
+    } else if (strcmp(name, "group") != 0 && strcmp(name, "union") != 0 &&
+               strcmp(name, "render") != 0 && strcmp(name, "color") != 0) {
+        return gather_other(c, n, m, p);
+    }
+    for (const parse_node *k = n->first_child; k; k = k->next) {
+        sc_status st = gather(c, k, &inner, p, depth + 1);
+        if (st != SC_OK)
+            return st;
+    }
+    return SC_OK;
+}
+
+/* Does path k go the way its region needs (outline counter-clockwise,
+ * hole clockwise) in the plane (sign * x, y)? */
+static int path_reversed(const profile *p, uint32_t k, double sign)
+{
+    return (sign * path_area(p, k) > 0) == p->hole[k];
+}
+
+/* Index of the i-th point of path k, oriented. */
+static uint32_t oriented(const profile *p, uint32_t k, int reverse, uint32_t i)
+{
+    uint32_t s = p->start[k], len = p->start[k + 1] - s;
+    return s + (reverse ? len - 1 - i : i);
+}
+
+/* OpenSCAD's mesh (see the top) through build_mesh_prim. */
+static sc_status build_faithful(const build_ctx *c, const parse_node *n, const profile *p,
+                                double angle, long fragments, prim *out,
+                                const char **empty)
+{
+    int full = angle == 360;
+    uint32_t f = (uint32_t)fragments;
+    uint32_t rings = full ? f : f + 1;
+    if ((uint64_t)rings * p->count > BUILD_REVOLVE_MAX_MESH_POINTS)
+        return err_set(c->error, SC_ERR_LIMIT, &n->loc,
+                       "rotate_extrude: %u rings of %u points are too many (limit is %u "
+                       "points)",
+                       rings, p->count, BUILD_REVOLVE_MAX_MESH_POINTS);
+    size_t np = (size_t)rings * p->count;
+    size_t ntri = (size_t)2 * f * p->count;
+    size_t nfaces = ntri + (full ? 0 : 2 * (size_t)p->paths);
+    vec3 *pts = malloc((np ? np : 1) * sizeof *pts);
+    uint32_t *idx = malloc((3 * ntri + 2 * (size_t)p->count + 1) * sizeof *idx);
+    uint32_t *fs = malloc((nfaces + 1) * sizeof *fs);
+    sc_status st = SC_OK;
+    if (!pts || !idx || !fs) {
+        st = err_nomem(c->error, &n->loc);
+        goto done;
+    }
+    for (uint32_t k = 0; k < rings; k++) {
+        double a = full ? -90 + (double)k * 360.0 / (double)f
+                        : (k == 0 ? 90 : 90 - (double)k * angle / (double)f);
+        double sa = faithful_sin_deg(a), ca = faithful_cos_deg(a);
+        for (uint32_t i = 0; i < p->count; i++) {
+            double x = p->xy[2 * i], y = p->xy[2 * i + 1];
+            pts[(size_t)k * p->count + i] = v3(x * sa, x * ca, y);
+        }
+    }
+    uint32_t ni = 0, nf = 0;
+    for (uint32_t k = 0; k < p->paths; k++) {
+        uint32_t len = p->start[k + 1] - p->start[k];
+        if (len < 3)
+            continue;
+        int rev = path_reversed(p, k, 1);
+        for (uint32_t j = 0; j < f; j++) {
+            size_t r0 = (size_t)j * p->count, r1 = (size_t)((j + 1) % rings) * p->count;
+            for (uint32_t i = 0; i < len; i++) {
+                uint32_t a = oriented(p, k, rev, i),
+                         b = oriented(p, k, rev, (i + 1) % len);
+                /* OpenSCAD's two triangles of the quad */
+                fs[nf++] = ni;
+                idx[ni++] = (uint32_t)(r0 + a);
+                idx[ni++] = (uint32_t)(r1 + b);
+                idx[ni++] = (uint32_t)(r0 + b);
+                fs[nf++] = ni;
+                idx[ni++] = (uint32_t)(r0 + a);
+                idx[ni++] = (uint32_t)(r1 + a);
+                idx[ni++] = (uint32_t)(r1 + b);
+            }
+        }
+        if (!full) {
+            /* start cap: the path as oriented on ring 0; end cap: reversed on
+             * ring f (opposite to the strips' edges there) */
+            fs[nf++] = ni;
+            for (uint32_t i = 0; i < len; i++)
+                idx[ni++] = oriented(p, k, rev, i);
+            fs[nf++] = ni;
+            for (uint32_t i = 0; i < len; i++)
+                idx[ni++] =
+                    (uint32_t)((size_t)f * p->count) + oriented(p, k, rev, len - 1 - i);
+        }
+    }
+    fs[nf] = ni;
+    st = build_mesh_prim(c, &n->loc, "rotate_extrude", pts, (uint32_t)np, idx, fs, nf,
+                         out, empty);
+done:
+    free(pts);
+    free(idx);
+    free(fs);
+    return st;
+}
+
+/* The exact leaf (prim_revolve.c). sign is -1 for a profile at x <= 0. */
+static sc_status build_exact(const build_ctx *c, const parse_node *n, const profile *p,
+                             double angle, double sign, prim *out)
+{
+    /* which paths a disc replaces, and the size of the result */
+    uint32_t edges = 0, discs = 0;
+    uint8_t *replaced = calloc(p->paths ? p->paths : 1, 1);
+    uint32_t *region_map = malloc((p->regions ? p->regions : 1) * sizeof *region_map);
+    sc_status st = SC_OK;
+    if (!replaced || !region_map) {
+        st = err_nomem(c->error, &n->loc);
+        goto done;
+    }
+    for (uint32_t k = 0; k < p->circle_count; k++) {
+        const profile_circle *ci = &p->circles[k];
+        if (ci->exact && ci->r <= sign * ci->cx) {
+            replaced[ci->path] = 1;
+            discs++;
+        }
+    }
+    for (uint32_t k = 0; k < p->paths; k++) {
+        uint32_t len = p->start[k + 1] - p->start[k];
+        if (!replaced[k] && len >= 3)
+            edges += len;
+    }
+    if ((uint64_t)edges + 2 * (uint64_t)discs > PRIM_REVOLVE_MAX_EDGES) {
+        st =
+            err_set(c->error, SC_ERR_LIMIT, &n->loc,
+                    "rotate_extrude profile has %llu edges (limit is %d; a circle counts "
+                    "2)",
+                    (unsigned long long)edges + 2 * (unsigned long long)discs,
+                    PRIM_REVOLVE_MAX_EDGES);
+        goto done;
+    }
+    for (uint32_t k = 0; k < p->regions; k++)
+        region_map[k] = UINT32_MAX;
+    prim_revolve *rv = csg_builder_alloc(c->csg, sizeof *rv);
+    prim_revolve_edge *ev = csg_builder_alloc(c->csg, (edges ? edges : 1) * sizeof *ev);
+    prim_revolve_disc *dv = csg_builder_alloc(c->csg, (discs ? discs : 1) * sizeof *dv);
+    if (!rv || !ev || !dv) {
+        st = err_nomem(c->error, &n->loc);
+        goto done;
+    }
+    memset(rv, 0, sizeof *rv);
+    uint32_t regions = 0;
+    double r_lo = INFINITY, r_hi = -INFINITY, z_lo = INFINITY, z_hi = -INFINITY;
+    uint32_t ne = 0, nd = 0;
+    for (uint32_t k = 0; k < p->paths; k++) {
+        uint32_t len = p->start[k + 1] - p->start[k];
+        if (replaced[k] || len < 3)
+            continue;
+        uint32_t *reg = &region_map[p->region[k]];
+        if (*reg == UINT32_MAX)
+            *reg = regions++;
+        int rev = path_reversed(p, k, sign);
+        for (uint32_t i = 0; i < len; i++) {
+            uint32_t a = oriented(p, k, rev, i), b = oriented(p, k, rev, (i + 1) % len);
+            prim_revolve_edge *e = &ev[ne++];
+            e->r0 = sign * p->xy[2 * a];
+            e->z0 = p->xy[2 * a + 1];
+            e->r1 = sign * p->xy[2 * b];
+            e->z1 = p->xy[2 * b + 1];
+            e->region = *reg;
+            r_lo = fmin(r_lo, e->r0);
+            r_hi = fmax(r_hi, e->r0);
+            z_lo = fmin(z_lo, e->z0);
+            z_hi = fmax(z_hi, e->z0);
+        }
+    }
+    for (uint32_t k = 0; k < p->circle_count; k++) {
+        const profile_circle *ci = &p->circles[k];
+        if (!replaced[ci->path])
+            continue;
+        uint32_t *reg = &region_map[p->region[ci->path]];
+        if (*reg == UINT32_MAX)
+            *reg = regions++;
+        prim_revolve_disc *d = &dv[nd++];
+        d->rc = sign * ci->cx;
+        d->zc = ci->cy;
+        d->a = ci->r;
+        d->region = *reg;
+        r_lo = fmin(r_lo, d->rc - d->a);
+        r_hi = fmax(r_hi, d->rc + d->a);
+        z_lo = fmin(z_lo, d->zc - d->a);
+        z_hi = fmax(z_hi, d->zc + d->a);
+    }
+    rv->edges = ev;
+    rv->discs = dv;
+    rv->edge_count = ne;
+    rv->disc_count = nd;
+    rv->region_count = regions;
+    rv->r_lo = fmax(0, r_lo);
+    rv->r_hi = r_hi;
+    rv->z_lo = z_lo;
+    rv->z_hi = z_hi;
+    if (angle != 360) {
+        /* The wedge from phi0 over |angle| degrees, counter-clockwise. */
+        double phi0 = angle > 0 ? 0 : angle;
+        if (sign < 0)
+            phi0 += 180;
+        double sweep = fabs(angle);
+        rv->partial = 1;
+        rv->sweep = sweep;
+        rv->start[0] = faithful_cos_deg(phi0);
+        rv->start[1] = faithful_sin_deg(phi0);
+        rv->end[0] = faithful_cos_deg(phi0 + sweep);
+        rv->end[1] = faithful_sin_deg(phi0 + sweep);
+    }
+    memset(out, 0, sizeof *out);
+    out->kind = PRIM_REVOLVE;
+    out->u.revolve.rev = rv;
+done:
+    free(replaced);
+    free(region_map);
+    return st;
+}
+
+sc_status build_rotate_extrude(const build_ctx *c, const parse_node *n, int emit,
+                               prim *out, const char **empty)
+{
+    double angle = 360, fn = 0, fa = 12, fs = 2;
+    sc_status st;
+    if ((st = build_number(c, n, "angle", -1, &angle)) != SC_OK ||
+        (st = build_number(c, n, "$fn", -1, &fn)) != SC_OK ||
+        (st = build_number(c, n, "$fa", -1, &fa)) != SC_OK ||
+        (st = build_number(c, n, "$fs", -1, &fs)) != SC_OK)
+        return st;
+    const parse_value *cv = build_arg(n, "convexity", -1);
+    if (cv && cv->kind != PARSE_NUMBER)
+        return build_wrong_type(c, n, "convexity", cv, "a number");
+    if (!isfinite(angle) || angle <= -360 || angle > 360)
+        angle = 360;
+    if (build_arg(n, "file", -1))
+        return err_set(c->error, SC_ERR_UNSUPPORTED, &n->loc,
+                       "rotate_extrude of a file is not supported yet (use a child "
+                       "import())");
+    profile p;
+    memset(&p, 0, sizeof p);
+    affine2 id = affine2_identity();
+    if (c->faithful) {
+        /* OpenSCAD unites the children in 2D first: its rings follow the
+         * united outline's points. */
+        twod_region r;
+        twod_init(&r);
+        st = build_twod_children(c, n, &r);
+        if (st == SC_OK)
+            st = add_twod(c, n, &r, &id, &p);
+        twod_free(&r);
+    } else {
+        for (const parse_node *k = n->first_child; k && st == SC_OK; k = k->next)
+            st = gather(c, k, &id, &p, 1);
+    }
+    /* OpenSCAD's check, in its order, with its running range. */
+    double min_x = 0, max_x = 0;
+    for (uint32_t i = 0; st == SC_OK && i < p.count; i++) {
+        min_x = fmin(min_x, p.xy[2 * i]);
+        max_x = fmax(max_x, p.xy[2 * i]);
+        if (max_x - min_x > max_x && max_x - min_x > fabs(min_x))
+            st =
+                err_set(c->error, SC_ERR_SEMANTIC, &n->loc,
+                        "all points for rotate_extrude() must have the same X coordinate "
+                        "sign (range is %.2f -> %.2f)",
+                        min_x, max_x);
+    }
+    if (st == SC_OK && emit) {
+        double area = 0;
+        for (uint32_t k = 0; k < p.paths; k++)
+            if (p.start[k + 1] - p.start[k] >= 3)
+                area += fabs(path_area(&p, k));
+        if (angle == 0) {
+            *empty = "rotate_extrude with angle 0 is empty";
+        } else if (!(area > 0)) {
+            *empty = "rotate_extrude without area is empty";
+        } else if (c->faithful) {
+            long f = faithful_fragments(max_x - min_x, fn, fs, fa);
+            if (f < 0)
+                st = err_set(c->error, SC_ERR_LIMIT, &n->loc,
+                             "faithful mode: $fn, $fa and $fs of radius %g give too many "
+                             "fragments (limit is %d)",
+                             max_x - min_x, FAITHFUL_MAX_FRAGMENTS);
+            else
+                st = build_faithful(c, n, &p, angle,
+                                    (long)fmax((double)f * fabs(angle) / 360, 1), out,
+                                    empty);
+        } else {
+            st = build_exact(c, n, &p, angle, min_x < 0 ? -1 : 1, out);
+        }
+    }
+    profile_free(&p);
+    return st;
+}

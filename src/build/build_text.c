@@ -1,0 +1,905 @@
+/* text(): OpenSCAD 2021.01's text layout, as glyph outlines of lines and
+ * quadratic and cubic Bezier curves, and linear_extrude of it.
+ *
+ *   text(text, size = 10, font, direction, language = "en", script,
+ *        halign = "left", valign = "baseline", spacing = 1, $fn, $fa, $fs)
+ *
+ * Layout, step by step as OpenSCAD's FreetypeRenderer does it:
+ *   - font: fontconfig matches the name ("Liberation Sans:style=Regular"
+ *     when it is empty) as an outline, scalable font; the face's Unicode
+ *     character map is selected. A name whose family fontconfig does not
+ *     have matches some other family, silently in OpenSCAD; here with a
+ *     warning that names both.
+ *   - script and direction: when not given, the script of the text's
+ *     characters (ignoring common and inherited ones; mixed scripts give
+ *     "unknown") and that script's horizontal direction.
+ *   - FreeType at char size 1e5 (26.6 points, 100 dpi), glyphs loaded with
+ *     FreeType's default (hinted) outlines, shaped by HarfBuzz at that size.
+ *   - an outline point v is FreeType's coordinate over scale = 1e5, while
+ *     advances and offsets are HarfBuzz's over 1.024e5 (OpenSCAD keeps this
+ *     2.4 % ratio for compatibility); a point of glyph g lands at
+ *     size * ((v + offset_g) + advance_g), advance_g the sum of the earlier
+ *     glyphs' advances times spacing;
+ *   - horizontal text: width = sum of advances times spacing, ascent and
+ *     descent the largest of the glyphs' grid-fitted boxes above and below
+ *     the baseline; halign right/center shifts by -width or -width / 2,
+ *     valign top/center/bottom by -ascent, (descent - ascent) / 2, descent.
+ *     Vertical text: width the widest box, the advances summed as ascent.
+ *     An unknown halign or valign is left or baseline, with a warning.
+ *
+ * Curves: FreeType's conic (quadratic) and cubic segments are kept as they
+ * are for the exact outline prism. OpenSCAD flattens each into n points,
+ * n = max(floor(fragments(size) / 8) + 1, 2) with its circle fragment rule
+ * (faithful.h) at radius size: point k of n at a = k * (1 / n), as
+ * pen (1-a)^2 + c1 * 2 (1-a) a + to a^2 (cubic likewise with pow), in the
+ * glyph's own units before the offset and size; faithful mode does exactly
+ * that. OpenSCAD then unions the glyph polygons with Clipper, by the
+ * nonzero rule, on a grid of 2^-16 (coordinates truncated).
+ *
+ * Fill: the nonzero rule. TrueType fonts wind outlines clockwise,
+ * PostScript ones counter-clockwise; each glyph is turned (all its contours
+ * reversed) so that its outline runs counter-clockwise in the extrusion's
+ * frame, so overlapping glyphs and mirrored copies unite.
+ *
+ * fontconfig's configuration is its own (the process's default, built on
+ * first use); the FreeType library and face live for one node's layout.
+ */
+#include "build/build_text.h"
+
+#include <ctype.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include <fontconfig/fontconfig.h>
+#include <ft2build.h>
+#include FT_FREETYPE_H
+#include FT_GLYPH_H
+#include FT_OUTLINE_H
+#include <hb-ft.h>
+#include <hb.h>
+
+#include "base/error.h"
+#include "base/grow.h"
+#include "build/build_mesh.h"
+#include "model/faithful.h"
+
+enum { TEXT_MAX_DEPTH = 1000 };
+
+static const double ft_scale = 1e5;
+static const double hb_unscale = 1.0 / 1.024e5;
+static const char default_font[] = "Liberation Sans:style=Regular";
+
+/* fontconfig 2.14.1 (Debian 12) loses 288 bytes while it parses its
+ * configuration, once per process (seen with a five-line program that only
+ * calls FcFontMatch). Sanitizer builds would report it as our leak; this
+ * tells LeakSanitizer to ignore leaks allocated inside fontconfig. */
+#if defined(__has_feature)
+#if __has_feature(address_sanitizer)
+#define TEXT_UNDER_ASAN 1
+#endif
+#endif
+#if defined(__SANITIZE_ADDRESS__)
+#define TEXT_UNDER_ASAN 1
+#endif
+#ifdef TEXT_UNDER_ASAN
+const char *__lsan_default_suppressions(void);
+const char *__lsan_default_suppressions(void)
+{
+    return "leak:libfontconfig.so\n";
+}
+#endif
+
+/* ---- arguments ---- */
+
+typedef struct text_args {
+    const char *text;
+    size_t length;
+    double size, spacing, fn, fa, fs;
+    const char *font, *direction, *language, *script, *halign, *valign;
+} text_args;
+
+static sc_status get_string(const build_ctx *c, const parse_node *n, const char *name,
+                            int position, const char **out)
+{
+    const parse_value *v = build_arg(n, name, position);
+    if (!v)
+        return SC_OK;
+    if (v->kind != PARSE_STRING)
+        return build_wrong_type(c, n, name, v, "a string");
+    *out = v->u.string.chars;
+    return SC_OK;
+}
+
+static sc_status read_args(const build_ctx *c, const parse_node *n, text_args *a)
+{
+    memset(a, 0, sizeof *a);
+    a->text = "";
+    a->size = 10;
+    a->spacing = 1;
+    a->fn = 0;
+    a->fa = 12;
+    a->fs = 2;
+    a->font = a->direction = a->script = "";
+    a->language = "en";
+    a->halign = "left";
+    a->valign = "baseline";
+    sc_status st;
+    if ((st = get_string(c, n, "text", 0, &a->text)) != SC_OK ||
+        (st = build_number(c, n, "size", 1, &a->size)) != SC_OK ||
+        (st = get_string(c, n, "font", 2, &a->font)) != SC_OK ||
+        (st = get_string(c, n, "direction", -1, &a->direction)) != SC_OK ||
+        (st = get_string(c, n, "language", -1, &a->language)) != SC_OK ||
+        (st = get_string(c, n, "script", -1, &a->script)) != SC_OK ||
+        (st = get_string(c, n, "halign", -1, &a->halign)) != SC_OK ||
+        (st = get_string(c, n, "valign", -1, &a->valign)) != SC_OK ||
+        (st = build_number(c, n, "spacing", -1, &a->spacing)) != SC_OK ||
+        (st = build_number(c, n, "$fn", -1, &a->fn)) != SC_OK ||
+        (st = build_number(c, n, "$fa", -1, &a->fa)) != SC_OK ||
+        (st = build_number(c, n, "$fs", -1, &a->fs)) != SC_OK)
+        return st;
+    const parse_value *tv = build_arg(n, "text", 0);
+    a->length = tv ? tv->u.string.length : 0;
+    if (a->length > TEXT_MAX_BYTES) {
+        sc_location loc = build_loc(c, tv);
+        return err_set(c->error, SC_ERR_LIMIT, &loc,
+                       "text is too long (%zu bytes; limit is %d)", a->length,
+                       TEXT_MAX_BYTES);
+    }
+    if (memchr(a->text, 0, a->length)) {
+        sc_location loc = build_loc(c, tv);
+        return err_set(c->error, SC_ERR_SEMANTIC, &loc, "text must not contain a NUL");
+    }
+    if (!isfinite(a->size))
+        return err_set(c->error, SC_ERR_SEMANTIC, &n->loc,
+                       "text: size must be a finite number (got %g)", a->size);
+    if (!isfinite(a->spacing))
+        return err_set(c->error, SC_ERR_SEMANTIC, &n->loc,
+                       "text: spacing must be a finite number (got %g)", a->spacing);
+    return SC_OK;
+}
+
+static void set_note(sc_error *note, const parse_node *n, const char *file,
+                     const char *message, const char *x, const char *y)
+{
+    if (!note || note->message[0])
+        return; /* the first warning of a node is kept */
+    sc_location loc = {file, n->loc.line, n->loc.column};
+    err_set(note, SC_OK, &loc, message, x, y);
+}
+
+/* ---- font lookup ---- */
+
+/* Opens the face fontconfig matches for name (OpenSCAD's find_face); on a
+ * family fontconfig does not have, leaves a warning in note. */
+static sc_status open_face(const build_ctx *c, const parse_node *n, FT_Library lib,
+                           const char *font, FT_Face *face, sc_error *note)
+{
+    const char *start = font;
+    while (*start && isspace((unsigned char)*start))
+        start++;
+    size_t len = strlen(start);
+    while (len > 0 && isspace((unsigned char)start[len - 1]))
+        len--;
+    char *name = malloc(len + 1);
+    if (!name)
+        return err_nomem(c->error, &n->loc);
+    memcpy(name, start, len);
+    name[len] = 0;
+    const char *lookup = len ? name : default_font;
+    FcPattern *pattern = FcNameParse((const FcChar8 *)lookup);
+    if (!pattern) {
+        free(name);
+        return err_set(c->error, SC_ERR_SEMANTIC, &n->loc,
+                       "text: font name '%s' is not a fontconfig pattern", font);
+    }
+    FcPatternAddBool(pattern, FC_OUTLINE, FcTrue);
+    FcPatternAddBool(pattern, FC_SCALABLE, FcTrue);
+    FcChar8 *wanted = NULL;
+    FcPatternGetString(pattern, FC_FAMILY, 0, &wanted);
+    char *wanted_copy = NULL;
+    if (wanted) {
+        size_t wl = strlen((const char *)wanted);
+        if (!(wanted_copy = malloc(wl + 1))) {
+            FcPatternDestroy(pattern);
+            free(name);
+            return err_nomem(c->error, &n->loc);
+        }
+        memcpy(wanted_copy, wanted, wl + 1);
+    }
+    FcConfigSubstitute(NULL, pattern, FcMatchPattern);
+    FcDefaultSubstitute(pattern);
+    FcResult result;
+    FcPattern *match = FcFontMatch(NULL, pattern, &result);
+    FcPatternDestroy(pattern);
+    FcChar8 *file = NULL;
+    int index = 0;
+    sc_status st = SC_OK;
+    if (!match || FcPatternGetString(match, FC_FILE, 0, &file) != FcResultMatch ||
+        FcPatternGetInteger(match, FC_INDEX, 0, &index) != FcResultMatch) {
+        st = err_set(c->error, SC_ERR_SEMANTIC, &n->loc,
+                     "text: no font matches '%s' (is fontconfig set up?)", lookup);
+    } else if (FT_New_Face(lib, (const char *)file, index, face) != 0) {
+        st = err_set(c->error, SC_ERR_IO, &n->loc, "text: cannot open font file '%s'",
+                     (const char *)file);
+    } else {
+        FT_Select_Charmap(*face, FT_ENCODING_UNICODE);
+        if (wanted_copy) {
+            int same = 0;
+            FcChar8 *family = NULL;
+            for (int i = 0;
+                 FcPatternGetString(match, FC_FAMILY, i, &family) == FcResultMatch; i++)
+                if (FcStrCmpIgnoreCase(family, (const FcChar8 *)wanted_copy) == 0)
+                    same = 1;
+            if (!same &&
+                FcPatternGetString(match, FC_FAMILY, 0, &family) == FcResultMatch)
+                set_note(note, n, c->file, "text: font '%s' was not found; using '%s'",
+                         wanted_copy, (const char *)family);
+        }
+    }
+    if (match)
+        FcPatternDestroy(match);
+    free(wanted_copy);
+    free(name);
+    return st;
+}
+
+/* ---- outlines ---- */
+
+static int push_seg(text_shape *s, const outline_seg *seg)
+{
+    if (!grow_array32((void **)&s->segs, &s->seg_cap, s->seg_count + 1, sizeof *s->segs))
+        return 0;
+    s->segs[s->seg_count++] = *seg;
+    return 1;
+}
+
+typedef struct decompose_state {
+    text_shape *shape;
+    double pen[2];
+    int open; /* a contour has been started */
+    int oom;
+} decompose_state;
+
+static void close_contour(decompose_state *d)
+{
+    text_shape *s = d->shape;
+    if (!d->open)
+        return;
+    d->open = 0;
+    if (s->seg_count == s->contour_start[s->contour_count])
+        return; /* no segment: nothing to keep */
+    s->contour_count++;
+    s->contour_start[s->contour_count] = s->seg_count;
+}
+
+static int begin_contour(decompose_state *d)
+{
+    text_shape *s = d->shape;
+    close_contour(d);
+    if (!grow_array32((void **)&s->contour_start, &s->contour_cap, s->contour_count + 2,
+                      sizeof *s->contour_start))
+        return 0;
+    s->contour_start[s->contour_count] = s->seg_count;
+    d->open = 1;
+    return 1;
+}
+
+static int ft_move_to(const FT_Vector *to, void *user)
+{
+    decompose_state *d = user;
+    if (!begin_contour(d)) {
+        d->oom = 1;
+        return 1;
+    }
+    d->pen[0] = to->x / ft_scale;
+    d->pen[1] = to->y / ft_scale;
+    return 0;
+}
+
+static int add_curve(decompose_state *d, uint32_t degree, const FT_Vector *const *pts)
+{
+    if (!d->open && !begin_contour(d)) {
+        d->oom = 1;
+        return 1;
+    }
+    outline_seg seg;
+    memset(&seg, 0, sizeof seg);
+    seg.degree = degree;
+    seg.x[0] = d->pen[0];
+    seg.y[0] = d->pen[1];
+    for (uint32_t i = 0; i < degree; i++) {
+        seg.x[i + 1] = pts[i]->x / ft_scale;
+        seg.y[i + 1] = pts[i]->y / ft_scale;
+    }
+    if (!push_seg(d->shape, &seg)) {
+        d->oom = 1;
+        return 1;
+    }
+    d->pen[0] = seg.x[degree];
+    d->pen[1] = seg.y[degree];
+    return 0;
+}
+
+static int ft_line_to(const FT_Vector *to, void *user)
+{
+    const FT_Vector *p[1] = {to};
+    return add_curve(user, 1, p);
+}
+
+static int ft_conic_to(const FT_Vector *c1, const FT_Vector *to, void *user)
+{
+    const FT_Vector *p[2] = {c1, to};
+    return add_curve(user, 2, p);
+}
+
+static int ft_cubic_to(const FT_Vector *c1, const FT_Vector *c2, const FT_Vector *to,
+                       void *user)
+{
+    const FT_Vector *p[3] = {c1, c2, to};
+    return add_curve(user, 3, p);
+}
+
+static int is_ignored_script(hb_script_t s)
+{
+    return s == HB_SCRIPT_COMMON || s == HB_SCRIPT_INHERITED || s == HB_SCRIPT_UNKNOWN ||
+           s == HB_SCRIPT_INVALID;
+}
+
+/* OpenSCAD's detect_properties: the script and direction to shape with. */
+static void detect(const text_args *a, hb_script_t *script, hb_direction_t *direction)
+{
+    *script = hb_script_from_string(a->script, -1);
+    if (*script == HB_SCRIPT_INVALID) {
+        hb_buffer_t *b = hb_buffer_create();
+        hb_buffer_add_utf8(b, a->text, (int)a->length, 0, (int)a->length);
+        unsigned count = 0;
+        hb_glyph_info_t *info = hb_buffer_get_glyph_infos(b, &count);
+        hb_script_t found = HB_SCRIPT_INVALID;
+        for (unsigned i = 0; i < count; i++) {
+            hb_script_t s =
+                hb_unicode_script(hb_unicode_funcs_get_default(), info[i].codepoint);
+            if (is_ignored_script(s))
+                continue;
+            if (found == HB_SCRIPT_INVALID)
+                found = s;
+            else if (found != s && found != HB_SCRIPT_UNKNOWN)
+                found = HB_SCRIPT_UNKNOWN;
+        }
+        hb_buffer_destroy(b);
+        *script = is_ignored_script(found) ? HB_SCRIPT_INVALID : found;
+    }
+    *direction = hb_direction_from_string(a->direction, -1);
+    if (*direction == HB_DIRECTION_INVALID)
+        *direction = hb_script_get_horizontal_direction(*script);
+    if (*direction == HB_DIRECTION_INVALID)
+        *direction = HB_DIRECTION_LTR;
+}
+
+/* Resizes *v to count pairs of doubles; on failure *v is kept. */
+static int resize_pairs(double **v, uint32_t count)
+{
+    double *r = realloc(*v, 2 * (size_t)count * sizeof **v);
+    if (!r)
+        return 0;
+    *v = r;
+    return 1;
+}
+
+typedef struct glyph_rec {
+    FT_Glyph glyph;
+    double x_offset, y_offset, x_advance, y_advance; /* in 1.024e5 units */
+} glyph_rec;
+
+static sc_status shape_text(const build_ctx *c, const parse_node *n, const text_args *a,
+                            FT_Face face, text_shape *out, sc_error *note)
+{
+    if (FT_Set_Char_Size(face, 0, (FT_F26Dot6)ft_scale, 100, 100) != 0)
+        return err_set(c->error, SC_ERR_SEMANTIC, &n->loc,
+                       "text: cannot set the font size for '%s'", a->font);
+    hb_script_t script;
+    hb_direction_t direction;
+    detect(a, &script, &direction);
+    hb_font_t *font = hb_ft_font_create(face, NULL);
+    hb_buffer_t *buf = hb_buffer_create();
+    hb_buffer_set_direction(buf, direction);
+    hb_buffer_set_script(buf, script);
+    hb_buffer_set_language(buf, hb_language_from_string(a->language, -1));
+    hb_buffer_add_utf8(buf, a->text, (int)a->length, 0, (int)a->length);
+    hb_shape(font, buf, NULL, 0);
+    unsigned count = 0;
+    hb_glyph_info_t *info = hb_buffer_get_glyph_infos(buf, &count);
+    hb_glyph_position_t *pos = hb_buffer_get_glyph_positions(buf, &count);
+    glyph_rec *g = calloc(count ? count : 1, sizeof *g);
+    sc_status st = SC_OK;
+    unsigned kept = 0;
+    if (!g)
+        st = err_nomem(c->error, &n->loc);
+    for (unsigned i = 0; st == SC_OK && i < count; i++) {
+        if (FT_Load_Glyph(face, info[i].codepoint, FT_LOAD_DEFAULT) != 0)
+            continue; /* OpenSCAD logs and goes on */
+        FT_Glyph glyph;
+        if (FT_Get_Glyph(face->glyph, &glyph) != 0)
+            continue;
+        if (glyph->format != FT_GLYPH_FORMAT_OUTLINE) {
+            FT_Done_Glyph(glyph);
+            continue;
+        }
+        g[kept].glyph = glyph;
+        g[kept].x_offset = pos[i].x_offset * hb_unscale;
+        g[kept].y_offset = pos[i].y_offset * hb_unscale;
+        g[kept].x_advance = pos[i].x_advance * hb_unscale;
+        g[kept].y_advance = pos[i].y_advance * hb_unscale;
+        kept++;
+    }
+    double width = 0, ascend = 0, descend = 0;
+    for (unsigned i = 0; st == SC_OK && i < kept; i++) {
+        FT_BBox box;
+        FT_Glyph_Get_CBox(g[i].glyph, FT_GLYPH_BBOX_GRIDFIT, &box);
+        if (HB_DIRECTION_IS_HORIZONTAL(direction)) {
+            double asc = fmax(0.0, box.yMax * hb_unscale);
+            double desc = fmax(0.0, -box.yMin * hb_unscale);
+            width += g[i].x_advance * a->spacing;
+            ascend = fmax(ascend, asc);
+            descend = fmax(descend, desc);
+        } else {
+            double w = (box.xMax - box.xMin) * hb_unscale;
+            width = fmax(width, w);
+            ascend += g[i].y_advance * a->spacing;
+        }
+    }
+    double x_offset = 0, y_offset = 0;
+    if (strcmp(a->halign, "right") == 0)
+        x_offset = -width;
+    else if (strcmp(a->halign, "center") == 0)
+        x_offset = -width / 2.0;
+    else if (strcmp(a->halign, "left") != 0)
+        set_note(note, n, c->file,
+                 "text: unknown halign '%s' (use \"left\", \"right\" or \"center\")%s",
+                 a->halign, "");
+    if (strcmp(a->valign, "top") == 0)
+        y_offset = -ascend;
+    else if (strcmp(a->valign, "center") == 0)
+        y_offset = descend / 2.0 - ascend / 2.0;
+    else if (strcmp(a->valign, "bottom") == 0)
+        y_offset = descend;
+    else if (strcmp(a->valign, "baseline") != 0)
+        set_note(note, n, c->file,
+                 "text: unknown valign '%s' (use \"baseline\", \"bottom\", \"top\" or "
+                 "\"center\")%s",
+                 a->valign, "");
+    FT_Outline_Funcs funcs = {ft_move_to, ft_line_to, ft_conic_to, ft_cubic_to, 0, 0};
+    double adv[2] = {0, 0};
+    out->size = a->size;
+    for (unsigned i = 0; st == SC_OK && i < kept; i++) {
+        uint32_t gi = out->glyph_count;
+        if (!grow_array32((void **)&out->glyph_start, &out->glyph_cap, gi + 2,
+                          sizeof *out->glyph_start) ||
+            !resize_pairs(&out->offset, out->glyph_cap) ||
+            !resize_pairs(&out->advance, out->glyph_cap)) {
+            st = err_nomem(c->error, &n->loc);
+            break;
+        }
+        out->glyph_start[gi] = out->contour_count;
+        decompose_state d = {out, {0, 0}, 0, 0};
+        FT_Outline outline = ((FT_OutlineGlyph)g[i].glyph)->outline;
+        FT_Outline_Decompose(&outline, &funcs, &d);
+        close_contour(&d);
+        if (d.oom) {
+            st = err_nomem(c->error, &n->loc);
+            break;
+        }
+        out->offset[2 * gi] = x_offset + g[i].x_offset;
+        out->offset[2 * gi + 1] = y_offset + g[i].y_offset;
+        out->advance[2 * gi] = adv[0];
+        out->advance[2 * gi + 1] = adv[1];
+        adv[0] += g[i].x_advance * a->spacing;
+        adv[1] += g[i].y_advance * a->spacing;
+        if (out->contour_count > out->glyph_start[gi]) {
+            out->glyph_count++;
+            out->glyph_start[out->glyph_count] = out->contour_count;
+        }
+    }
+    for (unsigned i = 0; g && i < kept; i++)
+        FT_Done_Glyph(g[i].glyph);
+    free(g);
+    hb_buffer_destroy(buf);
+    hb_font_destroy(font);
+    return st;
+}
+
+void text_shape_free(text_shape *s)
+{
+    free(s->segs);
+    free(s->contour_start);
+    free(s->glyph_start);
+    free(s->offset);
+    free(s->advance);
+    memset(s, 0, sizeof *s);
+}
+
+static sc_status build_shape(const build_ctx *c, const parse_node *n, text_shape *out,
+                             sc_error *note, text_args *a)
+{
+    memset(out, 0, sizeof *out);
+    sc_status st = read_args(c, n, a);
+    if (st != SC_OK)
+        return st;
+    long fragments = faithful_fragments(a->size, a->fn, a->fs, a->fa);
+    out->curve_points = fragments < 0 ? 0 : (uint32_t)fmax(floor(fragments / 8.0) + 1, 2);
+    out->size = a->size;
+    if (a->length == 0)
+        return SC_OK;
+    FT_Library lib;
+    if (FT_Init_FreeType(&lib) != 0)
+        return err_set(c->error, SC_ERR_NOMEM, &n->loc, "text: cannot start FreeType");
+    FT_Face face = NULL;
+    st = open_face(c, n, lib, a->font, &face, note);
+    if (st == SC_OK)
+        st = shape_text(c, n, a, face, out, note);
+    if (face)
+        FT_Done_Face(face);
+    FT_Done_FreeType(lib);
+    if (st != SC_OK)
+        text_shape_free(out);
+    return st;
+}
+
+sc_status text_shape_build(const build_ctx *c, const parse_node *n, text_shape *out,
+                           sc_error *note)
+{
+    text_args a;
+    return build_shape(c, n, out, note, &a);
+}
+
+/* ---- OpenSCAD's polygons ---- */
+
+void text_polygons_free(text_polygons *p)
+{
+    free(p->xy);
+    free(p->start);
+    memset(p, 0, sizeof *p);
+}
+
+static int poly_point(text_polygons *p, double x, double y)
+{
+    uint32_t n = p->point_count;
+    uint32_t s = p->start[p->path_count];
+    if (n > s && p->xy[2 * n - 2] == x && p->xy[2 * n - 1] == y)
+        return 1; /* a repeat of the previous point */
+    uint32_t cap = p->point_cap;
+    if (!grow_array32((void **)&p->xy, &cap, 2 * (n + 1), sizeof *p->xy))
+        return 0;
+    p->point_cap = cap;
+    p->xy[2 * n] = x;
+    p->xy[2 * n + 1] = y;
+    p->point_count++;
+    return 1;
+}
+
+static int poly_begin(text_polygons *p)
+{
+    if (!grow_array32((void **)&p->start, &p->path_cap, p->path_count + 2,
+                      sizeof *p->start))
+        return 0;
+    p->start[p->path_count] = p->point_count;
+    p->start[p->path_count + 1] = p->point_count;
+    return 1;
+}
+
+/* Ends the path being built: drops a last point equal to the first, and
+ * the whole path when fewer than 3 points are left. */
+static void poly_end(text_polygons *p)
+{
+    uint32_t s = p->start[p->path_count];
+    uint32_t n = p->point_count;
+    if (n - s >= 2 && p->xy[2 * s] == p->xy[2 * n - 2] &&
+        p->xy[2 * s + 1] == p->xy[2 * n - 1])
+        n--;
+    if (n - s < 3) {
+        p->point_count = s;
+        return;
+    }
+    p->point_count = n;
+    p->path_count++;
+    p->start[p->path_count] = n;
+}
+
+static double poly_area(const text_polygons *p, uint32_t k)
+{
+    double a = 0;
+    uint32_t s = p->start[k], e = p->start[k + 1];
+    for (uint32_t i = s; i < e; i++) {
+        uint32_t j = i + 1 < e ? i + 1 : s;
+        a += p->xy[2 * i] * p->xy[2 * j + 1] - p->xy[2 * j] * p->xy[2 * i + 1];
+    }
+    return a / 2;
+}
+
+static void poly_reverse(text_polygons *p, uint32_t k)
+{
+    uint32_t i = p->start[k], j = p->start[k + 1] - 1;
+    while (i < j) {
+        for (int c = 0; c < 2; c++) {
+            double t = p->xy[2 * i + c];
+            p->xy[2 * i + c] = p->xy[2 * j + c];
+            p->xy[2 * j + c] = t;
+        }
+        i++;
+        j--;
+    }
+}
+
+/* OpenSCAD's add_vertex and Clipper's snap: size * ((v + offset) +
+ * advance), truncated to a multiple of 2^-16. */
+static double place(double v, double offset, double advance, double size)
+{
+    double x = size * ((v + offset) + advance);
+    return trunc(x * 65536.0) / 65536.0;
+}
+
+static sc_status flatten(const build_ctx *c, const parse_node *n, const text_shape *s,
+                         text_polygons *out)
+{
+    uint32_t fn = s->curve_points;
+    for (uint32_t g = 0; g < s->glyph_count; g++) {
+        double ox = s->offset[2 * g], oy = s->offset[2 * g + 1];
+        double ax = s->advance[2 * g], ay = s->advance[2 * g + 1];
+        uint32_t first = out->path_count;
+        for (uint32_t k = s->glyph_start[g]; k < s->glyph_start[g + 1]; k++) {
+            if (!poly_begin(out))
+                return err_nomem(c->error, &n->loc);
+            const outline_seg *seg0 = &s->segs[s->contour_start[k]];
+            if (!poly_point(out, place(seg0->x[0], ox, ax, s->size),
+                            place(seg0->y[0], oy, ay, s->size)))
+                return err_nomem(c->error, &n->loc);
+            for (uint32_t i = s->contour_start[k]; i < s->contour_start[k + 1]; i++) {
+                const outline_seg *q = &s->segs[i];
+                if (q->degree == 1) {
+                    if (!poly_point(out, place(q->x[1], ox, ax, s->size),
+                                    place(q->y[1], oy, ay, s->size)))
+                        return err_nomem(c->error, &n->loc);
+                    continue;
+                }
+                for (uint32_t idx = 1; idx <= fn; idx++) {
+                    const double a = idx * (1.0 / (double)fn);
+                    double v[2];
+                    for (int axis = 0; axis < 2; axis++) {
+                        const double *p = axis ? q->y : q->x;
+                        if (q->degree == 2)
+                            v[axis] = p[0] * pow(1 - a, 2) +
+                                      p[1] * 2 * pow(1 - a, 1) * a + p[2] * pow(a, 2);
+                        else
+                            v[axis] =
+                                p[0] * pow(1 - a, 3) + p[1] * 3 * pow(1 - a, 2) * a +
+                                p[2] * 3 * pow(1 - a, 1) * pow(a, 2) + p[3] * pow(a, 3);
+                    }
+                    if (!poly_point(out, place(v[0], ox, ax, s->size),
+                                    place(v[1], oy, ay, s->size)))
+                        return err_nomem(c->error, &n->loc);
+                }
+            }
+            poly_end(out);
+        }
+        double area = 0;
+        for (uint32_t k = first; k < out->path_count; k++)
+            area += poly_area(out, k);
+        if (area < 0)
+            for (uint32_t k = first; k < out->path_count; k++)
+                poly_reverse(out, k);
+    }
+    return SC_OK;
+}
+
+static sc_status faithful_polygons(const build_ctx *c, const parse_node *n,
+                                   text_polygons *out, sc_error *note)
+{
+    memset(out, 0, sizeof *out);
+    text_shape s;
+    text_args a;
+    sc_status st = build_shape(c, n, &s, note, &a);
+    if (st != SC_OK)
+        return st;
+    if (s.curve_points == 0) {
+        text_shape_free(&s);
+        return err_set(c->error, SC_ERR_LIMIT, &n->loc,
+                       "faithful mode: $fn, $fa and $fs of text size %g give too many "
+                       "fragments (limit is %d)",
+                       a.size, FAITHFUL_MAX_FRAGMENTS);
+    }
+    if (!poly_begin(out))
+        st = err_nomem(c->error, &n->loc);
+    if (st == SC_OK)
+        st = flatten(c, n, &s, out);
+    text_shape_free(&s);
+    if (st != SC_OK)
+        text_polygons_free(out);
+    return st;
+}
+
+sc_status text_faithful_polygons(const build_ctx *c, const parse_node *n,
+                                 text_polygons *out, sc_error *note)
+{
+    return faithful_polygons(c, n, out, note);
+}
+
+/* ---- linear_extrude of text ---- */
+
+static int is_container(const char *name)
+{
+    return strcmp(name, "group") == 0 || strcmp(name, "union") == 0 ||
+           strcmp(name, "render") == 0 || strcmp(name, "color") == 0 ||
+           strcmp(name, "multmatrix") == 0;
+}
+
+static int wanted(const parse_node *n, int depth)
+{
+    if (depth > TEXT_MAX_DEPTH || (n->modifiers & PARSE_MOD_DISABLE))
+        return 0;
+    if (strcmp(n->name, "text") == 0)
+        return 1;
+    if (!is_container(n->name))
+        return 0;
+    for (const parse_node *k = n->first_child; k; k = k->next)
+        if (wanted(k, depth + 1))
+            return 1;
+    return 0;
+}
+
+/* Every 2D shape below n (under the containers) is text, and there is one. */
+static int only_text(const parse_node *n, int depth)
+{
+    if (depth > TEXT_MAX_DEPTH)
+        return 0;
+    if (n->modifiers & (PARSE_MOD_DISABLE | PARSE_MOD_BACKGROUND))
+        return 1;
+    if (strcmp(n->name, "text") == 0)
+        return 1;
+    if (!is_container(n->name))
+        return 0;
+    for (const parse_node *k = n->first_child; k; k = k->next)
+        if (!only_text(k, depth + 1))
+            return 0;
+    return 1;
+}
+
+int build_text_only(const parse_node *n)
+{
+    if (!build_text_wanted(n))
+        return 0;
+    for (const parse_node *k = n->first_child; k; k = k->next)
+        if (!only_text(k, 1))
+            return 0;
+    return 1;
+}
+
+int build_text_wanted(const parse_node *n)
+{
+    for (const parse_node *k = n->first_child; k; k = k->next)
+        if (wanted(k, 1))
+            return 1;
+    return 0;
+}
+
+typedef struct gathered {
+    outline_seg *segs; /* exact mode */
+    uint32_t seg_count, seg_cap;
+    text_polygons poly; /* faithful mode */
+} gathered;
+
+static sc_status gather_text(const build_ctx *c, const parse_node *n, const affine2 *m,
+                             gathered *g)
+{
+    sc_status st;
+    text_shape s;
+    if ((st = text_shape_build(c, n, &s, c->note)) != SC_OK)
+        return st;
+    if (s.size == 0)
+        s.glyph_count = 0; /* every point at the origin: no area */
+    for (uint32_t gi = 0; gi < s.glyph_count && st == SC_OK; gi++) {
+        uint32_t first = g->seg_count;
+        double area = 0;
+        for (uint32_t i = s.contour_start[s.glyph_start[gi]];
+             i < s.contour_start[s.glyph_start[gi + 1]]; i++) {
+            outline_seg q = s.segs[i];
+            for (uint32_t j = 0; j <= q.degree; j++) {
+                q.x[j] = s.size * ((q.x[j] + s.offset[2 * gi]) + s.advance[2 * gi]);
+                q.y[j] =
+                    s.size * ((q.y[j] + s.offset[2 * gi + 1]) + s.advance[2 * gi + 1]);
+                affine2_apply(m, q.x[j], q.y[j], &q.x[j], &q.y[j]);
+            }
+            if (!isfinite(q.x[0]) || !isfinite(q.y[0]))
+                continue;
+            /* the control polygon's area: its sign is the glyph's turn */
+            for (uint32_t j = 0; j < q.degree; j++)
+                area += q.x[j] * q.y[j + 1] - q.x[j + 1] * q.y[j];
+            if (!grow_array32((void **)&g->segs, &g->seg_cap, g->seg_count + 1,
+                              sizeof *g->segs)) {
+                st = err_nomem(c->error, &n->loc);
+                break;
+            }
+            g->segs[g->seg_count++] = q;
+        }
+        if (area < 0) {
+            /* reverse each segment; contour order does not matter to the
+             * crossings, only each segment's direction */
+            for (uint32_t i = first; i < g->seg_count; i++) {
+                outline_seg *q = &g->segs[i];
+                for (uint32_t j = 0; j < (q->degree + 1) / 2; j++) {
+                    uint32_t k = q->degree - j;
+                    double tx = q->x[j], ty = q->y[j];
+                    q->x[j] = q->x[k];
+                    q->y[j] = q->y[k];
+                    q->x[k] = tx;
+                    q->y[k] = ty;
+                }
+            }
+        }
+    }
+    text_shape_free(&s);
+    return st;
+}
+
+static sc_status gather(const build_ctx *c, const parse_node *n, const affine2 *m,
+                        gathered *g, int depth)
+{
+    if (depth > TEXT_MAX_DEPTH)
+        return err_set(c->error, SC_ERR_LIMIT, &n->loc,
+                       "too many nested nodes in linear_extrude (limit is %d)",
+                       TEXT_MAX_DEPTH);
+    if (n->modifiers & (PARSE_MOD_DISABLE | PARSE_MOD_BACKGROUND))
+        return SC_OK;
+    const char *name = n->name;
+    if (strcmp(name, "text") == 0)
+        return gather_text(c, n, m, g);
+    if (strcmp(name, "square") == 0 || strcmp(name, "circle") == 0 ||
+        strcmp(name, "polygon") == 0)
+        return err_set(c->error, SC_ERR_UNSUPPORTED, &n->loc,
+                       "'%s' beside text inside linear_extrude is not supported yet",
+                       name);
+    if (!is_container(name))
+        return err_set(c->error, SC_ERR_UNSUPPORTED, &n->loc,
+                       "'%s' inside linear_extrude is not supported yet", name);
+    affine2 inner = *m;
+    if (strcmp(name, "multmatrix") == 0) {
+        sc_status st = build_matrix_xy(c, n, m->m, inner.m);
+        if (st != SC_OK)
+            return st;
+    }
+    for (const parse_node *k = n->first_child; k; k = k->next) {
+        sc_status st = gather(c, k, &inner, g, depth + 1);
+        if (st != SC_OK)
+            return st;
+    }
+    return SC_OK;
+}
+
+sc_status build_text_extrude(const build_ctx *c, const parse_node *n, double height,
+                             int center, int emit, prim *out, const char **empty)
+{
+    gathered g;
+    memset(&g, 0, sizeof g);
+    sc_status st = SC_OK;
+    affine2 id = affine2_identity();
+    for (const parse_node *k = n->first_child; k && st == SC_OK; k = k->next)
+        st = gather(c, k, &id, &g, 1);
+    if (st == SC_OK && emit) {
+        double z0 = center ? -height / 2 : 0, z1 = z0 + height;
+        if (!(height > 0 && isfinite(height)) || g.seg_count == 0) {
+            *empty = "linear_extrude without height or area is empty";
+        } else {
+            const prim_outline *o =
+                prim_outline_create(c->csg, g.segs, g.seg_count, z0, z1);
+            if (!o) {
+                st = err_nomem(c->error, &n->loc);
+            } else {
+                memset(out, 0, sizeof *out);
+                out->kind = PRIM_OUTLINE;
+                out->u.outline.outline = o;
+            }
+        }
+    }
+    free(g.segs);
+    text_polygons_free(&g.poly);
+    return st;
+}

@@ -1,0 +1,560 @@
+/* Evaluation of OpenSCAD's 2D nodes into a region, as OpenSCAD 2021.01's
+ * GeometryEvaluator does it (twod.h).
+ *
+ * Leaves:
+ *   square(size, center)   4 points (0,0) (x,0) (x,y) (0,y), moved by -size/2
+ *                          when centred; empty unless both sides are > 0
+ *                          and finite. Not passed through the clipper.
+ *   circle(r | d)          OpenSCAD's polygon of f fragments (faithful.c's
+ *                          rule from $fn, $fa, $fs): point k at 360 k / f
+ *                          degrees. Empty unless 0 < r < inf. Not clipped.
+ *   polygon(points, paths) one contour of all points (empty with fewer than
+ *                          3), or one per path; then sanitized: the even-odd
+ *                          union through the clipper, so a path inside an
+ *                          odd number of others is a hole.
+ * Operations over the children's regions (an empty or '%' child is
+ * nothing; one child is taken as it is, without the clipper; more go
+ * through twod_clip_apply):
+ *   group, union, render, color   union
+ *   difference, intersection      the boolean of the children
+ *   multmatrix(m)                 union, then the points moved by the
+ *                                 matrix's xy part; a zero determinant
+ *                                 empties the region, a negative one (a
+ *                                 mirror) sanitizes it again
+ *   offset(r | delta, chamfer)    union, then Clipper's offset: round
+ *                                 joins for r, miter for delta, square for
+ *                                 delta with chamfer; the arc tolerance of
+ *                                 round joins is |r| (1 - cos(180° / f)),
+ *                                 f fragments of a circle of radius |r|
+ *   hull()                        convex hull of every child's points
+ *   minkowski()                   Clipper's Minkowski sum (twod_clip.cpp)
+ *   import(file = "x.dxf", layer, origin, scale, $fn, $fa, $fs)
+ *                          the drawing's contours as OpenSCAD's DxfData
+ *                          joins them (dxf.c), then sanitized; the file is
+ *                          found from the directory of the model. Other
+ *                          files are errors: .svg is not supported yet,
+ *                          .stl, .off and the like are 3D.
+ * 3D nodes are errors (OpenSCAD drops them from a 2D operation with a
+ * warning). The recursion over the children
+ * has a depth guard (TWOD_MAX_DEPTH).
+ */
+#include "build/build_twod.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "base/error.h"
+#include "build/build_mesh.h"
+#include "build/build_text.h"
+#include "formats/dxf.h"
+#include "model/faithful.h"
+
+enum { TWOD_MAX_DEPTH = 1000 };
+/* Offsets and Minkowski sums grow the point count by a product; these
+ * bound it before the clipper starts. */
+#define TWOD_MAX_PRODUCT 20000000.0
+
+typedef struct eval {
+    const build_ctx *c;
+    const char *outer; /* the node that asked for 2D, for messages */
+} eval;
+
+static sc_status eval_node(const eval *e, const parse_node *n, twod_region *out,
+                           int depth);
+
+static sc_status clip_status(const eval *e, const parse_node *n, int code)
+{
+    if (code == TWOD_CLIP_OK)
+        return SC_OK;
+    if (code == TWOD_CLIP_NOMEM)
+        return err_nomem(e->c->error, &n->loc);
+    if (code == TWOD_CLIP_TOO_MANY)
+        return err_set(e->c->error, SC_ERR_LIMIT, &n->loc,
+                       "%s: too many points in a 2D shape (limit is %u)", n->name,
+                       TWOD_MAX_POINTS);
+    return err_set(e->c->error, SC_ERR_LIMIT, &n->loc,
+                   "%s: coordinates out of range (limit is %g)", n->name, TWOD_MAX_COORD);
+}
+
+static sc_status get_number(const eval *e, const parse_node *n, const char *name,
+                            int position, double *out, int *given)
+{
+    if (given)
+        *given = build_arg(n, name, position) != NULL;
+    return build_number(e->c, n, name, position, out);
+}
+
+/* $fn, $fa, $fs with OpenSCAD's defaults. */
+static sc_status get_resolution(const eval *e, const parse_node *n, double *fn,
+                                double *fa, double *fs)
+{
+    *fn = 0;
+    *fa = 12;
+    *fs = 2;
+    sc_status st;
+    if ((st = get_number(e, n, "$fn", -1, fn, NULL)) != SC_OK ||
+        (st = get_number(e, n, "$fa", -1, fa, NULL)) != SC_OK)
+        return st;
+    return get_number(e, n, "$fs", -1, fs, NULL);
+}
+
+static sc_status read_square(const eval *e, const parse_node *n, twod_region *out)
+{
+    double sx, sy;
+    int center;
+    sc_status st = build_square(e->c, n, &sx, &sy, &center);
+    if (st != SC_OK)
+        return st;
+    if (!(sx > 0 && sy > 0 && isfinite(sx) && isfinite(sy)))
+        return SC_OK;
+    if (sx > TWOD_MAX_COORD || sy > TWOD_MAX_COORD)
+        return clip_status(e, n, TWOD_CLIP_RANGE);
+    double x0 = 0, y0 = 0, x1 = sx, y1 = sy;
+    if (center) {
+        x0 -= sx / 2;
+        y0 -= sy / 2;
+        x1 -= sx / 2;
+        y1 -= sy / 2;
+    }
+    if (!twod_begin_contour(out) || !twod_add_point(out, x0, y0) ||
+        !twod_add_point(out, x1, y0) || !twod_add_point(out, x1, y1) ||
+        !twod_add_point(out, x0, y1))
+        return err_nomem(e->c->error, &n->loc);
+    out->sanitized = 1;
+    return SC_OK;
+}
+
+static sc_status read_circle(const eval *e, const parse_node *n, twod_region *out)
+{
+    double r = 1, d = 0, fn, fa, fs;
+    int has_d;
+    sc_status st;
+    if ((st = get_number(e, n, "r", 0, &r, NULL)) != SC_OK ||
+        (st = get_number(e, n, "d", -1, &d, &has_d)) != SC_OK ||
+        (st = get_resolution(e, n, &fn, &fa, &fs)) != SC_OK)
+        return st;
+    if (has_d)
+        r = d / 2;
+    out->sanitized = 1;
+    if (!(r > 0 && isfinite(r)))
+        return SC_OK;
+    if (r > TWOD_MAX_COORD)
+        return clip_status(e, n, TWOD_CLIP_RANGE);
+    long f = faithful_fragments(r, fn, fs, fa);
+    if (f < 0)
+        return err_set(e->c->error, SC_ERR_LIMIT, &n->loc,
+                       "circle has too many fragments (limit is %d)",
+                       FAITHFUL_MAX_FRAGMENTS);
+    if (!twod_begin_contour(out))
+        return err_nomem(e->c->error, &n->loc);
+    for (long k = 0; k < f; k++) {
+        double a = 360.0 * (double)k / (double)f;
+        if (!twod_add_point(out, r * faithful_cos_deg(a), r * faithful_sin_deg(a)))
+            return err_nomem(e->c->error, &n->loc);
+    }
+    return SC_OK;
+}
+
+/* text: OpenSCAD's glyph polygons (build_text.c), outlines counter-clockwise
+ * and holes clockwise, united with the non-zero rule as its text renderer
+ * unites them. A font fallback is the caller's warning (c->note). */
+static sc_status read_text(const eval *e, const parse_node *n, twod_region *out)
+{
+    text_polygons tp;
+    memset(&tp, 0, sizeof tp);
+    sc_status st = text_faithful_polygons(e->c, n, &tp, e->c->note);
+    twod_region glyphs;
+    twod_init(&glyphs);
+    for (uint32_t k = 0; st == SC_OK && k < tp.path_count; k++) {
+        if (!twod_begin_contour(&glyphs))
+            st = err_nomem(e->c->error, &n->loc);
+        for (uint32_t i = tp.start[k]; st == SC_OK && i < tp.start[k + 1]; i++) {
+            if (!twod_add_point(&glyphs, tp.xy[2 * i], tp.xy[2 * i + 1]))
+                st = err_nomem(e->c->error, &n->loc);
+        }
+    }
+    text_polygons_free(&tp);
+    if (st == SC_OK) {
+        glyphs.sanitized = 1; /* already oriented: the union keeps holes */
+        twod_region *one = &glyphs;
+        st = clip_status(e, n, twod_clip_apply(&one, 1, TWOD_UNION, out));
+    }
+    twod_free(&glyphs);
+    return st;
+}
+
+static sc_status read_polygon(const eval *e, const parse_node *n, twod_region *out)
+{
+    const parse_value *pts, *paths;
+    sc_status pst = build_polygon(e->c, n, &pts, &paths);
+    if (pst != SC_OK || !pts)
+        return pst;
+    uint32_t np = pts->u.vector.count;
+    if (paths && paths->u.vector.count == 0)
+        paths = NULL; /* OpenSCAD: an empty paths list means all points */
+    if (!paths && np < 3)
+        return SC_OK;
+    uint32_t count = paths ? paths->u.vector.count : 1;
+    for (uint32_t k = 0; k < count; k++) {
+        const parse_value *path = paths ? &paths->u.vector.items[k] : NULL;
+        if (path && path->kind != PARSE_VECTOR)
+            return build_wrong_type(e->c, n, "paths", path, BUILD_POLYGON_PATHS);
+        uint32_t len = path ? path->u.vector.count : np;
+        if (!twod_begin_contour(out))
+            return err_nomem(e->c->error, &n->loc);
+        for (uint32_t i = 0; i < len; i++) {
+            uint32_t index = i;
+            if (path) {
+                sc_status ist =
+                    build_polygon_index(e->c, &path->u.vector.items[i], k, np, &index);
+                if (ist != SC_OK)
+                    return ist;
+            }
+            const parse_value *v = &pts->u.vector.items[index];
+            double x = v->u.vector.items[0].u.number, y = v->u.vector.items[1].u.number;
+            if (!(fabs(x) <= TWOD_MAX_COORD && fabs(y) <= TWOD_MAX_COORD))
+                return clip_status(e, n, TWOD_CLIP_RANGE);
+            if (!twod_add_point(out, x, y))
+                return clip_status(e, n,
+                                   out->point_count >= TWOD_MAX_POINTS
+                                       ? TWOD_CLIP_TOO_MANY
+                                       : TWOD_CLIP_NOMEM);
+        }
+    }
+    out->sanitized = 0;
+    return clip_status(e, n, twod_clip_sanitize(out));
+}
+
+/* The regions of n's children ('%' and '*' left out). *regions holds
+ * *count initialised regions, to be freed by free_children. */
+static sc_status eval_children(const eval *e, const parse_node *n, twod_region **regions,
+                               uint32_t *count, int depth)
+{
+    *regions = NULL;
+    *count = 0;
+    uint32_t total = 0;
+    for (const parse_node *k = n->first_child; k; k = k->next)
+        total++;
+    if (total == 0)
+        return SC_OK;
+    twod_region *r = calloc(total, sizeof *r);
+    if (!r)
+        return err_nomem(e->c->error, &n->loc);
+    *regions = r;
+    for (const parse_node *k = n->first_child; k; k = k->next) {
+        if (k->modifiers & (PARSE_MOD_DISABLE | PARSE_MOD_BACKGROUND))
+            continue;
+        twod_init(&r[*count]);
+        (*count)++;
+        sc_status st = eval_node(e, k, &r[*count - 1], depth + 1);
+        if (st != SC_OK)
+            return st;
+    }
+    return SC_OK;
+}
+
+static void free_children(twod_region *regions, uint32_t count)
+{
+    for (uint32_t i = 0; i < count; i++)
+        twod_free(&regions[i]);
+    free(regions);
+}
+
+/* OpenSCAD's applyToChildren2D for union, difference and intersection:
+ * no child is nothing, one child is itself, more go through the clipper. */
+static sc_status combine(const eval *e, const parse_node *n, twod_region *regions,
+                         uint32_t count, twod_op op, twod_region *out)
+{
+    twod_clear(out);
+    if (count == 0)
+        return SC_OK;
+    if (count == 1) {
+        twod_move(out, &regions[0]);
+        return SC_OK;
+    }
+    twod_region **list = malloc((size_t)count * sizeof *list);
+    if (!list)
+        return err_nomem(e->c->error, &n->loc);
+    for (uint32_t i = 0; i < count; i++)
+        list[i] = regions[i].contour_count ? &regions[i] : NULL;
+    int code = twod_clip_apply(list, count, op, out);
+    free(list);
+    return clip_status(e, n, code);
+}
+
+static sc_status read_matrix(const eval *e, const parse_node *n, double m[2][3])
+{
+    static const double id[2][3] = {{1, 0, 0}, {0, 1, 0}};
+    return build_matrix_xy(e->c, n, id, m);
+}
+
+static sc_status transform(const eval *e, const parse_node *n, double m[2][3],
+                           twod_region *r)
+{
+    double det = m[0][0] * m[1][1] - m[0][1] * m[1][0];
+    if (det == 0) {
+        twod_clear(r);
+        return SC_OK;
+    }
+    for (uint32_t i = 0; i < r->point_count; i++) {
+        double x = r->xy[2 * i], y = r->xy[2 * i + 1];
+        r->xy[2 * i] = m[0][0] * x + m[0][1] * y + m[0][2];
+        r->xy[2 * i + 1] = m[1][0] * x + m[1][1] * y + m[1][2];
+        if (!(fabs(r->xy[2 * i]) <= TWOD_MAX_COORD &&
+              fabs(r->xy[2 * i + 1]) <= TWOD_MAX_COORD))
+            return clip_status(e, n, TWOD_CLIP_RANGE);
+    }
+    if (r->sanitized && det <= 0 && r->contour_count)
+        return clip_status(e, n, twod_clip_sanitize(r));
+    return SC_OK;
+}
+
+static sc_status offset(const eval *e, const parse_node *n, twod_region *r)
+{
+    double delta = 1, fn, fa, fs;
+    int has_r, has_delta, chamfer = 0;
+    twod_join join = TWOD_JOIN_ROUND;
+    sc_status st;
+    if ((st = get_number(e, n, "r", 0, &delta, &has_r)) != SC_OK ||
+        (st = get_resolution(e, n, &fn, &fa, &fs)) != SC_OK)
+        return st;
+    if (!has_r) {
+        if ((st = get_number(e, n, "delta", -1, &delta, &has_delta)) != SC_OK ||
+            (st = build_bool(e->c, n, "chamfer", -1, &chamfer)) != SC_OK)
+            return st;
+        if (has_delta)
+            join = chamfer ? TWOD_JOIN_SQUARE : TWOD_JOIN_MITER;
+    }
+    if (!isfinite(delta))
+        return err_set(e->c->error, SC_ERR_SEMANTIC, &n->loc, "offset: %s must be finite",
+                       has_r ? "r" : "delta");
+    if (!r->contour_count)
+        return SC_OK;
+    double arc_tolerance = 0;
+    if (join == TWOD_JOIN_ROUND) {
+        long f = faithful_fragments(fabs(delta), fn, fs, fa);
+        if (f < 0)
+            return err_set(
+                e->c->error, SC_ERR_LIMIT, &n->loc,
+                "offset: $fn, $fa and $fs of radius %g give too many fragments "
+                "(limit is %d)",
+                fabs(delta), FAITHFUL_MAX_FRAGMENTS);
+        if ((double)f * r->point_count > TWOD_MAX_PRODUCT)
+            return err_set(e->c->error, SC_ERR_LIMIT, &n->loc,
+                           "offset: %u points with round joins of %ld fragments are too "
+                           "many (limit is %.0f points times fragments)",
+                           r->point_count, f, TWOD_MAX_PRODUCT);
+        arc_tolerance = fabs(delta) * (1 - faithful_cos_deg(180.0 / (double)f));
+    }
+    twod_region result;
+    twod_init(&result);
+    int code = twod_clip_offset(r, delta, join, arc_tolerance, &result);
+    if (code == TWOD_CLIP_OK)
+        twod_move(r, &result);
+    twod_free(&result);
+    return clip_status(e, n, code);
+}
+
+static sc_status hull(const eval *e, const parse_node *n, twod_region *regions,
+                      uint32_t count, twod_region *out)
+{
+    size_t total = 0;
+    for (uint32_t i = 0; i < count; i++)
+        total += regions[i].point_count;
+    if (total > TWOD_MAX_POINTS)
+        return err_set(e->c->error, SC_ERR_LIMIT, &n->loc,
+                       "hull of %zu points is too large (limit is %u)", total,
+                       TWOD_MAX_POINTS);
+    double *xy = malloc((total ? total : 1) * 2 * sizeof *xy);
+    if (!xy)
+        return err_nomem(e->c->error, &n->loc);
+    size_t k = 0;
+    for (uint32_t i = 0; i < count; i++) {
+        memcpy(xy + 2 * k, regions[i].xy,
+               (size_t)regions[i].point_count * 2 * sizeof *xy);
+        k += regions[i].point_count;
+    }
+    int ok = twod_hull(xy, (uint32_t)total, out);
+    free(xy);
+    out->sanitized = 0; /* OpenSCAD's hull is not passed through the clipper */
+    return ok ? SC_OK : err_nomem(e->c->error, &n->loc);
+}
+
+static sc_status minkowski(const eval *e, const parse_node *n, twod_region *regions,
+                           uint32_t count, twod_region *out)
+{
+    twod_clear(out);
+    if (count == 0)
+        return SC_OK;
+    if (count == 1) {
+        twod_move(out, &regions[0]);
+        return SC_OK;
+    }
+    double product = regions[0].point_count;
+    for (uint32_t i = 1; i < count; i++) {
+        if (!regions[i].contour_count)
+            continue;
+        if (product * regions[i].point_count > TWOD_MAX_PRODUCT)
+            return err_set(e->c->error, SC_ERR_LIMIT, &n->loc,
+                           "minkowski: the sum of %.0f and %u points is too large (limit "
+                           "is %.0f pairs of points)",
+                           product, regions[i].point_count, TWOD_MAX_PRODUCT);
+        /* the sum can have as many points as the pairs: a bound for the
+         * next step */
+        product = product * regions[i].point_count;
+    }
+    twod_region **list = malloc((size_t)count * sizeof *list);
+    if (!list)
+        return err_nomem(e->c->error, &n->loc);
+    for (uint32_t i = 0; i < count; i++)
+        list[i] = regions[i].contour_count ? &regions[i] : NULL;
+    int code = twod_clip_minkowski(list, count, out);
+    free(list);
+    return clip_status(e, n, code);
+}
+
+/* import of a DXF drawing (dxf.c), sanitized as OpenSCAD sanitizes a leaf's
+ * polygons. */
+static sc_status read_import(const eval *e, const parse_node *n, twod_region *out)
+{
+    const parse_value *file = build_arg(n, "file", 0);
+    if (!file)
+        return err_set(e->c->error, SC_ERR_SEMANTIC, &n->loc,
+                       "missing argument 'file' of 'import'");
+    if (file->kind != PARSE_STRING)
+        return build_wrong_type(e->c, n, "file", file, "a file name");
+    const char *name = file->u.string.chars;
+    sc_location loc = build_loc(e->c, file);
+    if (build_has_suffix(name, ".svg"))
+        return err_set(e->c->error, SC_ERR_UNSUPPORTED, &loc,
+                       "import of '%s' is not supported yet (2D: only .dxf files)", name);
+    if (!build_has_suffix(name, ".dxf"))
+        return err_set(e->c->error, SC_ERR_SEMANTIC, &loc,
+                       "import of '%s' inside %s: a 2D operation imports only 2D files "
+                       "(.dxf)",
+                       name, e->outer);
+    dxf_options o = {0, 12, 2, NULL, 0, 0, 1};
+    sc_status st;
+    if ((st = get_resolution(e, n, &o.fn, &o.fa, &o.fs)) != SC_OK ||
+        (st = get_number(e, n, "scale", -1, &o.scale, NULL)) != SC_OK)
+        return st;
+    const parse_value *layer = build_arg(n, "layer", -1);
+    if (layer && layer->kind != PARSE_STRING)
+        return build_wrong_type(e->c, n, "layer", layer, "a layer name");
+    o.layer = layer ? layer->u.string.chars : NULL;
+    const parse_value *origin = build_arg(n, "origin", -1);
+    if (origin) {
+        if (origin->kind != PARSE_VECTOR || origin->u.vector.count != 2 ||
+            origin->u.vector.items[0].kind != PARSE_NUMBER ||
+            origin->u.vector.items[1].kind != PARSE_NUMBER)
+            return build_wrong_type(e->c, n, "origin", origin, "[x, y]");
+        o.origin_x = origin->u.vector.items[0].u.number;
+        o.origin_y = origin->u.vector.items[1].u.number;
+    }
+    if (!isfinite(o.scale) || !isfinite(o.origin_x) || !isfinite(o.origin_y))
+        return err_set(e->c->error, SC_ERR_SEMANTIC, &n->loc,
+                       "import: origin and scale must be finite");
+    char *path = build_file_path(e->c, name);
+    if (!path)
+        return err_nomem(e->c->error, &n->loc);
+    char unsupported[32];
+    st = dxf_read_file(path, &loc, &o, out, unsupported, e->c->error);
+    if (st == SC_OK && unsupported[0] && e->c->note && !e->c->note->message[0])
+        err_set(e->c->note, SC_OK, &loc,
+                "import: DXF entities '%s' in '%s' are ignored, as OpenSCAD ignores them",
+                unsupported, path);
+    free(path);
+    if (st == SC_OK && out->contour_count)
+        st = clip_status(e, n, twod_clip_sanitize(out));
+    return st;
+}
+
+static int is_3d(const char *name)
+{
+    static const char *const names[] = {
+        "cube",    "sphere", "cylinder", "polyhedron", "linear_extrude", "rotate_extrude",
+        "surface", "torus",  "quadric",  "implicit",   "halfspace"};
+    for (size_t i = 0; i < sizeof names / sizeof names[0]; i++)
+        if (strcmp(names[i], name) == 0)
+            return 1;
+    return 0;
+}
+
+static sc_status eval_node(const eval *e, const parse_node *n, twod_region *out,
+                           int depth)
+{
+    if (depth > TWOD_MAX_DEPTH)
+        return err_set(e->c->error, SC_ERR_LIMIT, &n->loc,
+                       "too many nested 2D nodes in %s (limit is %d)", e->outer,
+                       TWOD_MAX_DEPTH);
+    const char *name = n->name;
+    twod_clear(out);
+    if (strcmp(name, "square") == 0)
+        return read_square(e, n, out);
+    if (strcmp(name, "circle") == 0)
+        return read_circle(e, n, out);
+    if (strcmp(name, "polygon") == 0)
+        return read_polygon(e, n, out);
+    if (strcmp(name, "text") == 0)
+        return read_text(e, n, out);
+    if (strcmp(name, "import") == 0)
+        return read_import(e, n, out);
+    if (is_3d(name))
+        return err_set(e->c->error, SC_ERR_SEMANTIC, &n->loc,
+                       "'%s' is a 3D object inside a 2D operation (%s)", name, e->outer);
+    int is_union = strcmp(name, "group") == 0 || strcmp(name, "union") == 0 ||
+                   strcmp(name, "render") == 0 || strcmp(name, "color") == 0;
+    int is_multmatrix = strcmp(name, "multmatrix") == 0;
+    int is_offset = strcmp(name, "offset") == 0;
+    twod_op op = TWOD_UNION;
+    if (strcmp(name, "difference") == 0)
+        op = TWOD_DIFFERENCE;
+    else if (strcmp(name, "intersection") == 0)
+        op = TWOD_INTERSECTION;
+    else if (!is_union && !is_multmatrix && !is_offset && strcmp(name, "hull") != 0 &&
+             strcmp(name, "minkowski") != 0)
+        return err_set(e->c->error, SC_ERR_UNSUPPORTED, &n->loc,
+                       "'%s' inside %s is not supported yet", name, e->outer);
+    double m[2][3] = {{1, 0, 0}, {0, 1, 0}};
+    sc_status st;
+    if (is_multmatrix && (st = read_matrix(e, n, m)) != SC_OK)
+        return st;
+    twod_region *regions;
+    uint32_t count;
+    st = eval_children(e, n, &regions, &count, depth);
+    if (st == SC_OK) {
+        if (strcmp(name, "hull") == 0)
+            st = hull(e, n, regions, count, out);
+        else if (strcmp(name, "minkowski") == 0)
+            st = minkowski(e, n, regions, count, out);
+        else
+            st = combine(e, n, regions, count, op, out);
+    }
+    free_children(regions, count);
+    if (st == SC_OK && is_multmatrix)
+        st = transform(e, n, m, out);
+    if (st == SC_OK && is_offset)
+        st = offset(e, n, out);
+    return st;
+}
+
+sc_status build_twod_children(const build_ctx *c, const parse_node *parent,
+                              twod_region *out)
+{
+    eval e = {c, parent->name};
+    twod_region *regions;
+    uint32_t count;
+    sc_status st = eval_children(&e, parent, &regions, &count, 1);
+    if (st == SC_OK)
+        st = combine(&e, parent, regions, count, TWOD_UNION, out);
+    free_children(regions, count);
+    return st;
+}
+
+sc_status build_twod_node(const build_ctx *c, const parse_node *n, const char *outer,
+                          twod_region *out)
+{
+    eval e = {c, outer};
+    return eval_node(&e, n, out, 1);
+}

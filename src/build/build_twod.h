@@ -1,0 +1,25 @@
+/* The 2D builder (build_twod.c): OpenSCAD's 2D subtrees evaluated into
+ * regions of the 2D engine (twod/twod.h), as OpenSCAD 2021.01 evaluates
+ * them, for the extrusions, revolutions, hulls and imports that take 2D
+ * children.
+ */
+#ifndef SPANCAST_BUILD_BUILD_TWOD_H
+#define SPANCAST_BUILD_BUILD_TWOD_H
+
+#include "build/build_curved.h"
+#include "twod/twod.h"
+
+/* The union of parent's 2D children, as OpenSCAD 2021.01 evaluates them:
+ * circle, square, polygon, group/union/render/color, difference,
+ * intersection, multmatrix (its xy part), offset, hull and minkowski.
+ * '%' and '*' children are left out. out must be initialised; it is
+ * replaced. Errors (bad arguments, nodes that are not 2D, limits) are set
+ * at their position. */
+sc_status build_twod_children(const build_ctx *c, const parse_node *parent,
+                              twod_region *out);
+/* The region of the 2D node n itself (circle, offset, ...), evaluated the
+ * same way; outer names the node that asked, for messages. */
+sc_status build_twod_node(const build_ctx *c, const parse_node *n, const char *outer,
+                          twod_region *out);
+
+#endif

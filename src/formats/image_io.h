@@ -1,0 +1,49 @@
+/* Image output through OpenImageIO, behind a C interface.
+ *
+ * The public writers (sc_framebuffer_write_color, _mask, _depth) live in
+ * image_io.cpp. This header adds the check they start with, so that the
+ * command line can reject an output name before it spends time rendering.
+ *
+ * Formats follow the file extension, as OpenImageIO knows them:
+ *   colour  8 bits per channel (PNG, JPEG, BMP, ...), or 32-bit float for
+ *           the float formats .exr .sxr .mxr .tif .tiff .hdr .rgbe .pfm;
+ *   mask    one 8-bit channel (0 or 255) in any format (EXR stores it as
+ *           half floats, 0 or 1);
+ *   depth   one 32-bit float channel "Z", +inf where the ray misses, and
+ *           only in .exr (.sxr .mxr) or float TIFF (.tif .tiff); any other
+ *           known extension is an error, never a silently quantised file;
+ *   normal  three float channels X, Y, Z, same formats as depth;
+ *   id      one float channel "id" (leaf index, -1 on a miss), same formats.
+ * Colour is linear in float files and sRGB-encoded in 8-bit ones (color.h).
+ * Every file carries "Software" and the camera ("ImageDescription" and
+ * "spancast:camera") in its metadata.
+ */
+#ifndef SPANCAST_FORMATS_IMAGE_IO_H
+#define SPANCAST_FORMATS_IMAGE_IO_H
+
+#include "spancast/spancast.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+typedef enum imgio_kind {
+    IMGIO_COLOR,
+    IMGIO_MASK,
+    IMGIO_DEPTH, /* this one and those below need a float format */
+    IMGIO_NORMAL,
+    IMGIO_ID
+} imgio_kind;
+
+/* Checks, without touching the file system, that path names a format
+ * OpenImageIO can write and that suits kind. Returns SC_OK or
+ * SC_ERR_ARGUMENT with "cannot write 'x.foo': unknown image format" or
+ * "cannot write depth to 'x.png': depth needs a floating-point format
+ * (.exr or .tif)". */
+sc_status imgio_check(const char *path, imgio_kind kind, sc_error *error);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif

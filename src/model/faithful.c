@@ -1,0 +1,240 @@
+/* Faithful mode: OpenSCAD 2021.01's polyhedra for sphere and cylinder.
+ *
+ * Fragment count (OpenSCAD's get_fragments_from_r), for a circle of radius
+ * r: 3 when r < 2^-20 (its GRID_FINE) or $fn is not finite; else
+ * max($fn, 3) truncated to an integer when $fn > 0; else
+ * ceil(max(min(360 / $fa, 2 pi r / $fs), 5)).
+ *
+ * Circle of radius r with f fragments: point k is
+ * (r cos(360 k / f), r sin(360 k / f)), angles in degrees through
+ * OpenSCAD's sin_degrees/cos_degrees, which reduce the angle to 0..90 and
+ * return exact values at 30, 45 and 60 degrees.
+ *
+ * Sphere of radius r: f fragments from r, rings = (f + 1) / 2 circles of f
+ * points; ring i sits at polar angle phi = 180 (i + 0.5) / rings, with
+ * radius r sin(phi) at height r cos(phi). Faces: ring 0 as the top cap,
+ * the last ring as the bottom cap, and between rings i and i + 1 the
+ * trapezoid of points k and k + 1 of both (OpenSCAD writes it as two
+ * triangles; they are coplanar, since the two chords are parallel and
+ * symmetric about the plane at angle 360 (k + 0.5) / f). Every point lies
+ * on the sphere, so the polyhedron is convex and equals the intersection
+ * of its face planes.
+ *
+ * Cylinder from z0 (radius r0) to z1 (radius r1): f fragments from
+ * max(r0, r1), one circle at each end (a zero radius is the apex of a
+ * cone), a cap at each end with a non-zero radius, and one side face per
+ * fragment through points k and k + 1 of both circles (again a planar
+ * trapezoid or a triangle). Convex as the hull of two parallel convex
+ * polygons with the same angular layout.
+ *
+ * Each face becomes a plane n . p <= d: n is Newell's normal of the face's
+ * points (exact for planar polygons and robust when points repeat at an
+ * apex), d the mean of n . p over the points, and the sign is chosen so that
+ * a point on the axis (the centre for a sphere, mid-height for a cylinder)
+ * is inside. OpenSCAD rounds its vertices to float when it exports a mesh;
+ * the planes here are in double, so the two agree to float precision.
+ */
+#include "model/faithful.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "base/error.h"
+
+#define GRID_FINE 0.00000095367431640625 /* 2^-20 */
+#define PI 3.14159265358979323846
+#define SQRT1_2 0.70710678118654752440
+#define SQRT3_4 0.86602540378443859659  /* sqrt(3) / 2 */
+#define DEG2RAD 0.017453292519943295769 /* pi / 180 */
+
+long faithful_fragments(double r, double fn, double fs, double fa)
+{
+    if (r < GRID_FINE || isinf(fn) || isnan(fn))
+        return 3;
+    double count;
+    if (fn > 0)
+        count = fn >= 3 ? floor(fn) : 3;
+    else
+        count = ceil(fmax(fmin(360.0 / fa, r * 2 * PI / fs), 5));
+    if (!(count <= FAITHFUL_MAX_FRAGMENTS))
+        return -1; /* also NaN, from $fa or $fs that are 0 or NaN */
+    return (long)count;
+}
+
+/* Reduces degrees to [0, 360) as OpenSCAD does (finite inputs only). */
+static double reduce_degrees(double x)
+{
+    if (!(x < 360.0 && x >= 0.0))
+        x -= 360.0 * floor(x / 360.0);
+    return x;
+}
+
+double faithful_sin_deg(double x)
+{
+    x = reduce_degrees(x);
+    int negate = x >= 180.0;
+    if (negate)
+        x -= 180.0;
+    if (x > 90.0)
+        x = 180.0 - x;
+    double s;
+    if (x < 45.0)
+        s = x == 30.0 ? 0.5 : sin(x * DEG2RAD);
+    else if (x == 45.0)
+        s = SQRT1_2;
+    else if (x == 60.0)
+        s = SQRT3_4;
+    else
+        s = cos((90.0 - x) * DEG2RAD);
+    return negate ? -s : s;
+}
+
+double faithful_cos_deg(double x)
+{
+    x = reduce_degrees(x);
+    int negate = x >= 180.0;
+    if (negate)
+        x -= 180.0;
+    if (x > 90.0) {
+        x = 180.0 - x;
+        negate = !negate;
+    }
+    double c;
+    if (x > 45.0)
+        c = x == 60.0 ? 0.5 : sin((90.0 - x) * DEG2RAD);
+    else if (x == 45.0)
+        c = SQRT1_2;
+    else if (x == 30.0)
+        c = SQRT3_4;
+    else
+        c = cos(x * DEG2RAD);
+    return negate ? -c : c;
+}
+
+/* Point k of a circle of radius r with f fragments at height z. */
+static vec3 circle_point(double r, long k, long f, double z)
+{
+    double phi = (360.0 * (double)k) / (double)f;
+    return v3(r * faithful_cos_deg(phi), r * faithful_sin_deg(phi), z);
+}
+
+/* The plane of the polygon p[0..count), oriented so that inside_point is
+ * inside. */
+static plane face_plane(const vec3 *p, int count, vec3 inside_point)
+{
+    vec3 n = v3(0, 0, 0);
+    for (int i = 0; i < count; i++) {
+        vec3 a = p[i], b = p[(i + 1) % count];
+        n = v3_add(n, v3((a.y - b.y) * (a.z + b.z), (a.z - b.z) * (a.x + b.x),
+                         (a.x - b.x) * (a.y + b.y)));
+    }
+    n = v3_scale(n, 1.0 / v3_length(n));
+    double d = 0;
+    for (int i = 0; i < count; i++)
+        d += v3_dot(n, p[i]);
+    d /= count;
+    plane pl = {n, d};
+    if (v3_dot(n, inside_point) > d) {
+        pl.n = v3_neg(n);
+        pl.d = -d;
+    }
+    return pl;
+}
+
+static sc_status fragment_error(double r, const sc_location *loc, sc_error *error)
+{
+    return err_set(error, SC_ERR_LIMIT, loc,
+                   "faithful mode: $fn, $fa and $fs of radius %g give too many fragments "
+                   "(limit is %d)",
+                   r, FAITHFUL_MAX_FRAGMENTS);
+}
+
+static void fill_convex(prim *out, plane *planes, uint32_t count, bbox bounds)
+{
+    memset(out, 0, sizeof *out);
+    out->kind = PRIM_CONVEX;
+    out->u.convex.planes = planes;
+    out->u.convex.count = count;
+    out->u.convex.bounds = bounds;
+}
+
+sc_status faithful_sphere(csg_builder *csg, double r, double fn, double fa, double fs,
+                          const sc_location *loc, prim *out, sc_error *error)
+{
+    long f = faithful_fragments(r, fn, fs, fa);
+    if (f < 0)
+        return fragment_error(r, loc, error);
+    long rings = (f + 1) / 2;
+    size_t count = (size_t)(rings - 1) * (size_t)f + 2;
+    plane *planes = csg_builder_alloc(csg, count * sizeof *planes);
+    vec3 *points = malloc((size_t)rings * (size_t)f * sizeof *points);
+    if (!planes || !points) {
+        free(points);
+        return err_nomem(error, NULL);
+    }
+    bbox bounds = bbox_empty();
+    for (long i = 0; i < rings; i++) {
+        double phi = (180.0 * ((double)i + 0.5)) / (double)rings;
+        double radius = r * faithful_sin_deg(phi);
+        double z = r * faithful_cos_deg(phi);
+        for (long k = 0; k < f; k++) {
+            vec3 p = circle_point(radius, k, f, z);
+            points[i * f + k] = p;
+            bounds = bbox_add_point(bounds, p);
+        }
+    }
+    vec3 centre = v3(0, 0, 0);
+    size_t n = 0;
+    planes[n++] = (plane){v3(0, 0, 1), points[0].z};
+    planes[n++] = (plane){v3(0, 0, -1), -points[(rings - 1) * f].z};
+    for (long i = 0; i + 1 < rings; i++) {
+        for (long k = 0; k < f; k++) {
+            long k1 = (k + 1) % f;
+            vec3 quad[4] = {points[i * f + k], points[i * f + k1],
+                            points[(i + 1) * f + k1], points[(i + 1) * f + k]};
+            planes[n++] = face_plane(quad, 4, centre);
+        }
+    }
+    free(points);
+    fill_convex(out, planes, (uint32_t)n, bounds);
+    return SC_OK;
+}
+
+sc_status faithful_cylinder(csg_builder *csg, double z0, double z1, double r0, double r1,
+                            double fn, double fa, double fs, const sc_location *loc,
+                            prim *out, sc_error *error)
+{
+    double rmax = fmax(r0, r1);
+    long f = faithful_fragments(rmax, fn, fs, fa);
+    if (f < 0)
+        return fragment_error(rmax, loc, error);
+    size_t count = (size_t)f + 2;
+    plane *planes = csg_builder_alloc(csg, count * sizeof *planes);
+    vec3 *points = malloc(2 * (size_t)f * sizeof *points);
+    if (!planes || !points) {
+        free(points);
+        return err_nomem(error, NULL);
+    }
+    bbox bounds = bbox_empty();
+    for (long k = 0; k < f; k++) {
+        points[k] = circle_point(r0, k, f, z0);
+        points[f + k] = circle_point(r1, k, f, z1);
+        bounds = bbox_add_point(bounds, points[k]);
+        bounds = bbox_add_point(bounds, points[f + k]);
+    }
+    vec3 axis = v3(0, 0, 0.5 * (z0 + z1));
+    size_t n = 0;
+    if (r0 > 0)
+        planes[n++] = (plane){v3(0, 0, -1), -z0};
+    if (r1 > 0)
+        planes[n++] = (plane){v3(0, 0, 1), z1};
+    for (long k = 0; k < f; k++) {
+        long k1 = (k + 1) % f;
+        vec3 quad[4] = {points[k], points[k1], points[f + k1], points[f + k]};
+        planes[n++] = face_plane(quad, 4, axis);
+    }
+    free(points);
+    fill_convex(out, planes, (uint32_t)n, bounds);
+    return SC_OK;
+}

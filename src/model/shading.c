@@ -1,0 +1,59 @@
+/* The shading record of a scene: see shading.h. Plain growable arrays;
+ * nothing here is used while rendering except by reading. */
+#include "base/grow.h"
+#include "model/shading.h"
+
+#include <stdlib.h>
+#include <string.h>
+
+shading_material shading_default_material(void)
+{
+    shading_material m;
+    memset(&m, 0, sizeof m);
+    m.ambient = SHADING_DEFAULT_AMBIENT;
+    m.diffuse = SHADING_DEFAULT_DIFFUSE;
+    m.specular = SHADING_DEFAULT_SPECULAR;
+    m.shininess = SHADING_DEFAULT_SHININESS;
+    m.ior = SHADING_DEFAULT_IOR;
+    return m;
+}
+
+shading *shading_new(void)
+{
+    shading *s = calloc(1, sizeof *s);
+    if (!s)
+        return NULL;
+    shading_material m = shading_default_material();
+    if (shading_add_material(s, &m) == UINT32_MAX) {
+        shading_free(s);
+        return NULL;
+    }
+    return s;
+}
+
+void shading_free(shading *s)
+{
+    if (!s)
+        return;
+    free(s->lights);
+    free(s->materials);
+    free(s);
+}
+
+int shading_add_light(shading *s, const shading_light *light)
+{
+    if (!grow_array32((void **)&s->lights, &s->light_cap, s->light_count + 1,
+                      sizeof *light))
+        return 0;
+    s->lights[s->light_count++] = *light;
+    return 1;
+}
+
+uint32_t shading_add_material(shading *s, const shading_material *material)
+{
+    if (!grow_array32((void **)&s->materials, &s->material_cap, s->material_count + 1,
+                      sizeof *material))
+        return UINT32_MAX;
+    s->materials[s->material_count] = *material;
+    return s->material_count++;
+}

@@ -1,0 +1,83 @@
+/* What a scene says about its look: lights, materials, camera, background.
+ *
+ * The builder fills a shading record from spancast's own nodes
+ * (build_shading.c); the renderer reads it. Colours here are display
+ * values, exactly as the file writes them (sRGB-encoded, like OpenSCAD's
+ * colours); the renderer turns them into linear light once per render.
+ *
+ * Materials form a table; every leaf of the CSG tree names one by index
+ * (csg_leaf.material). Index 0 is the default material, the one leaves
+ * outside any material() node get. A material's base colour is not here: it
+ * is the leaf's colour, so that material(color = ...) and OpenSCAD's
+ * color() set the same thing and the innermost of them wins.
+ */
+#ifndef SPANCAST_MODEL_SHADING_H
+#define SPANCAST_MODEL_SHADING_H
+
+#include <stdint.h>
+
+#include "math/vec.h"
+#include "spancast/spancast.h"
+
+typedef enum shading_light_kind {
+    SHADING_LIGHT_POINT,      /* at position; a sphere light when radius > 0 */
+    SHADING_LIGHT_DIRECTIONAL /* from infinitely far along -direction */
+} shading_light_kind;
+
+typedef struct shading_light {
+    shading_light_kind kind;
+    vec3 position;    /* point and sphere lights, world */
+    vec3 direction;   /* directional lights: unit direction the light travels */
+    double radius;    /* sphere lights, world units; 0 for a point light */
+    float color[3];   /* display values 0..1 */
+    double intensity; /* multiplies the colour (after linearising) */
+} shading_light;
+
+/* Defaults of a material() node's parameters, and of material 0. */
+#define SHADING_DEFAULT_AMBIENT 0.1
+#define SHADING_DEFAULT_DIFFUSE 0.9
+#define SHADING_DEFAULT_SPECULAR 0.2
+#define SHADING_DEFAULT_SHININESS 40.0
+#define SHADING_DEFAULT_IOR 1.5
+
+typedef struct shading_material {
+    double ambient, diffuse, specular, shininess; /* Blinn-Phong weights */
+    double reflect;                               /* mirror reflection weight, 0..1 */
+    double transmit; /* refraction weight, 0..1; Fresnel splits it */
+    double ior;      /* index of refraction of the solid's inside */
+    double checker;  /* > 0: a 3D checkerboard of cells this size in world units */
+    float color2[3]; /* the checkerboard's second colour, display values */
+} shading_material;
+
+typedef struct shading_camera {
+    double eye[3], center[3], up[3];
+    double fov_deg;
+    sc_projection projection;
+} shading_camera;
+
+typedef struct shading {
+    shading_light *lights;
+    uint32_t light_count, light_cap;
+    shading_material *materials; /* [0] is the default material */
+    uint32_t material_count, material_cap;
+    int has_camera;
+    shading_camera camera;
+    int has_background;
+    float background[3]; /* display values */
+} shading;
+
+/* A record with the default material only; NULL when out of memory. */
+shading *shading_new(void);
+void shading_free(shading *s);
+
+/* The default material, for material 0 and for material() parameters that
+ * are not given. */
+shading_material shading_default_material(void);
+
+/* Appends a copy; returns 1, or 0 when out of memory. */
+int shading_add_light(shading *s, const shading_light *light);
+
+/* Appends a copy; returns its index, or UINT32_MAX when out of memory. */
+uint32_t shading_add_material(shading *s, const shading_material *material);
+
+#endif

@@ -1,0 +1,543 @@
+/* The .csg lexer: see lex.h.
+ *
+ * Strings follow OpenSCAD's lexer rule for rule: the escapes \n \t \r \\ \"
+ * are the usual characters; \xHH with H in 00..7f is that byte (\x00 is a
+ * space); \uHHHH and \UHHHHHH are a code point written as UTF-8 (zero, a
+ * surrogate or a value past U+10FFFF is a space); a backslash before
+ * anything else is dropped and the next character kept; a raw line break
+ * inside a string is dropped. Whitespace is space, tab, CR, LF and the UTF-8
+ * no-break space, as in OpenSCAD.
+ *
+ * Numbers are converted with strtod after the '.' is replaced by the
+ * current locale's decimal point, so the library reads the same numbers
+ * whatever locale the host program has set.
+ */
+#include "syntax/lex.h"
+
+#include <errno.h>
+#include <locale.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "base/error.h"
+
+void lex_init(lexer *lx, const char *file, const char *text, size_t length,
+              arena *strings)
+{
+    lx->file = file;
+    lx->p = text;
+    lx->end = text + length;
+    lx->line_start = text;
+    lx->line = 1;
+    lx->strings = strings;
+}
+
+const char *lex_kind_name(lex_kind kind)
+{
+    switch (kind) {
+    case LEX_EOF:
+        return "end of file";
+    case LEX_IDENT:
+        return "a name";
+    case LEX_NUMBER:
+        return "a number";
+    case LEX_STRING:
+        return "a string";
+    case LEX_TRUE:
+        return "'true'";
+    case LEX_FALSE:
+        return "'false'";
+    case LEX_UNDEF:
+        return "'undef'";
+    case LEX_LPAREN:
+        return "'('";
+    case LEX_RPAREN:
+        return "')'";
+    case LEX_LBRACKET:
+        return "'['";
+    case LEX_RBRACKET:
+        return "']'";
+    case LEX_LBRACE:
+        return "'{'";
+    case LEX_RBRACE:
+        return "'}'";
+    case LEX_COMMA:
+        return "','";
+    case LEX_SEMICOLON:
+        return "';'";
+    case LEX_EQUALS:
+        return "'='";
+    case LEX_PERCENT:
+        return "'%'";
+    case LEX_HASH:
+        return "'#'";
+    case LEX_BANG:
+        return "'!'";
+    case LEX_STAR:
+        return "'*'";
+    }
+    return "a token";
+}
+
+static int is_digit(int c)
+{
+    return c >= '0' && c <= '9';
+}
+
+static int is_ident_char(int c)
+{
+    return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || is_digit(c) || c == '_';
+}
+
+static int hex_value(int c)
+{
+    if (c >= '0' && c <= '9')
+        return c - '0';
+    if (c >= 'a' && c <= 'f')
+        return c - 'a' + 10;
+    if (c >= 'A' && c <= 'F')
+        return c - 'A' + 10;
+    return -1;
+}
+
+static sc_location here(const lexer *lx, const char *at, int line, const char *line_start)
+{
+    sc_location loc = {lx->file, line, (int)(at - line_start) + 1};
+    return loc;
+}
+
+/* Moves past a line break at lx->p (LF; a CR is plain whitespace). */
+static void new_line(lexer *lx)
+{
+    lx->p++;
+    lx->line++;
+    lx->line_start = lx->p;
+}
+
+/* Length of a valid UTF-8 sequence of 2 to 4 bytes at p, or 0. */
+static size_t utf8_length(const char *p, const char *end)
+{
+    const unsigned char *s = (const unsigned char *)p;
+    size_t avail = (size_t)(end - p);
+    size_t n = s[0] >= 0xc2 && s[0] <= 0xdf   ? 2
+               : s[0] >= 0xe0 && s[0] <= 0xef ? 3
+               : s[0] >= 0xf0 && s[0] <= 0xf4 ? 4
+                                              : 0;
+    if (n == 0 || n > avail)
+        return 0;
+    for (size_t i = 1; i < n; i++) {
+        if ((s[i] & 0xc0) != 0x80)
+            return 0;
+    }
+    return n;
+}
+
+/* Writes code point c as UTF-8 to out (which has room for 4); returns the
+ * byte count. */
+static size_t utf8_encode(unsigned long c, char *out)
+{
+    if (c < 0x80) {
+        out[0] = (char)c;
+        return 1;
+    }
+    if (c < 0x800) {
+        out[0] = (char)(0xc0 | (c >> 6));
+        out[1] = (char)(0x80 | (c & 0x3f));
+        return 2;
+    }
+    if (c < 0x10000) {
+        out[0] = (char)(0xe0 | (c >> 12));
+        out[1] = (char)(0x80 | ((c >> 6) & 0x3f));
+        out[2] = (char)(0x80 | (c & 0x3f));
+        return 3;
+    }
+    out[0] = (char)(0xf0 | (c >> 18));
+    out[1] = (char)(0x80 | ((c >> 12) & 0x3f));
+    out[2] = (char)(0x80 | ((c >> 6) & 0x3f));
+    out[3] = (char)(0x80 | (c & 0x3f));
+    return 4;
+}
+
+/* Skips whitespace and comments. Returns SC_OK or the error of an
+ * unterminated block comment. */
+static sc_status skip_space(lexer *lx, sc_error *error)
+{
+    for (;;) {
+        if (lx->p >= lx->end)
+            return SC_OK;
+        unsigned char c = (unsigned char)*lx->p;
+        if (c == '\n') {
+            new_line(lx);
+        } else if (c == ' ' || c == '\t' || c == '\r') {
+            lx->p++;
+        } else if (c == 0xc2 && lx->end - lx->p >= 2 && (unsigned char)lx->p[1] == 0xa0) {
+            lx->p += 2; /* UTF-8 no-break space */
+        } else if (c == '/' && lx->end - lx->p >= 2 && lx->p[1] == '/') {
+            while (lx->p < lx->end && *lx->p != '\n')
+                lx->p++;
+        } else if (c == '/' && lx->end - lx->p >= 2 && lx->p[1] == '*') {
+            sc_location loc = here(lx, lx->p, lx->line, lx->line_start);
+            lx->p += 2;
+            for (;;) {
+                if (lx->p >= lx->end)
+                    return err_set(error, SC_ERR_SYNTAX, &loc, "unterminated comment");
+                if (*lx->p == '*' && lx->end - lx->p >= 2 && lx->p[1] == '/') {
+                    lx->p += 2;
+                    break;
+                }
+                if (*lx->p == '\n')
+                    new_line(lx);
+                else
+                    lx->p++;
+            }
+        } else {
+            return SC_OK;
+        }
+    }
+}
+
+/* "inf" or "nan" as a whole word at p. Returns the value's magnitude kind:
+ * 1 inf, 2 nan, 0 neither. */
+static int special_word(const char *p, const char *end)
+{
+    if (end - p < 3)
+        return 0;
+    if (end - p > 3 && is_ident_char((unsigned char)p[3]))
+        return 0;
+    if (memcmp(p, "inf", 3) == 0)
+        return 1;
+    if (memcmp(p, "nan", 3) == 0)
+        return 2;
+    return 0;
+}
+
+/* number := [+-]? ( D+ ('.' D*)? | '.' D+ ) ([eE] [+-]? D+)?
+ *         | [+-]? ('inf' | 'nan')
+ * Any letter, digit, '_' or '.' directly after a number makes it
+ * malformed. */
+static sc_status lex_number(lexer *lx, lex_token *tok, sc_error *error)
+{
+    const char *s = lx->p, *p = lx->p;
+    sc_location loc = here(lx, s, lx->line, lx->line_start);
+    int negative = 0;
+    if (*p == '+' || *p == '-') {
+        negative = *p == '-';
+        p++;
+    }
+    int special = special_word(p, lx->end);
+    if (special) {
+        p += 3;
+        tok->kind = LEX_NUMBER;
+        tok->number = special == 1 ? INFINITY : NAN;
+        if (negative)
+            tok->number = -tok->number;
+        tok->length = (size_t)(p - s);
+        lx->p = p;
+        return SC_OK;
+    }
+    while (p < lx->end && is_digit((unsigned char)*p))
+        p++;
+    if (p < lx->end && *p == '.') {
+        p++;
+        while (p < lx->end && is_digit((unsigned char)*p))
+            p++;
+    }
+    if (p < lx->end && (*p == 'e' || *p == 'E')) {
+        const char *q = p + 1;
+        if (q < lx->end && (*q == '+' || *q == '-'))
+            q++;
+        if (q < lx->end && is_digit((unsigned char)*q)) {
+            while (q < lx->end && is_digit((unsigned char)*q))
+                q++;
+            p = q;
+        }
+    }
+    if (p < lx->end && (is_ident_char((unsigned char)*p) || *p == '.')) {
+        while (p < lx->end &&
+               (is_ident_char((unsigned char)*p) || *p == '.' ||
+                ((*p == '+' || *p == '-') && (p[-1] == 'e' || p[-1] == 'E'))))
+            p++;
+        return err_set(error, SC_ERR_SYNTAX, &loc, "malformed number '%.*s'",
+                       (int)(p - s), s);
+    }
+    size_t n = (size_t)(p - s);
+    char small[128];
+    char *buf = n < sizeof small ? small : malloc(n + 1);
+    if (!buf)
+        return err_nomem(error, NULL);
+    memcpy(buf, s, n);
+    buf[n] = '\0';
+    const char *point = localeconv()->decimal_point;
+    if (point && point[0] && point[0] != '.' && !point[1]) {
+        char *dot = strchr(buf, '.');
+        if (dot)
+            *dot = point[0];
+    }
+    errno = 0;
+    double v = strtod(buf, NULL);
+    int overflow = errno == ERANGE && isinf(v);
+    if (buf != small)
+        free(buf);
+    if (overflow)
+        return err_set(error, SC_ERR_SYNTAX, &loc, "number out of range '%.*s'", (int)n,
+                       s);
+    tok->kind = LEX_NUMBER;
+    tok->number = v;
+    tok->length = n;
+    lx->p = p;
+    return SC_OK;
+}
+
+/* Finds the closing quote of the string opening at lx->p; returns it, or
+ * NULL at the end of the text. */
+static const char *string_end(const char *p, const char *end)
+{
+    for (p++; p < end; p++) {
+        if (*p == '\\') {
+            if (p + 1 < end)
+                p++;
+        } else if (*p == '"') {
+            return p;
+        }
+    }
+    return NULL;
+}
+
+/* Decodes the escapes of raw[0 .. n) into out (at least n bytes); returns
+ * the decoded length. With stop_at set, stops as soon as the decoded
+ * length would pass *stop_at and stores there the raw offset reached
+ * (lex_string_locate). */
+static size_t decode_string(const char *raw, size_t n, char *out, size_t *stop_at)
+{
+    size_t k = 0;
+    const char *p = raw, *end = raw + n;
+    while (p < end) {
+        char c = *p;
+        if (c == '\n' || c == '\r') {
+            p++;
+            continue;
+        }
+        if (stop_at && k >= *stop_at)
+            break;
+        if (c != '\\') {
+            out[k++] = c;
+            p++;
+            continue;
+        }
+        /* p + 1 < end: string_end never stops right after a lone backslash. */
+        char e = p[1];
+        if (e == 'n' || e == 't' || e == 'r' || e == '\\' || e == '"') {
+            out[k++] = e == 'n' ? '\n' : e == 't' ? '\t' : e == 'r' ? '\r' : e;
+            p += 2;
+            continue;
+        }
+        if (e == 'x' && end - p >= 4 && p[2] >= '0' && p[2] <= '7' &&
+            hex_value(p[3]) >= 0) {
+            int v = hex_value(p[2]) * 16 + hex_value(p[3]);
+            out[k++] = v == 0 ? ' ' : (char)v;
+            p += 4;
+            continue;
+        }
+        int digits = e == 'u' ? 4 : e == 'U' ? 6 : 0;
+        if (digits && end - p >= 2 + digits) {
+            unsigned long v = 0;
+            int ok = 1;
+            for (int i = 0; i < digits; i++) {
+                int h = hex_value(p[2 + i]);
+                if (h < 0) {
+                    ok = 0;
+                    break;
+                }
+                v = v * 16 + (unsigned long)h;
+            }
+            if (ok) {
+                int valid = v != 0 && v <= 0x10ffff && !(v >= 0xd800 && v <= 0xdfff);
+                if (valid)
+                    k += utf8_encode(v, out + k);
+                else
+                    out[k++] = ' ';
+                p += 2 + digits;
+                continue;
+            }
+        }
+        /* Any other backslash is dropped; the next character is kept. */
+        p++;
+    }
+    out[k] = '\0';
+    if (stop_at)
+        *stop_at = (size_t)(p - raw);
+    return k;
+}
+
+void lex_string_locate(const char *raw, size_t raw_length, int quote_line,
+                       int quote_column, size_t offset, int *line, int *column)
+{
+    /* Decoding never lengthens (lex_string), so raw_length + 1 bytes hold
+     * any prefix; a small buffer serves strings up to its size, longer
+     * ones are decoded in the same pass without keeping the bytes. */
+    char buf[256];
+    char *out = buf;
+    char *heap = NULL;
+    if (raw_length + 1 > sizeof buf) {
+        heap = malloc(raw_length + 1);
+        out = heap;
+    }
+    size_t stop = offset;
+    if (out)
+        decode_string(raw, raw_length, out, &stop);
+    else
+        stop = offset < raw_length ? offset : raw_length; /* no memory: approximate */
+    free(heap);
+    /* Skip raw line breaks that come before the character. */
+    while (stop < raw_length && (raw[stop] == '\n' || raw[stop] == '\r'))
+        stop++;
+    int l = quote_line, c = quote_column + 1;
+    for (size_t i = 0; i < stop; i++) {
+        if (raw[i] == '\n') {
+            l++;
+            c = 1;
+        } else {
+            c++;
+        }
+    }
+    *line = l;
+    *column = c;
+}
+
+static sc_status lex_string(lexer *lx, lex_token *tok, sc_error *error)
+{
+    sc_location loc = here(lx, lx->p, lx->line, lx->line_start);
+    const char *close = string_end(lx->p, lx->end);
+    if (!close)
+        return err_set(error, SC_ERR_SYNTAX, &loc, "unterminated string");
+    const char *raw = lx->p + 1;
+    size_t n = (size_t)(close - raw);
+    if (n > LEX_MAX_STRING)
+        return err_set(error, SC_ERR_LIMIT, &loc, "string too long (limit is %d bytes)",
+                       LEX_MAX_STRING);
+    /* Decoding never lengthens: every escape is at least as long as its
+     * UTF-8 result (\uHHHH: 6 bytes for at most 3, \UHHHHHH: 8 for 4). */
+    char *out = arena_alloc(lx->strings, n + 1);
+    if (!out)
+        return err_nomem(error, NULL);
+    tok->kind = LEX_STRING;
+    tok->string = out;
+    tok->string_length = decode_string(raw, n, out, NULL);
+    /* Keep line numbers right across raw line breaks in the string. */
+    for (const char *q = raw; q < close; q++) {
+        if (*q == '\n') {
+            lx->line++;
+            lx->line_start = q + 1;
+        }
+    }
+    lx->p = close + 1;
+    tok->length = (size_t)(lx->p - tok->start);
+    return SC_OK;
+}
+
+static sc_status unexpected(lexer *lx, sc_error *error)
+{
+    sc_location loc = here(lx, lx->p, lx->line, lx->line_start);
+    unsigned char c = (unsigned char)*lx->p;
+    if (c > 0x20 && c < 0x7f)
+        return err_set(error, SC_ERR_SYNTAX, &loc, "unexpected character '%c'", c);
+    size_t n = utf8_length(lx->p, lx->end);
+    if (n)
+        return err_set(error, SC_ERR_SYNTAX, &loc, "unexpected character '%.*s'", (int)n,
+                       lx->p);
+    return err_set(error, SC_ERR_SYNTAX, &loc, "unexpected byte 0x%02x", c);
+}
+
+sc_status lex_next(lexer *lx, lex_token *tok, sc_error *error)
+{
+    sc_status st = skip_space(lx, error);
+    if (st != SC_OK)
+        return st;
+    memset(tok, 0, sizeof *tok);
+    tok->start = lx->p;
+    tok->line = lx->line;
+    tok->column = (int)(lx->p - lx->line_start) + 1;
+    if (lx->p >= lx->end) {
+        tok->kind = LEX_EOF;
+        return SC_OK;
+    }
+    unsigned char c = (unsigned char)*lx->p;
+    const char *next = lx->p + 1;
+    int next_c = next < lx->end ? (unsigned char)*next : -1;
+    int next2_c = next + 1 < lx->end ? (unsigned char)next[1] : -1;
+    if (is_digit(c) || (c == '.' && is_digit(next_c)))
+        return lex_number(lx, tok, error);
+    if ((c == '-' || c == '+') &&
+        (is_digit(next_c) || (next_c == '.' && is_digit(next2_c)) ||
+         special_word(next, lx->end)))
+        return lex_number(lx, tok, error);
+    if (is_ident_char(c) || (c == '$' && is_ident_char(next_c))) {
+        const char *p = lx->p + 1;
+        while (p < lx->end && is_ident_char((unsigned char)*p))
+            p++;
+        size_t n = (size_t)(p - lx->p);
+        if (special_word(lx->p, lx->end))
+            return lex_number(lx, tok, error);
+        tok->kind = LEX_IDENT;
+        if (n == 4 && memcmp(lx->p, "true", 4) == 0)
+            tok->kind = LEX_TRUE;
+        else if (n == 5 && memcmp(lx->p, "false", 5) == 0)
+            tok->kind = LEX_FALSE;
+        else if (n == 5 && memcmp(lx->p, "undef", 5) == 0)
+            tok->kind = LEX_UNDEF;
+        tok->length = n;
+        lx->p = p;
+        return SC_OK;
+    }
+    if (c == '"')
+        return lex_string(lx, tok, error);
+    lex_kind kind;
+    switch (c) {
+    case '(':
+        kind = LEX_LPAREN;
+        break;
+    case ')':
+        kind = LEX_RPAREN;
+        break;
+    case '[':
+        kind = LEX_LBRACKET;
+        break;
+    case ']':
+        kind = LEX_RBRACKET;
+        break;
+    case '{':
+        kind = LEX_LBRACE;
+        break;
+    case '}':
+        kind = LEX_RBRACE;
+        break;
+    case ',':
+        kind = LEX_COMMA;
+        break;
+    case ';':
+        kind = LEX_SEMICOLON;
+        break;
+    case '=':
+        kind = LEX_EQUALS;
+        break;
+    case '%':
+        kind = LEX_PERCENT;
+        break;
+    case '#':
+        kind = LEX_HASH;
+        break;
+    case '!':
+        kind = LEX_BANG;
+        break;
+    case '*':
+        kind = LEX_STAR;
+        break;
+    default:
+        return unexpected(lx, error);
+    }
+    tok->kind = kind;
+    tok->length = 1;
+    lx->p++;
+    return SC_OK;
+}

@@ -1,0 +1,450 @@
+/* The .csg parser: see parse.h for the grammar.
+ *
+ * One token of lookahead is enough: a statement starts with a modifier or a
+ * name, an argument that starts with a name is named (a value never is a
+ * name), and a value's first token says what it is.
+ *
+ * Neither nodes nor vectors recurse. An open node is the parent of the
+ * statements that follow until its '}', so the parse of nested blocks is a
+ * walk up and down parent pointers. Vectors use a value stack: an open '['
+ * remembers where its items start on the stack; its ']' copies them into
+ * the arena as one array and leaves the vector itself on the stack as an
+ * item of the enclosing vector.
+ */
+#include "syntax/parse.h"
+
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "base/error.h"
+#include "base/grow.h"
+#include "syntax/lex.h"
+
+typedef struct open_vector {
+    size_t start; /* index of its first item on the value stack */
+    int line;     /* of its '[' */
+} open_vector;
+
+typedef struct parser {
+    lexer lx;
+    lex_token tok; /* the current token */
+    parse_tree *tree;
+    sc_error *error;
+    parse_value *values; /* the value stack */
+    size_t value_count, value_cap;
+    open_vector *open; /* vectors not yet closed */
+    size_t open_count, open_cap;
+    parse_arg *args; /* the arguments of the node being read */
+    size_t arg_count, arg_cap;
+} parser;
+
+static sc_location token_loc(const parser *ps)
+{
+    sc_location loc = {ps->tree->file, ps->tok.line, ps->tok.column};
+    return loc;
+}
+
+static sc_status advance(parser *ps)
+{
+    return lex_next(&ps->lx, &ps->tok, ps->error);
+}
+
+/* A syntax error at the current token. */
+static sc_status syntax_error(parser *ps, const char *format, ...) SC_PRINTF(2, 3);
+static sc_status syntax_error(parser *ps, const char *format, ...)
+{
+    sc_location loc = token_loc(ps);
+    char message[SC_ERROR_MESSAGE_MAX];
+    va_list args;
+    va_start(args, format);
+    vsnprintf(message, sizeof message, format, args);
+    va_end(args);
+    return err_set(ps->error, SC_ERR_SYNTAX, &loc, "%s", message);
+}
+
+/* Copies the current token's text into the arena as a C string. */
+static const char *token_text(parser *ps)
+{
+    char *s = arena_alloc(&ps->tree->mem, ps->tok.length + 1);
+    if (s) {
+        memcpy(s, ps->tok.start, ps->tok.length);
+        s[ps->tok.length] = '\0';
+    }
+    return s;
+}
+
+static sc_status push_value(parser *ps, const parse_value *v)
+{
+    if (!grow_array((void **)&ps->values, &ps->value_cap, ps->value_count + 1,
+                    sizeof *ps->values))
+        return err_nomem(ps->error, NULL);
+    ps->values[ps->value_count++] = *v;
+    return SC_OK;
+}
+
+/* Closes the innermost open vector at its ']' (the current token): its
+ * items leave the stack and become one arena array in *v. */
+static sc_status close_vector(parser *ps, parse_value *v)
+{
+    open_vector *o = &ps->open[--ps->open_count];
+    size_t count = ps->value_count - o->start;
+    /* The '[' token's position was saved as the vector's placeholder. */
+    *v = ps->values[o->start - 1];
+    if (count > UINT32_MAX)
+        return err_set(ps->error, SC_ERR_LIMIT, NULL, "vector too long");
+    parse_value *items = NULL;
+    if (count) {
+        items = arena_calloc(&ps->tree->mem, count, sizeof *items);
+        if (!items)
+            return err_nomem(ps->error, NULL);
+        memcpy(items, &ps->values[o->start], count * sizeof *items);
+    }
+    v->u.vector.items = items;
+    v->u.vector.count = (uint32_t)count;
+    ps->value_count = o->start - 1; /* drop the items and the placeholder */
+    return advance(ps);
+}
+
+/* value  := NUMBER | STRING | 'true' | 'false' | 'undef' | vector
+ * vector := '[' [ value { ',' value } [ ',' ] ] ']'
+ * Reads one value into *out, nested vectors included, without recursion. */
+static sc_status parse_value_into(parser *ps, parse_value *out)
+{
+    sc_status st;
+    size_t base = ps->open_count;
+    for (;;) {
+        parse_value v;
+        memset(&v, 0, sizeof v);
+        v.line = ps->tok.line;
+        v.column = ps->tok.column;
+        switch (ps->tok.kind) {
+        case LEX_NUMBER:
+            v.kind = PARSE_NUMBER;
+            v.u.number = ps->tok.number;
+            break;
+        case LEX_STRING:
+            v.kind = PARSE_STRING;
+            v.u.string.chars = ps->tok.string;
+            v.u.string.length = ps->tok.string_length;
+            /* The raw text between the quotes, kept for positions inside
+             * the string (expressions report errors there). */
+            v.u.string.raw_length = ps->tok.length - 2;
+            v.u.string.raw = arena_alloc(&ps->tree->mem, ps->tok.length - 1);
+            if (!v.u.string.raw)
+                return err_nomem(ps->error, NULL);
+            memcpy((char *)v.u.string.raw, ps->tok.start + 1, ps->tok.length - 2);
+            ((char *)v.u.string.raw)[ps->tok.length - 2] = '\0';
+            break;
+        case LEX_TRUE:
+        case LEX_FALSE:
+            v.kind = PARSE_BOOL;
+            v.u.boolean = ps->tok.kind == LEX_TRUE;
+            break;
+        case LEX_UNDEF:
+            v.kind = PARSE_UNDEF;
+            break;
+        case LEX_LBRACKET:
+            if (ps->open_count - base >= PARSE_MAX_DEPTH) {
+                sc_location loc = token_loc(ps);
+                return err_set(ps->error, SC_ERR_LIMIT, &loc,
+                               "too many nested vectors (limit is %d)", PARSE_MAX_DEPTH);
+            }
+            /* The placeholder keeps the '[' position until the ']'. */
+            v.kind = PARSE_VECTOR;
+            if ((st = push_value(ps, &v)) != SC_OK)
+                return st;
+            if (!grow_array((void **)&ps->open, &ps->open_cap, ps->open_count + 1,
+                            sizeof *ps->open))
+                return err_nomem(ps->error, NULL);
+            ps->open[ps->open_count].start = ps->value_count;
+            ps->open[ps->open_count].line = ps->tok.line;
+            ps->open_count++;
+            if ((st = advance(ps)) != SC_OK)
+                return st;
+            if (ps->tok.kind != LEX_RBRACKET)
+                continue; /* read the first item */
+            if ((st = close_vector(ps, &v)) != SC_OK)
+                return st;
+            goto complete;
+        default:
+            return syntax_error(ps, "expected a value, found %s",
+                                lex_kind_name(ps->tok.kind));
+        }
+        if ((st = advance(ps)) != SC_OK)
+            return st;
+    complete:
+        /* v is complete: it is the result, or an item of the open vector,
+         * after which comes ',' or ']'. */
+        for (;;) {
+            if (ps->open_count == base) {
+                *out = v;
+                return SC_OK;
+            }
+            if (ps->value_count - ps->open[ps->open_count - 1].start >=
+                PARSE_MAX_VECTOR) {
+                sc_location loc = {ps->tree->file, v.line, v.column};
+                return err_set(ps->error, SC_ERR_LIMIT, &loc,
+                               "too many items in a vector (limit is %d)",
+                               PARSE_MAX_VECTOR);
+            }
+            if ((st = push_value(ps, &v)) != SC_OK)
+                return st;
+            if (ps->tok.kind == LEX_COMMA) {
+                if ((st = advance(ps)) != SC_OK)
+                    return st;
+                if (ps->tok.kind != LEX_RBRACKET)
+                    break; /* read the next item */
+            } else if (ps->tok.kind != LEX_RBRACKET) {
+                return syntax_error(ps, "expected ']' (to close '[' at line %d)",
+                                    ps->open[ps->open_count - 1].line);
+            }
+            if ((st = close_vector(ps, &v)) != SC_OK)
+                return st;
+        }
+    }
+}
+
+/* arguments := [ argument { ',' argument } [ ',' ] ]
+ * argument  := NAME '=' value | value
+ * Reads the arguments after '(' (at line paren_line) through ')'. */
+static sc_status parse_arguments(parser *ps, parse_node *node, int paren_line)
+{
+    sc_status st;
+    ps->arg_count = 0;
+    while (ps->tok.kind != LEX_RPAREN) {
+        parse_arg arg;
+        memset(&arg, 0, sizeof arg);
+        arg.loc = token_loc(ps);
+        if (ps->tok.kind == LEX_IDENT) {
+            if (!(arg.name = token_text(ps)))
+                return err_nomem(ps->error, NULL);
+            if ((st = advance(ps)) != SC_OK)
+                return st;
+            if (ps->tok.kind != LEX_EQUALS)
+                return syntax_error(ps, "expected '=' after argument name '%s'",
+                                    arg.name);
+            if ((st = advance(ps)) != SC_OK)
+                return st;
+        }
+        if ((st = parse_value_into(ps, &arg.value)) != SC_OK)
+            return st;
+        if (!grow_array((void **)&ps->args, &ps->arg_cap, ps->arg_count + 1,
+                        sizeof *ps->args))
+            return err_nomem(ps->error, NULL);
+        ps->args[ps->arg_count++] = arg;
+        if (ps->tok.kind == LEX_COMMA) {
+            if ((st = advance(ps)) != SC_OK)
+                return st;
+        } else if (ps->tok.kind != LEX_RPAREN) {
+            return syntax_error(ps, "expected ')' (to close '(' at line %d)", paren_line);
+        }
+    }
+    if (ps->arg_count) {
+        if (ps->arg_count > UINT32_MAX)
+            return err_set(ps->error, SC_ERR_LIMIT, NULL, "too many arguments");
+        parse_arg *args = arena_calloc(&ps->tree->mem, ps->arg_count, sizeof *args);
+        if (!args)
+            return err_nomem(ps->error, NULL);
+        memcpy(args, ps->args, ps->arg_count * sizeof *args);
+        node->args = args;
+        node->arg_count = (uint32_t)ps->arg_count;
+    }
+    return advance(ps); /* past ')' */
+}
+
+static unsigned modifier_flag(lex_kind kind)
+{
+    switch (kind) {
+    case LEX_STAR:
+        return PARSE_MOD_DISABLE;
+    case LEX_BANG:
+        return PARSE_MOD_ROOT;
+    case LEX_HASH:
+        return PARSE_MOD_HIGHLIGHT;
+    case LEX_PERCENT:
+        return PARSE_MOD_BACKGROUND;
+    default:
+        return 0;
+    }
+}
+
+static void append_child(parse_node *parent, parse_node *node)
+{
+    node->parent = parent;
+    if (parent->last_child)
+        parent->last_child->next = node;
+    else
+        parent->first_child = node;
+    parent->last_child = node;
+    parent->child_count++;
+}
+
+/* file      := statement* EOF
+ * statement := modifier* NAME '(' arguments ')' ( ';' | '{' statement* '}' ) | ';'
+ * The open node whose block is being read is `parent`; its '}' returns to
+ * its own parent. */
+static sc_status parse_statements(parser *ps)
+{
+    sc_status st;
+    parse_tree *tree = ps->tree;
+    parse_node *parent = NULL, *top_tail = NULL;
+    for (;;) {
+        lex_kind kind = ps->tok.kind;
+        if (kind == LEX_EOF) {
+            if (parent)
+                return syntax_error(ps, "expected '}' (to close '{' at line %d)",
+                                    parent->block_line);
+            return SC_OK;
+        }
+        if (kind == LEX_RBRACE) {
+            if (!parent)
+                return syntax_error(ps, "unmatched '}'");
+            parent = parent->parent;
+            if ((st = advance(ps)) != SC_OK)
+                return st;
+            continue;
+        }
+        if (kind == LEX_SEMICOLON) {
+            if ((st = advance(ps)) != SC_OK)
+                return st;
+            continue;
+        }
+        unsigned modifiers = 0;
+        while (modifier_flag(ps->tok.kind)) {
+            modifiers |= modifier_flag(ps->tok.kind);
+            if ((st = advance(ps)) != SC_OK)
+                return st;
+        }
+        if (ps->tok.kind == LEX_LBRACE)
+            return syntax_error(ps, "expected a node name before '{'");
+        if (ps->tok.kind != LEX_IDENT)
+            return syntax_error(ps, "expected a node name, found %s",
+                                lex_kind_name(ps->tok.kind));
+        uint32_t depth = parent ? parent->depth + 1 : 1;
+        if (depth > PARSE_MAX_DEPTH) {
+            sc_location loc = token_loc(ps);
+            return err_set(ps->error, SC_ERR_LIMIT, &loc,
+                           "too many nested nodes (limit is %d)", PARSE_MAX_DEPTH);
+        }
+        if (tree->node_count >= PARSE_MAX_NODES) {
+            sc_location loc = token_loc(ps);
+            return err_set(ps->error, SC_ERR_LIMIT, &loc, "too many nodes (limit is %d)",
+                           PARSE_MAX_NODES);
+        }
+        parse_node *node = arena_calloc(&tree->mem, 1, sizeof *node);
+        if (!node || !(node->name = token_text(ps)))
+            return err_nomem(ps->error, NULL);
+        node->loc = token_loc(ps);
+        node->modifiers = modifiers;
+        node->depth = depth;
+        if ((st = advance(ps)) != SC_OK)
+            return st;
+        if (ps->tok.kind != LEX_LPAREN)
+            return syntax_error(ps, "expected '(' after node name '%s'", node->name);
+        int paren_line = ps->tok.line;
+        if ((st = advance(ps)) != SC_OK)
+            return st;
+        if ((st = parse_arguments(ps, node, paren_line)) != SC_OK)
+            return st;
+        if (parent) {
+            append_child(parent, node);
+        } else {
+            if (top_tail)
+                top_tail->next = node;
+            else
+                tree->first = node;
+            top_tail = node;
+            tree->count++;
+        }
+        tree->node_count++;
+        if (ps->tok.kind == LEX_SEMICOLON) {
+            if ((st = advance(ps)) != SC_OK)
+                return st;
+        } else if (ps->tok.kind == LEX_LBRACE) {
+            node->has_block = 1;
+            node->block_line = ps->tok.line;
+            parent = node;
+            if ((st = advance(ps)) != SC_OK)
+                return st;
+        } else {
+            return syntax_error(ps, "expected ';' or '{' after node");
+        }
+    }
+}
+
+sc_status parse_text(const char *file, const char *text, size_t length, parse_tree **out,
+                     sc_error *error)
+{
+    *out = NULL;
+    parse_tree *tree = calloc(1, sizeof *tree);
+    if (!tree)
+        return err_nomem(error, NULL);
+    arena_init(&tree->mem, 64 * 1024);
+    tree->file = file;
+    parser ps;
+    memset(&ps, 0, sizeof ps);
+    ps.tree = tree;
+    ps.error = error;
+    lex_init(&ps.lx, file, text, length, &tree->mem);
+    sc_status st = advance(&ps);
+    if (st == SC_OK)
+        st = parse_statements(&ps);
+    free(ps.values);
+    free(ps.open);
+    free(ps.args);
+    if (st != SC_OK) {
+        parse_tree_free(tree);
+        return st;
+    }
+    *out = tree;
+    return SC_OK;
+}
+
+void parse_tree_free(parse_tree *tree)
+{
+    if (!tree)
+        return;
+    arena_free(&tree->mem);
+    free(tree);
+}
+
+const parse_arg *parse_node_arg(const parse_node *node, const char *name, int position)
+{
+    const parse_arg *found = NULL;
+    int positional = 0;
+    for (uint32_t i = 0; i < node->arg_count; i++) {
+        const parse_arg *a = &node->args[i];
+        if (a->name) {
+            if (strcmp(a->name, name) == 0)
+                found = a;
+        } else if (positional++ == position) {
+            found = a;
+        }
+    }
+    return found;
+}
+
+void parse_node_resolution(const parse_node *node, double *fn, double *fa, double *fs)
+{
+    const char *names[3] = {"$fn", "$fa", "$fs"};
+    double *outs[3] = {fn, fa, fs};
+    const double defaults[3] = {0, 12, 2};
+    for (int i = 0; i < 3; i++) {
+        const parse_arg *a = parse_node_arg(node, names[i], -1);
+        *outs[i] = a && a->value.kind == PARSE_NUMBER ? a->value.u.number : defaults[i];
+    }
+}
+
+const parse_node *parse_next_node(const parse_node *node, int skip_children)
+{
+    if (!skip_children && node->first_child)
+        return node->first_child;
+    while (node) {
+        if (node->next)
+            return node->next;
+        node = node->parent;
+    }
+    return NULL;
+}

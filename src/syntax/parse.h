@@ -1,0 +1,127 @@
+/* The parser of the .csg grammar: tokens in, a syntax tree out.
+ *
+ *   file      := statement* EOF
+ *   statement := modifier* NAME '(' arguments ')' ( ';' | '{' statement* '}' ) | ';'
+ *   modifier  := '%' | '#' | '!' | '*'
+ *   arguments := [ argument { ',' argument } [ ',' ] ]
+ *   argument  := NAME '=' value | value
+ *   value     := NUMBER | STRING | 'true' | 'false' | 'undef' | vector
+ *   vector    := '[' [ value { ',' value } [ ',' ] ] ']'
+ *
+ * The tree keeps everything the file says, meaning nothing yet: node names
+ * are not checked here (the builder does that), every argument is kept in
+ * source order, including `$fn`, `$fa`, `$fs`, which exact rendering does
+ * not use but OpenSCAD-faithful rendering will. Every node, argument and
+ * value carries its source position.
+ *
+ * Nesting is handled with explicit stacks, never recursion, so no input can
+ * overflow the C stack; nodes and vectors are each limited to
+ * PARSE_MAX_DEPTH levels. A file holds at most PARSE_MAX_NODES nodes and a
+ * vector at most PARSE_MAX_VECTOR items (docs/limits.md), so memory stays
+ * proportional to what a real model needs. Everything lives in one arena
+ * owned by the tree.
+ */
+#ifndef SPANCAST_SYNTAX_PARSE_H
+#define SPANCAST_SYNTAX_PARSE_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "base/arena.h"
+#include "spancast/spancast.h"
+
+#define PARSE_MAX_DEPTH 10000 /* nested nodes, and nested vectors */
+
+#define PARSE_MAX_NODES 4000000  /* nodes in a file */
+#define PARSE_MAX_VECTOR 1000000 /* items in one vector */
+
+typedef enum parse_value_kind {
+    PARSE_UNDEF,
+    PARSE_BOOL,
+    PARSE_NUMBER,
+    PARSE_STRING,
+    PARSE_VECTOR
+} parse_value_kind;
+
+typedef struct parse_value parse_value;
+struct parse_value {
+    parse_value_kind kind;
+    int line, column; /* of the value's first token */
+    union {
+        int boolean;
+        double number; /* may be inf or nan: OpenSCAD writes them */
+        struct {
+            const char *chars; /* decoded, NUL-terminated */
+            size_t length;
+            const char *raw; /* as written between the quotes (for positions
+                                inside the string, see lex_string_locate) */
+            size_t raw_length;
+        } string;
+        struct {
+            const parse_value *items;
+            uint32_t count;
+        } vector;
+    } u;
+};
+
+typedef struct parse_arg {
+    const char *name; /* NULL for a positional argument */
+    sc_location loc;  /* of the name, or of the value when positional */
+    parse_value value;
+} parse_arg;
+
+/* Modifier flags, in the order OpenSCAD documents them. */
+enum {
+    PARSE_MOD_DISABLE = 1,   /* '*': the node is dropped */
+    PARSE_MOD_ROOT = 2,      /* '!': the node is the whole design */
+    PARSE_MOD_HIGHLIGHT = 4, /* '#': shown highlighted, part of the solid */
+    PARSE_MOD_BACKGROUND = 8 /* '%': shown, not part of the solid */
+};
+
+typedef struct parse_node parse_node;
+struct parse_node {
+    const char *name;   /* NUL-terminated */
+    sc_location loc;    /* of the name */
+    unsigned modifiers; /* PARSE_MOD_* flags */
+    const parse_arg *args;
+    uint32_t arg_count;
+    uint32_t depth;     /* 1 for a top-level node */
+    int has_block;      /* written with '{ ... }' (maybe empty) rather than ';' */
+    int block_line;     /* line of the '{' */
+    parse_node *parent; /* NULL at top level */
+    parse_node *first_child, *last_child, *next;
+    uint32_t child_count;
+};
+
+typedef struct parse_tree {
+    arena mem;         /* owns every node, argument, value and string */
+    const char *file;  /* as passed to parse_text; not owned */
+    parse_node *first; /* top-level statements, linked by next */
+    uint32_t count;
+    uint32_t node_count; /* all nodes */
+} parse_tree;
+
+/* Parses text[0 .. length). file names the text in positions and must
+ * outlive the tree. On success *out owns the tree (free with
+ * parse_tree_free); on failure *out is NULL and error says where and why:
+ * SC_ERR_SYNTAX, SC_ERR_LIMIT or SC_ERR_NOMEM. */
+sc_status parse_text(const char *file, const char *text, size_t length, parse_tree **out,
+                     sc_error *error);
+
+void parse_tree_free(parse_tree *tree);
+
+/* The argument that sets parameter `name`, which also takes the position-th
+ * positional argument (position < 0: by name only). When several set it,
+ * the last in source order wins, as in OpenSCAD. NULL when none does. */
+const parse_arg *parse_node_arg(const parse_node *node, const char *name, int position);
+
+/* The node's $fn, $fa and $fs, with OpenSCAD's defaults (0, 12, 2) for the
+ * ones it does not set to a number. */
+void parse_node_resolution(const parse_node *node, double *fn, double *fa, double *fs);
+
+/* The next node after `node` in file order (depth-first, children first),
+ * not descending into node's children when skip_children is set; NULL at
+ * the end. Walks the tree without a stack. */
+const parse_node *parse_next_node(const parse_node *node, int skip_children);
+
+#endif
