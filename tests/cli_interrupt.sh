@@ -35,6 +35,15 @@ no_leftovers() {
     [ "$(sha256sum out/old.png)" = "$old_sum" ] || fail "$1: old.png was changed"
 }
 
+# caught PID SIG: whether process PID has a handler for signal SIG (its
+# SigCgt mask in /proc, bit SIG - 1). A signal sent before the handler is
+# installed kills the process silently, which says nothing about the tool.
+caught() {
+    local mask
+    mask=$(sed -n 's/^SigCgt:[[:space:]]*//p' "/proc/$1/status" 2>/dev/null) || return 1
+    [ -n "$mask" ] && (((0x$mask >> ($(kill -l "$2") - 1)) & 1))
+}
+
 # during the render: SIGTERM, then SIGINT (job control on, so the background
 # job does not start with SIGINT ignored)
 for sig in TERM INT; do
@@ -44,7 +53,15 @@ for sig in TERM INT; do
         2>stderr.txt &
     pid=$!
     set +m
-    sleep 1
+    # Signal once the handler is in place (a generous guard of 60 s for a
+    # loaded machine; it takes well under a second), then a moment later,
+    # inside the render of many seconds.
+    for ((k = 0; k < 600; k++)); do
+        caught "$pid" "$sig" && break
+        sleep 0.1
+    done
+    caught "$pid" "$sig" || fail "render + SIG$sig: no handler after 60 s"
+    sleep 0.5
     kill -"$sig" "$pid"
     wait "$pid"
     rc=$?
