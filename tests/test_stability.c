@@ -3,7 +3,7 @@
  * Models live in tests/stability/. Each case is held to a bound stated in
  * docs/stability.md: the metamorphic cases (scale, translation,
  * ill-conditioned transforms, coincident faces against their expected
- * solids) go through stab_compare (src/render/stability.c), which counts
+ * solids) go through stab_compare (bench/stability.c), which counts
  * mask mismatches, NaN and pixels whose depth error exceeds the derived
  * per-pixel bound; the ray cases (grazing, tangent, thin) check span lists
  * against the point-membership oracle csg_inside.
@@ -30,7 +30,7 @@ size_t __sanitizer_get_current_allocated_bytes(void);
 #include "build/scene.h"
 #include "csg/csg.h"
 #include "render/camera.h"
-#include "render/stability.h"
+#include "bench/stability.h"
 #include "test_util.h"
 
 #define IMAGE 32 /* pixels per side of the harness images */

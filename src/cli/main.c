@@ -46,7 +46,6 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-#include "cli/bench.h"
 #include "cli/scad.h"
 #include "formats/image_io.h"
 #include "render/render.h"
@@ -750,6 +749,30 @@ static int run_render(cli_args *a, int argc, char **argv)
     return status;
 }
 
+/* `spancast bench NAME ...`: replaces this process with spancast-bench
+ * (bench/main.c), found in the folder of this executable, with the
+ * arguments after "bench". The benchmarks link the stability harness and
+ * the library's internals, which the tool does not. Returns only on
+ * failure, with the exit status. */
+static int run_bench(char **argv)
+{
+    static const char name[] = "spancast-bench";
+    char path[4096];
+    ssize_t n = readlink("/proc/self/exe", path, sizeof path - sizeof name);
+    if (n <= 0) {
+        fprintf(stderr, "spancast: error: cannot find spancast-bench: %s\n",
+                n < 0 ? strerror(errno) : "no path to this program");
+        return 1;
+    }
+    path[n] = 0;
+    char *slash = strrchr(path, '/');
+    strcpy(slash ? slash + 1 : path, name);
+    argv[1] = path; /* spancast-bench NAME ... */
+    execv(path, argv + 1);
+    fprintf(stderr, "spancast: error: cannot run '%s': %s\n", path, strerror(errno));
+    return 1;
+}
+
 int main(int argc, char **argv)
 {
     for (int k = 1; k < argc && strcmp(argv[k], "--"); k++) {
@@ -765,10 +788,8 @@ int main(int argc, char **argv)
     if (argc < 2)
         return usage_error("missing command (try 'spancast --help')");
     const char *command = argv[1];
-    if (!strcmp(command, "bench") && argc > 2 && !strcmp(argv[2], "stability"))
-        return bench_stability_main(argc - 2, argv + 2);
     if (!strcmp(command, "bench"))
-        return bench_main(argc - 2, argv + 2);
+        return run_bench(argv);
     cli_args a;
     memset(&a, 0, sizeof a);
     sc_render_options_init(&a.options);

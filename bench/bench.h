@@ -1,6 +1,8 @@
-/* Benchmarks of the spancast command (src/cli/bench_*.c). */
-#ifndef SPANCAST_CLI_BENCH_H
-#define SPANCAST_CLI_BENCH_H
+/* The benchmarks behind `spancast bench` (bench_*.c), run by the program
+ * spancast-bench (main.c), which the tool starts: they link the stability
+ * harness and the library's internals, which the tool does not. */
+#ifndef SPANCAST_BENCH_BENCH_H
+#define SPANCAST_BENCH_BENCH_H
 
 /* `spancast bench accuracy --csv FILE [--plot FILE.png] [--rays N]`, with
  * argv[0] the benchmark's name. Returns the exit status. */

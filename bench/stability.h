@@ -11,8 +11,8 @@
  * csg_first_hit, and counts where they differ. docs/stability.md states the
  * bounds the tests hold it to.
  */
-#ifndef SPANCAST_RENDER_STABILITY_H
-#define SPANCAST_RENDER_STABILITY_H
+#ifndef SPANCAST_BENCH_STABILITY_H
+#define SPANCAST_BENCH_STABILITY_H
 
 #include <stdint.h>
 

@@ -26,7 +26,7 @@
  * estimate is made once per scene, as the builder does). --plot draws mean
  * error against seconds, log-log, one panel per scene, through gnuplot.
  */
-#include "cli/bench.h"
+#include "bench/bench.h"
 
 #include <errno.h>
 #include <math.h>

@@ -38,8 +38,8 @@
 #include <time.h>
 
 #include "build/scene.h"
-#include "cli/bench.h"
-#include "render/stability.h"
+#include "bench/bench.h"
+#include "bench/stability.h"
 
 typedef struct row {
     char name[96];

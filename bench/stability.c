@@ -17,7 +17,7 @@
  * depth bound (their t is ill-conditioned by nature) but still count for the
  * mask and NaN checks.
  */
-#include "render/stability.h"
+#include "bench/stability.h"
 
 #include <math.h>
 #include <stdio.h>
