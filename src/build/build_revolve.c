@@ -130,13 +130,7 @@ static int add_point(profile *p, const affine2 *m, double x, double y)
 
 static double path_area(const profile *p, uint32_t k)
 {
-    double a = 0;
-    uint32_t s = p->start[k], e = p->start[k + 1];
-    for (uint32_t i = s; i < e; i++) {
-        uint32_t j = i + 1 < e ? i + 1 : s;
-        a += p->xy[2 * i] * p->xy[2 * j + 1] - p->xy[2 * j] * p->xy[2 * i + 1];
-    }
-    return a / 2;
+    return twod_ring_area(p->xy, p->start[k], p->start[k + 1]);
 }
 
 /* Even-odd: is (x, y) inside path k? */

@@ -63,6 +63,7 @@
 #include "base/grow.h"
 #include "build/build_mesh.h"
 #include "model/faithful.h"
+#include "twod/twod.h"
 
 enum { TEXT_MAX_DEPTH = 1000 };
 
@@ -607,13 +608,7 @@ static void poly_end(text_polygons *p)
 
 static double poly_area(const text_polygons *p, uint32_t k)
 {
-    double a = 0;
-    uint32_t s = p->start[k], e = p->start[k + 1];
-    for (uint32_t i = s; i < e; i++) {
-        uint32_t j = i + 1 < e ? i + 1 : s;
-        a += p->xy[2 * i] * p->xy[2 * j + 1] - p->xy[2 * j] * p->xy[2 * i + 1];
-    }
-    return a / 2;
+    return twod_ring_area(p->xy, p->start[k], p->start[k + 1]);
 }
 
 static void poly_reverse(text_polygons *p, uint32_t k)

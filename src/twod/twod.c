@@ -71,15 +71,19 @@ int twod_add_point(twod_region *r, double x, double y)
     return 1;
 }
 
-double twod_contour_area(const twod_region *r, uint32_t k)
+double twod_ring_area(const double *xy, uint32_t first, uint32_t end)
 {
     double a = 0;
-    uint32_t s = r->start[k], e = r->start[k + 1];
-    for (uint32_t i = s; i < e; i++) {
-        uint32_t j = i + 1 < e ? i + 1 : s;
-        a += r->xy[2 * i] * r->xy[2 * j + 1] - r->xy[2 * j] * r->xy[2 * i + 1];
+    for (uint32_t i = first; i < end; i++) {
+        uint32_t j = i + 1 < end ? i + 1 : first;
+        a += xy[2 * i] * xy[2 * j + 1] - xy[2 * j] * xy[2 * i + 1];
     }
     return a / 2;
+}
+
+double twod_contour_area(const twod_region *r, uint32_t k)
+{
+    return twod_ring_area(r->xy, r->start[k], r->start[k + 1]);
 }
 
 double twod_area(const twod_region *r)

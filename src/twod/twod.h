@@ -43,6 +43,9 @@ int twod_begin_contour(twod_region *r);
 /* Adds a point to the last contour; 0 when memory runs out or the region
  * would pass TWOD_MAX_POINTS. */
 int twod_add_point(twod_region *r, double x, double y);
+/* Signed area (positive counter-clockwise) of the closed ring of points
+ * first .. end - 1 of xy (2 per point), by the shoelace formula. */
+double twod_ring_area(const double *xy, uint32_t first, uint32_t end);
 /* Signed area of contour k (positive counter-clockwise) and of the region. */
 double twod_contour_area(const twod_region *r, uint32_t k);
 double twod_area(const twod_region *r);
