@@ -1,7 +1,8 @@
-/* Image output through OpenImageIO, behind a C interface.
+/* Image output: PNG and EXR directly, every other format through
+ * OpenImageIO, loaded only when needed (image_backend.h).
  *
- * The public writers (sc_framebuffer_write_color, _mask, _depth) live in
- * image_io.cpp. This header adds the check they start with, so that the
+ * The public writers (sc_framebuffer_write_color, _mask, _depth, ...) live
+ * in image_io.c. This header adds the check they start with, so that the
  * command line can reject an output name before it spends time rendering.
  *
  * Formats follow the file extension, as OpenImageIO knows them:
@@ -36,7 +37,9 @@ typedef enum imgio_kind {
 } imgio_kind;
 
 /* Checks, without touching the file system, that path names a format
- * OpenImageIO can write and that suits kind. Returns SC_OK or
+ * spancast can write and that suits kind: .png and .exr (.sxr .mxr) are
+ * known here; any other extension loads the OpenImageIO plugin to ask it,
+ * so the list of formats stays OpenImageIO's own. Returns SC_OK or
  * SC_ERR_ARGUMENT with "cannot write 'x.foo': unknown image format" or
  * "cannot write depth to 'x.png': depth needs a floating-point format
  * (.exr or .tif)". */

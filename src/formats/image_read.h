@@ -1,8 +1,9 @@
-/* Reading images back through OpenImageIO, as float pixels.
+/* Reading images as float pixels: PNG and EXR directly, every other format
+ * through the OpenImageIO plugin (image_backend.h).
  *
- * Used by the tests and tools that check spancast's own outputs (masks,
- * depth EXRs) against independent expectations; the renderer never reads
- * images.
+ * Used by surface() for PNG height maps, and by the tests and tools that
+ * check spancast's own outputs (masks, depth EXRs) against independent
+ * expectations.
  */
 #ifndef SPANCAST_FORMATS_IMAGE_READ_H
 #define SPANCAST_FORMATS_IMAGE_READ_H
@@ -17,7 +18,8 @@ typedef struct image_data {
 } image_data;
 
 /* Reads the first subimage of path into *out as floats (8-bit values become
- * 0..1). Returns 1 on success; on failure 0 and a message in err. */
+ * 0..1, 16-bit ones too); channels in OpenImageIO's order (R, G, B, A
+ * first). Returns 1 on success; on failure 0 and a message in err. */
 int image_read(const char *path, image_data *out, char *err, int err_size);
 
 void image_data_free(image_data *img);

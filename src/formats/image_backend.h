@@ -1,0 +1,78 @@
+/* The image back ends behind image_io.c and image_read.c.
+ *
+ * A write is described once, as an imgio_image, and handed to the back end
+ * that the file's extension selects: PNG (libpng, image_png.c) and EXR
+ * (OpenEXR, image_exr.cpp) are written directly; every other format goes
+ * through OpenImageIO in a plugin (oiio/image_oiio.cpp, built as
+ * spancast-oiio.so) that is loaded only when such a file is written or read,
+ * so that a run which writes PNG or EXR never loads OpenImageIO and the
+ * hundreds of libraries it depends on. The back ends write exactly the file
+ * they are given (the temporary of image_io.c) and report failures as text;
+ * the temporary, the rename and the sc_error belong to image_io.c.
+ */
+#ifndef SPANCAST_FORMATS_IMAGE_BACKEND_H
+#define SPANCAST_FORMATS_IMAGE_BACKEND_H
+
+#include <stddef.h>
+
+#include "formats/image_read.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+typedef enum imgio_sample {
+    IMGIO_UINT8, /* one byte a value, 0..255 (EXR stores these as half 0..1) */
+    IMGIO_FLOAT  /* 32-bit float, stored as such */
+} imgio_sample;
+
+typedef struct imgio_image {
+    int width, height, channels;
+    const char *const *channel_names; /* channels names, in memory order */
+    imgio_sample sample;
+    const void *pixels;      /* rows from the top, channels interleaved */
+    const char *color_space; /* "sRGB" or "Linear" tag, or NULL for none */
+    const char *software;    /* "spancast 0.1.0" */
+    const char *camera;      /* the camera in words, or NULL */
+} imgio_image;
+
+/* Each writer creates or truncates path and writes img to it. Returns 1 on
+ * success; on failure 0, with a message (no path, no trailing newline) in
+ * err. A failed write may leave a partial file at path. */
+int imgio_png_write(const imgio_image *img, const char *path, char *err, size_t err_size);
+int imgio_exr_write(const imgio_image *img, const char *path, char *err, size_t err_size);
+
+/* Readers, as image_read(): 1 on success, else 0 with the whole message
+ * ("cannot read 'x': ...") in err. */
+int imgio_png_read(const char *path, image_data *out, char *err, size_t err_size);
+int imgio_exr_read(const char *path, image_data *out, char *err, size_t err_size);
+
+/* The OpenImageIO plugin's entry points, looked up by these names. */
+#define IMGIO_PLUGIN_FILE "spancast-oiio.so"
+typedef int imgio_plugin_writable_fn(const char *path);
+typedef int imgio_plugin_write_fn(const imgio_image *img, const char *path, char *err,
+                                  size_t err_size);
+typedef int imgio_plugin_read_fn(const char *path, image_data *out, char *err,
+                                 size_t err_size);
+
+/* A loaded plugin. imgio_plugin_open looks for IMGIO_PLUGIN_FILE next to the
+ * executable (/proc/self/exe), then in the build folder it was built in.
+ * Returns 1 with *plugin filled, or 0 with "cannot load the OpenImageIO
+ * plugin: ..." in err. The library stays loaded for the rest of the process
+ * (OpenImageIO does not support being unloaded); imgio_plugin_close only
+ * drops this reference. */
+typedef struct imgio_plugin {
+    void *handle;
+    imgio_plugin_writable_fn *writable; /* 1 if OpenImageIO writes path's format */
+    imgio_plugin_write_fn *write;
+    imgio_plugin_read_fn *read;
+} imgio_plugin;
+
+int imgio_plugin_open(imgio_plugin *plugin, char *err, size_t err_size);
+void imgio_plugin_close(imgio_plugin *plugin);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif

@@ -1,0 +1,357 @@
+/* Writing framebuffers to image files (see image_io.h for the formats).
+ *
+ * The file's extension picks the back end (image_backend.h): PNG and EXR
+ * are written directly, everything else through the OpenImageIO plugin,
+ * loaded only then. What is common to all of them lives here, once: the
+ * format check, the pixel layout, the metadata, and the atomic write.
+ *
+ * Every write is atomic from the reader's side: the image goes to a new
+ * temporary file in the target's folder, named ".<stem>.tmp-<6 chars><ext>"
+ * so that OpenImageIO still picks the format from the extension, and only a
+ * complete file is renamed over the target. On any failure the temporary is
+ * removed and an existing target is left as it was. The temporary is created
+ * with O_EXCL and mode 0666 (less the umask), so the final file has the
+ * permissions a plain create would give it.
+ *
+ * Cancellation: the framebuffer carries the caller's cancel flag (set, for
+ * instance, by the command line's SIGINT handler). The writer polls it before
+ * it creates the temporary, before it starts the image in it, and after the
+ * image is complete, just before the rename; once it is set, the temporary is
+ * removed and the target is not touched. A write that has begun is finished
+ * first: an image write is short beside the render before it. Only a flag
+ * read is involved, so nothing here has to be async-signal-safe.
+ */
+#define _POSIX_C_SOURCE 200809L
+
+#include "formats/image_io.h"
+
+#include <errno.h>
+#include <fcntl.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+#include <unistd.h>
+
+#include "base/error.h"
+#include "formats/color.h"
+#include "formats/image_backend.h"
+
+#ifndef SPANCAST_VERSION
+#define SPANCAST_VERSION "0.1.0" /* as the command line reports it */
+#endif
+
+#define MESSAGE_SIZE 512
+
+typedef enum backend { BACKEND_PNG, BACKEND_EXR, BACKEND_PLUGIN } backend;
+
+/* Copies the extension of path's last component, lower case and without
+ * the dot, into ext (empty when there is none or it does not fit). */
+static void extension_of(const char *path, char *ext, size_t size)
+{
+    const char *slash = strrchr(path, '/');
+    const char *name = slash ? slash + 1 : path;
+    const char *dot = strrchr(name, '.');
+    ext[0] = '\0';
+    if (!dot || dot == name || strlen(dot + 1) >= size)
+        return;
+    size_t k = 0;
+    for (const char *c = dot + 1; *c; c++)
+        ext[k++] = (*c >= 'A' && *c <= 'Z') ? (char)(*c - 'A' + 'a') : *c;
+    ext[k] = '\0';
+}
+
+/* 1 if ext is one of the names of the NULL-terminated list. */
+static int one_of(const char *ext, const char *const *names)
+{
+    for (; *names; names++)
+        if (strcmp(ext, *names) == 0)
+            return 1;
+    return 0;
+}
+
+static int float_color_format(const char *ext)
+{
+    static const char *const names[] = {"exr", "sxr",  "mxr", "tif", "tiff",
+                                        "hdr", "rgbe", "pfm", NULL};
+    return one_of(ext, names);
+}
+
+static int depth_format(const char *ext)
+{
+    static const char *const names[] = {"exr", "sxr", "mxr", "tif", "tiff", NULL};
+    return one_of(ext, names);
+}
+
+static backend backend_of(const char *ext)
+{
+    static const char *const exr[] = {"exr", "sxr", "mxr", NULL};
+    if (strcmp(ext, "png") == 0)
+        return BACKEND_PNG;
+    return one_of(ext, exr) ? BACKEND_EXR : BACKEND_PLUGIN;
+}
+
+/* The format check. PNG and EXR are known here; for any other extension
+ * the plugin is loaded and OpenImageIO asked whether it has a writer, so
+ * that the list of formats is OpenImageIO's own. */
+static sc_status check(const char *path, imgio_kind kind, sc_error *error)
+{
+    char ext[16];
+    extension_of(path, ext, sizeof ext);
+    int known = ext[0] != '\0';
+    if (known && backend_of(ext) == BACKEND_PLUGIN) {
+        imgio_plugin plugin;
+        char why[MESSAGE_SIZE];
+        if (!imgio_plugin_open(&plugin, why, sizeof why))
+            return err_set(error, SC_ERR_IO, NULL, "cannot write '%s': %s", path, why);
+        known = plugin.writable(path);
+        imgio_plugin_close(&plugin);
+    }
+    if (!known)
+        return err_set(error, SC_ERR_ARGUMENT, NULL,
+                       "cannot write '%s': unknown image format", path);
+    static const char *const float_kinds[] = {NULL, NULL, "depth", "normals", "ids"};
+    if (kind >= IMGIO_DEPTH && !depth_format(ext))
+        return err_set(error, SC_ERR_ARGUMENT, NULL,
+                       "cannot write %s to '%s': %s needs a floating-point "
+                       "format (.exr or .tif)",
+                       float_kinds[kind], path, float_kinds[kind]);
+    return SC_OK;
+}
+
+/* Creates an empty temporary file next to path; returns its name (malloc'd,
+ * the caller frees it), or NULL with errno set. */
+static char *create_temporary(const char *path)
+{
+    const char *slash = strrchr(path, '/');
+    size_t folder_len = slash ? (size_t)(slash + 1 - path) : 0;
+    const char *name = path + folder_len;
+    const char *dot = strrchr(name, '.'); /* check() made sure there is one */
+    size_t stem_len = (size_t)(dot - name);
+    size_t size = strlen(path) + sizeof "/..tmp-123456";
+    char *tmp = malloc(size);
+    if (!tmp) {
+        errno = ENOMEM;
+        return NULL;
+    }
+
+    static const char digits[] = "abcdefghijklmnopqrstuvwxyz0123456789";
+    struct timespec now;
+    timespec_get(&now, TIME_UTC);
+    uint64_t seed = (uint64_t)now.tv_nsec * 0x9e3779b97f4a7c15ull ^ (uint64_t)now.tv_sec ^
+                    ((uint64_t)getpid() << 32);
+    for (int attempt = 0; attempt < 100; attempt++) {
+        /* splitmix64: a fresh pseudo-random word per attempt */
+        seed += 0x9e3779b97f4a7c15ull;
+        uint64_t z = seed;
+        z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
+        z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
+        z ^= z >> 31;
+        char tag[7];
+        for (int k = 0; k < 6; k++) {
+            tag[k] = digits[z % 36];
+            z /= 36;
+        }
+        tag[6] = '\0';
+        snprintf(tmp, size, "%.*s.%.*s.tmp-%s%s", (int)folder_len, path, (int)stem_len,
+                 name, tag, dot);
+        int fd = open(tmp, O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
+        if (fd >= 0) {
+            close(fd);
+            return tmp;
+        }
+        if (errno != EEXIST)
+            break;
+    }
+    int saved = errno;
+    free(tmp);
+    errno = saved;
+    return NULL;
+}
+
+static int cancelled(const volatile sig_atomic_t *cancel)
+{
+    return cancel && *cancel;
+}
+
+/* Writes img to path through a temporary file, with the back end of path's
+ * extension. Gives up (SC_ERR_CANCELLED) as soon as *cancel is set. */
+static sc_status write_image(const char *path, imgio_kind kind, const imgio_image *img,
+                             const volatile sig_atomic_t *cancel, sc_error *error)
+{
+    sc_status st = check(path, kind, error);
+    if (st)
+        return st;
+    if (cancelled(cancel))
+        return err_set(error, SC_ERR_CANCELLED, NULL, "interrupted");
+    char ext[16];
+    extension_of(path, ext, sizeof ext);
+    backend back = backend_of(ext);
+    imgio_plugin plugin = {0};
+    char failure[MESSAGE_SIZE] = "";
+    if (back == BACKEND_PLUGIN && !imgio_plugin_open(&plugin, failure, sizeof failure))
+        return err_set(error, SC_ERR_IO, NULL, "cannot write '%s': %s", path, failure);
+
+    char *tmp = create_temporary(path);
+    if (!tmp) {
+        imgio_plugin_close(&plugin);
+        return err_set(error, SC_ERR_IO, NULL, "cannot write '%s': %s", path,
+                       strerror(errno));
+    }
+    /* Loading a format's library may take a while: look at the flag again
+     * before starting a file that would have to be finished. */
+    int ok = 1;
+    if (!cancelled(cancel)) {
+        if (back == BACKEND_PNG)
+            ok = imgio_png_write(img, tmp, failure, sizeof failure);
+        else if (back == BACKEND_EXR)
+            ok = imgio_exr_write(img, tmp, failure, sizeof failure);
+        else
+            ok = plugin.write(img, tmp, failure, sizeof failure);
+    }
+    imgio_plugin_close(&plugin);
+    if (cancelled(cancel)) {
+        remove(tmp);
+        free(tmp);
+        return err_set(error, SC_ERR_CANCELLED, NULL, "interrupted");
+    }
+    if (ok && rename(tmp, path) != 0) {
+        ok = 0;
+        snprintf(failure, sizeof failure, "%s", strerror(errno));
+    }
+    if (!ok) {
+        remove(tmp);
+        free(tmp);
+        return err_set(error, SC_ERR_IO, NULL, "cannot write '%s': %s", path, failure);
+    }
+    free(tmp);
+    return SC_OK;
+}
+
+/* The common start of every writer: the path, the buffer, and the image
+ * around it, metadata included. */
+static sc_status start(const sc_framebuffer *fb, const void *buffer, const char *what,
+                       const char *path, imgio_image *img, sc_error *error)
+{
+    if (!path)
+        return err_set(error, SC_ERR_ARGUMENT, NULL, "no output file name");
+    if (!fb || !buffer)
+        return err_set(error, SC_ERR_ARGUMENT, NULL, "the framebuffer has no %s buffer",
+                       what);
+    memset(img, 0, sizeof *img);
+    img->width = fb->width;
+    img->height = fb->height;
+    img->sample = IMGIO_FLOAT;
+    img->pixels = buffer;
+    img->software = "spancast " SPANCAST_VERSION;
+    img->camera = fb->camera_info[0] ? fb->camera_info : NULL;
+    return SC_OK;
+}
+
+static sc_status out_of_memory(const char *path, sc_error *error)
+{
+    return err_set(error, SC_ERR_NOMEM, NULL, "cannot write '%s': out of memory", path);
+}
+
+static const char *const rgb_names[] = {"R", "G", "B"};
+static const char *const xyz_names[] = {"X", "Y", "Z"};
+
+sc_status imgio_check(const char *path, imgio_kind kind, sc_error *error)
+{
+    if (!path)
+        return err_set(error, SC_ERR_ARGUMENT, NULL, "no output file name");
+    return check(path, kind, error);
+}
+
+sc_status sc_framebuffer_write_color(const sc_framebuffer *fb, const char *path,
+                                     sc_error *error)
+{
+    imgio_image img;
+    sc_status st = start(fb, fb ? fb->color : NULL, "colour", path, &img, error);
+    if (st)
+        return st;
+    img.channels = 3;
+    img.channel_names = rgb_names;
+    char ext[16];
+    extension_of(path, ext, sizeof ext);
+    if (float_color_format(ext)) { /* linear (color.h) */
+        img.color_space = "Linear";
+        return write_image(path, IMGIO_COLOR, &img, fb->cancel, error);
+    }
+    /* 8-bit: sRGB-encoded */
+    size_t values = (size_t)fb->width * (size_t)fb->height * 3;
+    unsigned char *encoded = malloc(values ? values : 1);
+    if (!encoded)
+        return out_of_memory(path, error);
+    for (size_t k = 0; k < values; k++)
+        encoded[k] = color_linear_to_srgb8(fb->color[k]);
+    img.sample = IMGIO_UINT8;
+    img.pixels = encoded;
+    img.color_space = "sRGB";
+    st = write_image(path, IMGIO_COLOR, &img, fb->cancel, error);
+    free(encoded);
+    return st;
+}
+
+sc_status sc_framebuffer_write_mask(const sc_framebuffer *fb, const char *path,
+                                    sc_error *error)
+{
+    imgio_image img;
+    sc_status st = start(fb, fb ? fb->mask : NULL, "mask", path, &img, error);
+    if (st)
+        return st;
+    static const char *const names[] = {"Y"};
+    img.channels = 1;
+    img.channel_names = names;
+    img.sample = IMGIO_UINT8;
+    return write_image(path, IMGIO_MASK, &img, fb->cancel, error);
+}
+
+sc_status sc_framebuffer_write_depth(const sc_framebuffer *fb, const char *path,
+                                     sc_error *error)
+{
+    imgio_image img;
+    sc_status st = start(fb, fb ? fb->depth : NULL, "depth", path, &img, error);
+    if (st)
+        return st;
+    static const char *const names[] = {"Z"};
+    img.channels = 1;
+    img.channel_names = names;
+    return write_image(path, IMGIO_DEPTH, &img, fb->cancel, error);
+}
+
+sc_status sc_framebuffer_write_normal(const sc_framebuffer *fb, const char *path,
+                                      sc_error *error)
+{
+    imgio_image img;
+    sc_status st = start(fb, fb ? fb->normal : NULL, "normal", path, &img, error);
+    if (st)
+        return st;
+    img.channels = 3;
+    img.channel_names = xyz_names;
+    return write_image(path, IMGIO_NORMAL, &img, fb->cancel, error);
+}
+
+sc_status sc_framebuffer_write_id(const sc_framebuffer *fb, const char *path,
+                                  sc_error *error)
+{
+    imgio_image img;
+    sc_status st = start(fb, fb ? fb->id : NULL, "id", path, &img, error);
+    if (st)
+        return st;
+    static const char *const names[] = {"id"};
+    img.channels = 1;
+    img.channel_names = names;
+    /* Ids as floats: exact up to 2^24 leaves, and -1 survives. */
+    size_t pixels = (size_t)fb->width * (size_t)fb->height;
+    float *ids = malloc((pixels ? pixels : 1) * sizeof *ids);
+    if (!ids)
+        return out_of_memory(path, error);
+    for (size_t k = 0; k < pixels; k++)
+        ids[k] = (float)fb->id[k];
+    img.pixels = ids;
+    st = write_image(path, IMGIO_ID, &img, fb->cancel, error);
+    free(ids);
+    return st;
+}
