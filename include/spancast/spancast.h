@@ -216,6 +216,97 @@ sc_status sc_framebuffer_write_normal(const sc_framebuffer *fb, const char *path
 sc_status sc_framebuffer_write_id(const sc_framebuffer *fb, const char *path,
                                   sc_error *error);
 
+/* ---- queries: spans along a ray, point membership -------------------- */
+
+/* A line to query. Points on it are origin + t * direction; direction need
+ * not be unit length, and t is in its units (the distance along the ray is
+ * t * |direction|, as in the camera contract). */
+typedef struct sc_ray_query {
+    double origin[3];
+    double direction[3]; /* finite, not zero */
+    int both_ways;       /* 0 (default): the ray t >= 0; 1: the whole line */
+} sc_ray_query;
+
+/* Sets origin and direction to 0 and both_ways to 0. */
+void sc_ray_query_init(sc_ray_query *query);
+
+/* One end of a span: where the ray enters (in) or leaves (out) the solid. */
+typedef struct sc_span_end {
+    double t;        /* ray parameter; -inf or +inf only for an unbounded solid */
+    double point[3]; /* origin + t * direction (zeros when t is not finite) */
+    /* The leaf whose surface this is, as the id AOV numbers leaves (source
+     * order); -1 when the end is not on a surface: the ray starts inside
+     * the solid (t = 0), or the solid is unbounded along the line. */
+    int leaf;
+    const char *leaf_kind; /* "sphere", "box", ... (sc_leaf_kind_name); NULL
+                              when leaf is -1; points into static data */
+    sc_location location;  /* where the leaf is written; file points into the
+                              scene (valid until sc_scene_release) */
+    double normal[3];      /* unit world normal pointing out of the resulting
+                              solid (so flipped on a subtracted surface); 0
+                              when leaf is -1 */
+    int subtracted;        /* 1: the surface bounds a subtracted solid (a
+                              difference's later operand), its normal flipped */
+} sc_span_end;
+
+typedef struct sc_span {
+    sc_span_end in, out; /* in.t < out.t */
+    double distance;     /* (out.t - in.t) * |direction|: the length inside */
+} sc_span;
+
+typedef struct sc_span_list sc_span_list;
+
+/* ALL_SPANS for one line: the sorted, disjoint intervals of the query's
+ * ray (t >= 0, or the whole line with both_ways) inside the solid, after
+ * the regularisation rule (README: "How a ray meets the solid"). On success
+ * *out belongs to the caller (release with sc_span_list_release) and may
+ * hold no spans; on failure *out is NULL and error says why:
+ * SC_ERR_ARGUMENT for a direction that is zero or a value that is not
+ * finite, SC_ERR_NOMEM. The scene is only read: calls on one scene from
+ * several threads at once are safe. */
+sc_status sc_scene_spans(const sc_scene *scene, const sc_ray_query *query,
+                         sc_span_list **out, sc_error *error);
+
+/* The number of spans. */
+size_t sc_span_list_count(const sc_span_list *list);
+
+/* Span index (0 = nearest along the direction), or NULL past the last. The
+ * pointer is valid until the list is released. */
+const sc_span *sc_span_list_get(const sc_span_list *list, size_t index);
+
+/* Frees the list; NULL is ignored. */
+void sc_span_list_release(sc_span_list *list);
+
+/* The ray render shoots through the centre of pixel (i, j) (column i from
+ * the left, row j from the top) with these options (camera, image size,
+ * field of view, projection, viewall, autocenter; the rest is ignored):
+ * exactly the ray whose first hit is that pixel's depth. Fills origin and
+ * direction (not normalised). Returns SC_ERR_ARGUMENT, with render's
+ * message, for a bad camera, and for a pixel outside the image. Thread
+ * safe. */
+sc_status sc_scene_pixel_ray(const sc_scene *scene, const sc_render_options *options,
+                             int i, int j, double origin[3], double direction[3],
+                             sc_error *error);
+
+/* Where a point lies relative to the solid. */
+typedef enum sc_where { SC_OUTSIDE = 0, SC_INSIDE = 1, SC_ON = 2 } sc_where;
+
+/* Point membership. *where is SC_ON when the surface lies within the
+ * scene's tolerance eps of p (the tolerance of the regularisation rule,
+ * for unit rays from p: the larger of 1e-9 of the scene's extent and 2^-40
+ * of its scale or its distance from p) along one of the three axis lines
+ * through p: the lines' spans (as sc_scene_spans gives them) have an end
+ * on a surface with |t| <= eps. Along a line the distance to a plane is
+ * at least the perpendicular one, and one axis makes an angle of at most
+ * acos(1/sqrt(3)) with the normal, so a point on a face or within
+ * eps / sqrt(3) of one is SC_ON, and a point farther than eps from every
+ * surface never is. Otherwise SC_INSIDE when p lies inside a span of at
+ * least two of the three lines (they agree except where a line grazes a
+ * surface), else SC_OUTSIDE. Returns SC_ERR_ARGUMENT for a coordinate that
+ * is not finite, SC_ERR_NOMEM. Thread safe. */
+sc_status sc_scene_inside(const sc_scene *scene, const double p[3], int *where,
+                          sc_error *error);
+
 #ifdef __cplusplus
 }
 #endif

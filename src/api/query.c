@@ -1,0 +1,207 @@
+/* Queries on a loaded scene: the spans along a line, the camera ray of a
+ * pixel, and point membership (the sc_scene_spans, sc_scene_pixel_ray and
+ * sc_scene_inside calls of spancast.h).
+ *
+ * They are thin: each runs the tree's ALL_SPANS query (csg_spans) with a
+ * scratch arena of its own, so a scene can be queried from several threads
+ * at once, and turns its span ends into what a user can read: the leaf's
+ * source-order id, kind and position, the outward normal of the resulting
+ * solid (csg_hit_normal, which applies the flip of subtracted surfaces) and
+ * the point. The pixel ray is the renderer's own (render/camera.h), built
+ * by the same two calls sc_render makes, so `spans --pixel` and the depth
+ * AOV can never drift apart.
+ */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "base/arena.h"
+#include "base/error.h"
+#include "build/scene.h"
+#include "csg/csg.h"
+#include "render/camera.h"
+
+struct sc_span_list {
+    size_t count;
+    sc_span spans[]; /* count of them */
+};
+
+void sc_ray_query_init(sc_ray_query *query)
+{
+    memset(query, 0, sizeof *query);
+}
+
+static int finite3(const double v[3])
+{
+    return isfinite(v[0]) && isfinite(v[1]) && isfinite(v[2]);
+}
+
+/* Fills *out from a span end of ray r. */
+static void describe_end(const csg_tree *t, const csg_ray *r, const span_end *e,
+                         sc_span_end *out)
+{
+    memset(out, 0, sizeof *out);
+    out->t = e->t;
+    out->leaf = -1;
+    if (isfinite(e->t)) {
+        vec3 p = v3_madd(r->o, r->d, e->t);
+        out->point[0] = p.x;
+        out->point[1] = p.y;
+        out->point[2] = p.z;
+    }
+    if (e->leaf == SPAN_NO_LEAF || e->leaf >= t->leaf_count || !isfinite(e->t))
+        return;
+    const csg_leaf *l = &t->leaves[e->leaf];
+    out->leaf = (int)l->object_id;
+    out->leaf_kind = sc_leaf_kind_name((int)l->prim.kind);
+    out->location = l->loc;
+    out->subtracted = e->flip != 0;
+    csg_hit hit = {e->t, e->leaf, e->part, e->flip, 0};
+    vec3 n = csg_hit_normal(t, r, &hit);
+    /* + 0.0 turns a negated zero into +0, so that (1, -0, -0) reads (1, 0, 0). */
+    out->normal[0] = n.x + 0.0;
+    out->normal[1] = n.y + 0.0;
+    out->normal[2] = n.z + 0.0;
+}
+
+/* The tree's spans along r, from a fresh scratch arena the caller frees.
+ * Returns 0 on allocation failure. */
+static int line_spans(const csg_tree *t, const csg_ray *r, arena *scratch, span_list *out)
+{
+    arena_init(scratch, 16 * 1024);
+    return csg_spans(t, r, scratch, out);
+}
+
+sc_status sc_scene_spans(const sc_scene *scene, const sc_ray_query *query,
+                         sc_span_list **out, sc_error *error)
+{
+    err_clear(error);
+    *out = NULL;
+    if (!scene || !query)
+        return err_set(error, SC_ERR_ARGUMENT, NULL, "no scene or no query");
+    if (!finite3(query->origin) || !finite3(query->direction))
+        return err_set(error, SC_ERR_ARGUMENT, NULL, "ray values must be finite");
+    const csg_tree *t = scene_tree(scene);
+    csg_ray r;
+    r.o = v3(query->origin[0], query->origin[1], query->origin[2]);
+    r.d = v3(query->direction[0], query->direction[1], query->direction[2]);
+    double len = v3_length(r.d);
+    if (!(len > 0) || !isfinite(len))
+        return err_set(error, SC_ERR_ARGUMENT, NULL, "ray direction must not be zero");
+    r.tmin = query->both_ways ? -INFINITY : 0;
+    r.tmax = INFINITY;
+    arena scratch;
+    span_list spans;
+    if (!line_spans(t, &r, &scratch, &spans)) {
+        arena_free(&scratch);
+        return err_nomem(error, NULL);
+    }
+    sc_span_list *list = malloc(sizeof *list + (size_t)spans.n * sizeof list->spans[0]);
+    if (!list) {
+        arena_free(&scratch);
+        return err_nomem(error, NULL);
+    }
+    list->count = spans.n;
+    for (uint32_t k = 0; k < spans.n; k++) {
+        sc_span *s = &list->spans[k];
+        describe_end(t, &r, &spans.v[k].in, &s->in);
+        describe_end(t, &r, &spans.v[k].out, &s->out);
+        s->distance = (s->out.t - s->in.t) * len;
+    }
+    arena_free(&scratch);
+    *out = list;
+    return SC_OK;
+}
+
+size_t sc_span_list_count(const sc_span_list *list)
+{
+    return list ? list->count : 0;
+}
+
+const sc_span *sc_span_list_get(const sc_span_list *list, size_t index)
+{
+    return list && index < list->count ? &list->spans[index] : NULL;
+}
+
+void sc_span_list_release(sc_span_list *list)
+{
+    free(list);
+}
+
+sc_status sc_scene_pixel_ray(const sc_scene *scene, const sc_render_options *options,
+                             int i, int j, double origin[3], double direction[3],
+                             sc_error *error)
+{
+    err_clear(error);
+    if (!scene || !options)
+        return err_set(error, SC_ERR_ARGUMENT, NULL, "no scene or no options");
+    const csg_tree *t = scene_tree(scene);
+    /* The bounds and the two calls of sc_render (render.c). */
+    bbox bounds = t->root == CSG_EMPTY ? bbox_empty() : t->bounds;
+    cam_view view;
+    sc_status st = cam_view_from_options(options, &bounds, &view, error);
+    if (st)
+        return st;
+    camera cam;
+    st = cam_init(&cam, &view, options->fov_deg, options->projection, options->width,
+                  options->height, error);
+    if (st)
+        return st;
+    if (i < 0 || j < 0 || i >= options->width || j >= options->height)
+        return err_set(error, SC_ERR_ARGUMENT, NULL,
+                       "pixel %d,%d is outside the %dx%d image", i, j, options->width,
+                       options->height);
+    vec3 o, d;
+    cam_ray(&cam, i, j, 0.5, 0.5, &o, &d);
+    origin[0] = o.x;
+    origin[1] = o.y;
+    origin[2] = o.z;
+    direction[0] = d.x;
+    direction[1] = d.y;
+    direction[2] = d.z;
+    return SC_OK;
+}
+
+sc_status sc_scene_inside(const sc_scene *scene, const double p[3], int *where,
+                          sc_error *error)
+{
+    err_clear(error);
+    *where = SC_OUTSIDE;
+    if (!scene || !p)
+        return err_set(error, SC_ERR_ARGUMENT, NULL, "no scene or no point");
+    if (!finite3(p))
+        return err_set(error, SC_ERR_ARGUMENT, NULL, "point coordinates must be finite");
+    const csg_tree *t = scene_tree(scene);
+    int votes = 0;
+    for (int axis = 0; axis < 3; axis++) {
+        csg_ray r;
+        r.o = v3(p[0], p[1], p[2]);
+        r.d = v3(axis == 0, axis == 1, axis == 2);
+        r.tmin = -INFINITY; /* the whole line: no clipped ends near p */
+        r.tmax = INFINITY;
+        double eps = csg_eps(t, r.o, r.d);
+        arena scratch;
+        span_list spans;
+        if (!line_spans(t, &r, &scratch, &spans)) {
+            arena_free(&scratch);
+            return err_nomem(error, NULL);
+        }
+        int on = 0, in = 0;
+        for (uint32_t k = 0; k < spans.n; k++) {
+            const span *s = &spans.v[k];
+            if ((s->in.leaf != SPAN_NO_LEAF && fabs(s->in.t) <= eps) ||
+                (s->out.leaf != SPAN_NO_LEAF && fabs(s->out.t) <= eps))
+                on = 1;
+            if (s->in.t < 0 && s->out.t > 0)
+                in = 1;
+        }
+        arena_free(&scratch);
+        if (on) {
+            *where = SC_ON;
+            return SC_OK;
+        }
+        votes += in;
+    }
+    *where = votes >= 2 ? SC_INSIDE : SC_OUTSIDE;
+    return SC_OK;
+}
