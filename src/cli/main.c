@@ -6,6 +6,8 @@
  *   spancast render MODEL -o OUT [--mask=FILE] [--depth=FILE] [--normal=FILE]
  *                         [--id=FILE] [camera, sampling and report options]
  *   spancast info MODEL
+ *   spancast spans MODEL --ray=... | --rays=FILE | --pixel=I,J [...]   (query.c)
+ *   spancast inside MODEL --point=X,Y,Z | --points=FILE [...]       (query.c)
  *   spancast --help | --version
  *
  * MODEL is a .csg file, or a .scad file converted by OpenSCAD (scad.c).
@@ -46,6 +48,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include "cli/cli.h"
 #include "cli/scad.h"
 #include "formats/image_io.h"
 #include "render/render.h"
@@ -61,12 +64,18 @@ enum { EXIT_FAILED = 1, EXIT_USAGE = 2 };
 static const char usage_text[] =
     "usage: spancast render MODEL -o OUT.png [options]\n"
     "       spancast info MODEL\n"
+    "       spancast spans MODEL --ray=OX,OY,OZ,DX,DY,DZ | --rays=FILE | --pixel=I,J\n"
+    "                      [--both-ways] [--json] [camera options]\n"
+    "       spancast inside MODEL --point=X,Y,Z | --points=FILE [--json]\n"
     "       spancast bench accuracy --csv FILE [--plot FILE.png] [--rays N]\n"
     "       spancast bench stability --csv FILE [--dir DIR] [--size N] [--depth N]\n"
     "       spancast --help | --version\n"
     "\n"
     "Renders a CSG model (OpenSCAD's .csg export, plus spancast's own nodes)\n"
-    "exactly, by casting rays; 'info' prints the size and bounds of its tree.\n"
+    "exactly, by casting rays; 'info' prints the size and bounds of its tree;\n"
+    "'spans' lists where rays enter and leave the solid (t in units of the\n"
+    "direction given, t >= 0 unless --both-ways, distance inside = dt |d|);\n"
+    "'inside' says whether points are in, out or on the surface.\n"
     "\n"
     "render options:\n"
     "  -o, --output=FILE      colour image; the format follows the extension\n"
@@ -109,13 +118,19 @@ static const char usage_text[] =
 
 /* ---- messages ---- */
 
+static int usage_verror(const char *format, va_list args)
+{
+    fputs("spancast: error: ", stderr);
+    vfprintf(stderr, format, args);
+    fputc('\n', stderr);
+    return EXIT_USAGE;
+}
+
 static int usage_error(const char *format, ...)
 {
     va_list args;
     va_start(args, format);
-    fputs("spancast: error: ", stderr);
-    vfprintf(stderr, format, args);
-    fputc('\n', stderr);
+    usage_verror(format, args);
     va_end(args);
     return EXIT_USAGE;
 }
@@ -773,6 +788,66 @@ static int run_bench(char **argv)
     return 1;
 }
 
+/* ---- shared with the query commands (cli.h) ---- */
+
+int cli_usage_error(const char *format, ...)
+{
+    va_list args;
+    va_start(args, format);
+    usage_verror(format, args);
+    va_end(args);
+    return EXIT_USAGE;
+}
+
+void cli_print_error(const sc_error *error)
+{
+    print_error(error);
+}
+
+int cli_parse_number(const char *s, double *out)
+{
+    return parse_number(s, out);
+}
+
+int cli_parse_numbers(const char *s, double *out, int max)
+{
+    return parse_numbers(s, out, max);
+}
+
+sc_scene *cli_load(const char *path, int faithful)
+{
+    return load(path, faithful);
+}
+
+static int is_camera_option(opt_id id)
+{
+    return id == OPT_CAMERA || id == OPT_IMGSIZE || id == OPT_FOV ||
+           id == OPT_PROJECTION || id == OPT_VIEWALL || id == OPT_AUTOCENTER;
+}
+
+int cli_camera_option(const char *name, size_t len)
+{
+    const opt_spec *spec = find_option(name, len);
+    if (!spec || !is_camera_option(spec->id))
+        return -1;
+    return spec->takes_value != 0;
+}
+
+int cli_apply_camera_option(sc_render_options *options, const char *name, size_t len,
+                            const char *value)
+{
+    const opt_spec *spec = find_option(name, len);
+    if (!spec || !is_camera_option(spec->id))
+        return usage_error("unknown option '%.*s'", (int)len, name);
+    cli_args a;
+    memset(&a, 0, sizeof a);
+    a.options = *options;
+    int st = apply_option(&a, spec->id, value);
+    if (!st)
+        *options = a.options;
+    return st;
+}
+
 int main(int argc, char **argv)
 {
     for (int k = 1; k < argc && strcmp(argv[k], "--"); k++) {
@@ -790,6 +865,10 @@ int main(int argc, char **argv)
     const char *command = argv[1];
     if (!strcmp(command, "bench"))
         return run_bench(argv);
+    if (!strcmp(command, "spans"))
+        return cli_spans(argc, argv);
+    if (!strcmp(command, "inside"))
+        return cli_inside(argc, argv);
     cli_args a;
     memset(&a, 0, sizeof a);
     sc_render_options_init(&a.options);
@@ -801,7 +880,9 @@ int main(int argc, char **argv)
         return usage_error("missing command before '%s' (try 'spancast --help')",
                            command);
     else
-        return usage_error("unknown command '%s' (expected 'render' or 'info')", command);
+        return usage_error("unknown command '%s' (expected 'render', 'info', "
+                           "'spans' or 'inside')",
+                           command);
     int st = parse_args(&a, argc, argv);
     if (st)
         return st;
