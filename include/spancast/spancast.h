@@ -3,10 +3,12 @@
  * A scene is loaded from a model file (OpenSCAD's .csg grammar plus
  * spancast's own node types), compiled once into an immutable CSG tree, and
  * rendered into a framebuffer (colour and AOVs) that can be written to any
- * image format OpenImageIO supports. Handles are opaque; options are plain
- * structs filled by an init function. Every call returns a status and, on
- * failure, fills an sc_error with a message and, where the error comes from
- * input, its source position. Nothing here prints or exits.
+ * image format OpenImageIO supports. It can also be queried: the spans of a
+ * line inside the solid, the camera ray of a pixel, point membership.
+ * Handles are opaque; options are plain structs filled by an init function.
+ * Every call returns a status and, on failure, fills an sc_error with a
+ * message and, where the error comes from input, its source position.
+ * Nothing here prints or exits.
  */
 #ifndef SPANCAST_SPANCAST_H
 #define SPANCAST_SPANCAST_H

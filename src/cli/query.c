@@ -365,7 +365,7 @@ static void print_spans(const query_args *a, const query_item *item, size_t inde
             json_number(s->distance);
             putchar('}');
         }
-        fputs(n ? "]}" : "]}", stdout);
+        fputs("]}", stdout);
         return;
     }
     if (item->pixel)
