@@ -50,6 +50,7 @@
 
 #include "cli/cli.h"
 #include "cli/scad.h"
+#include "formats/file.h"
 #include "formats/image_io.h"
 #include "render/render.h"
 #include "render/shade.h"
@@ -771,17 +772,12 @@ static int run_render(cli_args *a, int argc, char **argv)
  * failure, with the exit status. */
 static int run_bench(char **argv)
 {
-    static const char name[] = "spancast-bench";
     char path[4096];
-    ssize_t n = readlink("/proc/self/exe", path, sizeof path - sizeof name);
-    if (n <= 0) {
+    if (!file_beside_program("spancast-bench", path, sizeof path)) {
         fprintf(stderr, "spancast: error: cannot find spancast-bench: %s\n",
-                n < 0 ? strerror(errno) : "no path to this program");
+                strerror(errno));
         return 1;
     }
-    path[n] = 0;
-    char *slash = strrchr(path, '/');
-    strcpy(slash ? slash + 1 : path, name);
     argv[1] = path; /* spancast-bench NAME ... */
     execv(path, argv + 1);
     fprintf(stderr, "spancast: error: cannot run '%s': %s\n", path, strerror(errno));

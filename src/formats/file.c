@@ -1,12 +1,16 @@
 /* Whole-file reading for the file formats (meshes, height maps, DXF):
- * one bounded read into memory, with the reason of a failure as text.
+ * one bounded read into memory, with the reason of a failure as text. And
+ * the path of a file installed beside the running program.
  */
+#define _POSIX_C_SOURCE 200809L /* readlink */
+
 #include "formats/file.h"
 
 #include <errno.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
 char *file_read(const char *path, size_t limit, size_t *size, const char **why)
 {
@@ -50,4 +54,28 @@ char *file_read(const char *path, size_t limit, size_t *size, const char **why)
     buf[len] = 0;
     *size = len;
     return buf;
+}
+
+int file_beside_program(const char *name, char *path, size_t size)
+{
+    if (size < 2) {
+        errno = ENAMETOOLONG;
+        return 0;
+    }
+    ssize_t length = readlink("/proc/self/exe", path, size - 1);
+    if (length <= 0) {
+        if (length == 0)
+            errno = ENOENT;
+        return 0;
+    }
+    path[length] = '\0';
+    /* Keep the folder up to its last slash ("/" for a program at the root). */
+    char *slash = strrchr(path, '/');
+    size_t folder = slash ? (size_t)(slash - path) + 1 : 0;
+    if (folder + strlen(name) + 1 > size) {
+        errno = ENAMETOOLONG;
+        return 0;
+    }
+    strcpy(path + folder, name);
+    return 1;
 }

@@ -15,26 +15,19 @@
 #define _GNU_SOURCE /* RTLD_NODELETE */
 
 #include <dlfcn.h>
-#include <errno.h>
 #include <stdio.h>
 #include <string.h>
-#include <unistd.h>
 
+#include "formats/file.h"
 #include "formats/image_backend.h"
 
 #ifndef SPANCAST_PLUGIN_DIR
 #define SPANCAST_PLUGIN_DIR "."
 #endif
 
-/* dlopen of folder/IMGIO_PLUGIN_FILE; NULL with dlerror's text in err. */
-static void *open_in(const char *folder, char *err, size_t err_size)
+/* dlopen of path; NULL with dlerror's text in err. */
+static void *open_at(const char *path, char *err, size_t err_size)
 {
-    char path[4096];
-    if ((size_t)snprintf(path, sizeof path, "%s/%s", folder, IMGIO_PLUGIN_FILE) >=
-        sizeof path) {
-        snprintf(err, err_size, "%.400s: path too long", folder);
-        return NULL;
-    }
     void *handle = dlopen(path, RTLD_NOW | RTLD_LOCAL | RTLD_NODELETE);
     if (!handle) {
         const char *why = dlerror();
@@ -46,20 +39,14 @@ static void *open_in(const char *folder, char *err, size_t err_size)
 int imgio_plugin_open(imgio_plugin *plugin, char *err, size_t err_size)
 {
     memset(plugin, 0, sizeof *plugin);
-    char folder[4096], first[512] = "";
-    ssize_t length = readlink("/proc/self/exe", folder, sizeof folder - 1);
+    char path[4096], first[512] = "";
     void *handle = NULL;
-    if (length > 0) {
-        folder[length] = '\0';
-        char *slash = strrchr(folder, '/');
-        if (slash) {
-            *slash = '\0';
-            handle = open_in(folder[0] ? folder : "/", first, sizeof first);
-        }
-    }
+    if (file_beside_program(IMGIO_PLUGIN_FILE, path, sizeof path))
+        handle = open_at(path, first, sizeof first);
     if (!handle) {
         char second[512];
-        handle = open_in(SPANCAST_PLUGIN_DIR, second, sizeof second);
+        handle =
+            open_at(SPANCAST_PLUGIN_DIR "/" IMGIO_PLUGIN_FILE, second, sizeof second);
         if (!handle && !first[0])
             snprintf(first, sizeof first, "%s", second);
     }
