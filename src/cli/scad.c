@@ -21,11 +21,14 @@
 #include <fcntl.h>
 #include <limits.h>
 #include <spawn.h>
+#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/wait.h>
 #include <unistd.h>
+
+#include "formats/file.h"
 
 extern char **environ;
 
@@ -64,34 +67,6 @@ static void last_line(const char *path, char *buf, size_t size)
             snprintf(buf, size, "%s", line);
     }
     fclose(f);
-}
-
-static char *read_text(const char *path, size_t *size)
-{
-    FILE *f = fopen(path, "rb");
-    if (!f)
-        return NULL;
-    char *buf = NULL;
-    size_t len = 0, cap = 0;
-    for (;;) {
-        if (len == cap) {
-            cap = cap ? 2 * cap : 65536;
-            char *next = realloc(buf, cap);
-            if (!next) {
-                free(buf);
-                fclose(f);
-                return NULL;
-            }
-            buf = next;
-        }
-        size_t got = fread(buf + len, 1, cap - len, f);
-        len += got;
-        if (got == 0)
-            break;
-    }
-    fclose(f);
-    *size = len;
-    return buf;
 }
 
 sc_status scad_load(const char *path, const sc_load_options *options, sc_scene **scene,
@@ -140,7 +115,8 @@ sc_status scad_load(const char *path, const sc_load_options *options, sc_scene *
     }
     if (st == SC_OK) {
         size_t size = 0;
-        char *text = read_text(csg, &size);
+        const char *why;
+        char *text = file_read(csg, SIZE_MAX / 2, &size, &why);
         if (!text)
             st = fail(error, SC_ERR_IO, "OpenSCAD wrote no CSG for '%s'%s", path, "");
         else
