@@ -43,6 +43,7 @@
  */
 #include "build/build_revolve.h"
 
+#include <float.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -149,18 +150,41 @@ static int in_path(const profile *p, uint32_t k, double x, double y)
 }
 
 /* Marks the holes among paths first .. p->paths - 1 (one polygon): a path
- * inside an odd number of the others. */
+ * whose first point lies inside an odd number of the others.
+ *
+ * Each path j is measured once, and only the points in its box (widened by
+ * the rounding of in_path's crossing abscissa, a few ulps of the largest
+ * |x|) are tested against its edges: a point above or below the box meets
+ * no edge of j, and one left or right of it meets every edge's crossing on
+ * the same side, an even count. So the marks are in_path's, and a profile of
+ * many small contours (text) costs about paths^2 box tests instead of
+ * paths x points edge tests (a fuzzed text profile of 141863 points took
+ * 13 s). */
 static void mark_holes(profile *p, uint32_t first)
 {
-    for (uint32_t k = first; k < p->paths; k++) {
-        if (p->start[k + 1] - p->start[k] < 3)
+    for (uint32_t k = first; k < p->paths; k++)
+        p->hole[k] = 0;
+    for (uint32_t j = first; j < p->paths; j++) {
+        uint32_t s = p->start[j], e = p->start[j + 1];
+        if (e - s < 3)
             continue;
-        double x = p->xy[2 * p->start[k]], y = p->xy[2 * p->start[k] + 1];
-        int depth = 0;
-        for (uint32_t j = first; j < p->paths; j++)
-            if (j != k && p->start[j + 1] - p->start[j] >= 3 && in_path(p, j, x, y))
-                depth++;
-        p->hole[k] = depth % 2;
+        double x0 = p->xy[2 * s], x1 = x0, y0 = p->xy[2 * s + 1], y1 = y0;
+        for (uint32_t i = s + 1; i < e; i++) {
+            x0 = fmin(x0, p->xy[2 * i]);
+            x1 = fmax(x1, p->xy[2 * i]);
+            y0 = fmin(y0, p->xy[2 * i + 1]);
+            y1 = fmax(y1, p->xy[2 * i + 1]);
+        }
+        double slack = 8 * DBL_EPSILON * fmax(fabs(x0), fabs(x1));
+        for (uint32_t k = first; k < p->paths; k++) {
+            if (k == j || p->start[k + 1] - p->start[k] < 3)
+                continue;
+            double x = p->xy[2 * p->start[k]], y = p->xy[2 * p->start[k] + 1];
+            if (y < y0 || y > y1 || x < x0 - slack || x > x1 + slack)
+                continue;
+            if (in_path(p, j, x, y))
+                p->hole[k] ^= 1;
+        }
     }
 }
 
