@@ -124,6 +124,87 @@ typedef enum sc_projection {
     SC_PROJECTION_ORTHOGRAPHIC
 } sc_projection;
 
+/* ---- preview renders: colour schemes, edges, overlays, views, sections */
+
+/* A render colour scheme as OpenSCAD 2021.01 defines one: display values
+ * (sRGB-encoded, 0..1), named after the keys of its JSON files. */
+#define SC_COLOR_SCHEME_NAME_MAX 64
+
+typedef struct sc_color_scheme {
+    char name[SC_COLOR_SCHEME_NAME_MAX];
+    float background[3];  /* "background" */
+    float axes[3];        /* "axes-color": axes and scale marks */
+    float face_front[3];  /* "opencsg-face-front": faces in the preview */
+    float face_back[3];   /* "opencsg-face-back": subtracted faces in the preview,
+                             and the caps of section cuts */
+    float render_face[3]; /* "cgal-face-front": faces in the render */
+    float edge[3];        /* "cgal-edge-front": edge lines */
+    float crosshair[3];   /* "crosshair" */
+} sc_color_scheme;
+
+/* The folder OpenSCAD's Debian package installs its render colour schemes
+ * in; sc_color_scheme_find reads it when given no other. */
+#define SC_COLOR_SCHEME_FOLDER "/usr/share/openscad/color-schemes/render"
+
+/* Fills scheme with OpenSCAD's built-in scheme, Cornfield. */
+void sc_color_scheme_default(sc_color_scheme *scheme);
+
+/* Finds the scheme called name (as OpenSCAD names it: "Cornfield",
+ * "Metallic", "Tomorrow Night", ...): Cornfield is built in, the others
+ * are read from the *.json files of folder (NULL: SC_COLOR_SCHEME_FOLDER),
+ * as OpenSCAD reads them; a file that is not a valid scheme is passed
+ * over, as OpenSCAD passes it over. An unknown name is SC_ERR_ARGUMENT
+ * with a message listing the names there are. */
+sc_status sc_color_scheme_find(const char *name, const char *folder,
+                               sc_color_scheme *scheme, sc_error *error);
+
+/* How surfaces are lit. */
+typedef enum sc_lighting {
+    SC_LIGHTING_DEFAULT = 0, /* the file's light() nodes, else spancast's own rig */
+    SC_LIGHTING_OPENSCAD     /* OpenSCAD's: the preview shader's one light with
+                                preview set, the render's two fixed lights
+                                otherwise; no shadows, no light() nodes */
+} sc_lighting;
+
+/* What is drawn over the shaded model (sc_render_options.view, or'ed). */
+enum {
+    SC_VIEW_EDGES = 1,     /* silhouettes, creases and boolean seams */
+    SC_VIEW_AXES = 2,      /* OpenSCAD's axes, and its small axes in the corner */
+    SC_VIEW_SCALES = 4,    /* tick marks along the axes (with SC_VIEW_AXES) */
+    SC_VIEW_CROSSHAIRS = 8 /* OpenSCAD's crosshairs at the view's centre */
+};
+
+/* OpenSCAD's View menu. */
+typedef enum sc_view_preset {
+    SC_VIEW_PRESET_NONE = 0,
+    SC_VIEW_PRESET_TOP,
+    SC_VIEW_PRESET_BOTTOM,
+    SC_VIEW_PRESET_LEFT,
+    SC_VIEW_PRESET_RIGHT,
+    SC_VIEW_PRESET_FRONT,
+    SC_VIEW_PRESET_BACK,
+    SC_VIEW_PRESET_DIAGONAL
+} sc_view_preset;
+
+/* The preset's name ("top", ...), NULL for SC_VIEW_PRESET_NONE or an
+ * unknown value. */
+const char *sc_view_preset_name(sc_view_preset preset);
+
+/* The preset called name, SC_VIEW_PRESET_NONE when there is none. */
+sc_view_preset sc_view_preset_from_name(const char *name);
+
+/* The preset's rotation as OpenSCAD's $vpr (degrees), for the gimbal
+ * camera; returns 0 for SC_VIEW_PRESET_NONE. */
+int sc_view_preset_rotation(sc_view_preset preset, double rotation[3]);
+
+#define SC_MAX_SECTIONS 8 /* --section planes */
+#define SC_MAX_SHEET 16   /* views of a contact sheet */
+
+typedef enum sc_section_style {
+    SC_SECTION_SOLID = 0, /* caps in one colour */
+    SC_SECTION_HATCH      /* caps hatched at 45 degrees */
+} sc_section_style;
+
 typedef struct sc_render_options {
     int width, height; /* image size in pixels (default 800 x 600) */
     sc_camera_mode camera_mode;
@@ -149,6 +230,30 @@ typedef struct sc_render_options {
      * SC_ERR_CANCELLED, and the writers of its framebuffer give up without
      * touching their target. NULL by default. */
     const volatile sig_atomic_t *cancel;
+
+    /* Preview renders. */
+    int use_scheme;         /* 1: colours from scheme, over the file's background()
+                               and the default face colour; 0 (default): those */
+    sc_color_scheme scheme; /* Cornfield by default */
+    int preview;            /* 1: OpenSCAD's preview (F5) colours: subtracted faces
+                               in the scheme's face_back, edges as its shader draws
+                               them; 0 (default): its render (F6) colours */
+    sc_lighting lighting;   /* default SC_LIGHTING_DEFAULT */
+    unsigned view;          /* SC_VIEW_* flags; 0 (default): none */
+    double edge_angle_deg;  /* creases: normals further apart than this (default 30) */
+    double edge_width;      /* edge lines' width in pixels (default 1) */
+    int section_count;      /* half-spaces n.p <= d that keep the solid (default 0) */
+    double section[SC_MAX_SECTIONS][4]; /* nx, ny, nz, d; n need not be unit */
+    sc_section_style section_style;
+    int ao_samples;   /* ambient occlusion rays per sample; 0 (default): none */
+    double ao_radius; /* their reach, a fraction of the model's diagonal
+                         (default 0.1) */
+    /* A contact sheet: sheet_count > 0 renders one tile of width x height per
+     * view, in this order, in a grid of ceil(sqrt(n)) columns, each framed
+     * like viewall with autocenter and labelled with its name; the image is
+     * columns * width by rows * height pixels and region is a crop of it. */
+    int sheet_count;
+    sc_view_preset sheet[SC_MAX_SHEET];
 } sc_render_options;
 
 void sc_render_options_init(sc_render_options *options);

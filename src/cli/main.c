@@ -104,6 +104,31 @@ static const char usage_text[] =
     "  --threads=N            worker threads (default 0: all cores)\n"
     "  --faithful             spheres and cylinders as the polyhedra OpenSCAD makes\n"
     "                         from $fn, $fa, $fs (default: exact solids)\n"
+    "\n"
+    "preview options (CAD-style renders):\n"
+    "  --colorscheme=NAME     OpenSCAD's colour scheme: Cornfield (built in) or one of\n"
+    "                         " SC_COLOR_SCHEME_FOLDER "\n"
+    "                         (Metallic, Sunset, Tomorrow Night, ...)\n"
+    "  --preview              OpenSCAD's preview (F5) colours: subtracted faces in the\n"
+    "                         scheme's back-face colour (default: its render, F6)\n"
+    "  --lighting=NAME        default: the file's lights or spancast's rig, with\n"
+    "                         shadows; openscad: OpenSCAD's own lights\n"
+    "  --view=LIST            edges, axes, scales, crosshairs (comma-separated)\n"
+    "  --edge-angle=DEG       creases between faces turning more than this (default 30)\n"
+    "  --edge-width=PX        edge lines' width in pixels (default 1)\n"
+    "  --view-preset=NAME     top, bottom, left, right, front, back, diagonal "
+    "(OpenSCAD's\n"
+    "                         View menu), framed like --viewall --autocenter\n"
+    "  --sheet=LIST           one labelled tile per view (--imgsize each), in a grid,\n"
+    "                         orthographic unless --projection is given\n"
+    "  --section=NX,NY,NZ,D   keep only the half-space n.p <= D, caps on the cut;\n"
+    "                         repeatable (the half-spaces intersect)\n"
+    "  --section-style=STYLE  solid (default) or hatch\n"
+    "  --ao=N                 ambient occlusion with N rays per sample (default 0)\n"
+    "  --ao-radius=F          their reach, a fraction of the model's diagonal\n"
+    "                         (default 0.1)\n"
+    "\n"
+    "report options:\n"
     "  --stats[=json]         print rays by kind, primitive tests, span operations\n"
     "                         and time per stage on stdout\n"
     "  -q, --quiet            no progress bar and no summary line on stderr\n"
@@ -235,7 +260,19 @@ typedef enum opt_id {
     OPT_MAX_DEPTH,
     OPT_REGION,
     OPT_STATS,
-    OPT_FAITHFUL
+    OPT_FAITHFUL,
+    OPT_COLORSCHEME,
+    OPT_LIGHTING,
+    OPT_PREVIEW,
+    OPT_VIEW,
+    OPT_EDGE_ANGLE,
+    OPT_EDGE_WIDTH,
+    OPT_VIEW_PRESET,
+    OPT_SHEET,
+    OPT_SECTION,
+    OPT_SECTION_STYLE,
+    OPT_AO,
+    OPT_AO_RADIUS
 } opt_id;
 
 typedef struct opt_spec {
@@ -264,6 +301,18 @@ static const opt_spec options_table[] = {
     {"--region", OPT_REGION, 1, 1},
     {"--stats", OPT_STATS, 2, 1},
     {"--faithful", OPT_FAITHFUL, 0, 0},
+    {"--colorscheme", OPT_COLORSCHEME, 1, 1},
+    {"--lighting", OPT_LIGHTING, 1, 1},
+    {"--preview", OPT_PREVIEW, 0, 1},
+    {"--view", OPT_VIEW, 1, 1},
+    {"--edge-angle", OPT_EDGE_ANGLE, 1, 1},
+    {"--edge-width", OPT_EDGE_WIDTH, 1, 1},
+    {"--view-preset", OPT_VIEW_PRESET, 1, 1},
+    {"--sheet", OPT_SHEET, 1, 1},
+    {"--section", OPT_SECTION, 1, 1},
+    {"--section-style", OPT_SECTION_STYLE, 1, 1},
+    {"--ao", OPT_AO, 1, 1},
+    {"--ao-radius", OPT_AO_RADIUS, 1, 1},
 };
 
 typedef struct cli_args {
@@ -271,10 +320,57 @@ typedef struct cli_args {
     const char *input;
     const char *output, *mask, *depth, *normal, *id;
     int quiet;
-    int stats;    /* 0 none, 1 text, 2 JSON */
-    int faithful; /* --faithful: OpenSCAD's polyhedra for spheres and cylinders */
+    int stats;            /* 0 none, 1 text, 2 JSON */
+    int faithful;         /* --faithful: OpenSCAD's polyhedra for spheres and cylinders */
+    int projection_given; /* --projection: a sheet is orthographic without it */
+    int camera_given;     /* --camera */
+    sc_view_preset preset; /* --view-preset */
     sc_render_options options;
 } cli_args;
+
+/* The names of a comma-separated list, each looked up in names[]; sets the
+ * bit of each in *flags, or appends its index to out[*count] (max of them).
+ * Returns 0, or a usage error naming option and the bad name. */
+static int parse_name_list(const char *option, const char *value,
+                           const char *const *names, int name_count, unsigned *flags,
+                           int *out, int *count, int max)
+{
+    const char *p = value;
+    for (;;) {
+        const char *comma = strchr(p, ',');
+        size_t len = comma ? (size_t)(comma - p) : strlen(p);
+        int found = -1;
+        for (int k = 0; k < name_count; k++)
+            if (names[k] && strlen(names[k]) == len && !strncmp(names[k], p, len))
+                found = k;
+        if (found < 0) {
+            char list[256] = "";
+            for (int k = 0; k < name_count; k++) {
+                if (!names[k])
+                    continue;
+                if (list[0])
+                    strcat(list, ", ");
+                strcat(list, names[k]);
+            }
+            return usage_error("%s: unknown name '%.*s' (expected %s)", option, (int)len,
+                               p, list);
+        }
+        if (flags)
+            *flags |= 1u << found;
+        if (out) {
+            if (*count >= max)
+                return usage_error("%s takes at most %d names", option, max);
+            out[(*count)++] = found;
+        }
+        if (!comma)
+            return 0;
+        p = comma + 1;
+    }
+}
+
+static const char *const view_names[] = {"edges", "axes", "scales", "crosshairs"};
+static const char *const preset_names[] = {NULL,    "top",   "bottom", "left",
+                                           "right", "front", "back",   "diagonal"};
 
 /* Applies one option with its value (NULL for flags); returns 0 or the exit
  * status of a usage error. */
@@ -299,6 +395,7 @@ static int apply_option(cli_args *a, opt_id id, const char *value)
                                "(translate, rotate, distance)");
         memcpy(o->camera, v, (size_t)n * sizeof v[0]);
         o->camera_mode = n == 6 ? SC_CAMERA_VECTOR : SC_CAMERA_GIMBAL;
+        a->camera_given = 1;
         return 0;
     }
     case OPT_IMGSIZE: {
@@ -326,6 +423,7 @@ static int apply_option(cli_args *a, opt_id id, const char *value)
         return 0;
     }
     case OPT_PROJECTION:
+        a->projection_given = 1;
         if (!strcmp(value, "p") || !strcmp(value, "perspective")) {
             o->projection = SC_PROJECTION_PERSPECTIVE;
         } else if (!strcmp(value, "o") || !strcmp(value, "ortho") ||
@@ -396,6 +494,103 @@ static int apply_option(cli_args *a, opt_id id, const char *value)
     case OPT_FAITHFUL:
         a->faithful = 1;
         return 0;
+    case OPT_COLORSCHEME: {
+        sc_error error;
+        if (sc_color_scheme_find(value, NULL, &o->scheme, &error) != SC_OK)
+            return usage_error("--colorscheme: %s", error.message);
+        o->use_scheme = 1;
+        return 0;
+    }
+    case OPT_LIGHTING:
+        if (!strcmp(value, "default"))
+            o->lighting = SC_LIGHTING_DEFAULT;
+        else if (!strcmp(value, "openscad"))
+            o->lighting = SC_LIGHTING_OPENSCAD;
+        else
+            return usage_error("--lighting expects 'default' or 'openscad'");
+        return 0;
+    case OPT_PREVIEW:
+        o->preview = 1;
+        return 0;
+    case OPT_VIEW: {
+        unsigned flags = 0;
+        int st = parse_name_list("--view", value, view_names, 4, &flags, NULL, NULL, 0);
+        if (st)
+            return st;
+        o->view |= flags; /* bit k of view_names is SC_VIEW_* 1 << k */
+        return 0;
+    }
+    case OPT_EDGE_ANGLE: {
+        double v;
+        if (!parse_number(value, &v) || !(v > 0 && v < 180))
+            return usage_error("--edge-angle expects an angle in degrees between 0 and "
+                               "180");
+        o->edge_angle_deg = v;
+        return 0;
+    }
+    case OPT_EDGE_WIDTH: {
+        double v;
+        if (!parse_number(value, &v) || !(v > 0 && v <= RENDER_MAX_EDGE_WIDTH))
+            return usage_error("--edge-width expects a width in pixels above 0 and at "
+                               "most %d",
+                               RENDER_MAX_EDGE_WIDTH);
+        o->edge_width = v;
+        return 0;
+    }
+    case OPT_VIEW_PRESET: {
+        int index[1], count = 0;
+        int st = parse_name_list("--view-preset", value, preset_names, 8, NULL, index,
+                                 &count, 1);
+        if (st)
+            return st;
+        a->preset = (sc_view_preset)index[0];
+        return 0;
+    }
+    case OPT_SHEET: {
+        int index[SC_MAX_SHEET], count = 0;
+        int st = parse_name_list("--sheet", value, preset_names, 8, NULL, index, &count,
+                                 SC_MAX_SHEET);
+        if (st)
+            return st;
+        o->sheet_count = count;
+        for (int k = 0; k < count; k++)
+            o->sheet[k] = (sc_view_preset)index[k];
+        return 0;
+    }
+    case OPT_SECTION: {
+        double v[4];
+        if (parse_numbers(value, v, 4) != 4 || (v[0] == 0 && v[1] == 0 && v[2] == 0))
+            return usage_error("--section expects NX,NY,NZ,D with a non-zero normal "
+                               "(keeps the half-space n.p <= D)");
+        if (o->section_count >= SC_MAX_SECTIONS)
+            return usage_error("at most %d --section options", SC_MAX_SECTIONS);
+        memcpy(o->section[o->section_count++], v, sizeof v);
+        return 0;
+    }
+    case OPT_SECTION_STYLE:
+        if (!strcmp(value, "solid"))
+            o->section_style = SC_SECTION_SOLID;
+        else if (!strcmp(value, "hatch"))
+            o->section_style = SC_SECTION_HATCH;
+        else
+            return usage_error("--section-style expects 'solid' or 'hatch'");
+        return 0;
+    case OPT_AO: {
+        long n;
+        if (!parse_int(value, 0, RENDER_MAX_AO, &n))
+            return usage_error("--ao expects a number of rays from 0 to %d",
+                               RENDER_MAX_AO);
+        o->ao_samples = (int)n;
+        return 0;
+    }
+    case OPT_AO_RADIUS: {
+        double v;
+        if (!parse_number(value, &v) || !(v > 0))
+            return usage_error("--ao-radius expects a positive fraction of the model's "
+                               "diagonal");
+        o->ao_radius = v;
+        return 0;
+    }
     }
     return 0;
 }
@@ -408,6 +603,31 @@ static const opt_spec *find_option(const char *arg, size_t name_len)
             return &options_table[k];
     }
     return NULL;
+}
+
+/* Applies --view-preset and --sheet, which place the camera themselves:
+ * a preset is OpenSCAD's view rotation framed like --viewall
+ * --autocenter; a sheet is orthographic unless --projection says
+ * otherwise. Returns 0 or a usage exit status. */
+static int finish_views(cli_args *a)
+{
+    sc_render_options *o = &a->options;
+    if (a->preset && o->sheet_count)
+        return usage_error("--view-preset and --sheet exclude each other");
+    if ((a->preset || o->sheet_count) && a->camera_given)
+        return usage_error("--camera does not combine with --%s",
+                           a->preset ? "view-preset" : "sheet");
+    if (a->preset) {
+        o->camera_mode = SC_CAMERA_GIMBAL;
+        memset(o->camera, 0, sizeof o->camera);
+        sc_view_preset_rotation(a->preset, o->camera + 3);
+        o->camera[6] = 140;
+        o->viewall = 1;
+        o->autocenter = 1;
+    }
+    if (o->sheet_count && !a->projection_given)
+        o->projection = SC_PROJECTION_ORTHOGRAPHIC;
+    return 0;
 }
 
 /* Parses argv[2..] for the command in a; returns 0 or a usage exit status. */
@@ -472,7 +692,7 @@ static int parse_args(cli_args *a, int argc, char **argv)
         return usage_error("missing input file");
     if (a->render && !a->output)
         return usage_error("missing output file (-o)");
-    return 0;
+    return finish_views(a);
 }
 
 /* ---- interrupts ---- */

@@ -14,6 +14,8 @@
  */
 #include "render/camera.h"
 
+#include <string.h>
+
 #include "base/error.h"
 
 /* ---- exact degree trigonometry ---- */
@@ -260,4 +262,44 @@ void cam_ray(const camera *cam, int i, int j, double sx, double sy, vec3 *origin
         *origin = cam->eye;
         *direction = v3_add(cam->f, offset);
     }
+}
+
+/* OpenSCAD's View menu (MainWindow::viewAngle*, 2021.01) sets the view's
+ * object rotation; as $vpr (Camera::getVpr: 90 - x, -y, -z, wrapped) that
+ * is: */
+static const struct preset_entry {
+    const char *name;
+    double rotation[3];
+} presets[] = {
+    [SC_VIEW_PRESET_TOP] = {"top", {0, 0, 0}},
+    [SC_VIEW_PRESET_BOTTOM] = {"bottom", {180, 0, 0}},
+    [SC_VIEW_PRESET_LEFT] = {"left", {90, 0, 270}},
+    [SC_VIEW_PRESET_RIGHT] = {"right", {90, 0, 90}},
+    [SC_VIEW_PRESET_FRONT] = {"front", {90, 0, 0}},
+    [SC_VIEW_PRESET_BACK] = {"back", {90, 0, 180}},
+    [SC_VIEW_PRESET_DIAGONAL] = {"diagonal", {55, 0, 25}},
+};
+enum { PRESET_COUNT = sizeof presets / sizeof presets[0] };
+
+const char *sc_view_preset_name(sc_view_preset preset)
+{
+    return preset > SC_VIEW_PRESET_NONE && (int)preset < PRESET_COUNT
+               ? presets[preset].name
+               : NULL;
+}
+
+sc_view_preset sc_view_preset_from_name(const char *name)
+{
+    for (int k = 1; name && k < PRESET_COUNT; k++)
+        if (!strcmp(presets[k].name, name))
+            return (sc_view_preset)k;
+    return SC_VIEW_PRESET_NONE;
+}
+
+int sc_view_preset_rotation(sc_view_preset preset, double rotation[3])
+{
+    if (!sc_view_preset_name(preset))
+        return 0;
+    memcpy(rotation, presets[preset].rotation, 3 * sizeof *rotation);
+    return 1;
 }

@@ -27,7 +27,9 @@
 #include "base/arena.h"
 #include "base/error.h"
 #include "build/scene.h"
+#include "formats/color.h"
 #include "render/camera.h"
+#include "render/overlay.h"
 #include "render/sample.h"
 #include "render/shade.h"
 
@@ -44,6 +46,10 @@ void sc_render_options_init(sc_render_options *options)
     options->up[2] = 1;
     options->spp = 1;
     options->max_depth = 5;
+    sc_color_scheme_default(&options->scheme);
+    options->edge_angle_deg = RENDER_DEFAULT_EDGE_ANGLE;
+    options->edge_width = 1;
+    options->ao_radius = RENDER_DEFAULT_AO_RADIUS;
 }
 
 int sc_render_options_from_scene(sc_render_options *options, const sc_scene *scene)
@@ -61,12 +67,26 @@ int sc_render_options_from_scene(sc_render_options *options, const sc_scene *sce
     return 1;
 }
 
-typedef struct render_ctx {
-    const csg_tree *tree;
+/* One view of the render: the whole image, or a tile of a contact sheet. */
+typedef struct render_view {
     camera cam;
     shade_scene shade;
+    overlay over;
+    int prepared; /* shade and over hold memory */
+} render_view;
+
+typedef struct render_ctx {
+    const csg_tree *tree;
+    render_view *views;
+    int view_count;
+    int tile_w, tile_h, cols; /* a view's size; views per row */
     int spp, grid_width;
-    int x0, y0; /* the crop's corner in the full image */
+    int x0, y0;           /* the crop's corner in the full image */
+    int edges;            /* draw edge lines */
+    double edge_half;     /* neighbour offset in pixels: half the line width */
+    double edge_cos;      /* cosine of the crease angle */
+    double edge_color[3]; /* linear */
+    int overlays;         /* some view has overlay lines or a label */
     sc_framebuffer *fb;
 } render_ctx;
 
@@ -78,62 +98,155 @@ typedef struct render_thread {
     uint64_t camera_rays;
 } render_thread;
 
+/* A camera ray and what it sees. */
+typedef struct view_ray {
+    csg_ray ray;
+    int found;
+    shade_hit hit;
+} view_ray;
+
+static void trace_view_ray(const render_view *v, shade_thread *st, int i, int j,
+                           double sx, double sy, view_ray *out)
+{
+    cam_ray(&v->cam, i, j, sx, sy, &out->ray.o, &out->ray.d);
+    out->ray.tmin = 0;
+    out->ray.tmax = INFINITY;
+    out->found = shade_first_hit(&v->shade, st, &out->ray, &out->hit);
+}
+
+/* Pixel size at forward depth z, in world units. */
+static double pixel_size(const camera *cam, double z)
+{
+    double half = cam->projection == SC_PROJECTION_ORTHOGRAPHIC ? cam->distance : z;
+    return 2 * cam->a * half / cam->height;
+}
+
+/* Whether an edge lies between what two neighbouring rays see: one hits
+ * and the other misses; a cap meets a surface; the leaf changes (a seam
+ * where boolean operands meet); the normals turn by more than the crease
+ * angle; or b's hit is off a's tangent plane by more than two pixels' size
+ * at a's depth (a step in depth: a silhouette over something behind). */
+static int edge_between(const render_ctx *c, const render_view *v, const view_ray *a,
+                        const view_ray *b)
+{
+    if (a->found != b->found)
+        return 1;
+    if (!a->found)
+        return 0;
+    if (a->hit.cap != b->hit.cap)
+        return 1;
+    if (!a->hit.cap && a->hit.hit.leaf != b->hit.hit.leaf)
+        return 1;
+    vec3 na = shade_hit_normal(&v->shade, &a->ray, &a->hit);
+    vec3 nb = shade_hit_normal(&v->shade, &b->ray, &b->hit);
+    if (v3_dot(na, nb) < c->edge_cos)
+        return 1;
+    vec3 pa = v3_madd(a->ray.o, a->ray.d, a->hit.hit.t);
+    double denom = v3_dot(na, b->ray.d), blen = v3_length(b->ray.d);
+    if (!(fabs(denom) > 1e-9 * blen))
+        return 1;
+    double predicted = v3_dot(na, v3_sub(pa, b->ray.o)) / denom;
+    double step = fabs(b->hit.hit.t - predicted) * blen;
+    return step > 2 * pixel_size(&v->cam, overlay_depth(&v->cam, pa));
+}
+
+/* Whether the sample's point lies on an edge line: an edge between its own
+ * ray and one of the four rays half the line's width away. */
+static int on_edge(const render_ctx *c, const render_view *v, shade_thread *st, int i,
+                   int j, double sx, double sy, const view_ray *centre)
+{
+    static const double dirs[4][2] = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}};
+    for (int k = 0; k < 4; k++) {
+        view_ray nb;
+        trace_view_ray(v, st, i, j, sx + c->edge_half * dirs[k][0],
+                       sy + c->edge_half * dirs[k][1], &nb);
+        if (edge_between(c, v, centre, &nb))
+            return 1;
+    }
+    return 0;
+}
+
+/* The linear colour of one sample of pixel (i, j) of view v: what r sees,
+ * then edge lines, then overlay lines. */
+static void sample_color(const render_ctx *c, const render_view *v, shade_thread *st,
+                         int i, int j, double sx, double sy, const view_ray *r,
+                         double rgb[3])
+{
+    if (r->found)
+        shade_ray(&v->shade, st, &r->ray, &r->hit, 0, 1.0 / c->spp, rgb);
+    else
+        memcpy(rgb, v->shade.background, 3 * sizeof *rgb);
+    if (c->edges && on_edge(c, v, st, i, j, sx, sy, r))
+        memcpy(rgb, c->edge_color, 3 * sizeof *rgb);
+    if (c->overlays) {
+        double depth = INFINITY;
+        if (r->found)
+            depth = overlay_depth(&v->cam, v3_madd(r->ray.o, r->ray.d, r->hit.hit.t));
+        overlay_sample(&v->over, i + sx, j + sy, depth, rgb);
+    }
+}
+
 static void render_pixel(const render_ctx *c, render_thread *th, int i, int j)
 {
     sc_framebuffer *fb = c->fb;
     size_t p = (size_t)j * (size_t)fb->width + (size_t)i;
     int x = c->x0 + i, y = c->y0 + j; /* in the full image */
     int aovs = fb->mask || fb->depth || fb->normal || fb->id;
+    int vi = (y / c->tile_h) * c->cols + x / c->tile_w;
+    int vx = x % c->tile_w, vy = y % c->tile_h; /* in the view's image */
+    const render_view *v = vi < c->view_count ? &c->views[vi] : NULL;
+    shade_thread st;
+    st.scratch = &th->scratch;
+    st.csg = &th->csg;
+    memset(&st.count, 0, sizeof st.count);
 
     /* The centre ray: the AOVs, and the colour at one sample per pixel. */
-    csg_ray centre;
-    csg_hit hit;
-    int found = 0;
-    if (aovs || c->spp == 1) {
-        cam_ray(&c->cam, x, y, 0.5, 0.5, &centre.o, &centre.d);
-        centre.tmin = 0;
-        centre.tmax = INFINITY;
+    view_ray centre;
+    centre.found = 0;
+    if (v && (aovs || c->spp == 1)) {
+        st.rng = sample_rng_for((uint32_t)x, (uint32_t)y, 0);
+        trace_view_ray(v, &st, vx, vy, 0.5, 0.5, &centre);
         th->camera_rays++;
-        found = csg_first_hit_counted(c->tree, &centre, &th->scratch, &th->csg, &hit);
-        if (fb->mask)
-            fb->mask[p] = found ? 255 : 0;
-        if (fb->depth)
-            fb->depth[p] = found ? (float)(hit.t * v3_length(centre.d)) : INFINITY;
-        if (fb->id)
-            fb->id[p] = found ? (int32_t)c->tree->leaves[hit.leaf].object_id : -1;
-        if (fb->normal) {
-            vec3 n = found ? csg_hit_normal(c->tree, &centre, &hit) : v3(0, 0, 0);
-            fb->normal[3 * p + 0] = (float)n.x;
-            fb->normal[3 * p + 1] = (float)n.y;
-            fb->normal[3 * p + 2] = (float)n.z;
-        }
+    }
+    int found = centre.found;
+    const csg_hit *hit = &centre.hit.hit;
+    if (fb->mask)
+        fb->mask[p] = found ? 255 : 0;
+    if (fb->depth)
+        fb->depth[p] = found ? (float)(hit->t * v3_length(centre.ray.d)) : INFINITY;
+    if (fb->id)
+        fb->id[p] = found ? (int32_t)c->tree->leaves[hit->leaf].object_id : -1;
+    if (fb->normal) {
+        vec3 n =
+            found ? shade_hit_normal(&v->shade, &centre.ray, &centre.hit) : v3(0, 0, 0);
+        fb->normal[3 * p + 0] = (float)n.x;
+        fb->normal[3 * p + 1] = (float)n.y;
+        fb->normal[3 * p + 2] = (float)n.z;
     }
     if (!fb->color) {
         arena_reset(&th->scratch);
         return;
     }
+    if (!v) { /* a sheet's grid cell without a view */
+        for (int k = 0; k < 3; k++)
+            fb->color[3 * p + k] = (float)c->views[0].shade.background[k];
+        arena_reset(&th->scratch);
+        return;
+    }
     double sum[3] = {0, 0, 0};
     for (int s = 0; s < c->spp; s++) {
-        shade_thread st;
-        st.scratch = &th->scratch;
-        st.csg = &th->csg;
         st.rng = sample_rng_for((uint32_t)x, (uint32_t)y, (uint32_t)s);
         memset(&st.count, 0, sizeof st.count);
         double rgb[3];
         if (c->spp == 1) {
-            if (found)
-                shade_ray(&c->shade, &st, &centre, &hit, 0, 1.0, rgb);
-            else
-                memcpy(rgb, c->shade.background, sizeof rgb);
+            sample_color(c, v, &st, vx, vy, 0.5, 0.5, &centre, rgb);
         } else {
             double sx, sy;
             sample_offset(s, c->spp, c->grid_width, &st.rng, &sx, &sy);
-            csg_ray ray;
-            cam_ray(&c->cam, x, y, sx, sy, &ray.o, &ray.d);
-            ray.tmin = 0;
-            ray.tmax = INFINITY;
+            view_ray r;
+            trace_view_ray(v, &st, vx, vy, sx, sy, &r);
             th->camera_rays++;
-            shade_ray(&c->shade, &st, &ray, NULL, 0, 1.0 / c->spp, rgb);
+            sample_color(c, v, &st, vx, vy, sx, sy, &r, rgb);
         }
         for (int k = 0; k < 3; k++)
             sum[k] += rgb[k];
@@ -206,6 +319,20 @@ static int has_region(const sc_render_options *o)
     return o->region[0] || o->region[1] || o->region[2] || o->region[3];
 }
 
+/* The full image's size: the options' size, or a sheet of tiles that
+ * size. */
+static void image_size(const sc_render_options *o, int *cols, int *width, int *height)
+{
+    int n = o->sheet_count > 0 ? o->sheet_count : 1;
+    int c = 1;
+    while (c * c < n)
+        c++;
+    int rows = (n + c - 1) / c;
+    *cols = c;
+    *width = o->width * c;
+    *height = o->height * rows;
+}
+
 static sc_status check_options(const sc_render_options *o, sc_error *error)
 {
     if (o->width <= 0 || o->height <= 0 || o->width > RENDER_MAX_SIDE ||
@@ -224,13 +351,102 @@ static sc_status check_options(const sc_render_options *o, sc_error *error)
         return err_set(error, SC_ERR_ARGUMENT, NULL,
                        "maximum depth must be 0 to %d (got %d)", SHADE_MAX_DEPTH,
                        o->max_depth);
+    if (o->sheet_count < 0 || o->sheet_count > SC_MAX_SHEET)
+        return err_set(error, SC_ERR_ARGUMENT, NULL, "a sheet has 1 to %d views (got %d)",
+                       SC_MAX_SHEET, o->sheet_count);
+    for (int k = 0; k < o->sheet_count; k++)
+        if (!sc_view_preset_name(o->sheet[k]))
+            return err_set(error, SC_ERR_ARGUMENT, NULL, "sheet view %d is not a view",
+                           k + 1);
+    if (o->section_count < 0 || o->section_count > SC_MAX_SECTIONS)
+        return err_set(error, SC_ERR_ARGUMENT, NULL, "at most %d section cuts (got %d)",
+                       SC_MAX_SECTIONS, o->section_count);
+    if (o->view & SC_VIEW_EDGES &&
+        !(o->edge_width > 0 && o->edge_width <= RENDER_MAX_EDGE_WIDTH))
+        return err_set(error, SC_ERR_ARGUMENT, NULL,
+                       "edge width must be above 0 and at most %d pixels (got %g)",
+                       RENDER_MAX_EDGE_WIDTH, o->edge_width);
+    if (o->view & SC_VIEW_EDGES && !(o->edge_angle_deg > 0 && o->edge_angle_deg < 180))
+        return err_set(error, SC_ERR_ARGUMENT, NULL,
+                       "edge angle must be between 0 and 180 degrees (got %g)",
+                       o->edge_angle_deg);
+    if (o->ao_samples < 0 || o->ao_samples > RENDER_MAX_AO)
+        return err_set(error, SC_ERR_ARGUMENT, NULL,
+                       "ambient occlusion takes 0 to %d rays (got %d)", RENDER_MAX_AO,
+                       o->ao_samples);
+    if (o->ao_samples > 0 && !(o->ao_radius > 0 && isfinite(o->ao_radius)))
+        return err_set(error, SC_ERR_ARGUMENT, NULL,
+                       "ambient occlusion radius must be above 0 (got %g)", o->ao_radius);
+    int cols, width, height;
+    image_size(o, &cols, &width, &height);
+    if (width > RENDER_MAX_SIDE || height > RENDER_MAX_SIDE)
+        return err_set(error, SC_ERR_ARGUMENT, NULL,
+                       "a sheet of %dx%d pixels is too large (at most %d a side)", width,
+                       height, RENDER_MAX_SIDE);
     const int *r = o->region;
     if (has_region(o) && !(r[0] >= 0 && r[1] >= 0 && r[0] < r[2] && r[1] < r[3] &&
-                           r[2] <= o->width && r[3] <= o->height))
+                           r[2] <= width && r[3] <= height))
         return err_set(error, SC_ERR_ARGUMENT, NULL,
                        "region %d,%d,%d,%d is not a non-empty crop of the %dx%d image",
-                       r[0], r[1], r[2], r[3], o->width, o->height);
+                       r[0], r[1], r[2], r[3], width, height);
     return SC_OK;
+}
+
+/* Upper-case names of the sheet's labels. */
+static const char *const preset_labels[] = {NULL,    "TOP",   "BOTTOM", "LEFT",
+                                            "RIGHT", "FRONT", "BACK",   "DIAGONAL"};
+
+/* Sets up view k of ctx for options: its camera (a sheet tile's preset
+ * framed like viewall with autocenter), shading and overlay. */
+static sc_status prepare_view(render_ctx *c, int k, const shading *look,
+                              const sc_render_options *options, const bbox *bounds,
+                              sc_error *error)
+{
+    render_view *v = &c->views[k];
+    sc_render_options view_options = *options;
+    const char *label = NULL;
+    if (options->sheet_count > 0) {
+        sc_view_preset preset = options->sheet[k];
+        view_options.camera_mode = SC_CAMERA_GIMBAL;
+        memset(view_options.camera, 0, sizeof view_options.camera);
+        sc_view_preset_rotation(preset, view_options.camera + 3);
+        view_options.camera[6] = CAM_DEFAULT_DISTANCE;
+        view_options.viewall = 1;
+        view_options.autocenter = 1;
+        label = preset_labels[preset];
+    }
+    cam_view view;
+    sc_status st = cam_view_from_options(&view_options, bounds, &view, error);
+    if (st == SC_OK)
+        st = cam_init(&v->cam, &view, options->fov_deg, options->projection,
+                      options->width, options->height, error);
+    if (st)
+        return st;
+    st = shade_prepare(&v->shade, c->tree, look, &v->cam, options, error);
+    if (st)
+        return st;
+    st = overlay_prepare(&v->over, &v->cam, options->view, &options->scheme, label,
+                         options->sheet_count > 0, error);
+    if (st) {
+        shade_release(&v->shade);
+        return st;
+    }
+    v->prepared = 1;
+    if (v->over.count || label)
+        c->overlays = 1;
+    return SC_OK;
+}
+
+static void release_views(render_ctx *c)
+{
+    for (int k = 0; c->views && k < c->view_count; k++) {
+        if (!c->views[k].prepared)
+            continue;
+        shade_release(&c->views[k].shade);
+        overlay_release(&c->views[k].over);
+    }
+    free(c->views);
+    c->views = NULL;
 }
 
 static double seconds_now(void)
@@ -261,8 +477,6 @@ sc_status render_scene(const csg_tree *tree, const shading *look,
         options = &defaults;
     }
     sc_status st = check_options(options, error);
-    if (st == SC_OK)
-        st = render_check_memory(options, error);
     if (st)
         return st;
 
@@ -271,16 +485,33 @@ sc_status render_scene(const csg_tree *tree, const shading *look,
     c.tree = tree;
     c.spp = options->spp;
     c.grid_width = sample_grid_width(options->spp);
+    c.tile_w = options->width;
+    c.tile_h = options->height;
+    c.view_count = options->sheet_count > 0 ? options->sheet_count : 1;
+    int width, height;
+    image_size(options, &c.cols, &width, &height);
+    sc_render_options whole = *options; /* the buffers' budget: the whole sheet */
+    whole.width = width;
+    whole.height = height;
+    st = render_check_memory(&whole, error);
+    if (st)
+        return st;
+    c.edges = (options->view & SC_VIEW_EDGES) != 0;
+    c.edge_half = options->edge_width / 2;
+    c.edge_cos = cos(options->edge_angle_deg * 3.14159265358979323846 / 180);
+    for (int k = 0; k < 3; k++)
+        c.edge_color[k] = color_srgb_to_linear(options->scheme.edge[k]);
     bbox bounds = tree->root == CSG_EMPTY ? bbox_empty() : tree->bounds;
-    cam_view view;
-    st = cam_view_from_options(options, &bounds, &view, error);
-    if (st)
-        return st;
-    st = cam_init(&c.cam, &view, options->fov_deg, options->projection, options->width,
-                  options->height, error);
-    if (st)
-        return st;
-    int width = options->width, height = options->height;
+    c.views = calloc((size_t)c.view_count, sizeof *c.views);
+    if (!c.views)
+        return err_nomem(error, NULL);
+    for (int k = 0; k < c.view_count; k++) {
+        st = prepare_view(&c, k, look, options, &bounds, error);
+        if (st) {
+            release_views(&c);
+            return st;
+        }
+    }
     if (has_region(options)) {
         c.x0 = options->region[0];
         c.y0 = options->region[1];
@@ -288,18 +519,15 @@ sc_status render_scene(const csg_tree *tree, const shading *look,
         height = options->region[3] - c.y0;
     }
     c.fb = framebuffer_new(options, width, height);
-    if (!c.fb)
+    if (!c.fb) {
+        release_views(&c);
         return err_set(error, SC_ERR_NOMEM, NULL, "out of memory for a %dx%d image",
                        width, height);
+    }
     c.fb->x0 = c.x0;
     c.fb->y0 = c.y0;
-    describe_camera(&c.cam, options->fov_deg, c.fb->camera_info,
+    describe_camera(&c.views[0].cam, options->fov_deg, c.fb->camera_info,
                     sizeof c.fb->camera_info);
-    st = shade_prepare(&c.shade, tree, look, &c.cam, options->max_depth, error);
-    if (st) {
-        sc_framebuffer_release(c.fb);
-        return st;
-    }
 
     int threads = options->threads > 0 ? options->threads : omp_get_max_threads();
     int tiles_x = (width + RENDER_TILE_SIZE - 1) / RENDER_TILE_SIZE;
@@ -351,7 +579,7 @@ sc_status render_scene(const csg_tree *tree, const shading *look,
     }
     if (options->progress)
         options->progress(options->progress_user, 1.0);
-    shade_release(&c.shade);
+    release_views(&c);
     stats->trace_seconds = seconds_now() - traced;
     if (out_of_memory) {
         sc_framebuffer_release(c.fb);

@@ -12,9 +12,13 @@
 #include "model/shading.h"
 #include "spancast/spancast.h"
 
-#define RENDER_TILE_SIZE 16   /* tiles of 16 x 16 pixels are scheduled over threads */
-#define RENDER_MAX_SIDE 32768 /* largest image width or height */
-#define RENDER_MAX_SPP 65536  /* most samples per pixel */
+#define RENDER_TILE_SIZE 16      /* tiles of 16 x 16 pixels are scheduled over threads */
+#define RENDER_MAX_SIDE 32768    /* largest image width or height */
+#define RENDER_MAX_SPP 65536     /* most samples per pixel */
+#define RENDER_MAX_EDGE_WIDTH 16 /* widest edge line, pixels */
+#define RENDER_DEFAULT_EDGE_ANGLE 30.0 /* creases: degrees between normals */
+#define RENDER_MAX_AO 1024             /* most ambient occlusion rays per hit */
+#define RENDER_DEFAULT_AO_RADIUS 0.1   /* of the model's diagonal */
 
 /* OpenSCAD's Cornfield background, #ffffe5, as display values (the
  * framebuffer holds their linear equivalent: color.h). */

@@ -19,6 +19,7 @@
 
 #include "base/error.h"
 #include "formats/color.h"
+#include "build/build.h"
 #include "render/render.h"
 
 /* The default rig, as directions towards the lights in camera coordinates
@@ -27,6 +28,14 @@ static const double key_light[3] = {-0.5, 0.6, 0.8};
 static const double fill_light[3] = {0.6, -0.3, 0.7};
 static const double key_intensity = 0.8;
 static const double fill_intensity = 0.3;
+
+/* OpenSCAD's two lights (GLView::initializeGL), set with an identity
+ * modelview, so fixed to the camera: towards (-1, 1, 1) and (1, -1, -1) in
+ * its eye coordinates, diffuse 1, with the light model's global ambient
+ * 0.2 and no specular term (the material's specular colour is black). */
+static const double openscad_light0[3] = {-1, 1, 1};
+static const double openscad_light1[3] = {1, -1, -1};
+#define OPENSCAD_AMBIENT 0.2
 
 static const float default_background[3] = {RENDER_BACKGROUND_R, RENDER_BACKGROUND_G,
                                             RENDER_BACKGROUND_B};
@@ -45,18 +54,28 @@ static void linear3(const float in[3], double scale, double out[3])
         out[k] = scale * color_srgb_to_linear(in[k]);
 }
 
+/* Whether a leaf's colour is OpenSCAD's default face colour, which a
+ * colour scheme replaces (the tree keeps no other mark of a colour that
+ * the file did not give; an explicit #f9d72c counts as none). */
+static int is_default_color(const float c[4])
+{
+    static const float def[4] = BUILD_DEFAULT_COLOR;
+    return c[0] == def[0] && c[1] == def[1] && c[2] == def[2];
+}
+
 sc_status shade_prepare(shade_scene *s, const csg_tree *tree, const shading *look,
-                        const camera *cam, int max_depth, sc_error *error)
+                        const camera *cam, const sc_render_options *o, sc_error *error)
 {
     memset(s, 0, sizeof *s);
     s->tree = tree;
-    s->max_depth = max_depth;
+    s->max_depth = o->max_depth;
     uint32_t materials = look ? look->material_count : 1;
     uint32_t lights = look && look->light_count ? look->light_count : 2;
     s->materials = calloc(materials, sizeof *s->materials);
     s->lights = calloc(lights, sizeof *s->lights);
     s->leaf_color = calloc((size_t)tree->leaf_count * 3 + 3, sizeof *s->leaf_color);
-    if (!s->materials || !s->lights || !s->leaf_color) {
+    s->leaf_back = calloc((size_t)tree->leaf_count * 3 + 3, sizeof *s->leaf_back);
+    if (!s->materials || !s->lights || !s->leaf_color || !s->leaf_back) {
         shade_release(s);
         return err_nomem(error, NULL);
     }
@@ -74,8 +93,21 @@ sc_status shade_prepare(shade_scene *s, const csg_tree *tree, const shading *loo
         out->checker = m.checker;
         linear3(m.color2, 1, out->color2);
     }
-    for (uint32_t i = 0; i < tree->leaf_count; i++)
-        linear3(tree->leaves[i].color, 1, &s->leaf_color[3 * i]);
+    /* Faces: the scheme's face colour where the file gives none (the
+     * preview's or the render's), and in the preview the scheme's
+     * face_back on subtracted faces, as OpenSCAD's preview draws them. */
+    const sc_color_scheme *scheme = &o->scheme;
+    for (uint32_t i = 0; i < tree->leaf_count; i++) {
+        const float *c = tree->leaves[i].color;
+        int plain = is_default_color(c);
+        const float *front = c, *back = c;
+        if (plain && o->use_scheme)
+            front = o->preview ? scheme->face_front : scheme->render_face;
+        if (plain && o->preview)
+            back = scheme->face_back;
+        linear3(front, 1, &s->leaf_color[3 * i]);
+        linear3(o->preview ? back : front, 1, &s->leaf_back[3 * i]);
+    }
     s->light_count = lights;
     if (look && look->light_count) {
         for (uint32_t i = 0; i < lights; i++) {
@@ -96,8 +128,41 @@ sc_status shade_prepare(shade_scene *s, const csg_tree *tree, const shading *loo
             s->lights[1].color[k] = fill_intensity;
         }
     }
-    linear3(look && look->has_background ? look->background : default_background, 1,
-            s->background);
+    s->preview = o->preview;
+    if (o->lighting == SC_LIGHTING_OPENSCAD)
+        s->lighting =
+            o->preview ? SHADE_LIGHTING_OPENSCAD_PREVIEW : SHADE_LIGHTING_OPENSCAD_RENDER;
+    s->openscad_light[0] = camera_to_world(cam, openscad_light0);
+    s->openscad_light[1] = camera_to_world(cam, openscad_light1);
+    if (o->use_scheme)
+        linear3(scheme->background, 1, s->background);
+    else
+        linear3(look && look->has_background ? look->background : default_background, 1,
+                s->background);
+
+    double diagonal = bbox_is_empty(&tree->bounds) || tree->root == CSG_EMPTY
+                          ? 1.0
+                          : v3_length(bbox_extent(&tree->bounds));
+    s->section_count = 0;
+    for (int k = 0; k < o->section_count && k < SC_MAX_SECTIONS; k++) {
+        const double *q = o->section[k];
+        double len = sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2]);
+        if (!(len > 0) || !isfinite(len) || !isfinite(q[3])) {
+            shade_release(s);
+            return err_set(error, SC_ERR_ARGUMENT, NULL,
+                           "section %d needs a finite, non-zero normal and a finite "
+                           "offset",
+                           k + 1);
+        }
+        s->sections[s->section_count].n = v3(q[0] / len, q[1] / len, q[2] / len);
+        s->sections[s->section_count].d = q[3] / len;
+        s->section_count++;
+    }
+    linear3(scheme->face_back, 1, s->cap_color);
+    s->hatch = o->section_style == SC_SECTION_HATCH;
+    s->hatch_spacing = diagonal / SHADE_HATCH_LINES;
+    s->ao_samples = o->ao_samples;
+    s->ao_radius = o->ao_radius * diagonal;
     return SC_OK;
 }
 
@@ -106,6 +171,7 @@ void shade_release(shade_scene *s)
     free(s->materials);
     free(s->lights);
     free(s->leaf_color);
+    free(s->leaf_back);
     memset(s, 0, sizeof *s);
 }
 
@@ -130,6 +196,95 @@ static void base_color(const shade_scene *s, const shade_material *m, uint32_t l
             c = m->color2;
     }
     memcpy(out, c, 3 * sizeof *out);
+}
+
+/* The ray's parameter interval inside every section half-space, within
+ * [tmin, tmax]; *plane is the section whose plane starts it (-1 when it
+ * starts at tmin). Returns 0 when it is empty. */
+static int section_interval(const shade_scene *s, const csg_ray *ray, double *ta,
+                            double *tb, int *plane)
+{
+    *ta = ray->tmin;
+    *tb = ray->tmax;
+    *plane = -1;
+    for (int k = 0; k < s->section_count; k++) {
+        const shade_section *c = &s->sections[k];
+        double nd = v3_dot(c->n, ray->d), no = v3_dot(c->n, ray->o);
+        if (nd == 0) {
+            if (no > c->d)
+                return 0;
+            continue;
+        }
+        double t = (c->d - no) / nd;
+        if (nd > 0) {
+            if (t < *tb)
+                *tb = t;
+        } else if (t > *ta) {
+            *ta = t;
+            *plane = k;
+        }
+    }
+    return *ta < *tb;
+}
+
+int shade_first_hit(const shade_scene *s, shade_thread *th, const csg_ray *ray,
+                    shade_hit *hit)
+{
+    memset(hit, 0, sizeof *hit);
+    if (s->section_count == 0)
+        return csg_first_hit_counted(s->tree, ray, th->scratch, th->csg, &hit->hit);
+    double ta, tb;
+    int plane;
+    if (!section_interval(s, ray, &ta, &tb, &plane))
+        return 0;
+    csg_ray clipped = *ray;
+    clipped.tmin = ta;
+    clipped.tmax = tb;
+    span_list spans;
+    if (!csg_spans_counted(s->tree, &clipped, th->scratch, th->csg, &spans))
+        return 0;
+    for (uint32_t k = 0; k < spans.n; k++) {
+        const span *sp = &spans.v[k];
+        if (!(sp->out.t > sp->in.t))
+            continue;
+        if (sp->in.leaf != SPAN_NO_LEAF) { /* an ordinary surface */
+            hit->hit.t = sp->in.t;
+            hit->hit.leaf = sp->in.leaf;
+            hit->hit.part = sp->in.part;
+            hit->hit.flip = sp->in.flip;
+            return 1;
+        }
+        if (plane >= 0) { /* inside the solid where a cut plane starts the ray */
+            hit->cap = 1;
+            hit->cap_normal = s->sections[plane].n;
+            hit->hit.t = ta;
+            hit->hit.leaf = sp->out.leaf != SPAN_NO_LEAF ? sp->out.leaf : 0;
+            return 1;
+        }
+        /* The ray starts inside: its first hit is where it leaves. */
+        if (sp->out.leaf == SPAN_NO_LEAF)
+            return 0;
+        hit->hit.t = sp->out.t;
+        hit->hit.leaf = sp->out.leaf;
+        hit->hit.part = sp->out.part;
+        hit->hit.flip = sp->out.flip;
+        hit->hit.exiting = 1;
+        return 1;
+    }
+    return 0;
+}
+
+int shade_any_hit(const shade_scene *s, shade_thread *th, const csg_ray *ray)
+{
+    if (s->section_count == 0)
+        return csg_any_hit_counted(s->tree, ray, th->scratch, th->csg);
+    shade_hit hit;
+    return shade_first_hit(s, th, ray, &hit);
+}
+
+vec3 shade_hit_normal(const shade_scene *s, const csg_ray *ray, const shade_hit *hit)
+{
+    return hit->cap ? hit->cap_normal : csg_hit_normal(s->tree, ray, &hit->hit);
 }
 
 /* Adds the direct light at p (facing normal n, towards-viewer v). */
@@ -166,7 +321,7 @@ static void direct_light(const shade_scene *s, shade_thread *th, const shade_mat
         if (!(nl > 0))
             continue;
         th->count.shadow_rays++;
-        if (csg_any_hit_counted(s->tree, &shadow, th->scratch, th->csg))
+        if (shade_any_hit(s, th, &shadow))
             continue;
         double highlight = 0;
         if (m->specular > 0) {
@@ -178,39 +333,104 @@ static void direct_light(const shade_scene *s, shade_thread *th, const shade_mat
     }
 }
 
-void shade_ray(const shade_scene *s, shade_thread *th, const csg_ray *ray,
-               const csg_hit *known, int depth, double weight, double out[3])
+/* OpenSCAD's lighting of base (linear) at facing normal n, computed on
+ * display values as its fixed-function pipeline and its preview shader do:
+ *   render:  c (0.2 + max(0, n.l0) + max(0, n.l1))
+ *   preview: c (0.2 + |n.l0|)
+ * clamped to 0..1, then decoded to linear light. */
+static void openscad_light(const shade_scene *s, const double base[3], vec3 n,
+                           double out[3])
 {
-    csg_hit found;
-    const csg_hit *hit = known;
+    double factor;
+    if (s->lighting == SHADE_LIGHTING_OPENSCAD_PREVIEW)
+        factor = OPENSCAD_AMBIENT + fabs(v3_dot(n, s->openscad_light[0]));
+    else
+        factor = OPENSCAD_AMBIENT + fmax(0.0, v3_dot(n, s->openscad_light[0])) +
+                 fmax(0.0, v3_dot(n, s->openscad_light[1]));
+    for (int k = 0; k < 3; k++)
+        out[k] = color_srgb_to_linear(fmin(1.0, color_linear_to_srgb(base[k]) * factor));
+}
+
+/* The fraction of ao_samples rays, cosine-distributed about n from origin,
+ * that leave without meeting the solid within ao_radius. */
+static double ambient_visibility(const shade_scene *s, shade_thread *th, vec3 n,
+                                 vec3 origin)
+{
+    vec3 a = fabs(n.x) < 0.6 ? v3(1, 0, 0) : v3(0, 1, 0);
+    vec3 e1 = v3_normalize(v3_cross(n, a)), e2 = v3_cross(n, e1);
+    int open = 0;
+    for (int k = 0; k < s->ao_samples; k++) {
+        double r = sqrt(sample_next(&th->rng));
+        double phi = 6.283185307179586 * sample_next(&th->rng);
+        double z = sqrt(fmax(0.0, 1 - r * r));
+        vec3 d = v3_madd(v3_madd(v3_scale(n, z), e1, r * cos(phi)), e2, r * sin(phi));
+        csg_ray ray = {origin, d, 0, s->ao_radius};
+        th->count.shadow_rays++;
+        open += !shade_any_hit(s, th, &ray);
+    }
+    return (double)open / s->ao_samples;
+}
+
+/* Whether p on a cap lies on a hatch line: lines at 45 degrees in the cut
+ * plane's own axes, SHADE_HATCH_LINES across the model. */
+static int on_hatch(const shade_scene *s, vec3 n, vec3 p)
+{
+    vec3 a = fabs(n.x) < 0.6 ? v3(1, 0, 0) : v3(0, 1, 0);
+    vec3 e1 = v3_normalize(v3_cross(n, a)), e2 = v3_cross(n, e1);
+    double u = (v3_dot(p, e1) + v3_dot(p, e2)) * 0.7071067811865476 / s->hatch_spacing;
+    return u - floor(u) < SHADE_HATCH_WIDTH;
+}
+
+void shade_ray(const shade_scene *s, shade_thread *th, const csg_ray *ray,
+               const shade_hit *known, int depth, double weight, double out[3])
+{
+    shade_hit found;
+    const shade_hit *hit = known;
     if (!hit) {
-        if (!csg_first_hit_counted(s->tree, ray, th->scratch, th->csg, &found)) {
+        if (!shade_first_hit(s, th, ray, &found)) {
             memcpy(out, s->background, 3 * sizeof *out);
             return;
         }
         hit = &found;
     }
-    const csg_leaf *leaf = &s->tree->leaves[hit->leaf];
+    const csg_leaf *leaf = &s->tree->leaves[hit->hit.leaf];
     const shade_material *m =
         &s->materials[leaf->material < s->material_count ? leaf->material : 0];
     double dlen = v3_length(ray->d);
     vec3 dir = v3_scale(ray->d, 1.0 / dlen); /* unit ray direction */
-    vec3 p = v3_madd(ray->o, ray->d, hit->t);
-    vec3 outward = csg_hit_normal(s->tree, ray, hit);
+    vec3 p = v3_madd(ray->o, ray->d, hit->hit.t);
+    vec3 outward = shade_hit_normal(s, ray, hit);
     int leaving = v3_dot(outward, dir) > 0; /* the ray goes from inside to outside */
     vec3 n = leaving ? v3_neg(outward) : outward; /* faces the incoming ray */
     vec3 v = v3_neg(dir);
-    double offset = offset_at(s, p, hit->t * dlen);
+    double offset = offset_at(s, p, hit->hit.t * dlen);
     vec3 above = v3_madd(p, n, offset); /* on the incoming ray's side */
     vec3 below = v3_madd(p, n, -offset);
 
     double base[3];
-    base_color(s, m, hit->leaf, v3_madd(p, outward, -1e-6 * m->checker), base);
-    for (int k = 0; k < 3; k++)
-        out[k] = m->ambient * base[k];
-    direct_light(s, th, m, base, p, n, v, above, out);
+    if (hit->cap) {
+        double dim = s->hatch && on_hatch(s, hit->cap_normal, p) ? 0.25 : 1.0;
+        for (int k = 0; k < 3; k++)
+            base[k] = dim * s->cap_color[k];
+    } else if (hit->hit.flip && s->preview) {
+        memcpy(base, &s->leaf_back[3 * hit->hit.leaf], sizeof base);
+    } else {
+        base_color(s, m, hit->hit.leaf, v3_madd(p, outward, -1e-6 * m->checker), base);
+    }
+    if (s->lighting != SHADE_LIGHTING_OWN) {
+        openscad_light(s, base, n, out);
+    } else {
+        for (int k = 0; k < 3; k++)
+            out[k] = m->ambient * base[k];
+        direct_light(s, th, m, base, p, n, v, above, out);
+    }
+    if (s->ao_samples > 0) {
+        double visible = ambient_visibility(s, th, n, above);
+        for (int k = 0; k < 3; k++)
+            out[k] *= visible;
+    }
 
-    if (depth >= s->max_depth)
+    if (depth >= s->max_depth || hit->cap)
         return;
     double kr = m->reflect, kt = m->transmit;
     vec3 refracted = v3(0, 0, 0);

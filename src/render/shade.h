@@ -45,9 +45,11 @@
 #include "render/camera.h"
 #include "render/sample.h"
 
-#define SHADE_CUTOFF 1e-3  /* rays carrying less of the pixel are not followed */
-#define SHADE_OFFSET 4.0   /* secondary ray origins, in units of the tolerance */
-#define SHADE_MAX_DEPTH 64 /* largest max_depth accepted */
+#define SHADE_CUTOFF 1e-3      /* rays carrying less of the pixel are not followed */
+#define SHADE_OFFSET 4.0       /* secondary ray origins, in units of the tolerance */
+#define SHADE_MAX_DEPTH 64     /* largest max_depth accepted */
+#define SHADE_HATCH_LINES 80   /* hatch lines across the model's diagonal */
+#define SHADE_HATCH_WIDTH 0.25 /* a hatch line's share of the spacing */
 
 typedef struct shade_light {
     int directional;
@@ -62,6 +64,19 @@ typedef struct shade_material {
     double color2[3]; /* linear */
 } shade_material;
 
+/* A section cut: the half-space n.p <= d keeps the solid (n unit). */
+typedef struct shade_section {
+    vec3 n;
+    double d;
+} shade_section;
+
+/* How a scene is lit (sc_lighting, split by preview). */
+typedef enum shade_lighting {
+    SHADE_LIGHTING_OWN,             /* light() nodes or the default rig, shadows */
+    SHADE_LIGHTING_OPENSCAD_RENDER, /* OpenSCAD's render: two fixed lights */
+    SHADE_LIGHTING_OPENSCAD_PREVIEW /* OpenSCAD's preview shader: one light */
+} shade_lighting;
+
 /* Everything shading needs, prepared once per render (shade_prepare) and
  * read-only while rendering. */
 typedef struct shade_scene {
@@ -69,11 +84,30 @@ typedef struct shade_scene {
     shade_material *materials;
     uint32_t material_count;
     double *leaf_color; /* 3 linear values per leaf */
+    double *leaf_back;  /* 3 linear values per leaf: its subtracted faces */
     shade_light *lights;
     uint32_t light_count;
     double background[3]; /* linear */
     int max_depth;
+    shade_lighting lighting;
+    int preview;            /* subtracted faces take leaf_back */
+    vec3 openscad_light[2]; /* unit directions towards OpenSCAD's lights */
+    shade_section sections[SC_MAX_SECTIONS];
+    int section_count;
+    double cap_color[3];  /* linear: section caps */
+    int hatch;            /* caps hatched */
+    double hatch_spacing; /* world units between hatch lines */
+    int ao_samples;       /* ambient occlusion rays per hit; 0: none */
+    double ao_radius;     /* their length, world units */
 } shade_scene;
+
+/* A camera ray's visible point: a surface hit, or a section cap where the
+ * ray meets a cut plane inside the solid. */
+typedef struct shade_hit {
+    csg_hit hit;     /* for a cap: t on the plane, the leaf of the span cut */
+    int cap;         /* 1: a section cap */
+    vec3 cap_normal; /* a cap's outward normal: the plane's n */
+} shade_hit;
 
 /* Per-thread counters. */
 typedef struct shade_counters {
@@ -89,15 +123,30 @@ typedef struct shade_thread {
 } shade_thread;
 
 /* Prepares s for tree under look (NULL: no lights, default materials) seen
- * by cam. Returns SC_OK, or SC_ERR_NOMEM with error filled. */
+ * by cam, as options ask (colour scheme, lighting, sections, occlusion,
+ * max_depth). Returns SC_OK, or SC_ERR_NOMEM with error filled. */
 sc_status shade_prepare(shade_scene *s, const csg_tree *tree, const shading *look,
-                        const camera *cam, int max_depth, sc_error *error);
+                        const camera *cam, const sc_render_options *options,
+                        sc_error *error);
 void shade_release(shade_scene *s);
+
+/* FIRST_HIT with the section cuts applied: 1 and *hit when the ray sees
+ * the solid within [tmin, tmax]. Without sections it is csg_first_hit;
+ * with them the ray's span list is clipped to the half-spaces, and a span
+ * that the clip starts is a cap. */
+int shade_first_hit(const shade_scene *s, shade_thread *th, const csg_ray *ray,
+                    shade_hit *hit);
+
+/* ANY_HIT with the section cuts applied. */
+int shade_any_hit(const shade_scene *s, shade_thread *th, const csg_ray *ray);
+
+/* The unit outward normal at a hit (a cap's plane normal). */
+vec3 shade_hit_normal(const shade_scene *s, const csg_ray *ray, const shade_hit *hit);
 
 /* The linear colour seen along ray (depth bounces so far, weight its share
  * of the pixel). hit is the ray's first hit when the caller has already
- * found it, NULL to query. Writes out[3]. */
+ * found it (shade_first_hit), NULL to query. Writes out[3]. */
 void shade_ray(const shade_scene *s, shade_thread *th, const csg_ray *ray,
-               const csg_hit *hit, int depth, double weight, double out[3]);
+               const shade_hit *hit, int depth, double weight, double out[3]);
 
 #endif
