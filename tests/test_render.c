@@ -445,6 +445,322 @@ static void test_defaults_and_errors(void **state)
     csg_tree_free(s.tree);
 }
 
+/* ---- preview renders ---- */
+
+static uint32_t add_cylinder_z(csg_builder *b, double x, double y, double r, double z0,
+                               double z1)
+{
+    prim p;
+    memset(&p, 0, sizeof p);
+    p.kind = PRIM_CYLINDER;
+    p.u.cylinder.z0 = z0;
+    p.u.cylinder.z1 = z1;
+    p.u.cylinder.r0 = p.u.cylinder.r1 = r;
+    affine to_world = translation(v3(x, y, 0));
+    sc_location loc = {"test", 3, 1};
+    return csg_builder_leaf(b, &p, &to_world, base_color, loc);
+}
+
+/* Options for the preview tests: an orthographic look from eye at centre,
+ * OpenSCAD's lighting (no shadows), edges pure red, caps pure green, a
+ * black background, so that a pixel's colour says what it shows. */
+static void preview_options(sc_render_options *o, vec3 eye, vec3 centre, int size)
+{
+    sc_render_options_init(o);
+    set_lookat(o, eye, centre);
+    o->projection = SC_PROJECTION_ORTHOGRAPHIC;
+    o->width = o->height = size;
+    o->lighting = SC_LIGHTING_OPENSCAD;
+    o->use_scheme = 1;
+    memset(o->scheme.background, 0, sizeof o->scheme.background);
+    const float red[3] = {1, 0, 0}, green[3] = {0, 1, 0};
+    memcpy(o->scheme.edge, red, sizeof red);
+    memcpy(o->scheme.face_back, green, sizeof green);
+}
+
+static int is_edge_pixel(const sc_framebuffer *fb, int i, int j)
+{
+    if (i < 0 || j < 0 || i >= fb->width || j >= fb->height)
+        return 0;
+    const float *c = &fb->color[3 * ((size_t)j * fb->width + i)];
+    return c[0] == 1.0f && c[1] == 0.0f && c[2] == 0.0f;
+}
+
+/* Pixel coordinates of p under the contract's orthographic camera. */
+static void contract_project(const contract_camera *k, vec3 p, double *px, double *py)
+{
+    vec3 v = v3_sub(p, k->e);
+    double dist = v3_length(v3_sub(k->c, k->e));
+    double x = v3_dot(v, k->r) / dist, y = v3_dot(v, k->u) / dist;
+    *px = (x / (k->a * k->w / k->h) + 1) * k->w / 2;
+    *py = (1 - y / k->a) * k->h / 2;
+}
+
+static double point_segment_distance(double px, double py, double x0, double y0,
+                                     double x1, double y1)
+{
+    double dx = x1 - x0, dy = y1 - y0;
+    double t = ((px - x0) * dx + (py - y0) * dy) / (dx * dx + dy * dy);
+    t = t < 0 ? 0 : t > 1 ? 1 : t;
+    return hypot(x0 + t * dx - px, y0 + t * dy - py);
+}
+
+/* A cube in general position shows 9 of its 12 edges: the 6 of its
+ * silhouette and the 3 that meet at the corner nearest the eye. With lines
+ * 2 pixels wide (neighbour rays 1 pixel away), the pixel holding any point
+ * of a visible edge is an edge pixel, and every edge pixel lies within 1.5
+ * pixels of a visible edge (a marked centre is within 1 pixel of the line
+ * along x or y); the 3 hidden edges, which project inside the visible
+ * faces, leave no pixels. */
+static void test_cube_edges(void **state)
+{
+    (void)state;
+    csg_builder *b = csg_builder_new();
+    csg_tree *tree = finish(b, add_box(b, v3(-5, -5, -5), v3(5, 5, 5)));
+    vec3 eye = v3(30, -40, 25), centre = v3(0, 0, 0);
+    int size = 240;
+    sc_render_options o;
+    preview_options(&o, eye, centre, size);
+    o.view = SC_VIEW_EDGES;
+    o.edge_width = 2;
+    sc_framebuffer *fb = render(tree, &o);
+    contract_camera k = contract(eye, centre, o.fov_deg, size, size, 1);
+
+    /* The 12 edges: coordinate `along` varies, the others are fixed at the
+     * signs given; an edge is visible when one of its faces is, and the
+     * faces x = +5, y = -5, z = +5 face the eye. */
+    double seg[12][4];
+    int visible[12], count = 0, shown = 0;
+    for (int along = 0; along < 3; along++)
+        for (int sa = -1; sa <= 1; sa += 2)
+            for (int sb = -1; sb <= 1; sb += 2) {
+                int a = (along + 1) % 3, bb = (along + 2) % 3;
+                double p0[3], p1[3];
+                p0[along] = -5, p1[along] = 5;
+                p0[a] = p1[a] = 5 * sa;
+                p0[bb] = p1[bb] = 5 * sb;
+                const double facing[3] = {5, -5, 5};
+                visible[count] = p0[a] == facing[a] || p0[bb] == facing[bb];
+                contract_project(&k, v3(p0[0], p0[1], p0[2]), &seg[count][0],
+                                 &seg[count][1]);
+                contract_project(&k, v3(p1[0], p1[1], p1[2]), &seg[count][2],
+                                 &seg[count][3]);
+                shown += visible[count];
+                count++;
+            }
+    assert_int_equal(shown, 9);
+    for (int e = 0; e < 12; e++) {
+        for (int step = 1; step < 20; step++) {
+            double t = step / 20.0;
+            double px = seg[e][0] + t * (seg[e][2] - seg[e][0]);
+            double py = seg[e][1] + t * (seg[e][3] - seg[e][1]);
+            int on = is_edge_pixel(fb, (int)floor(px), (int)floor(py));
+            if (visible[e] && !on)
+                fail_msg("visible edge %d: no line at (%.2f, %.2f)", e, px, py);
+            if (visible[e] || !on)
+                continue;
+            /* A hidden edge ends on the silhouette: near there the
+             * visible lines may cover it. */
+            double nearest = INFINITY;
+            for (int v = 0; v < 12; v++)
+                if (visible[v])
+                    nearest =
+                        fmin(nearest, point_segment_distance(px, py, seg[v][0], seg[v][1],
+                                                             seg[v][2], seg[v][3]));
+            if (nearest > 2)
+                fail_msg("hidden edge %d drawn at (%.2f, %.2f)", e, px, py);
+        }
+    }
+    int edge_pixels = 0;
+    for (int j = 0; j < size; j++)
+        for (int i = 0; i < size; i++) {
+            if (!is_edge_pixel(fb, i, j))
+                continue;
+            edge_pixels++;
+            double nearest = INFINITY;
+            for (int e = 0; e < 12; e++)
+                if (visible[e])
+                    nearest = fmin(nearest, point_segment_distance(i + 0.5, j + 0.5,
+                                                                   seg[e][0], seg[e][1],
+                                                                   seg[e][2], seg[e][3]));
+            if (nearest > 1.5)
+                fail_msg("edge pixel (%d, %d) is %.2f pixels from every edge", i, j,
+                         nearest);
+        }
+    assert_true(edge_pixels > 0);
+    sc_framebuffer_release(fb);
+    csg_tree_free(tree);
+}
+
+/* A hole drilled through a plate, seen orthographically from above at a
+ * slant: its upper rim, a circle, projects to an ellipse, and the line
+ * follows it all round; the plate's top between the rim and its own edges
+ * carries no line. */
+static void test_hole_edge_ellipse(void **state)
+{
+    (void)state;
+    csg_builder *b = csg_builder_new();
+    uint32_t kids[2] = {add_box(b, v3(-20, -20, 0), v3(20, 20, 10)),
+                        add_cylinder_z(b, 0, 0, 8, -1, 11)};
+    csg_tree *tree = finish(b, csg_builder_op(b, CSG_DIFFERENCE, kids, 2));
+    vec3 eye = v3(20, -50, 70), centre = v3(0, 0, 5);
+    int size = 300;
+    sc_render_options o;
+    preview_options(&o, eye, centre, size);
+    o.view = SC_VIEW_EDGES;
+    o.edge_width = 2;
+    sc_framebuffer *fb = render(tree, &o);
+    contract_camera k = contract(eye, centre, o.fov_deg, size, size, 1);
+    for (int step = 0; step < 90; step++) {
+        double phi = step * 2 * 3.14159265358979323846 / 90;
+        double px, py;
+        contract_project(&k, v3(8 * cos(phi), 8 * sin(phi), 10), &px, &py);
+        if (!is_edge_pixel(fb, (int)floor(px), (int)floor(py)))
+            fail_msg("no line on the rim's ellipse at %d degrees (%.2f, %.2f)", step * 4,
+                     px, py);
+        /* On the top face, 5 units outside the rim: no line. */
+        contract_project(&k, v3(13 * cos(phi), 13 * sin(phi), 10), &px, &py);
+        if (is_edge_pixel(fb, (int)floor(px), (int)floor(py)))
+            fail_msg("a line on the plain top face at (%.2f, %.2f)", px, py);
+    }
+    sc_framebuffer_release(fb);
+    csg_tree_free(tree);
+}
+
+/* Pixels showing a cap (pure green: red and blue 0) times the area of a
+ * pixel, against the analytic area of the cross-section. A pixel is
+ * misjudged only when the section's outline passes within half a diagonal
+ * of its centre, so the count can be off by at most the outline's length
+ * (in pixels) times sqrt(2) pixels. */
+static void check_cap_area(const csg_tree *tree, double keep_y, double keep_x,
+                           double area, double outline)
+{
+    vec3 eye = v3(0, 100, 0), centre = v3(0, 0, 0);
+    int size = 400;
+    sc_render_options o;
+    preview_options(&o, eye, centre, size);
+    o.section_count = 1;
+    o.section[0][0] = 0;
+    o.section[0][1] = 1;
+    o.section[0][2] = 0;
+    o.section[0][3] = keep_y;
+    if (isfinite(keep_x)) {
+        o.section_count = 2;
+        o.section[1][0] = 1;
+        o.section[1][3] = keep_x;
+    }
+    sc_framebuffer *fb = render(tree, &o);
+    double pixel = 2 * tan(22.5 / 2 * 3.14159265358979323846 / 180) * 100 / size;
+    int caps = 0;
+    for (size_t p = 0; p < (size_t)size * size; p++) {
+        const float *c = &fb->color[3 * p];
+        caps += c[0] == 0 && c[2] == 0 && c[1] > 0;
+    }
+    double measured = caps * pixel * pixel;
+    double bound = outline / pixel * sqrt(2) * pixel * pixel;
+    print_message("cap area %.3f, analytic %.3f, bound %.3f\n", measured, area, bound);
+    if (fabs(measured - area) > bound)
+        fail_msg("cap area %.3f, expected %.3f (bound %.3f)", measured, area, bound);
+    sc_framebuffer_release(fb);
+}
+
+/* A sphere cut through its centre shows a disc of its full radius; a box
+ * drilled along z, cut through the hole's axis, a rectangle less the
+ * hole's strip. */
+static void test_section_cap_area(void **state)
+{
+    (void)state;
+    sphere_scene s = make_sphere(v3(0, 0, 0), 10);
+    double pi = 3.14159265358979323846;
+    check_cap_area(s.tree, 0, INFINITY, pi * 100, 2 * pi * 10);
+    csg_tree_free(s.tree);
+
+    csg_builder *b = csg_builder_new();
+    uint32_t kids[2] = {add_box(b, v3(-20, -15, -10), v3(20, 15, 10)),
+                        add_cylinder_z(b, 0, 0, 5, -11, 11)};
+    csg_tree *tree = finish(b, csg_builder_op(b, CSG_DIFFERENCE, kids, 2));
+    check_cap_area(tree, 0, INFINITY, 40 * 20 - 10 * 20, 2 * (40 + 20) + 2 * 20);
+    /* Two cuts intersect: also x <= 10 leaves 30 x 20 less the strip. */
+    check_cap_area(tree, 0, 10, 30 * 20 - 10 * 20, 2 * (30 + 20) + 2 * 20);
+    csg_tree_free(tree);
+}
+
+/* Every preview feature at once, several samples a pixel: a crop of the
+ * image equals the same pixels of the whole, and the thread count changes
+ * nothing. */
+static void test_preview_crop_and_threads(void **state)
+{
+    (void)state;
+    csg_builder *b = csg_builder_new();
+    uint32_t kids[2] = {add_box(b, v3(-20, -20, 0), v3(20, 20, 10)),
+                        add_cylinder_z(b, 0, 0, 8, -1, 11)};
+    csg_tree *tree = finish(b, csg_builder_op(b, CSG_DIFFERENCE, kids, 2));
+    sc_render_options o;
+    sc_render_options_init(&o);
+    o.width = 70;
+    o.height = 53;
+    o.spp = 4;
+    o.view = SC_VIEW_EDGES | SC_VIEW_AXES | SC_VIEW_SCALES | SC_VIEW_CROSSHAIRS;
+    o.section_count = 1;
+    o.section[0][0] = 1;
+    o.section[0][3] = 5;
+    o.section_style = SC_SECTION_HATCH;
+    o.ao_samples = 4;
+    o.want_depth = o.want_mask = o.want_normal = 1;
+    o.threads = 1;
+    sc_framebuffer *whole = render(tree, &o);
+    o.threads = 3;
+    sc_framebuffer *threaded = render(tree, &o);
+    assert_true(buffers_equal(whole, threaded));
+    o.region[0] = 13;
+    o.region[1] = 7;
+    o.region[2] = 51;
+    o.region[3] = 40;
+    sc_framebuffer *crop = render(tree, &o);
+    assert_int_equal(crop->width, 38);
+    assert_int_equal(crop->height, 33);
+    for (int j = 0; j < crop->height; j++)
+        for (int i = 0; i < crop->width; i++) {
+            size_t a = (size_t)j * crop->width + i;
+            size_t w = (size_t)(j + 7) * whole->width + (i + 13);
+            assert_memory_equal(&crop->color[3 * a], &whole->color[3 * w],
+                                3 * sizeof(float));
+            assert_int_equal(crop->mask[a], whole->mask[w]);
+        }
+    sc_framebuffer_release(whole);
+    sc_framebuffer_release(threaded);
+    sc_framebuffer_release(crop);
+    csg_tree_free(tree);
+}
+
+/* A sheet of three views is a 2 x 2 grid of tiles of the options' size;
+ * each view's tile shows the model, the empty fourth cell none of it. */
+static void test_sheet_grid(void **state)
+{
+    (void)state;
+    sphere_scene s = make_sphere(v3(3, 1, 2), 4);
+    sc_render_options o;
+    sc_render_options_init(&o);
+    o.width = 40;
+    o.height = 30;
+    o.want_mask = 1;
+    o.sheet_count = 3;
+    o.sheet[0] = SC_VIEW_PRESET_FRONT;
+    o.sheet[1] = SC_VIEW_PRESET_TOP;
+    o.sheet[2] = SC_VIEW_PRESET_DIAGONAL;
+    sc_framebuffer *fb = render(s.tree, &o);
+    assert_int_equal(fb->width, 80);
+    assert_int_equal(fb->height, 60);
+    for (int tile = 0; tile < 4; tile++) {
+        int x0 = (tile % 2) * 40, y0 = (tile / 2) * 30;
+        /* framed like viewall: the model is at the tile's centre */
+        int centre = fb->mask[(size_t)(y0 + 15) * fb->width + x0 + 20];
+        assert_int_equal(centre, tile < 3 ? 255 : 0);
+    }
+    sc_framebuffer_release(fb);
+    csg_tree_free(s.tree);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -455,6 +771,11 @@ int main(void)
         cmocka_unit_test(test_auto_camera_frames_model),
         cmocka_unit_test(test_empty_scene),
         cmocka_unit_test(test_defaults_and_errors),
+        cmocka_unit_test(test_cube_edges),
+        cmocka_unit_test(test_hole_edge_ellipse),
+        cmocka_unit_test(test_section_cap_area),
+        cmocka_unit_test(test_preview_crop_and_threads),
+        cmocka_unit_test(test_sheet_grid),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
