@@ -475,7 +475,7 @@ static void preview_options(sc_render_options *o, vec3 eye, vec3 centre, int siz
     memset(o->scheme.background, 0, sizeof o->scheme.background);
     const float red[3] = {1, 0, 0}, green[3] = {0, 1, 0};
     memcpy(o->scheme.edge, red, sizeof red);
-    memcpy(o->scheme.face_back, green, sizeof green);
+    memcpy(o->scheme.render_face_back, green, sizeof green);
 }
 
 static int is_edge_pixel(const sc_framebuffer *fb, int i, int j)

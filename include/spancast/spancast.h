@@ -132,14 +132,14 @@ typedef enum sc_projection {
 
 typedef struct sc_color_scheme {
     char name[SC_COLOR_SCHEME_NAME_MAX];
-    float background[3];  /* "background" */
-    float axes[3];        /* "axes-color": axes and scale marks */
-    float face_front[3];  /* "opencsg-face-front": faces in the preview */
-    float face_back[3];   /* "opencsg-face-back": subtracted faces in the preview,
-                             and the caps of section cuts */
-    float render_face[3]; /* "cgal-face-front": faces in the render */
-    float edge[3];        /* "cgal-edge-front": edge lines */
-    float crosshair[3];   /* "crosshair" */
+    float background[3];       /* "background" */
+    float axes[3];             /* "axes-color": axes and scale marks */
+    float face_front[3];       /* "opencsg-face-front": faces in the preview */
+    float face_back[3];        /* "opencsg-face-back": subtracted faces in the preview */
+    float render_face[3];      /* "cgal-face-front": faces in the render */
+    float render_face_back[3]; /* "cgal-face-back": subtracted faces in the render */
+    float edge[3];             /* "cgal-edge-front": edge lines */
+    float crosshair[3];        /* "crosshair" */
 } sc_color_scheme;
 
 /* The folder OpenSCAD's Debian package installs its render colour schemes

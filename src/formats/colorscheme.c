@@ -50,6 +50,7 @@ void sc_color_scheme_default(sc_color_scheme *s)
     set_rgb(s->face_front, 0xf9d72c);
     set_rgb(s->face_back, 0x9dcb51);
     set_rgb(s->render_face, 0xf9d72c);
+    set_rgb(s->render_face_back, 0x9dcb51);
     set_rgb(s->edge, 0xffec5e);
     set_rgb(s->crosshair, 0x800000);
 }
@@ -117,6 +118,7 @@ static int read_scheme(const char *path, scheme_entry *out)
             set_rgb(s->face_front, (unsigned)rgb[2]);
             set_rgb(s->face_back, (unsigned)rgb[3]);
             set_rgb(s->render_face, (unsigned)rgb[4]);
+            set_rgb(s->render_face_back, (unsigned)rgb[6]);
             set_rgb(s->edge, (unsigned)rgb[7]);
             set_rgb(s->crosshair, (unsigned)rgb[10]);
         }

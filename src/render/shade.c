@@ -93,20 +93,20 @@ sc_status shade_prepare(shade_scene *s, const csg_tree *tree, const shading *loo
         out->checker = m.checker;
         linear3(m.color2, 1, out->color2);
     }
-    /* Faces: the scheme's face colour where the file gives none (the
-     * preview's or the render's), and in the preview the scheme's
-     * face_back on subtracted faces, as OpenSCAD's preview draws them. */
+    /* Faces: with a scheme chosen, or in the preview, the scheme's face
+     * colours where the file gives none: the front colour, and the back
+     * colour on subtracted faces (the walls of a drilled hole), as
+     * OpenSCAD draws them in its preview (opencsg-*) and its render
+     * (cgal-*). */
     const sc_color_scheme *scheme = &o->scheme;
+    const float *scheme_front = o->preview ? scheme->face_front : scheme->render_face;
+    const float *scheme_back = o->preview ? scheme->face_back : scheme->render_face_back;
+    s->scheme_faces = o->use_scheme || o->preview;
     for (uint32_t i = 0; i < tree->leaf_count; i++) {
         const float *c = tree->leaves[i].color;
-        int plain = is_default_color(c);
-        const float *front = c, *back = c;
-        if (plain && o->use_scheme)
-            front = o->preview ? scheme->face_front : scheme->render_face;
-        if (plain && o->preview)
-            back = scheme->face_back;
-        linear3(front, 1, &s->leaf_color[3 * i]);
-        linear3(o->preview ? back : front, 1, &s->leaf_back[3 * i]);
+        int plain = s->scheme_faces && is_default_color(c);
+        linear3(plain ? scheme_front : c, 1, &s->leaf_color[3 * i]);
+        linear3(plain ? scheme_back : c, 1, &s->leaf_back[3 * i]);
     }
     s->light_count = lights;
     if (look && look->light_count) {
@@ -128,7 +128,6 @@ sc_status shade_prepare(shade_scene *s, const csg_tree *tree, const shading *loo
             s->lights[1].color[k] = fill_intensity;
         }
     }
-    s->preview = o->preview;
     if (o->lighting == SC_LIGHTING_OPENSCAD)
         s->lighting =
             o->preview ? SHADE_LIGHTING_OPENSCAD_PREVIEW : SHADE_LIGHTING_OPENSCAD_RENDER;
@@ -158,7 +157,7 @@ sc_status shade_prepare(shade_scene *s, const csg_tree *tree, const shading *loo
         s->sections[s->section_count].d = q[3] / len;
         s->section_count++;
     }
-    linear3(scheme->face_back, 1, s->cap_color);
+    linear3(scheme_back, 1, s->cap_color);
     s->hatch = o->section_style == SC_SECTION_HATCH;
     s->hatch_spacing = diagonal / SHADE_HATCH_LINES;
     s->ao_samples = o->ao_samples;
@@ -412,7 +411,7 @@ void shade_ray(const shade_scene *s, shade_thread *th, const csg_ray *ray,
         double dim = s->hatch && on_hatch(s, hit->cap_normal, p) ? 0.25 : 1.0;
         for (int k = 0; k < 3; k++)
             base[k] = dim * s->cap_color[k];
-    } else if (hit->hit.flip && s->preview) {
+    } else if (hit->hit.flip && s->scheme_faces) {
         memcpy(base, &s->leaf_back[3 * hit->hit.leaf], sizeof base);
     } else {
         base_color(s, m, hit->hit.leaf, v3_madd(p, outward, -1e-6 * m->checker), base);

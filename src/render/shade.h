@@ -90,7 +90,7 @@ typedef struct shade_scene {
     double background[3]; /* linear */
     int max_depth;
     shade_lighting lighting;
-    int preview;            /* subtracted faces take leaf_back */
+    int scheme_faces;       /* subtracted faces take leaf_back */
     vec3 openscad_light[2]; /* unit directions towards OpenSCAD's lights */
     shade_section sections[SC_MAX_SECTIONS];
     int section_count;

@@ -1,0 +1,152 @@
+# Preview renders end to end: colour schemes, lighting, view presets,
+# sheets, sections and edges through the command line, every output
+# format, crops; then, against OpenSCAD 2021.01 itself, every colour
+# scheme: the background pixel must equal OpenSCAD's PNG export exactly,
+# and a drilled box rendered with OpenSCAD's polygons (--faithful) and its
+# lighting (--lighting=openscad) must equal its preview (F5) and render
+# (F6) exports except for a few pixels along edges (rasterisation rules),
+# within one 8-bit step (rounding). The OpenSCAD part is skipped (exit 77)
+# when openscad 2021.01 or xvfb-run is missing or OpenSCAD cannot render
+# offscreen.
+#
+# Run as: bash cli_preview.sh <path-to-spancast> <source-dir> <work-dir>
+. "$(dirname "$0")/testlib.sh"
+
+require_tools oiiotool idiff iinfo
+
+cat >drilled.csg <<'EOF'
+difference() {
+    cube(size = [20, 14, 10], center = true);
+    cylinder($fn = 0, $fa = 12, $fs = 2, h = 12, r1 = 3, r2 = 3, center = true);
+}
+EOF
+
+# pixel FILE X Y: the pixel's values as oiiotool prints them.
+pixel() {
+    oiiotool "$1" --cut "1x1+$2+$3" --printstats | grep 'Stats Min' | sed 's/.*Min: //'
+}
+
+# ---- command-line errors ----
+check
+out=$("$bin" render drilled.csg -o x.png --colorscheme=Nope 2>&1)
+[ $? = 2 ] || fail "unknown scheme: exit status not 2"
+echo "$out" | grep -q "^spancast: error: --colorscheme: unknown colour scheme 'Nope' (known: 'Cornfield', " ||
+    fail "unknown scheme: message was: $out"
+echo "$out" | grep -q "'Tomorrow Night'" || fail "unknown scheme: names not listed: $out"
+[ -e x.png ] && fail "unknown scheme: wrote an image"
+
+check
+out=$("$bin" render drilled.csg -o x.png --view=edges,bogus 2>&1)
+[ "$out" = "spancast: error: --view: unknown name 'bogus' (expected edges, axes, scales, crosshairs)" ] ||
+    fail "--view: message was: $out"
+check
+out=$("$bin" render drilled.csg -o x.png --section=0,0,0,1 2>&1)
+echo "$out" | grep -q "^spancast: error: --section expects NX,NY,NZ,D with a non-zero normal" ||
+    fail "--section: message was: $out"
+check
+out=$("$bin" render drilled.csg -o x.png --sheet=top,front --camera=1,2,3,0,0,0 2>&1)
+[ "$out" = "spancast: error: --camera does not combine with --sheet" ] ||
+    fail "--sheet with --camera: message was: $out"
+check
+out=$("$bin" render drilled.csg -o x.png --view-preset=up 2>&1)
+echo "$out" | grep -q "^spancast: error: --view-preset: unknown name 'up' (expected top, bottom" ||
+    fail "--view-preset: message was: $out"
+
+# ---- the command line wins over the file's background() ----
+check
+cat >painted.csg <<'EOF'
+background(color = [0, 0, 1]);
+cube(size = [20, 14, 10], center = true);
+EOF
+"$bin" render painted.csg -o painted.png -q --imgsize=40,30 --colorscheme=Metallic ||
+    fail "painted.csg did not render"
+[ "$(pixel painted.png 0 0)" = "0.666667 0.666667 1.000000 (float)" ] ||
+    fail "--colorscheme over background(): $(pixel painted.png 0 0)"
+
+# ---- a preset is OpenSCAD's rotation framed like --viewall --autocenter ----
+check
+"$bin" render drilled.csg -o top.png -q --imgsize=80,60 --view-preset=top --view=edges &&
+    "$bin" render drilled.csg -o top_camera.png -q --imgsize=80,60 \
+        --camera=0,0,0,0,0,0,140 --viewall --autocenter --view=edges ||
+    fail "preset renders failed"
+idiff -fail 0 top.png top_camera.png >/dev/null || fail "--view-preset=top is not its camera"
+
+# ---- every feature, every format, and a crop equals the whole ----
+features=(--view=edges,axes,scales,crosshairs --section=1,1,0,3 --section-style=hatch
+    --ao=4 --spp=4 --colorscheme=Sunset --sheet=front,top,right,diagonal --imgsize=64,48)
+for ext in png exr tif; do
+    check
+    "$bin" render drilled.csg -o "whole.$ext" -q "${features[@]}" --mask=mask.png \
+        --depth=depth.exr --normal=normal.exr --id=id.exr || fail "$ext: render failed"
+    size=$(iinfo "whole.$ext" | grep -Eo '[0-9]+ x +[0-9]+' | tr -d ' ')
+    [ "$size" = 128x96 ] || fail "$ext: a sheet of 4 tiles of 64x48 is $size"
+done
+check
+"$bin" render drilled.csg -o crop.exr -q "${features[@]}" --region=37,20,101,75 \
+    --mask=crop_mask.png || fail "crop render failed"
+oiiotool whole.exr --cut 64x55+37+20 -o whole_cut.exr
+oiiotool mask.png --cut 64x55+37+20 -o mask_cut.png
+idiff -fail 0 crop.exr whole_cut.exr >/dev/null || fail "the crop's colour is not the whole's"
+idiff -fail 0 crop_mask.png mask_cut.png >/dev/null || fail "the crop's mask is not the whole's"
+check
+"$bin" render drilled.csg -o one_thread.exr -q "${features[@]}" --threads=1 ||
+    fail "one-thread render failed"
+idiff -fail 0 one_thread.exr whole.exr >/dev/null || fail "one thread changes the image"
+
+# ---- against OpenSCAD ----
+require_tools openscad xvfb-run
+openscad --version 2>&1 | grep -q '2021\.01' ||
+    skip "the colours checked are OpenSCAD 2021.01's, not $(openscad --version 2>&1)"
+cat >drilled.scad <<'EOF'
+difference() { cube([20, 14, 10], center = true); cylinder(r = 3, h = 12, center = true); }
+EOF
+openscad_png() {
+    timeout 300 xvfb-run -a -s "-screen 0 1024x768x24" openscad "$@" >/dev/null 2>&1
+}
+openscad -o "$work/drilled_os.csg" drilled.scad >/dev/null 2>&1 || {
+    echo "FAIL: openscad could not export drilled_os.csg"
+    exit 1
+}
+openscad_png -o probe.png --imgsize=32,24 drilled.scad
+[ -s probe.png ] || skip "openscad cannot render offscreen"
+
+limit=5 # pixels of 160 x 120 that may differ along edges (1 seen)
+# The scheme names, as spancast lists them.
+names=$("$bin" render drilled.csg -o x.png --colorscheme=? 2>&1 | sed "s/.*(known: //; s/)$//")
+count=0
+while IFS= read -r name; do
+    [ -n "$name" ] || continue
+    count=$((count + 1))
+    tag=$(echo "$name" | tr ' ' '_')
+    for mode in preview render; do
+        check
+        if [ $mode = preview ]; then
+            openscad_png -o "os_$tag.png" --imgsize=160,120 --colorscheme="$name" drilled.scad
+            extra=(--preview)
+        else
+            openscad_png --render -o "os_$tag.png" --imgsize=160,120 --colorscheme="$name" \
+                drilled.scad
+            extra=()
+        fi
+        [ -s "os_$tag.png" ] || {
+            fail "$name $mode: openscad wrote no image"
+            continue
+        }
+        "$bin" render drilled_os.csg -o "sc_$tag.png" -q --imgsize=160,120 --faithful \
+            --colorscheme="$name" --lighting=openscad "${extra[@]}" || {
+            fail "$name $mode: spancast failed"
+            continue
+        }
+        [ "$(pixel "os_$tag.png" 0 0)" = "$(pixel "sc_$tag.png" 0 0)" ] ||
+            fail "$name: background $(pixel "sc_$tag.png" 0 0), OpenSCAD's $(pixel "os_$tag.png" 0 0)"
+        report=$(idiff -fail 0.004 "os_$tag.png" "sc_$tag.png" 2>&1)
+        differ=$(echo "$report" | grep -Eo '[0-9]+ pixels .* over 0\.004' | grep -Eo '^[0-9]+')
+        differ=${differ:-0}
+        [ "$differ" -le "$limit" ] ||
+            fail "$name $mode: $differ pixels differ from OpenSCAD's by more than 1/255"
+    done
+done < <(echo "$names" | sed "s/', '/\n/g; s/^'//; s/'$//")
+[ "$count" -ge 11 ] || fail "only $count colour schemes found (OpenSCAD ships 11)"
+
+echo "$checks checks, $fails failures"
+[ "$fails" = 0 ]
