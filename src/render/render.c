@@ -121,11 +121,15 @@ static double pixel_size(const camera *cam, double z)
     return 2 * cam->a * half / cam->height;
 }
 
+/* Normals closer than this (1 - cosine) are one plane's, up to rounding. */
+#define EDGE_COPLANAR 1e-9
+
 /* Whether an edge lies between what two neighbouring rays see: one hits
  * and the other misses; a cap meets a surface; the leaf changes (a seam
  * where boolean operands meet); the normals turn by more than the crease
- * angle; or b's hit is off a's tangent plane by more than two pixels' size
- * at a's depth (a step in depth: a silhouette over something behind). */
+ * angle; the surface of the leaf changes to one in another plane; or b's
+ * hit is off a's tangent plane by more than two pixels' size at a's depth
+ * (a step in depth: a silhouette over something behind). */
 static int edge_between(const render_ctx *c, const render_view *v, const view_ray *a,
                         const view_ray *b)
 {
@@ -135,11 +139,18 @@ static int edge_between(const render_ctx *c, const render_view *v, const view_ra
         return 0;
     if (a->hit.cap != b->hit.cap)
         return 1;
-    if (!a->hit.cap && a->hit.hit.leaf != b->hit.hit.leaf)
-        return 1;
     vec3 na = shade_hit_normal(&v->shade, &a->ray, &a->hit);
     vec3 nb = shade_hit_normal(&v->shade, &b->ray, &b->hit);
-    if (v3_dot(na, nb) < c->edge_cos)
+    double turn = v3_dot(na, nb);
+    if (turn < c->edge_cos)
+        return 1;
+    /* Another leaf (a seam where boolean operands meet) or another surface
+     * of the leaf (a mesh's facet, a polyhedron's face): an edge unless the
+     * two lie in one plane, so that coplanar faces of a union and the
+     * diagonals splitting a planar face draw no line, but OpenSCAD's
+     * facets do. (Parallel planes apart are a step in depth, below.) */
+    int other = a->hit.hit.leaf != b->hit.hit.leaf || a->hit.hit.part != b->hit.hit.part;
+    if (!a->hit.cap && other && turn < 1 - EDGE_COPLANAR)
         return 1;
     vec3 pa = v3_madd(a->ray.o, a->ray.d, a->hit.hit.t);
     double denom = v3_dot(na, b->ray.d), blen = v3_length(b->ray.d);
@@ -151,12 +162,17 @@ static int edge_between(const render_ctx *c, const render_view *v, const view_ra
 }
 
 /* Whether the sample's point lies on an edge line: an edge between its own
- * ray and one of the four rays half the line's width away. */
+ * ray and one of the eight rays half the line's width away (along the
+ * axes and the diagonals, so that a line at any angle is crossed by an
+ * offset within 22.5 degrees of its normal: the line is drawn at least
+ * cos(22.5) = 0.92 of its width wide, never dropped). */
 static int on_edge(const render_ctx *c, const render_view *v, shade_thread *st, int i,
                    int j, double sx, double sy, const view_ray *centre)
 {
-    static const double dirs[4][2] = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}};
-    for (int k = 0; k < 4; k++) {
+    const double h = 0.7071067811865476;
+    const double dirs[8][2] = {{1, 0}, {-1, 0},  {0, 1},  {0, -1},
+                               {h, h}, {-h, -h}, {h, -h}, {-h, h}};
+    for (int k = 0; k < 8; k++) {
         view_ray nb;
         trace_view_ray(v, st, i, j, sx + c->edge_half * dirs[k][0],
                        sy + c->edge_half * dirs[k][1], &nb);
