@@ -761,6 +761,53 @@ static void test_sheet_grid(void **state)
     csg_tree_free(s.tree);
 }
 
+static int pixel_is(const sc_framebuffer *fb, int i, int j, const float c[3])
+{
+    if (i < 0 || j < 0 || i >= fb->width || j >= fb->height)
+        return 0;
+    const float *p = &fb->color[3 * ((size_t)j * fb->width + i)];
+    return p[0] == c[0] && p[1] == c[1] && p[2] == c[2];
+}
+
+/* OpenSCAD's axes are drawn where they are in front of the model and
+ * hidden where they pass inside it: the +x axis through a cube at the
+ * origin shows beyond the cube's silhouette and not within it. */
+static void test_axes_occluded(void **state)
+{
+    (void)state;
+    csg_builder *b = csg_builder_new();
+    csg_tree *tree = finish(b, add_box(b, v3(-5, -5, -5), v3(5, 5, 5)));
+    vec3 eye = v3(30, -40, 25), centre = v3(0, 0, 0);
+    int size = 240;
+    sc_render_options o;
+    preview_options(&o, eye, centre, size);
+    const float magenta[3] = {1, 0, 1};
+    memcpy(o.scheme.axes, magenta, sizeof magenta);
+    o.view = SC_VIEW_AXES;
+    o.fov_deg = 40; /* the image is 41 units high: x = 20 projects inside */
+    sc_framebuffer *fb = render(tree, &o);
+    contract_camera k = contract(eye, centre, o.fov_deg, size, size, 1);
+    for (double x = -4; x <= 20; x += 0.5) {
+        if (x > -2 && x < 2) /* where the other axes cross */
+            continue;
+        double px, py;
+        contract_project(&k, v3(x, 0, 0), &px, &py);
+        int i = (int)floor(px), j = (int)floor(py), seen = 0;
+        for (int dj = -1; dj <= 1; dj++)
+            for (int di = -1; di <= 1; di++)
+                seen += pixel_is(fb, i + di, j + dj, magenta);
+        int outside = x > 9; /* beyond the cube's silhouette (radius 8.7 at most) */
+        if (x > 4 && x <= 9)
+            continue; /* between the cube's face and its silhouette: either */
+        if (outside && !seen)
+            fail_msg("the axis at x = %g is not drawn", x);
+        if (!outside && seen)
+            fail_msg("the axis at x = %g, inside the cube, is drawn", x);
+    }
+    sc_framebuffer_release(fb);
+    csg_tree_free(tree);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -776,6 +823,7 @@ int main(void)
         cmocka_unit_test(test_section_cap_area),
         cmocka_unit_test(test_preview_crop_and_threads),
         cmocka_unit_test(test_sheet_grid),
+        cmocka_unit_test(test_axes_occluded),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -353,6 +353,110 @@ static void test_soft_shadows(void **state)
     assert_true(soft >= 8);
 }
 
+/* ---- OpenSCAD's lighting and ambient occlusion ---- */
+
+/* Renders text from eye at centre (orthographic, 120 x 90) with options
+ * set by the caller's flags; every buffer but id. */
+static sc_framebuffer *render_look(const char *text, const double eye_centre[6],
+                                   int preview, int ao)
+{
+    sc_scene *scene = NULL;
+    sc_error e;
+    if (sc_scene_load_string("t.csg", text, strlen(text), NULL, &scene, &e) != SC_OK)
+        fail_msg("%s:%d:%d: %s", e.file, e.line, e.column, e.message);
+    sc_render_options o;
+    sc_render_options_init(&o);
+    o.camera_mode = SC_CAMERA_VECTOR;
+    memcpy(o.camera, eye_centre, 6 * sizeof *eye_centre);
+    o.projection = SC_PROJECTION_ORTHOGRAPHIC;
+    o.width = 120;
+    o.height = 90;
+    o.want_mask = o.want_normal = 1;
+    o.lighting = SC_LIGHTING_OPENSCAD;
+    o.preview = preview;
+    o.ao_samples = ao;
+    o.threads = 2;
+    sc_framebuffer *fb = NULL;
+    if (sc_render(scene, &o, &fb, &e) != SC_OK)
+        fail_msg("%s", e.message);
+    sc_scene_release(scene);
+    return fb;
+}
+
+/* OpenSCAD lights with two lights fixed to the camera, towards (-1, 1, 1)
+ * and (1, -1, -1) in eye coordinates (x right, y up, z towards the
+ * viewer), diffuse 1 on top of an ambient 0.2, on display values; its
+ * preview shader with the first light alone, two-sided. Every pixel of a
+ * box seen from a corner, against those formulas with the normals the
+ * render reports. */
+static void test_openscad_lighting(void **state)
+{
+    (void)state;
+    const char *text =
+        "color([0.6, 0.3, 0.9, 1]) { cube(size = [10, 8, 6], center = true); }\n";
+    const double view[6] = {40, -30, 25, 0, 0, 0};
+    const double base[3] = {0.6, 0.3, 0.9};
+    vec3 e = v3(view[0], view[1], view[2]);
+    vec3 f = v3_normalize(v3_neg(e));
+    vec3 r = v3_normalize(v3_cross(f, v3(0, 0, 1))), u = v3_cross(r, f);
+    /* towards the lights, in world coordinates */
+    vec3 l0 = v3_normalize(v3_add(v3_add(v3_neg(r), u), v3_neg(f)));
+    vec3 l1 = v3_neg(l0);
+    for (int preview = 0; preview <= 1; preview++) {
+        sc_framebuffer *fb = render_look(text, view, preview, 0);
+        int hits = 0;
+        for (int p = 0; p < fb->width * fb->height; p++) {
+            if (!fb->mask[p])
+                continue;
+            hits++;
+            vec3 n = v3(fb->normal[3 * p], fb->normal[3 * p + 1], fb->normal[3 * p + 2]);
+            double factor = preview
+                                ? 0.2 + fabs(v3_dot(n, l0))
+                                : 0.2 + fmax(0, v3_dot(n, l0)) + fmax(0, v3_dot(n, l1));
+            for (int k = 0; k < 3; k++) {
+                double want = color_srgb_to_linear(fmin(1.0, base[k] * factor));
+                if (!close_to(fb->color[3 * p + k], want))
+                    fail_msg("preview %d pixel %d channel %d: %g, expected %g", preview,
+                             p, k, fb->color[3 * p + k], want);
+            }
+        }
+        assert_true(hits > 1000);
+        sc_framebuffer_release(fb);
+    }
+}
+
+/* Ambient occlusion darkens the floor beside a wall and leaves open floor,
+ * whose rays all escape, exactly as it is without it. */
+static void test_ambient_occlusion(void **state)
+{
+    (void)state;
+    const char *text =
+        "cube(size = [40, 40, 1]);\n"
+        "multmatrix([[1, 0, 0, 18], [0, 1, 0, 18], [0, 0, 1, 1], [0, 0, 0, 1]]) {\n"
+        "    cube(size = [4, 4, 10]);\n"
+        "}\n";
+    const double view[6] = {20, 20, 60, 20, 20, 0}; /* straight down */
+    sc_framebuffer *plain = render_look(text, view, 0, 0);
+    sc_framebuffer *ao = render_look(text, view, 0, 64);
+    /* The image spans 2 tan(11.25 deg) 60 = 23.9 units over 90 rows, 0.265
+     * a pixel, centred on (20, 20). */
+    double pixel = 2 * tan(22.5 / 2 * PI / 180) * 60 / 90;
+    int open_row = 45, open_col = (int)(60 + 10 / pixel); /* x = 30: 8 from the wall */
+    int corner_col = (int)(60 + 2.3 / pixel);             /* x = 22.3: beside it */
+    size_t open = (size_t)open_row * 120 + open_col,
+           corner = (size_t)45 * 120 + corner_col;
+    assert_int_equal(plain->mask[open], 255);
+    assert_int_equal(plain->mask[corner], 255);
+    assert_true(fabs(plain->normal[3 * corner + 2] - 1) <
+                1e-12); /* floor, not the wall */
+    for (int k = 0; k < 3; k++) {
+        assert_true(ao->color[3 * open + k] == plain->color[3 * open + k]);
+        assert_true(ao->color[3 * corner + k] < 0.9 * plain->color[3 * corner + k]);
+    }
+    sc_framebuffer_release(plain);
+    sc_framebuffer_release(ao);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -363,6 +467,8 @@ int main(void)
         cmocka_unit_test(test_total_internal_reflection),
         cmocka_unit_test(test_depth_and_cutoff),
         cmocka_unit_test(test_soft_shadows),
+        cmocka_unit_test(test_openscad_lighting),
+        cmocka_unit_test(test_ambient_occlusion),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
