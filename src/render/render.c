@@ -15,6 +15,17 @@
  * come from the ray through the pixel's centre alone, so they are exact
  * and the same at any sample count. Progress is reported from the thread
  * that started the render, after each tile it finishes.
+ *
+ * Preview drawing is decided per sample too. Edge lines: the sample casts
+ * eight more rays, half the line's width away along the axes and the
+ * diagonals, and is on a line when what one of them sees differs from what
+ * its own ray sees (edge_between); nothing is read from a neighbouring
+ * pixel or tile, so a crop or another tiling gives the same pixels, and
+ * the samples antialias the lines. Overlay lines (overlay.h) are tested at
+ * the sample's point against the depth its ray sees. A contact sheet is
+ * one image whose pixels belong to tiles, each a view with its own camera,
+ * shading and overlay; a pixel finds its view by its position in the full
+ * image, so --region crops a sheet like any image.
  */
 #include "render/render.h"
 

@@ -33,6 +33,23 @@
  * A scene without lights gets the default rig: two directional lights fixed
  * to the camera (a key light from the upper left and towards the viewer, a
  * weaker fill from the lower right), which cast shadows like any other.
+ * --lighting=openscad replaces all of that by OpenSCAD's own lighting,
+ * computed on display values without shadows (shade.c).
+ *
+ * Section cuts: every query of shading (camera, shadow, occlusion and
+ * secondary rays) goes through shade_first_hit and shade_any_hit, which
+ * clip the ray to the intersection of the cut half-spaces and take the
+ * solid's span list inside it: where a span starts at a cut plane the ray
+ * meets a cap, with the plane's normal and the cap colour (hatched with
+ * lines at 45 degrees in the plane's own axes, fixed in the world, for
+ * --section-style=hatch). Without cuts they are the plain first-hit and
+ * any-hit queries.
+ *
+ * Ambient occlusion: at each hit, ao_samples rays from the offset point,
+ * cosine-distributed about the facing normal and ao_radius long; the
+ * colour there (not what reflections add) is scaled by the share that
+ * meets nothing. The rays take the sample's own random numbers, so the
+ * image depends on neither the thread count nor the tiling.
  */
 #ifndef SPANCAST_RENDER_SHADE_H
 #define SPANCAST_RENDER_SHADE_H
