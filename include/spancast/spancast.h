@@ -267,6 +267,8 @@ int sc_render_options_from_scene(sc_render_options *options, const sc_scene *sce
 
 /* Counters of one render, summed over threads. */
 typedef struct sc_render_stats {
+    /* camera_rays counts edge lines' neighbour rays too; shadow_rays the
+     * ambient occlusion rays */
     uint64_t camera_rays, shadow_rays, reflection_rays, refraction_rays;
     uint64_t primitive_tests; /* leaf span computations */
     uint64_t span_operations; /* boolean merges of two non-empty span lists */

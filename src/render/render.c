@@ -185,6 +185,7 @@ static int on_edge(const render_ctx *c, const render_view *v, shade_thread *st, 
                                {h, h}, {-h, -h}, {h, -h}, {-h, h}};
     for (int k = 0; k < 8; k++) {
         view_ray nb;
+        st->count.edge_rays++;
         trace_view_ray(v, st, i, j, sx + c->edge_half * dirs[k][0],
                        sy + c->edge_half * dirs[k][1], &nb);
         if (edge_between(c, v, centre, &nb))
@@ -280,6 +281,7 @@ static void render_pixel(const render_ctx *c, render_thread *th, int i, int j)
         th->count.shadow_rays += st.count.shadow_rays;
         th->count.reflection_rays += st.count.reflection_rays;
         th->count.refraction_rays += st.count.refraction_rays;
+        th->camera_rays += st.count.edge_rays;
         arena_reset(&th->scratch);
     }
     for (int k = 0; k < 3; k++)

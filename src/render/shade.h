@@ -129,6 +129,7 @@ typedef struct shade_hit {
 /* Per-thread counters. */
 typedef struct shade_counters {
     uint64_t shadow_rays, reflection_rays, refraction_rays;
+    uint64_t edge_rays; /* camera rays beside a sample's, for edge lines */
 } shade_counters;
 
 /* One thread's state for one pixel sample. */
