@@ -232,12 +232,16 @@ typedef struct sc_render_options {
     const volatile sig_atomic_t *cancel;
 
     /* Preview renders. */
-    int use_scheme;         /* 1: colours from scheme, over the file's background()
-                               and the default face colour; 0 (default): those */
+    int use_scheme;         /* 1: colours from scheme: the background (over the
+                               file's background()), faces without a colour and
+                               subtracted faces; 0 (default): the file's and
+                               Cornfield's face colour; edges, axes, crosshairs and
+                               caps take scheme's colours either way */
     sc_color_scheme scheme; /* Cornfield by default */
-    int preview;            /* 1: OpenSCAD's preview (F5) colours: subtracted faces
-                               in the scheme's face_back, edges as its shader draws
-                               them; 0 (default): its render (F6) colours */
+    int preview;            /* 1: OpenSCAD's preview (F5) face colours (face_front,
+                               face_back; subtracted faces take face_back even
+                               without use_scheme); 0 (default): its render's (F6:
+                               render_face, render_face_back) */
     sc_lighting lighting;   /* default SC_LIGHTING_DEFAULT */
     unsigned view;          /* SC_VIEW_* flags; 0 (default): none */
     double edge_angle_deg;  /* creases: normals further apart than this (default 30) */
