@@ -8,6 +8,7 @@
  *   spancast info MODEL
  *   spancast spans MODEL --ray=... | --rays=FILE | --pixel=I,J [...]   (query.c)
  *   spancast inside MODEL --point=X,Y,Z | --points=FILE [...]       (query.c)
+ *   spancast view MODEL [...]        (spancast-view: view.c and its neighbours)
  *   spancast --help | --version
  *
  * MODEL is a .csg file, or a .scad file converted by OpenSCAD (scad.c).
@@ -50,6 +51,7 @@
 
 #include "cli/cli.h"
 #include "cli/scad.h"
+#include "cli/watch.h"
 #include "formats/file.h"
 #include "formats/image_io.h"
 #include "render/render.h"
@@ -68,6 +70,7 @@ static const char usage_text[] =
     "       spancast spans MODEL --ray=OX,OY,OZ,DX,DY,DZ | --rays=FILE | --pixel=I,J\n"
     "                      [--both-ways] [--json] [camera options]\n"
     "       spancast inside MODEL --point=X,Y,Z | --points=FILE [--json]\n"
+    "       spancast view MODEL [--imgsize=W,H] [--spp=N] [--faithful]\n"
     "       spancast bench accuracy --csv FILE [--plot FILE.png] [--rays N]\n"
     "       spancast bench stability --csv FILE [--dir DIR] [--size N] [--depth N]\n"
     "       spancast --help | --version\n"
@@ -107,6 +110,8 @@ static const char usage_text[] =
     "  --stats[=json]         print rays by kind, primitive tests, span operations\n"
     "                         and time per stage on stdout\n"
     "  -q, --quiet            no progress bar and no summary line on stderr\n"
+    "  --watch                render again whenever the model (or a file a .scad\n"
+    "                         model uses) changes, until interrupted\n"
     "\n"
     "Without --camera, spancast uses the model's camera() node if it has one, else\n"
     "it looks at the centre of the model from OpenSCAD's default direction\n"
@@ -235,7 +240,8 @@ typedef enum opt_id {
     OPT_MAX_DEPTH,
     OPT_REGION,
     OPT_STATS,
-    OPT_FAITHFUL
+    OPT_FAITHFUL,
+    OPT_WATCH
 } opt_id;
 
 typedef struct opt_spec {
@@ -264,6 +270,7 @@ static const opt_spec options_table[] = {
     {"--region", OPT_REGION, 1, 1},
     {"--stats", OPT_STATS, 2, 1},
     {"--faithful", OPT_FAITHFUL, 0, 0},
+    {"--watch", OPT_WATCH, 0, 1},
 };
 
 typedef struct cli_args {
@@ -271,8 +278,10 @@ typedef struct cli_args {
     const char *input;
     const char *output, *mask, *depth, *normal, *id;
     int quiet;
-    int stats;    /* 0 none, 1 text, 2 JSON */
-    int faithful; /* --faithful: OpenSCAD's polyhedra for spheres and cylinders */
+    int stats;          /* 0 none, 1 text, 2 JSON */
+    int faithful;       /* --faithful: OpenSCAD's polyhedra for spheres and cylinders */
+    int watch;          /* --watch: render again on every change */
+    watch_set *watched; /* with --watch: the files the model was loaded from */
     sc_render_options options;
 } cli_args;
 
@@ -395,6 +404,9 @@ static int apply_option(cli_args *a, opt_id id, const char *value)
         return 0;
     case OPT_FAITHFUL:
         a->faithful = 1;
+        return 0;
+    case OPT_WATCH:
+        a->watch = 1;
         return 0;
     }
     return 0;
@@ -526,15 +538,20 @@ static double seconds_now(void)
     return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
 }
 
-static sc_scene *load(const char *path, int faithful)
+/* watched: NULL, or a set that gets the model's files (render --watch). */
+static sc_scene *load(const char *path, int faithful, watch_set *watched)
 {
     sc_load_options lo;
     sc_load_options_init(&lo);
     lo.faithful = faithful;
     sc_scene *scene = NULL;
     sc_error error;
-    sc_status st = scad_is_source(path) ? scad_load(path, &lo, &scene, &error)
-                                        : sc_scene_load(path, &lo, &scene, &error);
+    if (watched)
+        watch_add_file(watched, path);
+    sc_status st = scad_is_source(path)
+                       ? scad_load_files(path, &lo, &scene, &error,
+                                         watched ? watch_add_file : NULL, watched)
+                       : sc_scene_load(path, &lo, &scene, &error);
     if (st != SC_OK) {
         print_error(&error);
         return NULL;
@@ -547,7 +564,7 @@ static sc_scene *load(const char *path, int faithful)
 
 static int run_info(const cli_args *a)
 {
-    sc_scene *scene = load(a->input, a->faithful);
+    sc_scene *scene = load(a->input, a->faithful, NULL);
     if (!scene)
         return EXIT_FAILED;
     sc_scene_info info;
@@ -702,7 +719,7 @@ static int run_render(cli_args *a, int argc, char **argv)
 
     double start = seconds_now();
     catch_interrupts();
-    sc_scene *scene = load(a->input, a->faithful);
+    sc_scene *scene = load(a->input, a->faithful, a->watched);
     if (interrupt_signal)
         return die_interrupted();
     if (!scene)
@@ -784,6 +801,55 @@ static int run_bench(char **argv)
     return 1;
 }
 
+/* `spancast render --watch`: renders, then waits for a change to the model
+ * or a file it uses (watch.c) and renders again, until interrupted. A model
+ * that fails to load or render prints its error and is waited on like any
+ * other; the image of the last good model stays as it was. Only a bad
+ * command line ends it early. */
+static int run_render_watched(cli_args *a, int argc, char **argv)
+{
+    sc_error error;
+    a->watched = watch_open(&error);
+    if (!a->watched) {
+        print_error(&error);
+        return EXIT_FAILED;
+    }
+    catch_interrupts();
+    int status;
+    for (;;) {
+        status = run_render(a, argc, argv);
+        if (status == EXIT_USAGE && !interrupt_signal)
+            break;
+        fflush(stdout);
+        if (!watch_wait(a->watched, &interrupt_signal))
+            break;
+        if (!a->quiet)
+            fprintf(stderr, "spancast: %s changed, rendering again\n", a->input);
+    }
+    watch_close(a->watched);
+    if (interrupt_signal)
+        return die_interrupted();
+    return status;
+}
+
+/* `spancast view ...`: replaces this process with spancast-view, found in
+ * the folder of this executable, with the same arguments. The viewer links
+ * SDL and the display libraries, which took about 20 ms to load in every
+ * run of the tool. Returns only on failure, with the exit status. */
+static int run_view(char **argv)
+{
+    char path[4096];
+    if (!file_beside_program("spancast-view", path, sizeof path)) {
+        fprintf(stderr, "spancast: error: cannot find spancast-view: %s\n",
+                strerror(errno));
+        return 1;
+    }
+    argv[0] = path; /* spancast-view view MODEL ... */
+    execv(path, argv);
+    fprintf(stderr, "spancast: error: cannot run '%s': %s\n", path, strerror(errno));
+    return 1;
+}
+
 /* ---- shared with the query commands (cli.h) ---- */
 
 int cli_usage_error(const char *format, ...)
@@ -812,7 +878,7 @@ int cli_parse_numbers(const char *s, double *out, int max)
 
 sc_scene *cli_load(const char *path, int faithful)
 {
-    return load(path, faithful);
+    return load(path, faithful, NULL);
 }
 
 static int is_camera_option(opt_id id)
@@ -861,6 +927,8 @@ int main(int argc, char **argv)
     const char *command = argv[1];
     if (!strcmp(command, "bench"))
         return run_bench(argv);
+    if (!strcmp(command, "view"))
+        return run_view(argv);
     if (!strcmp(command, "spans"))
         return cli_spans(argc, argv);
     if (!strcmp(command, "inside"))
@@ -882,5 +950,7 @@ int main(int argc, char **argv)
     int st = parse_args(&a, argc, argv);
     if (st)
         return st;
+    if (a.render && a.watch)
+        return run_render_watched(&a, argc, argv);
     return a.render ? run_render(&a, argc, argv) : run_info(&a);
 }
