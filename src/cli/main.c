@@ -278,8 +278,9 @@ typedef struct cli_args {
     const char *input;
     const char *output, *mask, *depth, *normal, *id;
     int quiet;
-    int stats;          /* 0 none, 1 text, 2 JSON */
-    int faithful;       /* --faithful: OpenSCAD's polyhedra for spheres and cylinders */
+    int stats;    /* 0 none, 1 text, 2 JSON */
+    int faithful; /* --faithful: OpenSCAD's polyhedra for spheres and cylinders */
+
     int watch;          /* --watch: render again on every change */
     watch_set *watched; /* with --watch: the files the model was loaded from */
     sc_render_options options;
