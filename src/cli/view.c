@@ -120,6 +120,7 @@ typedef struct viewer {
     /* the model and the view */
     view_model *model;
     double load_seconds;
+    int loads; /* models loaded so far, shown in the title as "#N" */
     char error[SC_ERROR_MESSAGE_MAX + SC_ERROR_FILE_MAX + 64]; /* the failed load */
     view_camera cam;
     uint64_t view; /* the number of the current view */
@@ -452,7 +453,8 @@ static void update_title(viewer *v)
     char options[1024], state[64];
     view_camera_format(&v->cam, v->width, v->height, v->spp, options, sizeof options);
     if (!v->model)
-        snprintf(state, sizeof state, "%s", view_loader_busy(v->loader) ? "loading" : "");
+        snprintf(state, sizeof state, "%s",
+                 view_loader_busy(v->loader) ? "loading" : "no model yet");
     else if (v->shown_view == v->view && v->shown_full && v->shown_spp >= v->spp)
         snprintf(state, sizeof state, "done");
     else if (v->shown_view == v->view && v->shown_full)
@@ -460,13 +462,14 @@ static void update_title(viewer *v)
     else
         snprintf(state, sizeof state, "moving");
     char title[sizeof v->title];
-    snprintf(title, sizeof title,
-             "spancast view: %s%s%s - %s - load %.3f s, frame %.1f ms (%dx%d, spp %d), "
-             "%.2f Mrays/s - %s%s%s%s%s",
-             base_name(v->path), v->error[0] ? " - ERROR " : "", v->error, state,
-             v->load_seconds, v->frame_ms, v->frame_w, v->frame_h, v->frame_spp,
-             v->rays_per_second / 1e6, options, v->pick[0] ? " - " : "", v->pick,
-             v->note[0] ? " - " : "", v->note);
+    snprintf(
+        title, sizeof title,
+        "spancast view: %s%s%s - %s - load #%d %.3f s, frame %.1f ms (%dx%d, spp %d), "
+        "%.2f Mrays/s - %s%s%s%s%s",
+        base_name(v->path), v->error[0] ? " - ERROR " : "", v->error, state, v->loads,
+        v->load_seconds, v->frame_ms, v->frame_w, v->frame_h, v->frame_spp,
+        v->rays_per_second / 1e6, options, v->pick[0] ? " - " : "", v->pick,
+        v->note[0] ? " - " : "", v->note);
     if (strcmp(title, v->title)) {
         memcpy(v->title, title, sizeof title);
         SDL_SetWindowTitle(v->window, title);
@@ -493,6 +496,7 @@ static void take_load(viewer *v)
     view_model_release(v->model);
     v->model = load.model;
     v->load_seconds = load.seconds;
+    v->loads++;
     v->error[0] = '\0';
     size_t warnings = sc_scene_warning_count(v->model->scene);
     for (size_t k = 0; k < warnings; k++) {
@@ -697,8 +701,8 @@ static int handle(viewer *v, const SDL_Event *e)
             pick(v, e->button.x, e->button.y);
         break;
     case SDL_MOUSEMOTION: {
-        if (!v->buttons)
-            break;
+        if (!v->buttons || !v->model)
+            break; /* no camera before the first model */
         double dx = e->motion.xrel, dy = e->motion.yrel;
         if (abs(e->motion.x - v->press_x) + abs(e->motion.y - v->press_y) > 2)
             v->dragged = 1;
@@ -716,7 +720,7 @@ static int handle(viewer *v, const SDL_Event *e)
         break;
     }
     case SDL_MOUSEWHEEL: {
-        int y = e->wheel.y;
+        int y = v->model ? e->wheel.y : 0;
         if (e->wheel.direction == SDL_MOUSEWHEEL_FLIPPED)
             y = -y;
         if (y) {
