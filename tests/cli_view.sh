@@ -51,6 +51,8 @@ if [ -z "${SPANCAST_VIEW_XVFB:-}" ]; then
     "$bin" view >out.txt 2>err.txt
     st=$?
     [ "$st" = 2 ] || fail "no model: exit $st, expected 2"
+    "$bin" view --help >out.txt 2>err.txt || fail "view --help: exit $?"
+    grep -q "^usage: spancast view MODEL" out.txt || fail "view --help: $(cat out.txt)"
     "$bin" view m.csg --spp=0 >out.txt 2>err.txt
     st=$?
     [ "$st" = 2 ] || fail "--spp=0: exit $st, expected 2"

@@ -913,6 +913,8 @@ int cli_apply_camera_option(sc_render_options *options, const char *name, size_t
 
 int main(int argc, char **argv)
 {
+    if (argc > 1 && !strcmp(argv[1], "view"))
+        return run_view(argv); /* spancast-view reads its own --help */
     for (int k = 1; k < argc && strcmp(argv[k], "--"); k++) {
         if (!strcmp(argv[k], "--help") || !strcmp(argv[k], "-h")) {
             fputs(usage_text, stdout);
@@ -928,8 +930,6 @@ int main(int argc, char **argv)
     const char *command = argv[1];
     if (!strcmp(command, "bench"))
         return run_bench(argv);
-    if (!strcmp(command, "view"))
-        return run_view(argv);
     if (!strcmp(command, "spans"))
         return cli_spans(argc, argv);
     if (!strcmp(command, "inside"))
