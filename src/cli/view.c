@@ -853,6 +853,12 @@ int main(int argc, char **argv)
         return EXIT_FAILED;
     }
     SDL_SetHint(SDL_HINT_RENDER_SCALE_QUALITY, "linear");
+    /* The window shows one image a frame: SDL's software renderer draws it
+     * without loading the OpenGL driver stack (Mesa, LLVM), which took
+     * longer to load than the model. The environment (SDL_RENDER_DRIVER,
+     * SDL_FRAMEBUFFER_ACCELERATION) still chooses otherwise. */
+    SDL_SetHint(SDL_HINT_RENDER_DRIVER, "software");
+    SDL_SetHint(SDL_HINT_FRAMEBUFFER_ACCELERATION, "0");
     v->wake_event = SDL_RegisterEvents(1);
     v->window = SDL_CreateWindow("spancast view", SDL_WINDOWPOS_UNDEFINED,
                                  SDL_WINDOWPOS_UNDEFINED, v->width, v->height,
