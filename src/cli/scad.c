@@ -12,6 +12,11 @@
  * converted text therefore read DIR/NAME.csg, the file `openscad -o
  * NAME.csg` would have written. Every temporary file is removed before
  * returning. OpenSCAD 2021.01 writes numbers with 6 significant digits.
+ *
+ * For a watcher (scad_load_files), OpenSCAD also writes a make-style
+ * dependency file (-d): "TARGET: FILE FILE ...", continued over lines by a
+ * backslash at the end of a line, a space inside a name written as a
+ * backslash and a space. Its names are the files the conversion read.
  */
 #define _XOPEN_SOURCE 700 /* realpath, mkdtemp */
 
@@ -69,8 +74,59 @@ static void last_line(const char *path, char *buf, size_t size)
     fclose(f);
 }
 
+/* Calls depend for each prerequisite in the make-style dependency file at
+ * path: the words after the first unescaped ':' (a backslash before a space
+ * makes the space part of a name, a backslash before a newline continues the
+ * line). */
+static void read_depends(const char *path, void (*depend)(void *user, const char *file),
+                         void *user)
+{
+    size_t size = 0;
+    const char *why;
+    char *text = file_read(path, 1 << 24, &size, &why);
+    if (!text)
+        return;
+    char *colon = NULL;
+    for (size_t k = 0; k < size && !colon; k++) {
+        if (text[k] == '\\')
+            k++;
+        else if (text[k] == ':' && k + 1 < size &&
+                 (text[k + 1] == ' ' || text[k + 1] == '\n'))
+            colon = text + k;
+    }
+    char word[PATH_MAX];
+    size_t len = 0;
+    for (const char *p = colon ? colon + 1 : text + size; p <= text + size; p++) {
+        int end = p == text + size || *p == ' ' || *p == '\t' || *p == '\n' || *p == '\r';
+        if (!end && *p == '\\' && p + 1 < text + size && p[1] == ' ') {
+            p++; /* an escaped space belongs to the name */
+        } else if (!end && *p == '\\' && p + 1 < text + size &&
+                   (p[1] == '\n' || p[1] == '\r')) {
+            continue; /* a continuation line */
+        } else if (end) {
+            if (len > 0 && len < sizeof word) {
+                word[len] = '\0';
+                depend(user, word);
+            }
+            len = 0;
+            continue;
+        }
+        if (len < sizeof word)
+            word[len] = *p;
+        len++;
+    }
+    free(text);
+}
+
 sc_status scad_load(const char *path, const sc_load_options *options, sc_scene **scene,
                     sc_error *error)
+{
+    return scad_load_files(path, options, scene, error, NULL, NULL);
+}
+
+sc_status scad_load_files(const char *path, const sc_load_options *options,
+                          sc_scene **scene, sc_error *error,
+                          void (*depend)(void *user, const char *file), void *user)
 {
     *scene = NULL;
     char source[PATH_MAX];
@@ -83,9 +139,10 @@ sc_status scad_load(const char *path, const sc_load_options *options, sc_scene *
         return fail(error, SC_ERR_IO, "cannot make a temporary directory in '%s': %s",
                     tmp && tmp[0] ? tmp : "/tmp", strerror(errno));
     const char *base = strrchr(source, '/') + 1; /* realpath is absolute */
-    char csg[PATH_MAX + 16], log[PATH_MAX + 16], name[PATH_MAX + 16];
+    char csg[PATH_MAX + 16], log[PATH_MAX + 16], name[PATH_MAX + 16], deps[PATH_MAX + 16];
     snprintf(csg, sizeof csg, "%s/%.*s.csg", dir, (int)(strlen(base) - 5), base);
     snprintf(log, sizeof log, "%s/openscad.log", dir);
+    snprintf(deps, sizeof deps, "%s/openscad.d", dir);
     snprintf(name, sizeof name, "%.*s.csg", (int)(strlen(source) - 5), source);
 
     posix_spawn_file_actions_t actions;
@@ -93,7 +150,11 @@ sc_status scad_load(const char *path, const sc_load_options *options, sc_scene *
     posix_spawn_file_actions_addopen(&actions, 1, log, O_WRONLY | O_CREAT | O_TRUNC,
                                      0600);
     posix_spawn_file_actions_adddup2(&actions, 1, 2);
-    char *argv[] = {"openscad", "-o", csg, source, NULL};
+    char *argv[] = {"openscad", "-o", csg, source, NULL, NULL, NULL};
+    if (depend) {
+        argv[4] = "-d";
+        argv[5] = deps;
+    }
     pid_t pid;
     int spawned = posix_spawnp(&pid, "openscad", &actions, NULL, argv, environ);
     posix_spawn_file_actions_destroy(&actions);
@@ -113,6 +174,8 @@ sc_status scad_load(const char *path, const sc_load_options *options, sc_scene *
                       last[0] ? last : "it failed without a message");
         }
     }
+    if (st == SC_OK && depend)
+        read_depends(deps, depend, user);
     if (st == SC_OK) {
         size_t size = 0;
         const char *why;
@@ -125,6 +188,7 @@ sc_status scad_load(const char *path, const sc_load_options *options, sc_scene *
     }
     unlink(csg);
     unlink(log);
+    unlink(deps);
     rmdir(dir);
     return st;
 }

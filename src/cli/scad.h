@@ -15,4 +15,12 @@ int scad_is_source(const char *path);
 sc_status scad_load(const char *path, const sc_load_options *options, sc_scene **scene,
                     sc_error *error);
 
+/* The same, and when depend is not NULL, calls depend(user, file) for each
+ * file the conversion read (the source and what it includes, uses or
+ * imports: OpenSCAD's -d dependency file), so that a watcher can reload on
+ * a change to any of them. Not called when OpenSCAD fails. */
+sc_status scad_load_files(const char *path, const sc_load_options *options,
+                          sc_scene **scene, sc_error *error,
+                          void (*depend)(void *user, const char *file), void *user);
+
 #endif

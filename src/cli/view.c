@@ -1,0 +1,890 @@
+/* spancast-view: `spancast view MODEL`, an interactive window on a model
+ * that reloads when the file changes.
+ *
+ * `spancast view ...` runs this program (found beside spancast) with the
+ * same arguments; it is a program of its own because SDL and the display
+ * libraries it links cost every other command about 20 ms to load.
+ *
+ * The window shows spancast's own renderer (sc_render, the same call and
+ * options as `spancast render`). Three threads: this one handles the
+ * window, the mouse, the keys and the file watch, and never renders; the
+ * render thread (view_worker.c) renders one job at a time; the loading
+ * thread (view_loader.c) loads or converts the model.
+ *
+ * Progressive rendering: every change of the view (mouse, keys, window
+ * size, samples, a reloaded model) gives the view a new number. The first
+ * frame of a view is coarse: the image scaled down by a step of
+ * coarse_scales, chosen from the measured time of the previous coarse
+ * frames so that one takes at most FRAME_BUDGET_MS; it is stretched to the
+ * window. When the view holds still (no button held, or no motion for
+ * STILL_SECONDS) the frame is refined: full size with 1 sample per pixel,
+ * then 4, 16, ... up to the target (--spp, keys + and -). A refinement in
+ * flight is abandoned (sc_render's cancel flag) as soon as the view
+ * changes.
+ *
+ * Keys follow OpenSCAD's View menu where it has them; see usage_text.
+ * Edges, axes, colour schemes, section planes and ambient occlusion have
+ * their keys reserved: they print that the renderer does not draw them yet.
+ *
+ * Reloading: the model and, for a .scad, every file OpenSCAD read are
+ * watched (watch.c). WATCH_SETTLE_MS after the last change the loading
+ * thread loads the model again; the camera stays. A model that fails to
+ * load prints its error on stderr, shows it in the title and a red frame,
+ * and the last good model stays on screen.
+ *
+ * Status: the title holds the model, the state, the load time, the last
+ * frame's time, size and rays per second, and the view as `render`
+ * options. Ctrl+S writes a screenshot: a render at the window's size and
+ * the target samples, written by the library's writer, so the file is the
+ * one `spancast render` writes with the options printed beside it.
+ * A click (no drag) picks: the ray of that pixel (sc_scene_pixel_ray) and
+ * its spans (sc_scene_spans) go to stdout, the first hit to the title.
+ *
+ * Headless: without a display SDL fails to start, or starts one of its
+ * drivers that show nothing (offscreen, dummy); both are an error, exit 1.
+ */
+#define _POSIX_C_SOURCE 200809L
+
+#include <SDL.h>
+
+#include <errno.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <time.h>
+#include <unistd.h>
+
+#include "cli/view.h"
+#include "cli/watch.h"
+
+enum { EXIT_FAILED = 1, EXIT_USAGE = 2 };
+
+#define FRAME_BUDGET_MS 25.0 /* a coarse frame's render time, below 33 ms */
+#define STILL_SECONDS 0.1    /* no motion this long while dragging: refine */
+#define MAX_SPP 1024
+
+static const char usage_text[] =
+    "usage: spancast view MODEL [--imgsize=W,H] [--spp=N] [--threads=N] [--faithful]\n"
+    "                           [--verbose]\n"
+    "\n"
+    "Opens a window on MODEL (.csg, or .scad through OpenSCAD) and renders it\n"
+    "again whenever the file, or a file a .scad model uses, changes.\n"
+    "\n"
+    "  --imgsize=W,H   window size (default 800,600)\n"
+    "  --spp=N         samples per pixel when the view is still (default 4)\n"
+    "  --threads=N     render threads (default 0: all cores)\n"
+    "  --faithful      spheres and cylinders as OpenSCAD's polyhedra\n"
+    "  --verbose       print every frame's size and time on stdout\n"
+    "\n"
+    "mouse: left drag rotates (shift: around y), right drag pans (shift: zooms),\n"
+    "       wheel zooms, a click prints what the ray under the pointer hits\n"
+    "keys:  Ctrl+4..9, Ctrl+0   top, bottom, left, right, front, back, diagonal\n"
+    "       Ctrl+Shift+V        view all        Home  reset view\n"
+    "       Ctrl+] / Ctrl+[     zoom in / out\n"
+    "       P / O               perspective / orthographic\n"
+    "       Ctrl+3              crosshairs\n"
+    "       + / -               samples per pixel when still (x4 / /4)\n"
+    "       Ctrl+S              screenshot (NAME-view-N.png, with its render command)\n"
+    "       Ctrl+R, F4, F5      reload now\n"
+    "       Ctrl+1, Ctrl+2      edges, axes (reserved)\n"
+    "       C, X, A             colour scheme, section plane, ambient occlusion\n"
+    "                           (reserved)\n"
+    "       Q, Esc, Ctrl+Q      quit\n";
+
+/* Coarse frames divide the window's sides by one of these. */
+static const double coarse_scales[] = {1, 1.5, 2, 2.5, 3, 4, 5, 6, 8, 10, 12, 16, 24, 32};
+#define COARSE_STEPS ((int)(sizeof coarse_scales / sizeof coarse_scales[0]))
+
+typedef struct viewer {
+    /* the command line */
+    const char *path;
+    int faithful, verbose, threads;
+    int spp; /* target samples per pixel when still */
+    /* the window */
+    SDL_Window *window;
+    SDL_Renderer *renderer;
+    SDL_Texture *texture;
+    int texture_w, texture_h;
+    Uint32 wake_event;
+    int width, height; /* the window, and the full image */
+    int dirty;         /* draw again */
+    char title[16384];
+    /* the threads and the watch */
+    view_worker *worker;
+    view_loader *loader;
+    watch_set *watched;
+    int change_pending;
+    double change_at;
+    /* the model and the view */
+    view_model *model;
+    double load_seconds;
+    int loads; /* models loaded so far, shown in the title as "#N" */
+    char error[SC_ERROR_MESSAGE_MAX + SC_ERROR_FILE_MAX + 64]; /* the failed load */
+    view_camera cam;
+    uint64_t view; /* the number of the current view */
+    int crosshairs;
+    /* what the window shows */
+    uint64_t shown_view;
+    int shown_full, shown_spp;
+    /* the last frame's figures, and the coarse step */
+    double frame_ms, rays_per_second;
+    int frame_w, frame_h, frame_spp;
+    int coarse_step;
+    /* the mouse */
+    int buttons; /* SDL button mask held */
+    int press_x, press_y, dragged;
+    double last_motion;
+    char pick[512]; /* the last pick, for the title, until the view changes */
+    char note[SC_ERROR_MESSAGE_MAX + SC_ERROR_FILE_MAX + PATH_MAX + 64]; /* passing */
+    /* screenshots */
+    int shot_busy, shot_requested, shot_number;
+    char shot_path[PATH_MAX];
+    char shot_command[4 * PATH_MAX + 1200];
+} viewer;
+
+static double seconds_now(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+static int usage_error(const char *message, const char *arg)
+{
+    fprintf(stderr, "spancast: error: ");
+    fprintf(stderr, message, arg);
+    fputc('\n', stderr);
+    return EXIT_USAGE;
+}
+
+/* ---- the command line ---- */
+
+static int parse_int(const char *s, long lo, long hi, long *out)
+{
+    char *end;
+    errno = 0;
+    long v = strtol(s, &end, 10);
+    if (!*s || *end || errno || v < lo || v > hi)
+        return 0;
+    *out = v;
+    return 1;
+}
+
+static int parse_args(viewer *v, int argc, char **argv)
+{
+    int first = argc > 1 && !strcmp(argv[1], "view") ? 2 : 1;
+    for (int k = first; k < argc; k++) {
+        const char *arg = argv[k];
+        if (!strcmp(arg, "--help") || !strcmp(arg, "-h")) {
+            fputs(usage_text, stdout);
+            exit(0);
+        }
+        if (arg[0] != '-' || !arg[1]) {
+            if (v->path)
+                return usage_error("unexpected argument '%s'", arg);
+            v->path = arg;
+            continue;
+        }
+        const char *eq = strchr(arg, '=');
+        size_t len = eq ? (size_t)(eq - arg) : strlen(arg);
+        if (len == 10 && !strncmp(arg, "--faithful", len) && !eq) {
+            v->faithful = 1;
+            continue;
+        }
+        if (len == 9 && !strncmp(arg, "--verbose", len) && !eq) {
+            v->verbose = 1;
+            continue;
+        }
+        int takes = (len == 9 && !strncmp(arg, "--imgsize", len)) ||
+                    (len == 5 && !strncmp(arg, "--spp", len)) ||
+                    (len == 9 && !strncmp(arg, "--threads", len));
+        if (!takes)
+            return usage_error("unknown option '%s' for 'view'", arg);
+        const char *value = eq ? eq + 1 : k + 1 < argc ? argv[++k] : NULL;
+        if (!value || !*value)
+            return usage_error("option '%s' expects a value", arg);
+        long n, w, h;
+        if (!strncmp(arg, "--spp", len)) {
+            if (!parse_int(value, 1, MAX_SPP, &n))
+                return usage_error("--spp expects an integer from 1 to 1024%s", "");
+            v->spp = (int)n;
+        } else if (!strncmp(arg, "--threads", len)) {
+            if (!parse_int(value, 0, 4096, &n))
+                return usage_error("--threads expects a non-negative integer%s", "");
+            v->threads = (int)n;
+        } else {
+            char wtext[32];
+            const char *comma = strchr(value, ',');
+            if (!comma || (size_t)(comma - value) >= sizeof wtext)
+                return usage_error("--imgsize expects W,H with positive integers%s", "");
+            memcpy(wtext, value, (size_t)(comma - value));
+            wtext[comma - value] = '\0';
+            if (!parse_int(wtext, 16, 8192, &w) || !parse_int(comma + 1, 16, 8192, &h))
+                return usage_error("--imgsize expects W,H from 16 to 8192%s", "");
+            v->width = (int)w;
+            v->height = (int)h;
+        }
+    }
+    if (!v->path)
+        return usage_error("missing input file%s", "");
+    return 0;
+}
+
+/* ---- messages ---- */
+
+static void format_error(const sc_error *error, char *buf, size_t size)
+{
+    if (error->file[0])
+        sc_error_format(error, buf, size);
+    else
+        snprintf(buf, size, "spancast: error: %s", error->message);
+}
+
+/* s quoted for a POSIX shell when it needs it. */
+static void shell_quote(const char *s, char *buf, size_t size)
+{
+    int plain = *s != '\0';
+    for (const char *p = s; *p; p++)
+        if (!(('a' <= *p && *p <= 'z') || ('A' <= *p && *p <= 'Z') ||
+              ('0' <= *p && *p <= '9') || strchr("._/-+,=:", *p)))
+            plain = 0;
+    if (plain) {
+        snprintf(buf, size, "%s", s);
+        return;
+    }
+    size_t n = 0;
+    if (n + 1 < size)
+        buf[n++] = '\'';
+    for (const char *p = s; *p && n + 5 < size; p++) {
+        if (*p == '\'') {
+            memcpy(buf + n, "'\\''", 4);
+            n += 4;
+        } else {
+            buf[n++] = *p;
+        }
+    }
+    if (n + 1 < size)
+        buf[n++] = '\'';
+    buf[n] = '\0';
+}
+
+static const char *base_name(const char *path)
+{
+    const char *slash = strrchr(path, '/');
+    return slash ? slash + 1 : path;
+}
+
+/* ---- the view ---- */
+
+static void view_changed(viewer *v)
+{
+    v->view++;
+    v->pick[0] = '\0';
+    view_worker_cancel(v->worker);
+}
+
+/* Render options for the current view at w x h pixels and spp samples. */
+static sc_render_options view_options(const viewer *v, int w, int h, int spp)
+{
+    sc_render_options o;
+    sc_render_options_init(&o);
+    view_camera_apply(&v->cam, &o);
+    o.width = w;
+    o.height = h;
+    o.spp = spp;
+    o.threads = v->threads;
+    return o;
+}
+
+static void submit(viewer *v, view_job_kind kind, int w, int h, int spp)
+{
+    view_job job;
+    memset(&job, 0, sizeof job);
+    job.kind = kind;
+    job.view = v->view;
+    job.model = v->model;
+    job.options = view_options(v, w, h, spp);
+    if (kind == VIEW_JOB_SHOT)
+        snprintf(job.path, sizeof job.path, "%s", v->shot_path);
+    view_worker_submit(v->worker, &job);
+}
+
+/* Decides what the render thread does next. */
+static void schedule(viewer *v)
+{
+    uint64_t running_view = 0;
+    view_job_kind running_kind = VIEW_JOB_COARSE;
+    if (!view_worker_idle(v->worker, &running_view, &running_kind)) {
+        if (running_kind == VIEW_JOB_REFINE && running_view != v->view)
+            view_worker_cancel(v->worker);
+        return;
+    }
+    if (!v->model)
+        return;
+    if (v->shot_requested) {
+        v->shot_requested = 0;
+        submit(v, VIEW_JOB_SHOT, v->width, v->height, v->spp);
+        return;
+    }
+    if (v->shown_view != v->view) {
+        double s = coarse_scales[v->coarse_step];
+        int w = (int)lrint(v->width / s), h = (int)lrint(v->height / s);
+        submit(v, VIEW_JOB_COARSE, w > 0 ? w : 1, h > 0 ? h : 1, 1);
+        return;
+    }
+    if (v->shown_full && v->shown_spp >= v->spp)
+        return; /* done */
+    if (v->buttons && seconds_now() - v->last_motion < STILL_SECONDS)
+        return; /* still dragging */
+    int spp = !v->shown_full ? 1 : v->shown_spp * 4;
+    submit(v, VIEW_JOB_REFINE, v->width, v->height, spp < v->spp ? spp : v->spp);
+}
+
+/* Moves the coarse step after a coarse frame of w x h took ms. */
+static void adapt_coarse(viewer *v, int w, int h, double ms)
+{
+    double pixels = (double)w * h, full = (double)v->width * v->height;
+    int step = v->coarse_step;
+    if (ms > FRAME_BUDGET_MS) {
+        while (step + 1 < COARSE_STEPS) {
+            double s = coarse_scales[step];
+            if (ms * full / (s * s) / pixels <= FRAME_BUDGET_MS)
+                break;
+            step++;
+        }
+    } else if (ms < 0.5 * FRAME_BUDGET_MS && step > 0) {
+        double s = coarse_scales[step - 1];
+        if (ms * full / (s * s) / pixels <= 0.8 * FRAME_BUDGET_MS)
+            step--;
+    }
+    v->coarse_step = step;
+}
+
+static void show_frame(viewer *v, view_frame *f)
+{
+    if (f->status != SC_OK) {
+        char text[SC_ERROR_MESSAGE_MAX + SC_ERROR_FILE_MAX + 64];
+        format_error(&f->error, text, sizeof text);
+        fprintf(stderr, "%s\n", text);
+        snprintf(v->note, sizeof v->note, "%s", text);
+        if (f->kind == VIEW_JOB_SHOT)
+            v->shot_busy = 0;
+        free(f->rgb);
+        return;
+    }
+    uint64_t rays = f->stats.camera_rays + f->stats.shadow_rays +
+                    f->stats.reflection_rays + f->stats.refraction_rays;
+    const char *kinds[] = {"coarse", "refine", "shot"};
+    if (v->verbose)
+        printf("frame %s %dx%d spp %d: %.2f ms, %.2f Mrays/s\n", kinds[f->kind], f->width,
+               f->height, f->spp, 1000 * f->seconds,
+               f->seconds > 0 ? rays / f->seconds / 1e6 : 0.0);
+    if (f->kind == VIEW_JOB_SHOT) {
+        v->shot_busy = 0;
+        printf("screenshot: %s: %s\n", f->path, v->shot_command);
+        snprintf(v->note, sizeof v->note, "wrote %s", f->path);
+        fflush(stdout);
+        free(f->rgb);
+        return; /* the window keeps its frame */
+    }
+    fflush(stdout);
+    if (f->kind == VIEW_JOB_COARSE)
+        adapt_coarse(v, f->width, f->height, 1000 * f->seconds);
+    if (f->kind == VIEW_JOB_REFINE && f->view != v->view) {
+        free(f->rgb); /* a full frame of an old view would jump back */
+        return;
+    }
+    v->frame_ms = 1000 * f->seconds;
+    v->frame_w = f->width;
+    v->frame_h = f->height;
+    v->frame_spp = f->spp;
+    v->rays_per_second = f->seconds > 0 ? rays / f->seconds : 0;
+    if (f->view == v->view) {
+        v->shown_view = f->view;
+        v->shown_full = f->width == v->width && f->height == v->height;
+        v->shown_spp = f->spp;
+    }
+    if (!v->texture || v->texture_w != f->width || v->texture_h != f->height) {
+        if (v->texture)
+            SDL_DestroyTexture(v->texture);
+        v->texture = SDL_CreateTexture(v->renderer, SDL_PIXELFORMAT_RGB24,
+                                       SDL_TEXTUREACCESS_STREAMING, f->width, f->height);
+        v->texture_w = f->width;
+        v->texture_h = f->height;
+    }
+    if (v->texture)
+        SDL_UpdateTexture(v->texture, NULL, f->rgb, f->width * 3);
+    free(f->rgb);
+    v->dirty = 1;
+}
+
+static void draw(viewer *v)
+{
+    SDL_SetRenderDrawColor(v->renderer, 0xff, 0xff, 0xe5, 0xff); /* OpenSCAD's */
+    SDL_RenderClear(v->renderer);
+    if (v->texture)
+        SDL_RenderCopy(v->renderer, v->texture, NULL, NULL);
+    if (v->crosshairs) {
+        /* OpenSCAD's crosshairs mark the centre of rotation, here the
+         * image centre. */
+        int cx = v->width / 2, cy = v->height / 2, r = v->height / 12;
+        SDL_SetRenderDrawColor(v->renderer, 0x80, 0x00, 0x80, 0xff);
+        SDL_RenderDrawLine(v->renderer, cx - r, cy, cx + r, cy);
+        SDL_RenderDrawLine(v->renderer, cx, cy - r, cx, cy + r);
+    }
+    if (v->error[0]) {
+        /* A red frame while the file on disk does not load. */
+        int t = 4;
+        SDL_Rect sides[4] = {{0, 0, v->width, t},
+                             {0, v->height - t, v->width, t},
+                             {0, 0, t, v->height},
+                             {v->width - t, 0, t, v->height}};
+        SDL_SetRenderDrawColor(v->renderer, 0xd0, 0x10, 0x10, 0xff);
+        SDL_RenderFillRects(v->renderer, sides, 4);
+    }
+    SDL_RenderPresent(v->renderer);
+    v->dirty = 0;
+}
+
+static void update_title(viewer *v)
+{
+    char options[1024], state[64];
+    view_camera_format(&v->cam, v->width, v->height, v->spp, options, sizeof options);
+    if (!v->model)
+        snprintf(state, sizeof state, "%s",
+                 view_loader_busy(v->loader) ? "loading" : "no model yet");
+    else if (v->shown_view == v->view && v->shown_full && v->shown_spp >= v->spp)
+        snprintf(state, sizeof state, "done");
+    else if (v->shown_view == v->view && v->shown_full)
+        snprintf(state, sizeof state, "refining (spp %d of %d)", v->shown_spp, v->spp);
+    else
+        snprintf(state, sizeof state, "moving");
+    char title[sizeof v->title];
+    snprintf(
+        title, sizeof title,
+        "spancast view: %s%s%s - %s - load #%d %.3f s, frame %.1f ms (%dx%d, spp %d), "
+        "%.2f Mrays/s - %s%s%s%s%s",
+        base_name(v->path), v->error[0] ? " - ERROR " : "", v->error, state, v->loads,
+        v->load_seconds, v->frame_ms, v->frame_w, v->frame_h, v->frame_spp,
+        v->rays_per_second / 1e6, options, v->pick[0] ? " - " : "", v->pick,
+        v->note[0] ? " - " : "", v->note);
+    if (strcmp(title, v->title)) {
+        memcpy(v->title, title, sizeof title);
+        SDL_SetWindowTitle(v->window, title);
+    }
+}
+
+/* ---- loading ---- */
+
+static void take_load(viewer *v)
+{
+    view_load load;
+    if (!view_loader_take(v->loader, &load))
+        return;
+    for (size_t k = 0; k < load.file_count; k++)
+        watch_add_file(v->watched, load.files[k]);
+    view_load_free_files(&load);
+    if (!load.model) {
+        format_error(&load.error, v->error, sizeof v->error);
+        fprintf(stderr, "%s\n", v->error);
+        v->dirty = 1;
+        return;
+    }
+    int first = !v->model;
+    view_model_release(v->model);
+    v->model = load.model;
+    v->load_seconds = load.seconds;
+    v->loads++;
+    v->error[0] = '\0';
+    size_t warnings = sc_scene_warning_count(v->model->scene);
+    for (size_t k = 0; k < warnings; k++) {
+        char text[SC_ERROR_MESSAGE_MAX + SC_ERROR_FILE_MAX + 64];
+        format_error(sc_scene_warning(v->model->scene, k), text, sizeof text);
+        fprintf(stderr, "%s (warning)\n", text);
+    }
+    if (first) {
+        sc_render_options file;
+        sc_render_options_init(&file);
+        sc_render_options_from_scene(&file, v->model->scene);
+        view_camera_reset(&v->cam, v->model->scene, &file);
+    }
+    printf("loaded %s in %.3f s\n", v->path, load.seconds);
+    fflush(stdout);
+    v->dirty = 1;
+    view_changed(v);
+}
+
+/* ---- input ---- */
+
+static void reserved(viewer *v, const char *what)
+{
+    snprintf(v->note, sizeof v->note, "%s: not drawn by this renderer yet", what);
+    printf("%s: not drawn by this renderer yet\n", what);
+    fflush(stdout);
+}
+
+static void request_shot(viewer *v)
+{
+    if (v->shot_busy || !v->model) {
+        snprintf(v->note, sizeof v->note, "%s",
+                 v->model ? "a screenshot is being written" : "no model to write");
+        return;
+    }
+    /* A name no file has yet: a screenshot never replaces a file. */
+    char stem[256];
+    const char *name = base_name(v->path);
+    const char *dot = strrchr(name, '.');
+    size_t n = dot && dot != name ? (size_t)(dot - name) : strlen(name);
+    snprintf(stem, sizeof stem, "%.*s", (int)(n < 200 ? n : 200), name);
+    struct stat st;
+    do {
+        v->shot_number++;
+        snprintf(v->shot_path, sizeof v->shot_path, "%s-view-%d.png", stem,
+                 v->shot_number);
+    } while (stat(v->shot_path, &st) == 0 || errno != ENOENT);
+    char options[1024], model[PATH_MAX * 2], out[PATH_MAX * 2];
+    view_camera_format(&v->cam, v->width, v->height, v->spp, options, sizeof options);
+    shell_quote(v->path, model, sizeof model);
+    shell_quote(v->shot_path, out, sizeof out);
+    snprintf(v->shot_command, sizeof v->shot_command, "spancast render %s -o %s %s%s",
+             model, out, options, v->faithful ? " --faithful" : "");
+    v->shot_busy = 1;
+    v->shot_requested = 1;
+    snprintf(v->note, sizeof v->note, "writing %s", v->shot_path);
+    view_worker_cancel(v->worker); /* a refinement would only delay it */
+}
+
+static void pick(viewer *v, int x, int y)
+{
+    if (!v->model || x < 0 || y < 0 || x >= v->width || y >= v->height)
+        return;
+    sc_render_options o = view_options(v, v->width, v->height, 1);
+    sc_ray_query query;
+    sc_ray_query_init(&query);
+    sc_error error;
+    sc_span_list *spans = NULL;
+    if (sc_scene_pixel_ray(v->model->scene, &o, x, y, query.origin, query.direction,
+                           &error) != SC_OK ||
+        sc_scene_spans(v->model->scene, &query, &spans, &error) != SC_OK) {
+        char text[SC_ERROR_MESSAGE_MAX + SC_ERROR_FILE_MAX + 64];
+        format_error(&error, text, sizeof text);
+        fprintf(stderr, "%s\n", text);
+        return;
+    }
+    size_t count = sc_span_list_count(spans);
+    double length = sqrt(query.direction[0] * query.direction[0] +
+                         query.direction[1] * query.direction[1] +
+                         query.direction[2] * query.direction[2]);
+    if (count == 0) {
+        printf("pick %d,%d: no hit\n", x, y);
+        snprintf(v->pick, sizeof v->pick, "pick %d,%d: no hit", x, y);
+    } else {
+        const sc_span_end *hit = &sc_span_list_get(spans, 0)->in;
+        if (hit->leaf >= 0) {
+            printf("pick %d,%d: %s (leaf %d) at %s:%d:%d, distance %.9g, %zu span%s\n", x,
+                   y, hit->leaf_kind, hit->leaf,
+                   hit->location.file ? hit->location.file : "?", hit->location.line,
+                   hit->location.column, hit->t * length, count, count == 1 ? "" : "s");
+            snprintf(v->pick, sizeof v->pick, "pick %d,%d: %s (leaf %d) at %s:%d:%d", x,
+                     y, hit->leaf_kind, hit->leaf,
+                     base_name(hit->location.file ? hit->location.file : "?"),
+                     hit->location.line, hit->location.column);
+        } else {
+            printf("pick %d,%d: the ray starts inside the solid, %zu span%s\n", x, y,
+                   count, count == 1 ? "" : "s");
+            snprintf(v->pick, sizeof v->pick, "pick %d,%d: inside", x, y);
+        }
+        for (size_t k = 0; k < count; k++) {
+            const sc_span *s = sc_span_list_get(spans, k);
+            const sc_span_end *ends[2] = {&s->in, &s->out};
+            printf("  span %zu: length %.9g", k + 1, s->distance);
+            for (int e = 0; e < 2; e++) {
+                const sc_span_end *end = ends[e];
+                printf(", %s t=%.17g", e ? "out" : "in", end->t);
+                if (end->leaf >= 0)
+                    printf(" %s (leaf %d) at %s:%d:%d%s", end->leaf_kind, end->leaf,
+                           end->location.file ? end->location.file : "?",
+                           end->location.line, end->location.column,
+                           end->subtracted ? " (subtracted)" : "");
+            }
+            printf("\n");
+        }
+    }
+    fflush(stdout);
+    sc_span_list_release(spans);
+}
+
+/* Handles one key; returns 0 to quit. */
+static int key(viewer *v, const SDL_KeyboardEvent *e)
+{
+    SDL_Keycode sym = e->keysym.sym;
+    int ctrl = (e->keysym.mod & KMOD_CTRL) != 0,
+        shift = (e->keysym.mod & KMOD_SHIFT) != 0;
+    v->note[0] = '\0';
+    if (sym == SDLK_ESCAPE || (!ctrl && sym == SDLK_q) ||
+        (ctrl && (sym == SDLK_q || sym == SDLK_w)))
+        return 0;
+    if (ctrl && sym >= SDLK_0 && sym <= SDLK_9) {
+        static const int presets[10] = {VIEW_DIAGONAL, -1,          -1,        -1,
+                                        VIEW_TOP,      VIEW_BOTTOM, VIEW_LEFT, VIEW_RIGHT,
+                                        VIEW_FRONT,    VIEW_BACK};
+        int digit = (int)(sym - SDLK_0);
+        if (digit == 1)
+            reserved(v, "edges (Ctrl+1)");
+        else if (digit == 2)
+            reserved(v, "axes (Ctrl+2)");
+        else if (digit == 3) {
+            v->crosshairs = !v->crosshairs;
+            v->dirty = 1;
+        } else {
+            view_camera_preset(&v->cam, (view_preset)presets[digit]);
+            view_changed(v);
+        }
+        return 1;
+    }
+    if (ctrl && shift && sym == SDLK_v) {
+        if (v->model)
+            view_camera_view_all(&v->cam, v->model->scene);
+        view_changed(v);
+    } else if (ctrl && (sym == SDLK_RIGHTBRACKET || sym == SDLK_LEFTBRACKET)) {
+        view_camera_zoom(&v->cam, sym == SDLK_RIGHTBRACKET ? 120 : -120);
+        view_changed(v);
+    } else if (sym == SDLK_HOME && v->model) {
+        sc_render_options file;
+        sc_render_options_init(&file);
+        sc_render_options_from_scene(&file, v->model->scene);
+        view_camera_reset(&v->cam, v->model->scene, &file);
+        view_changed(v);
+    } else if (!ctrl && (sym == SDLK_p || sym == SDLK_o)) {
+        v->cam.projection =
+            sym == SDLK_p ? SC_PROJECTION_PERSPECTIVE : SC_PROJECTION_ORTHOGRAPHIC;
+        view_changed(v);
+    } else if (ctrl && sym == SDLK_s) {
+        request_shot(v);
+    } else if ((ctrl && sym == SDLK_r) || sym == SDLK_F4 || sym == SDLK_F5) {
+        view_loader_request(v->loader);
+    } else if (sym == SDLK_PLUS || sym == SDLK_EQUALS || sym == SDLK_KP_PLUS) {
+        v->spp = v->spp * 4 > MAX_SPP ? MAX_SPP : v->spp * 4;
+        view_changed(v);
+    } else if (sym == SDLK_MINUS || sym == SDLK_KP_MINUS) {
+        v->spp = v->spp / 4 < 1 ? 1 : v->spp / 4;
+        view_changed(v);
+    } else if (!ctrl && sym == SDLK_c) {
+        reserved(v, "colour schemes (C)");
+    } else if (!ctrl && sym == SDLK_x) {
+        reserved(v, "section plane (X)");
+    } else if (!ctrl && sym == SDLK_a) {
+        reserved(v, "ambient occlusion (A)");
+    }
+    return 1;
+}
+
+/* Handles one event; returns 0 to quit. */
+static int handle(viewer *v, const SDL_Event *e)
+{
+    switch (e->type) {
+    case SDL_QUIT:
+        return 0;
+    case SDL_KEYDOWN:
+        return key(v, &e->key);
+    case SDL_MOUSEBUTTONDOWN:
+        v->buttons |= SDL_BUTTON(e->button.button);
+        v->press_x = e->button.x;
+        v->press_y = e->button.y;
+        v->dragged = 0;
+        break;
+    case SDL_MOUSEBUTTONUP:
+        v->buttons &= ~SDL_BUTTON(e->button.button);
+        if (e->button.button == SDL_BUTTON_LEFT && !v->dragged)
+            pick(v, e->button.x, e->button.y);
+        break;
+    case SDL_MOUSEMOTION: {
+        if (!v->buttons || !v->model)
+            break; /* no camera before the first model */
+        double dx = e->motion.xrel, dy = e->motion.yrel;
+        if (abs(e->motion.x - v->press_x) + abs(e->motion.y - v->press_y) > 2)
+            v->dragged = 1;
+        if (!v->dragged)
+            break;
+        int shift = (SDL_GetModState() & KMOD_SHIFT) != 0;
+        if (v->buttons & SDL_BUTTON_LMASK)
+            view_camera_orbit(&v->cam, dx, dy, shift);
+        else if (shift)
+            view_camera_zoom(&v->cam, -12.0 * 0.7 * dy);
+        else
+            view_camera_pan(&v->cam, dx, dy, v->width, v->height);
+        v->last_motion = seconds_now();
+        view_changed(v);
+        break;
+    }
+    case SDL_MOUSEWHEEL: {
+        int y = v->model ? e->wheel.y : 0;
+        if (e->wheel.direction == SDL_MOUSEWHEEL_FLIPPED)
+            y = -y;
+        if (y) {
+            view_camera_zoom(&v->cam, 120.0 * y);
+            view_changed(v);
+        }
+        break;
+    }
+    case SDL_WINDOWEVENT:
+        if (e->window.event == SDL_WINDOWEVENT_SIZE_CHANGED) {
+            v->width = e->window.data1 > 0 ? e->window.data1 : 1;
+            v->height = e->window.data2 > 0 ? e->window.data2 : 1;
+            view_changed(v);
+        }
+        v->dirty = 1;
+        break;
+    default:
+        break;
+    }
+    return 1;
+}
+
+/* Called by the render and loading threads: wakes the window's loop. */
+static void wake(void *user)
+{
+    viewer *v = user;
+    SDL_Event e;
+    memset(&e, 0, sizeof e);
+    e.type = v->wake_event;
+    SDL_PushEvent(&e);
+}
+
+/* ---- start and loop ---- */
+
+/* Starts SDL on a display that shows something; prints why not and
+ * returns 0 without one. */
+static int open_display(void)
+{
+    /* Without either variable SDL would try Wayland (which prints its own
+     * complaint) and fall back to its offscreen driver. */
+    const char *x11 = getenv("DISPLAY"), *wayland = getenv("WAYLAND_DISPLAY");
+    const char *chosen = getenv("SDL_VIDEODRIVER");
+    if ((!x11 || !*x11) && (!wayland || !*wayland) && (!chosen || !*chosen)) {
+        fputs("spancast: error: view needs a display (neither DISPLAY nor "
+              "WAYLAND_DISPLAY is set)\n",
+              stderr);
+        return 0;
+    }
+    if (SDL_Init(SDL_INIT_VIDEO) != 0) {
+        fprintf(stderr, "spancast: error: view needs a display (%s)\n", SDL_GetError());
+        return 0;
+    }
+    const char *driver = SDL_GetCurrentVideoDriver();
+    if (!driver || !strcmp(driver, "offscreen") || !strcmp(driver, "dummy")) {
+        fprintf(stderr,
+                "spancast: error: view needs a display (SDL's video driver '%s' shows "
+                "nothing)\n",
+                driver ? driver : "none");
+        SDL_Quit();
+        return 0;
+    }
+    return 1;
+}
+
+static void run(viewer *v)
+{
+    int running = 1;
+    view_loader_request(v->loader);
+    while (running) {
+        SDL_Event e;
+        if (SDL_WaitEventTimeout(&e, 15)) {
+            running = handle(v, &e);
+            while (running && SDL_PollEvent(&e))
+                running = handle(v, &e);
+        }
+        if (watch_changed(v->watched)) {
+            v->change_pending = 1;
+            v->change_at = seconds_now();
+        }
+        if (v->change_pending &&
+            seconds_now() - v->change_at >= WATCH_SETTLE_MS / 1000.0) {
+            v->change_pending = 0;
+            view_loader_request(v->loader);
+        }
+        take_load(v);
+        view_frame frame;
+        if (view_worker_take(v->worker, &frame))
+            show_frame(v, &frame);
+        schedule(v);
+        if (v->dirty)
+            draw(v);
+        update_title(v);
+    }
+}
+
+int main(int argc, char **argv)
+{
+    viewer *v = calloc(1, sizeof *v);
+    if (!v) {
+        fputs("spancast: error: out of memory\n", stderr);
+        return EXIT_FAILED;
+    }
+    v->width = 800;
+    v->height = 600;
+    v->spp = 4;
+    v->coarse_step = 5; /* a quarter of each side, until measured */
+    int status = parse_args(v, argc, argv);
+    if (status) {
+        free(v);
+        return status;
+    }
+    struct stat st;
+    int code = stat(v->path, &st) != 0 ? errno : S_ISDIR(st.st_mode) ? EISDIR : 0;
+    if (code) {
+        fprintf(stderr, "spancast: error: cannot open '%s': %s\n", v->path,
+                strerror(code));
+        free(v);
+        return EXIT_FAILED;
+    }
+    sc_error error;
+    v->watched = watch_open(&error);
+    if (!v->watched) {
+        fprintf(stderr, "spancast: error: %s\n", error.message);
+        free(v);
+        return EXIT_FAILED;
+    }
+    if (!open_display()) {
+        watch_close(v->watched);
+        free(v);
+        return EXIT_FAILED;
+    }
+    SDL_SetHint(SDL_HINT_RENDER_SCALE_QUALITY, "linear");
+    /* The window shows one image a frame: SDL's software renderer draws it
+     * without loading the OpenGL driver stack (Mesa, LLVM), which took
+     * longer to load than the model. The environment (SDL_RENDER_DRIVER,
+     * SDL_FRAMEBUFFER_ACCELERATION) still chooses otherwise. */
+    SDL_SetHint(SDL_HINT_RENDER_DRIVER, "software");
+    SDL_SetHint(SDL_HINT_FRAMEBUFFER_ACCELERATION, "0");
+    v->wake_event = SDL_RegisterEvents(1);
+    v->window = SDL_CreateWindow("spancast view", SDL_WINDOWPOS_UNDEFINED,
+                                 SDL_WINDOWPOS_UNDEFINED, v->width, v->height,
+                                 SDL_WINDOW_RESIZABLE);
+    if (v->window)
+        SDL_GetWindowSize(v->window, &v->width, &v->height);
+    v->renderer = v->window ? SDL_CreateRenderer(v->window, -1, 0) : NULL;
+    v->worker = v->renderer ? view_worker_start(wake, v) : NULL;
+    v->loader = v->worker ? view_loader_start(v->path, v->faithful, wake, v) : NULL;
+    if (v->wake_event == (Uint32)-1 || !v->loader) {
+        fprintf(stderr, "spancast: error: cannot open the window: %s\n", SDL_GetError());
+        status = EXIT_FAILED;
+    } else {
+        run(v);
+    }
+    view_loader_stop(v->loader);
+    view_worker_stop(v->worker);
+    view_model_release(v->model);
+    if (v->texture)
+        SDL_DestroyTexture(v->texture);
+    if (v->renderer)
+        SDL_DestroyRenderer(v->renderer);
+    if (v->window)
+        SDL_DestroyWindow(v->window);
+    SDL_Quit();
+    watch_close(v->watched);
+    free(v);
+    return status;
+}

@@ -1,0 +1,338 @@
+# spancast view and spancast render --watch, end to end.
+#
+# Without a display, view fails with a clear error and exit 1. Then, under
+# Xvfb (xvfb-run), the viewer is driven with real input events (xdotool)
+# and its window captured (ImageMagick's import): a drag changes the image,
+# P/O switch the projection and Ctrl+3 draws the crosshairs, Ctrl+S writes
+# a screenshot that equals `spancast render` with the printed options pixel
+# for pixel, a click prints what the ray hit, rewriting the model makes the
+# new geometry appear with the camera kept, a broken file keeps the old
+# image and shows its error (title, red frame, stderr), and Ctrl+Q quits.
+# render --watch renders again when the model or a file a .scad includes
+# changes, keeps the last image when the model breaks, and dies of SIGINT.
+#
+# The viewer's state is read from its title ("done" once the view is fully
+# refined, "load #N" after N loads, the view as render options). Waits are
+# polls with generous guards (the sanitizer build renders far slower);
+# nothing is timed.
+#
+# Run as: bash cli_view.sh <path-to-spancast> <source-dir> <work-dir>
+. "$(dirname "$0")/testlib.sh"
+
+# Under the sanitizers, the display libraries' own leaks (X11, SDL's
+# drivers) are suppressed by library name; spancast's are still reported.
+export LSAN_OPTIONS="suppressions=$src/tests/view.lsan-suppressions${LSAN_OPTIONS:+:$LSAN_OPTIONS}"
+
+if [ -z "${SPANCAST_VIEW_XVFB:-}" ]; then
+    # ---- without a display
+    printf 'cube([10, 10, 10]);\n' >m.csg
+    checks=$((checks + 1))
+    env -u DISPLAY -u WAYLAND_DISPLAY -u SDL_VIDEODRIVER "$bin" view m.csg \
+        >out.txt 2>err.txt
+    st=$?
+    [ "$st" = 1 ] || fail "no display: exit $st, expected 1"
+    grep -q "^spancast: error: view needs a display" err.txt ||
+        fail "no display: message: $(cat err.txt)"
+    for driver in dummy offscreen; do
+        checks=$((checks + 1))
+        SDL_VIDEODRIVER=$driver "$bin" view m.csg >out.txt 2>err.txt
+        st=$?
+        [ "$st" = 1 ] || fail "SDL_VIDEODRIVER=$driver: exit $st, expected 1"
+        grep -q "^spancast: error: view needs a display (SDL's video driver '$driver'" \
+            err.txt || fail "SDL_VIDEODRIVER=$driver: message: $(cat err.txt)"
+    done
+    checks=$((checks + 1))
+    "$bin" view missing.csg >out.txt 2>err.txt
+    st=$?
+    [ "$st" = 1 ] || fail "missing model: exit $st, expected 1"
+    grep -qx "spancast: error: cannot open 'missing.csg': No such file or directory" \
+        err.txt || fail "missing model: message: $(cat err.txt)"
+    checks=$((checks + 1))
+    "$bin" view >out.txt 2>err.txt
+    st=$?
+    [ "$st" = 2 ] || fail "no model: exit $st, expected 2"
+    "$bin" view --help >out.txt 2>err.txt || fail "view --help: exit $?"
+    grep -q "^usage: spancast view MODEL" out.txt || fail "view --help: $(cat out.txt)"
+    "$bin" view m.csg --spp=0 >out.txt 2>err.txt
+    st=$?
+    [ "$st" = 2 ] || fail "--spp=0: exit $st, expected 2"
+
+    # ---- render --watch: a .csg
+    checks=$((checks + 1))
+    printf 'cube([10, 10, 10]);\n' >w.csg
+    # job control on, so that the background job does not start with SIGINT
+    # ignored
+    set -m
+    "$bin" render w.csg -o w.png --imgsize=80,60 --watch >watch.out 2>watch.err &
+    pid=$!
+    set +m
+    for ((k = 0; k < 300; k++)); do
+        [ -s w.png ] && break
+        sleep 0.1
+    done
+    [ -s w.png ] || fail "render --watch: no first image in 30 s"
+    first=$(sha256sum <w.png)
+    sleep 0.3 # a change within the first render's second would have the same mtime
+    printf 'sphere(r = 8);\n' >w.csg
+    for ((k = 0; k < 300; k++)); do
+        [ "$(sha256sum <w.png)" != "$first" ] && break
+        sleep 0.1
+    done
+    second=$(sha256sum <w.png)
+    [ "$second" != "$first" ] || fail "render --watch: no new image 30 s after the change"
+    printf 'sphere(r = 8\n' >w.csg
+    for ((k = 0; k < 300; k++)); do
+        grep -q "w.csg:2:1: error:" watch.err && break
+        sleep 0.1
+    done
+    grep -q "w.csg:2:1: error:" watch.err ||
+        fail "render --watch: broken model: no error: $(cat watch.err)"
+    [ "$(sha256sum <w.png)" = "$second" ] || fail "render --watch: a broken model changed w.png"
+    kill -INT "$pid"
+    wait "$pid"
+    st=$?
+    [ "$st" = 130 ] || fail "render --watch: SIGINT: exit $st, expected 130"
+    grep -q "^spancast: interrupted" watch.err || fail "render --watch: no 'interrupted'"
+
+    # ---- render --watch: a file a .scad model includes
+    if command -v openscad >/dev/null; then
+        checks=$((checks + 1))
+        printf 'size = 10;\n' >inc.scad
+        printf 'include <inc.scad>\ncube(size);\n' >w.scad
+        set -m
+        "$bin" render w.scad -o s.png --imgsize=80,60 --watch >swatch.out 2>swatch.err &
+        pid=$!
+        set +m
+        for ((k = 0; k < 600; k++)); do
+            [ -s s.png ] && break
+            sleep 0.1
+        done
+        [ -s s.png ] || fail "render --watch .scad: no first image in 60 s"
+        first=$(sha256sum <s.png)
+        sleep 0.3
+        printf 'size = 4;\n' >inc.scad
+        for ((k = 0; k < 600; k++)); do
+            [ "$(sha256sum <s.png)" != "$first" ] && break
+            sleep 0.1
+        done
+        [ "$(sha256sum <s.png)" != "$first" ] ||
+            fail "render --watch .scad: no new image 60 s after inc.scad changed"
+        kill -INT "$pid"
+        wait "$pid"
+    fi
+
+    # ---- the window, under Xvfb
+    require_tools xvfb-run xdotool import compare convert
+    SPANCAST_VIEW_XVFB=1 SPANCAST_VIEW_FAILS=$fails SPANCAST_VIEW_CHECKS=$checks \
+        xvfb-run -a -s "-screen 0 1024x768x24" bash "$src/tests/cli_view.sh" "$bin" "$src" \
+        "$work.xvfb"
+    exit $?
+fi
+
+fails=${SPANCAST_VIEW_FAILS:-0}
+checks=${SPANCAST_VIEW_CHECKS:-0}
+W=200
+H=150
+
+# title: the viewer's window title.
+title() {
+    xdotool getwindowname "$wid" 2>/dev/null
+}
+
+# wait_title PATTERN SECONDS: waits until the title matches the glob.
+wait_title() {
+    local k t
+    for ((k = 0; k < $2 * 10; k++)); do
+        t=$(title)
+        # shellcheck disable=SC2053 # a glob on purpose
+        [[ "$t" == $1 ]] && return 0
+        sleep 0.1
+    done
+    echo "title after $2 s: $t"
+    return 1
+}
+
+# wait_file FILE PATTERN SECONDS: waits until a line of FILE matches the
+# extended regular expression.
+wait_file() {
+    local k
+    for ((k = 0; k < $3 * 10; k++)); do
+        grep -Eq "$2" "$1" && return 0
+        sleep 0.1
+    done
+    return 1
+}
+
+# camera: the --camera option in the title.
+camera() {
+    title | grep -o -- '--camera=[^ ]*'
+}
+
+capture() {
+    import -window "$wid" "$1"
+}
+
+# differ A B: the number of pixels that differ.
+differ() {
+    compare -metric AE "$1" "$2" null: 2>&1
+}
+
+# pixel IMAGE X Y: "srgb(R,G,B)".
+pixel() {
+    convert "$1" -format "%[pixel:p{$2,$3}]" info:
+}
+
+cat >m.csg <<'EOF'
+difference() {
+  cube([20, 20, 20]);
+  multmatrix([[1, 0, 0, 10], [0, 1, 0, 10], [0, 0, 1, -1], [0, 0, 0, 1]]) {
+    cylinder(r1 = 5, r2 = 5, h = 22);
+  }
+}
+EOF
+"$bin" view m.csg --imgsize=$W,$H --spp=2 --verbose >view.out 2>view.err &
+pid=$!
+wid=$(timeout 60 xdotool search --sync --name '^spancast view' | head -n 1)
+if [ -z "$wid" ]; then
+    fail "no viewer window in 60 s: $(cat view.err)"
+    kill "$pid" 2>/dev/null
+    exit 1
+fi
+xdotool mousemove --window "$wid" $((W / 2)) $((H / 2))
+
+# the first view, refined
+checks=$((checks + 1))
+wait_title "* - done - load #1 *" 120 || fail "first view: never done"
+capture a.png
+convert -size ${W}x$H xc:'#ffffe5' background.png
+n=$(differ a.png background.png)
+[ "$n" -gt 1000 ] || fail "first view: only $n pixels differ from the background"
+grep -q "^loaded m.csg in " view.out || fail "first view: no 'loaded' line"
+
+# a left drag rotates
+checks=$((checks + 1))
+before=$(camera)
+xdotool mousedown 1
+for ((k = 0; k < 10; k++)); do
+    xdotool mousemove_relative -- 6 2
+    sleep 0.05
+done
+xdotool mouseup 1
+for ((k = 0; k < 1200; k++)); do
+    [ "$(camera)" != "$before" ] && [[ "$(title)" == *" - done - "* ]] && break
+    sleep 0.1
+done
+[ "$(camera)" != "$before" ] || fail "drag: the camera did not move"
+[[ "$(title)" == *" - done - "* ]] || fail "drag: never done: $(title)"
+capture b.png
+n=$(differ a.png b.png)
+[ "$n" -gt 200 ] || fail "drag: only $n pixels changed"
+grep -q "^frame coarse " view.out || fail "drag: no coarse frame"
+
+# O switches to orthographic, P back; Ctrl+3 draws the crosshairs
+checks=$((checks + 1))
+xdotool key o
+wait_title "* - done - *--projection=o *" 120 || fail "O: not orthographic"
+capture c.png
+n=$(differ b.png c.png)
+[ "$n" -gt 50 ] || fail "O: only $n pixels changed"
+xdotool key p
+wait_title "* - done - *--projection=p *" 120 || fail "P: not perspective"
+xdotool key ctrl+3
+for ((k = 0; k < 100; k++)); do
+    capture d.png
+    [ "$(pixel d.png $((W / 2)) $((H / 2 + 5)))" = "srgb(128,0,128)" ] && break
+    sleep 0.1
+done
+[ "$(pixel d.png $((W / 2)) $((H / 2 + 5)))" = "srgb(128,0,128)" ] ||
+    fail "Ctrl+3: no crosshairs at the centre: $(pixel d.png $((W / 2)) $((H / 2 + 5)))"
+xdotool key ctrl+3
+
+# Ctrl+S: the screenshot is what `spancast render` writes with the printed options
+checks=$((checks + 1))
+xdotool key ctrl+s
+if wait_file view.out "^screenshot: " 120; then
+    line=$(grep "^screenshot: " view.out | head -n 1)
+    shot=$(echo "$line" | sed 's/^screenshot: \([^:]*\): .*/\1/')
+    command=$(echo "$line" | sed 's/^screenshot: [^:]*: spancast render //')
+    case "$command" in
+    "m.csg -o $shot --camera="*) ;;
+    *) fail "screenshot: unexpected command: $line" ;;
+    esac
+    # shellcheck disable=SC2086 # the printed options, split as a shell would
+    eval "\"\$bin\" render $command -q -o reference.png"
+    n=$(differ "$shot" reference.png)
+    [ "$n" = 0 ] || fail "screenshot: $n pixels differ from spancast render ($line)"
+else
+    fail "screenshot: no 'screenshot:' line in 120 s"
+fi
+
+# a click picks: the leaf hit, its source position, the spans
+checks=$((checks + 1))
+wait_title "* - done - *" 120
+xdotool mousemove --window "$wid" $((W / 2 + 30)) $((H / 2)) click 1
+if wait_file view.out "^pick $((W / 2 + 30)),$((H / 2)): " 30; then
+    grep -Eq "^pick $((W / 2 + 30)),$((H / 2)): (box|cylinder) \(leaf [01]\) at m\.csg:[23]:[0-9]+, distance [0-9.]+, [0-9]+ spans?$" \
+        view.out || fail "pick: $(grep '^pick' view.out)"
+    grep -Eq "^  span 1: length [0-9.e+-]+, in t=" view.out || fail "pick: no spans"
+else
+    fail "pick: no 'pick' line"
+fi
+wait_title "* - pick $((W / 2 + 30)),$((H / 2)): *" 30 || fail "pick: not in the title"
+
+# rewriting the model makes the new geometry appear, the camera stays
+checks=$((checks + 1))
+wait_title "* - done - *" 120
+capture e0.png
+before=$(camera)
+cat >m.csg.new <<'EOF'
+union() {
+  cube([20, 20, 20]);
+  multmatrix([[1, 0, 0, 10], [0, 1, 0, 10], [0, 0, 1, 20], [0, 0, 0, 1]]) {
+    sphere(r = 8);
+  }
+}
+EOF
+mv m.csg.new m.csg
+wait_title "* - done - load #2 *" 30 || fail "reload: not reloaded and done in 30 s"
+[ "$(camera)" = "$before" ] || fail "reload: the camera moved: $before -> $(camera)"
+capture e.png
+n=$(differ e0.png e.png)
+[ "$n" -gt 200 ] || fail "reload: only $n pixels changed"
+
+# a broken file: the old image stays, the error shows in the title, a red
+# frame and on stderr
+checks=$((checks + 1))
+printf 'union() {\n  cube([20, 20, 20]);\n  sphere(r = 8;\n}\n' >m.csg
+wait_file view.err "^m\.csg:3:15: error: " 30 ||
+    fail "broken model: no error on stderr: $(cat view.err)"
+wait_title "* - ERROR m.csg:3:15: error: *" 30 || fail "broken model: no error in the title"
+capture f.png
+[ "$(pixel f.png 1 1)" = "srgb(208,16,16)" ] || fail "broken model: no red frame"
+convert e.png -crop $((W - 8))x$((H - 8))+4+4 +repage e-inner.png
+convert f.png -crop $((W - 8))x$((H - 8))+4+4 +repage f-inner.png
+n=$(differ e-inner.png f-inner.png)
+[ "$n" = 0 ] || fail "broken model: $n pixels of the old image changed"
+printf 'cube([20, 20, 30]);\n' >m.csg
+wait_title "* - done - load #3 *" 30 || fail "fixed model: not reloaded in 30 s"
+case "$(title)" in
+*ERROR*) fail "fixed model: the error stayed in the title" ;;
+esac
+
+# Ctrl+Q quits
+checks=$((checks + 1))
+xdotool key ctrl+q
+for ((k = 0; k < 300; k++)); do
+    kill -0 "$pid" 2>/dev/null || break
+    sleep 0.1
+done
+if kill -0 "$pid" 2>/dev/null; then
+    fail "Ctrl+Q: still running after 30 s"
+    kill "$pid"
+fi
+wait "$pid"
+st=$?
+[ "$st" = 0 ] || fail "Ctrl+Q: exit $st: $(cat view.err)"
+
+echo "$checks checks, $fails failures"
+[ "$fails" = 0 ]
