@@ -309,6 +309,59 @@ typedef enum sc_where { SC_OUTSIDE = 0, SC_INSIDE = 1, SC_ON = 2 } sc_where;
 sc_status sc_scene_inside(const sc_scene *scene, const double p[3], int *where,
                           sc_error *error);
 
+/* ---- queries: measures --------------------------------------------- */
+
+/* Options of the integrating queries (sc_scene_measure, sc_objects_overlaps,
+ * sc_scene_compare): they integrate over grids of parallel lines along the
+ * three axes, refined where the estimated error is largest until it is
+ * within tolerance (docs/measure.md). */
+typedef struct sc_measure_options {
+    double tolerance;   /* relative error aimed at (default 1e-4) */
+    double density;     /* mass per unit volume, for mass and inertia (default 1) */
+    int threads;        /* 0 (default): all cores; the result does not depend on it */
+    uint64_t max_lines; /* lines per axis before giving up on the tolerance
+                           (default 4,000,000) */
+    /* Called from the calling thread with the fraction done (0..1), as
+     * sc_render_options.progress; NULL: not called. */
+    void (*progress)(void *user, double fraction);
+    void *progress_user;
+    const volatile sig_atomic_t *cancel; /* as sc_render_options.cancel */
+} sc_measure_options;
+
+void sc_measure_options_init(sc_measure_options *options);
+
+/* A measured value and a bound on its error: the true value lies within
+ * value +- error when the integrand has no feature smaller than the grid
+ * resolves (docs/measure.md says how each bound is made). */
+typedef struct sc_estimate {
+    double value;
+    double error;
+} sc_estimate;
+
+typedef struct sc_measure {
+    sc_estimate volume;
+    sc_estimate area;
+    sc_estimate mass;        /* volume * density */
+    sc_estimate centroid[3]; /* centre of mass */
+    /* Inertia tensor about the centroid (mass units times length squared),
+     * I[i][j] = integral of density (|r|^2 delta_ij - r_i r_j) over the solid. */
+    sc_estimate inertia[3][3];
+    sc_estimate principal[3]; /* principal moments, ascending */
+    double axes[3][3];        /* axes[k]: unit axis of principal[k] */
+    sc_estimate box_lo[3];    /* tight bounding box: the sampled extremes, with */
+    sc_estimate box_hi[3];    /* the distance to the tree's outer box as error */
+    double volume_by_axis[3]; /* the volume from the x, y and z lines alone */
+    uint64_t lines;           /* lines cast, all axes */
+    int converged;            /* 1: volume and area reached the tolerance */
+    int threads;              /* threads used */
+} sc_measure;
+
+/* Volume, surface area, centroid, inertia and tight box of the solid. An
+ * empty solid measures 0. Returns SC_ERR_ARGUMENT for an unbounded solid
+ * or bad options, SC_ERR_CANCELLED, SC_ERR_NOMEM. Thread safe. */
+sc_status sc_scene_measure(const sc_scene *scene, const sc_measure_options *options,
+                           sc_measure *out, sc_error *error);
+
 #ifdef __cplusplus
 }
 #endif
