@@ -459,7 +459,11 @@ sc_status quad_integrate3(const double lo[3], const double hi[3], int nvalues,
         return SC_ERR_NOMEM;
     for (int k = 0; k < nvalues; k++)
         if (rule[k] != QUAD_FREE)
-            target[k] = options->tolerance * fmax(magnitude(grids, k), floor[k]);
+            target[k] = rule[k] >= 16
+                            ? fmax(options->tolerance *
+                                       fmax(magnitude(grids, rule[k] - 16), floor[k]),
+                                   QUAD_SELF * magnitude(grids, k))
+                            : options->tolerance * fmax(magnitude(grids, k), floor[k]);
     /* Progress: how far the worst error ratio has come down, on a log scale. */
     double first = 0;
     int done[3] = {0, 0, 0}, met[3] = {0, 0, 0};

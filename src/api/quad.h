@@ -93,8 +93,15 @@ void quad_free(quad_grid *g);
  *   QUAD_EACH  each axis estimates the whole integral: its magnitude is the
  *              mean of the three axes' estimates;
  *   QUAD_SUM   the axes' estimates add up to the whole (area): a third of
- *              the sum's magnitude for each. */
+ *              the sum's magnitude for each;
+ *   QUAD_RELATIVE(j)  as QUAD_EACH, with the magnitude of value j (a
+ *              difference of two volumes measured against their mean), or
+ *              QUAD_SELF of its own magnitude when that is larger: a
+ *              difference far above the tolerance needs no more than a few
+ *              digits to say so. */
 enum { QUAD_FREE, QUAD_EACH, QUAD_SUM };
+#define QUAD_RELATIVE(j) (16 + (j))
+#define QUAD_SELF 3e-3
 
 /* Integrates along lines parallel to each axis a over the box's cross
  * section, coordinates (u, v) = (x[(a+1)%3], x[(a+2)%3]) as absolute

@@ -8,6 +8,9 @@
  *   spancast info MODEL
  *   spancast spans MODEL --ray=... | --rays=FILE | --pixel=I,J [...]   (query.c)
  *   spancast inside MODEL --point=X,Y,Z | --points=FILE [...]       (query.c)
+ *   spancast measure MODEL [...]                                     (check.c)
+ *   spancast overlaps MODEL [--min-volume=V] [...]                   (check.c)
+ *   spancast compare A B [--diff=PREFIX] [...]                       (check.c)
  *   spancast --help | --version
  *
  * MODEL is a .csg file, or a .scad file converted by OpenSCAD (scad.c).
@@ -68,6 +71,10 @@ static const char usage_text[] =
     "       spancast spans MODEL --ray=OX,OY,OZ,DX,DY,DZ | --rays=FILE | --pixel=I,J\n"
     "                      [--both-ways] [--json] [camera options]\n"
     "       spancast inside MODEL --point=X,Y,Z | --points=FILE [--json]\n"
+    "       spancast measure MODEL [--tolerance=REL] [--density=D]\n"
+    "       spancast overlaps MODEL [--min-volume=V] [--tolerance=REL]\n"
+    "       spancast compare A B [--tolerance=REL] [--max-pixels=N] [--diff=PREFIX]\n"
+    "                        [--imgsize=W,H]\n"
     "       spancast bench accuracy --csv FILE [--plot FILE.png] [--rays N]\n"
     "       spancast bench stability --csv FILE [--dir DIR] [--size N] [--depth N]\n"
     "       spancast --help | --version\n"
@@ -77,6 +84,16 @@ static const char usage_text[] =
     "'spans' lists where rays enter and leave the solid (t in units of the\n"
     "direction given, t >= 0 unless --both-ways, distance inside = dt |d|);\n"
     "'inside' says whether points are in, out or on the surface.\n"
+    "'measure' prints volume, area, centroid, inertia and the tight box, each\n"
+    "with an error bound (--tolerance, relative, default 1e-4); 'overlaps' the\n"
+    "pairs of top-level objects that share volume (exit 1 when one shares more\n"
+    "than --min-volume, default 0); 'compare' the volume between two models or\n"
+    "a model and an .stl/.off mesh, and mask and depth mismatches from seven\n"
+    "views (exit 1 when the difference passes --tolerance, default 1e-6 of the\n"
+    "larger volume, or a view has more than --max-pixels, default 0, mismatched\n"
+    "pixels away from silhouette edges; --diff=PREFIX writes PREFIXpx.png ...).\n"
+    "These take --threads=N, --json, --faithful and -q (no progress on stderr);\n"
+    "overlaps and compare exit 2 on any error.\n"
     "\n"
     "render options:\n"
     "  -o, --output=FILE      colour image; the format follows the extension\n"
@@ -865,6 +882,12 @@ int main(int argc, char **argv)
         return cli_spans(argc, argv);
     if (!strcmp(command, "inside"))
         return cli_inside(argc, argv);
+    if (!strcmp(command, "measure"))
+        return cli_measure(argc, argv);
+    if (!strcmp(command, "overlaps"))
+        return cli_overlaps(argc, argv);
+    if (!strcmp(command, "compare"))
+        return cli_compare(argc, argv);
     cli_args a;
     memset(&a, 0, sizeof a);
     sc_render_options_init(&a.options);
@@ -877,7 +900,7 @@ int main(int argc, char **argv)
                            command);
     else
         return usage_error("unknown command '%s' (expected 'render', 'info', "
-                           "'spans' or 'inside')",
+                           "'spans', 'inside', 'measure', 'overlaps' or 'compare')",
                            command);
     int st = parse_args(&a, argc, argv);
     if (st)
