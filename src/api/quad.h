@@ -101,7 +101,7 @@ void quad_free(quad_grid *g);
  *              digits to say so. */
 enum { QUAD_FREE, QUAD_EACH, QUAD_SUM };
 #define QUAD_RELATIVE(j) (16 + (j))
-#define QUAD_SELF 3e-3
+#define QUAD_SELF 1e-2
 
 /* Integrates along lines parallel to each axis a over the box's cross
  * section, coordinates (u, v) = (x[(a+1)%3], x[(a+2)%3]) as absolute

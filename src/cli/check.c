@@ -473,7 +473,7 @@ static int compare_view(const check_args *a, const sc_scene *sa, const sc_scene 
     o.height = a->height;
     o.threads = a->options.threads;
     o.want_color = 0;
-    o.want_mask = o.want_depth = 1;
+    o.want_mask = o.want_depth = o.want_normal = 1;
     o.projection = SC_PROJECTION_ORTHOGRAPHIC;
     o.camera_mode = SC_CAMERA_VECTOR;
     double centre[3], radius = 0, len = 0;
@@ -503,6 +503,9 @@ static int compare_view(const check_args *a, const sc_scene *sa, const sc_scene 
         return CLI_EXIT_USAGE;
     }
     int w = a->width, h = a->height;
+    /* A uniform shift d of the surface changes the volume by d times the
+     * area, about d / size of it: the volume's relative tolerance read as
+     * a distance is that tolerance times the size. */
     double depth_tolerance = a->options.tolerance * 2 * radius;
     float *diff = a->diff ? calloc((size_t)w * (size_t)h * 3, sizeof *diff) : NULL;
     memset(out, 0, sizeof *out);
@@ -511,8 +514,14 @@ static int compare_view(const check_args *a, const sc_scene *sa, const sc_scene 
             size_t p = (size_t)y * (size_t)w + (size_t)x;
             int ha = fa->mask[p] != 0, hb = fb->mask[p] != 0;
             int edge = at_edge(fa->mask, w, h, x, y) || at_edge(fb->mask, w, h, x, y);
+            /* The distance between the surfaces along A's normal: a wall
+             * seen at a grazing angle moves far in depth for a small shift. */
+            const float *n = fa->normal + p * 3;
+            double facing =
+                fabs(n[0] * v->dir[0] + n[1] * v->dir[1] + n[2] * v->dir[2]) / len;
             int depth_off =
-                ha && hb && fabs((double)fa->depth[p] - fb->depth[p]) > depth_tolerance;
+                ha && hb &&
+                fabs((double)fa->depth[p] - fb->depth[p]) * facing > depth_tolerance;
             if (ha != hb)
                 *(edge ? &out->edge_mismatch : &out->mask_mismatch) += 1;
             else if (depth_off && !edge)
