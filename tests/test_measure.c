@@ -112,7 +112,7 @@ static void test_cylinder(void **state)
     double m = PI * 4 * 5;
     solid_case c = {"cylinder.csg",
                     "cylinder(h = 5, r1 = 2, r2 = 2, center = false);",
-                    1e-4,
+                    1e-3,
                     m,
                     2 * PI * 4 + 2 * PI * 2 * 5,
                     {0, 0, 2.5},
@@ -130,7 +130,7 @@ static void test_cone(void **state)
     double m = PI * 9 * 4 / 3;
     solid_case c = {"cone.csg",
                     "cylinder(h = 4, r1 = 3, r2 = 0, center = false);",
-                    1e-4,
+                    1e-3,
                     m,
                     PI * 9 + PI * 3 * 5,
                     {0, 0, 1},
@@ -165,7 +165,7 @@ static void test_hollow_sphere(void **state)
     double i = 8 * PI / 15 * (243 - 32);
     solid_case c = {"hollow.csg",
                     "difference() {\n  sphere(r = 3);\n  sphere(r = 2);\n}\n",
-                    1e-4,
+                    1e-3,
                     4.0 / 3 * PI * (27 - 8),
                     4 * PI * (9 + 4),
                     {0, 0, 0},
@@ -190,7 +190,7 @@ static void test_drilled_box(void **state)
                     "    cylinder(h = 12, r1 = 2, r2 = 2);\n"
                     "  }\n"
                     "}\n",
-                    1e-4,
+                    1e-3,
                     1000 - mc,
                     600 - 8 * PI + 40 * PI,
                     {5, 5, 5},

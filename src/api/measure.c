@@ -83,7 +83,21 @@ typedef struct measure_axis {
     int axis;
 } measure_axis;
 
-static int sample_line(void *context, int thread, double u, double v, double *values)
+/* The signature of a span list (quad.h): its ends' surfaces, in order. */
+static uint64_t list_signature(uint64_t h, span_list s)
+{
+    h = quad_mix(h, s.n);
+    for (uint32_t k = 0; k < s.n; k++) {
+        const span_end *ends[2] = {&s.v[k].in, &s.v[k].out};
+        for (int e = 0; e < 2; e++)
+            h = quad_mix(h, ((uint64_t)ends[e]->leaf << 24) |
+                                ((uint64_t)ends[e]->part << 8) | ends[e]->flip);
+    }
+    return h;
+}
+
+static int sample_line(void *context, int thread, double u, double v, double *values,
+                       uint64_t *signature)
 {
     const measure_axis *m = context;
     const measure_shared *s = m->shared;
@@ -103,6 +117,7 @@ static int sample_line(void *context, int thread, double u, double v, double *va
     span_list spans;
     if (!csg_spans(s->tree, &r, scratch, &spans))
         return 0;
+    *signature = list_signature(0, spans);
     double length = 0, s1 = 0, s2 = 0, area = 0, area2 = 0;
     double *box = s->box[thread];
     for (uint32_t k = 0; k < spans.n; k++) {

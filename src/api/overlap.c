@@ -210,7 +210,21 @@ typedef struct pair_axis {
     int axis;
 } pair_axis;
 
-static int sample_pair(void *context, int thread, double u, double v, double *values)
+/* The signature of a span list (quad.h): its ends' surfaces, in order. */
+static uint64_t list_signature(uint64_t h, span_list s)
+{
+    h = quad_mix(h, s.n);
+    for (uint32_t k = 0; k < s.n; k++) {
+        const span_end *ends[2] = {&s.v[k].in, &s.v[k].out};
+        for (int e = 0; e < 2; e++)
+            h = quad_mix(h, ((uint64_t)ends[e]->leaf << 24) |
+                                ((uint64_t)ends[e]->part << 8) | ends[e]->flip);
+    }
+    return h;
+}
+
+static int sample_pair(void *context, int thread, double u, double v, double *values,
+                       uint64_t *signature)
 {
     const pair_axis *m = context;
     const pair_shared *s = m->shared;
@@ -234,6 +248,7 @@ static int sample_pair(void *context, int thread, double u, double v, double *va
     span_list both = span_combine(SPAN_INTERSECTION, sa, sb, eps, scratch, &oom);
     if (oom)
         return 0;
+    *signature = list_signature(0, both);
     double length = 0;
     double *box = s->box[thread];
     for (uint32_t k = 0; k < both.n; k++) {

@@ -41,6 +41,14 @@ static int reserve(quad_grid *g, size_t more)
     if (!error)
         return 0;
     g->error = error;
+    double *jump = realloc(g->jump, values * sizeof *jump);
+    if (!jump)
+        return 0;
+    g->jump = jump;
+    uint64_t *signature = realloc(g->signature, cap * sizeof *signature);
+    if (!signature)
+        return 0;
+    g->signature = signature;
     g->cap = cap;
     return 1;
 }
@@ -48,14 +56,18 @@ static int reserve(quad_grid *g, size_t more)
 /* Samples the five lines of each of the n cells (which must be complete
  * but for estimate and error) and fills their estimate and error. */
 static sc_status sample_cells(quad_grid *g, quad_cell *cells, double *estimate,
-                              double *error, size_t n,
+                              double *error, uint64_t *signature, size_t n,
                               const volatile sig_atomic_t *cancel)
 {
     int k_count = g->nvalues;
     size_t lines = n * 5;
     double *values = malloc(lines * (size_t)k_count * sizeof *values);
-    if (!values)
+    uint64_t *sigs = malloc(lines * sizeof *sigs);
+    if (!values || !sigs) {
+        free(values);
+        free(sigs);
         return SC_ERR_NOMEM;
+    }
     int failed = 0, cancelled = 0;
     long long total = (long long)lines;
 #pragma omp parallel for schedule(dynamic, 64) num_threads(g->threads)
@@ -80,7 +92,7 @@ static sc_status sample_cells(quad_grid *g, quad_cell *cells, double *estimate,
             v += (which > 2 ? 0.5 : -0.5) * c->hv;
         }
         if (!g->sample(g->context, omp_get_thread_num(), u, v,
-                       values + (size_t)line * (size_t)k_count)) {
+                       values + (size_t)line * (size_t)k_count, &sigs[line])) {
 #pragma omp atomic write
             failed = 1;
         }
@@ -88,6 +100,7 @@ static sc_status sample_cells(quad_grid *g, quad_cell *cells, double *estimate,
     g->lines += lines;
     if (failed || cancelled) {
         free(values);
+        free(sigs);
         g->failed = failed;
         return cancelled ? SC_ERR_CANCELLED : SC_ERR_ARGUMENT;
     }
@@ -102,93 +115,16 @@ static sc_status sample_cells(quad_grid *g, quad_cell *cells, double *estimate,
             estimate[i * (size_t)k_count + (size_t)k] = fine;
             error[i * (size_t)k_count + (size_t)k] = fabs(fine - coarse);
         }
+        const uint64_t *s = sigs + i * 5;
+        int same = s[0] == s[1] && s[0] == s[2] && s[0] == s[3] && s[0] == s[4];
+        signature[i] = same ? s[0] | 1 : 0;
     }
     free(values);
+    free(sigs);
     return SC_OK;
 }
 
-/* Sums the cells' estimates and errors in cell order. The error also
- * holds the rounding of the sum and of the lines' own arithmetic: each
- * cell's estimate is off by a few units in the last place of the magnitudes
- * it was made from, and a sum of n terms by at most n units of the sum of
- * their magnitudes (Higham, recursive summation), so 8 + n units of that
- * sum bound both. */
-static void sum_cells(quad_grid *g)
-{
-    int k_count = g->nvalues;
-    for (int k = 0; k < k_count; k++) {
-        double sum = 0, error = 0, magnitude = 0;
-        for (size_t i = 0; i < g->count; i++) {
-            double e = g->estimate[i * (size_t)k_count + (size_t)k];
-            sum += e;
-            magnitude += fabs(e);
-            error += g->error[i * (size_t)k_count + (size_t)k];
-        }
-        g->total[k] = sum;
-        g->total_error[k] = error + (8.0 + (double)g->count) * DBL_EPSILON * magnitude;
-    }
-}
-
-sc_status quad_init(quad_grid *g, const double lo[2], const double hi[2], int nvalues,
-                    size_t base, quad_sample_fn sample, void *context, int threads,
-                    const volatile sig_atomic_t *cancel)
-{
-    memset(g, 0, sizeof *g);
-    g->nvalues = nvalues;
-    g->sample = sample;
-    g->context = context;
-    g->threads = threads > 0 ? threads : 1;
-    double w0 = hi[0] - lo[0], w1 = hi[1] - lo[1];
-    g->total = calloc((size_t)nvalues, sizeof *g->total);
-    g->total_error = calloc((size_t)nvalues, sizeof *g->total_error);
-    if (!g->total || !g->total_error)
-        return SC_ERR_NOMEM;
-    /* Nearly square cells, at least 4 a side. */
-    double side = sqrt(w0 * w1 / (double)base);
-    int n0 = side > 0 ? (int)ceil(w0 / side) : 4,
-        n1 = side > 0 ? (int)ceil(w1 / side) : 4;
-    n0 = n0 < 4 ? 4 : n0 > 4096 ? 4096 : n0;
-    n1 = n1 < 4 ? 4 : n1 > 4096 ? 4096 : n1;
-    g->min_half = 1e-9 * fmax(w0, w1);
-    g->n0 = (uint32_t)n0;
-    g->n1 = (uint32_t)n1;
-    size_t n = (size_t)n0 * (size_t)n1;
-    if (!reserve(g, n))
-        return SC_ERR_NOMEM;
-    for (int i = 0; i < n0; i++)
-        for (int j = 0; j < n1; j++) {
-            quad_cell *c = &g->cells[(size_t)i * (size_t)n1 + (size_t)j];
-            c->hu = w0 / n0 / 2;
-            c->hv = w1 / n1 / 2;
-            c->u = lo[0] + (2 * i + 1) * c->hu;
-            c->v = lo[1] + (2 * j + 1) * c->hv;
-            c->i = (uint32_t)i;
-            c->j = (uint32_t)j;
-            c->level = 0;
-        }
-    sc_status st = sample_cells(g, g->cells, g->estimate, g->error, n, cancel);
-    if (st)
-        return st;
-    g->count = n;
-    sum_cells(g);
-    return SC_OK;
-}
-
-/* Order of cells by descending weight, ties by position in the array. */
-typedef struct ranked {
-    double weight;
-    size_t index;
-} ranked;
-
-static int by_weight(const void *a, const void *b)
-{
-    const ranked *x = a, *y = b;
-    if (x->weight != y->weight)
-        return x->weight > y->weight ? -1 : 1;
-    return x->index < y->index ? -1 : x->index > y->index;
-}
-
-/* ---- 2:1 balance ---- */
+/* ---- neighbours ---- */
 
 /* A hash table from a cell's (level, i, j) to its index among the leaves. */
 typedef struct cell_map {
@@ -243,6 +179,145 @@ static size_t map_find(const cell_map *m, uint32_t level, uint32_t i, uint32_t j
                 return m->index[h];
     }
     return SIZE_MAX;
+}
+
+/* The cells' jump bounds (quad.h): for each pair of neighbours across an
+ * edge whose signatures differ (or either is mixed), an eighth of each
+ * one's area times the difference of their means. The jump lies in one of
+ * the two half strips between their nearest lines, each a quarter of its
+ * cell, so the pair's error is at most a quarter of a cell's area times
+ * the jump; each of the two carries half of that. Neighbours finer than a
+ * cell find it themselves; coarser ones are found through the map. */
+static int find_jumps(quad_grid *g)
+{
+    int k_count = g->nvalues;
+    size_t n = g->count * (size_t)k_count;
+    for (size_t i = 0; i < n; i++)
+        g->jump[i] = 0;
+    cell_map m;
+    if (!map_build(&m, g)) {
+        free(m.keys);
+        free(m.index);
+        return 0;
+    }
+    static const int steps[4][2] = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}};
+    for (size_t i = 0; i < g->count; i++) {
+        const quad_cell *c = &g->cells[i];
+        uint64_t width = (uint64_t)g->n0 << c->level,
+                 height = (uint64_t)g->n1 << c->level;
+        for (int e = 0; e < 4; e++) {
+            int64_t ni = (int64_t)c->i + steps[e][0], nj = (int64_t)c->j + steps[e][1];
+            if (ni < 0 || nj < 0 || (uint64_t)ni >= width || (uint64_t)nj >= height)
+                continue;
+            size_t o = map_find(&m, c->level, (uint32_t)ni, (uint32_t)nj);
+            if (o == SIZE_MAX || (g->signature[i] && g->signature[i] == g->signature[o]))
+                continue;
+            const quad_cell *d = &g->cells[o];
+            double area_c = 4 * c->hu * c->hv, area_d = 4 * d->hu * d->hv;
+            for (int k = 0; k < k_count; k++) {
+                double step = fabs(g->estimate[i * (size_t)k_count + (size_t)k] / area_c -
+                                   g->estimate[o * (size_t)k_count + (size_t)k] / area_d);
+                double *ji = &g->jump[i * (size_t)k_count + (size_t)k];
+                double *jo = &g->jump[o * (size_t)k_count + (size_t)k];
+                *ji = fmax(*ji, area_c / 8 * step);
+                *jo = fmax(*jo, area_d / 8 * step);
+            }
+        }
+    }
+    free(m.keys);
+    free(m.index);
+    return 1;
+}
+
+/* The error estimate of cell i for value k: its own, or its jump bound. */
+static double cell_error(const quad_grid *g, size_t i, int k)
+{
+    size_t at = i * (size_t)g->nvalues + (size_t)k;
+    return fmax(g->error[at], g->jump[at]);
+}
+
+/* Sums the cells' estimates and errors in cell order. The error also
+ * holds the rounding of the sum and of the lines' own arithmetic: each
+ * cell's estimate is off by a few units in the last place of the magnitudes
+ * it was made from, and a sum of n terms by at most n units of the sum of
+ * their magnitudes (Higham, recursive summation), so 8 + n units of that
+ * sum bound both. Returns 0 on allocation failure. */
+static int sum_cells(quad_grid *g)
+{
+    if (!find_jumps(g))
+        return 0;
+    int k_count = g->nvalues;
+    for (int k = 0; k < k_count; k++) {
+        double sum = 0, error = 0, magnitude = 0;
+        for (size_t i = 0; i < g->count; i++) {
+            double e = g->estimate[i * (size_t)k_count + (size_t)k];
+            sum += e;
+            magnitude += fabs(e);
+            error += cell_error(g, i, k);
+        }
+        g->total[k] = sum;
+        g->total_error[k] = error + (8.0 + (double)g->count) * DBL_EPSILON * magnitude;
+    }
+    return 1;
+}
+
+sc_status quad_init(quad_grid *g, const double lo[2], const double hi[2], int nvalues,
+                    size_t base, quad_sample_fn sample, void *context, int threads,
+                    const volatile sig_atomic_t *cancel)
+{
+    memset(g, 0, sizeof *g);
+    g->nvalues = nvalues;
+    g->sample = sample;
+    g->context = context;
+    g->threads = threads > 0 ? threads : 1;
+    double w0 = hi[0] - lo[0], w1 = hi[1] - lo[1];
+    g->total = calloc((size_t)nvalues, sizeof *g->total);
+    g->total_error = calloc((size_t)nvalues, sizeof *g->total_error);
+    if (!g->total || !g->total_error)
+        return SC_ERR_NOMEM;
+    /* Nearly square cells, at least 4 a side. */
+    double side = sqrt(w0 * w1 / (double)base);
+    int n0 = side > 0 ? (int)ceil(w0 / side) : 4,
+        n1 = side > 0 ? (int)ceil(w1 / side) : 4;
+    n0 = n0 < 4 ? 4 : n0 > 4096 ? 4096 : n0;
+    n1 = n1 < 4 ? 4 : n1 > 4096 ? 4096 : n1;
+    g->min_half = 1e-9 * fmax(w0, w1);
+    g->n0 = (uint32_t)n0;
+    g->n1 = (uint32_t)n1;
+    size_t n = (size_t)n0 * (size_t)n1;
+    if (!reserve(g, n))
+        return SC_ERR_NOMEM;
+    for (int i = 0; i < n0; i++)
+        for (int j = 0; j < n1; j++) {
+            quad_cell *c = &g->cells[(size_t)i * (size_t)n1 + (size_t)j];
+            c->hu = w0 / n0 / 2;
+            c->hv = w1 / n1 / 2;
+            c->u = lo[0] + (2 * i + 1) * c->hu;
+            c->v = lo[1] + (2 * j + 1) * c->hv;
+            c->i = (uint32_t)i;
+            c->j = (uint32_t)j;
+            c->level = 0;
+        }
+    sc_status st =
+        sample_cells(g, g->cells, g->estimate, g->error, g->signature, n, cancel);
+    if (st)
+        return st;
+    g->count = n;
+    return sum_cells(g) ? SC_OK : SC_ERR_NOMEM;
+}
+
+/* Order of cells by descending weight, ties by position in the array. */
+typedef struct ranked {
+    double weight;
+    size_t index;
+} ranked;
+
+static int by_weight(const void *a, const void *b)
+{
+    const ranked *x = a, *y = b;
+    if (x->weight != y->weight)
+        return x->weight > y->weight ? -1 : 1;
+    return x->index < y->index ? -1 : x->index > y->index;
 }
 
 /* Adds to the marked cells (split[0..*count), mark[] set) every cell that
@@ -328,7 +403,7 @@ sc_status quad_refine(quad_grid *g, const double *target, uint64_t max_lines, in
         if (c->hu > g->min_half && c->hv > g->min_half && c->level < QUAD_MAX_LEVEL)
             for (int k = 0; k < k_count; k++)
                 if (target[k] > 0 && g->total_error[k] > target[k])
-                    w += g->error[i * (size_t)k_count + (size_t)k] / target[k];
+                    w += cell_error(g, i, k) / target[k];
         order[splittable].weight = w;
         order[splittable].index = i;
         splittable += w > 0;
@@ -377,10 +452,12 @@ sc_status quad_refine(quad_grid *g, const double *target, uint64_t max_lines, in
     quad_cell *fresh = malloc(n * sizeof *fresh);
     double *estimate = malloc(n * (size_t)k_count * sizeof *estimate);
     double *error = malloc(n * (size_t)k_count * sizeof *error);
-    if (!fresh || !estimate || !error) {
+    uint64_t *signature = malloc(n * sizeof *signature);
+    if (!fresh || !estimate || !error || !signature) {
         free(fresh);
         free(estimate);
         free(error);
+        free(signature);
         free(split);
         return SC_ERR_NOMEM;
     }
@@ -397,7 +474,7 @@ sc_status quad_refine(quad_grid *g, const double *target, uint64_t max_lines, in
             f->level = c->level + 1;
         }
     }
-    sc_status st = sample_cells(g, fresh, estimate, error, n, cancel);
+    sc_status st = sample_cells(g, fresh, estimate, error, signature, n, cancel);
     if (st == SC_OK) {
         size_t values = (size_t)k_count * sizeof(double);
         for (size_t s = 0; s < count; s++)
@@ -409,9 +486,12 @@ sc_status quad_refine(quad_grid *g, const double *target, uint64_t max_lines, in
                        estimate + from * (size_t)k_count, values);
                 memcpy(g->error + to * (size_t)k_count, error + from * (size_t)k_count,
                        values);
+                g->signature[to] = signature[from];
             }
-        sum_cells(g);
+        if (!sum_cells(g))
+            st = SC_ERR_NOMEM;
     }
+    free(signature);
     free(fresh);
     free(estimate);
     free(error);
@@ -424,6 +504,8 @@ void quad_free(quad_grid *g)
     free(g->cells);
     free(g->estimate);
     free(g->error);
+    free(g->jump);
+    free(g->signature);
     free(g->total);
     free(g->total_error);
     memset(g, 0, sizeof *g);

@@ -23,6 +23,17 @@
  * part it misses shrinks with them instead of staying at the first grid's
  * size.
  *
+ * A cell's five lines can all agree while the integrand jumps inside it: a
+ * face seen edge-on along a grid row, between the row of quarter centres
+ * and the cell's edge. The lines' signatures (which surfaces they cross)
+ * catch that: where a cell's signature differs from a neighbour's, the
+ * jump between them lies in the strip between their nearest lines, which
+ * is a quarter of a cell on each side, so the pair's error is at most a
+ * quarter of a cell's area times the difference of the two cells' means;
+ * each cell carries half of that as its error (when larger than its own),
+ * and the refinement follows every edge and silhouette seen in
+ * projection.
+ *
  * Determinism: the lines of one round are sampled in parallel (OpenMP) into
  * an array indexed by line, and everything that adds them up runs serially
  * in the cells' order, so the results do not depend on the thread count.
@@ -36,11 +47,22 @@
 
 #include "spancast/spancast.h"
 
-/* The values of the line through (u, v) into values[0..nvalues); thread is
- * the OpenMP thread number (for per-thread scratch). Returns 0 on failure
- * (out of memory, an unbounded solid), which stops the integration. */
+/* The values of the line through (u, v) into values[0..nvalues), and the
+ * line's signature: a hash of which surfaces bound its spans (leaf, part,
+ * flip of each end, and their number), equal for two lines exactly when
+ * they cross the same surfaces in the same order (up to hash collisions);
+ * thread is the OpenMP thread number (for per-thread scratch). Returns 0
+ * on failure (out of memory, an unbounded solid), which stops the
+ * integration. */
 typedef int (*quad_sample_fn)(void *context, int thread, double u, double v,
-                              double *values);
+                              double *values, uint64_t *signature);
+
+/* Mixes one more number into a signature (for samplers). */
+static inline uint64_t quad_mix(uint64_t h, uint64_t x)
+{
+    h ^= x + 0x9e3779b97f4a7c15ULL + (h << 6) + (h >> 2);
+    return h * 0xff51afd7ed558ccdULL;
+}
 
 typedef struct quad_cell {
     double u, v;    /* centre */
@@ -61,6 +83,10 @@ typedef struct quad_grid {
     quad_cell *cells;    /* leaves of the refinement */
     double *estimate;    /* nvalues per cell: the integral over the cell */
     double *error;       /* nvalues per cell: its error estimate (>= 0) */
+    double *jump;        /* nvalues per cell: the bound from neighbours that
+                            cross other surfaces (see above) */
+    uint64_t *signature; /* per cell: its five lines' signature when they
+                            agree, 0 when they do not */
     size_t count, cap;   /* cells */
     double *total;       /* nvalues: the sums of estimate, then error, over the */
     double *total_error; /* cells, in cell order */
