@@ -155,13 +155,13 @@ group() {
   }
 }
 CSG
-run 1 assembly.json overlaps assembly.csg --json -q --tolerance=1e-3
+run 1 assembly.json overlaps assembly.csg --json -q --tolerance=1e-2
 pycheck '
 o = j["overlaps"]
 assert j["objects"] == 4 and len(o) == 1, j
 assert (o[0]["a"]["index"], o[0]["a"]["node"], o[0]["b"]["index"], o[0]["b"]["line"]) == (1, "group", 4, 19), o[0]
 holds(o[0]["volume"], math.pi * (2.1 ** 2 - 4) * 5)
-assert o[0]["volume"]["error"] < 5e-3 * o[0]["volume"]["value"], o[0]' assembly.json
+assert o[0]["volume"]["error"] < 2e-2 * o[0]["volume"]["value"], o[0]' assembly.json
 
 # ---- compare ----
 
@@ -226,9 +226,9 @@ sed 's/r1 = 2, r2 = 2, center = false)/r1 = 2, r2 = 2, center = false, $fn = 64)
 openscad -o "$work/drilled64.stl" "$work/drilled64.csg" >openscad.log 2>&1 ||
     fail "openscad STL export: $(cat openscad.log)"
 bound=$(python3 -c "import math; print(10 * (math.pi * 4 - 32 * 4 * math.sin(2 * math.pi / 64)) / (1000 - 40 * math.pi))")
-# A tenth of the bound: different.
+# A third of the bound: different.
 run 1 stl.json compare drilled64.csg drilled64.stl --json -q \
-    --tolerance="$(python3 -c "print($bound / 10)")"
+    --tolerance="$(python3 -c "print($bound / 3)")"
 pycheck '
 extra = 10 * (math.pi * 4 - 32 * 4 * math.sin(2 * math.pi / 64))
 holds(j["only_b"], extra)
