@@ -32,7 +32,8 @@ int main(int argc, char **argv)
     std::vector<K::Point_3> points;
     std::vector<std::array<std::size_t, 3>> faces;
     if (!CGAL::IO::read_STL(argv[1], points, faces) || faces.empty()) {
-        std::fprintf(stderr, "meshmeasure: error: cannot read the STL mesh %s\n", argv[1]);
+        std::fprintf(stderr, "meshmeasure: error: cannot read the STL mesh %s\n",
+                     argv[1]);
         return 1;
     }
     PMP::orient_polygon_soup(points, faces);
