@@ -420,6 +420,110 @@ typedef enum sc_where { SC_OUTSIDE = 0, SC_INSIDE = 1, SC_ON = 2 } sc_where;
 sc_status sc_scene_inside(const sc_scene *scene, const double p[3], int *where,
                           sc_error *error);
 
+/* ---- queries: measures, overlaps, comparison ------------------------- */
+
+/* Options of the integrating queries (sc_scene_measure, sc_objects_overlaps,
+ * sc_scene_compare): they integrate over grids of parallel lines along the
+ * three axes, refined where the estimated error is largest until it is
+ * within tolerance (docs/measure.md). */
+typedef struct sc_measure_options {
+    double tolerance;   /* relative error aimed at (default 1e-4) */
+    double density;     /* mass per unit volume, for mass and inertia (default 1) */
+    int threads;        /* 0 (default): all cores; the result does not depend on it */
+    uint64_t max_lines; /* lines per axis before giving up on the tolerance
+                           (default 4,000,000) */
+    /* Called from the calling thread with the fraction done (0..1), as
+     * sc_render_options.progress; NULL: not called. */
+    void (*progress)(void *user, double fraction);
+    void *progress_user;
+    const volatile sig_atomic_t *cancel; /* as sc_render_options.cancel */
+} sc_measure_options;
+
+void sc_measure_options_init(sc_measure_options *options);
+
+/* A measured value and a bound on its error: the true value lies within
+ * value +- error when the integrand has no feature smaller than the grid
+ * resolves (docs/measure.md says how each bound is made). */
+typedef struct sc_estimate {
+    double value;
+    double error;
+} sc_estimate;
+
+typedef struct sc_measure {
+    sc_estimate volume;
+    sc_estimate area;
+    sc_estimate mass;        /* volume * density */
+    sc_estimate centroid[3]; /* centre of mass */
+    /* Inertia tensor about the centroid (mass units times length squared),
+     * I[i][j] = integral of density (|r|^2 delta_ij - r_i r_j) over the solid. */
+    sc_estimate inertia[3][3];
+    sc_estimate principal[3]; /* principal moments, ascending */
+    double axes[3][3];        /* axes[k]: unit axis of principal[k] */
+    sc_estimate box_lo[3];    /* tight bounding box: the sampled extremes, with */
+    sc_estimate box_hi[3];    /* the distance to the tree's outer box as error */
+    double volume_by_axis[3]; /* the volume from the x, y and z lines alone */
+    uint64_t lines;           /* lines cast, all axes */
+    int converged;            /* 1: volume and area reached the tolerance */
+    int threads;              /* threads used */
+} sc_measure;
+
+/* Volume, surface area, centroid, inertia and tight box of the solid. An
+ * empty solid measures 0. Returns SC_ERR_ARGUMENT for an unbounded solid
+ * or bad options, SC_ERR_CANCELLED, SC_ERR_NOMEM. Thread safe. */
+sc_status sc_scene_measure(const sc_scene *scene, const sc_measure_options *options,
+                           sc_measure *out, sc_error *error);
+
+/* One pair of top-level objects whose interiors overlap. */
+typedef struct sc_overlap {
+    size_t a, b;        /* object indices, a < b (sc_objects_location) */
+    sc_estimate volume; /* volume of the intersection */
+    double box_lo[3];   /* box of the intersection, as sampled */
+    double box_hi[3];
+} sc_overlap;
+
+typedef struct sc_objects sc_objects;
+
+/* Loads the top-level objects of a model file, each as a scene of its own
+ * (keeping the transforms above it): the statements at the top of the
+ * file, or, where there is only one, the children of the group, union,
+ * render, color or multmatrix node it is, descending while such a node has
+ * a single child. On success *out belongs to the caller (sc_objects_release). */
+sc_status sc_objects_load(const char *path, const sc_load_options *options,
+                          sc_objects **out, sc_error *error);
+size_t sc_objects_count(const sc_objects *objects);
+const sc_scene *sc_objects_scene(const sc_objects *objects, size_t index);
+sc_location sc_objects_location(const sc_objects *objects, size_t index);
+const char *sc_objects_name(const sc_objects *objects, size_t index); /* node name */
+void sc_objects_release(sc_objects *objects);
+
+/* The pairs of objects whose common interior has a volume (solids that only
+ * touch within the scene tolerance have none), in order of (a, b), into
+ * *pairs (malloc'd, free with free(); NULL when none) and *count. The
+ * volume is integrated to options->tolerance relative to itself (or to a
+ * millionth of the box the pair shares, when smaller). Thread safe. */
+sc_status sc_objects_overlaps(const sc_objects *objects,
+                              const sc_measure_options *options, sc_overlap **pairs,
+                              size_t *count, sc_error *error);
+
+/* Loads a closed mesh file (.stl, ASCII or binary, or .off) as a scene, as
+ * the model import(file = path) would. */
+sc_status sc_scene_load_mesh(const char *path, const sc_load_options *options,
+                             sc_scene **scene, sc_error *error);
+
+typedef struct sc_comparison {
+    sc_estimate volume_a, volume_b;
+    sc_estimate only_a, only_b; /* volume of a minus b, of b minus a */
+    sc_estimate difference;     /* the symmetric difference: only_a + only_b */
+    uint64_t lines;
+} sc_comparison;
+
+/* Volumes of two solids and of their differences, from both span lists
+ * along the same lines; the differences are integrated to
+ * options->tolerance times the mean of the two volumes. Thread safe. */
+sc_status sc_scene_compare(const sc_scene *a, const sc_scene *b,
+                           const sc_measure_options *options, sc_comparison *out,
+                           sc_error *error);
+
 #ifdef __cplusplus
 }
 #endif

@@ -43,4 +43,10 @@ int cli_apply_camera_option(sc_render_options *options, const char *name, size_t
 int cli_spans(int argc, char **argv);
 int cli_inside(int argc, char **argv);
 
+/* The commands of check.c: `spancast measure`, `spancast overlaps` and
+ * `spancast compare`, with the whole argv; return the exit status. */
+int cli_measure(int argc, char **argv);
+int cli_overlaps(int argc, char **argv);
+int cli_compare(int argc, char **argv);
+
 #endif

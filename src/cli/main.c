@@ -8,6 +8,9 @@
  *   spancast info MODEL
  *   spancast spans MODEL --ray=... | --rays=FILE | --pixel=I,J [...]   (query.c)
  *   spancast inside MODEL --point=X,Y,Z | --points=FILE [...]       (query.c)
+ *   spancast measure MODEL [...]                                     (check.c)
+ *   spancast overlaps MODEL [--min-volume=V] [...]                   (check.c)
+ *   spancast compare A B [--diff=PREFIX] [...]                       (check.c)
  *   spancast view MODEL [...]        (spancast-view: view.c and its neighbours)
  *   spancast --help | --version
  *
@@ -70,6 +73,10 @@ static const char usage_text[] =
     "       spancast spans MODEL --ray=OX,OY,OZ,DX,DY,DZ | --rays=FILE | --pixel=I,J\n"
     "                      [--both-ways] [--json] [camera options]\n"
     "       spancast inside MODEL --point=X,Y,Z | --points=FILE [--json]\n"
+    "       spancast measure MODEL [--tolerance=REL] [--density=D]\n"
+    "       spancast overlaps MODEL [--min-volume=V] [--tolerance=REL]\n"
+    "       spancast compare A B [--tolerance=REL] [--max-pixels=N] [--diff=PREFIX]\n"
+    "                        [--imgsize=W,H]\n"
     "       spancast view MODEL [--imgsize=W,H] [--spp=N] [--faithful]\n"
     "       spancast bench accuracy --csv FILE [--plot FILE.png] [--rays N]\n"
     "       spancast bench stability --csv FILE [--dir DIR] [--size N] [--depth N]\n"
@@ -80,6 +87,17 @@ static const char usage_text[] =
     "'spans' lists where rays enter and leave the solid (t in units of the\n"
     "direction given, t >= 0 unless --both-ways, distance inside = dt |d|);\n"
     "'inside' says whether points are in, out or on the surface.\n"
+    "'measure' prints volume, area, centroid, inertia and the tight box, each\n"
+    "with an error bound (--tolerance, relative, default 1e-4); 'overlaps' the\n"
+    "pairs of top-level objects that share volume, to --tolerance (default\n"
+    "1e-3) of it (exit 1 when one shares more than --min-volume, default 0);\n"
+    "'compare' the volume between two models or a model and an .stl/.off mesh,\n"
+    "and mask and depth mismatches from seven views (exit 1 when the volume\n"
+    "passes --tolerance, default 1e-6 of the larger volume, or a view has more\n"
+    "than --max-pixels, default 0, mismatched pixels away from silhouette\n"
+    "edges; --diff=PREFIX writes PREFIXpx.png ... PREFIXdiagonal.png).\n"
+    "These take --threads=N, --json, --faithful and -q (no progress on stderr);\n"
+    "overlaps and compare exit 2 on any error.\n"
     "\n"
     "render options:\n"
     "  -o, --output=FILE      colour image; the format follows the extension\n"
@@ -1155,6 +1173,12 @@ int main(int argc, char **argv)
         return cli_spans(argc, argv);
     if (!strcmp(command, "inside"))
         return cli_inside(argc, argv);
+    if (!strcmp(command, "measure"))
+        return cli_measure(argc, argv);
+    if (!strcmp(command, "overlaps"))
+        return cli_overlaps(argc, argv);
+    if (!strcmp(command, "compare"))
+        return cli_compare(argc, argv);
     cli_args a;
     memset(&a, 0, sizeof a);
     sc_render_options_init(&a.options);
@@ -1166,9 +1190,10 @@ int main(int argc, char **argv)
         return usage_error("missing command before '%s' (try 'spancast --help')",
                            command);
     else
-        return usage_error("unknown command '%s' (expected 'render', 'info', "
-                           "'spans' or 'inside')",
-                           command);
+        return usage_error(
+            "unknown command '%s' (expected 'render', 'info', "
+            "'spans', 'inside', 'measure', 'overlaps', 'compare' or 'view')",
+            command);
     int st = parse_args(&a, argc, argv);
     if (st)
         return st;

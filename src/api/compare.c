@@ -1,0 +1,209 @@
+/* Comparing two solids (sc_scene_compare), and loading a mesh file as a
+ * solid to compare against (sc_scene_load_mesh).
+ *
+ * The volumes of A, B, A minus B and B minus A are integrated over the box
+ * holding both, like the measures (quad.h): along each line both span
+ * lists come from their own trees and the differences from the boolean
+ * sweep with its regularisation (span.h), so each line's part is exact and
+ * slivers thinner than the scene tolerance (coincident faces) count as
+ * nothing. The differences are refined until their errors are within the
+ * tolerance times the mean of the two volumes (at most the larger one),
+ * which is what a regression check asks: "is the change smaller than this
+ * part of the model". Identical solids give zero on every line, and stop
+ * at the first grid.
+ *
+ * A mesh is loaded as the one-line model import(file = "PATH"), so it is
+ * read, checked and cast exactly as an import in a model is (meshes.md).
+ */
+#define _XOPEN_SOURCE 700
+
+#include <errno.h>
+#include <limits.h>
+#include <math.h>
+#include <omp.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "api/quad.h"
+#include "base/arena.h"
+#include "base/error.h"
+#include "build/scene.h"
+#include "csg/csg.h"
+#include "csg/span.h"
+
+sc_status sc_scene_load_mesh(const char *path, const sc_load_options *options,
+                             sc_scene **scene, sc_error *error)
+{
+    err_clear(error);
+    *scene = NULL;
+    if (!path)
+        return err_set(error, SC_ERR_ARGUMENT, NULL, "no file name");
+    char *full = realpath(path, NULL);
+    if (!full)
+        return err_set(error, SC_ERR_IO, NULL, "cannot open '%s': %s", path,
+                       strerror(errno));
+    /* The path as a string of the model grammar: quote and backslash escaped. */
+    size_t n = strlen(full);
+    char *text = malloc(n * 2 + 32);
+    if (!text) {
+        free(full);
+        return err_nomem(error, NULL);
+    }
+    size_t k = 0;
+    k += (size_t)sprintf(text, "import(file = \"");
+    for (size_t i = 0; i < n; i++) {
+        if (full[i] == '"' || full[i] == '\\')
+            text[k++] = '\\';
+        text[k++] = full[i];
+    }
+    k += (size_t)sprintf(text + k, "\");\n");
+    free(full);
+    sc_status st = sc_scene_load_string(path, text, k, options, scene, error);
+    free(text);
+    return st;
+}
+
+enum { C_A, C_B, C_ONLY_A, C_ONLY_B, C_MEAN, C_VALUES };
+
+typedef struct compare_shared {
+    const csg_tree *a, *b;
+    arena *scratch; /* per thread */
+} compare_shared;
+
+typedef struct compare_axis {
+    compare_shared *shared;
+    int axis;
+} compare_axis;
+
+static double length_of(span_list s)
+{
+    double length = 0;
+    for (uint32_t k = 0; k < s.n; k++)
+        length += s.v[k].out.t - s.v[k].in.t;
+    return length;
+}
+
+/* The signature of a span list (quad.h): its ends' surfaces, in order. */
+static uint64_t list_signature(uint64_t h, span_list s)
+{
+    h = quad_mix(h, s.n);
+    for (uint32_t k = 0; k < s.n; k++) {
+        const span_end *ends[2] = {&s.v[k].in, &s.v[k].out};
+        for (int e = 0; e < 2; e++)
+            h = quad_mix(h, ((uint64_t)ends[e]->leaf << 24) |
+                                ((uint64_t)ends[e]->part << 8) | ends[e]->flip);
+    }
+    return h;
+}
+
+static int sample_compare(void *context, int thread, double u, double v, double *values,
+                          uint64_t *signature)
+{
+    const compare_axis *m = context;
+    const compare_shared *s = m->shared;
+    int a = m->axis;
+    double o[3];
+    o[a] = 0;
+    o[(a + 1) % 3] = u;
+    o[(a + 2) % 3] = v;
+    csg_ray r;
+    r.o = v3(o[0], o[1], o[2]);
+    r.d = v3(a == 0, a == 1, a == 2);
+    r.tmin = -INFINITY;
+    r.tmax = INFINITY;
+    arena *scratch = &s->scratch[thread];
+    arena_reset(scratch);
+    span_list sa = {NULL, 0}, sb = {NULL, 0};
+    if ((s->a->root != CSG_EMPTY && !csg_spans(s->a, &r, scratch, &sa)) ||
+        (s->b->root != CSG_EMPTY && !csg_spans(s->b, &r, scratch, &sb)))
+        return 0;
+    double eps = fmax(csg_eps(s->a, r.o, r.d), csg_eps(s->b, r.o, r.d));
+    int oom = 0;
+    span_list only_a = span_combine(SPAN_DIFFERENCE, sa, sb, eps, scratch, &oom);
+    span_list only_b = span_combine(SPAN_DIFFERENCE, sb, sa, eps, scratch, &oom);
+    if (oom)
+        return 0;
+    *signature = list_signature(list_signature(0, sa), sb);
+    values[C_A] = length_of(sa);
+    values[C_B] = length_of(sb);
+    values[C_ONLY_A] = length_of(only_a);
+    values[C_ONLY_B] = length_of(only_b);
+    values[C_MEAN] = (values[C_A] + values[C_B]) / 2;
+    for (int k = 0; k < C_VALUES; k++)
+        if (!isfinite(values[k]))
+            return 0; /* unbounded */
+    return 1;
+}
+
+sc_status sc_scene_compare(const sc_scene *a, const sc_scene *b,
+                           const sc_measure_options *options, sc_comparison *out,
+                           sc_error *error)
+{
+    err_clear(error);
+    if (!a || !b || !options || !out)
+        return err_set(error, SC_ERR_ARGUMENT, NULL, "no scenes, options or result");
+    memset(out, 0, sizeof *out);
+    if (!(options->tolerance > 0 && options->tolerance < 1))
+        return err_set(error, SC_ERR_ARGUMENT, NULL,
+                       "tolerance must lie between 0 and 1 (got %g)", options->tolerance);
+    const csg_tree *ta = scene_tree(a), *tb = scene_tree(b);
+    bbox box = bbox_empty();
+    if (ta->root != CSG_EMPTY)
+        box = bbox_union(box, ta->bounds);
+    if (tb->root != CSG_EMPTY)
+        box = bbox_union(box, tb->bounds);
+    if (bbox_is_empty(&box))
+        return SC_OK;
+    double lo[3] = {box.lo.x, box.lo.y, box.lo.z}, hi[3] = {box.hi.x, box.hi.y, box.hi.z};
+    for (int i = 0; i < 3; i++) {
+        if (!isfinite(lo[i]) || !isfinite(hi[i]))
+            return err_set(error, SC_ERR_ARGUMENT, NULL,
+                           "a solid is unbounded: it has no volume to compare");
+        if (!(hi[i] > lo[i]))
+            return SC_OK;
+    }
+    int threads = options->threads > 0 ? options->threads : omp_get_max_threads();
+    compare_shared shared = {ta, tb, calloc((size_t)threads, sizeof(arena))};
+    if (!shared.scratch)
+        return err_nomem(error, NULL);
+    for (int k = 0; k < threads; k++)
+        arena_init(&shared.scratch[k], 16 * 1024);
+    compare_axis axes[3] = {{&shared, 0}, {&shared, 1}, {&shared, 2}};
+    void *contexts[3] = {&axes[0], &axes[1], &axes[2]};
+    /* The differences are refined against the mean of the two volumes,
+     * which is at most the larger one (and is it when they agree); the
+     * volumes themselves are only reported. */
+    int rule[C_VALUES] = {QUAD_FREE, QUAD_FREE, QUAD_RELATIVE(C_MEAN),
+                          QUAD_RELATIVE(C_MEAN), QUAD_FREE};
+    double floor[C_VALUES] = {0, 0, 0, 0, 0};
+    quad_grid grids[3];
+    int converged = 0;
+    sc_measure_options o = *options;
+    o.threads = threads;
+    sc_status st = quad_integrate3(lo, hi, C_VALUES, rule, floor, sample_compare,
+                                   contexts, &o, grids, &converged);
+    if (st == SC_OK) {
+        out->volume_a = quad_combine(grids, C_A);
+        out->volume_b = quad_combine(grids, C_B);
+        out->only_a = quad_combine(grids, C_ONLY_A);
+        out->only_b = quad_combine(grids, C_ONLY_B);
+        out->difference.value = out->only_a.value + out->only_b.value;
+        out->difference.error = out->only_a.error + out->only_b.error;
+        out->lines = grids[0].lines + grids[1].lines + grids[2].lines;
+    }
+    int failed = grids[0].failed || grids[1].failed || grids[2].failed;
+    for (int g = 0; g < 3; g++)
+        quad_free(&grids[g]);
+    for (int k = 0; k < threads; k++)
+        arena_free(&shared.scratch[k]);
+    free(shared.scratch);
+    if (st == SC_ERR_CANCELLED)
+        return err_set(error, SC_ERR_CANCELLED, NULL, "comparison cancelled");
+    if (st == SC_ERR_ARGUMENT && failed)
+        return err_set(error, SC_ERR_ARGUMENT, NULL,
+                       "a line through the solids is unbounded or ran out of memory");
+    if (st)
+        return err_nomem(error, NULL);
+    return SC_OK;
+}

@@ -1,0 +1,405 @@
+/* Interference between the top-level objects of a model (sc_objects_*):
+ * which pairs share interior, how much, and where.
+ *
+ * The objects are found in the syntax tree: the statements at the top of
+ * the file, or, when there is only one, the children of the grouping node
+ * it is (a module call exports as one group(), a translated assembly as one
+ * multmatrix), descending while such a node has a single child. Each
+ * object becomes a scene of its own, built from the whole file with every
+ * other object disabled, as the '*' modifier would: the transforms, colours
+ * and $fn above it stay what they are in the model.
+ *
+ * The overlap of a pair is the volume of A intersect B, integrated like
+ * the measures (quad.h) over the box the two objects' boxes share: along
+ * each line both span lists are intersected by the boolean sweep with its
+ * regularisation (span.h), so solids that only touch within the scene
+ * tolerance leave nothing, and the overlap is exact per line.
+ */
+#include <math.h>
+#include <omp.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "api/quad.h"
+#include "base/arena.h"
+#include "base/error.h"
+#include "build/build.h"
+#include "build/scene.h"
+#include "csg/csg.h"
+#include "csg/span.h"
+#include "formats/file.h"
+#include "syntax/parse.h"
+
+struct sc_objects {
+    char *path;         /* the file name every location points to */
+    parse_tree *syntax; /* kept for the objects' names and positions */
+    size_t count;
+    const parse_node **nodes;
+    sc_scene **scenes;
+};
+
+/* A node that unions its children and may stand for a group of objects. */
+static int is_grouping(const parse_node *n)
+{
+    static const char *const names[] = {"group", "union", "render", "color",
+                                        "multmatrix"};
+    for (size_t k = 0; k < sizeof names / sizeof names[0]; k++)
+        if (!strcmp(n->name, names[k]))
+            return 1;
+    return 0;
+}
+
+/* A node that is part of the solid (not disabled, not background). */
+static int counts(const parse_node *n)
+{
+    return !(n->modifiers & (PARSE_MOD_DISABLE | PARSE_MOD_BACKGROUND));
+}
+
+static size_t counted(const parse_node *first)
+{
+    size_t n = 0;
+    for (const parse_node *c = first; c; c = c->next)
+        n += counts(c);
+    return n;
+}
+
+static const parse_node *only_counted(const parse_node *first)
+{
+    for (const parse_node *c = first; c; c = c->next)
+        if (counts(c))
+            return c;
+    return NULL;
+}
+
+void sc_objects_release(sc_objects *objects)
+{
+    if (!objects)
+        return;
+    for (size_t k = 0; k < objects->count; k++)
+        sc_scene_release(objects->scenes ? objects->scenes[k] : NULL);
+    free(objects->scenes);
+    free(objects->nodes);
+    parse_tree_free(objects->syntax);
+    free(objects->path);
+    free(objects);
+}
+
+static char *copy_string(const char *s)
+{
+    size_t n = strlen(s) + 1;
+    char *c = malloc(n);
+    if (c)
+        memcpy(c, s, n);
+    return c;
+}
+
+/* Builds object k alone: every other object disabled for the build. */
+static sc_status build_object(sc_objects *o, size_t k, int faithful, sc_error *error)
+{
+    unsigned *saved = malloc(o->count * sizeof *saved);
+    if (!saved)
+        return err_nomem(error, NULL);
+    for (size_t j = 0; j < o->count; j++) {
+        parse_node *n = (parse_node *)o->nodes[j]; /* the tree is ours */
+        saved[j] = n->modifiers;
+        if (j != k)
+            n->modifiers |= PARSE_MOD_DISABLE;
+    }
+    sc_scene *s = calloc(1, sizeof *s);
+    sc_status st = SC_OK;
+    if (!s || !(s->path = copy_string(o->path)))
+        st = err_nomem(error, NULL);
+    else
+        st = build_scene(o->syntax, faithful, &s->tree, &s->look, &s->warnings,
+                         &s->warning_count, error);
+    for (size_t j = 0; j < o->count; j++)
+        ((parse_node *)o->nodes[j])->modifiers = saved[j];
+    free(saved);
+    if (st) {
+        sc_scene_release(s);
+        return st;
+    }
+    o->scenes[k] = s;
+    return SC_OK;
+}
+
+sc_status sc_objects_load(const char *path, const sc_load_options *options,
+                          sc_objects **out, sc_error *error)
+{
+    err_clear(error);
+    *out = NULL;
+    if (!path)
+        return err_set(error, SC_ERR_ARGUMENT, NULL, "no file name");
+    sc_objects *o = calloc(1, sizeof *o);
+    if (!o || !(o->path = copy_string(path))) {
+        free(o);
+        return err_nomem(error, NULL);
+    }
+    const char *why = NULL;
+    size_t length = 0;
+    char *text = file_read(path, (size_t)1 << 31, &length, &why);
+    if (!text) {
+        sc_objects_release(o);
+        return err_set(error, SC_ERR_IO, NULL, "cannot read '%s': %s", path, why);
+    }
+    sc_status st = parse_text(o->path, text, length, &o->syntax, error);
+    free(text);
+    if (st) {
+        sc_objects_release(o);
+        return st;
+    }
+    const parse_node *first = o->syntax->first;
+    while (counted(first) == 1) {
+        const parse_node *n = only_counted(first);
+        if (!is_grouping(n) || !n->first_child)
+            break;
+        first = n->first_child;
+    }
+    size_t count = counted(first);
+    o->nodes = calloc(count ? count : 1, sizeof *o->nodes);
+    o->scenes = calloc(count ? count : 1, sizeof *o->scenes);
+    if (!o->nodes || !o->scenes) {
+        sc_objects_release(o);
+        return err_nomem(error, NULL);
+    }
+    for (const parse_node *c = first; c; c = c->next)
+        if (counts(c))
+            o->nodes[o->count++] = c;
+    for (size_t k = 0; k < o->count; k++) {
+        st = build_object(o, k, options && options->faithful, error);
+        if (st) {
+            sc_objects_release(o);
+            return st;
+        }
+    }
+    *out = o;
+    return SC_OK;
+}
+
+size_t sc_objects_count(const sc_objects *objects)
+{
+    return objects ? objects->count : 0;
+}
+
+const sc_scene *sc_objects_scene(const sc_objects *objects, size_t index)
+{
+    return objects && index < objects->count ? objects->scenes[index] : NULL;
+}
+
+sc_location sc_objects_location(const sc_objects *objects, size_t index)
+{
+    sc_location none = {NULL, 0, 0};
+    return objects && index < objects->count ? objects->nodes[index]->loc : none;
+}
+
+const char *sc_objects_name(const sc_objects *objects, size_t index)
+{
+    return objects && index < objects->count ? objects->nodes[index]->name : NULL;
+}
+
+/* ---- the overlap of a pair ---- */
+
+typedef struct pair_shared {
+    const csg_tree *a, *b;
+    arena *scratch;   /* per thread */
+    double (*box)[6]; /* per thread: the ends of the common spans */
+} pair_shared;
+
+typedef struct pair_axis {
+    pair_shared *shared;
+    int axis;
+} pair_axis;
+
+/* The signature of a span list (quad.h): its ends' surfaces, in order. */
+static uint64_t list_signature(uint64_t h, span_list s)
+{
+    h = quad_mix(h, s.n);
+    for (uint32_t k = 0; k < s.n; k++) {
+        const span_end *ends[2] = {&s.v[k].in, &s.v[k].out};
+        for (int e = 0; e < 2; e++)
+            h = quad_mix(h, ((uint64_t)ends[e]->leaf << 24) |
+                                ((uint64_t)ends[e]->part << 8) | ends[e]->flip);
+    }
+    return h;
+}
+
+static int sample_pair(void *context, int thread, double u, double v, double *values,
+                       uint64_t *signature)
+{
+    const pair_axis *m = context;
+    const pair_shared *s = m->shared;
+    int a = m->axis;
+    double o[3];
+    o[a] = 0;
+    o[(a + 1) % 3] = u;
+    o[(a + 2) % 3] = v;
+    csg_ray r;
+    r.o = v3(o[0], o[1], o[2]);
+    r.d = v3(a == 0, a == 1, a == 2);
+    r.tmin = -INFINITY;
+    r.tmax = INFINITY;
+    arena *scratch = &s->scratch[thread];
+    arena_reset(scratch);
+    span_list sa, sb;
+    if (!csg_spans(s->a, &r, scratch, &sa) || !csg_spans(s->b, &r, scratch, &sb))
+        return 0;
+    double eps = fmax(csg_eps(s->a, r.o, r.d), csg_eps(s->b, r.o, r.d));
+    int oom = 0;
+    span_list both = span_combine(SPAN_INTERSECTION, sa, sb, eps, scratch, &oom);
+    if (oom)
+        return 0;
+    *signature = list_signature(0, both);
+    double length = 0;
+    double *box = s->box[thread];
+    for (uint32_t k = 0; k < both.n; k++) {
+        double t0 = both.v[k].in.t, t1 = both.v[k].out.t;
+        if (!isfinite(t0) || !isfinite(t1))
+            return 0;
+        length += t1 - t0;
+        for (int e = 0; e < 2; e++) {
+            double p[3] = {o[0], o[1], o[2]};
+            p[a] = e ? t1 : t0;
+            for (int i = 0; i < 3; i++) {
+                box[i] = fmin(box[i], p[i]);
+                box[3 + i] = fmax(box[3 + i], p[i]);
+            }
+        }
+    }
+    values[0] = length;
+    return 1;
+}
+
+/* The overlap of trees a and b within the box lo..hi into *out; *found is
+ * 0 when they share no volume. */
+static sc_status overlap_pair(const csg_tree *ta, const csg_tree *tb, const double lo[3],
+                              const double hi[3], const sc_measure_options *options,
+                              int threads, sc_overlap *out, int *found)
+{
+    pair_shared shared = {ta, tb, NULL, NULL};
+    shared.scratch = calloc((size_t)threads, sizeof *shared.scratch);
+    shared.box = malloc((size_t)threads * sizeof *shared.box);
+    if (!shared.scratch || !shared.box) {
+        free(shared.scratch);
+        free(shared.box);
+        return SC_ERR_NOMEM;
+    }
+    for (int k = 0; k < threads; k++) {
+        arena_init(&shared.scratch[k], 16 * 1024);
+        for (int i = 0; i < 3; i++) {
+            shared.box[k][i] = INFINITY;
+            shared.box[k][3 + i] = -INFINITY;
+        }
+    }
+    pair_axis axes[3] = {{&shared, 0}, {&shared, 1}, {&shared, 2}};
+    void *contexts[3] = {&axes[0], &axes[1], &axes[2]};
+    int rule[1] = {QUAD_EACH};
+    double floor[1] = {1e-6 * (hi[0] - lo[0]) * (hi[1] - lo[1]) * (hi[2] - lo[2])};
+    quad_grid grids[3];
+    int converged;
+    sc_measure_options o = *options;
+    o.threads = threads;
+    o.progress = NULL;
+    sc_status st = quad_integrate3(lo, hi, 1, rule, floor, sample_pair, contexts, &o,
+                                   grids, &converged);
+    *found = 0;
+    if (st == SC_OK) {
+        out->volume = quad_combine(grids, 0);
+        double seen[6] = {INFINITY, INFINITY, INFINITY, -INFINITY, -INFINITY, -INFINITY};
+        for (int k = 0; k < threads; k++)
+            for (int i = 0; i < 3; i++) {
+                seen[i] = fmin(seen[i], shared.box[k][i]);
+                seen[3 + i] = fmax(seen[3 + i], shared.box[k][3 + i]);
+            }
+        *found = out->volume.value > 0 && seen[0] <= seen[3];
+        for (int i = 0; i < 3; i++) {
+            out->box_lo[i] = *found ? seen[i] : 0;
+            out->box_hi[i] = *found ? seen[3 + i] : 0;
+        }
+    }
+    if (st == SC_ERR_ARGUMENT && (grids[0].failed || grids[1].failed || grids[2].failed))
+        st = SC_ERR_NOMEM; /* bounded trees: the sampler fails only for memory */
+    for (int a = 0; a < 3; a++)
+        quad_free(&grids[a]);
+    for (int k = 0; k < threads; k++)
+        arena_free(&shared.scratch[k]);
+    free(shared.scratch);
+    free(shared.box);
+    return st;
+}
+
+sc_status sc_objects_overlaps(const sc_objects *objects,
+                              const sc_measure_options *options, sc_overlap **pairs,
+                              size_t *count, sc_error *error)
+{
+    err_clear(error);
+    *pairs = NULL;
+    *count = 0;
+    if (!objects || !options)
+        return err_set(error, SC_ERR_ARGUMENT, NULL, "no objects or no options");
+    if (!(options->tolerance > 0 && options->tolerance < 1))
+        return err_set(error, SC_ERR_ARGUMENT, NULL,
+                       "tolerance must lie between 0 and 1 (got %g)", options->tolerance);
+    int threads = options->threads > 0 ? options->threads : omp_get_max_threads();
+    size_t n = objects->count, cap = 0, total = n * (n - (n > 0)) / 2, done = 0;
+    sc_overlap *list = NULL;
+    for (size_t i = 0; i < n; i++)
+        for (size_t j = i + 1; j < n; j++, done++) {
+            if (options->progress && total)
+                options->progress(options->progress_user, (double)done / (double)total);
+            const csg_tree *ta = scene_tree(objects->scenes[i]);
+            const csg_tree *tb = scene_tree(objects->scenes[j]);
+            if (ta->root == CSG_EMPTY || tb->root == CSG_EMPTY)
+                continue;
+            double lo[3] = {fmax(ta->bounds.lo.x, tb->bounds.lo.x),
+                            fmax(ta->bounds.lo.y, tb->bounds.lo.y),
+                            fmax(ta->bounds.lo.z, tb->bounds.lo.z)};
+            double hi[3] = {fmin(ta->bounds.hi.x, tb->bounds.hi.x),
+                            fmin(ta->bounds.hi.y, tb->bounds.hi.y),
+                            fmin(ta->bounds.hi.z, tb->bounds.hi.z)};
+            /* Boxes that do not share a volume larger than the tolerance of
+             * the scenes cannot hold an overlap. */
+            double eps = 1e-9 * fmax(ta->scale, tb->scale);
+            int thin = 0;
+            for (int k = 0; k < 3; k++) {
+                if (!isfinite(lo[k]) || !isfinite(hi[k])) {
+                    free(list);
+                    *count = 0;
+                    return err_set(error, SC_ERR_ARGUMENT, NULL,
+                                   "object %zu or %zu is unbounded", i + 1, j + 1);
+                }
+                thin |= !(hi[k] - lo[k] > eps);
+            }
+            if (thin)
+                continue;
+            sc_overlap pair;
+            memset(&pair, 0, sizeof pair);
+            int found = 0;
+            sc_status st = overlap_pair(ta, tb, lo, hi, options, threads, &pair, &found);
+            if (st) {
+                free(list);
+                *count = 0;
+                if (st == SC_ERR_CANCELLED)
+                    return err_set(error, st, NULL, "overlap search cancelled");
+                return err_nomem(error, NULL);
+            }
+            if (!found)
+                continue;
+            pair.a = i;
+            pair.b = j;
+            if (*count == cap) {
+                cap = cap ? cap * 2 : 8;
+                sc_overlap *p = realloc(list, cap * sizeof *p);
+                if (!p) {
+                    free(list);
+                    *count = 0;
+                    return err_nomem(error, NULL);
+                }
+                list = p;
+            }
+            list[(*count)++] = pair;
+        }
+    if (options->progress)
+        options->progress(options->progress_user, 1);
+    *pairs = list;
+    return SC_OK;
+}

@@ -1,0 +1,243 @@
+# The checking commands, `spancast measure`, `spancast overlaps` and
+# `spancast compare`, end to end: every estimate against the analytic value
+# it must hold within its printed error, exit statuses, JSON parsed by
+# Python, results that do not depend on --threads, and the exact error
+# messages. The comparison with an STL export needs OpenSCAD (the last
+# part; skipped without it).
+#
+# Run as: bash cli_check.sh <path-to-spancast> <source-dir> <work-dir>
+. "$(dirname "$0")/testlib.sh"
+require_tools python3
+
+# A 10 mm cube drilled along z through (5, 5) with radius 2.
+cat >drilled.csg <<'CSG'
+difference() {
+  cube(size = [10, 10, 10], center = false);
+  multmatrix([[1, 0, 0, 5], [0, 1, 0, 5], [0, 0, 1, -1], [0, 0, 0, 1]]) {
+    cylinder(h = 12, r1 = 2, r2 = 2, center = false);
+  }
+}
+CSG
+# The same with the hole moved 0.1 mm along x.
+sed 's/\[1, 0, 0, 5\], \[0, 1, 0, 5\]/[1, 0, 0, 5.1], [0, 1, 0, 5]/' drilled.csg >moved.csg
+
+# pycheck 'PYTHON' FILE: runs the Python statements with j = the JSON in
+# FILE; a failed assert is a failure of this test. holds(e, x) says that
+# the estimate e = {"value", "error"} holds x.
+pycheck() {
+    check
+    if ! python3 -c "import json, math, sys
+j = json.load(open(sys.argv[1]))
+def holds(e, x):
+    assert abs(e['value'] - x) <= e['error'], (e, x)
+$1" "$2"; then
+        fail "python check on $2: $1"
+    fi
+}
+
+# run RC FILE ARGS...: runs spancast ARGS with stdout to FILE and expects
+# exit status RC.
+run() {
+    local want=$1 out=$2
+    shift 2
+    check
+    "$bin" "$@" >"$out" 2>err.txt
+    local rc=$?
+    [ "$rc" = "$want" ] || fail "spancast $*: exit $rc (want $want): $(cat err.txt)"
+}
+
+# ---- measure ----
+
+run 0 measure.json measure drilled.csg --json -q
+pycheck '
+pi = math.pi
+holds(j["volume"], 1000 - 40 * pi)
+holds(j["area"], 600 - 8 * pi + 40 * pi)
+for c in j["centroid"]:
+    holds(c, 5)
+mc, cube = 40 * pi, 1000 * 200 / 12
+for e, x in zip(j["principal_moments"], [cube - mc * 112 / 12] * 2 + [cube - mc * 2]):
+    holds(e, x)
+assert j["volume"]["error"] < 3e-3 * 1000 and j["converged"], j["volume"]
+for e in j["box_min"]:
+    holds(e, 0)
+for e in j["box_max"]:
+    holds(e, 10)' measure.json
+check
+[ ! -s err.txt ] || fail "measure -q wrote to stderr: $(cat err.txt)"
+
+run 0 measure.txt measure drilled.csg
+check
+grep -q '^volume  *874\.[0-9]* +- ' measure.txt || fail "measure text: $(cat measure.txt)"
+check
+grep -q '^spancast: measured drilled.csg in [0-9.]* s ([0-9]* threads)$' err.txt ||
+    fail "measure summary line: $(cat err.txt)"
+
+# Density scales mass and inertia; one thread or three give the same bytes.
+run 0 dense.json measure drilled.csg --json -q --density=7.85e-3 --tolerance=1e-3 --threads=1
+run 0 dense3.json measure drilled.csg --json -q --density=7.85e-3 --tolerance=1e-3 --threads=3
+check
+cmp -s dense.json dense3.json || fail "measure differs between 1 and 3 threads"
+pycheck '
+holds(j["mass"], 7.85e-3 * (1000 - 40 * math.pi))
+assert abs(j["mass"]["value"] - 7.85e-3 * j["volume"]["value"]) < 1e-12 * j["mass"]["value"]' dense.json
+
+# ---- overlaps ----
+
+# Two boxes overlapping in [8, 10] x [7, 10] x [6, 10] (24 mm^3), and a
+# third that shares the face x = 10 with the first and overlaps the second
+# in [10, 13] x [7, 10] x [6, 10] (36 mm^3).
+cat >boxes.csg <<'CSG'
+group() {
+  cube(size = [10, 10, 10]);
+  multmatrix([[1, 0, 0, 8], [0, 1, 0, 7], [0, 0, 1, 6], [0, 0, 0, 1]]) {
+    cube(size = [5, 5, 5]);
+  }
+  multmatrix([[1, 0, 0, 10], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]) {
+    cube(size = [4, 10, 10]);
+  }
+}
+CSG
+run 1 boxes.json overlaps boxes.csg --json -q
+pycheck '
+o = j["overlaps"]
+assert j["objects"] == 3 and len(o) == 2, j
+assert (o[0]["a"]["index"], o[0]["b"]["index"]) == (1, 2), o[0]
+assert (o[1]["a"]["index"], o[1]["b"]["index"]) == (2, 3), o[1]
+assert (o[0]["a"]["line"], o[0]["a"]["column"], o[0]["b"]["line"]) == (2, 3, 3), o[0]
+holds(o[0]["volume"], 24)
+holds(o[1]["volume"], 36)
+assert max(abs(a - b) for a, b in zip(o[0]["box_min"] + o[0]["box_max"], [8, 7, 6, 10, 10, 10])) < 1e-9, o[0]
+assert j["above_min_volume"] == 2' boxes.json
+run 1 boxes.txt overlaps boxes.csg -q
+check
+grep -q '^overlap: boxes.csg:2:3 (cube, object 1) and boxes.csg:3:3 (multmatrix, object 2): volume 24 +- ' boxes.txt ||
+    fail "overlaps text: $(cat boxes.txt)"
+# Below --min-volume: listed, exit 0.
+run 0 boxes-min.txt overlaps boxes.csg -q --min-volume=40
+
+# Two cubes that only share a face.
+cat >touching.csg <<'CSG'
+cube(size = [10, 10, 10]);
+multmatrix([[1, 0, 0, 10], [0, 1, 0, 2], [0, 0, 1, 3], [0, 0, 0, 1]]) {
+  cube(size = [4, 4, 4]);
+}
+CSG
+run 0 touching.txt overlaps touching.csg -q
+check
+[ "$(cat touching.txt)" = "$(printf '2 top-level objects\nno overlaps')" ] ||
+    fail "touching cubes: $(cat touching.txt)"
+
+# A drilled plate (a module call: one group) with three bolts: one with
+# clearance in its hole, one resting on the plate's top face, one 0.1 mm
+# too thick for its hole, which overlaps the plate by pi (2.1^2 - 2^2) 5.
+cat >assembly.csg <<'CSG'
+group() {
+  group() {
+    difference() {
+      cube(size = [30, 10, 5]);
+      multmatrix([[1, 0, 0, 5], [0, 1, 0, 5], [0, 0, 1, -1], [0, 0, 0, 1]]) {
+        cylinder(h = 7, r1 = 2, r2 = 2);
+      }
+      multmatrix([[1, 0, 0, 25], [0, 1, 0, 5], [0, 0, 1, -1], [0, 0, 0, 1]]) {
+        cylinder(h = 7, r1 = 2, r2 = 2);
+      }
+    }
+  }
+  multmatrix([[1, 0, 0, 5], [0, 1, 0, 5], [0, 0, 1, -3], [0, 0, 0, 1]]) {
+    cylinder(h = 12, r1 = 1.9, r2 = 1.9);
+  }
+  multmatrix([[1, 0, 0, 15], [0, 1, 0, 5], [0, 0, 1, 5], [0, 0, 0, 1]]) {
+    cylinder(h = 4, r1 = 2, r2 = 2);
+  }
+  multmatrix([[1, 0, 0, 25], [0, 1, 0, 5], [0, 0, 1, -3], [0, 0, 0, 1]]) {
+    cylinder(h = 12, r1 = 2.1, r2 = 2.1);
+  }
+}
+CSG
+run 1 assembly.json overlaps assembly.csg --json -q --tolerance=1e-2
+pycheck '
+o = j["overlaps"]
+assert j["objects"] == 4 and len(o) == 1, j
+assert (o[0]["a"]["index"], o[0]["a"]["node"], o[0]["b"]["index"], o[0]["b"]["line"]) == (1, "group", 4, 19), o[0]
+holds(o[0]["volume"], math.pi * (2.1 ** 2 - 4) * 5)
+assert o[0]["volume"]["error"] < 2e-2 * o[0]["volume"]["value"], o[0]' assembly.json
+
+# ---- compare ----
+
+run 0 self.txt compare drilled.csg drilled.csg -q
+check
+tail -n 1 self.txt | grep -qx same || fail "compare with itself: $(cat self.txt)"
+
+# The hole moved 0.1 mm: the symmetric difference is twice the circle less
+# the lens two circles of radius 2 with centres 0.1 apart share, over the
+# height 10.
+run 1 moved.json compare drilled.csg moved.csg --json -q --diff=diff-
+pycheck '
+r, d = 2.0, 0.1
+lens = 2 * r * r * math.acos(d / (2 * r)) - d / 2 * math.sqrt(4 * r * r - d * d)
+holds(j["only_a"], 10 * (math.pi * r * r - lens))
+holds(j["only_b"], 10 * (math.pi * r * r - lens))
+holds(j["symmetric_difference"], 20 * (math.pi * r * r - lens))
+assert not j["same"]
+v = {x["view"]: x for x in j["views"]}
+assert v["+x"]["mask_mismatch"] == 0 and v["diagonal"]["depth_mismatch"] > 0, v' moved.json
+for view in px nx py ny pz nz diagonal; do
+    check
+    [ -s "diff-$view.png" ] || fail "compare --diff wrote no diff-$view.png"
+done
+
+# Errors: a bad option and a file that does not load exit 2.
+expect() {
+    local want_rc=$1 want_err=$2
+    shift 2
+    check
+    "$bin" "$@" >out.txt 2>err.txt
+    local rc=$?
+    if [ "$rc" != "$want_rc" ] || [ "$(cat err.txt)" != "$want_err" ]; then
+        fail "spancast $*: exit $rc (want $want_rc), stderr '$(cat err.txt)' (want '$want_err')"
+    fi
+    if [ -s out.txt ]; then
+        fail "spancast $*: wrote to stdout on an error: $(cat out.txt)"
+    fi
+}
+printf 'cube(1;\n' >bad.csg
+expect 2 "spancast: error: --tolerance expects a relative error between 0 and 1" measure drilled.csg --tolerance=2
+expect 2 "spancast: error: --density expects a positive number" measure drilled.csg --density=-1
+expect 2 "spancast: error: option '--min-volume' does not apply to 'measure'" measure drilled.csg --min-volume=1
+expect 2 "spancast: error: option '--density' does not apply to 'compare'" compare drilled.csg moved.csg --density=1
+expect 2 "spancast: error: compare expects two models: A B" compare drilled.csg
+expect 2 "spancast: error: unexpected argument 'x.csg'" measure drilled.csg x.csg
+expect 1 "spancast: error: cannot open 'missing.csg': No such file or directory" measure missing.csg
+expect 2 "spancast: error: cannot read 'missing.csg': No such file or directory" overlaps missing.csg
+expect 2 "bad.csg:1:7: error: expected ')' (to close '(' at line 1)" overlaps bad.csg
+expect 2 "spancast: error: cannot open 'missing.csg': No such file or directory" compare drilled.csg missing.csg
+expect 2 "spancast: error: cannot open 'missing.stl': No such file or directory" compare drilled.csg missing.stl
+expect 2 "spancast: error: overlaps reads the .csg file OpenSCAD writes (openscad -o model.csg model.scad)" overlaps part.scad
+
+# ---- against OpenSCAD's STL export ----
+
+command -v openscad >/dev/null || skip "openscad is not installed"
+# The hole with 64 sides: the mesh's hole is the polygon inscribed in the
+# circle, so the mesh has 10 (pi r^2 - 32 r^2 sin(2 pi / 64)) more volume
+# and nothing less.
+sed 's/r1 = 2, r2 = 2, center = false)/r1 = 2, r2 = 2, center = false, $fn = 64)/' \
+    drilled.csg >drilled64.csg
+openscad -o "$work/drilled64.stl" "$work/drilled64.csg" >openscad.log 2>&1 ||
+    fail "openscad STL export: $(cat openscad.log)"
+bound=$(python3 -c "import math; print(10 * (math.pi * 4 - 32 * 4 * math.sin(2 * math.pi / 64)) / (1000 - 40 * math.pi))")
+# A third of the bound: different.
+run 1 stl.json compare drilled64.csg drilled64.stl --json -q \
+    --tolerance="$(python3 -c "print($bound / 3)")"
+pycheck '
+extra = 10 * (math.pi * 4 - 32 * 4 * math.sin(2 * math.pi / 64))
+holds(j["only_b"], extra)
+assert j["only_a"]["value"] < 1e-3 * extra, j["only_a"]
+assert not j["same"]' stl.json
+# Within the bound (and a fifth more for the hole's 6-digit numbers): the same.
+run 0 stl.txt compare drilled64.csg drilled64.stl -q --tolerance="$(python3 -c "print($bound * 1.2)")"
+check
+tail -n 1 stl.txt | grep -qx same || fail "compare with the STL within its bound: $(cat stl.txt)"
+
+echo "$checks checks, $fails failures"
+[ "$fails" = 0 ]
