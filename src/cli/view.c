@@ -540,7 +540,7 @@ static const char *view_format(const viewer *v, char *buf, size_t size)
     for (int k = 0; k < look->section_count; k++)
         append(buf, size, " --section=%.17g,%.17g,%.17g,%.17g", look->section[k][0],
                look->section[k][1], look->section[k][2], look->section[k][3]);
-    if (look->section_style == SC_SECTION_HATCH)
+    if (look->section_count && look->section_style == SC_SECTION_HATCH)
         append(buf, size, " --section-style=hatch");
     if (look->ao_samples)
         append(buf, size, " --ao=%d", look->ao_samples);
