@@ -1,13 +1,19 @@
 # spancast view and spancast render --watch, end to end.
 #
-# Without a display, view fails with a clear error and exit 1. Then, under
-# Xvfb (xvfb-run), the viewer is driven with real input events (xdotool)
-# and its window captured (ImageMagick's import): a drag changes the image,
-# P/O switch the projection and Ctrl+3 draws the crosshairs, Ctrl+S writes
-# a screenshot that equals `spancast render` with the printed options pixel
-# for pixel, a click prints what the ray hit, rewriting the model makes the
-# new geometry appear with the camera kept, a broken file keeps the old
-# image and shows its error (title, red frame, stderr), and Ctrl+Q quits.
+# Without a display, view fails with a clear error and exit 1, and render's
+# preview options are refused with render's own messages. Then, under Xvfb
+# (xvfb-run), the viewer is driven with real input events (xdotool) and
+# its window captured (ImageMagick's import): a drag changes the image, P/O
+# switch the projection; Ctrl+3 (the renderer's crosshairs), Ctrl+1
+# (edges), Ctrl+2 (axes and scales), X (a section plane) and A (ambient
+# occlusion) each change the image and put their render option in the
+# title, and pressed again restore both; C picks the next colour scheme;
+# Ctrl+S writes a screenshot with edges, the scheme and a hatched section
+# (--section-style on the command line) that equals `spancast render` with
+# the printed options pixel for pixel; a click prints what the ray hit,
+# rewriting the model makes the new geometry appear with the camera kept,
+# a broken file keeps the old image and shows its error (title, red frame,
+# stderr), and Ctrl+Q quits.
 # render --watch renders again when the model or a file a .scad includes
 # changes, keeps the last image when the model breaks, and dies of SIGINT.
 #
@@ -56,6 +62,17 @@ if [ -z "${SPANCAST_VIEW_XVFB:-}" ]; then
     "$bin" view m.csg --spp=0 >out.txt 2>err.txt
     st=$?
     [ "$st" = 2 ] || fail "--spp=0: exit $st, expected 2"
+    # render's preview options, read with render's checks and messages
+    checks=$((checks + 1))
+    for option in --colorscheme=Nope --view=edges,bogus --section=1,2 --lighting=x \
+        --view-preset=up --ao=-1 --edge-width=17; do
+        "$bin" view m.csg "$option" >out.txt 2>err.txt
+        st=$?
+        [ "$st" = 2 ] || fail "view $option: exit $st, expected 2"
+        "$bin" render m.csg -o m.png "$option" >out.txt 2>render.txt
+        cmp -s err.txt render.txt ||
+            fail "view $option: '$(cat err.txt)', render says '$(cat render.txt)'"
+    done
 
     # ---- render --watch: a .csg
     checks=$((checks + 1))
@@ -190,7 +207,8 @@ difference() {
   }
 }
 EOF
-"$bin" view m.csg --imgsize=$W,$H --spp=2 --verbose >view.out 2>view.err &
+"$bin" view m.csg --imgsize=$W,$H --spp=2 --verbose --section-style hatch >view.out \
+    2>view.err &
 pid=$!
 wid=$(timeout 60 xdotool search --sync --name '^spancast view' | head -n 1)
 if [ -z "$wid" ]; then
@@ -237,32 +255,63 @@ capture c.png
 n=$(differ b.png c.png)
 [ "$n" -gt 50 ] || fail "O: only $n pixels changed"
 xdotool key p
-wait_title "* - done - *--projection=p *" 120 || fail "P: not perspective"
-xdotool key ctrl+3
-for ((k = 0; k < 100; k++)); do
-    capture d.png
-    [ "$(pixel d.png $((W / 2)) $((H / 2 + 5)))" = "srgb(128,0,128)" ] && break
-    sleep 0.1
-done
-[ "$(pixel d.png $((W / 2)) $((H / 2 + 5)))" = "srgb(128,0,128)" ] ||
-    fail "Ctrl+3: no crosshairs at the centre: $(pixel d.png $((W / 2)) $((H / 2 + 5)))"
-xdotool key ctrl+3
+wait_title "* - done - *--projection=p --fov=22.5 --spp=2" 120 ||
+    fail "P: not perspective"
+capture c0.png
 
-# Ctrl+S: the screenshot is what `spancast render` writes with the printed options
+# toggle KEY OPTION NAME: the key puts OPTION into the title's render
+# options and changes the image; the same key takes it out again and the
+# image is the one before.
+toggle() {
+    checks=$((checks + 1))
+    xdotool key "$1"
+    wait_title "* - done - *--spp=2 $2 - *" 120 || fail "$3: not in the title"
+    capture t1.png
+    n=$(differ c0.png t1.png)
+    [ "$n" -gt 20 ] || fail "$3: only $n pixels changed"
+    grep -q "^$3 on$" view.out || fail "$3: no '$3 on' line"
+    xdotool key "$1"
+    wait_title "* - done - *--spp=2 - *" 120 || fail "$3: not off again: $(title)"
+    capture t2.png
+    n=$(differ c0.png t2.png)
+    [ "$n" = 0 ] || fail "$3: off again, $n pixels differ from before"
+}
+toggle ctrl+3 --view=crosshairs crosshairs
+toggle ctrl+1 --view=edges edges
+toggle ctrl+2 --view=axes,scales axes
+toggle x "--section=*,* --section-style=hatch" section
+toggle a --ao=8 "ambient occlusion"
+
+# C: the next colour scheme after Cornfield, the first of those known
 checks=$((checks + 1))
+xdotool key c
+wait_title "* - done - *--spp=2 *--colorscheme=* - *" 120 || fail "C: no scheme in the title"
+grep -q "^colour scheme " view.out || fail "C: no 'colour scheme' line"
+
+# Ctrl+S: the screenshot, with edges, the scheme and a hatched section, is
+# what `spancast render` writes with the printed options
+checks=$((checks + 1))
+xdotool key ctrl+1
+xdotool key x
+wait_title "* - done - *--view=edges --section=* --section-style=hatch - *" 120 ||
+    fail "screenshot: edges and section not on: $(title)"
 xdotool key ctrl+s
 if wait_file view.out "^screenshot: " 120; then
     line=$(grep "^screenshot: " view.out | head -n 1)
     shot=$(echo "$line" | sed 's/^screenshot: \([^:]*\): .*/\1/')
     command=$(echo "$line" | sed 's/^screenshot: [^:]*: spancast render //')
     case "$command" in
-    "m.csg -o $shot --camera="*) ;;
+    "m.csg -o $shot --camera="*"--colorscheme="*" --view=edges --section="*) ;;
     *) fail "screenshot: unexpected command: $line" ;;
     esac
     # shellcheck disable=SC2086 # the printed options, split as a shell would
     eval "\"\$bin\" render $command -q -o reference.png"
     n=$(differ "$shot" reference.png)
     [ "$n" = 0 ] || fail "screenshot: $n pixels differ from spancast render ($line)"
+    xdotool key ctrl+1
+    xdotool key x
+    wait_title "* - done - *--colorscheme=* - section off" 120 ||
+        fail "screenshot: edges and section not off again: $(title)"
 else
     fail "screenshot: no 'screenshot:' line in 120 s"
 fi

@@ -23,8 +23,13 @@
  * changes.
  *
  * Keys follow OpenSCAD's View menu where it has them; see usage_text.
- * Edges, axes, colour schemes, section planes and ambient occlusion have
- * their keys reserved: they print that the renderer does not draw them yet.
+ * The preview options of `render` (colour scheme, lighting, preview
+ * colours, edges, axes, crosshairs, section planes, ambient occlusion) are
+ * read from the command line as `render` reads them and kept in
+ * viewer.look; keys toggle them (Ctrl+1 edges, Ctrl+2 axes with their
+ * scale marks, Ctrl+3 crosshairs, C the next colour scheme, X a section
+ * plane, A ambient occlusion). Every frame is sc_render with them, so the
+ * overlays are the renderer's, and the title prints them with the camera.
  *
  * Reloading: the model and, for a .scad, every file OpenSCAD read are
  * watched (watch.c). WATCH_SETTLE_MS after the last change the loading
@@ -49,6 +54,7 @@
 
 #include <errno.h>
 #include <math.h>
+#include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -64,10 +70,14 @@ enum { EXIT_FAILED = 1, EXIT_USAGE = 2 };
 #define FRAME_BUDGET_MS 25.0 /* a coarse frame's render time, below 33 ms */
 #define STILL_SECONDS 0.1    /* no motion this long while dragging: refine */
 #define MAX_SPP 1024
+#define MAX_AO 1024       /* --ao, as render allows */
+#define MAX_EDGE_WIDTH 16 /* --edge-width, as render allows */
+#define DEFAULT_AO 8      /* rays per sample when A turns occlusion on */
+#define MAX_SCHEMES 64
 
 static const char usage_text[] =
     "usage: spancast view MODEL [--imgsize=W,H] [--spp=N] [--threads=N] [--faithful]\n"
-    "                           [--verbose]\n"
+    "                           [--verbose] [preview options]\n"
     "\n"
     "Opens a window on MODEL (.csg, or .scad through OpenSCAD) and renders it\n"
     "again whenever the file, or a file a .scad model uses, changes.\n"
@@ -78,19 +88,26 @@ static const char usage_text[] =
     "  --faithful      spheres and cylinders as OpenSCAD's polyhedra\n"
     "  --verbose       print every frame's size and time on stdout\n"
     "\n"
+    "preview options, as for 'spancast render' (see spancast --help):\n"
+    "  --colorscheme=NAME --preview --lighting=NAME --view=LIST --edge-angle=DEG\n"
+    "  --edge-width=PX --view-preset=NAME --section=NX,NY,NZ,D --section-style=STYLE\n"
+    "  --ao=N --ao-radius=F\n"
+    "\n"
     "mouse: left drag rotates (shift: around y), right drag pans (shift: zooms),\n"
     "       wheel zooms, a click prints what the ray under the pointer hits\n"
     "keys:  Ctrl+4..9, Ctrl+0   top, bottom, left, right, front, back, diagonal\n"
     "       Ctrl+Shift+V        view all        Home  reset view\n"
     "       Ctrl+] / Ctrl+[     zoom in / out\n"
     "       P / O               perspective / orthographic\n"
-    "       Ctrl+3              crosshairs\n"
+    "       Ctrl+1, Ctrl+2      edges, axes with scale marks (on / off)\n"
+    "       Ctrl+3              crosshairs (on / off)\n"
+    "       C                   next colour scheme\n"
+    "       X                   cut away the half nearer the camera through the\n"
+    "                           model's centre / remove the cuts\n"
+    "       A                   ambient occlusion (on / off)\n"
     "       + / -               samples per pixel when still (x4 / /4)\n"
     "       Ctrl+S              screenshot (NAME-view-N.png, with its render command)\n"
     "       Ctrl+R, F4, F5      reload now\n"
-    "       Ctrl+1, Ctrl+2      edges, axes (reserved)\n"
-    "       C, X, A             colour scheme, section plane, ambient occlusion\n"
-    "                           (reserved)\n"
     "       Q, Esc, Ctrl+Q      quit\n";
 
 /* Coarse frames divide the window's sides by one of these. */
@@ -124,7 +141,14 @@ typedef struct viewer {
     char error[SC_ERROR_MESSAGE_MAX + SC_ERROR_FILE_MAX + 64]; /* the failed load */
     view_camera cam;
     uint64_t view; /* the number of the current view */
-    int crosshairs;
+    /* the preview options (colour scheme, lighting, overlays, sections,
+     * ambient occlusion); the camera, size and samples fields are unused */
+    sc_render_options look;
+    sc_render_options defaults; /* sc_render_options_init's, to print only changes */
+    sc_view_preset preset;      /* --view-preset: the first view */
+    int ao_on;                  /* rays per sample when A turns occlusion on */
+    char schemes[MAX_SCHEMES][SC_COLOR_SCHEME_NAME_MAX]; /* the names C cycles */
+    int scheme_count, scheme_index;
     /* what the window shows */
     uint64_t shown_view;
     int shown_full, shown_spp;
@@ -141,7 +165,7 @@ typedef struct viewer {
     /* screenshots */
     int shot_busy, shot_requested, shot_number;
     char shot_path[PATH_MAX];
-    char shot_command[4 * PATH_MAX + 1200];
+    char shot_command[4 * PATH_MAX + 2200];
 } viewer;
 
 static double seconds_now(void)
@@ -172,6 +196,157 @@ static int parse_int(const char *s, long lo, long hi, long *out)
     return 1;
 }
 
+/* A whole string as a finite number: 1, or 0 when it is not one. */
+static int parse_number(const char *s, double *out)
+{
+    char *end;
+    errno = 0;
+    double d = strtod(s, &end);
+    if (!*s || *end || errno == ERANGE || !isfinite(d))
+        return 0;
+    *out = d;
+    return 1;
+}
+
+/* Splits s at commas into exactly count numbers; 1, or 0 when it cannot. */
+static int parse_numbers(const char *s, double *out, int count)
+{
+    char text[256];
+    if (strlen(s) >= sizeof text)
+        return 0;
+    snprintf(text, sizeof text, "%s", s);
+    char *p = text;
+    for (int k = 0; k < count; k++) {
+        char *comma = strchr(p, ',');
+        if ((comma != NULL) != (k + 1 < count))
+            return 0;
+        if (comma)
+            *comma = '\0';
+        if (!parse_number(p, &out[k]))
+            return 0;
+        p = comma + 1;
+    }
+    return 1;
+}
+
+static const char *const overlay_names[] = {"edges", "axes", "scales", "crosshairs"};
+
+#define IS(option) (len == sizeof option - 1 && !strncmp(name, option, len))
+
+/* Whether the option named by the len bytes at name is one of render's
+ * preview options: -1 when not, else 1 when it takes a value, 0 when not. */
+static int preview_option(const char *name, size_t len)
+{
+    if (IS("--preview"))
+        return 0;
+    return IS("--colorscheme") || IS("--lighting") || IS("--view") ||
+                   IS("--edge-angle") || IS("--edge-width") || IS("--view-preset") ||
+                   IS("--section") || IS("--section-style") || IS("--ao") ||
+                   IS("--ao-radius")
+               ? 1
+               : -1;
+}
+
+/* Applies such an option (value NULL when none was given) to v->look with
+ * the checks and messages of `render`; returns 0 or a usage exit status. */
+static int apply_preview_option(viewer *v, const char *name, size_t len,
+                                const char *value)
+{
+    sc_render_options *o = &v->look;
+    double d[4];
+    long n;
+    char option[32];
+    snprintf(option, sizeof option, "%.*s", (int)(len < 31 ? len : 31), name);
+    if (IS("--preview")) {
+        if (value)
+            return usage_error("option '%s' takes no value", option);
+        o->preview = 1;
+        return 0;
+    }
+    if (!value || !*value)
+        return usage_error("option '%s' expects a value", option);
+    if (IS("--colorscheme")) {
+        sc_error error;
+        if (sc_color_scheme_find(value, NULL, &o->scheme, &error) != SC_OK)
+            return usage_error("--colorscheme: %s", error.message);
+        o->use_scheme = 1;
+    } else if (IS("--lighting")) {
+        if (!strcmp(value, "default"))
+            o->lighting = SC_LIGHTING_DEFAULT;
+        else if (!strcmp(value, "openscad"))
+            o->lighting = SC_LIGHTING_OPENSCAD;
+        else
+            return usage_error("--lighting expects 'default' or 'openscad'%s", "");
+    } else if (IS("--view")) {
+        for (const char *p = value;;) {
+            size_t part = strcspn(p, ",");
+            int found = -1;
+            for (int k = 0; k < 4; k++)
+                if (strlen(overlay_names[k]) == part &&
+                    !strncmp(overlay_names[k], p, part))
+                    found = k;
+            if (found < 0) {
+                char message[512];
+                snprintf(message, sizeof message,
+                         "--view: unknown name '%.*s' (expected edges, axes, scales, "
+                         "crosshairs)",
+                         (int)(part < 256 ? part : 256), p);
+                return usage_error("%s", message);
+            }
+            o->view |= 1u << found; /* bit k of overlay_names is SC_VIEW_* 1 << k */
+            if (!p[part])
+                break;
+            p += part + 1;
+        }
+    } else if (IS("--edge-angle")) {
+        if (!parse_number(value, &d[0]) || !(d[0] > 0 && d[0] < 180))
+            return usage_error("--edge-angle expects an angle in degrees between 0 and "
+                               "180%s",
+                               "");
+        o->edge_angle_deg = d[0];
+    } else if (IS("--edge-width")) {
+        if (!parse_number(value, &d[0]) || !(d[0] > 0 && d[0] <= MAX_EDGE_WIDTH))
+            return usage_error("--edge-width expects a width in pixels above 0 and at "
+                               "most 16%s",
+                               "");
+        o->edge_width = d[0];
+    } else if (IS("--view-preset")) {
+        v->preset = sc_view_preset_from_name(value);
+        if (!v->preset)
+            return usage_error("--view-preset: unknown name '%s' (expected top, bottom, "
+                               "left, right, front, back, diagonal)",
+                               value);
+    } else if (IS("--section")) {
+        if (!parse_numbers(value, d, 4) || (d[0] == 0 && d[1] == 0 && d[2] == 0))
+            return usage_error("--section expects NX,NY,NZ,D with a non-zero normal "
+                               "(keeps the half-space n.p <= D)%s",
+                               "");
+        if (o->section_count >= SC_MAX_SECTIONS)
+            return usage_error("at most 8 --section options%s", "");
+        memcpy(o->section[o->section_count++], d, sizeof d);
+    } else if (IS("--section-style")) {
+        if (!strcmp(value, "solid"))
+            o->section_style = SC_SECTION_SOLID;
+        else if (!strcmp(value, "hatch"))
+            o->section_style = SC_SECTION_HATCH;
+        else
+            return usage_error("--section-style expects 'solid' or 'hatch'%s", "");
+    } else if (IS("--ao")) {
+        if (!parse_int(value, 0, MAX_AO, &n))
+            return usage_error("--ao expects a number of rays from 0 to 1024%s", "");
+        o->ao_samples = (int)n;
+    } else {
+        if (!parse_number(value, &d[0]) || !(d[0] > 0))
+            return usage_error("--ao-radius expects a positive fraction of the model's "
+                               "diagonal%s",
+                               "");
+        o->ao_radius = d[0];
+    }
+    return 0;
+}
+
+#undef IS
+
 static int parse_args(viewer *v, int argc, char **argv)
 {
     int first = argc > 1 && !strcmp(argv[1], "view") ? 2 : 1;
@@ -189,6 +364,15 @@ static int parse_args(viewer *v, int argc, char **argv)
         }
         const char *eq = strchr(arg, '=');
         size_t len = eq ? (size_t)(eq - arg) : strlen(arg);
+        int preview = preview_option(arg, len);
+        if (preview >= 0) {
+            /* a value may be the next argument, as for render */
+            const char *value = eq ? eq + 1 : preview && k + 1 < argc ? argv[++k] : NULL;
+            int st = apply_preview_option(v, arg, len, value);
+            if (st)
+                return st;
+            continue;
+        }
         if (len == 10 && !strncmp(arg, "--faithful", len) && !eq) {
             v->faithful = 1;
             continue;
@@ -295,7 +479,74 @@ static sc_render_options view_options(const viewer *v, int w, int h, int spp)
     o.height = h;
     o.spp = spp;
     o.threads = v->threads;
+    const sc_render_options *look = &v->look;
+    o.use_scheme = look->use_scheme;
+    o.scheme = look->scheme;
+    o.preview = look->preview;
+    o.lighting = look->lighting;
+    o.view = look->view;
+    o.edge_angle_deg = look->edge_angle_deg;
+    o.edge_width = look->edge_width;
+    o.section_count = look->section_count;
+    memcpy(o.section, look->section, sizeof o.section);
+    o.section_style = look->section_style;
+    o.ao_samples = look->ao_samples;
+    o.ao_radius = look->ao_radius;
     return o;
+}
+
+/* Appends to buf (of size bytes, holding a string) what printf formats. */
+static void append(char *buf, size_t size, const char *format, ...)
+{
+    size_t used = strlen(buf);
+    if (used + 1 >= size)
+        return;
+    va_list args;
+    va_start(args, format);
+    vsnprintf(buf + used, size - used, format, args);
+    va_end(args);
+}
+
+/* The view as `render` options: the camera's (view_camera_format), then
+ * the preview options that differ from render's defaults, each quoted for a
+ * shell where it needs it, every number printed so that it reads back to
+ * the same double. Returns buf. */
+static const char *view_format(const viewer *v, char *buf, size_t size)
+{
+    const sc_render_options *look = &v->look, *dflt = &v->defaults;
+    view_camera_format(&v->cam, v->width, v->height, v->spp, buf, size);
+    if (look->use_scheme) {
+        char option[SC_COLOR_SCHEME_NAME_MAX + 32], quoted[2 * sizeof option];
+        snprintf(option, sizeof option, "--colorscheme=%s", look->scheme.name);
+        shell_quote(option, quoted, sizeof quoted);
+        append(buf, size, " %s", quoted);
+    }
+    if (look->preview)
+        append(buf, size, " --preview");
+    if (look->lighting == SC_LIGHTING_OPENSCAD)
+        append(buf, size, " --lighting=openscad");
+    if (look->view) {
+        append(buf, size, " --view=");
+        for (int k = 0, first = 1; k < 4; k++)
+            if (look->view & (1u << k)) {
+                append(buf, size, "%s%s", first ? "" : ",", overlay_names[k]);
+                first = 0;
+            }
+    }
+    if (look->edge_angle_deg != dflt->edge_angle_deg)
+        append(buf, size, " --edge-angle=%.17g", look->edge_angle_deg);
+    if (look->edge_width != dflt->edge_width)
+        append(buf, size, " --edge-width=%.17g", look->edge_width);
+    for (int k = 0; k < look->section_count; k++)
+        append(buf, size, " --section=%.17g,%.17g,%.17g,%.17g", look->section[k][0],
+               look->section[k][1], look->section[k][2], look->section[k][3]);
+    if (look->section_count && look->section_style == SC_SECTION_HATCH)
+        append(buf, size, " --section-style=hatch");
+    if (look->ao_samples)
+        append(buf, size, " --ao=%d", look->ao_samples);
+    if (look->ao_samples && look->ao_radius != dflt->ao_radius)
+        append(buf, size, " --ao-radius=%.17g", look->ao_radius);
+    return buf;
 }
 
 static void submit(viewer *v, view_job_kind kind, int w, int h, int spp)
@@ -426,14 +677,6 @@ static void draw(viewer *v)
     SDL_RenderClear(v->renderer);
     if (v->texture)
         SDL_RenderCopy(v->renderer, v->texture, NULL, NULL);
-    if (v->crosshairs) {
-        /* OpenSCAD's crosshairs mark the centre of rotation, here the
-         * image centre. */
-        int cx = v->width / 2, cy = v->height / 2, r = v->height / 12;
-        SDL_SetRenderDrawColor(v->renderer, 0x80, 0x00, 0x80, 0xff);
-        SDL_RenderDrawLine(v->renderer, cx - r, cy, cx + r, cy);
-        SDL_RenderDrawLine(v->renderer, cx, cy - r, cx, cy + r);
-    }
     if (v->error[0]) {
         /* A red frame while the file on disk does not load. */
         int t = 4;
@@ -450,8 +693,8 @@ static void draw(viewer *v)
 
 static void update_title(viewer *v)
 {
-    char options[1024], state[64];
-    view_camera_format(&v->cam, v->width, v->height, v->spp, options, sizeof options);
+    char options[2048], state[64];
+    view_format(v, options, sizeof options);
     if (!v->model)
         snprintf(state, sizeof state, "%s",
                  view_loader_busy(v->loader) ? "loading" : "no model yet");
@@ -509,6 +752,10 @@ static void take_load(viewer *v)
         sc_render_options_init(&file);
         sc_render_options_from_scene(&file, v->model->scene);
         view_camera_reset(&v->cam, v->model->scene, &file);
+        if (v->preset) {
+            view_camera_preset(&v->cam, v->preset);
+            view_camera_view_all(&v->cam, v->model->scene);
+        }
     }
     printf("loaded %s in %.3f s\n", v->path, load.seconds);
     fflush(stdout);
@@ -518,11 +765,101 @@ static void take_load(viewer *v)
 
 /* ---- input ---- */
 
-static void reserved(viewer *v, const char *what)
+/* A key's effect, in the title and on stdout. */
+static void say(viewer *v, const char *format, ...)
 {
-    snprintf(v->note, sizeof v->note, "%s: not drawn by this renderer yet", what);
-    printf("%s: not drawn by this renderer yet\n", what);
+    va_list args;
+    va_start(args, format);
+    vsnprintf(v->note, sizeof v->note, format, args);
+    va_end(args);
+    printf("%s\n", v->note);
     fflush(stdout);
+}
+
+/* Turns one SC_VIEW_* overlay (flags: it and those that go with it) on or
+ * off. */
+static void toggle_overlay(viewer *v, unsigned flag, unsigned flags, const char *name)
+{
+    if (v->look.view & flag)
+        v->look.view &= ~flags;
+    else
+        v->look.view |= flags;
+    say(v, "%s %s", name, v->look.view & flag ? "on" : "off");
+    view_changed(v);
+}
+
+/* C: the next of the schemes sc_color_scheme_find knows. */
+static void next_scheme(viewer *v)
+{
+    if (!v->scheme_count)
+        return;
+    v->scheme_index = (v->scheme_index + 1) % v->scheme_count;
+    sc_error error;
+    if (sc_color_scheme_find(v->schemes[v->scheme_index], NULL, &v->look.scheme,
+                             &error) != SC_OK) {
+        say(v, "colour scheme: %s", error.message);
+        return;
+    }
+    v->look.use_scheme = 1;
+    say(v, "colour scheme %s", v->look.scheme.name);
+    view_changed(v);
+}
+
+/* X: with no section plane, one through the centre of the model's bounds,
+ * facing the camera, keeping the half away from it (n = -forward, so n.p
+ * <= n.c is forward.p >= forward.c); the plane stays where it is when the
+ * view turns. With section planes (this one or --section), removes them. */
+static void toggle_section(viewer *v)
+{
+    sc_render_options *o = &v->look;
+    if (o->section_count) {
+        o->section_count = 0;
+        say(v, "section off");
+        view_changed(v);
+        return;
+    }
+    double lo[3], hi[3], forward[3];
+    if (!v->model || !sc_scene_bounds(v->model->scene, lo, hi)) {
+        say(v, "section: no model to cut");
+        return;
+    }
+    view_camera_forward(&v->cam, forward);
+    double d = 0;
+    for (int k = 0; k < 3; k++) {
+        o->section[0][k] = -forward[k];
+        d += -forward[k] * (lo[k] + hi[k]) / 2;
+    }
+    o->section[0][3] = d;
+    o->section_count = 1;
+    say(v, "section on");
+    view_changed(v);
+}
+
+/* The names sc_color_scheme_find knows, as it lists them in the error for
+ * a name it does not know ("... (known: 'Cornfield', 'Metallic', ...)");
+ * scheme_index is the current scheme's. */
+static void find_schemes(viewer *v)
+{
+    sc_color_scheme scheme;
+    sc_error error;
+    v->scheme_count = 0;
+    if (sc_color_scheme_find("", NULL, &scheme, &error) == SC_OK)
+        return;
+    const char *p = strstr(error.message, "(known: ");
+    for (p = p ? p + 8 : NULL; p && *p == '\'' && v->scheme_count < MAX_SCHEMES;) {
+        const char *end = strchr(p + 1, '\'');
+        if (!end)
+            break;
+        size_t n = (size_t)(end - p - 1);
+        if (n < SC_COLOR_SCHEME_NAME_MAX) {
+            memcpy(v->schemes[v->scheme_count], p + 1, n);
+            v->schemes[v->scheme_count][n] = '\0';
+            if (!strcmp(v->schemes[v->scheme_count], v->look.scheme.name))
+                v->scheme_index = v->scheme_count;
+            v->scheme_count++;
+        }
+        p = !strncmp(end + 1, ", ", 2) ? end + 3 : NULL;
+    }
 }
 
 static void request_shot(viewer *v)
@@ -544,8 +881,8 @@ static void request_shot(viewer *v)
         snprintf(v->shot_path, sizeof v->shot_path, "%s-view-%d.png", stem,
                  v->shot_number);
     } while (stat(v->shot_path, &st) == 0 || errno != ENOENT);
-    char options[1024], model[PATH_MAX * 2], out[PATH_MAX * 2];
-    view_camera_format(&v->cam, v->width, v->height, v->spp, options, sizeof options);
+    char options[2048], model[PATH_MAX * 2], out[PATH_MAX * 2];
+    view_format(v, options, sizeof options);
     shell_quote(v->path, model, sizeof model);
     shell_quote(v->shot_path, out, sizeof out);
     snprintf(v->shot_command, sizeof v->shot_command, "spancast render %s -o %s %s%s",
@@ -627,19 +964,21 @@ static int key(viewer *v, const SDL_KeyboardEvent *e)
         (ctrl && (sym == SDLK_q || sym == SDLK_w)))
         return 0;
     if (ctrl && sym >= SDLK_0 && sym <= SDLK_9) {
-        static const int presets[10] = {VIEW_DIAGONAL, -1,          -1,        -1,
-                                        VIEW_TOP,      VIEW_BOTTOM, VIEW_LEFT, VIEW_RIGHT,
-                                        VIEW_FRONT,    VIEW_BACK};
+        static const sc_view_preset presets[10] = {
+            SC_VIEW_PRESET_DIAGONAL, SC_VIEW_PRESET_NONE,  SC_VIEW_PRESET_NONE,
+            SC_VIEW_PRESET_NONE,     SC_VIEW_PRESET_TOP,   SC_VIEW_PRESET_BOTTOM,
+            SC_VIEW_PRESET_LEFT,     SC_VIEW_PRESET_RIGHT, SC_VIEW_PRESET_FRONT,
+            SC_VIEW_PRESET_BACK};
         int digit = (int)(sym - SDLK_0);
-        if (digit == 1)
-            reserved(v, "edges (Ctrl+1)");
-        else if (digit == 2)
-            reserved(v, "axes (Ctrl+2)");
-        else if (digit == 3) {
-            v->crosshairs = !v->crosshairs;
-            v->dirty = 1;
+        if (digit == 1) {
+            toggle_overlay(v, SC_VIEW_EDGES, SC_VIEW_EDGES, "edges");
+        } else if (digit == 2) {
+            /* OpenSCAD's Show Axes; its Show Scale Markers goes with them */
+            toggle_overlay(v, SC_VIEW_AXES, SC_VIEW_AXES | SC_VIEW_SCALES, "axes");
+        } else if (digit == 3) {
+            toggle_overlay(v, SC_VIEW_CROSSHAIRS, SC_VIEW_CROSSHAIRS, "crosshairs");
         } else {
-            view_camera_preset(&v->cam, (view_preset)presets[digit]);
+            view_camera_preset(&v->cam, presets[digit]);
             view_changed(v);
         }
         return 1;
@@ -672,11 +1011,13 @@ static int key(viewer *v, const SDL_KeyboardEvent *e)
         v->spp = v->spp / 4 < 1 ? 1 : v->spp / 4;
         view_changed(v);
     } else if (!ctrl && sym == SDLK_c) {
-        reserved(v, "colour schemes (C)");
+        next_scheme(v);
     } else if (!ctrl && sym == SDLK_x) {
-        reserved(v, "section plane (X)");
+        toggle_section(v);
     } else if (!ctrl && sym == SDLK_a) {
-        reserved(v, "ambient occlusion (A)");
+        v->look.ao_samples = v->look.ao_samples ? 0 : v->ao_on;
+        say(v, "ambient occlusion %s", v->look.ao_samples ? "on" : "off");
+        view_changed(v);
     }
     return 1;
 }
@@ -827,11 +1168,15 @@ int main(int argc, char **argv)
     v->height = 600;
     v->spp = 4;
     v->coarse_step = 5; /* a quarter of each side, until measured */
+    sc_render_options_init(&v->look);
+    v->defaults = v->look;
     int status = parse_args(v, argc, argv);
     if (status) {
         free(v);
         return status;
     }
+    v->ao_on = v->look.ao_samples ? v->look.ao_samples : DEFAULT_AO;
+    find_schemes(v);
     struct stat st;
     int code = stat(v->path, &st) != 0 ? errno : S_ISDIR(st.st_mode) ? EISDIR : 0;
     if (code) {

@@ -41,17 +41,6 @@ typedef struct view_camera {
     sc_projection projection;
 } view_camera;
 
-/* OpenSCAD's View menu's standard views. */
-typedef enum view_preset {
-    VIEW_TOP,
-    VIEW_BOTTOM,
-    VIEW_LEFT,
-    VIEW_RIGHT,
-    VIEW_FRONT,
-    VIEW_BACK,
-    VIEW_DIAGONAL
-} view_preset;
-
 /* The view `render` gives the scene without a camera option: the file's
  * camera() when it has one (as a gimbal camera looking the same way),
  * else OpenSCAD's diagonal view of the whole model. options holds the
@@ -72,7 +61,13 @@ void view_camera_pan(view_camera *cam, double dx, double dy, int width, int heig
 /* OpenSCAD's zoom: one wheel notch is 120; positive moves closer. */
 void view_camera_zoom(view_camera *cam, double delta);
 
-void view_camera_preset(view_camera *cam, view_preset preset);
+/* OpenSCAD's View menu's standard views: the rotation `render
+ * --view-preset` uses (sc_view_preset_rotation); centre and distance stay,
+ * as in OpenSCAD. */
+void view_camera_preset(view_camera *cam, sc_view_preset preset);
+
+/* The unit vector the camera looks along (from the eye to the centre). */
+void view_camera_forward(const view_camera *cam, double forward[3]);
 
 /* Puts the camera into render options (gimbal mode, fov, projection). */
 void view_camera_apply(const view_camera *cam, sc_render_options *options);

@@ -14,8 +14,9 @@
  * rz by -dx (ry with shift); the right button moves the centre by -(mx
  * right + mz up), mx = 3 dx d / width, mz = -3 dy d / height, right and up
  * being the camera's; shift-right zooms by -12 dy. Camera::zoom multiplies
- * the distance by 0.9 per notch of 120. The standard views are MainWindow's
- * object_rot values in these terms.
+ * the distance by 0.9 per notch of 120. The standard views are the
+ * renderer's presets (sc_view_preset_rotation), MainWindow's object_rot
+ * values in these terms.
  */
 #include "cli/view.h"
 
@@ -131,16 +132,15 @@ void view_camera_zoom(view_camera *cam, double delta)
         cam->distance = distance;
 }
 
-void view_camera_preset(view_camera *cam, view_preset preset)
+void view_camera_preset(view_camera *cam, sc_view_preset preset)
 {
-    static const double angles[][3] = {
-        [VIEW_TOP] = {0, 0, 0},        [VIEW_BOTTOM] = {180, 0, 0},
-        [VIEW_LEFT] = {90, 0, 270},    [VIEW_RIGHT] = {90, 0, 90},
-        [VIEW_FRONT] = {90, 0, 0},     [VIEW_BACK] = {90, 0, 180},
-        [VIEW_DIAGONAL] = {55, 0, 25},
-    };
-    for (int k = 0; k < 3; k++)
-        cam->rotate[k] = angles[preset][k];
+    sc_view_preset_rotation(preset, cam->rotate);
+}
+
+void view_camera_forward(const view_camera *cam, double forward[3])
+{
+    static const double y_axis[3] = {0, 1, 0};
+    gimbal_rotate(cam->rotate, y_axis, forward);
 }
 
 void view_camera_apply(const view_camera *cam, sc_render_options *options)
