@@ -12,9 +12,10 @@
 
 #include "base/error.h"
 #include "build/build.h"
+#include "model/colors.h"
 
 typedef struct reader {
-    const parse_tree *syntax;
+    const char *file;
     const parse_node *n;
     sc_error *error;
 } reader;
@@ -27,7 +28,7 @@ static const parse_value *value_of(const reader *r, const char *name)
 
 static sc_location loc_of(const reader *r, const parse_value *v)
 {
-    sc_location loc = {r->syntax->file, v->line, v->column};
+    sc_location loc = {r->file, v->line, v->column};
     return loc;
 }
 
@@ -128,10 +129,10 @@ static sc_status no_children(const reader *r)
                    r->n->name);
 }
 
-sc_status build_light(shading *s, const parse_tree *syntax, const parse_node *n,
+sc_status build_light(shading *s, const char *file, const parse_node *n,
                       const affine *to_world, int emit, sc_error *error)
 {
-    reader r = {syntax, n, error};
+    reader r = {file, n, error};
     shading_light light;
     memset(&light, 0, sizeof light);
     light.color[0] = light.color[1] = light.color[2] = 1;
@@ -179,10 +180,10 @@ sc_status build_light(shading *s, const parse_tree *syntax, const parse_node *n,
     return shading_add_light(s, &light) ? SC_OK : err_nomem(error, NULL);
 }
 
-sc_status build_camera(shading *s, const parse_tree *syntax, const parse_node *n,
-                       int emit, sc_error *error)
+sc_status build_camera(shading *s, const char *file, const parse_node *n, int emit,
+                       sc_error *error)
 {
-    reader r = {syntax, n, error};
+    reader r = {file, n, error};
     shading_camera cam;
     memset(&cam, 0, sizeof cam);
     vec3 eye, center, up = v3(0, 0, 1);
@@ -227,10 +228,10 @@ sc_status build_camera(shading *s, const parse_tree *syntax, const parse_node *n
     return SC_OK;
 }
 
-sc_status build_background(shading *s, const parse_tree *syntax, const parse_node *n,
-                           int emit, sc_error *error)
+sc_status build_background(shading *s, const char *file, const parse_node *n, int emit,
+                           sc_error *error)
 {
-    reader r = {syntax, n, error};
+    reader r = {file, n, error};
     float c[3];
     int given;
     sc_status st = no_children(&r);
@@ -247,10 +248,10 @@ sc_status build_background(shading *s, const parse_tree *syntax, const parse_nod
     return SC_OK;
 }
 
-sc_status build_material(shading *s, const parse_tree *syntax, const parse_node *n,
-                         int emit, uint32_t *material, float color[4], sc_error *error)
+sc_status build_material(shading *s, const char *file, const parse_node *n, int emit,
+                         uint32_t *material, float color[4], sc_error *error)
 {
-    reader r = {syntax, n, error};
+    reader r = {file, n, error};
     shading_material m = shading_default_material();
     float base[3];
     int has_color, has_color2;

@@ -26,16 +26,16 @@
 #include "syntax/parse.h"
 
 /* light, camera and background: nodes without children. */
-sc_status build_light(shading *s, const parse_tree *syntax, const parse_node *n,
+sc_status build_light(shading *s, const char *file, const parse_node *n,
                       const affine *to_world, int emit, sc_error *error);
-sc_status build_camera(shading *s, const parse_tree *syntax, const parse_node *n,
-                       int emit, sc_error *error);
-sc_status build_background(shading *s, const parse_tree *syntax, const parse_node *n,
-                           int emit, sc_error *error);
+sc_status build_camera(shading *s, const char *file, const parse_node *n, int emit,
+                       sc_error *error);
+sc_status build_background(shading *s, const char *file, const parse_node *n, int emit,
+                           sc_error *error);
 
 /* material: adds a material (when emit) and makes it the one its children
  * inherit (*material); a given colour replaces color (RGBA, alpha 1). */
-sc_status build_material(shading *s, const parse_tree *syntax, const parse_node *n,
-                         int emit, uint32_t *material, float color[4], sc_error *error);
+sc_status build_material(shading *s, const char *file, const parse_node *n, int emit,
+                         uint32_t *material, float color[4], sc_error *error);
 
 #endif
