@@ -1,7 +1,8 @@
 /* Tests of the lowering pass (src/model/lower.c): the typed fields of each
  * lowered kind, which nodes the model holds (no '*' subtrees, no leaves'
- * children), the root mark, and argument errors, which become the model's
- * last node with the exact message and position. */
+ * children), the root mark, the table of node kinds, and argument errors,
+ * which become the model's last node with the exact message and
+ * position. */
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>
@@ -171,6 +172,69 @@ static void test_what_is_lowered(void **state)
     release(&l);
 }
 
+static void test_shading_and_curved(void **state)
+{
+    (void)state;
+    lowered l =
+        lower("light(position = [1, 2, 3], color = \"red\", radius = 0.5);\n"
+              "light(direction = [0, 0, -1]);\n"
+              "camera(eye = [9, 0, 0], center = [0, 0, 0], fov = 30);\n"
+              "background(color = [0.1, 0.2, 0.3]);\n"
+              "material(reflect = 0.25, color = \"blue\") { torus(3, 1); }\n"
+              "quadric([1, 1, 1, 0, 0, 0, 0, 0, 0, -1], [[-1, -1, -1], [1, 1, -2]]);\n"
+              "implicit(\"x*x + y*y + z*z - 1\", [[-2, -2, -2], [2, 2, 2]]);\n");
+    const model_node *n = l.m->first;
+    assert_int_equal(n->kind, MODEL_LIGHT);
+    assert_int_equal(n->u.light->kind, SHADING_LIGHT_POINT);
+    assert_true(n->u.light->position.z == 3 && n->u.light->radius == 0.5);
+    assert_true(n->u.light->color[0] == 1 && n->u.light->color[1] == 0);
+    n = n->next;
+    assert_int_equal(n->u.light->kind, SHADING_LIGHT_DIRECTIONAL);
+    assert_true(n->u.light->direction.z == -1); /* local: the builder places it */
+    n = n->next;
+    assert_int_equal(n->kind, MODEL_CAMERA);
+    assert_true(n->u.camera->eye[0] == 9 && n->u.camera->fov_deg == 30);
+    n = n->next;
+    assert_int_equal(n->kind, MODEL_BACKGROUND);
+    assert_true(n->u.background[2] == 0.3f);
+    n = n->next;
+    assert_int_equal(n->kind, MODEL_MATERIAL);
+    assert_true(n->u.material->material.reflect == 0.25);
+    assert_true(n->u.material->has_color && n->u.material->color[2] == 1);
+    assert_int_equal(n->first_child->kind, MODEL_TORUS);
+    assert_true(n->first_child->u.torus->r1 == 3 && n->first_child->u.torus->r2 == 1);
+    assert_null(n->first_child->u.torus->empty);
+    n = n->next;
+    assert_int_equal(n->kind, MODEL_QUADRIC);
+    assert_true(n->u.quadric->a[9] == -1);
+    assert_string_equal(n->u.quadric->empty, "quadric with an empty box is empty");
+    n = n->next;
+    assert_int_equal(n->kind, MODEL_IMPLICIT);
+    assert_true(n->u.implicit->program.count > 0);
+    assert_true(n->u.implicit->tolerance == 4e-6); /* 1e-6 of the box's side */
+    assert_null(n->u.implicit->empty);
+    release(&l);
+}
+
+static void test_kind_of(void **state)
+{
+    (void)state;
+    /* One table: every name OpenSCAD writes has its kind. */
+    assert_int_equal(model_kind_of("group"), MODEL_UNION);
+    assert_int_equal(model_kind_of("render"), MODEL_UNION);
+    assert_int_equal(model_kind_of("multmatrix"), MODEL_XFORM);
+    assert_int_equal(model_kind_of("circle"), MODEL_CIRCLE);
+    assert_int_equal(model_kind_of("linear_extrude"), MODEL_LINEAR_EXTRUDE);
+    assert_int_equal(model_kind_of("halfspace"), MODEL_HALFSPACE);
+    assert_int_equal(model_kind_of("roof"), MODEL_UNSUPPORTED);
+    assert_int_equal(model_kind_of("projection"), MODEL_UNSUPPORTED);
+    assert_int_equal(model_kind_of("Cube"), MODEL_UNKNOWN);
+    assert_int_equal(model_kind_of(""), MODEL_UNKNOWN);
+    assert_true(model_is_leaf(MODEL_SPHERE) && model_is_leaf(MODEL_HULL));
+    assert_false(model_is_leaf(MODEL_RESIZE) || model_is_leaf(MODEL_LIGHT));
+    assert_true(model_is_2d(MODEL_OFFSET) && !model_is_2d(MODEL_CUBE));
+}
+
 /* text must lower to a model whose last node is the error expected. */
 static void check_error(const char *text, sc_status status, const char *expected)
 {
@@ -211,6 +275,15 @@ static void test_errors(void **state)
     check_error("polyhedron([[0, 0, 0]], [[0, 0, 1]]);", SC_ERR_SEMANTIC,
                 "m.csg:1:33: error: polyhedron face 0: point index 1 is out of range (1 "
                 "points)");
+    check_error("light(position = [0, 0, 0], direction = [0, 0, 1]);", SC_ERR_SEMANTIC,
+                "m.csg:1:1: error: 'light' needs either position or direction");
+    check_error("material(reflect = 0.6, transmit = 0.6) { cube(); }", SC_ERR_SEMANTIC,
+                "m.csg:1:1: error: 'material': reflect + transmit must not exceed 1");
+    check_error("torus(1, 2);", SC_ERR_SEMANTIC,
+                "m.csg:1:1: error: torus minor radius r2 = 2 must be smaller than its "
+                "major radius r1 = 1");
+    check_error("implicit(\"x $\", [[0, 0, 0], [1, 1, 1]]);", SC_ERR_SYNTAX,
+                "m.csg:1:13: error: unexpected character '$' in expression");
     check_error("polyhedron([[0, 0, inf]], []);", SC_ERR_SEMANTIC,
                 "m.csg:1:13: error: polyhedron point 0 is not finite");
 }
@@ -218,8 +291,12 @@ static void test_errors(void **state)
 int main(void)
 {
     const struct CMUnitTest tests[] = {
-        cmocka_unit_test(test_leaves),     cmocka_unit_test(test_polyhedron),
-        cmocka_unit_test(test_operations), cmocka_unit_test(test_what_is_lowered),
+        cmocka_unit_test(test_leaves),
+        cmocka_unit_test(test_polyhedron),
+        cmocka_unit_test(test_operations),
+        cmocka_unit_test(test_what_is_lowered),
+        cmocka_unit_test(test_shading_and_curved),
+        cmocka_unit_test(test_kind_of),
         cmocka_unit_test(test_errors),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

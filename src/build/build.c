@@ -39,12 +39,13 @@
 
 #include "base/error.h"
 #include "base/grow.h"
-#include "build/build_curved.h"
+#include "build/build_ctx.h"
 #include "build/build_hull.h"
 #include "build/build_mesh.h"
 #include "build/build_revolve.h"
 #include "build/build_shading.h"
 #include "build/build_twod.h"
+#include "implicit/solve.h"
 #include "model/faithful.h"
 
 typedef struct frame {
@@ -409,23 +410,43 @@ static sc_status build_polyhedron(builder *b, const model_node *n, const frame *
     return st;
 }
 
-/* torus, quadric, implicit (build_implicit.c). */
+/* torus, quadric, implicit (model/lower_curved.c read them). */
 static sc_status build_curved(builder *b, const model_node *n, const frame *state,
                               uint32_t *id)
 {
-    build_ctx c = {b->file, b->csg, b->error, b->faithful, NULL};
-    const char *empty = NULL;
-    prim p;
-    memset(&p, 0, sizeof p);
-    const parse_node *syntax = n->syntax;
-    sc_status st =
-        n->kind == MODEL_TORUS     ? build_torus(&c, syntax, state->emit, &p, &empty)
-        : n->kind == MODEL_QUADRIC ? build_quadric(&c, syntax, state->emit, &p, &empty)
-                                   : build_implicit(&c, syntax, state->emit, &p, &empty);
-    if (st != SC_OK || !state->emit)
-        return st;
+    if (!state->emit)
+        return SC_OK;
+    const char *empty = n->kind == MODEL_TORUS     ? n->u.torus->empty
+                        : n->kind == MODEL_QUADRIC ? n->u.quadric->empty
+                                                   : n->u.implicit->empty;
     if (empty)
         return warn(b, &n->loc, "%s", empty);
+    prim p;
+    memset(&p, 0, sizeof p);
+    if (n->kind == MODEL_TORUS) {
+        p.kind = PRIM_TORUS;
+        p.u.torus.major = n->u.torus->r1;
+        p.u.torus.minor = n->u.torus->r2;
+    } else if (n->kind == MODEL_QUADRIC) {
+        p.kind = PRIM_QUADRIC;
+        memcpy(p.u.quadric.a, n->u.quadric->a, sizeof p.u.quadric.a);
+        p.u.quadric.box = n->u.quadric->box;
+    } else {
+        /* The bytecode lives with the tree. */
+        const model_implicit *f = n->u.implicit;
+        expr_program *program = csg_builder_alloc(b->csg, sizeof *program);
+        if (!program)
+            return err_nomem(b->error, NULL);
+        *program = f->program;
+        p.kind = PRIM_IMPLICIT;
+        p.u.implicit.program = program;
+        p.u.implicit.box = f->box;
+        p.u.implicit.tolerance = f->tolerance;
+        p.u.implicit.lipschitz = f->method == SOLVE_LIPSCHITZ && f->lipschitz == 0
+                                     ? solve_estimate_lipschitz(program, f->box)
+                                     : f->lipschitz;
+        p.u.implicit.method = f->method;
+    }
     return add_leaf(b, n, &p, state, id);
 }
 
@@ -439,11 +460,13 @@ static sc_status build_import_leaf(builder *b, const model_node *n, const frame 
     const char *empty = NULL;
     prim p;
     const parse_node *syntax = n->syntax;
-    sc_status st = n->kind == MODEL_IMPORT
-                       ? build_import(&c, syntax, state->emit, &p, &empty)
-                   : n->kind == MODEL_LINEAR_EXTRUDE
-                       ? build_linear_extrude(&c, syntax, state->emit, &p, &empty)
-                       : build_rotate_extrude(&c, syntax, state->emit, &p, &empty);
+    sc_status st = SC_OK;
+    if (n->kind == MODEL_IMPORT && state->emit)
+        st = build_import(&c, n->u.import, &p, &empty);
+    else if (n->kind == MODEL_LINEAR_EXTRUDE)
+        st = build_linear_extrude(&c, syntax, state->emit, &p, &empty);
+    else if (n->kind == MODEL_ROTATE_EXTRUDE)
+        st = build_rotate_extrude(&c, syntax, state->emit, &p, &empty);
     if (st != SC_OK || !state->emit)
         return st;
     if (note.message[0]) {
@@ -512,8 +535,10 @@ static sc_status build_surface_leaf(builder *b, const model_node *n, const frame
     build_ctx c = {b->file, b->csg, b->error, b->faithful, NULL};
     const char *empty = NULL;
     prim p;
-    sc_status st = build_surface(&c, n->syntax, state->emit, &p, &empty);
-    if (st != SC_OK || !state->emit)
+    if (!state->emit)
+        return SC_OK;
+    sc_status st = build_surface(&c, n->u.surface, &p, &empty);
+    if (st != SC_OK)
         return st;
     if (empty)
         return warn(b, &n->loc, "%s", empty);
@@ -622,11 +647,15 @@ static sc_status visit(builder *b, const model_node *n, int *opened)
         f.emit = 0;
     f.counted = f.emit;
     if (kind == MODEL_LIGHT)
-        return build_light(b->shading, b->file, n->syntax, &f.to_world, f.emit, b->error);
-    if (kind == MODEL_CAMERA)
-        return build_camera(b->shading, b->file, n->syntax, f.emit, b->error);
-    if (kind == MODEL_BACKGROUND)
-        return build_background(b->shading, b->file, n->syntax, f.emit, b->error);
+        return build_light(b->shading, n, &f.to_world, f.emit, b->error);
+    if (kind == MODEL_CAMERA) {
+        build_camera(b->shading, n, f.emit);
+        return SC_OK;
+    }
+    if (kind == MODEL_BACKGROUND) {
+        build_background(b->shading, n, f.emit);
+        return SC_OK;
+    }
     if (model_is_leaf(kind)) {
         if (n->child_count > 0 && f.emit && kind != MODEL_LINEAR_EXTRUDE &&
             kind != MODEL_ROTATE_EXTRUDE && !model_is_2d(kind) && kind != MODEL_HULL &&
@@ -697,8 +726,8 @@ static sc_status visit(builder *b, const model_node *n, int *opened)
         if ((st = apply_color(b, n, f.emit, f.color)) != SC_OK)
             return st;
     } else if (kind == MODEL_MATERIAL) {
-        if ((st = build_material(b->shading, b->file, n->syntax, f.emit, &f.material,
-                                 f.color, b->error)) != SC_OK)
+        if ((st = build_material(b->shading, n, f.emit, &f.material, f.color,
+                                 b->error)) != SC_OK)
             return st;
     }
     *opened = 1;

@@ -12,7 +12,7 @@
  *   material                                  union; sets its children's material
  *   light, camera, background                 no geometry (build_shading.h)
  *   torus, quadric, implicit                  spancast's curved leaves
- *                                             (build_implicit.c)
+ *                                             (model/lower_curved.c)
  * Transforms (multmatrix, row-major 4x4) nest and accumulate into each
  * leaf's to_world; an inner colour wins over an outer one; leaves without a
  * colour get OpenSCAD's default face colour (Cornfield, #f9d72c).

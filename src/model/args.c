@@ -169,3 +169,62 @@ sc_status model_polygon_index(const model_reader *c, const parse_value *v, uint3
     *index = (uint32_t)v->u.number;
     return SC_OK;
 }
+
+int model_has_suffix(const char *s, const char *suffix)
+{
+    size_t a = strlen(s), b = strlen(suffix);
+    if (a < b)
+        return 0;
+    for (size_t i = 0; i < b; i++) {
+        char x = s[a - b + i];
+        if (x >= 'A' && x <= 'Z')
+            x = (char)(x - 'A' + 'a');
+        if (x != suffix[i])
+            return 0;
+    }
+    return 1;
+}
+
+sc_status model_read_import(const model_reader *r, const parse_node *n, model_import *out)
+{
+    const parse_arg *a = parse_node_arg(n, "file", 0);
+    if (!a || a->value.kind != PARSE_STRING) {
+        if (a && a->value.kind != PARSE_UNDEF)
+            return model_wrong_type(r, n, "file", &a->value, "a file name");
+        return err_set(r->error, SC_ERR_SEMANTIC, &n->loc,
+                       "missing argument 'file' of 'import'");
+    }
+    const char *name = a->value.u.string.chars;
+    sc_location loc = model_loc(r, &a->value);
+    int stl = model_has_suffix(name, ".stl"), off = model_has_suffix(name, ".off");
+    if (!stl && !off)
+        return err_set(r->error, SC_ERR_UNSUPPORTED, &loc,
+                       "import of '%s' is not supported yet (only .stl and .off files)",
+                       name);
+    out->file = name;
+    out->file_loc = loc;
+    out->format = stl ? MODEL_MESH_STL : MODEL_MESH_OFF;
+    return SC_OK;
+}
+
+sc_status model_read_surface(const model_reader *r, const parse_node *n,
+                             model_surface *out)
+{
+    const parse_value *file = model_arg(n, "file", 0);
+    if (!file)
+        return err_set(r->error, SC_ERR_SEMANTIC, &n->loc,
+                       "missing argument 'file' of 'surface'");
+    if (file->kind != PARSE_STRING)
+        return model_wrong_type(r, n, "file", file, "a file name");
+    const parse_value *v = model_arg(n, "center", 1);
+    if (v && v->kind != PARSE_BOOL)
+        return model_wrong_type(r, n, "center", v, "true or false");
+    out->center = v ? v->u.boolean : 0;
+    v = model_arg(n, "invert", -1);
+    if (v && v->kind != PARSE_BOOL)
+        return model_wrong_type(r, n, "invert", v, "true or false");
+    out->invert = v ? v->u.boolean : 0;
+    out->file = file->u.string.chars;
+    out->file_loc = model_loc(r, file);
+    return SC_OK;
+}

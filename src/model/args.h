@@ -10,6 +10,7 @@
 
 #include <stdint.h>
 
+#include "model/model.h"
 #include "spancast/spancast.h"
 #include "syntax/parse.h"
 
@@ -52,5 +53,13 @@ sc_status model_cube(const model_reader *r, const parse_node *n, double size[3],
 /* square(size = s | [x, y], center = false)'s arguments. */
 sc_status model_square(const model_reader *r, const parse_node *n, double *sx, double *sy,
                        int *center);
+/* import(file = "x.stl" | "x.off") of a mesh into *out. */
+sc_status model_read_import(const model_reader *r, const parse_node *n,
+                            model_import *out);
+/* surface(file, center = false, invert = false) into *out. */
+sc_status model_read_surface(const model_reader *r, const parse_node *n,
+                             model_surface *out);
+/* Does s end in suffix (lower case), ignoring the case of s? */
+int model_has_suffix(const char *s, const char *suffix);
 
 #endif

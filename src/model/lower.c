@@ -23,6 +23,8 @@
 #include "base/grow.h"
 #include "model/args.h"
 #include "model/colors.h"
+#include "model/lower_curved.h"
+#include "model/lower_shading.h"
 
 typedef struct lowerer {
     model *m;
@@ -228,6 +230,26 @@ static sc_status lower_polyhedron(lowerer *l, const parse_node *n, model_node *o
     return st != SC_OK ? st : read_faces(l, n, faces_name, faces, out);
 }
 
+/* import(file = "x.stl" | "x.off") in a 3D model. */
+static sc_status lower_import(lowerer *l, const parse_node *n, model_node *out)
+{
+    model_import *import = arena_alloc(&l->m->mem, sizeof *import);
+    if (!import)
+        return err_nomem(l->r.error, NULL);
+    out->u.import = import;
+    return model_read_import(&l->r, n, import);
+}
+
+/* surface(file, center, invert). */
+static sc_status lower_surface(lowerer *l, const parse_node *n, model_node *out)
+{
+    model_surface *surface = arena_alloc(&l->m->mem, sizeof *surface);
+    if (!surface)
+        return err_nomem(l->r.error, NULL);
+    out->u.surface = surface;
+    return model_read_surface(&l->r, n, surface);
+}
+
 /* ---- boolean nodes with arguments ---- */
 
 /* multmatrix(m = [[...], [...], [...], [0, 0, 0, 1]]): a row-major 4x4
@@ -291,6 +313,73 @@ static sc_status lower_color(lowerer *l, const parse_node *n, model_node *out)
     return st;
 }
 
+/* ---- spancast's curved leaves (lower_curved.c) ---- */
+
+static sc_status lower_torus(lowerer *l, const parse_node *n, model_node *out)
+{
+    model_torus *t = arena_calloc(&l->m->mem, 1, sizeof *t);
+    if (!t)
+        return err_nomem(l->r.error, NULL);
+    out->u.torus = t;
+    return model_read_torus(&l->r, n, t);
+}
+
+static sc_status lower_quadric(lowerer *l, const parse_node *n, model_node *out)
+{
+    model_quadric *q = arena_calloc(&l->m->mem, 1, sizeof *q);
+    if (!q)
+        return err_nomem(l->r.error, NULL);
+    out->u.quadric = q;
+    return model_read_quadric(&l->r, n, q);
+}
+
+static sc_status lower_implicit(lowerer *l, const parse_node *n, model_node *out)
+{
+    model_implicit *f = arena_calloc(&l->m->mem, 1, sizeof *f);
+    if (!f)
+        return err_nomem(l->r.error, NULL);
+    out->u.implicit = f;
+    return model_read_implicit(&l->r, n, f);
+}
+
+/* ---- shading nodes (lower_shading.c) ---- */
+
+static sc_status lower_light(lowerer *l, const parse_node *n, model_node *out)
+{
+    shading_light *light = arena_alloc(&l->m->mem, sizeof *light);
+    if (!light)
+        return err_nomem(l->r.error, NULL);
+    out->u.light = light;
+    return model_read_light(&l->r, n, light);
+}
+
+static sc_status lower_camera(lowerer *l, const parse_node *n, model_node *out)
+{
+    shading_camera *camera = arena_alloc(&l->m->mem, sizeof *camera);
+    if (!camera)
+        return err_nomem(l->r.error, NULL);
+    out->u.camera = camera;
+    return model_read_camera(&l->r, n, camera);
+}
+
+static sc_status lower_background(lowerer *l, const parse_node *n, model_node *out)
+{
+    float *c = arena_alloc(&l->m->mem, 3 * sizeof *c);
+    if (!c)
+        return err_nomem(l->r.error, NULL);
+    out->u.background = c;
+    return model_read_background(&l->r, n, c);
+}
+
+static sc_status lower_material(lowerer *l, const parse_node *n, model_node *out)
+{
+    model_material *m = arena_calloc(&l->m->mem, 1, sizeof *m);
+    if (!m)
+        return err_nomem(l->r.error, NULL);
+    out->u.material = m;
+    return model_read_material(&l->r, n, m);
+}
+
 /* The kinds whose builders still read their own syntax node. */
 static sc_status keep_syntax(lowerer *l, const parse_node *n, model_node *out)
 {
@@ -329,26 +418,26 @@ static const struct {
     {"minkowski", MODEL_MINKOWSKI, keep_syntax},
     {"linear_extrude", MODEL_LINEAR_EXTRUDE, keep_syntax},
     {"rotate_extrude", MODEL_ROTATE_EXTRUDE, keep_syntax},
-    {"import", MODEL_IMPORT, keep_syntax},
-    {"surface", MODEL_SURFACE, keep_syntax},
-    {"projection", MODEL_ERROR, unsupported},
+    {"import", MODEL_IMPORT, lower_import},
+    {"surface", MODEL_SURFACE, lower_surface},
+    {"projection", MODEL_UNSUPPORTED, unsupported},
     {"offset", MODEL_OFFSET, keep_syntax},
     {"circle", MODEL_CIRCLE, keep_syntax},
     {"square", MODEL_SQUARE, keep_syntax},
     {"polygon", MODEL_POLYGON, keep_syntax},
     {"text", MODEL_TEXT, keep_syntax},
     {"resize", MODEL_RESIZE, keep_syntax},
-    {"roof", MODEL_ERROR, unsupported},
-    {"intersection_for", MODEL_ERROR, unsupported},
+    {"roof", MODEL_UNSUPPORTED, unsupported},
+    {"intersection_for", MODEL_UNSUPPORTED, unsupported},
     /* spancast's own extensions. */
-    {"torus", MODEL_TORUS, keep_syntax},
-    {"quadric", MODEL_QUADRIC, keep_syntax},
-    {"halfspace", MODEL_ERROR, unsupported},
-    {"implicit", MODEL_IMPLICIT, keep_syntax},
-    {"material", MODEL_MATERIAL, keep_syntax},
-    {"light", MODEL_LIGHT, keep_syntax},
-    {"camera", MODEL_CAMERA, keep_syntax},
-    {"background", MODEL_BACKGROUND, keep_syntax},
+    {"torus", MODEL_TORUS, lower_torus},
+    {"quadric", MODEL_QUADRIC, lower_quadric},
+    {"halfspace", MODEL_HALFSPACE, unsupported},
+    {"implicit", MODEL_IMPLICIT, lower_implicit},
+    {"material", MODEL_MATERIAL, lower_material},
+    {"light", MODEL_LIGHT, lower_light},
+    {"camera", MODEL_CAMERA, lower_camera},
+    {"background", MODEL_BACKGROUND, lower_background},
 };
 
 #define KIND_COUNT (sizeof kinds / sizeof kinds[0])
@@ -362,6 +451,12 @@ static size_t kind_index(const char *name)
             return i;
     }
     return KIND_UNKNOWN;
+}
+
+model_kind model_kind_of(const char *name)
+{
+    size_t i = kind_index(name);
+    return i == KIND_UNKNOWN ? MODEL_UNKNOWN : kinds[i].kind;
 }
 
 /* Whether the builder walks into the children of the node named name: the

@@ -35,7 +35,9 @@
 #include <stdint.h>
 
 #include "base/arena.h"
+#include "implicit/expr.h"
 #include "math/vec.h"
+#include "model/shading.h"
 #include "spancast/spancast.h"
 #include "syntax/parse.h"
 
@@ -77,7 +79,13 @@ typedef enum model_kind {
     MODEL_CAMERA,
     MODEL_BACKGROUND,
     /* An argument error found while lowering (see above). */
-    MODEL_ERROR
+    MODEL_ERROR,
+    /* Kinds model_kind_of gives and a lowered model never holds (lowering
+     * makes them errors): spancast's halfspace, other names OpenSCAD
+     * writes that are not supported yet, and unknown names. */
+    MODEL_HALFSPACE,
+    MODEL_UNSUPPORTED,
+    MODEL_UNKNOWN
 } model_kind;
 
 /* Modifier flags (the parser's, PARSE_MOD_*). */
@@ -109,6 +117,54 @@ typedef struct model_color {
     sc_location alpha_loc;
 } model_color;
 
+/* material(): the material its children get, and the base colour it sets
+ * (when has_color), as color() does. */
+typedef struct model_material {
+    shading_material material;
+    float color[3];
+    int has_color;
+} model_material;
+
+/* torus(r1, r2): major radius r1 in the xy plane, minor radius r2 < r1. */
+typedef struct model_torus {
+    double r1, r2;
+    const char *empty; /* why it is empty (a warning where built), or NULL */
+} model_torus;
+
+/* quadric(a, bounds): A x^2 + B y^2 + C z^2 + D xy + E yz + F xz + G x + H y
+ * + I z + J <= 0 inside the box. */
+typedef struct model_quadric {
+    double a[10]; /* finite */
+    bbox box;
+    const char *empty;
+} model_quadric;
+
+/* implicit(f, bounds, method, tolerance, params, lipschitz): f(x, y, z) < 0
+ * inside the box, f compiled. */
+typedef struct model_implicit {
+    expr_program program;
+    bbox box;
+    double tolerance; /* > 0 */
+    double lipschitz; /* > 0 when given, else 0 */
+    int method;       /* solve_method */
+    const char *empty;
+} model_implicit;
+
+/* import(file) of a mesh, in a 3D model. */
+typedef enum model_mesh_format { MODEL_MESH_STL, MODEL_MESH_OFF } model_mesh_format;
+typedef struct model_import {
+    const char *file; /* as written */
+    sc_location file_loc;
+    model_mesh_format format;
+} model_import;
+
+/* surface(file, center, invert): a height map (.dat or PNG). */
+typedef struct model_surface {
+    const char *file; /* as written */
+    sc_location file_loc;
+    int center, invert;
+} model_surface;
+
 typedef struct model_node model_node;
 struct model_node {
     model_kind kind;
@@ -120,7 +176,7 @@ struct model_node {
     model_node *first_child, *next; /* lowered children, in file order */
     /* The syntax node, for the kinds whose builders still read their own
      * arguments and subtree (the extrusions, hull, minkowski, resize,
-     * surface, import, 2D shapes, spancast's curved and shading nodes). */
+     * surface, import, 2D shapes). */
     const parse_node *syntax;
     union {
         struct {
@@ -145,7 +201,16 @@ struct model_node {
         } polyhedron;
         const affine *xform;      /* multmatrix: rows of the 3x4 affine part */
         const model_color *color; /* color */
-        const sc_error *error;    /* MODEL_ERROR */
+        const model_import *import;
+        const model_surface *surface;
+        const model_torus *torus;
+        const model_quadric *quadric;
+        const model_implicit *implicit;
+        const model_material *material; /* material */
+        const shading_light *light;     /* light: position or direction local */
+        const shading_camera *camera;   /* camera: world coordinates */
+        const float *background;        /* background: 3 colour components */
+        const sc_error *error;          /* MODEL_ERROR */
     } u;
 };
 
@@ -162,6 +227,11 @@ typedef struct model {
 sc_status model_lower(const parse_tree *syntax, model **out, sc_error *error);
 
 void model_free(model *m);
+
+/* The kind of a node name, through the lowering pass's one table: for the
+ * builders that still walk their own subtree of the syntax tree (hull,
+ * minkowski, resize, the extrusions, 2D shapes). */
+model_kind model_kind_of(const char *name);
 
 /* Whether kind is a leaf (the builder does not walk its children). */
 static inline int model_is_leaf(model_kind kind)
