@@ -5,8 +5,9 @@
  * reads its arguments into the node's typed fields (cube{size, center},
  * sphere{r, resolution}, multmatrix's affine map, ...) and checks their
  * types and values, with the messages and positions the file's reader
- * expects. It is the last stage that sees node names: the builders
- * (src/build/) switch on model_kind.
+ * expects. The builders (src/build/) switch on model_kind; those that
+ * still walk a subtree of the syntax tree name its kinds through the same
+ * table (model_kind_of).
  *
  * The model mirrors the walk the builder makes over the file: the children
  * of a group, union, render, difference, intersection, multmatrix, color,
@@ -16,17 +17,18 @@
  * walk their own subtree (hull, minkowski, the extrusions, 2D shapes),
  * reads itself from `syntax`.
  *
- * An argument error does not end the lowering at once: the node that has it
- * becomes a MODEL_ERROR node holding the error, the last node of the model
- * in file order, and lowering stops there. The builder reports it when its
+ * An argument error is not a failure of the lowering: the node that has
+ * it becomes a MODEL_ERROR node holding the error, the last node of the
+ * model in file order, and lowering stops there. The builder reports it when its
  * walk reaches it, so an error the builder finds earlier in the file (an
  * open polyhedron, a missing import) is still the one reported, as when the
  * two stages were one.
  *
- * Every node is allocated from the model's arena, the larger payloads
- * (matrices, colours, errors) apart from it so that a node stays small (loading a million
- * leaves makes no million mallocs); the model points into the syntax tree (its `syntax`
- * nodes, names of unknown nodes), which must outlive it.
+ * Every node is allocated from the model's arena (loading a million leaves
+ * makes no million mallocs), the larger payloads (matrices, colours,
+ * errors) apart from the node so that it stays small (128 bytes). The
+ * model points into the syntax tree (`syntax` nodes, names, strings),
+ * which must outlive it.
  */
 #ifndef SPANCAST_MODEL_MODEL_H
 #define SPANCAST_MODEL_MODEL_H
