@@ -81,9 +81,7 @@ static sc_status read_params(const build_ctx *c, const parse_node *n, params *p)
     if ((st = model_number(BUILD_READER(c), n, "height", 0, &p->height)) != SC_OK ||
         (st = model_number(BUILD_READER(c), n, "twist", -1, &p->twist)) != SC_OK ||
         (st = model_number(BUILD_READER(c), n, "slices", -1, &p->slices)) != SC_OK ||
-        (st = model_number(BUILD_READER(c), n, "$fn", -1, &p->fn)) != SC_OK ||
-        (st = model_number(BUILD_READER(c), n, "$fa", -1, &p->fa)) != SC_OK ||
-        (st = model_number(BUILD_READER(c), n, "$fs", -1, &p->fs)) != SC_OK)
+        (st = model_read_resolution(BUILD_READER(c), n, &p->fn, &p->fa, &p->fs)) != SC_OK)
         return st;
     const parse_value *cv = model_arg(n, "center", 1);
     if (cv && cv->kind != PARSE_BOOL)

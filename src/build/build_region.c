@@ -166,16 +166,11 @@ static sc_status read_square(walker *w, const parse_node *n, const affine2 *m,
 static sc_status read_circle(walker *w, const parse_node *n, const affine2 *m,
                              int *pushed)
 {
-    double r = 1, d = NAN, unused;
-    sc_status st;
-    if ((st = model_number(BUILD_READER(w->c), n, "r", 0, &r)) != SC_OK ||
-        (st = model_number(BUILD_READER(w->c), n, "d", -1, &d)) != SC_OK ||
-        (st = model_number(BUILD_READER(w->c), n, "$fn", -1, &unused)) != SC_OK ||
-        (st = model_number(BUILD_READER(w->c), n, "$fa", -1, &unused)) != SC_OK ||
-        (st = model_number(BUILD_READER(w->c), n, "$fs", -1, &unused)) != SC_OK)
+    model_circle args; /* $fn, $fa, $fs checked, not used: the circle is exact */
+    sc_status st = model_read_circle(BUILD_READER(w->c), n, &args);
+    if (st != SC_OK)
         return st;
-    if (!isnan(d))
-        r = d / 2;
+    double r = isnan(args.d) ? args.r : args.d / 2;
     if (!(r > 0 && isfinite(r)))
         return SC_OK;
     return prim_region_add_ellipse(&w->region, m->m, r, pushed)

@@ -219,16 +219,12 @@ static int similarity(const affine2 *m)
 static sc_status read_circle(const build_ctx *c, const parse_node *n, const affine2 *m,
                              profile *p)
 {
-    double r = 1, d = NAN, fn = 0, fa = 12, fs = 2;
-    sc_status st;
-    if ((st = model_number(BUILD_READER(c), n, "r", 0, &r)) != SC_OK ||
-        (st = model_number(BUILD_READER(c), n, "d", -1, &d)) != SC_OK ||
-        (st = model_number(BUILD_READER(c), n, "$fn", -1, &fn)) != SC_OK ||
-        (st = model_number(BUILD_READER(c), n, "$fa", -1, &fa)) != SC_OK ||
-        (st = model_number(BUILD_READER(c), n, "$fs", -1, &fs)) != SC_OK)
+    model_circle args;
+    sc_status st = model_read_circle(BUILD_READER(c), n, &args);
+    if (st != SC_OK)
         return st;
-    if (!isnan(d))
-        r = d / 2;
+    double r = isnan(args.d) ? args.r : args.d / 2, fn = args.res.fn, fa = args.res.fa,
+           fs = args.res.fs;
     if (!(r > 0 && isfinite(r)))
         return SC_OK;
     long f = faithful_fragments(r, fn, fs, fa);
@@ -571,9 +567,7 @@ sc_status build_rotate_extrude(const build_ctx *c, const parse_node *n, int emit
     double angle = 360, fn = 0, fa = 12, fs = 2;
     sc_status st;
     if ((st = model_number(BUILD_READER(c), n, "angle", -1, &angle)) != SC_OK ||
-        (st = model_number(BUILD_READER(c), n, "$fn", -1, &fn)) != SC_OK ||
-        (st = model_number(BUILD_READER(c), n, "$fa", -1, &fa)) != SC_OK ||
-        (st = model_number(BUILD_READER(c), n, "$fs", -1, &fs)) != SC_OK)
+        (st = model_read_resolution(BUILD_READER(c), n, &fn, &fa, &fs)) != SC_OK)
         return st;
     const parse_value *cv = model_arg(n, "convexity", -1);
     if (cv && cv->kind != PARSE_NUMBER)

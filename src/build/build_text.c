@@ -135,9 +135,7 @@ static sc_status read_args(const build_ctx *c, const parse_node *n, text_args *a
         (st = get_string(c, n, "halign", -1, &a->halign)) != SC_OK ||
         (st = get_string(c, n, "valign", -1, &a->valign)) != SC_OK ||
         (st = model_number(BUILD_READER(c), n, "spacing", -1, &a->spacing)) != SC_OK ||
-        (st = model_number(BUILD_READER(c), n, "$fn", -1, &a->fn)) != SC_OK ||
-        (st = model_number(BUILD_READER(c), n, "$fa", -1, &a->fa)) != SC_OK ||
-        (st = model_number(BUILD_READER(c), n, "$fs", -1, &a->fs)) != SC_OK)
+        (st = model_read_resolution(BUILD_READER(c), n, &a->fn, &a->fa, &a->fs)) != SC_OK)
         return st;
     const parse_value *tv = model_arg(n, "text", 0);
     a->length = tv ? tv->u.string.length : 0;

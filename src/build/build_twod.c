@@ -89,14 +89,7 @@ static sc_status get_number(const eval *e, const parse_node *n, const char *name
 static sc_status get_resolution(const eval *e, const parse_node *n, double *fn,
                                 double *fa, double *fs)
 {
-    *fn = 0;
-    *fa = 12;
-    *fs = 2;
-    sc_status st;
-    if ((st = get_number(e, n, "$fn", -1, fn, NULL)) != SC_OK ||
-        (st = get_number(e, n, "$fa", -1, fa, NULL)) != SC_OK)
-        return st;
-    return get_number(e, n, "$fs", -1, fs, NULL);
+    return model_read_resolution(BUILD_READER(e->c), n, fn, fa, fs);
 }
 
 static sc_status read_square(const eval *e, const parse_node *n, twod_region *out)
@@ -127,15 +120,13 @@ static sc_status read_square(const eval *e, const parse_node *n, twod_region *ou
 
 static sc_status read_circle(const eval *e, const parse_node *n, twod_region *out)
 {
-    double r = 1, d = 0, fn, fa, fs;
-    int has_d;
-    sc_status st;
-    if ((st = get_number(e, n, "r", 0, &r, NULL)) != SC_OK ||
-        (st = get_number(e, n, "d", -1, &d, &has_d)) != SC_OK ||
-        (st = get_resolution(e, n, &fn, &fa, &fs)) != SC_OK)
+    model_circle args;
+    sc_status st = model_read_circle(BUILD_READER(e->c), n, &args);
+    if (st != SC_OK)
         return st;
-    if (has_d)
-        r = d / 2;
+    /* a d of nan is given: it empties the circle */
+    double r = args.has_d ? args.d / 2 : args.r, fn = args.res.fn, fa = args.res.fa,
+           fs = args.res.fs;
     out->sanitized = 1;
     if (!(r > 0 && isfinite(r)))
         return SC_OK;

@@ -228,3 +228,28 @@ sc_status model_read_surface(const model_reader *r, const parse_node *n,
     out->file_loc = model_loc(r, file);
     return SC_OK;
 }
+
+sc_status model_read_resolution(const model_reader *r, const parse_node *n, double *fn,
+                                double *fa, double *fs)
+{
+    *fn = 0;
+    *fa = 12;
+    *fs = 2;
+    sc_status st;
+    if ((st = model_number(r, n, "$fn", -1, fn)) != SC_OK ||
+        (st = model_number(r, n, "$fa", -1, fa)) != SC_OK)
+        return st;
+    return model_number(r, n, "$fs", -1, fs);
+}
+
+sc_status model_read_circle(const model_reader *r, const parse_node *n, model_circle *out)
+{
+    out->r = 1;
+    out->d = NAN;
+    out->has_d = model_arg(n, "d", -1) != NULL;
+    sc_status st;
+    if ((st = model_number(r, n, "r", 0, &out->r)) != SC_OK ||
+        (st = model_number(r, n, "d", -1, &out->d)) != SC_OK)
+        return st;
+    return model_read_resolution(r, n, &out->res.fn, &out->res.fa, &out->res.fs);
+}

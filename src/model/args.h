@@ -59,6 +59,19 @@ sc_status model_read_import(const model_reader *r, const parse_node *n,
 /* surface(file, center = false, invert = false) into *out. */
 sc_status model_read_surface(const model_reader *r, const parse_node *n,
                              model_surface *out);
+/* $fn, $fa, $fs of a 2D shape or an extrusion, each a number where given
+ * (OpenSCAD's defaults 0, 12, 2 where not). */
+sc_status model_read_resolution(const model_reader *r, const parse_node *n, double *fn,
+                                double *fa, double *fs);
+/* circle(r = 1 | d, $fn, $fa, $fs)'s arguments, in that order; what a d
+ * of nan means is the caller's (has_d says it was given). */
+typedef struct model_circle {
+    double r, d; /* d: nan when not given */
+    int has_d;
+    model_resolution res;
+} model_circle;
+sc_status model_read_circle(const model_reader *r, const parse_node *n,
+                            model_circle *out);
 /* Does s end in suffix (lower case), ignoring the case of s? */
 int model_has_suffix(const char *s, const char *suffix);
 
