@@ -16,6 +16,7 @@
 #include <string.h>
 
 #include "build/build.h"
+#include "model/colors.h"
 #include "build/scene.h"
 
 static sc_scene *load(const char *text)

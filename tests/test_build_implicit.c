@@ -1,9 +1,10 @@
-/* Tests of the torus, quadric and implicit nodes (src/build/
- * build_implicit.c): what each builds (membership through csg_inside),
- * positional and named arguments, defaults, every error and warning
- * message exactly, and the position of an expression's syntax error
- * inside its string literal, through escapes and raw line breaks. The
- * three models in models/ load and hold the points they should. */
+/* Tests of the torus, quadric and implicit nodes (read by
+ * src/model/lower_curved.c, built by src/build/build.c): what each
+ * builds (membership through csg_inside), positional and named arguments,
+ * defaults, every error and warning message exactly, and the position of
+ * an expression's syntax error inside its string literal, through escapes
+ * and raw line breaks. The three models in models/ load and hold the
+ * points they should. */
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>

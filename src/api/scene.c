@@ -15,6 +15,7 @@
 
 #include "base/error.h"
 #include "build/build.h"
+#include "model/model.h"
 #include "syntax/parse.h"
 
 void sc_load_options_init(sc_load_options *options)
@@ -46,9 +47,13 @@ sc_status sc_scene_load_string(const char *name, const char *text, size_t length
     }
     parse_tree *syntax = NULL;
     sc_status st = parse_text(s->path, text ? text : "", length, &syntax, error);
+    model *typed = NULL;
     if (st == SC_OK)
-        st = build_scene(syntax, options && options->faithful, &s->tree, &s->look,
+        st = model_lower(syntax, &typed, error);
+    if (st == SC_OK)
+        st = build_scene(typed, options && options->faithful, &s->tree, &s->look,
                          &s->warnings, &s->warning_count, error);
+    model_free(typed);
     parse_tree_free(syntax);
     if (st != SC_OK) {
         sc_scene_release(s);

@@ -12,7 +12,7 @@
  *   material                                  union; sets its children's material
  *   light, camera, background                 no geometry (build_shading.h)
  *   torus, quadric, implicit                  spancast's curved leaves
- *                                             (build_implicit.c)
+ *                                             (model/lower_curved.c)
  * Transforms (multmatrix, row-major 4x4) nest and accumulate into each
  * leaf's to_world; an inner colour wins over an outer one; leaves without a
  * colour get OpenSCAD's default face colour (Cornfield, #f9d72c).
@@ -40,12 +40,7 @@
 #include "csg/csg.h"
 #include "model/shading.h"
 #include "spancast/spancast.h"
-#include "syntax/parse.h"
-
-/* The largest $fn a node may set: it is the number of polygon sides that
- * OpenSCAD-faithful rendering builds, so an absurd value must not reach it.
- * A larger or non-finite $fn is an error at the value (docs/limits.md). */
-#define BUILD_MAX_FN 10000
+#include "model/model.h"
 
 /* The largest polyhedron the convex plane-set path takes, as faces times
  * points (its cost): 100000000 is about 10000 faces over 10000 points, a
@@ -58,28 +53,17 @@
         249 / 255.0f, 215 / 255.0f, 44 / 255.0f, 1.0f                                    \
     }
 
-/* Builds the CSG tree of syntax; with faithful set, spheres and cylinders
- * become OpenSCAD's polyhedra for their $fn, $fa, $fs (faithful.h). On success *out owns
- * the tree (free with csg_tree_free) and *warnings is a malloc'd array of *warning_count
- * warnings in source order (NULL when there are none; free with free()).
- * On failure nothing is returned and error says where and why. */
-sc_status build_tree(const parse_tree *syntax, int faithful, csg_tree **out,
-                     sc_error **warnings, size_t *warning_count, sc_error *error);
-
-/* The same, and also the scene's shading record (lights, materials, camera,
- * background: build_shading.h) in *look when look is not NULL (free with
- * shading_free). */
-sc_status build_scene(const parse_tree *syntax, int faithful, csg_tree **out,
-                      shading **look, sc_error **warnings, size_t *warning_count,
-                      sc_error *error);
-
-/* Looks up an OpenSCAD colour: a CSS/SVG name (any case) or "#rgb",
- * "#rgba", "#rrggbb", "#rrggbbaa". Returns 1 and fills rgba (0..1) when
- * known, else 0. (colors.c) */
-int colors_lookup(const char *name, size_t length, float rgba[4]);
-
-/* The colour table, for tests: its size and the index-th name. */
-size_t colors_count(void);
-const char *colors_name(size_t index);
+/* Builds the CSG tree of the model m and the scene's shading record
+ * (lights, materials, camera, background: build_shading.h); with faithful
+ * set, spheres and cylinders become OpenSCAD's polyhedra for their $fn,
+ * $fa, $fs (faithful.h). On success *out owns the tree (free with
+ * csg_tree_free), *look the shading record (free with shading_free; not
+ * made when look is NULL), and *warnings is a malloc'd array of
+ * *warning_count warnings in source order (NULL when there are none; free
+ * with free()). On failure nothing is returned and error says where and
+ * why: the first error in file order, which may be one the lowering found
+ * (a MODEL_ERROR node). */
+sc_status build_scene(const model *m, int faithful, csg_tree **out, shading **look,
+                      sc_error **warnings, size_t *warning_count, sc_error *error);
 
 #endif

@@ -1,78 +1,14 @@
-/* Argument helpers of the leaf and extrusion builders: see build_curved.h. */
-#include <math.h>
+/* The 2D part of a multmatrix, for the builders of 2D subtrees
+ * (build_ctx.h). */
 #include <string.h>
 
-#include "base/error.h"
-#include "build/build_curved.h"
-
-const parse_value *build_arg(const parse_node *n, const char *name, int position)
-{
-    const parse_arg *a = parse_node_arg(n, name, position);
-    return a && a->value.kind != PARSE_UNDEF ? &a->value : NULL;
-}
-
-sc_location build_loc(const build_ctx *c, const parse_value *v)
-{
-    sc_location loc = {c->file, v->line, v->column};
-    return loc;
-}
-
-sc_status build_wrong_type(const build_ctx *c, const parse_node *n, const char *param,
-                           const parse_value *v, const char *expected)
-{
-    sc_location loc = build_loc(c, v);
-    return err_set(c->error, SC_ERR_SEMANTIC, &loc,
-                   "wrong type for argument '%s' of '%s' (expected %s)", param, n->name,
-                   expected);
-}
-
-sc_status build_number(const build_ctx *c, const parse_node *n, const char *name,
-                       int position, double *out)
-{
-    const parse_value *v = build_arg(n, name, position);
-    if (!v)
-        return SC_OK;
-    if (v->kind != PARSE_NUMBER)
-        return build_wrong_type(c, n, name, v, "a number");
-    *out = v->u.number;
-    return SC_OK;
-}
-
-sc_status build_matrix(const build_ctx *c, const parse_node *n, double a[4][4])
-{
-    static const double id[4][4] = {
-        {1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}, {0, 0, 0, 1}};
-    memcpy(a, id, sizeof id);
-    const parse_value *v = build_arg(n, "m", 0);
-    int ok = !v || (v->kind == PARSE_VECTOR && v->u.vector.count == 4);
-    for (uint32_t r = 0; v && ok && r < 4; r++) {
-        const parse_value *row = &v->u.vector.items[r];
-        ok = row->kind == PARSE_VECTOR && row->u.vector.count == 4;
-        for (uint32_t k = 0; ok && k < 4; k++) {
-            ok = row->u.vector.items[k].kind == PARSE_NUMBER;
-            if (ok)
-                a[r][k] = row->u.vector.items[k].u.number;
-        }
-    }
-    if (!ok)
-        return err_set(c->error, SC_ERR_SEMANTIC, &n->loc,
-                       "multmatrix: matrix must be 4x4 numbers");
-    for (int r = 0; r < 4; r++)
-        for (int k = 0; k < 4; k++)
-            if (!isfinite(a[r][k]))
-                return err_set(c->error, SC_ERR_SEMANTIC, &n->loc,
-                               "multmatrix: matrix entries must be finite");
-    if (a[3][0] != 0 || a[3][1] != 0 || a[3][2] != 0 || a[3][3] != 1)
-        return err_set(c->error, SC_ERR_SEMANTIC, &n->loc,
-                       "multmatrix: bottom row must be [0, 0, 0, 1]");
-    return SC_OK;
-}
+#include "build/build_ctx.h"
 
 sc_status build_matrix_xy(const build_ctx *c, const parse_node *n,
                           const double outer[2][3], double inner[2][3])
 {
     double a[4][4];
-    sc_status st = build_matrix(c, n, a);
+    sc_status st = model_matrix(BUILD_READER(c), n, a);
     if (st != SC_OK)
         return st;
     double o[2][3];
@@ -82,106 +18,5 @@ sc_status build_matrix_xy(const build_ctx *c, const parse_node *n,
         inner[r][1] = o[r][0] * a[0][1] + o[r][1] * a[1][1];
         inner[r][2] = o[r][0] * a[0][3] + o[r][1] * a[1][3] + o[r][2];
     }
-    return SC_OK;
-}
-
-sc_status build_square(const build_ctx *c, const parse_node *n, double *sx, double *sy,
-                       int *center)
-{
-    *sx = *sy = 1;
-    *center = 0;
-    const parse_value *v = build_arg(n, "size", 0);
-    if (v && v->kind == PARSE_NUMBER) {
-        *sx = *sy = v->u.number;
-    } else if (v && v->kind == PARSE_VECTOR && v->u.vector.count == 2 &&
-               v->u.vector.items[0].kind == PARSE_NUMBER &&
-               v->u.vector.items[1].kind == PARSE_NUMBER) {
-        *sx = v->u.vector.items[0].u.number;
-        *sy = v->u.vector.items[1].u.number;
-    } else if (v) {
-        return build_wrong_type(c, n, "size", v, "a number or [x, y]");
-    }
-    const parse_value *cv = build_arg(n, "center", 1);
-    if (cv && cv->kind != PARSE_BOOL)
-        return build_wrong_type(c, n, "center", cv, "true or false");
-    *center = cv ? cv->u.boolean : 0;
-    return SC_OK;
-}
-
-sc_status build_bool(const build_ctx *c, const parse_node *n, const char *name,
-                     int position, int *out)
-{
-    const parse_value *v = build_arg(n, name, position);
-    if (!v)
-        return SC_OK;
-    if (v->kind != PARSE_BOOL)
-        return build_wrong_type(c, n, name, v, "true or false");
-    *out = v->u.boolean;
-    return SC_OK;
-}
-
-static const char polygon_points[] = "a vector of [x, y] points";
-
-sc_status build_polygon(const build_ctx *c, const parse_node *n,
-                        const parse_value **points, const parse_value **paths)
-{
-    const parse_value *pts = build_arg(n, "points", 0), *ps = build_arg(n, "paths", 1);
-    *points = pts;
-    *paths = ps;
-    if (!pts)
-        return SC_OK;
-    if (pts->kind != PARSE_VECTOR)
-        return build_wrong_type(c, n, "points", pts, polygon_points);
-    for (uint32_t i = 0; i < pts->u.vector.count; i++) {
-        const parse_value *v = &pts->u.vector.items[i];
-        if (v->kind != PARSE_VECTOR || v->u.vector.count != 2 ||
-            v->u.vector.items[0].kind != PARSE_NUMBER ||
-            v->u.vector.items[1].kind != PARSE_NUMBER ||
-            !isfinite(v->u.vector.items[0].u.number) ||
-            !isfinite(v->u.vector.items[1].u.number))
-            return build_wrong_type(c, n, "points", v, polygon_points);
-    }
-    if (ps && ps->kind != PARSE_VECTOR)
-        return build_wrong_type(c, n, "paths", ps, BUILD_POLYGON_PATHS);
-    for (uint32_t k = 0; ps && k < ps->u.vector.count; k++) {
-        if (ps->u.vector.items[k].kind != PARSE_VECTOR)
-            return build_wrong_type(c, n, "paths", &ps->u.vector.items[k],
-                                    BUILD_POLYGON_PATHS);
-    }
-    return SC_OK;
-}
-
-sc_status build_cube_args(const build_ctx *c, const parse_node *n, double size[3],
-                          int *center)
-{
-    size[0] = size[1] = size[2] = 1;
-    *center = 0;
-    const parse_value *v = build_arg(n, "size", 0);
-    if (v && v->kind == PARSE_NUMBER) {
-        size[0] = size[1] = size[2] = v->u.number;
-    } else if (v) {
-        int ok = v->kind == PARSE_VECTOR && v->u.vector.count == 3;
-        for (uint32_t i = 0; ok && i < 3; i++) {
-            ok = v->u.vector.items[i].kind == PARSE_NUMBER;
-            if (ok)
-                size[i] = v->u.vector.items[i].u.number;
-        }
-        if (!ok)
-            return build_wrong_type(c, n, "size", v, "a number or a vector of 3 numbers");
-    }
-    return build_bool(c, n, "center", 1, center);
-}
-
-sc_status build_polygon_index(const build_ctx *c, const parse_value *v, uint32_t path,
-                              uint32_t count, uint32_t *index)
-{
-    if (v->kind != PARSE_NUMBER || v->u.number != floor(v->u.number) || v->u.number < 0 ||
-        v->u.number >= count) {
-        sc_location loc = build_loc(c, v);
-        return err_set(c->error, SC_ERR_SEMANTIC, &loc,
-                       "polygon path %u: point index is not one of the %u points", path,
-                       count);
-    }
-    *index = (uint32_t)v->u.number;
     return SC_OK;
 }

@@ -23,14 +23,14 @@ static sc_status text_extrude(const build_ctx *c, const parse_node *n, int emit,
                               prim *out, const char **empty)
 {
     double height = 100;
-    const parse_value *h = build_arg(n, "height", 0);
+    const parse_value *h = model_arg(n, "height", 0);
     if (h && h->kind != PARSE_NUMBER)
-        return build_wrong_type(c, n, "height", h, "a number");
+        return model_wrong_type(BUILD_READER(c), n, "height", h, "a number");
     if (h)
         height = h->u.number;
-    const parse_value *cv = build_arg(n, "center", 1);
+    const parse_value *cv = model_arg(n, "center", 1);
     if (cv && cv->kind != PARSE_BOOL)
-        return build_wrong_type(c, n, "center", cv, "true or false");
+        return model_wrong_type(BUILD_READER(c), n, "center", cv, "true or false");
     return build_text_extrude(c, n, height, cv ? cv->u.boolean : 0, emit, out, empty);
 }
 

@@ -75,21 +75,19 @@ static sc_status read_params(const build_ctx *c, const parse_node *n, params *p)
     p->fa = 12;
     p->fs = 2;
     sc_status st;
-    if (build_arg(n, "file", -1))
+    if (model_arg(n, "file", -1))
         return err_set(c->error, SC_ERR_UNSUPPORTED, &n->loc,
                        "linear_extrude of a file is not supported yet");
-    if ((st = build_number(c, n, "height", 0, &p->height)) != SC_OK ||
-        (st = build_number(c, n, "twist", -1, &p->twist)) != SC_OK ||
-        (st = build_number(c, n, "slices", -1, &p->slices)) != SC_OK ||
-        (st = build_number(c, n, "$fn", -1, &p->fn)) != SC_OK ||
-        (st = build_number(c, n, "$fa", -1, &p->fa)) != SC_OK ||
-        (st = build_number(c, n, "$fs", -1, &p->fs)) != SC_OK)
+    if ((st = model_number(BUILD_READER(c), n, "height", 0, &p->height)) != SC_OK ||
+        (st = model_number(BUILD_READER(c), n, "twist", -1, &p->twist)) != SC_OK ||
+        (st = model_number(BUILD_READER(c), n, "slices", -1, &p->slices)) != SC_OK ||
+        (st = model_read_resolution(BUILD_READER(c), n, &p->fn, &p->fa, &p->fs)) != SC_OK)
         return st;
-    const parse_value *cv = build_arg(n, "center", 1);
+    const parse_value *cv = model_arg(n, "center", 1);
     if (cv && cv->kind != PARSE_BOOL)
-        return build_wrong_type(c, n, "center", cv, "true or false");
+        return model_wrong_type(BUILD_READER(c), n, "center", cv, "true or false");
     p->center = cv ? cv->u.boolean : 0;
-    const parse_value *sv = build_arg(n, "scale", -1);
+    const parse_value *sv = model_arg(n, "scale", -1);
     if (sv && sv->kind == PARSE_NUMBER) {
         p->sx = p->sy = sv->u.number;
     } else if (sv && sv->kind == PARSE_VECTOR && sv->u.vector.count == 2 &&
@@ -98,15 +96,15 @@ static sc_status read_params(const build_ctx *c, const parse_node *n, params *p)
         p->sx = sv->u.vector.items[0].u.number;
         p->sy = sv->u.vector.items[1].u.number;
     } else if (sv) {
-        return build_wrong_type(c, n, "scale", sv, "a number or [x, y]");
+        return model_wrong_type(BUILD_READER(c), n, "scale", sv, "a number or [x, y]");
     }
     if (!isfinite(p->sx) || !isfinite(p->sy)) {
-        sc_location loc = build_loc(c, sv);
+        sc_location loc = model_loc(BUILD_READER(c), sv);
         return err_set(c->error, SC_ERR_SEMANTIC, &loc,
                        "linear_extrude: scale must be finite");
     }
     if (!isfinite(p->twist)) {
-        sc_location loc = build_loc(c, build_arg(n, "twist", -1));
+        sc_location loc = model_loc(BUILD_READER(c), model_arg(n, "twist", -1));
         return err_set(c->error, SC_ERR_SEMANTIC, &loc,
                        "linear_extrude: twist must be finite");
     }
@@ -116,7 +114,7 @@ static sc_status read_params(const build_ctx *c, const parse_node *n, params *p)
     p->sy = p->sy < 0 ? 0 : p->sy;
     p->slices = isfinite(p->slices) && p->slices >= 1 ? trunc(p->slices) : 0;
     if (p->slices > MAX_SLICES) {
-        sc_location loc = build_loc(c, build_arg(n, "slices", -1));
+        sc_location loc = model_loc(BUILD_READER(c), model_arg(n, "slices", -1));
         return err_set(c->error, SC_ERR_LIMIT, &loc,
                        "linear_extrude: %g slices are too many (limit is %.0f)",
                        p->slices, MAX_SLICES);

@@ -5,7 +5,7 @@
 #ifndef SPANCAST_BUILD_BUILD_EXTRUDE_FAITHFUL_H
 #define SPANCAST_BUILD_BUILD_EXTRUDE_FAITHFUL_H
 
-#include "build/build_curved.h"
+#include "build/build_ctx.h"
 
 /* Most side quads (slices times outline points) of one extrusion. */
 #define BUILD_EXTRUDE_MAX_QUADS 2000000u

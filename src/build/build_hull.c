@@ -56,6 +56,8 @@
 #include "build/build_revolve.h"
 #include "csg/hull3.h"
 #include "csg/prim_mesh.h"
+#include "model/lower_curved.h"
+#include "model/args.h"
 #include "model/faithful.h"
 
 /* Above this many planes a hull is built as a triangle mesh. */
@@ -195,8 +197,8 @@ static sc_status get_number(const build_ctx *c, const parse_node *n, const char 
                             int position, double *out, int *given)
 {
     if (given)
-        *given = build_arg(n, name, position) != NULL;
-    return build_number(c, n, name, position, out);
+        *given = model_arg(n, name, position) != NULL;
+    return model_number(BUILD_READER(c), n, name, position, out);
 }
 
 /* A diameter wins over a radius, as in OpenSCAD. */
@@ -242,7 +244,7 @@ static sc_status read_cube(const build_ctx *c, const parse_node *n, shape *s)
 {
     double size[3];
     int center;
-    sc_status st = build_cube_args(c, n, size, &center);
+    sc_status st = model_cube(BUILD_READER(c), n, size, &center);
     if (st != SC_OK)
         return st;
     if (!positive_finite(size[0]) || !positive_finite(size[1]) ||
@@ -279,7 +281,7 @@ static sc_status read_cylinder(const build_ctx *c, const parse_node *n, shape *s
     if (st == SC_OK)
         st = get_radius(c, n, "d", "r", -1, &r, &has_r);
     if (st == SC_OK)
-        st = build_bool(c, n, "center", 3, &center);
+        st = model_bool(BUILD_READER(c), n, "center", 3, &center);
     if (st != SC_OK)
         return st;
     if (!has_r1)
@@ -301,9 +303,10 @@ static sc_status read_shape(const build_ctx *c, const parse_node *n, shape *s)
 {
     memset(s, 0, sizeof *s);
     parse_node_resolution(n, &s->fn, &s->fa, &s->fs);
-    if (strcmp(n->name, "cube") == 0)
+    model_kind kind = model_kind_of(n->name);
+    if (kind == MODEL_CUBE)
         return read_cube(c, n, s);
-    if (strcmp(n->name, "sphere") == 0)
+    if (kind == MODEL_SPHERE)
         return read_sphere(c, n, s);
     return read_cylinder(c, n, s);
 }
@@ -368,18 +371,18 @@ static sc_status polyhedron_points(const walk *w, const parse_node *n, const aff
                                    pointset *out, double *volume)
 {
     const build_ctx *c = w->c;
-    const parse_value *pts = build_arg(n, "points", 0);
+    const parse_value *pts = model_arg(n, "points", 0);
     const char *faces_name = "faces";
-    const parse_value *faces = build_arg(n, "faces", 1);
-    if (!faces && (faces = build_arg(n, "triangles", -1)))
+    const parse_value *faces = model_arg(n, "faces", 1);
+    if (!faces && (faces = model_arg(n, "triangles", -1)))
         faces_name = "triangles";
     *volume = 0;
     if (!pts || !faces)
         return SC_OK;
     if (pts->kind != PARSE_VECTOR)
-        return build_wrong_type(c, n, "points", pts, points_expected);
+        return model_wrong_type(BUILD_READER(c), n, "points", pts, points_expected);
     if (faces->kind != PARSE_VECTOR)
-        return build_wrong_type(c, n, faces_name, faces, faces_expected);
+        return model_wrong_type(BUILD_READER(c), n, faces_name, faces, faces_expected);
     uint32_t np = pts->u.vector.count;
     vec3 *p = np ? malloc((size_t)np * sizeof *p) : NULL;
     unsigned char *used = np ? calloc(np, 1) : NULL;
@@ -400,7 +403,7 @@ static sc_status polyhedron_points(const walk *w, const parse_node *n, const aff
                 xyz[k] = pv->u.vector.items[k].u.number;
         }
         if (!ok)
-            st = build_wrong_type(c, n, "points", pv, points_expected);
+            st = model_wrong_type(BUILD_READER(c), n, "points", pv, points_expected);
         else
             p[i] = affine_point(m, v3(xyz[0], xyz[1], xyz[2]));
     }
@@ -408,7 +411,7 @@ static sc_status polyhedron_points(const walk *w, const parse_node *n, const aff
     for (uint32_t f = 0; f < faces->u.vector.count && st == SC_OK; f++) {
         const parse_value *fv = &faces->u.vector.items[f];
         if (fv->kind != PARSE_VECTOR) {
-            st = build_wrong_type(c, n, faces_name, fv, faces_expected);
+            st = model_wrong_type(BUILD_READER(c), n, faces_name, fv, faces_expected);
             break;
         }
         uint32_t first = 0, prev = 0;
@@ -416,7 +419,7 @@ static sc_status polyhedron_points(const walk *w, const parse_node *n, const aff
             const parse_value *iv = &fv->u.vector.items[i];
             double x = iv->kind == PARSE_NUMBER ? iv->u.number : -1;
             if (!(x >= 0 && x < (double)np && x == floor(x))) {
-                sc_location loc = build_loc(c, iv);
+                sc_location loc = model_loc(BUILD_READER(c), iv);
                 st = err_set(
                     c->error, SC_ERR_SEMANTIC, &loc,
                     "polyhedron face %u: point index is not one of the %u points", f, np);
@@ -454,11 +457,20 @@ static sc_status mesh_points(const walk *w, const parse_node *n, const affine *m
     build_ctx fc = *w->c;
     fc.faithful = 1;
     sc_status st;
-    if (strcmp(n->name, "import") == 0)
-        st = build_import(w->c, n, 1, &p, &empty);
-    else if (strcmp(n->name, "surface") == 0)
-        st = build_surface(w->c, n, 1, &p, &empty);
-    else if (strcmp(n->name, "rotate_extrude") == 0)
+    model_kind kind = model_kind_of(n->name);
+    if (kind == MODEL_IMPORT) {
+        model_reader r = {w->c->file, w->c->error};
+        model_import import;
+        st = model_read_import(&r, n, &import);
+        if (st == SC_OK)
+            st = build_import(w->c, &import, &p, &empty);
+    } else if (kind == MODEL_SURFACE) {
+        model_reader r = {w->c->file, w->c->error};
+        model_surface surface;
+        st = model_read_surface(&r, n, &surface);
+        if (st == SC_OK)
+            st = build_surface(w->c, &surface, &p, &empty);
+    } else if (kind == MODEL_ROTATE_EXTRUDE)
         st = build_rotate_extrude(&fc, n, 1, &p, &empty);
     else
         st = build_linear_extrude(&fc, n, 1, &p, &empty);
@@ -486,7 +498,7 @@ static sc_status read_matrix(const build_ctx *c, const parse_node *n, affine *ou
 {
     *ok = 1;
     double m[4][4];
-    sc_status st = build_matrix(c, n, m);
+    sc_status st = model_matrix(BUILD_READER(c), n, m);
     if (st != SC_OK)
         return st;
     for (int r = 0; r < 3; r++)
@@ -497,21 +509,24 @@ static sc_status read_matrix(const build_ctx *c, const parse_node *n, affine *ou
     return SC_OK;
 }
 
-static int is_name(const parse_node *n, const char *const *names)
+/* group, union, render, color, material: the union of their children. */
+static int is_group(model_kind kind)
 {
-    for (; *names; names++) {
-        if (strcmp(n->name, *names) == 0)
-            return 1;
-    }
-    return 0;
+    return kind == MODEL_UNION || kind == MODEL_COLOR || kind == MODEL_MATERIAL;
 }
 
-static const char *const group_names[] = {"group", "union",    "render",
-                                          "color", "material", NULL};
-static const char *const shading_names[] = {"light", "camera", "background", NULL};
-static const char *const mesh_names[] = {"import", "linear_extrude", "rotate_extrude",
-                                         "surface", NULL};
-static const char *const shape_names[] = {"cube", "sphere", "cylinder", NULL};
+/* light, camera, background: no geometry. */
+static int is_shading(model_kind kind)
+{
+    return kind == MODEL_LIGHT || kind == MODEL_CAMERA || kind == MODEL_BACKGROUND;
+}
+
+/* The leaves built as meshes: import, the extrusions, surface. */
+static int is_mesh(model_kind kind)
+{
+    return kind == MODEL_IMPORT || kind == MODEL_LINEAR_EXTRUDE ||
+           kind == MODEL_ROTATE_EXTRUDE || kind == MODEL_SURFACE;
+}
 
 static int skipped(const parse_node *n)
 {
@@ -539,16 +554,17 @@ static sc_status collect(const walk *w, const parse_node *parent, const affine *
     if (depth > BUILD_HULL_MAX_DEPTH)
         return depth_error(w, parent);
     for (const parse_node *n = parent->first_child; n; n = n->next) {
-        if (skipped(n) || is_name(n, shading_names))
+        model_kind kind = model_kind_of(n->name);
+        if (skipped(n) || is_shading(kind))
             continue;
         sc_status st = SC_OK;
-        if (is_name(n, group_names)) {
+        if (is_group(kind)) {
             st = collect(w, n, m, depth + 1, out);
-        } else if (strcmp(n->name, "multmatrix") == 0 || strcmp(n->name, "resize") == 0) {
+        } else if (kind == MODEL_XFORM || kind == MODEL_RESIZE) {
             affine local;
             int ok = 1;
             const char *warning = NULL;
-            if (n->name[0] == 'm')
+            if (kind == MODEL_XFORM)
                 st = read_matrix(c, n, &local, &ok);
             else
                 st = resize_matrix(w, n, depth + 1, &local, &warning);
@@ -556,18 +572,18 @@ static sc_status collect(const walk *w, const parse_node *parent, const affine *
                 affine inner = affine_mul(m, &local);
                 st = collect(w, n, &inner, depth + 1, out);
             }
-        } else if (is_name(n, shape_names)) {
+        } else if (kind == MODEL_CUBE || kind == MODEL_SPHERE || kind == MODEL_CYLINDER) {
             shape s;
             if ((st = read_shape(c, n, &s)) == SC_OK && s.kind != SHAPE_NONE) {
                 pointset *part = new_part(out);
                 st = part ? shape_points(w, n, &s, m, part)
                           : err_nomem(c->error, (&n->loc));
             }
-        } else if (strcmp(n->name, "polyhedron") == 0 || is_name(n, mesh_names)) {
+        } else if (kind == MODEL_POLYHEDRON || is_mesh(kind)) {
             pointset set = {NULL, 0, 0};
             double volume = 0;
-            st = n->name[0] == 'p' ? polyhedron_points(w, n, m, &set, &volume)
-                                   : mesh_points(w, n, m, &set, &volume);
+            st = kind == MODEL_POLYHEDRON ? polyhedron_points(w, n, m, &set, &volume)
+                                          : mesh_points(w, n, m, &set, &volume);
             if (st == SC_OK && w->convex && set.count) {
                 hull3 h;
                 hull3_status hs = hull3_compute(set.p, set.count, &h);
@@ -588,7 +604,7 @@ static sc_status collect(const walk *w, const parse_node *parent, const affine *
                 set.p = NULL;
             }
             free(set.p);
-        } else if (strcmp(n->name, "hull") == 0) {
+        } else if (kind == MODEL_HULL) {
             walk inner = {c, "hull", 0, w->cache};
             partlist sub = {NULL, 0, 0};
             st = collect(&inner, n, m, depth + 1, &sub);
@@ -602,7 +618,7 @@ static sc_status collect(const walk *w, const parse_node *parent, const affine *
                 }
             }
             parts_free(&sub);
-        } else if (strcmp(n->name, "minkowski") == 0) {
+        } else if (kind == MODEL_MINKOWSKI) {
             st = minkowski_parts(w, n, m, depth + 1, out);
         } else {
             st = err_set(c->error, SC_ERR_UNSUPPORTED, &n->loc,
@@ -864,25 +880,26 @@ static sc_status support_node(const walk *w, const parse_node *n, const affine *
 {
     const build_ctx *c = w->c;
     sc_status st = SC_OK;
-    if (is_name(n, group_names))
+    model_kind kind = model_kind_of(n->name);
+    if (is_group(kind))
         return support(w, n, m, depth + 1, out);
-    if (strcmp(n->name, "multmatrix") == 0 || strcmp(n->name, "resize") == 0) {
+    if (kind == MODEL_XFORM || kind == MODEL_RESIZE) {
         affine local;
         int ok = 1;
         const char *warning = NULL;
-        st = n->name[0] == 'm' ? read_matrix(c, n, &local, &ok)
-                               : resize_matrix(w, n, depth + 1, &local, &warning);
+        st = kind == MODEL_XFORM ? read_matrix(c, n, &local, &ok)
+                                 : resize_matrix(w, n, depth + 1, &local, &warning);
         if (st != SC_OK || !ok)
             return st;
         affine inner = affine_mul(m, &local);
         return support(w, n, &inner, depth + 1, out);
     }
-    if (strcmp(n->name, "difference") == 0 || strcmp(n->name, "intersection") == 0) {
+    if (kind == MODEL_DIFFERENCE || kind == MODEL_INTERSECTION) {
         int first = 1;
         double acc[6] = {-INFINITY, -INFINITY, -INFINITY,
                          -INFINITY, -INFINITY, -INFINITY};
         for (const parse_node *k = n->first_child; k; k = k->next) {
-            if (skipped(k) || is_name(k, shading_names))
+            if (skipped(k) || is_shading(model_kind_of(k->name)))
                 continue;
             double s[6] = {-INFINITY, -INFINITY, -INFINITY,
                            -INFINITY, -INFINITY, -INFINITY};
@@ -891,20 +908,20 @@ static sc_status support_node(const walk *w, const parse_node *n, const affine *
             for (int i = 0; i < 6; i++)
                 acc[i] = first ? s[i] : fmin(acc[i], s[i]);
             first = 0;
-            if (n->name[0] == 'd')
+            if (kind == MODEL_DIFFERENCE)
                 break;
         }
         for (int i = 0; i < 6; i++)
             out[i] = fmax(out[i], acc[i]);
         return SC_OK;
     }
-    if (strcmp(n->name, "minkowski") == 0) {
+    if (kind == MODEL_MINKOWSKI) {
         double sum[6] = {0, 0, 0, 0, 0, 0};
         int any = 0;
         affine linear = *m;
         linear.m[0][3] = linear.m[1][3] = linear.m[2][3] = 0;
         for (const parse_node *k = n->first_child; k; k = k->next) {
-            if (skipped(k) || is_name(k, shading_names))
+            if (skipped(k) || is_shading(model_kind_of(k->name)))
                 continue;
             double s[6] = {-INFINITY, -INFINITY, -INFINITY,
                            -INFINITY, -INFINITY, -INFINITY};
@@ -921,8 +938,7 @@ static sc_status support_node(const walk *w, const parse_node *n, const affine *
         return SC_OK;
     }
     vec3 t = v3(m->m[0][3], m->m[1][3], m->m[2][3]);
-    if (!c->faithful &&
-        (strcmp(n->name, "sphere") == 0 || strcmp(n->name, "cylinder") == 0)) {
+    if (!c->faithful && (kind == MODEL_SPHERE || kind == MODEL_CYLINDER)) {
         shape s;
         if ((st = read_shape(c, n, &s)) != SC_OK || s.kind == SHAPE_NONE)
             return st;
@@ -944,27 +960,32 @@ static sc_status support_node(const walk *w, const parse_node *n, const affine *
         }
         return SC_OK;
     }
-    if (strcmp(n->name, "torus") == 0 || strcmp(n->name, "quadric") == 0 ||
-        strcmp(n->name, "implicit") == 0) {
-        prim p;
-        memset(&p, 0, sizeof p);
-        const char *empty = NULL;
-        st = n->name[0] == 't'   ? build_torus(c, n, 1, &p, &empty)
-             : n->name[0] == 'q' ? build_quadric(c, n, 1, &p, &empty)
-                                 : build_implicit(c, n, 1, &p, &empty);
-        if (st != SC_OK || empty)
-            return st;
-        if (p.kind == PRIM_TORUS) {
+    if (kind == MODEL_TORUS || kind == MODEL_QUADRIC || kind == MODEL_IMPLICIT) {
+        model_reader r = {c->file, c->error};
+        if (kind == MODEL_TORUS) {
+            model_torus torus;
+            if ((st = model_read_torus(&r, n, &torus)) != SC_OK || torus.empty)
+                return st;
             for (int k = 0; k < 3; k++) {
                 vec3 u = row(m, k);
-                double h =
-                    p.u.torus.major * hypot(u.x, u.y) + p.u.torus.minor * v3_length(u);
+                double h = torus.r1 * hypot(u.x, u.y) + torus.r2 * v3_length(u);
                 out[2 * k] = fmax(out[2 * k], v3_get(t, k) + h);
                 out[2 * k + 1] = fmax(out[2 * k + 1], -v3_get(t, k) + h);
             }
             return SC_OK;
         }
-        bbox box = p.kind == PRIM_QUADRIC ? p.u.quadric.box : p.u.implicit.box;
+        bbox box;
+        if (kind == MODEL_QUADRIC) {
+            model_quadric quadric;
+            if ((st = model_read_quadric(&r, n, &quadric)) != SC_OK || quadric.empty)
+                return st;
+            box = quadric.box;
+        } else {
+            model_implicit implicit;
+            if ((st = model_read_implicit(&r, n, &implicit)) != SC_OK || implicit.empty)
+                return st;
+            box = implicit.box;
+        }
         pointset corners = {NULL, 0, 0};
         vec3 list[8];
         for (int k = 0; k < 8; k++)
@@ -1000,7 +1021,7 @@ static sc_status support(const walk *w, const parse_node *parent, const affine *
     if (depth > BUILD_HULL_MAX_DEPTH)
         return depth_error(w, parent);
     for (const parse_node *n = parent->first_child; n; n = n->next) {
-        if (skipped(n) || is_name(n, shading_names))
+        if (skipped(n) || is_shading(model_kind_of(n->name)))
             continue;
         sc_status st = support_node(w, n, m, depth, out);
         if (st != SC_OK)
@@ -1014,7 +1035,7 @@ static sc_status support(const walk *w, const parse_node *parent, const affine *
 static sc_status read_triple(const build_ctx *c, const parse_node *n, const char *name,
                              int position, int flags, double out[3])
 {
-    const parse_value *v = build_arg(n, name, position);
+    const parse_value *v = model_arg(n, name, position);
     static const char numbers[] = "a vector of numbers";
     static const char bools[] = "true, false or a vector of them";
     if (!v)
@@ -1024,7 +1045,7 @@ static sc_status read_triple(const build_ctx *c, const parse_node *n, const char
         return SC_OK;
     }
     if (v->kind != PARSE_VECTOR)
-        return build_wrong_type(c, n, name, v, flags ? bools : numbers);
+        return model_wrong_type(BUILD_READER(c), n, name, v, flags ? bools : numbers);
     for (uint32_t i = 0; i < v->u.vector.count && i < 3; i++) {
         const parse_value *item = &v->u.vector.items[i];
         if (flags && item->kind == PARSE_BOOL)
@@ -1032,7 +1053,8 @@ static sc_status read_triple(const build_ctx *c, const parse_node *n, const char
         else if (item->kind == PARSE_NUMBER && isfinite(item->u.number))
             out[i] = flags ? item->u.number != 0 : item->u.number;
         else
-            return build_wrong_type(c, n, name, item, flags ? bools : numbers);
+            return model_wrong_type(BUILD_READER(c), n, name, item,
+                                    flags ? bools : numbers);
     }
     return SC_OK;
 }
@@ -1069,8 +1091,8 @@ static sc_status measure(const walk *w, const parse_node *n, int depth, affine *
         return st;
     for (int k = 0; k < 3; k++) {
         if (size[k] < 0) {
-            const parse_value *v = build_arg(n, "newsize", 0);
-            sc_location loc = build_loc(c, v);
+            const parse_value *v = model_arg(n, "newsize", 0);
+            sc_location loc = model_loc(BUILD_READER(c), v);
             return err_set(c->error, SC_ERR_UNSUPPORTED, &loc,
                            "resize to a negative size is not supported yet");
         }

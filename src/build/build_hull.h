@@ -6,7 +6,7 @@
 
 #include <stdint.h>
 
-#include "build/build_curved.h"
+#include "build/build_ctx.h"
 #include "math/vec.h"
 
 /* Nesting below a hull, minkowski or resize node that their walks follow. */
@@ -54,9 +54,10 @@ sc_status build_minkowski(const build_ctx *c, const parse_node *n, int emit,
 sc_status build_resize(const build_ctx *c, const parse_node *n,
                        build_resize_cache **cache, affine *out, const char **warning);
 
-/* surface(file, center, invert): the closed mesh OpenSCAD 2021.01 builds
- * from a .dat height map or a PNG image (build_surface.c). */
-sc_status build_surface(const build_ctx *c, const parse_node *n, int emit, prim *out,
+/* surface(file, center, invert) (its arguments read by the lowering
+ * pass): the closed mesh OpenSCAD 2021.01 builds from a .dat height map or
+ * a PNG image (build_surface.c). */
+sc_status build_surface(const build_ctx *c, const model_surface *s, prim *out,
                         const char **empty);
 
 #endif

@@ -429,21 +429,6 @@ static const char *read_off(const char *text, size_t size, mesh_file *m, int *oo
     return finish_faces(m) ? NULL : (*oom = 1, "out of memory");
 }
 
-int build_has_suffix(const char *s, const char *suffix)
-{
-    size_t a = strlen(s), b = strlen(suffix);
-    if (a < b)
-        return 0;
-    for (size_t i = 0; i < b; i++) {
-        char x = s[a - b + i];
-        if (x >= 'A' && x <= 'Z')
-            x = (char)(x - 'A' + 'a');
-        if (x != suffix[i])
-            return 0;
-    }
-    return 1;
-}
-
 char *build_file_path(const build_ctx *c, const char *name)
 {
     const char *slash = c->file ? strrchr(c->file, '/') : NULL;
@@ -456,29 +441,12 @@ char *build_file_path(const build_ctx *c, const char *name)
     return path;
 }
 
-sc_status build_import(const build_ctx *c, const parse_node *n, int emit, prim *out,
+sc_status build_import(const build_ctx *c, const model_import *import, prim *out,
                        const char **empty)
 {
-    const parse_arg *a = parse_node_arg(n, "file", 0);
-    if (!a || a->value.kind != PARSE_STRING) {
-        if (a && a->value.kind != PARSE_UNDEF) {
-            sc_location loc = {c->file, a->value.line, a->value.column};
-            return err_set(c->error, SC_ERR_SEMANTIC, &loc,
-                           "wrong type for argument 'file' of 'import' (expected a file "
-                           "name)");
-        }
-        return err_set(c->error, SC_ERR_SEMANTIC, &n->loc,
-                       "missing argument 'file' of 'import'");
-    }
-    const char *name = a->value.u.string.chars;
-    sc_location loc = {c->file, a->value.line, a->value.column};
-    int stl = build_has_suffix(name, ".stl"), off = build_has_suffix(name, ".off");
-    if (!stl && !off)
-        return err_set(c->error, SC_ERR_UNSUPPORTED, &loc,
-                       "import of '%s' is not supported yet (only .stl and .off files)",
-                       name);
-    if (!emit)
-        return SC_OK;
+    const char *name = import->file;
+    const sc_location loc = import->file_loc;
+    int stl = import->format == MODEL_MESH_STL;
     char *path = build_file_path(c, name);
     if (!path)
         return err_nomem(c->error, (&loc));

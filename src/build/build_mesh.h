@@ -6,7 +6,8 @@
 
 #include <stdint.h>
 
-#include "build/build_curved.h"
+#include "build/build_ctx.h"
+#include "model/model.h"
 
 /* The largest mesh file import reads, in bytes (docs/meshes.md). */
 #define BUILD_MAX_MESH_FILE (512u * 1024u * 1024u)
@@ -23,15 +24,14 @@ sc_status build_mesh_prim(const build_ctx *c, const sc_location *loc, const char
                           const uint32_t *indices, const uint32_t *face_start,
                           uint32_t face_count, prim *out, const char **empty);
 
-/* Does s end in suffix (lower case), ignoring the case of s? */
-int build_has_suffix(const char *s, const char *suffix);
 /* The path of a file a model names: relative names are relative to the
  * directory of the file being read (c->file). malloc'd; NULL when memory
  * runs out. */
 char *build_file_path(const build_ctx *c, const char *name);
-/* import(file): an STL (ASCII or binary) or OFF file, its path relative to
- * the directory of the file being read. */
-sc_status build_import(const build_ctx *c, const parse_node *n, int emit, prim *out,
+/* import(file) (its name checked by the lowering pass): an STL (ASCII or
+ * binary) or OFF file, its path relative to the directory of the file
+ * being read. */
+sc_status build_import(const build_ctx *c, const model_import *import, prim *out,
                        const char **empty);
 
 /* linear_extrude (build_extrude.c): exact in default mode without twist or

@@ -45,18 +45,19 @@ typedef struct walker {
     uint32_t start_cap;
 } walker;
 
-static int name_is(const parse_node *n, const char *const *names)
+/* The 2D leaves the walk reads. */
+static int is_leaf(model_kind kind)
 {
-    for (; *names; names++)
-        if (strcmp(n->name, *names) == 0)
-            return 1;
-    return 0;
+    return kind == MODEL_CIRCLE || kind == MODEL_SQUARE || kind == MODEL_POLYGON;
 }
 
-static const char *const leaf_names[] = {"circle", "square", "polygon", NULL};
-static const char *const op_names[] = {"group",        "union",      "render",
-                                       "color",        "multmatrix", "difference",
-                                       "intersection", NULL};
+/* The operations it reads: group, union, render, color, multmatrix,
+ * difference, intersection. */
+static int is_op(model_kind kind)
+{
+    return kind == MODEL_UNION || kind == MODEL_COLOR || kind == MODEL_XFORM ||
+           kind == MODEL_DIFFERENCE || kind == MODEL_INTERSECTION;
+}
 
 /* The first node below n (n included) the walk cannot read, or NULL. */
 static const parse_node *uncovered(const parse_node *n, int depth)
@@ -64,9 +65,10 @@ static const parse_node *uncovered(const parse_node *n, int depth)
     if (depth > BUILD_REGION_MAX_DEPTH ||
         (n->modifiers & (PARSE_MOD_DISABLE | PARSE_MOD_BACKGROUND)))
         return NULL; /* the walk reports the depth; '%' and '*' are not built */
-    if (name_is(n, leaf_names))
+    model_kind kind = model_kind_of(n->name);
+    if (is_leaf(kind))
         return NULL;
-    if (!name_is(n, op_names))
+    if (!is_op(kind))
         return n;
     for (const parse_node *k = n->first_child; k; k = k->next) {
         const parse_node *miss = uncovered(k, depth + 1);
@@ -83,10 +85,10 @@ int build_region_covers(const parse_node *n, const parse_node **miss)
         *miss = uncovered(k, 1);
     if (*miss)
         return 0;
-    const parse_value *twist = build_arg(n, "twist", -1);
+    const parse_value *twist = model_arg(n, "twist", -1);
     if (twist && !(twist->kind == PARSE_NUMBER && twist->u.number == 0))
         return 0;
-    const parse_value *sv = build_arg(n, "scale", -1);
+    const parse_value *sv = model_arg(n, "scale", -1);
     if (sv) {
         int one = (sv->kind == PARSE_NUMBER && sv->u.number == 1) ||
                   (sv->kind == PARSE_VECTOR && sv->u.vector.count == 2 &&
@@ -141,7 +143,7 @@ static sc_status read_square(walker *w, const parse_node *n, const affine2 *m,
     const build_ctx *c = w->c;
     double sx, sy;
     int center;
-    sc_status st = build_square(c, n, &sx, &sy, &center);
+    sc_status st = model_square(BUILD_READER(c), n, &sx, &sy, &center);
     if (st != SC_OK)
         return st;
     if (!(sx > 0 && sy > 0 && isfinite(sx) && isfinite(sy)))
@@ -164,16 +166,11 @@ static sc_status read_square(walker *w, const parse_node *n, const affine2 *m,
 static sc_status read_circle(walker *w, const parse_node *n, const affine2 *m,
                              int *pushed)
 {
-    double r = 1, d = NAN, unused;
-    sc_status st;
-    if ((st = build_number(w->c, n, "r", 0, &r)) != SC_OK ||
-        (st = build_number(w->c, n, "d", -1, &d)) != SC_OK ||
-        (st = build_number(w->c, n, "$fn", -1, &unused)) != SC_OK ||
-        (st = build_number(w->c, n, "$fa", -1, &unused)) != SC_OK ||
-        (st = build_number(w->c, n, "$fs", -1, &unused)) != SC_OK)
+    model_circle args; /* $fn, $fa, $fs checked, not used: the circle is exact */
+    sc_status st = model_read_circle(BUILD_READER(w->c), n, &args);
+    if (st != SC_OK)
         return st;
-    if (!isnan(d))
-        r = d / 2;
+    double r = isnan(args.d) ? args.r : args.d / 2;
     if (!(r > 0 && isfinite(r)))
         return SC_OK;
     return prim_region_add_ellipse(&w->region, m->m, r, pushed)
@@ -187,7 +184,7 @@ static sc_status read_polygon(walker *w, const parse_node *n, const affine2 *m,
 {
     const build_ctx *c = w->c;
     const parse_value *pts, *paths;
-    sc_status pst = build_polygon(c, n, &pts, &paths);
+    sc_status pst = model_polygon(BUILD_READER(c), n, &pts, &paths);
     if (pst != SC_OK || !pts)
         return pst;
     uint32_t np = pts->u.vector.count;
@@ -198,7 +195,8 @@ static sc_status read_polygon(walker *w, const parse_node *n, const affine2 *m,
     for (uint32_t k = 0; k < count; k++) {
         const parse_value *path = paths ? &paths->u.vector.items[k] : NULL;
         if (path && path->kind != PARSE_VECTOR)
-            return build_wrong_type(c, n, "paths", path, BUILD_POLYGON_PATHS);
+            return model_wrong_type(BUILD_READER(c), n, "paths", path,
+                                    MODEL_POLYGON_PATHS);
         total += path ? path->u.vector.count : np;
     }
     if (!reserve_points(w, total) || !reserve_paths(w, count))
@@ -211,8 +209,8 @@ static sc_status read_polygon(walker *w, const parse_node *n, const affine2 *m,
         for (uint32_t i = 0; i < len; i++) {
             uint32_t index = i;
             if (path) {
-                sc_status ist =
-                    build_polygon_index(c, &path->u.vector.items[i], k, np, &index);
+                sc_status ist = model_polygon_index(
+                    BUILD_READER(c), &path->u.vector.items[i], k, np, &index);
                 if (ist != SC_OK)
                     return ist;
             }
@@ -276,14 +274,14 @@ static sc_status walk(walker *w, const parse_node *n, const affine2 *m, int dept
                        BUILD_REGION_MAX_DEPTH);
     if (n->modifiers & (PARSE_MOD_DISABLE | PARSE_MOD_BACKGROUND))
         return SC_OK;
-    const char *name = n->name;
-    if (strcmp(name, "square") == 0)
+    model_kind kind = model_kind_of(n->name);
+    if (kind == MODEL_SQUARE)
         return read_square(w, n, m, pushed);
-    if (strcmp(name, "circle") == 0)
+    if (kind == MODEL_CIRCLE)
         return read_circle(w, n, m, pushed);
-    if (strcmp(name, "polygon") == 0)
+    if (kind == MODEL_POLYGON)
         return read_polygon(w, n, m, pushed);
-    if (strcmp(name, "multmatrix") == 0) {
+    if (kind == MODEL_XFORM) {
         affine2 inner;
         sc_status st = build_matrix_xy(w->c, n, m->m, inner.m);
         if (st != SC_OK)
@@ -303,26 +301,26 @@ static sc_status walk(walker *w, const parse_node *n, const affine2 *m, int dept
         }
         return st;
     }
-    if (strcmp(name, "difference") == 0)
+    if (kind == MODEL_DIFFERENCE)
         return walk_children(w, n, m, PRIM_REGION_DIFFERENCE, depth, pushed);
-    if (strcmp(name, "intersection") == 0)
+    if (kind == MODEL_INTERSECTION)
         return walk_children(w, n, m, PRIM_REGION_INTERSECTION, depth, pushed);
-    if (name_is(n, op_names))
+    if (is_op(kind))
         return walk_children(w, n, m, PRIM_REGION_UNION, depth, pushed);
     return err_set(w->c->error, SC_ERR_UNSUPPORTED, &n->loc,
-                   "'%s' inside linear_extrude is not supported yet", name);
+                   "'%s' inside linear_extrude is not supported yet", n->name);
 }
 
 sc_status build_region_extrude(const build_ctx *c, const parse_node *n, int emit,
                                prim *out, const char **empty)
 {
     double height = 100;
-    sc_status st = build_number(c, n, "height", 0, &height);
+    sc_status st = model_number(BUILD_READER(c), n, "height", 0, &height);
     if (st != SC_OK)
         return st;
-    const parse_value *cv = build_arg(n, "center", 1);
+    const parse_value *cv = model_arg(n, "center", 1);
     if (cv && cv->kind != PARSE_BOOL)
-        return build_wrong_type(c, n, "center", cv, "true or false");
+        return model_wrong_type(BUILD_READER(c), n, "center", cv, "true or false");
     int center = cv ? cv->u.boolean : 0;
     walker w;
     memset(&w, 0, sizeof w);

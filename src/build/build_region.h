@@ -6,7 +6,7 @@
 #ifndef SPANCAST_BUILD_BUILD_REGION_H
 #define SPANCAST_BUILD_BUILD_REGION_H
 
-#include "build/build_curved.h"
+#include "build/build_ctx.h"
 
 /* Nesting of 2D nodes inside one linear_extrude (as the prism path's). */
 #define BUILD_REGION_MAX_DEPTH 1000

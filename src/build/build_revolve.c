@@ -193,7 +193,7 @@ static sc_status read_square(const build_ctx *c, const parse_node *n, const affi
 {
     double sx, sy;
     int center;
-    sc_status st = build_square(c, n, &sx, &sy, &center);
+    sc_status st = model_square(BUILD_READER(c), n, &sx, &sy, &center);
     if (st != SC_OK)
         return st;
     if (!(sx > 0 && sy > 0 && isfinite(sx) && isfinite(sy)))
@@ -219,16 +219,12 @@ static int similarity(const affine2 *m)
 static sc_status read_circle(const build_ctx *c, const parse_node *n, const affine2 *m,
                              profile *p)
 {
-    double r = 1, d = NAN, fn = 0, fa = 12, fs = 2;
-    sc_status st;
-    if ((st = build_number(c, n, "r", 0, &r)) != SC_OK ||
-        (st = build_number(c, n, "d", -1, &d)) != SC_OK ||
-        (st = build_number(c, n, "$fn", -1, &fn)) != SC_OK ||
-        (st = build_number(c, n, "$fa", -1, &fa)) != SC_OK ||
-        (st = build_number(c, n, "$fs", -1, &fs)) != SC_OK)
+    model_circle args;
+    sc_status st = model_read_circle(BUILD_READER(c), n, &args);
+    if (st != SC_OK)
         return st;
-    if (!isnan(d))
-        r = d / 2;
+    double r = isnan(args.d) ? args.r : args.d / 2, fn = args.res.fn, fa = args.res.fa,
+           fs = args.res.fs;
     if (!(r > 0 && isfinite(r)))
         return SC_OK;
     long f = faithful_fragments(r, fn, fs, fa);
@@ -257,7 +253,7 @@ static sc_status read_polygon(const build_ctx *c, const parse_node *n, const aff
                               profile *p)
 {
     const parse_value *pts, *paths;
-    sc_status pst = build_polygon(c, n, &pts, &paths);
+    sc_status pst = model_polygon(BUILD_READER(c), n, &pts, &paths);
     if (pst != SC_OK || !pts)
         return pst;
     uint32_t np = pts->u.vector.count;
@@ -267,15 +263,16 @@ static sc_status read_polygon(const build_ctx *c, const parse_node *n, const aff
     for (uint32_t k = 0; k < count; k++) {
         const parse_value *path = paths ? &paths->u.vector.items[k] : NULL;
         if (path && path->kind != PARSE_VECTOR)
-            return build_wrong_type(c, n, "paths", path, BUILD_POLYGON_PATHS);
+            return model_wrong_type(BUILD_READER(c), n, "paths", path,
+                                    MODEL_POLYGON_PATHS);
         uint32_t len = path ? path->u.vector.count : np;
         if (!begin_path(p))
             return err_nomem(c->error, &n->loc);
         for (uint32_t i = 0; i < len; i++) {
             uint32_t index = i;
             if (path) {
-                sc_status ist =
-                    build_polygon_index(c, &path->u.vector.items[i], k, np, &index);
+                sc_status ist = model_polygon_index(
+                    BUILD_READER(c), &path->u.vector.items[i], k, np, &index);
                 if (ist != SC_OK)
                     return ist;
             }
@@ -333,20 +330,19 @@ static sc_status gather(const build_ctx *c, const parse_node *n, const affine2 *
                        BUILD_REVOLVE_MAX_DEPTH);
     if (n->modifiers & (PARSE_MOD_DISABLE | PARSE_MOD_BACKGROUND))
         return SC_OK;
-    const char *name = n->name;
-    if (strcmp(name, "square") == 0)
+    model_kind kind = model_kind_of(n->name);
+    if (kind == MODEL_SQUARE)
         return read_square(c, n, m, p);
-    if (strcmp(name, "circle") == 0)
+    if (kind == MODEL_CIRCLE)
         return read_circle(c, n, m, p);
-    if (strcmp(name, "polygon") == 0)
+    if (kind == MODEL_POLYGON)
         return read_polygon(c, n, m, p);
     affine2 inner = *m;
-    if (strcmp(name, "multmatrix") == 0) {
+    if (kind == MODEL_XFORM) {
         sc_status st = build_matrix_xy(c, n, m->m, inner.m);
         if (st != SC_OK)
             return st;
-    } else if (strcmp(name, "group") != 0 && strcmp(name, "union") != 0 &&
-               strcmp(name, "render") != 0 && strcmp(name, "color") != 0) {
+    } else if (kind != MODEL_UNION && kind != MODEL_COLOR) {
         return gather_other(c, n, m, p);
     }
     for (const parse_node *k = n->first_child; k; k = k->next) {
@@ -570,17 +566,15 @@ sc_status build_rotate_extrude(const build_ctx *c, const parse_node *n, int emit
 {
     double angle = 360, fn = 0, fa = 12, fs = 2;
     sc_status st;
-    if ((st = build_number(c, n, "angle", -1, &angle)) != SC_OK ||
-        (st = build_number(c, n, "$fn", -1, &fn)) != SC_OK ||
-        (st = build_number(c, n, "$fa", -1, &fa)) != SC_OK ||
-        (st = build_number(c, n, "$fs", -1, &fs)) != SC_OK)
+    if ((st = model_number(BUILD_READER(c), n, "angle", -1, &angle)) != SC_OK ||
+        (st = model_read_resolution(BUILD_READER(c), n, &fn, &fa, &fs)) != SC_OK)
         return st;
-    const parse_value *cv = build_arg(n, "convexity", -1);
+    const parse_value *cv = model_arg(n, "convexity", -1);
     if (cv && cv->kind != PARSE_NUMBER)
-        return build_wrong_type(c, n, "convexity", cv, "a number");
+        return model_wrong_type(BUILD_READER(c), n, "convexity", cv, "a number");
     if (!isfinite(angle) || angle <= -360 || angle > 360)
         angle = 360;
-    if (build_arg(n, "file", -1))
+    if (model_arg(n, "file", -1))
         return err_set(c->error, SC_ERR_UNSUPPORTED, &n->loc,
                        "rotate_extrude of a file is not supported yet (use a child "
                        "import())");

@@ -2,7 +2,7 @@
 #ifndef SPANCAST_BUILD_BUILD_REVOLVE_H
 #define SPANCAST_BUILD_BUILD_REVOLVE_H
 
-#include "build/build_curved.h"
+#include "build/build_ctx.h"
 
 /* Most points of the mesh faithful mode builds for one rotate_extrude
  * (profile points times rings). */

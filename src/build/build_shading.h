@@ -1,4 +1,5 @@
-/* The builder's handlers for spancast's shading nodes (build_shading.c):
+/* The builder's handlers for spancast's shading nodes (build_shading.c;
+ * the lowering pass reads them, model/lower_shading.c):
  *
  *   light(position = [x, y, z] | direction = [x, y, z], color = [r, g, b],
  *         intensity = 1, radius = 0);
@@ -21,21 +22,20 @@
 #define SPANCAST_BUILD_BUILD_SHADING_H
 
 #include "math/vec.h"
+#include "model/model.h"
 #include "model/shading.h"
 #include "spancast/spancast.h"
-#include "syntax/parse.h"
 
-/* light, camera and background: nodes without children. */
-sc_status build_light(shading *s, const parse_tree *syntax, const parse_node *n,
-                      const affine *to_world, int emit, sc_error *error);
-sc_status build_camera(shading *s, const parse_tree *syntax, const parse_node *n,
-                       int emit, sc_error *error);
-sc_status build_background(shading *s, const parse_tree *syntax, const parse_node *n,
-                           int emit, sc_error *error);
+/* light, camera and background, where the node is built (emit): a light
+ * placed by to_world; the last camera and background win. */
+sc_status build_light(shading *s, const model_node *n, const affine *to_world, int emit,
+                      sc_error *error);
+void build_camera(shading *s, const model_node *n, int emit);
+void build_background(shading *s, const model_node *n, int emit);
 
 /* material: adds a material (when emit) and makes it the one its children
  * inherit (*material); a given colour replaces color (RGBA, alpha 1). */
-sc_status build_material(shading *s, const parse_tree *syntax, const parse_node *n,
-                         int emit, uint32_t *material, float color[4], sc_error *error);
+sc_status build_material(shading *s, const model_node *n, int emit, uint32_t *material,
+                         float color[4], sc_error *error);
 
 #endif

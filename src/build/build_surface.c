@@ -323,28 +323,12 @@ static sc_status surface_mesh(const build_ctx *c, const sc_location *loc, const 
     return st;
 }
 
-sc_status build_surface(const build_ctx *c, const parse_node *n, int emit, prim *out,
+sc_status build_surface(const build_ctx *c, const model_surface *s, prim *out,
                         const char **empty)
 {
-    const parse_value *file = build_arg(n, "file", 0);
-    if (!file)
-        return err_set(c->error, SC_ERR_SEMANTIC, &n->loc,
-                       "missing argument 'file' of 'surface'");
-    if (file->kind != PARSE_STRING)
-        return build_wrong_type(c, n, "file", file, "a file name");
-    int center = 0, invert = 0;
-    const parse_value *v = build_arg(n, "center", 1);
-    if (v && v->kind != PARSE_BOOL)
-        return build_wrong_type(c, n, "center", v, "true or false");
-    center = v ? v->u.boolean : 0;
-    v = build_arg(n, "invert", -1);
-    if (v && v->kind != PARSE_BOOL)
-        return build_wrong_type(c, n, "invert", v, "true or false");
-    invert = v ? v->u.boolean : 0;
-    if (!emit)
-        return SC_OK;
-    sc_location loc = build_loc(c, file);
-    const char *name = file->u.string.chars;
+    int center = s->center, invert = s->invert;
+    sc_location loc = s->file_loc;
+    const char *name = s->file;
     char *path = build_file_path(c, name);
     if (!path)
         return err_nomem(c->error, (&loc));

@@ -103,11 +103,11 @@ typedef struct text_args {
 static sc_status get_string(const build_ctx *c, const parse_node *n, const char *name,
                             int position, const char **out)
 {
-    const parse_value *v = build_arg(n, name, position);
+    const parse_value *v = model_arg(n, name, position);
     if (!v)
         return SC_OK;
     if (v->kind != PARSE_STRING)
-        return build_wrong_type(c, n, name, v, "a string");
+        return model_wrong_type(BUILD_READER(c), n, name, v, "a string");
     *out = v->u.string.chars;
     return SC_OK;
 }
@@ -127,28 +127,26 @@ static sc_status read_args(const build_ctx *c, const parse_node *n, text_args *a
     a->valign = "baseline";
     sc_status st;
     if ((st = get_string(c, n, "text", 0, &a->text)) != SC_OK ||
-        (st = build_number(c, n, "size", 1, &a->size)) != SC_OK ||
+        (st = model_number(BUILD_READER(c), n, "size", 1, &a->size)) != SC_OK ||
         (st = get_string(c, n, "font", 2, &a->font)) != SC_OK ||
         (st = get_string(c, n, "direction", -1, &a->direction)) != SC_OK ||
         (st = get_string(c, n, "language", -1, &a->language)) != SC_OK ||
         (st = get_string(c, n, "script", -1, &a->script)) != SC_OK ||
         (st = get_string(c, n, "halign", -1, &a->halign)) != SC_OK ||
         (st = get_string(c, n, "valign", -1, &a->valign)) != SC_OK ||
-        (st = build_number(c, n, "spacing", -1, &a->spacing)) != SC_OK ||
-        (st = build_number(c, n, "$fn", -1, &a->fn)) != SC_OK ||
-        (st = build_number(c, n, "$fa", -1, &a->fa)) != SC_OK ||
-        (st = build_number(c, n, "$fs", -1, &a->fs)) != SC_OK)
+        (st = model_number(BUILD_READER(c), n, "spacing", -1, &a->spacing)) != SC_OK ||
+        (st = model_read_resolution(BUILD_READER(c), n, &a->fn, &a->fa, &a->fs)) != SC_OK)
         return st;
-    const parse_value *tv = build_arg(n, "text", 0);
+    const parse_value *tv = model_arg(n, "text", 0);
     a->length = tv ? tv->u.string.length : 0;
     if (a->length > TEXT_MAX_BYTES) {
-        sc_location loc = build_loc(c, tv);
+        sc_location loc = model_loc(BUILD_READER(c), tv);
         return err_set(c->error, SC_ERR_LIMIT, &loc,
                        "text is too long (%zu bytes; limit is %d)", a->length,
                        TEXT_MAX_BYTES);
     }
     if (memchr(a->text, 0, a->length)) {
-        sc_location loc = build_loc(c, tv);
+        sc_location loc = model_loc(BUILD_READER(c), tv);
         return err_set(c->error, SC_ERR_SEMANTIC, &loc, "text must not contain a NUL");
     }
     if (!isfinite(a->size))
@@ -720,42 +718,30 @@ sc_status text_faithful_polygons(const build_ctx *c, const parse_node *n,
 
 /* ---- linear_extrude of text ---- */
 
-static int is_container(const char *name)
+/* group, union, render, color and multmatrix: the nodes text may be in. */
+static int is_container(model_kind kind)
 {
-    return strcmp(name, "group") == 0 || strcmp(name, "union") == 0 ||
-           strcmp(name, "render") == 0 || strcmp(name, "color") == 0 ||
-           strcmp(name, "multmatrix") == 0;
+    return kind == MODEL_UNION || kind == MODEL_COLOR || kind == MODEL_XFORM;
 }
 
-static int wanted(const parse_node *n, int depth)
-{
-    if (depth > TEXT_MAX_DEPTH || (n->modifiers & PARSE_MOD_DISABLE))
-        return 0;
-    if (strcmp(n->name, "text") == 0)
-        return 1;
-    if (!is_container(n->name))
-        return 0;
-    for (const parse_node *k = n->first_child; k; k = k->next)
-        if (wanted(k, depth + 1))
-            return 1;
-    return 0;
-}
-
-/* Every 2D shape below n (under the containers) is text, and there is one. */
-static int only_text(const parse_node *n, int depth)
+/* Below n, under the containers: whether some 2D shape is text (all = 0;
+ * '%' subtrees count) or every one is (all = 1; '%' subtrees do not). */
+static int text_below(const parse_node *n, int depth, int all)
 {
     if (depth > TEXT_MAX_DEPTH)
         return 0;
-    if (n->modifiers & (PARSE_MOD_DISABLE | PARSE_MOD_BACKGROUND))
+    unsigned skipped = all ? PARSE_MOD_DISABLE | PARSE_MOD_BACKGROUND : PARSE_MOD_DISABLE;
+    if (n->modifiers & skipped)
+        return all;
+    model_kind kind = model_kind_of(n->name);
+    if (kind == MODEL_TEXT)
         return 1;
-    if (strcmp(n->name, "text") == 0)
-        return 1;
-    if (!is_container(n->name))
+    if (!is_container(kind))
         return 0;
     for (const parse_node *k = n->first_child; k; k = k->next)
-        if (!only_text(k, depth + 1))
-            return 0;
-    return 1;
+        if (text_below(k, depth + 1, all) != all)
+            return !all;
+    return all;
 }
 
 int build_text_only(const parse_node *n)
@@ -763,7 +749,7 @@ int build_text_only(const parse_node *n)
     if (!build_text_wanted(n))
         return 0;
     for (const parse_node *k = n->first_child; k; k = k->next)
-        if (!only_text(k, 1))
+        if (!text_below(k, 1, 1))
             return 0;
     return 1;
 }
@@ -771,7 +757,7 @@ int build_text_only(const parse_node *n)
 int build_text_wanted(const parse_node *n)
 {
     for (const parse_node *k = n->first_child; k; k = k->next)
-        if (wanted(k, 1))
+        if (text_below(k, 1, 0))
             return 1;
     return 0;
 }
@@ -845,18 +831,18 @@ static sc_status gather(const build_ctx *c, const parse_node *n, const affine2 *
     if (n->modifiers & (PARSE_MOD_DISABLE | PARSE_MOD_BACKGROUND))
         return SC_OK;
     const char *name = n->name;
-    if (strcmp(name, "text") == 0)
+    model_kind kind = model_kind_of(name);
+    if (kind == MODEL_TEXT)
         return gather_text(c, n, m, g);
-    if (strcmp(name, "square") == 0 || strcmp(name, "circle") == 0 ||
-        strcmp(name, "polygon") == 0)
+    if (kind == MODEL_SQUARE || kind == MODEL_CIRCLE || kind == MODEL_POLYGON)
         return err_set(c->error, SC_ERR_UNSUPPORTED, &n->loc,
                        "'%s' beside text inside linear_extrude is not supported yet",
                        name);
-    if (!is_container(name))
+    if (!is_container(kind))
         return err_set(c->error, SC_ERR_UNSUPPORTED, &n->loc,
                        "'%s' inside linear_extrude is not supported yet", name);
     affine2 inner = *m;
-    if (strcmp(name, "multmatrix") == 0) {
+    if (kind == MODEL_XFORM) {
         sc_status st = build_matrix_xy(c, n, m->m, inner.m);
         if (st != SC_OK)
             return st;

@@ -9,7 +9,7 @@
 
 #include <stdint.h>
 
-#include "build/build_curved.h"
+#include "build/build_ctx.h"
 #include "csg/prim_outline.h"
 
 /* The longest text one node may lay out, in bytes of UTF-8. */

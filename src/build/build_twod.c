@@ -81,29 +81,22 @@ static sc_status get_number(const eval *e, const parse_node *n, const char *name
                             int position, double *out, int *given)
 {
     if (given)
-        *given = build_arg(n, name, position) != NULL;
-    return build_number(e->c, n, name, position, out);
+        *given = model_arg(n, name, position) != NULL;
+    return model_number(BUILD_READER(e->c), n, name, position, out);
 }
 
 /* $fn, $fa, $fs with OpenSCAD's defaults. */
 static sc_status get_resolution(const eval *e, const parse_node *n, double *fn,
                                 double *fa, double *fs)
 {
-    *fn = 0;
-    *fa = 12;
-    *fs = 2;
-    sc_status st;
-    if ((st = get_number(e, n, "$fn", -1, fn, NULL)) != SC_OK ||
-        (st = get_number(e, n, "$fa", -1, fa, NULL)) != SC_OK)
-        return st;
-    return get_number(e, n, "$fs", -1, fs, NULL);
+    return model_read_resolution(BUILD_READER(e->c), n, fn, fa, fs);
 }
 
 static sc_status read_square(const eval *e, const parse_node *n, twod_region *out)
 {
     double sx, sy;
     int center;
-    sc_status st = build_square(e->c, n, &sx, &sy, &center);
+    sc_status st = model_square(BUILD_READER(e->c), n, &sx, &sy, &center);
     if (st != SC_OK)
         return st;
     if (!(sx > 0 && sy > 0 && isfinite(sx) && isfinite(sy)))
@@ -127,15 +120,13 @@ static sc_status read_square(const eval *e, const parse_node *n, twod_region *ou
 
 static sc_status read_circle(const eval *e, const parse_node *n, twod_region *out)
 {
-    double r = 1, d = 0, fn, fa, fs;
-    int has_d;
-    sc_status st;
-    if ((st = get_number(e, n, "r", 0, &r, NULL)) != SC_OK ||
-        (st = get_number(e, n, "d", -1, &d, &has_d)) != SC_OK ||
-        (st = get_resolution(e, n, &fn, &fa, &fs)) != SC_OK)
+    model_circle args;
+    sc_status st = model_read_circle(BUILD_READER(e->c), n, &args);
+    if (st != SC_OK)
         return st;
-    if (has_d)
-        r = d / 2;
+    /* a d of nan is given: it empties the circle */
+    double r = args.has_d ? args.d / 2 : args.r, fn = args.res.fn, fa = args.res.fa,
+           fs = args.res.fs;
     out->sanitized = 1;
     if (!(r > 0 && isfinite(r)))
         return SC_OK;
@@ -187,7 +178,7 @@ static sc_status read_text(const eval *e, const parse_node *n, twod_region *out)
 static sc_status read_polygon(const eval *e, const parse_node *n, twod_region *out)
 {
     const parse_value *pts, *paths;
-    sc_status pst = build_polygon(e->c, n, &pts, &paths);
+    sc_status pst = model_polygon(BUILD_READER(e->c), n, &pts, &paths);
     if (pst != SC_OK || !pts)
         return pst;
     uint32_t np = pts->u.vector.count;
@@ -199,15 +190,16 @@ static sc_status read_polygon(const eval *e, const parse_node *n, twod_region *o
     for (uint32_t k = 0; k < count; k++) {
         const parse_value *path = paths ? &paths->u.vector.items[k] : NULL;
         if (path && path->kind != PARSE_VECTOR)
-            return build_wrong_type(e->c, n, "paths", path, BUILD_POLYGON_PATHS);
+            return model_wrong_type(BUILD_READER(e->c), n, "paths", path,
+                                    MODEL_POLYGON_PATHS);
         uint32_t len = path ? path->u.vector.count : np;
         if (!twod_begin_contour(out))
             return err_nomem(e->c->error, &n->loc);
         for (uint32_t i = 0; i < len; i++) {
             uint32_t index = i;
             if (path) {
-                sc_status ist =
-                    build_polygon_index(e->c, &path->u.vector.items[i], k, np, &index);
+                sc_status ist = model_polygon_index(
+                    BUILD_READER(e->c), &path->u.vector.items[i], k, np, &index);
                 if (ist != SC_OK)
                     return ist;
             }
@@ -261,23 +253,36 @@ static void free_children(twod_region *regions, uint32_t count)
     free(regions);
 }
 
-/* OpenSCAD's applyToChildren2D for union, difference and intersection:
- * no child is nothing, one child is itself, more go through the clipper. */
+/* OpenSCAD's applyToChildren2D: no child is nothing, one child is itself.
+ * Returns 1 when that settles *out. */
+static int trivial(twod_region *regions, uint32_t count, twod_region *out)
+{
+    twod_clear(out);
+    if (count == 1)
+        twod_move(out, &regions[0]);
+    return count <= 1;
+}
+
+/* The clipper's operands: the children, NULL for the empty ones; malloc'd,
+ * NULL when memory runs out. */
+static twod_region **operands(twod_region *regions, uint32_t count)
+{
+    twod_region **list = malloc((size_t)count * sizeof *list);
+    for (uint32_t i = 0; list && i < count; i++)
+        list[i] = regions[i].contour_count ? &regions[i] : NULL;
+    return list;
+}
+
+/* union, difference and intersection: more than one child goes through
+ * the clipper. */
 static sc_status combine(const eval *e, const parse_node *n, twod_region *regions,
                          uint32_t count, twod_op op, twod_region *out)
 {
-    twod_clear(out);
-    if (count == 0)
+    if (trivial(regions, count, out))
         return SC_OK;
-    if (count == 1) {
-        twod_move(out, &regions[0]);
-        return SC_OK;
-    }
-    twod_region **list = malloc((size_t)count * sizeof *list);
+    twod_region **list = operands(regions, count);
     if (!list)
         return err_nomem(e->c->error, &n->loc);
-    for (uint32_t i = 0; i < count; i++)
-        list[i] = regions[i].contour_count ? &regions[i] : NULL;
     int code = twod_clip_apply(list, count, op, out);
     free(list);
     return clip_status(e, n, code);
@@ -321,7 +326,7 @@ static sc_status offset(const eval *e, const parse_node *n, twod_region *r)
         return st;
     if (!has_r) {
         if ((st = get_number(e, n, "delta", -1, &delta, &has_delta)) != SC_OK ||
-            (st = build_bool(e->c, n, "chamfer", -1, &chamfer)) != SC_OK)
+            (st = model_bool(BUILD_READER(e->c), n, "chamfer", -1, &chamfer)) != SC_OK)
             return st;
         if (has_delta)
             join = chamfer ? TWOD_JOIN_SQUARE : TWOD_JOIN_MITER;
@@ -384,13 +389,8 @@ static sc_status hull(const eval *e, const parse_node *n, twod_region *regions,
 static sc_status minkowski(const eval *e, const parse_node *n, twod_region *regions,
                            uint32_t count, twod_region *out)
 {
-    twod_clear(out);
-    if (count == 0)
+    if (trivial(regions, count, out))
         return SC_OK;
-    if (count == 1) {
-        twod_move(out, &regions[0]);
-        return SC_OK;
-    }
     double product = regions[0].point_count;
     for (uint32_t i = 1; i < count; i++) {
         if (!regions[i].contour_count)
@@ -404,11 +404,9 @@ static sc_status minkowski(const eval *e, const parse_node *n, twod_region *regi
          * next step */
         product = product * regions[i].point_count;
     }
-    twod_region **list = malloc((size_t)count * sizeof *list);
+    twod_region **list = operands(regions, count);
     if (!list)
         return err_nomem(e->c->error, &n->loc);
-    for (uint32_t i = 0; i < count; i++)
-        list[i] = regions[i].contour_count ? &regions[i] : NULL;
     int code = twod_clip_minkowski(list, count, out);
     free(list);
     return clip_status(e, n, code);
@@ -418,18 +416,18 @@ static sc_status minkowski(const eval *e, const parse_node *n, twod_region *regi
  * polygons. */
 static sc_status read_import(const eval *e, const parse_node *n, twod_region *out)
 {
-    const parse_value *file = build_arg(n, "file", 0);
+    const parse_value *file = model_arg(n, "file", 0);
     if (!file)
         return err_set(e->c->error, SC_ERR_SEMANTIC, &n->loc,
                        "missing argument 'file' of 'import'");
     if (file->kind != PARSE_STRING)
-        return build_wrong_type(e->c, n, "file", file, "a file name");
+        return model_wrong_type(BUILD_READER(e->c), n, "file", file, "a file name");
     const char *name = file->u.string.chars;
-    sc_location loc = build_loc(e->c, file);
-    if (build_has_suffix(name, ".svg"))
+    sc_location loc = model_loc(BUILD_READER(e->c), file);
+    if (model_has_suffix(name, ".svg"))
         return err_set(e->c->error, SC_ERR_UNSUPPORTED, &loc,
                        "import of '%s' is not supported yet (2D: only .dxf files)", name);
-    if (!build_has_suffix(name, ".dxf"))
+    if (!model_has_suffix(name, ".dxf"))
         return err_set(e->c->error, SC_ERR_SEMANTIC, &loc,
                        "import of '%s' inside %s: a 2D operation imports only 2D files "
                        "(.dxf)",
@@ -439,16 +437,16 @@ static sc_status read_import(const eval *e, const parse_node *n, twod_region *ou
     if ((st = get_resolution(e, n, &o.fn, &o.fa, &o.fs)) != SC_OK ||
         (st = get_number(e, n, "scale", -1, &o.scale, NULL)) != SC_OK)
         return st;
-    const parse_value *layer = build_arg(n, "layer", -1);
+    const parse_value *layer = model_arg(n, "layer", -1);
     if (layer && layer->kind != PARSE_STRING)
-        return build_wrong_type(e->c, n, "layer", layer, "a layer name");
+        return model_wrong_type(BUILD_READER(e->c), n, "layer", layer, "a layer name");
     o.layer = layer ? layer->u.string.chars : NULL;
-    const parse_value *origin = build_arg(n, "origin", -1);
+    const parse_value *origin = model_arg(n, "origin", -1);
     if (origin) {
         if (origin->kind != PARSE_VECTOR || origin->u.vector.count != 2 ||
             origin->u.vector.items[0].kind != PARSE_NUMBER ||
             origin->u.vector.items[1].kind != PARSE_NUMBER)
-            return build_wrong_type(e->c, n, "origin", origin, "[x, y]");
+            return model_wrong_type(BUILD_READER(e->c), n, "origin", origin, "[x, y]");
         o.origin_x = origin->u.vector.items[0].u.number;
         o.origin_y = origin->u.vector.items[1].u.number;
     }
@@ -470,15 +468,24 @@ static sc_status read_import(const eval *e, const parse_node *n, twod_region *ou
     return st;
 }
 
-static int is_3d(const char *name)
+static int is_3d(model_kind kind)
 {
-    static const char *const names[] = {
-        "cube",    "sphere", "cylinder", "polyhedron", "linear_extrude", "rotate_extrude",
-        "surface", "torus",  "quadric",  "implicit",   "halfspace"};
-    for (size_t i = 0; i < sizeof names / sizeof names[0]; i++)
-        if (strcmp(names[i], name) == 0)
-            return 1;
-    return 0;
+    switch (kind) {
+    case MODEL_CUBE:
+    case MODEL_SPHERE:
+    case MODEL_CYLINDER:
+    case MODEL_POLYHEDRON:
+    case MODEL_LINEAR_EXTRUDE:
+    case MODEL_ROTATE_EXTRUDE:
+    case MODEL_SURFACE:
+    case MODEL_TORUS:
+    case MODEL_QUADRIC:
+    case MODEL_IMPLICIT:
+    case MODEL_HALFSPACE:
+        return 1;
+    default:
+        return 0;
+    }
 }
 
 static sc_status eval_node(const eval *e, const parse_node *n, twod_region *out,
@@ -489,52 +496,52 @@ static sc_status eval_node(const eval *e, const parse_node *n, twod_region *out,
                        "too many nested 2D nodes in %s (limit is %d)", e->outer,
                        TWOD_MAX_DEPTH);
     const char *name = n->name;
+    model_kind kind = model_kind_of(name);
     twod_clear(out);
-    if (strcmp(name, "square") == 0)
+    switch (kind) {
+    case MODEL_SQUARE:
         return read_square(e, n, out);
-    if (strcmp(name, "circle") == 0)
+    case MODEL_CIRCLE:
         return read_circle(e, n, out);
-    if (strcmp(name, "polygon") == 0)
+    case MODEL_POLYGON:
         return read_polygon(e, n, out);
-    if (strcmp(name, "text") == 0)
+    case MODEL_TEXT:
         return read_text(e, n, out);
-    if (strcmp(name, "import") == 0)
+    case MODEL_IMPORT:
         return read_import(e, n, out);
-    if (is_3d(name))
+    default:
+        break;
+    }
+    if (is_3d(kind))
         return err_set(e->c->error, SC_ERR_SEMANTIC, &n->loc,
                        "'%s' is a 3D object inside a 2D operation (%s)", name, e->outer);
-    int is_union = strcmp(name, "group") == 0 || strcmp(name, "union") == 0 ||
-                   strcmp(name, "render") == 0 || strcmp(name, "color") == 0;
-    int is_multmatrix = strcmp(name, "multmatrix") == 0;
-    int is_offset = strcmp(name, "offset") == 0;
-    twod_op op = TWOD_UNION;
-    if (strcmp(name, "difference") == 0)
-        op = TWOD_DIFFERENCE;
-    else if (strcmp(name, "intersection") == 0)
-        op = TWOD_INTERSECTION;
-    else if (!is_union && !is_multmatrix && !is_offset && strcmp(name, "hull") != 0 &&
-             strcmp(name, "minkowski") != 0)
+    twod_op op = kind == MODEL_DIFFERENCE     ? TWOD_DIFFERENCE
+                 : kind == MODEL_INTERSECTION ? TWOD_INTERSECTION
+                                              : TWOD_UNION;
+    if (kind != MODEL_UNION && kind != MODEL_COLOR && kind != MODEL_XFORM &&
+        kind != MODEL_OFFSET && kind != MODEL_DIFFERENCE && kind != MODEL_INTERSECTION &&
+        kind != MODEL_HULL && kind != MODEL_MINKOWSKI)
         return err_set(e->c->error, SC_ERR_UNSUPPORTED, &n->loc,
                        "'%s' inside %s is not supported yet", name, e->outer);
     double m[2][3] = {{1, 0, 0}, {0, 1, 0}};
     sc_status st;
-    if (is_multmatrix && (st = read_matrix(e, n, m)) != SC_OK)
+    if (kind == MODEL_XFORM && (st = read_matrix(e, n, m)) != SC_OK)
         return st;
     twod_region *regions;
     uint32_t count;
     st = eval_children(e, n, &regions, &count, depth);
     if (st == SC_OK) {
-        if (strcmp(name, "hull") == 0)
+        if (kind == MODEL_HULL)
             st = hull(e, n, regions, count, out);
-        else if (strcmp(name, "minkowski") == 0)
+        else if (kind == MODEL_MINKOWSKI)
             st = minkowski(e, n, regions, count, out);
         else
             st = combine(e, n, regions, count, op, out);
     }
     free_children(regions, count);
-    if (st == SC_OK && is_multmatrix)
+    if (st == SC_OK && kind == MODEL_XFORM)
         st = transform(e, n, m, out);
-    if (st == SC_OK && is_offset)
+    if (st == SC_OK && kind == MODEL_OFFSET)
         st = offset(e, n, out);
     return st;
 }

@@ -6,7 +6,7 @@
 #ifndef SPANCAST_BUILD_BUILD_TWOD_H
 #define SPANCAST_BUILD_BUILD_TWOD_H
 
-#include "build/build_curved.h"
+#include "build/build_ctx.h"
 #include "twod/twod.h"
 
 /* The union of parent's 2D children, as OpenSCAD 2021.01 evaluates them:

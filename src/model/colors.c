@@ -6,7 +6,7 @@
  * it. Names match case-insensitively, as in OpenSCAD. Hexadecimal colours
  * "#rgb", "#rgba", "#rrggbb" and "#rrggbbaa" are read here too.
  */
-#include "build/build.h"
+#include "model/colors.h"
 
 #include <stdlib.h>
 #include <string.h>

@@ -1,0 +1,255 @@
+/* Readers of a syntax node's arguments: see args.h. */
+#include "model/args.h"
+
+#include <math.h>
+#include <string.h>
+
+#include "base/error.h"
+
+const parse_value *model_arg(const parse_node *n, const char *name, int position)
+{
+    const parse_arg *a = parse_node_arg(n, name, position);
+    return a && a->value.kind != PARSE_UNDEF ? &a->value : NULL;
+}
+
+sc_location model_loc(const model_reader *c, const parse_value *v)
+{
+    sc_location loc = {c->file, v->line, v->column};
+    return loc;
+}
+
+sc_status model_wrong_type(const model_reader *c, const parse_node *n, const char *param,
+                           const parse_value *v, const char *expected)
+{
+    sc_location loc = model_loc(c, v);
+    return err_set(c->error, SC_ERR_SEMANTIC, &loc,
+                   "wrong type for argument '%s' of '%s' (expected %s)", param, n->name,
+                   expected);
+}
+
+sc_status model_number(const model_reader *c, const parse_node *n, const char *name,
+                       int position, double *out)
+{
+    const parse_value *v = model_arg(n, name, position);
+    if (!v)
+        return SC_OK;
+    if (v->kind != PARSE_NUMBER)
+        return model_wrong_type(c, n, name, v, "a number");
+    *out = v->u.number;
+    return SC_OK;
+}
+
+sc_status model_matrix(const model_reader *c, const parse_node *n, double a[4][4])
+{
+    static const double id[4][4] = {
+        {1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}, {0, 0, 0, 1}};
+    memcpy(a, id, sizeof id);
+    const parse_value *v = model_arg(n, "m", 0);
+    int ok = !v || (v->kind == PARSE_VECTOR && v->u.vector.count == 4);
+    for (uint32_t r = 0; v && ok && r < 4; r++) {
+        const parse_value *row = &v->u.vector.items[r];
+        ok = row->kind == PARSE_VECTOR && row->u.vector.count == 4;
+        for (uint32_t k = 0; ok && k < 4; k++) {
+            ok = row->u.vector.items[k].kind == PARSE_NUMBER;
+            if (ok)
+                a[r][k] = row->u.vector.items[k].u.number;
+        }
+    }
+    if (!ok)
+        return err_set(c->error, SC_ERR_SEMANTIC, &n->loc,
+                       "multmatrix: matrix must be 4x4 numbers");
+    for (int r = 0; r < 4; r++)
+        for (int k = 0; k < 4; k++)
+            if (!isfinite(a[r][k]))
+                return err_set(c->error, SC_ERR_SEMANTIC, &n->loc,
+                               "multmatrix: matrix entries must be finite");
+    if (a[3][0] != 0 || a[3][1] != 0 || a[3][2] != 0 || a[3][3] != 1)
+        return err_set(c->error, SC_ERR_SEMANTIC, &n->loc,
+                       "multmatrix: bottom row must be [0, 0, 0, 1]");
+    return SC_OK;
+}
+
+sc_status model_square(const model_reader *c, const parse_node *n, double *sx, double *sy,
+                       int *center)
+{
+    *sx = *sy = 1;
+    *center = 0;
+    const parse_value *v = model_arg(n, "size", 0);
+    if (v && v->kind == PARSE_NUMBER) {
+        *sx = *sy = v->u.number;
+    } else if (v && v->kind == PARSE_VECTOR && v->u.vector.count == 2 &&
+               v->u.vector.items[0].kind == PARSE_NUMBER &&
+               v->u.vector.items[1].kind == PARSE_NUMBER) {
+        *sx = v->u.vector.items[0].u.number;
+        *sy = v->u.vector.items[1].u.number;
+    } else if (v) {
+        return model_wrong_type(c, n, "size", v, "a number or [x, y]");
+    }
+    const parse_value *cv = model_arg(n, "center", 1);
+    if (cv && cv->kind != PARSE_BOOL)
+        return model_wrong_type(c, n, "center", cv, "true or false");
+    *center = cv ? cv->u.boolean : 0;
+    return SC_OK;
+}
+
+sc_status model_bool(const model_reader *c, const parse_node *n, const char *name,
+                     int position, int *out)
+{
+    const parse_value *v = model_arg(n, name, position);
+    if (!v)
+        return SC_OK;
+    if (v->kind != PARSE_BOOL)
+        return model_wrong_type(c, n, name, v, "true or false");
+    *out = v->u.boolean;
+    return SC_OK;
+}
+
+static const char polygon_points[] = "a vector of [x, y] points";
+
+sc_status model_polygon(const model_reader *c, const parse_node *n,
+                        const parse_value **points, const parse_value **paths)
+{
+    const parse_value *pts = model_arg(n, "points", 0), *ps = model_arg(n, "paths", 1);
+    *points = pts;
+    *paths = ps;
+    if (!pts)
+        return SC_OK;
+    if (pts->kind != PARSE_VECTOR)
+        return model_wrong_type(c, n, "points", pts, polygon_points);
+    for (uint32_t i = 0; i < pts->u.vector.count; i++) {
+        const parse_value *v = &pts->u.vector.items[i];
+        if (v->kind != PARSE_VECTOR || v->u.vector.count != 2 ||
+            v->u.vector.items[0].kind != PARSE_NUMBER ||
+            v->u.vector.items[1].kind != PARSE_NUMBER ||
+            !isfinite(v->u.vector.items[0].u.number) ||
+            !isfinite(v->u.vector.items[1].u.number))
+            return model_wrong_type(c, n, "points", v, polygon_points);
+    }
+    if (ps && ps->kind != PARSE_VECTOR)
+        return model_wrong_type(c, n, "paths", ps, MODEL_POLYGON_PATHS);
+    for (uint32_t k = 0; ps && k < ps->u.vector.count; k++) {
+        if (ps->u.vector.items[k].kind != PARSE_VECTOR)
+            return model_wrong_type(c, n, "paths", &ps->u.vector.items[k],
+                                    MODEL_POLYGON_PATHS);
+    }
+    return SC_OK;
+}
+
+sc_status model_cube(const model_reader *c, const parse_node *n, double size[3],
+                     int *center)
+{
+    size[0] = size[1] = size[2] = 1;
+    *center = 0;
+    const parse_value *v = model_arg(n, "size", 0);
+    if (v && v->kind == PARSE_NUMBER) {
+        size[0] = size[1] = size[2] = v->u.number;
+    } else if (v) {
+        int ok = v->kind == PARSE_VECTOR && v->u.vector.count == 3;
+        for (uint32_t i = 0; ok && i < 3; i++) {
+            ok = v->u.vector.items[i].kind == PARSE_NUMBER;
+            if (ok)
+                size[i] = v->u.vector.items[i].u.number;
+        }
+        if (!ok)
+            return model_wrong_type(c, n, "size", v, "a number or a vector of 3 numbers");
+    }
+    return model_bool(c, n, "center", 1, center);
+}
+
+sc_status model_polygon_index(const model_reader *c, const parse_value *v, uint32_t path,
+                              uint32_t count, uint32_t *index)
+{
+    if (v->kind != PARSE_NUMBER || v->u.number != floor(v->u.number) || v->u.number < 0 ||
+        v->u.number >= count) {
+        sc_location loc = model_loc(c, v);
+        return err_set(c->error, SC_ERR_SEMANTIC, &loc,
+                       "polygon path %u: point index is not one of the %u points", path,
+                       count);
+    }
+    *index = (uint32_t)v->u.number;
+    return SC_OK;
+}
+
+int model_has_suffix(const char *s, const char *suffix)
+{
+    size_t a = strlen(s), b = strlen(suffix);
+    if (a < b)
+        return 0;
+    for (size_t i = 0; i < b; i++) {
+        char x = s[a - b + i];
+        if (x >= 'A' && x <= 'Z')
+            x = (char)(x - 'A' + 'a');
+        if (x != suffix[i])
+            return 0;
+    }
+    return 1;
+}
+
+sc_status model_read_import(const model_reader *r, const parse_node *n, model_import *out)
+{
+    const parse_arg *a = parse_node_arg(n, "file", 0);
+    if (!a || a->value.kind != PARSE_STRING) {
+        if (a && a->value.kind != PARSE_UNDEF)
+            return model_wrong_type(r, n, "file", &a->value, "a file name");
+        return err_set(r->error, SC_ERR_SEMANTIC, &n->loc,
+                       "missing argument 'file' of 'import'");
+    }
+    const char *name = a->value.u.string.chars;
+    sc_location loc = model_loc(r, &a->value);
+    int stl = model_has_suffix(name, ".stl"), off = model_has_suffix(name, ".off");
+    if (!stl && !off)
+        return err_set(r->error, SC_ERR_UNSUPPORTED, &loc,
+                       "import of '%s' is not supported yet (only .stl and .off files)",
+                       name);
+    out->file = name;
+    out->file_loc = loc;
+    out->format = stl ? MODEL_MESH_STL : MODEL_MESH_OFF;
+    return SC_OK;
+}
+
+sc_status model_read_surface(const model_reader *r, const parse_node *n,
+                             model_surface *out)
+{
+    const parse_value *file = model_arg(n, "file", 0);
+    if (!file)
+        return err_set(r->error, SC_ERR_SEMANTIC, &n->loc,
+                       "missing argument 'file' of 'surface'");
+    if (file->kind != PARSE_STRING)
+        return model_wrong_type(r, n, "file", file, "a file name");
+    const parse_value *v = model_arg(n, "center", 1);
+    if (v && v->kind != PARSE_BOOL)
+        return model_wrong_type(r, n, "center", v, "true or false");
+    out->center = v ? v->u.boolean : 0;
+    v = model_arg(n, "invert", -1);
+    if (v && v->kind != PARSE_BOOL)
+        return model_wrong_type(r, n, "invert", v, "true or false");
+    out->invert = v ? v->u.boolean : 0;
+    out->file = file->u.string.chars;
+    out->file_loc = model_loc(r, file);
+    return SC_OK;
+}
+
+sc_status model_read_resolution(const model_reader *r, const parse_node *n, double *fn,
+                                double *fa, double *fs)
+{
+    *fn = 0;
+    *fa = 12;
+    *fs = 2;
+    sc_status st;
+    if ((st = model_number(r, n, "$fn", -1, fn)) != SC_OK ||
+        (st = model_number(r, n, "$fa", -1, fa)) != SC_OK)
+        return st;
+    return model_number(r, n, "$fs", -1, fs);
+}
+
+sc_status model_read_circle(const model_reader *r, const parse_node *n, model_circle *out)
+{
+    out->r = 1;
+    out->d = NAN;
+    out->has_d = model_arg(n, "d", -1) != NULL;
+    sc_status st;
+    if ((st = model_number(r, n, "r", 0, &out->r)) != SC_OK ||
+        (st = model_number(r, n, "d", -1, &out->d)) != SC_OK)
+        return st;
+    return model_read_resolution(r, n, &out->res.fn, &out->res.fa, &out->res.fs);
+}

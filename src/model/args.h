@@ -1,0 +1,78 @@
+/* Readers of a syntax node's arguments, shared by the lowering pass and
+ * the builders that still read their own node: each finds an argument by
+ * name or position (the last one given wins, as in OpenSCAD), checks its
+ * type and value, and reports an error at the value with the message the
+ * corpus in tests/bad-input expects ("wrong type for argument 'size' of
+ * 'cube' (expected ...)").
+ */
+#ifndef SPANCAST_MODEL_ARGS_H
+#define SPANCAST_MODEL_ARGS_H
+
+#include <stdint.h>
+
+#include "model/model.h"
+#include "spancast/spancast.h"
+#include "syntax/parse.h"
+
+/* Where positions point and errors go. */
+typedef struct model_reader {
+    const char *file;
+    sc_error *error;
+} model_reader;
+
+/* The value of the named or position-th positional argument; NULL when it
+ * is absent or undef. */
+const parse_value *model_arg(const parse_node *n, const char *name, int position);
+/* A value's position. */
+sc_location model_loc(const model_reader *r, const parse_value *v);
+/* The error for argument param of n having the wrong type. */
+sc_status model_wrong_type(const model_reader *r, const parse_node *n, const char *param,
+                           const parse_value *v, const char *expected);
+/* A number argument into *out (left alone when absent). */
+sc_status model_number(const model_reader *r, const parse_node *n, const char *name,
+                       int position, double *out);
+/* A true/false argument into *out (left alone when absent). */
+sc_status model_bool(const model_reader *r, const parse_node *n, const char *name,
+                     int position, int *out);
+/* multmatrix(m): a row-major 4x4 affine matrix of finite numbers with the
+ * bottom row [0, 0, 0, 1]; no argument is the identity. */
+sc_status model_matrix(const model_reader *r, const parse_node *n, double m[4][4]);
+/* polygon(points, paths)'s arguments: points (NULL when absent) a vector
+ * of finite [x, y], paths (NULL when absent) a vector of vectors; the
+ * indices in the paths are the caller's to check. */
+#define MODEL_POLYGON_PATHS "a vector of paths, each a vector of point indices"
+sc_status model_polygon(const model_reader *r, const parse_node *n,
+                        const parse_value **points, const parse_value **paths);
+/* Entry of path number path of a polygon with count points: an integer
+ * index below count into *index, else the error at the entry. */
+sc_status model_polygon_index(const model_reader *r, const parse_value *v, uint32_t path,
+                              uint32_t count, uint32_t *index);
+/* cube(size = s | [x, y, z], center = false)'s arguments. */
+sc_status model_cube(const model_reader *r, const parse_node *n, double size[3],
+                     int *center);
+/* square(size = s | [x, y], center = false)'s arguments. */
+sc_status model_square(const model_reader *r, const parse_node *n, double *sx, double *sy,
+                       int *center);
+/* import(file = "x.stl" | "x.off") of a mesh into *out. */
+sc_status model_read_import(const model_reader *r, const parse_node *n,
+                            model_import *out);
+/* surface(file, center = false, invert = false) into *out. */
+sc_status model_read_surface(const model_reader *r, const parse_node *n,
+                             model_surface *out);
+/* $fn, $fa, $fs of a 2D shape or an extrusion, each a number where given
+ * (OpenSCAD's defaults 0, 12, 2 where not). */
+sc_status model_read_resolution(const model_reader *r, const parse_node *n, double *fn,
+                                double *fa, double *fs);
+/* circle(r = 1 | d, $fn, $fa, $fs)'s arguments, in that order; what a d
+ * of nan means is the caller's (has_d says it was given). */
+typedef struct model_circle {
+    double r, d; /* d: nan when not given */
+    int has_d;
+    model_resolution res;
+} model_circle;
+sc_status model_read_circle(const model_reader *r, const parse_node *n,
+                            model_circle *out);
+/* Does s end in suffix (lower case), ignoring the case of s? */
+int model_has_suffix(const char *s, const char *suffix);
+
+#endif

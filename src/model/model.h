@@ -1,0 +1,250 @@
+/* The typed model: the syntax tree lowered once into one tagged node per
+ * kind, with every argument read and checked.
+ *
+ * model_lower (lower.c) gives each node name its kind through one table,
+ * reads its arguments into the node's typed fields (cube{size, center},
+ * sphere{r, resolution}, multmatrix's affine map, ...) and checks their
+ * types and values, with the messages and positions the file's reader
+ * expects. The builders (src/build/) switch on model_kind; those that
+ * still walk a subtree of the syntax tree name its kinds through the same
+ * table (model_kind_of).
+ *
+ * The model mirrors the walk the builder makes over the file: the children
+ * of a group, union, render, difference, intersection, multmatrix, color,
+ * material and resize are lowered as model nodes; '*' subtrees are left
+ * out (they are never read), and so are the children of a leaf, which the
+ * builder ignores (with a warning) or, for the kinds whose builders still
+ * walk their own subtree (hull, minkowski, the extrusions, 2D shapes),
+ * reads itself from `syntax`.
+ *
+ * An argument error is not a failure of the lowering: the node that has
+ * it becomes a MODEL_ERROR node holding the error, the last node of the
+ * model in file order, and lowering stops there. The builder reports it when its
+ * walk reaches it, so an error the builder finds earlier in the file (an
+ * open polyhedron, a missing import) is still the one reported, as when the
+ * two stages were one.
+ *
+ * Every node is allocated from the model's arena (loading a million leaves
+ * makes no million mallocs), the larger payloads (matrices, colours,
+ * errors) apart from the node so that it stays small (128 bytes). The
+ * model points into the syntax tree (`syntax` nodes, names, strings),
+ * which must outlive it.
+ */
+#ifndef SPANCAST_MODEL_MODEL_H
+#define SPANCAST_MODEL_MODEL_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "base/arena.h"
+#include "implicit/expr.h"
+#include "math/vec.h"
+#include "model/shading.h"
+#include "spancast/spancast.h"
+#include "syntax/parse.h"
+
+/* The largest $fn a node may set: it is the number of polygon sides that
+ * OpenSCAD-faithful rendering builds, so an absurd value must not reach it.
+ * A larger or non-finite $fn is an error at the value (docs/limits.md). */
+#define MODEL_MAX_FN 10000
+
+typedef enum model_kind {
+    MODEL_UNION, /* group, union, render */
+    MODEL_DIFFERENCE,
+    MODEL_INTERSECTION,
+    MODEL_XFORM, /* multmatrix */
+    MODEL_COLOR,
+    MODEL_MATERIAL,
+    MODEL_RESIZE,
+    /* Leaves: the builder does not walk their children (the extrusions,
+     * hull and minkowski build from them themselves). */
+    MODEL_CUBE,
+    MODEL_SPHERE,
+    MODEL_CYLINDER,
+    MODEL_POLYHEDRON,
+    MODEL_IMPORT,
+    MODEL_LINEAR_EXTRUDE,
+    MODEL_ROTATE_EXTRUDE,
+    MODEL_CIRCLE, /* 2D shapes: in a 3D model checked, then ignored */
+    MODEL_SQUARE,
+    MODEL_POLYGON,
+    MODEL_TEXT,
+    MODEL_OFFSET,
+    MODEL_HULL,
+    MODEL_MINKOWSKI,
+    MODEL_SURFACE,
+    MODEL_TORUS,
+    MODEL_QUADRIC,
+    MODEL_IMPLICIT, /* the last leaf kind */
+    /* Shading nodes: no geometry, and no children walked. */
+    MODEL_LIGHT,
+    MODEL_CAMERA,
+    MODEL_BACKGROUND,
+    /* An argument error found while lowering (see above). */
+    MODEL_ERROR,
+    /* Kinds model_kind_of gives and a lowered model never holds (lowering
+     * makes them errors): spancast's halfspace, other names OpenSCAD
+     * writes that are not supported yet, and unknown names. */
+    MODEL_HALFSPACE,
+    MODEL_UNSUPPORTED,
+    MODEL_UNKNOWN
+} model_kind;
+
+/* Modifier flags (the parser's, PARSE_MOD_*). */
+enum {
+    MODEL_MOD_DISABLE = PARSE_MOD_DISABLE,
+    MODEL_MOD_ROOT = PARSE_MOD_ROOT,
+    MODEL_MOD_HIGHLIGHT = PARSE_MOD_HIGHLIGHT,
+    MODEL_MOD_BACKGROUND = PARSE_MOD_BACKGROUND
+};
+
+/* $fn, $fa, $fs of a curved leaf: OpenSCAD's defaults (0, 12, 2) where the
+ * node does not set them to numbers. */
+typedef struct model_resolution {
+    double fn, fa, fs;
+} model_resolution;
+
+/* color(c, alpha): c = [r, g, b, a] (missing components 1) unless c[0] < 0,
+ * or a known colour name, sets the colour (set), with the components as
+ * written and their positions: the builder clamps them, with a warning,
+ * where the node is built. */
+typedef struct model_color {
+    int set;
+    double c[4];
+    sc_location c_loc[4];
+    const char *unknown; /* a colour name not known, or NULL */
+    sc_location unknown_loc;
+    int has_alpha; /* alpha given: it replaces c[3] when set */
+    double alpha;
+    sc_location alpha_loc;
+} model_color;
+
+/* material(): the material its children get, and the base colour it sets
+ * (when has_color), as color() does. */
+typedef struct model_material {
+    shading_material material;
+    float color[3];
+    int has_color;
+} model_material;
+
+/* torus(r1, r2): major radius r1 in the xy plane, minor radius r2 < r1. */
+typedef struct model_torus {
+    double r1, r2;
+    const char *empty; /* why it is empty (a warning where built), or NULL */
+} model_torus;
+
+/* quadric(a, bounds): A x^2 + B y^2 + C z^2 + D xy + E yz + F xz + G x + H y
+ * + I z + J <= 0 inside the box. */
+typedef struct model_quadric {
+    double a[10]; /* finite */
+    bbox box;
+    const char *empty;
+} model_quadric;
+
+/* implicit(f, bounds, method, tolerance, params, lipschitz): f(x, y, z) < 0
+ * inside the box, f compiled. */
+typedef struct model_implicit {
+    expr_program program;
+    bbox box;
+    double tolerance; /* > 0 */
+    double lipschitz; /* > 0 when given, else 0 */
+    int method;       /* solve_method */
+    const char *empty;
+} model_implicit;
+
+/* import(file) of a mesh, in a 3D model. */
+typedef enum model_mesh_format { MODEL_MESH_STL, MODEL_MESH_OFF } model_mesh_format;
+typedef struct model_import {
+    const char *file; /* as written */
+    sc_location file_loc;
+    model_mesh_format format;
+} model_import;
+
+/* surface(file, center, invert): a height map (.dat or PNG). */
+typedef struct model_surface {
+    const char *file; /* as written */
+    sc_location file_loc;
+    int center, invert;
+} model_surface;
+
+typedef struct model_node model_node;
+struct model_node {
+    model_kind kind;
+    unsigned modifiers;             /* MODEL_MOD_* */
+    int is_root;                    /* the first '!' node: its subtree is the design */
+    const char *name;               /* as the file writes it, for messages */
+    sc_location loc;                /* of the name */
+    uint32_t child_count;           /* children written in the file (lowered or not) */
+    model_node *first_child, *next; /* lowered children, in file order */
+    /* The syntax node, for the kinds whose builders still read their own
+     * arguments and subtree (the extrusions, hull, minkowski, resize,
+     * surface, import, 2D shapes). */
+    const parse_node *syntax;
+    union {
+        struct {
+            double size[3];
+            int center;
+        } cube;
+        struct {
+            double r;
+            model_resolution res;
+        } sphere;
+        struct {
+            double h, r1, r2; /* r1 at the bottom (z = 0 or -h/2) */
+            int center;
+            model_resolution res;
+        } cylinder;
+        struct {
+            const vec3 *points; /* finite */
+            uint32_t point_count;
+            const uint32_t *indices;    /* every face's point indices, in range */
+            const uint32_t *face_start; /* face f: indices[face_start[f] .. [f + 1]) */
+            uint32_t face_count;        /* each face has 3 points or more */
+        } polyhedron;
+        const affine *xform;      /* multmatrix: rows of the 3x4 affine part */
+        const model_color *color; /* color */
+        const model_import *import;
+        const model_surface *surface;
+        const model_torus *torus;
+        const model_quadric *quadric;
+        const model_implicit *implicit;
+        const model_material *material; /* material */
+        const shading_light *light;     /* light: position or direction local */
+        const shading_camera *camera;   /* camera: world coordinates */
+        const float *background;        /* background: 3 colour components */
+        const sc_error *error;          /* MODEL_ERROR */
+    } u;
+};
+
+typedef struct model {
+    arena mem;         /* owns every node and array */
+    const char *file;  /* as the syntax tree names it; not owned */
+    model_node *first; /* top-level nodes, linked by next */
+    int has_root;      /* some node (maybe after an error) has the '!' */
+} model;
+
+/* Lowers syntax into *out (free with model_free). Returns SC_OK with a
+ * model whose last node may be a MODEL_ERROR (see above); a failure to
+ * allocate is SC_ERR_NOMEM in error, with *out NULL. */
+sc_status model_lower(const parse_tree *syntax, model **out, sc_error *error);
+
+void model_free(model *m);
+
+/* The kind of a node name, through the lowering pass's one table: for the
+ * builders that still walk their own subtree of the syntax tree (hull,
+ * minkowski, resize, the extrusions, 2D shapes). */
+model_kind model_kind_of(const char *name);
+
+/* Whether kind is a leaf (the builder does not walk its children). */
+static inline int model_is_leaf(model_kind kind)
+{
+    return kind >= MODEL_CUBE && kind <= MODEL_IMPLICIT;
+}
+
+/* Whether kind is a 2D shape. */
+static inline int model_is_2d(model_kind kind)
+{
+    return kind >= MODEL_CIRCLE && kind <= MODEL_OFFSET;
+}
+
+#endif

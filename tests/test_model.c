@@ -1,0 +1,303 @@
+/* Tests of the lowering pass (src/model/lower.c): the typed fields of each
+ * lowered kind, which nodes the model holds (no '*' subtrees, no leaves'
+ * children), the root mark, the table of node kinds, and argument errors,
+ * which become the model's last node with the exact message and
+ * position. */
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <cmocka.h>
+
+#include <math.h>
+#include <string.h>
+
+#include "model/model.h"
+#include "syntax/parse.h"
+
+typedef struct lowered {
+    parse_tree *syntax;
+    model *m;
+} lowered;
+
+static lowered lower(const char *text)
+{
+    lowered l = {NULL, NULL};
+    sc_error e;
+    if (parse_text("m.csg", text, strlen(text), &l.syntax, &e) != SC_OK)
+        fail_msg("parse error: %s", e.message);
+    if (model_lower(l.syntax, &l.m, &e) != SC_OK)
+        fail_msg("lowering failed: %s", e.message);
+    return l;
+}
+
+static void release(lowered *l)
+{
+    model_free(l->m);
+    parse_tree_free(l->syntax);
+}
+
+static int count_siblings(const model_node *n)
+{
+    int count = 0;
+    for (; n; n = n->next)
+        count++;
+    return count;
+}
+
+static void test_leaves(void **state)
+{
+    (void)state;
+    lowered l = lower("cube(size = [1, 2, 3], center = true);\n"
+                      "sphere(d = 4, $fn = 8);\n"
+                      "cylinder(h = 5, r = 2, r2 = 1, $fa = 6, $fs = 0.5);\n"
+                      "cube(7);\n");
+    const model_node *n = l.m->first;
+    assert_int_equal(n->kind, MODEL_CUBE);
+    assert_true(n->u.cube.size[0] == 1 && n->u.cube.size[1] == 2 &&
+                n->u.cube.size[2] == 3);
+    assert_true(n->u.cube.center);
+    assert_int_equal(n->loc.line, 1);
+    assert_int_equal(n->loc.column, 1);
+    n = n->next;
+    assert_int_equal(n->kind, MODEL_SPHERE);
+    assert_true(n->u.sphere.r == 2); /* a diameter halves */
+    assert_true(n->u.sphere.res.fn == 8 && n->u.sphere.res.fa == 12 &&
+                n->u.sphere.res.fs == 2);
+    n = n->next;
+    assert_int_equal(n->kind, MODEL_CYLINDER);
+    assert_true(n->u.cylinder.h == 5);
+    assert_true(n->u.cylinder.r1 == 2); /* from r */
+    assert_true(n->u.cylinder.r2 == 1); /* r2 wins over r */
+    assert_false(n->u.cylinder.center);
+    assert_true(n->u.cylinder.res.fn == 0 && n->u.cylinder.res.fa == 6 &&
+                n->u.cylinder.res.fs == 0.5);
+    n = n->next;
+    assert_true(n->u.cube.size[0] == 7 && n->u.cube.size[2] == 7);
+    assert_false(n->u.cube.center);
+    assert_null(n->next);
+    release(&l);
+}
+
+static void test_polyhedron(void **state)
+{
+    (void)state;
+    lowered l =
+        lower("polyhedron(points = [[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1]],\n"
+              "  faces = [[0, 1, 2], [0, 3, 1], [0, 2, 3], [1, 3, 2]]);\n"
+              "polyhedron([[0, 0, 0], [1, 0, 0], [0, 1, 0]], triangles = [[2, 1, "
+              "0, 1]]);\n");
+    const model_node *n = l.m->first;
+    assert_int_equal(n->kind, MODEL_POLYHEDRON);
+    assert_int_equal(n->u.polyhedron.point_count, 4);
+    assert_int_equal(n->u.polyhedron.face_count, 4);
+    assert_true(n->u.polyhedron.points[3].z == 1);
+    assert_int_equal(n->u.polyhedron.face_start[4], 12);
+    assert_int_equal(n->u.polyhedron.indices[4], 3);
+    n = n->next;
+    assert_int_equal(n->u.polyhedron.face_count, 1);
+    assert_int_equal(n->u.polyhedron.face_start[1], 4);
+    assert_int_equal(n->u.polyhedron.indices[0], 2);
+    release(&l);
+}
+
+static void test_operations(void **state)
+{
+    (void)state;
+    lowered l = lower("group() {\n"
+                      "  multmatrix([[2, 0, 0, 1], [0, 3, 0, 2], [0, 0, 4, 3], [0, 0, 0, "
+                      "1]]) {\n"
+                      "    color(\"Red\", 0.5) { cube(); }\n"
+                      "    color([2, 0.5]) { sphere(); }\n"
+                      "    color(\"nosuch\") { sphere(); }\n"
+                      "  }\n"
+                      "  difference() { cube(); }\n"
+                      "  intersection();\n"
+                      "}\n");
+    const model_node *g = l.m->first;
+    assert_int_equal(g->kind, MODEL_UNION);
+    assert_int_equal(count_siblings(g->first_child), 3);
+    const model_node *x = g->first_child;
+    assert_int_equal(x->kind, MODEL_XFORM);
+    assert_true(x->u.xform->m[0][0] == 2 && x->u.xform->m[1][1] == 3 &&
+                x->u.xform->m[2][2] == 4 && x->u.xform->m[0][3] == 1 &&
+                x->u.xform->m[1][3] == 2 && x->u.xform->m[2][3] == 3);
+    const model_node *c = x->first_child;
+    assert_int_equal(c->kind, MODEL_COLOR);
+    assert_true(c->u.color->set);
+    assert_true(c->u.color->c[0] == 1 && c->u.color->c[1] == 0 && c->u.color->c[2] == 0);
+    assert_true(c->u.color->has_alpha && c->u.color->alpha == 0.5);
+    assert_int_equal(c->first_child->kind, MODEL_CUBE);
+    c = c->next;
+    assert_true(c->u.color->set);
+    /* As written: the builder clamps, with a warning at the component. */
+    assert_true(c->u.color->c[0] == 2 && c->u.color->c[1] == 0.5 &&
+                c->u.color->c[2] == 1);
+    assert_int_equal(c->u.color->c_loc[0].line, 4);
+    assert_int_equal(c->u.color->c_loc[0].column, 12);
+    c = c->next;
+    assert_false(c->u.color->set);
+    assert_string_equal(c->u.color->unknown, "nosuch");
+    assert_int_equal(x->next->kind, MODEL_DIFFERENCE);
+    assert_int_equal(x->next->next->kind, MODEL_INTERSECTION);
+    assert_null(x->next->next->first_child);
+    release(&l);
+}
+
+static void test_what_is_lowered(void **state)
+{
+    (void)state;
+    /* '*' subtrees and a leaf's children are never read: not even an
+     * unknown name there is an error. */
+    lowered l = lower("*cube(size = \"no\");\n"
+                      "cube() { nosuch(); }\n"
+                      "union() { *sphere(); !sphere(); %cube(); }\n"
+                      "linear_extrude(1) { circle(1); }\n");
+    const model_node *n = l.m->first;
+    assert_int_equal(n->kind, MODEL_CUBE);
+    assert_int_equal(n->child_count, 1);
+    assert_null(n->first_child);
+    n = n->next;
+    assert_int_equal(count_siblings(n->first_child), 2);
+    assert_true(n->first_child->is_root);
+    assert_true(n->first_child->modifiers & MODEL_MOD_ROOT);
+    assert_true(n->first_child->next->modifiers & MODEL_MOD_BACKGROUND);
+    assert_false(n->first_child->next->is_root);
+    assert_true(l.m->has_root);
+    n = n->next;
+    assert_int_equal(n->kind, MODEL_LINEAR_EXTRUDE);
+    assert_null(n->first_child); /* its builder reads its own subtree */
+    assert_non_null(n->syntax);
+    assert_null(n->next);
+    release(&l);
+}
+
+static void test_shading_and_curved(void **state)
+{
+    (void)state;
+    lowered l =
+        lower("light(position = [1, 2, 3], color = \"red\", radius = 0.5);\n"
+              "light(direction = [0, 0, -1]);\n"
+              "camera(eye = [9, 0, 0], center = [0, 0, 0], fov = 30);\n"
+              "background(color = [0.1, 0.2, 0.3]);\n"
+              "material(reflect = 0.25, color = \"blue\") { torus(3, 1); }\n"
+              "quadric([1, 1, 1, 0, 0, 0, 0, 0, 0, -1], [[-1, -1, -1], [1, 1, -2]]);\n"
+              "implicit(\"x*x + y*y + z*z - 1\", [[-2, -2, -2], [2, 2, 2]]);\n");
+    const model_node *n = l.m->first;
+    assert_int_equal(n->kind, MODEL_LIGHT);
+    assert_int_equal(n->u.light->kind, SHADING_LIGHT_POINT);
+    assert_true(n->u.light->position.z == 3 && n->u.light->radius == 0.5);
+    assert_true(n->u.light->color[0] == 1 && n->u.light->color[1] == 0);
+    n = n->next;
+    assert_int_equal(n->u.light->kind, SHADING_LIGHT_DIRECTIONAL);
+    assert_true(n->u.light->direction.z == -1); /* local: the builder places it */
+    n = n->next;
+    assert_int_equal(n->kind, MODEL_CAMERA);
+    assert_true(n->u.camera->eye[0] == 9 && n->u.camera->fov_deg == 30);
+    n = n->next;
+    assert_int_equal(n->kind, MODEL_BACKGROUND);
+    assert_true(n->u.background[2] == 0.3f);
+    n = n->next;
+    assert_int_equal(n->kind, MODEL_MATERIAL);
+    assert_true(n->u.material->material.reflect == 0.25);
+    assert_true(n->u.material->has_color && n->u.material->color[2] == 1);
+    assert_int_equal(n->first_child->kind, MODEL_TORUS);
+    assert_true(n->first_child->u.torus->r1 == 3 && n->first_child->u.torus->r2 == 1);
+    assert_null(n->first_child->u.torus->empty);
+    n = n->next;
+    assert_int_equal(n->kind, MODEL_QUADRIC);
+    assert_true(n->u.quadric->a[9] == -1);
+    assert_string_equal(n->u.quadric->empty, "quadric with an empty box is empty");
+    n = n->next;
+    assert_int_equal(n->kind, MODEL_IMPLICIT);
+    assert_true(n->u.implicit->program.count > 0);
+    assert_true(n->u.implicit->tolerance == 4e-6); /* 1e-6 of the box's side */
+    assert_null(n->u.implicit->empty);
+    release(&l);
+}
+
+static void test_kind_of(void **state)
+{
+    (void)state;
+    /* One table: every name OpenSCAD writes has its kind. */
+    assert_int_equal(model_kind_of("group"), MODEL_UNION);
+    assert_int_equal(model_kind_of("render"), MODEL_UNION);
+    assert_int_equal(model_kind_of("multmatrix"), MODEL_XFORM);
+    assert_int_equal(model_kind_of("circle"), MODEL_CIRCLE);
+    assert_int_equal(model_kind_of("linear_extrude"), MODEL_LINEAR_EXTRUDE);
+    assert_int_equal(model_kind_of("halfspace"), MODEL_HALFSPACE);
+    assert_int_equal(model_kind_of("roof"), MODEL_UNSUPPORTED);
+    assert_int_equal(model_kind_of("projection"), MODEL_UNSUPPORTED);
+    assert_int_equal(model_kind_of("Cube"), MODEL_UNKNOWN);
+    assert_int_equal(model_kind_of(""), MODEL_UNKNOWN);
+    assert_true(model_is_leaf(MODEL_SPHERE) && model_is_leaf(MODEL_HULL));
+    assert_false(model_is_leaf(MODEL_RESIZE) || model_is_leaf(MODEL_LIGHT));
+    assert_true(model_is_2d(MODEL_OFFSET) && !model_is_2d(MODEL_CUBE));
+}
+
+/* text must lower to a model whose last node is the error expected. */
+static void check_error(const char *text, sc_status status, const char *expected)
+{
+    lowered l = lower(text);
+    const model_node *n = l.m->first, *last = NULL;
+    while (n) {
+        last = n;
+        n = n->first_child ? n->first_child : n->next;
+    }
+    assert_non_null(last);
+    assert_int_equal(last->kind, MODEL_ERROR);
+    assert_int_equal(last->u.error->status, status);
+    char buf[1024];
+    assert_string_equal(sc_error_format(last->u.error, buf, sizeof buf), expected);
+    release(&l);
+}
+
+static void test_errors(void **state)
+{
+    (void)state;
+    check_error("cube();\ncube(size = \"a\");\nnosuch();\n", SC_ERR_SEMANTIC,
+                "m.csg:2:13: error: wrong type for argument 'size' of 'cube' (expected a "
+                "number or a vector of 3 numbers)");
+    check_error("group() { sphere(r = [1]); }", SC_ERR_SEMANTIC,
+                "m.csg:1:22: error: wrong type for argument 'r' of 'sphere' (expected a "
+                "number)");
+    check_error("frobnicate();", SC_ERR_SEMANTIC,
+                "m.csg:1:1: error: unknown node 'frobnicate'");
+    check_error("union() { roof(); }", SC_ERR_UNSUPPORTED,
+                "m.csg:1:11: error: 'roof' is not supported yet");
+    check_error("sphere($fn = 1e9);", SC_ERR_LIMIT,
+                "m.csg:1:14: error: $fn 1e+09 is too large (limit is 10000)");
+    check_error("multmatrix([[1, 0], [0, 1]]) { cube(); }", SC_ERR_SEMANTIC,
+                "m.csg:1:1: error: multmatrix: matrix must be 4x4 numbers");
+    check_error("color([1, \"x\"]) { cube(); }", SC_ERR_SEMANTIC,
+                "m.csg:1:11: error: wrong type for argument 'c' of 'color' (expected a "
+                "vector of numbers or a colour name)");
+    check_error("polyhedron([[0, 0, 0]], [[0, 0, 1]]);", SC_ERR_SEMANTIC,
+                "m.csg:1:33: error: polyhedron face 0: point index 1 is out of range (1 "
+                "points)");
+    check_error("light(position = [0, 0, 0], direction = [0, 0, 1]);", SC_ERR_SEMANTIC,
+                "m.csg:1:1: error: 'light' needs either position or direction");
+    check_error("material(reflect = 0.6, transmit = 0.6) { cube(); }", SC_ERR_SEMANTIC,
+                "m.csg:1:1: error: 'material': reflect + transmit must not exceed 1");
+    check_error("torus(1, 2);", SC_ERR_SEMANTIC,
+                "m.csg:1:1: error: torus minor radius r2 = 2 must be smaller than its "
+                "major radius r1 = 1");
+    check_error("implicit(\"x $\", [[0, 0, 0], [1, 1, 1]]);", SC_ERR_SYNTAX,
+                "m.csg:1:13: error: unexpected character '$' in expression");
+    check_error("polyhedron([[0, 0, inf]], []);", SC_ERR_SEMANTIC,
+                "m.csg:1:13: error: polyhedron point 0 is not finite");
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_leaves),
+        cmocka_unit_test(test_polyhedron),
+        cmocka_unit_test(test_operations),
+        cmocka_unit_test(test_what_is_lowered),
+        cmocka_unit_test(test_shading_and_curved),
+        cmocka_unit_test(test_kind_of),
+        cmocka_unit_test(test_errors),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
