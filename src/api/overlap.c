@@ -28,6 +28,7 @@
 #include "csg/csg.h"
 #include "csg/span.h"
 #include "formats/file.h"
+#include "model/model.h"
 #include "syntax/parse.h"
 
 struct sc_objects {
@@ -38,15 +39,13 @@ struct sc_objects {
     sc_scene **scenes;
 };
 
-/* A node that unions its children and may stand for a group of objects. */
+/* A node that unions its children and may stand for a group of objects
+ * (group, union, render, color, multmatrix), named through the model's one
+ * table of kinds. */
 static int is_grouping(const parse_node *n)
 {
-    static const char *const names[] = {"group", "union", "render", "color",
-                                        "multmatrix"};
-    for (size_t k = 0; k < sizeof names / sizeof names[0]; k++)
-        if (!strcmp(n->name, names[k]))
-            return 1;
-    return 0;
+    model_kind k = model_kind_of(n->name);
+    return k == MODEL_UNION || k == MODEL_COLOR || k == MODEL_XFORM;
 }
 
 /* A node that is part of the solid (not disabled, not background). */
@@ -109,9 +108,14 @@ static sc_status build_object(sc_objects *o, size_t k, int faithful, sc_error *e
     sc_status st = SC_OK;
     if (!s || !(s->path = copy_string(o->path)))
         st = err_nomem(error, NULL);
-    else
-        st = build_scene(o->syntax, faithful, &s->tree, &s->look, &s->warnings,
-                         &s->warning_count, error);
+    else {
+        model *typed = NULL;
+        st = model_lower(o->syntax, &typed, error);
+        if (st == SC_OK)
+            st = build_scene(typed, faithful, &s->tree, &s->look, &s->warnings,
+                             &s->warning_count, error);
+        model_free(typed);
+    }
     for (size_t j = 0; j < o->count; j++)
         ((parse_node *)o->nodes[j])->modifiers = saved[j];
     free(saved);
