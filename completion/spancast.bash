@@ -69,6 +69,9 @@ _spancast()
     if [[ $cur == --*=* ]]; then
         cur=${cur#*=}
         prev="="
+    elif [[ $cur == "=" ]]; then
+        cur=
+        prev="="
     fi
     if [[ $prev == "=" || $prev == -o ]] ||
         { [[ $prev == --* ]] && "$spancast" "$command" --help 2>/dev/null | grep -q -- "$prev="; }; then

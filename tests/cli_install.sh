@@ -312,6 +312,13 @@ got=$(complete_words render models/ | tr '\n' ' ')
 check
 got=$(complete_words render drilled.csg -o models/f | tr '\n' ' ')
 [ "$got" = "models/f.png " ] || fail "completion of -o FILE: '$got'"
+# "--mask=" is three words to bash ('=' breaks words): the value is a file.
+check
+got=$(complete_words render drilled.csg --mask = models/e | tr '\n' ' ')
+[ "$got" = "models/e.txt " ] || fail "completion of --mask=FILE: '$got'"
+check
+got=$(cd models && complete_words render drilled.csg --mask = | tr '\n' ' ')
+[ "$got" = "a.csg b.scad c.stl d.off e.txt f.png sub " ] || fail "completion of --mask=: '$got'"
 
 # ---- the Debian package ----
 check
