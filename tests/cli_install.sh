@@ -109,8 +109,12 @@ rc=$?
 [ "$rc" = 2 ] && grep -q "unknown option '--no-such-option'" bench.err ||
     fail "installed spancast bench: exit $rc, '$(cat bench.err)'"
 
-# ---- the header as C and C++, and the version ----
-cat >version.c <<'C'
+# ---- the headers as C and C++, and the version ----
+# Every installed header, then a program printing the version three ways.
+for h in "$prefix"/include/spancast/*.h; do
+    echo "#include <spancast/$(basename "$h")>"
+done >version.c
+cat >>version.c <<'C'
 #include <spancast/spancast.h>
 #include <stdio.h>
 #include <string.h>
@@ -225,11 +229,13 @@ else
 fi
 
 # ---- exported symbols ----
-# Exactly the functions the public header declares (comments dropped by the
+# Exactly the functions the public headers declare (comments dropped by the
 # preprocessor), all sc_*; the version script makes everything else local.
 check
 nm -D --defined-only "$libdir/libspancast.so" | awk '{ print $NF }' | sort >exported.txt
-cc -E -P -I"$prefix/include" "$prefix/include/spancast/spancast.h" |
+for h in "$prefix"/include/spancast/*.h; do
+    echo "#include <spancast/$(basename "$h")>"
+done | cc -E -P -I"$prefix/include" - |
     grep -o '\bsc_[a-z0-9_]*[[:space:]]*(' | tr -d ' (' | sort -u >declared.txt
 if ! diff declared.txt exported.txt >symbols.diff; then
     fail "dynamic symbols of libspancast.so (<: declared, not exported; >: exported, not declared):
