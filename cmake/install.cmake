@@ -11,7 +11,7 @@
 #   LIBDIR/cmake/spancast/                find_package(spancast): spancast::spancast
 #   share/man/man1, man3                  spancast(1), spancast-COMMAND(1), libspancast(3)
 #   share/bash-completion/completions/spancast
-#   share/doc/spancast/                   README, docs/*.md, examples/
+#   share/doc/spancast/                   README.md, docs/*.md, examples/
 #
 # Every path inside the installed tree is relative to the tree (the helpers'
 # folder, spancast.pc's prefix, the CMake package's), so it can be installed
@@ -69,8 +69,9 @@ install(FILES ${PROJECT_SOURCE_DIR}/completion/spancast.bash
         DESTINATION ${CMAKE_INSTALL_DATADIR}/bash-completion/completions
         RENAME spancast)
 install(FILES ${PROJECT_SOURCE_DIR}/README.md DESTINATION ${CMAKE_INSTALL_DOCDIR})
-install(DIRECTORY ${PROJECT_SOURCE_DIR}/docs/ DESTINATION ${CMAKE_INSTALL_DOCDIR}
-        FILES_MATCHING PATTERN "*.md")
+# docs/ beside the README, whose links point into it.
+install(DIRECTORY ${PROJECT_SOURCE_DIR}/docs/ DESTINATION ${CMAKE_INSTALL_DOCDIR}/docs
+        FILES_MATCHING PATTERN "*.md" PATTERN man EXCLUDE)
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/examples/ DESTINATION ${CMAKE_INSTALL_DOCDIR}/examples
         FILES_MATCHING PATTERN "*.c" PATTERN "CMakeLists.txt")
 
@@ -96,6 +97,9 @@ set(CPACK_PACKAGING_INSTALL_PREFIX /usr)
 set(CPACK_DEBIAN_FILE_NAME DEB-DEFAULT)
 set(CPACK_DEBIAN_PACKAGE_SECTION graphics)
 set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS OFF)
+# The package's binaries without their debugging information (the .deb of
+# a RelWithDebInfo build: 0.7 MB instead of 3.1 MB); the build tree keeps it.
+set(CPACK_STRIP_FILES ON)
 # A shlibs file for libspancast, and ldconfig run after install and removal.
 set(CPACK_DEBIAN_PACKAGE_GENERATE_SHLIBS ON)
 set(CPACK_DEBIAN_PACKAGE_GENERATE_SHLIBS_POLICY ">=")
