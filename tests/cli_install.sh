@@ -2,14 +2,14 @@
 # tree into a scratch prefix, then from there
 #   - the installed tool (its version, the OpenImageIO plugin and
 #     spancast-bench found in LIBDIR/spancast);
-#   - the public header compiled as C and as C++ with -Wall -Wextra
-#     -pedantic -Werror, and its version macros against sc_version(),
+#   - the public headers compiled as C and as C++ with -Wall -Wextra
+#     -pedantic -Werror, and the version macros against sc_version(),
 #     pkg-config and `spancast --version`;
 #   - the examples, copied out of the installed documentation and built
 #     against the installed library with pkg-config and with CMake's
 #     find_package(spancast), run and checked against the tool;
-#   - libspancast.so's dynamic symbols: exactly the functions the header
-#     declares, all sc_*;
+#   - libspancast.so's dynamic symbols: exactly the functions the headers
+#     declare, all sc_*;
 #   - the man pages: they render without warnings, and each command's page
 #     documents every option its --help lists;
 #   - the bash completion: commands, options and model files;
