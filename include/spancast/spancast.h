@@ -17,9 +17,16 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include <spancast/version.h>
+
 #ifdef __cplusplus
 extern "C" {
 #endif
+
+/* The version of the library this program runs with, "MAJOR.MINOR.PATCH";
+ * SPANCAST_VERSION_STRING (spancast/version.h) is the version of the header
+ * it was compiled with. The string is static; thread safe. */
+const char *sc_version(void);
 
 typedef enum sc_status {
     SC_OK = 0,

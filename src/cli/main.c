@@ -61,10 +61,6 @@
 #include "render/shade.h"
 #include "spancast/spancast.h"
 
-#ifndef SPANCAST_VERSION
-#define SPANCAST_VERSION "0.1.0"
-#endif
-
 enum { EXIT_FAILED = 1, EXIT_USAGE = 2 };
 
 static const char usage_text[] =
@@ -1160,7 +1156,7 @@ int main(int argc, char **argv)
             return 0;
         }
         if (!strcmp(argv[k], "--version")) {
-            printf("spancast %s\n", SPANCAST_VERSION);
+            printf("spancast %s\n", SPANCAST_VERSION_STRING);
             return 0;
         }
     }

@@ -1,11 +1,14 @@
 /* Whole-file reading for the file formats (meshes, height maps, DXF):
  * one bounded read into memory, with the reason of a failure as text. And
- * the path of a file installed beside the running program.
+ * the path of a helper file (the OpenImageIO plugin, spancast-bench): beside
+ * the running program in the build tree, in the helpers' folder
+ * (LIBDIR/spancast) where installed.
  */
-#define _POSIX_C_SOURCE 200809L /* readlink */
+#define _GNU_SOURCE /* dladdr; readlink */
 
 #include "formats/file.h"
 
+#include <dlfcn.h>
 #include <errno.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -56,26 +59,84 @@ char *file_read(const char *path, size_t limit, size_t *size, const char **why)
     return buf;
 }
 
+/* The helpers' folder relative to the installed tool's folder (bin/ ->
+ * lib/spancast) and to the installed shared library's (lib/ -> lib/spancast);
+ * CMakeLists.txt sets both from the install layout. */
+#ifndef SPANCAST_HELPERS_FROM_BIN
+#define SPANCAST_HELPERS_FROM_BIN "../lib/spancast"
+#endif
+#ifndef SPANCAST_HELPERS_FROM_LIB
+#define SPANCAST_HELPERS_FROM_LIB "spancast"
+#endif
+
+/* Writes folder (its first folder_length bytes), sub (when not NULL) and
+ * name, joined by slashes, into path; 0 (errno ENAMETOOLONG) when it does
+ * not fit. */
+static int join(char *path, size_t size, const char *folder, size_t folder_length,
+                const char *sub, const char *name)
+{
+    int n = snprintf(path, size, "%.*s/%s%s%s", (int)folder_length, folder,
+                     sub ? sub : "", sub ? "/" : "", name);
+    if (n < 0 || (size_t)n >= size) {
+        errno = ENAMETOOLONG;
+        return 0;
+    }
+    return 1;
+}
+
+static int exists(const char *path)
+{
+    return access(path, F_OK) == 0;
+}
+
+/* Any object of this library: dladdr of its address names the file the
+ * code was loaded from, the shared library or the executable. */
+static const char where_am_i = 0;
+
 int file_beside_program(const char *name, char *path, size_t size)
 {
-    if (size < 2) {
-        errno = ENAMETOOLONG;
-        return 0;
+    char exe[4096], candidate[4096];
+    int have_exe = 0;
+    ssize_t length = readlink("/proc/self/exe", exe, sizeof exe - 1);
+    int readlink_errno = length < 0 ? errno : ENOENT;
+    if (length > 0) {
+        exe[length] = '\0';
+        char *slash = strrchr(exe, '/');
+        size_t folder = slash ? (size_t)(slash - exe) : 0;
+        /* Beside the program: the build tree. */
+        if (!join(path, size, exe, folder, NULL, name))
+            return 0;
+        have_exe = 1;
+        if (exists(path))
+            return 1;
+        /* The installed tool: PREFIX/bin -> PREFIX/LIBDIR/spancast. */
+        if (join(candidate, sizeof candidate, exe, folder, SPANCAST_HELPERS_FROM_BIN,
+                 name) &&
+            exists(candidate)) {
+            if (strlen(candidate) >= size) {
+                errno = ENAMETOOLONG;
+                return 0;
+            }
+            strcpy(path, candidate);
+            return 1;
+        }
     }
-    ssize_t length = readlink("/proc/self/exe", path, size - 1);
-    if (length <= 0) {
-        if (length == 0)
-            errno = ENOENT;
-        return 0;
+    /* The installed shared library, in another program: PREFIX/LIBDIR ->
+     * PREFIX/LIBDIR/spancast. Only an absolute name is trusted: a relative
+     * one would be looked up from the current folder. */
+    Dl_info info;
+    if (dladdr(&where_am_i, &info) && info.dli_fname && info.dli_fname[0] == '/') {
+        const char *slash = strrchr(info.dli_fname, '/');
+        if (join(candidate, sizeof candidate, info.dli_fname,
+                 (size_t)(slash - info.dli_fname), SPANCAST_HELPERS_FROM_LIB, name) &&
+            exists(candidate) && strlen(candidate) < size) {
+            strcpy(path, candidate);
+            return 1;
+        }
     }
-    path[length] = '\0';
-    /* Keep the folder up to its last slash ("/" for a program at the root). */
-    char *slash = strrchr(path, '/');
-    size_t folder = slash ? (size_t)(slash - path) + 1 : 0;
-    if (folder + strlen(name) + 1 > size) {
-        errno = ENAMETOOLONG;
-        return 0;
-    }
-    strcpy(path + folder, name);
-    return 1;
+    /* Nowhere: the path beside the program, for the caller's message. */
+    if (have_exe)
+        return 1;
+    errno = readlink_errno;
+    return 0;
 }

@@ -11,11 +11,13 @@
  * on failure. */
 char *file_read(const char *path, size_t limit, size_t *size, const char **why);
 
-/* Writes into path (size bytes) the path of the file called name in the
- * folder of the running executable (/proc/self/exe): where the tool finds
- * spancast-oiio.so and spancast-bench. Returns 1, or 0 when the executable's
- * path cannot be read (errno says why) or the result does not fit (errno
- * ENAMETOOLONG). */
+/* Writes into path (size bytes) the path of the helper file called name
+ * (spancast-oiio.so, spancast-bench): the first that exists of the folder
+ * of the running executable (/proc/self/exe; the build tree), the helpers'
+ * folder of an installed tool (bin/../LIBDIR/spancast) and that of the
+ * installed shared library the code runs in (LIBDIR/spancast); when none
+ * exists, the first. Returns 1, or 0 when no path can be formed (errno says
+ * why) or the result does not fit (errno ENAMETOOLONG). */
 int file_beside_program(const char *name, char *path, size_t size);
 
 #endif
