@@ -537,7 +537,8 @@ static const span_list no_spans = {NULL, 0};
 
 static span_list eval(eval_ctx *c, uint32_t id, double lo, double hi, eval_mode mode);
 
-static span_list eval_leaf(eval_ctx *c, const csg_node *n)
+static span_list eval_leaf(eval_ctx *c, const csg_node *n, double lo, double hi,
+                           eval_mode mode)
 {
     const csg_leaf *l = &c->tree->leaves[n->leaf];
     uint32_t cap = prim_max_spans(&l->prim);
@@ -549,7 +550,8 @@ static span_list eval_leaf(eval_ctx *c, const csg_node *n)
     vec3 o = affine_point(&l->to_local, c->o);
     vec3 d = affine_vector(&l->to_local, c->d);
     c->counters->prim_tests++;
-    r.n = prim_spans(&l->prim, n->leaf, o, d, r.v, cap);
+    r.n = prim_spans_range(&l->prim, n->leaf, o, d, lo, hi, c->eps, mode != EVAL_ALL, r.v,
+                           cap);
     r.n = span_regularize(r.v, r.n, c->eps);
     return r;
 }
@@ -783,7 +785,7 @@ static span_list eval(eval_ctx *c, uint32_t id, double lo, double hi, eval_mode 
     if (!bbox_ray(&n->bounds, c->o, c->inv_d, &t0, &t1))
         return no_spans;
     if (n->op == CSG_LEAF)
-        return eval_leaf(c, n);
+        return eval_leaf(c, n, lo, hi, mode);
     if (n->op == CSG_UNION) {
         union_state u = {no_spans, mode, 0, arena_save(c->scratch)};
         for_operands(c, n, 0, lo, hi, visit_union, &u);
