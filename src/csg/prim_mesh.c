@@ -444,12 +444,12 @@ static double diff_of_products(double a, double b, double c, double d)
     return f + e;
 }
 
-/* The edge function e(p, q) with its zero resolved: > 0 or < 0 as the
- * origin, moved by eps (1, eta), lies left or right of p -> q. Returns +1,
- * -1, or 0 for a degenerate edge (p = q). */
-static int edge_sign(double px, double py, double qx, double qy)
+/* The sign of an edge function e = e(p, q) (computed exactly signed by
+ * diff_of_products) with its zero resolved: > 0 or < 0 as the origin,
+ * moved by eps (1, eta), lies left or right of p -> q. Returns +1, -1, or
+ * 0 for a degenerate edge (p = q). */
+static inline int edge_sign(double e, double px, double py, double qx, double qy)
 {
-    double e = diff_of_products(px, qy, py, qx);
     if (e > 0)
         return 1;
     if (e < 0)
@@ -461,25 +461,42 @@ static int edge_sign(double px, double py, double qx, double qy)
     return 0;
 }
 
+/* The sign of a b - c d where the rounded products decide it, else 0: the
+ * error of the rounded difference is below 2^-50 of |a b| + |c d| (plus
+ * the underflow of the products), so a value beyond that has the exact
+ * sign. It lets most missed triangles go without the exact evaluation. */
+static inline int quick_sign(double a, double b, double c, double d)
+{
+    double ab = a * b, cd = c * d, e = ab - cd;
+    double bound = 0x1p-50 * (fabs(ab) + fabs(cd)) + 0x1p-1000;
+    return e > bound ? 1 : e < -bound ? -1 : 0;
+}
+
 /* Crosses triangle i; returns 1 and fills *c when the line meets it. */
 static int cross_triangle(const prim_mesh *m, const ray_frame *f, uint32_t i, crossing *c)
 {
     double x[3], y[3], z[3];
     for (int k = 0; k < 3; k++) {
-        vec3 p = v3_sub(m->v[3 * i + k], f->o);
-        double pz = comp(p, f->kz);
-        x[k] = comp(p, f->kx) - f->sx * pz;
-        y[k] = comp(p, f->ky) - f->sy * pz;
+        const vec3 *q = &m->v[3 * i + k];
+        double p[3] = {q->x - f->o.x, q->y - f->o.y, q->z - f->o.z};
+        double pz = p[f->kz];
+        x[k] = p[f->kx] - f->sx * pz;
+        y[k] = p[f->ky] - f->sy * pz;
         z[k] = f->sz * pz;
     }
-    int su = edge_sign(x[1], y[1], x[2], y[2]); /* BC */
-    int sv = edge_sign(x[2], y[2], x[0], y[0]); /* CA */
-    int sw = edge_sign(x[0], y[0], x[1], y[1]); /* AB */
-    if (su == 0 || sv == 0 || sw == 0 || su != sv || sv != sw)
-        return 0;
+    int qu = quick_sign(x[1], y[2], y[1], x[2]);
+    int qv = quick_sign(x[2], y[0], y[2], x[0]);
+    int qw = quick_sign(x[0], y[1], y[0], x[1]);
+    if ((qu > 0 || qv > 0 || qw > 0) && (qu < 0 || qv < 0 || qw < 0))
+        return 0; /* two edges certainly disagree */
     double u = diff_of_products(x[1], y[2], y[1], x[2]);
     double v = diff_of_products(x[2], y[0], y[2], x[0]);
     double w = diff_of_products(x[0], y[1], y[0], x[1]);
+    int su = edge_sign(u, x[1], y[1], x[2], y[2]); /* BC */
+    int sv = edge_sign(v, x[2], y[2], x[0], y[0]); /* CA */
+    int sw = edge_sign(w, x[0], y[0], x[1], y[1]); /* AB */
+    if (su == 0 || sv == 0 || sw == 0 || su != sv || sv != sw)
+        return 0;
     double det = u + v + w;
     if (det == 0 || (det > 0) != (su > 0))
         return 0; /* no area in projection: a ray in the triangle's plane */
