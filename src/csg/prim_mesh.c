@@ -604,24 +604,47 @@ static inline double widen_up(double t)
     return t + fabs(t) * SLAB_WIDEN;
 }
 
-/* Tests child k of node n: 1 when the line meets its box and the box's kz
- * slab meets [lo, hi]; *key is where the line enters the box (the order of
- * the walk), *kz_near where the kz slab begins (what a later, narrower
- * range is checked against). */
-static inline int child_hit(const prim_mesh_node *n, int k, const slab_ray *r, double lo,
-                            double hi, double *key, double *kz_near)
+/* Tests both children of node n: hit[k] is 1 when the line meets child
+ * k's box and the box's kz slab meets [lo, hi]; key[k] is where the line
+ * enters the box (the order of the walk), kz_near[k] where the kz slab
+ * begins (what a later, narrower range is checked against). The two
+ * children go side by side through the same operations, which compilers
+ * turn into two-lane vector code. */
+static inline void children_hit(const prim_mesh_node *n, const slab_ray *r, double lo,
+                                double hi, int hit[2], double key[2], double kz_near[2])
 {
-    double tn[3], tf[3];
+    double t0[2] = {-INFINITY, -INFINITY}, t1[2] = {INFINITY, INFINITY};
     for (int a = 0; a < 3; a++) {
-        tn[a] = ((double)n->box[r->near[a]][a][k] - r->o[a]) * r->inv[a];
-        tf[a] = ((double)n->box[1 - r->near[a]][a][k] - r->o[a]) * r->inv[a];
+        const float *near = n->box[r->near[a]][a], *far = n->box[1 - r->near[a]][a];
+        for (int k = 0; k < 2; k++) {
+            double tn = ((double)near[k] - r->o[a]) * r->inv[a];
+            double tf = ((double)far[k] - r->o[a]) * r->inv[a];
+            t0[k] = max2(t0[k], tn);
+            t1[k] = min2(t1[k], tf);
+        }
     }
-    double t0 = widen_down(max2(max2(tn[0], tn[1]), tn[2]));
-    double t1 = widen_up(min2(min2(tf[0], tf[1]), tf[2]));
-    double z0 = widen_down(tn[r->kz]), z1 = widen_up(tf[r->kz]);
-    *key = t0;
-    *kz_near = z0;
-    return t0 <= t1 && z0 <= hi && z1 >= lo;
+    int kz = r->kz;
+    const float *near = n->box[r->near[kz]][kz], *far = n->box[1 - r->near[kz]][kz];
+    for (int k = 0; k < 2; k++) {
+        double z0 = widen_down(((double)near[k] - r->o[kz]) * r->inv[kz]);
+        double z1 = widen_up(((double)far[k] - r->o[kz]) * r->inv[kz]);
+        double w0 = widen_down(t0[k]), w1 = widen_up(t1[k]);
+        key[k] = w0;
+        kz_near[k] = z0;
+        hit[k] = w0 <= w1 && z0 <= hi && z1 >= lo;
+    }
+}
+
+/* The same test for one child, for the mesh's whole box. */
+static int child_hit(const prim_mesh_node *n, int k, const slab_ray *r, double lo,
+                     double hi, double *key, double *kz_near)
+{
+    int hit[2];
+    double keys[2], near[2];
+    children_hit(n, r, lo, hi, hit, keys, near);
+    *key = keys[k];
+    *kz_near = near[k];
+    return hit[k];
 }
 
 /* A walk over the crossings in a range of the line. */
@@ -659,8 +682,7 @@ static void gather(const prim_mesh *m, const ray_frame *f, const slab_ray *r, wa
     for (;;) {
         double key[2], kz_near[2];
         int hit[2];
-        hit[0] = child_hit(n, 0, r, w->lo, w->hi, &key[0], &kz_near[0]);
-        hit[1] = child_hit(n, 1, r, w->lo, w->hi, &key[1], &kz_near[1]);
+        children_hit(n, r, w->lo, w->hi, hit, key, kz_near);
         int near = hit[0] && hit[1] ? key[1] < key[0] : hit[1];
         pending inner[2];
         int inner_count = 0;
