@@ -707,8 +707,14 @@ static void gather(const prim_mesh *m, const ray_frame *f, const slab_ray *r, wa
         for (int j = inner_count; j-- > 0 && top < STACK;)
             stack[top++] = inner[j];
         for (;;) {
-            if (top == 0)
+            if (top == 0) {
+                /* Crossings kept before hi narrowed past them lie beyond
+                 * what the walk has seen in full: a later walk from hi
+                 * takes them again. */
+                while (w->stop && cs->n > 0 && cs->v[cs->n - 1].t > w->hi)
+                    cs->n--;
                 return;
+            }
             top--;
             if (stack[top].kz_near <= w->hi)
                 break;
