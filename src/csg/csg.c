@@ -698,6 +698,18 @@ static int visit_cut(eval_ctx *c, void *state, uint32_t id, double *lo, double *
     return 1;
 }
 
+/* The query recursion goes as deep as the tree (10000 levels on a render
+ * thread's stack), so the rarer paths below stay out of the frames of
+ * eval and eval_cut: the compiler would otherwise inline them there and
+ * every level would pay for their locals. */
+#if defined(__GNUC__)
+#define COLD_PATH __attribute__((noinline))
+#define INLINE_PATH inline __attribute__((always_inline))
+#else
+#define COLD_PATH
+#define INLINE_PATH inline
+#endif
+
 /* A difference of a few subtrahends from a wide union (one with a BVH)
  * evaluates its subtrahends first: where they lie, the union's operands
  * need not be visited at all. A ray through a cut-away corner of a block
@@ -712,7 +724,8 @@ static int cuts_first(const eval_ctx *c, const csg_node *n)
 
 /* The union of n's subtrahends within [lo, hi], clipped to where the first
  * operand's box lies along the ray. */
-static span_list subtrahends(eval_ctx *c, const csg_node *n, double lo, double hi)
+COLD_PATH static span_list subtrahends(eval_ctx *c, const csg_node *n, double lo,
+                                       double hi)
 {
     const uint32_t *ids = &c->tree->child_ids[n->first_child];
     double a0 = lo - c->eps, a1 = hi + c->eps;
@@ -784,7 +797,8 @@ static span_list clip_list(eval_ctx *c, span_list s, double a, double b)
 /* Difference n over [lo, hi] by cuts_first: the subtrahends in full, the
  * first operand only on the stretches they leave free (its spans there are
  * those of the whole; inside the subtrahends nothing of it survives). */
-static span_list eval_cut_free(eval_ctx *c, const csg_node *n, double lo, double hi)
+COLD_PATH static span_list eval_cut_free(eval_ctx *c, const csg_node *n, double lo,
+                                         double hi)
 {
     arena_mark start = arena_save(c->scratch);
     span_list cut = subtrahends(c, n, lo, hi);
@@ -865,31 +879,14 @@ static span_list from_entry(eval_ctx *c, span_list r, const span_end *entry)
  * its own first crossing, which a union finds cheaply) begins: before that
  * the result is empty. With a BVH below, the cost follows the solids near
  * the first hit instead of every solid along the ray. */
-static span_list eval_cut_first_in(eval_ctx *c, const csg_node *n, double lo, double hi);
+static span_list eval_cut_first_free(eval_ctx *c, const csg_node *n, double lo,
+                                     double hi);
 
-static span_list eval_cut_first(eval_ctx *c, const csg_node *n, double lo, double hi)
+static INLINE_PATH span_list eval_cut_first(eval_ctx *c, const csg_node *n, double lo,
+                                            double hi, int plain)
 {
-    if (!cuts_first(c, n))
-        return eval_cut_first_in(c, n, lo, hi);
-    /* Every crossing of the result lies on a free stretch (or at its ends):
-     * the first stretch that holds one holds the first. */
-    arena_mark start = arena_save(c->scratch);
-    span_list cut = subtrahends(c, n, lo, hi);
-    uint32_t k = 0;
-    double f0, f1;
-    while (!c->oom && free_stretch(cut, lo, hi, &k, &f0, &f1)) {
-        span_list r = eval_cut_first_in(c, n, f0, f1);
-        if (c->oom)
-            return no_spans;
-        if (first_crossing(r, f0) <= f1)
-            return keep(c, start, r);
-    }
-    arena_restore(c->scratch, start);
-    return no_spans;
-}
-
-static span_list eval_cut_first_in(eval_ctx *c, const csg_node *n, double lo, double hi)
-{
+    if (!plain && cuts_first(c, n))
+        return eval_cut_first_free(c, n, lo, hi);
     span_list a = eval(c, c->tree->child_ids[n->first_child], lo, hi, EVAL_FIRST);
     const span *f = first_after(a, lo);
     if (c->oom || !f)
@@ -907,6 +904,27 @@ static span_list eval_cut_first_in(eval_ctx *c, const csg_node *n, double lo, do
             return r;
         step *= 2;
     }
+}
+
+/* eval_cut_first for a difference by cuts_first: every crossing of the
+ * result lies on a free stretch (or at its ends), so the first stretch
+ * that holds one holds the first. */
+COLD_PATH static span_list eval_cut_first_free(eval_ctx *c, const csg_node *n, double lo,
+                                               double hi)
+{
+    arena_mark start = arena_save(c->scratch);
+    span_list cut = subtrahends(c, n, lo, hi);
+    uint32_t k = 0;
+    double f0, f1;
+    while (!c->oom && free_stretch(cut, lo, hi, &k, &f0, &f1)) {
+        span_list r = eval_cut_first(c, n, f0, f1, 1);
+        if (c->oom)
+            return no_spans;
+        if (first_crossing(r, f0) <= f1)
+            return keep(c, start, r);
+    }
+    arena_restore(c->scratch, start);
+    return no_spans;
 }
 
 /* The spans of node id that matter within [lo, hi]; spans may extend beyond
@@ -935,7 +953,7 @@ static span_list eval(eval_ctx *c, uint32_t id, double lo, double hi, eval_mode 
     if (mode != EVAL_FIRST)
         return eval_cut(c, n, lo, hi);
     arena_mark start = arena_save(c->scratch);
-    return keep(c, start, eval_cut_first(c, n, lo, fmin(hi, t1)));
+    return keep(c, start, eval_cut_first(c, n, lo, fmin(hi, t1), 0));
 }
 
 /* Two parts, in length units. The resolution: 1e-9 of the solid's extent,
