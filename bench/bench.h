@@ -13,4 +13,9 @@ int bench_main(int argc, char **argv);
  * (bench_stability.c), argv[0] "stability". Returns the exit status. */
 int bench_stability_main(int argc, char **argv);
 
+/* `spancast bench meshes FILE.csg [--size W,H] [--reps N]` and
+ * `spancast bench torus-stl --triangles N FILE.stl` (bench_mesh.c), argv[0]
+ * the benchmark's name. Returns the exit status. */
+int bench_meshes_main(int argc, char **argv);
+
 #endif

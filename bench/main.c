@@ -6,6 +6,8 @@
  *
  *   spancast-bench accuracy --csv FILE [--plot FILE.png] [--rays N]
  *   spancast-bench stability --csv FILE [--dir DIR] [--size N] [--depth N]
+ *   spancast-bench meshes FILE.csg [--size W,H] [--reps N]
+ *   spancast-bench torus-stl --triangles N FILE.stl
  */
 #include <string.h>
 
@@ -15,5 +17,7 @@ int main(int argc, char **argv)
 {
     if (argc > 1 && !strcmp(argv[1], "stability"))
         return bench_stability_main(argc - 1, argv + 1);
+    if (argc > 1 && (!strcmp(argv[1], "meshes") || !strcmp(argv[1], "torus-stl")))
+        return bench_meshes_main(argc - 1, argv + 1);
     return bench_main(argc - 1, argv + 1);
 }

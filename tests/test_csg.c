@@ -1125,13 +1125,15 @@ static made random_node(gen *g, const affine *parent, int level)
 
 /* A wide tree: a difference whose first operand is a union of 8 to 31
  * random subtrees and which subtracts 8 to 15 random leaves, so that both
- * get a BVH when compiled; as deep as random_node's trees. */
-static made random_wide(gen *g)
+ * get a BVH when compiled (with few set, 1 to 4, so only the union does);
+ * as deep as random_node's trees. */
+static made random_wide(gen *g, int few)
 {
     affine id = affine_identity();
     made parts[32], cut[16];
     uint32_t part_ids[32], cut_ids[16];
-    uint32_t n = 8 + below(&g->r, 24), m = 8 + below(&g->r, 8);
+    uint32_t n = 8 + below(&g->r, 24),
+             m = few ? 1 + below(&g->r, 4) : 8 + below(&g->r, 8);
     for (uint32_t k = 0; k < n; k++) {
         parts[k] = random_node(g, &id, 2);
         part_ids[k] = parts[k].id;
@@ -1909,8 +1911,10 @@ static void test_random_trees(void **state)
         gen g = {{seed}, csg_builder_new(), 0, 0, oleaves, onodes, okids, 0, 0, 0};
         assert_non_null(g.b);
         affine id = affine_identity();
-        /* Every fifth tree is wide, to exercise the BVHs. */
-        made root = ti % 5 == 4 ? random_wide(&g) : random_node(&g, &id, 0);
+        /* Every fifth tree is wide, to exercise the BVHs; every other one
+         * of those subtracts only a few solids from its wide union, which
+         * the queries evaluate before the union (csg.c, cuts_first). */
+        made root = ti % 5 == 4 ? random_wide(&g, ti % 10 == 9) : random_node(&g, &id, 0);
         csg_tree *t = finish(g.b, root.id);
         st.bvh_nodes += t->bvh_node_count;
         kinds |= g.kinds_used;

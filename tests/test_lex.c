@@ -8,6 +8,8 @@
 #include <cmocka.h>
 
 #include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "syntax/lex.h"
@@ -107,6 +109,66 @@ static void test_numbers(void **state)
     assert_int_equal(l.tokens[2].column, 6);
     assert_int_equal(l.tokens[2].length, 7);
     arena_free(&l.mem);
+}
+
+/* Every number is the double strtod makes of it, bit for bit, whether the
+ * lexer's fast path takes it or not: random decimals of 1 to 19 digits
+ * with the point anywhere, signs and exponents from -40 to 40, and
+ * OpenSCAD's 6-digit %g forms of random doubles. */
+static void test_number_rounding(void **state)
+{
+    (void)state;
+    uint64_t r = 0x9e3779b97f4a7c15ULL;
+    arena mem;
+    arena_init(&mem, 0);
+    char text[96];
+    for (int i = 0; i < 200000; i++) {
+        r ^= r << 13;
+        r ^= r >> 7;
+        r ^= r << 17;
+        int len = 0;
+        if (i % 4 == 3) {
+            double x;
+            uint64_t bits = r;
+            memcpy(&x, &bits, sizeof x);
+            if (!isfinite(x))
+                continue;
+            len = snprintf(text, sizeof text, "%g", x);
+        } else {
+            uint64_t q = r;
+            int digits = 1 + (int)(q % 19);
+            q /= 19;
+            int point = (int)(q % (uint64_t)(digits + 2)) - 1; /* -1: no point */
+            q /= (uint64_t)(digits + 2);
+            if (q % 3 == 0)
+                text[len++] = '-';
+            q /= 3;
+            for (int k = 0; k < digits; k++) {
+                if (k == point)
+                    text[len++] = '.';
+                text[len++] = (char)('0' + q % 10);
+                q = q / 10 ^ (q << 7);
+            }
+            if (point == digits)
+                text[len++] = '.';
+            if (r % 5 < 2)
+                len += snprintf(text + len, sizeof text - (size_t)len, "e%d",
+                                (int)(r % 81) - 40);
+            text[len] = 0;
+        }
+        if (text[0] == '.' && len == 1)
+            continue;
+        lexer lx;
+        lex_token tok;
+        lex_init(&lx, "t.csg", text, (size_t)len, &mem);
+        assert_int_equal(lex_next(&lx, &tok, NULL), SC_OK);
+        assert_int_equal(tok.kind, LEX_NUMBER);
+        assert_int_equal(tok.length, (size_t)len);
+        double want = strtod(text, NULL);
+        if (memcmp(&want, &tok.number, sizeof want) != 0)
+            fail_msg("'%s': lexed %.17g, strtod %.17g", text, tok.number, want);
+    }
+    arena_free(&mem);
 }
 
 static void test_inf_and_nan(void **state)
@@ -235,6 +297,7 @@ int main(void)
         cmocka_unit_test(test_punctuation_and_modifiers),
         cmocka_unit_test(test_identifiers_and_keywords),
         cmocka_unit_test(test_numbers),
+        cmocka_unit_test(test_number_rounding),
         cmocka_unit_test(test_inf_and_nan),
         cmocka_unit_test(test_strings),
         cmocka_unit_test(test_string_lines),

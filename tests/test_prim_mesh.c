@@ -10,6 +10,7 @@
 #include <stdint.h>
 #include <cmocka.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include "csg/csg.h"
 #include "csg/prim_mesh.h"
@@ -337,6 +338,98 @@ static void test_degenerate(void **state)
     csg_builder_free(b);
 }
 
+/* The spans of l that meet [lo, hi] (closed), compacted in place. */
+static uint32_t meeting(span *l, uint32_t n, double lo, double hi)
+{
+    uint32_t k = 0;
+    for (uint32_t i = 0; i < n; i++)
+        if (l[i].out.t >= lo && l[i].in.t <= hi)
+            l[k++] = l[i];
+    return k;
+}
+
+static int same_end(span_end a, span_end b)
+{
+    return a.t == b.t && a.leaf == b.leaf && a.part == b.part && a.flip == b.flip;
+}
+
+/* prim_spans_range against the whole line's spans (prim_spans), both
+ * regularised, on random rays and ranges through a mesh of many pieces,
+ * some touching (gaps that regularisation closes) and some thin (slivers
+ * it removes) at the larger eps: every span that meets the range has the
+ * same ends, and a first-crossing query gets the same first crossing after
+ * the range start. The walk then starts inside and outside the mesh, ends
+ * inside spans, and narrows. */
+static void test_range_walk(void **state)
+{
+    (void)state;
+    csg_builder *b = csg_builder_new();
+    soup s = {0};
+    for (int i = 0; i < 6; i++)
+        soup_box(&s, v3(2 * i, 0, 0), v3(2 * i + 1, 1, 1));
+    soup_box(&s, v3(1, 0, 0), v3(1.0005, 1, 1));    /* touches the first box */
+    soup_box(&s, v3(4, 0, 0), v3(4.0001, 1, 1));    /* touches the third */
+    soup_box(&s, v3(3.3, 0, 0), v3(3.30005, 1, 1)); /* thin, on its own */
+    soup_sphere(&s, 0.7, 9, 13);
+    prim p = make(b, &s);
+    uint64_t rng = 7;
+    uint32_t cap = prim_max_spans(&p), checked = 0, first_checked = 0;
+    const double epsilons[] = {1e-9, 1e-3, 0.05};
+    for (int r = 0; r < 20000; r++) {
+        vec3 o = v3(uniform(&rng, -3, 14), uniform(&rng, -2, 3), uniform(&rng, -2, 3));
+        vec3 target = v3(uniform(&rng, -1, 12), uniform(&rng, 0, 1), uniform(&rng, 0, 1));
+        if (r % 3 == 0)
+            target.y = target.z = 0.5;
+        vec3 d = v3_sub(target, o);
+        double eps = epsilons[r % 3];
+        double lo = uniform(&rng, -0.5, 1.5), hi = lo + uniform(&rng, 0, 1.5);
+        if (r % 7 == 0)
+            hi = INFINITY;
+        if (r % 11 == 0)
+            lo = -INFINITY;
+        span full[PRIM_MESH_MAX_SPANS], part[PRIM_MESH_MAX_SPANS];
+        uint32_t nf = prim_spans(&p, 3, o, d, full, cap);
+        nf = span_regularize(full, nf, eps);
+        for (int first = 0; first < 2; first++) {
+            uint32_t np = prim_spans_range(&p, 3, o, d, lo, hi, eps, first, part, cap);
+            np = span_regularize(part, np, eps);
+            if (!first) {
+                span want[PRIM_MESH_MAX_SPANS];
+                memcpy(want, full, nf * sizeof *full);
+                uint32_t nw = meeting(want, nf, lo, hi);
+                uint32_t ng = meeting(part, np, lo, hi);
+                assert_int_equal(ng, nw);
+                for (uint32_t k = 0; k < nw; k++) {
+                    assert_true(same_end(part[k].in, want[k].in));
+                    assert_true(same_end(part[k].out, want[k].out));
+                }
+                checked += nw;
+                continue;
+            }
+            uint32_t a = 0, g = 0;
+            while (a < nf && !(full[a].out.t > lo))
+                a++;
+            while (g < np && !(part[g].out.t > lo))
+                g++;
+            if (a == nf || !(full[a].in.t < hi)) {
+                /* nothing after lo within the range: the answer shows
+                 * nothing there either */
+                assert_true(g == np || !(part[g].in.t < hi));
+                continue;
+            }
+            assert_true(g < np);
+            if (full[a].in.t >= lo)
+                assert_true(same_end(part[g].in, full[a].in));
+            else
+                assert_true(same_end(part[g].out, full[a].out) && part[g].in.t < lo);
+            first_checked++;
+        }
+    }
+    assert_true(checked > 5000);
+    assert_true(first_checked > 3000);
+    csg_builder_free(b);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -346,6 +439,7 @@ int main(void)
         cmocka_unit_test(test_caps),
         cmocka_unit_test(test_normals_of_large_meshes),
         cmocka_unit_test(test_degenerate),
+        cmocka_unit_test(test_range_walk),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -6,12 +6,51 @@
 
 enum { BINS = 16, LEAF_SIZE = 4, SAH_DEPTH = 40 };
 
+/* Box arithmetic inline: building over 10^6 operands spends its time here
+ * (the out-of-line bbox_union with its fmin/fmax calls took a quarter of
+ * loading a million spheres). Empty boxes (lo > hi) stay empty. */
+static inline double min2(double a, double b)
+{
+    return a < b ? a : b;
+}
+
+static inline double max2(double a, double b)
+{
+    return a > b ? a : b;
+}
+
+static inline void box_grow(bbox *acc, const bbox *b)
+{
+    acc->lo.x = min2(acc->lo.x, b->lo.x);
+    acc->lo.y = min2(acc->lo.y, b->lo.y);
+    acc->lo.z = min2(acc->lo.z, b->lo.z);
+    acc->hi.x = max2(acc->hi.x, b->hi.x);
+    acc->hi.y = max2(acc->hi.y, b->hi.y);
+    acc->hi.z = max2(acc->hi.z, b->hi.z);
+}
+
+static inline void box_add(bbox *acc, vec3 p)
+{
+    acc->lo.x = min2(acc->lo.x, p.x);
+    acc->lo.y = min2(acc->lo.y, p.y);
+    acc->lo.z = min2(acc->lo.z, p.z);
+    acc->hi.x = max2(acc->hi.x, p.x);
+    acc->hi.y = max2(acc->hi.y, p.y);
+    acc->hi.z = max2(acc->hi.z, p.z);
+}
+
+static inline bbox box_none(void)
+{
+    bbox b = {{INFINITY, INFINITY, INFINITY}, {-INFINITY, -INFINITY, -INFINITY}};
+    return b;
+}
+
 static double half_area(const bbox *b)
 {
-    if (bbox_is_empty(b))
+    if (!(b->lo.x <= b->hi.x && b->lo.y <= b->hi.y && b->lo.z <= b->hi.z))
         return 0;
-    vec3 e = bbox_extent(b);
-    return e.x * e.y + e.y * e.z + e.z * e.x;
+    double x = b->hi.x - b->lo.x, y = b->hi.y - b->lo.y, z = b->hi.z - b->lo.z;
+    return x * y + y * z + z * x;
 }
 
 static uint32_t push_node(bvh_nodes *out)
@@ -81,10 +120,10 @@ static uint32_t build(bvh_nodes *out, uint32_t *ids, bbox *boxes, uint32_t count
     uint32_t node = push_node(out);
     if (node == CSG_NO_BVH)
         return CSG_NO_BVH;
-    bbox bounds = bbox_empty(), centres = bbox_empty();
+    bbox bounds = box_none(), centres = box_none();
     for (uint32_t i = 0; i < count; i++) {
-        bounds = bbox_union(bounds, boxes[i]);
-        centres = bbox_add_point(centres, bbox_center(&boxes[i]));
+        box_grow(&bounds, &boxes[i]);
+        box_add(&centres, bbox_center(&boxes[i]));
     }
     out->v[node].bounds = bounds;
     vec3 ext = bbox_extent(&centres);
@@ -96,32 +135,32 @@ static uint32_t build(bvh_nodes *out, uint32_t *ids, bbox *boxes, uint32_t count
         uint32_t bin_count[BINS] = {0};
         bbox bin_box[BINS];
         for (int b = 0; b < BINS; b++)
-            bin_box[b] = bbox_empty();
+            bin_box[b] = box_none();
         double scale = BINS / width;
         for (uint32_t i = 0; i < count; i++) {
             int b = (int)((centre_on(&boxes[i], axis) - lo) * scale);
             b = b < 0 ? 0 : b >= BINS ? BINS - 1 : b;
             bin_count[b]++;
-            bin_box[b] = bbox_union(bin_box[b], boxes[i]);
+            box_grow(&bin_box[b], &boxes[i]);
         }
         /* Sweep from the right to get the area and count right of each
          * split, then from the left to price every split. */
         double right_area[BINS];
         uint32_t right_count[BINS];
-        bbox acc = bbox_empty();
+        bbox acc = box_none();
         uint32_t n = 0;
         for (int b = BINS - 1; b > 0; b--) {
-            acc = bbox_union(acc, bin_box[b]);
+            box_grow(&acc, &bin_box[b]);
             n += bin_count[b];
             right_area[b] = half_area(&acc);
             right_count[b] = n;
         }
         double best = half_area(&bounds) * count; /* cost of a leaf */
         int best_bin = 0;
-        acc = bbox_empty();
+        acc = box_none();
         n = 0;
         for (int b = 1; b < BINS; b++) {
-            acc = bbox_union(acc, bin_box[b - 1]);
+            box_grow(&acc, &bin_box[b - 1]);
             n += bin_count[b - 1];
             if (n == 0 || right_count[b] == 0)
                 continue;

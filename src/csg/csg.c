@@ -537,7 +537,8 @@ static const span_list no_spans = {NULL, 0};
 
 static span_list eval(eval_ctx *c, uint32_t id, double lo, double hi, eval_mode mode);
 
-static span_list eval_leaf(eval_ctx *c, const csg_node *n)
+static span_list eval_leaf(eval_ctx *c, const csg_node *n, double lo, double hi,
+                           eval_mode mode)
 {
     const csg_leaf *l = &c->tree->leaves[n->leaf];
     uint32_t cap = prim_max_spans(&l->prim);
@@ -549,7 +550,8 @@ static span_list eval_leaf(eval_ctx *c, const csg_node *n)
     vec3 o = affine_point(&l->to_local, c->o);
     vec3 d = affine_vector(&l->to_local, c->d);
     c->counters->prim_tests++;
-    r.n = prim_spans(&l->prim, n->leaf, o, d, r.v, cap);
+    r.n = prim_spans_range(&l->prim, n->leaf, o, d, lo, hi, c->eps, mode != EVAL_ALL, r.v,
+                           cap);
     r.n = span_regularize(r.v, r.n, c->eps);
     return r;
 }
@@ -696,10 +698,135 @@ static int visit_cut(eval_ctx *c, void *state, uint32_t id, double *lo, double *
     return 1;
 }
 
+/* The query recursion goes as deep as the tree (10000 levels on a render
+ * thread's stack), so the rarer paths below stay out of the frames of
+ * eval and eval_cut: the compiler would otherwise inline them there and
+ * every level would pay for their locals. */
+#if defined(__GNUC__)
+#define COLD_PATH __attribute__((noinline))
+#define INLINE_PATH inline __attribute__((always_inline))
+#else
+#define COLD_PATH
+#define INLINE_PATH inline
+#endif
+
+/* A difference of a few subtrahends from a wide union (one with a BVH)
+ * evaluates its subtrahends first: where they lie, the union's operands
+ * need not be visited at all. A ray through a cut-away corner of a block
+ * of n^3 spheres otherwise walks every sphere in the corner. */
+static int cuts_first(const eval_ctx *c, const csg_node *n)
+{
+    if (n->op != CSG_DIFFERENCE || n->bvh != CSG_NO_BVH || n->child_count > 5)
+        return 0;
+    const csg_node *a = &c->tree->nodes[c->tree->child_ids[n->first_child]];
+    return a->op == CSG_UNION && a->bvh != CSG_NO_BVH;
+}
+
+/* The union of n's subtrahends within [lo, hi], clipped to where the first
+ * operand's box lies along the ray. */
+COLD_PATH static span_list subtrahends(eval_ctx *c, const csg_node *n, double lo,
+                                       double hi)
+{
+    const uint32_t *ids = &c->tree->child_ids[n->first_child];
+    double a0 = lo - c->eps, a1 = hi + c->eps;
+    if (!bbox_ray(&c->tree->nodes[ids[0]].bounds, c->o, c->inv_d, &a0, &a1))
+        return no_spans;
+    lo = fmax(lo, a0);
+    hi = fmin(hi, a1);
+    arena_mark start = arena_save(c->scratch);
+    span_list cut = no_spans;
+    for (uint32_t k = 1; k < n->child_count && !c->oom; k++)
+        cut = keep(c, start,
+                   combine(c, SPAN_UNION, cut, eval(c, ids[k], lo, hi, EVAL_ALL)));
+    return c->oom ? no_spans : cut;
+}
+
+/* The next free stretch of [lo, hi] outside the spans of cut (sorted,
+ * disjoint), from stretch *k on: 1 and its ends, or 0 when there is none.
+ * Stretches of no length are skipped, except for a range of no length (a
+ * membership query at one point). */
+static int free_stretch(span_list cut, double lo, double hi, uint32_t *k, double *f0,
+                        double *f1)
+{
+    while (*k <= cut.n) {
+        double a = *k == 0 ? lo : fmax(lo, cut.v[*k - 1].out.t);
+        double b = *k == cut.n ? hi : fmin(hi, cut.v[*k].in.t);
+        (*k)++;
+        if (a < b || (a == b && lo == hi)) {
+            *f0 = a;
+            *f1 = b;
+            return 1;
+        }
+    }
+    return 0;
+}
+
+/* The part of s within [a, b], in new scratch memory when an end moves; a
+ * moved end refers to no surface (it lies inside a subtrahend). */
+static span_list clip_list(eval_ctx *c, span_list s, double a, double b)
+{
+    uint32_t first = 0, last = s.n;
+    while (first < s.n && s.v[first].out.t <= a)
+        first++;
+    while (last > first && s.v[last - 1].in.t >= b)
+        last--;
+    if (first == last)
+        return no_spans;
+    span_list out = {s.v + first, last - first};
+    if (out.v[0].in.t >= a && out.v[out.n - 1].out.t <= b)
+        return out;
+    span *v = arena_alloc(c->scratch, (size_t)out.n * sizeof(span));
+    if (!v) {
+        c->oom = 1;
+        return no_spans;
+    }
+    memcpy(v, out.v, (size_t)out.n * sizeof(span));
+    span_end none = {0, SPAN_NO_LEAF, 0, 0};
+    if (v[0].in.t < a) {
+        v[0].in = none;
+        v[0].in.t = a;
+    }
+    if (v[out.n - 1].out.t > b) {
+        v[out.n - 1].out = none;
+        v[out.n - 1].out.t = b;
+    }
+    out.v = v;
+    return out;
+}
+
+/* Difference n over [lo, hi] by cuts_first: the subtrahends in full, the
+ * first operand only on the stretches they leave free (its spans there are
+ * those of the whole; inside the subtrahends nothing of it survives). */
+COLD_PATH static span_list eval_cut_free(eval_ctx *c, const csg_node *n, double lo,
+                                         double hi)
+{
+    arena_mark start = arena_save(c->scratch);
+    span_list cut = subtrahends(c, n, lo, hi);
+    uint32_t first = c->tree->child_ids[n->first_child];
+    span_list acc = no_spans;
+    uint32_t k = 0;
+    double f0, f1;
+    while (!c->oom && free_stretch(cut, lo, hi, &k, &f0, &f1)) {
+        /* Evaluated over its stretch only, the first operand may show solid
+         * beyond it that is not there (its own subtrahends were not asked
+         * there). Inside the cut that is harmless, but a later stretch
+         * would take it up: cut each result half an eps into the cut. */
+        double a = f0 > lo ? f0 - 0.5 * c->eps : -INFINITY;
+        double b = f1 < hi ? f1 + 0.5 * c->eps : INFINITY;
+        span_list part = clip_list(c, eval(c, first, f0, f1, EVAL_ALL), a, b);
+        acc = combine(c, SPAN_UNION, acc, part);
+    }
+    if (c->oom)
+        return no_spans;
+    return keep(c, start, combine(c, SPAN_DIFFERENCE, acc, cut));
+}
+
 /* Intersection or difference n over [lo, hi]: the first operand in full,
  * the others only where it lies. */
 static span_list eval_cut(eval_ctx *c, const csg_node *n, double lo, double hi)
 {
+    if (cuts_first(c, n))
+        return eval_cut_free(c, n, lo, hi);
     arena_mark start = arena_save(c->scratch);
     cut_state s = {eval(c, c->tree->child_ids[n->first_child], lo, hi, EVAL_ALL),
                    n->op == CSG_INTERSECTION ? SPAN_INTERSECTION : SPAN_DIFFERENCE,
@@ -752,8 +879,14 @@ static span_list from_entry(eval_ctx *c, span_list r, const span_end *entry)
  * its own first crossing, which a union finds cheaply) begins: before that
  * the result is empty. With a BVH below, the cost follows the solids near
  * the first hit instead of every solid along the ray. */
-static span_list eval_cut_first(eval_ctx *c, const csg_node *n, double lo, double hi)
+static span_list eval_cut_first_free(eval_ctx *c, const csg_node *n, double lo,
+                                     double hi);
+
+static INLINE_PATH span_list eval_cut_first(eval_ctx *c, const csg_node *n, double lo,
+                                            double hi, int plain)
 {
+    if (!plain && cuts_first(c, n))
+        return eval_cut_first_free(c, n, lo, hi);
     span_list a = eval(c, c->tree->child_ids[n->first_child], lo, hi, EVAL_FIRST);
     const span *f = first_after(a, lo);
     if (c->oom || !f)
@@ -773,6 +906,27 @@ static span_list eval_cut_first(eval_ctx *c, const csg_node *n, double lo, doubl
     }
 }
 
+/* eval_cut_first for a difference by cuts_first: every crossing of the
+ * result lies on a free stretch (or at its ends), so the first stretch
+ * that holds one holds the first. */
+COLD_PATH static span_list eval_cut_first_free(eval_ctx *c, const csg_node *n, double lo,
+                                               double hi)
+{
+    arena_mark start = arena_save(c->scratch);
+    span_list cut = subtrahends(c, n, lo, hi);
+    uint32_t k = 0;
+    double f0, f1;
+    while (!c->oom && free_stretch(cut, lo, hi, &k, &f0, &f1)) {
+        span_list r = eval_cut_first(c, n, f0, f1, 1);
+        if (c->oom)
+            return no_spans;
+        if (first_crossing(r, f0) <= f1)
+            return keep(c, start, r);
+    }
+    arena_restore(c->scratch, start);
+    return no_spans;
+}
+
 /* The spans of node id that matter within [lo, hi]; spans may extend beyond
  * that range (primitives report whole spans), callers clip. */
 static span_list eval(eval_ctx *c, uint32_t id, double lo, double hi, eval_mode mode)
@@ -783,7 +937,7 @@ static span_list eval(eval_ctx *c, uint32_t id, double lo, double hi, eval_mode 
     if (!bbox_ray(&n->bounds, c->o, c->inv_d, &t0, &t1))
         return no_spans;
     if (n->op == CSG_LEAF)
-        return eval_leaf(c, n);
+        return eval_leaf(c, n, lo, hi, mode);
     if (n->op == CSG_UNION) {
         union_state u = {no_spans, mode, 0, arena_save(c->scratch)};
         for_operands(c, n, 0, lo, hi, visit_union, &u);
@@ -799,7 +953,7 @@ static span_list eval(eval_ctx *c, uint32_t id, double lo, double hi, eval_mode 
     if (mode != EVAL_FIRST)
         return eval_cut(c, n, lo, hi);
     arena_mark start = arena_save(c->scratch);
-    return keep(c, start, eval_cut_first(c, n, lo, fmin(hi, t1)));
+    return keep(c, start, eval_cut_first(c, n, lo, fmin(hi, t1), 0));
 }
 
 /* Two parts, in length units. The resolution: 1e-9 of the solid's extent,

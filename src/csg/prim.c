@@ -387,6 +387,15 @@ uint32_t prim_spans(const prim *p, uint32_t leaf, vec3 o, vec3 d, span *out, uin
     return 0;
 }
 
+uint32_t prim_spans_range(const prim *p, uint32_t leaf, vec3 o, vec3 d, double lo,
+                          double hi, double eps, int first, span *out, uint32_t cap)
+{
+    if (p->kind != PRIM_MESH || !(v3_dot(d, d) > 0) || !v3_is_finite(o) ||
+        !v3_is_finite(d))
+        return prim_spans(p, leaf, o, d, out, cap);
+    return prim_mesh_spans_range(p, leaf, o, d, lo, hi, eps, first, out, cap);
+}
+
 vec3 prim_normal(const prim *p, vec3 q, uint16_t part)
 {
     switch (p->kind) {

@@ -120,6 +120,17 @@ bbox prim_bounds(const prim *p);
 uint32_t prim_spans(const prim *p, uint32_t leaf, vec3 o, vec3 d, span *out,
                     uint32_t cap);
 
+/* The spans that matter to a query within [lo, hi] whose lists are
+ * regularised with eps (span.h): after span_regularize, the result agrees
+ * with prim_spans' on [lo, hi], and a span that meets [lo, hi] keeps both
+ * its ends. With first set, only up to the first crossing after lo: the
+ * list ends with the first span that reaches past lo, whose in end is exact
+ * when it lies at or after lo and whose out end is exact when its in end
+ * lies before lo. Meshes walk only the part of their hierarchy this needs;
+ * every other kind returns prim_spans' whole list. */
+uint32_t prim_spans_range(const prim *p, uint32_t leaf, vec3 o, vec3 d, double lo,
+                          double hi, double eps, int first, span *out, uint32_t cap);
+
 vec3 prim_normal(const prim *p, vec3 local_point, uint16_t part);
 
 int prim_inside(const prim *p, vec3 local_point);

@@ -44,11 +44,32 @@
  * q + t (1, sqrt 2, sqrt 3) / 2 with t > 0 (exits minus entries); a
  * crossing at t = 0 puts q on the surface, which is inside (closed).
  *
- * Hierarchy: median splits of the triangle centroids along the widest axis
- * down to 4 triangles a leaf, so its depth is at most log2(n) + 1 < 64. A
- * box test that rounds the wrong way must not drop a triangle the ray
- * touches, so every box is padded by 1e-9 of the mesh's extent, far more
- * than the rounding of the slab test and far less than anything visible.
+ * Hierarchy: a binary tree over the triangles, built by binned surface
+ * area heuristic (16 bins along the widest axis of the centroids, the plane
+ * that minimises area(left) count(left) + area(right) count(right)) down to
+ * 4 triangles a leaf; where no plane separates the centroids, or past depth
+ * 48, the median splits instead, so the depth stays below 48 + log2(n).
+ * Each node holds both children's boxes (one cache line), as floats
+ * relative to the centre of the mesh. A box test that rounds the wrong way
+ * must not drop a triangle the ray touches, so every box is rounded outward
+ * to float and padded by 1e-9 of the mesh's extent, and the ray parameters
+ * of the slab test are widened by 2^-40 of their size: together far more
+ * than the rounding of the coordinates and of the slab test, and far less
+ * than anything visible. Which triangles are tested never changes a
+ * crossing: each one is exact on its own.
+ *
+ * Walk: near child first, over the part of the line a query needs. The
+ * computed t of a crossing is an average of the corners' z, so it lies in
+ * the box's slab along the ray's axis kz; a node whose kz slab lies outside
+ * the range holds no crossing the range wants. With the mesh entirely
+ * after the range start, the line before it holds no crossing and the walk
+ * starts there; otherwise it starts at the line's beginning, since the
+ * winding at the range start needs every crossing before it. A query that
+ * wants only the first crossing after lo also stops at the first crossing
+ * found past lo plus a few eps, which it must see to tell a span from a
+ * sliver (regularisation), and falls back to the whole range when that is
+ * not enough to decide; one that wants every span up to hi goes on past hi
+ * the same way until the span that reaches over hi has closed.
  *
  * Normals: a span end's part is the triangle's index modulo 65536 (parts
  * are 16 bits); a mesh with more triangles is asked which of the triangles
@@ -62,53 +83,118 @@
 
 #include "csg/csg.h"
 
-enum { LEAF_SIZE = 4, STACK = 64 };
+enum { LEAF_SIZE = 4, BINS = 16, SAH_DEPTH = 48, STACK = 128 };
+
+/* Relative widening of the slab test's ray parameters (see the header). */
+#define SLAB_WIDEN 0x1p-40
+
+static inline double min2(double a, double b)
+{
+    return a < b ? a : b;
+}
+
+static inline double max2(double a, double b)
+{
+    return a > b ? a : b;
+}
 
 /* ---- building ---- */
 
+/* A triangle's box and centroid, computed once. */
+typedef struct item {
+    double lo[3], hi[3], c[3];
+} item;
+
 typedef struct builder_state {
-    const vec3 *points;
-    const uint32_t *tris;
-    uint32_t *order; /* triangle ids, permuted into leaf order */
-    double *key;     /* scratch: centroid coordinate per position */
-    vec3 *centre;    /* per triangle id */
+    const item *items; /* per triangle id */
+    uint32_t *order;   /* triangle ids, permuted into leaf order */
     prim_mesh_node *nodes;
     uint32_t node_count;
+    vec3 origin;
     double pad;
 } builder_state;
 
-static bbox tri_box(const builder_state *s, uint32_t id)
+/* A built subtree as its parent sees it. */
+typedef struct child_ref {
+    uint32_t index, count; /* count > 0: a leaf of triangles index .. */
+    double lo[3], hi[3];
+} child_ref;
+
+static float round_down(double x)
 {
-    bbox b = bbox_empty();
-    for (int k = 0; k < 3; k++)
-        b = bbox_add_point(b, s->points[s->tris[3 * id + k]]);
-    return b;
+    float f = (float)x;
+    if ((double)f > x)
+        f = nextafterf(f, -INFINITY);
+    return f;
 }
 
-static double axis_of(vec3 v, int axis)
+static float round_up(double x)
 {
-    return axis == 0 ? v.x : axis == 1 ? v.y : v.z;
+    float f = (float)x;
+    if ((double)f < x)
+        f = nextafterf(f, INFINITY);
+    return f;
 }
 
-/* Moves the k-th smallest key of order[lo .. hi) to position k, smaller
- * ones before it (Hoare's selection, iterative). */
-static void select_kth(builder_state *s, uint32_t lo, uint32_t hi, uint32_t k)
+static void set_child(const builder_state *s, prim_mesh_node *n, int k,
+                      const child_ref *r)
 {
+    n->child[k] = r->index;
+    n->count[k] = r->count;
+    const double *o = &s->origin.x;
+    for (int a = 0; a < 3; a++) {
+        n->box[0][a][k] = round_down(r->lo[a] - o[a] - s->pad);
+        n->box[1][a][k] = round_up(r->hi[a] - o[a] + s->pad);
+    }
+}
+
+static void set_empty(prim_mesh_node *n, int k)
+{
+    n->child[k] = 0;
+    n->count[k] = 0;
+    for (int a = 0; a < 3; a++) {
+        n->box[0][a][k] = INFINITY;
+        n->box[1][a][k] = -INFINITY;
+    }
+}
+
+static double half_area(const double lo[3], const double hi[3])
+{
+    double x = hi[0] - lo[0], y = hi[1] - lo[1], z = hi[2] - lo[2];
+    return x * y + y * z + z * x;
+}
+
+static void grow(double lo[3], double hi[3], const double plo[3], const double phi[3])
+{
+    for (int a = 0; a < 3; a++) {
+        lo[a] = min2(lo[a], plo[a]);
+        hi[a] = max2(hi[a], phi[a]);
+    }
+}
+
+static int bin_of(double c, double lo, double scale)
+{
+    int b = (int)((c - lo) * scale);
+    return b < 0 ? 0 : b >= BINS ? BINS - 1 : b;
+}
+
+/* Moves the k-th smallest centroid (along axis) of order[lo .. hi) to
+ * position k, smaller ones before it (Hoare's selection, iterative). */
+static void select_kth(builder_state *s, uint32_t lo, uint32_t hi, uint32_t k, int axis)
+{
+    uint32_t *order = s->order;
     while (hi - lo > 1) {
-        double pivot = s->key[lo + (hi - lo) / 2];
+        double pivot = s->items[order[lo + (hi - lo) / 2]].c[axis];
         uint32_t i = lo, j = hi - 1;
         while (i <= j) {
-            while (s->key[i] < pivot)
+            while (s->items[order[i]].c[axis] < pivot)
                 i++;
-            while (s->key[j] > pivot)
+            while (s->items[order[j]].c[axis] > pivot)
                 j--;
             if (i <= j) {
-                double tk = s->key[i];
-                s->key[i] = s->key[j];
-                s->key[j] = tk;
-                uint32_t to = s->order[i];
-                s->order[i] = s->order[j];
-                s->order[j] = to;
+                uint32_t t = order[i];
+                order[i] = order[j];
+                order[j] = t;
                 i++;
                 if (j == 0)
                     break;
@@ -124,37 +210,111 @@ static void select_kth(builder_state *s, uint32_t lo, uint32_t hi, uint32_t k)
     }
 }
 
-/* Builds the subtree over order[lo .. hi); depth is bounded by the median
- * split (log2 of the count). Returns its node index. */
-static uint32_t build_node(builder_state *s, uint32_t lo, uint32_t hi)
+/* The split position of order[lo .. hi) (more than LEAF_SIZE triangles)
+ * by binned SAH along axis, after which the items are partitioned; 0 when
+ * no plane separates them. */
+static uint32_t sah_split(builder_state *s, uint32_t lo, uint32_t hi, int axis,
+                          double clo, double width)
 {
-    uint32_t index = s->node_count++;
-    prim_mesh_node *n = &s->nodes[index];
-    bbox box = bbox_empty(), centres = bbox_empty();
+    uint32_t count[BINS] = {0};
+    double blo[BINS][3], bhi[BINS][3];
+    for (int b = 0; b < BINS; b++)
+        for (int a = 0; a < 3; a++) {
+            blo[b][a] = INFINITY;
+            bhi[b][a] = -INFINITY;
+        }
+    double scale = BINS / width;
     for (uint32_t i = lo; i < hi; i++) {
-        bbox t = tri_box(s, s->order[i]);
-        box = bbox_add_point(bbox_add_point(box, t.lo), t.hi);
-        centres = bbox_add_point(centres, s->centre[s->order[i]]);
+        const item *it = &s->items[s->order[i]];
+        int b = bin_of(it->c[axis], clo, scale);
+        count[b]++;
+        grow(blo[b], bhi[b], it->lo, it->hi);
     }
-    vec3 pad = v3(s->pad, s->pad, s->pad);
-    n->box.lo = v3_sub(box.lo, pad);
-    n->box.hi = v3_add(box.hi, pad);
+    double right_area[BINS];
+    uint32_t right_count[BINS];
+    double alo[3] = {INFINITY, INFINITY, INFINITY},
+           ahi[3] = {-INFINITY, -INFINITY, -INFINITY};
+    uint32_t n = 0;
+    for (int b = BINS - 1; b > 0; b--) {
+        grow(alo, ahi, blo[b], bhi[b]);
+        n += count[b];
+        right_area[b] = n ? half_area(alo, ahi) : 0;
+        right_count[b] = n;
+    }
+    double best = INFINITY;
+    int best_bin = 0;
+    for (int a = 0; a < 3; a++) {
+        alo[a] = INFINITY;
+        ahi[a] = -INFINITY;
+    }
+    n = 0;
+    for (int b = 1; b < BINS; b++) {
+        grow(alo, ahi, blo[b - 1], bhi[b - 1]);
+        n += count[b - 1];
+        if (n == 0 || right_count[b] == 0)
+            continue;
+        double cost = half_area(alo, ahi) * n + right_area[b] * right_count[b];
+        if (cost < best) {
+            best = cost;
+            best_bin = b;
+        }
+    }
+    if (best_bin == 0)
+        return 0;
+    uint32_t i = lo, j = hi;
+    while (i < j) {
+        if (bin_of(s->items[s->order[i]].c[axis], clo, scale) < best_bin) {
+            i++;
+        } else {
+            j--;
+            uint32_t t = s->order[i];
+            s->order[i] = s->order[j];
+            s->order[j] = t;
+        }
+    }
+    return i > lo && i < hi ? i : 0;
+}
+
+/* Builds the subtree over order[lo .. hi) and returns it; inner nodes are
+ * appended to s->nodes (at most one per split, so fewer than the
+ * triangles). */
+static child_ref build_subtree(builder_state *s, uint32_t lo, uint32_t hi, int depth)
+{
+    child_ref r;
+    double clo[3] = {INFINITY, INFINITY, INFINITY},
+           chi[3] = {-INFINITY, -INFINITY, -INFINITY};
+    for (int a = 0; a < 3; a++) {
+        r.lo[a] = INFINITY;
+        r.hi[a] = -INFINITY;
+    }
+    for (uint32_t i = lo; i < hi; i++) {
+        const item *it = &s->items[s->order[i]];
+        grow(r.lo, r.hi, it->lo, it->hi);
+        grow(clo, chi, it->c, it->c);
+    }
     if (hi - lo <= LEAF_SIZE) {
-        n->start = lo;
-        n->count = hi - lo;
-        return index;
+        r.index = lo;
+        r.count = hi - lo;
+        return r;
     }
-    vec3 ext = v3_sub(centres.hi, centres.lo);
-    int axis = ext.x >= ext.y && ext.x >= ext.z ? 0 : ext.y >= ext.z ? 1 : 2;
-    for (uint32_t i = lo; i < hi; i++)
-        s->key[i] = axis_of(s->centre[s->order[i]], axis);
-    uint32_t mid = lo + (hi - lo) / 2;
-    select_kth(s, lo, hi, mid);
-    n->count = 0;
-    build_node(s, lo, mid);
-    uint32_t right = build_node(s, mid, hi);
-    s->nodes[index].start = right;
-    return index;
+    double ex = chi[0] - clo[0], ey = chi[1] - clo[1], ez = chi[2] - clo[2];
+    int axis = ex >= ey && ex >= ez ? 0 : ey >= ez ? 1 : 2;
+    double width = axis == 0 ? ex : axis == 1 ? ey : ez;
+    uint32_t mid = 0;
+    if (depth < SAH_DEPTH && width > 0)
+        mid = sah_split(s, lo, hi, axis, clo[axis], width);
+    if (mid == 0) {
+        mid = lo + (hi - lo) / 2;
+        select_kth(s, lo, hi, mid, axis);
+    }
+    uint32_t index = s->node_count++;
+    child_ref left = build_subtree(s, lo, mid, depth + 1);
+    child_ref right = build_subtree(s, mid, hi, depth + 1);
+    set_child(s, &s->nodes[index], 0, &left);
+    set_child(s, &s->nodes[index], 1, &right);
+    r.index = index;
+    r.count = 0;
+    return r;
 }
 
 const prim_mesh *prim_mesh_create(struct csg_builder *b, const vec3 *points,
@@ -162,13 +322,12 @@ const prim_mesh *prim_mesh_create(struct csg_builder *b, const vec3 *points,
 {
     builder_state s;
     memset(&s, 0, sizeof s);
-    s.points = points;
-    s.tris = tris;
     const prim_mesh *result = NULL;
-    s.order = malloc((size_t)(tri_count ? tri_count : 1) * sizeof *s.order);
-    s.key = malloc((size_t)(tri_count ? tri_count : 1) * sizeof *s.key);
-    s.centre = malloc((size_t)(tri_count ? tri_count : 1) * sizeof *s.centre);
-    if (!s.order || !s.key || !s.centre)
+    size_t slots = tri_count ? tri_count : 1;
+    item *items = malloc(slots * sizeof *items);
+    s.items = items;
+    s.order = malloc(slots * sizeof *s.order);
+    if (!items || !s.order)
         goto done;
     bbox bounds = bbox_empty();
     uint32_t kept = 0;
@@ -179,7 +338,12 @@ const prim_mesh *prim_mesh_create(struct csg_builder *b, const vec3 *points,
         if (!(v3_dot(n, n) > 0))
             continue; /* no area: no ray crosses it */
         s.order[kept++] = i;
-        s.centre[i] = v3_scale(v3_add(v3_add(a, bb), c), 1.0 / 3);
+        vec3 cen = v3_scale(v3_add(v3_add(a, bb), c), 1.0 / 3);
+        for (int k = 0; k < 3; k++) {
+            items[i].lo[k] = min2(min2(v3_get(a, k), v3_get(bb, k)), v3_get(c, k));
+            items[i].hi[k] = max2(max2(v3_get(a, k), v3_get(bb, k)), v3_get(c, k));
+            items[i].c[k] = v3_get(cen, k);
+        }
         bounds = bbox_add_point(bbox_add_point(bbox_add_point(bounds, a), bb), c);
     }
     if (kept == 0)
@@ -187,18 +351,28 @@ const prim_mesh *prim_mesh_create(struct csg_builder *b, const vec3 *points,
     vec3 ext = v3_sub(bounds.hi, bounds.lo);
     s.pad = 1e-9 * fmax(fmax(ext.x, ext.y), fmax(ext.z, v3_max_abs(bounds.lo))) + 1e-300;
     s.pad = fmax(s.pad, 1e-9 * v3_max_abs(bounds.hi));
-    /* A binary tree over kept leaves of at least one triangle has fewer
-     * than 2 kept nodes. */
-    s.nodes = malloc((size_t)2 * kept * sizeof *s.nodes);
+    s.origin = bbox_center(&bounds);
+    /* A split makes one inner node and never an empty side, so a tree over
+     * kept triangles has fewer than kept inner nodes; a single leaf still
+     * needs node 0. */
+    s.nodes = malloc(slots * sizeof *s.nodes);
     if (!s.nodes)
         goto done;
-    build_node(&s, 0, kept);
+    child_ref root = build_subtree(&s, 0, kept, 0);
+    if (root.count > 0) {
+        s.node_count = 1;
+        set_child(&s, &s.nodes[0], 0, &root);
+        set_empty(&s.nodes[0], 1);
+    }
     prim_mesh *m = csg_builder_alloc(b, sizeof *m);
     vec3 *v = csg_builder_alloc(b, (size_t)3 * kept * sizeof *v);
     vec3 *nrm = csg_builder_alloc(b, (size_t)kept * sizeof *nrm);
-    prim_mesh_node *nodes = csg_builder_alloc(b, (size_t)s.node_count * sizeof *nodes);
-    if (!m || !v || !nrm || !nodes)
+    /* one cache line a node: align the array to 64 bytes */
+    unsigned char *raw =
+        csg_builder_alloc(b, (size_t)s.node_count * sizeof(prim_mesh_node) + 63);
+    if (!m || !v || !nrm || !raw)
         goto done;
+    prim_mesh_node *nodes = (prim_mesh_node *)(raw + ((64 - (uintptr_t)raw % 64) % 64));
     for (uint32_t i = 0; i < kept; i++) {
         const uint32_t *t = &tris[3 * s.order[i]];
         for (int k = 0; k < 3; k++)
@@ -212,11 +386,11 @@ const prim_mesh *prim_mesh_create(struct csg_builder *b, const vec3 *points,
     m->tri_count = kept;
     m->node_count = s.node_count;
     m->bounds = bounds;
+    m->origin = s.origin;
     result = m;
 done:
+    free(items);
     free(s.order);
-    free(s.key);
-    free(s.centre);
     free(s.nodes);
     return result;
 }
@@ -270,12 +444,12 @@ static double diff_of_products(double a, double b, double c, double d)
     return f + e;
 }
 
-/* The edge function e(p, q) with its zero resolved: > 0 or < 0 as the
- * origin, moved by eps (1, eta), lies left or right of p -> q. Returns +1,
- * -1, or 0 for a degenerate edge (p = q). */
-static int edge_sign(double px, double py, double qx, double qy)
+/* The sign of an edge function e = e(p, q) (computed exactly signed by
+ * diff_of_products) with its zero resolved: > 0 or < 0 as the origin,
+ * moved by eps (1, eta), lies left or right of p -> q. Returns +1, -1, or
+ * 0 for a degenerate edge (p = q). */
+static inline int edge_sign(double e, double px, double py, double qx, double qy)
 {
-    double e = diff_of_products(px, qy, py, qx);
     if (e > 0)
         return 1;
     if (e < 0)
@@ -287,25 +461,42 @@ static int edge_sign(double px, double py, double qx, double qy)
     return 0;
 }
 
+/* The sign of a b - c d where the rounded products decide it, else 0: the
+ * error of the rounded difference is below 2^-50 of |a b| + |c d| (plus
+ * the underflow of the products), so a value beyond that has the exact
+ * sign. It lets most missed triangles go without the exact evaluation. */
+static inline int quick_sign(double a, double b, double c, double d)
+{
+    double ab = a * b, cd = c * d, e = ab - cd;
+    double bound = 0x1p-50 * (fabs(ab) + fabs(cd)) + 0x1p-1000;
+    return e > bound ? 1 : e < -bound ? -1 : 0;
+}
+
 /* Crosses triangle i; returns 1 and fills *c when the line meets it. */
 static int cross_triangle(const prim_mesh *m, const ray_frame *f, uint32_t i, crossing *c)
 {
     double x[3], y[3], z[3];
     for (int k = 0; k < 3; k++) {
-        vec3 p = v3_sub(m->v[3 * i + k], f->o);
-        double pz = comp(p, f->kz);
-        x[k] = comp(p, f->kx) - f->sx * pz;
-        y[k] = comp(p, f->ky) - f->sy * pz;
+        const vec3 *q = &m->v[3 * i + k];
+        double p[3] = {q->x - f->o.x, q->y - f->o.y, q->z - f->o.z};
+        double pz = p[f->kz];
+        x[k] = p[f->kx] - f->sx * pz;
+        y[k] = p[f->ky] - f->sy * pz;
         z[k] = f->sz * pz;
     }
-    int su = edge_sign(x[1], y[1], x[2], y[2]); /* BC */
-    int sv = edge_sign(x[2], y[2], x[0], y[0]); /* CA */
-    int sw = edge_sign(x[0], y[0], x[1], y[1]); /* AB */
-    if (su == 0 || sv == 0 || sw == 0 || su != sv || sv != sw)
-        return 0;
+    int qu = quick_sign(x[1], y[2], y[1], x[2]);
+    int qv = quick_sign(x[2], y[0], y[2], x[0]);
+    int qw = quick_sign(x[0], y[1], y[0], x[1]);
+    if ((qu > 0 || qv > 0 || qw > 0) && (qu < 0 || qv < 0 || qw < 0))
+        return 0; /* two edges certainly disagree */
     double u = diff_of_products(x[1], y[2], y[1], x[2]);
     double v = diff_of_products(x[2], y[0], y[2], x[0]);
     double w = diff_of_products(x[0], y[1], y[0], x[1]);
+    int su = edge_sign(u, x[1], y[1], x[2], y[2]); /* BC */
+    int sv = edge_sign(v, x[2], y[2], x[0], y[0]); /* CA */
+    int sw = edge_sign(w, x[0], y[0], x[1], y[1]); /* AB */
+    if (su == 0 || sv == 0 || sw == 0 || su != sv || sv != sw)
+        return 0;
     double det = u + v + w;
     if (det == 0 || (det > 0) != (su > 0))
         return 0; /* no area in projection: a ray in the triangle's plane */
@@ -316,25 +507,6 @@ static int cross_triangle(const prim_mesh *m, const ray_frame *f, uint32_t i, cr
     c->tri = i;
     c->exit = det > 0;
     return 1;
-}
-
-/* Where the line meets the node's box: the slab test over the whole line;
- * an axis the ray does not move along is decided by the origin. */
-static int hits_box(const bbox *b, vec3 o, vec3 d)
-{
-    double t0 = -INFINITY, t1 = INFINITY;
-    for (int k = 0; k < 3; k++) {
-        double ok = comp(o, k), dk = comp(d, k), lo = comp(b->lo, k), hi = comp(b->hi, k);
-        if (dk == 0) {
-            if (ok < lo || ok > hi)
-                return 0;
-            continue;
-        }
-        double ta = (lo - ok) / dk, tb = (hi - ok) / dk;
-        t0 = fmax(t0, fmin(ta, tb));
-        t1 = fmin(t1, fmax(ta, tb));
-    }
-    return t0 <= t1;
 }
 
 typedef struct crossings {
@@ -348,6 +520,28 @@ typedef struct crossings {
     int on_surface; /* count_only: a crossing at t = 0 */
 } crossings;
 
+static void crossings_init(crossings *cs, int count_only)
+{
+    cs->n = 0;
+    cs->overflow = 0;
+    cs->any = 0;
+    cs->count_only = count_only;
+    cs->wind = 0;
+    cs->on_surface = 0;
+}
+
+/* 1 when a sorts before b: by t, at equal t exits first (so touching
+ * pieces fuse and grazes leave no gap), then by triangle, so the order
+ * never depends on the order of the walk. */
+static int before(const crossing *a, const crossing *b)
+{
+    if (a->t != b->t)
+        return a->t < b->t;
+    if (a->exit != b->exit)
+        return a->exit > b->exit;
+    return a->tri < b->tri;
+}
+
 static void keep(crossings *cs, const crossing *c)
 {
     if (cs->count_only) {
@@ -357,20 +551,17 @@ static void keep(crossings *cs, const crossing *c)
             cs->wind += c->exit ? 1 : -1;
         return;
     }
-    if (!cs->any || c->t > cs->last.t)
+    if (!cs->any || before(&cs->last, c))
         cs->last = *c;
     cs->any = 1;
     if (cs->n == PRIM_MESH_MAX_CROSSINGS) {
         cs->overflow = 1;
-        if (c->t >= cs->v[cs->n - 1].t)
+        if (!before(c, &cs->v[cs->n - 1]))
             return;
         cs->n--; /* the largest kept one makes way */
     }
-    /* insertion in t order; at equal t, exits first, so touching pieces
-     * fuse and grazes leave no gap */
     uint32_t i = cs->n;
-    while (i > 0 && (cs->v[i - 1].t > c->t ||
-                     (cs->v[i - 1].t == c->t && cs->v[i - 1].exit < c->exit))) {
+    while (i > 0 && before(c, &cs->v[i - 1])) {
         cs->v[i] = cs->v[i - 1];
         i--;
     }
@@ -378,27 +569,157 @@ static void keep(crossings *cs, const crossing *c)
     cs->n++;
 }
 
-static void collect(const prim_mesh *m, vec3 o, vec3 d, crossings *cs)
+/* The ray as the slab tests see it: its origin relative to the mesh's
+ * origin, the reciprocals of its direction (a zero component gets a large
+ * finite one, so a plane through the origin gives 0, never NaN), and which
+ * corner of a box is met first on each axis. */
+typedef struct slab_ray {
+    double o[3], inv[3];
+    int near[3]; /* 1 when the hi plane comes first (direction < 0) */
+    int kz;
+} slab_ray;
+
+static slab_ray slab_ray_of(const prim_mesh *m, vec3 o, vec3 d, int kz)
 {
-    ray_frame f = frame_of(o, d);
-    uint32_t stack[STACK], top = 0;
-    stack[top++] = 0;
-    while (top > 0) {
-        const prim_mesh_node *n = &m->nodes[stack[--top]];
-        if (!hits_box(&n->box, o, d))
-            continue;
-        if (n->count > 0) {
-            for (uint32_t i = n->start; i < n->start + n->count; i++) {
-                crossing c;
-                if (cross_triangle(m, &f, i, &c))
-                    keep(cs, &c);
-            }
-            continue;
+    slab_ray r;
+    const double *oo = &o.x, *dd = &d.x, *c = &m->origin.x;
+    for (int a = 0; a < 3; a++) {
+        r.o[a] = oo[a] - c[a];
+        double inv = 1.0 / dd[a];
+        r.inv[a] = isfinite(inv) ? inv : copysign(1e300, dd[a]);
+        r.near[a] = r.inv[a] < 0;
+    }
+    r.kz = kz;
+    return r;
+}
+
+/* Widens a slab parameter interval by SLAB_WIDEN of its ends' size. */
+static inline double widen_down(double t)
+{
+    return t - fabs(t) * SLAB_WIDEN;
+}
+
+static inline double widen_up(double t)
+{
+    return t + fabs(t) * SLAB_WIDEN;
+}
+
+/* Tests both children of node n: hit[k] is 1 when the line meets child
+ * k's box and the box's kz slab meets [lo, hi]; key[k] is where the line
+ * enters the box (the order of the walk), kz_near[k] where the kz slab
+ * begins (what a later, narrower range is checked against). The two
+ * children go side by side through the same operations, which compilers
+ * turn into two-lane vector code. */
+static inline void children_hit(const prim_mesh_node *n, const slab_ray *r, double lo,
+                                double hi, int hit[2], double key[2], double kz_near[2])
+{
+    double t0[2] = {-INFINITY, -INFINITY}, t1[2] = {INFINITY, INFINITY};
+    for (int a = 0; a < 3; a++) {
+        const float *near = n->box[r->near[a]][a], *far = n->box[1 - r->near[a]][a];
+        for (int k = 0; k < 2; k++) {
+            double tn = ((double)near[k] - r->o[a]) * r->inv[a];
+            double tf = ((double)far[k] - r->o[a]) * r->inv[a];
+            t0[k] = max2(t0[k], tn);
+            t1[k] = min2(t1[k], tf);
         }
-        if (top + 2 > STACK)
-            continue; /* cannot happen: depth < 64 */
-        stack[top++] = n->start;
-        stack[top++] = (uint32_t)(n - m->nodes) + 1;
+    }
+    int kz = r->kz;
+    const float *near = n->box[r->near[kz]][kz], *far = n->box[1 - r->near[kz]][kz];
+    for (int k = 0; k < 2; k++) {
+        double z0 = widen_down(((double)near[k] - r->o[kz]) * r->inv[kz]);
+        double z1 = widen_up(((double)far[k] - r->o[kz]) * r->inv[kz]);
+        double w0 = widen_down(t0[k]), w1 = widen_up(t1[k]);
+        key[k] = w0;
+        kz_near[k] = z0;
+        hit[k] = w0 <= w1 && z0 <= hi && z1 >= lo;
+    }
+}
+
+/* The same test for one child, for the mesh's whole box. */
+static int child_hit(const prim_mesh_node *n, int k, const slab_ray *r, double lo,
+                     double hi, double *key, double *kz_near)
+{
+    int hit[2];
+    double keys[2], near[2];
+    children_hit(n, r, lo, hi, hit, keys, near);
+    *key = keys[k];
+    *kz_near = near[k];
+    return hit[k];
+}
+
+/* A walk over the crossings in a range of the line. */
+typedef struct walk {
+    double lo, hi; /* the range; hi narrows when stop is set */
+    int lo_open;   /* crossings at t == lo are not wanted */
+    int stop;      /* narrow hi to the first crossing at or past pivot, plus reach */
+    double pivot, reach;
+} walk;
+
+static void take(walk *w, crossings *cs, const crossing *c)
+{
+    if (c->t < w->lo || (w->lo_open && c->t == w->lo) || c->t > w->hi)
+        return;
+    keep(cs, c);
+    if (w->stop && c->t >= w->pivot && c->t + w->reach < w->hi)
+        w->hi = c->t + w->reach;
+}
+
+typedef struct pending {
+    uint32_t index;
+    double kz_near;
+} pending;
+
+/* Adds to cs every crossing of the line with t in the walk's range (and,
+ * when it narrows, every crossing up to its final hi); near boxes first.
+ * The stack holds at most one node a level, and the depth is below
+ * SAH_DEPTH + 32. */
+static void gather(const prim_mesh *m, const ray_frame *f, const slab_ray *r, walk *w,
+                   crossings *cs)
+{
+    pending stack[STACK];
+    uint32_t top = 0;
+    const prim_mesh_node *n = &m->nodes[0];
+    for (;;) {
+        double key[2], kz_near[2];
+        int hit[2];
+        children_hit(n, r, w->lo, w->hi, hit, key, kz_near);
+        int near = hit[0] && hit[1] ? key[1] < key[0] : hit[1];
+        pending inner[2];
+        int inner_count = 0;
+        for (int j = 0; j < 2; j++) {
+            int k = j == 0 ? near : 1 - near;
+            if (!hit[k])
+                continue;
+            if (n->count[k] == 0) {
+                inner[inner_count].index = n->child[k];
+                inner[inner_count].kz_near = kz_near[k];
+                inner_count++;
+                continue;
+            }
+            if (kz_near[k] > w->hi)
+                continue; /* the walk narrowed past it */
+            for (uint32_t i = n->child[k]; i < n->child[k] + n->count[k]; i++) {
+                crossing c;
+                if (cross_triangle(m, f, i, &c))
+                    take(w, cs, &c);
+            }
+        }
+        for (int j = inner_count; j-- > 0 && top < STACK;)
+            stack[top++] = inner[j];
+        for (;;) {
+            if (top == 0) {
+                /* Crossings kept before hi narrowed past them lie beyond
+                 * what the walk has seen in full: a later walk from hi
+                 * takes them again. */
+                while (w->stop && cs->n > 0 && cs->v[cs->n - 1].t > w->hi)
+                    cs->n--;
+                return;
+            }
+            top--;
+            if (stack[top].kz_near <= w->hi)
+                break;
+        }
+        n = &m->nodes[stack[top].index];
     }
 }
 
@@ -418,39 +739,42 @@ static span_end end_at(const crossing *c, uint32_t leaf)
     return e;
 }
 
-uint32_t prim_mesh_spans(const prim *p, uint32_t leaf, vec3 o, vec3 d, span *out,
-                         uint32_t cap)
+/* The crossings of the line within [lo, hi] (all of them for an infinite
+ * range) into cs. */
+static void gather_range(const prim_mesh *m, vec3 o, vec3 d, double lo, double hi,
+                         crossings *cs)
 {
-    const prim_mesh *m = p->u.mesh.mesh;
-    if (!m || cap == 0)
-        return 0;
-    crossings cs;
-    cs.n = 0;
-    cs.overflow = 0;
-    cs.any = 0;
-    cs.count_only = 0;
-    collect(m, o, d, &cs);
+    ray_frame f = frame_of(o, d);
+    slab_ray r = slab_ray_of(m, o, d, f.kz);
+    walk w = {lo, hi, 0, 0, 0, 0};
+    gather(m, &f, &r, &w, cs);
+}
+
+/* The spans of the whole line from all its crossings, by the rules of the
+ * header (the bounds on crossings and spans, the fill past them). */
+static uint32_t spans_of(const crossings *cs, uint32_t leaf, span *out, uint32_t cap)
+{
     uint32_t n = 0;
     int wind = 0, full = 0;
     span_end start = {0, leaf, 0, 0};
-    for (uint32_t i = 0; i < cs.n && !full; i++) {
+    for (uint32_t i = 0; i < cs->n && !full; i++) {
         int was_in = wind > 0;
-        wind += cs.v[i].exit ? -1 : 1;
+        wind += cs->v[i].exit ? -1 : 1;
         int is_in = wind > 0;
         if (!was_in && is_in) {
-            start = end_at(&cs.v[i], leaf);
+            start = end_at(&cs->v[i], leaf);
         } else if (was_in && !is_in) {
             out[n].in = start;
-            out[n].out = end_at(&cs.v[i], leaf);
+            out[n].out = end_at(&cs->v[i], leaf);
             n++;
             full = n == cap;
         }
     }
     int open = wind > 0 && !full;
-    if (cs.overflow || full || open) {
+    if (cs->overflow || full || open) {
         /* Past the bounds (or a mesh that is not closed along this line):
          * fill to the last crossing of all. */
-        span_end last = end_at(&cs.last, leaf);
+        span_end last = end_at(&cs->last, leaf);
         if (open) {
             out[n].in = start;
             out[n].out = last;
@@ -460,6 +784,159 @@ uint32_t prim_mesh_spans(const prim *p, uint32_t leaf, vec3 o, vec3 d, span *out
         }
     }
     return n;
+}
+
+uint32_t prim_mesh_spans(const prim *p, uint32_t leaf, vec3 o, vec3 d, span *out,
+                         uint32_t cap)
+{
+    const prim_mesh *m = p->u.mesh.mesh;
+    if (!m || cap == 0)
+        return 0;
+    crossings cs;
+    crossings_init(&cs, 0);
+    gather_range(m, o, d, -INFINITY, INFINITY, &cs);
+    return spans_of(&cs, leaf, out, cap);
+}
+
+/* The spans of the crossings a partial walk found, complete up to t_end,
+ * regularised with eps into tmp; a span still open at t_end ends there with
+ * leaf SPAN_NO_LEAF (regularisation carries the mark along). Returns the
+ * count, or UINT32_MAX when there are more than cap spans or the open span
+ * was too short to survive (the caller then walks the whole line). */
+static uint32_t partial_spans(const crossings *cs, double t_end, double eps,
+                              uint32_t leaf, span *tmp, uint32_t cap)
+{
+    uint32_t n = 0;
+    int wind = 0;
+    span_end start = {0, leaf, 0, 0};
+    for (uint32_t i = 0; i < cs->n; i++) {
+        int was_in = wind > 0;
+        wind += cs->v[i].exit ? -1 : 1;
+        int is_in = wind > 0;
+        if (!was_in && is_in) {
+            start = end_at(&cs->v[i], leaf);
+        } else if (was_in && !is_in) {
+            if (n == cap)
+                return UINT32_MAX;
+            tmp[n].in = start;
+            tmp[n].out = end_at(&cs->v[i], leaf);
+            n++;
+        }
+    }
+    int open = wind > 0;
+    if (open) {
+        if (n == cap)
+            return UINT32_MAX;
+        span_end mark = {t_end, SPAN_NO_LEAF, 0, 0};
+        tmp[n].in = start;
+        tmp[n].out = mark;
+        n++;
+    }
+    n = span_regularize(tmp, n, eps);
+    if (open && (n == 0 || tmp[n - 1].out.leaf != SPAN_NO_LEAF))
+        return UINT32_MAX;
+    return n;
+}
+
+/* The FIRST answer from a walk complete up to t_end (see prim_spans_range):
+ * the count written to out, or UINT32_MAX when these crossings cannot
+ * decide it. */
+static uint32_t first_answer(const crossings *cs, double t_end, double lo, double eps,
+                             double far_end, uint32_t leaf, span *out, uint32_t cap,
+                             int complete)
+{
+    span tmp[PRIM_MESH_MAX_CROSSINGS / 2 + 1];
+    uint32_t n = partial_spans(cs, t_end, eps, leaf, tmp, cap);
+    if (n == UINT32_MAX)
+        return n;
+    uint32_t s = 0;
+    while (s < n && !(tmp[s].out.t > lo))
+        s++;
+    if (s == n) {
+        if (!complete)
+            return UINT32_MAX;
+        memcpy(out, tmp, (size_t)n * sizeof *tmp);
+        return n;
+    }
+    const span *S = &tmp[s];
+    int open = S->out.leaf == SPAN_NO_LEAF;
+    int final_out = !open && (s + 1 < n || S->out.t < t_end - 2 * eps);
+    int resolved = S->in.t >= lo ? final_out || S->out.t - S->in.t > eps : final_out;
+    if (!resolved)
+        return UINT32_MAX;
+    memcpy(out, tmp, (size_t)(s + 1) * sizeof *tmp);
+    if (open) {
+        /* Only the in end matters; the out end lies somewhere before the
+         * mesh's far side, which callers may use as a size hint. */
+        span_end end = {max2(far_end, S->in.t), leaf, 0, 0};
+        out[s].out = end;
+    }
+    return s + 1;
+}
+
+uint32_t prim_mesh_spans_range(const prim *p, uint32_t leaf, vec3 o, vec3 d, double lo,
+                               double hi, double eps, int first, span *out, uint32_t cap)
+{
+    const prim_mesh *m = p->u.mesh.mesh;
+    if (!m || cap == 0)
+        return 0;
+    if (!(lo <= hi) || !(eps >= 0) || !isfinite(eps))
+        return prim_mesh_spans(p, leaf, o, d, out, cap);
+    ray_frame f = frame_of(o, d);
+    slab_ray r = slab_ray_of(m, o, d, f.kz);
+    /* The whole mesh: where the line meets its box, and the kz slab that
+     * holds every crossing's t. */
+    prim_mesh_node root = m->nodes[0];
+    for (int a = 0; a < 3; a++) {
+        root.box[0][a][0] = fminf(root.box[0][a][0], root.box[0][a][1]);
+        root.box[1][a][0] = fmaxf(root.box[1][a][0], root.box[1][a][1]);
+    }
+    double key, z0;
+    if (!child_hit(&root, 0, &r, -INFINITY, INFINITY, &key, &z0))
+        return 0;
+    double z1 =
+        widen_up(((double)root.box[1 - r.near[f.kz]][f.kz][0] - r.o[f.kz]) * r.inv[f.kz]);
+    double a = lo - 2 * eps, b = hi + 2 * eps;
+    if (z1 < a || z0 > b)
+        return 0; /* every crossing lies outside the range: so does the solid */
+    /* Nothing before a when the mesh begins after it; else the winding at
+     * a needs every crossing before it. */
+    double from = z0 > a ? a : -INFINITY;
+    crossings cs;
+    crossings_init(&cs, 0);
+    if (first) {
+        walk w = {from, b, 0, 1, lo, 4 * eps};
+        gather(m, &f, &r, &w, &cs);
+        if (!cs.overflow) {
+            uint32_t n = first_answer(&cs, w.hi, lo, eps, z1, leaf, out, cap, w.hi >= b);
+            if (n != UINT32_MAX)
+                return n;
+        }
+        crossings_init(&cs, 0);
+    }
+    walk w = {from, b, 0, 0, 0, 0};
+    gather(m, &f, &r, &w, &cs);
+    /* Every span that reaches over b must be whole: walk on past b until
+     * the last one has closed, a little at a time. */
+    for (int round = 0; !cs.overflow && w.hi < INFINITY; round++) {
+        span tmp[PRIM_MESH_MAX_CROSSINGS / 2 + 1];
+        uint32_t n = partial_spans(&cs, w.hi, eps, leaf, tmp, cap);
+        if (n == UINT32_MAX)
+            break;
+        if (n == 0 ||
+            (tmp[n - 1].out.leaf != SPAN_NO_LEAF && tmp[n - 1].out.t < w.hi - 2 * eps)) {
+            memcpy(out, tmp, (size_t)n * sizeof *tmp);
+            return n;
+        }
+        walk next = {w.hi, INFINITY, 1, round < 4, w.hi, 4 * eps};
+        gather(m, &f, &r, &next, &cs);
+        w.hi = next.hi;
+    }
+    if (cs.overflow || w.hi < INFINITY) {
+        crossings_init(&cs, 0);
+        gather_range(m, o, d, -INFINITY, INFINITY, &cs);
+    }
+    return spans_of(&cs, leaf, out, cap);
 }
 
 vec3 prim_mesh_normal(const prim *p, vec3 q, uint16_t part)
@@ -487,11 +964,8 @@ int prim_mesh_inside(const prim *p, vec3 q)
                 q.y <= m->bounds.hi.y && q.z >= m->bounds.lo.z && q.z <= m->bounds.hi.z))
         return 0;
     crossings cs;
-    cs.n = 0;
-    cs.count_only = 1;
-    cs.wind = 0;
-    cs.on_surface = 0;
+    crossings_init(&cs, 1);
     vec3 d = v3(0.5, 0.70710678118654752, 0.86602540378443865);
-    collect(m, q, d, &cs);
+    gather_range(m, q, d, 0, INFINITY, &cs);
     return cs.on_surface || cs.wind > 0;
 }

@@ -17,20 +17,24 @@
 #define PRIM_MESH_MAX_SPANS 32
 #define PRIM_MESH_MAX_CROSSINGS 256
 
-/* A node of the triangle hierarchy: a leaf when count > 0 (triangles
- * start .. start + count - 1), else an inner node whose children are the
- * next node and node start. */
+/* A node of the triangle hierarchy, one cache line: the boxes of its two
+ * children side by side, so one fetch decides which children a ray enters
+ * and in which order. Boxes are floats relative to the mesh's origin,
+ * rounded outward and padded (see prim_mesh.c); an unused child has an
+ * empty box (lo > hi) that no ray enters. */
 typedef struct prim_mesh_node {
-    bbox box; /* padded by a scene-relative margin, see prim_mesh.c */
-    uint32_t start, count;
+    float box[2][3][2]; /* [0: lo, 1: hi][axis][child] */
+    uint32_t child[2];  /* inner child: its node index; leaf child: first triangle */
+    uint32_t count[2];  /* leaf child: its triangle count; 0: an inner node */
 } prim_mesh_node;
 
 typedef struct prim_mesh {
-    const vec3 *v; /* 3 corners per triangle, in hierarchy order */
-    const vec3 *n; /* per triangle, (b - a) x (c - a), outward */
-    const prim_mesh_node *nodes;
+    const vec3 *v;               /* 3 corners per triangle, in hierarchy order */
+    const vec3 *n;               /* per triangle, (b - a) x (c - a), outward */
+    const prim_mesh_node *nodes; /* nodes[0] holds the root's children */
     uint32_t tri_count, node_count;
     bbox bounds; /* of the corners, unpadded */
+    vec3 origin; /* the centre of bounds: node boxes are relative to it */
 } prim_mesh;
 
 struct csg_builder;
@@ -44,6 +48,12 @@ const prim_mesh *prim_mesh_create(struct csg_builder *b, const vec3 *points,
 
 uint32_t prim_mesh_spans(const prim *p, uint32_t leaf, vec3 o, vec3 d, span *out,
                          uint32_t cap);
+
+/* The spans that matter within [lo, hi] (prim_spans_range in prim.h), for
+ * span lists regularised with eps; the walk visits only the part of the
+ * hierarchy the answer needs. */
+uint32_t prim_mesh_spans_range(const prim *p, uint32_t leaf, vec3 o, vec3 d, double lo,
+                               double hi, double eps, int first, span *out, uint32_t cap);
 vec3 prim_mesh_normal(const prim *p, vec3 q, uint16_t part);
 int prim_mesh_inside(const prim *p, vec3 q);
 uint32_t prim_mesh_max_spans(const prim *p);
