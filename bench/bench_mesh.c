@@ -36,6 +36,7 @@
 #include <time.h>
 
 #include "build/build.h"
+#include "model/model.h"
 #include "csg/csg.h"
 #include "csg/prim_mesh.h"
 #include "formats/file.h"
@@ -261,11 +262,15 @@ static int meshes_main(int argc, char **argv)
     sc_error err;
     sc_error *warnings = NULL;
     size_t warning_count = 0;
+    model *typed = NULL;
     sc_status st = parse_text(file, text, size, &syntax, &err);
     if (st == SC_OK)
-        st = build_tree(syntax, 0, &tree, &warnings, &warning_count, &err);
+        st = model_lower(syntax, &typed, &err);
+    if (st == SC_OK)
+        st = build_scene(typed, 0, &tree, NULL, &warnings, &warning_count, &err);
     double load = cpu_seconds() - load_start;
     free(warnings);
+    model_free(typed);
     parse_tree_free(syntax);
     free(text);
     if (st != SC_OK) {
