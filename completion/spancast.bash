@@ -16,7 +16,8 @@ _spancast_commands()
 # --help` lists for COMMAND, one a line. When that text describes several
 # commands, an option belongs to COMMAND when it is on one of COMMAND's
 # usage lines (and their continuation lines) or in a "COMMAND options:"
-# block (up to the next blank line).
+# block (up to the next blank line), or in a block under another heading
+# ("preview options ...:", "report options:") that follows COMMAND's.
 _spancast_command_options()
 {
     "$1" "$2" --help 2>/dev/null | awk -v cmd="$2" '
@@ -38,7 +39,13 @@ _spancast_command_options()
             if (mine) { usage = usage "\n" $0 } else { all = all "\n" $0 }
             next
         }
-        /^[a-z][a-z -]* options:$/ { block = ($0 == cmd " options:"); mine = 0; next }
+        # "CMD options:" opens a block of CMD; a block of another heading
+        # ("preview options (CAD-style renders):", "report options:")
+        # belongs to the command whose block came before it.
+        /^[a-z][a-z -]* options( \([^)]*\))?:$/ {
+            if ($1 in commands) owner = $1
+            block = (owner == cmd); mine = 0; next
+        }
         /^[ \t]*$/ { block = 0; mine = 0; all = all "\n"; next }
         mine || block { usage = usage "\n" $0; next }
         { all = all "\n" $0 }

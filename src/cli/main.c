@@ -42,7 +42,6 @@
 #include <errno.h>
 #include <math.h>
 #include <signal.h>
-#include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -164,23 +163,6 @@ static const char usage_text[] =
 
 /* ---- messages ---- */
 
-static int usage_verror(const char *format, va_list args)
-{
-    fputs("spancast: error: ", stderr);
-    vfprintf(stderr, format, args);
-    fputc('\n', stderr);
-    return EXIT_USAGE;
-}
-
-static int usage_error(const char *format, ...)
-{
-    va_list args;
-    va_start(args, format);
-    usage_verror(format, args);
-    va_end(args);
-    return EXIT_USAGE;
-}
-
 /* Prints a library error: with its source position when it has one,
  * otherwise as the tool's own message. */
 static void print_error(const sc_error *error)
@@ -205,60 +187,6 @@ static void print_warning(const sc_error *w)
 }
 
 /* ---- values ---- */
-
-/* A whole string as a finite number. */
-static int parse_number(const char *s, double *out)
-{
-    if (!*s || *s == ' ' || *s == '\t')
-        return 0;
-    char *end;
-    errno = 0;
-    double v = strtod(s, &end);
-    if (*end || errno == ERANGE || !isfinite(v))
-        return 0;
-    *out = v;
-    return 1;
-}
-
-/* A whole string as a decimal integer within [lo, hi]. */
-static int parse_int(const char *s, long lo, long hi, long *out)
-{
-    if (!*s || !(*s == '-' || *s == '+' || (*s >= '0' && *s <= '9')))
-        return 0;
-    char *end;
-    errno = 0;
-    long v = strtol(s, &end, 10);
-    if (*end || errno == ERANGE || v < lo || v > hi)
-        return 0;
-    *out = v;
-    return 1;
-}
-
-/* Splits s at commas into at most max numbers; returns how many there were
- * (max + 1 when there are too many), or -1 when one is not a number. */
-static int parse_numbers(const char *s, double *out, int max)
-{
-    char buf[512];
-    size_t len = strlen(s);
-    if (len >= sizeof buf)
-        return -1;
-    memcpy(buf, s, len + 1);
-    int count = 0;
-    char *field = buf;
-    for (;;) {
-        char *comma = strchr(field, ',');
-        if (comma)
-            *comma = '\0';
-        if (count == max)
-            return max + 1;
-        if (!parse_number(field, &out[count]))
-            return -1;
-        count++;
-        if (!comma)
-            return count;
-        field = comma + 1;
-    }
-}
 
 /* ---- the command line ---- */
 
@@ -353,56 +281,12 @@ typedef struct cli_args {
     sc_render_options options;
 } cli_args;
 
-/* The names of a comma-separated list, each looked up in names[]; sets the
- * bit of each in *flags, or appends its index to out[*count] (max of them).
- * Returns 0, or a usage error naming option and the bad name. */
-static int parse_name_list(const char *option, const char *value,
-                           const char *const *names, int name_count, unsigned *flags,
-                           int *out, int *count, int max)
-{
-    const char *p = value;
-    for (;;) {
-        const char *comma = strchr(p, ',');
-        size_t len = comma ? (size_t)(comma - p) : strlen(p);
-        int found = -1;
-        for (int k = 0; k < name_count; k++)
-            if (names[k] && strlen(names[k]) == len && !strncmp(names[k], p, len))
-                found = k;
-        if (found < 0) {
-            char list[256] = "";
-            for (int k = 0; k < name_count; k++) {
-                if (!names[k])
-                    continue;
-                if (list[0])
-                    strcat(list, ", ");
-                strcat(list, names[k]);
-            }
-            return usage_error("%s: unknown name '%.*s' (expected %s)", option, (int)len,
-                               p, list);
-        }
-        if (flags)
-            *flags |= 1u << found;
-        if (out) {
-            if (*count >= max)
-                return usage_error("%s takes at most %d names", option, max);
-            out[(*count)++] = found;
-        }
-        if (!comma)
-            return 0;
-        p = comma + 1;
-    }
-}
-
-static const char *const view_names[] = {"edges", "axes", "scales", "crosshairs"};
-static const char *const preset_names[] = {NULL,    "top",   "bottom", "left",
-                                           "right", "front", "back",   "diagonal"};
-
 /* Applies one option with its value (NULL for flags); returns 0 or the exit
  * status of a usage error. */
-static int apply_option(cli_args *a, opt_id id, const char *value)
+static int apply_option(cli_args *a, const opt_spec *spec, const char *value)
 {
     sc_render_options *o = &a->options;
-    switch (id) {
+    switch (spec->id) {
     case OPT_OUTPUT:
         a->output = value;
         return 0;
@@ -414,10 +298,11 @@ static int apply_option(cli_args *a, opt_id id, const char *value)
         return 0;
     case OPT_CAMERA: {
         double v[7];
-        int n = parse_numbers(value, v, 7);
+        int n = cli_parse_numbers(value, v, 7);
         if (n != 6 && n != 7)
-            return usage_error("--camera expects 6 numbers (eye, centre) or 7 numbers "
-                               "(translate, rotate, distance)");
+            return cli_usage_error(
+                "--camera expects 6 numbers (eye, centre) or 7 numbers "
+                "(translate, rotate, distance)");
         memcpy(o->camera, v, (size_t)n * sizeof v[0]);
         o->camera_mode = n == 6 ? SC_CAMERA_VECTOR : SC_CAMERA_GIMBAL;
         a->camera_given = 1;
@@ -428,22 +313,23 @@ static int apply_option(cli_args *a, opt_id id, const char *value)
         char w_text[32];
         long w, h;
         if (!comma || (size_t)(comma - value) >= sizeof w_text)
-            return usage_error("--imgsize expects W,H with positive integers");
+            return cli_usage_error("--imgsize expects W,H with positive integers");
         memcpy(w_text, value, (size_t)(comma - value));
         w_text[comma - value] = '\0';
-        if (!parse_int(w_text, 1, 1L << 30, &w) || !parse_int(comma + 1, 1, 1L << 30, &h))
-            return usage_error("--imgsize expects W,H with positive integers");
+        if (!cli_parse_int(w_text, 1, 1L << 30, &w) ||
+            !cli_parse_int(comma + 1, 1, 1L << 30, &h))
+            return cli_usage_error("--imgsize expects W,H with positive integers");
         if (w > RENDER_MAX_SIDE || h > RENDER_MAX_SIDE)
-            return usage_error("--imgsize allows at most %d pixels a side",
-                               RENDER_MAX_SIDE);
+            return cli_usage_error("--imgsize allows at most %d pixels a side",
+                                   RENDER_MAX_SIDE);
         o->width = (int)w;
         o->height = (int)h;
         return 0;
     }
     case OPT_FOV: {
         double fov;
-        if (!parse_number(value, &fov) || !(fov > 0 && fov < 180))
-            return usage_error("--fov expects an angle in degrees between 0 and 180");
+        if (!cli_parse_number(value, &fov) || !(fov > 0 && fov < 180))
+            return cli_usage_error("--fov expects an angle in degrees between 0 and 180");
         o->fov_deg = fov;
         return 0;
     }
@@ -455,7 +341,7 @@ static int apply_option(cli_args *a, opt_id id, const char *value)
                    !strcmp(value, "orthogonal") || !strcmp(value, "orthographic")) {
             o->projection = SC_PROJECTION_ORTHOGRAPHIC;
         } else {
-            return usage_error(
+            return cli_usage_error(
                 "--projection expects 'p' (perspective) or 'o' (orthographic)");
         }
         return 0;
@@ -467,8 +353,9 @@ static int apply_option(cli_args *a, opt_id id, const char *value)
         return 0;
     case OPT_THREADS: {
         long n;
-        if (!parse_int(value, 0, 4096, &n))
-            return usage_error("--threads expects a non-negative integer (0: all cores)");
+        if (!cli_parse_int(value, 0, 4096, &n))
+            return cli_usage_error(
+                "--threads expects a non-negative integer (0: all cores)");
         o->threads = (int)n;
         return 0;
     }
@@ -483,27 +370,28 @@ static int apply_option(cli_args *a, opt_id id, const char *value)
         return 0;
     case OPT_SPP: {
         long n;
-        if (!parse_int(value, 1, RENDER_MAX_SPP, &n))
-            return usage_error("--spp expects an integer from 1 to %d", RENDER_MAX_SPP);
+        if (!cli_parse_int(value, 1, RENDER_MAX_SPP, &n))
+            return cli_usage_error("--spp expects an integer from 1 to %d",
+                                   RENDER_MAX_SPP);
         o->spp = (int)n;
         return 0;
     }
     case OPT_MAX_DEPTH: {
         long n;
-        if (!parse_int(value, 0, SHADE_MAX_DEPTH, &n))
-            return usage_error("--max-depth expects an integer from 0 to %d",
-                               SHADE_MAX_DEPTH);
+        if (!cli_parse_int(value, 0, SHADE_MAX_DEPTH, &n))
+            return cli_usage_error("--max-depth expects an integer from 0 to %d",
+                                   SHADE_MAX_DEPTH);
         o->max_depth = (int)n;
         return 0;
     }
     case OPT_REGION: {
         double v[4];
-        int ok = parse_numbers(value, v, 4) == 4;
+        int ok = cli_parse_numbers(value, v, 4) == 4;
         for (int k = 0; ok && k < 4; k++)
             ok = v[k] == floor(v[k]) && v[k] >= 0 && v[k] <= RENDER_MAX_SIDE;
         if (!ok || !(v[0] < v[2] && v[1] < v[3]))
-            return usage_error("--region expects X0,Y0,X1,Y1 with 0 <= X0 < X1 and "
-                               "0 <= Y0 < Y1 (X1, Y1 exclusive)");
+            return cli_usage_error("--region expects X0,Y0,X1,Y1 with 0 <= X0 < X1 and "
+                                   "0 <= Y0 < Y1 (X1, Y1 exclusive)");
         for (int k = 0; k < 4; k++)
             o->region[k] = (int)v[k];
         return 0;
@@ -514,108 +402,25 @@ static int apply_option(cli_args *a, opt_id id, const char *value)
         else if (!strcmp(value, "json"))
             a->stats = 2;
         else
-            return usage_error("--stats takes no value or '=json'");
+            return cli_usage_error("--stats takes no value or '=json'");
         return 0;
     case OPT_FAITHFUL:
         a->faithful = 1;
         return 0;
-    case OPT_COLORSCHEME: {
-        sc_error error;
-        if (sc_color_scheme_find(value, NULL, &o->scheme, &error) != SC_OK)
-            return usage_error("--colorscheme: %s", error.message);
-        o->use_scheme = 1;
-        return 0;
-    }
+    case OPT_COLORSCHEME:
     case OPT_LIGHTING:
-        if (!strcmp(value, "default"))
-            o->lighting = SC_LIGHTING_DEFAULT;
-        else if (!strcmp(value, "openscad"))
-            o->lighting = SC_LIGHTING_OPENSCAD;
-        else
-            return usage_error("--lighting expects 'default' or 'openscad'");
-        return 0;
     case OPT_PREVIEW:
-        o->preview = 1;
-        return 0;
-    case OPT_VIEW: {
-        unsigned flags = 0;
-        int st = parse_name_list("--view", value, view_names, 4, &flags, NULL, NULL, 0);
-        if (st)
-            return st;
-        o->view |= flags; /* bit k of view_names is SC_VIEW_* 1 << k */
-        return 0;
-    }
-    case OPT_EDGE_ANGLE: {
-        double v;
-        if (!parse_number(value, &v) || !(v > 0 && v < 180))
-            return usage_error("--edge-angle expects an angle in degrees between 0 and "
-                               "180");
-        o->edge_angle_deg = v;
-        return 0;
-    }
-    case OPT_EDGE_WIDTH: {
-        double v;
-        if (!parse_number(value, &v) || !(v > 0 && v <= RENDER_MAX_EDGE_WIDTH))
-            return usage_error("--edge-width expects a width in pixels above 0 and at "
-                               "most %d",
-                               RENDER_MAX_EDGE_WIDTH);
-        o->edge_width = v;
-        return 0;
-    }
-    case OPT_VIEW_PRESET: {
-        int index[1], count = 0;
-        int st = parse_name_list("--view-preset", value, preset_names, 8, NULL, index,
-                                 &count, 1);
-        if (st)
-            return st;
-        a->preset = (sc_view_preset)index[0];
-        return 0;
-    }
-    case OPT_SHEET: {
-        int index[SC_MAX_SHEET], count = 0;
-        int st = parse_name_list("--sheet", value, preset_names, 8, NULL, index, &count,
-                                 SC_MAX_SHEET);
-        if (st)
-            return st;
-        o->sheet_count = count;
-        for (int k = 0; k < count; k++)
-            o->sheet[k] = (sc_view_preset)index[k];
-        return 0;
-    }
-    case OPT_SECTION: {
-        double v[4];
-        if (parse_numbers(value, v, 4) != 4 || (v[0] == 0 && v[1] == 0 && v[2] == 0))
-            return usage_error("--section expects NX,NY,NZ,D with a non-zero normal "
-                               "(keeps the half-space n.p <= D)");
-        if (o->section_count >= SC_MAX_SECTIONS)
-            return usage_error("at most %d --section options", SC_MAX_SECTIONS);
-        memcpy(o->section[o->section_count++], v, sizeof v);
-        return 0;
-    }
+    case OPT_VIEW:
+    case OPT_EDGE_ANGLE:
+    case OPT_EDGE_WIDTH:
+    case OPT_VIEW_PRESET:
+    case OPT_SHEET:
+    case OPT_SECTION:
     case OPT_SECTION_STYLE:
-        if (!strcmp(value, "solid"))
-            o->section_style = SC_SECTION_SOLID;
-        else if (!strcmp(value, "hatch"))
-            o->section_style = SC_SECTION_HATCH;
-        else
-            return usage_error("--section-style expects 'solid' or 'hatch'");
-        return 0;
-    case OPT_AO: {
-        long n;
-        if (!parse_int(value, 0, RENDER_MAX_AO, &n))
-            return usage_error("--ao expects a number of rays from 0 to %d",
-                               RENDER_MAX_AO);
-        o->ao_samples = (int)n;
-        return 0;
-    }
-    case OPT_AO_RADIUS: {
-        double v;
-        if (!parse_number(value, &v) || !(v > 0))
-            return usage_error("--ao-radius expects a positive fraction of the model's "
-                               "diagonal");
-        o->ao_radius = v;
-        return 0;
-    }
+    case OPT_AO:
+    case OPT_AO_RADIUS:
+        return cli_apply_preview_option(o, &a->preset, spec->name, strlen(spec->name),
+                                        value);
     case OPT_WATCH:
         a->watch = 1;
         return 0;
@@ -641,10 +446,10 @@ static int finish_views(cli_args *a)
 {
     sc_render_options *o = &a->options;
     if (a->preset && o->sheet_count)
-        return usage_error("--view-preset and --sheet exclude each other");
+        return cli_usage_error("--view-preset and --sheet exclude each other");
     if ((a->preset || o->sheet_count) && a->camera_given)
-        return usage_error("--camera does not combine with --%s",
-                           a->preset ? "view-preset" : "sheet");
+        return cli_usage_error("--camera does not combine with --%s",
+                               a->preset ? "view-preset" : "sheet");
     if (a->preset) {
         o->camera_mode = SC_CAMERA_GIMBAL;
         memset(o->camera, 0, sizeof o->camera);
@@ -677,10 +482,10 @@ static int parse_args(cli_args *a, int argc, char **argv)
             size_t len = eq ? (size_t)(eq - arg) : strlen(arg);
             spec = find_option(arg, len);
             if (!spec)
-                return usage_error("unknown option '%.*s'", (int)len, arg);
+                return cli_usage_error("unknown option '%.*s'", (int)len, arg);
             if (eq) {
                 if (!spec->takes_value)
-                    return usage_error("option '%s' takes no value", spec->name);
+                    return cli_usage_error("option '%s' takes no value", spec->name);
                 value = eq + 1;
                 has_value = 1;
             }
@@ -693,33 +498,33 @@ static int parse_args(cli_args *a, int argc, char **argv)
         } else if (!only_files && !strcmp(arg, "-q")) {
             spec = find_option("--quiet", 7);
         } else if (!only_files && arg[0] == '-' && arg[1]) {
-            return usage_error("unknown option '%s'", arg);
+            return cli_usage_error("unknown option '%s'", arg);
         } else {
             if (a->input)
-                return usage_error("unexpected argument '%s'", arg);
+                return cli_usage_error("unexpected argument '%s'", arg);
             a->input = arg;
             continue;
         }
         if (spec->render_only && !a->render)
-            return usage_error("option '%s' does not apply to '%s'",
-                               arg[1] == '-' ? spec->name : "-o", command);
+            return cli_usage_error("option '%s' does not apply to '%s'",
+                                   arg[1] == '-' ? spec->name : "-o", command);
         if (spec->takes_value == 1 && !has_value) {
             if (k + 1 >= argc)
-                return usage_error("option '%s' expects a value",
-                                   arg[1] == '-' ? spec->name : "-o");
+                return cli_usage_error("option '%s' expects a value",
+                                       arg[1] == '-' ? spec->name : "-o");
             value = argv[++k];
         }
         if (spec->takes_value && value && !*value)
-            return usage_error("option '%s' expects a value",
-                               arg[1] == '-' ? spec->name : "-o");
-        int st = apply_option(a, spec->id, value);
+            return cli_usage_error("option '%s' expects a value",
+                                   arg[1] == '-' ? spec->name : "-o");
+        int st = apply_option(a, spec, value);
         if (st)
             return st;
     }
     if (!a->input)
-        return usage_error("missing input file");
+        return cli_usage_error("missing input file");
     if (a->render && !a->output)
-        return usage_error("missing output file (-o)");
+        return cli_usage_error("missing output file (-o)");
     return finish_views(a);
 }
 
@@ -947,7 +752,7 @@ static int run_render(cli_args *a, int argc, char **argv)
         (a->depth && imgio_check(a->depth, IMGIO_DEPTH, &error)) ||
         (a->normal && imgio_check(a->normal, IMGIO_NORMAL, &error)) ||
         (a->id && imgio_check(a->id, IMGIO_ID, &error)))
-        return usage_error("%s", error.message);
+        return cli_usage_error("%s", error.message);
     if (!output_writable(a->output) || (a->mask && !output_writable(a->mask)) ||
         (a->depth && !output_writable(a->depth)) ||
         (a->normal && !output_writable(a->normal)) || (a->id && !output_writable(a->id)))
@@ -1088,28 +893,9 @@ static int run_view(char **argv)
 
 /* ---- shared with the query commands (cli.h) ---- */
 
-int cli_usage_error(const char *format, ...)
-{
-    va_list args;
-    va_start(args, format);
-    usage_verror(format, args);
-    va_end(args);
-    return EXIT_USAGE;
-}
-
 void cli_print_error(const sc_error *error)
 {
     print_error(error);
-}
-
-int cli_parse_number(const char *s, double *out)
-{
-    return parse_number(s, out);
-}
-
-int cli_parse_numbers(const char *s, double *out, int max)
-{
-    return parse_numbers(s, out, max);
 }
 
 sc_scene *cli_load(const char *path, int faithful)
@@ -1136,11 +922,11 @@ int cli_apply_camera_option(sc_render_options *options, const char *name, size_t
 {
     const opt_spec *spec = find_option(name, len);
     if (!spec || !is_camera_option(spec->id))
-        return usage_error("unknown option '%.*s'", (int)len, name);
+        return cli_usage_error("unknown option '%.*s'", (int)len, name);
     cli_args a;
     memset(&a, 0, sizeof a);
     a.options = *options;
-    int st = apply_option(&a, spec->id, value);
+    int st = apply_option(&a, spec, value);
     if (!st)
         *options = a.options;
     return st;
@@ -1161,7 +947,7 @@ int main(int argc, char **argv)
         }
     }
     if (argc < 2)
-        return usage_error("missing command (try 'spancast --help')");
+        return cli_usage_error("missing command (try 'spancast --help')");
     const char *command = argv[1];
     if (!strcmp(command, "bench"))
         return run_bench(argv);
@@ -1183,10 +969,10 @@ int main(int argc, char **argv)
     else if (!strcmp(command, "info"))
         a.render = 0;
     else if (command[0] == '-')
-        return usage_error("missing command before '%s' (try 'spancast --help')",
-                           command);
+        return cli_usage_error("missing command before '%s' (try 'spancast --help')",
+                               command);
     else
-        return usage_error(
+        return cli_usage_error(
             "unknown command '%s' (expected 'render', 'info', "
             "'spans', 'inside', 'measure', 'overlaps', 'compare' or 'view')",
             command);

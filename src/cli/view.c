@@ -62,17 +62,16 @@
 #include <time.h>
 #include <unistd.h>
 
+#include "cli/cli.h"
 #include "cli/view.h"
 #include "cli/watch.h"
 
-enum { EXIT_FAILED = 1, EXIT_USAGE = 2 };
+enum { EXIT_FAILED = 1 };
 
 #define FRAME_BUDGET_MS 25.0 /* a coarse frame's render time, below 33 ms */
 #define STILL_SECONDS 0.1    /* no motion this long while dragging: refine */
 #define MAX_SPP 1024
-#define MAX_AO 1024       /* --ao, as render allows */
-#define MAX_EDGE_WIDTH 16 /* --edge-width, as render allows */
-#define DEFAULT_AO 8      /* rays per sample when A turns occlusion on */
+#define DEFAULT_AO 8 /* rays per sample when A turns occlusion on */
 #define MAX_SCHEMES 64
 
 static const char usage_text[] =
@@ -175,177 +174,20 @@ static double seconds_now(void)
     return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
 }
 
-static int usage_error(const char *message, const char *arg)
-{
-    fprintf(stderr, "spancast: error: ");
-    fprintf(stderr, message, arg);
-    fputc('\n', stderr);
-    return EXIT_USAGE;
-}
-
 /* ---- the command line ---- */
 
-static int parse_int(const char *s, long lo, long hi, long *out)
-{
-    char *end;
-    errno = 0;
-    long v = strtol(s, &end, 10);
-    if (!*s || *end || errno || v < lo || v > hi)
-        return 0;
-    *out = v;
-    return 1;
-}
-
-/* A whole string as a finite number: 1, or 0 when it is not one. */
-static int parse_number(const char *s, double *out)
-{
-    char *end;
-    errno = 0;
-    double d = strtod(s, &end);
-    if (!*s || *end || errno == ERANGE || !isfinite(d))
-        return 0;
-    *out = d;
-    return 1;
-}
-
-/* Splits s at commas into exactly count numbers; 1, or 0 when it cannot. */
-static int parse_numbers(const char *s, double *out, int count)
-{
-    char text[256];
-    if (strlen(s) >= sizeof text)
-        return 0;
-    snprintf(text, sizeof text, "%s", s);
-    char *p = text;
-    for (int k = 0; k < count; k++) {
-        char *comma = strchr(p, ',');
-        if ((comma != NULL) != (k + 1 < count))
-            return 0;
-        if (comma)
-            *comma = '\0';
-        if (!parse_number(p, &out[k]))
-            return 0;
-        p = comma + 1;
-    }
-    return 1;
-}
-
-static const char *const overlay_names[] = {"edges", "axes", "scales", "crosshairs"};
-
-#define IS(option) (len == sizeof option - 1 && !strncmp(name, option, len))
-
-/* Whether the option named by the len bytes at name is one of render's
- * preview options: -1 when not, else 1 when it takes a value, 0 when not. */
-static int preview_option(const char *name, size_t len)
-{
-    if (IS("--preview"))
-        return 0;
-    return IS("--colorscheme") || IS("--lighting") || IS("--view") ||
-                   IS("--edge-angle") || IS("--edge-width") || IS("--view-preset") ||
-                   IS("--section") || IS("--section-style") || IS("--ao") ||
-                   IS("--ao-radius")
-               ? 1
-               : -1;
-}
-
-/* Applies such an option (value NULL when none was given) to v->look with
- * the checks and messages of `render`; returns 0 or a usage exit status. */
-static int apply_preview_option(viewer *v, const char *name, size_t len,
+/* Applies one of render's preview options (value NULL when none was given)
+ * to v->look with render's parser, checks and messages; returns 0 or a
+ * usage exit status. */
+static int apply_preview_option(viewer *v, const char *name, size_t len, int takes_value,
                                 const char *value)
 {
-    sc_render_options *o = &v->look;
-    double d[4];
-    long n;
-    char option[32];
-    snprintf(option, sizeof option, "%.*s", (int)(len < 31 ? len : 31), name);
-    if (IS("--preview")) {
-        if (value)
-            return usage_error("option '%s' takes no value", option);
-        o->preview = 1;
-        return 0;
-    }
-    if (!value || !*value)
-        return usage_error("option '%s' expects a value", option);
-    if (IS("--colorscheme")) {
-        sc_error error;
-        if (sc_color_scheme_find(value, NULL, &o->scheme, &error) != SC_OK)
-            return usage_error("--colorscheme: %s", error.message);
-        o->use_scheme = 1;
-    } else if (IS("--lighting")) {
-        if (!strcmp(value, "default"))
-            o->lighting = SC_LIGHTING_DEFAULT;
-        else if (!strcmp(value, "openscad"))
-            o->lighting = SC_LIGHTING_OPENSCAD;
-        else
-            return usage_error("--lighting expects 'default' or 'openscad'%s", "");
-    } else if (IS("--view")) {
-        for (const char *p = value;;) {
-            size_t part = strcspn(p, ",");
-            int found = -1;
-            for (int k = 0; k < 4; k++)
-                if (strlen(overlay_names[k]) == part &&
-                    !strncmp(overlay_names[k], p, part))
-                    found = k;
-            if (found < 0) {
-                char message[512];
-                snprintf(message, sizeof message,
-                         "--view: unknown name '%.*s' (expected edges, axes, scales, "
-                         "crosshairs)",
-                         (int)(part < 256 ? part : 256), p);
-                return usage_error("%s", message);
-            }
-            o->view |= 1u << found; /* bit k of overlay_names is SC_VIEW_* 1 << k */
-            if (!p[part])
-                break;
-            p += part + 1;
-        }
-    } else if (IS("--edge-angle")) {
-        if (!parse_number(value, &d[0]) || !(d[0] > 0 && d[0] < 180))
-            return usage_error("--edge-angle expects an angle in degrees between 0 and "
-                               "180%s",
-                               "");
-        o->edge_angle_deg = d[0];
-    } else if (IS("--edge-width")) {
-        if (!parse_number(value, &d[0]) || !(d[0] > 0 && d[0] <= MAX_EDGE_WIDTH))
-            return usage_error("--edge-width expects a width in pixels above 0 and at "
-                               "most 16%s",
-                               "");
-        o->edge_width = d[0];
-    } else if (IS("--view-preset")) {
-        v->preset = sc_view_preset_from_name(value);
-        if (!v->preset)
-            return usage_error("--view-preset: unknown name '%s' (expected top, bottom, "
-                               "left, right, front, back, diagonal)",
-                               value);
-    } else if (IS("--section")) {
-        if (!parse_numbers(value, d, 4) || (d[0] == 0 && d[1] == 0 && d[2] == 0))
-            return usage_error("--section expects NX,NY,NZ,D with a non-zero normal "
-                               "(keeps the half-space n.p <= D)%s",
-                               "");
-        if (o->section_count >= SC_MAX_SECTIONS)
-            return usage_error("at most 8 --section options%s", "");
-        memcpy(o->section[o->section_count++], d, sizeof d);
-    } else if (IS("--section-style")) {
-        if (!strcmp(value, "solid"))
-            o->section_style = SC_SECTION_SOLID;
-        else if (!strcmp(value, "hatch"))
-            o->section_style = SC_SECTION_HATCH;
-        else
-            return usage_error("--section-style expects 'solid' or 'hatch'%s", "");
-    } else if (IS("--ao")) {
-        if (!parse_int(value, 0, MAX_AO, &n))
-            return usage_error("--ao expects a number of rays from 0 to 1024%s", "");
-        o->ao_samples = (int)n;
-    } else {
-        if (!parse_number(value, &d[0]) || !(d[0] > 0))
-            return usage_error("--ao-radius expects a positive fraction of the model's "
-                               "diagonal%s",
-                               "");
-        o->ao_radius = d[0];
-    }
-    return 0;
+    if (!takes_value && value)
+        return cli_usage_error("option '%.*s' takes no value", (int)len, name);
+    if (takes_value && (!value || !*value))
+        return cli_usage_error("option '%.*s' expects a value", (int)len, name);
+    return cli_apply_preview_option(&v->look, &v->preset, name, len, value);
 }
-
-#undef IS
 
 static int parse_args(viewer *v, int argc, char **argv)
 {
@@ -358,17 +200,18 @@ static int parse_args(viewer *v, int argc, char **argv)
         }
         if (arg[0] != '-' || !arg[1]) {
             if (v->path)
-                return usage_error("unexpected argument '%s'", arg);
+                return cli_usage_error("unexpected argument '%s'", arg);
             v->path = arg;
             continue;
         }
         const char *eq = strchr(arg, '=');
         size_t len = eq ? (size_t)(eq - arg) : strlen(arg);
-        int preview = preview_option(arg, len);
-        if (preview >= 0) {
+        int preview = cli_preview_option(arg, len);
+        /* --sheet, one image of several views, is render's only */
+        if (preview >= 0 && !(len == 7 && !strncmp(arg, "--sheet", len))) {
             /* a value may be the next argument, as for render */
             const char *value = eq ? eq + 1 : preview && k + 1 < argc ? argv[++k] : NULL;
-            int st = apply_preview_option(v, arg, len, value);
+            int st = apply_preview_option(v, arg, len, preview, value);
             if (st)
                 return st;
             continue;
@@ -385,34 +228,35 @@ static int parse_args(viewer *v, int argc, char **argv)
                     (len == 5 && !strncmp(arg, "--spp", len)) ||
                     (len == 9 && !strncmp(arg, "--threads", len));
         if (!takes)
-            return usage_error("unknown option '%s' for 'view'", arg);
+            return cli_usage_error("unknown option '%s' for 'view'", arg);
         const char *value = eq ? eq + 1 : k + 1 < argc ? argv[++k] : NULL;
         if (!value || !*value)
-            return usage_error("option '%s' expects a value", arg);
+            return cli_usage_error("option '%s' expects a value", arg);
         long n, w, h;
         if (!strncmp(arg, "--spp", len)) {
-            if (!parse_int(value, 1, MAX_SPP, &n))
-                return usage_error("--spp expects an integer from 1 to 1024%s", "");
+            if (!cli_parse_int(value, 1, MAX_SPP, &n))
+                return cli_usage_error("--spp expects an integer from 1 to 1024");
             v->spp = (int)n;
         } else if (!strncmp(arg, "--threads", len)) {
-            if (!parse_int(value, 0, 4096, &n))
-                return usage_error("--threads expects a non-negative integer%s", "");
+            if (!cli_parse_int(value, 0, 4096, &n))
+                return cli_usage_error("--threads expects a non-negative integer");
             v->threads = (int)n;
         } else {
             char wtext[32];
             const char *comma = strchr(value, ',');
             if (!comma || (size_t)(comma - value) >= sizeof wtext)
-                return usage_error("--imgsize expects W,H with positive integers%s", "");
+                return cli_usage_error("--imgsize expects W,H with positive integers");
             memcpy(wtext, value, (size_t)(comma - value));
             wtext[comma - value] = '\0';
-            if (!parse_int(wtext, 16, 8192, &w) || !parse_int(comma + 1, 16, 8192, &h))
-                return usage_error("--imgsize expects W,H from 16 to 8192%s", "");
+            if (!cli_parse_int(wtext, 16, 8192, &w) ||
+                !cli_parse_int(comma + 1, 16, 8192, &h))
+                return cli_usage_error("--imgsize expects W,H from 16 to 8192");
             v->width = (int)w;
             v->height = (int)h;
         }
     }
     if (!v->path)
-        return usage_error("missing input file%s", "");
+        return cli_usage_error("missing input file");
     return 0;
 }
 
@@ -529,7 +373,7 @@ static const char *view_format(const viewer *v, char *buf, size_t size)
         append(buf, size, " --view=");
         for (int k = 0, first = 1; k < 4; k++)
             if (look->view & (1u << k)) {
-                append(buf, size, "%s%s", first ? "" : ",", overlay_names[k]);
+                append(buf, size, "%s%s", first ? "" : ",", cli_view_names[k]);
                 first = 0;
             }
     }
