@@ -67,7 +67,7 @@ for f in bin/spancast include/spancast/spancast.h include/spancast/version.h \
     check
     [ -f "$prefix/$f" ] || fail "not installed: $f"
 done
-for f in libspancast.so spancast/spancast-oiio.so spancast/spancast-bench \
+for f in libspancast.so spancast/spancast-oiio.so spancast/spancast-bench spancast/spancast-view \
     cmake/spancast/spancastConfig.cmake cmake/spancast/spancastConfigVersion.cmake \
     cmake/spancast/spancastTargets.cmake; do
     check
@@ -108,6 +108,13 @@ check
 rc=$?
 [ "$rc" = 2 ] && grep -q "unknown option '--no-such-option'" bench.err ||
     fail "installed spancast bench: exit $rc, '$(cat bench.err)'"
+# `spancast view` starts the installed spancast-view the same way: its own
+# message for a bad option, not "cannot find spancast-view".
+check
+"$prefix/bin/spancast" view --no-such-option >view.out 2>view.err
+rc=$?
+[ "$rc" = 2 ] && grep -q "unknown option '--no-such-option'" view.err ||
+    fail "installed spancast view: exit $rc, '$(cat view.err)'"
 
 # ---- the headers as C and C++, and the version ----
 # Every installed header, then a program printing the version three ways.
