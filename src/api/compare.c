@@ -25,6 +25,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "api/lines.h"
 #include "api/quad.h"
 #include "base/arena.h"
 #include "base/error.h"
@@ -84,34 +85,13 @@ static double length_of(span_list s)
     return length;
 }
 
-/* The signature of a span list (quad.h): its ends' surfaces, in order. */
-static uint64_t list_signature(uint64_t h, span_list s)
-{
-    h = quad_mix(h, s.n);
-    for (uint32_t k = 0; k < s.n; k++) {
-        const span_end *ends[2] = {&s.v[k].in, &s.v[k].out};
-        for (int e = 0; e < 2; e++)
-            h = quad_mix(h, ((uint64_t)ends[e]->leaf << 24) |
-                                ((uint64_t)ends[e]->part << 8) | ends[e]->flip);
-    }
-    return h;
-}
-
 static int sample_compare(void *context, int thread, double u, double v, double *values,
                           uint64_t *signature)
 {
     const compare_axis *m = context;
     const compare_shared *s = m->shared;
     int a = m->axis;
-    double o[3];
-    o[a] = 0;
-    o[(a + 1) % 3] = u;
-    o[(a + 2) % 3] = v;
-    csg_ray r;
-    r.o = v3(o[0], o[1], o[2]);
-    r.d = v3(a == 0, a == 1, a == 2);
-    r.tmin = -INFINITY;
-    r.tmax = INFINITY;
+    csg_ray r = lines_axis_ray(a, 0, u, v);
     arena *scratch = &s->scratch[thread];
     arena_reset(scratch);
     span_list sa = {NULL, 0}, sb = {NULL, 0};
@@ -124,7 +104,7 @@ static int sample_compare(void *context, int thread, double u, double v, double 
     span_list only_b = span_combine(SPAN_DIFFERENCE, sb, sa, eps, scratch, &oom);
     if (oom)
         return 0;
-    *signature = list_signature(list_signature(0, sa), sb);
+    *signature = lines_signature(lines_signature(0, sa), sb);
     values[C_A] = length_of(sa);
     values[C_B] = length_of(sb);
     values[C_ONLY_A] = length_of(only_a);

@@ -40,6 +40,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "api/lines.h"
 #include "api/quad.h"
 #include "base/arena.h"
 #include "base/error.h"
@@ -83,41 +84,20 @@ typedef struct measure_axis {
     int axis;
 } measure_axis;
 
-/* The signature of a span list (quad.h): its ends' surfaces, in order. */
-static uint64_t list_signature(uint64_t h, span_list s)
-{
-    h = quad_mix(h, s.n);
-    for (uint32_t k = 0; k < s.n; k++) {
-        const span_end *ends[2] = {&s.v[k].in, &s.v[k].out};
-        for (int e = 0; e < 2; e++)
-            h = quad_mix(h, ((uint64_t)ends[e]->leaf << 24) |
-                                ((uint64_t)ends[e]->part << 8) | ends[e]->flip);
-    }
-    return h;
-}
-
 static int sample_line(void *context, int thread, double u, double v, double *values,
                        uint64_t *signature)
 {
     const measure_axis *m = context;
     const measure_shared *s = m->shared;
     int a = m->axis, ua = (a + 1) % 3, va = (a + 2) % 3;
-    double o[3];
-    o[a] = s->centre[a];
-    o[ua] = u;
-    o[va] = v;
     double du = u - s->centre[ua], dv = v - s->centre[va];
-    csg_ray r;
-    r.o = v3(o[0], o[1], o[2]);
-    r.d = v3(a == 0, a == 1, a == 2);
-    r.tmin = -INFINITY;
-    r.tmax = INFINITY;
+    csg_ray r = lines_axis_ray(a, s->centre[a], u, v);
     arena *scratch = &s->scratch[thread];
     arena_reset(scratch);
     span_list spans;
     if (!csg_spans(s->tree, &r, scratch, &spans))
         return 0;
-    *signature = list_signature(0, spans);
+    *signature = lines_signature(0, spans);
     double length = 0, s1 = 0, s2 = 0, area = 0, area2 = 0;
     double *box = s->box[thread];
     for (uint32_t k = 0; k < spans.n; k++) {
@@ -132,7 +112,7 @@ static int sample_line(void *context, int thread, double u, double v, double *va
                 fabs(n.x * n.x * n.x) + fabs(n.y * n.y * n.y) + fabs(n.z * n.z * n.z);
             area += na;
             area2 += cubes > 0 ? na * na / cubes : 0;
-            double p[3] = {o[0], o[1], o[2]};
+            double p[3] = {r.o.x, r.o.y, r.o.z};
             p[a] += ends[e]->t;
             for (int i = 0; i < 3; i++) {
                 box[i] = fmin(box[i], p[i]);

@@ -20,6 +20,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "api/lines.h"
 #include "api/quad.h"
 #include "base/arena.h"
 #include "base/error.h"
@@ -214,34 +215,13 @@ typedef struct pair_axis {
     int axis;
 } pair_axis;
 
-/* The signature of a span list (quad.h): its ends' surfaces, in order. */
-static uint64_t list_signature(uint64_t h, span_list s)
-{
-    h = quad_mix(h, s.n);
-    for (uint32_t k = 0; k < s.n; k++) {
-        const span_end *ends[2] = {&s.v[k].in, &s.v[k].out};
-        for (int e = 0; e < 2; e++)
-            h = quad_mix(h, ((uint64_t)ends[e]->leaf << 24) |
-                                ((uint64_t)ends[e]->part << 8) | ends[e]->flip);
-    }
-    return h;
-}
-
 static int sample_pair(void *context, int thread, double u, double v, double *values,
                        uint64_t *signature)
 {
     const pair_axis *m = context;
     const pair_shared *s = m->shared;
     int a = m->axis;
-    double o[3];
-    o[a] = 0;
-    o[(a + 1) % 3] = u;
-    o[(a + 2) % 3] = v;
-    csg_ray r;
-    r.o = v3(o[0], o[1], o[2]);
-    r.d = v3(a == 0, a == 1, a == 2);
-    r.tmin = -INFINITY;
-    r.tmax = INFINITY;
+    csg_ray r = lines_axis_ray(a, 0, u, v);
     arena *scratch = &s->scratch[thread];
     arena_reset(scratch);
     span_list sa, sb;
@@ -252,7 +232,7 @@ static int sample_pair(void *context, int thread, double u, double v, double *va
     span_list both = span_combine(SPAN_INTERSECTION, sa, sb, eps, scratch, &oom);
     if (oom)
         return 0;
-    *signature = list_signature(0, both);
+    *signature = lines_signature(0, both);
     double length = 0;
     double *box = s->box[thread];
     for (uint32_t k = 0; k < both.n; k++) {
@@ -261,7 +241,7 @@ static int sample_pair(void *context, int thread, double u, double v, double *va
             return 0;
         length += t1 - t0;
         for (int e = 0; e < 2; e++) {
-            double p[3] = {o[0], o[1], o[2]};
+            double p[3] = {r.o.x, r.o.y, r.o.z};
             p[a] = e ? t1 : t0;
             for (int i = 0; i < 3; i++) {
                 box[i] = fmin(box[i], p[i]);

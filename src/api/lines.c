@@ -1,0 +1,32 @@
+/* The shared pieces of the line integrals: see lines.h. */
+#include "api/lines.h"
+
+#include <math.h>
+
+#include "api/quad.h"
+
+csg_ray lines_axis_ray(int a, double at, double u, double v)
+{
+    double o[3];
+    o[a] = at;
+    o[(a + 1) % 3] = u;
+    o[(a + 2) % 3] = v;
+    csg_ray r;
+    r.o = v3(o[0], o[1], o[2]);
+    r.d = v3(a == 0, a == 1, a == 2);
+    r.tmin = -INFINITY;
+    r.tmax = INFINITY;
+    return r;
+}
+
+uint64_t lines_signature(uint64_t h, span_list s)
+{
+    h = quad_mix(h, s.n);
+    for (uint32_t k = 0; k < s.n; k++) {
+        const span_end *ends[2] = {&s.v[k].in, &s.v[k].out};
+        for (int e = 0; e < 2; e++)
+            h = quad_mix(h, ((uint64_t)ends[e]->leaf << 24) |
+                                ((uint64_t)ends[e]->part << 8) | ends[e]->flip);
+    }
+    return h;
+}

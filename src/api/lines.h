@@ -1,0 +1,20 @@
+/* What the line integrals of the measures, overlaps and comparison share
+ * (measure.c, overlap.c, compare.c): the line of a grid point along an
+ * axis, and the signature of a span list that tells the integrator
+ * (quad.h) whether two neighbouring lines cross the same surfaces. */
+#ifndef SPANCAST_API_LINES_H
+#define SPANCAST_API_LINES_H
+
+#include <stdint.h>
+
+#include "csg/csg.h"
+#include "csg/span.h"
+
+/* The whole line along axis a (0, 1, 2) through the point whose a-th
+ * coordinate is at and whose next two (cyclically) are u and v. */
+csg_ray lines_axis_ray(int a, double at, double u, double v);
+
+/* h mixed with the surfaces of the list's ends, in order. */
+uint64_t lines_signature(uint64_t h, span_list s);
+
+#endif
