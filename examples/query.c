@@ -79,6 +79,7 @@ int main(int argc, char **argv)
     sc_measure_options_init(&options);
     options.tolerance = 1e-3;
     sc_measure m;
+    sc_measure_init(&m); /* sets m.size, so a later, larger sc_measure stays compatible */
     st = sc_scene_measure(scene, &options, &m, &error);
     sc_scene_release(scene);
     if (st != SC_OK)

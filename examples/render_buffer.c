@@ -46,26 +46,33 @@ int main(int argc, char **argv)
         return 1;
     }
 
+    /* The framebuffer is opaque: its size and buffers come from getters,
+     * and the buffers belong to it. */
+    int width = sc_framebuffer_width(fb), height = sc_framebuffer_height(fb);
+    const uint8_t *mask = sc_framebuffer_mask(fb);
+    const float *color = sc_framebuffer_color(fb);
     size_t hits = 0;
     double sum[3] = {0, 0, 0};
-    for (int j = 0; j < fb->height; j++)
-        for (int i = 0; i < fb->width; i++) {
-            size_t k = (size_t)j * (size_t)fb->width + (size_t)i;
-            if (!fb->mask[k])
+    for (int j = 0; j < height; j++)
+        for (int i = 0; i < width; i++) {
+            size_t k = (size_t)j * (size_t)width + (size_t)i;
+            if (!mask[k])
                 continue;
             hits++;
             for (int c = 0; c < 3; c++)
-                sum[c] += fb->color[3 * k + c];
+                sum[c] += color[3 * k + c];
         }
-    size_t centre =
-        (size_t)(fb->height / 2) * (size_t)fb->width + (size_t)(fb->width / 2);
-    printf("image %dx%d\n", fb->width, fb->height);
-    printf("hit pixels %zu of %zu\n", hits, (size_t)fb->width * (size_t)fb->height);
-    printf("centre %s\n", fb->mask[centre] ? "hit" : "miss");
+    size_t centre = (size_t)(height / 2) * (size_t)width + (size_t)(width / 2);
+    printf("image %dx%d\n", width, height);
+    printf("hit pixels %zu of %zu\n", hits, (size_t)width * (size_t)height);
+    printf("centre %s\n", mask[centre] ? "hit" : "miss");
     if (hits)
         printf("mean colour of the solid %.3f %.3f %.3f\n", sum[0] / (double)hits,
                sum[1] / (double)hits, sum[2] / (double)hits);
-    printf("camera rays %llu\n", (unsigned long long)fb->stats.camera_rays);
+    sc_render_stats stats;
+    sc_render_stats_init(&stats);
+    if (sc_framebuffer_get_stats(fb, &stats, &error) == SC_OK)
+        printf("camera rays %llu\n", (unsigned long long)stats.camera_rays);
 
     int status = 0;
     if (argc == 3) {

@@ -37,7 +37,8 @@ static int fuzz_one(const uint8_t *data, size_t size)
             result = -1;
     }
     sc_scene_info info;
-    sc_scene_get_info(scene, &info);
+    sc_scene_info_init(&info);
+    sc_scene_get_info(scene, &info, NULL);
     /* Implicit leaves are loaded and compiled but not rendered here: their
      * root finder's work is bounded only per ray (SOLVE_MAX_EVALS), so a
      * hostile field (a frequency of 1e118, say) costs seconds a ray, and the
@@ -56,7 +57,8 @@ static int fuzz_one(const uint8_t *data, size_t size)
     ro.want_color = ro.want_depth = ro.want_mask = ro.want_normal = 1;
     sc_framebuffer *fb = NULL;
     st = sc_render(scene, &ro, &fb, &error);
-    if (st == SC_OK && (!fb || fb->width != 8 || fb->height != 8))
+    if (st == SC_OK &&
+        (!fb || sc_framebuffer_width(fb) != 8 || sc_framebuffer_height(fb) != 8))
         result = -1;
     if (st != SC_OK && (fb || !error.message[0]))
         result = -1;

@@ -272,7 +272,8 @@ static void test_booleans(void **state)
     assert_true(inside(s, 1.5, 1.5, 1.5));
     assert_true(inside(s, -0.5, 0, 0));
     sc_scene_info info;
-    sc_scene_get_info(s, &info);
+    sc_scene_info_init(&info);
+    assert_int_equal(sc_scene_get_info(s, &info, NULL), SC_OK);
     assert_int_equal(info.node_count, 3);
     assert_int_equal(info.leaf_count, 2);
     assert_int_equal(info.depth, 2);
@@ -306,7 +307,8 @@ static void test_booleans(void **state)
     /* Empty groups and an empty file are the empty solid. */
     s = load("group(); group() { } union() { group(); }");
     assert_true(is_empty(s));
-    sc_scene_get_info(s, &info);
+    sc_scene_info_init(&info);
+    assert_int_equal(sc_scene_get_info(s, &info, NULL), SC_OK);
     assert_int_equal(info.node_count, 0);
     sc_scene_release(s);
     s = load("");
@@ -825,7 +827,8 @@ static void test_openscad_export(void **state)
         fail_msg("%s", sc_error_format(&e, buf, sizeof buf));
     assert_int_equal(sc_scene_warning_count(s), 0);
     sc_scene_info info;
-    sc_scene_get_info(s, &info);
+    sc_scene_info_init(&info);
+    assert_int_equal(sc_scene_get_info(s, &info, NULL), SC_OK);
     assert_int_equal(info.leaf_count, 14); /* the '%' cube is not built */
     double lo[3], hi[3];
     assert_true(sc_scene_bounds(s, lo, hi));
@@ -882,7 +885,8 @@ static void test_deep_nesting(void **state)
     const csg_leaf *l = only_leaf(s);
     assert_true(fabs(l->to_world.m[0][3] - 9.999) < 1e-9);
     sc_scene_info info;
-    sc_scene_get_info(s, &info);
+    sc_scene_info_init(&info);
+    assert_int_equal(sc_scene_get_info(s, &info, NULL), SC_OK);
     assert_int_equal(info.node_count, 1);
     assert_int_equal(info.depth, 1);
     sc_scene_release(s);

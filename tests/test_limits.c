@@ -147,7 +147,8 @@ static void test_deep_render(void **state)
     assert_int_equal(sc_scene_load_string("m.csg", text, strlen(text), NULL, &scene, &e),
                      SC_OK);
     sc_scene_info info;
-    sc_scene_get_info(scene, &info);
+    sc_scene_info_init(&info);
+    assert_int_equal(sc_scene_get_info(scene, &info, NULL), SC_OK);
     assert_int_equal(info.depth, (size_t)levels + 1);
     sc_render_options o;
     sc_render_options_init(&o);

@@ -46,6 +46,7 @@ static void measure_case(const solid_case *c, int threads, sc_measure *m)
     sc_measure_options_init(&o);
     o.tolerance = c->tolerance;
     o.threads = threads;
+    sc_measure_init(m);
     sc_error e;
     if (sc_scene_measure(s, &o, m, &e) != SC_OK)
         fail_msg("%s: %s", c->name, e.message);
@@ -223,6 +224,7 @@ static void test_density(void **state)
     sc_measure_options_init(&o);
     o.density = 7.85e-3;
     sc_measure m;
+    sc_measure_init(&m);
     sc_error e;
     assert_int_equal(sc_scene_measure(s, &o, &m, &e), SC_OK);
     check("mass", "box", m.mass, 24 * 7.85e-3, 1e-6);
@@ -239,6 +241,7 @@ static void test_empty_and_errors(void **state)
     sc_measure_options o;
     sc_measure_options_init(&o);
     sc_measure m;
+    sc_measure_init(&m);
     sc_error e;
     assert_int_equal(sc_scene_measure(s, &o, &m, &e), SC_OK);
     assert_true(m.volume.value == 0 && m.volume.error == 0);

@@ -293,7 +293,7 @@ static void test_pixel_ray_matches_depth(void **state)
                 assert_int_equal(sc_scene_pixel_ray(s, &o, i, j, origin, dir, &e), SC_OK);
                 sc_span_list *list = spans_of(s, origin[0], origin[1], origin[2], dir[0],
                                               dir[1], dir[2], 0);
-                float depth = fb->depth[j * o.width + i];
+                float depth = sc_framebuffer_depth(fb)[j * o.width + i];
                 if (sc_span_list_count(list) == 0) {
                     assert_true(isinf(depth));
                 } else {

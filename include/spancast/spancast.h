@@ -4,11 +4,70 @@
  * spancast's own node types), compiled once into an immutable CSG tree, and
  * rendered into a framebuffer (colour and AOVs) that can be written to any
  * image format OpenImageIO supports. It can also be queried: the spans of a
- * line inside the solid, the camera ray of a pixel, point membership.
- * Handles are opaque; options are plain structs filled by an init function.
- * Every call returns a status and, on failure, fills an sc_error with a
- * message and, where the error comes from input, its source position.
- * Nothing here prints or exits.
+ * line inside the solid, the camera ray of a pixel, point membership, and
+ * integrals over the solid (volume, area, inertia, overlaps, comparison).
+ * Link with `pkg-config --cflags --libs spancast` or CMake's
+ * find_package(spancast) and the target spancast::spancast.
+ *
+ * Stable API. Programs built against this header keep working with every
+ * later libspancast of the same soname (libspancast.so.0); the exported
+ * ABI is recorded in abi/libspancast.abi and checked by the tests. Three
+ * kinds of type cross the API, each with its own rule:
+ *
+ * - Opaque handles (sc_scene, sc_framebuffer, sc_span_list, sc_objects,
+ *   sc_overlap_list): made by one call, read through functions, freed by
+ *   their release call; their layout is private and may change freely.
+ *
+ * - Sized structs (sc_load_options, sc_render_options, sc_ray_query,
+ *   sc_measure_options, and the results sc_scene_info, sc_render_stats,
+ *   sc_measure, sc_comparison): plain structs the caller declares and
+ *   reads by field, whose first field `size` holds sizeof the struct as
+ *   the caller was compiled. Set it up with the struct's init call, a macro
+ *   over sc_X_init_size(&x, sizeof x) that also fills the defaults (zeros
+ *   for a result): `sc_render_options o; sc_render_options_init(&o);`.
+ *   New fields are only ever appended, so a struct may grow in a later
+ *   release: the library reads only the first `size` bytes of options (the
+ *   fields after them keep their defaults) and writes no further than
+ *   `size` into results. A struct that was never set up (a size below any
+ *   release's) is SC_ERR_ARGUMENT, and so are options from a newer header
+ *   than the library (a size above its own). This is the convention of
+ *   SDL3's interfaces and Win32's cbSize: it keeps field access and struct
+ *   copies in the caller, where setters and getters for every option
+ *   (Embree's rtcSet*, libcurl's easy options) would trade them for a call
+ *   per field.
+ *
+ * - Fixed records (sc_error, sc_location, sc_estimate, sc_color_scheme,
+ *   sc_span_end, and the limits SC_ERROR_*_MAX, SC_LEAF_KINDS,
+ *   SC_MAX_SECTIONS, SC_MAX_SHEET): small value types embedded in others,
+ *   frozen for the life of the soname. sc_span and sc_overlap are only
+ *   ever read through pointers the library hands out, so they, too, may
+ *   gain fields at their end.
+ *
+ * Enumerations only gain values at their end. Adding functions, appending
+ * fields to sized structs and adding enumerators are compatible changes;
+ * anything else (removing or changing a function, reordering fields,
+ * changing a fixed record) needs a new soname.
+ *
+ * Errors: every call that can fail returns an sc_status (SC_OK = 0) and
+ * takes `sc_error *error` last; on failure it fills *error (when error is
+ * not NULL) with the status, a message and, where the error comes from
+ * input, its source position; after success *error holds nothing of use.
+ * Nothing here prints, exits, or reads the environment except where a
+ * call says so.
+ *
+ * Ownership: a call that makes a handle gives it to the caller, who
+ * releases it with the matching release call (NULL is ignored by every
+ * release call). Pointers a getter returns point into the handle and stay
+ * valid until it is released. Strings the caller passes are copied or
+ * only read during the call.
+ *
+ * Thread safety: the library has no global mutable state. Handles are
+ * immutable once made, so any number of threads may query, render or
+ * measure the same scene (or read the same framebuffer, span list,
+ * objects or overlap list) at once; a handle must not be released while
+ * another thread uses it. Calls that fill a caller's struct touch nothing
+ * else. Callbacks (progress) are called from one thread at a time, and a
+ * cancel flag may be set from any thread or a signal handler.
  */
 #ifndef SPANCAST_SPANCAST_H
 #define SPANCAST_SPANCAST_H
@@ -25,7 +84,7 @@ extern "C" {
 
 /* The version of the library this program runs with, "MAJOR.MINOR.PATCH";
  * SPANCAST_VERSION_STRING (spancast/version.h) is the version of the header
- * it was compiled with. The string is static; thread safe. */
+ * it was compiled with. The string is static; never fails; thread safe. */
 const char *sc_version(void);
 
 typedef enum sc_status {
@@ -50,6 +109,9 @@ typedef struct sc_location {
 #define SC_ERROR_MESSAGE_MAX 512
 #define SC_ERROR_FILE_MAX 1024
 
+/* What went wrong (a fixed record: see the opening comment). The caller
+ * declares it; the library fills it on failure. Longer file names and
+ * messages are cut to fit. */
 typedef struct sc_error {
     sc_status status;
     char file[SC_ERROR_FILE_MAX]; /* empty when the error has no source file */
@@ -59,37 +121,53 @@ typedef struct sc_error {
 } sc_error;
 
 /* Formats "file:line:col: error: message" (or "error: message" without a
- * position) into buf; returns buf. */
+ * position) into buf, cut to size bytes with its terminating NUL (size > 0);
+ * returns buf. Never fails; thread safe. */
 const char *sc_error_format(const sc_error *error, char *buf, size_t size);
 
 /* ---- scenes ---------------------------------------------------------- */
 
+/* A compiled model: opaque, immutable once loaded. */
 typedef struct sc_scene sc_scene;
 
+/* How a model is loaded (a sized struct). */
 typedef struct sc_load_options {
+    size_t size;  /* sizeof (sc_load_options) as compiled: set by the init call */
     int faithful; /* spheres and cylinders as OpenSCAD's polyhedra for $fn, $fa, $fs */
 } sc_load_options;
 
-void sc_load_options_init(sc_load_options *options);
+/* Sets size and the defaults (faithful 0). Never fails. */
+void sc_load_options_init_size(sc_load_options *options, size_t size);
+#define sc_load_options_init(options)                                                    \
+    sc_load_options_init_size((options), sizeof *(options))
 
-/* Loads and compiles a model file. On success *scene owns everything it
- * needs (release with sc_scene_release); on failure *scene is NULL and
- * error is filled. */
+/* Loads and compiles a model file; options may be NULL (the defaults).
+ * On success *scene owns everything it needs (release with
+ * sc_scene_release); on failure *scene is NULL and error says why:
+ * SC_ERR_IO (the file), SC_ERR_SYNTAX, SC_ERR_SEMANTIC, SC_ERR_UNSUPPORTED
+ * and SC_ERR_LIMIT with the position in the file, SC_ERR_NOMEM,
+ * SC_ERR_ARGUMENT (a NULL path or scene pointer, bad options). Calls
+ * loading different scenes may run at once. */
 sc_status sc_scene_load(const char *path, const sc_load_options *options,
                         sc_scene **scene, sc_error *error);
 
-/* Same, from text in memory; name is used in error positions. */
+/* Same, from length bytes of text in memory (not necessarily
+ * NUL-terminated); name is used in error positions and, as the file's
+ * folder, to find files the model imports. The text is copied. */
 sc_status sc_scene_load_string(const char *name, const char *text, size_t length,
                                const sc_load_options *options, sc_scene **scene,
                                sc_error *error);
 
+/* Frees the scene and everything it owns; NULL is ignored. */
 void sc_scene_release(sc_scene *scene);
 
-/* World bounding box of the solid; returns 0 when the solid is empty. */
+/* World bounding box of the solid into lo and hi; returns 1, or 0 (lo and
+ * hi unset) when the solid is empty. Thread safe. */
 int sc_scene_bounds(const sc_scene *scene, double lo[3], double hi[3]);
 
 /* Warnings collected while loading (e.g. a singular transform flattened to an
- * empty solid), in source order. */
+ * empty solid), in source order: their number, and warning index (NULL
+ * past the last; it belongs to the scene). Thread safe. */
 size_t sc_scene_warning_count(const sc_scene *scene);
 const sc_error *sc_scene_warning(const sc_scene *scene, size_t index);
 
@@ -98,6 +176,7 @@ const sc_error *sc_scene_warning(const sc_scene *scene, size_t index);
 #define SC_LEAF_KINDS 16
 
 typedef struct sc_scene_info {
+    size_t size;       /* sizeof (sc_scene_info) as compiled: set by the init call */
     size_t node_count; /* boolean nodes and leaves of the compiled tree */
     size_t leaf_count;
     size_t depth;
@@ -113,10 +192,18 @@ typedef struct sc_scene_info {
     size_t checker_leaves; /* leaves with a checkerboard material */
 } sc_scene_info;
 
-/* Name of leaf kind index k ("sphere", "box", ...), NULL past the last. */
+/* Name of leaf kind index k ("sphere", "box", ...), NULL past the last or
+ * for k < 0. Static strings; thread safe. */
 const char *sc_leaf_kind_name(int k);
 
-void sc_scene_get_info(const sc_scene *scene, sc_scene_info *info);
+/* Sets size and zeroes the rest. Never fails. */
+void sc_scene_info_init_size(sc_scene_info *info, size_t size);
+#define sc_scene_info_init(info) sc_scene_info_init_size((info), sizeof *(info))
+
+/* Fills *info (set up by sc_scene_info_init) with the scene's statistics.
+ * SC_ERR_ARGUMENT for a NULL scene or info or one never set up. Thread
+ * safe. */
+sc_status sc_scene_get_info(const sc_scene *scene, sc_scene_info *info, sc_error *error);
 
 /* ---- rendering ------------------------------------------------------- */
 
@@ -153,7 +240,8 @@ typedef struct sc_color_scheme {
  * in; sc_color_scheme_find reads it when given no other. */
 #define SC_COLOR_SCHEME_FOLDER "/usr/share/openscad/color-schemes/render"
 
-/* Fills scheme with OpenSCAD's built-in scheme, Cornfield. */
+/* Fills scheme with OpenSCAD's built-in scheme, Cornfield. Never fails;
+ * thread safe. */
 void sc_color_scheme_default(sc_color_scheme *scheme);
 
 /* Finds the scheme called name (as OpenSCAD names it: "Cornfield",
@@ -161,7 +249,8 @@ void sc_color_scheme_default(sc_color_scheme *scheme);
  * are read from the *.json files of folder (NULL: SC_COLOR_SCHEME_FOLDER),
  * as OpenSCAD reads them; a file that is not a valid scheme is passed
  * over, as OpenSCAD passes it over. An unknown name is SC_ERR_ARGUMENT
- * with a message listing the names there are. */
+ * with a message listing the names there are; SC_ERR_NOMEM. On failure
+ * scheme is left as it was. Reads the folder's files; thread safe. */
 sc_status sc_color_scheme_find(const char *name, const char *folder,
                                sc_color_scheme *scheme, sc_error *error);
 
@@ -194,14 +283,16 @@ typedef enum sc_view_preset {
 } sc_view_preset;
 
 /* The preset's name ("top", ...), NULL for SC_VIEW_PRESET_NONE or an
- * unknown value. */
+ * unknown value. Static strings; thread safe. */
 const char *sc_view_preset_name(sc_view_preset preset);
 
-/* The preset called name, SC_VIEW_PRESET_NONE when there is none. */
+/* The preset called name, SC_VIEW_PRESET_NONE when there is none (or name
+ * is NULL). Thread safe. */
 sc_view_preset sc_view_preset_from_name(const char *name);
 
 /* The preset's rotation as OpenSCAD's $vpr (degrees), for the gimbal
- * camera; returns 0 for SC_VIEW_PRESET_NONE. */
+ * camera, into rotation; returns 1, or 0 (rotation unset) for
+ * SC_VIEW_PRESET_NONE or an unknown value. Thread safe. */
 int sc_view_preset_rotation(sc_view_preset preset, double rotation[3]);
 
 #define SC_MAX_SECTIONS 8 /* --section planes */
@@ -212,7 +303,9 @@ typedef enum sc_section_style {
     SC_SECTION_HATCH      /* caps hatched at 45 degrees */
 } sc_section_style;
 
+/* How sc_render renders (a sized struct; fields may be appended). */
 typedef struct sc_render_options {
+    size_t size;       /* sizeof (sc_render_options) as compiled: set by the init call */
     int width, height; /* image size in pixels (default 800 x 600) */
     sc_camera_mode camera_mode;
     double camera[7]; /* see sc_camera_mode */
@@ -267,17 +360,22 @@ typedef struct sc_render_options {
     sc_view_preset sheet[SC_MAX_SHEET];
 } sc_render_options;
 
-void sc_render_options_init(sc_render_options *options);
+/* Sets size and the defaults written beside each field. Never fails. */
+void sc_render_options_init_size(sc_render_options *options, size_t size);
+#define sc_render_options_init(options)                                                  \
+    sc_render_options_init_size((options), sizeof *(options))
 
 /* Applies the scene's own settings to options: a camera() node in the file
  * sets camera_mode (SC_CAMERA_VECTOR), camera, up, fov_deg and projection.
  * Call it after sc_render_options_init and before applying the user's own
  * choices, so that those override the file. Returns 1 when the file has a
- * camera, else 0 (options unchanged). */
+ * camera, else 0 (options unchanged, also for a NULL scene). Writes only
+ * those fields; thread safe. */
 int sc_render_options_from_scene(sc_render_options *options, const sc_scene *scene);
 
 /* Counters of one render, summed over threads. */
 typedef struct sc_render_stats {
+    size_t size; /* sizeof (sc_render_stats) as compiled: set by the init call */
     /* camera_rays counts edge lines' neighbour rays too; shadow_rays the
      * ambient occlusion rays */
     uint64_t camera_rays, shadow_rays, reflection_rays, refraction_rays;
@@ -291,29 +389,58 @@ typedef struct sc_render_stats {
     int threads;              /* threads that rendered */
 } sc_render_stats;
 
-/* The rendered image: row-major, row 0 at the top. Buffers not asked for are
- * NULL. */
-typedef struct sc_framebuffer {
-    int width, height;
-    float *color;  /* RGB, 3 floats per pixel, scene-linear (sRGB primaries), >= 0 */
-    float *depth;  /* distance along the ray to the hit, +inf on a miss */
-    uint8_t *mask; /* 255 where the camera ray hits, 0 elsewhere */
-    float *normal; /* world normal, 3 floats per pixel, 0 on a miss */
-    int32_t *id;   /* index of the leaf the camera ray hit (source order), -1 on a miss */
-    int x0, y0;    /* where this image lies in the full image (--region), else 0 */
-    char camera_info[256]; /* the camera in words, for the files' metadata */
-    sc_render_stats stats;
-    const volatile sig_atomic_t *cancel; /* the render options' cancel flag */
-} sc_framebuffer;
+/* Sets size and zeroes the rest. Never fails. */
+void sc_render_stats_init_size(sc_render_stats *stats, size_t size);
+#define sc_render_stats_init(stats) sc_render_stats_init_size((stats), sizeof *(stats))
 
-/* Renders the scene. On success *framebuffer is owned by the caller (release
- * with sc_framebuffer_release). The buffers' size is checked before they are
- * allocated: more than 16 GiB, or more than the machine's memory, is
- * SC_ERR_LIMIT (docs/limits.md). */
+/* A rendered image (opaque): its buffers are row-major, row 0 at the top. */
+typedef struct sc_framebuffer sc_framebuffer;
+
+/* Renders the scene; options may be NULL (the defaults). On success
+ * *framebuffer is owned by the caller (release with
+ * sc_framebuffer_release); on failure it is NULL and error says why:
+ * SC_ERR_ARGUMENT for bad options (an image size, camera or region out of
+ * range, options never set up), SC_ERR_LIMIT when the buffers would take
+ * more than 16 GiB or more than the machine's memory (checked before they
+ * are allocated; docs/limits.md), SC_ERR_CANCELLED, SC_ERR_NOMEM. It runs
+ * on options->threads threads of its own (OpenMP); several renders of one
+ * scene may run at once. */
 sc_status sc_render(const sc_scene *scene, const sc_render_options *options,
                     sc_framebuffer **framebuffer, sc_error *error);
 
+/* Frees the framebuffer and its buffers; NULL is ignored. */
 void sc_framebuffer_release(sc_framebuffer *framebuffer);
+
+/* The image's size in pixels: the region's when the options asked for one,
+ * else the whole image's (a contact sheet's: all its tiles). */
+int sc_framebuffer_width(const sc_framebuffer *fb);
+int sc_framebuffer_height(const sc_framebuffer *fb);
+
+/* Where this image lies in the whole image (the options' region), into
+ * *x0 and *y0; 0, 0 without a region. */
+void sc_framebuffer_offset(const sc_framebuffer *fb, int *x0, int *y0);
+
+/* The buffers the options asked for (want_color, ...), NULL for the others.
+ * They belong to the framebuffer, width * height pixels each. */
+/* RGB, 3 floats per pixel, scene-linear (sRGB primaries), >= 0 */
+const float *sc_framebuffer_color(const sc_framebuffer *fb);
+/* distance along the ray to the hit (t * |direction|), +inf on a miss */
+const float *sc_framebuffer_depth(const sc_framebuffer *fb);
+/* 255 where the camera ray hits, 0 elsewhere */
+const uint8_t *sc_framebuffer_mask(const sc_framebuffer *fb);
+/* world normal, 3 floats per pixel, 0 on a miss */
+const float *sc_framebuffer_normal(const sc_framebuffer *fb);
+/* index of the leaf the camera ray hit (source order), -1 on a miss */
+const int32_t *sc_framebuffer_id(const sc_framebuffer *fb);
+
+/* The camera in words, as the image files' metadata carry it; belongs to
+ * the framebuffer. */
+const char *sc_framebuffer_camera_info(const sc_framebuffer *fb);
+
+/* The render's counters into *stats (set up by sc_render_stats_init).
+ * SC_ERR_ARGUMENT for NULL arguments or stats never set up. */
+sc_status sc_framebuffer_get_stats(const sc_framebuffer *fb, sc_render_stats *stats,
+                                   sc_error *error);
 
 /* Image output through OpenImageIO; the format follows the file extension.
  * Colour goes to 8-bit formats (PNG, JPEG, ...) sRGB-encoded, to float
@@ -322,7 +449,11 @@ void sc_framebuffer_release(sc_framebuffer *framebuffer);
  * Each writes a temporary file in the target's folder and renames it into
  * place, so a failure never leaves a partial file or destroys an existing
  * one. When fb->cancel is set before the rename, the temporary is removed,
- * the target is left as it was and the call returns SC_ERR_CANCELLED. */
+ * the target is left as it was and the call returns SC_ERR_CANCELLED.
+ * Errors: SC_ERR_IO (the message names the file and the reason),
+ * SC_ERR_UNSUPPORTED for a format that needs the OpenImageIO plugin when
+ * it cannot be loaded, SC_ERR_ARGUMENT for a buffer the render did not
+ * fill, SC_ERR_NOMEM. Calls writing different files may run at once. */
 sc_status sc_framebuffer_write_color(const sc_framebuffer *fb, const char *path,
                                      sc_error *error);
 sc_status sc_framebuffer_write_mask(const sc_framebuffer *fb, const char *path,
@@ -342,13 +473,15 @@ sc_status sc_framebuffer_write_id(const sc_framebuffer *fb, const char *path,
  * not be unit length, and t is in its units (the distance along the ray is
  * t * |direction|, as in the camera contract). */
 typedef struct sc_ray_query {
+    size_t size; /* sizeof (sc_ray_query) as compiled: set by the init call */
     double origin[3];
     double direction[3]; /* finite, not zero */
     int both_ways;       /* 0 (default): the ray t >= 0; 1: the whole line */
 } sc_ray_query;
 
-/* Sets origin and direction to 0 and both_ways to 0. */
-void sc_ray_query_init(sc_ray_query *query);
+/* Sets size, origin and direction to 0 and both_ways to 0. Never fails. */
+void sc_ray_query_init_size(sc_ray_query *query, size_t size);
+#define sc_ray_query_init(query) sc_ray_query_init_size((query), sizeof *(query))
 
 /* One end of a span: where the ray enters (in) or leaves (out) the solid. */
 typedef struct sc_span_end {
@@ -369,11 +502,13 @@ typedef struct sc_span_end {
                               difference's later operand), its normal flipped */
 } sc_span_end;
 
+/* One span (read through sc_span_list_get; may gain fields at its end). */
 typedef struct sc_span {
     sc_span_end in, out; /* in.t < out.t */
     double distance;     /* (out.t - in.t) * |direction|: the length inside */
 } sc_span;
 
+/* The spans of one line (opaque). */
 typedef struct sc_span_list sc_span_list;
 
 /* ALL_SPANS for one line: the sorted, disjoint intervals of the query's
@@ -382,12 +517,12 @@ typedef struct sc_span_list sc_span_list;
  * *out belongs to the caller (release with sc_span_list_release) and may
  * hold no spans; on failure *out is NULL and error says why:
  * SC_ERR_ARGUMENT for a direction that is zero or a value that is not
- * finite, SC_ERR_NOMEM. The scene is only read: calls on one scene from
- * several threads at once are safe. */
+ * finite or a query never set up, SC_ERR_NOMEM. The scene is only read: calls on one
+ * scene from several threads at once are safe. */
 sc_status sc_scene_spans(const sc_scene *scene, const sc_ray_query *query,
                          sc_span_list **out, sc_error *error);
 
-/* The number of spans. */
+/* The number of spans; 0 for NULL. Thread safe. */
 size_t sc_span_list_count(const sc_span_list *list);
 
 /* Span index (0 = nearest along the direction), or NULL past the last. The
@@ -434,9 +569,10 @@ sc_status sc_scene_inside(const sc_scene *scene, const double p[3], int *where,
  * three axes, refined where the estimated error is largest until it is
  * within tolerance (docs/measure.md). */
 typedef struct sc_measure_options {
-    double tolerance;   /* relative error aimed at (default 1e-4) */
-    double density;     /* mass per unit volume, for mass and inertia (default 1) */
-    int threads;        /* 0 (default): all cores; the result does not depend on it */
+    size_t size;      /* sizeof (sc_measure_options) as compiled: set by the init call */
+    double tolerance; /* relative error aimed at (default 1e-4) */
+    double density;   /* mass per unit volume, for mass and inertia (default 1) */
+    int threads;      /* 0 (default): all cores; the result does not depend on it */
     uint64_t max_lines; /* lines per axis before giving up on the tolerance
                            (default 4,000,000) */
     /* Called from the calling thread with the fraction done (0..1), as
@@ -446,7 +582,10 @@ typedef struct sc_measure_options {
     const volatile sig_atomic_t *cancel; /* as sc_render_options.cancel */
 } sc_measure_options;
 
-void sc_measure_options_init(sc_measure_options *options);
+/* Sets size and the defaults written beside each field. Never fails. */
+void sc_measure_options_init_size(sc_measure_options *options, size_t size);
+#define sc_measure_options_init(options)                                                 \
+    sc_measure_options_init_size((options), sizeof *(options))
 
 /* A measured value and a bound on its error: the true value lies within
  * value +- error when the integrand has no feature smaller than the grid
@@ -457,6 +596,7 @@ typedef struct sc_estimate {
 } sc_estimate;
 
 typedef struct sc_measure {
+    size_t size; /* sizeof (sc_measure) as compiled: set by the init call */
     sc_estimate volume;
     sc_estimate area;
     sc_estimate mass;        /* volume * density */
@@ -474,13 +614,20 @@ typedef struct sc_measure {
     int threads;              /* threads used */
 } sc_measure;
 
-/* Volume, surface area, centroid, inertia and tight box of the solid. An
- * empty solid measures 0. Returns SC_ERR_ARGUMENT for an unbounded solid
- * or bad options, SC_ERR_CANCELLED, SC_ERR_NOMEM. Thread safe. */
+/* Sets size and zeroes the rest. Never fails. */
+void sc_measure_init_size(sc_measure *measure, size_t size);
+#define sc_measure_init(measure) sc_measure_init_size((measure), sizeof *(measure))
+
+/* Volume, surface area, centroid, inertia and tight box of the solid into
+ * *out (set up by sc_measure_init). An empty solid measures 0. Returns
+ * SC_ERR_ARGUMENT for an unbounded solid, bad options or structs never set
+ * up, SC_ERR_CANCELLED, SC_ERR_NOMEM. Runs on options->threads threads of
+ * its own; several measures of one scene may run at once. */
 sc_status sc_scene_measure(const sc_scene *scene, const sc_measure_options *options,
                            sc_measure *out, sc_error *error);
 
-/* One pair of top-level objects whose interiors overlap. */
+/* One pair of top-level objects whose interiors overlap (read through
+ * sc_overlap_list_get; may gain fields at its end). */
 typedef struct sc_overlap {
     size_t a, b;        /* object indices, a < b (sc_objects_location) */
     sc_estimate volume; /* volume of the intersection */
@@ -488,45 +635,85 @@ typedef struct sc_overlap {
     double box_hi[3];
 } sc_overlap;
 
+/* The top-level objects of a model (opaque). */
 typedef struct sc_objects sc_objects;
+
+/* The overlapping pairs sc_objects_overlaps finds (opaque). */
+typedef struct sc_overlap_list sc_overlap_list;
 
 /* Loads the top-level objects of a model file, each as a scene of its own
  * (keeping the transforms above it): the statements at the top of the
  * file, or, where there is only one, the children of the group, union,
  * render, color or multmatrix node it is, descending while such a node has
- * a single child. On success *out belongs to the caller (sc_objects_release). */
+ * a single child. options may be NULL (the defaults). On success *out
+ * belongs to the caller (sc_objects_release); on failure it is NULL and
+ * error says why, as sc_scene_load's. */
 sc_status sc_objects_load(const char *path, const sc_load_options *options,
                           sc_objects **out, sc_error *error);
+
+/* The number of objects; 0 for NULL. Thread safe. */
 size_t sc_objects_count(const sc_objects *objects);
+
+/* Object index as a scene (it belongs to objects: never release it), NULL
+ * past the last. Thread safe. */
 const sc_scene *sc_objects_scene(const sc_objects *objects, size_t index);
+
+/* Where object index is written (file points into objects), no position
+ * past the last. Thread safe. */
 sc_location sc_objects_location(const sc_objects *objects, size_t index);
-const char *sc_objects_name(const sc_objects *objects, size_t index); /* node name */
+
+/* Object index's node name ("cube", "difference", ...; points into
+ * objects), NULL past the last. Thread safe. */
+const char *sc_objects_name(const sc_objects *objects, size_t index);
+
+/* Frees the objects and their scenes; NULL is ignored. */
 void sc_objects_release(sc_objects *objects);
 
 /* The pairs of objects whose common interior has a volume (solids that only
- * touch within the scene tolerance have none), in order of (a, b), into
- * *pairs (malloc'd, free with free(); NULL when none) and *count. The
- * volume is integrated to options->tolerance relative to itself (or to a
- * millionth of the box the pair shares, when smaller). Thread safe. */
+ * touch within the scene tolerance have none), in order of (a, b). On
+ * success *out belongs to the caller (sc_overlap_list_release) and may hold
+ * no pairs; on failure it is NULL and error says why: SC_ERR_ARGUMENT (bad
+ * or uninitialised options), SC_ERR_CANCELLED, SC_ERR_NOMEM. The volume is
+ * integrated to options->tolerance relative to itself (or to a millionth
+ * of the box the pair shares, when smaller). Runs on options->threads
+ * threads of its own; thread safe. */
 sc_status sc_objects_overlaps(const sc_objects *objects,
-                              const sc_measure_options *options, sc_overlap **pairs,
-                              size_t *count, sc_error *error);
+                              const sc_measure_options *options, sc_overlap_list **out,
+                              sc_error *error);
+
+/* The number of pairs; 0 for NULL. Thread safe. */
+size_t sc_overlap_list_count(const sc_overlap_list *list);
+
+/* Pair index, or NULL past the last; valid until the list is released.
+ * Thread safe. */
+const sc_overlap *sc_overlap_list_get(const sc_overlap_list *list, size_t index);
+
+/* Frees the list; NULL is ignored. */
+void sc_overlap_list_release(sc_overlap_list *list);
 
 /* Loads a closed mesh file (.stl, ASCII or binary, or .off) as a scene, as
- * the model import(file = path) would. */
+ * the model import(file = path) would; ownership and errors as
+ * sc_scene_load's. */
 sc_status sc_scene_load_mesh(const char *path, const sc_load_options *options,
                              sc_scene **scene, sc_error *error);
 
 typedef struct sc_comparison {
+    size_t size; /* sizeof (sc_comparison) as compiled: set by the init call */
     sc_estimate volume_a, volume_b;
     sc_estimate only_a, only_b; /* volume of a minus b, of b minus a */
     sc_estimate difference;     /* the symmetric difference: only_a + only_b */
     uint64_t lines;
 } sc_comparison;
 
-/* Volumes of two solids and of their differences, from both span lists
- * along the same lines; the differences are integrated to
- * options->tolerance times the mean of the two volumes. Thread safe. */
+/* Sets size and zeroes the rest. Never fails. */
+void sc_comparison_init_size(sc_comparison *comparison, size_t size);
+#define sc_comparison_init(comparison)                                                   \
+    sc_comparison_init_size((comparison), sizeof *(comparison))
+
+/* Volumes of two solids and of their differences into *out (set up by
+ * sc_comparison_init), from both span lists along the same lines; the
+ * differences are integrated to options->tolerance times the mean of the
+ * two volumes. Errors as sc_scene_measure's. Thread safe. */
 sc_status sc_scene_compare(const sc_scene *a, const sc_scene *b,
                            const sc_measure_options *options, sc_comparison *out,
                            sc_error *error);

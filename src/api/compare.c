@@ -28,7 +28,9 @@
 #include "api/lines.h"
 #include "api/quad.h"
 #include "base/arena.h"
+#include "api/options.h"
 #include "base/error.h"
+#include "base/sized.h"
 #include "build/scene.h"
 #include "csg/csg.h"
 #include "csg/span.h"
@@ -116,9 +118,10 @@ static int sample_compare(void *context, int thread, double u, double v, double 
     return 1;
 }
 
-sc_status sc_scene_compare(const sc_scene *a, const sc_scene *b,
-                           const sc_measure_options *options, sc_comparison *out,
-                           sc_error *error)
+/* sc_scene_compare with the library's own options and result structs. */
+static sc_status compare_scenes(const sc_scene *a, const sc_scene *b,
+                                const sc_measure_options *options, sc_comparison *out,
+                                sc_error *error)
 {
     err_clear(error);
     if (!a || !b || !options || !out)
@@ -186,4 +189,31 @@ sc_status sc_scene_compare(const sc_scene *a, const sc_scene *b,
     if (st)
         return err_nomem(error, NULL);
     return SC_OK;
+}
+
+void sc_comparison_init_size(sc_comparison *comparison, size_t size)
+{
+    if (comparison && size >= sizeof comparison->size)
+        sized_clear(comparison, size);
+}
+
+sc_status sc_scene_compare(const sc_scene *a, const sc_scene *b,
+                           const sc_measure_options *options, sc_comparison *out,
+                           sc_error *error)
+{
+    err_clear(error);
+    if (!a || !b || !options || !out)
+        return err_set(error, SC_ERR_ARGUMENT, NULL, "no scenes, options or result");
+    sc_measure_options o;
+    sc_comparison c;
+    sc_comparison_init(&c);
+    sc_status st = options_measure(options, &o, error);
+    if (st == SC_OK)
+        st = sized_check(out, SIZED_MIN(sc_comparison, lines), "sc_comparison", error);
+    if (st != SC_OK)
+        return st;
+    st = compare_scenes(a, b, &o, &c, error);
+    sized_write(out, &c, sizeof c, SIZED_MIN(sc_comparison, lines), "sc_comparison",
+                NULL);
+    return st;
 }

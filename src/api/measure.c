@@ -43,16 +43,31 @@
 #include "api/lines.h"
 #include "api/quad.h"
 #include "base/arena.h"
+#include "api/options.h"
 #include "base/error.h"
+#include "base/sized.h"
 #include "build/scene.h"
 #include "csg/csg.h"
 
-void sc_measure_options_init(sc_measure_options *options)
+void sc_measure_options_init_size(sc_measure_options *options, size_t size)
 {
-    memset(options, 0, sizeof *options);
-    options->tolerance = 1e-4;
-    options->density = 1;
-    options->max_lines = 4000000;
+    if (!options || size < sizeof options->size)
+        return;
+    /* The defaults in full, then as much of them as the caller's struct
+     * holds (base/sized.h). */
+    sc_measure_options o;
+    sized_clear(&o, sizeof o);
+    o.tolerance = 1e-4;
+    o.density = 1;
+    o.max_lines = 4000000;
+    memcpy(options, &o, size < sizeof o ? size : sizeof o);
+    options->size = size;
+}
+
+void sc_measure_init_size(sc_measure *measure, size_t size)
+{
+    if (measure && size >= sizeof measure->size)
+        sized_clear(measure, size);
 }
 
 enum {
@@ -288,8 +303,9 @@ static void derive(const quad_grid grids[3], const measure_shared *s, double den
     }
 }
 
-sc_status sc_scene_measure(const sc_scene *scene, const sc_measure_options *options,
-                           sc_measure *out, sc_error *error)
+/* sc_scene_measure with the library's own options and result structs. */
+static sc_status measure_scene(const sc_scene *scene, const sc_measure_options *options,
+                               sc_measure *out, sc_error *error)
 {
     err_clear(error);
     if (!scene || !options || !out)
@@ -387,4 +403,23 @@ sc_status sc_scene_measure(const sc_scene *scene, const sc_measure_options *opti
     if (st)
         return err_nomem(error, NULL);
     return SC_OK;
+}
+
+sc_status sc_scene_measure(const sc_scene *scene, const sc_measure_options *options,
+                           sc_measure *out, sc_error *error)
+{
+    err_clear(error);
+    if (!scene || !options || !out)
+        return err_set(error, SC_ERR_ARGUMENT, NULL, "no scene, options or result");
+    sc_measure_options o;
+    sc_measure m;
+    sc_measure_init(&m);
+    sc_status st = options_measure(options, &o, error);
+    if (st == SC_OK)
+        st = sized_check(out, SIZED_MIN(sc_measure, threads), "sc_measure", error);
+    if (st != SC_OK)
+        return st;
+    st = measure_scene(scene, &o, &m, error);
+    sized_write(out, &m, sizeof m, SIZED_MIN(sc_measure, threads), "sc_measure", NULL);
+    return st;
 }

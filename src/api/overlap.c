@@ -23,6 +23,7 @@
 #include "api/lines.h"
 #include "api/quad.h"
 #include "base/arena.h"
+#include "api/options.h"
 #include "base/error.h"
 #include "build/build.h"
 #include "build/scene.h"
@@ -132,9 +133,15 @@ sc_status sc_objects_load(const char *path, const sc_load_options *options,
                           sc_objects **out, sc_error *error)
 {
     err_clear(error);
+    if (!out)
+        return err_set(error, SC_ERR_ARGUMENT, NULL, "no result pointer");
     *out = NULL;
     if (!path)
         return err_set(error, SC_ERR_ARGUMENT, NULL, "no file name");
+    sc_load_options lo;
+    sc_status st = options_load(options, &lo, error);
+    if (st != SC_OK)
+        return st;
     sc_objects *o = calloc(1, sizeof *o);
     if (!o || !(o->path = copy_string(path))) {
         free(o);
@@ -147,7 +154,7 @@ sc_status sc_objects_load(const char *path, const sc_load_options *options,
         sc_objects_release(o);
         return err_set(error, SC_ERR_IO, NULL, "cannot read '%s': %s", path, why);
     }
-    sc_status st = parse_text(o->path, text, length, &o->syntax, error);
+    st = parse_text(o->path, text, length, &o->syntax, error);
     free(text);
     if (st) {
         sc_objects_release(o);
@@ -171,7 +178,7 @@ sc_status sc_objects_load(const char *path, const sc_load_options *options,
         if (counts(c))
             o->nodes[o->count++] = c;
     for (size_t k = 0; k < o->count; k++) {
-        st = build_object(o, k, options && options->faithful, error);
+        st = build_object(o, k, lo.faithful, error);
         if (st) {
             sc_objects_release(o);
             return st;
@@ -311,9 +318,11 @@ static sc_status overlap_pair(const csg_tree *ta, const csg_tree *tb, const doub
     return st;
 }
 
-sc_status sc_objects_overlaps(const sc_objects *objects,
-                              const sc_measure_options *options, sc_overlap **pairs,
-                              size_t *count, sc_error *error)
+/* sc_objects_overlaps with the library's own options: the pairs into
+ * *pairs (malloc'd; NULL when none) and *count. */
+static sc_status find_overlaps(const sc_objects *objects,
+                               const sc_measure_options *options, sc_overlap **pairs,
+                               size_t *count, sc_error *error)
 {
     err_clear(error);
     *pairs = NULL;
@@ -386,4 +395,53 @@ sc_status sc_objects_overlaps(const sc_objects *objects,
         options->progress(options->progress_user, 1);
     *pairs = list;
     return SC_OK;
+}
+
+struct sc_overlap_list {
+    sc_overlap *pairs;
+    size_t count;
+};
+
+sc_status sc_objects_overlaps(const sc_objects *objects,
+                              const sc_measure_options *options, sc_overlap_list **out,
+                              sc_error *error)
+{
+    err_clear(error);
+    if (!out)
+        return err_set(error, SC_ERR_ARGUMENT, NULL, "no result pointer");
+    *out = NULL;
+    if (!objects || !options)
+        return err_set(error, SC_ERR_ARGUMENT, NULL, "no objects or no options");
+    sc_measure_options o;
+    sc_status st = options_measure(options, &o, error);
+    if (st != SC_OK)
+        return st;
+    sc_overlap_list *list = calloc(1, sizeof *list);
+    if (!list)
+        return err_nomem(error, NULL);
+    st = find_overlaps(objects, &o, &list->pairs, &list->count, error);
+    if (st != SC_OK) {
+        sc_overlap_list_release(list);
+        return st;
+    }
+    *out = list;
+    return SC_OK;
+}
+
+size_t sc_overlap_list_count(const sc_overlap_list *list)
+{
+    return list ? list->count : 0;
+}
+
+const sc_overlap *sc_overlap_list_get(const sc_overlap_list *list, size_t index)
+{
+    return list && index < list->count ? &list->pairs[index] : NULL;
+}
+
+void sc_overlap_list_release(sc_overlap_list *list)
+{
+    if (!list)
+        return;
+    free(list->pairs);
+    free(list);
 }

@@ -15,20 +15,24 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "api/options.h"
 #include "base/arena.h"
 #include "base/error.h"
+#include "base/sized.h"
 #include "build/scene.h"
 #include "csg/csg.h"
 #include "render/camera.h"
+#include "render/render.h"
 
 struct sc_span_list {
     size_t count;
     sc_span spans[]; /* count of them */
 };
 
-void sc_ray_query_init(sc_ray_query *query)
+void sc_ray_query_init_size(sc_ray_query *query, size_t size)
 {
-    memset(query, 0, sizeof *query);
+    if (query && size >= sizeof query->size)
+        sized_clear(query, size);
 }
 
 static int finite3(const double v[3])
@@ -76,9 +80,16 @@ sc_status sc_scene_spans(const sc_scene *scene, const sc_ray_query *query,
                          sc_span_list **out, sc_error *error)
 {
     err_clear(error);
+    if (!out)
+        return err_set(error, SC_ERR_ARGUMENT, NULL, "no result pointer");
     *out = NULL;
     if (!scene || !query)
         return err_set(error, SC_ERR_ARGUMENT, NULL, "no scene or no query");
+    sc_ray_query own;
+    sc_status st0 = options_ray_query(query, &own, error);
+    if (st0 != SC_OK)
+        return st0;
+    query = &own;
     if (!finite3(query->origin) || !finite3(query->direction))
         return err_set(error, SC_ERR_ARGUMENT, NULL, "ray values must be finite");
     const csg_tree *t = scene_tree(scene);
@@ -133,8 +144,16 @@ sc_status sc_scene_pixel_ray(const sc_scene *scene, const sc_render_options *opt
                              sc_error *error)
 {
     err_clear(error);
-    if (!scene || !options)
-        return err_set(error, SC_ERR_ARGUMENT, NULL, "no scene or no options");
+    if (!scene || !options || !origin || !direction)
+        return err_set(error, SC_ERR_ARGUMENT, NULL, "no scene, options or result");
+    sc_render_options own;
+    render_options_defaults(&own);
+    sc_status st0 =
+        sized_read(&own, sizeof own, options, SIZED_MIN(sc_render_options, sheet),
+                   "sc_render_options", error);
+    if (st0 != SC_OK)
+        return st0;
+    options = &own;
     const csg_tree *t = scene_tree(scene);
     /* The bounds and the two calls of sc_render (render.c). */
     bbox bounds = t->root == CSG_EMPTY ? bbox_empty() : t->bounds;

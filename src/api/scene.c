@@ -13,14 +13,17 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "api/options.h"
 #include "base/error.h"
+#include "base/sized.h"
 #include "build/build.h"
 #include "model/model.h"
 #include "syntax/parse.h"
 
-void sc_load_options_init(sc_load_options *options)
+void sc_load_options_init_size(sc_load_options *options, size_t size)
 {
-    memset(options, 0, sizeof *options);
+    if (options && size >= sizeof options->size)
+        sized_clear(options, size);
 }
 
 static char *copy_string(const char *s)
@@ -37,22 +40,28 @@ sc_status sc_scene_load_string(const char *name, const char *text, size_t length
                                sc_error *error)
 {
     err_clear(error);
+    if (!scene)
+        return err_set(error, SC_ERR_ARGUMENT, NULL, "no scene pointer");
     *scene = NULL;
     if (!text && length)
         return err_set(error, SC_ERR_ARGUMENT, NULL, "no text to load");
+    sc_load_options own;
+    sc_status st = options_load(options, &own, error);
+    if (st != SC_OK)
+        return st;
     sc_scene *s = calloc(1, sizeof *s);
     if (!s || !(s->path = copy_string(name ? name : "<string>"))) {
         free(s);
         return err_nomem(error, NULL);
     }
     parse_tree *syntax = NULL;
-    sc_status st = parse_text(s->path, text ? text : "", length, &syntax, error);
+    st = parse_text(s->path, text ? text : "", length, &syntax, error);
     model *typed = NULL;
     if (st == SC_OK)
         st = model_lower(syntax, &typed, error);
     if (st == SC_OK)
-        st = build_scene(typed, options && options->faithful, &s->tree, &s->look,
-                         &s->warnings, &s->warning_count, error);
+        st = build_scene(typed, own.faithful, &s->tree, &s->look, &s->warnings,
+                         &s->warning_count, error);
     model_free(typed);
     parse_tree_free(syntax);
     if (st != SC_OK) {
@@ -109,6 +118,8 @@ sc_status sc_scene_load(const char *path, const sc_load_options *options,
                         sc_scene **scene, sc_error *error)
 {
     err_clear(error);
+    if (!scene)
+        return err_set(error, SC_ERR_ARGUMENT, NULL, "no scene pointer");
     *scene = NULL;
     if (!path)
         return err_set(error, SC_ERR_ARGUMENT, NULL, "no file name");
@@ -162,9 +173,29 @@ const sc_error *sc_scene_warning(const sc_scene *scene, size_t index)
 
 /* The compiled tree holds only what its root reaches, so its arrays are
  * the counts; the source figures were measured when it was compiled. */
-void sc_scene_get_info(const sc_scene *scene, sc_scene_info *info)
+static void scene_info(const sc_scene *scene, sc_scene_info *info);
+
+void sc_scene_info_init_size(sc_scene_info *info, size_t size)
 {
-    memset(info, 0, sizeof *info);
+    if (info && size >= sizeof info->size)
+        sized_clear(info, size);
+}
+
+sc_status sc_scene_get_info(const sc_scene *scene, sc_scene_info *out, sc_error *error)
+{
+    if (!scene || !out)
+        return err_set(error, SC_ERR_ARGUMENT, NULL,
+                       "sc_scene_get_info needs a scene and a result");
+    sc_scene_info info;
+    scene_info(scene, &info);
+    return sized_write(out, &info, sizeof info, SIZED_MIN(sc_scene_info, checker_leaves),
+                       "sc_scene_info", error);
+}
+
+/* The statistics of sc_scene_get_info, into the library's full struct. */
+static void scene_info(const sc_scene *scene, sc_scene_info *info)
+{
+    sc_scene_info_init(info);
     const csg_tree *t = scene->tree;
     if (!t || t->root == CSG_EMPTY)
         return;

@@ -34,6 +34,7 @@
 #include <unistd.h>
 
 #include "cli/cli.h"
+#include "formats/framebuffer.h" /* the difference image is a framebuffer of its own */
 #include "spancast/spancast.h"
 
 enum { MEASURE = 1, OVERLAPS = 2, COMPARE = 4, ALL = 7 };
@@ -310,6 +311,7 @@ static int run_measure(check_args *a)
     start_progress(a, &line, "measuring");
     double t0 = seconds_now();
     sc_measure m;
+    sc_measure_init(&m);
     sc_error error;
     sc_status st = sc_scene_measure(scene, &a->options, &m, &error);
     sc_scene_release(scene);
@@ -347,20 +349,20 @@ static int run_overlaps(check_args *a)
     progress_line line;
     start_progress(a, &line, "checking pairs");
     double t0 = seconds_now();
-    sc_overlap *pairs = NULL;
-    size_t count = 0;
-    if (sc_objects_overlaps(objects, &a->options, &pairs, &count, &error) != SC_OK) {
+    sc_overlap_list *pairs = NULL;
+    if (sc_objects_overlaps(objects, &a->options, &pairs, &error) != SC_OK) {
         cli_print_error(&error);
         sc_objects_release(objects);
         return CLI_EXIT_USAGE;
     }
     size_t objects_count = sc_objects_count(objects), above = 0;
+    size_t count = sc_overlap_list_count(pairs);
     if (a->json)
         printf("{\"objects\": %zu, \"overlaps\": [", objects_count);
     else
         printf("%zu top-level objects\n", objects_count);
     for (size_t k = 0; k < count; k++) {
-        const sc_overlap *p = &pairs[k];
+        const sc_overlap *p = sc_overlap_list_get(pairs, k);
         sc_location la = sc_objects_location(objects, p->a);
         sc_location lb = sc_objects_location(objects, p->b);
         const char *na = sc_objects_name(objects, p->a),
@@ -393,7 +395,7 @@ static int run_overlaps(check_args *a)
         fprintf(stderr, "spancast: checked %zu pairs in %.2f s\n",
                 objects_count * (objects_count - (objects_count > 0)) / 2,
                 seconds_now() - t0);
-    free(pairs);
+    sc_overlap_list_release(pairs);
     sc_objects_release(objects);
     return above ? 1 : 0;
 }
@@ -579,6 +581,7 @@ static int run_compare(check_args *a)
     start_progress(a, &line, "comparing volumes");
     double t0 = seconds_now();
     sc_comparison c;
+    sc_comparison_init(&c);
     sc_error error;
     if (sc_scene_compare(sa, sb, &a->options, &c, &error) != SC_OK) {
         cli_print_error(&error);

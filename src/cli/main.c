@@ -609,7 +609,8 @@ static int run_info(const cli_args *a)
     if (!scene)
         return EXIT_FAILED;
     sc_scene_info info;
-    sc_scene_get_info(scene, &info);
+    sc_scene_info_init(&info);
+    sc_scene_get_info(scene, &info, NULL);
     double lo[3], hi[3];
     printf("model:  %s\n", a->input);
     printf("nodes:  %zu (%zu as written)\n", info.node_count, info.source_node_count);
@@ -701,13 +702,17 @@ typedef struct stage_times {
 
 static void print_stats(const cli_args *a, const sc_framebuffer *fb, const stage_times *t)
 {
-    const sc_render_stats *s = &fb->stats;
+    sc_render_stats stats;
+    sc_render_stats_init(&stats);
+    sc_framebuffer_get_stats(fb, &stats, NULL);
+    const sc_render_stats *s = &stats;
+    int width = sc_framebuffer_width(fb), height = sc_framebuffer_height(fb);
     uint64_t rays =
         s->camera_rays + s->shadow_rays + s->reflection_rays + s->refraction_rays;
     if (a->stats == 2) {
         printf("{\"image\": {\"width\": %d, \"height\": %d, \"spp\": %d, "
                "\"threads\": %d},\n",
-               fb->width, fb->height, a->options.spp, s->threads);
+               width, height, a->options.spp, s->threads);
         printf(" \"rays\": {\"camera\": %llu, \"shadow\": %llu, \"reflection\": %llu, "
                "\"refraction\": %llu, \"total\": %llu},\n",
                (unsigned long long)s->camera_rays, (unsigned long long)s->shadow_rays,
@@ -725,8 +730,8 @@ static void print_stats(const cli_args *a, const sc_framebuffer *fb, const stage
                t->load, s->setup_seconds, s->trace_seconds, t->write, t->total);
         return;
     }
-    printf("image:            %dx%d, %d sample%s per pixel, %d thread%s\n", fb->width,
-           fb->height, a->options.spp, a->options.spp == 1 ? "" : "s", s->threads,
+    printf("image:            %dx%d, %d sample%s per pixel, %d thread%s\n", width, height,
+           a->options.spp, a->options.spp == 1 ? "" : "s", s->threads,
            s->threads == 1 ? "" : "s");
     printf("rays:             %llu (camera %llu, shadow %llu, reflection %llu, "
            "refraction %llu)\n",
@@ -815,7 +820,7 @@ static int run_render(cli_args *a, int argc, char **argv)
                 a->output, a->mask ? ", " : "", a->mask ? a->mask : "",
                 a->depth ? ", " : "", a->depth ? a->depth : "", a->normal ? ", " : "",
                 a->normal ? a->normal : "", a->id ? ", " : "", a->id ? a->id : "",
-                fb->width, fb->height, times.total);
+                sc_framebuffer_width(fb), sc_framebuffer_height(fb), times.total);
     if (status == 0 && a->stats)
         print_stats(a, fb, &times);
     sc_framebuffer_release(fb);

@@ -77,9 +77,10 @@ static void fill_srgb(uint8_t *table)
 
 static void convert(const view_worker *w, const sc_framebuffer *fb, uint8_t *rgb)
 {
-    size_t n = (size_t)fb->width * (size_t)fb->height * 3;
+    size_t n = (size_t)sc_framebuffer_width(fb) * (size_t)sc_framebuffer_height(fb) * 3;
+    const float *color = sc_framebuffer_color(fb);
     for (size_t k = 0; k < n; k++) {
-        float v = fb->color[k];
+        float v = color[k];
         int step = v >= 1.0f ? SRGB_STEPS : v > 0.0f ? (int)(v * SRGB_STEPS + 0.5f) : 0;
         rgb[k] = w->srgb[step];
     }
@@ -110,8 +111,10 @@ static int run_job(view_worker *w, const view_job *job, view_frame *frame)
     if (frame->status == SC_ERR_CANCELLED)
         return 0;
     if (frame->status == SC_OK) {
-        frame->stats = fb->stats;
-        frame->rgb = malloc((size_t)fb->width * (size_t)fb->height * 3);
+        sc_render_stats_init(&frame->stats);
+        sc_framebuffer_get_stats(fb, &frame->stats, NULL);
+        frame->rgb = malloc((size_t)sc_framebuffer_width(fb) *
+                            (size_t)sc_framebuffer_height(fb) * 3);
         if (frame->rgb)
             convert(w, fb, frame->rgb);
         else

@@ -22,6 +22,7 @@
 #ifndef SPANCAST_FORMATS_IMAGE_IO_H
 #define SPANCAST_FORMATS_IMAGE_IO_H
 
+#include "formats/framebuffer.h"
 #include "spancast/spancast.h"
 
 #ifdef __cplusplus

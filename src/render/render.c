@@ -37,6 +37,7 @@
 
 #include "base/arena.h"
 #include "base/error.h"
+#include "base/sized.h"
 #include "build/scene.h"
 #include "formats/color.h"
 #include "render/camera.h"
@@ -44,9 +45,21 @@
 #include "render/sample.h"
 #include "render/shade.h"
 
-void sc_render_options_init(sc_render_options *options)
+void sc_render_options_init_size(sc_render_options *options, size_t size)
 {
-    memset(options, 0, sizeof *options);
+    /* The library's own defaults in full, then as much of them as the
+     * caller's struct holds (base/sized.h). */
+    if (!options || size < sizeof options->size)
+        return;
+    sc_render_options o;
+    render_options_defaults(&o);
+    memcpy(options, &o, size < sizeof o ? size : sizeof o);
+    options->size = size;
+}
+
+void render_options_defaults(sc_render_options *options)
+{
+    sized_clear(options, sizeof *options);
     options->width = 800;
     options->height = 600;
     options->camera_mode = SC_CAMERA_AUTO;
@@ -500,11 +513,16 @@ sc_status render_scene(const csg_tree *tree, const shading *look,
 {
     double start = seconds_now();
     *framebuffer = NULL;
-    sc_render_options defaults;
-    if (!options) {
-        sc_render_options_init(&defaults);
-        options = &defaults;
+    sc_render_options own; /* the caller's options, completed with defaults */
+    render_options_defaults(&own);
+    if (options) {
+        sc_status st =
+            sized_read(&own, sizeof own, options, SIZED_MIN(sc_render_options, sheet),
+                       "sc_render_options", error);
+        if (st)
+            return st;
     }
+    options = &own;
     sc_status st = check_options(options, error);
     if (st)
         return st;

@@ -10,6 +10,7 @@
 
 #include "csg/csg.h"
 #include "model/shading.h"
+#include "formats/framebuffer.h"
 #include "spancast/spancast.h"
 
 #define RENDER_TILE_SIZE 16      /* tiles of 16 x 16 pixels are scheduled over threads */
@@ -25,6 +26,10 @@
 #define RENDER_BACKGROUND_R 1.0f
 #define RENDER_BACKGROUND_G 1.0f
 #define RENDER_BACKGROUND_B (229.0f / 255.0f)
+
+/* Fills *options, all of it, with the defaults sc_render_options_init
+ * gives (its size field the library's own sizeof). */
+void render_options_defaults(sc_render_options *options);
 
 /* Renders tree as options ask (options NULL: the defaults). On success
  * *framebuffer belongs to the caller (sc_framebuffer_release); on failure it

@@ -36,6 +36,7 @@
 #include <string>
 #include <vector>
 
+#include "formats/framebuffer.h" /* the image writers take a framebuffer built here */
 #include "spancast/spancast.h"
 
 typedef CGAL::Exact_predicates_inexact_constructions_kernel K;

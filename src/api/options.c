@@ -1,0 +1,36 @@
+/* Reading the public calls' sized options: see options.h. The minimum
+ * sizes are the structs as the ABI was first recorded (abi/); fields
+ * appended since are the ones an older caller's struct ends before. */
+#include "api/options.h"
+
+#include <stddef.h>
+
+#include "base/sized.h"
+
+sc_status options_load(const sc_load_options *in, sc_load_options *out, sc_error *error)
+{
+    sc_load_options_init(out);
+    if (!in)
+        return SC_OK;
+    return sized_read(out, sizeof *out, in, SIZED_MIN(sc_load_options, faithful),
+                      "sc_load_options", error);
+}
+
+sc_status options_measure(const sc_measure_options *in, sc_measure_options *out,
+                          sc_error *error)
+{
+    sc_measure_options_init(out);
+    if (!in)
+        return SC_OK;
+    return sized_read(out, sizeof *out, in, SIZED_MIN(sc_measure_options, cancel),
+                      "sc_measure_options", error);
+}
+
+sc_status options_ray_query(const sc_ray_query *in, sc_ray_query *out, sc_error *error)
+{
+    sc_ray_query_init(out);
+    if (!in)
+        return SC_OK;
+    return sized_read(out, sizeof *out, in, SIZED_MIN(sc_ray_query, both_ways),
+                      "sc_ray_query", error);
+}
