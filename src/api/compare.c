@@ -74,11 +74,6 @@ typedef struct compare_shared {
     arena *scratch; /* per thread */
 } compare_shared;
 
-typedef struct compare_axis {
-    compare_shared *shared;
-    int axis;
-} compare_axis;
-
 static double length_of(span_list s)
 {
     double length = 0;
@@ -90,7 +85,7 @@ static double length_of(span_list s)
 static int sample_compare(void *context, int thread, double u, double v, double *values,
                           uint64_t *signature)
 {
-    const compare_axis *m = context;
+    const lines_axis *m = context;
     const compare_shared *s = m->shared;
     int a = m->axis;
     csg_ray r = lines_axis_ray(a, 0, u, v);
@@ -152,8 +147,9 @@ static sc_status compare_scenes(const sc_scene *a, const sc_scene *b,
         return err_nomem(error, NULL);
     for (int k = 0; k < threads; k++)
         arena_init(&shared.scratch[k], 16 * 1024);
-    compare_axis axes[3] = {{&shared, 0}, {&shared, 1}, {&shared, 2}};
-    void *contexts[3] = {&axes[0], &axes[1], &axes[2]};
+    lines_axis axes[3];
+    void *contexts[3];
+    lines_axes(axes, &shared, contexts);
     /* The differences are refined against the mean of the two volumes,
      * which is at most the larger one (and is it when they agree); the
      * volumes themselves are only reported. */

@@ -30,3 +30,12 @@ uint64_t lines_signature(uint64_t h, span_list s)
     }
     return h;
 }
+
+void lines_axes(lines_axis axes[3], void *shared, void *contexts[3])
+{
+    for (int a = 0; a < 3; a++) {
+        axes[a].shared = shared;
+        axes[a].axis = a;
+        contexts[a] = &axes[a];
+    }
+}

@@ -14,6 +14,18 @@
  * coordinate is at and whose next two (cyclically) are u and v. */
 csg_ray lines_axis_ray(int a, double at, double u, double v);
 
+/* The context of one axis's line sampler (quad_integrate3): what the three
+ * axes share, which is the query's own struct (measure_shared,
+ * pair_shared, compare_shared), and the axis. */
+typedef struct lines_axis {
+    void *shared;
+    int axis; /* 0, 1, 2: the lines run along x, y, z */
+} lines_axis;
+
+/* Points axes[a] at shared with axis a, and contexts[a] at axes[a]: the
+ * three contexts quad_integrate3 hands the sampler. */
+void lines_axes(lines_axis axes[3], void *shared, void *contexts[3]);
+
 /* h mixed with the surfaces of the list's ends, in order. */
 uint64_t lines_signature(uint64_t h, span_list s);
 

@@ -94,15 +94,10 @@ typedef struct measure_shared {
     double (*box)[6]; /* per thread: lo xyz, hi xyz of the span ends seen */
 } measure_shared;
 
-typedef struct measure_axis {
-    measure_shared *shared;
-    int axis;
-} measure_axis;
-
 static int sample_line(void *context, int thread, double u, double v, double *values,
                        uint64_t *signature)
 {
-    const measure_axis *m = context;
+    const lines_axis *m = context;
     const measure_shared *s = m->shared;
     int a = m->axis, ua = (a + 1) % 3, va = (a + 2) % 3;
     double du = u - s->centre[ua], dv = v - s->centre[va];
@@ -349,13 +344,9 @@ static sc_status measure_scene(const sc_scene *scene, const sc_measure_options *
             shared.box[k][3 + i] = -INFINITY;
         }
     }
-    measure_axis axes[3];
+    lines_axis axes[3];
     void *contexts[3];
-    for (int a = 0; a < 3; a++) {
-        axes[a].shared = &shared;
-        axes[a].axis = a;
-        contexts[a] = &axes[a];
-    }
+    lines_axes(axes, &shared, contexts);
     int rule[VALUE_COUNT] = {0};
     double floor[VALUE_COUNT] = {0};
     rule[V_LENGTH] = QUAD_EACH;

@@ -217,15 +217,10 @@ typedef struct pair_shared {
     double (*box)[6]; /* per thread: the ends of the common spans */
 } pair_shared;
 
-typedef struct pair_axis {
-    pair_shared *shared;
-    int axis;
-} pair_axis;
-
 static int sample_pair(void *context, int thread, double u, double v, double *values,
                        uint64_t *signature)
 {
-    const pair_axis *m = context;
+    const lines_axis *m = context;
     const pair_shared *s = m->shared;
     int a = m->axis;
     csg_ray r = lines_axis_ray(a, 0, u, v);
@@ -281,8 +276,9 @@ static sc_status overlap_pair(const csg_tree *ta, const csg_tree *tb, const doub
             shared.box[k][3 + i] = -INFINITY;
         }
     }
-    pair_axis axes[3] = {{&shared, 0}, {&shared, 1}, {&shared, 2}};
-    void *contexts[3] = {&axes[0], &axes[1], &axes[2]};
+    lines_axis axes[3];
+    void *contexts[3];
+    lines_axes(axes, &shared, contexts);
     int rule[1] = {QUAD_EACH};
     double floor[1] = {1e-6 * (hi[0] - lo[0]) * (hi[1] - lo[1]) * (hi[2] - lo[2])};
     quad_grid grids[3];
