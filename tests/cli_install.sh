@@ -13,8 +13,13 @@
 #   - the man pages: they render without warnings, and each command's page
 #     documents every option its --help lists;
 #   - the bash completion: commands, options and model files;
-#   - the Debian package (cpack -G DEB): its files, its dependencies, and
-#     the tool and library unpacked with dpkg-deb -x and run from there.
+#   - the Debian packages (cpack -G DEB), split as Debian splits a library:
+#     libspancastN (the shared library), libspancast-dev and spancast (the
+#     tool): each one's files (dpkg-deb -c), its DEP-5 copyright file, its
+#     dependencies; then all three installed with dpkg into a scratch root
+#     without root rights (dpkg --force-not-root --root, against a copy of
+#     this system's package database, so their Depends are checked), and
+#     the tool and library run from there.
 # Nothing is rebuilt: the install copies the build tree's files.
 #
 # Run as: bash cli_install.sh <path-to-spancast> <source-dir> <work-dir>
@@ -63,7 +68,7 @@ version=$(PKG_CONFIG_PATH=$pcdir pkg-config --modversion spancast)
 for f in bin/spancast include/spancast/spancast.h include/spancast/version.h \
     share/man/man1/spancast.1 share/man/man1/spancast-render.1 share/man/man3/libspancast.3 \
     share/bash-completion/completions/spancast share/doc/spancast/README.md \
-    share/doc/spancast/examples/CMakeLists.txt; do
+    share/doc/spancast/copyright share/doc/libspancast-dev/examples/CMakeLists.txt; do
     check
     [ -f "$prefix/$f" ] || fail "not installed: $f"
 done
@@ -73,11 +78,8 @@ for f in libspancast.so spancast/spancast-oiio.so spancast/spancast-bench spanca
     check
     [ -e "$libdir/$f" ] || fail "not installed: $libdir/$f"
 done
-# The soname carries the project version (MAJOR.MINOR while MAJOR is 0).
-major=${version%%.*}
-minor=${version#*.}
-minor=${minor%%.*}
-if [ "$major" = 0 ]; then soversion=0.$minor; else soversion=$major; fi
+# The soname's number is the one the ABI record names (abi/README.md).
+soversion=$(sed -n "1s/.*soname='libspancast\.so\.\([0-9]*\)'.*/\1/p" "$src/abi/libspancast.abi")
 check
 soname=$(readelf -d "$libdir/libspancast.so" | sed -n 's/.*Library soname: \[\(.*\)\]/\1/p')
 [ "$soname" = "libspancast.so.$soversion" ] ||
@@ -210,7 +212,7 @@ PY
     fi
 }
 
-examples=$prefix/share/doc/spancast/examples
+examples=$prefix/share/doc/libspancast-dev/examples
 mkdir -p ex-pkgconfig
 check
 if cc -std=c11 -Wall -Wextra -Werror "${san_flags[@]}" "$examples/spans_ray.c" "${pc_flags[@]}" \
@@ -333,7 +335,7 @@ check
 got=$(cd models && complete_words render drilled.csg --mask = | tr '\n' ' ')
 [ "$got" = "a.csg b.scad c.stl d.off e.txt f.png sub " ] || fail "completion of --mask=: '$got'"
 
-# ---- the Debian package ----
+# ---- the Debian packages ----
 check
 if ! cpack -G DEB --config "$build/CPackConfig.cmake" -B "$work/deb" >cpack.txt 2>&1; then
     cat cpack.txt
@@ -341,32 +343,114 @@ if ! cpack -G DEB --config "$build/CPackConfig.cmake" -B "$work/deb" >cpack.txt 
     echo "$checks checks, $fails failures"
     exit 1
 fi
-deb=$(ls "$work"/deb/*.deb)
+libpkg=libspancast$soversion
+deb_of() { ls "$work"/deb/"$1"_"$version"_*.deb 2>/dev/null | head -n 1; }
+debs=()
+for pkg in $libpkg libspancast-dev spancast; do
+    check
+    deb=$(deb_of $pkg)
+    if [ -z "$deb" ]; then
+        fail "cpack made no $pkg package: $(ls "$work/deb")"
+        continue
+    fi
+    debs+=("$deb")
+    dpkg-deb -f "$deb" Package Version >control.txt
+    grep -qx "Version: $version" control.txt || fail "$pkg version: $(cat control.txt)"
+done
+[ "${#debs[@]}" = 3 ] || { echo "$checks checks, $fails failures"; exit 1; }
+[ "$(ls "$work"/deb/*.deb | wc -l)" = 3 ] || fail "cpack made other packages: $(ls "$work/deb")"
+
+# contents PKG: the files (not folders) of the package, one a line, with
+# LIBDIR (usr/lib or usr/lib/<multiarch>) written as LIBDIR.
+contents() {
+    dpkg-deb -c "$(deb_of "$1")" | awk '{ print $6 }' | grep -v '/$' | sed 's|^\./||' |
+        sed -E 's#^usr/lib/([a-z0-9_]+-linux-gnu[a-z0-9_]*/)?#LIBDIR/#' | sort
+}
+# has PKG FILE...: each FILE is in PKG; lacks PKG PATTERN...: no file of
+# PKG matches an extended regular expression PATTERN.
+has() {
+    local pkg=$1 f
+    shift
+    contents "$pkg" >files.txt
+    for f; do
+        check
+        grep -qx "$f" files.txt || fail "$pkg lacks $f: $(tr '\n' ' ' <files.txt)"
+    done
+}
+lacks() {
+    local pkg=$1 p
+    shift
+    contents "$pkg" >files.txt
+    for p; do
+        check
+        ! grep -Eq "$p" files.txt || fail "$pkg holds $(grep -E "$p" files.txt | tr '\n' ' ')"
+    done
+}
+has $libpkg "LIBDIR/libspancast.so.$soversion" "LIBDIR/libspancast.so.$version" \
+    LIBDIR/spancast/spancast-oiio.so usr/share/doc/$libpkg/copyright
+lacks $libpkg '^usr/include/' '^LIBDIR/libspancast\.so$' '^usr/bin/' '^usr/share/man/' \
+    'pkgconfig|cmake'
+has libspancast-dev usr/include/spancast/spancast.h usr/include/spancast/version.h \
+    LIBDIR/libspancast.so LIBDIR/pkgconfig/spancast.pc LIBDIR/cmake/spancast/spancastConfig.cmake \
+    LIBDIR/cmake/spancast/spancastTargets.cmake usr/share/man/man3/libspancast.3 \
+    usr/share/doc/libspancast-dev/copyright usr/share/doc/libspancast-dev/examples/spans_ray.c
+lacks libspancast-dev '^LIBDIR/libspancast\.so\.' '^usr/bin/' '^usr/share/man/man1/' 'spancast-oiio'
+has spancast usr/bin/spancast LIBDIR/spancast/spancast-bench LIBDIR/spancast/spancast-view \
+    usr/share/man/man1/spancast.1 usr/share/man/man1/spancast-render.1 \
+    usr/share/bash-completion/completions/spancast usr/share/doc/spancast/copyright \
+    usr/share/doc/spancast/README.md
+lacks spancast '^LIBDIR/libspancast' '^usr/include/' 'spancast-oiio' '^usr/share/man/man3/'
+# The copyright file is machine-readable (DEP-5): its first field names
+# the format, and every paragraph of files names its licence.
 check
-dpkg-deb -f "$deb" Package Version Depends Recommends Suggests >control.txt
-grep -qx "Package: spancast" control.txt || fail "deb: $(cat control.txt)"
-grep -qx "Version: $version" control.txt || fail "deb version: $(cat control.txt)"
-depends=$(sed -n 's/^Depends: //p' control.txt)
-recommends=$(sed -n 's/^Recommends: //p' control.txt)
-# What is linked: from dpkg-shlibdeps (libc6, libpng16-16, the OpenEXR and
-# text libraries, libgomp1); OpenImageIO only recommended, since only the
-# plugin loaded on demand links it.
+dpkg-deb --fsys-tarfile "$(deb_of spancast)" | tar -xO ./usr/share/doc/spancast/copyright >copyright.txt
+head -n 1 copyright.txt |
+    grep -qx 'Format: https://www.debian.org/doc/packaging-manuals/copyright-format/1.0/' ||
+    fail "copyright is not DEP-5: $(head -n 1 copyright.txt)"
+check
+[ "$(grep -c '^Files:' copyright.txt)" = "$(grep -c '^License:' copyright.txt)" ] &&
+    grep -qx 'Files: \*' copyright.txt || fail "copyright: a Files paragraph without its License"
+
+# The dependencies. What is linked: from dpkg-shlibdeps (libc6,
+# libpng16-16, the OpenEXR and text libraries, libgomp1); OpenImageIO only
+# recommended, since only the plugin loaded on demand links it.
+field() { dpkg-deb -f "$(deb_of "$1")" "$2"; }
+depends=$(field $libpkg Depends)
 for pkg in libc6 libpng16-16 libgomp1 libfreetype6 libharfbuzz0b libfontconfig1 libpolyclipping22; do
     check
-    echo "$depends" | grep -Eq "(^|, )$pkg( |,|$)" || fail "deb Depends lacks $pkg: $depends"
+    echo "$depends" | grep -Eq "(^|, )$pkg( |,|$)" || fail "$libpkg Depends lacks $pkg: $depends"
 done
 check
-echo "$depends" | grep -q openimageio && fail "deb Depends on OpenImageIO: $depends"
+[ "$(field $libpkg Section)" = libs ] || fail "$libpkg Section: $(field $libpkg Section)"
+check
+echo "$depends" | grep -q openimageio && fail "$libpkg Depends on OpenImageIO: $depends"
+check
+[ "$(field $libpkg Recommends)" = libopenimageio2.4 ] ||
+    fail "$libpkg Recommends: $(field $libpkg Recommends)"
+check
+[ "$(field libspancast-dev Depends)" = "$libpkg (= $version)" ] ||
+    fail "libspancast-dev Depends: $(field libspancast-dev Depends)"
+check
+[ "$(field libspancast-dev Section)" = libdevel ] || fail "libspancast-dev Section"
+tool_depends=$(field spancast Depends)
+check
+echo "$tool_depends" | grep -Eq "(^|, )$libpkg \(= $version\)(,|$)" ||
+    fail "spancast Depends lacks $libpkg (= $version): $tool_depends"
+check
+echo "$tool_depends" | grep -Eq "openimageio|libsdl2" && fail "spancast Depends: $tool_depends"
+recommends=$(field spancast Recommends)
 for pkg in openscad libopenimageio2.4 libsdl2-2.0-0 libopenmpi3; do
     check
-    echo "$recommends" | grep -Eq "(^|, )$pkg( |,|$)" || fail "deb Recommends lacks $pkg: $recommends"
+    echo "$recommends" | grep -Eq "(^|, )$pkg( |,|$)" || fail "spancast Recommends lacks $pkg: $recommends"
 done
-# Every Depends is a package installed here (the build linked it); every
-# Recommends one that apt knows, where apt has package lists at all.
+# Every Depends is a package installed here (the build linked it) or one
+# of the three; every Recommends one that apt knows, where apt has package
+# lists at all.
 names() { tr ',' '\n' | sed 's/(.*//; s/|.*//' | tr -d ' '; }
-for pkg in $(echo "$depends" | names); do
+for pkg in $( (echo "$depends"; echo "$tool_depends") | names | sort -u); do
     check
-    dpkg-query -W "$pkg" >/dev/null 2>&1 || fail "deb Depends on $pkg, which is not installed"
+    [ "$pkg" = "$libpkg" ] || dpkg-query -W "$pkg" >/dev/null 2>&1 ||
+        fail "a package Depends on $pkg, which is not installed"
 done
 if apt-cache show libc6 >/dev/null 2>&1; then
     read -r -a recommended < <(echo "$recommends" | names | tr '\n' ' ')
@@ -374,39 +458,70 @@ if apt-cache show libc6 >/dev/null 2>&1; then
         sed -n 's/^Package: //p' | sort -u >known.txt
     for pkg in "${recommended[@]}"; do
         check
-        grep -qx "$pkg" known.txt || fail "deb Recommends $pkg, which apt does not know"
+        grep -qx "$pkg" known.txt || fail "spancast Recommends $pkg, which apt does not know"
     done
 fi
 # The shared library is registered: a shlibs entry for packages that link
 # it, and ldconfig after install.
 check
-dpkg-deb --ctrl-tarfile "$deb" | tar -xO ./shlibs 2>/dev/null |
-    grep -q "^libspancast $soversion spancast (>= $version)$" || fail "deb: no shlibs entry"
+dpkg-deb --ctrl-tarfile "$(deb_of $libpkg)" | tar -xO ./shlibs 2>/dev/null |
+    grep -q "^libspancast $soversion $libpkg (>= $version)$" || fail "$libpkg: no shlibs entry"
 check
-dpkg-deb --ctrl-tarfile "$deb" | tar -xO ./postinst 2>/dev/null | grep -q ldconfig ||
-    fail "deb: postinst does not run ldconfig"
-# Unpacked anywhere, the tool and the library work from there.
+dpkg-deb --ctrl-tarfile "$(deb_of $libpkg)" | tar -xO ./postinst 2>/dev/null | grep -q ldconfig ||
+    fail "$libpkg: postinst does not run ldconfig"
+
+# Installed with dpkg into a scratch root, as an ordinary user may: the
+# package database is a copy of this system's, so the Depends on system
+# libraries are met by what is installed here and checked like any
+# install; the maintainer scripts run outside a chroot, with an ldconfig
+# that only notes that it ran.
 root=$work/root
-dpkg-deb -x "$deb" "$root"
+mkdir -p "$root/var/lib/dpkg/updates" "$root/var/lib/dpkg/info" stubs
+cp /var/lib/dpkg/status "$root/var/lib/dpkg/status"
+touch "$root/var/lib/dpkg/available"
+printf '#!/bin/sh\necho "ldconfig $*" >>"%s/ldconfig.log"\n' "$work" >stubs/ldconfig
+chmod +x stubs/ldconfig
+dpkg_root() {
+    PATH=$work/stubs:/usr/sbin:/usr/bin:/sbin:/bin \
+        dpkg --force-not-root --force-script-chrootless --root="$root" "$@"
+}
+# libspancast-dev without the library it depends on is refused.
 check
-[ -x "$root/usr/bin/spancast" ] || fail "deb lacks usr/bin/spancast"
+if dpkg_root -i "$(deb_of libspancast-dev)" >dpkg-dev.txt 2>&1; then
+    fail "dpkg installed libspancast-dev without $libpkg"
+fi
+grep -q "dependency problems" dpkg-dev.txt || fail "dpkg -i libspancast-dev alone: $(cat dpkg-dev.txt)"
+check
+if dpkg_root -i "${debs[@]}" >dpkg.txt 2>&1; then
+    for pkg in $libpkg libspancast-dev spancast; do
+        check
+        dpkg_root -s $pkg 2>/dev/null | grep -qx 'Status: install ok installed' ||
+            fail "dpkg: $pkg is not installed: $(cat dpkg.txt)"
+    done
+    check
+    grep -q '^ldconfig' ldconfig.log 2>/dev/null || fail "installing $libpkg did not run ldconfig"
+else
+    fail "dpkg -i of the three packages: $(cat dpkg.txt)"
+fi
+check
+[ -x "$root/usr/bin/spancast" ] || fail "the packages installed no usr/bin/spancast"
 debpc=$(dirname "$(ls "$root"/usr/lib/pkgconfig/spancast.pc "$root"/usr/lib/*/pkgconfig/spancast.pc 2>/dev/null | head -n 1)")
 deblib=$(dirname "$debpc")
 check
 out=$("$root/usr/bin/spancast" --version)
-[ "$out" = "spancast $version" ] || fail "unpacked spancast --version: '$out'"
+[ "$out" = "spancast $version" ] || fail "spancast --version from the packages: '$out'"
 check
 if LD_DEBUG=files "$root/usr/bin/spancast" render drilled.csg -o deb.tif --imgsize=64,48 -q \
     2>ld-deb.txt; then
     got=$(loaded ld-deb.txt spancast-oiio.so)
     [ "$got" = "$(realpath "$deblib/spancast/spancast-oiio.so")" ] ||
-        fail "the unpacked tool loaded '$got', not its own plugin"
+        fail "the packages' tool loaded '$got', not its own plugin"
 else
-    fail "unpacked spancast render: $(grep -v '^ *[0-9]*:' ld-deb.txt)"
+    fail "spancast render from the packages: $(grep -v '^ *[0-9]*:' ld-deb.txt)"
 fi
 check
 mkdir -p ex-deb
-if PKG_CONFIG_PATH=$debpc cc -std=c11 "${san_flags[@]}" "$root/usr/share/doc/spancast/examples/spans_ray.c" \
+if PKG_CONFIG_PATH=$debpc cc -std=c11 "${san_flags[@]}" "$root/usr/share/doc/libspancast-dev/examples/spans_ray.c" \
     $(PKG_CONFIG_PATH=$debpc pkg-config --cflags --libs spancast) -o ex-deb/spans_ray 2>cc.txt; then
     out=$(LD_LIBRARY_PATH=$deblib ex-deb/spans_ray drilled.csg -1 5 5 2 0 0 | head -n 1)
     [ "$out" = "2 spans" ] || fail "spans_ray against the unpacked library: '$out'"
