@@ -358,6 +358,8 @@ typedef struct sc_render_options {
      * columns * width by rows * height pixels and region is a crop of it. */
     int sheet_count;
     sc_view_preset sheet[SC_MAX_SHEET];
+    /* The first recorded ABI ends here; new fields go below, in release
+     * order, and take their defaults for a caller whose struct ends here. */
 } sc_render_options;
 
 /* Sets size and the defaults written beside each field. Never fails. */
@@ -580,6 +582,7 @@ typedef struct sc_measure_options {
     void (*progress)(void *user, double fraction);
     void *progress_user;
     const volatile sig_atomic_t *cancel; /* as sc_render_options.cancel */
+    /* The first recorded ABI ends here; new fields go below. */
 } sc_measure_options;
 
 /* Sets size and the defaults written beside each field. Never fails. */
