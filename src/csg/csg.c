@@ -390,10 +390,12 @@ static int freeze(csg_tree *t, compiler *c, csg_builder *b, uint32_t root)
              (kids = arena_calloc(&t->mem, kid_total, sizeof *kids)) != NULL;
     if (ok && leaf_total) {
         if (in_order) {
+            /* Shrinking can fail too; an allocation failure is one, whatever
+             * it was for (tests/fault_alloc.c). */
             leaves = realloc(b->leaves, (size_t)leaf_total * sizeof *leaves);
-            if (!leaves)
-                leaves = b->leaves; /* shrinking failed: keep it as it is */
-            b->leaves = NULL;
+            ok = leaves != NULL;
+            if (ok)
+                b->leaves = NULL;
             t->owned_leaves = leaves;
         } else {
             ok = (leaves = arena_calloc(&t->mem, leaf_total, sizeof *leaves)) != NULL;
