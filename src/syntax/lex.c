@@ -497,10 +497,14 @@ static sc_status lex_string(lexer *lx, lex_token *tok, sc_error *error)
         return err_set(error, SC_ERR_LIMIT, &loc, "string too long (limit is %d bytes)",
                        LEX_MAX_STRING);
     /* Decoding never lengthens: every escape is at least as long as its
-     * UTF-8 result (\uHHHH: 6 bytes for at most 3, \UHHHHHH: 8 for 4). */
-    char *out = arena_alloc(lx->strings, n + 1);
-    if (!out)
+     * UTF-8 result (\uHHHH: 6 bytes for at most 3, \UHHHHHH: 8 for 4).
+     * The raw text goes first, NUL-terminated, then the decoded one. */
+    char *raw_copy = arena_alloc(lx->strings, 2 * (n + 1));
+    if (!raw_copy)
         return err_nomem(error, NULL);
+    memcpy(raw_copy, raw, n);
+    raw_copy[n] = '\0';
+    char *out = raw_copy + n + 1;
     tok->kind = LEX_STRING;
     tok->string = out;
     tok->string_length = decode_string(raw, n, out, NULL);
