@@ -7,6 +7,7 @@
  * (load, below). The scene owns a copy of the file name, which every source
  * location in the tree points to.
  */
+#define _POSIX_C_SOURCE 200809L /* fileno */
 #include "build/scene.h"
 
 #include <errno.h>
