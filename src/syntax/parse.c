@@ -137,7 +137,8 @@ static const char *token_text(parser *ps)
 
 static sc_status push_value(parser *ps, const parse_value *v)
 {
-    if (!grow_array((void **)&ps->values, &ps->value_cap, ps->value_count + 1,
+    if (ps->value_count == ps->value_cap &&
+        !grow_array((void **)&ps->values, &ps->value_cap, ps->value_count + 1,
                     sizeof *ps->values))
         return err_nomem(ps->error, NULL);
     ps->values[ps->value_count++] = *v;
@@ -156,7 +157,8 @@ static sc_status close_vector(parser *ps, parse_value *v)
         return err_set(ps->error, SC_ERR_LIMIT, NULL, "vector too long");
     parse_value *items = NULL;
     if (count) {
-        items = arena_calloc(&ps->tree->mem, count, sizeof *items);
+        /* count is below PARSE_MAX_VECTOR: the size cannot overflow. */
+        items = arena_alloc(&ps->tree->mem, count * sizeof *items);
         if (!items)
             return err_nomem(ps->error, NULL);
         memcpy(items, &ps->values[o->start], count * sizeof *items);
@@ -285,7 +287,8 @@ static sc_status parse_arguments(parser *ps, parse_node *node, int paren_line)
         }
         if ((st = parse_value_into(ps, &arg.value)) != SC_OK)
             return st;
-        if (!grow_array((void **)&ps->args, &ps->arg_cap, ps->arg_count + 1,
+        if (ps->arg_count == ps->arg_cap &&
+            !grow_array((void **)&ps->args, &ps->arg_cap, ps->arg_count + 1,
                         sizeof *ps->args))
             return err_nomem(ps->error, NULL);
         ps->args[ps->arg_count++] = arg;
@@ -299,7 +302,7 @@ static sc_status parse_arguments(parser *ps, parse_node *node, int paren_line)
     if (ps->arg_count) {
         if (ps->arg_count > UINT32_MAX)
             return err_set(ps->error, SC_ERR_LIMIT, NULL, "too many arguments");
-        parse_arg *args = arena_calloc(&ps->tree->mem, ps->arg_count, sizeof *args);
+        parse_arg *args = arena_alloc(&ps->tree->mem, ps->arg_count * sizeof *args);
         if (!args)
             return err_nomem(ps->error, NULL);
         memcpy(args, ps->args, ps->arg_count * sizeof *args);
@@ -484,7 +487,7 @@ const parse_arg *parse_node_arg(const parse_node *node, const char *name, int po
     for (uint32_t i = 0; i < node->arg_count; i++) {
         const parse_arg *a = &node->args[i];
         if (a->name) {
-            if (strcmp(a->name, name) == 0)
+            if (a->name[0] == name[0] && strcmp(a->name, name) == 0)
                 found = a;
         } else if (positional++ == position) {
             found = a;
