@@ -121,6 +121,38 @@ static void test_openscad_export(void **state)
     parse_tree_free(t);
 }
 
+/* A name is stored once however often the file writes it; strings keep
+ * their text as written (for positions inside them) beside the decoded
+ * one; releasing the nodes keeps both. */
+static void test_names_and_strings_outlive_nodes(void **state)
+{
+    (void)state;
+    parse_tree *t = parse_ok("sphere($fn = 0, r = 1);\n"
+                             "sphere($fn = 0, s = \"a\\tb\\u00e9\");\n"
+                             "group() { sphere(r = 2); }");
+    const parse_node *a = t->first, *b = a->next, *c = b->next->first_child;
+    assert_ptr_equal(a->name, b->name);
+    assert_ptr_equal(a->name, c->name);
+    assert_ptr_equal(a->args[0].name, b->args[0].name);
+    assert_ptr_equal(a->args[1].name, c->args[0].name);
+    assert_ptr_not_equal(a->name, b->next->name);
+    const parse_value *s = &b->args[1].value;
+    assert_int_equal(s->kind, PARSE_STRING);
+    assert_string_equal(s->u.string.chars, "a\tb\xc3\xa9");
+    assert_int_equal(s->u.string.length, 5);
+    assert_int_equal(s->u.string.raw_length, 10);
+    assert_string_equal(parse_string_raw(s), "a\\tb\\u00e9");
+    const char *name = a->name, *arg = a->args[1].name, *chars = s->u.string.chars;
+    parse_tree_release_nodes(t);
+    assert_null(t->first);
+    assert_int_equal(t->count, 0);
+    assert_string_equal(name, "sphere");
+    assert_string_equal(arg, "r");
+    assert_string_equal(chars, "a\tb\xc3\xa9");
+    parse_tree_release_nodes(t); /* twice is harmless */
+    parse_tree_free(t);
+}
+
 static void test_values(void **state)
 {
     (void)state;
@@ -336,11 +368,17 @@ static void test_errors(void **state)
 int main(void)
 {
     const struct CMUnitTest tests[] = {
-        cmocka_unit_test(test_empty),        cmocka_unit_test(test_openscad_export),
-        cmocka_unit_test(test_values),       cmocka_unit_test(test_modifiers),
-        cmocka_unit_test(test_arg_lookup),   cmocka_unit_test(test_next_node),
-        cmocka_unit_test(test_empty_block),  cmocka_unit_test(test_deep_nodes),
-        cmocka_unit_test(test_deep_vectors), cmocka_unit_test(test_errors),
+        cmocka_unit_test(test_names_and_strings_outlive_nodes),
+        cmocka_unit_test(test_empty),
+        cmocka_unit_test(test_openscad_export),
+        cmocka_unit_test(test_values),
+        cmocka_unit_test(test_modifiers),
+        cmocka_unit_test(test_arg_lookup),
+        cmocka_unit_test(test_next_node),
+        cmocka_unit_test(test_empty_block),
+        cmocka_unit_test(test_deep_nodes),
+        cmocka_unit_test(test_deep_vectors),
+        cmocka_unit_test(test_errors),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

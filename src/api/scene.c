@@ -1,20 +1,25 @@
 /* Loading a scene: the public sc_scene_* calls.
  *
- * sc_scene_load reads the whole file into memory and hands it to
- * sc_scene_load_string, which runs the two scene stages (parse, then build)
- * and keeps only their result: the compiled CSG tree and the warnings. The
- * syntax tree is freed as soon as the CSG tree exists. The scene owns a copy
- * of the file name, which every source location in the tree points to.
+ * sc_scene_load reads the whole file into memory and, like
+ * sc_scene_load_string, runs the scene stages (parse, lower, build) and
+ * keeps only their result: the compiled CSG tree and the warnings. Each
+ * stage's input is freed as soon as the stages after it no longer need it
+ * (load, below). The scene owns a copy of the file name, which every source
+ * location in the tree points to.
  */
+#define _POSIX_C_SOURCE 200809L /* fileno */
 #include "build/scene.h"
 
 #include <errno.h>
+#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 
 #include "api/options.h"
 #include "base/error.h"
+#include "base/grow.h"
 #include "base/sized.h"
 #include "build/build.h"
 #include "model/model.h"
@@ -35,30 +40,85 @@ static char *copy_string(const char *s)
     return c;
 }
 
-sc_status sc_scene_load_string(const char *name, const char *text, size_t length,
-                               const sc_load_options *options, sc_scene **scene,
-                               sc_error *error)
+/* Whether some node of the model still reads its syntax node (the kinds
+ * whose builders walk their own subtree): then the syntax tree's nodes must
+ * outlive the build. */
+static int model_reads_syntax(const model *m, int *reads)
+{
+    *reads = 0;
+    const model_node **stack = NULL;
+    size_t depth = 0, cap = 0;
+    const model_node *n = m->first;
+    for (;;) {
+        if (!n) {
+            if (depth == 0)
+                break;
+            n = stack[--depth]->next;
+            continue;
+        }
+        if (n->syntax) {
+            *reads = 1;
+            break;
+        }
+        if (!n->first_child) {
+            n = n->next;
+            continue;
+        }
+        if (!grow_array((void **)&stack, &cap, depth + 1, sizeof *stack)) {
+            free(stack);
+            return 0;
+        }
+        stack[depth++] = n;
+        n = n->first_child;
+    }
+    free(stack);
+    return 1;
+}
+
+/* The three stages, each stage's input freed as soon as the next one no
+ * longer needs it, so that the peak is the largest two neighbours rather
+ * than all of them (a million positioned spheres: 141 MB of text, 1.1 GB of
+ * syntax, 350 MB of model, 400 MB of tree): the text after parsing when
+ * owned_text is set (the caller's buffer, which this frees), the syntax
+ * tree's nodes after lowering when no model node reads them (the names and
+ * strings the model points to stay until the build is done), the model and
+ * the rest of the syntax after the build. */
+static sc_status load(const char *name, const char *text, size_t length, char *owned_text,
+                      const sc_load_options *options, sc_scene **scene, sc_error *error)
 {
     err_clear(error);
-    if (!scene)
+    if (!scene) {
+        free(owned_text);
         return err_set(error, SC_ERR_ARGUMENT, NULL, "no scene pointer");
+    }
     *scene = NULL;
-    if (!text && length)
+    if (!text && length) {
+        free(owned_text);
         return err_set(error, SC_ERR_ARGUMENT, NULL, "no text to load");
+    }
     sc_load_options own;
     sc_status st = options_load(options, &own, error);
-    if (st != SC_OK)
+    if (st != SC_OK) {
+        free(owned_text);
         return st;
+    }
     sc_scene *s = calloc(1, sizeof *s);
     if (!s || !(s->path = copy_string(name ? name : "<string>"))) {
         free(s);
+        free(owned_text);
         return err_nomem(error, NULL);
     }
     parse_tree *syntax = NULL;
     st = parse_text(s->path, text ? text : "", length, &syntax, error);
+    free(owned_text);
     model *typed = NULL;
     if (st == SC_OK)
         st = model_lower(syntax, &typed, error);
+    int reads = 1;
+    if (st == SC_OK && !model_reads_syntax(typed, &reads))
+        st = err_nomem(error, NULL);
+    if (st == SC_OK && !reads)
+        parse_tree_release_nodes(syntax);
     if (st == SC_OK)
         st = build_scene(typed, own.faithful, &s->tree, &s->look, &s->warnings,
                          &s->warning_count, error);
@@ -72,6 +132,13 @@ sc_status sc_scene_load_string(const char *name, const char *text, size_t length
     return SC_OK;
 }
 
+sc_status sc_scene_load_string(const char *name, const char *text, size_t length,
+                               const sc_load_options *options, sc_scene **scene,
+                               sc_error *error)
+{
+    return load(name, text, length, NULL, options, scene, error);
+}
+
 /* Reads a whole file into a malloc'd buffer. */
 static sc_status read_file(const char *path, char **text, size_t *length, sc_error *error)
 {
@@ -81,8 +148,20 @@ static sc_status read_file(const char *path, char **text, size_t *length, sc_err
     if (!f)
         return err_set(error, SC_ERR_IO, NULL, "cannot open '%s': %s", path,
                        strerror(errno));
+    /* A regular file is read into one buffer of its size (one byte more, to
+     * see the end); anything else, or a file that grows meanwhile, doubles
+     * the buffer as it goes. */
     size_t cap = 0, n = 0;
     char *buf = NULL;
+    struct stat info;
+    if (fstat(fileno(f), &info) == 0 && S_ISREG(info.st_mode) && info.st_size > 0 &&
+        (uintmax_t)info.st_size < SIZE_MAX) {
+        cap = (size_t)info.st_size + 1;
+        if (!(buf = malloc(cap))) {
+            fclose(f);
+            return err_nomem(error, NULL);
+        }
+    }
     for (;;) {
         if (n == cap) {
             size_t next = cap ? cap * 2 : 64 * 1024;
@@ -128,9 +207,7 @@ sc_status sc_scene_load(const char *path, const sc_load_options *options,
     sc_status st = read_file(path, &text, &length, error);
     if (st != SC_OK)
         return st;
-    st = sc_scene_load_string(path, text, length, options, scene, error);
-    free(text);
-    return st;
+    return load(path, text, length, text, options, scene, error);
 }
 
 void sc_scene_release(sc_scene *scene)

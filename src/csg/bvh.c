@@ -114,23 +114,44 @@ static void median_split(uint32_t *ids, bbox *boxes, uint32_t count, int axis)
     }
 }
 
+/* The bounds of the operands' boxes and of their centres. */
+typedef struct extent {
+    bbox bounds, centres;
+} extent;
+
+static void extent_of(extent *e, const bbox *boxes, uint32_t count)
+{
+    e->bounds = box_none();
+    e->centres = box_none();
+    for (uint32_t i = 0; i < count; i++) {
+        box_grow(&e->bounds, &boxes[i]);
+        box_add(&e->centres, bbox_center(&boxes[i]));
+    }
+}
+
+/* Builds the node over [0, count); known is the extent of those operands
+ * when the caller measured it while partitioning (a pass over them saved
+ * at every level), NULL otherwise. */
 static uint32_t build(bvh_nodes *out, uint32_t *ids, bbox *boxes, uint32_t count,
-                      uint32_t base, int depth)
+                      uint32_t base, int depth, const extent *known)
 {
     uint32_t node = push_node(out);
     if (node == CSG_NO_BVH)
         return CSG_NO_BVH;
-    bbox bounds = box_none(), centres = box_none();
-    for (uint32_t i = 0; i < count; i++) {
-        box_grow(&bounds, &boxes[i]);
-        box_add(&centres, bbox_center(&boxes[i]));
+    extent own;
+    if (!known) {
+        extent_of(&own, boxes, count);
+        known = &own;
     }
+    bbox bounds = known->bounds, centres = known->centres;
     out->v[node].bounds = bounds;
     vec3 ext = bbox_extent(&centres);
     int axis = ext.x >= ext.y && ext.x >= ext.z ? 0 : ext.y >= ext.z ? 1 : 2;
     double lo = v3_get(centres.lo, axis), width = v3_get(ext, axis);
 
     uint32_t split = 0;
+    extent sides[2]; /* of the two children, when measured */
+    int measured = 0;
     if (count > LEAF_SIZE && width > 0 && depth < SAH_DEPTH) {
         uint32_t bin_count[BINS] = {0};
         bbox bin_box[BINS];
@@ -171,16 +192,23 @@ static uint32_t build(bvh_nodes *out, uint32_t *ids, bbox *boxes, uint32_t count
             }
         }
         if (best_bin > 0) {
+            /* Partition, measuring both sides as each operand is placed. */
+            extent_of(&sides[0], NULL, 0);
+            extent_of(&sides[1], NULL, 0);
             uint32_t i = 0, j = count;
             while (i < j) {
                 int b = (int)((centre_on(&boxes[i], axis) - lo) * scale);
                 b = b < 0 ? 0 : b >= BINS ? BINS - 1 : b;
+                extent *side = &sides[b >= best_bin];
+                box_grow(&side->bounds, &boxes[i]);
+                box_add(&side->centres, bbox_center(&boxes[i]));
                 if (b < best_bin)
                     i++;
                 else
                     swap_items(ids, boxes, i, --j);
             }
             split = i;
+            measured = 1;
         } else if (count > 4 * LEAF_SIZE) {
             /* Even a leaf this large is cheaper by area; split anyway so a
              * ray never tests dozens of operands in one go. */
@@ -199,10 +227,11 @@ static uint32_t build(bvh_nodes *out, uint32_t *ids, bbox *boxes, uint32_t count
         return node;
     }
     out->v[node].axis = (uint8_t)axis;
-    if (build(out, ids, boxes, split, base, depth + 1) == CSG_NO_BVH)
+    if (build(out, ids, boxes, split, base, depth + 1, measured ? &sides[0] : NULL) ==
+        CSG_NO_BVH)
         return CSG_NO_BVH;
-    uint32_t right =
-        build(out, ids + split, boxes + split, count - split, base + split, depth + 1);
+    uint32_t right = build(out, ids + split, boxes + split, count - split, base + split,
+                           depth + 1, measured ? &sides[1] : NULL);
     if (right == CSG_NO_BVH)
         return CSG_NO_BVH;
     out->v[node].index = right;
@@ -215,5 +244,5 @@ uint32_t bvh_build(bvh_nodes *out, uint32_t *ids, bbox *boxes, uint32_t count,
 {
     if (count == 0)
         return CSG_NO_BVH;
-    return build(out, ids, boxes, count, items_base, 0);
+    return build(out, ids, boxes, count, items_base, 0, NULL);
 }

@@ -353,69 +353,109 @@ static void *arena_copy(arena *a, const void *src, size_t count, size_t elem)
     return p;
 }
 
-/* Freezes the compiled nodes that root reaches into t; returns 0 when
- * memory ran out. */
-static int freeze(csg_tree *t, compiler *c, uint32_t root)
+/* Freezes the compiled nodes that root reaches into t, taking the
+ * builder's leaves; returns 0 when memory ran out. Every array is written
+ * once, in its final place: a million leaves of 368 bytes copied through
+ * two temporaries made loading a million spheres touch three times their
+ * size. When the tree keeps every leaf in source order (the usual case: a
+ * leaf is dropped only when simplification removes it), the builder's own
+ * array becomes the tree's, shrunk to size, and nothing is copied. */
+static int freeze(csg_tree *t, compiler *c, csg_builder *b, uint32_t root)
 {
     unsigned char *marks;
     uint32_t reached = mark_reachable(c->nodes, c->kids.v, c->count, root, &marks);
     uint32_t *renumber = calloc(c->count ? c->count : 1, sizeof *renumber);
-    csg_node *nodes = calloc(reached ? reached : 1, sizeof *nodes);
-    id_vec kids = {NULL, 0, 0};
-    csg_leaf *leaves =
-        calloc(c->src->leaf_count ? c->src->leaf_count : 1, sizeof *leaves);
-    bvh_nodes bvh = {NULL, 0, 0};
-    int ok = marks && renumber && nodes && leaves;
-    uint32_t count = 0, leaf_count = 0;
+    int ok = marks && renumber;
+    /* Sizes first, so that each array is allocated once. */
+    size_t kid_total = 0;
+    uint32_t leaf_total = 0;
+    int in_order = 1;
+    for (uint32_t i = 0; ok && i < c->count; i++) {
+        if (!marks[i])
+            continue;
+        const csg_node *n = &c->nodes[i];
+        if (n->op == CSG_LEAF)
+            in_order &= n->leaf == leaf_total++;
+        else
+            kid_total += n->child_count;
+    }
+    in_order &= leaf_total == b->leaf_count;
+    csg_node *nodes = NULL;
+    uint32_t *kids = NULL;
+    csg_leaf *leaves = NULL;
+    if (ok && reached)
+        ok = (nodes = arena_alloc(&t->mem, (size_t)reached * sizeof *nodes)) != NULL;
+    if (ok && kid_total)
+        ok = kid_total <= UINT32_MAX &&
+             (kids = arena_calloc(&t->mem, kid_total, sizeof *kids)) != NULL;
+    if (ok && leaf_total) {
+        if (in_order) {
+            /* Shrinking can fail too; an allocation failure is one, whatever
+             * it was for (tests/fault_alloc.c). */
+            leaves = realloc(b->leaves, (size_t)leaf_total * sizeof *leaves);
+            ok = leaves != NULL;
+            if (ok)
+                b->leaves = NULL;
+            t->owned_leaves = leaves;
+        } else {
+            ok = (leaves = arena_calloc(&t->mem, leaf_total, sizeof *leaves)) != NULL;
+        }
+    }
+    uint32_t count = 0, leaf_count = 0, kid_count = 0;
     for (uint32_t i = 0; ok && i < c->count; i++) {
         if (!marks[i])
             continue;
         csg_node n = c->nodes[i];
         if (n.op == CSG_LEAF) {
-            leaves[leaf_count] = c->src->leaves[n.leaf];
+            if (!in_order)
+                leaves[leaf_count] = b->leaves[n.leaf];
             n.leaf = leaf_count++;
         } else {
-            uint32_t first = kids.n;
+            uint32_t first = kid_count;
             for (uint32_t k = 0; k < n.child_count; k++)
-                ok = ok && id_push(&kids, renumber[c->kids.v[n.first_child + k]]);
+                kids[kid_count++] = renumber[c->kids.v[n.first_child + k]];
             n.first_child = first;
         }
         renumber[i] = count;
         nodes[count++] = n;
     }
+    /* The builder's leaves are no longer needed (those kept are copied or
+     * taken), nor are the compiled nodes: free them before the BVHs. */
+    free(b->leaves);
+    b->leaves = NULL;
+    free(c->nodes);
+    c->nodes = NULL;
+    free(c->kids.v);
+    c->kids.v = NULL;
+    free(marks);
+    bvh_nodes bvh = {NULL, 0, 0};
     if (ok) {
         t->root = root == CSG_EMPTY ? CSG_EMPTY : renumber[root];
         t->node_count = count;
         t->leaf_count = leaf_count;
         t->nodes = nodes;
-        t->child_ids = kids.v;
-        ok = build_bvhs(t, &bvh);
+        t->child_ids = kids;
+        t->leaves = leaves;
     }
+    free(renumber);
+    if (ok)
+        ok = build_bvhs(t, &bvh);
     if (ok) {
         uint32_t *depth = calloc(count ? count : 1, sizeof *depth);
         unsigned char *all = malloc(count ? count : 1);
         ok = depth && all;
         if (ok) {
             memset(all, 1, count ? count : 1);
-            t->depth = depths(nodes, kids.v, count, all, depth, t->root);
+            t->depth = depths(nodes, kids, count, all, depth, t->root);
         }
         free(depth);
         free(all);
     }
     if (ok) {
-        t->nodes = arena_copy(&t->mem, nodes, count, sizeof *nodes);
-        t->child_ids = arena_copy(&t->mem, kids.v, kids.n, sizeof *kids.v);
-        t->leaves = arena_copy(&t->mem, leaves, leaf_count, sizeof *leaves);
         t->bvh_nodes = arena_copy(&t->mem, bvh.v, bvh.count, sizeof *bvh.v);
         t->bvh_node_count = bvh.count;
-        ok = (!count || t->nodes) && (!kids.n || t->child_ids) &&
-             (!leaf_count || t->leaves) && (!bvh.count || t->bvh_nodes);
+        ok = !bvh.count || t->bvh_nodes;
     }
-    free(marks);
-    free(renumber);
-    free(nodes);
-    free(kids.v);
-    free(leaves);
     free(bvh.v);
     return ok;
 }
@@ -466,9 +506,14 @@ static int compile(csg_builder *b, uint32_t root, csg_tree *t)
     }
     if (ok && root != CSG_EMPTY)
         new_root = map[root];
-    ok = ok && freeze(t, &c, new_root);
     free(map);
     free(marks);
+    /* The source nodes are compiled: free them before the tree is frozen. */
+    free(b->nodes);
+    b->nodes = NULL;
+    free(b->child_ids);
+    b->child_ids = NULL;
+    ok = ok && freeze(t, &c, b, new_root);
     free(c.nodes);
     free(c.kids.v);
     free(c.operands.v);
@@ -512,6 +557,7 @@ void csg_tree_free(csg_tree *t)
     if (!t)
         return;
     arena_free(&t->mem);
+    free(t->owned_leaves);
     free(t);
 }
 

@@ -74,9 +74,10 @@ typedef struct csg_counters {
 } csg_counters;
 
 typedef struct csg_tree {
-    arena mem;       /* owns every array below */
-    csg_node *nodes; /* only nodes reachable from the root; children
-                        before parents */
+    arena mem;              /* owns every array below but owned_leaves */
+    csg_leaf *owned_leaves; /* leaves when taken over from the builder, else NULL */
+    csg_node *nodes;        /* only nodes reachable from the root; children
+                               before parents */
     uint32_t node_count;
     uint32_t *child_ids;
     csg_leaf *leaves;

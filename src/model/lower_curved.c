@@ -232,7 +232,7 @@ sc_status model_read_implicit(const model_reader *c, const parse_node *n,
     if (!expr_compile(f->u.string.chars, f->u.string.length, params, param_count,
                       &out->program, &e)) {
         sc_location loc = {c->file, 0, 0};
-        lex_string_locate(f->u.string.raw, f->u.string.raw_length, f->line, f->column,
+        lex_string_locate(parse_string_raw(f), f->u.string.raw_length, f->line, f->column,
                           e.offset, &loc.line, &loc.column);
         return err_set(c->error, SC_ERR_SYNTAX, &loc, "%s", e.message);
     }

@@ -219,52 +219,16 @@ static int special_word(const char *p, const char *end)
     return 0;
 }
 
-/* The value of the well-formed decimal number s .. end (no inf or nan) by
- * Clinger's fast path (see the top of the file): 1 and *v when it applies,
- * else 0. Needs double arithmetic without extra precision
- * (FLT_EVAL_METHOD 0), which every SSE2 or ARM64 target has. */
-static int fast_number(const char *s, const char *end, double *v)
+/* W * 10^k by Clinger's fast path (see the top of the file): 1 and *v when
+ * it applies (W < 10^15, |k| <= 22), else 0. Needs double arithmetic
+ * without extra precision (FLT_EVAL_METHOD 0), which every SSE2 or ARM64
+ * target has. */
+static int fast_number(uint64_t w, int k, int negative, double *v)
 {
 #if FLT_EVAL_METHOD == 0
     static const double powers[23] = {1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1e6,  1e7,
                                       1e8,  1e9,  1e10, 1e11, 1e12, 1e13, 1e14, 1e15,
                                       1e16, 1e17, 1e18, 1e19, 1e20, 1e21, 1e22};
-    const char *p = s;
-    int negative = 0;
-    if (*p == '+' || *p == '-')
-        negative = *p++ == '-';
-    uint64_t w = 0;
-    int significant = 0, fraction = 0, seen_point = 0;
-    for (; p < end; p++) {
-        if (*p == '.') {
-            seen_point = 1;
-            continue;
-        }
-        if (!is_digit((unsigned char)*p))
-            break;
-        if (w != 0 || *p != '0')
-            significant++;
-        if (significant > 15)
-            return 0;
-        w = 10 * w + (uint64_t)(*p - '0');
-        fraction += seen_point;
-    }
-    int exponent = 0;
-    if (p < end) { /* 'e' or 'E' */
-        p++;
-        int exp_negative = 0;
-        if (*p == '+' || *p == '-')
-            exp_negative = *p++ == '-';
-        int exp_digits = 0;
-        for (; p < end; p++, exp_digits++) {
-            if (exp_digits == 4)
-                return 0;
-            exponent = 10 * exponent + (*p - '0');
-        }
-        if (exp_negative)
-            exponent = -exponent;
-    }
-    int k = exponent - fraction;
     double value;
     if (w == 0)
         value = 0;
@@ -277,8 +241,9 @@ static int fast_number(const char *s, const char *end, double *v)
     *v = negative ? -value : value;
     return 1;
 #else
-    (void)s;
-    (void)end;
+    (void)w;
+    (void)k;
+    (void)negative;
     (void)v;
     return 0;
 #endif
@@ -287,17 +252,20 @@ static int fast_number(const char *s, const char *end, double *v)
 /* number := [+-]? ( D+ ('.' D*)? | '.' D+ ) ([eE] [+-]? D+)?
  *         | [+-]? ('inf' | 'nan')
  * Any letter, digit, '_' or '.' directly after a number makes it
- * malformed. */
+ * malformed. One pass reads the number and gathers, as it goes, what the
+ * fast path needs: the digits as an integer W (leading zeros do not count
+ * towards its 15 significant digits), the digits after the point, and an
+ * exponent of at most 4 digits. */
 static sc_status lex_number(lexer *lx, lex_token *tok, sc_error *error)
 {
-    const char *s = lx->p, *p = lx->p;
+    const char *s = lx->p, *p = lx->p, *end = lx->end;
     sc_location loc = here(lx, s, lx->line, lx->line_start);
     int negative = 0;
     if (*p == '+' || *p == '-') {
         negative = *p == '-';
         p++;
     }
-    int special = special_word(p, lx->end);
+    int special = special_word(p, end);
     if (special) {
         p += 3;
         tok->kind = LEX_NUMBER;
@@ -308,34 +276,48 @@ static sc_status lex_number(lexer *lx, lex_token *tok, sc_error *error)
         lx->p = p;
         return SC_OK;
     }
-    while (p < lx->end && is_digit((unsigned char)*p))
-        p++;
-    if (p < lx->end && *p == '.') {
-        p++;
-        while (p < lx->end && is_digit((unsigned char)*p))
-            p++;
+    uint64_t w = 0;
+    int significant = 0, fraction = 0;
+    for (; p < end && is_digit((unsigned char)*p); p++) {
+        significant += w != 0 || *p != '0';
+        if (significant <= 15)
+            w = 10 * w + (uint64_t)(*p - '0');
     }
-    if (p < lx->end && (*p == 'e' || *p == 'E')) {
+    if (p < end && *p == '.') {
+        for (p++; p < end && is_digit((unsigned char)*p); p++) {
+            significant += w != 0 || *p != '0';
+            if (significant <= 15)
+                w = 10 * w + (uint64_t)(*p - '0');
+            fraction++;
+        }
+    }
+    int exponent = 0, exp_digits = 0;
+    if (p < end && (*p == 'e' || *p == 'E')) {
         const char *q = p + 1;
-        if (q < lx->end && (*q == '+' || *q == '-'))
-            q++;
-        if (q < lx->end && is_digit((unsigned char)*q)) {
-            while (q < lx->end && is_digit((unsigned char)*q))
-                q++;
+        int exp_negative = 0;
+        if (q < end && (*q == '+' || *q == '-'))
+            exp_negative = *q++ == '-';
+        if (q < end && is_digit((unsigned char)*q)) {
+            for (; q < end && is_digit((unsigned char)*q); q++, exp_digits++) {
+                if (exp_digits < 4)
+                    exponent = 10 * exponent + (*q - '0');
+            }
+            if (exp_negative)
+                exponent = -exponent;
             p = q;
         }
     }
-    if (p < lx->end && (is_ident_char((unsigned char)*p) || *p == '.')) {
-        while (p < lx->end &&
-               (is_ident_char((unsigned char)*p) || *p == '.' ||
-                ((*p == '+' || *p == '-') && (p[-1] == 'e' || p[-1] == 'E'))))
+    if (p < end && (is_ident_char((unsigned char)*p) || *p == '.')) {
+        while (p < end && (is_ident_char((unsigned char)*p) || *p == '.' ||
+                           ((*p == '+' || *p == '-') && (p[-1] == 'e' || p[-1] == 'E'))))
             p++;
         return err_set(error, SC_ERR_SYNTAX, &loc, "malformed number '%.*s'",
                        (int)(p - s), s);
     }
     size_t n = (size_t)(p - s);
     double fast;
-    if (fast_number(s, p, &fast)) {
+    if (significant <= 15 && exp_digits <= 4 &&
+        fast_number(w, exponent - fraction, negative, &fast)) {
         tok->kind = LEX_NUMBER;
         tok->number = fast;
         tok->length = n;
@@ -497,10 +479,14 @@ static sc_status lex_string(lexer *lx, lex_token *tok, sc_error *error)
         return err_set(error, SC_ERR_LIMIT, &loc, "string too long (limit is %d bytes)",
                        LEX_MAX_STRING);
     /* Decoding never lengthens: every escape is at least as long as its
-     * UTF-8 result (\uHHHH: 6 bytes for at most 3, \UHHHHHH: 8 for 4). */
-    char *out = arena_alloc(lx->strings, n + 1);
-    if (!out)
+     * UTF-8 result (\uHHHH: 6 bytes for at most 3, \UHHHHHH: 8 for 4).
+     * The raw text goes first, NUL-terminated, then the decoded one. */
+    char *raw_copy = arena_alloc(lx->strings, 2 * (n + 1));
+    if (!raw_copy)
         return err_nomem(error, NULL);
+    memcpy(raw_copy, raw, n);
+    raw_copy[n] = '\0';
+    char *out = raw_copy + n + 1;
     tok->kind = LEX_STRING;
     tok->string = out;
     tok->string_length = decode_string(raw, n, out, NULL);
@@ -529,6 +515,15 @@ static sc_status unexpected(lexer *lx, sc_error *error)
     return err_set(error, SC_ERR_SYNTAX, &loc, "unexpected byte 0x%02x", c);
 }
 
+/* The one-character tokens by their character; LEX_EOF for every other
+ * byte. */
+static const lex_kind single_tokens[256] = {
+    ['('] = LEX_LPAREN, [')'] = LEX_RPAREN,  ['['] = LEX_LBRACKET, [']'] = LEX_RBRACKET,
+    ['{'] = LEX_LBRACE, ['}'] = LEX_RBRACE,  [','] = LEX_COMMA,    [';'] = LEX_SEMICOLON,
+    ['='] = LEX_EQUALS, ['%'] = LEX_PERCENT, ['#'] = LEX_HASH,     ['!'] = LEX_BANG,
+    ['*'] = LEX_STAR,
+};
+
 sc_status lex_next(lexer *lx, lex_token *tok, sc_error *error)
 {
     sc_status st = skip_space(lx, error);
@@ -543,6 +538,14 @@ sc_status lex_next(lexer *lx, lex_token *tok, sc_error *error)
         return SC_OK;
     }
     unsigned char c = (unsigned char)*lx->p;
+    /* Punctuation first: it is most of a matrix's tokens. */
+    lex_kind single = single_tokens[c];
+    if (single != LEX_EOF) {
+        tok->kind = single;
+        tok->length = 1;
+        lx->p++;
+        return SC_OK;
+    }
     const char *next = lx->p + 1;
     int next_c = next < lx->end ? (unsigned char)*next : -1;
     int next2_c = next + 1 < lx->end ? (unsigned char)next[1] : -1;
@@ -572,52 +575,5 @@ sc_status lex_next(lexer *lx, lex_token *tok, sc_error *error)
     }
     if (c == '"')
         return lex_string(lx, tok, error);
-    lex_kind kind;
-    switch (c) {
-    case '(':
-        kind = LEX_LPAREN;
-        break;
-    case ')':
-        kind = LEX_RPAREN;
-        break;
-    case '[':
-        kind = LEX_LBRACKET;
-        break;
-    case ']':
-        kind = LEX_RBRACKET;
-        break;
-    case '{':
-        kind = LEX_LBRACE;
-        break;
-    case '}':
-        kind = LEX_RBRACE;
-        break;
-    case ',':
-        kind = LEX_COMMA;
-        break;
-    case ';':
-        kind = LEX_SEMICOLON;
-        break;
-    case '=':
-        kind = LEX_EQUALS;
-        break;
-    case '%':
-        kind = LEX_PERCENT;
-        break;
-    case '#':
-        kind = LEX_HASH;
-        break;
-    case '!':
-        kind = LEX_BANG;
-        break;
-    case '*':
-        kind = LEX_STAR;
-        break;
-    default:
-        return unexpected(lx, error);
-    }
-    tok->kind = kind;
-    tok->length = 1;
-    lx->p++;
-    return SC_OK;
+    return unexpected(lx, error);
 }

@@ -50,7 +50,9 @@ typedef struct lex_token {
     const char *start;  /* the token's text in the input */
     size_t length;      /* bytes of text */
     double number;      /* LEX_NUMBER */
-    const char *string; /* LEX_STRING: decoded, NUL-terminated, in the arena */
+    const char *string; /* LEX_STRING: decoded, NUL-terminated, in the arena,
+                           right after a NUL-terminated copy of the raw text
+                           between the quotes (parse_string_raw) */
     size_t string_length;
 } lex_token;
 

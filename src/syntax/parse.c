@@ -27,6 +27,13 @@ typedef struct open_vector {
     int line;     /* of its '[' */
 } open_vector;
 
+/* A name stored once: an entry of the parser's table of names. */
+typedef struct name_entry {
+    const char *chars; /* in the tree's strings arena; NULL: a free slot */
+    uint32_t length;
+    uint32_t hash;
+} name_entry;
+
 typedef struct parser {
     lexer lx;
     lex_token tok; /* the current token */
@@ -38,6 +45,8 @@ typedef struct parser {
     size_t open_count, open_cap;
     parse_arg *args; /* the arguments of the node being read */
     size_t arg_count, arg_cap;
+    name_entry *names; /* open addressing, a power of two slots, at most half full */
+    size_t name_count, name_cap;
 } parser;
 
 static sc_location token_loc(const parser *ps)
@@ -64,20 +73,72 @@ static sc_status syntax_error(parser *ps, const char *format, ...)
     return err_set(ps->error, SC_ERR_SYNTAX, &loc, "%s", message);
 }
 
-/* Copies the current token's text into the arena as a C string. */
+static uint32_t name_hash(const char *s, size_t n)
+{
+    uint32_t h = 2166136261u; /* FNV-1a */
+    for (size_t i = 0; i < n; i++)
+        h = (h ^ (unsigned char)s[i]) * 16777619u;
+    return h;
+}
+
+/* Doubles the table of names (or makes its first 64 slots); 0 when out of
+ * memory. */
+static int grow_names(parser *ps)
+{
+    size_t cap = ps->name_cap ? ps->name_cap * 2 : 64;
+    name_entry *slots =
+        cap <= SIZE_MAX / sizeof *slots ? calloc(cap, sizeof *slots) : NULL;
+    if (!slots)
+        return 0;
+    for (size_t i = 0; i < ps->name_cap; i++) {
+        const name_entry *e = &ps->names[i];
+        if (!e->chars)
+            continue;
+        size_t k = e->hash & (cap - 1);
+        while (slots[k].chars)
+            k = (k + 1) & (cap - 1);
+        slots[k] = *e;
+    }
+    free(ps->names);
+    ps->names = slots;
+    ps->name_cap = cap;
+    return 1;
+}
+
+/* The current token's text (a name) as a C string in the tree's strings
+ * arena, stored once per distinct name: a file of a million spheres
+ * writes "sphere", "multmatrix" and "$fn" a million times each. NULL when
+ * out of memory. */
 static const char *token_text(parser *ps)
 {
-    char *s = arena_alloc(&ps->tree->mem, ps->tok.length + 1);
-    if (s) {
-        memcpy(s, ps->tok.start, ps->tok.length);
-        s[ps->tok.length] = '\0';
+    const char *text = ps->tok.start;
+    size_t n = ps->tok.length;
+    uint32_t h = name_hash(text, n);
+    if (ps->name_count + 1 > ps->name_cap / 2 && !grow_names(ps))
+        return NULL;
+    size_t k = h & (ps->name_cap - 1);
+    for (;; k = (k + 1) & (ps->name_cap - 1)) {
+        name_entry *e = &ps->names[k];
+        if (!e->chars)
+            break;
+        if (e->hash == h && e->length == n && memcmp(e->chars, text, n) == 0)
+            return e->chars;
     }
+    char *s = arena_alloc(&ps->tree->strings, n + 1);
+    if (!s)
+        return NULL;
+    memcpy(s, text, n);
+    s[n] = '\0';
+    /* Names are identifiers, far shorter than 2^32 bytes. */
+    ps->names[k] = (name_entry){s, (uint32_t)n, h};
+    ps->name_count++;
     return s;
 }
 
 static sc_status push_value(parser *ps, const parse_value *v)
 {
-    if (!grow_array((void **)&ps->values, &ps->value_cap, ps->value_count + 1,
+    if (ps->value_count == ps->value_cap &&
+        !grow_array((void **)&ps->values, &ps->value_cap, ps->value_count + 1,
                     sizeof *ps->values))
         return err_nomem(ps->error, NULL);
     ps->values[ps->value_count++] = *v;
@@ -96,7 +157,8 @@ static sc_status close_vector(parser *ps, parse_value *v)
         return err_set(ps->error, SC_ERR_LIMIT, NULL, "vector too long");
     parse_value *items = NULL;
     if (count) {
-        items = arena_calloc(&ps->tree->mem, count, sizeof *items);
+        /* count is below PARSE_MAX_VECTOR: the size cannot overflow. */
+        items = arena_alloc(&ps->tree->mem, count * sizeof *items);
         if (!items)
             return err_nomem(ps->error, NULL);
         memcpy(items, &ps->values[o->start], count * sizeof *items);
@@ -125,17 +187,12 @@ static sc_status parse_value_into(parser *ps, parse_value *out)
             v.u.number = ps->tok.number;
             break;
         case LEX_STRING:
+            /* The lexer keeps the raw text right before the decoded one
+             * (parse_string_raw); both are at most LEX_MAX_STRING bytes. */
             v.kind = PARSE_STRING;
             v.u.string.chars = ps->tok.string;
-            v.u.string.length = ps->tok.string_length;
-            /* The raw text between the quotes, kept for positions inside
-             * the string (expressions report errors there). */
-            v.u.string.raw_length = ps->tok.length - 2;
-            v.u.string.raw = arena_alloc(&ps->tree->mem, ps->tok.length - 1);
-            if (!v.u.string.raw)
-                return err_nomem(ps->error, NULL);
-            memcpy((char *)v.u.string.raw, ps->tok.start + 1, ps->tok.length - 2);
-            ((char *)v.u.string.raw)[ps->tok.length - 2] = '\0';
+            v.u.string.length = (uint32_t)ps->tok.string_length;
+            v.u.string.raw_length = (uint32_t)(ps->tok.length - 2);
             break;
         case LEX_TRUE:
         case LEX_FALSE:
@@ -230,7 +287,8 @@ static sc_status parse_arguments(parser *ps, parse_node *node, int paren_line)
         }
         if ((st = parse_value_into(ps, &arg.value)) != SC_OK)
             return st;
-        if (!grow_array((void **)&ps->args, &ps->arg_cap, ps->arg_count + 1,
+        if (ps->arg_count == ps->arg_cap &&
+            !grow_array((void **)&ps->args, &ps->arg_cap, ps->arg_count + 1,
                         sizeof *ps->args))
             return err_nomem(ps->error, NULL);
         ps->args[ps->arg_count++] = arg;
@@ -244,7 +302,7 @@ static sc_status parse_arguments(parser *ps, parse_node *node, int paren_line)
     if (ps->arg_count) {
         if (ps->arg_count > UINT32_MAX)
             return err_set(ps->error, SC_ERR_LIMIT, NULL, "too many arguments");
-        parse_arg *args = arena_calloc(&ps->tree->mem, ps->arg_count, sizeof *args);
+        parse_arg *args = arena_alloc(&ps->tree->mem, ps->arg_count * sizeof *args);
         if (!args)
             return err_nomem(ps->error, NULL);
         memcpy(args, ps->args, ps->arg_count * sizeof *args);
@@ -337,8 +395,8 @@ static sc_status parse_statements(parser *ps)
         if (!node || !(node->name = token_text(ps)))
             return err_nomem(ps->error, NULL);
         node->loc = token_loc(ps);
-        node->modifiers = modifiers;
-        node->depth = depth;
+        node->modifiers = (uint8_t)modifiers;
+        node->depth = (uint16_t)depth;
         if ((st = advance(ps)) != SC_OK)
             return st;
         if (ps->tok.kind != LEX_LPAREN)
@@ -382,18 +440,20 @@ sc_status parse_text(const char *file, const char *text, size_t length, parse_tr
     if (!tree)
         return err_nomem(error, NULL);
     arena_init(&tree->mem, 64 * 1024);
+    arena_init(&tree->strings, 16 * 1024);
     tree->file = file;
     parser ps;
     memset(&ps, 0, sizeof ps);
     ps.tree = tree;
     ps.error = error;
-    lex_init(&ps.lx, file, text, length, &tree->mem);
+    lex_init(&ps.lx, file, text, length, &tree->strings);
     sc_status st = advance(&ps);
     if (st == SC_OK)
         st = parse_statements(&ps);
     free(ps.values);
     free(ps.open);
     free(ps.args);
+    free(ps.names);
     if (st != SC_OK) {
         parse_tree_free(tree);
         return st;
@@ -407,7 +467,17 @@ void parse_tree_free(parse_tree *tree)
     if (!tree)
         return;
     arena_free(&tree->mem);
+    arena_free(&tree->strings);
     free(tree);
+}
+
+void parse_tree_release_nodes(parse_tree *tree)
+{
+    if (!tree)
+        return;
+    arena_free(&tree->mem);
+    tree->first = NULL;
+    tree->count = 0;
 }
 
 const parse_arg *parse_node_arg(const parse_node *node, const char *name, int position)
@@ -417,7 +487,7 @@ const parse_arg *parse_node_arg(const parse_node *node, const char *name, int po
     for (uint32_t i = 0; i < node->arg_count; i++) {
         const parse_arg *a = &node->args[i];
         if (a->name) {
-            if (strcmp(a->name, name) == 0)
+            if (a->name[0] == name[0] && strcmp(a->name, name) == 0)
                 found = a;
         } else if (positional++ == position) {
             found = a;

@@ -18,8 +18,10 @@
  * overflow the C stack; nodes and vectors are each limited to
  * PARSE_MAX_DEPTH levels. A file holds at most PARSE_MAX_NODES nodes and a
  * vector at most PARSE_MAX_VECTOR items (docs/limits.md), so memory stays
- * proportional to what a real model needs. Everything lives in one arena
- * owned by the tree.
+ * proportional to what a real model needs. Everything lives in two arenas
+ * owned by the tree: the nodes with their arguments and values, and the
+ * names and strings. A name (of a node or of an argument) is stored once
+ * however often the file writes it.
  */
 #ifndef SPANCAST_SYNTAX_PARSE_H
 #define SPANCAST_SYNTAX_PARSE_H
@@ -43,6 +45,8 @@ typedef enum parse_value_kind {
     PARSE_VECTOR
 } parse_value_kind;
 
+/* 32 bytes: a million positioned leaves hold about twenty million values
+ * (a 4x4 matrix is 21 of them), so every byte here is 20 MB there. */
 typedef struct parse_value parse_value;
 struct parse_value {
     parse_value_kind kind;
@@ -51,11 +55,10 @@ struct parse_value {
         int boolean;
         double number; /* may be inf or nan: OpenSCAD writes them */
         struct {
-            const char *chars; /* decoded, NUL-terminated */
-            size_t length;
-            const char *raw; /* as written between the quotes (for positions
-                                inside the string, see lex_string_locate) */
-            size_t raw_length;
+            const char *chars;   /* decoded, NUL-terminated; the text as written
+                                    comes before it (parse_string_raw) */
+            uint32_t length;     /* bytes of chars */
+            uint32_t raw_length; /* bytes as written between the quotes */
         } string;
         struct {
             const parse_value *items;
@@ -63,6 +66,13 @@ struct parse_value {
         } vector;
     } u;
 };
+
+/* A string value's text as written between the quotes, raw_length bytes
+ * and a NUL (for positions inside the string, see lex_string_locate). */
+static inline const char *parse_string_raw(const parse_value *v)
+{
+    return v->u.string.chars - v->u.string.raw_length - 1;
+}
 
 typedef struct parse_arg {
     const char *name; /* NULL for a positional argument */
@@ -78,23 +88,26 @@ enum {
     PARSE_MOD_BACKGROUND = 8 /* '%': shown, not part of the solid */
 };
 
+/* 80 bytes, packed for the same reason as parse_value. */
 typedef struct parse_node parse_node;
 struct parse_node {
-    const char *name;   /* NUL-terminated */
-    sc_location loc;    /* of the name */
-    unsigned modifiers; /* PARSE_MOD_* flags */
+    const char *name; /* NUL-terminated, shared by every node of that name */
+    sc_location loc;  /* of the name */
     const parse_arg *args;
     uint32_t arg_count;
-    uint32_t depth;     /* 1 for a top-level node */
-    int has_block;      /* written with '{ ... }' (maybe empty) rather than ';' */
-    int block_line;     /* line of the '{' */
+    uint32_t child_count;
     parse_node *parent; /* NULL at top level */
     parse_node *first_child, *last_child, *next;
-    uint32_t child_count;
+    int block_line;    /* line of the '{' */
+    uint16_t depth;    /* 1 for a top-level node (at most PARSE_MAX_DEPTH) */
+    uint8_t modifiers; /* PARSE_MOD_* flags */
+    uint8_t has_block; /* written with '{ ... }' (maybe empty) rather than ';' */
 };
 
 typedef struct parse_tree {
-    arena mem;         /* owns every node, argument, value and string */
+    arena mem;         /* owns every node, argument and value */
+    arena strings;     /* owns every name and string, which outlive the nodes
+                          (parse_tree_release_nodes) */
     const char *file;  /* as passed to parse_text; not owned */
     parse_node *first; /* top-level statements, linked by next */
     uint32_t count;
@@ -109,6 +122,12 @@ sc_status parse_text(const char *file, const char *text, size_t length, parse_tr
                      sc_error *error);
 
 void parse_tree_free(parse_tree *tree);
+
+/* Frees the tree's nodes, arguments and values, keeping its names and
+ * strings (which a lowered model points to) until parse_tree_free. The
+ * tree is then empty (first is NULL). Loading frees the syntax this way
+ * once a model that no longer reads it is made. */
+void parse_tree_release_nodes(parse_tree *tree);
 
 /* The argument that sets parameter `name`, which also takes the position-th
  * positional argument (position < 0: by name only). When several set it,
