@@ -67,38 +67,33 @@ uint64_t render_work_credit(const sc_render_options *o)
     return rays * (uint64_t)o->spp * RENDER_IMPLICIT_EVALS_PER_RAY; /* < 2^39 */
 }
 
-/* The leaf of tree that token names, or NULL when it is another tree's. */
-static const csg_leaf *stopping_leaf(const csg_tree *tree, cancel_token *token)
+sc_status render_limit_error(const csg_tree *tree, int reason, uint32_t leaf,
+                             const void *prim, sc_error *error)
 {
-    uint32_t leaf = atomic_load(&token->leaf);
-    const void *prim = atomic_load(&token->prim);
-    if (!tree || leaf >= tree->leaf_count || &tree->leaves[leaf].prim != prim)
-        return NULL;
-    return &tree->leaves[leaf];
-}
-
-sc_status render_stop_error(const csg_tree *tree, cancel_token *token, sc_error *error)
-{
-    cancel_reason reason = cancel_check(token);
-    const csg_leaf *leaf = stopping_leaf(tree, token);
-    const sc_location *loc = leaf && leaf->loc.line > 0 ? &leaf->loc : NULL;
-    switch (reason) {
-    case CANCEL_RAY_LIMIT:
+    const sc_location *loc = NULL;
+    if (tree && leaf < tree->leaf_count && &tree->leaves[leaf].prim == prim &&
+        tree->leaves[leaf].loc.line > 0)
+        loc = &tree->leaves[leaf].loc;
+    if (reason == CANCEL_RAY_LIMIT)
         return err_set(
             error, SC_ERR_LIMIT, loc,
             "implicit surface needs more than %u evaluations per ray (limit is "
             "%u; the field is not resolvable at this scale)",
             SOLVE_MAX_EVALS, SOLVE_MAX_EVALS);
-    case CANCEL_BUDGET:
-        return err_set(
-            error, SC_ERR_LIMIT, loc,
-            "implicit surfaces need more than %u evaluations per ray on average "
-            "(limit is %u, after the first %llu)",
-            RENDER_IMPLICIT_EVALS_PER_RAY, RENDER_IMPLICIT_EVALS_PER_RAY,
-            (unsigned long long)token->budget);
-    default:
-        return err_set(error, SC_ERR_CANCELLED, NULL, "interrupted");
-    }
+    return err_set(error, SC_ERR_LIMIT, loc,
+                   "implicit surfaces need more than %u evaluations per ray on average "
+                   "(limit is %u, after the first %u)",
+                   RENDER_IMPLICIT_EVALS_PER_RAY, RENDER_IMPLICIT_EVALS_PER_RAY,
+                   RENDER_MIN_IMPLICIT_EVALS);
+}
+
+sc_status render_stop_error(const csg_tree *tree, cancel_token *token, sc_error *error)
+{
+    cancel_reason reason = cancel_check(token);
+    if (reason == CANCEL_RAY_LIMIT || reason == CANCEL_BUDGET)
+        return render_limit_error(tree, (int)reason, atomic_load(&token->leaf),
+                                  atomic_load(&token->prim), error);
+    return err_set(error, SC_ERR_CANCELLED, NULL, "interrupted");
 }
 
 sc_status render_check_fields(const csg_tree *tree, sc_error *error)

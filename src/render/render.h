@@ -65,6 +65,12 @@ uint64_t render_work_credit(const sc_render_options *options);
  * within the leaf's box (SC_ERR_LIMIT at the leaf). (budget.c) */
 sc_status render_check_fields(const csg_tree *tree, sc_error *error);
 
+/* The error of a work limit (cancel_reason reason: CANCEL_RAY_LIMIT or
+ * CANCEL_BUDGET) passed at leaf (primitive prim), at the leaf's position
+ * when it is one of tree's (tree may be NULL). (budget.c) */
+sc_status render_limit_error(const csg_tree *tree, int reason, uint32_t leaf,
+                             const void *prim, sc_error *error);
+
 sc_status render_stop_error(const csg_tree *tree, struct cancel_token *token,
                             sc_error *error);
 
