@@ -153,11 +153,9 @@ static int parse_check_args(check_args *a, int argc, char **argv)
             return cli_usage_error("unknown option '%s'", arg);
         const char *eq = strchr(arg, '=');
         size_t len = eq ? (size_t)(eq - arg) : strlen(arg);
-        const check_option *spec = NULL;
-        for (size_t q = 0; q < sizeof check_options / sizeof check_options[0]; q++)
-            if (strlen(check_options[q].name) == len &&
-                !strncmp(arg, check_options[q].name, len))
-                spec = &check_options[q];
+        const check_option *spec =
+            cli_find_option(check_options, sizeof check_options / sizeof check_options[0],
+                            sizeof check_options[0], arg, len);
         if (!spec)
             return cli_usage_error("unknown option '%.*s'", (int)len, arg);
         if (!(spec->commands & a->command))

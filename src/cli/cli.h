@@ -34,6 +34,12 @@ int cli_parse_int(const char *s, long lo, long hi, long *out);
  */
 int cli_parse_numbers(const char *s, double *out, int max);
 
+/* The entry of an option table named by the len bytes at name, or NULL:
+ * table holds count entries of stride bytes, each beginning with its
+ * name (const char *), as every command's table does. (render_options.c) */
+const void *cli_find_option(const void *table, size_t count, size_t stride,
+                            const char *name, size_t len);
+
 /* The names of --view in the order of their SC_VIEW_* bits: bit k is
  * 1 << k. (render_options.c) */
 #define CLI_VIEW_NAME_COUNT 4

@@ -439,12 +439,8 @@ static int apply_option(cli_args *a, const opt_spec *spec, const char *value)
 
 static const opt_spec *find_option(const char *arg, size_t name_len)
 {
-    for (size_t k = 0; k < sizeof options_table / sizeof options_table[0]; k++) {
-        const char *name = options_table[k].name;
-        if (strlen(name) == name_len && !strncmp(arg, name, name_len))
-            return &options_table[k];
-    }
-    return NULL;
+    return cli_find_option(options_table, sizeof options_table / sizeof options_table[0],
+                           sizeof options_table[0], arg, name_len);
 }
 
 /* Applies --view-preset and --sheet, which place the camera themselves:
