@@ -237,7 +237,7 @@ void view_worker_stop(view_worker *w)
     pthread_mutex_lock(&w->lock);
     w->stopping = 1;
     if (w->running)
-        w->cancel = 1; /* whatever the job, it stops at the next tile */
+        w->cancel = 1; /* whatever the job, it stops inside its tile */
     pthread_cond_signal(&w->changed);
     pthread_mutex_unlock(&w->lock);
     pthread_join(w->thread, NULL);
