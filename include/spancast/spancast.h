@@ -326,7 +326,8 @@ typedef struct sc_render_options {
     void (*progress)(void *user, double fraction);
     void *progress_user;
     /* Cancellation: when not NULL and *cancel becomes non-zero (a signal
-     * handler may set it), sc_render stops within a tile and returns
+     * handler may set it), sc_render stops within milliseconds (it is
+     * polled inside tiles, down to the root finders) and returns
      * SC_ERR_CANCELLED, and the writers of its framebuffer give up without
      * touching their target. NULL by default. */
     const volatile sig_atomic_t *cancel;

@@ -34,6 +34,7 @@
 #include "build/scene.h"
 #include "csg/csg.h"
 #include "csg/span.h"
+#include "render/render.h"
 
 sc_status sc_scene_load_mesh(const char *path, const sc_load_options *options,
                              sc_scene **scene, sc_error *error)
@@ -172,6 +173,18 @@ static sc_status compare_scenes(const sc_scene *a, const sc_scene *b,
         out->lines = grids[0].lines + grids[1].lines + grids[2].lines;
     }
     int failed = grids[0].failed || grids[1].failed || grids[2].failed;
+    int limited = 0;
+    for (int g = 0; g < 3 && st == SC_ERR_LIMIT && !limited; g++) {
+        const quad_grid *q = &grids[g];
+        if (!q->limit_reason)
+            continue;
+        /* the leaf is one of a's or one of b's */
+        int in_b = q->limit_leaf < tb->leaf_count &&
+                   &tb->leaves[q->limit_leaf].prim == q->limit_prim;
+        render_limit_error(in_b ? tb : ta, q->limit_reason, q->limit_leaf, q->limit_prim,
+                           error);
+        limited = 1;
+    }
     for (int g = 0; g < 3; g++)
         quad_free(&grids[g]);
     for (int k = 0; k < threads; k++)
@@ -179,6 +192,8 @@ static sc_status compare_scenes(const sc_scene *a, const sc_scene *b,
     free(shared.scratch);
     if (st == SC_ERR_CANCELLED)
         return err_set(error, SC_ERR_CANCELLED, NULL, "comparison cancelled");
+    if (limited)
+        return SC_ERR_LIMIT;
     if (st == SC_ERR_ARGUMENT && failed)
         return err_set(error, SC_ERR_ARGUMENT, NULL,
                        "a line through the solids is unbounded or ran out of memory");

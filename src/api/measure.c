@@ -48,6 +48,7 @@
 #include "base/sized.h"
 #include "build/scene.h"
 #include "csg/csg.h"
+#include "render/render.h"
 
 void sc_measure_options_init_size(sc_measure_options *options, size_t size)
 {
@@ -380,6 +381,13 @@ static sc_status measure_scene(const sc_scene *scene, const sc_measure_options *
         }
     }
     int failed = grids[0].failed || grids[1].failed || grids[2].failed;
+    const quad_grid *limited = NULL;
+    for (int a = 0; a < 3; a++)
+        if (grids[a].limit_reason && !limited)
+            limited = &grids[a];
+    if (st == SC_ERR_LIMIT && limited)
+        render_limit_error(t, limited->limit_reason, limited->limit_leaf,
+                           limited->limit_prim, error);
     for (int a = 0; a < 3; a++)
         quad_free(&grids[a]);
     for (int k = 0; k < threads; k++)
@@ -388,6 +396,8 @@ static sc_status measure_scene(const sc_scene *scene, const sc_measure_options *
     free(shared.box);
     if (st == SC_ERR_CANCELLED)
         return err_set(error, SC_ERR_CANCELLED, NULL, "measure cancelled");
+    if (st == SC_ERR_LIMIT && limited)
+        return SC_ERR_LIMIT;
     if (st == SC_ERR_ARGUMENT && failed)
         return err_set(error, SC_ERR_ARGUMENT, NULL,
                        "a line through the solid is unbounded or ran out of memory");

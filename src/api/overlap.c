@@ -29,6 +29,7 @@
 #include "build/scene.h"
 #include "csg/csg.h"
 #include "csg/span.h"
+#include "render/render.h"
 #include "formats/file.h"
 #include "model/model.h"
 #include "syntax/parse.h"
@@ -369,6 +370,14 @@ static sc_status find_overlaps(const sc_objects *objects,
                 *count = 0;
                 if (st == SC_ERR_CANCELLED)
                     return err_set(error, st, NULL, "overlap search cancelled");
+                if (st == SC_ERR_LIMIT)
+                    return err_set(
+                        error, st, NULL,
+                        "implicit surfaces of object %zu or %zu need more than "
+                        "%u evaluations per line on average (limit is %u, "
+                        "after the first %u)",
+                        i + 1, j + 1, RENDER_IMPLICIT_EVALS_PER_RAY,
+                        RENDER_IMPLICIT_EVALS_PER_RAY, RENDER_MIN_IMPLICIT_EVALS);
                 return err_nomem(error, NULL);
             }
             if (!found)

@@ -15,7 +15,9 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "base/cancel.h"
 #include "base/error.h"
+#include "render/render.h"
 
 /* Room for count more cells. */
 static int reserve(quad_grid *g, size_t more)
@@ -68,22 +70,17 @@ static sc_status sample_cells(quad_grid *g, quad_cell *cells, double *estimate,
         free(sigs);
         return SC_ERR_NOMEM;
     }
-    int failed = 0, cancelled = 0;
+    int failed = 0;
     long long total = (long long)lines;
+    cancel_token token;
+    cancel_init(&token, cancel, RENDER_MIN_IMPLICIT_EVALS);
 #pragma omp parallel for schedule(dynamic, 64) num_threads(g->threads)
     for (long long line = 0; line < total; line++) {
-        int stop, stopped;
+        int stop;
 #pragma omp atomic read
         stop = failed;
-#pragma omp atomic read
-        stopped = cancelled;
-        if (stop || stopped)
+        if (stop || cancel_check(&token))
             continue;
-        if (cancel && *cancel) {
-#pragma omp atomic write
-            cancelled = 1;
-            continue;
-        }
         const quad_cell *c = &cells[line / 5];
         int which = (int)(line % 5);
         double u = c->u, v = c->v;
@@ -91,18 +88,32 @@ static sc_status sample_cells(quad_grid *g, quad_cell *cells, double *estimate,
             u += (which & 1 ? 0.5 : -0.5) * c->hu;
             v += (which > 2 ? 0.5 : -0.5) * c->hv;
         }
-        if (!g->sample(g->context, omp_get_thread_num(), u, v,
-                       values + (size_t)line * (size_t)k_count, &sigs[line])) {
+        cancel_scope scope;
+        cancel_enter(&scope, &token);
+        int ok = g->sample(g->context, omp_get_thread_num(), u, v,
+                           values + (size_t)line * (size_t)k_count, &sigs[line]);
+        cancel_leave(&scope);
+        cancel_credit(&token, RENDER_IMPLICIT_EVALS_PER_RAY);
+        if (!ok) {
 #pragma omp atomic write
             failed = 1;
         }
     }
     g->lines += lines;
-    if (failed || cancelled) {
+    cancel_reason reason = cancel_check(&token);
+    if (failed || reason != CANCEL_NONE) {
         free(values);
         free(sigs);
+        if (reason == CANCEL_FLAG)
+            return SC_ERR_CANCELLED;
+        if (reason != CANCEL_NONE) {
+            g->limit_reason = (int)reason;
+            g->limit_leaf = atomic_load(&token.leaf);
+            g->limit_prim = atomic_load(&token.prim);
+            return SC_ERR_LIMIT;
+        }
         g->failed = failed;
-        return cancelled ? SC_ERR_CANCELLED : SC_ERR_ARGUMENT;
+        return SC_ERR_ARGUMENT;
     }
     for (size_t i = 0; i < n; i++) {
         double area = 4 * cells[i].hu * cells[i].hv;

@@ -34,6 +34,14 @@
  * and the refinement follows every edge and silhouette seen in
  * projection.
  *
+ * Stopping: the lines of a round are cast inside a cancel token
+ * (base/cancel.h) on the caller's flag, so an interrupt stops even a slow
+ * line within milliseconds (SC_ERR_CANCELLED); the token's budget of
+ * implicit-surface work, RENDER_MIN_IMPLICIT_EVALS and
+ * RENDER_IMPLICIT_EVALS_PER_RAY more per line done, or a line past the
+ * root finder's bound, ends the integral with SC_ERR_LIMIT and the leaf in
+ * limit_reason, limit_leaf and limit_prim.
+ *
  * Determinism: the lines of one round are sampled in parallel (OpenMP) into
  * an array indexed by line, and everything that adds them up runs serially
  * in the cells' order, so the results do not depend on the thread count.
@@ -92,6 +100,11 @@ typedef struct quad_grid {
     double *total_error; /* cells, in cell order */
     uint64_t lines;      /* lines sampled so far */
     int failed;          /* the sampler failed (sample_status says why) */
+    /* SC_ERR_LIMIT from a line's implicit work (base/cancel.h): the reason
+     * and the leaf and primitive that passed it */
+    int limit_reason;
+    uint32_t limit_leaf;
+    const void *limit_prim;
 } quad_grid;
 
 /* Starts the integration over [lo0, hi0] x [lo1, hi1] with about base

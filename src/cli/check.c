@@ -68,11 +68,22 @@ static const check_option check_options[] = {
     {"--max-pixels", 1, COMPARE},
     {"--diff", 1, COMPARE},
     {"--imgsize", 1, COMPARE},
+    {"--max-time", 1, ALL},
 };
 
 static const char *command_name(int command)
 {
     return command == MEASURE ? "measure" : command == OVERLAPS ? "overlaps" : "compare";
+}
+
+/* A library call failed: the interrupt or time limit that stopped it, or
+ * its error and status. */
+static int call_failed(const sc_error *error, int status)
+{
+    if (cli_stop)
+        return cli_die_stopped();
+    cli_print_error(error);
+    return status;
 }
 
 static int apply_check_option(check_args *a, const char *name, const char *value)
@@ -108,6 +119,8 @@ static int apply_check_option(check_args *a, const char *name, const char *value
         a->max_pixels = (long)v;
     } else if (!strcmp(name, "--diff")) {
         a->diff = value;
+    } else if (!strcmp(name, "--max-time")) {
+        return cli_parse_max_time(value);
     } else if (!strcmp(name, "--imgsize")) {
         double wh[2];
         if (cli_parse_numbers(value, wh, 2) != 2 || wh[0] != floor(wh[0]) ||
@@ -141,11 +154,9 @@ static int parse_check_args(check_args *a, int argc, char **argv)
             return cli_usage_error("unknown option '%s'", arg);
         const char *eq = strchr(arg, '=');
         size_t len = eq ? (size_t)(eq - arg) : strlen(arg);
-        const check_option *spec = NULL;
-        for (size_t q = 0; q < sizeof check_options / sizeof check_options[0]; q++)
-            if (strlen(check_options[q].name) == len &&
-                !strncmp(arg, check_options[q].name, len))
-                spec = &check_options[q];
+        const check_option *spec =
+            cli_find_option(check_options, sizeof check_options / sizeof check_options[0],
+                            sizeof check_options[0], arg, len);
         if (!spec)
             return cli_usage_error("unknown option '%.*s'", (int)len, arg);
         if (!(spec->commands & a->command))
@@ -306,7 +317,7 @@ static int run_measure(check_args *a)
 {
     sc_scene *scene = cli_load(a->inputs[0], a->faithful);
     if (!scene)
-        return CLI_EXIT_FAILED;
+        return cli_stop ? cli_die_stopped() : CLI_EXIT_FAILED;
     progress_line line;
     start_progress(a, &line, "measuring");
     double t0 = seconds_now();
@@ -315,10 +326,9 @@ static int run_measure(check_args *a)
     sc_error error;
     sc_status st = sc_scene_measure(scene, &a->options, &m, &error);
     sc_scene_release(scene);
-    if (st) {
-        cli_print_error(&error);
-        return st == SC_ERR_ARGUMENT ? CLI_EXIT_USAGE : CLI_EXIT_FAILED;
-    }
+    if (st)
+        return call_failed(&error,
+                           st == SC_ERR_ARGUMENT ? CLI_EXIT_USAGE : CLI_EXIT_FAILED);
     print_measure(a, &m);
     if (!a->quiet)
         fprintf(stderr, "spancast: measured %s in %.2f s (%d threads)\n", a->inputs[0],
@@ -342,18 +352,18 @@ static int run_overlaps(check_args *a)
     lo.faithful = a->faithful;
     sc_objects *objects = NULL;
     sc_error error;
-    if (sc_objects_load(path, &lo, &objects, &error) != SC_OK) {
-        cli_print_error(&error);
-        return CLI_EXIT_USAGE;
-    }
+    cli_loading(1); /* cannot be stopped from inside: stop.c */
+    sc_status loaded = sc_objects_load(path, &lo, &objects, &error);
+    cli_loading(0);
+    if (loaded != SC_OK)
+        return call_failed(&error, CLI_EXIT_USAGE);
     progress_line line;
     start_progress(a, &line, "checking pairs");
     double t0 = seconds_now();
     sc_overlap_list *pairs = NULL;
     if (sc_objects_overlaps(objects, &a->options, &pairs, &error) != SC_OK) {
-        cli_print_error(&error);
         sc_objects_release(objects);
-        return CLI_EXIT_USAGE;
+        return call_failed(&error, CLI_EXIT_USAGE);
     }
     size_t objects_count = sc_objects_count(objects), above = 0;
     size_t count = sc_overlap_list_count(pairs);
@@ -418,7 +428,12 @@ static sc_scene *load_any(const char *path, int faithful)
     lo.faithful = faithful;
     sc_scene *scene = NULL;
     sc_error error;
-    if (sc_scene_load_mesh(path, &lo, &scene, &error) != SC_OK) {
+    cli_loading(1); /* cannot be stopped from inside: stop.c */
+    sc_status st = sc_scene_load_mesh(path, &lo, &scene, &error);
+    cli_loading(0);
+    if (st != SC_OK) {
+        if (cli_stop)
+            return NULL;
         cli_print_error(&error);
         return NULL;
     }
@@ -498,11 +513,11 @@ static int compare_view(const check_args *a, const sc_scene *sa, const sc_scene 
     }
     sc_framebuffer *fa = NULL, *fb = NULL;
     sc_error error;
+    o.cancel = &cli_stop;
     if (sc_render(sa, &o, &fa, &error) != SC_OK ||
         sc_render(sb, &o, &fb, &error) != SC_OK) {
-        cli_print_error(&error);
         sc_framebuffer_release(fa);
-        return CLI_EXIT_USAGE;
+        return call_failed(&error, CLI_EXIT_USAGE);
     }
     int w = a->width, h = a->height;
     /* A uniform shift d of the surface changes the volume by d times the
@@ -571,11 +586,11 @@ static int run_compare(check_args *a)
 {
     sc_scene *sa = load_any(a->inputs[0], a->faithful);
     if (!sa)
-        return CLI_EXIT_USAGE;
+        return cli_stop ? cli_die_stopped() : CLI_EXIT_USAGE;
     sc_scene *sb = load_any(a->inputs[1], a->faithful);
     if (!sb) {
         sc_scene_release(sa);
-        return CLI_EXIT_USAGE;
+        return cli_stop ? cli_die_stopped() : CLI_EXIT_USAGE;
     }
     progress_line line;
     start_progress(a, &line, "comparing volumes");
@@ -584,10 +599,9 @@ static int run_compare(check_args *a)
     sc_comparison_init(&c);
     sc_error error;
     if (sc_scene_compare(sa, sb, &a->options, &c, &error) != SC_OK) {
-        cli_print_error(&error);
         sc_scene_release(sa);
         sc_scene_release(sb);
-        return CLI_EXIT_USAGE;
+        return call_failed(&error, CLI_EXIT_USAGE);
     }
     double lo[3], hi[3], lo2[3], hi2[3];
     int has_a = sc_scene_bounds(sa, lo, hi), has_b = sc_scene_bounds(sb, lo2, hi2);
@@ -668,6 +682,9 @@ static int run_check(int command, int argc, char **argv)
     int status = parse_check_args(&a, argc, argv);
     if (status)
         return status;
+    cli_catch_interrupts();
+    cli_start_clock();
+    a.options.cancel = &cli_stop;
     status = command == MEASURE    ? run_measure(&a)
              : command == OVERLAPS ? run_overlaps(&a)
                                    : run_compare(&a);

@@ -7,6 +7,7 @@
 #ifndef SPANCAST_CLI_CLI_H
 #define SPANCAST_CLI_CLI_H
 
+#include <signal.h>
 #include <stddef.h>
 
 #include "spancast/spancast.h"
@@ -32,6 +33,12 @@ int cli_parse_int(const char *s, long lo, long hi, long *out);
  * (max + 1 when there are too many), or -1 when one is not a number. (render_options.c)
  */
 int cli_parse_numbers(const char *s, double *out, int max);
+
+/* The entry of an option table named by the len bytes at name, or NULL:
+ * table holds count entries of stride bytes, each beginning with its
+ * name (const char *), as every command's table does. (render_options.c) */
+const void *cli_find_option(const void *table, size_t count, size_t stride,
+                            const char *name, size_t len);
 
 /* The names of --view in the order of their SC_VIEW_* bits: bit k is
  * 1 << k. (render_options.c) */
@@ -77,5 +84,31 @@ int cli_inside(int argc, char **argv);
 int cli_measure(int argc, char **argv);
 int cli_overlaps(int argc, char **argv);
 int cli_compare(int argc, char **argv);
+
+/* ---- stopping (stop.c): SIGINT, SIGTERM and --max-time ---- */
+
+/* 0, or the signal that asks the command to stop: SIGINT, SIGTERM, or
+ * SIGALRM when --max-time has passed. The library's cancel flag. */
+extern volatile sig_atomic_t cli_stop;
+
+/* Installs the handler for SIGINT, SIGTERM (unless the parent ignores
+ * them) and SIGALRM. */
+void cli_catch_interrupts(void);
+
+/* --max-time=SECONDS: records the limit; 0 or a usage exit status. */
+int cli_parse_max_time(const char *value);
+
+/* Starts and stops the --max-time clock (no-op without the option). */
+void cli_start_clock(void);
+void cli_stop_clock(void);
+
+/* Marks the stretch of a load, which cannot be stopped from inside: a
+ * signal there ends the process from the handler. */
+void cli_loading(int on);
+volatile sig_atomic_t *cli_loading_flag(void);
+
+/* After cli_stop is set: prints the time limit's error and returns 1, or
+ * prints "spancast: interrupted" and ends by the signal. */
+int cli_die_stopped(void);
 
 #endif

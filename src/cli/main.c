@@ -28,14 +28,14 @@
  * read once before loading (to fail fast) and applied again on top of the
  * file's settings after loading.
  *
- * Interrupts: during `render`, SIGINT and SIGTERM only set a flag (the one
- * mutable static of the program: a signal handler has nowhere else to
- * write, and a volatile sig_atomic_t store is all it does). The library
- * polls the flag through sc_render_options.cancel: the render stops at the
- * next tile, and a writer removes its temporary and leaves its target as it
+ * Interrupts and --max-time (stop.c): SIGINT, SIGTERM and the time
+ * limit's SIGALRM only set a flag, cli_stop. The library polls it through
+ * sc_render_options.cancel: the render stops within milliseconds, inside
+ * its tile, and a writer removes its temporary and leaves its target as it
  * was. The tool then prints "spancast: interrupted" and dies of the same
  * signal, so its parent sees an interrupted process (status 130 or 143 in
- * a shell). A second signal before that kills the process at once.
+ * a shell), or prints the time limit's error and exits 1. A second
+ * interrupt before that kills the process at once.
  */
 #define _POSIX_C_SOURCE 200809L
 
@@ -91,7 +91,8 @@ static const char usage_text[] =
     "passes --tolerance, default 1e-6 of the larger volume, or a view has more\n"
     "than --max-pixels, default 0, mismatched pixels away from silhouette\n"
     "edges; --diff=PREFIX writes PREFIXpx.png ... PREFIXdiagonal.png).\n"
-    "These take --threads=N, --json, --faithful and -q (no progress on stderr);\n"
+    "These take --threads=N, --json, --faithful, --max-time=SECONDS and -q (no\n"
+    "progress on stderr);\n"
     "overlaps and compare exit 2 on any error.\n"
     "\n"
     "render options:\n"
@@ -144,6 +145,10 @@ static const char usage_text[] =
     "  --ao=N                 ambient occlusion with N rays per sample (default 0)\n"
     "  --ao-radius=F          their reach, a fraction of the model's diagonal\n"
     "                         (default 0.1)\n"
+    "\n"
+    "limits:\n"
+    "  --max-time=SECONDS     give up after this long (loading included), with an\n"
+    "                         error and exit status 1; with --watch, per render\n"
     "\n"
     "report options:\n"
     "  --stats[=json]         print rays by kind, primitive tests, span operations\n"
@@ -221,7 +226,8 @@ typedef enum opt_id {
     OPT_SECTION_STYLE,
     OPT_AO,
     OPT_AO_RADIUS,
-    OPT_WATCH
+    OPT_WATCH,
+    OPT_MAX_TIME
 } opt_id;
 
 typedef struct opt_spec {
@@ -263,6 +269,7 @@ static const opt_spec options_table[] = {
     {"--ao", OPT_AO, 1, 1},
     {"--ao-radius", OPT_AO_RADIUS, 1, 1},
     {"--watch", OPT_WATCH, 0, 1},
+    {"--max-time", OPT_MAX_TIME, 1, 0},
 };
 
 typedef struct cli_args {
@@ -424,18 +431,16 @@ static int apply_option(cli_args *a, const opt_spec *spec, const char *value)
     case OPT_WATCH:
         a->watch = 1;
         return 0;
+    case OPT_MAX_TIME:
+        return cli_parse_max_time(value);
     }
     return 0;
 }
 
 static const opt_spec *find_option(const char *arg, size_t name_len)
 {
-    for (size_t k = 0; k < sizeof options_table / sizeof options_table[0]; k++) {
-        const char *name = options_table[k].name;
-        if (strlen(name) == name_len && !strncmp(arg, name, name_len))
-            return &options_table[k];
-    }
-    return NULL;
+    return cli_find_option(options_table, sizeof options_table / sizeof options_table[0],
+                           sizeof options_table[0], arg, name_len);
 }
 
 /* Applies --view-preset and --sheet, which place the camera themselves:
@@ -528,48 +533,6 @@ static int parse_args(cli_args *a, int argc, char **argv)
     return finish_views(a);
 }
 
-/* ---- interrupts ---- */
-
-static volatile sig_atomic_t interrupt_signal; /* 0, or the signal received */
-
-static void on_interrupt(int sig)
-{
-    if (interrupt_signal) {
-        signal(sig, SIG_DFL); /* a second interrupt: stop now */
-        raise(sig);
-        return;
-    }
-    interrupt_signal = sig;
-}
-
-static void catch_interrupts(void)
-{
-    struct sigaction sa;
-    memset(&sa, 0, sizeof sa);
-    sa.sa_handler = on_interrupt;
-    sigemptyset(&sa.sa_mask);
-    const int signals[2] = {SIGINT, SIGTERM};
-    for (int k = 0; k < 2; k++) {
-        struct sigaction old;
-        /* A signal the parent set to be ignored (a shell's background job
-         * ignores SIGINT) stays ignored. */
-        if (sigaction(signals[k], NULL, &old) == 0 && old.sa_handler == SIG_IGN)
-            continue;
-        sigaction(signals[k], &sa, NULL);
-    }
-}
-
-/* After an interrupt: says so and ends the process by the same signal. */
-static int die_interrupted(void)
-{
-    int sig = interrupt_signal;
-    fputs("spancast: interrupted\n", stderr);
-    fflush(stderr);
-    signal(sig, SIG_DFL);
-    raise(sig);
-    return 128 + sig; /* not reached */
-}
-
 /* ---- commands ---- */
 
 static double seconds_now(void)
@@ -589,12 +552,19 @@ static sc_scene *load(const char *path, int faithful, watch_set *watched)
     sc_error error;
     if (watched)
         watch_add_file(watched, path);
-    sc_status st = scad_is_source(path)
-                       ? scad_load_files(path, &lo, &scene, &error,
-                                         watched ? watch_add_file : NULL, watched)
-                       : sc_scene_load(path, &lo, &scene, &error);
+    scad_stop stop = {&cli_stop, cli_loading_flag()};
+    sc_status st;
+    if (scad_is_source(path)) {
+        st = scad_load_files(path, &lo, &scene, &error, watched ? watch_add_file : NULL,
+                             watched, &stop);
+    } else {
+        cli_loading(1);
+        st = sc_scene_load(path, &lo, &scene, &error);
+        cli_loading(0);
+    }
     if (st != SC_OK) {
-        print_error(&error);
+        if (!cli_stop)
+            print_error(&error);
         return NULL;
     }
     size_t warnings = sc_scene_warning_count(scene);
@@ -605,7 +575,14 @@ static sc_scene *load(const char *path, int faithful, watch_set *watched)
 
 static int run_info(const cli_args *a)
 {
+    cli_catch_interrupts();
+    cli_start_clock();
     sc_scene *scene = load(a->input, a->faithful, NULL);
+    cli_stop_clock();
+    if (cli_stop) {
+        sc_scene_release(scene);
+        return cli_die_stopped();
+    }
     if (!scene)
         return EXIT_FAILED;
     sc_scene_info info;
@@ -764,10 +741,13 @@ static int run_render(cli_args *a, int argc, char **argv)
         return EXIT_FAILED;
 
     double start = seconds_now();
-    catch_interrupts();
+    cli_catch_interrupts();
+    cli_start_clock();
     sc_scene *scene = load(a->input, a->faithful, a->watched);
-    if (interrupt_signal)
-        return die_interrupted();
+    if (cli_stop) {
+        sc_scene_release(scene);
+        return cli_die_stopped();
+    }
     if (!scene)
         return EXIT_FAILED;
     stage_times times;
@@ -780,7 +760,7 @@ static int run_render(cli_args *a, int argc, char **argv)
     sc_render_options_from_scene(&again.options, scene);
     (void)parse_args(&again, argc, argv); /* succeeded once already */
     a->options = again.options;
-    a->options.cancel = &interrupt_signal;
+    a->options.cancel = &cli_stop;
     a->options.want_color = 1;
     a->options.want_mask = a->mask != NULL;
     a->options.want_depth = a->depth != NULL;
@@ -794,8 +774,10 @@ static int run_render(cli_args *a, int argc, char **argv)
     sc_framebuffer *fb = NULL;
     int status = 0;
     sc_status st = sc_render(scene, &a->options, &fb, &error);
-    if (st == SC_ERR_CANCELLED)
-        return die_interrupted();
+    if (st == SC_ERR_CANCELLED) {
+        sc_scene_release(scene);
+        return cli_die_stopped();
+    }
     if (st != SC_OK) {
         /* An argument error here comes from the command line's camera. */
         print_error(&error);
@@ -808,11 +790,15 @@ static int run_render(cli_args *a, int argc, char **argv)
         (a->depth && sc_framebuffer_write_depth(fb, a->depth, &error) != SC_OK) ||
         (a->normal && sc_framebuffer_write_normal(fb, a->normal, &error) != SC_OK) ||
         (a->id && sc_framebuffer_write_id(fb, a->id, &error) != SC_OK)) {
-        if (error.status == SC_ERR_CANCELLED)
-            return die_interrupted();
+        if (error.status == SC_ERR_CANCELLED) {
+            sc_framebuffer_release(fb);
+            sc_scene_release(scene);
+            return cli_die_stopped();
+        }
         print_error(&error);
         status = EXIT_FAILED;
     }
+    cli_stop_clock();
     times.write = seconds_now() - written;
     times.total = seconds_now() - start;
     if (status == 0 && !a->quiet)
@@ -860,21 +846,24 @@ static int run_render_watched(cli_args *a, int argc, char **argv)
         print_error(&error);
         return EXIT_FAILED;
     }
-    catch_interrupts();
+    cli_catch_interrupts();
     int status;
     for (;;) {
         status = run_render(a, argc, argv);
-        if (status == EXIT_USAGE && !interrupt_signal)
+        cli_stop_clock();
+        if (cli_stop == SIGALRM)
+            cli_stop = 0; /* the time limit is per render; keep watching */
+        if (status == EXIT_USAGE && !cli_stop)
             break;
         fflush(stdout);
-        if (!watch_wait(a->watched, &interrupt_signal))
+        if (!watch_wait(a->watched, &cli_stop))
             break;
         if (!a->quiet)
             fprintf(stderr, "spancast: %s changed, rendering again\n", a->input);
     }
     watch_close(a->watched);
-    if (interrupt_signal)
-        return die_interrupted();
+    if (cli_stop)
+        return cli_die_stopped();
     return status;
 }
 

@@ -206,11 +206,9 @@ static int parse_query_args(query_args *a, int argc, char **argv)
             return cli_usage_error("unknown option '%s'", arg);
         const char *eq = strchr(arg, '=');
         size_t len = eq ? (size_t)(eq - arg) : strlen(arg);
-        const query_option *spec = NULL;
-        for (size_t q = 0; q < sizeof query_options / sizeof query_options[0]; q++)
-            if (strlen(query_options[q].name) == len &&
-                !strncmp(arg, query_options[q].name, len))
-                spec = &query_options[q];
+        const query_option *spec =
+            cli_find_option(query_options, sizeof query_options / sizeof query_options[0],
+                            sizeof query_options[0], arg, len);
         int camera = cli_camera_option(arg, len);
         if (!spec && camera < 0)
             return cli_usage_error("unknown option '%.*s'", (int)len, arg);

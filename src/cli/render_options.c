@@ -290,3 +290,16 @@ int cli_apply_preview_option(sc_render_options *o, sc_view_preset *preset,
     }
     return 0;
 }
+
+const void *cli_find_option(const void *table, size_t count, size_t stride,
+                            const char *name, size_t len)
+{
+    for (size_t k = 0; k < count; k++) {
+        const char *entry = (const char *)table + k * stride;
+        const char *entry_name;
+        memcpy(&entry_name, entry, sizeof entry_name); /* the entry's first member */
+        if (strlen(entry_name) == len && !strncmp(name, entry_name, len))
+            return entry;
+    }
+    return NULL;
+}

@@ -11,7 +11,14 @@
  * resolves them relative to the loaded file's name. Error positions in the
  * converted text therefore read DIR/NAME.csg, the file `openscad -o
  * NAME.csg` would have written. Every temporary file is removed before
- * returning. OpenSCAD 2021.01 writes numbers with 6 significant digits.
+ * returning, and before the text is loaded. OpenSCAD 2021.01 writes
+ * numbers with 6 significant digits.
+ *
+ * Stopping: the wait for OpenSCAD polls the caller's stop flag every
+ * 10 ms (a blocking waitpid could miss a signal that lands just before
+ * it); when it is set, OpenSCAD gets SIGTERM, and SIGKILL a second later
+ * if it is still running, so an interrupt or a time limit never waits for
+ * a conversion.
  *
  * For a watcher (scad_load_files), OpenSCAD also writes a make-style
  * dependency file (-d): "TARGET: FILE FILE ...", continued over lines by a
@@ -31,6 +38,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <sys/wait.h>
+#include <time.h>
 #include <unistd.h>
 
 #include "formats/file.h"
@@ -121,12 +129,46 @@ static void read_depends(const char *path, void (*depend)(void *user, const char
 sc_status scad_load(const char *path, const sc_load_options *options, sc_scene **scene,
                     sc_error *error)
 {
-    return scad_load_files(path, options, scene, error, NULL, NULL);
+    return scad_load_files(path, options, scene, error, NULL, NULL, NULL);
+}
+
+static void pause_ms(long ms)
+{
+    struct timespec ts = {0, ms * 1000000L};
+    nanosleep(&ts, NULL);
+}
+
+/* Waits for the child pid into *status; when *stop is set first, kills
+ * it (SIGTERM, then SIGKILL after a second), reaps it and returns 0. */
+static int wait_child(pid_t pid, int *status, const volatile sig_atomic_t *stop)
+{
+    for (;;) {
+        pid_t got = waitpid(pid, status, stop ? WNOHANG : 0);
+        if (got == pid)
+            return 1;
+        if (got < 0 && errno != EINTR)
+            return 1; /* no such child: nothing to wait for */
+        if (stop && *stop)
+            break;
+        if (stop)
+            pause_ms(10);
+    }
+    kill(pid, SIGTERM);
+    for (int k = 0; k < 100; k++) {
+        if (waitpid(pid, status, WNOHANG) == pid)
+            return 0;
+        pause_ms(10);
+    }
+    kill(pid, SIGKILL);
+    while (waitpid(pid, status, 0) < 0 && errno == EINTR)
+        ;
+    return 0;
 }
 
 sc_status scad_load_files(const char *path, const sc_load_options *options,
                           sc_scene **scene, sc_error *error,
-                          void (*depend)(void *user, const char *file), void *user)
+                          void (*depend)(void *user, const char *file), void *user,
+                          const scad_stop *stop)
 {
     *scene = NULL;
     char source[PATH_MAX];
@@ -165,9 +207,11 @@ sc_status scad_load_files(const char *path, const sc_load_options *options,
                   spawned == ENOENT ? "was not found in PATH" : strerror(spawned));
     } else {
         int status = 0;
-        while (waitpid(pid, &status, 0) < 0 && errno == EINTR)
-            ;
-        if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) {
+        if (!wait_child(pid, &status, stop ? stop->stop : NULL)) {
+            memset(error, 0, sizeof *error);
+            error->status = st = SC_ERR_CANCELLED;
+            snprintf(error->message, sizeof error->message, "interrupted");
+        } else if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) {
             char last[400];
             last_line(log, last, sizeof last);
             st = fail(error, SC_ERR_IO, "OpenSCAD could not convert '%s': %s", path,
@@ -176,19 +220,25 @@ sc_status scad_load_files(const char *path, const sc_load_options *options,
     }
     if (st == SC_OK && depend)
         read_depends(deps, depend, user);
+    char *text = NULL;
+    size_t size = 0;
     if (st == SC_OK) {
-        size_t size = 0;
         const char *why;
-        char *text = file_read(csg, SIZE_MAX / 2, &size, &why);
+        text = file_read(csg, SIZE_MAX / 2, &size, &why);
         if (!text)
             st = fail(error, SC_ERR_IO, "OpenSCAD wrote no CSG for '%s'%s", path, "");
-        else
-            st = sc_scene_load_string(name, text, size, options, scene, error);
-        free(text);
     }
     unlink(csg);
     unlink(log);
     unlink(deps);
     rmdir(dir);
+    if (st == SC_OK) {
+        if (stop && stop->loading)
+            *stop->loading = 1;
+        st = sc_scene_load_string(name, text, size, options, scene, error);
+        if (stop && stop->loading)
+            *stop->loading = 0;
+    }
+    free(text);
     return st;
 }

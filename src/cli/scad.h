@@ -2,6 +2,8 @@
 #ifndef SPANCAST_CLI_SCAD_H
 #define SPANCAST_CLI_SCAD_H
 
+#include <signal.h>
+
 #include "spancast/spancast.h"
 
 /* 1 when path names an OpenSCAD source file (ends in .scad, any case). */
@@ -15,12 +17,24 @@ int scad_is_source(const char *path);
 sc_status scad_load(const char *path, const sc_load_options *options, sc_scene **scene,
                     sc_error *error);
 
+/* How a conversion is stopped early (both may be NULL): when *stop
+ * becomes non-zero, OpenSCAD is killed (SIGTERM, then SIGKILL after a
+ * second), its temporary files removed, and the call returns
+ * SC_ERR_CANCELLED; *loading is 1 while the converted text is loaded,
+ * once no temporary file is left. */
+typedef struct scad_stop {
+    const volatile sig_atomic_t *stop;
+    volatile sig_atomic_t *loading;
+} scad_stop;
+
 /* The same, and when depend is not NULL, calls depend(user, file) for each
  * file the conversion read (the source and what it includes, uses or
  * imports: OpenSCAD's -d dependency file), so that a watcher can reload on
- * a change to any of them. Not called when OpenSCAD fails. */
+ * a change to any of them. Not called when OpenSCAD fails. stop: NULL, or
+ * as scad_stop says. */
 sc_status scad_load_files(const char *path, const sc_load_options *options,
                           sc_scene **scene, sc_error *error,
-                          void (*depend)(void *user, const char *file), void *user);
+                          void (*depend)(void *user, const char *file), void *user,
+                          const scad_stop *stop);
 
 #endif

@@ -75,7 +75,7 @@ static void load_once(const view_loader *l, view_load *load)
     sc_scene *scene = NULL;
     sc_status st =
         scad_is_source(l->path)
-            ? scad_load_files(l->path, &lo, &scene, &load->error, add_file, load)
+            ? scad_load_files(l->path, &lo, &scene, &load->error, add_file, load, NULL)
             : sc_scene_load(l->path, &lo, &scene, &load->error);
     load->seconds = seconds_now() - start;
     if (st != SC_OK)

@@ -7,10 +7,13 @@
  * queued before it, so the thread always starts on the newest view.
  *
  * Abandoning: view_worker_cancel sets the cancel flag sc_render polls
- * between tiles, for a refinement job only. A coarse frame is kept within
- * the frame budget by its size and always finishes, so that a drag shows
- * frames even when the mouse moves faster than they come; a screenshot
- * always finishes, since the user asked for the file.
+ * inside its tiles (the cancel token of base/cancel.h, the same one an
+ * interrupt of `spancast render` stops: before every pixel and sample, and
+ * in the root finders and mesh walks), for a refinement job only, so a
+ * slow frame is given up within milliseconds of the view moving. A coarse
+ * frame is kept within the frame budget by its size and always finishes,
+ * so that a drag shows frames even when the mouse moves faster than they
+ * come; a screenshot always finishes, since the user asked for the file.
  *
  * Locking: one mutex guards the queue, the slot and the flags; the render
  * runs without it. The cancel flag is the API's volatile sig_atomic_t,
@@ -237,7 +240,7 @@ void view_worker_stop(view_worker *w)
     pthread_mutex_lock(&w->lock);
     w->stopping = 1;
     if (w->running)
-        w->cancel = 1; /* whatever the job, it stops at the next tile */
+        w->cancel = 1; /* whatever the job, it stops inside its tile */
     pthread_cond_signal(&w->changed);
     pthread_mutex_unlock(&w->lock);
     pthread_join(w->thread, NULL);

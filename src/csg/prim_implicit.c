@@ -19,9 +19,17 @@
  * the cap are filled in. The first hit, and every crossing before the
  * cap, stay exact, which is what a camera ray needs; only the far side of
  * a ray with that many crossings is approximate.
+ *
+ * Work. Each call reports its evaluations to the calling thread's cancel
+ * token (base/cancel.h), which holds the budget of the whole render or
+ * measure; a call that reaches the per-ray bound SOLVE_MAX_EVALS stops
+ * the token (CANCEL_RAY_LIMIT), so that the caller fails with an error
+ * naming the leaf instead of using a span list whose far part was never
+ * searched. Without a token (a bare query) the list holds what was found.
  */
 #include <math.h>
 
+#include "base/cancel.h"
 #include "csg/prim_curved.h"
 #include "implicit/solve.h"
 
@@ -51,6 +59,9 @@ uint32_t prim_implicit_spans(const prim *p, uint32_t leaf, vec3 o, vec3 d, span 
                          p->u.implicit.lipschitz};
     solve_result r;
     solve_crossings(p->u.implicit.program, &opt, o, d, t0, t1, &r);
+    cancel_spend(r.evals, leaf, p);
+    if (r.exhausted)
+        cancel_stop(CANCEL_RAY_LIMIT, leaf, p);
     uint32_t n = 0;
     int inside = r.inside_start;
     span_end start = {t0, leaf, (uint16_t)(PRIM_PART_CLIP_FACE + f0), 0};

@@ -81,6 +81,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "base/cancel.h"
 #include "csg/csg.h"
 
 enum { LEAF_SIZE = 4, BINS = 16, SAH_DEPTH = 48, STACK = 128 };
@@ -669,17 +670,24 @@ typedef struct pending {
     double kz_near;
 } pending;
 
+/* Nodes a walk visits between polls of the cancel token. */
+#define MESH_POLL_NODES 4096
+
 /* Adds to cs every crossing of the line with t in the walk's range (and,
  * when it narrows, every crossing up to its final hi); near boxes first.
  * The stack holds at most one node a level, and the depth is below
- * SAH_DEPTH + 32. */
+ * SAH_DEPTH + 32. Every MESH_POLL_NODES nodes it polls the calling
+ * thread's cancel token (base/cancel.h) and, once that has stopped, ends
+ * with what it has: the caller abandons the query's result then. */
 static void gather(const prim_mesh *m, const ray_frame *f, const slab_ray *r, walk *w,
                    crossings *cs)
 {
     pending stack[STACK];
-    uint32_t top = 0;
+    uint32_t top = 0, visits = 0;
     const prim_mesh_node *n = &m->nodes[0];
     for (;;) {
+        if (++visits % MESH_POLL_NODES == 0 && cancel_poll())
+            return;
         double key[2], kz_near[2];
         int hit[2];
         children_hit(n, r, w->lo, w->hi, hit, key, kz_near);

@@ -797,6 +797,43 @@ ix expr_eval_ix(const expr_program *p, ix x, ix y, ix z, vec3 seed, ix *derivati
     return v[p->count - 1];
 }
 
+double expr_trig_reach(const expr_program *p, ix x, ix y, ix z, expr_op *op)
+{
+    ix v[EXPR_MAX_CODE];
+    double reach = 0;
+    *op = EXPR_OP_COUNT;
+    for (uint32_t i = 0; i < p->count; i++) {
+        const expr_insn *in = &p->code[i];
+        switch (in->op) {
+        case EXPR_X:
+            v[i] = x;
+            continue;
+        case EXPR_Y:
+            v[i] = y;
+            continue;
+        case EXPR_Z:
+            v[i] = z;
+            continue;
+        case EXPR_CONST:
+            v[i] = ix_point(p->constant[i]);
+            continue;
+        default:
+            break;
+        }
+        ix a = v[in->a];
+        if (in->op == EXPR_SIN || in->op == EXPR_COS || in->op == EXPR_TAN) {
+            /* NaN bounds compare false: an undefined argument is not a reach */
+            double m = fmax(fabs(a.lo), fabs(a.hi));
+            if (m > reach) {
+                reach = m;
+                *op = (expr_op)in->op;
+            }
+        }
+        v[i] = ix_apply(in, a, v[in->b]);
+    }
+    return reach;
+}
+
 const char *expr_op_name(expr_op op)
 {
     static const char *const names[EXPR_OP_COUNT] = {

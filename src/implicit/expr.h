@@ -115,6 +115,15 @@ double expr_eval_dual(const expr_program *p, vec3 q, vec3 seed, double *derivati
 ix expr_eval_ix(const expr_program *p, ix x, ix y, ix z, vec3 seed, ix *derivative,
                 int *undefined);
 
+/* The largest magnitude the argument of a sin, cos or tan can take over
+ * the box X x Y x Z (an interval bound: it may overestimate), 0 without
+ * trigonometric functions; *op is the function reaching it
+ * (EXPR_OP_COUNT when none). Past 2^53 neighbouring doubles are farther
+ * apart than a period over 3, so the function's values are noise: a
+ * field that reaches there is not resolvable at any scale. */
+#define EXPR_TRIG_MAX_ARGUMENT 9007199254740992.0 /* 2^53 */
+double expr_trig_reach(const expr_program *p, ix x, ix y, ix z, expr_op *op);
+
 /* The name of an operation, for dumps and tests. */
 const char *expr_op_name(expr_op op);
 

@@ -13,6 +13,8 @@
 #include <math.h>
 #include <string.h>
 
+#include "base/cancel.h"
+
 static int neg(double f)
 {
     return f < 0;
@@ -30,6 +32,16 @@ static void record(solve_result *r, double t)
     else
         r->t[SOLVE_MAX_CROSSINGS - 1] = t;
     r->total++;
+}
+
+/* Whether the search must end now: every SOLVE_POLL_STEPS calls (counted
+ * in *steps), whether the calling thread's cancel token has stopped. */
+static int must_stop(uint32_t *steps, solve_result *r)
+{
+    if (++*steps % SOLVE_POLL_STEPS != 0 || !cancel_poll())
+        return 0;
+    r->stopped = 1;
+    return 1;
 }
 
 /* Safeguarded Newton-bisection on [a, b], where f(a) and f(b) differ in
@@ -96,9 +108,12 @@ static void solve_interval(const expr_program *f, const solve_options *opt, vec3
     stack[top++] = (segment){t0, t1, f0, f1};
     int levels[MAX_LEVELS + 1];
     levels[0] = 0;
+    uint32_t steps = 0;
     while (top > 0) {
         segment s = stack[--top];
         int level = levels[top];
+        if (must_stop(&steps, r))
+            return;
         if (r->evals >= SOLVE_MAX_EVALS) {
             r->exhausted = 1;
             return;
@@ -144,7 +159,10 @@ static void solve_lipschitz(const expr_program *f, const solve_options *opt, vec
     double len = v3_length(d);
     double min_step = opt->tolerance / len, inv = 1.0 / (opt->lipschitz * len);
     double t = t0, ft = f0;
+    uint32_t steps = 0;
     while (t < t1) {
+        if (must_stop(&steps, r))
+            return;
         if (r->evals >= SOLVE_MAX_EVALS) {
             r->exhausted = 1;
             return;
@@ -181,7 +199,10 @@ static void solve_march(const expr_program *f, const solve_options *opt, vec3 o,
     }
     uint32_t n = (uint32_t)count;
     double prev_t = t0, prev_f = f0;
+    uint32_t steps = 0;
     for (uint32_t i = 1; i <= n; i++) {
+        if (must_stop(&steps, r))
+            return;
         double t = i == n ? t1 : t0 + span * ((double)i / n);
         double ft = eval_at(f, o, d, t);
         r->evals++;

@@ -34,7 +34,11 @@
  * The tolerance is a length in the frame of the ray (it is divided by |d|
  * to give a step in t). Work is bounded: at most SOLVE_MAX_EVALS
  * evaluations per call; a call that reaches the bound stops and reports
- * it. Output is bounded too: see solve_result.
+ * it. Output is bounded too: see solve_result. Every method polls the
+ * calling thread's cancel token (base/cancel.h) every SOLVE_POLL_STEPS
+ * steps and gives up when it has stopped, so an interrupt or a spent
+ * budget ends even a ray of SOLVE_MAX_EVALS evaluations within a
+ * millisecond or so.
  */
 #ifndef SPANCAST_IMPLICIT_SOLVE_H
 #define SPANCAST_IMPLICIT_SOLVE_H
@@ -53,6 +57,7 @@ typedef enum solve_method {
 
 #define SOLVE_MAX_CROSSINGS 33     /* kept per call, see solve_result */
 #define SOLVE_MAX_EVALS (1u << 22) /* evaluations per call */
+#define SOLVE_POLL_STEPS 256       /* steps between polls of the cancel token */
 
 typedef struct solve_options {
     solve_method method;
@@ -72,6 +77,8 @@ typedef struct solve_result {
     int inside_start; /* f(o + t0 d) < 0 */
     int exhausted;    /* the evaluation bound was reached: the rest of the
                          segment was not searched */
+    int stopped;      /* the calling thread's cancel token stopped the search
+                         (base/cancel.h): the result is incomplete */
     uint64_t evals;   /* evaluations made, for benchmarks */
 } solve_result;
 

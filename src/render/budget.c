@@ -1,4 +1,4 @@
-/* The memory a render needs, checked before anything is allocated.
+/* The memory and the work a render may take, and the errors of both.
  *
  * A render holds its buffers whole until they are written: colour and
  * normal take 12 bytes a pixel, depth and id 4, mask 1. Everything else (the tree,
@@ -9,13 +9,30 @@
  * compared with a fixed limit, which makes the error the same on every
  * machine, and with the machine's physical memory (sysconf), which catches
  * the smaller machines.
+ *
+ * Work: implicit surfaces are the one kind of leaf whose cost per ray the
+ * input decides (a field of frequency 1e118 is undecided at every scale,
+ * and the root finder bisects it until its bound of SOLVE_MAX_EVALS per
+ * ray). Two limits keep a render finite: that bound per ray, which is
+ * an error rather than a silently truncated ray, and a budget for the
+ * render as a whole, proportional to its rays: RENDER_MIN_IMPLICIT_EVALS
+ * up front, and RENDER_IMPLICIT_EVALS_PER_RAY more for each camera ray,
+ * edge neighbour and ambient occlusion ray of each pixel sample done
+ * (shadow, reflection and refraction rays share that allowance). Since
+ * the credit comes as pixels are done, a field that costs more than the
+ * average fails after the allowance, within a second, at any image size. A smooth field
+ * needs tens to a few thousand evaluations a ray (docs/limits.md), so only a field that
+ * is unresolvable at the image's scale meets either limit.
  */
 #define _DEFAULT_SOURCE /* sysconf(_SC_PHYS_PAGES) */
 
 #include <stdint.h>
 #include <unistd.h>
 
+#include "base/cancel.h"
 #include "base/error.h"
+#include "implicit/expr.h"
+#include "implicit/solve.h"
 #include "render/render.h"
 
 /* Checks, before anything is allocated, that the buffers options ask for
@@ -41,5 +58,61 @@ sc_status render_check_memory(const sc_render_options *o, sc_error *error)
                        "machine's %.1f GiB of memory",
                        o->width, o->height, gib,
                        (double)pages * (double)page_size / (1024.0 * 1024.0 * 1024.0));
+    return SC_OK;
+}
+
+uint64_t render_work_credit(const sc_render_options *o)
+{
+    uint64_t rays = 1 + (o->view & SC_VIEW_EDGES ? 8 : 0) + (uint64_t)o->ao_samples;
+    return rays * (uint64_t)o->spp * RENDER_IMPLICIT_EVALS_PER_RAY; /* < 2^39 */
+}
+
+sc_status render_limit_error(const csg_tree *tree, int reason, uint32_t leaf,
+                             const void *prim, sc_error *error)
+{
+    const sc_location *loc = NULL;
+    if (tree && leaf < tree->leaf_count && &tree->leaves[leaf].prim == prim &&
+        tree->leaves[leaf].loc.line > 0)
+        loc = &tree->leaves[leaf].loc;
+    if (reason == CANCEL_RAY_LIMIT)
+        return err_set(
+            error, SC_ERR_LIMIT, loc,
+            "implicit surface needs more than %u evaluations per ray (limit is "
+            "%u; the field is not resolvable at this scale)",
+            SOLVE_MAX_EVALS, SOLVE_MAX_EVALS);
+    return err_set(error, SC_ERR_LIMIT, loc,
+                   "implicit surfaces need more than %u evaluations per ray on average "
+                   "(limit is %u, after the first %u)",
+                   RENDER_IMPLICIT_EVALS_PER_RAY, RENDER_IMPLICIT_EVALS_PER_RAY,
+                   RENDER_MIN_IMPLICIT_EVALS);
+}
+
+sc_status render_stop_error(const csg_tree *tree, cancel_token *token, sc_error *error)
+{
+    cancel_reason reason = cancel_check(token);
+    if (reason == CANCEL_RAY_LIMIT || reason == CANCEL_BUDGET)
+        return render_limit_error(tree, (int)reason, atomic_load(&token->leaf),
+                                  atomic_load(&token->prim), error);
+    return err_set(error, SC_ERR_CANCELLED, NULL, "interrupted");
+}
+
+sc_status render_check_fields(const csg_tree *tree, sc_error *error)
+{
+    for (uint32_t k = 0; k < tree->leaf_count; k++) {
+        const csg_leaf *leaf = &tree->leaves[k];
+        if (leaf->prim.kind != PRIM_IMPLICIT || !leaf->prim.u.implicit.program)
+            continue;
+        const bbox *b = &leaf->prim.u.implicit.box;
+        expr_op op;
+        double reach =
+            expr_trig_reach(leaf->prim.u.implicit.program, ix_make(b->lo.x, b->hi.x),
+                            ix_make(b->lo.y, b->hi.y), ix_make(b->lo.z, b->hi.z), &op);
+        if (reach > EXPR_TRIG_MAX_ARGUMENT)
+            return err_set(error, SC_ERR_LIMIT, leaf->loc.line > 0 ? &leaf->loc : NULL,
+                           "implicit surface is not resolvable: the argument of %s "
+                           "reaches %.3g within its bounds (beyond 2^53, where doubles "
+                           "are farther apart than its period)",
+                           expr_op_name(op), reach);
+    }
     return SC_OK;
 }

@@ -26,6 +26,13 @@
  * one image whose pixels belong to tiles, each a view with its own camera,
  * shading and overlay; a pixel finds its view by its position in the full
  * image, so --region crops a sheet like any image.
+ *
+ * Stopping: the render's cancel token (base/cancel.h) carries the
+ * caller's flag and the budget of implicit-surface work (budget.c); each
+ * thread works inside a scope on it, so the root finders and mesh walks
+ * poll it, and the tile loop checks it before every pixel and sample. A
+ * stopped render frees its buffers and returns SC_ERR_CANCELLED or the
+ * budget's SC_ERR_LIMIT.
  */
 #include "render/render.h"
 
@@ -36,6 +43,7 @@
 #include <string.h>
 
 #include "base/arena.h"
+#include "base/cancel.h"
 #include "base/error.h"
 #include "base/sized.h"
 #include "build/scene.h"
@@ -112,6 +120,8 @@ typedef struct render_ctx {
     double edge_color[3]; /* linear */
     int overlays;         /* some view has overlay lines or a label */
     sc_framebuffer *fb;
+    cancel_token *cancel;  /* the caller's flag and the work budget */
+    uint64_t pixel_credit; /* evaluations allowed for each pixel done */
 } render_ctx;
 
 /* Per-thread state and counters. */
@@ -276,6 +286,8 @@ static void render_pixel(const render_ctx *c, render_thread *th, int i, int j)
     }
     double sum[3] = {0, 0, 0};
     for (int s = 0; s < c->spp; s++) {
+        if (s > 0 && cancel_check(c->cancel))
+            break; /* the image is abandoned */
         st.rng = sample_rng_for((uint32_t)x, (uint32_t)y, (uint32_t)s);
         memset(&st.count, 0, sizeof st.count);
         double rgb[3];
@@ -303,16 +315,18 @@ static void render_pixel(const render_ctx *c, render_thread *th, int i, int j)
 
 static void render_tile(const render_ctx *c, render_thread *th, int tile, int tiles_x)
 {
-    if (c->fb->cancel && *c->fb->cancel)
-        return; /* cancelled: the remaining tiles are skipped */
     int x0 = (tile % tiles_x) * RENDER_TILE_SIZE;
     int y0 = (tile / tiles_x) * RENDER_TILE_SIZE;
     int x1 = x0 + RENDER_TILE_SIZE < c->fb->width ? x0 + RENDER_TILE_SIZE : c->fb->width;
     int y1 =
         y0 + RENDER_TILE_SIZE < c->fb->height ? y0 + RENDER_TILE_SIZE : c->fb->height;
     for (int j = y0; j < y1; j++)
-        for (int i = x0; i < x1; i++)
+        for (int i = x0; i < x1; i++) {
+            if (cancel_check(c->cancel))
+                return; /* stopped: the rest is skipped */
             render_pixel(c, th, i, j);
+            cancel_credit(c->cancel, c->pixel_credit);
+        }
 }
 
 void sc_framebuffer_release(sc_framebuffer *fb)
@@ -524,6 +538,8 @@ sc_status render_scene(const csg_tree *tree, const shading *look,
     }
     options = &own;
     sc_status st = check_options(options, error);
+    if (st == SC_OK)
+        st = render_check_fields(tree, error);
     if (st)
         return st;
 
@@ -586,9 +602,15 @@ sc_status render_scene(const csg_tree *tree, const shading *look,
     double traced = seconds_now();
     stats->setup_seconds = traced - start;
 
+    cancel_token cancel;
+    cancel_init(&cancel, options->cancel, RENDER_MIN_IMPLICIT_EVALS);
+    c.pixel_credit = render_work_credit(options);
+    c.cancel = &cancel;
     int out_of_memory = 0; /* a thread could not get its scratch arena */
 #pragma omp parallel num_threads(threads)
     {
+        cancel_scope scope;
+        cancel_enter(&scope, &cancel);
         render_thread th;
         memset(&th, 0, sizeof th);
         arena_init(&th.scratch, 0);
@@ -623,6 +645,7 @@ sc_status render_scene(const csg_tree *tree, const shading *look,
             stats->scratch_mallocs += th.scratch.block_allocs;
         }
         arena_free(&th.scratch);
+        cancel_leave(&scope);
     }
     if (options->progress)
         options->progress(options->progress_user, 1.0);
@@ -632,9 +655,9 @@ sc_status render_scene(const csg_tree *tree, const shading *look,
         sc_framebuffer_release(c.fb);
         return err_nomem(error, NULL);
     }
-    if (options->cancel && *options->cancel) {
+    if (cancel_check(&cancel) != CANCEL_NONE) {
         sc_framebuffer_release(c.fb);
-        return err_set(error, SC_ERR_CANCELLED, NULL, "interrupted");
+        return render_stop_error(tree, &cancel, error);
     }
     *framebuffer = c.fb;
     return SC_OK;

@@ -48,4 +48,35 @@ sc_status render_scene(const csg_tree *tree, const shading *look,
  * or the machine's physical memory; SC_OK otherwise. (budget.c) */
 sc_status render_check_memory(const sc_render_options *options, sc_error *error);
 
+/* Evaluations of implicit surfaces a render may spend on average per
+ * pixel sample and camera-like ray (the sample's own ray, its edge
+ * neighbours, its ambient occlusion rays); see docs/limits.md. */
+#define RENDER_IMPLICIT_EVALS_PER_RAY (1u << 12)
+
+/* The least budget of a render: a small image may still meet a few hard
+ * rays. */
+#define RENDER_MIN_IMPLICIT_EVALS (1u << 20)
+
+struct cancel_token;
+
+/* The implicit-surface evaluations a render may spend beyond
+ * RENDER_MIN_IMPLICIT_EVALS for each pixel it has done: the rays each
+ * sample casts times RENDER_IMPLICIT_EVALS_PER_RAY, times the samples.
+ * (budget.c) */
+uint64_t render_work_credit(const sc_render_options *options);
+
+/* Refuses, before any ray, a tree whose implicit leaves cannot be
+ * resolved at any scale: a sin, cos or tan whose argument can pass 2^53
+ * within the leaf's box (SC_ERR_LIMIT at the leaf). (budget.c) */
+sc_status render_check_fields(const csg_tree *tree, sc_error *error);
+
+/* The error of a work limit (cancel_reason reason: CANCEL_RAY_LIMIT or
+ * CANCEL_BUDGET) passed at leaf (primitive prim), at the leaf's position
+ * when it is one of tree's (tree may be NULL). (budget.c) */
+sc_status render_limit_error(const csg_tree *tree, int reason, uint32_t leaf,
+                             const void *prim, sc_error *error);
+
+sc_status render_stop_error(const csg_tree *tree, struct cancel_token *token,
+                            sc_error *error);
+
 #endif
