@@ -118,6 +118,38 @@ sc_status model_matrix(const model_reader *c, const parse_node *n, double a[4][4
     return SC_OK;
 }
 
+sc_status model_read_xform(const model_reader *r, arena *mem, const parse_node *n,
+                           const affine **out)
+{
+    double m[4][4];
+    sc_status st = model_matrix(r, n, m);
+    if (st != SC_OK)
+        return st;
+    affine *a = arena_alloc(mem, sizeof *a);
+    if (!a)
+        return err_nomem(r->error, NULL);
+    for (int row = 0; row < 3; row++)
+        for (int k = 0; k < 4; k++)
+            a->m[row][k] = m[row][k];
+    *out = a;
+    return SC_OK;
+}
+
+sc_status model_keep_pending(arena *mem, sc_status st, int nomem, const sc_error *pending,
+                             model_node *out, sc_error *error)
+{
+    if (nomem || st == SC_ERR_NOMEM)
+        return err_nomem(error, NULL);
+    if (st == SC_OK)
+        return SC_OK;
+    sc_error *copy = arena_alloc(mem, sizeof *copy);
+    if (!copy)
+        return err_nomem(error, NULL);
+    *copy = *pending;
+    out->pending = copy;
+    return SC_OK;
+}
+
 sc_status model_read_square(const model_reader *c, const parse_node *n, double *sx,
                             double *sy, int *center)
 {

@@ -49,6 +49,16 @@ sc_status model_read_cylinder(const model_reader *r, const parse_node *n, double
 /* multmatrix(m): a row-major 4x4 affine matrix of finite numbers with the
  * bottom row [0, 0, 0, 1]; no argument is the identity. */
 sc_status model_matrix(const model_reader *r, const parse_node *n, double m[4][4]);
+/* multmatrix(m) as model_matrix reads it, its 3x4 affine part allocated
+ * from mem into *out. */
+sc_status model_read_xform(const model_reader *r, arena *mem, const parse_node *n,
+                           const affine **out);
+/* The end of a nested node's lowering (model.h): status st of reading its
+ * arguments, with the error in *pending, kept in out->pending (allocated
+ * from mem); SC_OK, or SC_ERR_NOMEM in *error when memory ran out (nomem
+ * set, or st says so). */
+sc_status model_keep_pending(arena *mem, sc_status st, int nomem, const sc_error *pending,
+                             model_node *out, sc_error *error);
 /* polygon(points, paths)'s arguments: points (NULL when absent) a vector
  * of finite [x, y], paths (NULL when absent) a vector of vectors; the
  * indices in the paths are the caller's to check. */

@@ -223,18 +223,7 @@ static sc_status lower_surface(lowerer *l, const parse_node *n, model_node *out)
  * affine matrix of finite numbers; no argument means the identity. */
 static sc_status lower_xform(lowerer *l, const parse_node *n, model_node *out)
 {
-    double m[4][4];
-    sc_status st = model_matrix(&l->r, n, m);
-    if (st != SC_OK)
-        return st;
-    affine *a = arena_alloc(&l->m->mem, sizeof *a);
-    if (!a)
-        return err_nomem(l->r.error, NULL);
-    for (int r = 0; r < 3; r++)
-        for (int k = 0; k < 4; k++)
-            a->m[r][k] = m[r][k];
-    out->u.xform = a;
-    return SC_OK;
+    return model_read_xform(&l->r, &l->m->mem, n, &out->u.xform);
 }
 
 /* color(c, alpha): c is [r, g, b, a] (missing components are 1, as in

@@ -160,18 +160,7 @@ static sc_status lower_resize(points_lowerer *l, const parse_node *n, model_node
 
 static sc_status lower_matrix(points_lowerer *l, const parse_node *n, model_node *out)
 {
-    double m[4][4];
-    sc_status st = model_matrix(&l->r, n, m);
-    if (st != SC_OK)
-        return st;
-    affine *a = alloc(l, sizeof *a);
-    if (!a)
-        return SC_ERR_NOMEM;
-    for (int r = 0; r < 3; r++)
-        for (int k = 0; k < 4; k++)
-            a->m[r][k] = m[r][k];
-    out->u.xform = a;
-    return SC_OK;
+    return model_read_xform(&l->r, l->mem, n, &out->u.xform);
 }
 
 static sc_status lower_leaf(points_lowerer *l, const parse_node *n, model_node *out)
@@ -241,14 +230,5 @@ sc_status model_points_args(arena *mem, const char *file, const parse_node *n,
         st = lower_matrix(&l, n, out);
     else
         st = lower_leaf(&l, n, out);
-    if (l.nomem || st == SC_ERR_NOMEM)
-        return err_nomem(error, NULL);
-    if (st == SC_OK)
-        return SC_OK;
-    sc_error *copy = arena_alloc(mem, sizeof *copy);
-    if (!copy)
-        return err_nomem(error, NULL);
-    *copy = pending;
-    out->pending = copy;
-    return SC_OK;
+    return model_keep_pending(mem, st, l.nomem, &pending, out, error);
 }

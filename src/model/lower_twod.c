@@ -393,18 +393,7 @@ static sc_status lower_rotate_extrude(twod_lowerer *l, const parse_node *n,
 /* multmatrix(m) below an extrusion: the builders take its xy part. */
 static sc_status lower_matrix(twod_lowerer *l, const parse_node *n, model_node *out)
 {
-    double m[4][4];
-    sc_status st = model_matrix(&l->r, n, m);
-    if (st != SC_OK)
-        return st;
-    affine *a = alloc(l, sizeof *a);
-    if (!a)
-        return SC_ERR_NOMEM;
-    for (int r = 0; r < 3; r++)
-        for (int k = 0; k < 4; k++)
-            a->m[r][k] = m[r][k];
-    out->u.xform = a;
-    return SC_OK;
+    return model_read_xform(&l->r, l->mem, n, &out->u.xform);
 }
 
 sc_status model_twod_args(arena *mem, const char *file, const parse_node *n,
@@ -444,14 +433,5 @@ sc_status model_twod_args(arena *mem, const char *file, const parse_node *n,
     default:
         break;
     }
-    if (l.nomem)
-        return err_nomem(error, NULL);
-    if (st == SC_OK)
-        return SC_OK;
-    sc_error *copy = arena_alloc(mem, sizeof *copy);
-    if (!copy)
-        return err_nomem(error, NULL);
-    *copy = pending;
-    out->pending = copy;
-    return SC_OK;
+    return model_keep_pending(mem, st, l.nomem, &pending, out, error);
 }

@@ -349,9 +349,8 @@ typedef struct model {
 sc_status model_lower(const parse_tree *syntax, model **out, sc_error *error);
 
 /* Lowers the node n alone, and its subtree, in the 2D context into *out
- * (free with model_free; its first node is n's): for hull, minkowski and
- * resize, whose builders still walk their own syntax subtree, an extrusion
- * there (its own arguments left to its builder, in syntax). Fails only
+ * (free with model_free; its first node is n's): a 2D subtree or an
+ * extrusion for the 2D builders on their own (their tests). Fails only
  * for memory. */
 sc_status model_lower_twod(const char *file, const parse_node *n, model **out,
                            sc_error *error);
