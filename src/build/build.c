@@ -1,6 +1,6 @@
 /* The scene builder: see build.h for what each node means.
  *
- * The syntax tree is walked in file order with an explicit stack of frames,
+ * The typed model is walked in file order with an explicit stack of frames,
  * one per open boolean node (group, union, multmatrix, ...). A frame holds
  * what its children inherit (the accumulated transform, the colour, whether
  * leaves are built at all) and where its children's results start on a
