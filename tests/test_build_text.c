@@ -26,6 +26,7 @@
 
 typedef struct laid {
     parse_tree *tree;
+    model *model; /* the text node, lowered in the 2D context */
     text_shape shape;
     sc_error note;
 } laid;
@@ -35,13 +36,15 @@ static void lay_out(laid *l, const char *node)
     sc_error e;
     memset(l, 0, sizeof *l);
     assert_int_equal(parse_text("t.csg", node, strlen(node), &l->tree, &e), SC_OK);
+    assert_int_equal(model_lower_twod("t.csg", l->tree->first, &l->model, &e), SC_OK);
     build_ctx c = {"t.csg", NULL, &e, 0, NULL};
-    assert_int_equal(text_shape_build(&c, l->tree->first, &l->shape, &l->note), SC_OK);
+    assert_int_equal(text_shape_build(&c, l->model->first, &l->shape, &l->note), SC_OK);
 }
 
 static void done(laid *l)
 {
     text_shape_free(&l->shape);
+    model_free(l->model);
     parse_tree_free(l->tree);
 }
 
@@ -274,9 +277,11 @@ static void test_faithful_points_on_curves(void **state)
     sc_error e;
     parse_tree *tree;
     assert_int_equal(parse_text("t.csg", src, strlen(src), &tree, &e), SC_OK);
+    model *lowered;
+    assert_int_equal(model_lower_twod("t.csg", tree->first, &lowered, &e), SC_OK);
     build_ctx c = {"t.csg", NULL, &e, 1, NULL};
     text_polygons poly;
-    assert_int_equal(text_faithful_polygons(&c, tree->first, &poly, NULL), SC_OK);
+    assert_int_equal(text_faithful_polygons(&c, lowered->first, &poly, NULL), SC_OK);
     sc_scene *s =
         load("linear_extrude(height = 1) { text(text = \"Bo@\", size = 10, $fn = "
              "32); }",
@@ -312,6 +317,7 @@ static void test_faithful_points_on_curves(void **state)
     assert_int_equal(off, 0);
     assert_true(area > 0); /* outlines counter-clockwise */
     text_polygons_free(&poly);
+    model_free(lowered);
     parse_tree_free(tree);
     sc_scene_release(s);
 }

@@ -402,7 +402,9 @@ static sc_status import_region(const char *csg, twod_region *r, char *message,
     assert_int_equal(parse_text(file, csg, strlen(csg), &tree, &e), SC_OK);
     build_ctx c = {file, NULL, &e, 1, NULL};
     twod_init(r);
-    sc_status st = build_twod_children(&c, tree->first, r);
+    model *lowered = NULL;
+    assert_int_equal(model_lower_twod(file, tree->first, &lowered, &e), SC_OK);
+    sc_status st = build_twod_children(&c, lowered->first, r);
     if (st != SC_OK) {
         /* the work folder's path is not part of the expected text */
         char full[1200];
@@ -410,6 +412,7 @@ static sc_status import_region(const char *csg, twod_region *r, char *message,
         const char *tail = strstr(full, "m.csg:");
         snprintf(message, size, "%s", tail ? tail : full);
     }
+    model_free(lowered);
     parse_tree_free(tree);
     return st;
 }

@@ -1,8 +1,8 @@
 /* Tests of the lowering pass (src/model/lower.c): the typed fields of each
- * lowered kind, which nodes the model holds (no '*' subtrees, no leaves'
- * children), the root mark, the table of node kinds, and argument errors,
- * which become the model's last node with the exact message and
- * position. */
+ * lowered kind, which nodes the model holds (no '*' subtrees, no 3D
+ * leaves' children; 2D subtrees in the 2D context), the root mark, the table of node
+ * kinds, and argument errors, which become the model's last node with the exact message
+ * and position. */
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>
@@ -166,9 +166,117 @@ static void test_what_is_lowered(void **state)
     assert_true(l.m->has_root);
     n = n->next;
     assert_int_equal(n->kind, MODEL_LINEAR_EXTRUDE);
-    assert_null(n->first_child); /* its builder reads its own subtree */
-    assert_non_null(n->syntax);
+    assert_true(n->u.linear_extrude->height == 1 && n->u.linear_extrude->plain);
     assert_null(n->next);
+    n = n->first_child; /* its 2D subtree is lowered */
+    assert_int_equal(n->kind, MODEL_CIRCLE);
+    assert_null(n->pending);
+    assert_true(n->u.circle->r == 1 && !n->u.circle->has_d);
+    release(&l);
+}
+
+/* The points context: hull's children, read as its builder reads them,
+ * errors kept; each resize's subtree lowered once more for measuring, and
+ * a resize inside another measured from the same nodes. */
+static void test_points_context(void **state)
+{
+    (void)state;
+    lowered l = lower("hull() {\n"
+                      "  color(c = 7) { cube(2); }\n"
+                      "  polyhedron(points = [[0, 0, 0], [1, 0, 0], [0, 1, 0]], faces = "
+                      "[[0, 1, 5]]);\n"
+                      "  circle(r = \"x\");\n"
+                      "}\n"
+                      "resize([2, 0, 0]) { resize(newsize = [3, 3, 3], auto = true) "
+                      "{ sphere(1); } }\n");
+    const model_node *h = l.m->first, *n = h->first_child;
+    assert_int_equal(h->kind, MODEL_HULL);
+    assert_int_equal(n->kind, MODEL_COLOR);
+    assert_null(n->pending); /* color reads no arguments here */
+    assert_true(n->first_child->u.cube.size[2] == 2);
+    n = n->next;
+    assert_int_equal(n->kind, MODEL_POLYHEDRON);
+    assert_string_equal(n->pending->message,
+                        "polyhedron face 0: point index is not one of the 3 points");
+    n = n->next;
+    assert_int_equal(n->kind, MODEL_CIRCLE);
+    assert_null(n->pending); /* not read: not something a hull takes */
+    const model_node *outer = h->next, *inner = outer->first_child;
+    assert_int_equal(outer->kind, MODEL_RESIZE);
+    assert_true(outer->u.resize->size[0] == 2 && outer->u.resize->size[1] == 0);
+    const model_node *measured = outer->u.resize->measured;
+    assert_non_null(measured);
+    assert_int_equal(measured->kind, MODEL_RESIZE);
+    assert_null(measured->u.resize->measured);
+    assert_int_equal(inner->kind, MODEL_RESIZE);
+    assert_true(inner->u.resize->autosize[0] == 1 && inner->u.resize->size[2] == 3);
+    assert_ptr_equal(inner->u.resize->measured, measured->first_child);
+    assert_int_equal(inner->first_child->kind, MODEL_SPHERE);
+    release(&l);
+}
+
+/* The 2D context: an argument error stays in its node, for the builder
+ * that reads it, and lowering goes on; color takes no arguments there;
+ * a bad polygon index ends the paths before it. */
+static void test_twod_context(void **state)
+{
+    (void)state;
+    lowered l = lower(
+        "linear_extrude(1) {\n"
+        "  offset(r = \"x\") { square([2, 3], true); }\n"
+        "  color(c = 7) { polygon([[0, 0], [1, 0], [0, 1]], [[0, 1], [2, 9, 1]]); }\n"
+        "  multmatrix([[1, 0, 0, 2], [0, 1, 0, 3], [0, 0, 1, 0], [0, 0, 0, 1]])\n"
+        "    { text(\"ab\", size = 5); }\n"
+        "}\n"
+        "cube(size = \"no\");\n");
+    const model_node *e = l.m->first, *n = e->first_child;
+    assert_int_equal(n->kind, MODEL_OFFSET);
+    assert_non_null(n->pending);
+    assert_int_equal(n->pending->line, 2);
+    assert_int_equal(n->pending->column, 14);
+    assert_string_equal(n->pending->message,
+                        "wrong type for argument 'r' of 'offset' (expected a number)");
+    const model_node *k = n->first_child;
+    assert_int_equal(k->kind, MODEL_SQUARE);
+    assert_true(k->u.square->sx == 2 && k->u.square->sy == 3 && k->u.square->center);
+    n = n->next;
+    assert_int_equal(n->kind, MODEL_COLOR);
+    assert_null(n->pending);
+    const model_polygon *p = n->first_child->u.polygon;
+    assert_int_equal(p->point_count, 3);
+    assert_true(p->has_points && p->has_paths);
+    assert_int_equal(p->path_count, 2);
+    assert_int_equal(p->path_start[1], 2);
+    assert_int_equal(p->path_start[2], 3); /* cut before the 9 */
+    assert_int_equal(p->index[2], 2);
+    assert_non_null(p->bad_index);
+    assert_string_equal(p->bad_index->message,
+                        "polygon path 1: point index is not one of the 3 points");
+    n = n->next;
+    assert_int_equal(n->kind, MODEL_XFORM);
+    assert_true(n->u.xform->m[0][3] == 2 && n->u.xform->m[1][3] == 3);
+    assert_int_equal(n->first_child->kind, MODEL_TEXT);
+    assert_string_equal(n->first_child->u.text->text, "ab");
+    assert_true(n->first_child->u.text->size == 5);
+    /* the exact builders read height and center, the faithful one all */
+    assert_null(e->pending);
+    assert_null(e->u.linear_extrude->exact_error);
+    /* the 3D model after it still stops at its own error */
+    assert_int_equal(e->next->kind, MODEL_ERROR);
+    assert_null(e->next->next);
+    release(&l);
+    l = lower("linear_extrude(center = 1, slices = \"x\") { circle(); }\n"
+              "rotate_extrude(file = \"a.dxf\") { circle(); }\n");
+    e = l.m->first;
+    assert_string_equal(e->u.linear_extrude->exact_error->message,
+                        "wrong type for argument 'center' of 'linear_extrude' (expected "
+                        "true or false)");
+    assert_string_equal(e->pending->message, "wrong type for argument 'slices' of "
+                                             "'linear_extrude' (expected a number)");
+    assert_string_equal(e->next->pending->message,
+                        "rotate_extrude of a file is not supported yet (use a child "
+                        "import())");
+    assert_int_equal(e->next->first_child->kind, MODEL_CIRCLE);
     release(&l);
 }
 
@@ -295,6 +403,8 @@ int main(void)
         cmocka_unit_test(test_polyhedron),
         cmocka_unit_test(test_operations),
         cmocka_unit_test(test_what_is_lowered),
+        cmocka_unit_test(test_twod_context),
+        cmocka_unit_test(test_points_context),
         cmocka_unit_test(test_shading_and_curved),
         cmocka_unit_test(test_kind_of),
         cmocka_unit_test(test_errors),

@@ -34,9 +34,12 @@ static sc_status region_of(const char *text, twod_region *r, char *error, size_t
     assert_int_equal(st, SC_OK);
     build_ctx c = {"m.csg", NULL, &e, 1, NULL};
     twod_init(r);
-    st = build_twod_children(&c, tree->first, r);
+    model *lowered = NULL;
+    assert_int_equal(model_lower_twod("m.csg", tree->first, &lowered, &e), SC_OK);
+    st = build_twod_children(&c, lowered->first, r);
     if (st != SC_OK)
         sc_error_format(&e, error, size);
+    model_free(lowered);
     parse_tree_free(tree);
     return st;
 }
@@ -367,7 +370,9 @@ static double extrude_volume(const char *text, int faithful, uint32_t *triangles
     build_ctx c = {"m.csg", b, &e, faithful, NULL};
     prim p;
     const char *empty = NULL;
-    sc_status st = build_linear_extrude_faithful(&c, tree->first, 1, &p, &empty);
+    model *lowered = NULL;
+    assert_int_equal(model_lower_twod("m.csg", tree->first, &lowered, &e), SC_OK);
+    sc_status st = build_linear_extrude_faithful(&c, lowered->first, 1, &p, &empty);
     if (st != SC_OK) {
         char buf[1024];
         fail_msg("unexpected error: %s", sc_error_format(&e, buf, sizeof buf));
@@ -382,6 +387,7 @@ static double extrude_volume(const char *text, int faithful, uint32_t *triangles
     }
     *triangles = m->tri_count;
     csg_builder_free(b);
+    model_free(lowered);
     parse_tree_free(tree);
     return volume;
 }

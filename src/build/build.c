@@ -1,6 +1,6 @@
 /* The scene builder: see build.h for what each node means.
  *
- * The syntax tree is walked in file order with an explicit stack of frames,
+ * The typed model is walked in file order with an explicit stack of frames,
  * one per open boolean node (group, union, multmatrix, ...). A frame holds
  * what its children inherit (the accumulated transform, the colour, whether
  * leaves are built at all) and where its children's results start on a
@@ -382,7 +382,7 @@ static sc_status build_polyhedron(builder *b, const model_node *n, const frame *
         build_ctx c = {b->file, b->csg, b->error, b->faithful, NULL};
         const char *empty = NULL;
         prim p;
-        st = build_mesh_prim(&c, &n->loc, "polyhedron", m.points, m.point_count,
+        st = build_mesh_prim(&c, &n->loc, "polyhedron", 1, m.points, m.point_count,
                              m.indices, m.face_start, m.face_count, &p, &empty);
         if (st == SC_OK && state->emit)
             st = empty ? warn(b, &n->loc, "%s", empty) : add_leaf(b, n, &p, state, id);
@@ -459,14 +459,13 @@ static sc_status build_import_leaf(builder *b, const model_node *n, const frame 
     build_ctx c = {b->file, b->csg, b->error, b->faithful, &note};
     const char *empty = NULL;
     prim p;
-    const parse_node *syntax = n->syntax;
     sc_status st = SC_OK;
     if (n->kind == MODEL_IMPORT && state->emit)
         st = build_import(&c, n->u.import, &p, &empty);
     else if (n->kind == MODEL_LINEAR_EXTRUDE)
-        st = build_linear_extrude(&c, syntax, state->emit, &p, &empty);
+        st = build_linear_extrude(&c, n, state->emit, &p, &empty);
     else if (n->kind == MODEL_ROTATE_EXTRUDE)
-        st = build_rotate_extrude(&c, syntax, state->emit, &p, &empty);
+        st = build_rotate_extrude(&c, n, state->emit, &p, &empty);
     if (st != SC_OK || !state->emit)
         return st;
     if (note.message[0]) {
@@ -487,7 +486,7 @@ static sc_status build_twod_ignored(builder *b, const model_node *n, const frame
     build_ctx c = {b->file, b->csg, b->error, b->faithful, NULL};
     twod_region r;
     twod_init(&r);
-    sc_status st = build_twod_node(&c, n->syntax, n->name, &r);
+    sc_status st = build_twod_node(&c, n, n->name, &r);
     twod_free(&r);
     if (st != SC_OK || !state->emit)
         return st;
@@ -506,9 +505,8 @@ static sc_status build_hull_leaf(builder *b, const model_node *n, const frame *s
     build_prims leaves = {NULL, 0, 0};
     sc_status st =
         n->kind == MODEL_HULL
-            ? build_hull(&c, n->syntax, state->emit, &b->resize_cache, &leaves, &empty)
-            : build_minkowski(&c, n->syntax, state->emit, &b->resize_cache, &leaves,
-                              &empty);
+            ? build_hull(&c, n, state->emit, &b->resize_cache, &leaves, &empty)
+            : build_minkowski(&c, n, state->emit, &b->resize_cache, &leaves, &empty);
     uint32_t *ids = leaves.count ? calloc(leaves.count, sizeof *ids) : NULL;
     if (st == SC_OK && leaves.count && !ids)
         st = err_nomem(b->error, NULL);
@@ -717,7 +715,7 @@ static sc_status visit(builder *b, const model_node *n, int *opened)
         build_ctx c = {b->file, b->csg, b->error, b->faithful, NULL};
         const char *warning = NULL;
         affine m;
-        if ((st = build_resize(&c, n->syntax, &b->resize_cache, &m, &warning)) != SC_OK)
+        if ((st = build_resize(&c, n, &b->resize_cache, &m, &warning)) != SC_OK)
             return st;
         if (warning && f.emit && (st = warn(b, &n->loc, "%s", warning)) != SC_OK)
             return st;

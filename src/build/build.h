@@ -1,4 +1,4 @@
-/* The scene builder: syntax tree in, CSG tree out.
+/* The scene builder: typed model in, CSG tree out.
  *
  * It gives each node name its meaning, as OpenSCAD 2021.01 does:
  *   group, union, render, color, multmatrix   union of the children
@@ -30,7 +30,7 @@
  *
  * Things OpenSCAD turns into no geometry (a zero or negative size, a
  * singular transform) become the empty solid with a warning at their
- * position. The walk over the syntax tree uses an explicit stack.
+ * position. The walk over the model uses an explicit stack.
  */
 #ifndef SPANCAST_BUILD_BUILD_H
 #define SPANCAST_BUILD_BUILD_H

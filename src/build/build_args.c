@@ -1,22 +1,22 @@
-/* The 2D part of a multmatrix, for the builders of 2D subtrees
- * (build_ctx.h). */
+/* What the builders of 2D subtrees share (build_ctx.h): the pending
+ * argument error of a node, and the 2D part of a multmatrix. */
 #include <string.h>
 
 #include "build/build_ctx.h"
 
-sc_status build_matrix_xy(const build_ctx *c, const parse_node *n,
-                          const double outer[2][3], double inner[2][3])
+sc_status build_pending(const build_ctx *c, const model_node *n)
 {
-    double a[4][4];
-    sc_status st = model_matrix(BUILD_READER(c), n, a);
-    if (st != SC_OK)
-        return st;
+    *c->error = *n->pending;
+    return n->pending->status;
+}
+
+void build_matrix_xy(const affine *a, const double outer[2][3], double inner[2][3])
+{
     double o[2][3];
     memcpy(o, outer, sizeof o); /* inner may be outer */
     for (int r = 0; r < 2; r++) {
-        inner[r][0] = o[r][0] * a[0][0] + o[r][1] * a[1][0];
-        inner[r][1] = o[r][0] * a[0][1] + o[r][1] * a[1][1];
-        inner[r][2] = o[r][0] * a[0][3] + o[r][1] * a[1][3] + o[r][2];
+        inner[r][0] = o[r][0] * a->m[0][0] + o[r][1] * a->m[1][0];
+        inner[r][1] = o[r][0] * a->m[0][1] + o[r][1] * a->m[1][1];
+        inner[r][2] = o[r][0] * a->m[0][3] + o[r][1] * a->m[1][3] + o[r][2];
     }
-    return SC_OK;
 }

@@ -1,17 +1,15 @@
 /* What every builder of src/build/ shares: the build context (the file
  * for positions, the CSG builder that owns what leaves allocate, where
- * errors and a warning go, faithful mode), and, for the builders that
- * still read their own syntax node (the extrusions, hull, minkowski,
- * resize and the 2D shapes), the argument readers of the model layer
- * (model/args.h) through a build_ctx (BUILD_READER).
+ * errors and a warning go, faithful mode); and, for the builders of the
+ * 2D and points contexts (model.h), a node's pending argument error and
+ * the 2D part of a multmatrix.
  */
 #ifndef SPANCAST_BUILD_BUILD_CTX_H
 #define SPANCAST_BUILD_BUILD_CTX_H
 
 #include "csg/csg.h"
-#include "model/args.h"
+#include "model/model.h"
 #include "spancast/spancast.h"
-#include "syntax/parse.h"
 
 typedef struct build_ctx {
     const char *file; /* for positions */
@@ -22,16 +20,14 @@ typedef struct build_ctx {
     sc_error *note;
 } build_ctx;
 
-/* The argument readers of model/args.h for a builder: the reader of c,
- * e.g. model_number(BUILD_READER(c), n, "h", 0, &h). */
-#define BUILD_READER(c) (&(model_reader){(c)->file, (c)->error})
+/* A nested node's argument error, kept by the lowering (model.h, pending):
+ * copied into c->error, its status returned. */
+sc_status build_pending(const build_ctx *c, const model_node *n);
 
-/* A 2D node's multmatrix(m): m checked as a 4x4 affine matrix of finite
- * numbers, and inner = outer after its xy part (x' = m00 x + m01 y + m03,
- * y' = m10 x + m11 y + m13; z is dropped, as OpenSCAD flattens 2D
- * children). Maps are rows [a b tx; c d ty]; inner may be outer.
- * (build_args.c) */
-sc_status build_matrix_xy(const build_ctx *c, const parse_node *n,
-                          const double outer[2][3], double inner[2][3]);
+/* The 2D part of a multmatrix a (the model's): inner = outer after its xy
+ * part (x' = m00 x + m01 y + m03, y' = m10 x + m11 y + m13; z is dropped,
+ * as OpenSCAD flattens 2D children). Maps are rows [a b tx; c d ty];
+ * inner may be outer. (build_args.c) */
+void build_matrix_xy(const affine *a, const double outer[2][3], double inner[2][3]);
 
 #endif

@@ -19,26 +19,22 @@
 #include "build/build_text.h"
 
 /* height and center, as build_region.c reads them, for the text path. */
-static sc_status text_extrude(const build_ctx *c, const parse_node *n, int emit,
+static sc_status text_extrude(const build_ctx *c, const model_node *n, int emit,
                               prim *out, const char **empty)
 {
-    double height = 100;
-    const parse_value *h = model_arg(n, "height", 0);
-    if (h && h->kind != PARSE_NUMBER)
-        return model_wrong_type(BUILD_READER(c), n, "height", h, "a number");
-    if (h)
-        height = h->u.number;
-    const parse_value *cv = model_arg(n, "center", 1);
-    if (cv && cv->kind != PARSE_BOOL)
-        return model_wrong_type(BUILD_READER(c), n, "center", cv, "true or false");
-    return build_text_extrude(c, n, height, cv ? cv->u.boolean : 0, emit, out, empty);
+    const model_linear_extrude *args = n->u.linear_extrude;
+    if (args->exact_error) {
+        *c->error = *args->exact_error;
+        return args->exact_error->status;
+    }
+    return build_text_extrude(c, n, args->height, args->center, emit, out, empty);
 }
 
-sc_status build_linear_extrude(const build_ctx *c, const parse_node *n, int emit,
+sc_status build_linear_extrude(const build_ctx *c, const model_node *n, int emit,
                                prim *out, const char **empty)
 {
     if (!c->faithful) {
-        const parse_node *miss = NULL;
+        const model_node *miss = NULL;
         if (build_region_covers(n, &miss))
             return build_region_extrude(c, n, emit, out, empty);
         /* only text, without twist or scale: the exact outline prism */

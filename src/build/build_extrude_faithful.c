@@ -44,7 +44,7 @@
 #include "model/faithful.h"
 
 /* Most slices of one extrusion. */
-#define MAX_SLICES 1000000.0
+#define MAX_SLICES MODEL_MAX_SLICES
 /* OpenSCAD's GRID_FINE: radii below it get the minimum slice count. */
 #define GRID_FINE 0.00000095367431640625
 #define DEG2RAD (3.14159265358979323846 / 180.0)
@@ -67,58 +67,14 @@ typedef struct mesh {
     uint32_t top;  /* first point of the top ring */
 } mesh;
 
-static sc_status read_params(const build_ctx *c, const parse_node *n, params *p)
+/* The model's arguments (model.h), their error reported first. */
+static sc_status read_params(const build_ctx *c, const model_node *n, params *p)
 {
-    memset(p, 0, sizeof *p);
-    p->height = 100;
-    p->sx = p->sy = 1;
-    p->fa = 12;
-    p->fs = 2;
-    sc_status st;
-    if (model_arg(n, "file", -1))
-        return err_set(c->error, SC_ERR_UNSUPPORTED, &n->loc,
-                       "linear_extrude of a file is not supported yet");
-    if ((st = model_number(BUILD_READER(c), n, "height", 0, &p->height)) != SC_OK ||
-        (st = model_number(BUILD_READER(c), n, "twist", -1, &p->twist)) != SC_OK ||
-        (st = model_number(BUILD_READER(c), n, "slices", -1, &p->slices)) != SC_OK ||
-        (st = model_read_resolution(BUILD_READER(c), n, &p->fn, &p->fa, &p->fs)) != SC_OK)
-        return st;
-    const parse_value *cv = model_arg(n, "center", 1);
-    if (cv && cv->kind != PARSE_BOOL)
-        return model_wrong_type(BUILD_READER(c), n, "center", cv, "true or false");
-    p->center = cv ? cv->u.boolean : 0;
-    const parse_value *sv = model_arg(n, "scale", -1);
-    if (sv && sv->kind == PARSE_NUMBER) {
-        p->sx = p->sy = sv->u.number;
-    } else if (sv && sv->kind == PARSE_VECTOR && sv->u.vector.count == 2 &&
-               sv->u.vector.items[0].kind == PARSE_NUMBER &&
-               sv->u.vector.items[1].kind == PARSE_NUMBER) {
-        p->sx = sv->u.vector.items[0].u.number;
-        p->sy = sv->u.vector.items[1].u.number;
-    } else if (sv) {
-        return model_wrong_type(BUILD_READER(c), n, "scale", sv, "a number or [x, y]");
-    }
-    if (!isfinite(p->sx) || !isfinite(p->sy)) {
-        sc_location loc = model_loc(BUILD_READER(c), sv);
-        return err_set(c->error, SC_ERR_SEMANTIC, &loc,
-                       "linear_extrude: scale must be finite");
-    }
-    if (!isfinite(p->twist)) {
-        sc_location loc = model_loc(BUILD_READER(c), model_arg(n, "twist", -1));
-        return err_set(c->error, SC_ERR_SEMANTIC, &loc,
-                       "linear_extrude: twist must be finite");
-    }
-    /* OpenSCAD: negative scales are 0, slices are truncated to an integer
-     * and count when positive, a non-finite slice count is not given */
-    p->sx = p->sx < 0 ? 0 : p->sx;
-    p->sy = p->sy < 0 ? 0 : p->sy;
-    p->slices = isfinite(p->slices) && p->slices >= 1 ? trunc(p->slices) : 0;
-    if (p->slices > MAX_SLICES) {
-        sc_location loc = model_loc(BUILD_READER(c), model_arg(n, "slices", -1));
-        return err_set(c->error, SC_ERR_LIMIT, &loc,
-                       "linear_extrude: %g slices are too many (limit is %.0f)",
-                       p->slices, MAX_SLICES);
-    }
+    if (n->pending)
+        return build_pending(c, n);
+    const model_linear_extrude *e = n->u.linear_extrude;
+    *p = (params){e->height, e->twist,  e->sx,     e->sy,    e->res.fn,
+                  e->res.fa, e->res.fs, e->slices, e->center};
     return SC_OK;
 }
 
@@ -362,7 +318,7 @@ static void mesh_free(mesh *m)
     free(m->line);
 }
 
-static sc_status extrude(const build_ctx *c, const parse_node *n, const params *p,
+static sc_status extrude(const build_ctx *c, const model_node *n, const params *p,
                          const twod_region *r, uint32_t slices, prim *out,
                          const char **empty)
 {
@@ -451,7 +407,7 @@ static sc_status extrude(const build_ctx *c, const parse_node *n, const params *
     if (!ok)
         st = err_nomem(c->error, &n->loc);
     else
-        st = build_mesh_prim(c, &n->loc, "linear_extrude", m.points, (uint32_t)total,
+        st = build_mesh_prim(c, &n->loc, "linear_extrude", 0, m.points, (uint32_t)total,
                              m.indices, m.face_start, (uint32_t)m.face_count, out, empty);
     if (st == SC_OK && *empty)
         *empty = "linear_extrude without height or area is empty";
@@ -459,10 +415,10 @@ static sc_status extrude(const build_ctx *c, const parse_node *n, const params *
     return st;
 }
 
-sc_status build_linear_extrude_faithful(const build_ctx *c, const parse_node *n, int emit,
+sc_status build_linear_extrude_faithful(const build_ctx *c, const model_node *n, int emit,
                                         prim *out, const char **empty)
 {
-    params p;
+    params p = {0};
     sc_status st = read_params(c, n, &p);
     if (st != SC_OK)
         return st;

@@ -14,7 +14,7 @@
  * n's 2D children (build_twod_children): OpenSCAD's slices as a closed
  * mesh leaf. Arguments are checked always; *out is filled only when emit
  * is set, and an extrusion without height or area sets *empty instead. */
-sc_status build_linear_extrude_faithful(const build_ctx *c, const parse_node *n, int emit,
+sc_status build_linear_extrude_faithful(const build_ctx *c, const model_node *n, int emit,
                                         prim *out, const char **empty);
 
 #endif

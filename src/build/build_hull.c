@@ -85,7 +85,7 @@ typedef struct walk {
  * it, exponentially in the nesting. Open addressing on the node's
  * address. */
 struct build_resize_cache {
-    const parse_node **keys;
+    const model_node **keys;
     affine *matrices;
     const char **warnings;
     size_t count, cap; /* cap is a power of two */
@@ -101,7 +101,7 @@ void build_resize_cache_free(build_resize_cache *cache)
     free(cache);
 }
 
-static size_t slot_of(const build_resize_cache *cache, const parse_node *n)
+static size_t slot_of(const build_resize_cache *cache, const model_node *n)
 {
     size_t h = (size_t)(uintptr_t)n;
     h ^= h >> 17;
@@ -112,7 +112,7 @@ static size_t slot_of(const build_resize_cache *cache, const parse_node *n)
     return i;
 }
 
-static const affine *cache_find(const build_resize_cache *cache, const parse_node *n,
+static const affine *cache_find(const build_resize_cache *cache, const model_node *n,
                                 const char **warning)
 {
     if (!cache || !cache->cap)
@@ -125,7 +125,7 @@ static const affine *cache_find(const build_resize_cache *cache, const parse_nod
 }
 
 /* Returns 0 when memory ran out. */
-static int cache_put(build_resize_cache **slot, const parse_node *n, const affine *m,
+static int cache_put(build_resize_cache **slot, const model_node *n, const affine *m,
                      const char *warning)
 {
     build_resize_cache *cache = *slot;
@@ -191,32 +191,6 @@ static pointset *new_part(partlist *l)
     return s;
 }
 
-/* ---- arguments ---- */
-
-static sc_status get_number(const build_ctx *c, const parse_node *n, const char *name,
-                            int position, double *out, int *given)
-{
-    if (given)
-        *given = model_arg(n, name, position) != NULL;
-    return model_number(BUILD_READER(c), n, name, position, out);
-}
-
-/* A diameter wins over a radius, as in OpenSCAD. */
-static sc_status get_radius(const build_ctx *c, const parse_node *n, const char *diameter,
-                            const char *radius, int position, double *out, int *given)
-{
-    double d = 0;
-    int has_d;
-    sc_status st = get_number(c, n, diameter, -1, &d, &has_d);
-    if (st == SC_OK)
-        st = get_number(c, n, radius, position, out, given);
-    if (st == SC_OK && has_d) {
-        *out = d / 2;
-        *given = 1;
-    }
-    return st;
-}
-
 static int positive_finite(double x)
 {
     return x > 0 && isfinite(x);
@@ -240,75 +214,46 @@ typedef struct shape {
     double fn, fa, fs;
 } shape;
 
-static sc_status read_cube(const build_ctx *c, const parse_node *n, shape *s)
+/* A cube, sphere or cylinder of the model (its error reported first). */
+static sc_status read_shape(const build_ctx *c, const model_node *n, shape *s)
 {
-    double size[3];
-    int center;
-    sc_status st = model_cube(BUILD_READER(c), n, size, &center);
-    if (st != SC_OK)
-        return st;
-    if (!positive_finite(size[0]) || !positive_finite(size[1]) ||
-        !positive_finite(size[2]))
+    memset(s, 0, sizeof *s);
+    if (n->pending)
+        return build_pending(c, n);
+    if (n->kind == MODEL_CUBE) {
+        const double *size = n->u.cube.size;
+        if (!positive_finite(size[0]) || !positive_finite(size[1]) ||
+            !positive_finite(size[2]))
+            return SC_OK;
+        vec3 sz = v3(size[0], size[1], size[2]);
+        s->kind = SHAPE_BOX;
+        s->lo = n->u.cube.center ? v3_scale(sz, -0.5) : v3(0, 0, 0);
+        s->hi = n->u.cube.center ? v3_scale(sz, 0.5) : sz;
         return SC_OK;
-    vec3 sz = v3(size[0], size[1], size[2]);
-    s->kind = SHAPE_BOX;
-    s->lo = center ? v3_scale(sz, -0.5) : v3(0, 0, 0);
-    s->hi = center ? v3_scale(sz, 0.5) : sz;
-    return SC_OK;
-}
-
-static sc_status read_sphere(const build_ctx *c, const parse_node *n, shape *s)
-{
-    double r = 1;
-    int given;
-    sc_status st = get_radius(c, n, "d", "r", 0, &r, &given);
-    if (st != SC_OK || !positive_finite(r))
-        return st;
-    s->kind = SHAPE_SPHERE;
-    s->r = r;
-    return SC_OK;
-}
-
-static sc_status read_cylinder(const build_ctx *c, const parse_node *n, shape *s)
-{
-    double h = 1, r = 1, r1 = 1, r2 = 1;
-    int has_h, has_r, has_r1, has_r2, center = 0;
-    sc_status st = get_number(c, n, "h", 0, &h, &has_h);
-    if (st == SC_OK)
-        st = get_radius(c, n, "d1", "r1", 1, &r1, &has_r1);
-    if (st == SC_OK)
-        st = get_radius(c, n, "d2", "r2", 2, &r2, &has_r2);
-    if (st == SC_OK)
-        st = get_radius(c, n, "d", "r", -1, &r, &has_r);
-    if (st == SC_OK)
-        st = model_bool(BUILD_READER(c), n, "center", 3, &center);
-    if (st != SC_OK)
-        return st;
-    if (!has_r1)
-        r1 = r;
-    if (!has_r2)
-        r2 = r;
+    }
+    if (n->kind == MODEL_SPHERE) {
+        s->fn = n->u.sphere.res.fn;
+        s->fa = n->u.sphere.res.fa;
+        s->fs = n->u.sphere.res.fs;
+        if (!positive_finite(n->u.sphere.r))
+            return SC_OK;
+        s->kind = SHAPE_SPHERE;
+        s->r = n->u.sphere.r;
+        return SC_OK;
+    }
+    double h = n->u.cylinder.h, r1 = n->u.cylinder.r1, r2 = n->u.cylinder.r2;
+    s->fn = n->u.cylinder.res.fn;
+    s->fa = n->u.cylinder.res.fa;
+    s->fs = n->u.cylinder.res.fs;
     if (!positive_finite(h) || !(r1 >= 0 && r2 >= 0) || !isfinite(r1) || !isfinite(r2) ||
         (r1 == 0 && r2 == 0))
         return SC_OK;
     s->kind = SHAPE_CYLINDER;
-    s->z0 = center ? -h / 2 : 0;
-    s->z1 = center ? h / 2 : h;
+    s->z0 = n->u.cylinder.center ? -h / 2 : 0;
+    s->z1 = n->u.cylinder.center ? h / 2 : h;
     s->r0 = r1;
     s->r1 = r2;
     return SC_OK;
-}
-
-static sc_status read_shape(const build_ctx *c, const parse_node *n, shape *s)
-{
-    memset(s, 0, sizeof *s);
-    parse_node_resolution(n, &s->fn, &s->fa, &s->fs);
-    model_kind kind = model_kind_of(n->name);
-    if (kind == MODEL_CUBE)
-        return read_cube(c, n, s);
-    if (kind == MODEL_SPHERE)
-        return read_sphere(c, n, s);
-    return read_cylinder(c, n, s);
 }
 
 /* Point k of a circle of radius r with f fragments at height z, as
@@ -320,7 +265,7 @@ static vec3 circle_point(double r, long k, long f, double z)
 }
 
 /* The vertices of OpenSCAD's polyhedron of shape s, through m. */
-static sc_status shape_points(const walk *w, const parse_node *n, const shape *s,
+static sc_status shape_points(const walk *w, const model_node *n, const shape *s,
                               const affine *m, pointset *out)
 {
     if (s->kind == SHAPE_BOX) {
@@ -362,28 +307,16 @@ static sc_status shape_points(const walk *w, const parse_node *n, const shape *s
 
 /* ---- polyhedra and meshes ---- */
 
-static const char points_expected[] = "a vector of [x, y, z] points";
-static const char faces_expected[] = "a vector of faces, each a vector of point indices";
-
 /* The points a polyhedron's faces use, through m, and the volume its faces
  * enclose (fans about each face's first point). */
-static sc_status polyhedron_points(const walk *w, const parse_node *n, const affine *m,
+static sc_status polyhedron_points(const walk *w, const model_node *n, const affine *m,
                                    pointset *out, double *volume)
 {
     const build_ctx *c = w->c;
-    const parse_value *pts = model_arg(n, "points", 0);
-    const char *faces_name = "faces";
-    const parse_value *faces = model_arg(n, "faces", 1);
-    if (!faces && (faces = model_arg(n, "triangles", -1)))
-        faces_name = "triangles";
     *volume = 0;
-    if (!pts || !faces)
-        return SC_OK;
-    if (pts->kind != PARSE_VECTOR)
-        return model_wrong_type(BUILD_READER(c), n, "points", pts, points_expected);
-    if (faces->kind != PARSE_VECTOR)
-        return model_wrong_type(BUILD_READER(c), n, faces_name, faces, faces_expected);
-    uint32_t np = pts->u.vector.count;
+    if (n->pending)
+        return build_pending(c, n);
+    uint32_t np = n->u.polyhedron.point_count;
     vec3 *p = np ? malloc((size_t)np * sizeof *p) : NULL;
     unsigned char *used = np ? calloc(np, 1) : NULL;
     if (np && (!p || !used)) {
@@ -391,49 +324,23 @@ static sc_status polyhedron_points(const walk *w, const parse_node *n, const aff
         free(used);
         return err_nomem(c->error, (&n->loc));
     }
-    sc_status st = SC_OK;
-    for (uint32_t i = 0; i < np && st == SC_OK; i++) {
-        const parse_value *pv = &pts->u.vector.items[i];
-        int ok = pv->kind == PARSE_VECTOR && pv->u.vector.count == 3;
-        double xyz[3] = {0, 0, 0};
-        for (int k = 0; ok && k < 3; k++) {
-            ok = pv->u.vector.items[k].kind == PARSE_NUMBER &&
-                 isfinite(pv->u.vector.items[k].u.number);
-            if (ok)
-                xyz[k] = pv->u.vector.items[k].u.number;
-        }
-        if (!ok)
-            st = model_wrong_type(BUILD_READER(c), n, "points", pv, points_expected);
-        else
-            p[i] = affine_point(m, v3(xyz[0], xyz[1], xyz[2]));
-    }
+    for (uint32_t i = 0; i < np; i++)
+        p[i] = affine_point(m, n->u.polyhedron.points[i]);
+    const uint32_t *start = n->u.polyhedron.face_start, *index = n->u.polyhedron.indices;
     double six = 0;
-    for (uint32_t f = 0; f < faces->u.vector.count && st == SC_OK; f++) {
-        const parse_value *fv = &faces->u.vector.items[f];
-        if (fv->kind != PARSE_VECTOR) {
-            st = model_wrong_type(BUILD_READER(c), n, faces_name, fv, faces_expected);
-            break;
-        }
+    for (uint32_t f = 0; f < n->u.polyhedron.face_count; f++) {
         uint32_t first = 0, prev = 0;
-        for (uint32_t i = 0; i < fv->u.vector.count; i++) {
-            const parse_value *iv = &fv->u.vector.items[i];
-            double x = iv->kind == PARSE_NUMBER ? iv->u.number : -1;
-            if (!(x >= 0 && x < (double)np && x == floor(x))) {
-                sc_location loc = model_loc(BUILD_READER(c), iv);
-                st = err_set(
-                    c->error, SC_ERR_SEMANTIC, &loc,
-                    "polyhedron face %u: point index is not one of the %u points", f, np);
-                break;
-            }
-            uint32_t k = (uint32_t)x;
+        for (uint32_t i = start[f]; i < start[f + 1]; i++) {
+            uint32_t k = index[i];
             used[k] = 1;
-            if (i == 0)
+            if (i == start[f])
                 first = k;
-            else if (i >= 2)
+            else if (i >= start[f] + 2)
                 six += v3_dot(p[first], v3_cross(p[prev], p[k]));
             prev = k;
         }
     }
+    sc_status st = SC_OK;
     for (uint32_t i = 0; i < np && st == SC_OK; i++) {
         if (used[i] && !add_point(out, p[i]))
             st = err_nomem(c->error, (&n->loc));
@@ -448,7 +355,7 @@ static sc_status polyhedron_points(const walk *w, const parse_node *n, const aff
  * through m, and its volume. Extrusions are built as in --faithful, in
  * both modes: OpenSCAD hulls the vertices of its polygons, and the exact
  * leaves of default mode have none. */
-static sc_status mesh_points(const walk *w, const parse_node *n, const affine *m,
+static sc_status mesh_points(const walk *w, const model_node *n, const affine *m,
                              pointset *out, double *volume)
 {
     prim p;
@@ -457,20 +364,12 @@ static sc_status mesh_points(const walk *w, const parse_node *n, const affine *m
     build_ctx fc = *w->c;
     fc.faithful = 1;
     sc_status st;
-    model_kind kind = model_kind_of(n->name);
-    if (kind == MODEL_IMPORT) {
-        model_reader r = {w->c->file, w->c->error};
-        model_import import;
-        st = model_read_import(&r, n, &import);
-        if (st == SC_OK)
-            st = build_import(w->c, &import, &p, &empty);
-    } else if (kind == MODEL_SURFACE) {
-        model_reader r = {w->c->file, w->c->error};
-        model_surface surface;
-        st = model_read_surface(&r, n, &surface);
-        if (st == SC_OK)
-            st = build_surface(w->c, &surface, &p, &empty);
-    } else if (kind == MODEL_ROTATE_EXTRUDE)
+    model_kind kind = n->kind;
+    if (kind == MODEL_IMPORT || kind == MODEL_SURFACE)
+        st = n->pending             ? build_pending(w->c, n)
+             : kind == MODEL_IMPORT ? build_import(w->c, n->u.import, &p, &empty)
+                                    : build_surface(w->c, n->u.surface, &p, &empty);
+    else if (kind == MODEL_ROTATE_EXTRUDE)
         st = build_rotate_extrude(&fc, n, 1, &p, &empty);
     else
         st = build_linear_extrude(&fc, n, 1, &p, &empty);
@@ -493,17 +392,13 @@ static sc_status mesh_points(const walk *w, const parse_node *n, const affine *m
 /* ---- the walk ---- */
 
 /* multmatrix(m): the matrix, or 0 in *ok for a singular one (no geometry). */
-static sc_status read_matrix(const build_ctx *c, const parse_node *n, affine *out,
+static sc_status read_matrix(const build_ctx *c, const model_node *n, affine *out,
                              int *ok)
 {
     *ok = 1;
-    double m[4][4];
-    sc_status st = model_matrix(BUILD_READER(c), n, m);
-    if (st != SC_OK)
-        return st;
-    for (int r = 0; r < 3; r++)
-        for (int k = 0; k < 4; k++)
-            out->m[r][k] = m[r][k];
+    if (n->pending)
+        return build_pending(c, n);
+    *out = *n->u.xform;
     affine inverse;
     *ok = affine_invert(out, &inverse);
     return SC_OK;
@@ -528,33 +423,33 @@ static int is_mesh(model_kind kind)
            kind == MODEL_ROTATE_EXTRUDE || kind == MODEL_SURFACE;
 }
 
-static int skipped(const parse_node *n)
+static int skipped(const model_node *n)
 {
-    return (n->modifiers & (PARSE_MOD_DISABLE | PARSE_MOD_BACKGROUND)) != 0;
+    return (n->modifiers & (MODEL_MOD_DISABLE | MODEL_MOD_BACKGROUND)) != 0;
 }
 
-static sc_status depth_error(const walk *w, const parse_node *n)
+static sc_status depth_error(const walk *w, const model_node *n)
 {
     return err_set(w->c->error, SC_ERR_LIMIT, &n->loc,
                    "too many nested nodes inside %s (limit is %d)", w->owner,
                    BUILD_HULL_MAX_DEPTH);
 }
 
-static sc_status minkowski_parts(const walk *w, const parse_node *n, const affine *m,
+static sc_status minkowski_parts(const walk *w, const model_node *n, const affine *m,
                                  int depth, partlist *out);
-static sc_status resize_matrix(const walk *w, const parse_node *n, int depth, affine *out,
+static sc_status resize_matrix(const walk *w, const model_node *n, int depth, affine *out,
                                const char **warning);
 
 /* Appends the convex parts (or, for a hull, point sets) of the children of
  * parent, through m, to out. */
-static sc_status collect(const walk *w, const parse_node *parent, const affine *m,
+static sc_status collect(const walk *w, const model_node *parent, const affine *m,
                          int depth, partlist *out)
 {
     const build_ctx *c = w->c;
     if (depth > BUILD_HULL_MAX_DEPTH)
         return depth_error(w, parent);
-    for (const parse_node *n = parent->first_child; n; n = n->next) {
-        model_kind kind = model_kind_of(n->name);
+    for (const model_node *n = parent->first_child; n; n = n->next) {
+        model_kind kind = n->kind;
         if (skipped(n) || is_shading(kind))
             continue;
         sc_status st = SC_OK;
@@ -632,7 +527,7 @@ static sc_status collect(const walk *w, const parse_node *parent, const affine *
 
 /* Replaces each part by the vertices of its hull (flat parts keep their
  * points). */
-static sc_status reduce(const walk *w, const parse_node *n, partlist *l)
+static sc_status reduce(const walk *w, const model_node *n, partlist *l)
 {
     for (uint32_t i = 0; i < l->count; i++) {
         hull3 h;
@@ -654,7 +549,7 @@ static sc_status reduce(const walk *w, const parse_node *n, partlist *l)
 }
 
 /* The parts of minkowski node n (through m) appended to out. */
-static sc_status minkowski_parts(const walk *w, const parse_node *n, const affine *m,
+static sc_status minkowski_parts(const walk *w, const model_node *n, const affine *m,
                                  int depth, partlist *out)
 {
     walk inner = {w->c, "minkowski", 1, w->cache};
@@ -663,17 +558,17 @@ static sc_status minkowski_parts(const walk *w, const parse_node *n, const affin
     int first = 1;
     if (depth > BUILD_HULL_MAX_DEPTH)
         return depth_error(w, n);
-    for (const parse_node *child = n->first_child; child && st == SC_OK;
+    for (const model_node *child = n->first_child; child && st == SC_OK;
          child = child->next) {
         if (skipped(child))
             continue;
         partlist parts = {NULL, 0, 0};
         /* Each child alone: collect walks the children of its argument, so
          * walk a one-child view of the minkowski node. */
-        parse_node view = *n;
-        parse_node lone = *child;
+        model_node view = *n;
+        model_node lone = *child;
         lone.next = NULL;
-        view.first_child = view.last_child = &lone;
+        view.first_child = &lone;
         view.child_count = 1;
         affine here = first ? *m : affine_identity();
         st = collect(&inner, &view, &here, depth + 1, &parts);
@@ -745,7 +640,7 @@ static sc_status minkowski_parts(const walk *w, const parse_node *n, const affin
 
 /* ---- emitting ---- */
 
-static sc_status push_prim(const build_ctx *c, const parse_node *n, build_prims *out,
+static sc_status push_prim(const build_ctx *c, const model_node *n, build_prims *out,
                            const prim *p)
 {
     if (!grow_array32((void **)&out->items, &out->cap, out->count + 1,
@@ -757,7 +652,7 @@ static sc_status push_prim(const build_ctx *c, const parse_node *n, build_prims 
 
 /* The hull of points as a leaf appended to out; *flat counts hulls
  * without volume. */
-static sc_status emit_hull(const build_ctx *c, const parse_node *n, const pointset *s,
+static sc_status emit_hull(const build_ctx *c, const model_node *n, const pointset *s,
                            build_prims *out, int *flat)
 {
     hull3 h;
@@ -794,7 +689,7 @@ static sc_status emit_hull(const build_ctx *c, const parse_node *n, const points
         for (uint32_t t = 0; t <= h.tri_count; t++)
             start[t] = 3 * t;
         const char *empty = NULL;
-        st = build_mesh_prim(c, &n->loc, n->name, h.vertices, h.vertex_count, h.tris,
+        st = build_mesh_prim(c, &n->loc, n->name, 0, h.vertices, h.vertex_count, h.tris,
                              start, h.tri_count, &p, &empty);
         free(start);
         if (st == SC_OK && empty)
@@ -808,7 +703,7 @@ static sc_status emit_hull(const build_ctx *c, const parse_node *n, const points
     return push_prim(c, n, out, &p);
 }
 
-sc_status build_hull(const build_ctx *c, const parse_node *n, int emit,
+sc_status build_hull(const build_ctx *c, const model_node *n, int emit,
                      build_resize_cache **cache, build_prims *out, const char **empty)
 {
     memset(out, 0, sizeof *out);
@@ -833,7 +728,7 @@ sc_status build_hull(const build_ctx *c, const parse_node *n, int emit,
     return st;
 }
 
-sc_status build_minkowski(const build_ctx *c, const parse_node *n, int emit,
+sc_status build_minkowski(const build_ctx *c, const model_node *n, int emit,
                           build_resize_cache **cache, build_prims *out,
                           const char **empty)
 {
@@ -855,7 +750,7 @@ sc_status build_minkowski(const build_ctx *c, const parse_node *n, int emit,
 
 /* The six support values of the children of parent through m: out[2k] =
  * max x_k, out[2k + 1] = max -x_k; -inf where there is nothing. */
-static sc_status support(const walk *w, const parse_node *parent, const affine *m,
+static sc_status support(const walk *w, const model_node *parent, const affine *m,
                          int depth, double out[6]);
 
 static void support_points(const pointset *s, double out[6])
@@ -875,12 +770,12 @@ static vec3 row(const affine *m, int k)
     return v3(m->m[k][0], m->m[k][1], m->m[k][2]);
 }
 
-static sc_status support_node(const walk *w, const parse_node *n, const affine *m,
+static sc_status support_node(const walk *w, const model_node *n, const affine *m,
                               int depth, double out[6])
 {
     const build_ctx *c = w->c;
     sc_status st = SC_OK;
-    model_kind kind = model_kind_of(n->name);
+    model_kind kind = n->kind;
     if (is_group(kind))
         return support(w, n, m, depth + 1, out);
     if (kind == MODEL_XFORM || kind == MODEL_RESIZE) {
@@ -898,8 +793,8 @@ static sc_status support_node(const walk *w, const parse_node *n, const affine *
         int first = 1;
         double acc[6] = {-INFINITY, -INFINITY, -INFINITY,
                          -INFINITY, -INFINITY, -INFINITY};
-        for (const parse_node *k = n->first_child; k; k = k->next) {
-            if (skipped(k) || is_shading(model_kind_of(k->name)))
+        for (const model_node *k = n->first_child; k; k = k->next) {
+            if (skipped(k) || is_shading(k->kind))
                 continue;
             double s[6] = {-INFINITY, -INFINITY, -INFINITY,
                            -INFINITY, -INFINITY, -INFINITY};
@@ -920,8 +815,8 @@ static sc_status support_node(const walk *w, const parse_node *n, const affine *
         int any = 0;
         affine linear = *m;
         linear.m[0][3] = linear.m[1][3] = linear.m[2][3] = 0;
-        for (const parse_node *k = n->first_child; k; k = k->next) {
-            if (skipped(k) || is_shading(model_kind_of(k->name)))
+        for (const model_node *k = n->first_child; k; k = k->next) {
+            if (skipped(k) || is_shading(k->kind))
                 continue;
             double s[6] = {-INFINITY, -INFINITY, -INFINITY,
                            -INFINITY, -INFINITY, -INFINITY};
@@ -961,31 +856,25 @@ static sc_status support_node(const walk *w, const parse_node *n, const affine *
         return SC_OK;
     }
     if (kind == MODEL_TORUS || kind == MODEL_QUADRIC || kind == MODEL_IMPLICIT) {
-        model_reader r = {c->file, c->error};
+        if (n->pending)
+            return build_pending(c, n);
         if (kind == MODEL_TORUS) {
-            model_torus torus;
-            if ((st = model_read_torus(&r, n, &torus)) != SC_OK || torus.empty)
-                return st;
+            const model_torus *torus = n->u.torus;
+            if (torus->empty)
+                return SC_OK;
             for (int k = 0; k < 3; k++) {
                 vec3 u = row(m, k);
-                double h = torus.r1 * hypot(u.x, u.y) + torus.r2 * v3_length(u);
+                double h = torus->r1 * hypot(u.x, u.y) + torus->r2 * v3_length(u);
                 out[2 * k] = fmax(out[2 * k], v3_get(t, k) + h);
                 out[2 * k + 1] = fmax(out[2 * k + 1], -v3_get(t, k) + h);
             }
             return SC_OK;
         }
-        bbox box;
-        if (kind == MODEL_QUADRIC) {
-            model_quadric quadric;
-            if ((st = model_read_quadric(&r, n, &quadric)) != SC_OK || quadric.empty)
-                return st;
-            box = quadric.box;
-        } else {
-            model_implicit implicit;
-            if ((st = model_read_implicit(&r, n, &implicit)) != SC_OK || implicit.empty)
-                return st;
-            box = implicit.box;
-        }
+        const char *empty =
+            kind == MODEL_QUADRIC ? n->u.quadric->empty : n->u.implicit->empty;
+        if (empty)
+            return SC_OK;
+        bbox box = kind == MODEL_QUADRIC ? n->u.quadric->box : n->u.implicit->box;
         pointset corners = {NULL, 0, 0};
         vec3 list[8];
         for (int k = 0; k < 8; k++)
@@ -999,13 +888,13 @@ static sc_status support_node(const walk *w, const parse_node *n, const affine *
     }
     /* Everything else through its points: cube, faithful sphere and
      * cylinder, polyhedron, meshes, hull. */
-    parse_node view;
-    parse_node lone = *n;
+    model_node view;
+    model_node lone = *n;
     lone.next = NULL;
     memset(&view, 0, sizeof view);
     view.name = "resize";
     view.loc = n->loc;
-    view.first_child = view.last_child = &lone;
+    view.first_child = &lone;
     view.child_count = 1;
     partlist parts = {NULL, 0, 0};
     st = collect(w, &view, m, depth + 1, &parts);
@@ -1015,13 +904,13 @@ static sc_status support_node(const walk *w, const parse_node *n, const affine *
     return st;
 }
 
-static sc_status support(const walk *w, const parse_node *parent, const affine *m,
+static sc_status support(const walk *w, const model_node *parent, const affine *m,
                          int depth, double out[6])
 {
     if (depth > BUILD_HULL_MAX_DEPTH)
         return depth_error(w, parent);
-    for (const parse_node *n = parent->first_child; n; n = n->next) {
-        if (skipped(n) || is_shading(model_kind_of(n->name)))
+    for (const model_node *n = parent->first_child; n; n = n->next) {
+        if (skipped(n) || is_shading(n->kind))
             continue;
         sc_status st = support_node(w, n, m, depth, out);
         if (st != SC_OK)
@@ -1030,41 +919,12 @@ static sc_status support(const walk *w, const parse_node *parent, const affine *
     return SC_OK;
 }
 
-/* Reads a vector of up to 3 numbers (newsize) or flags (auto: true/false
- * or numbers, as OpenSCAD writes them). */
-static sc_status read_triple(const build_ctx *c, const parse_node *n, const char *name,
-                             int position, int flags, double out[3])
-{
-    const parse_value *v = model_arg(n, name, position);
-    static const char numbers[] = "a vector of numbers";
-    static const char bools[] = "true, false or a vector of them";
-    if (!v)
-        return SC_OK;
-    if (flags && v->kind == PARSE_BOOL) {
-        out[0] = out[1] = out[2] = v->u.boolean;
-        return SC_OK;
-    }
-    if (v->kind != PARSE_VECTOR)
-        return model_wrong_type(BUILD_READER(c), n, name, v, flags ? bools : numbers);
-    for (uint32_t i = 0; i < v->u.vector.count && i < 3; i++) {
-        const parse_value *item = &v->u.vector.items[i];
-        if (flags && item->kind == PARSE_BOOL)
-            out[i] = item->u.boolean;
-        else if (item->kind == PARSE_NUMBER && isfinite(item->u.number))
-            out[i] = flags ? item->u.number != 0 : item->u.number;
-        else
-            return model_wrong_type(BUILD_READER(c), n, name, item,
-                                    flags ? bools : numbers);
-    }
-    return SC_OK;
-}
-
 /* The matrix of resize node n, measured (once per build: see the cache) or
  * taken from the cache. */
-static sc_status measure(const walk *w, const parse_node *n, int depth, affine *out,
+static sc_status measure(const walk *w, const model_node *n, int depth, affine *out,
                          const char **warning);
 
-static sc_status resize_matrix(const walk *w, const parse_node *n, int depth, affine *out,
+static sc_status resize_matrix(const walk *w, const model_node *n, int depth, affine *out,
                                const char **warning)
 {
     const affine *known = cache_find(*w->cache, n, warning);
@@ -1078,25 +938,15 @@ static sc_status resize_matrix(const walk *w, const parse_node *n, int depth, af
     return st;
 }
 
-static sc_status measure(const walk *w, const parse_node *n, int depth, affine *out,
+static sc_status measure(const walk *w, const model_node *n, int depth, affine *out,
                          const char **warning)
 {
     const build_ctx *c = w->c;
-    double size[3] = {0, 0, 0}, autosize[3] = {0, 0, 0};
     *out = affine_identity();
-    sc_status st = read_triple(c, n, "newsize", 0, 0, size);
-    if (st == SC_OK)
-        st = read_triple(c, n, "auto", 1, 1, autosize);
-    if (st != SC_OK)
-        return st;
-    for (int k = 0; k < 3; k++) {
-        if (size[k] < 0) {
-            const parse_value *v = model_arg(n, "newsize", 0);
-            sc_location loc = model_loc(BUILD_READER(c), v);
-            return err_set(c->error, SC_ERR_UNSUPPORTED, &loc,
-                           "resize to a negative size is not supported yet");
-        }
-    }
+    if (n->pending)
+        return build_pending(c, n);
+    const double *size = n->u.resize->size, *autosize = n->u.resize->autosize;
+    sc_status st;
     double s[6] = {-INFINITY, -INFINITY, -INFINITY, -INFINITY, -INFINITY, -INFINITY};
     if ((st = support(w, n, out, depth, s)) != SC_OK)
         return st;
@@ -1130,9 +980,10 @@ static sc_status measure(const walk *w, const parse_node *n, int depth, affine *
     return SC_OK;
 }
 
-sc_status build_resize(const build_ctx *c, const parse_node *n,
+sc_status build_resize(const build_ctx *c, const model_node *n,
                        build_resize_cache **cache, affine *out, const char **warning)
 {
     walk w = {c, "resize", 0, cache};
-    return resize_matrix(&w, n, 0, out, warning);
+    const model_node *measured = n->u.resize->measured ? n->u.resize->measured : n;
+    return resize_matrix(&w, measured, 0, out, warning);
 }

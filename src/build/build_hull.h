@@ -38,12 +38,12 @@ void build_resize_cache_free(build_resize_cache *cache);
  * hull's triangles when it has many faces), in the hull node's frame. A
  * hull without volume sets *empty to a warning. With emit clear, the
  * children are only checked. */
-sc_status build_hull(const build_ctx *c, const parse_node *n, int emit,
+sc_status build_hull(const build_ctx *c, const model_node *n, int emit,
                      build_resize_cache **cache, build_prims *out, const char **empty);
 
 /* minkowski() of convex children, or unions of convex parts: one convex
  * leaf per combination of parts, to be united. */
-sc_status build_minkowski(const build_ctx *c, const parse_node *n, int emit,
+sc_status build_minkowski(const build_ctx *c, const model_node *n, int emit,
                           build_resize_cache **cache, build_prims *out,
                           const char **empty);
 
@@ -51,7 +51,7 @@ sc_status build_minkowski(const build_ctx *c, const parse_node *n, int emit,
  * OpenSCAD 2021.01 applies to the children, from their bounding box in the
  * resize node's frame. *warning is set (and *out the identity) when a
  * non-zero size is asked of a flat child. */
-sc_status build_resize(const build_ctx *c, const parse_node *n,
+sc_status build_resize(const build_ctx *c, const model_node *n,
                        build_resize_cache **cache, affine *out, const char **warning);
 
 /* surface(file, center, invert) (its arguments read by the lowering

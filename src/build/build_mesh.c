@@ -58,10 +58,10 @@ static const char *edge_name(char *buf, size_t size, const vec3 *points,
 
 /* Closed and consistently oriented, else an error naming an edge. */
 static sc_status check_edges(const build_ctx *c, const sc_location *loc, const char *what,
-                             const vec3 *points, const uint32_t *indices,
+                             int numbered, const vec3 *points, const uint32_t *indices,
                              const uint32_t *face_start, uint32_t face_count)
 {
-    int by_coordinates = strcmp(what, "polyhedron") != 0;
+    int by_coordinates = !numbered;
     char name[256];
     uint32_t total = face_start[face_count];
     uint64_t *directed = malloc((size_t)(total ? total : 1) * sizeof *directed);
@@ -111,11 +111,12 @@ static sc_status check_edges(const build_ctx *c, const sc_location *loc, const c
 }
 
 sc_status build_mesh_prim(const build_ctx *c, const sc_location *loc, const char *what,
-                          const vec3 *points, uint32_t point_count,
+                          int numbered, const vec3 *points, uint32_t point_count,
                           const uint32_t *indices, const uint32_t *face_start,
                           uint32_t face_count, prim *out, const char **empty)
 {
-    sc_status st = check_edges(c, loc, what, points, indices, face_start, face_count);
+    sc_status st =
+        check_edges(c, loc, what, numbered, points, indices, face_start, face_count);
     if (st != SC_OK)
         return st;
     size_t tri_count = 0;
@@ -149,9 +150,8 @@ sc_status build_mesh_prim(const build_ctx *c, const sc_location *loc, const char
     double size = fmax(ext.x, fmax(ext.y, ext.z));
     if (!(fabs(volume) > 1e-12 * size * size * size)) {
         free(tris);
-        *empty = strcmp(what, "polyhedron") == 0
-                     ? "polyhedron without volume is empty"
-                     : "imported mesh without volume is empty";
+        *empty = numbered ? "polyhedron without volume is empty"
+                          : "imported mesh without volume is empty";
         return SC_OK;
     }
     if (volume < 0) {
@@ -474,8 +474,8 @@ sc_status build_import(const build_ctx *c, const model_import *import, prim *out
     else if (m.face_count == 0)
         *empty = "import without faces is empty";
     else
-        st = build_mesh_prim(c, &loc, "imported mesh", m.points, m.point_count, m.indices,
-                             m.face_start, m.face_count, out, empty);
+        st = build_mesh_prim(c, &loc, "imported mesh", 0, m.points, m.point_count,
+                             m.indices, m.face_start, m.face_count, out, empty);
     free(path);
     mesh_file_free(&m);
     return st;

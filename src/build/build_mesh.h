@@ -13,14 +13,17 @@
 #define BUILD_MAX_MESH_FILE (512u * 1024u * 1024u)
 
 /* A mesh leaf from face_count polygons (face f is indices[face_start[f] ..
- * face_start[f + 1]) into points). what names the node in messages. The
+ * face_start[f + 1]) into points). what names the node in messages;
+ * numbered says the points are a polyhedron's own, numbered in the file
+ * (an edge is named by its point numbers, else by its ends' coordinates,
+ * and a mesh without volume is "polyhedron without volume"). The
  * mesh must be closed (every edge in exactly two faces) and consistently
  * oriented (the two faces run along it in opposite directions); inward or
  * outward winding are both taken (the signed volume decides). Polygons are
  * split into fans of triangles. A mesh without volume sets *empty to a
  * warning and fills nothing. */
 sc_status build_mesh_prim(const build_ctx *c, const sc_location *loc, const char *what,
-                          const vec3 *points, uint32_t point_count,
+                          int numbered, const vec3 *points, uint32_t point_count,
                           const uint32_t *indices, const uint32_t *face_start,
                           uint32_t face_count, prim *out, const char **empty);
 
@@ -37,7 +40,7 @@ sc_status build_import(const build_ctx *c, const model_import *import, prim *out
 /* linear_extrude (build_extrude.c): exact in default mode without twist or
  * scale over the 2D nodes build_region.h reads, else OpenSCAD's mesh of it
  * (build_extrude_faithful.h). */
-sc_status build_linear_extrude(const build_ctx *c, const parse_node *n, int emit,
+sc_status build_linear_extrude(const build_ctx *c, const model_node *n, int emit,
                                prim *out, const char **empty);
 
 #endif

@@ -60,46 +60,32 @@ static int is_op(model_kind kind)
 }
 
 /* The first node below n (n included) the walk cannot read, or NULL. */
-static const parse_node *uncovered(const parse_node *n, int depth)
+static const model_node *uncovered(const model_node *n, int depth)
 {
     if (depth > BUILD_REGION_MAX_DEPTH ||
-        (n->modifiers & (PARSE_MOD_DISABLE | PARSE_MOD_BACKGROUND)))
+        (n->modifiers & (MODEL_MOD_DISABLE | MODEL_MOD_BACKGROUND)))
         return NULL; /* the walk reports the depth; '%' and '*' are not built */
-    model_kind kind = model_kind_of(n->name);
+    model_kind kind = n->kind;
     if (is_leaf(kind))
         return NULL;
     if (!is_op(kind))
         return n;
-    for (const parse_node *k = n->first_child; k; k = k->next) {
-        const parse_node *miss = uncovered(k, depth + 1);
+    for (const model_node *k = n->first_child; k; k = k->next) {
+        const model_node *miss = uncovered(k, depth + 1);
         if (miss)
             return miss;
     }
     return NULL;
 }
 
-int build_region_covers(const parse_node *n, const parse_node **miss)
+int build_region_covers(const model_node *n, const model_node **miss)
 {
     *miss = NULL;
-    for (const parse_node *k = n->first_child; k && !*miss; k = k->next)
+    for (const model_node *k = n->first_child; k && !*miss; k = k->next)
         *miss = uncovered(k, 1);
     if (*miss)
         return 0;
-    const parse_value *twist = model_arg(n, "twist", -1);
-    if (twist && !(twist->kind == PARSE_NUMBER && twist->u.number == 0))
-        return 0;
-    const parse_value *sv = model_arg(n, "scale", -1);
-    if (sv) {
-        int one = (sv->kind == PARSE_NUMBER && sv->u.number == 1) ||
-                  (sv->kind == PARSE_VECTOR && sv->u.vector.count == 2 &&
-                   sv->u.vector.items[0].kind == PARSE_NUMBER &&
-                   sv->u.vector.items[0].u.number == 1 &&
-                   sv->u.vector.items[1].kind == PARSE_NUMBER &&
-                   sv->u.vector.items[1].u.number == 1);
-        if (!one)
-            return 0;
-    }
-    return 1;
+    return n->u.linear_extrude->plain;
 }
 
 /* Room for count points in w->xy; returns 0 when memory ran out. */
@@ -137,15 +123,13 @@ static void put_point(walker *w, uint32_t i, const affine2 *m, double x, double 
 }
 
 /* square(size = s | [x, y], center = false) */
-static sc_status read_square(walker *w, const parse_node *n, const affine2 *m,
+static sc_status read_square(walker *w, const model_node *n, const affine2 *m,
                              int *pushed)
 {
-    const build_ctx *c = w->c;
-    double sx, sy;
-    int center;
-    sc_status st = model_square(BUILD_READER(c), n, &sx, &sy, &center);
-    if (st != SC_OK)
-        return st;
+    if (n->pending)
+        return build_pending(w->c, n);
+    double sx = n->u.square->sx, sy = n->u.square->sy;
+    int center = n->u.square->center;
     if (!(sx > 0 && sy > 0 && isfinite(sx) && isfinite(sy)))
         return SC_OK; /* no area */
     double x0 = center ? -sx / 2 : 0, y0 = center ? -sy / 2 : 0;
@@ -163,14 +147,14 @@ static sc_status read_square(walker *w, const parse_node *n, const affine2 *m,
 }
 
 /* circle(r = 1 | d) */
-static sc_status read_circle(walker *w, const parse_node *n, const affine2 *m,
+static sc_status read_circle(walker *w, const model_node *n, const affine2 *m,
                              int *pushed)
 {
-    model_circle args; /* $fn, $fa, $fs checked, not used: the circle is exact */
-    sc_status st = model_read_circle(BUILD_READER(w->c), n, &args);
-    if (st != SC_OK)
-        return st;
-    double r = isnan(args.d) ? args.r : args.d / 2;
+    if (n->pending)
+        return build_pending(w->c, n);
+    /* $fn, $fa, $fs checked, not used: the circle is exact */
+    const model_circle *args = n->u.circle;
+    double r = isnan(args->d) ? args->r : args->d / 2;
     if (!(r > 0 && isfinite(r)))
         return SC_OK;
     return prim_region_add_ellipse(&w->region, m->m, r, pushed)
@@ -179,45 +163,35 @@ static sc_status read_circle(walker *w, const parse_node *n, const affine2 *m,
 }
 
 /* polygon(points = [[x, y], ...], paths = [[i, j, ...], ...] | undef) */
-static sc_status read_polygon(walker *w, const parse_node *n, const affine2 *m,
+static sc_status read_polygon(walker *w, const model_node *n, const affine2 *m,
                               int *pushed)
 {
     const build_ctx *c = w->c;
-    const parse_value *pts, *paths;
-    sc_status pst = model_polygon(BUILD_READER(c), n, &pts, &paths);
-    if (pst != SC_OK || !pts)
-        return pst;
-    uint32_t np = pts->u.vector.count;
-    if (paths && paths->u.vector.count == 0)
-        paths = NULL; /* OpenSCAD: one path through all the points */
-    uint32_t count = paths ? paths->u.vector.count : 1;
-    uint64_t total = 0;
-    for (uint32_t k = 0; k < count; k++) {
-        const parse_value *path = paths ? &paths->u.vector.items[k] : NULL;
-        if (path && path->kind != PARSE_VECTOR)
-            return model_wrong_type(BUILD_READER(c), n, "paths", path,
-                                    MODEL_POLYGON_PATHS);
-        total += path ? path->u.vector.count : np;
-    }
+    if (n->pending)
+        return build_pending(c, n);
+    const model_polygon *p = n->u.polygon;
+    if (!p->has_points)
+        return SC_OK;
+    uint32_t np = p->point_count;
+    /* OpenSCAD: an empty vector of paths is one path through all the points */
+    int paths = p->has_paths && p->path_count > 0;
+    uint32_t count = paths ? p->path_count : 1;
+    uint64_t total = paths ? p->path_start[count] : np;
     if (!reserve_points(w, total) || !reserve_paths(w, count))
         return err_nomem(w->c->error, &n->loc);
     uint32_t at = 0;
     for (uint32_t k = 0; k < count; k++) {
-        const parse_value *path = paths ? &paths->u.vector.items[k] : NULL;
-        uint32_t len = path ? path->u.vector.count : np;
+        uint32_t first = paths ? p->path_start[k] : 0;
+        uint32_t len = paths ? p->path_start[k + 1] - first : np;
         w->start[k] = at;
         for (uint32_t i = 0; i < len; i++) {
-            uint32_t index = i;
-            if (path) {
-                sc_status ist = model_polygon_index(
-                    BUILD_READER(c), &path->u.vector.items[i], k, np, &index);
-                if (ist != SC_OK)
-                    return ist;
-            }
-            const parse_value *v = &pts->u.vector.items[index];
-            put_point(w, at++, m, v->u.vector.items[0].u.number,
-                      v->u.vector.items[1].u.number);
+            uint32_t index = paths ? p->index[first + i] : i;
+            put_point(w, at++, m, p->xy[2 * index], p->xy[2 * index + 1]);
         }
+    }
+    if (p->bad_index) {
+        *c->error = *p->bad_index;
+        return p->bad_index->status;
     }
     w->start[count] = at;
     if (!prim_region_add_polygon(&w->region, w->xy, w->start, count, pushed))
@@ -229,19 +203,19 @@ static sc_status read_polygon(walker *w, const parse_node *n, const affine2 *m,
     return SC_OK;
 }
 
-static sc_status walk(walker *w, const parse_node *n, const affine2 *m, int depth,
+static sc_status walk(walker *w, const model_node *n, const affine2 *m, int depth,
                       int *pushed);
 
 /* The children of n combined by op; *pushed says whether a region was
  * pushed (an empty result pushes nothing and leaves no trace). */
-static sc_status walk_children(walker *w, const parse_node *n, const affine2 *m,
+static sc_status walk_children(walker *w, const model_node *n, const affine2 *m,
                                prim_region_op op, int depth, int *pushed)
 {
     prim_region *r = &w->region;
     uint32_t nodes = r->node_count, edges = r->edge_count, ellipses = r->ellipse_count;
     int operands = 0, seen = 0, empty = 0;
-    for (const parse_node *k = n->first_child; k; k = k->next) {
-        if (k->modifiers & (PARSE_MOD_DISABLE | PARSE_MOD_BACKGROUND))
+    for (const model_node *k = n->first_child; k; k = k->next) {
+        if (k->modifiers & (MODEL_MOD_DISABLE | MODEL_MOD_BACKGROUND))
             continue;
         int p = 0;
         sc_status st = walk(w, k, m, depth + 1, &p);
@@ -264,7 +238,7 @@ static sc_status walk_children(walker *w, const parse_node *n, const affine2 *m,
     return SC_OK;
 }
 
-static sc_status walk(walker *w, const parse_node *n, const affine2 *m, int depth,
+static sc_status walk(walker *w, const model_node *n, const affine2 *m, int depth,
                       int *pushed)
 {
     *pushed = 0;
@@ -272,9 +246,9 @@ static sc_status walk(walker *w, const parse_node *n, const affine2 *m, int dept
         return err_set(w->c->error, SC_ERR_LIMIT, &n->loc,
                        "too many nested nodes in linear_extrude (limit is %d)",
                        BUILD_REGION_MAX_DEPTH);
-    if (n->modifiers & (PARSE_MOD_DISABLE | PARSE_MOD_BACKGROUND))
+    if (n->modifiers & (MODEL_MOD_DISABLE | MODEL_MOD_BACKGROUND))
         return SC_OK;
-    model_kind kind = model_kind_of(n->name);
+    model_kind kind = n->kind;
     if (kind == MODEL_SQUARE)
         return read_square(w, n, m, pushed);
     if (kind == MODEL_CIRCLE)
@@ -282,14 +256,14 @@ static sc_status walk(walker *w, const parse_node *n, const affine2 *m, int dept
     if (kind == MODEL_POLYGON)
         return read_polygon(w, n, m, pushed);
     if (kind == MODEL_XFORM) {
+        if (n->pending)
+            return build_pending(w->c, n);
         affine2 inner;
-        sc_status st = build_matrix_xy(w->c, n, m->m, inner.m);
-        if (st != SC_OK)
-            return st;
+        build_matrix_xy(n->u.xform, m->m, inner.m);
         prim_region *r = &w->region;
         uint32_t nodes = r->node_count, edges = r->edge_count,
                  ellipses = r->ellipse_count;
-        st = walk_children(w, n, &inner, PRIM_REGION_UNION, depth, pushed);
+        sc_status st = walk_children(w, n, &inner, PRIM_REGION_UNION, depth, pushed);
         double det = inner.m[0][0] * inner.m[1][1] - inner.m[0][1] * inner.m[1][0];
         if (st == SC_OK && *pushed && !(det != 0)) {
             /* flattened onto a line or a point: no area (the children were
@@ -311,23 +285,22 @@ static sc_status walk(walker *w, const parse_node *n, const affine2 *m, int dept
                    "'%s' inside linear_extrude is not supported yet", n->name);
 }
 
-sc_status build_region_extrude(const build_ctx *c, const parse_node *n, int emit,
+sc_status build_region_extrude(const build_ctx *c, const model_node *n, int emit,
                                prim *out, const char **empty)
 {
-    double height = 100;
-    sc_status st = model_number(BUILD_READER(c), n, "height", 0, &height);
-    if (st != SC_OK)
-        return st;
-    const parse_value *cv = model_arg(n, "center", 1);
-    if (cv && cv->kind != PARSE_BOOL)
-        return model_wrong_type(BUILD_READER(c), n, "center", cv, "true or false");
-    int center = cv ? cv->u.boolean : 0;
+    const model_linear_extrude *args = n->u.linear_extrude;
+    if (args->exact_error) {
+        *c->error = *args->exact_error;
+        return args->exact_error->status;
+    }
+    double height = args->height;
+    int center = args->center;
     walker w;
     memset(&w, 0, sizeof w);
     w.c = c;
     affine2 id = affine2_identity();
     int pushed = 0;
-    st = walk_children(&w, n, &id, PRIM_REGION_UNION, 0, &pushed);
+    sc_status st = walk_children(&w, n, &id, PRIM_REGION_UNION, 0, &pushed);
     if (st == SC_OK && emit) {
         double z0 = center ? -height / 2 : 0, z1 = z0 + height;
         if (!(height > 0 && isfinite(height)) || !pushed || !(z0 < z1)) {

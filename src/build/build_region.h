@@ -17,13 +17,13 @@
  * absent or 0, scale absent, 1 or [1, 1]. Otherwise 0, with *miss the
  * first node (in file order) the exact path cannot read, or NULL when
  * twist or scale is the reason. Arguments are not checked here. */
-int build_region_covers(const parse_node *n, const parse_node **miss);
+int build_region_covers(const model_node *n, const model_node **miss);
 
 /* Builds the exact extrusion of n: height (default 100) and center are
  * read and checked, and the 2D subtree is walked with exact positions for
  * bad arguments. A zero height or an empty region sets *empty to a warning
  * instead; with emit unset only the checks run. */
-sc_status build_region_extrude(const build_ctx *c, const parse_node *n, int emit,
+sc_status build_region_extrude(const build_ctx *c, const model_node *n, int emit,
                                prim *out, const char **empty);
 
 #endif

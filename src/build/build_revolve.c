@@ -188,14 +188,13 @@ static void mark_holes(profile *p, uint32_t first)
     }
 }
 
-static sc_status read_square(const build_ctx *c, const parse_node *n, const affine2 *m,
+static sc_status read_square(const build_ctx *c, const model_node *n, const affine2 *m,
                              profile *p)
 {
-    double sx, sy;
-    int center;
-    sc_status st = model_square(BUILD_READER(c), n, &sx, &sy, &center);
-    if (st != SC_OK)
-        return st;
+    if (n->pending)
+        return build_pending(c, n);
+    double sx = n->u.square->sx, sy = n->u.square->sy;
+    int center = n->u.square->center;
     if (!(sx > 0 && sy > 0 && isfinite(sx) && isfinite(sy)))
         return SC_OK; /* no area */
     double x0 = center ? -sx / 2 : 0, y0 = center ? -sy / 2 : 0;
@@ -216,15 +215,14 @@ static int similarity(const affine2 *m)
            (fabs(a + d) <= tol && fabs(b - cc) <= tol);
 }
 
-static sc_status read_circle(const build_ctx *c, const parse_node *n, const affine2 *m,
+static sc_status read_circle(const build_ctx *c, const model_node *n, const affine2 *m,
                              profile *p)
 {
-    model_circle args;
-    sc_status st = model_read_circle(BUILD_READER(c), n, &args);
-    if (st != SC_OK)
-        return st;
-    double r = isnan(args.d) ? args.r : args.d / 2, fn = args.res.fn, fa = args.res.fa,
-           fs = args.res.fs;
+    if (n->pending)
+        return build_pending(c, n);
+    const model_circle *args = n->u.circle;
+    double r = isnan(args->d) ? args->r : args->d / 2, fn = args->res.fn,
+           fa = args->res.fa, fs = args->res.fs;
     if (!(r > 0 && isfinite(r)))
         return SC_OK;
     long f = faithful_fragments(r, fn, fs, fa);
@@ -249,38 +247,33 @@ static sc_status read_circle(const build_ctx *c, const parse_node *n, const affi
     return SC_OK;
 }
 
-static sc_status read_polygon(const build_ctx *c, const parse_node *n, const affine2 *m,
+static sc_status read_polygon(const build_ctx *c, const model_node *n, const affine2 *m,
                               profile *p)
 {
-    const parse_value *pts, *paths;
-    sc_status pst = model_polygon(BUILD_READER(c), n, &pts, &paths);
-    if (pst != SC_OK || !pts)
-        return pst;
-    uint32_t np = pts->u.vector.count;
+    if (n->pending)
+        return build_pending(c, n);
+    const model_polygon *poly = n->u.polygon;
+    if (!poly->has_points)
+        return SC_OK;
+    uint32_t np = poly->point_count;
     begin_region(p);
     uint32_t first = p->paths;
-    uint32_t count = paths ? paths->u.vector.count : 1;
+    /* an empty vector of paths is no path here */
+    uint32_t count = poly->has_paths ? poly->path_count : 1;
     for (uint32_t k = 0; k < count; k++) {
-        const parse_value *path = paths ? &paths->u.vector.items[k] : NULL;
-        if (path && path->kind != PARSE_VECTOR)
-            return model_wrong_type(BUILD_READER(c), n, "paths", path,
-                                    MODEL_POLYGON_PATHS);
-        uint32_t len = path ? path->u.vector.count : np;
+        uint32_t from = poly->has_paths ? poly->path_start[k] : 0;
+        uint32_t len = poly->has_paths ? poly->path_start[k + 1] - from : np;
         if (!begin_path(p))
             return err_nomem(c->error, &n->loc);
         for (uint32_t i = 0; i < len; i++) {
-            uint32_t index = i;
-            if (path) {
-                sc_status ist = model_polygon_index(
-                    BUILD_READER(c), &path->u.vector.items[i], k, np, &index);
-                if (ist != SC_OK)
-                    return ist;
-            }
-            const parse_value *v = &pts->u.vector.items[index];
-            if (!add_point(p, m, v->u.vector.items[0].u.number,
-                           v->u.vector.items[1].u.number))
+            uint32_t index = poly->has_paths ? poly->index[from + i] : i;
+            if (!add_point(p, m, poly->xy[2 * index], poly->xy[2 * index + 1]))
                 return err_nomem(c->error, &n->loc);
         }
+    }
+    if (poly->bad_index) {
+        *c->error = *poly->bad_index;
+        return poly->bad_index->status;
     }
     mark_holes(p, first);
     return SC_OK;
@@ -288,7 +281,7 @@ static sc_status read_polygon(const build_ctx *c, const parse_node *n, const aff
 
 /* Adds the contours of a region the 2D engine (src/twod/) computed as one
  * region of the profile, holes found by nesting as for a polygon's paths. */
-static sc_status add_twod(const build_ctx *c, const parse_node *n, const twod_region *r,
+static sc_status add_twod(const build_ctx *c, const model_node *n, const twod_region *r,
                           const affine2 *m, profile *p)
 {
     if (r->contour_count == 0)
@@ -309,7 +302,7 @@ static sc_status add_twod(const build_ctx *c, const parse_node *n, const twod_re
 
 /* The 2D nodes without a reader here (difference, intersection, offset,
  * hull, minkowski): the 2D engine evaluates the node as OpenSCAD does. */
-static sc_status gather_other(const build_ctx *c, const parse_node *n, const affine2 *m,
+static sc_status gather_other(const build_ctx *c, const model_node *n, const affine2 *m,
                               profile *p)
 {
     twod_region r;
@@ -321,16 +314,16 @@ static sc_status gather_other(const build_ctx *c, const parse_node *n, const aff
     return st;
 }
 
-static sc_status gather(const build_ctx *c, const parse_node *n, const affine2 *m,
+static sc_status gather(const build_ctx *c, const model_node *n, const affine2 *m,
                         profile *p, int depth)
 {
     if (depth > BUILD_REVOLVE_MAX_DEPTH)
         return err_set(c->error, SC_ERR_LIMIT, &n->loc,
                        "too many nested nodes in rotate_extrude (limit is %d)",
                        BUILD_REVOLVE_MAX_DEPTH);
-    if (n->modifiers & (PARSE_MOD_DISABLE | PARSE_MOD_BACKGROUND))
+    if (n->modifiers & (MODEL_MOD_DISABLE | MODEL_MOD_BACKGROUND))
         return SC_OK;
-    model_kind kind = model_kind_of(n->name);
+    model_kind kind = n->kind;
     if (kind == MODEL_SQUARE)
         return read_square(c, n, m, p);
     if (kind == MODEL_CIRCLE)
@@ -339,13 +332,13 @@ static sc_status gather(const build_ctx *c, const parse_node *n, const affine2 *
         return read_polygon(c, n, m, p);
     affine2 inner = *m;
     if (kind == MODEL_XFORM) {
-        sc_status st = build_matrix_xy(c, n, m->m, inner.m);
-        if (st != SC_OK)
-            return st;
+        if (n->pending)
+            return build_pending(c, n);
+        build_matrix_xy(n->u.xform, m->m, inner.m);
     } else if (kind != MODEL_UNION && kind != MODEL_COLOR) {
         return gather_other(c, n, m, p);
     }
-    for (const parse_node *k = n->first_child; k; k = k->next) {
+    for (const model_node *k = n->first_child; k; k = k->next) {
         sc_status st = gather(c, k, &inner, p, depth + 1);
         if (st != SC_OK)
             return st;
@@ -368,7 +361,7 @@ static uint32_t oriented(const profile *p, uint32_t k, int reverse, uint32_t i)
 }
 
 /* OpenSCAD's mesh (see the top) through build_mesh_prim. */
-static sc_status build_faithful(const build_ctx *c, const parse_node *n, const profile *p,
+static sc_status build_faithful(const build_ctx *c, const model_node *n, const profile *p,
                                 double angle, long fragments, prim *out,
                                 const char **empty)
 {
@@ -435,7 +428,7 @@ static sc_status build_faithful(const build_ctx *c, const parse_node *n, const p
         }
     }
     fs[nf] = ni;
-    st = build_mesh_prim(c, &n->loc, "rotate_extrude", pts, (uint32_t)np, idx, fs, nf,
+    st = build_mesh_prim(c, &n->loc, "rotate_extrude", 0, pts, (uint32_t)np, idx, fs, nf,
                          out, empty);
 done:
     free(pts);
@@ -445,7 +438,7 @@ done:
 }
 
 /* The exact leaf (prim_revolve.c). sign is -1 for a profile at x <= 0. */
-static sc_status build_exact(const build_ctx *c, const parse_node *n, const profile *p,
+static sc_status build_exact(const build_ctx *c, const model_node *n, const profile *p,
                              double angle, double sign, prim *out)
 {
     /* which paths a disc replaces, and the size of the result */
@@ -561,23 +554,16 @@ done:
     return st;
 }
 
-sc_status build_rotate_extrude(const build_ctx *c, const parse_node *n, int emit,
+sc_status build_rotate_extrude(const build_ctx *c, const model_node *n, int emit,
                                prim *out, const char **empty)
 {
-    double angle = 360, fn = 0, fa = 12, fs = 2;
-    sc_status st;
-    if ((st = model_number(BUILD_READER(c), n, "angle", -1, &angle)) != SC_OK ||
-        (st = model_read_resolution(BUILD_READER(c), n, &fn, &fa, &fs)) != SC_OK)
-        return st;
-    const parse_value *cv = model_arg(n, "convexity", -1);
-    if (cv && cv->kind != PARSE_NUMBER)
-        return model_wrong_type(BUILD_READER(c), n, "convexity", cv, "a number");
+    if (n->pending)
+        return build_pending(c, n);
+    const model_rotate_extrude *args = n->u.rotate_extrude;
+    double angle = args->angle, fn = args->res.fn, fa = args->res.fa, fs = args->res.fs;
     if (!isfinite(angle) || angle <= -360 || angle > 360)
         angle = 360;
-    if (model_arg(n, "file", -1))
-        return err_set(c->error, SC_ERR_UNSUPPORTED, &n->loc,
-                       "rotate_extrude of a file is not supported yet (use a child "
-                       "import())");
+    sc_status st = SC_OK;
     profile p;
     memset(&p, 0, sizeof p);
     affine2 id = affine2_identity();
@@ -591,7 +577,7 @@ sc_status build_rotate_extrude(const build_ctx *c, const parse_node *n, int emit
             st = add_twod(c, n, &r, &id, &p);
         twod_free(&r);
     } else {
-        for (const parse_node *k = n->first_child; k && st == SC_OK; k = k->next)
+        for (const model_node *k = n->first_child; k && st == SC_OK; k = k->next)
             st = gather(c, k, &id, &p, 1);
     }
     /* OpenSCAD's check, in its order, with its running range. */

@@ -14,7 +14,7 @@
  * 2021.01's mesh of it (PRIM_MESH). Other 2D nodes are SC_ERR_UNSUPPORTED
  * at their position; a profile on both sides of the axis is OpenSCAD's
  * error. A profile without area, or angle = 0, sets *empty to a warning. */
-sc_status build_rotate_extrude(const build_ctx *c, const parse_node *n, int emit,
+sc_status build_rotate_extrude(const build_ctx *c, const model_node *n, int emit,
                                prim *out, const char **empty);
 
 #endif

@@ -315,7 +315,7 @@ static sc_status surface_mesh(const build_ctx *c, const sc_location *loc, const 
 #undef FACE_BEGIN
 #undef PUT
     sc_status st =
-        build_mesh_prim(c, loc, "surface", pts, np, idx, start, nf, out, empty);
+        build_mesh_prim(c, loc, "surface", 0, pts, np, idx, start, nf, out, empty);
     free(pts);
     free(idx);
     free(start);

@@ -93,72 +93,7 @@ const char *__lsan_default_suppressions(void)
 
 /* ---- arguments ---- */
 
-typedef struct text_args {
-    const char *text;
-    size_t length;
-    double size, spacing, fn, fa, fs;
-    const char *font, *direction, *language, *script, *halign, *valign;
-} text_args;
-
-static sc_status get_string(const build_ctx *c, const parse_node *n, const char *name,
-                            int position, const char **out)
-{
-    const parse_value *v = model_arg(n, name, position);
-    if (!v)
-        return SC_OK;
-    if (v->kind != PARSE_STRING)
-        return model_wrong_type(BUILD_READER(c), n, name, v, "a string");
-    *out = v->u.string.chars;
-    return SC_OK;
-}
-
-static sc_status read_args(const build_ctx *c, const parse_node *n, text_args *a)
-{
-    memset(a, 0, sizeof *a);
-    a->text = "";
-    a->size = 10;
-    a->spacing = 1;
-    a->fn = 0;
-    a->fa = 12;
-    a->fs = 2;
-    a->font = a->direction = a->script = "";
-    a->language = "en";
-    a->halign = "left";
-    a->valign = "baseline";
-    sc_status st;
-    if ((st = get_string(c, n, "text", 0, &a->text)) != SC_OK ||
-        (st = model_number(BUILD_READER(c), n, "size", 1, &a->size)) != SC_OK ||
-        (st = get_string(c, n, "font", 2, &a->font)) != SC_OK ||
-        (st = get_string(c, n, "direction", -1, &a->direction)) != SC_OK ||
-        (st = get_string(c, n, "language", -1, &a->language)) != SC_OK ||
-        (st = get_string(c, n, "script", -1, &a->script)) != SC_OK ||
-        (st = get_string(c, n, "halign", -1, &a->halign)) != SC_OK ||
-        (st = get_string(c, n, "valign", -1, &a->valign)) != SC_OK ||
-        (st = model_number(BUILD_READER(c), n, "spacing", -1, &a->spacing)) != SC_OK ||
-        (st = model_read_resolution(BUILD_READER(c), n, &a->fn, &a->fa, &a->fs)) != SC_OK)
-        return st;
-    const parse_value *tv = model_arg(n, "text", 0);
-    a->length = tv ? tv->u.string.length : 0;
-    if (a->length > TEXT_MAX_BYTES) {
-        sc_location loc = model_loc(BUILD_READER(c), tv);
-        return err_set(c->error, SC_ERR_LIMIT, &loc,
-                       "text is too long (%zu bytes; limit is %d)", a->length,
-                       TEXT_MAX_BYTES);
-    }
-    if (memchr(a->text, 0, a->length)) {
-        sc_location loc = model_loc(BUILD_READER(c), tv);
-        return err_set(c->error, SC_ERR_SEMANTIC, &loc, "text must not contain a NUL");
-    }
-    if (!isfinite(a->size))
-        return err_set(c->error, SC_ERR_SEMANTIC, &n->loc,
-                       "text: size must be a finite number (got %g)", a->size);
-    if (!isfinite(a->spacing))
-        return err_set(c->error, SC_ERR_SEMANTIC, &n->loc,
-                       "text: spacing must be a finite number (got %g)", a->spacing);
-    return SC_OK;
-}
-
-static void set_note(sc_error *note, const parse_node *n, const char *file,
+static void set_note(sc_error *note, const model_node *n, const char *file,
                      const char *message, const char *x, const char *y)
 {
     if (!note || note->message[0])
@@ -171,7 +106,7 @@ static void set_note(sc_error *note, const parse_node *n, const char *file,
 
 /* Opens the face fontconfig matches for name (OpenSCAD's find_face); on a
  * family fontconfig does not have, leaves a warning in note. */
-static sc_status open_face(const build_ctx *c, const parse_node *n, FT_Library lib,
+static sc_status open_face(const build_ctx *c, const model_node *n, FT_Library lib,
                            const char *font, FT_Face *face, sc_error *note)
 {
     const char *start = font;
@@ -346,7 +281,7 @@ static int is_ignored_script(hb_script_t s)
 }
 
 /* OpenSCAD's detect_properties: the script and direction to shape with. */
-static void detect(const text_args *a, hb_script_t *script, hb_direction_t *direction)
+static void detect(const model_text *a, hb_script_t *script, hb_direction_t *direction)
 {
     *script = hb_script_from_string(a->script, -1);
     if (*script == HB_SCRIPT_INVALID) {
@@ -390,7 +325,7 @@ typedef struct glyph_rec {
     double x_offset, y_offset, x_advance, y_advance; /* in 1.024e5 units */
 } glyph_rec;
 
-static sc_status shape_text(const build_ctx *c, const parse_node *n, const text_args *a,
+static sc_status shape_text(const build_ctx *c, const model_node *n, const model_text *a,
                             FT_Face face, text_shape *out, sc_error *note)
 {
     if (FT_Set_Char_Size(face, 0, (FT_F26Dot6)ft_scale, 100, 100) != 0)
@@ -517,14 +452,14 @@ void text_shape_free(text_shape *s)
     memset(s, 0, sizeof *s);
 }
 
-static sc_status build_shape(const build_ctx *c, const parse_node *n, text_shape *out,
-                             sc_error *note, text_args *a)
+static sc_status build_shape(const build_ctx *c, const model_node *n, text_shape *out,
+                             sc_error *note)
 {
     memset(out, 0, sizeof *out);
-    sc_status st = read_args(c, n, a);
-    if (st != SC_OK)
-        return st;
-    long fragments = faithful_fragments(a->size, a->fn, a->fs, a->fa);
+    if (n->pending)
+        return build_pending(c, n);
+    const model_text *a = n->u.text;
+    long fragments = faithful_fragments(a->size, a->res.fn, a->res.fs, a->res.fa);
     out->curve_points = fragments < 0 ? 0 : (uint32_t)fmax(floor(fragments / 8.0) + 1, 2);
     out->size = a->size;
     if (a->length == 0)
@@ -533,7 +468,7 @@ static sc_status build_shape(const build_ctx *c, const parse_node *n, text_shape
     if (FT_Init_FreeType(&lib) != 0)
         return err_set(c->error, SC_ERR_NOMEM, &n->loc, "text: cannot start FreeType");
     FT_Face face = NULL;
-    st = open_face(c, n, lib, a->font, &face, note);
+    sc_status st = open_face(c, n, lib, a->font, &face, note);
     if (st == SC_OK)
         st = shape_text(c, n, a, face, out, note);
     if (face)
@@ -544,11 +479,10 @@ static sc_status build_shape(const build_ctx *c, const parse_node *n, text_shape
     return st;
 }
 
-sc_status text_shape_build(const build_ctx *c, const parse_node *n, text_shape *out,
+sc_status text_shape_build(const build_ctx *c, const model_node *n, text_shape *out,
                            sc_error *note)
 {
-    text_args a;
-    return build_shape(c, n, out, note, &a);
+    return build_shape(c, n, out, note);
 }
 
 /* ---- OpenSCAD's polygons ---- */
@@ -631,7 +565,7 @@ static double place(double v, double offset, double advance, double size)
     return trunc(x * 65536.0) / 65536.0;
 }
 
-static sc_status flatten(const build_ctx *c, const parse_node *n, const text_shape *s,
+static sc_status flatten(const build_ctx *c, const model_node *n, const text_shape *s,
                          text_polygons *out)
 {
     uint32_t fn = s->curve_points;
@@ -684,13 +618,12 @@ static sc_status flatten(const build_ctx *c, const parse_node *n, const text_sha
     return SC_OK;
 }
 
-static sc_status faithful_polygons(const build_ctx *c, const parse_node *n,
+static sc_status faithful_polygons(const build_ctx *c, const model_node *n,
                                    text_polygons *out, sc_error *note)
 {
     memset(out, 0, sizeof *out);
     text_shape s;
-    text_args a;
-    sc_status st = build_shape(c, n, &s, note, &a);
+    sc_status st = build_shape(c, n, &s, note);
     if (st != SC_OK)
         return st;
     if (s.curve_points == 0) {
@@ -698,7 +631,7 @@ static sc_status faithful_polygons(const build_ctx *c, const parse_node *n,
         return err_set(c->error, SC_ERR_LIMIT, &n->loc,
                        "faithful mode: $fn, $fa and $fs of text size %g give too many "
                        "fragments (limit is %d)",
-                       a.size, FAITHFUL_MAX_FRAGMENTS);
+                       n->u.text->size, FAITHFUL_MAX_FRAGMENTS);
     }
     if (!poly_begin(out))
         st = err_nomem(c->error, &n->loc);
@@ -710,7 +643,7 @@ static sc_status faithful_polygons(const build_ctx *c, const parse_node *n,
     return st;
 }
 
-sc_status text_faithful_polygons(const build_ctx *c, const parse_node *n,
+sc_status text_faithful_polygons(const build_ctx *c, const model_node *n,
                                  text_polygons *out, sc_error *note)
 {
     return faithful_polygons(c, n, out, note);
@@ -726,37 +659,37 @@ static int is_container(model_kind kind)
 
 /* Below n, under the containers: whether some 2D shape is text (all = 0;
  * '%' subtrees count) or every one is (all = 1; '%' subtrees do not). */
-static int text_below(const parse_node *n, int depth, int all)
+static int text_below(const model_node *n, int depth, int all)
 {
     if (depth > TEXT_MAX_DEPTH)
         return 0;
-    unsigned skipped = all ? PARSE_MOD_DISABLE | PARSE_MOD_BACKGROUND : PARSE_MOD_DISABLE;
+    unsigned skipped = all ? MODEL_MOD_DISABLE | MODEL_MOD_BACKGROUND : MODEL_MOD_DISABLE;
     if (n->modifiers & skipped)
         return all;
-    model_kind kind = model_kind_of(n->name);
+    model_kind kind = n->kind;
     if (kind == MODEL_TEXT)
         return 1;
     if (!is_container(kind))
         return 0;
-    for (const parse_node *k = n->first_child; k; k = k->next)
+    for (const model_node *k = n->first_child; k; k = k->next)
         if (text_below(k, depth + 1, all) != all)
             return !all;
     return all;
 }
 
-int build_text_only(const parse_node *n)
+int build_text_only(const model_node *n)
 {
     if (!build_text_wanted(n))
         return 0;
-    for (const parse_node *k = n->first_child; k; k = k->next)
+    for (const model_node *k = n->first_child; k; k = k->next)
         if (!text_below(k, 1, 1))
             return 0;
     return 1;
 }
 
-int build_text_wanted(const parse_node *n)
+int build_text_wanted(const model_node *n)
 {
-    for (const parse_node *k = n->first_child; k; k = k->next)
+    for (const model_node *k = n->first_child; k; k = k->next)
         if (text_below(k, 1, 0))
             return 1;
     return 0;
@@ -768,7 +701,7 @@ typedef struct gathered {
     text_polygons poly; /* faithful mode */
 } gathered;
 
-static sc_status gather_text(const build_ctx *c, const parse_node *n, const affine2 *m,
+static sc_status gather_text(const build_ctx *c, const model_node *n, const affine2 *m,
                              gathered *g)
 {
     sc_status st;
@@ -821,17 +754,17 @@ static sc_status gather_text(const build_ctx *c, const parse_node *n, const affi
     return st;
 }
 
-static sc_status gather(const build_ctx *c, const parse_node *n, const affine2 *m,
+static sc_status gather(const build_ctx *c, const model_node *n, const affine2 *m,
                         gathered *g, int depth)
 {
     if (depth > TEXT_MAX_DEPTH)
         return err_set(c->error, SC_ERR_LIMIT, &n->loc,
                        "too many nested nodes in linear_extrude (limit is %d)",
                        TEXT_MAX_DEPTH);
-    if (n->modifiers & (PARSE_MOD_DISABLE | PARSE_MOD_BACKGROUND))
+    if (n->modifiers & (MODEL_MOD_DISABLE | MODEL_MOD_BACKGROUND))
         return SC_OK;
     const char *name = n->name;
-    model_kind kind = model_kind_of(name);
+    model_kind kind = n->kind;
     if (kind == MODEL_TEXT)
         return gather_text(c, n, m, g);
     if (kind == MODEL_SQUARE || kind == MODEL_CIRCLE || kind == MODEL_POLYGON)
@@ -843,11 +776,11 @@ static sc_status gather(const build_ctx *c, const parse_node *n, const affine2 *
                        "'%s' inside linear_extrude is not supported yet", name);
     affine2 inner = *m;
     if (kind == MODEL_XFORM) {
-        sc_status st = build_matrix_xy(c, n, m->m, inner.m);
-        if (st != SC_OK)
-            return st;
+        if (n->pending)
+            return build_pending(c, n);
+        build_matrix_xy(n->u.xform, m->m, inner.m);
     }
-    for (const parse_node *k = n->first_child; k; k = k->next) {
+    for (const model_node *k = n->first_child; k; k = k->next) {
         sc_status st = gather(c, k, &inner, g, depth + 1);
         if (st != SC_OK)
             return st;
@@ -855,14 +788,14 @@ static sc_status gather(const build_ctx *c, const parse_node *n, const affine2 *
     return SC_OK;
 }
 
-sc_status build_text_extrude(const build_ctx *c, const parse_node *n, double height,
+sc_status build_text_extrude(const build_ctx *c, const model_node *n, double height,
                              int center, int emit, prim *out, const char **empty)
 {
     gathered g;
     memset(&g, 0, sizeof g);
     sc_status st = SC_OK;
     affine2 id = affine2_identity();
-    for (const parse_node *k = n->first_child; k && st == SC_OK; k = k->next)
+    for (const model_node *k = n->first_child; k && st == SC_OK; k = k->next)
         st = gather(c, k, &id, &g, 1);
     if (st == SC_OK && emit) {
         double z0 = center ? -height / 2 : 0, z1 = z0 + height;

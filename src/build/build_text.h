@@ -13,7 +13,7 @@
 #include "csg/prim_outline.h"
 
 /* The longest text one node may lay out, in bytes of UTF-8. */
-#define TEXT_MAX_BYTES 10000
+#define TEXT_MAX_BYTES MODEL_MAX_TEXT_BYTES
 
 /* A laid-out text in the text node's own 2D frame. Segments are in
  * FreeType's units over 1e5 ("v" below); glyph g's contours are
@@ -36,7 +36,7 @@ typedef struct text_shape {
 /* Lays out text node n. A font that fontconfig does not have (it matches
  * another family) fills *note with a warning at the node naming both,
  * when note is not NULL. On failure nothing needs freeing. */
-sc_status text_shape_build(const build_ctx *c, const parse_node *n, text_shape *out,
+sc_status text_shape_build(const build_ctx *c, const model_node *n, text_shape *out,
                            sc_error *note);
 void text_shape_free(text_shape *s);
 
@@ -54,22 +54,22 @@ typedef struct text_polygons {
     uint32_t path_count, path_cap;
 } text_polygons;
 
-sc_status text_faithful_polygons(const build_ctx *c, const parse_node *n,
+sc_status text_faithful_polygons(const build_ctx *c, const model_node *n,
                                  text_polygons *out, sc_error *note);
 void text_polygons_free(text_polygons *p);
 
 /* Does linear_extrude n have a text node among its 2D children (under
  * group, union, render, color and multmatrix)? */
-int build_text_wanted(const parse_node *n);
+int build_text_wanted(const model_node *n);
 /* ... and are all its 2D children text (build_extrude.c takes the exact
  * outline prism then)? */
-int build_text_only(const parse_node *n);
+int build_text_only(const model_node *n);
 
 /* linear_extrude(height, center) of text children (build_extrude.c calls
  * this when build_text_wanted): an exact outline prism, or with
  * c->faithful OpenSCAD's polygons as a prism mesh. Other 2D shapes beside
  * the text are SC_ERR_UNSUPPORTED; no area or height sets *empty. */
-sc_status build_text_extrude(const build_ctx *c, const parse_node *n, double height,
+sc_status build_text_extrude(const build_ctx *c, const model_node *n, double height,
                              int center, int emit, prim *out, const char **empty);
 
 #endif

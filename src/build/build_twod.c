@@ -60,10 +60,10 @@ typedef struct eval {
     const char *outer; /* the node that asked for 2D, for messages */
 } eval;
 
-static sc_status eval_node(const eval *e, const parse_node *n, twod_region *out,
+static sc_status eval_node(const eval *e, const model_node *n, twod_region *out,
                            int depth);
 
-static sc_status clip_status(const eval *e, const parse_node *n, int code)
+static sc_status clip_status(const eval *e, const model_node *n, int code)
 {
     if (code == TWOD_CLIP_OK)
         return SC_OK;
@@ -77,28 +77,18 @@ static sc_status clip_status(const eval *e, const parse_node *n, int code)
                    "%s: coordinates out of range (limit is %g)", n->name, TWOD_MAX_COORD);
 }
 
-static sc_status get_number(const eval *e, const parse_node *n, const char *name,
-                            int position, double *out, int *given)
+/* The node's argument error, kept by the lowering (model.h). */
+static sc_status pending(const eval *e, const model_node *n)
 {
-    if (given)
-        *given = model_arg(n, name, position) != NULL;
-    return model_number(BUILD_READER(e->c), n, name, position, out);
+    return build_pending(e->c, n);
 }
 
-/* $fn, $fa, $fs with OpenSCAD's defaults. */
-static sc_status get_resolution(const eval *e, const parse_node *n, double *fn,
-                                double *fa, double *fs)
+static sc_status read_square(const eval *e, const model_node *n, twod_region *out)
 {
-    return model_read_resolution(BUILD_READER(e->c), n, fn, fa, fs);
-}
-
-static sc_status read_square(const eval *e, const parse_node *n, twod_region *out)
-{
-    double sx, sy;
-    int center;
-    sc_status st = model_square(BUILD_READER(e->c), n, &sx, &sy, &center);
-    if (st != SC_OK)
-        return st;
+    if (n->pending)
+        return pending(e, n);
+    double sx = n->u.square->sx, sy = n->u.square->sy;
+    int center = n->u.square->center;
     if (!(sx > 0 && sy > 0 && isfinite(sx) && isfinite(sy)))
         return SC_OK;
     if (sx > TWOD_MAX_COORD || sy > TWOD_MAX_COORD)
@@ -118,15 +108,14 @@ static sc_status read_square(const eval *e, const parse_node *n, twod_region *ou
     return SC_OK;
 }
 
-static sc_status read_circle(const eval *e, const parse_node *n, twod_region *out)
+static sc_status read_circle(const eval *e, const model_node *n, twod_region *out)
 {
-    model_circle args;
-    sc_status st = model_read_circle(BUILD_READER(e->c), n, &args);
-    if (st != SC_OK)
-        return st;
+    if (n->pending)
+        return pending(e, n);
+    const model_circle *args = n->u.circle;
     /* a d of nan is given: it empties the circle */
-    double r = args.has_d ? args.d / 2 : args.r, fn = args.res.fn, fa = args.res.fa,
-           fs = args.res.fs;
+    double r = args->has_d ? args->d / 2 : args->r, fn = args->res.fn, fa = args->res.fa,
+           fs = args->res.fs;
     out->sanitized = 1;
     if (!(r > 0 && isfinite(r)))
         return SC_OK;
@@ -150,7 +139,7 @@ static sc_status read_circle(const eval *e, const parse_node *n, twod_region *ou
 /* text: OpenSCAD's glyph polygons (build_text.c), outlines counter-clockwise
  * and holes clockwise, united with the non-zero rule as its text renderer
  * unites them. A font fallback is the caller's warning (c->note). */
-static sc_status read_text(const eval *e, const parse_node *n, twod_region *out)
+static sc_status read_text(const eval *e, const model_node *n, twod_region *out)
 {
     text_polygons tp;
     memset(&tp, 0, sizeof tp);
@@ -175,36 +164,27 @@ static sc_status read_text(const eval *e, const parse_node *n, twod_region *out)
     return st;
 }
 
-static sc_status read_polygon(const eval *e, const parse_node *n, twod_region *out)
+static sc_status read_polygon(const eval *e, const model_node *n, twod_region *out)
 {
-    const parse_value *pts, *paths;
-    sc_status pst = model_polygon(BUILD_READER(e->c), n, &pts, &paths);
-    if (pst != SC_OK || !pts)
-        return pst;
-    uint32_t np = pts->u.vector.count;
-    if (paths && paths->u.vector.count == 0)
-        paths = NULL; /* OpenSCAD: an empty paths list means all points */
+    if (n->pending)
+        return pending(e, n);
+    const model_polygon *p = n->u.polygon;
+    if (!p->has_points)
+        return SC_OK;
+    uint32_t np = p->point_count;
+    /* OpenSCAD: an empty paths list means all points */
+    int paths = p->has_paths && (p->path_count > 0 || p->bad_index);
     if (!paths && np < 3)
         return SC_OK;
-    uint32_t count = paths ? paths->u.vector.count : 1;
+    uint32_t count = paths ? p->path_count : 1;
     for (uint32_t k = 0; k < count; k++) {
-        const parse_value *path = paths ? &paths->u.vector.items[k] : NULL;
-        if (path && path->kind != PARSE_VECTOR)
-            return model_wrong_type(BUILD_READER(e->c), n, "paths", path,
-                                    MODEL_POLYGON_PATHS);
-        uint32_t len = path ? path->u.vector.count : np;
+        uint32_t first = paths ? p->path_start[k] : 0;
+        uint32_t len = paths ? p->path_start[k + 1] - first : np;
         if (!twod_begin_contour(out))
             return err_nomem(e->c->error, &n->loc);
         for (uint32_t i = 0; i < len; i++) {
-            uint32_t index = i;
-            if (path) {
-                sc_status ist = model_polygon_index(
-                    BUILD_READER(e->c), &path->u.vector.items[i], k, np, &index);
-                if (ist != SC_OK)
-                    return ist;
-            }
-            const parse_value *v = &pts->u.vector.items[index];
-            double x = v->u.vector.items[0].u.number, y = v->u.vector.items[1].u.number;
+            uint32_t index = paths ? p->index[first + i] : i;
+            double x = p->xy[2 * index], y = p->xy[2 * index + 1];
             if (!(fabs(x) <= TWOD_MAX_COORD && fabs(y) <= TWOD_MAX_COORD))
                 return clip_status(e, n, TWOD_CLIP_RANGE);
             if (!twod_add_point(out, x, y))
@@ -214,19 +194,23 @@ static sc_status read_polygon(const eval *e, const parse_node *n, twod_region *o
                                        : TWOD_CLIP_NOMEM);
         }
     }
+    if (p->bad_index) {
+        *e->c->error = *p->bad_index;
+        return p->bad_index->status;
+    }
     out->sanitized = 0;
     return clip_status(e, n, twod_clip_sanitize(out));
 }
 
 /* The regions of n's children ('%' and '*' left out). *regions holds
  * *count initialised regions, to be freed by free_children. */
-static sc_status eval_children(const eval *e, const parse_node *n, twod_region **regions,
+static sc_status eval_children(const eval *e, const model_node *n, twod_region **regions,
                                uint32_t *count, int depth)
 {
     *regions = NULL;
     *count = 0;
     uint32_t total = 0;
-    for (const parse_node *k = n->first_child; k; k = k->next)
+    for (const model_node *k = n->first_child; k; k = k->next)
         total++;
     if (total == 0)
         return SC_OK;
@@ -234,8 +218,8 @@ static sc_status eval_children(const eval *e, const parse_node *n, twod_region *
     if (!r)
         return err_nomem(e->c->error, &n->loc);
     *regions = r;
-    for (const parse_node *k = n->first_child; k; k = k->next) {
-        if (k->modifiers & (PARSE_MOD_DISABLE | PARSE_MOD_BACKGROUND))
+    for (const model_node *k = n->first_child; k; k = k->next) {
+        if (k->modifiers & (MODEL_MOD_DISABLE | MODEL_MOD_BACKGROUND))
             continue;
         twod_init(&r[*count]);
         (*count)++;
@@ -275,7 +259,7 @@ static twod_region **operands(twod_region *regions, uint32_t count)
 
 /* union, difference and intersection: more than one child goes through
  * the clipper. */
-static sc_status combine(const eval *e, const parse_node *n, twod_region *regions,
+static sc_status combine(const eval *e, const model_node *n, twod_region *regions,
                          uint32_t count, twod_op op, twod_region *out)
 {
     if (trivial(regions, count, out))
@@ -288,13 +272,16 @@ static sc_status combine(const eval *e, const parse_node *n, twod_region *region
     return clip_status(e, n, code);
 }
 
-static sc_status read_matrix(const eval *e, const parse_node *n, double m[2][3])
+static sc_status read_matrix(const eval *e, const model_node *n, double m[2][3])
 {
     static const double id[2][3] = {{1, 0, 0}, {0, 1, 0}};
-    return build_matrix_xy(e->c, n, id, m);
+    if (n->pending)
+        return pending(e, n);
+    build_matrix_xy(n->u.xform, id, m);
+    return SC_OK;
 }
 
-static sc_status transform(const eval *e, const parse_node *n, double m[2][3],
+static sc_status transform(const eval *e, const model_node *n, double m[2][3],
                            twod_region *r)
 {
     double det = m[0][0] * m[1][1] - m[0][1] * m[1][0];
@@ -315,25 +302,15 @@ static sc_status transform(const eval *e, const parse_node *n, double m[2][3],
     return SC_OK;
 }
 
-static sc_status offset(const eval *e, const parse_node *n, twod_region *r)
+static sc_status offset(const eval *e, const model_node *n, twod_region *r)
 {
-    double delta = 1, fn, fa, fs;
-    int has_r, has_delta, chamfer = 0;
+    if (n->pending)
+        return pending(e, n);
+    const model_offset *o = n->u.offset;
+    double delta = o->delta, fn = o->res.fn, fa = o->res.fa, fs = o->res.fs;
     twod_join join = TWOD_JOIN_ROUND;
-    sc_status st;
-    if ((st = get_number(e, n, "r", 0, &delta, &has_r)) != SC_OK ||
-        (st = get_resolution(e, n, &fn, &fa, &fs)) != SC_OK)
-        return st;
-    if (!has_r) {
-        if ((st = get_number(e, n, "delta", -1, &delta, &has_delta)) != SC_OK ||
-            (st = model_bool(BUILD_READER(e->c), n, "chamfer", -1, &chamfer)) != SC_OK)
-            return st;
-        if (has_delta)
-            join = chamfer ? TWOD_JOIN_SQUARE : TWOD_JOIN_MITER;
-    }
-    if (!isfinite(delta))
-        return err_set(e->c->error, SC_ERR_SEMANTIC, &n->loc, "offset: %s must be finite",
-                       has_r ? "r" : "delta");
+    if (!o->has_r && o->has_delta)
+        join = o->chamfer ? TWOD_JOIN_SQUARE : TWOD_JOIN_MITER;
     if (!r->contour_count)
         return SC_OK;
     double arc_tolerance = 0;
@@ -361,7 +338,7 @@ static sc_status offset(const eval *e, const parse_node *n, twod_region *r)
     return clip_status(e, n, code);
 }
 
-static sc_status hull(const eval *e, const parse_node *n, twod_region *regions,
+static sc_status hull(const eval *e, const model_node *n, twod_region *regions,
                       uint32_t count, twod_region *out)
 {
     size_t total = 0;
@@ -386,7 +363,7 @@ static sc_status hull(const eval *e, const parse_node *n, twod_region *regions,
     return ok ? SC_OK : err_nomem(e->c->error, &n->loc);
 }
 
-static sc_status minkowski(const eval *e, const parse_node *n, twod_region *regions,
+static sc_status minkowski(const eval *e, const model_node *n, twod_region *regions,
                            uint32_t count, twod_region *out)
 {
     if (trivial(regions, count, out))
@@ -414,45 +391,21 @@ static sc_status minkowski(const eval *e, const parse_node *n, twod_region *regi
 
 /* import of a DXF drawing (dxf.c), sanitized as OpenSCAD sanitizes a leaf's
  * polygons. */
-static sc_status read_import(const eval *e, const parse_node *n, twod_region *out)
+static sc_status read_import(const eval *e, const model_node *n, twod_region *out)
 {
-    const parse_value *file = model_arg(n, "file", 0);
-    if (!file)
-        return err_set(e->c->error, SC_ERR_SEMANTIC, &n->loc,
-                       "missing argument 'file' of 'import'");
-    if (file->kind != PARSE_STRING)
-        return model_wrong_type(BUILD_READER(e->c), n, "file", file, "a file name");
-    const char *name = file->u.string.chars;
-    sc_location loc = model_loc(BUILD_READER(e->c), file);
-    if (model_has_suffix(name, ".svg"))
-        return err_set(e->c->error, SC_ERR_UNSUPPORTED, &loc,
-                       "import of '%s' is not supported yet (2D: only .dxf files)", name);
-    if (!model_has_suffix(name, ".dxf"))
+    if (n->pending)
+        return pending(e, n);
+    const model_drawing *d = n->u.drawing;
+    const char *name = d->file;
+    sc_location loc = d->file_loc;
+    if (d->not_2d)
         return err_set(e->c->error, SC_ERR_SEMANTIC, &loc,
                        "import of '%s' inside %s: a 2D operation imports only 2D files "
                        "(.dxf)",
                        name, e->outer);
-    dxf_options o = {0, 12, 2, NULL, 0, 0, 1};
+    dxf_options o = {d->res.fn,    d->res.fa,    d->res.fs, d->layer,
+                     d->origin[0], d->origin[1], d->scale};
     sc_status st;
-    if ((st = get_resolution(e, n, &o.fn, &o.fa, &o.fs)) != SC_OK ||
-        (st = get_number(e, n, "scale", -1, &o.scale, NULL)) != SC_OK)
-        return st;
-    const parse_value *layer = model_arg(n, "layer", -1);
-    if (layer && layer->kind != PARSE_STRING)
-        return model_wrong_type(BUILD_READER(e->c), n, "layer", layer, "a layer name");
-    o.layer = layer ? layer->u.string.chars : NULL;
-    const parse_value *origin = model_arg(n, "origin", -1);
-    if (origin) {
-        if (origin->kind != PARSE_VECTOR || origin->u.vector.count != 2 ||
-            origin->u.vector.items[0].kind != PARSE_NUMBER ||
-            origin->u.vector.items[1].kind != PARSE_NUMBER)
-            return model_wrong_type(BUILD_READER(e->c), n, "origin", origin, "[x, y]");
-        o.origin_x = origin->u.vector.items[0].u.number;
-        o.origin_y = origin->u.vector.items[1].u.number;
-    }
-    if (!isfinite(o.scale) || !isfinite(o.origin_x) || !isfinite(o.origin_y))
-        return err_set(e->c->error, SC_ERR_SEMANTIC, &n->loc,
-                       "import: origin and scale must be finite");
     char *path = build_file_path(e->c, name);
     if (!path)
         return err_nomem(e->c->error, &n->loc);
@@ -488,7 +441,7 @@ static int is_3d(model_kind kind)
     }
 }
 
-static sc_status eval_node(const eval *e, const parse_node *n, twod_region *out,
+static sc_status eval_node(const eval *e, const model_node *n, twod_region *out,
                            int depth)
 {
     if (depth > TWOD_MAX_DEPTH)
@@ -496,7 +449,7 @@ static sc_status eval_node(const eval *e, const parse_node *n, twod_region *out,
                        "too many nested 2D nodes in %s (limit is %d)", e->outer,
                        TWOD_MAX_DEPTH);
     const char *name = n->name;
-    model_kind kind = model_kind_of(name);
+    model_kind kind = n->kind;
     twod_clear(out);
     switch (kind) {
     case MODEL_SQUARE:
@@ -546,7 +499,7 @@ static sc_status eval_node(const eval *e, const parse_node *n, twod_region *out,
     return st;
 }
 
-sc_status build_twod_children(const build_ctx *c, const parse_node *parent,
+sc_status build_twod_children(const build_ctx *c, const model_node *parent,
                               twod_region *out)
 {
     eval e = {c, parent->name};
@@ -559,7 +512,7 @@ sc_status build_twod_children(const build_ctx *c, const parse_node *parent,
     return st;
 }
 
-sc_status build_twod_node(const build_ctx *c, const parse_node *n, const char *outer,
+sc_status build_twod_node(const build_ctx *c, const model_node *n, const char *outer,
                           twod_region *out)
 {
     eval e = {c, outer};

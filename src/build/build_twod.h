@@ -15,11 +15,11 @@
  * '%' and '*' children are left out. out must be initialised; it is
  * replaced. Errors (bad arguments, nodes that are not 2D, limits) are set
  * at their position. */
-sc_status build_twod_children(const build_ctx *c, const parse_node *parent,
+sc_status build_twod_children(const build_ctx *c, const model_node *parent,
                               twod_region *out);
 /* The region of the 2D node n itself (circle, offset, ...), evaluated the
  * same way; outer names the node that asked, for messages. */
-sc_status build_twod_node(const build_ctx *c, const parse_node *n, const char *outer,
+sc_status build_twod_node(const build_ctx *c, const model_node *n, const char *outer,
                           twod_region *out);
 
 #endif

@@ -39,6 +39,55 @@ sc_status model_number(const model_reader *c, const parse_node *n, const char *n
     return SC_OK;
 }
 
+sc_status model_radius(const model_reader *r, const parse_node *n, const char *diameter,
+                       const char *radius, int radius_position, double *out, int *given)
+{
+    double d = 0;
+    int has_d = model_arg(n, diameter, -1) != NULL;
+    *given = model_arg(n, radius, radius_position) != NULL;
+    sc_status st = model_number(r, n, diameter, -1, &d);
+    if (st == SC_OK)
+        st = model_number(r, n, radius, radius_position, out);
+    if (st == SC_OK && has_d) {
+        *out = d / 2;
+        *given = 1;
+    }
+    return st;
+}
+
+sc_status model_read_sphere(const model_reader *r, const parse_node *n, double *radius,
+                            model_resolution *res)
+{
+    int given;
+    *radius = 1;
+    parse_node_resolution(n, &res->fn, &res->fa, &res->fs);
+    return model_radius(r, n, "d", "r", 0, radius, &given);
+}
+
+sc_status model_read_cylinder(const model_reader *r, const parse_node *n, double *h,
+                              double *r1, double *r2, int *center, model_resolution *res)
+{
+    double radius = 1;
+    int has_r = 0, has_r1 = 0, has_r2 = 0;
+    *h = *r1 = *r2 = 1;
+    *center = 0;
+    parse_node_resolution(n, &res->fn, &res->fa, &res->fs);
+    sc_status st = model_number(r, n, "h", 0, h);
+    if (st == SC_OK)
+        st = model_radius(r, n, "d1", "r1", 1, r1, &has_r1);
+    if (st == SC_OK)
+        st = model_radius(r, n, "d2", "r2", 2, r2, &has_r2);
+    if (st == SC_OK)
+        st = model_radius(r, n, "d", "r", -1, &radius, &has_r);
+    if (st == SC_OK)
+        st = model_bool(r, n, "center", 3, center);
+    if (!has_r1)
+        *r1 = radius;
+    if (!has_r2)
+        *r2 = radius;
+    return st;
+}
+
 sc_status model_matrix(const model_reader *c, const parse_node *n, double a[4][4])
 {
     static const double id[4][4] = {
@@ -69,8 +118,40 @@ sc_status model_matrix(const model_reader *c, const parse_node *n, double a[4][4
     return SC_OK;
 }
 
-sc_status model_square(const model_reader *c, const parse_node *n, double *sx, double *sy,
-                       int *center)
+sc_status model_read_xform(const model_reader *r, arena *mem, const parse_node *n,
+                           const affine **out)
+{
+    double m[4][4];
+    sc_status st = model_matrix(r, n, m);
+    if (st != SC_OK)
+        return st;
+    affine *a = arena_alloc(mem, sizeof *a);
+    if (!a)
+        return err_nomem(r->error, NULL);
+    for (int row = 0; row < 3; row++)
+        for (int k = 0; k < 4; k++)
+            a->m[row][k] = m[row][k];
+    *out = a;
+    return SC_OK;
+}
+
+sc_status model_keep_pending(arena *mem, sc_status st, int nomem, const sc_error *pending,
+                             model_node *out, sc_error *error)
+{
+    if (nomem || st == SC_ERR_NOMEM)
+        return err_nomem(error, NULL);
+    if (st == SC_OK)
+        return SC_OK;
+    sc_error *copy = arena_alloc(mem, sizeof *copy);
+    if (!copy)
+        return err_nomem(error, NULL);
+    *copy = *pending;
+    out->pending = copy;
+    return SC_OK;
+}
+
+sc_status model_read_square(const model_reader *c, const parse_node *n, double *sx,
+                            double *sy, int *center)
 {
     *sx = *sy = 1;
     *center = 0;
@@ -106,8 +187,8 @@ sc_status model_bool(const model_reader *c, const parse_node *n, const char *nam
 
 static const char polygon_points[] = "a vector of [x, y] points";
 
-sc_status model_polygon(const model_reader *c, const parse_node *n,
-                        const parse_value **points, const parse_value **paths)
+sc_status model_read_polygon(const model_reader *c, const parse_node *n,
+                             const parse_value **points, const parse_value **paths)
 {
     const parse_value *pts = model_arg(n, "points", 0), *ps = model_arg(n, "paths", 1);
     *points = pts;

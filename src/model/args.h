@@ -31,18 +31,40 @@ sc_status model_wrong_type(const model_reader *r, const parse_node *n, const cha
 /* A number argument into *out (left alone when absent). */
 sc_status model_number(const model_reader *r, const parse_node *n, const char *name,
                        int position, double *out);
+/* OpenSCAD's radius lookup: the diameter (named only) wins over the
+ * radius, halved; *given says either was given; *out is left alone when
+ * neither is. */
+sc_status model_radius(const model_reader *r, const parse_node *n, const char *diameter,
+                       const char *radius, int radius_position, double *out, int *given);
 /* A true/false argument into *out (left alone when absent). */
 sc_status model_bool(const model_reader *r, const parse_node *n, const char *name,
                      int position, int *out);
+/* sphere(r = 1 | d, $fn, $fa, $fs)'s arguments. */
+sc_status model_read_sphere(const model_reader *r, const parse_node *n, double *radius,
+                            model_resolution *res);
+/* cylinder(h = 1, r1 = 1, r2 = 1, center = false, $fn, $fa, $fs), also with
+ * r, d, d1, d2: r1/d1 and r2/d2 win over r/d, a diameter over a radius. */
+sc_status model_read_cylinder(const model_reader *r, const parse_node *n, double *h,
+                              double *r1, double *r2, int *center, model_resolution *res);
 /* multmatrix(m): a row-major 4x4 affine matrix of finite numbers with the
  * bottom row [0, 0, 0, 1]; no argument is the identity. */
 sc_status model_matrix(const model_reader *r, const parse_node *n, double m[4][4]);
+/* multmatrix(m) as model_matrix reads it, its 3x4 affine part allocated
+ * from mem into *out. */
+sc_status model_read_xform(const model_reader *r, arena *mem, const parse_node *n,
+                           const affine **out);
+/* The end of a nested node's lowering (model.h): status st of reading its
+ * arguments, with the error in *pending, kept in out->pending (allocated
+ * from mem); SC_OK, or SC_ERR_NOMEM in *error when memory ran out (nomem
+ * set, or st says so). */
+sc_status model_keep_pending(arena *mem, sc_status st, int nomem, const sc_error *pending,
+                             model_node *out, sc_error *error);
 /* polygon(points, paths)'s arguments: points (NULL when absent) a vector
  * of finite [x, y], paths (NULL when absent) a vector of vectors; the
  * indices in the paths are the caller's to check. */
 #define MODEL_POLYGON_PATHS "a vector of paths, each a vector of point indices"
-sc_status model_polygon(const model_reader *r, const parse_node *n,
-                        const parse_value **points, const parse_value **paths);
+sc_status model_read_polygon(const model_reader *r, const parse_node *n,
+                             const parse_value **points, const parse_value **paths);
 /* Entry of path number path of a polygon with count points: an integer
  * index below count into *index, else the error at the entry. */
 sc_status model_polygon_index(const model_reader *r, const parse_value *v, uint32_t path,
@@ -51,8 +73,8 @@ sc_status model_polygon_index(const model_reader *r, const parse_value *v, uint3
 sc_status model_cube(const model_reader *r, const parse_node *n, double size[3],
                      int *center);
 /* square(size = s | [x, y], center = false)'s arguments. */
-sc_status model_square(const model_reader *r, const parse_node *n, double *sx, double *sy,
-                       int *center);
+sc_status model_read_square(const model_reader *r, const parse_node *n, double *sx,
+                            double *sy, int *center);
 /* import(file = "x.stl" | "x.off") of a mesh into *out. */
 sc_status model_read_import(const model_reader *r, const parse_node *n,
                             model_import *out);
@@ -63,13 +85,7 @@ sc_status model_read_surface(const model_reader *r, const parse_node *n,
  * (OpenSCAD's defaults 0, 12, 2 where not). */
 sc_status model_read_resolution(const model_reader *r, const parse_node *n, double *fn,
                                 double *fa, double *fs);
-/* circle(r = 1 | d, $fn, $fa, $fs)'s arguments, in that order; what a d
- * of nan means is the caller's (has_d says it was given). */
-typedef struct model_circle {
-    double r, d; /* d: nan when not given */
-    int has_d;
-    model_resolution res;
-} model_circle;
+/* circle(r = 1 | d, $fn, $fa, $fs)'s arguments, in that order (model.h). */
 sc_status model_read_circle(const model_reader *r, const parse_node *n,
                             model_circle *out);
 /* Does s end in suffix (lower case), ignoring the case of s? */

@@ -25,53 +25,38 @@
 #include "model/colors.h"
 #include "model/lower_curved.h"
 #include "model/lower_shading.h"
+#include "model/lower_points.h"
+#include "model/lower_twod.h"
+
+/* A resize node lowered in the points context, by its syntax node. */
+typedef struct resize_entry {
+    const parse_node *syntax;
+    model_node *node;
+} resize_entry;
 
 typedef struct lowerer {
     model *m;
     model_reader r; /* its error is the node error being made */
+    /* the points context's resize nodes: open addressing on the syntax
+     * node's address, cap a power of two */
+    resize_entry *resizes;
+    size_t resize_count, resize_cap;
 } lowerer;
 
+static size_t resize_slot(const resize_entry *table, size_t cap, const parse_node *n)
+{
+    size_t h = (size_t)(uintptr_t)n;
+    h ^= h >> 17;
+    h *= (size_t)0x9e3779b97f4a7c15ull;
+    size_t i = (h ^ (h >> 29)) & (cap - 1);
+    while (table[i].syntax && table[i].syntax != n)
+        i = (i + 1) & (cap - 1);
+    return i;
+}
+
+static sc_status lower_resize(lowerer *l, const parse_node *n, model_node *out);
+
 typedef sc_status (*lower_fn)(lowerer *l, const parse_node *n, model_node *out);
-
-/* ---- arguments ---- */
-
-static sc_status get_number(lowerer *l, const parse_node *n, const char *name,
-                            int position, double *out, int *given)
-{
-    const parse_value *v = model_arg(n, name, position);
-    *given = 0;
-    if (!v)
-        return SC_OK;
-    if (v->kind != PARSE_NUMBER)
-        return model_wrong_type(&l->r, n, name, v, "a number");
-    *out = v->u.number;
-    *given = 1;
-    return SC_OK;
-}
-
-/* OpenSCAD's radius lookup: a diameter wins over a radius. */
-static sc_status get_radius(lowerer *l, const parse_node *n, const char *diameter,
-                            const char *radius, int radius_position, double *out,
-                            int *given)
-{
-    double d = 0;
-    int has_d;
-    sc_status st = get_number(l, n, diameter, -1, &d, &has_d);
-    if (st == SC_OK)
-        st = get_number(l, n, radius, radius_position, out, given);
-    if (st == SC_OK && has_d) {
-        *out = d / 2;
-        *given = 1;
-    }
-    return st;
-}
-
-static model_resolution resolution(const parse_node *n)
-{
-    model_resolution res;
-    parse_node_resolution(n, &res.fn, &res.fa, &res.fs);
-    return res;
-}
 
 /* ---- leaves ---- */
 
@@ -84,33 +69,15 @@ static sc_status lower_cube(lowerer *l, const parse_node *n, model_node *out)
 /* sphere(r = 1) or sphere(d = 2). */
 static sc_status lower_sphere(lowerer *l, const parse_node *n, model_node *out)
 {
-    int given;
-    out->u.sphere.r = 1;
-    out->u.sphere.res = resolution(n);
-    return get_radius(l, n, "d", "r", 0, &out->u.sphere.r, &given);
+    return model_read_sphere(&l->r, n, &out->u.sphere.r, &out->u.sphere.res);
 }
 
-/* cylinder(h = 1, r1 = 1, r2 = 1, center = false), also with r, d, d1, d2:
- * r1/d1 and r2/d2 win over r/d, a diameter over a radius. */
+/* cylinder(h = 1, r1 = 1, r2 = 1, center = false), also with r, d, d1, d2. */
 static sc_status lower_cylinder(lowerer *l, const parse_node *n, model_node *out)
 {
-    double h = 1, r = 1, r1 = 1, r2 = 1;
-    int has_h, has_r, has_r1, has_r2, center = 0;
-    sc_status st = get_number(l, n, "h", 0, &h, &has_h);
-    if (st == SC_OK)
-        st = get_radius(l, n, "d1", "r1", 1, &r1, &has_r1);
-    if (st == SC_OK)
-        st = get_radius(l, n, "d2", "r2", 2, &r2, &has_r2);
-    if (st == SC_OK)
-        st = get_radius(l, n, "d", "r", -1, &r, &has_r);
-    if (st == SC_OK)
-        st = model_bool(&l->r, n, "center", 3, &center);
-    out->u.cylinder.h = h;
-    out->u.cylinder.r1 = has_r1 ? r1 : r;
-    out->u.cylinder.r2 = has_r2 ? r2 : r;
-    out->u.cylinder.center = center;
-    out->u.cylinder.res = resolution(n);
-    return st;
+    return model_read_cylinder(&l->r, n, &out->u.cylinder.h, &out->u.cylinder.r1,
+                               &out->u.cylinder.r2, &out->u.cylinder.center,
+                               &out->u.cylinder.res);
 }
 
 static const char points_expected[] = "a vector of [x, y, z] points";
@@ -256,18 +223,7 @@ static sc_status lower_surface(lowerer *l, const parse_node *n, model_node *out)
  * affine matrix of finite numbers; no argument means the identity. */
 static sc_status lower_xform(lowerer *l, const parse_node *n, model_node *out)
 {
-    double m[4][4];
-    sc_status st = model_matrix(&l->r, n, m);
-    if (st != SC_OK)
-        return st;
-    affine *a = arena_alloc(&l->m->mem, sizeof *a);
-    if (!a)
-        return err_nomem(l->r.error, NULL);
-    for (int r = 0; r < 3; r++)
-        for (int k = 0; k < 4; k++)
-            a->m[r][k] = m[r][k];
-    out->u.xform = a;
-    return SC_OK;
+    return model_read_xform(&l->r, &l->m->mem, n, &out->u.xform);
 }
 
 /* color(c, alpha): c is [r, g, b, a] (missing components are 1, as in
@@ -307,7 +263,8 @@ static sc_status lower_color(lowerer *l, const parse_node *n, model_node *out)
     } else if (v) {
         return model_wrong_type(&l->r, n, "c", v, expected);
     }
-    sc_status st = get_number(l, n, "alpha", 1, &color->alpha, &color->has_alpha);
+    color->has_alpha = model_arg(n, "alpha", 1) != NULL;
+    sc_status st = model_number(&l->r, n, "alpha", 1, &color->alpha);
     if (st == SC_OK && color->has_alpha)
         color->alpha_loc = model_loc(&l->r, model_arg(n, "alpha", 1));
     return st;
@@ -380,12 +337,17 @@ static sc_status lower_material(lowerer *l, const parse_node *n, model_node *out
     return model_read_material(&l->r, n, m);
 }
 
-/* The kinds whose builders still read their own syntax node. */
-static sc_status keep_syntax(lowerer *l, const parse_node *n, model_node *out)
+/* The extrusions, and a 2D shape in a 3D model: read as in the 2D
+ * context (the builders check a shape through the 2D engine, and each
+ * extrusion builder reads the arguments it takes), the error kept in the
+ * node (pending). */
+static sc_status lower_kept(lowerer *l, const parse_node *n, model_node *out)
 {
-    (void)l;
-    out->syntax = n;
-    return SC_OK;
+    sc_error nomem;
+    sc_status st = model_twod_args(&l->m->mem, l->r.file, n, out, &nomem);
+    if (st != SC_OK)
+        *l->r.error = nomem;
+    return st;
 }
 
 static sc_status unsupported(lowerer *l, const parse_node *n, model_node *out)
@@ -414,19 +376,19 @@ static const struct {
     {"cylinder", MODEL_CYLINDER, lower_cylinder},
     {"polyhedron", MODEL_POLYHEDRON, lower_polyhedron},
     /* What else OpenSCAD writes. */
-    {"hull", MODEL_HULL, keep_syntax},
-    {"minkowski", MODEL_MINKOWSKI, keep_syntax},
-    {"linear_extrude", MODEL_LINEAR_EXTRUDE, keep_syntax},
-    {"rotate_extrude", MODEL_ROTATE_EXTRUDE, keep_syntax},
+    {"hull", MODEL_HULL, NULL},
+    {"minkowski", MODEL_MINKOWSKI, NULL},
+    {"linear_extrude", MODEL_LINEAR_EXTRUDE, lower_kept},
+    {"rotate_extrude", MODEL_ROTATE_EXTRUDE, lower_kept},
     {"import", MODEL_IMPORT, lower_import},
     {"surface", MODEL_SURFACE, lower_surface},
     {"projection", MODEL_UNSUPPORTED, unsupported},
-    {"offset", MODEL_OFFSET, keep_syntax},
-    {"circle", MODEL_CIRCLE, keep_syntax},
-    {"square", MODEL_SQUARE, keep_syntax},
-    {"polygon", MODEL_POLYGON, keep_syntax},
-    {"text", MODEL_TEXT, keep_syntax},
-    {"resize", MODEL_RESIZE, keep_syntax},
+    {"offset", MODEL_OFFSET, lower_kept},
+    {"circle", MODEL_CIRCLE, lower_kept},
+    {"square", MODEL_SQUARE, lower_kept},
+    {"polygon", MODEL_POLYGON, lower_kept},
+    {"text", MODEL_TEXT, lower_kept},
+    {"resize", MODEL_RESIZE, lower_resize},
     {"roof", MODEL_UNSUPPORTED, unsupported},
     {"intersection_for", MODEL_UNSUPPORTED, unsupported},
     /* spancast's own extensions. */
@@ -520,28 +482,96 @@ static sc_status lower_node(lowerer *l, const parse_node *n, model_node *out)
     return st;
 }
 
+/* Where a node is lowered (model.h): the main model, where the first
+ * argument error ends the lowering; a 2D subtree; the points context
+ * below hull, minkowski and resize. */
+typedef enum context { IN_MAIN, IN_2D, IN_POINTS } context;
+
 /* An open node whose children are being lowered. */
 typedef struct open_node {
     const parse_node *syntax;
     model_node *node;
+    context ctx; /* of the node's own list */
 } open_node;
 
-static sc_status walk(lowerer *l, const parse_tree *syntax, sc_error *error)
+/* The context of the children of a node of this kind in ctx; IN_MAIN for a
+ * main-model leaf means its children are not lowered. */
+static context children_context(context ctx, model_kind kind)
 {
-    const parse_node *root = find_root(syntax);
-    l->m->has_root = root != NULL;
+    if (kind == MODEL_LINEAR_EXTRUDE || kind == MODEL_ROTATE_EXTRUDE)
+        return IN_2D;
+    if (ctx != IN_MAIN)
+        return ctx;
+    if (model_is_2d(kind))
+        return IN_2D;
+    if (kind == MODEL_HULL || kind == MODEL_MINKOWSKI)
+        return IN_POINTS;
+    return IN_MAIN;
+}
+
+/* Remembers the resize node n lowered in the points context as node, so
+ * that the main model's resize of n is measured from it. */
+static sc_status remember_resize(lowerer *l, const parse_node *n, model_node *node,
+                                 sc_error *error)
+{
+    if (2 * (l->resize_count + 1) > l->resize_cap) {
+        size_t cap = l->resize_cap ? 2 * l->resize_cap : 64;
+        resize_entry *grown = calloc(cap, sizeof *grown);
+        if (!grown)
+            return err_nomem(error, NULL);
+        for (size_t i = 0; i < l->resize_cap; i++) {
+            if (!l->resizes[i].syntax)
+                continue;
+            size_t j = resize_slot(grown, cap, l->resizes[i].syntax);
+            grown[j] = l->resizes[i];
+        }
+        free(l->resizes);
+        l->resizes = grown;
+        l->resize_cap = cap;
+    }
+    size_t i = resize_slot(l->resizes, l->resize_cap, n);
+    if (!l->resizes[i].syntax)
+        l->resize_count++;
+    l->resizes[i] = (resize_entry){n, node};
+    return SC_OK;
+}
+
+static model_node *remembered_resize(const lowerer *l, const parse_node *n)
+{
+    if (!l->resize_cap)
+        return NULL;
+    return l->resizes[resize_slot(l->resizes, l->resize_cap, n)].node;
+}
+
+/* Lowers n in the 2D or points context: its kind from the table, then
+ * its arguments, an error kept in the node. */
+static sc_status lower_nested(lowerer *l, const parse_node *n, context ctx,
+                              model_node *out, sc_error *error)
+{
+    out->kind = model_kind_of(n->name);
+    sc_status st = ctx == IN_2D ? model_twod_args(&l->m->mem, l->r.file, n, out, error)
+                                : model_points_args(&l->m->mem, l->r.file, n, out, error);
+    if (st == SC_OK && ctx == IN_POINTS && out->kind == MODEL_RESIZE)
+        st = remember_resize(l, n, out, error);
+    return st;
+}
+
+static sc_status walk(lowerer *l, const parse_node *first, const parse_node *end,
+                      context ctx, const parse_node *root, model_node **link,
+                      sc_error *error)
+{
     open_node *stack = NULL;
     size_t depth = 0, cap = 0;
-    model_node **link = &l->m->first; /* where the next node goes */
-    const parse_node *n = syntax->first;
+    const parse_node *n = first;
     sc_status st = SC_OK;
     for (;;) {
-        if (!n) {
+        if (depth == 0 ? n == end : !n) {
             if (depth == 0)
                 break;
             open_node done = stack[--depth];
             link = &done.node->next;
             n = done.syntax->next;
+            ctx = done.ctx;
             continue;
         }
         if (n->modifiers & PARSE_MOD_DISABLE) {
@@ -556,30 +586,37 @@ static sc_status walk(lowerer *l, const parse_tree *syntax, sc_error *error)
         node->name = n->name;
         node->loc = n->loc;
         node->modifiers = n->modifiers;
-        node->is_root = n == root;
+        node->is_root = ctx == IN_MAIN && n == root;
         node->child_count = n->child_count;
         *link = node;
         link = &node->next;
-        sc_error node_error; /* filled only on an error */
-        l->r.error = &node_error;
-        st = lower_node(l, n, node);
-        if (st == SC_ERR_NOMEM) {
-            *error = node_error;
-            break;
-        }
-        if (st != SC_OK) {
-            sc_error *copy = arena_alloc(&l->m->mem, sizeof *copy);
-            if (!copy) {
-                st = err_nomem(error, NULL);
+        if (ctx != IN_MAIN) {
+            if ((st = lower_nested(l, n, ctx, node, error)) != SC_OK)
+                break;
+        } else {
+            sc_error node_error; /* filled only on an error */
+            l->r.error = &node_error;
+            st = lower_node(l, n, node);
+            if (st == SC_ERR_NOMEM) {
+                *error = node_error;
                 break;
             }
-            *copy = node_error;
-            node->kind = MODEL_ERROR;
-            node->u.error = copy;
-            st = SC_OK;
-            break;
+            if (st != SC_OK) {
+                sc_error *copy = arena_alloc(&l->m->mem, sizeof *copy);
+                if (!copy) {
+                    st = err_nomem(error, NULL);
+                    break;
+                }
+                *copy = node_error;
+                node->kind = MODEL_ERROR;
+                node->u.error = copy;
+                st = SC_OK;
+                break;
+            }
         }
-        if (model_is_leaf(node->kind) || node->kind >= MODEL_LIGHT || !n->first_child) {
+        context inner = children_context(ctx, node->kind);
+        if (!n->first_child || (inner == IN_MAIN && (model_is_leaf(node->kind) ||
+                                                     node->kind >= MODEL_LIGHT))) {
             n = n->next;
             continue;
         }
@@ -587,12 +624,35 @@ static sc_status walk(lowerer *l, const parse_tree *syntax, sc_error *error)
             st = err_nomem(error, NULL);
             break;
         }
-        stack[depth++] = (open_node){n, node};
+        stack[depth++] = (open_node){n, node, ctx};
         link = &node->first_child;
         n = n->first_child;
+        ctx = inner;
     }
     free(stack);
     return st;
+}
+
+/* resize in the main model: its arguments and subtree lowered in the
+ * points context (once: a resize inside another one's subtree has been),
+ * for the builder to measure. */
+static sc_status lower_resize(lowerer *l, const parse_node *n, model_node *out)
+{
+    model_node *measured = remembered_resize(l, n);
+    model_node *detached = NULL;
+    if (!measured) {
+        sc_status st = walk(l, n, n->next, IN_POINTS, NULL, &detached, l->r.error);
+        if (st != SC_OK)
+            return st;
+        measured = detached;
+    }
+    model_resize *r = arena_calloc(&l->m->mem, 1, sizeof *r);
+    if (!r)
+        return err_nomem(l->r.error, NULL);
+    *r = *measured->u.resize;
+    r->measured = measured;
+    out->u.resize = r;
+    return SC_OK;
 }
 
 sc_status model_lower(const parse_tree *syntax, model **out, sc_error *error)
@@ -603,8 +663,31 @@ sc_status model_lower(const parse_tree *syntax, model **out, sc_error *error)
         return err_nomem(error, NULL);
     arena_init(&m->mem, 64 * 1024);
     m->file = syntax->file;
-    lowerer l = {m, {syntax->file, NULL}};
-    sc_status st = walk(&l, syntax, error);
+    lowerer l = {m, {syntax->file, NULL}, NULL, 0, 0};
+    const parse_node *root = find_root(syntax);
+    m->has_root = root != NULL;
+    sc_status st = walk(&l, syntax->first, NULL, IN_MAIN, root, &m->first, error);
+    free(l.resizes);
+    if (st != SC_OK) {
+        model_free(m);
+        return st;
+    }
+    *out = m;
+    return SC_OK;
+}
+
+sc_status model_lower_twod(const char *file, const parse_node *n, model **out,
+                           sc_error *error)
+{
+    *out = NULL;
+    model *m = calloc(1, sizeof *m);
+    if (!m)
+        return err_nomem(error, NULL);
+    arena_init(&m->mem, 4096);
+    m->file = file;
+    lowerer l = {m, {file, NULL}, NULL, 0, 0};
+    sc_status st = walk(&l, n, n->next, IN_2D, NULL, &m->first, error);
+    free(l.resizes);
     if (st != SC_OK) {
         model_free(m);
         return st;

@@ -1,34 +1,40 @@
 /* The typed model: the syntax tree lowered once into one tagged node per
- * kind, with every argument read and checked.
+ * kind, with every argument read and checked. After it no stage sees the
+ * syntax tree or compares node names.
  *
  * model_lower (lower.c) gives each node name its kind through one table,
  * reads its arguments into the node's typed fields (cube{size, center},
  * sphere{r, resolution}, multmatrix's affine map, ...) and checks their
  * types and values, with the messages and positions the file's reader
- * expects. The builders (src/build/) switch on model_kind; those that
- * still walk a subtree of the syntax tree name its kinds through the same
- * table (model_kind_of).
+ * expects. The builders (src/build/) switch on model_kind.
  *
- * The model mirrors the walk the builder makes over the file: the children
- * of a group, union, render, difference, intersection, multmatrix, color,
- * material and resize are lowered as model nodes; '*' subtrees are left
- * out (they are never read), and so are the children of a leaf, which the
- * builder ignores (with a warning) or, for the kinds whose builders still
- * walk their own subtree (hull, minkowski, the extrusions, 2D shapes),
- * reads itself from `syntax`.
+ * The model mirrors the walks the builders make over the file. In the
+ * main model: the children of a group, union, render, difference,
+ * intersection, multmatrix, color, material and resize; '*' subtrees are
+ * left out (they are never read), and so are the children of a 3D leaf,
+ * which the builder ignores with a warning. Nested subtrees, which their
+ * builders read each in their own way, are lowered in their context:
+ *   2D context       the children of the extrusions and of a 2D shape
+ *                    (lower_twod.c)
+ *   points context   the children of hull and minkowski, and each resize's
+ *                    subtree once more for its measuring (lower_points.c)
+ * In a nested context a node's argument error is kept in the node
+ * (pending) and lowering goes on; the builder reports it where it reads
+ * the node, so the first error in its walk is the one reported.
  *
- * An argument error is not a failure of the lowering: the node that has
- * it becomes a MODEL_ERROR node holding the error, the last node of the
- * model in file order, and lowering stops there. The builder reports it when its
- * walk reaches it, so an error the builder finds earlier in the file (an
- * open polyhedron, a missing import) is still the one reported, as when the
- * two stages were one.
+ * An argument error in the main model is not a failure of the lowering:
+ * the node that has it becomes a MODEL_ERROR node holding the error, the
+ * last node of the model in file order, and lowering stops there. The
+ * builder reports it when its walk reaches it, so an error the builder
+ * finds earlier in the file (an open polyhedron, a missing import, a
+ * nested node's pending error) is still the one reported, as when the two
+ * stages were one.
  *
  * Every node is allocated from the model's arena (loading a million leaves
  * makes no million mallocs), the larger payloads (matrices, colours,
  * errors) apart from the node so that it stays small (128 bytes). The
- * model points into the syntax tree (`syntax` nodes, names, strings),
- * which must outlive it.
+ * model points into the syntax tree (names, strings), which must outlive
+ * it.
  */
 #ifndef SPANCAST_MODEL_MODEL_H
 #define SPANCAST_MODEL_MODEL_H
@@ -127,6 +133,14 @@ typedef struct model_material {
     int has_color;
 } model_material;
 
+/* circle(r = 1 | d, $fn, $fa, $fs): what a d of nan means is the
+ * builder's (has_d says it was given). */
+typedef struct model_circle {
+    double r, d; /* d: nan when not given */
+    int has_d;
+    model_resolution res;
+} model_circle;
+
 /* torus(r1, r2): major radius r1 in the xy plane, minor radius r2 < r1. */
 typedef struct model_torus {
     double r1, r2;
@@ -168,6 +182,103 @@ typedef struct model_surface {
 } model_surface;
 
 typedef struct model_node model_node;
+
+/* The 2D nodes below an extrusion, and a 2D shape in a 3D model, are
+ * lowered in the 2D context: every builder of 2D subtrees (the 2D engine,
+ * the exact region and revolve profiles, text) reads them, each at its own
+ * point of its walk, so an argument error does not end the lowering there.
+ * It is kept in the node (pending) for the builder to report where it
+ * reads the arguments, which keeps the first error in the builder's order
+ * the one reported. '*' subtrees are left out; '%' ones are lowered (text
+ * detection looks into them). 2D nodes lower no argument they do not use:
+ * color, 2D hull and minkowski take none. */
+
+/* square(size, center) */
+typedef struct model_square {
+    double sx, sy;
+    int center;
+} model_square;
+
+/* polygon(points, paths): the paths' point indices checked in file order.
+ * An index that is not one of the points ends the paths there: path_count
+ * paths, the last of them cut before that entry, and bad_index the error
+ * at it, which the builder reports once it has read what comes before. */
+typedef struct model_polygon {
+    const double *xy; /* points, 2 per point, finite */
+    uint32_t point_count;
+    int has_points;             /* points given */
+    int has_paths;              /* paths given (maybe an empty vector) */
+    uint32_t path_count;        /* paths read (all unless bad_index) */
+    const uint32_t *path_start; /* path k: index[path_start[k] .. [k + 1]) */
+    const uint32_t *index;
+    const sc_error *bad_index; /* or NULL */
+} model_polygon;
+
+/* offset(r | delta, chamfer, $fn, $fa, $fs) */
+typedef struct model_offset {
+    double delta; /* r when has_r, else delta, 1 when neither */
+    int has_r, has_delta, chamfer;
+    model_resolution res;
+} model_offset;
+
+/* import(file = "x.dxf", layer, origin, scale, $fn, $fa, $fs) in 2D. */
+typedef struct model_drawing {
+    const char *file; /* as written */
+    sc_location file_loc;
+    int not_2d;        /* not a .dxf (nor .svg): the builder names its context */
+    const char *layer; /* or NULL */
+    double origin[2], scale;
+    model_resolution res;
+} model_drawing;
+
+/* linear_extrude(height = 100, center, twist, slices, scale, $fn, $fa,
+ * $fs). Its builders read different arguments: the exact ones height and
+ * center only (their error is exact_error), the faithful one all (its
+ * error is the node's pending one). */
+typedef struct model_linear_extrude {
+    double height;
+    int center;
+    double twist;  /* finite */
+    double slices; /* a given count >= 1, truncated; else 0 */
+    double sx, sy; /* scale, finite, a negative one 0 */
+    model_resolution res;
+    int plain; /* twist absent or 0, scale absent, 1 or [1, 1] (not checked) */
+    const sc_error *exact_error; /* or NULL */
+} model_linear_extrude;
+
+/* rotate_extrude(angle = 360, convexity, $fn, $fa, $fs) */
+typedef struct model_rotate_extrude {
+    double angle; /* as given */
+    model_resolution res;
+} model_rotate_extrude;
+
+/* resize(newsize, auto): the sizes (0: keep) and which directions scale
+ * with the largest given one. In the main model the builder measures the
+ * resize node lowered in the points context (measured), whose children
+ * are that context's; in the points context measured is NULL (the node
+ * itself is measured). */
+typedef struct model_resize {
+    double size[3];     /* finite, not negative */
+    double autosize[3]; /* 0 or 1 */
+    const model_node *measured;
+} model_resize;
+
+/* The most slices of one linear_extrude. */
+#define MODEL_MAX_SLICES 1000000.0
+
+/* The most bytes text() lays out. */
+#define MODEL_MAX_TEXT_BYTES 10000
+
+/* text(text, size, font, direction, language, script, halign, valign,
+ * spacing, $fn, $fa, $fs) */
+typedef struct model_text {
+    const char *text;
+    size_t length;
+    double size, spacing; /* finite */
+    model_resolution res;
+    const char *font, *direction, *language, *script, *halign, *valign;
+} model_text;
+
 struct model_node {
     model_kind kind;
     unsigned modifiers;             /* MODEL_MOD_* */
@@ -176,10 +287,9 @@ struct model_node {
     sc_location loc;                /* of the name */
     uint32_t child_count;           /* children written in the file (lowered or not) */
     model_node *first_child, *next; /* lowered children, in file order */
-    /* The syntax node, for the kinds whose builders still read their own
-     * arguments and subtree (the extrusions, hull, minkowski, resize,
-     * surface, import, 2D shapes). */
-    const parse_node *syntax;
+    /* 2D context (above): the node's argument error, for its builder to
+     * report where it reads the arguments; NULL when they are good. */
+    const sc_error *pending;
     union {
         struct {
             double size[3];
@@ -213,6 +323,16 @@ struct model_node {
         const shading_camera *camera;   /* camera: world coordinates */
         const float *background;        /* background: 3 colour components */
         const sc_error *error;          /* MODEL_ERROR */
+        /* 2D context (read after pending) */
+        const model_circle *circle;
+        const model_square *square;
+        const model_polygon *polygon;
+        const model_offset *offset;
+        const model_drawing *drawing; /* MODEL_IMPORT in 2D */
+        const model_text *text;
+        const model_linear_extrude *linear_extrude;
+        const model_rotate_extrude *rotate_extrude;
+        const model_resize *resize;
     } u;
 };
 
@@ -228,11 +348,16 @@ typedef struct model {
  * allocate is SC_ERR_NOMEM in error, with *out NULL. */
 sc_status model_lower(const parse_tree *syntax, model **out, sc_error *error);
 
+/* Lowers the node n alone, and its subtree, in the 2D context into *out
+ * (free with model_free; its first node is n's): a 2D subtree or an
+ * extrusion for the 2D builders on their own (their tests). Fails only
+ * for memory. */
+sc_status model_lower_twod(const char *file, const parse_node *n, model **out,
+                           sc_error *error);
+
 void model_free(model *m);
 
-/* The kind of a node name, through the lowering pass's one table: for the
- * builders that still walk their own subtree of the syntax tree (hull,
- * minkowski, resize, the extrusions, 2D shapes). */
+/* The kind of a node name, through the lowering pass's one table. */
 model_kind model_kind_of(const char *name);
 
 /* Whether kind is a leaf (the builder does not walk its children). */

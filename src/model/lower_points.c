@@ -1,0 +1,234 @@
+/* Lowering in the points context (model.h): the nodes below hull,
+ * minkowski and resize, whose builder (build/build_hull.c) reads each
+ * node where its walk reaches it, in file order, and names no node it
+ * cannot take before it gets there; so each node's first argument error
+ * is kept in it (pending) and lowering goes on.
+ *
+ * The checks, their order and their messages are the hull builder's:
+ *   cube, sphere, cylinder, multmatrix, import, surface, torus, quadric,
+ *                implicit      as in the main model (model/args.c,
+ *                              lower_curved.c)
+ *   polyhedron   nothing without both points and faces; else points a
+ *                vector of finite [x, y, z], then each face a vector of
+ *                indices of the points, in file order
+ *   resize       newsize a vector of up to 3 finite numbers, auto true,
+ *                false or a vector of them (or numbers), then no negative
+ *                size
+ *   linear_extrude, rotate_extrude   as in the 2D context (lower_twod.c)
+ * group, union, render, color and material take no arguments here, nor
+ * do hull and minkowski.
+ */
+#include "model/lower_points.h"
+
+#include <math.h>
+#include <string.h>
+
+#include "base/error.h"
+#include "model/args.h"
+#include "model/lower_curved.h"
+#include "model/lower_twod.h"
+
+typedef struct points_lowerer {
+    arena *mem;
+    model_reader r; /* its error is the pending error being made */
+    int nomem;
+} points_lowerer;
+
+static void *alloc(points_lowerer *l, size_t size)
+{
+    void *p = arena_calloc(l->mem, 1, size ? size : 1);
+    l->nomem |= p == NULL;
+    return p;
+}
+
+static const char points_expected[] = "a vector of [x, y, z] points";
+static const char faces_expected[] = "a vector of faces, each a vector of point indices";
+
+static sc_status lower_polyhedron(points_lowerer *l, const parse_node *n, model_node *out)
+{
+    const parse_value *pts = model_arg(n, "points", 0);
+    const char *faces_name = "faces";
+    const parse_value *faces = model_arg(n, "faces", 1);
+    if (!faces && (faces = model_arg(n, "triangles", -1)))
+        faces_name = "triangles";
+    if (!pts || !faces)
+        return SC_OK;
+    if (pts->kind != PARSE_VECTOR)
+        return model_wrong_type(&l->r, n, "points", pts, points_expected);
+    if (faces->kind != PARSE_VECTOR)
+        return model_wrong_type(&l->r, n, faces_name, faces, faces_expected);
+    uint32_t np = pts->u.vector.count, nf = faces->u.vector.count;
+    size_t total = 0;
+    for (uint32_t f = 0; f < nf; f++) {
+        const parse_value *fv = &faces->u.vector.items[f];
+        total += fv->kind == PARSE_VECTOR ? fv->u.vector.count : 0;
+    }
+    vec3 *p = alloc(l, (size_t)np * sizeof *p);
+    uint32_t *start = alloc(l, ((size_t)nf + 1) * sizeof *start);
+    uint32_t *index = total <= UINT32_MAX ? alloc(l, total * sizeof *index) : NULL;
+    if (!p || !start || !index) {
+        l->nomem = 1;
+        return SC_ERR_NOMEM;
+    }
+    for (uint32_t i = 0; i < np; i++) {
+        const parse_value *pv = &pts->u.vector.items[i];
+        int ok = pv->kind == PARSE_VECTOR && pv->u.vector.count == 3;
+        double xyz[3] = {0, 0, 0};
+        for (int k = 0; ok && k < 3; k++) {
+            ok = pv->u.vector.items[k].kind == PARSE_NUMBER &&
+                 isfinite(pv->u.vector.items[k].u.number);
+            if (ok)
+                xyz[k] = pv->u.vector.items[k].u.number;
+        }
+        if (!ok)
+            return model_wrong_type(&l->r, n, "points", pv, points_expected);
+        p[i] = v3(xyz[0], xyz[1], xyz[2]);
+    }
+    uint32_t at = 0;
+    for (uint32_t f = 0; f < nf; f++) {
+        const parse_value *fv = &faces->u.vector.items[f];
+        if (fv->kind != PARSE_VECTOR)
+            return model_wrong_type(&l->r, n, faces_name, fv, faces_expected);
+        start[f] = at;
+        for (uint32_t i = 0; i < fv->u.vector.count; i++) {
+            const parse_value *iv = &fv->u.vector.items[i];
+            double x = iv->kind == PARSE_NUMBER ? iv->u.number : -1;
+            if (!(x >= 0 && x < (double)np && x == floor(x))) {
+                sc_location loc = model_loc(&l->r, iv);
+                return err_set(
+                    l->r.error, SC_ERR_SEMANTIC, &loc,
+                    "polyhedron face %u: point index is not one of the %u points", f, np);
+            }
+            index[at++] = (uint32_t)x;
+        }
+    }
+    start[nf] = at;
+    out->u.polyhedron.points = p;
+    out->u.polyhedron.point_count = np;
+    out->u.polyhedron.indices = index;
+    out->u.polyhedron.face_start = start;
+    out->u.polyhedron.face_count = nf;
+    return SC_OK;
+}
+
+/* A vector of up to 3 numbers (newsize) or flags (auto: true/false or
+ * numbers, as OpenSCAD writes them). */
+static sc_status read_triple(points_lowerer *l, const parse_node *n, const char *name,
+                             int position, int flags, double out[3])
+{
+    const parse_value *v = model_arg(n, name, position);
+    static const char numbers[] = "a vector of numbers";
+    static const char bools[] = "true, false or a vector of them";
+    if (!v)
+        return SC_OK;
+    if (flags && v->kind == PARSE_BOOL) {
+        out[0] = out[1] = out[2] = v->u.boolean;
+        return SC_OK;
+    }
+    if (v->kind != PARSE_VECTOR)
+        return model_wrong_type(&l->r, n, name, v, flags ? bools : numbers);
+    for (uint32_t i = 0; i < v->u.vector.count && i < 3; i++) {
+        const parse_value *item = &v->u.vector.items[i];
+        if (flags && item->kind == PARSE_BOOL)
+            out[i] = item->u.boolean;
+        else if (item->kind == PARSE_NUMBER && isfinite(item->u.number))
+            out[i] = flags ? item->u.number != 0 : item->u.number;
+        else
+            return model_wrong_type(&l->r, n, name, item, flags ? bools : numbers);
+    }
+    return SC_OK;
+}
+
+static sc_status lower_resize(points_lowerer *l, const parse_node *n, model_node *out)
+{
+    model_resize *r = alloc(l, sizeof *r);
+    if (!r)
+        return SC_ERR_NOMEM;
+    out->u.resize = r;
+    sc_status st = read_triple(l, n, "newsize", 0, 0, r->size);
+    if (st == SC_OK)
+        st = read_triple(l, n, "auto", 1, 1, r->autosize);
+    for (int k = 0; st == SC_OK && k < 3; k++) {
+        if (r->size[k] < 0) {
+            sc_location loc = model_loc(&l->r, model_arg(n, "newsize", 0));
+            return err_set(l->r.error, SC_ERR_UNSUPPORTED, &loc,
+                           "resize to a negative size is not supported yet");
+        }
+    }
+    return st;
+}
+
+static sc_status lower_matrix(points_lowerer *l, const parse_node *n, model_node *out)
+{
+    return model_read_xform(&l->r, l->mem, n, &out->u.xform);
+}
+
+static sc_status lower_leaf(points_lowerer *l, const parse_node *n, model_node *out)
+{
+    switch (out->kind) {
+    case MODEL_CUBE:
+        return model_cube(&l->r, n, out->u.cube.size, &out->u.cube.center);
+    case MODEL_SPHERE:
+        return model_read_sphere(&l->r, n, &out->u.sphere.r, &out->u.sphere.res);
+    case MODEL_CYLINDER:
+        return model_read_cylinder(&l->r, n, &out->u.cylinder.h, &out->u.cylinder.r1,
+                                   &out->u.cylinder.r2, &out->u.cylinder.center,
+                                   &out->u.cylinder.res);
+    case MODEL_IMPORT: {
+        model_import *import = alloc(l, sizeof *import);
+        if (!import)
+            return SC_ERR_NOMEM;
+        out->u.import = import;
+        return model_read_import(&l->r, n, import);
+    }
+    case MODEL_SURFACE: {
+        model_surface *surface = alloc(l, sizeof *surface);
+        if (!surface)
+            return SC_ERR_NOMEM;
+        out->u.surface = surface;
+        return model_read_surface(&l->r, n, surface);
+    }
+    case MODEL_TORUS: {
+        model_torus *t = alloc(l, sizeof *t);
+        if (!t)
+            return SC_ERR_NOMEM;
+        out->u.torus = t;
+        return model_read_torus(&l->r, n, t);
+    }
+    case MODEL_QUADRIC: {
+        model_quadric *q = alloc(l, sizeof *q);
+        if (!q)
+            return SC_ERR_NOMEM;
+        out->u.quadric = q;
+        return model_read_quadric(&l->r, n, q);
+    }
+    case MODEL_IMPLICIT: {
+        model_implicit *f = alloc(l, sizeof *f);
+        if (!f)
+            return SC_ERR_NOMEM;
+        out->u.implicit = f;
+        return model_read_implicit(&l->r, n, f);
+    }
+    default:
+        return SC_OK;
+    }
+}
+
+sc_status model_points_args(arena *mem, const char *file, const parse_node *n,
+                            model_node *out, sc_error *error)
+{
+    if (out->kind == MODEL_LINEAR_EXTRUDE || out->kind == MODEL_ROTATE_EXTRUDE)
+        return model_twod_args(mem, file, n, out, error);
+    sc_error pending;
+    points_lowerer l = {mem, {file, &pending}, 0};
+    sc_status st;
+    if (out->kind == MODEL_POLYHEDRON)
+        st = lower_polyhedron(&l, n, out);
+    else if (out->kind == MODEL_RESIZE)
+        st = lower_resize(&l, n, out);
+    else if (out->kind == MODEL_XFORM)
+        st = lower_matrix(&l, n, out);
+    else
+        st = lower_leaf(&l, n, out);
+    return model_keep_pending(mem, st, l.nomem, &pending, out, error);
+}

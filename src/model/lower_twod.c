@@ -1,0 +1,437 @@
+/* Lowering in the 2D context (model.h): the arguments of the 2D nodes
+ * below an extrusion, each node's first argument error kept in the node
+ * (pending) rather than ending the lowering, since each builder of 2D
+ * subtrees reads a node's arguments at its own point of its walk (an
+ * offset after its children, a square before them).
+ *
+ * The checks, their order and their messages are the ones the 2D readers
+ * have always made: model/args.c's readers, then per kind
+ *   polygon   each path entry one of the points (model_polygon_index), in
+ *             path order; the first bad entry ends the paths (model.h)
+ *   offset    r, then $fn, $fa, $fs, then (without r) delta and chamfer;
+ *             the size must be finite
+ *   import    a file name, not .svg (not supported yet), .dxf (otherwise
+ *             the builder names the operation that asked), then $fn, $fa,
+ *             $fs, scale, layer, origin [x, y], origin and scale finite
+ *   text      text, size, font, direction, language, script, halign,
+ *             valign, spacing, $fn, $fa, $fs; at most
+ *             MODEL_MAX_TEXT_BYTES bytes without a NUL; size and spacing
+ *             finite
+ */
+#include "model/lower_twod.h"
+
+#include <math.h>
+#include <string.h>
+
+#include "base/error.h"
+#include "model/args.h"
+
+typedef struct twod_lowerer {
+    arena *mem;
+    model_reader r; /* its error is the pending error being made */
+    int nomem;
+} twod_lowerer;
+
+static void *alloc(twod_lowerer *l, size_t size)
+{
+    void *p = arena_calloc(l->mem, 1, size);
+    l->nomem |= p == NULL;
+    return p;
+}
+
+static sc_status lower_square(twod_lowerer *l, const parse_node *n, model_node *out)
+{
+    model_square *s = alloc(l, sizeof *s);
+    if (!s)
+        return SC_ERR_NOMEM;
+    out->u.square = s;
+    return model_read_square(&l->r, n, &s->sx, &s->sy, &s->center);
+}
+
+static sc_status lower_circle(twod_lowerer *l, const parse_node *n, model_node *out)
+{
+    model_circle *c = alloc(l, sizeof *c);
+    if (!c)
+        return SC_ERR_NOMEM;
+    out->u.circle = c;
+    return model_read_circle(&l->r, n, c);
+}
+
+/* The paths' indices, in path order, up to the first bad one. */
+static sc_status read_paths(twod_lowerer *l, const parse_value *paths, model_polygon *p)
+{
+    uint32_t count = paths->u.vector.count;
+    size_t total = 0;
+    for (uint32_t k = 0; k < count; k++)
+        total += paths->u.vector.items[k].u.vector.count;
+    uint32_t *start = arena_calloc(l->mem, (size_t)count + 1, sizeof *start);
+    uint32_t *index = arena_calloc(l->mem, total ? total : 1, sizeof *index);
+    if (!start || !index || total > UINT32_MAX) {
+        l->nomem = 1;
+        return SC_ERR_NOMEM;
+    }
+    p->path_start = start;
+    p->index = index;
+    uint32_t at = 0;
+    for (uint32_t k = 0; k < count; k++) {
+        const parse_value *path = &paths->u.vector.items[k];
+        start[k] = at;
+        p->path_count = k + 1;
+        for (uint32_t i = 0; i < path->u.vector.count; i++) {
+            sc_status st = model_polygon_index(&l->r, &path->u.vector.items[i], k,
+                                               p->point_count, &index[at]);
+            if (st != SC_OK) {
+                start[k + 1] = at;
+                return st;
+            }
+            at++;
+        }
+    }
+    start[count] = at;
+    return SC_OK;
+}
+
+static sc_status lower_polygon(twod_lowerer *l, const parse_node *n, model_node *out)
+{
+    model_polygon *p = alloc(l, sizeof *p);
+    if (!p)
+        return SC_ERR_NOMEM;
+    out->u.polygon = p;
+    const parse_value *pts, *paths;
+    sc_status st = model_read_polygon(&l->r, n, &pts, &paths);
+    if (st != SC_OK || !pts)
+        return st;
+    uint32_t np = pts->u.vector.count;
+    double *xy = arena_alloc(l->mem, (np ? np : 1) * 2 * sizeof *xy);
+    if (!xy) {
+        l->nomem = 1;
+        return SC_ERR_NOMEM;
+    }
+    for (uint32_t i = 0; i < np; i++) {
+        const parse_value *v = &pts->u.vector.items[i];
+        xy[2 * i] = v->u.vector.items[0].u.number;
+        xy[2 * i + 1] = v->u.vector.items[1].u.number;
+    }
+    p->xy = xy;
+    p->point_count = np;
+    p->has_points = 1;
+    if (!paths)
+        return SC_OK;
+    p->has_paths = 1;
+    sc_error *bad = arena_alloc(l->mem, sizeof *bad);
+    if (!bad) {
+        l->nomem = 1;
+        return SC_ERR_NOMEM;
+    }
+    sc_error *outer = l->r.error;
+    l->r.error = bad;
+    st = read_paths(l, paths, p);
+    l->r.error = outer;
+    if (st != SC_OK && !l->nomem)
+        p->bad_index = bad;
+    return l->nomem ? SC_ERR_NOMEM : SC_OK;
+}
+
+static sc_status number(twod_lowerer *l, const parse_node *n, const char *name,
+                        int position, double *out, int *given)
+{
+    if (given)
+        *given = model_arg(n, name, position) != NULL;
+    return model_number(&l->r, n, name, position, out);
+}
+
+static sc_status lower_offset(twod_lowerer *l, const parse_node *n, model_node *out)
+{
+    model_offset *o = alloc(l, sizeof *o);
+    if (!o)
+        return SC_ERR_NOMEM;
+    out->u.offset = o;
+    model_resolution *res = &o->res;
+    o->delta = 1;
+    sc_status st;
+    if ((st = number(l, n, "r", 0, &o->delta, &o->has_r)) != SC_OK ||
+        (st = model_read_resolution(&l->r, n, &res->fn, &res->fa, &res->fs)) != SC_OK)
+        return st;
+    if (!o->has_r &&
+        ((st = number(l, n, "delta", -1, &o->delta, &o->has_delta)) != SC_OK ||
+         (st = model_bool(&l->r, n, "chamfer", -1, &o->chamfer)) != SC_OK))
+        return st;
+    if (!isfinite(o->delta))
+        return err_set(l->r.error, SC_ERR_SEMANTIC, &n->loc, "offset: %s must be finite",
+                       o->has_r ? "r" : "delta");
+    return SC_OK;
+}
+
+static sc_status lower_drawing(twod_lowerer *l, const parse_node *n, model_node *out)
+{
+    model_drawing *d = alloc(l, sizeof *d);
+    if (!d)
+        return SC_ERR_NOMEM;
+    out->u.drawing = d;
+    d->scale = 1;
+    const parse_value *file = model_arg(n, "file", 0);
+    if (!file)
+        return err_set(l->r.error, SC_ERR_SEMANTIC, &n->loc,
+                       "missing argument 'file' of 'import'");
+    if (file->kind != PARSE_STRING)
+        return model_wrong_type(&l->r, n, "file", file, "a file name");
+    d->file = file->u.string.chars;
+    d->file_loc = model_loc(&l->r, file);
+    if (model_has_suffix(d->file, ".svg"))
+        return err_set(l->r.error, SC_ERR_UNSUPPORTED, &d->file_loc,
+                       "import of '%s' is not supported yet (2D: only .dxf files)",
+                       d->file);
+    if (!model_has_suffix(d->file, ".dxf")) {
+        d->not_2d = 1;
+        return SC_OK;
+    }
+    model_resolution *res = &d->res;
+    sc_status st;
+    if ((st = model_read_resolution(&l->r, n, &res->fn, &res->fa, &res->fs)) != SC_OK ||
+        (st = number(l, n, "scale", -1, &d->scale, NULL)) != SC_OK)
+        return st;
+    const parse_value *layer = model_arg(n, "layer", -1);
+    if (layer && layer->kind != PARSE_STRING)
+        return model_wrong_type(&l->r, n, "layer", layer, "a layer name");
+    d->layer = layer ? layer->u.string.chars : NULL;
+    const parse_value *origin = model_arg(n, "origin", -1);
+    if (origin) {
+        if (origin->kind != PARSE_VECTOR || origin->u.vector.count != 2 ||
+            origin->u.vector.items[0].kind != PARSE_NUMBER ||
+            origin->u.vector.items[1].kind != PARSE_NUMBER)
+            return model_wrong_type(&l->r, n, "origin", origin, "[x, y]");
+        d->origin[0] = origin->u.vector.items[0].u.number;
+        d->origin[1] = origin->u.vector.items[1].u.number;
+    }
+    if (!isfinite(d->scale) || !isfinite(d->origin[0]) || !isfinite(d->origin[1]))
+        return err_set(l->r.error, SC_ERR_SEMANTIC, &n->loc,
+                       "import: origin and scale must be finite");
+    return SC_OK;
+}
+
+static sc_status string(twod_lowerer *l, const parse_node *n, const char *name,
+                        int position, const char **out)
+{
+    const parse_value *v = model_arg(n, name, position);
+    if (!v)
+        return SC_OK;
+    if (v->kind != PARSE_STRING)
+        return model_wrong_type(&l->r, n, name, v, "a string");
+    *out = v->u.string.chars;
+    return SC_OK;
+}
+
+static sc_status lower_text(twod_lowerer *l, const parse_node *n, model_node *out)
+{
+    model_text *a = alloc(l, sizeof *a);
+    if (!a)
+        return SC_ERR_NOMEM;
+    out->u.text = a;
+    a->text = "";
+    a->size = 10;
+    a->spacing = 1;
+    a->res = (model_resolution){0, 12, 2};
+    a->font = a->direction = a->script = "";
+    a->language = "en";
+    a->halign = "left";
+    a->valign = "baseline";
+    model_resolution *res = &a->res;
+    sc_status st;
+    if ((st = string(l, n, "text", 0, &a->text)) != SC_OK ||
+        (st = model_number(&l->r, n, "size", 1, &a->size)) != SC_OK ||
+        (st = string(l, n, "font", 2, &a->font)) != SC_OK ||
+        (st = string(l, n, "direction", -1, &a->direction)) != SC_OK ||
+        (st = string(l, n, "language", -1, &a->language)) != SC_OK ||
+        (st = string(l, n, "script", -1, &a->script)) != SC_OK ||
+        (st = string(l, n, "halign", -1, &a->halign)) != SC_OK ||
+        (st = string(l, n, "valign", -1, &a->valign)) != SC_OK ||
+        (st = model_number(&l->r, n, "spacing", -1, &a->spacing)) != SC_OK ||
+        (st = model_read_resolution(&l->r, n, &res->fn, &res->fa, &res->fs)) != SC_OK)
+        return st;
+    const parse_value *tv = model_arg(n, "text", 0);
+    a->length = tv ? tv->u.string.length : 0;
+    if (a->length > MODEL_MAX_TEXT_BYTES) {
+        sc_location loc = model_loc(&l->r, tv);
+        return err_set(l->r.error, SC_ERR_LIMIT, &loc,
+                       "text is too long (%zu bytes; limit is %d)", a->length,
+                       MODEL_MAX_TEXT_BYTES);
+    }
+    if (memchr(a->text, 0, a->length)) {
+        sc_location loc = model_loc(&l->r, tv);
+        return err_set(l->r.error, SC_ERR_SEMANTIC, &loc, "text must not contain a NUL");
+    }
+    if (!isfinite(a->size))
+        return err_set(l->r.error, SC_ERR_SEMANTIC, &n->loc,
+                       "text: size must be a finite number (got %g)", a->size);
+    if (!isfinite(a->spacing))
+        return err_set(l->r.error, SC_ERR_SEMANTIC, &n->loc,
+                       "text: spacing must be a finite number (got %g)", a->spacing);
+    return SC_OK;
+}
+
+/* height and center, all the exact builders read. */
+static sc_status exact_extrude_args(twod_lowerer *l, const parse_node *n,
+                                    model_linear_extrude *e)
+{
+    sc_status st = model_number(&l->r, n, "height", 0, &e->height);
+    if (st == SC_OK)
+        st = model_bool(&l->r, n, "center", 1, &e->center);
+    return st;
+}
+
+/* The faithful builder's arguments, in its order. */
+static sc_status faithful_extrude_args(twod_lowerer *l, const parse_node *n,
+                                       model_linear_extrude *e)
+{
+    model_resolution *res = &e->res;
+    sc_status st;
+    if (model_arg(n, "file", -1))
+        return err_set(l->r.error, SC_ERR_UNSUPPORTED, &n->loc,
+                       "linear_extrude of a file is not supported yet");
+    if ((st = model_number(&l->r, n, "height", 0, &e->height)) != SC_OK ||
+        (st = model_number(&l->r, n, "twist", -1, &e->twist)) != SC_OK ||
+        (st = model_number(&l->r, n, "slices", -1, &e->slices)) != SC_OK ||
+        (st = model_read_resolution(&l->r, n, &res->fn, &res->fa, &res->fs)) != SC_OK ||
+        (st = model_bool(&l->r, n, "center", 1, &e->center)) != SC_OK)
+        return st;
+    const parse_value *sv = model_arg(n, "scale", -1);
+    if (sv && sv->kind == PARSE_NUMBER) {
+        e->sx = e->sy = sv->u.number;
+    } else if (sv && sv->kind == PARSE_VECTOR && sv->u.vector.count == 2 &&
+               sv->u.vector.items[0].kind == PARSE_NUMBER &&
+               sv->u.vector.items[1].kind == PARSE_NUMBER) {
+        e->sx = sv->u.vector.items[0].u.number;
+        e->sy = sv->u.vector.items[1].u.number;
+    } else if (sv) {
+        return model_wrong_type(&l->r, n, "scale", sv, "a number or [x, y]");
+    }
+    if (!isfinite(e->sx) || !isfinite(e->sy)) {
+        sc_location loc = model_loc(&l->r, sv);
+        return err_set(l->r.error, SC_ERR_SEMANTIC, &loc,
+                       "linear_extrude: scale must be finite");
+    }
+    if (!isfinite(e->twist)) {
+        sc_location loc = model_loc(&l->r, model_arg(n, "twist", -1));
+        return err_set(l->r.error, SC_ERR_SEMANTIC, &loc,
+                       "linear_extrude: twist must be finite");
+    }
+    /* OpenSCAD: negative scales are 0, slices are truncated to an integer
+     * and count when positive, a non-finite slice count is not given */
+    e->sx = e->sx < 0 ? 0 : e->sx;
+    e->sy = e->sy < 0 ? 0 : e->sy;
+    e->slices = isfinite(e->slices) && e->slices >= 1 ? trunc(e->slices) : 0;
+    if (e->slices > MODEL_MAX_SLICES) {
+        sc_location loc = model_loc(&l->r, model_arg(n, "slices", -1));
+        return err_set(l->r.error, SC_ERR_LIMIT, &loc,
+                       "linear_extrude: %g slices are too many (limit is %.0f)",
+                       e->slices, MODEL_MAX_SLICES);
+    }
+    return SC_OK;
+}
+
+/* Twist absent or 0, scale absent, 1 or [1, 1], whatever else is wrong. */
+static int plain_extrude(const parse_node *n)
+{
+    const parse_value *twist = model_arg(n, "twist", -1);
+    if (twist && !(twist->kind == PARSE_NUMBER && twist->u.number == 0))
+        return 0;
+    const parse_value *sv = model_arg(n, "scale", -1);
+    return !sv || (sv->kind == PARSE_NUMBER && sv->u.number == 1) ||
+           (sv->kind == PARSE_VECTOR && sv->u.vector.count == 2 &&
+            sv->u.vector.items[0].kind == PARSE_NUMBER &&
+            sv->u.vector.items[0].u.number == 1 &&
+            sv->u.vector.items[1].kind == PARSE_NUMBER &&
+            sv->u.vector.items[1].u.number == 1);
+}
+
+static sc_status lower_linear_extrude(twod_lowerer *l, const parse_node *n,
+                                      model_node *out)
+{
+    model_linear_extrude *e = alloc(l, sizeof *e);
+    sc_error *exact = arena_alloc(l->mem, sizeof *exact);
+    if (!e || !exact) {
+        l->nomem = 1;
+        return SC_ERR_NOMEM;
+    }
+    out->u.linear_extrude = e;
+    e->height = 100;
+    e->sx = e->sy = 1;
+    e->res = (model_resolution){0, 12, 2};
+    e->plain = plain_extrude(n);
+    sc_error *outer = l->r.error;
+    l->r.error = exact;
+    if (exact_extrude_args(l, n, e) != SC_OK)
+        e->exact_error = exact;
+    l->r.error = outer;
+    return faithful_extrude_args(l, n, e);
+}
+
+static sc_status lower_rotate_extrude(twod_lowerer *l, const parse_node *n,
+                                      model_node *out)
+{
+    model_rotate_extrude *e = alloc(l, sizeof *e);
+    if (!e)
+        return SC_ERR_NOMEM;
+    out->u.rotate_extrude = e;
+    e->angle = 360;
+    e->res = (model_resolution){0, 12, 2};
+    model_resolution *res = &e->res;
+    sc_status st;
+    if ((st = model_number(&l->r, n, "angle", -1, &e->angle)) != SC_OK ||
+        (st = model_read_resolution(&l->r, n, &res->fn, &res->fa, &res->fs)) != SC_OK)
+        return st;
+    const parse_value *cv = model_arg(n, "convexity", -1);
+    if (cv && cv->kind != PARSE_NUMBER)
+        return model_wrong_type(&l->r, n, "convexity", cv, "a number");
+    if (model_arg(n, "file", -1))
+        return err_set(l->r.error, SC_ERR_UNSUPPORTED, &n->loc,
+                       "rotate_extrude of a file is not supported yet (use a child "
+                       "import())");
+    return SC_OK;
+}
+
+/* multmatrix(m) below an extrusion: the builders take its xy part. */
+static sc_status lower_matrix(twod_lowerer *l, const parse_node *n, model_node *out)
+{
+    return model_read_xform(&l->r, l->mem, n, &out->u.xform);
+}
+
+sc_status model_twod_args(arena *mem, const char *file, const parse_node *n,
+                          model_node *out, sc_error *error)
+{
+    sc_error pending;
+    twod_lowerer l = {mem, {file, &pending}, 0};
+    sc_status st = SC_OK;
+    switch (out->kind) {
+    case MODEL_SQUARE:
+        st = lower_square(&l, n, out);
+        break;
+    case MODEL_CIRCLE:
+        st = lower_circle(&l, n, out);
+        break;
+    case MODEL_POLYGON:
+        st = lower_polygon(&l, n, out);
+        break;
+    case MODEL_OFFSET:
+        st = lower_offset(&l, n, out);
+        break;
+    case MODEL_IMPORT:
+        st = lower_drawing(&l, n, out);
+        break;
+    case MODEL_TEXT:
+        st = lower_text(&l, n, out);
+        break;
+    case MODEL_XFORM:
+        st = lower_matrix(&l, n, out);
+        break;
+    case MODEL_LINEAR_EXTRUDE:
+        st = lower_linear_extrude(&l, n, out);
+        break;
+    case MODEL_ROTATE_EXTRUDE:
+        st = lower_rotate_extrude(&l, n, out);
+        break;
+    default:
+        break;
+    }
+    return model_keep_pending(mem, st, l.nomem, &pending, out, error);
+}
