@@ -5,6 +5,8 @@
 #   LIBDIR/spancast/spancast-oiio.so      helpers the tool and the library look
 #   LIBDIR/spancast/spancast-bench        for there (src/formats/file.c)
 #   LIBDIR/spancast/spancast-view         the viewer `spancast view` starts (SDL2)
+#   LIBDIR/spancast/spancast-mpi          what `spancast render` runs under mpirun
+#                                         (Open MPI; when it was found)
 #   LIBDIR/libspancast.so.X.Y.Z           the shared library, soname .so.X.Y while
 #                                         X is 0, and the .so link for -lspancast
 #   include/spancast/*.h                  the public headers, version.h generated
@@ -25,6 +27,9 @@ install(TARGETS spancast RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 install(TARGETS spancast_oiio LIBRARY DESTINATION ${SPANCAST_HELPERS_DIR})
 install(TARGETS spancast-bench RUNTIME DESTINATION ${SPANCAST_HELPERS_DIR})
 install(TARGETS spancast_view RUNTIME DESTINATION ${SPANCAST_HELPERS_DIR})
+if(TARGET spancast_mpi)
+  install(TARGETS spancast_mpi RUNTIME DESTINATION ${SPANCAST_HELPERS_DIR})
+endif()
 install(TARGETS spancast_shared EXPORT spancastTargets
         LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}
         INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})

@@ -52,7 +52,9 @@
 #include <unistd.h>
 
 #include "cli/cli.h"
+#include "cli/dist.h"
 #include "cli/scad.h"
+#include "cli/tiles.h"
 #include "cli/watch.h"
 #include "formats/file.h"
 #include "formats/image_io.h"
@@ -61,6 +63,11 @@
 #include "spancast/spancast.h"
 
 enum { EXIT_FAILED = 1, EXIT_USAGE = 2 };
+
+/* What `render` does under mpirun (CMakeLists.txt says). */
+#ifndef SPANCAST_MPI_SUPPORT
+#define SPANCAST_MPI_SUPPORT "not built"
+#endif
 
 static const char usage_text[] =
     "usage: spancast render MODEL -o OUT.png [options]\n"
@@ -120,6 +127,12 @@ static const char usage_text[] =
     "  --threads=N            worker threads (default 0: all cores)\n"
     "  --faithful             spheres and cylinders as the polyhedra OpenSCAD makes\n"
     "                         from $fn, $fa, $fs (default: exact solids)\n"
+    "  --tiled                write tiled .exr files, each tile as soon as it is\n"
+    "                         rendered, never holding the whole image (the default\n"
+    "                         for images whose buffers do not fit in memory)\n"
+    "\n"
+    "Under mpirun -np N (N > 1), render hands tiles out to all N ranks; the\n"
+    "files are the same as one process writes.\n"
     "\n"
     "preview options (CAD-style renders):\n"
     "  --colorscheme=NAME     OpenSCAD's colour scheme: Cornfield (built in) or one\n"
@@ -221,7 +234,8 @@ typedef enum opt_id {
     OPT_SECTION_STYLE,
     OPT_AO,
     OPT_AO_RADIUS,
-    OPT_WATCH
+    OPT_WATCH,
+    OPT_TILED
 } opt_id;
 
 typedef struct opt_spec {
@@ -263,6 +277,7 @@ static const opt_spec options_table[] = {
     {"--ao", OPT_AO, 1, 1},
     {"--ao-radius", OPT_AO_RADIUS, 1, 1},
     {"--watch", OPT_WATCH, 0, 1},
+    {"--tiled", OPT_TILED, 0, 1},
 };
 
 typedef struct cli_args {
@@ -276,6 +291,7 @@ typedef struct cli_args {
     int camera_given;     /* --camera */
     sc_view_preset preset; /* --view-preset */
 
+    int tiled;          /* --tiled: stream the outputs tile by tile */
     int watch;          /* --watch: render again on every change */
     watch_set *watched; /* with --watch: the files the model was loaded from */
     sc_render_options options;
@@ -423,6 +439,9 @@ static int apply_option(cli_args *a, const opt_spec *spec, const char *value)
                                         value);
     case OPT_WATCH:
         a->watch = 1;
+        return 0;
+    case OPT_TILED:
+        a->tiled = 1;
         return 0;
     }
     return 0;
@@ -589,15 +608,16 @@ static sc_scene *load(const char *path, int faithful, watch_set *watched)
     sc_error error;
     if (watched)
         watch_add_file(watched, path);
-    sc_status st = scad_is_source(path)
-                       ? scad_load_files(path, &lo, &scene, &error,
-                                         watched ? watch_add_file : NULL, watched)
-                       : sc_scene_load(path, &lo, &scene, &error);
+    sc_status st =
+        dist_size() > 1        ? dist_load(path, &lo, &scene, &error) /* rank 0 reads */
+        : scad_is_source(path) ? scad_load_files(path, &lo, &scene, &error,
+                                                 watched ? watch_add_file : NULL, watched)
+                               : sc_scene_load(path, &lo, &scene, &error);
     if (st != SC_OK) {
         print_error(&error);
         return NULL;
     }
-    size_t warnings = sc_scene_warning_count(scene);
+    size_t warnings = dist_rank() == 0 ? sc_scene_warning_count(scene) : 0;
     for (size_t k = 0; k < warnings; k++)
         print_warning(sc_scene_warning(scene, k));
     return scene;
@@ -753,9 +773,11 @@ static int run_render(cli_args *a, int argc, char **argv)
         (a->normal && imgio_check(a->normal, IMGIO_NORMAL, &error)) ||
         (a->id && imgio_check(a->id, IMGIO_ID, &error)))
         return cli_usage_error("%s", error.message);
-    if (!output_writable(a->output) || (a->mask && !output_writable(a->mask)) ||
-        (a->depth && !output_writable(a->depth)) ||
-        (a->normal && !output_writable(a->normal)) || (a->id && !output_writable(a->id)))
+    if (dist_rank() == 0 && /* rank 0 writes the files */
+        (!output_writable(a->output) || (a->mask && !output_writable(a->mask)) ||
+         (a->depth && !output_writable(a->depth)) ||
+         (a->normal && !output_writable(a->normal)) ||
+         (a->id && !output_writable(a->id))))
         return EXIT_FAILED;
 
     double start = seconds_now();
@@ -788,7 +810,10 @@ static int run_render(cli_args *a, int argc, char **argv)
     }
     sc_framebuffer *fb = NULL;
     int status = 0;
-    sc_status st = sc_render(scene, &a->options, &fb, &error);
+    /* One sc_render, or tiles across MPI ranks or streamed to the files. */
+    tiles_outputs outputs = {a->output, a->mask, a->depth, a->normal, a->id, a->tiled};
+    int streamed = 0;
+    sc_status st = tiles_render(scene, &a->options, &outputs, &fb, &streamed, &error);
     if (st == SC_ERR_CANCELLED)
         return die_interrupted();
     if (st != SC_OK) {
@@ -797,12 +822,17 @@ static int run_render(cli_args *a, int argc, char **argv)
         sc_scene_release(scene);
         return st == SC_ERR_ARGUMENT ? EXIT_USAGE : EXIT_FAILED;
     }
+    if (!fb) { /* an MPI rank other than 0: rank 0 writes and reports */
+        sc_scene_release(scene);
+        return 0;
+    }
     double written = seconds_now();
-    if (sc_framebuffer_write_color(fb, a->output, &error) != SC_OK ||
-        (a->mask && sc_framebuffer_write_mask(fb, a->mask, &error) != SC_OK) ||
-        (a->depth && sc_framebuffer_write_depth(fb, a->depth, &error) != SC_OK) ||
-        (a->normal && sc_framebuffer_write_normal(fb, a->normal, &error) != SC_OK) ||
-        (a->id && sc_framebuffer_write_id(fb, a->id, &error) != SC_OK)) {
+    if (!streamed && /* else written tile by tile */
+        (sc_framebuffer_write_color(fb, a->output, &error) != SC_OK ||
+         (a->mask && sc_framebuffer_write_mask(fb, a->mask, &error) != SC_OK) ||
+         (a->depth && sc_framebuffer_write_depth(fb, a->depth, &error) != SC_OK) ||
+         (a->normal && sc_framebuffer_write_normal(fb, a->normal, &error) != SC_OK) ||
+         (a->id && sc_framebuffer_write_id(fb, a->id, &error) != SC_OK))) {
         if (error.status == SC_ERR_CANCELLED)
             return die_interrupted();
         print_error(&error);
@@ -942,13 +972,18 @@ int main(int argc, char **argv)
             return 0;
         }
         if (!strcmp(argv[k], "--version")) {
-            printf("spancast %s\n", SPANCAST_VERSION_STRING);
+            printf("spancast %s\nmpi: %s\n", SPANCAST_VERSION_STRING, SPANCAST_MPI_SUPPORT);
             return 0;
         }
     }
     if (argc < 2)
         return cli_usage_error("missing command (try 'spancast --help')");
     const char *command = argv[1];
+    if (!strcmp(command, "render")) {
+        int st = dist_enter(argc, argv); /* under mpirun: spancast-mpi */
+        if (st >= 0)
+            return st;
+    }
     if (!strcmp(command, "bench"))
         return run_bench(argv);
     if (!strcmp(command, "spans"))
@@ -979,6 +1014,8 @@ int main(int argc, char **argv)
     int st = parse_args(&a, argc, argv);
     if (st)
         return st;
+    if (a.render && a.watch && dist_size() > 1)
+        return cli_usage_error("--watch does not run under mpirun");
     if (a.render && a.watch)
         return run_render_watched(&a, argc, argv);
     return a.render ? run_render(&a, argc, argv) : run_info(&a);

@@ -23,4 +23,13 @@ sc_status scad_load_files(const char *path, const sc_load_options *options,
                           sc_scene **scene, sc_error *error,
                           void (*depend)(void *user, const char *file), void *user);
 
+/* The conversion alone: OpenSCAD's CSG text for path into *text
+ * (malloc'd and NUL-terminated, *size bytes; the caller frees it) and the
+ * name to load it under (DIR/NAME.csg) into name; depend as above. On
+ * failure *text is NULL and error says why. (spancast-mpi converts once
+ * and sends the text to its other ranks.) */
+sc_status scad_convert(const char *path, char **text, size_t *size, char *name,
+                       size_t name_size, sc_error *error,
+                       void (*depend)(void *user, const char *file), void *user);
+
 #endif
