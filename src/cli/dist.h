@@ -11,7 +11,8 @@
  *
  * Rank 0 is where the command's files are read and written and its
  * messages printed; the other ranks load the scene from the text rank 0
- * sends them and trace tiles rank 0 hands out (tiles.h).
+ * sends them and do the work rank 0 hands out: tiles of a render
+ * (tiles.h), jobs of a batch (batch.c).
  */
 #ifndef SPANCAST_CLI_DIST_H
 #define SPANCAST_CLI_DIST_H
@@ -23,8 +24,10 @@
 /* Called by `render` before anything else, with main's arguments. In the
  * tool: under mpirun with more than one rank, replaces the process with
  * spancast-mpi (and returns 1, with a message, only when that fails);
- * otherwise returns -1. In spancast-mpi: joins the MPI job (MPI_Init,
- * finalised at exit) and returns -1, or 1 with a message when it cannot. */
+ * otherwise returns -1. In spancast-mpi: under mpirun with more than one
+ * rank, joins the MPI job (MPI_Init, finalised at exit) and returns -1, or
+ * 1 with a message when it cannot; otherwise returns -1 (the plain
+ * tool). */
 int dist_enter(int argc, char **argv);
 
 /* The number of ranks (1 without MPI) and this process's rank. */
@@ -38,32 +41,39 @@ int dist_rank(void);
 sc_status dist_load(const char *path, const sc_load_options *options, sc_scene **scene,
                     sc_error *error);
 
-/* One render cut into tiles (tiles.c): how to trace tile k, and what rank
- * 0 does with it. */
-typedef struct dist_tiles {
-    int count; /* tiles, numbered row by row */
-    /* Renders tile k (any rank, any thread but one at a time per rank);
-     * on success *fb is the tile's buffers, owned by the caller. */
-    sc_status (*render)(void *user, int k, sc_framebuffer **fb, sc_error *error);
-    /* Rank 0 only: takes tile k, in order k = 0, 1, 2, ... whatever order
-     * they were finished in; fb stays the caller's. */
-    sc_status (*deliver)(void *user, int k, const sc_framebuffer *fb, sc_error *error);
+/* Work cut into numbered pieces (the runs of tiles of a render: tiles.c;
+ * the jobs of a batch: batch.c), done on any rank, delivered on rank 0 in
+ * order. A result is an object of the caller's, turned into bytes and
+ * back to travel between ranks. */
+typedef struct dist_work {
+    int count; /* pieces, numbered from 0 */
+    /* Does piece k (on any rank; on rank 0 on a thread of its own, one
+     * piece at a time per rank); on success *result is the caller's. */
+    sc_status (*run)(void *user, int k, void **result, sc_error *error);
+    /* result as bytes (malloc'd, *size of them; NULL when out of memory),
+     * and back (NULL when malformed or out of memory). */
+    void *(*pack)(void *user, const void *result, size_t *size);
+    void *(*unpack)(void *user, const void *bytes, size_t size);
+    /* Rank 0 only: takes piece k's result, in order k = 0, 1, 2, ...
+     * whatever order they were finished in. */
+    sc_status (*deliver)(void *user, int k, const void *result, sc_error *error);
+    void (*release)(void *user, void *result); /* frees a result */
     void *user;
-    int window; /* at most this many tiles handed out beyond the last delivered */
+    int window; /* at most this many pieces handed out beyond the last delivered */
     const volatile sig_atomic_t *cancel; /* stop when set; may be NULL */
-} dist_tiles;
+} dist_work;
 
-/* Renders and delivers every tile. With one rank: here, in order (as
- * dist_run_here). With several: rank 0 hands tiles out one at a time as
- * ranks ask for them (rank 0 traces too, on a thread of its own), receives
- * the results and delivers them in order. Returns when every tile is
+/* Does and delivers every piece. With one rank: here, in order (as
+ * dist_run_here). With several: rank 0 hands pieces out one at a time as
+ * ranks ask for them (rank 0 works too, on a thread of its own), receives
+ * the results and delivers them in order. Returns when every piece is
  * delivered or the run failed; on rank 0 the status and error are the
  * run's (the first failure on any rank), on the others their own (SC_OK
  * unless they failed themselves). */
-sc_status dist_run_tiles(const dist_tiles *job, sc_error *error);
+sc_status dist_run(const dist_work *work, sc_error *error);
 
-/* Renders and delivers every tile of job in this process, in order,
- * looking at job->cancel between tiles. (tiles.c) */
-sc_status dist_run_here(const dist_tiles *job, sc_error *error);
+/* Does and delivers every piece of work in this process, in order,
+ * looking at work->cancel between pieces. (tiles.c) */
+sc_status dist_run_here(const dist_work *work, sc_error *error);
 
 #endif

@@ -73,7 +73,7 @@ sc_status dist_load(const char *path, const sc_load_options *options, sc_scene *
                                 : sc_scene_load(path, options, scene, error);
 }
 
-sc_status dist_run_tiles(const dist_tiles *job, sc_error *error)
+sc_status dist_run(const dist_work *work, sc_error *error)
 {
-    return dist_run_here(job, error);
+    return dist_run_here(work, error);
 }

@@ -7,22 +7,23 @@
  * imports. The ranks then agree on the outcome (the first failing rank's
  * error goes to rank 0).
  *
- * Tiles: a work queue on rank 0. Each other rank asks for a tile, traces
- * it with all its threads, sends the result (a header and the tile's
- * buffers, as bytes: the ranks run the same build on the same kind of
- * machine) and gets the next tile in reply, until rank 0 answers -1. Rank
- * 0 traces too, on a thread of its own that takes tiles from the same
- * queue; its main thread is the coordinator, the only thread that calls
- * MPI (MPI_THREAD_FUNNELED). The coordinator delivers tiles in order;
- * tiles are handed out in order and at most `window` beyond the oldest
+ * Work (the runs of tiles of a render, the jobs of a batch): a queue on
+ * rank 0. Each other rank asks for a piece, does it (a render with all its
+ * threads), sends the result (its number, then the bytes its pack makes:
+ * the ranks run the same build on the same kind of machine) and gets the
+ * next piece in reply, until rank 0 answers -1. Rank 0 works too, on a
+ * thread of its own that takes pieces from the same queue; its main
+ * thread is the coordinator, the only thread that calls MPI
+ * (MPI_THREAD_FUNNELED). The coordinator delivers results in order;
+ * pieces are handed out in order and at most `window` beyond the oldest
  * undelivered one, which bounds what rank 0 holds. Waiting is done by
  * polling with short sleeps (MPI_Test, MPI_Iprobe), never by a blocking
  * call, because Open MPI's blocking calls spin a core that the tracing
  * threads of the same machine want.
  *
  * Messages only go from the ranks to rank 0 and back, so a failure is
- * simple: the failing rank sends its error instead of a tile, rank 0 stops
- * handing out tiles and answers every rank's next request with -1.
+ * simple: the failing rank sends its error instead of a result, rank 0
+ * stops handing out work and answers every rank's next request with -1.
  * Messages of the ranks other than 0 are silenced (their stderr is
  * /dev/null): rank 0 prints the command's output and the first error.
  */
@@ -48,21 +49,7 @@
 
 enum { TAG_ASK = 1, TAG_TILE, TAG_DONE, TAG_FAIL, TAG_ERROR };
 
-/* The buffers a tile message carries (tile_header.buffers). */
-enum { HAS_COLOR = 1, HAS_DEPTH = 2, HAS_MASK = 4, HAS_NORMAL = 8, HAS_ID = 16 };
-
-#define STAT_COUNTS 9
-
-/* A finished tile on the wire, followed by its buffers in the order of
- * the HAS_ bits. */
-typedef struct tile_header {
-    int32_t k, width, height, buffers, threads, unused;
-    uint64_t counts[STAT_COUNTS]; /* sc_render_stats' counters, in its order */
-    double setup_seconds, trace_seconds;
-    char camera_info[256];
-} tile_header;
-
-/* Sleeps 100 microseconds: a poll's pause, short beside a tile. */
+/* Sleeps 100 microseconds: a poll's pause, short beside a piece of work. */
 static void nap(void)
 {
     struct timespec pause = {0, 100000};
@@ -81,6 +68,11 @@ int dist_enter(int argc, char **argv)
 {
     (void)argc;
     (void)argv;
+    /* Started outside mpirun (a batch's job, run by its own path): the
+     * plain tool, without MPI. */
+    const char *size = getenv("OMPI_COMM_WORLD_SIZE");
+    if (!size || atoi(size) <= 1)
+        return -1;
     int provided = 0;
     if (MPI_Init_thread(NULL, NULL, MPI_THREAD_FUNNELED, &provided) != MPI_SUCCESS) {
         fprintf(stderr, "spancast: error: cannot join the MPI job (MPI_Init failed)\n");
@@ -214,128 +206,30 @@ sc_status dist_load(const char *path, const sc_load_options *options, sc_scene *
     return (sc_status)status;
 }
 
-/* ---- tiles on the wire ---- */
+/* ---- a rank other than 0 ---- */
 
-static size_t pixel_bytes(int buffers)
+/* A piece's result as one message: its number, then its bytes
+ * (malloc'd; NULL when out of memory). */
+static char *message_of(const dist_work *job, int k, const void *result, size_t *size)
 {
-    return (buffers & HAS_COLOR ? 3 * sizeof(float) : 0) +
-           (buffers & HAS_DEPTH ? sizeof(float) : 0) + (buffers & HAS_MASK ? 1 : 0) +
-           (buffers & HAS_NORMAL ? 3 * sizeof(float) : 0) +
-           (buffers & HAS_ID ? sizeof(int32_t) : 0);
-}
-
-/* The buffers of fb, and their sizes a pixel, in wire order. */
-static void buffer_list(const sc_framebuffer *fb, void *bufs[5], size_t sizes[5])
-{
-    bufs[0] = fb->color;
-    sizes[0] = 3 * sizeof(float);
-    bufs[1] = fb->depth;
-    sizes[1] = sizeof(float);
-    bufs[2] = fb->mask;
-    sizes[2] = 1;
-    bufs[3] = fb->normal;
-    sizes[3] = 3 * sizeof(float);
-    bufs[4] = fb->id;
-    sizes[4] = sizeof(int32_t);
-}
-
-/* A tile as one message (malloc'd; NULL when out of memory). */
-static char *pack(int k, const sc_framebuffer *fb, size_t *size)
-{
-    tile_header h;
-    memset(&h, 0, sizeof h);
-    h.k = k;
-    h.width = fb->width;
-    h.height = fb->height;
-    void *bufs[5];
-    size_t sizes[5];
-    buffer_list(fb, bufs, sizes);
-    for (int b = 0; b < 5; b++)
-        if (bufs[b])
-            h.buffers |= 1 << b;
-    const sc_render_stats *s = &fb->stats;
-    const uint64_t counts[STAT_COUNTS] = {
-        s->camera_rays,     s->shadow_rays,     s->reflection_rays,
-        s->refraction_rays, s->primitive_tests, s->span_operations,
-        s->node_visits,     s->bvh_node_visits, s->scratch_mallocs};
-    memcpy(h.counts, counts, sizeof counts);
-    h.threads = s->threads;
-    h.setup_seconds = s->setup_seconds;
-    h.trace_seconds = s->trace_seconds;
-    memcpy(h.camera_info, fb->camera_info, sizeof h.camera_info);
-    size_t pixels = (size_t)fb->width * (size_t)fb->height;
-    *size = sizeof h + pixels * pixel_bytes(h.buffers);
-    char *msg = malloc(*size);
-    if (!msg)
+    size_t bytes = 0;
+    void *packed = job->pack(job->user, result, &bytes);
+    if (!packed)
         return NULL;
-    memcpy(msg, &h, sizeof h);
-    char *at = msg + sizeof h;
-    for (int b = 0; b < 5; b++) {
-        if (!bufs[b])
-            continue;
-        memcpy(at, bufs[b], pixels * sizes[b]);
-        at += pixels * sizes[b];
+    char *msg = bytes + sizeof(int32_t) < (size_t)INT_MAX
+                    ? malloc(sizeof(int32_t) + bytes)
+                    : NULL;
+    if (msg) {
+        int32_t number = k;
+        memcpy(msg, &number, sizeof number);
+        memcpy(msg + sizeof number, packed, bytes);
+        *size = sizeof number + bytes;
     }
+    free(packed);
     return msg;
 }
 
-/* The tile in a message of size bytes; NULL when it is malformed or out
- * of memory. */
-static sc_framebuffer *unpack(const char *msg, size_t size, int *k)
-{
-    tile_header h;
-    if (size < sizeof h)
-        return NULL;
-    memcpy(&h, msg, sizeof h);
-    if (h.width <= 0 || h.height <= 0 || h.width > 4096 || h.height > 4096)
-        return NULL;
-    size_t pixels = (size_t)h.width * (size_t)h.height;
-    if (size != sizeof h + pixels * pixel_bytes(h.buffers))
-        return NULL;
-    sc_framebuffer *fb = calloc(1, sizeof *fb);
-    if (!fb)
-        return NULL;
-    fb->width = h.width;
-    fb->height = h.height;
-    void **targets[5] = {(void **)&fb->color, (void **)&fb->depth, (void **)&fb->mask,
-                         (void **)&fb->normal, (void **)&fb->id};
-    void *unused[5];
-    size_t sizes[5];
-    buffer_list(fb, unused, sizes);
-    const char *at = msg + sizeof h;
-    for (int b = 0; b < 5; b++) {
-        if (!(h.buffers & 1 << b))
-            continue;
-        *targets[b] = malloc(pixels * sizes[b]);
-        if (!*targets[b]) {
-            sc_framebuffer_release(fb);
-            return NULL;
-        }
-        memcpy(*targets[b], at, pixels * sizes[b]);
-        at += pixels * sizes[b];
-    }
-    sc_render_stats *s = &fb->stats;
-    s->camera_rays = h.counts[0];
-    s->shadow_rays = h.counts[1];
-    s->reflection_rays = h.counts[2];
-    s->refraction_rays = h.counts[3];
-    s->primitive_tests = h.counts[4];
-    s->span_operations = h.counts[5];
-    s->node_visits = h.counts[6];
-    s->bvh_node_visits = h.counts[7];
-    s->scratch_mallocs = h.counts[8];
-    s->threads = h.threads;
-    s->setup_seconds = h.setup_seconds;
-    s->trace_seconds = h.trace_seconds;
-    memcpy(fb->camera_info, h.camera_info, sizeof fb->camera_info);
-    fb->camera_info[sizeof fb->camera_info - 1] = '\0';
-    *k = h.k;
-    return fb;
-}
-
-/* ---- a rank other than 0 ---- */
-
-static sc_status work(const dist_tiles *job, sc_error *error)
+static sc_status work(const dist_work *job, sc_error *error)
 {
     sc_status failed = SC_OK;
     int32_t ask = 0;
@@ -347,12 +241,13 @@ static sc_status work(const dist_tiles *job, sc_error *error)
         wait_for(&request);
         if (k < 0 || k >= job->count)
             return failed;
-        sc_framebuffer *fb = NULL;
+        void *result = NULL;
         sc_error mine;
-        sc_status st = job->render(job->user, k, &fb, &mine);
+        sc_status st = job->run(job->user, k, &result, &mine);
         size_t size = 0;
-        char *msg = st == SC_OK ? pack(k, fb, &size) : NULL;
-        sc_framebuffer_release(fb);
+        char *msg = st == SC_OK ? message_of(job, k, result, &size) : NULL;
+        if (result)
+            job->release(job->user, result);
         if (st == SC_OK && !msg)
             st = err_nomem(&mine, NULL);
         if (st != SC_OK) {
@@ -374,16 +269,16 @@ static sc_status work(const dist_tiles *job, sc_error *error)
 /* ---- rank 0 ---- */
 
 typedef struct coordinator {
-    const dist_tiles *job;
+    const dist_work *job;
     pthread_mutex_t lock;
-    pthread_cond_t wake;   /* for the local tracer: a delivery, or stop */
-    int next;              /* the next tile to hand out */
-    int delivered;         /* tiles delivered, in order */
-    int stop;              /* a failure or an interrupt: hand out no more */
-    int local_done;        /* the local tracer has returned */
-    sc_framebuffer **held; /* finished tiles not yet delivered: tile k at
-                              k % window, for delivered <= k < delivered + window */
-    sc_status status;      /* the first failure */
+    pthread_cond_t wake; /* for the local tracer: a delivery, or stop */
+    int next;            /* the next piece to hand out */
+    int delivered;       /* pieces delivered, in order */
+    int stop;            /* a failure or an interrupt: hand out no more */
+    int local_done;      /* the local tracer has returned */
+    void **held;         /* finished pieces not yet delivered: piece k at
+                            k % window, for delivered <= k < delivered + window */
+    sc_status status;    /* the first failure */
     sc_error error;
 } coordinator;
 
@@ -399,17 +294,17 @@ static void fail_locked(coordinator *c, sc_status st, const sc_error *error)
     pthread_cond_broadcast(&c->wake);
 }
 
-/* Whether tile next may be handed out now. Called locked. */
+/* Whether piece next may be handed out now. Called locked. */
 static int can_hand_out(const coordinator *c)
 {
     return !c->stop && c->next < c->job->count && c->next < c->delivered + c->job->window;
 }
 
-/* Rank 0's own tracing thread. */
+/* Rank 0's own working thread. */
 static void *trace_locally(void *arg)
 {
     coordinator *c = arg;
-    const dist_tiles *job = c->job;
+    const dist_work *job = c->job;
     for (;;) {
         pthread_mutex_lock(&c->lock);
         while (!can_hand_out(c) && !c->stop && c->next < job->count)
@@ -421,35 +316,35 @@ static void *trace_locally(void *arg)
         }
         int k = c->next++;
         pthread_mutex_unlock(&c->lock);
-        sc_framebuffer *fb = NULL;
+        void *result = NULL;
         sc_error error;
-        sc_status st = job->render(job->user, k, &fb, &error);
+        sc_status st = job->run(job->user, k, &result, &error);
         pthread_mutex_lock(&c->lock);
         if (st != SC_OK)
             fail_locked(c, st, &error);
         else
-            c->held[k % job->window] = fb;
+            c->held[k % job->window] = result;
         pthread_mutex_unlock(&c->lock);
     }
 }
 
-/* Delivers the next tile if it is here; returns 1 when it did something. */
+/* Delivers the next result if it is here; returns 1 when it did something. */
 static int deliver_next(coordinator *c)
 {
-    const dist_tiles *job = c->job;
+    const dist_work *job = c->job;
     pthread_mutex_lock(&c->lock);
-    sc_framebuffer *fb = NULL;
+    void *result = NULL;
     int k = c->delivered;
     if (!c->stop && k < job->count) {
-        fb = c->held[k % job->window];
+        result = c->held[k % job->window];
         c->held[k % job->window] = NULL;
     }
     pthread_mutex_unlock(&c->lock);
-    if (!fb)
+    if (!result)
         return 0;
     sc_error error;
-    sc_status st = job->deliver(job->user, k, fb, &error);
-    sc_framebuffer_release(fb);
+    sc_status st = job->deliver(job->user, k, result, &error);
+    job->release(job->user, result);
     pthread_mutex_lock(&c->lock);
     if (st != SC_OK)
         fail_locked(c, st, &error);
@@ -460,8 +355,9 @@ static int deliver_next(coordinator *c)
     return 1;
 }
 
-/* Receives one message if there is one: a request, a tile or a failure;
- * its sender joins the ranks waiting for a tile. Returns 1 when it did. */
+/* Receives one message if there is one: a request, a result or a
+ * failure; its sender joins the ranks waiting for work. Returns 1 when it
+ * did. */
 static int receive(coordinator *c, int *waiting, int *waiting_count)
 {
     int here = 0;
@@ -473,7 +369,7 @@ static int receive(coordinator *c, int *waiting, int *waiting_count)
     MPI_Get_count(&status, MPI_BYTE, &size);
     char *msg = malloc(size > 0 ? (size_t)size : 1);
     if (!msg) {
-        fprintf(stderr, "spancast: error: out of memory for a tile from rank %d\n",
+        fprintf(stderr, "spancast: error: out of memory for a result from rank %d\n",
                 status.MPI_SOURCE);
         MPI_Abort(MPI_COMM_WORLD, 1);
     }
@@ -481,19 +377,24 @@ static int receive(coordinator *c, int *waiting, int *waiting_count)
              MPI_STATUS_IGNORE);
     pthread_mutex_lock(&c->lock);
     if (status.MPI_TAG == TAG_DONE) {
-        int k = -1;
-        sc_framebuffer *fb = unpack(msg, (size_t)size, &k);
-        if (!fb) {
+        int32_t k = -1;
+        void *result = NULL;
+        if ((size_t)size >= sizeof k) {
+            memcpy(&k, msg, sizeof k);
+            result =
+                c->job->unpack(c->job->user, msg + sizeof k, (size_t)size - sizeof k);
+        }
+        if (!result) {
             sc_error error;
-            err_set(&error, SC_ERR_NOMEM, NULL, "a tile from rank %d could not be taken",
-                    status.MPI_SOURCE);
+            err_set(&error, SC_ERR_NOMEM, NULL,
+                    "a result from rank %d could not be taken", status.MPI_SOURCE);
             fail_locked(c, SC_ERR_NOMEM, &error);
         }
-        if (fb && !c->stop && k >= c->delivered && k < c->next &&
+        if (result && !c->stop && k >= c->delivered && k < c->next &&
             !c->held[k % c->job->window])
-            c->held[k % c->job->window] = fb;
-        else
-            sc_framebuffer_release(fb);
+            c->held[k % c->job->window] = result;
+        else if (result)
+            c->job->release(c->job->user, result);
     } else if (status.MPI_TAG == TAG_FAIL && (size_t)size == sizeof(sc_error)) {
         sc_error error;
         memcpy(&error, msg, sizeof error);
@@ -507,7 +408,7 @@ static int receive(coordinator *c, int *waiting, int *waiting_count)
     return 1;
 }
 
-/* Answers the waiting ranks: a tile each while there are tiles within
+/* Answers the waiting ranks: a piece each while there are pieces within
  * the window, -1 (stop) once there are none left or the run failed.
  * Returns the number of ranks told to stop. */
 static int hand_out(coordinator *c, int *waiting, int *waiting_count)
@@ -530,7 +431,7 @@ static int hand_out(coordinator *c, int *waiting, int *waiting_count)
     return stopped;
 }
 
-static sc_status coordinate(const dist_tiles *job, int ranks, sc_error *error)
+static sc_status coordinate(const dist_work *job, int ranks, sc_error *error)
 {
     coordinator c;
     memset(&c, 0, sizeof c);
@@ -570,7 +471,8 @@ static sc_status coordinate(const dist_tiles *job, int ranks, sc_error *error)
     if (tracing)
         pthread_join(tracer, NULL);
     for (int k = 0; k < job->window; k++)
-        sc_framebuffer_release(c.held[k]);
+        if (c.held[k])
+            job->release(job->user, c.held[k]);
     free(c.held);
     free(waiting);
     pthread_cond_destroy(&c.wake);
@@ -580,7 +482,7 @@ static sc_status coordinate(const dist_tiles *job, int ranks, sc_error *error)
     return c.status;
 }
 
-sc_status dist_run_tiles(const dist_tiles *job, sc_error *error)
+sc_status dist_run(const dist_work *job, sc_error *error)
 {
     int ranks = dist_size();
     if (ranks == 1)

@@ -117,7 +117,7 @@ static int unit_tiles(const tiles_run *r, int k, int *tx, int *ty)
 
 /* Renders piece k: one sc_render of the run's region, so that the threads
  * of a rank meet once per run, not once per tile. */
-static sc_status render_tile(void *user, int k, sc_framebuffer **fb, sc_error *error)
+static sc_status render_tile(void *user, int k, void **result, sc_error *error)
 {
     const tiles_run *r = user;
     sc_render_options o = *r->options;
@@ -129,8 +129,151 @@ static sc_status render_tile(void *user, int k, sc_framebuffer **fb, sc_error *e
                                                                : r->x0 + r->width;
     o.region[3] = o.region[1] + r->side < r->y0 + r->height ? o.region[1] + r->side
                                                             : r->y0 + r->height;
-    o.progress = NULL; /* progress is counted in tiles delivered */
-    return sc_render(r->scene, &o, fb, error);
+    o.progress = NULL; /* progress is counted in runs delivered */
+    sc_framebuffer *fb = NULL;
+    sc_status st = sc_render(r->scene, &o, &fb, error);
+    *result = fb;
+    return st;
+}
+
+static void release_run(void *user, void *result)
+{
+    (void)user;
+    sc_framebuffer_release(result);
+}
+/* ---- runs between ranks ---- */
+
+/* The buffers a run's message carries (tile_header.buffers). */
+enum { HAS_COLOR = 1, HAS_DEPTH = 2, HAS_MASK = 4, HAS_NORMAL = 8, HAS_ID = 16 };
+
+#define STAT_COUNTS 9
+
+/* A finished run as bytes, followed by its buffers in the order of the
+ * HAS_ bits. */
+typedef struct tile_header {
+    int32_t width, height, buffers, threads;
+    uint64_t counts[STAT_COUNTS]; /* sc_render_stats' counters, in its order */
+    double setup_seconds, trace_seconds;
+    char camera_info[256];
+} tile_header;
+
+static size_t pixel_bytes(int buffers)
+{
+    return (buffers & HAS_COLOR ? 3 * sizeof(float) : 0) +
+           (buffers & HAS_DEPTH ? sizeof(float) : 0) + (buffers & HAS_MASK ? 1 : 0) +
+           (buffers & HAS_NORMAL ? 3 * sizeof(float) : 0) +
+           (buffers & HAS_ID ? sizeof(int32_t) : 0);
+}
+
+/* The buffers of fb, and their sizes a pixel, in wire order. */
+static void buffer_list(const sc_framebuffer *fb, void *bufs[5], size_t sizes[5])
+{
+    bufs[0] = fb->color;
+    sizes[0] = 3 * sizeof(float);
+    bufs[1] = fb->depth;
+    sizes[1] = sizeof(float);
+    bufs[2] = fb->mask;
+    sizes[2] = 1;
+    bufs[3] = fb->normal;
+    sizes[3] = 3 * sizeof(float);
+    bufs[4] = fb->id;
+    sizes[4] = sizeof(int32_t);
+}
+
+/* A run as bytes (malloc'd; NULL when out of memory). */
+static void *pack_run(void *user, const void *result, size_t *size)
+{
+    (void)user;
+    const sc_framebuffer *fb = result;
+    tile_header h;
+    memset(&h, 0, sizeof h);
+    h.width = fb->width;
+    h.height = fb->height;
+    void *bufs[5];
+    size_t sizes[5];
+    buffer_list(fb, bufs, sizes);
+    for (int b = 0; b < 5; b++)
+        if (bufs[b])
+            h.buffers |= 1 << b;
+    const sc_render_stats *s = &fb->stats;
+    const uint64_t counts[STAT_COUNTS] = {
+        s->camera_rays,     s->shadow_rays,     s->reflection_rays,
+        s->refraction_rays, s->primitive_tests, s->span_operations,
+        s->node_visits,     s->bvh_node_visits, s->scratch_mallocs};
+    memcpy(h.counts, counts, sizeof counts);
+    h.threads = s->threads;
+    h.setup_seconds = s->setup_seconds;
+    h.trace_seconds = s->trace_seconds;
+    memcpy(h.camera_info, fb->camera_info, sizeof h.camera_info);
+    size_t pixels = (size_t)fb->width * (size_t)fb->height;
+    *size = sizeof h + pixels * pixel_bytes(h.buffers);
+    char *msg = malloc(*size);
+    if (!msg)
+        return NULL;
+    memcpy(msg, &h, sizeof h);
+    char *at = msg + sizeof h;
+    for (int b = 0; b < 5; b++) {
+        if (!bufs[b])
+            continue;
+        memcpy(at, bufs[b], pixels * sizes[b]);
+        at += pixels * sizes[b];
+    }
+    return msg;
+}
+
+/* The run in size bytes; NULL when they are malformed or out of memory. */
+static void *unpack_run(void *user, const void *bytes, size_t size)
+{
+    (void)user;
+    const char *msg = bytes;
+    tile_header h;
+    if (size < sizeof h)
+        return NULL;
+    memcpy(&h, msg, sizeof h);
+    if (h.width <= 0 || h.height <= 0 || h.width > RENDER_MAX_SIDE || h.height > 256 ||
+        h.buffers < 0 || h.buffers > 31)
+        return NULL;
+    size_t pixels = (size_t)h.width * (size_t)h.height;
+    if (size != sizeof h + pixels * pixel_bytes(h.buffers))
+        return NULL;
+    sc_framebuffer *fb = calloc(1, sizeof *fb);
+    if (!fb)
+        return NULL;
+    fb->width = h.width;
+    fb->height = h.height;
+    void **targets[5] = {(void **)&fb->color, (void **)&fb->depth, (void **)&fb->mask,
+                         (void **)&fb->normal, (void **)&fb->id};
+    void *unused[5];
+    size_t sizes[5];
+    buffer_list(fb, unused, sizes);
+    const char *at = msg + sizeof h;
+    for (int b = 0; b < 5; b++) {
+        if (!(h.buffers & 1 << b))
+            continue;
+        *targets[b] = malloc(pixels * sizes[b]);
+        if (!*targets[b]) {
+            sc_framebuffer_release(fb);
+            return NULL;
+        }
+        memcpy(*targets[b], at, pixels * sizes[b]);
+        at += pixels * sizes[b];
+    }
+    sc_render_stats *s = &fb->stats;
+    s->camera_rays = h.counts[0];
+    s->shadow_rays = h.counts[1];
+    s->reflection_rays = h.counts[2];
+    s->refraction_rays = h.counts[3];
+    s->primitive_tests = h.counts[4];
+    s->span_operations = h.counts[5];
+    s->node_visits = h.counts[6];
+    s->bvh_node_visits = h.counts[7];
+    s->scratch_mallocs = h.counts[8];
+    s->threads = h.threads;
+    s->setup_seconds = h.setup_seconds;
+    s->trace_seconds = h.trace_seconds;
+    memcpy(fb->camera_info, h.camera_info, sizeof fb->camera_info);
+    fb->camera_info[sizeof fb->camera_info - 1] = '\0';
+    return fb;
 }
 
 static void add_stats(sc_render_stats *sum, const sc_render_stats *s)
@@ -207,10 +350,10 @@ static sc_status cut_tile(tiles_run *r, const sc_framebuffer *fb, int x, int w,
     return SC_OK;
 }
 
-static sc_status deliver_tile(void *user, int k, const sc_framebuffer *fb,
-                              sc_error *error)
+static sc_status deliver_tile(void *user, int k, const void *result, sc_error *error)
 {
     tiles_run *r = user;
+    const sc_framebuffer *fb = result;
     sc_framebuffer *image = r->image;
     int tx, ty;
     int n = unit_tiles(r, k, &tx, &ty);
@@ -259,16 +402,17 @@ static sc_status deliver_tile(void *user, int k, const sc_framebuffer *fb,
     return SC_OK;
 }
 
-sc_status dist_run_here(const dist_tiles *job, sc_error *error)
+sc_status dist_run_here(const dist_work *job, sc_error *error)
 {
     for (int k = 0; k < job->count; k++) {
         if (job->cancel && *job->cancel)
             return err_set(error, SC_ERR_CANCELLED, NULL, "interrupted");
-        sc_framebuffer *fb = NULL;
-        sc_status st = job->render(job->user, k, &fb, error);
+        void *result = NULL;
+        sc_status st = job->run(job->user, k, &result, error);
         if (st == SC_OK)
-            st = job->deliver(job->user, k, fb, error);
-        sc_framebuffer_release(fb);
+            st = job->deliver(job->user, k, result, error);
+        if (result)
+            job->release(job->user, result);
         if (st)
             return st;
     }
@@ -397,18 +541,21 @@ sc_status tiles_render(const sc_scene *scene, const sc_render_options *options,
         r.image = new_image(options, r.width, r.height, r.streamed);
         out_of_memory = r.image == NULL;
     }
-    dist_tiles job;
+    dist_work job;
     memset(&job, 0, sizeof job);
     /* Without its image rank 0 hands out no tile: the other ranks are told
      * to stop at once. */
     job.count = out_of_memory ? 0 : r.units_x * r.tiles_y;
-    job.render = render_tile;
+    job.run = render_tile;
+    job.pack = pack_run;
+    job.unpack = unpack_run;
     job.deliver = deliver_tile;
+    job.release = release_run;
     job.user = &r;
     job.window = window;
     job.cancel = options->cancel;
     double start = seconds_now();
-    sc_status st = dist_run_tiles(&job, error);
+    sc_status st = dist_run(&job, error);
     if (st == SC_OK && out_of_memory)
         st = err_set(error, SC_ERR_NOMEM, NULL, "out of memory for a %dx%d image",
                      r.width, r.height);
