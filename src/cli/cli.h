@@ -78,4 +78,8 @@ int cli_measure(int argc, char **argv);
 int cli_overlaps(int argc, char **argv);
 int cli_compare(int argc, char **argv);
 
+/* `spancast batch JOBS [--json]` (batch.c), with the whole argv; returns
+ * the exit status. */
+int cli_batch(int argc, char **argv);
+
 #endif

@@ -12,6 +12,7 @@
  *   spancast overlaps MODEL [--min-volume=V] [...]                   (check.c)
  *   spancast compare A B [--diff=PREFIX] [...]                       (check.c)
  *   spancast view MODEL [...]        (spancast-view: view.c and its neighbours)
+ *   spancast batch JOBS [--json]                                     (batch.c)
  *   spancast --help | --version
  *
  * MODEL is a .csg file, or a .scad file converted by OpenSCAD (scad.c).
@@ -80,6 +81,7 @@ static const char usage_text[] =
     "       spancast compare A B [--tolerance=REL] [--max-pixels=N] [--diff=PREFIX]\n"
     "                        [--imgsize=W,H]\n"
     "       spancast view MODEL [--imgsize=W,H] [--spp=N] [--faithful]\n"
+    "       spancast batch JOBS [--json]\n"
     "       spancast bench accuracy --csv FILE [--plot FILE.png] [--rays N]\n"
     "       spancast bench stability --csv FILE [--dir DIR] [--size N] [--depth N]\n"
     "       spancast --help | --version\n"
@@ -100,6 +102,10 @@ static const char usage_text[] =
     "edges; --diff=PREFIX writes PREFIXpx.png ... PREFIXdiagonal.png).\n"
     "These take --threads=N, --json, --faithful and -q (no progress on stderr);\n"
     "overlaps and compare exit 2 on any error.\n"
+    "'batch' runs the spancast command of each line of JOBS (shell quoting, '#'\n"
+    "comments, paths relative to JOBS' folder), each once, across the ranks\n"
+    "under mpirun; a failed job does not stop the others; it prints a table of\n"
+    "every job, or JSON with --json, and exits 1 when a job failed.\n"
     "\n"
     "render options:\n"
     "  -o, --output=FILE      colour image; the format follows the extension\n"
@@ -972,18 +978,21 @@ int main(int argc, char **argv)
             return 0;
         }
         if (!strcmp(argv[k], "--version")) {
-            printf("spancast %s\nmpi: %s\n", SPANCAST_VERSION_STRING, SPANCAST_MPI_SUPPORT);
+            printf("spancast %s\nmpi: %s\n", SPANCAST_VERSION_STRING,
+                   SPANCAST_MPI_SUPPORT);
             return 0;
         }
     }
     if (argc < 2)
         return cli_usage_error("missing command (try 'spancast --help')");
     const char *command = argv[1];
-    if (!strcmp(command, "render")) {
+    if (!strcmp(command, "render") || !strcmp(command, "batch")) {
         int st = dist_enter(argc, argv); /* under mpirun: spancast-mpi */
         if (st >= 0)
             return st;
     }
+    if (!strcmp(command, "batch"))
+        return cli_batch(argc, argv);
     if (!strcmp(command, "bench"))
         return run_bench(argv);
     if (!strcmp(command, "spans"))
@@ -1009,7 +1018,7 @@ int main(int argc, char **argv)
     else
         return cli_usage_error(
             "unknown command '%s' (expected 'render', 'info', "
-            "'spans', 'inside', 'measure', 'overlaps', 'compare' or 'view')",
+            "'spans', 'inside', 'measure', 'overlaps', 'compare', 'view' or 'batch')",
             command);
     int st = parse_args(&a, argc, argv);
     if (st)
