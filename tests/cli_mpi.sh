@@ -82,6 +82,16 @@ mpi 2 "$bin" render m.csg -o cam.png --camera=1,1,1,1,1,1 -q >out.txt 2>err.txt 
 [ "$(grep -cF "$(cat one-err.txt)" err.txt)" = 1 ] ||
     fail "camera error under mpirun: '$(cat err.txt)', alone: '$(cat one-err.txt)'"
 [ -e cam.png ] && fail "cam.png was written"
+# An output rank 0 cannot write: every rank stops (a rank that stopped
+# alone would leave the others waiting for it; the guard catches a hang).
+check
+timeout 300 mpirun --oversubscribe -np 2 "$bin" render m.csg -o no/such/folder.png -q \
+    >out.txt 2>err.txt
+rc=$?
+[ "$rc" = 124 ] && fail "an unwritable output under mpirun hung"
+[ "$rc" = 0 ] && fail "an unwritable output under mpirun succeeded"
+[ "$(grep -c "^spancast: error: cannot write 'no/such/folder.png': No such file or directory$" err.txt)" = 1 ] ||
+    fail "an unwritable output under mpirun: '$(cat err.txt)'"
 # --watch is for one process.
 check
 mpi 2 "$bin" render m.csg -o w.png --watch -q >out.txt 2>err.txt && fail "--watch under mpirun ran"

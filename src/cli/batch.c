@@ -458,6 +458,7 @@ int cli_batch(int argc, char **argv)
                 strerror(errno));
         status = CLI_EXIT_FAILED;
     }
+    status = dist_agree(status); /* under mpirun: stop together */
     if (status) {
         free_jobs(&b);
         return status;
@@ -469,7 +470,7 @@ int cli_batch(int argc, char **argv)
         strcpy(b.folder, "/");
     b.env = job_environment();
     b.results = calloc(b.count > 0 ? (size_t)b.count : 1, sizeof *b.results);
-    if (!b.env || !b.results) {
+    if (dist_agree(!b.env || !b.results)) {
         fprintf(stderr, "spancast: error: out of memory\n");
         free_jobs(&b);
         return CLI_EXIT_FAILED;

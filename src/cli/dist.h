@@ -34,6 +34,12 @@ int dist_enter(int argc, char **argv);
 int dist_size(void);
 int dist_rank(void);
 
+/* The largest of status over all ranks, on every rank (status itself with
+ * one rank). A rank must not leave before the others know: Open MPI's
+ * MPI_Finalize waits for every rank, so a rank that stopped alone, on an
+ * error the others did not see, would leave them all waiting. */
+int dist_agree(int status);
+
 /* With several ranks: rank 0 reads the model's text (converting a .scad
  * with OpenSCAD, once) and sends it to every rank, which loads it under
  * the same name. Returns the same status on every rank; on failure the

@@ -779,11 +779,13 @@ static int run_render(cli_args *a, int argc, char **argv)
         (a->normal && imgio_check(a->normal, IMGIO_NORMAL, &error)) ||
         (a->id && imgio_check(a->id, IMGIO_ID, &error)))
         return cli_usage_error("%s", error.message);
-    if (dist_rank() == 0 && /* rank 0 writes the files */
+    int unwritable = /* rank 0 writes the files; every rank learns the outcome */
+        dist_rank() == 0 &&
         (!output_writable(a->output) || (a->mask && !output_writable(a->mask)) ||
          (a->depth && !output_writable(a->depth)) ||
          (a->normal && !output_writable(a->normal)) ||
-         (a->id && !output_writable(a->id))))
+         (a->id && !output_writable(a->id)));
+    if (dist_agree(unwritable))
         return EXIT_FAILED;
 
     double start = seconds_now();

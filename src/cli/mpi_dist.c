@@ -111,6 +111,15 @@ int dist_rank(void)
     return rank;
 }
 
+int dist_agree(int status)
+{
+    if (dist_size() == 1)
+        return status;
+    int largest = status;
+    MPI_Allreduce(&status, &largest, 1, MPI_INT, MPI_MAX, MPI_COMM_WORLD);
+    return largest;
+}
+
 /* Waits for request without spinning. */
 static void wait_for(MPI_Request *request)
 {
