@@ -99,7 +99,8 @@ check
 if command -v mpirun >/dev/null && [ -x "$(dirname "$bin")/spancast-mpi" ]; then
     check
     rm -f lib/*.png
-    OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 \
+    LSAN_OPTIONS="suppressions=$src/tests/mpi.lsan-suppressions${LSAN_OPTIONS:+:$LSAN_OPTIONS}" \
+        OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 \
         mpirun --oversubscribe -np 3 "$bin" batch lib/jobs.txt --json >mpi.json 2>err.txt
     python3 - mpi.json batch.json <<'PY' || fail "mpi.json: $(cat mpi.json) $(cat err.txt)"
 import json, sys

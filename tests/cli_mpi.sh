@@ -11,6 +11,8 @@ require_tools mpirun
     skip "spancast-mpi was not built (no MPI development files at configure time)"
 # This machine may have fewer cores than ranks; root needs Open MPI's consent.
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
+# Open MPI's allocations live past MPI_Finalize: not spancast's leaks.
+export LSAN_OPTIONS="suppressions=$src/tests/mpi.lsan-suppressions${LSAN_OPTIONS:+:$LSAN_OPTIONS}"
 mpi() {
     local np=$1
     shift
