@@ -59,6 +59,26 @@ grep -qx "spancast: error: cannot write 'huge.png': a 200000x200000 render needs
     fail "a 200000x200000 PNG: '$(cat err.txt)'"
 [ -e huge.png ] && fail "huge.png was written"
 
+# Interrupted while the tiles are being written: the temporary is
+# removed, the existing target is left as it was, and the tool dies of
+# the signal.
+check
+echo keep >keep.exr
+"$bin" render m.csg -o keep.exr --imgsize=4000,3000 --spp=4 --tiled -q 2>int.txt &
+pid=$!
+for _ in $(seq 600); do # up to 60 s for the first tile to reach the file
+    ls -a | grep -q '^\.keep\.tmp-' && break
+    sleep 0.1
+done
+ls -a | grep -q '^\.keep\.tmp-' || fail "no temporary appeared for keep.exr"
+kill -TERM "$pid" # (a background job of a script ignores SIGINT)
+wait "$pid"
+rc=$?
+[ "$rc" = 143 ] || fail "the interrupted tiled render exited $rc: $(cat int.txt)"
+grep -qx "spancast: interrupted" int.txt || fail "interrupted: '$(cat int.txt)'"
+[ "$(cat keep.exr)" = keep ] || fail "the interrupted render touched keep.exr"
+ls -a | grep -q '\.tmp-' && fail "the interrupted render left $(ls -a | grep '\.tmp-')"
+
 # Memory: colour, depth and normals of 3000 x 2000 pixels take 168 MB as
 # buffers; streamed, the peak (GNU time's %M, KiB) stays under a third of
 # that. The model is small in the frame, so most rays miss and the run is
