@@ -19,6 +19,8 @@
 #   bin/spancast                          the tool (the static library linked in)
 #   LIBDIR/spancast/spancast-bench        helpers the tool starts from there
 #   LIBDIR/spancast/spancast-view         the viewer `spancast view` starts (SDL2)
+#   LIBDIR/spancast/spancast-mpi          what `spancast render` runs under mpirun
+#                                         (Open MPI; when it was found)
 #   share/man/man1                        spancast(1), spancast-COMMAND(1)
 #   share/bash-completion/completions/spancast
 #   share/doc/spancast/                   copyright, README.md, docs/*.md
@@ -40,6 +42,9 @@ install(TARGETS spancast RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR} COMPONENT t
 install(TARGETS spancast_oiio LIBRARY DESTINATION ${SPANCAST_HELPERS_DIR} COMPONENT library)
 install(TARGETS spancast-bench RUNTIME DESTINATION ${SPANCAST_HELPERS_DIR} COMPONENT tool)
 install(TARGETS spancast_view RUNTIME DESTINATION ${SPANCAST_HELPERS_DIR} COMPONENT tool)
+if(TARGET spancast_mpi)
+  install(TARGETS spancast_mpi RUNTIME DESTINATION ${SPANCAST_HELPERS_DIR} COMPONENT tool)
+endif()
 install(TARGETS spancast_shared EXPORT spancastTargets
         LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR} COMPONENT library
                 NAMELINK_COMPONENT development

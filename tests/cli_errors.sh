@@ -51,7 +51,7 @@ printf 'sphere(r = 1);\n' >m.csg
 
 # commands
 expect_usage "missing command (try 'spancast --help')"
-expect_usage "unknown command 'frobnicate' (expected 'render', 'info', 'spans', 'inside', 'measure', 'overlaps', 'compare' or 'view')" frobnicate
+expect_usage "unknown command 'frobnicate' (expected 'render', 'info', 'spans', 'inside', 'measure', 'overlaps', 'compare', 'view' or 'batch')" frobnicate
 expect_usage "missing command before '-o' (try 'spancast --help')" -o x.png m.csg
 expect_usage "missing input file" render
 expect_usage "missing input file" info
@@ -74,8 +74,8 @@ for size in 0,10 10 a,b 10,10,10 -5,5 10,0 " 10,10" 10.5,3 ,; do
     expect_usage "--imgsize expects W,H with positive integers" \
         render m.csg -o x.png --imgsize="$size"
 done
-expect_usage "--imgsize allows at most 32768 pixels a side" \
-    render m.csg -o x.png --imgsize 40000,10
+expect_usage "--imgsize allows at most 262144 pixels a side" \
+    render m.csg -o x.png --imgsize 300000,10
 
 camera_msg="--camera expects 6 numbers (eye, centre) or 7 numbers (translate, rotate, distance)"
 for cam in 1,2,3 1,2,3,4,5,x 1,2,3,4,5,6,7,8 1,,2,3,4,5 inf,0,0,1,1,1 ""; do

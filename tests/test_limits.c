@@ -208,7 +208,7 @@ static void test_render_memory(void **state)
                      SC_OK);
     sc_render_options o;
     sc_render_options_init(&o);
-    o.width = o.height = RENDER_MAX_SIDE;
+    o.width = o.height = 32768;
     o.want_color = o.want_depth = o.want_mask = o.want_normal = 1;
     sc_framebuffer *fb = (sc_framebuffer *)1;
     /* 29 bytes a pixel: 29 GiB, refused before any allocation. */
@@ -224,7 +224,7 @@ static void test_render_memory(void **state)
     o.height = 8;
     assert_int_equal(render_check_memory(&o, &e), SC_OK);
     /* 16 GiB exactly is allowed: colour (12) + depth (4) at 32768 x 32768. */
-    o.height = RENDER_MAX_SIDE;
+    o.height = 32768;
     o.want_depth = 1;
     sc_status st = render_check_memory(&o, &e);
     if (st != SC_OK) /* a machine with less than 16 GiB says so */
@@ -233,11 +233,24 @@ static void test_render_memory(void **state)
     assert_int_equal(render_check_memory(&o, &e), SC_ERR_LIMIT);
     assert_string_equal(e.message, "a 32768x32768 render needs 17.0 GiB of image buffers "
                                    "(limit is 16 GiB)");
+    /* A crop is budgeted by its own buffers: a 100 x 100 corner of an
+     * image whose whole buffers would not fit renders. */
+    o.width = o.height = 200000;
+    o.region[0] = o.region[1] = 0;
+    o.region[2] = o.region[3] = 100;
+    o.want_color = 1;
+    o.want_depth = o.want_mask = o.want_normal = 0;
+    assert_int_equal(sc_render(scene, &o, &fb, &e), SC_OK);
+    assert_int_equal(fb->width, 100);
+    assert_int_equal(fb->height, 100);
+    sc_framebuffer_release(fb);
+    o.region[2] = o.region[3] = 0;
     /* The side limit comes first. */
     o.width = RENDER_MAX_SIDE + 1;
+    o.height = 32768;
     assert_int_equal(sc_render(scene, &o, &fb, &e), SC_ERR_ARGUMENT);
     assert_string_equal(
-        e.message, "image size 32769x32768 is out of range (1 to 32768 pixels a side)");
+        e.message, "image size 262145x32768 is out of range (1 to 262144 pixels a side)");
     sc_scene_release(scene);
 }
 

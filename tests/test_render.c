@@ -430,7 +430,7 @@ static void test_defaults_and_errors(void **state)
     o.width = 0;
     assert_int_equal(sc_render(&scene, &o, &fb, &e), SC_ERR_ARGUMENT);
     assert_null(fb);
-    assert_string_equal(e.message, "image size 0x600 is out of range (1 to 32768 pixels "
+    assert_string_equal(e.message, "image size 0x600 is out of range (1 to 262144 pixels "
                                    "a side)");
     o.width = 10;
     o.threads = -1;

@@ -19,7 +19,6 @@
 
 #include "api/options.h"
 #include "base/error.h"
-#include "base/grow.h"
 #include "base/sized.h"
 #include "build/build.h"
 #include "model/model.h"
@@ -40,47 +39,12 @@ static char *copy_string(const char *s)
     return c;
 }
 
-/* Whether some node of the model still reads its syntax node (the kinds
- * whose builders walk their own subtree): then the syntax tree's nodes must
- * outlive the build. */
-static int model_reads_syntax(const model *m, int *reads)
-{
-    *reads = 0;
-    const model_node **stack = NULL;
-    size_t depth = 0, cap = 0;
-    const model_node *n = m->first;
-    for (;;) {
-        if (!n) {
-            if (depth == 0)
-                break;
-            n = stack[--depth]->next;
-            continue;
-        }
-        if (n->syntax) {
-            *reads = 1;
-            break;
-        }
-        if (!n->first_child) {
-            n = n->next;
-            continue;
-        }
-        if (!grow_array((void **)&stack, &cap, depth + 1, sizeof *stack)) {
-            free(stack);
-            return 0;
-        }
-        stack[depth++] = n;
-        n = n->first_child;
-    }
-    free(stack);
-    return 1;
-}
-
 /* The three stages, each stage's input freed as soon as the next one no
  * longer needs it, so that the peak is the largest two neighbours rather
  * than all of them (a million positioned spheres: 141 MB of text, 1.1 GB of
  * syntax, 350 MB of model, 400 MB of tree): the text after parsing when
  * owned_text is set (the caller's buffer, which this frees), the syntax
- * tree's nodes after lowering when no model node reads them (the names and
+ * tree's nodes after lowering, which no model node reads (the names and
  * strings the model points to stay until the build is done), the model and
  * the rest of the syntax after the build. */
 static sc_status load(const char *name, const char *text, size_t length, char *owned_text,
@@ -114,10 +78,7 @@ static sc_status load(const char *name, const char *text, size_t length, char *o
     model *typed = NULL;
     if (st == SC_OK)
         st = model_lower(syntax, &typed, error);
-    int reads = 1;
-    if (st == SC_OK && !model_reads_syntax(typed, &reads))
-        st = err_nomem(error, NULL);
-    if (st == SC_OK && !reads)
+    if (st == SC_OK)
         parse_tree_release_nodes(syntax);
     if (st == SC_OK)
         st = build_scene(typed, own.faithful, &s->tree, &s->look, &s->warnings,

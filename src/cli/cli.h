@@ -110,5 +110,8 @@ volatile sig_atomic_t *cli_loading_flag(void);
 /* After cli_stop is set: prints the time limit's error and returns 1, or
  * prints "spancast: interrupted" and ends by the signal. */
 int cli_die_stopped(void);
+/* `spancast batch JOBS [--json]` (batch.c), with the whole argv; returns
+ * the exit status. */
+int cli_batch(int argc, char **argv);
 
 #endif

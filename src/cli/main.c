@@ -12,6 +12,7 @@
  *   spancast overlaps MODEL [--min-volume=V] [...]                   (check.c)
  *   spancast compare A B [--diff=PREFIX] [...]                       (check.c)
  *   spancast view MODEL [...]        (spancast-view: view.c and its neighbours)
+ *   spancast batch JOBS [--json]                                     (batch.c)
  *   spancast --help | --version
  *
  * MODEL is a .csg file, or a .scad file converted by OpenSCAD (scad.c).
@@ -52,7 +53,9 @@
 #include <unistd.h>
 
 #include "cli/cli.h"
+#include "cli/dist.h"
 #include "cli/scad.h"
+#include "cli/tiles.h"
 #include "cli/watch.h"
 #include "formats/file.h"
 #include "formats/image_io.h"
@@ -61,6 +64,11 @@
 #include "spancast/spancast.h"
 
 enum { EXIT_FAILED = 1, EXIT_USAGE = 2 };
+
+/* What `render` does under mpirun (CMakeLists.txt says). */
+#ifndef SPANCAST_MPI_SUPPORT
+#define SPANCAST_MPI_SUPPORT "not built"
+#endif
 
 static const char usage_text[] =
     "usage: spancast render MODEL -o OUT.png [options]\n"
@@ -73,6 +81,7 @@ static const char usage_text[] =
     "       spancast compare A B [--tolerance=REL] [--max-pixels=N] [--diff=PREFIX]\n"
     "                        [--imgsize=W,H]\n"
     "       spancast view MODEL [--imgsize=W,H] [--spp=N] [--faithful]\n"
+    "       spancast batch JOBS [--json]\n"
     "       spancast bench accuracy --csv FILE [--plot FILE.png] [--rays N]\n"
     "       spancast bench stability --csv FILE [--dir DIR] [--size N] [--depth N]\n"
     "       spancast --help | --version\n"
@@ -94,6 +103,10 @@ static const char usage_text[] =
     "These take --threads=N, --json, --faithful, --max-time=SECONDS and -q (no\n"
     "progress on stderr);\n"
     "overlaps and compare exit 2 on any error.\n"
+    "'batch' runs the spancast command of each line of JOBS (shell quoting, '#'\n"
+    "comments, paths relative to JOBS' folder), each once, across the ranks\n"
+    "under mpirun; a failed job does not stop the others; it prints a table of\n"
+    "every job, or JSON with --json, and exits 1 when a job failed.\n"
     "\n"
     "render options:\n"
     "  -o, --output=FILE      colour image; the format follows the extension\n"
@@ -121,6 +134,12 @@ static const char usage_text[] =
     "  --threads=N            worker threads (default 0: all cores)\n"
     "  --faithful             spheres and cylinders as the polyhedra OpenSCAD makes\n"
     "                         from $fn, $fa, $fs (default: exact solids)\n"
+    "  --tiled                write tiled .exr files, each tile as soon as it is\n"
+    "                         rendered, never holding the whole image (the default\n"
+    "                         for images whose buffers do not fit in memory)\n"
+    "\n"
+    "Under mpirun -np N (N > 1), render hands tiles out to all N ranks; the\n"
+    "files are the same as one process writes.\n"
     "\n"
     "preview options (CAD-style renders):\n"
     "  --colorscheme=NAME     OpenSCAD's colour scheme: Cornfield (built in) or one\n"
@@ -227,7 +246,8 @@ typedef enum opt_id {
     OPT_AO,
     OPT_AO_RADIUS,
     OPT_WATCH,
-    OPT_MAX_TIME
+    OPT_MAX_TIME,
+    OPT_TILED
 } opt_id;
 
 typedef struct opt_spec {
@@ -270,6 +290,7 @@ static const opt_spec options_table[] = {
     {"--ao-radius", OPT_AO_RADIUS, 1, 1},
     {"--watch", OPT_WATCH, 0, 1},
     {"--max-time", OPT_MAX_TIME, 1, 0},
+    {"--tiled", OPT_TILED, 0, 1},
 };
 
 typedef struct cli_args {
@@ -283,6 +304,7 @@ typedef struct cli_args {
     int camera_given;     /* --camera */
     sc_view_preset preset; /* --view-preset */
 
+    int tiled;          /* --tiled: stream the outputs tile by tile */
     int watch;          /* --watch: render again on every change */
     watch_set *watched; /* with --watch: the files the model was loaded from */
     sc_render_options options;
@@ -433,6 +455,9 @@ static int apply_option(cli_args *a, const opt_spec *spec, const char *value)
         return 0;
     case OPT_MAX_TIME:
         return cli_parse_max_time(value);
+    case OPT_TILED:
+        a->tiled = 1;
+        return 0;
     }
     return 0;
 }
@@ -554,7 +579,9 @@ static sc_scene *load(const char *path, int faithful, watch_set *watched)
         watch_add_file(watched, path);
     scad_stop stop = {&cli_stop, cli_loading_flag()};
     sc_status st;
-    if (scad_is_source(path)) {
+    if (dist_size() > 1) {
+        st = dist_load(path, &lo, &scene, &error); /* rank 0 reads */
+    } else if (scad_is_source(path)) {
         st = scad_load_files(path, &lo, &scene, &error, watched ? watch_add_file : NULL,
                              watched, &stop);
     } else {
@@ -567,7 +594,7 @@ static sc_scene *load(const char *path, int faithful, watch_set *watched)
             print_error(&error);
         return NULL;
     }
-    size_t warnings = sc_scene_warning_count(scene);
+    size_t warnings = dist_rank() == 0 ? sc_scene_warning_count(scene) : 0;
     for (size_t k = 0; k < warnings; k++)
         print_warning(sc_scene_warning(scene, k));
     return scene;
@@ -735,9 +762,13 @@ static int run_render(cli_args *a, int argc, char **argv)
         (a->normal && imgio_check(a->normal, IMGIO_NORMAL, &error)) ||
         (a->id && imgio_check(a->id, IMGIO_ID, &error)))
         return cli_usage_error("%s", error.message);
-    if (!output_writable(a->output) || (a->mask && !output_writable(a->mask)) ||
-        (a->depth && !output_writable(a->depth)) ||
-        (a->normal && !output_writable(a->normal)) || (a->id && !output_writable(a->id)))
+    int unwritable = /* rank 0 writes the files; every rank learns the outcome */
+        dist_rank() == 0 &&
+        (!output_writable(a->output) || (a->mask && !output_writable(a->mask)) ||
+         (a->depth && !output_writable(a->depth)) ||
+         (a->normal && !output_writable(a->normal)) ||
+         (a->id && !output_writable(a->id)));
+    if (dist_agree(unwritable))
         return EXIT_FAILED;
 
     double start = seconds_now();
@@ -773,7 +804,10 @@ static int run_render(cli_args *a, int argc, char **argv)
     }
     sc_framebuffer *fb = NULL;
     int status = 0;
-    sc_status st = sc_render(scene, &a->options, &fb, &error);
+    /* One sc_render, or tiles across MPI ranks or streamed to the files. */
+    tiles_outputs outputs = {a->output, a->mask, a->depth, a->normal, a->id, a->tiled};
+    int streamed = 0;
+    sc_status st = tiles_render(scene, &a->options, &outputs, &fb, &streamed, &error);
     if (st == SC_ERR_CANCELLED) {
         sc_scene_release(scene);
         return cli_die_stopped();
@@ -784,12 +818,17 @@ static int run_render(cli_args *a, int argc, char **argv)
         sc_scene_release(scene);
         return st == SC_ERR_ARGUMENT ? EXIT_USAGE : EXIT_FAILED;
     }
+    if (!fb) { /* an MPI rank other than 0: rank 0 writes and reports */
+        sc_scene_release(scene);
+        return 0;
+    }
     double written = seconds_now();
-    if (sc_framebuffer_write_color(fb, a->output, &error) != SC_OK ||
-        (a->mask && sc_framebuffer_write_mask(fb, a->mask, &error) != SC_OK) ||
-        (a->depth && sc_framebuffer_write_depth(fb, a->depth, &error) != SC_OK) ||
-        (a->normal && sc_framebuffer_write_normal(fb, a->normal, &error) != SC_OK) ||
-        (a->id && sc_framebuffer_write_id(fb, a->id, &error) != SC_OK)) {
+    if (!streamed && /* else written tile by tile */
+        (sc_framebuffer_write_color(fb, a->output, &error) != SC_OK ||
+         (a->mask && sc_framebuffer_write_mask(fb, a->mask, &error) != SC_OK) ||
+         (a->depth && sc_framebuffer_write_depth(fb, a->depth, &error) != SC_OK) ||
+         (a->normal && sc_framebuffer_write_normal(fb, a->normal, &error) != SC_OK) ||
+         (a->id && sc_framebuffer_write_id(fb, a->id, &error) != SC_OK))) {
         if (error.status == SC_ERR_CANCELLED) {
             sc_framebuffer_release(fb);
             sc_scene_release(scene);
@@ -936,13 +975,21 @@ int main(int argc, char **argv)
             return 0;
         }
         if (!strcmp(argv[k], "--version")) {
-            printf("spancast %s\n", SPANCAST_VERSION_STRING);
+            printf("spancast %s\nmpi: %s\n", SPANCAST_VERSION_STRING,
+                   SPANCAST_MPI_SUPPORT);
             return 0;
         }
     }
     if (argc < 2)
         return cli_usage_error("missing command (try 'spancast --help')");
     const char *command = argv[1];
+    if (!strcmp(command, "render") || !strcmp(command, "batch")) {
+        int st = dist_enter(argc, argv); /* under mpirun: spancast-mpi */
+        if (st >= 0)
+            return st;
+    }
+    if (!strcmp(command, "batch"))
+        return cli_batch(argc, argv);
     if (!strcmp(command, "bench"))
         return run_bench(argv);
     if (!strcmp(command, "spans"))
@@ -968,11 +1015,13 @@ int main(int argc, char **argv)
     else
         return cli_usage_error(
             "unknown command '%s' (expected 'render', 'info', "
-            "'spans', 'inside', 'measure', 'overlaps', 'compare' or 'view')",
+            "'spans', 'inside', 'measure', 'overlaps', 'compare', 'view' or 'batch')",
             command);
     int st = parse_args(&a, argc, argv);
     if (st)
         return st;
+    if (a.render && a.watch && dist_size() > 1)
+        return cli_usage_error("--watch does not run under mpirun");
     if (a.render && a.watch)
         return run_render_watched(&a, argc, argv);
     return a.render ? run_render(&a, argc, argv) : run_info(&a);

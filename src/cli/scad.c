@@ -171,6 +171,29 @@ sc_status scad_load_files(const char *path, const sc_load_options *options,
                           const scad_stop *stop)
 {
     *scene = NULL;
+    char *text = NULL, name[PATH_MAX + 16];
+    size_t size = 0;
+    sc_status st =
+        scad_convert(path, &text, &size, name, sizeof name, error, depend, user, stop);
+    if (st == SC_OK) {
+        if (stop && stop->loading)
+            *stop->loading = 1;
+        st = sc_scene_load_string(name, text, size, options, scene, error);
+        if (stop && stop->loading)
+            *stop->loading = 0;
+    }
+    free(text);
+    return st;
+}
+
+sc_status scad_convert(const char *path, char **text, size_t *size, char *name,
+                       size_t name_size, sc_error *error,
+                       void (*depend)(void *user, const char *file), void *user,
+                       const scad_stop *stop)
+{
+    *text = NULL;
+    *size = 0;
+    name[0] = '\0';
     char source[PATH_MAX];
     if (!realpath(path, source))
         return fail(error, SC_ERR_IO, "cannot open '%s': %s", path, strerror(errno));
@@ -181,11 +204,11 @@ sc_status scad_load_files(const char *path, const sc_load_options *options,
         return fail(error, SC_ERR_IO, "cannot make a temporary directory in '%s': %s",
                     tmp && tmp[0] ? tmp : "/tmp", strerror(errno));
     const char *base = strrchr(source, '/') + 1; /* realpath is absolute */
-    char csg[PATH_MAX + 16], log[PATH_MAX + 16], name[PATH_MAX + 16], deps[PATH_MAX + 16];
+    char csg[PATH_MAX + 16], log[PATH_MAX + 16], deps[PATH_MAX + 16];
     snprintf(csg, sizeof csg, "%s/%.*s.csg", dir, (int)(strlen(base) - 5), base);
     snprintf(log, sizeof log, "%s/openscad.log", dir);
     snprintf(deps, sizeof deps, "%s/openscad.d", dir);
-    snprintf(name, sizeof name, "%.*s.csg", (int)(strlen(source) - 5), source);
+    snprintf(name, name_size, "%.*s.csg", (int)(strlen(source) - 5), source);
 
     posix_spawn_file_actions_t actions;
     posix_spawn_file_actions_init(&actions);
@@ -220,25 +243,15 @@ sc_status scad_load_files(const char *path, const sc_load_options *options,
     }
     if (st == SC_OK && depend)
         read_depends(deps, depend, user);
-    char *text = NULL;
-    size_t size = 0;
     if (st == SC_OK) {
         const char *why;
-        text = file_read(csg, SIZE_MAX / 2, &size, &why);
-        if (!text)
+        *text = file_read(csg, SIZE_MAX / 2, size, &why);
+        if (!*text)
             st = fail(error, SC_ERR_IO, "OpenSCAD wrote no CSG for '%s'%s", path, "");
     }
     unlink(csg);
     unlink(log);
     unlink(deps);
     rmdir(dir);
-    if (st == SC_OK) {
-        if (stop && stop->loading)
-            *stop->loading = 1;
-        st = sc_scene_load_string(name, text, size, options, scene, error);
-        if (stop && stop->loading)
-            *stop->loading = 0;
-    }
-    free(text);
     return st;
 }

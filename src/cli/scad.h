@@ -37,4 +37,14 @@ sc_status scad_load_files(const char *path, const sc_load_options *options,
                           void (*depend)(void *user, const char *file), void *user,
                           const scad_stop *stop);
 
+/* The conversion alone: OpenSCAD's CSG text for path into *text
+ * (malloc'd and NUL-terminated, *size bytes; the caller frees it) and the
+ * name to load it under (DIR/NAME.csg) into name; depend and stop as above. On
+ * failure *text is NULL and error says why. (spancast-mpi converts once
+ * and sends the text to its other ranks.) */
+sc_status scad_convert(const char *path, char **text, size_t *size, char *name,
+                       size_t name_size, sc_error *error,
+                       void (*depend)(void *user, const char *file), void *user,
+                       const scad_stop *stop);
+
 #endif

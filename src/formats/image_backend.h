@@ -42,6 +42,20 @@ typedef struct imgio_image {
 int imgio_png_write(const imgio_image *img, const char *path, char *err, size_t err_size);
 int imgio_exr_write(const imgio_image *img, const char *path, char *err, size_t err_size);
 
+/* Tiled EXR, tile by tile (image_exr_tiled.cpp). open starts a file of
+ * img's size, channels, sample type and metadata (img->pixels is not
+ * read) in square tiles of side tile; write stores tile (tx, ty) from
+ * pixels, its rows from the top, channels interleaved, as wide and high as
+ * the tile is inside the image; tiles come row by row, left to right, each
+ * once. close finishes the file and frees t (also after a failure). Each
+ * returns NULL or 0 on failure with a message in err. */
+typedef struct imgio_exr_tiles imgio_exr_tiles;
+imgio_exr_tiles *imgio_exr_tiles_open(const imgio_image *img, int tile, const char *path,
+                                      char *err, size_t err_size);
+int imgio_exr_tiles_write(imgio_exr_tiles *t, int tx, int ty, const void *pixels,
+                          char *err, size_t err_size);
+int imgio_exr_tiles_close(imgio_exr_tiles *t, char *err, size_t err_size);
+
 /* Readers, as image_read(): 1 on success, else 0 with the whole message
  * ("cannot read 'x': ...") in err. */
 int imgio_png_read(const char *path, image_data *out, char *err, size_t err_size);

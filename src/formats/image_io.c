@@ -20,6 +20,9 @@
  * removed and the target is not touched. A write that has begun is finished
  * first: an image write is short beside the render before it. Only a flag
  * read is involved, so nothing here has to be async-signal-safe.
+ *
+ * Tiled outputs (image_stream.h) take the same temporary and rename, with
+ * the tiles written into the temporary as they arrive.
  */
 #define _POSIX_C_SOURCE 200809L
 
@@ -37,6 +40,7 @@
 #include "base/error.h"
 #include "formats/color.h"
 #include "formats/image_backend.h"
+#include "formats/image_stream.h"
 
 #ifndef SPANCAST_VERSION
 #define SPANCAST_VERSION "0.1.0" /* as the command line reports it */
@@ -353,5 +357,148 @@ sc_status sc_framebuffer_write_id(const sc_framebuffer *fb, const char *path,
     img.pixels = ids;
     st = write_image(path, IMGIO_ID, &img, fb->cancel, error);
     free(ids);
+    return st;
+}
+
+/* ---- tiled outputs (image_stream.h) ---- */
+
+struct imgio_stream {
+    imgio_kind kind;
+    char *path, *tmp;
+    imgio_exr_tiles *tiles;
+    int tile;
+    float *ids; /* one tile of ids as float */
+};
+
+int imgio_stream_supported(const char *path)
+{
+    char ext[16];
+    extension_of(path, ext, sizeof ext);
+    return backend_of(ext) == BACKEND_EXR;
+}
+
+static char *copy_text(const char *s)
+{
+    size_t n = strlen(s) + 1;
+    char *c = malloc(n);
+    if (c)
+        memcpy(c, s, n);
+    return c;
+}
+
+void imgio_stream_abandon(imgio_stream *s)
+{
+    if (!s)
+        return;
+    char ignored[MESSAGE_SIZE];
+    imgio_exr_tiles_close(s->tiles, ignored, sizeof ignored);
+    if (s->tmp)
+        remove(s->tmp);
+    free(s->tmp);
+    free(s->path);
+    free(s->ids);
+    free(s);
+}
+
+sc_status imgio_stream_open(const char *path, imgio_kind kind, int width, int height,
+                            int tile, const char *camera, imgio_stream **out,
+                            sc_error *error)
+{
+    *out = NULL;
+    sc_status st = imgio_check(path, kind, error);
+    if (st)
+        return st;
+    if (!imgio_stream_supported(path))
+        return err_set(error, SC_ERR_ARGUMENT, NULL,
+                       "cannot write '%s' tile by tile: only .exr is written that way",
+                       path);
+    imgio_stream *s = calloc(1, sizeof *s);
+    if (!s || !(s->path = copy_text(path)) ||
+        (kind == IMGIO_ID &&
+         !(s->ids = malloc((size_t)tile * (size_t)tile * sizeof *s->ids)))) {
+        imgio_stream_abandon(s);
+        return out_of_memory(path, error);
+    }
+    s->kind = kind;
+    s->tile = tile;
+    s->tmp = create_temporary(path);
+    if (!s->tmp) {
+        int code = errno;
+        imgio_stream_abandon(s);
+        return err_set(error, SC_ERR_IO, NULL, "cannot write '%s': %s", path,
+                       strerror(code));
+    }
+    static const char *const color_names[] = {"R", "G", "B"};
+    static const char *const normal_names[] = {"X", "Y", "Z"};
+    static const char *const mask_names[] = {"Y"};
+    static const char *const depth_names[] = {"Z"};
+    static const char *const id_names[] = {"id"};
+    imgio_image img;
+    memset(&img, 0, sizeof img);
+    img.width = width;
+    img.height = height;
+    img.sample = kind == IMGIO_MASK ? IMGIO_UINT8 : IMGIO_FLOAT;
+    img.channels = kind == IMGIO_COLOR || kind == IMGIO_NORMAL ? 3 : 1;
+    img.channel_names = kind == IMGIO_COLOR    ? color_names
+                        : kind == IMGIO_NORMAL ? normal_names
+                        : kind == IMGIO_MASK   ? mask_names
+                        : kind == IMGIO_DEPTH  ? depth_names
+                                               : id_names;
+    img.color_space = kind == IMGIO_COLOR ? "Linear" : NULL;
+    img.software = "spancast " SPANCAST_VERSION;
+    img.camera = camera && camera[0] ? camera : NULL;
+    char failure[MESSAGE_SIZE] = "";
+    s->tiles = imgio_exr_tiles_open(&img, tile, s->tmp, failure, sizeof failure);
+    if (!s->tiles) {
+        imgio_stream_abandon(s);
+        return err_set(error, SC_ERR_IO, NULL, "cannot write '%s': %s", path, failure);
+    }
+    *out = s;
+    return SC_OK;
+}
+
+sc_status imgio_stream_write(imgio_stream *s, int tx, int ty, const sc_framebuffer *tile,
+                             sc_error *error)
+{
+    const void *pixels = s->kind == IMGIO_COLOR    ? (const void *)tile->color
+                         : s->kind == IMGIO_MASK   ? (const void *)tile->mask
+                         : s->kind == IMGIO_DEPTH  ? (const void *)tile->depth
+                         : s->kind == IMGIO_NORMAL ? (const void *)tile->normal
+                                                   : (const void *)tile->id;
+    if (!pixels || tile->width > s->tile || tile->height > s->tile)
+        return err_set(error, SC_ERR_ARGUMENT, NULL,
+                       "cannot write '%s': a tile does not fit the file's tiles",
+                       s->path);
+    if (s->kind == IMGIO_ID) { /* as sc_framebuffer_write_id: floats */
+        size_t pixel_count = (size_t)tile->width * (size_t)tile->height;
+        for (size_t k = 0; k < pixel_count; k++)
+            s->ids[k] = (float)tile->id[k];
+        pixels = s->ids;
+    }
+    char failure[MESSAGE_SIZE] = "";
+    if (!imgio_exr_tiles_write(s->tiles, tx, ty, pixels, failure, sizeof failure))
+        return err_set(error, SC_ERR_IO, NULL, "cannot write '%s': %s", s->path, failure);
+    return SC_OK;
+}
+
+sc_status imgio_stream_finish(imgio_stream *s, const volatile sig_atomic_t *cancel,
+                              sc_error *error)
+{
+    char failure[MESSAGE_SIZE] = "";
+    int ok = imgio_exr_tiles_close(s->tiles, failure, sizeof failure);
+    s->tiles = NULL;
+    sc_status st = SC_OK;
+    if (cancelled(cancel))
+        st = err_set(error, SC_ERR_CANCELLED, NULL, "interrupted");
+    else if (!ok)
+        st = err_set(error, SC_ERR_IO, NULL, "cannot write '%s': %s", s->path, failure);
+    else if (rename(s->tmp, s->path) != 0)
+        st = err_set(error, SC_ERR_IO, NULL, "cannot write '%s': %s", s->path,
+                     strerror(errno));
+    else {
+        free(s->tmp);
+        s->tmp = NULL; /* renamed: nothing to remove */
+    }
+    imgio_stream_abandon(s);
     return st;
 }

@@ -1,9 +1,11 @@
 /* The memory and the work a render may take, and the errors of both.
  *
- * A render holds its buffers whole until they are written: colour and
- * normal take 12 bytes a pixel, depth and id 4, mask 1. Everything else (the tree,
- * per-thread scratch arenas) is small beside them at any size where the
- * check matters. Allocating first and failing later is not good enough: on
+ * A render holds its buffers (the image, or the --region crop of it) whole
+ * until they are written: colour and normal take 12 bytes a pixel, depth
+ * and id 4, mask 1. Everything else (the tree, per-thread scratch arenas)
+ * is small beside them at any size where the check matters. An image
+ * larger than this allows is rendered tile by tile by the command line,
+ * each tile a crop of its own. Allocating first and failing later is not good enough: on
  * Linux, malloc of an oversized buffer usually succeeds and the process is
  * killed when the pages are touched, far into the render. So the sum is
  * compared with a fixed limit, which makes the error the same on every
@@ -38,7 +40,7 @@
 /* Checks, before anything is allocated, that the buffers options ask for
  * fit in RENDER_MAX_MEMORY_GIB and in the machine's physical memory, so that
  * a huge image is a clear error rather than an out-of-memory kill. The
- * sizes cannot overflow: at most 32768^2 pixels of 33 bytes. */
+ * sizes cannot overflow: at most 2^36 pixels of 33 bytes. */
 sc_status render_check_memory(const sc_render_options *o, sc_error *error)
 {
     uint64_t per_pixel = (o->want_color ? 3 * sizeof(float) : 0) +

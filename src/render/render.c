@@ -553,9 +553,10 @@ sc_status render_scene(const csg_tree *tree, const shading *look,
     c.view_count = options->sheet_count > 0 ? options->sheet_count : 1;
     int width, height;
     image_size(options, &c.cols, &width, &height);
-    sc_render_options whole = *options; /* the buffers' budget: the whole sheet */
-    whole.width = width;
-    whole.height = height;
+    /* The buffers' budget: the crop, else the whole sheet. */
+    sc_render_options whole = *options;
+    whole.width = has_region(options) ? options->region[2] - options->region[0] : width;
+    whole.height = has_region(options) ? options->region[3] - options->region[1] : height;
     st = render_check_memory(&whole, error);
     if (st)
         return st;

@@ -14,7 +14,7 @@
 #include "spancast/spancast.h"
 
 #define RENDER_TILE_SIZE 16      /* tiles of 16 x 16 pixels are scheduled over threads */
-#define RENDER_MAX_SIDE 32768    /* largest image width or height */
+#define RENDER_MAX_SIDE 262144   /* largest image width or height (2^28 tiles) */
 #define RENDER_MAX_SPP 65536     /* most samples per pixel */
 #define RENDER_MAX_EDGE_WIDTH 16 /* widest edge line, pixels */
 #define RENDER_DEFAULT_EDGE_ANGLE 30.0 /* creases: degrees between normals */

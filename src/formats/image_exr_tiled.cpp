@@ -1,0 +1,149 @@
+// Tiled EXR files written tile by tile, for images too large to hold whole.
+//
+// A render that streams its outputs (image_stream.h) hands each finished
+// tile to imgio_exr_tiles_write as soon as it has it. The file is a single
+// tiled part with square tiles of one level, ZIP compression (each tile
+// compressed on its own) and the channels, sample types and metadata of
+// imgio_exr_write, so that only the layout differs from a scanline file of
+// the same image. Tiles are written in INCREASING_Y order (row by row,
+// left to right): the caller delivers them in that order, so OpenEXR
+// writes each at once and buffers nothing, and the file's bytes do not
+// depend on when each tile was finished. Memory is one tile's conversion
+// buffer and OpenEXR's table of tile offsets (8 bytes a tile).
+//
+// As in image_exr.cpp, OpenEXR's exceptions become messages here and
+// never leave this file.
+#include "formats/image_backend.h"
+
+#include <OpenEXR/ImfChannelList.h>
+#include <OpenEXR/ImfFrameBuffer.h>
+#include <OpenEXR/ImfHeader.h>
+#include <OpenEXR/ImfStringAttribute.h>
+#include <OpenEXR/ImfTileDescription.h>
+#include <OpenEXR/ImfTiledOutputFile.h>
+#include <Imath/half.h>
+
+#include <cstdio>
+#include <exception>
+#include <memory>
+#include <new>
+#include <string>
+#include <vector>
+
+struct imgio_exr_tiles {
+    std::unique_ptr<Imf::TiledOutputFile> file;
+    int width, height, tile, channels;
+    std::vector<std::string> names;
+    imgio_sample sample;
+    std::vector<Imath::half> halves; // one tile of 8-bit values as half
+};
+
+namespace
+{
+
+void message(char *err, size_t err_size, const char *what)
+{
+    std::string text = what;
+    while (!text.empty() && (text.back() == '\n' || text.back() == ' '))
+        text.pop_back();
+    std::snprintf(err, err_size, "%s",
+                  text.empty() ? "unknown OpenEXR error" : text.c_str());
+}
+
+} // namespace
+
+extern "C" imgio_exr_tiles *imgio_exr_tiles_open(const imgio_image *img, int tile,
+                                                 const char *path, char *err,
+                                                 size_t err_size)
+{
+    imgio_exr_tiles *t = nullptr;
+    try {
+        t = new imgio_exr_tiles;
+        t->width = img->width;
+        t->height = img->height;
+        t->tile = tile;
+        t->channels = img->channels;
+        t->sample = img->sample;
+        for (int c = 0; c < img->channels; c++)
+            t->names.push_back(img->channel_names[c]);
+        Imf::Header header(img->width, img->height);
+        header.compression() = Imf::ZIP_COMPRESSION;
+        header.lineOrder() = Imf::INCREASING_Y;
+        header.setTileDescription(Imf::TileDescription((unsigned)tile, (unsigned)tile,
+                                                       Imf::ONE_LEVEL, Imf::ROUND_DOWN));
+        header.insert("Software", Imf::StringAttribute(img->software));
+        if (img->camera) {
+            header.insert("comments",
+                          Imf::StringAttribute(std::string("camera: ") + img->camera));
+            header.insert("spancast:camera", Imf::StringAttribute(img->camera));
+        }
+        Imf::PixelType type = img->sample == IMGIO_UINT8 ? Imf::HALF : Imf::FLOAT;
+        for (int c = 0; c < img->channels; c++)
+            header.channels().insert(img->channel_names[c], Imf::Channel(type));
+        t->file.reset(new Imf::TiledOutputFile(path, header));
+        return t;
+    } catch (const std::bad_alloc &) {
+        message(err, err_size, "out of memory");
+    } catch (const std::exception &e) {
+        message(err, err_size, e.what());
+    }
+    delete t;
+    return nullptr;
+}
+
+extern "C" int imgio_exr_tiles_write(imgio_exr_tiles *t, int tx, int ty,
+                                     const void *pixels, char *err, size_t err_size)
+{
+    try {
+        int w = t->width - tx * t->tile < t->tile ? t->width - tx * t->tile : t->tile;
+        int h = t->height - ty * t->tile < t->tile ? t->height - ty * t->tile : t->tile;
+        size_t values = (size_t)w * (size_t)h * (size_t)t->channels;
+        const char *data = static_cast<const char *>(pixels);
+        Imf::PixelType type = Imf::FLOAT;
+        size_t sample_size = sizeof(float);
+        if (t->sample == IMGIO_UINT8) { // as imgio_exr_write: v / 255 as half
+            t->halves.resize(values);
+            const unsigned char *bytes = static_cast<const unsigned char *>(pixels);
+            for (size_t k = 0; k < values; k++)
+                t->halves[k] = Imath::half(bytes[k] / 255.0f);
+            data = reinterpret_cast<const char *>(t->halves.data());
+            type = Imf::HALF;
+            sample_size = sizeof(Imath::half);
+        }
+        // Slices in tile coordinates: pixel (x, y) of the tile at
+        // data + x * x_stride + y * y_stride.
+        Imf::FrameBuffer frame;
+        size_t x_stride = sample_size * (size_t)t->channels;
+        for (int c = 0; c < t->channels; c++)
+            frame.insert(t->names[(size_t)c],
+                         Imf::Slice(type, const_cast<char *>(data) + c * sample_size,
+                                    x_stride, x_stride * (size_t)w, 1, 1, 0.0, true,
+                                    true));
+        t->file->setFrameBuffer(frame);
+        t->file->writeTile(tx, ty);
+        return 1;
+    } catch (const std::bad_alloc &) {
+        message(err, err_size, "out of memory");
+    } catch (const std::exception &e) {
+        message(err, err_size, e.what());
+    }
+    return 0;
+}
+
+extern "C" int imgio_exr_tiles_close(imgio_exr_tiles *t, char *err, size_t err_size)
+{
+    if (!t)
+        return 1;
+    int ok = 1;
+    try {
+        t->file.reset(); // writes the tile offsets and closes the file
+    } catch (const std::bad_alloc &) {
+        message(err, err_size, "out of memory");
+        ok = 0;
+    } catch (const std::exception &e) {
+        message(err, err_size, e.what());
+        ok = 0;
+    }
+    delete t;
+    return ok;
+}

@@ -1,0 +1,104 @@
+# `spancast render --tiled` (and images too large to hold whole): tiled
+# EXR files written tile by tile, pixel for pixel the whole render's, in
+# bounded memory, through a temporary; outputs that cannot be streamed are
+# refused before any work.
+#
+# Run as: bash cli_tiled.sh <path-to-spancast> <source-dir> <work-dir>
+. "$(dirname "$0")/testlib.sh"
+require_tools idiff iinfo
+
+cat >m.csg <<'CSG'
+difference() {
+  cube(size = [10, 10, 10], center = true);
+  sphere(r = 6.5, $fn = 0, $fa = 12, $fs = 2);
+}
+CSG
+
+# The same pixels as one render, every output, with samples and edges.
+opts=(--imgsize=300,200 --spp=2 --view=edges -q)
+check
+"$bin" render m.csg -o whole.exr --mask=whole-mask.exr --depth=whole-depth.exr \
+    --normal=whole-normal.exr --id=whole-id.exr "${opts[@]}" || fail "whole render failed"
+"$bin" render m.csg -o tiled.exr --mask=tiled-mask.exr --depth=tiled-depth.exr \
+    --normal=tiled-normal.exr --id=tiled-id.exr "${opts[@]}" --tiled || fail "--tiled failed"
+for out in "" -mask -depth -normal -id; do
+    check
+    idiff -fail 0 -warn 0 "whole$out.exr" "tiled$out.exr" >idiff.txt 2>&1 ||
+        fail "tiled$out.exr differs from whole$out.exr: $(tail -n 3 idiff.txt)"
+    iinfo -v "tiled$out.exr" | grep -q 'tile size: 32 x 32' ||
+        fail "tiled$out.exr is not tiled: $(iinfo -v "tiled$out.exr" | head -n 4)"
+done
+ls -a | grep -q '\.tmp-' && fail "a temporary was left behind: $(ls -a | grep '\.tmp-')"
+
+# A crop, tiled, is the crop.
+check
+"$bin" render m.csg -o crop.exr --region=10,20,250,180 --imgsize=300,200 -q ||
+    fail "crop failed"
+"$bin" render m.csg -o crop-tiled.exr --region=10,20,250,180 --imgsize=300,200 -q --tiled ||
+    fail "tiled crop failed"
+idiff -fail 0 -warn 0 crop.exr crop-tiled.exr >idiff.txt 2>&1 ||
+    fail "tiled crop differs: $(tail -n 3 idiff.txt)"
+
+# Only EXR is written tile by tile: other outputs are refused up front,
+# and an existing file is left alone.
+check
+echo keep >keep.png
+"$bin" render m.csg -o keep.png --tiled -q 2>err.txt
+rc=$?
+[ "$rc" = 2 ] || fail "--tiled to .png exited $rc"
+grep -qx "spancast: error: cannot write 'keep.png': --tiled writes each tile as it is done; only .exr outputs are written tile by tile" err.txt ||
+    fail "--tiled to .png: '$(cat err.txt)'"
+[ "$(cat keep.png)" = keep ] || fail "--tiled to .png touched keep.png"
+# An image whose buffers do not fit anywhere must be streamed: a PNG of it
+# is refused with the budget's reason, before any work.
+check
+"$bin" render m.csg -o huge.png --imgsize=200000,200000 -q 2>err.txt
+rc=$?
+[ "$rc" = 2 ] || fail "a 200000x200000 PNG exited $rc"
+grep -qx "spancast: error: cannot write 'huge.png': a 200000x200000 render needs 447.0 GiB of image buffers (limit is 16 GiB); only .exr outputs are written tile by tile" err.txt ||
+    fail "a 200000x200000 PNG: '$(cat err.txt)'"
+[ -e huge.png ] && fail "huge.png was written"
+
+# Interrupted while the tiles are being written: the temporary is
+# removed, the existing target is left as it was, and the tool dies of
+# the signal.
+check
+echo keep >keep.exr
+"$bin" render m.csg -o keep.exr --imgsize=4000,3000 --spp=4 --tiled -q 2>int.txt &
+pid=$!
+for _ in $(seq 600); do # up to 60 s for the first tile to reach the file
+    ls -a | grep -q '^\.keep\.tmp-' && break
+    sleep 0.1
+done
+ls -a | grep -q '^\.keep\.tmp-' || fail "no temporary appeared for keep.exr"
+kill -TERM "$pid" # (a background job of a script ignores SIGINT)
+wait "$pid"
+rc=$?
+[ "$rc" = 143 ] || fail "the interrupted tiled render exited $rc: $(cat int.txt)"
+grep -qx "spancast: interrupted" int.txt || fail "interrupted: '$(cat int.txt)'"
+[ "$(cat keep.exr)" = keep ] || fail "the interrupted render touched keep.exr"
+ls -a | grep -q '\.tmp-' && fail "the interrupted render left $(ls -a | grep '\.tmp-')"
+
+# Memory: colour, depth and normals of 3000 x 2000 pixels take 168 MB as
+# buffers; streamed, the peak (GNU time's %M, KiB) stays under a third of
+# that. The model is small in the frame, so most rays miss and the run is
+# short. (Under AddressSanitizer freed tiles wait in its quarantine: keep
+# it small, or it would be counted.)
+if [ -x /usr/bin/time ]; then
+    check
+    ASAN_OPTIONS=${ASAN_OPTIONS:+$ASAN_OPTIONS:}quarantine_size_mb=4 \
+        /usr/bin/time -f %M -o rss.txt "$bin" render m.csg -o big.exr --depth=big-depth.exr \
+        --normal=big-normal.exr --imgsize=3000,2000 --camera=0,0,0,55,0,25,3000 --tiled -q ||
+        fail "the 3000x2000 tiled render failed"
+    peak_kib=$(tail -n 1 rss.txt)
+    buffers_kib=$((3000 * 2000 * 28 / 1024))
+    [ "$peak_kib" -lt $((buffers_kib / 3)) ] ||
+        fail "peak memory $peak_kib KiB, not under a third of the image's $buffers_kib KiB"
+    iinfo big.exr | grep -q '3000 x 2000, 3 channel, float openexr' ||
+        fail "big.exr: $(iinfo big.exr)"
+else
+    skip "GNU time (/usr/bin/time) is not installed"
+fi
+
+echo "$checks checks, $fails failures"
+[ "$fails" = 0 ]
