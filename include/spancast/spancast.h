@@ -265,12 +265,19 @@ typedef struct sc_render_options {
      * columns * width by rows * height pixels and region is a crop of it. */
     int sheet_count;
     sc_view_preset sheet[SC_MAX_SHEET];
+
+    /* Distribution ray tracing (docs/distribution.md). */
+    double aperture; /* thin-lens diameter in world units; 0 (default): a pinhole,
+                        everything sharp */
+    double focus;    /* distance from the eye to the sharp plane; 0 (default): the
+                        distance to the view's centre */
 } sc_render_options;
 
 void sc_render_options_init(sc_render_options *options);
 
 /* Applies the scene's own settings to options: a camera() node in the file
- * sets camera_mode (SC_CAMERA_VECTOR), camera, up, fov_deg and projection.
+ * sets camera_mode (SC_CAMERA_VECTOR), camera, up, fov_deg, projection,
+ * aperture and focus.
  * Call it after sc_render_options_init and before applying the user's own
  * choices, so that those override the file. Returns 1 when the file has a
  * camera, else 0 (options unchanged). */

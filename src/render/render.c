@@ -75,6 +75,8 @@ int sc_render_options_from_scene(sc_render_options *options, const sc_scene *sce
     memcpy(options->up, c->up, sizeof c->up);
     options->fov_deg = c->fov_deg;
     options->projection = c->projection;
+    options->aperture = c->aperture;
+    options->focus = c->focus;
     return 1;
 }
 
@@ -120,6 +122,7 @@ static void trace_view_ray(const render_view *v, shade_thread *st, int i, int j,
                            double sx, double sy, view_ray *out)
 {
     cam_ray(&v->cam, i, j, sx, sy, &out->ray.o, &out->ray.d);
+    cam_lens_ray(&v->cam, st->lens[0], st->lens[1], &out->ray.o, &out->ray.d);
     out->ray.tmin = 0;
     out->ray.tmax = INFINITY;
     out->found = shade_first_hit(&v->shade, st, &out->ray, &out->hit);
@@ -227,6 +230,9 @@ static void render_pixel(const render_ctx *c, render_thread *th, int i, int j)
     st.scratch = &th->scratch;
     st.csg = &th->csg;
     memset(&st.count, 0, sizeof st.count);
+    sample_pixel px = {(uint32_t)x, (uint32_t)y, 0, c->spp, c->grid_width, 0};
+    st.px = px;
+    st.lens[0] = st.lens[1] = 0; /* the centre ray passes the lens's centre */
 
     /* The centre ray: the AOVs, and the colour at one sample per pixel. */
     view_ray centre;
@@ -264,6 +270,8 @@ static void render_pixel(const render_ctx *c, render_thread *th, int i, int j)
     double sum[3] = {0, 0, 0};
     for (int s = 0; s < c->spp; s++) {
         st.rng = sample_rng_for((uint32_t)x, (uint32_t)y, (uint32_t)s);
+        st.px.s = s;
+        st.px.dim = 0;
         memset(&st.count, 0, sizeof st.count);
         double rgb[3];
         if (c->spp == 1) {
@@ -271,6 +279,11 @@ static void render_pixel(const render_ctx *c, render_thread *th, int i, int j)
         } else {
             double sx, sy;
             sample_offset(s, c->spp, c->grid_width, &st.rng, &sx, &sy);
+            if (v->cam.lens_radius > 0) {
+                double lu, lv;
+                sample_2d(&st.px, &st.rng, &lu, &lv);
+                sample_disc(lu, lv, &st.lens[0], &st.lens[1]);
+            }
             view_ray r;
             trace_view_ray(v, &st, vx, vy, sx, sy, &r);
             th->camera_rays++;
@@ -449,6 +462,8 @@ static sc_status prepare_view(render_ctx *c, int k, const shading *look,
     if (st == SC_OK)
         st = cam_init(&v->cam, &view, options->fov_deg, options->projection,
                       options->width, options->height, error);
+    if (st == SC_OK)
+        st = cam_set_lens(&v->cam, options->aperture, options->focus, error);
     if (st)
         return st;
     st = shade_prepare(&v->shade, c->tree, look, &v->cam, options, error);

@@ -1,0 +1,385 @@
+/* Tests of distribution ray tracing (docs/distribution.md): glossy
+ * reflection and transmission, rectangular area lights, the thin-lens
+ * camera, and the stratified dimensions they draw (src/render/sample.h).
+ *
+ * Each effect is checked against an analytic figure measured on the image,
+ * not against a stored picture: the energy a glossy lobe keeps under a
+ * white sky against a quadrature of the lobe, the width of an area light's
+ * penumbra against similar triangles, the width of a defocused edge
+ * against the thin lens's circle of confusion. Widths are measured as the
+ * standard deviation of the edge's spread (the derivative of a row-averaged
+ * profile), which uses every pixel of the transition instead of two
+ * thresholds, less the pixel filter's own share (a box one pixel wide has
+ * variance 1/12 pixel^2).
+ */
+#define PI 3.14159265358979323846
+
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+
+#include <cmocka.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "formats/color.h"
+#include "render/render.h"
+#include "render/sample.h"
+#include "spancast/spancast.h"
+
+/* Extra options for a render: what the caller sets beyond the size. */
+typedef struct extra {
+    double aperture, focus; /* < 0: leave as the scene has them */
+} extra;
+
+static const extra none = {-1, -1};
+
+/* Loads text, applies its camera, renders w x h at spp samples. */
+static sc_framebuffer *render_with(const char *text, int w, int h, int spp, extra x)
+{
+    sc_scene *scene = NULL;
+    sc_error e;
+    sc_status st = sc_scene_load_string("t.csg", text, strlen(text), NULL, &scene, &e);
+    if (st != SC_OK)
+        fail_msg("%s:%d:%d: %s", e.file, e.line, e.column, e.message);
+    sc_render_options o;
+    sc_render_options_init(&o);
+    sc_render_options_from_scene(&o, scene);
+    o.width = w;
+    o.height = h;
+    o.spp = spp;
+    if (x.aperture >= 0)
+        o.aperture = x.aperture;
+    if (x.focus >= 0)
+        o.focus = x.focus;
+    sc_framebuffer *fb = NULL;
+    st = sc_render(scene, &o, &fb, &e);
+    if (st != SC_OK)
+        fail_msg("%s", e.message);
+    sc_scene_release(scene);
+    return fb;
+}
+
+static sc_framebuffer *render_text(const char *text, int w, int h, int spp)
+{
+    return render_with(text, w, h, spp, none);
+}
+
+/* The error loading text gives: "line:col: message". */
+static void load_error(const char *text, char *out, size_t size)
+{
+    sc_scene *scene = NULL;
+    sc_error e;
+    sc_status st = sc_scene_load_string("t.csg", text, strlen(text), NULL, &scene, &e);
+    assert_int_not_equal(st, SC_OK);
+    snprintf(out, size, "%d:%d: %s", e.line, e.column, e.message);
+}
+
+/* The red channel of fb averaged over its rows, per column; caller frees. */
+static double *column_profile(const sc_framebuffer *fb)
+{
+    double *p = calloc((size_t)fb->width, sizeof *p);
+    assert_non_null(p);
+    for (int j = 0; j < fb->height; j++)
+        for (int i = 0; i < fb->width; i++)
+            p[i] += fb->color[3 * ((size_t)j * fb->width + i)] / fb->height;
+    return p;
+}
+
+/* The width in pixels of a ramp in profile p[0..n) from lo to hi: the
+ * standard deviation of the profile's derivative, with the pixel box's
+ * 1/12 taken off, times sqrt(12) (a linear ramp of width W has variance
+ * W^2 / 12). *sigma gets the standard deviation alone. */
+static double ramp_sigma(const double *p, int n)
+{
+    double lo = p[0], hi = p[n - 1];
+    double sum = 0, mean = 0, second = 0;
+    for (int i = 0; i + 1 < n; i++) {
+        double w = (p[i + 1] - p[i]) / (hi - lo);
+        double x = i + 1; /* the boundary between pixels i and i + 1 */
+        sum += w;
+        mean += w * x;
+        second += w * x * x;
+    }
+    mean /= sum;
+    double var = second / sum - mean * mean - 1.0 / 12;
+    return sqrt(fmax(0.0, var));
+}
+
+/* ---- stratification ---- */
+
+/* sample_permute is a permutation of 0..n-1 for every n and seed, and
+ * sample_2d hands each of a pixel's n samples a different cell of the
+ * grid in every dimension. */
+static void test_permutation(void **state)
+{
+    (void)state;
+    for (uint32_t n = 1; n <= 70; n++) {
+        for (uint64_t seed = 1; seed < 40; seed++) {
+            unsigned char seen[70] = {0};
+            for (uint32_t s = 0; s < n; s++) {
+                uint32_t i = sample_permute(s, n, sample_mix(seed));
+                assert_true(i < n);
+                assert_int_equal(seen[i], 0);
+                seen[i] = 1;
+            }
+        }
+    }
+    int n = 24, kx = sample_grid_width(n), ky = n / kx;
+    for (uint32_t dim = 0; dim < 6; dim++) {
+        unsigned char seen[24] = {0};
+        for (int s = 0; s < n; s++) {
+            sample_pixel px = {7, 9, s, n, kx, dim};
+            sample_rng r = sample_rng_for(7, 9, (uint32_t)s);
+            double u, v;
+            sample_2d(&px, &r, &u, &v);
+            assert_true(u >= 0 && u < 1 && v >= 0 && v < 1);
+            int cell = (int)(u * kx) + kx * (int)(v * ky);
+            assert_int_equal(seen[cell], 0);
+            seen[cell] = 1;
+        }
+    }
+}
+
+/* ---- glossy ---- */
+
+/* A plate seen at 45 degrees by an orthographic camera under a white sky
+ * (background 1, no light reaches the plate's colour: ambient, diffuse and
+ * specular 0). Every pixel shows what the plate reflects of the sky. */
+static sc_framebuffer *furnace(const char *material, int spp)
+{
+    char text[1024];
+    snprintf(text, sizeof text,
+             "camera(eye = [0, -50, 50], center = [0, 0, 0], "
+             "projection = \"orthographic\", fov = 10);\n"
+             "background(color = [1, 1, 1]);\n"
+             "material(color = [1, 1, 1], ambient = 0, diffuse = 0, specular = 0, %s) {\n"
+             "  cube(size = [1000, 1000, 2], center = true);\n"
+             "}\n",
+             material);
+    return render_text(text, 24, 24, spp);
+}
+
+/* The share of the lobe (lobe + 1)/(2 pi) cos^lobe about the mirror
+ * direction of a view 45 degrees off the normal that lies above the
+ * surface, by a midpoint quadrature over (cos, phi) independent of the
+ * renderer's sampling. */
+static double lobe_above(double lobe)
+{
+    const int nc = 2000, np = 720;
+    double total = 0, above = 0, s45 = sqrt(0.5);
+    for (int a = 0; a < nc; a++) {
+        double c = (a + 0.5) / nc;
+        double w = (lobe + 1) * pow(c, lobe); /* density in cos, phi uniform */
+        double sn = sqrt(1 - c * c);
+        for (int b = 0; b < np; b++) {
+            double phi = 2 * PI * (b + 0.5) / np;
+            /* axis (0, s45, s45) in (x, y, z) with z the plate's normal;
+             * e1 = x, e2 = axis x e1 = (0, s45, -s45). */
+            double z = c * s45 - sn * sin(phi) * s45;
+            total += w;
+            above += w * (z > 0);
+        }
+    }
+    return above / total;
+}
+
+static double mean_red(const sc_framebuffer *fb, double *lo, double *hi)
+{
+    size_t n = (size_t)fb->width * fb->height;
+    double sum = 0;
+    *lo = INFINITY;
+    *hi = -INFINITY;
+    for (size_t p = 0; p < n; p++) {
+        for (int k = 0; k < 3; k++) {
+            *lo = fmin(*lo, fb->color[3 * p + k]);
+            *hi = fmax(*hi, fb->color[3 * p + k]);
+        }
+        sum += fb->color[3 * p];
+    }
+    return sum / n;
+}
+
+/* R = 0 is the mirror exactly; every roughness keeps the reflected light
+ * within [0, 1] of the sky, at most the mirror's, and keeps the share of
+ * its lobe above the surface. */
+static void test_glossy_energy(void **state)
+{
+    (void)state;
+    sc_framebuffer *mirror = furnace("reflect = 1", 4);
+    sc_framebuffer *zero = furnace("reflect = 1, roughness = 0", 4);
+    size_t bytes = (size_t)mirror->width * mirror->height * 3 * sizeof(float);
+    assert_memory_equal(mirror->color, zero->color, bytes);
+    double lo, hi;
+    double mirror_mean = mean_red(mirror, &lo, &hi);
+    assert_true(fabs(mirror_mean - 1) < 1e-12);
+    const double roughness[] = {0.05, 0.3, 0.6, 1.0};
+    for (int k = 0; k < 4; k++) {
+        char material[128];
+        snprintf(material, sizeof material, "reflect = 1, roughness = %g", roughness[k]);
+        sc_framebuffer *fb = furnace(material, 64);
+        double mean = mean_red(fb, &lo, &hi);
+        double r = roughness[k], expected = lobe_above(2 / (r * r) - 2);
+        if (!(lo >= 0 && hi <= 1 + 1e-12 && mean <= mirror_mean + 1e-12))
+            fail_msg("roughness %g: values %g..%g, mean %g: outside [0, 1]", r, lo, hi,
+                     mean);
+        if (fabs(mean - expected) > 0.02)
+            fail_msg("roughness %g keeps %g of the sky, the lobe above the surface is %g",
+                     r, mean, expected);
+        sc_framebuffer_release(fb);
+    }
+    sc_framebuffer_release(mirror);
+    sc_framebuffer_release(zero);
+}
+
+/* Transmission through a slab with no interface (ior 1): glossy exits keep
+ * the light within [0, 1] and at most what the clear slab passes. */
+static void test_glossy_transmission(void **state)
+{
+    (void)state;
+    sc_framebuffer *clear = furnace("transmit = 1, ior = 1", 4);
+    sc_framebuffer *rough = furnace("transmit = 1, ior = 1, roughness = 0.5", 64);
+    double lo, hi;
+    double clear_mean = mean_red(clear, &lo, &hi);
+    assert_true(fabs(clear_mean - 1) < 1e-12);
+    double mean = mean_red(rough, &lo, &hi);
+    assert_true(lo >= 0 && hi <= 1 + 1e-12);
+    assert_true(mean <= clear_mean);
+    assert_true(mean > 0.3); /* most of the lobe goes on through */
+    sc_framebuffer_release(clear);
+    sc_framebuffer_release(rough);
+}
+
+/* ---- area lights ---- */
+
+/* A floor seen from above (orthographic, 128 x 16 pixels over x in
+ * [42, 58]) beside the shadow of a plate's edge at x = 0, 100 above it,
+ * lit by the light given. */
+static sc_framebuffer *penumbra_scene(const char *light, int spp)
+{
+    char text[2048];
+    snprintf(text, sizeof text,
+             "camera(eye = [50, 0, 500], center = [50, 0, 0], up = [0, 1, 0], "
+             "projection = \"orthographic\", fov = %.17g);\n"
+             "%s\n"
+             "material(color = [1, 1, 1], ambient = 0, diffuse = 1, specular = 0) {\n"
+             "  multmatrix([[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, -1], [0, 0, 0, 1]]) {\n"
+             "    cube(size = [1000, 1000, 2], center = true);\n"
+             "  }\n"
+             "  multmatrix([[1, 0, 0, -500], [0, 1, 0, -500], [0, 0, 1, 99.99], "
+             "[0, 0, 0, 1]]) {\n"
+             "    cube(size = [500, 1000, 0.01]);\n"
+             "  }\n"
+             "}\n",
+             2 * atan(1.0 / 500) * 180 / PI, light);
+    return render_text(text, 128, 16, spp);
+}
+
+/* What a point of the floor at x gets fully lit by a light centred at
+ * (-150, 0, 400) facing down: its intensity (1) times the Lambert factors
+ * at the light and at the floor, both 400 / r. */
+static double fully_lit(double x)
+{
+    double r2 = (x + 150) * (x + 150) + 400.0 * 400.0;
+    return 400.0 * 400.0 / r2;
+}
+
+/* The profile of fb as the share of the light seen: each column's value
+ * over what it gets fully lit; caller frees. */
+static double *share_seen(const sc_framebuffer *fb)
+{
+    double *p = column_profile(fb);
+    for (int i = 0; i < fb->width; i++)
+        p[i] /= fully_lit(42 + (i + 0.5) * 16.0 / fb->width);
+    return p;
+}
+
+/* A 12 x 12 light centred at (-150, 0, 400) facing down: the edge at
+ * height 100 casts a penumbra w h / (H - h) = 12 * 100 / 300 = 4 wide on
+ * the floor (x from 48 to 52), 32 pixels; the share of the light seen
+ * grows linearly across it, so the profile is a ramp of that width. */
+static void test_area_penumbra(void **state)
+{
+    (void)state;
+    sc_framebuffer *fb =
+        penumbra_scene("light(position = [-150, 0, 400], size = [12, 12], "
+                       "normal = [0, 0, -1]);",
+                       16);
+    double *p = share_seen(fb);
+    double width = sqrt(12) * ramp_sigma(p, fb->width);
+    double expected = 4.0 / (16.0 / 128);
+    if (fabs(width - expected) > 0.1 * expected)
+        fail_msg("penumbra %g pixels wide, expected %g", width, expected);
+    /* Fully lit and fully shadowed on either side, whatever the size: the
+     * intensity is the whole light's. */
+    for (int i = 0; i < 40; i++)
+        assert_true(p[i] == 0);
+    for (int i = 90; i < fb->width; i++)
+        assert_true(fabs(p[i] - 1) < 0.005);
+    sc_framebuffer_release(fb);
+    free(p);
+    sc_framebuffer *small =
+        penumbra_scene("light(position = [-150, 0, 400], size = [0.5, 0.5], "
+                       "normal = [0, 0, -1]);",
+                       4);
+    double *q = share_seen(small);
+    for (int i = 90; i < small->width; i++)
+        assert_true(fabs(q[i] - 1) < 0.005);
+    /* A small light's shadow edge is sharp: under 2 pixels wide. */
+    double narrow = sqrt(12) * ramp_sigma(q, small->width);
+    assert_true(narrow < 2);
+    sc_framebuffer_release(small);
+    free(q);
+}
+
+/* The light emits on its normal's side only: turned to face up, it lights
+ * nothing below it. */
+static void test_area_one_sided(void **state)
+{
+    (void)state;
+    sc_framebuffer *fb =
+        penumbra_scene("light(position = [-150, 0, 400], size = [12, 12], "
+                       "normal = [0, 0, 1]);",
+                       4);
+    size_t n = (size_t)fb->width * fb->height;
+    for (size_t k = 0; k < 3 * n; k++)
+        assert_true(fb->color[k] == 0);
+    sc_framebuffer_release(fb);
+}
+
+static void test_area_errors(void **state)
+{
+    (void)state;
+    char msg[1024];
+    load_error("light(direction = [0, 0, -1], size = [1, 1]);", msg, sizeof msg);
+    assert_string_equal(msg, "1:38: a directional light has no size");
+    load_error("light(position = [0, 0, 1], radius = 1, size = [1, 1]);", msg,
+               sizeof msg);
+    assert_string_equal(msg, "1:48: a light has a radius or a size, not both");
+    load_error("light(position = [0, 0, 1], size = [1, 0]);", msg, sizeof msg);
+    assert_string_equal(msg, "1:40: wrong type for argument 'size' of 'light' "
+                             "(expected a vector of 2 positive numbers)");
+    load_error("light(position = [0, 0, 1], normal = [0, 0, 1]);", msg, sizeof msg);
+    assert_string_equal(msg, "1:38: only a light with a size has a normal and an up "
+                             "direction");
+    load_error("light(position = [0, 0, 1], size = [1, 1], normal = [1, 0, 0], "
+               "up = [2, 0, 0]);",
+               msg, sizeof msg);
+    assert_string_equal(msg, "1:69: the up direction of a light must not be parallel "
+                             "to its normal");
+    load_error("material(roughness = 2) { cube(); }", msg, sizeof msg);
+    assert_string_equal(msg, "1:22: argument 'roughness' of 'material' must be a number "
+                             "in 0..1");
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_permutation),         cmocka_unit_test(test_glossy_energy),
+        cmocka_unit_test(test_glossy_transmission), cmocka_unit_test(test_area_penumbra),
+        cmocka_unit_test(test_area_one_sided),      cmocka_unit_test(test_area_errors),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
