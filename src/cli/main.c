@@ -120,6 +120,10 @@ static const char usage_text[] =
     "  --threads=N            worker threads (default 0: all cores)\n"
     "  --faithful             spheres and cylinders as the polyhedra OpenSCAD makes\n"
     "                         from $fn, $fa, $fs (default: exact solids)\n"
+    "  --aperture=A           depth of field: a thin lens A model units wide\n"
+    "                         (default 0: a pinhole); blur needs --spp above 1\n"
+    "  --focus=D              distance from the eye to the sharp plane (default:\n"
+    "                         to the view's centre)\n"
     "\n"
     "preview options (CAD-style renders):\n"
     "  --colorscheme=NAME     OpenSCAD's colour scheme: Cornfield (built in) or one\n"
@@ -221,6 +225,8 @@ typedef enum opt_id {
     OPT_SECTION_STYLE,
     OPT_AO,
     OPT_AO_RADIUS,
+    OPT_APERTURE,
+    OPT_FOCUS,
     OPT_WATCH
 } opt_id;
 
@@ -262,6 +268,8 @@ static const opt_spec options_table[] = {
     {"--section-style", OPT_SECTION_STYLE, 1, 1},
     {"--ao", OPT_AO, 1, 1},
     {"--ao-radius", OPT_AO_RADIUS, 1, 1},
+    {"--aperture", OPT_APERTURE, 1, 1},
+    {"--focus", OPT_FOCUS, 1, 1},
     {"--watch", OPT_WATCH, 0, 1},
 };
 
@@ -419,6 +427,8 @@ static int apply_option(cli_args *a, const opt_spec *spec, const char *value)
     case OPT_SECTION_STYLE:
     case OPT_AO:
     case OPT_AO_RADIUS:
+    case OPT_APERTURE:
+    case OPT_FOCUS:
         return cli_apply_preview_option(o, &a->preset, spec->name, strlen(spec->name),
                                         value);
     case OPT_WATCH:
