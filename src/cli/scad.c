@@ -124,9 +124,12 @@ sc_status scad_load(const char *path, const sc_load_options *options, sc_scene *
     return scad_load_files(path, options, scene, error, NULL, NULL);
 }
 
-sc_status scad_load_files(const char *path, const sc_load_options *options,
-                          sc_scene **scene, sc_error *error,
-                          void (*depend)(void *user, const char *file), void *user)
+/* The conversion, with OpenSCAD's $t set to *time when time is not NULL
+ * (a top-level assignment that -D appends to the source, which is how a
+ * file's own $t = ... would set it). */
+static sc_status convert(const char *path, const sc_load_options *options,
+                         const double *time, sc_scene **scene, sc_error *error,
+                         void (*depend)(void *user, const char *file), void *user)
 {
     *scene = NULL;
     char source[PATH_MAX];
@@ -150,11 +153,20 @@ sc_status scad_load_files(const char *path, const sc_load_options *options,
     posix_spawn_file_actions_addopen(&actions, 1, log, O_WRONLY | O_CREAT | O_TRUNC,
                                      0600);
     posix_spawn_file_actions_adddup2(&actions, 1, 2);
-    char *argv[] = {"openscad", "-o", csg, source, NULL, NULL, NULL};
-    if (depend) {
-        argv[4] = "-d";
-        argv[5] = deps;
+    char define[64];
+    char *argv[9] = {"openscad", "-o", csg};
+    int argc = 3;
+    if (time) {
+        snprintf(define, sizeof define, "$t=%.17g", *time);
+        argv[argc++] = "-D";
+        argv[argc++] = define;
     }
+    if (depend) {
+        argv[argc++] = "-d";
+        argv[argc++] = deps;
+    }
+    argv[argc++] = source;
+    argv[argc] = NULL;
     pid_t pid;
     int spawned = posix_spawnp(&pid, "openscad", &actions, NULL, argv, environ);
     posix_spawn_file_actions_destroy(&actions);
@@ -191,4 +203,17 @@ sc_status scad_load_files(const char *path, const sc_load_options *options,
     unlink(deps);
     rmdir(dir);
     return st;
+}
+
+sc_status scad_load_files(const char *path, const sc_load_options *options,
+                          sc_scene **scene, sc_error *error,
+                          void (*depend)(void *user, const char *file), void *user)
+{
+    return convert(path, options, NULL, scene, error, depend, user);
+}
+
+sc_status scad_load_at(const char *path, const sc_load_options *options, double t,
+                       sc_scene **scene, sc_error *error)
+{
+    return convert(path, options, &t, scene, error, NULL, NULL);
 }

@@ -23,4 +23,9 @@ sc_status scad_load_files(const char *path, const sc_load_options *options,
                           sc_scene **scene, sc_error *error,
                           void (*depend)(void *user, const char *file), void *user);
 
+/* scad_load at OpenSCAD's animation time $t = t: the model as OpenSCAD's
+ * --animate evaluates it for that frame. */
+sc_status scad_load_at(const char *path, const sc_load_options *options, double t,
+                       sc_scene **scene, sc_error *error);
+
 #endif
