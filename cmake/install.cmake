@@ -112,7 +112,8 @@ set(CPACK_DEBIAN_PACKAGE_GENERATE_SHLIBS_POLICY ">=")
 #   libsdl2-2.0-0       the interactive viewer's window
 #   libopenmpi3         rendering tiles across machines with Open MPI
 #   gnuplot-nox         `spancast bench accuracy --plot` (suggested only)
-set(CPACK_DEBIAN_PACKAGE_RECOMMENDS "openscad, libopenimageio2.4, libsdl2-2.0-0, libopenmpi3")
+set(CPACK_DEBIAN_PACKAGE_RECOMMENDS
+    "openscad, libopenimageio2.4, libsdl2-2.0-0, libopenmpi3, ffmpeg")
 set(CPACK_DEBIAN_PACKAGE_SUGGESTS "gnuplot-nox")
 set(SPANCAST_SHLIBDEPS_FILES $<TARGET_FILE:spancast> $<TARGET_FILE:spancast-bench>
     $<TARGET_FILE:spancast_shared>)

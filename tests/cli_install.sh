@@ -357,7 +357,7 @@ for pkg in libc6 libpng16-16 libgomp1 libfreetype6 libharfbuzz0b libfontconfig1 
 done
 check
 echo "$depends" | grep -q openimageio && fail "deb Depends on OpenImageIO: $depends"
-for pkg in openscad libopenimageio2.4 libsdl2-2.0-0 libopenmpi3; do
+for pkg in openscad libopenimageio2.4 libsdl2-2.0-0 libopenmpi3 ffmpeg; do
     check
     echo "$recommends" | grep -Eq "(^|, )$pkg( |,|$)" || fail "deb Recommends lacks $pkg: $recommends"
 done
