@@ -26,8 +26,8 @@ expect_usage() { # WANT ARGS...
     ls usage*.png >/dev/null 2>&1 && fail "$*: an image was written"
 }
 expect_usage "--animate expects a number of frames from 1 to 99999" --animate=0
-expect_usage "--shutter, --subframes, --video and --fps need --animate or --turntable" \
-    --shutter=0,1
+expect_usage "--subframes, --video and --fps need --animate or --turntable" \
+    --subframes=3
 expect_usage "--shutter expects OPEN,CLOSE with 0 <= OPEN <= CLOSE <= 1 (fractions of a frame)" \
     --animate=2 --shutter=0.5,0.2
 expect_usage "--animate and --turntable must give the same number of frames" \

@@ -32,11 +32,12 @@
 /* Extra options for a render: what the caller sets beyond the size. */
 typedef struct extra {
     double aperture, focus; /* < 0: leave as the scene has them */
+    double shutter[2];      /* open, close */
     int threads;            /* 0: all cores */
     int region[4];          /* all 0: the whole image */
 } extra;
 
-static const extra none = {-1, -1, 0, {0, 0, 0, 0}};
+static const extra none = {-1, -1, {0, 0}, 0, {0, 0, 0, 0}};
 
 /* Loads text, applies its camera, renders w x h at spp samples. */
 static sc_framebuffer *render_with(const char *text, int w, int h, int spp, extra x)
@@ -57,6 +58,8 @@ static sc_framebuffer *render_with(const char *text, int w, int h, int spp, extr
     if (x.focus >= 0)
         o.focus = x.focus;
     o.threads = x.threads;
+    o.shutter[0] = x.shutter[0];
+    o.shutter[1] = x.shutter[1];
     memcpy(o.region, x.region, sizeof o.region);
     sc_framebuffer *fb = NULL;
     st = sc_render(scene, &o, &fb, &e);
@@ -466,6 +469,188 @@ static void test_defocus_width(void **state)
     sc_framebuffer_release(b);
 }
 
+/* ---- motion blur ---- */
+
+/* A white box 4 wide moving by the motion given, on black, seen from the
+ * front by an orthographic camera over x in [-20, 20] (0.25 a pixel), with
+ * the shutter given. */
+static sc_framebuffer *moving_box(const char *motion, double open, double close, int spp)
+{
+    char text[1024];
+    snprintf(text, sizeof text,
+             "camera(eye = [0, -60, 0], center = [0, 0, 0], up = [0, 0, 1], "
+             "projection = \"orthographic\", fov = %.17g);\n"
+             "background(color = [0, 0, 0]);\n"
+             "material(color = [1, 1, 1], ambient = 1, diffuse = 0, specular = 0) {\n"
+             "  motion(%s) { cube(size = 4, center = true); }\n"
+             "}\n",
+             2 * atan(1.0 / 60) * 180 / PI, motion);
+    extra x = none;
+    x.shutter[0] = open;
+    x.shutter[1] = close;
+    return render_with(text, 160, 8, spp, x);
+}
+
+static const char slide[] = "from = [[1, 0, 0, -5], [0, 1, 0, 0], [0, 0, 1, 0], "
+                            "[0, 0, 0, 1]], to = [[1, 0, 0, 5], [0, 1, 0, 0], "
+                            "[0, 0, 1, 0], [0, 0, 0, 1]]";
+
+/* The share of the shutter during which a box 4 wide whose centre moves
+ * from -5 to 5 covers x: its overlap with [x - 2, x + 2] over 10. */
+static double swept(double x)
+{
+    double lo = fmax(-5, x - 2), hi = fmin(5, x + 2);
+    return fmax(0.0, hi - lo) / 10;
+}
+
+/* A box moving along x: the coverage across the image is the swept
+ * trapezoid, and its integral the box's width; the whole motion is inside
+ * the bounds (nothing is clipped at the end the box moves to). A closed
+ * shutter shows the box where from puts it. */
+static void test_motion_swept(void **state)
+{
+    (void)state;
+    sc_framebuffer *fb = moving_box(slide, 0, 1, 64);
+    double *p = column_profile(fb);
+    double integral = 0, worst = 0;
+    for (int i = 0; i < fb->width; i++) {
+        double x = -20 + (i + 0.5) * 0.25;
+        integral += p[i] * 0.25;
+        worst = fmax(worst, fabs(p[i] - swept(x)));
+    }
+    print_message("swept coverage: integral %.4f (box width 4), largest error %.4f\n",
+                  integral, worst);
+    assert_true(fabs(integral - 4) < 0.02 * 4);
+    assert_true(worst < 0.05);
+    sc_framebuffer_release(fb);
+    free(p);
+    sc_framebuffer *closed = moving_box(slide, 0, 0, 4);
+    double *q = column_profile(closed);
+    for (int i = 0; i < closed->width; i++) {
+        double x = -20 + (i + 0.5) * 0.25;
+        assert_true(q[i] == (x > -7 && x < -3 ? 1.0 : 0.0));
+    }
+    sc_framebuffer_release(closed);
+    free(q);
+}
+
+/* A small cube 10 from the z axis turning 90 degrees about it, seen from
+ * above: it sweeps the arc, so the point of the arc at 45 degrees is
+ * covered part of the time and the chord's midpoint (7.07 from the axis)
+ * never is, as a blend of the two matrices would have it. */
+static void test_motion_arc(void **state)
+{
+    (void)state;
+    char text[1024];
+    snprintf(
+        text, sizeof text,
+        "camera(eye = [0, 0, 60], center = [0, 0, 0], up = [0, 1, 0], "
+        "projection = \"orthographic\", fov = %.17g);\n"
+        "background(color = [0, 0, 0]);\n"
+        "material(color = [1, 1, 1], ambient = 1, diffuse = 0, specular = 0) {\n"
+        "  motion(from = [[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]],\n"
+        "         to = [[0, -1, 0, 0], [1, 0, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]) {\n"
+        "    multmatrix([[1, 0, 0, 10], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]) {\n"
+        "      cube(size = 1, center = true);\n"
+        "    }\n"
+        "  }\n"
+        "}\n",
+        2 * atan(12.0 / 60) * 180 / PI);
+    extra x = none;
+    x.shutter[1] = 1;
+    sc_framebuffer *fb = render_with(text, 96, 96, 64, x);
+    /* World (u, v) to pixel: 24 wide over 96 pixels, y up. Coverage along
+     * the arc, averaged over the pixels at radius 10 from 15 to 75
+     * degrees: the cube's angular width, 1 / 10 rad, over the turn. */
+    double on_arc = 0;
+    int count = 0;
+    for (int deg = 15; deg <= 75; deg += 2, count++) {
+        double a = deg * PI / 180;
+        int i = (int)((10 * cos(a) + 12) * 4), j = (int)((12 - 10 * sin(a)) * 4);
+        on_arc += fb->color[3 * ((size_t)j * 96 + i)];
+    }
+    on_arc /= count;
+    double chord = 5;
+    int ci = (int)((chord + 12) * 4), cj = (int)((12 - chord) * 4);
+    double on_chord = fb->color[3 * ((size_t)cj * 96 + ci)];
+    double expected = 0.1 / (PI / 2);
+    print_message("arc %.4f (expected %.4f), chord midpoint %.3f\n", on_arc, expected,
+                  on_chord);
+    assert_true(fabs(on_arc - expected) < 0.15 * expected);
+    assert_true(on_chord == 0);
+    sc_framebuffer_release(fb);
+}
+
+/* Shadow rays take their camera ray's time: a box moving high over a
+ * floor, lit at 45 degrees, casts the swept trapezoid as its shadow, 30
+ * further along x (the floor seen from above, away from the box). */
+static void test_motion_shadow(void **state)
+{
+    (void)state;
+    char text[2048];
+    snprintf(
+        text, sizeof text,
+        "camera(eye = [30, 0, 60], center = [30, 0, 0], up = [0, 1, 0], "
+        "projection = \"orthographic\", fov = %.17g);\n"
+        "light(direction = [1, 0, -1]);\n"
+        "material(color = [1, 1, 1], ambient = 0, diffuse = 1, specular = 0) {\n"
+        "  multmatrix([[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, -1], [0, 0, 0, 1]]) {\n"
+        "    cube(size = [400, 400, 2], center = true);\n"
+        "  }\n"
+        "  motion(from = [[1, 0, 0, -5], [0, 1, 0, 0], [0, 0, 1, 30], [0, 0, 0, 1]],\n"
+        "         to = [[1, 0, 0, 5], [0, 1, 0, 0], [0, 0, 1, 30], [0, 0, 0, 1]]) {\n"
+        "    cube(size = [4, 100, 4], center = true);\n"
+        "  }\n"
+        "}\n",
+        2 * atan(1.0 / 60) * 180 / PI);
+    extra x = none;
+    x.shutter[1] = 1;
+    sc_framebuffer *fb = render_with(text, 160, 8, 64, x);
+    double *p = column_profile(fb);
+    double lit = sqrt(0.5), worst = 0;
+    for (int i = 0; i < fb->width; i++) {
+        double u = 30 - 20 + (i + 0.5) * 0.25; /* floor x */
+        /* The box's bottom face (z 28) shades the floor from x - 28 to
+         * its top (z 32) from x - 32: the shadow of a 4 x 4 section at 45
+         * degrees is 8 wide at any instant. */
+        double covered = 0;
+        for (int k = 0; k < 1000; k++) {
+            double c = -5 + 10 * (k + 0.5) / 1000; /* the box's centre */
+            covered += (u - 32 < c + 2 && u - 28 > c - 2) / 1000.0;
+        }
+        worst = fmax(worst, fabs(p[i] / lit - (1 - covered)));
+    }
+    print_message("moving shadow: largest error %.4f\n", worst);
+    assert_true(worst < 0.05);
+    sc_framebuffer_release(fb);
+    free(p);
+}
+
+static void test_motion_errors(void **state)
+{
+    (void)state;
+    char msg[1024];
+    load_error("motion(from = [[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]) "
+               "{ cube(); }",
+               msg, sizeof msg);
+    assert_string_equal(msg, "1:1: 'motion' needs from and to");
+    load_error("motion(from = [[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]], "
+               "to = [[-1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]) "
+               "{ cube(); }",
+               msg, sizeof msg);
+    assert_string_equal(msg, "1:1: 'motion': from and to must be invertible and agree "
+                             "on mirroring");
+    load_error(
+        "motion(from = [[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]], "
+        "to = [[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]) "
+        "{ motion(from = [[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]], "
+        "to = [[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]) "
+        "{ cube(); } }",
+        msg, sizeof msg);
+    assert_string_equal(msg, "1:138: a 'motion' inside another 'motion' is not "
+                             "supported");
+}
+
 /* ---- determinism ---- */
 
 /* Every effect at once, rendered on one thread, on three, and as a crop:
@@ -483,10 +668,15 @@ static void test_deterministic(void **state)
         "  multmatrix([[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 5], [0, 0, 0, 1]]) {\n"
         "    sphere(r = 4);\n"
         "  }\n"
+        "  motion(from = [[1, 0, 0, 8], [0, 1, 0, 0], [0, 0, 1, 3], [0, 0, 0, 1]],\n"
+        "         to = [[0, -1, 0, 8], [1, 0, 0, 4], [0, 0, 1, 3], [0, 0, 0, 1]]) {\n"
+        "    cube(size = [4, 1, 2], center = true);\n"
+        "  }\n"
         "}\n";
     extra one = none, three = none, crop = none;
     one.threads = 1;
     three.threads = 3;
+    one.shutter[1] = three.shutter[1] = crop.shutter[1] = 1;
     int region[4] = {11, 7, 37, 29};
     memcpy(crop.region, region, sizeof region);
     sc_framebuffer *a = render_with(text, 48, 36, 9, one);
@@ -510,6 +700,8 @@ int main(void)
         cmocka_unit_test(test_glossy_transmission), cmocka_unit_test(test_area_penumbra),
         cmocka_unit_test(test_area_one_sided),      cmocka_unit_test(test_area_errors),
         cmocka_unit_test(test_focus_sharp),         cmocka_unit_test(test_defocus_width),
+        cmocka_unit_test(test_motion_swept),        cmocka_unit_test(test_motion_arc),
+        cmocka_unit_test(test_motion_shadow),       cmocka_unit_test(test_motion_errors),
         cmocka_unit_test(test_deterministic),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

@@ -267,10 +267,13 @@ typedef struct sc_render_options {
     sc_view_preset sheet[SC_MAX_SHEET];
 
     /* Distribution ray tracing (docs/distribution.md). */
-    double aperture; /* thin-lens diameter in world units; 0 (default): a pinhole,
-                        everything sharp */
-    double focus;    /* distance from the eye to the sharp plane; 0 (default): the
-                        distance to the view's centre */
+    double aperture;   /* thin-lens diameter in world units; 0 (default): a pinhole,
+                          everything sharp */
+    double focus;      /* distance from the eye to the sharp plane; 0 (default): the
+                          distance to the view's centre */
+    double shutter[2]; /* open, close in [0, 1]: motion() nodes are at their from
+                          at 0 and their to at 1, and each sample's rays take a
+                          time in [open, close]; both 0 (default): closed at 0 */
 } sc_render_options;
 
 void sc_render_options_init(sc_render_options *options);

@@ -124,8 +124,10 @@ static const char usage_text[] =
     "  --animate=N            N frames, a .scad model at OpenSCAD's $t = i/N, named\n"
     "                         like OpenSCAD's: -o frame.png gives frame00000.png, ...\n"
     "  --turntable=N          N frames turning the camera once about its centre\n"
-    "  --shutter=OPEN,CLOSE   with frames: motion blur over this part of each frame\n"
-    "                         (fractions of a frame; default closed)\n"
+    "  --shutter=OPEN,CLOSE   motion blur over this part of the frame (0..1):\n"
+    "                         motion() nodes move during it, and with frames each\n"
+    "                         frame averages --subframes renders across $t\n"
+    "                         (default closed)\n"
     "  --subframes=K          renders averaged per frame with an open shutter\n"
     "                         (default 8)\n"
     "  --video=FILE           encode the frames with ffmpeg (H.264)\n"
@@ -307,7 +309,7 @@ typedef struct cli_args {
     sc_view_preset preset; /* --view-preset */
 
     frames_job frames;  /* --animate, --turntable and what goes with them */
-    int frames_given;   /* --shutter, --subframes, --video or --fps */
+    int frames_given;   /* --subframes, --video or --fps */
     int watch;          /* --watch: render again on every change */
     watch_set *watched; /* with --watch: the files the model was loaded from */
     sc_render_options options;
@@ -473,9 +475,8 @@ static int apply_option(cli_args *a, const opt_spec *spec, const char *value)
             !(v[1] <= 1))
             return cli_usage_error("--shutter expects OPEN,CLOSE with 0 <= OPEN <= CLOSE "
                                    "<= 1 (fractions of a frame)");
-        a->frames.shutter[0] = v[0];
-        a->frames.shutter[1] = v[1];
-        a->frames_given = 1;
+        a->frames.shutter[0] = o->shutter[0] = v[0];
+        a->frames.shutter[1] = o->shutter[1] = v[1];
         return 0;
     }
     case OPT_SUBFRAMES: {
@@ -602,8 +603,8 @@ static int parse_args(cli_args *a, int argc, char **argv)
         return cli_usage_error("missing output file (-o)");
     int frames = a->frames.animate || a->frames.turntable;
     if (a->frames_given && !frames)
-        return cli_usage_error("--shutter, --subframes, --video and --fps need "
-                               "--animate or --turntable");
+        return cli_usage_error("--subframes, --video and --fps need --animate or "
+                               "--turntable");
     if (a->frames.animate && a->frames.turntable &&
         a->frames.animate != a->frames.turntable)
         return cli_usage_error("--animate and --turntable must give the same number of "

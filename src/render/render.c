@@ -100,6 +100,7 @@ typedef struct render_ctx {
     double edge_cos;      /* cosine of the crease angle */
     double edge_color[3]; /* linear */
     int overlays;         /* some view has overlay lines or a label */
+    double shutter[2];    /* sample times lie in [open, close] */
     sc_framebuffer *fb;
 } render_ctx;
 
@@ -233,6 +234,7 @@ static void render_pixel(const render_ctx *c, render_thread *th, int i, int j)
     sample_pixel px = {(uint32_t)x, (uint32_t)y, 0, c->spp, c->grid_width, 0};
     st.px = px;
     st.lens[0] = st.lens[1] = 0; /* the centre ray passes the lens's centre */
+    st.time = 0.5 * (c->shutter[0] + c->shutter[1]); /* the centre of the shutter */
 
     /* The centre ray: the AOVs, and the colour at one sample per pixel. */
     view_ray centre;
@@ -283,6 +285,11 @@ static void render_pixel(const render_ctx *c, render_thread *th, int i, int j)
                 double lu, lv;
                 sample_2d(&st.px, &st.rng, &lu, &lv);
                 sample_disc(lu, lv, &st.lens[0], &st.lens[1]);
+            }
+            if (c->tree->has_motion && c->shutter[1] > c->shutter[0]) {
+                double u, unused;
+                sample_2d(&st.px, &st.rng, &u, &unused);
+                st.time = c->shutter[0] + u * (c->shutter[1] - c->shutter[0]);
             }
             view_ray r;
             trace_view_ray(v, &st, vx, vy, sx, sy, &r);
@@ -412,6 +419,10 @@ static sc_status check_options(const sc_render_options *o, sc_error *error)
         return err_set(error, SC_ERR_ARGUMENT, NULL,
                        "edge angle must be between 0 and 180 degrees (got %g)",
                        o->edge_angle_deg);
+    if (!(o->shutter[0] >= 0 && o->shutter[0] <= o->shutter[1] && o->shutter[1] <= 1))
+        return err_set(error, SC_ERR_ARGUMENT, NULL,
+                       "shutter %g,%g is not an interval of [0, 1]", o->shutter[0],
+                       o->shutter[1]);
     if (o->ao_samples < 0 || o->ao_samples > RENDER_MAX_AO)
         return err_set(error, SC_ERR_ARGUMENT, NULL,
                        "ambient occlusion takes 0 to %d rays (got %d)", RENDER_MAX_AO,
@@ -529,6 +540,8 @@ sc_status render_scene(const csg_tree *tree, const shading *look,
     c.tree = tree;
     c.spp = options->spp;
     c.grid_width = sample_grid_width(options->spp);
+    c.shutter[0] = options->shutter[0];
+    c.shutter[1] = options->shutter[1];
     c.tile_w = options->width;
     c.tile_h = options->height;
     c.view_count = options->sheet_count > 0 ? options->sheet_count : 1;

@@ -236,8 +236,9 @@ int shade_first_hit(const shade_scene *s, shade_thread *th, const csg_ray *ray,
                     shade_hit *hit)
 {
     memset(hit, 0, sizeof *hit);
+    hit->time = th->time;
     if (s->section_count == 0)
-        return csg_first_hit_counted(s->tree, ray, th->scratch, th->csg, &hit->hit);
+        return csg_first_hit_at(s->tree, ray, th->time, th->scratch, th->csg, &hit->hit);
     double ta, tb;
     int plane;
     if (!section_interval(s, ray, &ta, &tb, &plane))
@@ -246,7 +247,7 @@ int shade_first_hit(const shade_scene *s, shade_thread *th, const csg_ray *ray,
     clipped.tmin = ta;
     clipped.tmax = tb;
     span_list spans;
-    if (!csg_spans_counted(s->tree, &clipped, th->scratch, th->csg, &spans))
+    if (!csg_spans_at(s->tree, &clipped, th->time, th->scratch, th->csg, &spans))
         return 0;
     for (uint32_t k = 0; k < spans.n; k++) {
         const span *sp = &spans.v[k];
@@ -282,14 +283,15 @@ int shade_first_hit(const shade_scene *s, shade_thread *th, const csg_ray *ray,
 int shade_any_hit(const shade_scene *s, shade_thread *th, const csg_ray *ray)
 {
     if (s->section_count == 0)
-        return csg_any_hit_counted(s->tree, ray, th->scratch, th->csg);
+        return csg_any_hit_at(s->tree, ray, th->time, th->scratch, th->csg);
     shade_hit hit;
     return shade_first_hit(s, th, ray, &hit);
 }
 
 vec3 shade_hit_normal(const shade_scene *s, const csg_ray *ray, const shade_hit *hit)
 {
-    return hit->cap ? hit->cap_normal : csg_hit_normal(s->tree, ray, &hit->hit);
+    return hit->cap ? hit->cap_normal
+                    : csg_hit_normal_at(s->tree, ray, hit->time, &hit->hit);
 }
 
 /* Adds the direct light at p (facing normal n, towards-viewer v). */

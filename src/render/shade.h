@@ -127,6 +127,7 @@ typedef struct shade_scene {
  * ray meets a cut plane inside the solid. */
 typedef struct shade_hit {
     csg_hit hit;     /* for a cap: t on the plane, the leaf of the span cut */
+    double time;     /* the ray's time, which places moving leaves */
     int cap;         /* 1: a section cap */
     vec3 cap_normal; /* a cap's outward normal: the plane's n */
 } shade_hit;
@@ -144,6 +145,8 @@ typedef struct shade_thread {
     sample_pixel px; /* the sample's place among the pixel's, for stratified
                         dimensions (sample_2d) */
     double lens[2];  /* the camera ray's point on the unit disc of the lens */
+    double time;     /* the sample's time in the shutter, which every ray of the
+                        sample carries (csg_motion); 0 without motion blur */
     shade_counters count;
     csg_counters *csg; /* the thread's query counters */
 } shade_thread;
