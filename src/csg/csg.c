@@ -611,6 +611,18 @@ typedef struct eval_ctx {
 
 static const span_list no_spans = {NULL, 0};
 
+/* The query recursion goes as deep as the tree (10000 levels on a render
+ * thread's stack), so the rarer paths below stay out of the frames of
+ * eval and eval_cut: the compiler would otherwise inline them there and
+ * every level would pay for their locals. */
+#if defined(__GNUC__)
+#define COLD_PATH __attribute__((noinline))
+#define INLINE_PATH inline __attribute__((always_inline))
+#else
+#define COLD_PATH
+#define INLINE_PATH inline
+#endif
+
 /* A leaf's world-to-local transform at time: its own, or for a moving leaf
  * the inverse of its transform then, in *scratch. csg_builder_set_motion
  * checked that it is invertible at every sampled time; a time between
@@ -628,6 +640,18 @@ static const affine *leaf_to_local(const csg_leaf *l, double time, affine *scrat
 
 static span_list eval(eval_ctx *c, uint32_t id, double lo, double hi, eval_mode mode);
 
+/* The ray o + t d in the local frame of moving leaf l at time: out of
+ * eval's frame (COLD_PATH), since the transform it builds would cost every
+ * level of the recursion its size. */
+static COLD_PATH void moving_leaf_ray(const csg_leaf *l, double time, vec3 o, vec3 d,
+                                      vec3 *lo, vec3 *ld)
+{
+    affine moved;
+    const affine *to_local = leaf_to_local(l, time, &moved);
+    *lo = affine_point(to_local, o);
+    *ld = affine_vector(to_local, d);
+}
+
 static span_list eval_leaf(eval_ctx *c, const csg_node *n, double lo, double hi,
                            eval_mode mode)
 {
@@ -638,10 +662,13 @@ static span_list eval_leaf(eval_ctx *c, const csg_node *n, double lo, double hi,
         c->oom = 1;
         return no_spans;
     }
-    affine moved;
-    const affine *to_local = leaf_to_local(l, c->time, &moved);
-    vec3 o = affine_point(to_local, c->o);
-    vec3 d = affine_vector(to_local, c->d);
+    vec3 o, d;
+    if (l->motion) {
+        moving_leaf_ray(l, c->time, c->o, c->d, &o, &d);
+    } else {
+        o = affine_point(&l->to_local, c->o);
+        d = affine_vector(&l->to_local, c->d);
+    }
     c->counters->prim_tests++;
     r.n = prim_spans_range(&l->prim, n->leaf, o, d, lo, hi, c->eps, mode != EVAL_ALL, r.v,
                            cap);
@@ -790,18 +817,6 @@ static int visit_cut(eval_ctx *c, void *state, uint32_t id, double *lo, double *
     *hi = fmin(*hi, s->acc.v[s->acc.n - 1].out.t);
     return 1;
 }
-
-/* The query recursion goes as deep as the tree (10000 levels on a render
- * thread's stack), so the rarer paths below stay out of the frames of
- * eval and eval_cut: the compiler would otherwise inline them there and
- * every level would pay for their locals. */
-#if defined(__GNUC__)
-#define COLD_PATH __attribute__((noinline))
-#define INLINE_PATH inline __attribute__((always_inline))
-#else
-#define COLD_PATH
-#define INLINE_PATH inline
-#endif
 
 /* A difference of a few subtrahends from a wide union (one with a BVH)
  * evaluates its subtrahends first: where they lie, the union's operands
