@@ -172,7 +172,7 @@ string(CONCAT CPACK_COMPONENT_TOOL_DESCRIPTION
 #   libopenmpi3         rendering tiles across machines with Open MPI
 #   gnuplot-nox         `spancast bench accuracy --plot` (suggested only)
 set(CPACK_DEBIAN_LIBRARY_PACKAGE_RECOMMENDS "libopenimageio2.4")
-set(CPACK_DEBIAN_TOOL_PACKAGE_RECOMMENDS "openscad, libopenimageio2.4, libsdl2-2.0-0, libopenmpi3")
+set(CPACK_DEBIAN_TOOL_PACKAGE_RECOMMENDS "openscad, libopenimageio2.4, libsdl2-2.0-0, libopenmpi3, ffmpeg")
 set(CPACK_DEBIAN_TOOL_PACKAGE_SUGGESTS "gnuplot-nox")
 set(SPANCAST_SHLIBDEPS_LIBRARY $<TARGET_FILE:spancast_shared>)
 set(SPANCAST_SHLIBDEPS_TOOL $<TARGET_FILE:spancast> $<TARGET_FILE:spancast-bench>)

@@ -454,7 +454,7 @@ echo "$tool_depends" | grep -Eq "(^|, )$libpkg \(= $version\)(,|$)" ||
 check
 echo "$tool_depends" | grep -Eq "openimageio|libsdl2" && fail "spancast Depends: $tool_depends"
 recommends=$(field spancast Recommends)
-for pkg in openscad libopenimageio2.4 libsdl2-2.0-0 libopenmpi3; do
+for pkg in openscad libopenimageio2.4 libsdl2-2.0-0 libopenmpi3 ffmpeg; do
     check
     echo "$recommends" | grep -Eq "(^|, )$pkg( |,|$)" || fail "spancast Recommends lacks $pkg: $recommends"
 done

@@ -361,6 +361,15 @@ typedef struct sc_render_options {
     sc_view_preset sheet[SC_MAX_SHEET];
     /* The first recorded ABI ends here; new fields go below, in release
      * order, and take their defaults for a caller whose struct ends here. */
+
+    /* Distribution ray tracing (docs/distribution.md). */
+    double aperture;   /* thin-lens diameter in world units; 0 (default): a pinhole,
+                          everything sharp */
+    double focus;      /* distance from the eye to the sharp plane; 0 (default): the
+                          distance to the view's centre */
+    double shutter[2]; /* open, close in [0, 1]: motion() nodes are at their from
+                          at 0 and their to at 1, and each sample's rays take a
+                          time in [open, close]; both 0 (default): closed at 0 */
 } sc_render_options;
 
 /* Sets size and the defaults written beside each field. Never fails. */
@@ -369,7 +378,8 @@ void sc_render_options_init_size(sc_render_options *options, size_t size);
     sc_render_options_init_size((options), sizeof *(options))
 
 /* Applies the scene's own settings to options: a camera() node in the file
- * sets camera_mode (SC_CAMERA_VECTOR), camera, up, fov_deg and projection.
+ * sets camera_mode (SC_CAMERA_VECTOR), camera, up, fov_deg, projection,
+ * aperture and focus.
  * Call it after sc_render_options_init and before applying the user's own
  * choices, so that those override the file. Returns 1 when the file has a
  * camera, else 0 (options unchanged, also for a NULL scene). Writes only

@@ -42,6 +42,7 @@
 #include "build/build_ctx.h"
 #include "build/build_hull.h"
 #include "build/build_mesh.h"
+#include "build/build_motion.h"
 #include "build/build_revolve.h"
 #include "build/build_shading.h"
 #include "build/build_twod.h"
@@ -57,6 +58,8 @@ typedef struct frame {
     float color[4];
     uint32_t material; /* index into the shading record's materials */
     affine to_world;
+    int moving;        /* inside a motion node: leaves carry motion */
+    csg_motion motion; /* its motion (build_motion.h) */
 } frame;
 
 typedef struct builder {
@@ -127,6 +130,9 @@ static sc_status add_leaf(builder *b, const model_node *n, const prim *p,
 {
     *id = csg_builder_leaf(b->csg, p, &state->to_world, state->color, n->loc);
     csg_builder_set_material(b->csg, *id, state->material);
+    if (state->moving && *id != CSG_EMPTY)
+        return build_motion_leaf(b->csg, *id, &state->motion, &state->to_world, n,
+                                 b->error);
     return csg_builder_failed(b->csg) ? err_nomem(b->error, NULL) : SC_OK;
 }
 
@@ -720,6 +726,10 @@ static sc_status visit(builder *b, const model_node *n, int *opened)
         if (warning && f.emit && (st = warn(b, &n->loc, "%s", warning)) != SC_OK)
             return st;
         f.to_world = affine_mul(&f.to_world, &m);
+    } else if (kind == MODEL_MOTION) {
+        if ((st = build_motion_open(n, f.moving, &f.to_world, &f.motion, b->error)))
+            return st;
+        f.moving = 1;
     } else if (kind == MODEL_COLOR) {
         if ((st = apply_color(b, n, f.emit, f.color)) != SC_OK)
             return st;

@@ -23,6 +23,16 @@ sc_status build_light(shading *s, const model_node *n, const affine *to_world, i
             scale = fmax(scale, v3_length(axis));
         }
         light.radius *= scale;
+    } else if (light.kind == SHADING_LIGHT_RECT) {
+        /* The rectangle's edges map as vectors (scaled, sheared, rotated
+         * with it); its lit side is the side the local normal points to,
+         * which a mirroring transform mirrors too, so the normal is the
+         * edges' cross product turned by the sign of the determinant. */
+        light.position = affine_point(to_world, light.position);
+        light.half_width = affine_vector(to_world, light.half_width);
+        light.half_height = affine_vector(to_world, light.half_height);
+        vec3 n = v3_normalize(v3_cross(light.half_width, light.half_height));
+        light.normal = affine_det(to_world) < 0 ? v3_neg(n) : n;
     } else {
         light.direction = v3_normalize(affine_vector(to_world, light.direction));
     }

@@ -54,6 +54,7 @@
 
 #include "cli/cli.h"
 #include "cli/dist.h"
+#include "cli/frames.h"
 #include "cli/scad.h"
 #include "cli/tiles.h"
 #include "cli/watch.h"
@@ -137,6 +138,21 @@ static const char usage_text[] =
     "  --tiled                write tiled .exr files, each tile as soon as it is\n"
     "                         rendered, never holding the whole image (the default\n"
     "                         for images whose buffers do not fit in memory)\n"
+    "  --animate=N            N frames, a .scad model at OpenSCAD's $t = i/N, named\n"
+    "                         like OpenSCAD's: -o frame.png gives frame00000.png, ...\n"
+    "  --turntable=N          N frames turning the camera once about its centre\n"
+    "  --shutter=OPEN,CLOSE   motion blur over this part of the frame (0..1):\n"
+    "                         motion() nodes move during it, and with frames each\n"
+    "                         frame averages --subframes renders across $t\n"
+    "                         (default closed)\n"
+    "  --subframes=K          renders averaged per frame with an open shutter\n"
+    "                         (default 8)\n"
+    "  --video=FILE           encode the frames with ffmpeg (H.264)\n"
+    "  --fps=F                the video's frames per second (default 24)\n"
+    "  --aperture=A           depth of field: a thin lens A model units wide\n"
+    "                         (default 0: a pinhole); blur needs --spp above 1\n"
+    "  --focus=D              distance from the eye to the sharp plane (default:\n"
+    "                         to the view's centre)\n"
     "\n"
     "Under mpirun -np N (N > 1), render hands tiles out to all N ranks; the\n"
     "files are the same as one process writes.\n"
@@ -245,7 +261,15 @@ typedef enum opt_id {
     OPT_SECTION_STYLE,
     OPT_AO,
     OPT_AO_RADIUS,
+    OPT_APERTURE,
+    OPT_FOCUS,
     OPT_WATCH,
+    OPT_ANIMATE,
+    OPT_TURNTABLE,
+    OPT_SHUTTER,
+    OPT_SUBFRAMES,
+    OPT_VIDEO,
+    OPT_FPS,
     OPT_MAX_TIME,
     OPT_TILED
 } opt_id;
@@ -288,9 +312,17 @@ static const opt_spec options_table[] = {
     {"--section-style", OPT_SECTION_STYLE, 1, 1},
     {"--ao", OPT_AO, 1, 1},
     {"--ao-radius", OPT_AO_RADIUS, 1, 1},
+    {"--aperture", OPT_APERTURE, 1, 1},
+    {"--focus", OPT_FOCUS, 1, 1},
     {"--watch", OPT_WATCH, 0, 1},
     {"--max-time", OPT_MAX_TIME, 1, 0},
     {"--tiled", OPT_TILED, 0, 1},
+    {"--animate", OPT_ANIMATE, 1, 1},
+    {"--turntable", OPT_TURNTABLE, 1, 1},
+    {"--shutter", OPT_SHUTTER, 1, 1},
+    {"--subframes", OPT_SUBFRAMES, 1, 1},
+    {"--video", OPT_VIDEO, 1, 1},
+    {"--fps", OPT_FPS, 1, 1},
 };
 
 typedef struct cli_args {
@@ -305,6 +337,8 @@ typedef struct cli_args {
     sc_view_preset preset; /* --view-preset */
 
     int tiled;          /* --tiled: stream the outputs tile by tile */
+    frames_job frames;  /* --animate, --turntable and what goes with them */
+    int frames_given;   /* --subframes, --video or --fps */
     int watch;          /* --watch: render again on every change */
     watch_set *watched; /* with --watch: the files the model was loaded from */
     sc_render_options options;
@@ -448,6 +482,8 @@ static int apply_option(cli_args *a, const opt_spec *spec, const char *value)
     case OPT_SECTION_STYLE:
     case OPT_AO:
     case OPT_AO_RADIUS:
+    case OPT_APERTURE:
+    case OPT_FOCUS:
         return cli_apply_preview_option(o, &a->preset, spec->name, strlen(spec->name),
                                         value);
     case OPT_WATCH:
@@ -458,6 +494,46 @@ static int apply_option(cli_args *a, const opt_spec *spec, const char *value)
     case OPT_TILED:
         a->tiled = 1;
         return 0;
+    case OPT_ANIMATE:
+    case OPT_TURNTABLE: {
+        long n;
+        if (!cli_parse_int(value, 1, 99999, &n))
+            return cli_usage_error("%s expects a number of frames from 1 to 99999",
+                                   spec->name);
+        *(spec->id == OPT_ANIMATE ? &a->frames.animate : &a->frames.turntable) = (int)n;
+        return 0;
+    }
+    case OPT_SHUTTER: {
+        double v[2];
+        if (cli_parse_numbers(value, v, 2) != 2 || !(v[0] >= 0 && v[0] <= v[1]) ||
+            !(v[1] <= 1))
+            return cli_usage_error("--shutter expects OPEN,CLOSE with 0 <= OPEN <= CLOSE "
+                                   "<= 1 (fractions of a frame)");
+        a->frames.shutter[0] = o->shutter[0] = v[0];
+        a->frames.shutter[1] = o->shutter[1] = v[1];
+        return 0;
+    }
+    case OPT_SUBFRAMES: {
+        long n;
+        if (!cli_parse_int(value, 1, 1024, &n))
+            return cli_usage_error("--subframes expects an integer from 1 to 1024");
+        a->frames.subframes = (int)n;
+        a->frames_given = 1;
+        return 0;
+    }
+    case OPT_VIDEO:
+        a->frames.video = value;
+        a->frames_given = 1;
+        return 0;
+    case OPT_FPS: {
+        double v;
+        if (!cli_parse_number(value, &v) || !(v > 0 && v <= 1000))
+            return cli_usage_error("--fps expects frames per second above 0, at most "
+                                   "1000");
+        a->frames.fps = v;
+        a->frames_given = 1;
+        return 0;
+    }
     }
     return 0;
 }
@@ -555,6 +631,17 @@ static int parse_args(cli_args *a, int argc, char **argv)
         return cli_usage_error("missing input file");
     if (a->render && !a->output)
         return cli_usage_error("missing output file (-o)");
+    int frames = a->frames.animate || a->frames.turntable;
+    if (a->frames_given && !frames)
+        return cli_usage_error("--subframes, --video and --fps need --animate or "
+                               "--turntable");
+    if (a->frames.animate && a->frames.turntable &&
+        a->frames.animate != a->frames.turntable)
+        return cli_usage_error("--animate and --turntable must give the same number of "
+                               "frames");
+    if (frames && (a->mask || a->depth || a->normal || a->id || a->watch))
+        return cli_usage_error("--animate and --turntable write colour frames only (no "
+                               "--mask, --depth, --normal, --id or --watch)");
     return finish_views(a);
 }
 
@@ -853,6 +940,53 @@ static int run_render(cli_args *a, int argc, char **argv)
     return status;
 }
 
+/* The render options for one frame's scene: the file's settings, then the
+ * command line over them (frames.c calls it for every evaluation). */
+typedef struct frame_context {
+    cli_args *args;
+    int argc;
+    char **argv;
+} frame_context;
+
+static int frame_options(void *user, const sc_scene *scene, sc_render_options *out)
+{
+    frame_context *f = user;
+    cli_args again;
+    memset(&again, 0, sizeof again);
+    again.render = 1;
+    frames_job_init(&again.frames);
+    sc_render_options_init(&again.options);
+    sc_render_options_from_scene(&again.options, scene);
+    (void)parse_args(&again, f->argc, f->argv); /* succeeded once already */
+    *out = again.options;
+    out->cancel = &interrupt_signal;
+    out->want_color = 1;
+    return 0;
+}
+
+/* `spancast render --animate=N` or `--turntable=N` (frames.c). */
+static int run_frames(cli_args *a, int argc, char **argv)
+{
+    sc_error error;
+    if (imgio_check(a->output, IMGIO_COLOR, &error))
+        return cli_usage_error("%s", error.message);
+    if (!output_writable(a->output) ||
+        (a->frames.video && !output_writable(a->frames.video)))
+        return EXIT_FAILED;
+    catch_interrupts();
+    frame_context context = {a, argc, argv};
+    a->frames.input = a->input;
+    a->frames.output = a->output;
+    a->frames.faithful = a->faithful;
+    a->frames.quiet = a->quiet;
+    a->frames.options_for = frame_options;
+    a->frames.user = &context;
+    int status = frames_run(&a->frames);
+    if (status == FRAMES_INTERRUPTED || interrupt_signal)
+        return die_interrupted();
+    return status;
+}
+
 /* `spancast bench NAME ...`: replaces this process with spancast-bench
  * (bench/main.c), found in the folder of this executable, with the
  * arguments after "bench". The benchmarks link the stability harness and
@@ -1005,6 +1139,7 @@ int main(int argc, char **argv)
     cli_args a;
     memset(&a, 0, sizeof a);
     sc_render_options_init(&a.options);
+    frames_job_init(&a.frames);
     if (!strcmp(command, "render"))
         a.render = 1;
     else if (!strcmp(command, "info"))
@@ -1024,5 +1159,7 @@ int main(int argc, char **argv)
         return cli_usage_error("--watch does not run under mpirun");
     if (a.render && a.watch)
         return run_render_watched(&a, argc, argv);
+    if (a.render && (a.frames.animate || a.frames.turntable))
+        return run_frames(&a, argc, argv);
     return a.render ? run_render(&a, argc, argv) : run_info(&a);
 }

@@ -2,7 +2,7 @@
  * its own) read alike: the tool's usage errors, number parsing, and
  * render's preview options (--colorscheme, --preview, --lighting, --view,
  * --edge-angle, --edge-width, --view-preset, --sheet, --section,
- * --section-style, --ao, --ao-radius).
+ * --section-style, --ao, --ao-radius) and its lens (--aperture, --focus).
  *
  * One parser for both, so that the viewer takes each option with render's
  * checks and refuses it with render's message, byte for byte
@@ -98,7 +98,9 @@ typedef enum preview_id {
     PREVIEW_SECTION,
     PREVIEW_SECTION_STYLE,
     PREVIEW_AO,
-    PREVIEW_AO_RADIUS
+    PREVIEW_AO_RADIUS,
+    PREVIEW_APERTURE,
+    PREVIEW_FOCUS
 } preview_id;
 
 typedef struct preview_spec {
@@ -120,6 +122,8 @@ static const preview_spec preview_table[] = {
     {"--section-style", PREVIEW_SECTION_STYLE, 1},
     {"--ao", PREVIEW_AO, 1},
     {"--ao-radius", PREVIEW_AO_RADIUS, 1},
+    {"--aperture", PREVIEW_APERTURE, 1},
+    {"--focus", PREVIEW_FOCUS, 1},
 };
 
 static const preview_spec *find_preview_option(const char *name, size_t len)
@@ -285,6 +289,21 @@ int cli_apply_preview_option(sc_render_options *o, sc_view_preset *preset,
             return cli_usage_error("--ao-radius expects a positive fraction of the "
                                    "model's diagonal");
         o->ao_radius = v;
+        return 0;
+    }
+    case PREVIEW_APERTURE: {
+        double v;
+        if (!cli_parse_number(value, &v) || !(v >= 0))
+            return cli_usage_error("--aperture expects the lens's diameter in model "
+                                   "units (0: a pinhole)");
+        o->aperture = v;
+        return 0;
+    }
+    case PREVIEW_FOCUS: {
+        double v;
+        if (!cli_parse_number(value, &v) || !(v > 0))
+            return cli_usage_error("--focus expects a positive distance from the eye");
+        o->focus = v;
         return 0;
     }
     }

@@ -41,6 +41,7 @@
 #include <time.h>
 #include <unistd.h>
 
+#include "cli/cli.h"
 #include "formats/file.h"
 
 extern char **environ;
@@ -174,7 +175,7 @@ sc_status scad_load_files(const char *path, const sc_load_options *options,
     char *text = NULL, name[PATH_MAX + 16];
     size_t size = 0;
     sc_status st =
-        scad_convert(path, &text, &size, name, sizeof name, error, depend, user, stop);
+        convert(path, NULL, &text, &size, name, sizeof name, error, depend, user, stop);
     if (st == SC_OK) {
         if (stop && stop->loading)
             *stop->loading = 1;
@@ -186,10 +187,13 @@ sc_status scad_load_files(const char *path, const sc_load_options *options,
     return st;
 }
 
-sc_status scad_convert(const char *path, char **text, size_t *size, char *name,
-                       size_t name_size, sc_error *error,
-                       void (*depend)(void *user, const char *file), void *user,
-                       const scad_stop *stop)
+/* The conversion, with OpenSCAD's $t set to *time when time is not NULL
+ * (a top-level assignment that -D appends to the source, which is how a
+ * file's own $t = ... would set it). */
+static sc_status convert(const char *path, const double *time, char **text, size_t *size,
+                         char *name, size_t name_size, sc_error *error,
+                         void (*depend)(void *user, const char *file), void *user,
+                         const scad_stop *stop)
 {
     *text = NULL;
     *size = 0;
@@ -215,11 +219,20 @@ sc_status scad_convert(const char *path, char **text, size_t *size, char *name,
     posix_spawn_file_actions_addopen(&actions, 1, log, O_WRONLY | O_CREAT | O_TRUNC,
                                      0600);
     posix_spawn_file_actions_adddup2(&actions, 1, 2);
-    char *argv[] = {"openscad", "-o", csg, source, NULL, NULL, NULL};
-    if (depend) {
-        argv[4] = "-d";
-        argv[5] = deps;
+    char define[64];
+    char *argv[9] = {"openscad", "-o", csg};
+    int argc = 3;
+    if (time) {
+        snprintf(define, sizeof define, "$t=%.17g", *time);
+        argv[argc++] = "-D";
+        argv[argc++] = define;
     }
+    if (depend) {
+        argv[argc++] = "-d";
+        argv[argc++] = deps;
+    }
+    argv[argc++] = source;
+    argv[argc] = NULL;
     pid_t pid;
     int spawned = posix_spawnp(&pid, "openscad", &actions, NULL, argv, environ);
     posix_spawn_file_actions_destroy(&actions);
@@ -253,5 +266,27 @@ sc_status scad_convert(const char *path, char **text, size_t *size, char *name,
     unlink(log);
     unlink(deps);
     rmdir(dir);
+    return st;
+}
+
+sc_status scad_convert(const char *path, char **text, size_t *size, char *name,
+                       size_t name_size, sc_error *error,
+                       void (*depend)(void *user, const char *file), void *user,
+                       const scad_stop *stop)
+{
+    return convert(path, NULL, text, size, name, name_size, error, depend, user, stop);
+}
+
+sc_status scad_load_at(const char *path, const sc_load_options *options, double t,
+                       sc_scene **scene, sc_error *error)
+{
+    *scene = NULL;
+    char *text = NULL, name[PATH_MAX + 16];
+    size_t size = 0;
+    sc_status st = convert(path, &t, &text, &size, name, sizeof name, error, NULL, NULL,
+                           &(scad_stop){&cli_stop, NULL});
+    if (st == SC_OK)
+        st = sc_scene_load_string(name, text, size, options, scene, error);
+    free(text);
     return st;
 }

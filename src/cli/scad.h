@@ -47,4 +47,14 @@ sc_status scad_convert(const char *path, char **text, size_t *size, char *name,
                        void (*depend)(void *user, const char *file), void *user,
                        const scad_stop *stop);
 
+/* scad_load at OpenSCAD's animation time $t = t: the model as OpenSCAD's
+ * --animate evaluates it for that frame. */
+sc_status scad_load_at(const char *path, const sc_load_options *options, double t,
+                       sc_scene **scene, sc_error *error);
+
+/* scad_load at OpenSCAD's animation time $t = t: the model as OpenSCAD's
+ * --animate evaluates it for that frame (stopped by cli_stop). */
+sc_status scad_load_at(const char *path, const sc_load_options *options, double t,
+                       sc_scene **scene, sc_error *error);
+
 #endif

@@ -90,7 +90,7 @@ static const char usage_text[] =
     "preview options, as for 'spancast render' (see spancast --help):\n"
     "  --colorscheme=NAME --preview --lighting=NAME --view=LIST --edge-angle=DEG\n"
     "  --edge-width=PX --view-preset=NAME --section=NX,NY,NZ,D --section-style=STYLE\n"
-    "  --ao=N --ao-radius=F\n"
+    "  --ao=N --ao-radius=F --aperture=A --focus=D\n"
     "\n"
     "mouse: left drag rotates (shift: around y), right drag pans (shift: zooms),\n"
     "       wheel zooms, a click prints what the ray under the pointer hits\n"
@@ -336,6 +336,8 @@ static sc_render_options view_options(const viewer *v, int w, int h, int spp)
     o.section_style = look->section_style;
     o.ao_samples = look->ao_samples;
     o.ao_radius = look->ao_radius;
+    o.aperture = look->aperture;
+    o.focus = look->focus;
     return o;
 }
 
@@ -390,6 +392,10 @@ static const char *view_format(const viewer *v, char *buf, size_t size)
         append(buf, size, " --ao=%d", look->ao_samples);
     if (look->ao_samples && look->ao_radius != dflt->ao_radius)
         append(buf, size, " --ao-radius=%.17g", look->ao_radius);
+    if (look->aperture > 0)
+        append(buf, size, " --aperture=%.17g", look->aperture);
+    if (look->focus > 0)
+        append(buf, size, " --focus=%.17g", look->focus);
     return buf;
 }
 

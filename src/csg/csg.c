@@ -118,6 +118,78 @@ void csg_builder_set_material(csg_builder *b, uint32_t id, uint32_t material)
         b->leaves[b->nodes[id].leaf].material = material;
 }
 
+/* Samples of a motion's time taken for its bounds, and steps between two
+ * of them over which a corner's path length is summed. */
+#define MOTION_SAMPLES 64
+#define MOTION_STEPS 4
+
+/* The world transform of a moving leaf at time s. */
+static affine motion_world(const csg_motion *m, double s)
+{
+    affine at = motion_at(&m->path, s);
+    affine w = affine_mul(&m->before, &at);
+    return affine_mul(&w, &m->after);
+}
+
+int csg_builder_set_motion(csg_builder *b, uint32_t id, const csg_motion *m)
+{
+    if (b->failed || id >= b->node_count || b->nodes[id].op != CSG_LEAF)
+        return 1;
+    for (int k = 0; k <= MOTION_SAMPLES; k++) {
+        affine w = motion_world(m, (double)k / MOTION_SAMPLES), inverse;
+        if (!affine_invert(&w, &inverse))
+            return 0;
+    }
+    csg_motion *copy = csg_builder_alloc(b, sizeof *copy);
+    if (!copy) {
+        b->failed = 1;
+        return 1;
+    }
+    *copy = *m;
+    b->leaves[b->nodes[id].leaf].motion = copy;
+    return 1;
+}
+
+/* World bounds of a moving leaf over its whole motion: the union of its
+ * boxes at MOTION_SAMPLES + 1 times, each grown by half the longest path a
+ * corner of its local box takes to the next sample (summed over
+ * MOTION_STEPS steps). An affine image of a box is the hull of its
+ * corners' images, and a point whose path from a to b is at most L long
+ * lies within L / 2 of a or of b, so every intermediate box lies inside. */
+static bbox motion_bounds(const csg_leaf *l)
+{
+    bbox local = prim_bounds(&l->prim), out = bbox_empty();
+    if (bbox_is_empty(&local))
+        return local;
+    for (int k = 0; k <= MOTION_SAMPLES; k++) {
+        double s = (double)k / MOTION_SAMPLES;
+        affine w = motion_world(l->motion, s);
+        bbox box = bbox_transform(&w, local);
+        double longest = 0;
+        for (int c = 0; k < MOTION_SAMPLES && c < 8; c++) {
+            vec3 p = v3(c & 1 ? local.hi.x : local.lo.x, c & 2 ? local.hi.y : local.lo.y,
+                        c & 4 ? local.hi.z : local.lo.z);
+            vec3 prev = affine_point(&w, p);
+            double length = 0;
+            for (int j = 1; j <= MOTION_STEPS; j++) {
+                affine wj = motion_world(l->motion,
+                                         s + (double)j / (MOTION_SAMPLES * MOTION_STEPS));
+                vec3 next = affine_point(&wj, p);
+                length += v3_length(v3_sub(next, prev));
+                prev = next;
+            }
+            longest = fmax(longest, length);
+        }
+        /* 1.01: the polyline's length falls short of the arc's by a
+         * relative (angle step)^2 / 24, far below 1 %. */
+        vec3 pad = v3(1, 1, 1);
+        box.lo = v3_sub(box.lo, v3_scale(pad, 0.505 * longest));
+        box.hi = v3_add(box.hi, v3_scale(pad, 0.505 * longest));
+        out = bbox_union(out, box);
+    }
+    return out;
+}
+
 uint32_t csg_builder_op(csg_builder *b, csg_op op, const uint32_t *children,
                         uint32_t count)
 {
@@ -468,7 +540,8 @@ static int measure_source(csg_builder *b, uint32_t root, csg_tree *t)
         if (n->op != CSG_LEAF)
             continue;
         const csg_leaf *l = &b->leaves[n->leaf];
-        n->bounds = bbox_transform(&l->to_world, prim_bounds(&l->prim));
+        n->bounds = l->motion ? motion_bounds(l)
+                              : bbox_transform(&l->to_world, prim_bounds(&l->prim));
     }
     unsigned char *marks;
     t->source_node_count =
@@ -540,6 +613,8 @@ sc_status csg_builder_finish(csg_builder *b, uint32_t root, csg_tree **out,
         return err_nomem(error, NULL);
     }
     t->bounds = t->root == CSG_EMPTY ? bbox_empty() : t->nodes[t->root].bounds;
+    for (uint32_t i = 0; i < t->leaf_count; i++)
+        t->has_motion |= t->leaves[i].motion != NULL;
     t->scale = 1.0;
     if (!bbox_is_empty(&t->bounds)) {
         vec3 ext = bbox_extent(&t->bounds);
@@ -572,6 +647,7 @@ typedef enum eval_mode {
 typedef struct eval_ctx {
     const csg_tree *tree;
     vec3 o, d, inv_d;
+    double time; /* the ray's, for moving leaves */
     double eps;
     arena *scratch;
     csg_counters *counters; /* never NULL inside a query */
@@ -581,7 +657,46 @@ typedef struct eval_ctx {
 
 static const span_list no_spans = {NULL, 0};
 
+/* The query recursion goes as deep as the tree (10000 levels on a render
+ * thread's stack), so the rarer paths below stay out of the frames of
+ * eval and eval_cut: the compiler would otherwise inline them there and
+ * every level would pay for their locals. */
+#if defined(__GNUC__)
+#define COLD_PATH __attribute__((noinline))
+#define INLINE_PATH inline __attribute__((always_inline))
+#else
+#define COLD_PATH
+#define INLINE_PATH inline
+#endif
+
+/* A leaf's world-to-local transform at time: its own, or for a moving leaf
+ * the inverse of its transform then, in *scratch. csg_builder_set_motion
+ * checked that it is invertible at every sampled time; a time between
+ * samples where it were not leaves the ray in world coordinates, which
+ * the leaf's bounds already contain. */
+static const affine *leaf_to_local(const csg_leaf *l, double time, affine *scratch)
+{
+    if (!l->motion)
+        return &l->to_local;
+    affine w = motion_world(l->motion, fmin(1.0, fmax(0.0, time)));
+    if (!affine_invert(&w, scratch))
+        return &l->to_local;
+    return scratch;
+}
+
 static span_list eval(eval_ctx *c, uint32_t id, double lo, double hi, eval_mode mode);
+
+/* The ray o + t d in the local frame of moving leaf l at time: out of
+ * eval's frame (COLD_PATH), since the transform it builds would cost every
+ * level of the recursion its size. */
+static COLD_PATH void moving_leaf_ray(const csg_leaf *l, double time, vec3 o, vec3 d,
+                                      vec3 *lo, vec3 *ld)
+{
+    affine moved;
+    const affine *to_local = leaf_to_local(l, time, &moved);
+    *lo = affine_point(to_local, o);
+    *ld = affine_vector(to_local, d);
+}
 
 static span_list eval_leaf(eval_ctx *c, const csg_node *n, double lo, double hi,
                            eval_mode mode)
@@ -593,8 +708,13 @@ static span_list eval_leaf(eval_ctx *c, const csg_node *n, double lo, double hi,
         c->oom = 1;
         return no_spans;
     }
-    vec3 o = affine_point(&l->to_local, c->o);
-    vec3 d = affine_vector(&l->to_local, c->d);
+    vec3 o, d;
+    if (l->motion) {
+        moving_leaf_ray(l, c->time, c->o, c->d, &o, &d);
+    } else {
+        o = affine_point(&l->to_local, c->o);
+        d = affine_vector(&l->to_local, c->d);
+    }
     c->counters->prim_tests++;
     r.n = prim_spans_range(&l->prim, n->leaf, o, d, lo, hi, c->eps, mode != EVAL_ALL, r.v,
                            cap);
@@ -743,18 +863,6 @@ static int visit_cut(eval_ctx *c, void *state, uint32_t id, double *lo, double *
     *hi = fmin(*hi, s->acc.v[s->acc.n - 1].out.t);
     return 1;
 }
-
-/* The query recursion goes as deep as the tree (10000 levels on a render
- * thread's stack), so the rarer paths below stay out of the frames of
- * eval and eval_cut: the compiler would otherwise inline them there and
- * every level would pay for their locals. */
-#if defined(__GNUC__)
-#define COLD_PATH __attribute__((noinline))
-#define INLINE_PATH inline __attribute__((always_inline))
-#else
-#define COLD_PATH
-#define INLINE_PATH inline
-#endif
 
 /* A difference of a few subtrahends from a wide union (one with a BVH)
  * evaluates its subtrahends first: where they lie, the union's operands
@@ -1029,7 +1137,7 @@ double csg_eps(const csg_tree *t, vec3 o, vec3 d)
 }
 
 /* Runs a query from the root; returns 0 on allocation failure. */
-static int run(const csg_tree *t, const csg_ray *r, arena *scratch,
+static int run(const csg_tree *t, const csg_ray *r, double time, arena *scratch,
                csg_counters *counters, eval_mode mode, span_list *out, int *blocked)
 {
     csg_counters unused = {0, 0, 0, 0, 0};
@@ -1037,6 +1145,7 @@ static int run(const csg_tree *t, const csg_ray *r, arena *scratch,
     c.tree = t;
     c.o = r->o;
     c.d = r->d;
+    c.time = time;
     c.inv_d = v3(1.0 / r->d.x, 1.0 / r->d.y, 1.0 / r->d.z);
     c.eps = csg_eps(t, r->o, r->d);
     c.scratch = scratch;
@@ -1088,14 +1197,20 @@ static int clip(span_list all, const csg_ray *r, arena *scratch, span_list *out)
     return 1;
 }
 
-int csg_spans_counted(const csg_tree *t, const csg_ray *r, arena *scratch,
-                      csg_counters *counters, span_list *out)
+int csg_spans_at(const csg_tree *t, const csg_ray *r, double time, arena *scratch,
+                 csg_counters *counters, span_list *out)
 {
     span_list all;
     int blocked;
     *out = no_spans;
-    return run(t, r, scratch, counters, EVAL_ALL, &all, &blocked) &&
+    return run(t, r, time, scratch, counters, EVAL_ALL, &all, &blocked) &&
            clip(all, r, scratch, out);
+}
+
+int csg_spans_counted(const csg_tree *t, const csg_ray *r, arena *scratch,
+                      csg_counters *counters, span_list *out)
+{
+    return csg_spans_at(t, r, 0, scratch, counters, out);
 }
 
 int csg_spans(const csg_tree *t, const csg_ray *r, arena *scratch, span_list *out)
@@ -1103,12 +1218,12 @@ int csg_spans(const csg_tree *t, const csg_ray *r, arena *scratch, span_list *ou
     return csg_spans_counted(t, r, scratch, NULL, out);
 }
 
-int csg_first_hit_counted(const csg_tree *t, const csg_ray *r, arena *scratch,
-                          csg_counters *counters, csg_hit *hit)
+int csg_first_hit_at(const csg_tree *t, const csg_ray *r, double time, arena *scratch,
+                     csg_counters *counters, csg_hit *hit)
 {
     span_list all, s;
     int blocked;
-    if (!run(t, r, scratch, counters, EVAL_FIRST, &all, &blocked) ||
+    if (!run(t, r, time, scratch, counters, EVAL_FIRST, &all, &blocked) ||
         !clip(all, r, scratch, &s) || s.n == 0)
         return 0;
     const span_end *e = &s.v[0].in;
@@ -1128,17 +1243,23 @@ int csg_first_hit_counted(const csg_tree *t, const csg_ray *r, arena *scratch,
     return 1;
 }
 
+int csg_first_hit_counted(const csg_tree *t, const csg_ray *r, arena *scratch,
+                          csg_counters *counters, csg_hit *hit)
+{
+    return csg_first_hit_at(t, r, 0, scratch, counters, hit);
+}
+
 int csg_first_hit(const csg_tree *t, const csg_ray *r, arena *scratch, csg_hit *hit)
 {
     return csg_first_hit_counted(t, r, scratch, NULL, hit);
 }
 
-int csg_any_hit_counted(const csg_tree *t, const csg_ray *r, arena *scratch,
-                        csg_counters *counters)
+int csg_any_hit_at(const csg_tree *t, const csg_ray *r, double time, arena *scratch,
+                   csg_counters *counters)
 {
     span_list all;
     int blocked;
-    if (!run(t, r, scratch, counters, EVAL_ANY, &all, &blocked))
+    if (!run(t, r, time, scratch, counters, EVAL_ANY, &all, &blocked))
         return 0;
     if (!blocked && !overlaps(all, r->tmin, r->tmax))
         return 0;
@@ -1148,7 +1269,7 @@ int csg_any_hit_counted(const csg_tree *t, const csg_ray *r, arena *scratch,
      * out. Membership at the start needs only the operands around it. */
     csg_ray start = *r;
     start.tmax = r->tmin;
-    if (!run(t, &start, scratch, counters, EVAL_ALL, &all, &blocked))
+    if (!run(t, &start, time, scratch, counters, EVAL_ALL, &all, &blocked))
         return 0;
     int inside = 0;
     for (uint32_t k = 0; k < all.n && !inside; k++)
@@ -1156,7 +1277,13 @@ int csg_any_hit_counted(const csg_tree *t, const csg_ray *r, arena *scratch,
     if (!inside)
         return 1;
     csg_hit hit;
-    return csg_first_hit_counted(t, r, scratch, counters, &hit);
+    return csg_first_hit_at(t, r, time, scratch, counters, &hit);
+}
+
+int csg_any_hit_counted(const csg_tree *t, const csg_ray *r, arena *scratch,
+                        csg_counters *counters)
+{
+    return csg_any_hit_at(t, r, 0, scratch, counters);
 }
 
 int csg_any_hit(const csg_tree *t, const csg_ray *r, arena *scratch)
@@ -1164,14 +1291,22 @@ int csg_any_hit(const csg_tree *t, const csg_ray *r, arena *scratch)
     return csg_any_hit_counted(t, r, scratch, NULL);
 }
 
-vec3 csg_hit_normal(const csg_tree *t, const csg_ray *r, const csg_hit *hit)
+vec3 csg_hit_normal_at(const csg_tree *t, const csg_ray *r, double time,
+                       const csg_hit *hit)
 {
     const csg_leaf *l = &t->leaves[hit->leaf];
-    vec3 o = affine_point(&l->to_local, r->o);
-    vec3 d = affine_vector(&l->to_local, r->d);
+    affine moved;
+    const affine *to_local = leaf_to_local(l, time, &moved);
+    vec3 o = affine_point(to_local, r->o);
+    vec3 d = affine_vector(to_local, r->d);
     vec3 local_n = prim_normal(&l->prim, v3_madd(o, d, hit->t), hit->part);
-    vec3 n = v3_normalize(affine_vector_transposed(&l->to_local, local_n));
+    vec3 n = v3_normalize(affine_vector_transposed(to_local, local_n));
     return hit->flip ? v3_neg(n) : n;
+}
+
+vec3 csg_hit_normal(const csg_tree *t, const csg_ray *r, const csg_hit *hit)
+{
+    return csg_hit_normal_at(t, r, 0, hit);
 }
 
 static int inside_node(const csg_tree *t, uint32_t id, vec3 p)

@@ -24,6 +24,7 @@
 #include "base/arena.h"
 #include "csg/prim.h"
 #include "csg/span.h"
+#include "math/motion.h"
 #include "math/vec.h"
 #include "spancast/spancast.h"
 
@@ -31,14 +32,24 @@
 
 typedef enum csg_op { CSG_LEAF, CSG_UNION, CSG_INTERSECTION, CSG_DIFFERENCE } csg_op;
 
+/* A moving leaf: its world transform at ray time s in [0, 1] is
+ * before . path(s) . after (a motion() node's from and to, with the
+ * transforms above the node before it and those below it after it). */
+typedef struct csg_motion {
+    affine before, after;
+    motion path;
+} csg_motion;
+
 typedef struct csg_leaf {
     prim prim;
     affine to_world;
-    affine to_local;    /* inverse of to_world */
-    float color[4];     /* RGBA, 0..1 */
-    uint32_t object_id; /* index of the leaf in source order, for the id AOV */
-    uint32_t material;  /* index into the scene's material table; 0: the default */
-    sc_location loc;    /* where the leaf was written */
+    affine to_local;          /* inverse of to_world */
+    const csg_motion *motion; /* NULL for a leaf that stands still; to_world is
+                                 then its transform at time 0 */
+    float color[4];           /* RGBA, 0..1 */
+    uint32_t object_id;       /* index of the leaf in source order, for the id AOV */
+    uint32_t material;        /* index into the scene's material table; 0: the default */
+    sc_location loc;          /* where the leaf was written */
 } csg_leaf;
 
 typedef struct csg_node {
@@ -88,6 +99,7 @@ typedef struct csg_tree {
     uint32_t depth; /* levels of boolean nodes above the deepest leaf, + 1 */
     bbox bounds;    /* world bounds of the root */
     double scale;   /* characteristic length: max of extent and |coordinates| */
+    int has_motion; /* some leaf moves (its transform depends on the ray's time) */
     /* The tree as described, before simplification (reachable part). */
     uint32_t source_node_count, source_leaf_count, source_depth;
 } csg_tree;
@@ -120,6 +132,12 @@ void csg_builder_set_material(csg_builder *b, uint32_t id, uint32_t material);
  * child; a node with none is CSG_EMPTY. */
 uint32_t csg_builder_op(csg_builder *b, csg_op op, const uint32_t *children,
                         uint32_t count);
+
+/* Makes the leaf that node id names move (see csg_motion; to_world as
+ * given to csg_builder_leaf must be its transform at time 0). Its bounds
+ * then cover the whole motion. Returns 0 when m's transform is singular
+ * at some sampled time. */
+int csg_builder_set_motion(csg_builder *b, uint32_t id, const csg_motion *m);
 
 /* 1 when an allocation failed since the builder was made. */
 int csg_builder_failed(const csg_builder *b);
@@ -182,6 +200,17 @@ int csg_any_hit_counted(const csg_tree *t, const csg_ray *r, arena *scratch,
 
 /* Unit world normal at a hit, outward from the solid (flip applied). */
 vec3 csg_hit_normal(const csg_tree *t, const csg_ray *r, const csg_hit *hit);
+
+/* The queries and the normal at a time in [0, 1], which places moving
+ * leaves (csg_motion); the others are these at time 0. */
+int csg_spans_at(const csg_tree *t, const csg_ray *r, double time, arena *scratch,
+                 csg_counters *counters, span_list *out);
+int csg_first_hit_at(const csg_tree *t, const csg_ray *r, double time, arena *scratch,
+                     csg_counters *counters, csg_hit *hit);
+int csg_any_hit_at(const csg_tree *t, const csg_ray *r, double time, arena *scratch,
+                   csg_counters *counters);
+vec3 csg_hit_normal_at(const csg_tree *t, const csg_ray *r, double time,
+                       const csg_hit *hit);
 
 /* Point membership of the whole tree (the oracle for tests). */
 int csg_inside(const csg_tree *t, vec3 p);

@@ -25,6 +25,7 @@
 #include "model/colors.h"
 #include "model/lower_curved.h"
 #include "model/lower_shading.h"
+#include "model/lower_motion.h"
 #include "model/lower_points.h"
 #include "model/lower_twod.h"
 
@@ -301,6 +302,15 @@ static sc_status lower_implicit(lowerer *l, const parse_node *n, model_node *out
 
 /* ---- shading nodes (lower_shading.c) ---- */
 
+static sc_status lower_motion(lowerer *l, const parse_node *n, model_node *out)
+{
+    model_motion *motion = arena_alloc(&l->m->mem, sizeof *motion);
+    if (!motion)
+        return err_nomem(l->r.error, NULL);
+    out->u.motion = motion;
+    return model_read_motion(&l->r, n, motion);
+}
+
 static sc_status lower_light(lowerer *l, const parse_node *n, model_node *out)
 {
     shading_light *light = arena_alloc(&l->m->mem, sizeof *light);
@@ -398,6 +408,7 @@ static const struct {
     {"implicit", MODEL_IMPLICIT, lower_implicit},
     {"material", MODEL_MATERIAL, lower_material},
     {"light", MODEL_LIGHT, lower_light},
+    {"motion", MODEL_MOTION, lower_motion},
     {"camera", MODEL_CAMERA, lower_camera},
     {"background", MODEL_BACKGROUND, lower_background},
 };

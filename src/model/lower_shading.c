@@ -82,6 +82,27 @@ static sc_status vector3(const reader *r, const char *name, vec3 *out, int *give
     return SC_OK;
 }
 
+/* A vector of 2 positive finite numbers; *given says whether it was there. */
+static sc_status size2(const reader *r, const char *name, double out[2], int *given)
+{
+    static const char expected[] = "a vector of 2 positive numbers";
+    const parse_value *v = value_of(r, name);
+    *given = 0;
+    if (!v)
+        return SC_OK;
+    if (v->kind != PARSE_VECTOR || v->u.vector.count != 2)
+        return wrong_type(r, name, v, expected);
+    for (int k = 0; k < 2; k++) {
+        const parse_value *item = &v->u.vector.items[k];
+        if (item->kind != PARSE_NUMBER || !(item->u.number > 0) ||
+            !isfinite(item->u.number))
+            return wrong_type(r, name, item, expected);
+        out[k] = item->u.number;
+    }
+    *given = 1;
+    return SC_OK;
+}
+
 /* A colour: [r, g, b] or [r, g, b, a] with components in 0..1, or an
  * OpenSCAD colour name. Alpha is read and dropped. */
 static sc_status colour(const reader *r, const char *name, float out[3], int *given)
@@ -129,6 +150,23 @@ static sc_status no_children(const reader *r)
                    r->n->name);
 }
 
+/* The frame of a rectangular light of size w x h facing along normal, its
+ * height along up projected onto its plane (see shading.h). Returns 0 when
+ * up is parallel to the normal. */
+static int rect_frame(shading_light *light, vec3 normal, vec3 up, const double size[2])
+{
+    vec3 n = v3_normalize(normal);
+    vec3 v = v3_sub(up, v3_scale(n, v3_dot(up, n)));
+    if (!(v3_length(v) > 1e-9 * v3_length(up)))
+        return 0;
+    v = v3_normalize(v);
+    vec3 w = v3_cross(v, n); /* right, for a viewer facing the lit side */
+    light->normal = n;
+    light->half_width = v3_scale(w, size[0] / 2);
+    light->half_height = v3_scale(v, size[1] / 2);
+    return 1;
+}
+
 sc_status model_read_light(const model_reader *at, const parse_node *n,
                            shading_light *out)
 {
@@ -139,7 +177,9 @@ sc_status model_read_light(const model_reader *at, const parse_node *n,
     light.color[0] = light.color[1] = light.color[2] = 1;
     light.intensity = 1;
     vec3 position = v3(0, 0, 0), direction = v3(0, 0, 0);
-    int has_position, has_direction, has_color;
+    vec3 normal = v3(0, 0, -1), up = v3(0, 0, 1);
+    double size[2] = {0, 0};
+    int has_position, has_direction, has_color, has_size, has_normal, has_up;
     sc_status st = no_children(&r);
     if (!st)
         st = vector3(&r, "position", &position, &has_position);
@@ -152,6 +192,12 @@ sc_status model_read_light(const model_reader *at, const parse_node *n,
                     &light.intensity);
     if (!st)
         st = number(&r, "radius", 0, HUGE_VAL, "a non-negative number", &light.radius);
+    if (!st)
+        st = size2(&r, "size", size, &has_size);
+    if (!st)
+        st = vector3(&r, "normal", &normal, &has_normal);
+    if (!st)
+        st = vector3(&r, "up", &up, &has_up);
     if (st)
         return st;
     if (has_position == has_direction)
@@ -162,12 +208,30 @@ sc_status model_read_light(const model_reader *at, const parse_node *n,
                          "argument 'direction' of 'light' must not be zero");
     if (has_direction && light.radius > 0)
         return bad_value(&r, "radius", "a directional light has no radius");
+    if (!has_size && (has_normal || has_up))
+        return bad_value(&r, has_normal ? "normal" : "up",
+                         "only a light with a size has a normal and an up direction");
+    if (has_size && has_direction)
+        return bad_value(&r, "size", "a directional light has no size");
+    if (has_size && light.radius > 0)
+        return bad_value(&r, "size", "a light has a radius or a size, not both");
+    if (has_normal && !(v3_length(normal) > 0))
+        return bad_value(&r, "normal", "argument 'normal' of 'light' must not be zero");
+    if (has_size && !has_up && fabs(v3_normalize(normal).z) > 1 - 1e-12)
+        up = v3(0, 1, 0); /* a light facing up or down: its height along +y */
     if (has_position) {
         light.kind = SHADING_LIGHT_POINT;
         light.position = position;
     } else {
         light.kind = SHADING_LIGHT_DIRECTIONAL;
         light.direction = direction;
+    }
+    if (has_size) {
+        light.kind = SHADING_LIGHT_RECT;
+        if (!rect_frame(&light, normal, up, size))
+            return bad_value(&r, has_up ? "up" : "normal",
+                             "the up direction of a light must not be parallel to its "
+                             "normal");
     }
     *out = light;
     return SC_OK;
@@ -194,6 +258,10 @@ sc_status model_read_camera(const model_reader *at, const parse_node *n,
     if (!st)
         st = number(&r, "fov", 1e-6, 180 - 1e-6, "between 0 and 180 degrees",
                     &cam.fov_deg);
+    if (!st)
+        st = number(&r, "aperture", 0, HUGE_VAL, "a non-negative number", &cam.aperture);
+    if (!st)
+        st = number(&r, "focus", 0, HUGE_VAL, "a positive number", &cam.focus);
     if (st)
         return st;
     const parse_value *p = value_of(&r, "projection");
@@ -205,6 +273,10 @@ sc_status model_read_camera(const model_reader *at, const parse_node *n,
         else if (strcmp(p->u.string.chars, "perspective"))
             return wrong_type(&r, "projection", p, "\"perspective\" or \"orthographic\"");
     }
+    if (value_of(&r, "focus") && !(cam.focus > 0))
+        return bad_value(&r, "focus",
+                         "argument 'focus' of 'camera' must be a positive "
+                         "number");
     if (!has_eye || !has_center)
         return err_set(error, SC_ERR_SEMANTIC, &n->loc, "'camera' needs eye and center");
     if (v3_length(v3_sub(center, eye)) == 0)
@@ -263,6 +335,8 @@ sc_status model_read_material(const model_reader *at, const parse_node *n,
         st = number(&r, "checker", 0, HUGE_VAL, positive, &m.checker);
     if (!st)
         st = colour(&r, "color2", m.color2, &has_color2);
+    if (!st)
+        st = number(&r, "roughness", 0, 1, unit, &m.roughness);
     if (st)
         return st;
     if (value_of(&r, "checker") && !(m.checker > 0))

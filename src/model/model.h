@@ -62,6 +62,7 @@ typedef enum model_kind {
     MODEL_COLOR,
     MODEL_MATERIAL,
     MODEL_RESIZE,
+    MODEL_MOTION, /* motion(from, to): its subtree moves during the shutter */
     /* Leaves: the builder does not walk their children (the extrusions,
      * hull and minkowski build from them themselves). */
     MODEL_CUBE,
@@ -140,6 +141,12 @@ typedef struct model_circle {
     int has_d;
     model_resolution res;
 } model_circle;
+
+/* motion(from = M0, to = M1): the subtree under M0 when the shutter
+ * opens and under M1 when it closes (lower_motion.c). */
+typedef struct model_motion {
+    affine from, to;
+} model_motion;
 
 /* torus(r1, r2): major radius r1 in the xy plane, minor radius r2 < r1. */
 typedef struct model_torus {
@@ -319,6 +326,7 @@ struct model_node {
         const model_quadric *quadric;
         const model_implicit *implicit;
         const model_material *material; /* material */
+        const model_motion *motion;     /* motion */
         const shading_light *light;     /* light: position or direction local */
         const shading_camera *camera;   /* camera: world coordinates */
         const float *background;        /* background: 3 colour components */

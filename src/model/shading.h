@@ -20,15 +20,21 @@
 #include "spancast/spancast.h"
 
 typedef enum shading_light_kind {
-    SHADING_LIGHT_POINT,      /* at position; a sphere light when radius > 0 */
-    SHADING_LIGHT_DIRECTIONAL /* from infinitely far along -direction */
+    SHADING_LIGHT_POINT,       /* at position; a sphere light when radius > 0 */
+    SHADING_LIGHT_DIRECTIONAL, /* from infinitely far along -direction */
+    SHADING_LIGHT_RECT         /* a rectangle centred at position, lit on one side */
 } shading_light_kind;
 
 typedef struct shading_light {
     shading_light_kind kind;
-    vec3 position;    /* point and sphere lights, world */
-    vec3 direction;   /* directional lights: unit direction the light travels */
-    double radius;    /* sphere lights, world units; 0 for a point light */
+    vec3 position;  /* point and sphere lights, world */
+    vec3 direction; /* directional lights: unit direction the light travels */
+    double radius;  /* sphere lights, world units; 0 for a point light */
+    /* Rectangular lights: the half-edges from the centre along the width
+     * and along the height (up projected onto the light's plane), and the
+     * unit normal of the side that emits. In the node's own coordinates
+     * after lowering, in world coordinates after building. */
+    vec3 half_width, half_height, normal;
     float color[3];   /* display values 0..1 */
     double intensity; /* multiplies the colour (after linearising) */
 } shading_light;
@@ -43,16 +49,19 @@ typedef struct shading_light {
 typedef struct shading_material {
     double ambient, diffuse, specular, shininess; /* Blinn-Phong weights */
     double reflect;                               /* mirror reflection weight, 0..1 */
-    double transmit; /* refraction weight, 0..1; Fresnel splits it */
-    double ior;      /* index of refraction of the solid's inside */
-    double checker;  /* > 0: a 3D checkerboard of cells this size in world units */
-    float color2[3]; /* the checkerboard's second colour, display values */
+    double transmit;  /* refraction weight, 0..1; Fresnel splits it */
+    double ior;       /* index of refraction of the solid's inside */
+    double checker;   /* > 0: a 3D checkerboard of cells this size in world units */
+    double roughness; /* 0: mirror and clear refraction; up to 1: glossy lobes */
+    float color2[3];  /* the checkerboard's second colour, display values */
 } shading_material;
 
 typedef struct shading_camera {
     double eye[3], center[3], up[3];
     double fov_deg;
     sc_projection projection;
+    double aperture; /* thin lens diameter, world units; 0: a pinhole */
+    double focus;    /* distance of the sharp plane from the eye; 0: eye to centre */
 } shading_camera;
 
 typedef struct shading {

@@ -246,7 +246,32 @@ sc_status cam_init(camera *cam, const cam_view *view, double fov_deg,
     cam->width = width;
     cam->height = height;
     cam->projection = projection;
+    cam->lens_radius = 0;
+    cam->focus = len;
     return SC_OK;
+}
+
+sc_status cam_set_lens(camera *cam, double aperture, double focus, sc_error *error)
+{
+    if (!(aperture >= 0 && isfinite(aperture)))
+        return err_set(error, SC_ERR_ARGUMENT, NULL,
+                       "aperture must be a non-negative width (got %g)", aperture);
+    if (!(focus >= 0 && isfinite(focus)))
+        return err_set(error, SC_ERR_ARGUMENT, NULL,
+                       "focus distance must be positive (got %g)", focus);
+    cam->lens_radius = aperture / 2;
+    cam->focus = focus > 0 ? focus : cam->distance;
+    return SC_OK;
+}
+
+void cam_lens_ray(const camera *cam, double lx, double ly, vec3 *origin, vec3 *direction)
+{
+    if (!(cam->lens_radius > 0))
+        return;
+    vec3 shift =
+        v3_madd(v3_scale(cam->r, lx * cam->lens_radius), cam->u, ly * cam->lens_radius);
+    *origin = v3_add(*origin, shift);
+    *direction = v3_madd(*direction, shift, -1 / cam->focus);
 }
 
 void cam_ray(const camera *cam, int i, int j, double sx, double sy, vec3 *origin,

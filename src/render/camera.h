@@ -15,8 +15,17 @@
  *   orthographic: origin e + |c - e| (x r + y u),  direction f.
  *
  * The directions are not normalised, so the ray parameter t of a hit is not
- * its distance; the distance is t |d|. docs/camera.md is the reference for
- * other tools that want to reproduce these rays, with the OpenSCAD 2021.01
+ * its distance; the distance is t |d|.
+ *
+ * A thin lens (depth of field) of diameter A focused at distance D moves
+ * the ray's origin to a point of the lens, o' = o + (A / 2)(lx r + ly u)
+ * for (lx, ly) on the unit disc, and turns it through the point the
+ * pinhole ray reaches at forward depth D: d' = d - (A / 2)(lx r + ly u) / D
+ * (d has forward component 1 in both projections, so that point is o + D d
+ * and d' keeps forward component 1). Points at depth D stay sharp; a point
+ * at depth z spreads over a disc of diameter A |z - D| / z on the plane at
+ * depth D, the circle of confusion (docs/distribution.md). docs/camera.md is the
+ * reference for other tools that want to reproduce these rays, with the OpenSCAD 2021.01
  * conversions written out as formulas.
  */
 #ifndef SPANCAST_RENDER_CAMERA_H
@@ -54,6 +63,8 @@ typedef struct camera {
     double distance; /* |c - e|: the orthographic half-height is distance * a */
     int width, height;
     sc_projection projection;
+    double lens_radius; /* thin lens: half the aperture; 0 for a pinhole */
+    double focus;       /* thin lens: forward depth of the sharp plane */
 } camera;
 
 /* Sine and cosine of an angle in degrees, exact at multiples of 90 degrees
@@ -86,6 +97,15 @@ sc_status cam_view_from_options(const sc_render_options *options, const bbox *bo
  * or field of view (0 < fov < 180), or a distance that is not positive. */
 sc_status cam_init(camera *cam, const cam_view *view, double fov_deg,
                    sc_projection projection, int width, int height, sc_error *error);
+
+/* Gives cam a thin lens of diameter aperture focused at distance focus
+ * from the eye (0: at the centre's). Returns SC_ERR_ARGUMENT for a
+ * negative or non-finite aperture or focus. */
+sc_status cam_set_lens(camera *cam, double aperture, double focus, sc_error *error);
+
+/* Moves the pinhole ray (origin, direction) of cam to the lens point
+ * (lx, ly) on the unit disc; see above. Leaves it as it is without a lens. */
+void cam_lens_ray(const camera *cam, double lx, double ly, vec3 *origin, vec3 *direction);
 
 /* The ray through pixel (i, j) at sample offset (sx, sy); see above. */
 void cam_ray(const camera *cam, int i, int j, double sx, double sy, vec3 *origin,

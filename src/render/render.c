@@ -96,6 +96,8 @@ int sc_render_options_from_scene(sc_render_options *options, const sc_scene *sce
     memcpy(options->up, c->up, sizeof c->up);
     options->fov_deg = c->fov_deg;
     options->projection = c->projection;
+    options->aperture = c->aperture;
+    options->focus = c->focus;
     return 1;
 }
 
@@ -119,6 +121,7 @@ typedef struct render_ctx {
     double edge_cos;      /* cosine of the crease angle */
     double edge_color[3]; /* linear */
     int overlays;         /* some view has overlay lines or a label */
+    double shutter[2];    /* sample times lie in [open, close] */
     sc_framebuffer *fb;
     cancel_token *cancel;  /* the caller's flag and the work budget */
     uint64_t pixel_credit; /* evaluations allowed for each pixel done */
@@ -143,6 +146,7 @@ static void trace_view_ray(const render_view *v, shade_thread *st, int i, int j,
                            double sx, double sy, view_ray *out)
 {
     cam_ray(&v->cam, i, j, sx, sy, &out->ray.o, &out->ray.d);
+    cam_lens_ray(&v->cam, st->lens[0], st->lens[1], &out->ray.o, &out->ray.d);
     out->ray.tmin = 0;
     out->ray.tmax = INFINITY;
     out->found = shade_first_hit(&v->shade, st, &out->ray, &out->hit);
@@ -250,6 +254,10 @@ static void render_pixel(const render_ctx *c, render_thread *th, int i, int j)
     st.scratch = &th->scratch;
     st.csg = &th->csg;
     memset(&st.count, 0, sizeof st.count);
+    sample_pixel px = {(uint32_t)x, (uint32_t)y, 0, c->spp, c->grid_width, 0};
+    st.px = px;
+    st.lens[0] = st.lens[1] = 0; /* the centre ray passes the lens's centre */
+    st.time = 0.5 * (c->shutter[0] + c->shutter[1]); /* the centre of the shutter */
 
     /* The centre ray: the AOVs, and the colour at one sample per pixel. */
     view_ray centre;
@@ -289,6 +297,8 @@ static void render_pixel(const render_ctx *c, render_thread *th, int i, int j)
         if (s > 0 && cancel_check(c->cancel))
             break; /* the image is abandoned */
         st.rng = sample_rng_for((uint32_t)x, (uint32_t)y, (uint32_t)s);
+        st.px.s = s;
+        st.px.dim = 0;
         memset(&st.count, 0, sizeof st.count);
         double rgb[3];
         if (c->spp == 1) {
@@ -296,6 +306,16 @@ static void render_pixel(const render_ctx *c, render_thread *th, int i, int j)
         } else {
             double sx, sy;
             sample_offset(s, c->spp, c->grid_width, &st.rng, &sx, &sy);
+            if (v->cam.lens_radius > 0) {
+                double lu, lv;
+                sample_2d(&st.px, &st.rng, &lu, &lv);
+                sample_disc(lu, lv, &st.lens[0], &st.lens[1]);
+            }
+            if (c->tree->has_motion && c->shutter[1] > c->shutter[0]) {
+                double u, unused;
+                sample_2d(&st.px, &st.rng, &u, &unused);
+                st.time = c->shutter[0] + u * (c->shutter[1] - c->shutter[0]);
+            }
             view_ray r;
             trace_view_ray(v, &st, vx, vy, sx, sy, &r);
             th->camera_rays++;
@@ -426,6 +446,10 @@ static sc_status check_options(const sc_render_options *o, sc_error *error)
         return err_set(error, SC_ERR_ARGUMENT, NULL,
                        "edge angle must be between 0 and 180 degrees (got %g)",
                        o->edge_angle_deg);
+    if (!(o->shutter[0] >= 0 && o->shutter[0] <= o->shutter[1] && o->shutter[1] <= 1))
+        return err_set(error, SC_ERR_ARGUMENT, NULL,
+                       "shutter %g,%g is not an interval of [0, 1]", o->shutter[0],
+                       o->shutter[1]);
     if (o->ao_samples < 0 || o->ao_samples > RENDER_MAX_AO)
         return err_set(error, SC_ERR_ARGUMENT, NULL,
                        "ambient occlusion takes 0 to %d rays (got %d)", RENDER_MAX_AO,
@@ -476,6 +500,8 @@ static sc_status prepare_view(render_ctx *c, int k, const shading *look,
     if (st == SC_OK)
         st = cam_init(&v->cam, &view, options->fov_deg, options->projection,
                       options->width, options->height, error);
+    if (st == SC_OK)
+        st = cam_set_lens(&v->cam, options->aperture, options->focus, error);
     if (st)
         return st;
     st = shade_prepare(&v->shade, c->tree, look, &v->cam, options, error);
@@ -548,6 +574,8 @@ sc_status render_scene(const csg_tree *tree, const shading *look,
     c.tree = tree;
     c.spp = options->spp;
     c.grid_width = sample_grid_width(options->spp);
+    c.shutter[0] = options->shutter[0];
+    c.shutter[1] = options->shutter[1];
     c.tile_w = options->width;
     c.tile_h = options->height;
     c.view_count = options->sheet_count > 0 ? options->sheet_count : 1;

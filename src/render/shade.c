@@ -92,6 +92,8 @@ sc_status shade_prepare(shade_scene *s, const csg_tree *tree, const shading *loo
         out->ior = m.ior;
         out->checker = m.checker;
         linear3(m.color2, 1, out->color2);
+        out->glossy = m.roughness > 0;
+        out->lobe = out->glossy ? 2 / (m.roughness * m.roughness) - 2 : 0;
     }
     /* Faces: with a scheme chosen, or in the preview, the scheme's face
      * colours where the file gives none: the front colour, and the back
@@ -117,6 +119,10 @@ sc_status shade_prepare(shade_scene *s, const csg_tree *tree, const shading *loo
             out->position = in->position;
             out->to_light = v3_neg(in->direction);
             out->radius = in->radius;
+            out->rect = in->kind == SHADING_LIGHT_RECT;
+            out->half_width = in->half_width;
+            out->half_height = in->half_height;
+            out->normal = in->normal;
             linear3(in->color, in->intensity, out->color);
         }
     } else {
@@ -230,8 +236,9 @@ int shade_first_hit(const shade_scene *s, shade_thread *th, const csg_ray *ray,
                     shade_hit *hit)
 {
     memset(hit, 0, sizeof *hit);
+    hit->time = th->time;
     if (s->section_count == 0)
-        return csg_first_hit_counted(s->tree, ray, th->scratch, th->csg, &hit->hit);
+        return csg_first_hit_at(s->tree, ray, th->time, th->scratch, th->csg, &hit->hit);
     double ta, tb;
     int plane;
     if (!section_interval(s, ray, &ta, &tb, &plane))
@@ -240,7 +247,7 @@ int shade_first_hit(const shade_scene *s, shade_thread *th, const csg_ray *ray,
     clipped.tmin = ta;
     clipped.tmax = tb;
     span_list spans;
-    if (!csg_spans_counted(s->tree, &clipped, th->scratch, th->csg, &spans))
+    if (!csg_spans_at(s->tree, &clipped, th->time, th->scratch, th->csg, &spans))
         return 0;
     for (uint32_t k = 0; k < spans.n; k++) {
         const span *sp = &spans.v[k];
@@ -276,14 +283,15 @@ int shade_first_hit(const shade_scene *s, shade_thread *th, const csg_ray *ray,
 int shade_any_hit(const shade_scene *s, shade_thread *th, const csg_ray *ray)
 {
     if (s->section_count == 0)
-        return csg_any_hit_counted(s->tree, ray, th->scratch, th->csg);
+        return csg_any_hit_at(s->tree, ray, th->time, th->scratch, th->csg);
     shade_hit hit;
     return shade_first_hit(s, th, ray, &hit);
 }
 
 vec3 shade_hit_normal(const shade_scene *s, const csg_ray *ray, const shade_hit *hit)
 {
-    return hit->cap ? hit->cap_normal : csg_hit_normal(s->tree, ray, &hit->hit);
+    return hit->cap ? hit->cap_normal
+                    : csg_hit_normal_at(s->tree, ray, hit->time, &hit->hit);
 }
 
 /* Adds the direct light at p (facing normal n, towards-viewer v). */
@@ -297,13 +305,21 @@ static void direct_light(const shade_scene *s, shade_thread *th, const shade_mat
         shadow.o = origin;
         shadow.tmin = 0;
         vec3 l;
+        double emitted = 1; /* a rectangular light's Lambert factor */
         if (light->directional) {
             l = light->to_light;
             shadow.d = l;
             shadow.tmax = INFINITY;
         } else {
             vec3 target = light->position;
-            if (light->radius > 0) {
+            if (light->rect) {
+                /* A uniform point on the rectangle, stratified over the
+                 * pixel's samples. */
+                double a, b;
+                sample_2d(&th->px, &th->rng, &a, &b);
+                target = v3_madd(v3_madd(target, light->half_width, 2 * a - 1),
+                                 light->half_height, 2 * b - 1);
+            } else if (light->radius > 0) {
                 /* A uniform point on the disc of the light facing p. */
                 vec3 w = v3_normalize(v3_sub(light->position, p));
                 vec3 a = fabs(w.x) < 0.6 ? v3(1, 0, 0) : v3(0, 1, 0);
@@ -315,6 +331,11 @@ static void direct_light(const shade_scene *s, shade_thread *th, const shade_mat
             shadow.d = v3_sub(target, origin);
             shadow.tmax = 1;
             l = v3_normalize(shadow.d);
+            if (light->rect) {
+                emitted = -v3_dot(light->normal, l);
+                if (!(emitted > 0))
+                    continue; /* behind the light: it emits on one side */
+            }
         }
         double nl = v3_dot(n, l);
         if (!(nl > 0))
@@ -328,8 +349,25 @@ static void direct_light(const shade_scene *s, shade_thread *th, const shade_mat
             highlight = m->specular * pow(fmax(0.0, v3_dot(n, h)), m->shininess);
         }
         for (int k = 0; k < 3; k++)
-            out[k] += light->color[k] * (m->diffuse * base[k] * nl + highlight);
+            out[k] += emitted * light->color[k] * (m->diffuse * base[k] * nl + highlight);
     }
+}
+
+/* A direction of the glossy lobe about the unit axis: density
+ * (lobe + 1) / (2 pi) cos^lobe of the angle to the axis over the sphere of
+ * directions, sampled exactly (cos = u^(1 / (lobe + 1))), stratified over
+ * the pixel's samples. */
+static vec3 glossy_direction(shade_thread *th, vec3 axis, double lobe)
+{
+    double u, w;
+    sample_2d(&th->px, &th->rng, &u, &w);
+    double c =
+        pow(1 - u, 1 / (lobe + 1)); /* 1 - u in (0, 1]: never the pole's far side */
+    double sn = sqrt(fmax(0.0, 1 - c * c));
+    double phi = 6.283185307179586 * w;
+    vec3 a = fabs(axis.x) < 0.6 ? v3(1, 0, 0) : v3(0, 1, 0);
+    vec3 e1 = v3_normalize(v3_cross(axis, a)), e2 = v3_cross(axis, e1);
+    return v3_madd(v3_madd(v3_scale(axis, c), e1, sn * cos(phi)), e2, sn * sin(phi));
 }
 
 /* OpenSCAD's lighting of base (linear) at facing normal n, computed on
@@ -455,19 +493,30 @@ void shade_ray(const shade_scene *s, shade_thread *th, const csg_ray *ray,
         }
     }
     if (kr * weight > SHADE_CUTOFF) {
-        csg_ray r = {above, v3_madd(dir, n, 2 * v3_dot(n, v)), 0, INFINITY};
-        double c[3];
-        th->count.reflection_rays++;
-        shade_ray(s, th, &r, NULL, depth + 1, weight * kr, c);
-        for (int k = 0; k < 3; k++)
-            out[k] += kr * c[k];
+        vec3 mirror = v3_madd(dir, n, 2 * v3_dot(n, v));
+        vec3 d = mirror;
+        if (m->glossy) /* a lobe direction under the surface is absorbed */
+            d = glossy_direction(th, v3_normalize(mirror), m->lobe);
+        if (!m->glossy || v3_dot(d, n) > 0) {
+            csg_ray r = {above, d, 0, INFINITY};
+            double c[3];
+            th->count.reflection_rays++;
+            shade_ray(s, th, &r, NULL, depth + 1, weight * kr, c);
+            for (int k = 0; k < 3; k++)
+                out[k] += kr * c[k];
+        }
     }
     if (kt * weight > SHADE_CUTOFF) {
-        csg_ray r = {below, refracted, 0, INFINITY};
-        double c[3];
-        th->count.refraction_rays++;
-        shade_ray(s, th, &r, NULL, depth + 1, weight * kt, c);
-        for (int k = 0; k < 3; k++)
-            out[k] += kt * c[k];
+        vec3 d = refracted;
+        if (m->glossy) /* a lobe direction back on the incoming side is absorbed */
+            d = glossy_direction(th, v3_normalize(refracted), m->lobe);
+        if (!m->glossy || v3_dot(d, n) < 0) {
+            csg_ray r = {below, d, 0, INFINITY};
+            double c[3];
+            th->count.refraction_rays++;
+            shade_ray(s, th, &r, NULL, depth + 1, weight * kt, c);
+            for (int k = 0; k < 3; k++)
+                out[k] += kt * c[k];
+        }
     }
 }

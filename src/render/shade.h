@@ -70,15 +70,20 @@
 
 typedef struct shade_light {
     int directional;
-    vec3 position;   /* point and sphere lights */
-    vec3 to_light;   /* directional: unit direction towards the light */
-    double radius;   /* sphere light; 0 for a point */
-    double color[3]; /* linear, times the intensity */
+    int rect;      /* a rectangular light (shading.h) */
+    vec3 position; /* point, sphere and rectangular lights (the centre) */
+    vec3 to_light; /* directional: unit direction towards the light */
+    double radius; /* sphere light; 0 for a point */
+    vec3 half_width, half_height, normal; /* rectangular light, world */
+    double color[3];                      /* linear, times the intensity */
 } shade_light;
 
 typedef struct shade_material {
     double ambient, diffuse, specular, shininess, reflect, transmit, ior, checker;
     double color2[3]; /* linear */
+    double lobe;      /* glossy lobe exponent 2 / roughness^2 - 2; 0 with roughness 0
+                         (a mirror: no lobe is sampled) */
+    int glossy;       /* roughness > 0 */
 } shade_material;
 
 /* A section cut: the half-space n.p <= d keeps the solid (n unit). */
@@ -122,6 +127,7 @@ typedef struct shade_scene {
  * ray meets a cut plane inside the solid. */
 typedef struct shade_hit {
     csg_hit hit;     /* for a cap: t on the plane, the leaf of the span cut */
+    double time;     /* the ray's time, which places moving leaves */
     int cap;         /* 1: a section cap */
     vec3 cap_normal; /* a cap's outward normal: the plane's n */
 } shade_hit;
@@ -134,8 +140,13 @@ typedef struct shade_counters {
 
 /* One thread's state for one pixel sample. */
 typedef struct shade_thread {
-    arena *scratch; /* query memory; the caller resets it after the sample */
-    sample_rng rng; /* the sample's random numbers */
+    arena *scratch;  /* query memory; the caller resets it after the sample */
+    sample_rng rng;  /* the sample's random numbers */
+    sample_pixel px; /* the sample's place among the pixel's, for stratified
+                        dimensions (sample_2d) */
+    double lens[2];  /* the camera ray's point on the unit disc of the lens */
+    double time;     /* the sample's time in the shutter, which every ray of the
+                        sample carries (csg_motion); 0 without motion blur */
     shade_counters count;
     csg_counters *csg; /* the thread's query counters */
 } shade_thread;
