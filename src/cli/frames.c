@@ -39,6 +39,7 @@
 
 #include "cli/cli.h"
 #include "cli/scad.h"
+#include "formats/framebuffer.h"
 
 extern char **environ;
 
@@ -196,7 +197,8 @@ int frames_run(const frames_job *job)
                              n;
             sc_scene *scene = fixed;
             if (scad) {
-                if (scad_load_at(job->input, &lo, tk, &scene, &error) != SC_OK) {
+                if (scad_load_at(job->input, &lo, tk, &scene, &error,
+                                 &(scad_stop){&cli_stop, cli_loading_flag()}) != SC_OK) {
                     cli_print_error(&error);
                     status = CLI_EXIT_FAILED;
                     break;

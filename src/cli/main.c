@@ -959,7 +959,7 @@ static int frame_options(void *user, const sc_scene *scene, sc_render_options *o
     sc_render_options_from_scene(&again.options, scene);
     (void)parse_args(&again, f->argc, f->argv); /* succeeded once already */
     *out = again.options;
-    out->cancel = &interrupt_signal;
+    out->cancel = &cli_stop;
     out->want_color = 1;
     return 0;
 }
@@ -973,7 +973,8 @@ static int run_frames(cli_args *a, int argc, char **argv)
     if (!output_writable(a->output) ||
         (a->frames.video && !output_writable(a->frames.video)))
         return EXIT_FAILED;
-    catch_interrupts();
+    cli_catch_interrupts();
+    cli_start_clock();
     frame_context context = {a, argc, argv};
     a->frames.input = a->input;
     a->frames.output = a->output;
@@ -982,8 +983,9 @@ static int run_frames(cli_args *a, int argc, char **argv)
     a->frames.options_for = frame_options;
     a->frames.user = &context;
     int status = frames_run(&a->frames);
-    if (status == FRAMES_INTERRUPTED || interrupt_signal)
-        return die_interrupted();
+    cli_stop_clock();
+    if (status == FRAMES_INTERRUPTED || cli_stop)
+        return cli_die_stopped();
     return status;
 }
 

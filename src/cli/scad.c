@@ -41,7 +41,6 @@
 #include <time.h>
 #include <unistd.h>
 
-#include "cli/cli.h"
 #include "formats/file.h"
 
 extern char **environ;
@@ -166,6 +165,11 @@ static int wait_child(pid_t pid, int *status, const volatile sig_atomic_t *stop)
     return 0;
 }
 
+static sc_status convert(const char *path, const double *time, char **text, size_t *size,
+                         char *name, size_t name_size, sc_error *error,
+                         void (*depend)(void *user, const char *file), void *user,
+                         const scad_stop *stop);
+
 sc_status scad_load_files(const char *path, const sc_load_options *options,
                           sc_scene **scene, sc_error *error,
                           void (*depend)(void *user, const char *file), void *user,
@@ -278,15 +282,20 @@ sc_status scad_convert(const char *path, char **text, size_t *size, char *name,
 }
 
 sc_status scad_load_at(const char *path, const sc_load_options *options, double t,
-                       sc_scene **scene, sc_error *error)
+                       sc_scene **scene, sc_error *error, const scad_stop *stop)
 {
     *scene = NULL;
     char *text = NULL, name[PATH_MAX + 16];
     size_t size = 0;
-    sc_status st = convert(path, &t, &text, &size, name, sizeof name, error, NULL, NULL,
-                           &(scad_stop){&cli_stop, NULL});
-    if (st == SC_OK)
+    sc_status st =
+        convert(path, &t, &text, &size, name, sizeof name, error, NULL, NULL, stop);
+    if (st == SC_OK) {
+        if (stop && stop->loading)
+            *stop->loading = 1;
         st = sc_scene_load_string(name, text, size, options, scene, error);
+        if (stop && stop->loading)
+            *stop->loading = 0;
+    }
     free(text);
     return st;
 }

@@ -48,13 +48,8 @@ sc_status scad_convert(const char *path, char **text, size_t *size, char *name,
                        const scad_stop *stop);
 
 /* scad_load at OpenSCAD's animation time $t = t: the model as OpenSCAD's
- * --animate evaluates it for that frame. */
+ * --animate evaluates it for that frame; stop as for scad_load_files. */
 sc_status scad_load_at(const char *path, const sc_load_options *options, double t,
-                       sc_scene **scene, sc_error *error);
-
-/* scad_load at OpenSCAD's animation time $t = t: the model as OpenSCAD's
- * --animate evaluates it for that frame (stopped by cli_stop). */
-sc_status scad_load_at(const char *path, const sc_load_options *options, double t,
-                       sc_scene **scene, sc_error *error);
+                       sc_scene **scene, sc_error *error, const scad_stop *stop);
 
 #endif
