@@ -10,7 +10,7 @@
  * Implicit leaves are rendered too, so the root finders and the interval
  * evaluators see hostile fields: the render's budget of implicit work
  * (docs/limits.md) ends a field that is unresolvable at this scale with an
- * SC_ERR_LIMIT error after about 2^20 evaluations, well within the
+ * SC_ERR_LIMIT error after about 2^18 evaluations, well within the
  * fuzzer's time limit per input.
  * Returns 0 when those hold, -1 otherwise. It lives in a header so that the
  * libFuzzer target (fuzz/fuzz_load.c) and the replay test

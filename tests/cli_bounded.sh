@@ -48,11 +48,11 @@ for size in 8,8 200,150; do
         "huge.csg:1:1: error: implicit surface is not resolvable: the argument of sin reaches 1e+118 within its bounds (beyond 2^53, where doubles are farther apart than its period)" \
         "$bin" render huge.csg -o out/old.png --imgsize=$size -q
     expect_error "fine field $size" \
-        "fine.csg:1:1: error: implicit surfaces need more than 4096 evaluations per ray on average (limit is 4096, after the first 1048576)" \
+        "fine.csg:1:1: error: implicit surfaces need more than 4096 evaluations per ray on average (limit is 4096, after the first 262144)" \
         "$bin" render fine.csg -o out/old.png --imgsize=$size -q
 done
 expect_error "fine field, measure" \
-    "fine.csg:1:1: error: implicit surfaces need more than 4096 evaluations per ray on average (limit is 4096, after the first 1048576)" \
+    "fine.csg:1:1: error: implicit surfaces need more than 4096 evaluations per ray on average (limit is 4096, after the first 262144)" \
     "$bin" measure fine.csg -q
 
 # --max-time: a render of many seconds, a measure to a tolerance it cannot

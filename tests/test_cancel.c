@@ -58,16 +58,19 @@ static void test_budget_and_credit(void **state)
     cancel_scope s;
     cancel_enter(&s, &t);
     int prim = 0;
-    cancel_spend(80, 3, &prim);
+    cancel_working_on(3, &prim);
+    cancel_spend(80);
     assert_int_equal(cancel_check(&t), CANCEL_NONE);
     cancel_credit(&t, 50); /* now 150 allowed */
-    cancel_spend(60, 4, &prim);
+    cancel_working_on(4, &prim);
+    cancel_spend(60);
     assert_int_equal(cancel_check(&t), CANCEL_NONE);
-    cancel_spend(20, 5, &prim); /* 160 > 150 */
+    cancel_working_on(5, &prim);
+    cancel_spend(20); /* 160 > 150 */
     assert_int_equal(cancel_check(&t), CANCEL_BUDGET);
     assert_int_equal(atomic_load(&t.leaf), 5);
     assert_ptr_equal(atomic_load(&t.prim), &prim);
-    cancel_stop(CANCEL_RAY_LIMIT, 9, NULL); /* the first reason stays */
+    cancel_stop(CANCEL_RAY_LIMIT); /* the first reason stays */
     assert_int_equal(cancel_check(&t), CANCEL_BUDGET);
     cancel_leave(&s);
 }

@@ -53,6 +53,8 @@ cancel_reason cancel_check(cancel_token *token)
 void cancel_enter(cancel_scope *scope, cancel_token *token)
 {
     scope->token = token;
+    scope->leaf = 0;
+    scope->prim = NULL;
     scope->outer = current_scope;
     current_scope = scope;
 }
@@ -73,14 +75,23 @@ int cancel_active(void)
     return current_scope != NULL;
 }
 
-void cancel_stop(cancel_reason reason, uint32_t leaf, const void *prim)
+void cancel_working_on(uint32_t leaf, const void *prim)
+{
+    cancel_scope *s = current_scope;
+    if (s) {
+        s->leaf = leaf;
+        s->prim = prim;
+    }
+}
+
+void cancel_stop(cancel_reason reason)
 {
     cancel_scope *s = current_scope;
     if (s)
-        latch(s->token, reason, leaf, prim);
+        latch(s->token, reason, s->leaf, s->prim);
 }
 
-void cancel_spend(uint64_t n, uint32_t leaf, const void *prim)
+void cancel_spend(uint64_t n)
 {
     cancel_scope *s = current_scope;
     if (!s || !s->token->budget)
@@ -90,5 +101,5 @@ void cancel_spend(uint64_t n, uint32_t leaf, const void *prim)
     if (spent > s->token->budget &&
         spent - s->token->budget >
             atomic_load_explicit(&s->token->credit, memory_order_relaxed))
-        latch(s->token, CANCEL_BUDGET, leaf, prim);
+        latch(s->token, CANCEL_BUDGET, s->leaf, s->prim);
 }

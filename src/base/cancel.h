@@ -54,6 +54,8 @@ typedef struct cancel_token {
 
 typedef struct cancel_scope {
     cancel_token *token;
+    uint32_t leaf; /* what the thread works on (cancel_working_on) */
+    const void *prim;
     struct cancel_scope *outer; /* the thread's previous scope, restored on leave */
 } cancel_scope;
 
@@ -80,13 +82,17 @@ int cancel_poll(void);
 /* Whether the calling thread works for a token at all. */
 int cancel_active(void);
 
-/* Stops the current token (if any, and if it has not stopped yet) for
- * reason, naming the leaf and primitive whose work it was. */
-void cancel_stop(cancel_reason reason, uint32_t leaf, const void *prim);
+/* Names the leaf and primitive the calling thread works on now, for the
+ * stops and spending below. No-op without a current token. */
+void cancel_working_on(uint32_t leaf, const void *prim);
 
-/* Adds n evaluations spent on leaf (primitive prim) to the current token;
- * stops it with CANCEL_BUDGET when they pass its allowance and credit.
- * No-op without a current token. */
-void cancel_spend(uint64_t n, uint32_t leaf, const void *prim);
+/* Stops the current token (if any, and if it has not stopped yet) for
+ * reason, naming the leaf the thread works on. */
+void cancel_stop(cancel_reason reason);
+
+/* Adds n evaluations to the current token; stops it with CANCEL_BUDGET
+ * when they pass its allowance and credit. No-op without a current
+ * token. */
+void cancel_spend(uint64_t n);
 
 #endif

@@ -58,10 +58,11 @@ uint32_t prim_implicit_spans(const prim *p, uint32_t leaf, vec3 o, vec3 d, span 
     solve_options opt = {(solve_method)p->u.implicit.method, p->u.implicit.tolerance,
                          p->u.implicit.lipschitz};
     solve_result r;
+    cancel_working_on(leaf, p);
     solve_crossings(p->u.implicit.program, &opt, o, d, t0, t1, &r);
-    cancel_spend(r.evals, leaf, p);
+    cancel_spend(r.evals - r.charged);
     if (r.exhausted)
-        cancel_stop(CANCEL_RAY_LIMIT, leaf, p);
+        cancel_stop(CANCEL_RAY_LIMIT);
     uint32_t n = 0;
     int inside = r.inside_start;
     span_end start = {t0, leaf, (uint16_t)(PRIM_PART_CLIP_FACE + f0), 0};

@@ -35,10 +35,16 @@ static void record(solve_result *r, double t)
 }
 
 /* Whether the search must end now: every SOLVE_POLL_STEPS calls (counted
- * in *steps), whether the calling thread's cancel token has stopped. */
+ * in *steps), reports the evaluations made since the last time to the
+ * calling thread's cancel token (whose budget may stop it then) and asks
+ * whether it has stopped. */
 static int must_stop(uint32_t *steps, solve_result *r)
 {
-    if (++*steps % SOLVE_POLL_STEPS != 0 || !cancel_poll())
+    if (++*steps % SOLVE_POLL_STEPS != 0)
+        return 0;
+    cancel_spend(r->evals - r->charged);
+    r->charged = r->evals;
+    if (!cancel_poll())
         return 0;
     r->stopped = 1;
     return 1;

@@ -80,6 +80,7 @@ typedef struct solve_result {
     int stopped;      /* the calling thread's cancel token stopped the search
                          (base/cancel.h): the result is incomplete */
     uint64_t evals;   /* evaluations made, for benchmarks */
+    uint64_t charged; /* of them, reported to the cancel token so far */
 } solve_result;
 
 /* Finds the crossings of f along o + t d for t in [t0, t1] (finite,

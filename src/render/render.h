@@ -55,7 +55,7 @@ sc_status render_check_memory(const sc_render_options *options, sc_error *error)
 
 /* The least budget of a render: a small image may still meet a few hard
  * rays. */
-#define RENDER_MIN_IMPLICIT_EVALS (1u << 20)
+#define RENDER_MIN_IMPLICIT_EVALS (1u << 18)
 
 struct cancel_token;
 
