@@ -170,16 +170,19 @@ static sc_status convert(const char *path, const double *time, char **text, size
                          void (*depend)(void *user, const char *file), void *user,
                          const scad_stop *stop);
 
-sc_status scad_load_files(const char *path, const sc_load_options *options,
-                          sc_scene **scene, sc_error *error,
-                          void (*depend)(void *user, const char *file), void *user,
-                          const scad_stop *stop)
+/* The conversion at time (or none), then the load of its text under the
+ * name beside the source, with *stop->loading set meanwhile. */
+static sc_status convert_and_load(const char *path, const double *time,
+                                  const sc_load_options *options, sc_scene **scene,
+                                  sc_error *error,
+                                  void (*depend)(void *user, const char *file),
+                                  void *user, const scad_stop *stop)
 {
     *scene = NULL;
     char *text = NULL, name[PATH_MAX + 16];
     size_t size = 0;
     sc_status st =
-        convert(path, NULL, &text, &size, name, sizeof name, error, depend, user, stop);
+        convert(path, time, &text, &size, name, sizeof name, error, depend, user, stop);
     if (st == SC_OK) {
         if (stop && stop->loading)
             *stop->loading = 1;
@@ -189,6 +192,14 @@ sc_status scad_load_files(const char *path, const sc_load_options *options,
     }
     free(text);
     return st;
+}
+
+sc_status scad_load_files(const char *path, const sc_load_options *options,
+                          sc_scene **scene, sc_error *error,
+                          void (*depend)(void *user, const char *file), void *user,
+                          const scad_stop *stop)
+{
+    return convert_and_load(path, NULL, options, scene, error, depend, user, stop);
 }
 
 /* The conversion, with OpenSCAD's $t set to *time when time is not NULL
@@ -284,18 +295,5 @@ sc_status scad_convert(const char *path, char **text, size_t *size, char *name,
 sc_status scad_load_at(const char *path, const sc_load_options *options, double t,
                        sc_scene **scene, sc_error *error, const scad_stop *stop)
 {
-    *scene = NULL;
-    char *text = NULL, name[PATH_MAX + 16];
-    size_t size = 0;
-    sc_status st =
-        convert(path, &t, &text, &size, name, sizeof name, error, NULL, NULL, stop);
-    if (st == SC_OK) {
-        if (stop && stop->loading)
-            *stop->loading = 1;
-        st = sc_scene_load_string(name, text, size, options, scene, error);
-        if (stop && stop->loading)
-            *stop->loading = 0;
-    }
-    free(text);
-    return st;
+    return convert_and_load(path, &t, options, scene, error, NULL, NULL, stop);
 }

@@ -424,32 +424,18 @@ sc_status dist_run_here(const dist_work *job, sc_error *error)
 static sc_framebuffer *new_image(const sc_render_options *o, int width, int height,
                                  int streamed)
 {
-    sc_framebuffer *fb = calloc(1, sizeof *fb);
+    sc_framebuffer *fb = NULL;
+    if (!streamed) {
+        fb = render_framebuffer_new(o, width, height);
+    } else if ((fb = calloc(1, sizeof *fb))) {
+        fb->width = width;
+        fb->height = height;
+        fb->cancel = o->cancel;
+    }
     if (!fb)
         return NULL;
-    fb->width = width;
-    fb->height = height;
     fb->x0 = has_region(o) ? o->region[0] : 0;
     fb->y0 = has_region(o) ? o->region[1] : 0;
-    fb->cancel = o->cancel;
-    if (streamed)
-        return fb;
-    size_t pixels = (size_t)width * (size_t)height;
-    int ok = 1;
-    if (o->want_color)
-        ok &= (fb->color = malloc(pixels * 3 * sizeof(float))) != NULL;
-    if (o->want_depth)
-        ok &= (fb->depth = malloc(pixels * sizeof(float))) != NULL;
-    if (o->want_mask)
-        ok &= (fb->mask = malloc(pixels)) != NULL;
-    if (o->want_normal)
-        ok &= (fb->normal = malloc(pixels * 3 * sizeof(float))) != NULL;
-    if (o->want_id)
-        ok &= (fb->id = malloc(pixels * sizeof(int32_t))) != NULL;
-    if (!ok) {
-        sc_framebuffer_release(fb);
-        return NULL;
-    }
     return fb;
 }
 

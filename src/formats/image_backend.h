@@ -42,6 +42,10 @@ typedef struct imgio_image {
 int imgio_png_write(const imgio_image *img, const char *path, char *err, size_t err_size);
 int imgio_exr_write(const imgio_image *img, const char *path, char *err, size_t err_size);
 
+/* An OpenEXR exception's text into err (trailing newlines and blanks
+ * dropped; "unknown OpenEXR error" when none is left). */
+void imgio_exr_message(char *err, size_t err_size, const char *what);
+
 /* Tiled EXR, tile by tile (image_exr_tiled.cpp). open starts a file of
  * img's size, channels, sample type and metadata (img->pixels is not
  * read) in square tiles of side tile; write stores tile (tx, ty) from

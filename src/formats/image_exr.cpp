@@ -31,10 +31,7 @@
 #include <string>
 #include <vector>
 
-namespace
-{
-
-void message(char *err, size_t err_size, const char *what)
+extern "C" void imgio_exr_message(char *err, size_t err_size, const char *what)
 {
     std::string text = what;
     while (!text.empty() && (text.back() == '\n' || text.back() == ' '))
@@ -42,8 +39,6 @@ void message(char *err, size_t err_size, const char *what)
     std::snprintf(err, err_size, "%s",
                   text.empty() ? "unknown OpenEXR error" : text.c_str());
 }
-
-} // namespace
 
 extern "C" int imgio_exr_write(const imgio_image *img, const char *path, char *err,
                                size_t err_size)
@@ -88,9 +83,9 @@ extern "C" int imgio_exr_write(const imgio_image *img, const char *path, char *e
         file.writePixels(img->height);
         return 1;
     } catch (const std::bad_alloc &) {
-        message(err, err_size, "out of memory");
+        imgio_exr_message(err, err_size, "out of memory");
     } catch (const std::exception &e) {
-        message(err, err_size, e.what());
+        imgio_exr_message(err, err_size, e.what());
     }
     return 0;
 }
@@ -143,7 +138,7 @@ extern "C" int imgio_exr_read(const char *path, image_data *out, char *err,
         std::snprintf(err, err_size, "cannot read '%s': out of memory", path);
     } catch (const std::exception &e) {
         char why[400];
-        message(why, sizeof why, e.what());
+        imgio_exr_message(why, sizeof why, e.what());
         std::snprintf(err, err_size, "cannot read '%s': %s", path, why);
     }
     std::free(pixels);

@@ -38,20 +38,6 @@ struct imgio_exr_tiles {
     std::vector<Imath::half> halves; // one tile of 8-bit values as half
 };
 
-namespace
-{
-
-void message(char *err, size_t err_size, const char *what)
-{
-    std::string text = what;
-    while (!text.empty() && (text.back() == '\n' || text.back() == ' '))
-        text.pop_back();
-    std::snprintf(err, err_size, "%s",
-                  text.empty() ? "unknown OpenEXR error" : text.c_str());
-}
-
-} // namespace
-
 extern "C" imgio_exr_tiles *imgio_exr_tiles_open(const imgio_image *img, int tile,
                                                  const char *path, char *err,
                                                  size_t err_size)
@@ -83,9 +69,9 @@ extern "C" imgio_exr_tiles *imgio_exr_tiles_open(const imgio_image *img, int til
         t->file.reset(new Imf::TiledOutputFile(path, header));
         return t;
     } catch (const std::bad_alloc &) {
-        message(err, err_size, "out of memory");
+        imgio_exr_message(err, err_size, "out of memory");
     } catch (const std::exception &e) {
-        message(err, err_size, e.what());
+        imgio_exr_message(err, err_size, e.what());
     }
     delete t;
     return nullptr;
@@ -123,9 +109,9 @@ extern "C" int imgio_exr_tiles_write(imgio_exr_tiles *t, int tx, int ty,
         t->file->writeTile(tx, ty);
         return 1;
     } catch (const std::bad_alloc &) {
-        message(err, err_size, "out of memory");
+        imgio_exr_message(err, err_size, "out of memory");
     } catch (const std::exception &e) {
-        message(err, err_size, e.what());
+        imgio_exr_message(err, err_size, e.what());
     }
     return 0;
 }
@@ -138,10 +124,10 @@ extern "C" int imgio_exr_tiles_close(imgio_exr_tiles *t, char *err, size_t err_s
     try {
         t->file.reset(); // writes the tile offsets and closes the file
     } catch (const std::bad_alloc &) {
-        message(err, err_size, "out of memory");
+        imgio_exr_message(err, err_size, "out of memory");
         ok = 0;
     } catch (const std::exception &e) {
-        message(err, err_size, e.what());
+        imgio_exr_message(err, err_size, e.what());
         ok = 0;
     }
     delete t;

@@ -361,9 +361,7 @@ void sc_framebuffer_release(sc_framebuffer *fb)
     free(fb);
 }
 
-/* Allocates the buffers options ask for, width x height; NULL when out of
- * memory. */
-static sc_framebuffer *framebuffer_new(const sc_render_options *o, int width, int height)
+sc_framebuffer *render_framebuffer_new(const sc_render_options *o, int width, int height)
 {
     sc_framebuffer *fb = calloc(1, sizeof *fb);
     if (!fb)
@@ -610,7 +608,7 @@ sc_status render_scene(const csg_tree *tree, const shading *look,
         width = options->region[2] - c.x0;
         height = options->region[3] - c.y0;
     }
-    c.fb = framebuffer_new(options, width, height);
+    c.fb = render_framebuffer_new(options, width, height);
     if (!c.fb) {
         release_views(&c);
         return err_set(error, SC_ERR_NOMEM, NULL, "out of memory for a %dx%d image",

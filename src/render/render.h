@@ -31,6 +31,11 @@
  * gives (its size field the library's own sizeof). */
 void render_options_defaults(sc_render_options *options);
 
+/* A framebuffer of width x height with the buffers options ask for (its
+ * origin at 0, 0; the caller sets x0, y0 for a crop); NULL when out of
+ * memory. Release with sc_framebuffer_release. */
+sc_framebuffer *render_framebuffer_new(const sc_render_options *o, int width, int height);
+
 /* Renders tree as options ask (options NULL: the defaults). On success
  * *framebuffer belongs to the caller (sc_framebuffer_release); on failure it
  * is NULL and error is filled. */
