@@ -99,9 +99,7 @@ check
 if command -v mpirun >/dev/null && [ -x "$(dirname "$bin")/spancast-mpi" ]; then
     check
     rm -f lib/*.png
-    LSAN_OPTIONS="suppressions=$src/tests/mpi.lsan-suppressions${LSAN_OPTIONS:+:$LSAN_OPTIONS}" \
-        OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 \
-        mpirun --oversubscribe -np 3 "$bin" batch lib/jobs.txt --json >mpi.json 2>err.txt
+    mpirun_test -np 3 "$bin" batch lib/jobs.txt --json >mpi.json 2>err.txt
     python3 - mpi.json batch.json <<'PY' || fail "mpi.json: $(cat mpi.json) $(cat err.txt)"
 import json, sys
 a, b = (json.load(open(p)) for p in sys.argv[1:])

@@ -125,8 +125,7 @@ if [ -x "$(dirname "$bin")/spancast-mpi" ]; then
     [ -x "$libdir/spancast/spancast-mpi" ] || fail "not installed: $libdir/spancast/spancast-mpi"
     if command -v mpirun >/dev/null; then
         check
-        OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 \
-            mpirun --oversubscribe -np 2 "$prefix/bin/spancast" render drilled.csg \
+        mpirun_test -np 2 "$prefix/bin/spancast" render drilled.csg \
             -o drilled-mpi.png --imgsize=64,48 -q >mpi.out 2>&1 ||
             fail "installed spancast under mpirun: $(tail -n 3 mpi.out)"
         [ -s drilled-mpi.png ] || fail "installed spancast under mpirun wrote no PNG"
