@@ -72,7 +72,7 @@ enum { C_A, C_B, C_ONLY_A, C_ONLY_B, C_MEAN, C_VALUES };
 
 typedef struct compare_shared {
     const csg_tree *a, *b;
-    arena *scratch; /* per thread */
+    lines_scratch work; /* per thread: the span lists */
 } compare_shared;
 
 static double length_of(span_list s)
@@ -90,7 +90,7 @@ static int sample_compare(void *context, int thread, double u, double v, double 
     const compare_shared *s = m->shared;
     int a = m->axis;
     csg_ray r = lines_axis_ray(a, 0, u, v);
-    arena *scratch = &s->scratch[thread];
+    arena *scratch = &s->work.arenas[thread];
     arena_reset(scratch);
     span_list sa = {NULL, 0}, sb = {NULL, 0};
     if ((s->a->root != CSG_EMPTY && !csg_spans(s->a, &r, scratch, &sa)) ||
@@ -143,11 +143,9 @@ static sc_status compare_scenes(const sc_scene *a, const sc_scene *b,
             return SC_OK;
     }
     int threads = options->threads > 0 ? options->threads : omp_get_max_threads();
-    compare_shared shared = {ta, tb, calloc((size_t)threads, sizeof(arena))};
-    if (!shared.scratch)
+    compare_shared shared = {ta, tb, {0}};
+    if (!lines_scratch_init(&shared.work, threads, 0))
         return err_nomem(error, NULL);
-    for (int k = 0; k < threads; k++)
-        arena_init(&shared.scratch[k], 16 * 1024);
     lines_axis axes[3];
     void *contexts[3];
     lines_axes(axes, &shared, contexts);
@@ -187,9 +185,7 @@ static sc_status compare_scenes(const sc_scene *a, const sc_scene *b,
     }
     for (int g = 0; g < 3; g++)
         quad_free(&grids[g]);
-    for (int k = 0; k < threads; k++)
-        arena_free(&shared.scratch[k]);
-    free(shared.scratch);
+    lines_scratch_free(&shared.work);
     if (st == SC_ERR_CANCELLED)
         return err_set(error, SC_ERR_CANCELLED, NULL, "comparison cancelled");
     if (limited)

@@ -2,6 +2,7 @@
 #include "api/lines.h"
 
 #include <math.h>
+#include <stdlib.h>
 
 #include "api/quad.h"
 
@@ -38,4 +39,45 @@ void lines_axes(lines_axis axes[3], void *shared, void *contexts[3])
         axes[a].axis = a;
         contexts[a] = &axes[a];
     }
+}
+
+int lines_scratch_init(lines_scratch *s, int threads, int with_box)
+{
+    s->threads = threads;
+    s->arenas = calloc((size_t)threads, sizeof *s->arenas);
+    s->box = with_box ? malloc((size_t)threads * sizeof *s->box) : NULL;
+    if (!s->arenas || (with_box && !s->box)) {
+        free(s->arenas);
+        free(s->box);
+        return 0;
+    }
+    for (int k = 0; k < threads; k++) {
+        arena_init(&s->arenas[k], 16 * 1024);
+        for (int i = 0; with_box && i < 3; i++) {
+            s->box[k][i] = INFINITY;
+            s->box[k][3 + i] = -INFINITY;
+        }
+    }
+    return 1;
+}
+
+void lines_scratch_free(lines_scratch *s)
+{
+    for (int k = 0; k < s->threads; k++)
+        arena_free(&s->arenas[k]);
+    free(s->arenas);
+    free(s->box);
+}
+
+void lines_scratch_box(const lines_scratch *s, double seen[6])
+{
+    for (int i = 0; i < 3; i++) {
+        seen[i] = INFINITY;
+        seen[3 + i] = -INFINITY;
+    }
+    for (int k = 0; k < s->threads; k++)
+        for (int i = 0; i < 3; i++) {
+            seen[i] = fmin(seen[i], s->box[k][i]);
+            seen[3 + i] = fmax(seen[3 + i], s->box[k][3 + i]);
+        }
 }

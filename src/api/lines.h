@@ -7,6 +7,7 @@
 
 #include <stdint.h>
 
+#include "base/arena.h"
 #include "csg/csg.h"
 #include "csg/span.h"
 
@@ -25,6 +26,26 @@ typedef struct lines_axis {
 /* Points axes[a] at shared with axis a, and contexts[a] at axes[a]: the
  * three contexts quad_integrate3 hands the sampler. */
 void lines_axes(lines_axis axes[3], void *shared, void *contexts[3]);
+
+/* What each thread of a line integration owns, indexed by thread: a
+ * scratch arena for its span lists and, when asked for, the box of the
+ * span ends it has seen (lo xyz, hi xyz; empty at first). */
+typedef struct lines_scratch {
+    arena *arenas;
+    double (*box)[6]; /* NULL unless asked for */
+    int threads;
+} lines_scratch;
+
+/* Sets up s for threads threads, with boxes when with_box is set. Returns
+ * 0 when memory ran out (s then holds nothing to free). */
+int lines_scratch_init(lines_scratch *s, int threads, int with_box);
+
+/* Frees what lines_scratch_init made. */
+void lines_scratch_free(lines_scratch *s);
+
+/* The union of the threads' boxes into seen (lo xyz, hi xyz); empty
+ * (lo > hi) when no thread saw a span end. */
+void lines_scratch_box(const lines_scratch *s, double seen[6]);
 
 /* h mixed with the surfaces of the list's ends, in order. */
 uint64_t lines_signature(uint64_t h, span_list s);

@@ -91,8 +91,7 @@ enum {
 typedef struct measure_shared {
     const csg_tree *tree;
     double centre[3];
-    arena *scratch;   /* one per thread */
-    double (*box)[6]; /* per thread: lo xyz, hi xyz of the span ends seen */
+    lines_scratch work; /* per thread: spans, and the box of their ends */
 } measure_shared;
 
 static int sample_line(void *context, int thread, double u, double v, double *values,
@@ -103,14 +102,14 @@ static int sample_line(void *context, int thread, double u, double v, double *va
     int a = m->axis, ua = (a + 1) % 3, va = (a + 2) % 3;
     double du = u - s->centre[ua], dv = v - s->centre[va];
     csg_ray r = lines_axis_ray(a, s->centre[a], u, v);
-    arena *scratch = &s->scratch[thread];
+    arena *scratch = &s->work.arenas[thread];
     arena_reset(scratch);
     span_list spans;
     if (!csg_spans(s->tree, &r, scratch, &spans))
         return 0;
     *signature = lines_signature(0, spans);
     double length = 0, s1 = 0, s2 = 0, area = 0, area2 = 0;
-    double *box = s->box[thread];
+    double *box = s->work.box[thread];
     for (uint32_t k = 0; k < spans.n; k++) {
         const span_end *ends[2] = {&spans.v[k].in, &spans.v[k].out};
         for (int e = 0; e < 2; e++) {
@@ -331,20 +330,8 @@ static sc_status measure_scene(const sc_scene *scene, const sc_measure_options *
     for (int i = 0; i < 3; i++)
         shared.centre[i] = (lo[i] + hi[i]) / 2;
     int threads = out->threads;
-    shared.scratch = calloc((size_t)threads, sizeof *shared.scratch);
-    shared.box = malloc((size_t)threads * sizeof *shared.box);
-    if (!shared.scratch || !shared.box) {
-        free(shared.scratch);
-        free(shared.box);
+    if (!lines_scratch_init(&shared.work, threads, 1))
         return err_nomem(error, NULL);
-    }
-    for (int k = 0; k < threads; k++) {
-        arena_init(&shared.scratch[k], 16 * 1024);
-        for (int i = 0; i < 3; i++) {
-            shared.box[k][i] = INFINITY;
-            shared.box[k][3 + i] = -INFINITY;
-        }
-    }
     lines_axis axes[3];
     void *contexts[3];
     lines_axes(axes, &shared, contexts);
@@ -365,12 +352,8 @@ static sc_status measure_scene(const sc_scene *scene, const sc_measure_options *
         derive(grids, &shared, options->density, out);
         out->converged = converged;
         out->lines = grids[0].lines + grids[1].lines + grids[2].lines;
-        double seen[6] = {INFINITY, INFINITY, INFINITY, -INFINITY, -INFINITY, -INFINITY};
-        for (int k = 0; k < threads; k++)
-            for (int i = 0; i < 3; i++) {
-                seen[i] = fmin(seen[i], shared.box[k][i]);
-                seen[3 + i] = fmax(seen[3 + i], shared.box[k][3 + i]);
-            }
+        double seen[6];
+        lines_scratch_box(&shared.work, seen);
         for (int i = 0; i < 3; i++) {
             if (!(seen[i] <= seen[3 + i])) /* nothing seen: the tree's box */
                 seen[i] = lo[i], seen[3 + i] = hi[i];
@@ -390,10 +373,7 @@ static sc_status measure_scene(const sc_scene *scene, const sc_measure_options *
                            limited->limit_prim, error);
     for (int a = 0; a < 3; a++)
         quad_free(&grids[a]);
-    for (int k = 0; k < threads; k++)
-        arena_free(&shared.scratch[k]);
-    free(shared.scratch);
-    free(shared.box);
+    lines_scratch_free(&shared.work);
     if (st == SC_ERR_CANCELLED)
         return err_set(error, SC_ERR_CANCELLED, NULL, "measure cancelled");
     if (st == SC_ERR_LIMIT && limited)

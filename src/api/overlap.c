@@ -214,8 +214,7 @@ const char *sc_objects_name(const sc_objects *objects, size_t index)
 
 typedef struct pair_shared {
     const csg_tree *a, *b;
-    arena *scratch;   /* per thread */
-    double (*box)[6]; /* per thread: the ends of the common spans */
+    lines_scratch work; /* per thread: spans, and the box of the common ones */
 } pair_shared;
 
 static int sample_pair(void *context, int thread, double u, double v, double *values,
@@ -225,7 +224,7 @@ static int sample_pair(void *context, int thread, double u, double v, double *va
     const pair_shared *s = m->shared;
     int a = m->axis;
     csg_ray r = lines_axis_ray(a, 0, u, v);
-    arena *scratch = &s->scratch[thread];
+    arena *scratch = &s->work.arenas[thread];
     arena_reset(scratch);
     span_list sa, sb;
     if (!csg_spans(s->a, &r, scratch, &sa) || !csg_spans(s->b, &r, scratch, &sb))
@@ -237,7 +236,7 @@ static int sample_pair(void *context, int thread, double u, double v, double *va
         return 0;
     *signature = lines_signature(0, both);
     double length = 0;
-    double *box = s->box[thread];
+    double *box = s->work.box[thread];
     for (uint32_t k = 0; k < both.n; k++) {
         double t0 = both.v[k].in.t, t1 = both.v[k].out.t;
         if (!isfinite(t0) || !isfinite(t1))
@@ -262,21 +261,9 @@ static sc_status overlap_pair(const csg_tree *ta, const csg_tree *tb, const doub
                               const double hi[3], const sc_measure_options *options,
                               int threads, sc_overlap *out, int *found)
 {
-    pair_shared shared = {ta, tb, NULL, NULL};
-    shared.scratch = calloc((size_t)threads, sizeof *shared.scratch);
-    shared.box = malloc((size_t)threads * sizeof *shared.box);
-    if (!shared.scratch || !shared.box) {
-        free(shared.scratch);
-        free(shared.box);
+    pair_shared shared = {ta, tb, {0}};
+    if (!lines_scratch_init(&shared.work, threads, 1))
         return SC_ERR_NOMEM;
-    }
-    for (int k = 0; k < threads; k++) {
-        arena_init(&shared.scratch[k], 16 * 1024);
-        for (int i = 0; i < 3; i++) {
-            shared.box[k][i] = INFINITY;
-            shared.box[k][3 + i] = -INFINITY;
-        }
-    }
     lines_axis axes[3];
     void *contexts[3];
     lines_axes(axes, &shared, contexts);
@@ -292,12 +279,8 @@ static sc_status overlap_pair(const csg_tree *ta, const csg_tree *tb, const doub
     *found = 0;
     if (st == SC_OK) {
         out->volume = quad_combine(grids, 0);
-        double seen[6] = {INFINITY, INFINITY, INFINITY, -INFINITY, -INFINITY, -INFINITY};
-        for (int k = 0; k < threads; k++)
-            for (int i = 0; i < 3; i++) {
-                seen[i] = fmin(seen[i], shared.box[k][i]);
-                seen[3 + i] = fmax(seen[3 + i], shared.box[k][3 + i]);
-            }
+        double seen[6];
+        lines_scratch_box(&shared.work, seen);
         *found = out->volume.value > 0 && seen[0] <= seen[3];
         for (int i = 0; i < 3; i++) {
             out->box_lo[i] = *found ? seen[i] : 0;
@@ -308,10 +291,7 @@ static sc_status overlap_pair(const csg_tree *ta, const csg_tree *tb, const doub
         st = SC_ERR_NOMEM; /* bounded trees: the sampler fails only for memory */
     for (int a = 0; a < 3; a++)
         quad_free(&grids[a]);
-    for (int k = 0; k < threads; k++)
-        arena_free(&shared.scratch[k]);
-    free(shared.scratch);
-    free(shared.box);
+    lines_scratch_free(&shared.work);
     return st;
 }
 
