@@ -733,6 +733,126 @@ static void test_preview_crop_and_threads(void **state)
     csg_tree_free(tree);
 }
 
+/* Through the public API: a model with a light, a mirror and a lens
+ * (shadow, reflection, ambient occlusion and lens rays draw on every
+ * sample's random stream), rendered at 16 samples in one call and in
+ * passes of 1, 3 and 12 samples summed into one buffer: the last pass's
+ * colours are the single render's, bit for bit, also for a crop and over
+ * threads. Passes without the buffer give each pass's own mean; samples
+ * outside spp are an error. */
+static void test_sample_passes(void **state)
+{
+    (void)state;
+    static const char model[] =
+        "light(position = [30, -40, 60], radius = 2);\n"
+        "difference() {\n"
+        "  material(reflect = 0.4) { sphere(r = 10, $fn = 0, $fa = 12, $fs = 2); }\n"
+        "  cube(size = [12, 12, 12]);\n"
+        "}\n"
+        "cylinder(h = 2, r1 = 20, r2 = 20, center = true, $fn = 0, $fa = 12, $fs = 2);\n";
+    sc_scene *scene = NULL;
+    sc_error e;
+    if (sc_scene_load_string("passes.csg", model, strlen(model), NULL, &scene, &e) !=
+        SC_OK)
+        fail_msg("%s:%d:%d: %s", e.file, e.line, e.column, e.message);
+    sc_render_options o;
+    sc_render_options_init(&o);
+    o.width = 61;
+    o.height = 47;
+    o.spp = 16;
+    o.ao_samples = 2;
+    o.aperture = 0.5;
+    o.view = SC_VIEW_EDGES;
+    o.threads = 2;
+    sc_framebuffer *whole = NULL;
+    assert_int_equal(sc_render(scene, &o, &whole, &e), SC_OK);
+    size_t n = (size_t)o.width * o.height * 3;
+
+    double *sum = calloc(n, sizeof *sum);
+    assert_non_null(sum);
+    const int passes[3][2] = {{0, 1}, {1, 3}, {4, 12}}; /* start, count */
+    sc_framebuffer *pass = NULL;
+    for (int k = 0; k < 3; k++) {
+        sc_render_options p = o;
+        p.threads = k + 1;
+        p.sample_start = passes[k][0];
+        p.sample_count = passes[k][1];
+        p.sample_sum = sum;
+        sc_framebuffer_release(pass);
+        pass = NULL;
+        assert_int_equal(sc_render(scene, &p, &pass, &e), SC_OK);
+    }
+    assert_memory_equal(sc_framebuffer_color(pass), sc_framebuffer_color(whole),
+                        n * sizeof(float));
+    /* The first pass alone is no approximation of all 16. */
+    sc_render_options first = o;
+    first.sample_count = 1;
+    sc_framebuffer *one = NULL;
+    assert_int_equal(sc_render(scene, &first, &one, &e), SC_OK);
+    assert_true(memcmp(sc_framebuffer_color(one), sc_framebuffer_color(whole),
+                       n * sizeof(float)) != 0);
+
+    /* Without the buffer each pass holds its own mean: weighted by its
+     * sample count they add up to the whole (to float rounding). */
+    sc_render_options rest = o;
+    rest.sample_start = 1;
+    rest.sample_count = 0; /* up to spp */
+    sc_framebuffer *fifteen = NULL;
+    assert_int_equal(sc_render(scene, &rest, &fifteen, &e), SC_OK);
+    const float *a = sc_framebuffer_color(one), *b = sc_framebuffer_color(fifteen);
+    const float *w = sc_framebuffer_color(whole);
+    for (size_t k = 0; k < n; k++)
+        assert_true(fabs((a[k] + 15.0 * b[k]) / 16 - w[k]) < 1e-5);
+
+    /* A crop in two passes is the whole image's crop. */
+    sc_render_options crop = o;
+    crop.region[0] = 9;
+    crop.region[1] = 5;
+    crop.region[2] = 40;
+    crop.region[3] = 33;
+    double *crop_sum = calloc((size_t)31 * 28 * 3, sizeof *crop_sum);
+    assert_non_null(crop_sum);
+    crop.sample_sum = crop_sum;
+    crop.sample_count = 5;
+    sc_framebuffer *part = NULL;
+    assert_int_equal(sc_render(scene, &crop, &part, &e), SC_OK);
+    sc_framebuffer_release(part);
+    crop.sample_start = 5;
+    crop.sample_count = 11;
+    assert_int_equal(sc_render(scene, &crop, &part, &e), SC_OK);
+    for (int j = 0; j < 28; j++)
+        assert_memory_equal(sc_framebuffer_color(part) + (size_t)j * 31 * 3,
+                            w + ((size_t)(j + 5) * o.width + 9) * 3,
+                            31 * 3 * sizeof(float));
+
+    /* Samples outside spp. */
+    const int bad[3][2] = {{16, 0}, {-1, 2}, {10, 7}};
+    for (int k = 0; k < 3; k++) {
+        sc_render_options p = o;
+        p.sample_start = bad[k][0];
+        p.sample_count = bad[k][1];
+        sc_framebuffer *none = NULL;
+        assert_int_equal(sc_render(scene, &p, &none, &e), SC_ERR_ARGUMENT);
+        assert_null(none);
+    }
+    sc_render_options p = o;
+    p.sample_start = 10;
+    p.sample_count = 7;
+    sc_framebuffer *none = NULL;
+    sc_render(scene, &p, &none, &e);
+    assert_string_equal(e.message,
+                        "sample start 10 and count 7 do not fit 16 samples per pixel");
+
+    sc_framebuffer_release(part);
+    sc_framebuffer_release(fifteen);
+    sc_framebuffer_release(one);
+    sc_framebuffer_release(pass);
+    sc_framebuffer_release(whole);
+    free(crop_sum);
+    free(sum);
+    sc_scene_release(scene);
+}
+
 /* A sheet of three views is a 2 x 2 grid of tiles of the options' size;
  * each view's tile shows the model, the empty fourth cell none of it. */
 static void test_sheet_grid(void **state)
@@ -822,6 +942,7 @@ int main(void)
         cmocka_unit_test(test_hole_edge_ellipse),
         cmocka_unit_test(test_section_cap_area),
         cmocka_unit_test(test_preview_crop_and_threads),
+        cmocka_unit_test(test_sample_passes),
         cmocka_unit_test(test_sheet_grid),
         cmocka_unit_test(test_axes_occluded),
     };

@@ -370,6 +370,26 @@ typedef struct sc_render_options {
     double shutter[2]; /* open, close in [0, 1]: motion() nodes are at their from
                           at 0 and their to at 1, and each sample's rays take a
                           time in [open, close]; both 0 (default): closed at 0 */
+
+    /* Rendering the spp samples of each pixel in passes (a viewer refining a
+     * still view): a call renders samples sample_start to sample_start +
+     * sample_count - 1 of the spp laid out for the whole image (the same
+     * strata, jitter and random streams as one render of spp samples).
+     * sample_start is 0 by default, sample_count 0 (default) means up to spp;
+     * start + count must not pass spp. sample_sum, when not NULL, holds 3
+     * doubles (linear r, g, b) per pixel of the framebuffer (the region's
+     * size when there is one, row 0 at the top), owned by the caller: each
+     * sample's colour is added to it in sample order, and the colour buffer
+     * gets the mean of all samples summed so far, sample_sum / (sample_start
+     * + count). Zeroed before the first pass and handed to every pass, it
+     * makes the pass that ends at spp write the very colours of one render of
+     * spp samples, bit for bit. Without it the colour buffer holds the mean
+     * of this call's samples. After SC_ERR_CANCELLED its content is
+     * unspecified (some pixels hold more samples than others): start again
+     * from zero. */
+    int sample_start;
+    int sample_count;
+    double *sample_sum;
 } sc_render_options;
 
 /* Sets size and the defaults written beside each field. Never fails. */

@@ -115,6 +115,10 @@ typedef struct render_ctx {
     int view_count;
     int tile_w, tile_h, cols; /* a view's size; views per row */
     int spp, grid_width;
+    /* The samples this call renders, of spp, and the caller's running sums
+     * (sc_render_options.sample_sum) or NULL. */
+    int sample_start, sample_end;
+    double *sample_sum;
     int x0, y0;           /* the crop's corner in the full image */
     int edges;            /* draw edge lines */
     double edge_half;     /* neighbour offset in pixels: half the line width */
@@ -292,9 +296,13 @@ static void render_pixel(const render_ctx *c, render_thread *th, int i, int j)
         arena_reset(&th->scratch);
         return;
     }
+    /* Summed in sample order from the caller's running sum, so that passes
+     * ending at spp add exactly what one render of spp samples adds. */
     double sum[3] = {0, 0, 0};
-    for (int s = 0; s < c->spp; s++) {
-        if (s > 0 && cancel_check(c->cancel))
+    if (c->sample_sum)
+        memcpy(sum, c->sample_sum + 3 * p, sizeof sum);
+    for (int s = c->sample_start; s < c->sample_end; s++) {
+        if (s > c->sample_start && cancel_check(c->cancel))
             break; /* the image is abandoned */
         st.rng = sample_rng_for((uint32_t)x, (uint32_t)y, (uint32_t)s);
         st.px.s = s;
@@ -329,8 +337,11 @@ static void render_pixel(const render_ctx *c, render_thread *th, int i, int j)
         th->camera_rays += st.count.edge_rays;
         arena_reset(&th->scratch);
     }
+    if (c->sample_sum)
+        memcpy(c->sample_sum + 3 * p, sum, sizeof sum);
+    int summed = c->sample_sum ? c->sample_end : c->sample_end - c->sample_start;
     for (int k = 0; k < 3; k++)
-        fb->color[3 * p + k] = (float)(sum[k] / c->spp);
+        fb->color[3 * p + k] = (float)(sum[k] / summed);
 }
 
 static void render_tile(const render_ctx *c, render_thread *th, int tile, int tiles_x)
@@ -421,6 +432,11 @@ static sc_status check_options(const sc_render_options *o, sc_error *error)
         return err_set(error, SC_ERR_ARGUMENT, NULL,
                        "samples per pixel must be 1 to %d (got %d)", RENDER_MAX_SPP,
                        o->spp);
+    if (o->sample_start < 0 || o->sample_start >= o->spp || o->sample_count < 0 ||
+        o->sample_count > o->spp - o->sample_start)
+        return err_set(error, SC_ERR_ARGUMENT, NULL,
+                       "sample start %d and count %d do not fit %d samples per pixel",
+                       o->sample_start, o->sample_count, o->spp);
     if (o->max_depth < 0 || o->max_depth > SHADE_MAX_DEPTH)
         return err_set(error, SC_ERR_ARGUMENT, NULL,
                        "maximum depth must be 0 to %d (got %d)", SHADE_MAX_DEPTH,
@@ -572,6 +588,11 @@ sc_status render_scene(const csg_tree *tree, const shading *look,
     c.tree = tree;
     c.spp = options->spp;
     c.grid_width = sample_grid_width(options->spp);
+    c.sample_start = options->sample_start;
+    c.sample_end = options->sample_count > 0
+                       ? options->sample_start + options->sample_count
+                       : options->spp;
+    c.sample_sum = options->sample_sum;
     c.shutter[0] = options->shutter[0];
     c.shutter[1] = options->shutter[1];
     c.tile_w = options->width;
