@@ -18,9 +18,10 @@
  * frames so that one takes at most FRAME_BUDGET_MS; it is stretched to the
  * window. When the view holds still (no button held, or no motion for
  * STILL_SECONDS) the frame is refined: full size with 1 sample per pixel,
- * then 4, 16, ... up to the target (--spp, keys + and -). A refinement in
- * flight is abandoned (sc_render's cancel flag) as soon as the view
- * changes.
+ * then 4, 16, ... up to the target (--spp, keys + and -), each pass adding
+ * its samples to the ones before (view_worker.c), so that the last pass
+ * shows `spancast render --spp=N`'s image. A refinement in flight is
+ * abandoned (sc_render's cancel flag) as soon as the view changes.
  *
  * Keys follow OpenSCAD's View menu where it has them; see usage_text.
  * The preview options of `render` (colour scheme, lighting, preview
@@ -40,8 +41,11 @@
  * Status: the title holds the model, the state, the load time, the last
  * frame's time, size and rays per second, and the view as `render`
  * options. Ctrl+S writes a screenshot: a render at the window's size and
- * the target samples, written by the library's writer, so the file is the
- * one `spancast render` writes with the options printed beside it.
+ * the target samples (the refined image itself once refining is done, else
+ * the refinement carried on to the end), written by the library's writer,
+ * so the file is the one `spancast render` writes with the options printed
+ * beside it. With --max-time a screenshot that takes longer is given up,
+ * as `render --max-time` gives up, and nothing is written.
  * A click (no drag) picks: the ray of that pixel (sc_scene_pixel_ray) and
  * its spans (sc_scene_spans) go to stdout, the first hit to the title.
  *
@@ -76,7 +80,7 @@ enum { EXIT_FAILED = 1 };
 
 static const char usage_text[] =
     "usage: spancast view MODEL [--imgsize=W,H] [--spp=N] [--threads=N] [--faithful]\n"
-    "                           [--verbose] [preview options]\n"
+    "                           [--max-time=S] [--verbose] [preview options]\n"
     "\n"
     "Opens a window on MODEL (.csg, or .scad through OpenSCAD) and renders it\n"
     "again whenever the file, or a file a .scad model uses, changes.\n"
@@ -85,6 +89,7 @@ static const char usage_text[] =
     "  --spp=N         samples per pixel when the view is still (default 4)\n"
     "  --threads=N     render threads (default 0: all cores)\n"
     "  --faithful      spheres and cylinders as OpenSCAD's polyhedra\n"
+    "  --max-time=S    give up a screenshot that takes longer than S seconds\n"
     "  --verbose       print every frame's size and time on stdout\n"
     "\n"
     "preview options, as for 'spancast render' (see spancast --help):\n"
@@ -117,7 +122,8 @@ typedef struct viewer {
     /* the command line */
     const char *path;
     int faithful, verbose, threads;
-    int spp; /* target samples per pixel when still */
+    int spp;         /* target samples per pixel when still */
+    double max_time; /* --max-time: a screenshot's limit in seconds; 0: none */
     /* the window */
     SDL_Window *window;
     SDL_Renderer *renderer;
@@ -163,6 +169,7 @@ typedef struct viewer {
     char note[SC_ERROR_MESSAGE_MAX + SC_ERROR_FILE_MAX + PATH_MAX + 64]; /* passing */
     /* screenshots */
     int shot_busy, shot_requested, shot_number;
+    double shot_asked; /* when the screenshot in flight was asked for */
     char shot_path[PATH_MAX];
     char shot_command[4 * PATH_MAX + 2200];
 } viewer;
@@ -226,6 +233,7 @@ static int parse_args(viewer *v, int argc, char **argv)
         }
         int takes = (len == 9 && !strncmp(arg, "--imgsize", len)) ||
                     (len == 5 && !strncmp(arg, "--spp", len)) ||
+                    (len == 10 && !strncmp(arg, "--max-time", len)) ||
                     (len == 9 && !strncmp(arg, "--threads", len));
         if (!takes)
             return cli_usage_error("unknown option '%s' for 'view'", arg);
@@ -237,6 +245,12 @@ static int parse_args(viewer *v, int argc, char **argv)
             if (!cli_parse_int(value, 1, MAX_SPP, &n))
                 return cli_usage_error("--spp expects an integer from 1 to 1024");
             v->spp = (int)n;
+        } else if (!strncmp(arg, "--max-time", len)) {
+            double seconds;
+            if (!cli_parse_number(value, &seconds) || !(seconds > 0 && seconds <= 1e7))
+                return cli_usage_error(
+                    "--max-time expects seconds above 0 (at most 1e7)");
+            v->max_time = seconds;
         } else if (!strncmp(arg, "--threads", len)) {
             if (!cli_parse_int(value, 0, 4096, &n))
                 return cli_usage_error("--threads expects a non-negative integer");
@@ -399,7 +413,9 @@ static const char *view_format(const viewer *v, char *buf, size_t size)
     return buf;
 }
 
-static void submit(viewer *v, view_job_kind kind, int w, int h, int spp)
+/* Queues a job of the current view: spp samples per pixel, of which the
+ * frame holds samples when done (a refinement or a screenshot). */
+static void submit(viewer *v, view_job_kind kind, int w, int h, int spp, int samples)
 {
     view_job job;
     memset(&job, 0, sizeof job);
@@ -407,6 +423,7 @@ static void submit(viewer *v, view_job_kind kind, int w, int h, int spp)
     job.view = v->view;
     job.model = v->model;
     job.options = view_options(v, w, h, spp);
+    job.samples = samples;
     if (kind == VIEW_JOB_SHOT)
         snprintf(job.path, sizeof job.path, "%s", v->shot_path);
     view_worker_submit(v->worker, &job);
@@ -426,21 +443,22 @@ static void schedule(viewer *v)
         return;
     if (v->shot_requested) {
         v->shot_requested = 0;
-        submit(v, VIEW_JOB_SHOT, v->width, v->height, v->spp);
+        submit(v, VIEW_JOB_SHOT, v->width, v->height, v->spp, v->spp);
         return;
     }
     if (v->shown_view != v->view) {
         double s = coarse_scales[v->coarse_step];
         int w = (int)lrint(v->width / s), h = (int)lrint(v->height / s);
-        submit(v, VIEW_JOB_COARSE, w > 0 ? w : 1, h > 0 ? h : 1, 1);
+        submit(v, VIEW_JOB_COARSE, w > 0 ? w : 1, h > 0 ? h : 1, 1, 1);
         return;
     }
     if (v->shown_full && v->shown_spp >= v->spp)
         return; /* done */
     if (v->buttons && seconds_now() - v->last_motion < STILL_SECONDS)
         return; /* still dragging */
-    int spp = !v->shown_full ? 1 : v->shown_spp * 4;
-    submit(v, VIEW_JOB_REFINE, v->width, v->height, spp < v->spp ? spp : v->spp);
+    int samples = !v->shown_full ? 1 : v->shown_spp * 4;
+    submit(v, VIEW_JOB_REFINE, v->width, v->height, v->spp,
+           samples < v->spp ? samples : v->spp);
 }
 
 /* Moves the coarse step after a coarse frame of w x h took ms. */
@@ -466,8 +484,14 @@ static void adapt_coarse(viewer *v, int w, int h, double ms)
 static void show_frame(viewer *v, view_frame *f)
 {
     if (f->status != SC_OK) {
-        char text[SC_ERROR_MESSAGE_MAX + SC_ERROR_FILE_MAX + 64];
-        format_error(&f->error, text, sizeof text);
+        char text[SC_ERROR_MESSAGE_MAX + SC_ERROR_FILE_MAX + PATH_MAX + 64];
+        if (f->status == SC_ERR_CANCELLED) /* a screenshot at its limit */
+            snprintf(text, sizeof text,
+                     "spancast: error: time limit of %g s exceeded (--max-time); %s "
+                     "not written",
+                     v->max_time, f->path);
+        else
+            format_error(&f->error, text, sizeof text);
         fprintf(stderr, "%s\n", text);
         snprintf(v->note, sizeof v->note, "%s", text);
         if (f->kind == VIEW_JOB_SHOT)
@@ -487,8 +511,11 @@ static void show_frame(viewer *v, view_frame *f)
         printf("screenshot: %s: %s\n", f->path, v->shot_command);
         snprintf(v->note, sizeof v->note, "wrote %s", f->path);
         fflush(stdout);
-        free(f->rgb);
-        return; /* the window keeps its frame */
+        if (f->view != v->view) {
+            free(f->rgb);
+            return; /* the window keeps its frame */
+        }
+        /* else it is the refined view: show it */
     }
     fflush(stdout);
     if (f->kind == VIEW_JOB_COARSE)
@@ -740,7 +767,8 @@ static void request_shot(viewer *v)
     v->shot_busy = 1;
     v->shot_requested = 1;
     snprintf(v->note, sizeof v->note, "writing %s", v->shot_path);
-    view_worker_cancel(v->worker); /* a refinement would only delay it */
+    v->shot_asked = seconds_now();
+    /* A refinement in flight goes on: the screenshot continues its sums. */
 }
 
 static void pick(viewer *v, int x, int y)
@@ -996,6 +1024,9 @@ static void run(viewer *v)
             v->change_pending = 0;
             view_loader_request(v->loader);
         }
+        if (v->shot_busy && v->max_time > 0 &&
+            seconds_now() - v->shot_asked > v->max_time)
+            view_worker_cancel_shot(v->worker);
         take_load(v);
         view_frame frame;
         if (view_worker_take(v->worker, &frame))

@@ -83,21 +83,24 @@ const char *view_camera_format(const view_camera *cam, int width, int height, in
 typedef enum view_job_kind {
     VIEW_JOB_COARSE, /* a reduced image while the view moves; never cancelled */
     VIEW_JOB_REFINE, /* full size, some samples; cancelled when the view moves */
-    VIEW_JOB_SHOT    /* full quality, written to a file; never cancelled */
+    VIEW_JOB_SHOT    /* full quality, written to a file; cancelled only at the
+                        --max-time limit */
 } view_job_kind;
 
 typedef struct view_job {
     view_job_kind kind;
-    uint64_t view;     /* the window's number for the view it shows */
-    view_model *model; /* view_worker_submit takes its own reference */
-    sc_render_options options;
+    uint64_t view;             /* the window's number for the view it shows */
+    view_model *model;         /* view_worker_submit takes its own reference */
+    sc_render_options options; /* options.spp: the samples of the finished view */
+    int samples;         /* VIEW_JOB_REFINE, VIEW_JOB_SHOT: the samples of options.spp the
+                            frame holds when done (the passes before it are reused) */
     char path[PATH_MAX]; /* VIEW_JOB_SHOT: the file to write */
 } view_job;
 
 typedef struct view_frame {
     view_job_kind kind;
     uint64_t view;
-    int width, height, spp;
+    int width, height, spp; /* spp: the samples the frame holds */
     uint8_t *rgb;   /* 3 bytes per pixel, sRGB, row 0 at the top; the caller frees it */
     double seconds; /* wall time of sc_render and the conversion to sRGB */
     sc_render_stats stats;
@@ -118,6 +121,11 @@ void view_worker_submit(view_worker *worker, const view_job *job);
 /* Abandons the job in flight when it is a VIEW_JOB_REFINE (sc_render's
  * cancel flag) and drops the queued one. */
 void view_worker_cancel(view_worker *worker);
+
+/* Abandons the job in flight when it is a VIEW_JOB_SHOT (its time limit has
+ * passed); its frame comes back with status SC_ERR_CANCELLED, nothing
+ * written. */
+void view_worker_cancel_shot(view_worker *worker);
 
 /* 1 when nothing runs and nothing is queued. With view non-NULL, *view is
  * the view of the job in flight and *kind its kind (when busy). */

@@ -13,7 +13,18 @@
  * slow frame is given up within milliseconds of the view moving. A coarse
  * frame is kept within the frame budget by its size and always finishes,
  * so that a drag shows frames even when the mouse moves faster than they
- * come; a screenshot always finishes, since the user asked for the file.
+ * come; a screenshot finishes unless the window stops it at the user's
+ * --max-time (view_worker_cancel_shot).
+ *
+ * Refining: the refinement passes of a view and its screenshot render the
+ * samples of one render of spp samples in turn (sc_render_options'
+ * sample_start, sample_count and sample_sum): each pass adds its samples
+ * to the running sums kept here and shows their mean, so no sample is
+ * rendered twice, and the pass that reaches spp shows exactly the image
+ * `spancast render --spp=N` writes. A screenshot continues the sums of
+ * its view, and once they hold all spp samples it writes the last pass's
+ * framebuffer without rendering again. The sums belong to this thread;
+ * a pass that is abandoned spoils them, and the next one starts over.
  *
  * Locking: one mutex guards the queue, the slot and the flags; the render
  * runs without it. The cancel flag is the API's volatile sig_atomic_t,
@@ -21,6 +32,7 @@
  */
 #define _POSIX_C_SOURCE 200809L
 
+#include "base/error.h"
 #include "cli/view.h"
 
 #include <math.h>
@@ -44,6 +56,13 @@ struct view_worker {
     void (*wake)(void *user);
     void *user;
     uint8_t srgb[SRGB_STEPS + 1]; /* linear [0, 1] in SRGB_STEPS steps to sRGB */
+    /* The refinement's running sums (the render thread's own, no lock). */
+    double *sum;       /* 3 per pixel, sum_width x sum_height */
+    size_t sum_length; /* doubles allocated */
+    uint64_t sum_view; /* the view they were rendered for */
+    int sum_width, sum_height, sum_spp;
+    int sum_samples;          /* samples summed in every pixel; 0: none, or spoilt */
+    sc_framebuffer *finished; /* the pass that brought them to sum_spp, or NULL */
 };
 
 view_model *view_model_retain(view_model *model)
@@ -95,7 +114,52 @@ static void free_frame(view_frame *frame)
     frame->rgb = NULL;
 }
 
-/* Renders job into frame; returns 0 when the job was abandoned. */
+/* Sets up options to continue the running sums up to job->samples (a
+ * refinement or a screenshot), starting them over when they belong to
+ * another view, size or sample count. 0 when out of memory. */
+static int continue_sums(view_worker *w, const view_job *job, sc_render_options *options)
+{
+    int end = job->samples;
+    int start = w->sum_samples;
+    if (w->sum_view != job->view || w->sum_width != options->width ||
+        w->sum_height != options->height || w->sum_spp != options->spp || start >= end)
+        start = 0;
+    if (start == 0) {
+        size_t n = (size_t)options->width * (size_t)options->height * 3;
+        if (n > w->sum_length) {
+            free(w->sum);
+            w->sum_length = 0;
+            w->sum = malloc(n * sizeof *w->sum);
+            if (!w->sum)
+                return 0;
+            w->sum_length = n;
+        }
+        memset(w->sum, 0, n * sizeof *w->sum);
+        w->sum_view = job->view;
+        w->sum_width = options->width;
+        w->sum_height = options->height;
+        w->sum_spp = options->spp;
+    }
+    w->sum_samples = 0; /* spoilt until the pass finishes */
+    sc_framebuffer_release(w->finished);
+    w->finished = NULL;
+    options->sample_start = start;
+    options->sample_count = end - start;
+    options->sample_sum = w->sum;
+    return 1;
+}
+
+/* Whether the sums hold all of the screenshot job's samples already. */
+static int shot_finished(const view_worker *w, const view_job *job)
+{
+    const sc_render_options *o = &job->options;
+    return job->kind == VIEW_JOB_SHOT && w->finished && w->sum_view == job->view &&
+           w->sum_width == o->width && w->sum_height == o->height &&
+           w->sum_spp == o->spp && w->sum_samples == o->spp;
+}
+
+/* Renders job into frame; returns 0 when the job was abandoned (a
+ * screenshot stopped at its time limit comes back, as SC_ERR_CANCELLED). */
 static int run_job(view_worker *w, const view_job *job, view_frame *frame)
 {
     memset(frame, 0, sizeof *frame);
@@ -103,16 +167,26 @@ static int run_job(view_worker *w, const view_job *job, view_frame *frame)
     frame->view = job->view;
     frame->width = job->options.width;
     frame->height = job->options.height;
-    frame->spp = job->options.spp;
+    frame->spp = job->kind == VIEW_JOB_COARSE ? job->options.spp : job->samples;
     memcpy(frame->path, job->path, sizeof frame->path);
     sc_render_options options = job->options;
     options.want_color = 1;
     options.cancel = &w->cancel; /* set for a refinement, or when stopping */
     double start = seconds_now();
     sc_framebuffer *fb = NULL;
-    frame->status = sc_render(job->model->scene, &options, &fb, &frame->error);
+    if (shot_finished(w, job)) {
+        fb = w->finished; /* the image on screen: nothing to render */
+        w->finished = NULL;
+        frame->status = SC_OK;
+    } else if (job->kind != VIEW_JOB_COARSE && !continue_sums(w, job, &options)) {
+        frame->status = err_nomem(&frame->error, NULL);
+    } else {
+        frame->status = sc_render(job->model->scene, &options, &fb, &frame->error);
+    }
+    if (frame->status == SC_OK && job->kind != VIEW_JOB_COARSE)
+        w->sum_samples = job->samples;
     if (frame->status == SC_ERR_CANCELLED)
-        return 0;
+        return job->kind == VIEW_JOB_SHOT;
     if (frame->status == SC_OK) {
         sc_render_stats_init(&frame->stats);
         sc_framebuffer_get_stats(fb, &frame->stats, NULL);
@@ -126,7 +200,11 @@ static int run_job(view_worker *w, const view_job *job, view_frame *frame)
         if (job->kind == VIEW_JOB_SHOT)
             frame->status = sc_framebuffer_write_color(fb, job->path, &frame->error);
     }
-    sc_framebuffer_release(fb);
+    if (frame->status == SC_OK && job->kind != VIEW_JOB_COARSE &&
+        job->samples == job->options.spp)
+        w->finished = fb; /* kept for a screenshot of this view */
+    else
+        sc_framebuffer_release(fb);
     return 1;
 }
 
@@ -209,6 +287,14 @@ void view_worker_cancel(view_worker *w)
     pthread_mutex_unlock(&w->lock);
 }
 
+void view_worker_cancel_shot(view_worker *w)
+{
+    pthread_mutex_lock(&w->lock);
+    if (w->running && w->current.kind == VIEW_JOB_SHOT)
+        w->cancel = 1;
+    pthread_mutex_unlock(&w->lock);
+}
+
 int view_worker_idle(view_worker *w, uint64_t *view, view_job_kind *kind)
 {
     pthread_mutex_lock(&w->lock);
@@ -248,6 +334,8 @@ void view_worker_stop(view_worker *w)
         view_model_release(w->queued.model);
     if (w->has_frame)
         free_frame(&w->frame);
+    sc_framebuffer_release(w->finished);
+    free(w->sum);
     pthread_cond_destroy(&w->changed);
     pthread_mutex_destroy(&w->lock);
     free(w);
