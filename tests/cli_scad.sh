@@ -32,10 +32,30 @@ cmp -s scad.png csg.png || fail "knob_part: .scad and .csg renders differ"
 printf 'cube(;\n' >bad.scad
 "$bin" render bad.scad -o bad.png -q 2>err.txt
 rc=$?
-want="spancast: error: OpenSCAD could not convert 'bad.scad': Can't parse file '$work/bad.scad'!"
+want="bad.scad:1:1: error: Parser error: syntax error"
 [ "$rc" = 1 ] || fail "bad.scad: exit $rc (want 1)"
 [ "$(cat err.txt)" = "$want" ] || fail "bad.scad: got '$(cat err.txt)'"
 [ -e bad.png ] && fail "bad.scad: an image was written"
+
+# OpenSCAD's first error at its own position: in an included file, a lexer
+# error before the parser's, and from another directory a path relative to
+# it (OpenSCAD 2021.01 gives no column); never the temporary file's name.
+mkdir -p sub
+printf 'size = 3;\n\nmodule part() {\n  cube(size)\n}\n}\n' >sub/part.scad
+printf '// uses sub/part.scad\ninclude <sub/part.scad>\npart();\n' >main.scad
+"$bin" render main.scad -o main.png -q 2>err.txt
+rc=$?
+want="sub/part.scad:5:1: error: Parser error: syntax error"
+[ "$rc" = 1 ] || fail "main.scad: exit $rc (want 1)"
+[ "$(cat err.txt)" = "$want" ] || fail "main.scad: got '$(cat err.txt)'"
+printf 'cube(1);\nname = "open;\n' >string.scad
+(cd sub && "$bin" render ../string.scad -o ../string.png -q 2>../err.txt)
+case "$(cat err.txt)" in
+"../string.scad:"*": error: Parser error: Unterminated string") ;;
+*) fail "string.scad: got '$(cat err.txt)'" ;;
+esac
+grep -q "spancast-\|\.csg" err.txt && fail "string.scad: a temporary name: $(cat err.txt)"
+[ -e string.png ] && fail "string.scad: an image was written"
 [ -z "$(ls -A "$work/tmp")" ] || fail "temporary files left after a failure"
 
 # An error inside the converted model names the .csg beside the source.

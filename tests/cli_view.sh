@@ -136,6 +136,31 @@ if [ -z "${SPANCAST_VIEW_XVFB:-}" ]; then
             fail "render --watch .scad: no new image 60 s after inc.scad changed"
         kill -INT "$pid"
         wait "$pid"
+
+        # a .scad that never converted: OpenSCAD's error at its position,
+        # and fixing the file it includes (named only in the source, as
+        # OpenSCAD writes no dependency file when it fails) renders it
+        checks=$((checks + 1))
+        printf 'size = 10\n' >broken.scad
+        printf '// the size\ninclude <broken.scad>\ncube(size);\n' >nb.scad
+        set -m
+        "$bin" render nb.scad -o nb.png --imgsize=80,60 --watch >nwatch.out 2>nwatch.err &
+        pid=$!
+        set +m
+        for ((k = 0; k < 600; k++)); do
+            grep -q "error:" nwatch.err && break
+            sleep 0.1
+        done
+        [ "$(head -n 1 nwatch.err)" = "nb.scad:3:1: error: Parser error: syntax error" ] ||
+            fail "render --watch broken .scad: $(cat nwatch.err)"
+        printf 'size = 6;\n' >broken.scad
+        for ((k = 0; k < 600; k++)); do
+            [ -s nb.png ] && break
+            sleep 0.1
+        done
+        [ -s nb.png ] || fail "render --watch broken .scad: no image 60 s after the fix"
+        kill -INT "$pid"
+        wait "$pid"
     fi
 
     # ---- the window, under Xvfb

@@ -4,8 +4,9 @@
  * first converted with `openscad -o TMP/NAME.csg /abs/model.scad`, both
  * paths absolute (OpenSCAD writes a relative -o path next to its input), in
  * a private directory made by mkdtemp under $TMPDIR (or /tmp). OpenSCAD's
- * own output goes to a log in that directory; when it fails, its last
- * non-empty line is the message. The .csg is loaded under the name
+ * own output goes to a log in that directory; when it fails, its first
+ * error is the message (openscad_error), with OpenSCAD's file and line,
+ * never the temporary .csg's name. The .csg is loaded under the name
  * DIR/NAME.csg, DIR being the source's directory: OpenSCAD writes import
  * paths as the source gave them, relative to the source, and spancast
  * resolves them relative to the loaded file's name. Error positions in the
@@ -24,11 +25,18 @@
  * dependency file (-d): "TARGET: FILE FILE ...", continued over lines by a
  * backslash at the end of a line, a space inside a name written as a
  * backslash and a space. Its names are the files the conversion read.
+ * OpenSCAD 2021.01 writes it only when the conversion succeeds; when it
+ * fails, the names come from the source itself (scan_uses): its include
+ * <...>, use <...>, import("...") and surface("...") arguments, relative
+ * to the file that names them, and those of the .scad files it includes
+ * or uses in turn, so that fixing any of them, or creating a missing one,
+ * is seen by a watcher.
  */
 #define _XOPEN_SOURCE 700 /* realpath, mkdtemp */
 
 #include "cli/scad.h"
 
+#include <ctype.h>
 #include <errno.h>
 #include <fcntl.h>
 #include <limits.h>
@@ -64,22 +72,194 @@ static sc_status fail(sc_error *error, sc_status status, const char *format,
     return status;
 }
 
-/* The last non-empty line of the file at path, into buf. */
-static void last_line(const char *path, char *buf, size_t size)
+/* Reads "MESSAGE in file FILE, line N" (OpenSCAD 2021.01's position, the
+ * last one on the line) into error as FILE:N:1 (OpenSCAD gives no column)
+ * with MESSAGE; 0 when the text has no such position. */
+static int openscad_position(const char *text, sc_error *error)
 {
-    buf[0] = 0;
-    FILE *f = fopen(path, "r");
-    if (!f)
-        return;
-    char line[512];
-    while (fgets(line, sizeof line, f)) {
-        size_t n = strlen(line);
-        while (n > 0 && (line[n - 1] == '\n' || line[n - 1] == '\r'))
-            line[--n] = 0;
-        if (n > 0)
-            snprintf(buf, size, "%s", line);
+    const char *at = NULL;
+    for (const char *p = strstr(text, " in file "); p; p = strstr(p + 1, " in file "))
+        at = p;
+    if (!at)
+        return 0;
+    const char *file = at + strlen(" in file ");
+    const char *comma = NULL;
+    for (const char *p = strstr(file, ", line "); p; p = strstr(p + 1, ", line "))
+        comma = p;
+    if (!comma || comma == file)
+        return 0;
+    char *end;
+    long line = strtol(comma + strlen(", line "), &end, 10);
+    if (line < 1 || line > INT_MAX || (*end && *end != ' '))
+        return 0;
+    snprintf(error->file, sizeof error->file, "%.*s", (int)(comma - file), file);
+    error->line = (int)line;
+    error->column = 1;
+    snprintf(error->message, sizeof error->message, "%.*s", (int)(at - text), text);
+    return 1;
+}
+
+/* Why OpenSCAD failed to convert path, from its log at log_path, into
+ * error: its first "ERROR: " line, at OpenSCAD's position when the line
+ * has one (file names as OpenSCAD prints them: relative to the working
+ * directory, which it shares with us); else its last non-empty line. */
+static sc_status openscad_error(const char *log_path, const char *path, sc_error *error)
+{
+    char first[SC_ERROR_MESSAGE_MAX] = "", last[SC_ERROR_MESSAGE_MAX] = "";
+    FILE *f = fopen(log_path, "r");
+    if (f) {
+        char line[SC_ERROR_MESSAGE_MAX];
+        while (fgets(line, sizeof line, f)) {
+            size_t n = strlen(line);
+            while (n > 0 && (line[n - 1] == '\n' || line[n - 1] == '\r'))
+                line[--n] = 0;
+            if (!first[0] && !strncmp(line, "ERROR: ", 7) && line[7])
+                snprintf(first, sizeof first, "%s", line + 7);
+            if (n > 0)
+                snprintf(last, sizeof last, "%s", line);
+        }
+        fclose(f);
     }
-    fclose(f);
+    if (first[0]) {
+        memset(error, 0, sizeof *error);
+        error->status = SC_ERR_SYNTAX;
+        if (openscad_position(first, error))
+            return SC_ERR_SYNTAX;
+    }
+    const char *why = first[0] ? first : last[0] ? last : "it failed without a message";
+    return fail(error, SC_ERR_IO, "OpenSCAD could not convert '%s': %s", path, why);
+}
+
+#define SCAN_MAX_FILES 256 /* files scan_uses follows, all levels */
+
+/* The files a .scad source names, for a watcher: see the file comment. */
+typedef struct scan {
+    char *seen[SCAN_MAX_FILES]; /* the .scad files scanned (malloc'd paths) */
+    int count;
+    void (*depend)(void *user, const char *file);
+    void *user;
+} scan;
+
+static void scan_file(scan *sc, const char *path, int depth);
+
+/* Reports name, as the source at from names it, and scans it too when it
+ * is OpenSCAD source (include and use). */
+static void scan_name(scan *sc, const char *from, const char *name, size_t length,
+                      int follow, int depth)
+{
+    char path[PATH_MAX];
+    const char *slash = strrchr(from, '/');
+    if (length == 0 || length >= sizeof path)
+        return;
+    if (name[0] == '/' || !slash)
+        snprintf(path, sizeof path, "%.*s", (int)length, name);
+    else if ((size_t)snprintf(path, sizeof path, "%.*s/%.*s", (int)(slash - from), from,
+                              (int)length, name) >= sizeof path)
+        return;
+    sc->depend(sc->user, path);
+    if (follow)
+        scan_file(sc, path, depth + 1);
+}
+
+/* p's identifier word at p, when it is one on its own. */
+static int word_at(const char *text, const char *p, const char *end, const char *word)
+{
+    size_t n = strlen(word);
+    if ((size_t)(end - p) < n || memcmp(p, word, n))
+        return 0;
+    int before =
+        p > text && (isalnum((unsigned char)p[-1]) || p[-1] == '_' || p[-1] == '$');
+    int after = p + n < end && (isalnum((unsigned char)p[n]) || p[n] == '_');
+    return !before && !after;
+}
+
+static const char *skip_space(const char *p, const char *end)
+{
+    while (p < end && isspace((unsigned char)*p))
+        p++;
+    return p;
+}
+
+/* Scans the OpenSCAD source at path: comments and strings are skipped,
+ * include <NAME> and use <NAME> are reported and followed, and the first
+ * string argument of import( and surface( (or their file = "...") is
+ * reported. */
+static void scan_file(scan *sc, const char *path, int depth)
+{
+    if (depth > 16 || sc->count == SCAN_MAX_FILES)
+        return;
+    for (int k = 0; k < sc->count; k++)
+        if (!strcmp(sc->seen[k], path))
+            return;
+    sc->seen[sc->count] = strdup(path);
+    if (!sc->seen[sc->count])
+        return;
+    sc->count++;
+    size_t size = 0;
+    const char *why;
+    char *text = file_read(path, 1 << 24, &size, &why);
+    if (!text)
+        return;
+    const char *end = text + size;
+    for (const char *p = text; p < end; p++) {
+        if (p + 1 < end && p[0] == '/' && p[1] == '/') {
+            while (p < end && *p != '\n')
+                p++;
+        } else if (p + 1 < end && p[0] == '/' && p[1] == '*') {
+            const char *close = p + 2;
+            while (close + 1 < end && !(close[0] == '*' && close[1] == '/'))
+                close++;
+            p = close + 1;
+        } else if (*p == '"') {
+            for (p++; p < end && *p != '"'; p++)
+                if (*p == '\\')
+                    p++;
+        } else if (word_at(text, p, end, "include") || word_at(text, p, end, "use")) {
+            const char *q = skip_space(p + (*p == 'i' ? 7 : 3), end);
+            if (q < end && *q == '<') {
+                const char *close = memchr(q, '>', (size_t)(end - q));
+                if (!close)
+                    break;
+                scan_name(sc, path, q + 1, (size_t)(close - q - 1), 1, depth);
+                p = close;
+            }
+        } else if (word_at(text, p, end, "import") || word_at(text, p, end, "surface")) {
+            const char *q = skip_space(p + (*p == 'i' ? 6 : 7), end);
+            if (q >= end || *q != '(')
+                continue;
+            q = skip_space(q + 1, end);
+            if (word_at(text, q, end, "file")) {
+                q = skip_space(q + 4, end);
+                if (q < end && *q == '=')
+                    q = skip_space(q + 1, end);
+            }
+            if (q < end && *q == '"') {
+                const char *close = q + 1;
+                while (close < end && *close != '"')
+                    close += *close == '\\' ? 2 : 1;
+                if (close >= end)
+                    break;
+                scan_name(sc, path, q + 1, (size_t)(close - q - 1), 0, depth);
+                p = close;
+            }
+        }
+    }
+    free(text);
+}
+
+/* Calls depend for source and every file it names, as scan_file reads
+ * them: the watcher's list when OpenSCAD wrote none. */
+static void scan_uses(const char *source, void (*depend)(void *user, const char *file),
+                      void *user)
+{
+    scan sc;
+    memset(&sc, 0, sizeof sc);
+    sc.depend = depend;
+    sc.user = user;
+    depend(user, source);
+    scan_file(&sc, source, 0);
+    for (int k = 0; k < sc.count; k++)
+        free(sc.seen[k]);
 }
 
 /* Calls depend for each prerequisite in the make-style dependency file at
@@ -263,14 +443,13 @@ static sc_status convert(const char *path, const double *time, char **text, size
             error->status = st = SC_ERR_CANCELLED;
             snprintf(error->message, sizeof error->message, "interrupted");
         } else if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) {
-            char last[400];
-            last_line(log, last, sizeof last);
-            st = fail(error, SC_ERR_IO, "OpenSCAD could not convert '%s': %s", path,
-                      last[0] ? last : "it failed without a message");
+            st = openscad_error(log, path, error);
         }
     }
     if (st == SC_OK && depend)
         read_depends(deps, depend, user);
+    else if (st != SC_ERR_CANCELLED && depend)
+        scan_uses(source, depend, user);
     if (st == SC_OK) {
         const char *why;
         *text = file_read(csg, SIZE_MAX / 2, size, &why);
