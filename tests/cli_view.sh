@@ -408,5 +408,42 @@ wait "$pid"
 st=$?
 [ "$st" = 0 ] || fail "Ctrl+Q: exit $st: $(cat view.err)"
 
+# A .scad whose include is broken from the start: OpenSCAD's error at its
+# position in the title and on stderr, and fixing the include (known only
+# from the source) loads it. Refining adds passes up to --spp; a screenshot
+# slower than --max-time is given up and writes nothing.
+if command -v openscad >/dev/null; then
+    checks=$((checks + 1))
+    printf 'size = 10\n' >part.scad
+    printf '// the part\ninclude <part.scad>\nsphere(size);\n' >s.scad
+    "$bin" view s.scad --imgsize=$W,$H --spp=64 --ao=16 --max-time=0.01 --verbose \
+        >sview.out 2>sview.err &
+    pid=$!
+    wid=$(timeout 60 xdotool search --sync --name '^spancast view: s.scad' | head -n 1)
+    if [ -n "$wid" ]; then
+        wait_file sview.err "^s\.scad:3:1: error: Parser error: syntax error$" 60 ||
+            fail "broken .scad: no error on stderr: $(cat sview.err)"
+        wait_title "* - ERROR s.scad:3:1: error: Parser error: syntax error*" 30 ||
+            fail "broken .scad: no error in the title"
+        grep -q "spancast-\|\.csg" sview.err && fail "broken .scad: a temporary name"
+        printf 'size = 6;\n' >part.scad
+        wait_title "* - done - load #1 *" 300 || fail "broken .scad: the fix not loaded"
+        for samples in 1 4 16 64; do
+            grep -q "^frame refine ${W}x$H spp $samples: " sview.out ||
+                fail "refining: no pass to $samples samples: $(grep '^frame' sview.out)"
+        done
+        xdotool key ctrl+1 # a new view: the screenshot renders all 64 samples
+        xdotool key ctrl+s
+        wait_file sview.err "time limit of 0.01 s exceeded \(--max-time\); s-view-1\.png not written" 60 ||
+            fail "--max-time: no error: $(cat sview.err)"
+        [ -e s-view-1.png ] && fail "--max-time: the screenshot was written"
+        xdotool key ctrl+q
+        wait "$pid" || fail "broken .scad: exit $?: $(cat sview.err)"
+    else
+        fail "broken .scad: no viewer window in 60 s: $(cat sview.err)"
+        kill "$pid" 2>/dev/null
+    fi
+fi
+
 echo "$checks checks, $fails failures"
 [ "$fails" = 0 ]
