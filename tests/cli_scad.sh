@@ -29,13 +29,18 @@ export TMPDIR="$work/tmp"
 cmp -s scad.png csg.png || fail "knob_part: .scad and .csg renders differ"
 [ -z "$(ls -A "$work/tmp")" ] || fail "temporary files left: $(ls -A "$work/tmp")"
 
+# fails_with MODEL MESSAGE: rendering MODEL exits 1 with MESSAGE alone on
+# stderr and writes no image.
+fails_with() {
+    "$bin" render "$1" -o "$1.png" -q 2>err.txt
+    local rc=$?
+    [ "$rc" = 1 ] || fail "$1: exit $rc (want 1)"
+    [ "$(cat err.txt)" = "$2" ] || fail "$1: got '$(cat err.txt)'"
+    [ -e "$1.png" ] && fail "$1: an image was written"
+}
+
 printf 'cube(;\n' >bad.scad
-"$bin" render bad.scad -o bad.png -q 2>err.txt
-rc=$?
-want="bad.scad:1:1: error: Parser error: syntax error"
-[ "$rc" = 1 ] || fail "bad.scad: exit $rc (want 1)"
-[ "$(cat err.txt)" = "$want" ] || fail "bad.scad: got '$(cat err.txt)'"
-[ -e bad.png ] && fail "bad.scad: an image was written"
+fails_with bad.scad "bad.scad:1:1: error: Parser error: syntax error"
 
 # OpenSCAD's first error at its own position: in an included file, a lexer
 # error before the parser's, and from another directory a path relative to
@@ -43,11 +48,7 @@ want="bad.scad:1:1: error: Parser error: syntax error"
 mkdir -p sub
 printf 'size = 3;\n\nmodule part() {\n  cube(size)\n}\n}\n' >sub/part.scad
 printf '// uses sub/part.scad\ninclude <sub/part.scad>\npart();\n' >main.scad
-"$bin" render main.scad -o main.png -q 2>err.txt
-rc=$?
-want="sub/part.scad:5:1: error: Parser error: syntax error"
-[ "$rc" = 1 ] || fail "main.scad: exit $rc (want 1)"
-[ "$(cat err.txt)" = "$want" ] || fail "main.scad: got '$(cat err.txt)'"
+fails_with main.scad "sub/part.scad:5:1: error: Parser error: syntax error"
 printf 'cube(1);\nname = "open;\n' >string.scad
 (cd sub && "$bin" render ../string.scad -o ../string.png -q 2>../err.txt)
 case "$(cat err.txt)" in

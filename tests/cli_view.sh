@@ -112,27 +112,34 @@ if [ -z "${SPANCAST_VIEW_XVFB:-}" ]; then
     grep -q "^spancast: interrupted" watch.err || fail "render --watch: no 'interrupted'"
 
     # ---- render --watch: a file a .scad model includes
+    # poll SECONDS COMMAND...: until the command succeeds; 1 if it never does.
+    poll() {
+        local k
+        for ((k = 0; k < $1 * 10; k++)); do
+            "${@:2}" && return 0
+            sleep 0.1
+        done
+        return 1
+    }
+    changed() { [ "$(sha256sum <"$1")" != "$2" ]; }
+    # watch_scad MODEL OUT: render --watch in the background, as $pid,
+    # with stderr in MODEL.err.
+    watch_scad() {
+        set -m
+        "$bin" render "$1" -o "$2" --imgsize=80,60 --watch >"$1.out" 2>"$1.err" &
+        pid=$!
+        set +m
+    }
     if command -v openscad >/dev/null; then
         checks=$((checks + 1))
         printf 'size = 10;\n' >inc.scad
         printf 'include <inc.scad>\ncube(size);\n' >w.scad
-        set -m
-        "$bin" render w.scad -o s.png --imgsize=80,60 --watch >swatch.out 2>swatch.err &
-        pid=$!
-        set +m
-        for ((k = 0; k < 600; k++)); do
-            [ -s s.png ] && break
-            sleep 0.1
-        done
-        [ -s s.png ] || fail "render --watch .scad: no first image in 60 s"
+        watch_scad w.scad s.png
+        poll 60 test -s s.png || fail "render --watch .scad: no first image in 60 s"
         first=$(sha256sum <s.png)
         sleep 0.3
         printf 'size = 4;\n' >inc.scad
-        for ((k = 0; k < 600; k++)); do
-            [ "$(sha256sum <s.png)" != "$first" ] && break
-            sleep 0.1
-        done
-        [ "$(sha256sum <s.png)" != "$first" ] ||
+        poll 60 changed s.png "$first" ||
             fail "render --watch .scad: no new image 60 s after inc.scad changed"
         kill -INT "$pid"
         wait "$pid"
@@ -143,22 +150,12 @@ if [ -z "${SPANCAST_VIEW_XVFB:-}" ]; then
         checks=$((checks + 1))
         printf 'size = 10\n' >broken.scad
         printf '// the size\ninclude <broken.scad>\ncube(size);\n' >nb.scad
-        set -m
-        "$bin" render nb.scad -o nb.png --imgsize=80,60 --watch >nwatch.out 2>nwatch.err &
-        pid=$!
-        set +m
-        for ((k = 0; k < 600; k++)); do
-            grep -q "error:" nwatch.err && break
-            sleep 0.1
-        done
-        [ "$(head -n 1 nwatch.err)" = "nb.scad:3:1: error: Parser error: syntax error" ] ||
-            fail "render --watch broken .scad: $(cat nwatch.err)"
+        watch_scad nb.scad nb.png
+        poll 60 grep -q "error:" nb.scad.err
+        [ "$(head -n 1 nb.scad.err)" = "nb.scad:3:1: error: Parser error: syntax error" ] ||
+            fail "render --watch broken .scad: $(cat nb.scad.err)"
         printf 'size = 6;\n' >broken.scad
-        for ((k = 0; k < 600; k++)); do
-            [ -s nb.png ] && break
-            sleep 0.1
-        done
-        [ -s nb.png ] || fail "render --watch broken .scad: no image 60 s after the fix"
+        poll 60 test -s nb.png || fail "render --watch broken .scad: no image 60 s after the fix"
         kill -INT "$pid"
         wait "$pid"
     fi
