@@ -144,16 +144,23 @@ if [ -z "${SPANCAST_VIEW_XVFB:-}" ]; then
         kill -INT "$pid"
         wait "$pid"
 
-        # a .scad that never converted: OpenSCAD's error at its position,
-        # and fixing the file it includes (named only in the source, as
-        # OpenSCAD writes no dependency file when it fails) renders it
+        # a .scad that never converted: OpenSCAD's error at its position;
+        # the files its text names (OpenSCAD writes no dependency file when
+        # it fails) are watched: changing the mesh it imports converts it
+        # again, and fixing the file it includes renders it
         checks=$((checks + 1))
         printf 'size = 10\n' >broken.scad
-        printf '// the size\ninclude <broken.scad>\ncube(size);\n' >nb.scad
+        printf 'solid m\nendsolid m\n' >mesh.stl
+        printf '// the size\ninclude <broken.scad>\ncube(size);\n%s\n' \
+            'module unused() { import(file = "mesh.stl"); }' >nb.scad
         watch_scad nb.scad nb.png
         poll 60 grep -q "error:" nb.scad.err
         [ "$(head -n 1 nb.scad.err)" = "nb.scad:3:1: error: Parser error: syntax error" ] ||
             fail "render --watch broken .scad: $(cat nb.scad.err)"
+        twice() { [ "$(grep -c "error:" nb.scad.err)" -ge 2 ]; }
+        sleep 0.3
+        printf 'solid m\nendsolid m\n\n' >mesh.stl
+        poll 60 twice || fail "render --watch broken .scad: mesh.stl not watched: $(cat nb.scad.err)"
         printf 'size = 6;\n' >broken.scad
         poll 60 test -s nb.png || fail "render --watch broken .scad: no image 60 s after the fix"
         kill -INT "$pid"

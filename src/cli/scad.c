@@ -161,29 +161,40 @@ static void scan_name(scan *sc, const char *from, const char *name, size_t lengt
         scan_file(sc, path, depth + 1);
 }
 
-/* p's identifier word at p, when it is one on its own. */
-static int word_at(const char *text, const char *p, const char *end, const char *word)
+/* Whether word stands on its own at text[i] (of size bytes). */
+static int word_at(const char *text, size_t size, size_t i, const char *word)
 {
     size_t n = strlen(word);
-    if ((size_t)(end - p) < n || memcmp(p, word, n))
+    if (size - i < n || memcmp(text + i, word, n))
         return 0;
-    int before =
-        p > text && (isalnum((unsigned char)p[-1]) || p[-1] == '_' || p[-1] == '$');
-    int after = p + n < end && (isalnum((unsigned char)p[n]) || p[n] == '_');
+    int before = i > 0 && (isalnum((unsigned char)text[i - 1]) || text[i - 1] == '_' ||
+                           text[i - 1] == '$');
+    int after =
+        i + n < size && (isalnum((unsigned char)text[i + n]) || text[i + n] == '_');
     return !before && !after;
 }
 
-static const char *skip_space(const char *p, const char *end)
+static size_t skip_space(const char *text, size_t size, size_t i)
 {
-    while (p < end && isspace((unsigned char)*p))
-        p++;
-    return p;
+    while (i < size && isspace((unsigned char)text[i]))
+        i++;
+    return i;
+}
+
+/* The index of the quote that closes the string opened at text[i], or size
+ * when it is not closed. */
+static size_t string_end(const char *text, size_t size, size_t i)
+{
+    for (i++; i < size && text[i] != '"'; i++)
+        if (text[i] == '\\')
+            i++;
+    return i < size ? i : size;
 }
 
 /* Scans the OpenSCAD source at path: comments and strings are skipped,
  * include <NAME> and use <NAME> are reported and followed, and the first
  * string argument of import( and surface( (or their file = "...") is
- * reported. */
+ * reported. Each index below stays within [0, size]. */
 static void scan_file(scan *sc, const char *path, int depth)
 {
     if (depth > 16 || sc->count == SCAN_MAX_FILES)
@@ -200,48 +211,46 @@ static void scan_file(scan *sc, const char *path, int depth)
     char *text = file_read(path, 1 << 24, &size, &why);
     if (!text)
         return;
-    const char *end = text + size;
-    for (const char *p = text; p < end; p++) {
-        if (p + 1 < end && p[0] == '/' && p[1] == '/') {
-            while (p < end && *p != '\n')
-                p++;
-        } else if (p + 1 < end && p[0] == '/' && p[1] == '*') {
-            const char *close = p + 2;
-            while (close + 1 < end && !(close[0] == '*' && close[1] == '/'))
-                close++;
-            p = close + 1;
-        } else if (*p == '"') {
-            for (p++; p < end && *p != '"'; p++)
-                if (*p == '\\')
-                    p++;
-        } else if (word_at(text, p, end, "include") || word_at(text, p, end, "use")) {
-            const char *q = skip_space(p + (*p == 'i' ? 7 : 3), end);
-            if (q < end && *q == '<') {
-                const char *close = memchr(q, '>', (size_t)(end - q));
-                if (!close)
-                    break;
-                scan_name(sc, path, q + 1, (size_t)(close - q - 1), 1, depth);
-                p = close;
+    size_t i = 0;
+    while (i < size) {
+        if (i + 1 < size && text[i] == '/' && text[i + 1] == '/') {
+            while (i < size && text[i] != '\n')
+                i++;
+        } else if (i + 1 < size && text[i] == '/' && text[i + 1] == '*') {
+            const char *close = strstr(text + i + 2, "*/");
+            i = close ? (size_t)(close - text) + 2 : size;
+        } else if (text[i] == '"') {
+            i = string_end(text, size, i) + 1;
+        } else if (word_at(text, size, i, "include") || word_at(text, size, i, "use")) {
+            size_t q = skip_space(text, size, i + (text[i] == 'i' ? 7 : 3));
+            const char *close =
+                q < size && text[q] == '<' ? memchr(text + q, '>', size - q) : NULL;
+            if (close) {
+                scan_name(sc, path, text + q + 1, (size_t)(close - text) - q - 1, 1,
+                          depth);
+                i = (size_t)(close - text);
             }
-        } else if (word_at(text, p, end, "import") || word_at(text, p, end, "surface")) {
-            const char *q = skip_space(p + (*p == 'i' ? 6 : 7), end);
-            if (q >= end || *q != '(')
-                continue;
-            q = skip_space(q + 1, end);
-            if (word_at(text, q, end, "file")) {
-                q = skip_space(q + 4, end);
-                if (q < end && *q == '=')
-                    q = skip_space(q + 1, end);
+            i++;
+        } else if (word_at(text, size, i, "import") ||
+                   word_at(text, size, i, "surface")) {
+            size_t q = skip_space(text, size, i + (text[i] == 'i' ? 6 : 7));
+            if (q < size && text[q] == '(') {
+                q = skip_space(text, size, q + 1);
+                if (word_at(text, size, q, "file")) {
+                    q = skip_space(text, size, q + 4);
+                    if (q < size && text[q] == '=')
+                        q = skip_space(text, size, q + 1);
+                }
+                if (q < size && text[q] == '"') {
+                    size_t close = string_end(text, size, q);
+                    if (close < size)
+                        scan_name(sc, path, text + q + 1, close - q - 1, 0, depth);
+                    i = close;
+                }
             }
-            if (q < end && *q == '"') {
-                const char *close = q + 1;
-                while (close < end && *close != '"')
-                    close += *close == '\\' ? 2 : 1;
-                if (close >= end)
-                    break;
-                scan_name(sc, path, q + 1, (size_t)(close - q - 1), 0, depth);
-                p = close;
-            }
+            i++;
+        } else {
+            i++;
         }
     }
     free(text);
