@@ -2,7 +2,7 @@
 # inside the work (docs/limits.md, "Bounded work").
 #
 #   - A field unresolvable at any scale (a sin argument past 2^53) is
-#     refused before any ray, with its position; one that is merely far too
+#     refused at load (info and measure too), with the leaf's position; one that is merely far too
 #     fine for the image (frequency 1e7 over a unit box) fails on the
 #     render's budget of implicit work. Both at 8x8 and at 200x150.
 #   - --max-time stops render, measure and a .scad conversion with its
@@ -54,6 +54,13 @@ done
 expect_error "fine field, measure" \
     "fine.csg:1:1: error: implicit surfaces need more than 4096 evaluations per ray on average (limit is 4096, after the first 262144)" \
     "$bin" measure fine.csg -q
+
+# The unresolvable field is refused at load, at its leaf: info and
+# measure, which cast no camera ray, fail on it too.
+printf 'cube(1);\n  implicit(f = "z + cos(3 * y) * sin(1e60 * x)", bounds = [[-1, -1, -1], [1, 1, 1]]);\n' >huge2.csg
+unresolvable="huge2.csg:2:3: error: implicit surface is not resolvable: the argument of sin reaches 1e+60 within its bounds (beyond 2^53, where doubles are farther apart than its period)"
+expect_error "huge field, info" "$unresolvable" "$bin" info huge2.csg
+expect_error "huge field, measure" "$unresolvable" "$bin" measure huge2.csg -q
 
 # --max-time: a render of many seconds, a measure to a tolerance it cannot
 # reach soon

@@ -33,7 +33,6 @@
 
 #include "base/cancel.h"
 #include "base/error.h"
-#include "implicit/expr.h"
 #include "implicit/solve.h"
 #include "render/render.h"
 
@@ -96,25 +95,4 @@ sc_status render_stop_error(const csg_tree *tree, cancel_token *token, sc_error 
         return render_limit_error(tree, (int)reason, atomic_load(&token->leaf),
                                   atomic_load(&token->prim), error);
     return err_set(error, SC_ERR_CANCELLED, NULL, "interrupted");
-}
-
-sc_status render_check_fields(const csg_tree *tree, sc_error *error)
-{
-    for (uint32_t k = 0; k < tree->leaf_count; k++) {
-        const csg_leaf *leaf = &tree->leaves[k];
-        if (leaf->prim.kind != PRIM_IMPLICIT || !leaf->prim.u.implicit.program)
-            continue;
-        const bbox *b = &leaf->prim.u.implicit.box;
-        expr_op op;
-        double reach =
-            expr_trig_reach(leaf->prim.u.implicit.program, ix_make(b->lo.x, b->hi.x),
-                            ix_make(b->lo.y, b->hi.y), ix_make(b->lo.z, b->hi.z), &op);
-        if (reach > EXPR_TRIG_MAX_ARGUMENT)
-            return err_set(error, SC_ERR_LIMIT, leaf->loc.line > 0 ? &leaf->loc : NULL,
-                           "implicit surface is not resolvable: the argument of %s "
-                           "reaches %.3g within its bounds (beyond 2^53, where doubles "
-                           "are farther apart than its period)",
-                           expr_op_name(op), reach);
-    }
-    return SC_OK;
 }
