@@ -54,6 +54,13 @@ done
 expect_error "fine field, measure" \
     "fine.csg:1:1: error: implicit surfaces need more than 4096 evaluations per ray on average (limit is 4096, after the first 262144)" \
     "$bin" measure fine.csg -q
+# overlaps names the leaf too (its errors exit 2: 1 means overlaps found)
+printf 'cube(1);\nimplicit(f = "sin(1e7 * x) * cos(1e6 * y) + z", bounds = [[-1, -1, -1], [1, 1, 1]]);\n' >fine2.csg
+check
+timeout 300 "$bin" overlaps fine2.csg -q 2>stderr.txt
+rc=$?
+[ "$rc" = 2 ] && [ "$(cat stderr.txt)" = "fine2.csg:2:1: error: implicit surfaces need more than 4096 evaluations per ray on average (limit is 4096, after the first 262144)" ] ||
+    fail "fine field, overlaps: exit $rc, stderr '$(cat stderr.txt)'"
 
 # The unresolvable field is refused at load, at its leaf: info and
 # measure, which cast no camera ray, fail on it too.
