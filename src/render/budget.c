@@ -29,15 +29,18 @@
 #define _DEFAULT_SOURCE /* sysconf(_SC_PHYS_PAGES) */
 
 #include <stdint.h>
+#include <stdio.h>
 #include <unistd.h>
 
 #include "base/cancel.h"
 #include "base/error.h"
+#include "base/mem.h"
 #include "implicit/solve.h"
 #include "render/render.h"
 
 /* Checks, before anything is allocated, that the buffers options ask for
- * fit in RENDER_MAX_MEMORY_GIB and in the machine's physical memory, so that
+ * fit in RENDER_MAX_MEMORY_GIB, in what the process's memory limit leaves
+ * (base/mem.h) and in the machine's physical memory, so that
  * a huge image is a clear error rather than an out-of-memory kill. The
  * sizes cannot overflow: at most 2^36 pixels of 33 bytes. */
 sc_status render_check_memory(const sc_render_options *o, sc_error *error)
@@ -52,6 +55,11 @@ sc_status render_check_memory(const sc_render_options *o, sc_error *error)
         return err_set(error, SC_ERR_LIMIT, NULL,
                        "a %dx%d render needs %.1f GiB of image buffers (limit is %d GiB)",
                        o->width, o->height, gib, RENDER_MAX_MEMORY_GIB);
+    char who[48];
+    snprintf(who, sizeof who, "a %dx%d render", o->width, o->height);
+    sc_status st = mem_reserve(bytes, who, "its image buffers", error);
+    if (st != SC_OK)
+        return st;
     long pages = sysconf(_SC_PHYS_PAGES), page_size = sysconf(_SC_PAGESIZE);
     if (pages > 0 && page_size > 0 && bytes > (uint64_t)pages * (uint64_t)page_size)
         return err_set(error, SC_ERR_LIMIT, NULL,
