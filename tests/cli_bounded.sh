@@ -109,10 +109,10 @@ else
         echo "note: this machine's threads need more than 300M; the load case is left out"
     else
         expect_error "load past --max-memory" \
-            "spancast: error: out of memory (the memory limit of 300.0 MiB is reached)" \
+            "spancast: error: loading 'big.csg' ran out of memory: the memory limit of 300.0 MiB is reached" \
             "$bin" render big.csg -o out/old.png --imgsize=64,48 -q --max-memory=300M
         expect_error "measure past --max-memory" \
-            "spancast: error: out of memory (the memory limit of 300.0 MiB is reached)" \
+            "spancast: error: loading 'big.csg' ran out of memory: the memory limit of 300.0 MiB is reached" \
             "$bin" measure big.csg -q --max-memory=300M
     fi
     check

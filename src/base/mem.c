@@ -59,3 +59,14 @@ sc_status mem_reserve(uint64_t bytes, const char *who, const char *what, sc_erro
                    mem_format(limit, lim, sizeof lim),
                    mem_format(used, in_use, sizeof in_use));
 }
+
+void mem_blame(sc_error *error, const char *what)
+{
+    uint64_t limit = mem_limit();
+    if (!limit || !error || error->status != SC_ERR_NOMEM || error->line > 0)
+        return;
+    char lim[32];
+    err_set(error, SC_ERR_NOMEM, NULL,
+            "%s ran out of memory: the memory limit of %s is reached", what,
+            mem_format(limit, lim, sizeof lim));
+}

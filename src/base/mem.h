@@ -37,6 +37,12 @@ uint64_t mem_in_use(void);
  * phrases ("a 4000x3000 render", "its image buffers"). */
 sc_status mem_reserve(uint64_t bytes, const char *who, const char *what, sc_error *error);
 
+/* Under a memory limit, rewrites an SC_ERR_NOMEM error without a source
+ * position to name the work that needed the memory: "WHAT ran out of
+ * memory: the memory limit of L MiB is reached" (what: "loading
+ * 'm.csg'"). Any other error, or no limit, is left as it is. */
+void mem_blame(sc_error *error, const char *what);
+
 /* Writes bytes as "12.3 MiB" (or KiB, GiB) into buf of size n; returns
  * buf. */
 const char *mem_format(uint64_t bytes, char *buf, int n);
