@@ -2,11 +2,13 @@
 # inside the work (docs/limits.md, "Bounded work").
 #
 #   - A field unresolvable at any scale (a sin argument past 2^53) is
-#     refused before any ray, with its position; one that is merely far too
+#     refused at load (info and measure too), with the leaf's position; one that is merely far too
 #     fine for the image (frequency 1e7 over a unit box) fails on the
 #     render's budget of implicit work. Both at 8x8 and at 200x150.
 #   - --max-time stops render, measure and a .scad conversion with its
 #     message and exit 1, and leaves an existing output untouched.
+#   - --max-memory fails a load past it and a render whose image buffers
+#     pass it cleanly, and a generous one leaves the image as it was.
 #   - SIGTERM inside one slow tile (a 16x16 image is one tile) ends the
 #     render promptly with no file written.
 #
@@ -54,6 +56,20 @@ done
 expect_error "fine field, measure" \
     "fine.csg:1:1: error: implicit surfaces need more than 4096 evaluations per ray on average (limit is 4096, after the first 262144)" \
     "$bin" measure fine.csg -q
+# overlaps names the leaf too (its errors exit 2: 1 means overlaps found)
+printf 'cube(1);\nimplicit(f = "sin(1e7 * x) * cos(1e6 * y) + z", bounds = [[-1, -1, -1], [1, 1, 1]]);\n' >fine2.csg
+check
+timeout 300 "$bin" overlaps fine2.csg -q 2>stderr.txt
+rc=$?
+[ "$rc" = 2 ] && [ "$(cat stderr.txt)" = "fine2.csg:2:1: error: implicit surfaces need more than 4096 evaluations per ray on average (limit is 4096, after the first 262144)" ] ||
+    fail "fine field, overlaps: exit $rc, stderr '$(cat stderr.txt)'"
+
+# The unresolvable field is refused at load, at its leaf: info and
+# measure, which cast no camera ray, fail on it too.
+printf 'cube(1);\n  implicit(f = "z + cos(3 * y) * sin(1e60 * x)", bounds = [[-1, -1, -1], [1, 1, 1]]);\n' >huge2.csg
+unresolvable="huge2.csg:2:3: error: implicit surface is not resolvable: the argument of sin reaches 1e+60 within its bounds (beyond 2^53, where doubles are farther apart than its period)"
+expect_error "huge field, info" "$unresolvable" "$bin" info huge2.csg
+expect_error "huge field, measure" "$unresolvable" "$bin" measure huge2.csg -q
 
 # --max-time: a render of many seconds, a measure to a tolerance it cannot
 # reach soon
@@ -68,6 +84,55 @@ check
 "$bin" render slow.csg -o out/x.png --max-time=0 2>stderr.txt
 [ $? = 2 ] && grep -q -- "--max-time expects seconds above 0" stderr.txt ||
     fail "--max-time=0: $(cat stderr.txt)"
+
+# --max-memory: a load past the limit fails with the limit's message, a
+# render whose image buffers do not fit is refused before any work, and a
+# generous limit changes nothing in the image. 300000 positioned spheres
+# take about 400 MB to load.
+awk 'BEGIN {
+    print "union() {"
+    for (i = 0; i < 300000; i++)
+        printf "  multmatrix([[1, 0, 0, %d], [0, 1, 0, %d], [0, 0, 1, 0], [0, 0, 0, 1]]) { sphere(r = 0.4); }\n",
+            i % 500, int(i / 500)
+    print "}"
+}' >big.csg
+# Under AddressSanitizer the process reserves terabytes of shadow memory
+# before main, so no memory limit can hold: spancast refuses the option
+# there, and these cases are left out.
+"$bin" info big.csg --max-memory=4G >/dev/null 2>stderr.txt
+if grep -q "is below the" stderr.txt; then
+    echo "note: $(cat stderr.txt); the --max-memory cases are left out"
+else
+    check
+    "$bin" info big.csg --max-memory=300M >/dev/null 2>stderr.txt
+    if grep -q "is below the" stderr.txt; then
+        echo "note: this machine's threads need more than 300M; the load case is left out"
+    else
+        expect_error "load past --max-memory" \
+            "spancast: error: loading 'big.csg' ran out of memory: the memory limit of 300.0 MiB is reached" \
+            "$bin" render big.csg -o out/old.png --imgsize=64,48 -q --max-memory=300M
+        expect_error "measure past --max-memory" \
+            "spancast: error: loading 'big.csg' ran out of memory: the memory limit of 300.0 MiB is reached" \
+            "$bin" measure big.csg -q --max-memory=300M
+    fi
+    check
+    "$bin" render big.csg -o out/free.png --imgsize=64,48 -q --depth=out/free.exr 2>stderr.txt &&
+        "$bin" render big.csg -o out/kept.png --imgsize=64,48 -q --depth=out/kept.exr \
+            --max-memory 4G 2>>stderr.txt &&
+        cmp -s out/free.png out/kept.png && cmp -s out/free.exr out/kept.exr ||
+        fail "a generous --max-memory changed the render: $(cat stderr.txt)"
+    rm -f out/free.* out/kept.*
+    check
+    timeout 300 "$bin" render slow.csg -o out/old.png --depth=out/d.exr --imgsize=4000,4000 --max-memory=200M 2>stderr.txt
+    rc=$?
+    [ "$rc" = 2 ] && grep -q "^spancast: error: cannot write 'out/old.png': a 4000x4000 render needs 244.1 MiB for its image buffers, more than the memory limit of 200.0 MiB leaves ([0-9.]* [KM]iB in use); only .exr outputs are written tile by tile\$" stderr.txt ||
+        fail "image buffers past --max-memory: exit $rc, stderr '$(cat stderr.txt)'"
+    [ "$(sha256sum out/old.png)" = "$old_sum" ] || fail "--max-memory: old.png was changed"
+    check
+    "$bin" render slow.csg -o out/x.png --max-memory=lots 2>stderr.txt
+    [ $? = 2 ] && grep -qx "spancast: error: --max-memory expects a size such as 512M or 2G (got 'lots')" stderr.txt ||
+        fail "--max-memory=lots: $(cat stderr.txt)"
+fi
 
 # SIGTERM inside one slow tile
 caught() {

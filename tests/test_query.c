@@ -267,6 +267,44 @@ static void test_errors(void **state)
     sc_scene_release(s);
 }
 
+/* A line on which an implicit leaf passes the root finder's bound of
+ * evaluations (frequency 1e12 resolved to a tolerance of 1e-9: far more
+ * than 2^22 cells) is SC_ERR_LIMIT at the leaf, for sc_scene_spans and
+ * sc_scene_inside alike, never a list whose far part was not searched;
+ * a line that misses the leaf's box still answers. */
+static void test_ray_limit(void **state)
+{
+    (void)state;
+    sc_scene *s =
+        test_load("fine.csg",
+                  "cube(1);\n"
+                  "  implicit(f = \"sin(1e12 * x) * cos(1e11 * y) + z\",\n"
+                  "    bounds = [[-1, -1, -1], [1, 1, 1]], tolerance = 1e-9);\n",
+                  0);
+    const char *want = "implicit surface needs more than 4194304 evaluations per ray "
+                       "(limit is 4194304; the field is not resolvable at this scale)";
+    sc_ray_query q;
+    sc_ray_query_init(&q);
+    q.origin[0] = -2;
+    q.origin[1] = 0.1;
+    q.direction[0] = 1;
+    sc_span_list *list = (sc_span_list *)&q; /* must be reset to NULL */
+    sc_error e;
+    assert_int_equal(sc_scene_spans(s, &q, &list, &e), SC_ERR_LIMIT);
+    assert_null(list);
+    assert_string_equal(e.message, want);
+    assert_int_equal(e.line, 2);
+    assert_int_equal(e.column, 3);
+    double p[3] = {0, 0.1, 0};
+    int where = SC_ON;
+    assert_int_equal(sc_scene_inside(s, p, &where, &e), SC_ERR_LIMIT);
+    assert_string_equal(e.message, want);
+    list = spans_of(s, -2, 5, 0.5, 1, 0, 0, 0); /* misses the implicit's box */
+    assert_int_equal(sc_span_list_count(list), 0);
+    sc_span_list_release(list);
+    sc_scene_release(s);
+}
+
 /* The pixel ray is the one render shoots: its first span's t |d| is the
  * depth render writes at that pixel, for every pixel of a small image of
  * the drilled cube, in perspective and orthographic views. */
@@ -321,6 +359,7 @@ int main(void)
         cmocka_unit_test(test_subtracted_surface),
         cmocka_unit_test(test_membership),
         cmocka_unit_test(test_errors),
+        cmocka_unit_test(test_ray_limit),
         cmocka_unit_test(test_pixel_ray_matches_depth),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

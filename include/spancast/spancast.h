@@ -550,8 +550,11 @@ typedef struct sc_span_list sc_span_list;
  * *out belongs to the caller (release with sc_span_list_release) and may
  * hold no spans; on failure *out is NULL and error says why:
  * SC_ERR_ARGUMENT for a direction that is zero or a value that is not
- * finite or a query never set up, SC_ERR_NOMEM. The scene is only read: calls on one
- * scene from several threads at once are safe. */
+ * finite or a query never set up, SC_ERR_NOMEM, and SC_ERR_LIMIT (at the
+ * leaf's position) when an implicit surface needs more than 2^22
+ * evaluations to resolve along the line, whose spans past that point
+ * would be unsearched: no list is ever cut short silently. The scene is
+ * only read: calls on one scene from several threads at once are safe. */
 sc_status sc_scene_spans(const sc_scene *scene, const sc_ray_query *query,
                          sc_span_list **out, sc_error *error);
 
@@ -591,7 +594,8 @@ typedef enum sc_where { SC_OUTSIDE = 0, SC_INSIDE = 1, SC_ON = 2 } sc_where;
  * surface never is. Otherwise SC_INSIDE when p lies inside a span of at
  * least two of the three lines (they agree except where a line grazes a
  * surface), else SC_OUTSIDE. Returns SC_ERR_ARGUMENT for a coordinate that
- * is not finite, SC_ERR_NOMEM. Thread safe. */
+ * is not finite, SC_ERR_NOMEM, and SC_ERR_LIMIT as sc_scene_spans does for
+ * one of the lines. Thread safe. */
 sc_status sc_scene_inside(const sc_scene *scene, const double p[3], int *where,
                           sc_error *error);
 

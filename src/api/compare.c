@@ -171,18 +171,7 @@ static sc_status compare_scenes(const sc_scene *a, const sc_scene *b,
         out->lines = grids[0].lines + grids[1].lines + grids[2].lines;
     }
     int failed = grids[0].failed || grids[1].failed || grids[2].failed;
-    int limited = 0;
-    for (int g = 0; g < 3 && st == SC_ERR_LIMIT && !limited; g++) {
-        const quad_grid *q = &grids[g];
-        if (!q->limit_reason)
-            continue;
-        /* the leaf is one of a's or one of b's */
-        int in_b = q->limit_leaf < tb->leaf_count &&
-                   &tb->leaves[q->limit_leaf].prim == q->limit_prim;
-        render_limit_error(in_b ? tb : ta, q->limit_reason, q->limit_leaf, q->limit_prim,
-                           error);
-        limited = 1;
-    }
+    int limited = st == SC_ERR_LIMIT && quad_limit_error(grids, ta, tb, error);
     for (int g = 0; g < 3; g++)
         quad_free(&grids[g]);
     lines_scratch_free(&shared.work);

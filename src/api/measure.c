@@ -364,13 +364,7 @@ static sc_status measure_scene(const sc_scene *scene, const sc_measure_options *
         }
     }
     int failed = grids[0].failed || grids[1].failed || grids[2].failed;
-    const quad_grid *limited = NULL;
-    for (int a = 0; a < 3; a++)
-        if (grids[a].limit_reason && !limited)
-            limited = &grids[a];
-    if (st == SC_ERR_LIMIT && limited)
-        render_limit_error(t, limited->limit_reason, limited->limit_leaf,
-                           limited->limit_prim, error);
+    int limited = st == SC_ERR_LIMIT && quad_limit_error(grids, t, NULL, error);
     for (int a = 0; a < 3; a++)
         quad_free(&grids[a]);
     lines_scratch_free(&shared.work);

@@ -256,10 +256,11 @@ static int sample_pair(void *context, int thread, double u, double v, double *va
 }
 
 /* The overlap of trees a and b within the box lo..hi into *out; *found is
- * 0 when they share no volume. */
+ * 0 when they share no volume. SC_ERR_LIMIT comes with error filled at
+ * the leaf that passed the limit. */
 static sc_status overlap_pair(const csg_tree *ta, const csg_tree *tb, const double lo[3],
                               const double hi[3], const sc_measure_options *options,
-                              int threads, sc_overlap *out, int *found)
+                              int threads, sc_overlap *out, int *found, sc_error *error)
 {
     pair_shared shared = {ta, tb, {0}};
     if (!lines_scratch_init(&shared.work, threads, 1))
@@ -289,6 +290,8 @@ static sc_status overlap_pair(const csg_tree *ta, const csg_tree *tb, const doub
     }
     if (st == SC_ERR_ARGUMENT && (grids[0].failed || grids[1].failed || grids[2].failed))
         st = SC_ERR_NOMEM; /* bounded trees: the sampler fails only for memory */
+    if (st == SC_ERR_LIMIT)
+        quad_limit_error(grids, ta, tb, error);
     for (int a = 0; a < 3; a++)
         quad_free(&grids[a]);
     lines_scratch_free(&shared.work);
@@ -344,20 +347,15 @@ static sc_status find_overlaps(const sc_objects *objects,
             sc_overlap pair;
             memset(&pair, 0, sizeof pair);
             int found = 0;
-            sc_status st = overlap_pair(ta, tb, lo, hi, options, threads, &pair, &found);
+            sc_status st =
+                overlap_pair(ta, tb, lo, hi, options, threads, &pair, &found, error);
             if (st) {
                 free(list);
                 *count = 0;
                 if (st == SC_ERR_CANCELLED)
                     return err_set(error, st, NULL, "overlap search cancelled");
                 if (st == SC_ERR_LIMIT)
-                    return err_set(
-                        error, st, NULL,
-                        "implicit surfaces of object %zu or %zu need more than "
-                        "%u evaluations per line on average (limit is %u, "
-                        "after the first %u)",
-                        i + 1, j + 1, RENDER_IMPLICIT_EVALS_PER_RAY,
-                        RENDER_IMPLICIT_EVALS_PER_RAY, RENDER_MIN_IMPLICIT_EVALS);
+                    return st;
                 return err_nomem(error, NULL);
             }
             if (!found)

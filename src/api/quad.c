@@ -599,3 +599,19 @@ sc_estimate quad_combine(const quad_grid grids[3], int k)
     e.error = own + spread;
     return e;
 }
+
+int quad_limit_error(const quad_grid grids[3], const csg_tree *ta, const csg_tree *tb,
+                     sc_error *error)
+{
+    for (int g = 0; g < 3; g++) {
+        const quad_grid *q = &grids[g];
+        if (!q->limit_reason)
+            continue;
+        int in_b = tb && q->limit_leaf < tb->leaf_count &&
+                   &tb->leaves[q->limit_leaf].prim == q->limit_prim;
+        render_limit_error(in_b ? tb : ta, q->limit_reason, q->limit_leaf, q->limit_prim,
+                           error);
+        return 1;
+    }
+    return 0;
+}

@@ -53,6 +53,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "csg/csg.h"
 #include "spancast/spancast.h"
 
 /* The values of the line through (u, v) into values[0..nvalues), and the
@@ -106,6 +107,13 @@ typedef struct quad_grid {
     uint32_t limit_leaf;
     const void *limit_prim;
 } quad_grid;
+
+/* When one of the three grids of an integral ended on a limit of
+ * implicit work (limit_reason), fills error with render_limit_error at
+ * its leaf, which is one of ta's or of tb's (tb may be NULL), and returns
+ * 1; otherwise returns 0 and leaves error alone. */
+int quad_limit_error(const quad_grid grids[3], const csg_tree *ta, const csg_tree *tb,
+                     sc_error *error);
 
 /* Starts the integration over [lo0, hi0] x [lo1, hi1] with about base
  * cells of nearly square shape (at least 4 a side) and samples them.

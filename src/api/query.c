@@ -17,6 +17,7 @@
 
 #include "api/options.h"
 #include "base/arena.h"
+#include "base/cancel.h"
 #include "base/error.h"
 #include "base/sized.h"
 #include "build/scene.h"
@@ -68,12 +69,27 @@ static void describe_end(const csg_tree *t, const csg_ray *r, const span_end *e,
     out->normal[2] = n.z + 0.0;
 }
 
-/* The tree's spans along r, from a fresh scratch arena the caller frees.
- * Returns 0 on allocation failure. */
-static int line_spans(const csg_tree *t, const csg_ray *r, arena *scratch, span_list *out)
+/* The tree's spans along r, from a fresh scratch arena the caller frees
+ * (also on failure). The query runs in a cancel token of its own, without
+ * a flag or a budget, only to learn whether an implicit leaf gave up on
+ * the line at the root finder's bound (SOLVE_MAX_EVALS): its spans would
+ * then be cut short, so that is SC_ERR_LIMIT at the leaf rather than a
+ * silently truncated answer. Also SC_ERR_NOMEM. */
+static sc_status line_spans(const csg_tree *t, const csg_ray *r, arena *scratch,
+                            span_list *out, sc_error *error)
 {
     arena_init(scratch, 16 * 1024);
-    return csg_spans(t, r, scratch, out);
+    cancel_token token;
+    cancel_init(&token, NULL, 0);
+    cancel_scope scope;
+    cancel_enter(&scope, &token);
+    int ok = csg_spans(t, r, scratch, out);
+    cancel_leave(&scope);
+    cancel_reason reason = cancel_check(&token);
+    if (reason != CANCEL_NONE)
+        return render_limit_error(t, (int)reason, atomic_load(&token.leaf),
+                                  atomic_load(&token.prim), error);
+    return ok ? SC_OK : err_nomem(error, NULL);
 }
 
 sc_status sc_scene_spans(const sc_scene *scene, const sc_ray_query *query,
@@ -103,9 +119,10 @@ sc_status sc_scene_spans(const sc_scene *scene, const sc_ray_query *query,
     r.tmax = INFINITY;
     arena scratch;
     span_list spans;
-    if (!line_spans(t, &r, &scratch, &spans)) {
+    sc_status st = line_spans(t, &r, &scratch, &spans, error);
+    if (st != SC_OK) {
         arena_free(&scratch);
-        return err_nomem(error, NULL);
+        return st;
     }
     sc_span_list *list = malloc(sizeof *list + (size_t)spans.n * sizeof list->spans[0]);
     if (!list) {
@@ -201,9 +218,10 @@ sc_status sc_scene_inside(const sc_scene *scene, const double p[3], int *where,
         double eps = csg_eps(t, r.o, r.d);
         arena scratch;
         span_list spans;
-        if (!line_spans(t, &r, &scratch, &spans)) {
+        sc_status st = line_spans(t, &r, &scratch, &spans, error);
+        if (st != SC_OK) {
             arena_free(&scratch);
-            return err_nomem(error, NULL);
+            return st;
         }
         int on = 0, in = 0;
         for (uint32_t k = 0; k < spans.n; k++) {

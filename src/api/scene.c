@@ -19,6 +19,7 @@
 
 #include "api/options.h"
 #include "base/error.h"
+#include "base/mem.h"
 #include "base/sized.h"
 #include "build/build.h"
 #include "model/model.h"
@@ -86,6 +87,9 @@ static sc_status load(const char *name, const char *text, size_t length, char *o
     model_free(typed);
     parse_tree_free(syntax);
     if (st != SC_OK) {
+        char what[64];
+        snprintf(what, sizeof what, "loading '%.48s'", s->path);
+        mem_blame(error, what);
         sc_scene_release(s);
         return st;
     }

@@ -5,6 +5,8 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "base/mem.h"
+
 static void copy_string(char *dst, size_t size, const char *src)
 {
     size_t n = strlen(src);
@@ -60,5 +62,11 @@ const char *sc_error_format(const sc_error *error, char *buf, size_t size)
 
 sc_status err_nomem(sc_error *error, const sc_location *loc)
 {
-    return err_set(error, SC_ERR_NOMEM, loc, "out of memory");
+    uint64_t limit = mem_limit();
+    if (!limit)
+        return err_set(error, SC_ERR_NOMEM, loc, "out of memory");
+    char text[32];
+    return err_set(error, SC_ERR_NOMEM, loc,
+                   "out of memory (the memory limit of %s is reached)",
+                   mem_format(limit, text, sizeof text));
 }

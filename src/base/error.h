@@ -20,7 +20,8 @@ sc_status err_set(sc_error *error, sc_status status, const sc_location *loc,
                   const char *format, ...) SC_PRINTF(4, 5);
 
 /* err_nomem(error, loc): the one message of a
- * failed allocation, at loc (NULL: no position). */
+ * failed allocation, at loc (NULL: no position): "out of memory", and
+ * under a memory limit (base/mem.h) which limit was reached. */
 sc_status err_nomem(sc_error *error, const sc_location *loc);
 
 /* Clears *error to SC_OK with an empty message. */

@@ -98,6 +98,12 @@ void cli_catch_interrupts(void);
 /* --max-time=SECONDS: records the limit; 0 or a usage exit status. */
 int cli_parse_max_time(const char *value);
 
+/* Takes every --max-memory=SIZE (or --max-memory SIZE) out of argv,
+ * before the command reads it, and sets the process's memory limit
+ * (RLIMIT_DATA) to it: every command obeys it. 0 or a usage exit
+ * status. */
+int cli_take_max_memory(int *argc, char **argv);
+
 /* Starts and stops the --max-time clock (no-op without the option). */
 void cli_start_clock(void);
 void cli_stop_clock(void);

@@ -101,8 +101,8 @@ static const char usage_text[] =
     "passes --tolerance, default 1e-6 of the larger volume, or a view has more\n"
     "than --max-pixels, default 0, mismatched pixels away from silhouette\n"
     "edges; --diff=PREFIX writes PREFIXpx.png ... PREFIXdiagonal.png).\n"
-    "These take --threads=N, --json, --faithful, --max-time=SECONDS and -q (no\n"
-    "progress on stderr);\n"
+    "These take --threads=N, --json, --faithful, --max-time=SECONDS,\n"
+    "--max-memory=SIZE and -q (no progress on stderr);\n"
     "overlaps and compare exit 2 on any error.\n"
     "'batch' runs the spancast command of each line of JOBS (shell quoting, '#'\n"
     "comments, paths relative to JOBS' folder), each once, across the ranks\n"
@@ -184,6 +184,8 @@ static const char usage_text[] =
     "limits:\n"
     "  --max-time=SECONDS     give up after this long (loading included), with an\n"
     "                         error and exit status 1; with --watch, per render\n"
+    "  --max-memory=SIZE      never use more memory than SIZE (512M, 2G; every\n"
+    "                         command): past it, an error and exit status 1\n"
     "\n"
     "report options:\n"
     "  --stats[=json]         print rays by kind, primitive tests, span operations\n"
@@ -1103,6 +1105,9 @@ int cli_apply_camera_option(sc_render_options *options, const char *name, size_t
 
 int main(int argc, char **argv)
 {
+    int limited = cli_take_max_memory(&argc, argv);
+    if (limited)
+        return limited;
     if (argc > 1 && !strcmp(argv[1], "view"))
         return run_view(argv); /* spancast-view reads its own --help */
     for (int k = 1; k < argc && strcmp(argv[k], "--"); k++) {

@@ -1,4 +1,4 @@
-/* Stopping a command: SIGINT, SIGTERM and --max-time.
+/* Stopping a command: SIGINT, SIGTERM, --max-time and --max-memory.
  *
  * The handler only records the signal in cli_stop (a volatile
  * sig_atomic_t: a handler has nowhere else to write), which the library
@@ -16,6 +16,18 @@
  * process from the handler at once, with only async-signal-safe calls
  * (write, _exit, raise). A .scad conversion is not such a stretch: its
  * OpenSCAD process is killed and its temporary files removed (scad.c).
+ *
+ * --max-memory=SIZE sets the process's RLIMIT_DATA before the command
+ * starts (base/mem.h): the kernel then refuses every allocation past it,
+ * which the library turns into a clean error naming the limit, and the
+ * library compares its large allocations with what the limit leaves
+ * before it makes them. RLIMIT_DATA, not RLIMIT_AS: the address space
+ * also counts what is reserved and never used (the shared libraries'
+ * mappings, malloc's per-thread arenas of 64 MiB each), so a limit on it
+ * would measure the machine's thread count rather than the model. The
+ * option is taken out of argv in main, so that it applies to every
+ * command alike; child processes (OpenSCAD, the ranks of a batch) inherit
+ * the limit.
  */
 #define _POSIX_C_SOURCE 200809L
 
@@ -23,9 +35,12 @@
 #include <signal.h>
 #include <stdio.h>
 #include <string.h>
+#include <stdlib.h>
+#include <sys/resource.h>
 #include <sys/time.h>
 #include <unistd.h>
 
+#include "base/mem.h"
 #include "cli/cli.h"
 
 volatile sig_atomic_t cli_stop;
@@ -142,4 +157,98 @@ int cli_die_stopped(void)
     signal(sig, SIG_DFL);
     raise(sig);
     return 128 + sig; /* not reached */
+}
+
+/* SIZE: a number of bytes, or of KiB, MiB, GiB or TiB with the suffix K,
+ * M, G or T (upper or lower case, "iB" or "B" after it allowed): 512M,
+ * 1.5G. 0 when it is not one. */
+static int parse_size(const char *value, double *bytes)
+{
+    char *end;
+    double v = strtod(value, &end);
+    if (end == value || !(v > 0) || !isfinite(v))
+        return 0;
+    static const char units[] = "KMGT";
+    const char *unit = *end ? strchr(units, *end & ~0x20) : NULL;
+    if (*end && (!unit || !*unit))
+        return 0;
+    if (unit) {
+        v *= pow(1024, (double)(unit - units + 1));
+        end++;
+        if (!strcmp(end, "iB") || !strcmp(end, "B"))
+            end += strlen(end);
+    }
+    if (*end)
+        return 0;
+    *bytes = v;
+    return 1;
+}
+
+/* Each thread of a render or a measure but the first needs its stack
+ * (RLIMIT_STACK, 8 MiB by default) inside the limit, besides the process
+ * as it starts and 16 MiB to work in: a limit smaller than that would
+ * fail in the OpenMP runtime, which ends the process without the
+ * library's error ("libgomp: Thread creation failed"), so it is refused
+ * up front. With 2 threads a small render needs 16 MiB in all. */
+static uint64_t least_memory(void)
+{
+    struct rlimit stack;
+    uint64_t per_thread = 8u << 20;
+    if (getrlimit(RLIMIT_STACK, &stack) == 0 && stack.rlim_cur != RLIM_INFINITY &&
+        stack.rlim_cur > 0)
+        per_thread = (uint64_t)stack.rlim_cur;
+    long cores = sysconf(_SC_NPROCESSORS_ONLN);
+    uint64_t threads = cores > 0 ? (uint64_t)cores : 1;
+    return mem_in_use() + threads * per_thread + (16u << 20);
+}
+
+static int apply_max_memory(const char *value)
+{
+    double bytes;
+    if (!parse_size(value, &bytes) || bytes >= 0x1p62)
+        return cli_usage_error(
+            "--max-memory expects a size such as 512M or 2G (got '%s')", value);
+    uint64_t least = least_memory();
+    char text[32];
+    if (bytes < (double)least)
+        return cli_usage_error("--max-memory=%s is below the %s that spancast needs to "
+                               "start its threads on this machine",
+                               value, mem_format(least, text, sizeof text));
+    struct rlimit limit;
+    if (getrlimit(RLIMIT_DATA, &limit) != 0)
+        return cli_usage_error("--max-memory: cannot read the memory limit");
+    rlim_t want = (rlim_t)bytes;
+    if (limit.rlim_max != RLIM_INFINITY && want > limit.rlim_max)
+        want = limit.rlim_max; /* a lower hard limit stays the limit */
+    limit.rlim_cur = want;
+    if (setrlimit(RLIMIT_DATA, &limit) != 0)
+        return cli_usage_error("--max-memory: cannot set the memory limit");
+    return 0;
+}
+
+int cli_take_max_memory(int *argc, char **argv)
+{
+    static const char name[] = "--max-memory";
+    const size_t length = sizeof name - 1;
+    for (int k = 1; k < *argc && strcmp(argv[k], "--"); k++) {
+        if (strncmp(argv[k], name, length) != 0 ||
+            (argv[k][length] != '=' && argv[k][length] != '\0'))
+            continue;
+        int used = 1;
+        const char *value = argv[k] + length + 1;
+        if (argv[k][length] == '\0') {
+            if (k + 1 >= *argc)
+                return cli_usage_error("--max-memory expects a size such as 512M or 2G");
+            value = argv[k + 1];
+            used = 2;
+        }
+        int st = apply_max_memory(value);
+        if (st)
+            return st;
+        for (int j = k; j + used <= *argc; j++)
+            argv[j] = argv[j + used]; /* argv[argc] is NULL and moves too */
+        *argc -= used;
+        k--;
+    }
+    return 0;
 }

@@ -8,7 +8,9 @@
  * An implicit's expression is compiled here, once; a syntax error in it is
  * reported at the offending character inside the string literal (its file
  * line and column, escapes and raw line breaks accounted for by
- * lex_string_locate). The default tolerance is 1e-6 of the box's largest
+ * lex_string_locate). A field that no ray can resolve (a trigonometric
+ * argument past 2^53 within the box) is refused here too, at the node. The
+ * default tolerance is 1e-6 of the box's largest
  * side; the default Lipschitz bound (used only by method "lipschitz") is
  * the builder's to estimate (solve_estimate_lipschitz), where the leaf is
  * built.
@@ -183,6 +185,27 @@ static sc_status params_arg(const model_reader *c, const parse_node *n,
     return SC_OK;
 }
 
+/* Refuses a field whose sin, cos or tan argument can pass 2^53 within its
+ * box (an interval bound): past it neighbouring doubles lie farther apart
+ * than a third of the period, so the values are noise at every scale and
+ * no ray could resolve the surface. Refused here, with the leaf's
+ * position, so that a load fails on it rather than a render after it. */
+static sc_status check_resolvable(const model_reader *c, const parse_node *n,
+                                  const expr_program *program, const bbox *box)
+{
+    expr_op op;
+    double reach = expr_trig_reach(program, ix_make(box->lo.x, box->hi.x),
+                                   ix_make(box->lo.y, box->hi.y),
+                                   ix_make(box->lo.z, box->hi.z), &op);
+    if (reach > EXPR_TRIG_MAX_ARGUMENT)
+        return err_set(c->error, SC_ERR_LIMIT, &n->loc,
+                       "implicit surface is not resolvable: the argument of %s reaches "
+                       "%.3g within its bounds (beyond 2^53, where doubles are farther "
+                       "apart than its period)",
+                       expr_op_name(op), reach);
+    return SC_OK;
+}
+
 /* implicit(f, bounds, method = "interval", tolerance, params, lipschitz) */
 sc_status model_read_implicit(const model_reader *c, const parse_node *n,
                               model_implicit *out)
@@ -236,6 +259,8 @@ sc_status model_read_implicit(const model_reader *c, const parse_node *n,
                           e.offset, &loc.line, &loc.column);
         return err_set(c->error, SC_ERR_SYNTAX, &loc, "%s", e.message);
     }
+    if (!out->empty && (st = check_resolvable(c, n, &out->program, &box)) != SC_OK)
+        return st;
     out->box = box;
     out->tolerance = tolerance;
     out->lipschitz = has_lipschitz ? lipschitz : 0;

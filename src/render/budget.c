@@ -29,16 +29,18 @@
 #define _DEFAULT_SOURCE /* sysconf(_SC_PHYS_PAGES) */
 
 #include <stdint.h>
+#include <stdio.h>
 #include <unistd.h>
 
 #include "base/cancel.h"
 #include "base/error.h"
-#include "implicit/expr.h"
+#include "base/mem.h"
 #include "implicit/solve.h"
 #include "render/render.h"
 
 /* Checks, before anything is allocated, that the buffers options ask for
- * fit in RENDER_MAX_MEMORY_GIB and in the machine's physical memory, so that
+ * fit in RENDER_MAX_MEMORY_GIB, in what the process's memory limit leaves
+ * (base/mem.h) and in the machine's physical memory, so that
  * a huge image is a clear error rather than an out-of-memory kill. The
  * sizes cannot overflow: at most 2^36 pixels of 33 bytes. */
 sc_status render_check_memory(const sc_render_options *o, sc_error *error)
@@ -53,6 +55,11 @@ sc_status render_check_memory(const sc_render_options *o, sc_error *error)
         return err_set(error, SC_ERR_LIMIT, NULL,
                        "a %dx%d render needs %.1f GiB of image buffers (limit is %d GiB)",
                        o->width, o->height, gib, RENDER_MAX_MEMORY_GIB);
+    char who[48];
+    snprintf(who, sizeof who, "a %dx%d render", o->width, o->height);
+    sc_status st = mem_reserve(bytes, who, "its image buffers", error);
+    if (st != SC_OK)
+        return st;
     long pages = sysconf(_SC_PHYS_PAGES), page_size = sysconf(_SC_PAGESIZE);
     if (pages > 0 && page_size > 0 && bytes > (uint64_t)pages * (uint64_t)page_size)
         return err_set(error, SC_ERR_LIMIT, NULL,
@@ -96,25 +103,4 @@ sc_status render_stop_error(const csg_tree *tree, cancel_token *token, sc_error 
         return render_limit_error(tree, (int)reason, atomic_load(&token->leaf),
                                   atomic_load(&token->prim), error);
     return err_set(error, SC_ERR_CANCELLED, NULL, "interrupted");
-}
-
-sc_status render_check_fields(const csg_tree *tree, sc_error *error)
-{
-    for (uint32_t k = 0; k < tree->leaf_count; k++) {
-        const csg_leaf *leaf = &tree->leaves[k];
-        if (leaf->prim.kind != PRIM_IMPLICIT || !leaf->prim.u.implicit.program)
-            continue;
-        const bbox *b = &leaf->prim.u.implicit.box;
-        expr_op op;
-        double reach =
-            expr_trig_reach(leaf->prim.u.implicit.program, ix_make(b->lo.x, b->hi.x),
-                            ix_make(b->lo.y, b->hi.y), ix_make(b->lo.z, b->hi.z), &op);
-        if (reach > EXPR_TRIG_MAX_ARGUMENT)
-            return err_set(error, SC_ERR_LIMIT, leaf->loc.line > 0 ? &leaf->loc : NULL,
-                           "implicit surface is not resolvable: the argument of %s "
-                           "reaches %.3g within its bounds (beyond 2^53, where doubles "
-                           "are farther apart than its period)",
-                           expr_op_name(op), reach);
-    }
-    return SC_OK;
 }

@@ -578,8 +578,6 @@ sc_status render_scene(const csg_tree *tree, const shading *look,
     }
     options = &own;
     sc_status st = check_options(options, error);
-    if (st == SC_OK)
-        st = render_check_fields(tree, error);
     if (st)
         return st;
 

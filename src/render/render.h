@@ -70,11 +70,6 @@ struct cancel_token;
  * (budget.c) */
 uint64_t render_work_credit(const sc_render_options *options);
 
-/* Refuses, before any ray, a tree whose implicit leaves cannot be
- * resolved at any scale: a sin, cos or tan whose argument can pass 2^53
- * within the leaf's box (SC_ERR_LIMIT at the leaf). (budget.c) */
-sc_status render_check_fields(const csg_tree *tree, sc_error *error);
-
 /* The error of a work limit (cancel_reason reason: CANCEL_RAY_LIMIT or
  * CANCEL_BUDGET) passed at leaf (primitive prim), at the leaf's position
  * when it is one of tree's (tree may be NULL). (budget.c) */

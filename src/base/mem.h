@@ -1,0 +1,50 @@
+/* The memory limit of the process, for the checks before large
+ * allocations and for the message of a failed one.
+ *
+ * The limit is the process's own RLIMIT_DATA (setrlimit; `spancast
+ * --max-memory` sets it): the kernel refuses every private writable
+ * mapping past it (the heap, malloc's mmaps, thread stacks), so an
+ * allocation past it fails with NULL, which every caller turns into
+ * SC_ERR_NOMEM, instead of succeeding on overcommit and killing the
+ * process when its pages are touched. The library keeps no limit of its
+ * own (it has no global state): a program that sets RLIMIT_DATA gets the
+ * same checks.
+ *
+ * On top of that backstop, the few allocations whose size is known before
+ * they are made and that can be large (a render's image buffers) are
+ * compared first with what the limit leaves, through mem_reserve, so that
+ * the error names what needed the memory and how much, before any work. A
+ * failed allocation anywhere else says "out of memory" and, under a limit,
+ * which limit was reached (err_nomem).
+ */
+#ifndef SPANCAST_BASE_MEM_H
+#define SPANCAST_BASE_MEM_H
+
+#include <stdint.h>
+
+#include "spancast/spancast.h"
+
+/* The soft RLIMIT_DATA of the process in bytes, 0 when there is none. */
+uint64_t mem_limit(void);
+
+/* The process's data memory now, as RLIMIT_DATA counts it (VmData of
+ * /proc/self/status), in bytes; 0 when it cannot be read. */
+uint64_t mem_in_use(void);
+
+/* Whether bytes more fit under the limit now: SC_OK (also without a
+ * limit), or SC_ERR_LIMIT with "WHO needs N MiB for WHAT, more than the
+ * memory limit of L MiB leaves (U MiB in use)": who and what are noun
+ * phrases ("a 4000x3000 render", "its image buffers"). */
+sc_status mem_reserve(uint64_t bytes, const char *who, const char *what, sc_error *error);
+
+/* Under a memory limit, rewrites an SC_ERR_NOMEM error without a source
+ * position to name the work that needed the memory: "WHAT ran out of
+ * memory: the memory limit of L MiB is reached" (what: "loading
+ * 'm.csg'"). Any other error, or no limit, is left as it is. */
+void mem_blame(sc_error *error, const char *what);
+
+/* Writes bytes as "12.3 MiB" (or KiB, GiB) into buf of size n; returns
+ * buf. */
+const char *mem_format(uint64_t bytes, char *buf, int n);
+
+#endif
