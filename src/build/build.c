@@ -651,8 +651,8 @@ static sc_status mark_part(builder *b, const model_node *n, const frame *parent)
     if (b->part || !(parent->shown || n->is_root))
         return SC_OK;
     for (int kind = 0; kind < SHADING_OVERLAYS; kind++) {
-        unsigned modifier =
-            kind == SHADING_OVERLAY_HIGHLIGHT ? MODEL_MOD_HIGHLIGHT : MODEL_MOD_BACKGROUND;
+        unsigned modifier = kind == SHADING_OVERLAY_HIGHLIGHT ? MODEL_MOD_HIGHLIGHT
+                                                              : MODEL_MOD_BACKGROUND;
         if (!(n->modifiers & modifier))
             continue;
         if (!grow_array((void **)&b->marks, &b->mark_cap, b->mark_count + 1,
@@ -901,9 +901,8 @@ static sc_status build_parts(builder *b)
             if (part == SC_ERR_NOMEM)
                 st = err_nomem(b->error, NULL);
             else if (part != SC_OK)
-                st = warn(b, &m->node->loc,
-                          "'%c' subtree is left out of the preview: %s", modifier[kind],
-                          error.message);
+                st = warn(b, &m->node->loc, "'%c' subtree is left out of the preview: %s",
+                          modifier[kind], error.message);
             else
                 done++;
         }
