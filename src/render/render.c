@@ -743,6 +743,10 @@ sc_status render_scene(const csg_tree *tree, const shading *look,
     for (int k = 0; k < 3; k++)
         c.edge_color[k] = color_srgb_to_linear(options->scheme.edge[k]);
     bbox bounds = tree->root == CSG_EMPTY ? bbox_empty() : tree->bounds;
+    /* The preview frames its modifier parts too, as OpenSCAD's does. */
+    for (int k = 0; options->preview && look && k < SHADING_OVERLAYS; k++)
+        if (look->overlay[k] && look->overlay[k]->root != CSG_EMPTY)
+            bounds = bbox_union(bounds, look->overlay[k]->bounds);
     c.views = calloc((size_t)c.view_count, sizeof *c.views);
     if (!c.views)
         return err_nomem(error, NULL);
