@@ -82,6 +82,36 @@ static void assert_same_color(const sc_framebuffer *a, const sc_framebuffer *b)
     assert_memory_equal(a->color, b->color, (size_t)SIZE * SIZE * 3 * sizeof(float));
 }
 
+/* A file in two variants (format's %s replaced by a and by b), each
+ * rendered with --preview and without: without it (OpenSCAD's render)
+ * the two images are the same, and with it the AOVs are. */
+typedef struct variants {
+    sc_framebuffer *a, *b;               /* with --preview */
+    sc_framebuffer *render_a, *render_b; /* without */
+} variants;
+
+static void render_variants(const char *format, const char *a, const char *b, variants *v)
+{
+    char text[1024];
+    snprintf(text, sizeof text, format, a);
+    v->a = render_text(text, 1);
+    v->render_a = render_text(text, 0);
+    snprintf(text, sizeof text, format, b);
+    v->b = render_text(text, 1);
+    v->render_b = render_text(text, 0);
+    assert_same_color(v->render_a, v->render_b);
+    assert_same_aovs(v->render_a, v->render_b);
+    assert_same_aovs(v->a, v->b);
+}
+
+static void release_variants(variants *v)
+{
+    sc_framebuffer_release(v->a);
+    sc_framebuffer_release(v->b);
+    sc_framebuffer_release(v->render_a);
+    sc_framebuffer_release(v->render_b);
+}
+
 static const char drilled[] =
     "difference() {\n"
     "  cube(size = [30, 30, 10], center = true);\n"
@@ -98,16 +128,9 @@ static const char drilled[] =
 static void test_highlight_in_hole(void **state)
 {
     (void)state;
-    char marked[sizeof drilled + 4], plain[sizeof drilled + 4];
-    snprintf(marked, sizeof marked, drilled, "#");
-    snprintf(plain, sizeof plain, drilled, "");
-    sc_framebuffer *shown = render_text(marked, 1);
-    sc_framebuffer *without = render_text(plain, 1);
-    sc_framebuffer *render_mode = render_text(marked, 0);
-    sc_framebuffer *render_plain = render_text(plain, 0);
-    assert_same_color(render_mode, render_plain);
-    assert_same_aovs(render_mode, render_plain);
-    assert_same_aovs(shown, without);
+    variants v;
+    render_variants(drilled, "#", "", &v);
+    const sc_framebuffer *shown = v.a, *without = v.b;
 
     /* OpenSCAD's highlight: (255, 81, 81), alpha 128/255. The lit colour
      * is 255/255 f and 81/255 f for an unknown light factor f, clamped to
@@ -145,18 +168,15 @@ static void test_highlight_in_hole(void **state)
                          under[2]);
         }
     assert_true(inside > 2 * radius * radius); /* most of the disc */
-    sc_framebuffer_release(shown);
-    sc_framebuffer_release(without);
-    sc_framebuffer_release(render_mode);
-    sc_framebuffer_release(render_plain);
+    release_variants(&v);
 }
 
-static const char background_part[] =
-    "cube(size = [20, 20, 10], center = true);\n"
-    "%smultmatrix([[1, 0, 0, 5], [0, 1, 0, 0], [0, 0, 1, 4], [0, 0, 0, 1]])\n"
-    "{ sphere(r = 6, $fn = 0, $fa = 12, $fs = 2); }\n";
+static const char background_part[] = "cube(size = [20, 20, 10], center = true);\n"
+                                      "%s";
 
-static const char box_alone[] = "cube(size = [20, 20, 10], center = true);\n";
+static const char sphere_part[] =
+    "multmatrix([[1, 0, 0, 5], [0, 1, 0, 0], [0, 0, 1, 4], [0, 0, 0, 1]])\n"
+    "{ sphere(r = 6, $fn = 0, $fa = 12, $fs = 2); }\n";
 
 /* A '%' sphere half over a box changes no mask, depth or id pixel, and is
  * drawn translucent where it is: grey (OpenSCAD's 180, 180, 180, alpha
@@ -164,14 +184,15 @@ static const char box_alone[] = "cube(size = [20, 20, 10], center = true);\n";
 static void test_background_changes_no_aov(void **state)
 {
     (void)state;
-    char marked[sizeof background_part + 4], united[sizeof background_part + 4];
-    snprintf(marked, sizeof marked, background_part, "%");
-    snprintf(united, sizeof united, background_part, "");
-    sc_framebuffer *shown = render_text(marked, 1);
-    sc_framebuffer *without = render_text(box_alone, 1);
-    assert_same_aovs(shown, without);
+    char marked[sizeof sphere_part + 1];
+    snprintf(marked, sizeof marked, "%%%s", sphere_part);
+    variants v;
+    render_variants(background_part, marked, "", &v);
+    const sc_framebuffer *shown = v.a, *without = v.b;
     /* Without the modifier the sphere is part of the solid and the mask
-     * grows there, so the comparison above could fail. */
+     * grows there, so the comparison of the AOVs could fail. */
+    char united[sizeof background_part + sizeof sphere_part];
+    snprintf(united, sizeof united, background_part, sphere_part);
     sc_framebuffer *solid = render_text(united, 1);
     assert_int_equal(solid->mask[pixel_at(10.5, 0)], 255);
     assert_int_equal(without->mask[pixel_at(10.5, 0)], 0);
@@ -193,8 +214,7 @@ static void test_background_changes_no_aov(void **state)
     size_t far = pixel_at(-8, -8);
     assert_memory_equal(&shown->color[3 * far], &without->color[3 * far],
                         3 * sizeof(float));
-    sc_framebuffer_release(shown);
-    sc_framebuffer_release(without);
+    release_variants(&v);
 }
 
 static const char alpha_cube[] = "color([0.2, 0.4, 0.9, %s]) {\n"
@@ -207,15 +227,9 @@ static const char alpha_cube[] = "color([0.2, 0.4, 0.9, %s]) {\n"
 static void test_alpha_blends(void **state)
 {
     (void)state;
-    char half[sizeof alpha_cube + 8], opaque[sizeof alpha_cube + 8];
-    snprintf(half, sizeof half, alpha_cube, "0.5");
-    snprintf(opaque, sizeof opaque, alpha_cube, "1");
-    sc_framebuffer *blended = render_text(half, 1);
-    sc_framebuffer *solid = render_text(opaque, 1);
-    sc_framebuffer *render_mode = render_text(half, 0);
-    sc_framebuffer *render_opaque = render_text(opaque, 0);
-    assert_same_color(render_mode, render_opaque);
-    assert_same_aovs(blended, solid);
+    variants v;
+    render_variants(alpha_cube, "0.5", "1", &v);
+    const sc_framebuffer *blended = v.a, *solid = v.b;
     size_t bg = pixel_at(-15, -15), centre = pixel_at(1, 1);
     assert_int_equal(solid->mask[bg], 0);
     assert_int_equal(solid->mask[centre], 255);
@@ -225,10 +239,7 @@ static void test_alpha_blends(void **state)
         if (fabs(got - want) > BLEND_TOLERANCE)
             fail_msg("channel %d: %.6f, expected %.6f", k, got, want);
     }
-    sc_framebuffer_release(blended);
-    sc_framebuffer_release(solid);
-    sc_framebuffer_release(render_mode);
-    sc_framebuffer_release(render_opaque);
+    release_variants(&v);
 }
 
 int main(void)
