@@ -39,28 +39,39 @@ static size_t pixel_at(double x, double y)
     return (size_t)j * SIZE + (size_t)i;
 }
 
-static sc_framebuffer *render_text(const char *text, int preview)
+/* The options of every test: the camera above, SIZE x SIZE, the AOVs. */
+static void options_above(sc_render_options *o, int preview)
+{
+    sc_render_options_init(o);
+    o->camera_mode = SC_CAMERA_VECTOR;
+    o->camera[2] = 100;
+    o->up[1] = 1;
+    o->up[2] = 0;
+    o->projection = SC_PROJECTION_ORTHOGRAPHIC;
+    o->width = o->height = SIZE;
+    o->preview = preview;
+    o->want_mask = o->want_depth = o->want_id = 1;
+    o->threads = 2;
+}
+
+static sc_framebuffer *render_options(const char *text, const sc_render_options *o)
 {
     sc_scene *scene = NULL;
     sc_error error;
     if (sc_scene_load_string("test.csg", text, strlen(text), NULL, &scene, &error))
         fail_msg("load: %s", error.message);
-    sc_render_options o;
-    sc_render_options_init(&o);
-    o.camera_mode = SC_CAMERA_VECTOR;
-    o.camera[2] = 100;
-    o.up[1] = 1;
-    o.up[2] = 0;
-    o.projection = SC_PROJECTION_ORTHOGRAPHIC;
-    o.width = o.height = SIZE;
-    o.preview = preview;
-    o.want_mask = o.want_depth = o.want_id = 1;
-    o.threads = 2;
     sc_framebuffer *fb = NULL;
-    if (sc_render(scene, &o, &fb, &error))
+    if (sc_render(scene, o, &fb, &error))
         fail_msg("render: %s", error.message);
     sc_scene_release(scene);
     return fb;
+}
+
+static sc_framebuffer *render_text(const char *text, int preview)
+{
+    sc_render_options o;
+    options_above(&o, preview);
+    return render_options(text, &o);
 }
 
 static double display(const sc_framebuffer *fb, size_t p, int k)
@@ -242,12 +253,68 @@ static void test_alpha_blends(void **state)
     release_variants(&v);
 }
 
+/* Parts and alpha at several samples a pixel, under a section cut: the
+ * thread count changes nothing, and a crop is the whole image's pixels. */
+static void test_crop_and_threads(void **state)
+{
+    (void)state;
+    static const char text[] =
+        "difference() {\n"
+        "  cube(size = [30, 30, 10], center = true);\n"
+        "  #cylinder(h = 14, r1 = 5, r2 = 5, center = true);\n"
+        "}\n"
+        "%multmatrix([[1, 0, 0, 12], [0, 1, 0, 0], [0, 0, 1, 6], [0, 0, 0, 1]])\n"
+        "{ sphere(r = 4); }\n"
+        "color([0, 0, 1, 0.4]) { cube(size = [8, 8, 16]); }\n";
+    sc_render_options o;
+    options_above(&o, 1);
+    o.camera[0] = 30;
+    o.camera[1] = -40;
+    o.up[1] = 0;
+    o.up[2] = 1;
+    o.projection = SC_PROJECTION_PERSPECTIVE;
+    o.width = 61;
+    o.height = 47;
+    o.spp = 4;
+    o.section_count = 1;
+    o.section[0][1] = 1;
+    o.section[0][3] = 6;
+    o.threads = 1;
+    sc_framebuffer *whole = render_options(text, &o);
+    o.threads = 3;
+    sc_framebuffer *threaded = render_options(text, &o);
+    size_t n = (size_t)o.width * o.height;
+    assert_memory_equal(whole->color, threaded->color, n * 3 * sizeof(float));
+    /* The parts and the alpha are in view: F6 differs. */
+    o.preview = 0;
+    sc_framebuffer *render_mode = render_options(text, &o);
+    assert_memory_not_equal(whole->color, render_mode->color, n * 3 * sizeof(float));
+    sc_framebuffer_release(render_mode);
+    o.preview = 1;
+    o.region[0] = 9;
+    o.region[1] = 5;
+    o.region[2] = 44;
+    o.region[3] = 40;
+    sc_framebuffer *crop = render_options(text, &o);
+    for (int j = 0; j < crop->height; j++)
+        for (int i = 0; i < crop->width; i++) {
+            size_t a = (size_t)j * crop->width + i;
+            size_t w = (size_t)(j + 5) * whole->width + (i + 9);
+            assert_memory_equal(&crop->color[3 * a], &whole->color[3 * w],
+                                3 * sizeof(float));
+        }
+    sc_framebuffer_release(whole);
+    sc_framebuffer_release(threaded);
+    sc_framebuffer_release(crop);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_highlight_in_hole),
         cmocka_unit_test(test_background_changes_no_aov),
         cmocka_unit_test(test_alpha_blends),
+        cmocka_unit_test(test_crop_and_threads),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
