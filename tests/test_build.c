@@ -565,6 +565,73 @@ static void test_modifiers(void **state)
                 "number)");
 }
 
+/* The tree of the preview's modifier parts of one kind. */
+static const csg_tree *part_tree(const sc_scene *s, int kind)
+{
+    return scene_shading(s)->overlay[kind];
+}
+
+static int inside_part(const sc_scene *s, int kind, double x, double y, double z)
+{
+    const csg_tree *t = part_tree(s, kind);
+    return t && csg_inside(t, v3(x, y, z));
+}
+
+/* The preview's parts: each '#' and '%' subtree whole, with its
+ * ancestors' transform and colour, in a tree of its own; a '%' below a
+ * '#' stays out of the highlight; parts outside the '!' subtree are not
+ * kept; the solid and its warnings are the same as without them. */
+static void test_modifier_parts(void **state)
+{
+    (void)state;
+    sc_scene *s = load("color([0, 1, 0, 0.5]) { multmatrix([[1, 0, 0, 10], [0, 1, 0, 0], "
+                       "[0, 0, 1, 0], [0, 0, 0, 1]]) {\n"
+                       "  difference() { cube(4, center = true); #sphere(1); }\n"
+                       "  %cylinder(h = 1, r1 = 1, r2 = 1);\n"
+                       "} }\n"
+                       "#group() { cube(1); %sphere(r = 1); }\n"
+                       "%group() { #multmatrix([[1, 0, 0, 0], [0, 1, 0, 0], "
+                       "[0, 0, 1, -5], [0, 0, 0, 1]]) { cube(1); } }\n");
+    /* The solid: the drilled cube and the '#' group's cube. */
+    assert_false(inside(s, 10, 0, 0));
+    assert_true(inside(s, 11.5, 0, 0));
+    assert_true(inside(s, 0.5, 0.5, 0.5));
+    assert_false(inside(s, 0.5, 0.5, 0.2 - 5));
+    assert_int_equal(sc_scene_warning_count(s), 0);
+    /* Highlighted: the subtracted sphere where it was, the group's cube
+     * without its '%' sphere, and the cube under the '%' group. */
+    assert_true(inside_part(s, SHADING_OVERLAY_HIGHLIGHT, 10, 0, 0));
+    assert_true(inside_part(s, SHADING_OVERLAY_HIGHLIGHT, 0.5, 0.5, 0.5));
+    assert_false(inside_part(s, SHADING_OVERLAY_HIGHLIGHT, -0.5, 0, 0));
+    assert_true(inside_part(s, SHADING_OVERLAY_HIGHLIGHT, 0.5, 0.5, 0.5 - 5));
+    assert_false(inside_part(s, SHADING_OVERLAY_HIGHLIGHT, 11.5, 0, 0));
+    const csg_tree *h = part_tree(s, SHADING_OVERLAY_HIGHLIGHT);
+    assert_int_equal(h->leaf_count, 3);
+    /* Background: the cylinder (with the colour above it), the sphere,
+     * and the whole '%' group. */
+    assert_true(inside_part(s, SHADING_OVERLAY_BACKGROUND, 10, 0, 0.5));
+    assert_true(inside_part(s, SHADING_OVERLAY_BACKGROUND, -0.5, 0, 0));
+    assert_true(inside_part(s, SHADING_OVERLAY_BACKGROUND, 0.5, 0.5, 0.5 - 5));
+    const csg_tree *g = part_tree(s, SHADING_OVERLAY_BACKGROUND);
+    assert_int_equal(g->leaf_count, 3);
+    int green = 0;
+    for (uint32_t k = 0; k < g->leaf_count; k++)
+        green += g->leaves[k].color[1] == 1.0f && g->leaves[k].color[3] == 0.5f;
+    assert_int_equal(green, 1);
+    sc_scene_release(s);
+
+    /* Without modifiers there are no parts; outside the '!' subtree the
+     * parts are not the design's. */
+    s = load("cube(1); sphere(2);");
+    assert_null(part_tree(s, SHADING_OVERLAY_HIGHLIGHT));
+    assert_null(part_tree(s, SHADING_OVERLAY_BACKGROUND));
+    sc_scene_release(s);
+    s = load("#cube(1); !group() { %sphere(2); cube(3); }");
+    assert_null(part_tree(s, SHADING_OVERLAY_HIGHLIGHT));
+    assert_true(inside_part(s, SHADING_OVERLAY_BACKGROUND, 1.5, 0, 0));
+    sc_scene_release(s);
+}
+
 static void test_root_modifier(void **state)
 {
     (void)state;
@@ -978,6 +1045,7 @@ int main(void)
         cmocka_unit_test(test_colors),
         cmocka_unit_test(test_color_table),
         cmocka_unit_test(test_modifiers),
+        cmocka_unit_test(test_modifier_parts),
         cmocka_unit_test(test_root_modifier),
         cmocka_unit_test(test_unsupported),
         cmocka_unit_test(test_leaf_children),

@@ -341,8 +341,9 @@ typedef struct sc_render_options {
     sc_color_scheme scheme; /* Cornfield by default */
     int preview;            /* 1: OpenSCAD's preview (F5) face colours (face_front,
                                face_back; subtracted faces take face_back even
-                               without use_scheme); 0 (default): its render's (F6:
-                               render_face, render_face_back) */
+                               without use_scheme), its '#' and '%' parts and
+                               colour alpha (docs/preview.md); 0 (default): its
+                               render's (F6: render_face, render_face_back) */
     sc_lighting lighting;   /* default SC_LIGHTING_DEFAULT */
     unsigned view;          /* SC_VIEW_* flags; 0 (default): none */
     double edge_angle_deg;  /* creases: normals further apart than this (default 30) */

@@ -18,6 +18,18 @@
  * Nodes that are not built are still checked, so an error is an error
  * wherever it is written; only '*' subtrees are skipped unread.
  *
+ * The preview's modifier parts: the walk notes every '#' and '%' node it
+ * meets inside the design (not outside the '!' subtree), with the state its
+ * parent hands it. Once the solid is built, each noted subtree is walked
+ * again on its own (walk_part), from that state, into one of two more
+ * trees, the highlighted parts and the background parts, which the
+ * shading record carries (shading.overlay). The part's own '%' does not
+ * keep it out there, while a '%' below it does, as in OpenSCAD, whose
+ * preview draws a '#' subtree without its '%' children. These walks read
+ * the model again with a shading record and warnings of their own, so the
+ * solid's lights, materials and warnings are the same with modifiers or
+ * without; what they could not build is a warning at the node.
+ *
  * Polyhedra: OpenSCAD lists each face's points clockwise seen from outside.
  * Rather than trust the winding, each face plane is oriented by the points:
  * a convex polyhedron lies entirely on one side of each of its face planes,
@@ -60,7 +72,15 @@ typedef struct frame {
     affine to_world;
     int moving;        /* inside a motion node: leaves carry motion */
     csg_motion motion; /* its motion (build_motion.h) */
+    int shown;         /* inside the design: not outside the '!' subtree */
 } frame;
+
+/* A '#' or '%' node and the state its parent hands it. */
+typedef struct part_mark {
+    const model_node *node;
+    int kind; /* SHADING_OVERLAY_* */
+    frame parent;
+} part_mark;
 
 typedef struct builder {
     const model *model;
@@ -81,6 +101,9 @@ typedef struct builder {
     size_t solid_leaves;
     /* resize matrices measured so far (build_hull.h) */
     build_resize_cache *resize_cache;
+    part_mark *marks; /* the modifier parts met, in file order */
+    size_t mark_count, mark_cap;
+    const model_node *part; /* the subtree walk_part builds: its '%' is ignored */
 } builder;
 
 static sc_status warn(builder *b, const sc_location *loc, const char *format, ...)
@@ -621,6 +644,28 @@ static sc_status pop_frame(builder *b)
     return deliver(b, f.node, f.counted, id);
 }
 
+/* Notes n for the preview when it carries '#' or '%' inside the design
+ * (the main walk only: walk_part builds what was noted). */
+static sc_status mark_part(builder *b, const model_node *n, const frame *parent)
+{
+    if (b->part || !(parent->shown || n->is_root))
+        return SC_OK;
+    for (int kind = 0; kind < SHADING_OVERLAYS; kind++) {
+        unsigned modifier = kind == SHADING_OVERLAY_HIGHLIGHT ? MODEL_MOD_HIGHLIGHT
+                                                              : MODEL_MOD_BACKGROUND;
+        if (!(n->modifiers & modifier))
+            continue;
+        if (!grow_array((void **)&b->marks, &b->mark_cap, b->mark_count + 1,
+                        sizeof *b->marks))
+            return err_nomem(b->error, NULL);
+        part_mark *m = &b->marks[b->mark_count++];
+        m->node = n;
+        m->kind = kind;
+        m->parent = *parent;
+    }
+    return SC_OK;
+}
+
 /* Visits one node: a leaf delivers its result; a boolean node opens a
  * frame for its children. *opened says which. */
 static sc_status visit(builder *b, const model_node *n, int *opened)
@@ -638,16 +683,19 @@ static sc_status visit(builder *b, const model_node *n, int *opened)
             SC_OK)
         return st;
     const frame *parent = &b->frames[b->frame_count - 1];
+    if ((st = mark_part(b, n, parent)) != SC_OK)
+        return st;
     frame f = *parent;
     f.node = n;
     if (n->is_root) {
         static const float default_color[4] = BUILD_DEFAULT_COLOR;
         f.emit = 1;
+        f.shown = 1;
         f.to_world = affine_identity();
         memcpy(f.color, default_color, sizeof f.color);
         f.material = 0;
     }
-    if (n->modifiers & MODEL_MOD_BACKGROUND)
+    if ((n->modifiers & MODEL_MOD_BACKGROUND) && n != b->part)
         f.emit = 0;
     f.counted = f.emit;
     if (kind == MODEL_LIGHT)
@@ -749,6 +797,7 @@ static sc_status walk(builder *b, uint32_t *root)
     memset(&top, 0, sizeof top);
     top.op = CSG_UNION;
     top.emit = !b->model->has_root;
+    top.shown = top.emit;
     top.to_world = affine_identity();
     memcpy(top.color, default_color, sizeof top.color);
     sc_status st = push_frame(b, &top);
@@ -776,6 +825,112 @@ static sc_status walk(builder *b, uint32_t *root)
         return err_nomem(b->error, NULL);
     *root = csg_builder_op(b->csg, CSG_UNION, b->ids, (uint32_t)b->id_count);
     return csg_builder_failed(b->csg) ? err_nomem(b->error, NULL) : SC_OK;
+}
+
+/* Walks the subtree of mark into sub, a builder of its own (build_parts),
+ * from the state its parent handed it, its own '%' ignored. *id is its
+ * result in sub's CSG builder. */
+static sc_status walk_part(builder *sub, const part_mark *mark, uint32_t *id)
+{
+    *id = CSG_EMPTY;
+    frame top = mark->parent;
+    top.node = NULL;
+    top.op = CSG_UNION;
+    top.emit = top.counted = top.shown = 1;
+    top.first_id = 0;
+    sub->part = mark->node;
+    sub->root_id = CSG_EMPTY;
+    sub->frame_count = sub->id_count = 0;
+    int opened = 0;
+    sc_status st = push_frame(sub, &top);
+    if (st == SC_OK)
+        st = visit(sub, mark->node, &opened);
+    const model_node *n = opened ? mark->node->first_child : NULL;
+    /* Down to the part's own frame: popping it ends the walk. */
+    while (st == SC_OK && sub->frame_count > 1) {
+        if (!n) {
+            const model_node *done = sub->frames[sub->frame_count - 1].node;
+            st = pop_frame(sub);
+            n = done->next;
+            continue;
+        }
+        st = visit(sub, n, &opened);
+        n = opened ? n->first_child : n->next;
+    }
+    if (st != SC_OK)
+        return st;
+    if (mark->node->is_root)
+        *id = sub->root_id;
+    else if (sub->id_count == 1)
+        *id = sub->ids[0];
+    return SC_OK;
+}
+
+/* Builds the preview's modifier parts of each kind that b noted into a
+ * tree (shading.overlay). A part that cannot be built is left out with a
+ * warning at its node; only running out of memory fails. */
+static sc_status build_parts(builder *b)
+{
+    static const char modifier[SHADING_OVERLAYS] = {'#', '%'};
+    sc_status st = SC_OK;
+    for (int kind = 0; st == SC_OK && kind < SHADING_OVERLAYS; kind++) {
+        size_t count = 0;
+        for (size_t k = 0; k < b->mark_count; k++)
+            count += b->marks[k].kind == kind;
+        if (!count)
+            continue;
+        sc_error error;
+        builder sub;
+        memset(&sub, 0, sizeof sub);
+        sub.model = b->model;
+        sub.file = b->file;
+        sub.error = &error;
+        sub.faithful = b->faithful;
+        sub.resize_cache = b->resize_cache;
+        sub.csg = csg_builder_new();
+        sub.shading = shading_new();
+        uint32_t *results = calloc(count, sizeof *results);
+        if (!sub.csg || !sub.shading || !results)
+            st = err_nomem(b->error, NULL);
+        uint32_t done = 0;
+        for (size_t k = 0; st == SC_OK && k < b->mark_count; k++) {
+            const part_mark *m = &b->marks[k];
+            if (m->kind != kind)
+                continue;
+            sc_status part = walk_part(&sub, m, &results[done]);
+            if (part == SC_ERR_NOMEM)
+                st = err_nomem(b->error, NULL);
+            else if (part != SC_OK)
+                st = warn(b, &m->node->loc, "'%c' subtree is left out of the preview: %s",
+                          modifier[kind], error.message);
+            else
+                done++;
+        }
+        b->resize_cache = sub.resize_cache;
+        free(sub.ids);
+        free(sub.frames);
+        free(sub.warnings);
+        shading_free(sub.shading);
+        uint32_t root = CSG_EMPTY;
+        if (st == SC_OK) {
+            root = csg_builder_op(sub.csg, CSG_UNION, results, done);
+            if (csg_builder_failed(sub.csg))
+                st = err_nomem(b->error, NULL);
+        }
+        free(results);
+        if (st != SC_OK) {
+            csg_builder_free(sub.csg);
+            break;
+        }
+        /* The builder is freed here whatever happens. */
+        st = csg_builder_finish(sub.csg, root, &b->shading->overlay[kind], &error);
+        if (st == SC_ERR_NOMEM)
+            st = err_nomem(b->error, NULL);
+        else if (st != SC_OK)
+            st = warn(b, NULL, "the '%c' parts are left out of the preview: %s",
+                      modifier[kind], error.message);
+    }
+    return st;
 }
 
 sc_status build_scene(const model *m, int faithful, csg_tree **out, shading **look,
@@ -808,6 +963,9 @@ sc_status build_scene(const model *m, int faithful, csg_tree **out, shading **lo
         st = err_set(error, SC_ERR_SEMANTIC, &b.first_2d->loc,
                      "the model has only 2D objects, which have no 3D output (extrude "
                      "them with linear_extrude)");
+    if (st == SC_OK)
+        st = build_parts(&b);
+    free(b.marks);
     build_resize_cache_free(b.resize_cache);
     if (st != SC_OK) {
         csg_builder_free(b.csg);

@@ -22,6 +22,10 @@
  * checks it; '#' changes nothing in the solid; the first '!' in file order
  * (outside dropped subtrees) makes its subtree the whole design, without
  * its ancestors' transforms or colours, as OpenSCAD's root modifier does.
+ * Each '#' and '%' subtree inside the design is also built on its own, with
+ * its ancestors' transforms and colours, into the shading record's trees of
+ * highlighted and background parts (shading.overlay), which only the
+ * preview draws (build.c).
  *
  * Every node OpenSCAD can write is known by name; those spancast cannot
  * render yet, and spancast's own geometry extension nodes, are SC_ERR_UNSUPPORTED

@@ -37,6 +37,8 @@ void shading_free(shading *s)
         return;
     free(s->lights);
     free(s->materials);
+    for (int k = 0; k < SHADING_OVERLAYS; k++)
+        csg_tree_free(s->overlay[k]);
     free(s);
 }
 

@@ -10,12 +10,17 @@
  * outside any material() node get. A material's base colour is not here: it
  * is the leaf's colour, so that material(color = ...) and OpenSCAD's
  * color() set the same thing and the innermost of them wins.
+ *
+ * The record also carries the parts OpenSCAD's preview draws besides the
+ * solid: the '#' (highlight) and '%' (background) subtrees, as trees of
+ * their own, which only a --preview render shows (render.c).
  */
 #ifndef SPANCAST_MODEL_SHADING_H
 #define SPANCAST_MODEL_SHADING_H
 
 #include <stdint.h>
 
+#include "csg/csg.h"
 #include "math/vec.h"
 #include "spancast/spancast.h"
 
@@ -64,6 +69,9 @@ typedef struct shading_camera {
     double focus;    /* distance of the sharp plane from the eye; 0: eye to centre */
 } shading_camera;
 
+/* The kinds of modifier parts shading.overlay holds. */
+enum { SHADING_OVERLAY_HIGHLIGHT, SHADING_OVERLAY_BACKGROUND, SHADING_OVERLAYS };
+
 typedef struct shading {
     shading_light *lights;
     uint32_t light_count, light_cap;
@@ -73,6 +81,10 @@ typedef struct shading {
     shading_camera camera;
     int has_background;
     float background[3]; /* display values */
+    /* The preview's modifier parts (build.h): the '#' subtrees united, and
+     * the '%' subtrees united, each a tree of its own with its ancestors'
+     * transforms and colours; NULL when the file has none. */
+    csg_tree *overlay[SHADING_OVERLAYS];
 } shading;
 
 /* A record with the default material only; NULL when out of memory. */

@@ -27,6 +27,29 @@
  * shading and overlay; a pixel finds its view by its position in the full
  * image, so --region crops a sheet like any image.
  *
+ * Modifiers and alpha, with --preview only (OpenSCAD's render, F6, shows
+ * neither, so without it nothing here runs). OpenSCAD's preview (F5) draws
+ * the solid, then the '%' (background) and '#' (highlight) parts with
+ * OpenGL blending, depth-tested against the solid (OpenCSGRenderer: the
+ * parts are CSG products of their own drawn after the root's). Here the
+ * parts are trees of their own (shading.overlay), each of which a sample's
+ * ray meets at its first surface no farther than the solid's first hit
+ * (within the query tolerance, so a '#' part that is also a face of the
+ * solid shows on it); their surfaces, lit by OpenSCAD's preview light,
+ * are blended over the sample's colour from the back to the front: c =
+ * a part + (1 - a) c. A '#' part is drawn in OpenSCAD's highlight colour
+ * (255, 81, 81, alpha 128), a '%' part in its background colour (180, 180,
+ * 180, alpha 128) unless the file coloured it (Renderer::getColor,
+ * setColor). A solid whose leaves have colour alpha below 1 is drawn as
+ * layers: every surface where the ray enters the solid, front to back,
+ * each with its leaf's alpha, the background behind the last; surfaces
+ * where the ray leaves are not drawn, as OpenCSG's depth pass keeps only
+ * the nearest surface of each product. OpenSCAD blends in the order it
+ * draws, which depends on the product; this front-to-back rule is the one
+ * a depth-sorted draw would give, and does not depend on the file's order.
+ * Blending, as OpenGL does it, is on display (sRGB) values. The AOVs are
+ * the solid's first hit, untouched by either.
+ *
  * Stopping: the render's cancel token (base/cancel.h) carries the
  * caller's flag and the budget of implicit-surface work (budget.c); each
  * thread works inside a scope on it, so the root finders and mesh walks
@@ -101,12 +124,26 @@ int sc_render_options_from_scene(sc_render_options *options, const sc_scene *sce
     return 1;
 }
 
+/* OpenSCAD's preview colours for '#' and '%' parts (Renderer::getColor:
+ * COLORMODE_HIGHLIGHT and COLORMODE_BACKGROUND), display values. */
+static const float highlight_rgba[4] = {255 / 255.0f, 81 / 255.0f, 81 / 255.0f,
+                                        128 / 255.0f};
+static const float background_rgba[4] = {180 / 255.0f, 180 / 255.0f, 180 / 255.0f,
+                                         128 / 255.0f};
+
+/* Most surfaces of a translucent solid a sample blends; the background
+ * stands for whatever lies behind them. */
+#define RENDER_MAX_LAYERS 64
+
 /* One view of the render: the whole image, or a tile of a contact sheet. */
 typedef struct render_view {
     camera cam;
     shade_scene shade;
     overlay over;
     int prepared; /* shade and over hold memory */
+    /* the preview's modifier parts (shading.overlay): part_count of them */
+    shade_scene part[SHADING_OVERLAYS];
+    int part_count;
 } render_view;
 
 typedef struct render_ctx {
@@ -225,18 +262,101 @@ static int on_edge(const render_ctx *c, const render_view *v, shade_thread *st, 
     return 0;
 }
 
+/* The query tolerance along r at its hit t, in units of t. */
+static double hit_tolerance(const shade_scene *s, const csg_ray *r, double t)
+{
+    return SHADE_OFFSET * csg_eps(s->tree, v3_madd(r->o, r->d, t), r->d);
+}
+
+/* The opacity of a hit's surface in s. */
+static double hit_alpha(const shade_scene *s, const shade_hit *h)
+{
+    return s->leaf_alpha[h->hit.leaf];
+}
+
+/* The linear colour of a translucent solid along r (found): its entry
+ * surfaces blended front to back on display values, the background
+ * behind (see the file's comment). */
+static void translucent_color(const render_ctx *c, const render_view *v, shade_thread *st,
+                              const view_ray *r, double rgb[3])
+{
+    double sum[3] = {0, 0, 0}, cover = 0; /* premultiplied display values */
+    view_ray layer = *r;
+    for (int k = 0; k < RENDER_MAX_LAYERS && layer.found && cover < 1; k++) {
+        if (!layer.hit.hit.exiting) {
+            double a = hit_alpha(&v->shade, &layer.hit), lit[3];
+            shade_ray(&v->shade, st, &layer.ray, &layer.hit, 0, 1.0 / c->spp, lit);
+            for (int q = 0; q < 3; q++)
+                sum[q] += (1 - cover) * a * color_linear_to_srgb(lit[q]);
+            cover += (1 - cover) * a;
+        }
+        double t = layer.hit.hit.t;
+        layer.ray.tmin = t + hit_tolerance(&v->shade, &layer.ray, t);
+        layer.found = shade_first_hit(&v->shade, st, &layer.ray, &layer.hit);
+    }
+    for (int q = 0; q < 3; q++) {
+        if (cover < 1)
+            sum[q] += (1 - cover) * color_linear_to_srgb(v->shade.background[q]);
+        rgb[q] = color_srgb_to_linear(sum[q]);
+    }
+}
+
+/* Blends the view's modifier parts that r meets in front of the solid
+ * over rgb (linear), from the back to the front. */
+static void blend_parts(const render_ctx *c, const render_view *v, shade_thread *st,
+                        const view_ray *r, double rgb[3])
+{
+    double tmax = INFINITY;
+    if (r->found)
+        tmax = r->hit.hit.t + hit_tolerance(&v->shade, &r->ray, r->hit.hit.t);
+    double t[SHADING_OVERLAYS], color[SHADING_OVERLAYS][3], alpha[SHADING_OVERLAYS];
+    int n = 0;
+    for (int k = 0; k < v->part_count; k++) {
+        csg_ray ray = r->ray;
+        ray.tmax = tmax;
+        shade_hit hit;
+        if (!shade_first_hit(&v->part[k], st, &ray, &hit))
+            continue;
+        shade_ray(&v->part[k], st, &ray, &hit, 0, 1.0 / c->spp, color[n]);
+        t[n] = hit.hit.t;
+        alpha[n] = hit_alpha(&v->part[k], &hit);
+        n++;
+    }
+    double out[3];
+    for (int q = 0; q < 3; q++)
+        out[q] = color_linear_to_srgb(rgb[q]);
+    for (int done = 0; done < n; done++) {
+        int far = -1; /* the farthest part not blended yet */
+        for (int k = 0; k < n; k++)
+            if (alpha[k] >= 0 && (far < 0 || t[k] > t[far]))
+                far = k;
+        for (int q = 0; q < 3; q++)
+            out[q] = alpha[far] * color_linear_to_srgb(color[far][q]) +
+                     (1 - alpha[far]) * out[q];
+        alpha[far] = -1;
+    }
+    if (n)
+        for (int q = 0; q < 3; q++)
+            rgb[q] = color_srgb_to_linear(out[q]);
+}
+
 /* The linear colour of one sample of pixel (i, j) of view v: what r sees,
- * then edge lines, then overlay lines. */
+ * then edge lines, then the preview's modifier parts, then overlay
+ * lines. */
 static void sample_color(const render_ctx *c, const render_view *v, shade_thread *st,
                          int i, int j, double sx, double sy, const view_ray *r,
                          double rgb[3])
 {
-    if (r->found)
+    if (r->found && v->shade.translucent && hit_alpha(&v->shade, &r->hit) < 1)
+        translucent_color(c, v, st, r, rgb);
+    else if (r->found)
         shade_ray(&v->shade, st, &r->ray, &r->hit, 0, 1.0 / c->spp, rgb);
     else
         memcpy(rgb, v->shade.background, 3 * sizeof *rgb);
     if (c->edges && on_edge(c, v, st, i, j, sx, sy, r))
         memcpy(rgb, c->edge_color, 3 * sizeof *rgb);
+    if (v->part_count)
+        blend_parts(c, v, st, r, rgb);
     if (c->overlays) {
         double depth = INFINITY;
         if (r->found)
@@ -486,6 +606,31 @@ static sc_status check_options(const sc_render_options *o, sc_error *error)
     return SC_OK;
 }
 
+/* Sets up the shading of view v's modifier parts (see the file's
+ * comment): OpenSCAD's preview light, no occlusion, no bounces, the
+ * highlight and background colours. */
+static sc_status prepare_parts(render_view *v, const shading *look,
+                               const sc_render_options *options, sc_error *error)
+{
+    sc_render_options part_options = *options;
+    part_options.lighting = SC_LIGHTING_OPENSCAD;
+    part_options.ao_samples = 0;
+    part_options.max_depth = 0;
+    for (int k = 0; k < SHADING_OVERLAYS; k++) {
+        const csg_tree *tree = look->overlay[k];
+        if (!tree || tree->root == CSG_EMPTY)
+            continue;
+        shade_scene *s = &v->part[v->part_count];
+        sc_status st = shade_prepare(s, tree, NULL, &v->cam, &part_options, error);
+        if (st)
+            return st;
+        v->part_count++;
+        int highlight = k == SHADING_OVERLAY_HIGHLIGHT;
+        shade_paint_part(s, highlight ? highlight_rgba : background_rgba, !highlight);
+    }
+    return SC_OK;
+}
+
 /* Upper-case names of the sheet's labels. */
 static const char *const preset_labels[] = {NULL,    "TOP",   "BOTTOM", "LEFT",
                                             "RIGHT", "FRONT", "BACK",   "DIAGONAL"};
@@ -528,6 +673,10 @@ static sc_status prepare_view(render_ctx *c, int k, const shading *look,
         return st;
     }
     v->prepared = 1;
+    if (options->preview && look)
+        st = prepare_parts(v, look, options, error);
+    if (st)
+        return st;
     if (v->over.count || label)
         c->overlays = 1;
     return SC_OK;
@@ -540,6 +689,8 @@ static void release_views(render_ctx *c)
             continue;
         shade_release(&c->views[k].shade);
         overlay_release(&c->views[k].over);
+        for (int p = 0; p < c->views[k].part_count; p++)
+            shade_release(&c->views[k].part[p]);
     }
     free(c->views);
     c->views = NULL;
@@ -611,6 +762,10 @@ sc_status render_scene(const csg_tree *tree, const shading *look,
     for (int k = 0; k < 3; k++)
         c.edge_color[k] = color_srgb_to_linear(options->scheme.edge[k]);
     bbox bounds = tree->root == CSG_EMPTY ? bbox_empty() : tree->bounds;
+    /* The preview frames its modifier parts too, as OpenSCAD's does. */
+    for (int k = 0; options->preview && look && k < SHADING_OVERLAYS; k++)
+        if (look->overlay[k] && look->overlay[k]->root != CSG_EMPTY)
+            bounds = bbox_union(bounds, look->overlay[k]->bounds);
     c.views = calloc((size_t)c.view_count, sizeof *c.views);
     if (!c.views)
         return err_nomem(error, NULL);

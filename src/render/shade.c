@@ -75,7 +75,9 @@ sc_status shade_prepare(shade_scene *s, const csg_tree *tree, const shading *loo
     s->lights = calloc(lights, sizeof *s->lights);
     s->leaf_color = calloc((size_t)tree->leaf_count * 3 + 3, sizeof *s->leaf_color);
     s->leaf_back = calloc((size_t)tree->leaf_count * 3 + 3, sizeof *s->leaf_back);
-    if (!s->materials || !s->lights || !s->leaf_color || !s->leaf_back) {
+    s->leaf_alpha = calloc((size_t)tree->leaf_count + 1, sizeof *s->leaf_alpha);
+    if (!s->materials || !s->lights || !s->leaf_color || !s->leaf_back ||
+        !s->leaf_alpha) {
         shade_release(s);
         return err_nomem(error, NULL);
     }
@@ -109,6 +111,9 @@ sc_status shade_prepare(shade_scene *s, const csg_tree *tree, const shading *loo
         int plain = s->scheme_faces && is_default_color(c);
         linear3(plain ? scheme_front : c, 1, &s->leaf_color[3 * i]);
         linear3(plain ? scheme_back : c, 1, &s->leaf_back[3 * i]);
+        s->leaf_alpha[i] = c[3];
+        /* Only the preview shows alpha, as OpenSCAD's render (F6) does not. */
+        s->translucent |= o->preview && c[3] < 1;
     }
     s->light_count = lights;
     if (look && look->light_count) {
@@ -177,7 +182,23 @@ void shade_release(shade_scene *s)
     free(s->lights);
     free(s->leaf_color);
     free(s->leaf_back);
+    free(s->leaf_alpha);
     memset(s, 0, sizeof *s);
+}
+
+void shade_paint_part(shade_scene *s, const float rgba[4], int keep_own)
+{
+    for (uint32_t i = 0; i < s->tree->leaf_count; i++) {
+        const float *c = s->tree->leaves[i].color;
+        if (keep_own && !is_default_color(c))
+            continue; /* shade_prepare gave it its own colour and alpha */
+        linear3(rgba, 1, &s->leaf_color[3 * i]);
+        linear3(rgba, 1, &s->leaf_back[3 * i]);
+        s->leaf_alpha[i] = rgba[3];
+    }
+    linear3(rgba, 1, s->cap_color);
+    s->hatch = 0;
+    s->translucent = 0;
 }
 
 /* The distance secondary rays start from a hit at p reached after dist. */

@@ -107,6 +107,9 @@ typedef struct shade_scene {
     uint32_t material_count;
     double *leaf_color; /* 3 linear values per leaf */
     double *leaf_back;  /* 3 linear values per leaf: its subtracted faces */
+    double *leaf_alpha; /* one per leaf: its colour's opacity */
+    int translucent;    /* a preview with some leaf's alpha below 1 (render.c
+                           composites its surfaces) */
     shade_light *lights;
     uint32_t light_count;
     double background[3]; /* linear */
@@ -158,6 +161,12 @@ sc_status shade_prepare(shade_scene *s, const csg_tree *tree, const shading *loo
                         const camera *cam, const sc_render_options *options,
                         sc_error *error);
 void shade_release(shade_scene *s);
+
+/* Paints the leaves of a preview's modifier part (render.c) rgba (display
+ * values, alpha last), front and back faces and caps alike, except, with
+ * keep_own, leaves whose file gave them a colour: those keep it and its
+ * alpha, as OpenSCAD draws a coloured '%' part. */
+void shade_paint_part(shade_scene *s, const float rgba[4], int keep_own);
 
 /* FIRST_HIT with the section cuts applied: 1 and *hit when the ray sees
  * the solid within [tmin, tmax]. Without sections it is csg_first_hit;

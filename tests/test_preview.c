@@ -1,0 +1,320 @@
+/* Tests of the preview's modifiers and colour alpha (render.c, build.c's
+ * modifier parts), through the public API from .csg text.
+ *
+ * Each scene is seen straight down through an orthographic camera, so a
+ * pixel's place in the model is known: with the eye 100 above the origin
+ * and the field of view 22.5 degrees, the image's half height is
+ * 100 tan(11.25 degrees) world units. Each expected colour is computed
+ * from other renders of the same camera (the same file without the
+ * modifier, or with the colour opaque) and the blending rule (display
+ * values, c = a part + (1 - a) behind), never written down as numbers.
+ */
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+
+#include <cmocka.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "formats/color.h"
+#include "formats/framebuffer.h"
+#include "spancast/spancast.h"
+
+#define SIZE 200
+
+/* World units per pixel (see above). */
+static double pixel_size(void)
+{
+    return 2 * 100 * tan(22.5 / 2 * 3.14159265358979323846 / 180) / SIZE;
+}
+
+/* The pixel index seeing world point (x, y) from above. */
+static size_t pixel_at(double x, double y)
+{
+    int i = (int)floor(SIZE / 2.0 + x / pixel_size());
+    int j = (int)floor(SIZE / 2.0 - y / pixel_size());
+    return (size_t)j * SIZE + (size_t)i;
+}
+
+/* The options of every test: the camera above, SIZE x SIZE, the AOVs. */
+static void options_above(sc_render_options *o, int preview)
+{
+    sc_render_options_init(o);
+    o->camera_mode = SC_CAMERA_VECTOR;
+    o->camera[2] = 100;
+    o->up[1] = 1;
+    o->up[2] = 0;
+    o->projection = SC_PROJECTION_ORTHOGRAPHIC;
+    o->width = o->height = SIZE;
+    o->preview = preview;
+    o->want_mask = o->want_depth = o->want_id = 1;
+    o->threads = 2;
+}
+
+static sc_framebuffer *render_options(const char *text, const sc_render_options *o)
+{
+    sc_scene *scene = NULL;
+    sc_error error;
+    if (sc_scene_load_string("test.csg", text, strlen(text), NULL, &scene, &error))
+        fail_msg("load: %s", error.message);
+    sc_framebuffer *fb = NULL;
+    if (sc_render(scene, o, &fb, &error))
+        fail_msg("render: %s", error.message);
+    sc_scene_release(scene);
+    return fb;
+}
+
+static sc_framebuffer *render_text(const char *text, int preview)
+{
+    sc_render_options o;
+    options_above(&o, preview);
+    return render_options(text, &o);
+}
+
+static double display(const sc_framebuffer *fb, size_t p, int k)
+{
+    return color_linear_to_srgb(fb->color[3 * p + k]);
+}
+
+/* The solid's AOVs are the same in a and b. */
+static void assert_same_aovs(const sc_framebuffer *a, const sc_framebuffer *b)
+{
+    size_t n = (size_t)SIZE * SIZE;
+    assert_memory_equal(a->mask, b->mask, n);
+    assert_memory_equal(a->depth, b->depth, n * sizeof *a->depth);
+    assert_memory_equal(a->id, b->id, n * sizeof *a->id);
+}
+
+static void assert_same_color(const sc_framebuffer *a, const sc_framebuffer *b)
+{
+    assert_memory_equal(a->color, b->color, (size_t)SIZE * SIZE * 3 * sizeof(float));
+}
+
+/* A file in two variants (format's %s replaced by a and by b), each
+ * rendered with --preview and without: without it (OpenSCAD's render)
+ * the two images are the same, and with it the AOVs are. */
+typedef struct variants {
+    sc_framebuffer *a, *b;               /* with --preview */
+    sc_framebuffer *render_a, *render_b; /* without */
+} variants;
+
+static void render_variants(const char *format, const char *a, const char *b, variants *v)
+{
+    char text[1024];
+    snprintf(text, sizeof text, format, a);
+    v->a = render_text(text, 1);
+    v->render_a = render_text(text, 0);
+    snprintf(text, sizeof text, format, b);
+    v->b = render_text(text, 1);
+    v->render_b = render_text(text, 0);
+    assert_same_color(v->render_a, v->render_b);
+    assert_same_aovs(v->render_a, v->render_b);
+    assert_same_aovs(v->a, v->b);
+}
+
+static void release_variants(variants *v)
+{
+    sc_framebuffer_release(v->a);
+    sc_framebuffer_release(v->b);
+    sc_framebuffer_release(v->render_a);
+    sc_framebuffer_release(v->render_b);
+}
+
+static const char drilled[] =
+    "difference() {\n"
+    "  cube(size = [30, 30, 10], center = true);\n"
+    "  %scylinder(h = 14, r1 = 5, r2 = 5, center = true, $fn = 0, $fa = 12, $fs = 2);\n"
+    "}\n";
+
+/* Rounding of float buffers and the sRGB conversions, display values. */
+#define BLEND_TOLERANCE 1e-4
+
+/* A '#' cylinder subtracted from a box: with --preview its top cap
+ * (above the box) tints the hole translucent red, blended over what the
+ * hole shows without it; nothing else changes, the AOVs not at all; and
+ * without --preview the '#' changes nothing. */
+static void test_highlight_in_hole(void **state)
+{
+    (void)state;
+    variants v;
+    render_variants(drilled, "#", "", &v);
+    const sc_framebuffer *shown = v.a, *without = v.b;
+
+    /* OpenSCAD's highlight: (255, 81, 81), alpha 128/255. The lit colour
+     * is 255/255 f and 81/255 f for an unknown light factor f, clamped to
+     * 1; green gives f, and red and blue must follow. */
+    double a = 128 / 255.0, hr = 1, hg = 81 / 255.0;
+    double radius = 5 / pixel_size();
+    int inside = 0;
+    for (int j = 0; j < SIZE; j++)
+        for (int i = 0; i < SIZE; i++) {
+            size_t p = (size_t)j * SIZE + (size_t)i;
+            double r = hypot(i + 0.5 - SIZE / 2.0, j + 0.5 - SIZE / 2.0);
+            if (r > radius + 1) {
+                assert_memory_equal(&shown->color[3 * p], &without->color[3 * p],
+                                    3 * sizeof(float));
+                continue;
+            }
+            if (r > radius - 1)
+                continue; /* the rim: either */
+            inside++;
+            assert_int_equal(shown->mask[p], 0); /* the hole itself */
+            double under[3], got[3];
+            for (int k = 0; k < 3; k++) {
+                under[k] = display(without, p, k);
+                got[k] = display(shown, p, k);
+            }
+            double f = (got[1] - (1 - a) * under[1]) / (a * hg);
+            assert_true(f > 0.2 - 1e-3 && f < 1.2 + 1e-3);
+            double want_r = a * fmin(1.0, hr * f) + (1 - a) * under[0];
+            double want_b = a * fmin(1.0, hg * f) + (1 - a) * under[2];
+            if (fabs(got[0] - want_r) > BLEND_TOLERANCE ||
+                fabs(got[2] - want_b) > BLEND_TOLERANCE)
+                fail_msg("pixel %d,%d: %.5f %.5f %.5f, expected %.5f %.5f (over %.5f "
+                         "%.5f %.5f)",
+                         i, j, got[0], got[1], got[2], want_r, want_b, under[0], under[1],
+                         under[2]);
+        }
+    assert_true(inside > 2 * radius * radius); /* most of the disc */
+    release_variants(&v);
+}
+
+static const char background_part[] = "cube(size = [20, 20, 10], center = true);\n"
+                                      "%s";
+
+static const char sphere_part[] =
+    "multmatrix([[1, 0, 0, 5], [0, 1, 0, 0], [0, 0, 1, 4], [0, 0, 0, 1]])\n"
+    "{ sphere(r = 6, $fn = 0, $fa = 12, $fs = 2); }\n";
+
+/* A '%' sphere half over a box changes no mask, depth or id pixel, and is
+ * drawn translucent where it is: grey (OpenSCAD's 180, 180, 180, alpha
+ * 128/255, lit) over what the pixel shows without it. */
+static void test_background_changes_no_aov(void **state)
+{
+    (void)state;
+    char marked[sizeof sphere_part + 1];
+    snprintf(marked, sizeof marked, "%%%s", sphere_part);
+    variants v;
+    render_variants(background_part, marked, "", &v);
+    const sc_framebuffer *shown = v.a, *without = v.b;
+    /* Without the modifier the sphere is part of the solid and the mask
+     * grows there, so the comparison of the AOVs could fail. */
+    char united[sizeof background_part + sizeof sphere_part];
+    snprintf(united, sizeof united, background_part, sphere_part);
+    sc_framebuffer *solid = render_text(united, 1);
+    assert_int_equal(solid->mask[pixel_at(10.5, 0)], 255);
+    assert_int_equal(without->mask[pixel_at(10.5, 0)], 0);
+    sc_framebuffer_release(solid);
+
+    double a = 128 / 255.0, grey = 180 / 255.0;
+    /* Over the box (x = 8) and beyond it (x = 10.5): the sphere's top. */
+    const double xs[2] = {8, 10.5};
+    for (int k = 0; k < 2; k++) {
+        size_t p = pixel_at(xs[k], 0);
+        double f = (display(shown, p, 0) - (1 - a) * display(without, p, 0)) / (a * grey);
+        assert_true(f > 0.2 && f < 1.2 + 1e-3);
+        for (int c = 1; c < 3; c++) {
+            double want = a * fmin(1.0, grey * f) + (1 - a) * display(without, p, c);
+            assert_true(fabs(display(shown, p, c) - want) < BLEND_TOLERANCE);
+        }
+    }
+    /* Away from the sphere nothing changes. */
+    size_t far = pixel_at(-8, -8);
+    assert_memory_equal(&shown->color[3 * far], &without->color[3 * far],
+                        3 * sizeof(float));
+    release_variants(&v);
+}
+
+static const char alpha_cube[] = "color([0.2, 0.4, 0.9, %s]) {\n"
+                                 "  cube(size = [20, 20, 10], center = true);\n"
+                                 "}\n";
+
+/* A 50 % transparent cube over the background shows 0.5 of its opaque
+ * colour and 0.5 of the background, on display values; without --preview
+ * (OpenSCAD's render) it is opaque. */
+static void test_alpha_blends(void **state)
+{
+    (void)state;
+    variants v;
+    render_variants(alpha_cube, "0.5", "1", &v);
+    const sc_framebuffer *blended = v.a, *solid = v.b;
+    size_t bg = pixel_at(-15, -15), centre = pixel_at(1, 1);
+    assert_int_equal(solid->mask[bg], 0);
+    assert_int_equal(solid->mask[centre], 255);
+    for (int k = 0; k < 3; k++) {
+        double want = 0.5 * display(solid, centre, k) + 0.5 * display(solid, bg, k);
+        double got = display(blended, centre, k);
+        if (fabs(got - want) > BLEND_TOLERANCE)
+            fail_msg("channel %d: %.6f, expected %.6f", k, got, want);
+    }
+    release_variants(&v);
+}
+
+/* Parts and alpha at several samples a pixel, under a section cut: the
+ * thread count changes nothing, and a crop is the whole image's pixels. */
+static void test_crop_and_threads(void **state)
+{
+    (void)state;
+    static const char text[] =
+        "difference() {\n"
+        "  cube(size = [30, 30, 10], center = true);\n"
+        "  #cylinder(h = 14, r1 = 5, r2 = 5, center = true);\n"
+        "}\n"
+        "%multmatrix([[1, 0, 0, 12], [0, 1, 0, 0], [0, 0, 1, 6], [0, 0, 0, 1]])\n"
+        "{ sphere(r = 4); }\n"
+        "color([0, 0, 1, 0.4]) { cube(size = [8, 8, 16]); }\n";
+    sc_render_options o;
+    options_above(&o, 1);
+    o.camera[0] = 30;
+    o.camera[1] = -40;
+    o.up[1] = 0;
+    o.up[2] = 1;
+    o.projection = SC_PROJECTION_PERSPECTIVE;
+    o.width = 61;
+    o.height = 47;
+    o.spp = 4;
+    o.section_count = 1;
+    o.section[0][1] = 1;
+    o.section[0][3] = 6;
+    o.threads = 1;
+    sc_framebuffer *whole = render_options(text, &o);
+    o.threads = 3;
+    sc_framebuffer *threaded = render_options(text, &o);
+    size_t n = (size_t)o.width * o.height;
+    assert_memory_equal(whole->color, threaded->color, n * 3 * sizeof(float));
+    /* The parts and the alpha are in view: F6 differs. */
+    o.preview = 0;
+    sc_framebuffer *render_mode = render_options(text, &o);
+    assert_memory_not_equal(whole->color, render_mode->color, n * 3 * sizeof(float));
+    sc_framebuffer_release(render_mode);
+    o.preview = 1;
+    o.region[0] = 9;
+    o.region[1] = 5;
+    o.region[2] = 44;
+    o.region[3] = 40;
+    sc_framebuffer *crop = render_options(text, &o);
+    for (int j = 0; j < crop->height; j++)
+        for (int i = 0; i < crop->width; i++) {
+            size_t a = (size_t)j * crop->width + i;
+            size_t w = (size_t)(j + 5) * whole->width + (i + 9);
+            assert_memory_equal(&crop->color[3 * a], &whole->color[3 * w],
+                                3 * sizeof(float));
+        }
+    sc_framebuffer_release(whole);
+    sc_framebuffer_release(threaded);
+    sc_framebuffer_release(crop);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_highlight_in_hole),
+        cmocka_unit_test(test_background_changes_no_aov),
+        cmocka_unit_test(test_alpha_blends),
+        cmocka_unit_test(test_crop_and_threads),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
