@@ -176,7 +176,8 @@ static sc_status compare_scenes(const sc_scene *a, const sc_scene *b,
         const quad_grid *q = &grids[g];
         if (!q->limit_reason)
             continue;
-        /* the leaf is one of a's or one of b's */
+        /* the leaf is one of a's or one of b's (from another process,
+         * which is not known: the message then has no position) */
         int in_b = q->limit_leaf < tb->leaf_count &&
                    &tb->leaves[q->limit_leaf].prim == q->limit_prim;
         render_limit_error(in_b ? tb : ta, q->limit_reason, q->limit_leaf, q->limit_prim,

@@ -353,7 +353,8 @@ static sc_status measure_scene(const sc_scene *scene, const sc_measure_options *
         out->converged = converged;
         out->lines = grids[0].lines + grids[1].lines + grids[2].lines;
         double seen[6];
-        lines_scratch_box(&shared.work, seen);
+        if (!lines_scratch_box(&shared.work, options, seen))
+            st = SC_ERR_NOMEM;
         for (int i = 0; i < 3; i++) {
             if (!(seen[i] <= seen[3 + i])) /* nothing seen: the tree's box */
                 seen[i] = lo[i], seen[3 + i] = hi[i];
@@ -368,9 +369,13 @@ static sc_status measure_scene(const sc_scene *scene, const sc_measure_options *
     for (int a = 0; a < 3; a++)
         if (grids[a].limit_reason && !limited)
             limited = &grids[a];
-    if (st == SC_ERR_LIMIT && limited)
-        render_limit_error(t, limited->limit_reason, limited->limit_leaf,
-                           limited->limit_prim, error);
+    if (st == SC_ERR_LIMIT && limited) {
+        /* From another process: its leaf's own primitive, for the position */
+        const void *prim = limited->limit_prim;
+        if (limited->limit_remote && limited->limit_leaf < t->leaf_count)
+            prim = &t->leaves[limited->limit_leaf].prim;
+        render_limit_error(t, limited->limit_reason, limited->limit_leaf, prim, error);
+    }
     for (int a = 0; a < 3; a++)
         quad_free(&grids[a]);
     lines_scratch_free(&shared.work);

@@ -1119,7 +1119,9 @@ int main(int argc, char **argv)
     if (argc < 2)
         return cli_usage_error("missing command (try 'spancast --help')");
     const char *command = argv[1];
-    if (!strcmp(command, "render") || !strcmp(command, "batch")) {
+    if (!strcmp(command, "render") || !strcmp(command, "batch") ||
+        !strcmp(command, "measure") || !strcmp(command, "overlaps") ||
+        !strcmp(command, "compare")) {
         int st = dist_enter(argc, argv); /* under mpirun: spancast-mpi */
         if (st >= 0)
             return st;
