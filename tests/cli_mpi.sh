@@ -6,11 +6,7 @@
 #
 # Run as: bash cli_mpi.sh <path-to-spancast> <source-dir> <work-dir>
 . "$(dirname "$0")/testlib.sh"
-require_tools mpirun
-[ -x "$(dirname "$bin")/spancast-mpi" ] ||
-    skip "spancast-mpi was not built (no MPI development files at configure time)"
-# This machine may have fewer cores than ranks; root needs Open MPI's consent.
-export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
+require_mpi
 mpi() {
     local np=$1
     shift

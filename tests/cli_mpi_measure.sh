@@ -6,10 +6,7 @@
 #
 # Run as: bash cli_mpi_measure.sh <path-to-spancast> <source-dir> <work-dir>
 . "$(dirname "$0")/testlib.sh"
-require_tools mpirun
-[ -x "$(dirname "$bin")/spancast-mpi" ] ||
-    skip "spancast-mpi was not built (no MPI development files at configure time)"
-export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
+require_mpi
 
 # A block drilled by a cylinder and cut by a sphere (curved surfaces, so the
 # integration refines over many rounds), and the same with a wider hole.

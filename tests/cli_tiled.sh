@@ -14,36 +14,26 @@ difference() {
 }
 CSG
 
-# The same pixels as one render, every output, with samples and edges.
+# The same pixels as one render, every output, with samples and edges:
+# tiled EXR against the scanline EXR, tiled TIFF (libtiff) against the
+# untiled TIFF (which OpenImageIO writes); in tiles, compressed.
 opts=(--imgsize=300,200 --spp=2 --view=edges -q)
-check
-"$bin" render m.csg -o whole.exr --mask=whole-mask.exr --depth=whole-depth.exr \
-    --normal=whole-normal.exr --id=whole-id.exr "${opts[@]}" || fail "whole render failed"
-"$bin" render m.csg -o tiled.exr --mask=tiled-mask.exr --depth=tiled-depth.exr \
-    --normal=tiled-normal.exr --id=tiled-id.exr "${opts[@]}" --tiled || fail "--tiled failed"
-for out in "" -mask -depth -normal -id; do
+for ext in exr tif; do
     check
-    idiff -fail 0 -warn 0 "whole$out.exr" "tiled$out.exr" >idiff.txt 2>&1 ||
-        fail "tiled$out.exr differs from whole$out.exr: $(tail -n 3 idiff.txt)"
-    iinfo -v "tiled$out.exr" | grep -q 'tile size: 32 x 32' ||
-        fail "tiled$out.exr is not tiled: $(iinfo -v "tiled$out.exr" | head -n 4)"
-done
-ls -a | grep -q '\.tmp-' && fail "a temporary was left behind: $(ls -a | grep '\.tmp-')"
-
-# Tiled TIFF: the same pixels as the untiled TIFF of every output (which
-# OpenImageIO writes), in tiles, compressed.
-check
-"$bin" render m.csg -o whole.tif --mask=whole-mask.tif --depth=whole-depth.tif \
-    --normal=whole-normal.tif --id=whole-id.tif "${opts[@]}" || fail "whole TIFF render failed"
-"$bin" render m.csg -o tiled.tif --mask=tiled-mask.tif --depth=tiled-depth.tif \
-    --normal=tiled-normal.tif --id=tiled-id.tif "${opts[@]}" --tiled || fail "--tiled .tif failed"
-for out in "" -mask -depth -normal -id; do
-    check
-    idiff -fail 0 -warn 0 "whole$out.tif" "tiled$out.tif" >idiff.txt 2>&1 ||
-        fail "tiled$out.tif differs from whole$out.tif: $(tail -n 3 idiff.txt)"
-    iinfo -v "tiled$out.tif" >info.txt
-    grep -q 'tile size: 32 x 32' info.txt && grep -q 'compression: "zip"' info.txt ||
-        fail "tiled$out.tif is not tiled and compressed: $(head -n 6 info.txt)"
+    "$bin" render m.csg -o "whole.$ext" --mask="whole-mask.$ext" --depth="whole-depth.$ext" \
+        --normal="whole-normal.$ext" --id="whole-id.$ext" "${opts[@]}" ||
+        fail "whole .$ext render failed"
+    "$bin" render m.csg -o "tiled.$ext" --mask="tiled-mask.$ext" --depth="tiled-depth.$ext" \
+        --normal="tiled-normal.$ext" --id="tiled-id.$ext" "${opts[@]}" --tiled ||
+        fail "--tiled .$ext failed"
+    for out in "" -mask -depth -normal -id; do
+        check
+        idiff -fail 0 -warn 0 "whole$out.$ext" "tiled$out.$ext" >idiff.txt 2>&1 ||
+            fail "tiled$out.$ext differs from whole$out.$ext: $(tail -n 3 idiff.txt)"
+        iinfo -v "tiled$out.$ext" >info.txt
+        grep -q 'tile size: 32 x 32' info.txt && grep -q 'compression: "zip"' info.txt ||
+            fail "tiled$out.$ext is not tiled and compressed: $(head -n 6 info.txt)"
+    done
 done
 iinfo tiled-mask.tif | grep -q '300 x  200, 1 channel, uint8 tiff' ||
     fail "tiled-mask.tif: $(iinfo tiled-mask.tif)"
