@@ -61,6 +61,34 @@ assert jobs[2]["args"][3] == "part two.png" and jobs[2]["args"][5] == "--mask=pa
 assert d["succeeded"] == 3 and d["failed"] == 1, d
 PY
 
+# A failed job's whole output, not only its last line, bounded: a model
+# with 600 warnings (about 40 KB of them) and a camera that looks nowhere.
+check
+{
+    echo 'union() {'
+    for i in $(seq 600); do echo '  sphere(r = 0);'; done
+    echo '}'
+} >lib/warns.csg
+printf 'render warns.csg -o never.png --camera=1,1,1,1,1,1 --imgsize=8,6\n' >lib/long.txt
+"$bin" batch lib/long.txt >long.txt 2>err.txt
+[ $? = 1 ] || fail "the long job's batch did not fail: $(tail -n 3 long.txt)"
+grep -q '^ *| warns\.csg:2:3: warning: ' long.txt || fail "the long job's first warning: $(head -n 5 long.txt)"
+grep -Eq '^ *\| \[\.\.\. [0-9]+ bytes left out \.\.\.\]$' long.txt ||
+    fail "the long job's output is not bounded: $(wc -c <long.txt) bytes"
+grep -qx ' *| spancast: error: camera eye and centre are the same point' long.txt ||
+    fail "the long job's last line: $(tail -n 3 long.txt)"
+[ "$(wc -c <long.txt)" -lt 40000 ] || fail "the long job's table: $(wc -c <long.txt) bytes"
+"$bin" batch lib/long.txt --json >long.json 2>err.txt
+python3 - long.json lib/warns.csg <<'PY' || fail "long.json: $(head -c 600 long.json)"
+import json, sys
+job = json.load(open(sys.argv[1]))["jobs"][0]
+out = job["output"]
+assert job["message"] == "spancast: error: camera eye and centre are the same point", job
+assert out.startswith("warns.csg:2:3: warning: "), out[:200]
+assert out.rstrip("\n").endswith(job["message"]), out[-200:]
+assert " bytes left out ...]" in out and len(out) <= 16 * 1024 + 64, len(out)
+PY
+
 # Every job succeeding: exit 0.
 check
 printf 'render part.csg -o ok.png --imgsize=16,12\n' >lib/ok.txt
@@ -103,7 +131,7 @@ if command -v mpirun >/dev/null && [ -x "$(dirname "$bin")/spancast-mpi" ]; then
     python3 - mpi.json batch.json <<'PY' || fail "mpi.json: $(cat mpi.json) $(cat err.txt)"
 import json, sys
 a, b = (json.load(open(p)) for p in sys.argv[1:])
-strip = lambda d: [(j["line"], j["exit"], j["message"]) for j in d["jobs"]]
+strip = lambda d: [(j["line"], j["exit"], j["message"], j["output"]) for j in d["jobs"]]
 assert strip(a) == strip(b), (strip(a), strip(b))
 PY
     cmp -s ref.png lib/part.png || fail "part.png from the batch on 3 ranks differs"

@@ -1,5 +1,5 @@
 # `spancast render --tiled` (and images too large to hold whole): tiled
-# EXR files written tile by tile, pixel for pixel the whole render's, in
+# EXR and TIFF files written tile by tile, pixel for pixel the whole render's, in
 # bounded memory, through a temporary; outputs that cannot be streamed are
 # refused before any work.
 #
@@ -14,20 +14,30 @@ difference() {
 }
 CSG
 
-# The same pixels as one render, every output, with samples and edges.
+# The same pixels as one render, every output, with samples and edges:
+# tiled EXR against the scanline EXR, tiled TIFF (libtiff) against the
+# untiled TIFF (which OpenImageIO writes); in tiles, compressed.
 opts=(--imgsize=300,200 --spp=2 --view=edges -q)
-check
-"$bin" render m.csg -o whole.exr --mask=whole-mask.exr --depth=whole-depth.exr \
-    --normal=whole-normal.exr --id=whole-id.exr "${opts[@]}" || fail "whole render failed"
-"$bin" render m.csg -o tiled.exr --mask=tiled-mask.exr --depth=tiled-depth.exr \
-    --normal=tiled-normal.exr --id=tiled-id.exr "${opts[@]}" --tiled || fail "--tiled failed"
-for out in "" -mask -depth -normal -id; do
+for ext in exr tif; do
     check
-    idiff -fail 0 -warn 0 "whole$out.exr" "tiled$out.exr" >idiff.txt 2>&1 ||
-        fail "tiled$out.exr differs from whole$out.exr: $(tail -n 3 idiff.txt)"
-    iinfo -v "tiled$out.exr" | grep -q 'tile size: 32 x 32' ||
-        fail "tiled$out.exr is not tiled: $(iinfo -v "tiled$out.exr" | head -n 4)"
+    "$bin" render m.csg -o "whole.$ext" --mask="whole-mask.$ext" --depth="whole-depth.$ext" \
+        --normal="whole-normal.$ext" --id="whole-id.$ext" "${opts[@]}" ||
+        fail "whole .$ext render failed"
+    "$bin" render m.csg -o "tiled.$ext" --mask="tiled-mask.$ext" --depth="tiled-depth.$ext" \
+        --normal="tiled-normal.$ext" --id="tiled-id.$ext" "${opts[@]}" --tiled ||
+        fail "--tiled .$ext failed"
+    for out in "" -mask -depth -normal -id; do
+        check
+        idiff -fail 0 -warn 0 "whole$out.$ext" "tiled$out.$ext" >idiff.txt 2>&1 ||
+            fail "tiled$out.$ext differs from whole$out.$ext: $(tail -n 3 idiff.txt)"
+        iinfo -v "tiled$out.$ext" >info.txt
+        grep -q 'tile size: 32 x 32' info.txt && grep -q 'compression: "zip"' info.txt ||
+            fail "tiled$out.$ext is not tiled and compressed: $(head -n 6 info.txt)"
+    done
 done
+iinfo tiled-mask.tif | grep -q '300 x  200, 1 channel, uint8 tiff' ||
+    fail "tiled-mask.tif: $(iinfo tiled-mask.tif)"
+iinfo tiled.tif | grep -q '300 x  200, 3 channel, float tiff' || fail "tiled.tif: $(iinfo tiled.tif)"
 ls -a | grep -q '\.tmp-' && fail "a temporary was left behind: $(ls -a | grep '\.tmp-')"
 
 # A crop, tiled, is the crop.
@@ -39,14 +49,14 @@ check
 idiff -fail 0 -warn 0 crop.exr crop-tiled.exr >idiff.txt 2>&1 ||
     fail "tiled crop differs: $(tail -n 3 idiff.txt)"
 
-# Only EXR is written tile by tile: other outputs are refused up front,
+# Only EXR and TIFF are written tile by tile: other outputs are refused up front,
 # and an existing file is left alone.
 check
 echo keep >keep.png
 "$bin" render m.csg -o keep.png --tiled -q 2>err.txt
 rc=$?
 [ "$rc" = 2 ] || fail "--tiled to .png exited $rc"
-grep -qx "spancast: error: cannot write 'keep.png': --tiled writes each tile as it is done; only .exr outputs are written tile by tile" err.txt ||
+grep -qx "spancast: error: cannot write 'keep.png': --tiled writes each tile as it is done; only .exr and .tif outputs are written tile by tile" err.txt ||
     fail "--tiled to .png: '$(cat err.txt)'"
 [ "$(cat keep.png)" = keep ] || fail "--tiled to .png touched keep.png"
 # An image whose buffers do not fit anywhere must be streamed: a PNG of it
@@ -55,7 +65,7 @@ check
 "$bin" render m.csg -o huge.png --imgsize=200000,200000 -q 2>err.txt
 rc=$?
 [ "$rc" = 2 ] || fail "a 200000x200000 PNG exited $rc"
-grep -qx "spancast: error: cannot write 'huge.png': a 200000x200000 render needs 447.0 GiB of image buffers (limit is 16 GiB); only .exr outputs are written tile by tile" err.txt ||
+grep -qx "spancast: error: cannot write 'huge.png': a 200000x200000 render needs 447.0 GiB of image buffers (limit is 16 GiB); only .exr and .tif outputs are written tile by tile" err.txt ||
     fail "a 200000x200000 PNG: '$(cat err.txt)'"
 [ -e huge.png ] && fail "huge.png was written"
 
@@ -86,18 +96,22 @@ ls -a | grep -q '\.tmp-' && fail "the interrupted render left $(ls -a | grep '\.
 # grow with it, stays small beside it in both builds: an 8 x 8 render peaks
 # at about 8 MB, and at about 25 MB under AddressSanitizer, whose freed
 # tiles also wait in its quarantine (kept small, or it would be counted).
+# The same for tiled TIFF.
 if [ -x /usr/bin/time ]; then
-    check
-    ASAN_OPTIONS=${ASAN_OPTIONS:+$ASAN_OPTIONS:}quarantine_size_mb=4 \
-        /usr/bin/time -f %M -o rss.txt "$bin" render m.csg -o big.exr --depth=big-depth.exr \
-        --normal=big-normal.exr --imgsize=4000,3000 --camera=0,0,0,55,0,25,3000 --tiled -q ||
-        fail "the 4000x3000 tiled render failed"
-    peak_kib=$(tail -n 1 rss.txt)
-    buffers_kib=$((4000 * 3000 * 28 / 1024))
-    [ "$peak_kib" -lt $((buffers_kib / 3)) ] ||
-        fail "peak memory $peak_kib KiB, not under a third of the image's $buffers_kib KiB"
+    for ext in exr tif; do
+        check
+        ASAN_OPTIONS=${ASAN_OPTIONS:+$ASAN_OPTIONS:}quarantine_size_mb=4 \
+            /usr/bin/time -f %M -o rss.txt "$bin" render m.csg -o "big.$ext" \
+            --depth="big-depth.$ext" --normal="big-normal.$ext" --imgsize=4000,3000 \
+            --camera=0,0,0,55,0,25,3000 --tiled -q || fail "the 4000x3000 tiled .$ext render failed"
+        peak_kib=$(tail -n 1 rss.txt)
+        buffers_kib=$((4000 * 3000 * 28 / 1024))
+        [ "$peak_kib" -lt $((buffers_kib / 3)) ] ||
+            fail ".$ext: peak memory $peak_kib KiB, not under a third of the image's $buffers_kib KiB"
+    done
     iinfo big.exr | grep -q '4000 x 3000, 3 channel, float openexr' ||
         fail "big.exr: $(iinfo big.exr)"
+    iinfo big.tif | grep -q '4000 x 3000, 3 channel, float tiff' || fail "big.tif: $(iinfo big.tif)"
 else
     skip "GNU time (/usr/bin/time) is not installed"
 fi

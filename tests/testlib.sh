@@ -88,3 +88,12 @@ mpirun_test() {
         ASAN_OPTIONS=${ASAN_OPTIONS:+$ASAN_OPTIONS:}detect_leaks=0 \
         mpirun --oversubscribe "$@"
 }
+
+# Skips the test unless mpirun and spancast-mpi are there; lets mpirun run
+# as root (this machine's tests do).
+require_mpi() {
+    require_tools mpirun
+    [ -x "$(dirname "$bin")/spancast-mpi" ] ||
+        skip "spancast-mpi was not built (no MPI development files at configure time)"
+    export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
+}

@@ -619,6 +619,33 @@ typedef struct sc_measure_options {
     void *progress_user;
     const volatile sig_atomic_t *cancel; /* as sc_render_options.cancel */
     /* The first recorded ABI ends here; new fields go below. */
+
+    /* Several processes sharing one integration (an MPI job: docs/mpi.md),
+     * each calling the query with the same scene and options but its own
+     * part. The lines of each round, numbered 0 .. count-1, are cut into
+     * parts runs in order; run p is lines count*p/parts up to (not
+     * including) count*(p+1)/parts, and this process casts run part only.
+     * The result is the same, to the last bit, on every process and as
+     * with one: every line is cast exactly as alone, and everything that
+     * adds lines up runs, in the same order, on every process. */
+    int parts; /* 0 or 1 (default): this process casts every line */
+    int part;  /* this process's run, 0 .. parts-1 */
+    /* Called from the calling thread by every process at once, after each
+     * round: records holds count records of size bytes, those of this
+     * process's run filled; on return every record must hold what the
+     * process owning its run wrote. outcome (3 ints: a status, and for
+     * SC_ERR_LIMIT the reason and the leaf) is this process's on the way
+     * in and,
+     * on the way out, the first one (in part order) whose status is not
+     * SC_OK, or this one's when all are. Returns 0 when the exchange
+     * failed (the query then fails on every process). */
+    int (*share_lines)(void *user, void *records, size_t size, size_t count,
+                       int outcome[3]);
+    /* Called likewise once at the end with box (lo xyz, hi xyz) of what
+     * this process saw; on return the smallest lo and largest hi over all
+     * processes. Returns 0 when the exchange failed. */
+    int (*share_box)(void *user, double box[6]);
+    void *share_user;
 } sc_measure_options;
 
 /* Sets size and the defaults written beside each field. Never fails. */

@@ -69,7 +69,8 @@ void lines_scratch_free(lines_scratch *s)
     free(s->box);
 }
 
-void lines_scratch_box(const lines_scratch *s, double seen[6])
+int lines_scratch_box(const lines_scratch *s, const sc_measure_options *options,
+                      double seen[6])
 {
     for (int i = 0; i < 3; i++) {
         seen[i] = INFINITY;
@@ -80,4 +81,7 @@ void lines_scratch_box(const lines_scratch *s, double seen[6])
             seen[i] = fmin(seen[i], s->box[k][i]);
             seen[3 + i] = fmax(seen[3 + i], s->box[k][3 + i]);
         }
+    if (options->parts > 1 && options->share_box)
+        return options->share_box(options->share_user, seen);
+    return 1;
 }

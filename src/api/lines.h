@@ -10,6 +10,7 @@
 #include "base/arena.h"
 #include "csg/csg.h"
 #include "csg/span.h"
+#include "spancast/spancast.h"
 
 /* The whole line along axis a (0, 1, 2) through the point whose a-th
  * coordinate is at and whose next two (cyclically) are u and v. */
@@ -43,9 +44,12 @@ int lines_scratch_init(lines_scratch *s, int threads, int with_box);
 /* Frees what lines_scratch_init made. */
 void lines_scratch_free(lines_scratch *s);
 
-/* The union of the threads' boxes into seen (lo xyz, hi xyz); empty
- * (lo > hi) when no thread saw a span end. */
-void lines_scratch_box(const lines_scratch *s, double seen[6]);
+/* The union of the threads' boxes into seen (lo xyz, hi xyz), and of the
+ * other processes' when several share the lines (options->parts); empty
+ * (lo > hi) when none saw a span end. Returns 0 when the exchange with
+ * the other processes failed. */
+int lines_scratch_box(const lines_scratch *s, const sc_measure_options *options,
+                      double seen[6]);
 
 /* h mixed with the surfaces of the list's ends, in order. */
 uint64_t lines_signature(uint64_t h, span_list s);

@@ -353,7 +353,8 @@ static sc_status measure_scene(const sc_scene *scene, const sc_measure_options *
         out->converged = converged;
         out->lines = grids[0].lines + grids[1].lines + grids[2].lines;
         double seen[6];
-        lines_scratch_box(&shared.work, seen);
+        if (!lines_scratch_box(&shared.work, options, seen))
+            st = SC_ERR_NOMEM;
         for (int i = 0; i < 3; i++) {
             if (!(seen[i] <= seen[3 + i])) /* nothing seen: the tree's box */
                 seen[i] = lo[i], seen[3 + i] = hi[i];

@@ -281,7 +281,8 @@ static sc_status overlap_pair(const csg_tree *ta, const csg_tree *tb, const doub
     if (st == SC_OK) {
         out->volume = quad_combine(grids, 0);
         double seen[6];
-        lines_scratch_box(&shared.work, seen);
+        if (!lines_scratch_box(&shared.work, &o, seen))
+            st = SC_ERR_NOMEM; /* the exchange with the other processes failed */
         *found = out->volume.value > 0 && seen[0] <= seen[3];
         for (int i = 0; i < 3; i++) {
             out->box_lo[i] = *found ? seen[i] : 0;

@@ -55,27 +55,72 @@ static int reserve(quad_grid *g, size_t more)
     return 1;
 }
 
+/* This process's outcome of a round, shared with the others when several
+ * share the lines (sc_measure_options.share_lines); g's limit fields hold
+ * the failing process's reason and leaf (the primitive only when it was
+ * this process's). Returns the round's status, the same on every process. */
+static sc_status round_outcome(quad_grid *g, int failed, cancel_token *token,
+                               void *records, size_t size, size_t count)
+{
+    cancel_reason reason = cancel_check(token);
+    sc_status st = SC_OK;
+    if (reason == CANCEL_FLAG)
+        st = SC_ERR_CANCELLED;
+    else if (reason != CANCEL_NONE)
+        st = SC_ERR_LIMIT;
+    else if (failed)
+        st = SC_ERR_ARGUMENT;
+    int outcome[3] = {(int)st, (int)reason, 0};
+    if (st == SC_ERR_LIMIT) {
+        g->limit_leaf = atomic_load(&token->leaf);
+        g->limit_prim = atomic_load(&token->prim);
+        outcome[2] = (int)g->limit_leaf;
+    }
+    const sc_measure_options *share = g->share;
+    if (share && !share->share_lines(share->share_user, records, size, count, outcome))
+        return SC_ERR_NOMEM; /* the exchange failed: nothing more to be had */
+    if (share && (outcome[0] != (int)st || outcome[1] != (int)reason ||
+                  (st == SC_ERR_LIMIT && outcome[2] != (int)g->limit_leaf))) {
+        /* another process failed first */
+        st = (sc_status)outcome[0];
+        g->limit_prim = NULL;
+        g->limit_leaf = (uint32_t)outcome[2];
+        g->limit_remote = 1;
+    }
+    if (st == SC_ERR_LIMIT)
+        g->limit_reason = outcome[1];
+    if (st == SC_ERR_ARGUMENT)
+        g->failed = 1;
+    return st;
+}
+
 /* Samples the five lines of each of the n cells (which must be complete
- * but for estimate and error) and fills their estimate and error. */
+ * but for estimate and error) and fills their estimate and error. With
+ * several processes sharing the lines (g->share), this one casts its run
+ * of them and the exchange brings the others'. */
 static sc_status sample_cells(quad_grid *g, quad_cell *cells, double *estimate,
                               double *error, uint64_t *signature, size_t n,
                               const volatile sig_atomic_t *cancel)
 {
     int k_count = g->nvalues;
     size_t lines = n * 5;
-    double *values = malloc(lines * (size_t)k_count * sizeof *values);
-    uint64_t *sigs = malloc(lines * sizeof *sigs);
-    if (!values || !sigs) {
-        free(values);
-        free(sigs);
+    /* One record a line: its values, then its signature (as a double's
+     * bytes), so that a run of lines travels as one block. */
+    size_t stride = (size_t)k_count + 1;
+    double *records = malloc(lines * stride * sizeof *records);
+    if (!records)
         return SC_ERR_NOMEM;
-    }
     int failed = 0;
-    long long total = (long long)lines;
+    long long first = 0, end = (long long)lines;
+    if (g->share) {
+        uint64_t parts = (uint64_t)g->share->parts, part = (uint64_t)g->share->part;
+        first = (long long)((uint64_t)lines * part / parts);
+        end = (long long)((uint64_t)lines * (part + 1) / parts);
+    }
     cancel_token token;
     cancel_init(&token, cancel, RENDER_MIN_IMPLICIT_EVALS);
 #pragma omp parallel for schedule(dynamic, 64) num_threads(g->threads)
-    for (long long line = 0; line < total; line++) {
+    for (long long line = first; line < end; line++) {
         int stop;
 #pragma omp atomic read
         stop = failed;
@@ -90,8 +135,10 @@ static sc_status sample_cells(quad_grid *g, quad_cell *cells, double *estimate,
         }
         cancel_scope scope;
         cancel_enter(&scope, &token);
-        int ok = g->sample(g->context, omp_get_thread_num(), u, v,
-                           values + (size_t)line * (size_t)k_count, &sigs[line]);
+        double *record = records + (size_t)line * stride;
+        uint64_t sig = 0;
+        int ok = g->sample(g->context, omp_get_thread_num(), u, v, record, &sig);
+        memcpy(record + k_count, &sig, sizeof sig);
         cancel_leave(&scope);
         cancel_credit(&token, RENDER_IMPLICIT_EVALS_PER_RAY);
         if (!ok) {
@@ -100,38 +147,30 @@ static sc_status sample_cells(quad_grid *g, quad_cell *cells, double *estimate,
         }
     }
     g->lines += lines;
-    cancel_reason reason = cancel_check(&token);
-    if (failed || reason != CANCEL_NONE) {
-        free(values);
-        free(sigs);
-        if (reason == CANCEL_FLAG)
-            return SC_ERR_CANCELLED;
-        if (reason != CANCEL_NONE) {
-            g->limit_reason = (int)reason;
-            g->limit_leaf = atomic_load(&token.leaf);
-            g->limit_prim = atomic_load(&token.prim);
-            return SC_ERR_LIMIT;
-        }
-        g->failed = failed;
-        return SC_ERR_ARGUMENT;
+    sc_status st =
+        round_outcome(g, failed, &token, records, stride * sizeof *records, lines);
+    if (st) {
+        free(records);
+        return st;
     }
     for (size_t i = 0; i < n; i++) {
         double area = 4 * cells[i].hu * cells[i].hv;
-        const double *centre = values + i * 5 * (size_t)k_count;
+        const double *centre = records + i * 5 * stride;
         for (int k = 0; k < k_count; k++) {
             double quarters = 0;
             for (int q = 1; q <= 4; q++)
-                quarters += centre[q * k_count + k];
+                quarters += centre[(size_t)q * stride + (size_t)k];
             double fine = quarters * area / 4, coarse = centre[k] * area;
             estimate[i * (size_t)k_count + (size_t)k] = fine;
             error[i * (size_t)k_count + (size_t)k] = fabs(fine - coarse);
         }
-        const uint64_t *s = sigs + i * 5;
+        uint64_t s[5];
+        for (int q = 0; q < 5; q++)
+            memcpy(&s[q], centre + (size_t)q * stride + (size_t)k_count, sizeof s[q]);
         int same = s[0] == s[1] && s[0] == s[2] && s[0] == s[3] && s[0] == s[4];
         signature[i] = same ? s[0] | 1 : 0;
     }
-    free(values);
-    free(sigs);
+    free(records);
     return SC_OK;
 }
 
@@ -274,9 +313,10 @@ static int sum_cells(quad_grid *g)
 
 sc_status quad_init(quad_grid *g, const double lo[2], const double hi[2], int nvalues,
                     size_t base, quad_sample_fn sample, void *context, int threads,
-                    const volatile sig_atomic_t *cancel)
+                    const sc_measure_options *share, const volatile sig_atomic_t *cancel)
 {
     memset(g, 0, sizeof *g);
+    g->share = share && share->parts > 1 && share->share_lines ? share : NULL;
     g->nvalues = nvalues;
     g->sample = sample;
     g->context = context;
@@ -543,7 +583,7 @@ sc_status quad_integrate3(const double lo[3], const double hi[3], int nvalues,
         int u = (a + 1) % 3, v = (a + 2) % 3;
         double rlo[2] = {lo[u], lo[v]}, rhi[2] = {hi[u], hi[v]};
         st = quad_init(&grids[a], rlo, rhi, nvalues, 4096, sample, contexts[a], threads,
-                       options->cancel);
+                       options, options->cancel);
     }
     if (st)
         return st;
@@ -607,10 +647,16 @@ int quad_limit_error(const quad_grid grids[3], const csg_tree *ta, const csg_tre
         const quad_grid *q = &grids[g];
         if (!q->limit_reason)
             continue;
-        int in_b = tb && q->limit_leaf < tb->leaf_count &&
-                   &tb->leaves[q->limit_leaf].prim == q->limit_prim;
-        render_limit_error(in_b ? tb : ta, q->limit_reason, q->limit_leaf, q->limit_prim,
-                           error);
+        /* Passed in another process (q->limit_remote), the leaf's primitive is
+         * known only by its index: of the one tree measured, for the
+         * position; of one of two compared trees, not known, so the message
+         * then has no position. */
+        const void *prim = q->limit_prim;
+        if (q->limit_remote && !tb && q->limit_leaf < ta->leaf_count)
+            prim = &ta->leaves[q->limit_leaf].prim;
+        int in_b = tb && prim && q->limit_leaf < tb->leaf_count &&
+                   &tb->leaves[q->limit_leaf].prim == prim;
+        render_limit_error(in_b ? tb : ta, q->limit_reason, q->limit_leaf, prim, error);
         return 1;
     }
     return 0;

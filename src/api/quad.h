@@ -45,6 +45,10 @@
  * Determinism: the lines of one round are sampled in parallel (OpenMP) into
  * an array indexed by line, and everything that adds them up runs serially
  * in the cells' order, so the results do not depend on the thread count.
+ * Nor on the number of processes sharing the lines (an MPI job): each casts
+ * a fixed run of every round's lines, the exchange gives every process all
+ * of them, and each then adds them up and chooses the next round's cells
+ * exactly as one process alone would, so all take the same steps.
  */
 #ifndef SPANCAST_API_QUAD_H
 #define SPANCAST_API_QUAD_H
@@ -105,7 +109,11 @@ typedef struct quad_grid {
      * and the leaf and primitive that passed it */
     int limit_reason;
     uint32_t limit_leaf;
-    const void *limit_prim;
+    const void *limit_prim; /* NULL when another process passed it */
+    int limit_remote;       /* another process sharing the lines passed it */
+    /* the processes sharing the lines (sc_measure_options.parts), NULL when
+     * this one casts them all */
+    const sc_measure_options *share;
 } quad_grid;
 
 /* When one of the three grids of an integral ended on a limit of
@@ -116,13 +124,14 @@ int quad_limit_error(const quad_grid grids[3], const csg_tree *ta, const csg_tre
                      sc_error *error);
 
 /* Starts the integration over [lo0, hi0] x [lo1, hi1] with about base
- * cells of nearly square shape (at least 4 a side) and samples them.
+ * cells of nearly square shape (at least 4 a side) and samples them; share
+ * (may be NULL) says which processes share the lines, and must outlive g.
  * Returns SC_OK, SC_ERR_NOMEM, SC_ERR_CANCELLED (cancel set) or
  * SC_ERR_ARGUMENT when the sampler failed; free with quad_free in every
  * case. */
 sc_status quad_init(quad_grid *g, const double lo[2], const double hi[2], int nvalues,
                     size_t base, quad_sample_fn sample, void *context, int threads,
-                    const volatile sig_atomic_t *cancel);
+                    const sc_measure_options *share, const volatile sig_atomic_t *cancel);
 
 /* One round of refinement towards target[k] (the allowed total error of
  * value k; 0 leaves k out of the decision): the cells that together hold

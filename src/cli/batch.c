@@ -18,7 +18,10 @@
  * others. Under mpirun the jobs are the pieces of dist.h's queue, spread
  * over the ranks, and rank 0 prints the summary. At the end: a table of
  * every job (its line, exit status, time, command, and for a failure the
- * last line it printed, its message), or with --json the same as JSON.
+ * last line it printed, its message, and the whole of what it printed,
+ * stdout and stderr as they came, bounded by BATCH_OUTPUT: the first
+ * BATCH_OUTPUT_HEAD bytes and the last ones, with what was left out
+ * counted between), or with --json the same as JSON.
  * Exit status: 0 when every job succeeded, 1 when one failed or the jobs
  * file cannot be read, 2 for a bad command line or a malformed jobs file
  * (file:line:col: error: ...).
@@ -47,6 +50,8 @@ extern char **environ;
 #define BATCH_MAX_FILE ((size_t)64 << 20) /* bytes of a jobs file */
 #define BATCH_MAX_JOBS 1000000
 #define BATCH_MESSAGE 512
+#define BATCH_OUTPUT ((size_t)16 << 10)     /* bytes of a failed job's output kept */
+#define BATCH_OUTPUT_HEAD ((size_t)4 << 10) /* of them, from its beginning */
 
 typedef struct batch_job {
     int line;
@@ -60,6 +65,9 @@ typedef struct batch_result {
     int32_t signal;              /* the signal that ended it, or 0 */
     double seconds;              /* wall time */
     char message[BATCH_MESSAGE]; /* the last line it printed */
+    /* a failed job's output (NUL-terminated, malloc'd), or NULL; travels
+     * after the struct (pack_result) */
+    char *output;
 } batch_result;
 
 typedef struct batch {
@@ -87,6 +95,8 @@ static void free_jobs(batch *b)
         free(b->jobs[k].argv);
     }
     free(b->jobs);
+    for (int k = 0; b->results && k < b->count; k++)
+        free(b->results[k].output);
     free(b->results);
     free(b->env);
 }
@@ -235,6 +245,37 @@ static void last_line(int fd, char *out, size_t size)
     snprintf(out, size, "%.*s", (int)(n - begin), tail + begin);
 }
 
+/* What the file open at fd holds, at most BATCH_OUTPUT bytes of it: its
+ * beginning and its end, with a line saying how much was left out between
+ * (malloc'd, NUL-terminated; NULL when empty or out of memory). */
+static char *bounded_output(int fd)
+{
+    off_t length = lseek(fd, 0, SEEK_END);
+    if (length <= 0)
+        return NULL;
+    size_t total = (size_t)length;
+    size_t head = total > BATCH_OUTPUT ? BATCH_OUTPUT_HEAD : total;
+    size_t tail = total > BATCH_OUTPUT ? BATCH_OUTPUT - BATCH_OUTPUT_HEAD : 0;
+    char gap[96] = "";
+    if (tail)
+        snprintf(gap, sizeof gap, "\n[... %zu bytes left out ...]\n",
+                 total - head - tail);
+    size_t gap_size = strlen(gap);
+    char *out = malloc(head + gap_size + tail + 1);
+    if (!out)
+        return NULL;
+    ssize_t got = pread(fd, out, head, 0);
+    size_t n = got > 0 ? (size_t)got : 0;
+    if (tail) {
+        memcpy(out + n, gap, gap_size);
+        n += gap_size;
+        got = pread(fd, out + n, tail, (off_t)(total - tail));
+        n += got > 0 ? (size_t)got : 0;
+    }
+    out[n] = '\0';
+    return out;
+}
+
 /* Runs job k as a process of its own. */
 static sc_status run_job(void *user, int k, void **result, sc_error *error)
 {
@@ -288,6 +329,8 @@ static sc_status run_job(void *user, int k, void **result, sc_error *error)
         }
         if (fd >= 0)
             last_line(fd, r->message, sizeof r->message);
+        if (fd >= 0 && r->exit_status != 0)
+            r->output = bounded_output(fd);
         if (r->signal && !r->message[0])
             snprintf(r->message, sizeof r->message, "killed by signal %d (%s)", r->signal,
                      strsignal(r->signal));
@@ -300,40 +343,60 @@ static sc_status run_job(void *user, int k, void **result, sc_error *error)
     return SC_OK;
 }
 
+/* The struct (its output pointer meaningless), then the output's bytes. */
 static void *pack_result(void *user, const void *result, size_t *size)
 {
     (void)user;
-    void *bytes = malloc(sizeof(batch_result));
-    if (bytes)
-        memcpy(bytes, result, sizeof(batch_result));
-    *size = sizeof(batch_result);
+    const batch_result *r = result;
+    size_t extra = r->output ? strlen(r->output) : 0;
+    char *bytes = malloc(sizeof *r + extra);
+    if (bytes) {
+        memcpy(bytes, r, sizeof *r);
+        memcpy(bytes + sizeof *r, r->output ? r->output : "", extra);
+    }
+    *size = sizeof *r + extra;
     return bytes;
 }
 
 static void *unpack_result(void *user, const void *bytes, size_t size)
 {
     (void)user;
-    if (size != sizeof(batch_result))
+    if (size < sizeof(batch_result) || size - sizeof(batch_result) > BATCH_OUTPUT + 96)
         return NULL;
     batch_result *r = malloc(sizeof *r);
-    if (r) {
-        memcpy(r, bytes, sizeof *r);
-        r->message[sizeof r->message - 1] = '\0';
+    if (!r)
+        return NULL;
+    memcpy(r, bytes, sizeof *r);
+    r->message[sizeof r->message - 1] = '\0';
+    r->output = NULL;
+    size_t extra = size - sizeof *r;
+    if (extra) {
+        r->output = malloc(extra + 1);
+        if (!r->output) {
+            free(r);
+            return NULL;
+        }
+        memcpy(r->output, (const char *)bytes + sizeof *r, extra);
+        r->output[extra] = '\0';
     }
     return r;
 }
 
+/* Takes the result's output (the result is released after). */
 static sc_status deliver_result(void *user, int k, const void *result, sc_error *error)
 {
     (void)error;
     batch *b = user;
     b->results[k] = *(const batch_result *)result;
+    ((batch_result *)result)->output = NULL;
     return SC_OK;
 }
 
 static void release_result(void *user, void *result)
 {
     (void)user;
+    if (result)
+        free(((batch_result *)result)->output);
     free(result);
 }
 
@@ -373,6 +436,26 @@ static void print_json_string(FILE *out, const char *s)
     fputc('"', out);
 }
 
+/* A failed job's output under its line in the table, each line marked,
+ * when it is more than the one line of its message. */
+static void print_output(const char *output)
+{
+    if (!output)
+        return;
+    size_t n = strlen(output);
+    while (n > 0 &&
+           (output[n - 1] == '\n' || output[n - 1] == '\r' || output[n - 1] == ' '))
+        n--;
+    if (!memchr(output, '\n', n))
+        return; /* the message alone */
+    for (size_t at = 0; at < n;) {
+        const char *end = memchr(output + at, '\n', n - at);
+        size_t len = end ? (size_t)(end - (output + at)) : n - at;
+        printf("%-30s| %.*s\n", "", (int)len, output + at);
+        at += len + 1;
+    }
+}
+
 static void print_table(const batch *b, int failed, double seconds)
 {
     printf("%-5s %-6s %-6s %9s  %s\n", "job", "line", "exit", "seconds", "command");
@@ -384,6 +467,8 @@ static void print_table(const batch *b, int failed, double seconds)
         putchar('\n');
         if (r->exit_status != 0)
             printf("%-30s%s\n", "", r->message[0] ? r->message : "(no message)");
+        if (r->exit_status != 0)
+            print_output(r->output);
     }
     printf("%d job%s: %d succeeded, %d failed, in %.3f s\n", b->count,
            b->count == 1 ? "" : "s", b->count - failed, failed, seconds);
@@ -402,6 +487,8 @@ static void print_json(const batch *b, int failed, double seconds)
         printf("], \"exit\": %d, \"ok\": %s, \"seconds\": %.6f, \"message\": ",
                r->exit_status, r->exit_status == 0 ? "true" : "false", r->seconds);
         print_json_string(stdout, r->exit_status ? r->message : "");
+        fputs(", \"output\": ", stdout);
+        print_json_string(stdout, r->exit_status && r->output ? r->output : "");
         putchar('}');
     }
     printf("],\n \"succeeded\": %d, \"failed\": %d, \"seconds\": %.6f}\n",

@@ -18,6 +18,12 @@
  * there a sub-pixel shift of an edge changes the mask). B may be a mesh
  * (.stl or .off), loaded as an import.
  *
+ * Under `mpirun -np N` every rank loads the models (a model's text comes
+ * from rank 0, dist.h; a mesh or the objects of overlaps each rank reads
+ * itself) and casts its share of the lines (dist_share_lines); rank 0
+ * prints the results, which are those of one process to the last digit,
+ * and renders compare's views alone.
+ *
  * Exit status: measure as render (0, 1 when the model does not load, 2 for
  * a bad command line); overlaps and compare as diff: 0 no overlap above
  * --min-volume / the same within the tolerances, 1 an overlap / different,
@@ -34,6 +40,7 @@
 #include <unistd.h>
 
 #include "cli/cli.h"
+#include "cli/dist.h"
 #include "formats/framebuffer.h" /* the difference image is a framebuffer of its own */
 #include "spancast/spancast.h"
 
@@ -338,6 +345,20 @@ static int run_measure(check_args *a)
 
 /* ---- overlaps ---- */
 
+/* Under mpirun, whether every rank loaded path (a file each rank reads
+ * itself), ok saying whether this one did; the same answer on every rank.
+ * Rank 0 says so when only another rank failed. */
+static int loaded_everywhere(int ok, const char *path)
+{
+    int failed = dist_agree(!ok);
+    if (failed && ok)
+        fprintf(stderr,
+                "spancast: error: cannot load '%s' on every rank of the MPI job (a "
+                "rank reads it itself: is it where every rank can see it?)\n",
+                path);
+    return !failed;
+}
+
 static int run_overlaps(check_args *a)
 {
     const char *path = a->inputs[0];
@@ -355,8 +376,13 @@ static int run_overlaps(check_args *a)
     cli_loading(1); /* cannot be stopped from inside: stop.c */
     sc_status loaded = sc_objects_load(path, &lo, &objects, &error);
     cli_loading(0);
+    int everywhere = loaded_everywhere(loaded == SC_OK, path);
     if (loaded != SC_OK)
         return call_failed(&error, CLI_EXIT_USAGE);
+    if (!everywhere) {
+        sc_objects_release(objects);
+        return CLI_EXIT_USAGE;
+    }
     progress_line line;
     start_progress(a, &line, "checking pairs");
     double t0 = seconds_now();
@@ -431,10 +457,10 @@ static sc_scene *load_any(const char *path, int faithful)
     cli_loading(1); /* cannot be stopped from inside: stop.c */
     sc_status st = sc_scene_load_mesh(path, &lo, &scene, &error);
     cli_loading(0);
-    if (st != SC_OK) {
-        if (cli_stop)
-            return NULL;
+    if (st != SC_OK && !cli_stop)
         cli_print_error(&error);
+    if (!loaded_everywhere(st == SC_OK, path)) {
+        sc_scene_release(scene);
         return NULL;
     }
     return scene;
@@ -615,7 +641,9 @@ static int run_compare(check_args *a)
     int different = c.difference.value > a->options.tolerance * larger;
     view_result results[sizeof views / sizeof views[0]];
     int status = 0;
-    size_t view_count = (has_a || has_b) ? sizeof views / sizeof views[0] : 0;
+    /* the views: rank 0's alone (under mpirun), which prints them */
+    size_t view_count =
+        (has_a || has_b) && dist_rank() == 0 ? sizeof views / sizeof views[0] : 0;
     for (size_t k = 0; k < view_count && !status; k++) {
         status = compare_view(a, sa, sb, lo, hi, &views[k], &results[k]);
         different |= results[k].mask_mismatch > a->max_pixels ||
@@ -685,9 +713,11 @@ static int run_check(int command, int argc, char **argv)
     cli_catch_interrupts();
     cli_start_clock();
     a.options.cancel = &cli_stop;
+    dist_share_lines(&a.options);
     status = command == MEASURE    ? run_measure(&a)
              : command == OVERLAPS ? run_overlaps(&a)
                                    : run_compare(&a);
+    status = dist_agree(status); /* rank 0's verdict on compare's views */
     if (fflush(stdout) != 0 && !status) {
         fprintf(stderr, "spancast: error: cannot write the output: %s\n",
                 strerror(errno));

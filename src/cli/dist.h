@@ -12,7 +12,8 @@
  * Rank 0 is where the command's files are read and written and its
  * messages printed; the other ranks load the scene from the text rank 0
  * sends them and do the work rank 0 hands out: tiles of a render
- * (tiles.h), jobs of a batch (batch.c).
+ * (tiles.h), jobs of a batch (batch.c); or their share of the lines of
+ * measure, overlaps and compare (check.c), which every rank adds up.
  */
 #ifndef SPANCAST_CLI_DIST_H
 #define SPANCAST_CLI_DIST_H
@@ -39,6 +40,13 @@ int dist_rank(void);
  * MPI_Finalize waits for every rank, so a rank that stopped alone, on an
  * error the others did not see, would leave them all waiting. */
 int dist_agree(int status);
+
+/* With several ranks, sets options to share the lines of an integration
+ * (measure, overlaps, compare) among them: each rank casts its run of
+ * every round's lines and the ranks exchange them, so every rank adds up
+ * all lines in the same order and the result is bit for bit that of one
+ * process (sc_measure_options.parts). With one rank, does nothing. */
+void dist_share_lines(sc_measure_options *options);
 
 /* With several ranks: rank 0 reads the model's text (converting a .scad
  * with OpenSCAD, once) and sends it to every rank, which loads it under

@@ -154,8 +154,9 @@ static const char usage_text[] =
     "  --focus=D              distance from the eye to the sharp plane (default:\n"
     "                         to the view's centre)\n"
     "\n"
-    "Under mpirun -np N (N > 1), render hands tiles out to all N ranks; the\n"
-    "files are the same as one process writes.\n"
+    "Under mpirun -np N (N > 1), render hands tiles out to all N ranks, batch\n"
+    "its jobs, and measure, overlaps and compare share their lines; the files\n"
+    "and numbers are the same as one process writes.\n"
     "\n"
     "preview options (CAD-style renders):\n"
     "  --colorscheme=NAME     OpenSCAD's colour scheme: Cornfield (built in) or one\n"
@@ -1124,7 +1125,9 @@ int main(int argc, char **argv)
     if (argc < 2)
         return cli_usage_error("missing command (try 'spancast --help')");
     const char *command = argv[1];
-    if (!strcmp(command, "render") || !strcmp(command, "batch")) {
+    if (!strcmp(command, "render") || !strcmp(command, "batch") ||
+        !strcmp(command, "measure") || !strcmp(command, "overlaps") ||
+        !strcmp(command, "compare")) {
         int st = dist_enter(argc, argv); /* under mpirun: spancast-mpi */
         if (st >= 0)
             return st;

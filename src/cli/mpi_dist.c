@@ -21,11 +21,15 @@
  * call, because Open MPI's blocking calls spin a core that the tracing
  * threads of the same machine want.
  *
+ * Measure, overlaps and compare share the lines of each round of their
+ * integration instead (share_lines): every rank casts its run, the runs are
+ * gathered on every rank, and every rank adds them all up, in one order.
+ *
  * Messages only go from the ranks to rank 0 and back, so a failure is
  * simple: the failing rank sends its error instead of a result, rank 0
  * stops handing out work and answers every rank's next request with -1.
- * Messages of the ranks other than 0 are silenced (their stderr is
- * /dev/null): rank 0 prints the command's output and the first error.
+ * Messages of the ranks other than 0 are silenced (their stdout and
+ * stderr are /dev/null): rank 0 prints the command's output and the first error.
  */
 #define _POSIX_C_SOURCE 200809L
 
@@ -87,6 +91,7 @@ int dist_enter(int argc, char **argv)
     if (dist_rank() != 0) {
         int null = open("/dev/null", O_WRONLY);
         if (null >= 0) {
+            dup2(null, STDOUT_FILENO); /* measure's results: rank 0 prints */
             dup2(null, STDERR_FILENO);
             close(null);
         }
@@ -215,6 +220,89 @@ sc_status dist_load(const char *path, const sc_load_options *options, sc_scene *
     MPI_Bcast(&status, 1, MPI_INT, first, MPI_COMM_WORLD);
     error->status = (sc_status)status;
     return (sc_status)status;
+}
+
+/* ---- the lines of measure, overlaps and compare ---- */
+
+/* sc_measure_options.share_lines: every rank's outcome to every rank, then,
+ * when all succeeded, every rank's run of records (in place: run p is
+ * records count*p/ranks up to count*(p+1)/ranks, the library's cut). Each
+ * rank computes the same counts, so every rank takes the same branch and
+ * calls the same collectives. Non-blocking collectives polled by wait_for,
+ * so that a rank that finished its run early sleeps instead of spinning a
+ * core the others are tracing on. */
+static int share_lines(void *user, void *records, size_t size, size_t count,
+                       int outcome[3])
+{
+    (void)user;
+    int ranks = dist_size();
+    if (size > INT_MAX || count > INT_MAX)
+        return 0; /* the same answer on every rank */
+    int *all = malloc((size_t)ranks * 3 * sizeof *all);
+    int *counts = malloc((size_t)ranks * sizeof *counts);
+    int *starts = malloc((size_t)ranks * sizeof *starts);
+    if (!all || !counts || !starts) /* this rank cannot take part */
+        MPI_Abort(MPI_COMM_WORLD, 1);
+    MPI_Request request;
+    MPI_Iallgather(outcome, 3, MPI_INT, all, 3, MPI_INT, MPI_COMM_WORLD, &request);
+    wait_for(&request);
+    int failed = 0;
+    for (int p = 0; p < ranks && !failed; p++)
+        if (all[p * 3] != SC_OK) {
+            memcpy(outcome, &all[p * 3], 3 * sizeof *outcome);
+            failed = 1;
+        }
+    if (!failed) {
+        for (int p = 0; p < ranks; p++) {
+            uint64_t first = (uint64_t)count * (uint64_t)p / (uint64_t)ranks;
+            uint64_t end = (uint64_t)count * (uint64_t)(p + 1) / (uint64_t)ranks;
+            starts[p] = (int)first;
+            counts[p] = (int)(end - first);
+        }
+        MPI_Datatype record;
+        MPI_Type_contiguous((int)size, MPI_BYTE, &record);
+        MPI_Type_commit(&record);
+        MPI_Iallgatherv(MPI_IN_PLACE, 0, MPI_DATATYPE_NULL, records, counts, starts,
+                        record, MPI_COMM_WORLD, &request);
+        wait_for(&request);
+        MPI_Type_free(&record);
+    }
+    free(all);
+    free(counts);
+    free(starts);
+    return 1;
+}
+
+/* sc_measure_options.share_box: the smallest lo and largest hi, as one
+ * reduction of lo and -hi (negation is exact). */
+static int share_box(void *user, double box[6])
+{
+    (void)user;
+    double mine[6], least[6];
+    for (int i = 0; i < 3; i++) {
+        mine[i] = box[i];
+        mine[3 + i] = -box[3 + i];
+    }
+    MPI_Request request;
+    MPI_Iallreduce(mine, least, 6, MPI_DOUBLE, MPI_MIN, MPI_COMM_WORLD, &request);
+    wait_for(&request);
+    for (int i = 0; i < 3; i++) {
+        box[i] = least[i];
+        box[3 + i] = -least[3 + i];
+    }
+    return 1;
+}
+
+void dist_share_lines(sc_measure_options *options)
+{
+    int ranks = dist_size();
+    if (ranks <= 1)
+        return;
+    options->parts = ranks;
+    options->part = dist_rank();
+    options->share_lines = share_lines;
+    options->share_box = share_box;
+    options->share_user = NULL;
 }
 
 /* ---- a rank other than 0 ---- */

@@ -445,8 +445,8 @@ static sc_status check_streamable(const tiles_run *r, const char *why, sc_error 
     for (int o = 0; o < OUT_COUNT; o++)
         if (r->paths[o] && !imgio_stream_supported(r->paths[o]))
             return err_set(error, SC_ERR_ARGUMENT, NULL,
-                           "cannot write '%s': %s; only .exr outputs are written tile "
-                           "by tile",
+                           "cannot write '%s': %s; only .exr and .tif outputs are "
+                           "written tile by tile",
                            r->paths[o], why);
     return SC_OK;
 }

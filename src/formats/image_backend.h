@@ -60,6 +60,15 @@ int imgio_exr_tiles_write(imgio_exr_tiles *t, int tx, int ty, const void *pixels
                           char *err, size_t err_size);
 int imgio_exr_tiles_close(imgio_exr_tiles *t, char *err, size_t err_size);
 
+/* Tiled TIFF (BigTIFF when large), tile by tile (image_tiff_tiled.c): as
+ * the tiled EXR calls above; tile must be a multiple of 16. */
+typedef struct imgio_tiff_tiles imgio_tiff_tiles;
+imgio_tiff_tiles *imgio_tiff_tiles_open(const imgio_image *img, int tile,
+                                        const char *path, char *err, size_t err_size);
+int imgio_tiff_tiles_write(imgio_tiff_tiles *t, int tx, int ty, const void *pixels,
+                           char *err, size_t err_size);
+int imgio_tiff_tiles_close(imgio_tiff_tiles *t, char *err, size_t err_size);
+
 /* Readers, as image_read(): 1 on success, else 0 with the whole message
  * ("cannot read 'x': ...") in err. */
 int imgio_png_read(const char *path, image_data *out, char *err, size_t err_size);

@@ -96,15 +96,25 @@ static backend backend_of(const char *ext)
     return one_of(ext, exr) ? BACKEND_EXR : BACKEND_PLUGIN;
 }
 
-/* The format check. PNG and EXR are known here; for any other extension
- * the plugin is loaded and OpenImageIO asked whether it has a writer, so
- * that the list of formats is OpenImageIO's own. */
+static int tiff_format(const char *ext)
+{
+    static const char *const names[] = {"tif", "tiff", NULL};
+    return one_of(ext, names);
+}
+
+/* The format check. PNG, EXR and TIFF are known here (TIFF is written
+ * tiled by libtiff, untiled by OpenImageIO, which always has it: its TIFF
+ * writer is part of its core library, not an optional one); for any other
+ * extension the plugin is loaded and OpenImageIO asked whether it has a
+ * writer, so that the list of formats is OpenImageIO's own. Not loading
+ * the plugin to check a TIFF keeps it out of a streamed render, whose
+ * memory it would triple. */
 static sc_status check(const char *path, imgio_kind kind, sc_error *error)
 {
     char ext[16];
     extension_of(path, ext, sizeof ext);
     int known = ext[0] != '\0';
-    if (known && backend_of(ext) == BACKEND_PLUGIN) {
+    if (known && backend_of(ext) == BACKEND_PLUGIN && !tiff_format(ext)) {
         imgio_plugin plugin;
         char why[MESSAGE_SIZE];
         if (!imgio_plugin_open(&plugin, why, sizeof why))
@@ -365,7 +375,8 @@ sc_status sc_framebuffer_write_id(const sc_framebuffer *fb, const char *path,
 struct imgio_stream {
     imgio_kind kind;
     char *path, *tmp;
-    imgio_exr_tiles *tiles;
+    imgio_exr_tiles *tiles; /* a tiled EXR, or */
+    imgio_tiff_tiles *tiff; /* a tiled TIFF */
     int tile;
     float *ids; /* one tile of ids as float */
 };
@@ -374,7 +385,7 @@ int imgio_stream_supported(const char *path)
 {
     char ext[16];
     extension_of(path, ext, sizeof ext);
-    return backend_of(ext) == BACKEND_EXR;
+    return backend_of(ext) == BACKEND_EXR || tiff_format(ext);
 }
 
 static char *copy_text(const char *s)
@@ -392,6 +403,7 @@ void imgio_stream_abandon(imgio_stream *s)
         return;
     char ignored[MESSAGE_SIZE];
     imgio_exr_tiles_close(s->tiles, ignored, sizeof ignored);
+    imgio_tiff_tiles_close(s->tiff, ignored, sizeof ignored);
     if (s->tmp)
         remove(s->tmp);
     free(s->tmp);
@@ -410,7 +422,8 @@ sc_status imgio_stream_open(const char *path, imgio_kind kind, int width, int he
         return st;
     if (!imgio_stream_supported(path))
         return err_set(error, SC_ERR_ARGUMENT, NULL,
-                       "cannot write '%s' tile by tile: only .exr is written that way",
+                       "cannot write '%s' tile by tile: only .exr and .tif are written "
+                       "that way",
                        path);
     imgio_stream *s = calloc(1, sizeof *s);
     if (!s || !(s->path = copy_text(path)) ||
@@ -447,9 +460,13 @@ sc_status imgio_stream_open(const char *path, imgio_kind kind, int width, int he
     img.color_space = kind == IMGIO_COLOR ? "Linear" : NULL;
     img.software = "spancast " SPANCAST_VERSION;
     img.camera = camera && camera[0] ? camera : NULL;
-    char failure[MESSAGE_SIZE] = "";
-    s->tiles = imgio_exr_tiles_open(&img, tile, s->tmp, failure, sizeof failure);
-    if (!s->tiles) {
+    char failure[MESSAGE_SIZE] = "", ext[16];
+    extension_of(path, ext, sizeof ext);
+    if (tiff_format(ext))
+        s->tiff = imgio_tiff_tiles_open(&img, tile, s->tmp, failure, sizeof failure);
+    else
+        s->tiles = imgio_exr_tiles_open(&img, tile, s->tmp, failure, sizeof failure);
+    if (!s->tiles && !s->tiff) {
         imgio_stream_abandon(s);
         return err_set(error, SC_ERR_IO, NULL, "cannot write '%s': %s", path, failure);
     }
@@ -476,7 +493,11 @@ sc_status imgio_stream_write(imgio_stream *s, int tx, int ty, const sc_framebuff
         pixels = s->ids;
     }
     char failure[MESSAGE_SIZE] = "";
-    if (!imgio_exr_tiles_write(s->tiles, tx, ty, pixels, failure, sizeof failure))
+    int ok =
+        s->tiff
+            ? imgio_tiff_tiles_write(s->tiff, tx, ty, pixels, failure, sizeof failure)
+            : imgio_exr_tiles_write(s->tiles, tx, ty, pixels, failure, sizeof failure);
+    if (!ok)
         return err_set(error, SC_ERR_IO, NULL, "cannot write '%s': %s", s->path, failure);
     return SC_OK;
 }
@@ -485,8 +506,10 @@ sc_status imgio_stream_finish(imgio_stream *s, const volatile sig_atomic_t *canc
                               sc_error *error)
 {
     char failure[MESSAGE_SIZE] = "";
-    int ok = imgio_exr_tiles_close(s->tiles, failure, sizeof failure);
+    int ok = s->tiff ? imgio_tiff_tiles_close(s->tiff, failure, sizeof failure)
+                     : imgio_exr_tiles_close(s->tiles, failure, sizeof failure);
     s->tiles = NULL;
+    s->tiff = NULL;
     sc_status st = SC_OK;
     if (cancelled(cancel))
         st = err_set(error, SC_ERR_CANCELLED, NULL, "interrupted");

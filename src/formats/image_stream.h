@@ -3,8 +3,9 @@
  * An image too large to hold whole (or any image, with `render --tiled`)
  * is rendered in square tiles, and each tile goes to its files as soon as
  * it is done, so that memory holds the tiles in flight, not the image.
- * Only tiled EXR (.exr .sxr .mxr) is written this way (image_exr_tiled.cpp):
- * its tiles are compressed and stored one by one. The output is atomic as
+ * Tiled EXR (.exr .sxr .mxr; image_exr_tiled.cpp) and tiled TIFF (.tif
+ * .tiff, BigTIFF when large; image_tiff_tiled.c) are written this way:
+ * their tiles are compressed and stored one by one. The output is atomic as
  * for the other writers (image_io.c): the tiles go to a temporary file
  * beside the target, renamed over it only when the last tile is in.
  */
@@ -20,7 +21,8 @@ extern "C" {
 
 typedef struct imgio_stream imgio_stream;
 
-/* 1 when path's format is written tile by tile (.exr, .sxr, .mxr). */
+/* 1 when path's format is written tile by tile (.exr, .sxr, .mxr, .tif,
+ * .tiff). */
 int imgio_stream_supported(const char *path);
 
 /* Starts the kind output of a width x height image in tiles of side tile
