@@ -280,7 +280,8 @@ static void test_faithful_points_on_curves(void **state)
     model *lowered;
     assert_int_equal(model_lower_twod("t.csg", tree->first, &lowered, &e), SC_OK);
     build_ctx c = {"t.csg", NULL, &e, 1, NULL};
-    text_polygons poly;
+    twod_region poly;
+    twod_init(&poly);
     assert_int_equal(text_faithful_polygons(&c, lowered->first, &poly, NULL), SC_OK);
     sc_scene *s =
         load("linear_extrude(height = 1) { text(text = \"Bo@\", size = 10, $fn = "
@@ -303,7 +304,7 @@ static void test_faithful_points_on_curves(void **state)
         if (!(in && out))
             off++;
     }
-    uint32_t paths = poly.path_count;
+    uint32_t paths = poly.contour_count;
     double area = 0;
     for (uint32_t k = 0; k < paths; k++)
         for (uint32_t i = poly.start[k]; i < poly.start[k + 1]; i++) {
@@ -316,7 +317,7 @@ static void test_faithful_points_on_curves(void **state)
                   paths, poly.point_count, area / 2, off);
     assert_int_equal(off, 0);
     assert_true(area > 0); /* outlines counter-clockwise */
-    text_polygons_free(&poly);
+    twod_free(&poly);
     model_free(lowered);
     parse_tree_free(tree);
     sc_scene_release(s);
@@ -413,6 +414,39 @@ static void test_errors(void **state)
     sc_scene_release(load(fine, 0));
 }
 
+/* OpenSCAD's polygons of a text obey the one rule of every 2D shape: at
+ * most TWOD_MAX_POINTS points (the glyphs' points were unbounded before),
+ * an error at the text node past it. 2000 '@' of 513 points per curve
+ * are more than 2e7 points. */
+static void test_faithful_point_limit(void **state)
+{
+    (void)state;
+    size_t n = 2000;
+    char *src = malloc(n + 64);
+    strcpy(src, "text(text = \"");
+    size_t at = strlen(src);
+    memset(src + at, '@', n);
+    strcpy(src + at + n, "\", $fn = 4096);");
+    sc_error e;
+    parse_tree *tree;
+    assert_int_equal(parse_text("t.csg", src, strlen(src), &tree, &e), SC_OK);
+    model *lowered;
+    assert_int_equal(model_lower_twod("t.csg", tree->first, &lowered, &e), SC_OK);
+    build_ctx c = {"t.csg", NULL, &e, 1, NULL};
+    twod_region poly;
+    twod_init(&poly);
+    assert_int_equal(text_faithful_polygons(&c, lowered->first, &poly, NULL),
+                     SC_ERR_LIMIT);
+    char buf[1024];
+    assert_string_equal(
+        sc_error_format(&e, buf, sizeof buf),
+        "t.csg:1:1: error: text: too many points in a 2D shape (limit is 10000000)");
+    twod_free(&poly);
+    model_free(lowered);
+    parse_tree_free(tree);
+    free(src);
+}
+
 static void test_long_and_fonts(void **state)
 {
     (void)state;
@@ -461,6 +495,7 @@ int main(void)
         cmocka_unit_test(test_long_text),
         cmocka_unit_test(test_errors),
         cmocka_unit_test(test_long_and_fonts),
+        cmocka_unit_test(test_faithful_point_limit),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -141,20 +141,9 @@ static sc_status read_circle(const eval *e, const model_node *n, twod_region *ou
  * unites them. A font fallback is the caller's warning (c->note). */
 static sc_status read_text(const eval *e, const model_node *n, twod_region *out)
 {
-    text_polygons tp;
-    memset(&tp, 0, sizeof tp);
-    sc_status st = text_faithful_polygons(e->c, n, &tp, e->c->note);
     twod_region glyphs;
     twod_init(&glyphs);
-    for (uint32_t k = 0; st == SC_OK && k < tp.path_count; k++) {
-        if (!twod_begin_contour(&glyphs))
-            st = err_nomem(e->c->error, &n->loc);
-        for (uint32_t i = tp.start[k]; st == SC_OK && i < tp.start[k + 1]; i++) {
-            if (!twod_add_point(&glyphs, tp.xy[2 * i], tp.xy[2 * i + 1]))
-                st = err_nomem(e->c->error, &n->loc);
-        }
-    }
-    text_polygons_free(&tp);
+    sc_status st = text_faithful_polygons(e->c, n, &glyphs, e->c->note);
     if (st == SC_OK) {
         glyphs.sanitized = 1; /* already oriented: the union keeps holes */
         twod_region *one = &glyphs;
@@ -188,10 +177,7 @@ static sc_status read_polygon(const eval *e, const model_node *n, twod_region *o
             if (!(fabs(x) <= TWOD_MAX_COORD && fabs(y) <= TWOD_MAX_COORD))
                 return clip_status(e, n, TWOD_CLIP_RANGE);
             if (!twod_add_point(out, x, y))
-                return clip_status(e, n,
-                                   out->point_count >= TWOD_MAX_POINTS
-                                       ? TWOD_CLIP_TOO_MANY
-                                       : TWOD_CLIP_NOMEM);
+                return build_twod_add_error(e->c, n, out);
         }
     }
     if (p->bad_index) {
@@ -497,6 +483,14 @@ static sc_status eval_node(const eval *e, const model_node *n, twod_region *out,
     if (st == SC_OK && kind == MODEL_OFFSET)
         st = offset(e, n, out);
     return st;
+}
+
+sc_status build_twod_add_error(const build_ctx *c, const model_node *n,
+                               const twod_region *r)
+{
+    eval e = {c, n->name};
+    return clip_status(
+        &e, n, r->point_count >= TWOD_MAX_POINTS ? TWOD_CLIP_TOO_MANY : TWOD_CLIP_NOMEM);
 }
 
 sc_status build_twod_children(const build_ctx *c, const model_node *parent,

@@ -22,4 +22,9 @@ sc_status build_twod_children(const build_ctx *c, const model_node *parent,
 sc_status build_twod_node(const build_ctx *c, const model_node *n, const char *outer,
                           twod_region *out);
 
+/* The error of a failed twod_add_point into r for node n: the limit of
+ * TWOD_MAX_POINTS points of every 2D shape when r is full, else memory. */
+sc_status build_twod_add_error(const build_ctx *c, const model_node *n,
+                               const twod_region *r);
+
 #endif
