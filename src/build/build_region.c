@@ -23,8 +23,8 @@
  *
  * build_region_covers says beforehand whether a linear_extrude is this
  * path's; anything else (twist, scale, offset, text, 3D nodes, ...) goes
- * to the prism path in build_extrude.c. The walk recurses over the 2D
- * nodes with a depth guard (BUILD_REGION_MAX_DEPTH); bad arguments are
+ * to the prism path in build_extrude.c. The walk over the 2D nodes is the
+ * one 2D walk (build_twod.h), with its depth guard; bad arguments are
  * errors at the value, with the messages of the prism path.
  */
 #include "build/build_region.h"
@@ -38,6 +38,7 @@
 #include "csg/prim_extrusion.h"
 
 typedef struct walker {
+    twod_walker walk; /* first: the visitor is the walker */
     const build_ctx *c;
     prim_region region;
     twod_region poly; /* the polygon being read, under the transforms */
@@ -60,7 +61,7 @@ static int is_op(model_kind kind)
 /* The first node below n (n included) the walk cannot read, or NULL. */
 static const model_node *uncovered(const model_node *n, int depth)
 {
-    if (depth > BUILD_REGION_MAX_DEPTH ||
+    if (depth > TWOD_WALK_MAX_DEPTH ||
         (n->modifiers & (MODEL_MOD_DISABLE | MODEL_MOD_BACKGROUND)))
         return NULL; /* the walk reports the depth; '%' and '*' are not built */
     model_kind kind = n->kind;
@@ -170,9 +171,6 @@ static sc_status read_polygon(walker *w, const model_node *n, const affine2 *m,
     return st;
 }
 
-static sc_status walk(walker *w, const model_node *n, const affine2 *m, int depth,
-                      int *pushed);
-
 /* The children of n combined by op; *pushed says whether a region was
  * pushed (an empty result pushes nothing and leaves no trace). */
 static sc_status walk_children(walker *w, const model_node *n, const affine2 *m,
@@ -181,11 +179,9 @@ static sc_status walk_children(walker *w, const model_node *n, const affine2 *m,
     prim_region *r = &w->region;
     uint32_t nodes = r->node_count, edges = r->edge_count, ellipses = r->ellipse_count;
     int operands = 0, seen = 0, empty = 0;
-    for (const model_node *k = n->first_child; k; k = k->next) {
-        if (k->modifiers & (MODEL_MOD_DISABLE | MODEL_MOD_BACKGROUND))
-            continue;
+    for (const model_node *k = twod_walk_first(n); k; k = twod_walk_next(k->next)) {
         int p = 0;
-        sc_status st = walk(w, k, m, depth + 1, &p);
+        sc_status st = twod_walk(&w->walk, k, m, depth + 1, &p);
         if (st != SC_OK)
             return st;
         if (!p && (op == PRIM_REGION_INTERSECTION ||
@@ -205,16 +201,13 @@ static sc_status walk_children(walker *w, const model_node *n, const affine2 *m,
     return SC_OK;
 }
 
-static sc_status walk(walker *w, const model_node *n, const affine2 *m, int depth,
-                      int *pushed)
+/* The walk's visitor: *pushed (out) says whether n pushed a region. */
+static sc_status walk(twod_walker *walk, const model_node *n, const affine2 *m, int depth,
+                      void *out)
 {
+    walker *w = (walker *)walk;
+    int *pushed = out;
     *pushed = 0;
-    if (depth > BUILD_REGION_MAX_DEPTH)
-        return err_set(w->c->error, SC_ERR_LIMIT, &n->loc,
-                       "too many nested nodes in linear_extrude (limit is %d)",
-                       BUILD_REGION_MAX_DEPTH);
-    if (n->modifiers & (MODEL_MOD_DISABLE | MODEL_MOD_BACKGROUND))
-        return SC_OK;
     model_kind kind = n->kind;
     if (kind == MODEL_SQUARE)
         return read_square(w, n, m, pushed);
@@ -223,14 +216,14 @@ static sc_status walk(walker *w, const model_node *n, const affine2 *m, int dept
     if (kind == MODEL_POLYGON)
         return read_polygon(w, n, m, pushed);
     if (kind == MODEL_XFORM) {
-        if (n->pending)
-            return build_pending(w->c, n);
         affine2 inner;
-        build_matrix_xy(n->u.xform, m->m, inner.m);
+        sc_status st = twod_walk_fold(walk, n, m, &inner);
+        if (st != SC_OK)
+            return st;
         prim_region *r = &w->region;
         uint32_t nodes = r->node_count, edges = r->edge_count,
                  ellipses = r->ellipse_count;
-        sc_status st = walk_children(w, n, &inner, PRIM_REGION_UNION, depth, pushed);
+        st = walk_children(w, n, &inner, PRIM_REGION_UNION, depth, pushed);
         double det = inner.m[0][0] * inner.m[1][1] - inner.m[0][1] * inner.m[1][0];
         if (st == SC_OK && *pushed && !(det != 0)) {
             /* flattened onto a line or a point: no area (the children were
@@ -264,6 +257,7 @@ sc_status build_region_extrude(const build_ctx *c, const model_node *n, int emit
     int center = args->center;
     walker w;
     memset(&w, 0, sizeof w);
+    w.walk = (twod_walker){c, "linear_extrude", "nodes", walk};
     w.c = c;
     twod_init(&w.poly);
     affine2 id = affine2_identity();

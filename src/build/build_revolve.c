@@ -55,8 +55,6 @@
 #include "csg/prim_revolve.h"
 #include "model/faithful.h"
 
-enum { BUILD_REVOLVE_MAX_DEPTH = 1000 };
-
 /* An exact circle: centre, radius, and the path holding its polygon. */
 typedef struct profile_circle {
     double cx, cy, r;
@@ -292,15 +290,19 @@ static sc_status gather_other(const build_ctx *c, const model_node *n, const aff
     return st;
 }
 
-static sc_status gather(const build_ctx *c, const model_node *n, const affine2 *m,
-                        profile *p, int depth)
+/* The profile gathered by the one 2D walk (build_twod.h). */
+typedef struct gatherer {
+    twod_walker walk; /* first: the visitor is the walker */
+    profile *p;
+} gatherer;
+
+/* The walk's visitor: n's paths added to the profile. */
+static sc_status gather(twod_walker *walk, const model_node *n, const affine2 *m,
+                        int depth, void *out)
 {
-    if (depth > BUILD_REVOLVE_MAX_DEPTH)
-        return err_set(c->error, SC_ERR_LIMIT, &n->loc,
-                       "too many nested nodes in rotate_extrude (limit is %d)",
-                       BUILD_REVOLVE_MAX_DEPTH);
-    if (n->modifiers & (MODEL_MOD_DISABLE | MODEL_MOD_BACKGROUND))
-        return SC_OK;
+    (void)out;
+    const build_ctx *c = walk->c;
+    profile *p = ((gatherer *)walk)->p;
     model_kind kind = n->kind;
     if (kind == MODEL_SQUARE)
         return read_square(c, n, m, p);
@@ -310,18 +312,13 @@ static sc_status gather(const build_ctx *c, const model_node *n, const affine2 *
         return read_polygon(c, n, m, p);
     affine2 inner = *m;
     if (kind == MODEL_XFORM) {
-        if (n->pending)
-            return build_pending(c, n);
-        build_matrix_xy(n->u.xform, m->m, inner.m);
+        sc_status st = twod_walk_fold(walk, n, m, &inner);
+        if (st != SC_OK)
+            return st;
     } else if (kind != MODEL_UNION && kind != MODEL_COLOR) {
         return gather_other(c, n, m, p);
     }
-    for (const model_node *k = n->first_child; k; k = k->next) {
-        sc_status st = gather(c, k, &inner, p, depth + 1);
-        if (st != SC_OK)
-            return st;
-    }
-    return SC_OK;
+    return twod_walk_children(walk, n, &inner, depth);
 }
 
 /* Does path k go the way its region needs (outline counter-clockwise,
@@ -556,8 +553,8 @@ sc_status build_rotate_extrude(const build_ctx *c, const model_node *n, int emit
             st = add_twod(c, n, &r, &id, &p);
         twod_free(&r);
     } else {
-        for (const model_node *k = n->first_child; k && st == SC_OK; k = k->next)
-            st = gather(c, k, &id, &p, 1);
+        gatherer g = {{c, "rotate_extrude", "nodes", gather}, &p};
+        st = twod_walk_children(&g.walk, n, &id, 0);
     }
     /* OpenSCAD's check, in its order, with its running range. */
     double min_x = 0, max_x = 0;

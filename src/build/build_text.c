@@ -66,8 +66,6 @@
 #include "model/faithful.h"
 #include "twod/twod.h"
 
-enum { TEXT_MAX_DEPTH = 1000 };
-
 static const double ft_scale = 1e5;
 static const double hb_unscale = 1.0 / 1.024e5;
 static const char default_font[] = "Liberation Sans:style=Regular";
@@ -594,7 +592,7 @@ static int is_container(model_kind kind)
  * '%' subtrees count) or every one is (all = 1; '%' subtrees do not). */
 static int text_below(const model_node *n, int depth, int all)
 {
-    if (depth > TEXT_MAX_DEPTH)
+    if (depth > TWOD_WALK_MAX_DEPTH)
         return 0;
     unsigned skipped = all ? MODEL_MOD_DISABLE | MODEL_MOD_BACKGROUND : MODEL_MOD_DISABLE;
     if (n->modifiers & skipped)
@@ -628,7 +626,9 @@ int build_text_wanted(const model_node *n)
     return 0;
 }
 
+/* The exact outlines gathered by the one 2D walk (build_twod.h). */
 typedef struct gathered {
+    twod_walker walk; /* first: the visitor is the walker */
     outline_seg *segs;
     uint32_t seg_count, seg_cap;
 } gathered;
@@ -686,19 +686,16 @@ static sc_status gather_text(const build_ctx *c, const model_node *n, const affi
     return st;
 }
 
-static sc_status gather(const build_ctx *c, const model_node *n, const affine2 *m,
-                        gathered *g, int depth)
+/* The walk's visitor: the text below n, under the containers. */
+static sc_status gather(twod_walker *walk, const model_node *n, const affine2 *m,
+                        int depth, void *out)
 {
-    if (depth > TEXT_MAX_DEPTH)
-        return err_set(c->error, SC_ERR_LIMIT, &n->loc,
-                       "too many nested nodes in linear_extrude (limit is %d)",
-                       TEXT_MAX_DEPTH);
-    if (n->modifiers & (MODEL_MOD_DISABLE | MODEL_MOD_BACKGROUND))
-        return SC_OK;
+    (void)out;
+    const build_ctx *c = walk->c;
     const char *name = n->name;
     model_kind kind = n->kind;
     if (kind == MODEL_TEXT)
-        return gather_text(c, n, m, g);
+        return gather_text(c, n, m, (gathered *)walk);
     if (kind == MODEL_SQUARE || kind == MODEL_CIRCLE || kind == MODEL_POLYGON)
         return err_set(c->error, SC_ERR_UNSUPPORTED, &n->loc,
                        "'%s' beside text inside linear_extrude is not supported yet",
@@ -708,16 +705,11 @@ static sc_status gather(const build_ctx *c, const model_node *n, const affine2 *
                        "'%s' inside linear_extrude is not supported yet", name);
     affine2 inner = *m;
     if (kind == MODEL_XFORM) {
-        if (n->pending)
-            return build_pending(c, n);
-        build_matrix_xy(n->u.xform, m->m, inner.m);
-    }
-    for (const model_node *k = n->first_child; k; k = k->next) {
-        sc_status st = gather(c, k, &inner, g, depth + 1);
+        sc_status st = twod_walk_fold(walk, n, m, &inner);
         if (st != SC_OK)
             return st;
     }
-    return SC_OK;
+    return twod_walk_children(walk, n, &inner, depth);
 }
 
 sc_status build_text_extrude(const build_ctx *c, const model_node *n, double height,
@@ -725,10 +717,9 @@ sc_status build_text_extrude(const build_ctx *c, const model_node *n, double hei
 {
     gathered g;
     memset(&g, 0, sizeof g);
-    sc_status st = SC_OK;
+    g.walk = (twod_walker){c, "linear_extrude", "nodes", gather};
     affine2 id = affine2_identity();
-    for (const model_node *k = n->first_child; k && st == SC_OK; k = k->next)
-        st = gather(c, k, &id, &g, 1);
+    sc_status st = twod_walk_children(&g.walk, n, &id, 0);
     if (st == SC_OK && emit) {
         double z0 = center ? -height / 2 : 0, z1 = z0 + height;
         if (!(height > 0 && isfinite(height)) || g.seg_count == 0) {

@@ -35,8 +35,8 @@
  *                          files are errors: .svg is not supported yet,
  *                          .stl, .off and the like are 3D.
  * 3D nodes are errors (OpenSCAD drops them from a 2D operation with a
- * warning). The recursion over the children
- * has a depth guard (TWOD_MAX_DEPTH).
+ * warning). The recursion over the children is the one 2D walk
+ * (twod_walk, below), with its depth guard (TWOD_WALK_MAX_DEPTH).
  */
 #include "build/build_twod.h"
 
@@ -50,18 +50,63 @@
 #include "formats/dxf.h"
 #include "model/faithful.h"
 
-enum { TWOD_MAX_DEPTH = 1000 };
 /* Offsets and Minkowski sums grow the point count by a product; these
  * bound it before the clipper starts. */
 #define TWOD_MAX_PRODUCT 20000000.0
 
+/* ---- the one 2D walk ---- */
+
+const model_node *twod_walk_next(const model_node *k)
+{
+    while (k && (k->modifiers & (MODEL_MOD_DISABLE | MODEL_MOD_BACKGROUND)))
+        k = k->next;
+    return k;
+}
+
+const model_node *twod_walk_first(const model_node *n)
+{
+    return twod_walk_next(n->first_child);
+}
+
+sc_status twod_walk(twod_walker *w, const model_node *n, const affine2 *m, int depth,
+                    void *out)
+{
+    if (depth > TWOD_WALK_MAX_DEPTH)
+        return err_set(w->c->error, SC_ERR_LIMIT, &n->loc,
+                       "too many nested %s in %s (limit is %d)", w->nested, w->outer,
+                       TWOD_WALK_MAX_DEPTH);
+    return w->visit(w, n, m, depth, out);
+}
+
+sc_status twod_walk_children(twod_walker *w, const model_node *n, const affine2 *m,
+                             int depth)
+{
+    for (const model_node *k = twod_walk_first(n); k; k = twod_walk_next(k->next)) {
+        sc_status st = twod_walk(w, k, m, depth + 1, NULL);
+        if (st != SC_OK)
+            return st;
+    }
+    return SC_OK;
+}
+
+sc_status twod_walk_fold(const twod_walker *w, const model_node *n, const affine2 *m,
+                         affine2 *inner)
+{
+    if (n->pending)
+        return build_pending(w->c, n);
+    build_matrix_xy(n->u.xform, m->m, inner->m);
+    return SC_OK;
+}
+
+/* ---- OpenSCAD's evaluation ---- */
+
 typedef struct eval {
+    twod_walker walk; /* first: the visitor is the walker */
     const build_ctx *c;
     const char *outer; /* the node that asked for 2D, for messages */
 } eval;
 
-static sc_status eval_node(const eval *e, const model_node *n, twod_region *out,
-                           int depth);
+static const affine2 unmoved = {{{1, 0, 0}, {0, 1, 0}}};
 
 static sc_status clip_status(const eval *e, const model_node *n, int code)
 {
@@ -190,7 +235,7 @@ static sc_status read_polygon(const eval *e, const model_node *n, twod_region *o
 
 /* The regions of n's children ('%' and '*' left out). *regions holds
  * *count initialised regions, to be freed by free_children. */
-static sc_status eval_children(const eval *e, const model_node *n, twod_region **regions,
+static sc_status eval_children(eval *e, const model_node *n, twod_region **regions,
                                uint32_t *count, int depth)
 {
     *regions = NULL;
@@ -204,12 +249,10 @@ static sc_status eval_children(const eval *e, const model_node *n, twod_region *
     if (!r)
         return err_nomem(e->c->error, &n->loc);
     *regions = r;
-    for (const model_node *k = n->first_child; k; k = k->next) {
-        if (k->modifiers & (MODEL_MOD_DISABLE | MODEL_MOD_BACKGROUND))
-            continue;
+    for (const model_node *k = twod_walk_first(n); k; k = twod_walk_next(k->next)) {
         twod_init(&r[*count]);
         (*count)++;
-        sc_status st = eval_node(e, k, &r[*count - 1], depth + 1);
+        sc_status st = twod_walk(&e->walk, k, &unmoved, depth + 1, &r[*count - 1]);
         if (st != SC_OK)
             return st;
     }
@@ -427,13 +470,14 @@ static int is_3d(model_kind kind)
     }
 }
 
-static sc_status eval_node(const eval *e, const model_node *n, twod_region *out,
-                           int depth)
+/* The walk's visitor: n's region into out (a twod_region); m is the
+ * identity, as OpenSCAD moves a multmatrix's region after evaluating it. */
+static sc_status eval_node(twod_walker *w, const model_node *n, const affine2 *unused,
+                           int depth, void *result)
 {
-    if (depth > TWOD_MAX_DEPTH)
-        return err_set(e->c->error, SC_ERR_LIMIT, &n->loc,
-                       "too many nested 2D nodes in %s (limit is %d)", e->outer,
-                       TWOD_MAX_DEPTH);
+    (void)unused;
+    eval *e = (eval *)w;
+    twod_region *out = result;
     const char *name = n->name;
     model_kind kind = n->kind;
     twod_clear(out);
@@ -485,10 +529,16 @@ static sc_status eval_node(const eval *e, const model_node *n, twod_region *out,
     return st;
 }
 
+static eval evaluator(const build_ctx *c, const char *outer)
+{
+    eval e = {{c, outer, "2D nodes", eval_node}, c, outer};
+    return e;
+}
+
 sc_status build_twod_add_error(const build_ctx *c, const model_node *n,
                                const twod_region *r)
 {
-    eval e = {c, n->name};
+    eval e = evaluator(c, n->name);
     return clip_status(
         &e, n, r->point_count >= TWOD_MAX_POINTS ? TWOD_CLIP_TOO_MANY : TWOD_CLIP_NOMEM);
 }
@@ -496,7 +546,7 @@ sc_status build_twod_add_error(const build_ctx *c, const model_node *n,
 sc_status build_twod_children(const build_ctx *c, const model_node *parent,
                               twod_region *out)
 {
-    eval e = {c, parent->name};
+    eval e = evaluator(c, parent->name);
     twod_region *regions;
     uint32_t count;
     sc_status st = eval_children(&e, parent, &regions, &count, 1);
@@ -509,6 +559,6 @@ sc_status build_twod_children(const build_ctx *c, const model_node *parent,
 sc_status build_twod_node(const build_ctx *c, const model_node *n, const char *outer,
                           twod_region *out)
 {
-    eval e = {c, outer};
-    return eval_node(&e, n, out, 1);
+    eval e = evaluator(c, outer);
+    return twod_walk(&e.walk, n, &unmoved, 1, out);
 }
