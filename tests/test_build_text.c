@@ -265,6 +265,29 @@ static void test_glyph_spans_match_inside(void **state)
     sc_scene_release(s);
 }
 
+/* OpenSCAD's polygons of the text node src (in "t.csg") into *poly
+ * (initialised here; the caller frees it): the status of
+ * text_faithful_polygons, and its error formatted into message. */
+static sc_status text_polygons_of(const char *src, twod_region *poly, char *message,
+                                  size_t size)
+{
+    sc_error e;
+    parse_tree *tree;
+    assert_int_equal(parse_text("t.csg", src, strlen(src), &tree, &e), SC_OK);
+    model *lowered;
+    assert_int_equal(model_lower_twod("t.csg", tree->first, &lowered, &e), SC_OK);
+    build_ctx c = {"t.csg", NULL, &e, 1, NULL};
+    twod_init(poly);
+    sc_status st = text_faithful_polygons(&c, lowered->first, poly, NULL);
+    if (st != SC_OK)
+        sc_error_format(&e, message, size);
+    else
+        message[0] = 0;
+    model_free(lowered);
+    parse_tree_free(tree);
+    return st;
+}
+
 /* Faithful polygons: every point OpenSCAD's flattening makes lies on the
  * exact outline (within the 2^-16 snap), so membership of the exact prism
  * just inside and outside a polygon edge's midpoint agrees with the
@@ -273,16 +296,11 @@ static void test_glyph_spans_match_inside(void **state)
 static void test_faithful_points_on_curves(void **state)
 {
     (void)state;
-    const char *src = "text(text = \"Bo@\", size = 10, $fn = 32);";
-    sc_error e;
-    parse_tree *tree;
-    assert_int_equal(parse_text("t.csg", src, strlen(src), &tree, &e), SC_OK);
-    model *lowered;
-    assert_int_equal(model_lower_twod("t.csg", tree->first, &lowered, &e), SC_OK);
-    build_ctx c = {"t.csg", NULL, &e, 1, NULL};
     twod_region poly;
-    twod_init(&poly);
-    assert_int_equal(text_faithful_polygons(&c, lowered->first, &poly, NULL), SC_OK);
+    char buf[1024];
+    assert_int_equal(text_polygons_of("text(text = \"Bo@\", size = 10, $fn = 32);", &poly,
+                                      buf, sizeof buf),
+                     SC_OK);
     sc_scene *s =
         load("linear_extrude(height = 1) { text(text = \"Bo@\", size = 10, $fn = "
              "32); }",
@@ -318,8 +336,6 @@ static void test_faithful_points_on_curves(void **state)
     assert_int_equal(off, 0);
     assert_true(area > 0); /* outlines counter-clockwise */
     twod_free(&poly);
-    model_free(lowered);
-    parse_tree_free(tree);
     sc_scene_release(s);
 }
 
@@ -427,23 +443,12 @@ static void test_faithful_point_limit(void **state)
     size_t at = strlen(src);
     memset(src + at, '@', n);
     strcpy(src + at + n, "\", $fn = 4096);");
-    sc_error e;
-    parse_tree *tree;
-    assert_int_equal(parse_text("t.csg", src, strlen(src), &tree, &e), SC_OK);
-    model *lowered;
-    assert_int_equal(model_lower_twod("t.csg", tree->first, &lowered, &e), SC_OK);
-    build_ctx c = {"t.csg", NULL, &e, 1, NULL};
     twod_region poly;
-    twod_init(&poly);
-    assert_int_equal(text_faithful_polygons(&c, lowered->first, &poly, NULL),
-                     SC_ERR_LIMIT);
     char buf[1024];
+    assert_int_equal(text_polygons_of(src, &poly, buf, sizeof buf), SC_ERR_LIMIT);
     assert_string_equal(
-        sc_error_format(&e, buf, sizeof buf),
-        "t.csg:1:1: error: text: too many points in a 2D shape (limit is 10000000)");
+        buf, "t.csg:1:1: error: text: too many points in a 2D shape (limit is 10000000)");
     twod_free(&poly);
-    model_free(lowered);
-    parse_tree_free(tree);
     free(src);
 }
 
