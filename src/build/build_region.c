@@ -139,31 +139,14 @@ static sc_status read_polygon(walker *w, const model_node *n, const affine2 *m,
     const build_ctx *c = w->c;
     if (n->pending)
         return build_pending(c, n);
-    const model_polygon *p = n->u.polygon;
-    if (!p->has_points)
-        return SC_OK;
-    uint32_t np = p->point_count;
-    /* OpenSCAD: an empty vector of paths is one path through all the points */
-    int paths = p->has_paths && p->path_count > 0;
-    uint32_t count = paths ? p->path_count : 1;
     twod_region *poly = &w->poly;
     twod_clear(poly);
-    for (uint32_t k = 0; k < count; k++) {
-        uint32_t first = paths ? p->path_start[k] : 0;
-        uint32_t len = paths ? p->path_start[k + 1] - first : np;
-        if (!twod_begin_contour(poly))
-            return err_nomem(w->c->error, &n->loc);
-        for (uint32_t i = 0; i < len; i++) {
-            uint32_t index = paths ? p->index[first + i] : i;
-            if (!twod_add_moved(poly, m, p->xy[2 * index], p->xy[2 * index + 1]))
-                return build_twod_add_error(w->c, n, poly);
-        }
-    }
-    if (p->bad_index) {
-        *c->error = *p->bad_index;
-        return p->bad_index->status;
-    }
-    sc_status st = add_poly(w, n, pushed);
+    if (!n->u.polygon->has_points)
+        return SC_OK;
+    sc_status st = build_twod_polygon(c, n, m, 1, 0, poly);
+    if (st != SC_OK)
+        return st;
+    st = add_poly(w, n, pushed);
     if (st == SC_OK && w->region.edge_count > PRIM_EXTRUSION_MAX_EDGES)
         return err_set(c->error, SC_ERR_LIMIT, &n->loc,
                        "linear_extrude has too many polygon edges (limit is %d)",

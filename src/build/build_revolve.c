@@ -67,6 +67,7 @@ typedef struct profile {
     uint32_t *region; /* per path: the region it belongs to */
     int *hole;        /* per path: a hole of its region */
     uint32_t paths_cap;
+    uint32_t noted; /* paths with their region and hole mark */
     uint32_t regions;
     profile_circle *circles;
     uint32_t circle_count, circle_cap;
@@ -86,14 +87,14 @@ static void begin_region(profile *p)
     p->regions++;
 }
 
-static int begin_path(profile *p)
+/* Gives the paths added since the last call their region (the last one
+ * opened) and no hole mark; 0 when memory runs out. */
+static int note_paths(profile *p)
 {
-    if (!twod_begin_contour(&p->pts))
-        return 0;
-    uint32_t k = p->pts.contour_count - 1;
-    if (k >= p->paths_cap) {
+    uint32_t count = p->pts.contour_count;
+    if (count > p->paths_cap) {
         uint32_t cap = p->paths_cap;
-        if (!grow_array32((void **)&p->region, &cap, k + 1, sizeof *p->region))
+        if (!grow_array32((void **)&p->region, &cap, count, sizeof *p->region))
             return 0;
         int *hole = realloc(p->hole, (size_t)cap * sizeof *hole);
         if (!hole)
@@ -101,9 +102,17 @@ static int begin_path(profile *p)
         p->hole = hole;
         p->paths_cap = cap;
     }
-    p->hole[k] = 0;
-    p->region[k] = p->regions - 1;
+    for (uint32_t k = p->noted; k < count; k++) {
+        p->hole[k] = 0;
+        p->region[k] = p->regions - 1;
+    }
+    p->noted = count;
     return 1;
+}
+
+static int begin_path(profile *p)
+{
+    return twod_begin_contour(&p->pts) && note_paths(p);
 }
 
 /* Even-odd: is (x, y) inside path k? */
@@ -228,29 +237,16 @@ static sc_status read_polygon(const build_ctx *c, const model_node *n, const aff
 {
     if (n->pending)
         return build_pending(c, n);
-    const model_polygon *poly = n->u.polygon;
-    if (!poly->has_points)
+    if (!n->u.polygon->has_points)
         return SC_OK;
-    uint32_t np = poly->point_count;
     begin_region(p);
     uint32_t first = p->pts.contour_count;
     /* an empty vector of paths is no path here */
-    uint32_t count = poly->has_paths ? poly->path_count : 1;
-    for (uint32_t k = 0; k < count; k++) {
-        uint32_t from = poly->has_paths ? poly->path_start[k] : 0;
-        uint32_t len = poly->has_paths ? poly->path_start[k + 1] - from : np;
-        if (!begin_path(p))
-            return err_nomem(c->error, &n->loc);
-        for (uint32_t i = 0; i < len; i++) {
-            uint32_t index = poly->has_paths ? poly->index[from + i] : i;
-            if (!twod_add_moved(&p->pts, m, poly->xy[2 * index], poly->xy[2 * index + 1]))
-                return build_twod_add_error(c, n, &p->pts);
-        }
-    }
-    if (poly->bad_index) {
-        *c->error = *poly->bad_index;
-        return poly->bad_index->status;
-    }
+    sc_status st = build_twod_polygon(c, n, m, 0, 0, &p->pts);
+    if (st != SC_OK)
+        return st;
+    if (!note_paths(p))
+        return err_nomem(c->error, &n->loc);
     mark_holes(p, first);
     return SC_OK;
 }

@@ -108,6 +108,8 @@ typedef struct eval {
 
 static const affine2 unmoved = {{{1, 0, 0}, {0, 1, 0}}};
 
+static eval evaluator(const build_ctx *c, const char *outer);
+
 static sc_status clip_status(const eval *e, const model_node *n, int code)
 {
     if (code == TWOD_CLIP_OK)
@@ -198,37 +200,53 @@ static sc_status read_text(const eval *e, const model_node *n, twod_region *out)
     return st;
 }
 
+sc_status build_twod_polygon(const build_ctx *c, const model_node *n, const affine2 *m,
+                             int empty_is_all, int check_range, twod_region *out)
+{
+    if (n->pending)
+        return build_pending(c, n);
+    const model_polygon *p = n->u.polygon;
+    if (!p->has_points)
+        return SC_OK;
+    int paths = p->has_paths && (p->path_count > 0 || p->bad_index || !empty_is_all);
+    uint32_t count = paths ? p->path_count : 1;
+    for (uint32_t k = 0; k < count; k++) {
+        uint32_t first = paths ? p->path_start[k] : 0;
+        uint32_t len = paths ? p->path_start[k + 1] - first : p->point_count;
+        if (!twod_begin_contour(out))
+            return err_nomem(c->error, &n->loc);
+        for (uint32_t i = 0; i < len; i++) {
+            uint32_t index = paths ? p->index[first + i] : i;
+            double x = p->xy[2 * index], y = p->xy[2 * index + 1];
+            if (check_range &&
+                !(fabs(x) <= TWOD_MAX_COORD && fabs(y) <= TWOD_MAX_COORD)) {
+                eval e = evaluator(c, n->name);
+                return clip_status(&e, n, TWOD_CLIP_RANGE);
+            }
+            if (!twod_add_moved(out, m, x, y))
+                return build_twod_add_error(c, n, out);
+        }
+    }
+    if (p->bad_index) {
+        *c->error = *p->bad_index;
+        return p->bad_index->status;
+    }
+    return SC_OK;
+}
+
 static sc_status read_polygon(const eval *e, const model_node *n, twod_region *out)
 {
     if (n->pending)
         return pending(e, n);
     const model_polygon *p = n->u.polygon;
-    if (!p->has_points)
+    /* OpenSCAD: an empty paths list means all points; fewer than 3 are
+     * nothing */
+    if (!p->has_points ||
+        (!(p->has_paths && (p->path_count > 0 || p->bad_index)) && p->point_count < 3))
         return SC_OK;
-    uint32_t np = p->point_count;
-    /* OpenSCAD: an empty paths list means all points */
-    int paths = p->has_paths && (p->path_count > 0 || p->bad_index);
-    if (!paths && np < 3)
-        return SC_OK;
-    uint32_t count = paths ? p->path_count : 1;
-    for (uint32_t k = 0; k < count; k++) {
-        uint32_t first = paths ? p->path_start[k] : 0;
-        uint32_t len = paths ? p->path_start[k + 1] - first : np;
-        if (!twod_begin_contour(out))
-            return err_nomem(e->c->error, &n->loc);
-        for (uint32_t i = 0; i < len; i++) {
-            uint32_t index = paths ? p->index[first + i] : i;
-            double x = p->xy[2 * index], y = p->xy[2 * index + 1];
-            if (!(fabs(x) <= TWOD_MAX_COORD && fabs(y) <= TWOD_MAX_COORD))
-                return clip_status(e, n, TWOD_CLIP_RANGE);
-            if (!twod_add_point(out, x, y))
-                return build_twod_add_error(e->c, n, out);
-        }
-    }
-    if (p->bad_index) {
-        *e->c->error = *p->bad_index;
-        return p->bad_index->status;
-    }
+    sc_status st = build_twod_polygon(e->c, n, &unmoved, 1, 1, out);
+    if (st != SC_OK)
+        return st;
     out->sanitized = 0;
     return clip_status(e, n, twod_clip_sanitize(out));
 }

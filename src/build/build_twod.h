@@ -56,6 +56,15 @@ sc_status twod_walk_children(twod_walker *w, const model_node *n, const affine2 
 sc_status twod_walk_fold(const twod_walker *w, const model_node *n, const affine2 *m,
                          affine2 *inner);
 
+/* The one reader of polygon(points, paths) n: its contours moved by m,
+ * added to out (the caller's contours kept): one per path, or one through
+ * all the points without paths, and, with empty_is_all (OpenSCAD's rule),
+ * with an empty vector of them. With check_range a point past
+ * TWOD_MAX_COORD is an error. Its argument error (a bad path index) comes
+ * after the points before it are read. */
+sc_status build_twod_polygon(const build_ctx *c, const model_node *n, const affine2 *m,
+                             int empty_is_all, int check_range, twod_region *out);
+
 /* The error of a failed twod_add_point into r for node n: the limit of
  * TWOD_MAX_POINTS points of every 2D shape when r is full, else memory. */
 sc_status build_twod_add_error(const build_ctx *c, const model_node *n,
