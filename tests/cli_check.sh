@@ -128,6 +128,25 @@ check
 [ "$(cat touching.txt)" = "$(printf '2 top-level objects\nno overlaps')" ] ||
     fail "touching cubes: $(cat touching.txt)"
 
+# A '!' in each of two objects: each object is built with the other
+# disabled, so each is its own root (the first '!' outside the disabled
+# parts, as with '*'). A root drops the transforms above it, so both are
+# the cube at the origin and overlap wholly; were the first '!' kept while
+# building the second object, that object would be empty.
+cat >roots.csg <<'CSG'
+group() {
+  !cube(size = [10, 10, 10]);
+  multmatrix([[1, 0, 0, 5], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]) {
+    !cube(size = [10, 10, 10]);
+  }
+}
+CSG
+run 1 roots.json overlaps roots.csg --json -q
+pycheck '
+o = j["overlaps"]
+assert j["objects"] == 2 and len(o) == 1, j
+holds(o[0]["volume"], 1000)' roots.json
+
 # A drilled plate (a module call: one group) with three bolts: one with
 # clearance in its hole, one resting on the plate's top face, one 0.1 mm
 # too thick for its hole, which overlaps the plate by pi (2.1^2 - 2^2) 5.

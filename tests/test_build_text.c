@@ -265,6 +265,29 @@ static void test_glyph_spans_match_inside(void **state)
     sc_scene_release(s);
 }
 
+/* OpenSCAD's polygons of the text node src (in "t.csg") into *poly
+ * (initialised here; the caller frees it): the status of
+ * text_faithful_polygons, and its error formatted into message. */
+static sc_status text_polygons_of(const char *src, twod_region *poly, char *message,
+                                  size_t size)
+{
+    sc_error e;
+    parse_tree *tree;
+    assert_int_equal(parse_text("t.csg", src, strlen(src), &tree, &e), SC_OK);
+    model *lowered;
+    assert_int_equal(model_lower_twod("t.csg", tree->first, &lowered, &e), SC_OK);
+    build_ctx c = {"t.csg", NULL, &e, 1, NULL};
+    twod_init(poly);
+    sc_status st = text_faithful_polygons(&c, lowered->first, poly, NULL);
+    if (st != SC_OK)
+        sc_error_format(&e, message, size);
+    else
+        message[0] = 0;
+    model_free(lowered);
+    parse_tree_free(tree);
+    return st;
+}
+
 /* Faithful polygons: every point OpenSCAD's flattening makes lies on the
  * exact outline (within the 2^-16 snap), so membership of the exact prism
  * just inside and outside a polygon edge's midpoint agrees with the
@@ -273,15 +296,11 @@ static void test_glyph_spans_match_inside(void **state)
 static void test_faithful_points_on_curves(void **state)
 {
     (void)state;
-    const char *src = "text(text = \"Bo@\", size = 10, $fn = 32);";
-    sc_error e;
-    parse_tree *tree;
-    assert_int_equal(parse_text("t.csg", src, strlen(src), &tree, &e), SC_OK);
-    model *lowered;
-    assert_int_equal(model_lower_twod("t.csg", tree->first, &lowered, &e), SC_OK);
-    build_ctx c = {"t.csg", NULL, &e, 1, NULL};
-    text_polygons poly;
-    assert_int_equal(text_faithful_polygons(&c, lowered->first, &poly, NULL), SC_OK);
+    twod_region poly;
+    char buf[1024];
+    assert_int_equal(text_polygons_of("text(text = \"Bo@\", size = 10, $fn = 32);", &poly,
+                                      buf, sizeof buf),
+                     SC_OK);
     sc_scene *s =
         load("linear_extrude(height = 1) { text(text = \"Bo@\", size = 10, $fn = "
              "32); }",
@@ -303,7 +322,7 @@ static void test_faithful_points_on_curves(void **state)
         if (!(in && out))
             off++;
     }
-    uint32_t paths = poly.path_count;
+    uint32_t paths = poly.contour_count;
     double area = 0;
     for (uint32_t k = 0; k < paths; k++)
         for (uint32_t i = poly.start[k]; i < poly.start[k + 1]; i++) {
@@ -316,9 +335,7 @@ static void test_faithful_points_on_curves(void **state)
                   paths, poly.point_count, area / 2, off);
     assert_int_equal(off, 0);
     assert_true(area > 0); /* outlines counter-clockwise */
-    text_polygons_free(&poly);
-    model_free(lowered);
-    parse_tree_free(tree);
+    twod_free(&poly);
     sc_scene_release(s);
 }
 
@@ -413,6 +430,28 @@ static void test_errors(void **state)
     sc_scene_release(load(fine, 0));
 }
 
+/* OpenSCAD's polygons of a text obey the one rule of every 2D shape: at
+ * most TWOD_MAX_POINTS points (the glyphs' points were unbounded before),
+ * an error at the text node past it. 2000 '@' of 513 points per curve
+ * are more than 2e7 points. */
+static void test_faithful_point_limit(void **state)
+{
+    (void)state;
+    size_t n = 2000;
+    char *src = malloc(n + 64);
+    strcpy(src, "text(text = \"");
+    size_t at = strlen(src);
+    memset(src + at, '@', n);
+    strcpy(src + at + n, "\", $fn = 4096);");
+    twod_region poly;
+    char buf[1024];
+    assert_int_equal(text_polygons_of(src, &poly, buf, sizeof buf), SC_ERR_LIMIT);
+    assert_string_equal(
+        buf, "t.csg:1:1: error: text: too many points in a 2D shape (limit is 10000000)");
+    twod_free(&poly);
+    free(src);
+}
+
 static void test_long_and_fonts(void **state)
 {
     (void)state;
@@ -461,6 +500,7 @@ int main(void)
         cmocka_unit_test(test_long_text),
         cmocka_unit_test(test_errors),
         cmocka_unit_test(test_long_and_fonts),
+        cmocka_unit_test(test_faithful_point_limit),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -1,13 +1,14 @@
 /* Interference between the top-level objects of a model (sc_objects_*):
  * which pairs share interior, how much, and where.
  *
- * The objects are found in the syntax tree: the statements at the top of
- * the file, or, when there is only one, the children of the grouping node
- * it is (a module call exports as one group(), a translated assembly as one
- * multmatrix), descending while such a node has a single child. Each
- * object becomes a scene of its own, built from the whole file with every
- * other object disabled, as the '*' modifier would: the transforms, colours
- * and $fn above it stay what they are in the model.
+ * The objects are found in the typed model (model.h), lowered once: the
+ * nodes at the top of the file, or, when there is only one, the children
+ * of the grouping node it is (a module call exports as one group(), a
+ * translated assembly as one multmatrix), descending while such a node has
+ * a single child. Each object becomes a scene of its own, built from the
+ * whole model with every other object disabled (MODEL_MOD_DISABLE), as the
+ * '*' modifier would: the transforms, colours and $fn above it stay what
+ * they are in the model.
  *
  * The overlap of a pair is the volume of A intersect B, integrated like
  * the measures (quad.h) over the box the two objects' boxes share: along
@@ -36,38 +37,38 @@
 
 struct sc_objects {
     char *path;         /* the file name every location points to */
-    parse_tree *syntax; /* kept for the objects' names and positions */
+    parse_tree *syntax; /* owns the names the model's nodes point to */
+    model *typed;       /* lowered once; each object's build disables the others */
+    int root_marked;    /* the lowering marked a '!' node in the model */
     size_t count;
-    const parse_node **nodes;
+    model_node **nodes;
     sc_scene **scenes;
 };
 
 /* A node that unions its children and may stand for a group of objects
- * (group, union, render, color, multmatrix), named through the model's one
- * table of kinds. */
-static int is_grouping(const parse_node *n)
+ * (group, union, render, color, multmatrix). */
+static int is_grouping(const model_node *n)
 {
-    model_kind k = model_kind_of(n->name);
-    return k == MODEL_UNION || k == MODEL_COLOR || k == MODEL_XFORM;
+    return n->kind == MODEL_UNION || n->kind == MODEL_COLOR || n->kind == MODEL_XFORM;
 }
 
 /* A node that is part of the solid (not disabled, not background). */
-static int counts(const parse_node *n)
+static int counts(const model_node *n)
 {
-    return !(n->modifiers & (PARSE_MOD_DISABLE | PARSE_MOD_BACKGROUND));
+    return !(n->modifiers & (MODEL_MOD_DISABLE | MODEL_MOD_BACKGROUND));
 }
 
-static size_t counted(const parse_node *first)
+static size_t counted(const model_node *first)
 {
     size_t n = 0;
-    for (const parse_node *c = first; c; c = c->next)
+    for (const model_node *c = first; c; c = c->next)
         n += counts(c);
     return n;
 }
 
-static const parse_node *only_counted(const parse_node *first)
+static model_node *only_counted(model_node *first)
 {
-    for (const parse_node *c = first; c; c = c->next)
+    for (model_node *c = first; c; c = c->next)
         if (counts(c))
             return c;
     return NULL;
@@ -81,6 +82,7 @@ void sc_objects_release(sc_objects *objects)
         sc_scene_release(objects->scenes ? objects->scenes[k] : NULL);
     free(objects->scenes);
     free(objects->nodes);
+    model_free(objects->typed);
     parse_tree_free(objects->syntax);
     free(objects->path);
     free(objects);
@@ -95,32 +97,67 @@ static char *copy_string(const char *s)
     return c;
 }
 
-/* Builds object k alone: every other object disabled for the build. */
+/* Clears the '!' marks from first and its siblings and their subtrees
+ * (*marked says whether there was one), and returns the node the lowering
+ * would choose as the design's root now (lower.c's find_root): the first
+ * with '!' in file order outside the disabled subtrees, entering the nodes
+ * whose children the builder walks. The recursion is as deep as the
+ * model, which the parser bounds (PARSE_MAX_DEPTH). */
+static model_node *clear_roots(model_node *first, int enabled, int *marked)
+{
+    model_node *found = NULL;
+    for (model_node *n = first; n; n = n->next) {
+        int on = enabled && !(n->modifiers & MODEL_MOD_DISABLE);
+        *marked |= n->is_root;
+        n->is_root = 0;
+        if (on && !found && (n->modifiers & MODEL_MOD_ROOT))
+            found = n;
+        if (!model_is_leaf(n->kind)) {
+            model_node *inner = clear_roots(n->first_child, on, marked);
+            if (!found)
+                found = inner;
+        }
+    }
+    return found;
+}
+
+/* Marks the design's root for the objects enabled now: a '!' inside a
+ * disabled object is not the design's, as when the lowering skips a '*'
+ * subtree. A '!' the lowering found but did not mark (below a node whose
+ * children are not lowered) stays the design's root as lowered. */
+static void choose_root(sc_objects *o)
+{
+    if (!o->root_marked)
+        return;
+    int marked = 0;
+    model_node *root = clear_roots(o->typed->first, 1, &marked);
+    if (root)
+        root->is_root = 1;
+    o->typed->has_root = root != NULL;
+}
+
+/* Builds object k alone: every other object disabled for the build, as
+ * the '*' modifier would disable it. */
 static sc_status build_object(sc_objects *o, size_t k, int faithful, sc_error *error)
 {
     unsigned *saved = malloc(o->count * sizeof *saved);
     if (!saved)
         return err_nomem(error, NULL);
     for (size_t j = 0; j < o->count; j++) {
-        parse_node *n = (parse_node *)o->nodes[j]; /* the tree is ours */
-        saved[j] = n->modifiers;
+        saved[j] = o->nodes[j]->modifiers;
         if (j != k)
-            n->modifiers |= PARSE_MOD_DISABLE;
+            o->nodes[j]->modifiers |= MODEL_MOD_DISABLE;
     }
+    choose_root(o);
     sc_scene *s = calloc(1, sizeof *s);
     sc_status st = SC_OK;
     if (!s || !(s->path = copy_string(o->path)))
         st = err_nomem(error, NULL);
-    else {
-        model *typed = NULL;
-        st = model_lower(o->syntax, &typed, error);
-        if (st == SC_OK)
-            st = build_scene(typed, faithful, &s->tree, &s->look, &s->warnings,
-                             &s->warning_count, error);
-        model_free(typed);
-    }
+    else
+        st = build_scene(o->typed, faithful, &s->tree, &s->look, &s->warnings,
+                         &s->warning_count, error);
     for (size_t j = 0; j < o->count; j++)
-        ((parse_node *)o->nodes[j])->modifiers = saved[j];
+        o->nodes[j]->modifiers = saved[j];
     free(saved);
     if (st) {
         sc_scene_release(s);
@@ -157,13 +194,20 @@ sc_status sc_objects_load(const char *path, const sc_load_options *options,
     }
     st = parse_text(o->path, text, length, &o->syntax, error);
     free(text);
+    if (st == SC_OK)
+        st = model_lower(o->syntax, &o->typed, error);
     if (st) {
         sc_objects_release(o);
         return st;
     }
-    const parse_node *first = o->syntax->first;
+    if (o->typed->has_root) {
+        model_node *root = clear_roots(o->typed->first, 1, &o->root_marked);
+        if (root && o->root_marked)
+            root->is_root = 1; /* the lowering's choice, found again */
+    }
+    model_node *first = o->typed->first;
     while (counted(first) == 1) {
-        const parse_node *n = only_counted(first);
+        model_node *n = only_counted(first);
         if (!is_grouping(n) || !n->first_child)
             break;
         first = n->first_child;
@@ -175,7 +219,7 @@ sc_status sc_objects_load(const char *path, const sc_load_options *options,
         sc_objects_release(o);
         return err_nomem(error, NULL);
     }
-    for (const parse_node *c = first; c; c = c->next)
+    for (model_node *c = first; c; c = c->next)
         if (counts(c))
             o->nodes[o->count++] = c;
     for (size_t k = 0; k < o->count; k++) {

@@ -811,6 +811,10 @@ static sc_status walk(builder *b, uint32_t *root)
             n = done->next;
             continue;
         }
+        if (n->modifiers & MODEL_MOD_DISABLE) {
+            n = n->next; /* '*' set on the typed model (api/overlap.c) */
+            continue;
+        }
         int opened;
         st = visit(b, n, &opened);
         n = opened ? n->first_child : n->next;

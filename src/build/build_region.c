@@ -23,8 +23,8 @@
  *
  * build_region_covers says beforehand whether a linear_extrude is this
  * path's; anything else (twist, scale, offset, text, 3D nodes, ...) goes
- * to the prism path in build_extrude.c. The walk recurses over the 2D
- * nodes with a depth guard (BUILD_REGION_MAX_DEPTH); bad arguments are
+ * to the prism path in build_extrude.c. The walk over the 2D nodes is the
+ * one 2D walk (build_twod.h), with its depth guard; bad arguments are
  * errors at the value, with the messages of the prism path.
  */
 #include "build/build_region.h"
@@ -34,15 +34,14 @@
 #include <string.h>
 
 #include "base/error.h"
+#include "build/build_twod.h"
 #include "csg/prim_extrusion.h"
 
 typedef struct walker {
+    twod_walker walk; /* first: the visitor is the walker */
     const build_ctx *c;
     prim_region region;
-    double *xy; /* the polygon being read, 2 per point */
-    uint32_t xy_cap;
-    uint32_t *start; /* its paths' first points, and one past the last */
-    uint32_t start_cap;
+    twod_region poly; /* the polygon being read, under the transforms */
 } walker;
 
 /* The 2D leaves the walk reads. */
@@ -62,7 +61,7 @@ static int is_op(model_kind kind)
 /* The first node below n (n included) the walk cannot read, or NULL. */
 static const model_node *uncovered(const model_node *n, int depth)
 {
-    if (depth > BUILD_REGION_MAX_DEPTH ||
+    if (depth > TWOD_WALK_MAX_DEPTH ||
         (n->modifiers & (MODEL_MOD_DISABLE | MODEL_MOD_BACKGROUND)))
         return NULL; /* the walk reports the depth; '%' and '*' are not built */
     model_kind kind = n->kind;
@@ -88,38 +87,13 @@ int build_region_covers(const model_node *n, const model_node **miss)
     return n->u.linear_extrude->plain;
 }
 
-/* Room for count points in w->xy; returns 0 when memory ran out. */
-static int reserve_points(walker *w, uint64_t count)
+/* Adds the polygon read into w->poly to the region tree. */
+static sc_status add_poly(walker *w, const model_node *n, int *pushed)
 {
-    if (count <= w->xy_cap)
-        return 1;
-    if (count > UINT32_MAX / 4)
-        return 0;
-    double *p = realloc(w->xy, (size_t)count * 2 * sizeof *p);
-    if (!p)
-        return 0;
-    w->xy = p;
-    w->xy_cap = (uint32_t)count;
-    return 1;
-}
-
-static int reserve_paths(walker *w, uint64_t count)
-{
-    if (count + 1 <= w->start_cap)
-        return 1;
-    if (count >= UINT32_MAX / 8)
-        return 0;
-    uint32_t *p = realloc(w->start, (size_t)(count + 1) * sizeof *p);
-    if (!p)
-        return 0;
-    w->start = p;
-    w->start_cap = (uint32_t)(count + 1);
-    return 1;
-}
-
-static void put_point(walker *w, uint32_t i, const affine2 *m, double x, double y)
-{
-    affine2_apply(m, x, y, &w->xy[2 * i], &w->xy[2 * i + 1]);
+    twod_region *p = &w->poly;
+    return prim_region_add_polygon(&w->region, p->xy, p->start, p->contour_count, pushed)
+               ? SC_OK
+               : err_nomem(w->c->error, &n->loc);
 }
 
 /* square(size = s | [x, y], center = false) */
@@ -133,17 +107,13 @@ static sc_status read_square(walker *w, const model_node *n, const affine2 *m,
     if (!(sx > 0 && sy > 0 && isfinite(sx) && isfinite(sy)))
         return SC_OK; /* no area */
     double x0 = center ? -sx / 2 : 0, y0 = center ? -sy / 2 : 0;
-    if (!reserve_points(w, 4) || !reserve_paths(w, 1))
-        return err_nomem(w->c->error, &n->loc);
-    put_point(w, 0, m, x0, y0);
-    put_point(w, 1, m, x0 + sx, y0);
-    put_point(w, 2, m, x0 + sx, y0 + sy);
-    put_point(w, 3, m, x0, y0 + sy);
-    w->start[0] = 0;
-    w->start[1] = 4;
-    return prim_region_add_polygon(&w->region, w->xy, w->start, 1, pushed)
-               ? SC_OK
-               : err_nomem(w->c->error, &n->loc);
+    twod_region *p = &w->poly;
+    twod_clear(p);
+    if (!twod_begin_contour(p) || !twod_add_moved(p, m, x0, y0) ||
+        !twod_add_moved(p, m, x0 + sx, y0) || !twod_add_moved(p, m, x0 + sx, y0 + sy) ||
+        !twod_add_moved(p, m, x0, y0 + sy))
+        return build_twod_add_error(w->c, n, p);
+    return add_poly(w, n, pushed);
 }
 
 /* circle(r = 1 | d) */
@@ -169,42 +139,20 @@ static sc_status read_polygon(walker *w, const model_node *n, const affine2 *m,
     const build_ctx *c = w->c;
     if (n->pending)
         return build_pending(c, n);
-    const model_polygon *p = n->u.polygon;
-    if (!p->has_points)
+    twod_region *poly = &w->poly;
+    twod_clear(poly);
+    if (!n->u.polygon->has_points)
         return SC_OK;
-    uint32_t np = p->point_count;
-    /* OpenSCAD: an empty vector of paths is one path through all the points */
-    int paths = p->has_paths && p->path_count > 0;
-    uint32_t count = paths ? p->path_count : 1;
-    uint64_t total = paths ? p->path_start[count] : np;
-    if (!reserve_points(w, total) || !reserve_paths(w, count))
-        return err_nomem(w->c->error, &n->loc);
-    uint32_t at = 0;
-    for (uint32_t k = 0; k < count; k++) {
-        uint32_t first = paths ? p->path_start[k] : 0;
-        uint32_t len = paths ? p->path_start[k + 1] - first : np;
-        w->start[k] = at;
-        for (uint32_t i = 0; i < len; i++) {
-            uint32_t index = paths ? p->index[first + i] : i;
-            put_point(w, at++, m, p->xy[2 * index], p->xy[2 * index + 1]);
-        }
-    }
-    if (p->bad_index) {
-        *c->error = *p->bad_index;
-        return p->bad_index->status;
-    }
-    w->start[count] = at;
-    if (!prim_region_add_polygon(&w->region, w->xy, w->start, count, pushed))
-        return err_nomem(w->c->error, &n->loc);
-    if (w->region.edge_count > PRIM_EXTRUSION_MAX_EDGES)
+    sc_status st = build_twod_polygon(c, n, m, 1, 0, poly);
+    if (st != SC_OK)
+        return st;
+    st = add_poly(w, n, pushed);
+    if (st == SC_OK && w->region.edge_count > PRIM_EXTRUSION_MAX_EDGES)
         return err_set(c->error, SC_ERR_LIMIT, &n->loc,
                        "linear_extrude has too many polygon edges (limit is %d)",
                        PRIM_EXTRUSION_MAX_EDGES);
-    return SC_OK;
+    return st;
 }
-
-static sc_status walk(walker *w, const model_node *n, const affine2 *m, int depth,
-                      int *pushed);
 
 /* The children of n combined by op; *pushed says whether a region was
  * pushed (an empty result pushes nothing and leaves no trace). */
@@ -214,11 +162,9 @@ static sc_status walk_children(walker *w, const model_node *n, const affine2 *m,
     prim_region *r = &w->region;
     uint32_t nodes = r->node_count, edges = r->edge_count, ellipses = r->ellipse_count;
     int operands = 0, seen = 0, empty = 0;
-    for (const model_node *k = n->first_child; k; k = k->next) {
-        if (k->modifiers & (MODEL_MOD_DISABLE | MODEL_MOD_BACKGROUND))
-            continue;
+    for (const model_node *k = twod_walk_first(n); k; k = twod_walk_next(k->next)) {
         int p = 0;
-        sc_status st = walk(w, k, m, depth + 1, &p);
+        sc_status st = twod_walk(&w->walk, k, m, depth + 1, &p);
         if (st != SC_OK)
             return st;
         if (!p && (op == PRIM_REGION_INTERSECTION ||
@@ -238,16 +184,13 @@ static sc_status walk_children(walker *w, const model_node *n, const affine2 *m,
     return SC_OK;
 }
 
-static sc_status walk(walker *w, const model_node *n, const affine2 *m, int depth,
-                      int *pushed)
+/* The walk's visitor: *pushed (out) says whether n pushed a region. */
+static sc_status walk(twod_walker *walk, const model_node *n, const affine2 *m, int depth,
+                      void *out)
 {
+    walker *w = (walker *)walk;
+    int *pushed = out;
     *pushed = 0;
-    if (depth > BUILD_REGION_MAX_DEPTH)
-        return err_set(w->c->error, SC_ERR_LIMIT, &n->loc,
-                       "too many nested nodes in linear_extrude (limit is %d)",
-                       BUILD_REGION_MAX_DEPTH);
-    if (n->modifiers & (MODEL_MOD_DISABLE | MODEL_MOD_BACKGROUND))
-        return SC_OK;
     model_kind kind = n->kind;
     if (kind == MODEL_SQUARE)
         return read_square(w, n, m, pushed);
@@ -256,14 +199,14 @@ static sc_status walk(walker *w, const model_node *n, const affine2 *m, int dept
     if (kind == MODEL_POLYGON)
         return read_polygon(w, n, m, pushed);
     if (kind == MODEL_XFORM) {
-        if (n->pending)
-            return build_pending(w->c, n);
         affine2 inner;
-        build_matrix_xy(n->u.xform, m->m, inner.m);
+        sc_status st = twod_walk_fold(walk, n, m, &inner);
+        if (st != SC_OK)
+            return st;
         prim_region *r = &w->region;
         uint32_t nodes = r->node_count, edges = r->edge_count,
                  ellipses = r->ellipse_count;
-        sc_status st = walk_children(w, n, &inner, PRIM_REGION_UNION, depth, pushed);
+        st = walk_children(w, n, &inner, PRIM_REGION_UNION, depth, pushed);
         double det = inner.m[0][0] * inner.m[1][1] - inner.m[0][1] * inner.m[1][0];
         if (st == SC_OK && *pushed && !(det != 0)) {
             /* flattened onto a line or a point: no area (the children were
@@ -297,7 +240,9 @@ sc_status build_region_extrude(const build_ctx *c, const model_node *n, int emit
     int center = args->center;
     walker w;
     memset(&w, 0, sizeof w);
+    w.walk = (twod_walker){c, "linear_extrude", "nodes", walk};
     w.c = c;
+    twod_init(&w.poly);
     affine2 id = affine2_identity();
     int pushed = 0;
     sc_status st = walk_children(&w, n, &id, PRIM_REGION_UNION, 0, &pushed);
@@ -317,7 +262,6 @@ sc_status build_region_extrude(const build_ctx *c, const model_node *n, int emit
         }
     }
     prim_region_free(&w.region);
-    free(w.xy);
-    free(w.start);
+    twod_free(&w.poly);
     return st;
 }

@@ -8,9 +8,6 @@
 
 #include "build/build_ctx.h"
 
-/* Nesting of 2D nodes inside one linear_extrude (as the prism path's). */
-#define BUILD_REGION_MAX_DEPTH 1000
-
 /* 1 when the exact path takes this linear_extrude: every 2D node below one
  * of circle, square, polygon, group, union, render, color, multmatrix,
  * difference, intersection ('%' and '*' subtrees are not looked at), twist

@@ -55,8 +55,6 @@
 #include "csg/prim_revolve.h"
 #include "model/faithful.h"
 
-enum { BUILD_REVOLVE_MAX_DEPTH = 1000 };
-
 /* An exact circle: centre, radius, and the path holding its polygon. */
 typedef struct profile_circle {
     double cx, cy, r;
@@ -65,12 +63,11 @@ typedef struct profile_circle {
 } profile_circle;
 
 typedef struct profile {
-    double *xy; /* 2 per point */
-    uint32_t count, cap;
-    uint32_t *start; /* path p is points start[p] .. start[p + 1] - 1 */
-    uint32_t *region;
-    int *hole;
-    uint32_t paths, paths_cap;
+    twod_region pts;  /* the paths, under the transforms */
+    uint32_t *region; /* per path: the region it belongs to */
+    int *hole;        /* per path: a hole of its region */
+    uint32_t paths_cap;
+    uint32_t noted; /* paths with their region and hole mark */
     uint32_t regions;
     profile_circle *circles;
     uint32_t circle_count, circle_cap;
@@ -78,8 +75,7 @@ typedef struct profile {
 
 static void profile_free(profile *p)
 {
-    free(p->xy);
-    free(p->start);
+    twod_free(&p->pts);
     free(p->region);
     free(p->hole);
     free(p->circles);
@@ -91,65 +87,50 @@ static void begin_region(profile *p)
     p->regions++;
 }
 
+/* Gives the paths added since the last call their region (the last one
+ * opened) and no hole mark; 0 when memory runs out. */
+static int note_paths(profile *p)
+{
+    uint32_t count = p->pts.contour_count;
+    if (count > p->paths_cap) {
+        uint32_t cap = p->paths_cap;
+        if (!grow_array32((void **)&p->region, &cap, count, sizeof *p->region))
+            return 0;
+        int *hole = realloc(p->hole, (size_t)cap * sizeof *hole);
+        if (!hole)
+            return 0;
+        p->hole = hole;
+        p->paths_cap = cap;
+    }
+    for (uint32_t k = p->noted; k < count; k++) {
+        p->hole[k] = 0;
+        p->region[k] = p->regions - 1;
+    }
+    p->noted = count;
+    return 1;
+}
+
 static int begin_path(profile *p)
 {
-    uint32_t cap = p->paths_cap;
-    if (!grow_array32((void **)&p->start, &cap, p->paths + 2, sizeof *p->start))
-        return 0;
-    int *hole = realloc(p->hole, (size_t)cap * sizeof *hole);
-    if (!hole)
-        return 0;
-    p->hole = hole;
-    uint32_t *region = realloc(p->region, (size_t)cap * sizeof *region);
-    if (!region)
-        return 0;
-    p->region = region;
-    p->paths_cap = cap;
-    p->start[p->paths] = p->count;
-    p->hole[p->paths] = 0;
-    p->region[p->paths] = p->regions - 1;
-    p->paths++;
-    p->start[p->paths] = p->count;
-    return 1;
-}
-
-static int add_point(profile *p, const affine2 *m, double x, double y)
-{
-    uint32_t need = 2 * (p->count + 1);
-    uint32_t cap2 = p->cap * 2;
-    if (need > cap2) {
-        uint32_t cap = p->cap;
-        if (!grow_array32((void **)&p->xy, &cap, need, sizeof *p->xy))
-            return 0;
-        p->cap = cap / 2;
-    }
-    affine2_apply(m, x, y, &p->xy[2 * p->count], &p->xy[2 * p->count + 1]);
-    p->count++;
-    p->start[p->paths] = p->count;
-    return 1;
-}
-
-static double path_area(const profile *p, uint32_t k)
-{
-    return twod_ring_area(p->xy, p->start[k], p->start[k + 1]);
+    return twod_begin_contour(&p->pts) && note_paths(p);
 }
 
 /* Even-odd: is (x, y) inside path k? */
 static int in_path(const profile *p, uint32_t k, double x, double y)
 {
     int in = 0;
-    uint32_t s = p->start[k], e = p->start[k + 1];
+    uint32_t s = p->pts.start[k], e = p->pts.start[k + 1];
     for (uint32_t i = s; i < e; i++) {
         uint32_t j = i + 1 < e ? i + 1 : s;
-        double xi = p->xy[2 * i], yi = p->xy[2 * i + 1];
-        double xj = p->xy[2 * j], yj = p->xy[2 * j + 1];
+        double xi = p->pts.xy[2 * i], yi = p->pts.xy[2 * i + 1];
+        double xj = p->pts.xy[2 * j], yj = p->pts.xy[2 * j + 1];
         if ((yi > y) != (yj > y) && x < xi + (y - yi) * (xj - xi) / (yj - yi))
             in = !in;
     }
     return in;
 }
 
-/* Marks the holes among paths first .. p->paths - 1 (one polygon): a path
+/* Marks the holes among paths first .. p->pts.contour_count - 1 (one polygon): a path
  * whose first point lies inside an odd number of the others.
  *
  * Each path j is measured once, and only the points in its box (widened by
@@ -162,24 +143,25 @@ static int in_path(const profile *p, uint32_t k, double x, double y)
  * 13 s). */
 static void mark_holes(profile *p, uint32_t first)
 {
-    for (uint32_t k = first; k < p->paths; k++)
+    for (uint32_t k = first; k < p->pts.contour_count; k++)
         p->hole[k] = 0;
-    for (uint32_t j = first; j < p->paths; j++) {
-        uint32_t s = p->start[j], e = p->start[j + 1];
+    for (uint32_t j = first; j < p->pts.contour_count; j++) {
+        uint32_t s = p->pts.start[j], e = p->pts.start[j + 1];
         if (e - s < 3)
             continue;
-        double x0 = p->xy[2 * s], x1 = x0, y0 = p->xy[2 * s + 1], y1 = y0;
+        double x0 = p->pts.xy[2 * s], x1 = x0, y0 = p->pts.xy[2 * s + 1], y1 = y0;
         for (uint32_t i = s + 1; i < e; i++) {
-            x0 = fmin(x0, p->xy[2 * i]);
-            x1 = fmax(x1, p->xy[2 * i]);
-            y0 = fmin(y0, p->xy[2 * i + 1]);
-            y1 = fmax(y1, p->xy[2 * i + 1]);
+            x0 = fmin(x0, p->pts.xy[2 * i]);
+            x1 = fmax(x1, p->pts.xy[2 * i]);
+            y0 = fmin(y0, p->pts.xy[2 * i + 1]);
+            y1 = fmax(y1, p->pts.xy[2 * i + 1]);
         }
         double slack = 8 * DBL_EPSILON * fmax(fabs(x0), fabs(x1));
-        for (uint32_t k = first; k < p->paths; k++) {
-            if (k == j || p->start[k + 1] - p->start[k] < 3)
+        for (uint32_t k = first; k < p->pts.contour_count; k++) {
+            if (k == j || p->pts.start[k + 1] - p->pts.start[k] < 3)
                 continue;
-            double x = p->xy[2 * p->start[k]], y = p->xy[2 * p->start[k] + 1];
+            double x = p->pts.xy[2 * p->pts.start[k]],
+                   y = p->pts.xy[2 * p->pts.start[k] + 1];
             if (y < y0 || y > y1 || x < x0 - slack || x > x1 + slack)
                 continue;
             if (in_path(p, j, x, y))
@@ -199,9 +181,11 @@ static sc_status read_square(const build_ctx *c, const model_node *n, const affi
         return SC_OK; /* no area */
     double x0 = center ? -sx / 2 : 0, y0 = center ? -sy / 2 : 0;
     begin_region(p);
-    if (!begin_path(p) || !add_point(p, m, x0, y0) || !add_point(p, m, x0 + sx, y0) ||
-        !add_point(p, m, x0 + sx, y0 + sy) || !add_point(p, m, x0, y0 + sy))
-        return err_nomem(c->error, &n->loc);
+    twod_region *r = &p->pts;
+    if (!begin_path(p) || !twod_add_moved(r, m, x0, y0) ||
+        !twod_add_moved(r, m, x0 + sx, y0) || !twod_add_moved(r, m, x0 + sx, y0 + sy) ||
+        !twod_add_moved(r, m, x0, y0 + sy))
+        return build_twod_add_error(c, n, r);
     return SC_OK;
 }
 
@@ -237,12 +221,13 @@ static sc_status read_circle(const build_ctx *c, const model_node *n, const affi
     if (!begin_path(p))
         return err_nomem(c->error, &n->loc);
     double det = m->m[0][0] * m->m[1][1] - m->m[0][1] * m->m[1][0];
-    p->circles[p->circle_count++] = (profile_circle){
-        m->m[0][2], m->m[1][2], r * sqrt(fabs(det)), p->paths - 1, similarity(m)};
+    p->circles[p->circle_count++] =
+        (profile_circle){m->m[0][2], m->m[1][2], r * sqrt(fabs(det)),
+                         p->pts.contour_count - 1, similarity(m)};
     for (long k = 0; k < f; k++) {
         double a = 360.0 * (double)k / (double)f;
-        if (!add_point(p, m, r * faithful_cos_deg(a), r * faithful_sin_deg(a)))
-            return err_nomem(c->error, &n->loc);
+        if (!twod_add_moved(&p->pts, m, r * faithful_cos_deg(a), r * faithful_sin_deg(a)))
+            return build_twod_add_error(c, n, &p->pts);
     }
     return SC_OK;
 }
@@ -252,29 +237,16 @@ static sc_status read_polygon(const build_ctx *c, const model_node *n, const aff
 {
     if (n->pending)
         return build_pending(c, n);
-    const model_polygon *poly = n->u.polygon;
-    if (!poly->has_points)
+    if (!n->u.polygon->has_points)
         return SC_OK;
-    uint32_t np = poly->point_count;
     begin_region(p);
-    uint32_t first = p->paths;
+    uint32_t first = p->pts.contour_count;
     /* an empty vector of paths is no path here */
-    uint32_t count = poly->has_paths ? poly->path_count : 1;
-    for (uint32_t k = 0; k < count; k++) {
-        uint32_t from = poly->has_paths ? poly->path_start[k] : 0;
-        uint32_t len = poly->has_paths ? poly->path_start[k + 1] - from : np;
-        if (!begin_path(p))
-            return err_nomem(c->error, &n->loc);
-        for (uint32_t i = 0; i < len; i++) {
-            uint32_t index = poly->has_paths ? poly->index[from + i] : i;
-            if (!add_point(p, m, poly->xy[2 * index], poly->xy[2 * index + 1]))
-                return err_nomem(c->error, &n->loc);
-        }
-    }
-    if (poly->bad_index) {
-        *c->error = *poly->bad_index;
-        return poly->bad_index->status;
-    }
+    sc_status st = build_twod_polygon(c, n, m, 0, 0, &p->pts);
+    if (st != SC_OK)
+        return st;
+    if (!note_paths(p))
+        return err_nomem(c->error, &n->loc);
     mark_holes(p, first);
     return SC_OK;
 }
@@ -286,14 +258,14 @@ static sc_status add_twod(const build_ctx *c, const model_node *n, const twod_re
 {
     if (r->contour_count == 0)
         return SC_OK;
-    uint32_t first = p->paths;
+    uint32_t first = p->pts.contour_count;
     begin_region(p);
     for (uint32_t k = 0; k < r->contour_count; k++) {
         if (!begin_path(p))
             return err_nomem(c->error, &n->loc);
         for (uint32_t i = r->start[k]; i < r->start[k + 1]; i++) {
-            if (!add_point(p, m, r->xy[2 * i], r->xy[2 * i + 1]))
-                return err_nomem(c->error, &n->loc);
+            if (!twod_add_moved(&p->pts, m, r->xy[2 * i], r->xy[2 * i + 1]))
+                return build_twod_add_error(c, n, &p->pts);
         }
     }
     mark_holes(p, first);
@@ -314,15 +286,19 @@ static sc_status gather_other(const build_ctx *c, const model_node *n, const aff
     return st;
 }
 
-static sc_status gather(const build_ctx *c, const model_node *n, const affine2 *m,
-                        profile *p, int depth)
+/* The profile gathered by the one 2D walk (build_twod.h). */
+typedef struct gatherer {
+    twod_walker walk; /* first: the visitor is the walker */
+    profile *p;
+} gatherer;
+
+/* The walk's visitor: n's paths added to the profile. */
+static sc_status gather(twod_walker *walk, const model_node *n, const affine2 *m,
+                        int depth, void *out)
 {
-    if (depth > BUILD_REVOLVE_MAX_DEPTH)
-        return err_set(c->error, SC_ERR_LIMIT, &n->loc,
-                       "too many nested nodes in rotate_extrude (limit is %d)",
-                       BUILD_REVOLVE_MAX_DEPTH);
-    if (n->modifiers & (MODEL_MOD_DISABLE | MODEL_MOD_BACKGROUND))
-        return SC_OK;
+    (void)out;
+    const build_ctx *c = walk->c;
+    profile *p = ((gatherer *)walk)->p;
     model_kind kind = n->kind;
     if (kind == MODEL_SQUARE)
         return read_square(c, n, m, p);
@@ -332,31 +308,26 @@ static sc_status gather(const build_ctx *c, const model_node *n, const affine2 *
         return read_polygon(c, n, m, p);
     affine2 inner = *m;
     if (kind == MODEL_XFORM) {
-        if (n->pending)
-            return build_pending(c, n);
-        build_matrix_xy(n->u.xform, m->m, inner.m);
+        sc_status st = twod_walk_fold(walk, n, m, &inner);
+        if (st != SC_OK)
+            return st;
     } else if (kind != MODEL_UNION && kind != MODEL_COLOR) {
         return gather_other(c, n, m, p);
     }
-    for (const model_node *k = n->first_child; k; k = k->next) {
-        sc_status st = gather(c, k, &inner, p, depth + 1);
-        if (st != SC_OK)
-            return st;
-    }
-    return SC_OK;
+    return twod_walk_children(walk, n, &inner, depth);
 }
 
 /* Does path k go the way its region needs (outline counter-clockwise,
  * hole clockwise) in the plane (sign * x, y)? */
 static int path_reversed(const profile *p, uint32_t k, double sign)
 {
-    return (sign * path_area(p, k) > 0) == p->hole[k];
+    return (sign * twod_contour_area(&p->pts, k) > 0) == p->hole[k];
 }
 
 /* Index of the i-th point of path k, oriented. */
 static uint32_t oriented(const profile *p, uint32_t k, int reverse, uint32_t i)
 {
-    uint32_t s = p->start[k], len = p->start[k + 1] - s;
+    uint32_t s = p->pts.start[k], len = p->pts.start[k + 1] - s;
     return s + (reverse ? len - 1 - i : i);
 }
 
@@ -368,16 +339,16 @@ static sc_status build_faithful(const build_ctx *c, const model_node *n, const p
     int full = angle == 360;
     uint32_t f = (uint32_t)fragments;
     uint32_t rings = full ? f : f + 1;
-    if ((uint64_t)rings * p->count > BUILD_REVOLVE_MAX_MESH_POINTS)
+    if ((uint64_t)rings * p->pts.point_count > BUILD_REVOLVE_MAX_MESH_POINTS)
         return err_set(c->error, SC_ERR_LIMIT, &n->loc,
                        "rotate_extrude: %u rings of %u points are too many (limit is %u "
                        "points)",
-                       rings, p->count, BUILD_REVOLVE_MAX_MESH_POINTS);
-    size_t np = (size_t)rings * p->count;
-    size_t ntri = (size_t)2 * f * p->count;
-    size_t nfaces = ntri + (full ? 0 : 2 * (size_t)p->paths);
+                       rings, p->pts.point_count, BUILD_REVOLVE_MAX_MESH_POINTS);
+    size_t np = (size_t)rings * p->pts.point_count;
+    size_t ntri = (size_t)2 * f * p->pts.point_count;
+    size_t nfaces = ntri + (full ? 0 : 2 * (size_t)p->pts.contour_count);
     vec3 *pts = malloc((np ? np : 1) * sizeof *pts);
-    uint32_t *idx = malloc((3 * ntri + 2 * (size_t)p->count + 1) * sizeof *idx);
+    uint32_t *idx = malloc((3 * ntri + 2 * (size_t)p->pts.point_count + 1) * sizeof *idx);
     uint32_t *fs = malloc((nfaces + 1) * sizeof *fs);
     sc_status st = SC_OK;
     if (!pts || !idx || !fs) {
@@ -388,19 +359,20 @@ static sc_status build_faithful(const build_ctx *c, const model_node *n, const p
         double a = full ? -90 + (double)k * 360.0 / (double)f
                         : (k == 0 ? 90 : 90 - (double)k * angle / (double)f);
         double sa = faithful_sin_deg(a), ca = faithful_cos_deg(a);
-        for (uint32_t i = 0; i < p->count; i++) {
-            double x = p->xy[2 * i], y = p->xy[2 * i + 1];
-            pts[(size_t)k * p->count + i] = v3(x * sa, x * ca, y);
+        for (uint32_t i = 0; i < p->pts.point_count; i++) {
+            double x = p->pts.xy[2 * i], y = p->pts.xy[2 * i + 1];
+            pts[(size_t)k * p->pts.point_count + i] = v3(x * sa, x * ca, y);
         }
     }
     uint32_t ni = 0, nf = 0;
-    for (uint32_t k = 0; k < p->paths; k++) {
-        uint32_t len = p->start[k + 1] - p->start[k];
+    for (uint32_t k = 0; k < p->pts.contour_count; k++) {
+        uint32_t len = p->pts.start[k + 1] - p->pts.start[k];
         if (len < 3)
             continue;
         int rev = path_reversed(p, k, 1);
         for (uint32_t j = 0; j < f; j++) {
-            size_t r0 = (size_t)j * p->count, r1 = (size_t)((j + 1) % rings) * p->count;
+            size_t r0 = (size_t)j * p->pts.point_count,
+                   r1 = (size_t)((j + 1) % rings) * p->pts.point_count;
             for (uint32_t i = 0; i < len; i++) {
                 uint32_t a = oriented(p, k, rev, i),
                          b = oriented(p, k, rev, (i + 1) % len);
@@ -423,8 +395,8 @@ static sc_status build_faithful(const build_ctx *c, const model_node *n, const p
                 idx[ni++] = oriented(p, k, rev, i);
             fs[nf++] = ni;
             for (uint32_t i = 0; i < len; i++)
-                idx[ni++] =
-                    (uint32_t)((size_t)f * p->count) + oriented(p, k, rev, len - 1 - i);
+                idx[ni++] = (uint32_t)((size_t)f * p->pts.point_count) +
+                            oriented(p, k, rev, len - 1 - i);
         }
     }
     fs[nf] = ni;
@@ -443,7 +415,7 @@ static sc_status build_exact(const build_ctx *c, const model_node *n, const prof
 {
     /* which paths a disc replaces, and the size of the result */
     uint32_t edges = 0, discs = 0;
-    uint8_t *replaced = calloc(p->paths ? p->paths : 1, 1);
+    uint8_t *replaced = calloc(p->pts.contour_count ? p->pts.contour_count : 1, 1);
     uint32_t *region_map = malloc((p->regions ? p->regions : 1) * sizeof *region_map);
     sc_status st = SC_OK;
     if (!replaced || !region_map) {
@@ -457,8 +429,8 @@ static sc_status build_exact(const build_ctx *c, const model_node *n, const prof
             discs++;
         }
     }
-    for (uint32_t k = 0; k < p->paths; k++) {
-        uint32_t len = p->start[k + 1] - p->start[k];
+    for (uint32_t k = 0; k < p->pts.contour_count; k++) {
+        uint32_t len = p->pts.start[k + 1] - p->pts.start[k];
         if (!replaced[k] && len >= 3)
             edges += len;
     }
@@ -484,8 +456,8 @@ static sc_status build_exact(const build_ctx *c, const model_node *n, const prof
     uint32_t regions = 0;
     double r_lo = INFINITY, r_hi = -INFINITY, z_lo = INFINITY, z_hi = -INFINITY;
     uint32_t ne = 0, nd = 0;
-    for (uint32_t k = 0; k < p->paths; k++) {
-        uint32_t len = p->start[k + 1] - p->start[k];
+    for (uint32_t k = 0; k < p->pts.contour_count; k++) {
+        uint32_t len = p->pts.start[k + 1] - p->pts.start[k];
         if (replaced[k] || len < 3)
             continue;
         uint32_t *reg = &region_map[p->region[k]];
@@ -495,10 +467,10 @@ static sc_status build_exact(const build_ctx *c, const model_node *n, const prof
         for (uint32_t i = 0; i < len; i++) {
             uint32_t a = oriented(p, k, rev, i), b = oriented(p, k, rev, (i + 1) % len);
             prim_revolve_edge *e = &ev[ne++];
-            e->r0 = sign * p->xy[2 * a];
-            e->z0 = p->xy[2 * a + 1];
-            e->r1 = sign * p->xy[2 * b];
-            e->z1 = p->xy[2 * b + 1];
+            e->r0 = sign * p->pts.xy[2 * a];
+            e->z0 = p->pts.xy[2 * a + 1];
+            e->r1 = sign * p->pts.xy[2 * b];
+            e->z1 = p->pts.xy[2 * b + 1];
             e->region = *reg;
             r_lo = fmin(r_lo, e->r0);
             r_hi = fmax(r_hi, e->r0);
@@ -577,14 +549,14 @@ sc_status build_rotate_extrude(const build_ctx *c, const model_node *n, int emit
             st = add_twod(c, n, &r, &id, &p);
         twod_free(&r);
     } else {
-        for (const model_node *k = n->first_child; k && st == SC_OK; k = k->next)
-            st = gather(c, k, &id, &p, 1);
+        gatherer g = {{c, "rotate_extrude", "nodes", gather}, &p};
+        st = twod_walk_children(&g.walk, n, &id, 0);
     }
     /* OpenSCAD's check, in its order, with its running range. */
     double min_x = 0, max_x = 0;
-    for (uint32_t i = 0; st == SC_OK && i < p.count; i++) {
-        min_x = fmin(min_x, p.xy[2 * i]);
-        max_x = fmax(max_x, p.xy[2 * i]);
+    for (uint32_t i = 0; st == SC_OK && i < p.pts.point_count; i++) {
+        min_x = fmin(min_x, p.pts.xy[2 * i]);
+        max_x = fmax(max_x, p.pts.xy[2 * i]);
         if (max_x - min_x > max_x && max_x - min_x > fabs(min_x))
             st =
                 err_set(c->error, SC_ERR_SEMANTIC, &n->loc,
@@ -594,9 +566,9 @@ sc_status build_rotate_extrude(const build_ctx *c, const model_node *n, int emit
     }
     if (st == SC_OK && emit) {
         double area = 0;
-        for (uint32_t k = 0; k < p.paths; k++)
-            if (p.start[k + 1] - p.start[k] >= 3)
-                area += fabs(path_area(&p, k));
+        for (uint32_t k = 0; k < p.pts.contour_count; k++)
+            if (p.pts.start[k + 1] - p.pts.start[k] >= 3)
+                area += fabs(twod_contour_area(&p.pts, k));
         if (angle == 0) {
             *empty = "rotate_extrude with angle 0 is empty";
         } else if (!(area > 0)) {

@@ -62,10 +62,9 @@
 #include "base/error.h"
 #include "base/grow.h"
 #include "build/build_mesh.h"
+#include "build/build_twod.h"
 #include "model/faithful.h"
 #include "twod/twod.h"
-
-enum { TEXT_MAX_DEPTH = 1000 };
 
 static const double ft_scale = 1e5;
 static const double hb_unscale = 1.0 / 1.024e5;
@@ -487,74 +486,15 @@ sc_status text_shape_build(const build_ctx *c, const model_node *n, text_shape *
 
 /* ---- OpenSCAD's polygons ---- */
 
-void text_polygons_free(text_polygons *p)
+/* Adds (x, y) to the contour being built unless it repeats the previous
+ * point; 0 when memory runs out or the region is full (TWOD_MAX_POINTS). */
+static int poly_point(twod_region *r, double x, double y)
 {
-    free(p->xy);
-    free(p->start);
-    memset(p, 0, sizeof *p);
-}
-
-static int poly_point(text_polygons *p, double x, double y)
-{
-    uint32_t n = p->point_count;
-    uint32_t s = p->start[p->path_count];
-    if (n > s && p->xy[2 * n - 2] == x && p->xy[2 * n - 1] == y)
+    uint32_t n = r->point_count;
+    uint32_t s = r->start[r->contour_count - 1];
+    if (n > s && r->xy[2 * n - 2] == x && r->xy[2 * n - 1] == y)
         return 1; /* a repeat of the previous point */
-    uint32_t cap = p->point_cap;
-    if (!grow_array32((void **)&p->xy, &cap, 2 * (n + 1), sizeof *p->xy))
-        return 0;
-    p->point_cap = cap;
-    p->xy[2 * n] = x;
-    p->xy[2 * n + 1] = y;
-    p->point_count++;
-    return 1;
-}
-
-static int poly_begin(text_polygons *p)
-{
-    if (!grow_array32((void **)&p->start, &p->path_cap, p->path_count + 2,
-                      sizeof *p->start))
-        return 0;
-    p->start[p->path_count] = p->point_count;
-    p->start[p->path_count + 1] = p->point_count;
-    return 1;
-}
-
-/* Ends the path being built: drops a last point equal to the first, and
- * the whole path when fewer than 3 points are left. */
-static void poly_end(text_polygons *p)
-{
-    uint32_t s = p->start[p->path_count];
-    uint32_t n = p->point_count;
-    if (n - s >= 2 && p->xy[2 * s] == p->xy[2 * n - 2] &&
-        p->xy[2 * s + 1] == p->xy[2 * n - 1])
-        n--;
-    if (n - s < 3) {
-        p->point_count = s;
-        return;
-    }
-    p->point_count = n;
-    p->path_count++;
-    p->start[p->path_count] = n;
-}
-
-static double poly_area(const text_polygons *p, uint32_t k)
-{
-    return twod_ring_area(p->xy, p->start[k], p->start[k + 1]);
-}
-
-static void poly_reverse(text_polygons *p, uint32_t k)
-{
-    uint32_t i = p->start[k], j = p->start[k + 1] - 1;
-    while (i < j) {
-        for (int c = 0; c < 2; c++) {
-            double t = p->xy[2 * i + c];
-            p->xy[2 * i + c] = p->xy[2 * j + c];
-            p->xy[2 * j + c] = t;
-        }
-        i++;
-        j--;
-    }
+    return twod_add_point(r, x, y);
 }
 
 /* OpenSCAD's add_vertex and Clipper's snap: size * ((v + offset) +
@@ -566,26 +506,26 @@ static double place(double v, double offset, double advance, double size)
 }
 
 static sc_status flatten(const build_ctx *c, const model_node *n, const text_shape *s,
-                         text_polygons *out)
+                         twod_region *out)
 {
     uint32_t fn = s->curve_points;
     for (uint32_t g = 0; g < s->glyph_count; g++) {
         double ox = s->offset[2 * g], oy = s->offset[2 * g + 1];
         double ax = s->advance[2 * g], ay = s->advance[2 * g + 1];
-        uint32_t first = out->path_count;
+        uint32_t first = out->contour_count;
         for (uint32_t k = s->glyph_start[g]; k < s->glyph_start[g + 1]; k++) {
-            if (!poly_begin(out))
+            if (!twod_begin_contour(out))
                 return err_nomem(c->error, &n->loc);
             const outline_seg *seg0 = &s->segs[s->contour_start[k]];
             if (!poly_point(out, place(seg0->x[0], ox, ax, s->size),
                             place(seg0->y[0], oy, ay, s->size)))
-                return err_nomem(c->error, &n->loc);
+                return build_twod_add_error(c, n, out);
             for (uint32_t i = s->contour_start[k]; i < s->contour_start[k + 1]; i++) {
                 const outline_seg *q = &s->segs[i];
                 if (q->degree == 1) {
                     if (!poly_point(out, place(q->x[1], ox, ax, s->size),
                                     place(q->y[1], oy, ay, s->size)))
-                        return err_nomem(c->error, &n->loc);
+                        return build_twod_add_error(c, n, out);
                     continue;
                 }
                 for (uint32_t idx = 1; idx <= fn; idx++) {
@@ -603,25 +543,25 @@ static sc_status flatten(const build_ctx *c, const model_node *n, const text_sha
                     }
                     if (!poly_point(out, place(v[0], ox, ax, s->size),
                                     place(v[1], oy, ay, s->size)))
-                        return err_nomem(c->error, &n->loc);
+                        return build_twod_add_error(c, n, out);
                 }
             }
-            poly_end(out);
+            twod_end_contour(out);
         }
         double area = 0;
-        for (uint32_t k = first; k < out->path_count; k++)
-            area += poly_area(out, k);
+        for (uint32_t k = first; k < out->contour_count; k++)
+            area += twod_contour_area(out, k);
         if (area < 0)
-            for (uint32_t k = first; k < out->path_count; k++)
-                poly_reverse(out, k);
+            for (uint32_t k = first; k < out->contour_count; k++)
+                twod_reverse_contour(out, k);
     }
     return SC_OK;
 }
 
-static sc_status faithful_polygons(const build_ctx *c, const model_node *n,
-                                   text_polygons *out, sc_error *note)
+sc_status text_faithful_polygons(const build_ctx *c, const model_node *n,
+                                 twod_region *out, sc_error *note)
 {
-    memset(out, 0, sizeof *out);
+    twod_clear(out);
     text_shape s;
     sc_status st = build_shape(c, n, &s, note);
     if (st != SC_OK)
@@ -633,20 +573,11 @@ static sc_status faithful_polygons(const build_ctx *c, const model_node *n,
                        "fragments (limit is %d)",
                        n->u.text->size, FAITHFUL_MAX_FRAGMENTS);
     }
-    if (!poly_begin(out))
-        st = err_nomem(c->error, &n->loc);
-    if (st == SC_OK)
-        st = flatten(c, n, &s, out);
+    st = flatten(c, n, &s, out);
     text_shape_free(&s);
     if (st != SC_OK)
-        text_polygons_free(out);
+        twod_clear(out);
     return st;
-}
-
-sc_status text_faithful_polygons(const build_ctx *c, const model_node *n,
-                                 text_polygons *out, sc_error *note)
-{
-    return faithful_polygons(c, n, out, note);
 }
 
 /* ---- linear_extrude of text ---- */
@@ -661,7 +592,7 @@ static int is_container(model_kind kind)
  * '%' subtrees count) or every one is (all = 1; '%' subtrees do not). */
 static int text_below(const model_node *n, int depth, int all)
 {
-    if (depth > TEXT_MAX_DEPTH)
+    if (depth > TWOD_WALK_MAX_DEPTH)
         return 0;
     unsigned skipped = all ? MODEL_MOD_DISABLE | MODEL_MOD_BACKGROUND : MODEL_MOD_DISABLE;
     if (n->modifiers & skipped)
@@ -695,10 +626,11 @@ int build_text_wanted(const model_node *n)
     return 0;
 }
 
+/* The exact outlines gathered by the one 2D walk (build_twod.h). */
 typedef struct gathered {
-    outline_seg *segs; /* exact mode */
+    twod_walker walk; /* first: the visitor is the walker */
+    outline_seg *segs;
     uint32_t seg_count, seg_cap;
-    text_polygons poly; /* faithful mode */
 } gathered;
 
 static sc_status gather_text(const build_ctx *c, const model_node *n, const affine2 *m,
@@ -754,19 +686,16 @@ static sc_status gather_text(const build_ctx *c, const model_node *n, const affi
     return st;
 }
 
-static sc_status gather(const build_ctx *c, const model_node *n, const affine2 *m,
-                        gathered *g, int depth)
+/* The walk's visitor: the text below n, under the containers. */
+static sc_status gather(twod_walker *walk, const model_node *n, const affine2 *m,
+                        int depth, void *out)
 {
-    if (depth > TEXT_MAX_DEPTH)
-        return err_set(c->error, SC_ERR_LIMIT, &n->loc,
-                       "too many nested nodes in linear_extrude (limit is %d)",
-                       TEXT_MAX_DEPTH);
-    if (n->modifiers & (MODEL_MOD_DISABLE | MODEL_MOD_BACKGROUND))
-        return SC_OK;
+    (void)out;
+    const build_ctx *c = walk->c;
     const char *name = n->name;
     model_kind kind = n->kind;
     if (kind == MODEL_TEXT)
-        return gather_text(c, n, m, g);
+        return gather_text(c, n, m, (gathered *)walk);
     if (kind == MODEL_SQUARE || kind == MODEL_CIRCLE || kind == MODEL_POLYGON)
         return err_set(c->error, SC_ERR_UNSUPPORTED, &n->loc,
                        "'%s' beside text inside linear_extrude is not supported yet",
@@ -776,16 +705,11 @@ static sc_status gather(const build_ctx *c, const model_node *n, const affine2 *
                        "'%s' inside linear_extrude is not supported yet", name);
     affine2 inner = *m;
     if (kind == MODEL_XFORM) {
-        if (n->pending)
-            return build_pending(c, n);
-        build_matrix_xy(n->u.xform, m->m, inner.m);
-    }
-    for (const model_node *k = n->first_child; k; k = k->next) {
-        sc_status st = gather(c, k, &inner, g, depth + 1);
+        sc_status st = twod_walk_fold(walk, n, m, &inner);
         if (st != SC_OK)
             return st;
     }
-    return SC_OK;
+    return twod_walk_children(walk, n, &inner, depth);
 }
 
 sc_status build_text_extrude(const build_ctx *c, const model_node *n, double height,
@@ -793,10 +717,9 @@ sc_status build_text_extrude(const build_ctx *c, const model_node *n, double hei
 {
     gathered g;
     memset(&g, 0, sizeof g);
-    sc_status st = SC_OK;
+    g.walk = (twod_walker){c, "linear_extrude", "nodes", gather};
     affine2 id = affine2_identity();
-    for (const model_node *k = n->first_child; k && st == SC_OK; k = k->next)
-        st = gather(c, k, &id, &g, 1);
+    sc_status st = twod_walk_children(&g.walk, n, &id, 0);
     if (st == SC_OK && emit) {
         double z0 = center ? -height / 2 : 0, z1 = z0 + height;
         if (!(height > 0 && isfinite(height)) || g.seg_count == 0) {
@@ -814,6 +737,5 @@ sc_status build_text_extrude(const build_ctx *c, const model_node *n, double hei
         }
     }
     free(g.segs);
-    text_polygons_free(&g.poly);
     return st;
 }

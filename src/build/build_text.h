@@ -11,6 +11,7 @@
 
 #include "build/build_ctx.h"
 #include "csg/prim_outline.h"
+#include "twod/twod.h"
 
 /* The longest text one node may lay out, in bytes of UTF-8. */
 #define TEXT_MAX_BYTES MODEL_MAX_TEXT_BYTES
@@ -40,23 +41,15 @@ sc_status text_shape_build(const build_ctx *c, const model_node *n, text_shape *
                            sc_error *note);
 void text_shape_free(text_shape *s);
 
-/* OpenSCAD's polygons of a text node, in its 2D frame: the curves
- * flattened as its DrawingCallback does, each glyph's contours oriented
- * so that outlines run counter-clockwise and holes clockwise (the region
- * is where the winding number is positive), points snapped as OpenSCAD's
- * Clipper union snaps them (truncated to multiples of 2^-16). Path k is
- * points start[k] .. start[k + 1] - 1 (xy pairs in xy); a path's last
- * point is not a repeat of its first. */
-typedef struct text_polygons {
-    double *xy;
-    uint32_t point_count, point_cap;
-    uint32_t *start; /* path_count + 1 entries */
-    uint32_t path_count, path_cap;
-} text_polygons;
-
+/* OpenSCAD's polygons of a text node into out (initialised; replaced), in
+ * its 2D frame: the curves flattened as its DrawingCallback does, each
+ * glyph's contours oriented so that outlines run counter-clockwise and
+ * holes clockwise (the region is where the winding number is positive),
+ * points snapped as OpenSCAD's Clipper union snaps them (truncated to
+ * multiples of 2^-16), no repeated points. More than TWOD_MAX_POINTS
+ * points is SC_ERR_LIMIT, as for every 2D shape. */
 sc_status text_faithful_polygons(const build_ctx *c, const model_node *n,
-                                 text_polygons *out, sc_error *note);
-void text_polygons_free(text_polygons *p);
+                                 twod_region *out, sc_error *note);
 
 /* Does linear_extrude n have a text node among its 2D children (under
  * group, union, render, color and multmatrix)? */

@@ -35,8 +35,8 @@
  *                          files are errors: .svg is not supported yet,
  *                          .stl, .off and the like are 3D.
  * 3D nodes are errors (OpenSCAD drops them from a 2D operation with a
- * warning). The recursion over the children
- * has a depth guard (TWOD_MAX_DEPTH).
+ * warning). The recursion over the children is the one 2D walk
+ * (twod_walk, below), with its depth guard (TWOD_WALK_MAX_DEPTH).
  */
 #include "build/build_twod.h"
 
@@ -50,18 +50,65 @@
 #include "formats/dxf.h"
 #include "model/faithful.h"
 
-enum { TWOD_MAX_DEPTH = 1000 };
 /* Offsets and Minkowski sums grow the point count by a product; these
  * bound it before the clipper starts. */
 #define TWOD_MAX_PRODUCT 20000000.0
 
+/* ---- the one 2D walk ---- */
+
+const model_node *twod_walk_next(const model_node *k)
+{
+    while (k && (k->modifiers & (MODEL_MOD_DISABLE | MODEL_MOD_BACKGROUND)))
+        k = k->next;
+    return k;
+}
+
+const model_node *twod_walk_first(const model_node *n)
+{
+    return twod_walk_next(n->first_child);
+}
+
+sc_status twod_walk(twod_walker *w, const model_node *n, const affine2 *m, int depth,
+                    void *out)
+{
+    if (depth > TWOD_WALK_MAX_DEPTH)
+        return err_set(w->c->error, SC_ERR_LIMIT, &n->loc,
+                       "too many nested %s in %s (limit is %d)", w->nested, w->outer,
+                       TWOD_WALK_MAX_DEPTH);
+    return w->visit(w, n, m, depth, out);
+}
+
+sc_status twod_walk_children(twod_walker *w, const model_node *n, const affine2 *m,
+                             int depth)
+{
+    for (const model_node *k = twod_walk_first(n); k; k = twod_walk_next(k->next)) {
+        sc_status st = twod_walk(w, k, m, depth + 1, NULL);
+        if (st != SC_OK)
+            return st;
+    }
+    return SC_OK;
+}
+
+sc_status twod_walk_fold(const twod_walker *w, const model_node *n, const affine2 *m,
+                         affine2 *inner)
+{
+    if (n->pending)
+        return build_pending(w->c, n);
+    build_matrix_xy(n->u.xform, m->m, inner->m);
+    return SC_OK;
+}
+
+/* ---- OpenSCAD's evaluation ---- */
+
 typedef struct eval {
+    twod_walker walk; /* first: the visitor is the walker */
     const build_ctx *c;
     const char *outer; /* the node that asked for 2D, for messages */
 } eval;
 
-static sc_status eval_node(const eval *e, const model_node *n, twod_region *out,
-                           int depth);
+static const affine2 unmoved = {{{1, 0, 0}, {0, 1, 0}}};
+
+static eval evaluator(const build_ctx *c, const char *outer);
 
 static sc_status clip_status(const eval *e, const model_node *n, int code)
 {
@@ -141,20 +188,9 @@ static sc_status read_circle(const eval *e, const model_node *n, twod_region *ou
  * unites them. A font fallback is the caller's warning (c->note). */
 static sc_status read_text(const eval *e, const model_node *n, twod_region *out)
 {
-    text_polygons tp;
-    memset(&tp, 0, sizeof tp);
-    sc_status st = text_faithful_polygons(e->c, n, &tp, e->c->note);
     twod_region glyphs;
     twod_init(&glyphs);
-    for (uint32_t k = 0; st == SC_OK && k < tp.path_count; k++) {
-        if (!twod_begin_contour(&glyphs))
-            st = err_nomem(e->c->error, &n->loc);
-        for (uint32_t i = tp.start[k]; st == SC_OK && i < tp.start[k + 1]; i++) {
-            if (!twod_add_point(&glyphs, tp.xy[2 * i], tp.xy[2 * i + 1]))
-                st = err_nomem(e->c->error, &n->loc);
-        }
-    }
-    text_polygons_free(&tp);
+    sc_status st = text_faithful_polygons(e->c, n, &glyphs, e->c->note);
     if (st == SC_OK) {
         glyphs.sanitized = 1; /* already oriented: the union keeps holes */
         twod_region *one = &glyphs;
@@ -164,47 +200,60 @@ static sc_status read_text(const eval *e, const model_node *n, twod_region *out)
     return st;
 }
 
+sc_status build_twod_polygon(const build_ctx *c, const model_node *n, const affine2 *m,
+                             int empty_is_all, int check_range, twod_region *out)
+{
+    if (n->pending)
+        return build_pending(c, n);
+    const model_polygon *p = n->u.polygon;
+    if (!p->has_points)
+        return SC_OK;
+    int paths = p->has_paths && (p->path_count > 0 || p->bad_index || !empty_is_all);
+    uint32_t count = paths ? p->path_count : 1;
+    for (uint32_t k = 0; k < count; k++) {
+        uint32_t first = paths ? p->path_start[k] : 0;
+        uint32_t len = paths ? p->path_start[k + 1] - first : p->point_count;
+        if (!twod_begin_contour(out))
+            return err_nomem(c->error, &n->loc);
+        for (uint32_t i = 0; i < len; i++) {
+            uint32_t index = paths ? p->index[first + i] : i;
+            double x = p->xy[2 * index], y = p->xy[2 * index + 1];
+            if (check_range &&
+                !(fabs(x) <= TWOD_MAX_COORD && fabs(y) <= TWOD_MAX_COORD)) {
+                eval e = evaluator(c, n->name);
+                return clip_status(&e, n, TWOD_CLIP_RANGE);
+            }
+            if (!twod_add_moved(out, m, x, y))
+                return build_twod_add_error(c, n, out);
+        }
+    }
+    if (p->bad_index) {
+        *c->error = *p->bad_index;
+        return p->bad_index->status;
+    }
+    return SC_OK;
+}
+
 static sc_status read_polygon(const eval *e, const model_node *n, twod_region *out)
 {
     if (n->pending)
         return pending(e, n);
     const model_polygon *p = n->u.polygon;
-    if (!p->has_points)
+    /* OpenSCAD: an empty paths list means all points; fewer than 3 are
+     * nothing */
+    if (!p->has_points ||
+        (!(p->has_paths && (p->path_count > 0 || p->bad_index)) && p->point_count < 3))
         return SC_OK;
-    uint32_t np = p->point_count;
-    /* OpenSCAD: an empty paths list means all points */
-    int paths = p->has_paths && (p->path_count > 0 || p->bad_index);
-    if (!paths && np < 3)
-        return SC_OK;
-    uint32_t count = paths ? p->path_count : 1;
-    for (uint32_t k = 0; k < count; k++) {
-        uint32_t first = paths ? p->path_start[k] : 0;
-        uint32_t len = paths ? p->path_start[k + 1] - first : np;
-        if (!twod_begin_contour(out))
-            return err_nomem(e->c->error, &n->loc);
-        for (uint32_t i = 0; i < len; i++) {
-            uint32_t index = paths ? p->index[first + i] : i;
-            double x = p->xy[2 * index], y = p->xy[2 * index + 1];
-            if (!(fabs(x) <= TWOD_MAX_COORD && fabs(y) <= TWOD_MAX_COORD))
-                return clip_status(e, n, TWOD_CLIP_RANGE);
-            if (!twod_add_point(out, x, y))
-                return clip_status(e, n,
-                                   out->point_count >= TWOD_MAX_POINTS
-                                       ? TWOD_CLIP_TOO_MANY
-                                       : TWOD_CLIP_NOMEM);
-        }
-    }
-    if (p->bad_index) {
-        *e->c->error = *p->bad_index;
-        return p->bad_index->status;
-    }
+    sc_status st = build_twod_polygon(e->c, n, &unmoved, 1, 1, out);
+    if (st != SC_OK)
+        return st;
     out->sanitized = 0;
     return clip_status(e, n, twod_clip_sanitize(out));
 }
 
 /* The regions of n's children ('%' and '*' left out). *regions holds
  * *count initialised regions, to be freed by free_children. */
-static sc_status eval_children(const eval *e, const model_node *n, twod_region **regions,
+static sc_status eval_children(eval *e, const model_node *n, twod_region **regions,
                                uint32_t *count, int depth)
 {
     *regions = NULL;
@@ -218,12 +267,10 @@ static sc_status eval_children(const eval *e, const model_node *n, twod_region *
     if (!r)
         return err_nomem(e->c->error, &n->loc);
     *regions = r;
-    for (const model_node *k = n->first_child; k; k = k->next) {
-        if (k->modifiers & (MODEL_MOD_DISABLE | MODEL_MOD_BACKGROUND))
-            continue;
+    for (const model_node *k = twod_walk_first(n); k; k = twod_walk_next(k->next)) {
         twod_init(&r[*count]);
         (*count)++;
-        sc_status st = eval_node(e, k, &r[*count - 1], depth + 1);
+        sc_status st = twod_walk(&e->walk, k, &unmoved, depth + 1, &r[*count - 1]);
         if (st != SC_OK)
             return st;
     }
@@ -441,13 +488,14 @@ static int is_3d(model_kind kind)
     }
 }
 
-static sc_status eval_node(const eval *e, const model_node *n, twod_region *out,
-                           int depth)
+/* The walk's visitor: n's region into out (a twod_region); m is the
+ * identity, as OpenSCAD moves a multmatrix's region after evaluating it. */
+static sc_status eval_node(twod_walker *w, const model_node *n, const affine2 *unused,
+                           int depth, void *result)
 {
-    if (depth > TWOD_MAX_DEPTH)
-        return err_set(e->c->error, SC_ERR_LIMIT, &n->loc,
-                       "too many nested 2D nodes in %s (limit is %d)", e->outer,
-                       TWOD_MAX_DEPTH);
+    (void)unused;
+    eval *e = (eval *)w;
+    twod_region *out = result;
     const char *name = n->name;
     model_kind kind = n->kind;
     twod_clear(out);
@@ -499,10 +547,24 @@ static sc_status eval_node(const eval *e, const model_node *n, twod_region *out,
     return st;
 }
 
+static eval evaluator(const build_ctx *c, const char *outer)
+{
+    eval e = {{c, outer, "2D nodes", eval_node}, c, outer};
+    return e;
+}
+
+sc_status build_twod_add_error(const build_ctx *c, const model_node *n,
+                               const twod_region *r)
+{
+    eval e = evaluator(c, n->name);
+    return clip_status(
+        &e, n, r->point_count >= TWOD_MAX_POINTS ? TWOD_CLIP_TOO_MANY : TWOD_CLIP_NOMEM);
+}
+
 sc_status build_twod_children(const build_ctx *c, const model_node *parent,
                               twod_region *out)
 {
-    eval e = {c, parent->name};
+    eval e = evaluator(c, parent->name);
     twod_region *regions;
     uint32_t count;
     sc_status st = eval_children(&e, parent, &regions, &count, 1);
@@ -515,6 +577,6 @@ sc_status build_twod_children(const build_ctx *c, const model_node *parent,
 sc_status build_twod_node(const build_ctx *c, const model_node *n, const char *outer,
                           twod_region *out)
 {
-    eval e = {c, outer};
-    return eval_node(&e, n, out, 1);
+    eval e = evaluator(c, outer);
+    return twod_walk(&e.walk, n, &unmoved, 1, out);
 }

@@ -22,4 +22,52 @@ sc_status build_twod_children(const build_ctx *c, const model_node *parent,
 sc_status build_twod_node(const build_ctx *c, const model_node *n, const char *outer,
                           twod_region *out);
 
+/* The one walk over a 2D model subtree, for every builder of 2D children:
+ * the exact region of linear_extrude (build_region.c), the revolve
+ * profile (build_revolve.c), the text outlines (build_text.c) and
+ * OpenSCAD's evaluation here. The walk owns what they share: which
+ * children count ('%' and '*' do not), the depth limit and its message,
+ * and the xy part of a multmatrix; the visitor owns what a node means. */
+enum { TWOD_WALK_MAX_DEPTH = 1000 };
+
+typedef struct twod_walker twod_walker;
+struct twod_walker {
+    const build_ctx *c;
+    const char *outer;  /* the node that asked, for messages */
+    const char *nested; /* what the depth limit counts, for its message */
+    /* Visits node n at depth under the transform m into the caller's
+     * result out (the visitor's type, or NULL). */
+    sc_status (*visit)(twod_walker *w, const model_node *n, const affine2 *m, int depth,
+                       void *out);
+};
+
+/* The children of n that count, in order: not '%' or '*'. */
+const model_node *twod_walk_first(const model_node *n);
+const model_node *twod_walk_next(const model_node *k);
+/* Visits n at depth: past TWOD_WALK_MAX_DEPTH an error at n, else
+ * w->visit. */
+sc_status twod_walk(twod_walker *w, const model_node *n, const affine2 *m, int depth,
+                    void *out);
+/* Visits the children of n that count at depth + 1, without results. */
+sc_status twod_walk_children(twod_walker *w, const model_node *n, const affine2 *m,
+                             int depth);
+/* The transform under multmatrix n: m times the xy part of its matrix (its
+ * argument error, if any, first). */
+sc_status twod_walk_fold(const twod_walker *w, const model_node *n, const affine2 *m,
+                         affine2 *inner);
+
+/* The one reader of polygon(points, paths) n: its contours moved by m,
+ * added to out (the caller's contours kept): one per path, or one through
+ * all the points without paths, and, with empty_is_all (OpenSCAD's rule),
+ * with an empty vector of them. With check_range a point past
+ * TWOD_MAX_COORD is an error. Its argument error (a bad path index) comes
+ * after the points before it are read. */
+sc_status build_twod_polygon(const build_ctx *c, const model_node *n, const affine2 *m,
+                             int empty_is_all, int check_range, twod_region *out);
+
+/* The error of a failed twod_add_point into r for node n: the limit of
+ * TWOD_MAX_POINTS points of every 2D shape when r is full, else memory. */
+sc_status build_twod_add_error(const build_ctx *c, const model_node *n,
+                               const twod_region *r);
+
 #endif

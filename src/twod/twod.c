@@ -71,6 +71,42 @@ int twod_add_point(twod_region *r, double x, double y)
     return 1;
 }
 
+int twod_add_moved(twod_region *r, const affine2 *m, double x, double y)
+{
+    double mx, my;
+    affine2_apply(m, x, y, &mx, &my);
+    return twod_add_point(r, mx, my);
+}
+
+void twod_end_contour(twod_region *r)
+{
+    uint32_t k = r->contour_count - 1, s = r->start[k], n = r->point_count;
+    if (n - s >= 2 && r->xy[2 * s] == r->xy[2 * n - 2] &&
+        r->xy[2 * s + 1] == r->xy[2 * n - 1])
+        n--;
+    if (n - s < 3) {
+        r->point_count = s;
+        r->contour_count = k;
+        return;
+    }
+    r->point_count = n;
+    r->start[k + 1] = n;
+}
+
+void twod_reverse_contour(twod_region *r, uint32_t k)
+{
+    if (r->start[k + 1] - r->start[k] < 2)
+        return;
+    uint32_t i = r->start[k], j = r->start[k + 1] - 1;
+    for (; i < j; i++, j--) {
+        for (int c = 0; c < 2; c++) {
+            double t = r->xy[2 * i + c];
+            r->xy[2 * i + c] = r->xy[2 * j + c];
+            r->xy[2 * j + c] = t;
+        }
+    }
+}
+
 double twod_ring_area(const double *xy, uint32_t first, uint32_t end)
 {
     double a = 0;

@@ -14,6 +14,7 @@
 
 #include <stdint.h>
 
+#include "math/vec.h"
 #include "spancast/spancast.h"
 
 /* OpenSCAD's clipper grid: coordinates are scaled by 2^16 and truncated to
@@ -43,6 +44,13 @@ int twod_begin_contour(twod_region *r);
 /* Adds a point to the last contour; 0 when memory runs out or the region
  * would pass TWOD_MAX_POINTS. */
 int twod_add_point(twod_region *r, double x, double y);
+/* Adds the point (x, y) moved by m to the last contour (twod_add_point). */
+int twod_add_moved(twod_region *r, const affine2 *m, double x, double y);
+/* Ends the last contour: drops a last point equal to its first, and the
+ * whole contour when fewer than 3 points are left. */
+void twod_end_contour(twod_region *r);
+/* Reverses the order of contour k's points. */
+void twod_reverse_contour(twod_region *r, uint32_t k);
 /* Signed area (positive counter-clockwise) of the closed ring of points
  * first .. end - 1 of xy (2 per point), by the shoelace formula. */
 double twod_ring_area(const double *xy, uint32_t first, uint32_t end);
