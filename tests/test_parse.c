@@ -288,6 +288,13 @@ static void test_arg_lookup(void **state)
     parse_node_resolution(t->first, &fn, &fa, &fs);
     assert_true(fn == 64 && fa == 12 && fs == 0.5);
     parse_tree_free(t);
+
+    /* The last of each wins; names that only start like them do not count. */
+    t = parse_ok(
+        "sphere($fn = 3, $fnx = 7, $f = 1, $fz = 2, $fs = 4, $fn = 5, $fs = [1]);");
+    parse_node_resolution(t->first, &fn, &fa, &fs);
+    assert_true(fn == 5 && fa == 12 && fs == 2);
+    parse_tree_free(t);
 }
 
 static void test_next_node(void **state)
