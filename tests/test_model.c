@@ -442,6 +442,7 @@ static void test_stream(void **state)
         "*group() { !cube(1); } sphere(1);",
         "cube(1); sphere(r = \"a\"); cube(2); !cube(3);",
         "union() { group() { cube(\"x\"); } sphere(1); }",
+        "cube(\"x\") { sphere(1); cube(2); }",
         "resize([2, 2, 2]) { cube(1); resize([3, 3, 3]) { sphere(1); } }\n"
         "hull() { resize([1, 1, 1]) { cube(1); } cube(2); }\n"
         "resize([4, 4, 4]) { hull() { resize([1, 1, 1]) { cube(1); } } }",

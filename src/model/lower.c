@@ -806,10 +806,12 @@ static sc_status stream_open(void *user, parse_node *n, int *keep, sc_error *err
     }
     model_node *node;
     sc_status st = visit(&s->l, n, ctx, s->root, &s->link, &node, error);
-    if (st != SC_OK || s->l.stopped)
+    if (st != SC_OK)
         return st;
+    f->node = node; /* its child count comes at its close */
+    if (s->l.stopped)
+        return SC_OK;
     context inner;
-    f->node = node;
     f->descend = (uint8_t)enters(ctx, node, &inner);
     f->ctx = (uint8_t)inner;
     if (f->descend)
