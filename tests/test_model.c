@@ -396,6 +396,83 @@ static void test_errors(void **state)
                 "m.csg:1:13: error: polyhedron point 0 is not finite");
 }
 
+/* Two models are the same node for node: kind, name, position, flags,
+ * children, errors. */
+static void same_nodes(const model_node *a, const model_node *b)
+{
+    for (; a || b; a = a->next, b = b->next) {
+        assert_non_null(a);
+        assert_non_null(b);
+        assert_int_equal(a->kind, b->kind);
+        assert_string_equal(a->name, b->name);
+        assert_int_equal(a->loc.line, b->loc.line);
+        assert_int_equal(a->loc.column, b->loc.column);
+        assert_int_equal(a->modifiers, b->modifiers);
+        assert_int_equal(a->is_root, b->is_root);
+        assert_int_equal(a->child_count, b->child_count);
+        if (a->kind == MODEL_ERROR) {
+            char ma[1024], mb[1024];
+            assert_string_equal(sc_error_format(a->u.error, ma, sizeof ma),
+                                sc_error_format(b->u.error, mb, sizeof mb));
+        }
+        if (a->kind == MODEL_SPHERE)
+            assert_true(a->u.sphere.r == b->u.sphere.r);
+        if (a->kind == MODEL_RESIZE) {
+            const model_node *ma = a->u.resize->measured, *mb = b->u.resize->measured;
+            assert_int_equal(ma == NULL, mb == NULL);
+            if (ma && ma != a) /* the detached subtree the builder measures */
+                same_nodes(ma, mb);
+        }
+        same_nodes(a->first_child, b->first_child);
+    }
+}
+
+/* The streamed lowering (model_stream) makes the model model_lower makes
+ * from the whole tree: the root found across statements, '*' subtrees and
+ * leaves' children, the stop at the first argument error, the subtrees
+ * kept for resize and for the shading nodes that check their children. */
+static void test_stream(void **state)
+{
+    (void)state;
+    static const char *const texts[] = {
+        "union() { multmatrix([[1, 0, 0, 1], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]])"
+        " { sphere(1); } cube(2); }",
+        "cube(1); group() { sphere(2); !cube(2); } !sphere(3);",
+        "sphere(1) { !cube(1); } cube(2); group() { !cylinder(h = 1, r = 1); }",
+        "*group() { !cube(1); } sphere(1);",
+        "cube(1); sphere(r = \"a\"); cube(2); !cube(3);",
+        "union() { group() { cube(\"x\"); } sphere(1); }",
+        "cube(\"x\") { sphere(1); cube(2); }",
+        "resize([2, 2, 2]) { cube(1); resize([3, 3, 3]) { sphere(1); } }\n"
+        "hull() { resize([1, 1, 1]) { cube(1); } cube(2); }\n"
+        "resize([4, 4, 4]) { hull() { resize([1, 1, 1]) { cube(1); } } }",
+        "group() { resize([2, 2, 2]) { !cube(1); } }",
+        "light(position = [1, 2, 3]) { cube(1); } cube(2);",
+        "light(position = [1, 2, 3]) { !cube(1); } sphere(1);",
+        "camera(eye = [9, 0, 0], center = [0, 0, 0]) { }",
+        "linear_extrude(height = 1) { circle(1); square(2); } sphere(3) { cube(); }",
+        "minkowski() { cube(1); sphere(1); } frobnicate(); cube(1);",
+        "material(reflect = 0.25) { torus(3, 1); } color(\"red\") { %cube(1); }",
+    };
+    for (size_t i = 0; i < sizeof texts / sizeof texts[0]; i++) {
+        lowered whole = lower(texts[i]);
+        model_stream *s;
+        sc_error e;
+        assert_int_equal(model_stream_new("m.csg", &s, &e), SC_OK);
+        parse_sink sink = model_stream_sink(s);
+        parse_tree *names;
+        if (parse_stream("m.csg", texts[i], strlen(texts[i]), &sink, &names, &e) != SC_OK)
+            fail_msg("parse error: %s", e.message);
+        model *m;
+        assert_int_equal(model_stream_finish(s, &m), SC_OK);
+        assert_int_equal(m->has_root, whole.m->has_root);
+        same_nodes(m->first, whole.m->first);
+        model_free(m);
+        parse_tree_free(names);
+        release(&whole);
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -408,6 +485,7 @@ int main(void)
         cmocka_unit_test(test_shading_and_curved),
         cmocka_unit_test(test_kind_of),
         cmocka_unit_test(test_errors),
+        cmocka_unit_test(test_stream),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -9,6 +9,7 @@
 #include <cmocka.h>
 
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -25,6 +26,58 @@ static parse_tree *parse_ok(const char *text)
     return t;
 }
 
+/* A sink that records what a streamed parse hands it. */
+typedef struct events {
+    int opens, closes, kept_opens;
+    uint32_t depth;         /* deepest node seen */
+    uint32_t keep_depth;    /* keep nodes opened at this depth (0: none) */
+    uint32_t top_children;  /* child_count of the last top-level node closed */
+    const parse_node *kept; /* the kept node while open */
+    uint32_t kept_linked;   /* its linked children, counted at its close */
+} events;
+
+static sc_status on_open(void *user, parse_node *node, int *keep, sc_error *error)
+{
+    (void)error;
+    events *ev = user;
+    ev->opens++;
+    assert_int_equal(node->child_count, 0);
+    assert_true(node->depth == 1 ? !node->parent : node->parent != NULL);
+    if (node->depth > ev->depth)
+        ev->depth = node->depth;
+    if (ev->kept)
+        ev->kept_opens++;
+    if (node->depth == ev->keep_depth && !ev->kept) {
+        *keep = 1;
+        ev->kept = node;
+    }
+    return SC_OK;
+}
+
+static sc_status on_close(void *user, parse_node *node, sc_error *error)
+{
+    (void)error;
+    events *ev = user;
+    ev->closes++;
+    if (node->depth == 1)
+        ev->top_children = node->child_count;
+    if (node == ev->kept) {
+        for (const parse_node *c = node->first_child; c; c = c->next)
+            ev->kept_linked++;
+        ev->kept = NULL;
+    }
+    return SC_OK;
+}
+
+static parse_tree *stream(const char *text, events *ev, sc_status *st, sc_error *e)
+{
+    parse_sink sink = {ev, on_open, on_close};
+    parse_tree *t = (parse_tree *)1;
+    *st = parse_stream("m.csg", text, strlen(text), &sink, &t, e);
+    return t;
+}
+
+/* text fails with the message expected, read whole and streamed. */
 static void check_error_status(const char *text, sc_status status, const char *expected)
 {
     parse_tree *t = (parse_tree *)1;
@@ -32,6 +85,11 @@ static void check_error_status(const char *text, sc_status status, const char *e
     assert_int_equal(parse_text("m.csg", text, strlen(text), &t, &e), status);
     assert_null(t);
     char buf[1024];
+    assert_string_equal(sc_error_format(&e, buf, sizeof buf), expected);
+    events ev = {0};
+    sc_status st;
+    assert_null(stream(text, &ev, &st, &e));
+    assert_int_equal(st, status);
     assert_string_equal(sc_error_format(&e, buf, sizeof buf), expected);
 }
 
@@ -230,6 +288,13 @@ static void test_arg_lookup(void **state)
     parse_node_resolution(t->first, &fn, &fa, &fs);
     assert_true(fn == 64 && fa == 12 && fs == 0.5);
     parse_tree_free(t);
+
+    /* The last of each wins; names that only start like them do not count. */
+    t = parse_ok(
+        "sphere($fn = 3, $fnx = 7, $f = 1, $fz = 2, $fs = 4, $fn = 5, $fs = [1]);");
+    parse_node_resolution(t->first, &fn, &fa, &fs);
+    assert_true(fn == 5 && fa == 12 && fs == 2);
+    parse_tree_free(t);
 }
 
 static void test_next_node(void **state)
@@ -365,6 +430,62 @@ static void test_errors(void **state)
     check_error("text(t = \"abc);", "m.csg:1:10: error: unterminated string");
 }
 
+/* A streamed parse hands over every node once opened and once closed,
+ * with its final child count; a kept subtree is linked as parse_text
+ * links it; and a closed node's memory is reused, so that a union of
+ * 10^5 spheres takes one block of the arena where the whole tree takes
+ * hundreds. */
+static void test_stream(void **state)
+{
+    (void)state;
+    events ev = {0};
+    sc_status st;
+    sc_error e;
+    parse_tree *t = stream("union() { group() { cube(); sphere(); } cube(); }\n"
+                           "%sphere(r = 1, \"s\");\n",
+                           &ev, &st, &e);
+    assert_int_equal(st, SC_OK);
+    assert_int_equal(ev.opens, 6);
+    assert_int_equal(ev.closes, 6);
+    assert_int_equal(ev.depth, 3);
+    assert_int_equal(ev.top_children, 0); /* the sphere */
+    assert_null(t->first);
+    assert_int_equal(t->count, 2);
+    assert_int_equal(t->node_count, 6);
+    parse_tree_free(t);
+
+    memset(&ev, 0, sizeof ev);
+    ev.keep_depth = 2;
+    t = stream("union() { group() { cube(); sphere() { cube(); } } cube(); }", &ev, &st,
+               &e);
+    assert_int_equal(st, SC_OK);
+    assert_int_equal(ev.kept_opens, 3); /* below the kept group */
+    assert_int_equal(ev.kept_linked, 2);
+    assert_int_equal(ev.top_children, 2);
+    parse_tree_free(t);
+
+    size_t n = 100000, len = 0;
+    const char *leaf = "multmatrix([[1, 0, 0, 2], [0, 1, 0, 3], [0, 0, 1, 4], [0, 0, 0, "
+                       "1]]) { sphere($fn = 0, $fa = 12, $fs = 2, r = 0.6); }\n";
+    size_t leaf_len = strlen(leaf);
+    char *text = malloc(n * leaf_len + 32);
+    assert_non_null(text);
+    len += (size_t)sprintf(text, "union() {\n");
+    for (size_t i = 0; i < n; i++, len += leaf_len)
+        memcpy(text + len, leaf, leaf_len);
+    memcpy(text + len, "}\n", 3);
+    memset(&ev, 0, sizeof ev);
+    t = stream(text, &ev, &st, &e);
+    assert_int_equal(st, SC_OK);
+    assert_int_equal(ev.top_children, n);
+    assert_int_equal(t->mem.block_allocs, 1);
+    parse_tree_free(t);
+    assert_int_equal(parse_text("m.csg", text, strlen(text), &t, &e), SC_OK);
+    assert_true(t->mem.block_allocs > 100);
+    parse_tree_free(t);
+    free(text);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -379,6 +500,7 @@ int main(void)
         cmocka_unit_test(test_deep_nodes),
         cmocka_unit_test(test_deep_vectors),
         cmocka_unit_test(test_errors),
+        cmocka_unit_test(test_stream),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

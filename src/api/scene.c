@@ -41,13 +41,13 @@ static char *copy_string(const char *s)
 }
 
 /* The three stages, each stage's input freed as soon as the next one no
- * longer needs it, so that the peak is the largest two neighbours rather
- * than all of them (a million positioned spheres: 141 MB of text, 1.1 GB of
- * syntax, 350 MB of model, 400 MB of tree): the text after parsing when
- * owned_text is set (the caller's buffer, which this frees), the syntax
- * tree's nodes after lowering, which no model node reads (the names and
- * strings the model points to stay until the build is done), the model and
- * the rest of the syntax after the build. */
+ * longer needs it: parsing and lowering run as one stream (parse_stream
+ * with model_stream's sink), so a node's syntax is freed as soon as it is
+ * lowered and the whole syntax tree never exists (a million positioned
+ * spheres: 141 MB of text, 350 MB of model, 400 MB of tree, where the
+ * syntax alone took 1.1 GB); then the text when owned_text is set (the
+ * caller's buffer, which this frees); the model and the names and strings
+ * it points to after the build. */
 static sc_status load(const char *name, const char *text, size_t length, char *owned_text,
                       const sc_load_options *options, sc_scene **scene, sc_error *error)
 {
@@ -74,13 +74,18 @@ static sc_status load(const char *name, const char *text, size_t length, char *o
         return err_nomem(error, NULL);
     }
     parse_tree *syntax = NULL;
-    st = parse_text(s->path, text ? text : "", length, &syntax, error);
-    free(owned_text);
     model *typed = NULL;
-    if (st == SC_OK)
-        st = model_lower(syntax, &typed, error);
-    if (st == SC_OK)
-        parse_tree_release_nodes(syntax);
+    model_stream *lowering;
+    st = model_stream_new(s->path, &lowering, error);
+    if (st == SC_OK) {
+        parse_sink sink = model_stream_sink(lowering);
+        st = parse_stream(s->path, text ? text : "", length, &sink, &syntax, error);
+        if (st == SC_OK)
+            st = model_stream_finish(lowering, &typed);
+        else
+            model_stream_free(lowering);
+    }
+    free(owned_text);
     if (st == SC_OK)
         st = build_scene(typed, own.faithful, &s->tree, &s->look, &s->warnings,
                          &s->warning_count, error);

@@ -12,6 +12,11 @@
  * the first '!' node in file order outside '*' subtrees and leaves'
  * children (a '!' under a light counts, though nothing under a light is
  * built). A scan of the modifiers alone skips this when no node has a '!'.
+ *
+ * A streamed lowering (model_stream, at the end) makes the same walk one
+ * node at a time as the parser reads them: the same visit of each node,
+ * the same root search made alongside, in file order, and the subtrees
+ * whose lowering reads the children kept whole and walked when they close.
  */
 #include "model/model.h"
 
@@ -42,6 +47,7 @@ typedef struct lowerer {
      * node's address, cap a power of two */
     resize_entry *resizes;
     size_t resize_count, resize_cap;
+    int stopped; /* a main-model node has an argument error: lowering ends */
 } lowerer;
 
 static size_t resize_slot(const resize_entry *table, size_t cap, const parse_node *n)
@@ -567,9 +573,61 @@ static sc_status lower_nested(lowerer *l, const parse_node *n, context ctx,
     return st;
 }
 
+/* Lowers n (not disabled) in ctx as the next node of its list: a new
+ * model node stored at **link, *link then its next. In the main model an
+ * argument error makes it a MODEL_ERROR node and sets l->stopped, which
+ * ends the lowering; a failure (memory) is returned. */
+static sc_status visit(lowerer *l, const parse_node *n, context ctx,
+                       const parse_node *root, model_node ***link, model_node **out,
+                       sc_error *error)
+{
+    model_node *node = arena_calloc(&l->m->mem, 1, sizeof *node);
+    if (!node)
+        return err_nomem(error, NULL);
+    node->name = n->name;
+    node->loc = n->loc;
+    node->modifiers = n->modifiers;
+    node->is_root = ctx == IN_MAIN && n == root;
+    node->child_count = n->child_count;
+    **link = node;
+    *link = &node->next;
+    *out = node;
+    if (ctx != IN_MAIN)
+        return lower_nested(l, n, ctx, node, error);
+    sc_error node_error; /* filled only on an error */
+    l->r.error = &node_error;
+    sc_status st = lower_node(l, n, node);
+    if (st == SC_ERR_NOMEM) {
+        *error = node_error;
+        return st;
+    }
+    if (st != SC_OK) {
+        sc_error *copy = arena_alloc(&l->m->mem, sizeof *copy);
+        if (!copy)
+            return err_nomem(error, NULL);
+        *copy = node_error;
+        node->kind = MODEL_ERROR;
+        node->u.error = copy;
+        l->stopped = 1;
+    }
+    return SC_OK;
+}
+
+/* Whether the walk lowers the children of node, lowered in ctx, in the
+ * context *inner. */
+static int enters(context ctx, const model_node *node, context *inner)
+{
+    *inner = children_context(ctx, node->kind);
+    return !(*inner == IN_MAIN &&
+             (model_is_leaf(node->kind) || node->kind >= MODEL_LIGHT));
+}
+
+/* Lowers the nodes from first up to end (their subtrees included) in ctx,
+ * linking them from *link; *tail, when given, is then where the next
+ * node would be linked. */
 static sc_status walk(lowerer *l, const parse_node *first, const parse_node *end,
                       context ctx, const parse_node *root, model_node **link,
-                      sc_error *error)
+                      model_node ***tail, sc_error *error)
 {
     open_node *stack = NULL;
     size_t depth = 0, cap = 0;
@@ -589,45 +647,11 @@ static sc_status walk(lowerer *l, const parse_node *first, const parse_node *end
             n = n->next;
             continue;
         }
-        model_node *node = arena_calloc(&l->m->mem, 1, sizeof *node);
-        if (!node) {
-            st = err_nomem(error, NULL);
+        model_node *node;
+        if ((st = visit(l, n, ctx, root, &link, &node, error)) != SC_OK || l->stopped)
             break;
-        }
-        node->name = n->name;
-        node->loc = n->loc;
-        node->modifiers = n->modifiers;
-        node->is_root = ctx == IN_MAIN && n == root;
-        node->child_count = n->child_count;
-        *link = node;
-        link = &node->next;
-        if (ctx != IN_MAIN) {
-            if ((st = lower_nested(l, n, ctx, node, error)) != SC_OK)
-                break;
-        } else {
-            sc_error node_error; /* filled only on an error */
-            l->r.error = &node_error;
-            st = lower_node(l, n, node);
-            if (st == SC_ERR_NOMEM) {
-                *error = node_error;
-                break;
-            }
-            if (st != SC_OK) {
-                sc_error *copy = arena_alloc(&l->m->mem, sizeof *copy);
-                if (!copy) {
-                    st = err_nomem(error, NULL);
-                    break;
-                }
-                *copy = node_error;
-                node->kind = MODEL_ERROR;
-                node->u.error = copy;
-                st = SC_OK;
-                break;
-            }
-        }
-        context inner = children_context(ctx, node->kind);
-        if (!n->first_child || (inner == IN_MAIN && (model_is_leaf(node->kind) ||
-                                                     node->kind >= MODEL_LIGHT))) {
+        context inner;
+        if (!n->first_child || !enters(ctx, node, &inner)) {
             n = n->next;
             continue;
         }
@@ -641,6 +665,8 @@ static sc_status walk(lowerer *l, const parse_node *first, const parse_node *end
         ctx = inner;
     }
     free(stack);
+    if (tail)
+        *tail = link;
     return st;
 }
 
@@ -652,7 +678,7 @@ static sc_status lower_resize(lowerer *l, const parse_node *n, model_node *out)
     model_node *measured = remembered_resize(l, n);
     model_node *detached = NULL;
     if (!measured) {
-        sc_status st = walk(l, n, n->next, IN_POINTS, NULL, &detached, l->r.error);
+        sc_status st = walk(l, n, n->next, IN_POINTS, NULL, &detached, NULL, l->r.error);
         if (st != SC_OK)
             return st;
         measured = detached;
@@ -674,10 +700,10 @@ sc_status model_lower(const parse_tree *syntax, model **out, sc_error *error)
         return err_nomem(error, NULL);
     arena_init(&m->mem, 64 * 1024);
     m->file = syntax->file;
-    lowerer l = {m, {syntax->file, NULL}, NULL, 0, 0};
+    lowerer l = {m, {syntax->file, NULL}, NULL, 0, 0, 0};
     const parse_node *root = find_root(syntax);
     m->has_root = root != NULL;
-    sc_status st = walk(&l, syntax->first, NULL, IN_MAIN, root, &m->first, error);
+    sc_status st = walk(&l, syntax->first, NULL, IN_MAIN, root, &m->first, NULL, error);
     free(l.resizes);
     if (st != SC_OK) {
         model_free(m);
@@ -696,8 +722,8 @@ sc_status model_lower_twod(const char *file, const parse_node *n, model **out,
         return err_nomem(error, NULL);
     arena_init(&m->mem, 4096);
     m->file = file;
-    lowerer l = {m, {file, NULL}, NULL, 0, 0};
-    sc_status st = walk(&l, n, n->next, IN_2D, NULL, &m->first, error);
+    lowerer l = {m, {file, NULL}, NULL, 0, 0, 0};
+    sc_status st = walk(&l, n, n->next, IN_2D, NULL, &m->first, NULL, error);
     free(l.resizes);
     if (st != SC_OK) {
         model_free(m);
@@ -713,4 +739,152 @@ void model_free(model *m)
         return;
     arena_free(&m->mem);
     free(m);
+}
+
+/* ---- the streamed lowering ---- */
+
+/* What the stream knows of an open syntax node, by its depth. */
+typedef struct stream_frame {
+    model_node *node; /* its model node; NULL when not lowered */
+    uint8_t descend;  /* its children are lowered, in ctx */
+    uint8_t ctx;      /* context of its children */
+    uint8_t searched; /* the root search enters its children */
+    uint8_t deferred; /* its subtree is kept and walked when it closes */
+} stream_frame;
+
+struct model_stream {
+    lowerer l;
+    model_node **link;      /* where the next lowered node goes */
+    const parse_node *root; /* the root ('!') while its syntax lives */
+    int has_root;           /* the root search found it */
+    uint32_t kept_depth;    /* depth of the deferred node; 0 if none */
+    stream_frame *frames;   /* by depth - 1 */
+    size_t frame_cap;
+};
+
+/* Whether a node of this kind, in the main model, reads its subtree
+ * while it is lowered: resize measures it (lower_resize); light, camera
+ * and background check that they have no children (lower_shading.c). */
+static int reads_subtree(size_t kind)
+{
+    if (kind == KIND_UNKNOWN)
+        return 0;
+    model_kind k = kinds[kind].kind;
+    return k == MODEL_RESIZE || k == MODEL_LIGHT || k == MODEL_CAMERA ||
+           k == MODEL_BACKGROUND;
+}
+
+static sc_status stream_open(void *user, parse_node *n, int *keep, sc_error *error)
+{
+    model_stream *s = user;
+    uint32_t depth = n->depth;
+    if (!grow_array((void **)&s->frames, &s->frame_cap, depth, sizeof *s->frames))
+        return err_nomem(error, NULL);
+    const stream_frame *parent = depth > 1 ? &s->frames[depth - 2] : NULL;
+    stream_frame *f = &s->frames[depth - 1];
+    memset(f, 0, sizeof *f);
+    int disabled = (n->modifiers & PARSE_MOD_DISABLE) != 0;
+    /* The root search of find_root, in the same order. */
+    int searched = (!parent || parent->searched) && !disabled;
+    if (searched && !s->has_root && (n->modifiers & PARSE_MOD_ROOT)) {
+        s->has_root = 1;
+        s->root = n;
+    }
+    f->searched = searched && root_search_enters(n->name);
+    if (s->kept_depth)
+        return SC_OK; /* inside a kept subtree: walked when it closes */
+    int visited = !s->l.stopped && (!parent || parent->descend) && !disabled;
+    if (!visited)
+        return SC_OK;
+    context ctx = parent ? (context)parent->ctx : IN_MAIN;
+    if (ctx == IN_MAIN && reads_subtree(kind_index(n->name))) {
+        *keep = 1;
+        s->kept_depth = depth;
+        f->deferred = 1;
+        f->ctx = (uint8_t)ctx;
+        return SC_OK;
+    }
+    model_node *node;
+    sc_status st = visit(&s->l, n, ctx, s->root, &s->link, &node, error);
+    if (st != SC_OK)
+        return st;
+    f->node = node; /* its child count comes at its close */
+    if (s->l.stopped)
+        return SC_OK;
+    context inner;
+    f->descend = (uint8_t)enters(ctx, node, &inner);
+    f->ctx = (uint8_t)inner;
+    if (f->descend)
+        s->link = &node->first_child;
+    return SC_OK;
+}
+
+static sc_status stream_close(void *user, parse_node *n, sc_error *error)
+{
+    model_stream *s = user;
+    uint32_t depth = n->depth;
+    if (s->kept_depth && depth > s->kept_depth)
+        return SC_OK;
+    const stream_frame *f = &s->frames[depth - 1];
+    sc_status st = SC_OK;
+    if (f->deferred) {
+        /* n is not linked to a sibling: the walk ends after its subtree. */
+        s->kept_depth = 0;
+        st = walk(&s->l, n, NULL, (context)f->ctx, s->root, s->link, &s->link, error);
+    } else if (f->node) {
+        f->node->child_count = n->child_count;
+        if (f->descend)
+            s->link = &f->node->next;
+    }
+    /* n's syntax is freed now: forget pointers into it. The root, if it
+     * was there, is lowered; a resize remembered in the points context is
+     * looked up only within the walk of a kept subtree. */
+    s->root = NULL;
+    if (s->l.resize_count) {
+        memset(s->l.resizes, 0, s->l.resize_cap * sizeof *s->l.resizes);
+        s->l.resize_count = 0;
+    }
+    return st;
+}
+
+sc_status model_stream_new(const char *file, model_stream **out, sc_error *error)
+{
+    *out = NULL;
+    model_stream *s = calloc(1, sizeof *s);
+    model *m = s ? calloc(1, sizeof *m) : NULL;
+    if (!m) {
+        free(s);
+        return err_nomem(error, NULL);
+    }
+    arena_init(&m->mem, 64 * 1024);
+    m->file = file;
+    s->l = (lowerer){m, {file, NULL}, NULL, 0, 0, 0};
+    s->link = &m->first;
+    *out = s;
+    return SC_OK;
+}
+
+parse_sink model_stream_sink(model_stream *s)
+{
+    parse_sink sink = {s, stream_open, stream_close};
+    return sink;
+}
+
+sc_status model_stream_finish(model_stream *s, model **out)
+{
+    *out = s->l.m;
+    (*out)->has_root = s->has_root;
+    s->l.m = NULL;
+    model_stream_free(s);
+    return SC_OK;
+}
+
+void model_stream_free(model_stream *s)
+{
+    if (!s)
+        return;
+    model_free(s->l.m);
+    free(s->l.resizes);
+    free(s->frames);
+    free(s);
 }

@@ -365,6 +365,28 @@ sc_status model_lower_twod(const char *file, const parse_node *n, model **out,
 
 void model_free(model *m);
 
+/* The lowering of a streamed parse: model_stream_sink's calls, made by
+ * parse_stream in file order, lower each node as soon as its arguments
+ * are read, so that its syntax can go when it closes; a subtree whose
+ * lowering reads its children (the main model's resize and light, camera
+ * and background) is kept and lowered when it closes. The model is the
+ * one model_lower makes from the whole tree, node for node and error for
+ * error. */
+typedef struct model_stream model_stream;
+
+/* A new lowering into a model naming file (which must outlive it). */
+sc_status model_stream_new(const char *file, model_stream **out, sc_error *error);
+
+/* The sink to pass to parse_stream; s must outlive the parse. */
+parse_sink model_stream_sink(model_stream *s);
+
+/* After parse_stream succeeded with s's sink: the model into *out (free
+ * with model_free). Frees s either way. */
+sc_status model_stream_finish(model_stream *s, model **out);
+
+/* Frees s and its model (after a failed parse). */
+void model_stream_free(model_stream *s);
+
 /* The kind of a node name, through the lowering pass's one table. */
 model_kind model_kind_of(const char *name);
 

@@ -166,6 +166,13 @@ static size_t utf8_encode(unsigned long c, char *out)
     return 4;
 }
 
+/* Whether byte c starts neither whitespace nor a comment, so that
+ * skip_space has nothing to skip before it. */
+static int is_plain(unsigned char c)
+{
+    return c > ' ' && c != '/' && c != 0xc2;
+}
+
 /* Skips whitespace and comments. Returns SC_OK or the error of an
  * unterminated block comment. */
 static sc_status skip_space(lexer *lx, sc_error *error)
@@ -208,7 +215,7 @@ static sc_status skip_space(lexer *lx, sc_error *error)
  * 1 inf, 2 nan, 0 neither. */
 static int special_word(const char *p, const char *end)
 {
-    if (end - p < 3)
+    if (p >= end || (*p != 'i' && *p != 'n') || end - p < 3)
         return 0;
     if (end - p > 3 && is_ident_char((unsigned char)p[3]))
         return 0;
@@ -526,13 +533,23 @@ static const lex_kind single_tokens[256] = {
 
 sc_status lex_next(lexer *lx, lex_token *tok, sc_error *error)
 {
-    sc_status st = skip_space(lx, error);
-    if (st != SC_OK)
-        return st;
-    memset(tok, 0, sizeof *tok);
+    /* Most tokens follow one space, or none: skip_space only past that. */
+    if (lx->p < lx->end && *lx->p == ' ')
+        lx->p++;
+    if (lx->p >= lx->end || !is_plain((unsigned char)*lx->p)) {
+        sc_status st = skip_space(lx, error);
+        if (st != SC_OK)
+            return st;
+    }
+    /* Each kind sets the fields it has; the rest are cleared here rather
+     * than the whole token, which is most of a small token's cost. */
     tok->start = lx->p;
     tok->line = lx->line;
     tok->column = (int)(lx->p - lx->line_start) + 1;
+    tok->length = 0;
+    tok->number = 0;
+    tok->string = NULL;
+    tok->string_length = 0;
     if (lx->p >= lx->end) {
         tok->kind = LEX_EOF;
         return SC_OK;

@@ -10,6 +10,14 @@
  * remembers where its items start on the stack; its ']' copies them into
  * the arena as one array and leaves the vector itself on the stack as an
  * item of the enclosing vector.
+ *
+ * A streamed parse (parse_stream) is the same walk with two differences:
+ * a node goes to the sink once its arguments are read and again when it
+ * closes, and a closed node's memory (the node, its arguments and values,
+ * its children's) is handed back to the arena by restoring the mark taken
+ * before the node was made. Nodes are then not linked into their parent's
+ * list, which would point into freed memory; only inside a subtree the
+ * sink keeps are they linked, and freed with the kept node.
  */
 #include "syntax/parse.h"
 
@@ -47,6 +55,10 @@ typedef struct parser {
     size_t arg_count, arg_cap;
     name_entry *names; /* open addressing, a power of two slots, at most half full */
     size_t name_count, name_cap;
+    const parse_sink *sink; /* a streamed parse (parse_stream); NULL: keep the tree */
+    arena_mark *marks;      /* streamed: the arena before each open node, by depth */
+    size_t mark_cap;
+    uint32_t kept_depth; /* streamed: depth of the kept subtree's node, 0 if none */
 } parser;
 
 static sc_location token_loc(const parser *ps)
@@ -339,6 +351,46 @@ static void append_child(parse_node *parent, parse_node *node)
     parent->child_count++;
 }
 
+/* Whether node, just read, is linked into the tree: always in a whole
+ * parse; in a streamed one only below a kept node. */
+static int links(const parser *ps, uint32_t depth)
+{
+    return !ps->sink || (ps->kept_depth && depth > ps->kept_depth);
+}
+
+/* Hands a node just read to the sink, after remembering the arena mark
+ * taken before it was made. */
+static sc_status open_node(parser *ps, parse_node *node, arena_mark mark)
+{
+    if (!ps->sink)
+        return SC_OK;
+    if (!grow_array((void **)&ps->marks, &ps->mark_cap, node->depth + 1u,
+                    sizeof *ps->marks))
+        return err_nomem(ps->error, NULL);
+    ps->marks[node->depth] = mark;
+    int keep = 0;
+    sc_status st = ps->sink->open(ps->sink->user, node, &keep, ps->error);
+    if (st == SC_OK && keep && !ps->kept_depth)
+        ps->kept_depth = node->depth;
+    return st;
+}
+
+/* Hands a closed node to the sink and frees it with its subtree, unless it
+ * lies below a kept node. */
+static sc_status close_node(parser *ps, parse_node *node)
+{
+    if (!ps->sink)
+        return SC_OK;
+    uint32_t depth = node->depth;
+    sc_status st = ps->sink->close(ps->sink->user, node, ps->error);
+    if (st != SC_OK || (ps->kept_depth && depth > ps->kept_depth))
+        return st;
+    if (ps->kept_depth == depth)
+        ps->kept_depth = 0;
+    arena_restore(&ps->tree->mem, ps->marks[depth]);
+    return SC_OK;
+}
+
 /* file      := statement* EOF
  * statement := modifier* NAME '(' arguments ')' ( ';' | '{' statement* '}' ) | ';'
  * The open node whose block is being read is `parent`; its '}' returns to
@@ -359,7 +411,10 @@ static sc_status parse_statements(parser *ps)
         if (kind == LEX_RBRACE) {
             if (!parent)
                 return syntax_error(ps, "unmatched '}'");
+            parse_node *closed = parent;
             parent = parent->parent;
+            if ((st = close_node(ps, closed)) != SC_OK)
+                return st;
             if ((st = advance(ps)) != SC_OK)
                 return st;
             continue;
@@ -391,6 +446,7 @@ static sc_status parse_statements(parser *ps)
             return err_set(ps->error, SC_ERR_LIMIT, &loc, "too many nodes (limit is %d)",
                            PARSE_MAX_NODES);
         }
+        arena_mark mark = arena_save(&tree->mem);
         parse_node *node = arena_calloc(&tree->mem, 1, sizeof *node);
         if (!node || !(node->name = token_text(ps)))
             return err_nomem(ps->error, NULL);
@@ -406,7 +462,13 @@ static sc_status parse_statements(parser *ps)
             return st;
         if ((st = parse_arguments(ps, node, paren_line)) != SC_OK)
             return st;
-        if (parent) {
+        if (!links(ps, depth)) {
+            node->parent = parent;
+            if (parent)
+                parent->child_count++;
+            else
+                tree->count++;
+        } else if (parent) {
             append_child(parent, node);
         } else {
             if (top_tail)
@@ -417,7 +479,11 @@ static sc_status parse_statements(parser *ps)
             tree->count++;
         }
         tree->node_count++;
+        if ((st = open_node(ps, node, mark)) != SC_OK)
+            return st;
         if (ps->tok.kind == LEX_SEMICOLON) {
+            if ((st = close_node(ps, node)) != SC_OK)
+                return st;
             if ((st = advance(ps)) != SC_OK)
                 return st;
         } else if (ps->tok.kind == LEX_LBRACE) {
@@ -432,8 +498,8 @@ static sc_status parse_statements(parser *ps)
     }
 }
 
-sc_status parse_text(const char *file, const char *text, size_t length, parse_tree **out,
-                     sc_error *error)
+static sc_status parse(const char *file, const char *text, size_t length,
+                       const parse_sink *sink, parse_tree **out, sc_error *error)
 {
     *out = NULL;
     parse_tree *tree = calloc(1, sizeof *tree);
@@ -446,6 +512,7 @@ sc_status parse_text(const char *file, const char *text, size_t length, parse_tr
     memset(&ps, 0, sizeof ps);
     ps.tree = tree;
     ps.error = error;
+    ps.sink = sink;
     lex_init(&ps.lx, file, text, length, &tree->strings);
     sc_status st = advance(&ps);
     if (st == SC_OK)
@@ -454,12 +521,28 @@ sc_status parse_text(const char *file, const char *text, size_t length, parse_tr
     free(ps.open);
     free(ps.args);
     free(ps.names);
+    free(ps.marks);
     if (st != SC_OK) {
         parse_tree_free(tree);
         return st;
     }
     *out = tree;
     return SC_OK;
+}
+
+sc_status parse_text(const char *file, const char *text, size_t length, parse_tree **out,
+                     sc_error *error)
+{
+    return parse(file, text, length, NULL, out, error);
+}
+
+sc_status parse_stream(const char *file, const char *text, size_t length,
+                       const parse_sink *sink, parse_tree **out, sc_error *error)
+{
+    sc_status st = parse(file, text, length, sink, out, error);
+    if (st == SC_OK)
+        arena_free(&(*out)->mem); /* the blocks the open nodes used */
+    return st;
 }
 
 void parse_tree_free(parse_tree *tree)
@@ -496,13 +579,23 @@ const parse_arg *parse_node_arg(const parse_node *node, const char *name, int po
     return found;
 }
 
+/* One pass over the arguments rather than a lookup for each of the
+ * three: every curved leaf OpenSCAD writes has all three. */
 void parse_node_resolution(const parse_node *node, double *fn, double *fa, double *fs)
 {
-    const char *names[3] = {"$fn", "$fa", "$fs"};
+    const parse_arg *set[3] = {NULL, NULL, NULL}; /* $fn, $fa, $fs: the last wins */
+    for (uint32_t i = 0; i < node->arg_count; i++) {
+        const char *name = node->args[i].name;
+        if (!name || name[0] != '$' || name[1] != 'f' || !name[2] || name[3])
+            continue;
+        int k = name[2] == 'n' ? 0 : name[2] == 'a' ? 1 : name[2] == 's' ? 2 : -1;
+        if (k >= 0)
+            set[k] = &node->args[i];
+    }
     double *outs[3] = {fn, fa, fs};
     const double defaults[3] = {0, 12, 2};
     for (int i = 0; i < 3; i++) {
-        const parse_arg *a = parse_node_arg(node, names[i], -1);
+        const parse_arg *a = set[i];
         *outs[i] = a && a->value.kind == PARSE_NUMBER ? a->value.u.number : defaults[i];
     }
 }

@@ -123,6 +123,35 @@ sc_status parse_text(const char *file, const char *text, size_t length, parse_tr
 
 void parse_tree_free(parse_tree *tree);
 
+/* The consumer of a streamed parse (parse_stream), called node by node in
+ * file order. Each call gets the parser's error to fill; a status other
+ * than SC_OK stops the parse with it. */
+typedef struct parse_sink {
+    void *user;
+    /* A node's name, position, modifiers and arguments are read; its
+     * children are not yet (child_count is 0 and grows as they come).
+     * node->parent is its open parent (NULL at top level), whose syntax
+     * lives until it closes. Setting *keep (read only outside a kept
+     * subtree) keeps the node's subtree whole, children linked as
+     * parse_text links them, until the node closes. */
+    sc_status (*open)(void *user, parse_node *node, int *keep, sc_error *error);
+    /* The node's last child is read: child_count is final. When close
+     * returns, the node's syntax (arguments, values, children) is freed,
+     * unless the node lies inside a kept subtree (below the kept node),
+     * which is freed with the kept node. */
+    sc_status (*close)(void *user, parse_node *node, sc_error *error);
+} parse_sink;
+
+/* Parses text[0 .. length) as parse_text does, with the same errors at
+ * the same positions, but hands every node to sink as it is read and
+ * frees its syntax when it closes, so that memory stays that of the open
+ * nodes (and the kept subtrees) rather than of the whole file. *out holds
+ * only the names and strings (first is NULL), which outlive the nodes as
+ * after parse_tree_release_nodes; free it with parse_tree_free. On failure
+ * *out is NULL. */
+sc_status parse_stream(const char *file, const char *text, size_t length,
+                       const parse_sink *sink, parse_tree **out, sc_error *error);
+
 /* Frees the tree's nodes, arguments and values, keeping its names and
  * strings (which a lowered model points to) until parse_tree_free. The
  * tree is then empty (first is NULL). Loading frees the syntax this way
