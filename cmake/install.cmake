@@ -7,6 +7,7 @@
 #                                         SPANCAST_SOVERSION, abi/README.md)
 #   LIBDIR/spancast/spancast-oiio.so      the OpenImageIO plugin the library (and
 #                                         the tool) load on demand (src/formats/file.c)
+#   LIBDIR/spancast/spancast-tiff.so      the tiled TIFF plugin (libtiff), likewise
 #   share/doc/libspancast0/copyright
 # development -> libspancast-dev (Section libdevel)
 #   LIBDIR/libspancast.so                 the link for -lspancast
@@ -39,7 +40,8 @@ set(SPANCAST_DEB_DEV libspancast-dev)
 set(SPANCAST_DEB_TOOL spancast)
 
 install(TARGETS spancast RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR} COMPONENT tool)
-install(TARGETS spancast_oiio LIBRARY DESTINATION ${SPANCAST_HELPERS_DIR} COMPONENT library)
+install(TARGETS spancast_oiio spancast_tiff LIBRARY DESTINATION ${SPANCAST_HELPERS_DIR}
+        COMPONENT library)
 install(TARGETS spancast-bench RUNTIME DESTINATION ${SPANCAST_HELPERS_DIR} COMPONENT tool)
 install(TARGETS spancast_view RUNTIME DESTINATION ${SPANCAST_HELPERS_DIR} COMPONENT tool)
 if(TARGET spancast_mpi)
@@ -167,12 +169,14 @@ string(CONCAT CPACK_COMPONENT_TOOL_DESCRIPTION
 # Loaded on demand, so invisible to dpkg-shlibdeps (Debian 12 names):
 #   libopenimageio2.4   every image format beyond PNG and EXR, through the
 #                       plugin LIBDIR/spancast/spancast-oiio.so (dlopen)
+#   libtiff6            tiled TIFF written tile by tile, through the plugin
+#                       LIBDIR/spancast/spancast-tiff.so (dlopen)
 #   openscad            .scad input, converted by running openscad (src/cli/scad.c)
 #   libsdl2-2.0-0       the interactive viewer's window
 #   libopenmpi3         rendering tiles across machines with Open MPI
 #   gnuplot-nox         `spancast bench accuracy --plot` (suggested only)
-set(CPACK_DEBIAN_LIBRARY_PACKAGE_RECOMMENDS "libopenimageio2.4")
-set(CPACK_DEBIAN_TOOL_PACKAGE_RECOMMENDS "openscad, libopenimageio2.4, libsdl2-2.0-0, libopenmpi3, ffmpeg")
+set(CPACK_DEBIAN_LIBRARY_PACKAGE_RECOMMENDS "libopenimageio2.4, libtiff6")
+set(CPACK_DEBIAN_TOOL_PACKAGE_RECOMMENDS "openscad, libopenimageio2.4, libtiff6, libsdl2-2.0-0, libopenmpi3, ffmpeg")
 set(CPACK_DEBIAN_TOOL_PACKAGE_SUGGESTS "gnuplot-nox")
 set(SPANCAST_SHLIBDEPS_LIBRARY $<TARGET_FILE:spancast_shared>)
 set(SPANCAST_SHLIBDEPS_TOOL $<TARGET_FILE:spancast> $<TARGET_FILE:spancast-bench>)

@@ -40,6 +40,22 @@ iinfo tiled-mask.tif | grep -q '300 x  200, 1 channel, uint8 tiff' ||
 iinfo tiled.tif | grep -q '300 x  200, 3 channel, float tiff' || fail "tiled.tif: $(iinfo tiled.tif)"
 ls -a | grep -q '\.tmp-' && fail "a temporary was left behind: $(ls -a | grep '\.tmp-')"
 
+# libtiff is loaded only by a streamed TIFF, through its plugin: a PNG or a
+# tiled EXR render loads neither it nor OpenImageIO (ld.so's own log).
+for out in png exr; do
+    check
+    extra=()
+    [ "$out" = exr ] && extra=(--tiled)
+    LD_DEBUG=files LD_DEBUG_OUTPUT="$PWD/ld-$out" "$bin" render m.csg -o "lean.$out" \
+        --imgsize=32,24 -q "${extra[@]}" || fail "the .$out render failed"
+    ! cat ld-"$out".* | grep -Eq 'file=[^ ]*(libtiff|libOpenImageIO)' ||
+        fail "a .$out render loaded $(cat ld-"$out".* | grep -Eo 'file=[^ ]*(libtiff|libOpenImageIO)[^ ]*' | sort -u | tr '\n' ' ')"
+done
+check
+LD_DEBUG=files LD_DEBUG_OUTPUT="$PWD/ld-tif" "$bin" render m.csg -o lean.tif --imgsize=32,24 \
+    -q --tiled || fail "the tiled .tif render failed"
+cat ld-tif.* | grep -Eq 'file=[^ ]*spancast-tiff\.so' || fail "a tiled .tif did not load spancast-tiff.so"
+
 # A crop, tiled, is the crop.
 check
 "$bin" render m.csg -o crop.exr --region=10,20,250,180 --imgsize=300,200 -q ||

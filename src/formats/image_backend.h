@@ -60,14 +60,33 @@ int imgio_exr_tiles_write(imgio_exr_tiles *t, int tx, int ty, const void *pixels
                           char *err, size_t err_size);
 int imgio_exr_tiles_close(imgio_exr_tiles *t, char *err, size_t err_size);
 
-/* Tiled TIFF (BigTIFF when large), tile by tile (image_tiff_tiled.c): as
- * the tiled EXR calls above; tile must be a multiple of 16. */
+/* Tiled TIFF (BigTIFF when large), tile by tile: as the tiled EXR calls
+ * above; tile must be a multiple of 16. They are the entry points of a
+ * plugin of their own, spancast-tiff.so (tiff/image_tiff_tiled.c), the only
+ * code that links libtiff, which with the eight libraries it brings would
+ * otherwise load in every run; imgio_tiff_plugin_open loads it, found as
+ * the OpenImageIO plugin is. */
 typedef struct imgio_tiff_tiles imgio_tiff_tiles;
-imgio_tiff_tiles *imgio_tiff_tiles_open(const imgio_image *img, int tile,
-                                        const char *path, char *err, size_t err_size);
-int imgio_tiff_tiles_write(imgio_tiff_tiles *t, int tx, int ty, const void *pixels,
-                           char *err, size_t err_size);
-int imgio_tiff_tiles_close(imgio_tiff_tiles *t, char *err, size_t err_size);
+typedef imgio_tiff_tiles *imgio_tiff_open_fn(const imgio_image *img, int tile,
+                                             const char *path, char *err,
+                                             size_t err_size);
+typedef int imgio_tiff_write_fn(imgio_tiff_tiles *t, int tx, int ty, const void *pixels,
+                                char *err, size_t err_size);
+typedef int imgio_tiff_close_fn(imgio_tiff_tiles *t, char *err, size_t err_size);
+
+#define IMGIO_TIFF_PLUGIN_FILE "spancast-tiff.so"
+typedef struct imgio_tiff_plugin {
+    void *handle;
+    imgio_tiff_open_fn *open;
+    imgio_tiff_write_fn *write;
+    imgio_tiff_close_fn *close;
+} imgio_tiff_plugin;
+
+/* 1 with *plugin filled, or 0 with "cannot load the TIFF plugin: ..." in
+ * err; imgio_tiff_plugin_close drops the reference (a zeroed plugin is
+ * fine). */
+int imgio_tiff_plugin_open(imgio_tiff_plugin *plugin, char *err, size_t err_size);
+void imgio_tiff_plugin_close(imgio_tiff_plugin *plugin);
 
 /* Readers, as image_read(): 1 on success, else 0 with the whole message
  * ("cannot read 'x': ...") in err. */

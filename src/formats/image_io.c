@@ -376,7 +376,8 @@ struct imgio_stream {
     imgio_kind kind;
     char *path, *tmp;
     imgio_exr_tiles *tiles; /* a tiled EXR, or */
-    imgio_tiff_tiles *tiff; /* a tiled TIFF */
+    imgio_tiff_tiles *tiff; /* a tiled TIFF, through */
+    imgio_tiff_plugin tiff_plugin;
     int tile;
     float *ids; /* one tile of ids as float */
 };
@@ -403,7 +404,9 @@ void imgio_stream_abandon(imgio_stream *s)
         return;
     char ignored[MESSAGE_SIZE];
     imgio_exr_tiles_close(s->tiles, ignored, sizeof ignored);
-    imgio_tiff_tiles_close(s->tiff, ignored, sizeof ignored);
+    if (s->tiff)
+        s->tiff_plugin.close(s->tiff, ignored, sizeof ignored);
+    imgio_tiff_plugin_close(&s->tiff_plugin);
     if (s->tmp)
         remove(s->tmp);
     free(s->tmp);
@@ -462,9 +465,10 @@ sc_status imgio_stream_open(const char *path, imgio_kind kind, int width, int he
     img.camera = camera && camera[0] ? camera : NULL;
     char failure[MESSAGE_SIZE] = "", ext[16];
     extension_of(path, ext, sizeof ext);
-    if (tiff_format(ext))
-        s->tiff = imgio_tiff_tiles_open(&img, tile, s->tmp, failure, sizeof failure);
-    else
+    if (tiff_format(ext)) {
+        if (imgio_tiff_plugin_open(&s->tiff_plugin, failure, sizeof failure))
+            s->tiff = s->tiff_plugin.open(&img, tile, s->tmp, failure, sizeof failure);
+    } else
         s->tiles = imgio_exr_tiles_open(&img, tile, s->tmp, failure, sizeof failure);
     if (!s->tiles && !s->tiff) {
         imgio_stream_abandon(s);
@@ -495,7 +499,7 @@ sc_status imgio_stream_write(imgio_stream *s, int tx, int ty, const sc_framebuff
     char failure[MESSAGE_SIZE] = "";
     int ok =
         s->tiff
-            ? imgio_tiff_tiles_write(s->tiff, tx, ty, pixels, failure, sizeof failure)
+            ? s->tiff_plugin.write(s->tiff, tx, ty, pixels, failure, sizeof failure)
             : imgio_exr_tiles_write(s->tiles, tx, ty, pixels, failure, sizeof failure);
     if (!ok)
         return err_set(error, SC_ERR_IO, NULL, "cannot write '%s': %s", s->path, failure);
@@ -506,7 +510,7 @@ sc_status imgio_stream_finish(imgio_stream *s, const volatile sig_atomic_t *canc
                               sc_error *error)
 {
     char failure[MESSAGE_SIZE] = "";
-    int ok = s->tiff ? imgio_tiff_tiles_close(s->tiff, failure, sizeof failure)
+    int ok = s->tiff ? s->tiff_plugin.close(s->tiff, failure, sizeof failure)
                      : imgio_exr_tiles_close(s->tiles, failure, sizeof failure);
     s->tiles = NULL;
     s->tiff = NULL;

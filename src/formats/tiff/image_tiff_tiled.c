@@ -1,9 +1,12 @@
 /* Tiled TIFF files written tile by tile, for images too large to hold
- * whole (libtiff).
+ * whole (libtiff): the plugin spancast-tiff.so, the only code that links
+ * libtiff, which the library loads when a render streams a .tif
+ * (image_plugin.c), so that libtiff and the eight libraries it brings are
+ * not loaded by every run.
  *
  * The TIFF counterpart of image_exr_tiled.cpp: a render that streams its
  * outputs (image_stream.h) hands each finished tile to
- * imgio_tiff_tiles_write as soon as it has it, and the tile is compressed
+ * spancast_tiff_tiles_write as soon as it has it, and the tile is compressed
  * (Deflate, each tile on its own) and written to the file at once. The
  * samples are those of the untiled TIFF the OpenImageIO plugin writes for
  * the same output (8-bit mask, 32-bit float colour, depth, normals and
@@ -28,6 +31,11 @@
 #include <stdlib.h>
 #include <string.h>
 #include <tiffio.h>
+
+/* The entry points, looked up by these names (image_backend.h). */
+imgio_tiff_open_fn spancast_tiff_tiles_open;
+imgio_tiff_write_fn spancast_tiff_tiles_write;
+imgio_tiff_close_fn spancast_tiff_tiles_close;
 
 struct imgio_tiff_tiles {
     TIFF *file;
@@ -66,8 +74,8 @@ static void failed(const imgio_tiff_tiles *t, const char *what, char *err,
     snprintf(err, err_size, "%s", t && t->message[0] ? t->message : what);
 }
 
-imgio_tiff_tiles *imgio_tiff_tiles_open(const imgio_image *img, int tile,
-                                        const char *path, char *err, size_t err_size)
+imgio_tiff_tiles *spancast_tiff_tiles_open(const imgio_image *img, int tile,
+                                           const char *path, char *err, size_t err_size)
 {
     if (tile <= 0 || tile % 16 != 0) { /* TIFF's rule for tile sizes */
         snprintf(err, err_size, "tiles of %d pixels (TIFF needs a multiple of 16)", tile);
@@ -89,7 +97,7 @@ imgio_tiff_tiles *imgio_tiff_tiles_open(const imgio_image *img, int tile,
     TIFFOpenOptions *options = TIFFOpenOptionsAlloc();
     if (!t->buffer || !options) {
         TIFFOpenOptionsFree(options);
-        imgio_tiff_tiles_close(t, err, err_size);
+        spancast_tiff_tiles_close(t, err, err_size);
         snprintf(err, err_size, "out of memory");
         return NULL;
     }
@@ -105,7 +113,7 @@ imgio_tiff_tiles *imgio_tiff_tiles_open(const imgio_image *img, int tile,
     TIFFOpenOptionsFree(options);
     if (!t->file) {
         failed(t, "cannot create the file", err, err_size);
-        imgio_tiff_tiles_close(t, NULL, 0);
+        spancast_tiff_tiles_close(t, NULL, 0);
         return NULL;
     }
     TIFF *f = t->file;
@@ -130,14 +138,14 @@ imgio_tiff_tiles *imgio_tiff_tiles_open(const imgio_image *img, int tile,
     }
     if (!ok) {
         failed(t, "cannot set up the file", err, err_size);
-        imgio_tiff_tiles_close(t, NULL, 0);
+        spancast_tiff_tiles_close(t, NULL, 0);
         return NULL;
     }
     return t;
 }
 
-int imgio_tiff_tiles_write(imgio_tiff_tiles *t, int tx, int ty, const void *pixels,
-                           char *err, size_t err_size)
+int spancast_tiff_tiles_write(imgio_tiff_tiles *t, int tx, int ty, const void *pixels,
+                              char *err, size_t err_size)
 {
     int x = tx * t->tile, y = ty * t->tile;
     int w = t->width - x < t->tile ? t->width - x : t->tile;
@@ -158,7 +166,7 @@ int imgio_tiff_tiles_write(imgio_tiff_tiles *t, int tx, int ty, const void *pixe
     return 1;
 }
 
-int imgio_tiff_tiles_close(imgio_tiff_tiles *t, char *err, size_t err_size)
+int spancast_tiff_tiles_close(imgio_tiff_tiles *t, char *err, size_t err_size)
 {
     if (!t)
         return 1;
