@@ -96,11 +96,9 @@ static int call_failed(const sc_error *error, int status)
 static int apply_check_option(check_args *a, const char *name, const char *value)
 {
     double v;
-    if (!strcmp(name, "--json")) {
-        a->json = 1;
-    } else if (!strcmp(name, "--faithful")) {
-        a->faithful = 1;
-    } else if (!strcmp(name, "--quiet")) {
+    if (cli_output_flag(name, &a->json, &a->faithful))
+        return 0;
+    if (!strcmp(name, "--quiet")) {
         a->quiet = 1;
     } else if (!strcmp(name, "--tolerance")) {
         if (!cli_parse_number(value, &v) || !(v > 0 && v < 1))
@@ -145,11 +143,10 @@ static int parse_check_args(check_args *a, int argc, char **argv)
     int only_files = 0, wanted = a->command == COMPARE ? 2 : 1;
     for (int k = 2; k < argc; k++) {
         const char *arg = argv[k];
-        if (!only_files && !strcmp(arg, "--")) {
-            only_files = 1;
+        int operand = cli_operand(arg, &only_files);
+        if (operand < 0)
             continue;
-        }
-        if (only_files || arg[0] != '-' || !arg[1]) {
+        if (operand) {
             if (a->input_count == wanted)
                 return cli_usage_error("unexpected argument '%s'", arg);
             a->inputs[a->input_count++] = arg;
@@ -169,19 +166,11 @@ static int parse_check_args(check_args *a, int argc, char **argv)
         if (!(spec->commands & a->command))
             return cli_usage_error("option '%.*s' does not apply to '%s'", (int)len, arg,
                                    command_name(a->command));
-        const char *value = NULL;
-        if (eq) {
-            if (!spec->takes_value)
-                return cli_usage_error("option '%.*s' takes no value", (int)len, arg);
-            value = eq + 1;
-        } else if (spec->takes_value) {
-            if (k + 1 >= argc)
-                return cli_usage_error("option '%s' expects a value", arg);
-            value = argv[++k];
-        }
-        if (spec->takes_value && !*value)
-            return cli_usage_error("option '%.*s' expects a value", (int)len, arg);
-        int st = apply_check_option(a, spec->name, value);
+        const char *value;
+        int st = cli_option_value(argc, argv, &k, len, spec->takes_value, &value);
+        if (st)
+            return st;
+        st = apply_check_option(a, spec->name, value);
         if (st)
             return st;
     }

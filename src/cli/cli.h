@@ -40,6 +40,25 @@ int cli_parse_numbers(const char *s, double *out, int max);
 const void *cli_find_option(const void *table, size_t count, size_t stride,
                             const char *name, size_t len);
 
+/* How a command's walk over argv takes arg: 1 for an operand (a file:
+ * anything after the first "--", "-" alone, anything not beginning with
+ * '-'), 0 for an option, -1 for that first "--" itself, which sets
+ * *only_files and is skipped. (render_options.c) */
+int cli_operand(const char *arg, int *only_files);
+
+/* The value of the option argv[*k], whose name is its first len bytes:
+ * after its '=', else when it takes one the next argument (advancing *k);
+ * NULL for a flag. Returns 0, or the exit status of a usage error it
+ * printed: a flag given a value, or a value missing or empty.
+ * (render_options.c) */
+int cli_option_value(int argc, char **argv, int *k, size_t len, int takes_value,
+                     const char **value);
+
+/* The output flags of the query commands (spans, inside, measure,
+ * overlaps, compare): sets *json for --json, *faithful for --faithful and
+ * returns 1; 0 for another name. (render_options.c) */
+int cli_output_flag(const char *name, int *json, int *faithful);
+
 /* The names of --view in the order of their SC_VIEW_* bits: bit k is
  * 1 << k. (render_options.c) */
 #define CLI_VIEW_NAME_COUNT 4

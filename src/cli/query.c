@@ -138,11 +138,9 @@ static int apply_query_option(query_args *a, const char *name, const char *value
 {
     query_item item;
     memset(&item, 0, sizeof item);
-    if (!strcmp(name, "--json")) {
-        a->json = 1;
-    } else if (!strcmp(name, "--faithful")) {
-        a->faithful = 1;
-    } else if (!strcmp(name, "--both-ways")) {
+    if (cli_output_flag(name, &a->json, &a->faithful))
+        return 0;
+    if (!strcmp(name, "--both-ways")) {
         a->both_ways = 1;
     } else if (!strcmp(name, "--ray")) {
         if (cli_parse_numbers(value, item.v, 6) != 6)
@@ -192,11 +190,10 @@ static int parse_query_args(query_args *a, int argc, char **argv)
     int only_files = 0;
     for (int k = 2; k < argc; k++) {
         const char *arg = argv[k];
-        if (!only_files && !strcmp(arg, "--")) {
-            only_files = 1;
+        int operand = cli_operand(arg, &only_files);
+        if (operand < 0)
             continue;
-        }
-        if (only_files || arg[0] != '-' || !arg[1]) {
+        if (operand) {
             if (a->input)
                 return cli_usage_error("unexpected argument '%s'", arg);
             a->input = arg;
@@ -217,19 +214,10 @@ static int parse_query_args(query_args *a, int argc, char **argv)
             return cli_usage_error("option '%.*s' does not apply to '%s'", (int)len, arg,
                                    command);
         int takes_value = spec ? spec->takes_value : camera;
-        const char *value = NULL;
-        if (eq) {
-            if (!takes_value)
-                return cli_usage_error("option '%.*s' takes no value", (int)len, arg);
-            value = eq + 1;
-        } else if (takes_value) {
-            if (k + 1 >= argc)
-                return cli_usage_error("option '%s' expects a value", arg);
-            value = argv[++k];
-        }
-        if (takes_value && !*value)
-            return cli_usage_error("option '%.*s' expects a value", (int)len, arg);
-        int st;
+        const char *value;
+        int st = cli_option_value(argc, argv, &k, len, takes_value, &value);
+        if (st)
+            return st;
         if (spec) {
             char name[32];
             snprintf(name, sizeof name, "%.*s", (int)len, arg);
