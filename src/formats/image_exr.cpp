@@ -40,6 +40,17 @@ extern "C" void imgio_exr_message(char *err, size_t err_size, const char *what)
                   text.empty() ? "unknown OpenEXR error" : text.c_str());
 }
 
+void exr_exception_message(char *err, size_t err_size)
+{
+    try {
+        throw;
+    } catch (const std::bad_alloc &) {
+        imgio_exr_message(err, err_size, "out of memory");
+    } catch (const std::exception &e) {
+        imgio_exr_message(err, err_size, e.what());
+    }
+}
+
 void exr_add_metadata(Imf::Header &header, const imgio_image *img)
 {
     header.insert("Software", Imf::StringAttribute(img->software));
@@ -94,10 +105,8 @@ extern "C" int imgio_exr_write(const imgio_image *img, const char *path, char *e
         file.setFrameBuffer(frame);
         file.writePixels(img->height);
         return 1;
-    } catch (const std::bad_alloc &) {
-        imgio_exr_message(err, err_size, "out of memory");
-    } catch (const std::exception &e) {
-        imgio_exr_message(err, err_size, e.what());
+    } catch (const std::exception &) {
+        exr_exception_message(err, err_size);
     }
     return 0;
 }

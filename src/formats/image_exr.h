@@ -14,6 +14,10 @@
 
 #include "formats/image_backend.h"
 
+// Called in a handler of a std::exception: that exception as a message
+// in err ("out of memory" for std::bad_alloc, else OpenEXR's text).
+void exr_exception_message(char *err, size_t err_size);
+
 // Adds img's metadata to header as string attributes: "Software", and
 // with a camera, "comments" (OpenImageIO's name for the description) and
 // "spancast:camera".

@@ -62,10 +62,8 @@ extern "C" imgio_exr_tiles *imgio_exr_tiles_open(const imgio_image *img, int til
             header.channels().insert(img->channel_names[c], Imf::Channel(type));
         t->file.reset(new Imf::TiledOutputFile(path, header));
         return t;
-    } catch (const std::bad_alloc &) {
-        imgio_exr_message(err, err_size, "out of memory");
-    } catch (const std::exception &e) {
-        imgio_exr_message(err, err_size, e.what());
+    } catch (const std::exception &) {
+        exr_exception_message(err, err_size);
     }
     delete t;
     return nullptr;
@@ -94,10 +92,8 @@ extern "C" int imgio_exr_tiles_write(imgio_exr_tiles *t, int tx, int ty,
         t->file->setFrameBuffer(frame);
         t->file->writeTile(tx, ty);
         return 1;
-    } catch (const std::bad_alloc &) {
-        imgio_exr_message(err, err_size, "out of memory");
-    } catch (const std::exception &e) {
-        imgio_exr_message(err, err_size, e.what());
+    } catch (const std::exception &) {
+        exr_exception_message(err, err_size);
     }
     return 0;
 }
@@ -109,11 +105,8 @@ extern "C" int imgio_exr_tiles_close(imgio_exr_tiles *t, char *err, size_t err_s
     int ok = 1;
     try {
         t->file.reset(); // writes the tile offsets and closes the file
-    } catch (const std::bad_alloc &) {
-        imgio_exr_message(err, err_size, "out of memory");
-        ok = 0;
-    } catch (const std::exception &e) {
-        imgio_exr_message(err, err_size, e.what());
+    } catch (const std::exception &) {
+        exr_exception_message(err, err_size);
         ok = 0;
     }
     delete t;
