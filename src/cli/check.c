@@ -154,10 +154,10 @@ static int parse_check_args(check_args *a, int argc, char **argv)
         }
         if (!strcmp(arg, "-q"))
             arg = "--quiet";
-        if (arg[1] != '-')
-            return cli_usage_error("unknown option '%s'", arg);
-        const char *eq = strchr(arg, '=');
-        size_t len = eq ? (size_t)(eq - arg) : strlen(arg);
+        size_t len;
+        int st = cli_option_name(arg, &len);
+        if (st)
+            return st;
         const check_option *spec =
             cli_find_option(check_options, sizeof check_options / sizeof check_options[0],
                             sizeof check_options[0], arg, len);
@@ -167,7 +167,7 @@ static int parse_check_args(check_args *a, int argc, char **argv)
             return cli_usage_error("option '%.*s' does not apply to '%s'", (int)len, arg,
                                    command_name(a->command));
         const char *value;
-        int st = cli_option_value(argc, argv, &k, len, spec->takes_value, &value);
+        st = cli_option_value(argc, argv, &k, len, spec->takes_value, &value);
         if (st)
             return st;
         st = apply_check_option(a, spec->name, value);

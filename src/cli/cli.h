@@ -46,6 +46,11 @@ const void *cli_find_option(const void *table, size_t count, size_t stride,
  * *only_files and is skipped. (render_options.c) */
 int cli_operand(const char *arg, int *only_files);
 
+/* The length of the name of the option arg (which begins with '-' and is
+ * not "-"): up to its '=', if any. Returns 0, or the exit status of a
+ * usage error it printed for a short option. (render_options.c) */
+int cli_option_name(const char *arg, size_t *len);
+
 /* The value of the option argv[*k], whose name is its first len bytes:
  * after its '=', else when it takes one the next argument (advancing *k);
  * NULL for a flag. Returns 0, or the exit status of a usage error it

@@ -199,10 +199,10 @@ static int parse_query_args(query_args *a, int argc, char **argv)
             a->input = arg;
             continue;
         }
-        if (arg[1] != '-')
-            return cli_usage_error("unknown option '%s'", arg);
-        const char *eq = strchr(arg, '=');
-        size_t len = eq ? (size_t)(eq - arg) : strlen(arg);
+        size_t len;
+        int st = cli_option_name(arg, &len);
+        if (st)
+            return st;
         const query_option *spec =
             cli_find_option(query_options, sizeof query_options / sizeof query_options[0],
                             sizeof query_options[0], arg, len);
@@ -215,7 +215,7 @@ static int parse_query_args(query_args *a, int argc, char **argv)
                                    command);
         int takes_value = spec ? spec->takes_value : camera;
         const char *value;
-        int st = cli_option_value(argc, argv, &k, len, takes_value, &value);
+        st = cli_option_value(argc, argv, &k, len, takes_value, &value);
         if (st)
             return st;
         if (spec) {

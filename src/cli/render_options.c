@@ -332,6 +332,15 @@ int cli_operand(const char *arg, int *only_files)
     return *only_files || arg[0] != '-' || !arg[1];
 }
 
+int cli_option_name(const char *arg, size_t *len)
+{
+    if (arg[1] != '-')
+        return cli_usage_error("unknown option '%s'", arg);
+    const char *eq = strchr(arg, '=');
+    *len = eq ? (size_t)(eq - arg) : strlen(arg);
+    return 0;
+}
+
 int cli_option_value(int argc, char **argv, int *k, size_t len, int takes_value,
                      const char **value)
 {
