@@ -140,12 +140,10 @@ static int apply_check_option(check_args *a, const char *name, const char *value
 
 static int parse_check_args(check_args *a, int argc, char **argv)
 {
-    int only_files = 0, wanted = a->command == COMPARE ? 2 : 1;
-    for (int k = 2; k < argc; k++) {
-        const char *arg = argv[k];
-        int operand = cli_operand(arg, &only_files);
-        if (operand < 0)
-            continue;
+    int wanted = a->command == COMPARE ? 2 : 1;
+    int k = 1, only_files = 0, operand;
+    const char *arg;
+    while ((arg = cli_next_arg(argc, argv, &k, &only_files, &operand))) {
         if (operand) {
             if (a->input_count == wanted)
                 return cli_usage_error("unexpected argument '%s'", arg);
@@ -167,7 +165,7 @@ static int parse_check_args(check_args *a, int argc, char **argv)
             return cli_usage_error("option '%.*s' does not apply to '%s'", (int)len, arg,
                                    command_name(a->command));
         const char *value;
-        st = cli_option_value(argc, argv, &k, len, spec->takes_value, &value);
+        st = cli_option_value(argc, argv, &k, arg, len, spec->takes_value, &value);
         if (st)
             return st;
         st = apply_check_option(a, spec->name, value);

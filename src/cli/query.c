@@ -187,12 +187,9 @@ static int parse_query_args(query_args *a, int argc, char **argv)
     const char *command = a->spans ? "spans" : "inside";
     sc_render_options scratch; /* checks the camera options before loading */
     sc_render_options_init(&scratch);
-    int only_files = 0;
-    for (int k = 2; k < argc; k++) {
-        const char *arg = argv[k];
-        int operand = cli_operand(arg, &only_files);
-        if (operand < 0)
-            continue;
+    int k = 1, only_files = 0, operand;
+    const char *arg;
+    while ((arg = cli_next_arg(argc, argv, &k, &only_files, &operand))) {
         if (operand) {
             if (a->input)
                 return cli_usage_error("unexpected argument '%s'", arg);
@@ -215,7 +212,7 @@ static int parse_query_args(query_args *a, int argc, char **argv)
                                    command);
         int takes_value = spec ? spec->takes_value : camera;
         const char *value;
-        st = cli_option_value(argc, argv, &k, len, takes_value, &value);
+        st = cli_option_value(argc, argv, &k, arg, len, takes_value, &value);
         if (st)
             return st;
         if (spec) {

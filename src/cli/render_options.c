@@ -323,13 +323,18 @@ const void *cli_find_option(const void *table, size_t count, size_t stride,
     return NULL;
 }
 
-int cli_operand(const char *arg, int *only_files)
+const char *cli_next_arg(int argc, char **argv, int *k, int *only_files, int *operand)
 {
-    if (!*only_files && !strcmp(arg, "--")) {
-        *only_files = 1;
-        return -1;
+    while (++*k < argc) {
+        const char *arg = argv[*k];
+        if (!*only_files && !strcmp(arg, "--")) {
+            *only_files = 1;
+            continue;
+        }
+        *operand = *only_files || arg[0] != '-' || !arg[1];
+        return arg;
     }
-    return *only_files || arg[0] != '-' || !arg[1];
+    return NULL;
 }
 
 int cli_option_name(const char *arg, size_t *len)
@@ -341,10 +346,9 @@ int cli_option_name(const char *arg, size_t *len)
     return 0;
 }
 
-int cli_option_value(int argc, char **argv, int *k, size_t len, int takes_value,
-                     const char **value)
+int cli_option_value(int argc, char **argv, int *k, const char *arg, size_t len,
+                     int takes_value, const char **value)
 {
-    const char *arg = argv[*k];
     *value = NULL;
     if (arg[len] == '=') {
         if (!takes_value)
