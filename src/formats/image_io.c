@@ -387,15 +387,6 @@ int imgio_stream_supported(const char *path)
     return backend_of(ext) == BACKEND_EXR || tiff_format(ext);
 }
 
-static char *copy_text(const char *s)
-{
-    size_t n = strlen(s) + 1;
-    char *c = malloc(n);
-    if (c)
-        memcpy(c, s, n);
-    return c;
-}
-
 void imgio_stream_abandon(imgio_stream *s)
 {
     if (!s)
@@ -425,7 +416,7 @@ sc_status imgio_stream_open(const char *path, imgio_kind kind, int width, int he
                        "that way",
                        path);
     imgio_stream *s = calloc(1, sizeof *s);
-    if (!s || !(s->path = copy_text(path)) ||
+    if (!s || !(s->path = strdup(path)) ||
         (kind == IMGIO_ID &&
          !(s->ids = malloc((size_t)tile * (size_t)tile * sizeof *s->ids)))) {
         imgio_stream_abandon(s);
