@@ -259,13 +259,12 @@ static int sample_pair(void *context, int thread, double u, double v, double *va
     const lines_axis *m = context;
     const pair_shared *s = m->shared;
     int a = m->axis;
-    csg_ray r = lines_axis_ray(a, 0, u, v);
     arena *scratch = &s->work.arenas[thread];
-    arena_reset(scratch);
+    csg_ray r;
     span_list sa, sb;
-    if (!csg_spans(s->a, &r, scratch, &sa) || !csg_spans(s->b, &r, scratch, &sb))
+    double eps;
+    if (!lines_pair_spans(a, u, v, s->a, s->b, scratch, &r, &sa, &sb, &eps))
         return 0;
-    double eps = fmax(csg_eps(s->a, r.o, r.d), csg_eps(s->b, r.o, r.d));
     int oom = 0;
     span_list both = span_combine(SPAN_INTERSECTION, sa, sb, eps, scratch, &oom);
     if (oom)
