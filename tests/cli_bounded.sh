@@ -125,7 +125,7 @@ else
     check
     timeout 300 "$bin" render slow.csg -o out/old.png --depth=out/d.exr --imgsize=4000,4000 --max-memory=200M 2>stderr.txt
     rc=$?
-    [ "$rc" = 2 ] && grep -q "^spancast: error: cannot write 'out/old.png': a 4000x4000 render needs 244.1 MiB for its image buffers, more than the memory limit of 200.0 MiB leaves ([0-9.]* [KM]iB in use); only .exr outputs are written tile by tile\$" stderr.txt ||
+    [ "$rc" = 2 ] && grep -q "^spancast: error: cannot write 'out/old.png': a 4000x4000 render needs 244.1 MiB for its image buffers, more than the memory limit of 200.0 MiB leaves ([0-9.]* [KM]iB in use); only .exr and .tif outputs are written tile by tile\$" stderr.txt ||
         fail "image buffers past --max-memory: exit $rc, stderr '$(cat stderr.txt)'"
     [ "$(sha256sum out/old.png)" = "$old_sum" ] || fail "--max-memory: old.png was changed"
     check
