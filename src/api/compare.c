@@ -88,15 +88,12 @@ static int sample_compare(void *context, int thread, double u, double v, double 
 {
     const lines_axis *m = context;
     const compare_shared *s = m->shared;
-    int a = m->axis;
-    csg_ray r = lines_axis_ray(a, 0, u, v);
     arena *scratch = &s->work.arenas[thread];
-    arena_reset(scratch);
-    span_list sa = {NULL, 0}, sb = {NULL, 0};
-    if ((s->a->root != CSG_EMPTY && !csg_spans(s->a, &r, scratch, &sa)) ||
-        (s->b->root != CSG_EMPTY && !csg_spans(s->b, &r, scratch, &sb)))
+    csg_ray r;
+    span_list sa, sb;
+    double eps;
+    if (!lines_pair_spans(m->axis, u, v, s->a, s->b, scratch, &r, &sa, &sb, &eps))
         return 0;
-    double eps = fmax(csg_eps(s->a, r.o, r.d), csg_eps(s->b, r.o, r.d));
     int oom = 0;
     span_list only_a = span_combine(SPAN_DIFFERENCE, sa, sb, eps, scratch, &oom);
     span_list only_b = span_combine(SPAN_DIFFERENCE, sb, sa, eps, scratch, &oom);

@@ -20,6 +20,18 @@ csg_ray lines_axis_ray(int a, double at, double u, double v)
     return r;
 }
 
+int lines_pair_spans(int a, double u, double v, const csg_tree *ta, const csg_tree *tb,
+                     arena *scratch, csg_ray *r, span_list *sa, span_list *sb,
+                     double *eps)
+{
+    *r = lines_axis_ray(a, 0, u, v);
+    arena_reset(scratch);
+    if (!csg_spans(ta, r, scratch, sa) || !csg_spans(tb, r, scratch, sb))
+        return 0;
+    *eps = fmax(csg_eps(ta, r->o, r->d), csg_eps(tb, r->o, r->d));
+    return 1;
+}
+
 uint64_t lines_signature(uint64_t h, span_list s)
 {
     h = quad_mix(h, s.n);

@@ -16,6 +16,14 @@
  * coordinate is at and whose next two (cyclically) are u and v. */
 csg_ray lines_axis_ray(int a, double at, double u, double v);
 
+/* The whole line *r along axis a through (u, v) (lines_axis_ray at 0) and
+ * the spans of the trees ta and tb along it (none for an empty tree), in
+ * scratch, which is reset first; *eps is the larger of the two trees'
+ * tolerances on the line. Returns 0 when out of memory. */
+int lines_pair_spans(int a, double u, double v, const csg_tree *ta, const csg_tree *tb,
+                     arena *scratch, csg_ray *r, span_list *sa, span_list *sb,
+                     double *eps);
+
 /* The context of one axis's line sampler (quad_integrate3): what the three
  * axes share, which is the query's own struct (measure_shared,
  * pair_shared, compare_shared), and the axis. */

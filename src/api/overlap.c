@@ -16,6 +16,7 @@
  * regularisation (span.h), so solids that only touch within the scene
  * tolerance leave nothing, and the overlap is exact per line.
  */
+#define _POSIX_C_SOURCE 200809L /* strdup */
 #include <math.h>
 #include <omp.h>
 #include <stdlib.h>
@@ -88,15 +89,6 @@ void sc_objects_release(sc_objects *objects)
     free(objects);
 }
 
-static char *copy_string(const char *s)
-{
-    size_t n = strlen(s) + 1;
-    char *c = malloc(n);
-    if (c)
-        memcpy(c, s, n);
-    return c;
-}
-
 /* Clears the '!' marks from first and its siblings and their subtrees
  * (*marked says whether there was one), and returns the node the lowering
  * would choose as the design's root now (lower.c's find_root): the first
@@ -151,7 +143,7 @@ static sc_status build_object(sc_objects *o, size_t k, int faithful, sc_error *e
     choose_root(o);
     sc_scene *s = calloc(1, sizeof *s);
     sc_status st = SC_OK;
-    if (!s || !(s->path = copy_string(o->path)))
+    if (!s || !(s->path = strdup(o->path)))
         st = err_nomem(error, NULL);
     else
         st = build_scene(o->typed, faithful, &s->tree, &s->look, &s->warnings,
@@ -181,7 +173,7 @@ sc_status sc_objects_load(const char *path, const sc_load_options *options,
     if (st != SC_OK)
         return st;
     sc_objects *o = calloc(1, sizeof *o);
-    if (!o || !(o->path = copy_string(path))) {
+    if (!o || !(o->path = strdup(path))) {
         free(o);
         return err_nomem(error, NULL);
     }
@@ -267,13 +259,12 @@ static int sample_pair(void *context, int thread, double u, double v, double *va
     const lines_axis *m = context;
     const pair_shared *s = m->shared;
     int a = m->axis;
-    csg_ray r = lines_axis_ray(a, 0, u, v);
     arena *scratch = &s->work.arenas[thread];
-    arena_reset(scratch);
+    csg_ray r;
     span_list sa, sb;
-    if (!csg_spans(s->a, &r, scratch, &sa) || !csg_spans(s->b, &r, scratch, &sb))
+    double eps;
+    if (!lines_pair_spans(a, u, v, s->a, s->b, scratch, &r, &sa, &sb, &eps))
         return 0;
-    double eps = fmax(csg_eps(s->a, r.o, r.d), csg_eps(s->b, r.o, r.d));
     int oom = 0;
     span_list both = span_combine(SPAN_INTERSECTION, sa, sb, eps, scratch, &oom);
     if (oom)

@@ -69,12 +69,12 @@ static void describe_end(const csg_tree *t, const csg_ray *r, const span_end *e,
     out->normal[2] = n.z + 0.0;
 }
 
-/* The tree's spans along r, from a fresh scratch arena the caller frees
- * (also on failure). The query runs in a cancel token of its own, without
- * a flag or a budget, only to learn whether an implicit leaf gave up on
- * the line at the root finder's bound (SOLVE_MAX_EVALS): its spans would
- * then be cut short, so that is SC_ERR_LIMIT at the leaf rather than a
- * silently truncated answer. Also SC_ERR_NOMEM. */
+/* The tree's spans along r, from a fresh scratch arena: the caller frees
+ * it on success, this frees it on failure. The query runs in a cancel token of its own,
+ * without a flag or a budget, only to learn whether an implicit leaf gave up on the line
+ * at the root finder's bound (SOLVE_MAX_EVALS): its spans would then be cut short, so
+ * that is SC_ERR_LIMIT at the leaf rather than a silently truncated answer. Also
+ * SC_ERR_NOMEM. */
 static sc_status line_spans(const csg_tree *t, const csg_ray *r, arena *scratch,
                             span_list *out, sc_error *error)
 {
@@ -86,10 +86,15 @@ static sc_status line_spans(const csg_tree *t, const csg_ray *r, arena *scratch,
     int ok = csg_spans(t, r, scratch, out);
     cancel_leave(&scope);
     cancel_reason reason = cancel_check(&token);
+    sc_status st = SC_OK;
     if (reason != CANCEL_NONE)
-        return render_limit_error(t, (int)reason, atomic_load(&token.leaf),
-                                  atomic_load(&token.prim), error);
-    return ok ? SC_OK : err_nomem(error, NULL);
+        st = render_limit_error(t, (int)reason, atomic_load(&token.leaf),
+                                atomic_load(&token.prim), error);
+    else if (!ok)
+        st = err_nomem(error, NULL);
+    if (st != SC_OK)
+        arena_free(scratch);
+    return st;
 }
 
 sc_status sc_scene_spans(const sc_scene *scene, const sc_ray_query *query,
@@ -120,10 +125,8 @@ sc_status sc_scene_spans(const sc_scene *scene, const sc_ray_query *query,
     arena scratch;
     span_list spans;
     sc_status st = line_spans(t, &r, &scratch, &spans, error);
-    if (st != SC_OK) {
-        arena_free(&scratch);
+    if (st != SC_OK)
         return st;
-    }
     sc_span_list *list = malloc(sizeof *list + (size_t)spans.n * sizeof list->spans[0]);
     if (!list) {
         arena_free(&scratch);
@@ -219,10 +222,8 @@ sc_status sc_scene_inside(const sc_scene *scene, const double p[3], int *where,
         arena scratch;
         span_list spans;
         sc_status st = line_spans(t, &r, &scratch, &spans, error);
-        if (st != SC_OK) {
-            arena_free(&scratch);
+        if (st != SC_OK)
             return st;
-        }
         int on = 0, in = 0;
         for (uint32_t k = 0; k < spans.n; k++) {
             const span *s = &spans.v[k];

@@ -12,25 +12,6 @@ static size_t size_of(const void *p)
     return size;
 }
 
-sc_status sized_read(void *dst, size_t dst_size, const void *src, size_t min_size,
-                     const char *type, sc_error *error)
-{
-    size_t size = size_of(src);
-    if (size < min_size)
-        return err_set(error, SC_ERR_ARGUMENT, NULL,
-                       "%s has size %zu, less than the %zu of any release: it was not "
-                       "set up by %s_init",
-                       type, size, min_size, type);
-    if (size > dst_size)
-        return err_set(error, SC_ERR_ARGUMENT, NULL,
-                       "%s has size %zu: it comes from a newer spancast than this "
-                       "library %s, which knows %zu bytes of it",
-                       type, size, SPANCAST_VERSION_STRING, dst_size);
-    memcpy(dst, src, size);
-    memcpy(dst, &dst_size, sizeof dst_size);
-    return SC_OK;
-}
-
 sc_status sized_check(const void *p, size_t min_size, const char *type, sc_error *error)
 {
     size_t size = size_of(p);
@@ -39,6 +20,23 @@ sc_status sized_check(const void *p, size_t min_size, const char *type, sc_error
                        "%s has size %zu, less than the %zu of any release: it was not "
                        "set up by %s_init",
                        type, size, min_size, type);
+    return SC_OK;
+}
+
+sc_status sized_read(void *dst, size_t dst_size, const void *src, size_t min_size,
+                     const char *type, sc_error *error)
+{
+    sc_status st = sized_check(src, min_size, type, error);
+    if (st != SC_OK)
+        return st;
+    size_t size = size_of(src);
+    if (size > dst_size)
+        return err_set(error, SC_ERR_ARGUMENT, NULL,
+                       "%s has size %zu: it comes from a newer spancast than this "
+                       "library %s, which knows %zu bytes of it",
+                       type, size, SPANCAST_VERSION_STRING, dst_size);
+    memcpy(dst, src, size);
+    memcpy(dst, &dst_size, sizeof dst_size);
     return SC_OK;
 }
 

@@ -96,11 +96,9 @@ static int call_failed(const sc_error *error, int status)
 static int apply_check_option(check_args *a, const char *name, const char *value)
 {
     double v;
-    if (!strcmp(name, "--json")) {
-        a->json = 1;
-    } else if (!strcmp(name, "--faithful")) {
-        a->faithful = 1;
-    } else if (!strcmp(name, "--quiet")) {
+    if (cli_output_flag(name, &a->json, &a->faithful))
+        return 0;
+    if (!strcmp(name, "--quiet")) {
         a->quiet = 1;
     } else if (!strcmp(name, "--tolerance")) {
         if (!cli_parse_number(value, &v) || !(v > 0 && v < 1))
@@ -142,14 +140,11 @@ static int apply_check_option(check_args *a, const char *name, const char *value
 
 static int parse_check_args(check_args *a, int argc, char **argv)
 {
-    int only_files = 0, wanted = a->command == COMPARE ? 2 : 1;
-    for (int k = 2; k < argc; k++) {
-        const char *arg = argv[k];
-        if (!only_files && !strcmp(arg, "--")) {
-            only_files = 1;
-            continue;
-        }
-        if (only_files || arg[0] != '-' || !arg[1]) {
+    int wanted = a->command == COMPARE ? 2 : 1;
+    int k = 1, only_files = 0, operand;
+    const char *arg;
+    while ((arg = cli_next_arg(argc, argv, &k, &only_files, &operand))) {
+        if (operand) {
             if (a->input_count == wanted)
                 return cli_usage_error("unexpected argument '%s'", arg);
             a->inputs[a->input_count++] = arg;
@@ -157,10 +152,10 @@ static int parse_check_args(check_args *a, int argc, char **argv)
         }
         if (!strcmp(arg, "-q"))
             arg = "--quiet";
-        if (arg[1] != '-')
-            return cli_usage_error("unknown option '%s'", arg);
-        const char *eq = strchr(arg, '=');
-        size_t len = eq ? (size_t)(eq - arg) : strlen(arg);
+        size_t len;
+        int st = cli_option_name(arg, &len);
+        if (st)
+            return st;
         const check_option *spec =
             cli_find_option(check_options, sizeof check_options / sizeof check_options[0],
                             sizeof check_options[0], arg, len);
@@ -169,19 +164,11 @@ static int parse_check_args(check_args *a, int argc, char **argv)
         if (!(spec->commands & a->command))
             return cli_usage_error("option '%.*s' does not apply to '%s'", (int)len, arg,
                                    command_name(a->command));
-        const char *value = NULL;
-        if (eq) {
-            if (!spec->takes_value)
-                return cli_usage_error("option '%.*s' takes no value", (int)len, arg);
-            value = eq + 1;
-        } else if (spec->takes_value) {
-            if (k + 1 >= argc)
-                return cli_usage_error("option '%s' expects a value", arg);
-            value = argv[++k];
-        }
-        if (spec->takes_value && !*value)
-            return cli_usage_error("option '%.*s' expects a value", (int)len, arg);
-        int st = apply_check_option(a, spec->name, value);
+        const char *value;
+        st = cli_option_value(argc, argv, &k, arg, len, spec->takes_value, &value);
+        if (st)
+            return st;
+        st = apply_check_option(a, spec->name, value);
         if (st)
             return st;
     }

@@ -40,6 +40,31 @@ int cli_parse_numbers(const char *s, double *out, int max);
 const void *cli_find_option(const void *table, size_t count, size_t stride,
                             const char *name, size_t len);
 
+/* The next argument of a command's walk over argv after argv[*k]
+ * (advancing *k), or NULL at the end. *operand tells a file (anything
+ * after the first "--", "-" alone, anything not beginning with '-') from
+ * an option; that first "--" itself is skipped and sets *only_files, which
+ * starts at 0. (render_options.c) */
+const char *cli_next_arg(int argc, char **argv, int *k, int *only_files, int *operand);
+
+/* The length of the name of the option arg (which begins with '-' and is
+ * not "-"): up to its '=', if any. Returns 0, or the exit status of a
+ * usage error it printed for a short option. (render_options.c) */
+int cli_option_name(const char *arg, size_t *len);
+
+/* The value of the option arg (argv[*k], or the long name of a short
+ * option there), whose name is its first len bytes: after its '=', else
+ * when it takes one the next argument (advancing *k); NULL for a flag.
+ * Returns 0, or the exit status of a usage error it printed: a flag given
+ * a value, or a value missing or empty. (render_options.c) */
+int cli_option_value(int argc, char **argv, int *k, const char *arg, size_t len,
+                     int takes_value, const char **value);
+
+/* The output flags of the query commands (spans, inside, measure,
+ * overlaps, compare): sets *json for --json, *faithful for --faithful and
+ * returns 1; 0 for another name. (render_options.c) */
+int cli_output_flag(const char *name, int *json, int *faithful);
+
 /* The names of --view in the order of their SC_VIEW_* bits: bit k is
  * 1 << k. (render_options.c) */
 #define CLI_VIEW_NAME_COUNT 4

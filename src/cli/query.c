@@ -138,11 +138,9 @@ static int apply_query_option(query_args *a, const char *name, const char *value
 {
     query_item item;
     memset(&item, 0, sizeof item);
-    if (!strcmp(name, "--json")) {
-        a->json = 1;
-    } else if (!strcmp(name, "--faithful")) {
-        a->faithful = 1;
-    } else if (!strcmp(name, "--both-ways")) {
+    if (cli_output_flag(name, &a->json, &a->faithful))
+        return 0;
+    if (!strcmp(name, "--both-ways")) {
         a->both_ways = 1;
     } else if (!strcmp(name, "--ray")) {
         if (cli_parse_numbers(value, item.v, 6) != 6)
@@ -189,23 +187,19 @@ static int parse_query_args(query_args *a, int argc, char **argv)
     const char *command = a->spans ? "spans" : "inside";
     sc_render_options scratch; /* checks the camera options before loading */
     sc_render_options_init(&scratch);
-    int only_files = 0;
-    for (int k = 2; k < argc; k++) {
-        const char *arg = argv[k];
-        if (!only_files && !strcmp(arg, "--")) {
-            only_files = 1;
-            continue;
-        }
-        if (only_files || arg[0] != '-' || !arg[1]) {
+    int k = 1, only_files = 0, operand;
+    const char *arg;
+    while ((arg = cli_next_arg(argc, argv, &k, &only_files, &operand))) {
+        if (operand) {
             if (a->input)
                 return cli_usage_error("unexpected argument '%s'", arg);
             a->input = arg;
             continue;
         }
-        if (arg[1] != '-')
-            return cli_usage_error("unknown option '%s'", arg);
-        const char *eq = strchr(arg, '=');
-        size_t len = eq ? (size_t)(eq - arg) : strlen(arg);
+        size_t len;
+        int st = cli_option_name(arg, &len);
+        if (st)
+            return st;
         const query_option *spec =
             cli_find_option(query_options, sizeof query_options / sizeof query_options[0],
                             sizeof query_options[0], arg, len);
@@ -217,19 +211,10 @@ static int parse_query_args(query_args *a, int argc, char **argv)
             return cli_usage_error("option '%.*s' does not apply to '%s'", (int)len, arg,
                                    command);
         int takes_value = spec ? spec->takes_value : camera;
-        const char *value = NULL;
-        if (eq) {
-            if (!takes_value)
-                return cli_usage_error("option '%.*s' takes no value", (int)len, arg);
-            value = eq + 1;
-        } else if (takes_value) {
-            if (k + 1 >= argc)
-                return cli_usage_error("option '%s' expects a value", arg);
-            value = argv[++k];
-        }
-        if (takes_value && !*value)
-            return cli_usage_error("option '%.*s' expects a value", (int)len, arg);
-        int st;
+        const char *value;
+        st = cli_option_value(argc, argv, &k, arg, len, takes_value, &value);
+        if (st)
+            return st;
         if (spec) {
             char name[32];
             snprintf(name, sizeof name, "%.*s", (int)len, arg);

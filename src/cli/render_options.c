@@ -322,3 +322,55 @@ const void *cli_find_option(const void *table, size_t count, size_t stride,
     }
     return NULL;
 }
+
+const char *cli_next_arg(int argc, char **argv, int *k, int *only_files, int *operand)
+{
+    while (++*k < argc) {
+        const char *arg = argv[*k];
+        if (!*only_files && !strcmp(arg, "--")) {
+            *only_files = 1;
+            continue;
+        }
+        *operand = *only_files || arg[0] != '-' || !arg[1];
+        return arg;
+    }
+    return NULL;
+}
+
+int cli_option_name(const char *arg, size_t *len)
+{
+    if (arg[1] != '-')
+        return cli_usage_error("unknown option '%s'", arg);
+    const char *eq = strchr(arg, '=');
+    *len = eq ? (size_t)(eq - arg) : strlen(arg);
+    return 0;
+}
+
+int cli_option_value(int argc, char **argv, int *k, const char *arg, size_t len,
+                     int takes_value, const char **value)
+{
+    *value = NULL;
+    if (arg[len] == '=') {
+        if (!takes_value)
+            return cli_usage_error("option '%.*s' takes no value", (int)len, arg);
+        *value = arg + len + 1;
+    } else if (takes_value) {
+        if (*k + 1 >= argc)
+            return cli_usage_error("option '%s' expects a value", arg);
+        *value = argv[++*k];
+    }
+    if (takes_value && !**value)
+        return cli_usage_error("option '%.*s' expects a value", (int)len, arg);
+    return 0;
+}
+
+int cli_output_flag(const char *name, int *json, int *faithful)
+{
+    if (!strcmp(name, "--json"))
+        *json = 1;
+    else if (!strcmp(name, "--faithful"))
+        *faithful = 1;
+    else
+        return 0;
+    return 1;
+}

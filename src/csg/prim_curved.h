@@ -19,6 +19,10 @@ enum { PRIM_PART_SURFACE = 0, PRIM_PART_CLIP_FACE = 1 };
 int prim_box_clip(const bbox *b, vec3 o, vec3 d, double *t0, uint16_t *face0, double *t1,
                   uint16_t *face1);
 
+/* The outward normal of the clip face part (PRIM_PART_CLIP_FACE or
+ * more) of a clipped leaf: a unit axis. */
+vec3 prim_clip_face_normal(uint16_t part);
+
 uint32_t prim_torus_spans(const prim *p, uint32_t leaf, vec3 o, vec3 d, span *out,
                           uint32_t cap);
 vec3 prim_torus_normal(const prim *p, vec3 q);

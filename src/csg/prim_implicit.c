@@ -103,11 +103,8 @@ uint32_t prim_implicit_spans(const prim *p, uint32_t leaf, vec3 o, vec3 d, span 
 
 vec3 prim_implicit_normal(const prim *p, vec3 q, uint16_t part)
 {
-    if (part >= PRIM_PART_CLIP_FACE) {
-        int face = part - PRIM_PART_CLIP_FACE, axis = face >> 1;
-        double sign = (face & 1) ? 1.0 : -1.0;
-        return v3(axis == 0 ? sign : 0, axis == 1 ? sign : 0, axis == 2 ? sign : 0);
-    }
+    if (part >= PRIM_PART_CLIP_FACE)
+        return prim_clip_face_normal(part);
     const expr_program *f = p->u.implicit.program;
     double gx, gy, gz;
     expr_eval_dual(f, q, v3(1, 0, 0), &gx);

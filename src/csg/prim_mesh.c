@@ -758,6 +758,26 @@ static void gather_range(const prim_mesh *m, vec3 o, vec3 d, double lo, double h
     gather(m, &f, &r, &w, cs);
 }
 
+/* One crossing of a walk along the line by winding number: updates the
+ * winding *wind and, where the line enters the solid, the *start of the
+ * span. Returns 1 where the line leaves the solid, with the span that
+ * ends there in *closed, else 0 (and *closed is not touched). */
+static int wind_step(const crossing *c, uint32_t leaf, int *wind, span_end *start,
+                     span *closed)
+{
+    int was_in = *wind > 0;
+    *wind += c->exit ? -1 : 1;
+    int is_in = *wind > 0;
+    if (!was_in && is_in) {
+        *start = end_at(c, leaf);
+    } else if (was_in && !is_in) {
+        closed->in = *start;
+        closed->out = end_at(c, leaf);
+        return 1;
+    }
+    return 0;
+}
+
 /* The spans of the whole line from all its crossings, by the rules of the
  * header (the bounds on crossings and spans, the fill past them). */
 static uint32_t spans_of(const crossings *cs, uint32_t leaf, span *out, uint32_t cap)
@@ -766,14 +786,7 @@ static uint32_t spans_of(const crossings *cs, uint32_t leaf, span *out, uint32_t
     int wind = 0, full = 0;
     span_end start = {0, leaf, 0, 0};
     for (uint32_t i = 0; i < cs->n && !full; i++) {
-        int was_in = wind > 0;
-        wind += cs->v[i].exit ? -1 : 1;
-        int is_in = wind > 0;
-        if (!was_in && is_in) {
-            start = end_at(&cs->v[i], leaf);
-        } else if (was_in && !is_in) {
-            out[n].in = start;
-            out[n].out = end_at(&cs->v[i], leaf);
+        if (wind_step(&cs->v[i], leaf, &wind, &start, &out[n])) {
             n++;
             full = n == cap;
         }
@@ -818,17 +831,11 @@ static uint32_t partial_spans(const crossings *cs, double t_end, double eps,
     int wind = 0;
     span_end start = {0, leaf, 0, 0};
     for (uint32_t i = 0; i < cs->n; i++) {
-        int was_in = wind > 0;
-        wind += cs->v[i].exit ? -1 : 1;
-        int is_in = wind > 0;
-        if (!was_in && is_in) {
-            start = end_at(&cs->v[i], leaf);
-        } else if (was_in && !is_in) {
+        span closed;
+        if (wind_step(&cs->v[i], leaf, &wind, &start, &closed)) {
             if (n == cap)
                 return UINT32_MAX;
-            tmp[n].in = start;
-            tmp[n].out = end_at(&cs->v[i], leaf);
-            n++;
+            tmp[n++] = closed;
         }
     }
     int open = wind > 0;

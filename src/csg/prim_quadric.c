@@ -26,6 +26,13 @@
 
 #include "csg/prim_curved.h"
 
+vec3 prim_clip_face_normal(uint16_t part)
+{
+    int face = part - PRIM_PART_CLIP_FACE, axis = face >> 1;
+    double sign = (face & 1) ? 1.0 : -1.0;
+    return v3(axis == 0 ? sign : 0, axis == 1 ? sign : 0, axis == 2 ? sign : 0);
+}
+
 int prim_box_clip(const bbox *b, vec3 o, vec3 d, double *t0, uint16_t *face0, double *t1,
                   uint16_t *face1)
 {
@@ -149,11 +156,8 @@ uint32_t prim_quadric_spans(const prim *p, uint32_t leaf, vec3 o, vec3 d, span *
 
 vec3 prim_quadric_normal(const prim *p, vec3 x, uint16_t part)
 {
-    if (part >= PRIM_PART_CLIP_FACE) {
-        int face = part - PRIM_PART_CLIP_FACE, axis = face >> 1;
-        double sign = (face & 1) ? 1.0 : -1.0;
-        return v3(axis == 0 ? sign : 0, axis == 1 ? sign : 0, axis == 2 ? sign : 0);
-    }
+    if (part >= PRIM_PART_CLIP_FACE)
+        return prim_clip_face_normal(part);
     const double *q = p->u.quadric.a;
     vec3 g = v3(2 * q[0] * x.x + q[3] * x.y + q[5] * x.z + q[6],
                 2 * q[1] * x.y + q[3] * x.x + q[4] * x.z + q[7],

@@ -42,6 +42,7 @@
 #include <math.h>
 
 #include "csg/prim_curved.h"
+#include "implicit/solve.h"
 
 /* F at a local point, rho = |(x, y)| given. */
 static double torus_value(double big_r, double r, double rho, double z)
@@ -131,28 +132,26 @@ static int poly_roots(const double *c, int deg, double lo, double hi, double *ro
     return n;
 }
 
-/* Newton-bisection on F over [a, b], F differing in sign at the ends. */
+/* The torus along a line: F at c + s u (s is the line's t) and its
+ * derivative. */
+typedef struct torus_line {
+    double big_r, r;
+    vec3 c, u;
+} torus_line;
+
+static double torus_line_value(const void *ctx, double s, double *df)
+{
+    const torus_line *line = ctx;
+    return torus_f(line->big_r, line->r, line->c, line->u, s, df);
+}
+
+/* The root of F along the line in [a, b], where F differs in sign at the
+ * ends: safeguarded Newton-bisection to the resolution of doubles. */
 static double torus_root(double big_r, double r, vec3 c, vec3 u, double a, double b)
 {
+    torus_line line = {big_r, r, c, u};
     int neg_a = torus_f(big_r, r, c, u, a, NULL) < 0;
-    double x = 0.5 * (a + b), width = b - a;
-    for (int it = 0; it < 200; it++) {
-        double df, fx = torus_f(big_r, r, c, u, x, &df);
-        if ((fx < 0) == neg_a)
-            a = x;
-        else
-            b = x;
-        if (b - a <= 2 * DBL_EPSILON * fmax(fabs(a), fabs(b)))
-            break;
-        double next = x - fx / df;
-        if (!(next > a && next < b) || fabs(next - x) > 0.5 * width)
-            next = 0.5 * (a + b);
-        width = fabs(next - x);
-        if (next == x)
-            break;
-        x = next;
-    }
-    return 0.5 * (a + b);
+    return solve_newton_bracket(torus_line_value, &line, a, b, neg_a, 200);
 }
 
 uint32_t prim_torus_spans(const prim *p, uint32_t leaf, vec3 o, vec3 d, span *out,

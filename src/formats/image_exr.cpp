@@ -14,7 +14,7 @@
 //
 // This file converts OpenEXR's exceptions into messages and never lets one
 // out.
-#include "formats/image_backend.h"
+#include "formats/image_exr.h"
 
 #include <OpenEXR/ImfChannelList.h>
 #include <OpenEXR/ImfFrameBuffer.h>
@@ -40,36 +40,59 @@ extern "C" void imgio_exr_message(char *err, size_t err_size, const char *what)
                   text.empty() ? "unknown OpenEXR error" : text.c_str());
 }
 
+void exr_exception_message(char *err, size_t err_size)
+{
+    try {
+        throw;
+    } catch (const std::bad_alloc &) {
+        imgio_exr_message(err, err_size, "out of memory");
+    } catch (const std::exception &e) {
+        imgio_exr_message(err, err_size, e.what());
+    }
+}
+
+void exr_add_metadata(Imf::Header &header, const imgio_image *img)
+{
+    header.insert("Software", Imf::StringAttribute(img->software));
+    if (img->camera) {
+        header.insert("comments",
+                      Imf::StringAttribute(std::string("camera: ") + img->camera));
+        header.insert("spancast:camera", Imf::StringAttribute(img->camera));
+    }
+}
+
+const char *exr_samples(const void *pixels, imgio_sample sample, size_t values,
+                        std::vector<Imath::half> &halves, Imf::PixelType &type,
+                        size_t &sample_size)
+{
+    type = Imf::FLOAT;
+    sample_size = sizeof(float);
+    if (sample != IMGIO_UINT8)
+        return static_cast<const char *>(pixels);
+    halves.resize(values);
+    const unsigned char *bytes = static_cast<const unsigned char *>(pixels);
+    for (size_t k = 0; k < values; k++)
+        halves[k] = Imath::half(bytes[k] / 255.0f);
+    type = Imf::HALF;
+    sample_size = sizeof(Imath::half);
+    return reinterpret_cast<const char *>(halves.data());
+}
+
 extern "C" int imgio_exr_write(const imgio_image *img, const char *path, char *err,
                                size_t err_size)
 {
     try {
         Imf::Header header(img->width, img->height);
         header.compression() = Imf::ZIP_COMPRESSION;
-        header.insert("Software", Imf::StringAttribute(img->software));
-        if (img->camera) {
-            header.insert("comments",
-                          Imf::StringAttribute(std::string("camera: ") + img->camera));
-            header.insert("spancast:camera", Imf::StringAttribute(img->camera));
-        }
-        // 8-bit values go to the file as half (v / 255): exact for a mask's
-        // 0 and 255, as OpenImageIO converted them. Floats go as they are.
+        exr_add_metadata(header, img);
         size_t pixels = (size_t)img->width * (size_t)img->height;
         size_t values = pixels * (size_t)img->channels;
         // (A frame buffer slice must have the file's type.)
         std::vector<Imath::half> halves;
-        const char *data = static_cast<const char *>(img->pixels);
-        Imf::PixelType type = Imf::FLOAT;
-        size_t sample_size = sizeof(float);
-        if (img->sample == IMGIO_UINT8) {
-            halves.resize(values);
-            const unsigned char *bytes = static_cast<const unsigned char *>(img->pixels);
-            for (size_t k = 0; k < values; k++)
-                halves[k] = Imath::half(bytes[k] / 255.0f);
-            data = reinterpret_cast<const char *>(halves.data());
-            type = Imf::HALF;
-            sample_size = sizeof(Imath::half);
-        }
+        Imf::PixelType type;
+        size_t sample_size;
+        const char *data =
+            exr_samples(img->pixels, img->sample, values, halves, type, sample_size);
         Imf::FrameBuffer frame;
         size_t x_stride = sample_size * (size_t)img->channels;
         for (int c = 0; c < img->channels; c++) {
@@ -82,10 +105,8 @@ extern "C" int imgio_exr_write(const imgio_image *img, const char *path, char *e
         file.setFrameBuffer(frame);
         file.writePixels(img->height);
         return 1;
-    } catch (const std::bad_alloc &) {
-        imgio_exr_message(err, err_size, "out of memory");
-    } catch (const std::exception &e) {
-        imgio_exr_message(err, err_size, e.what());
+    } catch (const std::exception &) {
+        exr_exception_message(err, err_size);
     }
     return 0;
 }

@@ -13,12 +13,11 @@
 //
 // As in image_exr.cpp, OpenEXR's exceptions become messages here and
 // never leave this file.
-#include "formats/image_backend.h"
+#include "formats/image_exr.h"
 
 #include <OpenEXR/ImfChannelList.h>
 #include <OpenEXR/ImfFrameBuffer.h>
 #include <OpenEXR/ImfHeader.h>
-#include <OpenEXR/ImfStringAttribute.h>
 #include <OpenEXR/ImfTileDescription.h>
 #include <OpenEXR/ImfTiledOutputFile.h>
 #include <Imath/half.h>
@@ -57,21 +56,14 @@ extern "C" imgio_exr_tiles *imgio_exr_tiles_open(const imgio_image *img, int til
         header.lineOrder() = Imf::INCREASING_Y;
         header.setTileDescription(Imf::TileDescription((unsigned)tile, (unsigned)tile,
                                                        Imf::ONE_LEVEL, Imf::ROUND_DOWN));
-        header.insert("Software", Imf::StringAttribute(img->software));
-        if (img->camera) {
-            header.insert("comments",
-                          Imf::StringAttribute(std::string("camera: ") + img->camera));
-            header.insert("spancast:camera", Imf::StringAttribute(img->camera));
-        }
+        exr_add_metadata(header, img);
         Imf::PixelType type = img->sample == IMGIO_UINT8 ? Imf::HALF : Imf::FLOAT;
         for (int c = 0; c < img->channels; c++)
             header.channels().insert(img->channel_names[c], Imf::Channel(type));
         t->file.reset(new Imf::TiledOutputFile(path, header));
         return t;
-    } catch (const std::bad_alloc &) {
-        imgio_exr_message(err, err_size, "out of memory");
-    } catch (const std::exception &e) {
-        imgio_exr_message(err, err_size, e.what());
+    } catch (const std::exception &) {
+        exr_exception_message(err, err_size);
     }
     delete t;
     return nullptr;
@@ -84,18 +76,10 @@ extern "C" int imgio_exr_tiles_write(imgio_exr_tiles *t, int tx, int ty,
         int w = t->width - tx * t->tile < t->tile ? t->width - tx * t->tile : t->tile;
         int h = t->height - ty * t->tile < t->tile ? t->height - ty * t->tile : t->tile;
         size_t values = (size_t)w * (size_t)h * (size_t)t->channels;
-        const char *data = static_cast<const char *>(pixels);
-        Imf::PixelType type = Imf::FLOAT;
-        size_t sample_size = sizeof(float);
-        if (t->sample == IMGIO_UINT8) { // as imgio_exr_write: v / 255 as half
-            t->halves.resize(values);
-            const unsigned char *bytes = static_cast<const unsigned char *>(pixels);
-            for (size_t k = 0; k < values; k++)
-                t->halves[k] = Imath::half(bytes[k] / 255.0f);
-            data = reinterpret_cast<const char *>(t->halves.data());
-            type = Imf::HALF;
-            sample_size = sizeof(Imath::half);
-        }
+        Imf::PixelType type;
+        size_t sample_size;
+        const char *data =
+            exr_samples(pixels, t->sample, values, t->halves, type, sample_size);
         // Slices in tile coordinates: pixel (x, y) of the tile at
         // data + x * x_stride + y * y_stride.
         Imf::FrameBuffer frame;
@@ -108,10 +92,8 @@ extern "C" int imgio_exr_tiles_write(imgio_exr_tiles *t, int tx, int ty,
         t->file->setFrameBuffer(frame);
         t->file->writeTile(tx, ty);
         return 1;
-    } catch (const std::bad_alloc &) {
-        imgio_exr_message(err, err_size, "out of memory");
-    } catch (const std::exception &e) {
-        imgio_exr_message(err, err_size, e.what());
+    } catch (const std::exception &) {
+        exr_exception_message(err, err_size);
     }
     return 0;
 }
@@ -123,11 +105,8 @@ extern "C" int imgio_exr_tiles_close(imgio_exr_tiles *t, char *err, size_t err_s
     int ok = 1;
     try {
         t->file.reset(); // writes the tile offsets and closes the file
-    } catch (const std::bad_alloc &) {
-        imgio_exr_message(err, err_size, "out of memory");
-        ok = 0;
-    } catch (const std::exception &e) {
-        imgio_exr_message(err, err_size, e.what());
+    } catch (const std::exception &) {
+        exr_exception_message(err, err_size);
         ok = 0;
     }
     delete t;

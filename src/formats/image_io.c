@@ -244,9 +244,11 @@ static sc_status write_image(const char *path, imgio_kind kind, const imgio_imag
 }
 
 /* The common start of every writer: the path, the buffer, and the image
- * around it, metadata included. */
+ * around it (float samples in channels channels under names), metadata
+ * included. */
 static sc_status start(const sc_framebuffer *fb, const void *buffer, const char *what,
-                       const char *path, imgio_image *img, sc_error *error)
+                       const char *path, int channels, const char *const *names,
+                       imgio_image *img, sc_error *error)
 {
     if (!path)
         return err_set(error, SC_ERR_ARGUMENT, NULL, "no output file name");
@@ -256,11 +258,27 @@ static sc_status start(const sc_framebuffer *fb, const void *buffer, const char 
     memset(img, 0, sizeof *img);
     img->width = fb->width;
     img->height = fb->height;
+    img->channels = channels;
+    img->channel_names = names;
     img->sample = IMGIO_FLOAT;
     img->pixels = buffer;
     img->software = "spancast " SPANCAST_VERSION;
     img->camera = fb->camera_info[0] ? fb->camera_info : NULL;
     return SC_OK;
+}
+
+/* A writer that stores the buffer as it is, in samples of type sample. */
+static sc_status write_buffer(const sc_framebuffer *fb, const void *buffer,
+                              const char *what, const char *path, imgio_kind kind,
+                              int channels, const char *const *names, imgio_sample sample,
+                              sc_error *error)
+{
+    imgio_image img;
+    sc_status st = start(fb, buffer, what, path, channels, names, &img, error);
+    if (st)
+        return st;
+    img.sample = sample;
+    return write_image(path, kind, &img, fb->cancel, error);
 }
 
 static sc_status out_of_memory(const char *path, sc_error *error)
@@ -282,11 +300,10 @@ sc_status sc_framebuffer_write_color(const sc_framebuffer *fb, const char *path,
                                      sc_error *error)
 {
     imgio_image img;
-    sc_status st = start(fb, fb ? fb->color : NULL, "colour", path, &img, error);
+    sc_status st =
+        start(fb, fb ? fb->color : NULL, "colour", path, 3, rgb_names, &img, error);
     if (st)
         return st;
-    img.channels = 3;
-    img.channel_names = rgb_names;
     char ext[16];
     extension_of(path, ext, sizeof ext);
     if (float_color_format(ext)) { /* linear (color.h) */
@@ -311,52 +328,34 @@ sc_status sc_framebuffer_write_color(const sc_framebuffer *fb, const char *path,
 sc_status sc_framebuffer_write_mask(const sc_framebuffer *fb, const char *path,
                                     sc_error *error)
 {
-    imgio_image img;
-    sc_status st = start(fb, fb ? fb->mask : NULL, "mask", path, &img, error);
-    if (st)
-        return st;
     static const char *const names[] = {"Y"};
-    img.channels = 1;
-    img.channel_names = names;
-    img.sample = IMGIO_UINT8;
-    return write_image(path, IMGIO_MASK, &img, fb->cancel, error);
+    return write_buffer(fb, fb ? fb->mask : NULL, "mask", path, IMGIO_MASK, 1, names,
+                        IMGIO_UINT8, error);
 }
 
 sc_status sc_framebuffer_write_depth(const sc_framebuffer *fb, const char *path,
                                      sc_error *error)
 {
-    imgio_image img;
-    sc_status st = start(fb, fb ? fb->depth : NULL, "depth", path, &img, error);
-    if (st)
-        return st;
     static const char *const names[] = {"Z"};
-    img.channels = 1;
-    img.channel_names = names;
-    return write_image(path, IMGIO_DEPTH, &img, fb->cancel, error);
+    return write_buffer(fb, fb ? fb->depth : NULL, "depth", path, IMGIO_DEPTH, 1, names,
+                        IMGIO_FLOAT, error);
 }
 
 sc_status sc_framebuffer_write_normal(const sc_framebuffer *fb, const char *path,
                                       sc_error *error)
 {
-    imgio_image img;
-    sc_status st = start(fb, fb ? fb->normal : NULL, "normal", path, &img, error);
-    if (st)
-        return st;
-    img.channels = 3;
-    img.channel_names = xyz_names;
-    return write_image(path, IMGIO_NORMAL, &img, fb->cancel, error);
+    return write_buffer(fb, fb ? fb->normal : NULL, "normal", path, IMGIO_NORMAL, 3,
+                        xyz_names, IMGIO_FLOAT, error);
 }
 
 sc_status sc_framebuffer_write_id(const sc_framebuffer *fb, const char *path,
                                   sc_error *error)
 {
+    static const char *const names[] = {"id"};
     imgio_image img;
-    sc_status st = start(fb, fb ? fb->id : NULL, "id", path, &img, error);
+    sc_status st = start(fb, fb ? fb->id : NULL, "id", path, 1, names, &img, error);
     if (st)
         return st;
-    static const char *const names[] = {"id"};
-    img.channels = 1;
-    img.channel_names = names;
     /* Ids as floats: exact up to 2^24 leaves, and -1 survives. */
     size_t pixels = (size_t)fb->width * (size_t)fb->height;
     float *ids = malloc((pixels ? pixels : 1) * sizeof *ids);
@@ -387,15 +386,6 @@ int imgio_stream_supported(const char *path)
     char ext[16];
     extension_of(path, ext, sizeof ext);
     return backend_of(ext) == BACKEND_EXR || tiff_format(ext);
-}
-
-static char *copy_text(const char *s)
-{
-    size_t n = strlen(s) + 1;
-    char *c = malloc(n);
-    if (c)
-        memcpy(c, s, n);
-    return c;
 }
 
 void imgio_stream_abandon(imgio_stream *s)
@@ -429,7 +419,7 @@ sc_status imgio_stream_open(const char *path, imgio_kind kind, int width, int he
                        "that way",
                        path);
     imgio_stream *s = calloc(1, sizeof *s);
-    if (!s || !(s->path = copy_text(path)) ||
+    if (!s || !(s->path = strdup(path)) ||
         (kind == IMGIO_ID &&
          !(s->ids = malloc((size_t)tile * (size_t)tile * sizeof *s->ids)))) {
         imgio_stream_abandon(s);

@@ -50,19 +50,13 @@ static int must_stop(uint32_t *steps, solve_result *r)
     return 1;
 }
 
-/* Safeguarded Newton-bisection on [a, b], where f(a) and f(b) differ in
- * sign (neg_a is the sign at a). Newton steps that leave the bracket or
- * do not halve it are replaced by bisection, so the bracket shrinks at
- * least geometrically; it stops at the resolution of doubles. Returns the
- * middle of the last bracket. */
-static double refine_newton(const expr_program *f, vec3 o, vec3 d, double a, double b,
-                            int neg_a, uint64_t *evals)
+double solve_newton_bracket(solve_line_fn f, const void *ctx, double a, double b,
+                            int neg_a, int max_iterations)
 {
     double x = 0.5 * (a + b), width = b - a;
-    for (int it = 0; it < 128; it++) {
+    for (int it = 0; it < max_iterations; it++) {
         double df;
-        double fx = expr_eval_dual(f, v3_madd(o, d, x), d, &df);
-        (*evals)++;
+        double fx = f(ctx, x, &df);
         if (neg(fx) == neg_a)
             a = x;
         else
@@ -78,6 +72,29 @@ static double refine_newton(const expr_program *f, vec3 o, vec3 d, double a, dou
         x = next;
     }
     return 0.5 * (a + b);
+}
+
+/* The line o + t d through an implicit function, counting evaluations. */
+typedef struct expr_line {
+    const expr_program *f;
+    vec3 o, d;
+    uint64_t *evals;
+} expr_line;
+
+static double expr_line_value(const void *ctx, double t, double *df)
+{
+    const expr_line *line = ctx;
+    (*line->evals)++;
+    return expr_eval_dual(line->f, v3_madd(line->o, line->d, t), line->d, df);
+}
+
+/* solve_newton_bracket on f along the line, adding its evaluations to
+ * *evals. */
+static double refine_newton(const expr_program *f, vec3 o, vec3 d, double a, double b,
+                            int neg_a, uint64_t *evals)
+{
+    expr_line line = {f, o, d, evals};
+    return solve_newton_bracket(expr_line_value, &line, a, b, neg_a, 128);
 }
 
 /* Plain bisection on [a, b] down to width w. */

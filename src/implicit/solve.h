@@ -88,6 +88,19 @@ typedef struct solve_result {
 void solve_crossings(const expr_program *f, const solve_options *opt, vec3 o, vec3 d,
                      double t0, double t1, solve_result *out);
 
+/* A function of t along a line with its derivative in t (into *df),
+ * from the context ctx: what solve_newton_bracket refines. */
+typedef double (*solve_line_fn)(const void *ctx, double t, double *df);
+
+/* Safeguarded Newton-bisection for a root of f in [a, b], where f(a) and
+ * f(b) differ in the sign of f < 0 (neg_a is that sign at a). Newton steps
+ * that leave the bracket or do not halve it are replaced by bisection, so
+ * the bracket shrinks at least geometrically; it stops at the resolution
+ * of doubles or after max_iterations evaluations. Returns the middle of
+ * the last bracket. */
+double solve_newton_bracket(solve_line_fn f, const void *ctx, double a, double b,
+                            int neg_a, int max_iterations);
+
 /* An estimate of max |grad f| over the box: 1.5 times the largest gradient
  * norm at the nodes of a 16 x 16 x 16 grid. Not a bound: a feature between
  * the nodes can be steeper. Returns at least 1e-300. */

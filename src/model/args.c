@@ -6,6 +6,13 @@
 
 #include "base/error.h"
 
+void *model_lowerer_alloc(model_lowerer *l, size_t size)
+{
+    void *p = arena_calloc(l->mem, 1, size ? size : 1);
+    l->nomem |= p == NULL;
+    return p;
+}
+
 const parse_value *model_arg(const parse_node *n, const char *name, int position)
 {
     const parse_arg *a = parse_node_arg(n, name, position);

@@ -20,6 +20,19 @@ typedef struct model_reader {
     sc_error *error;
 } model_reader;
 
+/* One lowering pass over a context below the top (lower_points.c,
+ * lower_twod.c): the model's arena, the reader, and whether an allocation
+ * failed. */
+typedef struct model_lowerer {
+    arena *mem;
+    model_reader r; /* its error is the pending error being made */
+    int nomem;
+} model_lowerer;
+
+/* size zeroed bytes (at least one) from l's arena, owned by the model; NULL,
+ * with l->nomem set, when out of memory. */
+void *model_lowerer_alloc(model_lowerer *l, size_t size);
+
 /* The value of the named or position-th positional argument; NULL when it
  * is absent or undef. */
 const parse_value *model_arg(const parse_node *n, const char *name, int position);

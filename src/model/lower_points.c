@@ -28,23 +28,10 @@
 #include "model/lower_curved.h"
 #include "model/lower_twod.h"
 
-typedef struct points_lowerer {
-    arena *mem;
-    model_reader r; /* its error is the pending error being made */
-    int nomem;
-} points_lowerer;
-
-static void *alloc(points_lowerer *l, size_t size)
-{
-    void *p = arena_calloc(l->mem, 1, size ? size : 1);
-    l->nomem |= p == NULL;
-    return p;
-}
-
 static const char points_expected[] = "a vector of [x, y, z] points";
 static const char faces_expected[] = "a vector of faces, each a vector of point indices";
 
-static sc_status lower_polyhedron(points_lowerer *l, const parse_node *n, model_node *out)
+static sc_status lower_polyhedron(model_lowerer *l, const parse_node *n, model_node *out)
 {
     const parse_value *pts = model_arg(n, "points", 0);
     const char *faces_name = "faces";
@@ -63,9 +50,10 @@ static sc_status lower_polyhedron(points_lowerer *l, const parse_node *n, model_
         const parse_value *fv = &faces->u.vector.items[f];
         total += fv->kind == PARSE_VECTOR ? fv->u.vector.count : 0;
     }
-    vec3 *p = alloc(l, (size_t)np * sizeof *p);
-    uint32_t *start = alloc(l, ((size_t)nf + 1) * sizeof *start);
-    uint32_t *index = total <= UINT32_MAX ? alloc(l, total * sizeof *index) : NULL;
+    vec3 *p = model_lowerer_alloc(l, (size_t)np * sizeof *p);
+    uint32_t *start = model_lowerer_alloc(l, ((size_t)nf + 1) * sizeof *start);
+    uint32_t *index =
+        total <= UINT32_MAX ? model_lowerer_alloc(l, total * sizeof *index) : NULL;
     if (!p || !start || !index) {
         l->nomem = 1;
         return SC_ERR_NOMEM;
@@ -113,7 +101,7 @@ static sc_status lower_polyhedron(points_lowerer *l, const parse_node *n, model_
 
 /* A vector of up to 3 numbers (newsize) or flags (auto: true/false or
  * numbers, as OpenSCAD writes them). */
-static sc_status read_triple(points_lowerer *l, const parse_node *n, const char *name,
+static sc_status read_triple(model_lowerer *l, const parse_node *n, const char *name,
                              int position, int flags, double out[3])
 {
     const parse_value *v = model_arg(n, name, position);
@@ -139,9 +127,9 @@ static sc_status read_triple(points_lowerer *l, const parse_node *n, const char 
     return SC_OK;
 }
 
-static sc_status lower_resize(points_lowerer *l, const parse_node *n, model_node *out)
+static sc_status lower_resize(model_lowerer *l, const parse_node *n, model_node *out)
 {
-    model_resize *r = alloc(l, sizeof *r);
+    model_resize *r = model_lowerer_alloc(l, sizeof *r);
     if (!r)
         return SC_ERR_NOMEM;
     out->u.resize = r;
@@ -158,12 +146,12 @@ static sc_status lower_resize(points_lowerer *l, const parse_node *n, model_node
     return st;
 }
 
-static sc_status lower_matrix(points_lowerer *l, const parse_node *n, model_node *out)
+static sc_status lower_matrix(model_lowerer *l, const parse_node *n, model_node *out)
 {
     return model_read_xform(&l->r, l->mem, n, &out->u.xform);
 }
 
-static sc_status lower_leaf(points_lowerer *l, const parse_node *n, model_node *out)
+static sc_status lower_leaf(model_lowerer *l, const parse_node *n, model_node *out)
 {
     switch (out->kind) {
     case MODEL_CUBE:
@@ -175,35 +163,35 @@ static sc_status lower_leaf(points_lowerer *l, const parse_node *n, model_node *
                                    &out->u.cylinder.r2, &out->u.cylinder.center,
                                    &out->u.cylinder.res);
     case MODEL_IMPORT: {
-        model_import *import = alloc(l, sizeof *import);
+        model_import *import = model_lowerer_alloc(l, sizeof *import);
         if (!import)
             return SC_ERR_NOMEM;
         out->u.import = import;
         return model_read_import(&l->r, n, import);
     }
     case MODEL_SURFACE: {
-        model_surface *surface = alloc(l, sizeof *surface);
+        model_surface *surface = model_lowerer_alloc(l, sizeof *surface);
         if (!surface)
             return SC_ERR_NOMEM;
         out->u.surface = surface;
         return model_read_surface(&l->r, n, surface);
     }
     case MODEL_TORUS: {
-        model_torus *t = alloc(l, sizeof *t);
+        model_torus *t = model_lowerer_alloc(l, sizeof *t);
         if (!t)
             return SC_ERR_NOMEM;
         out->u.torus = t;
         return model_read_torus(&l->r, n, t);
     }
     case MODEL_QUADRIC: {
-        model_quadric *q = alloc(l, sizeof *q);
+        model_quadric *q = model_lowerer_alloc(l, sizeof *q);
         if (!q)
             return SC_ERR_NOMEM;
         out->u.quadric = q;
         return model_read_quadric(&l->r, n, q);
     }
     case MODEL_IMPLICIT: {
-        model_implicit *f = alloc(l, sizeof *f);
+        model_implicit *f = model_lowerer_alloc(l, sizeof *f);
         if (!f)
             return SC_ERR_NOMEM;
         out->u.implicit = f;
@@ -220,7 +208,7 @@ sc_status model_points_args(arena *mem, const char *file, const parse_node *n,
     if (out->kind == MODEL_LINEAR_EXTRUDE || out->kind == MODEL_ROTATE_EXTRUDE)
         return model_twod_args(mem, file, n, out, error);
     sc_error pending;
-    points_lowerer l = {mem, {file, &pending}, 0};
+    model_lowerer l = {mem, {file, &pending}, 0};
     sc_status st;
     if (out->kind == MODEL_POLYHEDRON)
         st = lower_polyhedron(&l, n, out);

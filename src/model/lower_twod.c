@@ -26,31 +26,18 @@
 #include "base/error.h"
 #include "model/args.h"
 
-typedef struct twod_lowerer {
-    arena *mem;
-    model_reader r; /* its error is the pending error being made */
-    int nomem;
-} twod_lowerer;
-
-static void *alloc(twod_lowerer *l, size_t size)
+static sc_status lower_square(model_lowerer *l, const parse_node *n, model_node *out)
 {
-    void *p = arena_calloc(l->mem, 1, size);
-    l->nomem |= p == NULL;
-    return p;
-}
-
-static sc_status lower_square(twod_lowerer *l, const parse_node *n, model_node *out)
-{
-    model_square *s = alloc(l, sizeof *s);
+    model_square *s = model_lowerer_alloc(l, sizeof *s);
     if (!s)
         return SC_ERR_NOMEM;
     out->u.square = s;
     return model_read_square(&l->r, n, &s->sx, &s->sy, &s->center);
 }
 
-static sc_status lower_circle(twod_lowerer *l, const parse_node *n, model_node *out)
+static sc_status lower_circle(model_lowerer *l, const parse_node *n, model_node *out)
 {
-    model_circle *c = alloc(l, sizeof *c);
+    model_circle *c = model_lowerer_alloc(l, sizeof *c);
     if (!c)
         return SC_ERR_NOMEM;
     out->u.circle = c;
@@ -58,7 +45,7 @@ static sc_status lower_circle(twod_lowerer *l, const parse_node *n, model_node *
 }
 
 /* The paths' indices, in path order, up to the first bad one. */
-static sc_status read_paths(twod_lowerer *l, const parse_value *paths, model_polygon *p)
+static sc_status read_paths(model_lowerer *l, const parse_value *paths, model_polygon *p)
 {
     uint32_t count = paths->u.vector.count;
     size_t total = 0;
@@ -91,9 +78,9 @@ static sc_status read_paths(twod_lowerer *l, const parse_value *paths, model_pol
     return SC_OK;
 }
 
-static sc_status lower_polygon(twod_lowerer *l, const parse_node *n, model_node *out)
+static sc_status lower_polygon(model_lowerer *l, const parse_node *n, model_node *out)
 {
-    model_polygon *p = alloc(l, sizeof *p);
+    model_polygon *p = model_lowerer_alloc(l, sizeof *p);
     if (!p)
         return SC_ERR_NOMEM;
     out->u.polygon = p;
@@ -132,7 +119,7 @@ static sc_status lower_polygon(twod_lowerer *l, const parse_node *n, model_node 
     return l->nomem ? SC_ERR_NOMEM : SC_OK;
 }
 
-static sc_status number(twod_lowerer *l, const parse_node *n, const char *name,
+static sc_status number(model_lowerer *l, const parse_node *n, const char *name,
                         int position, double *out, int *given)
 {
     if (given)
@@ -140,9 +127,9 @@ static sc_status number(twod_lowerer *l, const parse_node *n, const char *name,
     return model_number(&l->r, n, name, position, out);
 }
 
-static sc_status lower_offset(twod_lowerer *l, const parse_node *n, model_node *out)
+static sc_status lower_offset(model_lowerer *l, const parse_node *n, model_node *out)
 {
-    model_offset *o = alloc(l, sizeof *o);
+    model_offset *o = model_lowerer_alloc(l, sizeof *o);
     if (!o)
         return SC_ERR_NOMEM;
     out->u.offset = o;
@@ -162,9 +149,9 @@ static sc_status lower_offset(twod_lowerer *l, const parse_node *n, model_node *
     return SC_OK;
 }
 
-static sc_status lower_drawing(twod_lowerer *l, const parse_node *n, model_node *out)
+static sc_status lower_drawing(model_lowerer *l, const parse_node *n, model_node *out)
 {
-    model_drawing *d = alloc(l, sizeof *d);
+    model_drawing *d = model_lowerer_alloc(l, sizeof *d);
     if (!d)
         return SC_ERR_NOMEM;
     out->u.drawing = d;
@@ -209,7 +196,7 @@ static sc_status lower_drawing(twod_lowerer *l, const parse_node *n, model_node 
     return SC_OK;
 }
 
-static sc_status string(twod_lowerer *l, const parse_node *n, const char *name,
+static sc_status string(model_lowerer *l, const parse_node *n, const char *name,
                         int position, const char **out)
 {
     const parse_value *v = model_arg(n, name, position);
@@ -221,9 +208,9 @@ static sc_status string(twod_lowerer *l, const parse_node *n, const char *name,
     return SC_OK;
 }
 
-static sc_status lower_text(twod_lowerer *l, const parse_node *n, model_node *out)
+static sc_status lower_text(model_lowerer *l, const parse_node *n, model_node *out)
 {
-    model_text *a = alloc(l, sizeof *a);
+    model_text *a = model_lowerer_alloc(l, sizeof *a);
     if (!a)
         return SC_ERR_NOMEM;
     out->u.text = a;
@@ -270,7 +257,7 @@ static sc_status lower_text(twod_lowerer *l, const parse_node *n, model_node *ou
 }
 
 /* height and center, all the exact builders read. */
-static sc_status exact_extrude_args(twod_lowerer *l, const parse_node *n,
+static sc_status exact_extrude_args(model_lowerer *l, const parse_node *n,
                                     model_linear_extrude *e)
 {
     sc_status st = model_number(&l->r, n, "height", 0, &e->height);
@@ -280,7 +267,7 @@ static sc_status exact_extrude_args(twod_lowerer *l, const parse_node *n,
 }
 
 /* The faithful builder's arguments, in its order. */
-static sc_status faithful_extrude_args(twod_lowerer *l, const parse_node *n,
+static sc_status faithful_extrude_args(model_lowerer *l, const parse_node *n,
                                        model_linear_extrude *e)
 {
     model_resolution *res = &e->res;
@@ -344,10 +331,10 @@ static int plain_extrude(const parse_node *n)
             sv->u.vector.items[1].u.number == 1);
 }
 
-static sc_status lower_linear_extrude(twod_lowerer *l, const parse_node *n,
+static sc_status lower_linear_extrude(model_lowerer *l, const parse_node *n,
                                       model_node *out)
 {
-    model_linear_extrude *e = alloc(l, sizeof *e);
+    model_linear_extrude *e = model_lowerer_alloc(l, sizeof *e);
     sc_error *exact = arena_alloc(l->mem, sizeof *exact);
     if (!e || !exact) {
         l->nomem = 1;
@@ -366,10 +353,10 @@ static sc_status lower_linear_extrude(twod_lowerer *l, const parse_node *n,
     return faithful_extrude_args(l, n, e);
 }
 
-static sc_status lower_rotate_extrude(twod_lowerer *l, const parse_node *n,
+static sc_status lower_rotate_extrude(model_lowerer *l, const parse_node *n,
                                       model_node *out)
 {
-    model_rotate_extrude *e = alloc(l, sizeof *e);
+    model_rotate_extrude *e = model_lowerer_alloc(l, sizeof *e);
     if (!e)
         return SC_ERR_NOMEM;
     out->u.rotate_extrude = e;
@@ -391,7 +378,7 @@ static sc_status lower_rotate_extrude(twod_lowerer *l, const parse_node *n,
 }
 
 /* multmatrix(m) below an extrusion: the builders take its xy part. */
-static sc_status lower_matrix(twod_lowerer *l, const parse_node *n, model_node *out)
+static sc_status lower_matrix(model_lowerer *l, const parse_node *n, model_node *out)
 {
     return model_read_xform(&l->r, l->mem, n, &out->u.xform);
 }
@@ -400,7 +387,7 @@ sc_status model_twod_args(arena *mem, const char *file, const parse_node *n,
                           model_node *out, sc_error *error)
 {
     sc_error pending;
-    twod_lowerer l = {mem, {file, &pending}, 0};
+    model_lowerer l = {mem, {file, &pending}, 0};
     sc_status st = SC_OK;
     switch (out->kind) {
     case MODEL_SQUARE:

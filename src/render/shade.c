@@ -439,6 +439,28 @@ static int on_hatch(const shade_scene *s, vec3 n, vec3 p)
     return u - floor(u) < SHADE_HATCH_WIDTH;
 }
 
+/* Adds k times the light that arrives along a secondary ray (reflected or
+ * refracted) from origin in the direction ideal to out; with a glossy m the
+ * direction is drawn about ideal from m's lobe, and one on the wrong side
+ * of the surface (side +1: the side n points to, -1: the other) is
+ * absorbed. *rays counts the ray. */
+static void secondary_ray(const shade_scene *s, shade_thread *th, const shade_material *m,
+                          vec3 origin, vec3 ideal, vec3 n, double side, int depth,
+                          double weight, double k, uint64_t *rays, double out[3])
+{
+    vec3 d = ideal;
+    if (m->glossy)
+        d = glossy_direction(th, v3_normalize(ideal), m->lobe);
+    if (m->glossy && !(side * v3_dot(d, n) > 0))
+        return;
+    csg_ray r = {origin, d, 0, INFINITY};
+    double c[3];
+    (*rays)++;
+    shade_ray(s, th, &r, NULL, depth + 1, weight * k, c);
+    for (int j = 0; j < 3; j++)
+        out[j] += k * c[j];
+}
+
 void shade_ray(const shade_scene *s, shade_thread *th, const csg_ray *ray,
                const shade_hit *known, int depth, double weight, double out[3])
 {
@@ -515,29 +537,10 @@ void shade_ray(const shade_scene *s, shade_thread *th, const csg_ray *ray,
     }
     if (kr * weight > SHADE_CUTOFF) {
         vec3 mirror = v3_madd(dir, n, 2 * v3_dot(n, v));
-        vec3 d = mirror;
-        if (m->glossy) /* a lobe direction under the surface is absorbed */
-            d = glossy_direction(th, v3_normalize(mirror), m->lobe);
-        if (!m->glossy || v3_dot(d, n) > 0) {
-            csg_ray r = {above, d, 0, INFINITY};
-            double c[3];
-            th->count.reflection_rays++;
-            shade_ray(s, th, &r, NULL, depth + 1, weight * kr, c);
-            for (int k = 0; k < 3; k++)
-                out[k] += kr * c[k];
-        }
+        secondary_ray(s, th, m, above, mirror, n, 1, depth, weight, kr,
+                      &th->count.reflection_rays, out);
     }
-    if (kt * weight > SHADE_CUTOFF) {
-        vec3 d = refracted;
-        if (m->glossy) /* a lobe direction back on the incoming side is absorbed */
-            d = glossy_direction(th, v3_normalize(refracted), m->lobe);
-        if (!m->glossy || v3_dot(d, n) < 0) {
-            csg_ray r = {below, d, 0, INFINITY};
-            double c[3];
-            th->count.refraction_rays++;
-            shade_ray(s, th, &r, NULL, depth + 1, weight * kt, c);
-            for (int k = 0; k < 3; k++)
-                out[k] += kt * c[k];
-        }
-    }
+    if (kt * weight > SHADE_CUTOFF)
+        secondary_ray(s, th, m, below, refracted, n, -1, depth, weight, kt,
+                      &th->count.refraction_rays, out);
 }
