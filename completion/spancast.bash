@@ -15,9 +15,10 @@ _spancast_commands()
 # _spancast_command_options SPANCAST COMMAND: the options `SPANCAST COMMAND
 # --help` lists for COMMAND, one a line. When that text describes several
 # commands, an option belongs to COMMAND when it is on one of COMMAND's
-# usage lines (and their continuation lines) or in a "COMMAND options:"
-# block (up to the next blank line), or in a block under another heading
-# ("preview options ...:", "report options:") that follows COMMAND's.
+# usage lines (and their continuation lines), in a "COMMAND options:" or
+# "A, B and COMMAND options:" (or "... limits:") block (up to the next
+# blank line), or in a block under another heading ("preview options
+# ...:", "report options:") that follows COMMAND's.
 _spancast_command_options()
 {
     "$1" "$2" --help 2>/dev/null | awk -v cmd="$2" '
@@ -42,9 +43,16 @@ _spancast_command_options()
         # "CMD options:" opens a block of CMD; a block of another heading
         # ("preview options (CAD-style renders):", "report options:")
         # belongs to the command whose block came before it.
-        /^[a-z][a-z -]* options( \([^)]*\))?:$/ {
-            if ($1 in commands) owner = $1
-            block = (owner == cmd); mine = 0; next
+        # "A, B and C options:" (or "... limits:") is a block of each
+        # command it names.
+        /^[a-z][a-z, -]* (options|limits)( \([^)]*\))?:$/ {
+            named = 0; ours = 0
+            for (i = 1; i <= NF && $i !~ /^(options|limits)/; i++) {
+                word = $i; sub(/,$/, "", word)
+                if (word in commands) { named++; if (word == cmd) ours = 1 }
+            }
+            if (named == 1) owner = $1
+            block = named > 1 ? ours : (owner == cmd); mine = 0; next
         }
         /^[ \t]*$/ { block = 0; mine = 0; all = all "\n"; next }
         mine || block { usage = usage "\n" $0; next }
