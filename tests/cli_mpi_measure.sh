@@ -89,6 +89,18 @@ rc=$?
 [ "$(grep -c '^bad.csg:3:1: error:' err.txt)" = 1 ] ||
     fail "a bad model on 3 ranks: '$(cat err.txt)'"
 [ -s out.txt ] && fail "a bad model on 3 ranks printed results: $(cat out.txt)"
+# A bad command line, found before the ranks join the job (--max-memory is
+# read first of all): still once, by rank 0.
+check
+mpirun_test -np 3 "$bin" measure a.csg --max-memory=bogus >out.txt 2>err.txt
+rc=$?
+[ "$rc" = 2 ] || fail "a bad --max-memory on 3 ranks: exit $rc"
+[ "$(grep -c '^spancast: error: --max-memory expects a size' err.txt)" = 1 ] ||
+    fail "a bad --max-memory on 3 ranks: '$(cat err.txt)'"
+check
+mpirun_test -np 2 "$bin" spans a.csg --bogus >out.txt 2>err.txt
+[ "$(grep -c "^spancast: error: unknown option '--bogus'" err.txt)" = 1 ] ||
+    fail "a command that does not share its work, on 2 ranks: '$(cat err.txt)'"
 
 echo "$checks checks, $fails failures"
 [ "$fails" = 0 ]

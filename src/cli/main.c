@@ -41,6 +41,7 @@
 #define _POSIX_C_SOURCE 200809L
 
 #include <errno.h>
+#include <fcntl.h>
 #include <math.h>
 #include <signal.h>
 #include <stdio.h>
@@ -1108,8 +1109,28 @@ int cli_apply_camera_option(sc_render_options *options, const char *name, size_t
     return st;
 }
 
+/* Under mpirun (Open MPI's environment), every rank runs this program with
+ * the same arguments: the ranks other than 0 print nothing, so that the
+ * command's output and its first error come once, from rank 0, whether the
+ * command shares its work (mpi_dist.c) or not, and also for an error found
+ * before the ranks join the job. */
+static void quiet_other_ranks(void)
+{
+    const char *size = getenv("OMPI_COMM_WORLD_SIZE");
+    const char *rank = getenv("OMPI_COMM_WORLD_RANK");
+    if (!size || atoi(size) <= 1 || !rank || atoi(rank) == 0)
+        return;
+    int null = open("/dev/null", O_WRONLY);
+    if (null >= 0) {
+        dup2(null, STDOUT_FILENO);
+        dup2(null, STDERR_FILENO);
+        close(null);
+    }
+}
+
 int main(int argc, char **argv)
 {
+    quiet_other_ranks();
     int limited = cli_take_max_memory(&argc, argv);
     if (limited)
         return limited;

@@ -28,15 +28,15 @@
  * Messages only go from the ranks to rank 0 and back, so a failure is
  * simple: the failing rank sends its error instead of a result, rank 0
  * stops handing out work and answers every rank's next request with -1.
- * Messages of the ranks other than 0 are silenced (their stdout and
- * stderr are /dev/null): rank 0 prints the command's output and the first error.
+ * Messages of the ranks other than 0 are silenced (main points their stdout
+ * and stderr at /dev/null): rank 0 prints the command's output and the
+ * first error.
  */
 #define _POSIX_C_SOURCE 200809L
 
 #include "cli/dist.h"
 
 #include <errno.h>
-#include <fcntl.h>
 #include <limits.h>
 #include <mpi.h>
 #include <pthread.h>
@@ -88,15 +88,7 @@ int dist_enter(int argc, char **argv)
         fprintf(stderr, "spancast: error: this MPI library does not allow threads\n");
         return 1;
     }
-    if (dist_rank() != 0) {
-        int null = open("/dev/null", O_WRONLY);
-        if (null >= 0) {
-            dup2(null, STDOUT_FILENO); /* measure's results: rank 0 prints */
-            dup2(null, STDERR_FILENO);
-            close(null);
-        }
-    }
-    return -1;
+    return -1; /* main has silenced the ranks other than 0 */
 }
 
 int dist_size(void)
