@@ -687,6 +687,9 @@ static sc_scene *load(const char *path, int faithful, watch_set *watched)
     size_t warnings = dist_rank() == 0 ? sc_scene_warning_count(scene) : 0;
     for (size_t k = 0; k < warnings; k++)
         print_warning(sc_scene_warning(scene, k));
+    double lo3[3], hi3[3];
+    if (dist_rank() == 0 && !sc_scene_bounds(scene, lo3, hi3))
+        fprintf(stderr, "%s: warning: the model is empty (nothing to render)\n", path);
     return scene;
 }
 
