@@ -391,7 +391,8 @@ static void blame_source(sc_error *error, const char *name, const char *path)
         return;
     if (error->line > 0) {
         char note[64];
-        int n = snprintf(note, sizeof note, " (line %d of OpenSCAD's export)", error->line);
+        int n =
+            snprintf(note, sizeof note, " (line %d of OpenSCAD's export)", error->line);
         size_t used = strlen(error->message);
         if (n > 0 && used + (size_t)n < sizeof error->message)
             memcpy(error->message + used, note, (size_t)n + 1);
