@@ -92,8 +92,8 @@ wait "$pid"
 rc=$?
 if [ "$seen" = 1 ]; then
     [ "$rc" = 143 ] || fail "write + SIGTERM: exit $rc (want 143)"
-    [ "$(cat stderr.txt)" = "spancast: interrupted" ] ||
-        fail "write + SIGTERM: stderr '$(cat stderr.txt)'"
+    [ "$(cat stderr.txt)" = "empty.csg: warning: the model is empty (nothing to render)
+spancast: interrupted" ] || fail "write + SIGTERM: stderr '$(cat stderr.txt)'"
     no_leftovers "write + SIGTERM"
 else
     fail "write + SIGTERM: the temporary file was never seen (exit $rc)"

@@ -59,13 +59,53 @@ grep -q "spancast-\|\.csg" err.txt && fail "string.scad: a temporary name: $(cat
 [ -e string.png ] && fail "string.scad: an image was written"
 [ -z "$(ls -A "$work/tmp")" ] || fail "temporary files left after a failure"
 
-# An error inside the converted model names the .csg beside the source.
+# An error inside the converted model names the .scad as the user gave it,
+# with the line of OpenSCAD's export; never a .csg that does not exist.
 printf 'import("open.stl");\n' >open.scad
 printf 'solid o\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 0 1 0\nendloop\nendfacet\nendsolid o\n' >open.stl
-"$bin" render open.scad -o open.png -q 2>err.txt
-want="$work/open.csg:1:15: error: imported mesh is not closed (edge (0, 0, 0)-(0, 1, 0) is used by 1 face)"
-[ "$(cat err.txt)" = "$want" ] || fail "open.scad: got '$(cat err.txt)'"
+fails_with open.scad "open.scad: error: imported mesh is not closed (edge (0, 0, 0)-(0, 1, 0) is used by 1 face) (line 1 of OpenSCAD's export)"
 [ -e open.csg ] && fail "open.scad: a .csg was left beside the source"
+printf '\nprojection() cube(1);\n' >proj.scad
+want="proj.scad: error: 'projection' is not supported yet (line 1 of OpenSCAD's export)"
+fails_with proj.scad "$want"
+for cmd in info measure; do
+    "$bin" $cmd proj.scad -q >/dev/null 2>err.txt
+    rc=$?
+    [ "$rc" = 1 ] || fail "$cmd proj.scad: exit $rc (want 1)"
+    [ "$(cat err.txt)" = "$want" ] || fail "$cmd proj.scad: got '$(cat err.txt)'"
+done
+
+# OpenSCAD 2021.01 exits 0 after these errors and leaves the part out; its
+# ERROR line fails the render all the same.
+printf 'cube(1);\nassert(false, "boom");\n' >assert.scad
+fails_with assert.scad "assert.scad:2:1: error: Assertion 'false' failed: \"boom\""
+printf 'use <bad.scad>\ncube(1);\n' >usebad.scad
+fails_with usebad.scad "bad.scad:1:1: error: Parser error: syntax error"
+
+# warns_with MODEL MESSAGES: rendering MODEL exits 0, writes the image, and
+# prints exactly MESSAGES on stderr.
+warns_with() {
+    rm -f "$1.png"
+    "$bin" render "$1" -o "$1.png" -q 2>err.txt
+    local rc=$?
+    [ "$rc" = 0 ] || fail "$1: exit $rc (want 0)"
+    [ "$(cat err.txt)" = "$2" ] || fail "$1: got '$(cat err.txt)'"
+    [ -e "$1.png" ] || fail "$1: no image was written"
+}
+printf 'include <nope.scad>\ncube(1);\n' >noinc.scad
+warns_with noinc.scad "noinc.scad: warning: Can't open include file 'nope.scad'."
+printf 'cube(1);\nfoo();\n' >unknown.scad
+warns_with unknown.scad "unknown.scad:2:1: warning: Ignoring unknown module 'foo'"
+
+# An empty model warns (the render goes on, as OpenSCAD's image export).
+printf 'foo();\n' >onlyunknown.scad
+warns_with onlyunknown.scad "onlyunknown.scad:1:1: warning: Ignoring unknown module 'foo'
+onlyunknown.scad: warning: the model is empty (nothing to render)"
+printf '// nothing\n' >empty.scad
+warns_with empty.scad "empty.scad: warning: the model is empty (nothing to render)"
+printf 'group();\n' >empty.csg
+warns_with empty.csg "empty.csg: warning: the model is empty (nothing to render)"
+[ -z "$(ls -A "$work/tmp")" ] || fail "temporary files left: $(ls -A "$work/tmp")"
 
 if [ "$fails" != 0 ]; then
     echo "$fails failure(s)"

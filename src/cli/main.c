@@ -93,6 +93,10 @@ static const char usage_text[] =
     "'spans' lists where rays enter and leave the solid (t in units of the\n"
     "direction given, t >= 0 unless --both-ways, distance inside = dt |d|);\n"
     "'inside' says whether points are in, out or on the surface.\n"
+    "MODEL may be a .scad file: OpenSCAD (in PATH) converts it first; its\n"
+    "WARNING lines are shown as warnings, and an ERROR (even one OpenSCAD exits\n"
+    "0 after, as a failing assert()) fails the command. A model that draws\n"
+    "nothing gives a warning.\n"
     "'measure' prints volume, area, centroid, inertia and the tight box, each\n"
     "with an error bound (--tolerance, relative, default 1e-4); 'overlaps' the\n"
     "pairs of top-level objects that share volume, to --tolerance (default\n"
@@ -692,6 +696,9 @@ static sc_scene *load(const char *path, int faithful, watch_set *watched)
     size_t warnings = dist_rank() == 0 ? sc_scene_warning_count(scene) : 0;
     for (size_t k = 0; k < warnings; k++)
         print_warning(sc_scene_warning(scene, k));
+    double lo3[3], hi3[3];
+    if (dist_rank() == 0 && !sc_scene_bounds(scene, lo3, hi3))
+        fprintf(stderr, "%s: warning: the model is empty (nothing to render)\n", path);
     return scene;
 }
 

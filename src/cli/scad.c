@@ -5,7 +5,7 @@
  * paths absolute (OpenSCAD writes a relative -o path next to its input), in
  * a private directory made by mkdtemp under $TMPDIR (or /tmp). OpenSCAD's
  * own output goes to a log in that directory; when it fails, its first
- * error is the message (openscad_error), with OpenSCAD's file and line,
+ * error is the message (openscad_log), with OpenSCAD's file and line,
  * never the temporary .csg's name. The .csg is loaded under the name
  * DIR/NAME.csg, DIR being the source's directory: OpenSCAD writes import
  * paths as the source gave them, relative to the source, and spancast
@@ -99,11 +99,19 @@ static int openscad_position(const char *text, sc_error *error)
     return 1;
 }
 
-/* Why OpenSCAD failed to convert path, from its log at log_path, into
- * error: its first "ERROR: " line, at OpenSCAD's position when the line
- * has one (file names as OpenSCAD prints them: relative to the working
- * directory, which it shares with us); else its last non-empty line. */
-static sc_status openscad_error(const char *log_path, const char *path, sc_error *error)
+/* OpenSCAD's report on the conversion of path, from its log at log_path.
+ * OpenSCAD 2021.01 exits 0 after many errors (a failing assert(), a syntax
+ * error in a use <...> file) and leaves the failed part out, so its log
+ * decides, not only its exit status (failed: it exited non-zero). Each
+ * "WARNING: " line is printed on stderr as a compiler's warning, at
+ * OpenSCAD's position when the line has one, else against path (the render
+ * goes on, as OpenSCAD's does). The first "ERROR: " line becomes the error,
+ * at its position when it has one, else against path; a failure without an
+ * ERROR line is told by OpenSCAD's last non-empty line. File names are as
+ * OpenSCAD prints them: relative to the working directory, which it shares
+ * with us. Returns SC_OK when OpenSCAD reported no error. */
+static sc_status openscad_log(const char *log_path, const char *path, int failed,
+                              sc_error *error)
 {
     char first[SC_ERROR_MESSAGE_MAX] = "", last[SC_ERROR_MESSAGE_MAX] = "";
     FILE *f = fopen(log_path, "r");
@@ -115,6 +123,15 @@ static sc_status openscad_error(const char *log_path, const char *path, sc_error
                 line[--n] = 0;
             if (!first[0] && !strncmp(line, "ERROR: ", 7) && line[7])
                 snprintf(first, sizeof first, "%s", line + 7);
+            if (!strncmp(line, "WARNING: ", 9) && line[9]) {
+                sc_error w;
+                memset(&w, 0, sizeof w);
+                if (openscad_position(line + 9, &w))
+                    fprintf(stderr, "%s:%d:%d: warning: %s\n", w.file, w.line, w.column,
+                            w.message);
+                else
+                    fprintf(stderr, "%s: warning: %s\n", path, line + 9);
+            }
             if (n > 0)
                 snprintf(last, sizeof last, "%s", line);
         }
@@ -123,10 +140,15 @@ static sc_status openscad_error(const char *log_path, const char *path, sc_error
     if (first[0]) {
         memset(error, 0, sizeof *error);
         error->status = SC_ERR_SYNTAX;
-        if (openscad_position(first, error))
-            return SC_ERR_SYNTAX;
+        if (!openscad_position(first, error)) {
+            snprintf(error->file, sizeof error->file, "%s", path);
+            snprintf(error->message, sizeof error->message, "%s", first);
+        }
+        return SC_ERR_SYNTAX;
     }
-    const char *why = first[0] ? first : last[0] ? last : "it failed without a message";
+    if (!failed)
+        return SC_OK;
+    const char *why = last[0] ? last : "it failed without a message";
     return fail(error, SC_ERR_IO, "OpenSCAD could not convert '%s': %s", path, why);
 }
 
@@ -359,6 +381,27 @@ static sc_status convert(const char *path, const double *time, char **text, size
                          void (*depend)(void *user, const char *file), void *user,
                          const scad_stop *stop);
 
+/* An error at a position in the converted text (named name, a file that
+ * does not exist, or an unrelated file of the user's) is put on the source
+ * path as the user gave it, with the line of OpenSCAD's export in the
+ * message; errors in other files (an imported mesh) keep their position. */
+static void blame_source(sc_error *error, const char *name, const char *path)
+{
+    if (strcmp(error->file, name) != 0)
+        return;
+    if (error->line > 0) {
+        char note[64];
+        int n =
+            snprintf(note, sizeof note, " (line %d of OpenSCAD's export)", error->line);
+        size_t used = strlen(error->message);
+        if (n > 0 && used + (size_t)n < sizeof error->message)
+            memcpy(error->message + used, note, (size_t)n + 1);
+    }
+    snprintf(error->file, sizeof error->file, "%s", path);
+    error->line = 0;
+    error->column = 0;
+}
+
 /* The conversion at time (or none), then the load of its text under the
  * name beside the source, with *stop->loading set meanwhile. */
 static sc_status convert_and_load(const char *path, const double *time,
@@ -378,6 +421,8 @@ static sc_status convert_and_load(const char *path, const double *time,
         st = sc_scene_load_string(name, text, size, options, scene, error);
         if (stop && stop->loading)
             *stop->loading = 0;
+        if (st != SC_OK)
+            blame_source(error, name, path);
     }
     free(text);
     return st;
@@ -451,8 +496,9 @@ static sc_status convert(const char *path, const double *time, char **text, size
             memset(error, 0, sizeof *error);
             error->status = st = SC_ERR_CANCELLED;
             snprintf(error->message, sizeof error->message, "interrupted");
-        } else if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) {
-            st = openscad_error(log, path, error);
+        } else {
+            st = openscad_log(log, path, !WIFEXITED(status) || WEXITSTATUS(status) != 0,
+                              error);
         }
     }
     if (st == SC_OK && depend)
