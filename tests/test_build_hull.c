@@ -391,8 +391,16 @@ static void test_resize_boxes(void **state)
 static void test_resize_errors(void **state)
 {
     (void)state;
-    check_error("m.csg", "resize([1, -2, 0]) { cube(); }", SC_ERR_UNSUPPORTED,
-                "m.csg:1:8: error: resize to a negative size is not supported yet");
+    /* a negative size is as 0, as OpenSCAD resizes a mesh or a 2D shape:
+     * that axis keeps its size, or takes the auto scale */
+    sc_scene *neg = load("resize([-10, 0, 0]) { multmatrix([[1, 0, 0, 1], [0, 1, 0, 2], [0, 0, "
+                       "1, 3], [0, 0, 0, 1]]) { cube(5); } }");
+    check_bounds(neg, v3(1, 2, 3), v3(6, 7, 8), 1e-12);
+    sc_scene_release(neg);
+    neg = load("resize([10, -20, 0], auto = [false, false, true]) { multmatrix([[1, 0, 0, 1], "
+             "[0, 1, 0, 2], [0, 0, 1, 3], [0, 0, 0, 1]]) { cube(5); } }");
+    check_bounds(neg, v3(2, 2, 6), v3(12, 7, 16), 1e-12);
+    sc_scene_release(neg);
     check_error("m.csg", "resize(newsize = 3) { cube(); }", SC_ERR_SEMANTIC,
                 "m.csg:1:18: error: wrong type for argument 'newsize' of 'resize' "
                 "(expected a vector of numbers)");

@@ -327,9 +327,19 @@ static void test_errors(void **state)
                 SC_ERR_SEMANTIC,
                 "m.csg:1:1: error: all points for rotate_extrude() must have the same X "
                 "coordinate sign (range is -1.00 -> 2.00)");
-    check_error("rotate_extrude() { cube(size = 1); }", SC_ERR_SEMANTIC,
-                "m.csg:1:20: error: 'cube' is a 3D object inside a 2D operation "
-                "(rotate_extrude)");
+    {
+        /* a 3D child: ignored with OpenSCAD's warning, the rest revolved */
+        static const char *const ignored[] = {
+            "m.csg:1:104: Ignoring 3D child object for 2D operation"};
+        sc_scene *s = test_check_warnings(
+            "m.csg",
+            "rotate_extrude() { multmatrix([[1, 0, 0, 2], [0, 1, 0, 0], [0, 0, 1, 0], [0, "
+            "0, 0, 1]]) { square(1); } cube(size = 1); }",
+            0, ignored, 1);
+        assert_true(inside(s, 2.5, 0, 0.5));
+        assert_false(inside(s, 0.5, 0.5, 0.5));
+        sc_scene_release(s);
+    }
     check_error("rotate_extrude(angle = \"x\") { square(size = 1); }", SC_ERR_SEMANTIC,
                 "m.csg:1:24: error: wrong type for argument 'angle' of 'rotate_extrude' "
                 "(expected a number)");

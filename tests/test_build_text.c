@@ -37,7 +37,7 @@ static void lay_out(laid *l, const char *node)
     memset(l, 0, sizeof *l);
     assert_int_equal(parse_text("t.csg", node, strlen(node), &l->tree, &e), SC_OK);
     assert_int_equal(model_lower_twod("t.csg", l->tree->first, &l->model, &e), SC_OK);
-    build_ctx c = {"t.csg", NULL, &e, 0, NULL};
+    build_ctx c = {"t.csg", NULL, &e, 0, NULL, NULL};
     assert_int_equal(text_shape_build(&c, l->model->first, &l->shape, &l->note), SC_OK);
 }
 
@@ -276,7 +276,7 @@ static sc_status text_polygons_of(const char *src, twod_region *poly, char *mess
     assert_int_equal(parse_text("t.csg", src, strlen(src), &tree, &e), SC_OK);
     model *lowered;
     assert_int_equal(model_lower_twod("t.csg", tree->first, &lowered, &e), SC_OK);
-    build_ctx c = {"t.csg", NULL, &e, 1, NULL};
+    build_ctx c = {"t.csg", NULL, &e, 1, NULL, NULL};
     twod_init(poly);
     sc_status st = text_faithful_polygons(&c, lowered->first, poly, NULL);
     if (st != SC_OK)
@@ -405,13 +405,16 @@ static void test_errors(void **state)
     assert_true(csg_inside(scene_tree(mixed), v3(1, 1, 0.5)));   /* the square */
     assert_false(csg_inside(scene_tree(mixed), v3(20, 1, 0.5))); /* past the text */
     sc_scene_release(mixed);
-    check_error("linear_extrude(height = 1) { text(\"a\"); sphere(2); }", SC_ERR_SEMANTIC,
-                "m.csg:1:41: error: 'sphere' is a 3D object inside a 2D operation "
-                "(linear_extrude)");
-    check_error(
-        "text(\"a\");", SC_ERR_SEMANTIC,
-        "m.csg:1:1: error: the model has only 2D objects, which have no 3D output "
-        "(extrude them with linear_extrude)");
+    /* a 3D child of the extrusion is ignored with OpenSCAD's warning */
+    static const char *const ignored[] = {
+        "m.csg:1:41: Ignoring 3D child object for 2D operation"};
+    sc_scene_release(test_check_warnings(
+        "m.csg", "linear_extrude(height = 1) { text(\"a\"); sphere(2); }", 0, ignored, 1));
+    /* text alone is a 2D model, drawn flat: the slab OpenSCAD draws */
+    sc_scene *flat = test_load("m.csg", "text(\"a\", size = 10);", 0);
+    assert_int_equal(sc_scene_warning_count(flat), 0);
+    assert_true(scene_tree(flat)->root != CSG_EMPTY);
+    sc_scene_release(flat);
     /* faithful mode needs OpenSCAD's points per curve; exact mode does not */
     const char *fine =
         "linear_extrude(height = 1) { text(\"a\", size = 10, $fa = 0.01, $fs = 0.001); }";

@@ -32,7 +32,7 @@ static sc_status region_of(const char *text, twod_region *r, char *error, size_t
     sc_error e;
     sc_status st = parse_text("m.csg", text, strlen(text), &tree, &e);
     assert_int_equal(st, SC_OK);
-    build_ctx c = {"m.csg", NULL, &e, 1, NULL};
+    build_ctx c = {"m.csg", NULL, &e, 1, NULL, NULL};
     twod_init(r);
     model *lowered = NULL;
     assert_int_equal(model_lower_twod("m.csg", tree->first, &lowered, &e), SC_OK);
@@ -329,8 +329,32 @@ static void test_errors(void **state)
                 SC_ERR_LIMIT,
                 "m.csg:1:11: error: offset: $fn, $fa and $fs of radius 1e+06 give too "
                 "many fragments (limit is 4096)");
-    check_error("group() { difference() { square(1); cube(1); } }", SC_ERR_SEMANTIC,
-                "m.csg:1:37: error: 'cube' is a 3D object inside a 2D operation (group)");
+    {
+        /* a 3D child of a 2D operation is left out (OpenSCAD's warnings) */
+        const char *text = "group() { difference() { square(1); cube(1); } }";
+        parse_tree *tree = NULL;
+        sc_error e;
+        assert_int_equal(parse_text("m.csg", text, strlen(text), &tree, &e), SC_OK);
+        build_notes notes = {NULL, 0, 0};
+        build_ctx c = {"m.csg", NULL, &e, 1, NULL, &notes};
+        model *lowered = NULL;
+        assert_int_equal(model_lower_twod("m.csg", tree->first, &lowered, &e), SC_OK);
+        twod_region r;
+        twod_init(&r);
+        assert_int_equal(build_twod_children(&c, lowered->first, &r), SC_OK);
+        assert_true(fabs(twod_area(&r) - 1) < 1e-12);
+        assert_int_equal(notes.count, 2);
+        assert_string_equal(notes.items[0].message,
+                            "Mixing 2D and 3D objects is not supported");
+        assert_string_equal(notes.items[1].message,
+                            "Ignoring 3D child object for 2D operation");
+        assert_int_equal(notes.items[1].line, 1);
+        assert_int_equal(notes.items[1].column, 37);
+        free(notes.items);
+        twod_free(&r);
+        model_free(lowered);
+        parse_tree_free(tree);
+    }
     check_error("group() { text(text = 5); }", SC_ERR_SEMANTIC,
                 "m.csg:1:23: error: wrong type for argument 'text' of 'text' (expected a "
                 "string)");
@@ -367,7 +391,7 @@ static double extrude_volume(const char *text, int faithful, uint32_t *triangles
     assert_int_equal(parse_text("m.csg", text, strlen(text), &tree, &e), SC_OK);
     csg_builder *b = csg_builder_new();
     assert_non_null(b);
-    build_ctx c = {"m.csg", b, &e, faithful, NULL};
+    build_ctx c = {"m.csg", b, &e, faithful, NULL, NULL};
     prim p;
     const char *empty = NULL;
     model *lowered = NULL;
@@ -518,33 +542,39 @@ static void test_extrude_errors(void **state)
         "linear_extrude(height = 1, twist = 10) {\n  text(text = 5);\n}", SC_ERR_SEMANTIC,
         "m.csg:2:15: error: wrong type for argument 'text' of 'text' (expected "
         "a string)");
-    check_load_error("linear_extrude(height = 1, twist = 10) {\n  sphere(1);\n}",
-                     SC_ERR_SEMANTIC,
-                     "m.csg:2:3: error: 'sphere' is a 3D object inside a 2D operation "
-                     "(linear_extrude)");
+    {
+        /* twisted: the prism path leaves the 3D child out too */
+        static const char *const ignored[] = {
+            "m.csg:3:3: Ignoring 3D child object for 2D operation"};
+        sc_scene_release(test_check_warnings(
+            "m.csg",
+            "linear_extrude(height = 1, twist = 10) {\n  square(1);\n  sphere(1);\n}", 0,
+            ignored, 1));
+    }
 }
 
-/* 2D shapes among 3D objects: a warning each, the empty solid; only 2D
- * shapes: an error at the first. */
+/* 2D objects among 3D objects: OpenSCAD's warnings, the empty solid; a
+ * model whose first object is 2D is a 2D model, drawn as a slab. */
 static void test_2d_in_3d(void **state)
 {
     (void)state;
-    const char *text = "union() {\n  cube(1);\n  circle(r = 5);\n}";
-    sc_scene *s = NULL;
-    sc_error e;
-    assert_int_equal(sc_scene_load_string("m.csg", text, strlen(text), NULL, &s, &e),
-                     SC_OK);
-    char buf[1024];
-    assert_int_equal(sc_scene_warning_count(s), 1);
-    assert_string_equal(
-        sc_error_format(sc_scene_warning(s, 0), buf, sizeof buf),
-        "m.csg:3:3: error: 2D object 'circle' in a 3D model is ignored (as "
-        "in OpenSCAD)");
+    static const char *const mixed[] = {
+        "m.csg:3:3: Mixing 2D and 3D objects is not supported",
+        "m.csg:3:3: Ignoring 2D child object for 3D operation"};
+    sc_scene *s = test_check_warnings("m.csg", "union() {\n  cube(1);\n  circle(r = 5);\n}",
+                                      0, mixed, 2);
+    assert_true(csg_inside(scene_tree(s), v3(0.5, 0.5, 0.5)));
+    assert_false(csg_inside(scene_tree(s), v3(3, 0, 0.25)));
     sc_scene_release(s);
-    check_load_error("group() {\n  square(2);\n  offset(r = 1) { circle(r = 1); }\n}",
-                     SC_ERR_SEMANTIC,
-                     "m.csg:2:3: error: the model has only 2D objects, which have no 3D "
-                     "output (extrude them with linear_extrude)");
+    /* only 2D: the union, 1 thick about z = 0 */
+    s = test_load("m.csg", "group() {\n  square(2);\n  offset(r = 1) { circle(r = 1); }\n}",
+                  0);
+    assert_int_equal(sc_scene_warning_count(s), 0);
+    assert_true(csg_inside(scene_tree(s), v3(1.5, 1.5, 0.4)));
+    assert_true(csg_inside(scene_tree(s), v3(-1.5, 0, -0.4)));
+    assert_false(csg_inside(scene_tree(s), v3(1.5, 1.5, 0.6)));
+    assert_false(csg_inside(scene_tree(s), v3(2.5, 2.5, 0)));
+    sc_scene_release(s);
     /* still checked */
     check_load_error("cube(1);\nsquare(size = \"x\");", SC_ERR_SEMANTIC,
                      "m.csg:2:15: error: wrong type for argument 'size' of 'square' "

@@ -59,4 +59,24 @@ static inline void test_check_error(const char *name, const char *text, sc_statu
     assert_string_equal(sc_error_format(&e, buf, sizeof buf), expected);
 }
 
+/* Loading text as the file name succeeds with exactly the warnings
+ * expected, in order, each written "file:line:col: message"; returns the
+ * scene for more checks. */
+static inline sc_scene *test_check_warnings(const char *name, const char *text,
+                                            int faithful, const char *const *expected,
+                                            size_t count)
+{
+    sc_scene *s = test_load(name, text, faithful);
+    for (size_t i = 0; i < sc_scene_warning_count(s) || i < count; i++) {
+        char got[SC_ERROR_FILE_MAX + SC_ERROR_MESSAGE_MAX + 64] = "(none)";
+        if (i < sc_scene_warning_count(s)) {
+            const sc_error *w = sc_scene_warning(s, i);
+            snprintf(got, sizeof got, "%s:%d:%d: %s", w->file, w->line, w->column,
+                     w->message);
+        }
+        assert_string_equal(got, i < count ? expected[i] : "(no more warnings)");
+    }
+    return s;
+}
+
 #endif

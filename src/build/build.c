@@ -43,6 +43,7 @@
  */
 #include "build/build.h"
 
+#include <errno.h>
 #include <math.h>
 #include <stdarg.h>
 #include <stdio.h>
@@ -52,6 +53,7 @@
 #include "base/error.h"
 #include "base/grow.h"
 #include "build/build_ctx.h"
+#include "build/build_extrude_faithful.h"
 #include "build/build_hull.h"
 #include "build/build_mesh.h"
 #include "build/build_motion.h"
@@ -73,6 +75,7 @@ typedef struct frame {
     int moving;        /* inside a motion node: leaves carry motion */
     csg_motion motion; /* its motion (build_motion.h) */
     int shown;         /* inside the design: not outside the '!' subtree */
+    int mixed;         /* a 2D child has been ignored here (OpenSCAD says so once) */
 } frame;
 
 /* A '#' or '%' node and the state its parent hands it. */
@@ -87,8 +90,7 @@ typedef struct builder {
     const char *file; /* for positions */
     csg_builder *csg;
     sc_error *error;
-    sc_error *warnings;
-    size_t warning_count, warning_cap;
+    build_notes warnings; /* every warning of the build, in order */
     uint32_t *ids; /* results waiting for their parent's operation */
     size_t id_count, id_cap;
     frame *frames;
@@ -96,9 +98,6 @@ typedef struct builder {
     shading *shading; /* lights, materials, camera, background */
     int faithful;     /* OpenSCAD's polyhedra for spheres and cylinders */
     uint32_t root_id; /* the result of the first '!' node */
-    /* the first 2D shape ignored in the 3D model, and the 3D leaves built */
-    const model_node *first_2d;
-    size_t solid_leaves;
     /* resize matrices measured so far (build_hull.h) */
     build_resize_cache *resize_cache;
     part_mark *marks; /* the modifier parts met, in file order */
@@ -110,16 +109,25 @@ static sc_status warn(builder *b, const sc_location *loc, const char *format, ..
     SC_PRINTF(3, 4);
 static sc_status warn(builder *b, const sc_location *loc, const char *format, ...)
 {
-    if (!grow_array((void **)&b->warnings, &b->warning_cap, b->warning_count + 1,
-                    sizeof *b->warnings))
+    build_notes *w = &b->warnings;
+    if (!grow_array((void **)&w->items, &w->cap, w->count + 1, sizeof *w->items))
         return err_nomem(b->error, NULL);
     char message[SC_ERROR_MESSAGE_MAX];
     va_list args;
     va_start(args, format);
     vsnprintf(message, sizeof message, format, args);
     va_end(args);
-    err_set(&b->warnings[b->warning_count++], SC_OK, loc, "%s", message);
+    err_set(&w->items[w->count++], SC_OK, loc, "%s", message);
     return SC_OK;
+}
+
+/* The build context of node n's builder: its warnings go to b's where
+ * the node is built, nowhere where it is only checked. */
+static build_ctx context(builder *b, int emit, sc_error *note)
+{
+    build_ctx c = {b->file, b->csg, b->error, b->faithful, note,
+                   emit ? &b->warnings : NULL};
+    return c;
 }
 
 static sc_status push_id(builder *b, uint32_t id)
@@ -408,7 +416,7 @@ static sc_status build_polyhedron(builder *b, const model_node *n, const frame *
         (uint64_t)m.face_count * m.point_count <= BUILD_MAX_POLYHEDRON_WORK)
         st = convex_planes(b, &m, &count, &bounds);
     if (st == SC_OK && count == UINT32_MAX) {
-        build_ctx c = {b->file, b->csg, b->error, b->faithful, NULL};
+        build_ctx c = context(b, state->emit, NULL);
         const char *empty = NULL;
         prim p;
         st = build_mesh_prim(&c, &n->loc, "polyhedron", 1, m.points, m.point_count,
@@ -479,18 +487,44 @@ static sc_status build_curved(builder *b, const model_node *n, const frame *stat
     return add_leaf(b, n, &p, state, id);
 }
 
+/* OpenSCAD 2021.01 (import.cc) imports a file it cannot open as nothing,
+ * with a warning, and renders the rest: so does the import n here.
+ * *opened says whether the file opens; a file that opens and is bad is
+ * build_import's error. */
+static sc_status import_opens(builder *b, const model_node *n, int *opened)
+{
+    build_ctx c = context(b, 1, NULL);
+    char *path = build_file_path(&c, n->u.import->file);
+    if (!path)
+        return err_nomem(b->error, &n->loc);
+    FILE *f = fopen(path, "rb");
+    *opened = f != NULL;
+    sc_status st = SC_OK;
+    if (f)
+        fclose(f);
+    else
+        st = warn(b, &n->loc, "Can't open import file '%s': %s (the import is empty)", path,
+                  strerror(errno));
+    free(path);
+    return st;
+}
+
 /* import(file = "...") (build_mesh.c), linear_extrude (build_extrude.c)
  * or rotate_extrude (build_revolve.c). */
 static sc_status build_import_leaf(builder *b, const model_node *n, const frame *state,
                                    uint32_t *id)
 {
     sc_error note = {SC_OK, "", 0, 0, ""}; /* a warning, e.g. a font fallback */
-    build_ctx c = {b->file, b->csg, b->error, b->faithful, &note};
+    build_ctx c = context(b, state->emit, &note);
     const char *empty = NULL;
     prim p;
     sc_status st = SC_OK;
-    if (n->kind == MODEL_IMPORT && state->emit)
+    if (n->kind == MODEL_IMPORT && state->emit) {
+        int opened = 1;
+        if ((st = import_opens(b, n, &opened)) != SC_OK || !opened)
+            return st;
         st = build_import(&c, n->u.import, &p, &empty);
+    }
     else if (n->kind == MODEL_LINEAR_EXTRUDE)
         st = build_linear_extrude(&c, n, state->emit, &p, &empty);
     else if (n->kind == MODEL_ROTATE_EXTRUDE)
@@ -507,29 +541,64 @@ static sc_status build_import_leaf(builder *b, const model_node *n, const frame 
     return add_leaf(b, n, &p, state, id);
 }
 
-/* A 2D shape (circle, square, polygon, offset) among 3D objects: checked
- * through the 2D engine, then the empty solid with a warning, as OpenSCAD
- * ignores 2D objects in a 3D model. */
+/* A 2D object among 3D objects (a 2D shape, or an operation whose first
+ * child with a dimension is 2D: build_dim): checked through the 2D engine,
+ * then the empty solid with OpenSCAD 2021.01's warnings (isValidDim and
+ * collectChildren3D in its GeometryEvaluator.cc), the first of its
+ * parent's 2D children also saying that the parent mixes them. */
 static sc_status build_twod_ignored(builder *b, const model_node *n, const frame *state)
 {
-    build_ctx c = {b->file, b->csg, b->error, b->faithful, NULL};
+    build_ctx c = context(b, state->emit, NULL);
     twod_region r;
     twod_init(&r);
-    sc_status st = build_twod_node(&c, n, n->name, &r);
+    sc_status st = build_twod_main(&c, n, &r);
     twod_free(&r);
     if (st != SC_OK || !state->emit)
         return st;
-    if (!b->first_2d)
-        b->first_2d = n;
-    return warn(b, &n->loc, "2D object '%s' in a 3D model is ignored (as in OpenSCAD)",
-                n->name);
+    frame *parent = &b->frames[b->frame_count - 1];
+    if (!parent->mixed) {
+        parent->mixed = 1;
+        st = warn(b, &n->loc, "Mixing 2D and 3D objects is not supported");
+    }
+    if (st == SC_OK)
+        st = warn(b, &n->loc, "Ignoring 2D child object for 3D operation");
+    return st;
+}
+
+/* A 2D model: the '!' node n when its subtree is 2D, or else (n NULL) the
+ * file's top level when its first node with a dimension is 2D, as
+ * OpenSCAD's top-level group takes its dimension. Its region (3D objects
+ * in it ignored with a warning) becomes the slab OpenSCAD draws a 2D
+ * result as (build_flat_slab), with state's colour; the shading record
+ * says that the model is flat, so that the render draws it as OpenSCAD's
+ * render draws 2D (shading.h). */
+static sc_status build_flat(builder *b, const model_node *n, const frame *state,
+                            uint32_t *id)
+{
+    *id = CSG_EMPTY;
+    const model_node *at = n ? n : twod_walk_next(b->model->first);
+    build_ctx c = context(b, 1, NULL);
+    twod_region r;
+    twod_init(&r);
+    sc_status st = n ? build_twod_main(&c, n, &r) : build_twod_top(&c, at, &r);
+    prim p;
+    const char *empty = NULL;
+    if (st == SC_OK)
+        st = build_flat_slab(&c, &at->loc, &r, &p, &empty);
+    twod_free(&r);
+    if (st != SC_OK)
+        return st;
+    b->shading->flat_2d = 1;
+    if (empty)
+        return warn(b, &at->loc, "%s", empty);
+    return add_leaf(b, at, &p, state, id);
 }
 
 /* hull and minkowski (build_hull.c): one or several convex leaves, united. */
 static sc_status build_hull_leaf(builder *b, const model_node *n, const frame *state,
                                  uint32_t *id)
 {
-    build_ctx c = {b->file, b->csg, b->error, b->faithful, NULL};
+    build_ctx c = context(b, state->emit, NULL);
     const char *empty = NULL;
     build_prims leaves = {NULL, 0, 0};
     sc_status st =
@@ -559,7 +628,7 @@ static sc_status build_hull_leaf(builder *b, const model_node *n, const frame *s
 static sc_status build_surface_leaf(builder *b, const model_node *n, const frame *state,
                                     uint32_t *id)
 {
-    build_ctx c = {b->file, b->csg, b->error, b->faithful, NULL};
+    build_ctx c = context(b, state->emit, NULL);
     const char *empty = NULL;
     prim p;
     if (!state->emit)
@@ -708,6 +777,13 @@ static sc_status visit(builder *b, const model_node *n, int *opened)
         build_background(b->shading, n, f.emit);
         return SC_OK;
     }
+    if (model_is_2d(kind) || (!model_is_leaf(kind) && build_dim(n, 0) == 2)) {
+        uint32_t id = CSG_EMPTY;
+        if (!n->is_root)
+            return build_twod_ignored(b, n, &f);
+        st = build_flat(b, n, &f, &id);
+        return st != SC_OK ? st : deliver(b, n, f.counted, id);
+    }
     if (model_is_leaf(kind)) {
         if (n->child_count > 0 && f.emit && kind != MODEL_LINEAR_EXTRUDE &&
             kind != MODEL_ROTATE_EXTRUDE && !model_is_2d(kind) && kind != MODEL_HULL &&
@@ -716,7 +792,6 @@ static sc_status visit(builder *b, const model_node *n, int *opened)
                        n->name)) != SC_OK)
             return st;
         uint32_t id = CSG_EMPTY;
-        b->solid_leaves += f.emit && !model_is_2d(kind);
         switch (kind) {
         case MODEL_CUBE:
             st = build_cube(b, n, &f, &id);
@@ -747,8 +822,7 @@ static sc_status visit(builder *b, const model_node *n, int *opened)
         case MODEL_POLYHEDRON:
             st = build_polyhedron(b, n, &f, &id);
             break;
-        default: /* the 2D shapes */
-            st = build_twod_ignored(b, n, &f);
+        default: /* the 2D shapes, taken above */
             break;
         }
         return st != SC_OK ? st : deliver(b, n, f.counted, id);
@@ -766,7 +840,7 @@ static sc_status visit(builder *b, const model_node *n, int *opened)
             f.emit = 0; /* still counted: the empty solid */
         }
     } else if (kind == MODEL_RESIZE) {
-        build_ctx c = {b->file, b->csg, b->error, b->faithful, NULL};
+        build_ctx c = context(b, f.emit, NULL);
         const char *warning = NULL;
         affine m;
         if ((st = build_resize(&c, n, &b->resize_cache, &m, &warning)) != SC_OK)
@@ -790,6 +864,45 @@ static sc_status visit(builder *b, const model_node *n, int *opened)
     return push_frame(b, &f);
 }
 
+/* The last node of the model in file order: where the lowering stopped
+ * when a node had an argument error (model.h). */
+static const model_node *last_node(const model *m)
+{
+    const model_node *n = m->first;
+    while (n) {
+        while (n->next)
+            n = n->next;
+        if (!n->first_child)
+            break;
+        n = n->first_child;
+    }
+    return n;
+}
+
+/* The walk of a 2D model's top level (build_flat): the shading nodes at
+ * the top level are read, the rest is the 2D engine's; an argument error
+ * that ended the lowering is reported as the main walk would. */
+static sc_status walk_flat(builder *b, const frame *top, uint32_t *root)
+{
+    sc_status st = build_flat(b, NULL, top, root);
+    const model_node *last = last_node(b->model);
+    if (st == SC_OK && last && last->kind == MODEL_ERROR) {
+        *b->error = *last->u.error;
+        return last->u.error->status;
+    }
+    for (const model_node *n = b->model->first; st == SC_OK && n; n = n->next) {
+        if (n->modifiers & (MODEL_MOD_DISABLE | MODEL_MOD_BACKGROUND))
+            continue;
+        if (n->kind == MODEL_LIGHT)
+            st = build_light(b->shading, n, &top->to_world, 1, b->error);
+        else if (n->kind == MODEL_CAMERA)
+            build_camera(b->shading, n, 1);
+        else if (n->kind == MODEL_BACKGROUND)
+            build_background(b->shading, n, 1);
+    }
+    return st;
+}
+
 static sc_status walk(builder *b, uint32_t *root)
 {
     static const float default_color[4] = BUILD_DEFAULT_COLOR;
@@ -801,6 +914,8 @@ static sc_status walk(builder *b, uint32_t *root)
     top.to_world = affine_identity();
     memcpy(top.color, default_color, sizeof top.color);
     sc_status st = push_frame(b, &top);
+    if (st == SC_OK && !b->model->has_root && build_list_dim(b->model->first, 0) == 2)
+        return walk_flat(b, &top, root);
     const model_node *n = b->model->first;
     while (st == SC_OK) {
         if (!n) {
@@ -913,7 +1028,7 @@ static sc_status build_parts(builder *b)
         b->resize_cache = sub.resize_cache;
         free(sub.ids);
         free(sub.frames);
-        free(sub.warnings);
+        free(sub.warnings.items);
         shading_free(sub.shading);
         uint32_t root = CSG_EMPTY;
         if (st == SC_OK) {
@@ -963,10 +1078,6 @@ sc_status build_scene(const model *m, int faithful, csg_tree **out, shading **lo
     sc_status st = walk(&b, &root);
     free(b.ids);
     free(b.frames);
-    if (st == SC_OK && b.first_2d && !b.solid_leaves)
-        st = err_set(error, SC_ERR_SEMANTIC, &b.first_2d->loc,
-                     "the model has only 2D objects, which have no 3D output (extrude "
-                     "them with linear_extrude)");
     if (st == SC_OK)
         st = build_parts(&b);
     free(b.marks);
@@ -974,20 +1085,20 @@ sc_status build_scene(const model *m, int faithful, csg_tree **out, shading **lo
     if (st != SC_OK) {
         csg_builder_free(b.csg);
         shading_free(b.shading);
-        free(b.warnings);
+        free(b.warnings.items);
         return st;
     }
     st = csg_builder_finish(b.csg, root, out, error);
     if (st != SC_OK) {
         shading_free(b.shading);
-        free(b.warnings);
+        free(b.warnings.items);
         return st;
     }
     if (look)
         *look = b.shading;
     else
         shading_free(b.shading);
-    *warnings = b.warnings;
-    *warning_count = b.warning_count;
+    *warnings = b.warnings.items;
+    *warning_count = b.warnings.count;
     return SC_OK;
 }

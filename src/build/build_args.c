@@ -1,13 +1,35 @@
 /* What the builders of 2D subtrees share (build_ctx.h): the pending
- * argument error of a node, and the 2D part of a multmatrix. */
+ * argument error of a node, the warnings of a walk, and the 2D part of a
+ * multmatrix. */
+#include <stdarg.h>
+#include <stdio.h>
 #include <string.h>
 
+#include "base/error.h"
+#include "base/grow.h"
 #include "build/build_ctx.h"
 
 sc_status build_pending(const build_ctx *c, const model_node *n)
 {
     *c->error = *n->pending;
     return n->pending->status;
+}
+
+sc_status build_note(const build_ctx *c, const sc_location *loc, const char *format, ...)
+{
+    build_notes *notes = c->notes;
+    if (!notes)
+        return SC_OK;
+    if (!grow_array((void **)&notes->items, &notes->cap, notes->count + 1,
+                    sizeof *notes->items))
+        return err_nomem(c->error, NULL);
+    char message[SC_ERROR_MESSAGE_MAX];
+    va_list args;
+    va_start(args, format);
+    vsnprintf(message, sizeof message, format, args);
+    va_end(args);
+    err_set(&notes->items[notes->count++], SC_OK, loc, "%s", message);
+    return SC_OK;
 }
 
 void build_matrix_xy(const affine *a, const double outer[2][3], double inner[2][3])

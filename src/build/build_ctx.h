@@ -7,9 +7,17 @@
 #ifndef SPANCAST_BUILD_BUILD_CTX_H
 #define SPANCAST_BUILD_BUILD_CTX_H
 
+#include "base/error.h"
 #include "csg/csg.h"
 #include "model/model.h"
 #include "spancast/spancast.h"
+
+/* Warnings at their positions, in the order they were given (message and
+ * location; status SC_OK). */
+typedef struct build_notes {
+    sc_error *items;
+    size_t count, cap;
+} build_notes;
 
 typedef struct build_ctx {
     const char *file; /* for positions */
@@ -18,7 +26,15 @@ typedef struct build_ctx {
     int faithful; /* --faithful: OpenSCAD's polygons and polyhedra */
     /* where a builder may leave one warning (a font fallback), or NULL */
     sc_error *note;
+    /* where the warnings of a subtree's walk go (a 3D child a 2D operation
+     * ignores), or NULL where the subtree is only checked, not built */
+    build_notes *notes;
 } build_ctx;
+
+/* Adds a warning at loc to c->notes (nothing when that is NULL); fails
+ * only when memory runs out (an error in c->error). */
+sc_status build_note(const build_ctx *c, const sc_location *loc, const char *format, ...)
+    SC_PRINTF(3, 4);
 
 /* A nested node's argument error, kept by the lowering (model.h, pending):
  * copied into c->error, its status returned. */

@@ -318,7 +318,7 @@ static void mesh_free(mesh *m)
     free(m->line);
 }
 
-static sc_status extrude(const build_ctx *c, const model_node *n, const params *p,
+static sc_status extrude(const build_ctx *c, const sc_location *loc, const params *p,
                          const twod_region *r, uint32_t slices, prim *out,
                          const char **empty)
 {
@@ -331,7 +331,7 @@ static sc_status extrude(const build_ctx *c, const model_node *n, const params *
     size_t total = ((size_t)slices + 1) * m.ring;
     m.points = malloc(total * sizeof *m.points);
     if (!m.points)
-        return err_nomem(c->error, &n->loc);
+        return err_nomem(c->error, loc);
     for (uint32_t j = 0; j <= slices; j++) {
         double rot = p->twist * j / slices;
         double scx = 1 - (1 - p->sx) * j / slices, scy = 1 - (1 - p->sy) * j / slices;
@@ -405,9 +405,9 @@ static sc_status extrude(const build_ctx *c, const model_node *n, const params *
     free(face);
     sc_status st;
     if (!ok)
-        st = err_nomem(c->error, &n->loc);
+        st = err_nomem(c->error, loc);
     else
-        st = build_mesh_prim(c, &n->loc, "linear_extrude", 0, m.points, (uint32_t)total,
+        st = build_mesh_prim(c, loc, "linear_extrude", 0, m.points, (uint32_t)total,
                              m.indices, m.face_start, (uint32_t)m.face_count, out, empty);
     if (st == SC_OK && *empty)
         *empty = "linear_extrude without height or area is empty";
@@ -437,9 +437,24 @@ sc_status build_linear_extrude_faithful(const build_ctx *c, const model_node *n,
                              "is %u side faces)",
                              slices, r.point_count, BUILD_EXTRUDE_MAX_QUADS);
             else
-                st = extrude(c, n, &p, &r, (uint32_t)slices, out, empty);
+                st = extrude(c, &n->loc, &p, &r, (uint32_t)slices, out, empty);
         }
     }
     twod_free(&r);
+    return st;
+}
+
+sc_status build_flat_slab(const build_ctx *c, const sc_location *loc, const twod_region *r,
+                          prim *out, const char **empty)
+{
+    /* height 1 centred, one slice, no twist or scale */
+    params p = {1, 0, 1, 1, 0, 12, 2, 1, 1};
+    if (!(fabs(twod_area(r)) > 0)) {
+        *empty = "the 2D model has no area";
+        return SC_OK;
+    }
+    sc_status st = extrude(c, loc, &p, r, 1, out, empty);
+    if (st == SC_OK && *empty)
+        *empty = "the 2D model has no area";
     return st;
 }

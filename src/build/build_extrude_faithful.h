@@ -6,6 +6,7 @@
 #define SPANCAST_BUILD_BUILD_EXTRUDE_FAITHFUL_H
 
 #include "build/build_ctx.h"
+#include "twod/twod.h"
 
 /* Most side quads (slices times outline points) of one extrusion. */
 #define BUILD_EXTRUDE_MAX_QUADS 2000000u
@@ -16,5 +17,12 @@
  * is set, and an extrusion without height or area sets *empty instead. */
 sc_status build_linear_extrude_faithful(const build_ctx *c, const model_node *n, int emit,
                                         prim *out, const char **empty);
+
+/* A 2D model as OpenSCAD 2021.01 draws a 2D result (its
+ * PolySet::render_surface, in the preview and the render alike): the
+ * region r between z = -0.5 and 0.5, as a closed mesh leaf; a region
+ * without area sets *empty instead. loc is the model's position. */
+sc_status build_flat_slab(const build_ctx *c, const sc_location *loc, const twod_region *r,
+                          prim *out, const char **empty);
 
 #endif

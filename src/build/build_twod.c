@@ -34,13 +34,18 @@
  *                          found from the directory of the model. Other
  *                          files are errors: .svg is not supported yet,
  *                          .stl, .off and the like are 3D.
- * 3D nodes are errors (OpenSCAD drops them from a 2D operation with a
- * warning). The recursion over the children is the one 2D walk
+ * A 3D child of a 2D operation (its dimension is OpenSCAD's: a shape's
+ * own, an operation's that of its first child that has one) is left out
+ * with OpenSCAD's warnings, "Mixing 2D and 3D objects is not supported"
+ * (once per operation, not from offset and the extrusions) and "Ignoring
+ * 3D child object for 2D operation". The recursion over the children is the one 2D walk
  * (twod_walk, below), with its depth guard (TWOD_WALK_MAX_DEPTH).
  */
 #include "build/build_twod.h"
 
+#include <errno.h>
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -98,12 +103,90 @@ sc_status twod_walk_fold(const twod_walker *w, const model_node *n, const affine
     return SC_OK;
 }
 
+/* ---- dimensions ---- */
+
+/* The dimension of n's own kind: 2 or 3 for a shape, -1 for an operation
+ * that takes its children's, 0 for a node without geometry. in_2d: n was
+ * lowered in the 2D context (where hull and minkowski are 2D operations and
+ * an import is a drawing). */
+static int kind_dim(const model_node *n, int in_2d)
+{
+    switch (n->kind) {
+    case MODEL_CIRCLE:
+    case MODEL_SQUARE:
+    case MODEL_POLYGON:
+    case MODEL_TEXT:
+    case MODEL_OFFSET:
+        return 2;
+    case MODEL_IMPORT:
+        return in_2d && !n->u.drawing->not_2d ? 2 : 3;
+    case MODEL_UNION:
+    case MODEL_DIFFERENCE:
+    case MODEL_INTERSECTION:
+    case MODEL_XFORM:
+    case MODEL_COLOR:
+    case MODEL_MATERIAL:
+    case MODEL_RESIZE:
+    case MODEL_MOTION:
+    case MODEL_HULL:
+    case MODEL_MINKOWSKI:
+        return -1;
+    case MODEL_CUBE:
+    case MODEL_SPHERE:
+    case MODEL_CYLINDER:
+    case MODEL_POLYHEDRON:
+    case MODEL_LINEAR_EXTRUDE:
+    case MODEL_ROTATE_EXTRUDE:
+    case MODEL_SURFACE:
+    case MODEL_TORUS:
+    case MODEL_QUADRIC:
+    case MODEL_IMPLICIT:
+    case MODEL_HALFSPACE:
+        return 3;
+    default:
+        return 0;
+    }
+}
+
+static int list_dim(const model_node *first, int in_2d, int depth);
+
+static int node_dim(const model_node *n, int in_2d, int depth)
+{
+    int d = kind_dim(n, in_2d);
+    return d >= 0 ? d : list_dim(twod_walk_first(n), in_2d, depth + 1);
+}
+
+/* The first dimension among the nodes from first on that count. Past the
+ * 2D walk's depth limit it answers 0: the walk reports that depth. */
+static int list_dim(const model_node *first, int in_2d, int depth)
+{
+    if (depth > TWOD_WALK_MAX_DEPTH)
+        return 0;
+    for (const model_node *k = first; k; k = twod_walk_next(k->next)) {
+        int d = node_dim(k, in_2d, depth);
+        if (d)
+            return d;
+    }
+    return 0;
+}
+
+int build_dim(const model_node *n, int in_2d)
+{
+    return node_dim(n, in_2d, 0);
+}
+
+int build_list_dim(const model_node *first, int in_2d)
+{
+    return list_dim(twod_walk_next(first), in_2d, 0);
+}
+
 /* ---- OpenSCAD's evaluation ---- */
 
 typedef struct eval {
     twod_walker walk; /* first: the visitor is the walker */
     const build_ctx *c;
     const char *outer; /* the node that asked for 2D, for messages */
+    int in_2d;         /* the nodes visited now were lowered in the 2D context */
 } eval;
 
 static const affine2 unmoved = {{{1, 0, 0}, {0, 1, 0}}};
@@ -251,30 +334,70 @@ static sc_status read_polygon(const eval *e, const model_node *n, twod_region *o
     return clip_status(e, n, twod_clip_sanitize(out));
 }
 
-/* The regions of n's children ('%' and '*' left out). *regions holds
+/* A 3D child k of a 2D operation: nothing, with OpenSCAD 2021.01's
+ * warnings (GeometryEvaluator.cc: isValidDim, collectChildren2D), the
+ * first also saying that the operation mixes when mixing is set. */
+static sc_status ignore_3d(const eval *e, const model_node *k, int mixing)
+{
+    sc_status st = SC_OK;
+    if (mixing)
+        st = build_note(e->c, &k->loc, "Mixing 2D and 3D objects is not supported");
+    if (st == SC_OK)
+        st = build_note(e->c, &k->loc, "Ignoring 3D child object for 2D operation");
+    return st;
+}
+
+/* The regions of the nodes from first on, the children of an operation of
+ * this kind ('%' and '*' left out; 3D ones ignored with a warning, as
+ * OpenSCAD ignores them). *regions holds
  * *count initialised regions, to be freed by free_children. */
-static sc_status eval_children(eval *e, const model_node *n, twod_region **regions,
-                               uint32_t *count, int depth)
+static sc_status eval_list(eval *e, const model_node *first, model_kind kind,
+                           twod_region **regions, uint32_t *count, int depth)
 {
     *regions = NULL;
     *count = 0;
     uint32_t total = 0;
-    for (const model_node *k = n->first_child; k; k = k->next)
+    for (const model_node *k = first; k; k = k->next)
         total++;
     if (total == 0)
         return SC_OK;
     twod_region *r = calloc(total, sizeof *r);
     if (!r)
-        return err_nomem(e->c->error, &n->loc);
+        return err_nomem(e->c->error, &first->loc);
     *regions = r;
-    for (const model_node *k = twod_walk_first(n); k; k = twod_walk_next(k->next)) {
+    /* OpenSCAD's operations on children (applyToChildren: the booleans,
+     * multmatrix, color, hull, minkowski, a file's top level) say once
+     * that they mix; offset and the extrusions take 2D children without
+     * that check. */
+    int mixing = kind != MODEL_OFFSET && kind != MODEL_LINEAR_EXTRUDE &&
+                 kind != MODEL_ROTATE_EXTRUDE;
+    sc_status st = SC_OK;
+    for (const model_node *k = twod_walk_next(first); st == SC_OK && k;
+         k = twod_walk_next(k->next)) {
+        if (build_dim(k, e->in_2d) == 3) {
+            st = ignore_3d(e, k, mixing);
+            mixing = 0;
+            continue;
+        }
         twod_init(&r[*count]);
         (*count)++;
-        sc_status st = twod_walk(&e->walk, k, &unmoved, depth + 1, &r[*count - 1]);
-        if (st != SC_OK)
-            return st;
+        st = twod_walk(&e->walk, k, &unmoved, depth + 1, &r[*count - 1]);
     }
-    return SC_OK;
+    return st;
+}
+
+static sc_status eval_children(eval *e, const model_node *n, twod_region **regions,
+                               uint32_t *count, int depth)
+{
+    /* The children of a 2D shape, and everything below an extrusion, were
+     * lowered in the 2D context; those of a main-model operation in the
+     * main model. */
+    int outer_2d = e->in_2d;
+    e->in_2d = outer_2d || model_is_2d(n->kind) || n->kind == MODEL_LINEAR_EXTRUDE ||
+               n->kind == MODEL_ROTATE_EXTRUDE;
+    sc_status st = eval_list(e, n->first_child, n->kind, regions, count, depth);
+    e->in_2d = outer_2d;
+    return st;
 }
 
 static void free_children(twod_region *regions, uint32_t count)
@@ -445,17 +568,24 @@ static sc_status read_import(const eval *e, const model_node *n, twod_region *ou
     const model_drawing *d = n->u.drawing;
     const char *name = d->file;
     sc_location loc = d->file_loc;
-    if (d->not_2d)
-        return err_set(e->c->error, SC_ERR_SEMANTIC, &loc,
-                       "import of '%s' inside %s: a 2D operation imports only 2D files "
-                       "(.dxf)",
-                       name, e->outer);
+    if (d->not_2d) /* a 3D file */
+        return ignore_3d(e, n, 0);
     dxf_options o = {d->res.fn,    d->res.fa,    d->res.fs, d->layer,
                      d->origin[0], d->origin[1], d->scale};
     sc_status st;
     char *path = build_file_path(e->c, name);
     if (!path)
         return err_nomem(e->c->error, &n->loc);
+    /* OpenSCAD 2021.01 (import.cc, DxfData) reads a drawing it cannot
+     * open as nothing, with a warning. */
+    FILE *f = fopen(path, "rb");
+    if (!f) {
+        st = build_note(e->c, &n->loc, "Can't open DXF file '%s': %s (the import is empty)",
+                        path, strerror(errno));
+        free(path);
+        return st;
+    }
+    fclose(f);
     char unsupported[32];
     st = dxf_read_file(path, &loc, &o, out, unsupported, e->c->error);
     if (st == SC_OK && unsupported[0] && e->c->note && !e->c->note->message[0])
@@ -466,26 +596,6 @@ static sc_status read_import(const eval *e, const model_node *n, twod_region *ou
     if (st == SC_OK && out->contour_count)
         st = clip_status(e, n, twod_clip_sanitize(out));
     return st;
-}
-
-static int is_3d(model_kind kind)
-{
-    switch (kind) {
-    case MODEL_CUBE:
-    case MODEL_SPHERE:
-    case MODEL_CYLINDER:
-    case MODEL_POLYHEDRON:
-    case MODEL_LINEAR_EXTRUDE:
-    case MODEL_ROTATE_EXTRUDE:
-    case MODEL_SURFACE:
-    case MODEL_TORUS:
-    case MODEL_QUADRIC:
-    case MODEL_IMPLICIT:
-    case MODEL_HALFSPACE:
-        return 1;
-    default:
-        return 0;
-    }
 }
 
 /* The walk's visitor: n's region into out (a twod_region); m is the
@@ -500,6 +610,9 @@ static sc_status eval_node(twod_walker *w, const model_node *n, const affine2 *u
     model_kind kind = n->kind;
     twod_clear(out);
     switch (kind) {
+    case MODEL_ERROR: /* a main-model node's argument error */
+        *e->c->error = *n->u.error;
+        return n->u.error->status;
     case MODEL_SQUARE:
         return read_square(e, n, out);
     case MODEL_CIRCLE:
@@ -513,9 +626,8 @@ static sc_status eval_node(twod_walker *w, const model_node *n, const affine2 *u
     default:
         break;
     }
-    if (is_3d(kind))
-        return err_set(e->c->error, SC_ERR_SEMANTIC, &n->loc,
-                       "'%s' is a 3D object inside a 2D operation (%s)", name, e->outer);
+    if (build_dim(n, e->in_2d) == 3)
+        return ignore_3d(e, n, 0);
     twod_op op = kind == MODEL_DIFFERENCE     ? TWOD_DIFFERENCE
                  : kind == MODEL_INTERSECTION ? TWOD_INTERSECTION
                                               : TWOD_UNION;
@@ -524,6 +636,11 @@ static sc_status eval_node(twod_walker *w, const model_node *n, const affine2 *u
         kind != MODEL_HULL && kind != MODEL_MINKOWSKI)
         return err_set(e->c->error, SC_ERR_UNSUPPORTED, &n->loc,
                        "'%s' inside %s is not supported yet", name, e->outer);
+    /* A main-model hull or minkowski lowered its children for the 3D
+     * hull builder (the points context), not for this one. */
+    if ((kind == MODEL_HULL || kind == MODEL_MINKOWSKI) && !e->in_2d)
+        return err_set(e->c->error, SC_ERR_UNSUPPORTED, &n->loc,
+                       "2D '%s' outside linear_extrude is not supported yet", name);
     double m[2][3] = {{1, 0, 0}, {0, 1, 0}};
     sc_status st;
     if (kind == MODEL_XFORM && (st = read_matrix(e, n, m)) != SC_OK)
@@ -549,7 +666,7 @@ static sc_status eval_node(twod_walker *w, const model_node *n, const affine2 *u
 
 static eval evaluator(const build_ctx *c, const char *outer)
 {
-    eval e = {{c, outer, "2D nodes", eval_node}, c, outer};
+    eval e = {{c, outer, "2D nodes", eval_node}, c, outer, 1};
     return e;
 }
 
@@ -579,4 +696,24 @@ sc_status build_twod_node(const build_ctx *c, const model_node *n, const char *o
 {
     eval e = evaluator(c, outer);
     return twod_walk(&e.walk, n, &unmoved, 1, out);
+}
+
+sc_status build_twod_main(const build_ctx *c, const model_node *n, twod_region *out)
+{
+    eval e = evaluator(c, n->name);
+    e.in_2d = 0;
+    return twod_walk(&e.walk, n, &unmoved, 1, out);
+}
+
+sc_status build_twod_top(const build_ctx *c, const model_node *first, twod_region *out)
+{
+    eval e = evaluator(c, "the 2D model");
+    e.in_2d = 0;
+    twod_region *regions;
+    uint32_t count;
+    sc_status st = eval_list(&e, first, MODEL_UNION, &regions, &count, 0);
+    if (st == SC_OK && count)
+        st = combine(&e, first, regions, count, TWOD_UNION, out);
+    free_children(regions, count);
+    return st;
 }

@@ -22,6 +22,23 @@ sc_status build_twod_children(const build_ctx *c, const model_node *parent,
 sc_status build_twod_node(const build_ctx *c, const model_node *n, const char *outer,
                           twod_region *out);
 
+/* The main-model node n (a 2D shape, or an operation whose first child
+ * with a dimension is 2D), evaluated as OpenSCAD evaluates it. */
+sc_status build_twod_main(const build_ctx *c, const model_node *n, twod_region *out);
+/* The top level of a file from first on, a 2D model: the union of its
+ * nodes, 3D ones ignored as a 2D operation ignores them. */
+sc_status build_twod_top(const build_ctx *c, const model_node *first, twod_region *out);
+
+/* The dimension OpenSCAD 2021.01 gives node n: 2 or 3, 0 when nothing
+ * below it has one (an empty group, a light). A shape has its own; an
+ * operation (group, union, difference, intersection, multmatrix, color,
+ * and hull and minkowski in the 2D context) has that of its first child
+ * with one ('%' and '*' children do not count). in_2d: n was lowered in
+ * the 2D context (model.h). build_list_dim: the same over a list of
+ * nodes from first on, the top level of a file. */
+int build_dim(const model_node *n, int in_2d);
+int build_list_dim(const model_node *first, int in_2d);
+
 /* The one walk over a 2D model subtree, for every builder of 2D children:
  * the exact region of linear_extrude (build_region.c), the revolve
  * profile (build_revolve.c), the text outlines (build_text.c) and

@@ -136,13 +136,16 @@ static sc_status lower_resize(model_lowerer *l, const parse_node *n, model_node 
     sc_status st = read_triple(l, n, "newsize", 0, 0, r->size);
     if (st == SC_OK)
         st = read_triple(l, n, "auto", 1, 1, r->autosize);
-    for (int k = 0; st == SC_OK && k < 3; k++) {
-        if (r->size[k] < 0) {
-            sc_location loc = model_loc(&l->r, model_arg(n, "newsize", 0));
-            return err_set(l->r.error, SC_ERR_UNSUPPORTED, &loc,
-                           "resize to a negative size is not supported yet");
-        }
-    }
+    /* OpenSCAD 2021.01 resizes a mesh (PolySet::resize) and a 2D shape
+     * (Polygon2d::resize) only along axes whose new size is > 0: a
+     * negative size there is as if it were 0, so the axis keeps its scale,
+     * or takes the auto scale where auto is set. Taken as 0 here, the
+     * builder's rule (build_hull.c) gives the same scales: the axis of the
+     * largest size is the same whenever one size is positive, and when
+     * none is, every scale is 1 either way. */
+    for (int k = 0; st == SC_OK && k < 3; k++)
+        if (r->size[k] < 0)
+            r->size[k] = 0;
     return st;
 }
 

@@ -85,6 +85,10 @@ typedef struct shading {
      * the '%' subtrees united, each a tree of its own with its ancestors'
      * transforms and colours; NULL when the file has none. */
     csg_tree *overlay[SHADING_OVERLAYS];
+    /* A 2D model, drawn as the slab OpenSCAD draws a 2D result: its render
+     * (not the preview) shows it unlit in the colour scheme's 2D face
+     * colour, as OpenSCAD's render does. */
+    int flat_2d;
 } shading;
 
 /* A record with the default material only; NULL when out of memory. */

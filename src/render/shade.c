@@ -106,9 +106,16 @@ sc_status shade_prepare(shade_scene *s, const csg_tree *tree, const shading *loo
     const float *scheme_front = o->preview ? scheme->face_front : scheme->render_face;
     const float *scheme_back = o->preview ? scheme->face_back : scheme->render_face_back;
     s->scheme_faces = o->use_scheme || o->preview;
+    /* A 2D model in the render: OpenSCAD's render draws a 2D result
+     * without lighting, in CGAL_FACE_2D_COLOR where the file gives no
+     * colour (Cornfield's #00bf99, ColorMap.cc), on both sides. */
+    static const float face_2d[3] = {0x00 / 255.0f, 0xbf / 255.0f, 0x99 / 255.0f};
+    s->flat = look && look->flat_2d && !o->preview;
+    if (s->flat)
+        scheme_front = scheme_back = face_2d;
     for (uint32_t i = 0; i < tree->leaf_count; i++) {
         const float *c = tree->leaves[i].color;
-        int plain = s->scheme_faces && is_default_color(c);
+        int plain = (s->scheme_faces || s->flat) && is_default_color(c);
         linear3(plain ? scheme_front : c, 1, &s->leaf_color[3 * i]);
         linear3(plain ? scheme_back : c, 1, &s->leaf_back[3 * i]);
         s->leaf_alpha[i] = c[3];
@@ -497,7 +504,10 @@ void shade_ray(const shade_scene *s, shade_thread *th, const csg_ray *ray,
     } else {
         base_color(s, m, hit->hit.leaf, v3_madd(p, outward, -1e-6 * m->checker), base);
     }
-    if (s->lighting != SHADE_LIGHTING_OWN) {
+    if (s->flat) {
+        memcpy(out, base, sizeof base);
+        return;
+    } else if (s->lighting != SHADE_LIGHTING_OWN) {
         openscad_light(s, base, n, out);
     } else {
         for (int k = 0; k < 3; k++)
