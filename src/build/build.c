@@ -75,7 +75,7 @@ typedef struct frame {
     int moving;        /* inside a motion node: leaves carry motion */
     csg_motion motion; /* its motion (build_motion.h) */
     int shown;         /* inside the design: not outside the '!' subtree */
-    int mixed;         /* a 2D child has been ignored here (OpenSCAD says so once) */
+    size_t first_ignored; /* its ignored 2D children start here on that stack */
 } frame;
 
 /* A '#' or '%' node and the state its parent hands it. */
@@ -100,6 +100,10 @@ typedef struct builder {
     uint32_t root_id; /* the result of the first '!' node */
     /* resize matrices measured so far (build_hull.h) */
     build_resize_cache *resize_cache;
+    /* 2D children ignored in 3D operations, warned of when their parent
+     * ends (flush_ignored) */
+    const model_node **ignored;
+    size_t ignored_count, ignored_cap;
     part_mark *marks; /* the modifier parts met, in file order */
     size_t mark_count, mark_cap;
     const model_node *part; /* the subtree walk_part builds: its '%' is ignored */
@@ -543,9 +547,8 @@ static sc_status build_import_leaf(builder *b, const model_node *n, const frame 
 
 /* A 2D object among 3D objects (a 2D shape, or an operation whose first
  * child with a dimension is 2D: build_dim): checked through the 2D engine,
- * then the empty solid with OpenSCAD 2021.01's warnings (isValidDim and
- * collectChildren3D in its GeometryEvaluator.cc), the first of its
- * parent's 2D children also saying that the parent mixes them. */
+ * then the empty solid, with OpenSCAD 2021.01's warnings (isValidDim and
+ * collectChildren3D in its GeometryEvaluator.cc) when its parent ends. */
 static sc_status build_twod_ignored(builder *b, const model_node *n, const frame *state)
 {
     build_ctx c = context(b, state->emit, NULL);
@@ -555,13 +558,27 @@ static sc_status build_twod_ignored(builder *b, const model_node *n, const frame
     twod_free(&r);
     if (st != SC_OK || !state->emit)
         return st;
-    frame *parent = &b->frames[b->frame_count - 1];
-    if (!parent->mixed) {
-        parent->mixed = 1;
-        st = warn(b, &n->loc, "Mixing 2D and 3D objects is not supported");
+    if (!grow_array((void **)&b->ignored, &b->ignored_cap, b->ignored_count + 1,
+                    sizeof *b->ignored))
+        return err_nomem(b->error, NULL);
+    b->ignored[b->ignored_count++] = n;
+    return SC_OK;
+}
+
+/* The warnings for the 2D children that frame f ignored, once all its
+ * children are built, as OpenSCAD checks dimensions after evaluating the
+ * children: the first also says that f mixes them. */
+static sc_status flush_ignored(builder *b, const frame *f)
+{
+    sc_status st = SC_OK;
+    for (size_t k = f->first_ignored; st == SC_OK && k < b->ignored_count; k++) {
+        const model_node *n = b->ignored[k];
+        if (k == f->first_ignored)
+            st = warn(b, &n->loc, "Mixing 2D and 3D objects is not supported");
+        if (st == SC_OK)
+            st = warn(b, &n->loc, "Ignoring 2D child object for 3D operation");
     }
-    if (st == SC_OK)
-        st = warn(b, &n->loc, "Ignoring 2D child object for 3D operation");
+    b->ignored_count = f->first_ignored;
     return st;
 }
 
@@ -699,6 +716,9 @@ static sc_status pop_frame(builder *b)
 {
     frame f = b->frames[--b->frame_count];
     uint32_t id = CSG_EMPTY;
+    sc_status st = flush_ignored(b, &f);
+    if (st != SC_OK)
+        return st;
     if (f.emit) {
         size_t count = b->id_count - f.first_id;
         if (count > UINT32_MAX)
@@ -831,6 +851,7 @@ static sc_status visit(builder *b, const model_node *n, int *opened)
            : kind == MODEL_INTERSECTION ? CSG_INTERSECTION
                                         : CSG_UNION;
     f.first_id = b->id_count;
+    f.first_ignored = b->ignored_count;
     if (kind == MODEL_XFORM) {
         affine inverse;
         f.to_world = affine_mul(&f.to_world, n->u.xform);
@@ -934,6 +955,8 @@ static sc_status walk(builder *b, uint32_t *root)
         st = visit(b, n, &opened);
         n = opened ? n->first_child : n->next;
     }
+    if (st == SC_OK)
+        st = flush_ignored(b, &b->frames[0]);
     if (st != SC_OK)
         return st;
     if (b->model->has_root) {
@@ -956,10 +979,10 @@ static sc_status walk_part(builder *sub, const part_mark *mark, uint32_t *id)
     top.node = NULL;
     top.op = CSG_UNION;
     top.emit = top.counted = top.shown = 1;
-    top.first_id = 0;
+    top.first_id = top.first_ignored = 0;
     sub->part = mark->node;
     sub->root_id = CSG_EMPTY;
-    sub->frame_count = sub->id_count = 0;
+    sub->frame_count = sub->id_count = sub->ignored_count = 0;
     int opened = 0;
     sc_status st = push_frame(sub, &top);
     if (st == SC_OK)
@@ -1028,6 +1051,7 @@ static sc_status build_parts(builder *b)
         b->resize_cache = sub.resize_cache;
         free(sub.ids);
         free(sub.frames);
+        free(sub.ignored);
         free(sub.warnings.items);
         shading_free(sub.shading);
         uint32_t root = CSG_EMPTY;
@@ -1078,6 +1102,7 @@ sc_status build_scene(const model *m, int faithful, csg_tree **out, shading **lo
     sc_status st = walk(&b, &root);
     free(b.ids);
     free(b.frames);
+    free(b.ignored);
     if (st == SC_OK)
         st = build_parts(&b);
     free(b.marks);

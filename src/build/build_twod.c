@@ -374,14 +374,20 @@ static sc_status eval_list(eval *e, const model_node *first, model_kind kind,
     sc_status st = SC_OK;
     for (const model_node *k = twod_walk_next(first); st == SC_OK && k;
          k = twod_walk_next(k->next)) {
-        if (build_dim(k, e->in_2d) == 3) {
-            st = ignore_3d(e, k, mixing);
-            mixing = 0;
+        if (build_dim(k, e->in_2d) == 3)
             continue;
-        }
         twod_init(&r[*count]);
         (*count)++;
         st = twod_walk(&e->walk, k, &unmoved, depth + 1, &r[*count - 1]);
+    }
+    /* After the children's own warnings, as OpenSCAD checks the
+     * dimensions once its children are evaluated. */
+    for (const model_node *k = twod_walk_next(first); st == SC_OK && k;
+         k = twod_walk_next(k->next)) {
+        if (build_dim(k, e->in_2d) == 3) {
+            st = ignore_3d(e, k, mixing);
+            mixing = 0;
+        }
     }
     return st;
 }

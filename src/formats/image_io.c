@@ -82,6 +82,14 @@ static int float_color_format(const char *ext)
     return one_of(ext, names);
 }
 
+int imgio_lossy(const char *path)
+{
+    static const char *const names[] = {"jpg", "jpeg", "jpe", "jfif", NULL};
+    char ext[16];
+    extension_of(path, ext, sizeof ext);
+    return one_of(ext, names);
+}
+
 static int depth_format(const char *ext)
 {
     static const char *const names[] = {"exr", "sxr", "mxr", "tif", "tiff", NULL};

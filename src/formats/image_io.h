@@ -46,6 +46,14 @@ typedef enum imgio_kind {
  * (.exr or .tif)". */
 sc_status imgio_check(const char *path, imgio_kind kind, sc_error *error);
 
+/* 1 when path names a format OpenImageIO writes lossily whatever the
+ * pixels: JPEG (.jpg .jpeg .jpe .jfif). A mask written so is no longer
+ * exactly 0 and 255 where the model's edges are (seen: 1984 of 480000
+ * pixels of a disc's mask at OpenImageIO's default quality). Its other
+ * formats spancast writes are lossless by default (.png, .tif, .exr,
+ * .jp2, ...), and .webp takes no 1-channel image. */
+int imgio_lossy(const char *path);
+
 #ifdef __cplusplus
 }
 #endif

@@ -1,0 +1,139 @@
+# OpenSCAD 2021.01's leniency, end to end: what OpenSCAD leaves out with a
+# warning, spancast leaves out with the same warning, at the node, and
+# renders the rest with exit 0; the result is checked against the model
+# written without what was left out (spancast compare: volumes, masks and
+# depths from seven views). A 2D model is the slab OpenSCAD draws, in its
+# 2D face colour in the render. A lossy --mask format gets a warning.
+#
+# Run as: bash cli_lenient.sh <path-to-spancast> <source-dir> <work-dir>
+. "$(dirname "$0")/testlib.sh"
+require_tools oiiotool
+
+# same A B: spancast compare finds the two models the same.
+same() {
+    check
+    "$bin" compare "$1" "$2" -q >compare.txt 2>compare.err ||
+        fail "compare $1 $2: exit $? $(cat compare.err)"
+    [ "$(tail -n 1 compare.txt)" = same ] ||
+        fail "$1 and $2 differ: $(tail -n 12 compare.txt | tr '\n' ' ')"
+}
+
+# warns MODEL EXPECTED [render options]: spancast render MODEL prints
+# exactly EXPECTED on stderr and exits 0.
+warns() {
+    local model=$1 expected=$2
+    shift 2
+    check
+    "$bin" render "$model" -o out.png --imgsize=64,48 -q "$@" 2>err.txt
+    local rc=$?
+    [ "$rc" = 0 ] || fail "$model: exit $rc: $(cat err.txt)"
+    [ "$(cat err.txt)" = "$expected" ] ||
+        fail "$model: stderr '$(cat err.txt)', want '$expected'"
+}
+
+# pixel IMAGE X Y: the 8-bit values of one pixel ("R G B").
+pixel() {
+    oiiotool "$1" --cut "1x1+$2+$3" -d uint8 -o px.png &&
+        oiiotool --dumpdata px.png | sed -n 's/^ *Pixel (0, 0): \([0-9 ]*\) (.*/\1/p'
+}
+
+# ---- 3D children of 2D operations, 2D children of 3D operations ----
+cat >extrude.csg <<'M'
+linear_extrude(height = 3) {
+	square(size = [10, 6], center = false);
+	multmatrix([[1, 0, 0, 20], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]) {
+		cube(size = [5, 5, 5], center = false);
+	}
+}
+M
+printf 'linear_extrude(height = 3) { square(size = [10, 6], center = false); }\n' >extrude_ref.csg
+warns extrude.csg "extrude.csg:3:2: warning: Ignoring 3D child object for 2D operation"
+same extrude.csg extrude_ref.csg
+
+cat >union.csg <<'M'
+union() {
+	cylinder(h = 4, r1 = 3, r2 = 3, center = false);
+	circle(r = 8);
+	difference() {
+		square(size = [2, 2], center = false);
+		cube(size = [1, 1, 1], center = false);
+	}
+}
+M
+printf 'cylinder(h = 4, r1 = 3, r2 = 3, center = false);\n' >union_ref.csg
+warns union.csg "union.csg:6:3: warning: Mixing 2D and 3D objects is not supported
+union.csg:6:3: warning: Ignoring 3D child object for 2D operation
+union.csg:3:2: warning: Mixing 2D and 3D objects is not supported
+union.csg:3:2: warning: Ignoring 2D child object for 3D operation
+union.csg:4:2: warning: Ignoring 2D child object for 3D operation"
+same union.csg union_ref.csg
+
+# The first object decides, as in OpenSCAD: a file that starts with a 2D
+# object is a 2D model, its 3D objects left out.
+printf 'square(size = [10, 4], center = false);\ncube(size = [3, 3, 3], center = false);\n' >first2d.csg
+printf 'linear_extrude(height = 1, center = true) { square(size = [10, 4]); }\n' >slab_ref.csg
+warns first2d.csg "first2d.csg:2:1: warning: Mixing 2D and 3D objects is not supported
+first2d.csg:2:1: warning: Ignoring 3D child object for 2D operation"
+same first2d.csg slab_ref.csg
+
+# ---- a 2D model: flat, 1 thick about z = 0, in colour, mask and depth ----
+printf 'square(size = [10, 4], center = false);\n' >flat.csg
+warns flat.csg ""
+same flat.csg slab_ref.csg
+check
+"$bin" render flat.csg -o flat.png --imgsize=80,60 --camera=5,2,50,5,2,0 -q &&
+    [ "$(pixel flat.png 40 30)" = "0 191 153" ] ||
+    fail "2D model in the render: pixel '$(pixel flat.png 40 30)', want CGAL_FACE_2D_COLOR 0 191 153"
+# The preview draws it as any slab: lit, in the preview's face colour.
+check
+"$bin" render flat.csg -o flat_preview.png --preview --imgsize=80,60 \
+    --camera=5,2,50,5,2,0 -q &&
+    "$bin" render slab_ref.csg -o slab_preview.png --preview --imgsize=80,60 \
+        --camera=5,2,50,5,2,0 -q &&
+    [ "$(pixel flat_preview.png 40 30)" = "$(pixel slab_preview.png 40 30)" ] &&
+    [ "$(pixel flat_preview.png 40 30)" != "0 191 153" ] ||
+    fail "2D model in the preview: '$(pixel flat_preview.png 40 30)', want '$(pixel slab_preview.png 40 30)'"
+
+# ---- import() of a file that does not open: empty, the rest rendered ----
+printf 'cube(size = [1, 1, 1], center = false);\nimport(file = "missing.stl");\n' >import.csg
+printf 'cube(size = [1, 1, 1], center = false);\n' >cube_ref.csg
+warns import.csg "import.csg:2:1: warning: Can't open import file 'missing.stl': No such file or directory (the import is empty)"
+same import.csg cube_ref.csg
+cat >dxf.csg <<'M'
+linear_extrude(height = 3) {
+	square(size = [10, 6], center = false);
+	import(file = "missing.dxf");
+}
+M
+warns dxf.csg "dxf.csg:3:2: warning: Can't open DXF file 'missing.dxf': No such file or directory (the import is empty)"
+same dxf.csg extrude_ref.csg
+# a file that opens and is not a mesh stays an error (as OpenSCAD's parse
+# error)
+printf 'solid x\nfacet normal 0 0 1\nouter loop\nvertex 0 0\n' >bad.stl
+printf 'import(file = "bad.stl");\n' >bad_import.csg
+check
+"$bin" render bad_import.csg -o bad.png -q 2>err.txt && fail "a bad STL rendered"
+grep -q "^bad_import.csg:1:15: error: import: 'bad.stl' is not a valid STL file" err.txt ||
+    fail "bad STL: $(cat err.txt)"
+
+# ---- resize() with a negative size: as 0 ----
+cat >resize.csg <<'M'
+resize(newsize = [10, -20, 0], auto = [0, 0, 1]) {
+	multmatrix([[1, 0, 0, 1], [0, 1, 0, 2], [0, 0, 1, 3], [0, 0, 0, 1]]) {
+		cube(size = [5, 5, 5], center = false);
+	}
+}
+M
+# OpenSCAD's mesh: x 2..12, y 2..7 (kept), z 6..16 (auto)
+printf 'multmatrix([[1, 0, 0, 2], [0, 1, 0, 2], [0, 0, 1, 6], [0, 0, 0, 1]]) { cube(size = [10, 5, 10]); }\n' >resize_ref.csg
+warns resize.csg ""
+same resize.csg resize_ref.csg
+
+# ---- a lossy mask ----
+warns cube_ref.csg "spancast: warning: --mask=m.jpg: JPEG is lossy, so the mask is no longer exactly 0 and 255 at the model's edges (.png, .tif and .exr are exact)" --mask=m.jpg
+check
+[ -s m.jpg ] || fail "the JPEG mask was not written"
+warns cube_ref.csg "" --mask=m.png
+
+echo "$checks checks, $fails failed"
+[ "$fails" = 0 ]
