@@ -68,6 +68,26 @@ union.csg:3:2: warning: Ignoring 2D child object for 3D operation
 union.csg:4:2: warning: Ignoring 2D child object for 3D operation"
 same union.csg union_ref.csg
 
+# A left-out child is the empty operand, as in OpenSCAD: it empties an
+# intersection and subtracts nothing.
+printf 'intersection() {\n\tcube(size = [3, 3, 3]);\n\tsquare(size = [10, 10]);\n}\n' >meet.csg
+warns meet.csg "meet.csg:3:2: warning: Mixing 2D and 3D objects is not supported
+meet.csg:3:2: warning: Ignoring 2D child object for 3D operation
+meet.csg: warning: the model is empty (nothing to render)"
+cat >cut.csg <<'M'
+linear_extrude(height = 3) {
+	difference() {
+		square(size = [10, 6], center = false);
+		cube(size = [3, 3, 3], center = false);
+		square(size = [2, 2], center = false);
+	}
+}
+M
+printf 'linear_extrude(height = 3) { difference() { square(size = [10, 6]); square(size = [2, 2]); } }\n' >cut_ref.csg
+warns cut.csg "cut.csg:4:3: warning: Mixing 2D and 3D objects is not supported
+cut.csg:4:3: warning: Ignoring 3D child object for 2D operation"
+same cut.csg cut_ref.csg
+
 # The first object decides, as in OpenSCAD: a file that starts with a 2D
 # object is a 2D model, its 3D objects left out.
 printf 'square(size = [10, 4], center = false);\ncube(size = [3, 3, 3], center = false);\n' >first2d.csg

@@ -393,12 +393,14 @@ static void test_resize_errors(void **state)
     (void)state;
     /* a negative size is as 0, as OpenSCAD resizes a mesh or a 2D shape:
      * that axis keeps its size, or takes the auto scale */
-    sc_scene *neg = load("resize([-10, 0, 0]) { multmatrix([[1, 0, 0, 1], [0, 1, 0, 2], [0, 0, "
-                       "1, 3], [0, 0, 0, 1]]) { cube(5); } }");
+    sc_scene *neg =
+        load("resize([-10, 0, 0]) { multmatrix([[1, 0, 0, 1], [0, 1, 0, 2], [0, 0, "
+             "1, 3], [0, 0, 0, 1]]) { cube(5); } }");
     check_bounds(neg, v3(1, 2, 3), v3(6, 7, 8), 1e-12);
     sc_scene_release(neg);
-    neg = load("resize([10, -20, 0], auto = [false, false, true]) { multmatrix([[1, 0, 0, 1], "
-             "[0, 1, 0, 2], [0, 0, 1, 3], [0, 0, 0, 1]]) { cube(5); } }");
+    neg = load(
+        "resize([10, -20, 0], auto = [false, false, true]) { multmatrix([[1, 0, 0, 1], "
+        "[0, 1, 0, 2], [0, 0, 1, 3], [0, 0, 0, 1]]) { cube(5); } }");
     check_bounds(neg, v3(2, 2, 6), v3(12, 7, 16), 1e-12);
     sc_scene_release(neg);
     check_error("m.csg", "resize(newsize = 3) { cube(); }", SC_ERR_SEMANTIC,

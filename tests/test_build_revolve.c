@@ -331,11 +331,11 @@ static void test_errors(void **state)
         /* a 3D child: ignored with OpenSCAD's warning, the rest revolved */
         static const char *const ignored[] = {
             "m.csg:1:104: Ignoring 3D child object for 2D operation"};
-        sc_scene *s = test_check_warnings(
-            "m.csg",
-            "rotate_extrude() { multmatrix([[1, 0, 0, 2], [0, 1, 0, 0], [0, 0, 1, 0], [0, "
-            "0, 0, 1]]) { square(1); } cube(size = 1); }",
-            0, ignored, 1);
+        sc_scene *s = test_check_warnings("m.csg",
+                                          "rotate_extrude() { multmatrix([[1, 0, 0, 2], "
+                                          "[0, 1, 0, 0], [0, 0, 1, 0], [0, "
+                                          "0, 0, 1]]) { square(1); } cube(size = 1); }",
+                                          0, ignored, 1);
         assert_true(inside(s, 2.5, 0, 0.5));
         assert_false(inside(s, 0.5, 0.5, 0.5));
         sc_scene_release(s);

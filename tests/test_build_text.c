@@ -409,7 +409,8 @@ static void test_errors(void **state)
     static const char *const ignored[] = {
         "m.csg:1:41: Ignoring 3D child object for 2D operation"};
     sc_scene_release(test_check_warnings(
-        "m.csg", "linear_extrude(height = 1) { text(\"a\"); sphere(2); }", 0, ignored, 1));
+        "m.csg", "linear_extrude(height = 1) { text(\"a\"); sphere(2); }", 0, ignored,
+        1));
     /* text alone is a 2D model, drawn flat: the slab OpenSCAD draws */
     sc_scene *flat = test_load("m.csg", "text(\"a\", size = 10);", 0);
     assert_int_equal(sc_scene_warning_count(flat), 0);

@@ -561,14 +561,14 @@ static void test_2d_in_3d(void **state)
     static const char *const mixed[] = {
         "m.csg:3:3: Mixing 2D and 3D objects is not supported",
         "m.csg:3:3: Ignoring 2D child object for 3D operation"};
-    sc_scene *s = test_check_warnings("m.csg", "union() {\n  cube(1);\n  circle(r = 5);\n}",
-                                      0, mixed, 2);
+    sc_scene *s = test_check_warnings(
+        "m.csg", "union() {\n  cube(1);\n  circle(r = 5);\n}", 0, mixed, 2);
     assert_true(csg_inside(scene_tree(s), v3(0.5, 0.5, 0.5)));
     assert_false(csg_inside(scene_tree(s), v3(3, 0, 0.25)));
     sc_scene_release(s);
     /* only 2D: the union, 1 thick about z = 0 */
-    s = test_load("m.csg", "group() {\n  square(2);\n  offset(r = 1) { circle(r = 1); }\n}",
-                  0);
+    s = test_load("m.csg",
+                  "group() {\n  square(2);\n  offset(r = 1) { circle(r = 1); }\n}", 0);
     assert_int_equal(sc_scene_warning_count(s), 0);
     assert_true(csg_inside(scene_tree(s), v3(1.5, 1.5, 0.4)));
     assert_true(csg_inside(scene_tree(s), v3(-1.5, 0, -0.4)));

@@ -72,9 +72,9 @@ typedef struct frame {
     float color[4];
     uint32_t material; /* index into the shading record's materials */
     affine to_world;
-    int moving;        /* inside a motion node: leaves carry motion */
-    csg_motion motion; /* its motion (build_motion.h) */
-    int shown;         /* inside the design: not outside the '!' subtree */
+    int moving;           /* inside a motion node: leaves carry motion */
+    csg_motion motion;    /* its motion (build_motion.h) */
+    int shown;            /* inside the design: not outside the '!' subtree */
     size_t first_ignored; /* its ignored 2D children start here on that stack */
 } frame;
 
@@ -91,7 +91,7 @@ typedef struct builder {
     csg_builder *csg;
     sc_error *error;
     build_notes warnings; /* every warning of the build, in order */
-    uint32_t *ids; /* results waiting for their parent's operation */
+    uint32_t *ids;        /* results waiting for their parent's operation */
     size_t id_count, id_cap;
     frame *frames;
     size_t frame_count, frame_cap;
@@ -129,8 +129,8 @@ static sc_status warn(builder *b, const sc_location *loc, const char *format, ..
  * the node is built, nowhere where it is only checked. */
 static build_ctx context(builder *b, int emit, sc_error *note)
 {
-    build_ctx c = {b->file, b->csg, b->error, b->faithful, note,
-                   emit ? &b->warnings : NULL};
+    build_ctx c = {b->file,     b->csg, b->error,
+                   b->faithful, note,   emit ? &b->warnings : NULL};
     return c;
 }
 
@@ -507,8 +507,8 @@ static sc_status import_opens(builder *b, const model_node *n, int *opened)
     if (f)
         fclose(f);
     else
-        st = warn(b, &n->loc, "Can't open import file '%s': %s (the import is empty)", path,
-                  strerror(errno));
+        st = warn(b, &n->loc, "Can't open import file '%s': %s (the import is empty)",
+                  path, strerror(errno));
     free(path);
     return st;
 }
@@ -528,8 +528,7 @@ static sc_status build_import_leaf(builder *b, const model_node *n, const frame 
         if ((st = import_opens(b, n, &opened)) != SC_OK || !opened)
             return st;
         st = build_import(&c, n->u.import, &p, &empty);
-    }
-    else if (n->kind == MODEL_LINEAR_EXTRUDE)
+    } else if (n->kind == MODEL_LINEAR_EXTRUDE)
         st = build_linear_extrude(&c, n, state->emit, &p, &empty);
     else if (n->kind == MODEL_ROTATE_EXTRUDE)
         st = build_rotate_extrude(&c, n, state->emit, &p, &empty);
@@ -798,10 +797,10 @@ static sc_status visit(builder *b, const model_node *n, int *opened)
         return SC_OK;
     }
     if (model_is_2d(kind) || (!model_is_leaf(kind) && build_dim(n, 0) == 2)) {
+        /* ignored, it is the empty solid, which empties an intersection
+         * as in OpenSCAD */
         uint32_t id = CSG_EMPTY;
-        if (!n->is_root)
-            return build_twod_ignored(b, n, &f);
-        st = build_flat(b, n, &f, &id);
+        st = n->is_root ? build_flat(b, n, &f, &id) : build_twod_ignored(b, n, &f);
         return st != SC_OK ? st : deliver(b, n, f.counted, id);
     }
     if (model_is_leaf(kind)) {

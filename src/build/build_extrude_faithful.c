@@ -444,8 +444,8 @@ sc_status build_linear_extrude_faithful(const build_ctx *c, const model_node *n,
     return st;
 }
 
-sc_status build_flat_slab(const build_ctx *c, const sc_location *loc, const twod_region *r,
-                          prim *out, const char **empty)
+sc_status build_flat_slab(const build_ctx *c, const sc_location *loc,
+                          const twod_region *r, prim *out, const char **empty)
 {
     /* height 1 centred, one slice, no twist or scale */
     params p = {1, 0, 1, 1, 0, 12, 2, 1, 1};

@@ -22,7 +22,7 @@ sc_status build_linear_extrude_faithful(const build_ctx *c, const model_node *n,
  * PolySet::render_surface, in the preview and the render alike): the
  * region r between z = -0.5 and 0.5, as a closed mesh leaf; a region
  * without area sets *empty instead. loc is the model's position. */
-sc_status build_flat_slab(const build_ctx *c, const sc_location *loc, const twod_region *r,
-                          prim *out, const char **empty);
+sc_status build_flat_slab(const build_ctx *c, const sc_location *loc,
+                          const twod_region *r, prim *out, const char **empty);
 
 #endif

@@ -35,8 +35,9 @@
  *                          files are errors: .svg is not supported yet,
  *                          .stl, .off and the like are 3D.
  * A 3D child of a 2D operation (its dimension is OpenSCAD's: a shape's
- * own, an operation's that of its first child that has one) is left out
- * with OpenSCAD's warnings, "Mixing 2D and 3D objects is not supported"
+ * own, an operation's that of its first child that has one) is the empty
+ * region, as in OpenSCAD (an intersection with it is empty), with
+ * OpenSCAD's warnings, "Mixing 2D and 3D objects is not supported"
  * (once per operation, not from offset and the extrusions) and "Ignoring
  * 3D child object for 2D operation". The recursion over the children is the one 2D walk
  * (twod_walk, below), with its depth guard (TWOD_WALK_MAX_DEPTH).
@@ -374,11 +375,12 @@ static sc_status eval_list(eval *e, const model_node *first, model_kind kind,
     sc_status st = SC_OK;
     for (const model_node *k = twod_walk_next(first); st == SC_OK && k;
          k = twod_walk_next(k->next)) {
-        if (build_dim(k, e->in_2d) == 3)
-            continue;
         twod_init(&r[*count]);
         (*count)++;
-        st = twod_walk(&e->walk, k, &unmoved, depth + 1, &r[*count - 1]);
+        /* a 3D child is an empty operand, as in OpenSCAD: it empties an
+         * intersection */
+        if (build_dim(k, e->in_2d) != 3)
+            st = twod_walk(&e->walk, k, &unmoved, depth + 1, &r[*count - 1]);
     }
     /* After the children's own warnings, as OpenSCAD checks the
      * dimensions once its children are evaluated. */
@@ -586,8 +588,9 @@ static sc_status read_import(const eval *e, const model_node *n, twod_region *ou
      * open as nothing, with a warning. */
     FILE *f = fopen(path, "rb");
     if (!f) {
-        st = build_note(e->c, &n->loc, "Can't open DXF file '%s': %s (the import is empty)",
-                        path, strerror(errno));
+        st = build_note(e->c, &n->loc,
+                        "Can't open DXF file '%s': %s (the import is empty)", path,
+                        strerror(errno));
         free(path);
         return st;
     }

@@ -865,10 +865,11 @@ static int run_render(cli_args *a, int argc, char **argv)
         (a->id && imgio_check(a->id, IMGIO_ID, &error)))
         return cli_usage_error("%s", error.message);
     if (a->mask && imgio_lossy(a->mask) && dist_rank() == 0)
-        fprintf(stderr,
-                "spancast: warning: --mask=%s: JPEG is lossy, so the mask is no longer "
-                "exactly 0 and 255 at the model's edges (.png, .tif and .exr are exact)\n",
-                a->mask);
+        fprintf(
+            stderr,
+            "spancast: warning: --mask=%s: JPEG is lossy, so the mask is no longer "
+            "exactly 0 and 255 at the model's edges (.png, .tif and .exr are exact)\n",
+            a->mask);
     int unwritable = /* rank 0 writes the files; every rank learns the outcome */
         dist_rank() == 0 &&
         (!output_writable(a->output) || (a->mask && !output_writable(a->mask)) ||
