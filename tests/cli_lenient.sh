@@ -114,6 +114,33 @@ check
     [ "$(pixel flat_preview.png 40 30)" != "0 191 153" ] ||
     fail "2D model in the preview: '$(pixel flat_preview.png 40 30)', want '$(pixel slab_preview.png 40 30)'"
 
+# Against OpenSCAD itself, where it can draw offscreen: its render and its
+# preview of the same 2D model, centre pixel for centre pixel (the preview
+# with OpenSCAD's lighting).
+if command -v openscad >/dev/null && command -v xvfb-run >/dev/null &&
+    openscad --version 2>&1 | grep -q '2021\.01'; then
+    printf 'square([10, 4]);\n' >flat.scad
+    for mode in render preview; do
+        timeout 300 xvfb-run -a -s "-screen 0 1024x768x24" \
+            openscad --$mode -o "os_$mode.png" --imgsize=80,60 --camera=5,2,50,5,2,0 \
+            flat.scad >/dev/null 2>&1
+    done
+    if [ -s os_render.png ] && [ -s os_preview.png ]; then
+        check
+        [ "$(pixel os_render.png 40 30)" = "$(pixel flat.png 40 30)" ] ||
+            fail "render: OpenSCAD '$(pixel os_render.png 40 30)', spancast '$(pixel flat.png 40 30)'"
+        check
+        "$bin" render flat.csg -o flat_os.png --preview --lighting=openscad --imgsize=80,60 \
+            --camera=5,2,50,5,2,0 -q &&
+            [ "$(pixel os_preview.png 40 30)" = "$(pixel flat_os.png 40 30)" ] ||
+            fail "preview: OpenSCAD '$(pixel os_preview.png 40 30)', spancast '$(pixel flat_os.png 40 30)'"
+    elif [ "${SPANCAST_NO_SKIP:-0}" = 1 ]; then
+        fail "openscad cannot draw offscreen here, so the 2D model is not compared with it"
+    fi
+elif [ "${SPANCAST_NO_SKIP:-0}" = 1 ]; then
+    fail "no openscad 2021.01 and xvfb-run to compare the 2D model with"
+fi
+
 # ---- import() of a file that does not open: empty, the rest rendered ----
 printf 'cube(size = [1, 1, 1], center = false);\nimport(file = "missing.stl");\n' >import.csg
 printf 'cube(size = [1, 1, 1], center = false);\n' >cube_ref.csg
