@@ -1,0 +1,1 @@
+include <dibond_config.scad>
