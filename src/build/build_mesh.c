@@ -42,26 +42,24 @@ static int compare_u64(const void *a, const void *b)
     return x < y ? -1 : x > y;
 }
 
-/* An edge for messages: point numbers (names[i] is point i's number in
- * the file, or NULL when i is), or for a file (whose points an STL does not
- * number) the coordinates of its ends. */
+/* An edge for messages: point numbers, or for a file (whose points an STL
+ * does not number) the coordinates of its ends. */
 static const char *edge_name(char *buf, size_t size, const vec3 *points,
-                             const uint32_t *names, int by_coordinates, uint64_t edge)
+                             int by_coordinates, uint64_t edge)
 {
     uint32_t p = (uint32_t)(edge >> 32), q = (uint32_t)(edge & 0xffffffffu);
     if (by_coordinates)
         snprintf(buf, size, "(%g, %g, %g)-(%g, %g, %g)", points[p].x, points[p].y,
                  points[p].z, points[q].x, points[q].y, points[q].z);
-    else if (names)
-        snprintf(buf, size, "%u-%u", names[p] < names[q] ? names[p] : names[q],
-                 names[p] < names[q] ? names[q] : names[p]);
     else
         snprintf(buf, size, "%u-%u", p, q);
     return buf;
 }
 
 /* Closed and consistently oriented: returns 1, or 0 with what is wrong
- * (naming an edge) in why; -1 when memory ran out. */
+ * (naming an edge) in why; -1 when memory ran out. names (or NULL): the
+ * number in the file of each point, by which a numbered mesh's edges are
+ * checked and named. */
 static int mesh_sound(const char *what, int numbered, const vec3 *points,
                       const uint32_t *names, const uint32_t *indices,
                       const uint32_t *face_start, uint32_t face_count, char *why,
@@ -84,6 +82,10 @@ static int mesh_sound(const char *what, int numbered, const vec3 *points,
             uint32_t p = indices[i], q = indices[i + 1 < e ? i + 1 : s];
             if (p == q)
                 continue;
+            if (names && numbered) { /* edges in the file's numbers, as named */
+                p = names[p];
+                q = names[q];
+            }
             directed[count] = (uint64_t)p << 32 | q;
             undirected[count++] = p < q ? (uint64_t)p << 32 | q : (uint64_t)q << 32 | p;
         }
@@ -97,7 +99,7 @@ static int mesh_sound(const char *what, int numbered, const vec3 *points,
             j++;
         if (j - i != 2) {
             snprintf(why, size, "%s is not closed (edge %s is used by %zu face%s)", what,
-                     edge_name(name, sizeof name, points, names, by_coordinates,
+                     edge_name(name, sizeof name, points, by_coordinates,
                                undirected[i]),
                      j - i, j - i == 1 ? "" : "s");
             sound = 0;
@@ -110,7 +112,7 @@ static int mesh_sound(const char *what, int numbered, const vec3 *points,
                      "%s is not consistently oriented (edge %s runs the same way in "
                      "two faces)",
                      what,
-                     edge_name(name, sizeof name, points, names, by_coordinates,
+                     edge_name(name, sizeof name, points, by_coordinates,
                                directed[i]));
             sound = 0;
         }

@@ -82,7 +82,7 @@ static const char usage_text[] =
     "       spancast overlaps MODEL [--min-volume=V] [--tolerance=REL]\n"
     "       spancast compare A B [--tolerance=REL] [--max-pixels=N] [--diff=PREFIX]\n"
     "                        [--imgsize=W,H]\n"
-    "       spancast view MODEL [--imgsize=W,H] [--spp=N] [--faithful]\n"
+    "       spancast view MODEL [--imgsize=W,H] [--spp=N] [--faithful] [--strict]\n"
     "       spancast batch JOBS [--json]\n"
     "       spancast bench accuracy --csv FILE [--plot FILE.png] [--rays N]\n"
     "       spancast bench stability --csv FILE [--dir DIR] [--size N] [--depth N]\n"
@@ -116,6 +116,8 @@ static const char usage_text[] =
     "  --threads=N            worker threads (default 0: all cores)\n"
     "  --json                 the report as JSON on stdout\n"
     "  --faithful             the polyhedra OpenSCAD makes (default: exact solids)\n"
+    "  --strict               a polyhedron or imported mesh that is not closed is\n"
+    "                         an error (default: a warning, as for render)\n"
     "  -q, --quiet            no progress on stderr\n"
     "\n"
     "render options:\n"
@@ -144,6 +146,10 @@ static const char usage_text[] =
     "  --threads=N            worker threads (default 0: all cores)\n"
     "  --faithful             spheres and cylinders as the polyhedra OpenSCAD makes\n"
     "                         from $fn, $fa, $fs (default: exact solids)\n"
+    "  --strict               a polyhedron or imported mesh that is not closed\n"
+    "                         (or not consistently wound) is an error; by default\n"
+    "                         it is a warning, and the mesh is drawn by the parity\n"
+    "                         rule, or left out with --faithful as OpenSCAD does\n"
     "  --tiled                write tiled .exr or .tif files, each tile as soon as it\n"
     "                         is rendered, never holding the whole image (the default\n"
     "                         for images whose buffers do not fit in memory)\n"
@@ -261,6 +267,7 @@ typedef enum opt_id {
     OPT_REGION,
     OPT_STATS,
     OPT_FAITHFUL,
+    OPT_STRICT,
     OPT_COLORSCHEME,
     OPT_LIGHTING,
     OPT_PREVIEW,
@@ -312,6 +319,7 @@ static const opt_spec options_table[] = {
     {"--region", OPT_REGION, 1, 1},
     {"--stats", OPT_STATS, 2, 1},
     {"--faithful", OPT_FAITHFUL, 0, 0},
+    {"--strict", OPT_STRICT, 0, 0},
     {"--colorscheme", OPT_COLORSCHEME, 1, 1},
     {"--lighting", OPT_LIGHTING, 1, 1},
     {"--preview", OPT_PREVIEW, 0, 1},
@@ -480,7 +488,10 @@ static int apply_option(cli_args *a, const opt_spec *spec, const char *value)
             return cli_usage_error("--stats takes no value or '=json'");
         return 0;
     case OPT_FAITHFUL:
-        a->faithful = 1;
+        a->faithful |= CLI_LOAD_FAITHFUL;
+        return 0;
+    case OPT_STRICT:
+        a->faithful |= CLI_LOAD_STRICT;
         return 0;
     case OPT_COLORSCHEME:
     case OPT_LIGHTING:
@@ -666,12 +677,13 @@ static double seconds_now(void)
     return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
 }
 
-/* watched: NULL, or a set that gets the model's files (render --watch). */
+/* watched: NULL, or a set that gets the model's files (render --watch);
+ * faithful: CLI_LOAD_* flags. */
 static sc_scene *load(const char *path, int faithful, watch_set *watched)
 {
     sc_load_options lo;
     sc_load_options_init(&lo);
-    lo.faithful = faithful;
+    cli_load_options(&lo, faithful);
     sc_scene *scene = NULL;
     sc_error error;
     if (watched)
