@@ -3,8 +3,8 @@
  * either winding is taken, open and inconsistently wound meshes are
  * warnings naming an edge (left out in faithful mode, drawn by parity in
  * exact mode, errors with strict), equal points are merged as OpenSCAD
- * merges them, quads are split along OpenSCAD's diagonal, import reads ASCII STL, binary STL and OFF files
- * relative to the model file, with exact messages for what it cannot
+ * merges them, quads are split along OpenSCAD's diagonal, import reads ASCII STL, binary
+ * STL and OFF files relative to the model file, with exact messages for what it cannot
  * read, and linear_extrude (build_extrude.c) builds prisms. */
 #include <setjmp.h>
 #include <stdarg.h>
@@ -214,21 +214,22 @@ static void test_mesh_errors(void **state)
     assert_true(inside(s, 5.5, 0.5, 0.5));
     sc_scene_release(s);
     /* an open box: exact, the walls seen from the side; faithful, left out */
-    s = load_one_warning("m.csg", "group() {" OPEN_BOX BESIDE "}", 0, 1, 10,
-                         "polyhedron is not closed (edge 4-5 is used by 1 face); rendered "
-                         "by the parity rule (--strict makes it an error)",
-                         2);
+    s = load_one_warning(
+        "m.csg", "group() {" OPEN_BOX BESIDE "}", 0, 1, 10,
+        "polyhedron is not closed (edge 4-5 is used by 1 face); rendered "
+        "by the parity rule (--strict makes it an error)",
+        2);
     assert_true(inside(s, 5.5, 0.5, 0.5));
     sc_scene_release(s);
-    s = load_one_warning("m.csg", "group() {" OPEN_BOX BESIDE "}", 1, 1, 10,
-                         "polyhedron is not closed (edge 4-5 is used by 1 face); left out, "
-                         "as OpenSCAD leaves it out (\"The given mesh is not closed! "
-                         "Unable to convert to CGAL_Nef_Polyhedron.\")",
-                         1);
+    s = load_one_warning(
+        "m.csg", "group() {" OPEN_BOX BESIDE "}", 1, 1, 10,
+        "polyhedron is not closed (edge 4-5 is used by 1 face); left out, "
+        "as OpenSCAD leaves it out (\"The given mesh is not closed! "
+        "Unable to convert to CGAL_Nef_Polyhedron.\")",
+        1);
     sc_scene_release(s);
     /* flat and not convex: no volume, a warning, the empty solid */
-    s =
-        load("m.csg", "polyhedron(points = [[0, 0, 0], [2, 0, 0], [1, 1, 0], [2, 2, 0], "
+    s = load("m.csg", "polyhedron(points = [[0, 0, 0], [2, 0, 0], [1, 1, 0], [2, 2, 0], "
                       "[0, 2, 0]], faces = [[0, 1, 2, 3, 4], [4, 3, 2, 1, 0]]);");
     assert_int_equal(sc_scene_warning_count(s), 1);
     assert_string_equal(sc_scene_warning(s, 0)->message,
@@ -268,8 +269,8 @@ static void test_merged_copies(void **state)
     (void)state;
     static const char *const corners[] = {"0 0 0", "2 0 0", "2 2 0", "0 2 0", "0 0 2",
                                           "2 0 2", "2 2 2", "0 2 2", "1 1 1"};
-    static const int faces[][4] = {{0, 1, 2, 3}, {4, 5, 1, 0}, {5, 6, 2, 1},
-                                   {6, 7, 3, 2}, {7, 4, 0, 3}, {4, 8, 5, -1},
+    static const int faces[][4] = {{0, 1, 2, 3},  {4, 5, 1, 0},  {5, 6, 2, 1},
+                                   {6, 7, 3, 2},  {7, 4, 0, 3},  {4, 8, 5, -1},
                                    {5, 8, 6, -1}, {6, 8, 7, -1}, {7, 8, 4, -1}};
     char text[8192] = "";
     append_copies(text, sizeof text, corners, faces, 9, 0);
@@ -303,30 +304,44 @@ static void test_quad_diagonal(void **state)
         int diagonal;
     } cases[] = {
         /* the first triangulation flipped by the Delaunay rule */
-        {{{8.998, 0, 3.44}, {8.0987, 0, 1.1208}, {6.2316, 3.5978, 0.7397},
+        {{{8.998, 0, 3.44},
+          {8.0987, 0, 1.1208},
+          {6.2316, 3.5978, 0.7397},
           {7.4307, 4.2901, 1.5471}},
          0},
-        {{{9.1, 0, -3.0155}, {10.7929, 0, -2.8751}, {10.5979, 6.1187, -2.8054},
+        {{{9.1, 0, -3.0155},
+          {10.7929, 0, -2.8751},
+          {10.5979, 6.1187, -2.8054},
           {8.789, 5.0743, -2.1505}},
          1},
         /* opposite angles summing to pi .. pi + 0.01: the first one stays,
          * though the other is the Delaunay one */
-        {{{-9.9433, 0, 2.6861}, {-8.423, 0, 2.3619}, {-7.0097, -4.047, 1.1195},
+        {{{-9.9433, 0, 2.6861},
+          {-8.423, 0, 2.3619},
+          {-7.0097, -4.047, 1.1195},
           {-7.8179, -4.5137, 2.8094}},
          0},
-        {{{6.3506, -10.9995, -0.1651}, {6.0641, -10.5033, 1.0826},
-          {10.2839, -5.9374, 2.965}, {11.2021, -6.4675, 0.8499}},
+        {{{6.3506, -10.9995, -0.1651},
+          {6.0641, -10.5033, 1.0826},
+          {10.2839, -5.9374, 2.965},
+          {11.2021, -6.4675, 0.8499}},
          1},
         /* plain Delaunay */
-        {{{12.415, 0, 0}, {12.7685, 0, 1.8144}, {10.3973, 6.0029, 2.9644},
+        {{{12.415, 0, 0},
+          {12.7685, 0, 1.8144},
+          {10.3973, 6.0029, 2.9644},
           {10.4694, 6.0445, 0.8237}},
          1},
         /* two corners on one point of the projection */
-        {{{7.13122, 2.36308, 0.141891}, {6.18934, 2.85873, -0.174403},
-          {6.18934, 2.85873, -0.681548}, {6.4757, 2.14586, -0.558831}},
+        {{{7.13122, 2.36308, 0.141891},
+          {6.18934, 2.85873, -0.174403},
+          {6.18934, 2.85873, -0.681548},
+          {6.4757, 2.14586, -0.558831}},
          0},
-        {{{-6.18934, -2.85873, -0.174403}, {-5.56081, -3.41357, -0.289547},
-          {-6.12372, -3.75912, -0.651657}, {-6.18934, -2.85873, -0.681548}},
+        {{{-6.18934, -2.85873, -0.174403},
+          {-5.56081, -3.41357, -0.289547},
+          {-6.12372, -3.75912, -0.651657},
+          {-6.18934, -2.85873, -0.681548}},
          0},
     };
     for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
@@ -340,10 +355,11 @@ static void test_quad_diagonal(void **state)
     /* A twisted cell split along its 1-3 diagonal is a different solid
      * from the fan about point 0: a point beside that diagonal is in
      * one and not the other. */
-    sc_scene *s = load("m.csg", "polyhedron(points = [[0, 0, 0], [1, 0, 0], [1, 1, 0], "
-                                "[0, 1, 0], [0, 0, 1], [1, 0, 1.4], [1, 1, 1], [0, 1, 1.4]], "
-                                "faces = [[0, 1, 2, 3], [4, 7, 6, 5], [0, 4, 5, 1], "
-                                "[1, 5, 6, 2], [2, 6, 7, 3], [3, 7, 4, 0]]);");
+    sc_scene *s =
+        load("m.csg", "polyhedron(points = [[0, 0, 0], [1, 0, 0], [1, 1, 0], "
+                      "[0, 1, 0], [0, 0, 1], [1, 0, 1.4], [1, 1, 1], [0, 1, 1.4]], "
+                      "faces = [[0, 1, 2, 3], [4, 7, 6, 5], [0, 4, 5, 1], "
+                      "[1, 5, 6, 2], [2, 6, 7, 3], [3, 7, 4, 0]]);");
     vec3 top[4] = {v3(0, 0, 1), v3(0, 1, 1.4), v3(1, 1, 1), v3(1, 0, 1.4)};
     int diagonal = build_mesh_quad_diagonal(top, 1);
     /* The top's two splits: along 4-6 the surface is at z = 1 at the
@@ -472,11 +488,12 @@ static void test_import(void **state)
              "used by 1 face)",
              model);
     check_error_strict(model, "import(\"open.stl\");", SC_ERR_SEMANTIC, expected, 0);
-    s = load_one_warning(model, "import(\"open.stl\");", 1, 1, 8,
-                         "imported mesh is not closed (edge (0, 0, 2)-(0, 2, 2) is used by "
-                         "1 face); left out, as OpenSCAD leaves it out (\"The given mesh is "
-                         "not closed! Unable to convert to CGAL_Nef_Polyhedron.\")",
-                         0);
+    s = load_one_warning(
+        model, "import(\"open.stl\");", 1, 1, 8,
+        "imported mesh is not closed (edge (0, 0, 2)-(0, 2, 2) is used by "
+        "1 face); left out, as OpenSCAD leaves it out (\"The given mesh is "
+        "not closed! Unable to convert to CGAL_Nef_Polyhedron.\")",
+        0);
     sc_scene_release(s);
     snprintf(expected, sizeof expected,
              "%s:1:8: error: import: '%s/bad.stl' is not a valid STL file (a 'vertex' "

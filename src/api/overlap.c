@@ -215,9 +215,9 @@ sc_status sc_objects_load(const char *path, const sc_load_options *options,
         if (counts(c))
             o->nodes[o->count++] = c;
     for (size_t k = 0; k < o->count; k++) {
-        st = build_object(o, k,
-                          (lo.faithful ? BUILD_FAITHFUL : 0) | (lo.strict ? BUILD_STRICT : 0),
-                          error);
+        st = build_object(
+            o, k, (lo.faithful ? BUILD_FAITHFUL : 0) | (lo.strict ? BUILD_STRICT : 0),
+            error);
         if (st) {
             sc_objects_release(o);
             return st;

@@ -63,16 +63,14 @@
 
 /* Builds the CSG tree of the model m and the scene's shading record
  * (lights, materials, camera, background: build_shading.h); with
- * BUILD_FAITHFUL in flags, spheres and cylinders become OpenSCAD's polyhedra for their $fn,
- * $fa, $fs (faithful.h). On success *out owns the tree (free with
- * csg_tree_free), *look the shading record (free with shading_free; not
- * made when look is NULL), and *warnings is a malloc'd array of
- * *warning_count warnings in source order (NULL when there are none; free
- * with free()). On failure nothing is returned and error says where and
- * why: the first error in file order, which may be one the lowering found
- * (a MODEL_ERROR node). With BUILD_STRICT, a polyhedron or imported
- * mesh that is not closed is an error rather than a warning
- * (build_mesh.h). */
+ * BUILD_FAITHFUL in flags, spheres and cylinders become OpenSCAD's polyhedra for their
+ * $fn, $fa, $fs (faithful.h). On success *out owns the tree (free with csg_tree_free),
+ * *look the shading record (free with shading_free; not made when look is NULL), and
+ * *warnings is a malloc'd array of *warning_count warnings in source order (NULL when
+ * there are none; free with free()). On failure nothing is returned and error says where
+ * and why: the first error in file order, which may be one the lowering found (a
+ * MODEL_ERROR node). With BUILD_STRICT, a polyhedron or imported mesh that is not closed
+ * is an error rather than a warning (build_mesh.h). */
 sc_status build_scene(const model *m, int flags, csg_tree **out, shading **look,
                       sc_error **warnings, size_t *warning_count, sc_error *error);
 

@@ -99,8 +99,7 @@ static int mesh_sound(const char *what, int numbered, const vec3 *points,
             j++;
         if (j - i != 2) {
             snprintf(why, size, "%s is not closed (edge %s is used by %zu face%s)", what,
-                     edge_name(name, sizeof name, points, by_coordinates,
-                               undirected[i]),
+                     edge_name(name, sizeof name, points, by_coordinates, undirected[i]),
                      j - i, j - i == 1 ? "" : "s");
             sound = 0;
         }
@@ -112,8 +111,7 @@ static int mesh_sound(const char *what, int numbered, const vec3 *points,
                      "%s is not consistently oriented (edge %s runs the same way in "
                      "two faces)",
                      what,
-                     edge_name(name, sizeof name, points, by_coordinates,
-                               directed[i]));
+                     edge_name(name, sizeof name, points, by_coordinates, directed[i]));
             sound = 0;
         }
     }
@@ -249,8 +247,8 @@ static float tess_angle(const float *s, const float *t, int v0, int v1, int v2)
     float a0 = s[v2] - s[v1], a1 = t[v2] - t[v1];
     float b0 = s[v0] - s[v1], b1 = t[v0] - t[v1];
     float num = a0 * b0 + a1 * b1;
-    float den = (float)(sqrt((double)(a0 * a0 + a1 * a1)) *
-                        sqrt((double)(b0 * b0 + b1 * b1)));
+    float den =
+        (float)(sqrt((double)(a0 * a0 + a1 * a1)) * sqrt((double)(b0 * b0 + b1 * b1)));
     if (den > 0.0f)
         num /= den;
     if (num < -1.0f)

@@ -14,15 +14,14 @@
 #define BUILD_MAX_MESH_FILE (512u * 1024u * 1024u)
 
 /* A mesh leaf from face_count polygons that a builder made (extrusions,
- * surface, hull): no merging, and a mesh that is not sound is an error (face f is indices[face_start[f] ..
- * face_start[f + 1]) into points). what names the node in messages;
- * numbered says the points are a polyhedron's own, numbered in the file
- * (an edge is named by its point numbers, else by its ends' coordinates,
- * and a mesh without volume is "polyhedron without volume"). The
- * mesh must be closed (every edge in exactly two faces) and consistently
- * oriented (the two faces run along it in opposite directions); inward or
- * outward winding are both taken (the signed volume decides). Polygons are
- * split into fans of triangles. A mesh without volume sets *empty to a
+ * surface, hull): no merging, and a mesh that is not sound is an error (face f is
+ * indices[face_start[f] .. face_start[f + 1]) into points). what names the node in
+ * messages; numbered says the points are a polyhedron's own, numbered in the file (an
+ * edge is named by its point numbers, else by its ends' coordinates, and a mesh without
+ * volume is "polyhedron without volume"). The mesh must be closed (every edge in exactly
+ * two faces) and consistently oriented (the two faces run along it in opposite
+ * directions); inward or outward winding are both taken (the signed volume decides).
+ * Polygons are split into fans of triangles. A mesh without volume sets *empty to a
  * warning and fills nothing. */
 sc_status build_mesh_prim(const build_ctx *c, const sc_location *loc, const char *what,
                           int numbered, const vec3 *points, uint32_t point_count,

@@ -65,18 +65,12 @@ typedef struct check_option {
 } check_option;
 
 static const check_option check_options[] = {
-    {"--tolerance", 1, ALL},
-    {"--threads", 1, ALL},
-    {"--json", 0, ALL},
-    {"--faithful", 0, ALL},
-    {"--strict", 0, ALL},
-    {"--quiet", 0, ALL},
-    {"--density", 1, MEASURE},
-    {"--min-volume", 1, OVERLAPS},
-    {"--max-pixels", 1, COMPARE},
-    {"--diff", 1, COMPARE},
-    {"--imgsize", 1, COMPARE},
-    {"--max-time", 1, ALL},
+    {"--tolerance", 1, ALL},      {"--threads", 1, ALL},
+    {"--json", 0, ALL},           {"--faithful", 0, ALL},
+    {"--strict", 0, ALL},         {"--quiet", 0, ALL},
+    {"--density", 1, MEASURE},    {"--min-volume", 1, OVERLAPS},
+    {"--max-pixels", 1, COMPARE}, {"--diff", 1, COMPARE},
+    {"--imgsize", 1, COMPARE},    {"--max-time", 1, ALL},
 };
 
 static const char *command_name(int command)
