@@ -1,19 +1,25 @@
 /* Building mesh leaves: the polyhedra that are not convex, and
  * import("file.stl" | "file.off").
  *
- * A mesh must bound a solid: closed (every undirected edge in exactly two
- * faces) and consistently oriented (those two faces run along the edge in
- * opposite directions). Anything else is an error naming an offending
- * edge; OpenSCAD's own CGAL render rejects such meshes too, and a ray
- * caster cannot tell inside from outside without it. Which way the faces
- * wind does not matter: OpenSCAD lists them clockwise seen from outside,
- * STL and OFF files usually the other way, so the sign of the enclosed
- * volume (divergence theorem, sum of a . (b x c) / 6 over the triangles,
- * about the centre of the bounds for accuracy) decides, and a mesh whose
- * volume is negative is turned inside out. A mesh without volume is empty,
- * with a warning. Faces with more than three points are split into fans
- * about their first point; where a fan of a non-convex face overlaps
- * itself, the winding number of prim_mesh.c cancels the overlap.
+ * Polyhedra and imports are read as OpenSCAD 2021.01 reads them: their
+ * points merged on its grid of 2^-20 (build_mesh_merge), quads split along
+ * the diagonal its libtess2 triangulation picks (build_mesh_quad_diagonal),
+ * larger faces into fans about their first point. A solid needs a mesh
+ * that is closed (every undirected edge in exactly two faces) and
+ * consistently oriented (those two faces run along the edge in opposite
+ * directions). One that is not is a warning naming an offending edge, and
+ * then left out in faithful mode, as OpenSCAD leaves it out of its CGAL
+ * operations, or in exact mode built with the parity rule (prim_mesh.h),
+ * so the user still sees it; with --strict it is an error. The meshes
+ * other builders make (extrusions, surface, hull: build_mesh_prim) must be
+ * sound. Which way the faces wind does not matter: OpenSCAD lists them
+ * clockwise seen from outside, STL and OFF files usually the other way, so
+ * the sign of the enclosed volume (divergence theorem, sum of a . (b x c)
+ * / 6 over the triangles, about the centre of the bounds for accuracy)
+ * decides, and a mesh whose volume is negative is turned inside out. A
+ * mesh without volume is empty, with a warning. Where a fan of a
+ * non-convex face overlaps itself, the winding number of prim_mesh.c
+ * cancels the overlap.
  *
  * Files: binary STL is recognised by its size (84 + 50 n bytes for the n
  * triangles its header announces), anything else starting with "solid" is
