@@ -32,6 +32,7 @@
 #include "build/build_mesh.h"
 
 #include <errno.h>
+#include <float.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -270,6 +271,9 @@ int build_mesh_quad_diagonal(const vec3 q[4], int reversed)
     static const int lists[2][4] = {{1, 2, 3, 0}, {2, 1, 0, 3}};
     const int *listed = lists[reversed != 0];
     float v[4][3];
+    for (int k = 0; k < 4; k++) /* beyond float, as beyond OpenSCAD: the first */
+        if (!(v3_max_abs(q[k]) <= FLT_MAX))
+            return 0;
     for (int k = 0; k < 4; k++) {
         v[k][0] = (float)q[k].x;
         v[k][1] = (float)q[k].y;
