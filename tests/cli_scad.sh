@@ -29,10 +29,10 @@ export TMPDIR="$work/tmp"
 cmp -s scad.png csg.png || fail "knob_part: .scad and .csg renders differ"
 [ -z "$(ls -A "$work/tmp")" ] || fail "temporary files left: $(ls -A "$work/tmp")"
 
-# fails_with MODEL MESSAGE: rendering MODEL exits 1 with MESSAGE alone on
-# stderr and writes no image.
+# fails_with MODEL MESSAGE [OPTION]: rendering MODEL (with OPTION) exits 1
+# with MESSAGE alone on stderr and writes no image.
 fails_with() {
-    "$bin" render "$1" -o "$1.png" -q 2>err.txt
+    "$bin" render "$1" -o "$1.png" -q ${3:+"$3"} 2>err.txt
     local rc=$?
     [ "$rc" = 1 ] || fail "$1: exit $rc (want 1)"
     [ "$(cat err.txt)" = "$2" ] || fail "$1: got '$(cat err.txt)'"
@@ -63,7 +63,7 @@ grep -q "spancast-\|\.csg" err.txt && fail "string.scad: a temporary name: $(cat
 # with the line of OpenSCAD's export; never a .csg that does not exist.
 printf 'import("open.stl");\n' >open.scad
 printf 'solid o\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 0 1 0\nendloop\nendfacet\nendsolid o\n' >open.stl
-fails_with open.scad "open.scad: error: imported mesh is not closed (edge (0, 0, 0)-(0, 1, 0) is used by 1 face) (line 1 of OpenSCAD's export)"
+fails_with open.scad "open.scad: error: imported mesh is not closed (edge (0, 0, 0)-(1, 0, 0) is used by 1 face) (line 1 of OpenSCAD's export)" --strict
 [ -e open.csg ] && fail "open.scad: a .csg was left beside the source"
 printf '\nprojection() cube(1);\n' >proj.scad
 want="proj.scad: error: 'projection' is not supported yet (line 1 of OpenSCAD's export)"

@@ -43,6 +43,21 @@ static void check_error(const char *text, sc_status status, const char *expected
     assert_string_equal(sc_error_format(&e, buf, sizeof buf), expected);
 }
 
+/* The same with --strict (sc_load_options.strict). */
+static void check_error_strict(const char *text, sc_status status, const char *expected)
+{
+    sc_scene *s = (sc_scene *)1;
+    sc_error e;
+    sc_load_options o;
+    sc_load_options_init(&o);
+    o.strict = 1;
+    assert_int_equal(sc_scene_load_string("m.csg", text, strlen(text), &o, &s, &e),
+                     status);
+    assert_null(s);
+    char buf[1024];
+    assert_string_equal(sc_error_format(&e, buf, sizeof buf), expected);
+}
+
 /* Loads text and checks that it gives exactly the one warning expected. */
 static sc_scene *load_warned(const char *text, const char *expected)
 {
@@ -805,13 +820,14 @@ static void test_polyhedron_errors(void **state)
 {
     (void)state;
     /* Non-convex polyhedra are meshes now (test_build_mesh.c). */
-    /* Open: the cube without its top. */
-    check_error(
+    /* Open: the cube without its top (an error with --strict, else a
+     * warning: test_build_mesh.c). */
+    check_error_strict(
         "polyhedron(points = " CUBE_POINTS ", faces = [[0, 1, 2, 3], [4, 5, 1, 0], "
         "[5, 6, 2, 1], [6, 7, 3, 2], [7, 4, 0, 3]]);",
         SC_ERR_SEMANTIC,
         "m.csg:1:1: error: polyhedron is not closed (edge 4-5 is used by 1 face)");
-    check_error(
+    check_error_strict(
         "polyhedron(points = [[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1]], faces = "
         "[[0, 1, 2], [0, 3, 1], [0, 2, 3], [1, 3, 2], [0, 1, 3]]);",
         SC_ERR_SEMANTIC,

@@ -1,8 +1,10 @@
 /* Tests of the mesh builder (src/build/build_mesh.c): non-convex polyhedra
  * become mesh leaves with the right solid, convex ones keep the planes,
- * either winding is taken, open and inconsistently wound meshes are errors
- * naming an edge, import reads ASCII STL, binary STL and OFF files
- * relative to the model file, with exact messages for what it cannot
+ * either winding is taken, open and inconsistently wound meshes are
+ * warnings naming an edge (left out in faithful mode, drawn by parity in
+ * exact mode, errors with strict), equal points are merged as OpenSCAD
+ * merges them, quads are split along OpenSCAD's diagonal, import reads ASCII STL, binary
+ * STL and OFF files relative to the model file, with exact messages for what it cannot
  * read, and linear_extrude (build_extrude.c) builds prisms. */
 #include <setjmp.h>
 #include <stdarg.h>
@@ -16,6 +18,7 @@
 #include <sys/stat.h>
 
 #include "build/build.h"
+#include "build/build_mesh.h"
 #include "build/scene.h"
 #include "test_util.h"
 
@@ -64,6 +67,39 @@ static void check_error(const char *name, const char *text, sc_status status,
                         const char *expected)
 {
     check_error_with(name, text, status, expected, 0);
+}
+
+/* With --strict (sc_load_options.strict): the error a bad mesh gives. */
+static void check_error_strict(const char *name, const char *text, sc_status status,
+                               const char *expected, int faithful)
+{
+    sc_scene *s = (sc_scene *)1;
+    sc_error e;
+    sc_load_options o;
+    sc_load_options_init(&o);
+    o.faithful = faithful;
+    o.strict = 1;
+    assert_int_equal(sc_scene_load_string(name, text, strlen(text), &o, &s, &e), status);
+    assert_null(s);
+    char buf[1024];
+    assert_string_equal(sc_error_format(&e, buf, sizeof buf), expected);
+}
+
+/* Loads text (faithful or not) and checks its one warning, message and
+ * position, and how many leaves were built. */
+static sc_scene *load_one_warning(const char *name, const char *text, int faithful,
+                                  int line, int column, const char *expected,
+                                  uint32_t leaves)
+{
+    sc_scene *s = load_with(name, text, faithful);
+    assert_int_equal(sc_scene_warning_count(s), 1);
+    const sc_error *w = sc_scene_warning(s, 0);
+    assert_int_equal(w->status, SC_OK);
+    assert_int_equal(w->line, line);
+    assert_int_equal(w->column, column);
+    assert_string_equal(w->message, expected);
+    assert_int_equal(scene_tree(s)->leaf_count, leaves);
+    return s;
 }
 
 static int inside(const sc_scene *s, double x, double y, double z)
@@ -130,24 +166,206 @@ static void test_nonconvex_polyhedron(void **state)
     sc_scene_release(s);
 }
 
+/* A notch whose last face is wound the wrong way, and a cube without its
+ * top, next to a closed cube: errors with --strict; else warnings at the
+ * node, the mesh left out in faithful mode (as OpenSCAD leaves it out) and
+ * drawn by the parity rule in exact mode, and the rest rendered. */
+#define TURNED_NOTCH                                                                     \
+    "polyhedron(points = " NOTCH_POINTS ", faces = [[0, 1, 2, 3], [4, 5, 1, 0], "        \
+    "[5, 6, 2, 1], [6, 7, 3, 2], [7, 4, 0, 3], [4, 8, 5], [5, 8, 6], [6, 8, "            \
+    "7], [7, 4, 8]]);"
+#define OPEN_BOX                                                                         \
+    "polyhedron(points = [[0, 0, 0], [2, 0, 0], [2, 2, 0], [0, 2, 0], [0, 0, 2], "       \
+    "[2, 0, 2], [2, 2, 2], [0, 2, 2]], faces = [[0, 1, 2, 3], [4, 5, 1, 0], "            \
+    "[5, 6, 2, 1], [6, 7, 3, 2], [7, 4, 0, 3]]);"
+#define BESIDE                                                                           \
+    " multmatrix([[1, 0, 0, 5], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]) { cube(1); }"
+
 static void test_mesh_errors(void **state)
 {
     (void)state;
-    check_error(
-        "m.csg",
-        "polyhedron(points = " NOTCH_POINTS ", faces = [[0, 1, 2, 3], [4, 5, 1, 0], "
-        "[5, 6, 2, 1], [6, 7, 3, 2], [7, 4, 0, 3], [4, 8, 5], [5, 8, 6], [6, 8, "
-        "7], [7, 4, 8]]);",
-        SC_ERR_SEMANTIC,
-        "m.csg:1:1: error: polyhedron is not consistently oriented (edge 4-8 runs "
-        "the same way in two faces)");
+    const char *turned = "m.csg:1:1: error: polyhedron is not consistently oriented "
+                         "(edge 4-8 runs the same way in two faces)";
+    check_error_strict("m.csg", TURNED_NOTCH, SC_ERR_SEMANTIC, turned, 0);
+    check_error_strict("m.csg", TURNED_NOTCH, SC_ERR_SEMANTIC, turned, 1);
+    const char *open = "m.csg:1:1: error: polyhedron is not closed (edge 4-5 is used by "
+                       "1 face)";
+    check_error_strict("m.csg", "group() {" OPEN_BOX BESIDE "}", SC_ERR_SEMANTIC,
+                       "m.csg:1:10: error: polyhedron is not closed (edge 4-5 is used by "
+                       "1 face)",
+                       0);
+    check_error_strict("m.csg", OPEN_BOX, SC_ERR_SEMANTIC, open, 1);
+
+    /* exact: the parity rule, the whole notch */
+    sc_scene *s = load_one_warning(
+        "m.csg", TURNED_NOTCH, 0, 1, 1,
+        "polyhedron is not consistently oriented (edge 4-8 runs the same way in two "
+        "faces); rendered by the parity rule (--strict makes it an error)",
+        1);
+    check_notch(s);
+    sc_scene_release(s);
+    /* faithful: left out, with OpenSCAD's message; the cube beside stays */
+    s = load_one_warning(
+        "m.csg", "group() {" TURNED_NOTCH BESIDE "}", 1, 1, 10,
+        "polyhedron is not consistently oriented (edge 4-8 runs the same way in two "
+        "faces); left out, as OpenSCAD leaves it out (\"The given mesh is not closed! "
+        "Unable to convert to CGAL_Nef_Polyhedron.\")",
+        1);
+    assert_false(inside(s, 1, 1, 0.5));
+    assert_true(inside(s, 5.5, 0.5, 0.5));
+    sc_scene_release(s);
+    /* an open box: exact, the walls seen from the side; faithful, left out */
+    s = load_one_warning(
+        "m.csg", "group() {" OPEN_BOX BESIDE "}", 0, 1, 10,
+        "polyhedron is not closed (edge 4-5 is used by 1 face); rendered "
+        "by the parity rule (--strict makes it an error)",
+        2);
+    assert_true(inside(s, 5.5, 0.5, 0.5));
+    sc_scene_release(s);
+    s = load_one_warning(
+        "m.csg", "group() {" OPEN_BOX BESIDE "}", 1, 1, 10,
+        "polyhedron is not closed (edge 4-5 is used by 1 face); left out, "
+        "as OpenSCAD leaves it out (\"The given mesh is not closed! "
+        "Unable to convert to CGAL_Nef_Polyhedron.\")",
+        1);
+    sc_scene_release(s);
     /* flat and not convex: no volume, a warning, the empty solid */
-    sc_scene *s =
-        load("m.csg", "polyhedron(points = [[0, 0, 0], [2, 0, 0], [1, 1, 0], [2, 2, 0], "
+    s = load("m.csg", "polyhedron(points = [[0, 0, 0], [2, 0, 0], [1, 1, 0], [2, 2, 0], "
                       "[0, 2, 0]], faces = [[0, 1, 2, 3, 4], [4, 3, 2, 1, 0]]);");
     assert_int_equal(sc_scene_warning_count(s), 1);
     assert_string_equal(sc_scene_warning(s, 0)->message,
                         "polyhedron without volume is empty");
+    sc_scene_release(s);
+}
+
+/* BOSL's patches: every face lists its own copies of its corners. The
+ * notch so written is closed once equal points are merged; copies off by
+ * less than OpenSCAD's grid (2^-20) merge too, copies 1e-5 apart do not. */
+static void append_copies(char *text, size_t size, const char *const *corners,
+                          const int faces[][4], int face_count, double jitter)
+{
+    size_t at = strlen(text);
+    at += (size_t)snprintf(text + at, size - at, "polyhedron(points = [");
+    for (int f = 0; f < face_count; f++)
+        for (int k = 0; k < 4 && faces[f][k] >= 0; k++) {
+            double x, y, z;
+            sscanf(corners[faces[f][k]], "%lf %lf %lf", &x, &y, &z);
+            double j = jitter * (double)((f * 7 + k * 3) % 5 - 2) / 2;
+            at += (size_t)snprintf(text + at, size - at, "%s[%.17g, %.17g, %.17g]",
+                                   f || k ? ", " : "", x + j, y - j, z + j);
+        }
+    at += (size_t)snprintf(text + at, size - at, "], faces = [");
+    int n = 0;
+    for (int f = 0; f < face_count; f++) {
+        at += (size_t)snprintf(text + at, size - at, "%s[", f ? ", " : "");
+        for (int k = 0; k < 4 && faces[f][k] >= 0; k++)
+            at += (size_t)snprintf(text + at, size - at, "%s%d", k ? ", " : "", n++);
+        at += (size_t)snprintf(text + at, size - at, "]");
+    }
+    snprintf(text + at, size - at, "]);");
+}
+
+static void test_merged_copies(void **state)
+{
+    (void)state;
+    static const char *const corners[] = {"0 0 0", "2 0 0", "2 2 0", "0 2 0", "0 0 2",
+                                          "2 0 2", "2 2 2", "0 2 2", "1 1 1"};
+    static const int faces[][4] = {{0, 1, 2, 3},  {4, 5, 1, 0},  {5, 6, 2, 1},
+                                   {6, 7, 3, 2},  {7, 4, 0, 3},  {4, 8, 5, -1},
+                                   {5, 8, 6, -1}, {6, 8, 7, -1}, {7, 8, 4, -1}};
+    char text[8192] = "";
+    append_copies(text, sizeof text, corners, faces, 9, 0);
+    sc_scene *s = load("m.csg", text);
+    assert_int_equal(sc_scene_warning_count(s), 0);
+    check_notch(s);
+    sc_scene_release(s);
+    for (int faithful = 0; faithful < 2; faithful++) {
+        text[0] = 0;
+        append_copies(text, sizeof text, corners, faces, 9, 3e-7);
+        s = load_with("m.csg", text, faithful);
+        assert_int_equal(sc_scene_warning_count(s), 0);
+        check_notch(s);
+        sc_scene_release(s);
+    }
+    text[0] = 0;
+    append_copies(text, sizeof text, corners, faces, 9, 1e-5);
+    s = load("m.csg", text);
+    assert_int_equal(sc_scene_warning_count(s), 1);
+    assert_non_null(strstr(sc_scene_warning(s, 0)->message, "polyhedron is not closed"));
+    sc_scene_release(s);
+}
+
+/* Which diagonal splits a non-planar quad: OpenSCAD 2021.01's own choice
+ * for each of these faces, read back from its STL export. */
+static void test_quad_diagonal(void **state)
+{
+    (void)state;
+    static const struct {
+        double p[4][3];
+        int diagonal;
+    } cases[] = {
+        /* the first triangulation flipped by the Delaunay rule */
+        {{{8.998, 0, 3.44},
+          {8.0987, 0, 1.1208},
+          {6.2316, 3.5978, 0.7397},
+          {7.4307, 4.2901, 1.5471}},
+         0},
+        {{{9.1, 0, -3.0155},
+          {10.7929, 0, -2.8751},
+          {10.5979, 6.1187, -2.8054},
+          {8.789, 5.0743, -2.1505}},
+         1},
+        /* opposite angles summing to pi .. pi + 0.01: the first one stays,
+         * though the other is the Delaunay one */
+        {{{-9.9433, 0, 2.6861},
+          {-8.423, 0, 2.3619},
+          {-7.0097, -4.047, 1.1195},
+          {-7.8179, -4.5137, 2.8094}},
+         0},
+        {{{6.3506, -10.9995, -0.1651},
+          {6.0641, -10.5033, 1.0826},
+          {10.2839, -5.9374, 2.965},
+          {11.2021, -6.4675, 0.8499}},
+         1},
+        /* plain Delaunay */
+        {{{12.415, 0, 0},
+          {12.7685, 0, 1.8144},
+          {10.3973, 6.0029, 2.9644},
+          {10.4694, 6.0445, 0.8237}},
+         1},
+        /* two corners on one point of the projection */
+        {{{7.13122, 2.36308, 0.141891},
+          {6.18934, 2.85873, -0.174403},
+          {6.18934, 2.85873, -0.681548},
+          {6.4757, 2.14586, -0.558831}},
+         0},
+        {{{-6.18934, -2.85873, -0.174403},
+          {-5.56081, -3.41357, -0.289547},
+          {-6.12372, -3.75912, -0.651657},
+          {-6.18934, -2.85873, -0.681548}},
+         0},
+    };
+    for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+        vec3 q[4];
+        for (int k = 0; k < 4; k++)
+            q[k] = v3(cases[i].p[k][0], cases[i].p[k][1], cases[i].p[k][2]);
+        if (build_mesh_quad_diagonal(q, 1) != cases[i].diagonal)
+            fail_msg("case %zu: diagonal %d, OpenSCAD's %d", i,
+                     build_mesh_quad_diagonal(q, 1), cases[i].diagonal);
+    }
+    /* A twisted cell split along its 1-3 diagonal is a different solid
+     * from the fan about point 0: a point beside that diagonal is in
+     * one and not the other. */
+    sc_scene *s =
+        load("m.csg", "polyhedron(points = [[0, 0, 0], [1, 0, 0], [1, 1, 0], "
+                      "[0, 1, 0], [0, 0, 1], [1, 0, 1.4], [1, 1, 1], [0, 1, 1.4]], "
+                      "faces = [[0, 1, 2, 3], [4, 7, 6, 5], [0, 4, 5, 1], "
+                      "[1, 5, 6, 2], [2, 6, 7, 3], [3, 7, 4, 0]]);");
+    vec3 top[4] = {v3(0, 0, 1), v3(0, 1, 1.4), v3(1, 1, 1), v3(1, 0, 1.4)};
+    int diagonal = build_mesh_quad_diagonal(top, 1);
+    /* The top's two splits: along 4-6 the surface is at z = 1 at the
+     * centre, along 5-7 at z = 1.4. */
+    assert_int_equal(inside(s, 0.5, 0.5, 1.2), diagonal == 1);
     sc_scene_release(s);
 }
 
@@ -270,7 +488,14 @@ static void test_import(void **state)
              "%s:1:8: error: imported mesh is not closed (edge (0, 0, 2)-(0, 2, 2) is "
              "used by 1 face)",
              model);
-    check_error(model, "import(\"open.stl\");", SC_ERR_SEMANTIC, expected);
+    check_error_strict(model, "import(\"open.stl\");", SC_ERR_SEMANTIC, expected, 0);
+    s = load_one_warning(
+        model, "import(\"open.stl\");", 1, 1, 8,
+        "imported mesh is not closed (edge (0, 0, 2)-(0, 2, 2) is used by "
+        "1 face); left out, as OpenSCAD leaves it out (\"The given mesh is "
+        "not closed! Unable to convert to CGAL_Nef_Polyhedron.\")",
+        0);
+    sc_scene_release(s);
     snprintf(expected, sizeof expected,
              "%s:1:8: error: import: '%s/bad.stl' is not a valid STL file (a 'vertex' "
              "without three numbers)",
@@ -381,6 +606,8 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_nonconvex_polyhedron),
         cmocka_unit_test(test_mesh_errors),
+        cmocka_unit_test(test_merged_copies),
+        cmocka_unit_test(test_quad_diagonal),
         cmocka_unit_test(test_import),
         cmocka_unit_test(test_linear_extrude),
     };

@@ -2,7 +2,8 @@
  * vertices and edges counted once (watertightness), entries and exits by
  * facing, non-convex spans against membership, the span and crossing caps
  * and what happens past them, normals of meshes with more than 65536
- * triangles, and winding membership. */
+ * triangles, winding membership, and the parity rule of meshes that are
+ * not closed. */
 #include <math.h>
 #include <setjmp.h>
 #include <stdarg.h>
@@ -430,6 +431,69 @@ static void test_range_walk(void **state)
     csg_builder_free(b);
 }
 
+/* The parity rule (prim_mesh_create_rule with parity 1), for meshes that
+ * are not closed or not consistently wound. A unit cube with one face
+ * turned inward: by winding number that face cancels the solid behind it,
+ * by parity the cube is whole, and the entry on the turned face carries
+ * the flip bit so its normal still faces the ray. The same cube without
+ * its top: a line through the side walls has its span; a line down
+ * through the open top crosses the bottom alone, and its unpaired
+ * crossing makes no span. Membership counts crossings the same way. */
+static void test_parity_rule(void **state)
+{
+    (void)state;
+    csg_builder *b = csg_builder_new();
+    soup s = {NULL, NULL, 0, 0};
+    soup_box(&s, v3(0, 0, 0), v3(1, 1, 1));
+    /* turn the top face (triangles 2 and 3: 4 5 7 6) inward */
+    for (uint32_t k = 2; k < 4; k++) {
+        uint32_t t = s.t[3 * k + 1];
+        s.t[3 * k + 1] = s.t[3 * k + 2];
+        s.t[3 * k + 2] = t;
+    }
+    prim winding = {.kind = PRIM_MESH};
+    winding.u.mesh.mesh = prim_mesh_create(b, s.p, s.t, s.nt);
+    prim parity = {.kind = PRIM_MESH};
+    parity.u.mesh.mesh = prim_mesh_create_rule(b, s.p, s.t, s.nt, 1);
+    assert_non_null(winding.u.mesh.mesh);
+    assert_non_null(parity.u.mesh.mesh);
+    span out[8];
+    /* down through the turned top face */
+    vec3 o = v3(0.3, 0.4, 3), d = v3(0, 0, -1);
+    uint32_t n = prim_mesh_spans(&parity, 0, o, d, out, 8);
+    assert_int_equal(n, 1);
+    assert_true(near(out[0].in.t, 2) && near(out[0].out.t, 3));
+    assert_int_equal(out[0].in.flip, 1);  /* the turned face, faced back */
+    assert_int_equal(out[0].out.flip, 0); /* the bottom, as wound */
+    vec3 nin = prim_mesh_normal(&parity, v3(0.3, 0.4, 1), out[0].in.part);
+    assert_true((out[0].in.flip ? -1 : 1) * v3_dot(nin, d) < 0);
+    n = prim_mesh_spans(&winding, 0, o, d, out, 8);
+    assert_true(n == 0 || !near(out[0].in.t, 2)); /* winding loses the top */
+    assert_true(prim_mesh_inside(&parity, v3(0.5, 0.5, 0.5)));
+    assert_false(prim_mesh_inside(&parity, v3(0.5, 0.5, 1.5)));
+    /* the cube without its top */
+    free(s.p);
+    free(s.t);
+    s = (soup){NULL, NULL, 0, 0};
+    soup_box(&s, v3(0, 0, 0), v3(1, 1, 1));
+    memmove(&s.t[6], &s.t[12], (size_t)(s.nt - 4) * 3 * sizeof *s.t);
+    s.nt -= 2;
+    prim open = {.kind = PRIM_MESH};
+    open.u.mesh.mesh = prim_mesh_create_rule(b, s.p, s.t, s.nt, 1);
+    assert_non_null(open.u.mesh.mesh);
+    n = prim_mesh_spans(&open, 0, v3(-1, 0.5, 0.5), v3(1, 0, 0), out, 8);
+    assert_int_equal(n, 1);
+    assert_true(near(out[0].in.t, 1) && near(out[0].out.t, 2));
+    assert_int_equal(out[0].in.flip, 0);
+    n = prim_mesh_spans(&open, 0, v3(0.5, 0.5, 3), v3(0, 0, -1), out, 8);
+    assert_true(n <= 1);
+    if (n == 1) /* at most the unpaired crossing, which regularising removes */
+        assert_true(out[0].out.t - out[0].in.t == 0);
+    free(s.p);
+    free(s.t);
+    csg_builder_free(b);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -440,6 +504,7 @@ int main(void)
         cmocka_unit_test(test_normals_of_large_meshes),
         cmocka_unit_test(test_degenerate),
         cmocka_unit_test(test_range_walk),
+        cmocka_unit_test(test_parity_rule),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -134,9 +134,12 @@ typedef struct sc_scene sc_scene;
 typedef struct sc_load_options {
     size_t size;  /* sizeof (sc_load_options) as compiled: set by the init call */
     int faithful; /* spheres and cylinders as OpenSCAD's polyhedra for $fn, $fa, $fs */
+    int strict;   /* a polyhedron or imported mesh that is not closed is an error
+                     (by default a warning: left out with faithful, else rendered
+                     by the parity rule) */
 } sc_load_options;
 
-/* Sets size and the defaults (faithful 0). Never fails. */
+/* Sets size and the defaults (faithful 0, strict 0). Never fails. */
 void sc_load_options_init_size(sc_load_options *options, size_t size);
 #define sc_load_options_init(options)                                                    \
     sc_load_options_init_size((options), sizeof *(options))

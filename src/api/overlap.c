@@ -130,7 +130,7 @@ static void choose_root(sc_objects *o)
 
 /* Builds object k alone: every other object disabled for the build, as
  * the '*' modifier would disable it. */
-static sc_status build_object(sc_objects *o, size_t k, int faithful, sc_error *error)
+static sc_status build_object(sc_objects *o, size_t k, int flags, sc_error *error)
 {
     unsigned *saved = malloc(o->count * sizeof *saved);
     if (!saved)
@@ -146,7 +146,7 @@ static sc_status build_object(sc_objects *o, size_t k, int faithful, sc_error *e
     if (!s || !(s->path = strdup(o->path)))
         st = err_nomem(error, NULL);
     else
-        st = build_scene(o->typed, faithful, &s->tree, &s->look, &s->warnings,
+        st = build_scene(o->typed, flags, &s->tree, &s->look, &s->warnings,
                          &s->warning_count, error);
     for (size_t j = 0; j < o->count; j++)
         o->nodes[j]->modifiers = saved[j];
@@ -215,7 +215,9 @@ sc_status sc_objects_load(const char *path, const sc_load_options *options,
         if (counts(c))
             o->nodes[o->count++] = c;
     for (size_t k = 0; k < o->count; k++) {
-        st = build_object(o, k, lo.faithful, error);
+        st = build_object(
+            o, k, (lo.faithful ? BUILD_FAITHFUL : 0) | (lo.strict ? BUILD_STRICT : 0),
+            error);
         if (st) {
             sc_objects_release(o);
             return st;

@@ -87,8 +87,9 @@ static sc_status load(const char *name, const char *text, size_t length, char *o
     }
     free(owned_text);
     if (st == SC_OK)
-        st = build_scene(typed, own.faithful, &s->tree, &s->look, &s->warnings,
-                         &s->warning_count, error);
+        st = build_scene(
+            typed, (own.faithful ? BUILD_FAITHFUL : 0) | (own.strict ? BUILD_STRICT : 0),
+            &s->tree, &s->look, &s->warnings, &s->warning_count, error);
     model_free(typed);
     parse_tree_free(syntax);
     if (st != SC_OK) {

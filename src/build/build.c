@@ -97,6 +97,7 @@ typedef struct builder {
     size_t frame_count, frame_cap;
     shading *shading; /* lights, materials, camera, background */
     int faithful;     /* OpenSCAD's polyhedra for spheres and cylinders */
+    int strict;       /* a mesh OpenSCAD would leave out is an error */
     uint32_t root_id; /* the result of the first '!' node */
     /* resize matrices measured so far (build_hull.h) */
     build_resize_cache *resize_cache;
@@ -264,45 +265,6 @@ static void mesh_free(mesh *m)
     free(m->planes);
 }
 
-static int compare_u64(const void *a, const void *b)
-{
-    uint64_t x = *(const uint64_t *)a, y = *(const uint64_t *)b;
-    return x < y ? -1 : x > y;
-}
-
-/* Every undirected edge must belong to exactly two faces. */
-static sc_status check_closed(builder *b, const model_node *n, mesh *m)
-{
-    uint32_t total = m->face_start[m->face_count];
-    if (!(m->edges = calloc(total, sizeof *m->edges)))
-        return err_nomem(b->error, NULL);
-    size_t count = 0;
-    for (uint32_t f = 0; f < m->face_count; f++) {
-        uint32_t s = m->face_start[f], e = m->face_start[f + 1];
-        for (uint32_t i = s; i < e; i++) {
-            uint32_t p = m->indices[i], q = m->indices[i + 1 < e ? i + 1 : s];
-            if (p == q)
-                continue; /* a repeated point adds no edge */
-            uint32_t lo = p < q ? p : q, hi = p < q ? q : p;
-            m->edges[count++] = (uint64_t)lo << 32 | hi;
-        }
-    }
-    qsort(m->edges, count, sizeof *m->edges, compare_u64);
-    for (size_t i = 0; i < count;) {
-        size_t j = i;
-        while (j < count && m->edges[j] == m->edges[i])
-            j++;
-        if (j - i != 2)
-            return err_set(b->error, SC_ERR_SEMANTIC, &n->loc,
-                           "polyhedron is not closed (edge %u-%u is used by %zu face%s)",
-                           (unsigned)(m->edges[i] >> 32),
-                           (unsigned)(m->edges[i] & 0xffffffffu), j - i,
-                           j - i == 1 ? "" : "s");
-        i = j;
-    }
-    return SC_OK;
-}
-
 /* Builds the outward face planes (duplicates merged) and checks convexity.
  * Each plane is oriented by the points themselves: all of them must lie on
  * one side, within tol, and inside is that side. A plane with every point
@@ -391,43 +353,66 @@ static sc_status convex_planes(builder *b, mesh *m, uint32_t *count, bbox *bound
     return st;
 }
 
-/* polyhedron(points, faces): closed, then convex planes or a mesh. */
+/* A mesh builder's warning (c.note), at its own position. */
+static sc_status warn_note(builder *b, const sc_error *note)
+{
+    if (!note->message[0])
+        return SC_OK;
+    sc_location at = {b->file, note->line, note->column};
+    return warn(b, &at, "%s", note->message);
+}
+
+/* polyhedron(points, faces): its points merged as OpenSCAD merges them
+ * (build_mesh_merge), then convex planes when it is closed and convex,
+ * else a mesh (build_mesh_solid, which also takes the meshes that are
+ * not closed). */
 static sc_status build_polyhedron(builder *b, const model_node *n, const frame *state,
                                   uint32_t *id)
 {
-    mesh m;
-    memset(&m, 0, sizeof m);
-    m.points = n->u.polyhedron.points;
-    m.point_count = n->u.polyhedron.point_count;
-    m.indices = n->u.polyhedron.indices;
-    m.face_start = n->u.polyhedron.face_start;
-    m.face_count = n->u.polyhedron.face_count;
     sc_status st = SC_OK;
-    if (m.face_count == 0) {
+    if (n->u.polyhedron.face_count == 0) {
         if (state->emit)
             st = warn(b, &n->loc, "polyhedron without faces is empty");
-        mesh_free(&m);
         return st;
     }
-    if (st == SC_OK)
-        st = check_closed(b, n, &m);
+    sc_error note = {SC_OK, "", 0, 0, ""};
+    build_ctx c = context(b, state->emit, &note);
+    build_mesh_faces f;
+    st = build_mesh_merge(&c, &n->loc, 1, n->u.polyhedron.points,
+                          n->u.polyhedron.point_count, n->u.polyhedron.indices,
+                          n->u.polyhedron.face_start, n->u.polyhedron.face_count, &f);
+    if (st != SC_OK)
+        return st;
+    mesh m;
+    memset(&m, 0, sizeof m);
+    m.points = f.points;
+    m.point_count = f.point_count;
+    m.indices = f.indices;
+    m.face_start = f.face_start;
+    m.face_count = f.face_count;
+    char why[8];
+    int sound = f.face_count ? build_mesh_sound(&f, "polyhedron", 1, why, sizeof why) : 1;
+    if (sound < 0)
+        st = err_nomem(b->error, &n->loc);
     /* The plane-set path compares every face with every point (and every
      * plane with the others), so larger polyhedra go to the mesh path
-     * (build_mesh.c), as do the ones that are not convex. */
+     * (build_mesh.c), as do the ones that are not convex or not closed. */
     uint32_t count = UINT32_MAX;
     bbox bounds;
-    if (st == SC_OK &&
+    if (st == SC_OK && sound > 0 &&
         (uint64_t)m.face_count * m.point_count <= BUILD_MAX_POLYHEDRON_WORK)
         st = convex_planes(b, &m, &count, &bounds);
     if (st == SC_OK && count == UINT32_MAX) {
-        build_ctx c = context(b, state->emit, NULL);
         const char *empty = NULL;
         prim p;
-        st = build_mesh_prim(&c, &n->loc, "polyhedron", 1, m.points, m.point_count,
-                             m.indices, m.face_start, m.face_count, &p, &empty);
+        st = build_mesh_solid(&c, &n->loc, "polyhedron", 1, b->strict, &f, &p, &empty);
         if (st == SC_OK && state->emit)
-            st = empty ? warn(b, &n->loc, "%s", empty) : add_leaf(b, n, &p, state, id);
+            st = warn_note(b, &note);
+        if (st == SC_OK && state->emit)
+            st = empty ? (empty[0] ? warn(b, &n->loc, "%s", empty) : SC_OK)
+                       : add_leaf(b, n, &p, state, id);
         mesh_free(&m);
+        build_mesh_faces_free(&f);
         return st;
     }
     if (st == SC_OK && state->emit && count == 0)
@@ -448,6 +433,7 @@ static sc_status build_polyhedron(builder *b, const model_node *n, const frame *
         }
     }
     mesh_free(&m);
+    build_mesh_faces_free(&f);
     return st;
 }
 
@@ -527,7 +513,7 @@ static sc_status build_import_leaf(builder *b, const model_node *n, const frame 
         int opened = 1;
         if ((st = import_opens(b, n, &opened)) != SC_OK || !opened)
             return st;
-        st = build_import(&c, n->u.import, &p, &empty);
+        st = build_import_mesh(&c, n->u.import, b->strict, &p, &empty);
     } else if (n->kind == MODEL_LINEAR_EXTRUDE)
         st = build_linear_extrude(&c, n, state->emit, &p, &empty);
     else if (n->kind == MODEL_ROTATE_EXTRUDE)
@@ -539,8 +525,8 @@ static sc_status build_import_leaf(builder *b, const model_node *n, const frame 
         if ((st = warn(b, &at, "%s", note.message)) != SC_OK)
             return st;
     }
-    if (empty)
-        return warn(b, &n->loc, "%s", empty);
+    if (empty) /* "": left out, the warning was the note */
+        return empty[0] ? warn(b, &n->loc, "%s", empty) : SC_OK;
     return add_leaf(b, n, &p, state, id);
 }
 
@@ -1075,7 +1061,7 @@ static sc_status build_parts(builder *b)
     return st;
 }
 
-sc_status build_scene(const model *m, int faithful, csg_tree **out, shading **look,
+sc_status build_scene(const model *m, int flags, csg_tree **out, shading **look,
                       sc_error **warnings, size_t *warning_count, sc_error *error)
 {
     *out = NULL;
@@ -1088,7 +1074,8 @@ sc_status build_scene(const model *m, int faithful, csg_tree **out, shading **lo
     b.model = m;
     b.file = m->file;
     b.error = error;
-    b.faithful = faithful;
+    b.faithful = (flags & BUILD_FAITHFUL) != 0;
+    b.strict = (flags & BUILD_STRICT) != 0;
     b.root_id = CSG_EMPTY;
     b.csg = csg_builder_new();
     b.shading = shading_new();

@@ -57,17 +57,21 @@
         249 / 255.0f, 215 / 255.0f, 44 / 255.0f, 1.0f                                    \
     }
 
+/* build_scene's flags. */
+#define BUILD_FAITHFUL 1 /* OpenSCAD's polygons and polyhedra (--faithful) */
+#define BUILD_STRICT 2   /* bad meshes are errors (--strict) */
+
 /* Builds the CSG tree of the model m and the scene's shading record
- * (lights, materials, camera, background: build_shading.h); with faithful
- * set, spheres and cylinders become OpenSCAD's polyhedra for their $fn,
- * $fa, $fs (faithful.h). On success *out owns the tree (free with
- * csg_tree_free), *look the shading record (free with shading_free; not
- * made when look is NULL), and *warnings is a malloc'd array of
- * *warning_count warnings in source order (NULL when there are none; free
- * with free()). On failure nothing is returned and error says where and
- * why: the first error in file order, which may be one the lowering found
- * (a MODEL_ERROR node). */
-sc_status build_scene(const model *m, int faithful, csg_tree **out, shading **look,
+ * (lights, materials, camera, background: build_shading.h); with
+ * BUILD_FAITHFUL in flags, spheres and cylinders become OpenSCAD's polyhedra for their
+ * $fn, $fa, $fs (faithful.h). On success *out owns the tree (free with csg_tree_free),
+ * *look the shading record (free with shading_free; not made when look is NULL), and
+ * *warnings is a malloc'd array of *warning_count warnings in source order (NULL when
+ * there are none; free with free()). On failure nothing is returned and error says where
+ * and why: the first error in file order, which may be one the lowering found (a
+ * MODEL_ERROR node). With BUILD_STRICT, a polyhedron or imported mesh that is not closed
+ * is an error rather than a warning (build_mesh.h). */
+sc_status build_scene(const model *m, int flags, csg_tree **out, shading **look,
                       sc_error **warnings, size_t *warning_count, sc_error *error);
 
 #endif

@@ -1,19 +1,25 @@
 /* Building mesh leaves: the polyhedra that are not convex, and
  * import("file.stl" | "file.off").
  *
- * A mesh must bound a solid: closed (every undirected edge in exactly two
- * faces) and consistently oriented (those two faces run along the edge in
- * opposite directions). Anything else is an error naming an offending
- * edge; OpenSCAD's own CGAL render rejects such meshes too, and a ray
- * caster cannot tell inside from outside without it. Which way the faces
- * wind does not matter: OpenSCAD lists them clockwise seen from outside,
- * STL and OFF files usually the other way, so the sign of the enclosed
- * volume (divergence theorem, sum of a . (b x c) / 6 over the triangles,
- * about the centre of the bounds for accuracy) decides, and a mesh whose
- * volume is negative is turned inside out. A mesh without volume is empty,
- * with a warning. Faces with more than three points are split into fans
- * about their first point; where a fan of a non-convex face overlaps
- * itself, the winding number of prim_mesh.c cancels the overlap.
+ * Polyhedra and imports are read as OpenSCAD 2021.01 reads them: their
+ * points merged on its grid of 2^-20 (build_mesh_merge), quads split along
+ * the diagonal its libtess2 triangulation picks (build_mesh_quad_diagonal),
+ * larger faces into fans about their first point. A solid needs a mesh
+ * that is closed (every undirected edge in exactly two faces) and
+ * consistently oriented (those two faces run along the edge in opposite
+ * directions). One that is not is a warning naming an offending edge, and
+ * then left out in faithful mode, as OpenSCAD leaves it out of its CGAL
+ * operations, or in exact mode built with the parity rule (prim_mesh.h),
+ * so the user still sees it; with --strict it is an error. The meshes
+ * other builders make (extrusions, surface, hull: build_mesh_prim) must be
+ * sound. Which way the faces wind does not matter: OpenSCAD lists them
+ * clockwise seen from outside, STL and OFF files usually the other way, so
+ * the sign of the enclosed volume (divergence theorem, sum of a . (b x c)
+ * / 6 over the triangles, about the centre of the bounds for accuracy)
+ * decides, and a mesh whose volume is negative is turned inside out. A
+ * mesh without volume is empty, with a warning. Where a fan of a
+ * non-convex face overlaps itself, the winding number of prim_mesh.c
+ * cancels the overlap.
  *
  * Files: binary STL is recognised by its size (84 + 50 n bytes for the n
  * triangles its header announces), anything else starting with "solid" is
@@ -26,6 +32,7 @@
 #include "build/build_mesh.h"
 
 #include <errno.h>
+#include <float.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -56,10 +63,14 @@ static const char *edge_name(char *buf, size_t size, const vec3 *points,
     return buf;
 }
 
-/* Closed and consistently oriented, else an error naming an edge. */
-static sc_status check_edges(const build_ctx *c, const sc_location *loc, const char *what,
-                             int numbered, const vec3 *points, const uint32_t *indices,
-                             const uint32_t *face_start, uint32_t face_count)
+/* Closed and consistently oriented: returns 1, or 0 with what is wrong
+ * (naming an edge) in why; -1 when memory ran out. names (or NULL): the
+ * number in the file of each point, by which a numbered mesh's edges are
+ * checked and named. */
+static int mesh_sound(const char *what, int numbered, const vec3 *points,
+                      const uint32_t *names, const uint32_t *indices,
+                      const uint32_t *face_start, uint32_t face_count, char *why,
+                      size_t size)
 {
     int by_coordinates = !numbered;
     char name[256];
@@ -69,7 +80,7 @@ static sc_status check_edges(const build_ctx *c, const sc_location *loc, const c
     if (!directed || !undirected) {
         free(directed);
         free(undirected);
-        return err_nomem(c->error, loc);
+        return -1;
     }
     size_t count = 0;
     for (uint32_t f = 0; f < face_count; f++) {
@@ -78,36 +89,87 @@ static sc_status check_edges(const build_ctx *c, const sc_location *loc, const c
             uint32_t p = indices[i], q = indices[i + 1 < e ? i + 1 : s];
             if (p == q)
                 continue;
+            if (names && numbered) { /* edges in the file's numbers, as named */
+                p = names[p];
+                q = names[q];
+            }
             directed[count] = (uint64_t)p << 32 | q;
             undirected[count++] = p < q ? (uint64_t)p << 32 | q : (uint64_t)q << 32 | p;
         }
     }
     qsort(directed, count, sizeof *directed, compare_u64);
     qsort(undirected, count, sizeof *undirected, compare_u64);
-    sc_status st = SC_OK;
-    for (size_t i = 0; i < count && st == SC_OK;) {
+    int sound = 1;
+    for (size_t i = 0; i < count && sound;) {
         size_t j = i;
         while (j < count && undirected[j] == undirected[i])
             j++;
-        if (j - i != 2)
-            st = err_set(
-                c->error, SC_ERR_SEMANTIC, loc,
-                "%s is not closed (edge %s is used by %zu face%s)", what,
-                edge_name(name, sizeof name, points, by_coordinates, undirected[i]),
-                j - i, j - i == 1 ? "" : "s");
+        if (j - i != 2) {
+            snprintf(why, size, "%s is not closed (edge %s is used by %zu face%s)", what,
+                     edge_name(name, sizeof name, points, by_coordinates, undirected[i]),
+                     j - i, j - i == 1 ? "" : "s");
+            sound = 0;
+        }
         i = j;
     }
-    for (size_t i = 0; i + 1 < count && st == SC_OK; i++) {
-        if (directed[i] == directed[i + 1])
-            st = err_set(
-                c->error, SC_ERR_SEMANTIC, loc,
-                "%s is not consistently oriented (edge %s runs the same way in "
-                "two faces)",
-                what, edge_name(name, sizeof name, points, by_coordinates, directed[i]));
+    for (size_t i = 0; i + 1 < count && sound; i++) {
+        if (directed[i] == directed[i + 1]) {
+            snprintf(why, size,
+                     "%s is not consistently oriented (edge %s runs the same way in "
+                     "two faces)",
+                     what,
+                     edge_name(name, sizeof name, points, by_coordinates, directed[i]));
+            sound = 0;
+        }
     }
     free(directed);
     free(undirected);
-    return st;
+    return sound;
+}
+
+/* The leaf of tri_count triangles (three indices into points each, wound
+ * alike): a closed mesh is turned outward by the sign of its volume, and a
+ * mesh without volume is empty (*empty); parity says the mesh is not sound
+ * and takes the parity rule (prim_mesh.h), its triangles as they come, and
+ * is empty only without area. */
+static sc_status finish_mesh(const build_ctx *c, const sc_location *loc, int numbered,
+                             const vec3 *points, uint32_t point_count, uint32_t *tris,
+                             size_t k, int parity, prim *out, const char **empty)
+{
+    bbox box = bbox_empty();
+    for (uint32_t i = 0; i < point_count; i++)
+        box = bbox_add_point(box, points[i]);
+    vec3 centre = v3_scale(v3_add(box.lo, box.hi), 0.5);
+    double volume = 0, area = 0;
+    for (size_t i = 0; i < k; i++) {
+        vec3 a = v3_sub(points[tris[3 * i]], centre);
+        vec3 b = v3_sub(points[tris[3 * i + 1]], centre);
+        vec3 d = v3_sub(points[tris[3 * i + 2]], centre);
+        volume += v3_dot(a, v3_cross(b, d)) / 6;
+        area += v3_length(v3_cross(v3_sub(b, a), v3_sub(d, a)));
+    }
+    vec3 ext = v3_sub(box.hi, box.lo);
+    double size = fmax(ext.x, fmax(ext.y, ext.z));
+    if (parity ? !(area > 1e-24 * size * size)
+               : !(fabs(volume) > 1e-12 * size * size * size)) {
+        *empty = numbered ? "polyhedron without volume is empty"
+                          : "imported mesh without volume is empty";
+        return SC_OK;
+    }
+    if (volume < 0 && !parity) {
+        for (size_t i = 0; i < k; i++) {
+            uint32_t t = tris[3 * i + 1];
+            tris[3 * i + 1] = tris[3 * i + 2];
+            tris[3 * i + 2] = t;
+        }
+    }
+    const prim_mesh *m = prim_mesh_create_rule(c->csg, points, tris, (uint32_t)k, parity);
+    if (!m)
+        return err_nomem(c->error, loc);
+    memset(out, 0, sizeof *out);
+    out->kind = PRIM_MESH;
+    out->u.mesh.mesh = m;
+    return SC_OK;
 }
 
 sc_status build_mesh_prim(const build_ctx *c, const sc_location *loc, const char *what,
@@ -115,10 +177,13 @@ sc_status build_mesh_prim(const build_ctx *c, const sc_location *loc, const char
                           const uint32_t *indices, const uint32_t *face_start,
                           uint32_t face_count, prim *out, const char **empty)
 {
-    sc_status st =
-        check_edges(c, loc, what, numbered, points, indices, face_start, face_count);
-    if (st != SC_OK)
-        return st;
+    char why[SC_ERROR_MESSAGE_MAX];
+    int sound = mesh_sound(what, numbered, points, NULL, indices, face_start, face_count,
+                           why, sizeof why);
+    if (sound < 0)
+        return err_nomem(c->error, loc);
+    if (!sound)
+        return err_set(c->error, SC_ERR_SEMANTIC, loc, "%s", why);
     size_t tri_count = 0;
     for (uint32_t f = 0; f < face_count; f++)
         tri_count += face_start[f + 1] - face_start[f] - 2;
@@ -127,48 +192,436 @@ sc_status build_mesh_prim(const build_ctx *c, const sc_location *loc, const char
     uint32_t *tris = malloc((tri_count ? tri_count : 1) * 3 * sizeof *tris);
     if (!tris)
         return err_nomem(c->error, loc);
-    bbox box = bbox_empty();
-    for (uint32_t i = 0; i < point_count; i++)
-        box = bbox_add_point(box, points[i]);
-    vec3 centre = v3_scale(v3_add(box.lo, box.hi), 0.5);
     size_t k = 0;
-    double volume = 0;
     for (uint32_t f = 0; f < face_count; f++) {
         uint32_t s = face_start[f], e = face_start[f + 1];
         for (uint32_t i = s + 1; i + 1 < e; i++) {
             tris[3 * k] = indices[s];
             tris[3 * k + 1] = indices[i];
             tris[3 * k + 2] = indices[i + 1];
-            vec3 a = v3_sub(points[indices[s]], centre);
-            vec3 b = v3_sub(points[indices[i]], centre);
-            vec3 d = v3_sub(points[indices[i + 1]], centre);
-            volume += v3_dot(a, v3_cross(b, d)) / 6;
             k++;
         }
     }
-    vec3 ext = v3_sub(box.hi, box.lo);
-    double size = fmax(ext.x, fmax(ext.y, ext.z));
-    if (!(fabs(volume) > 1e-12 * size * size * size)) {
-        free(tris);
-        *empty = numbered ? "polyhedron without volume is empty"
-                          : "imported mesh without volume is empty";
-        return SC_OK;
+    sc_status st =
+        finish_mesh(c, loc, numbered, points, point_count, tris, k, 0, out, empty);
+    free(tris);
+    return st;
+}
+
+/* ---- OpenSCAD's triangulation of a quadrilateral ----
+ *
+ * OpenSCAD 2021.01 (PolysetUtils::tessellate_faces) casts the points of
+ * each face to float and hands faces of four or more points to libtess2
+ * with TESS_CONSTRAINED_DELAUNAY_TRIANGLES and no normal. For a quad whose
+ * projection is simple, what libtess2 does comes down to this:
+ *  - The normal (ComputeNormal): the axis of widest extent of the points,
+ *    its first lowest and first highest point in libtess2's vertex list,
+ *    and of the points the one making the largest triangle with those two
+ *    (the first of equals); the normal is that cross product. libtess2's
+ *    list holds the contour's points from the second on, then the first,
+ *    and OpenSCAD's contour is the face reversed (PolyhedronNode inserts
+ *    each point at the front), so a face p0 p1 p2 p3 is listed p2 p1 p0 p3.
+ *  - The projection (tessProjectPolygon): i = the normal's largest
+ *    component (the first of equals), s = x_(i+1), t = +-x_(i+2) by the
+ *    sign of the normal's component i; then t is negated when the
+ *    contour's signed area in (s, t) is negative (CheckOrientation), so the
+ *    contour runs counter-clockwise: the face itself runs clockwise.
+ *  - The first triangulation (tessMeshTessellateMonoRegion): with L the
+ *    least and R the greatest point in (s, t) lexicographic order, the
+ *    diagonal is the other two points when L and R are opposite, else R to
+ *    the neighbour of L that is not R.
+ *  - The Delaunay refinement (tessMeshRefineDelaunay): the diagonal is
+ *    flipped when the two angles facing it sum to pi + 0.01 or more
+ *    (tesedgeIsLocallyDelaunay), each angle the acos of a cosine computed
+ *    in float. The 0.01 is the tie rule: between the two, within 0.01 of
+ *    a circle through all four points, the first triangulation stays.
+ * All of it in float, as libtess2 computes (TESSreal). A quad whose
+ * projection crosses itself (a bow tie) is cut by libtess2 at the crossing
+ * and OpenSCAD mends the result in an order that depends on its hash
+ * tables; such quads take the same rule, which may pick the other diagonal
+ * than OpenSCAD (docs/meshes.md). */
+
+#define TESS_PI 3.14159265358979323846
+
+static int vert_leq(const float *s, const float *t, int a, int b)
+{
+    return s[a] < s[b] || (s[a] == s[b] && t[a] <= t[b]);
+}
+
+/* The angle at v1 between v0 - v1 and v2 - v1, as libtess2's calcAngle. */
+static float tess_angle(const float *s, const float *t, int v0, int v1, int v2)
+{
+    float a0 = s[v2] - s[v1], a1 = t[v2] - t[v1];
+    float b0 = s[v0] - s[v1], b1 = t[v0] - t[v1];
+    float num = a0 * b0 + a1 * b1;
+    float den =
+        (float)(sqrt((double)(a0 * a0 + a1 * a1)) * sqrt((double)(b0 * b0 + b1 * b1)));
+    if (den > 0.0f)
+        num /= den;
+    if (num < -1.0f)
+        num = -1.0f;
+    if (num > 1.0f)
+        num = 1.0f;
+    return (float)acos((double)num);
+}
+
+int build_mesh_quad_diagonal(const vec3 q[4], int reversed)
+{
+    /* libtess2's vertex list: the contour from its second point on */
+    static const int lists[2][4] = {{1, 2, 3, 0}, {2, 1, 0, 3}};
+    const int *listed = lists[reversed != 0];
+    float v[4][3];
+    for (int k = 0; k < 4; k++) /* beyond float, as beyond OpenSCAD: the first */
+        if (!(v3_max_abs(q[k]) <= FLT_MAX))
+            return 0;
+    for (int k = 0; k < 4; k++) {
+        v[k][0] = (float)q[k].x;
+        v[k][1] = (float)q[k].y;
+        v[k][2] = (float)q[k].z;
     }
-    if (volume < 0) {
-        for (size_t i = 0; i < k; i++) {
-            uint32_t t = tris[3 * i + 1];
-            tris[3 * i + 1] = tris[3 * i + 2];
-            tris[3 * i + 2] = t;
+    float lo[3], hi[3];
+    int lo_at[3], hi_at[3];
+    for (int a = 0; a < 3; a++) {
+        lo[a] = hi[a] = v[listed[0]][a];
+        lo_at[a] = hi_at[a] = listed[0];
+    }
+    for (int j = 0; j < 4; j++) {
+        int k = listed[j];
+        for (int a = 0; a < 3; a++) {
+            if (v[k][a] < lo[a]) {
+                lo[a] = v[k][a];
+                lo_at[a] = k;
+            }
+            if (v[k][a] > hi[a]) {
+                hi[a] = v[k][a];
+                hi_at[a] = k;
+            }
         }
     }
-    const prim_mesh *m = prim_mesh_create(c->csg, points, tris, (uint32_t)k);
-    free(tris);
-    if (!m)
+    int i = 0;
+    if (hi[1] - lo[1] > hi[0] - lo[0])
+        i = 1;
+    if (hi[2] - lo[2] > hi[i] - lo[i])
+        i = 2;
+    float norm[3] = {0, 0, 1};
+    if (lo[i] < hi[i]) {
+        const float *v1 = v[lo_at[i]], *v2 = v[hi_at[i]];
+        float d1[3] = {v1[0] - v2[0], v1[1] - v2[1], v1[2] - v2[2]};
+        float most = 0;
+        for (int j = 0; j < 4; j++) {
+            const float *p = v[listed[j]];
+            float d2[3] = {p[0] - v2[0], p[1] - v2[1], p[2] - v2[2]};
+            float n[3] = {d1[1] * d2[2] - d1[2] * d2[1], d1[2] * d2[0] - d1[0] * d2[2],
+                          d1[0] * d2[1] - d1[1] * d2[0]};
+            float len2 = n[0] * n[0] + n[1] * n[1] + n[2] * n[2];
+            if (len2 > most) {
+                most = len2;
+                memcpy(norm, n, sizeof norm);
+            }
+        }
+        if (most <= 0)
+            return 0; /* the points on a line: no area either way */
+    }
+    int axis = 0;
+    if (fabsf(norm[1]) > fabsf(norm[0]))
+        axis = 1;
+    if (fabsf(norm[2]) > fabsf(norm[axis]))
+        axis = 2;
+    float s[4], t[4];
+    for (int k = 0; k < 4; k++) {
+        s[k] = v[k][(axis + 1) % 3];
+        t[k] = norm[axis] > 0 ? v[k][(axis + 2) % 3] : -v[k][(axis + 2) % 3];
+    }
+    /* the contour: p3 p2 p1 p0 when reversed, else p0 p1 p2 p3 */
+    float area = 0;
+    for (int j = 0; j < 4; j++) {
+        int a = reversed ? 3 - j : j, b = reversed ? (a + 3) % 4 : (a + 1) % 4;
+        area += (s[a] - s[b]) * (t[a] + t[b]);
+    }
+    if (area < 0)
+        for (int k = 0; k < 4; k++)
+            t[k] = -t[k];
+    /* Two neighbours on one point of the projection: libtess2 merges them
+     * into the one it lists first and makes one triangle, and OpenSCAD
+     * mends the sliver between the two; the diagonal runs from that one. */
+    for (int k = 0; k < 4; k++) {
+        int k1 = (k + 1) % 4;
+        if (s[k] == s[k1] && t[k] == t[k1]) {
+            for (int j = 0; j < 4; j++)
+                if (listed[j] == k || listed[j] == k1)
+                    return listed[j] % 2;
+        }
+    }
+    /* One reflex corner (a quad that is not convex in projection): the
+     * only diagonal inside is the one from it. */
+    int reflex = -1, reflexes = 0;
+    for (int k = 0; k < 4; k++) {
+        int p = (k + 3) % 4, n = (k + 1) % 4;
+        double turn = ((double)s[k] - s[p]) * ((double)t[n] - t[k]) -
+                      ((double)t[k] - t[p]) * ((double)s[n] - s[k]);
+        if (reversed ? turn > 0 : turn < 0) {
+            reflex = k;
+            reflexes++;
+        }
+    }
+    if (reflexes == 1)
+        return reflex % 2;
+    int least = 0, most_at = 0;
+    for (int k = 1; k < 4; k++) {
+        if (!vert_leq(s, t, least, k))
+            least = k;
+        if (vert_leq(s, t, most_at, k))
+            most_at = k;
+    }
+    /* 0: the diagonal p0-p2, 1: p1-p3. L and R opposite: the other two;
+     * else R and the other neighbour of L, which face each other. */
+    int diagonal = (least + 2) % 4 == most_at ? (least + 1) % 2 : most_at % 2;
+    int a = diagonal, c = diagonal + 2, b = (diagonal + 1) % 4, d = (diagonal + 3) % 4;
+    float sum = tess_angle(s, t, a, b, c) + tess_angle(s, t, a, d, c);
+    if (!((double)sum < TESS_PI + 0.01))
+        diagonal = 1 - diagonal;
+    return diagonal;
+}
+
+/* ---- merging points as OpenSCAD does ----
+ *
+ * OpenSCAD snaps every point of a polyhedron to a grid of 2^-20
+ * (Grid3d with GRID_FINE, PolySet::quantizeVertices) before CGAL sees it:
+ * the cell of a point is its coordinates over 2^-20 truncated toward zero;
+ * a point whose cell is taken joins that cell's point, else it joins the
+ * nearest taken cell among the 26 around it (the first in x, y, z order
+ * of equals), else it takes its cell. So a point becomes one with any
+ * point before it in the same or a neighbouring cell, which is how BOSL's
+ * patches, with a copy of each corner per face, close up. */
+
+typedef struct grid_slot {
+    int64_t key[3];
+    uint32_t point; /* UINT32_MAX: empty */
+} grid_slot;
+
+typedef struct grid {
+    grid_slot *slots;
+    size_t mask;
+} grid;
+
+static size_t grid_hash(const int64_t k[3])
+{
+    uint64_t h = (uint64_t)k[0] * 0x9e3779b97f4a7c15u;
+    h ^= (uint64_t)k[1] * 0xc2b2ae3d27d4eb4fu + (h << 6) + (h >> 2);
+    h ^= (uint64_t)k[2] * 0x165667b19e3779f9u + (h << 6) + (h >> 2);
+    return (size_t)(h ^ (h >> 29));
+}
+
+static grid_slot *grid_find(const grid *g, const int64_t k[3])
+{
+    for (size_t i = grid_hash(k) & g->mask;; i = (i + 1) & g->mask) {
+        grid_slot *s = &g->slots[i];
+        if (s->point == UINT32_MAX ||
+            (s->key[0] == k[0] && s->key[1] == k[1] && s->key[2] == k[2]))
+            return s;
+    }
+}
+
+void build_mesh_faces_free(build_mesh_faces *f)
+{
+    free(f->points);
+    free(f->names);
+    free(f->indices);
+    free(f->face_start);
+    memset(f, 0, sizeof *f);
+}
+
+/* The merged point of point i (grid above): its index in f. */
+static int grid_point(grid *g, build_mesh_faces *f, const vec3 *points, uint32_t i,
+                      int snap_float, uint32_t *merged)
+{
+    const double cell = 1.0 / 1048576.0; /* OpenSCAD's GRID_FINE, 2^-20 */
+    vec3 p = points[i];
+    int64_t k[3];
+    grid_slot *slot = NULL;
+    /* Past 2^40 (a million million) the cells do not fit an integer
+     * comfortably: such a point stays as it is. */
+    int gridded = fabs(p.x) < 0x1p40 && fabs(p.y) < 0x1p40 && fabs(p.z) < 0x1p40;
+    if (gridded) {
+        k[0] = (int64_t)(p.x / cell);
+        k[1] = (int64_t)(p.y / cell);
+        k[2] = (int64_t)(p.z / cell);
+        slot = grid_find(g, k);
+        if (slot->point == UINT32_MAX) {
+            int best = 10;
+            grid_slot *near = NULL;
+            for (int64_t dx = -1; dx <= 1; dx++)
+                for (int64_t dy = -1; dy <= 1; dy++)
+                    for (int64_t dz = -1; dz <= 1; dz++) {
+                        int64_t j[3] = {k[0] + dx, k[1] + dy, k[2] + dz};
+                        int d = (int)(dx * dx + dy * dy + dz * dz);
+                        if (d == 0 || d >= best)
+                            continue;
+                        grid_slot *o = grid_find(g, j);
+                        if (o->point != UINT32_MAX) {
+                            best = d;
+                            near = o;
+                        }
+                    }
+            if (near) {
+                *merged = near->point;
+                return 1;
+            }
+        } else {
+            *merged = slot->point;
+            return 1;
+        }
+    }
+    uint32_t u = f->point_count++;
+    vec3 q = p;
+    if (gridded && snap_float) /* OpenSCAD's snapped point, as float */
+        q = v3((float)((double)k[0] * cell), (float)((double)k[1] * cell),
+               (float)((double)k[2] * cell));
+    f->points[u] = q;
+    f->names[u] = i;
+    if (slot) {
+        memcpy(slot->key, k, sizeof k);
+        slot->point = u;
+    }
+    *merged = u;
+    return 1;
+}
+
+sc_status build_mesh_merge(const build_ctx *c, const sc_location *loc, int reversed,
+                           const vec3 *points, uint32_t point_count,
+                           const uint32_t *indices, const uint32_t *face_start,
+                           uint32_t face_count, build_mesh_faces *f)
+{
+    memset(f, 0, sizeof *f);
+    uint32_t total = face_start[face_count];
+    size_t slots = 16;
+    while (slots < 2 * (size_t)point_count + 2)
+        slots *= 2;
+    grid g = {malloc(slots * sizeof *g.slots), slots - 1};
+    uint32_t *map = malloc((size_t)(point_count ? point_count : 1) * sizeof *map);
+    f->points = malloc((size_t)(point_count ? point_count : 1) * sizeof *f->points);
+    f->names = malloc((size_t)(point_count ? point_count : 1) * sizeof *f->names);
+    f->indices = malloc((size_t)(total ? total : 1) * sizeof *f->indices);
+    f->face_start = malloc(((size_t)face_count + 1) * sizeof *f->face_start);
+    if (!g.slots || !map || !f->points || !f->names || !f->indices || !f->face_start) {
+        free(g.slots);
+        free(map);
+        build_mesh_faces_free(f);
         return err_nomem(c->error, loc);
-    memset(out, 0, sizeof *out);
-    out->kind = PRIM_MESH;
-    out->u.mesh.mesh = m;
+    }
+    for (size_t i = 0; i < slots; i++)
+        g.slots[i].point = UINT32_MAX;
+    for (uint32_t i = 0; i < point_count; i++)
+        map[i] = UINT32_MAX;
+    /* Points in the order OpenSCAD meets them: face by face, each face
+     * reversed for a polyhedron (see build_mesh_quad_diagonal). */
+    for (uint32_t face = 0; face < face_count; face++) {
+        uint32_t s = face_start[face], e = face_start[face + 1];
+        for (uint32_t j = s; j < e; j++) {
+            uint32_t i = indices[reversed ? e - 1 - (j - s) : j];
+            if (map[i] == UINT32_MAX)
+                grid_point(&g, f, points, i, c->faithful, &map[i]);
+        }
+    }
+    /* Faces on the merged points, cleaned as OpenSCAD cleans them
+     * (tessellatePolygonWithHoles): a point repeated next to itself and a
+     * null ear (a b a) go; a face left with fewer than 3 points goes. */
+    uint32_t at = 0;
+    for (uint32_t face = 0; face < face_count; face++) {
+        uint32_t s = face_start[face], e = face_start[face + 1];
+        uint32_t *v = &f->indices[at];
+        uint32_t n = 0;
+        for (uint32_t j = s; j < e; j++)
+            v[n++] = map[indices[j]];
+        uint32_t i = 0;
+        while (n >= 3 && i < n) {
+            if (v[i] == v[(i + 1) % n]) {
+                memmove(&v[i], &v[i + 1], (size_t)(n - i - 1) * sizeof *v);
+                n--;
+            } else if (v[(i + n - 1) % n] == v[(i + 1) % n]) {
+                if (i == 0) { /* OpenSCAD's index wraps here: it stops */
+                    memmove(&v[0], &v[2], (size_t)(n - 2) * sizeof *v);
+                    n -= 2;
+                    break;
+                }
+                memmove(&v[i - 1], &v[i + 1], (size_t)(n - i - 1) * sizeof *v);
+                n -= 2;
+                i--;
+            } else {
+                i++;
+            }
+        }
+        if (n < 3)
+            continue;
+        f->face_start[f->face_count++] = at;
+        at += n;
+    }
+    f->face_start[f->face_count] = at;
+    free(g.slots);
+    free(map);
     return SC_OK;
+}
+
+int build_mesh_sound(const build_mesh_faces *f, const char *what, int numbered, char *why,
+                     size_t size)
+{
+    return mesh_sound(what, numbered, f->points, f->names, f->indices, f->face_start,
+                      f->face_count, why, size);
+}
+
+/* OpenSCAD's message for a mesh it cannot take into CGAL. */
+static const char openscad_not_closed[] =
+    "The given mesh is not closed! Unable to convert to CGAL_Nef_Polyhedron.";
+
+sc_status build_mesh_solid(const build_ctx *c, const sc_location *loc, const char *what,
+                           int numbered, int strict, const build_mesh_faces *f, prim *out,
+                           const char **empty)
+{
+    char why[SC_ERROR_MESSAGE_MAX - 160];
+    int sound = build_mesh_sound(f, what, numbered, why, sizeof why);
+    if (sound < 0)
+        return err_nomem(c->error, loc);
+    if (!sound && (strict || !c->note))
+        return err_set(c->error, SC_ERR_SEMANTIC, loc, "%s", why);
+    if (!sound && c->faithful) {
+        err_set(c->note, SC_OK, loc, "%s; left out, as OpenSCAD leaves it out (\"%s\")",
+                why, openscad_not_closed);
+        *empty = "";
+        return SC_OK;
+    }
+    size_t tri_count = 0;
+    for (uint32_t i = 0; i < f->face_count; i++)
+        tri_count += f->face_start[i + 1] - f->face_start[i] - 2;
+    if (tri_count > UINT32_MAX / 3)
+        return err_set(c->error, SC_ERR_LIMIT, loc, "%s has too many faces", what);
+    uint32_t *tris = malloc((tri_count ? tri_count : 1) * 3 * sizeof *tris);
+    if (!tris)
+        return err_nomem(c->error, loc);
+    size_t k = 0;
+    for (uint32_t i = 0; i < f->face_count; i++) {
+        const uint32_t *v = &f->indices[f->face_start[i]];
+        uint32_t n = f->face_start[i + 1] - f->face_start[i];
+        uint32_t first = 0;
+        if (n == 4) {
+            vec3 q[4] = {f->points[v[0]], f->points[v[1]], f->points[v[2]],
+                         f->points[v[3]]};
+            first = (uint32_t)build_mesh_quad_diagonal(q, numbered);
+        }
+        /* a fan about point `first`: for a quad, its diagonal */
+        for (uint32_t j = 1; j + 1 < n; j++) {
+            tris[3 * k] = v[first];
+            tris[3 * k + 1] = v[(first + j) % n];
+            tris[3 * k + 2] = v[(first + j + 1) % n];
+            k++;
+        }
+    }
+    sc_status st = finish_mesh(c, loc, numbered, f->points, f->point_count, tris, k,
+                               !sound, out, empty);
+    free(tris);
+    if (st == SC_OK && !sound && !*empty)
+        err_set(c->note, SC_OK, loc,
+                "%s; rendered by the parity rule (--strict makes it an error)", why);
+    return st;
 }
 
 /* ---- files ---- */
@@ -444,6 +897,12 @@ char *build_file_path(const build_ctx *c, const char *name)
 sc_status build_import(const build_ctx *c, const model_import *import, prim *out,
                        const char **empty)
 {
+    return build_import_mesh(c, import, 0, out, empty);
+}
+
+sc_status build_import_mesh(const build_ctx *c, const model_import *import, int strict,
+                            prim *out, const char **empty)
+{
     const char *name = import->file;
     const sc_location loc = import->file_loc;
     int stl = import->format == MODEL_MESH_STL;
@@ -473,9 +932,14 @@ sc_status build_import(const build_ctx *c, const model_import *import, prim *out
                      stl ? "STL" : "OFF", why);
     else if (m.face_count == 0)
         *empty = "import without faces is empty";
-    else
-        st = build_mesh_prim(c, &loc, "imported mesh", 0, m.points, m.point_count,
-                             m.indices, m.face_start, m.face_count, out, empty);
+    else {
+        build_mesh_faces f;
+        st = build_mesh_merge(c, &loc, 0, m.points, m.point_count, m.indices,
+                              m.face_start, m.face_count, &f);
+        if (st == SC_OK)
+            st = build_mesh_solid(c, &loc, "imported mesh", 0, strict, &f, out, empty);
+        build_mesh_faces_free(&f);
+    }
     free(path);
     mesh_file_free(&m);
     return st;

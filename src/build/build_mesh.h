@@ -4,6 +4,7 @@
 #ifndef SPANCAST_BUILD_BUILD_MESH_H
 #define SPANCAST_BUILD_BUILD_MESH_H
 
+#include <stddef.h>
 #include <stdint.h>
 
 #include "build/build_ctx.h"
@@ -12,20 +13,67 @@
 /* The largest mesh file import reads, in bytes (docs/meshes.md). */
 #define BUILD_MAX_MESH_FILE (512u * 1024u * 1024u)
 
-/* A mesh leaf from face_count polygons (face f is indices[face_start[f] ..
- * face_start[f + 1]) into points). what names the node in messages;
- * numbered says the points are a polyhedron's own, numbered in the file
- * (an edge is named by its point numbers, else by its ends' coordinates,
- * and a mesh without volume is "polyhedron without volume"). The
- * mesh must be closed (every edge in exactly two faces) and consistently
- * oriented (the two faces run along it in opposite directions); inward or
- * outward winding are both taken (the signed volume decides). Polygons are
- * split into fans of triangles. A mesh without volume sets *empty to a
+/* A mesh leaf from face_count polygons that a builder made (extrusions,
+ * surface, hull): no merging, and a mesh that is not sound is an error (face f is
+ * indices[face_start[f] .. face_start[f + 1]) into points). what names the node in
+ * messages; numbered says the points are a polyhedron's own, numbered in the file (an
+ * edge is named by its point numbers, else by its ends' coordinates, and a mesh without
+ * volume is "polyhedron without volume"). The mesh must be closed (every edge in exactly
+ * two faces) and consistently oriented (the two faces run along it in opposite
+ * directions); inward or outward winding are both taken (the signed volume decides).
+ * Polygons are split into fans of triangles. A mesh without volume sets *empty to a
  * warning and fills nothing. */
 sc_status build_mesh_prim(const build_ctx *c, const sc_location *loc, const char *what,
                           int numbered, const vec3 *points, uint32_t point_count,
                           const uint32_t *indices, const uint32_t *face_start,
                           uint32_t face_count, prim *out, const char **empty);
+
+/* A polyhedron's or an imported mesh's faces on merged points
+ * (build_mesh_merge); malloc'd, freed with build_mesh_faces_free. */
+typedef struct build_mesh_faces {
+    vec3 *points;    /* the merged points */
+    uint32_t *names; /* names[i]: the number in the file of merged point i */
+    uint32_t point_count;
+    uint32_t *indices;    /* face f is indices[face_start[f] .. face_start[f + 1]) */
+    uint32_t *face_start; /* face_count + 1 entries */
+    uint32_t face_count;
+} build_mesh_faces;
+
+/* Merges the points as OpenSCAD does before it checks a mesh: snapped to
+ * its grid of 2^-20, a point joins any point before it in the same or a
+ * neighbouring cell (docs/meshes.md); faces lose repeated points and
+ * null ears, and faces left with fewer than 3 points go. reversed: the
+ * faces are a polyhedron's, which OpenSCAD reads back to front (the order
+ * points are met in). In faithful mode (c->faithful) a point becomes
+ * OpenSCAD's: its cell's corner, in float; else it keeps the coordinates
+ * of the first point of its cell. On success *f owns its arrays. */
+sc_status build_mesh_merge(const build_ctx *c, const sc_location *loc, int reversed,
+                           const vec3 *points, uint32_t point_count,
+                           const uint32_t *indices, const uint32_t *face_start,
+                           uint32_t face_count, build_mesh_faces *f);
+void build_mesh_faces_free(build_mesh_faces *f);
+
+/* 1 when f is closed (every edge in exactly two faces) and consistently
+ * oriented; else 0, with what is wrong, naming an edge, in why (what
+ * names the node); -1 when memory ran out. */
+int build_mesh_sound(const build_mesh_faces *f, const char *what, int numbered, char *why,
+                     size_t size);
+
+/* The leaf of a polyhedron or an imported mesh on merged faces: quads
+ * split as OpenSCAD 2021.01 splits them (build_mesh_quad_diagonal), larger
+ * faces into fans. A mesh that is not sound (build_mesh_sound) is an
+ * error when strict (--strict) or without c->note; else in faithful mode it is left out
+ * as OpenSCAD leaves it out (*empty = "", the warning in c->note), and in
+ * exact mode it is built with the parity rule, the warning in c->note. */
+sc_status build_mesh_solid(const build_ctx *c, const sc_location *loc, const char *what,
+                           int numbered, int strict, const build_mesh_faces *f, prim *out,
+                           const char **empty);
+
+/* Which diagonal OpenSCAD 2021.01 splits the quad q[0..3] along: 0 for
+ * q0-q2, 1 for q1-q3 (libtess2's constrained Delaunay triangulation, see
+ * build_mesh.c). reversed: the quad is a polyhedron's face, which OpenSCAD
+ * hands to libtess2 back to front. */
+int build_mesh_quad_diagonal(const vec3 q[4], int reversed);
 
 /* The path of a file a model names: relative names are relative to the
  * directory of the file being read (c->file). malloc'd; NULL when memory
@@ -33,7 +81,10 @@ sc_status build_mesh_prim(const build_ctx *c, const sc_location *loc, const char
 char *build_file_path(const build_ctx *c, const char *name);
 /* import(file) (its name checked by the lowering pass): an STL (ASCII or
  * binary) or OFF file, its path relative to the directory of the file
- * being read. */
+ * being read, built by build_mesh_solid (strict as there; build_import is
+ * build_import_mesh not strict). */
+sc_status build_import_mesh(const build_ctx *c, const model_import *import, int strict,
+                            prim *out, const char **empty);
 sc_status build_import(const build_ctx *c, const model_import *import, prim *out,
                        const char **empty);
 

@@ -1,4 +1,4 @@
-/* `spancast batch JOBS [--json]`: many spancast commands from one file, as a
+/* `spancast batch JOBS [--json] [--strict]`: many spancast commands from one file, as a
  * model library is checked in CI.
  *
  * JOBS holds one job a line: the arguments of one spancast command without
@@ -78,6 +78,7 @@ typedef struct batch {
     int count;
     batch_result *results; /* rank 0: one per job */
     char **env;            /* environ without the MPI variables */
+    int strict;            /* --strict: passed on to every job but bench */
 } batch;
 
 static double seconds_now(void)
@@ -294,13 +295,15 @@ static sc_status run_job(void *user, int k, void **result, sc_error *error)
     int fd = mkstemp(log);
     if (fd >= 0)
         unlink(log);
-    char **argv = calloc((size_t)job->argc + 2, sizeof *argv);
+    char **argv = calloc((size_t)job->argc + 3, sizeof *argv);
     double start = seconds_now();
     int spawned = ENOMEM;
     pid_t pid = 0;
     if (argv) {
         argv[0] = (char *)b->program;
         memcpy(argv + 1, job->argv, (size_t)job->argc * sizeof *argv);
+        if (b->strict && job->argc > 0 && strcmp(job->argv[0], "bench") != 0)
+            argv[job->argc + 1] = (char *)"--strict";
         posix_spawn_file_actions_t actions;
         posix_spawn_file_actions_init(&actions);
         posix_spawn_file_actions_addopen(&actions, 0, "/dev/null", O_RDONLY, 0);
@@ -516,10 +519,12 @@ static char **job_environment(void)
 int cli_batch(int argc, char **argv)
 {
     const char *path = NULL;
-    int json = 0;
+    int json = 0, strict = 0;
     for (int k = 2; k < argc; k++) {
         if (!strcmp(argv[k], "--json"))
             json = 1;
+        else if (!strcmp(argv[k], "--strict"))
+            strict = 1;
         else if (argv[k][0] == '-' && argv[k][1])
             return cli_usage_error("unknown option '%s'", argv[k]);
         else if (path)
@@ -532,6 +537,7 @@ int cli_batch(int argc, char **argv)
     batch b;
     memset(&b, 0, sizeof b);
     b.path = path;
+    b.strict = strict;
     int status = read_jobs(&b);
     char resolved[PATH_MAX];
     if (!status && !realpath(path, resolved)) {

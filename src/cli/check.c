@@ -65,17 +65,12 @@ typedef struct check_option {
 } check_option;
 
 static const check_option check_options[] = {
-    {"--tolerance", 1, ALL},
-    {"--threads", 1, ALL},
-    {"--json", 0, ALL},
-    {"--faithful", 0, ALL},
-    {"--quiet", 0, ALL},
-    {"--density", 1, MEASURE},
-    {"--min-volume", 1, OVERLAPS},
-    {"--max-pixels", 1, COMPARE},
-    {"--diff", 1, COMPARE},
-    {"--imgsize", 1, COMPARE},
-    {"--max-time", 1, ALL},
+    {"--tolerance", 1, ALL},      {"--threads", 1, ALL},
+    {"--json", 0, ALL},           {"--faithful", 0, ALL},
+    {"--strict", 0, ALL},         {"--quiet", 0, ALL},
+    {"--density", 1, MEASURE},    {"--min-volume", 1, OVERLAPS},
+    {"--max-pixels", 1, COMPARE}, {"--diff", 1, COMPARE},
+    {"--imgsize", 1, COMPARE},    {"--max-time", 1, ALL},
 };
 
 static const char *command_name(int command)
@@ -357,7 +352,7 @@ static int run_overlaps(check_args *a)
     }
     sc_load_options lo;
     sc_load_options_init(&lo);
-    lo.faithful = a->faithful;
+    cli_load_options(&lo, a->faithful);
     sc_objects *objects = NULL;
     sc_error error;
     cli_loading(1); /* cannot be stopped from inside: stop.c */
@@ -438,7 +433,7 @@ static sc_scene *load_any(const char *path, int faithful)
         return cli_load(path, faithful);
     sc_load_options lo;
     sc_load_options_init(&lo);
-    lo.faithful = faithful;
+    cli_load_options(&lo, faithful);
     sc_scene *scene = NULL;
     sc_error error;
     cli_loading(1); /* cannot be stopped from inside: stop.c */

@@ -61,8 +61,9 @@ int cli_option_value(int argc, char **argv, int *k, const char *arg, size_t len,
                      int takes_value, const char **value);
 
 /* The output flags of the query commands (spans, inside, measure,
- * overlaps, compare): sets *json for --json, *faithful for --faithful and
- * returns 1; 0 for another name. (render_options.c) */
+ * overlaps, compare): sets *json for --json, CLI_LOAD_FAITHFUL in *faithful
+ * for --faithful and CLI_LOAD_STRICT for --strict and returns 1; 0 for
+ * another name. (render_options.c) */
 int cli_output_flag(const char *name, int *json, int *faithful);
 
 /* The names of --view in the order of their SC_VIEW_* bits: bit k is
@@ -85,8 +86,20 @@ int cli_preview_option(const char *name, size_t len);
 int cli_apply_preview_option(sc_render_options *options, sc_view_preset *preset,
                              const char *name, size_t len, const char *value);
 
+/* The load options the commands keep in one int (their `faithful`
+ * field): --faithful and --strict. */
+#define CLI_LOAD_FAITHFUL 1
+#define CLI_LOAD_STRICT 2
+
+/* Sets lo's faithful and strict from CLI_LOAD_* flags. */
+static inline void cli_load_options(sc_load_options *lo, int flags)
+{
+    lo->faithful = (flags & CLI_LOAD_FAITHFUL) != 0;
+    lo->strict = (flags & CLI_LOAD_STRICT) != 0;
+}
+
 /* Loads a .csg or .scad model and prints its warnings; NULL (after printing
- * the error) when it cannot be loaded. */
+ * the error) when it cannot be loaded. flags: CLI_LOAD_*. */
 sc_scene *cli_load(const char *path, int faithful);
 
 /* Whether the option named by the len bytes at name is one of render's

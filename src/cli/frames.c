@@ -176,7 +176,7 @@ int frames_run(const frames_job *job)
     int parts = blur ? job->subframes : 1;
     sc_load_options lo;
     sc_load_options_init(&lo);
-    lo.faithful = job->faithful;
+    cli_load_options(&lo, job->faithful);
     sc_scene *fixed = NULL; /* a model without $t, loaded once */
     sc_error error;
     if (!scad) {

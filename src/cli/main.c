@@ -74,16 +74,16 @@ enum { EXIT_FAILED = 1, EXIT_USAGE = 2 };
 
 static const char usage_text[] =
     "usage: spancast render MODEL -o OUT.png [options]\n"
-    "       spancast info MODEL\n"
+    "       spancast info MODEL [--faithful] [--strict]\n"
     "       spancast spans MODEL --ray=OX,OY,OZ,DX,DY,DZ | --rays=FILE | --pixel=I,J\n"
-    "                      [--both-ways] [--json] [camera options]\n"
-    "       spancast inside MODEL --point=X,Y,Z | --points=FILE [--json]\n"
+    "                      [--both-ways] [--json] [--strict] [camera options]\n"
+    "       spancast inside MODEL --point=X,Y,Z | --points=FILE [--json] [--strict]\n"
     "       spancast measure MODEL [--tolerance=REL] [--density=D]\n"
     "       spancast overlaps MODEL [--min-volume=V] [--tolerance=REL]\n"
     "       spancast compare A B [--tolerance=REL] [--max-pixels=N] [--diff=PREFIX]\n"
     "                        [--imgsize=W,H]\n"
-    "       spancast view MODEL [--imgsize=W,H] [--spp=N] [--faithful]\n"
-    "       spancast batch JOBS [--json]\n"
+    "       spancast view MODEL [--imgsize=W,H] [--spp=N] [--faithful] [--strict]\n"
+    "       spancast batch JOBS [--json] [--strict]\n"
     "       spancast bench accuracy --csv FILE [--plot FILE.png] [--rays N]\n"
     "       spancast bench stability --csv FILE [--dir DIR] [--size N] [--depth N]\n"
     "       spancast --help | --version\n"
@@ -110,12 +110,15 @@ static const char usage_text[] =
     "'batch' runs the spancast command of each line of JOBS (shell quoting, '#'\n"
     "comments, paths relative to JOBS' folder), each once, across the ranks\n"
     "under mpirun; a failed job does not stop the others; it prints a table of\n"
-    "every job, or JSON with --json, and exits 1 when a job failed.\n"
+    "every job, or JSON with --json, and exits 1 when a job failed; --strict\n"
+    "passes --strict on to every job.\n"
     "\n"
     "measure, overlaps and compare options:\n"
     "  --threads=N            worker threads (default 0: all cores)\n"
     "  --json                 the report as JSON on stdout\n"
     "  --faithful             the polyhedra OpenSCAD makes (default: exact solids)\n"
+    "  --strict               a polyhedron or imported mesh that is not closed is\n"
+    "                         an error (default: a warning, as for render)\n"
     "  -q, --quiet            no progress on stderr\n"
     "\n"
     "render options:\n"
@@ -144,6 +147,10 @@ static const char usage_text[] =
     "  --threads=N            worker threads (default 0: all cores)\n"
     "  --faithful             spheres and cylinders as the polyhedra OpenSCAD makes\n"
     "                         from $fn, $fa, $fs (default: exact solids)\n"
+    "  --strict               a polyhedron or imported mesh that is not closed\n"
+    "                         (or not consistently wound) is an error; by default\n"
+    "                         it is a warning, and the mesh is drawn by the parity\n"
+    "                         rule, or left out with --faithful as OpenSCAD does\n"
     "  --tiled                write tiled .exr or .tif files, each tile as soon as it\n"
     "                         is rendered, never holding the whole image (the default\n"
     "                         for images whose buffers do not fit in memory)\n"
@@ -261,6 +268,7 @@ typedef enum opt_id {
     OPT_REGION,
     OPT_STATS,
     OPT_FAITHFUL,
+    OPT_STRICT,
     OPT_COLORSCHEME,
     OPT_LIGHTING,
     OPT_PREVIEW,
@@ -312,6 +320,7 @@ static const opt_spec options_table[] = {
     {"--region", OPT_REGION, 1, 1},
     {"--stats", OPT_STATS, 2, 1},
     {"--faithful", OPT_FAITHFUL, 0, 0},
+    {"--strict", OPT_STRICT, 0, 0},
     {"--colorscheme", OPT_COLORSCHEME, 1, 1},
     {"--lighting", OPT_LIGHTING, 1, 1},
     {"--preview", OPT_PREVIEW, 0, 1},
@@ -480,7 +489,10 @@ static int apply_option(cli_args *a, const opt_spec *spec, const char *value)
             return cli_usage_error("--stats takes no value or '=json'");
         return 0;
     case OPT_FAITHFUL:
-        a->faithful = 1;
+        a->faithful |= CLI_LOAD_FAITHFUL;
+        return 0;
+    case OPT_STRICT:
+        a->faithful |= CLI_LOAD_STRICT;
         return 0;
     case OPT_COLORSCHEME:
     case OPT_LIGHTING:
@@ -666,12 +678,13 @@ static double seconds_now(void)
     return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
 }
 
-/* watched: NULL, or a set that gets the model's files (render --watch). */
+/* watched: NULL, or a set that gets the model's files (render --watch);
+ * faithful: CLI_LOAD_* flags. */
 static sc_scene *load(const char *path, int faithful, watch_set *watched)
 {
     sc_load_options lo;
     sc_load_options_init(&lo);
-    lo.faithful = faithful;
+    cli_load_options(&lo, faithful);
     sc_scene *scene = NULL;
     sc_error error;
     if (watched)

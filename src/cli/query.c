@@ -178,8 +178,9 @@ typedef struct query_option {
 } query_option;
 
 static const query_option query_options[] = {
-    {"--ray", 1, 1},   {"--rays", 1, 1},   {"--pixel", 1, 1}, {"--both-ways", 0, 1},
-    {"--point", 1, 0}, {"--points", 1, 0}, {"--json", 0, 2},  {"--faithful", 0, 2},
+    {"--ray", 1, 1},       {"--rays", 1, 1},     {"--pixel", 1, 1},
+    {"--both-ways", 0, 1}, {"--point", 1, 0},    {"--points", 1, 0},
+    {"--json", 0, 2},      {"--faithful", 0, 2}, {"--strict", 0, 2},
 };
 
 static int parse_query_args(query_args *a, int argc, char **argv)

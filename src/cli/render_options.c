@@ -369,7 +369,9 @@ int cli_output_flag(const char *name, int *json, int *faithful)
     if (!strcmp(name, "--json"))
         *json = 1;
     else if (!strcmp(name, "--faithful"))
-        *faithful = 1;
+        *faithful |= CLI_LOAD_FAITHFUL;
+    else if (!strcmp(name, "--strict"))
+        *faithful |= CLI_LOAD_STRICT;
     else
         return 0;
     return 1;

@@ -80,7 +80,7 @@ enum { EXIT_FAILED = 1 };
 
 static const char usage_text[] =
     "usage: spancast view MODEL [--imgsize=W,H] [--spp=N] [--threads=N] [--faithful]\n"
-    "                           [--max-time=S] [--verbose] [preview options]\n"
+    "                           [--strict] [--max-time=S] [--verbose] [preview options]\n"
     "\n"
     "Opens a window on MODEL (.csg, or .scad through OpenSCAD) and renders it\n"
     "again whenever the file, or a file a .scad model uses, changes.\n"
@@ -89,6 +89,7 @@ static const char usage_text[] =
     "  --spp=N         samples per pixel when the view is still (default 4)\n"
     "  --threads=N     render threads (default 0: all cores)\n"
     "  --faithful      spheres and cylinders as OpenSCAD's polyhedra\n"
+    "  --strict        a polyhedron or imported mesh that is not closed is an error\n"
     "  --max-time=S    give up a screenshot that takes longer than S seconds\n"
     "  --verbose       print every frame's size and time on stdout\n"
     "\n"
@@ -224,7 +225,11 @@ static int parse_args(viewer *v, int argc, char **argv)
             continue;
         }
         if (len == 10 && !strncmp(arg, "--faithful", len) && !eq) {
-            v->faithful = 1;
+            v->faithful |= CLI_LOAD_FAITHFUL;
+            continue;
+        }
+        if (len == 8 && !strncmp(arg, "--strict", len) && !eq) {
+            v->faithful |= CLI_LOAD_STRICT;
             continue;
         }
         if (len == 9 && !strncmp(arg, "--verbose", len) && !eq) {
@@ -762,8 +767,9 @@ static void request_shot(viewer *v)
     view_format(v, options, sizeof options);
     shell_quote(v->path, model, sizeof model);
     shell_quote(v->shot_path, out, sizeof out);
-    snprintf(v->shot_command, sizeof v->shot_command, "spancast render %s -o %s %s%s",
-             model, out, options, v->faithful ? " --faithful" : "");
+    snprintf(v->shot_command, sizeof v->shot_command, "spancast render %s -o %s %s%s%s",
+             model, out, options, v->faithful & CLI_LOAD_FAITHFUL ? " --faithful" : "",
+             v->faithful & CLI_LOAD_STRICT ? " --strict" : "");
     v->shot_busy = 1;
     v->shot_requested = 1;
     snprintf(v->note, sizeof v->note, "writing %s", v->shot_path);

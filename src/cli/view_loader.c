@@ -18,6 +18,7 @@
 #include <string.h>
 #include <time.h>
 
+#include "cli/cli.h"
 #include "cli/scad.h"
 
 struct view_loader {
@@ -71,7 +72,7 @@ static void load_once(const view_loader *l, view_load *load)
     add_file(load, l->path);
     sc_load_options lo;
     sc_load_options_init(&lo);
-    lo.faithful = l->faithful;
+    cli_load_options(&lo, l->faithful);
     sc_scene *scene = NULL;
     sc_status st =
         scad_is_source(l->path)

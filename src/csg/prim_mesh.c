@@ -40,9 +40,19 @@
  * and every first hit stay exact, the far side of a very intricate mesh is
  * filled (documented in docs/meshes.md).
  *
+ * Parity meshes (prim_mesh.parity: a mesh that is open, non-manifold or
+ * inconsistently wound, built anyway in exact mode): a winding number
+ * means nothing when the faces do not agree on a side, so the line is
+ * inside after an odd count of crossings, whichever way each triangle
+ * faces, and a span end on a triangle that faces into the span gets the
+ * flip bit, so its normal still points out of the span. On a closed mesh
+ * the two rules agree; on an open one each line is paired up on its own
+ * (see docs/meshes.md).
+ *
  * Membership: the winding number of q, from the crossings of the ray
  * q + t (1, sqrt 2, sqrt 3) / 2 with t > 0 (exits minus entries); a
- * crossing at t = 0 puts q on the surface, which is inside (closed).
+ * crossing at t = 0 puts q on the surface, which is inside (closed); for
+ * a parity mesh, an odd count of those crossings.
  *
  * Hierarchy: a binary tree over the triangles, built by binned surface
  * area heuristic (16 bins along the widest axis of the centroids, the plane
@@ -321,6 +331,13 @@ static child_ref build_subtree(builder_state *s, uint32_t lo, uint32_t hi, int d
 const prim_mesh *prim_mesh_create(struct csg_builder *b, const vec3 *points,
                                   const uint32_t *tris, uint32_t tri_count)
 {
+    return prim_mesh_create_rule(b, points, tris, tri_count, 0);
+}
+
+const prim_mesh *prim_mesh_create_rule(struct csg_builder *b, const vec3 *points,
+                                       const uint32_t *tris, uint32_t tri_count,
+                                       int parity)
+{
     builder_state s;
     memset(&s, 0, sizeof s);
     const prim_mesh *result = NULL;
@@ -385,6 +402,7 @@ const prim_mesh *prim_mesh_create(struct csg_builder *b, const vec3 *points,
     m->n = nrm;
     m->nodes = nodes;
     m->tri_count = kept;
+    m->parity = parity;
     m->node_count = s.node_count;
     m->bounds = bounds;
     m->origin = s.origin;
@@ -517,12 +535,14 @@ typedef struct crossings {
     crossing last; /* the largest t of all */
     int any;
     int count_only; /* membership: only the winding of t > 0 is wanted */
-    int wind;       /* count_only: exits minus entries */
+    int parity;     /* the mesh's inside rule is parity (prim_mesh.parity) */
+    int wind;       /* count_only: exits minus entries (parity: crossings) */
     int on_surface; /* count_only: a crossing at t = 0 */
 } crossings;
 
-static void crossings_init(crossings *cs, int count_only)
+static void crossings_init(crossings *cs, const prim_mesh *m, int count_only)
 {
+    cs->parity = m->parity;
     cs->n = 0;
     cs->overflow = 0;
     cs->any = 0;
@@ -549,7 +569,7 @@ static void keep(crossings *cs, const crossing *c)
         if (c->t == 0)
             cs->on_surface = 1;
         else if (c->t > 0)
-            cs->wind += c->exit ? 1 : -1;
+            cs->wind += cs->parity || c->exit ? 1 : -1;
         return;
     }
     if (!cs->any || before(&cs->last, c))
@@ -741,9 +761,14 @@ uint32_t prim_mesh_max_spans(const prim *p)
     return half < PRIM_MESH_MAX_SPANS ? half : PRIM_MESH_MAX_SPANS;
 }
 
-static span_end end_at(const crossing *c, uint32_t leaf)
+/* The end of a span at crossing c; entering says which end. Under the
+ * parity rule a triangle may face either way, so its normal is flipped
+ * where it faces into the span. */
+static span_end end_at(const crossing *c, uint32_t leaf, int parity, int entering)
 {
     span_end e = {c->t, leaf, (uint16_t)(c->tri & 0xffffu), 0};
+    if (parity && c->exit == entering)
+        e.flip = 1;
     return e;
 }
 
@@ -758,21 +783,25 @@ static void gather_range(const prim_mesh *m, vec3 o, vec3 d, double lo, double h
     gather(m, &f, &r, &w, cs);
 }
 
-/* One crossing of a walk along the line by winding number: updates the
- * winding *wind and, where the line enters the solid, the *start of the
- * span. Returns 1 where the line leaves the solid, with the span that
- * ends there in *closed, else 0 (and *closed is not touched). */
-static int wind_step(const crossing *c, uint32_t leaf, int *wind, span_end *start,
-                     span *closed)
+/* One crossing of a walk along the line by winding number (or, for a
+ * parity mesh, by the count of crossings mod 2): updates the winding *wind
+ * and, where the line enters the solid, the *start of the span. Returns 1
+ * where the line leaves the solid, with the span that ends there in
+ * *closed, else 0 (and *closed is not touched). */
+static int wind_step(const crossing *c, uint32_t leaf, int parity, int *wind,
+                     span_end *start, span *closed)
 {
     int was_in = *wind > 0;
-    *wind += c->exit ? -1 : 1;
+    if (parity)
+        *wind ^= 1;
+    else
+        *wind += c->exit ? -1 : 1;
     int is_in = *wind > 0;
     if (!was_in && is_in) {
-        *start = end_at(c, leaf);
+        *start = end_at(c, leaf, parity, 1);
     } else if (was_in && !is_in) {
         closed->in = *start;
-        closed->out = end_at(c, leaf);
+        closed->out = end_at(c, leaf, parity, 0);
         return 1;
     }
     return 0;
@@ -786,7 +815,7 @@ static uint32_t spans_of(const crossings *cs, uint32_t leaf, span *out, uint32_t
     int wind = 0, full = 0;
     span_end start = {0, leaf, 0, 0};
     for (uint32_t i = 0; i < cs->n && !full; i++) {
-        if (wind_step(&cs->v[i], leaf, &wind, &start, &out[n])) {
+        if (wind_step(&cs->v[i], leaf, cs->parity, &wind, &start, &out[n])) {
             n++;
             full = n == cap;
         }
@@ -795,7 +824,7 @@ static uint32_t spans_of(const crossings *cs, uint32_t leaf, span *out, uint32_t
     if (cs->overflow || full || open) {
         /* Past the bounds (or a mesh that is not closed along this line):
          * fill to the last crossing of all. */
-        span_end last = end_at(&cs->last, leaf);
+        span_end last = end_at(&cs->last, leaf, cs->parity, 0);
         if (open) {
             out[n].in = start;
             out[n].out = last;
@@ -814,7 +843,7 @@ uint32_t prim_mesh_spans(const prim *p, uint32_t leaf, vec3 o, vec3 d, span *out
     if (!m || cap == 0)
         return 0;
     crossings cs;
-    crossings_init(&cs, 0);
+    crossings_init(&cs, m, 0);
     gather_range(m, o, d, -INFINITY, INFINITY, &cs);
     return spans_of(&cs, leaf, out, cap);
 }
@@ -832,7 +861,7 @@ static uint32_t partial_spans(const crossings *cs, double t_end, double eps,
     span_end start = {0, leaf, 0, 0};
     for (uint32_t i = 0; i < cs->n; i++) {
         span closed;
-        if (wind_step(&cs->v[i], leaf, &wind, &start, &closed)) {
+        if (wind_step(&cs->v[i], leaf, cs->parity, &wind, &start, &closed)) {
             if (n == cap)
                 return UINT32_MAX;
             tmp[n++] = closed;
@@ -918,7 +947,7 @@ uint32_t prim_mesh_spans_range(const prim *p, uint32_t leaf, vec3 o, vec3 d, dou
      * a needs every crossing before it. */
     double from = z0 > a ? a : -INFINITY;
     crossings cs;
-    crossings_init(&cs, 0);
+    crossings_init(&cs, m, 0);
     if (first) {
         walk w = {from, b, 0, 1, lo, 4 * eps};
         gather(m, &f, &r, &w, &cs);
@@ -927,7 +956,7 @@ uint32_t prim_mesh_spans_range(const prim *p, uint32_t leaf, vec3 o, vec3 d, dou
             if (n != UINT32_MAX)
                 return n;
         }
-        crossings_init(&cs, 0);
+        crossings_init(&cs, m, 0);
     }
     walk w = {from, b, 0, 0, 0, 0};
     gather(m, &f, &r, &w, &cs);
@@ -948,7 +977,7 @@ uint32_t prim_mesh_spans_range(const prim *p, uint32_t leaf, vec3 o, vec3 d, dou
         w.hi = next.hi;
     }
     if (cs.overflow || w.hi < INFINITY) {
-        crossings_init(&cs, 0);
+        crossings_init(&cs, m, 0);
         gather_range(m, o, d, -INFINITY, INFINITY, &cs);
     }
     return spans_of(&cs, leaf, out, cap);
@@ -979,8 +1008,8 @@ int prim_mesh_inside(const prim *p, vec3 q)
                 q.y <= m->bounds.hi.y && q.z >= m->bounds.lo.z && q.z <= m->bounds.hi.z))
         return 0;
     crossings cs;
-    crossings_init(&cs, 1);
+    crossings_init(&cs, m, 1);
     vec3 d = v3(0.5, 0.70710678118654752, 0.86602540378443865);
     gather_range(m, q, d, 0, INFINITY, &cs);
-    return cs.on_surface || cs.wind > 0;
+    return cs.on_surface || (m->parity ? (cs.wind & 1) : cs.wind > 0);
 }

@@ -35,6 +35,8 @@ typedef struct prim_mesh {
     uint32_t tri_count, node_count;
     bbox bounds; /* of the corners, unpadded */
     vec3 origin; /* the centre of bounds: node boxes are relative to it */
+    int parity;  /* inside rule: 0 winding number > 0 (closed, consistently
+                    oriented meshes); 1 an odd count of crossings (any mesh) */
 } prim_mesh;
 
 struct csg_builder;
@@ -45,6 +47,12 @@ struct csg_builder;
  * no triangle has area. */
 const prim_mesh *prim_mesh_create(struct csg_builder *b, const vec3 *points,
                                   const uint32_t *tris, uint32_t tri_count);
+/* The same with the inside rule chosen: parity 1 for a mesh that is open,
+ * non-manifold or inconsistently wound, where a winding number means
+ * nothing (docs/meshes.md); the triangles may then face either way. */
+const prim_mesh *prim_mesh_create_rule(struct csg_builder *b, const vec3 *points,
+                                       const uint32_t *tris, uint32_t tri_count,
+                                       int parity);
 
 uint32_t prim_mesh_spans(const prim *p, uint32_t leaf, vec3 o, vec3 d, span *out,
                          uint32_t cap);
