@@ -660,8 +660,7 @@ static sc_status nef_ready(const walk *w, const model_node *n)
         return SC_OK;
     char why[600];
     if (!nef_plugin_open(w->nef, why, sizeof why))
-        return err_set(w->c->error, SC_ERR_UNSUPPORTED, &n->loc, "%s of '%s': %s",
-                       w->owner, n->name, why);
+        return err_set(w->c->error, SC_ERR_UNSUPPORTED, &n->loc, "%s: %s", w->owner, why);
     return SC_OK;
 }
 
@@ -926,7 +925,9 @@ static sc_status solid_parts(const walk *w, const model_node *n, const affine *m
                              int depth, partlist *out)
 {
     nef_solid *solid = NULL;
-    sc_status st = nef_node(w, n, m, depth, &solid);
+    sc_status st = w->check ? SC_OK : nef_ready(w, n);
+    if (st == SC_OK)
+        st = nef_node(w, n, m, depth, &solid);
     if (st != SC_OK || !solid)
         return st;
     nef_parts got = {NULL, NULL, 0};
