@@ -23,6 +23,8 @@
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/convex_decomposition_3.h>
 
+#include <gmp.h>
+
 #include <array>
 #include <cstdio>
 #include <cstdlib>
@@ -70,6 +72,39 @@ template <class F> nef_status guarded(F f, char *err, size_t err_size)
     } catch (...) {
         return fail(NEF_FAILED, "unknown failure", err, err_size);
     }
+}
+
+// GMP's own allocator aborts the process when memory runs out (under
+// --max-memory, say). The plugin is GMP's only user in spancast, so from
+// its loading on, GMP allocates through these, which throw bad_alloc
+// instead: the entry points turn that into NEF_NOMEM and a clean error.
+// (The exception crosses GMP's C frames, which carry unwind tables on
+// every Debian architecture; what GMP had half built is lost, on a path
+// that ends the load.)
+void *gmp_allocate(size_t size)
+{
+    void *p = std::malloc(size);
+    if (!p)
+        throw std::bad_alloc();
+    return p;
+}
+
+void *gmp_reallocate(void *old, size_t, size_t size)
+{
+    void *p = std::realloc(old, size);
+    if (!p)
+        throw std::bad_alloc();
+    return p;
+}
+
+void gmp_release(void *p, size_t)
+{
+    std::free(p);
+}
+
+__attribute__((constructor)) void gmp_throwing_allocator()
+{
+    mp_set_memory_functions(gmp_allocate, gmp_reallocate, gmp_release);
 }
 
 // Copies point sets into a nef_parts (malloc'd arrays).
