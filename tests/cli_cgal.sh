@@ -1,7 +1,8 @@
 # Booleans inside hull() and minkowski() go through CGAL in the plugin
 # spancast-cgal.so, loaded only when a model has one: --version, info and
 # render of other models never load it (ld.so's own log), a hull of an
-# intersection does, and a broken plugin is an error that names it.
+# intersection does, a broken plugin is an error that names it, and memory
+# running out inside CGAL is an error.
 #
 # Run as: bash cli_cgal.sh <path-to-spancast> <source-dir> <work-dir>
 . "$(dirname "$0")/testlib.sh"
@@ -54,6 +55,25 @@ fi
 grep -q "^bool.csg:2:3: error: hull: cannot load the CGAL plugin (spancast-cgal.so): it lacks spancast_nef_from_mesh$" err.txt ||
     fail "broken plugin message: $(cat err.txt)"
 [ -e broken.png ] && fail "an image was written"
+
+# Memory running out inside CGAL's exact arithmetic (GMP) is a clean
+# error, not GMP's abort: a hull of a finely tessellated sphere cut by a
+# cube takes about 140 MB. Under AddressSanitizer no memory limit can hold
+# (cli_bounded.sh): the case is left out there.
+cat >mem.csg <<'CSG'
+hull() { difference() { sphere(r = 10, $fn = 120); cube(size = [30, 30, 30]); } }
+CSG
+"$bin" info plain.csg --max-memory=4G >/dev/null 2>stderr.txt
+if grep -q "is below the" stderr.txt; then
+    echo "note: $(cat stderr.txt); the --max-memory case is left out"
+else
+    check
+    if "$bin" info mem.csg --max-memory=80M >/dev/null 2>stderr.txt; then
+        fail "a hull boolean past --max-memory loaded"
+    fi
+    grep -Eq "^mem.csg:1:[0-9]+: error: out of memory \(the memory limit of 80.0 MiB is reached\)$" \
+        stderr.txt || fail "past --max-memory: $(cat stderr.txt)"
+fi
 
 echo "$checks checks, $fails failures"
 [ "$fails" = 0 ]
