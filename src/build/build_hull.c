@@ -11,9 +11,10 @@
  * hulls those polygons; a nested hull its children's points; a nested
  * minkowski its parts' sums; a nested resize its children scaled. group,
  * union, render, color and material pass their children through; '%' and
- * '*' children are left out. difference, intersection and every other node
- * are SC_ERR_UNSUPPORTED at their position (OpenSCAD hulls the vertices of
- * the boolean's mesh, which needs a mesh boolean).
+ * '*' children are left out. A difference or intersection is evaluated as
+ * OpenSCAD evaluates it, to a CGAL Nef polyhedron (through the plugin of
+ * nef.h, opened on the first one), whose vertices a hull takes. Every
+ * other node is SC_ERR_UNSUPPORTED at its position.
  *
  * hull: the convex hull of all the points (hull3.c, exact orientation
  * tests), as a plane set, or as a mesh of its triangles when it has more
@@ -23,11 +24,13 @@
  * minkowski: each child is a list of convex parts (a leaf or hull is one
  * part; a group of several gives several: A ⊕ (B ∪ C) = (A ⊕ B) ∪ (A ⊕ C)).
  * A polyhedron or mesh leaf is one part when it is convex: when its volume
- * is within 1e-6 of its hull's. The sum of convex parts P and Q is the hull
- * of the pairwise sums of their vertices, so the result is the union, over
- * every choice of one part per child, of the hull of the sums (the parts
- * are first reduced to their hull vertices). Children without geometry are
- * skipped, as OpenSCAD does.
+ * is within 1e-6 of its hull's; otherwise, and for a difference or
+ * intersection, the parts are those of CGAL's convex decomposition of its
+ * Nef polyhedron, as OpenSCAD's applyMinkowski splits non-convex children. The sum of
+ * convex parts P and Q is the hull of the pairwise sums of their vertices, so the result
+ * is the union, over every choice of one part per child, of the hull of the sums (the
+ * parts are first reduced to their hull vertices). Children without geometry are skipped,
+ * as OpenSCAD does.
  *
  * resize: OpenSCAD scales the child's mesh by newsize / size of its
  * bounding box. The box here is the support function h(u) = max u . x
