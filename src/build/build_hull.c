@@ -26,11 +26,11 @@
  * A polyhedron or mesh leaf is one part when it is convex: when its volume
  * is within 1e-6 of its hull's; otherwise, and for a difference or
  * intersection, the parts are those of CGAL's convex decomposition of its
- * Nef polyhedron, as OpenSCAD's applyMinkowski splits non-convex children. The sum of
- * convex parts P and Q is the hull of the pairwise sums of their vertices, so the result
- * is the union, over every choice of one part per child, of the hull of the sums (the
- * parts are first reduced to their hull vertices). Children without geometry are skipped,
- * as OpenSCAD does.
+ * Nef polyhedron, as OpenSCAD's applyMinkowski splits non-convex children.
+ * The sum of convex parts P and Q is the hull of the pairwise sums of their
+ * vertices, so the result is the union, over every choice of one part per
+ * child, of the hull of the sums (the parts are first reduced to their hull
+ * vertices). Children without geometry are skipped, as OpenSCAD does.
  *
  * resize: OpenSCAD scales the child's mesh by newsize / size of its
  * bounding box. The box here is the support function h(u) = max u . x
