@@ -72,7 +72,7 @@ for f in bin/spancast include/spancast/spancast.h include/spancast/version.h \
     check
     [ -f "$prefix/$f" ] || fail "not installed: $f"
 done
-for f in libspancast.so spancast/spancast-oiio.so spancast/spancast-tiff.so spancast/spancast-bench spancast/spancast-view \
+for f in libspancast.so spancast/spancast-oiio.so spancast/spancast-tiff.so spancast/spancast-cgal.so spancast/spancast-bench spancast/spancast-view \
     cmake/spancast/spancastConfig.cmake cmake/spancast/spancastConfigVersion.cmake \
     cmake/spancast/spancastTargets.cmake; do
     check
@@ -401,7 +401,7 @@ lacks() {
     done
 }
 has $libpkg "LIBDIR/libspancast.so.$soversion" "LIBDIR/libspancast.so.$version" \
-    LIBDIR/spancast/spancast-oiio.so LIBDIR/spancast/spancast-tiff.so \
+    LIBDIR/spancast/spancast-oiio.so LIBDIR/spancast/spancast-tiff.so LIBDIR/spancast/spancast-cgal.so \
     usr/share/doc/$libpkg/copyright
 lacks $libpkg '^usr/include/' '^LIBDIR/libspancast\.so$' '^usr/bin/' '^usr/share/man/' \
     'pkgconfig|cmake'
@@ -440,7 +440,7 @@ check
 check
 echo "$depends" | grep -Eq "openimageio|libtiff" && fail "$libpkg Depends on a plugin's library: $depends"
 check
-[ "$(field $libpkg Recommends)" = "libopenimageio2.4, libtiff6" ] ||
+[ "$(field $libpkg Recommends)" = "libopenimageio2.4, libtiff6, libgmp10, libmpfr6" ] ||
     fail "$libpkg Recommends: $(field $libpkg Recommends)"
 check
 [ "$(field libspancast-dev Depends)" = "$libpkg (= $version)" ] ||
@@ -454,7 +454,7 @@ echo "$tool_depends" | grep -Eq "(^|, )$libpkg \(= $version\)(,|$)" ||
 check
 echo "$tool_depends" | grep -Eq "openimageio|libsdl2" && fail "spancast Depends: $tool_depends"
 recommends=$(field spancast Recommends)
-for pkg in openscad libopenimageio2.4 libtiff6 libsdl2-2.0-0 libopenmpi3 ffmpeg; do
+for pkg in openscad libopenimageio2.4 libtiff6 libgmp10 libmpfr6 libsdl2-2.0-0 libopenmpi3 ffmpeg; do
     check
     echo "$recommends" | grep -Eq "(^|, )$pkg( |,|$)" || fail "spancast Recommends lacks $pkg: $recommends"
 done

@@ -162,12 +162,22 @@ static void test_hull_extrusions(void **state)
 static void test_hull_errors(void **state)
 {
     (void)state;
-    check_error("m.csg", "hull() {\n  difference() { cube(2); sphere(1); }\n}",
+    check_error("m.csg",
+                "hull() {\n  difference() { cube(2); torus(r1 = 2, r2 = 1); }\n}",
                 SC_ERR_UNSUPPORTED,
-                "m.csg:2:3: error: 'difference' inside hull is not supported yet");
-    check_error("m.csg", "hull() { group() { intersection() { cube(2); } } }",
+                "m.csg:2:27: error: 'torus' inside hull is not supported yet");
+    check_error("m.csg",
+                "hull() { group() { intersection() { cube(2); implicit(f = "
+                "\"x\", bounds = [[0, 0, 0], [1, 1, 1]]); } } }",
                 SC_ERR_UNSUPPORTED,
-                "m.csg:1:20: error: 'intersection' inside hull is not supported yet");
+                "m.csg:1:46: error: 'implicit' inside hull is not supported yet");
+    /* an open polyhedron in a boolean is no solid for CGAL */
+    check_error("m.csg",
+                "hull() { difference() { cube(2);\n polyhedron(points = [[0, 0, 0], [1, "
+                "0, 0], [0, 1, 0], [0, 0, 1]], faces = [[0, 1, 2], [0, 3, 1]]); } }",
+                SC_ERR_SEMANTIC,
+                "m.csg:2:2: error: hull: 'polyhedron' is not a solid: the mesh is not "
+                "closed");
     check_error("m.csg", "hull() { torus(r1 = 2, r2 = 1); }", SC_ERR_UNSUPPORTED,
                 "m.csg:1:10: error: 'torus' inside hull is not supported yet");
     check_error("m.csg", "hull() { sphere(r = \"x\"); }", SC_ERR_SEMANTIC,
@@ -178,9 +188,9 @@ static void test_hull_errors(void **state)
                 "m.csg:1:10: error: hull: $fn, $fa and $fs of radius 1 give too many "
                 "fragments (limit is 4096)");
     /* a '%' hull is still checked */
-    check_error("m.csg", "cube(); %hull() { difference() { cube(); } }",
+    check_error("m.csg", "cube(); %hull() { difference() { torus(r1 = 2, r2 = 1); } }",
                 SC_ERR_UNSUPPORTED,
-                "m.csg:1:19: error: 'difference' inside hull is not supported yet");
+                "m.csg:1:34: error: 'torus' inside hull is not supported yet");
     /* deep nesting is refused, not followed */
     size_t depth = 1100;
     char *text = malloc(depth * 10 + 64);
@@ -194,6 +204,39 @@ static void test_hull_errors(void **state)
     check_error("m.csg", text, SC_ERR_LIMIT,
                 "m.csg:1:9010: error: too many nested nodes inside hull (limit is 1000)");
     free(text);
+}
+
+static void test_hull_booleans(void **state)
+{
+    (void)state;
+    /* a cube cut by OpenSCAD's 32-gon of radius 6: a vertex of the 32-gon at
+     * 45 degrees, so the corner column is cut at radius 6 there */
+    sc_scene *s = load("hull() { intersection() { cube(10, center = true); "
+                       "cylinder(r1 = 6, r2 = 6, h = 20, center = true, $fn = 32); } }");
+    check_bounds(s, v3(-5, -5, -5), v3(5, 5, 5), 1e-12);
+    assert_true(inside(s, 4.9, 0, 4.9));
+    assert_true(inside(s, 4.2, 4.2, 0));  /* radius 5.94 */
+    assert_false(inside(s, 4.3, 4.3, 0)); /* radius 6.08 */
+    assert_int_equal(scene_tree(s)->leaf_count, 1);
+    sc_scene_release(s);
+    /* the same in faithful mode */
+    s = load_opts("m.csg",
+                  "hull() { intersection() { cube(10, center = true); cylinder(r1 = 6, "
+                  "r2 = 6, h = 20, center = true, $fn = 32); } }",
+                  1);
+    assert_false(inside(s, 4.3, 4.3, 0));
+    sc_scene_release(s);
+    /* a cube with its corner cube cut away: the hull is cut by the plane
+     * through (1, 0, 0), (0, 1, 0), (0, 0, 1) */
+    s = load("hull() { difference() { cube(2); cube(1); } }");
+    check_bounds(s, v3(0, 0, 0), v3(2, 2, 2), 1e-15);
+    assert_false(inside(s, 0.3, 0.3, 0.3));
+    assert_true(inside(s, 0.4, 0.4, 0.4));
+    assert_true(inside(s, 1.9, 1.9, 1.9));
+    sc_scene_release(s);
+    /* a difference that removes everything: an empty hull */
+    check_warning("hull() { difference() { cube(1); cube(2); } }",
+                  "hull without volume is empty");
 }
 
 static void test_hull_empty(void **state)
@@ -266,19 +309,41 @@ static void test_minkowski_union(void **state)
     "[[0, 1, 2, 3], [4, 5, 1, 0], [5, 6, 2, 1], [6, 7, 3, 2], [7, 4, 0, 3], [4, 8, 5], " \
     "[5, 8, 6], [6, 8, 7], [7, 8, 4]]"
 
+static void test_minkowski_nonconvex(void **state)
+{
+    (void)state;
+    /* the notch (a cube with a pyramid pressed into its top, apex at (1, 1,
+     * 1)) plus the unit cube: convex parts, the dent kept. Above the apex
+     * the dent's floor is at 2 - d, d the distance to the nearest side. */
+    sc_scene *s = load("minkowski() { cube(1);\n polyhedron(points = " NOTCH_POINTS
+                       ", faces = " NOTCH_FACES "); }");
+    assert_true(scene_tree(s)->leaf_count > 1);
+    check_bounds(s, v3(0, 0, 0), v3(3, 3, 3), 1e-12);
+    assert_true(inside(s, 1, 1, 2.6));      /* from (0.1, 0.1, 1.9) */
+    assert_false(inside(s, 1.5, 1.5, 2.9)); /* the dent, narrowed */
+    assert_true(inside(s, 1.5, 1.5, 2.45)); /* from (0.5, 0.5, 1.45) */
+    assert_true(inside(s, 2.9, 2.9, 2.9));
+    sc_scene_release(s);
+    /* a square tube (a difference) plus a small cube: the hole narrows from
+     * 2 to 1.5 */
+    s = load("minkowski() { difference() { cube(4, center = true); cube([2, 2, 10], "
+             "center = true); } cube(0.5, center = true); }");
+    check_bounds(s, v3(-2.25, -2.25, -2.25), v3(2.25, 2.25, 2.25), 1e-12);
+    assert_true(inside(s, 0.8, 0, 0));
+    assert_false(inside(s, 0.7, 0, 0));
+    assert_false(inside(s, 0, 0, 0));
+    assert_true(inside(s, 2.2, 2.2, 2.2));
+    sc_scene_release(s);
+}
+
 static void test_minkowski_errors(void **state)
 {
     (void)state;
-    check_error(
-        "m.csg",
-        "minkowski() { cube(1);\n polyhedron(points = " NOTCH_POINTS
-        ", faces = " NOTCH_FACES "); }",
-        SC_ERR_UNSUPPORTED,
-        "m.csg:2:2: error: minkowski of a non-convex 'polyhedron' is not supported "
-        "yet");
-    check_error("m.csg", "minkowski() { cube(1); difference() { cube(2); } }",
+    check_error("m.csg",
+                "minkowski() { cube(1); difference() { cube(2); torus(r1 = 2, "
+                "r2 = 1); } }",
                 SC_ERR_UNSUPPORTED,
-                "m.csg:1:24: error: 'difference' inside minkowski is not supported yet");
+                "m.csg:1:48: error: 'torus' inside minkowski is not supported yet");
     /* the same polyhedron inside a hull is fine: hull takes its points */
     sc_scene *s = load("hull() { polyhedron(points = " NOTCH_POINTS
                        ", faces = " NOTCH_FACES "); }");
@@ -628,13 +693,22 @@ static void test_surface_errors(void **state)
 int main(void)
 {
     const struct CMUnitTest tests[] = {
-        cmocka_unit_test(test_hull_boxes),      cmocka_unit_test(test_hull_curved),
-        cmocka_unit_test(test_hull_extrusions), cmocka_unit_test(test_hull_errors),
-        cmocka_unit_test(test_hull_empty),      cmocka_unit_test(test_minkowski),
-        cmocka_unit_test(test_minkowski_union), cmocka_unit_test(test_minkowski_errors),
-        cmocka_unit_test(test_resize),          cmocka_unit_test(test_resize_boxes),
-        cmocka_unit_test(test_resize_errors),   cmocka_unit_test(test_surface_dat),
-        cmocka_unit_test(test_surface_png),     cmocka_unit_test(test_surface_errors),
+        cmocka_unit_test(test_hull_boxes),
+        cmocka_unit_test(test_hull_curved),
+        cmocka_unit_test(test_hull_extrusions),
+        cmocka_unit_test(test_hull_errors),
+        cmocka_unit_test(test_hull_booleans),
+        cmocka_unit_test(test_hull_empty),
+        cmocka_unit_test(test_minkowski),
+        cmocka_unit_test(test_minkowski_union),
+        cmocka_unit_test(test_minkowski_nonconvex),
+        cmocka_unit_test(test_minkowski_errors),
+        cmocka_unit_test(test_resize),
+        cmocka_unit_test(test_resize_boxes),
+        cmocka_unit_test(test_resize_errors),
+        cmocka_unit_test(test_surface_dat),
+        cmocka_unit_test(test_surface_png),
+        cmocka_unit_test(test_surface_errors),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

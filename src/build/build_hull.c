@@ -11,9 +11,10 @@
  * hulls those polygons; a nested hull its children's points; a nested
  * minkowski its parts' sums; a nested resize its children scaled. group,
  * union, render, color and material pass their children through; '%' and
- * '*' children are left out. difference, intersection and every other node
- * are SC_ERR_UNSUPPORTED at their position (OpenSCAD hulls the vertices of
- * the boolean's mesh, which needs a mesh boolean).
+ * '*' children are left out. A difference or intersection is evaluated as
+ * OpenSCAD evaluates it, to a CGAL Nef polyhedron (through the plugin of
+ * nef.h, opened on the first one), whose vertices a hull takes. Every
+ * other node is SC_ERR_UNSUPPORTED at its position.
  *
  * hull: the convex hull of all the points (hull3.c, exact orientation
  * tests), as a plane set, or as a mesh of its triangles when it has more
@@ -23,11 +24,13 @@
  * minkowski: each child is a list of convex parts (a leaf or hull is one
  * part; a group of several gives several: A ⊕ (B ∪ C) = (A ⊕ B) ∪ (A ⊕ C)).
  * A polyhedron or mesh leaf is one part when it is convex: when its volume
- * is within 1e-6 of its hull's. The sum of convex parts P and Q is the hull
- * of the pairwise sums of their vertices, so the result is the union, over
- * every choice of one part per child, of the hull of the sums (the parts
- * are first reduced to their hull vertices). Children without geometry are
- * skipped, as OpenSCAD does.
+ * is within 1e-6 of its hull's; otherwise, and for a difference or
+ * intersection, the parts are those of CGAL's convex decomposition of its
+ * Nef polyhedron, as OpenSCAD's applyMinkowski splits non-convex children.
+ * The sum of convex parts P and Q is the hull of the pairwise sums of their
+ * vertices, so the result is the union, over every choice of one part per
+ * child, of the hull of the sums (the parts are first reduced to their hull
+ * vertices). Children without geometry are skipped, as OpenSCAD does.
  *
  * resize: OpenSCAD scales the child's mesh by newsize / size of its
  * bounding box. The box here is the support function h(u) = max u . x
@@ -50,10 +53,12 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "base/cancel.h"
 #include "base/error.h"
 #include "base/grow.h"
 #include "build/build_mesh.h"
 #include "build/build_revolve.h"
+#include "build/nef.h"
 #include "csg/hull3.h"
 #include "csg/prim_mesh.h"
 #include "model/lower_curved.h"
@@ -78,6 +83,8 @@ typedef struct walk {
     const char *owner; /* "hull", "minkowski" or "resize", for messages */
     int convex;        /* parts must be convex (minkowski) */
     build_resize_cache **cache;
+    nef_plugin *nef; /* the CGAL plugin, opened on first use (handle NULL before) */
+    int check;       /* only check the children: no mesh booleans */
 } walk;
 
 /* Each resize node's matrix, computed once per build: a resize inside a
@@ -355,25 +362,29 @@ static sc_status polyhedron_points(const walk *w, const model_node *n, const aff
  * through m, and its volume. Extrusions are built as in --faithful, in
  * both modes: OpenSCAD hulls the vertices of its polygons, and the exact
  * leaves of default mode have none. */
+static sc_status mesh_prim(const walk *w, const model_node *n, prim *out,
+                           const char **empty)
+{
+    memset(out, 0, sizeof *out);
+    build_ctx fc = *w->c;
+    fc.faithful = 1;
+    model_kind kind = n->kind;
+    if (kind == MODEL_IMPORT || kind == MODEL_SURFACE)
+        return n->pending             ? build_pending(w->c, n)
+               : kind == MODEL_IMPORT ? build_import(w->c, n->u.import, out, empty)
+                                      : build_surface(w->c, n->u.surface, out, empty);
+    if (kind == MODEL_ROTATE_EXTRUDE)
+        return build_rotate_extrude(&fc, n, 1, out, empty);
+    return build_linear_extrude(&fc, n, 1, out, empty);
+}
+
 static sc_status mesh_points(const walk *w, const model_node *n, const affine *m,
                              pointset *out, double *volume)
 {
     prim p;
-    memset(&p, 0, sizeof p);
     const char *empty = NULL;
-    build_ctx fc = *w->c;
-    fc.faithful = 1;
-    sc_status st;
-    model_kind kind = n->kind;
-    if (kind == MODEL_IMPORT || kind == MODEL_SURFACE)
-        st = n->pending             ? build_pending(w->c, n)
-             : kind == MODEL_IMPORT ? build_import(w->c, n->u.import, &p, &empty)
-                                    : build_surface(w->c, n->u.surface, &p, &empty);
-    else if (kind == MODEL_ROTATE_EXTRUDE)
-        st = build_rotate_extrude(&fc, n, 1, &p, &empty);
-    else
-        st = build_linear_extrude(&fc, n, 1, &p, &empty);
     *volume = 0;
+    sc_status st = mesh_prim(w, n, &p, &empty);
     if (st != SC_OK || empty || p.kind != PRIM_MESH)
         return st;
     const prim_mesh *mesh = p.u.mesh.mesh;
@@ -439,6 +450,8 @@ static sc_status minkowski_parts(const walk *w, const model_node *n, const affin
                                  int depth, partlist *out);
 static sc_status resize_matrix(const walk *w, const model_node *n, int depth, affine *out,
                                const char **warning);
+static sc_status solid_parts(const walk *w, const model_node *n, const affine *m,
+                             int depth, partlist *out);
 
 /* Appends the convex parts (or, for a hull, point sets) of the children of
  * parent, through m, to out. */
@@ -482,13 +495,14 @@ static sc_status collect(const walk *w, const model_node *parent, const affine *
             if (st == SC_OK && w->convex && set.count) {
                 hull3 h;
                 hull3_status hs = hull3_compute(set.p, set.count, &h);
-                if (hs == HULL3_NOMEM)
+                if (hs == HULL3_NOMEM) {
                     st = err_nomem(c->error, (&n->loc));
-                else if (hs == HULL3_OK &&
-                         !(fabs(hull3_volume(&h) - volume) <= 1e-6 * hull3_volume(&h)))
-                    st = err_set(c->error, SC_ERR_UNSUPPORTED, &n->loc,
-                                 "minkowski of a non-convex '%s' is not supported yet",
-                                 n->name);
+                } else if (hs == HULL3_OK && !(fabs(hull3_volume(&h) - volume) <=
+                                               1e-6 * hull3_volume(&h))) {
+                    /* Not convex: its convex parts, as OpenSCAD sums it. */
+                    set.count = 0;
+                    st = solid_parts(w, n, m, depth + 1, out);
+                }
                 hull3_free(&h);
             }
             pointset *part = NULL;
@@ -500,7 +514,7 @@ static sc_status collect(const walk *w, const model_node *parent, const affine *
             }
             free(set.p);
         } else if (kind == MODEL_HULL) {
-            walk inner = {c, "hull", 0, w->cache};
+            walk inner = {c, "hull", 0, w->cache, w->nef, w->check};
             partlist sub = {NULL, 0, 0};
             st = collect(&inner, n, m, depth + 1, &sub);
             pointset *part = NULL;
@@ -515,6 +529,8 @@ static sc_status collect(const walk *w, const model_node *parent, const affine *
             parts_free(&sub);
         } else if (kind == MODEL_MINKOWSKI) {
             st = minkowski_parts(w, n, m, depth + 1, out);
+        } else if (kind == MODEL_DIFFERENCE || kind == MODEL_INTERSECTION) {
+            st = solid_parts(w, n, m, depth + 1, out);
         } else {
             st = err_set(c->error, SC_ERR_UNSUPPORTED, &n->loc,
                          "'%s' inside %s is not supported yet", n->name, w->owner);
@@ -552,7 +568,7 @@ static sc_status reduce(const walk *w, const model_node *n, partlist *l)
 static sc_status minkowski_parts(const walk *w, const model_node *n, const affine *m,
                                  int depth, partlist *out)
 {
-    walk inner = {w->c, "minkowski", 1, w->cache};
+    walk inner = {w->c, "minkowski", 1, w->cache, w->nef, w->check};
     partlist acc = {NULL, 0, 0};
     sc_status st = SC_OK;
     int first = 1;
@@ -638,6 +654,309 @@ static sc_status minkowski_parts(const walk *w, const model_node *n, const affin
     return st;
 }
 
+/* ---- booleans: CGAL's Nef polyhedra, through the plugin (nef.h) ---- */
+
+/* The plugin, opened on the first boolean of the build. */
+static sc_status nef_ready(const walk *w, const model_node *n)
+{
+    if (w->nef->handle)
+        return SC_OK;
+    char why[600];
+    if (!nef_plugin_open(w->nef, why, sizeof why))
+        return err_set(w->c->error, SC_ERR_UNSUPPORTED, &n->loc, "%s: %s", w->owner, why);
+    return SC_OK;
+}
+
+/* A failure of the plugin as an error at n. */
+static sc_status nef_error(const walk *w, const model_node *n, nef_status ns,
+                           const char *why)
+{
+    if (ns == NEF_NOMEM)
+        return err_nomem(w->c->error, &n->loc);
+    if (ns == NEF_BAD_MESH)
+        return err_set(w->c->error, SC_ERR_SEMANTIC, &n->loc,
+                       "%s: '%s' is not a solid: %s", w->owner, n->name, why);
+    return err_set(w->c->error, SC_ERR_SEMANTIC, &n->loc, "%s: CGAL failed on '%s': %s",
+                   w->owner, n->name, why);
+}
+
+/* The Nef polyhedron of a closed polygon mesh; *out NULL when it has no
+ * volume. */
+static sc_status nef_mesh(const walk *w, const model_node *n, const vec3 *points,
+                          uint32_t point_count, const uint32_t *indices,
+                          const uint32_t *face_start, uint32_t face_count,
+                          nef_solid **out)
+{
+    *out = NULL;
+    sc_status st = nef_ready(w, n);
+    if (st != SC_OK)
+        return st;
+    double *xyz = malloc(((size_t)point_count * 3 + 1) * sizeof *xyz);
+    if (!xyz)
+        return err_nomem(w->c->error, &n->loc);
+    for (uint32_t i = 0; i < point_count; i++) {
+        xyz[3 * i] = points[i].x;
+        xyz[3 * i + 1] = points[i].y;
+        xyz[3 * i + 2] = points[i].z;
+    }
+    char why[512] = "";
+    nef_status ns = w->nef->from_mesh(xyz, point_count, indices, face_start, face_count,
+                                      out, why, sizeof why);
+    free(xyz);
+    if (ns != NEF_OK)
+        return nef_error(w, n, ns, why);
+    if (w->nef->is_empty(*out)) {
+        w->nef->release(*out);
+        *out = NULL;
+    }
+    return SC_OK;
+}
+
+/* The solid of a convex point set (the hull of the points); NULL when it
+ * is flat. */
+static sc_status nef_convex(const walk *w, const model_node *n, const pointset *s,
+                            nef_solid **out)
+{
+    *out = NULL;
+    hull3 h;
+    hull3_status hs = hull3_compute(s->p, s->count, &h);
+    if (hs == HULL3_NOMEM)
+        return err_nomem(w->c->error, &n->loc);
+    if (hs == HULL3_RANGE)
+        return err_set(w->c->error, SC_ERR_LIMIT, &n->loc,
+                       "%s: too many points or a coordinate too large", w->owner);
+    if (hs == HULL3_FLAT)
+        return SC_OK;
+    uint32_t *start = malloc(((size_t)h.tri_count + 1) * sizeof *start);
+    if (!start) {
+        hull3_free(&h);
+        return err_nomem(w->c->error, &n->loc);
+    }
+    for (uint32_t t = 0; t <= h.tri_count; t++)
+        start[t] = 3 * t;
+    sc_status st =
+        nef_mesh(w, n, h.vertices, h.vertex_count, h.tris, start, h.tri_count, out);
+    free(start);
+    hull3_free(&h);
+    return st;
+}
+
+/* *acc = *acc op s, releasing s; NULL stands for the empty solid. */
+static sc_status nef_combine(const walk *w, const model_node *n, nef_solid **acc,
+                             nef_op op, nef_solid *s)
+{
+    if (op == NEF_UNION && !*acc) {
+        *acc = s;
+        return SC_OK;
+    }
+    if (!s || !*acc) {
+        if (op == NEF_INTERSECTION && *acc) {
+            w->nef->release(*acc);
+            *acc = NULL;
+        }
+        if (s)
+            w->nef->release(s);
+        return SC_OK;
+    }
+    /* Each Nef operation runs to its end once started; between them a
+     * cancelled call stops. */
+    if (cancel_poll()) {
+        w->nef->release(s);
+        return err_set(w->c->error, SC_ERR_CANCELLED, &n->loc, "%s: cancelled", w->owner);
+    }
+    char why[512] = "";
+    nef_status ns = w->nef->apply(*acc, op, s, why, sizeof why);
+    w->nef->release(s);
+    if (ns != NEF_OK)
+        return nef_error(w, n, ns, why);
+    if (w->nef->is_empty(*acc)) {
+        w->nef->release(*acc);
+        *acc = NULL;
+    }
+    return SC_OK;
+}
+
+static sc_status nef_node(const walk *w, const model_node *n, const affine *m, int depth,
+                          nef_solid **out);
+
+/* The solid of the children of parent through m, combined by op: their
+ * union, or for difference and intersection the first child minus, or
+ * intersected with, each of the others. */
+static sc_status nef_children(const walk *w, const model_node *parent, const affine *m,
+                              int depth, nef_op op, nef_solid **out)
+{
+    *out = NULL;
+    if (depth > BUILD_HULL_MAX_DEPTH)
+        return depth_error(w, parent);
+    int first = 1;
+    for (const model_node *n = parent->first_child; n; n = n->next) {
+        if (skipped(n) || is_shading(n->kind))
+            continue;
+        nef_solid *s = NULL;
+        sc_status st = nef_node(w, n, m, depth, &s);
+        if (st == SC_OK)
+            st = nef_combine(w, n, out, first ? NEF_UNION : op, s);
+        first = 0;
+        if (st != SC_OK) {
+            if (*out)
+                w->nef->release(*out);
+            *out = NULL;
+            return st;
+        }
+    }
+    return SC_OK;
+}
+
+/* The solid of node n through m, as OpenSCAD evaluates a child of a hull
+ * or minkowski to a Nef polyhedron; *out NULL for the empty solid. With
+ * w->check, the subtree is only checked and *out stays NULL. */
+static sc_status nef_node(const walk *w, const model_node *n, const affine *m, int depth,
+                          nef_solid **out)
+{
+    const build_ctx *c = w->c;
+    *out = NULL;
+    if (depth > BUILD_HULL_MAX_DEPTH)
+        return depth_error(w, n);
+    model_kind kind = n->kind;
+    sc_status st = SC_OK;
+    if (is_group(kind))
+        return nef_children(w, n, m, depth + 1, NEF_UNION, out);
+    if (kind == MODEL_DIFFERENCE)
+        return nef_children(w, n, m, depth + 1, NEF_DIFFERENCE, out);
+    if (kind == MODEL_INTERSECTION)
+        return nef_children(w, n, m, depth + 1, NEF_INTERSECTION, out);
+    if (kind == MODEL_XFORM || kind == MODEL_RESIZE) {
+        affine local;
+        int ok = 1;
+        const char *warning = NULL;
+        st = kind == MODEL_XFORM ? read_matrix(c, n, &local, &ok)
+                                 : resize_matrix(w, n, depth + 1, &local, &warning);
+        if (st != SC_OK || !ok)
+            return st;
+        affine inner = affine_mul(m, &local);
+        return nef_children(w, n, &inner, depth + 1, NEF_UNION, out);
+    }
+    if (kind == MODEL_POLYHEDRON) {
+        if (n->pending)
+            return build_pending(c, n);
+        uint32_t np = n->u.polyhedron.point_count;
+        if (w->check || !np || !n->u.polyhedron.face_count)
+            return SC_OK;
+        vec3 *p = malloc((size_t)np * sizeof *p);
+        if (!p)
+            return err_nomem(c->error, &n->loc);
+        for (uint32_t i = 0; i < np; i++)
+            p[i] = affine_point(m, n->u.polyhedron.points[i]);
+        st = nef_mesh(w, n, p, np, n->u.polyhedron.indices, n->u.polyhedron.face_start,
+                      n->u.polyhedron.face_count, out);
+        free(p);
+        return st;
+    }
+    if (is_mesh(kind)) {
+        prim p;
+        const char *empty = NULL;
+        if ((st = mesh_prim(w, n, &p, &empty)) != SC_OK || empty || p.kind != PRIM_MESH ||
+            w->check)
+            return st;
+        const prim_mesh *mesh = p.u.mesh.mesh;
+        uint32_t count = mesh->tri_count;
+        vec3 *v = malloc((size_t)count * 3 * sizeof *v);
+        uint32_t *index = malloc((size_t)count * 3 * sizeof *index);
+        uint32_t *start = malloc(((size_t)count + 1) * sizeof *start);
+        if (v && index && start) {
+            for (uint32_t i = 0; i < 3 * count; i++) {
+                v[i] = affine_point(m, mesh->v[i]);
+                index[i] = i;
+            }
+            for (uint32_t t = 0; t <= count; t++)
+                start[t] = 3 * t;
+            st = nef_mesh(w, n, v, 3 * count, index, start, count, out);
+        } else {
+            st = err_nomem(c->error, &n->loc);
+        }
+        free(v);
+        free(index);
+        free(start);
+        return st;
+    }
+    /* The convex ones: a shape, a hull, each part of a minkowski. */
+    partlist parts = {NULL, 0, 0};
+    if (kind == MODEL_CUBE || kind == MODEL_SPHERE || kind == MODEL_CYLINDER) {
+        shape s;
+        if ((st = read_shape(c, n, &s)) == SC_OK && s.kind != SHAPE_NONE) {
+            pointset *part = new_part(&parts);
+            st = part ? shape_points(w, n, &s, m, part) : err_nomem(c->error, &n->loc);
+        }
+    } else if (kind == MODEL_HULL) {
+        walk inner = {c, "hull", 0, w->cache, w->nef, w->check};
+        partlist sub = {NULL, 0, 0};
+        st = collect(&inner, n, m, depth + 1, &sub);
+        pointset *part = NULL;
+        if (st == SC_OK && sub.count && !(part = new_part(&parts)))
+            st = err_nomem(c->error, &n->loc);
+        for (uint32_t i = 0; part && i < sub.count && st == SC_OK; i++) {
+            for (uint32_t k = 0; k < sub.items[i].count && st == SC_OK; k++) {
+                if (!add_point(part, sub.items[i].p[k]))
+                    st = err_nomem(c->error, &n->loc);
+            }
+        }
+        parts_free(&sub);
+    } else if (kind == MODEL_MINKOWSKI) {
+        st = minkowski_parts(w, n, m, depth + 1, &parts);
+    } else {
+        st = err_set(c->error, SC_ERR_UNSUPPORTED, &n->loc,
+                     "'%s' inside %s is not supported yet", n->name, w->owner);
+    }
+    for (uint32_t i = 0; i < parts.count && st == SC_OK && !w->check; i++) {
+        nef_solid *s = NULL;
+        if ((st = nef_convex(w, n, &parts.items[i], &s)) == SC_OK)
+            st = nef_combine(w, n, out, NEF_UNION, s);
+    }
+    parts_free(&parts);
+    if (st != SC_OK && *out) {
+        w->nef->release(*out);
+        *out = NULL;
+    }
+    return st;
+}
+
+/* Appends to out what a hull or minkowski takes of node n (a boolean, or a
+ * polyhedron or mesh that is not convex) through m: for a hull the
+ * vertices of its solid, as one part; for a minkowski the vertices of each
+ * part of CGAL's convex decomposition of it. */
+static sc_status solid_parts(const walk *w, const model_node *n, const affine *m,
+                             int depth, partlist *out)
+{
+    nef_solid *solid = NULL;
+    sc_status st = w->check ? SC_OK : nef_ready(w, n);
+    if (st == SC_OK)
+        st = nef_node(w, n, m, depth, &solid);
+    if (st != SC_OK || !solid)
+        return st;
+    nef_parts got = {NULL, NULL, 0};
+    char why[512] = "";
+    nef_status ns = w->convex ? w->nef->convex_parts(solid, &got, why, sizeof why)
+                              : w->nef->vertices(solid, &got, why, sizeof why);
+    w->nef->release(solid);
+    if (ns != NEF_OK)
+        return nef_error(w, n, ns, why);
+    for (uint32_t k = 0; k < got.count && st == SC_OK; k++) {
+        pointset *part = new_part(out);
+        if (!part) {
+            st = err_nomem(w->c->error, &n->loc);
+            break;
+        }
+        for (uint32_t i = got.start[k]; i < got.start[k + 1] && st == SC_OK; i++) {
+            vec3 p = v3(got.points[3 * i], got.points[3 * i + 1], got.points[3 * i + 2]);
+            if (!add_point(part, p))
+                st = err_nomem(w->c->error, &n->loc);
+        }
+    }
+    free(got.points);
+    free(got.start);
+    return st;
+}
+
 /* ---- emitting ---- */
 
 static sc_status push_prim(const build_ctx *c, const model_node *n, build_prims *out,
@@ -707,10 +1026,12 @@ sc_status build_hull(const build_ctx *c, const model_node *n, int emit,
                      build_resize_cache **cache, build_prims *out, const char **empty)
 {
     memset(out, 0, sizeof *out);
-    walk w = {c, "hull", 0, cache};
+    nef_plugin nef = {0};
+    walk w = {c, "hull", 0, cache, &nef, !emit};
     partlist parts = {NULL, 0, 0};
     affine id = affine_identity();
     sc_status st = collect(&w, n, &id, 0, &parts);
+    nef_plugin_close(&nef);
     pointset all = {NULL, 0, 0};
     for (uint32_t i = 0; i < parts.count && st == SC_OK; i++) {
         for (uint32_t k = 0; k < parts.items[i].count && st == SC_OK; k++) {
@@ -733,10 +1054,12 @@ sc_status build_minkowski(const build_ctx *c, const model_node *n, int emit,
                           const char **empty)
 {
     memset(out, 0, sizeof *out);
-    walk w = {c, "minkowski", 1, cache};
+    nef_plugin nef = {0};
+    walk w = {c, "minkowski", 1, cache, &nef, !emit};
     partlist parts = {NULL, 0, 0};
     affine id = affine_identity();
     sc_status st = minkowski_parts(&w, n, &id, 0, &parts);
+    nef_plugin_close(&nef);
     int flat = 0;
     for (uint32_t i = 0; i < parts.count && st == SC_OK && emit; i++)
         st = emit_hull(c, n, &parts.items[i], out, &flat);
@@ -983,7 +1306,10 @@ static sc_status measure(const walk *w, const model_node *n, int depth, affine *
 sc_status build_resize(const build_ctx *c, const model_node *n,
                        build_resize_cache **cache, affine *out, const char **warning)
 {
-    walk w = {c, "resize", 0, cache};
+    nef_plugin nef = {0};
+    walk w = {c, "resize", 0, cache, &nef, 0};
     const model_node *measured = n->u.resize->measured ? n->u.resize->measured : n;
-    return resize_matrix(&w, measured, 0, out, warning);
+    sc_status st = resize_matrix(&w, measured, 0, out, warning);
+    nef_plugin_close(&nef);
+    return st;
 }

@@ -34,15 +34,17 @@ typedef struct build_resize_cache build_resize_cache;
 
 void build_resize_cache_free(build_resize_cache *cache);
 
-/* hull() of its 3D children: one convex leaf (a plane set, or a mesh of the
+/* hull() of its 3D children (booleans among them evaluated with CGAL's Nef
+ * polyhedra, as OpenSCAD does): one convex leaf (a plane set, or a mesh of the
  * hull's triangles when it has many faces), in the hull node's frame. A
  * hull without volume sets *empty to a warning. With emit clear, the
  * children are only checked. */
 sc_status build_hull(const build_ctx *c, const model_node *n, int emit,
                      build_resize_cache **cache, build_prims *out, const char **empty);
 
-/* minkowski() of convex children, or unions of convex parts: one convex
- * leaf per combination of parts, to be united. */
+/* minkowski() of its children, each a union of convex parts (non-convex
+ * ones split by CGAL's convex decomposition): one convex leaf per
+ * combination of parts, to be united. */
 sc_status build_minkowski(const build_ctx *c, const model_node *n, int emit,
                           build_resize_cache **cache, build_prims *out,
                           const char **empty);

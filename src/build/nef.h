@@ -1,0 +1,92 @@
+/* Mesh booleans and convex decomposition, as OpenSCAD 2021.01 computes the
+ * children of hull() and minkowski(): CGAL's Nef polyhedra, in a plugin.
+ *
+ * OpenSCAD evaluates a difference or intersection inside a hull or
+ * minkowski to a CGAL Nef polyhedron (exact rational coordinates), hulls
+ * the vertices of the result, and sums a non-convex child part by part,
+ * through CGAL's convex decomposition of the Nef polyhedron. spancast does
+ * the same with the same library. CGAL, GMP and MPFR are linked only by
+ * the plugin spancast-cgal.so (cgal/nef_cgal.cpp), which nef_plugin_open
+ * loads on the first such node, so that no other model pays for loading
+ * them (docs/hull.md).
+ *
+ * The plugin's entry points are C functions named in nef_plugin; every one
+ * catches its C++ exceptions (CGAL's failed preconditions, bad_alloc) and
+ * reports them as a status and a message, so nothing is thrown across the
+ * boundary. Buffers the plugin returns are malloc'd: the caller frees
+ * them with free().
+ */
+#ifndef SPANCAST_BUILD_NEF_H
+#define SPANCAST_BUILD_NEF_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* A Nef polyhedron, owned by the plugin (nef_release). */
+typedef struct nef_solid nef_solid;
+
+typedef enum nef_op { NEF_UNION, NEF_DIFFERENCE, NEF_INTERSECTION } nef_op;
+
+typedef enum nef_status {
+    NEF_OK = 0,
+    NEF_BAD_MESH, /* the polygons do not bound a volume (message says why) */
+    NEF_NOMEM,
+    NEF_FAILED /* CGAL refused (message says why) */
+} nef_status;
+
+/* Points of one or more convex parts: part k is points[3 * start[k] ..
+ * 3 * start[k + 1]) (x, y, z triples); both arrays malloc'd. */
+typedef struct nef_parts {
+    double *points;
+    uint32_t *start; /* count + 1 entries */
+    uint32_t count;
+} nef_parts;
+
+/* The entry points, each named spancast_nef_<field> in the plugin. err
+ * receives a message (no position, no trailing newline) on failure. */
+typedef struct nef_plugin {
+    /* The solid bounded by a closed polygon mesh: points are x, y, z
+     * triples; face f is indices[face_start[f] .. face_start[f + 1]).
+     * Points at the same position are merged, faces are triangulated and
+     * the orientation is made outward, so either winding is taken. */
+    nef_status (*from_mesh)(const double *points, uint32_t point_count,
+                            const uint32_t *indices, const uint32_t *face_start,
+                            uint32_t face_count, nef_solid **out, char *err,
+                            size_t err_size);
+    /* The empty solid. */
+    nef_status (*empty)(nef_solid **out, char *err, size_t err_size);
+    /* *a = *a op b; b is left as it is. */
+    nef_status (*apply)(nef_solid *a, nef_op op, const nef_solid *b, char *err,
+                        size_t err_size);
+    /* Whether the solid has no volume. */
+    int (*is_empty)(const nef_solid *s);
+    /* The vertices of the solid, rounded to doubles, as one part. */
+    nef_status (*vertices)(const nef_solid *s, nef_parts *out, char *err,
+                           size_t err_size);
+    /* CGAL's convex decomposition of the solid (as OpenSCAD's minkowski
+     * does it): the vertices of each convex volume, one part each. The
+     * solid is left as it is. */
+    nef_status (*convex_parts)(const nef_solid *s, nef_parts *out, char *err,
+                               size_t err_size);
+    void (*release)(nef_solid *s);
+    void *handle; /* of dlopen */
+} nef_plugin;
+
+/* The plugin's file name. */
+#define NEF_PLUGIN_FILE "spancast-cgal.so"
+
+/* Loads the plugin (beside the executable, then in the build folder) into
+ * *plugin. Returns 1, or 0 with "cannot load the CGAL plugin
+ * (spancast-cgal.so): ..." in err. Close it with nef_plugin_close. */
+int nef_plugin_open(nef_plugin *plugin, char *err, size_t err_size);
+void nef_plugin_close(nef_plugin *plugin);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif
