@@ -13,7 +13,10 @@
  * at the first grid.
  *
  * A mesh is loaded as the one-line model import(file = "PATH"), so it is
- * read, checked and cast exactly as an import in a model is (meshes.md).
+ * read, checked and cast exactly as an import in a model is (meshes.md);
+ * the model is named by the path as given, and its errors and warnings
+ * are put on that file (a position in the one-line model would point
+ * into the mesh at a place that says nothing).
  */
 #define _XOPEN_SOURCE 700
 
@@ -35,6 +38,14 @@
 #include "csg/csg.h"
 #include "csg/span.h"
 #include "render/render.h"
+
+/* Drops the position of e when it is in the one-line model named path
+ * that sc_scene_load_mesh loads (line 1 of it). */
+static void at_whole_file(sc_error *e, const char *path)
+{
+    if (e->line == 1 && strcmp(e->file, path) == 0)
+        e->line = e->column = 0;
+}
 
 sc_status sc_scene_load_mesh(const char *path, const sc_load_options *options,
                              sc_scene **scene, sc_error *error)
@@ -65,6 +76,12 @@ sc_status sc_scene_load_mesh(const char *path, const sc_load_options *options,
     free(full);
     sc_status st = sc_scene_load_string(path, text, k, options, scene, error);
     free(text);
+    /* A position in the one-line model is no place in any file the user
+     * has: such errors and warnings are about the mesh file as a whole. */
+    if (st != SC_OK)
+        at_whole_file(error, path);
+    for (size_t i = 0; *scene && i < (*scene)->warning_count; i++)
+        at_whole_file(&(*scene)->warnings[i], path);
     return st;
 }
 

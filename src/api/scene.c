@@ -1,6 +1,7 @@
 /* Loading a scene: the public sc_scene_* calls.
  *
- * sc_scene_load reads the whole file into memory and, like
+ * sc_scene_load reads a mesh file (.stl, .off) as the model that imports
+ * it (sc_scene_load_mesh), and any other file whole into memory and, like
  * sc_scene_load_string, runs the scene stages (parse, lower, build) and
  * keeps only their result: the compiled CSG tree and the warnings. Each
  * stage's input is freed as soon as the stages after it no longer need it
@@ -163,6 +164,20 @@ static sc_status read_file(const char *path, char **text, size_t *length, sc_err
     return SC_OK;
 }
 
+/* Whether path names a mesh file: it ends in .stl or .off, in any case,
+ * as OpenSCAD's import() tells them. */
+static int is_mesh_name(const char *path)
+{
+    size_t n = strlen(path);
+    if (n < 5 || path[n - 4] != '.')
+        return 0;
+    char ext[4];
+    for (int i = 0; i < 3; i++)
+        ext[i] = (char)(path[n - 3 + i] | 32);
+    ext[3] = '\0';
+    return strcmp(ext, "stl") == 0 || strcmp(ext, "off") == 0;
+}
+
 sc_status sc_scene_load(const char *path, const sc_load_options *options,
                         sc_scene **scene, sc_error *error)
 {
@@ -172,6 +187,8 @@ sc_status sc_scene_load(const char *path, const sc_load_options *options,
     *scene = NULL;
     if (!path)
         return err_set(error, SC_ERR_ARGUMENT, NULL, "no file name");
+    if (is_mesh_name(path))
+        return sc_scene_load_mesh(path, options, scene, error);
     char *text;
     size_t length;
     sc_status st = read_file(path, &text, &length, error);

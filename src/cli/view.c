@@ -67,6 +67,7 @@
 #include <unistd.h>
 
 #include "cli/cli.h"
+#include "cli/scad.h"
 #include "cli/view.h"
 #include "cli/watch.h"
 
@@ -1051,7 +1052,9 @@ int main(int argc, char **argv)
     v->coarse_step = 5; /* a quarter of each side, until measured */
     sc_render_options_init(&v->look);
     v->defaults = v->look;
-    int status = parse_args(v, argc, argv);
+    int status = scad_take_defines(&argc, argv);
+    if (!status)
+        status = parse_args(v, argc, argv);
     if (status) {
         free(v);
         return status;
