@@ -18,6 +18,7 @@
 #include <string.h>
 #include <sys/stat.h>
 
+#include "api/mesh_model.h"
 #include "api/options.h"
 #include "base/error.h"
 #include "base/mem.h"
@@ -164,20 +165,6 @@ static sc_status read_file(const char *path, char **text, size_t *length, sc_err
     return SC_OK;
 }
 
-/* Whether path names a mesh file: it ends in .stl or .off, in any case,
- * as OpenSCAD's import() tells them. */
-static int is_mesh_name(const char *path)
-{
-    size_t n = strlen(path);
-    if (n < 5 || path[n - 4] != '.')
-        return 0;
-    char ext[4];
-    for (int i = 0; i < 3; i++)
-        ext[i] = (char)(path[n - 3 + i] | 32);
-    ext[3] = '\0';
-    return strcmp(ext, "stl") == 0 || strcmp(ext, "off") == 0;
-}
-
 sc_status sc_scene_load(const char *path, const sc_load_options *options,
                         sc_scene **scene, sc_error *error)
 {
@@ -187,7 +174,7 @@ sc_status sc_scene_load(const char *path, const sc_load_options *options,
     *scene = NULL;
     if (!path)
         return err_set(error, SC_ERR_ARGUMENT, NULL, "no file name");
-    if (is_mesh_name(path))
+    if (mesh_model_is_mesh(path))
         return sc_scene_load_mesh(path, options, scene, error);
     char *text;
     size_t length;

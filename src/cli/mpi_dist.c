@@ -179,7 +179,11 @@ sc_status dist_load(const char *path, const sc_load_options *options, sc_scene *
     }
     MPI_Bcast(name, (int)head[2] + 1, MPI_CHAR, 0, MPI_COMM_WORLD);
     broadcast_bytes(text, size);
-    sc_status st = sc_scene_load_string(name, text, size, options, scene, error);
+    /* A mesh's one-line model is loaded as one process loads it, for the
+     * same messages (each rank reads the mesh, as it reads an import). */
+    sc_status st = scad_is_mesh(path)
+                       ? sc_scene_load_mesh(path, options, scene, error)
+                       : sc_scene_load_string(name, text, size, options, scene, error);
     free(text);
     /* Agree: the first rank that failed, if any, says why. */
     int mine = st == SC_OK ? ranks : rank, first = ranks;
