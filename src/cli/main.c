@@ -1157,30 +1157,47 @@ int main(int argc, char **argv)
         return limited;
     if (argc > 1 && !strcmp(argv[1], "view"))
         return run_view(argv); /* spancast-view reads its own --help and -D */
+    /* spancast-mpi (dist_enter) reads its own -D: it gets argv whole. */
+    int whole_argc = argc;
+    char **whole = malloc(((size_t)argc + 1) * sizeof *whole);
+    if (!whole) {
+        fputs("spancast: error: out of memory\n", stderr);
+        return EXIT_FAILED;
+    }
+    memcpy(whole, argv, ((size_t)argc + 1) * sizeof *whole);
     int defined = scad_take_defines(&argc, argv);
-    if (defined)
+    if (defined) {
+        free(whole);
         return defined;
+    }
     for (int k = 1; k < argc && strcmp(argv[k], "--"); k++) {
         if (!strcmp(argv[k], "--help") || !strcmp(argv[k], "-h")) {
+            free(whole);
             fputs(usage_text, stdout);
             return 0;
         }
         if (!strcmp(argv[k], "--version")) {
+            free(whole);
             printf("spancast %s\nmpi: %s\n", SPANCAST_VERSION_STRING,
                    SPANCAST_MPI_SUPPORT);
             return 0;
         }
     }
-    if (argc < 2)
+    if (argc < 2) {
+        free(whole);
         return cli_usage_error("missing command (try 'spancast --help')");
+    }
     const char *command = argv[1];
     if (!strcmp(command, "render") || !strcmp(command, "batch") ||
         !strcmp(command, "measure") || !strcmp(command, "overlaps") ||
         !strcmp(command, "compare")) {
-        int st = dist_enter(argc, argv); /* under mpirun: spancast-mpi */
-        if (st >= 0)
+        int st = dist_enter(whole_argc, whole); /* under mpirun: spancast-mpi */
+        if (st >= 0) {
+            free(whole);
             return st;
+        }
     }
+    free(whole);
     if (!strcmp(command, "batch"))
         return cli_batch(argc, argv);
     if (!strcmp(command, "bench"))
