@@ -388,10 +388,12 @@ static void test_braceless(void **state)
     check_same("multmatrix([[1, 0, 0, 1], [0, 1, 0, 0], [0, 0, 1, 0]]) cube(1);",
                "multmatrix([[1, 0, 0, 1], [0, 1, 0, 0], [0, 0, 1, 0]]) { cube(1); }");
     check_same("color(\"red\", 0.5) sphere(5);", "color(\"red\", 0.5) { sphere(5); }");
-    check_same("group() multmatrix(m = []) color(\"red\") cube(1); sphere(2);",
-               "group() { multmatrix(m = []) { color(\"red\") { cube(1); } } } sphere(2);");
-    check_same("difference() { cube(2); multmatrix([]) cylinder(h = 3); sphere(1); }",
-               "difference() { cube(2); multmatrix([]) { cylinder(h = 3); } sphere(1); }");
+    check_same(
+        "group() multmatrix(m = []) color(\"red\") cube(1); sphere(2);",
+        "group() { multmatrix(m = []) { color(\"red\") { cube(1); } } } sphere(2);");
+    check_same(
+        "difference() { cube(2); multmatrix([]) cylinder(h = 3); sphere(1); }",
+        "difference() { cube(2); multmatrix([]) { cylinder(h = 3); } sphere(1); }");
     check_same("union() { { cube(1); { sphere(1); } } ; ; } ;; {} {;}",
                "union() { cube(1); sphere(1); }");
     check_same("{ cube(1); } sphere(2);", "cube(1); sphere(2);");
@@ -437,10 +439,10 @@ static void test_language(void **state)
     (void)state;
     const char *tail = " is OpenSCAD's language beyond its CSG export";
     char want[256];
-#define LANGUAGE(text, pos, what)                                                       \
-    do {                                                                                \
-        snprintf(want, sizeof want, "m.csg:%s: error: %s%s", pos, what, tail);          \
-        check_language(text, want);                                                     \
+#define LANGUAGE(text, pos, what)                                                        \
+    do {                                                                                 \
+        snprintf(want, sizeof want, "m.csg:%s: error: %s%s", pos, what, tail);           \
+        check_language(text, want);                                                      \
     } while (0)
     LANGUAGE("cube(1);\nsize = 2;", "2:1", "an assignment ('size = ...')");
     LANGUAGE("$fn = 32;", "1:1", "an assignment ('$fn = ...')");

@@ -16,8 +16,7 @@ int mesh_model_is_mesh(const char *path);
  * string of the grammar (quote and backslash escaped): malloc'd into
  * *text, *length bytes and a NUL. SC_ERR_IO when path cannot be resolved,
  * SC_ERR_NOMEM. */
-sc_status mesh_model_text(const char *path, char **text, size_t *length,
-                          sc_error *error);
+sc_status mesh_model_text(const char *path, char **text, size_t *length, sc_error *error);
 
 /* Drops the position of e when it points into the one-line model named
  * path (its line 1), which is no place in a file the user has: the error

@@ -107,7 +107,8 @@ int scad_take_defines(int *argc, char **argv)
             return cli_usage_error("-D expects NAME=VALUE, as OpenSCAD's -D (got '%s')",
                                    value);
         if (define_count == SCAD_MAX_DEFINES)
-            return cli_usage_error("too many -D settings (limit is %d)", SCAD_MAX_DEFINES);
+            return cli_usage_error("too many -D settings (limit is %d)",
+                                   SCAD_MAX_DEFINES);
         defines[define_count++] = value;
         for (int j = k; j + used <= *argc; j++)
             argv[j] = argv[j + used]; /* argv[argc] is NULL and moves too */

@@ -37,11 +37,11 @@ typedef struct scad_stop {
  * every case) and loads it as if it were DIR/NAME.csg beside the source, so
  * that relative imports resolve as OpenSCAD resolves them. On failure
  * *scene is NULL and error says why (OpenSCAD missing, its conversion
- * failing, with the last line it printed, or the .csg not loading). When depend is not NULL, calls depend(user, file) for each
- * file the conversion read (the source and what it includes, uses or
- * imports: OpenSCAD's -d dependency file), so that a watcher can reload on
- * a change to any of them. Not called when OpenSCAD fails. stop: NULL, or
- * as scad_stop says. */
+ * failing, with the last line it printed, or the .csg not loading). When depend is not
+ * NULL, calls depend(user, file) for each file the conversion read (the source and what
+ * it includes, uses or imports: OpenSCAD's -d dependency file), so that a watcher can
+ * reload on a change to any of them. Not called when OpenSCAD fails. stop: NULL, or as
+ * scad_stop says. */
 sc_status scad_load_files(const char *path, const sc_load_options *options,
                           sc_scene **scene, sc_error *error,
                           void (*depend)(void *user, const char *file), void *user,

@@ -83,9 +83,11 @@ static const char usage_text[] =
     "usage: spancast view MODEL [--imgsize=W,H] [--spp=N] [--threads=N] [--faithful]\n"
     "                           [--max-time=S] [--verbose] [preview options]\n"
     "\n"
-    "Opens a window on MODEL (.csg, or .scad through OpenSCAD) and renders it\n"
-    "again whenever the file, or a file a .scad model uses, changes.\n"
+    "Opens a window on MODEL (.csg, .scad through OpenSCAD, or a .stl/.off mesh)\n"
+    "and renders it again whenever the file, or a file a .scad model uses,\n"
+    "changes.\n"
     "\n"
+    "  -D NAME=VALUE   set an OpenSCAD variable for the conversion (repeatable)\n"
     "  --imgsize=W,H   window size (default 800,600)\n"
     "  --spp=N         samples per pixel when the view is still (default 4)\n"
     "  --threads=N     render threads (default 0: all cores)\n"
@@ -144,7 +146,7 @@ typedef struct viewer {
     view_model *model;
     double load_seconds;
     int loads; /* models loaded so far, shown in the title as "#N" */
-    char error[SC_ERROR_MESSAGE_MAX + SC_ERROR_FILE_MAX + 64]; /* the failed load */
+    char error[SC_ERROR_MESSAGE_MAX + SC_ERROR_FILE_MAX + 64];   /* the failed load */
     char warning[SC_ERROR_MESSAGE_MAX + SC_ERROR_FILE_MAX + 64]; /* the load's first,
                                                                     and how many more */
     view_camera cam;
@@ -589,11 +591,13 @@ static void update_title(viewer *v)
         title, sizeof title,
         "spancast view: %s%s%s - %s - load #%d %.3f s, frame %.1f ms (%dx%d, spp %d), "
         "%.2f Mrays/s - %s%s%s%s%s",
-        base_name(v->path), v->error[0] ? " - ERROR " : v->warning[0] ? " - WARNING " : "",
-        v->error[0] ? v->error : v->warning, state, v->loads,
-        v->load_seconds, v->frame_ms, v->frame_w, v->frame_h, v->frame_spp,
-        v->rays_per_second / 1e6, options, v->pick[0] ? " - " : "", v->pick,
-        v->note[0] ? " - " : "", v->note);
+        base_name(v->path),
+        v->error[0]     ? " - ERROR "
+        : v->warning[0] ? " - WARNING "
+                        : "",
+        v->error[0] ? v->error : v->warning, state, v->loads, v->load_seconds,
+        v->frame_ms, v->frame_w, v->frame_h, v->frame_spp, v->rays_per_second / 1e6,
+        options, v->pick[0] ? " - " : "", v->pick, v->note[0] ? " - " : "", v->note);
     if (strcmp(title, v->title)) {
         memcpy(v->title, title, sizeof title);
         SDL_SetWindowTitle(v->window, title);
@@ -645,7 +649,8 @@ static void take_load(viewer *v)
         if (warnings > 1)
             snprintf(more, sizeof more, " (and %zu more)", warnings - 1);
         /* The title's copy may be cut short; stderr has it whole. */
-        int n = snprintf(v->warning, sizeof v->warning, "%s: %s%s", where, w.message, more);
+        int n =
+            snprintf(v->warning, sizeof v->warning, "%s: %s%s", where, w.message, more);
         (void)n;
     }
     if (first) {

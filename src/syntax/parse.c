@@ -460,9 +460,9 @@ static sc_status close_node(parser *ps, parse_node *node)
 static const char *language_word(const char *name)
 {
     static const char *const words[] = {
-        "module", "function", "include", "use",     "for",    "if",
-        "else",   "let",      "each",    "echo",    "assert", "assign",
-        "children", "translate", "rotate", "scale", "mirror",
+        "module",   "function",  "include", "use",   "for",    "if",
+        "else",     "let",       "each",    "echo",  "assert", "assign",
+        "children", "translate", "rotate",  "scale", "mirror",
     };
     for (size_t i = 0; i < sizeof words / sizeof words[0]; i++)
         if (strcmp(words[i], name) == 0)
