@@ -661,8 +661,19 @@ sc_status scad_load_model(const char *path, const sc_load_options *options,
             *converted = 1;
         return convert_and_load(path, NULL, options, scene, error, depend, user, stop);
     }
+    /* The load cannot be stopped from inside: a signal during it ends the
+     * process (stop.c), and one that came before it, seen after the flag
+     * is set, ends it here. */
     if (stop && stop->loading)
         *stop->loading = 1;
+    if (stop && stop->stop && *stop->stop) {
+        if (stop->loading)
+            *stop->loading = 0;
+        memset(error, 0, sizeof *error);
+        error->status = SC_ERR_CANCELLED;
+        snprintf(error->message, sizeof error->message, "interrupted");
+        return SC_ERR_CANCELLED;
+    }
     sc_status st = scad_is_mesh(path) ? sc_scene_load_mesh(path, options, scene, error)
                                       : sc_scene_load(path, options, scene, error);
     if (stop && stop->loading)
