@@ -37,7 +37,8 @@ typedef struct open_vector {
 
 /* A name stored once: an entry of the parser's table of names. */
 typedef struct name_entry {
-    const char *chars; /* in the tree's strings arena; NULL: a free slot */
+    const char *chars;    /* in the tree's strings arena; NULL: a free slot */
+    const char *language; /* language_word(chars), found once per name */
     uint32_t length;
     uint32_t hash;
 } name_entry;
@@ -165,11 +166,37 @@ static int grow_names(parser *ps)
     return 1;
 }
 
+/* What a name at the start of a statement says when OpenSCAD's language
+ * uses it and its CSG export never writes it: the keywords, the flow
+ * control and echo modules, and the transforms (the export writes every
+ * transform as multmatrix). NULL for every other name, which is a node. */
+static const char *language_word(const char *name)
+{
+    static const char *const words[] = {
+        "module",   "function",  "include", "use",   "for",    "if",
+        "else",     "let",       "each",    "echo",  "assert", "assign",
+        "children", "translate", "rotate",  "scale", "mirror",
+    };
+    for (size_t i = 0; i < sizeof words / sizeof words[0]; i++)
+        if (strcmp(words[i], name) == 0)
+            return words[i];
+    return NULL;
+}
+
 /* The current token's text (a name) as a C string in the tree's strings
  * arena, stored once per distinct name: a file of a million spheres
  * writes "sphere", "multmatrix" and "$fn" a million times each. NULL when
  * out of memory. */
+static const char *token_name(parser *ps, const char **language);
+
 static const char *token_text(parser *ps)
+{
+    return token_name(ps, NULL);
+}
+
+/* token_text, and when language is not NULL, language_word of the name
+ * into *language, looked up once per distinct name rather than per node. */
+static const char *token_name(parser *ps, const char **language)
 {
     const char *text = ps->tok.start;
     size_t n = ps->tok.length;
@@ -181,8 +208,11 @@ static const char *token_text(parser *ps)
         name_entry *e = &ps->names[k];
         if (!e->chars)
             break;
-        if (e->hash == h && e->length == n && memcmp(e->chars, text, n) == 0)
+        if (e->hash == h && e->length == n && memcmp(e->chars, text, n) == 0) {
+            if (language)
+                *language = e->language;
             return e->chars;
+        }
     }
     char *s = arena_alloc(&ps->tree->strings, n + 1);
     if (!s)
@@ -190,8 +220,10 @@ static const char *token_text(parser *ps)
     memcpy(s, text, n);
     s[n] = '\0';
     /* Names are identifiers, far shorter than 2^32 bytes. */
-    ps->names[k] = (name_entry){s, (uint32_t)n, h};
+    ps->names[k] = (name_entry){s, language_word(s), (uint32_t)n, h};
     ps->name_count++;
+    if (language)
+        *language = ps->names[k].language;
     return s;
 }
 
@@ -453,23 +485,6 @@ static sc_status close_node(parser *ps, parse_node *node)
     return SC_OK;
 }
 
-/* What a name at the start of a statement says when OpenSCAD's language
- * uses it and its CSG export never writes it: the keywords, the flow
- * control and echo modules, and the transforms (the export writes every
- * transform as multmatrix). NULL for every other name, which is a node. */
-static const char *language_word(const char *name)
-{
-    static const char *const words[] = {
-        "module",   "function",  "include", "use",   "for",    "if",
-        "else",     "let",       "each",    "echo",  "assert", "assign",
-        "children", "translate", "rotate",  "scale", "mirror",
-    };
-    for (size_t i = 0; i < sizeof words / sizeof words[0]; i++)
-        if (strcmp(words[i], name) == 0)
-            return words[i];
-    return NULL;
-}
-
 /* One open statement of the walk in parse_statements: a node whose child
  * statement has not begun (AWAIT) or is a block (BLOCK), or a block
  * without a node (BARE), whose statements belong to the enclosing node. */
@@ -559,12 +574,12 @@ static sc_status parse_node_head(parser *ps, walk *w, parse_node **top_tail)
     }
     arena_mark mark = arena_save(&tree->mem);
     parse_node *node = arena_calloc(&tree->mem, 1, sizeof *node);
-    if (!node || !(node->name = token_text(ps)))
+    const char *word = NULL;
+    if (!node || !(node->name = token_name(ps, &word)))
         return err_nomem(ps->error, NULL);
     node->loc = token_loc(ps);
     node->modifiers = (uint8_t)modifiers;
     node->depth = (uint16_t)depth;
-    const char *word = language_word(node->name);
     if (word)
         return language_error(ps, node->loc, "'%s'", word);
     if ((st = advance(ps)) != SC_OK)
