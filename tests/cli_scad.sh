@@ -4,7 +4,9 @@
 # directory is gone afterwards, a source OpenSCAD rejects gives OpenSCAD's
 # last message, and without openscad in PATH the error says so. The
 # conversion part is skipped (exit 77, reported as skipped) when openscad
-# is missing; the missing-OpenSCAD message is checked either way.
+# is missing; the missing-OpenSCAD message is checked either way. A .csg
+# beyond OpenSCAD's CSG export is converted the same way, with a note; -D
+# passes through to OpenSCAD in every command and under mpirun.
 #
 # Run as: bash cli_scad.sh <path-to-spancast> <source-dir> <work-dir>
 . "$(dirname "$0")/testlib.sh"
@@ -106,6 +108,87 @@ warns_with empty.scad "empty.scad: warning: the model is empty (nothing to rende
 printf 'group();\n' >empty.csg
 warns_with empty.csg "empty.csg: warning: the model is empty (nothing to render)"
 [ -z "$(ls -A "$work/tmp")" ] || fail "temporary files left: $(ls -A "$work/tmp")"
+
+# Warnings at the converted text are put on the source, as its errors are.
+printf 'cube(1);\nscale([1, 1, 0]) cube(1);\n' >flat.scad
+warns_with flat.scad "flat.scad: warning: singular transform: subtree is empty (line 2 of OpenSCAD's export)"
+
+# A .csg that uses more of OpenSCAD's language is converted like a .scad,
+# with a note, and renders as the CSG OpenSCAD exports for it.
+printf 'group() {\n  size = 2;\n  multmatrix([[1, 0, 0, 1], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]) cube(size);\n}\n' >vars.csg
+printf 'group() {\n  multmatrix([[1, 0, 0, 1], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]) {\n    cube(size = [2, 2, 2], center = false);\n  }\n}\n' >vars-plain.csg
+note="vars.csg: note: uses OpenSCAD's language beyond its CSG export (line 2); converting it with openscad"
+warns_with vars.csg "$note"
+mv vars.csg.png vars.png
+"$bin" render vars-plain.csg -o plain.png -q || fail "vars-plain.csg did not render"
+cmp -s vars.png plain.png || fail "vars.csg: differs from its CSG export"
+printf 'module part(s) { cube(s); }\nfor (i = [0 : 2]) translate([3 * i, 0, 0]) part(1 + i);\n' >loops.csg
+warns_with loops.csg "loops.csg: note: uses OpenSCAD's language beyond its CSG export (line 1); converting it with openscad"
+"$bin" info loops.csg 2>/dev/null | grep -q 'bounds: \[0, 0, 0\] to \[9, 3, 3\]' ||
+    fail "loops.csg: bounds $("$bin" info loops.csg 2>&1)"
+# OpenSCAD's own error, at its position, after the note; an error in the
+# converted text names the .csg, with the export's line.
+printf 'cube(1);\nx = ;\n' >badlang.csg
+fails_with badlang.csg "badlang.csg: note: uses OpenSCAD's language beyond its CSG export (line 2); converting it with openscad
+badlang.csg:2:1: error: Parser error: syntax error"
+printf 'd = 2;\nprojection() cube(d);\n' >projlang.csg
+fails_with projlang.csg "projlang.csg: note: uses OpenSCAD's language beyond its CSG export (line 1); converting it with openscad
+projlang.csg: error: 'projection' is not supported yet (line 1 of OpenSCAD's export)"
+[ -z "$(ls -A "$work/tmp")" ] || fail "temporary files left: $(ls -A "$work/tmp")"
+
+# -D NAME=VALUE passes through to OpenSCAD, as OpenSCAD's -D: in order (the
+# last wins), as one word or two, for every command that converts.
+printf 'size = 1;\nh = 1;\ncube([size, size, h]);\n' >d.scad
+bounds() { "$bin" info "$@" 2>&1 | sed -n 's/^bounds: *//p'; }
+[ "$(bounds d.scad -D size=3)" = "[0, 0, 0] to [3, 3, 1]" ] || fail "-D size=3: $(bounds d.scad -D size=3)"
+[ "$(bounds -Dsize=4 d.scad -D h=2)" = "[0, 0, 0] to [4, 4, 2]" ] ||
+    fail "-Dsize=4 -D h=2: $(bounds -Dsize=4 d.scad -D h=2)"
+[ "$(bounds d.scad -D size=3 -D size=5)" = "[0, 0, 0] to [5, 5, 1]" ] || fail "-D: the last does not win"
+[ "$(bounds d.scad -D 'size=2+1')" = "[0, 0, 0] to [3, 3, 1]" ] || fail "-D with an expression"
+printf 'cube([size, size, 1]);\nsize = 1;\n' >dcsg.csg
+[ "$(bounds dcsg.csg -D size=6 | tail -1)" = "[0, 0, 0] to [6, 6, 1]" ] || fail "-D on a converted .csg"
+"$bin" measure d.scad -D size=2 --json -q >m.txt || fail "measure -D failed"
+grep -q '"volume": {"value": 4' m.txt || fail "measure -D: $(cat m.txt)"
+"$bin" render d.scad -D size=2 -o d2.png -q && "$bin" render d.scad -o d1.png -q ||
+    fail "render -D failed"
+cmp -s d1.png d2.png && fail "render -D: the same image with and without -D"
+"$bin" compare d.scad "$work/d.scad" -D size=2 --imgsize=40,30 -q >/dev/null 2>&1 ||
+    fail "compare -D: the model differs from itself"
+printf 'render d.scad -o b1.png -q\n' >jobs.txt
+"$bin" batch jobs.txt -D size=2 >/dev/null 2>&1 || fail "batch -D failed"
+cmp -s b1.png d2.png || fail "batch -D: the job did not get -D"
+# -D for a file spancast reads itself has no effect, and says so.
+printf 'cube(1);\n' >plain.csg
+"$bin" info plain.csg -D size=2 >/dev/null 2>err.txt || fail "info plain.csg -D failed"
+[ "$(cat err.txt)" = "plain.csg: warning: -D is passed to OpenSCAD, which does not convert this file" ] ||
+    fail "plain.csg -D: got '$(cat err.txt)'"
+for bad in "-D" "-D size" "-D =2"; do
+    "$bin" info d.scad $bad >/dev/null 2>err.txt
+    rc=$?
+    [ "$rc" = 2 ] || fail "info d.scad $bad: exit $rc (want 2)"
+    case "$(cat err.txt)" in
+    "spancast: error: -D expects NAME=VALUE, as OpenSCAD's -D"*) ;;
+    *) fail "info d.scad $bad: got '$(cat err.txt)'" ;;
+    esac
+done
+[ -z "$(ls -A "$work/tmp")" ] || fail "temporary files left: $(ls -A "$work/tmp")"
+
+# spancast-mpi converts once: -D reaches it, the .csg beyond the export is
+# converted, and an error in the converted text names the source.
+if command -v mpirun >/dev/null && [ -x "$(dirname "$bin")/spancast-mpi" ]; then
+    export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
+    mpirun_test -np 2 "$bin" render d.scad -D size=2 -o np2.png -q >out.txt 2>&1 ||
+        fail "mpirun -D: $(tail -n 5 out.txt)"
+    cmp -s np2.png d2.png || fail "mpirun -D: the image differs"
+    mpirun_test -np 2 "$bin" render vars.csg -o np2.png -q >out.txt 2>&1 ||
+        fail "mpirun vars.csg: $(tail -n 5 out.txt)"
+    cmp -s np2.png plain.png || fail "mpirun vars.csg: the image differs"
+    grep -qF "$note" out.txt || fail "mpirun vars.csg: no note: $(cat out.txt)"
+    mpirun_test -np 2 "$bin" render proj.scad -o np2.png -q >out.txt 2>&1
+    grep -qF "proj.scad: error: 'projection' is not supported yet (line 1 of OpenSCAD's export)" out.txt ||
+        fail "mpirun proj.scad: $(cat out.txt)"
+    grep -q "\.csg" out.txt && fail "mpirun proj.scad: names a .csg: $(cat out.txt)"
+fi
 
 if [ "$fails" != 0 ]; then
     echo "$fails failure(s)"

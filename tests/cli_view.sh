@@ -13,7 +13,7 @@
 # the printed options pixel for pixel; a click prints what the ray hit,
 # rewriting the model makes the new geometry appear with the camera kept,
 # a broken file keeps the old image and shows its error (title, red frame,
-# stderr), and Ctrl+Q quits.
+# stderr), a warning shows in the title and on stderr, and Ctrl+Q quits.
 # render --watch renders again when the model or a file a .scad includes
 # changes, keeps the last image when the model breaks, and dies of SIGINT.
 #
@@ -396,6 +396,14 @@ wait_title "* - done - load #3 *" 30 || fail "fixed model: not reloaded in 30 s"
 case "$(title)" in
 *ERROR*) fail "fixed model: the error stayed in the title" ;;
 esac
+
+# a model with a warning: on stderr as render prints it, and in the title
+checks=$((checks + 1))
+printf 'cube([20, 20, 30]) sphere(r = 8);\n' >m.csg
+want="m.csg:1:1: 'cube' takes no children; they are ignored"
+wait_title "* - WARNING $want - done - load #4 *" 30 || fail "warning: not in the title"
+grep -qxF "m.csg:1:1: warning: 'cube' takes no children; they are ignored" view.err ||
+    fail "warning: not on stderr: $(cat view.err)"
 
 # Ctrl+Q quits
 checks=$((checks + 1))

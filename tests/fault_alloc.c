@@ -90,9 +90,9 @@ static long fail_each_load(const char *name, const char *text, size_t length)
 static void test_models(void **state)
 {
     (void)state;
-    const char *files[] = {"models/bracket.csg", "tests/data/openscad_export.csg",
-                           "models/pulley.csg", "models/extruded_plate.csg",
-                           "models/name_plate.csg"};
+    const char *files[] = {"models/bracket.csg",    "tests/data/openscad_export.csg",
+                           "models/pulley.csg",     "models/extruded_plate.csg",
+                           "models/name_plate.csg", "tests/data/hand_written.csg"};
     for (size_t k = 0; k < sizeof files / sizeof files[0]; k++) {
         size_t length;
         char *text = read_model(files[k], &length);

@@ -14,6 +14,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 
 #include "build/build.h"
 #include "model/colors.h"
@@ -1046,9 +1047,104 @@ static void test_warning_order(void **state)
     sc_scene_release(s);
 }
 
+/* The input forms of docs/input.md through the library: a hand-written
+ * .csg in OpenSCAD's statement forms builds the tree its braced form
+ * builds; OpenSCAD's language beyond the export is an error at its first
+ * use (the library runs no OpenSCAD); a .stl path is the model that
+ * imports it. */
+static void test_input_forms(void **state)
+{
+    (void)state;
+    sc_scene *s = NULL;
+    sc_error e;
+    char buf[1024];
+    const char *path = SPANCAST_SOURCE_DIR "/tests/data/hand_written.csg";
+    if (sc_scene_load(path, NULL, &s, &e) != SC_OK)
+        fail_msg("%s", sc_error_format(&e, buf, sizeof buf));
+    sc_scene *braced = load(
+        "difference() {\n"
+        "  multmatrix([[1, 0, 0, 0], [0, 0.707107, -0.707107, 0], [0, 0.707107, "
+        "0.707107, 0], [0, 0, 0, 1]]) {\n"
+        "    color(\"steelblue\", 0.5) { cube(size = [20, 20, 10], center = true); }\n"
+        "  }\n"
+        "  multmatrix([[1, 0, 0, 5], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]) {\n"
+        "    cylinder($fn = 0, $fa = 12, $fs = 2, h = 30, r1 = 3, r2 = 3, center = "
+        "true);\n"
+        "  }\n"
+        "  #multmatrix([[1, 0, 0, -5], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]) {\n"
+        "    sphere(r = 4);\n"
+        "  }\n"
+        "  *sphere(r = 50);\n"
+        "}\n"
+        "%multmatrix([[1, 0, 0, 30], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]) {\n"
+        "  group() { }\n"
+        "}\n");
+    sc_scene_info a, b;
+    sc_scene_info_init(&a);
+    sc_scene_info_init(&b);
+    assert_int_equal(sc_scene_get_info(s, &a, NULL), SC_OK);
+    assert_int_equal(sc_scene_get_info(braced, &b, NULL), SC_OK);
+    assert_int_equal(a.node_count, b.node_count);
+    assert_int_equal(a.leaf_count, 3);
+    assert_int_equal(a.leaf_count, b.leaf_count);
+    assert_int_equal(a.source_node_count, b.source_node_count);
+    assert_int_equal(a.depth, b.depth);
+    double lo[2][3], hi[2][3];
+    assert_true(sc_scene_bounds(s, lo[0], hi[0]));
+    assert_true(sc_scene_bounds(braced, lo[1], hi[1]));
+    assert_memory_equal(lo[0], lo[1], sizeof lo[0]);
+    assert_memory_equal(hi[0], hi[1], sizeof hi[0]);
+    sc_scene_release(s);
+    sc_scene_release(braced);
+
+    check_error("cube(1);\nsize = 2;\ncube(size);\n", SC_ERR_UNSUPPORTED,
+                "m.csg:2:1: error: an assignment ('size = ...') is OpenSCAD's language "
+                "beyond its CSG export");
+    check_error("translate([1, 0, 0]) cube(1);", SC_ERR_UNSUPPORTED,
+                "m.csg:1:1: error: 'translate' is OpenSCAD's language beyond its CSG "
+                "export");
+
+    /* A mesh path: the one-line import of it, errors on the whole file. */
+    mkdir(SPANCAST_TEST_WORK, 0777);
+    const char *stl = SPANCAST_TEST_WORK "/tet.stl";
+    const char *bad = SPANCAST_TEST_WORK "/bad.stl";
+    FILE *f = fopen(stl, "w");
+    assert_non_null(f);
+    fputs("solid t\n"
+          "facet normal 0 0 0\nouter loop\nvertex 0 0 0\nvertex 0 1 0\nvertex 1 0 0\n"
+          "endloop\nendfacet\n"
+          "facet normal 0 0 0\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 0 0 1\n"
+          "endloop\nendfacet\n"
+          "facet normal 0 0 0\nouter loop\nvertex 0 0 0\nvertex 0 0 1\nvertex 0 1 0\n"
+          "endloop\nendfacet\n"
+          "facet normal 0 0 0\nouter loop\nvertex 1 0 0\nvertex 0 1 0\nvertex 0 0 1\n"
+          "endloop\nendfacet\nendsolid t\n",
+          f);
+    fclose(f);
+    f = fopen(bad, "w");
+    assert_non_null(f);
+    fputs("solid b\nfacet normal 0 0 1\nouter loop\nvertex 0 0 x\n", f);
+    fclose(f);
+    s = NULL;
+    if (sc_scene_load(stl, NULL, &s, &e) != SC_OK)
+        fail_msg("%s", sc_error_format(&e, buf, sizeof buf));
+    sc_scene_info_init(&a);
+    assert_int_equal(sc_scene_get_info(s, &a, NULL), SC_OK);
+    assert_int_equal(a.leaf_count, 1);
+    assert_true(sc_scene_bounds(s, lo[0], hi[0]));
+    assert_near(hi[0][0], 1);
+    sc_scene_release(s);
+    s = (sc_scene *)1;
+    assert_int_equal(sc_scene_load(bad, NULL, &s, &e), SC_ERR_SEMANTIC);
+    assert_null(s);
+    assert_string_equal(e.file, bad);
+    assert_int_equal(e.line, 0);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_input_forms),
         cmocka_unit_test(test_cube),
         cmocka_unit_test(test_sphere),
         cmocka_unit_test(test_cylinder),

@@ -339,6 +339,143 @@ static char *nested(int n, const char *open, const char *leaf, const char *close
     return s;
 }
 
+/* The tree as text: each node as NAME/MODIFIERS/ARGUMENTS(CHILDREN), for
+ * comparing the forms of one tree. */
+static void shape(const parse_node *n, char *out, size_t size)
+{
+    for (; n; n = n->next) {
+        size_t used = strlen(out);
+        snprintf(out + used, size - used, "%s/%u/%u(", n->name, n->modifiers,
+                 n->arg_count);
+        shape(n->first_child, out, size);
+        used = strlen(out);
+        snprintf(out + used, size - used, ")");
+    }
+}
+
+/* a and b parse to the same tree, whole and streamed (the same number of
+ * nodes opened and closed, the same top-level child count). */
+static void check_same(const char *a, const char *b)
+{
+    char sa[1024] = "", sb[1024] = "";
+    parse_tree *ta = parse_ok(a), *tb = parse_ok(b);
+    shape(ta->first, sa, sizeof sa);
+    shape(tb->first, sb, sizeof sb);
+    assert_string_equal(sa, sb);
+    assert_int_equal(ta->count, tb->count);
+    assert_int_equal(ta->node_count, tb->node_count);
+    parse_tree_free(ta);
+    parse_tree_free(tb);
+    events ea = {0}, eb = {0};
+    sc_status st;
+    sc_error e;
+    parse_tree_free(stream(a, &ea, &st, &e));
+    assert_int_equal(st, SC_OK);
+    parse_tree_free(stream(b, &eb, &st, &e));
+    assert_int_equal(st, SC_OK);
+    assert_int_equal(ea.opens, eb.opens);
+    assert_int_equal(ea.closes, eb.closes);
+    assert_int_equal(ea.opens, ea.closes);
+    assert_int_equal(ea.top_children, eb.top_children);
+}
+
+/* OpenSCAD's grammar: a node's child statement may be one node without
+ * braces, a block, or ';'; a block after no node and ';' alone are
+ * statements of the enclosing node. */
+static void test_braceless(void **state)
+{
+    (void)state;
+    check_same("multmatrix([[1, 0, 0, 1], [0, 1, 0, 0], [0, 0, 1, 0]]) cube(1);",
+               "multmatrix([[1, 0, 0, 1], [0, 1, 0, 0], [0, 0, 1, 0]]) { cube(1); }");
+    check_same("color(\"red\", 0.5) sphere(5);", "color(\"red\", 0.5) { sphere(5); }");
+    check_same(
+        "group() multmatrix(m = []) color(\"red\") cube(1); sphere(2);",
+        "group() { multmatrix(m = []) { color(\"red\") { cube(1); } } } sphere(2);");
+    check_same(
+        "difference() { cube(2); multmatrix([]) cylinder(h = 3); sphere(1); }",
+        "difference() { cube(2); multmatrix([]) { cylinder(h = 3); } sphere(1); }");
+    check_same("union() { { cube(1); { sphere(1); } } ; ; } ;; {} {;}",
+               "union() { cube(1); sphere(1); }");
+    check_same("{ cube(1); } sphere(2);", "cube(1); sphere(2);");
+    check_same("group() ;", "group() { }");
+    check_same("#multmatrix([]) %cube(1);", "#multmatrix([]) { %cube(1); }");
+    check_same("!group() *cube(1); #%sphere(1);", "!group() { *cube(1); } #%sphere(1);");
+    check_same("cube(1) sphere(2);", "cube(1) { sphere(2); }");
+    parse_tree *t = parse_ok("multmatrix([]) cube(1);");
+    assert_false(t->first->has_block);
+    assert_int_equal(t->first->child_count, 1);
+    assert_ptr_equal(t->first->first_child->parent, t->first);
+    parse_tree_free(t);
+    /* A chain without braces is as deep as the limit allows, without
+     * recursion, and one level more is the limit's error. */
+    char *text = nested(PARSE_MAX_DEPTH - 1, "group() ", "cube();", "");
+    t = parse_ok(text);
+    assert_int_equal(t->node_count, PARSE_MAX_DEPTH);
+    parse_tree_free(t);
+    free(text);
+    text = nested(PARSE_MAX_DEPTH, "group() ", "cube();", "");
+    check_error_status(text, SC_ERR_LIMIT,
+                       "m.csg:1:80001: error: too many nested nodes (limit is 10000)");
+    free(text);
+    text = nested(PARSE_MAX_DEPTH + 1, "{", "", "}");
+    check_error_status(text, SC_ERR_LIMIT,
+                       "m.csg:1:10001: error: too many nested blocks (limit is 10000)");
+    free(text);
+}
+
+static void check_language(const char *text, const char *expected)
+{
+    check_error_status(text, SC_ERR_UNSUPPORTED, expected);
+    parse_tree *t = NULL;
+    sc_error e;
+    assert_int_equal(parse_text("m.csg", text, strlen(text), &t, &e), SC_ERR_UNSUPPORTED);
+    assert_true(parse_error_is_language(&e));
+}
+
+/* Where a file goes on in OpenSCAD's language, the error says so, at the
+ * first place the CSG grammar ends; a plain syntax error does not. */
+static void test_language(void **state)
+{
+    (void)state;
+    const char *tail = " is OpenSCAD's language beyond its CSG export";
+    char want[256];
+#define LANGUAGE(text, pos, what)                                                        \
+    do {                                                                                 \
+        snprintf(want, sizeof want, "m.csg:%s: error: %s%s", pos, what, tail);           \
+        check_language(text, want);                                                      \
+    } while (0)
+    LANGUAGE("cube(1);\nsize = 2;", "2:1", "an assignment ('size = ...')");
+    LANGUAGE("$fn = 32;", "1:1", "an assignment ('$fn = ...')");
+    LANGUAGE("module m() { cube(1); }", "1:1", "'module'");
+    LANGUAGE("function f(x) = x;", "1:1", "'function'");
+    LANGUAGE("include <lib.scad>", "1:1", "'include'");
+    LANGUAGE("use <lib.scad>\ncube(1);", "1:1", "'use'");
+    LANGUAGE("group() for (i = [1, 2]) cube(1);", "1:9", "'for'");
+    LANGUAGE("if (true) cube(1);", "1:1", "'if'");
+    LANGUAGE("translate([1, 0, 0]) rotate(45) cube(1);", "1:1", "'translate'");
+    LANGUAGE("cube(size);", "1:6", "a variable or function ('size')");
+    LANGUAGE("cube(size, center = true);", "1:6", "a variable or function ('size')");
+    LANGUAGE("cube(size = s);", "1:13", "a variable or function ('s')");
+    LANGUAGE("cube(f(2));", "1:6", "a variable or function ('f')");
+    LANGUAGE("cube([1, 2, x]);", "1:13", "a variable or function ('x')");
+    LANGUAGE("cube(2 * 3);", "1:8", "an expression ('*')");
+    LANGUAGE("cube([1, 2] * 3);", "1:13", "an expression ('*')");
+    LANGUAGE("cube([1, 2 % 3]);", "1:12", "an expression ('%')");
+    LANGUAGE("cube((2));", "1:6", "an expression ('(')");
+    LANGUAGE("cube(1 + 2);", "1:8", "an operator ('+')");
+    LANGUAGE("cube(-s);", "1:6", "an operator ('-')");
+    LANGUAGE("cube(a < 2);", "1:8", "an operator ('<')");
+    LANGUAGE("cube(1 < 2);", "1:8", "an operator ('<')");
+    LANGUAGE("a(v = [0 : 3]);", "1:10", "an operator (':')");
+    LANGUAGE("a(v = [1, 2][0]);", "1:13", "an expression ('[')");
+#undef LANGUAGE
+    /* Plain syntax errors stay syntax errors. */
+    check_error("cube(1;", "m.csg:1:7: error: expected ')' (to close '(' at line 1)");
+    check_error("cube(1) }", "m.csg:1:9: error: expected ';', '{' or a child node after "
+                             "node 'cube'");
+    check_error("cube(@);", "m.csg:1:6: error: unexpected character '@'");
+}
+
 static void test_deep_nodes(void **state)
 {
     (void)state;
@@ -410,20 +547,23 @@ static void test_errors(void **state)
     check_error("group() {\n  cube();\n",
                 "m.csg:3:1: error: expected '}' (to close '{' at line 1)");
     check_error("cube();\n}", "m.csg:2:1: error: unmatched '}'");
-    check_error("{ cube(); }", "m.csg:1:1: error: expected a node name before '{'");
     check_error("# { cube(); }", "m.csg:1:3: error: expected a node name before '{'");
     check_error("cube(); 5;", "m.csg:1:9: error: expected a node name, found a number");
     check_error("%", "m.csg:1:2: error: expected a node name, found end of file");
     check_error("cube(); = 1", "m.csg:1:9: error: expected a node name, found '='");
     check_error("cube;", "m.csg:1:5: error: expected '(' after node name 'cube'");
-    check_error("cube()", "m.csg:1:7: error: expected ';' or '{' after node");
-    check_error("cube() cube();", "m.csg:1:8: error: expected ';' or '{' after node");
+    check_error("cube()",
+                "m.csg:1:7: error: expected ';', '{' or a child node after node 'cube'");
+    check_error("cube() 5;",
+                "m.csg:1:8: error: expected ';', '{' or a child node after node 'cube'");
+    check_error("group() multmatrix([]) }", "m.csg:1:24: error: expected ';', '{' or a "
+                                            "child node after node 'multmatrix'");
+    check_error("{ cube(); ", "m.csg:1:11: error: expected '}' (to close '{' at line 1)");
     check_error("cube(size = );", "m.csg:1:13: error: expected a value, found ')'");
     check_error("cube(, 1);", "m.csg:1:6: error: expected a value, found ','");
     check_error("a([1, , 2]);", "m.csg:1:7: error: expected a value, found ','");
     check_error("a([1, 2", "m.csg:1:8: error: expected ']' (to close '[' at line 1)");
-    check_error("a(x);", "m.csg:1:4: error: expected '=' after argument name 'x'");
-    check_error("a(x = y);", "m.csg:1:7: error: expected a value, found a name");
+    check_error("a(x 1);", "m.csg:1:5: error: expected '=' after argument name 'x'");
     check_error("a(", "m.csg:1:3: error: expected a value, found end of file");
     /* Lexer errors come through unchanged. */
     check_error("cube(size = @);", "m.csg:1:13: error: unexpected character '@'");
@@ -500,6 +640,8 @@ int main(void)
         cmocka_unit_test(test_deep_nodes),
         cmocka_unit_test(test_deep_vectors),
         cmocka_unit_test(test_errors),
+        cmocka_unit_test(test_braceless),
+        cmocka_unit_test(test_language),
         cmocka_unit_test(test_stream),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

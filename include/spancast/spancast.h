@@ -145,7 +145,12 @@ void sc_load_options_init_size(sc_load_options *options, size_t size);
     sc_load_options_init_size((options), sizeof *(options))
 
 /* Loads and compiles a model file; options may be NULL (the defaults).
- * On success *scene owns everything it needs (release with
+ * A path ending in .stl or .off (any case) is a mesh, loaded as
+ * sc_scene_load_mesh loads it; any other file is the .csg grammar, in
+ * which OpenSCAD's language beyond its CSG export (assignments,
+ * expressions, modules, ...) is SC_ERR_UNSUPPORTED at its first use (the
+ * library does not run OpenSCAD; the spancast tool converts such a file
+ * with it). On success *scene owns everything it needs (release with
  * sc_scene_release); on failure *scene is NULL and error says why:
  * SC_ERR_IO (the file), SC_ERR_SYNTAX, SC_ERR_SEMANTIC, SC_ERR_UNSUPPORTED
  * and SC_ERR_LIMIT with the position in the file, SC_ERR_NOMEM,

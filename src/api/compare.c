@@ -13,7 +13,10 @@
  * at the first grid.
  *
  * A mesh is loaded as the one-line model import(file = "PATH"), so it is
- * read, checked and cast exactly as an import in a model is (meshes.md).
+ * read, checked and cast exactly as an import in a model is (meshes.md);
+ * the model is named by the path as given, and its errors and warnings
+ * are put on that file (a position in the one-line model would point
+ * into the mesh at a place that says nothing).
  */
 #define _XOPEN_SOURCE 700
 
@@ -26,6 +29,7 @@
 #include <string.h>
 
 #include "api/lines.h"
+#include "api/mesh_model.h"
 #include "api/quad.h"
 #include "base/arena.h"
 #include "api/options.h"
@@ -36,6 +40,51 @@
 #include "csg/span.h"
 #include "render/render.h"
 
+int mesh_model_is_mesh(const char *path)
+{
+    size_t n = strlen(path);
+    if (n < 5 || path[n - 4] != '.')
+        return 0;
+    char ext[4];
+    for (int i = 0; i < 3; i++)
+        ext[i] = (char)(path[n - 3 + i] | 32);
+    ext[3] = '\0';
+    return strcmp(ext, "stl") == 0 || strcmp(ext, "off") == 0;
+}
+
+sc_status mesh_model_text(const char *path, char **text, size_t *length, sc_error *error)
+{
+    *text = NULL;
+    *length = 0;
+    char *full = realpath(path, NULL);
+    if (!full)
+        return err_set(error, SC_ERR_IO, NULL, "cannot open '%s': %s", path,
+                       strerror(errno));
+    size_t n = strlen(full);
+    char *t = n < SIZE_MAX / 2 - 32 ? malloc(n * 2 + 32) : NULL;
+    if (!t) {
+        free(full);
+        return err_nomem(error, NULL);
+    }
+    size_t k = (size_t)sprintf(t, "import(file = \"");
+    for (size_t i = 0; i < n; i++) {
+        if (full[i] == '"' || full[i] == '\\')
+            t[k++] = '\\';
+        t[k++] = full[i];
+    }
+    k += (size_t)sprintf(t + k, "\");\n");
+    free(full);
+    *text = t;
+    *length = k;
+    return SC_OK;
+}
+
+void mesh_model_unplace(sc_error *e, const char *path)
+{
+    if (e->line == 1 && strcmp(e->file, path) == 0)
+        e->line = e->column = 0;
+}
+
 sc_status sc_scene_load_mesh(const char *path, const sc_load_options *options,
                              sc_scene **scene, sc_error *error)
 {
@@ -43,28 +92,17 @@ sc_status sc_scene_load_mesh(const char *path, const sc_load_options *options,
     *scene = NULL;
     if (!path)
         return err_set(error, SC_ERR_ARGUMENT, NULL, "no file name");
-    char *full = realpath(path, NULL);
-    if (!full)
-        return err_set(error, SC_ERR_IO, NULL, "cannot open '%s': %s", path,
-                       strerror(errno));
-    /* The path as a string of the model grammar: quote and backslash escaped. */
-    size_t n = strlen(full);
-    char *text = malloc(n * 2 + 32);
-    if (!text) {
-        free(full);
-        return err_nomem(error, NULL);
-    }
-    size_t k = 0;
-    k += (size_t)sprintf(text, "import(file = \"");
-    for (size_t i = 0; i < n; i++) {
-        if (full[i] == '"' || full[i] == '\\')
-            text[k++] = '\\';
-        text[k++] = full[i];
-    }
-    k += (size_t)sprintf(text + k, "\");\n");
-    free(full);
-    sc_status st = sc_scene_load_string(path, text, k, options, scene, error);
+    char *text;
+    size_t k;
+    sc_status st = mesh_model_text(path, &text, &k, error);
+    if (st != SC_OK)
+        return st;
+    st = sc_scene_load_string(path, text, k, options, scene, error);
     free(text);
+    if (st != SC_OK)
+        mesh_model_unplace(error, path);
+    for (size_t i = 0; *scene && i < (*scene)->warning_count; i++)
+        mesh_model_unplace(&(*scene)->warnings[i], path);
     return st;
 }
 

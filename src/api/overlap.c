@@ -23,6 +23,7 @@
 #include <string.h>
 
 #include "api/lines.h"
+#include "api/mesh_model.h"
 #include "api/quad.h"
 #include "base/arena.h"
 #include "api/options.h"
@@ -179,8 +180,13 @@ sc_status sc_objects_load(const char *path, const sc_load_options *options,
     }
     const char *why = NULL;
     size_t length = 0;
-    char *text = file_read(path, (size_t)1 << 31, &length, &why);
-    if (!text) {
+    char *text = NULL;
+    if (mesh_model_is_mesh(path)) { /* one object: the model that imports it */
+        if ((st = mesh_model_text(path, &text, &length, error)) != SC_OK) {
+            sc_objects_release(o);
+            return st;
+        }
+    } else if (!(text = file_read(path, (size_t)1 << 31, &length, &why))) {
         sc_objects_release(o);
         return err_set(error, SC_ERR_IO, NULL, "cannot read '%s': %s", path, why);
     }
@@ -189,6 +195,8 @@ sc_status sc_objects_load(const char *path, const sc_load_options *options,
     if (st == SC_OK)
         st = model_lower(o->syntax, &o->typed, error);
     if (st) {
+        if (mesh_model_is_mesh(path))
+            mesh_model_unplace(error, path);
         sc_objects_release(o);
         return st;
     }
@@ -219,6 +227,8 @@ sc_status sc_objects_load(const char *path, const sc_load_options *options,
             o, k, (lo.faithful ? BUILD_FAITHFUL : 0) | (lo.strict ? BUILD_STRICT : 0),
             error);
         if (st) {
+            if (mesh_model_is_mesh(path))
+                mesh_model_unplace(error, path);
             sc_objects_release(o);
             return st;
         }

@@ -1,6 +1,7 @@
 /* Loading a scene: the public sc_scene_* calls.
  *
- * sc_scene_load reads the whole file into memory and, like
+ * sc_scene_load reads a mesh file (.stl, .off) as the model that imports
+ * it (sc_scene_load_mesh), and any other file whole into memory and, like
  * sc_scene_load_string, runs the scene stages (parse, lower, build) and
  * keeps only their result: the compiled CSG tree and the warnings. Each
  * stage's input is freed as soon as the stages after it no longer need it
@@ -17,6 +18,7 @@
 #include <string.h>
 #include <sys/stat.h>
 
+#include "api/mesh_model.h"
 #include "api/options.h"
 #include "base/error.h"
 #include "base/mem.h"
@@ -173,6 +175,8 @@ sc_status sc_scene_load(const char *path, const sc_load_options *options,
     *scene = NULL;
     if (!path)
         return err_set(error, SC_ERR_ARGUMENT, NULL, "no file name");
+    if (mesh_model_is_mesh(path))
+        return sc_scene_load_mesh(path, options, scene, error);
     char *text;
     size_t length;
     sc_status st = read_file(path, &text, &length, error);

@@ -42,6 +42,7 @@
 #include <unistd.h>
 
 #include "cli/cli.h"
+#include "cli/scad.h"
 #include "cli/dist.h"
 #include "formats/file.h"
 
@@ -295,15 +296,27 @@ static sc_status run_job(void *user, int k, void **result, sc_error *error)
     int fd = mkstemp(log);
     if (fd >= 0)
         unlink(log);
-    char **argv = calloc((size_t)job->argc + 3, sizeof *argv);
+    /* The batch's own -D settings go to every job, after its command. */
+    int defines = scad_define_count();
+    char **argv = calloc((size_t)job->argc + 3 + 2 * (size_t)defines, sizeof *argv);
     double start = seconds_now();
     int spawned = ENOMEM;
     pid_t pid = 0;
     if (argv) {
         argv[0] = (char *)b->program;
-        memcpy(argv + 1, job->argv, (size_t)job->argc * sizeof *argv);
+        int n = 1;
+        if (job->argc)
+            argv[n++] = job->argv[0];
+        for (int d = 0; d < defines; d++) {
+            argv[n++] = "-D";
+            argv[n++] = (char *)scad_define(d);
+        }
+        if (job->argc > 1) {
+            memcpy(argv + n, job->argv + 1, (size_t)(job->argc - 1) * sizeof *argv);
+            n += job->argc - 1;
+        }
         if (b->strict && job->argc > 0 && strcmp(job->argv[0], "bench") != 0)
-            argv[job->argc + 1] = (char *)"--strict";
+            argv[n] = (char *)"--strict";
         posix_spawn_file_actions_t actions;
         posix_spawn_file_actions_init(&actions);
         posix_spawn_file_actions_addopen(&actions, 0, "/dev/null", O_RDONLY, 0);

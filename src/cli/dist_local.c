@@ -79,8 +79,7 @@ void dist_share_lines(sc_measure_options *options)
 sc_status dist_load(const char *path, const sc_load_options *options, sc_scene **scene,
                     sc_error *error)
 {
-    return scad_is_source(path) ? scad_load(path, options, scene, error)
-                                : sc_scene_load(path, options, scene, error);
+    return scad_load_model(path, options, scene, error, NULL, NULL, NULL, NULL);
 }
 
 sc_status dist_run(const dist_work *work, sc_error *error)

@@ -42,6 +42,7 @@
 
 #include <errno.h>
 #include <fcntl.h>
+#include <limits.h>
 #include <math.h>
 #include <signal.h>
 #include <stdio.h>
@@ -96,7 +97,16 @@ static const char usage_text[] =
     "MODEL may be a .scad file: OpenSCAD (in PATH) converts it first; its\n"
     "WARNING lines are shown as warnings, and an ERROR (even one OpenSCAD exits\n"
     "0 after, as a failing assert()) fails the command. A model that draws\n"
-    "nothing gives a warning.\n"
+    "nothing gives a warning. A .csg that uses more of OpenSCAD's language\n"
+    "(variables, modules, for, ...) is converted the same way, with a note.\n"
+    "MODEL may also be a mesh, .stl (ASCII or binary) or .off, taken as the\n"
+    "model import(\"MODEL\");.\n"
+    "\n"
+    "render, info, spans, inside, measure, compare and batch options (OpenSCAD's):\n"
+    "  -D NAME=VALUE          set a variable of a model OpenSCAD converts, as\n"
+    "                         OpenSCAD's -D (repeatable, in order; batch passes\n"
+    "                         them to every job)\n"
+    "\n"
     "'measure' prints volume, area, centroid, inertia and the tight box, each\n"
     "with an error bound (--tolerance, relative, default 1e-4); 'overlaps' the\n"
     "pairs of top-level objects that share volume, to --tolerance (default\n"
@@ -691,24 +701,31 @@ static sc_scene *load(const char *path, int faithful, watch_set *watched)
         watch_add_file(watched, path);
     scad_stop stop = {&cli_stop, cli_loading_flag()};
     sc_status st;
+    int converted = 0;
     if (dist_size() > 1) {
         st = dist_load(path, &lo, &scene, &error); /* rank 0 reads */
-    } else if (scad_is_source(path)) {
-        st = scad_load_files(path, &lo, &scene, &error, watched ? watch_add_file : NULL,
-                             watched, &stop);
+        converted = scad_is_source(path);
     } else {
-        cli_loading(1);
-        st = sc_scene_load(path, &lo, &scene, &error);
-        cli_loading(0);
+        st = scad_load_model(path, &lo, &scene, &error, watched ? watch_add_file : NULL,
+                             watched, &stop, &converted);
     }
     if (st != SC_OK) {
         if (!cli_stop)
             print_error(&error);
         return NULL;
     }
+    /* Warnings at the converted text are put on the source, as its errors
+     * are (scad_blame). */
+    char name[PATH_MAX + 16] = "";
+    if (converted && !scad_converted_name(path, name, sizeof name))
+        name[0] = '\0';
     size_t warnings = dist_rank() == 0 ? sc_scene_warning_count(scene) : 0;
-    for (size_t k = 0; k < warnings; k++)
-        print_warning(sc_scene_warning(scene, k));
+    for (size_t k = 0; k < warnings; k++) {
+        sc_error w = *sc_scene_warning(scene, k);
+        if (name[0])
+            scad_blame(&w, name, path);
+        print_warning(&w);
+    }
     double lo3[3], hi3[3];
     if (dist_rank() == 0 && !sc_scene_bounds(scene, lo3, hi3))
         fprintf(stderr, "%s: warning: the model is empty (nothing to render)\n", path);
@@ -1161,28 +1178,48 @@ int main(int argc, char **argv)
     if (limited)
         return limited;
     if (argc > 1 && !strcmp(argv[1], "view"))
-        return run_view(argv); /* spancast-view reads its own --help */
+        return run_view(argv); /* spancast-view reads its own --help and -D */
+    /* spancast-mpi (dist_enter) reads its own -D: it gets argv whole. */
+    int whole_argc = argc;
+    char **whole = malloc(((size_t)argc + 1) * sizeof *whole);
+    if (!whole) {
+        fputs("spancast: error: out of memory\n", stderr);
+        return EXIT_FAILED;
+    }
+    memcpy(whole, argv, ((size_t)argc + 1) * sizeof *whole);
+    int defined = scad_take_defines(&argc, argv);
+    if (defined) {
+        free(whole);
+        return defined;
+    }
     for (int k = 1; k < argc && strcmp(argv[k], "--"); k++) {
         if (!strcmp(argv[k], "--help") || !strcmp(argv[k], "-h")) {
+            free(whole);
             fputs(usage_text, stdout);
             return 0;
         }
         if (!strcmp(argv[k], "--version")) {
+            free(whole);
             printf("spancast %s\nmpi: %s\n", SPANCAST_VERSION_STRING,
                    SPANCAST_MPI_SUPPORT);
             return 0;
         }
     }
-    if (argc < 2)
+    if (argc < 2) {
+        free(whole);
         return cli_usage_error("missing command (try 'spancast --help')");
+    }
     const char *command = argv[1];
     if (!strcmp(command, "render") || !strcmp(command, "batch") ||
         !strcmp(command, "measure") || !strcmp(command, "overlaps") ||
         !strcmp(command, "compare")) {
-        int st = dist_enter(argc, argv); /* under mpirun: spancast-mpi */
-        if (st >= 0)
+        int st = dist_enter(whole_argc, whole); /* under mpirun: spancast-mpi */
+        if (st >= 0) {
+            free(whole);
             return st;
+        }
     }
+    free(whole);
     if (!strcmp(command, "batch"))
         return cli_batch(argc, argv);
     if (!strcmp(command, "bench"))

@@ -139,27 +139,13 @@ static void broadcast_bytes(void *data, size_t size)
     }
 }
 
-/* Rank 0's part of loading: the text and the name to load it under. */
-static sc_status read_model(const char *path, const sc_load_options *options, char **text,
-                            size_t *size, char *name, size_t name_size, sc_error *error)
+/* Rank 0's part of loading: the text and the name to load it under, as
+ * the commands take MODEL (scad_read_model). */
+static sc_status read_model(const char *path, char **text, size_t *size, char *name,
+                            size_t name_size, sc_error *error)
 {
-    if (scad_is_source(path))
-        return scad_convert(path, text, size, name, name_size, error, NULL, NULL,
-                            &(scad_stop){&cli_stop, NULL});
-    const char *why;
-    *text = file_read(path, SIZE_MAX / 2, size, &why);
-    if (!*text) {
-        /* The library's own message for a file it cannot read. */
-        sc_scene *scene = NULL;
-        sc_status st = sc_scene_load(path, options, &scene, error);
-        if (st == SC_OK) {
-            sc_scene_release(scene);
-            st = err_set(error, SC_ERR_IO, NULL, "cannot read '%s': %s", path, why);
-        }
-        return st;
-    }
-    snprintf(name, name_size, "%s", path);
-    return SC_OK;
+    return scad_read_model(path, text, size, name, name_size, error,
+                           &(scad_stop){&cli_stop, NULL});
 }
 
 sc_status dist_load(const char *path, const sc_load_options *options, sc_scene **scene,
@@ -168,14 +154,13 @@ sc_status dist_load(const char *path, const sc_load_options *options, sc_scene *
     *scene = NULL;
     int ranks = dist_size(), rank = dist_rank();
     if (ranks == 1)
-        return scad_is_source(path) ? scad_load(path, options, scene, error)
-                                    : sc_scene_load(path, options, scene, error);
+        return scad_load_model(path, options, scene, error, NULL, NULL, NULL, NULL);
     char *text = NULL, name[PATH_MAX + 16] = "";
     size_t size = 0;
     int64_t head[3] = {SC_OK, 0, 0}; /* status, text bytes, name bytes */
     memset(error, 0, sizeof *error);
     if (rank == 0) {
-        head[0] = read_model(path, options, &text, &size, name, sizeof name, error);
+        head[0] = read_model(path, &text, &size, name, sizeof name, error);
         head[1] = (int64_t)size;
         head[2] = (int64_t)strlen(name);
     }
@@ -194,7 +179,11 @@ sc_status dist_load(const char *path, const sc_load_options *options, sc_scene *
     }
     MPI_Bcast(name, (int)head[2] + 1, MPI_CHAR, 0, MPI_COMM_WORLD);
     broadcast_bytes(text, size);
-    sc_status st = sc_scene_load_string(name, text, size, options, scene, error);
+    /* A mesh's one-line model is loaded as one process loads it, for the
+     * same messages (each rank reads the mesh, as it reads an import). */
+    sc_status st = scad_is_mesh(path)
+                       ? sc_scene_load_mesh(path, options, scene, error)
+                       : sc_scene_load_string(name, text, size, options, scene, error);
     free(text);
     /* Agree: the first rank that failed, if any, says why. */
     int mine = st == SC_OK ? ranks : rank, first = ranks;
@@ -211,6 +200,10 @@ sc_status dist_load(const char *path, const sc_load_options *options, sc_scene *
     int status = st;
     MPI_Bcast(&status, 1, MPI_INT, first, MPI_COMM_WORLD);
     error->status = (sc_status)status;
+    /* An error in OpenSCAD's converted text is put on the source, as one
+     * load's is (scad.c), never on the name it was loaded under. */
+    if (rank == 0 && strcmp(name, path) != 0)
+        scad_blame(error, name, path);
     return (sc_status)status;
 }
 

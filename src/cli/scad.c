@@ -49,9 +49,18 @@
 #include <time.h>
 #include <unistd.h>
 
+#include "cli/cli.h"
 #include "formats/file.h"
+#include "syntax/parse.h"
 
 extern char **environ;
+
+/* The -D NAME=VALUE settings of the command line, in order
+ * (scad_take_defines): written once, before any command runs, as the
+ * process's memory limit is, and only read after that. */
+#define SCAD_MAX_DEFINES 256
+static const char *defines[SCAD_MAX_DEFINES];
+static int define_count;
 
 int scad_is_source(const char *path)
 {
@@ -61,6 +70,62 @@ int scad_is_source(const char *path)
     const char *e = path + n - 5;
     return e[0] == '.' && (e[1] | 32) == 's' && (e[2] | 32) == 'c' &&
            (e[3] | 32) == 'a' && (e[4] | 32) == 'd';
+}
+
+/* Whether path ends in suffix (a dot and lower-case letters), in any case. */
+static int has_suffix(const char *path, const char *suffix)
+{
+    size_t n = strlen(path), k = strlen(suffix);
+    if (n <= k)
+        return 0;
+    for (size_t i = 0; i < k; i++)
+        if ((path[n - k + i] | (suffix[i] == '.' ? 0 : 32)) != suffix[i])
+            return 0;
+    return 1;
+}
+
+int scad_is_mesh(const char *path)
+{
+    return has_suffix(path, ".stl") || has_suffix(path, ".off");
+}
+
+int scad_take_defines(int *argc, char **argv)
+{
+    for (int k = 1; k < *argc && strcmp(argv[k], "--"); k++) {
+        if (strncmp(argv[k], "-D", 2) != 0)
+            continue;
+        int used = 1;
+        const char *value = argv[k] + 2;
+        if (!*value) {
+            if (k + 1 >= *argc)
+                return cli_usage_error("-D expects NAME=VALUE, as OpenSCAD's -D");
+            value = argv[k + 1];
+            used = 2;
+        }
+        const char *equals = strchr(value, '=');
+        if (!equals || equals == value)
+            return cli_usage_error("-D expects NAME=VALUE, as OpenSCAD's -D (got '%s')",
+                                   value);
+        if (define_count == SCAD_MAX_DEFINES)
+            return cli_usage_error("too many -D settings (limit is %d)",
+                                   SCAD_MAX_DEFINES);
+        defines[define_count++] = value;
+        for (int j = k; j + used <= *argc; j++)
+            argv[j] = argv[j + used]; /* argv[argc] is NULL and moves too */
+        *argc -= used;
+        k--;
+    }
+    return 0;
+}
+
+int scad_define_count(void)
+{
+    return define_count;
+}
+
+const char *scad_define(int index)
+{
+    return index >= 0 && index < define_count ? defines[index] : NULL;
 }
 
 static sc_status fail(sc_error *error, sc_status status, const char *format,
@@ -337,12 +402,6 @@ static void read_depends(const char *path, void (*depend)(void *user, const char
     free(text);
 }
 
-sc_status scad_load(const char *path, const sc_load_options *options, sc_scene **scene,
-                    sc_error *error)
-{
-    return scad_load_files(path, options, scene, error, NULL, NULL, NULL);
-}
-
 static void pause_ms(long ms)
 {
     struct timespec ts = {0, ms * 1000000L};
@@ -457,11 +516,13 @@ static sc_status convert(const char *path, const double *time, char **text, size
         return fail(error, SC_ERR_IO, "cannot make a temporary directory in '%s': %s",
                     tmp && tmp[0] ? tmp : "/tmp", strerror(errno));
     const char *base = strrchr(source, '/') + 1; /* realpath is absolute */
+    const char *dot = strrchr(base, '.');
+    int stem = (int)(dot && dot != base ? (size_t)(dot - base) : strlen(base));
     char csg[PATH_MAX + 16], log[PATH_MAX + 16], deps[PATH_MAX + 16];
-    snprintf(csg, sizeof csg, "%s/%.*s.csg", dir, (int)(strlen(base) - 5), base);
+    snprintf(csg, sizeof csg, "%s/%.*s.csg", dir, stem, base);
     snprintf(log, sizeof log, "%s/openscad.log", dir);
     snprintf(deps, sizeof deps, "%s/openscad.d", dir);
-    snprintf(name, name_size, "%.*s.csg", (int)(strlen(source) - 5), source);
+    snprintf(name, name_size, "%.*s.csg", (int)(base - source) + stem, source);
 
     posix_spawn_file_actions_t actions;
     posix_spawn_file_actions_init(&actions);
@@ -469,8 +530,12 @@ static sc_status convert(const char *path, const double *time, char **text, size
                                      0600);
     posix_spawn_file_actions_adddup2(&actions, 1, 2);
     char define[64];
-    char *argv[9] = {"openscad", "-o", csg};
+    char *argv[10 + 2 * SCAD_MAX_DEFINES] = {"openscad", "-o", csg};
     int argc = 3;
+    for (int k = 0; k < define_count; k++) {
+        argv[argc++] = "-D";
+        argv[argc++] = (char *)defines[k]; /* posix_spawn does not write argv */
+    }
     if (time) {
         snprintf(define, sizeof define, "$t=%.17g", *time);
         argv[argc++] = "-D";
@@ -530,4 +595,159 @@ sc_status scad_load_at(const char *path, const sc_load_options *options, double 
                        sc_scene **scene, sc_error *error, const scad_stop *stop)
 {
     return convert_and_load(path, &t, options, scene, error, NULL, NULL, stop);
+}
+
+/* ---- MODEL as the commands take it ---- */
+
+/* The one-line model that imports the mesh at path, by its absolute path,
+ * as a string of the grammar (quote and backslash escaped): malloc'd. */
+static sc_status mesh_model(const char *path, char **text, size_t *size, sc_error *error)
+{
+    char full[PATH_MAX];
+    if (!realpath(path, full))
+        return fail(error, SC_ERR_IO, "cannot open '%s': %s", path, strerror(errno));
+    size_t n = strlen(full);
+    char *t = malloc(2 * n + 32);
+    if (!t)
+        return fail(error, SC_ERR_NOMEM, "out of memory%s%s", "", "");
+    size_t k = (size_t)sprintf(t, "import(file = \"");
+    for (size_t i = 0; i < n; i++) {
+        if (full[i] == '"' || full[i] == '\\')
+            t[k++] = '\\';
+        t[k++] = full[i];
+    }
+    k += (size_t)sprintf(t + k, "\");\n");
+    *text = t;
+    *size = k;
+    return SC_OK;
+}
+
+/* The note for a .csg that goes on in OpenSCAD's language, at the error
+ * that says where (parse_error_is_language). */
+static void language_note(const char *path, const sc_error *error)
+{
+    fprintf(stderr,
+            "%s: note: uses OpenSCAD's language beyond its CSG export (line %d); "
+            "converting it with openscad\n",
+            path, error->line);
+}
+
+/* -D given for a file that spancast reads itself. */
+static void unused_defines(const char *path)
+{
+    if (define_count)
+        fprintf(stderr,
+                "%s: warning: -D is passed to OpenSCAD, which does not convert this "
+                "file\n",
+                path);
+}
+
+/* Whether an error is at the file path (as given). */
+static int at_file(const sc_error *error, const char *path)
+{
+    return strcmp(error->file, path) == 0;
+}
+
+sc_status scad_load_model(const char *path, const sc_load_options *options,
+                          sc_scene **scene, sc_error *error,
+                          void (*depend)(void *user, const char *file), void *user,
+                          const scad_stop *stop, int *converted)
+{
+    *scene = NULL;
+    if (converted)
+        *converted = 0;
+    if (scad_is_source(path)) {
+        if (converted)
+            *converted = 1;
+        return convert_and_load(path, NULL, options, scene, error, depend, user, stop);
+    }
+    /* The load cannot be stopped from inside: a signal during it ends the
+     * process (stop.c), and one that came before it, seen after the flag
+     * is set, ends it here. */
+    if (stop && stop->loading)
+        *stop->loading = 1;
+    if (stop && stop->stop && *stop->stop) {
+        if (stop->loading)
+            *stop->loading = 0;
+        memset(error, 0, sizeof *error);
+        error->status = SC_ERR_CANCELLED;
+        snprintf(error->message, sizeof error->message, "interrupted");
+        return SC_ERR_CANCELLED;
+    }
+    sc_status st = scad_is_mesh(path) ? sc_scene_load_mesh(path, options, scene, error)
+                                      : sc_scene_load(path, options, scene, error);
+    if (stop && stop->loading)
+        *stop->loading = 0;
+    if (st != SC_OK && !scad_is_mesh(path) && parse_error_is_language(error) &&
+        at_file(error, path)) {
+        language_note(path, error);
+        if (converted)
+            *converted = 1;
+        return convert_and_load(path, NULL, options, scene, error, depend, user, stop);
+    }
+    if (st == SC_OK)
+        unused_defines(path);
+    return st;
+}
+
+/* A parse sink that keeps nothing: the check of scad_read_model. */
+static sc_status skip_open(void *user, parse_node *node, int *keep, sc_error *error)
+{
+    (void)user, (void)node, (void)keep, (void)error;
+    return SC_OK;
+}
+
+static sc_status skip_close(void *user, parse_node *node, sc_error *error)
+{
+    (void)user, (void)node, (void)error;
+    return SC_OK;
+}
+
+sc_status scad_read_model(const char *path, char **text, size_t *size, char *name,
+                          size_t name_size, sc_error *error, const scad_stop *stop)
+{
+    *text = NULL;
+    *size = 0;
+    if (scad_is_source(path))
+        return convert(path, NULL, text, size, name, name_size, error, NULL, NULL, stop);
+    snprintf(name, name_size, "%s", path);
+    if (scad_is_mesh(path))
+        return mesh_model(path, text, size, error);
+    const char *why;
+    *text = file_read(path, SIZE_MAX / 2, size, &why);
+    if (!*text)
+        return fail(error, SC_ERR_IO, "cannot open '%s': %s", path, why);
+    /* The syntax alone, streamed (the memory of the open nodes only), to
+     * find OpenSCAD's language before the ranks load the text. */
+    parse_sink sink = {NULL, skip_open, skip_close};
+    parse_tree *tree = NULL;
+    sc_status st = parse_stream(path, *text, *size, &sink, &tree, error);
+    parse_tree_free(tree);
+    if (st == SC_OK || !parse_error_is_language(error)) {
+        if (st == SC_OK)
+            unused_defines(path);
+        return SC_OK; /* the ranks' load reports any other error */
+    }
+    language_note(path, error);
+    free(*text);
+    *text = NULL;
+    *size = 0;
+    return convert(path, NULL, text, size, name, name_size, error, NULL, NULL, stop);
+}
+
+void scad_blame(sc_error *error, const char *name, const char *path)
+{
+    blame_source(error, name, path);
+}
+
+int scad_converted_name(const char *path, char *name, size_t name_size)
+{
+    char source[PATH_MAX];
+    if (!realpath(path, source))
+        return 0;
+    const char *base = strrchr(source, '/') + 1;
+    const char *dot = strrchr(base, '.');
+    int stem = (int)(dot && dot != base ? (size_t)(dot - base) : strlen(base));
+    return snprintf(name, name_size, "%.*s.csg", (int)(base - source) + stem, source) <
+           (int)name_size;
 }

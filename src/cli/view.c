@@ -67,6 +67,7 @@
 #include <unistd.h>
 
 #include "cli/cli.h"
+#include "cli/scad.h"
 #include "cli/view.h"
 #include "cli/watch.h"
 
@@ -82,9 +83,11 @@ static const char usage_text[] =
     "usage: spancast view MODEL [--imgsize=W,H] [--spp=N] [--threads=N] [--faithful]\n"
     "                           [--strict] [--max-time=S] [--verbose] [preview options]\n"
     "\n"
-    "Opens a window on MODEL (.csg, or .scad through OpenSCAD) and renders it\n"
-    "again whenever the file, or a file a .scad model uses, changes.\n"
+    "Opens a window on MODEL (.csg, .scad through OpenSCAD, or a .stl/.off mesh)\n"
+    "and renders it again whenever the file, or a file a .scad model uses,\n"
+    "changes.\n"
     "\n"
+    "  -D NAME=VALUE   set an OpenSCAD variable for the conversion (repeatable)\n"
     "  --imgsize=W,H   window size (default 800,600)\n"
     "  --spp=N         samples per pixel when the view is still (default 4)\n"
     "  --threads=N     render threads (default 0: all cores)\n"
@@ -144,7 +147,9 @@ typedef struct viewer {
     view_model *model;
     double load_seconds;
     int loads; /* models loaded so far, shown in the title as "#N" */
-    char error[SC_ERROR_MESSAGE_MAX + SC_ERROR_FILE_MAX + 64]; /* the failed load */
+    char error[SC_ERROR_MESSAGE_MAX + SC_ERROR_FILE_MAX + 64];   /* the failed load */
+    char warning[SC_ERROR_MESSAGE_MAX + SC_ERROR_FILE_MAX + 64]; /* the load's first,
+                                                                    and how many more */
     view_camera cam;
     uint64_t view; /* the number of the current view */
     /* the preview options (colour scheme, lighting, overlays, sections,
@@ -591,10 +596,13 @@ static void update_title(viewer *v)
         title, sizeof title,
         "spancast view: %s%s%s - %s - load #%d %.3f s, frame %.1f ms (%dx%d, spp %d), "
         "%.2f Mrays/s - %s%s%s%s%s",
-        base_name(v->path), v->error[0] ? " - ERROR " : "", v->error, state, v->loads,
-        v->load_seconds, v->frame_ms, v->frame_w, v->frame_h, v->frame_spp,
-        v->rays_per_second / 1e6, options, v->pick[0] ? " - " : "", v->pick,
-        v->note[0] ? " - " : "", v->note);
+        base_name(v->path),
+        v->error[0]     ? " - ERROR "
+        : v->warning[0] ? " - WARNING "
+                        : "",
+        v->error[0] ? v->error : v->warning, state, v->loads, v->load_seconds,
+        v->frame_ms, v->frame_w, v->frame_h, v->frame_spp, v->rays_per_second / 1e6,
+        options, v->pick[0] ? " - " : "", v->pick, v->note[0] ? " - " : "", v->note);
     if (strcmp(title, v->title)) {
         memcpy(v->title, title, sizeof title);
         SDL_SetWindowTitle(v->window, title);
@@ -623,11 +631,32 @@ static void take_load(viewer *v)
     v->load_seconds = load.seconds;
     v->loads++;
     v->error[0] = '\0';
+    v->warning[0] = '\0';
+    /* Each warning on stderr, as the render command prints it (at the
+     * source, not the converted text); the first in the title. */
+    char name[PATH_MAX + 16] = "";
+    if (load.converted && !scad_converted_name(v->path, name, sizeof name))
+        name[0] = '\0';
     size_t warnings = sc_scene_warning_count(v->model->scene);
     for (size_t k = 0; k < warnings; k++) {
-        char text[SC_ERROR_MESSAGE_MAX + SC_ERROR_FILE_MAX + 64];
-        format_error(sc_scene_warning(v->model->scene, k), text, sizeof text);
-        fprintf(stderr, "%s (warning)\n", text);
+        sc_error w = *sc_scene_warning(v->model->scene, k);
+        if (name[0])
+            scad_blame(&w, name, v->path);
+        char where[SC_ERROR_FILE_MAX + 32];
+        if (w.file[0] && w.line > 0)
+            snprintf(where, sizeof where, "%s:%d:%d", w.file, w.line, w.column);
+        else
+            snprintf(where, sizeof where, "%s", w.file[0] ? w.file : "spancast");
+        fprintf(stderr, "%s: warning: %s\n", where, w.message);
+        if (k > 0)
+            continue;
+        char more[48] = "";
+        if (warnings > 1)
+            snprintf(more, sizeof more, " (and %zu more)", warnings - 1);
+        /* The title's copy may be cut short; stderr has it whole. */
+        int n =
+            snprintf(v->warning, sizeof v->warning, "%s: %s%s", where, w.message, more);
+        (void)n;
     }
     if (first) {
         sc_render_options file;
@@ -1057,7 +1086,9 @@ int main(int argc, char **argv)
     v->coarse_step = 5; /* a quarter of each side, until measured */
     sc_render_options_init(&v->look);
     v->defaults = v->look;
-    int status = parse_args(v, argc, argv);
+    int status = scad_take_defines(&argc, argv);
+    if (!status)
+        status = parse_args(v, argc, argv);
     if (status) {
         free(v);
         return status;

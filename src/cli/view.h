@@ -146,6 +146,7 @@ typedef struct view_load {
     double seconds;
     char **files;      /* the files the model came from (a .scad's includes) */
     size_t file_count; /* the caller frees files with view_load_free_files */
+    int converted;     /* the text came from OpenSCAD (scad_load_model) */
 } view_load;
 
 void view_load_free_files(view_load *load);

@@ -74,10 +74,8 @@ static void load_once(const view_loader *l, view_load *load)
     sc_load_options_init(&lo);
     cli_load_options(&lo, l->faithful);
     sc_scene *scene = NULL;
-    sc_status st =
-        scad_is_source(l->path)
-            ? scad_load_files(l->path, &lo, &scene, &load->error, add_file, load, NULL)
-            : sc_scene_load(l->path, &lo, &scene, &load->error);
+    sc_status st = scad_load_model(l->path, &lo, &scene, &load->error, add_file, load,
+                                   NULL, &load->converted);
     load->seconds = seconds_now() - start;
     if (st != SC_OK)
         return;

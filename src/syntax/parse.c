@@ -37,7 +37,8 @@ typedef struct open_vector {
 
 /* A name stored once: an entry of the parser's table of names. */
 typedef struct name_entry {
-    const char *chars; /* in the tree's strings arena; NULL: a free slot */
+    const char *chars;    /* in the tree's strings arena; NULL: a free slot */
+    const char *language; /* language_word(chars), found once per name */
     uint32_t length;
     uint32_t hash;
 } name_entry;
@@ -67,9 +68,57 @@ static sc_location token_loc(const parser *ps)
     return loc;
 }
 
+/* An error at loc: what, a construct of OpenSCAD's language that its CSG
+ * export never writes (parse_error_is_language). */
+static sc_status language_error(parser *ps, sc_location loc, const char *format, ...)
+    SC_PRINTF(3, 4);
+static sc_status language_error(parser *ps, sc_location loc, const char *format, ...)
+{
+    char what[SC_ERROR_MESSAGE_MAX / 2];
+    va_list args;
+    va_start(args, format);
+    vsnprintf(what, sizeof what, format, args);
+    va_end(args);
+    return err_set(ps->error, SC_ERR_UNSUPPORTED, &loc, "%s%s", what, PARSE_LANGUAGE);
+}
+
+/* The characters that are OpenSCAD's operators and appear in no token of
+ * the CSG grammar: arithmetic, comparison, logic, ranges, member access,
+ * the conditional. ('*', '%' and '!' are tokens, the modifiers.) */
+static int operator_char(int c)
+{
+    return c && strchr("+-/<>:?^&|.", c) != NULL;
+}
+
+/* The next token. A character the lexer does not know that is one of
+ * OpenSCAD's operators is the language beyond the CSG export. */
 static sc_status advance(parser *ps)
 {
-    return lex_next(&ps->lx, &ps->tok, ps->error);
+    sc_status st = lex_next(&ps->lx, &ps->tok, ps->error);
+    static const char unexpected[] = "unexpected character '";
+    const char *m = ps->error->message;
+    if (st == SC_ERR_SYNTAX && strncmp(m, unexpected, sizeof unexpected - 1) == 0) {
+        const char *c = m + sizeof unexpected - 1;
+        if (operator_char(c[0]) && c[1] == '\'' && !c[2]) {
+            sc_location loc = {ps->tree->file, ps->error->line, ps->error->column};
+            return language_error(ps, loc, "an operator ('%c')", c[0]);
+        }
+    }
+    return st;
+}
+
+/* Whether a token that cannot follow a value here continues an expression
+ * of OpenSCAD's language: an operator token, an index, a call. */
+static int continues_expression(lex_kind kind)
+{
+    return kind == LEX_STAR || kind == LEX_PERCENT || kind == LEX_BANG ||
+           kind == LEX_LBRACKET || kind == LEX_LPAREN;
+}
+
+static sc_status expression_error(parser *ps)
+{
+    return language_error(ps, token_loc(ps), "an expression ('%.*s')",
+                          (int)ps->tok.length, ps->tok.start);
 }
 
 /* A syntax error at the current token. */
@@ -117,11 +166,37 @@ static int grow_names(parser *ps)
     return 1;
 }
 
+/* What a name at the start of a statement says when OpenSCAD's language
+ * uses it and its CSG export never writes it: the keywords, the flow
+ * control and echo modules, and the transforms (the export writes every
+ * transform as multmatrix). NULL for every other name, which is a node. */
+static const char *language_word(const char *name)
+{
+    static const char *const words[] = {
+        "module",   "function",  "include", "use",   "for",    "if",
+        "else",     "let",       "each",    "echo",  "assert", "assign",
+        "children", "translate", "rotate",  "scale", "mirror",
+    };
+    for (size_t i = 0; i < sizeof words / sizeof words[0]; i++)
+        if (strcmp(words[i], name) == 0)
+            return words[i];
+    return NULL;
+}
+
 /* The current token's text (a name) as a C string in the tree's strings
  * arena, stored once per distinct name: a file of a million spheres
  * writes "sphere", "multmatrix" and "$fn" a million times each. NULL when
  * out of memory. */
+static const char *token_name(parser *ps, const char **language);
+
 static const char *token_text(parser *ps)
+{
+    return token_name(ps, NULL);
+}
+
+/* token_text, and when language is not NULL, language_word of the name
+ * into *language, looked up once per distinct name rather than per node. */
+static const char *token_name(parser *ps, const char **language)
 {
     const char *text = ps->tok.start;
     size_t n = ps->tok.length;
@@ -133,8 +208,11 @@ static const char *token_text(parser *ps)
         name_entry *e = &ps->names[k];
         if (!e->chars)
             break;
-        if (e->hash == h && e->length == n && memcmp(e->chars, text, n) == 0)
+        if (e->hash == h && e->length == n && memcmp(e->chars, text, n) == 0) {
+            if (language)
+                *language = e->language;
             return e->chars;
+        }
     }
     char *s = arena_alloc(&ps->tree->strings, n + 1);
     if (!s)
@@ -142,8 +220,10 @@ static const char *token_text(parser *ps)
     memcpy(s, text, n);
     s[n] = '\0';
     /* Names are identifiers, far shorter than 2^32 bytes. */
-    ps->names[k] = (name_entry){s, (uint32_t)n, h};
+    ps->names[k] = (name_entry){s, language_word(s), (uint32_t)n, h};
     ps->name_count++;
+    if (language)
+        *language = ps->names[k].language;
     return s;
 }
 
@@ -237,6 +317,12 @@ static sc_status parse_value_into(parser *ps, parse_value *out)
             if ((st = close_vector(ps, &v)) != SC_OK)
                 return st;
             goto complete;
+        case LEX_IDENT:
+            return language_error(ps, token_loc(ps), "a variable or function ('%.*s')",
+                                  (int)ps->tok.length, ps->tok.start);
+        case LEX_LPAREN:
+        case LEX_BANG:
+            return expression_error(ps);
         default:
             return syntax_error(ps, "expected a value, found %s",
                                 lex_kind_name(ps->tok.kind));
@@ -265,6 +351,8 @@ static sc_status parse_value_into(parser *ps, parse_value *out)
                     return st;
                 if (ps->tok.kind != LEX_RBRACKET)
                     break; /* read the next item */
+            } else if (continues_expression(ps->tok.kind)) {
+                return expression_error(ps);
             } else if (ps->tok.kind != LEX_RBRACKET) {
                 return syntax_error(ps, "expected ']' (to close '[' at line %d)",
                                     ps->open[ps->open_count - 1].line);
@@ -291,6 +379,10 @@ static sc_status parse_arguments(parser *ps, parse_node *node, int paren_line)
                 return err_nomem(ps->error, NULL);
             if ((st = advance(ps)) != SC_OK)
                 return st;
+            if (ps->tok.kind == LEX_COMMA || ps->tok.kind == LEX_RPAREN ||
+                continues_expression(ps->tok.kind))
+                return language_error(ps, arg.loc, "a variable or function ('%s')",
+                                      arg.name);
             if (ps->tok.kind != LEX_EQUALS)
                 return syntax_error(ps, "expected '=' after argument name '%s'",
                                     arg.name);
@@ -307,6 +399,8 @@ static sc_status parse_arguments(parser *ps, parse_node *node, int paren_line)
         if (ps->tok.kind == LEX_COMMA) {
             if ((st = advance(ps)) != SC_OK)
                 return st;
+        } else if (continues_expression(ps->tok.kind)) {
+            return expression_error(ps);
         } else if (ps->tok.kind != LEX_RPAREN) {
             return syntax_error(ps, "expected ')' (to close '(' at line %d)", paren_line);
         }
@@ -391,110 +485,189 @@ static sc_status close_node(parser *ps, parse_node *node)
     return SC_OK;
 }
 
-/* file      := statement* EOF
- * statement := modifier* NAME '(' arguments ')' ( ';' | '{' statement* '}' ) | ';'
- * The open node whose block is being read is `parent`; its '}' returns to
- * its own parent. */
-static sc_status parse_statements(parser *ps)
+/* One open statement of the walk in parse_statements: a node whose child
+ * statement has not begun (AWAIT) or is a block (BLOCK), or a block
+ * without a node (BARE), whose statements belong to the enclosing node. */
+typedef enum frame_kind { FRAME_AWAIT, FRAME_BLOCK, FRAME_BARE } frame_kind;
+
+typedef struct frame {
+    parse_node *node; /* NULL for FRAME_BARE */
+    int line;         /* FRAME_BARE: the line of its '{' */
+    frame_kind kind;
+} frame;
+
+typedef struct walk {
+    frame *frames;
+    size_t count, cap;
+    parse_node *parent; /* the innermost frame's node, NULL at top level */
+} walk;
+
+static sc_status push_frame(parser *ps, walk *w, parse_node *node, frame_kind kind,
+                            int line)
+{
+    if (w->count >= PARSE_MAX_DEPTH) {
+        sc_location loc = token_loc(ps);
+        return err_set(ps->error, SC_ERR_LIMIT, &loc, "too many nested %s (limit is %d)",
+                       node ? "nodes" : "blocks", PARSE_MAX_DEPTH);
+    }
+    if (!grow_array((void **)&w->frames, &w->cap, w->count + 1, sizeof *w->frames))
+        return err_nomem(ps->error, NULL);
+    w->frames[w->count++] = (frame){node, line, kind};
+    if (node)
+        w->parent = node;
+    return SC_OK;
+}
+
+/* Pops the innermost frame, closing its node, if any. */
+static sc_status pop_frame(parser *ps, walk *w)
+{
+    frame f = w->frames[--w->count];
+    w->parent = NULL;
+    for (size_t i = w->count; i-- > 0;) {
+        if (w->frames[i].node) {
+            w->parent = w->frames[i].node;
+            break;
+        }
+    }
+    return f.node ? close_node(ps, f.node) : SC_OK;
+}
+
+/* A statement is complete: each node waiting for its one child statement
+ * (this one, or the node that this one completed) is complete too. */
+static sc_status statement_done(parser *ps, walk *w)
+{
+    sc_status st = SC_OK;
+    while (st == SC_OK && w->count && w->frames[w->count - 1].kind == FRAME_AWAIT)
+        st = pop_frame(ps, w);
+    return st;
+}
+
+/* Reads one node statement's head at its first modifier or name: the
+ * node, linked under w->parent, handed to the sink, and pushed waiting
+ * for its child statement. */
+static sc_status parse_node_head(parser *ps, walk *w, parse_node **top_tail)
 {
     sc_status st;
     parse_tree *tree = ps->tree;
-    parse_node *parent = NULL, *top_tail = NULL;
+    parse_node *parent = w->parent;
+    unsigned modifiers = 0;
+    while (modifier_flag(ps->tok.kind)) {
+        modifiers |= modifier_flag(ps->tok.kind);
+        if ((st = advance(ps)) != SC_OK)
+            return st;
+    }
+    if (ps->tok.kind == LEX_LBRACE)
+        return syntax_error(ps, "expected a node name before '{'");
+    if (ps->tok.kind != LEX_IDENT)
+        return syntax_error(ps, "expected a node name, found %s",
+                            lex_kind_name(ps->tok.kind));
+    uint32_t depth = parent ? parent->depth + 1 : 1;
+    if (depth > PARSE_MAX_DEPTH) {
+        sc_location loc = token_loc(ps);
+        return err_set(ps->error, SC_ERR_LIMIT, &loc,
+                       "too many nested nodes (limit is %d)", PARSE_MAX_DEPTH);
+    }
+    if (tree->node_count >= PARSE_MAX_NODES) {
+        sc_location loc = token_loc(ps);
+        return err_set(ps->error, SC_ERR_LIMIT, &loc, "too many nodes (limit is %d)",
+                       PARSE_MAX_NODES);
+    }
+    arena_mark mark = arena_save(&tree->mem);
+    parse_node *node = arena_calloc(&tree->mem, 1, sizeof *node);
+    const char *word = NULL;
+    if (!node || !(node->name = token_name(ps, &word)))
+        return err_nomem(ps->error, NULL);
+    node->loc = token_loc(ps);
+    node->modifiers = (uint8_t)modifiers;
+    node->depth = (uint16_t)depth;
+    if (word)
+        return language_error(ps, node->loc, "'%s'", word);
+    if ((st = advance(ps)) != SC_OK)
+        return st;
+    if (ps->tok.kind == LEX_EQUALS && !modifiers)
+        return language_error(ps, node->loc, "an assignment ('%s = ...')", node->name);
+    if (ps->tok.kind != LEX_LPAREN)
+        return syntax_error(ps, "expected '(' after node name '%s'", node->name);
+    int paren_line = ps->tok.line;
+    if ((st = advance(ps)) != SC_OK)
+        return st;
+    if ((st = parse_arguments(ps, node, paren_line)) != SC_OK)
+        return st;
+    if (!links(ps, depth)) {
+        node->parent = parent;
+        if (parent)
+            parent->child_count++;
+        else
+            tree->count++;
+    } else if (parent) {
+        append_child(parent, node);
+    } else {
+        if (*top_tail)
+            (*top_tail)->next = node;
+        else
+            tree->first = node;
+        *top_tail = node;
+        tree->count++;
+    }
+    tree->node_count++;
+    if ((st = open_node(ps, node, mark)) != SC_OK)
+        return st;
+    return push_frame(ps, w, node, FRAME_AWAIT, 0);
+}
+
+/* file      := statement* EOF
+ * statement := ';' | '{' statement* '}' | modifier* NAME '(' arguments ')' statement
+ * A node's statement is its child: ';' (none), a block (its statements),
+ * or one node statement, as in OpenSCAD's grammar, so that
+ * `multmatrix(m) cube(1);` is `multmatrix(m) { cube(1); }`; a block that
+ * follows no node holds statements of the enclosing node (or of the
+ * file). The walk keeps the open statements on a stack of frames (walk)
+ * rather than recursing. */
+static sc_status parse_statements(parser *ps, walk *w)
+{
+    sc_status st;
+    parse_node *top_tail = NULL;
     for (;;) {
         lex_kind kind = ps->tok.kind;
+        frame *top = w->count ? &w->frames[w->count - 1] : NULL;
+        if (top && top->kind == FRAME_AWAIT && kind != LEX_SEMICOLON &&
+            kind != LEX_LBRACE && kind != LEX_IDENT && !modifier_flag(kind))
+            return syntax_error(ps, "expected ';', '{' or a child node after node '%s'",
+                                top->node->name);
         if (kind == LEX_EOF) {
-            if (parent)
+            if (top)
                 return syntax_error(ps, "expected '}' (to close '{' at line %d)",
-                                    parent->block_line);
+                                    top->node ? top->node->block_line : top->line);
             return SC_OK;
         }
         if (kind == LEX_RBRACE) {
-            if (!parent)
+            if (!top)
                 return syntax_error(ps, "unmatched '}'");
-            parse_node *closed = parent;
-            parent = parent->parent;
-            if ((st = close_node(ps, closed)) != SC_OK)
-                return st;
-            if ((st = advance(ps)) != SC_OK)
+            if ((st = pop_frame(ps, w)) != SC_OK || (st = advance(ps)) != SC_OK ||
+                (st = statement_done(ps, w)) != SC_OK)
                 return st;
             continue;
         }
         if (kind == LEX_SEMICOLON) {
+            if ((st = advance(ps)) != SC_OK || (st = statement_done(ps, w)) != SC_OK)
+                return st;
+            continue;
+        }
+        if (kind == LEX_LBRACE) {
+            if (top && top->kind == FRAME_AWAIT) {
+                top->kind = FRAME_BLOCK;
+                top->node->has_block = 1;
+                top->node->block_line = ps->tok.line;
+            } else if ((st = push_frame(ps, w, NULL, FRAME_BARE, ps->tok.line)) !=
+                       SC_OK) {
+                return st;
+            }
             if ((st = advance(ps)) != SC_OK)
                 return st;
             continue;
         }
-        unsigned modifiers = 0;
-        while (modifier_flag(ps->tok.kind)) {
-            modifiers |= modifier_flag(ps->tok.kind);
-            if ((st = advance(ps)) != SC_OK)
-                return st;
-        }
-        if (ps->tok.kind == LEX_LBRACE)
-            return syntax_error(ps, "expected a node name before '{'");
-        if (ps->tok.kind != LEX_IDENT)
-            return syntax_error(ps, "expected a node name, found %s",
-                                lex_kind_name(ps->tok.kind));
-        uint32_t depth = parent ? parent->depth + 1 : 1;
-        if (depth > PARSE_MAX_DEPTH) {
-            sc_location loc = token_loc(ps);
-            return err_set(ps->error, SC_ERR_LIMIT, &loc,
-                           "too many nested nodes (limit is %d)", PARSE_MAX_DEPTH);
-        }
-        if (tree->node_count >= PARSE_MAX_NODES) {
-            sc_location loc = token_loc(ps);
-            return err_set(ps->error, SC_ERR_LIMIT, &loc, "too many nodes (limit is %d)",
-                           PARSE_MAX_NODES);
-        }
-        arena_mark mark = arena_save(&tree->mem);
-        parse_node *node = arena_calloc(&tree->mem, 1, sizeof *node);
-        if (!node || !(node->name = token_text(ps)))
-            return err_nomem(ps->error, NULL);
-        node->loc = token_loc(ps);
-        node->modifiers = (uint8_t)modifiers;
-        node->depth = (uint16_t)depth;
-        if ((st = advance(ps)) != SC_OK)
+        if ((st = parse_node_head(ps, w, &top_tail)) != SC_OK)
             return st;
-        if (ps->tok.kind != LEX_LPAREN)
-            return syntax_error(ps, "expected '(' after node name '%s'", node->name);
-        int paren_line = ps->tok.line;
-        if ((st = advance(ps)) != SC_OK)
-            return st;
-        if ((st = parse_arguments(ps, node, paren_line)) != SC_OK)
-            return st;
-        if (!links(ps, depth)) {
-            node->parent = parent;
-            if (parent)
-                parent->child_count++;
-            else
-                tree->count++;
-        } else if (parent) {
-            append_child(parent, node);
-        } else {
-            if (top_tail)
-                top_tail->next = node;
-            else
-                tree->first = node;
-            top_tail = node;
-            tree->count++;
-        }
-        tree->node_count++;
-        if ((st = open_node(ps, node, mark)) != SC_OK)
-            return st;
-        if (ps->tok.kind == LEX_SEMICOLON) {
-            if ((st = close_node(ps, node)) != SC_OK)
-                return st;
-            if ((st = advance(ps)) != SC_OK)
-                return st;
-        } else if (ps->tok.kind == LEX_LBRACE) {
-            node->has_block = 1;
-            node->block_line = ps->tok.line;
-            parent = node;
-            if ((st = advance(ps)) != SC_OK)
-                return st;
-        } else {
-            return syntax_error(ps, "expected ';' or '{' after node");
-        }
     }
 }
 
@@ -514,9 +687,12 @@ static sc_status parse(const char *file, const char *text, size_t length,
     ps.error = error;
     ps.sink = sink;
     lex_init(&ps.lx, file, text, length, &tree->strings);
+    walk w;
+    memset(&w, 0, sizeof w);
     sc_status st = advance(&ps);
     if (st == SC_OK)
-        st = parse_statements(&ps);
+        st = parse_statements(&ps, &w);
+    free(w.frames);
     free(ps.values);
     free(ps.open);
     free(ps.args);
@@ -561,6 +737,13 @@ void parse_tree_release_nodes(parse_tree *tree)
     arena_free(&tree->mem);
     tree->first = NULL;
     tree->count = 0;
+}
+
+int parse_error_is_language(const sc_error *error)
+{
+    size_t n = strlen(error->message), k = sizeof PARSE_LANGUAGE - 1;
+    return error->status == SC_ERR_UNSUPPORTED && n >= k &&
+           strcmp(error->message + n - k, PARSE_LANGUAGE) == 0;
 }
 
 const parse_arg *parse_node_arg(const parse_node *node, const char *name, int position)

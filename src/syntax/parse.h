@@ -1,12 +1,23 @@
 /* The parser of the .csg grammar: tokens in, a syntax tree out.
  *
  *   file      := statement* EOF
- *   statement := modifier* NAME '(' arguments ')' ( ';' | '{' statement* '}' ) | ';'
+ *   statement := ';' | '{' statement* '}' | modifier* NAME '(' arguments ')' statement
  *   modifier  := '%' | '#' | '!' | '*'
  *   arguments := [ argument { ',' argument } [ ',' ] ]
  *   argument  := NAME '=' value | value
  *   value     := NUMBER | STRING | 'true' | 'false' | 'undef' | vector
  *   vector    := '[' [ value { ',' value } [ ',' ] ] ']'
+ *
+ * This is OpenSCAD's grammar for its module instantiations with literal
+ * arguments: a node's child statement is ';' (no children), a block, or
+ * one node (`multmatrix(m) cube(1);`); a block after no node adds its
+ * statements to the enclosing node, and ';' alone is an empty statement.
+ * Where a file goes on in the rest of OpenSCAD's language (an
+ * assignment, a variable or an expression as a value, module or function
+ * definitions, include/use, for/if/let, the transforms that the export
+ * writes as multmatrix), the error is SC_ERR_UNSUPPORTED at that place,
+ * its message ending in PARSE_LANGUAGE (parse_error_is_language), so
+ * that a caller that can run OpenSCAD converts the file instead.
  *
  * The tree keeps everything the file says, meaning nothing yet: node names
  * are not checked here (the builder does that), every argument is kept in
@@ -122,6 +133,14 @@ sc_status parse_text(const char *file, const char *text, size_t length, parse_tr
                      sc_error *error);
 
 void parse_tree_free(parse_tree *tree);
+
+/* The end of the message of an error at OpenSCAD's language beyond its CSG
+ * export, after what the file says there ("an assignment ('x = ...')"). */
+#define PARSE_LANGUAGE " is OpenSCAD's language beyond its CSG export"
+
+/* 1 when error is the parser's error at OpenSCAD's language beyond its
+ * CSG export: the text is OpenSCAD source that OpenSCAD can convert. */
+int parse_error_is_language(const sc_error *error);
 
 /* The consumer of a streamed parse (parse_stream), called node by node in
  * file order. Each call gets the parser's error to fill; a status other

@@ -1,0 +1,26 @@
+/* A mesh file as a model: the one-line model import(file = "PATH") that
+ * sc_scene_load, sc_scene_load_mesh and sc_objects_load read in place of
+ * a .stl or .off file (compare.c). */
+#ifndef SPANCAST_API_MESH_MODEL_H
+#define SPANCAST_API_MESH_MODEL_H
+
+#include <stddef.h>
+
+#include "spancast/spancast.h"
+
+/* 1 when path ends in .stl or .off, in any case, as OpenSCAD's import()
+ * tells a mesh by its name. */
+int mesh_model_is_mesh(const char *path);
+
+/* The model that imports the mesh at path by its absolute path, as a
+ * string of the grammar (quote and backslash escaped): malloc'd into
+ * *text, *length bytes and a NUL. SC_ERR_IO when path cannot be resolved,
+ * SC_ERR_NOMEM. */
+sc_status mesh_model_text(const char *path, char **text, size_t *length, sc_error *error);
+
+/* Drops the position of e when it points into the one-line model named
+ * path (its line 1), which is no place in a file the user has: the error
+ * or warning is about the mesh file as a whole. */
+void mesh_model_unplace(sc_error *e, const char *path);
+
+#endif
