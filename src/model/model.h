@@ -77,6 +77,7 @@ typedef enum model_kind {
     MODEL_POLYGON,
     MODEL_TEXT,
     MODEL_OFFSET,
+    MODEL_PROJECTION, /* 2D from 3D children (lowered in the points context) */
     MODEL_HULL,
     MODEL_MINKOWSKI,
     MODEL_SURFACE,
@@ -341,6 +342,10 @@ struct model_node {
         const model_linear_extrude *linear_extrude;
         const model_rotate_extrude *rotate_extrude;
         const model_resize *resize;
+        /* projection(cut): its children are lowered in the points context */
+        struct {
+            int cut;
+        } projection;
     } u;
 };
 
@@ -399,7 +404,7 @@ static inline int model_is_leaf(model_kind kind)
 /* Whether kind is a 2D shape. */
 static inline int model_is_2d(model_kind kind)
 {
-    return kind >= MODEL_CIRCLE && kind <= MODEL_OFFSET;
+    return kind >= MODEL_CIRCLE && kind <= MODEL_PROJECTION;
 }
 
 #endif
