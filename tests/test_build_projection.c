@@ -144,6 +144,14 @@ static void test_cut(void **state)
         pyramid);
     NEAR(area_of(text, &outers, &holes), 4, 20);
     assert_int_equal(outers, 1);
+    /* a hull of a slab [-1, 1]^2 from z = -1 to -0.5 and one [-3, 3]^2
+     * from z = 1: its sides run from the small slab's bottom edges (z = -1)
+     * to the big one's (z = 1), so at z = 0 the square of half-width 2 */
+    NEAR(area("group() { projection(cut = true) { hull() { multmatrix([[1, 0, 0, -1], "
+              "[0, 1, 0, -1], [0, 0, 1, -1], [0, 0, 0, 1]]) { cube([2, 2, 0.5]); } "
+              "multmatrix([[1, 0, 0, -3], [0, 1, 0, -3], [0, 0, 1, 1], [0, 0, 0, 1]]) { "
+              "cube([6, 6, 0.5]); } } } }"),
+         16, 20);
     /* a linear_extrude laid on its side: square([2, 5]) extruded 3 and
      * turned 90 degrees about x spans x in [0, 2], y in [-3, 0], z in
      * [0, 5]; moved down 2.5, z = 0 cuts it across: 2 x 3 */
@@ -245,6 +253,10 @@ static void test_outline(void **state)
          2 * sqrt(2) * (9 - 4), 60);
     assert_int_equal(outers, 1);
     assert_int_equal(holes, 1);
+    /* a hull: the 2D hull of the two cubes' footprints */
+    NEAR(area("group() { projection() { hull() { cube(1); multmatrix([[1, 0, 0, 3], [0, "
+              "1, 0, 0], [0, 0, 1, 5], [0, 0, 0, 1]]) { cube(1); } } } }"),
+         4, 20);
     /* '%' children are left out */
     assert_true(area("group() { projection() { %cube(3); } }") == 0);
 }
@@ -279,9 +291,10 @@ static void test_errors(void **state)
                 SC_ERR_UNSUPPORTED,
                 "m.csg:1:36: error: 'torus' inside projection is not supported (it has "
                 "no OpenSCAD polygon mesh)");
-    check_error("group() { projection(cut = true) { hull() { cube(1); } } }",
+    check_error("group() { projection(cut = true) { hull() { cube(1);\n  difference() { "
+                "cube(2); } } } }",
                 SC_ERR_UNSUPPORTED,
-                "m.csg:1:36: error: 'hull' inside projection is not supported yet");
+                "m.csg:2:3: error: 'difference' inside hull is not supported yet");
     check_error("group() { projection(cut = 1) { cube(1); } }", SC_ERR_SEMANTIC,
                 "m.csg:1:28: error: wrong type for argument 'cut' of 'projection' "
                 "(expected true or false)");

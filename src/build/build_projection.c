@@ -54,8 +54,11 @@
  * A 2D child is ignored with a warning (OpenSCAD: "Ignoring 2D child
  * object for 3D operation"); '%' and '*' children are left out, as
  * OpenSCAD leaves out background children. torus, quadric and implicit
- * have no OpenSCAD mesh, and hull and minkowski inside a projection are
- * not built yet: errors at their position, never a silent skip.
+ * have no OpenSCAD mesh, and minkowski inside a projection is not built
+ * yet: errors at their position, never a silent skip. A hull is the
+ * convex hull of the corners of its children's meshes (OpenSCAD hulls
+ * their vertices), as triangles like any other leaf; a boolean or
+ * minkowski inside that hull needs a mesh boolean and is an error.
  */
 #include "build/build_projection.h"
 
@@ -69,6 +72,7 @@
 #include "build/build_mesh.h"
 #include "build/build_revolve.h"
 #include "build/build_twod.h"
+#include "csg/hull3.h"
 #include "csg/prim_mesh.h"
 #include "model/faithful.h"
 
@@ -278,9 +282,92 @@ static sc_status built_soup(const pwalk *w, const model_node *n, soup *s)
     return mesh_soup(&p, s) ? SC_OK : err_nomem(c->error, &n->loc);
 }
 
+static sc_status leaf_soup(pwalk *w, const model_node *n, soup *s, int depth);
+
+/* The corners of the meshes below hull node parent (through m, in the
+ * hull's frame) added to pts, as OpenSCAD hulls them: groups, colours,
+ * transforms and resizes pass through; a boolean or minkowski needs a
+ * mesh boolean. */
+static sc_status hull_points(pwalk *w, const model_node *parent, const affine *m,
+                             int depth, soup *pts)
+{
+    const build_ctx *c = w->c;
+    if (depth > BUILD_PROJECTION_MAX_DEPTH)
+        return err_set(c->error, SC_ERR_LIMIT, &parent->loc,
+                       "too many nested nodes inside projection (limit is %d)",
+                       BUILD_PROJECTION_MAX_DEPTH);
+    for (const model_node *n = parent->first_child; n; n = n->next) {
+        model_kind kind = n->kind;
+        if ((n->modifiers & (MODEL_MOD_DISABLE | MODEL_MOD_BACKGROUND)) ||
+            kind == MODEL_LIGHT || kind == MODEL_CAMERA || kind == MODEL_BACKGROUND)
+            continue;
+        if (n->pending && !model_is_2d(kind))
+            return build_pending(c, n);
+        sc_status st = SC_OK;
+        if (kind == MODEL_UNION || kind == MODEL_COLOR || kind == MODEL_MATERIAL) {
+            st = hull_points(w, n, m, depth + 1, pts);
+        } else if (kind == MODEL_XFORM || kind == MODEL_RESIZE) {
+            affine local = kind == MODEL_XFORM ? *n->u.xform : affine_identity();
+            const char *warning = NULL;
+            if (kind == MODEL_RESIZE)
+                st = build_resize(c, n, &w->cache, &local, &warning);
+            affine inner = affine_mul(m, &local), inverse;
+            if (st == SC_OK && affine_invert(&inner, &inverse))
+                st = hull_points(w, n, &inner, depth + 1, pts);
+        } else if (kind == MODEL_DIFFERENCE || kind == MODEL_INTERSECTION ||
+                   kind == MODEL_MINKOWSKI || model_is_2d(kind)) {
+            st = err_set(c->error, SC_ERR_UNSUPPORTED, &n->loc,
+                         "'%s' inside hull is not supported yet", n->name);
+        } else {
+            soup s = {NULL, 0, 0};
+            st = leaf_soup(w, n, &s, depth + 1);
+            for (uint32_t i = 0; st == SC_OK && i < 3 * s.count; i += 3) {
+                if (!add_tri(pts, affine_point(m, s.v[i]), affine_point(m, s.v[i + 1]),
+                             affine_point(m, s.v[i + 2])))
+                    st = err_nomem(c->error, &n->loc);
+            }
+            free(s.v);
+        }
+        if (st != SC_OK)
+            return st;
+    }
+    return SC_OK;
+}
+
+/* hull(): the triangles of the convex hull of its children's mesh
+ * corners (hull3.c, exact orientation tests), outward. A hull without
+ * volume has no area seen from any side but its own plane's; it is left
+ * out as OpenSCAD's empty 3D hull. */
+static sc_status hull_soup(pwalk *w, const model_node *n, soup *s, int depth)
+{
+    const build_ctx *c = w->c;
+    soup pts = {NULL, 0, 0};
+    affine id = affine_identity();
+    sc_status st = hull_points(w, n, &id, depth, &pts);
+    hull3 h;
+    hull3_status hs = HULL3_FLAT;
+    if (st == SC_OK && pts.count)
+        hs = hull3_compute(pts.v, 3 * pts.count, &h);
+    free(pts.v);
+    if (st != SC_OK || hs == HULL3_FLAT)
+        return st;
+    if (hs == HULL3_NOMEM)
+        return err_nomem(c->error, &n->loc);
+    if (hs == HULL3_RANGE)
+        return err_set(c->error, SC_ERR_LIMIT, &n->loc,
+                       "hull: too many points or a coordinate too large");
+    for (uint32_t t = 0; t < h.tri_count && st == SC_OK; t++) {
+        const uint32_t *k = &h.tris[3 * t];
+        if (!add_tri(s, h.vertices[k[0]], h.vertices[k[1]], h.vertices[k[2]]))
+            st = err_nomem(c->error, &n->loc);
+    }
+    hull3_free(&h);
+    return st;
+}
+
 /* The soup of leaf n in its own frame; SC_ERR_UNSUPPORTED for leaves
  * without an OpenSCAD mesh. */
-static sc_status leaf_soup(const pwalk *w, const model_node *n, soup *s)
+static sc_status leaf_soup(pwalk *w, const model_node *n, soup *s, int depth)
 {
     const build_ctx *c = w->c;
     switch (n->kind) {
@@ -298,6 +385,8 @@ static sc_status leaf_soup(const pwalk *w, const model_node *n, soup *s)
     case MODEL_LINEAR_EXTRUDE:
     case MODEL_ROTATE_EXTRUDE:
         return built_soup(w, n, s);
+    case MODEL_HULL:
+        return hull_soup(w, n, s, depth);
     case MODEL_TORUS:
     case MODEL_QUADRIC:
     case MODEL_IMPLICIT:
@@ -482,10 +571,11 @@ static int append(twod_region *dst, const twod_region *src)
 }
 
 /* Adds leaf n's loops (cut) or projected faces to out. */
-static sc_status leaf(pwalk *w, const model_node *n, const affine *m, twod_region *out)
+static sc_status leaf(pwalk *w, const model_node *n, const affine *m, int depth,
+                      twod_region *out)
 {
     soup s = {NULL, 0, 0};
-    sc_status st = leaf_soup(w, n, &s);
+    sc_status st = leaf_soup(w, n, &s, depth);
     if (st == SC_OK && s.count) {
         int flip = affine_det(m) < 0;
         for (uint32_t t = 0; t < s.count; t++) {
@@ -622,7 +712,7 @@ static sc_status walk_node(pwalk *w, const model_node *n, const affine *m, int d
                            n->name);
         return boolean(w, n, m, depth, out);
     default:
-        return leaf(w, n, m, out);
+        return leaf(w, n, m, depth, out);
     }
 }
 
