@@ -16,8 +16,10 @@
  * builders read each in their own way, are lowered in their context:
  *   2D context       the children of the extrusions and of a 2D shape
  *                    (lower_twod.c)
- *   points context   the children of hull and minkowski, and each resize's
- *                    subtree once more for its measuring (lower_points.c)
+ *   points context   the children of hull and minkowski, the 3D children
+ *                    of projection (in whichever context it stands), and
+ *                    each resize's subtree once more for its measuring
+ *                    (lower_points.c)
  * In a nested context a node's argument error is kept in the node
  * (pending) and lowering goes on; the builder reports it where it reads
  * the node, so the first error in its walk is the one reported.
