@@ -13,8 +13,9 @@
  * cut = false: the union of every face projected onto z = 0, each turned
  * counter-clockwise (down-facing faces project clockwise), with non-zero
  * fill (twod_clip_union_nonzero): OpenSCAD's PolysetUtils::project and
- * its Clipper union. The projection of a union is the union of the
- * projections, so the faces of every leaf below unions, groups,
+ * its Clipper union. The same region comes from fewer faces: a closed
+ * mesh's up-facing ones, a convex leaf's 2D hull (projected_faces). The projection of a
+ * union is the union of the projections, so the faces of every leaf below unions, groups,
  * transforms, colours and resizes go into one union. The projection of a
  * difference or intersection is not a 2D boolean of the children's
  * projections (a hole through a cube does not show from above unless it
@@ -518,11 +519,40 @@ static int section_loops(const soup *s, int up, twod_region *out)
     return ok;
 }
 
-/* Adds the faces of s projected onto z = 0 to out. */
-static int projected_faces(const soup *s, twod_region *out)
+/* Adds the outline of s seen along z to out. The union of every face's
+ * projection (OpenSCAD's) is, for a closed mesh, the union of its faces
+ * that look up (a vertical line through the solid meets its top at such a
+ * face), up to sets without area: half the faces, and no front face
+ * overlapping a back one, which is what makes the clipper slow. A convex
+ * leaf (convex set) is the 2D hull of its corners, the same region. */
+static int projected_faces(const soup *s, int convex, twod_region *out)
 {
+    if (convex) {
+        double *xy = s->count ? malloc((size_t)s->count * 6 * sizeof *xy) : NULL;
+        if (s->count && !xy)
+            return 0;
+        for (uint32_t i = 0; i < 3 * s->count; i++) {
+            xy[2 * i] = s->v[i].x;
+            xy[2 * i + 1] = s->v[i].y;
+        }
+        twod_region hull;
+        twod_init(&hull);
+        int ok = twod_hull(xy, 3 * s->count, &hull);
+        free(xy);
+        for (uint32_t k = 0; ok && k < hull.contour_count; k++) {
+            ok = twod_begin_contour(out);
+            for (uint32_t i = hull.start[k]; ok && i < hull.start[k + 1]; i++)
+                ok = twod_add_point(out, hull.xy[2 * i], hull.xy[2 * i + 1]);
+            if (ok)
+                twod_end_contour(out);
+        }
+        twod_free(&hull);
+        return ok;
+    }
     for (uint32_t t = 0; t < s->count; t++) {
         const vec3 *v = &s->v[3 * t];
+        if (!(v3_cross(v3_sub(v[1], v[0]), v3_sub(v[2], v[0])).z > 0))
+            continue;
         if (!twod_begin_contour(out))
             return 0;
         for (int k = 0; k < 3; k++) {
@@ -570,6 +600,13 @@ static int append(twod_region *dst, const twod_region *src)
     return 1;
 }
 
+/* Leaves whose mesh is convex. */
+static int convex_leaf(model_kind kind)
+{
+    return kind == MODEL_CUBE || kind == MODEL_SPHERE || kind == MODEL_CYLINDER ||
+           kind == MODEL_HULL;
+}
+
 /* Adds leaf n's loops (cut) or projected faces to out. */
 static sc_status leaf(pwalk *w, const model_node *n, const affine *m, int depth,
                       twod_region *out)
@@ -587,7 +624,7 @@ static sc_status leaf(pwalk *w, const model_node *n, const affine *m, int depth,
             v[2] = flip ? b : c;
         }
         int ok = w->cut ? section_loops(&s, 1, out) && section_loops(&s, 0, out)
-                        : projected_faces(&s, out);
+                        : projected_faces(&s, convex_leaf(n->kind), out);
         if (!ok)
             st = add_error(w, out);
     }
