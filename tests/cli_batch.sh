@@ -9,7 +9,7 @@ require_tools python3
 
 mkdir lib
 cp "$src/models/bracket.csg" lib/part.csg
-printf 'union() {\n  projection() {\n    cube(1);\n  }\n}\n' >lib/broken.csg
+printf 'union() {\n  roof() {\n    square(1);\n  }\n}\n' >lib/broken.csg
 cat >lib/jobs.txt <<'JOBS'
 # the model library, checked at each change
 render part.csg -o part.png --imgsize=64,48   # the bracket
@@ -36,7 +36,7 @@ grep -Eq '^1 +2 +0 +[0-9.]+  render part\.csg -o part\.png --imgsize=64,48$' tab
     fail "job 1 in the table: $(cat table.txt)"
 grep -Eq "^2 +4 +1 +[0-9.]+  render broken\.csg -o broken\.png --imgsize=64,48$" table.txt ||
     fail "job 2 in the table: $(cat table.txt)"
-grep -q "^ *broken.csg:2:3: error: 'projection' is not supported yet$" table.txt ||
+grep -q "^ *broken.csg:2:3: error: 'roof' is not supported yet$" table.txt ||
     fail "the broken job's message: $(cat table.txt)"
 grep -Eq "^3 +5 +0 +[0-9.]+  render part\.csg -o 'part two\.png' --imgsize=32,24 '--mask=part mask\.png'$" table.txt ||
     fail "job 3 (quoted words) in the table: $(cat table.txt)"
@@ -56,7 +56,7 @@ jobs = d["jobs"]
 assert [j["line"] for j in jobs] == [2, 4, 5, 6], jobs
 assert [j["ok"] for j in jobs] == [True, False, True, True], jobs
 assert jobs[1]["exit"] == 1
-assert jobs[1]["message"] == "broken.csg:2:3: error: 'projection' is not supported yet", jobs[1]
+assert jobs[1]["message"] == "broken.csg:2:3: error: 'roof' is not supported yet", jobs[1]
 assert jobs[2]["args"][3] == "part two.png" and jobs[2]["args"][5] == "--mask=part mask.png", jobs[2]
 assert d["succeeded"] == 3 and d["failed"] == 1, d
 PY

@@ -111,9 +111,9 @@ expect_usage "cannot write depth to 'd.png': depth needs a floating-point format
     render m.csg -o x.png --depth=d.png
 
 # errors from the model: file:line:col, exit 1
-printf 'union() {\n  projection() {\n    cube(1);\n  }\n}\n' >projection.csg
-expect 1 "projection.csg:2:3: error: 'projection' is not supported yet" render projection.csg -o x.png
-expect 1 "projection.csg:2:3: error: 'projection' is not supported yet" info projection.csg
+printf 'union() {\n  roof() {\n    square(1);\n  }\n}\n' >roof.csg
+expect 1 "roof.csg:2:3: error: 'roof' is not supported yet" render roof.csg -o x.png
+expect 1 "roof.csg:2:3: error: 'roof' is not supported yet" info roof.csg
 printf 'cube(1;\n' >syntax.csg
 expect_match 1 '^syntax\.csg:1:7: error: ' render syntax.csg -o x.png
 expect 1 "spancast: error: cannot open 'missing.csg': No such file or directory" \

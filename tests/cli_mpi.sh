@@ -73,9 +73,9 @@ fi
 
 # A model that does not load: its message once, a failure exit, no file.
 check
-printf 'union() {\n  projection() {\n    cube(1);\n  }\n}\n' >bad.csg
+printf 'union() {\n  roof() {\n    square(1);\n  }\n}\n' >bad.csg
 mpi 2 "$bin" render bad.csg -o bad.png -q >out.txt 2>err.txt && fail "bad.csg under mpirun succeeded"
-[ "$(grep -c "^bad.csg:2:3: error: 'projection' is not supported yet" err.txt)" = 1 ] ||
+[ "$(grep -c "^bad.csg:2:3: error: 'roof' is not supported yet" err.txt)" = 1 ] ||
     fail "bad.csg under mpirun: '$(cat err.txt)'"
 [ -e bad.png ] && fail "bad.png was written"
 # A render that fails on the ranks (a camera looking nowhere): once too.

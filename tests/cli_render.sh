@@ -12,7 +12,7 @@ difference() {
   sphere(r = 6.5, $fn = 0, $fa = 12, $fs = 2);
 }
 EOF
-printf 'union() {\n  projection() {\n    cube(1);\n  }\n}\n' >bad.csg
+printf 'union() {\n  roof() {\n    square(1);\n  }\n}\n' >bad.csg
 
 # a plain render: nothing on stdout, one summary line on stderr
 check
@@ -79,7 +79,7 @@ cp depth.exr keep.exr
 "$bin" render bad.csg -o out.png --depth=depth.exr 2>stderr.txt
 rc=$?
 [ "$rc" = 1 ] || fail "bad model exited $rc"
-[ "$(cat stderr.txt)" = "bad.csg:2:3: error: 'projection' is not supported yet" ] ||
+[ "$(cat stderr.txt)" = "bad.csg:2:3: error: 'roof' is not supported yet" ] ||
     fail "bad model: '$(cat stderr.txt)'"
 cmp -s out.png keep.png || fail "a failed render changed out.png"
 cmp -s depth.exr keep.exr || fail "a failed render changed depth.exr"

@@ -67,8 +67,8 @@ printf 'import("open.stl");\n' >open.scad
 printf 'solid o\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 0 1 0\nendloop\nendfacet\nendsolid o\n' >open.stl
 fails_with open.scad "open.scad: error: imported mesh is not closed (edge (0, 0, 0)-(1, 0, 0) is used by 1 face) (line 1 of OpenSCAD's export)" --strict
 [ -e open.csg ] && fail "open.scad: a .csg was left beside the source"
-printf '\nprojection() cube(1);\n' >proj.scad
-want="proj.scad: error: 'projection' is not supported yet (line 1 of OpenSCAD's export)"
+printf '\nprojection() difference() { cube(1); sphere(1); }\n' >proj.scad
+want="proj.scad: error: projection(cut = false) of 'difference' is not supported yet (it needs a mesh boolean; cut = true works) (line 2 of OpenSCAD's export)"
 fails_with proj.scad "$want"
 for cmd in info measure; do
     "$bin" $cmd proj.scad -q >/dev/null 2>err.txt

@@ -448,9 +448,8 @@ static void test_singular(void **state)
 
     /* Errors under a singular transform are still errors. */
     check_error("multmatrix([[0, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]) {"
-                "projection(); }",
-                SC_ERR_UNSUPPORTED,
-                "m.csg:1:71: error: 'projection' is not supported yet");
+                "roof(); }",
+                SC_ERR_UNSUPPORTED, "m.csg:1:71: error: 'roof' is not supported yet");
 }
 
 /* ---- colours ---- */
@@ -574,8 +573,8 @@ static void test_modifiers(void **state)
     sc_scene_release(s);
 
     /* Children of a background node are checked all the same. */
-    check_error("%group() { projection(); }", SC_ERR_UNSUPPORTED,
-                "m.csg:1:12: error: 'projection' is not supported yet");
+    check_error("%group() { roof(); }", SC_ERR_UNSUPPORTED,
+                "m.csg:1:12: error: 'roof' is not supported yet");
     check_error("%sphere(r = \"x\");", SC_ERR_SEMANTIC,
                 "m.csg:1:13: error: wrong type for argument 'r' of 'sphere' (expected a "
                 "number)");
@@ -705,7 +704,7 @@ static void test_root_modifier(void **state)
 static void test_unsupported(void **state)
 {
     (void)state;
-    static const char *names[] = {"projection", "roof", "intersection_for", "halfspace"};
+    static const char *names[] = {"roof", "intersection_for", "halfspace"};
     for (size_t i = 0; i < sizeof names / sizeof names[0]; i++) {
         char text[256], expected[256];
         snprintf(text, sizeof text, "group() {\n  cube();\n\n    %s() { cube(); }\n}",
@@ -714,14 +713,12 @@ static void test_unsupported(void **state)
                  names[i]);
         check_error(text, SC_ERR_UNSUPPORTED, expected);
     }
-    check_error("group() {\n  cube();\n    %projection() {\n cube(); }\n}",
+    check_error("group() {\n  cube();\n    %roof() {\n cube(); }\n}", SC_ERR_UNSUPPORTED,
+                "m.csg:3:6: error: 'roof' is not supported yet");
+    check_error("linear_extrude(height = 10, center = false, convexity = 1, twist = 90, "
+                "$fn = 0, $fa = 12, $fs = 2) {\n  roof() { square(); }\n}",
                 SC_ERR_UNSUPPORTED,
-                "m.csg:3:6: error: 'projection' is not supported yet");
-    check_error(
-        "linear_extrude(height = 10, center = false, convexity = 1, twist = 90, "
-        "$fn = 0, $fa = 12, $fs = 2) {\n  projection(cut = false) { cube(); }\n}",
-        SC_ERR_UNSUPPORTED,
-        "m.csg:2:3: error: 'projection' inside linear_extrude is not supported yet");
+                "m.csg:2:3: error: 'roof' inside linear_extrude is not supported yet");
     check_error("group() { foo(); }", SC_ERR_SEMANTIC,
                 "m.csg:1:11: error: unknown node 'foo'");
     check_error("Cube();", SC_ERR_SEMANTIC, "m.csg:1:1: error: unknown node 'Cube'");

@@ -335,12 +335,13 @@ static void test_kind_of(void **state)
     assert_int_equal(model_kind_of("linear_extrude"), MODEL_LINEAR_EXTRUDE);
     assert_int_equal(model_kind_of("halfspace"), MODEL_HALFSPACE);
     assert_int_equal(model_kind_of("roof"), MODEL_UNSUPPORTED);
-    assert_int_equal(model_kind_of("projection"), MODEL_UNSUPPORTED);
+    assert_int_equal(model_kind_of("projection"), MODEL_PROJECTION);
     assert_int_equal(model_kind_of("Cube"), MODEL_UNKNOWN);
     assert_int_equal(model_kind_of(""), MODEL_UNKNOWN);
     assert_true(model_is_leaf(MODEL_SPHERE) && model_is_leaf(MODEL_HULL));
     assert_false(model_is_leaf(MODEL_RESIZE) || model_is_leaf(MODEL_LIGHT));
     assert_true(model_is_2d(MODEL_OFFSET) && !model_is_2d(MODEL_CUBE));
+    assert_true(model_is_2d(MODEL_PROJECTION) && model_is_leaf(MODEL_PROJECTION));
 }
 
 /* text must lower to a model whose last node is the error expected. */

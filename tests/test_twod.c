@@ -358,8 +358,8 @@ static void test_errors(void **state)
     check_error("group() { text(text = 5); }", SC_ERR_SEMANTIC,
                 "m.csg:1:23: error: wrong type for argument 'text' of 'text' (expected a "
                 "string)");
-    check_error("group() { projection() { cube(1); } }", SC_ERR_UNSUPPORTED,
-                "m.csg:1:11: error: 'projection' inside group is not supported yet");
+    check_error("group() { roof() { square(1); } }", SC_ERR_UNSUPPORTED,
+                "m.csg:1:11: error: 'roof' inside group is not supported yet");
     check_error("group() { square(1e13); }", SC_ERR_LIMIT,
                 "m.csg:1:11: error: square: coordinates out of range (limit is 1e+12)");
     check_error("group() { multmatrix([[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0]]) { "

@@ -52,6 +52,7 @@
 
 #include "base/error.h"
 #include "build/build_mesh.h"
+#include "build/build_projection.h"
 #include "build/build_text.h"
 #include "formats/dxf.h"
 #include "model/faithful.h"
@@ -632,6 +633,8 @@ static sc_status eval_node(twod_walker *w, const model_node *n, const affine2 *u
         return read_text(e, n, out);
     case MODEL_IMPORT:
         return read_import(e, n, out);
+    case MODEL_PROJECTION:
+        return build_projection(e->c, n, out);
     default:
         break;
     }

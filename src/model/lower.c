@@ -398,7 +398,7 @@ static const struct {
     {"rotate_extrude", MODEL_ROTATE_EXTRUDE, lower_kept},
     {"import", MODEL_IMPORT, lower_import},
     {"surface", MODEL_SURFACE, lower_surface},
-    {"projection", MODEL_UNSUPPORTED, unsupported},
+    {"projection", MODEL_PROJECTION, lower_kept},
     {"offset", MODEL_OFFSET, lower_kept},
     {"circle", MODEL_CIRCLE, lower_kept},
     {"square", MODEL_SQUARE, lower_kept},
@@ -515,6 +515,8 @@ typedef struct open_node {
  * main-model leaf means its children are not lowered. */
 static context children_context(context ctx, model_kind kind)
 {
+    if (kind == MODEL_PROJECTION)
+        return IN_POINTS; /* 3D children, in every context */
     if (kind == MODEL_LINEAR_EXTRUDE || kind == MODEL_ROTATE_EXTRUDE)
         return IN_2D;
     if (ctx != IN_MAIN)

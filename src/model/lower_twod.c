@@ -13,6 +13,7 @@
  *   import    a file name, not .svg (not supported yet), .dxf (otherwise
  *             the builder names the operation that asked), then $fn, $fa,
  *             $fs, scale, layer, origin [x, y], origin and scale finite
+ *   projection  cut (true or false, by name or first), convexity a number
  *   text      text, size, font, direction, language, script, halign,
  *             valign, spacing, $fn, $fa, $fs; at most
  *             MODEL_MAX_TEXT_BYTES bytes without a NUL; size and spacing
@@ -377,6 +378,18 @@ static sc_status lower_rotate_extrude(model_lowerer *l, const parse_node *n,
     return SC_OK;
 }
 
+/* projection(cut = false, convexity): OpenSCAD takes cut by name or
+ * first; convexity is a number when given (spancast has no use for it). */
+static sc_status lower_projection(model_lowerer *l, const parse_node *n, model_node *out)
+{
+    out->u.projection.cut = 0;
+    sc_status st = model_bool(&l->r, n, "cut", 0, &out->u.projection.cut);
+    const parse_value *cv = model_arg(n, "convexity", -1);
+    if (st == SC_OK && cv && cv->kind != PARSE_NUMBER)
+        return model_wrong_type(&l->r, n, "convexity", cv, "a number");
+    return st;
+}
+
 /* multmatrix(m) below an extrusion: the builders take its xy part. */
 static sc_status lower_matrix(model_lowerer *l, const parse_node *n, model_node *out)
 {
@@ -410,6 +423,9 @@ sc_status model_twod_args(arena *mem, const char *file, const parse_node *n,
         break;
     case MODEL_XFORM:
         st = lower_matrix(&l, n, out);
+        break;
+    case MODEL_PROJECTION:
+        st = lower_projection(&l, n, out);
         break;
     case MODEL_LINEAR_EXTRUDE:
         st = lower_linear_extrude(&l, n, out);

@@ -16,8 +16,10 @@
  * builders read each in their own way, are lowered in their context:
  *   2D context       the children of the extrusions and of a 2D shape
  *                    (lower_twod.c)
- *   points context   the children of hull and minkowski, and each resize's
- *                    subtree once more for its measuring (lower_points.c)
+ *   points context   the children of hull and minkowski, the 3D children
+ *                    of projection (in whichever context it stands), and
+ *                    each resize's subtree once more for its measuring
+ *                    (lower_points.c)
  * In a nested context a node's argument error is kept in the node
  * (pending) and lowering goes on; the builder reports it where it reads
  * the node, so the first error in its walk is the one reported.
@@ -77,6 +79,7 @@ typedef enum model_kind {
     MODEL_POLYGON,
     MODEL_TEXT,
     MODEL_OFFSET,
+    MODEL_PROJECTION, /* 2D from 3D children (lowered in the points context) */
     MODEL_HULL,
     MODEL_MINKOWSKI,
     MODEL_SURFACE,
@@ -341,6 +344,10 @@ struct model_node {
         const model_linear_extrude *linear_extrude;
         const model_rotate_extrude *rotate_extrude;
         const model_resize *resize;
+        /* projection(cut): its children are lowered in the points context */
+        struct {
+            int cut;
+        } projection;
     } u;
 };
 
@@ -399,7 +406,7 @@ static inline int model_is_leaf(model_kind kind)
 /* Whether kind is a 2D shape. */
 static inline int model_is_2d(model_kind kind)
 {
-    return kind >= MODEL_CIRCLE && kind <= MODEL_OFFSET;
+    return kind >= MODEL_CIRCLE && kind <= MODEL_PROJECTION;
 }
 
 #endif

@@ -13,6 +13,9 @@
  *     result fed back as the next subject;
  *   - offset: ClipperOffset with miter limit 1000000 and the caller's arc
  *     tolerance (scaled), closed polygons;
+ *   - a mesh's projection: every face's contour turned counter-clockwise,
+ *     all united with non-zero fill, strictly simple; a section's loops
+ *     united with non-zero fill as they run;
  *   - minkowski: the sum of each pair of contours as quads (one per pair of
  *     edges, each turned counter-clockwise), plus each child's contours
  *     moved to the first point of each counter-clockwise contour of the
@@ -224,6 +227,28 @@ extern "C" int twod_clip_apply(twod_region *const *children, uint32_t count, two
                                                             : ClipperLib::ctIntersection;
         clipper.Execute(type, result, ClipperLib::pftNonZero, ClipperLib::pftNonZero);
         to_region(result, out);
+    });
+}
+
+extern "C" int twod_clip_union_nonzero(twod_region *r, int orient)
+{
+    return guarded([&] {
+        ClipperLib::Clipper clipper;
+        clipper.AddPaths(to_paths(*r, orient == 0), ClipperLib::ptSubject, true);
+        PolyTree result;
+        if (orient) {
+            /* as OpenSCAD: the faces' union, then that union made strictly
+             * simple (strict on every face at once is far slower) */
+            Paths united;
+            clipper.Execute(ClipperLib::ctUnion, united, ClipperLib::pftNonZero,
+                            ClipperLib::pftNonZero);
+            clipper.Clear();
+            clipper.StrictlySimple(true);
+            clipper.AddPaths(united, ClipperLib::ptSubject, true);
+        }
+        clipper.Execute(ClipperLib::ctUnion, result, ClipperLib::pftNonZero,
+                        ClipperLib::pftNonZero);
+        to_region(result, r);
     });
 }
 

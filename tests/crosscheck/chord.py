@@ -85,7 +85,9 @@ delta of that leaf's exact surface, so the bounds are the maxima over the
 leaves. Hull and minkowski of curved leaves, offset with round joins or
 of curved outlines, text (font curves), DXF and SVG imports (their arcs),
 resize of curved leaves (the scale comes from each side's own box) and
-any other node have no bound here: the model is reported as not
+any other node have no bound here (a projection adds none: spancast
+builds it from OpenSCAD's polygons in both modes; its extent is unknown
+here, so rotate_extrude of one has no bound): the model is reported as not
 exact-checkable with the reason.
 """
 import math
@@ -347,7 +349,7 @@ class Walk:
             count = int(max(fragments(extent, args) * abs(angle) / 360, 1))
             half = math.radians(abs(angle) / count) / 2
             if math.isinf(shape.x_max):
-                raise NotCheckable('rotate_extrude of an offset (its extent)')
+                raise NotCheckable('rotate_extrude of %s (its extent)' % shape.unbounded)
             delta = shape.delta + shape.x_max * (1 - math.cos(half))
             if delta > 0:
                 self.add(a, delta, shape.gamma + cone_gamma(half))
@@ -371,6 +373,7 @@ class Shape:
         self.min_x = 0.0
         self.max_x = 0.0
         self.exact_extent = True
+        self.unbounded = 'an offset'  # what made x_max infinite
 
     def points(self, t, pts):
         for x, y in pts:
@@ -443,7 +446,15 @@ class Shape:
                 self.x_max = max(self.x_max, x_sum)  # at most the children's sum
             else:
                 self.x_max = math.inf  # mitred corners reach beyond delta
+                self.unbounded = 'an offset'
             self.exact_extent = False
+        elif name == 'projection':
+            # spancast builds a projection from OpenSCAD's polygons of its 3D
+            # children in both modes, so it adds no chord error; its extent
+            # is not derived here.
+            self.x_max = math.inf
+            self.exact_extent = False
+            self.unbounded = 'a projection'
         elif name == 'import':
             raise NotCheckable('2D import of %s: its curves are OpenSCAD\'s reader\'s'
                                % str(args.get('file', '?')).rsplit('.', 1)[-1])

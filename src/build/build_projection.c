@@ -1,0 +1,768 @@
+/* projection(cut = true | false) as OpenSCAD 2021.01 computes it
+ * (GeometryEvaluator's projectionCut and projectionNoCut): a 2D region
+ * from 3D children, in the projection node's frame.
+ *
+ * Meshes. OpenSCAD projects or cuts the polygon mesh of its children, so
+ * every leaf here is OpenSCAD's mesh of it, in both modes, as a soup of
+ * outward triangles in the projection's frame: a cube its 6 quads; a
+ * sphere and a cylinder the rings and circles of their $fn, $fa, $fs
+ * (faithful.c's rule); a polyhedron its faces (build_mesh.c's fans); an
+ * import, surface and the extrusions their --faithful meshes. A
+ * transform with a negative determinant turns the triangles back outward.
+ *
+ * cut = false: the union of every face projected onto z = 0, each turned
+ * counter-clockwise (down-facing faces project clockwise), with non-zero
+ * fill (twod_clip_union_nonzero): OpenSCAD's PolysetUtils::project and
+ * its Clipper union. The same region comes from fewer faces: a closed
+ * mesh's up-facing ones, a convex leaf's 2D hull (projected_faces). The projection of a
+ * union is the union of the projections, so the faces of every leaf below unions, groups,
+ * transforms, colours and resizes go into one union. The projection of a
+ * difference or intersection is not a 2D boolean of the children's
+ * projections (a hole through a cube does not show from above unless it
+ * goes through); OpenSCAD projects the mesh of the boolean's result, which
+ * needs a mesh boolean. That is an error at the boolean's position until
+ * a mesh-boolean builder hands this file the result's triangles (where
+ * leaf_soup would take them).
+ *
+ * cut = true: OpenSCAD intersects the Nef polyhedron of the union of the
+ * children with the plane z = 0 and keeps the closed set, and its Nef
+ * booleans keep lower-dimensional parts: a face lying in the plane is part
+ * of the section (cube(10) cut at its bottom face is its 10 x 10 square),
+ * two cubes that only touch in z = 0 intersect in their common face, and
+ * a cube whose bottom face is in the plane, minus a cube below it that
+ * touches that face, keeps the face with a hole where they touched. Seen
+ * on OpenSCAD 2021.01 (docs/extrusions.md), all of these are the 2D
+ * booleans of each leaf's closed section, so that is what is built: the
+ * section of every leaf, with its faces in the plane, and the tree's
+ * booleans on them in 2D. A leaf's closed section is the union of its
+ * sections in the limits z -> 0 from above and from below (a point of
+ * z = 0 in a closed solid has the solid just above it or just below it,
+ * up to sets without area, which a 2D result does not have); the limit
+ * from above treats a vertex at z = 0 as below the plane, the limit from
+ * below as above it, and both sets of loops go into one non-zero union.
+ *
+ * A leaf's section: each triangle with vertices on both sides gives one
+ * directed segment, from its edge that goes down through the plane to the
+ * edge that comes up, which for outward triangles runs counter-clockwise
+ * around the solid's section seen from +z. The point on an edge is
+ * computed from its two ends in one fixed order, so the two triangles of
+ * an edge give the same point to the bit, and the segments are chained
+ * into loops by their end points. The loops' winding numbers are 1 inside
+ * the section and 0 outside, so booleans take the non-zero union of each
+ * child's loops; the union of a group is one non-zero union of all its
+ * leaves' loops.
+ *
+ * A 2D child is ignored with a warning (OpenSCAD: "Ignoring 2D child
+ * object for 3D operation"); '%' and '*' children are left out, as
+ * OpenSCAD leaves out background children. torus, quadric and implicit
+ * have no OpenSCAD mesh, and minkowski inside a projection is not built
+ * yet: errors at their position, never a silent skip. A hull is the
+ * convex hull of the corners of its children's meshes (OpenSCAD hulls
+ * their vertices), as triangles like any other leaf; a boolean or
+ * minkowski inside that hull needs a mesh boolean and is an error.
+ */
+#include "build/build_projection.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "base/error.h"
+#include "base/grow.h"
+#include "build/build_hull.h"
+#include "build/build_mesh.h"
+#include "build/build_revolve.h"
+#include "build/build_twod.h"
+#include "csg/hull3.h"
+#include "csg/prim_mesh.h"
+#include "model/faithful.h"
+
+/* Triangles, 3 corners each. */
+typedef struct soup {
+    vec3 *v;
+    uint32_t count, cap; /* in triangles */
+} soup;
+
+typedef struct pwalk {
+    const build_ctx *c;
+    const model_node *proj;
+    int cut;
+    build_resize_cache *cache;
+} pwalk;
+
+static int add_tri(soup *s, vec3 a, vec3 b, vec3 c)
+{
+    if (!grow_array32((void **)&s->v, &s->cap, s->count + 1, 3 * sizeof *s->v))
+        return 0;
+    s->v[3 * s->count] = a;
+    s->v[3 * s->count + 1] = b;
+    s->v[3 * s->count + 2] = c;
+    s->count++;
+    return 1;
+}
+
+/* A triangle of a convex shape with centre inside it, turned outward;
+ * one without area is left out. 0 when memory runs out. */
+static int add_outward(soup *s, vec3 centre, vec3 a, vec3 b, vec3 c)
+{
+    vec3 n = v3_cross(v3_sub(b, a), v3_sub(c, a));
+    if (n.x == 0 && n.y == 0 && n.z == 0)
+        return 1;
+    if (v3_dot(n, v3_sub(a, centre)) < 0)
+        return add_tri(s, a, c, b);
+    return add_tri(s, a, b, c);
+}
+
+/* The planar convex quad a b c d (in cyclic order) as two outward
+ * triangles. */
+static int add_quad(soup *s, vec3 centre, vec3 a, vec3 b, vec3 c, vec3 d)
+{
+    return add_outward(s, centre, a, b, c) && add_outward(s, centre, a, c, d);
+}
+
+static int positive_finite(double x)
+{
+    return x > 0 && isfinite(x);
+}
+
+/* cube(size, center): OpenSCAD's 6 quads. */
+static int cube_soup(const model_node *n, soup *s)
+{
+    const double *size = n->u.cube.size;
+    if (!positive_finite(size[0]) || !positive_finite(size[1]) ||
+        !positive_finite(size[2]))
+        return 1;
+    vec3 sz = v3(size[0], size[1], size[2]);
+    vec3 lo = n->u.cube.center ? v3_scale(sz, -0.5) : v3(0, 0, 0);
+    vec3 hi = n->u.cube.center ? v3_scale(sz, 0.5) : sz;
+    vec3 p[8];
+    for (int k = 0; k < 8; k++)
+        p[k] = v3(k & 1 ? hi.x : lo.x, k & 2 ? hi.y : lo.y, k & 4 ? hi.z : lo.z);
+    static const int faces[6][4] = {{0, 1, 3, 2}, {4, 5, 7, 6}, {0, 1, 5, 4},
+                                    {2, 3, 7, 6}, {0, 2, 6, 4}, {1, 3, 7, 5}};
+    vec3 centre = v3_scale(v3_add(lo, hi), 0.5);
+    for (int f = 0; f < 6; f++) {
+        if (!add_quad(s, centre, p[faces[f][0]], p[faces[f][1]], p[faces[f][2]],
+                      p[faces[f][3]]))
+            return 0;
+    }
+    return 1;
+}
+
+/* Point k of a circle of radius r with f fragments at height z, as
+ * faithful.c places it. */
+static vec3 circle_point(double r, long k, long f, double z)
+{
+    double phi = (360.0 * (double)(k % f)) / (double)f;
+    return v3(r * faithful_cos_deg(phi), r * faithful_sin_deg(phi), z);
+}
+
+static sc_status fragments_error(const pwalk *w, const model_node *n, double r)
+{
+    return err_set(w->c->error, SC_ERR_LIMIT, &n->loc,
+                   "projection: $fn, $fa and $fs of radius %g give too many fragments "
+                   "(limit is %d)",
+                   r, FAITHFUL_MAX_FRAGMENTS);
+}
+
+/* The rings of radii[i] at heights z[i] (i < rings, top first), each of f
+ * points, closed by caps: OpenSCAD's sphere and cylinder. */
+static int rings_soup(const double *radii, const double *z, long rings, long f, soup *s)
+{
+    vec3 centre = v3(0, 0, (z[0] + z[rings - 1]) / 2);
+    for (long k = 1; k + 1 < f; k++) {
+        if (!add_outward(s, centre, circle_point(radii[0], 0, f, z[0]),
+                         circle_point(radii[0], k, f, z[0]),
+                         circle_point(radii[0], k + 1, f, z[0])) ||
+            !add_outward(s, centre, circle_point(radii[rings - 1], 0, f, z[rings - 1]),
+                         circle_point(radii[rings - 1], k, f, z[rings - 1]),
+                         circle_point(radii[rings - 1], k + 1, f, z[rings - 1])))
+            return 0;
+    }
+    for (long i = 0; i + 1 < rings; i++) {
+        for (long k = 0; k < f; k++) {
+            if (!add_quad(s, centre, circle_point(radii[i], k, f, z[i]),
+                          circle_point(radii[i + 1], k, f, z[i + 1]),
+                          circle_point(radii[i + 1], k + 1, f, z[i + 1]),
+                          circle_point(radii[i], k + 1, f, z[i])))
+                return 0;
+        }
+    }
+    return 1;
+}
+
+static sc_status sphere_soup(const pwalk *w, const model_node *n, soup *s)
+{
+    double r = n->u.sphere.r;
+    if (!positive_finite(r))
+        return SC_OK;
+    const model_resolution *res = &n->u.sphere.res;
+    long f = faithful_fragments(r, res->fn, res->fs, res->fa);
+    if (f < 0)
+        return fragments_error(w, n, r);
+    long rings = (f + 1) / 2;
+    double *radii = malloc((size_t)rings * 2 * sizeof *radii);
+    if (!radii)
+        return err_nomem(w->c->error, &n->loc);
+    double *z = radii + rings;
+    for (long i = 0; i < rings; i++) {
+        double phi = (180.0 * ((double)i + 0.5)) / (double)rings;
+        radii[i] = r * faithful_sin_deg(phi);
+        z[i] = r * faithful_cos_deg(phi);
+    }
+    int ok = rings_soup(radii, z, rings, f, s);
+    free(radii);
+    return ok ? SC_OK : err_nomem(w->c->error, &n->loc);
+}
+
+static sc_status cylinder_soup(const pwalk *w, const model_node *n, soup *s)
+{
+    double h = n->u.cylinder.h, r1 = n->u.cylinder.r1, r2 = n->u.cylinder.r2;
+    if (!positive_finite(h) || !(r1 >= 0 && r2 >= 0) || !isfinite(r1) || !isfinite(r2) ||
+        (r1 == 0 && r2 == 0))
+        return SC_OK;
+    const model_resolution *res = &n->u.cylinder.res;
+    long f = faithful_fragments(fmax(r1, r2), res->fn, res->fs, res->fa);
+    if (f < 0)
+        return fragments_error(w, n, fmax(r1, r2));
+    double z0 = n->u.cylinder.center ? -h / 2 : 0;
+    double radii[2] = {r2, r1}, z[2] = {z0 + h, z0};
+    return rings_soup(radii, z, 2, f, s) ? SC_OK : err_nomem(w->c->error, &n->loc);
+}
+
+/* The triangles of a mesh leaf (outward, as prim_mesh keeps them). */
+static int mesh_soup(const prim *p, soup *s)
+{
+    if (p->kind != PRIM_MESH)
+        return 1;
+    const prim_mesh *mesh = p->u.mesh.mesh;
+    for (uint32_t t = 0; t < mesh->tri_count; t++) {
+        if (!add_tri(s, mesh->v[3 * t], mesh->v[3 * t + 1], mesh->v[3 * t + 2]))
+            return 0;
+    }
+    return 1;
+}
+
+/* polyhedron, import, surface, linear_extrude, rotate_extrude: their
+ * meshes, the extrusions' as in --faithful (OpenSCAD's polygons). */
+static sc_status built_soup(const pwalk *w, const model_node *n, soup *s)
+{
+    const build_ctx *c = w->c;
+    if (n->pending)
+        return build_pending(c, n);
+    build_ctx fc = *c;
+    fc.faithful = 1;
+    prim p;
+    memset(&p, 0, sizeof p);
+    const char *empty = NULL;
+    sc_status st;
+    switch (n->kind) {
+    case MODEL_POLYHEDRON:
+        if (n->u.polyhedron.face_count == 0)
+            return SC_OK;
+        st = build_mesh_prim(c, &n->loc, "polyhedron", 1, n->u.polyhedron.points,
+                             n->u.polyhedron.point_count, n->u.polyhedron.indices,
+                             n->u.polyhedron.face_start, n->u.polyhedron.face_count, &p,
+                             &empty);
+        break;
+    case MODEL_IMPORT:
+        st = build_import(c, n->u.import, &p, &empty);
+        break;
+    case MODEL_SURFACE:
+        st = build_surface(c, n->u.surface, &p, &empty);
+        break;
+    case MODEL_ROTATE_EXTRUDE:
+        st = build_rotate_extrude(&fc, n, 1, &p, &empty);
+        break;
+    default:
+        st = build_linear_extrude(&fc, n, 1, &p, &empty);
+        break;
+    }
+    if (st != SC_OK || empty)
+        return st;
+    return mesh_soup(&p, s) ? SC_OK : err_nomem(c->error, &n->loc);
+}
+
+static sc_status leaf_soup(pwalk *w, const model_node *n, soup *s, int depth);
+
+/* The corners of the meshes below hull node parent (through m, in the
+ * hull's frame) added to pts, as OpenSCAD hulls them: groups, colours,
+ * transforms and resizes pass through; a boolean or minkowski needs a
+ * mesh boolean. */
+static sc_status hull_points(pwalk *w, const model_node *parent, const affine *m,
+                             int depth, soup *pts)
+{
+    const build_ctx *c = w->c;
+    if (depth > BUILD_PROJECTION_MAX_DEPTH)
+        return err_set(c->error, SC_ERR_LIMIT, &parent->loc,
+                       "too many nested nodes inside projection (limit is %d)",
+                       BUILD_PROJECTION_MAX_DEPTH);
+    for (const model_node *n = parent->first_child; n; n = n->next) {
+        model_kind kind = n->kind;
+        if ((n->modifiers & (MODEL_MOD_DISABLE | MODEL_MOD_BACKGROUND)) ||
+            kind == MODEL_LIGHT || kind == MODEL_CAMERA || kind == MODEL_BACKGROUND)
+            continue;
+        if (n->pending && !model_is_2d(kind))
+            return build_pending(c, n);
+        sc_status st = SC_OK;
+        if (kind == MODEL_UNION || kind == MODEL_COLOR || kind == MODEL_MATERIAL) {
+            st = hull_points(w, n, m, depth + 1, pts);
+        } else if (kind == MODEL_XFORM || kind == MODEL_RESIZE) {
+            affine local = kind == MODEL_XFORM ? *n->u.xform : affine_identity();
+            const char *warning = NULL;
+            if (kind == MODEL_RESIZE)
+                st = build_resize(c, n, &w->cache, &local, &warning);
+            affine inner = affine_mul(m, &local), inverse;
+            if (st == SC_OK && affine_invert(&inner, &inverse))
+                st = hull_points(w, n, &inner, depth + 1, pts);
+        } else if (kind == MODEL_DIFFERENCE || kind == MODEL_INTERSECTION ||
+                   kind == MODEL_MINKOWSKI || model_is_2d(kind)) {
+            st = err_set(c->error, SC_ERR_UNSUPPORTED, &n->loc,
+                         "'%s' inside hull is not supported yet", n->name);
+        } else {
+            soup s = {NULL, 0, 0};
+            st = leaf_soup(w, n, &s, depth + 1);
+            for (uint32_t i = 0; st == SC_OK && i < 3 * s.count; i += 3) {
+                if (!add_tri(pts, affine_point(m, s.v[i]), affine_point(m, s.v[i + 1]),
+                             affine_point(m, s.v[i + 2])))
+                    st = err_nomem(c->error, &n->loc);
+            }
+            free(s.v);
+        }
+        if (st != SC_OK)
+            return st;
+    }
+    return SC_OK;
+}
+
+/* hull(): the triangles of the convex hull of its children's mesh
+ * corners (hull3.c, exact orientation tests), outward. A hull without
+ * volume has no area seen from any side but its own plane's; it is left
+ * out as OpenSCAD's empty 3D hull. */
+static sc_status hull_soup(pwalk *w, const model_node *n, soup *s, int depth)
+{
+    const build_ctx *c = w->c;
+    soup pts = {NULL, 0, 0};
+    affine id = affine_identity();
+    sc_status st = hull_points(w, n, &id, depth, &pts);
+    hull3 h;
+    hull3_status hs = HULL3_FLAT;
+    if (st == SC_OK && pts.count)
+        hs = hull3_compute(pts.v, 3 * pts.count, &h);
+    free(pts.v);
+    if (st != SC_OK || hs == HULL3_FLAT)
+        return st;
+    if (hs == HULL3_NOMEM)
+        return err_nomem(c->error, &n->loc);
+    if (hs == HULL3_RANGE)
+        return err_set(c->error, SC_ERR_LIMIT, &n->loc,
+                       "hull: too many points or a coordinate too large");
+    for (uint32_t t = 0; t < h.tri_count && st == SC_OK; t++) {
+        const uint32_t *k = &h.tris[3 * t];
+        if (!add_tri(s, h.vertices[k[0]], h.vertices[k[1]], h.vertices[k[2]]))
+            st = err_nomem(c->error, &n->loc);
+    }
+    hull3_free(&h);
+    return st;
+}
+
+/* The soup of leaf n in its own frame; SC_ERR_UNSUPPORTED for leaves
+ * without an OpenSCAD mesh. */
+static sc_status leaf_soup(pwalk *w, const model_node *n, soup *s, int depth)
+{
+    const build_ctx *c = w->c;
+    switch (n->kind) {
+    case MODEL_CUBE:
+        if (n->pending)
+            return build_pending(c, n);
+        return cube_soup(n, s) ? SC_OK : err_nomem(c->error, &n->loc);
+    case MODEL_SPHERE:
+        return n->pending ? build_pending(c, n) : sphere_soup(w, n, s);
+    case MODEL_CYLINDER:
+        return n->pending ? build_pending(c, n) : cylinder_soup(w, n, s);
+    case MODEL_POLYHEDRON:
+    case MODEL_IMPORT:
+    case MODEL_SURFACE:
+    case MODEL_LINEAR_EXTRUDE:
+    case MODEL_ROTATE_EXTRUDE:
+        return built_soup(w, n, s);
+    case MODEL_HULL:
+        return hull_soup(w, n, s, depth);
+    case MODEL_TORUS:
+    case MODEL_QUADRIC:
+    case MODEL_IMPLICIT:
+        return err_set(c->error, SC_ERR_UNSUPPORTED, &n->loc,
+                       "'%s' inside projection is not supported (it has no OpenSCAD "
+                       "polygon mesh)",
+                       n->name);
+    default:
+        return err_set(c->error, SC_ERR_UNSUPPORTED, &n->loc,
+                       "'%s' inside projection is not supported yet", n->name);
+    }
+}
+
+/* ---- sections ---- */
+
+/* Whether z is on the solid's side of the plane for the limit from above
+ * (up: the plane just above z = 0, so z = 0 is below it) or below. */
+static int above(double z, int up)
+{
+    return up ? z > 0 : z >= 0;
+}
+
+/* The point of z = 0 on the edge p q (one end above, one below in the
+ * limit's sense), the same to the bit for q p: an end at z = 0 is the
+ * point itself. */
+static void crossing(vec3 p, vec3 q, double xy[2])
+{
+    if (q.x < p.x || (q.x == p.x && (q.y < p.y || (q.y == p.y && q.z < p.z)))) {
+        vec3 t = p;
+        p = q;
+        q = t;
+    }
+    if (p.z == 0 || q.z == 0) {
+        vec3 at = p.z == 0 ? p : q;
+        xy[0] = at.x;
+        xy[1] = at.y;
+        return;
+    }
+    double t = p.z / (p.z - q.z);
+    xy[0] = p.x + t * (q.x - p.x);
+    xy[1] = p.y + t * (q.y - p.y);
+}
+
+typedef struct segment {
+    double s[2], e[2]; /* from s to e */
+} segment;
+
+static int point_less(const double *a, const double *b)
+{
+    return a[0] < b[0] || (a[0] == b[0] && a[1] < b[1]);
+}
+
+static int segment_cmp(const void *pa, const void *pb)
+{
+    const segment *a = pa, *b = pb;
+    return point_less(a->s, b->s) ? -1 : point_less(b->s, a->s) ? 1 : 0;
+}
+
+/* The first segment not used starting at xy (segments sorted by start),
+ * or count. */
+static uint32_t next_from(const segment *seg, const unsigned char *used, uint32_t count,
+                          const double *xy)
+{
+    uint32_t lo = 0, hi = count;
+    while (lo < hi) {
+        uint32_t mid = lo + (hi - lo) / 2;
+        if (point_less(seg[mid].s, xy))
+            lo = mid + 1;
+        else
+            hi = mid;
+    }
+    for (; lo < count && seg[lo].s[0] == xy[0] && seg[lo].s[1] == xy[1]; lo++) {
+        if (!used[lo])
+            return lo;
+    }
+    return count;
+}
+
+/* Adds the loops of soup s cut by z = 0 (limit up or down) to out. 0
+ * when memory runs out or out is full. */
+static int section_loops(const soup *s, int up, twod_region *out)
+{
+    segment *seg = s->count ? malloc((size_t)s->count * sizeof *seg) : NULL;
+    if (s->count && !seg)
+        return 0;
+    uint32_t count = 0;
+    for (uint32_t t = 0; t < s->count; t++) {
+        const vec3 *v = &s->v[3 * t];
+        int cls[3] = {above(v[0].z, up), above(v[1].z, up), above(v[2].z, up)};
+        if (cls[0] == cls[1] && cls[1] == cls[2])
+            continue;
+        segment g;
+        for (int k = 0; k < 3; k++) {
+            int j = (k + 1) % 3;
+            if (cls[k] && !cls[j])
+                crossing(v[k], v[j], g.s);
+            else if (!cls[k] && cls[j])
+                crossing(v[k], v[j], g.e);
+        }
+        if (g.s[0] != g.e[0] || g.s[1] != g.e[1])
+            seg[count++] = g;
+    }
+    unsigned char *used = count ? calloc(count, 1) : NULL;
+    int ok = !count || used;
+    if (ok && count)
+        qsort(seg, count, sizeof *seg, segment_cmp);
+    for (uint32_t i = 0; ok && i < count; i++) {
+        if (used[i])
+            continue;
+        ok = twod_begin_contour(out) && twod_add_point(out, seg[i].s[0], seg[i].s[1]);
+        uint32_t at = i;
+        while (ok) {
+            used[at] = 1;
+            uint32_t next = next_from(seg, used, count, seg[at].e);
+            if (next == count) {
+                /* back at the start, or a loop an open mesh leaves open,
+                 * closed here */
+                ok = twod_add_point(out, seg[at].e[0], seg[at].e[1]);
+                break;
+            }
+            ok = twod_add_point(out, seg[next].s[0], seg[next].s[1]);
+            at = next;
+        }
+        if (ok)
+            twod_end_contour(out);
+    }
+    free(used);
+    free(seg);
+    return ok;
+}
+
+/* Adds the outline of s seen along z to out. The union of every face's
+ * projection (OpenSCAD's) is, for a closed mesh, the union of its faces
+ * that look up (a vertical line through the solid meets its top at such a
+ * face), up to sets without area: half the faces, and no front face
+ * overlapping a back one, which is what makes the clipper slow. A convex
+ * leaf (convex set) is the 2D hull of its corners, the same region. */
+static int projected_faces(const soup *s, int convex, twod_region *out)
+{
+    if (convex) {
+        double *xy = s->count ? malloc((size_t)s->count * 6 * sizeof *xy) : NULL;
+        if (s->count && !xy)
+            return 0;
+        for (uint32_t i = 0; i < 3 * s->count; i++) {
+            xy[2 * i] = s->v[i].x;
+            xy[2 * i + 1] = s->v[i].y;
+        }
+        twod_region hull;
+        twod_init(&hull);
+        int ok = twod_hull(xy, 3 * s->count, &hull);
+        free(xy);
+        for (uint32_t k = 0; ok && k < hull.contour_count; k++) {
+            ok = twod_begin_contour(out);
+            for (uint32_t i = hull.start[k]; ok && i < hull.start[k + 1]; i++)
+                ok = twod_add_point(out, hull.xy[2 * i], hull.xy[2 * i + 1]);
+            if (ok)
+                twod_end_contour(out);
+        }
+        twod_free(&hull);
+        return ok;
+    }
+    for (uint32_t t = 0; t < s->count; t++) {
+        const vec3 *v = &s->v[3 * t];
+        if (!(v3_cross(v3_sub(v[1], v[0]), v3_sub(v[2], v[0])).z > 0))
+            continue;
+        if (!twod_begin_contour(out))
+            return 0;
+        for (int k = 0; k < 3; k++) {
+            if (!twod_add_point(out, v[k].x, v[k].y))
+                return 0;
+        }
+        twod_end_contour(out);
+    }
+    return 1;
+}
+
+/* ---- the walk ---- */
+
+static sc_status clip_error(const pwalk *w, const model_node *n, int code,
+                            const twod_region *r)
+{
+    if (code == TWOD_CLIP_OK)
+        return SC_OK;
+    if (code == TWOD_CLIP_RANGE)
+        return err_set(w->c->error, SC_ERR_LIMIT, &n->loc,
+                       "projection: coordinates out of range (limit is %g)",
+                       TWOD_MAX_COORD);
+    if (code == TWOD_CLIP_TOO_MANY)
+        return build_twod_add_error(w->c, w->proj, r);
+    return err_nomem(w->c->error, &n->loc);
+}
+
+static sc_status add_error(const pwalk *w, const twod_region *r)
+{
+    return build_twod_add_error(w->c, w->proj, r);
+}
+
+/* Adds contour copies of src to dst. */
+static int append(twod_region *dst, const twod_region *src)
+{
+    for (uint32_t k = 0; k < src->contour_count; k++) {
+        if (!twod_begin_contour(dst))
+            return 0;
+        for (uint32_t i = src->start[k]; i < src->start[k + 1]; i++) {
+            if (!twod_add_point(dst, src->xy[2 * i], src->xy[2 * i + 1]))
+                return 0;
+        }
+        twod_end_contour(dst);
+    }
+    return 1;
+}
+
+/* Leaves whose mesh is convex. */
+static int convex_leaf(model_kind kind)
+{
+    return kind == MODEL_CUBE || kind == MODEL_SPHERE || kind == MODEL_CYLINDER ||
+           kind == MODEL_HULL;
+}
+
+/* Adds leaf n's loops (cut) or projected faces to out. */
+static sc_status leaf(pwalk *w, const model_node *n, const affine *m, int depth,
+                      twod_region *out)
+{
+    soup s = {NULL, 0, 0};
+    sc_status st = leaf_soup(w, n, &s, depth);
+    if (st == SC_OK && s.count) {
+        int flip = affine_det(m) < 0;
+        for (uint32_t t = 0; t < s.count; t++) {
+            vec3 *v = &s.v[3 * t];
+            vec3 a = affine_point(m, v[0]), b = affine_point(m, v[1]),
+                 c = affine_point(m, v[2]);
+            v[0] = a;
+            v[1] = flip ? c : b;
+            v[2] = flip ? b : c;
+        }
+        int ok = w->cut ? section_loops(&s, 1, out) && section_loops(&s, 0, out)
+                        : projected_faces(&s, convex_leaf(n->kind), out);
+        if (!ok)
+            st = add_error(w, out);
+    }
+    free(s.v);
+    return st;
+}
+
+static sc_status walk_node(pwalk *w, const model_node *n, const affine *m, int depth,
+                           twod_region *out);
+
+static int skipped(const model_node *n)
+{
+    return (n->modifiers & (MODEL_MOD_DISABLE | MODEL_MOD_BACKGROUND)) != 0 ||
+           n->kind == MODEL_LIGHT || n->kind == MODEL_CAMERA ||
+           n->kind == MODEL_BACKGROUND;
+}
+
+static sc_status walk_children(pwalk *w, const model_node *n, const affine *m, int depth,
+                               twod_region *out)
+{
+    for (const model_node *k = n->first_child; k; k = k->next) {
+        if (skipped(k))
+            continue;
+        sc_status st = walk_node(w, k, m, depth + 1, out);
+        if (st != SC_OK)
+            return st;
+    }
+    return SC_OK;
+}
+
+/* difference or intersection n (cut only): each child's loops united on
+ * their own, the boolean of them in 2D, the result's contours (outer
+ * counter-clockwise, holes clockwise: winding 1 inside, 0 outside) added
+ * to out. */
+static sc_status boolean(pwalk *w, const model_node *n, const affine *m, int depth,
+                         twod_region *out)
+{
+    uint32_t count = 0;
+    for (const model_node *k = n->first_child; k; k = k->next)
+        count += !skipped(k) && !model_is_2d(k->kind);
+    if (count == 0)
+        return SC_OK;
+    twod_region *parts = calloc(count, sizeof *parts);
+    twod_region **list = calloc(count, sizeof *list);
+    sc_status st = parts && list ? SC_OK : err_nomem(w->c->error, &n->loc);
+    uint32_t i = 0;
+    for (const model_node *k = n->first_child; k && st == SC_OK; k = k->next) {
+        if (skipped(k))
+            continue;
+        if (model_is_2d(k->kind)) {
+            st = walk_node(w, k, m, depth + 1, out); /* the warning */
+            continue;
+        }
+        twod_region *part = &parts[i];
+        list[i++] = part;
+        twod_init(part);
+        st = walk_node(w, k, m, depth + 1, part);
+        if (st == SC_OK)
+            st = clip_error(w, k, twod_clip_union_nonzero(part, 0), part);
+    }
+    twod_op op = n->kind == MODEL_DIFFERENCE ? TWOD_DIFFERENCE : TWOD_INTERSECTION;
+    twod_region result;
+    twod_init(&result);
+    if (st == SC_OK)
+        st = clip_error(w, n, twod_clip_apply(list, count, op, &result), &result);
+    if (st == SC_OK && !append(out, &result))
+        st = add_error(w, out);
+    twod_free(&result);
+    for (uint32_t j = 0; parts && j < i; j++)
+        twod_free(&parts[j]);
+    free(parts);
+    free(list);
+    return st;
+}
+
+static sc_status walk_node(pwalk *w, const model_node *n, const affine *m, int depth,
+                           twod_region *out)
+{
+    const build_ctx *c = w->c;
+    if (depth > BUILD_PROJECTION_MAX_DEPTH)
+        return err_set(c->error, SC_ERR_LIMIT, &n->loc,
+                       "too many nested nodes inside projection (limit is %d)",
+                       BUILD_PROJECTION_MAX_DEPTH);
+    model_kind kind = n->kind;
+    if (n->pending && !model_is_2d(kind))
+        return build_pending(c, n);
+    if (model_is_2d(kind)) {
+        if (c->note && !c->note->message[0])
+            err_set(c->note, SC_OK, &n->loc,
+                    "2D object '%s' inside projection is ignored (as in OpenSCAD)",
+                    n->name);
+        return SC_OK;
+    }
+    switch (kind) {
+    case MODEL_UNION:
+    case MODEL_COLOR:
+    case MODEL_MATERIAL:
+        return walk_children(w, n, m, depth, out);
+    case MODEL_XFORM:
+    case MODEL_RESIZE: {
+        affine local;
+        sc_status st = SC_OK;
+        if (kind == MODEL_XFORM) {
+            local = *n->u.xform;
+        } else {
+            const char *warning = NULL;
+            st = build_resize(c, n, &w->cache, &local, &warning);
+            if (st == SC_OK && warning && c->note && !c->note->message[0])
+                err_set(c->note, SC_OK, &n->loc, "%s", warning);
+        }
+        affine inner = affine_mul(m, &local), inverse;
+        if (st != SC_OK || !affine_invert(&inner, &inverse))
+            return st; /* singular: no geometry */
+        return walk_children(w, n, &inner, depth, out);
+    }
+    case MODEL_DIFFERENCE:
+    case MODEL_INTERSECTION:
+        if (!w->cut)
+            return err_set(c->error, SC_ERR_UNSUPPORTED, &n->loc,
+                           "projection(cut = false) of '%s' is not supported yet (it "
+                           "needs a mesh boolean; cut = true works)",
+                           n->name);
+        return boolean(w, n, m, depth, out);
+    default:
+        return leaf(w, n, m, depth, out);
+    }
+}
+
+sc_status build_projection(const build_ctx *c, const model_node *n, twod_region *out)
+{
+    twod_clear(out);
+    if (n->pending)
+        return build_pending(c, n);
+    pwalk w = {c, n, n->u.projection.cut, NULL};
+    affine id = affine_identity();
+    sc_status st = walk_children(&w, n, &id, 0, out);
+    if (st == SC_OK)
+        st = clip_error(&w, n, twod_clip_union_nonzero(out, !w.cut), out);
+    build_resize_cache_free(w.cache);
+    return st;
+}
