@@ -193,6 +193,19 @@ static sc_status close_vector(parser *ps, parse_value *v)
  * reads the vector, with its messages. */
 enum { FAST_DEPTH = 16 };
 
+/* A new, cleared slot on top of the value stack; NULL when out of
+ * memory. */
+static inline parse_value *fast_slot(parser *ps)
+{
+    if (ps->value_count == ps->value_cap &&
+        !grow_array((void **)&ps->values, &ps->value_cap, ps->value_count + 1,
+                    sizeof *ps->values))
+        return NULL;
+    parse_value *slot = &ps->values[ps->value_count++];
+    memset(slot, 0, sizeof *slot);
+    return slot;
+}
+
 static const char *skip_blanks(const char *p, const char *end)
 {
     while (p < end && (*p == ' ' || *p == '\t' || *p == '\r'))
@@ -241,13 +254,15 @@ static sc_status fast_vector(parser *ps, parse_value *out, int *done)
             if (!lex_number_at(p, end, &x, &after) ||
                 ps->value_count - open[depth - 1].start >= PARSE_MAX_VECTOR)
                 goto give_up;
-            memset(&v, 0, sizeof v);
-            v.kind = PARSE_NUMBER;
-            v.line = line;
-            v.column = (int)(p - line_start) + 1;
-            v.u.number = x;
-            if ((st = push_value(ps, &v)) != SC_OK)
+            parse_value *slot = fast_slot(ps);
+            if (!slot) {
+                st = err_nomem(ps->error, NULL);
                 goto give_up;
+            }
+            slot->kind = PARSE_NUMBER;
+            slot->line = line;
+            slot->column = (int)(p - line_start) + 1;
+            slot->u.number = x;
             p = skip_blanks(after, end);
             if (p < end && *p == ',') {
                 p++;
@@ -288,8 +303,12 @@ static sc_status fast_vector(parser *ps, parse_value *out, int *done)
             }
             if (ps->value_count - open[depth - 1].start >= PARSE_MAX_VECTOR)
                 goto give_up;
-            if ((st = push_value(ps, &v)) != SC_OK)
+            parse_value *slot = fast_slot(ps);
+            if (!slot) {
+                st = err_nomem(ps->error, NULL);
                 goto give_up;
+            }
+            *slot = v;
             p = skip_blanks(p, end);
             if (p < end && *p == ',') {
                 p++;
