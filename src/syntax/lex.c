@@ -280,19 +280,25 @@ static number_scan scan_number(const char *s, const char *end, double *value,
         negative = *p == '-';
         p++;
     }
+    /* Leading zeros first, then every digit counts; W keeps the first 19
+     * (no overflow), of which the fast path uses at most 15. */
     uint64_t w = 0;
     int significant = 0, fraction = 0;
-    for (; p < end && is_digit((unsigned char)*p); p++) {
-        significant += w != 0 || *p != '0';
-        if (significant <= 15)
+    while (p < end && *p == '0')
+        p++;
+    for (; p < end && is_digit((unsigned char)*p); p++, significant++) {
+        if (significant < 19)
             w = 10 * w + (uint64_t)(*p - '0');
     }
     if (p < end && *p == '.') {
-        for (p++; p < end && is_digit((unsigned char)*p); p++) {
-            significant += w != 0 || *p != '0';
-            if (significant <= 15)
+        p++;
+        if (significant == 0) {
+            for (; p < end && *p == '0'; p++)
+                fraction++;
+        }
+        for (; p < end && is_digit((unsigned char)*p); p++, significant++, fraction++) {
+            if (significant < 19)
                 w = 10 * w + (uint64_t)(*p - '0');
-            fraction++;
         }
     }
     int exponent = 0, exp_digits = 0;
