@@ -13,6 +13,9 @@
 
 #include <cmocka.h>
 
+#include <math.h>
+#include <stdlib.h>
+
 #include "csg/bvh.h"
 #include "csg/csg.h"
 
@@ -188,6 +191,208 @@ static void wide_union_gets_a_bvh(void **state)
     csg_tree_free(t);
 }
 
+/* The binned SAH split, recomputed the plain way (one set of bins, each
+ * box added in turn) at every interior node of a hierarchy built over
+ * random boxes: the node's box is the exact union of its operands' boxes,
+ * its axis is the widest extent of their centres, and its left child
+ * holds exactly the operands whose bin lies left of the cheapest split.
+ * bvh_build bins in several interleaved sets; this checks that it still
+ * makes the hierarchy the plain algorithm makes. */
+enum { CHECK_BINS = 16 };
+
+static bbox union_of(const bbox *boxes, uint32_t count)
+{
+    bbox u = boxes[0];
+    for (uint32_t i = 1; i < count; i++)
+        u = bbox_union(u, boxes[i]);
+    return u;
+}
+
+static double half_area_of(bbox b)
+{
+    double x = b.hi.x - b.lo.x, y = b.hi.y - b.lo.y, z = b.hi.z - b.lo.z;
+    return x * y + y * z + z * x;
+}
+
+static double centre_of(const bbox *b, int axis)
+{
+    return 0.5 * (v3_get(b->lo, axis) + v3_get(b->hi, axis));
+}
+
+static void check_split(const bvh_nodes *out, uint32_t node, const bbox *boxes,
+                        uint32_t count, int depth, int *checked)
+{
+    const csg_bvh_node *v = &out->v[node];
+    bbox u = union_of(boxes, count);
+    assert_memory_equal(&v->bounds, &u, sizeof u);
+    if (v->count) {
+        assert_int_equal(v->count, count);
+        return;
+    }
+    bbox centres = {bbox_center(&boxes[0]), bbox_center(&boxes[0])};
+    for (uint32_t i = 1; i < count; i++)
+        centres = bbox_add_point(centres, bbox_center(&boxes[i]));
+    vec3 ext = bbox_extent(&centres);
+    int axis = ext.x >= ext.y && ext.x >= ext.z ? 0 : ext.y >= ext.z ? 1 : 2;
+    assert_int_equal(v->axis, axis);
+    /* The left child follows the node; its operands come first. */
+    uint32_t left_count = 0, stack[BVH_MAX_DEPTH], sp = 0;
+    stack[sp++] = node + 1;
+    while (sp) {
+        const csg_bvh_node *w = &out->v[stack[--sp]];
+        if (w->count) {
+            left_count += w->count;
+        } else {
+            stack[sp++] = (uint32_t)(w - out->v) + 1;
+            stack[sp++] = w->index;
+        }
+    }
+    double lo = v3_get(centres.lo, axis), width = v3_get(ext, axis);
+    uint32_t bin_count[CHECK_BINS] = {0};
+    bbox bin_box[CHECK_BINS];
+    for (uint32_t i = 0; i < count; i++) {
+        int b = (int)((centre_of(&boxes[i], axis) - lo) * (CHECK_BINS / width));
+        b = b < 0 ? 0 : b >= CHECK_BINS ? CHECK_BINS - 1 : b;
+        bin_box[b] = bin_count[b]++ ? bbox_union(bin_box[b], boxes[i]) : boxes[i];
+    }
+    double best = half_area_of(u) * count;
+    int best_bin = 0;
+    for (int split = 1; split < CHECK_BINS; split++) {
+        uint32_t nl = 0, nr = 0;
+        bbox l = bbox_empty(), r = bbox_empty();
+        for (int b = 0; b < CHECK_BINS; b++) {
+            if (!bin_count[b])
+                continue;
+            if (b < split) {
+                l = nl ? bbox_union(l, bin_box[b]) : bin_box[b];
+                nl += bin_count[b];
+            } else {
+                r = nr ? bbox_union(r, bin_box[b]) : bin_box[b];
+                nr += bin_count[b];
+            }
+        }
+        if (!nl || !nr)
+            continue;
+        double cost = half_area_of(l) * nl + half_area_of(r) * nr;
+        if (cost < best) {
+            best = cost;
+            best_bin = split;
+        }
+    }
+    if (best_bin > 0) {
+        uint32_t want_left = 0;
+        for (uint32_t i = 0; i < count; i++) {
+            int b = (int)((centre_of(&boxes[i], axis) - lo) * (CHECK_BINS / width));
+            b = b < 0 ? 0 : b >= CHECK_BINS ? CHECK_BINS - 1 : b;
+            want_left += b < best_bin;
+            if (i < left_count)
+                assert_true(b < best_bin);
+            else
+                assert_true(b >= best_bin);
+        }
+        assert_int_equal(left_count, want_left);
+        (*checked)++;
+    }
+    check_split(out, node + 1, boxes, left_count, depth + 1, checked);
+    check_split(out, v->index, boxes + left_count, count - left_count, depth + 1,
+                checked);
+}
+
+static void bvh_matches_plain_binning(void **state)
+{
+    (void)state;
+    uint64_t r = 0x853c49e6748fea9bULL;
+    for (int round = 0; round < 20; round++) {
+        uint32_t count = 50 + (uint32_t)round * 997;
+        uint32_t *ids = malloc(count * sizeof *ids);
+        bbox *boxes = malloc(count * sizeof *boxes);
+        assert_non_null(ids);
+        assert_non_null(boxes);
+        for (uint32_t i = 0; i < count; i++) {
+            double c[4];
+            for (int k = 0; k < 4; k++) {
+                r ^= r << 13;
+                r ^= r >> 7;
+                r ^= r << 17;
+                c[k] = (double)(r >> 11) / 9007199254740992.0;
+            }
+            /* Clustered along a row, as a model's leaves come, and random. */
+            double x = i % 3 ? (double)i * 0.01 : 100 * c[0];
+            vec3 p = v3(x, 10 * c[1], round % 2 ? 10 * c[2] : 0.5);
+            double size = 0.05 + c[3];
+            boxes[i] = (bbox){p, v3_add(p, v3(size, size, size))};
+            ids[i] = i;
+        }
+        bvh_nodes out = {0};
+        uint32_t root = bvh_build(&out, ids, boxes, count, 0);
+        assert_int_equal(root, 0);
+        int checked = 0;
+        check_split(&out, root, boxes, count, 0, &checked);
+        assert_true(checked > 0);
+        free(out.v);
+        free(ids);
+        free(boxes);
+    }
+}
+
+/* A leaf's world box is the box of its local box's eight transformed
+ * corners (bbox_transform), bit for bit, for random boxes under random
+ * affine maps, including zero and negative entries. */
+static void leaf_bounds_are_transformed_corners(void **state)
+{
+    (void)state;
+    uint64_t r = 0xda942042e4dd58b5ULL;
+    for (int round = 0; round < 200; round++) {
+        csg_builder *b = csg_builder_new();
+        uint32_t kids[10];
+        affine maps[10];
+        prim prims[10];
+        uint32_t made = 0;
+        for (int i = 0; i < 10; i++) {
+            double c[18];
+            for (int k = 0; k < 18; k++) {
+                r ^= r << 13;
+                r ^= r >> 7;
+                r ^= r << 17;
+                c[k] = (double)(r >> 11) / 9007199254740992.0 * 20 - 10;
+            }
+            affine m = affine_identity();
+            for (int row = 0; row < 3; row++)
+                for (int col = 0; col < 4; col++)
+                    m.m[row][col] =
+                        (r >> (row * 4 + col)) % 7 == 0 ? 0 : c[row * 4 + col];
+            if (round % 3 == 0)
+                m.m[0][1] = m.m[1][0] = m.m[2][0] = 0; /* sparse, as most are */
+            prim p = {.kind = PRIM_BOX};
+            p.u.box.lo = v3(c[12], c[13], c[14]);
+            p.u.box.hi =
+                v3(c[12] + fabs(c[15]), c[13] + fabs(c[16]), c[14] + fabs(c[17]));
+            /* A singular map makes no leaf: object ids count the others. */
+            maps[made] = m;
+            prims[made] = p;
+            kids[i] = csg_builder_leaf(b, &p, &m, white, no_loc);
+            made += kids[i] != CSG_EMPTY;
+        }
+        csg_tree *t = finish(b, csg_builder_op(b, CSG_UNION, kids, 10));
+        uint32_t seen = 0;
+        for (uint32_t k = 0; k < t->node_count; k++) {
+            const csg_node *n = &t->nodes[k];
+            if (n->op != CSG_LEAF)
+                continue;
+            uint32_t i = t->leaves[n->leaf].object_id;
+            bbox want = bbox_transform(&maps[i], prim_bounds(&prims[i]));
+            for (int a = 0; a < 3; a++) {
+                assert_true(v3_get(n->bounds.lo, a) == v3_get(want.lo, a));
+                assert_true(v3_get(n->bounds.hi, a) == v3_get(want.hi, a));
+            }
+            seen++;
+        }
+        assert_int_equal(seen, made);
+        assert_true(made >= 5);
+        csg_tree_free(t);
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -196,6 +401,8 @@ int main(void)
         cmocka_unit_test(subtraction_that_misses_is_dropped),
         cmocka_unit_test(disjoint_intersection_is_empty),
         cmocka_unit_test(wide_union_gets_a_bvh),
+        cmocka_unit_test(bvh_matches_plain_binning),
+        cmocka_unit_test(leaf_bounds_are_transformed_corners),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

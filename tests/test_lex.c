@@ -167,8 +167,37 @@ static void test_number_rounding(void **state)
         double want = strtod(text, NULL);
         if (memcmp(&want, &tok.number, sizeof want) != 0)
             fail_msg("'%s': lexed %.17g, strtod %.17g", text, tok.number, want);
+        /* The parser's fast path over vectors reads numbers alone. */
+        double fast = 0;
+        const char *after = NULL;
+        assert_int_equal(lex_number_at(text, text + len, &fast, &after), 1);
+        assert_ptr_equal(after, text + len);
+        if (memcmp(&want, &fast, sizeof want) != 0)
+            fail_msg("'%s': lex_number_at %.17g, strtod %.17g", text, fast, want);
     }
     arena_free(&mem);
+}
+
+/* lex_number_at leaves to lex_next what it reads otherwise. */
+static void test_number_at_declines(void **state)
+{
+    (void)state;
+    static const char *const texts[] = {"inf",  "-inf",  "nan", "+nan", "1x",
+                                        "2.5.", "1e999", "-",   "+.",   ".",
+                                        "",     "x1",    "- 1", "1_"};
+    for (size_t i = 0; i < sizeof texts / sizeof texts[0]; i++) {
+        double v = 0;
+        const char *after = NULL;
+        const char *t = texts[i];
+        if (lex_number_at(t, t + strlen(t), &v, &after))
+            fail_msg("'%s' read as %g", t, v);
+    }
+    double v = 0;
+    const char *after = NULL;
+    const char *t = "1e5,2";
+    assert_int_equal(lex_number_at(t, t + 5, &v, &after), 1);
+    assert_ptr_equal(after, t + 3);
+    assert_true(v == strtod("1e5", NULL));
 }
 
 static void test_inf_and_nan(void **state)
@@ -298,6 +327,7 @@ int main(void)
         cmocka_unit_test(test_identifiers_and_keywords),
         cmocka_unit_test(test_numbers),
         cmocka_unit_test(test_number_rounding),
+        cmocka_unit_test(test_number_at_declines),
         cmocka_unit_test(test_inf_and_nan),
         cmocka_unit_test(test_strings),
         cmocka_unit_test(test_string_lines),

@@ -570,6 +570,198 @@ static void test_errors(void **state)
     check_error("text(t = \"abc);", "m.csg:1:10: error: unterminated string");
 }
 
+/* Vectors of numbers take a fast path past the tokens (fast_vector in
+ * parse.c) that must make the very values the token path makes. Random
+ * nested vectors, some deeper than the fast path goes, with random blanks,
+ * trailing commas, and now and then a line break or a comment that sends
+ * them down the token path, are checked value by value against what the
+ * generator wrote: kind, item count, line and column, and each number
+ * against strtod of its text, bit for bit. */
+typedef struct written {
+    int vector; /* 1: a vector of count items; 0: a number */
+    int line, column;
+    uint32_t count;
+    double number;
+} written;
+
+typedef struct writer {
+    char *text;
+    size_t length, cap;
+    int line;
+    size_t line_start;
+    written *values;
+    size_t count, cap_values;
+    uint64_t r;
+} writer;
+
+static uint64_t next_random(writer *w)
+{
+    w->r ^= w->r << 13;
+    w->r ^= w->r >> 7;
+    w->r ^= w->r << 17;
+    return w->r;
+}
+
+static void put(writer *w, const char *s)
+{
+    size_t n = strlen(s);
+    if (w->length + n + 1 > w->cap) {
+        w->cap = 2 * (w->length + n + 1);
+        w->text = realloc(w->text, w->cap);
+        assert_non_null(w->text);
+    }
+    for (size_t i = 0; i < n; i++) {
+        w->text[w->length++] = s[i];
+        if (s[i] == '\n') {
+            w->line++;
+            w->line_start = w->length;
+        }
+    }
+    w->text[w->length] = '\0';
+}
+
+static size_t record(writer *w, int vector)
+{
+    if (w->count == w->cap_values) {
+        w->cap_values = w->cap_values ? 2 * w->cap_values : 256;
+        w->values = realloc(w->values, w->cap_values * sizeof *w->values);
+        assert_non_null(w->values);
+    }
+    written *v = &w->values[w->count];
+    memset(v, 0, sizeof *v);
+    v->vector = vector;
+    v->line = w->line;
+    v->column = (int)(w->length - w->line_start) + 1;
+    return w->count++;
+}
+
+static void blank(writer *w)
+{
+    static const char *const blanks[] = {"", " ", "", "  ", "\t", " \r", "\n", "/* c */"};
+    uint64_t k = next_random(w) % 64;
+    /* Line breaks and comments rarely, so most vectors stay fast. */
+    put(w, blanks[k < 56 ? k % 6 : 6 + k % 2]);
+}
+
+static void write_number(writer *w)
+{
+    char text[64];
+    uint64_t q = next_random(w);
+    int len = 0;
+    if (q % 5 == 0) {
+        /* OpenSCAD's %g of a random double. */
+        double x;
+        uint64_t bits = next_random(w);
+        memcpy(&x, &bits, sizeof x);
+        len = snprintf(text, sizeof text, "%g", isfinite(x) ? x : 0.5);
+    } else {
+        int digits = 1 + (int)(q % 19);
+        q /= 19;
+        int point = (int)(q % (uint64_t)(digits + 1)) - 1; /* -1: no point */
+        q /= (uint64_t)(digits + 1);
+        if (q % 3 == 0)
+            text[len++] = '-';
+        q /= 3;
+        for (int k = 0; k < digits; k++) {
+            if (k == point && k > 0)
+                text[len++] = '.';
+            text[len++] = (char)('0' + q % 10);
+            q = q / 10 ^ (q << 7);
+        }
+        if (next_random(w) % 4 == 0)
+            len += snprintf(text + len, sizeof text - (size_t)len, "e%d",
+                            (int)(next_random(w) % 61) - 30);
+        text[len] = '\0';
+    }
+    size_t at = record(w, 0);
+    w->values[at].number = strtod(text, NULL);
+    put(w, text);
+}
+
+static void write_vector(writer *w, int depth)
+{
+    size_t at = record(w, 1);
+    put(w, "[");
+    uint32_t count = (uint32_t)(next_random(w) % 5);
+    for (uint32_t i = 0; i < count; i++) {
+        blank(w);
+        if (depth < 20 && next_random(w) % 3 == 0)
+            write_vector(w, depth + 1);
+        else
+            write_number(w);
+        blank(w);
+        if (i + 1 < count || next_random(w) % 8 == 0)
+            put(w, ",");
+    }
+    blank(w);
+    put(w, "]");
+    w->values[at].count = count;
+}
+
+/* Checks v and its items in the generator's order from *k. */
+static void check_written(const writer *w, const parse_value *v, size_t *k)
+{
+    assert_true(*k < w->count);
+    const written *want = &w->values[(*k)++];
+    assert_int_equal(v->line, want->line);
+    assert_int_equal(v->column, want->column);
+    if (!want->vector) {
+        assert_int_equal(v->kind, PARSE_NUMBER);
+        if (memcmp(&v->u.number, &want->number, sizeof want->number) != 0)
+            fail_msg("line %d column %d: %.17g, strtod %.17g", v->line, v->column,
+                     v->u.number, want->number);
+        return;
+    }
+    assert_int_equal(v->kind, PARSE_VECTOR);
+    assert_int_equal(v->u.vector.count, want->count);
+    for (uint32_t i = 0; i < v->u.vector.count; i++)
+        check_written(w, &v->u.vector.items[i], k);
+}
+
+static void test_number_vectors(void **state)
+{
+    (void)state;
+    for (int round = 0; round < 400; round++) {
+        writer w = {0};
+        w.line = 1;
+        w.r = 0x2545f4914f6cdd1dULL + (uint64_t)round * 0x9e3779b97f4a7c15ULL;
+        put(&w, "a(");
+        int args = 1 + (int)(next_random(&w) % 4);
+        for (int i = 0; i < args; i++) {
+            put(&w, i ? ", v = " : "v = ");
+            write_vector(&w, 0);
+        }
+        put(&w, ");\n");
+        parse_tree *t = parse_ok(w.text);
+        assert_int_equal(t->first->arg_count, (uint32_t)args);
+        size_t k = 0;
+        for (int i = 0; i < args; i++)
+            check_written(&w, &t->first->args[i].value, &k);
+        assert_int_equal(k, w.count);
+        parse_tree_free(t);
+        free(w.text);
+        free(w.values);
+    }
+    /* What the fast path gives up on reads as before: errors at the same
+     * places, and the values around them. */
+    check_error("a(m = [[1, 2], [3, 4 5]]);",
+                "m.csg:1:22: error: expected ']' (to close '[' at line 1)");
+    check_error("a(m = [1, 2.5.]);", "m.csg:1:11: error: malformed number '2.5.'");
+    check_error("a(m = [1, 1e999]);", "m.csg:1:11: error: number out of range '1e999'");
+    check_error("a(m = [1, - 2]);", "m.csg:1:11: error: unexpected character '-'");
+    check_error("a(m = [[1, 2]",
+                "m.csg:1:14: error: expected ']' (to close '[' at line 1)");
+    parse_tree *t = parse_ok("a(m = [1, inf, [-nan], \"s\", [2, true]]);");
+    const parse_value *m = &t->first->args[0].value;
+    assert_int_equal(m->u.vector.count, 5);
+    assert_true(isinf(m->u.vector.items[1].u.number));
+    assert_true(isnan(m->u.vector.items[2].u.vector.items[0].u.number));
+    assert_int_equal(m->u.vector.items[3].kind, PARSE_STRING);
+    assert_int_equal(m->u.vector.items[4].u.vector.items[1].kind, PARSE_BOOL);
+    assert_int_equal(m->u.vector.items[4].column, 29);
+    parse_tree_free(t);
+}
+
 /* A streamed parse hands over every node once opened and once closed,
  * with its final child count; a kept subtree is linked as parse_text
  * links it; and a closed node's memory is reused, so that a union of
@@ -643,6 +835,7 @@ int main(void)
         cmocka_unit_test(test_braceless),
         cmocka_unit_test(test_language),
         cmocka_unit_test(test_stream),
+        cmocka_unit_test(test_number_vectors),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -25,6 +25,7 @@
  */
 #include "csg/csg.h"
 
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -532,6 +533,40 @@ static int freeze(csg_tree *t, compiler *c, csg_builder *b, uint32_t root)
     return ok;
 }
 
+/* The world box of a finite local box under w: on each axis, the sum of
+ * each column's smaller (larger) product with the box's two extents, plus
+ * the translation (Arvo, Graphics Gems 1990). This is the box of the
+ * eight transformed corners bit for bit: every term depends on one
+ * coordinate only, rounded products and sums are monotonic, so the corner
+ * that takes each term's minimum also takes the minimum of the rounded
+ * sum, added in the same order as affine_point. A box that is empty or
+ * not finite goes the corners' way, whose 0 * inf terms it keeps. */
+static bbox world_box(const affine *w, bbox local)
+{
+    double ext[6] = {local.lo.x, local.lo.y, local.lo.z,
+                     local.hi.x, local.hi.y, local.hi.z};
+    for (int k = 0; k < 6; k++) {
+        if (!isfinite(ext[k]))
+            return bbox_transform(w, local);
+    }
+    if (bbox_is_empty(&local))
+        return local;
+    double lo[3], hi[3];
+    for (int i = 0; i < 3; i++) {
+        double sum_lo = 0, sum_hi = 0;
+        for (int j = 0; j < 3; j++) {
+            double a = w->m[i][j] * ext[j], b = w->m[i][j] * ext[j + 3];
+            double small = a < b ? a : b, large = a < b ? b : a;
+            sum_lo = j ? sum_lo + small : small;
+            sum_hi = j ? sum_hi + large : large;
+        }
+        lo[i] = sum_lo + w->m[i][3];
+        hi[i] = sum_hi + w->m[i][3];
+    }
+    bbox r = {v3(lo[0], lo[1], lo[2]), v3(hi[0], hi[1], hi[2])};
+    return r;
+}
+
 /* Source statistics and world bounds of the builder's nodes. */
 static int measure_source(csg_builder *b, uint32_t root, csg_tree *t)
 {
@@ -540,8 +575,8 @@ static int measure_source(csg_builder *b, uint32_t root, csg_tree *t)
         if (n->op != CSG_LEAF)
             continue;
         const csg_leaf *l = &b->leaves[n->leaf];
-        n->bounds = l->motion ? motion_bounds(l)
-                              : bbox_transform(&l->to_world, prim_bounds(&l->prim));
+        n->bounds =
+            l->motion ? motion_bounds(l) : world_box(&l->to_world, prim_bounds(&l->prim));
     }
     unsigned char *marks;
     t->source_node_count =

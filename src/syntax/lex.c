@@ -256,46 +256,49 @@ static int fast_number(uint64_t w, int k, int negative, double *v)
 #endif
 }
 
+/* What scan_number found. */
+typedef enum number_scan {
+    NUMBER_OK,        /* *value and *after set */
+    NUMBER_MALFORMED, /* *after: the first byte that cannot follow */
+    NUMBER_RANGE,     /* finite text, infinite value */
+    NUMBER_NOMEM
+} number_scan;
+
 /* number := [+-]? ( D+ ('.' D*)? | '.' D+ ) ([eE] [+-]? D+)?
- *         | [+-]? ('inf' | 'nan')
- * Any letter, digit, '_' or '.' directly after a number makes it
- * malformed. One pass reads the number and gathers, as it goes, what the
- * fast path needs: the digits as an integer W (leading zeros do not count
- * towards its 15 significant digits), the digits after the point, and an
- * exponent of at most 4 digits. */
-static sc_status lex_number(lexer *lx, lex_token *tok, sc_error *error)
+ * (without inf and nan, which lex_number reads). Any letter, digit, '_'
+ * or '.' directly after a number makes it malformed. One pass reads the
+ * number and gathers, as it goes, what the fast path needs: the digits as
+ * an integer W (leading zeros do not count towards its 15 significant
+ * digits), the digits after the point, and an exponent of at most 4
+ * digits. The caller has seen a digit, or '.' or a sign before one. */
+static number_scan scan_number(const char *s, const char *end, double *value,
+                               const char **after)
 {
-    const char *s = lx->p, *p = lx->p, *end = lx->end;
-    sc_location loc = here(lx, s, lx->line, lx->line_start);
+    const char *p = s;
     int negative = 0;
     if (*p == '+' || *p == '-') {
         negative = *p == '-';
         p++;
     }
-    int special = special_word(p, end);
-    if (special) {
-        p += 3;
-        tok->kind = LEX_NUMBER;
-        tok->number = special == 1 ? INFINITY : NAN;
-        if (negative)
-            tok->number = -tok->number;
-        tok->length = (size_t)(p - s);
-        lx->p = p;
-        return SC_OK;
-    }
+    /* Leading zeros first, then every digit counts; W keeps the first 19
+     * (no overflow), of which the fast path uses at most 15. */
     uint64_t w = 0;
     int significant = 0, fraction = 0;
-    for (; p < end && is_digit((unsigned char)*p); p++) {
-        significant += w != 0 || *p != '0';
-        if (significant <= 15)
+    while (p < end && *p == '0')
+        p++;
+    for (; p < end && is_digit((unsigned char)*p); p++, significant++) {
+        if (significant < 19)
             w = 10 * w + (uint64_t)(*p - '0');
     }
     if (p < end && *p == '.') {
-        for (p++; p < end && is_digit((unsigned char)*p); p++) {
-            significant += w != 0 || *p != '0';
-            if (significant <= 15)
+        p++;
+        if (significant == 0) {
+            for (; p < end && *p == '0'; p++)
+                fraction++;
+        }
+        for (; p < end && is_digit((unsigned char)*p); p++, significant++, fraction++) {
+            if (significant < 19)
                 w = 10 * w + (uint64_t)(*p - '0');
-            fraction++;
         }
     }
     int exponent = 0, exp_digits = 0;
@@ -314,27 +317,17 @@ static sc_status lex_number(lexer *lx, lex_token *tok, sc_error *error)
             p = q;
         }
     }
-    if (p < end && (is_ident_char((unsigned char)*p) || *p == '.')) {
-        while (p < end && (is_ident_char((unsigned char)*p) || *p == '.' ||
-                           ((*p == '+' || *p == '-') && (p[-1] == 'e' || p[-1] == 'E'))))
-            p++;
-        return err_set(error, SC_ERR_SYNTAX, &loc, "malformed number '%.*s'",
-                       (int)(p - s), s);
-    }
-    size_t n = (size_t)(p - s);
-    double fast;
+    *after = p;
+    if (p < end && (is_ident_char((unsigned char)*p) || *p == '.'))
+        return NUMBER_MALFORMED;
     if (significant <= 15 && exp_digits <= 4 &&
-        fast_number(w, exponent - fraction, negative, &fast)) {
-        tok->kind = LEX_NUMBER;
-        tok->number = fast;
-        tok->length = n;
-        lx->p = p;
-        return SC_OK;
-    }
+        fast_number(w, exponent - fraction, negative, value))
+        return NUMBER_OK;
+    size_t n = (size_t)(p - s);
     char small[128];
     char *buf = n < sizeof small ? small : malloc(n + 1);
     if (!buf)
-        return err_nomem(error, NULL);
+        return NUMBER_NOMEM;
     memcpy(buf, s, n);
     buf[n] = '\0';
     const char *point = localeconv()->decimal_point;
@@ -349,11 +342,66 @@ static sc_status lex_number(lexer *lx, lex_token *tok, sc_error *error)
     if (buf != small)
         free(buf);
     if (overflow)
-        return err_set(error, SC_ERR_SYNTAX, &loc, "number out of range '%.*s'", (int)n,
-                       s);
+        return NUMBER_RANGE;
+    *value = v;
+    return NUMBER_OK;
+}
+
+int lex_number_at(const char *p, const char *end, double *value, const char **after)
+{
+    if (p >= end)
+        return 0;
+    const char *q = p + (*p == '+' || *p == '-');
+    /* The forms lex_next hands to lex_number, but inf and nan. */
+    if (!(q < end && (is_digit((unsigned char)*q) ||
+                      (*q == '.' && q + 1 < end && is_digit((unsigned char)q[1])))))
+        return 0;
+    return scan_number(p, end, value, after) == NUMBER_OK;
+}
+
+/* number := [+-]? ( the form of scan_number | 'inf' | 'nan' ) */
+static sc_status lex_number(lexer *lx, lex_token *tok, sc_error *error)
+{
+    const char *s = lx->p, *p = lx->p, *end = lx->end;
+    int negative = 0;
+    if (*p == '+' || *p == '-') {
+        negative = *p == '-';
+        p++;
+    }
+    int special = special_word(p, end);
+    if (special) {
+        p += 3;
+        tok->kind = LEX_NUMBER;
+        tok->number = special == 1 ? INFINITY : NAN;
+        if (negative)
+            tok->number = -tok->number;
+        tok->length = (size_t)(p - s);
+        lx->p = p;
+        return SC_OK;
+    }
+    double v = 0;
+    switch (scan_number(s, end, &v, &p)) {
+    case NUMBER_OK:
+        break;
+    case NUMBER_MALFORMED: {
+        sc_location loc = here(lx, s, lx->line, lx->line_start);
+        while (p < end && (is_ident_char((unsigned char)*p) || *p == '.' ||
+                           ((*p == '+' || *p == '-') && (p[-1] == 'e' || p[-1] == 'E'))))
+            p++;
+        return err_set(error, SC_ERR_SYNTAX, &loc, "malformed number '%.*s'",
+                       (int)(p - s), s);
+    }
+    case NUMBER_RANGE: {
+        sc_location loc = here(lx, s, lx->line, lx->line_start);
+        return err_set(error, SC_ERR_SYNTAX, &loc, "number out of range '%.*s'",
+                       (int)(p - s), s);
+    }
+    case NUMBER_NOMEM:
+        return err_nomem(error, NULL);
+    }
     tok->kind = LEX_NUMBER;
     tok->number = v;
-    tok->length = n;
+    tok->length = (size_t)(p - s);
     lx->p = p;
     return SC_OK;
 }

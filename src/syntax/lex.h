@@ -75,6 +75,12 @@ void lex_init(lexer *lx, const char *file, const char *text, size_t length,
  * text it keeps returning LEX_EOF. */
 sc_status lex_next(lexer *lx, lex_token *tok, sc_error *error);
 
+/* Reads the number written at p (before end) as lex_next would, for the
+ * parser's fast path over vectors of numbers: 1 with its value, correctly
+ * rounded, and *after past it; 0 when lex_next must read it (inf, nan, a
+ * malformed number or one out of range, none at all). */
+int lex_number_at(const char *p, const char *end, double *value, const char **after);
+
 /* The source position of byte `offset` of a string's decoded contents,
  * given its raw text (between the quotes, raw[0 .. raw_length)) and the
  * position of its opening quote: escapes and raw line breaks are walked as

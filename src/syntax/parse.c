@@ -261,6 +261,147 @@ static sc_status close_vector(parser *ps, parse_value *v)
     return advance(ps);
 }
 
+/* The fast path for vectors of numbers, which are most of a file
+ * OpenSCAD writes (a multmatrix is 20 numbers in 5 vectors): the text
+ * after a '[' is read directly, without tokens, as long as it is numbers,
+ * nested '[' (at most FAST_DEPTH open), ',' and ']' on one line, with
+ * spaces and tabs between them. The values are those the token path makes,
+ * positions included, and numbers are read by the lexer's own routine
+ * (lex_number_at). Anything else (a line break, a comment, a string, a
+ * name, inf, an error, a limit reached) gives up without a trace: the
+ * values, the arena and the lexer are as they were, and the token path
+ * reads the vector, with its messages. */
+enum { FAST_DEPTH = 16 };
+
+/* A new, cleared slot on top of the value stack; NULL when out of
+ * memory. */
+static inline parse_value *fast_slot(parser *ps)
+{
+    if (ps->value_count == ps->value_cap &&
+        !grow_array((void **)&ps->values, &ps->value_cap, ps->value_count + 1,
+                    sizeof *ps->values))
+        return NULL;
+    parse_value *slot = &ps->values[ps->value_count++];
+    memset(slot, 0, sizeof *slot);
+    return slot;
+}
+
+static const char *skip_blanks(const char *p, const char *end)
+{
+    while (p < end && (*p == ' ' || *p == '\t' || *p == '\r'))
+        p++;
+    return p;
+}
+
+/* Reads the vector whose '[' is the current token. *done is 1 when it was
+ * read (into *out, the lexer past its ']' and the next token read), 0 when
+ * the token path must read it; the status is SC_OK unless memory ran out
+ * or the next token is an error. */
+static sc_status fast_vector(parser *ps, parse_value *out, int *done)
+{
+    *done = 0;
+    lexer *lx = &ps->lx;
+    const char *p = lx->p, *end = lx->end, *line_start = lx->line_start;
+    const int line = ps->tok.line;
+    const size_t base = ps->value_count;
+    const arena_mark mark = arena_save(&ps->tree->mem);
+    struct {
+        size_t start; /* of its items on the value stack */
+        int column;   /* of its '[' */
+    } open[FAST_DEPTH];
+    int depth = 1;
+    open[0].start = base;
+    open[0].column = ps->tok.column;
+    parse_value v;
+    sc_status st = SC_OK;
+    for (;;) {
+        /* After '[' or ',': an item, or ']'. */
+        p = skip_blanks(p, end);
+        if (p >= end)
+            goto give_up;
+        if (*p == '[') {
+            if (depth == FAST_DEPTH)
+                goto give_up;
+            open[depth].start = ps->value_count;
+            open[depth].column = (int)(p - line_start) + 1;
+            depth++;
+            p++;
+            continue;
+        }
+        if (*p != ']') {
+            double x;
+            const char *after;
+            if (!lex_number_at(p, end, &x, &after) ||
+                ps->value_count - open[depth - 1].start >= PARSE_MAX_VECTOR)
+                goto give_up;
+            parse_value *slot = fast_slot(ps);
+            if (!slot) {
+                st = err_nomem(ps->error, NULL);
+                goto give_up;
+            }
+            slot->kind = PARSE_NUMBER;
+            slot->line = line;
+            slot->column = (int)(p - line_start) + 1;
+            slot->u.number = x;
+            p = skip_blanks(after, end);
+            if (p < end && *p == ',') {
+                p++;
+                continue;
+            }
+        }
+        /* ']' closes vectors, each an item of the one around it, until
+         * a ',' comes or the outermost one is closed. */
+        for (;;) {
+            if (p >= end || *p != ']')
+                goto give_up;
+            p++;
+            depth--;
+            size_t count = ps->value_count - open[depth].start;
+            parse_value *items = NULL;
+            if (count) {
+                /* count is at most PARSE_MAX_VECTOR: the size cannot
+                 * overflow. */
+                items = arena_alloc(&ps->tree->mem, count * sizeof *items);
+                if (!items) {
+                    st = err_nomem(ps->error, NULL);
+                    goto give_up;
+                }
+                memcpy(items, &ps->values[open[depth].start], count * sizeof *items);
+            }
+            memset(&v, 0, sizeof v);
+            v.kind = PARSE_VECTOR;
+            v.line = line;
+            v.column = open[depth].column;
+            v.u.vector.items = items;
+            v.u.vector.count = (uint32_t)count;
+            ps->value_count = open[depth].start;
+            if (depth == 0) {
+                *out = v;
+                *done = 1;
+                lx->p = p;
+                return advance(ps);
+            }
+            if (ps->value_count - open[depth - 1].start >= PARSE_MAX_VECTOR)
+                goto give_up;
+            parse_value *slot = fast_slot(ps);
+            if (!slot) {
+                st = err_nomem(ps->error, NULL);
+                goto give_up;
+            }
+            *slot = v;
+            p = skip_blanks(p, end);
+            if (p < end && *p == ',') {
+                p++;
+                break;
+            }
+        }
+    }
+give_up:
+    ps->value_count = base;
+    arena_restore(&ps->tree->mem, mark);
+    return st;
+}
+
 /* value  := NUMBER | STRING | 'true' | 'false' | 'undef' | vector
  * vector := '[' [ value { ',' value } [ ',' ] ] ']'
  * Reads one value into *out, nested vectors included, without recursion. */
@@ -273,6 +414,14 @@ static sc_status parse_value_into(parser *ps, parse_value *out)
         memset(&v, 0, sizeof v);
         v.line = ps->tok.line;
         v.column = ps->tok.column;
+        if (ps->tok.kind == LEX_LBRACKET &&
+            ps->open_count - base + FAST_DEPTH <= PARSE_MAX_DEPTH) {
+            int done = 0;
+            if ((st = fast_vector(ps, &v, &done)) != SC_OK)
+                return st;
+            if (done)
+                goto complete;
+        }
         switch (ps->tok.kind) {
         case LEX_NUMBER:
             v.kind = PARSE_NUMBER;
