@@ -100,6 +100,10 @@ same first2d.csg slab_ref.csg
 printf 'square(size = [10, 4], center = false);\n' >flat.csg
 warns flat.csg ""
 same flat.csg slab_ref.csg
+# A projection alone is a 2D model too: its section drawn as the slab.
+printf 'projection(cut = true) { multmatrix([[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, -1], [0, 0, 0, 1]]) { cube(size = [10, 4, 2], center = false); } }\n' >projected.csg
+warns projected.csg ""
+same projected.csg slab_ref.csg
 check
 "$bin" render flat.csg -o flat.png --imgsize=80,60 --camera=5,2,50,5,2,0 -q &&
     [ "$(pixel flat.png 40 30)" = "0 191 153" ] ||

@@ -34,7 +34,7 @@ static sc_status region_of(const char *text, twod_region *r, char *error, size_t
     assert_int_equal(st, SC_OK);
     csg_builder *csg = csg_builder_new();
     assert_non_null(csg);
-    build_ctx c = {"m.csg", csg, &e, 0, &warning};
+    build_ctx c = {"m.csg", csg, &e, 0, &warning, NULL};
     twod_init(r);
     model *lowered = NULL;
     assert_int_equal(model_lower_twod("m.csg", tree->first, &lowered, &e), SC_OK);
@@ -320,11 +320,11 @@ static void test_top_level(void **state)
     assert_int_equal(sc_scene_load_string("m.csg", text, strlen(text), NULL, &s, &e),
                      SC_OK);
     char buf[1024];
-    assert_int_equal(sc_scene_warning_count(s), 1);
-    assert_string_equal(
-        sc_error_format(sc_scene_warning(s, 0), buf, sizeof buf),
-        "m.csg:2:1: error: 2D object 'projection' in a 3D model is ignored (as in "
-        "OpenSCAD)");
+    assert_int_equal(sc_scene_warning_count(s), 2);
+    assert_string_equal(sc_error_format(sc_scene_warning(s, 0), buf, sizeof buf),
+                        "m.csg:2:1: error: Mixing 2D and 3D objects is not supported");
+    assert_string_equal(sc_error_format(sc_scene_warning(s, 1), buf, sizeof buf),
+                        "m.csg:2:1: error: Ignoring 2D child object for 3D operation");
     sc_scene_release(s);
     test_check_error("m.csg",
                      "cube(1);\nprojection() { difference() { cube(2); cube(1); } }",

@@ -119,6 +119,7 @@ static int kind_dim(const model_node *n, int in_2d)
     case MODEL_POLYGON:
     case MODEL_TEXT:
     case MODEL_OFFSET:
+    case MODEL_PROJECTION:
         return 2;
     case MODEL_IMPORT:
         return in_2d && !n->u.drawing->not_2d ? 2 : 3;
