@@ -129,88 +129,11 @@ static void extent_of(extent *e, const bbox *boxes, uint32_t count)
     }
 }
 
-/* Operands sorted into BINS bins along a node's split axis: how many fall
- * into each bin, the union of their boxes and the bounds of their
- * centres. */
-typedef struct bins {
-    uint32_t count[BINS];
-    bbox box[BINS], centres[BINS];
-} bins;
-
-/* Neighbouring operands mostly fall into the same bin, so one set of bins
- * makes every box wait for the one before it to be added; LANES sets,
- * taken in turn and merged after, let LANES boxes be added at once.
- * Minima and maxima come out the same in any order (no box has a NaN), so
- * the hierarchy does not depend on LANES. */
-enum { LANES = 4 };
-
-typedef struct lanes {
-    bins lane[LANES];
-} lanes;
-
-/* Which bin a centre falls into: along axis, from the lowest centre lo,
- * BINS / width bins per unit. */
-typedef struct binner {
-    int axis;
-    double lo, scale;
-} binner;
-
-static inline int bin_of(const binner *g, vec3 c)
-{
-    int b = (int)((v3_get(c, g->axis) - g->lo) * g->scale);
-    return b < 0 ? 0 : b >= BINS ? BINS - 1 : b;
-}
-
-static void lanes_clear(lanes *l)
-{
-    for (int k = 0; k < LANES; k++) {
-        for (int b = 0; b < BINS; b++) {
-            l->lane[k].count[b] = 0;
-            l->lane[k].box[b] = l->lane[k].centres[b] = box_none();
-        }
-    }
-}
-
-static inline void lanes_add(lanes *l, uint32_t turn, int b, const bbox *box, vec3 c)
-{
-    bins *set = &l->lane[turn % LANES];
-    set->count[b]++;
-    box_grow(&set->box[b], box);
-    box_add(&set->centres[b], c);
-}
-
-static void lanes_merge(const lanes *l, bins *out)
-{
-    *out = l->lane[0];
-    for (int k = 1; k < LANES; k++) {
-        for (int b = 0; b < BINS; b++) {
-            out->count[b] += l->lane[k].count[b];
-            box_grow(&out->box[b], &l->lane[k].box[b]);
-            box_grow(&out->centres[b], &l->lane[k].centres[b]);
-        }
-    }
-}
-
-/* The split axis of operands whose centres span centres (the widest),
- * with the lowest centre and the width along it. */
-static int split_axis(const bbox *centres, double *lo, double *width)
-{
-    vec3 ext = bbox_extent(centres);
-    int axis = ext.x >= ext.y && ext.x >= ext.z ? 0 : ext.y >= ext.z ? 1 : 2;
-    *lo = v3_get(centres->lo, axis);
-    *width = v3_get(ext, axis);
-    return axis;
-}
-
-/* Builds the node over [0, count). known is the extent of those operands
- * when the caller measured it (from its bins), NULL otherwise; binned
- * their bins along the node's own split axis when the caller sorted them
- * while partitioning (a pass over them saved at every level), NULL
- * otherwise. scratch holds three sets of lanes, used by each node only
- * before it recurses. */
+/* Builds the node over [0, count); known is the extent of those operands
+ * when the caller measured it while partitioning (a pass over them saved
+ * at every level), NULL otherwise. */
 static uint32_t build(bvh_nodes *out, uint32_t *ids, bbox *boxes, uint32_t count,
-                      uint32_t base, int depth, const extent *known, const bins *binned,
-                      lanes *scratch)
+                      uint32_t base, int depth, const extent *known)
 {
     uint32_t node = push_node(out);
     if (node == CSG_NO_BVH)
@@ -222,26 +145,45 @@ static uint32_t build(bvh_nodes *out, uint32_t *ids, bbox *boxes, uint32_t count
     }
     bbox bounds = known->bounds, centres = known->centres;
     out->v[node].bounds = bounds;
-    double lo, width;
-    int axis = split_axis(&centres, &lo, &width);
+    vec3 ext = bbox_extent(&centres);
+    int axis = ext.x >= ext.y && ext.x >= ext.z ? 0 : ext.y >= ext.z ? 1 : 2;
+    double lo = v3_get(centres.lo, axis), width = v3_get(ext, axis);
 
     uint32_t split = 0;
     extent sides[2]; /* of the two children, when measured */
     int measured = 0;
-    bins child_bins[2]; /* the children's, when sorted while partitioning */
-    int child_binned[2] = {0, 0};
     if (count > LEAF_SIZE && width > 0 && depth < SAH_DEPTH) {
-        binner g = {axis, lo, BINS / width};
-        bins own_bins;
-        const bins *bn = binned;
-        if (!bn) {
-            lanes_clear(&scratch[0]);
-            for (uint32_t i = 0; i < count; i++) {
-                vec3 c = bbox_center(&boxes[i]);
-                lanes_add(&scratch[0], i, bin_of(&g, c), &boxes[i], c);
+        /* Neighbouring operands mostly fall into the same bin, so one set
+         * of bins makes every box wait for the one before it to be added;
+         * LANES sets, taken in turn and merged after, let LANES boxes be
+         * added at once. Minima and maxima come out the same in any order
+         * (no box has a NaN), so the hierarchy does not change. */
+        enum { LANES = 4 };
+        uint32_t lane_count[LANES][BINS] = {{0}};
+        bbox lane_box[LANES][BINS], lane_centres[LANES][BINS];
+        for (int k = 0; k < LANES; k++)
+            for (int b = 0; b < BINS; b++)
+                lane_box[k][b] = lane_centres[k][b] = box_none();
+        double scale = BINS / width;
+        for (uint32_t i = 0; i < count; i++) {
+            vec3 c = bbox_center(&boxes[i]);
+            int b = (int)((v3_get(c, axis) - lo) * scale);
+            b = b < 0 ? 0 : b >= BINS ? BINS - 1 : b;
+            lane_count[i % LANES][b]++;
+            box_grow(&lane_box[i % LANES][b], &boxes[i]);
+            box_add(&lane_centres[i % LANES][b], c);
+        }
+        uint32_t bin_count[BINS];
+        bbox bin_box[BINS], bin_centres[BINS];
+        for (int b = 0; b < BINS; b++) {
+            bin_count[b] = lane_count[0][b];
+            bin_box[b] = lane_box[0][b];
+            bin_centres[b] = lane_centres[0][b];
+            for (int k = 1; k < LANES; k++) {
+                bin_count[b] += lane_count[k][b];
+                box_grow(&bin_box[b], &lane_box[k][b]);
+                box_grow(&bin_centres[b], &lane_centres[k][b]);
             }
-            lanes_merge(&scratch[0], &own_bins);
-            bn = &own_bins;
         }
         /* Sweep from the right to get the area and count right of each
          * split, then from the left to price every split. */
@@ -250,8 +192,8 @@ static uint32_t build(bvh_nodes *out, uint32_t *ids, bbox *boxes, uint32_t count
         bbox acc = box_none();
         uint32_t n = 0;
         for (int b = BINS - 1; b > 0; b--) {
-            box_grow(&acc, &bn->box[b]);
-            n += bn->count[b];
+            box_grow(&acc, &bin_box[b]);
+            n += bin_count[b];
             right_area[b] = half_area(&acc);
             right_count[b] = n;
         }
@@ -260,8 +202,8 @@ static uint32_t build(bvh_nodes *out, uint32_t *ids, bbox *boxes, uint32_t count
         acc = box_none();
         n = 0;
         for (int b = 1; b < BINS; b++) {
-            box_grow(&acc, &bn->box[b - 1]);
-            n += bn->count[b - 1];
+            box_grow(&acc, &bin_box[b - 1]);
+            n += bin_count[b - 1];
             if (n == 0 || right_count[b] == 0)
                 continue;
             double cost = half_area(&acc) * n + right_area[b] * right_count[b];
@@ -271,44 +213,22 @@ static uint32_t build(bvh_nodes *out, uint32_t *ids, bbox *boxes, uint32_t count
             }
         }
         if (best_bin > 0) {
-            /* Each side's extent is that of its bins; a side that will be
-             * binned in turn is binned along its own axis as the
-             * partition passes its operands. */
-            uint32_t side_count[2] = {0, 0};
+            /* Each side's extent is that of its bins. */
             extent_of(&sides[0], NULL, 0);
             extent_of(&sides[1], NULL, 0);
             for (int b = 0; b < BINS; b++) {
                 extent *side = &sides[b >= best_bin];
-                box_grow(&side->bounds, &bn->box[b]);
-                box_grow(&side->centres, &bn->centres[b]);
-                side_count[b >= best_bin] += bn->count[b];
+                box_grow(&side->bounds, &bin_box[b]);
+                box_grow(&side->centres, &bin_centres[b]);
             }
-            binner child[2];
-            for (int k = 0; k < 2; k++) {
-                double child_lo, child_width;
-                int child_axis = split_axis(&sides[k].centres, &child_lo, &child_width);
-                child_binned[k] =
-                    side_count[k] > LEAF_SIZE && child_width > 0 && depth + 1 < SAH_DEPTH;
-                if (child_binned[k]) {
-                    child[k] = (binner){child_axis, child_lo, BINS / child_width};
-                    lanes_clear(&scratch[1 + k]);
-                }
-            }
-            uint32_t i = 0, j = count, turn[2] = {0, 0};
+            uint32_t i = 0, j = count;
             while (i < j) {
-                vec3 c = bbox_center(&boxes[i]);
-                int k = bin_of(&g, c) >= best_bin;
-                if (child_binned[k])
-                    lanes_add(&scratch[1 + k], turn[k]++, bin_of(&child[k], c), &boxes[i],
-                              c);
-                if (k == 0)
+                int b = (int)((centre_on(&boxes[i], axis) - lo) * scale);
+                b = b < 0 ? 0 : b >= BINS ? BINS - 1 : b;
+                if (b < best_bin)
                     i++;
                 else
                     swap_items(ids, boxes, i, --j);
-            }
-            for (int k = 0; k < 2; k++) {
-                if (child_binned[k])
-                    lanes_merge(&scratch[1 + k], &child_bins[k]);
             }
             split = i;
             measured = 1;
@@ -330,12 +250,11 @@ static uint32_t build(bvh_nodes *out, uint32_t *ids, bbox *boxes, uint32_t count
         return node;
     }
     out->v[node].axis = (uint8_t)axis;
-    if (build(out, ids, boxes, split, base, depth + 1, measured ? &sides[0] : NULL,
-              child_binned[0] ? &child_bins[0] : NULL, scratch) == CSG_NO_BVH)
+    if (build(out, ids, boxes, split, base, depth + 1, measured ? &sides[0] : NULL) ==
+        CSG_NO_BVH)
         return CSG_NO_BVH;
     uint32_t right = build(out, ids + split, boxes + split, count - split, base + split,
-                           depth + 1, measured ? &sides[1] : NULL,
-                           child_binned[1] ? &child_bins[1] : NULL, scratch);
+                           depth + 1, measured ? &sides[1] : NULL);
     if (right == CSG_NO_BVH)
         return CSG_NO_BVH;
     out->v[node].index = right;
@@ -348,10 +267,5 @@ uint32_t bvh_build(bvh_nodes *out, uint32_t *ids, bbox *boxes, uint32_t count,
 {
     if (count == 0)
         return CSG_NO_BVH;
-    lanes *scratch = malloc(3 * sizeof *scratch);
-    if (!scratch)
-        return CSG_NO_BVH;
-    uint32_t root = build(out, ids, boxes, count, items_base, 0, NULL, NULL, scratch);
-    free(scratch);
-    return root;
+    return build(out, ids, boxes, count, items_base, 0, NULL);
 }
