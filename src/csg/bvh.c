@@ -160,29 +160,25 @@ static uint32_t build(bvh_nodes *out, uint32_t *ids, bbox *boxes, uint32_t count
          * (no box has a NaN), so the hierarchy does not change. */
         enum { LANES = 4 };
         uint32_t lane_count[LANES][BINS] = {{0}};
-        bbox lane_box[LANES][BINS], lane_centres[LANES][BINS];
+        bbox lane_box[LANES][BINS];
         for (int k = 0; k < LANES; k++)
             for (int b = 0; b < BINS; b++)
-                lane_box[k][b] = lane_centres[k][b] = box_none();
+                lane_box[k][b] = box_none();
         double scale = BINS / width;
         for (uint32_t i = 0; i < count; i++) {
-            vec3 c = bbox_center(&boxes[i]);
-            int b = (int)((v3_get(c, axis) - lo) * scale);
+            int b = (int)((centre_on(&boxes[i], axis) - lo) * scale);
             b = b < 0 ? 0 : b >= BINS ? BINS - 1 : b;
             lane_count[i % LANES][b]++;
             box_grow(&lane_box[i % LANES][b], &boxes[i]);
-            box_add(&lane_centres[i % LANES][b], c);
         }
         uint32_t bin_count[BINS];
-        bbox bin_box[BINS], bin_centres[BINS];
+        bbox bin_box[BINS];
         for (int b = 0; b < BINS; b++) {
             bin_count[b] = lane_count[0][b];
             bin_box[b] = lane_box[0][b];
-            bin_centres[b] = lane_centres[0][b];
             for (int k = 1; k < LANES; k++) {
                 bin_count[b] += lane_count[k][b];
                 box_grow(&bin_box[b], &lane_box[k][b]);
-                box_grow(&bin_centres[b], &lane_centres[k][b]);
             }
         }
         /* Sweep from the right to get the area and count right of each
@@ -213,18 +209,16 @@ static uint32_t build(bvh_nodes *out, uint32_t *ids, bbox *boxes, uint32_t count
             }
         }
         if (best_bin > 0) {
-            /* Each side's extent is that of its bins. */
+            /* Partition, measuring both sides as each operand is placed. */
             extent_of(&sides[0], NULL, 0);
             extent_of(&sides[1], NULL, 0);
-            for (int b = 0; b < BINS; b++) {
-                extent *side = &sides[b >= best_bin];
-                box_grow(&side->bounds, &bin_box[b]);
-                box_grow(&side->centres, &bin_centres[b]);
-            }
             uint32_t i = 0, j = count;
             while (i < j) {
                 int b = (int)((centre_on(&boxes[i], axis) - lo) * scale);
                 b = b < 0 ? 0 : b >= BINS ? BINS - 1 : b;
+                extent *side = &sides[b >= best_bin];
+                box_grow(&side->bounds, &boxes[i]);
+                box_add(&side->centres, bbox_center(&boxes[i]));
                 if (b < best_bin)
                     i++;
                 else
