@@ -153,33 +153,16 @@ static uint32_t build(bvh_nodes *out, uint32_t *ids, bbox *boxes, uint32_t count
     extent sides[2]; /* of the two children, when measured */
     int measured = 0;
     if (count > LEAF_SIZE && width > 0 && depth < SAH_DEPTH) {
-        /* Neighbouring operands mostly fall into the same bin, so one set
-         * of bins makes every box wait for the one before it to be added;
-         * LANES sets, taken in turn and merged after, let LANES boxes be
-         * added at once. Minima and maxima come out the same in any order
-         * (no box has a NaN), so the hierarchy does not change. */
-        enum { LANES = 4 };
-        uint32_t lane_count[LANES][BINS] = {{0}};
-        bbox lane_box[LANES][BINS];
-        for (int k = 0; k < LANES; k++)
-            for (int b = 0; b < BINS; b++)
-                lane_box[k][b] = box_none();
+        uint32_t bin_count[BINS] = {0};
+        bbox bin_box[BINS];
+        for (int b = 0; b < BINS; b++)
+            bin_box[b] = box_none();
         double scale = BINS / width;
         for (uint32_t i = 0; i < count; i++) {
             int b = (int)((centre_on(&boxes[i], axis) - lo) * scale);
             b = b < 0 ? 0 : b >= BINS ? BINS - 1 : b;
-            lane_count[i % LANES][b]++;
-            box_grow(&lane_box[i % LANES][b], &boxes[i]);
-        }
-        uint32_t bin_count[BINS];
-        bbox bin_box[BINS];
-        for (int b = 0; b < BINS; b++) {
-            bin_count[b] = lane_count[0][b];
-            bin_box[b] = lane_box[0][b];
-            for (int k = 1; k < LANES; k++) {
-                bin_count[b] += lane_count[k][b];
-                box_grow(&bin_box[b], &lane_box[k][b]);
-            }
+            bin_count[b]++;
+            box_grow(&bin_box[b], &boxes[i]);
         }
         /* Sweep from the right to get the area and count right of each
          * split, then from the left to price every split. */
