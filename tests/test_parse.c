@@ -748,8 +748,9 @@ static void test_number_vectors(void **state)
                 "m.csg:1:22: error: expected ']' (to close '[' at line 1)");
     check_error("a(m = [1, 2.5.]);", "m.csg:1:11: error: malformed number '2.5.'");
     check_error("a(m = [1, 1e999]);", "m.csg:1:11: error: number out of range '1e999'");
-    check_language("a(m = [1, - 2]);", "m.csg:1:11: error: an operator ('-') is OpenSCAD's "
-                                       "language beyond its CSG export");
+    check_language("a(m = [1, - 2]);",
+                   "m.csg:1:11: error: an operator ('-') is OpenSCAD's "
+                   "language beyond its CSG export");
     check_error("a(m = [[1, 2]",
                 "m.csg:1:14: error: expected ']' (to close '[' at line 1)");
     parse_tree *t = parse_ok("a(m = [1, inf, [-nan], \"s\", [2, true]]);");

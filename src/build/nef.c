@@ -1,36 +1,13 @@
-/* Loading the CGAL plugin (nef.h) on demand.
- *
- * As the image plugins (formats/image_plugin.c): looked for next to the
- * running executable (or in the installed helpers' folder), then in the
- * build folder (SPANCAST_PLUGIN_DIR), where the tests find it. dlopen of a
- * library already loaded only counts a reference, and RTLD_NODELETE keeps
- * CGAL's code and GMP in memory once loaded, so each build that needs the
- * plugin opens and closes its own handle and no state outlives it.
+/* Loading the CGAL plugin (nef.h) on demand, found and loaded as every
+ * plugin is (formats/plugin.h): RTLD_NODELETE keeps CGAL's code and GMP in
+ * memory once loaded, so each build that needs the plugin opens and closes
+ * its own handle and no state outlives it.
  */
-#define _GNU_SOURCE /* RTLD_NODELETE */
-
 #include "build/nef.h"
 
-#include <dlfcn.h>
-#include <stdio.h>
 #include <string.h>
 
-#include "formats/file.h"
-
-#ifndef SPANCAST_PLUGIN_DIR
-#define SPANCAST_PLUGIN_DIR "."
-#endif
-
-/* dlopen of path; NULL with dlerror's text in err. */
-static void *open_at(const char *path, char *err, size_t err_size)
-{
-    void *handle = dlopen(path, RTLD_NOW | RTLD_LOCAL | RTLD_NODELETE);
-    if (!handle) {
-        const char *why = dlerror();
-        snprintf(err, err_size, "%.400s", why ? why : path);
-    }
-    return handle;
-}
+#include "formats/plugin.h"
 
 int nef_plugin_open(nef_plugin *plugin, char *err, size_t err_size)
 {
@@ -40,31 +17,9 @@ int nef_plugin_open(nef_plugin *plugin, char *err, size_t err_size)
         "spancast_nef_release"};
     enum { COUNT = sizeof names / sizeof names[0] };
     memset(plugin, 0, sizeof *plugin);
-    char path[4096], first[512] = "";
-    void *handle = NULL;
-    if (file_beside_program(NEF_PLUGIN_FILE, path, sizeof path))
-        handle = open_at(path, first, sizeof first);
-    if (!handle) {
-        char second[512];
-        snprintf(path, sizeof path, "%s/%s", SPANCAST_PLUGIN_DIR, NEF_PLUGIN_FILE);
-        handle = open_at(path, second, sizeof second);
-        if (!handle && !first[0])
-            snprintf(first, sizeof first, "%s", second);
-    }
-    if (!handle) {
-        snprintf(err, err_size, "cannot load the CGAL plugin (%s): %s", NEF_PLUGIN_FILE,
-                 first);
+    void *fns[COUNT], *handle = NULL;
+    if (!plugin_load(NEF_PLUGIN_FILE, "CGAL", names, COUNT, fns, &handle, err, err_size))
         return 0;
-    }
-    void *fns[COUNT];
-    for (int k = 0; k < COUNT; k++) {
-        if (!(fns[k] = dlsym(handle, names[k]))) {
-            snprintf(err, err_size, "cannot load the CGAL plugin (%s): it lacks %s",
-                     NEF_PLUGIN_FILE, names[k]);
-            dlclose(handle);
-            return 0;
-        }
-    }
     /* Function pointers from dlsym: POSIX guarantees the conversion. */
     *(void **)&plugin->from_mesh = fns[0];
     *(void **)&plugin->empty = fns[1];
@@ -79,7 +34,6 @@ int nef_plugin_open(nef_plugin *plugin, char *err, size_t err_size)
 
 void nef_plugin_close(nef_plugin *plugin)
 {
-    if (plugin->handle)
-        dlclose(plugin->handle);
+    plugin_unload(&plugin->handle);
     memset(plugin, 0, sizeof *plugin);
 }

@@ -82,7 +82,7 @@ typedef struct imgio_tiff_plugin {
     imgio_tiff_close_fn *close;
 } imgio_tiff_plugin;
 
-/* 1 with *plugin filled, or 0 with "cannot load the TIFF plugin: ..." in
+/* 1 with *plugin filled, or 0 with "cannot load the TIFF plugin (...): ..." in
  * err; imgio_tiff_plugin_close drops the reference (a zeroed plugin is
  * fine). */
 int imgio_tiff_plugin_open(imgio_tiff_plugin *plugin, char *err, size_t err_size);
@@ -104,7 +104,7 @@ typedef int imgio_plugin_read_fn(const char *path, image_data *out, char *err,
 /* A loaded plugin. imgio_plugin_open looks for IMGIO_PLUGIN_FILE next to the
  * executable (/proc/self/exe), then in the build folder it was built in.
  * Returns 1 with *plugin filled, or 0 with "cannot load the OpenImageIO
- * plugin: ..." in err. The library stays loaded for the rest of the process
+ * plugin (...): ..." in err. The library stays loaded for the rest of the process
  * (OpenImageIO does not support being unloaded); imgio_plugin_close only
  * drops this reference. */
 typedef struct imgio_plugin {
