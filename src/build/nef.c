@@ -37,7 +37,7 @@ int nef_plugin_open(nef_plugin *plugin, char *err, size_t err_size)
     static const char *const names[] = {
         "spancast_nef_from_mesh", "spancast_nef_empty",    "spancast_nef_apply",
         "spancast_nef_is_empty",  "spancast_nef_vertices", "spancast_nef_convex_parts",
-        "spancast_nef_release"};
+        "spancast_nef_triangles", "spancast_nef_release"};
     enum { COUNT = sizeof names / sizeof names[0] };
     memset(plugin, 0, sizeof *plugin);
     char path[4096], first[512] = "";
@@ -72,7 +72,8 @@ int nef_plugin_open(nef_plugin *plugin, char *err, size_t err_size)
     *(void **)&plugin->is_empty = fns[3];
     *(void **)&plugin->vertices = fns[4];
     *(void **)&plugin->convex_parts = fns[5];
-    *(void **)&plugin->release = fns[6];
+    *(void **)&plugin->triangles = fns[6];
+    *(void **)&plugin->release = fns[7];
     plugin->handle = handle;
     return 1;
 }
