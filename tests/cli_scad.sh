@@ -67,8 +67,8 @@ printf 'import("open.stl");\n' >open.scad
 printf 'solid o\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 0 1 0\nendloop\nendfacet\nendsolid o\n' >open.stl
 fails_with open.scad "open.scad: error: imported mesh is not closed (edge (0, 0, 0)-(1, 0, 0) is used by 1 face) (line 1 of OpenSCAD's export)" --strict
 [ -e open.csg ] && fail "open.scad: a .csg was left beside the source"
-printf '\nprojection() difference() { cube(1); sphere(1); }\n' >proj.scad
-want="proj.scad: error: projection(cut = false) of 'difference' is not supported yet (it needs a mesh boolean; cut = true works) (line 2 of OpenSCAD's export)"
+printf '\nprojection() sphere(1e6, $fa = 0.01, $fs = 0.01);\n' >proj.scad
+want="proj.scad: error: projection: \$fn, \$fa and \$fs of radius 1e+06 give too many fragments (limit is 4096) (line 2 of OpenSCAD's export)"
 fails_with proj.scad "$want"
 for cmd in info measure; do
     "$bin" $cmd proj.scad -q >/dev/null 2>err.txt
@@ -131,9 +131,9 @@ warns_with loops.csg "loops.csg: note: uses OpenSCAD's language beyond its CSG e
 printf 'cube(1);\nx = ;\n' >badlang.csg
 fails_with badlang.csg "badlang.csg: note: uses OpenSCAD's language beyond its CSG export (line 2); converting it with openscad
 badlang.csg:2:1: error: Parser error: syntax error"
-printf 'd = 2;\nprojection() cube(d);\n' >projlang.csg
+printf 'd = 1e6;\nprojection() sphere(d, $fa = 0.01, $fs = 0.01);\n' >projlang.csg
 fails_with projlang.csg "projlang.csg: note: uses OpenSCAD's language beyond its CSG export (line 1); converting it with openscad
-projlang.csg: error: 'projection' is not supported yet (line 1 of OpenSCAD's export)"
+projlang.csg: error: projection: \$fn, \$fa and \$fs of radius 1e+06 give too many fragments (limit is 4096) (line 2 of OpenSCAD's export)"
 [ -z "$(ls -A "$work/tmp")" ] || fail "temporary files left: $(ls -A "$work/tmp")"
 
 # -D NAME=VALUE passes through to OpenSCAD, as OpenSCAD's -D: in order (the
@@ -185,7 +185,7 @@ if command -v mpirun >/dev/null && [ -x "$(dirname "$bin")/spancast-mpi" ]; then
     cmp -s np2.png plain.png || fail "mpirun vars.csg: the image differs"
     grep -qF "$note" out.txt || fail "mpirun vars.csg: no note: $(cat out.txt)"
     mpirun_test -np 2 "$bin" render proj.scad -o np2.png -q >out.txt 2>&1
-    grep -qF "proj.scad: error: 'projection' is not supported yet (line 1 of OpenSCAD's export)" out.txt ||
+    grep -qF "$want" out.txt ||
         fail "mpirun proj.scad: $(cat out.txt)"
     grep -q "\.csg" out.txt && fail "mpirun proj.scad: names a .csg: $(cat out.txt)"
 fi

@@ -476,7 +476,7 @@ static void test_resize_errors(void **state)
                 "true, false or a vector of them)");
     check_error("m.csg", "resize([1, 1, 1]) { projection() { cube(); } }",
                 SC_ERR_UNSUPPORTED,
-                "m.csg:1:21: error: 'projection' inside resize is not supported yet");
+                "m.csg:1:1: error: 'resize' inside the 2D model is not supported yet");
     /* a revolved square ring (z 0 to 1) stretched to height 2 */
     sc_scene *r =
         load("resize([0, 0, 2]) { rotate_extrude($fn = 4) { "
