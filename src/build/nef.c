@@ -6,12 +6,20 @@
  * library already loaded only counts a reference, and RTLD_NODELETE keeps
  * CGAL's code and GMP in memory once loaded, so each build that needs the
  * plugin opens and closes its own handle and no state outlives it.
+ *
+ * CGAL's Nef polyhedra are not safe to use from two threads at once (the
+ * top-level objects of a model are built in parallel; two projections of
+ * booleans there crashed inside CGAL or never finished), so an open
+ * handle holds one process-wide lock until it is closed: builds that need
+ * CGAL take turns, others are not held up. The lock is recursive, as a
+ * build may open the plugin again below an open one.
  */
 #define _GNU_SOURCE /* RTLD_NODELETE */
 
 #include "build/nef.h"
 
 #include <dlfcn.h>
+#include <pthread.h>
 #include <stdio.h>
 #include <string.h>
 
@@ -32,6 +40,8 @@ static void *open_at(const char *path, char *err, size_t err_size)
     return handle;
 }
 
+static pthread_mutex_t nef_lock = PTHREAD_RECURSIVE_MUTEX_INITIALIZER_NP;
+
 int nef_plugin_open(nef_plugin *plugin, char *err, size_t err_size)
 {
     static const char *const names[] = {
@@ -40,6 +50,7 @@ int nef_plugin_open(nef_plugin *plugin, char *err, size_t err_size)
         "spancast_nef_triangles", "spancast_nef_release"};
     enum { COUNT = sizeof names / sizeof names[0] };
     memset(plugin, 0, sizeof *plugin);
+    pthread_mutex_lock(&nef_lock);
     char path[4096], first[512] = "";
     void *handle = NULL;
     if (file_beside_program(NEF_PLUGIN_FILE, path, sizeof path))
@@ -54,6 +65,7 @@ int nef_plugin_open(nef_plugin *plugin, char *err, size_t err_size)
     if (!handle) {
         snprintf(err, err_size, "cannot load the CGAL plugin (%s): %s", NEF_PLUGIN_FILE,
                  first);
+        pthread_mutex_unlock(&nef_lock);
         return 0;
     }
     void *fns[COUNT];
@@ -62,6 +74,7 @@ int nef_plugin_open(nef_plugin *plugin, char *err, size_t err_size)
             snprintf(err, err_size, "cannot load the CGAL plugin (%s): it lacks %s",
                      NEF_PLUGIN_FILE, names[k]);
             dlclose(handle);
+            pthread_mutex_unlock(&nef_lock);
             return 0;
         }
     }
@@ -80,7 +93,9 @@ int nef_plugin_open(nef_plugin *plugin, char *err, size_t err_size)
 
 void nef_plugin_close(nef_plugin *plugin)
 {
-    if (plugin->handle)
+    if (plugin->handle) {
         dlclose(plugin->handle);
+        pthread_mutex_unlock(&nef_lock);
+    }
     memset(plugin, 0, sizeof *plugin);
 }
