@@ -1,8 +1,9 @@
-# Booleans inside hull() and minkowski() go through CGAL in the plugin
+# Booleans inside hull() and minkowski(), and the booleans and minkowski
+# sums a projection(cut = false) outlines, go through CGAL in the plugin
 # spancast-cgal.so, loaded only when a model has one: --version, info and
 # render of other models never load it (ld.so's own log), a hull of an
-# intersection does, a broken plugin is an error that names it, and memory
-# running out inside CGAL is an error.
+# intersection and a projection of a difference do, a broken plugin is an
+# error that names it, and memory running out inside CGAL is an error.
 #
 # Run as: bash cli_cgal.sh <path-to-spancast> <source-dir> <work-dir>
 . "$(dirname "$0")/testlib.sh"
@@ -11,6 +12,15 @@ cat >plain.csg <<'CSG'
 hull() { cube(2); multmatrix([[1, 0, 0, 5], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]) { sphere(1, $fn = 8); } }
 difference() { cube(10, center = true); sphere(6); }
 minkowski() { cube(1); sphere(1, $fn = 8); }
+linear_extrude(height = 1) { projection(cut = false) { union() { cube(3); sphere(2); } } }
+linear_extrude(height = 1) { projection(cut = true) { difference() { cube(3, center = true); sphere(1); } } }
+CSG
+cat >proj.csg <<'CSG'
+linear_extrude(height = 1) {
+  projection(cut = false) {
+    difference() { cube(10, center = true); cylinder(h = 30, r1 = 3, r2 = 3, center = true); }
+  }
+}
 CSG
 cat >bool.csg <<'CSG'
 hull() {
@@ -42,6 +52,10 @@ check
 LD_DEBUG=files LD_DEBUG_OUTPUT="$PWD/ld-bool" "$bin" info bool.csg >info.txt ||
     fail "info of a hull of an intersection failed: $(cat info.txt)"
 loaded ld-bool || fail "a hull of an intersection did not load spancast-cgal.so"
+check
+LD_DEBUG=files LD_DEBUG_OUTPUT="$PWD/ld-proj" "$bin" info proj.csg >info.txt ||
+    fail "info of a projection of a difference failed: $(cat info.txt)"
+loaded ld-proj || fail "a projection of a difference did not load spancast-cgal.so"
 # A plugin that lacks the entry points (another plugin under its name),
 # beside a copy of the tool: an error naming it, a non-zero exit, no
 # image.
@@ -55,6 +69,13 @@ fi
 grep -q "^bool.csg:2:3: error: hull: cannot load the CGAL plugin (spancast-cgal.so): it lacks spancast_nef_from_mesh$" err.txt ||
     fail "broken plugin message: $(cat err.txt)"
 [ -e broken.png ] && fail "an image was written"
+check
+if broken/spancast render proj.csg -o broken.png -q 2>err.txt; then
+    fail "a broken plugin was not an error for a projection"
+fi
+grep -q "^proj.csg:3:5: error: projection: cannot load the CGAL plugin (spancast-cgal.so): it lacks spancast_nef_from_mesh$" err.txt ||
+    fail "broken plugin message for a projection: $(cat err.txt)"
+[ -e broken.png ] && fail "an image was written for a projection"
 
 # Memory running out inside CGAL's exact arithmetic (GMP) is a clean
 # error, not GMP's abort: a hull of a finely tessellated sphere cut by a

@@ -276,25 +276,69 @@ static void test_2d_child(void **state)
     twod_free(&r);
 }
 
+/* Booleans and minkowski sums go through the CGAL plugin: the outline of
+ * the boolean's mesh, not the boolean of the outlines; a minkowski sum cut
+ * and projected; a hull of a boolean takes the result's vertices. */
+static void test_mesh_booleans(void **state)
+{
+    (void)state;
+    /* a square hole through the cube shows, one that stops inside does not */
+    NEAR(area("group() { projection() { difference() { cube(10, center = true); "
+              "cylinder(r = 3, h = 30, center = true, $fn = 4); } } }"),
+         82, 60);
+    NEAR(area("group() { projection() { difference() { cube(10, center = true); "
+              "cylinder(r = 3, h = 30, $fn = 4); } } }"),
+         100, 60);
+    /* the same below a mirroring transform, inside a union */
+    NEAR(area("group() { projection() { multmatrix([[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, "
+              "-1, 0], [0, 0, 0, 1]]) { union() { difference() { cube(10, center = "
+              "true); cylinder(r = 3, h = 30, center = true, $fn = 4); } } } } }"),
+         82, 60);
+    int outers, holes;
+    NEAR(area_of("group() { projection(cut = false) { intersection() { cube(10, center "
+                 "= true); multmatrix([[1, 0, 0, 5], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, "
+                 "0, 1]]) { cube(10, center = true); } } } }",
+                 &outers, &holes),
+         50, 40);
+    assert_int_equal(outers, 1);
+    assert_int_equal(holes, 0);
+    /* a 2 x 2 square summed with a diamond of radius 1: 4 + 8 + 2 */
+    const char *sum = "minkowski() { cube([2, 2, 2]); cylinder(r = 1, h = 1, $fn = 4); }";
+    char text[512];
+    snprintf(text, sizeof text, "group() { projection() { %s } }", sum);
+    NEAR(area(text), 14, 40);
+    snprintf(text, sizeof text,
+             "group() { projection(cut = true) { multmatrix([[1, 0, 0, 0], [0, 1, 0, 0], "
+             "[0, 0, 1, -1], [0, 0, 0, 1]]) { %s } } }",
+             sum);
+    NEAR(area(text), 14, 40);
+    /* a cube of 4 less a corner cube of 2: the hull of what is left cuts the
+     * corner by x + y + z >= 2; at height 1 the section lacks a triangle
+     * of 0.5, from above nothing */
+    const char *cut = "hull() { difference() { cube(4); multmatrix([[1, 0, 0, -1], [0, "
+                      "1, 0, -1], [0, 0, 1, -1], [0, 0, 0, 1]]) { cube(3); } "
+                      "} }";
+    snprintf(text, sizeof text,
+             "group() { projection(cut = true) { multmatrix([[1, 0, 0, 0], [0, 1, 0, 0], "
+             "[0, 0, 1, -1], [0, 0, 0, 1]]) { %s } } }",
+             cut);
+    NEAR(area(text), 15.5, 40);
+    snprintf(text, sizeof text, "group() { projection() { %s } }", cut);
+    NEAR(area(text), 16, 40);
+}
+
 static void test_errors(void **state)
 {
     (void)state;
-    check_error("group() { projection() { difference() { cube(10); sphere(3); } } }",
-                SC_ERR_UNSUPPORTED,
-                "m.csg:1:26: error: projection(cut = false) of 'difference' is not "
-                "supported yet (it needs a mesh boolean; cut = true works)");
-    check_error("group() { projection(cut = false) {\n  intersection() { cube(1); } } }",
-                SC_ERR_UNSUPPORTED,
-                "m.csg:2:3: error: projection(cut = false) of 'intersection' is not "
-                "supported yet (it needs a mesh boolean; cut = true works)");
     check_error("group() { projection(cut = true) { torus(r1 = 2, r2 = 1); } }",
                 SC_ERR_UNSUPPORTED,
                 "m.csg:1:36: error: 'torus' inside projection is not supported (it has "
                 "no OpenSCAD polygon mesh)");
-    check_error("group() { projection(cut = true) { hull() { cube(1);\n  difference() { "
-                "cube(2); } } } }",
-                SC_ERR_UNSUPPORTED,
-                "m.csg:2:3: error: 'difference' inside hull is not supported yet");
+    check_error(
+        "group() { projection() {\n  difference() { cube(2); torus(r1 = 2, r2 = 1); "
+        "} } }",
+        SC_ERR_UNSUPPORTED,
+        "m.csg:2:27: error: 'torus' inside projection is not supported yet");
     check_error("group() { projection(cut = 1) { cube(1); } }", SC_ERR_SEMANTIC,
                 "m.csg:1:28: error: wrong type for argument 'cut' of 'projection' "
                 "(expected true or false)");
@@ -326,19 +370,21 @@ static void test_top_level(void **state)
     assert_string_equal(sc_error_format(sc_scene_warning(s, 1), buf, sizeof buf),
                         "m.csg:2:1: error: Ignoring 2D child object for 3D operation");
     sc_scene_release(s);
-    test_check_error("m.csg",
-                     "cube(1);\nprojection() { difference() { cube(2); cube(1); } }",
-                     SC_ERR_UNSUPPORTED,
-                     "m.csg:2:16: error: projection(cut = false) of 'difference' is not "
-                     "supported yet (it needs a mesh boolean; cut = true works)");
+    test_check_error(
+        "m.csg",
+        "cube(1);\nprojection() { difference() { cube(2); torus(r1 = 2, r2 = "
+        "1); } }",
+        SC_ERR_UNSUPPORTED,
+        "m.csg:2:40: error: 'torus' inside projection is not supported yet");
 }
 
 int main(void)
 {
     const struct CMUnitTest tests[] = {
-        cmocka_unit_test(test_cut),     cmocka_unit_test(test_cut_in_plane),
-        cmocka_unit_test(test_outline), cmocka_unit_test(test_2d_child),
-        cmocka_unit_test(test_errors),  cmocka_unit_test(test_top_level),
+        cmocka_unit_test(test_cut),           cmocka_unit_test(test_cut_in_plane),
+        cmocka_unit_test(test_outline),       cmocka_unit_test(test_2d_child),
+        cmocka_unit_test(test_mesh_booleans), cmocka_unit_test(test_errors),
+        cmocka_unit_test(test_top_level),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

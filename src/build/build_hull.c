@@ -957,6 +957,47 @@ static sc_status solid_parts(const walk *w, const model_node *n, const affine *m
     return st;
 }
 
+sc_status build_nef_triangles(const build_ctx *c, const model_node *n, const char *owner,
+                              build_resize_cache **cache, vec3 **tris,
+                              uint32_t *tri_count)
+{
+    *tris = NULL;
+    *tri_count = 0;
+    nef_plugin nef = {0};
+    walk w = {c, owner, 0, cache, &nef, 0};
+    nef_solid *solid = NULL;
+    affine id = affine_identity();
+    sc_status st = nef_ready(&w, n);
+    if (st == SC_OK)
+        st = nef_node(&w, n, &id, 0, &solid);
+    if (st == SC_OK && solid) {
+        nef_parts got = {NULL, NULL, 0};
+        char why[512] = "";
+        nef_status ns = nef.triangles(solid, &got, why, sizeof why);
+        if (ns != NEF_OK) {
+            st = nef_error(&w, n, ns, why);
+        } else if (got.count == 1 && got.start[1] >= 3) {
+            uint32_t count = got.start[1] / 3;
+            vec3 *v = malloc((size_t)count * 3 * sizeof *v);
+            if (!v) {
+                st = err_nomem(c->error, &n->loc);
+            } else {
+                for (uint32_t i = 0; i < 3 * count; i++)
+                    v[i] = v3(got.points[3 * i], got.points[3 * i + 1],
+                              got.points[3 * i + 2]);
+                *tris = v;
+                *tri_count = count;
+            }
+        }
+        free(got.points);
+        free(got.start);
+    }
+    if (solid)
+        nef.release(solid);
+    nef_plugin_close(&nef);
+    return st;
+}
+
 /* ---- emitting ---- */
 
 static sc_status push_prim(const build_ctx *c, const model_node *n, build_prims *out,

@@ -49,6 +49,15 @@ sc_status build_minkowski(const build_ctx *c, const model_node *n, int emit,
                           build_resize_cache **cache, build_prims *out,
                           const char **empty);
 
+/* The solid of 3D subtree n as OpenSCAD 2021.01 evaluates it with CGAL (its
+ * booleans, hulls and minkowski sums as Nef polyhedra), in n's parent's
+ * frame: *tris gets 3 * *tri_count corners, each triangle turned away from
+ * the solid (malloc'd; NULL and 0 for the empty solid). Loads the CGAL
+ * plugin; messages begin with owner ("projection"). */
+sc_status build_nef_triangles(const build_ctx *c, const model_node *n, const char *owner,
+                              build_resize_cache **cache, vec3 **tris,
+                              uint32_t *tri_count);
+
 /* resize(newsize, auto): the scale (a diagonal matrix in *out) that
  * OpenSCAD 2021.01 applies to the children, from their bounding box in the
  * resize node's frame. *warning is set (and *out the identity) when a

@@ -19,10 +19,11 @@
  * transforms, colours and resizes go into one union. The projection of a
  * difference or intersection is not a 2D boolean of the children's
  * projections (a hole through a cube does not show from above unless it
- * goes through); OpenSCAD projects the mesh of the boolean's result, which
- * needs a mesh boolean. That is an error at the boolean's position until
- * a mesh-boolean builder hands this file the result's triangles (where
- * leaf_soup would take them).
+ * goes through); OpenSCAD projects the mesh of the boolean's result. So
+ * does this file: the boolean is evaluated to a CGAL Nef polyhedron
+ * (build_nef_triangles, the path hull() and minkowski() take, with the
+ * plugin loaded on first use) and its triangles are a leaf like any
+ * other.
  *
  * cut = true: OpenSCAD intersects the Nef polyhedron of the union of the
  * children with the plane z = 0 and keeps the closed set, and its Nef
@@ -55,11 +56,12 @@
  * A 2D child is ignored with a warning (OpenSCAD: "Ignoring 2D child
  * object for 3D operation"); '%' and '*' children are left out, as
  * OpenSCAD leaves out background children. torus, quadric and implicit
- * have no OpenSCAD mesh, and minkowski inside a projection is not built
- * yet: errors at their position, never a silent skip. A hull is the
- * convex hull of the corners of its children's meshes (OpenSCAD hulls
- * their vertices), as triangles like any other leaf; a boolean or
- * minkowski inside that hull needs a mesh boolean and is an error.
+ * have no OpenSCAD mesh: errors at their position, never a silent skip.
+ * A minkowski is, in both modes, the triangles of its CGAL result (the
+ * union of the sums of convex parts, as build_hull.c computes it). A hull
+ * is the convex hull of the corners of its children's meshes (OpenSCAD
+ * hulls their vertices), as triangles like any other leaf; a boolean or
+ * minkowski inside that hull gives the vertices of its CGAL result.
  */
 #include "build/build_projection.h"
 
@@ -287,8 +289,8 @@ static sc_status leaf_soup(pwalk *w, const model_node *n, soup *s, int depth);
 
 /* The corners of the meshes below hull node parent (through m, in the
  * hull's frame) added to pts, as OpenSCAD hulls them: groups, colours,
- * transforms and resizes pass through; a boolean or minkowski needs a
- * mesh boolean. */
+ * transforms and resizes pass through; a boolean or minkowski gives the
+ * vertices of its CGAL result. */
 static sc_status hull_points(pwalk *w, const model_node *parent, const affine *m,
                              int depth, soup *pts)
 {
@@ -315,8 +317,7 @@ static sc_status hull_points(pwalk *w, const model_node *parent, const affine *m
             affine inner = affine_mul(m, &local), inverse;
             if (st == SC_OK && affine_invert(&inner, &inverse))
                 st = hull_points(w, n, &inner, depth + 1, pts);
-        } else if (kind == MODEL_DIFFERENCE || kind == MODEL_INTERSECTION ||
-                   kind == MODEL_MINKOWSKI || model_is_2d(kind)) {
+        } else if (model_is_2d(kind)) {
             st = err_set(c->error, SC_ERR_UNSUPPORTED, &n->loc,
                          "'%s' inside hull is not supported yet", n->name);
         } else {
@@ -366,6 +367,22 @@ static sc_status hull_soup(pwalk *w, const model_node *n, soup *s, int depth)
     return st;
 }
 
+/* A boolean or minkowski: the triangles of its CGAL result
+ * (build_nef_triangles), as OpenSCAD projects the polygons of the Nef
+ * polyhedron it evaluates the child to. */
+static sc_status nef_soup(pwalk *w, const model_node *n, soup *s)
+{
+    vec3 *tris = NULL;
+    uint32_t count = 0;
+    sc_status st = build_nef_triangles(w->c, n, "projection", &w->cache, &tris, &count);
+    for (uint32_t t = 0; st == SC_OK && t < count; t++) {
+        if (!add_tri(s, tris[3 * t], tris[3 * t + 1], tris[3 * t + 2]))
+            st = err_nomem(w->c->error, &n->loc);
+    }
+    free(tris);
+    return st;
+}
+
 /* The soup of leaf n in its own frame; SC_ERR_UNSUPPORTED for leaves
  * without an OpenSCAD mesh. */
 static sc_status leaf_soup(pwalk *w, const model_node *n, soup *s, int depth)
@@ -388,6 +405,10 @@ static sc_status leaf_soup(pwalk *w, const model_node *n, soup *s, int depth)
         return built_soup(w, n, s);
     case MODEL_HULL:
         return hull_soup(w, n, s, depth);
+    case MODEL_DIFFERENCE:
+    case MODEL_INTERSECTION:
+    case MODEL_MINKOWSKI:
+        return nef_soup(w, n, s);
     case MODEL_TORUS:
     case MODEL_QUADRIC:
     case MODEL_IMPLICIT:
@@ -743,10 +764,7 @@ static sc_status walk_node(pwalk *w, const model_node *n, const affine *m, int d
     case MODEL_DIFFERENCE:
     case MODEL_INTERSECTION:
         if (!w->cut)
-            return err_set(c->error, SC_ERR_UNSUPPORTED, &n->loc,
-                           "projection(cut = false) of '%s' is not supported yet (it "
-                           "needs a mesh boolean; cut = true works)",
-                           n->name);
+            return leaf(w, n, m, depth, out); /* the boolean's mesh */
         return boolean(w, n, m, depth, out);
     default:
         return leaf(w, n, m, depth, out);

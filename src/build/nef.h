@@ -72,6 +72,10 @@ typedef struct nef_plugin {
      * solid is left as it is. */
     nef_status (*convex_parts)(const nef_solid *s, nef_parts *out, char *err,
                                size_t err_size);
+    /* The boundary of the solid as triangles turned away from it, as one
+     * part: triangle t is points[9 * t .. 9 * t + 9) (3 corners). */
+    nef_status (*triangles)(const nef_solid *s, nef_parts *out, char *err,
+                            size_t err_size);
     void (*release)(nef_solid *s);
     void *handle; /* of dlopen */
 } nef_plugin;

@@ -20,6 +20,7 @@
 #include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
 #include <CGAL/Polyhedron_3.h>
 #include <CGAL/Surface_mesh.h>
+#include <CGAL/boost/graph/convert_nef_polyhedron_to_polygon_mesh.h>
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/convex_decomposition_3.h>
 
@@ -271,6 +272,33 @@ spancast_nef_convex_parts(const nef_solid *s, nef_parts *out, char *err, size_t 
                         set.push_back(*p);
                     if (!set.empty())
                         sets.push_back(std::move(set));
+                }
+            }
+            to_parts(sets, out);
+        },
+        err, err_size);
+}
+
+__attribute__((visibility("default"))) nef_status
+spancast_nef_triangles(const nef_solid *s, nef_parts *out, char *err, size_t err_size)
+{
+    std::memset(out, 0, sizeof *out);
+    return guarded(
+        [&] {
+            // The boundary of every volume, triangulated and oriented away
+            // from the solid (OpenSCAD turns its Nef results into polygons
+            // the same way before projecting them).
+            std::vector<std::vector<Point>> sets(1);
+            if (!s->nef.is_empty()) {
+                std::vector<Point> points;
+                std::vector<std::vector<std::size_t>> polygons;
+                CGAL::convert_nef_polyhedron_to_polygon_soup(s->nef, points, polygons,
+                                                             true);
+                for (const auto &polygon : polygons) {
+                    if (polygon.size() != 3)
+                        throw std::runtime_error("a face was not triangulated");
+                    for (std::size_t k : polygon)
+                        sets[0].push_back(points[k]);
                 }
             }
             to_parts(sets, out);
