@@ -114,16 +114,11 @@ static sc_status warn(builder *b, const sc_location *loc, const char *format, ..
     SC_PRINTF(3, 4);
 static sc_status warn(builder *b, const sc_location *loc, const char *format, ...)
 {
-    build_notes *w = &b->warnings;
-    if (!grow_array((void **)&w->items, &w->cap, w->count + 1, sizeof *w->items))
-        return err_nomem(b->error, NULL);
-    char message[SC_ERROR_MESSAGE_MAX];
     va_list args;
     va_start(args, format);
-    vsnprintf(message, sizeof message, format, args);
+    sc_status st = build_notes_add(&b->warnings, b->error, loc, format, args);
     va_end(args);
-    err_set(&w->items[w->count++], SC_OK, loc, "%s", message);
-    return SC_OK;
+    return st;
 }
 
 /* The build context of node n's builder: its warnings go to b's where

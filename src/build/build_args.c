@@ -15,21 +15,27 @@ sc_status build_pending(const build_ctx *c, const model_node *n)
     return n->pending->status;
 }
 
-sc_status build_note(const build_ctx *c, const sc_location *loc, const char *format, ...)
+sc_status build_notes_add(build_notes *notes, sc_error *error, const sc_location *loc,
+                          const char *format, va_list args)
 {
-    build_notes *notes = c->notes;
-    if (!notes)
-        return SC_OK;
     if (!grow_array((void **)&notes->items, &notes->cap, notes->count + 1,
                     sizeof *notes->items))
-        return err_nomem(c->error, NULL);
+        return err_nomem(error, NULL);
     char message[SC_ERROR_MESSAGE_MAX];
-    va_list args;
-    va_start(args, format);
     vsnprintf(message, sizeof message, format, args);
-    va_end(args);
     err_set(&notes->items[notes->count++], SC_OK, loc, "%s", message);
     return SC_OK;
+}
+
+sc_status build_note(const build_ctx *c, const sc_location *loc, const char *format, ...)
+{
+    if (!c->notes)
+        return SC_OK;
+    va_list args;
+    va_start(args, format);
+    sc_status st = build_notes_add(c->notes, c->error, loc, format, args);
+    va_end(args);
+    return st;
 }
 
 void build_matrix_xy(const affine *a, const double outer[2][3], double inner[2][3])

@@ -7,6 +7,8 @@
 #ifndef SPANCAST_BUILD_BUILD_CTX_H
 #define SPANCAST_BUILD_BUILD_CTX_H
 
+#include <stdarg.h>
+
 #include "base/error.h"
 #include "csg/csg.h"
 #include "model/model.h"
@@ -30,6 +32,11 @@ typedef struct build_ctx {
      * ignores), or NULL where the subtree is only checked, not built */
     build_notes *notes;
 } build_ctx;
+
+/* Adds the warning format/args at loc to notes; fails only when memory
+ * runs out (an error in *error). */
+sc_status build_notes_add(build_notes *notes, sc_error *error, const sc_location *loc,
+                          const char *format, va_list args) SC_PRINTF(4, 0);
 
 /* Adds a warning at loc to c->notes (nothing when that is NULL); fails
  * only when memory runs out (an error in c->error). */

@@ -31,7 +31,8 @@ int nef_plugin_open(nef_plugin *plugin, char *err, size_t err_size)
     memset(plugin, 0, sizeof *plugin);
     pthread_mutex_lock(&nef_lock);
     void *fns[COUNT], *handle = NULL;
-    if (!plugin_load(NEF_PLUGIN_FILE, "CGAL", names, COUNT, fns, &handle, err, err_size)) {
+    if (!plugin_load(NEF_PLUGIN_FILE, "CGAL", names, COUNT, fns, &handle, err,
+                     err_size)) {
         pthread_mutex_unlock(&nef_lock);
         return 0;
     }
