@@ -453,6 +453,22 @@ static sc_status resize_matrix(const walk *w, const model_node *n, int depth, af
 static sc_status solid_parts(const walk *w, const model_node *n, const affine *m,
                              int depth, partlist *out);
 
+/* The frame of the children of a multmatrix or resize n under m: m after
+ * n's own matrix, in *inner; 0 in *ok for a singular multmatrix (the
+ * subtree has no geometry). */
+static sc_status inner_frame(const walk *w, const model_node *n, const affine *m,
+                             int depth, affine *inner, int *ok)
+{
+    affine local;
+    const char *warning = NULL;
+    *ok = 1;
+    sc_status st = n->kind == MODEL_XFORM ? read_matrix(w->c, n, &local, ok)
+                                          : resize_matrix(w, n, depth, &local, &warning);
+    if (st == SC_OK && *ok)
+        *inner = affine_mul(m, &local);
+    return st;
+}
+
 /* Appends the convex parts (or, for a hull, point sets) of the children of
  * parent, through m, to out. */
 static sc_status collect(const walk *w, const model_node *parent, const affine *m,
@@ -469,17 +485,11 @@ static sc_status collect(const walk *w, const model_node *parent, const affine *
         if (is_group(kind)) {
             st = collect(w, n, m, depth + 1, out);
         } else if (kind == MODEL_XFORM || kind == MODEL_RESIZE) {
-            affine local;
-            int ok = 1;
-            const char *warning = NULL;
-            if (kind == MODEL_XFORM)
-                st = read_matrix(c, n, &local, &ok);
-            else
-                st = resize_matrix(w, n, depth + 1, &local, &warning);
-            if (st == SC_OK && ok) {
-                affine inner = affine_mul(m, &local);
+            affine inner;
+            int ok;
+            st = inner_frame(w, n, m, depth + 1, &inner, &ok);
+            if (st == SC_OK && ok)
                 st = collect(w, n, &inner, depth + 1, out);
-            }
         } else if (kind == MODEL_CUBE || kind == MODEL_SPHERE || kind == MODEL_CYLINDER) {
             shape s;
             if ((st = read_shape(c, n, &s)) == SC_OK && s.kind != SHAPE_NONE) {
@@ -826,14 +836,11 @@ static sc_status nef_node(const walk *w, const model_node *n, const affine *m, i
     if (kind == MODEL_INTERSECTION)
         return nef_children(w, n, m, depth + 1, NEF_INTERSECTION, out);
     if (kind == MODEL_XFORM || kind == MODEL_RESIZE) {
-        affine local;
-        int ok = 1;
-        const char *warning = NULL;
-        st = kind == MODEL_XFORM ? read_matrix(c, n, &local, &ok)
-                                 : resize_matrix(w, n, depth + 1, &local, &warning);
+        affine inner;
+        int ok;
+        st = inner_frame(w, n, m, depth + 1, &inner, &ok);
         if (st != SC_OK || !ok)
             return st;
-        affine inner = affine_mul(m, &local);
         return nef_children(w, n, &inner, depth + 1, NEF_UNION, out);
     }
     if (kind == MODEL_POLYHEDRON) {
@@ -1143,14 +1150,11 @@ static sc_status support_node(const walk *w, const model_node *n, const affine *
     if (is_group(kind))
         return support(w, n, m, depth + 1, out);
     if (kind == MODEL_XFORM || kind == MODEL_RESIZE) {
-        affine local;
-        int ok = 1;
-        const char *warning = NULL;
-        st = kind == MODEL_XFORM ? read_matrix(c, n, &local, &ok)
-                                 : resize_matrix(w, n, depth + 1, &local, &warning);
+        affine inner;
+        int ok;
+        st = inner_frame(w, n, m, depth + 1, &inner, &ok);
         if (st != SC_OK || !ok)
             return st;
-        affine inner = affine_mul(m, &local);
         return support(w, n, &inner, depth + 1, out);
     }
     if (kind == MODEL_DIFFERENCE || kind == MODEL_INTERSECTION) {
