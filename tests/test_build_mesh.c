@@ -49,14 +49,17 @@ static sc_scene *load_faithful(const char *name, const char *text)
     return load_with(name, text, 1);
 }
 
+/* Loading text fails with status and the message expected; faithful and
+ * strict as sc_load_options has them. */
 static void check_error_with(const char *name, const char *text, sc_status status,
-                             const char *expected, int faithful)
+                             const char *expected, int faithful, int strict)
 {
     sc_scene *s = (sc_scene *)1;
     sc_error e;
     sc_load_options o;
     sc_load_options_init(&o);
     o.faithful = faithful;
+    o.strict = strict;
     assert_int_equal(sc_scene_load_string(name, text, strlen(text), &o, &s, &e), status);
     assert_null(s);
     char buf[1024];
@@ -66,23 +69,14 @@ static void check_error_with(const char *name, const char *text, sc_status statu
 static void check_error(const char *name, const char *text, sc_status status,
                         const char *expected)
 {
-    check_error_with(name, text, status, expected, 0);
+    check_error_with(name, text, status, expected, 0, 0);
 }
 
 /* With --strict (sc_load_options.strict): the error a bad mesh gives. */
 static void check_error_strict(const char *name, const char *text, sc_status status,
                                const char *expected, int faithful)
 {
-    sc_scene *s = (sc_scene *)1;
-    sc_error e;
-    sc_load_options o;
-    sc_load_options_init(&o);
-    o.faithful = faithful;
-    o.strict = 1;
-    assert_int_equal(sc_scene_load_string(name, text, strlen(text), &o, &s, &e), status);
-    assert_null(s);
-    char buf[1024];
-    assert_string_equal(sc_error_format(&e, buf, sizeof buf), expected);
+    check_error_with(name, text, status, expected, faithful, 1);
 }
 
 /* Loads text (faithful or not) and checks its one warning, message and
