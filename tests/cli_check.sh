@@ -232,7 +232,7 @@ expect 2 "spancast: error: cannot read 'missing.csg': No such file or directory"
 expect 2 "bad.csg:1:7: error: expected ')' (to close '(' at line 1)" overlaps bad.csg
 expect 2 "spancast: error: cannot open 'missing.csg': No such file or directory" compare drilled.csg missing.csg
 expect 2 "spancast: error: cannot open 'missing.stl': No such file or directory" compare drilled.csg missing.stl
-expect 2 "spancast: error: overlaps reads the .csg file OpenSCAD writes (openscad -o model.csg model.scad)" overlaps part.scad
+expect 2 "spancast: error: cannot open 'missing.scad': No such file or directory" overlaps missing.scad
 
 # ---- against OpenSCAD's STL export ----
 
@@ -257,6 +257,42 @@ assert not j["same"]' stl.json
 run 0 stl.txt compare drilled64.csg drilled64.stl -q --tolerance="$(python3 -c "print($bound * 1.2)")"
 check
 tail -n 1 stl.txt | grep -qx same || fail "compare with the STL within its bound: $(cat stl.txt)"
+
+# ---- overlaps of OpenSCAD source ----
+
+# The boxes above written in OpenSCAD's language, one from a module: the
+# same pairs and volumes; each object is placed on the source with the line
+# of OpenSCAD's export it is on (the same lines as boxes.csg, which is that
+# export's shape).
+cat >boxes.scad <<'SCAD'
+module box(at, size) translate(at) cube(size);
+cube(10);
+box([8, 7, 6], 5);
+box([10, 0, 0], [4, 10, 10]);
+SCAD
+run 1 scad.json overlaps boxes.scad --json -q
+pycheck '
+o = j["overlaps"]
+assert j["objects"] == 3 and len(o) == 2, j
+assert [(p["a"]["index"], p["b"]["index"]) for p in o] == [(1, 2), (2, 3)], o
+holds(o[0]["volume"], 24)
+holds(o[1]["volume"], 36)' scad.json
+run 1 scad.txt overlaps boxes.scad -q
+check
+grep -q "^overlap: boxes.scad (line [0-9]* of OpenSCAD's export) (cube, object 1) and boxes.scad (line [0-9]* of OpenSCAD's export) (group, object 2): volume 24 +- " scad.txt ||
+    fail "overlaps of a .scad, text: $(cat scad.txt)"
+grep -q "csg" scad.txt && fail "overlaps of a .scad names a .csg: $(cat scad.txt)"
+# A .csg in OpenSCAD's language is converted the same way, with the note.
+cp boxes.scad language.csg
+run 1 language.txt overlaps language.csg -q
+check
+grep -q "^overlap: language.csg (line [0-9]* of OpenSCAD's export) (cube, object 1)" language.txt ||
+    fail "overlaps of a language .csg: $(cat language.txt)"
+grep -q "language.csg: note: uses OpenSCAD's language beyond its CSG export (line 1); converting it with openscad" err.txt ||
+    fail "no note for the language .csg: $(cat err.txt)"
+printf 'cube(5);\ncube(10;\n' >broken.scad
+run 2 broken.txt overlaps broken.scad
+grep -q "^broken.scad:2:[0-9]*: error: " err.txt || fail "overlaps of a broken .scad: $(cat err.txt)"
 
 echo "$checks checks, $fails failures"
 [ "$fails" = 0 ]

@@ -725,6 +725,13 @@ typedef struct sc_overlap_list sc_overlap_list;
 sc_status sc_objects_load(const char *path, const sc_load_options *options,
                           sc_objects **out, sc_error *error);
 
+/* Same, from length bytes of text in memory (not necessarily
+ * NUL-terminated); name is used in positions and, as the file's folder, to
+ * find files the model imports. The text is copied. */
+sc_status sc_objects_load_string(const char *name, const char *text, size_t length,
+                                 const sc_load_options *options, sc_objects **out,
+                                 sc_error *error);
+
 /* The number of objects; 0 for NULL. Thread safe. */
 size_t sc_objects_count(const sc_objects *objects);
 

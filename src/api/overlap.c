@@ -160,15 +160,13 @@ static sc_status build_object(sc_objects *o, size_t k, int flags, sc_error *erro
     return SC_OK;
 }
 
-sc_status sc_objects_load(const char *path, const sc_load_options *options,
-                          sc_objects **out, sc_error *error)
+/* The objects of length bytes of text named path; mesh: the text is the
+ * one-line import of the mesh file path (its errors are put back on the
+ * mesh file). */
+static sc_status load_text(const char *path, const char *text, size_t length, int mesh,
+                           const sc_load_options *options, sc_objects **out,
+                           sc_error *error)
 {
-    err_clear(error);
-    if (!out)
-        return err_set(error, SC_ERR_ARGUMENT, NULL, "no result pointer");
-    *out = NULL;
-    if (!path)
-        return err_set(error, SC_ERR_ARGUMENT, NULL, "no file name");
     sc_load_options lo;
     sc_status st = options_load(options, &lo, error);
     if (st != SC_OK)
@@ -178,24 +176,11 @@ sc_status sc_objects_load(const char *path, const sc_load_options *options,
         free(o);
         return err_nomem(error, NULL);
     }
-    const char *why = NULL;
-    size_t length = 0;
-    char *text = NULL;
-    if (mesh_model_is_mesh(path)) { /* one object: the model that imports it */
-        if ((st = mesh_model_text(path, &text, &length, error)) != SC_OK) {
-            sc_objects_release(o);
-            return st;
-        }
-    } else if (!(text = file_read(path, (size_t)1 << 31, &length, &why))) {
-        sc_objects_release(o);
-        return err_set(error, SC_ERR_IO, NULL, "cannot read '%s': %s", path, why);
-    }
     st = parse_text(o->path, text, length, &o->syntax, error);
-    free(text);
     if (st == SC_OK)
         st = model_lower(o->syntax, &o->typed, error);
     if (st) {
-        if (mesh_model_is_mesh(path))
+        if (mesh)
             mesh_model_unplace(error, path);
         sc_objects_release(o);
         return st;
@@ -227,7 +212,7 @@ sc_status sc_objects_load(const char *path, const sc_load_options *options,
             o, k, (lo.faithful ? BUILD_FAITHFUL : 0) | (lo.strict ? BUILD_STRICT : 0),
             error);
         if (st) {
-            if (mesh_model_is_mesh(path))
+            if (mesh)
                 mesh_model_unplace(error, path);
             sc_objects_release(o);
             return st;
@@ -235,6 +220,51 @@ sc_status sc_objects_load(const char *path, const sc_load_options *options,
     }
     *out = o;
     return SC_OK;
+}
+
+/* The checks both loads start with. */
+static sc_status check_load(const char *name, sc_objects **out, sc_error *error)
+{
+    err_clear(error);
+    if (!out)
+        return err_set(error, SC_ERR_ARGUMENT, NULL, "no result pointer");
+    *out = NULL;
+    if (!name)
+        return err_set(error, SC_ERR_ARGUMENT, NULL, "no file name");
+    return SC_OK;
+}
+
+sc_status sc_objects_load(const char *path, const sc_load_options *options,
+                          sc_objects **out, sc_error *error)
+{
+    sc_status st = check_load(path, out, error);
+    if (st != SC_OK)
+        return st;
+    const char *why = NULL;
+    size_t length = 0;
+    char *text = NULL;
+    int mesh = mesh_model_is_mesh(path);
+    if (mesh) { /* one object: the model that imports it */
+        if ((st = mesh_model_text(path, &text, &length, error)) != SC_OK)
+            return st;
+    } else if (!(text = file_read(path, (size_t)1 << 31, &length, &why))) {
+        return err_set(error, SC_ERR_IO, NULL, "cannot read '%s': %s", path, why);
+    }
+    st = load_text(path, text, length, mesh, options, out, error);
+    free(text);
+    return st;
+}
+
+sc_status sc_objects_load_string(const char *name, const char *text, size_t length,
+                                 const sc_load_options *options, sc_objects **out,
+                                 sc_error *error)
+{
+    sc_status st = check_load(name, out, error);
+    if (st != SC_OK)
+        return st;
+    if (!text && length)
+        return err_set(error, SC_ERR_ARGUMENT, NULL, "no text");
+    return load_text(name, text ? text : "", length, 0, options, out, error);
 }
 
 size_t sc_objects_count(const sc_objects *objects)

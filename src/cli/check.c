@@ -32,6 +32,7 @@
 #define _POSIX_C_SOURCE 200809L
 
 #include <errno.h>
+#include <limits.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -41,6 +42,7 @@
 
 #include "cli/cli.h"
 #include "cli/dist.h"
+#include "cli/scad.h"
 #include "formats/framebuffer.h" /* the difference image is a framebuffer of its own */
 #include "spancast/spancast.h"
 
@@ -341,23 +343,32 @@ static int loaded_everywhere(int ok, const char *path)
     return !failed;
 }
 
+/* Where an object is written, as overlaps prints it: file:line:col, or,
+ * for a model OpenSCAD converted (source: the file the user named), the
+ * source with the line of OpenSCAD's export the object is on (scad_blame's
+ * form: the export is not the user's text). */
+static void object_place(char *out, size_t size, sc_location at, const char *source)
+{
+    if (source)
+        snprintf(out, size, "%s (line %d of OpenSCAD's export)", source, at.line);
+    else
+        snprintf(out, size, "%s:%d:%d", at.file, at.line, at.column);
+}
+
 static int run_overlaps(check_args *a)
 {
     const char *path = a->inputs[0];
-    size_t n = strlen(path);
-    if (n > 5 && !strcmp(path + n - 5, ".scad")) {
-        fprintf(stderr, "spancast: error: overlaps reads the .csg file OpenSCAD writes "
-                        "(openscad -o model.csg model.scad)\n");
-        return CLI_EXIT_USAGE;
-    }
     sc_load_options lo;
     sc_load_options_init(&lo);
     cli_load_options(&lo, a->faithful);
     sc_objects *objects = NULL;
     sc_error error;
-    cli_loading(1); /* cannot be stopped from inside: stop.c */
-    sc_status loaded = sc_objects_load(path, &lo, &objects, &error);
-    cli_loading(0);
+    /* A .scad (or a .csg in OpenSCAD's language) is converted by each rank
+     * under mpirun; the load itself cannot be stopped from inside
+     * (stop.c). */
+    scad_stop stop = {&cli_stop, cli_loading_flag()};
+    int converted = 0;
+    sc_status loaded = scad_load_objects(path, &lo, &objects, &error, &stop, &converted);
     int everywhere = loaded_everywhere(loaded == SC_OK, path);
     if (loaded != SC_OK)
         return call_failed(&error, CLI_EXIT_USAGE);
@@ -398,11 +409,14 @@ static int run_overlaps(check_args *a)
                    p->box_lo[0], p->box_lo[1], p->box_lo[2], p->box_hi[0], p->box_hi[1],
                    p->box_hi[2]);
         } else {
-            printf("overlap: %s:%d:%d (%s, object %zu) and %s:%d:%d (%s, object %zu): "
+            char wa[PATH_MAX + 64], wb[PATH_MAX + 64];
+            object_place(wa, sizeof wa, la, converted ? path : NULL);
+            object_place(wb, sizeof wb, lb, converted ? path : NULL);
+            printf("overlap: %s (%s, object %zu) and %s (%s, object %zu): "
                    "volume %.8g +- %.2g, box (%.6g, %.6g, %.6g) to (%.6g, %.6g, %.6g)\n",
-                   la.file, la.line, la.column, na, p->a + 1, lb.file, lb.line, lb.column,
-                   nb, p->b + 1, p->volume.value, p->volume.error, p->box_lo[0],
-                   p->box_lo[1], p->box_lo[2], p->box_hi[0], p->box_hi[1], p->box_hi[2]);
+                   wa, na, p->a + 1, wb, nb, p->b + 1, p->volume.value, p->volume.error,
+                   p->box_lo[0], p->box_lo[1], p->box_lo[2], p->box_hi[0], p->box_hi[1],
+                   p->box_hi[2]);
         }
     }
     if (a->json)

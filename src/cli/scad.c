@@ -690,6 +690,43 @@ sc_status scad_load_model(const char *path, const sc_load_options *options,
     return st;
 }
 
+sc_status scad_load_objects(const char *path, const sc_load_options *options,
+                            sc_objects **objects, sc_error *error, const scad_stop *stop,
+                            int *converted)
+{
+    *objects = NULL;
+    *converted = 0;
+    sc_status st;
+    if (!scad_is_source(path)) {
+        if (stop && stop->loading)
+            *stop->loading = 1;
+        st = sc_objects_load(path, options, objects, error);
+        if (stop && stop->loading)
+            *stop->loading = 0;
+        if (st == SC_OK)
+            unused_defines(path);
+        if (st == SC_OK || scad_is_mesh(path) || !parse_error_is_language(error) ||
+            !at_file(error, path))
+            return st;
+        language_note(path, error);
+    }
+    *converted = 1;
+    char *text = NULL, name[PATH_MAX + 16];
+    size_t size = 0;
+    st = convert(path, NULL, &text, &size, name, sizeof name, error, NULL, NULL, stop);
+    if (st == SC_OK) {
+        if (stop && stop->loading)
+            *stop->loading = 1;
+        st = sc_objects_load_string(name, text, size, options, objects, error);
+        if (stop && stop->loading)
+            *stop->loading = 0;
+        if (st != SC_OK)
+            blame_source(error, name, path);
+    }
+    free(text);
+    return st;
+}
+
 /* A parse sink that keeps nothing: the check of scad_read_model. */
 static sc_status skip_open(void *user, parse_node *node, int *keep, sc_error *error)
 {

@@ -80,6 +80,14 @@ sc_status scad_load_model(const char *path, const sc_load_options *options,
                           void (*depend)(void *user, const char *file), void *user,
                           const scad_stop *stop, int *converted);
 
+/* The top-level objects of path (sc_objects_load), from the same forms of
+ * MODEL as scad_load_model and with its notes; *converted is set when the
+ * text came from OpenSCAD (object positions then name
+ * scad_converted_name). stop as for scad_load_files. */
+sc_status scad_load_objects(const char *path, const sc_load_options *options,
+                            sc_objects **objects, sc_error *error, const scad_stop *stop,
+                            int *converted);
+
 /* The text scad_load_model would load, and the name to load it under
  * (spancast-mpi's rank 0, which sends them to the other ranks): OpenSCAD's
  * conversion, the one-line import of a mesh, or the .csg file itself,
