@@ -23,14 +23,17 @@
 
 /* ---- messages and values ---- */
 
+/* The message is written in one piece: under mpirun, a line written in
+ * parts can be cut by another process's output (mpirun's own notice of
+ * the failed rank). */
 int cli_usage_error(const char *format, ...)
 {
+    char message[2048];
     va_list args;
     va_start(args, format);
-    fputs("spancast: error: ", stderr);
-    vfprintf(stderr, format, args);
-    fputc('\n', stderr);
+    vsnprintf(message, sizeof message, format, args);
     va_end(args);
+    fprintf(stderr, "spancast: error: %s\n", message);
     return CLI_EXIT_USAGE;
 }
 
