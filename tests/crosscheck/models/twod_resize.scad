@@ -1,6 +1,6 @@
 // resize() of 2D children in a 2D model (Polygon2d::resize): x to 20, y
 // from auto (the x scale); a negative size is as 0 for the second one.
-// camera: 12,-16,40,12,4,0
+// camera: 5,-14,50,5,6,0
 // 2d: slab
 resize([20, 0], auto = true) {
     circle(r = 3, $fn = 20);
