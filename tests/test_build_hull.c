@@ -561,6 +561,21 @@ static void test_resize_boolean(void **state)
              "0, 1, 0], [0, 0, 0, 1]]) { cube(1); } }");
     check_bounds(s, v3(0, -4, 0), v3(2, 0, 1), 1e-9);
     sc_scene_release(s);
+    /* a 2D child of a boolean there is the empty solid, with OpenSCAD's
+     * warnings once (measuring is silent; the walk that builds it warns) */
+    s = load("resize([0, 0, 4]) { difference() { cube(2); cube(1); square(3); } }");
+    assert_true(inside(s, 1.5, 1.5, 3.9));
+    assert_false(inside(s, 1.5, 1.5, 4.1) || inside(s, 0.5, 0.5, 0.5));
+    assert_int_equal(sc_scene_warning_count(s), 2);
+    sc_scene_release(s);
+    s = load("hull() { difference() { cube(2); cube(1); square(3); } }");
+    check_bounds(s, v3(0, 0, 0), v3(2, 2, 2), 1e-12);
+    assert_int_equal(sc_scene_warning_count(s), 2);
+    assert_string_equal(sc_scene_warning(s, 0)->message,
+                        "Mixing 2D and 3D objects is not supported");
+    assert_string_equal(sc_scene_warning(s, 1)->message,
+                        "Ignoring 2D child object for 3D operation");
+    sc_scene_release(s);
     /* a difference of one solid is that solid: a mesh */
     s = load("resize([-3, 2, 0]) { difference() { cube(1); } }");
     check_bounds(s, v3(0, 0, 0), v3(1, 2, 1), 1e-12);

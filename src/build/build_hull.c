@@ -864,7 +864,7 @@ static sc_status nef_children(const walk *w, const model_node *parent, const aff
             return st;
         }
     }
-    return SC_OK;
+    return warn_2d(w, parent);
 }
 
 /* The solid of node n through m, as OpenSCAD evaluates a child of a hull
@@ -879,6 +879,8 @@ static sc_status nef_node(const walk *w, const model_node *n, const affine *m, i
         return depth_error(w, n);
     model_kind kind = n->kind;
     sc_status st = SC_OK;
+    if (is_2d(n))
+        return check_2d(w, n); /* the empty solid, as OpenSCAD ignores it */
     if (is_group(kind))
         return nef_children(w, n, m, depth + 1, NEF_UNION, out);
     if (kind == MODEL_DIFFERENCE)
