@@ -180,6 +180,79 @@ printf 'multmatrix([[1, 0, 0, 2], [0, 1, 0, 2], [0, 0, 1, 6], [0, 0, 0, 1]]) { c
 warns resize.csg ""
 same resize.csg resize_ref.csg
 
+# ---- a boolean's negative size mirrors it, measured on its CGAL result ----
+# OpenSCAD resizes a CGAL Nef polyhedron by newsize / size, so a negative
+# size mirrors; the box is the result's (x 0..2), not the first child's.
+cat >mirror.csg <<'M'
+resize(newsize = [-10, 0, 0], auto = [0, 0, 0]) {
+	difference() {
+		cube(size = [4, 4, 4], center = false);
+		multmatrix([[1, 0, 0, 2], [0, 1, 0, -1], [0, 0, 1, -1], [0, 0, 0, 1]]) {
+			cube(size = [3, 6, 6], center = false);
+		}
+	}
+}
+M
+printf 'multmatrix([[1, 0, 0, -10], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]) { cube(size = [10, 4, 4]); }\n' >mirror_ref.csg
+warns mirror.csg ""
+same mirror.csg mirror_ref.csg
+warns mirror.csg "" --faithful
+same mirror.csg mirror_ref.csg
+
+# ---- 2D children of a 3D resize and hull: ignored with OpenSCAD's warnings ----
+cat >resize2d.csg <<'M'
+resize(newsize = [10, 0, 0], auto = [0, 0, 0]) {
+	cube(size = [5, 5, 5], center = false);
+	square(size = [20, 20], center = false);
+}
+M
+printf 'cube(size = [10, 5, 5]);\n' >resize2d_ref.csg
+warns resize2d.csg "resize2d.csg:3:2: warning: Mixing 2D and 3D objects is not supported
+resize2d.csg:3:2: warning: Ignoring 2D child object for 3D operation"
+same resize2d.csg resize2d_ref.csg
+cat >hull2d.csg <<'M'
+hull() {
+	cube(size = [2, 2, 2], center = false);
+	square(size = [20, 20], center = false);
+	multmatrix([[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 4], [0, 0, 0, 1]]) {
+		cube(size = [2, 2, 2], center = false);
+		circle(r = 9);
+	}
+}
+M
+printf 'cube(size = [2, 2, 6]);\n' >hull2d_ref.csg
+warns hull2d.csg "hull2d.csg:6:3: warning: Mixing 2D and 3D objects is not supported
+hull2d.csg:6:3: warning: Ignoring 2D child object for 3D operation
+hull2d.csg:3:2: warning: Mixing 2D and 3D objects is not supported
+hull2d.csg:3:2: warning: Ignoring 2D child object for 3D operation"
+same hull2d.csg hull2d_ref.csg
+# their arguments are still checked
+printf 'resize(newsize = [10, 0, 0]) { cube(size = 5); square(size = "big"); }\n' >bad2d.csg
+check
+"$bin" render bad2d.csg -o bad2d.png -q 2>err.txt && fail "bad2d.csg rendered"
+grep -qx "bad2d.csg:1:62: error: wrong type for argument 'size' of 'square' (expected a number or \[x, y\])" err.txt ||
+    fail "bad2d.csg: $(cat err.txt)"
+
+# ---- 2D hull, minkowski and resize in a 2D model: drawn as the slab ----
+printf 'hull() { square(size = [1, 4]); multmatrix([[1, 0, 0, 9], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]) { square(size = [1, 4]); } }\n' >hull_flat.csg
+warns hull_flat.csg ""
+same hull_flat.csg slab_ref.csg
+printf 'minkowski() { square(size = [8, 2]); square(size = [2, 2]); }\n' >minkowski_flat.csg
+warns minkowski_flat.csg ""
+same minkowski_flat.csg slab_ref.csg
+printf 'resize(newsize = [10, 0, 0], auto = [0, 1, 0]) { square(size = [5, 2]); }\n' >resize_flat.csg
+warns resize_flat.csg ""
+same resize_flat.csg slab_ref.csg
+# a negative size is as 0 for a 2D shape: y keeps its size
+printf 'resize(newsize = [10, -1, 0]) { square(size = [5, 4]); }\n' >resize_neg_flat.csg
+warns resize_neg_flat.csg ""
+same resize_neg_flat.csg slab_ref.csg
+# a 3D child there is ignored with OpenSCAD's warnings
+printf 'hull() { square(size = [1, 4]); cube(size = 30); multmatrix([[1, 0, 0, 9], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]) { square(size = [1, 4]); } }\n' >hull_mixed.csg
+warns hull_mixed.csg "hull_mixed.csg:1:33: warning: Mixing 2D and 3D objects is not supported
+hull_mixed.csg:1:33: warning: Ignoring 3D child object for 2D operation"
+same hull_mixed.csg slab_ref.csg
+
 # ---- a lossy mask ----
 warns cube_ref.csg "spancast: warning: --mask=m.jpg: JPEG is lossy, so the mask is no longer exactly 0 and 255 at the model's edges (.png, .tif and .exr are exact)" --mask=m.jpg
 check

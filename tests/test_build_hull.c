@@ -409,10 +409,10 @@ static void test_resize_boxes(void **state)
              "[0, 0, 1, 0], [0, 0, 0, 1]]) { sphere(2); } }");
     check_bounds(s, v3(0, -2, -2), v3(8, 2, 2), 1e-13);
     sc_scene_release(s);
-    /* difference: the first child's box */
+    /* difference: the box of OpenSCAD's result, x 2..4, becomes 1..2 */
     s = load("resize([1, 0, 0]) { difference() { cube([4, 1, 1]); cube([2, 1, 1]); } }");
-    assert_true(inside(s, 0.75, 0.5, 0.5));
-    assert_false(inside(s, 0.25, 0.5, 0.5));
+    assert_true(inside(s, 1.05, 0.5, 0.5) && inside(s, 1.95, 0.5, 0.5));
+    assert_false(inside(s, 0.95, 0.5, 0.5) || inside(s, 2.05, 0.5, 0.5));
     sc_scene_release(s);
     /* intersection: the smallest box in each direction */
     s = load(
@@ -474,9 +474,11 @@ static void test_resize_errors(void **state)
     check_error("m.csg", "resize([1, 1, 1], auto = \"yes\") { cube(); }", SC_ERR_SEMANTIC,
                 "m.csg:1:26: error: wrong type for argument 'auto' of 'resize' (expected "
                 "true, false or a vector of them)");
-    check_error("m.csg", "resize([1, 1, 1]) { projection() { cube(); } }",
-                SC_ERR_UNSUPPORTED,
-                "m.csg:1:1: error: 'resize' inside the 2D model is not supported yet");
+    /* a bad argument of an ignored 2D child is still an error */
+    check_error("m.csg", "resize([2, 0, 0]) { cube(); circle(r = \"x\"); }",
+                SC_ERR_SEMANTIC,
+                "m.csg:1:40: error: wrong type for argument 'r' of 'circle' (expected a "
+                "number)");
     /* a revolved square ring (z 0 to 1) stretched to height 2 */
     sc_scene *r =
         load("resize([0, 0, 2]) { rotate_extrude($fn = 4) { "
@@ -492,6 +494,91 @@ static void test_resize_errors(void **state)
     assert_string_equal(
         sc_scene_warning(s, 0)->message,
         "resize in a direction normal to a flat object is not implemented");
+    sc_scene_release(s);
+}
+
+/* resize of 2D children is a 2D resize (Polygon2d::resize): the 2D model
+ * is the slab of the scaled region, 1 thick about z = 0. */
+static void test_resize_2d(void **state)
+{
+    (void)state;
+    sc_scene *s = load("resize([4, 2]) { projection() { cube(1); } }");
+    check_bounds(s, v3(0, 0, -0.5), v3(4, 2, 0.5), 1e-12);
+    sc_scene_release(s);
+    /* auto: y takes x's scale; a negative size is as 0 */
+    s = load("resize([6, 0], auto = true) { multmatrix([[1, 0, 0, 1], [0, 1, 0, 1], "
+             "[0, 0, 1, 0], [0, 0, 0, 1]]) { square([2, 1]); } }");
+    check_bounds(s, v3(3, 3, -0.5), v3(9, 6, 0.5), 1e-12);
+    sc_scene_release(s);
+    s = load("resize([-6, 3]) { square([2, 1]); }");
+    check_bounds(s, v3(0, 0, -0.5), v3(2, 3, 0.5), 1e-12);
+    sc_scene_release(s);
+    /* y larger than x: y's scale is the auto one */
+    s = load("resize([0, 8], auto = [true, false]) { square([1, 2]); }");
+    check_bounds(s, v3(0, 0, -0.5), v3(4, 8, 0.5), 1e-12);
+    sc_scene_release(s);
+    /* hull and minkowski of 2D children in a 2D model */
+    s = load("hull() { square(1); multmatrix([[1, 0, 0, 5], [0, 1, 0, 2], [0, 0, 1, "
+             "0], [0, 0, 0, 1]]) { square(1); } }");
+    check_bounds(s, v3(0, 0, -0.5), v3(6, 3, 0.5), 1e-12);
+    assert_false(inside(s, 5.5, 0.5, 0));
+    assert_true(inside(s, 3, 1.5, 0));
+    sc_scene_release(s);
+    s = load("minkowski() { square(1); multmatrix([[1, 0, 0, 5], [0, 1, 0, 2], [0, 0, "
+             "1, 0], [0, 0, 0, 1]]) { square(1); } }");
+    check_bounds(s, v3(5, 2, -0.5), v3(7, 4, 0.5), 1e-12);
+    sc_scene_release(s);
+    /* and inside an extrusion */
+    s = load("linear_extrude(height = 2) { resize([3, 0], auto = true) { square(1); } }");
+    check_bounds(s, v3(0, 0, 0), v3(3, 3, 2), 1e-12);
+    sc_scene_release(s);
+}
+
+/* A boolean's box is that of OpenSCAD's CGAL result, and a negative size
+ * mirrors it (CGAL_Nef_polyhedron::resize); a single solid is a mesh,
+ * resized only where the size is > 0. */
+static void test_resize_boolean(void **state)
+{
+    (void)state;
+    /* the cut leaves x 0..6 of the cube's 0..10 */
+    const char *cut = "difference() { cube([10, 4, 4]); multmatrix([[1, 0, 0, 6], [0, 1, "
+                      "0, -1], [0, 0, 1, -1], [0, 0, 0, 1]]) { cube([5, 6, 6]); } }";
+    char text[256];
+    snprintf(text, sizeof text, "resize([12, 0, 0]) { %s }", cut);
+    sc_scene *s = load(text);
+    assert_true(inside(s, 11.9, 2, 2) && inside(s, 0.1, 3.9, 3.9));
+    assert_false(inside(s, 12.1, 2, 2) || inside(s, 1, 4.1, 2));
+    sc_scene_release(s);
+    /* mirrored along every axis by the auto scale -12 / 6 */
+    snprintf(text, sizeof text, "resize([-12, 0, 0], auto = true) { %s }", cut);
+    s = load(text);
+    assert_true(inside(s, -11.9, -4, -4) && inside(s, -0.1, -7.9, -7.9));
+    assert_false(inside(s, -12.1, -4, -4) || inside(s, 0.1, -4, -4) ||
+                 inside(s, -1, -8.1, -4));
+    sc_scene_release(s);
+    /* two solids are a union, a Nef polyhedron too */
+    s = load("resize([0, -4, 0]) { cube(1); multmatrix([[1, 0, 0, 1], [0, 1, 0, 0], [0, "
+             "0, 1, 0], [0, 0, 0, 1]]) { cube(1); } }");
+    check_bounds(s, v3(0, -4, 0), v3(2, 0, 1), 1e-9);
+    sc_scene_release(s);
+    /* a 2D child of a boolean there is the empty solid, with OpenSCAD's
+     * warnings once (measuring is silent; the walk that builds it warns) */
+    s = load("resize([0, 0, 4]) { difference() { cube(2); cube(1); square(3); } }");
+    assert_true(inside(s, 1.5, 1.5, 3.9));
+    assert_false(inside(s, 1.5, 1.5, 4.1) || inside(s, 0.5, 0.5, 0.5));
+    assert_int_equal(sc_scene_warning_count(s), 2);
+    sc_scene_release(s);
+    s = load("hull() { difference() { cube(2); cube(1); square(3); } }");
+    check_bounds(s, v3(0, 0, 0), v3(2, 2, 2), 1e-12);
+    assert_int_equal(sc_scene_warning_count(s), 2);
+    assert_string_equal(sc_scene_warning(s, 0)->message,
+                        "Mixing 2D and 3D objects is not supported");
+    assert_string_equal(sc_scene_warning(s, 1)->message,
+                        "Ignoring 2D child object for 3D operation");
+    sc_scene_release(s);
+    /* a difference of one solid is that solid: a mesh */
+    s = load("resize([-3, 2, 0]) { difference() { cube(1); } }");
+    check_bounds(s, v3(0, 0, 0), v3(1, 2, 1), 1e-12);
     sc_scene_release(s);
 }
 
@@ -706,6 +793,8 @@ int main(void)
         cmocka_unit_test(test_resize),
         cmocka_unit_test(test_resize_boxes),
         cmocka_unit_test(test_resize_errors),
+        cmocka_unit_test(test_resize_2d),
+        cmocka_unit_test(test_resize_boolean),
         cmocka_unit_test(test_surface_dat),
         cmocka_unit_test(test_surface_png),
         cmocka_unit_test(test_surface_errors),

@@ -200,7 +200,9 @@ static void test_points_context(void **state)
                         "polyhedron face 0: point index is not one of the 3 points");
     n = n->next;
     assert_int_equal(n->kind, MODEL_CIRCLE);
-    assert_null(n->pending); /* not read: not something a hull takes */
+    /* read as in the 2D context: a 2D hull takes it, a 3D one checks it */
+    assert_string_equal(n->pending->message,
+                        "wrong type for argument 'r' of 'circle' (expected a number)");
     const model_node *outer = h->next, *inner = outer->first_child;
     assert_int_equal(outer->kind, MODEL_RESIZE);
     assert_true(outer->u.resize->size[0] == 2 && outer->u.resize->size[1] == 0);

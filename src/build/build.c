@@ -777,7 +777,7 @@ static sc_status visit(builder *b, const model_node *n, int *opened)
         build_background(b->shading, n, f.emit);
         return SC_OK;
     }
-    if (model_is_2d(kind) || (!model_is_leaf(kind) && build_dim(n, 0) == 2)) {
+    if (build_dim(n, 0) == 2) {
         /* ignored, it is the empty solid, which empties an intersection
          * as in OpenSCAD */
         uint32_t id = CSG_EMPTY;

@@ -40,10 +40,14 @@
  * r |u|; cylinder (exact): max over its end discs of z_k u_z + r_k
  * |(u_x, u_y)|; torus: R |(u_x, u_y)| + r |u|; point-built leaves: max over
  * their points; quadric and implicit: their clipping box's corners. So
- * the box is tight for all of these. difference takes its first child's
- * box, intersection the smallest of its children's boxes in each direction:
- * upper bounds, exact when the subtracted or intersected parts do not cut
- * the extreme points (docs/hull.md).
+ * the box is tight for all of these. A difference or intersection of two
+ * or more solids is measured as OpenSCAD measures it, by the vertices of
+ * its CGAL Nef polyhedron; only a check (no CGAL) takes the first child's
+ * box, or the smallest of the children's, as upper bounds. The scales
+ * follow OpenSCAD's PolySet::resize or, for a result OpenSCAD holds as a
+ * Nef polyhedron (nef_result), CGAL_Nef_polyhedron::resize, which mirrors
+ * by a negative size (docs/resize.md). 2D children are ignored, with
+ * OpenSCAD's warnings from hull and minkowski (measuring is silent).
  *
  * The walks recurse with a depth guard (BUILD_HULL_MAX_DEPTH).
  */
@@ -58,6 +62,7 @@
 #include "base/grow.h"
 #include "build/build_mesh.h"
 #include "build/build_revolve.h"
+#include "build/build_twod.h"
 #include "build/nef.h"
 #include "csg/hull3.h"
 #include "csg/prim_mesh.h"
@@ -439,6 +444,47 @@ static int skipped(const model_node *n)
     return (n->modifiers & (MODEL_MOD_DISABLE | MODEL_MOD_BACKGROUND)) != 0;
 }
 
+/* Whether n is 2D (a 2D shape, or an operation whose first child with a
+ * dimension is 2D: build_dim), which a 3D hull, minkowski or resize
+ * ignores as OpenSCAD 2021.01 does (its collectChildren3D). */
+static int is_2d(const model_node *n)
+{
+    return build_dim(n, 0) == 2;
+}
+
+/* A 2D child n: checked through the 2D engine, for its errors (and the
+ * warnings of its own subtree), and left out. */
+static sc_status check_2d(const walk *w, const model_node *n)
+{
+    twod_region r;
+    twod_init(&r);
+    sc_status st = build_twod_main(w->c, n, &r);
+    twod_free(&r);
+    return st;
+}
+
+/* OpenSCAD's warnings for the 2D children of parent, a 3D operation: after
+ * the children's own, as it checks dimensions once its children are
+ * evaluated, the first also saying that parent mixes them (build.c's
+ * flush_ignored). */
+static sc_status warn_2d(const walk *w, const model_node *parent)
+{
+    int first = 1;
+    for (const model_node *n = parent->first_child; n; n = n->next) {
+        if (skipped(n) || is_shading(n->kind) || !is_2d(n))
+            continue;
+        sc_status st = SC_OK;
+        if (first)
+            st = build_note(w->c, &n->loc, "Mixing 2D and 3D objects is not supported");
+        first = 0;
+        if (st == SC_OK)
+            st = build_note(w->c, &n->loc, "Ignoring 2D child object for 3D operation");
+        if (st != SC_OK)
+            return st;
+    }
+    return SC_OK;
+}
+
 static sc_status depth_error(const walk *w, const model_node *n)
 {
     return err_set(w->c->error, SC_ERR_LIMIT, &n->loc,
@@ -477,12 +523,16 @@ static sc_status collect(const walk *w, const model_node *parent, const affine *
     const build_ctx *c = w->c;
     if (depth > BUILD_HULL_MAX_DEPTH)
         return depth_error(w, parent);
+    int any_2d = 0;
     for (const model_node *n = parent->first_child; n; n = n->next) {
         model_kind kind = n->kind;
         if (skipped(n) || is_shading(kind))
             continue;
         sc_status st = SC_OK;
-        if (is_group(kind)) {
+        if (is_2d(n)) {
+            st = check_2d(w, n);
+            any_2d = 1;
+        } else if (is_group(kind)) {
             st = collect(w, n, m, depth + 1, out);
         } else if (kind == MODEL_XFORM || kind == MODEL_RESIZE) {
             affine inner;
@@ -548,7 +598,7 @@ static sc_status collect(const walk *w, const model_node *parent, const affine *
         if (st != SC_OK)
             return st;
     }
-    return SC_OK;
+    return any_2d ? warn_2d(w, parent) : SC_OK;
 }
 
 /* Replaces each part by the vertices of its hull (flat parts keep their
@@ -814,7 +864,7 @@ static sc_status nef_children(const walk *w, const model_node *parent, const aff
             return st;
         }
     }
-    return SC_OK;
+    return warn_2d(w, parent);
 }
 
 /* The solid of node n through m, as OpenSCAD evaluates a child of a hull
@@ -829,6 +879,8 @@ static sc_status nef_node(const walk *w, const model_node *n, const affine *m, i
         return depth_error(w, n);
     model_kind kind = n->kind;
     sc_status st = SC_OK;
+    if (is_2d(n))
+        return check_2d(w, n); /* the empty solid, as OpenSCAD ignores it */
     if (is_group(kind))
         return nef_children(w, n, m, depth + 1, NEF_UNION, out);
     if (kind == MODEL_DIFFERENCE)
@@ -1119,6 +1171,37 @@ sc_status build_minkowski(const build_ctx *c, const model_node *n, int emit,
 
 /* ---- resize ---- */
 
+/* The children of n with a 3D solid, as OpenSCAD's union and booleans
+ * count them: not '%', '*', shading or 2D. */
+static int solids(const model_node *n)
+{
+    int count = 0;
+    for (const model_node *k = n->first_child; k; k = k->next)
+        count += !skipped(k) && build_dim(k, 0) == 3;
+    return count;
+}
+
+/* Whether OpenSCAD 2021.01 evaluates the union of n's children to a CGAL
+ * Nef polyhedron, rather than to a mesh (PolySet) or nothing: a union of
+ * two or more solids is a Nef polyhedron, one solid is passed through as
+ * it is; of that one a boolean, group, transform or resize is what its own
+ * children's union is, and a leaf, hull or minkowski a mesh (minkowski
+ * read as the sum of convex parts OpenSCAD makes one mesh of). */
+static int nef_result(const model_node *n, int depth)
+{
+    int count = solids(n);
+    if (count != 1 || depth > BUILD_HULL_MAX_DEPTH)
+        return count > 1;
+    const model_node *only = n->first_child;
+    while (skipped(only) || build_dim(only, 0) != 3)
+        only = only->next;
+    model_kind kind = only->kind;
+    if (is_group(kind) || kind == MODEL_XFORM || kind == MODEL_RESIZE ||
+        kind == MODEL_DIFFERENCE || kind == MODEL_INTERSECTION)
+        return nef_result(only, depth + 1);
+    return 0;
+}
+
 /* The six support values of the children of parent through m: out[2k] =
  * max x_k, out[2k + 1] = max -x_k; -inf where there is nothing. */
 static sc_status support(const walk *w, const model_node *parent, const affine *m,
@@ -1147,6 +1230,8 @@ static sc_status support_node(const walk *w, const model_node *n, const affine *
     const build_ctx *c = w->c;
     sc_status st = SC_OK;
     model_kind kind = n->kind;
+    if (is_2d(n))
+        return check_2d(w, n); /* ignored, as the walk that builds it warns */
     if (is_group(kind))
         return support(w, n, m, depth + 1, out);
     if (kind == MODEL_XFORM || kind == MODEL_RESIZE) {
@@ -1157,7 +1242,19 @@ static sc_status support_node(const walk *w, const model_node *n, const affine *
             return st;
         return support(w, n, &inner, depth + 1, out);
     }
+    if ((kind == MODEL_DIFFERENCE || kind == MODEL_INTERSECTION) && !w->check &&
+        solids(n) > 1) {
+        /* OpenSCAD's box: that of the CGAL result's vertices */
+        partlist parts = {NULL, 0, 0};
+        st = solid_parts(w, n, m, depth + 1, &parts);
+        for (uint32_t i = 0; i < parts.count && st == SC_OK; i++)
+            support_points(&parts.items[i], out);
+        parts_free(&parts);
+        return st;
+    }
     if (kind == MODEL_DIFFERENCE || kind == MODEL_INTERSECTION) {
+        /* one child (or only checked): the first child's box bounds a
+         * difference, the smallest child box an intersection */
         int first = 1;
         double acc[6] = {-INFINITY, -INFINITY, -INFINITY,
                          -INFINITY, -INFINITY, -INFINITY};
@@ -1300,8 +1397,15 @@ static sc_status resize_matrix(const walk *w, const model_node *n, int depth, af
         *out = *known;
         return SC_OK;
     }
-    sc_status st = measure(w, n, depth, out, warning);
-    if (st == SC_OK && !cache_put(w->cache, n, out, *warning))
+    /* Measuring is silent: the walk that builds the subtree gives its
+     * warnings. */
+    build_ctx quiet = *w->c;
+    quiet.notes = NULL;
+    walk silent = *w;
+    silent.c = &quiet;
+    sc_status st = measure(&silent, n, depth, out, warning);
+    /* a check measures booleans by an upper bound (no CGAL): not kept */
+    if (st == SC_OK && !w->check && !cache_put(w->cache, n, out, *warning))
         st = err_nomem((w->c)->error, (&n->loc));
     return st;
 }
@@ -1320,15 +1424,22 @@ static sc_status measure(const walk *w, const model_node *n, int depth, affine *
         return st;
     if (isinf(s[0]) && s[0] < 0)
         return SC_OK; /* no geometry: nothing to resize */
+    /* OpenSCAD 2021.01 resizes a mesh (PolySet::resize) along the axes
+     * whose new size is > 0, so a negative one is as 0; a CGAL Nef
+     * polyhedron (CGAL_Nef_polyhedron::resize) along those whose new size
+     * is not 0, so a negative one mirrors. The largest new size (the
+     * first of equal ones) gives the auto scale. */
+    int nef = nef_result(n, depth);
     double extent[3], scale[3] = {1, 1, 1};
-    int largest = 0;
+    int given[3], largest = 0;
     for (int k = 0; k < 3; k++) {
         extent[k] = s[2 * k] + s[2 * k + 1];
-        if (size[k] > size[largest])
+        given[k] = nef ? size[k] != 0 : size[k] > 0;
+        if ((nef ? given[k] : k > 0) && size[k] > size[largest])
             largest = k;
     }
     for (int k = 0; k < 3; k++) {
-        if (size[k] == 0)
+        if (!given[k])
             continue;
         if (!(extent[k] > 0)) {
             *warning = "resize in a direction normal to a flat object is not implemented";
@@ -1336,11 +1447,11 @@ static sc_status measure(const walk *w, const model_node *n, int depth, affine *
         }
         scale[k] = size[k] / extent[k];
     }
-    double autoscale = size[largest] != 0 ? size[largest] / extent[largest] : 1;
+    double autoscale = given[largest] ? size[largest] / extent[largest] : 1;
     for (int k = 0; k < 3; k++) {
-        if (autosize[k] != 0 && size[k] == 0)
+        if (autosize[k] != 0 && !given[k])
             scale[k] = autoscale;
-        if (!(isfinite(scale[k]) && scale[k] > 0))
+        if (!(isfinite(scale[k]) && scale[k] != 0))
             return err_set(c->error, SC_ERR_SEMANTIC, &n->loc,
                            "resize: the scale is not finite");
         out->m[k][k] = scale[k];

@@ -28,6 +28,11 @@
  *                                 f fragments of a circle of radius |r|
  *   hull()                        convex hull of every child's points
  *   minkowski()                   Clipper's Minkowski sum (twod_clip.cpp)
+ *   resize(newsize, auto)         union, then scaled to the new size
+ *                                 (Polygon2d::resize: resize_scale)
+ * hull, minkowski and resize are 2D wherever their first child with a
+ * dimension is: in a 2D model, inside an extrusion, and in a 3D model
+ * (ignored there with a warning, build.c).
  *   import(file = "x.dxf", layer, origin, scale, $fn, $fa, $fs)
  *                          the drawing's contours as OpenSCAD's DxfData
  *                          joins them (dxf.c), then sanitized; the file is
@@ -569,6 +574,44 @@ static sc_status minkowski(const eval *e, const model_node *n, twod_region *regi
     return clip_status(e, n, code);
 }
 
+/* resize(newsize, auto) of region r, as OpenSCAD 2021.01's
+ * Polygon2d::resize scales it: by newsize / extent of r's points along
+ * each axis whose new size is > 0 (a negative one is as 0), else 1, or
+ * where auto is set the scale of the larger new size (y when it is given
+ * and larger than x). Sets the scale into m and returns 1; returns 0 when
+ * r stays as it is: without points, or when a size asks to stretch a
+ * region that is flat along it (OpenSCAD's infinite scale; the region has
+ * no area either way, so it is emptied). */
+static int resize_scale(const model_resize *args, twod_region *r, double m[2][3])
+{
+    if (!r->point_count)
+        return 0;
+    double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
+    for (uint32_t i = 0; i < r->point_count; i++) {
+        for (int k = 0; k < 2; k++) {
+            lo[k] = fmin(lo[k], r->xy[2 * i + k]);
+            hi[k] = fmax(hi[k], r->xy[2 * i + k]);
+        }
+    }
+    const double *size = args->size;
+    int largest = size[1] != 0 && size[1] > size[0];
+    double scale[2], extent[2] = {hi[0] - lo[0], hi[1] - lo[1]};
+    double autoscale = size[largest] > 0 ? size[largest] / extent[largest] : 1;
+    for (int k = 0; k < 2; k++) {
+        scale[k] = size[k] > 0 ? size[k] / extent[k] : 1;
+        if (args->autosize[k] != 0 && !(size[k] > 0))
+            scale[k] = autoscale;
+        if (!isfinite(scale[k])) {
+            twod_clear(r);
+            return 0;
+        }
+    }
+    m[0][0] = scale[0];
+    m[0][1] = m[0][2] = m[1][0] = m[1][2] = 0;
+    m[1][1] = scale[1];
+    return 1;
+}
+
 /* import of a DXF drawing (dxf.c), sanitized as OpenSCAD sanitizes a leaf's
  * polygons. */
 static sc_status read_import(const eval *e, const model_node *n, twod_region *out)
@@ -646,18 +689,15 @@ static sc_status eval_node(twod_walker *w, const model_node *n, const affine2 *u
                                               : TWOD_UNION;
     if (kind != MODEL_UNION && kind != MODEL_COLOR && kind != MODEL_XFORM &&
         kind != MODEL_OFFSET && kind != MODEL_DIFFERENCE && kind != MODEL_INTERSECTION &&
-        kind != MODEL_HULL && kind != MODEL_MINKOWSKI)
+        kind != MODEL_HULL && kind != MODEL_MINKOWSKI && kind != MODEL_RESIZE)
         return err_set(e->c->error, SC_ERR_UNSUPPORTED, &n->loc,
                        "'%s' inside %s is not supported yet", name, e->outer);
-    /* A main-model hull or minkowski lowered its children for the 3D
-     * hull builder (the points context), not for this one. */
-    if ((kind == MODEL_HULL || kind == MODEL_MINKOWSKI) && !e->in_2d)
-        return err_set(e->c->error, SC_ERR_UNSUPPORTED, &n->loc,
-                       "2D '%s' outside linear_extrude is not supported yet", name);
     double m[2][3] = {{1, 0, 0}, {0, 1, 0}};
     sc_status st;
     if (kind == MODEL_XFORM && (st = read_matrix(e, n, m)) != SC_OK)
         return st;
+    if (kind == MODEL_RESIZE && n->pending)
+        return pending(e, n);
     twod_region *regions;
     uint32_t count;
     st = eval_children(e, n, &regions, &count, depth);
@@ -674,6 +714,8 @@ static sc_status eval_node(twod_walker *w, const model_node *n, const affine2 *u
         st = transform(e, n, m, out);
     if (st == SC_OK && kind == MODEL_OFFSET)
         st = offset(e, n, out);
+    if (st == SC_OK && kind == MODEL_RESIZE && resize_scale(n->u.resize, out, m))
+        st = transform(e, n, m, out);
     return st;
 }
 

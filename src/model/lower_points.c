@@ -11,10 +11,14 @@
  *   polyhedron   nothing without both points and faces; else points a
  *                vector of finite [x, y, z], then each face a vector of
  *                indices of the points, in file order
- *   resize       newsize a vector of up to 3 finite numbers, auto true,
- *                false or a vector of them (or numbers), then no negative
- *                size
- *   linear_extrude, rotate_extrude   as in the 2D context (lower_twod.c)
+ *   resize       newsize a vector of up to 3 finite numbers (a negative
+ *                one kept), auto true, false or a vector of them (or
+ *                numbers)
+ *   linear_extrude, rotate_extrude, the 2D shapes (not import)
+ *                as in the 2D context (lower_twod.c): a hull,
+ *                minkowski or resize of 2D children is 2D
+ *                (build_twod.c), and a 3D one checks the 2D children it
+ *                ignores
  * group, union, render, color and material take no arguments here, nor
  * do hull and minkowski.
  */
@@ -136,16 +140,8 @@ static sc_status lower_resize(model_lowerer *l, const parse_node *n, model_node 
     sc_status st = read_triple(l, n, "newsize", 0, 0, r->size);
     if (st == SC_OK)
         st = read_triple(l, n, "auto", 1, 1, r->autosize);
-    /* OpenSCAD 2021.01 resizes a mesh (PolySet::resize) and a 2D shape
-     * (Polygon2d::resize) only along axes whose new size is > 0: a
-     * negative size there is as if it were 0, so the axis keeps its scale,
-     * or takes the auto scale where auto is set. Taken as 0 here, the
-     * builder's rule (build_hull.c) gives the same scales: the axis of the
-     * largest size is the same whenever one size is positive, and when
-     * none is, every scale is 1 either way. */
-    for (int k = 0; st == SC_OK && k < 3; k++)
-        if (r->size[k] < 0)
-            r->size[k] = 0;
+    /* A negative size is kept: OpenSCAD 2021.01 reads it as 0 for a mesh
+     * or a 2D shape, and mirrors a CGAL result by it (build_hull.c). */
     return st;
 }
 
@@ -208,7 +204,10 @@ static sc_status lower_leaf(model_lowerer *l, const parse_node *n, model_node *o
 sc_status model_points_args(arena *mem, const char *file, const parse_node *n,
                             model_node *out, sc_error *error)
 {
-    if (out->kind == MODEL_LINEAR_EXTRUDE || out->kind == MODEL_ROTATE_EXTRUDE)
+    /* the extrusions, and 2D shapes (a 2D hull or resize, or one a 3D
+     * operation ignores), are read as in the 2D context */
+    if (out->kind == MODEL_LINEAR_EXTRUDE || out->kind == MODEL_ROTATE_EXTRUDE ||
+        model_is_2d(out->kind))
         return model_twod_args(mem, file, n, out, error);
     sc_error pending;
     model_lowerer l = {mem, {file, &pending}, 0};

@@ -14,6 +14,7 @@
  *             the builder names the operation that asked), then $fn, $fa,
  *             $fs, scale, layer, origin [x, y], origin and scale finite
  *   projection  cut (true or false, by name or first), convexity a number
+ *   resize    as in the points context (lower_points.c)
  *   text      text, size, font, direction, language, script, halign,
  *             valign, spacing, $fn, $fa, $fs; at most
  *             MODEL_MAX_TEXT_BYTES bytes without a NUL; size and spacing
@@ -26,6 +27,7 @@
 
 #include "base/error.h"
 #include "model/args.h"
+#include "model/lower_points.h"
 
 static sc_status lower_square(model_lowerer *l, const parse_node *n, model_node *out)
 {
@@ -427,6 +429,8 @@ sc_status model_twod_args(arena *mem, const char *file, const parse_node *n,
     case MODEL_PROJECTION:
         st = lower_projection(&l, n, out);
         break;
+    case MODEL_RESIZE: /* read as in the points context */
+        return model_points_args(mem, file, n, out, error);
     case MODEL_LINEAR_EXTRUDE:
         st = lower_linear_extrude(&l, n, out);
         break;

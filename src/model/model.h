@@ -268,7 +268,7 @@ typedef struct model_rotate_extrude {
  * are that context's; in the points context measured is NULL (the node
  * itself is measured). */
 typedef struct model_resize {
-    double size[3];     /* finite, not negative (a negative size is read as 0) */
+    double size[3];     /* finite, as given (the builder reads a negative one) */
     double autosize[3]; /* 0 or 1 */
     const model_node *measured;
 } model_resize;

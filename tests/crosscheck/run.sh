@@ -16,6 +16,10 @@
 #   // files: NAME...                  (optional: files beside the model,
 #                                       meshes it imports, height maps, copied
 #                                       with it so relative paths resolve)
+#   // 2d: slab                        (optional: a 2D model, which spancast
+#                                       draws as a slab 1 thick about z = 0;
+#                                       the reference mesh is OpenSCAD's 2D
+#                                       result of the .csg extruded so)
 # compare judges each pair and prints its row; the rows also go to
 # WORKDIR/rows, which tests/crosscheck/report gathers. Exits non-zero when
 # any check fails.
@@ -43,8 +47,14 @@ for file in $(setting files); do
 done
 openscad -o "$work/$name.csg" "$work/$name.scad" >"$work/openscad.log" 2>&1 ||
     { cat "$work/openscad.log" >&2; exit 1; }
+mesh_input=$work/$name.csg
+if [[ "$(setting 2d)" == slab ]]; then
+    mesh_input=$work/${name}_slab.csg
+    { echo "linear_extrude(height = 1, center = true) {"; cat "$work/$name.csg"; echo "}"; } \
+        >"$mesh_input"
+fi
 t0=$(now)
-openscad --export-format binstl -o "$work/$name.stl" "$work/$name.csg" \
+openscad --export-format binstl -o "$work/$name.stl" "$mesh_input" \
     >>"$work/openscad.log" 2>&1 || { cat "$work/openscad.log" >&2; exit 1; }
 t1=$(now)
 mesh_time=$(elapsed "$t0" "$t1")
