@@ -177,7 +177,11 @@ typedef struct model_implicit {
 } model_implicit;
 
 /* import(file) of a mesh, in a 3D model. */
-typedef enum model_mesh_format { MODEL_MESH_STL, MODEL_MESH_OFF } model_mesh_format;
+typedef enum model_mesh_format {
+    MODEL_MESH_STL,
+    MODEL_MESH_OFF,
+    MODEL_MESH_AMF
+} model_mesh_format;
 typedef struct model_import {
     const char *file; /* as written */
     sc_location file_loc;
