@@ -508,7 +508,7 @@ static void test_import(void **state)
     sc_scene_release(rest);
     check_error("m.csg", "import(\"a.dxf\");", SC_ERR_UNSUPPORTED,
                 "m.csg:1:8: error: import of 'a.dxf' is not supported yet (only .stl, "
-                ".off and .amf files)");
+                ".off, .amf and .3mf files)");
     check_error("m.csg", "import();", SC_ERR_SEMANTIC,
                 "m.csg:1:1: error: missing argument 'file' of 'import'");
     check_error(

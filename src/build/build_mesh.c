@@ -40,6 +40,7 @@
 
 #include "base/error.h"
 #include "formats/amf.h"
+#include "formats/threemf.h"
 #include "base/grow.h"
 #include "csg/prim_mesh.h"
 #include "formats/file.h"
@@ -901,13 +902,17 @@ sc_status build_import(const build_ctx *c, const model_import *import, prim *out
     return build_import_mesh(c, import, 0, out, empty);
 }
 
-/* An AMF file (amf.c) as a mesh_file: every object's triangles together,
- * which is OpenSCAD's union of the objects when they do not overlap. */
-static sc_status read_amf(const char *text, size_t size, const model_import *import,
-                          mesh_file *m, sc_error *error)
+/* An AMF file (amf.c), or a 3MF file (threemf.h) read from path, as a
+ * mesh_file: every object's triangles together, which is OpenSCAD's union
+ * of the objects when they do not overlap. */
+static sc_status read_amf(const char *text, size_t size, const char *path,
+                          const model_import *import, mesh_file *m, sc_error *error)
 {
     amf_mesh a;
-    sc_status st = amf_read(text, size, import->file, &import->file_loc, &a, error);
+    sc_status st =
+        import->format == MODEL_MESH_3MF
+            ? threemf_read_file(path, import->file, &import->file_loc, &a, error)
+            : amf_read(text, size, import->file, &import->file_loc, &a, error);
     if (st == SC_OK) {
         m->points = a.points;
         m->point_count = m->point_cap = a.point_count;
@@ -932,7 +937,17 @@ sc_status build_import_mesh(const build_ctx *c, const model_import *import, int 
         return err_nomem(c->error, (&loc));
     size_t size = 0;
     const char *why = NULL;
-    char *text = file_read(path, BUILD_MAX_MESH_FILE, &size, &why);
+    /* lib3mf reads a 3MF file itself */
+    char *text = import->format == MODEL_MESH_3MF
+                     ? NULL
+                     : file_read(path, BUILD_MAX_MESH_FILE, &size, &why);
+    FILE *probe = text || import->format != MODEL_MESH_3MF ? NULL : fopen(path, "rb");
+    if (probe) {
+        fclose(probe);
+        text = malloc(1);
+    } else if (!text && import->format == MODEL_MESH_3MF) {
+        why = strerror(errno);
+    }
     if (!text) {
         sc_status st =
             err_set(c->error, SC_ERR_IO, &loc, "import: cannot read '%s': %s", path, why);
@@ -943,8 +958,8 @@ sc_status build_import_mesh(const build_ctx *c, const model_import *import, int 
     memset(&m, 0, sizeof m);
     int oom = 0;
     sc_status st = SC_OK;
-    if (import->format == MODEL_MESH_AMF) {
-        st = read_amf(text, size, import, &m, c->error);
+    if (import->format == MODEL_MESH_AMF || import->format == MODEL_MESH_3MF) {
+        st = read_amf(text, size, path, import, &m, c->error);
         free(text);
         if (st != SC_OK) {
             free(path);

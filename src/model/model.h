@@ -180,7 +180,8 @@ typedef struct model_implicit {
 typedef enum model_mesh_format {
     MODEL_MESH_STL,
     MODEL_MESH_OFF,
-    MODEL_MESH_AMF
+    MODEL_MESH_AMF,
+    MODEL_MESH_3MF
 } model_mesh_format;
 typedef struct model_import {
     const char *file; /* as written */
