@@ -186,7 +186,7 @@ string(CONCAT CPACK_COMPONENT_TOOL_DESCRIPTION
 #   libsdl2-2.0-0       the interactive viewer's window
 #   libopenmpi3         rendering tiles across machines with Open MPI
 #   gnuplot-nox         `spancast bench accuracy --plot` (suggested only)
-set(CPACK_DEBIAN_LIBRARY_PACKAGE_RECOMMENDS "libopenimageio2.4, libtiff6, libgmp10, libmpfr6, libxml2, lib3mf1, lib3mf1")
+set(CPACK_DEBIAN_LIBRARY_PACKAGE_RECOMMENDS "libopenimageio2.4, libtiff6, libgmp10, libmpfr6, libxml2, lib3mf1")
 set(CPACK_DEBIAN_TOOL_PACKAGE_RECOMMENDS "openscad, libopenimageio2.4, libtiff6, libgmp10, libmpfr6, libxml2, lib3mf1, libsdl2-2.0-0, libopenmpi3, ffmpeg")
 set(CPACK_DEBIAN_TOOL_PACKAGE_SUGGESTS "gnuplot-nox")
 set(SPANCAST_SHLIBDEPS_LIBRARY $<TARGET_FILE:spancast_shared>)

@@ -275,6 +275,16 @@ static void test_bad_input(void **state)
     assert_string_equal(e.message,
                         "import: x.svg: the page's scale makes coordinates out of range");
     twod_free(&r);
+    /* numbers too large for a double (inf), in an arc and in a stroke */
+    assert_int_equal(
+        read_svg("<svg><path d='M0 0 A 1e400 1 0 0 1 5 5 L 1e400 0 z'/></svg>", 0, 72, &r,
+                 &e),
+        SC_ERR_LIMIT);
+    twod_free(&r);
+    assert_int_equal(
+        read_svg("<svg><line x1='0' y1='0' x2='1e300' y2='0'/></svg>", 0, 72, &r, &e),
+        SC_ERR_LIMIT);
+    twod_free(&r);
     /* a missing file */
     twod_init(&r);
     svg_options o = {72, 0};

@@ -265,18 +265,18 @@ static int stroke(reader *r, const xml_element *e, twod_region *shape, const mat
                                           : SVG_JOIN_MITER;
     twod_region outline;
     twod_init(&outline);
-    int ok = svg_stroke(p->xy, p->count, width, join, cap, &outline);
-    if (!ok)
+    int code = svg_stroke(p->xy, p->count, width, join, cap, &outline);
+    int ok = code > 0;
+    if (code == 0)
         r->nomem = 1;
+    else if (code < 0)
+        r->range = 1;
     for (uint32_t k = 0; ok && k < outline.contour_count; k++) {
         points ring = {outline.xy + 2 * outline.start[k],
                        outline.start[k + 1] - outline.start[k], 0};
-        /* OpenSCAD closes each ring by repeating its first point */
+        /* OpenSCAD closes each ring by repeating its first point, which
+         * neither the bounds nor the clipper see */
         ok = commit_path(r, shape, m, &ring) && ok;
-        if (ok && ring.count && shape->contour_count) {
-            /* the repeated point only widens the bounds, which ring's
-             * first point already did */
-        }
     }
     twod_free(&outline);
     return ok;
@@ -306,7 +306,9 @@ static double vector_angle(double ux, double uy, double vx, double vy)
 static int arc_to(reader *r, points *p, double x1, double y1, double rx, double ry,
                   double x2, double y2, double angle, int large, int sweep)
 {
-    if (rx == 0 || ry == 0)
+    /* a zero radius is a line; so is anything not finite, whose end point
+     * the output then refuses as out of range */
+    if (rx == 0 || ry == 0 || !isfinite(x1 + y1 + rx + ry + x2 + y2 + angle))
         return push(r, p, x2, y2);
     double cos_a = faithful_cos_deg(angle), sin_a = faithful_sin_deg(angle);
     double dx = (x1 - x2) / 2, dy = (y1 - y2) / 2;

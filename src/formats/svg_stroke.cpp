@@ -21,7 +21,7 @@ extern "C" int svg_stroke(const double *xy, size_t count, double width, svg_join
         for (size_t i = 0; i < count; i++) {
             double x = xy[2 * i] * grid, y = xy[2 * i + 1] * grid;
             if (!(std::fabs(x) < 4e18) || !(std::fabs(y) < 4e18))
-                return 0;
+                return -1;
             line.push_back(
                 ClipperLib::IntPoint((ClipperLib::cInt)x, (ClipperLib::cInt)y));
         }
@@ -31,6 +31,8 @@ extern "C" int svg_stroke(const double *xy, size_t count, double width, svg_join
         ClipperLib::EndType et = cap == SVG_CAP_BUTT    ? ClipperLib::etOpenButt
                                  : cap == SVG_CAP_ROUND ? ClipperLib::etOpenRound
                                                         : ClipperLib::etOpenSquare;
+        if (!(std::fabs(width * grid) < 4e18))
+            return -1;
         ClipperLib::ClipperOffset offset;
         offset.AddPath(line, jt, et);
         ClipperLib::Paths result;

@@ -13,8 +13,8 @@ typedef enum svg_join { SVG_JOIN_MITER, SVG_JOIN_ROUND, SVG_JOIN_SQUARE } svg_jo
 typedef enum svg_cap { SVG_CAP_SQUARE, SVG_CAP_BUTT, SVG_CAP_ROUND } svg_cap;
 
 /* Appends the outline of the stroke of the count points xy (2 per point)
- * to out, one contour per ring Clipper returns. 0 when memory runs out or
- * the points leave Clipper's range. */
+ * to out, one contour per ring Clipper returns. Returns 1, 0 when memory
+ * runs out, -1 when the points (or the width) leave Clipper's range. */
 int svg_stroke(const double *xy, size_t count, double width, svg_join join, svg_cap cap,
                twod_region *out);
 
