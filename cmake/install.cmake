@@ -10,6 +10,9 @@
 #   LIBDIR/spancast/spancast-tiff.so      the tiled TIFF plugin (libtiff), likewise
 #   LIBDIR/spancast/spancast-cgal.so      the CGAL plugin (booleans inside hull and
 #                                         minkowski; GMP, MPFR), likewise
+#   LIBDIR/spancast/spancast-xml.so       the XML plugin (SVG and AMF imports;
+#                                         libxml2), likewise
+#   LIBDIR/spancast/spancast-3mf.so       the 3MF plugin (lib3mf), likewise
 #   share/doc/libspancast0/copyright
 # development -> libspancast-dev (Section libdevel)
 #   LIBDIR/libspancast.so                 the link for -lspancast
@@ -42,7 +45,7 @@ set(SPANCAST_DEB_DEV libspancast-dev)
 set(SPANCAST_DEB_TOOL spancast)
 
 install(TARGETS spancast RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR} COMPONENT tool)
-install(TARGETS spancast_oiio spancast_tiff spancast_cgal LIBRARY DESTINATION ${SPANCAST_HELPERS_DIR}
+install(TARGETS spancast_oiio spancast_tiff spancast_cgal spancast_xml spancast_3mf LIBRARY DESTINATION ${SPANCAST_HELPERS_DIR}
         COMPONENT library)
 install(TARGETS spancast-bench RUNTIME DESTINATION ${SPANCAST_HELPERS_DIR} COMPONENT tool)
 install(TARGETS spancast_view RUNTIME DESTINATION ${SPANCAST_HELPERS_DIR} COMPONENT tool)
@@ -175,12 +178,16 @@ string(CONCAT CPACK_COMPONENT_TOOL_DESCRIPTION
 #                       LIBDIR/spancast/spancast-tiff.so (dlopen)
 #   libgmp10 libmpfr6   booleans inside hull() and minkowski(), through the
 #                       plugin LIBDIR/spancast/spancast-cgal.so (dlopen)
+#   libxml2             SVG and AMF imports, through the plugin
+#                       LIBDIR/spancast/spancast-xml.so (dlopen)
+#   lib3mf1             3MF imports, through the plugin
+#                       LIBDIR/spancast/spancast-3mf.so (dlopen)
 #   openscad            .scad input, converted by running openscad (src/cli/scad.c)
 #   libsdl2-2.0-0       the interactive viewer's window
 #   libopenmpi3         rendering tiles across machines with Open MPI
 #   gnuplot-nox         `spancast bench accuracy --plot` (suggested only)
-set(CPACK_DEBIAN_LIBRARY_PACKAGE_RECOMMENDS "libopenimageio2.4, libtiff6, libgmp10, libmpfr6")
-set(CPACK_DEBIAN_TOOL_PACKAGE_RECOMMENDS "openscad, libopenimageio2.4, libtiff6, libgmp10, libmpfr6, libsdl2-2.0-0, libopenmpi3, ffmpeg")
+set(CPACK_DEBIAN_LIBRARY_PACKAGE_RECOMMENDS "libopenimageio2.4, libtiff6, libgmp10, libmpfr6, libxml2, lib3mf1")
+set(CPACK_DEBIAN_TOOL_PACKAGE_RECOMMENDS "openscad, libopenimageio2.4, libtiff6, libgmp10, libmpfr6, libxml2, lib3mf1, libsdl2-2.0-0, libopenmpi3, ffmpeg")
 set(CPACK_DEBIAN_TOOL_PACKAGE_SUGGESTS "gnuplot-nox")
 set(SPANCAST_SHLIBDEPS_LIBRARY $<TARGET_FILE:spancast_shared>)
 set(SPANCAST_SHLIBDEPS_TOOL $<TARGET_FILE:spancast> $<TARGET_FILE:spancast-bench>)

@@ -72,7 +72,7 @@ for f in bin/spancast include/spancast/spancast.h include/spancast/version.h \
     check
     [ -f "$prefix/$f" ] || fail "not installed: $f"
 done
-for f in libspancast.so spancast/spancast-oiio.so spancast/spancast-tiff.so spancast/spancast-cgal.so spancast/spancast-bench spancast/spancast-view \
+for f in libspancast.so spancast/spancast-oiio.so spancast/spancast-tiff.so spancast/spancast-cgal.so spancast/spancast-xml.so spancast/spancast-3mf.so spancast/spancast-bench spancast/spancast-view \
     cmake/spancast/spancastConfig.cmake cmake/spancast/spancastConfigVersion.cmake \
     cmake/spancast/spancastTargets.cmake; do
     check
@@ -402,6 +402,7 @@ lacks() {
 }
 has $libpkg "LIBDIR/libspancast.so.$soversion" "LIBDIR/libspancast.so.$version" \
     LIBDIR/spancast/spancast-oiio.so LIBDIR/spancast/spancast-tiff.so LIBDIR/spancast/spancast-cgal.so \
+    LIBDIR/spancast/spancast-xml.so LIBDIR/spancast/spancast-3mf.so \
     usr/share/doc/$libpkg/copyright
 lacks $libpkg '^usr/include/' '^LIBDIR/libspancast\.so$' '^usr/bin/' '^usr/share/man/' \
     'pkgconfig|cmake'
@@ -438,9 +439,9 @@ done
 check
 [ "$(field $libpkg Section)" = libs ] || fail "$libpkg Section: $(field $libpkg Section)"
 check
-echo "$depends" | grep -Eq "openimageio|libtiff" && fail "$libpkg Depends on a plugin's library: $depends"
+echo "$depends" | grep -Eq "openimageio|libtiff|libxml2|lib3mf" && fail "$libpkg Depends on a plugin's library: $depends"
 check
-[ "$(field $libpkg Recommends)" = "libopenimageio2.4, libtiff6, libgmp10, libmpfr6" ] ||
+[ "$(field $libpkg Recommends)" = "libopenimageio2.4, libtiff6, libgmp10, libmpfr6, libxml2, lib3mf1" ] ||
     fail "$libpkg Recommends: $(field $libpkg Recommends)"
 check
 [ "$(field libspancast-dev Depends)" = "$libpkg (= $version)" ] ||
@@ -454,7 +455,7 @@ echo "$tool_depends" | grep -Eq "(^|, )$libpkg \(= $version\)(,|$)" ||
 check
 echo "$tool_depends" | grep -Eq "openimageio|libsdl2" && fail "spancast Depends: $tool_depends"
 recommends=$(field spancast Recommends)
-for pkg in openscad libopenimageio2.4 libtiff6 libgmp10 libmpfr6 libsdl2-2.0-0 libopenmpi3 ffmpeg; do
+for pkg in openscad libopenimageio2.4 libtiff6 libgmp10 libmpfr6 libxml2 lib3mf1 libsdl2-2.0-0 libopenmpi3 ffmpeg; do
     check
     echo "$recommends" | grep -Eq "(^|, )$pkg( |,|$)" || fail "spancast Recommends lacks $pkg: $recommends"
 done

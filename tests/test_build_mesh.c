@@ -507,8 +507,8 @@ static void test_import(void **state)
     assert_true(inside(rest, 0.5, 0.5, 0.5));
     sc_scene_release(rest);
     check_error("m.csg", "import(\"a.dxf\");", SC_ERR_UNSUPPORTED,
-                "m.csg:1:8: error: import of 'a.dxf' is not supported yet (only .stl and "
-                ".off files)");
+                "m.csg:1:8: error: import of 'a.dxf' is not supported yet (only .stl, "
+                ".off, .amf and .3mf files)");
     check_error("m.csg", "import();", SC_ERR_SEMANTIC,
                 "m.csg:1:1: error: missing argument 'file' of 'import'");
     check_error(

@@ -348,9 +348,10 @@ static void test_errors(void **state)
         "[[0, 1, 3]]); }",
         SC_ERR_SEMANTIC,
         "m.csg:1:79: error: polygon path 0: point index is not one of the 3 points");
-    check_error("rotate_extrude(file = \"a.dxf\");", SC_ERR_UNSUPPORTED,
-                "m.csg:1:1: error: rotate_extrude of a file is not supported yet (use a "
-                "child import())");
+    /* the file form reads the drawing's arguments as import() does */
+    check_error("rotate_extrude(file = \"a.dxf\", origin = 3);", SC_ERR_SEMANTIC,
+                "m.csg:1:41: error: wrong type for argument 'origin' of 'rotate_extrude' "
+                "(expected [x, y])");
     /* a profile past the edge limit */
     size_t cap = 64 * 1024;
     char *text = malloc(cap);

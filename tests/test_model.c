@@ -275,10 +275,15 @@ static void test_twod_context(void **state)
                         "true or false)");
     assert_string_equal(e->pending->message, "wrong type for argument 'slices' of "
                                              "'linear_extrude' (expected a number)");
-    assert_string_equal(e->next->pending->message,
-                        "rotate_extrude of a file is not supported yet (use a child "
-                        "import())");
-    assert_int_equal(e->next->first_child->kind, MODEL_CIRCLE);
+    /* the file form: the drawing is the only child, the written ones left
+     * out as OpenSCAD leaves them out */
+    assert_null(e->next->pending);
+    const model_node *drawing = e->next->first_child;
+    assert_int_equal(drawing->kind, MODEL_IMPORT);
+    assert_null(drawing->next);
+    assert_string_equal(drawing->u.drawing->file, "a.dxf");
+    assert_int_equal(drawing->u.drawing->format, MODEL_DRAWING_DXF);
+    assert_true(drawing->u.drawing->scale == 1);
     release(&l);
 }
 

@@ -39,6 +39,8 @@
 #include <string.h>
 
 #include "base/error.h"
+#include "formats/amf.h"
+#include "formats/threemf.h"
 #include "base/grow.h"
 #include "csg/prim_mesh.h"
 #include "formats/file.h"
@@ -900,6 +902,30 @@ sc_status build_import(const build_ctx *c, const model_import *import, prim *out
     return build_import_mesh(c, import, 0, out, empty);
 }
 
+/* An AMF file (amf.c), or a 3MF file (threemf.h) read from path, as a
+ * mesh_file: every object's triangles together, which is OpenSCAD's union
+ * of the objects when they do not overlap. */
+static sc_status read_amf(const char *text, size_t size, const char *path,
+                          const model_import *import, mesh_file *m, sc_error *error)
+{
+    amf_mesh a;
+    sc_status st =
+        import->format == MODEL_MESH_3MF
+            ? threemf_read_file(path, import->file, &import->file_loc, &a, error)
+            : amf_read(text, size, import->file, &import->file_loc, &a, error);
+    if (st == SC_OK) {
+        m->points = a.points;
+        m->point_count = m->point_cap = a.point_count;
+        m->indices = a.indices;
+        m->index_count = m->index_cap = 3 * a.face_count;
+        m->face_start = a.face_start;
+        m->face_count = m->face_cap = a.face_count;
+        memset(&a, 0, sizeof a);
+    }
+    amf_mesh_free(&a);
+    return st;
+}
+
 sc_status build_import_mesh(const build_ctx *c, const model_import *import, int strict,
                             prim *out, const char **empty)
 {
@@ -911,7 +937,17 @@ sc_status build_import_mesh(const build_ctx *c, const model_import *import, int 
         return err_nomem(c->error, (&loc));
     size_t size = 0;
     const char *why = NULL;
-    char *text = file_read(path, BUILD_MAX_MESH_FILE, &size, &why);
+    /* lib3mf reads a 3MF file itself */
+    char *text = import->format == MODEL_MESH_3MF
+                     ? NULL
+                     : file_read(path, BUILD_MAX_MESH_FILE, &size, &why);
+    FILE *probe = text || import->format != MODEL_MESH_3MF ? NULL : fopen(path, "rb");
+    if (probe) {
+        fclose(probe);
+        text = malloc(1);
+    } else if (!text && import->format == MODEL_MESH_3MF) {
+        why = strerror(errno);
+    }
     if (!text) {
         sc_status st =
             err_set(c->error, SC_ERR_IO, &loc, "import: cannot read '%s': %s", path, why);
@@ -921,9 +957,19 @@ sc_status build_import_mesh(const build_ctx *c, const model_import *import, int 
     mesh_file m;
     memset(&m, 0, sizeof m);
     int oom = 0;
-    why = stl ? read_stl(text, size, &m, &oom) : read_off(text, size, &m, &oom);
-    free(text);
     sc_status st = SC_OK;
+    if (import->format == MODEL_MESH_AMF || import->format == MODEL_MESH_3MF) {
+        st = read_amf(text, size, path, import, &m, c->error);
+        free(text);
+        if (st != SC_OK) {
+            free(path);
+            mesh_file_free(&m);
+            return st;
+        }
+    } else {
+        why = stl ? read_stl(text, size, &m, &oom) : read_off(text, size, &m, &oom);
+        free(text);
+    }
     if (oom)
         st = err_nomem(c->error, (&loc));
     else if (why)

@@ -60,6 +60,7 @@
 #include "build/build_projection.h"
 #include "build/build_text.h"
 #include "formats/dxf.h"
+#include "formats/svg.h"
 #include "model/faithful.h"
 
 /* Offsets and Minkowski sums grow the point count by a product; these
@@ -612,6 +613,30 @@ static int resize_scale(const model_resize *args, twod_region *r, double m[2][3]
     return 1;
 }
 
+/* import of an SVG drawing (svg.c): OpenSCAD's region of the page, already
+ * through the clipper. A file that cannot be opened is a warning and
+ * nothing, as OpenSCAD makes it. */
+static sc_status read_svg(const eval *e, const model_node *n, twod_region *out)
+{
+    const model_drawing *d = n->u.drawing;
+    char *path = build_file_path(e->c, d->file);
+    if (!path)
+        return err_nomem(e->c->error, &n->loc);
+    sc_status st;
+    FILE *f = fopen(path, "rb");
+    if (!f) {
+        st = build_note(e->c, &n->loc,
+                        "Can't open SVG file '%s': %s (the import is empty)", path,
+                        strerror(errno));
+    } else {
+        fclose(f);
+        svg_options o = {d->dpi, d->center};
+        st = svg_read_file(path, d->file, &d->file_loc, &o, out, e->c->error);
+    }
+    free(path);
+    return st;
+}
+
 /* import of a DXF drawing (dxf.c), sanitized as OpenSCAD sanitizes a leaf's
  * polygons. */
 static sc_status read_import(const eval *e, const model_node *n, twod_region *out)
@@ -623,6 +648,8 @@ static sc_status read_import(const eval *e, const model_node *n, twod_region *ou
     sc_location loc = d->file_loc;
     if (d->not_2d) /* a 3D file */
         return ignore_3d(e, n, 0);
+    if (d->format == MODEL_DRAWING_SVG)
+        return read_svg(e, n, out);
     dxf_options o = {d->res.fn,    d->res.fa,    d->res.fs, d->layer,
                      d->origin[0], d->origin[1], d->scale};
     sc_status st;

@@ -285,13 +285,18 @@ sc_status model_read_import(const model_reader *r, const parse_node *n, model_im
     const char *name = a->value.u.string.chars;
     sc_location loc = model_loc(r, &a->value);
     int stl = model_has_suffix(name, ".stl"), off = model_has_suffix(name, ".off");
-    if (!stl && !off)
+    int amf = model_has_suffix(name, ".amf"), threemf = model_has_suffix(name, ".3mf");
+    if (!stl && !off && !amf && !threemf)
         return err_set(r->error, SC_ERR_UNSUPPORTED, &loc,
-                       "import of '%s' is not supported yet (only .stl and .off files)",
+                       "import of '%s' is not supported yet (only .stl, .off, .amf and "
+                       ".3mf files)",
                        name);
     out->file = name;
     out->file_loc = loc;
-    out->format = stl ? MODEL_MESH_STL : MODEL_MESH_OFF;
+    out->format = stl   ? MODEL_MESH_STL
+                  : off ? MODEL_MESH_OFF
+                  : amf ? MODEL_MESH_AMF
+                        : MODEL_MESH_3MF;
     return SC_OK;
 }
 

@@ -653,7 +653,9 @@ static sc_status walk(lowerer *l, const parse_node *first, const parse_node *end
         if ((st = visit(l, n, ctx, root, &link, &node, error)) != SC_OK || l->stopped)
             break;
         context inner;
-        if (!n->first_child || !enters(ctx, node, &inner)) {
+        /* an extrusion's file form has made its child (lower_twod.c), and
+         * OpenSCAD leaves out the written ones */
+        if (!n->first_child || node->first_child || !enters(ctx, node, &inner)) {
             n = n->next;
             continue;
         }

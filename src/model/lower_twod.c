@@ -10,9 +10,13 @@
  *             path order; the first bad entry ends the paths (model.h)
  *   offset    r, then $fn, $fa, $fs, then (without r) delta and chamfer;
  *             the size must be finite
- *   import    a file name, not .svg (not supported yet), .dxf (otherwise
- *             the builder names the operation that asked), then $fn, $fa,
- *             $fs, scale, layer, origin [x, y], origin and scale finite
+ *   import    a file name, .dxf or .svg (otherwise the builder names the
+ *             operation that asked), then $fn, $fa, $fs, layer, origin
+ *             [x, y], scale, center and dpi (as OpenSCAD: center true only
+ *             when true, a bad dpi the default), origin and scale finite
+ *   linear_extrude, rotate_extrude with file: the arguments above, then
+ *             file, $fn, $fa, $fs, layer, origin; the drawing becomes the
+ *             node's only child (extrude_file)
  *   projection  cut (true or false, by name or first), convexity a number
  *   resize    as in the points context (lower_points.c)
  *   text      text, size, font, direction, language, script, halign,
@@ -152,33 +156,13 @@ static sc_status lower_offset(model_lowerer *l, const parse_node *n, model_node 
     return SC_OK;
 }
 
-static sc_status lower_drawing(model_lowerer *l, const parse_node *n, model_node *out)
+/* layer, origin [x, y], $fn, $fa, $fs of a drawing read from n (an import,
+ * or an extrusion's file form); origin finite. */
+static sc_status drawing_options(model_lowerer *l, const parse_node *n, model_drawing *d)
 {
-    model_drawing *d = model_lowerer_alloc(l, sizeof *d);
-    if (!d)
-        return SC_ERR_NOMEM;
-    out->u.drawing = d;
-    d->scale = 1;
-    const parse_value *file = model_arg(n, "file", 0);
-    if (!file)
-        return err_set(l->r.error, SC_ERR_SEMANTIC, &n->loc,
-                       "missing argument 'file' of 'import'");
-    if (file->kind != PARSE_STRING)
-        return model_wrong_type(&l->r, n, "file", file, "a file name");
-    d->file = file->u.string.chars;
-    d->file_loc = model_loc(&l->r, file);
-    if (model_has_suffix(d->file, ".svg"))
-        return err_set(l->r.error, SC_ERR_UNSUPPORTED, &d->file_loc,
-                       "import of '%s' is not supported yet (2D: only .dxf files)",
-                       d->file);
-    if (!model_has_suffix(d->file, ".dxf")) {
-        d->not_2d = 1;
-        return SC_OK;
-    }
     model_resolution *res = &d->res;
-    sc_status st;
-    if ((st = model_read_resolution(&l->r, n, &res->fn, &res->fa, &res->fs)) != SC_OK ||
-        (st = number(l, n, "scale", -1, &d->scale, NULL)) != SC_OK)
+    sc_status st = model_read_resolution(&l->r, n, &res->fn, &res->fa, &res->fs);
+    if (st != SC_OK)
         return st;
     const parse_value *layer = model_arg(n, "layer", -1);
     if (layer && layer->kind != PARSE_STRING)
@@ -193,9 +177,92 @@ static sc_status lower_drawing(model_lowerer *l, const parse_node *n, model_node
         d->origin[0] = origin->u.vector.items[0].u.number;
         d->origin[1] = origin->u.vector.items[1].u.number;
     }
-    if (!isfinite(d->scale) || !isfinite(d->origin[0]) || !isfinite(d->origin[1]))
+    return SC_OK;
+}
+
+/* The file argument of n, a string, into d->file and d->file_loc; the
+ * drawing's format from its suffix. */
+static sc_status drawing_file(model_lowerer *l, const parse_node *n,
+                              const parse_value *file, model_drawing *d)
+{
+    if (file->kind != PARSE_STRING)
+        return model_wrong_type(&l->r, n, "file", file, "a file name");
+    d->file = file->u.string.chars;
+    d->file_loc = model_loc(&l->r, file);
+    d->format = model_has_suffix(d->file, ".svg") ? MODEL_DRAWING_SVG : MODEL_DRAWING_DXF;
+    return SC_OK;
+}
+
+static sc_status lower_drawing(model_lowerer *l, const parse_node *n, model_node *out)
+{
+    model_drawing *d = model_lowerer_alloc(l, sizeof *d);
+    if (!d)
+        return SC_ERR_NOMEM;
+    out->u.drawing = d;
+    d->scale = 1;
+    d->dpi = MODEL_SVG_DPI;
+    const parse_value *file = model_arg(n, "file", 0);
+    if (!file)
+        return err_set(l->r.error, SC_ERR_SEMANTIC, &n->loc,
+                       "missing argument 'file' of 'import'");
+    sc_status st = drawing_file(l, n, file, d);
+    if (st != SC_OK)
+        return st;
+    if (!model_has_suffix(d->file, ".dxf") && !model_has_suffix(d->file, ".svg")) {
+        d->not_2d = 1;
+        return SC_OK;
+    }
+    if ((st = drawing_options(l, n, d)) != SC_OK ||
+        (st = number(l, n, "scale", -1, &d->scale, NULL)) != SC_OK)
+        return st;
+    /* OpenSCAD 2021.01 (import.cc): center is true only when given true,
+     * a scale <= 0 is 1, a dpi below 0.001 the default */
+    const parse_value *center = model_arg(n, "center", -1);
+    d->center = center && center->kind == PARSE_BOOL && center->u.boolean;
+    const parse_value *dpi = model_arg(n, "dpi", -1);
+    if (dpi && dpi->kind == PARSE_NUMBER && dpi->u.number >= 0.001)
+        d->dpi = dpi->u.number;
+    if (!isfinite(d->scale) || !isfinite(d->origin[0]) || !isfinite(d->origin[1]) ||
+        !isfinite(d->dpi))
         return err_set(l->r.error, SC_ERR_SEMANTIC, &n->loc,
                        "import: origin and scale must be finite");
+    if (d->scale <= 0)
+        d->scale = 1;
+    return SC_OK;
+}
+
+/* The file form of an extrusion, linear_extrude(file = "x.dxf", layer,
+ * origin, scale, ...) and rotate_extrude(file, layer, origin, scale, ...),
+ * which OpenSCAD 2021.01 still reads (deprecated): the drawing read as a
+ * DXF whatever its name, whose scale is the given one (linear_extrude's
+ * scale [x, y] takes x, and scales the top as well), in place of the
+ * children, which OpenSCAD then leaves out. Lowered as a child import()
+ * node, the only child of out. */
+static sc_status extrude_file(model_lowerer *l, const parse_node *n,
+                              const parse_value *file, double scale, model_node *out)
+{
+    model_drawing *d = model_lowerer_alloc(l, sizeof *d);
+    model_node *child = model_lowerer_alloc(l, sizeof *child);
+    if (!d || !child)
+        return SC_ERR_NOMEM;
+    d->scale = 1;
+    d->dpi = MODEL_SVG_DPI;
+    sc_status st = drawing_file(l, n, file, d);
+    if (st == SC_OK)
+        st = drawing_options(l, n, d);
+    if (st != SC_OK)
+        return st;
+    d->format = MODEL_DRAWING_DXF;
+    d->scale = scale;
+    if (!isfinite(d->scale) || !isfinite(d->origin[0]) || !isfinite(d->origin[1]))
+        return err_set(l->r.error, SC_ERR_SEMANTIC, &n->loc,
+                       "%s: origin and scale must be finite", n->name);
+    child->kind = MODEL_IMPORT;
+    child->name = n->name;
+    child->loc = n->loc;
+    child->u.drawing = d;
+    out->first_child = child;
+    out->child_count = 1;
     return SC_OK;
 }
 
@@ -275,9 +342,6 @@ static sc_status faithful_extrude_args(model_lowerer *l, const parse_node *n,
 {
     model_resolution *res = &e->res;
     sc_status st;
-    if (model_arg(n, "file", -1))
-        return err_set(l->r.error, SC_ERR_UNSUPPORTED, &n->loc,
-                       "linear_extrude of a file is not supported yet");
     if ((st = model_number(&l->r, n, "height", 0, &e->height)) != SC_OK ||
         (st = model_number(&l->r, n, "twist", -1, &e->twist)) != SC_OK ||
         (st = model_number(&l->r, n, "slices", -1, &e->slices)) != SC_OK ||
@@ -353,7 +417,11 @@ static sc_status lower_linear_extrude(model_lowerer *l, const parse_node *n,
     if (exact_extrude_args(l, n, e) != SC_OK)
         e->exact_error = exact;
     l->r.error = outer;
-    return faithful_extrude_args(l, n, e);
+    sc_status st = faithful_extrude_args(l, n, e);
+    const parse_value *file = model_arg(n, "file", -1);
+    if (st == SC_OK && file)
+        st = extrude_file(l, n, file, e->sx, out);
+    return st;
 }
 
 static sc_status lower_rotate_extrude(model_lowerer *l, const parse_node *n,
@@ -373,11 +441,14 @@ static sc_status lower_rotate_extrude(model_lowerer *l, const parse_node *n,
     const parse_value *cv = model_arg(n, "convexity", -1);
     if (cv && cv->kind != PARSE_NUMBER)
         return model_wrong_type(&l->r, n, "convexity", cv, "a number");
-    if (model_arg(n, "file", -1))
-        return err_set(l->r.error, SC_ERR_UNSUPPORTED, &n->loc,
-                       "rotate_extrude of a file is not supported yet (use a child "
-                       "import())");
-    return SC_OK;
+    const parse_value *file = model_arg(n, "file", -1);
+    if (!file)
+        return SC_OK;
+    /* OpenSCAD 2021.01 (rotateextrude.cc): a scale <= 0 is 1 */
+    double scale = 1;
+    if ((st = number(l, n, "scale", -1, &scale, NULL)) != SC_OK)
+        return st;
+    return extrude_file(l, n, file, scale <= 0 ? 1 : scale, out);
 }
 
 /* projection(cut = false, convexity): OpenSCAD takes cut by name or

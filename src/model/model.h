@@ -177,7 +177,12 @@ typedef struct model_implicit {
 } model_implicit;
 
 /* import(file) of a mesh, in a 3D model. */
-typedef enum model_mesh_format { MODEL_MESH_STL, MODEL_MESH_OFF } model_mesh_format;
+typedef enum model_mesh_format {
+    MODEL_MESH_STL,
+    MODEL_MESH_OFF,
+    MODEL_MESH_AMF,
+    MODEL_MESH_3MF
+} model_mesh_format;
 typedef struct model_import {
     const char *file; /* as written */
     sc_location file_loc;
@@ -231,13 +236,28 @@ typedef struct model_offset {
     model_resolution res;
 } model_offset;
 
-/* import(file = "x.dxf", layer, origin, scale, $fn, $fa, $fs) in 2D. */
+/* The formats of a 2D import. */
+typedef enum model_drawing_format {
+    MODEL_DRAWING_DXF,
+    MODEL_DRAWING_SVG
+} model_drawing_format;
+
+/* OpenSCAD's default dpi of an SVG import: 72 user units to the inch, so
+ * that a unit is a typographic point (import.cc, SVG_DEFAULT_DPI). */
+#define MODEL_SVG_DPI 72.0
+
+/* import(file = "x.dxf", layer, origin, scale, $fn, $fa, $fs) and
+ * import(file = "x.svg", center, dpi) in 2D; also the drawing of an
+ * extrusion's file form (lower_twod.c), lowered as its only child. */
 typedef struct model_drawing {
     const char *file; /* as written */
     sc_location file_loc;
-    int not_2d;        /* not a .dxf (nor .svg): the builder names its context */
-    const char *layer; /* or NULL */
-    double origin[2], scale;
+    model_drawing_format format;
+    int not_2d;              /* not a .dxf nor .svg: the builder names its context */
+    const char *layer;       /* or NULL (DXF) */
+    double origin[2], scale; /* DXF: scale > 0 */
+    int center;              /* SVG: centre the drawing's bounds on the origin */
+    double dpi;              /* SVG: user units to the inch, >= 0.001 */
     model_resolution res;
 } model_drawing;
 

@@ -320,6 +320,9 @@ class Walk:
                 inner.node3(c, a)
             if inner.delta > 0:
                 raise NotCheckable('%s of curved leaves' % name)
+        elif name in ('linear_extrude', 'rotate_extrude') and 'file' in args:
+            raise NotCheckable('%s of a file: its curves are OpenSCAD\'s DXF reader\'s'
+                               % name)
         elif name == 'linear_extrude':
             if num(args.get('twist', 0)) != 0:
                 raise NotCheckable('twisted linear_extrude')
