@@ -734,6 +734,19 @@ static int tess_monotone(const tess_mesh *m, uint32_t n)
     return peaks == 1;
 }
 
+/* v in ascending order: three points of a face in the order of the face,
+ * which for a triangle of a split of a simple polygon is its winding. */
+static void sort3(uint32_t v[3])
+{
+    for (int i = 0; i < 2; i++)
+        for (int j = 0; j < 2 - i; j++)
+            if (v[j] > v[j + 1]) {
+                uint32_t x = v[j];
+                v[j] = v[j + 1];
+                v[j + 1] = x;
+            }
+}
+
 int build_mesh_face_triangles(const vec3 *p, uint32_t n, int reversed, uint32_t *tris)
 {
     for (uint32_t j = 1; j + 1 < n; j++) { /* the fan, unless replaced below */
@@ -753,14 +766,17 @@ int build_mesh_face_triangles(const vec3 *p, uint32_t n, int reversed, uint32_t 
         return 1;
     }
     uint32_t half_edges = 4 * n, faces = n + 2;
-    /* one block: s, t (float), then the uint32_t arrays, then the marks */
-    size_t words = 2 * (size_t)n + 5 * (size_t)half_edges + 3 * (size_t)faces;
+    /* one block: s, t by face position, then by vertex (float); the
+     * uint32_t arrays; the marks */
+    size_t words = 5 * (size_t)n + 5 * (size_t)half_edges + 3 * (size_t)faces;
     uint32_t *block = malloc(words * sizeof(uint32_t) + half_edges + faces);
     if (!block)
         return -1;
-    float *s = (float *)block, *t = s + n; /* float and uint32_t: both 4 bytes */
+    float *ps = (float *)block, *pt = ps + n; /* float and uint32_t: both 4 bytes */
+    float *s = pt + n, *t = s + n;
+    uint32_t *contour = block + 4 * n; /* vertex k: contour point contour[k] */
     tess_mesh m = {.s = s, .t = t, .edge_cap = half_edges, .face_cap = faces};
-    uint32_t *w = block + 2 * n;
+    uint32_t *w = block + 5 * n;
     m.org = w;
     m.lnext = w + half_edges;
     m.lprev = w + 2 * half_edges;
@@ -771,31 +787,50 @@ int build_mesh_face_triangles(const vec3 *p, uint32_t n, int reversed, uint32_t 
     m.face_edge = m.face_prev + faces;
     m.mark = (unsigned char *)(block + words);
     m.inside = m.mark + half_edges;
-    int ok = tess_project(p, n, reversed, s, t);
-    for (uint32_t j = 0; ok && reversed && j < n / 2; j++) {
-        /* by contour position: contour point j is p[n - 1 - j] */
-        float x = s[j], y = t[j];
-        s[j] = s[n - 1 - j];
-        t[j] = t[n - 1 - j];
-        s[n - 1 - j] = x;
-        t[n - 1 - j] = y;
-    }
+    /* contour point j is p[n - 1 - j] when reversed */
+#define AT(j) (reversed ? n - 1 - (j) : (j))
+    int ok = tess_project(p, n, reversed, ps, pt);
+    float sign = 1;
     if (ok) {
         float area = 0;
         for (uint32_t j = 0; j < n; j++) {
-            uint32_t j1 = (j + 1) % n;
-            area += (s[j] - s[j1]) * (t[j] + t[j1]);
+            uint32_t a = AT(j), b = AT((j + 1) % n);
+            area += (ps[a] - ps[b]) * (pt[a] + pt[b]);
         }
-        if (area < 0)
-            for (uint32_t j = 0; j < n; j++)
-                t[j] = -t[j];
-        ok = area != 0 && tess_simple(&m, n);
+        sign = area < 0 ? -1.0f : 1.0f;
+        ok = area != 0;
     }
+    /* Two neighbours on one point of the projection (contour points
+     * merged, merged + 1): libtess2 merges them into the one it lists
+     * first (its list runs from contour point 1 round to 0), triangulates
+     * the rest, and OpenSCAD mends the sliver left between the two and
+     * the other neighbour of the one that stays. */
+    uint32_t merged = UINT32_MAX, pairs = 0, dropped = UINT32_MAX;
+    for (uint32_t j = 0; ok && j < n; j++) {
+        uint32_t a = AT(j), b = AT((j + 1) % n);
+        if (ps[a] == ps[b] && pt[a] == pt[b]) {
+            merged = j;
+            pairs++;
+        }
+    }
+    if (pairs == 1)
+        dropped = merged == 0 ? 0 : (merged + 1) % n; /* 0 is listed last */
+    uint32_t count = 0;
+    for (uint32_t j = 0; ok && j < n; j++) {
+        if (j == dropped)
+            continue;
+        contour[count] = j;
+        s[count] = ps[AT(j)];
+        t[count] = sign * pt[AT(j)];
+        count++;
+    }
+    ok = ok && pairs <= 1 && count >= 3 && tess_simple(&m, count);
     if (ok) {
-        for (uint32_t j = 0; j < n; j++) {
-            uint32_t e = 2 * j, next = 2 * ((j + 1) % n), prev = 2 * ((j + n - 1) % n);
+        for (uint32_t j = 0; j < count; j++) {
+            uint32_t e = 2 * j, next = 2 * ((j + 1) % count);
+            uint32_t prev = 2 * ((j + count - 1) % count);
             m.org[e] = j;
-            m.org[e + 1] = (j + 1) % n;
+            m.org[e + 1] = (j + 1) % count;
             m.lnext[e] = next;
             m.lprev[e] = prev;
             m.lnext[e + 1] = prev + 1;
@@ -804,7 +839,7 @@ int build_mesh_face_triangles(const vec3 *p, uint32_t n, int reversed, uint32_t 
             m.lface[e + 1] = TESS_OUTSIDE;
             m.mark[e] = m.mark[e + 1] = 0;
         }
-        m.edges = 2 * n;
+        m.edges = 2 * count;
         m.face_next[TESS_HEAD] = TESS_REGION;
         m.face_prev[TESS_HEAD] = TESS_REGION;
         m.face_next[TESS_REGION] = m.face_prev[TESS_REGION] = TESS_HEAD;
@@ -813,8 +848,13 @@ int build_mesh_face_triangles(const vec3 *p, uint32_t n, int reversed, uint32_t 
         m.inside[TESS_HEAD] = m.inside[TESS_OUTSIDE] = 0;
         m.inside[TESS_REGION] = 1;
         m.faces = 3;
-        ok = tess_monotone(&m, n) ? tess_mono_region(&m, n) : tess_ears(&m);
-        ok = ok && m.faces == n;
+        if (count == 3)
+            ok = 1;
+        else if (tess_monotone(&m, count))
+            ok = tess_mono_region(&m, count);
+        else
+            ok = tess_ears(&m);
+        ok = ok && m.faces == count;
     }
     if (ok) {
         tess_refine(&m, stack);
@@ -822,21 +862,19 @@ int build_mesh_face_triangles(const vec3 *p, uint32_t n, int reversed, uint32_t 
         for (uint32_t f = m.face_next[TESS_HEAD]; f != TESS_HEAD; f = m.face_next[f]) {
             uint32_t e = m.face_edge[f], v[3];
             for (int i = 0; i < 3; i++, e = m.lnext[e])
-                v[i] = reversed ? n - 1 - m.org[e] : m.org[e];
-            /* in the face's own order, which is its winding */
-            for (int i = 0; i < 2; i++)
-                for (int j = 0; j < 2 - i; j++)
-                    if (v[j] > v[j + 1]) {
-                        uint32_t x = v[j];
-                        v[j] = v[j + 1];
-                        v[j + 1] = x;
-                    }
-            tris[3 * k] = v[0];
-            tris[3 * k + 1] = v[1];
-            tris[3 * k + 2] = v[2];
-            k++;
+                v[i] = AT(contour[m.org[e]]);
+            sort3(v);
+            memcpy(&tris[3 * k++], v, sizeof v);
+        }
+        if (pairs == 1) { /* the sliver: the pair and its neighbour */
+            uint32_t v[3] = {AT(merged), AT((merged + 1) % n),
+                             dropped == merged ? AT((merged + n - 1) % n)
+                                               : AT((merged + 2) % n)};
+            sort3(v);
+            memcpy(&tris[3 * k++], v, sizeof v);
         }
     }
+#undef AT
     free(block);
     return ok;
 }
