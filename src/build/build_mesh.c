@@ -2,17 +2,18 @@
  * import("file.stl" | "file.off").
  *
  * Polyhedra and imports are read as OpenSCAD 2021.01 reads them: their
- * points merged on its grid of 2^-20 (build_mesh_merge), quads split along
- * the diagonal its libtess2 triangulation picks (build_mesh_quad_diagonal),
- * larger faces into fans about their first point. A solid needs a mesh
+ * points merged on its grid of 2^-20 (build_mesh_merge), non-planar faces
+ * split into the triangles its libtess2 triangulation makes
+ * (build_mesh_quad_diagonal, build_mesh_face_triangles), planar ones of
+ * five or more points into fans about their first point. A solid needs a mesh
  * that is closed (every undirected edge in exactly two faces) and
  * consistently oriented (those two faces run along the edge in opposite
  * directions). One that is not is a warning naming an offending edge, and
  * then left out in faithful mode, as OpenSCAD leaves it out of its CGAL
  * operations, or in exact mode built with the parity rule (prim_mesh.h),
  * so the user still sees it; with --strict it is an error. The meshes
- * other builders make (extrusions, surface, hull: build_mesh_prim) must be
- * sound. Which way the faces wind does not matter: OpenSCAD lists them
+ * other builders make (extrusions, surface, hull: build_mesh_prim) are
+ * treated the same way. Which way the faces wind does not matter: OpenSCAD lists them
  * clockwise seen from outside, STL and OFF files usually the other way, so
  * the sign of the enclosed volume (divergence theorem, sum of a . (b x c)
  * / 6 over the triangles, about the centre of the bounds for accuracy)
