@@ -363,6 +363,33 @@ static void test_quad_diagonal(void **state)
     sc_scene_release(s);
 }
 
+/* Bow ties: a box whose top and back faces cross themselves in the plane
+ * libtess2 projects them onto. OpenSCAD 2021.01's STL export of this
+ * polyhedron splits both along their 0-2 diagonals (4-6 and 2-7), set by
+ * the order of its hash tables; the Delaunay rule of
+ * build_mesh_quad_diagonal picks the other ones. The point (0.5, 0.5,
+ * 1.2), under the top's 5-7 diagonal, has winding number 0 about
+ * OpenSCAD's split and the body's winding number about the other one
+ * (from the solid angles of the triangles): outside, not inside. */
+static void test_bowtie(void **state)
+{
+    (void)state;
+    vec3 top[4] = {v3(0, 0, 1), v3(0.8, 1, 1.4), v3(0.2, 1, 1), v3(1, 0, 1.4)};
+    vec3 back[4] = {v3(1, 1, 0), v3(0.2, 1, 1), v3(0.8, 1, 1.4), v3(0, 1, 0)};
+    assert_int_equal(build_mesh_quad_crosses(top, 1), 1);
+    assert_int_equal(build_mesh_quad_crosses(back, 1), 1);
+    assert_int_equal(build_mesh_quad_diagonal(top, 1), 1);
+    sc_scene *s =
+        load("m.csg", "polyhedron(points = [[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0], "
+                      "[0, 0, 1], [1, 0, 1.4], [0.2, 1, 1], [0.8, 1, 1.4]], "
+                      "faces = [[0, 1, 2, 3], [4, 7, 6, 5], [0, 4, 5, 1], "
+                      "[1, 5, 6, 2], [2, 6, 7, 3], [3, 7, 4, 0]]);");
+    assert_false(inside(s, 0.5, 0.5, 1.2));
+    assert_true(inside(s, 0.5, 0.5, 0.5));
+    assert_false(inside(s, 0.5, 0.5, 1.6));
+    sc_scene_release(s);
+}
+
 /* The triangles of face p[0..n) (a polyhedron's: reversed) against the
  * expected ones, each a set of three positions, in any order. */
 static void check_triangles(const char *name, const double (*p)[3], uint32_t n,
@@ -751,6 +778,7 @@ int main(void)
         cmocka_unit_test(test_mesh_errors),
         cmocka_unit_test(test_merged_copies),
         cmocka_unit_test(test_quad_diagonal),
+        cmocka_unit_test(test_bowtie),
         cmocka_unit_test(test_face_triangles),
         cmocka_unit_test(test_builder_open_mesh),
         cmocka_unit_test(test_import),

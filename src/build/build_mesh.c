@@ -251,8 +251,7 @@ sc_status build_mesh_prim(const build_ctx *c, const sc_location *loc, const char
  * All of it in float, as libtess2 computes (TESSreal). A quad whose
  * projection crosses itself (a bow tie) is cut by libtess2 at the crossing
  * and OpenSCAD mends the result in an order that depends on its hash
- * tables; such quads take the same rule, which may pick the other diagonal
- * than OpenSCAD (docs/meshes.md). */
+ * tables: build_mesh_solid splits those by bowtie_ear instead. */
 
 #define TESS_PI 3.14159265358979323846
 
@@ -420,6 +419,97 @@ int build_mesh_quad_diagonal(const vec3 q[4], int reversed)
     if (!((double)sum < TESS_PI + 0.01))
         diagonal = 1 - diagonal;
     return diagonal;
+}
+
+/* ---- bow ties ----
+ *
+ * A quad whose projection crosses itself is cut by libtess2 at the
+ * crossing (TESS_WINDING_ODD keeps both lobes), so every triangle it
+ * returns has the new point, and OpenSCAD 2021.01
+ * (GeometryUtils::tessellatePolygonWithHoles) drops them all. It then
+ * fills the face's four edges, left in its edge table, with ears
+ * (EdgeDict::triangulateLoops): the ear is cut at the first point of its
+ * table of points by outgoing edge, and the diagonal is the one that
+ * point is not on. Both tables are hash tables, so the first point is set
+ * by their iteration order, which is reproduced here: OpenSCAD's number
+ * of each point (the order in which its tessellation first meets the
+ * points, face by face, each face as OpenSCAD holds it), the edges
+ * (a, b) of the face keyed by boost::hash of the pair (1.74, 64-bit:
+ * hash_combine's multiply-xorshift mix), the points keyed by their
+ * number, and libstdc++'s unordered_map: 13 buckets from the first
+ * insertion (up to 13 entries), a key going to the front of the list, or
+ * just before the first key of its bucket when that bucket is taken.
+ * Checked against OpenSCAD 2021.01's STL export: 268 of 268 bow ties of
+ * five seeded twisted rings. */
+
+static uint64_t boost_hash_combine(uint64_t seed, uint64_t k)
+{
+    const uint64_t m = 0xc6a4a7935bd1e995u;
+    k *= m;
+    k ^= k >> 47;
+    k *= m;
+    seed ^= k;
+    seed *= m;
+    return seed + 0xe6546b64u;
+}
+
+/* The order in which libstdc++'s unordered_map lists count (<= 13) keys
+ * with hash codes hash[], inserted in index order: order[] gets indices. */
+static void unordered_order(const uint64_t *hash, int count, int *order)
+{
+    int listed = 0;
+    for (int i = 0; i < count; i++) {
+        int at = 0;
+        for (int j = 0; j < listed; j++)
+            if (hash[order[j]] % 13 == hash[i] % 13) {
+                at = j;
+                break;
+            }
+        memmove(&order[at + 1], &order[at], (size_t)(listed - at) * sizeof *order);
+        order[at] = i;
+        listed++;
+    }
+}
+
+/* The point of a bow tie (its position in g, OpenSCAD's numbers of the
+ * quad's points in the order OpenSCAD holds the face) at which OpenSCAD
+ * cuts its ear: the diagonal is the one not through it. */
+static int bowtie_ear(const uint32_t g[4])
+{
+    uint64_t hash[4];
+    int order[4];
+    for (int i = 0; i < 4; i++) /* edge i: g[i] -> g[i + 1] */
+        hash[i] = boost_hash_combine(boost_hash_combine(0, g[i]), g[(i + 1) % 4]);
+    unordered_order(hash, 4, order);
+    /* the points by outgoing edge, in the edge table's order */
+    uint64_t keys[4];
+    for (int i = 0; i < 4; i++)
+        keys[i] = g[order[i]];
+    int points[4];
+    unordered_order(keys, 4, points);
+    return order[points[0]];
+}
+
+int build_mesh_quad_crosses(const vec3 q[4], int reversed)
+{
+    float s[4], t[4];
+    if (!tess_project(q, 4, reversed, s, t))
+        return 0;
+    for (int k = 0; k < 2; k++) { /* edges k, k + 1 against k + 2, k + 3 */
+        int a = k, b = k + 1, c = k + 2, d = (k + 3) % 4;
+        double d1 = ((double)s[b] - s[a]) * ((double)t[c] - t[a]) -
+                    ((double)t[b] - t[a]) * ((double)s[c] - s[a]);
+        double d2 = ((double)s[b] - s[a]) * ((double)t[d] - t[a]) -
+                    ((double)t[b] - t[a]) * ((double)s[d] - s[a]);
+        double d3 = ((double)s[d] - s[c]) * ((double)t[a] - t[c]) -
+                    ((double)t[d] - t[c]) * ((double)s[a] - s[c]);
+        double d4 = ((double)s[d] - s[c]) * ((double)t[b] - t[c]) -
+                    ((double)t[d] - t[c]) * ((double)s[b] - s[c]);
+        if (((d1 > 0 && d2 < 0) || (d1 < 0 && d2 > 0)) &&
+            ((d3 > 0 && d4 < 0) || (d3 < 0 && d4 > 0)))
+            return 1;
+    }
+    return 0;
 }
 
 /* ---- OpenSCAD's triangulation of larger faces ----
@@ -1066,6 +1156,30 @@ int build_mesh_sound(const build_mesh_faces *f, const char *what, int numbered, 
                       f->face_count, why, size);
 }
 
+/* OpenSCAD's number of each point of f as its tessellation numbers them
+ * (tessellate_faces): in the order it first meets them, face by face, each
+ * face as OpenSCAD holds it (back to front when reversed). malloc'd; NULL
+ * when memory runs out. */
+static uint32_t *openscad_numbers(const build_mesh_faces *f, int reversed)
+{
+    uint32_t *numbers =
+        malloc((size_t)(f->point_count ? f->point_count : 1) * sizeof *numbers);
+    if (!numbers)
+        return NULL;
+    for (uint32_t i = 0; i < f->point_count; i++)
+        numbers[i] = UINT32_MAX;
+    uint32_t next = 0;
+    for (uint32_t i = 0; i < f->face_count; i++) {
+        uint32_t s = f->face_start[i], n = f->face_start[i + 1] - s;
+        for (uint32_t j = 0; j < n; j++) {
+            uint32_t p = f->indices[s + (reversed ? n - 1 - j : j)];
+            if (numbers[p] == UINT32_MAX)
+                numbers[p] = next++;
+        }
+    }
+    return numbers;
+}
+
 /* 1 when the face v[0..n) lies in one plane to float's resolution: every
  * point within 2^-23 of the face's extent from the plane through its
  * first point along Newell's normal. Any split of such a face is the same
@@ -1119,6 +1233,7 @@ sc_status build_mesh_solid(const build_ctx *c, const sc_location *loc, const cha
     size_t k = 0;
     vec3 *corners = NULL; /* a face's points, for the larger faces */
     uint32_t *local = NULL, corner_cap = 0;
+    uint32_t *numbers = NULL; /* OpenSCAD's numbers of the points, for bow ties */
     int oom = 0;
     for (uint32_t i = 0; i < f->face_count && !oom; i++) {
         const uint32_t *v = &f->indices[f->face_start[i]];
@@ -1127,7 +1242,19 @@ sc_status build_mesh_solid(const build_ctx *c, const sc_location *loc, const cha
         if (n == 4) {
             vec3 q[4] = {f->points[v[0]], f->points[v[1]], f->points[v[2]],
                          f->points[v[3]]};
-            first = (uint32_t)build_mesh_quad_diagonal(q, numbered);
+            if (!build_mesh_quad_crosses(q, numbered)) {
+                first = (uint32_t)build_mesh_quad_diagonal(q, numbered);
+            } else {
+                if (!numbers && !(numbers = openscad_numbers(f, numbered))) {
+                    oom = 1;
+                    break;
+                }
+                uint32_t g[4];
+                for (int j = 0; j < 4; j++)
+                    g[j] = numbers[v[numbered ? 3 - j : j]];
+                int ear = bowtie_ear(g);
+                first = (uint32_t)((numbered ? 3 - ear : ear) + 1) % 2;
+            }
         } else if (n > 4 && !face_planar(f->points, v, n)) {
             if (n > corner_cap) {
                 free(corners);
@@ -1161,6 +1288,7 @@ sc_status build_mesh_solid(const build_ctx *c, const sc_location *loc, const cha
     }
     free(corners);
     free(local);
+    free(numbers);
     if (oom) {
         free(tris);
         return err_nomem(c->error, loc);

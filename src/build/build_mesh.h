@@ -78,6 +78,12 @@ sc_status build_mesh_solid(const build_ctx *c, const sc_location *loc, const cha
  * hands to libtess2 back to front. */
 int build_mesh_quad_diagonal(const vec3 q[4], int reversed);
 
+/* 1 when the quad q[0..3] crosses itself in the plane libtess2 projects
+ * it onto (a bow tie; reversed as for build_mesh_quad_diagonal). OpenSCAD
+ * 2021.01 splits such a quad by the order of its hash tables, which
+ * build_mesh_solid follows (see build_mesh.c). */
+int build_mesh_quad_crosses(const vec3 q[4], int reversed);
+
 /* Splits the face p[0..n) into n - 2 triangles as OpenSCAD 2021.01 does
  * (libtess2's constrained Delaunay triangulation, see build_mesh.c),
  * writing 3 (n - 2) positions in p into tris, each triangle wound as the
