@@ -363,6 +363,182 @@ static void test_quad_diagonal(void **state)
     sc_scene_release(s);
 }
 
+/* Bow ties: a box whose top and back faces cross themselves in the plane
+ * libtess2 projects them onto. OpenSCAD 2021.01's STL export of this
+ * polyhedron splits both along their 0-2 diagonals (4-6 and 2-7), set by
+ * the order of its hash tables; the Delaunay rule of
+ * build_mesh_quad_diagonal picks the other ones. The point (0.5, 0.5,
+ * 1.2), under the top's 5-7 diagonal, has winding number 0 about
+ * OpenSCAD's split and the body's winding number about the other one
+ * (from the solid angles of the triangles): outside, not inside. */
+static void test_bowtie(void **state)
+{
+    (void)state;
+    vec3 top[4] = {v3(0, 0, 1), v3(0.8, 1, 1.4), v3(0.2, 1, 1), v3(1, 0, 1.4)};
+    vec3 back[4] = {v3(1, 1, 0), v3(0.2, 1, 1), v3(0.8, 1, 1.4), v3(0, 1, 0)};
+    assert_int_equal(build_mesh_quad_crosses(top, 1), 1);
+    assert_int_equal(build_mesh_quad_crosses(back, 1), 1);
+    assert_int_equal(build_mesh_quad_diagonal(top, 1), 1);
+    sc_scene *s =
+        load("m.csg", "polyhedron(points = [[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0], "
+                      "[0, 0, 1], [1, 0, 1.4], [0.2, 1, 1], [0.8, 1, 1.4]], "
+                      "faces = [[0, 1, 2, 3], [4, 7, 6, 5], [0, 4, 5, 1], "
+                      "[1, 5, 6, 2], [2, 6, 7, 3], [3, 7, 4, 0]]);");
+    assert_false(inside(s, 0.5, 0.5, 1.2));
+    assert_true(inside(s, 0.5, 0.5, 0.5));
+    assert_false(inside(s, 0.5, 0.5, 1.6));
+    sc_scene_release(s);
+}
+
+/* The triangles of face p[0..n) (a polyhedron's: reversed) against the
+ * expected ones, each a set of three positions, in any order. */
+static void check_triangles(const char *name, const double (*p)[3], uint32_t n,
+                            const uint32_t (*expected)[3], int split)
+{
+    vec3 q[16];
+    uint32_t tris[3 * 14];
+    for (uint32_t k = 0; k < n; k++)
+        q[k] = v3(p[k][0], p[k][1], p[k][2]);
+    assert_int_equal(build_mesh_face_triangles(q, n, 1, tris), split);
+    for (uint32_t i = 0; i < n - 2; i++) {
+        /* wound as the face: positions ascending up to a turn */
+        uint32_t *t = &tris[3 * i];
+        int turns = (t[0] > t[1]) + (t[1] > t[2]) + (t[2] > t[0]);
+        if (turns != 1)
+            fail_msg("%s: triangle %u %u %u is not wound as the face", name, t[0], t[1],
+                     t[2]);
+        int found = 0;
+        for (uint32_t j = 0; j < n - 2 && !found; j++) {
+            const uint32_t *e = expected[j];
+            int hits = 0;
+            for (int a = 0; a < 3; a++)
+                hits += t[a] == e[0] || t[a] == e[1] || t[a] == e[2];
+            found = hits == 3;
+        }
+        if (!found)
+            fail_msg("%s: triangle %u %u %u is not OpenSCAD's", name, t[0], t[1], t[2]);
+    }
+}
+
+/* Faces of more than four points: the triangles of each are OpenSCAD
+ * 2021.01's, read back from its STL export of a polyhedron with that face
+ * (the faces of random drums with non-planar caps, tests/crosscheck has
+ * such models). */
+static void test_face_triangles(void **state)
+{
+    (void)state;
+    /* Six points on the unit circle, lifted a little: all within
+     * libtess2's 0.01 of one circle, so no edge is flipped and the
+     * first triangulation of the monotone region stays (not a fan). */
+    static const double hexagon[6][3] = {
+        {1, 0, 0.009264},   {0.5, 0.866025, -0.036958},  {-0.5, 0.866025, 0.041594},
+        {-1, 0, -0.002595}, {-0.5, -0.866025, 0.008085}, {0.5, -0.866025, 0.01056}};
+    static const uint32_t hexagon_tris[4][3] = {
+        {0, 1, 5}, {1, 2, 4}, {1, 4, 5}, {2, 3, 4}};
+    check_triangles("hexagon", hexagon, 6, hexagon_tris, 1);
+    /* a convex nonagon: the monotone rule, then Delaunay flips */
+    static const double nonagon[9][3] = {
+        {8.93982, 0.031994, 0.050551},   {8.833235, 0.809458, 0.257367},
+        {7.975022, 1.142287, 0.102764},  {7.464155, 0.679345, 0.27878},
+        {6.897625, 0.367057, 0.12829},   {7.216196, -0.409761, 0.044119},
+        {7.412445, -0.700103, 0.212365}, {8.011887, -1.195863, 0.180357},
+        {8.645117, -0.716572, -0.123665}};
+    static const uint32_t nonagon_tris[7][3] = {
+        {0, 1, 3}, {0, 3, 5}, {0, 5, 8}, {1, 2, 3}, {3, 4, 5}, {5, 6, 8}, {6, 7, 8}};
+    check_triangles("nonagon", nonagon, 9, nonagon_tris, 1);
+    /* a star whose projection is not monotone */
+    static const double star[9][3] = {
+        {16.48335, 4.019469, 0.241053},  {16.692902, 4.34504, 0.295674},
+        {15.980456, 4.396562, 0.169869}, {15.730244, 4.882913, 0.246536},
+        {15.105755, 4.252253, 0.1664},   {15.613472, 3.918523, -0.147497},
+        {15.65065, 3.139608, -0.217512}, {16.195434, 3.271519, -0.277944},
+        {16.621973, 3.272737, -0.272987}};
+    static const uint32_t star_tris[7][3] = {{0, 1, 2}, {0, 2, 5}, {0, 5, 7}, {0, 7, 8},
+                                             {2, 3, 4}, {2, 4, 5}, {5, 6, 7}};
+    check_triangles("star", star, 9, star_tris, 1);
+    /* points 2 and 3 on one point of the projection: libtess2 keeps 3
+     * (listed first), OpenSCAD mends the sliver 1 2 3 */
+    static const double pinched[6][3] = {
+        {8.34369, 1.78855, 0.670807},  {7.13122, 2.36308, 0.141891},
+        {6.18934, 2.85873, -0.174403}, {6.18934, 2.85873, -0.681548},
+        {6.4757, 2.14586, -0.558831},  {7.07732, 1.51709, -0.172382}};
+    static const uint32_t pinched_tris[4][3] = {
+        {0, 1, 5}, {1, 2, 3}, {1, 3, 4}, {1, 4, 5}};
+    check_triangles("pinched", pinched, 6, pinched_tris, 1);
+    /* A projection that crosses itself (edges 0-1 and 4-5, in the plane
+     * libtess2 picks): not libtess2's split, a fan about point 0. */
+    static const double folded[6][3] = {
+        {7.07732, 1.51709, -0.172382}, {6.4757, 2.14586, -0.558831},
+        {6.18934, 2.85873, -0.681548}, {7.13314, 3.29466, -0.928364},
+        {6.87558, 2.27837, -1.0461},   {6.79716, 1.45703, -0.949727}};
+    static const uint32_t fan[4][3] = {{0, 1, 2}, {0, 2, 3}, {0, 3, 4}, {0, 4, 5}};
+    check_triangles("folded", folded, 6, fan, 0);
+}
+
+/* A mesh a builder makes that is not closed (here a cube without its
+ * top, as an extrusion, surface or hull could make): as a polyhedron,
+ * left out with a warning in faithful mode, drawn by the parity rule
+ * with a warning in exact mode, an error with --strict. */
+static void test_builder_open_mesh(void **state)
+{
+    (void)state;
+    static const double corners[8][3] = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0},
+                                         {0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}};
+    static const uint32_t indices[20] = {0, 3, 2, 1, 0, 1, 5, 4, 1, 2,
+                                         6, 5, 2, 3, 7, 6, 3, 0, 4, 7};
+    static const uint32_t starts[6] = {0, 4, 8, 12, 16, 20};
+    vec3 points[8];
+    for (int k = 0; k < 8; k++)
+        points[k] = v3(corners[k][0], corners[k][1], corners[k][2]);
+    const sc_location loc = {"m.csg", 3, 5};
+    const char *why =
+        "linear_extrude is not closed (edge (0, 0, 1)-(1, 0, 1) is used by 1 "
+        "face)";
+    for (int mode = 0; mode < 3; mode++) { /* faithful, exact, strict */
+        csg_builder *csg = csg_builder_new();
+        assert_non_null(csg);
+        sc_error e;
+        memset(&e, 0, sizeof e);
+        build_notes notes = {NULL, 0, 0};
+        build_ctx c = {.file = "m.csg",
+                       .csg = csg,
+                       .error = &e,
+                       .faithful = mode == 0,
+                       .notes = &notes,
+                       .strict = mode == 2};
+        prim p;
+        memset(&p, 0, sizeof p);
+        const char *empty = NULL;
+        sc_status st = build_mesh_prim(&c, &loc, "linear_extrude", 0, points, 8, indices,
+                                       starts, 5, &p, &empty);
+        char expected[512];
+        if (mode == 2) {
+            assert_int_equal(st, SC_ERR_SEMANTIC);
+            assert_string_equal(e.message, why);
+            assert_int_equal(notes.count, 0);
+        } else {
+            assert_int_equal(st, SC_OK);
+            assert_int_equal(notes.count, 1);
+            assert_int_equal(notes.items[0].line, 3);
+            snprintf(expected, sizeof expected, "%s; %s", why,
+                     mode == 0
+                         ? "left out, as OpenSCAD leaves it out (\"The given mesh is "
+                           "not closed! Unable to convert to CGAL_Nef_Polyhedron.\")"
+                         : "rendered by the parity rule (--strict makes it an error)");
+            assert_string_equal(notes.items[0].message, expected);
+            if (mode == 0) {
+                assert_non_null(empty);
+                assert_string_equal(empty, "");
+            } else {
+                assert_null(empty);
+                assert_int_equal(p.kind, PRIM_MESH);
+            }
+        }
+        free(notes.items);
+        csg_builder_free(csg);
+    }
+}
+
 static const char *work(void)
 {
     mkdir(SPANCAST_TEST_WORK, 0777);
@@ -602,6 +778,9 @@ int main(void)
         cmocka_unit_test(test_mesh_errors),
         cmocka_unit_test(test_merged_copies),
         cmocka_unit_test(test_quad_diagonal),
+        cmocka_unit_test(test_bowtie),
+        cmocka_unit_test(test_face_triangles),
+        cmocka_unit_test(test_builder_open_mesh),
         cmocka_unit_test(test_import),
         cmocka_unit_test(test_linear_extrude),
     };

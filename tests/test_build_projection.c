@@ -34,7 +34,12 @@ static sc_status region_of(const char *text, twod_region *r, char *error, size_t
     assert_int_equal(st, SC_OK);
     csg_builder *csg = csg_builder_new();
     assert_non_null(csg);
-    build_ctx c = {"m.csg", csg, &e, 0, &warning, NULL};
+    build_ctx c = {.file = "m.csg",
+                   .csg = csg,
+                   .error = &e,
+                   .faithful = 0,
+                   .note = &warning,
+                   .notes = NULL};
     twod_init(r);
     model *lowered = NULL;
     assert_int_equal(model_lower_twod("m.csg", tree->first, &lowered, &e), SC_OK);

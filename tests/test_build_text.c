@@ -37,7 +37,12 @@ static void lay_out(laid *l, const char *node)
     memset(l, 0, sizeof *l);
     assert_int_equal(parse_text("t.csg", node, strlen(node), &l->tree, &e), SC_OK);
     assert_int_equal(model_lower_twod("t.csg", l->tree->first, &l->model, &e), SC_OK);
-    build_ctx c = {"t.csg", NULL, &e, 0, NULL, NULL};
+    build_ctx c = {.file = "t.csg",
+                   .csg = NULL,
+                   .error = &e,
+                   .faithful = 0,
+                   .note = NULL,
+                   .notes = NULL};
     assert_int_equal(text_shape_build(&c, l->model->first, &l->shape, &l->note), SC_OK);
 }
 
@@ -276,7 +281,12 @@ static sc_status text_polygons_of(const char *src, twod_region *poly, char *mess
     assert_int_equal(parse_text("t.csg", src, strlen(src), &tree, &e), SC_OK);
     model *lowered;
     assert_int_equal(model_lower_twod("t.csg", tree->first, &lowered, &e), SC_OK);
-    build_ctx c = {"t.csg", NULL, &e, 1, NULL, NULL};
+    build_ctx c = {.file = "t.csg",
+                   .csg = NULL,
+                   .error = &e,
+                   .faithful = 1,
+                   .note = NULL,
+                   .notes = NULL};
     twod_init(poly);
     sc_status st = text_faithful_polygons(&c, lowered->first, poly, NULL);
     if (st != SC_OK)

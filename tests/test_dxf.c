@@ -401,7 +401,12 @@ static sc_status import_region(const char *csg, twod_region *r, char *message,
     sc_error e;
     assert_int_equal(parse_text(file, csg, strlen(csg), &tree, &e), SC_OK);
     build_notes notes = {NULL, 0, 0};
-    build_ctx c = {file, NULL, &e, 1, NULL, &notes};
+    build_ctx c = {.file = file,
+                   .csg = NULL,
+                   .error = &e,
+                   .faithful = 1,
+                   .note = NULL,
+                   .notes = &notes};
     twod_init(r);
     model *lowered = NULL;
     assert_int_equal(model_lower_twod(file, tree->first, &lowered, &e), SC_OK);

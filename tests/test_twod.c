@@ -32,7 +32,12 @@ static sc_status region_of(const char *text, twod_region *r, char *error, size_t
     sc_error e;
     sc_status st = parse_text("m.csg", text, strlen(text), &tree, &e);
     assert_int_equal(st, SC_OK);
-    build_ctx c = {"m.csg", NULL, &e, 1, NULL, NULL};
+    build_ctx c = {.file = "m.csg",
+                   .csg = NULL,
+                   .error = &e,
+                   .faithful = 1,
+                   .note = NULL,
+                   .notes = NULL};
     twod_init(r);
     model *lowered = NULL;
     assert_int_equal(model_lower_twod("m.csg", tree->first, &lowered, &e), SC_OK);
@@ -336,7 +341,12 @@ static void test_errors(void **state)
         sc_error e;
         assert_int_equal(parse_text("m.csg", text, strlen(text), &tree, &e), SC_OK);
         build_notes notes = {NULL, 0, 0};
-        build_ctx c = {"m.csg", NULL, &e, 1, NULL, &notes};
+        build_ctx c = {.file = "m.csg",
+                       .csg = NULL,
+                       .error = &e,
+                       .faithful = 1,
+                       .note = NULL,
+                       .notes = &notes};
         model *lowered = NULL;
         assert_int_equal(model_lower_twod("m.csg", tree->first, &lowered, &e), SC_OK);
         twod_region r;
@@ -391,7 +401,12 @@ static double extrude_volume(const char *text, int faithful, uint32_t *triangles
     assert_int_equal(parse_text("m.csg", text, strlen(text), &tree, &e), SC_OK);
     csg_builder *b = csg_builder_new();
     assert_non_null(b);
-    build_ctx c = {"m.csg", b, &e, faithful, NULL, NULL};
+    build_ctx c = {.file = "m.csg",
+                   .csg = b,
+                   .error = &e,
+                   .faithful = faithful,
+                   .note = NULL,
+                   .notes = NULL};
     prim p;
     const char *empty = NULL;
     model *lowered = NULL;

@@ -125,8 +125,13 @@ static sc_status warn(builder *b, const sc_location *loc, const char *format, ..
  * the node is built, nowhere where it is only checked. */
 static build_ctx context(builder *b, int emit, sc_error *note)
 {
-    build_ctx c = {b->file,     b->csg, b->error,
-                   b->faithful, note,   emit ? &b->warnings : NULL};
+    build_ctx c = {.file = b->file,
+                   .csg = b->csg,
+                   .error = b->error,
+                   .faithful = b->faithful,
+                   .note = note,
+                   .notes = emit ? &b->warnings : NULL,
+                   .strict = b->strict};
     return c;
 }
 

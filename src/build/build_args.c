@@ -18,11 +18,13 @@ sc_status build_pending(const build_ctx *c, const model_node *n)
 sc_status build_notes_add(build_notes *notes, sc_error *error, const sc_location *loc,
                           const char *format, va_list args)
 {
+    char message[SC_ERROR_MESSAGE_MAX];
+    vsnprintf(message, sizeof message, format, args);
+    if (!message[0]) /* an empty warning: a part left out, its reason given before */
+        return SC_OK;
     if (!grow_array((void **)&notes->items, &notes->cap, notes->count + 1,
                     sizeof *notes->items))
         return err_nomem(error, NULL);
-    char message[SC_ERROR_MESSAGE_MAX];
-    vsnprintf(message, sizeof message, format, args);
     err_set(&notes->items[notes->count++], SC_OK, loc, "%s", message);
     return SC_OK;
 }

@@ -31,10 +31,13 @@ typedef struct build_ctx {
     /* where the warnings of a subtree's walk go (a 3D child a 2D operation
      * ignores), or NULL where the subtree is only checked, not built */
     build_notes *notes;
+    /* --strict: a mesh a builder makes that is not closed is an error, not a
+     * warning (build_mesh_prim) */
+    int strict;
 } build_ctx;
 
-/* Adds the warning format/args at loc to notes; fails only when memory
- * runs out (an error in *error). */
+/* Adds the warning format/args at loc to notes (nothing when it comes out
+ * empty); fails only when memory runs out (an error in *error). */
 sc_status build_notes_add(build_notes *notes, sc_error *error, const sc_location *loc,
                           const char *format, va_list args) SC_PRINTF(4, 0);
 

@@ -409,7 +409,7 @@ static sc_status extrude(const build_ctx *c, const sc_location *loc, const param
     else
         st = build_mesh_prim(c, loc, "linear_extrude", 0, m.points, (uint32_t)total,
                              m.indices, m.face_start, (uint32_t)m.face_count, out, empty);
-    if (st == SC_OK && *empty)
+    if (st == SC_OK && *empty && (*empty)[0]) /* "": left out, with its warning */
         *empty = "linear_extrude without height or area is empty";
     mesh_free(&m);
     return st;

@@ -2,17 +2,18 @@
  * import("file.stl" | "file.off").
  *
  * Polyhedra and imports are read as OpenSCAD 2021.01 reads them: their
- * points merged on its grid of 2^-20 (build_mesh_merge), quads split along
- * the diagonal its libtess2 triangulation picks (build_mesh_quad_diagonal),
- * larger faces into fans about their first point. A solid needs a mesh
+ * points merged on its grid of 2^-20 (build_mesh_merge), non-planar faces
+ * split into the triangles its libtess2 triangulation makes
+ * (build_mesh_quad_diagonal, build_mesh_face_triangles), planar ones of
+ * five or more points into fans about their first point. A solid needs a mesh
  * that is closed (every undirected edge in exactly two faces) and
  * consistently oriented (those two faces run along the edge in opposite
  * directions). One that is not is a warning naming an offending edge, and
  * then left out in faithful mode, as OpenSCAD leaves it out of its CGAL
  * operations, or in exact mode built with the parity rule (prim_mesh.h),
  * so the user still sees it; with --strict it is an error. The meshes
- * other builders make (extrusions, surface, hull: build_mesh_prim) must be
- * sound. Which way the faces wind does not matter: OpenSCAD lists them
+ * other builders make (extrusions, surface, hull: build_mesh_prim) are
+ * treated the same way. Which way the faces wind does not matter: OpenSCAD lists them
  * clockwise seen from outside, STL and OFF files usually the other way, so
  * the sign of the enclosed volume (divergence theorem, sum of a . (b x c)
  * / 6 over the triangles, about the centre of the bounds for accuracy)
@@ -174,6 +175,10 @@ static sc_status finish_mesh(const build_ctx *c, const sc_location *loc, int num
     return SC_OK;
 }
 
+/* OpenSCAD's message for a mesh it cannot take into CGAL. */
+static const char openscad_not_closed[] =
+    "The given mesh is not closed! Unable to convert to CGAL_Nef_Polyhedron.";
+
 sc_status build_mesh_prim(const build_ctx *c, const sc_location *loc, const char *what,
                           int numbered, const vec3 *points, uint32_t point_count,
                           const uint32_t *indices, const uint32_t *face_start,
@@ -184,8 +189,13 @@ sc_status build_mesh_prim(const build_ctx *c, const sc_location *loc, const char
                            why, sizeof why);
     if (sound < 0)
         return err_nomem(c->error, loc);
-    if (!sound)
+    if (!sound && c->strict)
         return err_set(c->error, SC_ERR_SEMANTIC, loc, "%s", why);
+    if (!sound && c->faithful) {
+        *empty = ""; /* the reason is the warning */
+        return build_note(c, loc, "%s; left out, as OpenSCAD leaves it out (\"%s\")", why,
+                          openscad_not_closed);
+    }
     size_t tri_count = 0;
     for (uint32_t f = 0; f < face_count; f++)
         tri_count += face_start[f + 1] - face_start[f] - 2;
@@ -205,8 +215,11 @@ sc_status build_mesh_prim(const build_ctx *c, const sc_location *loc, const char
         }
     }
     sc_status st =
-        finish_mesh(c, loc, numbered, points, point_count, tris, k, 0, out, empty);
+        finish_mesh(c, loc, numbered, points, point_count, tris, k, !sound, out, empty);
     free(tris);
+    if (st == SC_OK && !sound && !*empty)
+        st = build_note(
+            c, loc, "%s; rendered by the parity rule (--strict makes it an error)", why);
     return st;
 }
 
@@ -240,8 +253,7 @@ sc_status build_mesh_prim(const build_ctx *c, const sc_location *loc, const char
  * All of it in float, as libtess2 computes (TESSreal). A quad whose
  * projection crosses itself (a bow tie) is cut by libtess2 at the crossing
  * and OpenSCAD mends the result in an order that depends on its hash
- * tables; such quads take the same rule, which may pick the other diagonal
- * than OpenSCAD (docs/meshes.md). */
+ * tables: build_mesh_solid splits those by bowtie_ear instead. */
 
 #define TESS_PI 3.14159265358979323846
 
@@ -267,28 +279,39 @@ static float tess_angle(const float *s, const float *t, int v0, int v1, int v2)
     return (float)acos((double)num);
 }
 
-int build_mesh_quad_diagonal(const vec3 q[4], int reversed)
+/* libtess2's projection of the polygon p[0..n) (n <= TESS_MAX_POINTS) into
+ * s[k], t[k] (k a position in p), in float: the normal as ComputeNormal
+ * finds it on libtess2's vertex list, which holds the contour from its
+ * second point on, then its first; the contour is p reversed when
+ * reversed (a polyhedron's face). The t axis is not yet turned for the
+ * contour's orientation. Returns 0 when a point is beyond float or the
+ * points lie on a line (no area either way). */
+static int tess_project(const vec3 *p, uint32_t n, int reversed, float *s, float *t)
 {
-    /* libtess2's vertex list: the contour from its second point on */
-    static const int lists[2][4] = {{1, 2, 3, 0}, {2, 1, 0, 3}};
-    const int *listed = lists[reversed != 0];
-    float v[4][3];
-    for (int k = 0; k < 4; k++) /* beyond float, as beyond OpenSCAD: the first */
-        if (!(v3_max_abs(q[k]) <= FLT_MAX))
+    float small[16][3];
+    float(*v)[3] = n <= 16 ? small : malloc((size_t)n * sizeof *v);
+    if (!v)
+        return 0;
+    for (uint32_t k = 0; k < n; k++) {
+        if (!(v3_max_abs(p[k]) <= FLT_MAX)) { /* beyond float, as beyond OpenSCAD */
+            if (v != small)
+                free(v);
             return 0;
-    for (int k = 0; k < 4; k++) {
-        v[k][0] = (float)q[k].x;
-        v[k][1] = (float)q[k].y;
-        v[k][2] = (float)q[k].z;
+        }
+        v[k][0] = (float)p[k].x;
+        v[k][1] = (float)p[k].y;
+        v[k][2] = (float)p[k].z;
     }
+    /* listed j: contour point j + 1, then contour point 0 */
+#define LISTED(j) (reversed ? n - 1 - ((j) + 1) % n : ((j) + 1) % n)
     float lo[3], hi[3];
-    int lo_at[3], hi_at[3];
+    uint32_t lo_at[3], hi_at[3];
     for (int a = 0; a < 3; a++) {
-        lo[a] = hi[a] = v[listed[0]][a];
-        lo_at[a] = hi_at[a] = listed[0];
+        lo[a] = hi[a] = v[LISTED(0)][a];
+        lo_at[a] = hi_at[a] = LISTED(0);
     }
-    for (int j = 0; j < 4; j++) {
-        int k = listed[j];
+    for (uint32_t j = 0; j < n; j++) {
+        uint32_t k = LISTED(j);
         for (int a = 0; a < 3; a++) {
             if (v[k][a] < lo[a]) {
                 lo[a] = v[k][a];
@@ -310,30 +333,45 @@ int build_mesh_quad_diagonal(const vec3 q[4], int reversed)
         const float *v1 = v[lo_at[i]], *v2 = v[hi_at[i]];
         float d1[3] = {v1[0] - v2[0], v1[1] - v2[1], v1[2] - v2[2]};
         float most = 0;
-        for (int j = 0; j < 4; j++) {
-            const float *p = v[listed[j]];
-            float d2[3] = {p[0] - v2[0], p[1] - v2[1], p[2] - v2[2]};
-            float n[3] = {d1[1] * d2[2] - d1[2] * d2[1], d1[2] * d2[0] - d1[0] * d2[2],
+        for (uint32_t j = 0; j < n; j++) {
+            const float *q = v[LISTED(j)];
+            float d2[3] = {q[0] - v2[0], q[1] - v2[1], q[2] - v2[2]};
+            float c[3] = {d1[1] * d2[2] - d1[2] * d2[1], d1[2] * d2[0] - d1[0] * d2[2],
                           d1[0] * d2[1] - d1[1] * d2[0]};
-            float len2 = n[0] * n[0] + n[1] * n[1] + n[2] * n[2];
+            float len2 = c[0] * c[0] + c[1] * c[1] + c[2] * c[2];
             if (len2 > most) {
                 most = len2;
-                memcpy(norm, n, sizeof norm);
+                memcpy(norm, c, sizeof norm);
             }
         }
-        if (most <= 0)
-            return 0; /* the points on a line: no area either way */
+        if (most <= 0) {
+            if (v != small)
+                free(v);
+            return 0;
+        }
     }
+#undef LISTED
     int axis = 0;
     if (fabsf(norm[1]) > fabsf(norm[0]))
         axis = 1;
     if (fabsf(norm[2]) > fabsf(norm[axis]))
         axis = 2;
-    float s[4], t[4];
-    for (int k = 0; k < 4; k++) {
+    for (uint32_t k = 0; k < n; k++) {
         s[k] = v[k][(axis + 1) % 3];
         t[k] = norm[axis] > 0 ? v[k][(axis + 2) % 3] : -v[k][(axis + 2) % 3];
     }
+    if (v != small)
+        free(v);
+    return 1;
+}
+
+int build_mesh_quad_diagonal(const vec3 q[4], int reversed)
+{
+    static const int lists[2][4] = {{1, 2, 3, 0}, {2, 1, 0, 3}};
+    const int *listed = lists[reversed != 0];
+    float s[4], t[4];
+    if (!tess_project(q, 4, reversed, s, t))
+        return 0;
     /* the contour: p3 p2 p1 p0 when reversed, else p0 p1 p2 p3 */
     float area = 0;
     for (int j = 0; j < 4; j++) {
@@ -383,6 +421,555 @@ int build_mesh_quad_diagonal(const vec3 q[4], int reversed)
     if (!((double)sum < TESS_PI + 0.01))
         diagonal = 1 - diagonal;
     return diagonal;
+}
+
+/* ---- bow ties ----
+ *
+ * A quad whose projection crosses itself is cut by libtess2 at the
+ * crossing (TESS_WINDING_ODD keeps both lobes), so every triangle it
+ * returns has the new point, and OpenSCAD 2021.01
+ * (GeometryUtils::tessellatePolygonWithHoles) drops them all. It then
+ * fills the face's four edges, left in its edge table, with ears
+ * (EdgeDict::triangulateLoops): the ear is cut at the first point of its
+ * table of points by outgoing edge, and the diagonal is the one that
+ * point is not on. Both tables are hash tables, so the first point is set
+ * by their iteration order, which is reproduced here: OpenSCAD's number
+ * of each point (the order in which its tessellation first meets the
+ * points, face by face, each face as OpenSCAD holds it), the edges
+ * (a, b) of the face keyed by boost::hash of the pair (1.74, 64-bit:
+ * hash_combine's multiply-xorshift mix), the points keyed by their
+ * number, and libstdc++'s unordered_map: 13 buckets from the first
+ * insertion (up to 13 entries), a key going to the front of the list, or
+ * just before the first key of its bucket when that bucket is taken.
+ * Checked against OpenSCAD 2021.01's STL export: 268 of 268 bow ties of
+ * five seeded twisted rings. */
+
+static uint64_t boost_hash_combine(uint64_t seed, uint64_t k)
+{
+    const uint64_t m = 0xc6a4a7935bd1e995u;
+    k *= m;
+    k ^= k >> 47;
+    k *= m;
+    seed ^= k;
+    seed *= m;
+    return seed + 0xe6546b64u;
+}
+
+/* The order in which libstdc++'s unordered_map lists count (<= 13) keys
+ * with hash codes hash[], inserted in index order: order[] gets indices. */
+static void unordered_order(const uint64_t *hash, int count, int *order)
+{
+    int listed = 0;
+    for (int i = 0; i < count; i++) {
+        int at = 0;
+        for (int j = 0; j < listed; j++)
+            if (hash[order[j]] % 13 == hash[i] % 13) {
+                at = j;
+                break;
+            }
+        memmove(&order[at + 1], &order[at], (size_t)(listed - at) * sizeof *order);
+        order[at] = i;
+        listed++;
+    }
+}
+
+/* The point of a bow tie (its position in g, OpenSCAD's numbers of the
+ * quad's points in the order OpenSCAD holds the face) at which OpenSCAD
+ * cuts its ear: the diagonal is the one not through it. */
+static int bowtie_ear(const uint32_t g[4])
+{
+    uint64_t hash[4];
+    int order[4];
+    for (int i = 0; i < 4; i++) /* edge i: g[i] -> g[i + 1] */
+        hash[i] = boost_hash_combine(boost_hash_combine(0, g[i]), g[(i + 1) % 4]);
+    unordered_order(hash, 4, order);
+    /* the points by outgoing edge, in the edge table's order */
+    uint64_t keys[4];
+    for (int i = 0; i < 4; i++)
+        keys[i] = g[order[i]];
+    int points[4];
+    unordered_order(keys, 4, points);
+    return order[points[0]];
+}
+
+int build_mesh_quad_crosses(const vec3 q[4], int reversed)
+{
+    float s[4], t[4];
+    if (!tess_project(q, 4, reversed, s, t))
+        return 0;
+    for (int k = 0; k < 2; k++) { /* edges k, k + 1 against k + 2, k + 3 */
+        int a = k, b = k + 1, c = k + 2, d = (k + 3) % 4;
+        double d1 = ((double)s[b] - s[a]) * ((double)t[c] - t[a]) -
+                    ((double)t[b] - t[a]) * ((double)s[c] - s[a]);
+        double d2 = ((double)s[b] - s[a]) * ((double)t[d] - t[a]) -
+                    ((double)t[b] - t[a]) * ((double)s[d] - s[a]);
+        double d3 = ((double)s[d] - s[c]) * ((double)t[a] - t[c]) -
+                    ((double)t[d] - t[c]) * ((double)s[a] - s[c]);
+        double d4 = ((double)s[d] - s[c]) * ((double)t[b] - t[c]) -
+                    ((double)t[d] - t[c]) * ((double)s[b] - s[c]);
+        if (((d1 > 0 && d2 < 0) || (d1 < 0 && d2 > 0)) &&
+            ((d3 > 0 && d4 < 0) || (d3 < 0 && d4 > 0)))
+            return 1;
+    }
+    return 0;
+}
+
+/* ---- OpenSCAD's triangulation of larger faces ----
+ *
+ * A face of five or more points goes to libtess2 like a quad: projected
+ * as above (tess_project), its contour turned counter-clockwise, then
+ * swept into monotone regions, each region triangulated
+ * (tessMeshTessellateMonoRegion), and the triangles refined by edge flips
+ * (tessMeshRefineDelaunay). The flips go on until every inner edge passes
+ * libtess2's test (the two angles facing it sum to less than pi + 0.01),
+ * so where no four points lie within that tolerance of one circle the
+ * result is the constrained Delaunay triangulation, which is unique
+ * whatever the first triangulation was. Where four points do, the first
+ * triangulation and the order of the flips decide, so both are followed
+ * as libtess2 does them: a small half-edge mesh with libtess2's own
+ * operations (tessMeshConnect, tessMeshFlipEdge), its order of faces (a
+ * new face goes just before the face it was cut from) and its stack of
+ * edges.
+ *
+ * A projection that is monotone along s (one leftmost and one rightmost
+ * point in (s, t) order, which every convex one is) is a single region:
+ * libtess2's sweep adds no edge inside it, and the region is split by
+ * libtess2's monotone rule, exactly. Any other simple projection is
+ * split into regions by the sweep, which is not reproduced: it is cut
+ * into ears instead and then flipped the same way, so only its ties may
+ * differ from OpenSCAD. A projection that crosses or touches itself, or
+ * has two points on one point of the plane, is split as a fan about its
+ * first point (docs/meshes.md). */
+
+#define TESS_MAX_POINTS 4096u /* larger non-planar faces are fans */
+
+typedef struct tess_mesh {
+    const float *s, *t; /* the points, by contour position */
+    uint32_t *org;      /* per half-edge; the other half of e is e ^ 1 */
+    uint32_t *lnext, *lprev, *lface;
+    unsigned char *mark;
+    uint32_t edges;      /* half-edges in use */
+    uint32_t *face_next; /* the face list; face 0 is its head */
+    uint32_t *face_prev, *face_edge;
+    unsigned char *inside;
+    uint32_t faces;
+    uint32_t edge_cap, face_cap; /* the arrays' sizes */
+    int full;                    /* a cut found no room: not a simple polygon */
+} tess_mesh;
+
+enum { TESS_HEAD, TESS_OUTSIDE, TESS_REGION };
+
+#define TESS_DST(m, e) ((m)->org[(e) ^ 1u])
+
+static int tess_leq(const tess_mesh *m, uint32_t a, uint32_t b)
+{
+    return m->s[a] < m->s[b] || (m->s[a] == m->s[b] && m->t[a] <= m->t[b]);
+}
+
+/* libtess2's EdgeSign (tesedgeSign), in float. */
+static float tess_edge_sign(const tess_mesh *m, uint32_t u, uint32_t v, uint32_t w)
+{
+    float gap_l = m->s[v] - m->s[u], gap_r = m->s[w] - m->s[v];
+    if (gap_l + gap_r > 0)
+        return (m->t[v] - m->t[w]) * gap_l + (m->t[v] - m->t[u]) * gap_r;
+    return 0;
+}
+
+/* tessMeshConnect within one face: a new edge from the end of e_org to
+ * the start of e_dst; the loop from e_dst round to e_org becomes a new
+ * face just before the old one in the list. Returns the new half-edge
+ * (its other half stays in the old face). */
+static uint32_t tess_connect(tess_mesh *m, uint32_t e_org, uint32_t e_dst)
+{
+    if (m->edges + 2 > m->edge_cap || m->faces + 1 > m->face_cap) {
+        m->full = 1;
+        return e_dst ^ 1u;
+    }
+    uint32_t e = m->edges, sym = e + 1;
+    m->edges += 2;
+    uint32_t face = m->lface[e_org];
+    uint32_t after = m->lnext[e_org], before = m->lprev[e_dst];
+    m->org[e] = TESS_DST(m, e_org);
+    m->org[sym] = m->org[e_dst];
+    m->mark[e] = m->mark[sym] = 0;
+    m->lnext[e_org] = e;
+    m->lprev[e] = e_org;
+    m->lnext[e] = e_dst;
+    m->lprev[e_dst] = e;
+    m->lnext[before] = sym;
+    m->lprev[sym] = before;
+    m->lnext[sym] = after;
+    m->lprev[after] = sym;
+    m->lface[sym] = face;
+    m->face_edge[face] = sym;
+    uint32_t f = m->faces++;
+    m->face_prev[f] = m->face_prev[face];
+    m->face_next[m->face_prev[face]] = f;
+    m->face_next[f] = face;
+    m->face_prev[face] = f;
+    m->face_edge[f] = e;
+    m->inside[f] = m->inside[face];
+    uint32_t x = e;
+    do {
+        m->lface[x] = f;
+        x = m->lnext[x];
+    } while (x != e);
+    return e;
+}
+
+/* tessMeshTessellateMonoRegion on the region face. Returns 0 when it
+ * makes no progress (the region was not monotone after all). */
+static int tess_mono_region(tess_mesh *m, uint32_t n)
+{
+    uint32_t up = m->face_edge[TESS_REGION];
+    long guard = 4 * (long)n + 8;
+    while (tess_leq(m, TESS_DST(m, up), m->org[up]) && guard-- > 0)
+        up = m->lprev[up];
+    while (tess_leq(m, m->org[up], TESS_DST(m, up)) && guard-- > 0)
+        up = m->lnext[up];
+    uint32_t lo = m->lprev[up];
+    while (m->lnext[up] != lo) {
+        if (guard-- <= 0 || m->full)
+            return 0;
+        if (tess_leq(m, TESS_DST(m, up), m->org[lo])) {
+            while (!m->full && m->lnext[lo] != up &&
+                   (tess_leq(m, TESS_DST(m, m->lnext[lo]), m->org[m->lnext[lo]]) ||
+                    tess_edge_sign(m, m->org[lo], TESS_DST(m, lo),
+                                   TESS_DST(m, m->lnext[lo])) <= 0))
+                lo = tess_connect(m, m->lnext[lo], lo) ^ 1u;
+            lo = m->lprev[lo];
+        } else {
+            while (!m->full && m->lnext[lo] != up &&
+                   (tess_leq(m, m->org[m->lprev[up]], TESS_DST(m, m->lprev[up])) ||
+                    tess_edge_sign(m, TESS_DST(m, up), m->org[up],
+                                   m->org[m->lprev[up]]) >= 0))
+                up = tess_connect(m, up, m->lprev[up]) ^ 1u;
+            up = m->lnext[up];
+        }
+    }
+    while (!m->full && m->lnext[m->lnext[lo]] != up)
+        lo = tess_connect(m, m->lnext[lo], lo) ^ 1u;
+    return !m->full;
+}
+
+static double tess_cross(const tess_mesh *m, uint32_t a, uint32_t b, uint32_t c)
+{
+    return ((double)m->s[b] - m->s[a]) * ((double)m->t[c] - m->t[a]) -
+           ((double)m->t[b] - m->t[a]) * ((double)m->s[c] - m->s[a]);
+}
+
+/* Cuts the region face into ears (a simple polygon, counter-clockwise).
+ * Returns 0 when no ear is found (a projection too close to degenerate). */
+static int tess_ears(tess_mesh *m)
+{
+    for (;;) {
+        uint32_t start = m->face_edge[TESS_REGION], lo = start;
+        if (m->lnext[m->lnext[m->lnext[lo]]] == lo)
+            return 1;
+        int cut = 0;
+        do {
+            uint32_t a = m->org[lo], b = TESS_DST(m, lo), c = TESS_DST(m, m->lnext[lo]);
+            if (tess_cross(m, a, b, c) > 0) {
+                int empty = 1;
+                for (uint32_t x = m->lnext[m->lnext[lo]]; x != lo && empty;
+                     x = m->lnext[x]) {
+                    uint32_t q = m->org[x];
+                    if (q != a && q != c && tess_cross(m, a, b, q) >= 0 &&
+                        tess_cross(m, b, c, q) >= 0 && tess_cross(m, c, a, q) >= 0)
+                        empty = 0;
+                }
+                if (empty) {
+                    tess_connect(m, m->lnext[lo], lo);
+                    cut = !m->full;
+                    break;
+                }
+            }
+            lo = m->lnext[lo];
+        } while (lo != start);
+        if (!cut)
+            return 0;
+    }
+}
+
+static int tess_internal(const tess_mesh *m, uint32_t e)
+{
+    return m->inside[m->lface[e ^ 1u]];
+}
+
+/* tesedgeIsLocallyDelaunay: the angles facing e in its two triangles sum
+ * to less than pi + 0.01. */
+static int tess_locally_delaunay(const tess_mesh *m, uint32_t e)
+{
+    uint32_t a = m->org[e], b = TESS_DST(m, e);
+    uint32_t left = m->org[m->lnext[m->lnext[e]]];
+    uint32_t right = m->org[m->lnext[m->lnext[e ^ 1u]]];
+    float sum = tess_angle(m->s, m->t, (int)a, (int)left, (int)b) +
+                tess_angle(m->s, m->t, (int)b, (int)right, (int)a);
+    return (double)sum < TESS_PI + 0.01;
+}
+
+/* tessMeshFlipEdge: e becomes the other diagonal of its two triangles. */
+static void tess_flip(tess_mesh *m, uint32_t a0)
+{
+    uint32_t a1 = m->lnext[a0], a2 = m->lnext[a1];
+    uint32_t b0 = a0 ^ 1u, b1 = m->lnext[b0], b2 = m->lnext[b1];
+    uint32_t fa = m->lface[a0], fb = m->lface[b0];
+    m->org[a0] = m->org[b2];
+    m->org[b0] = m->org[a2];
+    m->lnext[a0] = a2;
+    m->lnext[a2] = b1;
+    m->lnext[b1] = a0;
+    m->lnext[b0] = b2;
+    m->lnext[b2] = a1;
+    m->lnext[a1] = b0;
+    m->lprev[a2] = a0;
+    m->lprev[b1] = a2;
+    m->lprev[a0] = b1;
+    m->lprev[b2] = b0;
+    m->lprev[a1] = b2;
+    m->lprev[b0] = a1;
+    m->lface[a1] = fb;
+    m->lface[b1] = fa;
+    m->face_edge[fa] = a0;
+    m->face_edge[fb] = b0;
+}
+
+/* tessMeshRefineDelaunay, its stack and its bound on the flips. */
+static void tess_refine(tess_mesh *m, uint32_t *stack)
+{
+    uint32_t top = 0;
+    long faces = 0;
+    for (uint32_t f = m->face_next[TESS_HEAD]; f != TESS_HEAD; f = m->face_next[f]) {
+        if (!m->inside[f])
+            continue;
+        uint32_t e = m->face_edge[f];
+        do {
+            m->mark[e] = (unsigned char)tess_internal(m, e);
+            if (m->mark[e] && !m->mark[e ^ 1u])
+                stack[top++] = e;
+            e = m->lnext[e];
+        } while (e != m->face_edge[f]);
+        faces++;
+    }
+    for (long iter = 0; top > 0 && iter < faces * faces; iter++) {
+        uint32_t e = stack[--top];
+        m->mark[e] = m->mark[e ^ 1u] = 0;
+        if (tess_locally_delaunay(m, e))
+            continue;
+        tess_flip(m, e);
+        uint32_t around[4] = {m->lnext[e], m->lprev[e], m->lnext[e ^ 1u],
+                              m->lprev[e ^ 1u]};
+        for (int i = 0; i < 4; i++) {
+            if (!m->mark[around[i]] && tess_internal(m, around[i])) {
+                m->mark[around[i]] = m->mark[around[i] ^ 1u] = 1;
+                stack[top++] = around[i];
+            }
+        }
+    }
+}
+
+/* 1 when segments ab and cd share a point (in double from float). */
+static int tess_segments_meet(const tess_mesh *m, uint32_t a, uint32_t b, uint32_t c,
+                              uint32_t d)
+{
+    double d1 = tess_cross(m, a, b, c), d2 = tess_cross(m, a, b, d);
+    double d3 = tess_cross(m, c, d, a), d4 = tess_cross(m, c, d, b);
+    if (((d1 > 0 && d2 < 0) || (d1 < 0 && d2 > 0)) &&
+        ((d3 > 0 && d4 < 0) || (d3 < 0 && d4 > 0)))
+        return 1;
+    /* collinear touching: a point of one on the other */
+    const uint32_t ends[4][3] = {{a, b, c}, {a, b, d}, {c, d, a}, {c, d, b}};
+    const double sides[4] = {d1, d2, d3, d4};
+    for (int i = 0; i < 4; i++) {
+        uint32_t p = ends[i][0], q = ends[i][1], r = ends[i][2];
+        if (sides[i] == 0 && fminf(m->s[p], m->s[q]) <= m->s[r] &&
+            m->s[r] <= fmaxf(m->s[p], m->s[q]) && fminf(m->t[p], m->t[q]) <= m->t[r] &&
+            m->t[r] <= fmaxf(m->t[p], m->t[q]))
+            return 1;
+    }
+    return 0;
+}
+
+/* 1 when the contour (positions 0 .. n - 1 in order) is a simple polygon:
+ * no two points on one point of the plane, no two edges meeting but
+ * neighbours at their common point, no edge folding back on the last. */
+static int tess_simple(const tess_mesh *m, uint32_t n)
+{
+    for (uint32_t i = 0; i < n; i++) {
+        uint32_t i1 = (i + 1) % n, i2 = (i + 2) % n;
+        if (m->s[i] == m->s[i1] && m->t[i] == m->t[i1])
+            return 0;
+        if (tess_cross(m, i, i1, i2) == 0 &&
+            ((double)m->s[i1] - m->s[i]) * ((double)m->s[i2] - m->s[i1]) +
+                    ((double)m->t[i1] - m->t[i]) * ((double)m->t[i2] - m->t[i1]) <
+                0)
+            return 0;
+        for (uint32_t j = i + 2; j < n; j++) {
+            if ((j + 1) % n == i)
+                continue;
+            if (tess_segments_meet(m, i, i1, j, (j + 1) % n))
+                return 0;
+        }
+    }
+    return 1;
+}
+
+/* 1 when the contour has one least and one greatest point in (s, t) order
+ * among its neighbours: a single monotone region for libtess2's sweep. */
+static int tess_monotone(const tess_mesh *m, uint32_t n)
+{
+    uint32_t peaks = 0;
+    for (uint32_t i = 0; i < n; i++) {
+        uint32_t p = (i + n - 1) % n, q = (i + 1) % n;
+        if (tess_leq(m, p, i) && tess_leq(m, q, i))
+            peaks++;
+    }
+    return peaks == 1;
+}
+
+/* v in ascending order: three points of a face in the order of the face,
+ * which for a triangle of a split of a simple polygon is its winding. */
+static void sort3(uint32_t v[3])
+{
+    for (int i = 0; i < 2; i++)
+        for (int j = 0; j < 2 - i; j++)
+            if (v[j] > v[j + 1]) {
+                uint32_t x = v[j];
+                v[j] = v[j + 1];
+                v[j + 1] = x;
+            }
+}
+
+int build_mesh_face_triangles(const vec3 *p, uint32_t n, int reversed, uint32_t *tris)
+{
+    for (uint32_t j = 1; j + 1 < n; j++) { /* the fan, unless replaced below */
+        tris[3 * (j - 1)] = 0;
+        tris[3 * (j - 1) + 1] = j;
+        tris[3 * (j - 1) + 2] = j + 1;
+    }
+    if (n < 4 || n > TESS_MAX_POINTS)
+        return n == 3;
+    if (n == 4) {
+        uint32_t d = (uint32_t)build_mesh_quad_diagonal(p, reversed);
+        for (uint32_t j = 0; j < 2; j++) {
+            tris[3 * j] = d;
+            tris[3 * j + 1] = (d + j + 1) % 4;
+            tris[3 * j + 2] = (d + j + 2) % 4;
+        }
+        return 1;
+    }
+    uint32_t half_edges = 4 * n, faces = n + 2;
+    /* one block: s, t by face position, then by vertex (float); the
+     * uint32_t arrays; the marks */
+    size_t words = 5 * (size_t)n + 5 * (size_t)half_edges + 3 * (size_t)faces;
+    uint32_t *block = malloc(words * sizeof(uint32_t) + half_edges + faces);
+    if (!block)
+        return -1;
+    float *ps = (float *)block, *pt = ps + n; /* float and uint32_t: both 4 bytes */
+    float *s = pt + n, *t = s + n;
+    uint32_t *contour = block + 4 * n; /* vertex k: contour point contour[k] */
+    tess_mesh m = {.s = s, .t = t, .edge_cap = half_edges, .face_cap = faces};
+    uint32_t *w = block + 5 * n;
+    m.org = w;
+    m.lnext = w + half_edges;
+    m.lprev = w + 2 * half_edges;
+    m.lface = w + 3 * half_edges;
+    uint32_t *stack = w + 4 * half_edges;
+    m.face_next = w + 5 * half_edges;
+    m.face_prev = m.face_next + faces;
+    m.face_edge = m.face_prev + faces;
+    m.mark = (unsigned char *)(block + words);
+    m.inside = m.mark + half_edges;
+    /* contour point j is p[n - 1 - j] when reversed */
+#define AT(j) (reversed ? n - 1 - (j) : (j))
+    int ok = tess_project(p, n, reversed, ps, pt);
+    float sign = 1;
+    if (ok) {
+        float area = 0;
+        for (uint32_t j = 0; j < n; j++) {
+            uint32_t a = AT(j), b = AT((j + 1) % n);
+            area += (ps[a] - ps[b]) * (pt[a] + pt[b]);
+        }
+        sign = area < 0 ? -1.0f : 1.0f;
+        ok = area != 0;
+    }
+    /* Two neighbours on one point of the projection (contour points
+     * merged, merged + 1): libtess2 merges them into the one it lists
+     * first (its list runs from contour point 1 round to 0), triangulates
+     * the rest, and OpenSCAD mends the sliver left between the two and
+     * the other neighbour of the one that stays. */
+    uint32_t merged = UINT32_MAX, pairs = 0, dropped = UINT32_MAX;
+    for (uint32_t j = 0; ok && j < n; j++) {
+        uint32_t a = AT(j), b = AT((j + 1) % n);
+        if (ps[a] == ps[b] && pt[a] == pt[b]) {
+            merged = j;
+            pairs++;
+        }
+    }
+    if (pairs == 1)
+        dropped = merged == 0 ? 0 : (merged + 1) % n; /* 0 is listed last */
+    uint32_t count = 0;
+    for (uint32_t j = 0; ok && j < n; j++) {
+        if (j == dropped)
+            continue;
+        contour[count] = j;
+        s[count] = ps[AT(j)];
+        t[count] = sign * pt[AT(j)];
+        count++;
+    }
+    ok = ok && pairs <= 1 && count >= 3 && tess_simple(&m, count);
+    if (ok) {
+        for (uint32_t j = 0; j < count; j++) {
+            uint32_t e = 2 * j, next = 2 * ((j + 1) % count);
+            uint32_t prev = 2 * ((j + count - 1) % count);
+            m.org[e] = j;
+            m.org[e + 1] = (j + 1) % count;
+            m.lnext[e] = next;
+            m.lprev[e] = prev;
+            m.lnext[e + 1] = prev + 1;
+            m.lprev[e + 1] = next + 1;
+            m.lface[e] = TESS_REGION;
+            m.lface[e + 1] = TESS_OUTSIDE;
+            m.mark[e] = m.mark[e + 1] = 0;
+        }
+        m.edges = 2 * count;
+        m.face_next[TESS_HEAD] = TESS_REGION;
+        m.face_prev[TESS_HEAD] = TESS_REGION;
+        m.face_next[TESS_REGION] = m.face_prev[TESS_REGION] = TESS_HEAD;
+        m.face_edge[TESS_REGION] = 0;
+        m.face_edge[TESS_OUTSIDE] = 1;
+        m.inside[TESS_HEAD] = m.inside[TESS_OUTSIDE] = 0;
+        m.inside[TESS_REGION] = 1;
+        m.faces = 3;
+        if (count == 3)
+            ok = 1;
+        else if (tess_monotone(&m, count))
+            ok = tess_mono_region(&m, count);
+        else
+            ok = tess_ears(&m);
+        ok = ok && m.faces == count;
+    }
+    if (ok) {
+        tess_refine(&m, stack);
+        uint32_t k = 0;
+        for (uint32_t f = m.face_next[TESS_HEAD]; f != TESS_HEAD; f = m.face_next[f]) {
+            uint32_t e = m.face_edge[f], v[3];
+            for (int i = 0; i < 3; i++, e = m.lnext[e])
+                v[i] = AT(contour[m.org[e]]);
+            sort3(v);
+            memcpy(&tris[3 * k++], v, sizeof v);
+        }
+        if (pairs == 1) { /* the sliver: the pair and its neighbour */
+            uint32_t v[3] = {AT(merged), AT((merged + 1) % n),
+                             dropped == merged ? AT((merged + n - 1) % n)
+                                               : AT((merged + 2) % n)};
+            sort3(v);
+            memcpy(&tris[3 * k++], v, sizeof v);
+        }
+    }
+#undef AT
+    free(block);
+    return ok;
 }
 
 /* ---- merging points as OpenSCAD does ----
@@ -571,9 +1158,55 @@ int build_mesh_sound(const build_mesh_faces *f, const char *what, int numbered, 
                       f->face_count, why, size);
 }
 
-/* OpenSCAD's message for a mesh it cannot take into CGAL. */
-static const char openscad_not_closed[] =
-    "The given mesh is not closed! Unable to convert to CGAL_Nef_Polyhedron.";
+/* OpenSCAD's number of each point of f as its tessellation numbers them
+ * (tessellate_faces): in the order it first meets them, face by face, each
+ * face as OpenSCAD holds it (back to front when reversed). malloc'd; NULL
+ * when memory runs out. */
+static uint32_t *openscad_numbers(const build_mesh_faces *f, int reversed)
+{
+    uint32_t *numbers =
+        malloc((size_t)(f->point_count ? f->point_count : 1) * sizeof *numbers);
+    if (!numbers)
+        return NULL;
+    for (uint32_t i = 0; i < f->point_count; i++)
+        numbers[i] = UINT32_MAX;
+    uint32_t next = 0;
+    for (uint32_t i = 0; i < f->face_count; i++) {
+        uint32_t s = f->face_start[i], n = f->face_start[i + 1] - s;
+        for (uint32_t j = 0; j < n; j++) {
+            uint32_t p = f->indices[s + (reversed ? n - 1 - j : j)];
+            if (numbers[p] == UINT32_MAX)
+                numbers[p] = next++;
+        }
+    }
+    return numbers;
+}
+
+/* 1 when the face v[0..n) lies in one plane to float's resolution: every
+ * point within 2^-23 of the face's extent from the plane through its
+ * first point along Newell's normal. Any split of such a face is the same
+ * surface to far below the depth rule, and the fan costs nothing. */
+static int face_planar(const vec3 *points, const uint32_t *v, uint32_t n)
+{
+    vec3 normal = v3(0, 0, 0);
+    bbox box = bbox_empty();
+    for (uint32_t j = 0; j < n; j++) {
+        vec3 a = points[v[j]], b = points[v[(j + 1) % n]];
+        normal = v3_add(normal, v3((a.y - b.y) * (a.z + b.z), (a.z - b.z) * (a.x + b.x),
+                                   (a.x - b.x) * (a.y + b.y)));
+        box = bbox_add_point(box, a);
+    }
+    double length = v3_length(normal);
+    vec3 ext = v3_sub(box.hi, box.lo);
+    double size = fmax(ext.x, fmax(ext.y, ext.z));
+    if (!(length > 0))
+        return 1; /* no area: nothing to choose */
+    double most = 0x1p-23 * size * length;
+    for (uint32_t j = 1; j < n; j++)
+        if (!(fabs(v3_dot(normal, v3_sub(points[v[j]], points[v[0]]))) <= most))
+            return 0;
+    return 1;
+}
 
 sc_status build_mesh_solid(const build_ctx *c, const sc_location *loc, const char *what,
                            int numbered, int strict, const build_mesh_faces *f, prim *out,
@@ -600,14 +1233,52 @@ sc_status build_mesh_solid(const build_ctx *c, const sc_location *loc, const cha
     if (!tris)
         return err_nomem(c->error, loc);
     size_t k = 0;
-    for (uint32_t i = 0; i < f->face_count; i++) {
+    vec3 *corners = NULL; /* a face's points, for the larger faces */
+    uint32_t *local = NULL, corner_cap = 0;
+    uint32_t *numbers = NULL; /* OpenSCAD's numbers of the points, for bow ties */
+    int oom = 0;
+    for (uint32_t i = 0; i < f->face_count && !oom; i++) {
         const uint32_t *v = &f->indices[f->face_start[i]];
         uint32_t n = f->face_start[i + 1] - f->face_start[i];
         uint32_t first = 0;
         if (n == 4) {
             vec3 q[4] = {f->points[v[0]], f->points[v[1]], f->points[v[2]],
                          f->points[v[3]]};
-            first = (uint32_t)build_mesh_quad_diagonal(q, numbered);
+            if (!build_mesh_quad_crosses(q, numbered)) {
+                first = (uint32_t)build_mesh_quad_diagonal(q, numbered);
+            } else {
+                if (!numbers && !(numbers = openscad_numbers(f, numbered))) {
+                    oom = 1;
+                    break;
+                }
+                uint32_t g[4];
+                for (int j = 0; j < 4; j++)
+                    g[j] = numbers[v[numbered ? 3 - j : j]];
+                int ear = bowtie_ear(g);
+                first = (uint32_t)((numbered ? 3 - ear : ear) + 1) % 2;
+            }
+        } else if (n > 4 && !face_planar(f->points, v, n)) {
+            if (n > corner_cap) {
+                free(corners);
+                free(local);
+                corners = malloc((size_t)n * sizeof *corners);
+                local = malloc(3 * (size_t)n * sizeof *local);
+                corner_cap = n;
+                if (!corners || !local) {
+                    oom = 1;
+                    break;
+                }
+            }
+            for (uint32_t j = 0; j < n; j++)
+                corners[j] = f->points[v[j]];
+            if (build_mesh_face_triangles(corners, n, numbered, local) < 0) {
+                oom = 1;
+                break;
+            }
+            for (uint32_t j = 0; j < 3 * (n - 2); j++)
+                tris[3 * k + j] = v[local[j]];
+            k += n - 2;
+            continue;
         }
         /* a fan about point `first`: for a quad, its diagonal */
         for (uint32_t j = 1; j + 1 < n; j++) {
@@ -616,6 +1287,13 @@ sc_status build_mesh_solid(const build_ctx *c, const sc_location *loc, const cha
             tris[3 * k + 2] = v[(first + j + 1) % n];
             k++;
         }
+    }
+    free(corners);
+    free(local);
+    free(numbers);
+    if (oom) {
+        free(tris);
+        return err_nomem(c->error, loc);
     }
     sc_status st = finish_mesh(c, loc, numbered, f->points, f->point_count, tris, k,
                                !sound, out, empty);

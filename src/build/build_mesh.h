@@ -14,15 +14,17 @@
 #define BUILD_MAX_MESH_FILE (512u * 1024u * 1024u)
 
 /* A mesh leaf from face_count polygons that a builder made (extrusions,
- * surface, hull): no merging, and a mesh that is not sound is an error (face f is
+ * surface, hull): no merging (face f is
  * indices[face_start[f] .. face_start[f + 1]) into points). what names the node in
  * messages; numbered says the points are a polyhedron's own, numbered in the file (an
  * edge is named by its point numbers, else by its ends' coordinates, and a mesh without
- * volume is "polyhedron without volume"). The mesh must be closed (every edge in exactly
+ * volume is "polyhedron without volume"). A sound mesh is closed (every edge in exactly
  * two faces) and consistently oriented (the two faces run along it in opposite
  * directions); inward or outward winding are both taken (the signed volume decides).
- * Polygons are split into fans of triangles. A mesh without volume sets *empty to a
- * warning and fills nothing. */
+ * One that is not sound is treated as build_mesh_solid treats a polyhedron: an error
+ * with c->strict; else, with a warning in c->notes, left out in faithful mode (*empty
+ * = "") and drawn by the parity rule in exact mode. Polygons are split into fans of
+ * triangles. A mesh without volume sets *empty to a warning and fills nothing. */
 sc_status build_mesh_prim(const build_ctx *c, const sc_location *loc, const char *what,
                           int numbered, const vec3 *points, uint32_t point_count,
                           const uint32_t *indices, const uint32_t *face_start,
@@ -59,12 +61,13 @@ void build_mesh_faces_free(build_mesh_faces *f);
 int build_mesh_sound(const build_mesh_faces *f, const char *what, int numbered, char *why,
                      size_t size);
 
-/* The leaf of a polyhedron or an imported mesh on merged faces: quads
- * split as OpenSCAD 2021.01 splits them (build_mesh_quad_diagonal), larger
- * faces into fans. A mesh that is not sound (build_mesh_sound) is an
- * error when strict (--strict) or without c->note; else in faithful mode it is left out
- * as OpenSCAD leaves it out (*empty = "", the warning in c->note), and in
- * exact mode it is built with the parity rule, the warning in c->note. */
+/* The leaf of a polyhedron or an imported mesh on merged faces: faces that
+ * are not planar split as OpenSCAD 2021.01 splits them
+ * (build_mesh_face_triangles), planar faces of five or more points into fans. A mesh that
+ * is not sound (build_mesh_sound) is an error when strict (--strict) or without c->note;
+ * else in faithful mode it is left out as OpenSCAD leaves it out (*empty = "", the
+ * warning in c->note), and in exact mode it is built with the parity rule, the warning in
+ * c->note. */
 sc_status build_mesh_solid(const build_ctx *c, const sc_location *loc, const char *what,
                            int numbered, int strict, const build_mesh_faces *f, prim *out,
                            const char **empty);
@@ -74,6 +77,22 @@ sc_status build_mesh_solid(const build_ctx *c, const sc_location *loc, const cha
  * build_mesh.c). reversed: the quad is a polyhedron's face, which OpenSCAD
  * hands to libtess2 back to front. */
 int build_mesh_quad_diagonal(const vec3 q[4], int reversed);
+
+/* 1 when the quad q[0..3] crosses itself in the plane libtess2 projects
+ * it onto (a bow tie; reversed as for build_mesh_quad_diagonal). OpenSCAD
+ * 2021.01 splits such a quad by the order of its hash tables, which
+ * build_mesh_solid follows (see build_mesh.c). */
+int build_mesh_quad_crosses(const vec3 q[4], int reversed);
+
+/* Splits the face p[0..n) into n - 2 triangles as OpenSCAD 2021.01 does
+ * (libtess2's constrained Delaunay triangulation, see build_mesh.c),
+ * writing 3 (n - 2) positions in p into tris, each triangle wound as the
+ * face. reversed: a polyhedron's face, which OpenSCAD hands to libtess2
+ * back to front. Returns 1 for libtess2's triangles; 0 for a fan about
+ * p[0], written when the face's projection crosses or touches itself,
+ * has no area, or has more than 4096 points (and for fewer than 3); -1
+ * when memory ran out. */
+int build_mesh_face_triangles(const vec3 *p, uint32_t n, int reversed, uint32_t *tris);
 
 /* The path of a file a model names: relative names are relative to the
  * directory of the file being read (c->file). malloc'd; NULL when memory
