@@ -1056,8 +1056,11 @@ static sc_status build_parts(builder *b)
     return st;
 }
 
-sc_status build_scene(const model *m, int flags, csg_tree **out, shading **look,
-                      sc_error **warnings, size_t *warning_count, sc_error *error)
+/* build_scene and build_scene_take: owned, when not NULL, is m, freed as
+ * soon as the walk is done. */
+static sc_status build_scene_of(const model *m, model *owned, int flags, csg_tree **out,
+                                shading **look, sc_error **warnings,
+                                size_t *warning_count, sc_error *error)
 {
     *out = NULL;
     if (look)
@@ -1077,6 +1080,7 @@ sc_status build_scene(const model *m, int flags, csg_tree **out, shading **look,
     if (!b.csg || !b.shading) {
         csg_builder_free(b.csg);
         shading_free(b.shading);
+        model_free(owned);
         return err_nomem(error, NULL);
     }
     uint32_t root = CSG_EMPTY;
@@ -1088,6 +1092,9 @@ sc_status build_scene(const model *m, int flags, csg_tree **out, shading **look,
         st = build_parts(&b);
     free(b.marks);
     build_resize_cache_free(b.resize_cache);
+    /* Nothing below reads the model: the builder, the shading record and
+     * the warnings hold copies of what they need. */
+    model_free(owned);
     if (st != SC_OK) {
         csg_builder_free(b.csg);
         shading_free(b.shading);
@@ -1107,4 +1114,16 @@ sc_status build_scene(const model *m, int flags, csg_tree **out, shading **look,
     *warnings = b.warnings.items;
     *warning_count = b.warnings.count;
     return SC_OK;
+}
+
+sc_status build_scene(const model *m, int flags, csg_tree **out, shading **look,
+                      sc_error **warnings, size_t *warning_count, sc_error *error)
+{
+    return build_scene_of(m, NULL, flags, out, look, warnings, warning_count, error);
+}
+
+sc_status build_scene_take(model *m, int flags, csg_tree **out, shading **look,
+                           sc_error **warnings, size_t *warning_count, sc_error *error)
+{
+    return build_scene_of(m, m, flags, out, look, warnings, warning_count, error);
 }
