@@ -450,9 +450,14 @@ static sc_status build_curved(builder *b, const model_node *n, const frame *stat
         p.u.torus.major = n->u.torus->r1;
         p.u.torus.minor = n->u.torus->r2;
     } else if (n->kind == MODEL_QUADRIC) {
+        /* The coefficients live with the tree. */
+        prim_quadric *q = csg_builder_alloc(b->csg, sizeof *q);
+        if (!q)
+            return err_nomem(b->error, NULL);
+        memcpy(q->a, n->u.quadric->a, sizeof q->a);
+        q->box = n->u.quadric->box;
         p.kind = PRIM_QUADRIC;
-        memcpy(p.u.quadric.a, n->u.quadric->a, sizeof p.u.quadric.a);
-        p.u.quadric.box = n->u.quadric->box;
+        p.u.quadric.q = q;
     } else {
         /* The bytecode lives with the tree. */
         const model_implicit *f = n->u.implicit;
