@@ -623,27 +623,32 @@ static int compile(csg_builder *b, uint32_t root, csg_tree *t)
 {
     if (!measure_source(b, root, t))
         return 0;
-    compiler c = {b, NULL, 0, 0, {NULL, 0, 0}, {NULL, 0, 0}, 0};
+    /* The compiled nodes are written over the source ones, in place: node
+     * i is read before the compiled node it makes is written, at an index
+     * no greater than i (a source node makes one compiled node at most),
+     * and a boolean node reads only its operands' compiled nodes, written
+     * before it. The source's child lists stay apart. */
+    compiler c = {b, b->nodes, 0, b->node_cap, {NULL, 0, 0}, {NULL, 0, 0}, 0};
+    b->nodes = NULL;
     uint32_t *map = malloc((b->node_count ? b->node_count : 1) * sizeof *map);
     unsigned char *marks;
-    mark_reachable(b->nodes, b->child_ids, b->node_count, root, &marks);
+    mark_reachable(c.nodes, b->child_ids, b->node_count, root, &marks);
     int ok = map && marks;
     uint32_t new_root = CSG_EMPTY;
     for (uint32_t i = 0; ok && i < b->node_count; i++) {
         map[i] = CSG_EMPTY;
         if (!marks[i])
             continue;
-        const csg_node *n = &b->nodes[i];
-        map[i] = n->op == CSG_LEAF ? emit(&c, n) : compile_op(&c, n, map);
+        csg_node n = c.nodes[i];
+        map[i] = n.op == CSG_LEAF ? emit(&c, &n) : compile_op(&c, &n, map);
         ok = !c.failed;
     }
     if (ok && root != CSG_EMPTY)
         new_root = map[root];
     free(map);
     free(marks);
-    /* The source nodes are compiled: free them before the tree is frozen. */
-    free(b->nodes);
-    b->nodes = NULL;
+    /* The source child lists are compiled: free them before the tree is
+     * frozen. */
     free(b->child_ids);
     b->child_ids = NULL;
     ok = ok && freeze(t, &c, b, new_root);
