@@ -982,13 +982,14 @@ static prim random_prim(gen *g, uint32_t kind, oracle_leaf *ol)
             {1, 1, -1, 0, 0, 0, 0, 0, 0, 0.2}, {1, 2, 0, 0, 0, 0, 0, 0, -1, 0},
             {1, -1, 0, 0, 0, 0, 0, 0, -1, 0},  {2, 1, 0, 0.5, 0, 0, 0, 0, 0, -0.8}};
         const double *f = families[below(&g->r, 6)];
+        prim_quadric *q = tree_alloc(g, sizeof *q);
         for (int i = 0; i < 10; i++)
-            p.u.quadric.a[i] = f[i] + (f[i] != 0 ? uniform_in(&g->r, -0.2, 0.2) : 0);
-        p.u.quadric.box.lo =
-            v3(-uniform_in(&g->r, 0.4, 1.5), -uniform_in(&g->r, 0.4, 1.5),
-               -uniform_in(&g->r, 0.4, 1.5));
-        p.u.quadric.box.hi = v3(uniform_in(&g->r, 0.4, 1.5), uniform_in(&g->r, 0.4, 1.5),
-                                uniform_in(&g->r, 0.4, 1.5));
+            q->a[i] = f[i] + (f[i] != 0 ? uniform_in(&g->r, -0.2, 0.2) : 0);
+        q->box.lo = v3(-uniform_in(&g->r, 0.4, 1.5), -uniform_in(&g->r, 0.4, 1.5),
+                       -uniform_in(&g->r, 0.4, 1.5));
+        q->box.hi = v3(uniform_in(&g->r, 0.4, 1.5), uniform_in(&g->r, 0.4, 1.5),
+                       uniform_in(&g->r, 0.4, 1.5));
+        p.u.quadric.q = q;
         break;
     }
     case PRIM_IMPLICIT: {
@@ -1057,7 +1058,7 @@ static prim random_prim(gen *g, uint32_t kind, oracle_leaf *ol)
         break;
     }
     case PRIM_QUADRIC:
-        ol->box = p.u.quadric.box;
+        ol->box = p.u.quadric.q->box;
         break;
     case PRIM_IMPLICIT:
         ol->box = p.u.implicit.box;

@@ -61,13 +61,15 @@ static prim torus(double major, double minor)
     return p;
 }
 
-static prim quadric(const double a[10], vec3 lo, vec3 hi)
+/* A quadric leaf whose coefficients are kept in *store. */
+static prim quadric(prim_quadric *store, const double a[10], vec3 lo, vec3 hi)
 {
     prim p;
     memset(&p, 0, sizeof p);
     p.kind = PRIM_QUADRIC;
-    memcpy(p.u.quadric.a, a, 10 * sizeof a[0]);
-    p.u.quadric.box = (bbox){lo, hi};
+    memcpy(store->a, a, 10 * sizeof a[0]);
+    store->box = (bbox){lo, hi};
+    p.u.quadric.q = store;
     return p;
 }
 
@@ -229,9 +231,10 @@ static void test_quadric_families(void **state)
     (void)state;
     vec3 lo = v3(-1, -1, -1), hi = v3(1, 1, 1);
     span s[2];
+    prim_quadric store;
     /* sphere x^2 + y^2 + z^2 - 0.25 */
     static const double sphere[10] = {1, 1, 1, 0, 0, 0, 0, 0, 0, -0.25};
-    prim p = quadric(sphere, lo, hi);
+    prim p = quadric(&store, sphere, lo, hi);
     assert_int_equal(shoot(&p, v3(-3, 0, 0), v3(1, 0, 0), s), 1);
     assert_near(s[0].in.t, 2.5, 1e-15);
     assert_near(s[0].out.t, 3.5, 1e-15);
@@ -239,7 +242,7 @@ static void test_quadric_families(void **state)
     /* double cone x^2 + y^2 - z^2 along z at x = 0.5: |z| >= 0.5, two
      * spans, the outer ends on the box faces z = -1 and z = 1 */
     static const double cone[10] = {1, 1, -1, 0, 0, 0, 0, 0, 0, 0};
-    p = quadric(cone, lo, hi);
+    p = quadric(&store, cone, lo, hi);
     assert_int_equal(shoot(&p, v3(0.5, 0, -3), v3(0, 0, 1), s), 2);
     assert_near(s[0].in.t, 2, 1e-15);
     assert_near(s[0].out.t, 2.5, 1e-15);
@@ -261,20 +264,20 @@ static void test_quadric_families(void **state)
     assert_int_equal(shoot(&p, v3(-3, 0.2, -3), v3(1, 0, 1), s), 0);
     /* hyperboloid of two sheets: x^2 + y^2 - z^2 + 0.25 <= 0 */
     static const double two_sheets[10] = {1, 1, -1, 0, 0, 0, 0, 0, 0, 0.25};
-    p = quadric(two_sheets, lo, hi);
+    p = quadric(&store, two_sheets, lo, hi);
     assert_int_equal(shoot(&p, v3(0, 0, -3), v3(0, 0, 1), s), 2);
     assert_near(s[0].out.t, 2.5, 1e-15);
     assert_near(s[1].in.t, 3.5, 1e-15);
     /* elliptic paraboloid x^2 + 4 y^2 - z <= 0, along x at z = 0.5 */
     static const double paraboloid[10] = {1, 4, 0, 0, 0, 0, 0, 0, -1, 0};
-    p = quadric(paraboloid, lo, hi);
+    p = quadric(&store, paraboloid, lo, hi);
     assert_int_equal(shoot(&p, v3(-3, 0, 0.5), v3(1, 0, 0), s), 1);
     assert_near(s[0].in.t, 3 - sqrt(0.5), 1e-15);
     assert_near(s[0].out.t, 3 + sqrt(0.5), 1e-15);
     /* elliptic cylinder x^2 / 0.25 + y^2 - 1 along its axis: the whole
      * box stretch (a = b = 0, c < 0) */
     static const double cylinder[10] = {4, 1, 0, 0, 0, 0, 0, 0, 0, -1};
-    p = quadric(cylinder, lo, hi);
+    p = quadric(&store, cylinder, lo, hi);
     assert_int_equal(shoot(&p, v3(0.1, 0.2, -3), v3(0, 0, 1), s), 1);
     assert_near(s[0].in.t, 2, 1e-15);
     assert_near(s[0].out.t, 4, 1e-15);
@@ -419,7 +422,8 @@ static void test_spans_agree_with_inside(void **state)
         {0.3, 0.7, 1.1, 0.4, -0.6, 0.2, 0.1, -0.2, 0.3, -0.8}, /* general */
     };
     for (size_t i = 0; i < sizeof families / sizeof families[0]; i++) {
-        prim p = quadric(families[i], v3(-1.5, -1, -2), v3(1, 1.5, 1.2));
+        prim_quadric store;
+        prim p = quadric(&store, families[i], v3(-1.5, -1, -2), v3(1, 1.5, 1.2));
         checked += sampled(&p, &r, 3000, 1e-9);
     }
     static const char *const fields[] = {

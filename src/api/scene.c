@@ -48,8 +48,9 @@ static char *copy_string(const char *s)
  * lowered and the whole syntax tree never exists (a million positioned
  * spheres: 141 MB of text, 350 MB of model, 400 MB of tree, where the
  * syntax alone took 1.1 GB); then the text when owned_text is set (the
- * caller's buffer, which this frees); the model and the names and strings
- * it points to after the build. */
+ * caller's buffer, which this frees); the model once the build has walked
+ * it, before the tree is compiled; the names and strings it points to
+ * after the build. */
 static sc_status load(const char *name, const char *text, size_t length, char *owned_text,
                       const sc_load_options *options, sc_scene **scene, sc_error *error)
 {
@@ -88,11 +89,14 @@ static sc_status load(const char *name, const char *text, size_t length, char *o
             model_stream_free(lowering);
     }
     free(owned_text);
+    /* The model goes during the build, once walked and before the tree is
+     * compiled (build_scene_take). */
     if (st == SC_OK)
-        st = build_scene(
+        st = build_scene_take(
             typed, (own.faithful ? BUILD_FAITHFUL : 0) | (own.strict ? BUILD_STRICT : 0),
             &s->tree, &s->look, &s->warnings, &s->warning_count, error);
-    model_free(typed);
+    else
+        model_free(typed);
     parse_tree_free(syntax);
     if (st != SC_OK) {
         char what[64];

@@ -455,9 +455,14 @@ static sc_status build_curved(builder *b, const model_node *n, const frame *stat
         p.u.torus.major = n->u.torus->r1;
         p.u.torus.minor = n->u.torus->r2;
     } else if (n->kind == MODEL_QUADRIC) {
+        /* The coefficients live with the tree. */
+        prim_quadric *q = csg_builder_alloc(b->csg, sizeof *q);
+        if (!q)
+            return err_nomem(b->error, NULL);
+        memcpy(q->a, n->u.quadric->a, sizeof q->a);
+        q->box = n->u.quadric->box;
         p.kind = PRIM_QUADRIC;
-        memcpy(p.u.quadric.a, n->u.quadric->a, sizeof p.u.quadric.a);
-        p.u.quadric.box = n->u.quadric->box;
+        p.u.quadric.q = q;
     } else {
         /* The bytecode lives with the tree. */
         const model_implicit *f = n->u.implicit;
@@ -1061,8 +1066,11 @@ static sc_status build_parts(builder *b)
     return st;
 }
 
-sc_status build_scene(const model *m, int flags, csg_tree **out, shading **look,
-                      sc_error **warnings, size_t *warning_count, sc_error *error)
+/* build_scene and build_scene_take: owned, when not NULL, is m, freed as
+ * soon as the walk is done. */
+static sc_status build_scene_of(const model *m, model *owned, int flags, csg_tree **out,
+                                shading **look, sc_error **warnings,
+                                size_t *warning_count, sc_error *error)
 {
     *out = NULL;
     if (look)
@@ -1082,6 +1090,7 @@ sc_status build_scene(const model *m, int flags, csg_tree **out, shading **look,
     if (!b.csg || !b.shading) {
         csg_builder_free(b.csg);
         shading_free(b.shading);
+        model_free(owned);
         return err_nomem(error, NULL);
     }
     uint32_t root = CSG_EMPTY;
@@ -1093,6 +1102,9 @@ sc_status build_scene(const model *m, int flags, csg_tree **out, shading **look,
         st = build_parts(&b);
     free(b.marks);
     build_resize_cache_free(b.resize_cache);
+    /* Nothing below reads the model: the builder, the shading record and
+     * the warnings hold copies of what they need. */
+    model_free(owned);
     if (st != SC_OK) {
         csg_builder_free(b.csg);
         shading_free(b.shading);
@@ -1112,4 +1124,16 @@ sc_status build_scene(const model *m, int flags, csg_tree **out, shading **look,
     *warnings = b.warnings.items;
     *warning_count = b.warnings.count;
     return SC_OK;
+}
+
+sc_status build_scene(const model *m, int flags, csg_tree **out, shading **look,
+                      sc_error **warnings, size_t *warning_count, sc_error *error)
+{
+    return build_scene_of(m, NULL, flags, out, look, warnings, warning_count, error);
+}
+
+sc_status build_scene_take(model *m, int flags, csg_tree **out, shading **look,
+                           sc_error **warnings, size_t *warning_count, sc_error *error)
+{
+    return build_scene_of(m, m, flags, out, look, warnings, warning_count, error);
 }

@@ -85,10 +85,15 @@ typedef struct csg_counters {
 } csg_counters;
 
 typedef struct csg_tree {
-    arena mem;              /* owns every array below but owned_leaves */
+    arena mem;              /* owns every array below but the owned ones */
     csg_leaf *owned_leaves; /* leaves when taken over from the builder, else NULL */
-    csg_node *nodes;        /* only nodes reachable from the root; children
-                               before parents */
+    /* nodes, child_ids and bvh_nodes when taken over from the compiler
+     * (malloc'd), else NULL */
+    csg_node *owned_nodes;
+    uint32_t *owned_child_ids;
+    csg_bvh_node *owned_bvh_nodes;
+    csg_node *nodes; /* only nodes reachable from the root; children
+                        before parents */
     uint32_t node_count;
     uint32_t *child_ids;
     csg_leaf *leaves;

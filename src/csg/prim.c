@@ -330,7 +330,7 @@ bbox prim_bounds(const prim *p)
         b = prim_torus_bounds(p);
         break;
     case PRIM_QUADRIC:
-        b = p->u.quadric.box;
+        b = p->u.quadric.q->box;
         break;
     case PRIM_IMPLICIT:
         b = p->u.implicit.box;

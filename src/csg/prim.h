@@ -44,6 +44,15 @@ typedef struct plane {
     double d;
 } plane;
 
+/* A clipped quadric's coefficients and box, out of line: 128 bytes in
+ * every leaf of every kind made a leaf 48 bytes larger than any other kind
+ * needs. */
+typedef struct prim_quadric {
+    double a[10]; /* A..J: A x^2 + B y^2 + C z^2 + D xy + E yz + F xz
+                     + G x + H y + I z + J */
+    bbox box;     /* the clipping box */
+} prim_quadric;
+
 struct expr_program;
 struct prim_mesh;
 struct prim_revolve;
@@ -76,9 +85,7 @@ typedef struct prim {
             double major, minor; /* R, r */
         } torus;
         struct {
-            double a[10]; /* A..J: A x^2 + B y^2 + C z^2 + D xy + E yz + F xz
-                             + G x + H y + I z + J */
-            bbox box;     /* the clipping box */
+            const prim_quadric *q; /* owned by the tree's arena */
         } quadric;
         struct {
             const struct expr_program *program; /* owned by the tree's arena */

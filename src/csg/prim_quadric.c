@@ -88,8 +88,8 @@ static int quadratic(double a, double b, double c, double *lo, double *hi)
 uint32_t prim_quadric_spans(const prim *p, uint32_t leaf, vec3 o, vec3 d, span *out,
                             uint32_t cap)
 {
-    const double *q = p->u.quadric.a;
-    const bbox *box = &p->u.quadric.box;
+    const double *q = p->u.quadric.q->a;
+    const bbox *box = &p->u.quadric.q->box;
     double t0, t1;
     uint16_t f0, f1;
     if (!prim_box_clip(box, o, d, &t0, &f0, &t1, &f1))
@@ -158,7 +158,7 @@ vec3 prim_quadric_normal(const prim *p, vec3 x, uint16_t part)
 {
     if (part >= PRIM_PART_CLIP_FACE)
         return prim_clip_face_normal(part);
-    const double *q = p->u.quadric.a;
+    const double *q = p->u.quadric.q->a;
     vec3 g = v3(2 * q[0] * x.x + q[3] * x.y + q[5] * x.z + q[6],
                 2 * q[1] * x.y + q[3] * x.x + q[4] * x.z + q[7],
                 2 * q[2] * x.z + q[4] * x.y + q[5] * x.x + q[8]);
@@ -168,9 +168,9 @@ vec3 prim_quadric_normal(const prim *p, vec3 x, uint16_t part)
 
 int prim_quadric_inside(const prim *p, vec3 x)
 {
-    const bbox *b = &p->u.quadric.box;
+    const bbox *b = &p->u.quadric.q->box;
     if (!(x.x >= b->lo.x && x.x <= b->hi.x && x.y >= b->lo.y && x.y <= b->hi.y &&
           x.z >= b->lo.z && x.z <= b->hi.z))
         return 0;
-    return prim_quadric_value(p->u.quadric.a, x) <= 0;
+    return prim_quadric_value(p->u.quadric.q->a, x) <= 0;
 }
