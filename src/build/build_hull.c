@@ -802,11 +802,31 @@ static sc_status nef_children(const walk *w, const model_node *parent, const aff
     for (const model_node *n = parent->first_child; n; n = n->next) {
         if (skipped(n) || is_shading(n->kind))
             continue;
+        /* A 2D child is the empty operand, as OpenSCAD evaluates it: it
+         * empties an intersection and subtracts nothing (warned of below). */
         nef_solid *s = NULL;
-        sc_status st = nef_node(w, n, m, depth, &s);
+        sc_status st = model_is_2d(n->kind) ? SC_OK : nef_node(w, n, m, depth, &s);
         if (st == SC_OK)
             st = nef_combine(w, n, out, first ? NEF_UNION : op, s);
         first = 0;
+        if (st != SC_OK) {
+            if (*out)
+                w->nef->release(*out);
+            *out = NULL;
+            return st;
+        }
+    }
+    /* OpenSCAD checks the dimensions once the children are evaluated: the
+     * first 2D child also says that the operation mixes them. */
+    int mixed = 0;
+    for (const model_node *n = parent->first_child; n; n = n->next) {
+        if (skipped(n) || !model_is_2d(n->kind))
+            continue;
+        sc_status st = SC_OK;
+        if (!mixed++)
+            st = build_note(w->c, &n->loc, "Mixing 2D and 3D objects is not supported");
+        if (st == SC_OK)
+            st = build_note(w->c, &n->loc, "Ignoring 2D child object for 3D operation");
         if (st != SC_OK) {
             if (*out)
                 w->nef->release(*out);
