@@ -96,6 +96,40 @@ warns first2d.csg "first2d.csg:2:1: warning: Mixing 2D and 3D objects is not sup
 first2d.csg:2:1: warning: Ignoring 3D child object for 2D operation"
 same first2d.csg slab_ref.csg
 
+# The same inside a boolean that OpenSCAD evaluates with CGAL (the mesh a
+# projection takes): the 2D child is the empty operand, so it subtracts
+# nothing, and the warnings are OpenSCAD's.
+cat >nefmix.csg <<'M'
+projection(cut = false) {
+	difference() {
+		cube(size = [10, 10, 10], center = false);
+		square(size = [3, 3], center = false);
+		multmatrix([[1, 0, 0, 2], [0, 1, 0, 2], [0, 0, 1, -1], [0, 0, 0, 1]]) {
+			cube(size = [2, 2, 20], center = false);
+		}
+	}
+}
+M
+cat >nefmix_ref.csg <<'M'
+projection(cut = false) {
+	difference() {
+		cube(size = [10, 10, 10], center = false);
+		multmatrix([[1, 0, 0, 2], [0, 1, 0, 2], [0, 0, 1, -1], [0, 0, 0, 1]]) {
+			cube(size = [2, 2, 20], center = false);
+		}
+	}
+}
+M
+warns nefmix.csg "nefmix.csg:4:3: warning: Mixing 2D and 3D objects is not supported
+nefmix.csg:4:3: warning: Ignoring 2D child object for 3D operation"
+same nefmix.csg nefmix_ref.csg
+# and it empties an intersection
+sed 's/difference/intersection/' nefmix.csg >nefmeet.csg
+warns nefmeet.csg "nefmeet.csg:4:3: warning: Mixing 2D and 3D objects is not supported
+nefmeet.csg:4:3: warning: Ignoring 2D child object for 3D operation
+nefmeet.csg:1:1: warning: the 2D model has no area
+nefmeet.csg: warning: the model is empty (nothing to render)"
+
 # ---- a 2D model: flat, 1 thick about z = 0, in colour, mask and depth ----
 printf 'square(size = [10, 4], center = false);\n' >flat.csg
 warns flat.csg ""

@@ -864,7 +864,12 @@ static sc_status nef_children(const walk *w, const model_node *parent, const aff
             return st;
         }
     }
-    return warn_2d(w, parent);
+    sc_status st = warn_2d(w, parent);
+    if (st != SC_OK && *out) {
+        w->nef->release(*out);
+        *out = NULL;
+    }
+    return st;
 }
 
 /* The solid of node n through m, as OpenSCAD evaluates a child of a hull
