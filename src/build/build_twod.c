@@ -539,6 +539,8 @@ static sc_status hull(const eval *e, const model_node *n, twod_region *regions,
         return err_nomem(e->c->error, &n->loc);
     size_t k = 0;
     for (uint32_t i = 0; i < count; i++) {
+        if (!regions[i].point_count) /* an empty child (a 3D one left out) */
+            continue;
         memcpy(xy + 2 * k, regions[i].xy,
                (size_t)regions[i].point_count * 2 * sizeof *xy);
         k += regions[i].point_count;
