@@ -12,7 +12,7 @@
 # Run as: bash cli_bad_input.sh <path-to-spancast> <source-dir> <work-dir>
 . "$(dirname "$0")/testlib.sh"
 corpus=$src/tests/bad-input
-export LSAN_OPTIONS="suppressions=$src/tests/imports.lsan-suppressions${LSAN_OPTIONS:+:$LSAN_OPTIONS}"
+export LSAN_OPTIONS="suppressions=$src/tests/imports.lsan-suppressions:print_suppressions=0${LSAN_OPTIONS:+:$LSAN_OPTIONS}"
 mkdir -p "$work/out"
 
 cd "$corpus" || exit 1

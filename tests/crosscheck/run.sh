@@ -27,7 +27,7 @@ set -euo pipefail
 spancast=$1 refcast=$2 compare=$3 model=$4 work=$5 size=$6
 # lib3mf's own leak when it reads a 3MF (import_3mf), told to
 # LeakSanitizer under the sanitizers (tests/imports.lsan-suppressions).
-export LSAN_OPTIONS="suppressions=$(cd "$(dirname "$0")/.." && pwd)/imports.lsan-suppressions${LSAN_OPTIONS:+:$LSAN_OPTIONS}"
+export LSAN_OPTIONS="suppressions=$(cd "$(dirname "$0")/.." && pwd)/imports.lsan-suppressions:print_suppressions=0${LSAN_OPTIONS:+:$LSAN_OPTIONS}"
 name=$(basename "$model" .scad)
 rm -rf "$work"
 mkdir -p "$work"
