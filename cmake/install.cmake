@@ -8,11 +8,14 @@
 #   LIBDIR/spancast/spancast-oiio.so      the OpenImageIO plugin the library (and
 #                                         the tool) load on demand (src/formats/file.c)
 #   LIBDIR/spancast/spancast-tiff.so      the tiled TIFF plugin (libtiff), likewise
+#   LIBDIR/spancast/spancast-exr.so       the EXR plugin (OpenEXR), likewise
 #   LIBDIR/spancast/spancast-cgal.so      the CGAL plugin (booleans inside hull and
 #                                         minkowski; GMP, MPFR), likewise
 #   LIBDIR/spancast/spancast-xml.so       the XML plugin (SVG and AMF imports;
 #                                         libxml2), likewise
 #   LIBDIR/spancast/spancast-3mf.so       the 3MF plugin (lib3mf), likewise
+#   LIBDIR/spancast/spancast-text.so      the text() plugin (FreeType, HarfBuzz,
+#                                         fontconfig), likewise
 #   share/doc/libspancast0/copyright
 # development -> libspancast-dev (Section libdevel)
 #   LIBDIR/libspancast.so                 the link for -lspancast
@@ -45,7 +48,8 @@ set(SPANCAST_DEB_DEV libspancast-dev)
 set(SPANCAST_DEB_TOOL spancast)
 
 install(TARGETS spancast RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR} COMPONENT tool)
-install(TARGETS spancast_oiio spancast_tiff spancast_cgal spancast_xml spancast_3mf LIBRARY DESTINATION ${SPANCAST_HELPERS_DIR}
+install(TARGETS spancast_oiio spancast_tiff spancast_cgal spancast_xml spancast_3mf spancast_text
+        spancast_exr LIBRARY DESTINATION ${SPANCAST_HELPERS_DIR}
         COMPONENT library)
 install(TARGETS spancast-bench RUNTIME DESTINATION ${SPANCAST_HELPERS_DIR} COMPONENT tool)
 install(TARGETS spancast_view RUNTIME DESTINATION ${SPANCAST_HELPERS_DIR} COMPONENT tool)
@@ -124,8 +128,10 @@ endforeach()
 # per install component (above), as Debian splits a library: libspancast0,
 # libspancast-dev and spancast. Their Depends on other Debian packages come
 # from dpkg-shlibdeps on what is linked (cmake/CPackProjectConfig.cmake.in:
-# the library's for libspancast0, the tool's and spancast-bench's for
-# spancast, leaving out the OpenImageIO plugin and the viewer); the
+# the library's and the text and EXR plugins' for libspancast0, since
+# text() and EXR are part of every install though loaded on demand; the
+# tool's and spancast-bench's for spancast, leaving out the OpenImageIO
+# plugin and the viewer); the
 # packages depend on each other at the exact version, since the plugin's
 # interface and the tool's copy of the library are internal. What is
 # found or loaded only on demand is listed by hand below.
@@ -189,7 +195,8 @@ string(CONCAT CPACK_COMPONENT_TOOL_DESCRIPTION
 set(CPACK_DEBIAN_LIBRARY_PACKAGE_RECOMMENDS "libopenimageio2.4, libtiff6, libgmp10, libmpfr6, libxml2, lib3mf1")
 set(CPACK_DEBIAN_TOOL_PACKAGE_RECOMMENDS "openscad, libopenimageio2.4, libtiff6, libgmp10, libmpfr6, libxml2, lib3mf1, libsdl2-2.0-0, libopenmpi3, ffmpeg")
 set(CPACK_DEBIAN_TOOL_PACKAGE_SUGGESTS "gnuplot-nox")
-set(SPANCAST_SHLIBDEPS_LIBRARY $<TARGET_FILE:spancast_shared>)
+set(SPANCAST_SHLIBDEPS_LIBRARY $<TARGET_FILE:spancast_shared> $<TARGET_FILE:spancast_text>
+    $<TARGET_FILE:spancast_exr>)
 set(SPANCAST_SHLIBDEPS_TOOL $<TARGET_FILE:spancast> $<TARGET_FILE:spancast-bench>)
 file(GENERATE OUTPUT ${PROJECT_BINARY_DIR}/cpack-shlibdeps-library.txt
      CONTENT "$<JOIN:${SPANCAST_SHLIBDEPS_LIBRARY},\n>\n")

@@ -72,7 +72,7 @@ for f in bin/spancast include/spancast/spancast.h include/spancast/version.h \
     check
     [ -f "$prefix/$f" ] || fail "not installed: $f"
 done
-for f in libspancast.so spancast/spancast-oiio.so spancast/spancast-tiff.so spancast/spancast-cgal.so spancast/spancast-xml.so spancast/spancast-3mf.so spancast/spancast-bench spancast/spancast-view \
+for f in libspancast.so spancast/spancast-oiio.so spancast/spancast-tiff.so spancast/spancast-cgal.so spancast/spancast-xml.so spancast/spancast-3mf.so spancast/spancast-text.so spancast/spancast-exr.so spancast/spancast-bench spancast/spancast-view \
     cmake/spancast/spancastConfig.cmake cmake/spancast/spancastConfigVersion.cmake \
     cmake/spancast/spancastTargets.cmake; do
     check
@@ -103,6 +103,24 @@ if LD_DEBUG=files "$prefix/bin/spancast" render drilled.csg -o drilled.tif --img
 else
     fail "installed spancast render to .tif: $(grep -v '^ *[0-9]*:' ld-tool.txt)"
 fi
+# text() and EXR go through their plugins: the installed ones.
+cat >hello.csg <<'CSG'
+linear_extrude(height = 2) { text(text = "Hi", size = 10); }
+CSG
+for plugin in text exr; do
+    check
+    model=drilled.csg
+    [ "$plugin" = text ] && model=hello.csg
+    if LD_DEBUG=files "$prefix/bin/spancast" render "$model" -o "$plugin.exr" --imgsize=64,48 \
+        -q 2>ld-$plugin.txt; then
+        got=$(loaded ld-$plugin.txt spancast-$plugin.so)
+        [ "$got" = "$(realpath "$libdir/spancast/spancast-$plugin.so")" ] ||
+            fail "the installed tool loaded '$got', not $libdir/spancast/spancast-$plugin.so"
+        [ -s "$plugin.exr" ] || fail "installed spancast wrote no $plugin.exr"
+    else
+        fail "installed spancast render of $model to .exr: $(grep -v '^ *[0-9]*:' ld-$plugin.txt)"
+    fi
+done
 # `spancast bench` starts the installed spancast-bench: its own message for
 # a bad option (exit 2), not "cannot find spancast-bench" (exit 1).
 check
@@ -403,6 +421,7 @@ lacks() {
 has $libpkg "LIBDIR/libspancast.so.$soversion" "LIBDIR/libspancast.so.$version" \
     LIBDIR/spancast/spancast-oiio.so LIBDIR/spancast/spancast-tiff.so LIBDIR/spancast/spancast-cgal.so \
     LIBDIR/spancast/spancast-xml.so LIBDIR/spancast/spancast-3mf.so \
+    LIBDIR/spancast/spancast-text.so LIBDIR/spancast/spancast-exr.so \
     usr/share/doc/$libpkg/copyright
 lacks $libpkg '^usr/include/' '^LIBDIR/libspancast\.so$' '^usr/bin/' '^usr/share/man/' \
     'pkgconfig|cmake'
@@ -428,11 +447,14 @@ check
     grep -qx 'Files: \*' copyright.txt || fail "copyright: a Files paragraph without its License"
 
 # The dependencies. What is linked: from dpkg-shlibdeps (libc6,
-# libpng16-16, the OpenEXR and text libraries, libgomp1); OpenImageIO only
-# recommended, since only the plugin loaded on demand links it.
+# libpng16-16, the OpenEXR and text libraries, libgomp1: the text and EXR
+# plugins are scanned with the library, being part of every install);
+# OpenImageIO only recommended, since only the plugin loaded on demand
+# links it.
 field() { dpkg-deb -f "$(deb_of "$1")" "$2"; }
 depends=$(field $libpkg Depends)
-for pkg in libc6 libpng16-16 libgomp1 libfreetype6 libharfbuzz0b libfontconfig1 libpolyclipping22; do
+for pkg in libc6 libpng16-16 libgomp1 libfreetype6 libharfbuzz0b libfontconfig1 libpolyclipping22 \
+    libopenexr-3-1-30; do
     check
     echo "$depends" | grep -Eq "(^|, )$pkg( |,|$)" || fail "$libpkg Depends lacks $pkg: $depends"
 done

@@ -1,8 +1,9 @@
 /* The image back ends behind image_io.c and image_read.c.
  *
  * A write is described once, as an imgio_image, and handed to the back end
- * that the file's extension selects: PNG (libpng, image_png.c) and EXR
- * (OpenEXR, image_exr.cpp) are written directly; every other format goes
+ * that the file's extension selects: PNG (libpng, image_png.c) is written
+ * directly, EXR through OpenEXR in a plugin of its own
+ * (exr/image_exr.cpp, built as spancast-exr.so); every other format goes
  * through OpenImageIO in a plugin (oiio/image_oiio.cpp, built as
  * spancast-oiio.so) that is loaded only when such a file is written or read,
  * so that a run which writes PNG or EXR never loads OpenImageIO and the
@@ -38,27 +39,47 @@ typedef struct imgio_image {
 
 /* Each writer creates or truncates path and writes img to it. Returns 1 on
  * success; on failure 0, with a message (no path, no trailing newline) in
- * err. A failed write may leave a partial file at path. */
+ * err. A failed write may leave a partial file at path. The EXR writer
+ * loads the EXR plugin (below) for the write; without it the write fails
+ * with "cannot load the EXR plugin (spancast-exr.so): why". */
 int imgio_png_write(const imgio_image *img, const char *path, char *err, size_t err_size);
 int imgio_exr_write(const imgio_image *img, const char *path, char *err, size_t err_size);
 
-/* An OpenEXR exception's text into err (trailing newlines and blanks
- * dropped; "unknown OpenEXR error" when none is left). */
-void imgio_exr_message(char *err, size_t err_size, const char *what);
-
-/* Tiled EXR, tile by tile (image_exr_tiled.cpp). open starts a file of
+/* Tiled EXR, tile by tile (exr/image_exr_tiled.cpp). open starts a file of
  * img's size, channels, sample type and metadata (img->pixels is not
  * read) in square tiles of side tile; write stores tile (tx, ty) from
  * pixels, its rows from the top, channels interleaved, as wide and high as
  * the tile is inside the image; tiles come row by row, left to right, each
  * once. close finishes the file and frees t (also after a failure). Each
- * returns NULL or 0 on failure with a message in err. */
+ * returns NULL or 0 on failure with a message in err. open holds the EXR
+ * plugin until close. */
 typedef struct imgio_exr_tiles imgio_exr_tiles;
 imgio_exr_tiles *imgio_exr_tiles_open(const imgio_image *img, int tile, const char *path,
                                       char *err, size_t err_size);
 int imgio_exr_tiles_write(imgio_exr_tiles *t, int tx, int ty, const void *pixels,
                           char *err, size_t err_size);
 int imgio_exr_tiles_close(imgio_exr_tiles *t, char *err, size_t err_size);
+
+/* The EXR plugin (exr/image_exr.h), the only code that links OpenEXR: its
+ * entry points, looked up by the names spancast_exr_write, _read,
+ * _tiles_open, _tiles_write and _tiles_close, do what the imgio_exr_
+ * functions of the same names say; the plugin's tiled file is exr_tiles. */
+#define IMGIO_EXR_PLUGIN_FILE "spancast-exr.so"
+typedef struct exr_tiles exr_tiles;
+typedef int imgio_exr_write_fn(const imgio_image *img, const char *path, char *err,
+                               size_t err_size);
+typedef int imgio_exr_read_fn(const char *path, image_data *out, char *err,
+                              size_t err_size);
+typedef exr_tiles *imgio_exr_tiles_open_fn(const imgio_image *img, int tile,
+                                           const char *path, char *err, size_t err_size);
+typedef int imgio_exr_tiles_write_fn(exr_tiles *t, int tx, int ty, const void *pixels,
+                                     char *err, size_t err_size);
+typedef int imgio_exr_tiles_close_fn(exr_tiles *t, char *err, size_t err_size);
+imgio_exr_write_fn spancast_exr_write;
+imgio_exr_read_fn spancast_exr_read;
+imgio_exr_tiles_open_fn spancast_exr_tiles_open;
+imgio_exr_tiles_write_fn spancast_exr_tiles_write;
+imgio_exr_tiles_close_fn spancast_exr_tiles_close;
 
 /* Tiled TIFF (BigTIFF when large), tile by tile: as the tiled EXR calls
  * above; tile must be a multiple of 16. They are the entry points of a

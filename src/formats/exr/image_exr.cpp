@@ -14,7 +14,7 @@
 //
 // This file converts OpenEXR's exceptions into messages and never lets one
 // out.
-#include "formats/image_exr.h"
+#include "formats/exr/image_exr.h"
 
 #include <OpenEXR/ImfChannelList.h>
 #include <OpenEXR/ImfFrameBuffer.h>
@@ -31,7 +31,7 @@
 #include <string>
 #include <vector>
 
-extern "C" void imgio_exr_message(char *err, size_t err_size, const char *what)
+void exr_message(char *err, size_t err_size, const char *what)
 {
     std::string text = what;
     while (!text.empty() && (text.back() == '\n' || text.back() == ' '))
@@ -45,9 +45,9 @@ void exr_exception_message(char *err, size_t err_size)
     try {
         throw;
     } catch (const std::bad_alloc &) {
-        imgio_exr_message(err, err_size, "out of memory");
+        exr_message(err, err_size, "out of memory");
     } catch (const std::exception &e) {
-        imgio_exr_message(err, err_size, e.what());
+        exr_message(err, err_size, e.what());
     }
 }
 
@@ -78,8 +78,8 @@ const char *exr_samples(const void *pixels, imgio_sample sample, size_t values,
     return reinterpret_cast<const char *>(halves.data());
 }
 
-extern "C" int imgio_exr_write(const imgio_image *img, const char *path, char *err,
-                               size_t err_size)
+extern "C" int spancast_exr_write(const imgio_image *img, const char *path, char *err,
+                                  size_t err_size)
 {
     try {
         Imf::Header header(img->width, img->height);
@@ -111,8 +111,8 @@ extern "C" int imgio_exr_write(const imgio_image *img, const char *path, char *e
     return 0;
 }
 
-extern "C" int imgio_exr_read(const char *path, image_data *out, char *err,
-                              size_t err_size)
+extern "C" int spancast_exr_read(const char *path, image_data *out, char *err,
+                                 size_t err_size)
 {
     out->width = out->height = out->channels = 0;
     out->pixels = nullptr;
@@ -159,7 +159,7 @@ extern "C" int imgio_exr_read(const char *path, image_data *out, char *err,
         std::snprintf(err, err_size, "cannot read '%s': out of memory", path);
     } catch (const std::exception &e) {
         char why[400];
-        imgio_exr_message(why, sizeof why, e.what());
+        exr_message(why, sizeof why, e.what());
         std::snprintf(err, err_size, "cannot read '%s': %s", path, why);
     }
     std::free(pixels);

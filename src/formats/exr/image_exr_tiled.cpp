@@ -1,10 +1,11 @@
 // Tiled EXR files written tile by tile, for images too large to hold whole.
 //
 // A render that streams its outputs (image_stream.h) hands each finished
-// tile to imgio_exr_tiles_write as soon as it has it. The file is a single
+// tile to imgio_exr_tiles_write (image_plugin.c), and so to
+// spancast_exr_tiles_write here, as soon as it has it. The file is a single
 // tiled part with square tiles of one level, ZIP compression (each tile
 // compressed on its own) and the channels, sample types and metadata of
-// imgio_exr_write, so that only the layout differs from a scanline file of
+// spancast_exr_write, so that only the layout differs from a scanline file of
 // the same image. Tiles are written in INCREASING_Y order (row by row,
 // left to right): the caller delivers them in that order, so OpenEXR
 // writes each at once and buffers nothing, and the file's bytes do not
@@ -13,7 +14,7 @@
 //
 // As in image_exr.cpp, OpenEXR's exceptions become messages here and
 // never leave this file.
-#include "formats/image_exr.h"
+#include "formats/exr/image_exr.h"
 
 #include <OpenEXR/ImfChannelList.h>
 #include <OpenEXR/ImfFrameBuffer.h>
@@ -29,7 +30,7 @@
 #include <string>
 #include <vector>
 
-struct imgio_exr_tiles {
+struct exr_tiles {
     std::unique_ptr<Imf::TiledOutputFile> file;
     int width, height, tile, channels;
     std::vector<std::string> names;
@@ -37,13 +38,13 @@ struct imgio_exr_tiles {
     std::vector<Imath::half> halves; // one tile of 8-bit values as half
 };
 
-extern "C" imgio_exr_tiles *imgio_exr_tiles_open(const imgio_image *img, int tile,
-                                                 const char *path, char *err,
-                                                 size_t err_size)
+extern "C" exr_tiles *spancast_exr_tiles_open(const imgio_image *img, int tile,
+                                              const char *path, char *err,
+                                              size_t err_size)
 {
-    imgio_exr_tiles *t = nullptr;
+    exr_tiles *t = nullptr;
     try {
-        t = new imgio_exr_tiles;
+        t = new exr_tiles;
         t->width = img->width;
         t->height = img->height;
         t->tile = tile;
@@ -69,8 +70,8 @@ extern "C" imgio_exr_tiles *imgio_exr_tiles_open(const imgio_image *img, int til
     return nullptr;
 }
 
-extern "C" int imgio_exr_tiles_write(imgio_exr_tiles *t, int tx, int ty,
-                                     const void *pixels, char *err, size_t err_size)
+extern "C" int spancast_exr_tiles_write(exr_tiles *t, int tx, int ty, const void *pixels,
+                                        char *err, size_t err_size)
 {
     try {
         int w = t->width - tx * t->tile < t->tile ? t->width - tx * t->tile : t->tile;
@@ -98,7 +99,7 @@ extern "C" int imgio_exr_tiles_write(imgio_exr_tiles *t, int tx, int ty,
     return 0;
 }
 
-extern "C" int imgio_exr_tiles_close(imgio_exr_tiles *t, char *err, size_t err_size)
+extern "C" int spancast_exr_tiles_close(exr_tiles *t, char *err, size_t err_size)
 {
     if (!t)
         return 1;

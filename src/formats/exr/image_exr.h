@@ -1,9 +1,15 @@
-// What the scanline and the tiled EXR writers (image_exr.cpp,
+// The EXR plugin, spancast-exr.so: the only code that links OpenEXR
+// (Imath, Iex, IlmThread, OpenEXRCore, libdeflate), loaded by the first EXR
+// file written or read (image_plugin.c), so that no other run loads those
+// libraries or runs their start-up. Its entry points are the
+// spancast_exr_* functions of image_backend.h; they catch every exception.
+//
+// Below: what the scanline and the tiled EXR writers (image_exr.cpp,
 // image_exr_tiled.cpp) do alike, so that a tiled file differs from a
 // scanline file of the same image only in its layout. C++ only: these take
 // OpenEXR's types and may throw its exceptions, which the callers catch.
-#ifndef SPANCAST_FORMATS_IMAGE_EXR_H
-#define SPANCAST_FORMATS_IMAGE_EXR_H
+#ifndef SPANCAST_FORMATS_EXR_IMAGE_EXR_H
+#define SPANCAST_FORMATS_EXR_IMAGE_EXR_H
 
 #include <OpenEXR/ImfHeader.h>
 #include <OpenEXR/ImfPixelType.h>
@@ -13,6 +19,10 @@
 #include <vector>
 
 #include "formats/image_backend.h"
+
+// An OpenEXR exception's text into err (trailing newlines and blanks
+// dropped; "unknown OpenEXR error" when none is left).
+void exr_message(char *err, size_t err_size, const char *what);
 
 // Called in a handler of a std::exception: that exception as a message
 // in err ("out of memory" for std::bad_alloc, else OpenEXR's text).
