@@ -6,6 +6,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "base/mem.h"
+
 struct arena_block {
     arena_block *next;
     size_t size; /* usable bytes after the header */
@@ -30,6 +32,7 @@ void arena_free(arena *a)
     }
     a->first = a->head = NULL;
     a->used = 0;
+    a->owned = 0;
 }
 
 void arena_reset(arena *a)
@@ -67,6 +70,12 @@ void *arena_alloc(arena *a, size_t size)
      * just big enough (span lists that grow by a few spans each time made
      * as many blocks as requests, their total quadratic). */
     size_t block = a->block_size;
+    if (a->owned >= ARENA_GROW_FROM) {
+        size_t quarter = a->owned / 4;
+        block = quarter > ARENA_GROW_MAX ? ARENA_GROW_MAX
+                : quarter > block        ? quarter
+                                         : block;
+    }
     if (size > block) {
         size_t step = 1;
         while (step <= size / 16)
@@ -80,7 +89,9 @@ void *arena_alloc(arena *a, size_t size)
     if (!b)
         return NULL;
     a->block_allocs++;
+    a->owned += block;
     b->size = block;
+    mem_advise_huge(b->data, block);
     /* Insert after head so blocks already owned further on stay reachable. */
     if (a->head) {
         b->next = a->head->next;

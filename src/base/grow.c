@@ -2,15 +2,34 @@
 #include "base/grow.h"
 
 #include <stdlib.h>
+#include <string.h>
 
-/* Reallocates *array to n items of elem bytes; 0 on failure. */
-static int resize(void **array, uint64_t n, size_t elem)
+#include "base/mem.h"
+
+/* Reallocates *array of old items to n items of elem bytes; 0 on
+ * failure. A large array moves into a new buffer advised for huge pages
+ * before the copy (mem_advise_huge): realloc would copy it into fresh 4 KiB
+ * pages first, one fault each, and most large arrays grow by doubling,
+ * each time into such a buffer. */
+static int resize(void **array, uint64_t old, uint64_t n, size_t elem)
 {
     if (n > SIZE_MAX / elem)
         return 0;
-    void *p = realloc(*array, (size_t)n * elem);
+    size_t bytes = (size_t)n * elem;
+    if (bytes < MEM_HUGE_MIN || !*array) {
+        void *p = realloc(*array, bytes);
+        if (!p)
+            return 0;
+        mem_advise_huge(p, bytes);
+        *array = p;
+        return 1;
+    }
+    void *p = malloc(bytes);
     if (!p)
         return 0;
+    mem_advise_huge(p, bytes);
+    memcpy(p, *array, (size_t)old * elem); /* old < n: no overflow */
+    free(*array);
     *array = p;
     return 1;
 }
@@ -32,7 +51,7 @@ int grow_array(void **array, size_t *cap, size_t need, size_t elem)
     if (need <= *cap)
         return 1;
     uint64_t n = next_capacity(*cap, need, SIZE_MAX);
-    if (!n || !resize(array, n, elem))
+    if (!n || !resize(array, *cap, n, elem))
         return 0;
     *cap = (size_t)n;
     return 1;
@@ -43,7 +62,7 @@ int grow_array32(void **array, uint32_t *cap, uint32_t need, size_t elem)
     if (need <= *cap)
         return 1;
     uint64_t n = next_capacity(*cap, need, UINT32_MAX - 1);
-    if (!n || !resize(array, n, elem))
+    if (!n || !resize(array, *cap, n, elem))
         return 0;
     *cap = (uint32_t)n;
     return 1;

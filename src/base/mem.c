@@ -1,10 +1,12 @@
 /* The process's memory limit: see mem.h. */
-#define _DEFAULT_SOURCE /* getrlimit */
+#define _DEFAULT_SOURCE /* getrlimit, madvise */
 
 #include "base/mem.h"
 
 #include <stdio.h>
 #include <string.h>
+#include <stdint.h>
+#include <sys/mman.h>
 #include <sys/resource.h>
 
 #include "base/error.h"
@@ -29,6 +31,22 @@ uint64_t mem_in_use(void)
             break;
     fclose(f);
     return (uint64_t)kib * 1024;
+}
+
+void mem_advise_huge(void *p, size_t bytes)
+{
+#ifdef MADV_HUGEPAGE
+    const uintptr_t huge = (uintptr_t)2 << 20; /* the x86-64 and arm64 size */
+    if (!p || bytes < MEM_HUGE_MIN)
+        return;
+    uintptr_t start = ((uintptr_t)p + huge - 1) & ~(huge - 1);
+    uintptr_t end = ((uintptr_t)p + bytes) & ~(huge - 1);
+    if (end > start)
+        (void)madvise((void *)start, end - start, MADV_HUGEPAGE); /* advice only */
+#else
+    (void)p;
+    (void)bytes;
+#endif
 }
 
 const char *mem_format(uint64_t bytes, char *buf, int n)

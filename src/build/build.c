@@ -1093,6 +1093,10 @@ static sc_status build_scene_of(const model *m, model *owned, int flags, csg_tre
         model_free(owned);
         return err_nomem(error, NULL);
     }
+    /* Room for the model's leaves up front; running out of memory here
+     * fails the builder, which the walk reports as any other failure. */
+    if (m->leaf_count && m->leaf_count < UINT32_MAX / 2)
+        (void)csg_builder_reserve(b.csg, (uint32_t)m->leaf_count);
     uint32_t root = CSG_EMPTY;
     sc_status st = walk(&b, &root);
     free(b.ids);

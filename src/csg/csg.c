@@ -76,6 +76,23 @@ int csg_builder_failed(const csg_builder *b)
     return b->failed;
 }
 
+int csg_builder_reserve(csg_builder *b, uint32_t leaves)
+{
+    /* The nodes: one per leaf, and the operations above them, which are
+     * few in a large model (a sixteenth more, as room). */
+    uint64_t nodes = (uint64_t)b->node_count + leaves + leaves / 16 + 16;
+    uint64_t all_leaves = (uint64_t)b->leaf_count + leaves;
+    if (b->failed || nodes >= UINT32_MAX ||
+        !grow_array32((void **)&b->leaves, &b->leaf_cap, (uint32_t)all_leaves,
+                      sizeof *b->leaves) ||
+        !grow_array32((void **)&b->nodes, &b->node_cap, (uint32_t)nodes,
+                      sizeof *b->nodes)) {
+        b->failed = 1;
+        return 0;
+    }
+    return 1;
+}
+
 static uint32_t add_node(csg_builder *b, const csg_node *n)
 {
     if (!grow_array32((void **)&b->nodes, &b->node_cap, b->node_count + 1,

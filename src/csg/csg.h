@@ -120,6 +120,13 @@ void csg_builder_free(csg_builder *b);
  * Returns NULL on allocation failure. */
 void *csg_builder_alloc(csg_builder *b, size_t size);
 
+/* Makes room for leaves more leaves and their nodes at once, so that a
+ * large tree's arrays are allocated once rather than grown by doubling
+ * (each doubling a copy into fresh memory). Returns 1, or 0 when memory
+ * ran out, which fails the builder as any allocation of it does
+ * (csg_builder_failed). */
+int csg_builder_reserve(csg_builder *b, uint32_t leaves);
+
 /* Adds a leaf; to_world must be invertible (the builder of the scene checks
  * and flattens singular transforms itself). Returns its node id, or
  * CSG_EMPTY when the allocation failed (see csg_builder_failed). */

@@ -611,6 +611,8 @@ static sc_status visit(lowerer *l, const parse_node *n, context ctx,
         node->kind = MODEL_ERROR;
         node->u.error = copy;
         l->stopped = 1;
+    } else if (model_is_leaf(node->kind)) {
+        l->m->leaf_count++;
     }
     return SC_OK;
 }

@@ -376,6 +376,8 @@ typedef struct model {
     const char *file;  /* as the syntax tree names it; not owned */
     model_node *first; /* top-level nodes, linked by next */
     int has_root;      /* some node (maybe after an error) has the '!' */
+    size_t leaf_count; /* leaf nodes of the main model: what the builder
+                          reserves room for (csg_builder_reserve) */
 } model;
 
 /* Lowers syntax into *out (free with model_free). Returns SC_OK with a

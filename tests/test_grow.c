@@ -1,0 +1,138 @@
+/* Tests of the growable arrays (src/base/grow.c) and of the huge-page
+ * advice their large arrays get (mem_advise_huge in src/base/mem.c): an
+ * array that grows past MEM_HUGE_MIN moves to a new buffer and keeps every
+ * item, a failed growth leaves the array as it was, and on a Linux kernel
+ * with transparent huge pages the large buffer's mapping carries the
+ * advice (the "hg" flag of /proc/self/smaps).
+ */
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+
+#include <cmocka.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "base/grow.h"
+#include "base/mem.h"
+#include "test_util.h"
+
+/* Items appended one at a time, past MEM_HUGE_MIN bytes (3 Mi items of 8
+ * bytes is 24 MiB), all kept through every move. */
+static void test_grow_keeps_items(void **state)
+{
+    (void)state;
+    uint64_t *v = NULL;
+    size_t cap = 0, n = (size_t)3 << 20;
+    for (size_t i = 0; i < n; i++) {
+        assert_int_equal(grow_array((void **)&v, &cap, i + 1, sizeof *v), 1);
+        v[i] = (uint64_t)i * 2654435761u;
+    }
+    assert_true(cap >= n && cap < 2 * n);
+    assert_true(cap * sizeof *v >= MEM_HUGE_MIN);
+    for (size_t i = 0; i < n; i++)
+        assert_true(v[i] == (uint64_t)i * 2654435761u);
+    free(v);
+
+    uint32_t *w = NULL;
+    uint32_t cap32 = 0, n32 = (uint32_t)5 << 20;
+    for (uint32_t i = 0; i < n32; i++) {
+        assert_int_equal(grow_array32((void **)&w, &cap32, i + 1, sizeof *w), 1);
+        w[i] = ~i;
+    }
+    for (uint32_t i = 0; i < n32; i++)
+        assert_true(w[i] == ~i);
+    free(w);
+}
+
+/* A growth whose size overflows fails and leaves array and capacity. */
+static void test_grow_failure_keeps_array(void **state)
+{
+    (void)state;
+    double *v = NULL;
+    size_t cap = 0;
+    assert_int_equal(grow_array((void **)&v, &cap, 3, sizeof *v), 1);
+    v[0] = 1.5;
+    double *before = v;
+    size_t cap_before = cap;
+    assert_int_equal(grow_array((void **)&v, &cap, SIZE_MAX / 4, sizeof *v), 0);
+    assert_ptr_equal(v, before);
+    assert_int_equal(cap, cap_before);
+    assert_true(v[0] == 1.5);
+    free(v);
+}
+
+/* The VmFlags line of the mapping of /proc/self/smaps that holds addr,
+ * copied into flags (size n); 0 when there is none. */
+static int mapping_flags(uintptr_t addr, char *flags, size_t n)
+{
+    FILE *f = fopen("/proc/self/smaps", "r");
+    if (!f)
+        return 0;
+    char line[512];
+    int inside = 0, found = 0;
+    while (fgets(line, sizeof line, f)) {
+        unsigned long lo, hi;
+        if (sscanf(line, "%lx-%lx ", &lo, &hi) == 2) { /* a mapping's first line */
+            inside = addr >= lo && addr < hi;
+        } else if (inside && strncmp(line, "VmFlags:", 8) == 0) {
+            snprintf(flags, n, "%s", line + 8);
+            found = 1;
+            break;
+        }
+    }
+    fclose(f);
+    return found;
+}
+
+/* Whether the kernel has transparent huge pages to advise. */
+static int have_huge_pages(void)
+{
+    FILE *thp = fopen("/sys/kernel/mm/transparent_hugepage/enabled", "r");
+    if (!thp)
+        return 0;
+    fclose(thp);
+    return 1;
+}
+
+/* A large grown array lies in a mapping advised for huge pages (run only
+ * where the kernel has them); small ones are left alone. */
+static void test_large_array_advised(void **state)
+{
+    (void)state;
+    unsigned char *v = NULL;
+    size_t cap = 0, n = (size_t)32 << 20;
+    assert_int_equal(grow_array((void **)&v, &cap, 1, 1), 1);
+    assert_int_equal(grow_array((void **)&v, &cap, n, 1), 1);
+    memset(v, 7, n);
+    char flags[512];
+    assert_int_equal(mapping_flags((uintptr_t)(v + n / 2), flags, sizeof flags), 1);
+    assert_non_null(strstr(flags, " hg"));
+    free(v);
+
+    /* Advice on a small or missing buffer is nothing at all. */
+    char small[64];
+    mem_advise_huge(small, sizeof small);
+    mem_advise_huge(NULL, MEM_HUGE_MIN);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_grow_keeps_items),
+        cmocka_unit_test(test_grow_failure_keeps_array),
+    };
+    const struct CMUnitTest advised[] = {
+        cmocka_unit_test(test_large_array_advised),
+    };
+    int failed = cmocka_run_group_tests(tests, NULL, NULL);
+    if (failed)
+        return failed;
+    if (!have_huge_pages()) {
+        fprintf(stderr, "test_grow: no transparent huge pages: advice not tested\n");
+        return 77; /* skipped */
+    }
+    return cmocka_run_group_tests(advised, NULL, NULL);
+}
