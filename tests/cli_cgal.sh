@@ -3,7 +3,8 @@
 # spancast-cgal.so, loaded only when a model has one: --version, info and
 # render of other models never load it (ld.so's own log), a hull of an
 # intersection and a projection of a difference do, a broken plugin is an
-# error that names it, and memory running out inside CGAL is an error.
+# error that names it, two CGAL computations cut from GEB give OpenSCAD's
+# solid, and memory running out inside CGAL is an error.
 #
 # Run as: bash cli_cgal.sh <path-to-spancast> <source-dir> <work-dir>
 . "$(dirname "$0")/testlib.sh"
@@ -76,6 +77,40 @@ fi
 grep -q "^proj.csg:3:5: error: projection: cannot load the CGAL plugin (spancast-cgal.so): it lacks spancast_nef_from_mesh$" err.txt ||
     fail "broken plugin message for a projection: $(cat err.txt)"
 [ -e broken.png ] && fail "an image was written for a projection"
+
+# Two CGAL computations in one process, cut from OpenSCAD's GEB example
+# (tests/data/geb_two_projections.csg): the outline of the extruded E,
+# then that of the E and G intersected. The letters' caps went to CGAL as
+# a fan per outline, which overlap; the Nef polyhedra built from them were
+# not valid and the intersection crashed inside CGAL (SIGSEGV, every run).
+# Both info and measure build it; the volume is OpenSCAD's own (its STL's,
+# when openscad is here).
+geb="$src/tests/data/geb_two_projections.csg"
+check
+"$bin" info "$geb" >info.txt 2>stderr.txt ||
+    fail "info of two GEB projections failed (exit $?): $(cat stderr.txt)"
+check
+if "$bin" measure "$geb" >measure.txt 2>stderr.txt; then
+    volume=$(awk '$1 == "volume" && $3 == "+-" { print $2, $4 }' measure.txt)
+    if command -v openscad >/dev/null; then
+        check
+        openscad -o "$work/geb.stl" "$geb" >/dev/null 2>&1 ||
+            fail "openscad could not render $geb"
+        # the STL's volume: the divergence theorem over its triangles
+        want=$(awk '$1 == "vertex" { p[n % 3] = $2 " " $3 " " $4; n++ }
+            $1 == "vertex" && n % 3 == 0 { split(p[0], a); split(p[1], b); split(p[2], c)
+                v += a[1] * (b[2] * c[3] - b[3] * c[2]) - a[2] * (b[1] * c[3] - b[3] * c[1])
+                v += a[3] * (b[1] * c[2] - b[2] * c[1]) }
+            END { printf "%.9g", v / 6 }' geb.stl)
+        awk -v got="$volume" -v want="$want" 'BEGIN { split(got, g, " ")
+            d = g[1] - want; if (d < 0) d = -d; exit !(want > 0 && d <= g[2] + 1e-6 * want) }' ||
+            fail "two GEB projections: volume $volume, OpenSCAD's $want"
+    else
+        echo "note: openscad is not installed; the volume of the GEB projections is not compared"
+    fi
+else
+    fail "measure of two GEB projections failed (exit $?): $(cat stderr.txt)"
+fi
 
 # Memory running out inside CGAL's exact arithmetic (GMP) is a clean
 # error, not GMP's abort: a hull of a finely tessellated sphere cut by a

@@ -318,9 +318,57 @@ static void mesh_free(mesh *m)
     free(m->line);
 }
 
+/* Hands the mesh of m to faces: its side faces one loop each, then the
+ * caps, each one face of all its loops (the cap faces of m alternate
+ * bottom and top per contour, the top left out when top_zero). Takes the
+ * points and indices of m. 0 when memory runs out. */
+static int take_faces(mesh *m, uint32_t point_count, uint32_t cap_first, int top_zero,
+                      build_faces *faces)
+{
+    uint32_t loops = (uint32_t)m->face_count;
+    uint32_t *loop_start = malloc(((size_t)loops + 1) * sizeof *loop_start);
+    uint32_t *face_loops = malloc(((size_t)cap_first + 3) * sizeof *face_loops);
+    uint32_t *indices = malloc((m->index_count ? m->index_count : 1) * sizeof *indices);
+    if (!loop_start || !face_loops || !indices) {
+        free(loop_start);
+        free(face_loops);
+        free(indices);
+        return 0;
+    }
+    /* sides as they are, then the bottom loops, then the top ones */
+    uint32_t l = 0, k = 0, f = 0;
+    for (uint32_t pass = 0; pass < 3; pass++) {
+        if (pass > 0)
+            face_loops[f++] = l;
+        for (uint32_t i = 0; i < loops; i++) {
+            int cap = i >= cap_first;
+            int top = cap && !top_zero && (i - cap_first) % 2 == 1;
+            if (pass != (!cap ? 0u : top ? 2u : 1u))
+                continue;
+            if (pass == 0)
+                face_loops[f++] = l;
+            loop_start[l++] = k;
+            for (uint32_t j = m->face_start[i]; j < m->face_start[i + 1]; j++)
+                indices[k++] = m->indices[j];
+        }
+    }
+    loop_start[l] = k;
+    face_loops[f] = l;
+    faces->points = m->points;
+    faces->point_count = point_count;
+    faces->indices = indices;
+    faces->loop_start = loop_start;
+    faces->face_loops = face_loops;
+    faces->face_count = f;
+    m->points = NULL;
+    return 1;
+}
+
+/* The extrusion of r as a mesh leaf in *out, or, when faces is not NULL,
+ * as faces for CGAL in *faces (out unused). */
 static sc_status extrude(const build_ctx *c, const sc_location *loc, const params *p,
                          const twod_region *r, uint32_t slices, prim *out,
-                         const char **empty)
+                         const char **empty, build_faces *faces)
 {
     double h1 = p->center ? -p->height / 2.0 : 0,
            h2 = p->center ? p->height / 2.0 : p->height;
@@ -387,6 +435,7 @@ static sc_status extrude(const build_ctx *c, const sc_location *loc, const param
     }
     /* caps, wound against the sides: the bottom as the contour runs, the
      * top the other way */
+    uint32_t cap_first = (uint32_t)m.face_count;
     uint32_t *face = malloc(((size_t)m.ring + 1) * sizeof *face);
     ok = ok && face;
     for (uint32_t k = 0; ok && k < r->contour_count; k++) {
@@ -406,6 +455,10 @@ static sc_status extrude(const build_ctx *c, const sc_location *loc, const param
     sc_status st;
     if (!ok)
         st = err_nomem(c->error, loc);
+    else if (faces)
+        st = take_faces(&m, (uint32_t)total, cap_first, top_zero, faces)
+                 ? SC_OK
+                 : err_nomem(c->error, loc);
     else
         st = build_mesh_prim(c, loc, "linear_extrude", 0, m.points, (uint32_t)total,
                              m.indices, m.face_start, (uint32_t)m.face_count, out, empty);
@@ -415,8 +468,8 @@ static sc_status extrude(const build_ctx *c, const sc_location *loc, const param
     return st;
 }
 
-sc_status build_linear_extrude_faithful(const build_ctx *c, const model_node *n, int emit,
-                                        prim *out, const char **empty)
+static sc_status linear_extrude(const build_ctx *c, const model_node *n, int emit,
+                                prim *out, const char **empty, build_faces *faces)
 {
     params p = {0};
     sc_status st = read_params(c, n, &p);
@@ -437,11 +490,33 @@ sc_status build_linear_extrude_faithful(const build_ctx *c, const model_node *n,
                              "is %u side faces)",
                              slices, r.point_count, BUILD_EXTRUDE_MAX_QUADS);
             else
-                st = extrude(c, &n->loc, &p, &r, (uint32_t)slices, out, empty);
+                st = extrude(c, &n->loc, &p, &r, (uint32_t)slices, out, empty, faces);
         }
     }
     twod_free(&r);
     return st;
+}
+
+sc_status build_linear_extrude_faithful(const build_ctx *c, const model_node *n, int emit,
+                                        prim *out, const char **empty)
+{
+    return linear_extrude(c, n, emit, out, empty, NULL);
+}
+
+sc_status build_linear_extrude_faces(const build_ctx *c, const model_node *n,
+                                     build_faces *faces, const char **empty)
+{
+    memset(faces, 0, sizeof *faces);
+    return linear_extrude(c, n, 1, NULL, empty, faces);
+}
+
+void build_faces_free(build_faces *faces)
+{
+    free(faces->points);
+    free(faces->indices);
+    free(faces->loop_start);
+    free(faces->face_loops);
+    memset(faces, 0, sizeof *faces);
 }
 
 sc_status build_flat_slab(const build_ctx *c, const sc_location *loc,
@@ -453,7 +528,7 @@ sc_status build_flat_slab(const build_ctx *c, const sc_location *loc,
         *empty = "the 2D model has no area";
         return SC_OK;
     }
-    sc_status st = extrude(c, loc, &p, r, 1, out, empty);
+    sc_status st = extrude(c, loc, &p, r, 1, out, empty, NULL);
     if (st == SC_OK && *empty)
         *empty = "the 2D model has no area";
     return st;

@@ -60,6 +60,7 @@
 #include "base/cancel.h"
 #include "base/error.h"
 #include "base/grow.h"
+#include "build/build_extrude_faithful.h"
 #include "build/build_mesh.h"
 #include "build/build_revolve.h"
 #include "build/build_twod.h"
@@ -740,12 +741,13 @@ static sc_status nef_error(const walk *w, const model_node *n, nef_status ns,
                    w->owner, n->name, why);
 }
 
-/* The Nef polyhedron of a closed polygon mesh; *out NULL when it has no
- * volume. */
+/* The Nef polyhedron of a closed polygon mesh (faces as nef.h's
+ * from_mesh takes them; face_loops NULL for faces of one loop each); *out
+ * NULL when it has no volume. */
 static sc_status nef_mesh(const walk *w, const model_node *n, const vec3 *points,
                           uint32_t point_count, const uint32_t *indices,
-                          const uint32_t *face_start, uint32_t face_count,
-                          nef_solid **out)
+                          const uint32_t *face_start, const uint32_t *face_loops,
+                          uint32_t face_count, nef_solid **out)
 {
     *out = NULL;
     sc_status st = nef_ready(w, n);
@@ -760,8 +762,8 @@ static sc_status nef_mesh(const walk *w, const model_node *n, const vec3 *points
         xyz[3 * i + 2] = points[i].z;
     }
     char why[512] = "";
-    nef_status ns = w->nef->from_mesh(xyz, point_count, indices, face_start, face_count,
-                                      out, why, sizeof why);
+    nef_status ns = w->nef->from_mesh(xyz, point_count, indices, face_start, face_loops,
+                                      face_count, out, why, sizeof why);
     free(xyz);
     if (ns != NEF_OK)
         return nef_error(w, n, ns, why);
@@ -795,7 +797,7 @@ static sc_status nef_convex(const walk *w, const model_node *n, const pointset *
     for (uint32_t t = 0; t <= h.tri_count; t++)
         start[t] = 3 * t;
     sc_status st =
-        nef_mesh(w, n, h.vertices, h.vertex_count, h.tris, start, h.tri_count, out);
+        nef_mesh(w, n, h.vertices, h.vertex_count, h.tris, start, NULL, h.tri_count, out);
     free(start);
     hull3_free(&h);
     return st;
@@ -838,6 +840,34 @@ static sc_status nef_combine(const walk *w, const model_node *n, nef_solid **acc
 
 static sc_status nef_node(const walk *w, const model_node *n, const affine *m, int depth,
                           nef_solid **out);
+
+/* The solid of a linear_extrude through m, whose leaf mesh (mesh_prim) is
+ * closed and not empty. That leaf's caps are a fan per contour, which
+ * overlap (a hole over its outline, a fan of a concave outline over
+ * itself): the winding rule of a leaf fills them right, but a Nef
+ * polyhedron built from them is not valid, and a later boolean on it
+ * crashed inside CGAL. So CGAL gets each cap as one face with holes
+ * (build_linear_extrude_faces), as OpenSCAD tessellates its caps. Its
+ * warnings were given by mesh_prim and are not given again. */
+static sc_status nef_extrusion(const walk *w, const model_node *n, const affine *m,
+                               nef_solid **out)
+{
+    build_ctx fc = *w->c;
+    fc.faithful = 1;
+    fc.note = NULL;
+    fc.notes = NULL;
+    build_faces faces;
+    const char *empty = NULL;
+    sc_status st = build_linear_extrude_faces(&fc, n, &faces, &empty);
+    if (st != SC_OK || empty)
+        return st;
+    for (uint32_t i = 0; i < faces.point_count; i++)
+        faces.points[i] = affine_point(m, faces.points[i]);
+    st = nef_mesh(w, n, faces.points, faces.point_count, faces.indices, faces.loop_start,
+                  faces.face_loops, faces.face_count, out);
+    build_faces_free(&faces);
+    return st;
+}
 
 /* The solid of the children of parent through m, combined by op: their
  * union, or for difference and intersection the first child minus, or
@@ -912,7 +942,7 @@ static sc_status nef_node(const walk *w, const model_node *n, const affine *m, i
         for (uint32_t i = 0; i < np; i++)
             p[i] = affine_point(m, n->u.polyhedron.points[i]);
         st = nef_mesh(w, n, p, np, n->u.polyhedron.indices, n->u.polyhedron.face_start,
-                      n->u.polyhedron.face_count, out);
+                      NULL, n->u.polyhedron.face_count, out);
         free(p);
         return st;
     }
@@ -922,6 +952,8 @@ static sc_status nef_node(const walk *w, const model_node *n, const affine *m, i
         if ((st = mesh_prim(w, n, &p, &empty)) != SC_OK || empty || p.kind != PRIM_MESH ||
             w->check)
             return st;
+        if (kind == MODEL_LINEAR_EXTRUDE)
+            return nef_extrusion(w, n, m, out);
         const prim_mesh *mesh = p.u.mesh.mesh;
         uint32_t count = mesh->tri_count;
         vec3 *v = malloc((size_t)count * 3 * sizeof *v);
@@ -934,7 +966,7 @@ static sc_status nef_node(const walk *w, const model_node *n, const affine *m, i
             }
             for (uint32_t t = 0; t <= count; t++)
                 start[t] = 3 * t;
-            st = nef_mesh(w, n, v, 3 * count, index, start, count, out);
+            st = nef_mesh(w, n, v, 3 * count, index, start, NULL, count, out);
         } else {
             st = err_nomem(c->error, &n->loc);
         }

@@ -50,13 +50,19 @@ typedef struct nef_parts {
  * receives a message (no position, no trailing newline) on failure. */
 typedef struct nef_plugin {
     /* The solid bounded by a closed polygon mesh: points are x, y, z
-     * triples; face f is indices[face_start[f] .. face_start[f + 1]).
-     * Points at the same position are merged, faces are triangulated and
-     * the orientation is made outward, so either winding is taken. */
+     * triples; loop k is indices[loop_start[k] .. loop_start[k + 1]);
+     * face f is the loops face_loops[f] .. face_loops[f + 1] (its outline
+     * and holes, in one plane, none crossing another), or loop f alone
+     * when face_loops is NULL. Points at the same position are merged,
+     * faces are triangulated (a face of several loops by the even-odd
+     * rule) and the orientation is made outward, so either winding is
+     * taken. The faces must not overlap one another: a fan of a face that
+     * is not convex does, and so do a face and its hole given as two
+     * faces. */
     nef_status (*from_mesh)(const double *points, uint32_t point_count,
-                            const uint32_t *indices, const uint32_t *face_start,
-                            uint32_t face_count, nef_solid **out, char *err,
-                            size_t err_size);
+                            const uint32_t *indices, const uint32_t *loop_start,
+                            const uint32_t *face_loops, uint32_t face_count,
+                            nef_solid **out, char *err, size_t err_size);
     /* The empty solid. */
     nef_status (*empty)(nef_solid **out, char *err, size_t err_size);
     /* *a = *a op b; b is left as it is. */

@@ -12,7 +12,9 @@
 // Every entry point catches what CGAL throws (failed preconditions on a
 // mesh that is not a valid solid, bad_alloc) and returns it as a status
 // with a message.
+#include <CGAL/Constrained_Delaunay_triangulation_2.h>
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Nef_polyhedron_3.h>
 #include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
 #include <CGAL/Polygon_mesh_processing/orientation.h>
@@ -20,6 +22,8 @@
 #include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
 #include <CGAL/Polyhedron_3.h>
 #include <CGAL/Surface_mesh.h>
+#include <CGAL/Triangulation_face_base_with_info_2.h>
+#include <CGAL/Triangulation_vertex_base_with_info_2.h>
 #include <CGAL/boost/graph/convert_nef_polyhedron_to_polygon_mesh.h>
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/convex_decomposition_3.h>
@@ -29,9 +33,11 @@
 #include <array>
 #include <cstdio>
 #include <cstdlib>
+#include <cmath>
 #include <cstring>
 #include <map>
 #include <new>
+#include <queue>
 #include <set>
 #include <stdexcept>
 #include <vector>
@@ -108,6 +114,104 @@ __attribute__((constructor)) void gmp_throwing_allocator()
     mp_set_memory_functions(gmp_allocate, gmp_reallocate, gmp_release);
 }
 
+// ---- faces with holes ----
+//
+// A face of several loops (a cap of an extrusion: the outlines and holes
+// of a 2D region) is triangulated here, not fanned: a fan of a face that
+// is not convex, or one triangle set per loop, overlaps itself, and Nef_3
+// built from overlapping triangles is not a valid polyhedron; its later
+// booleans then read freed or missing halfedges (SNC_external_structure's
+// pair_up_halfedges walked off a list end on GEB.scad's letters). The
+// loops go into a constrained Delaunay triangulation in the plane of the
+// face's largest normal component, and the triangles nested inside an odd
+// number of loops are the face (the even-odd rule, which is the region's
+// own rule, as its loops neither cross nor overlap).
+
+struct Vertex_index {
+    std::size_t k = SIZE_MAX; // the mesh point of a triangulation vertex
+};
+
+using Kernel_2 = CGAL::Exact_predicates_inexact_constructions_kernel;
+using Vb = CGAL::Triangulation_vertex_base_with_info_2<Vertex_index, Kernel_2>;
+using Fb_base = CGAL::Constrained_triangulation_face_base_2<Kernel_2>;
+using Fb = CGAL::Triangulation_face_base_with_info_2<int, Kernel_2, Fb_base>;
+using Tds = CGAL::Triangulation_data_structure_2<Vb, Fb>;
+using Cdt =
+    CGAL::Constrained_Delaunay_triangulation_2<Kernel_2, Tds, CGAL::Exact_predicates_tag>;
+
+// Appends to polygons the triangles of the face whose loops are loops
+// (indices into the points xyz), as even-odd nesting of the loops makes it.
+void triangulate_loops(const std::vector<std::array<double, 3>> &xyz,
+                       const std::vector<std::vector<std::size_t>> &loops,
+                       std::vector<std::vector<std::size_t>> &polygons)
+{
+    // Newell's normal of all loops together: holes run the other way and
+    // take from it, and the axis of its largest component is left out.
+    double normal[3] = {0, 0, 0};
+    for (const auto &loop : loops) {
+        for (std::size_t i = 0; i < loop.size(); i++) {
+            const auto &a = xyz[loop[i]], &b = xyz[loop[(i + 1) % loop.size()]];
+            normal[0] += (a[1] - b[1]) * (a[2] + b[2]);
+            normal[1] += (a[2] - b[2]) * (a[0] + b[0]);
+            normal[2] += (a[0] - b[0]) * (a[1] + b[1]);
+        }
+    }
+    int axis = 0;
+    for (int i = 1; i < 3; i++) {
+        if (std::fabs(normal[i]) > std::fabs(normal[axis]))
+            axis = i;
+    }
+    if (!(std::fabs(normal[axis]) > 0))
+        throw bad_mesh("a face with holes has no area");
+    int u = (axis + 1) % 3, v = (axis + 2) % 3;
+    Cdt cdt;
+    for (const auto &loop : loops) {
+        std::vector<Cdt::Vertex_handle> corner;
+        for (std::size_t k : loop) {
+            Cdt::Vertex_handle h = cdt.insert(Kernel_2::Point_2(xyz[k][u], xyz[k][v]));
+            if (h->info().k != SIZE_MAX && h->info().k != k)
+                throw bad_mesh("two points of a face lie on one another in its plane");
+            h->info().k = k;
+            corner.push_back(h);
+        }
+        for (std::size_t i = 0; i < corner.size(); i++)
+            cdt.insert_constraint(corner[i], corner[(i + 1) % corner.size()]);
+    }
+    // Nesting depth of every face, outward in: across a constrained edge
+    // one deeper.
+    for (auto f = cdt.all_faces_begin(); f != cdt.all_faces_end(); ++f)
+        f->info() = -1;
+    std::queue<std::pair<Cdt::Face_handle, int>> next;
+    next.push({cdt.infinite_face(), 0});
+    while (!next.empty()) {
+        std::queue<Cdt::Face_handle> same;
+        same.push(next.front().first);
+        int depth = next.front().second;
+        next.pop();
+        while (!same.empty()) {
+            Cdt::Face_handle f = same.front();
+            same.pop();
+            if (f->info() != -1)
+                continue;
+            f->info() = depth;
+            for (int i = 0; i < 3; i++) {
+                Cdt::Face_handle g = f->neighbor(i);
+                if (g->info() != -1)
+                    continue;
+                if (cdt.is_constrained(Cdt::Edge(f, i)))
+                    next.push({g, depth + 1});
+                else
+                    same.push(g);
+            }
+        }
+    }
+    for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f) {
+        if (f->info() % 2 == 1)
+            polygons.push_back(
+                {f->vertex(0)->info().k, f->vertex(1)->info().k, f->vertex(2)->info().k});
+    }
+}
+
 // Copies point sets into a nef_parts (malloc'd arrays).
 void to_parts(const std::vector<std::vector<Point>> &sets, nef_parts *out)
 {
@@ -150,8 +254,9 @@ extern "C" {
 
 __attribute__((visibility("default"))) nef_status
 spancast_nef_from_mesh(const double *points, uint32_t point_count,
-                       const uint32_t *indices, const uint32_t *face_start,
-                       uint32_t face_count, nef_solid **out, char *err, size_t err_size)
+                       const uint32_t *indices, const uint32_t *loop_start,
+                       const uint32_t *face_loops, uint32_t face_count, nef_solid **out,
+                       char *err, size_t err_size)
 {
     *out = nullptr;
     return guarded(
@@ -159,30 +264,43 @@ spancast_nef_from_mesh(const double *points, uint32_t point_count,
             // Points at one position become one (a polyhedron may repeat
             // its corners per face).
             std::map<std::array<double, 3>, std::size_t> seen;
-            std::vector<Point> unique;
+            std::vector<std::array<double, 3>> xyz;
             std::vector<std::size_t> index_of(point_count);
             for (uint32_t i = 0; i < point_count; i++) {
                 std::array<double, 3> key = {points[3 * i], points[3 * i + 1],
                                              points[3 * i + 2]};
-                auto found = seen.emplace(key, unique.size());
+                auto found = seen.emplace(key, xyz.size());
                 if (found.second)
-                    unique.emplace_back(key[0], key[1], key[2]);
+                    xyz.push_back(key);
                 index_of[i] = found.first->second;
             }
+            std::vector<Point> unique;
+            unique.reserve(xyz.size());
+            for (const auto &p : xyz)
+                unique.emplace_back(p[0], p[1], p[2]);
             std::vector<std::vector<std::size_t>> polygons;
             for (uint32_t f = 0; f < face_count; f++) {
-                std::vector<std::size_t> polygon;
-                for (uint32_t i = face_start[f]; i < face_start[f + 1]; i++) {
-                    if (indices[i] >= point_count)
-                        throw bad_mesh("a face names a point that does not exist");
-                    std::size_t k = index_of[indices[i]];
-                    if (polygon.empty() || polygon.back() != k)
-                        polygon.push_back(k);
+                uint32_t first = face_loops ? face_loops[f] : f;
+                uint32_t end = face_loops ? face_loops[f + 1] : f + 1;
+                std::vector<std::vector<std::size_t>> loops;
+                for (uint32_t l = first; l < end; l++) {
+                    std::vector<std::size_t> loop;
+                    for (uint32_t i = loop_start[l]; i < loop_start[l + 1]; i++) {
+                        if (indices[i] >= point_count)
+                            throw bad_mesh("a face names a point that does not exist");
+                        std::size_t k = index_of[indices[i]];
+                        if (loop.empty() || loop.back() != k)
+                            loop.push_back(k);
+                    }
+                    while (loop.size() > 1 && loop.front() == loop.back())
+                        loop.pop_back();
+                    if (std::set<std::size_t>(loop.begin(), loop.end()).size() >= 3)
+                        loops.push_back(std::move(loop));
                 }
-                while (polygon.size() > 1 && polygon.front() == polygon.back())
-                    polygon.pop_back();
-                if (std::set<std::size_t>(polygon.begin(), polygon.end()).size() >= 3)
-                    polygons.push_back(std::move(polygon));
+                if (loops.size() == 1)
+                    polygons.push_back(std::move(loops[0]));
+                else if (loops.size() > 1)
+                    triangulate_loops(xyz, loops, polygons);
             }
             if (polygons.empty()) {
                 *out = new nef_solid{Nef(Nef::EMPTY)};
