@@ -337,6 +337,33 @@ proj_hull2d.csg:4:3: warning: Ignoring 2D child object for 3D operation
 proj_hull2d.csg:5:3: warning: Ignoring 2D child object for 3D operation"
 same proj_hull2d.csg proj_hull2d_ref.csg
 
+# ---- a malformed SVG or AMF: OpenSCAD logs an error and renders the rest ----
+printf '<svg width="10mm" height="10mm">\n  <path d="M 1 1 L 5 1 L 5 5 z">\n</svg>\n' >bad.svg
+printf '<?xml version="1.0"?>\n<amf>\n <object id="0"><mesh>\n  <vertices><vertex><coordinates><x>1,5</x><y>0</y><z>0</z></coordinates></vertex></vertices>\n </mesh></object>\n</amf>\n' >bad.amf
+printf 'union() {\n\tcube(size = [1, 1, 1]);\n\tlinear_extrude(height = 1) import(file = "bad.svg");\n\timport(file = "bad.amf");\n}\n' >bad_files.csg
+warns bad_files.csg "bad_files.csg:3:43: warning: import: bad.svg:4: Premature end of data in tag svg line 1; the import is empty, as OpenSCAD leaves it out (--strict makes it an error)
+bad_files.csg:3:2: warning: linear_extrude without height or area is empty
+bad_files.csg:4:16: warning: import: bad.amf:4: '1,5' is not a number; the import is empty, as OpenSCAD leaves it out (--strict makes it an error)"
+same bad_files.csg cube_ref.csg
+printf 'import(file = "bad.svg");\n' >bad_flat.csg
+warns bad_flat.csg "bad_flat.csg:1:15: warning: import: bad.svg:4: Premature end of data in tag svg line 1; the import is empty, as OpenSCAD leaves it out (--strict makes it an error)
+bad_flat.csg:1:1: warning: the 2D model has no area
+bad_flat.csg: warning: the model is empty (nothing to render)"
+printf 'import(file = "bad.amf");\n' >bad_amf.csg
+check
+"$bin" render bad_amf.csg -o strict.png -q --strict 2>err.txt && fail "bad_amf.csg --strict: exit 0"
+[ "$(cat err.txt)" = "bad_amf.csg:1:15: error: import: bad.amf:4: '1,5' is not a number" ] ||
+    fail "bad_amf.csg --strict: $(cat err.txt)"
+# --strict: the error, exit 1, no image
+for model in bad_files.csg bad_flat.csg; do
+    check
+    rm -f strict.png
+    "$bin" render "$model" -o strict.png -q --strict 2>err.txt && fail "$model --strict: exit 0"
+    grep -q ": error: import: bad.svg:4: Premature end of data in tag svg line 1$" err.txt ||
+        fail "$model --strict: $(cat err.txt)"
+    [ -e strict.png ] && fail "$model --strict: an image was written"
+done
+
 # ---- a lossy mask ----
 warns cube_ref.csg "spancast: warning: --mask=m.jpg: JPEG is lossy, so the mask is no longer exactly 0 and 255 at the model's edges (.png, .tif and .exr are exact)" --mask=m.jpg
 check

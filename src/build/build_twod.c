@@ -644,6 +644,19 @@ static sc_status read_svg(const eval *e, const model_node *n, twod_region *out)
         fclose(f);
         svg_options o = {d->dpi, d->center};
         st = svg_read_file(path, d->file, &d->file_loc, &o, out, e->c->error);
+        /* OpenSCAD 2021.01 logs a drawing it cannot parse as an error and
+         * renders the rest: a warning with the file's own line, and the
+         * import empty, unless --strict */
+        if (st == SC_ERR_SYNTAX && !e->c->strict) {
+            sc_error why = *e->c->error;
+            err_clear(e->c->error);
+            twod_clear(out);
+            st =
+                build_note(e->c, &d->file_loc,
+                           "%s; the import is empty, as OpenSCAD leaves it out (--strict "
+                           "makes it an error)",
+                           why.message);
+        }
     }
     free(path);
     return st;
