@@ -1640,9 +1640,10 @@ sc_status build_import_mesh(const build_ctx *c, const model_import *import, int 
         int left_out = 0;
         st = read_amf(text, size, path, import, &m, c->error);
         free(text);
-        /* OpenSCAD 2021.01 logs a file it cannot parse as an error and
-         * renders the rest: a warning with the file's own line, and the
-         * import left out, unless --strict */
+        /* OpenSCAD 2021.01 logs a file it cannot parse ("Failed to parse
+         * file", "Could not read file") and renders the rest: a warning
+         * with the file's own line, and the import left out, unless
+         * --strict */
         if ((st == SC_ERR_SYNTAX || st == SC_ERR_SEMANTIC) && !strict && !c->strict) {
             sc_error why = *c->error;
             err_clear(c->error);
