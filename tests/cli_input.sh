@@ -2,7 +2,7 @@
 # hand-written .csg in OpenSCAD's grammar (a node with one child and no
 # braces, bare blocks, empty statements, modifiers in front of children)
 # renders byte for byte as the braced model; a mesh (.stl, ASCII and
-# binary, .off) is the model that imports it, in render, info, measure,
+# binary, .off, .amf, .3mf) is the model that imports it, in render, info, measure,
 # overlaps, compare, spans, inside, batch and under mpirun; bad input gets
 # its position and exit 1. (tests/cli_scad.sh checks what needs OpenSCAD:
 # .csg files beyond its CSG export, -D.)
@@ -143,8 +143,51 @@ f32() { [ "$1" = 0 ] && printf '\x00\x00\x00\x00' || printf '\x00\x00\x00\x40'; 
 [ "$(stat -c %s tet-binary.stl)" = 284 ] || fail "tet-binary.stl has $(stat -c %s tet-binary.stl) bytes"
 printf 'OFF\n4 4 0\n0 0 0\n2 0 0\n0 2 0\n0 0 2\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n' >tet.off
 cp tet.stl TET-UPPER.STL
+# AMF (one object) and 3MF (a zip holding one object), the same corners
+# and triangles.
+{
+    printf '<?xml version="1.0" encoding="UTF-8"?>\n<amf unit="millimeter">\n'
+    printf ' <object id="0"><mesh><vertices>\n'
+    for v in "0 0 0" "2 0 0" "0 2 0" "0 0 2"; do
+        set -- $v
+        printf '  <vertex><coordinates><x>%s</x><y>%s</y><z>%s</z></coordinates></vertex>\n' "$@"
+    done
+    printf ' </vertices><volume>\n'
+    for t in "0 2 1" "0 1 3" "0 3 2" "1 2 3"; do
+        set -- $t
+        printf '  <triangle><v1>%s</v1><v2>%s</v2><v3>%s</v3></triangle>\n' "$@"
+    done
+    printf ' </volume></mesh></object>\n</amf>\n'
+} >tet.amf
+python3 - tet.3mf <<'PY'
+import sys, zipfile
+model = ('<?xml version="1.0" encoding="UTF-8"?>\n'
+         '<model unit="millimeter" xmlns="http://schemas.microsoft.com/3dmanufacturing/core/2015/02">'
+         '<resources><object id="1" type="model"><mesh><vertices>'
+         + ''.join('<vertex x="%d" y="%d" z="%d"/>' % v
+                   for v in [(0, 0, 0), (2, 0, 0), (0, 2, 0), (0, 0, 2)])
+         + '</vertices><triangles>'
+         + ''.join('<triangle v1="%d" v2="%d" v3="%d"/>' % t
+                   for t in [(0, 2, 1), (0, 1, 3), (0, 3, 2), (1, 2, 3)])
+         + '</triangles></mesh></object></resources>'
+         '<build><item objectid="1"/></build></model>\n')
+types = ('<?xml version="1.0" encoding="UTF-8"?>\n'
+         '<Types xmlns="http://schemas.openxmlformats.org/package/2006/content-types">'
+         '<Default Extension="rels" ContentType="application/vnd.openxmlformats-package.relationships+xml"/>'
+         '<Default Extension="model" ContentType="application/vnd.ms-package.3dmanufacturing-3dmodel+xml"/>'
+         '</Types>\n')
+rels = ('<?xml version="1.0" encoding="UTF-8"?>\n'
+        '<Relationships xmlns="http://schemas.openxmlformats.org/package/2006/relationships">'
+        '<Relationship Target="/3D/3dmodel.model" Id="rel0" '
+        'Type="http://schemas.microsoft.com/3dmanufacturing/2013/01/3dmodel"/>'
+        '</Relationships>\n')
+with zipfile.ZipFile(sys.argv[1], 'w', zipfile.ZIP_DEFLATED) as z:
+    z.writestr('[Content_Types].xml', types)
+    z.writestr('_rels/.rels', rels)
+    z.writestr('3D/3dmodel.model', model)
+PY
 
-for mesh in tet.stl tet-binary.stl tet.off TET-UPPER.STL; do
+for mesh in tet.stl tet-binary.stl tet.off TET-UPPER.STL tet.amf tet.3mf; do
     printf 'import(file = "%s");\n' "$mesh" >"import-$mesh.csg"
     same_render "$mesh" "import-$mesh.csg"
     for cmd in info measure overlaps; do

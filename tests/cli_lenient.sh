@@ -287,6 +287,83 @@ warns hull_mixed.csg "hull_mixed.csg:1:33: warning: Mixing 2D and 3D objects is 
 hull_mixed.csg:1:33: warning: Ignoring 3D child object for 2D operation"
 same hull_mixed.csg slab_ref.csg
 
+# ---- 2D imports outside an extrusion: 2D by their extension, as OpenSCAD ----
+# a drawing 10 x 4 from the origin (SVG: millimetres, y down; DXF: a
+# closed polyline)
+printf '<svg xmlns="http://www.w3.org/2000/svg" width="10mm" height="4mm" viewBox="0 0 10 4"><rect x="0" y="0" width="10" height="4"/></svg>\n' >rect.svg
+printf '0\nSECTION\n2\nENTITIES\n0\nLWPOLYLINE\n8\n0\n90\n4\n70\n1\n10\n0\n20\n0\n10\n10\n20\n0\n10\n10\n20\n4\n10\n0\n20\n4\n0\nENDSEC\n0\nEOF\n' >rect.dxf
+printf 'import(file = "rect.svg");\n' >svg_flat.csg
+warns svg_flat.csg ""
+same svg_flat.csg slab_ref.csg
+printf 'multmatrix([[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]) { import(file = "rect.dxf"); }\n' >dxf_flat.csg
+warns dxf_flat.csg ""
+same dxf_flat.csg slab_ref.csg
+# under 2D booleans, offset, hull, minkowski and resize
+printf 'difference() { import(file = "rect.svg"); multmatrix([[1, 0, 0, 2], [0, 1, 0, 1], [0, 0, 1, 0], [0, 0, 0, 1]]) { square(size = [3, 2]); } }\n' >svg_cut.csg
+printf 'linear_extrude(height = 1, center = true) { difference() { square(size = [10, 4]); multmatrix([[1, 0, 0, 2], [0, 1, 0, 1], [0, 0, 1, 0], [0, 0, 0, 1]]) { square(size = [3, 2]); } } }\n' >svg_cut_ref.csg
+warns svg_cut.csg ""
+same svg_cut.csg svg_cut_ref.csg
+printf 'offset(delta = 1) { import(file = "rect.dxf"); }\n' >dxf_offset.csg
+printf 'linear_extrude(height = 1, center = true) { offset(delta = 1) { square(size = [10, 4]); } }\n' >dxf_offset_ref.csg
+warns dxf_offset.csg ""
+same dxf_offset.csg dxf_offset_ref.csg
+printf 'hull() { import(file = "rect.svg"); multmatrix([[1, 0, 0, 0], [0, 1, 0, 9], [0, 0, 1, 0], [0, 0, 0, 1]]) { square(size = [1, 1]); } }\n' >svg_hull.csg
+printf 'linear_extrude(height = 1, center = true) { hull() { square(size = [10, 4]); multmatrix([[1, 0, 0, 0], [0, 1, 0, 9], [0, 0, 1, 0], [0, 0, 0, 1]]) { square(size = [1, 1]); } } }\n' >svg_hull_ref.csg
+warns svg_hull.csg ""
+same svg_hull.csg svg_hull_ref.csg
+printf 'minkowski() { import(file = "rect.dxf"); square(size = [2, 2]); }\n' >dxf_minkowski.csg
+printf 'linear_extrude(height = 1, center = true) { square(size = [12, 6]); }\n' >dxf_minkowski_ref.csg
+warns dxf_minkowski.csg ""
+same dxf_minkowski.csg dxf_minkowski_ref.csg
+printf 'resize(newsize = [20, 0, 0], auto = [0, 1, 0]) { import(file = "rect.svg"); }\n' >svg_resize.csg
+printf 'linear_extrude(height = 1, center = true) { square(size = [20, 8]); }\n' >svg_resize_ref.csg
+warns svg_resize.csg ""
+same svg_resize.csg svg_resize_ref.csg
+# in a 3D tree: ignored with OpenSCAD's warnings
+printf 'union() {\n\tcube(size = [1, 1, 1]);\n\timport(file = "rect.svg");\n}\n' >svg_mixed.csg
+warns svg_mixed.csg "svg_mixed.csg:3:2: warning: Mixing 2D and 3D objects is not supported
+svg_mixed.csg:3:2: warning: Ignoring 2D child object for 3D operation"
+same svg_mixed.csg cube_ref.csg
+printf 'hull() {\n\tcube(size = [1, 1, 1]);\n\timport(file = "rect.dxf");\n}\n' >dxf_hull3d.csg
+warns dxf_hull3d.csg "dxf_hull3d.csg:3:2: warning: Mixing 2D and 3D objects is not supported
+dxf_hull3d.csg:3:2: warning: Ignoring 2D child object for 3D operation"
+same dxf_hull3d.csg cube_ref.csg
+
+# ---- a 2D child of a hull inside projection: ignored, as OpenSCAD ----
+printf 'projection(cut = false) {\n\thull() {\n\t\tcube(size = [3, 3, 3]);\n\t\tsquare(size = [20, 20]);\n\t\timport(file = "rect.svg");\n\t}\n}\n' >proj_hull2d.csg
+printf 'projection(cut = false) { cube(size = [3, 3, 3]); }\n' >proj_hull2d_ref.csg
+warns proj_hull2d.csg "proj_hull2d.csg:4:3: warning: Mixing 2D and 3D objects is not supported
+proj_hull2d.csg:4:3: warning: Ignoring 2D child object for 3D operation
+proj_hull2d.csg:5:3: warning: Ignoring 2D child object for 3D operation"
+same proj_hull2d.csg proj_hull2d_ref.csg
+
+# ---- a malformed SVG or AMF: OpenSCAD logs an error and renders the rest ----
+printf '<svg width="10mm" height="10mm">\n  <path d="M 1 1 L 5 1 L 5 5 z">\n</svg>\n' >bad.svg
+printf '<?xml version="1.0"?>\n<amf>\n <object id="0"><mesh>\n  <vertices><vertex><coordinates><x>1,5</x><y>0</y><z>0</z></coordinates></vertex></vertices>\n </mesh></object>\n</amf>\n' >bad.amf
+printf 'union() {\n\tcube(size = [1, 1, 1]);\n\tlinear_extrude(height = 1) import(file = "bad.svg");\n\timport(file = "bad.amf");\n}\n' >bad_files.csg
+warns bad_files.csg "bad_files.csg:3:43: warning: import: bad.svg:4: Premature end of data in tag svg line 1; the import is empty, as OpenSCAD leaves it out (--strict makes it an error)
+bad_files.csg:3:2: warning: linear_extrude without height or area is empty
+bad_files.csg:4:16: warning: import: bad.amf:4: '1,5' is not a number; the import is empty, as OpenSCAD leaves it out (--strict makes it an error)"
+same bad_files.csg cube_ref.csg
+printf 'import(file = "bad.svg");\n' >bad_flat.csg
+warns bad_flat.csg "bad_flat.csg:1:15: warning: import: bad.svg:4: Premature end of data in tag svg line 1; the import is empty, as OpenSCAD leaves it out (--strict makes it an error)
+bad_flat.csg:1:1: warning: the 2D model has no area
+bad_flat.csg: warning: the model is empty (nothing to render)"
+printf 'import(file = "bad.amf");\n' >bad_amf.csg
+check
+"$bin" render bad_amf.csg -o strict.png -q --strict 2>err.txt && fail "bad_amf.csg --strict: exit 0"
+[ "$(cat err.txt)" = "bad_amf.csg:1:15: error: import: bad.amf:4: '1,5' is not a number" ] ||
+    fail "bad_amf.csg --strict: $(cat err.txt)"
+# --strict: the error, exit 1, no image
+for model in bad_files.csg bad_flat.csg; do
+    check
+    rm -f strict.png
+    "$bin" render "$model" -o strict.png -q --strict 2>err.txt && fail "$model --strict: exit 0"
+    grep -q ": error: import: bad.svg:4: Premature end of data in tag svg line 1$" err.txt ||
+        fail "$model --strict: $(cat err.txt)"
+    [ -e strict.png ] && fail "$model --strict: an image was written"
+done
+
 # ---- a lossy mask ----
 warns cube_ref.csg "spancast: warning: --mask=m.jpg: JPEG is lossy, so the mask is no longer exactly 0 and 255 at the model's edges (.png, .tif and .exr are exact)" --mask=m.jpg
 check

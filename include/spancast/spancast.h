@@ -145,7 +145,7 @@ void sc_load_options_init_size(sc_load_options *options, size_t size);
     sc_load_options_init_size((options), sizeof *(options))
 
 /* Loads and compiles a model file; options may be NULL (the defaults).
- * A path ending in .stl or .off (any case) is a mesh, loaded as
+ * A path ending in .stl, .off, .amf or .3mf (any case) is a mesh, loaded as
  * sc_scene_load_mesh loads it; any other file is the .csg grammar, in
  * which OpenSCAD's language beyond its CSG export (assignments,
  * expressions, modules, ...) is SC_ERR_UNSUPPORTED at its first use (the
@@ -772,7 +772,7 @@ const sc_overlap *sc_overlap_list_get(const sc_overlap_list *list, size_t index)
 /* Frees the list; NULL is ignored. */
 void sc_overlap_list_release(sc_overlap_list *list);
 
-/* Loads a closed mesh file (.stl, ASCII or binary, or .off) as a scene, as
+/* Loads a closed mesh file (.stl, ASCII or binary, .off, .amf or .3mf) as a scene, as
  * the model import(file = path) would; ownership and errors as
  * sc_scene_load's. */
 sc_status sc_scene_load_mesh(const char *path, const sc_load_options *options,

@@ -49,7 +49,8 @@ int mesh_model_is_mesh(const char *path)
     for (int i = 0; i < 3; i++)
         ext[i] = (char)(path[n - 3 + i] | 32);
     ext[3] = '\0';
-    return strcmp(ext, "stl") == 0 || strcmp(ext, "off") == 0;
+    return strcmp(ext, "stl") == 0 || strcmp(ext, "off") == 0 ||
+           strcmp(ext, "amf") == 0 || strcmp(ext, "3mf") == 0;
 }
 
 sc_status mesh_model_text(const char *path, char **text, size_t *length, sc_error *error)

@@ -1,6 +1,6 @@
 /* A mesh file as a model: the one-line model import(file = "PATH") that
  * sc_scene_load, sc_scene_load_mesh and sc_objects_load read in place of
- * a .stl or .off file (compare.c). */
+ * a .stl, .off, .amf or .3mf file (compare.c). */
 #ifndef SPANCAST_API_MESH_MODEL_H
 #define SPANCAST_API_MESH_MODEL_H
 
@@ -8,7 +8,7 @@
 
 #include "spancast/spancast.h"
 
-/* 1 when path ends in .stl or .off, in any case, as OpenSCAD's import()
+/* 1 when path ends in .stl, .off, .amf or .3mf, in any case, as OpenSCAD's import()
  * tells a mesh by its name. */
 int mesh_model_is_mesh(const char *path);
 

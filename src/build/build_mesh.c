@@ -1637,9 +1637,25 @@ sc_status build_import_mesh(const build_ctx *c, const model_import *import, int 
     int oom = 0;
     sc_status st = SC_OK;
     if (import->format == MODEL_MESH_AMF || import->format == MODEL_MESH_3MF) {
+        int left_out = 0;
         st = read_amf(text, size, path, import, &m, c->error);
         free(text);
-        if (st != SC_OK) {
+        /* OpenSCAD 2021.01 logs a file it cannot parse ("Failed to parse
+         * file", "Could not read file") and renders the rest: a warning
+         * with the file's own line, and the import left out, unless
+         * --strict */
+        if ((st == SC_ERR_SYNTAX || st == SC_ERR_SEMANTIC) && !strict && !c->strict) {
+            sc_error why = *c->error;
+            err_clear(c->error);
+            st = build_note(c, &loc,
+                            "%s; the import is empty, as OpenSCAD leaves it out "
+                            "(--strict makes it an error)",
+                            why.message);
+            left_out = st == SC_OK;
+            if (left_out)
+                *empty = "";
+        }
+        if (st != SC_OK || left_out) {
             free(path);
             mesh_file_free(&m);
             return st;

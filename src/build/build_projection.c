@@ -79,6 +79,13 @@
 #include "csg/prim_mesh.h"
 #include "model/faithful.h"
 
+/* Whether n is a 2D leaf: a 2D shape, or an import of a .dxf or .svg
+ * drawing, which OpenSCAD makes 2D wherever it stands. */
+static int flat(const model_node *n)
+{
+    return model_is_2d(n->kind) || (n->kind == MODEL_IMPORT && n->u.import->drawing);
+}
+
 /* Triangles, 3 corners each. */
 typedef struct soup {
     vec3 *v;
@@ -287,6 +294,28 @@ static sc_status built_soup(const pwalk *w, const model_node *n, soup *s)
 
 static sc_status leaf_soup(pwalk *w, const model_node *n, soup *s, int depth);
 
+/* OpenSCAD 2021.01's warnings for the 2D children of parent, a hull
+ * inside projection (a 3D operation there), which it leaves out: after the
+ * children, as it checks dimensions once they are evaluated, the first
+ * also saying that parent mixes them (as build_hull.c's). */
+static sc_status ignored_2d(const build_ctx *c, const model_node *parent)
+{
+    int first = 1;
+    for (const model_node *n = parent->first_child; n; n = n->next) {
+        if ((n->modifiers & (MODEL_MOD_DISABLE | MODEL_MOD_BACKGROUND)) || !flat(n))
+            continue;
+        sc_status st = SC_OK;
+        if (first)
+            st = build_note(c, &n->loc, "Mixing 2D and 3D objects is not supported");
+        first = 0;
+        if (st == SC_OK)
+            st = build_note(c, &n->loc, "Ignoring 2D child object for 3D operation");
+        if (st != SC_OK)
+            return st;
+    }
+    return SC_OK;
+}
+
 /* The corners of the meshes below hull node parent (through m, in the
  * hull's frame) added to pts, as OpenSCAD hulls them: groups, colours,
  * transforms and resizes pass through; a boolean or minkowski gives the
@@ -304,7 +333,7 @@ static sc_status hull_points(pwalk *w, const model_node *parent, const affine *m
         if ((n->modifiers & (MODEL_MOD_DISABLE | MODEL_MOD_BACKGROUND)) ||
             kind == MODEL_LIGHT || kind == MODEL_CAMERA || kind == MODEL_BACKGROUND)
             continue;
-        if (n->pending && !model_is_2d(kind))
+        if (n->pending && !flat(n))
             return build_pending(c, n);
         sc_status st = SC_OK;
         if (kind == MODEL_UNION || kind == MODEL_COLOR || kind == MODEL_MATERIAL) {
@@ -317,9 +346,13 @@ static sc_status hull_points(pwalk *w, const model_node *parent, const affine *m
             affine inner = affine_mul(m, &local), inverse;
             if (st == SC_OK && affine_invert(&inner, &inverse))
                 st = hull_points(w, n, &inner, depth + 1, pts);
-        } else if (model_is_2d(kind)) {
-            st = err_set(c->error, SC_ERR_UNSUPPORTED, &n->loc,
-                         "'%s' inside hull is not supported yet", n->name);
+        } else if (flat(n)) {
+            /* checked through the 2D engine for its errors, then left out
+             * (ignored_2d) */
+            twod_region r;
+            twod_init(&r);
+            st = build_twod_main(c, n, &r);
+            twod_free(&r);
         } else {
             soup s = {NULL, 0, 0};
             st = leaf_soup(w, n, &s, depth + 1);
@@ -333,7 +366,7 @@ static sc_status hull_points(pwalk *w, const model_node *parent, const affine *m
         if (st != SC_OK)
             return st;
     }
-    return SC_OK;
+    return ignored_2d(c, parent);
 }
 
 /* hull(): the triangles of the convex hull of its children's mesh
@@ -685,7 +718,7 @@ static sc_status boolean(pwalk *w, const model_node *n, const affine *m, int dep
 {
     uint32_t count = 0;
     for (const model_node *k = n->first_child; k; k = k->next)
-        count += !skipped(k) && !model_is_2d(k->kind);
+        count += !skipped(k) && !flat(k);
     if (count == 0)
         return SC_OK;
     twod_region *parts = calloc(count, sizeof *parts);
@@ -695,7 +728,7 @@ static sc_status boolean(pwalk *w, const model_node *n, const affine *m, int dep
     for (const model_node *k = n->first_child; k && st == SC_OK; k = k->next) {
         if (skipped(k))
             continue;
-        if (model_is_2d(k->kind)) {
+        if (flat(k)) {
             st = walk_node(w, k, m, depth + 1, out); /* the warning */
             continue;
         }
@@ -730,9 +763,9 @@ static sc_status walk_node(pwalk *w, const model_node *n, const affine *m, int d
                        "too many nested nodes inside projection (limit is %d)",
                        BUILD_PROJECTION_MAX_DEPTH);
     model_kind kind = n->kind;
-    if (n->pending && !model_is_2d(kind))
+    if (n->pending && !flat(n))
         return build_pending(c, n);
-    if (model_is_2d(kind)) {
+    if (flat(n)) {
         if (c->note && !c->note->message[0])
             err_set(c->note, SC_OK, &n->loc,
                     "2D object '%s' inside projection is ignored (as in OpenSCAD)",

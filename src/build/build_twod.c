@@ -113,6 +113,16 @@ sc_status twod_walk_fold(const twod_walker *w, const model_node *n, const affine
 
 /* ---- dimensions ---- */
 
+/* The drawing of the import n, NULL for a mesh: lowered in the 2D context
+ * (in_2d) the node holds a drawing, unless its file is not one; elsewhere
+ * its import does when the file is a .dxf or .svg (model.h). */
+static const model_drawing *drawing_of(const model_node *n, int in_2d)
+{
+    if (in_2d)
+        return n->u.drawing->not_2d ? NULL : n->u.drawing;
+    return n->u.import->drawing;
+}
+
 /* The dimension of n's own kind: 2 or 3 for a shape, -1 for an operation
  * that takes its children's, 0 for a node without geometry. in_2d: n was
  * lowered in the 2D context (where hull and minkowski are 2D operations and
@@ -128,7 +138,7 @@ static int kind_dim(const model_node *n, int in_2d)
     case MODEL_PROJECTION:
         return 2;
     case MODEL_IMPORT:
-        return in_2d && !n->u.drawing->not_2d ? 2 : 3;
+        return drawing_of(n, in_2d) ? 2 : 3;
     case MODEL_UNION:
     case MODEL_DIFFERENCE:
     case MODEL_INTERSECTION:
@@ -620,7 +630,7 @@ static int resize_scale(const model_resize *args, twod_region *r, double m[2][3]
  * nothing, as OpenSCAD makes it. */
 static sc_status read_svg(const eval *e, const model_node *n, twod_region *out)
 {
-    const model_drawing *d = n->u.drawing;
+    const model_drawing *d = drawing_of(n, e->in_2d);
     char *path = build_file_path(e->c, d->file);
     if (!path)
         return err_nomem(e->c->error, &n->loc);
@@ -634,6 +644,19 @@ static sc_status read_svg(const eval *e, const model_node *n, twod_region *out)
         fclose(f);
         svg_options o = {d->dpi, d->center};
         st = svg_read_file(path, d->file, &d->file_loc, &o, out, e->c->error);
+        /* OpenSCAD 2021.01 logs a drawing it cannot parse as an error and
+         * renders the rest: a warning with the file's own line, and the
+         * import empty, unless --strict */
+        if (st == SC_ERR_SYNTAX && !e->c->strict) {
+            sc_error why = *e->c->error;
+            err_clear(e->c->error);
+            twod_clear(out);
+            st =
+                build_note(e->c, &d->file_loc,
+                           "%s; the import is empty, as OpenSCAD leaves it out (--strict "
+                           "makes it an error)",
+                           why.message);
+        }
     }
     free(path);
     return st;
@@ -645,11 +668,11 @@ static sc_status read_import(const eval *e, const model_node *n, twod_region *ou
 {
     if (n->pending)
         return pending(e, n);
-    const model_drawing *d = n->u.drawing;
+    const model_drawing *d = drawing_of(n, e->in_2d);
+    if (!d) /* a 3D file */
+        return ignore_3d(e, n, 0);
     const char *name = d->file;
     sc_location loc = d->file_loc;
-    if (d->not_2d) /* a 3D file */
-        return ignore_3d(e, n, 0);
     if (d->format == MODEL_DRAWING_SVG)
         return read_svg(e, n, out);
     dxf_options o = {d->res.fn,    d->res.fa,    d->res.fs, d->layer,

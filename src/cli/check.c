@@ -16,7 +16,7 @@
  * models, and counts the pixels where they disagree away from silhouette
  * edges (a pixel whose neighbours differ in either mask is an edge pixel:
  * there a sub-pixel shift of an edge changes the mask). B may be a mesh
- * (.stl or .off), loaded as an import.
+ * (.stl, .off, .amf or .3mf), loaded as an import.
  *
  * Under `mpirun -np N` every rank loads the models (a model's text comes
  * from rank 0, dist.h; a mesh or the objects of overlaps each rank reads
@@ -434,16 +434,9 @@ static int run_overlaps(check_args *a)
 
 /* ---- compare ---- */
 
-static int is_mesh(const char *path)
-{
-    size_t n = strlen(path);
-    return n > 4 && (!strcmp(path + n - 4, ".stl") || !strcmp(path + n - 4, ".STL") ||
-                     !strcmp(path + n - 4, ".off") || !strcmp(path + n - 4, ".OFF"));
-}
-
 static sc_scene *load_any(const char *path, int faithful)
 {
-    if (!is_mesh(path))
+    if (!scad_is_mesh(path))
         return cli_load(path, faithful);
     sc_load_options lo;
     sc_load_options_init(&lo);

@@ -5,7 +5,7 @@
  * $t = i * (1.0 / N), computed exactly as OpenSCAD's own --animate does
  * (openscad.cc, 2021.01), and written to the output's name with the frame
  * number in five digits before the extension: -o frame.png gives
- * frame00000.png, frame00001.png, ... A .csg, .stl or .off model is
+ * frame00000.png, frame00001.png, ... A .csg or mesh (.stl, .off, .amf, .3mf) model is
  * already evaluated; its frames differ only by the turntable. With
  * --turntable the camera turns about the vertical axis through its centre
  * (the model's centre with the automatic camera) by 360 degrees over the

@@ -86,7 +86,8 @@ static int has_suffix(const char *path, const char *suffix)
 
 int scad_is_mesh(const char *path)
 {
-    return has_suffix(path, ".stl") || has_suffix(path, ".off");
+    return has_suffix(path, ".stl") || has_suffix(path, ".off") ||
+           has_suffix(path, ".amf") || has_suffix(path, ".3mf");
 }
 
 int scad_take_defines(int *argc, char **argv)

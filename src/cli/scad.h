@@ -9,7 +9,7 @@
 /* 1 when path names an OpenSCAD source file (ends in .scad, any case). */
 int scad_is_source(const char *path);
 
-/* 1 when path names a mesh file (ends in .stl or .off, any case), which
+/* 1 when path names a mesh file (ends in .stl, .off, .amf or .3mf, any case), which
  * the commands take as the model import(file = path). */
 int scad_is_mesh(const char *path);
 

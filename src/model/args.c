@@ -273,8 +273,18 @@ int model_has_suffix(const char *s, const char *suffix)
     return 1;
 }
 
+int model_import_is_drawing(const parse_node *n)
+{
+    const parse_arg *a = parse_node_arg(n, "file", 0);
+    if (!a || a->value.kind != PARSE_STRING)
+        return 0;
+    const char *name = a->value.u.string.chars;
+    return model_has_suffix(name, ".dxf") || model_has_suffix(name, ".svg");
+}
+
 sc_status model_read_import(const model_reader *r, const parse_node *n, model_import *out)
 {
+    out->drawing = NULL; /* a mesh, also when the arguments are bad */
     const parse_arg *a = parse_node_arg(n, "file", 0);
     if (!a || a->value.kind != PARSE_STRING) {
         if (a && a->value.kind != PARSE_UNDEF)
@@ -288,8 +298,8 @@ sc_status model_read_import(const model_reader *r, const parse_node *n, model_im
     int amf = model_has_suffix(name, ".amf"), threemf = model_has_suffix(name, ".3mf");
     if (!stl && !off && !amf && !threemf)
         return err_set(r->error, SC_ERR_UNSUPPORTED, &loc,
-                       "import of '%s' is not supported yet (only .stl, .off, .amf and "
-                       ".3mf files)",
+                       "import of '%s' is not supported yet (only .stl, .off, .amf, "
+                       ".3mf, .dxf and .svg files)",
                        name);
     out->file = name;
     out->file_loc = loc;

@@ -88,6 +88,9 @@ sc_status model_cube(const model_reader *r, const parse_node *n, double size[3],
 /* square(size = s | [x, y], center = false)'s arguments. */
 sc_status model_read_square(const model_reader *r, const parse_node *n, double *sx,
                             double *sy, int *center);
+/* Whether import(file) names a drawing: a string ending in .dxf or .svg
+ * (any case), which OpenSCAD imports as 2D wherever it stands. */
+int model_import_is_drawing(const parse_node *n);
 /* import(file = "x.stl" | "x.off") of a mesh into *out. */
 sc_status model_read_import(const model_reader *r, const parse_node *n,
                             model_import *out);

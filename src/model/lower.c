@@ -204,9 +204,18 @@ static sc_status lower_polyhedron(lowerer *l, const parse_node *n, model_node *o
     return st != SC_OK ? st : read_faces(l, n, faces_name, faces, out);
 }
 
-/* import(file = "x.stl" | "x.off") in a 3D model. */
+/* import(file = "x.stl" | "x.off" | "x.amf" | "x.3mf") of a mesh, or of a
+ * .dxf or .svg drawing, which is 2D wherever it stands (its argument error
+ * kept in the node, as for the other 2D shapes: lower_kept). */
 static sc_status lower_import(lowerer *l, const parse_node *n, model_node *out)
 {
+    if (model_import_is_drawing(n)) {
+        sc_error nomem;
+        sc_status st = model_import_drawing(&l->m->mem, l->r.file, n, out, &nomem);
+        if (st != SC_OK)
+            *l->r.error = nomem;
+        return st;
+    }
     model_import *import = arena_alloc(&l->m->mem, sizeof *import);
     if (!import)
         return err_nomem(l->r.error, NULL);

@@ -209,6 +209,8 @@ sc_status model_points_args(arena *mem, const char *file, const parse_node *n,
     if (out->kind == MODEL_LINEAR_EXTRUDE || out->kind == MODEL_ROTATE_EXTRUDE ||
         model_is_2d(out->kind))
         return model_twod_args(mem, file, n, out, error);
+    if (out->kind == MODEL_IMPORT && model_import_is_drawing(n))
+        return model_import_drawing(mem, file, n, out, error);
     sc_error pending;
     model_lowerer l = {mem, {file, &pending}, 0};
     sc_status st;

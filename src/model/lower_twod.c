@@ -469,6 +469,26 @@ static sc_status lower_matrix(model_lowerer *l, const parse_node *n, model_node 
     return model_read_xform(&l->r, l->mem, n, &out->u.xform);
 }
 
+sc_status model_import_drawing(arena *mem, const char *file, const parse_node *n,
+                               model_node *out, sc_error *error)
+{
+    model_node drawn = *out;
+    drawn.kind = MODEL_IMPORT;
+    sc_status st = model_twod_args(mem, file, n, &drawn, error);
+    if (st != SC_OK)
+        return st;
+    model_import *import = arena_calloc(mem, 1, sizeof *import);
+    if (!import)
+        return err_nomem(error, NULL);
+    /* the file is a string (model_import_is_drawing), read first */
+    import->file = drawn.u.drawing->file;
+    import->file_loc = drawn.u.drawing->file_loc;
+    import->drawing = drawn.u.drawing;
+    out->u.import = import;
+    out->pending = drawn.pending;
+    return SC_OK;
+}
+
 sc_status model_twod_args(arena *mem, const char *file, const parse_node *n,
                           model_node *out, sc_error *error)
 {

@@ -16,4 +16,12 @@
 sc_status model_twod_args(arena *mem, const char *file, const parse_node *n,
                           model_node *out, sc_error *error);
 
+/* import(file = "x.dxf" | "x.svg") outside the 2D context (in the main
+ * model or the points context; model_import_is_drawing(n)): out->u.import
+ * names the file and holds the drawing, whose arguments are read as in
+ * the 2D context, an error going into out->pending. The status is
+ * SC_ERR_NOMEM in *error when memory runs out, else SC_OK. */
+sc_status model_import_drawing(arena *mem, const char *file, const parse_node *n,
+                               model_node *out, sc_error *error);
+
 #endif

@@ -183,10 +183,15 @@ typedef enum model_mesh_format {
     MODEL_MESH_AMF,
     MODEL_MESH_3MF
 } model_mesh_format;
+/* import(file) outside the 2D context: a mesh, or a .dxf or .svg drawing
+ * (drawing set), whose dimension is 2 wherever it stands, as in OpenSCAD,
+ * where the file's extension decides what import() makes. The drawing's
+ * arguments are read as in the 2D context, their error pending. */
 typedef struct model_import {
     const char *file; /* as written */
     sc_location file_loc;
-    model_mesh_format format;
+    model_mesh_format format;            /* a mesh (drawing NULL) */
+    const struct model_drawing *drawing; /* or NULL */
 } model_import;
 
 /* surface(file, center, invert): a height map (.dat or PNG). */
