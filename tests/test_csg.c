@@ -2196,13 +2196,64 @@ static void test_ray_in_face_plane(void **state)
     csg_tree_free(t);
 }
 
+/* csg_eps as csg.h defines it, computed in full for every query. */
+static double eps_by_definition(const csg_tree *t, vec3 o, vec3 d)
+{
+    vec3 center = bbox_center(&t->bounds);
+    double extent = v3_max_abs(bbox_extent(&t->bounds));
+    double dist = v3_length(v3_sub(o, center)), len = v3_length(d);
+    return fmax(1e-9 * extent, 0x1p-40 * fmax(t->scale, dist)) / len;
+}
+
+/* csg_eps skips the distance's square root near the scene: its value must
+ * stay the definition's bit for bit on both sides of the distance where
+ * the distance term starts to win, and at that distance itself, for a
+ * scene at the origin and one far from it. */
+static void test_eps_near_and_far(void **state)
+{
+    (void)state;
+    const vec3 places[2] = {v3(0, 0, 0), v3(1e8, -3e7, 5)};
+    const vec3 dirs[3] = {v3(1, 0, 0), v3(0.3, -2, 0.7), v3(1e-3, 0, 0)};
+    for (int i = 0; i < 2; i++) {
+        csg_builder *b = csg_builder_new();
+        assert_non_null(b);
+        affine m = translation(places[i]);
+        csg_tree *t = finish(b, add_box(b, v3(0, 0, 0), v3(10, 4, 6), &m));
+        vec3 center = bbox_center(&t->bounds);
+        double extent = v3_max_abs(bbox_extent(&t->bounds));
+        /* Where 2^-40 dist reaches the larger of the other two terms. */
+        double turn = 0x1p40 * fmax(1e-9 * extent, 0x1p-40 * t->scale);
+        const double dists[] = {0,
+                                1,
+                                turn * 0.5,
+                                nextafter(turn, 0),
+                                turn,
+                                nextafter(turn, INFINITY),
+                                turn * (1 + 1e-12),
+                                turn * 2,
+                                1e30};
+        for (size_t k = 0; k < sizeof dists / sizeof *dists; k++) {
+            for (int j = 0; j < 3; j++) {
+                vec3 axis = v3_normalize(v3(1, 2, -2));
+                vec3 o = v3_madd(center, axis, dists[k]);
+                double want = eps_by_definition(t, o, dirs[j]);
+                double got = csg_eps(t, o, dirs[j]);
+                if (got != want)
+                    fail_msg("scene %d, distance %.17g, direction %d: csg_eps %.17g, "
+                             "by definition %.17g",
+                             i, dists[k], j, got, want);
+            }
+        }
+        csg_tree_free(t);
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
-        cmocka_unit_test(test_coincident_faces),
-        cmocka_unit_test(test_random_trees),
-        cmocka_unit_test(test_bounds_culling),
-        cmocka_unit_test(test_ray_in_face_plane),
+        cmocka_unit_test(test_coincident_faces), cmocka_unit_test(test_random_trees),
+        cmocka_unit_test(test_bounds_culling),   cmocka_unit_test(test_ray_in_face_plane),
+        cmocka_unit_test(test_eps_near_and_far),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

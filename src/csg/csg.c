@@ -675,6 +675,32 @@ static int compile(csg_builder *b, uint32_t root, csg_tree *t)
     return ok;
 }
 
+/* The parts of csg_eps (below) that depend on the tree alone. With
+ * near = fmax(eps_extent, 2^-40 scale), the distance term 2^-40 dist wins
+ * over near only where dist > 2^40 near (the product by a power of two is
+ * exact). sqrt is correctly rounded and monotonic, and sqrt(fl(D * D)) is
+ * D for every D whose square is a finite normal number, so
+ * dist2 <= fl(D * D) gives sqrt(dist2) <= D: then csg_eps's value is near
+ * bit for bit, whatever its square root would have been. Any other D
+ * turns the test off (-1); an empty tree's distance is 0 and its value is
+ * near everywhere. */
+static void eps_prepare(csg_tree *t)
+{
+    double extent = t->scale;
+    t->eps_center = v3(0, 0, 0);
+    if (!bbox_is_empty(&t->bounds)) {
+        t->eps_center = bbox_center(&t->bounds);
+        double e = v3_max_abs(bbox_extent(&t->bounds));
+        if (e > 0 && isfinite(e))
+            extent = e;
+    }
+    t->eps_extent = 1e-9 * extent;
+    t->eps_near = fmax(t->eps_extent, 0x1p-40 * t->scale);
+    double reach = 0x1p40 * t->eps_near, reach2 = reach * reach;
+    int normal = isfinite(reach2) && reach2 >= 0x1p-1022;
+    t->eps_near2 = bbox_is_empty(&t->bounds) ? INFINITY : normal ? reach2 : -1;
+}
+
 sc_status csg_builder_finish(csg_builder *b, uint32_t root, csg_tree **out,
                              sc_error *error)
 {
@@ -705,6 +731,7 @@ sc_status csg_builder_finish(csg_builder *b, uint32_t root, csg_tree **out,
         if (s > 0 && isfinite(s))
             t->scale = s;
     }
+    eps_prepare(t);
     *out = t;
     return SC_OK;
 }
@@ -1207,18 +1234,17 @@ static span_list eval(eval_ctx *c, uint32_t id, double lo, double hi, eval_mode 
  * camera). The extent falls back to the scale for a solid of no extent. */
 double csg_eps(const csg_tree *t, vec3 o, vec3 d)
 {
-    double dist = 0, extent = t->scale;
-    if (!bbox_is_empty(&t->bounds)) {
-        vec3 center = bbox_center(&t->bounds);
-        dist = v3_length(v3_sub(o, center));
-        double e = v3_max_abs(bbox_extent(&t->bounds));
-        if (e > 0 && isfinite(e))
-            extent = e;
-    }
     double len = v3_length(d);
     if (!(len > 0))
         len = 1;
-    return fmax(1e-9 * extent, 0x1p-40 * fmax(t->scale, dist)) / len;
+    /* Within eps_near2 of the centre (every shadow and secondary ray of a
+     * scene seen from nearby) the distance term loses to the others and
+     * needs no square root; eps_prepare says why the test is exact. */
+    double dist2 = v3_dot(v3_sub(o, t->eps_center), v3_sub(o, t->eps_center));
+    if (dist2 <= t->eps_near2)
+        return t->eps_near / len;
+    double dist = bbox_is_empty(&t->bounds) ? 0 : sqrt(dist2);
+    return fmax(t->eps_extent, 0x1p-40 * fmax(t->scale, dist)) / len;
 }
 
 /* Runs a query from the root; returns 0 on allocation failure. */

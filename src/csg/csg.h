@@ -104,7 +104,14 @@ typedef struct csg_tree {
     uint32_t depth; /* levels of boolean nodes above the deepest leaf, + 1 */
     bbox bounds;    /* world bounds of the root */
     double scale;   /* characteristic length: max of extent and |coordinates| */
-    int has_motion; /* some leaf moves (its transform depends on the ray's time) */
+    /* csg_eps's parts that depend on the tree alone, computed once: */
+    vec3 eps_center;   /* the centre of bounds (the origin when empty) */
+    double eps_extent; /* 1e-9 of the extent (of the scale when none) */
+    double eps_near;   /* fmax(eps_extent, 2^-40 scale): csg_eps's length for
+                          an origin within sqrt(eps_near2) of eps_center */
+    double eps_near2;  /* squared distance below which the distance term
+                          cannot win, so csg_eps needs no square root for it */
+    int has_motion;    /* some leaf moves (its transform depends on the ray's time) */
     /* The tree as described, before simplification (reachable part). */
     uint32_t source_node_count, source_leaf_count, source_depth;
 } csg_tree;
