@@ -512,6 +512,55 @@ static sc_status parse_value_into(parser *ps, parse_value *out)
     }
 }
 
+/* Moves the arguments read (ps->args) into the arena as node's. */
+static sc_status store_arguments(parser *ps, parse_node *node)
+{
+    if (ps->arg_count) {
+        if (ps->arg_count > UINT32_MAX)
+            return err_set(ps->error, SC_ERR_LIMIT, NULL, "too many arguments");
+        parse_arg *args = arena_alloc(&ps->tree->mem, ps->arg_count * sizeof *args);
+        if (!args)
+            return err_nomem(ps->error, NULL);
+        memcpy(args, ps->args, ps->arg_count * sizeof *args);
+        node->args = args;
+        node->arg_count = (uint32_t)ps->arg_count;
+    }
+    return SC_OK;
+}
+
+/* The fast path for a named number argument, `NAME = NUMBER` followed by
+ * ',' or ')', which is most of the arguments OpenSCAD writes ($fn, $fa,
+ * $fs, r, h, ...): at the current token, a name, the text after it is read
+ * directly, without tokens, as long as it is '=', a number (read by
+ * lex_number_at, as fast_vector does) and ',' or ')' on the same line with
+ * spaces and tabs between them. Returns 1 when it was read: arg holds the
+ * name and the value, with the positions the token path gives, and the
+ * lexer stands past the ',' or ')' (*closed says which), the next token
+ * not yet read. Returns 0 when the token path must read the argument:
+ * then nothing has moved. */
+static int fast_named_number(parser *ps, parse_arg *arg, int *closed)
+{
+    lexer *lx = &ps->lx;
+    const char *p = skip_blanks(lx->p, lx->end), *end = lx->end;
+    if (p >= end || *p != '=')
+        return 0;
+    p = skip_blanks(p + 1, end);
+    const char *number = p;
+    double x;
+    if (!lex_number_at(p, end, &x, &p))
+        return 0;
+    p = skip_blanks(p, end);
+    if (p >= end || (*p != ',' && *p != ')'))
+        return 0;
+    *closed = *p == ')';
+    arg->value.kind = PARSE_NUMBER;
+    arg->value.line = lx->line;
+    arg->value.column = (int)(number - lx->line_start) + 1;
+    arg->value.u.number = x;
+    lx->p = p + 1;
+    return 1;
+}
+
 /* arguments := [ argument { ',' argument } [ ',' ] ]
  * argument  := NAME '=' value | value
  * Reads the arguments after '(' (at line paren_line) through ')'. */
@@ -526,6 +575,19 @@ static sc_status parse_arguments(parser *ps, parse_node *node, int paren_line)
         if (ps->tok.kind == LEX_IDENT) {
             if (!(arg.name = token_text(ps)))
                 return err_nomem(ps->error, NULL);
+            int closed;
+            if (fast_named_number(ps, &arg, &closed)) {
+                if (ps->arg_count == ps->arg_cap &&
+                    !grow_array((void **)&ps->args, &ps->arg_cap, ps->arg_count + 1,
+                                sizeof *ps->args))
+                    return err_nomem(ps->error, NULL);
+                ps->args[ps->arg_count++] = arg;
+                if (closed && (st = store_arguments(ps, node)) != SC_OK)
+                    return st;
+                if ((st = advance(ps)) != SC_OK || closed)
+                    return st;
+                continue;
+            }
             if ((st = advance(ps)) != SC_OK)
                 return st;
             if (ps->tok.kind == LEX_COMMA || ps->tok.kind == LEX_RPAREN ||
@@ -554,16 +616,8 @@ static sc_status parse_arguments(parser *ps, parse_node *node, int paren_line)
             return syntax_error(ps, "expected ')' (to close '(' at line %d)", paren_line);
         }
     }
-    if (ps->arg_count) {
-        if (ps->arg_count > UINT32_MAX)
-            return err_set(ps->error, SC_ERR_LIMIT, NULL, "too many arguments");
-        parse_arg *args = arena_alloc(&ps->tree->mem, ps->arg_count * sizeof *args);
-        if (!args)
-            return err_nomem(ps->error, NULL);
-        memcpy(args, ps->args, ps->arg_count * sizeof *args);
-        node->args = args;
-        node->arg_count = (uint32_t)ps->arg_count;
-    }
+    if ((st = store_arguments(ps, node)) != SC_OK)
+        return st;
     return advance(ps); /* past ')' */
 }
 
