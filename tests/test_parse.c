@@ -194,6 +194,21 @@ static void test_names_and_strings_outlive_nodes(void **state)
     assert_ptr_equal(a->args[0].name, b->args[0].name);
     assert_ptr_equal(a->args[1].name, c->args[0].name);
     assert_ptr_not_equal(a->name, b->next->name);
+    /* Names that share a slot of the parser's recent names (the same
+     * length, first and last bytes: "ab" and "ba", "axb" and "ayb") are
+     * still told apart, each stored once. */
+    parse_tree *u =
+        parse_ok("n(ab = 1, ba = 2, ab = 3, axb = 4, ayb = 5, ba = 6, axb = 7);");
+    const parse_arg *args = u->first->args;
+    static const char *const want[] = {"ab", "ba", "ab", "axb", "ayb", "ba", "axb"};
+    for (int i = 0; i < 7; i++)
+        assert_string_equal(args[i].name, want[i]);
+    assert_ptr_equal(args[0].name, args[2].name);
+    assert_ptr_equal(args[1].name, args[5].name);
+    assert_ptr_equal(args[3].name, args[6].name);
+    assert_ptr_not_equal(args[0].name, args[1].name);
+    assert_ptr_not_equal(args[3].name, args[4].name);
+    parse_tree_free(u);
     const parse_value *s = &b->args[1].value;
     assert_int_equal(s->kind, PARSE_STRING);
     assert_string_equal(s->u.string.chars, "a\tb\xc3\xa9");

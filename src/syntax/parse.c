@@ -43,6 +43,8 @@ typedef struct name_entry {
     uint32_t hash;
 } name_entry;
 
+enum { RECENT_NAMES = 32 };
+
 typedef struct parser {
     lexer lx;
     lex_token tok; /* the current token */
@@ -56,6 +58,11 @@ typedef struct parser {
     size_t arg_count, arg_cap;
     name_entry *names; /* open addressing, a power of two slots, at most half full */
     size_t name_count, name_cap;
+    /* The names met lately, by recent_slot: a file repeats a few names
+     * (multmatrix, sphere, $fn, $fa, $fs, r) a million times, and a hit
+     * here costs one comparison rather than a hash of the name and a
+     * probe. Copies of table entries; an empty one has no chars. */
+    name_entry recent[RECENT_NAMES];
     const parse_sink *sink; /* a streamed parse (parse_stream); NULL: keep the tree */
     arena_mark *marks;      /* streamed: the arena before each open node, by depth */
     size_t mark_cap;
@@ -189,6 +196,8 @@ static const char *language_word(const char *name)
  * out of memory. */
 static const char *token_name(parser *ps, const char **language);
 
+static const char *find_name(parser *ps, const char *text, size_t n, name_entry *seen);
+
 static const char *token_text(parser *ps)
 {
     return token_name(ps, NULL);
@@ -196,10 +205,36 @@ static const char *token_text(parser *ps)
 
 /* token_text, and when language is not NULL, language_word of the name
  * into *language, looked up once per distinct name rather than per node. */
+/* The slot in parser.recent of the name text[0 .. n): its length
+ * and its first and last bytes, which tell the names a file repeats
+ * apart. */
+static size_t recent_slot(const char *text, size_t n)
+{
+    return n ? (n + (unsigned char)text[0] + (unsigned char)text[n - 1]) &
+                   (RECENT_NAMES - 1)
+             : 0;
+}
+
 static const char *token_name(parser *ps, const char **language)
 {
     const char *text = ps->tok.start;
     size_t n = ps->tok.length;
+    name_entry *seen = &ps->recent[recent_slot(text, n)];
+    if (seen->chars && seen->length == n && memcmp(seen->chars, text, n) == 0) {
+        if (language)
+            *language = seen->language;
+        return seen->chars;
+    }
+    const char *name = find_name(ps, text, n, seen);
+    if (name && language)
+        *language = seen->language;
+    return name;
+}
+
+/* token_name past parser.recent: the name from the table, stored there
+ * first if new, and copied into *seen. NULL when out of memory. */
+static const char *find_name(parser *ps, const char *text, size_t n, name_entry *seen)
+{
     uint32_t h = name_hash(text, n);
     if (ps->name_count + 1 > ps->name_cap / 2 && !grow_names(ps))
         return NULL;
@@ -209,8 +244,7 @@ static const char *token_name(parser *ps, const char **language)
         if (!e->chars)
             break;
         if (e->hash == h && e->length == n && memcmp(e->chars, text, n) == 0) {
-            if (language)
-                *language = e->language;
+            *seen = *e;
             return e->chars;
         }
     }
@@ -222,8 +256,7 @@ static const char *token_name(parser *ps, const char **language)
     /* Names are identifiers, far shorter than 2^32 bytes. */
     ps->names[k] = (name_entry){s, language_word(s), (uint32_t)n, h};
     ps->name_count++;
-    if (language)
-        *language = ps->names[k].language;
+    *seen = ps->names[k];
     return s;
 }
 
