@@ -178,6 +178,69 @@ static void test_number_rounding(void **state)
     arena_free(&mem);
 }
 
+/* The edges of the inline path for plain decimals (simple_number in
+ * lex.c, at most 15 digits with leading zeros, no exponent): on both
+ * sides of 15 digits, past 19 (where its running integer wraps), signed
+ * zeros, a '+', a bare point at the end, and what must stop it (a letter,
+ * a second point, an exponent) give strtod's double bit for bit, or the
+ * token path's error. */
+static void test_number_simple_edges(void **state)
+{
+    (void)state;
+    static const char *const texts[] = {"123456789012345",
+                                        "1234567890123456",
+                                        "000000000000001",
+                                        "0000000000000001",
+                                        "12345678901234567890123",
+                                        "99999999999999.9",
+                                        "9999999999999.99",
+                                        "0.000000000000001",
+                                        "0.0000000000000001",
+                                        "-0",
+                                        "-0.000",
+                                        "+1.5",
+                                        "7.",
+                                        "-12.0600",
+                                        "1e5",
+                                        "1.5E-3",
+                                        "0.1",
+                                        "+0.30000000000000004"};
+    arena mem;
+    arena_init(&mem, 0);
+    for (size_t i = 0; i < sizeof texts / sizeof texts[0]; i++) {
+        const char *t = texts[i];
+        size_t n = strlen(t);
+        double want = strtod(t, NULL);
+        lexer lx;
+        lex_token tok;
+        lex_init(&lx, "t.csg", t, n, &mem);
+        assert_int_equal(lex_next(&lx, &tok, NULL), SC_OK);
+        assert_int_equal(tok.kind, LEX_NUMBER);
+        assert_int_equal(tok.length, n);
+        if (memcmp(&want, &tok.number, sizeof want) != 0)
+            fail_msg("'%s': lexed %.17g, strtod %.17g", t, tok.number, want);
+        double fast = 0;
+        const char *after = NULL;
+        assert_int_equal(lex_number_at(t, t + n, &fast, &after), 1);
+        assert_ptr_equal(after, t + n);
+        if (memcmp(&want, &fast, sizeof want) != 0)
+            fail_msg("'%s': lex_number_at %.17g, strtod %.17g", t, fast, want);
+    }
+    static const char *const bad[] = {"12a", "1.2.3", "15_"};
+    for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++) {
+        double v = 0;
+        const char *after = NULL;
+        if (lex_number_at(bad[i], bad[i] + strlen(bad[i]), &v, &after))
+            fail_msg("'%s' read as %g", bad[i], v);
+        lexer lx;
+        lex_token tok;
+        sc_error e;
+        lex_init(&lx, "t.csg", bad[i], strlen(bad[i]), &mem);
+        assert_int_equal(lex_next(&lx, &tok, &e), SC_ERR_SYNTAX);
+    }
+    arena_free(&mem);
+}
+
 /* lex_number_at leaves to lex_next what it reads otherwise. */
 static void test_number_at_declines(void **state)
 {
@@ -327,6 +390,7 @@ int main(void)
         cmocka_unit_test(test_identifiers_and_keywords),
         cmocka_unit_test(test_numbers),
         cmocka_unit_test(test_number_rounding),
+        cmocka_unit_test(test_number_simple_edges),
         cmocka_unit_test(test_number_at_declines),
         cmocka_unit_test(test_inf_and_nan),
         cmocka_unit_test(test_strings),

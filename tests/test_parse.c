@@ -194,6 +194,21 @@ static void test_names_and_strings_outlive_nodes(void **state)
     assert_ptr_equal(a->args[0].name, b->args[0].name);
     assert_ptr_equal(a->args[1].name, c->args[0].name);
     assert_ptr_not_equal(a->name, b->next->name);
+    /* Names that share a slot of the parser's recent names (the same
+     * length, first and last bytes: "ab" and "ba", "axb" and "ayb") are
+     * still told apart, each stored once. */
+    parse_tree *u =
+        parse_ok("n(ab = 1, ba = 2, ab = 3, axb = 4, ayb = 5, ba = 6, axb = 7);");
+    const parse_arg *args = u->first->args;
+    static const char *const want[] = {"ab", "ba", "ab", "axb", "ayb", "ba", "axb"};
+    for (int i = 0; i < 7; i++)
+        assert_string_equal(args[i].name, want[i]);
+    assert_ptr_equal(args[0].name, args[2].name);
+    assert_ptr_equal(args[1].name, args[5].name);
+    assert_ptr_equal(args[3].name, args[6].name);
+    assert_ptr_not_equal(args[0].name, args[1].name);
+    assert_ptr_not_equal(args[3].name, args[4].name);
+    parse_tree_free(u);
     const parse_value *s = &b->args[1].value;
     assert_int_equal(s->kind, PARSE_STRING);
     assert_string_equal(s->u.string.chars, "a\tb\xc3\xa9");
@@ -764,6 +779,84 @@ static void test_number_vectors(void **state)
     parse_tree_free(t);
 }
 
+/* Named number arguments (`r = 0.6`) take a fast path past the tokens
+ * too (fast_named_number in parse.c). Random argument lists of named
+ * numbers and vectors, with random blanks, now and then a line break or
+ * a comment (the token path) and a trailing comma, must give each
+ * argument its name, the name's position, and the value the generator
+ * wrote, at its line and column, bit for bit. */
+static void test_named_numbers(void **state)
+{
+    (void)state;
+    static const char *const names[] = {"r", "$fn", "$fa", "$fs", "h", "center_x"};
+    for (int round = 0; round < 400; round++) {
+        writer w = {0};
+        w.line = 1;
+        w.r = 0x9e3779b97f4a7c15ULL + (uint64_t)round * 0x2545f4914f6cdd1dULL;
+        put(&w, "a(");
+        int args = 1 + (int)(next_random(&w) % 5);
+        int name_line[5], name_column[5];
+        const char *name[5];
+        for (int i = 0; i < args; i++) {
+            if (i)
+                put(&w, ",");
+            blank(&w);
+            name[i] = names[next_random(&w) % 6];
+            name_line[i] = w.line;
+            name_column[i] = (int)(w.length - w.line_start) + 1;
+            put(&w, name[i]);
+            blank(&w);
+            put(&w, "=");
+            blank(&w);
+            if (next_random(&w) % 4 == 0)
+                write_vector(&w, 0);
+            else
+                write_number(&w);
+            blank(&w);
+        }
+        if (next_random(&w) % 8 == 0)
+            put(&w, ",");
+        put(&w, ");\n");
+        parse_tree *t = parse_ok(w.text);
+        assert_int_equal(t->first->arg_count, (uint32_t)args);
+        size_t k = 0;
+        for (int i = 0; i < args; i++) {
+            const parse_arg *a = &t->first->args[i];
+            assert_string_equal(a->name, name[i]);
+            assert_int_equal(a->loc.line, name_line[i]);
+            assert_int_equal(a->loc.column, name_column[i]);
+            check_written(&w, &a->value, &k);
+        }
+        assert_int_equal(k, w.count);
+        parse_tree_free(t);
+        free(w.text);
+        free(w.values);
+    }
+    /* What the fast path gives up on reads as before: errors at the same
+     * places. */
+    check_error("a(r = 1 2);", "m.csg:1:9: error: expected ')' (to close '(' at line 1)");
+    check_error("a(r = 1.5.);", "m.csg:1:7: error: malformed number '1.5.'");
+    check_error("a(r = 1e999);", "m.csg:1:7: error: number out of range '1e999'");
+    check_error("a(r = 1x);", "m.csg:1:7: error: malformed number '1x'");
+    check_error("a(r = 1, s = 2",
+                "m.csg:1:15: error: expected ')' (to close '(' at line 1)");
+    check_error("a(r = 1,, s = 2);", "m.csg:1:9: error: expected a value, found ','");
+    check_error("a(r = 1)", "m.csg:1:9: error: expected ';', '{' or a child node after "
+                            "node 'a'");
+    check_error("a(r = 1 ,$fn=2 ) b(r = 7 @);",
+                "m.csg:1:26: error: unexpected character '@'");
+    check_language("a(r = 1 * 2);", "m.csg:1:9: error: an expression ('*') is "
+                                    "OpenSCAD's language beyond its CSG export");
+    check_language("a(r = - 1);", "m.csg:1:7: error: an operator ('-') is OpenSCAD's "
+                                  "language beyond its CSG export");
+    parse_tree *t = parse_ok("a(r = -inf, s = nan,t=1);");
+    assert_int_equal(t->first->arg_count, 3);
+    assert_true(isinf(t->first->args[0].value.u.number));
+    assert_true(isnan(t->first->args[1].value.u.number));
+    assert_int_equal(t->first->args[2].value.column, 23);
+    parse_tree_free(t);
+}
+
 /* A streamed parse hands over every node once opened and once closed,
  * with its final child count; a kept subtree is linked as parse_text
  * links it; and a closed node's memory is reused, so that a union of
@@ -838,6 +931,7 @@ int main(void)
         cmocka_unit_test(test_language),
         cmocka_unit_test(test_stream),
         cmocka_unit_test(test_number_vectors),
+        cmocka_unit_test(test_named_numbers),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -704,23 +704,25 @@ static sc_status push_frame(builder *b, const frame *f)
 /* Ends the innermost frame: its children's results become one node. */
 static sc_status pop_frame(builder *b)
 {
-    frame f = b->frames[--b->frame_count];
+    /* Read in place, not copied (a frame is over 600 bytes): nothing
+     * below pushes a frame, so the slot stays as it is. */
+    const frame *f = &b->frames[--b->frame_count];
     uint32_t id = CSG_EMPTY;
-    sc_status st = flush_ignored(b, &f);
+    sc_status st = flush_ignored(b, f);
     if (st != SC_OK)
         return st;
-    if (f.emit) {
-        size_t count = b->id_count - f.first_id;
+    if (f->emit) {
+        size_t count = b->id_count - f->first_id;
         if (count > UINT32_MAX)
             return err_nomem(b->error, NULL);
         /* No id pushed yet means no id array at all: NULL + 0 is undefined. */
-        const uint32_t *children = count ? b->ids + f.first_id : NULL;
-        id = csg_builder_op(b->csg, f.op, children, (uint32_t)count);
+        const uint32_t *children = count ? b->ids + f->first_id : NULL;
+        id = csg_builder_op(b->csg, f->op, children, (uint32_t)count);
         if (csg_builder_failed(b->csg))
             return err_nomem(b->error, NULL);
     }
-    b->id_count = f.first_id;
-    return deliver(b, f.node, f.counted, id);
+    b->id_count = f->first_id;
+    return deliver(b, f->node, f->counted, id);
 }
 
 /* Notes n for the preview when it carries '#' or '%' inside the design
@@ -745,6 +747,87 @@ static sc_status mark_part(builder *b, const model_node *n, const frame *parent)
     return SC_OK;
 }
 
+/* The state node n hands its children (or, for a leaf, builds with),
+ * from its parent's: written into *f, which may be the next free slot of
+ * b->frames. */
+static void inherit(const builder *b, const model_node *n, const frame *parent, frame *f)
+{
+    *f = *parent;
+    f->node = n;
+    if (n->is_root) {
+        static const float default_color[4] = BUILD_DEFAULT_COLOR;
+        f->emit = 1;
+        f->shown = 1;
+        f->to_world = affine_identity();
+        memcpy(f->color, default_color, sizeof f->color);
+        f->material = 0;
+    }
+    if ((n->modifiers & MODEL_MOD_BACKGROUND) && n != b->part)
+        f->emit = 0;
+    f->counted = f->emit;
+}
+
+/* Whether leaf n builds with its parent's state as it is (inherit would
+ * change nothing it reads), and its builder pushes no frame, so that the
+ * parent's frame serves it in place: a frame is over 600 bytes, and
+ * copying one per leaf was a large part of the walk of a million. */
+static int plain_leaf(const builder *b, const model_node *n, const frame *parent)
+{
+    model_kind kind = n->kind;
+    return (kind == MODEL_SPHERE || kind == MODEL_CUBE || kind == MODEL_CYLINDER) &&
+           !n->is_root && parent->counted == parent->emit &&
+           !((n->modifiers & MODEL_MOD_BACKGROUND) && n != b->part);
+}
+
+/* Builds leaf n with state f and delivers its result. */
+static sc_status visit_leaf(builder *b, const model_node *n, const frame *f)
+{
+    sc_status st;
+    model_kind kind = n->kind;
+    if (n->child_count > 0 && f->emit && kind != MODEL_LINEAR_EXTRUDE &&
+        kind != MODEL_ROTATE_EXTRUDE && !model_is_2d(kind) && kind != MODEL_HULL &&
+        kind != MODEL_MINKOWSKI &&
+        (st = warn(b, &n->loc, "'%s' takes no children; they are ignored", n->name)) !=
+            SC_OK)
+        return st;
+    uint32_t id = CSG_EMPTY;
+    switch (kind) {
+    case MODEL_CUBE:
+        st = build_cube(b, n, f, &id);
+        break;
+    case MODEL_SPHERE:
+        st = build_sphere(b, n, f, &id);
+        break;
+    case MODEL_CYLINDER:
+        st = build_cylinder(b, n, f, &id);
+        break;
+    case MODEL_TORUS:
+    case MODEL_QUADRIC:
+    case MODEL_IMPLICIT:
+        st = build_curved(b, n, f, &id);
+        break;
+    case MODEL_IMPORT:
+    case MODEL_LINEAR_EXTRUDE:
+    case MODEL_ROTATE_EXTRUDE:
+        st = build_import_leaf(b, n, f, &id);
+        break;
+    case MODEL_HULL:
+    case MODEL_MINKOWSKI:
+        st = build_hull_leaf(b, n, f, &id);
+        break;
+    case MODEL_SURFACE:
+        st = build_surface_leaf(b, n, f, &id);
+        break;
+    case MODEL_POLYHEDRON:
+        st = build_polyhedron(b, n, f, &id);
+        break;
+    default: /* the 2D shapes, taken before */
+        st = SC_OK;
+        break;
+    }
+    return st != SC_OK ? st : deliver(b, n, f->counted, id);
+}
+
 /* Visits one node: a leaf delivers its result; a boolean node opens a
  * frame for its children. *opened says which. */
 static sc_status visit(builder *b, const model_node *n, int *opened)
@@ -764,115 +847,75 @@ static sc_status visit(builder *b, const model_node *n, int *opened)
     const frame *parent = &b->frames[b->frame_count - 1];
     if ((st = mark_part(b, n, parent)) != SC_OK)
         return st;
-    frame f = *parent;
-    f.node = n;
-    if (n->is_root) {
-        static const float default_color[4] = BUILD_DEFAULT_COLOR;
-        f.emit = 1;
-        f.shown = 1;
-        f.to_world = affine_identity();
-        memcpy(f.color, default_color, sizeof f.color);
-        f.material = 0;
-    }
-    if ((n->modifiers & MODEL_MOD_BACKGROUND) && n != b->part)
-        f.emit = 0;
-    f.counted = f.emit;
-    if (kind == MODEL_LIGHT)
-        return build_light(b->shading, n, &f.to_world, f.emit, b->error);
-    if (kind == MODEL_CAMERA) {
-        build_camera(b->shading, n, f.emit);
-        return SC_OK;
-    }
-    if (kind == MODEL_BACKGROUND) {
-        build_background(b->shading, n, f.emit);
-        return SC_OK;
-    }
-    if (build_dim(n, 0) == 2) {
-        /* ignored, it is the empty solid, which empties an intersection
-         * as in OpenSCAD */
-        uint32_t id = CSG_EMPTY;
-        st = n->is_root ? build_flat(b, n, &f, &id) : build_twod_ignored(b, n, &f);
-        return st != SC_OK ? st : deliver(b, n, f.counted, id);
-    }
-    if (model_is_leaf(kind)) {
-        if (n->child_count > 0 && f.emit && kind != MODEL_LINEAR_EXTRUDE &&
-            kind != MODEL_ROTATE_EXTRUDE && !model_is_2d(kind) && kind != MODEL_HULL &&
-            kind != MODEL_MINKOWSKI &&
-            (st = warn(b, &n->loc, "'%s' takes no children; they are ignored",
-                       n->name)) != SC_OK)
-            return st;
-        uint32_t id = CSG_EMPTY;
-        switch (kind) {
-        case MODEL_CUBE:
-            st = build_cube(b, n, &f, &id);
-            break;
-        case MODEL_SPHERE:
-            st = build_sphere(b, n, &f, &id);
-            break;
-        case MODEL_CYLINDER:
-            st = build_cylinder(b, n, &f, &id);
-            break;
-        case MODEL_TORUS:
-        case MODEL_QUADRIC:
-        case MODEL_IMPLICIT:
-            st = build_curved(b, n, &f, &id);
-            break;
-        case MODEL_IMPORT:
-        case MODEL_LINEAR_EXTRUDE:
-        case MODEL_ROTATE_EXTRUDE:
-            st = build_import_leaf(b, n, &f, &id);
-            break;
-        case MODEL_HULL:
-        case MODEL_MINKOWSKI:
-            st = build_hull_leaf(b, n, &f, &id);
-            break;
-        case MODEL_SURFACE:
-            st = build_surface_leaf(b, n, &f, &id);
-            break;
-        case MODEL_POLYHEDRON:
-            st = build_polyhedron(b, n, &f, &id);
-            break;
-        default: /* the 2D shapes, taken above */
-            break;
+    if (plain_leaf(b, n, parent))
+        return visit_leaf(b, n, parent);
+    if (model_is_leaf(kind) || kind == MODEL_LIGHT || kind == MODEL_CAMERA ||
+        kind == MODEL_BACKGROUND || build_dim(n, 0) == 2) {
+        frame f;
+        inherit(b, n, parent, &f);
+        if (kind == MODEL_LIGHT)
+            return build_light(b->shading, n, &f.to_world, f.emit, b->error);
+        if (kind == MODEL_CAMERA) {
+            build_camera(b->shading, n, f.emit);
+            return SC_OK;
         }
-        return st != SC_OK ? st : deliver(b, n, f.counted, id);
+        if (kind == MODEL_BACKGROUND) {
+            build_background(b->shading, n, f.emit);
+            return SC_OK;
+        }
+        if (build_dim(n, 0) == 2) {
+            /* ignored, it is the empty solid, which empties an intersection
+             * as in OpenSCAD */
+            uint32_t id = CSG_EMPTY;
+            st = n->is_root ? build_flat(b, n, &f, &id) : build_twod_ignored(b, n, &f);
+            return st != SC_OK ? st : deliver(b, n, f.counted, id);
+        }
+        return visit_leaf(b, n, &f);
     }
-    f.op = kind == MODEL_DIFFERENCE     ? CSG_DIFFERENCE
-           : kind == MODEL_INTERSECTION ? CSG_INTERSECTION
-                                        : CSG_UNION;
-    f.first_id = b->id_count;
-    f.first_ignored = b->ignored_count;
+    /* A boolean node: its frame is made in place, in the next slot, and
+     * counted once complete. */
+    if (!grow_array((void **)&b->frames, &b->frame_cap, b->frame_count + 1,
+                    sizeof *b->frames))
+        return err_nomem(b->error, NULL);
+    frame *f = &b->frames[b->frame_count];
+    inherit(b, n, &b->frames[b->frame_count - 1], f);
+    f->op = kind == MODEL_DIFFERENCE     ? CSG_DIFFERENCE
+            : kind == MODEL_INTERSECTION ? CSG_INTERSECTION
+                                         : CSG_UNION;
+    f->first_id = b->id_count;
+    f->first_ignored = b->ignored_count;
     if (kind == MODEL_XFORM) {
         affine inverse;
-        f.to_world = affine_mul(&f.to_world, n->u.xform);
-        if (f.emit && !affine_invert(&f.to_world, &inverse)) {
+        f->to_world = affine_mul(&f->to_world, n->u.xform);
+        if (f->emit && !affine_invert(&f->to_world, &inverse)) {
             if ((st = warn(b, &n->loc, "singular transform: subtree is empty")) != SC_OK)
                 return st;
-            f.emit = 0; /* still counted: the empty solid */
+            f->emit = 0; /* still counted: the empty solid */
         }
     } else if (kind == MODEL_RESIZE) {
-        build_ctx c = context(b, f.emit, NULL);
+        build_ctx c = context(b, f->emit, NULL);
         const char *warning = NULL;
         affine m;
         if ((st = build_resize(&c, n, &b->resize_cache, &m, &warning)) != SC_OK)
             return st;
-        if (warning && f.emit && (st = warn(b, &n->loc, "%s", warning)) != SC_OK)
+        if (warning && f->emit && (st = warn(b, &n->loc, "%s", warning)) != SC_OK)
             return st;
-        f.to_world = affine_mul(&f.to_world, &m);
+        f->to_world = affine_mul(&f->to_world, &m);
     } else if (kind == MODEL_MOTION) {
-        if ((st = build_motion_open(n, f.moving, &f.to_world, &f.motion, b->error)))
+        if ((st = build_motion_open(n, f->moving, &f->to_world, &f->motion, b->error)))
             return st;
-        f.moving = 1;
+        f->moving = 1;
     } else if (kind == MODEL_COLOR) {
-        if ((st = apply_color(b, n, f.emit, f.color)) != SC_OK)
+        if ((st = apply_color(b, n, f->emit, f->color)) != SC_OK)
             return st;
     } else if (kind == MODEL_MATERIAL) {
-        if ((st = build_material(b->shading, n, f.emit, &f.material, f.color,
+        if ((st = build_material(b->shading, n, f->emit, &f->material, f->color,
                                  b->error)) != SC_OK)
             return st;
     }
     *opened = 1;
-    return push_frame(b, &f);
+    b->frame_count++;
+    return SC_OK;
 }
 
 /* The last node of the model in file order: where the lowering stopped

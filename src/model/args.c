@@ -49,17 +49,23 @@ sc_status model_number(const model_reader *c, const parse_node *n, const char *n
 sc_status model_radius(const model_reader *r, const parse_node *n, const char *diameter,
                        const char *radius, int radius_position, double *out, int *given)
 {
-    double d = 0;
-    int has_d = model_arg(n, diameter, -1) != NULL;
-    *given = model_arg(n, radius, radius_position) != NULL;
-    sc_status st = model_number(r, n, diameter, -1, &d);
-    if (st == SC_OK)
-        st = model_number(r, n, radius, radius_position, out);
-    if (st == SC_OK && has_d) {
-        *out = d / 2;
+    /* Each argument looked up once (this runs for every sphere and three
+     * times for every cylinder); the diameter's type is checked first. */
+    const parse_value *d = model_arg(n, diameter, -1);
+    const parse_value *rv = model_arg(n, radius, radius_position);
+    *given = rv != NULL;
+    if (d && d->kind != PARSE_NUMBER)
+        return model_wrong_type(r, n, diameter, d, "a number");
+    if (rv) {
+        if (rv->kind != PARSE_NUMBER)
+            return model_wrong_type(r, n, radius, rv, "a number");
+        *out = rv->u.number;
+    }
+    if (d) {
+        *out = d->u.number / 2;
         *given = 1;
     }
-    return st;
+    return SC_OK;
 }
 
 sc_status model_read_sphere(const model_reader *r, const parse_node *n, double *radius,

@@ -40,6 +40,18 @@ typedef struct resize_entry {
     model_node *node;
 } resize_entry;
 
+/* The kinds of the node names met lately, by the name's address: a parse
+ * tree stores each distinct name once (parse.h), so within one tree an
+ * address stands for its text, and the table of kinds is not searched
+ * again for each of a million nodes. Direct-mapped; an empty slot has no
+ * name. */
+enum { KIND_CACHE = 8 };
+
+typedef struct kind_cache {
+    const char *name[KIND_CACHE];
+    size_t index[KIND_CACHE]; /* into kinds, or KIND_UNKNOWN */
+} kind_cache;
+
 typedef struct lowerer {
     model *m;
     model_reader r; /* its error is the node error being made */
@@ -48,6 +60,7 @@ typedef struct lowerer {
     resize_entry *resizes;
     size_t resize_count, resize_cap;
     int stopped; /* a main-model node has an argument error: lowering ends */
+    kind_cache seen;
 } lowerer;
 
 static size_t resize_slot(const resize_entry *table, size_t cap, const parse_node *n)
@@ -450,10 +463,25 @@ model_kind model_kind_of(const char *name)
 /* Whether the builder walks into the children of the node named name: the
  * root search does, except under leaves (under an unknown node too: the
  * error there comes later, in file order). */
+static int root_search_enters_kind(size_t i)
+{
+    return i == KIND_UNKNOWN || !model_is_leaf(kinds[i].kind);
+}
+
 static int root_search_enters(const char *name)
 {
-    size_t i = kind_index(name);
-    return i == KIND_UNKNOWN || !model_is_leaf(kinds[i].kind);
+    return root_search_enters_kind(kind_index(name));
+}
+
+/* kind_index of a name of the tree l lowers, through l's cache. */
+static size_t lowerer_kind(lowerer *l, const char *name)
+{
+    size_t slot = ((uintptr_t)name >> 3) & (KIND_CACHE - 1);
+    if (l->seen.name[slot] != name) {
+        l->seen.name[slot] = name;
+        l->seen.index[slot] = kind_index(name);
+    }
+    return l->seen.index[slot];
 }
 
 static const parse_node *find_root(const parse_tree *syntax)
@@ -495,7 +523,7 @@ static sc_status check_fn(lowerer *l, const parse_node *n)
 /* Lowers one node into out: its kind and arguments. */
 static sc_status lower_node(lowerer *l, const parse_node *n, model_node *out)
 {
-    size_t i = kind_index(n->name);
+    size_t i = lowerer_kind(l, n->name);
     if (i == KIND_UNKNOWN)
         return err_set(l->r.error, SC_ERR_SEMANTIC, &n->loc, "unknown node '%s'",
                        n->name);
@@ -715,7 +743,7 @@ sc_status model_lower(const parse_tree *syntax, model **out, sc_error *error)
         return err_nomem(error, NULL);
     arena_init(&m->mem, 64 * 1024);
     m->file = syntax->file;
-    lowerer l = {m, {syntax->file, NULL}, NULL, 0, 0, 0};
+    lowerer l = {.m = m, .r = {syntax->file, NULL}};
     const parse_node *root = find_root(syntax);
     m->has_root = root != NULL;
     sc_status st = walk(&l, syntax->first, NULL, IN_MAIN, root, &m->first, NULL, error);
@@ -737,7 +765,7 @@ sc_status model_lower_twod(const char *file, const parse_node *n, model **out,
         return err_nomem(error, NULL);
     arena_init(&m->mem, 4096);
     m->file = file;
-    lowerer l = {m, {file, NULL}, NULL, 0, 0, 0};
+    lowerer l = {.m = m, .r = {file, NULL}};
     sc_status st = walk(&l, n, n->next, IN_2D, NULL, &m->first, NULL, error);
     free(l.resizes);
     if (st != SC_OK) {
@@ -805,14 +833,15 @@ static sc_status stream_open(void *user, parse_node *n, int *keep, sc_error *err
         s->has_root = 1;
         s->root = n;
     }
-    f->searched = searched && root_search_enters(n->name);
+    size_t kind = lowerer_kind(&s->l, n->name);
+    f->searched = searched && root_search_enters_kind(kind);
     if (s->kept_depth)
         return SC_OK; /* inside a kept subtree: walked when it closes */
     int visited = !s->l.stopped && (!parent || parent->descend) && !disabled;
     if (!visited)
         return SC_OK;
     context ctx = parent ? (context)parent->ctx : IN_MAIN;
-    if (ctx == IN_MAIN && reads_subtree(kind_index(n->name))) {
+    if (ctx == IN_MAIN && reads_subtree(kind)) {
         *keep = 1;
         s->kept_depth = depth;
         f->deferred = 1;
@@ -873,7 +902,7 @@ sc_status model_stream_new(const char *file, model_stream **out, sc_error *error
     }
     arena_init(&m->mem, 64 * 1024);
     m->file = file;
-    s->l = (lowerer){m, {file, NULL}, NULL, 0, 0, 0};
+    s->l = (lowerer){.m = m, .r = {file, NULL}};
     s->link = &m->first;
     *out = s;
     return SC_OK;

@@ -347,10 +347,51 @@ static number_scan scan_number(const char *s, const char *end, double *value,
     return NUMBER_OK;
 }
 
+/* The form almost every number of a file OpenSCAD writes takes, read
+ * inline before scan_number: [+-]? D+ ('.' D*)? with at most 15 digits in
+ * all (leading zeros included) and no exponent. Then W < 10^15 and the
+ * point's place k = -(digits after it) >= -15, so fast_number converts it
+ * exactly as scan_number would (the same W, the same k; leading zeros
+ * change neither). 1 with *value and *after as scan_number's NUMBER_OK;
+ * 0 for every other text (scan_number reads it, and reports what is
+ * malformed). */
+static inline int simple_number(const char *p, const char *end, double *value,
+                                const char **after)
+{
+    int negative = 0;
+    if (p < end && (*p == '+' || *p == '-')) {
+        negative = *p == '-';
+        p++;
+    }
+    const char *first = p;
+    uint64_t w = 0; /* may wrap past 19 digits: then rejected below */
+    while (p < end && (unsigned)(*p - '0') < 10u)
+        w = 10 * w + (uint64_t)(*p++ - '0');
+    size_t digits = (size_t)(p - first);
+    if (digits == 0)
+        return 0;
+    const char *point = p;
+    if (p < end && *p == '.') {
+        p++;
+        while (p < end && (unsigned)(*p - '0') < 10u)
+            w = 10 * w + (uint64_t)(*p++ - '0');
+    }
+    size_t fraction = p > point ? (size_t)(p - point - 1) : 0;
+    if (digits + fraction > 15 ||
+        (p < end && (is_ident_char((unsigned char)*p) || *p == '.')))
+        return 0;
+    if (!fast_number(w, -(int)fraction, negative, value))
+        return 0;
+    *after = p;
+    return 1;
+}
+
 int lex_number_at(const char *p, const char *end, double *value, const char **after)
 {
     if (p >= end)
         return 0;
+    if (simple_number(p, end, value, after))
+        return 1;
     const char *q = p + (*p == '+' || *p == '-');
     /* The forms lex_next hands to lex_number, but inf and nan. */
     if (!(q < end && (is_digit((unsigned char)*q) ||
@@ -380,6 +421,13 @@ static sc_status lex_number(lexer *lx, lex_token *tok, sc_error *error)
         return SC_OK;
     }
     double v = 0;
+    if (simple_number(s, end, &v, &p)) {
+        tok->kind = LEX_NUMBER;
+        tok->number = v;
+        tok->length = (size_t)(p - s);
+        lx->p = p;
+        return SC_OK;
+    }
     switch (scan_number(s, end, &v, &p)) {
     case NUMBER_OK:
         break;

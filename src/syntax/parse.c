@@ -43,6 +43,8 @@ typedef struct name_entry {
     uint32_t hash;
 } name_entry;
 
+enum { RECENT_NAMES = 32 };
+
 typedef struct parser {
     lexer lx;
     lex_token tok; /* the current token */
@@ -56,6 +58,11 @@ typedef struct parser {
     size_t arg_count, arg_cap;
     name_entry *names; /* open addressing, a power of two slots, at most half full */
     size_t name_count, name_cap;
+    /* The names met lately, by recent_slot: a file repeats a few names
+     * (multmatrix, sphere, $fn, $fa, $fs, r) a million times, and a hit
+     * here costs one comparison rather than a hash of the name and a
+     * probe. Copies of table entries; an empty one has no chars. */
+    name_entry recent[RECENT_NAMES];
     const parse_sink *sink; /* a streamed parse (parse_stream); NULL: keep the tree */
     arena_mark *marks;      /* streamed: the arena before each open node, by depth */
     size_t mark_cap;
@@ -189,6 +196,8 @@ static const char *language_word(const char *name)
  * out of memory. */
 static const char *token_name(parser *ps, const char **language);
 
+static const char *find_name(parser *ps, const char *text, size_t n, name_entry *seen);
+
 static const char *token_text(parser *ps)
 {
     return token_name(ps, NULL);
@@ -196,10 +205,36 @@ static const char *token_text(parser *ps)
 
 /* token_text, and when language is not NULL, language_word of the name
  * into *language, looked up once per distinct name rather than per node. */
+/* The slot in parser.recent of the name text[0 .. n): its length
+ * and its first and last bytes, which tell the names a file repeats
+ * apart. */
+static size_t recent_slot(const char *text, size_t n)
+{
+    return n ? (n + (unsigned char)text[0] + (unsigned char)text[n - 1]) &
+                   (RECENT_NAMES - 1)
+             : 0;
+}
+
 static const char *token_name(parser *ps, const char **language)
 {
     const char *text = ps->tok.start;
     size_t n = ps->tok.length;
+    name_entry *seen = &ps->recent[recent_slot(text, n)];
+    if (seen->chars && seen->length == n && memcmp(seen->chars, text, n) == 0) {
+        if (language)
+            *language = seen->language;
+        return seen->chars;
+    }
+    const char *name = find_name(ps, text, n, seen);
+    if (name && language)
+        *language = seen->language;
+    return name;
+}
+
+/* token_name past parser.recent: the name from the table, stored there
+ * first if new, and copied into *seen. NULL when out of memory. */
+static const char *find_name(parser *ps, const char *text, size_t n, name_entry *seen)
+{
     uint32_t h = name_hash(text, n);
     if (ps->name_count + 1 > ps->name_cap / 2 && !grow_names(ps))
         return NULL;
@@ -209,8 +244,7 @@ static const char *token_name(parser *ps, const char **language)
         if (!e->chars)
             break;
         if (e->hash == h && e->length == n && memcmp(e->chars, text, n) == 0) {
-            if (language)
-                *language = e->language;
+            *seen = *e;
             return e->chars;
         }
     }
@@ -222,8 +256,7 @@ static const char *token_name(parser *ps, const char **language)
     /* Names are identifiers, far shorter than 2^32 bytes. */
     ps->names[k] = (name_entry){s, language_word(s), (uint32_t)n, h};
     ps->name_count++;
-    if (language)
-        *language = ps->names[k].language;
+    *seen = ps->names[k];
     return s;
 }
 
@@ -288,7 +321,8 @@ static inline parse_value *fast_slot(parser *ps)
 
 static const char *skip_blanks(const char *p, const char *end)
 {
-    while (p < end && (*p == ' ' || *p == '\t' || *p == '\r'))
+    /* Every byte past ' ' ends the blanks: one test for most bytes. */
+    while (p < end && (unsigned char)*p <= ' ' && (*p == ' ' || *p == '\t' || *p == '\r'))
         p++;
     return p;
 }
@@ -512,6 +546,55 @@ static sc_status parse_value_into(parser *ps, parse_value *out)
     }
 }
 
+/* Moves the arguments read (ps->args) into the arena as node's. */
+static sc_status store_arguments(parser *ps, parse_node *node)
+{
+    if (ps->arg_count) {
+        if (ps->arg_count > UINT32_MAX)
+            return err_set(ps->error, SC_ERR_LIMIT, NULL, "too many arguments");
+        parse_arg *args = arena_alloc(&ps->tree->mem, ps->arg_count * sizeof *args);
+        if (!args)
+            return err_nomem(ps->error, NULL);
+        memcpy(args, ps->args, ps->arg_count * sizeof *args);
+        node->args = args;
+        node->arg_count = (uint32_t)ps->arg_count;
+    }
+    return SC_OK;
+}
+
+/* The fast path for a named number argument, `NAME = NUMBER` followed by
+ * ',' or ')', which is most of the arguments OpenSCAD writes ($fn, $fa,
+ * $fs, r, h, ...): at the current token, a name, the text after it is read
+ * directly, without tokens, as long as it is '=', a number (read by
+ * lex_number_at, as fast_vector does) and ',' or ')' on the same line with
+ * spaces and tabs between them. Returns 1 when it was read: arg holds the
+ * name and the value, with the positions the token path gives, and the
+ * lexer stands past the ',' or ')' (*closed says which), the next token
+ * not yet read. Returns 0 when the token path must read the argument:
+ * then nothing has moved. */
+static int fast_named_number(parser *ps, parse_arg *arg, int *closed)
+{
+    lexer *lx = &ps->lx;
+    const char *p = skip_blanks(lx->p, lx->end), *end = lx->end;
+    if (p >= end || *p != '=')
+        return 0;
+    p = skip_blanks(p + 1, end);
+    const char *number = p;
+    double x;
+    if (!lex_number_at(p, end, &x, &p))
+        return 0;
+    p = skip_blanks(p, end);
+    if (p >= end || (*p != ',' && *p != ')'))
+        return 0;
+    *closed = *p == ')';
+    arg->value.kind = PARSE_NUMBER;
+    arg->value.line = lx->line;
+    arg->value.column = (int)(number - lx->line_start) + 1;
+    arg->value.u.number = x;
+    lx->p = p + 1;
+    return 1;
+}
+
 /* arguments := [ argument { ',' argument } [ ',' ] ]
  * argument  := NAME '=' value | value
  * Reads the arguments after '(' (at line paren_line) through ')'. */
@@ -526,6 +609,19 @@ static sc_status parse_arguments(parser *ps, parse_node *node, int paren_line)
         if (ps->tok.kind == LEX_IDENT) {
             if (!(arg.name = token_text(ps)))
                 return err_nomem(ps->error, NULL);
+            int closed;
+            if (fast_named_number(ps, &arg, &closed)) {
+                if (ps->arg_count == ps->arg_cap &&
+                    !grow_array((void **)&ps->args, &ps->arg_cap, ps->arg_count + 1,
+                                sizeof *ps->args))
+                    return err_nomem(ps->error, NULL);
+                ps->args[ps->arg_count++] = arg;
+                if (closed && (st = store_arguments(ps, node)) != SC_OK)
+                    return st;
+                if ((st = advance(ps)) != SC_OK || closed)
+                    return st;
+                continue;
+            }
             if ((st = advance(ps)) != SC_OK)
                 return st;
             if (ps->tok.kind == LEX_COMMA || ps->tok.kind == LEX_RPAREN ||
@@ -554,16 +650,8 @@ static sc_status parse_arguments(parser *ps, parse_node *node, int paren_line)
             return syntax_error(ps, "expected ')' (to close '(' at line %d)", paren_line);
         }
     }
-    if (ps->arg_count) {
-        if (ps->arg_count > UINT32_MAX)
-            return err_set(ps->error, SC_ERR_LIMIT, NULL, "too many arguments");
-        parse_arg *args = arena_alloc(&ps->tree->mem, ps->arg_count * sizeof *args);
-        if (!args)
-            return err_nomem(ps->error, NULL);
-        memcpy(args, ps->args, ps->arg_count * sizeof *args);
-        node->args = args;
-        node->arg_count = (uint32_t)ps->arg_count;
-    }
+    if ((st = store_arguments(ps, node)) != SC_OK)
+        return st;
     return advance(ps); /* past ')' */
 }
 
