@@ -323,7 +323,7 @@ static void mesh_free(mesh *m)
  * bottom and top per contour, the top left out when top_zero). Takes the
  * points and indices of m. 0 when memory runs out. */
 static int take_faces(mesh *m, uint32_t point_count, uint32_t cap_first, int top_zero,
-                      build_faces *faces)
+                      build_mesh_faces *faces)
 {
     uint32_t loops = (uint32_t)m->face_count;
     uint32_t *loop_start = malloc(((size_t)loops + 1) * sizeof *loop_start);
@@ -357,7 +357,7 @@ static int take_faces(mesh *m, uint32_t point_count, uint32_t cap_first, int top
     faces->points = m->points;
     faces->point_count = point_count;
     faces->indices = indices;
-    faces->loop_start = loop_start;
+    faces->face_start = loop_start;
     faces->face_loops = face_loops;
     faces->face_count = f;
     m->points = NULL;
@@ -368,7 +368,7 @@ static int take_faces(mesh *m, uint32_t point_count, uint32_t cap_first, int top
  * as faces for CGAL in *faces (out unused). */
 static sc_status extrude(const build_ctx *c, const sc_location *loc, const params *p,
                          const twod_region *r, uint32_t slices, prim *out,
-                         const char **empty, build_faces *faces)
+                         const char **empty, build_mesh_faces *faces)
 {
     double h1 = p->center ? -p->height / 2.0 : 0,
            h2 = p->center ? p->height / 2.0 : p->height;
@@ -469,7 +469,7 @@ static sc_status extrude(const build_ctx *c, const sc_location *loc, const param
 }
 
 static sc_status linear_extrude(const build_ctx *c, const model_node *n, int emit,
-                                prim *out, const char **empty, build_faces *faces)
+                                prim *out, const char **empty, build_mesh_faces *faces)
 {
     params p = {0};
     sc_status st = read_params(c, n, &p);
@@ -504,19 +504,10 @@ sc_status build_linear_extrude_faithful(const build_ctx *c, const model_node *n,
 }
 
 sc_status build_linear_extrude_faces(const build_ctx *c, const model_node *n,
-                                     build_faces *faces, const char **empty)
+                                     build_mesh_faces *faces, const char **empty)
 {
     memset(faces, 0, sizeof *faces);
     return linear_extrude(c, n, 1, NULL, empty, faces);
-}
-
-void build_faces_free(build_faces *faces)
-{
-    free(faces->points);
-    free(faces->indices);
-    free(faces->loop_start);
-    free(faces->face_loops);
-    memset(faces, 0, sizeof *faces);
 }
 
 sc_status build_flat_slab(const build_ctx *c, const sc_location *loc,

@@ -6,6 +6,7 @@
 #define SPANCAST_BUILD_BUILD_EXTRUDE_FAITHFUL_H
 
 #include "build/build_ctx.h"
+#include "build/build_mesh.h"
 #include "twod/twod.h"
 
 /* Most side quads (slices times outline points) of one extrusion. */
@@ -18,24 +19,14 @@
 sc_status build_linear_extrude_faithful(const build_ctx *c, const model_node *n, int emit,
                                         prim *out, const char **empty);
 
-/* A closed mesh as its faces, for CGAL (nef.h's from_mesh): loop k is
- * indices[loop_start[k] .. loop_start[k + 1]), face f the loops
- * face_loops[f] .. face_loops[f + 1]. All malloc'd (build_faces_free). */
-typedef struct build_faces {
-    vec3 *points;
-    uint32_t point_count;
-    uint32_t *indices, *loop_start, *face_loops;
-    uint32_t face_count;
-} build_faces;
-
-/* The mesh of build_linear_extrude_faithful as faces that do not overlap:
- * each side triangle one face, each cap one face of all the outlines and
- * holes of the region (the leaf's mesh has a face per contour, fanned,
- * which the winding rule of a leaf fills right but CGAL does not take).
- * *empty as for build_linear_extrude_faithful (faces then empty). */
+/* The mesh of build_linear_extrude_faithful as faces that do not overlap,
+ * for CGAL: each side triangle one face, each cap one face of all the
+ * outlines and holes of the region (the leaf's mesh has a face per contour,
+ * fanned, which the winding rule of a leaf fills right but CGAL does not
+ * take). Warnings and *empty as for build_linear_extrude_faithful (faces
+ * then empty); free faces with build_mesh_faces_free. */
 sc_status build_linear_extrude_faces(const build_ctx *c, const model_node *n,
-                                     build_faces *faces, const char **empty);
-void build_faces_free(build_faces *faces);
+                                     build_mesh_faces *faces, const char **empty);
 
 /* A 2D model as OpenSCAD 2021.01 draws a 2D result (its
  * PolySet::render_surface, in the preview and the render alike): the

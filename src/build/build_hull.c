@@ -741,29 +741,27 @@ static sc_status nef_error(const walk *w, const model_node *n, nef_status ns,
                    w->owner, n->name, why);
 }
 
-/* The Nef polyhedron of a closed polygon mesh (faces as nef.h's
- * from_mesh takes them; face_loops NULL for faces of one loop each); *out
- * NULL when it has no volume. */
-static sc_status nef_mesh(const walk *w, const model_node *n, const vec3 *points,
-                          uint32_t point_count, const uint32_t *indices,
-                          const uint32_t *face_start, const uint32_t *face_loops,
-                          uint32_t face_count, nef_solid **out)
+/* The Nef polyhedron of the closed mesh f through m (its faces as nef.h's
+ * from_mesh takes them); *out NULL when it has no volume. */
+static sc_status nef_mesh(const walk *w, const model_node *n, const affine *m,
+                          const build_mesh_faces *f, nef_solid **out)
 {
     *out = NULL;
     sc_status st = nef_ready(w, n);
     if (st != SC_OK)
         return st;
-    double *xyz = malloc(((size_t)point_count * 3 + 1) * sizeof *xyz);
+    double *xyz = malloc(((size_t)f->point_count * 3 + 1) * sizeof *xyz);
     if (!xyz)
         return err_nomem(w->c->error, &n->loc);
-    for (uint32_t i = 0; i < point_count; i++) {
-        xyz[3 * i] = points[i].x;
-        xyz[3 * i + 1] = points[i].y;
-        xyz[3 * i + 2] = points[i].z;
+    for (uint32_t i = 0; i < f->point_count; i++) {
+        vec3 p = affine_point(m, f->points[i]);
+        xyz[3 * i] = p.x;
+        xyz[3 * i + 1] = p.y;
+        xyz[3 * i + 2] = p.z;
     }
     char why[512] = "";
-    nef_status ns = w->nef->from_mesh(xyz, point_count, indices, face_start, face_loops,
-                                      face_count, out, why, sizeof why);
+    nef_status ns = w->nef->from_mesh(xyz, f->point_count, f->indices, f->face_start,
+                                      f->face_loops, f->face_count, out, why, sizeof why);
     free(xyz);
     if (ns != NEF_OK)
         return nef_error(w, n, ns, why);
@@ -796,8 +794,13 @@ static sc_status nef_convex(const walk *w, const model_node *n, const pointset *
     }
     for (uint32_t t = 0; t <= h.tri_count; t++)
         start[t] = 3 * t;
-    sc_status st =
-        nef_mesh(w, n, h.vertices, h.vertex_count, h.tris, start, NULL, h.tri_count, out);
+    affine id = affine_identity();
+    build_mesh_faces f = {.points = h.vertices,
+                          .point_count = h.vertex_count,
+                          .indices = h.tris,
+                          .face_start = start,
+                          .face_count = h.tri_count};
+    sc_status st = nef_mesh(w, n, &id, &f, out);
     free(start);
     hull3_free(&h);
     return st;
@@ -841,32 +844,37 @@ static sc_status nef_combine(const walk *w, const model_node *n, nef_solid **acc
 static sc_status nef_node(const walk *w, const model_node *n, const affine *m, int depth,
                           nef_solid **out);
 
-/* The solid of a linear_extrude through m, whose leaf mesh (mesh_prim) is
- * closed and not empty. That leaf's caps are a fan per contour, which
- * overlap (a hole over its outline, a fan of a concave outline over
- * itself): the winding rule of a leaf fills them right, but a Nef
- * polyhedron built from them is not valid, and a later boolean on it
- * crashed inside CGAL. So CGAL gets each cap as one face with holes
- * (build_linear_extrude_faces), as OpenSCAD tessellates its caps. Its
- * warnings were given by mesh_prim and are not given again. */
-static sc_status nef_extrusion(const walk *w, const model_node *n, const affine *m,
-                               nef_solid **out)
+/* The faces of import, linear_extrude, rotate_extrude and surface that
+ * CGAL takes, with the warnings and the empty case (*empty) of their leaf.
+ * The leaves' meshes fan each face, and each contour of a cap, about a
+ * point: those fans overlap (a hole over its outline, the fan of a concave
+ * outline over itself) or have triangles without area (along a straight
+ * side), which a leaf's winding rule fills right but which make a Nef
+ * polyhedron that is not valid, on which a later boolean crashed inside
+ * CGAL. So CGAL gets the faces themselves, each cap one face with holes,
+ * as OpenSCAD tessellates them. Extrusions are built as in --faithful, in
+ * both modes, as OpenSCAD's polygons. */
+static sc_status mesh_faces(const walk *w, const model_node *n, build_mesh_faces *faces,
+                            const char **empty)
 {
+    memset(faces, 0, sizeof *faces);
     build_ctx fc = *w->c;
     fc.faithful = 1;
-    fc.note = NULL;
-    fc.notes = NULL;
-    build_faces faces;
-    const char *empty = NULL;
-    sc_status st = build_linear_extrude_faces(&fc, n, &faces, &empty);
-    if (st != SC_OK || empty)
-        return st;
-    for (uint32_t i = 0; i < faces.point_count; i++)
-        faces.points[i] = affine_point(m, faces.points[i]);
-    st = nef_mesh(w, n, faces.points, faces.point_count, faces.indices, faces.loop_start,
-                  faces.face_loops, faces.face_count, out);
-    build_faces_free(&faces);
-    return st;
+    switch (n->kind) {
+    case MODEL_IMPORT: {
+        if (n->pending)
+            return build_pending(w->c, n);
+        prim leaf;
+        return build_import_faces(w->c, n->u.import, &leaf, empty, faces);
+    }
+    case MODEL_SURFACE:
+        return n->pending ? build_pending(w->c, n)
+                          : build_surface_faces(w->c, n->u.surface, faces, empty);
+    case MODEL_ROTATE_EXTRUDE:
+        return build_rotate_extrude_faces(w->c, n, faces, empty);
+    default:
+        return build_linear_extrude_faces(&fc, n, faces, empty);
+    }
 }
 
 /* The solid of the children of parent through m, combined by op: their
@@ -936,43 +944,24 @@ static sc_status nef_node(const walk *w, const model_node *n, const affine *m, i
         uint32_t np = n->u.polyhedron.point_count;
         if (w->check || !np || !n->u.polyhedron.face_count)
             return SC_OK;
-        vec3 *p = malloc((size_t)np * sizeof *p);
-        if (!p)
-            return err_nomem(c->error, &n->loc);
-        for (uint32_t i = 0; i < np; i++)
-            p[i] = affine_point(m, n->u.polyhedron.points[i]);
-        st = nef_mesh(w, n, p, np, n->u.polyhedron.indices, n->u.polyhedron.face_start,
-                      NULL, n->u.polyhedron.face_count, out);
-        free(p);
+        /* its points merged as OpenSCAD merges them before CGAL sees them,
+         * as for the leaf (build_mesh_merge) */
+        build_mesh_faces f;
+        st = build_mesh_merge(c, &n->loc, 1, n->u.polyhedron.points, np,
+                              n->u.polyhedron.indices, n->u.polyhedron.face_start,
+                              n->u.polyhedron.face_count, &f);
+        if (st == SC_OK && f.face_count)
+            st = nef_mesh(w, n, m, &f, out);
+        build_mesh_faces_free(&f);
         return st;
     }
     if (is_mesh(kind)) {
-        prim p;
+        build_mesh_faces faces;
         const char *empty = NULL;
-        if ((st = mesh_prim(w, n, &p, &empty)) != SC_OK || empty || p.kind != PRIM_MESH ||
-            w->check)
-            return st;
-        if (kind == MODEL_LINEAR_EXTRUDE)
-            return nef_extrusion(w, n, m, out);
-        const prim_mesh *mesh = p.u.mesh.mesh;
-        uint32_t count = mesh->tri_count;
-        vec3 *v = malloc((size_t)count * 3 * sizeof *v);
-        uint32_t *index = malloc((size_t)count * 3 * sizeof *index);
-        uint32_t *start = malloc(((size_t)count + 1) * sizeof *start);
-        if (v && index && start) {
-            for (uint32_t i = 0; i < 3 * count; i++) {
-                v[i] = affine_point(m, mesh->v[i]);
-                index[i] = i;
-            }
-            for (uint32_t t = 0; t <= count; t++)
-                start[t] = 3 * t;
-            st = nef_mesh(w, n, v, 3 * count, index, start, NULL, count, out);
-        } else {
-            st = err_nomem(c->error, &n->loc);
-        }
-        free(v);
-        free(index);
-        free(start);
+        st = mesh_faces(w, n, &faces, &empty);
+        if (st == SC_OK && !empty && faces.face_count && !w->check)
+            st = nef_mesh(w, n, m, &faces, out);
+        build_mesh_faces_free(&faces);
         return st;
     }
     /* The convex ones: a shape, a hull, each part of a minkowski. */

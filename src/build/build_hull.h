@@ -7,6 +7,7 @@
 #include <stdint.h>
 
 #include "build/build_ctx.h"
+#include "build/build_mesh.h"
 #include "math/vec.h"
 
 /* Nesting below a hull, minkowski or resize node that their walks follow. */
@@ -70,5 +71,9 @@ sc_status build_resize(const build_ctx *c, const model_node *n,
  * a PNG image (build_surface.c). */
 sc_status build_surface(const build_ctx *c, const model_surface *s, prim *out,
                         const char **empty);
+/* The same mesh as its faces, for CGAL (free with build_mesh_faces_free);
+ * errors and *empty as for build_surface. */
+sc_status build_surface_faces(const build_ctx *c, const model_surface *s,
+                              build_mesh_faces *faces, const char **empty);
 
 #endif

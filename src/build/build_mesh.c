@@ -1017,6 +1017,7 @@ void build_mesh_faces_free(build_mesh_faces *f)
     free(f->names);
     free(f->indices);
     free(f->face_start);
+    free(f->face_loops);
     memset(f, 0, sizeof *f);
 }
 
@@ -1604,8 +1605,10 @@ static sc_status read_amf(const char *text, size_t size, const char *path,
     return st;
 }
 
-sc_status build_import_mesh(const build_ctx *c, const model_import *import, int strict,
-                            prim *out, const char **empty)
+/* build_import_mesh; with faces, also the merged faces in *faces (empty
+ * when *empty is set). */
+static sc_status import_mesh(const build_ctx *c, const model_import *import, int strict,
+                             prim *out, const char **empty, build_mesh_faces *faces)
 {
     const char *name = import->file;
     const sc_location loc = import->file_loc;
@@ -1678,9 +1681,26 @@ sc_status build_import_mesh(const build_ctx *c, const model_import *import, int 
                               m.face_start, m.face_count, &f);
         if (st == SC_OK)
             st = build_mesh_solid(c, &loc, "imported mesh", 0, strict, &f, out, empty);
+        if (st == SC_OK && faces && !*empty) {
+            *faces = f;
+            memset(&f, 0, sizeof f);
+        }
         build_mesh_faces_free(&f);
     }
     free(path);
     mesh_file_free(&m);
     return st;
+}
+
+sc_status build_import_mesh(const build_ctx *c, const model_import *import, int strict,
+                            prim *out, const char **empty)
+{
+    return import_mesh(c, import, strict, out, empty, NULL);
+}
+
+sc_status build_import_faces(const build_ctx *c, const model_import *import, prim *out,
+                             const char **empty, build_mesh_faces *faces)
+{
+    memset(faces, 0, sizeof *faces);
+    return import_mesh(c, import, 0, out, empty, faces);
 }

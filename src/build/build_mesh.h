@@ -30,14 +30,21 @@ sc_status build_mesh_prim(const build_ctx *c, const sc_location *loc, const char
                           const uint32_t *indices, const uint32_t *face_start,
                           uint32_t face_count, prim *out, const char **empty);
 
-/* A polyhedron's or an imported mesh's faces on merged points
- * (build_mesh_merge); malloc'd, freed with build_mesh_faces_free. */
+/* A closed mesh as its faces: a polyhedron's or an imported mesh's on merged
+ * points (build_mesh_merge, with names), or a builder's for CGAL (nef.h's
+ * from_mesh: extrusions, surface, imports), whose faces may have holes (with
+ * face_loops). Loop k is indices[face_start[k] .. face_start[k + 1]) into
+ * points. Without face_loops, face f is loop f; with it, face f is the loops
+ * face_loops[f] .. face_loops[f + 1], an outline and its holes in one plane
+ * (build_mesh_sound and build_mesh_solid take faces of one loop only). All
+ * malloc'd, freed with build_mesh_faces_free. */
 typedef struct build_mesh_faces {
-    vec3 *points;    /* the merged points */
-    uint32_t *names; /* names[i]: the number in the file of merged point i */
+    vec3 *points;
+    uint32_t *names; /* NULL, or names[i]: the number in the file of merged point i */
     uint32_t point_count;
-    uint32_t *indices;    /* face f is indices[face_start[f] .. face_start[f + 1]) */
-    uint32_t *face_start; /* face_count + 1 entries */
+    uint32_t *indices;
+    uint32_t *face_start; /* loop starts: one more than the loops */
+    uint32_t *face_loops; /* NULL, or face_count + 1 entries */
     uint32_t face_count;
 } build_mesh_faces;
 
@@ -106,6 +113,11 @@ sc_status build_import_mesh(const build_ctx *c, const model_import *import, int 
                             prim *out, const char **empty);
 sc_status build_import(const build_ctx *c, const model_import *import, prim *out,
                        const char **empty);
+/* build_import, which also hands its merged faces to *faces (for CGAL, whose
+ * faces must not overlap as the leaf's fans of a face that is not convex
+ * do; empty when *empty is set; free with build_mesh_faces_free). */
+sc_status build_import_faces(const build_ctx *c, const model_import *import, prim *out,
+                             const char **empty, build_mesh_faces *faces);
 
 /* linear_extrude (build_extrude.c): exact in default mode without twist or
  * scale over the 2D nodes build_region.h reads, else OpenSCAD's mesh of it

@@ -331,10 +331,12 @@ static uint32_t oriented(const profile *p, uint32_t k, int reverse, uint32_t i)
     return s + (reverse ? len - 1 - i : i);
 }
 
-/* OpenSCAD's mesh (see the top) through build_mesh_prim. */
+/* OpenSCAD's mesh (see the top) through build_mesh_prim; or, when faces is
+ * not NULL, in *faces (out unused), each end cap one face of all the
+ * contours. */
 static sc_status build_faithful(const build_ctx *c, const model_node *n, const profile *p,
                                 double angle, long fragments, prim *out,
-                                const char **empty)
+                                const char **empty, build_mesh_faces *faces)
 {
     int full = angle == 360;
     uint32_t f = (uint32_t)fragments;
@@ -350,8 +352,9 @@ static sc_status build_faithful(const build_ctx *c, const model_node *n, const p
     vec3 *pts = malloc((np ? np : 1) * sizeof *pts);
     uint32_t *idx = malloc((3 * ntri + 2 * (size_t)p->pts.point_count + 1) * sizeof *idx);
     uint32_t *fs = malloc((nfaces + 1) * sizeof *fs);
+    uint32_t *face_loops = faces ? malloc((ntri + 3) * sizeof *face_loops) : NULL;
     sc_status st = SC_OK;
-    if (!pts || !idx || !fs) {
+    if (!pts || !idx || !fs || (faces && !face_loops)) {
         st = err_nomem(c->error, &n->loc);
         goto done;
     }
@@ -387,7 +390,7 @@ static sc_status build_faithful(const build_ctx *c, const model_node *n, const p
                 idx[ni++] = (uint32_t)(r1 + b);
             }
         }
-        if (!full) {
+        if (!full && !faces) {
             /* start cap: the path as oriented on ring 0; end cap: reversed on
              * ring f (opposite to the strips' edges there) */
             fs[nf++] = ni;
@@ -399,13 +402,45 @@ static sc_status build_faithful(const build_ctx *c, const model_node *n, const p
                             oriented(p, k, rev, len - 1 - i);
         }
     }
+    if (!faces) {
+        fs[nf] = ni;
+        st = build_mesh_prim(c, &n->loc, "rotate_extrude", 0, pts, (uint32_t)np, idx, fs,
+                             nf, out, empty);
+        goto done;
+    }
+    /* faces: the side triangles, then each cap as one face of the loops of
+     * all the contours, wound as above */
+    uint32_t sides = nf, face_count = 0;
+    for (uint32_t i = 0; i <= sides; i++)
+        face_loops[face_count++] = i;
+    for (uint32_t end = 0; !full && end < 2; end++) {
+        for (uint32_t k = 0; k < p->pts.contour_count; k++) {
+            uint32_t len = p->pts.start[k + 1] - p->pts.start[k];
+            if (len < 3)
+                continue;
+            int rev = path_reversed(p, k, 1);
+            fs[nf++] = ni;
+            for (uint32_t i = 0; i < len; i++)
+                idx[ni++] = end ? (uint32_t)((size_t)f * p->pts.point_count) +
+                                      oriented(p, k, rev, len - 1 - i)
+                                : oriented(p, k, rev, i);
+        }
+        face_loops[face_count++] = nf;
+    }
     fs[nf] = ni;
-    st = build_mesh_prim(c, &n->loc, "rotate_extrude", 0, pts, (uint32_t)np, idx, fs, nf,
-                         out, empty);
+    *faces = (build_mesh_faces){.points = pts,
+                                .point_count = (uint32_t)np,
+                                .indices = idx,
+                                .face_start = fs,
+                                .face_loops = face_loops,
+                                .face_count = face_count - 1};
+    pts = NULL;
+    idx = fs = face_loops = NULL;
 done:
     free(pts);
     free(idx);
     free(fs);
+    free(face_loops);
     return st;
 }
 
@@ -526,8 +561,9 @@ done:
     return st;
 }
 
-sc_status build_rotate_extrude(const build_ctx *c, const model_node *n, int emit,
-                               prim *out, const char **empty)
+/* build_rotate_extrude, or with faces build_rotate_extrude_faces. */
+static sc_status rotate_extrude(const build_ctx *c, const model_node *n, int emit,
+                                prim *out, const char **empty, build_mesh_faces *faces)
 {
     if (n->pending)
         return build_pending(c, n);
@@ -583,11 +619,26 @@ sc_status build_rotate_extrude(const build_ctx *c, const model_node *n, int emit
             else
                 st = build_faithful(c, n, &p, angle,
                                     (long)fmax((double)f * fabs(angle) / 360, 1), out,
-                                    empty);
+                                    empty, faces);
         } else {
             st = build_exact(c, n, &p, angle, min_x < 0 ? -1 : 1, out);
         }
     }
     profile_free(&p);
     return st;
+}
+
+sc_status build_rotate_extrude(const build_ctx *c, const model_node *n, int emit,
+                               prim *out, const char **empty)
+{
+    return rotate_extrude(c, n, emit, out, empty, NULL);
+}
+
+sc_status build_rotate_extrude_faces(const build_ctx *c, const model_node *n,
+                                     build_mesh_faces *faces, const char **empty)
+{
+    build_ctx fc = *c;
+    fc.faithful = 1;
+    memset(faces, 0, sizeof *faces);
+    return rotate_extrude(&fc, n, 1, NULL, empty, faces);
 }

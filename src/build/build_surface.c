@@ -200,9 +200,13 @@ static sc_status read_png(const build_ctx *c, const sc_location *loc, const char
     return st;
 }
 
-/* The mesh of g (see the top of this file). */
+/* The mesh of g (see the top of this file) as a leaf in *out, or, when
+ * faces is not NULL, as its faces in *faces (out unused): CGAL takes the
+ * floor as the one polygon it is, where the leaf's fan of it has triangles
+ * without area along its sides. */
 static sc_status surface_mesh(const build_ctx *c, const sc_location *loc, const grid *g,
-                              int center, prim *out, const char **empty)
+                              int center, prim *out, const char **empty,
+                              build_mesh_faces *faces)
 {
     uint32_t L = g->lines, C = g->columns;
     double floor_z = g->floor_z;
@@ -314,8 +318,18 @@ static sc_status surface_mesh(const build_ctx *c, const sc_location *loc, const 
 #undef FLOOR
 #undef FACE_BEGIN
 #undef PUT
-    sc_status st =
-        build_mesh_prim(c, loc, "surface", 0, pts, np, idx, start, nf, out, empty);
+    sc_status st = SC_OK;
+    if (faces) {
+        *faces = (build_mesh_faces){.points = pts,
+                                    .point_count = np,
+                                    .indices = idx,
+                                    .face_start = start,
+                                    .face_count = nf};
+        pts = NULL;
+        idx = start = NULL;
+    } else {
+        st = build_mesh_prim(c, loc, "surface", 0, pts, np, idx, start, nf, out, empty);
+    }
     free(pts);
     free(idx);
     free(start);
@@ -323,8 +337,9 @@ static sc_status surface_mesh(const build_ctx *c, const sc_location *loc, const 
     return st;
 }
 
-sc_status build_surface(const build_ctx *c, const model_surface *s, prim *out,
-                        const char **empty)
+/* build_surface, or with faces build_surface_faces. */
+static sc_status surface(const build_ctx *c, const model_surface *s, prim *out,
+                         const char **empty, build_mesh_faces *faces)
 {
     int center = s->center, invert = s->invert;
     sc_location loc = s->file_loc;
@@ -350,9 +365,22 @@ sc_status build_surface(const build_ctx *c, const model_surface *s, prim *out,
         if (g.lines < 2 || g.columns < 2)
             *empty = "surface without area is empty";
         else
-            st = surface_mesh(c, &loc, &g, center, out, empty);
+            st = surface_mesh(c, &loc, &g, center, out, empty, faces);
     }
     free(g.v);
     free(path);
     return st;
+}
+
+sc_status build_surface(const build_ctx *c, const model_surface *s, prim *out,
+                        const char **empty)
+{
+    return surface(c, s, out, empty, NULL);
+}
+
+sc_status build_surface_faces(const build_ctx *c, const model_surface *s,
+                              build_mesh_faces *faces, const char **empty)
+{
+    memset(faces, 0, sizeof *faces);
+    return surface(c, s, NULL, empty, faces);
 }
