@@ -113,6 +113,20 @@ for ext in amf 3mf; do
     [ "$(cat err.txt)" = "$w" ] || fail "open-$ext.csg --strict: '$(cat err.txt)', want '$w'"
 done
 
+# inside a boolean that CGAL evaluates (a hull of a difference), the
+# objects are united there too: the hull reaches the second cube's far
+# corner (OpenSCAD 2021.01's hull has the vertex 6,6,6)
+for ext in amf 3mf; do
+    printf 'hull() {\n\tdifference() {\n\t\timport(file = "overlap.%s");\n\t\tcube(1);\n\t}\n}\n' $ext >hull-$ext.csg
+    for mode in "" --faithful; do
+        check
+        "$bin" inside hull-$ext.csg --point=5.9,5.9,5.9 --point=3,3,3 --point=6.1,6.1,6.1 \
+            $mode >in.txt 2>err.txt || fail "inside hull-$ext.csg $mode: $(cat err.txt)"
+        [ "$(tr '\n' ' ' <in.txt)" = "in in out " ] ||
+            fail "inside hull-$ext.csg $mode: $(tr '\n' ' ' <in.txt), want in in out"
+    done
+done
+
 # 3MF build items and components: the mesh object once, where it is
 inside_is items.3mf "in in out out out out out"
 check

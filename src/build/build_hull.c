@@ -803,6 +803,32 @@ static sc_status nef_convex(const walk *w, const model_node *n, const pointset *
     return st;
 }
 
+/* The solid of a mesh leaf's triangles through m. */
+static sc_status nef_leaf_mesh(const walk *w, const model_node *n, const affine *m,
+                               const prim_mesh *mesh, nef_solid **out)
+{
+    sc_status st;
+    uint32_t count = mesh->tri_count;
+    vec3 *v = malloc((size_t)count * 3 * sizeof *v);
+    uint32_t *index = malloc((size_t)count * 3 * sizeof *index);
+    uint32_t *start = malloc(((size_t)count + 1) * sizeof *start);
+    if (v && index && start) {
+        for (uint32_t i = 0; i < 3 * count; i++) {
+            v[i] = affine_point(m, mesh->v[i]);
+            index[i] = i;
+        }
+        for (uint32_t t = 0; t <= count; t++)
+            start[t] = 3 * t;
+        st = nef_mesh(w, n, v, 3 * count, index, start, NULL, count, out);
+    } else {
+        st = err_nomem(w->c->error, &n->loc);
+    }
+    free(v);
+    free(index);
+    free(start);
+    return st;
+}
+
 /* *acc = *acc op s, releasing s; NULL stands for the empty solid. */
 static sc_status nef_combine(const walk *w, const model_node *n, nef_solid **acc,
                              nef_op op, nef_solid *s)
@@ -946,6 +972,21 @@ static sc_status nef_node(const walk *w, const model_node *n, const affine *m, i
         free(p);
         return st;
     }
+    if (kind == MODEL_IMPORT && !n->pending) {
+        /* an AMF or 3MF file's objects, united as OpenSCAD unites them */
+        build_prims parts = {NULL, 0, 0};
+        const char *empty = NULL;
+        *out = NULL;
+        st = build_import_parts(c, n->u.import, 0, &parts, &empty);
+        for (uint32_t i = 0; st == SC_OK && !w->check && i < parts.count; i++) {
+            nef_solid *s = NULL;
+            st = nef_leaf_mesh(w, n, m, parts.items[i].u.mesh.mesh, &s);
+            if (st == SC_OK)
+                st = nef_combine(w, n, out, NEF_UNION, s);
+        }
+        free(parts.items);
+        return st;
+    }
     if (is_mesh(kind)) {
         prim p;
         const char *empty = NULL;
@@ -954,26 +995,7 @@ static sc_status nef_node(const walk *w, const model_node *n, const affine *m, i
             return st;
         if (kind == MODEL_LINEAR_EXTRUDE)
             return nef_extrusion(w, n, m, out);
-        const prim_mesh *mesh = p.u.mesh.mesh;
-        uint32_t count = mesh->tri_count;
-        vec3 *v = malloc((size_t)count * 3 * sizeof *v);
-        uint32_t *index = malloc((size_t)count * 3 * sizeof *index);
-        uint32_t *start = malloc(((size_t)count + 1) * sizeof *start);
-        if (v && index && start) {
-            for (uint32_t i = 0; i < 3 * count; i++) {
-                v[i] = affine_point(m, mesh->v[i]);
-                index[i] = i;
-            }
-            for (uint32_t t = 0; t <= count; t++)
-                start[t] = 3 * t;
-            st = nef_mesh(w, n, v, 3 * count, index, start, NULL, count, out);
-        } else {
-            st = err_nomem(c->error, &n->loc);
-        }
-        free(v);
-        free(index);
-        free(start);
-        return st;
+        return nef_leaf_mesh(w, n, m, p.u.mesh.mesh, out);
     }
     /* The convex ones: a shape, a hull, each part of a minkowski. */
     partlist parts = {NULL, 0, 0};
