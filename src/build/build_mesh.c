@@ -1,5 +1,5 @@
 /* Building mesh leaves: the polyhedra that are not convex, and
- * import("file.stl" | "file.off").
+ * import("file.stl" | "file.off" | "file.amf" | "file.3mf").
  *
  * Polyhedra and imports are read as OpenSCAD 2021.01 reads them: their
  * points merged on its grid of 2^-20 (build_mesh_merge), non-planar faces
@@ -27,7 +27,11 @@
  * read as ASCII STL (every "vertex x y z"), and .off files as OFF (header,
  * counts, points, then faces as "k i1 .. ik" with any colour after them).
  * STL repeats each corner per triangle; corners with equal coordinates are
- * merged, so the edge checks above apply. Paths are relative to the
+ * merged, so the edge checks above apply. AMF and 3MF files are read by
+ * amf.c and threemf.h; each object of theirs is a mesh of its own, checked
+ * and turned as above on its own, and the caller unites them, as OpenSCAD
+ * 2021.01 unites them with CGAL (an object that is not closed is then left
+ * out in faithful mode, as CGAL cannot take it). Paths are relative to the
  * directory of the file being read, as OpenSCAD resolves them.
  */
 #include "build/build_mesh.h"
