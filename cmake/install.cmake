@@ -184,16 +184,16 @@ string(CONCAT CPACK_COMPONENT_TOOL_DESCRIPTION
 #                       LIBDIR/spancast/spancast-tiff.so (dlopen)
 #   libgmp10 libmpfr6   booleans inside hull() and minkowski(), through the
 #                       plugin LIBDIR/spancast/spancast-cgal.so (dlopen)
-#   libxml2             SVG and AMF imports, through the plugin
-#                       LIBDIR/spancast/spancast-xml.so (dlopen)
+#   libxml2 libzip4     SVG and AMF imports (libzip: zipped AMF), through
+#                       the plugin LIBDIR/spancast/spancast-xml.so (dlopen)
 #   lib3mf1             3MF imports, through the plugin
 #                       LIBDIR/spancast/spancast-3mf.so (dlopen)
 #   openscad            .scad input, converted by running openscad (src/cli/scad.c)
 #   libsdl2-2.0-0       the interactive viewer's window
 #   libopenmpi3         rendering tiles across machines with Open MPI
 #   gnuplot-nox         `spancast bench accuracy --plot` (suggested only)
-set(CPACK_DEBIAN_LIBRARY_PACKAGE_RECOMMENDS "libopenimageio2.4, libtiff6, libgmp10, libmpfr6, libxml2, lib3mf1")
-set(CPACK_DEBIAN_TOOL_PACKAGE_RECOMMENDS "openscad, libopenimageio2.4, libtiff6, libgmp10, libmpfr6, libxml2, lib3mf1, libsdl2-2.0-0, libopenmpi3, ffmpeg")
+set(CPACK_DEBIAN_LIBRARY_PACKAGE_RECOMMENDS "libopenimageio2.4, libtiff6, libgmp10, libmpfr6, libxml2, libzip4, lib3mf1")
+set(CPACK_DEBIAN_TOOL_PACKAGE_RECOMMENDS "openscad, libopenimageio2.4, libtiff6, libgmp10, libmpfr6, libxml2, libzip4, lib3mf1, libsdl2-2.0-0, libopenmpi3, ffmpeg")
 set(CPACK_DEBIAN_TOOL_PACKAGE_SUGGESTS "gnuplot-nox")
 set(SPANCAST_SHLIBDEPS_LIBRARY $<TARGET_FILE:spancast_shared> $<TARGET_FILE:spancast_text>
     $<TARGET_FILE:spancast_exr>)

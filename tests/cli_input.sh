@@ -163,32 +163,12 @@ cp tet.stl TET-UPPER.STL
     done
     printf ' </volume></mesh></object>\n</amf>\n'
 } >tet.amf
-python3 - tet.3mf <<'PY'
-import sys, zipfile
-model = ('<?xml version="1.0" encoding="UTF-8"?>\n'
-         '<model unit="millimeter" xmlns="http://schemas.microsoft.com/3dmanufacturing/core/2015/02">'
-         '<resources><object id="1" type="model"><mesh><vertices>'
-         + ''.join('<vertex x="%d" y="%d" z="%d"/>' % v
-                   for v in [(0, 0, 0), (2, 0, 0), (0, 2, 0), (0, 0, 2)])
-         + '</vertices><triangles>'
-         + ''.join('<triangle v1="%d" v2="%d" v3="%d"/>' % t
-                   for t in [(0, 2, 1), (0, 1, 3), (0, 3, 2), (1, 2, 3)])
-         + '</triangles></mesh></object></resources>'
-         '<build><item objectid="1"/></build></model>\n')
-types = ('<?xml version="1.0" encoding="UTF-8"?>\n'
-         '<Types xmlns="http://schemas.openxmlformats.org/package/2006/content-types">'
-         '<Default Extension="rels" ContentType="application/vnd.openxmlformats-package.relationships+xml"/>'
-         '<Default Extension="model" ContentType="application/vnd.ms-package.3dmanufacturing-3dmodel+xml"/>'
-         '</Types>\n')
-rels = ('<?xml version="1.0" encoding="UTF-8"?>\n'
-        '<Relationships xmlns="http://schemas.openxmlformats.org/package/2006/relationships">'
-        '<Relationship Target="/3D/3dmodel.model" Id="rel0" '
-        'Type="http://schemas.microsoft.com/3dmanufacturing/2013/01/3dmodel"/>'
-        '</Relationships>\n')
-with zipfile.ZipFile(sys.argv[1], 'w', zipfile.ZIP_DEFLATED) as z:
-    z.writestr('[Content_Types].xml', types)
-    z.writestr('_rels/.rels', rels)
-    z.writestr('3D/3dmodel.model', model)
+python3 - "$src/tests" <<'PY'
+import sys
+sys.path.insert(0, sys.argv[1])
+from meshfiles import threemf
+threemf('tet.3mf', [([(0, 0, 0), (2, 0, 0), (0, 2, 0), (0, 0, 2)],
+                     [(0, 2, 1), (0, 1, 3), (0, 3, 2), (1, 2, 3)])])
 PY
 
 for mesh in tet.stl tet-binary.stl tet.off TET-UPPER.STL tet.amf tet.3mf; do

@@ -461,9 +461,9 @@ done
 check
 [ "$(field $libpkg Section)" = libs ] || fail "$libpkg Section: $(field $libpkg Section)"
 check
-echo "$depends" | grep -Eq "openimageio|libtiff|libxml2|lib3mf" && fail "$libpkg Depends on a plugin's library: $depends"
+echo "$depends" | grep -Eq "openimageio|libtiff|libxml2|libzip|lib3mf" && fail "$libpkg Depends on a plugin's library: $depends"
 check
-[ "$(field $libpkg Recommends)" = "libopenimageio2.4, libtiff6, libgmp10, libmpfr6, libxml2, lib3mf1" ] ||
+[ "$(field $libpkg Recommends)" = "libopenimageio2.4, libtiff6, libgmp10, libmpfr6, libxml2, libzip4, lib3mf1" ] ||
     fail "$libpkg Recommends: $(field $libpkg Recommends)"
 check
 [ "$(field libspancast-dev Depends)" = "$libpkg (= $version)" ] ||
@@ -477,7 +477,7 @@ echo "$tool_depends" | grep -Eq "(^|, )$libpkg \(= $version\)(,|$)" ||
 check
 echo "$tool_depends" | grep -Eq "openimageio|libsdl2" && fail "spancast Depends: $tool_depends"
 recommends=$(field spancast Recommends)
-for pkg in openscad libopenimageio2.4 libtiff6 libgmp10 libmpfr6 libxml2 lib3mf1 libsdl2-2.0-0 libopenmpi3 ffmpeg; do
+for pkg in openscad libopenimageio2.4 libtiff6 libgmp10 libmpfr6 libxml2 libzip4 lib3mf1 libsdl2-2.0-0 libopenmpi3 ffmpeg; do
     check
     echo "$recommends" | grep -Eq "(^|, )$pkg( |,|$)" || fail "spancast Recommends lacks $pkg: $recommends"
 done

@@ -341,14 +341,33 @@ same proj_hull2d.csg proj_hull2d_ref.csg
 printf '<svg width="10mm" height="10mm">\n  <path d="M 1 1 L 5 1 L 5 5 z">\n</svg>\n' >bad.svg
 printf '<?xml version="1.0"?>\n<amf>\n <object id="0"><mesh>\n  <vertices><vertex><coordinates><x>1,5</x><y>0</y><z>0</z></coordinates></vertex></vertices>\n </mesh></object>\n</amf>\n' >bad.amf
 printf 'union() {\n\tcube(size = [1, 1, 1]);\n\tlinear_extrude(height = 1) import(file = "bad.svg");\n\timport(file = "bad.amf");\n}\n' >bad_files.csg
+# After the import's warning, the empty extrusion or 2D model is not warned
+# of again: OpenSCAD 2021.01 prints only the import's error (and "Current
+# top level object is empty.", spancast's "the model is empty").
 warns bad_files.csg "bad_files.csg:3:43: warning: import: bad.svg:4: Premature end of data in tag svg line 1; the import is empty, as OpenSCAD leaves it out (--strict makes it an error)
-bad_files.csg:3:2: warning: linear_extrude without height or area is empty
 bad_files.csg:4:16: warning: import: bad.amf:4: '1,5' is not a number; the import is empty, as OpenSCAD leaves it out (--strict makes it an error)"
 same bad_files.csg cube_ref.csg
 printf 'import(file = "bad.svg");\n' >bad_flat.csg
 warns bad_flat.csg "bad_flat.csg:1:15: warning: import: bad.svg:4: Premature end of data in tag svg line 1; the import is empty, as OpenSCAD leaves it out (--strict makes it an error)
-bad_flat.csg:1:1: warning: the 2D model has no area
 bad_flat.csg: warning: the model is empty (nothing to render)"
+printf 'union() {\n\tcube(size = [1, 1, 1]);\n\trotate_extrude() import(file = "bad.svg");\n\tlinear_extrude(height = 1) import(file = "missing.svg");\n}\n' >bad_revolve.csg
+warns bad_revolve.csg "bad_revolve.csg:3:33: warning: import: bad.svg:4: Premature end of data in tag svg line 1; the import is empty, as OpenSCAD leaves it out (--strict makes it an error)
+bad_revolve.csg:4:29: warning: Can't open SVG file 'missing.svg': No such file or directory (the import is empty)"
+same bad_revolve.csg cube_ref.csg
+# an import of an extension no reader takes: OpenSCAD's "Unsupported file
+# format", and in a 2D operation its "Ignoring 3D child object" too
+printf 'union() {\n\tcube(size = [1, 1, 1]);\n\timport(file = "x.obj");\n\tlinear_extrude(height = 1) import(file = "x.obj");\n}\n' >obj.csg
+warns obj.csg "obj.csg:3:16: warning: Unsupported file format while trying to import file 'x.obj' (import() reads .stl, .off, .amf, .3mf, .dxf and .svg files); the import is empty, as OpenSCAD leaves it out (--strict makes it an error)
+obj.csg:4:43: warning: Unsupported file format while trying to import file 'x.obj' (import() reads .stl, .off, .amf, .3mf, .dxf and .svg files); the import is empty, as OpenSCAD leaves it out (--strict makes it an error)
+obj.csg:4:29: warning: Ignoring 3D child object for 2D operation"
+same obj.csg cube_ref.csg
+check
+"$bin" render obj.csg -o strict.png -q --strict 2>err.txt && fail "obj.csg --strict: exit 0"
+[ "$(cat err.txt)" = "obj.csg:3:16: error: Unsupported file format while trying to import file 'x.obj' (import() reads .stl, .off, .amf, .3mf, .dxf and .svg files)" ] ||
+    fail "obj.csg --strict: $(cat err.txt)"
+# an extrusion empty for its own reason is still warned of
+printf 'union() {\n\tcube(size = [1, 1, 1]);\n\tlinear_extrude(height = 1) square(size = [0, 0]);\n}\n' >zero_extrude.csg
+warns zero_extrude.csg "zero_extrude.csg:3:2: warning: linear_extrude without height or area is empty"
 printf 'import(file = "bad.amf");\n' >bad_amf.csg
 check
 "$bin" render bad_amf.csg -o strict.png -q --strict 2>err.txt && fail "bad_amf.csg --strict: exit 0"

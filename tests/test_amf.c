@@ -46,6 +46,31 @@ static void test_objects(void **state)
     assert_int_equal(m.indices[5], 3);
     assert_true(m.points[5].z == 5.5); /* units are not read, as OpenSCAD */
     assert_int_equal(m.face_start[2], 6);
+    /* each object's points and triangles, which OpenSCAD unites as solids */
+    assert_int_equal(m.object_points[0], 0);
+    assert_int_equal(m.object_points[1], 3);
+    assert_int_equal(m.object_points[2], 6);
+    assert_int_equal(m.object_faces[0], 0);
+    assert_int_equal(m.object_faces[1], 1);
+    assert_int_equal(m.object_faces[2], 2);
+    amf_mesh_free(&m);
+    /* an object's volumes and meshes are one solid, its indices counting
+     * across its meshes; an object without triangles is still an object */
+    static const char volumes[] =
+        "<amf><object><mesh><vertices>" VERTEX(0, 0, 0) VERTEX(1, 0, 0) VERTEX(0, 1, 0)
+        /* two volumes of the first mesh */
+        "</vertices><volume>" TRIANGLE(0, 1, 2) "</volume><volume>" TRIANGLE(2, 1, 0)
+        /* a second mesh, its vertex numbered after the first mesh's */
+        "</volume></mesh><mesh><vertices>" VERTEX(0, 0, 1) "</vertices><volume>" TRIANGLE(
+            3, 1, 0) "</volume></mesh></object><object/></amf>";
+    assert_int_equal(read_amf(volumes, &m, &e), SC_OK);
+    assert_int_equal(m.object_count, 2);
+    assert_int_equal(m.face_count, 3);
+    assert_int_equal(m.indices[6], 3);
+    assert_int_equal(m.object_faces[1], 3);
+    assert_int_equal(m.object_faces[2], 3);
+    assert_int_equal(m.object_points[1], 4);
+    assert_int_equal(m.object_points[2], 4);
     amf_mesh_free(&m);
     /* a coordinate left out keeps the previous vertex's */
     assert_int_equal(

@@ -499,7 +499,7 @@ static void test_builder_open_mesh(void **state)
         assert_non_null(csg);
         sc_error e;
         memset(&e, 0, sizeof e);
-        build_notes notes = {NULL, 0, 0};
+        build_notes notes = {NULL, 0, 0, 0};
         build_ctx c = {.file = "m.csg",
                        .csg = csg,
                        .error = &e,
@@ -682,10 +682,27 @@ static void test_import(void **state)
         test_check_warnings(model, "cube(1);\nimport(\"none.off\");", 0, missing, 1);
     assert_true(inside(rest, 0.5, 0.5, 0.5));
     sc_scene_release(rest);
-    /* a .dxf or .svg is a 2D import (tests/cli_lenient.sh) */
-    check_error("m.csg", "import(\"a.obj\");", SC_ERR_UNSUPPORTED,
-                "m.csg:1:8: error: import of 'a.obj' is not supported yet (only .stl, "
-                ".off, .amf, .3mf, .dxf and .svg files)");
+    /* a .dxf or .svg is a 2D import (tests/cli_lenient.sh); any other
+     * extension, OpenSCAD 2021.01's "Unsupported file format while trying
+     * to import file" and an empty import, whether the file is there or
+     * not (--strict: an error) */
+    const char *const unsupported[] = {
+        "m.csg:2:8: Unsupported file format while trying to import file 'a.obj' "
+        "(import() reads .stl, .off, .amf, .3mf, .dxf and .svg files); the import is "
+        "empty, as OpenSCAD leaves it out (--strict makes it an error)"};
+    for (int faithful = 0; faithful < 2; faithful++) {
+        sc_scene *rest = test_check_warnings("m.csg", "cube(1);\nimport(\"a.obj\");",
+                                             faithful, unsupported, 1);
+        assert_true(inside(rest, 0.5, 0.5, 0.5));
+        assert_int_equal(scene_tree(rest)->leaf_count, 1);
+        sc_scene_release(rest);
+    }
+    check_error_strict(
+        "m.csg", "import(\"a.obj\");", SC_ERR_UNSUPPORTED,
+        "m.csg:1:8: error: Unsupported file format while trying to import "
+        "file 'a.obj' (import() reads .stl, .off, .amf, .3mf, .dxf and .svg "
+        "files)",
+        0);
     check_error("m.csg", "import();", SC_ERR_SEMANTIC,
                 "m.csg:1:1: error: missing argument 'file' of 'import'");
     check_error(

@@ -400,7 +400,7 @@ static sc_status import_region(const char *csg, twod_region *r, char *message,
     parse_tree *tree = NULL;
     sc_error e;
     assert_int_equal(parse_text(file, csg, strlen(csg), &tree, &e), SC_OK);
-    build_notes notes = {NULL, 0, 0};
+    build_notes notes = {NULL, 0, 0, 0};
     build_ctx c = {.file = file,
                    .csg = NULL,
                    .error = &e,

@@ -340,7 +340,7 @@ static void test_errors(void **state)
         parse_tree *tree = NULL;
         sc_error e;
         assert_int_equal(parse_text("m.csg", text, strlen(text), &tree, &e), SC_OK);
-        build_notes notes = {NULL, 0, 0};
+        build_notes notes = {NULL, 0, 0, 0};
         build_ctx c = {.file = "m.csg",
                        .csg = NULL,
                        .error = &e,

@@ -489,6 +489,9 @@ static sc_status build_curved(builder *b, const model_node *n, const frame *stat
 static sc_status import_opens(builder *b, const model_node *n, int *opened)
 {
     build_ctx c = context(b, 1, NULL);
+    *opened = 1;
+    if (n->u.import->format == MODEL_MESH_UNSUPPORTED)
+        return SC_OK; /* OpenSCAD opens nothing: build_import_unsupported */
     char *path = build_file_path(&c, n->u.import->file);
     if (!path)
         return err_nomem(b->error, &n->loc);
@@ -498,14 +501,36 @@ static sc_status import_opens(builder *b, const model_node *n, int *opened)
     if (f)
         fclose(f);
     else
-        st = warn(b, &n->loc, "Can't open import file '%s': %s (the import is empty)",
-                  path, strerror(errno));
+        st = build_note_left_out(&c, &n->loc,
+                                 "Can't open import file '%s': %s (the import is empty)",
+                                 path, strerror(errno));
     free(path);
     return st;
 }
 
-/* import(file = "...") (build_mesh.c), linear_extrude (build_extrude.c)
- * or rotate_extrude (build_revolve.c). */
+/* The leaves of node n united: none is the empty solid, one is itself. */
+static sc_status add_leaves(builder *b, const model_node *n, const build_prims *leaves,
+                            const frame *state, uint32_t *id)
+{
+    uint32_t *ids = leaves->count > 1 ? calloc(leaves->count, sizeof *ids) : id;
+    if (!ids)
+        return err_nomem(b->error, NULL);
+    sc_status st = SC_OK;
+    for (uint32_t i = 0; st == SC_OK && i < leaves->count; i++)
+        st = add_leaf(b, n, &leaves->items[i], state, &ids[i]);
+    if (st == SC_OK && leaves->count > 1) {
+        *id = csg_builder_op(b->csg, CSG_UNION, ids, leaves->count);
+        if (csg_builder_failed(b->csg))
+            st = err_nomem(b->error, NULL);
+    }
+    if (ids != id)
+        free(ids);
+    return st;
+}
+
+/* import(file = "...") (build_mesh.c: one leaf, or one per object of an
+ * AMF or 3MF file, united as OpenSCAD unites them), linear_extrude
+ * (build_extrude.c) or rotate_extrude (build_revolve.c). */
 static sc_status build_import_leaf(builder *b, const model_node *n, const frame *state,
                                    uint32_t *id)
 {
@@ -513,26 +538,34 @@ static sc_status build_import_leaf(builder *b, const model_node *n, const frame 
     build_ctx c = context(b, state->emit, &note);
     const char *empty = NULL;
     prim p;
+    build_prims leaves = {NULL, 0, 0};
+    size_t left_out = b->warnings.left_out;
     sc_status st = SC_OK;
     if (n->kind == MODEL_IMPORT && state->emit) {
         int opened = 1;
         if ((st = import_opens(b, n, &opened)) != SC_OK || !opened)
             return st;
-        st = build_import_mesh(&c, n->u.import, b->strict, &p, &empty);
+        st = build_import_parts(&c, n->u.import, b->strict, &leaves, &empty);
     } else if (n->kind == MODEL_LINEAR_EXTRUDE)
         st = build_linear_extrude(&c, n, state->emit, &p, &empty);
     else if (n->kind == MODEL_ROTATE_EXTRUDE)
         st = build_rotate_extrude(&c, n, state->emit, &p, &empty);
-    if (st != SC_OK || !state->emit)
-        return st;
-    if (note.message[0]) {
+    if (st == SC_OK && state->emit && note.message[0]) {
         sc_location at = {b->file, note.line, note.column};
-        if ((st = warn(b, &at, "%s", note.message)) != SC_OK)
-            return st;
+        st = warn(b, &at, "%s", note.message);
     }
-    if (empty) /* "": left out, the warning was the note */
-        return empty[0] ? warn(b, &n->loc, "%s", empty) : SC_OK;
-    return add_leaf(b, n, &p, state, id);
+    if (st != SC_OK || !state->emit)
+        ;
+    else if (empty) /* "": left out, the warning was the note; nor is an
+                     * extrusion of an import left out (build_notes) */
+        st = empty[0] && b->warnings.left_out == left_out ? warn(b, &n->loc, "%s", empty)
+                                                          : SC_OK;
+    else if (n->kind == MODEL_IMPORT)
+        st = add_leaves(b, n, &leaves, state, id);
+    else
+        st = add_leaf(b, n, &p, state, id);
+    free(leaves.items);
+    return st;
 }
 
 /* A 2D object among 3D objects (a 2D shape, or an operation whose first
@@ -587,6 +620,7 @@ static sc_status build_flat(builder *b, const model_node *n, const frame *state,
     build_ctx c = context(b, 1, NULL);
     twod_region r;
     twod_init(&r);
+    size_t left_out = b->warnings.left_out;
     sc_status st = n ? build_twod_main(&c, n, &r) : build_twod_top(&c, at, &r);
     prim p;
     const char *empty = NULL;
@@ -596,8 +630,8 @@ static sc_status build_flat(builder *b, const model_node *n, const frame *state,
     if (st != SC_OK)
         return st;
     b->shading->flat_2d = 1;
-    if (empty)
-        return warn(b, &at->loc, "%s", empty);
+    if (empty) /* not warned of after an import left out (build_notes) */
+        return b->warnings.left_out > left_out ? SC_OK : warn(b, &at->loc, "%s", empty);
     return add_leaf(b, at, &p, state, id);
 }
 

@@ -6,7 +6,8 @@
  *   intersection                              intersection of the children
  *   cube, sphere, cylinder, polyhedron        leaves (polyhedron: convex ones as
  *                                             planes, others as meshes)
- *   import                                    an STL or OFF mesh (build_mesh.h)
+ *   import                                    a mesh; the union of an AMF or 3MF
+ *                                             file's objects (build_mesh.h)
  *   linear_extrude                            a prism of its 2D children (build_mesh.h)
  *   hull, minkowski, surface, resize          build_hull.h
  *   material                                  union; sets its children's material

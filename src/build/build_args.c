@@ -40,6 +40,19 @@ sc_status build_note(const build_ctx *c, const sc_location *loc, const char *for
     return st;
 }
 
+sc_status build_note_left_out(const build_ctx *c, const sc_location *loc,
+                              const char *format, ...)
+{
+    if (!c->notes)
+        return SC_OK;
+    c->notes->left_out++;
+    va_list args;
+    va_start(args, format);
+    sc_status st = build_notes_add(c->notes, c->error, loc, format, args);
+    va_end(args);
+    return st;
+}
+
 void build_matrix_xy(const affine *a, const double outer[2][3], double inner[2][3])
 {
     double o[2][3];

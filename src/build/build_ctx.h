@@ -19,6 +19,10 @@
 typedef struct build_notes {
     sc_error *items;
     size_t count, cap;
+    /* imports left out with a warning (a file that cannot be opened or
+     * read), so far: an empty result that follows one is not warned of
+     * again, as OpenSCAD prints only the import's warning */
+    size_t left_out;
 } build_notes;
 
 typedef struct build_ctx {
@@ -45,6 +49,11 @@ sc_status build_notes_add(build_notes *notes, sc_error *error, const sc_location
  * only when memory runs out (an error in c->error). */
 sc_status build_note(const build_ctx *c, const sc_location *loc, const char *format, ...)
     SC_PRINTF(3, 4);
+
+/* build_note for an import left out (a file that cannot be opened or
+ * read), counted in c->notes->left_out. */
+sc_status build_note_left_out(const build_ctx *c, const sc_location *loc,
+                              const char *format, ...) SC_PRINTF(3, 4);
 
 /* A nested node's argument error, kept by the lowering (model.h, pending):
  * copied into c->error, its status returned. */

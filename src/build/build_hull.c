@@ -806,6 +806,34 @@ static sc_status nef_convex(const walk *w, const model_node *n, const pointset *
     return st;
 }
 
+/* The solid of a mesh leaf's triangles through m: for a leaf whose faces
+ * are its triangles (an AMF or 3MF object). */
+static sc_status nef_leaf_mesh(const walk *w, const model_node *n, const affine *m,
+                               const prim_mesh *mesh, nef_solid **out)
+{
+    uint32_t count = mesh->tri_count;
+    uint32_t *index = malloc((size_t)count * 3 * sizeof *index);
+    uint32_t *start = malloc(((size_t)count + 1) * sizeof *start);
+    sc_status st;
+    if (index && start) {
+        for (uint32_t i = 0; i < 3 * count; i++)
+            index[i] = i;
+        for (uint32_t t = 0; t <= count; t++)
+            start[t] = 3 * t;
+        build_mesh_faces f = {.points = (vec3 *)mesh->v,
+                              .point_count = 3 * count,
+                              .indices = index,
+                              .face_start = start,
+                              .face_count = count};
+        st = nef_mesh(w, n, m, &f, out);
+    } else {
+        st = err_nomem(w->c->error, &n->loc);
+    }
+    free(index);
+    free(start);
+    return st;
+}
+
 /* *acc = *acc op s, releasing s; NULL stands for the empty solid. */
 static sc_status nef_combine(const walk *w, const model_node *n, nef_solid **acc,
                              nef_op op, nef_solid *s)
@@ -864,8 +892,7 @@ static sc_status mesh_faces(const walk *w, const model_node *n, build_mesh_faces
     case MODEL_IMPORT: {
         if (n->pending)
             return build_pending(w->c, n);
-        prim leaf;
-        return build_import_faces(w->c, n->u.import, &leaf, empty, faces);
+        return build_import_faces(w->c, n->u.import, empty, faces);
     }
     case MODEL_SURFACE:
         return n->pending ? build_pending(w->c, n)
@@ -953,6 +980,25 @@ static sc_status nef_node(const walk *w, const model_node *n, const affine *m, i
         if (st == SC_OK && f.face_count)
             st = nef_mesh(w, n, m, &f, out);
         build_mesh_faces_free(&f);
+        return st;
+    }
+    if (kind == MODEL_IMPORT && !n->pending &&
+        (n->u.import->format == MODEL_MESH_AMF || n->u.import->format == MODEL_MESH_3MF)) {
+        /* an AMF or 3MF file's objects, united as OpenSCAD unites them
+         * (their faces are triangles, so the leaves' fans are the faces);
+         * an STL or OFF file's faces, which need not be convex, go through
+         * mesh_faces below */
+        build_prims parts = {NULL, 0, 0};
+        const char *empty = NULL;
+        *out = NULL;
+        st = build_import_parts(c, n->u.import, 0, &parts, &empty);
+        for (uint32_t i = 0; st == SC_OK && !w->check && i < parts.count; i++) {
+            nef_solid *s = NULL;
+            st = nef_leaf_mesh(w, n, m, parts.items[i].u.mesh.mesh, &s);
+            if (st == SC_OK)
+                st = nef_combine(w, n, out, NEF_UNION, s);
+        }
+        free(parts.items);
         return st;
     }
     if (is_mesh(kind)) {

@@ -1,5 +1,5 @@
 /* Building mesh leaves: the polyhedra that are not convex, and
- * import("file.stl" | "file.off").
+ * import("file.stl" | "file.off" | "file.amf" | "file.3mf").
  *
  * Polyhedra and imports are read as OpenSCAD 2021.01 reads them: their
  * points merged on its grid of 2^-20 (build_mesh_merge), non-planar faces
@@ -27,7 +27,11 @@
  * read as ASCII STL (every "vertex x y z"), and .off files as OFF (header,
  * counts, points, then faces as "k i1 .. ik" with any colour after them).
  * STL repeats each corner per triangle; corners with equal coordinates are
- * merged, so the edge checks above apply. Paths are relative to the
+ * merged, so the edge checks above apply. AMF and 3MF files are read by
+ * amf.c and threemf.h; each object of theirs is a mesh of its own, checked
+ * and turned as above on its own, and the caller unites them, as OpenSCAD
+ * 2021.01 unites them with CGAL (an object that is not closed is then left
+ * out in faithful mode, as CGAL cannot take it). Paths are relative to the
  * directory of the file being read, as OpenSCAD resolves them.
  */
 #include "build/build_mesh.h"
@@ -40,11 +44,12 @@
 #include <string.h>
 
 #include "base/error.h"
-#include "formats/amf.h"
-#include "formats/threemf.h"
 #include "base/grow.h"
+#include "build/build_hull.h"
 #include "csg/prim_mesh.h"
+#include "formats/amf.h"
 #include "formats/file.h"
+#include "formats/threemf.h"
 
 static int compare_u64(const void *a, const void *b)
 {
@@ -1575,44 +1580,148 @@ char *build_file_path(const build_ctx *c, const char *name)
     return path;
 }
 
-sc_status build_import(const build_ctx *c, const model_import *import, prim *out,
-                       const char **empty)
+/* An AMF file (amf.c: zipped or not, with OpenSCAD's warning when the
+ * archive's only entry is read), or a 3MF file (threemf.h) read from path. */
+static sc_status read_amf(const build_ctx *c, const char *text, size_t size,
+                          const char *path, const model_import *import, amf_mesh *a)
 {
-    return build_import_mesh(c, import, 0, out, empty);
-}
-
-/* An AMF file (amf.c), or a 3MF file (threemf.h) read from path, as a
- * mesh_file: every object's triangles together, which is OpenSCAD's union
- * of the objects when they do not overlap. */
-static sc_status read_amf(const char *text, size_t size, const char *path,
-                          const model_import *import, mesh_file *m, sc_error *error)
-{
-    amf_mesh a;
+    const sc_location *loc = &import->file_loc;
+    if (import->format == MODEL_MESH_3MF)
+        return threemf_read_file(path, import->file, loc, a, c->error);
+    char *unzipped = NULL, warning[SC_ERROR_MESSAGE_MAX - 160];
+    size_t unzipped_size = 0;
     sc_status st =
-        import->format == MODEL_MESH_3MF
-            ? threemf_read_file(path, import->file, &import->file_loc, &a, error)
-            : amf_read(text, size, import->file, &import->file_loc, &a, error);
-    if (st == SC_OK) {
-        m->points = a.points;
-        m->point_count = m->point_cap = a.point_count;
-        m->indices = a.indices;
-        m->index_count = m->index_cap = 3 * a.face_count;
-        m->face_start = a.face_start;
-        m->face_count = m->face_cap = a.face_count;
-        memset(&a, 0, sizeof a);
-    }
-    amf_mesh_free(&a);
+        amf_unzip(text, size, path, import->file, loc, BUILD_MAX_MESH_FILE, &unzipped,
+                  &unzipped_size, warning, sizeof warning, c->error);
+    if (st == SC_OK && warning[0])
+        st = build_note(c, loc, "%s", warning);
+    if (st == SC_OK)
+        st = unzipped ? amf_read(unzipped, unzipped_size, import->file, loc, a, c->error)
+                      : amf_read(text, size, import->file, loc, a, c->error);
+    free(unzipped);
     return st;
 }
 
-/* build_import_mesh; with faces, also the merged faces in *faces (empty
- * when *empty is set). */
-static sc_status import_mesh(const build_ctx *c, const model_import *import, int strict,
-                             prim *out, const char **empty, build_mesh_faces *faces)
+static sc_status push_part(const build_ctx *c, const sc_location *loc, build_prims *out,
+                           const prim *p)
 {
+    if (!grow_array32((void **)&out->items, &out->cap, out->count + 1,
+                      sizeof *out->items))
+        return err_nomem(c->error, loc);
+    out->items[out->count++] = *p;
+    return SC_OK;
+}
+
+/* One solid of a mesh file on its own points (build_mesh_merge, then
+ * build_mesh_solid) appended to out; what names it in messages. With
+ * several objects (note set), the warning each leaves in c->note goes to
+ * c->notes at once, so that every object's is kept, in file order. */
+static sc_status import_solid(const build_ctx *c, const sc_location *loc,
+                              const char *what, int strict, int several,
+                              const vec3 *points, uint32_t point_count,
+                              const uint32_t *indices, const uint32_t *face_start,
+                              uint32_t face_count, build_prims *out,
+                              const char **left_out, build_mesh_faces *faces)
+{
+    build_ctx oc = *c;
+    sc_error note = {SC_OK, "", 0, 0, ""};
+    if (several && c->note)
+        oc.note = &note;
+    build_mesh_faces f;
+    const char *empty = NULL;
+    prim p;
+    sc_status st = build_mesh_merge(&oc, loc, 0, points, point_count, indices, face_start,
+                                    face_count, &f);
+    if (st == SC_OK)
+        st = build_mesh_solid(&oc, loc, what, 0, strict, &f, &p, &empty);
+    if (st == SC_OK && faces && !empty) {
+        *faces = f;
+        memset(&f, 0, sizeof f);
+    }
+    build_mesh_faces_free(&f);
+    if (st == SC_OK && note.message[0])
+        st = build_note(c, loc, "%s", note.message);
+    if (st == SC_OK && empty && empty[0] && several)
+        st = build_note(c, loc, "%s is empty: it has no volume", what);
+    if (st == SC_OK && empty && !several)
+        *left_out = empty;
+    if (st == SC_OK && !empty)
+        st = push_part(c, loc, out, &p);
+    return st;
+}
+
+/* The objects of an AMF or 3MF file a, each its own solid (OpenSCAD
+ * unites them with CGAL), an object without triangles left out as
+ * OpenSCAD's empty PolySet. One object is built as an STL is. */
+static sc_status import_objects(const build_ctx *c, const model_import *import,
+                                int strict, const amf_mesh *a, build_prims *out,
+                                const char **empty, build_mesh_faces *faces)
+{
+    const sc_location *loc = &import->file_loc;
+    uint32_t with_faces = 0;
+    for (uint32_t o = 0; o < a->object_count; o++)
+        with_faces += a->object_faces[o + 1] > a->object_faces[o];
+    if (with_faces <= 1)
+        return import_solid(c, loc, "imported mesh", strict, 0, a->points, a->point_count,
+                            a->indices, a->face_start, a->face_count, out, empty, faces);
+    sc_status st = SC_OK;
+    for (uint32_t o = 0; o < a->object_count && st == SC_OK; o++) {
+        uint32_t first = a->object_points[o], faces = a->object_faces[o];
+        uint32_t count = a->object_faces[o + 1] - faces;
+        if (!count)
+            continue;
+        /* the object's triangles on its own points */
+        uint32_t *indices = malloc(3 * (size_t)count * sizeof *indices);
+        uint32_t *start = malloc(((size_t)count + 1) * sizeof *start);
+        if (!indices || !start) {
+            st = err_nomem(c->error, loc);
+        } else {
+            for (uint32_t i = 0; i < 3 * count; i++)
+                indices[i] = a->indices[a->face_start[faces] + i] - first;
+            for (uint32_t f = 0; f <= count; f++)
+                start[f] = 3 * f;
+            char what[64];
+            snprintf(what, sizeof what, "object %u of the imported file", o + 1);
+            st = import_solid(c, loc, what, strict, 1, a->points + first,
+                              a->object_points[o + 1] - first, indices, start, count, out,
+                              empty, NULL);
+        }
+        free(indices);
+        free(start);
+    }
+    return st;
+}
+
+sc_status build_import_unsupported(const build_ctx *c, const sc_location *loc,
+                                   const char *name, int strict)
+{
+    static const char what[] = "Unsupported file format while trying to import file "
+                               "'%s' (import() reads .stl, .off, .amf, .3mf, .dxf and "
+                               ".svg files)";
+    char why[SC_ERROR_MESSAGE_MAX - 160];
+    snprintf(why, sizeof why, what, name);
+    if (strict || c->strict)
+        return err_set(c->error, SC_ERR_UNSUPPORTED, loc, "%s", why);
+    return build_note_left_out(c, loc,
+                               "%s; the import is empty, as OpenSCAD leaves it out "
+                               "(--strict makes it an error)",
+                               why);
+}
+
+/* build_import_parts; with faces, also the merged faces of a file of one
+ * object in *faces (empty when *empty is set, and for several objects). */
+static sc_status import_parts(const build_ctx *c, const model_import *import, int strict,
+                              build_prims *out, const char **empty, build_mesh_faces *faces)
+{
+    memset(out, 0, sizeof *out);
+    if (import->format == MODEL_MESH_UNSUPPORTED) {
+        *empty = "";
+        return build_import_unsupported(c, &import->file_loc, import->file, strict);
+    }
     const char *name = import->file;
     const sc_location loc = import->file_loc;
     int stl = import->format == MODEL_MESH_STL;
+    int objects = import->format == MODEL_MESH_AMF || import->format == MODEL_MESH_3MF;
     char *path = build_file_path(c, name);
     if (!path)
         return err_nomem(c->error, (&loc));
@@ -1637,70 +1746,132 @@ static sc_status import_mesh(const build_ctx *c, const model_import *import, int
     }
     mesh_file m;
     memset(&m, 0, sizeof m);
+    amf_mesh a;
+    memset(&a, 0, sizeof a);
     int oom = 0;
     sc_status st = SC_OK;
-    if (import->format == MODEL_MESH_AMF || import->format == MODEL_MESH_3MF) {
-        int left_out = 0;
-        st = read_amf(text, size, path, import, &m, c->error);
+    if (objects) {
+        st = read_amf(c, text, size, path, import, &a);
         free(text);
         /* OpenSCAD 2021.01 logs a file it cannot parse ("Failed to parse
          * file", "Could not read file") and renders the rest: a warning
          * with the file's own line, and the import left out, unless
          * --strict */
         if ((st == SC_ERR_SYNTAX || st == SC_ERR_SEMANTIC) && !strict && !c->strict) {
-            sc_error why = *c->error;
+            sc_error reason = *c->error;
             err_clear(c->error);
-            st = build_note(c, &loc,
-                            "%s; the import is empty, as OpenSCAD leaves it out "
-                            "(--strict makes it an error)",
-                            why.message);
-            left_out = st == SC_OK;
-            if (left_out)
+            st = build_note_left_out(c, &loc,
+                                     "%s; the import is empty, as OpenSCAD leaves it out "
+                                     "(--strict makes it an error)",
+                                     reason.message);
+            if (st == SC_OK)
                 *empty = "";
-        }
-        if (st != SC_OK || left_out) {
             free(path);
-            mesh_file_free(&m);
+            amf_mesh_free(&a);
             return st;
         }
     } else {
         why = stl ? read_stl(text, size, &m, &oom) : read_off(text, size, &m, &oom);
         free(text);
     }
-    if (oom)
+    if (st != SC_OK)
+        ;
+    else if (oom)
         st = err_nomem(c->error, (&loc));
     else if (why)
         st = err_set(c->error, SC_ERR_SEMANTIC, &loc,
                      "import: '%s' is not a valid %s file (%s)", path,
                      stl ? "STL" : "OFF", why);
-    else if (m.face_count == 0)
+    else if (objects ? a.face_count == 0 : m.face_count == 0)
         *empty = "import without faces is empty";
-    else {
-        build_mesh_faces f;
-        st = build_mesh_merge(c, &loc, 0, m.points, m.point_count, m.indices,
-                              m.face_start, m.face_count, &f);
-        if (st == SC_OK)
-            st = build_mesh_solid(c, &loc, "imported mesh", 0, strict, &f, out, empty);
-        if (st == SC_OK && faces && !*empty) {
-            *faces = f;
-            memset(&f, 0, sizeof f);
-        }
-        build_mesh_faces_free(&f);
+    else if (objects)
+        st = import_objects(c, import, strict, &a, out, empty, faces);
+    else
+        st = import_solid(c, &loc, "imported mesh", strict, 0, m.points, m.point_count,
+                          m.indices, m.face_start, m.face_count, out, empty, faces);
+    /* several objects, every one left out or without volume: their
+     * warnings were given */
+    if (st == SC_OK && !*empty && out->count == 0)
+        *empty = "";
+    if (st != SC_OK) {
+        free(out->items);
+        memset(out, 0, sizeof *out);
     }
     free(path);
     mesh_file_free(&m);
+    amf_mesh_free(&a);
     return st;
 }
 
-sc_status build_import_mesh(const build_ctx *c, const model_import *import, int strict,
-                            prim *out, const char **empty)
+/* The union of parts as one mesh leaf, for the builders that take an
+ * import's triangles (hull's corners, projection's faces): each part
+ * closed and turned outward, so that winding numbers add up to the
+ * union; with a part drawn by the parity rule, the parity rule for all
+ * (where such a part overlaps another, the overlap is lost). */
+static sc_status join_parts(const build_ctx *c, const sc_location *loc,
+                            const build_prims *parts, prim *out)
 {
-    return import_mesh(c, import, strict, out, empty, NULL);
+    size_t tris = 0;
+    int parity = 0;
+    for (uint32_t i = 0; i < parts->count; i++) {
+        tris += parts->items[i].u.mesh.mesh->tri_count;
+        parity |= parts->items[i].u.mesh.mesh->parity;
+    }
+    if (tris > UINT32_MAX / 3)
+        return err_set(c->error, SC_ERR_LIMIT, loc, "imported mesh has too many faces");
+    vec3 *v = malloc(3 * tris * sizeof *v);
+    uint32_t *index = malloc(3 * tris * sizeof *index);
+    sc_status st = SC_OK;
+    if (!v || !index) {
+        st = err_nomem(c->error, loc);
+    } else {
+        size_t k = 0;
+        for (uint32_t i = 0; i < parts->count; i++) {
+            const prim_mesh *m = parts->items[i].u.mesh.mesh;
+            memcpy(&v[k], m->v, 3 * (size_t)m->tri_count * sizeof *v);
+            k += 3 * (size_t)m->tri_count;
+        }
+        for (size_t i = 0; i < k; i++)
+            index[i] = (uint32_t)i;
+        const prim_mesh *m =
+            prim_mesh_create_rule(c->csg, v, index, (uint32_t)(k / 3), parity);
+        if (!m) {
+            st = err_nomem(c->error, loc);
+        } else {
+            memset(out, 0, sizeof *out);
+            out->kind = PRIM_MESH;
+            out->u.mesh.mesh = m;
+        }
+    }
+    free(v);
+    free(index);
+    return st;
 }
 
-sc_status build_import_faces(const build_ctx *c, const model_import *import, prim *out,
+sc_status build_import_parts(const build_ctx *c, const model_import *import, int strict,
+                             build_prims *out, const char **empty)
+{
+    return import_parts(c, import, strict, out, empty, NULL);
+}
+
+sc_status build_import_faces(const build_ctx *c, const model_import *import,
                              const char **empty, build_mesh_faces *faces)
 {
     memset(faces, 0, sizeof *faces);
-    return import_mesh(c, import, 0, out, empty, faces);
+    build_prims parts;
+    sc_status st = import_parts(c, import, 0, &parts, empty, faces);
+    free(parts.items);
+    return st;
+}
+
+sc_status build_import(const build_ctx *c, const model_import *import, prim *out,
+                       const char **empty)
+{
+    build_prims parts;
+    sc_status st = build_import_parts(c, import, 0, &parts, empty);
+    if (st == SC_OK && !*empty)
+        st = parts.count == 1 ? (*out = parts.items[0], SC_OK)
+                              : join_parts(c, &import->file_loc, &parts, out);
+    free(parts.items);
+    return st;
 }

@@ -105,18 +105,38 @@ int build_mesh_face_triangles(const vec3 *p, uint32_t n, int reversed, uint32_t 
  * directory of the file being read (c->file). malloc'd; NULL when memory
  * runs out. */
 char *build_file_path(const build_ctx *c, const char *name);
+struct build_prims; /* build_hull.h */
+
+/* An import of a file whose extension no reader takes (model.h,
+ * MODEL_MESH_UNSUPPORTED), as OpenSCAD 2021.01 logs it, before it opens
+ * anything: "Unsupported file format while trying to import file 'NAME'",
+ * and the import empty; the error at loc with strict or c->strict. */
+sc_status build_import_unsupported(const build_ctx *c, const sc_location *loc,
+                                   const char *name, int strict);
+
 /* import(file) (its name checked by the lowering pass): an STL (ASCII or
- * binary) or OFF file, its path relative to the directory of the file
- * being read, built by build_mesh_solid (strict as there; build_import is
- * build_import_mesh not strict). */
-sc_status build_import_mesh(const build_ctx *c, const model_import *import, int strict,
-                            prim *out, const char **empty);
+ * binary), OFF, AMF or 3MF file, its path relative to the directory of the
+ * file being read, built by build_mesh_solid (strict as there). An AMF or
+ * 3MF file of several objects gives one leaf per object, which OpenSCAD
+ * unites (the caller unites them), each object checked, turned outward,
+ * left out or drawn by the parity rule on its own, with its warnings in
+ * c->notes; any other file gives one leaf. out->items is malloc'd (free
+ * it, also after an error); *empty is set, and out left empty, when the
+ * import makes nothing ("" when its warnings were given). */
+sc_status build_import_parts(const build_ctx *c, const model_import *import, int strict,
+                             struct build_prims *out, const char **empty);
+/* The same, not strict, as one leaf: several objects' leaves joined into
+ * one mesh (winding numbers add up to their union), for the builders
+ * that take an import's triangles (hull, projection). */
 sc_status build_import(const build_ctx *c, const model_import *import, prim *out,
                        const char **empty);
-/* build_import, which also hands its merged faces to *faces (for CGAL, whose
- * faces must not overlap as the leaf's fans of a face that is not convex
- * do; empty when *empty is set; free with build_mesh_faces_free). */
-sc_status build_import_faces(const build_ctx *c, const model_import *import, prim *out,
+/* build_import_parts, not strict, for a file of one object (STL, OFF),
+ * which hands its merged faces to *faces (for CGAL, whose faces must not
+ * overlap as the leaf's fans of a face that is not convex do), with the
+ * leaf's warnings; *faces empty when *empty is set and for several
+ * objects (each a leaf of triangles, build_import_parts); free with
+ * build_mesh_faces_free. */
+sc_status build_import_faces(const build_ctx *c, const model_import *import,
                              const char **empty, build_mesh_faces *faces);
 
 /* linear_extrude (build_extrude.c): exact in default mode without twist or

@@ -61,6 +61,7 @@
 #include "build/build_text.h"
 #include "formats/dxf.h"
 #include "formats/svg.h"
+#include "model/args.h"
 #include "model/faithful.h"
 
 /* Offsets and Minkowski sums grow the point count by a product; these
@@ -356,6 +357,20 @@ static sc_status read_polygon(const eval *e, const model_node *n, twod_region *o
 /* A 3D child k of a 2D operation: nothing, with OpenSCAD 2021.01's
  * warnings (GeometryEvaluator.cc: isValidDim, collectChildren2D), the
  * first also saying that the operation mixes when mixing is set. */
+/* OpenSCAD's message for an import k of a file no reader takes, which it
+ * gives as it evaluates the import, before any dimension check; nothing
+ * for other nodes. */
+static sc_status unsupported_import(const eval *e, const model_node *k)
+{
+    if (k->kind != MODEL_IMPORT || k->pending)
+        return SC_OK;
+    const char *file = e->in_2d ? k->u.drawing->file : k->u.import->file;
+    const sc_location *at = e->in_2d ? &k->u.drawing->file_loc : &k->u.import->file_loc;
+    return model_mesh_format_of(file) == MODEL_MESH_UNSUPPORTED
+               ? build_import_unsupported(e->c, at, file, 0)
+               : SC_OK;
+}
+
 static sc_status ignore_3d(const eval *e, const model_node *k, int mixing)
 {
     sc_status st = SC_OK;
@@ -399,6 +414,8 @@ static sc_status eval_list(eval *e, const model_node *first, model_kind kind,
          * intersection */
         if (build_dim(k, e->in_2d) != 3)
             st = twod_walk(&e->walk, k, &unmoved, depth + 1, &r[*count - 1]);
+        else
+            st = unsupported_import(e, k);
     }
     /* After the children's own warnings, as OpenSCAD checks the
      * dimensions once its children are evaluated. */
@@ -637,9 +654,9 @@ static sc_status read_svg(const eval *e, const model_node *n, twod_region *out)
     sc_status st;
     FILE *f = fopen(path, "rb");
     if (!f) {
-        st = build_note(e->c, &n->loc,
-                        "Can't open SVG file '%s': %s (the import is empty)", path,
-                        strerror(errno));
+        st = build_note_left_out(e->c, &n->loc,
+                                 "Can't open SVG file '%s': %s (the import is empty)",
+                                 path, strerror(errno));
     } else {
         fclose(f);
         svg_options o = {d->dpi, d->center};
@@ -651,11 +668,10 @@ static sc_status read_svg(const eval *e, const model_node *n, twod_region *out)
             sc_error why = *e->c->error;
             err_clear(e->c->error);
             twod_clear(out);
-            st =
-                build_note(e->c, &d->file_loc,
-                           "%s; the import is empty, as OpenSCAD leaves it out (--strict "
-                           "makes it an error)",
-                           why.message);
+            st = build_note_left_out(e->c, &d->file_loc,
+                                     "%s; the import is empty, as OpenSCAD leaves it out "
+                                     "(--strict makes it an error)",
+                                     why.message);
         }
     }
     free(path);
@@ -669,8 +685,10 @@ static sc_status read_import(const eval *e, const model_node *n, twod_region *ou
     if (n->pending)
         return pending(e, n);
     const model_drawing *d = drawing_of(n, e->in_2d);
-    if (!d) /* a 3D file */
-        return ignore_3d(e, n, 0);
+    if (!d) { /* a 3D file, or one of no format OpenSCAD's import() reads */
+        sc_status st = unsupported_import(e, n);
+        return st != SC_OK ? st : ignore_3d(e, n, 0);
+    }
     const char *name = d->file;
     sc_location loc = d->file_loc;
     if (d->format == MODEL_DRAWING_SVG)
@@ -685,9 +703,9 @@ static sc_status read_import(const eval *e, const model_node *n, twod_region *ou
      * open as nothing, with a warning. */
     FILE *f = fopen(path, "rb");
     if (!f) {
-        st = build_note(e->c, &n->loc,
-                        "Can't open DXF file '%s': %s (the import is empty)", path,
-                        strerror(errno));
+        st = build_note_left_out(e->c, &n->loc,
+                                 "Can't open DXF file '%s': %s (the import is empty)",
+                                 path, strerror(errno));
         free(path);
         return st;
     }

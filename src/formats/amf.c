@@ -10,13 +10,16 @@
  * value the previous vertex or triangle gave it (0 at first), as in
  * OpenSCAD. The units attribute, metadata, colours, materials,
  * constellations and curved-triangle edges are not read, as OpenSCAD does
- * not read them.
+ * not read them. A zipped AMF is unzipped first (amf_unzip), as OpenSCAD
+ * reads through libzip any file that libzip opens as an archive.
  *
  * OpenSCAD stops at a value that is not a number (boost::lexical_cast:
  * the whole text, no spaces) with a warning, and at an index out of range
  * it reads past its array; here both are errors with the file's line.
- * OpenSCAD unites several objects with CGAL; here their triangles are
- * returned together, and the caller says what it does with them.
+ * OpenSCAD unites several objects with CGAL (each object one solid, all
+ * its meshes and volumes together); here their triangles are returned
+ * together with where each object starts, and the caller builds each
+ * object and unites them.
  */
 #include "formats/amf.h"
 
@@ -28,6 +31,7 @@
 #include <string.h>
 
 #include "base/error.h"
+#include "base/grow.h"
 #include "formats/xml.h"
 
 typedef struct reader {
@@ -35,7 +39,7 @@ typedef struct reader {
     const sc_location *at;
     sc_error *error;
     amf_mesh *out;
-    uint32_t point_cap, index_cap, face_cap;
+    uint32_t point_cap, index_cap, face_cap, object_point_cap, object_face_cap;
     uint32_t object_first; /* the current object's first point */
     double xyz[3];         /* the last coordinates given */
     long v[3];             /* the last indices given */
@@ -83,21 +87,6 @@ static int read_long(const char *s, long *out)
     return 1;
 }
 
-static int grow(void **p, uint32_t *cap, uint32_t need, size_t size)
-{
-    if (need <= *cap)
-        return 1;
-    uint32_t n = *cap ? *cap : 64;
-    while (n < need)
-        n = n > UINT32_MAX / 2 ? UINT32_MAX : 2 * n;
-    void *q = realloc(*p, (size_t)n * size);
-    if (!q)
-        return 0;
-    *p = q;
-    *cap = n;
-    return 1;
-}
-
 static sc_status vertex(reader *r, const xml_element *coordinates)
 {
     static const char *const axes[] = {"x", "y", "z"};
@@ -108,7 +97,8 @@ static sc_status vertex(reader *r, const xml_element *coordinates)
     amf_mesh *m = r->out;
     if (m->point_count >= AMF_MAX_POINTS)
         return fail(r, SC_ERR_LIMIT, coordinates->line, "%s", "too many vertices");
-    if (!grow((void **)&m->points, &r->point_cap, m->point_count + 1, sizeof *m->points))
+    if (!grow_array32((void **)&m->points, &r->point_cap, m->point_count + 1,
+                      sizeof *m->points))
         return fail(r, SC_ERR_NOMEM, 0, "%s", "out of memory");
     m->points[m->point_count++] = v3(r->xyz[0], r->xyz[1], r->xyz[2]);
     return SC_OK;
@@ -132,10 +122,10 @@ static sc_status triangle(reader *r, const xml_element *t)
         }
     if (m->face_count >= AMF_MAX_POINTS)
         return fail(r, SC_ERR_LIMIT, t->line, "%s", "too many triangles");
-    if (!grow((void **)&m->indices, &r->index_cap, 3 * (m->face_count + 1),
-              sizeof *m->indices) ||
-        !grow((void **)&m->face_start, &r->face_cap, m->face_count + 2,
-              sizeof *m->face_start))
+    if (!grow_array32((void **)&m->indices, &r->index_cap, 3 * (m->face_count + 1),
+                      sizeof *m->indices) ||
+        !grow_array32((void **)&m->face_start, &r->face_cap, m->face_count + 2,
+                      sizeof *m->face_start))
         return fail(r, SC_ERR_NOMEM, 0, "%s", "out of memory");
     for (int i = 0; i < 3; i++)
         m->indices[3 * m->face_count + (uint32_t)i] = r->object_first + (uint32_t)r->v[i];
@@ -145,8 +135,26 @@ static sc_status triangle(reader *r, const xml_element *t)
     return SC_OK;
 }
 
+/* Where the objects start, with room for the end of the last. */
+static sc_status start_object(reader *r, uint32_t object, uint32_t point, uint32_t face)
+{
+    amf_mesh *m = r->out;
+    if (!grow_array32((void **)&m->object_points, &r->object_point_cap, object + 2,
+                      sizeof *m->object_points) ||
+        !grow_array32((void **)&m->object_faces, &r->object_face_cap, object + 2,
+                      sizeof *m->object_faces))
+        return fail(r, SC_ERR_NOMEM, 0, "%s", "out of memory");
+    m->object_points[object] = point;
+    m->object_faces[object] = face;
+    return SC_OK;
+}
+
 static sc_status object(reader *r, const xml_element *o)
 {
+    if (r->out->object_count >= AMF_MAX_POINTS)
+        return fail(r, SC_ERR_LIMIT, o->line, "%s", "too many objects");
+    if (start_object(r, r->out->object_count, r->out->point_count, r->out->face_count))
+        return r->status;
     r->out->object_count++;
     r->object_first = r->out->point_count;
     sc_status st = SC_OK;
@@ -203,6 +211,8 @@ sc_status amf_read(const char *text, size_t size, const char *name, const sc_loc
              o = o->next)
             if (!strcmp(o->name, "object"))
                 object(&r, o);
+        if (r.status == SC_OK && out->object_count)
+            start_object(&r, out->object_count, out->point_count, out->face_count);
     }
     xml_free(&doc);
     return r.status;
@@ -213,5 +223,40 @@ void amf_mesh_free(amf_mesh *m)
     free(m->points);
     free(m->indices);
     free(m->face_start);
+    free(m->object_points);
+    free(m->object_faces);
     memset(m, 0, sizeof *m);
+}
+
+sc_status amf_unzip(const char *data, size_t size, const char *path, const char *name,
+                    const sc_location *at, size_t max_size, char **text,
+                    size_t *text_size, char *warning, size_t warning_size,
+                    sc_error *error)
+{
+    *text = NULL;
+    *text_size = 0;
+    if (warning_size)
+        warning[0] = 0;
+    const char *slash = strrchr(path, '/');
+    const char *entry = slash ? slash + 1 : path;
+    char single[256], why[256];
+    int code = xml_unzip(data, size, entry, max_size, text, text_size, single,
+                         sizeof single, why, sizeof why);
+    if (code == XML_NOT_ZIP)
+        return SC_OK;
+    if (code == XML_OK) {
+        if (single[0])
+            snprintf(warning, warning_size,
+                     "Can't read file '%s' from zipped AMF '%s'; trying to read single "
+                     "entry '%s'",
+                     entry, path, single);
+        return SC_OK;
+    }
+    sc_status status = code == XML_ERR_NOMEM    ? SC_ERR_NOMEM
+                       : code == XML_ERR_LIMIT  ? SC_ERR_LIMIT
+                       : code == XML_ERR_PLUGIN ? SC_ERR_IO
+                                                : SC_ERR_SYNTAX;
+    return err_set(error, status, at,
+                   "import: %s: can't read file '%s' from zipped AMF: %s", name, entry,
+                   why);
 }

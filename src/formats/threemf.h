@@ -4,10 +4,13 @@
  * loads on the first 3MF import (plugin.h), since lib3mf brings libzip.
  *
  * As OpenSCAD: every mesh object's triangles, at the positions the file
- * gives (single precision, as lib3mf stores them); build items, their
- * transforms and components are not read. OpenSCAD unites several objects
- * with CGAL; here their triangles are returned together (amf_mesh), and
- * the caller says what it does with them.
+ * gives (single precision, as lib3mf stores them), each object once;
+ * build items, their transforms and components are not read (seen on
+ * OpenSCAD 2021.01: an object placed by two items, one of them moved,
+ * and by a component, imports as the object alone). OpenSCAD unites
+ * several objects with CGAL; here their triangles are returned together
+ * with where each object starts (amf_mesh), and the caller builds each
+ * object and unites them.
  */
 #ifndef SPANCAST_FORMATS_THREEMF_H
 #define SPANCAST_FORMATS_THREEMF_H
@@ -23,12 +26,13 @@
 #define THREEMF_MAX_POINTS AMF_MAX_POINTS
 
 /* The plugin's entry point: the file's mesh objects into malloc'd arrays
- * (xyz 3 per point, indices 3 per triangle, each object's offset to the
- * points of all objects), or 0 with lib3mf's reason in err. */
+ * (xyz 3 per point, indices 3 per triangle into the points of all
+ * objects, objects 2 per object and 2 more: where each object's points
+ * and triangles start, then the totals), or 0 with lib3mf's reason in err. */
 typedef int (*threemf_read_fn)(const char *path, uint32_t max_points, double **xyz,
                                uint32_t *point_count, uint32_t **indices,
-                               uint32_t *face_count, uint32_t *object_count, char *err,
-                               size_t err_size);
+                               uint32_t *face_count, uint32_t **objects,
+                               uint32_t *object_count, char *err, size_t err_size);
 
 /* Reads the 3MF file at path into out (zeroed here; free with
  * amf_mesh_free, also after an error). name is the file as the model

@@ -279,6 +279,15 @@ int model_has_suffix(const char *s, const char *suffix)
     return 1;
 }
 
+model_mesh_format model_mesh_format_of(const char *name)
+{
+    return model_has_suffix(name, ".stl")   ? MODEL_MESH_STL
+           : model_has_suffix(name, ".off") ? MODEL_MESH_OFF
+           : model_has_suffix(name, ".amf") ? MODEL_MESH_AMF
+           : model_has_suffix(name, ".3mf") ? MODEL_MESH_3MF
+                                            : MODEL_MESH_UNSUPPORTED;
+}
+
 int model_import_is_drawing(const parse_node *n)
 {
     const parse_arg *a = parse_node_arg(n, "file", 0);
@@ -300,19 +309,9 @@ sc_status model_read_import(const model_reader *r, const parse_node *n, model_im
     }
     const char *name = a->value.u.string.chars;
     sc_location loc = model_loc(r, &a->value);
-    int stl = model_has_suffix(name, ".stl"), off = model_has_suffix(name, ".off");
-    int amf = model_has_suffix(name, ".amf"), threemf = model_has_suffix(name, ".3mf");
-    if (!stl && !off && !amf && !threemf)
-        return err_set(r->error, SC_ERR_UNSUPPORTED, &loc,
-                       "import of '%s' is not supported yet (only .stl, .off, .amf, "
-                       ".3mf, .dxf and .svg files)",
-                       name);
     out->file = name;
     out->file_loc = loc;
-    out->format = stl   ? MODEL_MESH_STL
-                  : off ? MODEL_MESH_OFF
-                  : amf ? MODEL_MESH_AMF
-                        : MODEL_MESH_3MF;
+    out->format = model_mesh_format_of(name);
     return SC_OK;
 }
 

@@ -91,7 +91,11 @@ sc_status model_read_square(const model_reader *r, const parse_node *n, double *
 /* Whether import(file) names a drawing: a string ending in .dxf or .svg
  * (any case), which OpenSCAD imports as 2D wherever it stands. */
 int model_import_is_drawing(const parse_node *n);
-/* import(file = "x.stl" | "x.off") of a mesh into *out. */
+/* The mesh format a file name's extension (any case) makes. */
+model_mesh_format model_mesh_format_of(const char *name);
+/* import(file = "x.stl" | "x.off" | "x.amf" | "x.3mf") of a mesh into *out;
+ * any other extension is MODEL_MESH_UNSUPPORTED, for the builder to warn
+ * of as OpenSCAD does. */
 sc_status model_read_import(const model_reader *r, const parse_node *n,
                             model_import *out);
 /* surface(file, center = false, invert = false) into *out. */

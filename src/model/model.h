@@ -181,7 +181,10 @@ typedef enum model_mesh_format {
     MODEL_MESH_STL,
     MODEL_MESH_OFF,
     MODEL_MESH_AMF,
-    MODEL_MESH_3MF
+    MODEL_MESH_3MF,
+    /* any other extension: OpenSCAD 2021.01's "Unsupported file format", an
+     * empty import (build_mesh.h) */
+    MODEL_MESH_UNSUPPORTED
 } model_mesh_format;
 /* import(file) outside the 2D context: a mesh, or a .dxf or .svg drawing
  * (drawing set), whose dimension is 2 wherever it stands, as in OpenSCAD,
