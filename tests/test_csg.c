@@ -2159,7 +2159,8 @@ static void test_bounds_culling(void **state)
 /* A union of a few convex leaves with no BVH takes csg.c's flat path
  * (eval_flat_union), which must give what the general union path gives:
  * unions of 2 to 7 spheres, boxes and cylinders on a half-unit grid (so
- * faces touch and coincide), alone and as the first operand of a
+ * faces touch and coincide), some of them intersected with or less other
+ * leaves, alone and as the first operand of a
  * difference (asked for its first crossing in windows), against the
  * brute-force spans, with the first hit and any hit of each ray. */
 static void test_flat_union(void **state)
@@ -2198,6 +2199,31 @@ static void test_flat_union(void **state)
                 v3(0.5 * below(&r, 5), 0.5 * below(&r, 5), 0.5 * below(&r, 3)));
             kids[k] = csg_builder_leaf(b, &p, &at, white, no_loc);
             assert_int_not_equal(kids[k], CSG_EMPTY);
+            if (below(&r, 3) == 0) {
+                /* A boolean of leaves: the leaf cut by a sphere, or a comb
+                 * (a bar less six slots: up to 7 spans, so that three
+                 * outgrow the flat path's arrays). */
+                prim cut = {.kind = PRIM_SPHERE};
+                cut.u.sphere.r = 0.5 * (1 + below(&r, 3));
+                affine cut_at =
+                    translation(v3(0.5 * below(&r, 5), 0.5 * below(&r, 5), 0));
+                uint32_t ops[7] = {kids[k],
+                                   csg_builder_leaf(b, &cut, &cut_at, white, no_loc)};
+                uint32_t n_ops = 2;
+                if (below(&r, 2)) {
+                    p = (prim){.kind = PRIM_BOX};
+                    p.u.box.lo = v3(0, 0, 0);
+                    p.u.box.hi = v3(3.5, 0.5, 0.5);
+                    ops[0] = csg_builder_leaf(b, &p, &at, white, no_loc);
+                    for (n_ops = 1; n_ops < 7; n_ops++) {
+                        p.u.box.lo = v3(0.5 * n_ops - 0.25, -1, -1);
+                        p.u.box.hi = v3(0.5 * n_ops, 1, 1);
+                        ops[n_ops] = csg_builder_leaf(b, &p, &at, white, no_loc);
+                    }
+                }
+                kids[k] = csg_builder_op(
+                    b, below(&r, 2) ? CSG_DIFFERENCE : CSG_INTERSECTION, ops, n_ops);
+            }
         }
         uint32_t root = csg_builder_op(b, CSG_UNION, kids, count);
         if (ti % 2) {
