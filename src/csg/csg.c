@@ -1022,9 +1022,12 @@ static uint32_t flat_union_pass(eval_ctx *c, const csg_node *n, double lo, doubl
 }
 
 /* Sets *out to the flat union's spans and returns 1, or returns 0 when
- * they outgrew FLAT_SPANS (the caller takes the general path). */
-static int eval_flat_union(eval_ctx *c, const csg_node *n, double lo, double hi,
-                           eval_mode mode, span_list *out)
+ * they outgrew FLAT_SPANS (the caller takes the general path). Kept out of
+ * eval's frame (COLD_PATH): inlined there, its arrays would cost every
+ * level of a deep tree's recursion (test_limits' 10000 levels overflowed
+ * the stack). */
+static COLD_PATH int eval_flat_union(eval_ctx *c, const csg_node *n, double lo, double hi,
+                                     eval_mode mode, span_list *out)
 {
     span acc[FLAT_SPANS];
     int narrowed, overflow = 0;
