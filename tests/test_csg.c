@@ -2156,6 +2156,127 @@ static void test_bounds_culling(void **state)
     csg_tree_free(t);
 }
 
+/* A union of a few convex leaves with no BVH takes csg.c's flat path
+ * (eval_flat_union), which must give what the general union path gives:
+ * unions of 2 to 7 spheres, boxes and cylinders on a half-unit grid (so
+ * faces touch and coincide), some of them intersected with or less other
+ * leaves, alone and as the first operand of a
+ * difference (asked for its first crossing in windows), against the
+ * brute-force spans, with the first hit and any hit of each ray. */
+static void test_flat_union(void **state)
+{
+    (void)state;
+    rng r = {0x6a09e667f3bcc908ULL};
+    arena scratch, ref;
+    arena_init(&scratch, 0);
+    arena_init(&ref, 0);
+    long mismatches = 0, bad_hits = 0, with_spans = 0;
+    for (int ti = 0; ti < 400; ti++) {
+        csg_builder *b = csg_builder_new();
+        assert_non_null(b);
+        uint32_t kids[7];
+        uint32_t count = 2 + below(&r, 6);
+        for (uint32_t k = 0; k < count; k++) {
+            prim p = {.kind = PRIM_SPHERE};
+            switch (below(&r, 3)) {
+            case 0:
+                p.u.sphere.r = 0.5 * (1 + below(&r, 3));
+                break;
+            case 1:
+                p.kind = PRIM_BOX;
+                p.u.box.lo = v3(-0.5 * below(&r, 3), -0.5 * below(&r, 3), -0.5);
+                p.u.box.hi = v3(0.5 * (1 + below(&r, 3)), 0.5, 0.5 * (1 + below(&r, 2)));
+                break;
+            default:
+                p.kind = PRIM_CYLINDER;
+                p.u.cylinder.z0 = -0.5 * below(&r, 3);
+                p.u.cylinder.z1 = 0.5 * (1 + below(&r, 3));
+                p.u.cylinder.r0 = 0.5 * (1 + below(&r, 2));
+                p.u.cylinder.r1 = 0.5 * below(&r, 3);
+                break;
+            }
+            affine at = translation(
+                v3(0.5 * below(&r, 5), 0.5 * below(&r, 5), 0.5 * below(&r, 3)));
+            kids[k] = csg_builder_leaf(b, &p, &at, white, no_loc);
+            assert_int_not_equal(kids[k], CSG_EMPTY);
+            if (below(&r, 3) == 0) {
+                /* A boolean of leaves: the leaf cut by a sphere, or a comb
+                 * (a bar less six slots: up to 7 spans, so that three
+                 * outgrow the flat path's arrays). */
+                prim cut = {.kind = PRIM_SPHERE};
+                cut.u.sphere.r = 0.5 * (1 + below(&r, 3));
+                affine cut_at =
+                    translation(v3(0.5 * below(&r, 5), 0.5 * below(&r, 5), 0));
+                uint32_t ops[7] = {kids[k],
+                                   csg_builder_leaf(b, &cut, &cut_at, white, no_loc)};
+                uint32_t n_ops = 2;
+                if (below(&r, 2)) {
+                    p = (prim){.kind = PRIM_BOX};
+                    p.u.box.lo = v3(0, 0, 0);
+                    p.u.box.hi = v3(3.5, 0.5, 0.5);
+                    ops[0] = csg_builder_leaf(b, &p, &at, white, no_loc);
+                    for (n_ops = 1; n_ops < 7; n_ops++) {
+                        p.u.box.lo = v3(0.5 * n_ops - 0.25, -1, -1);
+                        p.u.box.hi = v3(0.5 * n_ops, 1, 1);
+                        ops[n_ops] = csg_builder_leaf(b, &p, &at, white, no_loc);
+                    }
+                }
+                kids[k] = csg_builder_op(
+                    b, below(&r, 2) ? CSG_DIFFERENCE : CSG_INTERSECTION, ops, n_ops);
+            }
+        }
+        uint32_t root = csg_builder_op(b, CSG_UNION, kids, count);
+        if (ti % 2) {
+            prim hole = {.kind = PRIM_CYLINDER};
+            hole.u.cylinder.z0 = -5;
+            hole.u.cylinder.z1 = 5;
+            hole.u.cylinder.r0 = hole.u.cylinder.r1 = 0.5;
+            affine at = translation(v3(1, 1, 0));
+            uint32_t ops[2] = {root, csg_builder_leaf(b, &hole, &at, white, no_loc)};
+            root = csg_builder_op(b, CSG_DIFFERENCE, ops, 2);
+        }
+        csg_tree *t = finish(b, root);
+        for (int ri = 0; ri < 200; ri++) {
+            /* From outside or inside the solid, along a random or an axis
+             * direction (rays in face planes), over a random range; d is
+             * not unit length. */
+            vec3 o =
+                v3(uniform_in(&r, -2, 5), uniform_in(&r, -2, 5), uniform_in(&r, -2, 4));
+            if (ri % 4 == 0)
+                o = v3(0.5 * below(&r, 8), 0.5 * below(&r, 8), 0.5 * below(&r, 6));
+            /* Most rays aim at a point where the leaves lie. */
+            vec3 at = v3(uniform_in(&r, 0, 2.5), uniform_in(&r, 0, 2.5),
+                         uniform_in(&r, 0, 1.5));
+            vec3 d = ri % 6 == 1 ? unit_vector(&r) : v3_sub(at, o);
+            if (!(v3_length(d) > 0))
+                d = unit_vector(&r);
+            if (ri % 3 == 0) {
+                double axis[3] = {0, 0, 0};
+                axis[below(&r, 3)] = below(&r, 2) ? 1 : -1;
+                d = v3(axis[0], axis[1], axis[2]);
+            }
+            csg_ray ray = {o, d, ri % 2 ? 0 : uniform_in(&r, -3, 3), INFINITY};
+            if (ri % 5 == 0)
+                ray.tmax = ray.tmin + uniform_in(&r, 0, 6);
+            span_list s, want = brute_spans(t, &ray, &ref, NULL);
+            assert_true(csg_spans(t, &ray, &scratch, &s));
+            with_spans += want.n > 0;
+            mismatches += !same_lists(s, want);
+            bad_hits += !first_hit_agrees(t, &ray, want, &scratch);
+            arena_reset(&scratch);
+            arena_reset(&ref);
+        }
+        csg_tree_free(t);
+    }
+    arena_free(&scratch);
+    arena_free(&ref);
+    print_message("flat unions: %ld rays with spans, %ld span mismatches, %ld bad hits\n",
+                  with_spans, mismatches, bad_hits);
+    assert_true(with_spans > 400 * 200 / 4);
+    assert_int_equal(mismatches, 0);
+    assert_int_equal(bad_hits, 0);
+}
+
 /* A ray lying in the plane of a box face, parallel to it. bbox_ray meets
  * 0 * inf = NaN at the slab of that plane; the box culling must keep the
  * ray (the closed box holds the line), or rays along the seam of
@@ -2253,7 +2374,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_coincident_faces), cmocka_unit_test(test_random_trees),
         cmocka_unit_test(test_bounds_culling),   cmocka_unit_test(test_ray_in_face_plane),
-        cmocka_unit_test(test_eps_near_and_far),
+        cmocka_unit_test(test_eps_near_and_far), cmocka_unit_test(test_flat_union),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -15,6 +15,7 @@
 #include <cmocka.h>
 #include <dirent.h>
 #include <math.h>
+#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -113,6 +114,40 @@ static void read_back(const char *path, image_data *img)
             fail_msg("%s: value %zu: %.9g here, %.9g through OpenImageIO", path, k,
                      (double)img->pixels[k], (double)other.pixels[k]);
     image_data_free(&other);
+}
+
+static float float_bits(uint32_t bits)
+{
+    float v;
+    memcpy(&v, &bits, sizeof v);
+    return v;
+}
+
+/* The 8-bit encoder by thresholds gives color_linear_to_srgb8's byte: at
+ * every threshold and the float before it (where the code changes), at
+ * every 4099th float of [0, 1] (a run over all of them, about 10^9, found
+ * no difference), and at values outside it. */
+static void test_srgb8_thresholds(void **state)
+{
+    (void)state;
+    float t[COLOR_SRGB8_THRESHOLDS];
+    color_srgb8_thresholds(t);
+    for (unsigned k = 0; k < COLOR_SRGB8_THRESHOLDS; k++) {
+        uint32_t bits;
+        memcpy(&bits, &t[k], sizeof bits);
+        assert_int_equal(color_srgb8_code(t, t[k]), k + 1);
+        assert_int_equal(color_linear_to_srgb8(t[k]), k + 1);
+        assert_int_equal(color_srgb8_code(t, float_bits(bits - 1)),
+                         color_linear_to_srgb8(float_bits(bits - 1)));
+        assert_true(color_linear_to_srgb8(float_bits(bits - 1)) <= k);
+    }
+    for (uint32_t bits = 0; bits <= 0x3f800000u; bits += 4099)
+        assert_int_equal(color_srgb8_code(t, float_bits(bits)),
+                         color_linear_to_srgb8(float_bits(bits)));
+    const float outside[] = {NAN, -INFINITY, -1, -0.0f, 0, 1, 1.5f, INFINITY};
+    for (size_t k = 0; k < sizeof outside / sizeof *outside; k++)
+        assert_int_equal(color_srgb8_code(t, outside[k]),
+                         color_linear_to_srgb8(outside[k]));
 }
 
 static void test_color_png(void **state)
@@ -347,6 +382,7 @@ static void test_readonly_folder(void **state)
 int main(void)
 {
     const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_srgb8_thresholds),
         cmocka_unit_test(test_color_png),
         cmocka_unit_test(test_mask_and_depth),
         cmocka_unit_test(test_format_errors),

@@ -8,14 +8,6 @@
 
 #include "base/mem.h"
 
-struct arena_block {
-    arena_block *next;
-    size_t size; /* usable bytes after the header */
-    _Alignas(16) unsigned char data[];
-};
-
-enum { ARENA_ALIGN = 16 };
-
 void arena_init(arena *a, size_t block_size)
 {
     memset(a, 0, sizeof *a);
@@ -41,7 +33,7 @@ void arena_reset(arena *a)
     a->used = 0;
 }
 
-void *arena_alloc(arena *a, size_t size)
+void *arena_alloc_slow(arena *a, size_t size)
 {
     if (size > SIZE_MAX - ARENA_ALIGN)
         return NULL;

@@ -24,6 +24,17 @@
 
 typedef struct arena_block arena_block;
 
+/* A block: the header, then size usable bytes. Visible here only so that
+ * arena_alloc's common case (the request fits in the block being filled)
+ * can be inlined into the render loop's callers. */
+struct arena_block {
+    arena_block *next;
+    size_t size; /* usable bytes after the header */
+    _Alignas(16) unsigned char data[];
+};
+
+enum { ARENA_ALIGN = 16 };
+
 typedef struct arena {
     arena_block *head;     /* block being filled */
     arena_block *first;    /* first block: blocks form a list kept across resets */
@@ -38,8 +49,26 @@ void arena_init(arena *a, size_t block_size);
 void arena_free(arena *a);
 /* Forgets every allocation but keeps the blocks for reuse. */
 void arena_reset(arena *a);
-/* Returns size bytes aligned to 16, or NULL when out of memory. */
-void *arena_alloc(arena *a, size_t size);
+/* arena_alloc's general case: a request of no size or of a huge one, or
+ * one that needs the next block (or a new one). */
+void *arena_alloc_slow(arena *a, size_t size);
+
+/* Returns size bytes aligned to 16, or NULL when out of memory. The common
+ * case, a request of 1 byte to 1 GiB that fits in the block being filled,
+ * is a bump of a->used here; every other goes to arena_alloc_slow, which
+ * checks the size arithmetic (rounding the size below 1 GiB up to 16
+ * cannot overflow). */
+static inline void *arena_alloc(arena *a, size_t size)
+{
+    arena_block *h = a->head;
+    size_t rounded = (size + ARENA_ALIGN - 1) & ~(size_t)(ARENA_ALIGN - 1);
+    if (h && size - 1 < ((size_t)1 << 30) && h->size - a->used >= rounded) {
+        void *p = h->data + a->used;
+        a->used += rounded;
+        return p;
+    }
+    return arena_alloc_slow(a, size);
+}
 /* Returns count * size bytes (zeroed), NULL on overflow or out of memory. */
 void *arena_calloc(arena *a, size_t count, size_t size);
 

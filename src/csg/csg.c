@@ -810,16 +810,12 @@ static COLD_PATH void moving_leaf_ray(const csg_leaf *l, double time, vec3 o, ve
     *ld = affine_vector(to_local, d);
 }
 
-static span_list eval_leaf(eval_ctx *c, const csg_node *n, double lo, double hi,
-                           eval_mode mode)
+/* The regularised spans of leaf n's primitive over [lo, hi] into out, which
+ * has room for its prim_max_spans; returns their count. */
+static uint32_t leaf_spans(eval_ctx *c, const csg_node *n, double lo, double hi,
+                           eval_mode mode, span *out, uint32_t cap)
 {
     const csg_leaf *l = &c->tree->leaves[n->leaf];
-    uint32_t cap = prim_max_spans(&l->prim);
-    span_list r = {arena_alloc(c->scratch, (size_t)cap * sizeof(span)), 0};
-    if (!r.v) {
-        c->oom = 1;
-        return no_spans;
-    }
     vec3 o, d;
     if (l->motion) {
         moving_leaf_ray(l, c->time, c->o, c->d, &o, &d);
@@ -828,9 +824,21 @@ static span_list eval_leaf(eval_ctx *c, const csg_node *n, double lo, double hi,
         d = affine_vector(&l->to_local, c->d);
     }
     c->counters->prim_tests++;
-    r.n = prim_spans_range(&l->prim, n->leaf, o, d, lo, hi, c->eps, mode != EVAL_ALL, r.v,
-                           cap);
-    r.n = span_regularize(r.v, r.n, c->eps);
+    uint32_t count = prim_spans_range(&l->prim, n->leaf, o, d, lo, hi, c->eps,
+                                      mode != EVAL_ALL, out, cap);
+    return span_regularize(out, count, c->eps);
+}
+
+static span_list eval_leaf(eval_ctx *c, const csg_node *n, double lo, double hi,
+                           eval_mode mode)
+{
+    uint32_t cap = prim_max_spans(&c->tree->leaves[n->leaf].prim);
+    span_list r = {arena_alloc(c->scratch, (size_t)cap * sizeof(span)), 0};
+    if (!r.v) {
+        c->oom = 1;
+        return no_spans;
+    }
+    r.n = leaf_spans(c, n, lo, hi, mode, r.v, cap);
     return r;
 }
 
@@ -911,6 +919,134 @@ static int visit_union(eval_ctx *c, void *state, uint32_t id, double *lo, double
         *hi = first->in.t;
         u->narrowed = 1;
     }
+    return 1;
+}
+
+/* A flat union: one without a BVH whose operands are leaves of at most
+ * FLAT_LEAF_SPANS spans each, FLAT_SPANS in all (the root of a small
+ * scene, a handful of bosses or ribs), or booleans of leaves alone (a
+ * chamfered plate: a box cut by boxes). eval's union path for it, step for
+ * step (the same box tests, merges, regularisations and narrowing, so the
+ * same spans), with the leaves' and the running result's spans in local
+ * arrays: no call through for_operands, and one allocation from scratch,
+ * for the result, instead of three per operand. A boolean operand is
+ * evaluated by eval; the recursion below stays one level deep, so the
+ * local arrays sit once on the stack of a deep tree's query. Should the
+ * running result outgrow FLAT_SPANS, the union starts again by the general
+ * path. */
+#define FLAT_LEAF_SPANS 2
+#define FLAT_SPANS 16
+
+static int is_flat_union(const eval_ctx *c, const csg_node *n)
+{
+    if (n->bvh != CSG_NO_BVH)
+        return 0;
+    const uint32_t *ids = &c->tree->child_ids[n->first_child];
+    uint32_t total = 0;
+    for (uint32_t k = 0; k < n->child_count; k++) {
+        const csg_node *child = &c->tree->nodes[ids[k]];
+        if (child->op != CSG_LEAF) {
+            const uint32_t *below = &c->tree->child_ids[child->first_child];
+            for (uint32_t j = 0; j < child->child_count; j++)
+                if (c->tree->nodes[below[j]].op != CSG_LEAF)
+                    return 0;
+            continue;
+        }
+        uint32_t cap = prim_max_spans(&c->tree->leaves[child->leaf].prim);
+        if (cap > FLAT_LEAF_SPANS)
+            return 0;
+        total += cap;
+    }
+    return total <= FLAT_SPANS;
+}
+
+/* One pass of the flat union over [lo, hi] in mode (EVAL_ALL, EVAL_FIRST
+ * or EVAL_ANY, as visit_union), its result in acc (room for FLAT_SPANS);
+ * returns its count, 0 with c->blocked set when EVAL_ANY met a blocker,
+ * or with c->oom set, or with *overflow set when the result would not fit.
+ * *narrowed as union_state's. */
+static uint32_t flat_union_pass(eval_ctx *c, const csg_node *n, double lo, double hi,
+                                eval_mode mode, span *acc, int *narrowed, int *overflow)
+{
+    const uint32_t *ids = &c->tree->child_ids[n->first_child];
+    eval_mode operand_mode = mode == EVAL_ANY ? EVAL_ANY : EVAL_ALL;
+    span leaf[FLAT_LEAF_SPANS], merged[FLAT_SPANS];
+    uint32_t count = 0;
+    *narrowed = 0;
+    for (uint32_t k = 0; k < n->child_count; k++) {
+        const csg_node *child = &c->tree->nodes[ids[k]];
+        arena_mark mark = arena_save(c->scratch);
+        span_list s = {leaf, 0};
+        if (child->op == CSG_LEAF) {
+            c->counters->nodes++;
+            double t0 = lo - c->eps, t1 = hi + c->eps;
+            if (!bbox_ray(&child->bounds, c->o, c->inv_d, &t0, &t1))
+                continue;
+            s.n = leaf_spans(c, child, lo, hi, operand_mode, leaf, FLAT_LEAF_SPANS);
+        } else {
+            s = eval(c, ids[k], lo, hi, operand_mode);
+            if (c->oom || c->blocked)
+                return 0;
+        }
+        if (mode == EVAL_ANY && overlaps(s, lo, hi)) {
+            c->blocked = 1;
+            return 0;
+        }
+        if (s.n == 0) {
+            arena_restore(c->scratch, mark);
+            continue;
+        }
+        if (count + s.n > FLAT_SPANS) {
+            arena_restore(c->scratch, mark);
+            *overflow = 1;
+            return 0;
+        }
+        if (count == 0) {
+            memcpy(acc, s.v, s.n * sizeof(span));
+            count = s.n;
+        } else {
+            c->counters->span_ops++;
+            count = span_merge(SPAN_UNION, (span_list){acc, count}, s, merged);
+            count = span_regularize(merged, count, c->eps);
+            memcpy(acc, merged, count * sizeof(span));
+        }
+        arena_restore(c->scratch, mark); /* s, if eval's, is copied */
+        const span *first =
+            mode == EVAL_FIRST ? first_after((span_list){acc, count}, lo) : NULL;
+        if (first && first->in.t >= lo && first->in.t < hi) {
+            hi = first->in.t;
+            *narrowed = 1;
+        }
+    }
+    return count;
+}
+
+/* Sets *out to the flat union's spans and returns 1, or returns 0 when
+ * they outgrew FLAT_SPANS (the caller takes the general path). Kept out of
+ * eval's frame (COLD_PATH): inlined there, its arrays would cost every
+ * level of a deep tree's recursion (test_limits' 10000 levels overflowed
+ * the stack). */
+static COLD_PATH int eval_flat_union(eval_ctx *c, const csg_node *n, double lo, double hi,
+                                     eval_mode mode, span_list *out)
+{
+    span acc[FLAT_SPANS];
+    int narrowed, overflow = 0;
+    *out = no_spans;
+    uint32_t count = flat_union_pass(c, n, lo, hi, mode, acc, &narrowed, &overflow);
+    const span *first = narrowed ? first_after((span_list){acc, count}, lo) : NULL;
+    if (first && first->in.t < lo)
+        count = flat_union_pass(c, n, lo, hi, EVAL_ALL, acc, &narrowed, &overflow);
+    if (overflow)
+        return 0;
+    if (count == 0)
+        return 1;
+    span_list r = {arena_alloc(c->scratch, count * sizeof(span)), count};
+    if (!r.v) {
+        c->oom = 1;
+        return 1;
+    }
+    memcpy(r.v, acc, count * sizeof(span));
+    *out = r;
     return 1;
 }
 
@@ -1205,6 +1341,9 @@ static span_list eval(eval_ctx *c, uint32_t id, double lo, double hi, eval_mode 
     if (n->op == CSG_LEAF)
         return eval_leaf(c, n, lo, hi, mode);
     if (n->op == CSG_UNION) {
+        span_list flat;
+        if (is_flat_union(c, n) && eval_flat_union(c, n, lo, hi, mode, &flat))
+            return flat;
         union_state u = {no_spans, mode, 0, arena_save(c->scratch)};
         for_operands(c, n, 0, lo, hi, visit_union, &u);
         const span *first = u.narrowed ? first_after(u.acc, lo) : NULL;

@@ -27,6 +27,26 @@ double color_linear_to_srgb(double v);
 /* The 8-bit code of linear light: round(255 * encode(v)). */
 unsigned char color_linear_to_srgb8(float v);
 
+/* The same codes for a whole image without a power per value: code k
+ * (1..255) begins at the float thresholds[k - 1], the smallest float
+ * whose color_linear_to_srgb8 is k or more, found by bisection on the
+ * float's bits (positive floats order as their bit patterns), 255 * 31
+ * evaluations. The encoding is monotone, so the code of v is the number
+ * of thresholds at or below v: color_srgb8_code, 8 comparisons, the
+ * very byte color_linear_to_srgb8 gives (NaN and v <= 0 give 0, v >= 1
+ * gives 255). */
+#define COLOR_SRGB8_THRESHOLDS 255
+void color_srgb8_thresholds(float thresholds[COLOR_SRGB8_THRESHOLDS]);
+
+static inline unsigned char color_srgb8_code(const float *thresholds, float v)
+{
+    unsigned k = 0;
+    for (unsigned step = 128; step; step >>= 1)
+        if (k + step <= COLOR_SRGB8_THRESHOLDS && v >= thresholds[k + step - 1])
+            k += step;
+    return (unsigned char)k;
+}
+
 #ifdef __cplusplus
 }
 #endif

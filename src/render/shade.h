@@ -84,7 +84,11 @@ typedef struct shade_material {
     double lobe;      /* glossy lobe exponent 2 / roughness^2 - 2; 0 with roughness 0
                          (a mirror: no lobe is sampled) */
     int glossy;       /* roughness > 0 */
+    int whole;        /* shininess when a whole number in 0..SHADE_WHOLE_MAX (the
+                         highlight then takes whole_power), else -1 */
 } shade_material;
+
+#define SHADE_WHOLE_MAX 1024
 
 /* A section cut: the half-space n.p <= d keeps the solid (n unit). */
 typedef struct shade_section {
