@@ -2317,6 +2317,63 @@ static void test_ray_in_face_plane(void **state)
     csg_tree_free(t);
 }
 
+/* A ray onto the face that a box cuts into a wide union: difference() {
+ * union() { 200 overlapping spheres in a row along x }; a box over the
+ * first half }. Along the row the union is one long span, so a ray that
+ * leaves the box inside it starts inside the first operand: its first hit
+ * is the cut face, flipped, where it leaves the box. That answer needs the
+ * spheres near the face, not the whole row: the counters bound the
+ * primitive tests (walking the row made it about 100). Brute force agrees
+ * on every ray. */
+static void test_cut_face_first_hit(void **state)
+{
+    (void)state;
+    enum { ROW = 200 };
+    csg_builder *b = csg_builder_new();
+    assert_non_null(b);
+    prim sphere = {.kind = PRIM_SPHERE};
+    sphere.u.sphere.r = 1.2;
+    uint32_t balls[ROW];
+    for (uint32_t k = 0; k < ROW; k++) {
+        affine m = translation(v3(2.0 * k, 0, 0));
+        balls[k] = csg_builder_leaf(b, &sphere, &m, white, no_loc);
+    }
+    affine id = affine_identity();
+    uint32_t kids[2] = {csg_builder_op(b, CSG_UNION, balls, ROW),
+                        add_box(b, v3(-5, -5, -5), v3(199.5, 5, 5), &id)};
+    csg_tree *t = finish(b, csg_builder_op(b, CSG_DIFFERENCE, kids, 2));
+    assert_true(t->bvh_node_count > 0);
+    arena scratch, ref;
+    arena_init(&scratch, 0);
+    arena_init(&ref, 0);
+    rng r = {0xc0ffee11ULL};
+    for (int i = 0; i < 200; i++) {
+        /* From inside the box towards the cut face at x = 199.5. */
+        vec3 o = v3(uniform_in(&r, 150, 190), uniform_in(&r, -0.3, 0.3),
+                    uniform_in(&r, -0.3, 0.3));
+        vec3 d =
+            v3_normalize(v3(1, uniform_in(&r, -0.01, 0.01), uniform_in(&r, -0.01, 0.01)));
+        csg_ray ray = {o, d, 0, INFINITY};
+        csg_counters counters = {0, 0, 0, 0, 0};
+        csg_hit hit;
+        assert_true(csg_first_hit_counted(t, &ray, &scratch, &counters, &hit));
+        assert_true(hit.flip == 1);
+        assert_true(fabs(o.x + hit.t * d.x - 199.5) < 1e-9);
+        if (counters.prim_tests > 24)
+            fail_msg("ray %d: %llu primitive tests for a hit on the cut face", i,
+                     (unsigned long long)counters.prim_tests);
+        span_list s, want = brute_spans(t, &ray, &ref, NULL);
+        assert_true(csg_spans(t, &ray, &scratch, &s));
+        assert_true(same_lists(s, want));
+        assert_true(want.n > 0 && want.v[0].in.t == hit.t);
+        arena_reset(&scratch);
+        arena_reset(&ref);
+    }
+    arena_free(&scratch);
+    arena_free(&ref);
+    csg_tree_free(t);
+}
+
 /* csg_eps as csg.h defines it, computed in full for every query. */
 static double eps_by_definition(const csg_tree *t, vec3 o, vec3 d)
 {
@@ -2372,9 +2429,13 @@ static void test_eps_near_and_far(void **state)
 int main(void)
 {
     const struct CMUnitTest tests[] = {
-        cmocka_unit_test(test_coincident_faces), cmocka_unit_test(test_random_trees),
-        cmocka_unit_test(test_bounds_culling),   cmocka_unit_test(test_ray_in_face_plane),
-        cmocka_unit_test(test_eps_near_and_far), cmocka_unit_test(test_flat_union),
+        cmocka_unit_test(test_coincident_faces),
+        cmocka_unit_test(test_random_trees),
+        cmocka_unit_test(test_bounds_culling),
+        cmocka_unit_test(test_ray_in_face_plane),
+        cmocka_unit_test(test_eps_near_and_far),
+        cmocka_unit_test(test_flat_union),
+        cmocka_unit_test(test_cut_face_first_hit),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

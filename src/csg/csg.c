@@ -1319,6 +1319,24 @@ COLD_PATH static span_list eval_cut_first_free(eval_ctx *c, const csg_node *n, d
     uint32_t k = 0;
     double f0, f1;
     while (!c->oom && free_stretch(cut, lo, hi, &k, &f0, &f1)) {
+        /* A stretch that starts where a subtrahend ends, with the first
+         * operand solid there, has its first crossing right at the start:
+         * a ray onto a cut face. eval_cut_first would find it only after
+         * asking the first operand for its first crossing from inside,
+         * which is its exit (every solid along the ray, to the far side of
+         * a block of n^3 spheres), and a first window as long as that. A
+         * short window, exact within itself as eval_cut_first's are, finds
+         * it at the cost of the solids near the start. */
+        if (f0 > lo) {
+            double end = fmin(f1, f0 + 64 * c->eps);
+            arena_mark probe = arena_save(c->scratch);
+            span_list r = eval_cut(c, n, f0, end);
+            if (c->oom)
+                return no_spans;
+            if (first_crossing(r, f0) < end - c->eps)
+                return keep(c, start, r);
+            arena_restore(c->scratch, probe);
+        }
         span_list r = eval_cut_first(c, n, f0, f1, 1);
         if (c->oom)
             return no_spans;
