@@ -983,7 +983,8 @@ static sc_status nef_node(const walk *w, const model_node *n, const affine *m, i
         return st;
     }
     if (kind == MODEL_IMPORT && !n->pending &&
-        (n->u.import->format == MODEL_MESH_AMF || n->u.import->format == MODEL_MESH_3MF)) {
+        (n->u.import->format == MODEL_MESH_AMF ||
+         n->u.import->format == MODEL_MESH_3MF)) {
         /* an AMF or 3MF file's objects, united as OpenSCAD unites them
          * (their faces are triangles, so the leaves' fans are the faces);
          * an STL or OFF file's faces, which need not be convex, go through

@@ -1711,7 +1711,8 @@ sc_status build_import_unsupported(const build_ctx *c, const sc_location *loc,
 /* build_import_parts; with faces, also the merged faces of a file of one
  * object in *faces (empty when *empty is set, and for several objects). */
 static sc_status import_parts(const build_ctx *c, const model_import *import, int strict,
-                              build_prims *out, const char **empty, build_mesh_faces *faces)
+                              build_prims *out, const char **empty,
+                              build_mesh_faces *faces)
 {
     memset(out, 0, sizeof *out);
     if (import->format == MODEL_MESH_UNSUPPORTED) {
