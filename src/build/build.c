@@ -635,7 +635,9 @@ static sc_status build_flat(builder *b, const model_node *n, const frame *state,
     return add_leaf(b, at, &p, state, id);
 }
 
-/* hull and minkowski (build_hull.c): one or several convex leaves, united. */
+/* hull and minkowski (build_hull.c): one or several convex leaves, united
+ * (add_leaves). Without emit, build_hull and build_minkowski give no
+ * leaves, so nothing is added. */
 static sc_status build_hull_leaf(builder *b, const model_node *n, const frame *state,
                                  uint32_t *id)
 {
@@ -646,21 +648,10 @@ static sc_status build_hull_leaf(builder *b, const model_node *n, const frame *s
         n->kind == MODEL_HULL
             ? build_hull(&c, n, state->emit, &b->resize_cache, &leaves, &empty)
             : build_minkowski(&c, n, state->emit, &b->resize_cache, &leaves, &empty);
-    uint32_t *ids = leaves.count ? calloc(leaves.count, sizeof *ids) : NULL;
-    if (st == SC_OK && leaves.count && !ids)
-        st = err_nomem(b->error, NULL);
     if (st == SC_OK && state->emit && empty)
         st = warn(b, &n->loc, "%s", empty);
-    for (uint32_t i = 0; st == SC_OK && state->emit && i < leaves.count; i++)
-        st = add_leaf(b, n, &leaves.items[i], state, &ids[i]);
-    if (st == SC_OK && leaves.count == 1)
-        *id = ids[0];
-    if (st == SC_OK && leaves.count > 1) {
-        *id = csg_builder_op(b->csg, CSG_UNION, ids, leaves.count);
-        if (csg_builder_failed(b->csg))
-            st = err_nomem(b->error, NULL);
-    }
-    free(ids);
+    if (st == SC_OK && state->emit)
+        st = add_leaves(b, n, &leaves, state, id);
     free(leaves.items);
     return st;
 }
