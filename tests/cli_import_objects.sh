@@ -31,7 +31,13 @@ overlap = [cube((0, 0, 0), 4), cube((2, 2, 2), 4, inward=True)]
 touching = [cube((0, 0, 0), 4), cube((4, 0, 0), 4)]
 # a closed cube and, at x = 6, one without its last triangle
 open_second = [cube((0, 0, 0), 4), cube((6, 0, 0), 4, drop=1)]
-for name, objects in [('overlap', overlap), ('touching', touching), ('open', open_second)]:
+# a closed cube [0, 4]^3 and, overlapping it, [2, 6]^3 without its last
+# triangle
+open_overlap = [cube((0, 0, 0), 4), cube((2, 2, 2), 4, drop=1)]
+# two objects, both open
+all_open = [cube((0, 0, 0), 4, drop=1), cube((6, 0, 0), 4, drop=1)]
+for name, objects in [('overlap', overlap), ('touching', touching), ('open', open_second),
+                      ('open_overlap', open_overlap), ('all_open', all_open)]:
     open(name + '.amf', 'w').write(amf(objects))
     threemf(name + '.3mf', objects)
 # a mesh object placed by two build items (one moved), and used by a
@@ -124,6 +130,112 @@ for ext in amf 3mf; do
             $mode >in.txt 2>err.txt || fail "inside hull-$ext.csg $mode: $(cat err.txt)"
         [ "$(tr '\n' ' ' <in.txt)" = "in in out " ] ||
             fail "inside hull-$ext.csg $mode: $(tr '\n' ' ' <in.txt), want in in out"
+    done
+done
+
+# hull and projection outside CGAL booleans, which take the objects as one
+# mesh: an open object is left out in both modes, as OpenSCAD 2021.01
+# leaves it out of the objects' union (seen: the hull of open.amf has no
+# point beyond x = 4, the projection of open_overlap.amf is the first
+# square alone). Before, exact mode drew the joined mesh by the parity
+# rule: the hull reached x = 10, and the projection lost the overlap and
+# kept the open square.
+left='left out, as OpenSCAD leaves it out ("The given mesh is not closed! Unable to convert to CGAL_Nef_Polyhedron.")'
+for ext in amf 3mf; do
+    printf 'hull() {\n\timport(file = "open.%s");\n}\n' $ext >hull-open-$ext.csg
+    printf 'linear_extrude(height = 1) {\n\tprojection() {\n\t\timport(file = "open_overlap.%s");\n\t}\n}\n' \
+        $ext >projection-open-$ext.csg
+    for mode in "" --faithful; do
+        check
+        "$bin" inside hull-open-$ext.csg --point=1,1,1 --point=4.5,1,1 --point=7,1,1 \
+            $mode >in.txt 2>err.txt || fail "inside hull-open-$ext.csg $mode: $(cat err.txt)"
+        [ "$(tr '\n' ' ' <in.txt)" = "in out out " ] ||
+            fail "inside hull-open-$ext.csg $mode: $(tr '\n' ' ' <in.txt), want in out out"
+        w="hull-open-$ext.csg:2:16: warning: object 2 of the imported file is not closed (edge (10, 4, 0)-(10, 0, 4) is used by 1 face); $left"
+        [ "$(cat err.txt)" = "$w" ] ||
+            fail "hull-open-$ext.csg $mode: stderr '$(cat err.txt)', want '$w'"
+        check
+        "$bin" inside projection-open-$ext.csg --point=1,1,0.5 --point=3,3,0.5 \
+            --point=5,5,0.5 $mode >in.txt 2>err.txt ||
+            fail "inside projection-open-$ext.csg $mode: $(cat err.txt)"
+        [ "$(tr '\n' ' ' <in.txt)" = "in in out " ] ||
+            fail "inside projection-open-$ext.csg $mode: $(tr '\n' ' ' <in.txt), want in in out"
+        w="projection-open-$ext.csg:3:17: warning: object 2 of the imported file is not closed (edge (6, 6, 2)-(6, 2, 6) is used by 1 face); $left"
+        [ "$(cat err.txt)" = "$w" ] ||
+            fail "projection-open-$ext.csg $mode: stderr '$(cat err.txt)', want '$w'"
+    done
+done
+
+# the same under a boolean that CGAL evaluates (a hull of a difference):
+# each object is its own Nef polyhedron, and an open one is left out, as
+# OpenSCAD 2021.01 leaves it out (seen: its hull has no point beyond
+# x = 4). Before, it was an error in both modes.
+for ext in amf 3mf; do
+    printf 'hull() {\n\tdifference() {\n\t\timport(file = "open.%s");\n\t\tcube(1);\n\t}\n}\n' $ext \
+        >hull-difference-open-$ext.csg
+    for mode in "" --faithful; do
+        check
+        "$bin" inside hull-difference-open-$ext.csg --point=0.5,0.5,0.5 --point=3.9,3.9,3.9 \
+            --point=4.5,1,1 --point=0.2,0.2,0.2 $mode >in.txt 2>err.txt ||
+            fail "inside hull-difference-open-$ext.csg $mode: $(cat err.txt)"
+        [ "$(tr '\n' ' ' <in.txt)" = "in in out out " ] ||
+            fail "inside hull-difference-open-$ext.csg $mode: $(tr '\n' ' ' <in.txt), want in in out out"
+        w="hull-difference-open-$ext.csg:3:17: warning: object 2 of the imported file is not closed (edge (10, 4, 0)-(10, 0, 4) is used by 1 face); $left"
+        [ "$(cat err.txt)" = "$w" ] ||
+            fail "hull-difference-open-$ext.csg $mode: stderr '$(cat err.txt)', want '$w'"
+    done
+done
+
+# A file whose every object is open. OpenSCAD 2021.01 prints "ERROR: The
+# given mesh is not closed! Unable to convert to CGAL_Nef_Polyhedron."
+# for each object and then crashes (SIGSEGV, exit status 139) in every use
+# seen: alone, beside a cube, under hull, under projection, in a preview
+# PNG. spancast gives each object's warning (an error with --strict) and
+# goes on: the import is empty where OpenSCAD's objects are left out (in
+# --faithful mode, under hull, projection and CGAL), drawn by the parity
+# rule where exact mode draws an open object; nothing more is said of the
+# empty hull or extrusion (it follows from the warnings), as after any
+# import left out; the model's emptiness is still said.
+for ext in amf 3mf; do
+    e1="(edge (4, 4, 0)-(4, 0, 4) is used by 1 face)"
+    e2="(edge (10, 4, 0)-(10, 0, 4) is used by 1 face)"
+    parity="rendered by the parity rule (--strict makes it an error)"
+    printf 'union() {\n\tcube(1);\n\timport(file = "all_open.%s");\n}\n' $ext >all-open-$ext.csg
+    printf 'hull() {\n\timport(file = "all_open.%s");\n}\n' $ext >hull-all-open-$ext.csg
+    printf 'linear_extrude(height = 1) {\n\tprojection() {\n\t\timport(file = "all_open.%s");\n\t}\n}\n' \
+        $ext >projection-all-open-$ext.csg
+    printf 'hull() {\n\tdifference() {\n\t\timport(file = "all_open.%s");\n\t\tcube(1);\n\t}\n}\n' $ext \
+        >cgal-all-open-$ext.csg
+    # case MODEL POSITION MODE RULE WANT [EMPTY]: spancast inside MODEL at
+    # 0.5,0.5,0.5 and 2,2,0.5 (in the first object) in MODE says WANT; its
+    # stderr is the two objects' warnings at POSITION with RULE, then the
+    # model's emptiness when EMPTY is set
+    case_of() {
+        local model=$1 at=$2 mode=$3 rule=$4 want=$5 empty=${6:-}
+        check
+        "$bin" inside "$model" --point=0.5,0.5,0.5 --point=2,2,0.5 $mode >in.txt 2>err.txt ||
+            fail "inside $model $mode: $(cat err.txt)"
+        [ "$(tr '\n' ' ' <in.txt)" = "$want " ] ||
+            fail "inside $model $mode: $(tr '\n' ' ' <in.txt), want $want"
+        w="$model$at: warning: object 1 of the imported file is not closed $e1; $rule
+$model$at: warning: object 2 of the imported file is not closed $e2; $rule"
+        [ -n "$empty" ] && w="$w
+$model: warning: the model is empty (nothing to render)"
+        [ "$(cat err.txt)" = "$w" ] || fail "$model $mode: stderr '$(cat err.txt)', want '$w'"
+        check
+        "$bin" inside "$model" --point=0.5,0.5,0.5 --strict >in.txt 2>err.txt &&
+            fail "$model --strict: exit 0"
+        w="$model$at: error: object 1 of the imported file is not closed $e1"
+        [ "$(cat err.txt)" = "$w" ] || fail "$model --strict: '$(cat err.txt)', want '$w'"
+    }
+    case_of all_open.$ext "" "" "$parity" "in in"
+    case_of all_open.$ext "" --faithful "$left" "out out" empty
+    case_of all-open-$ext.csg :3:16 "" "$parity" "in in"
+    case_of all-open-$ext.csg :3:16 --faithful "$left" "in out"
+    for mode in "" --faithful; do
+        case_of hull-all-open-$ext.csg :2:16 "$mode" "$left" "out out" empty
+        case_of projection-all-open-$ext.csg :3:17 "$mode" "$left" "out out" empty
+        case_of cgal-all-open-$ext.csg :3:17 "$mode" "$left" "out out" empty
     done
 done
 
