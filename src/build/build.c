@@ -637,18 +637,20 @@ static sc_status build_flat(builder *b, const model_node *n, const frame *state,
 
 /* hull and minkowski (build_hull.c): one or several convex leaves, united
  * (add_leaves). Without emit, build_hull and build_minkowski give no
- * leaves, so nothing is added. */
+ * leaves, so nothing is added. An empty result is not warned of after an
+ * import left out (build_notes), as for an extrusion. */
 static sc_status build_hull_leaf(builder *b, const model_node *n, const frame *state,
                                  uint32_t *id)
 {
     build_ctx c = context(b, state->emit, NULL);
     const char *empty = NULL;
     build_prims leaves = {NULL, 0, 0};
+    size_t left_out = b->warnings.left_out;
     sc_status st =
         n->kind == MODEL_HULL
             ? build_hull(&c, n, state->emit, &b->resize_cache, &leaves, &empty)
             : build_minkowski(&c, n, state->emit, &b->resize_cache, &leaves, &empty);
-    if (st == SC_OK && state->emit && empty)
+    if (st == SC_OK && state->emit && empty && b->warnings.left_out == left_out)
         st = warn(b, &n->loc, "%s", empty);
     if (st == SC_OK && state->emit)
         st = add_leaves(b, n, &leaves, state, id);

@@ -986,13 +986,14 @@ static sc_status nef_node(const walk *w, const model_node *n, const affine *m, i
         (n->u.import->format == MODEL_MESH_AMF ||
          n->u.import->format == MODEL_MESH_3MF)) {
         /* an AMF or 3MF file's objects, united as OpenSCAD unites them
-         * (their faces are triangles, so the leaves' fans are the faces);
-         * an STL or OFF file's faces, which need not be convex, go through
-         * mesh_faces below */
+         * (their faces are triangles, so the leaves' fans are the faces),
+         * an open one left out as OpenSCAD leaves it out; an STL or OFF
+         * file's faces, which need not be convex, go through mesh_faces
+         * below */
         build_prims parts = {NULL, 0, 0};
         const char *empty = NULL;
         *out = NULL;
-        st = build_import_parts(c, n->u.import, 0, &parts, &empty);
+        st = build_import_solids(c, n->u.import, &parts, &empty);
         for (uint32_t i = 0; st == SC_OK && !w->check && i < parts.count; i++) {
             nef_solid *s = NULL;
             st = nef_leaf_mesh(w, n, m, parts.items[i].u.mesh.mesh, &s);

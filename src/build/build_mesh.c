@@ -1615,9 +1615,15 @@ static sc_status push_part(const build_ctx *c, const sc_location *loc, build_pri
 /* One solid of a mesh file on its own points (build_mesh_merge, then
  * build_mesh_solid) appended to out; what names it in messages. With
  * several objects (note set), the warning each leaves in c->note goes to
- * c->notes at once, so that every object's is kept, in file order. */
+ * c->notes at once, so that every object's is kept, in file order. With
+ * joined (one of several objects that build_import makes one mesh of), a
+ * mesh that is not closed is left out in both modes, with a warning even
+ * where the builder takes no note (hull, minkowski), as in --faithful:
+ * OpenSCAD 2021.01 leaves such an object out of the union of the file's
+ * objects, under hull and projection as anywhere, and a part drawn by the
+ * parity rule could not keep its overlaps with the others in one mesh. */
 static sc_status import_solid(const build_ctx *c, const sc_location *loc,
-                              const char *what, int strict, int several,
+                              const char *what, int strict, int several, int joined,
                               const vec3 *points, uint32_t point_count,
                               const uint32_t *indices, const uint32_t *face_start,
                               uint32_t face_count, build_prims *out,
@@ -1625,15 +1631,17 @@ static sc_status import_solid(const build_ctx *c, const sc_location *loc,
 {
     build_ctx oc = *c;
     sc_error note = {SC_OK, "", 0, 0, ""};
-    if (several && c->note)
+    if (several && (c->note || joined))
         oc.note = &note;
     build_mesh_faces f;
     const char *empty = NULL;
     prim p;
     sc_status st = build_mesh_merge(&oc, loc, 0, points, point_count, indices, face_start,
                                     face_count, &f);
+    build_ctx sc = oc; /* the check only: the points merge as the mode says */
+    sc.faithful |= joined;
     if (st == SC_OK)
-        st = build_mesh_solid(&oc, loc, what, 0, strict, &f, &p, &empty);
+        st = build_mesh_solid(&sc, loc, what, 0, strict, &f, &p, &empty);
     if (st == SC_OK && faces && !empty) {
         *faces = f;
         memset(&f, 0, sizeof f);
@@ -1652,18 +1660,21 @@ static sc_status import_solid(const build_ctx *c, const sc_location *loc,
 
 /* The objects of an AMF or 3MF file a, each its own solid (OpenSCAD
  * unites them with CGAL), an object without triangles left out as
- * OpenSCAD's empty PolySet. One object is built as an STL is. */
+ * OpenSCAD's empty PolySet. One object is built as an STL is. joined:
+ * import_solid's. */
 static sc_status import_objects(const build_ctx *c, const model_import *import,
-                                int strict, const amf_mesh *a, build_prims *out,
-                                const char **empty, build_mesh_faces *faces)
+                                int strict, int joined, const amf_mesh *a,
+                                build_prims *out, const char **empty,
+                                build_mesh_faces *faces)
 {
     const sc_location *loc = &import->file_loc;
     uint32_t with_faces = 0;
     for (uint32_t o = 0; o < a->object_count; o++)
         with_faces += a->object_faces[o + 1] > a->object_faces[o];
     if (with_faces <= 1)
-        return import_solid(c, loc, "imported mesh", strict, 0, a->points, a->point_count,
-                            a->indices, a->face_start, a->face_count, out, empty, faces);
+        return import_solid(c, loc, "imported mesh", strict, 0, 0, a->points,
+                            a->point_count, a->indices, a->face_start, a->face_count, out,
+                            empty, faces);
     sc_status st = SC_OK;
     for (uint32_t o = 0; o < a->object_count && st == SC_OK; o++) {
         uint32_t first = a->object_points[o], faces = a->object_faces[o];
@@ -1682,7 +1693,7 @@ static sc_status import_objects(const build_ctx *c, const model_import *import,
                 start[f] = 3 * f;
             char what[64];
             snprintf(what, sizeof what, "object %u of the imported file", o + 1);
-            st = import_solid(c, loc, what, strict, 1, a->points + first,
+            st = import_solid(c, loc, what, strict, 1, joined, a->points + first,
                               a->object_points[o + 1] - first, indices, start, count, out,
                               empty, NULL);
         }
@@ -1709,9 +1720,10 @@ sc_status build_import_unsupported(const build_ctx *c, const sc_location *loc,
 }
 
 /* build_import_parts; with faces, also the merged faces of a file of one
- * object in *faces (empty when *empty is set, and for several objects). */
+ * object in *faces (empty when *empty is set, and for several objects);
+ * joined: import_solid's. */
 static sc_status import_parts(const build_ctx *c, const model_import *import, int strict,
-                              build_prims *out, const char **empty,
+                              int joined, build_prims *out, const char **empty,
                               build_mesh_faces *faces)
 {
     memset(out, 0, sizeof *out);
@@ -1786,14 +1798,18 @@ static sc_status import_parts(const build_ctx *c, const model_import *import, in
     else if (objects ? a.face_count == 0 : m.face_count == 0)
         *empty = "import without faces is empty";
     else if (objects)
-        st = import_objects(c, import, strict, &a, out, empty, faces);
+        st = import_objects(c, import, strict, joined, &a, out, empty, faces);
     else
-        st = import_solid(c, &loc, "imported mesh", strict, 0, m.points, m.point_count,
+        st = import_solid(c, &loc, "imported mesh", strict, 0, 0, m.points, m.point_count,
                           m.indices, m.face_start, m.face_count, out, empty, faces);
     /* several objects, every one left out or without volume: their
-     * warnings were given */
-    if (st == SC_OK && !*empty && out->count == 0)
+     * warnings were given, and the import counts as left out, so that
+     * its parent does not add that it is empty (build_notes) */
+    if (st == SC_OK && !*empty && out->count == 0) {
         *empty = "";
+        if (c->notes)
+            c->notes->left_out++;
+    }
     if (st != SC_OK) {
         free(out->items);
         memset(out, 0, sizeof *out);
@@ -1806,18 +1822,14 @@ static sc_status import_parts(const build_ctx *c, const model_import *import, in
 
 /* The union of parts as one mesh leaf, for the builders that take an
  * import's triangles (hull's corners, projection's faces): each part
- * closed and turned outward, so that winding numbers add up to the
- * union; with a part drawn by the parity rule, the parity rule for all
- * (where such a part overlaps another, the overlap is lost). */
+ * closed and turned outward (import_solid leaves out the others, joined),
+ * so that winding numbers add up to the union. */
 static sc_status join_parts(const build_ctx *c, const sc_location *loc,
                             const build_prims *parts, prim *out)
 {
     size_t tris = 0;
-    int parity = 0;
-    for (uint32_t i = 0; i < parts->count; i++) {
+    for (uint32_t i = 0; i < parts->count; i++)
         tris += parts->items[i].u.mesh.mesh->tri_count;
-        parity |= parts->items[i].u.mesh.mesh->parity;
-    }
     if (tris > UINT32_MAX / 3)
         return err_set(c->error, SC_ERR_LIMIT, loc, "imported mesh has too many faces");
     vec3 *v = malloc(3 * tris * sizeof *v);
@@ -1835,7 +1847,7 @@ static sc_status join_parts(const build_ctx *c, const sc_location *loc,
         for (size_t i = 0; i < k; i++)
             index[i] = (uint32_t)i;
         const prim_mesh *m =
-            prim_mesh_create_rule(c->csg, v, index, (uint32_t)(k / 3), parity);
+            prim_mesh_create_rule(c->csg, v, index, (uint32_t)(k / 3), 0);
         if (!m) {
             st = err_nomem(c->error, loc);
         } else {
@@ -1852,7 +1864,13 @@ static sc_status join_parts(const build_ctx *c, const sc_location *loc,
 sc_status build_import_parts(const build_ctx *c, const model_import *import, int strict,
                              build_prims *out, const char **empty)
 {
-    return import_parts(c, import, strict, out, empty, NULL);
+    return import_parts(c, import, strict, 0, out, empty, NULL);
+}
+
+sc_status build_import_solids(const build_ctx *c, const model_import *import,
+                              build_prims *out, const char **empty)
+{
+    return import_parts(c, import, c->strict, 1, out, empty, NULL);
 }
 
 sc_status build_import_faces(const build_ctx *c, const model_import *import,
@@ -1860,7 +1878,7 @@ sc_status build_import_faces(const build_ctx *c, const model_import *import,
 {
     memset(faces, 0, sizeof *faces);
     build_prims parts;
-    sc_status st = import_parts(c, import, 0, &parts, empty, faces);
+    sc_status st = import_parts(c, import, 0, 0, &parts, empty, faces);
     free(parts.items);
     return st;
 }
@@ -1869,7 +1887,7 @@ sc_status build_import(const build_ctx *c, const model_import *import, prim *out
                        const char **empty)
 {
     build_prims parts;
-    sc_status st = build_import_parts(c, import, 0, &parts, empty);
+    sc_status st = build_import_solids(c, import, &parts, empty);
     if (st == SC_OK && !*empty)
         st = parts.count == 1 ? (*out = parts.items[0], SC_OK)
                               : join_parts(c, &import->file_loc, &parts, out);

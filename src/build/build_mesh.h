@@ -125,9 +125,16 @@ sc_status build_import_unsupported(const build_ctx *c, const sc_location *loc,
  * import makes nothing ("" when its warnings were given). */
 sc_status build_import_parts(const build_ctx *c, const model_import *import, int strict,
                              struct build_prims *out, const char **empty);
-/* The same, not strict, as one leaf: several objects' leaves joined into
- * one mesh (winding numbers add up to their union), for the builders
- * that take an import's triangles (hull, projection). */
+/* The same, strict as c->strict, for the builders that need closed
+ * solids (CGAL; the joined mesh of build_import): of several objects, one
+ * that is not closed is left out with its warning in both modes, as
+ * OpenSCAD 2021.01 leaves it out of the objects' union (a CGAL union),
+ * also where c takes no note. */
+sc_status build_import_solids(const build_ctx *c, const model_import *import,
+                              struct build_prims *out, const char **empty);
+/* build_import_solids as one leaf: several objects' leaves joined into one
+ * mesh (winding numbers add up to their union), for the builders that
+ * take an import's triangles (hull, projection). */
 sc_status build_import(const build_ctx *c, const model_import *import, prim *out,
                        const char **empty);
 /* build_import_parts, not strict, for a file of one object (STL, OFF),
