@@ -7,7 +7,16 @@
 #   2. OpenSCAD's CGAL render of the .csg to a binary STL, with a time limit,
 #      cached in BUILD_DIR/tests/real/cache under the .csg's checksum (the
 #      outcome too: a timeout or OpenSCAD's error is not retried until the
-#      .csg or the limit changes);
+#      .csg or the limit changes). A 2D model, which OpenSCAD renders but
+#      will not write as an STL ("Current top level object is not a 3D
+#      object"), is checked from here on as WORKDIR/extruded.csg: the whole
+#      file under linear_extrude(height = 1), which OpenSCAD does write.
+#      Its mesh is OpenSCAD's own 2D polygons extruded (binary STL floats),
+#      the same outline its .svg or .dxf export would carry, without a
+#      second file format and its rounding in between; the faithful render
+#      is compared with it as any model's (the slab's silhouette is the
+#      outline, its top face the depth). A model that imports by a
+#      relative path would not find its file from WORKDIR: none does now;
 #   3. spancast render in exact mode, then in --faithful mode, each with
 #      mask and depth, on the camera fitcam frames from the STL (spancast's
 #      default camera when there is no STL);
@@ -62,34 +71,49 @@ if "$spancast" info "$csg" >"$work/info.txt" 2>&1; then
     leaves=${leaves:--} nodes=${nodes:--}
 fi
 
-# 2. The reference mesh, cached.
+# 2. The reference mesh, cached: reference sets key, stl and cgal_status
+# for the .csg at $csg.
 cache=$build/tests/real/cache
 mkdir -p "$cache"
-key=$(sha256sum "$csg" | cut -c 1-32)
-stl=$cache/$key.stl
-if [[ ! -e "$cache/$key.status" ]] || { grep -q '^timeout' "$cache/$key.status" &&
-    [[ "$(cat "$cache/$key.limit" 2>/dev/null)" != "$cgal_limit" ]]; }; then
-    t0=$(now)
-    timeout "$cgal_limit" openscad --export-format binstl -o "$stl.$$.tmp" "$csg" \
-        >"$cache/$key.log" 2>&1
-    rc=$?
-    t1=$(now)
-    if ((rc == 0)) && [[ -s "$stl.$$.tmp" ]]; then
-        mv "$stl.$$.tmp" "$stl"
-        echo ok >"$cache/$key.status"
-    elif ((rc == 124)); then
-        echo "timeout after ${cgal_limit} s" >"$cache/$key.status"
-    else
-        msg=$(grep -v -E '^ *(Rendering|Total|Geometry|Simple|Vertices|Halfedges|Edges|Halffacets|Facets|Volumes|Top level|CGAL|Compiling|Parsing)' \
-            "$cache/$key.log" | tail -n 1)
-        echo "error: ${msg:-OpenSCAD exit status $rc}" >"$cache/$key.status"
+reference() {
+    key=$(sha256sum "$csg" | cut -c 1-32)
+    stl=$cache/$key.stl
+    if [[ ! -e "$cache/$key.status" ]] || { grep -q '^timeout' "$cache/$key.status" &&
+        [[ "$(cat "$cache/$key.limit" 2>/dev/null)" != "$cgal_limit" ]]; }; then
+        t0=$(now)
+        timeout "$cgal_limit" openscad --export-format binstl -o "$stl.$$.tmp" "$csg" \
+            >"$cache/$key.log" 2>&1
+        rc=$?
+        t1=$(now)
+        if ((rc == 0)) && [[ -s "$stl.$$.tmp" ]]; then
+            mv "$stl.$$.tmp" "$stl"
+            echo ok >"$cache/$key.status"
+        elif ((rc == 124)); then
+            echo "timeout after ${cgal_limit} s" >"$cache/$key.status"
+        else
+            msg=$(grep -v -E '^ *(Rendering|Total|Geometry|Simple|Vertices|Halfedges|Edges|Halffacets|Facets|Volumes|Top level|CGAL|Compiling|Parsing)' \
+                "$cache/$key.log" | tail -n 1)
+            echo "error: ${msg:-OpenSCAD exit status $rc}" >"$cache/$key.status"
+        fi
+        rm -f "$stl.$$.tmp"
+        elapsed "$t0" "$t1" >"$cache/$key.seconds"
+        echo "$cgal_limit" >"$cache/$key.limit"
     fi
-    rm -f "$stl.$$.tmp"
-    elapsed "$t0" "$t1" >"$cache/$key.seconds"
-    echo "$cgal_limit" >"$cache/$key.limit"
+    cgal_status=$(cat "$cache/$key.status")
+    cgal_seconds=$(cat "$cache/$key.seconds")
+}
+twod=
+reference
+if [[ $cgal_status == *"Current top level object is not a 3D object"* ]]; then
+    {
+        printf 'linear_extrude(height = 1, center = false, convexity = 1, scale = [1, 1], $fn = 0, $fa = 12, $fs = 2) {\n'
+        cat "$csg"
+        printf '\n}\n'
+    } >"$work/extruded.csg"
+    csg=$work/extruded.csg
+    reference
+    twod="2D: compared as its linear_extrude(height = 1)"
 fi
-cgal_status=$(cat "$cache/$key.status")
-cgal_seconds=$(cat "$cache/$key.seconds")
 cgal=ok
 case $cgal_status in
 ok) ;;
@@ -177,6 +201,7 @@ if [[ $exact != ok ]]; then
 else
     reason=${judged:-${exact_judged:-$note}}
 fi
+[[ -n "$twod" ]] && reason="$twod${reason:+; $reason}"
 printf '%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\n' "$model" "$leaves" \
     "$nodes" "$exact" "$exact_seconds" "$faithful" "$faithful_seconds" "$cgal" \
     "$cgal_seconds" "$verdict" "${mismatches:--}" "${max_err:--}" "$exact_verdict" \
