@@ -34,10 +34,12 @@ open_second = [cube((0, 0, 0), 4), cube((6, 0, 0), 4, drop=1)]
 # a closed cube [0, 4]^3 and, overlapping it, [2, 6]^3 without its last
 # triangle
 open_overlap = [cube((0, 0, 0), 4), cube((2, 2, 2), 4, drop=1)]
-# two objects, both open
+# two objects, both open; one open object alone
 all_open = [cube((0, 0, 0), 4, drop=1), cube((6, 0, 0), 4, drop=1)]
+one_open = [cube((2, 2, 2), 4, drop=1)]
 for name, objects in [('overlap', overlap), ('touching', touching), ('open', open_second),
-                      ('open_overlap', open_overlap), ('all_open', all_open)]:
+                      ('open_overlap', open_overlap), ('all_open', all_open),
+                      ('one_open', one_open)]:
     open(name + '.amf', 'w').write(amf(objects))
     threemf(name + '.3mf', objects)
 # a mesh object placed by two build items (one moved), and used by a
@@ -164,6 +166,20 @@ for ext in amf 3mf; do
         [ "$(cat err.txt)" = "$w" ] ||
             fail "projection-open-$ext.csg $mode: stderr '$(cat err.txt)', want '$w'"
     done
+done
+
+# --strict makes an open mesh under projection an error, as its warning
+# says (before, the projection's builder asked for no strictness: the
+# warning, and the mesh drawn by the parity rule)
+for ext in amf 3mf; do
+    printf 'linear_extrude(height = 1) {\n\tprojection() {\n\t\timport(file = "one_open.%s");\n\t}\n}\n' \
+        $ext >projection-one-open-$ext.csg
+    check
+    "$bin" inside projection-one-open-$ext.csg --point=3,3,0.5 --strict >in.txt 2>err.txt &&
+        fail "projection-one-open-$ext.csg --strict: exit 0"
+    w="projection-one-open-$ext.csg:3:17: error: imported mesh is not closed (edge (6, 6, 2)-(6, 2, 6) is used by 1 face)"
+    [ "$(cat err.txt)" = "$w" ] ||
+        fail "projection-one-open-$ext.csg --strict: '$(cat err.txt)', want '$w'"
 done
 
 # the same under a boolean that CGAL evaluates (a hull of a difference):
