@@ -456,6 +456,31 @@ static void test_face_triangles(void **state)
     static const uint32_t star_tris[7][3] = {{0, 1, 2}, {0, 2, 5}, {0, 5, 7}, {0, 7, 8},
                                              {2, 3, 4}, {2, 4, 5}, {5, 6, 7}};
     check_triangles("star", star, 9, star_tris, 1);
+    /* A star of four points whose inner points 1, 3, 5, 7 lie on one
+     * circle: not monotone, so libtess2's sweep splits it into regions
+     * first, and which of the square's diagonals stays is decided by
+     * that split and the order of its faces (not by the Delaunay rule). */
+    static const double square_star[8][3] = {
+        {40.1272, 98.7203, 0},        {36.4246, 98.0665, -0.0467},
+        {33.2797, 100.1272, -0.0056}, {33.9316, 96.425, 0.0308},
+        {31.8728, 93.2797, 0},        {35.5771, 93.9416, 0},
+        {38.7171, 91.8776, -0.0291},  {38.0665, 95.5754, 0}};
+    static const uint32_t square_star_tris[6][3] = {{0, 1, 7}, {1, 2, 3}, {1, 3, 5},
+                                                    {1, 5, 7}, {3, 4, 5}, {5, 6, 7}};
+    check_triangles("square star", square_star, 8, square_star_tris, 1);
+    /* a star of six points at random radii: an edge within libtess2's
+     * 0.01 of the Delaunay tie, where its regions decide */
+    static const double six_star[12][3] = {
+        {3.0651, 2.6145, 0.027},     {0.3624, 1.0214, 0},
+        {-0.6676, 3.615, -0.0294},   {-0.5831, 0.6836, 0.0097},
+        {-3.8405, 1.3627, 0.0224},   {-0.8345, -0.1541, 0.0163},
+        {-2.0655, -1.7619, -0.0448}, {-0.3148, -0.8872, -0.0365},
+        {0.6732, -3.6453, 0.0296},   {0.7006, -0.8213, -0.0414},
+        {2.7594, -0.9791, -0.0061},  {1.0925, 0.2018, 0}};
+    static const uint32_t six_star_tris[10][3] = {
+        {0, 1, 11}, {1, 2, 3},  {1, 3, 11}, {3, 4, 5},  {3, 5, 11},
+        {5, 6, 7},  {5, 7, 11}, {7, 8, 9},  {7, 9, 11}, {9, 10, 11}};
+    check_triangles("six star", six_star, 12, six_star_tris, 1);
     /* points 2 and 3 on one point of the projection: libtess2 keeps 3
      * (listed first), OpenSCAD mends the sliver 1 2 3 */
     static const double pinched[6][3] = {

@@ -540,9 +540,15 @@ int build_mesh_quad_crosses(const vec3 q[4], int reversed)
  * point in (s, t) order, which every convex one is) is a single region:
  * libtess2's sweep adds no edge inside it, and the region is split by
  * libtess2's monotone rule, exactly. Any other simple projection is
- * split into regions by the sweep, which is not reproduced: it is cut
- * into ears instead and then flipped the same way, so only its ties may
- * differ from OpenSCAD. A projection that crosses or touches itself, or
+ * split into monotone regions as libtess2's sweep splits it (tess_sweep:
+ * its connections at left and right vertices and its temporary edges,
+ * made and removed in its order, so that its faces come in its order),
+ * then each region as above. Checked against OpenSCAD 2021.01's STL
+ * export of 1,300 faces of 5 to 14 points (792 of them not monotone,
+ * most with four points on one circle): 30 differ, all not monotone,
+ * where 288 did when such faces were cut into ears; the 30 are ties
+ * whose cause was not found (the sweep's splices and its dictionary's
+ * order of edges are not followed). A projection that crosses or touches itself, or
  * has two points on one point of the plane, is split as a fan about its
  * first point (docs/meshes.md). */
 
@@ -624,9 +630,9 @@ static uint32_t tess_connect(tess_mesh *m, uint32_t e_org, uint32_t e_dst)
 
 /* tessMeshTessellateMonoRegion on the region face. Returns 0 when it
  * makes no progress (the region was not monotone after all). */
-static int tess_mono_region(tess_mesh *m, uint32_t n)
+static int tess_mono_region(tess_mesh *m, uint32_t face, uint32_t n)
 {
-    uint32_t up = m->face_edge[TESS_REGION];
+    uint32_t up = m->face_edge[face];
     long guard = 4 * (long)n + 8;
     while (tess_leq(m, TESS_DST(m, up), m->org[up]) && guard-- > 0)
         up = m->lprev[up];
@@ -663,37 +669,252 @@ static double tess_cross(const tess_mesh *m, uint32_t a, uint32_t b, uint32_t c)
            ((double)m->t[b] - m->t[a]) * ((double)m->s[c] - m->s[a]);
 }
 
-/* Cuts the region face into ears (a simple polygon, counter-clockwise).
- * Returns 0 when no ear is found (a projection too close to degenerate). */
-static int tess_ears(tess_mesh *m)
+/* tessMeshDelete of the edge whose half e runs from right to left (as an
+ * edge of libtess2's sweep): the face left of e, below the edge, joins the
+ * face above and leaves the list. */
+static void tess_delete(tess_mesh *m, uint32_t e)
 {
-    for (;;) {
-        uint32_t start = m->face_edge[TESS_REGION], lo = start;
-        if (m->lnext[m->lnext[m->lnext[lo]]] == lo)
-            return 1;
-        int cut = 0;
-        do {
-            uint32_t a = m->org[lo], b = TESS_DST(m, lo), c = TESS_DST(m, m->lnext[lo]);
-            if (tess_cross(m, a, b, c) > 0) {
-                int empty = 1;
-                for (uint32_t x = m->lnext[m->lnext[lo]]; x != lo && empty;
-                     x = m->lnext[x]) {
-                    uint32_t q = m->org[x];
-                    if (q != a && q != c && tess_cross(m, a, b, q) >= 0 &&
-                        tess_cross(m, b, c, q) >= 0 && tess_cross(m, c, a, q) >= 0)
-                        empty = 0;
-                }
-                if (empty) {
-                    tess_connect(m, m->lnext[lo], lo);
-                    cut = !m->full;
-                    break;
-                }
-            }
-            lo = m->lnext[lo];
-        } while (lo != start);
-        if (!cut)
-            return 0;
+    uint32_t sym = e ^ 1u, dead = m->lface[e], kept = m->lface[sym];
+    m->lnext[m->lprev[e]] = m->lnext[sym];
+    m->lprev[m->lnext[sym]] = m->lprev[e];
+    m->lnext[m->lprev[sym]] = m->lnext[e];
+    m->lprev[m->lnext[e]] = m->lprev[sym];
+    uint32_t start = m->lnext[sym];
+    m->face_edge[kept] = start;
+    uint32_t x = start;
+    do {
+        m->lface[x] = kept;
+        x = m->lnext[x];
+    } while (x != start);
+    if (dead != kept) {
+        m->face_next[m->face_prev[dead]] = m->face_next[dead];
+        m->face_prev[m->face_next[dead]] = m->face_prev[dead];
     }
+    m->lface[e] = m->lface[sym] = TESS_HEAD; /* gone: in no inside face */
+}
+
+/* The half-edge of an inside face that ends at a and from whose corner the
+ * segment a-b leaves into the face; UINT32_MAX when there is none. */
+static uint32_t tess_corner(const tess_mesh *m, uint32_t a, uint32_t b)
+{
+    for (uint32_t e = 0; e < m->edges; e++) {
+        if (TESS_DST(m, e) != a || !m->inside[m->lface[e]])
+            continue;
+        uint32_t before = m->org[e], after = TESS_DST(m, m->lnext[e]);
+        double ux = (double)m->s[a] - m->s[before], uy = (double)m->t[a] - m->t[before];
+        double wx = (double)m->s[after] - m->s[a], wy = (double)m->t[after] - m->t[a];
+        double dx = (double)m->s[b] - m->s[a], dy = (double)m->t[b] - m->t[a];
+        double turn = ux * wy - uy * wx;
+        double from_w = wx * dy - wy * dx;    /* d left of the way out */
+        double to_back = dx * -uy - dy * -ux; /* d right of the way back */
+        int in = turn > 0 ? from_w > 0 && to_back > 0 : from_w > 0 || to_back > 0;
+        if (in)
+            return e;
+    }
+    return UINT32_MAX;
+}
+
+/* tessMeshConnect of a to b inside the face both corners share: the new
+ * face, left of a -> b, goes before the old one. Returns the half-edge
+ * from a to b, or UINT32_MAX when no face holds the segment. */
+static uint32_t tess_link(tess_mesh *m, uint32_t a, uint32_t b)
+{
+    uint32_t into_a = tess_corner(m, a, b);
+    if (into_a == UINT32_MAX)
+        return UINT32_MAX;
+    for (uint32_t e = m->lnext[into_a]; e != into_a; e = m->lnext[e])
+        if (m->org[e] == b) {
+            uint32_t made = tess_connect(m, into_a, e);
+            return m->full ? UINT32_MAX : made;
+        }
+    return UINT32_MAX;
+}
+
+/* An edge crossing the sweep line: right and left ends (contour points),
+ * whether it is a temporary edge of a right vertex (libtess2's
+ * fixUpperEdge) and its half-edge from left to right in the mesh, and
+ * whether the region below it is inside. */
+typedef struct tess_active {
+    uint32_t right, left, half;
+    int fix, inside;
+} tess_active;
+
+#define TESS_NONE UINT32_MAX /* a sentinel's end: beyond every point */
+
+/* 1 when point v lies above the active edge a (libtess2's EdgeSign). */
+static int tess_above(const tess_mesh *m, const tess_active *a, uint32_t v)
+{
+    return tess_edge_sign(m, a->left, v, a->right) > 0;
+}
+
+/* VertLeq with the sentinels' far ends. */
+static int tess_leq_far(const tess_mesh *m, uint32_t a, uint32_t b, int far_left)
+{
+    if (a == TESS_NONE || b == TESS_NONE)
+        return far_left ? a == TESS_NONE : b == TESS_NONE;
+    return tess_leq(m, a, b);
+}
+
+/* Replaces the temporary edge act[k] by a real one between v and its left
+ * end (libtess2's connect, drawn from v when from_v, then FixUpperEdge).
+ * Returns 0 on failure. */
+static int tess_fix(tess_mesh *m, tess_active *act, uint32_t k, uint32_t v, int from_v)
+{
+    tess_active *a = &act[k];
+    if (a->inside) {
+        uint32_t half = from_v ? tess_link(m, v, a->left) : tess_link(m, a->left, v);
+        if (half == TESS_NONE)
+            return 0;
+        if (a->half != TESS_NONE)
+            tess_delete(m, a->half ^ 1u);
+    }
+    a->right = v;
+    a->fix = 0;
+    a->half = TESS_NONE;
+    return 1;
+}
+
+/* libtess2's sweep over a simple polygon (contour 0 .. n - 1, counter-
+ * clockwise, no two points equal): the diagonals its ConnectLeftVertex,
+ * ConnectRightVertex and FixUpperEdge add to the inside, in its order, so
+ * that the faces split off come in its order too. Each face left is
+ * monotone. Returns 0 on failure, -1 when out of memory. */
+static int tess_sweep(tess_mesh *m, uint32_t n)
+{
+    uint32_t *order = malloc(n * sizeof *order);
+    tess_active *act = malloc((2 * (size_t)n + 2) * sizeof *act);
+    if (!order || !act) {
+        free(order);
+        free(act);
+        return -1;
+    }
+    for (uint32_t i = 0; i < n; i++)
+        order[i] = i;
+    for (uint32_t i = 1; i < n; i++) /* insertion sort in (s, t) order */
+        for (uint32_t j = i; j > 0 && !tess_leq(m, order[j - 1], order[j]); j--) {
+            uint32_t x = order[j];
+            order[j] = order[j - 1];
+            order[j - 1] = x;
+        }
+    uint32_t count = 0;
+    int ok = 1;
+    for (uint32_t q = 0; ok && q < n; q++) {
+        uint32_t v = order[q], prev = (v + n - 1) % n, next = (v + 1) % n;
+        uint32_t i = 0;
+        while (i < count && act[i].right != v)
+            i++;
+        if (i == count) { /* no edge ends here: a left vertex */
+            uint32_t k = 0;
+            while (k < count && !tess_above(m, &act[k], v))
+                k++;
+            int inside = k > 0 && act[k - 1].inside;
+            uint32_t up_left = k > 0 ? act[k - 1].left : TESS_NONE;
+            uint32_t lo_left = k < count ? act[k].left : TESS_NONE;
+            /* reg = VertLeq(eLo->Dst, eUp->Dst) ? regUp : regLo */
+            int use_up = tess_leq_far(m, lo_left, up_left, 1);
+            if (use_up && k == 0)
+                use_up = 0;
+            if (!use_up && k == count)
+                use_up = 1;
+            uint32_t r = use_up ? k - 1 : k;
+            int fix = r < count && act[r].fix;
+            if (inside || fix) {
+                if (fix) {
+                    ok = tess_fix(m, act, r, v, use_up);
+                    i = r;
+                } else {
+                    uint32_t helper = act[r].left;
+                    uint32_t half =
+                        use_up ? tess_link(m, v, helper) : tess_link(m, helper, v);
+                    ok = half != TESS_NONE;
+                    memmove(&act[k + 1], &act[k], (count - k) * sizeof *act);
+                    act[k] = (tess_active){v, helper, TESS_NONE, 0, inside};
+                    count++;
+                    i = k;
+                }
+            } else {
+                i = k; /* nothing ends at v: its right edges go in at k */
+                goto add_right;
+            }
+        }
+        /* the edges ending at v are act[i .. j) */
+        if (ok && i > 0 && act[i - 1].fix && act[i - 1].right != v) {
+            ok = tess_fix(m, act, i - 1, v, 1); /* TopLeftRegion */
+            i--;
+        }
+        uint32_t j = i;
+        while (ok && j < count && act[j].right == v)
+            j++;
+        while (ok && j < count && act[j].fix &&
+               act[j].right != v) { /* FinishLeftRegions */
+            ok = tess_fix(m, act, j, v, 1);
+            j++;
+        }
+        if (!ok)
+            break;
+        memmove(&act[i], &act[j], (count - j) * sizeof *act);
+        count -= j - i;
+    add_right:;
+        int prev_right = tess_leq(m, v, prev), next_right = tess_leq(m, v, next);
+        if (!prev_right && !next_right) {
+            /* ConnectRightVertex: to the nearer right end above or below */
+            uint32_t up_right = i > 0 ? act[i - 1].right : TESS_NONE;
+            uint32_t lo_right = i < count ? act[i].right : TESS_NONE;
+            uint32_t target =
+                tess_leq_far(m, lo_right, up_right, 0) ? lo_right : up_right;
+            int inside = i > 0 && act[i - 1].inside;
+            uint32_t half = TESS_NONE;
+            if (inside) {
+                if (target == TESS_NONE)
+                    ok = 0;
+                else
+                    half = tess_link(m, v, target);
+                ok = ok && half != TESS_NONE;
+            }
+            memmove(&act[i + 1], &act[i], (count - i) * sizeof *act);
+            act[i] = (tess_active){target, v, half, 1, inside};
+            count++;
+            continue;
+        }
+        /* the right-going edges, upper first; the region below the edge
+         * from a to b is inside when the contour runs right to left there */
+        tess_active add[2];
+        uint32_t adds = 0;
+        if (next_right)
+            add[adds++] = (tess_active){next, v, TESS_NONE, 0, 0};
+        if (prev_right)
+            add[adds++] = (tess_active){prev, v, TESS_NONE, 0, 1};
+        if (adds == 2) {
+            /* order by slope: the edge to the point further left decides */
+            int next_up = tess_leq(m, next, prev) ? tess_edge_sign(m, v, next, prev) > 0
+                                                  : tess_edge_sign(m, v, prev, next) < 0;
+            if (!next_up) {
+                tess_active x = add[0];
+                add[0] = add[1];
+                add[1] = x;
+            }
+        }
+        memmove(&act[i + adds], &act[i], (count - i) * sizeof *act);
+        memcpy(&act[i], add, adds * sizeof *add);
+        count += adds;
+    }
+    free(order);
+    free(act);
+    return ok;
+}
+
+/* The sweep, then each of its faces split by the monotone rule, in the
+ * order of libtess2's face list (tessMeshTessellateInterior). */
+static int tess_sweep_regions(tess_mesh *m, uint32_t n)
+{
+    int ok = tess_sweep(m, n);
+    for (uint32_t f = m->face_next[TESS_HEAD]; ok > 0 && f != TESS_HEAD;) {
+        uint32_t next = m->face_next[f];
+        if (!tess_mono_region(m, f, n))
+            ok = 0;
+        f = next;
+    }
+    return ok;
 }
 
 static int tess_internal(const tess_mesh *m, uint32_t e)
@@ -863,7 +1084,7 @@ int build_mesh_face_triangles(const vec3 *p, uint32_t n, int reversed, uint32_t 
         }
         return 1;
     }
-    uint32_t half_edges = 4 * n, faces = n + 2;
+    uint32_t half_edges = 6 * n, faces = 2 * n + 4;
     /* one block: s, t by face position, then by vertex (float); the
      * uint32_t arrays; the marks */
     size_t words = 5 * (size_t)n + 5 * (size_t)half_edges + 3 * (size_t)faces;
@@ -949,10 +1170,17 @@ int build_mesh_face_triangles(const vec3 *p, uint32_t n, int reversed, uint32_t 
         if (count == 3)
             ok = 1;
         else if (tess_monotone(&m, count))
-            ok = tess_mono_region(&m, count);
+            ok = tess_mono_region(&m, TESS_REGION, count);
         else
-            ok = tess_ears(&m);
-        ok = ok && m.faces == count;
+            ok = tess_sweep_regions(&m, count);
+        uint32_t live = 0;
+        for (uint32_t f = m.face_next[TESS_HEAD]; f != TESS_HEAD; f = m.face_next[f])
+            live++;
+        if (ok < 0) {
+            free(block);
+            return -1;
+        }
+        ok = ok && live == count - 2;
     }
     if (ok) {
         tess_refine(&m, stack);

@@ -390,7 +390,13 @@ static int is_command(char c)
     return c && strchr(commands, c) != NULL;
 }
 
-/* Calls the path's state machine on each token; 0 on failure. */
+/* Calls the path's state machine on each token; 0 on failure.
+ *
+ * A command's numbers fill its fields in order (command_fields) as they
+ * come, as OpenSCAD's parser fills them, so a command cut short by the
+ * next letter leaves what it read: S and T reflect the control point that
+ * the last numbers read left behind. The last number completes the
+ * command (complete_command); then the same letter repeats. */
 typedef struct path_state {
     reader *r;
     const xml_element *e;
@@ -398,7 +404,8 @@ typedef struct path_state {
     const mat3 *m;
     points cur;
     double x, y, xx, yy, rx, ry, cx1, cy1, cx2, cy2, angle;
-    int large, sweep, last_cubic, last_quad, point, negate, closed;
+    double large, sweep; /* an arc's flags as read; set above 0.5 */
+    int last_cubic, last_quad, point, negate, closed;
     char cmd;
     char exp[128];
     size_t exp_n;
@@ -415,6 +422,113 @@ static int end_subpath(path_state *s, int may_stroke)
             ok = commit_path(s->r, s->shape, s->m, &s->cur);
     }
     s->cur.count = 0;
+    return ok;
+}
+
+/* The fields the numbers of command c fill, in order, into field[]; their
+ * count (0 for z, which takes none). xx and yy are the end point, made
+ * absolute when the command completes. */
+static int command_fields(path_state *s, char c, double **field)
+{
+    switch (tolower((unsigned char)c)) {
+    case 'a':
+        field[0] = &s->rx;
+        field[1] = &s->ry;
+        field[2] = &s->angle;
+        field[3] = &s->large;
+        field[4] = &s->sweep;
+        field[5] = &s->xx;
+        field[6] = &s->yy;
+        return 7;
+    case 'c':
+        field[0] = &s->cx1;
+        field[1] = &s->cy1;
+        field[2] = &s->cx2;
+        field[3] = &s->cy2;
+        field[4] = &s->xx;
+        field[5] = &s->yy;
+        return 6;
+    case 's':
+        field[0] = &s->cx2;
+        field[1] = &s->cy2;
+        field[2] = &s->xx;
+        field[3] = &s->yy;
+        return 4;
+    case 'q':
+        field[0] = &s->cx1;
+        field[1] = &s->cy1;
+        field[2] = &s->xx;
+        field[3] = &s->yy;
+        return 4;
+    case 'l':
+    case 'm':
+    case 't':
+        field[0] = &s->xx;
+        field[1] = &s->yy;
+        return 2;
+    case 'h':
+        field[0] = &s->xx;
+        return 1;
+    case 'v':
+        field[0] = &s->yy;
+        return 1;
+    default:
+        return 0;
+    }
+}
+
+/* Draws the command whose numbers are all read, from (x, y) to (xx, yy),
+ * which becomes the current point; 0 on failure. */
+static int complete_command(path_state *s, int rel)
+{
+    reader *r = s->r;
+    points *cur = &s->cur;
+    char c = (char)tolower((unsigned char)s->cmd);
+    int ok = 1;
+    if (c == 'h')
+        s->yy = s->y;
+    if (c == 'v')
+        s->xx = s->x;
+    if (rel) {
+        if (c != 'v')
+            s->xx += s->x;
+        if (c != 'h')
+            s->yy += s->y;
+        if (c == 'c' || c == 'q') {
+            s->cx1 += s->x;
+            s->cy1 += s->y;
+        }
+        if (c == 'c' || c == 's') {
+            s->cx2 += s->x;
+            s->cy2 += s->y;
+        }
+    }
+    switch (c) {
+    case 'a':
+        ok = arc_to(r, cur, s->x, s->y, fabs(s->rx), fabs(s->ry), s->xx, s->yy, s->angle,
+                    s->large > 0.5, s->sweep > 0.5);
+        break;
+    case 'c':
+    case 's':
+        ok = cubic_to(r, cur, s->x, s->y, s->cx1, s->cy1, s->cx2, s->cy2, s->xx, s->yy);
+        break;
+    case 'q':
+    case 't':
+        ok = quad_to(r, cur, s->x, s->y, s->cx1, s->cy1, s->xx, s->yy);
+        break;
+    case 'm':
+        s->cmd = rel ? 'l' : 'L';
+        ok = end_subpath(s, 1) && push(r, cur, s->xx, s->yy);
+        break;
+    default: /* l, h, v */
+        ok = push(r, cur, s->xx, s->yy);
+        break;
+    }
+    s->x = s->xx;
+    s->y = s->yy;
+    s->point = -1;
+    s->last_cubic = c == 'c' || c == 's';
+    s->last_quad = c == 'q' || c == 't';
     return ok;
 }
 
@@ -459,227 +573,35 @@ static int path_token(path_state *s, const char *v, size_t n)
         }
         s->negate = 0;
     }
-    reader *r = s->r;
-    points *cur = &s->cur;
-    int rel = islower((unsigned char)s->cmd);
     int ok = 1;
-    switch (s->cmd) {
-    case 'a':
-    case 'A':
-        switch (s->point) {
-        case 0:
-            s->rx = fabs(p);
-            break;
-        case 1:
-            s->ry = fabs(p);
-            break;
-        case 2:
-            s->angle = p;
-            break;
-        case 3:
-            s->large = p > 0.5;
-            break;
-        case 4:
-            s->sweep = p > 0.5;
-            break;
-        case 5:
-            s->xx = rel ? s->x + p : p;
-            break;
-        case 6:
-            s->yy = rel ? s->y + p : p;
-            ok = arc_to(r, cur, s->x, s->y, s->rx, s->ry, s->xx, s->yy, s->angle,
-                        s->large, s->sweep);
-            s->x = s->xx;
-            s->y = s->yy;
-            s->point = -1;
-            s->last_cubic = s->last_quad = 0;
-            break;
-        }
-        break;
-    case 'l':
-    case 'L':
-        switch (s->point) {
-        case 0:
-            s->xx = rel ? s->x + p : p;
-            break;
-        case 1:
-            s->yy = rel ? s->y + p : p;
-            ok = push(r, cur, s->xx, s->yy);
-            s->x = s->xx;
-            s->y = s->yy;
-            s->point = -1;
-            s->last_cubic = s->last_quad = 0;
-            break;
-        }
-        break;
-    case 'c':
-    case 'C':
-        switch (s->point) {
-        case 0:
-            s->cx1 = p;
-            break;
-        case 1:
-            s->cy1 = p;
-            break;
-        case 2:
-            s->cx2 = p;
-            break;
-        case 3:
-            s->cy2 = p;
-            break;
-        case 4:
-            s->xx = rel ? s->x + p : p;
-            break;
-        case 5:
-            s->yy = rel ? s->y + p : p;
-            if (rel) {
-                s->cx1 += s->x;
-                s->cy1 += s->y;
-                s->cx2 += s->x;
-                s->cy2 += s->y;
-            }
-            ok = cubic_to(r, cur, s->x, s->y, s->cx1, s->cy1, s->cx2, s->cy2, s->xx,
-                          s->yy);
-            s->x = s->xx;
-            s->y = s->yy;
-            s->point = -1;
-            s->last_cubic = 1;
-            s->last_quad = 0;
-            break;
-        }
-        break;
-    case 's':
-    case 'S':
-        switch (s->point) {
-        case 0:
-            if (s->last_cubic) {
-                s->cx1 = 2 * s->x - s->cx2;
-                s->cy1 = 2 * s->y - s->cy2;
-            } else {
-                s->cx1 = s->x;
-                s->cy1 = s->y;
-            }
-            s->cx2 = p;
-            break;
-        case 1:
-            s->cy2 = p;
-            break;
-        case 2:
-            s->xx = rel ? s->x + p : p;
-            break;
-        case 3:
-            s->yy = rel ? s->y + p : p;
-            if (rel) {
-                s->cx2 += s->x;
-                s->cy2 += s->y;
-            }
-            ok = cubic_to(r, cur, s->x, s->y, s->cx1, s->cy1, s->cx2, s->cy2, s->xx,
-                          s->yy);
-            s->x = s->xx;
-            s->y = s->yy;
-            s->point = -1;
-            s->last_cubic = 1;
-            s->last_quad = 0;
-            break;
-        }
-        break;
-    case 'q':
-    case 'Q':
-        switch (s->point) {
-        case 0:
-            s->cx1 = p;
-            break;
-        case 1:
-            s->cy1 = p;
-            break;
-        case 2:
-            s->xx = rel ? s->x + p : p;
-            break;
-        case 3:
-            s->yy = rel ? s->y + p : p;
-            if (rel) {
-                s->cx1 += s->x;
-                s->cy1 += s->y;
-            }
-            ok = quad_to(r, cur, s->x, s->y, s->cx1, s->cy1, s->xx, s->yy);
-            s->x = s->xx;
-            s->y = s->yy;
-            s->point = -1;
-            s->last_cubic = 0;
-            s->last_quad = 1;
-            break;
-        }
-        break;
-    case 't':
-    case 'T':
-        switch (s->point) {
-        case 0:
-            if (s->last_quad) {
-                s->cx1 = 2 * s->x - s->cx1;
-                s->cy1 = 2 * s->y - s->cy1;
-            } else {
-                s->cx1 = s->x;
-                s->cy1 = s->y;
-            }
-            s->xx = rel ? s->x + p : p;
-            break;
-        case 1:
-            s->yy = rel ? s->y + p : p;
-            ok = quad_to(r, cur, s->x, s->y, s->cx1, s->cy1, s->xx, s->yy);
-            s->x = s->xx;
-            s->y = s->yy;
-            s->point = -1;
-            s->last_cubic = 0;
-            s->last_quad = 1;
-            break;
-        }
-        break;
-    case 'm':
-    case 'M':
-        switch (s->point) {
-        case 0:
-            s->xx = rel ? s->x + p : p;
-            break;
-        case 1:
-            s->yy = rel ? s->y + p : p;
-            s->cmd = rel ? 'l' : 'L';
-            ok = end_subpath(s, 1) && push(r, cur, s->xx, s->yy);
-            s->x = s->xx;
-            s->y = s->yy;
-            s->point = -1;
-            s->last_cubic = s->last_quad = 0;
-            break;
-        }
-        break;
-    case 'v':
-    case 'V':
-        if (s->point == 0) {
-            s->y = rel ? s->y + p : p;
-            ok = push(r, cur, s->x, s->y);
-            s->point = -1;
-            s->last_cubic = s->last_quad = 0;
-        }
-        break;
-    case 'h':
-    case 'H':
-        if (s->point == 0) {
-            s->x = rel ? s->x + p : p;
-            ok = push(r, cur, s->x, s->y);
-            s->point = -1;
-            s->last_cubic = s->last_quad = 0;
-        }
-        break;
-    case 'z':
-    case 'Z':
+    if (s->cmd == 'z' || s->cmd == 'Z') {
+        /* on the letter and on every number after it */
+        points *cur = &s->cur;
         if (cur->count) {
             double x0 = cur->xy[0], y0 = cur->xy[1];
-            ok = push(r, cur, x0, y0) && end_subpath(s, 0);
+            ok = push(s->r, cur, x0, y0) && end_subpath(s, 0);
             s->x = x0;
             s->y = y0;
         }
         s->closed = 1;
         s->last_cubic = s->last_quad = 0;
-        break;
+    } else if (s->point >= 0) {
+        double *field[7];
+        int count = command_fields(s, s->cmd, field);
+        char c = (char)tolower((unsigned char)s->cmd);
+        if (s->point == 0 && c == 's') {
+            /* the first control point mirrors the last cubic's second */
+            s->cx1 = s->last_cubic ? 2 * s->x - s->cx2 : s->x;
+            s->cy1 = s->last_cubic ? 2 * s->y - s->cy2 : s->y;
+        } else if (s->point == 0 && c == 't') {
+            s->cx1 = s->last_quad ? 2 * s->x - s->cx1 : s->x;
+            s->cy1 = s->last_quad ? 2 * s->y - s->cy1 : s->y;
+        }
+        if (s->point < count) {
+            *field[s->point] = p;
+            if (s->point == count - 1)
+                ok = complete_command(s, islower((unsigned char)s->cmd));
+        }
     }
     s->point++;
     return ok;

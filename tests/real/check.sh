@@ -31,7 +31,8 @@
 # Writes WORKDIR/row, one tab-separated line: model, leaves, nodes, exact,
 # exact seconds, faithful, faithful seconds, cgal, cgal seconds, verdict,
 # mask mismatches, max depth error, exact verdict (match, MISMATCH,
-# unbounded or -), its max depth error over the bound, reason (the first
+# differs: a mismatch whose cause exact-differs gives, unbounded or -),
+# its max depth error over the bound, reason (the first
 # failure's message; for a model that passes without an exact bound, why).
 # Exits 0 when both renders succeed, the faithful cross-check matches and
 # the exact one matches or has no bound, 1 otherwise, 2 on bad usage.
@@ -192,6 +193,14 @@ if [[ $exact == ok && $verdict != - ]]; then
         read -r _ _ _ exact_err _ <<<"$row"
         exact_judged="exact: $(grep -m 1 -E 'mismatches|tolerance' "$work/compare_exact.log" ||
             head -n 1 "$work/compare_exact.log")"
+        # A difference whose cause is known and checked (exact-differs: the
+        # model, a tab, the cause) is "differs", with the cause before
+        # compare's complaint; it still fails.
+        known=$(awk -F '\t' -v m="$model" '$1 == m { print $2 }' "$here/exact-differs")
+        if [[ -n "$known" ]]; then
+            exact_verdict=differs
+            exact_judged="exact differs: $known (${exact_judged#exact: })"
+        fi
     fi
 fi
 # The reason: the exact render's error first, else the cross-checks'.
