@@ -797,6 +797,9 @@ sc_status render_scene(const csg_tree *tree, const shading *look,
     int tiles_x = (width + RENDER_TILE_SIZE - 1) / RENDER_TILE_SIZE;
     int tiles_y = (height + RENDER_TILE_SIZE - 1) / RENDER_TILE_SIZE;
     int tiles = tiles_x * tiles_y; /* at most 2048 * 2048 */
+    /* A thread without a tile would only start, wait and spin. */
+    if (threads > tiles)
+        threads = tiles > 0 ? tiles : 1;
     int done = 0;
     sc_render_stats *stats = &c.fb->stats;
     stats->threads = threads;
@@ -848,6 +851,14 @@ sc_status render_scene(const csg_tree *tree, const shading *look,
         arena_free(&th.scratch);
         cancel_leave(&scope);
     }
+    /* libgomp's idle workers spin (GOMP_SPINCOUNT, 300,000 turns by
+     * default) waiting for another parallel region, on the cores the
+     * caller's next steps need: writing the image and exiting, for the
+     * command line. Released here, they end now; a later render starts
+     * its threads again (tens of microseconds). Inside an enclosing
+     * parallel region this does nothing. */
+    if (threads > 1)
+        omp_pause_resource_all(omp_pause_soft);
     if (options->progress)
         options->progress(options->progress_user, 1.0);
     release_views(&c);
