@@ -2,7 +2,9 @@
  *
  * The image (or the --region crop of it) is cut into 16 x 16 tiles handed
  * to OpenMP threads one at a time (schedule dynamic), so a thread that drew
- * cheap background tiles takes more. Every pixel sample is computed from
+ * cheap background tiles takes more; no more threads start than there are
+ * tiles, and they are released when the trace ends rather than left
+ * spinning beside the caller's next steps. Every pixel sample is computed from
  * its own rays and its own random numbers, seeded by the pixel's position
  * in the full image and the sample's index (sample.h), so the buffers do
  * not depend on the thread count, the order of the tiles or the crop. Each
