@@ -123,31 +123,44 @@ static float float_bits(uint32_t bits)
     return v;
 }
 
-/* The 8-bit encoder by thresholds gives color_linear_to_srgb8's byte: at
- * every threshold and the float before it (where the code changes), at
- * every 4099th float of [0, 1] (a run over all of them, about 10^9, found
- * no difference), and at values outside it. */
+/* The 8-bit encoder by table gives color_linear_to_srgb8's byte: at every
+ * threshold and the float before it (where the code changes), at every
+ * bucket's first float and the float before it (where the table's start
+ * changes), at every 4099th float of [0, 1] (a run over all of them,
+ * about 10^9, found no difference), and at values outside it. The
+ * thresholds are where the code changes: the float before each has a
+ * smaller code. */
 static void test_srgb8_thresholds(void **state)
 {
     (void)state;
-    float t[COLOR_SRGB8_THRESHOLDS];
-    color_srgb8_thresholds(t);
+    color_srgb8_table *table = malloc(sizeof *table);
+    assert_non_null(table);
+    color_srgb8_table_init(table);
+    const float *t = table->above;
     for (unsigned k = 0; k < COLOR_SRGB8_THRESHOLDS; k++) {
         uint32_t bits;
         memcpy(&bits, &t[k], sizeof bits);
-        assert_int_equal(color_srgb8_code(t, t[k]), k + 1);
+        assert_int_equal(color_srgb8_encode(table, t[k]), k + 1);
         assert_int_equal(color_linear_to_srgb8(t[k]), k + 1);
-        assert_int_equal(color_srgb8_code(t, float_bits(bits - 1)),
+        assert_int_equal(color_srgb8_encode(table, float_bits(bits - 1)),
                          color_linear_to_srgb8(float_bits(bits - 1)));
         assert_true(color_linear_to_srgb8(float_bits(bits - 1)) <= k);
     }
+    for (uint32_t b = 1; b < COLOR_SRGB8_BUCKETS; b++) {
+        uint32_t bits = b << 16;
+        assert_int_equal(color_srgb8_encode(table, float_bits(bits)),
+                         color_linear_to_srgb8(float_bits(bits)));
+        assert_int_equal(color_srgb8_encode(table, float_bits(bits - 1)),
+                         color_linear_to_srgb8(float_bits(bits - 1)));
+    }
     for (uint32_t bits = 0; bits <= 0x3f800000u; bits += 4099)
-        assert_int_equal(color_srgb8_code(t, float_bits(bits)),
+        assert_int_equal(color_srgb8_encode(table, float_bits(bits)),
                          color_linear_to_srgb8(float_bits(bits)));
     const float outside[] = {NAN, -INFINITY, -1, -0.0f, 0, 1, 1.5f, INFINITY};
     for (size_t k = 0; k < sizeof outside / sizeof *outside; k++)
-        assert_int_equal(color_srgb8_code(t, outside[k]),
+        assert_int_equal(color_srgb8_encode(table, outside[k]),
                          color_linear_to_srgb8(outside[k]));
+    free(table);
 }
 
 static void test_color_png(void **state)

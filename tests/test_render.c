@@ -320,6 +320,39 @@ static void test_threads_identical(void **state)
     csg_tree_free(tree);
 }
 
+/* A render starts no more threads than it has 16 x 16 tiles (a thread
+ * without one would only start and wait), and says so in its stats; the
+ * buffers are those of one thread. At 600 x 600 the colour and normal
+ * buffers (4.3 MB each) take the huge-page allocation: the same bytes
+ * again, whatever the thread count. */
+static void test_threads_at_most_tiles(void **state)
+{
+    (void)state;
+    csg_builder *b = csg_builder_new();
+    uint32_t kids[2] = {add_sphere(b, v3(0, 0, 0), 1),
+                        add_box(b, v3(0, -2, 0), v3(2, 0, 2))};
+    csg_tree *tree = finish(b, csg_builder_op(b, CSG_DIFFERENCE, kids, 2));
+    const int sizes[][3] = {
+        {8, 6, 1}, {16, 16, 1}, {20, 10, 2}, {33, 17, 3}, {600, 600, 3}};
+    for (size_t k = 0; k < sizeof sizes / sizeof *sizes; k++) {
+        sc_render_options o;
+        sc_render_options_init(&o);
+        o.width = sizes[k][0];
+        o.height = sizes[k][1];
+        o.want_depth = o.want_mask = o.want_normal = 1;
+        o.threads = 1;
+        sc_framebuffer *one = render(tree, &o);
+        o.threads = 3;
+        sc_framebuffer *three = render(tree, &o);
+        assert_int_equal(one->stats.threads, 1);
+        assert_int_equal(three->stats.threads, sizes[k][2]);
+        assert_true(buffers_equal(one, three));
+        sc_framebuffer_release(one);
+        sc_framebuffer_release(three);
+    }
+    csg_tree_free(tree);
+}
+
 /* Seen from inside a sphere every pixel hits its far wall, whose outward
  * normal faces away from the viewer; shading uses the reversed normal, so
  * the centre is lit by a point light beside the eye (inside the solid too,
@@ -934,6 +967,7 @@ int main(void)
         cmocka_unit_test(test_sphere_mask_and_depth),
         cmocka_unit_test(test_centre_depth_double),
         cmocka_unit_test(test_threads_identical),
+        cmocka_unit_test(test_threads_at_most_tiles),
         cmocka_unit_test(test_two_sided),
         cmocka_unit_test(test_auto_camera_frames_model),
         cmocka_unit_test(test_empty_scene),

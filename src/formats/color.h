@@ -14,6 +14,9 @@
 #ifndef SPANCAST_FORMATS_COLOR_H
 #define SPANCAST_FORMATS_COLOR_H
 
+#include <stdint.h>
+#include <string.h>
+
 #ifdef __cplusplus
 extern "C" {
 #endif
@@ -29,21 +32,47 @@ unsigned char color_linear_to_srgb8(float v);
 
 /* The same codes for a whole image without a power per value: code k
  * (1..255) begins at the float thresholds[k - 1], the smallest float
- * whose color_linear_to_srgb8 is k or more, found by bisection on the
- * float's bits (positive floats order as their bit patterns), 255 * 31
- * evaluations. The encoding is monotone, so the code of v is the number
- * of thresholds at or below v: color_srgb8_code, 8 comparisons, the
- * very byte color_linear_to_srgb8 gives (NaN and v <= 0 give 0, v >= 1
- * gives 255). */
+ * whose color_linear_to_srgb8 is k or more, found from the inverse
+ * transfer function's guess by stepping one float at a time until the
+ * code changes there (positive floats order as their bit patterns). The
+ * encoding is monotone, so the code of v is the number of thresholds at
+ * or below v. */
 #define COLOR_SRGB8_THRESHOLDS 255
 void color_srgb8_thresholds(float thresholds[COLOR_SRGB8_THRESHOLDS]);
 
-static inline unsigned char color_srgb8_code(const float *thresholds, float v)
+/* The floats of (0, 1) by their top 16 bits (sign, exponent and 7 bits of
+ * the fraction): 0x3f80 buckets, each 2^-7 of an octave wide. */
+#define COLOR_SRGB8_BUCKETS 0x3f80
+
+/* The encoder of a whole image: the thresholds, and the code of each
+ * bucket's smallest float, from which the code of v is found by counting
+ * the thresholds in v's bucket at or below v. A bucket spans at most one
+ * threshold: its width is v / 128 to v / 256, and the code climbs
+ * 255 * 12.92 a unit on the linear toe (0.05 codes a bucket there) and
+ * 112 * v^(-7/12) on the power curve (0.44 codes a bucket just below 1,
+ * the most). So color_srgb8_encode makes one comparison where a search
+ * over the thresholds made eight; the loop only keeps it exact without
+ * that bound. */
+typedef struct color_srgb8_table {
+    float above[COLOR_SRGB8_THRESHOLDS + 1];  /* the thresholds; above[255] infinite */
+    unsigned char first[COLOR_SRGB8_BUCKETS]; /* code of each bucket's smallest float */
+} color_srgb8_table;
+
+void color_srgb8_table_init(color_srgb8_table *table);
+
+/* color_linear_to_srgb8(v), the very byte: NaN and v <= 0 give 0, v >= 1
+ * gives 255. */
+static inline unsigned char color_srgb8_encode(const color_srgb8_table *table, float v)
 {
-    unsigned k = 0;
-    for (unsigned step = 128; step; step >>= 1)
-        if (k + step <= COLOR_SRGB8_THRESHOLDS && v >= thresholds[k + step - 1])
-            k += step;
+    if (!(v > 0))
+        return 0;
+    if (v >= 1)
+        return 255;
+    uint32_t bits;
+    memcpy(&bits, &v, sizeof bits);
+    unsigned k = table->first[bits >> 16];
+    while (v >= table->above[k])
+        k++;
     return (unsigned char)k;
 }
 

@@ -323,10 +323,10 @@ sc_status sc_framebuffer_write_color(const sc_framebuffer *fb, const char *path,
     unsigned char *encoded = malloc(values ? values : 1);
     if (!encoded)
         return out_of_memory(path, error);
-    float thresholds[COLOR_SRGB8_THRESHOLDS];
-    color_srgb8_thresholds(thresholds);
+    color_srgb8_table table;
+    color_srgb8_table_init(&table);
     for (size_t k = 0; k < values; k++)
-        encoded[k] = color_srgb8_code(thresholds, fb->color[k]);
+        encoded[k] = color_srgb8_encode(&table, fb->color[k]);
     img.sample = IMGIO_UINT8;
     img.pixels = encoded;
     img.color_space = "sRGB";

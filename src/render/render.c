@@ -2,7 +2,9 @@
  *
  * The image (or the --region crop of it) is cut into 16 x 16 tiles handed
  * to OpenMP threads one at a time (schedule dynamic), so a thread that drew
- * cheap background tiles takes more. Every pixel sample is computed from
+ * cheap background tiles takes more; no more threads start than there are
+ * tiles, and they are released when the trace ends rather than left
+ * spinning beside the caller's next steps. Every pixel sample is computed from
  * its own rays and its own random numbers, seeded by the pixel's position
  * in the full image and the sample's index (sample.h), so the buffers do
  * not depend on the thread count, the order of the tiles or the crop. Each
@@ -57,6 +59,7 @@
  * stopped render frees its buffers and returns SC_ERR_CANCELLED or the
  * budget's SC_ERR_LIMIT.
  */
+#define _DEFAULT_SOURCE /* madvise, MADV_HUGEPAGE, posix_memalign */
 #include "render/render.h"
 
 #include <math.h>
@@ -64,6 +67,9 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#if defined(__linux__)
+#include <sys/mman.h>
+#endif
 
 #include "base/arena.h"
 #include "base/cancel.h"
@@ -492,6 +498,26 @@ void sc_framebuffer_release(sc_framebuffer *fb)
     free(fb);
 }
 
+/* A buffer of the framebuffer, freed by free(). The trace writes each of
+ * its pages once, and the first write of each 4 KiB page is a page fault
+ * (on a virtual machine, several microseconds): a buffer of a few
+ * megabytes is aligned to 2 MiB and offered to the kernel's transparent
+ * huge pages, one fault for 512 pages where the kernel grants them. */
+static void *buffer_alloc(size_t size)
+{
+#if defined(__linux__) && defined(MADV_HUGEPAGE)
+    const size_t huge = (size_t)2 << 20;
+    if (size >= 2 * huge) {
+        void *p = NULL;
+        if (posix_memalign(&p, huge, size) != 0)
+            return NULL;
+        (void)madvise(p, size & ~(huge - 1), MADV_HUGEPAGE); /* only advice */
+        return p;
+    }
+#endif
+    return malloc(size);
+}
+
 sc_framebuffer *render_framebuffer_new(const sc_render_options *o, int width, int height)
 {
     sc_framebuffer *fb = calloc(1, sizeof *fb);
@@ -503,13 +529,13 @@ sc_framebuffer *render_framebuffer_new(const sc_render_options *o, int width, in
     size_t pixels = (size_t)width * (size_t)height;
     int ok = 1;
     if (o->want_color)
-        ok &= (fb->color = malloc(pixels * 3 * sizeof(float))) != NULL;
+        ok &= (fb->color = buffer_alloc(pixels * 3 * sizeof(float))) != NULL;
     if (o->want_depth)
-        ok &= (fb->depth = malloc(pixels * sizeof(float))) != NULL;
+        ok &= (fb->depth = buffer_alloc(pixels * sizeof(float))) != NULL;
     if (o->want_mask)
         ok &= (fb->mask = malloc(pixels)) != NULL;
     if (o->want_normal)
-        ok &= (fb->normal = malloc(pixels * 3 * sizeof(float))) != NULL;
+        ok &= (fb->normal = buffer_alloc(pixels * 3 * sizeof(float))) != NULL;
     if (o->want_id)
         ok &= (fb->id = malloc(pixels * sizeof(int32_t))) != NULL;
     if (!ok) {
@@ -797,6 +823,9 @@ sc_status render_scene(const csg_tree *tree, const shading *look,
     int tiles_x = (width + RENDER_TILE_SIZE - 1) / RENDER_TILE_SIZE;
     int tiles_y = (height + RENDER_TILE_SIZE - 1) / RENDER_TILE_SIZE;
     int tiles = tiles_x * tiles_y; /* at most 2048 * 2048 */
+    /* A thread without a tile would only start, wait and spin. */
+    if (threads > tiles)
+        threads = tiles > 0 ? tiles : 1;
     int done = 0;
     sc_render_stats *stats = &c.fb->stats;
     stats->threads = threads;
@@ -848,6 +877,14 @@ sc_status render_scene(const csg_tree *tree, const shading *look,
         arena_free(&th.scratch);
         cancel_leave(&scope);
     }
+    /* libgomp's idle workers spin (GOMP_SPINCOUNT, 300,000 turns by
+     * default) waiting for another parallel region, on the cores the
+     * caller's next steps need: writing the image and exiting, for the
+     * command line. Released here, they end now; a later render starts
+     * its threads again (tens of microseconds). Inside an enclosing
+     * parallel region this does nothing. */
+    if (threads > 1)
+        omp_pause_resource_all(omp_pause_soft);
     if (options->progress)
         options->progress(options->progress_user, 1.0);
     release_views(&c);
