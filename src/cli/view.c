@@ -55,8 +55,6 @@
 #define _POSIX_C_SOURCE 200809L
 
 #include <SDL.h>
-#include <X11/Xlib.h>
-#include <X11/Xproto.h>
 
 #include <errno.h>
 #include <math.h>
@@ -1011,29 +1009,6 @@ static void wake(void *user)
 
 /* ---- start and loop ---- */
 
-/* Xlib's handler before ours: SDL's, which ends in Xlib's default one
- * (print and exit 1). Written once, on the main thread, before any other
- * thread starts. */
-static XErrorHandler x11_previous_handler;
-
-/* SDL 2.26 wakes a window that waits for events by sending it an X client
- * message on a second display connection (its "request" display). A wake-up
- * sent just before the window is destroyed can reach the X server after the
- * window is gone: the server answers BadWindow to that SendEvent, and Xlib
- * reads the error when SDL_Quit closes the connection, where the default
- * handler ends the process with exit 1 after a clean quit. Requests to X
- * servers from two connections have no order between them, so waiting
- * cannot rule it out; SDL 2.28 no longer sends the wake-up to a destroyed
- * window. This ignores exactly that error (a SendEvent to a window that no
- * longer exists, which the wake-up needs no answer from) and hands every
- * other error to the handler before it. */
-static int x11_ignore_late_wakeup(Display *display, XErrorEvent *event)
-{
-    if (event->error_code == BadWindow && event->request_code == X_SendEvent)
-        return 0;
-    return x11_previous_handler ? x11_previous_handler(display, event) : 0;
-}
-
 /* Starts SDL on a display that shows something; prints why not and
  * returns 0 without one. */
 static int open_display(void)
@@ -1048,6 +1023,8 @@ static int open_display(void)
               stderr);
         return 0;
     }
+    /* Before SDL_Init, so that SDL_Quit puts it back (view_x11.c). */
+    view_x11_guard();
     if (SDL_Init(SDL_INIT_VIDEO) != 0) {
         fprintf(stderr, "spancast: error: view needs a display (%s)\n", SDL_GetError());
         return 0;
@@ -1061,8 +1038,6 @@ static int open_display(void)
         SDL_Quit();
         return 0;
     }
-    if (!strcmp(driver, "x11"))
-        x11_previous_handler = XSetErrorHandler(x11_ignore_late_wakeup);
     return 1;
 }
 

@@ -1,5 +1,5 @@
 /* What the parts of the viewer share (spancast-view: view.c, view_camera.c,
- * view_worker.c, view_loader.c). The viewer is a front-end on the public
+ * view_worker.c, view_loader.c, view_x11.c). The viewer is a front-end on the public
  * API only: it loads with sc_scene_load (or through OpenSCAD, scad.c),
  * renders with sc_render and picks with sc_scene_pixel_ray and
  * sc_scene_spans, so that what the window shows is what `spancast render`
@@ -28,6 +28,14 @@ view_model *view_model_retain(view_model *model);
 
 /* Drops a reference; the last one releases the scene. NULL is ignored. */
 void view_model_release(view_model *model);
+
+/* ---- Xlib (view_x11.c) ---- */
+
+/* Installs the handler that ignores SDL 2.26's late wake-up (a SendEvent
+ * to a window already destroyed) and hands every other X error to the
+ * handler before it. Call before SDL_Init: SDL_Quit restores the handler
+ * SDL_Init found, and the late error is read inside SDL_Quit. Idempotent. */
+void view_x11_guard(void);
 
 /* ---- the camera (view_camera.c) ---- */
 
