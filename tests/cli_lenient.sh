@@ -383,6 +383,60 @@ for model in bad_files.csg bad_flat.csg; do
     [ -e strict.png ] && fail "$model --strict: an image was written"
 done
 
+# ---- surface(): a file that cannot be opened or read, an illegal value ----
+# OpenSCAD 2021.01 (openscad -o x.stl x.scad) warns "The file '...'
+# couldn't be opened.", "Can't read PNG image '...'" or "Illegal value in
+# '...'" and renders the rest; a file without a PNG signature is read as
+# .dat, and of a .dat file the values before the illegal one are kept.
+# --strict makes each warning the error (exit 1, no image).
+left_out="; the surface is empty, as OpenSCAD leaves it out (--strict makes it an error)"
+stopped="; the rest of the file is ignored, as OpenSCAD stops reading there (--strict makes it an error)"
+printf 'not a png\n' >notpng.png
+printf '\211PNG\r\n\032\n\0\0\0\0' >broken.png
+printf '1 2 3\n4 x 6\n7 8 9\n' >illegal.dat
+printf '1 2 3\n4\n' >kept.dat
+printf 'union() {\n\tcube(size = [1, 1, 1]);\n\tsurface(file = "missing.png");\n\tsurface(file = "notpng.png");\n}\n' >surface_empty.csg
+printf 'union() {\n\tcube(size = [1, 1, 1]);\n\tsurface(file = "broken.png");\n}\n' >surface_broken.csg
+printf 'surface(file = "illegal.dat", center = false, invert = false);\n' >surface_illegal.csg
+printf 'surface(file = "kept.dat", center = false, invert = false);\n' >surface_kept.csg
+for mode in "" --faithful; do
+    warns surface_empty.csg "surface_empty.csg:3:17: warning: surface: the file 'missing.png' couldn't be opened: No such file or directory$left_out
+surface_empty.csg:4:17: warning: surface: illegal value in 'notpng.png' line 1: 'not' is not a number$stopped" $mode
+    check
+    "$bin" compare surface_empty.csg cube_ref.csg -q $mode >compare.txt 2>compare.err &&
+        [ "$(tail -n 1 compare.txt)" = same ] ||
+        fail "surface_empty.csg $mode: $(cat compare.err) $(tail -n 12 compare.txt | tr '\n' ' ')"
+    check
+    "$bin" render surface_broken.csg -o out.png --imgsize=64,48 -q $mode 2>err.txt ||
+        fail "surface_broken.csg $mode: exit $?: $(cat err.txt)"
+    case $(cat err.txt) in
+    "surface_broken.csg:3:17: warning: surface: can't read PNG image 'broken.png': "*"$left_out") ;;
+    *) fail "surface_broken.csg $mode: stderr '$(cat err.txt)'" ;;
+    esac
+    "$bin" compare surface_broken.csg cube_ref.csg -q $mode >compare.txt 2>compare.err &&
+        [ "$(tail -n 1 compare.txt)" = same ] ||
+        fail "surface_broken.csg $mode: $(cat compare.err) $(tail -n 12 compare.txt | tr '\n' ' ')"
+    warns surface_illegal.csg "surface_illegal.csg:1:16: warning: surface: illegal value in 'illegal.dat' line 2: 'x' is not a number$stopped" $mode
+    check
+    "$bin" compare surface_illegal.csg surface_kept.csg -q $mode >compare.txt 2>compare.err &&
+        [ "$(tail -n 1 compare.txt)" = same ] ||
+        fail "surface_illegal.csg $mode: $(cat compare.err) $(tail -n 12 compare.txt | tr '\n' ' ')"
+    for model in surface_empty.csg surface_broken.csg surface_illegal.csg; do
+        check
+        rm -f strict.png
+        "$bin" render "$model" -o strict.png -q --strict $mode 2>err.txt &&
+            fail "$model --strict $mode: exit 0"
+        case $model in
+        surface_empty.csg) want="surface_empty.csg:3:17: error: surface: the file 'missing.png' couldn't be opened: No such file or directory" ;;
+        surface_broken.csg) want="surface_broken.csg:3:17: error: surface: can't read PNG image 'broken.png': *" ;;
+        *) want="surface_illegal.csg:1:16: error: surface: illegal value in 'illegal.dat' line 2: 'x' is not a number" ;;
+        esac
+        # shellcheck disable=SC2053 # want is a pattern for the PNG reader's reason
+        [[ "$(cat err.txt)" == $want ]] || fail "$model --strict $mode: '$(cat err.txt)', want '$want'"
+        [ -e strict.png ] && fail "$model --strict $mode: an image was written"
+    done
+done
+
 # ---- a lossy mask ----
 warns cube_ref.csg "spancast: warning: --mask=m.jpg: JPEG is lossy, so the mask is no longer exactly 0 and 255 at the model's edges (.png, .tif and .exr are exact)" --mask=m.jpg
 check

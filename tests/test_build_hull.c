@@ -732,36 +732,147 @@ static void test_surface_png(void **state)
     sc_scene_release(s);
 }
 
-static void test_surface_errors(void **state)
+/* Loading text as name with --strict fails with status and a message that
+ * starts with prefix and ends with suffix. */
+static void check_error_strict(const char *name, const char *text, sc_status status,
+                               const char *prefix, const char *suffix)
+{
+    sc_scene *s = (sc_scene *)1;
+    sc_error e;
+    sc_load_options o;
+    sc_load_options_init(&o);
+    o.strict = 1;
+    assert_int_equal(sc_scene_load_string(name, text, strlen(text), &o, &s, &e), status);
+    assert_null(s);
+    char buf[1024];
+    const char *got = sc_error_format(&e, buf, sizeof buf);
+    size_t n = strlen(got), p = strlen(prefix), q = strlen(suffix);
+    if (n < p + q || memcmp(got, prefix, p) || memcmp(got + n - q, suffix, q))
+        fail_msg("error '%s', want '%s...%s'", got, prefix, suffix);
+}
+
+/* Loads text (a cube and a surface) and checks its one warning, at the
+ * file name (column 99), by its start and end, and that the cube is
+ * still there. */
+static sc_scene *load_surface_warned(const char *text, int faithful, const char *prefix,
+                                     const char *suffix)
+{
+    char path[1024];
+    snprintf(path, sizeof path, "%s/m.csg", work());
+    sc_scene *s = load_opts(path, text, faithful);
+    assert_int_equal(sc_scene_warning_count(s), 1);
+    const sc_error *w = sc_scene_warning(s, 0);
+    assert_int_equal(w->line, 1);
+    assert_int_equal(w->column, 99);
+    size_t n = strlen(w->message), p = strlen(prefix), q = strlen(suffix);
+    if (n < p + q || memcmp(w->message, prefix, p) ||
+        memcmp(w->message + n - q, suffix, q))
+        fail_msg("warning '%s', want '%s...%s'", w->message, prefix, suffix);
+    assert_true(inside(s, -4.5, 0.5, 0.5));
+    return s;
+}
+
+/* OpenSCAD 2021.01 renders a model whose surface file cannot be opened or
+ * read with a warning, the surface empty; of a .dat file with an illegal
+ * value it keeps what it read before the value (the value's line up to
+ * it, the rest of the line padded with 0) and ignores the rest. So does
+ * spancast, in both modes; --strict makes each warning the error. */
+static void test_surface_lenient(void **state)
 {
     (void)state;
-    char path[1024], expected[2048];
+    char path[1024], prefix[2048];
     snprintf(path, sizeof path, "%s/m.csg", work());
-    const char *text = "surface(file = \"nope.dat\");";
-    snprintf(
-        expected, sizeof expected,
-        "%s:1:16: error: surface: cannot read '%s/nope.dat': No such file or directory",
-        path, work());
-    check_error(path, text, SC_ERR_IO, expected);
-    const char bad[] = "1 2 3\n4 x 6\n";
+    const char *left_out = "; the surface is empty, as OpenSCAD leaves it out (--strict "
+                           "makes it an error)";
+    const char *stopped = "; the rest of the file is ignored, as OpenSCAD stops reading "
+                          "there (--strict makes it an error)";
+    const char bad[] = "1 2 3\n4 x 6\n7 8 9\n";
     write_file("bad.dat", bad, sizeof bad - 1);
-    snprintf(expected, sizeof expected,
-             "%s:1:16: error: surface: '%s/bad.dat' line 2: 'x' is not a number", path,
-             work());
-    check_error(path, "surface(file = \"bad.dat\");", SC_ERR_SEMANTIC, expected);
-    /* a broken PNG */
+    const char not_png[] = "not a png\n";
+    write_file("bad.png", not_png, sizeof not_png - 1);
     const unsigned char broken[16] = {0x89, 'P',  'N', 'G', '\r', '\n',
                                       0x1a, '\n', 0,   0,   0};
     write_file("broken.png", broken, sizeof broken);
-    sc_scene *s = (sc_scene *)1;
-    sc_error e;
-    const char *t = "surface(file = \"broken.png\");";
-    assert_int_equal(sc_scene_load_string(path, t, strlen(t), NULL, &s, &e), SC_ERR_IO);
-    char buf[1024];
-    snprintf(expected, sizeof expected,
-             "%s:1:16: error: surface: cannot read PNG image '%s/broken.png': ", path,
+    for (int faithful = 0; faithful < 2; faithful++) {
+        /* a file that cannot be opened: empty */
+        snprintf(prefix, sizeof prefix,
+                 "surface: the file '%s/nope.png' couldn't be opened: No such file or "
+                 "directory",
+                 work());
+        sc_scene *s = load_surface_warned(
+            "multmatrix([[1, 0, 0, -5], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]) "
+            "{ cube(1); } surface(file = \"nope.png\");",
+            faithful, prefix, left_out);
+        assert_int_equal(scene_tree(s)->leaf_count, 1);
+        sc_scene_release(s);
+        /* not a PNG (no signature): a .dat file, whose first value is
+         * illegal, so nothing is read: empty, with no more warning */
+        snprintf(prefix, sizeof prefix,
+                 "surface: illegal value in '%s/bad.png' line 1: 'not' is not a number",
+                 work());
+        s = load_surface_warned(
+            "multmatrix([[1, 0, 0, -5], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]) "
+            "{ cube(1); } surface(file = \"bad.png\");",
+            faithful, prefix, stopped);
+        assert_int_equal(scene_tree(s)->leaf_count, 1);
+        sc_scene_release(s);
+        /* a PNG signature, then nothing readable: empty */
+        snprintf(prefix, sizeof prefix,
+                 "surface: can't read PNG image '%s/broken.png': ", work());
+        s = load_surface_warned(
+            "multmatrix([[1, 0, 0, -5], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]) "
+            "{ cube(1); } surface(file = \"broken.png\");",
+            faithful, prefix, left_out);
+        assert_int_equal(scene_tree(s)->leaf_count, 1);
+        sc_scene_release(s);
+        /* an illegal value on line 2: rows 1 2 3 and 4 0 0, the floor at
+         * min(0, 1 - 1) from the values read, as OpenSCAD builds it */
+        snprintf(prefix, sizeof prefix,
+                 "surface: illegal value in '%s/bad.dat' line 2: 'x' is not a number",
+                 work());
+        s = load_surface_warned(
+            "multmatrix([[1, 0, 0, -5], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]) "
+            "{ cube(1); } surface(file = \"bad.dat\");",
+            faithful, prefix, stopped);
+        assert_int_equal(scene_tree(s)->leaf_count, 2);
+        assert_true(inside(s, 0.5, 0.5, 1.74)); /* (1 + 2 + 4 + 0) / 4 */
+        assert_false(inside(s, 0.5, 0.5, 1.76));
+        assert_true(inside(s, 1.5, 0.5, 1.24)); /* (2 + 3 + 0 + 0) / 4 */
+        assert_false(inside(s, 1.5, 0.5, 1.26));
+        assert_true(inside(s, 1.5, 0.5, 0.01));
+        assert_false(inside(s, 1.5, 0.5, -0.01));
+        assert_false(inside(s, 1.5, 1.5, 0.5)); /* no third row */
+        assert_false(inside(s, 2.5, 0.5, 0.5)); /* no fourth column */
+        sc_scene_release(s);
+    }
+    /* --strict: the errors */
+    snprintf(
+        prefix, sizeof prefix,
+        "%s:1:16: error: surface: the file '%s/nope.png' couldn't be opened: No such "
+        "file or directory",
+        path, work());
+    check_error_strict(path, "surface(file = \"nope.png\");", SC_ERR_IO, prefix, "");
+    snprintf(
+        prefix, sizeof prefix,
+        "%s:1:16: error: surface: illegal value in '%s/bad.png' line 1: 'not' is not "
+        "a number",
+        path, work());
+    check_error_strict(path, "surface(file = \"bad.png\");", SC_ERR_SEMANTIC, prefix, "");
+    snprintf(prefix, sizeof prefix,
+             "%s:1:16: error: surface: can't read PNG image '%s/broken.png': ", path,
              work());
-    assert_memory_equal(sc_error_format(&e, buf, sizeof buf), expected, strlen(expected));
+    check_error_strict(path, "surface(file = \"broken.png\");", SC_ERR_IO, prefix, "");
+    snprintf(
+        prefix, sizeof prefix,
+        "%s:1:16: error: surface: illegal value in '%s/bad.dat' line 2: 'x' is not a "
+        "number",
+        path, work());
+    check_error_strict(path, "surface(file = \"bad.dat\");", SC_ERR_SEMANTIC, prefix, "");
+}
+
+static void test_surface_errors(void **state)
+{
+    (void)state;
     check_error("m.csg", "surface();", SC_ERR_SEMANTIC,
                 "m.csg:1:1: error: missing argument 'file' of 'surface'");
     check_error(
@@ -771,7 +882,7 @@ static void test_surface_errors(void **state)
     /* one row: no area */
     const char one[] = "1 2 3\n";
     write_file("one.dat", one, sizeof one - 1);
-    s = load_file("m.csg", "surface(file = \"one.dat\");");
+    sc_scene *s = load_file("m.csg", "surface(file = \"one.dat\");");
     assert_int_equal(sc_scene_warning_count(s), 1);
     assert_string_equal(sc_scene_warning(s, 0)->message, "surface without area is empty");
     sc_scene_release(s);
@@ -797,6 +908,7 @@ int main(void)
         cmocka_unit_test(test_resize_boolean),
         cmocka_unit_test(test_surface_dat),
         cmocka_unit_test(test_surface_png),
+        cmocka_unit_test(test_surface_lenient),
         cmocka_unit_test(test_surface_errors),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

@@ -11,8 +11,9 @@
  * empty lines and lines starting with '#' are skipped; line i gives row
  * i, its k-th number column k; rows shorter than the longest are padded
  * with 0 (after the floor below is found, as OpenSCAD does, so padding
- * may touch the floor). A token that is not a finite number is an error (OpenSCAD
- * warns and stops reading there).
+ * may touch the floor). A token that is not a finite number ends the
+ * reading there, as OpenSCAD's does: the values before it are kept, its
+ * own line's among them (a row when it holds one), with a warning.
  *
  * Mesh, for a grid of `lines` rows and `columns` columns of values v(i, j)
  * at (x, y) = (j, i) (shifted by -(columns - 1) / 2 and -(lines - 1) / 2
@@ -26,6 +27,15 @@
  * floor points), so the mesh is closed; its winding follows OpenSCAD's.
  * A grid with fewer than 2 rows or 2 columns has no volume: the empty
  * solid with a warning.
+ *
+ * What OpenSCAD 2021.01 renders with a warning (its surface.cc: "The file
+ * '...' couldn't be opened.", "Can't read PNG image '...'", "Illegal value
+ * in '...'") is a warning here too, at the file name, and the rest of the
+ * model is rendered: a file that cannot be opened, or that has a PNG
+ * signature and cannot be decoded, is the empty surface, counted as left
+ * out (build_notes), so that no second warning says it is empty; a .dat
+ * file with an illegal value is what was read before it. With --strict
+ * each is the error its warning starts with.
  */
 #include <errno.h>
 #include <math.h>
@@ -89,16 +99,19 @@ static sc_status too_large(const build_ctx *c, const sc_location *loc, const cha
                    BUILD_SURFACE_MAX_POINTS);
 }
 
-/* Parses .dat text into g. */
+/* Parses .dat text into g. A token that is not a number ends the reading
+ * there: its error in c->error, 1 in *stopped, and g holds what came
+ * before (the status stays SC_OK). */
 static sc_status read_dat(const build_ctx *c, const sc_location *loc, const char *path,
-                          char *text, size_t size, grid *g)
+                          char *text, size_t size, grid *g, int *stopped)
 {
     cells s;
     memset(&s, 0, sizeof s);
     uint32_t lines = 0, columns = 0, line_no = 0;
     sc_status st = SC_OK;
+    *stopped = 0;
     char *p = text, *end = text + size;
-    while (p < end && st == SC_OK) {
+    while (p < end && st == SC_OK && !*stopped) {
         char *eol = memchr(p, '\n', (size_t)(end - p));
         if (!eol)
             eol = end;
@@ -109,7 +122,7 @@ static sc_status read_dat(const build_ctx *c, const sc_location *loc, const char
             q++;
         if (*q && *q != '#') {
             uint32_t col = 0;
-            while (*q && st == SC_OK) {
+            while (*q && st == SC_OK && !*stopped) {
                 while (*q == ' ' || *q == '\t' || *q == '\r')
                     q++;
                 if (!*q)
@@ -123,9 +136,11 @@ static sc_status read_dat(const build_ctx *c, const sc_location *loc, const char
                 errno = 0;
                 double v = strtod(tok, &stop);
                 if (stop == tok || *stop || !isfinite(v)) {
-                    st = err_set(c->error, SC_ERR_SEMANTIC, loc,
-                                 "surface: '%s' line %u: '%.40s' is not a number", path,
-                                 line_no, tok);
+                    err_set(c->error, SC_ERR_SEMANTIC, loc,
+                            "surface: illegal value in '%s' line %u: '%.40s' is not a "
+                            "number",
+                            path, line_no, tok);
+                    *stopped = 1;
                     break;
                 }
                 *q = saved;
@@ -138,7 +153,8 @@ static sc_status read_dat(const build_ctx *c, const sc_location *loc, const char
             }
             if (col > columns)
                 columns = col;
-            lines++;
+            if (col || !*stopped) /* a line stopped at its first value is no row */
+                lines++;
         }
         p = eol + 1;
     }
@@ -169,8 +185,8 @@ static sc_status read_png(const build_ctx *c, const sc_location *loc, const char
     image_data img;
     char why[256];
     if (!image_read(path, &img, why, (int)sizeof why))
-        return err_set(c->error, SC_ERR_IO, loc,
-                       "surface: cannot read PNG image '%s': %s", path, why);
+        return err_set(c->error, SC_ERR_IO, loc, "surface: can't read PNG image '%s': %s",
+                       path, why);
     sc_status st = SC_OK;
     if ((uint64_t)img.width * (uint64_t)img.height > BUILD_SURFACE_MAX_POINTS) {
         st = too_large(c, loc, path);
@@ -337,6 +353,11 @@ static sc_status surface_mesh(const build_ctx *c, const sc_location *loc, const 
     return st;
 }
 
+static const char left_out[] =
+    "; the surface is empty, as OpenSCAD leaves it out (--strict makes it an error)";
+static const char rest_ignored[] = "; the rest of the file is ignored, as OpenSCAD stops "
+                                   "reading there (--strict makes it an error)";
+
 /* build_surface, or with faces build_surface_faces. */
 static sc_status surface(const build_ctx *c, const model_surface *s, prim *out,
                          const char **empty, build_mesh_faces *faces)
@@ -353,15 +374,40 @@ static sc_status surface(const build_ctx *c, const model_surface *s, prim *out,
         (unsigned char *)file_read(path, BUILD_SURFACE_MAX_FILE, &size, &why);
     grid g = {NULL, 0, 0, 0};
     sc_status st = SC_OK;
-    if (!bytes)
-        st = err_set(c->error, SC_ERR_IO, &loc, "surface: cannot read '%s': %s", path,
+    int stopped = 0;
+    if (!bytes && !strcmp(why, "out of memory"))
+        st = err_nomem(c->error, &loc);
+    else if (!bytes && !strcmp(why, "file is too large")) /* our limit, not the file's */
+        st = err_set(c->error, SC_ERR_LIMIT, &loc, "surface: cannot read '%s': %s", path,
                      why);
+    else if (!bytes)
+        st = err_set(c->error, SC_ERR_IO, &loc,
+                     "surface: the file '%s' couldn't be opened: %s", path, why);
     else if (is_png(bytes, size))
         st = read_png(c, &loc, path, invert, &g);
     else
-        st = read_dat(c, &loc, path, (char *)bytes, size, &g);
+        st = read_dat(c, &loc, path, (char *)bytes, size, &g, &stopped);
     free(bytes);
-    if (st == SC_OK) {
+    if (st == SC_ERR_IO && !c->strict) { /* not opened, or not decoded */
+        sc_error reason = *c->error;
+        err_clear(c->error);
+        st = build_note_left_out(c, &loc, "%s%s", reason.message, left_out);
+        *empty = "";
+    } else if (st == SC_OK && stopped && c->strict) {
+        st = c->error->status;
+    } else if (st == SC_OK && stopped) {
+        sc_error reason = *c->error;
+        err_clear(c->error);
+        if (g.lines < 2 || g.columns < 2) {
+            /* no area read: left out, with nothing more said of it */
+            st = build_note_left_out(c, &loc, "%s%s", reason.message, rest_ignored);
+            *empty = "";
+        } else {
+            st = build_note(c, &loc, "%s%s", reason.message, rest_ignored);
+            if (st == SC_OK)
+                st = surface_mesh(c, &loc, &g, center, out, empty, faces);
+        }
+    } else if (st == SC_OK) {
         if (g.lines < 2 || g.columns < 2)
             *empty = "surface without area is empty";
         else
