@@ -437,6 +437,81 @@ surface_empty.csg:4:17: warning: surface: illegal value in 'notpng.png' line 1: 
     done
 done
 
+# ---- multmatrix with nan or inf: OpenSCAD removes the object ----
+# OpenSCAD 2021.01 exports multmatrix([[0/0, ...]]) and [[1/0, ...]] with
+# nan and inf; rendering the .scad (openscad -o x.stl) it warns
+# "Transformation matrix contains Not-a-Number and/or Infinity - removing
+# object." and renders the rest. --strict makes it the error.
+cat >not_finite.csg <<'M'
+multmatrix([[nan, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]) {
+	cube(size = [1, 1, 1], center = false);
+}
+cube(size = [1, 1, 1], center = false);
+difference() {
+	cube(size = [1, 1, 1], center = false);
+	multmatrix([[1, 0, 0, -inf], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]) {
+		sphere(r = 0.5, $fn = 8, $fa = 12, $fs = 2);
+	}
+}
+M
+removed="warning: Transformation matrix contains Not-a-Number and/or Infinity - removing object."
+for mode in "" --faithful; do
+    warns not_finite.csg "not_finite.csg:1:1: $removed
+not_finite.csg:7:2: $removed" $mode
+    check
+    "$bin" compare not_finite.csg cube_ref.csg -q $mode >compare.txt 2>compare.err &&
+        [ "$(tail -n 1 compare.txt)" = same ] ||
+        fail "not_finite.csg $mode: $(cat compare.err) $(tail -n 12 compare.txt | tr '\n' ' ')"
+    check
+    rm -f strict.png
+    "$bin" render not_finite.csg -o strict.png -q --strict $mode 2>err.txt &&
+        fail "not_finite.csg --strict $mode: exit 0"
+    [ "$(cat err.txt)" = "not_finite.csg:1:1: error: multmatrix: matrix entries must be finite" ] ||
+        fail "not_finite.csg --strict $mode: $(cat err.txt)"
+    [ -e strict.png ] && fail "not_finite.csg --strict $mode: an image was written"
+done
+
+# The same wherever the multmatrix stands: under hull, minkowski, a hull of
+# a difference (CGAL), projection, the extrusions, and in a 2D model. Each
+# warns once (OpenSCAD: once) and is the model without that subtree.
+nan_block='multmatrix([[nan, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]) { multmatrix([[1, 0, 0, 5], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]) {'
+inf_block='multmatrix([[1, 0, 0, inf], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]) { multmatrix([[1, 0, 0, 5], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]) {'
+# name | the model's first part | the removed subtree's leaf | the model's end
+while IFS='|' read -r name head leaf tail; do
+    printf '%s\n\t%s %s } }\n%s\n' "$head" "$nan_block" "$leaf" "$tail" >"nf_$name.csg"
+    printf '%s\n%s\n' "$head" "$tail" >"nf_${name}_ref.csg"
+    for mode in "" --faithful; do
+        warns "nf_$name.csg" "nf_$name.csg:2:2: $removed" $mode
+        check
+        "$bin" compare "nf_$name.csg" "nf_${name}_ref.csg" -q $mode >compare.txt 2>compare.err &&
+            [ "$(tail -n 1 compare.txt)" = same ] ||
+            fail "nf_$name.csg $mode: $(cat compare.err) $(tail -n 12 compare.txt | tr '\n' ' ')"
+    done
+    check
+    "$bin" render "nf_$name.csg" -o strict.png -q --strict 2>err.txt &&
+        fail "nf_$name.csg --strict: exit 0"
+    [ "$(cat err.txt)" = "nf_$name.csg:2:2: error: multmatrix: matrix entries must be finite" ] ||
+        fail "nf_$name.csg --strict: $(cat err.txt)"
+done <<'L'
+hull|hull() { cube(size = [1, 1, 1], center = false);|cube(size = [1, 1, 1], center = false);|}
+minkowski|minkowski() { cube(size = [1, 1, 1], center = false);|sphere(r = 1, $fn = 8, $fa = 12, $fs = 2);|}
+cgal|hull() { difference() { cube(size = [2, 2, 2], center = false);|cube(size = [1, 1, 1], center = false);|} }
+projection|projection(cut = false) { cube(size = [1, 1, 1], center = false);|cube(size = [1, 1, 1], center = false);|}
+cut|projection(cut = true) { hull() { cube(size = [1, 1, 1], center = true);|cube(size = [1, 1, 1], center = false);|} }
+extrude|linear_extrude(height = 1) { square(size = [1, 1], center = false);|square(size = [1, 1], center = false);|}
+revolve|rotate_extrude($fn = 8) { multmatrix([[1, 0, 0, 2], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]) { square(size = [1, 1], center = false); }|square(size = [1, 1], center = false);|}
+L
+# a 2D model: the first object decides, the removed one is no object
+printf 'square(size = [1, 1], center = false);\n%s square(size = [1, 1], center = false); } }\n' "$inf_block" >nf_flat.csg
+printf 'square(size = [1, 1], center = false);\n' >nf_flat_ref.csg
+for mode in "" --faithful; do
+    warns nf_flat.csg "nf_flat.csg:2:1: $removed" $mode
+    check
+    "$bin" compare nf_flat.csg nf_flat_ref.csg -q $mode >compare.txt 2>compare.err &&
+        [ "$(tail -n 1 compare.txt)" = same ] ||
+        fail "nf_flat.csg $mode: $(cat compare.err) $(tail -n 12 compare.txt | tr '\n' ' ')"
+done
+
 # ---- a lossy mask ----
 warns cube_ref.csg "spancast: warning: --mask=m.jpg: JPEG is lossy, so the mask is no longer exactly 0 and 255 at the model's edges (.png, .tif and .exr are exact)" --mask=m.jpg
 check

@@ -398,14 +398,63 @@ static void test_multmatrix_errors(void **state)
                 "cube(); }",
                 SC_ERR_SEMANTIC,
                 "m.csg:1:1: error: multmatrix: bottom row must be [0, 0, 0, 1]");
-    check_error("multmatrix([[1, 0, 0, inf], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]) "
-                "{ cube(); }",
+}
+
+/* A nan or inf entry (OpenSCAD 2021.01 exports 0/0 as nan, 1/0 as inf):
+ * OpenSCAD removes the subtree with its warning and renders the rest, in
+ * the render and the preview; --strict makes it the error. The removed
+ * subtree is the empty solid, so it empties an intersection. */
+static void test_multmatrix_not_finite(void **state)
+{
+    (void)state;
+    static const char *const matrices[] = {
+        "[[1, 0, 0, inf], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]",
+        "[[1, 0, 0, 0], [0, nan, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]",
+        "[[-inf, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]",
+        "[[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, nan]]"};
+    for (size_t k = 0; k < sizeof matrices / sizeof *matrices; k++) {
+        char text[512];
+        snprintf(
+            text, sizeof text,
+            "cube(size = [1, 1, 1]);\ngroup() {\n  multmatrix(%s) {\n"
+            "    multmatrix([[1, 0, 0, 5], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]) "
+            "{ cube(size = [1, 1, 1]); }\n  }\n}\n",
+            matrices[k]);
+        for (int faithful = 0; faithful < 2; faithful++) {
+            sc_scene *s = NULL;
+            sc_error e;
+            sc_load_options o;
+            sc_load_options_init(&o);
+            o.faithful = faithful;
+            assert_int_equal(
+                sc_scene_load_string("m.csg", text, strlen(text), &o, &s, &e), SC_OK);
+            assert_int_equal(sc_scene_warning_count(s), 1);
+            assert_string_equal(sc_scene_warning(s, 0)->message,
+                                "Transformation matrix contains Not-a-Number and/or "
+                                "Infinity - removing object.");
+            assert_int_equal(sc_scene_warning(s, 0)->line, 3);
+            assert_int_equal(sc_scene_warning(s, 0)->column, 3);
+            assert_true(inside(s, 0.5, 0.5, 0.5));
+            assert_false(inside(s, 5.5, 0.5, 0.5));
+            sc_scene_release(s);
+        }
+        check_error_strict(text, SC_ERR_SEMANTIC,
+                           "m.csg:3:3: error: multmatrix: matrix entries must be finite");
+    }
+    sc_scene *s = load_warned(
+        "intersection() {\n  cube(5);\n"
+        "  multmatrix([[nan, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]) "
+        "{ cube(1); }\n}\n",
+        "m.csg:3:3: Transformation matrix contains Not-a-Number and/or Infinity - "
+        "removing object.");
+    assert_true(is_empty(s));
+    sc_scene_release(s);
+    /* errors below it are still errors */
+    check_error("multmatrix([[nan, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]) "
+                "{ cube(size = \"a\"); }",
                 SC_ERR_SEMANTIC,
-                "m.csg:1:1: error: multmatrix: matrix entries must be finite");
-    check_error("multmatrix([[1, 0, 0, 0], [0, nan, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]) "
-                "{ cube(); }",
-                SC_ERR_SEMANTIC,
-                "m.csg:1:1: error: multmatrix: matrix entries must be finite");
+                "m.csg:1:86: error: wrong type for argument 'size' of 'cube' (expected a "
+                "number or a vector of 3 numbers)");
 }
 
 static void test_singular(void **state)
@@ -1150,6 +1199,7 @@ int main(void)
         cmocka_unit_test(test_booleans),
         cmocka_unit_test(test_multmatrix),
         cmocka_unit_test(test_multmatrix_errors),
+        cmocka_unit_test(test_multmatrix_not_finite),
         cmocka_unit_test(test_singular),
         cmocka_unit_test(test_colors),
         cmocka_unit_test(test_color_table),

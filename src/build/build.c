@@ -914,7 +914,14 @@ static sc_status visit(builder *b, const model_node *n, int *opened)
     if (kind == MODEL_XFORM) {
         affine inverse;
         f->to_world = affine_mul(&f->to_world, n->u.xform);
-        if (f->emit && !affine_invert(&f->to_world, &inverse)) {
+        if (f->emit && n->not_finite) {
+            /* OpenSCAD 2021.01 removes the subtree, in the render and the
+             * preview alike */
+            build_ctx c = context(b, 1, NULL);
+            if ((st = build_xform_not_finite(&c, n)) != SC_OK)
+                return st;
+            f->emit = 0; /* still counted: the empty solid */
+        } else if (f->emit && !affine_invert(&f->to_world, &inverse)) {
             if ((st = warn(b, &n->loc, "singular transform: subtree is empty")) != SC_OK)
                 return st;
             f->emit = 0; /* still counted: the empty solid */

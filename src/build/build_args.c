@@ -1,6 +1,6 @@
 /* What the builders of 2D subtrees share (build_ctx.h): the pending
- * argument error of a node, the warnings of a walk, and the 2D part of a
- * multmatrix. */
+ * argument error of a node, the warnings of a walk, a multmatrix removed
+ * for a nan or inf entry, and the 2D part of a multmatrix. */
 #include <stdarg.h>
 #include <stdio.h>
 #include <string.h>
@@ -51,6 +51,18 @@ sc_status build_note_left_out(const build_ctx *c, const sc_location *loc,
     sc_status st = build_notes_add(c->notes, c->error, loc, format, args);
     va_end(args);
     return st;
+}
+
+sc_status build_xform_not_finite(const build_ctx *c, const model_node *n)
+{
+    if (n->kind != MODEL_XFORM || !n->not_finite || !c->notes)
+        return SC_OK;
+    if (c->strict)
+        return err_set(c->error, SC_ERR_SEMANTIC, &n->loc,
+                       "multmatrix: matrix entries must be finite");
+    return build_note(c, &n->loc,
+                      "Transformation matrix contains Not-a-Number and/or Infinity - "
+                      "removing object.");
 }
 
 void build_matrix_xy(const affine *a, const double outer[2][3], double inner[2][3])

@@ -55,6 +55,13 @@ sc_status build_note(const build_ctx *c, const sc_location *loc, const char *for
 sc_status build_note_left_out(const build_ctx *c, const sc_location *loc,
                               const char *format, ...) SC_PRINTF(3, 4);
 
+/* A multmatrix n with a nan or inf entry (model.h, not_finite), met where
+ * it is built (c->notes set): with --strict the error, else OpenSCAD
+ * 2021.01's warning, as it removes the subtree; its matrix is the zero
+ * map, which every walk takes as no geometry. SC_OK for any other node,
+ * and where the subtree is only checked. */
+sc_status build_xform_not_finite(const build_ctx *c, const model_node *n);
+
 /* A nested node's argument error, kept by the lowering (model.h, pending):
  * copied into c->error, its status returned. */
 sc_status build_pending(const build_ctx *c, const model_node *n);

@@ -418,7 +418,7 @@ static sc_status read_matrix(const build_ctx *c, const model_node *n, affine *ou
     *out = *n->u.xform;
     affine inverse;
     *ok = affine_invert(out, &inverse);
-    return SC_OK;
+    return build_xform_not_finite(c, n);
 }
 
 /* group, union, render, color, material: the union of their children. */

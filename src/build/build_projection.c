@@ -343,6 +343,8 @@ static sc_status hull_points(pwalk *w, const model_node *parent, const affine *m
             const char *warning = NULL;
             if (kind == MODEL_RESIZE)
                 st = build_resize(c, n, &w->cache, &local, &warning);
+            else
+                st = build_xform_not_finite(c, n);
             affine inner = affine_mul(m, &local), inverse;
             if (st == SC_OK && affine_invert(&inner, &inverse))
                 st = hull_points(w, n, &inner, depth + 1, pts);
@@ -783,6 +785,7 @@ static sc_status walk_node(pwalk *w, const model_node *n, const affine *m, int d
         sc_status st = SC_OK;
         if (kind == MODEL_XFORM) {
             local = *n->u.xform;
+            st = build_xform_not_finite(c, n);
         } else {
             const char *warning = NULL;
             st = build_resize(c, n, &w->cache, &local, &warning);

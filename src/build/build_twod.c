@@ -109,7 +109,7 @@ sc_status twod_walk_fold(const twod_walker *w, const model_node *n, const affine
     if (n->pending)
         return build_pending(w->c, n);
     build_matrix_xy(n->u.xform, m->m, inner->m);
-    return SC_OK;
+    return build_xform_not_finite(w->c, n);
 }
 
 /* ---- dimensions ---- */
@@ -491,7 +491,7 @@ static sc_status read_matrix(const eval *e, const model_node *n, double m[2][3])
     if (n->pending)
         return pending(e, n);
     build_matrix_xy(n->u.xform, id, m);
-    return SC_OK;
+    return build_xform_not_finite(e->c, n);
 }
 
 static sc_status transform(const eval *e, const model_node *n, double m[2][3],

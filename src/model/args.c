@@ -101,7 +101,8 @@ sc_status model_read_cylinder(const model_reader *r, const parse_node *n, double
     return st;
 }
 
-sc_status model_matrix(const model_reader *c, const parse_node *n, double a[4][4])
+sc_status model_matrix(const model_reader *c, const parse_node *n, double a[4][4],
+                       int *not_finite)
 {
     static const double id[4][4] = {
         {1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}, {0, 0, 0, 1}};
@@ -120,11 +121,12 @@ sc_status model_matrix(const model_reader *c, const parse_node *n, double a[4][4
     if (!ok)
         return err_set(c->error, SC_ERR_SEMANTIC, &n->loc,
                        "multmatrix: matrix must be 4x4 numbers");
+    *not_finite = 0;
     for (int r = 0; r < 4; r++)
         for (int k = 0; k < 4; k++)
-            if (!isfinite(a[r][k]))
-                return err_set(c->error, SC_ERR_SEMANTIC, &n->loc,
-                               "multmatrix: matrix entries must be finite");
+            *not_finite |= !isfinite(a[r][k]);
+    if (*not_finite)
+        return SC_OK;
     if (a[3][0] != 0 || a[3][1] != 0 || a[3][2] != 0 || a[3][3] != 1)
         return err_set(c->error, SC_ERR_SEMANTIC, &n->loc,
                        "multmatrix: bottom row must be [0, 0, 0, 1]");
@@ -132,10 +134,10 @@ sc_status model_matrix(const model_reader *c, const parse_node *n, double a[4][4
 }
 
 sc_status model_read_xform(const model_reader *r, arena *mem, const parse_node *n,
-                           const affine **out)
+                           const affine **out, int *not_finite)
 {
     double m[4][4];
-    sc_status st = model_matrix(r, n, m);
+    sc_status st = model_matrix(r, n, m, not_finite);
     if (st != SC_OK)
         return st;
     affine *a = arena_alloc(mem, sizeof *a);
@@ -143,7 +145,7 @@ sc_status model_read_xform(const model_reader *r, arena *mem, const parse_node *
         return err_nomem(r->error, NULL);
     for (int row = 0; row < 3; row++)
         for (int k = 0; k < 4; k++)
-            a->m[row][k] = m[row][k];
+            a->m[row][k] = *not_finite ? 0 : m[row][k];
     *out = a;
     return SC_OK;
 }

@@ -59,13 +59,17 @@ sc_status model_read_sphere(const model_reader *r, const parse_node *n, double *
  * r, d, d1, d2: r1/d1 and r2/d2 win over r/d, a diameter over a radius. */
 sc_status model_read_cylinder(const model_reader *r, const parse_node *n, double *h,
                               double *r1, double *r2, int *center, model_resolution *res);
-/* multmatrix(m): a row-major 4x4 affine matrix of finite numbers with the
- * bottom row [0, 0, 0, 1]; no argument is the identity. */
-sc_status model_matrix(const model_reader *r, const parse_node *n, double m[4][4]);
+/* multmatrix(m): a row-major 4x4 affine matrix with the bottom row [0, 0,
+ * 0, 1]; no argument is the identity. An entry that is nan or inf (what
+ * OpenSCAD writes for 0/0 and 1/0) sets *not_finite, the rest unchecked:
+ * OpenSCAD 2021.01 removes such a multmatrix's subtree (model.h). */
+sc_status model_matrix(const model_reader *r, const parse_node *n, double m[4][4],
+                       int *not_finite);
 /* multmatrix(m) as model_matrix reads it, its 3x4 affine part allocated
- * from mem into *out. */
+ * from mem into *out: the zero map when an entry is not finite (1 in
+ * *not_finite). */
 sc_status model_read_xform(const model_reader *r, arena *mem, const parse_node *n,
-                           const affine **out);
+                           const affine **out, int *not_finite);
 /* The end of a nested node's lowering (model.h): status st of reading its
  * arguments, with the error in *pending, kept in out->pending (allocated
  * from mem); SC_OK, or SC_ERR_NOMEM in *error when memory ran out (nomem

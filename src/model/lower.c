@@ -249,10 +249,11 @@ static sc_status lower_surface(lowerer *l, const parse_node *n, model_node *out)
 /* ---- boolean nodes with arguments ---- */
 
 /* multmatrix(m = [[...], [...], [...], [0, 0, 0, 1]]): a row-major 4x4
- * affine matrix of finite numbers; no argument means the identity. */
+ * affine matrix; no argument means the identity. One with a nan or inf
+ * entry is kept as the zero map, marked not_finite (model.h). */
 static sc_status lower_xform(lowerer *l, const parse_node *n, model_node *out)
 {
-    return model_read_xform(&l->r, &l->m->mem, n, &out->u.xform);
+    return model_read_xform(&l->r, &l->m->mem, n, &out->u.xform, &out->not_finite);
 }
 
 /* color(c, alpha): c is [r, g, b, a] (missing components are 1, as in

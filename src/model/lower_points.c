@@ -147,7 +147,7 @@ static sc_status lower_resize(model_lowerer *l, const parse_node *n, model_node 
 
 static sc_status lower_matrix(model_lowerer *l, const parse_node *n, model_node *out)
 {
-    return model_read_xform(&l->r, l->mem, n, &out->u.xform);
+    return model_read_xform(&l->r, l->mem, n, &out->u.xform, &out->not_finite);
 }
 
 static sc_status lower_leaf(model_lowerer *l, const parse_node *n, model_node *out)

@@ -466,7 +466,7 @@ static sc_status lower_projection(model_lowerer *l, const parse_node *n, model_n
 /* multmatrix(m) below an extrusion: the builders take its xy part. */
 static sc_status lower_matrix(model_lowerer *l, const parse_node *n, model_node *out)
 {
-    return model_read_xform(&l->r, l->mem, n, &out->u.xform);
+    return model_read_xform(&l->r, l->mem, n, &out->u.xform, &out->not_finite);
 }
 
 sc_status model_import_drawing(arena *mem, const char *file, const parse_node *n,

@@ -321,6 +321,7 @@ struct model_node {
     model_kind kind;
     unsigned modifiers;             /* MODEL_MOD_* */
     int is_root;                    /* the first '!' node: its subtree is the design */
+    int not_finite;                 /* multmatrix with a nan or inf entry (xform) */
     const char *name;               /* as the file writes it, for messages */
     sc_location loc;                /* of the name */
     uint32_t child_count;           /* children written in the file (lowered or not) */
@@ -349,7 +350,11 @@ struct model_node {
             const uint32_t *face_start; /* face f: indices[face_start[f] .. [f + 1]) */
             uint32_t face_count;        /* each face has 3 points or more */
         } polyhedron;
-        const affine *xform;      /* multmatrix: rows of the 3x4 affine part */
+        /* multmatrix: rows of the 3x4 affine part; the zero map when an
+         * entry is nan or inf (not_finite), which OpenSCAD 2021.01 removes
+         * with a warning: every walk takes it as a singular transform (no
+         * geometry), and the builders warn of it */
+        const affine *xform;
         const model_color *color; /* color */
         const model_import *import;
         const model_surface *surface;
