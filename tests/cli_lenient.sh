@@ -501,6 +501,28 @@ cut|projection(cut = true) { hull() { cube(size = [1, 1, 1], center = true);|cub
 extrude|linear_extrude(height = 1) { square(size = [1, 1], center = false);|square(size = [1, 1], center = false);|}
 revolve|rotate_extrude($fn = 8) { multmatrix([[1, 0, 0, 2], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]) { square(size = [1, 1], center = false); }|square(size = [1, 1], center = false);|}
 L
+# The removed object has no dimension, as OpenSCAD's removed object is no
+# geometry: a 2D one in a 3D operation, or a 3D one in a 2D operation, is
+# not warned of as mixed or ignored, nor decides a file's dimension.
+printf 'union() {\n\tcube(size = [1, 1, 1], center = false);\n\t%s square(size = [1, 1], center = false); } }\n}\n' "$nan_block" >nf_mixed.csg
+printf 'linear_extrude(height = 1) {\n\tsquare(size = [1, 1], center = false);\n\t%s cube(size = [1, 1, 1], center = false); } }\n}\n' "$nan_block" >nf_mixed_flat.csg
+printf 'linear_extrude(height = 1) { square(size = [1, 1], center = false); }\n' >nf_mixed_flat_ref.csg
+printf '%s square(size = [1, 1], center = false); } }\ncube(size = [1, 1, 1], center = false);\n' "$nan_block" >nf_first.csg
+printf 'rotate_extrude($fn = 8) {\n\tmultmatrix([[1, 0, 0, 2], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]) { square(size = [1, 1], center = false); }\n\t%s cube(size = [1, 1, 1], center = false); } }\n}\n' "$nan_block" >nf_mixed_revolve.csg
+printf 'rotate_extrude($fn = 8) { multmatrix([[1, 0, 0, 2], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]) { square(size = [1, 1], center = false); } }\n' >nf_mixed_revolve_ref.csg
+for mode in "" --faithful; do
+    warns nf_mixed.csg "nf_mixed.csg:3:2: $removed" $mode
+    warns nf_mixed_flat.csg "nf_mixed_flat.csg:3:2: $removed" $mode
+    warns nf_first.csg "nf_first.csg:1:1: $removed" $mode
+    warns nf_mixed_revolve.csg "nf_mixed_revolve.csg:3:2: $removed" $mode
+    for pair in nf_mixed.csg:cube_ref.csg nf_mixed_flat.csg:nf_mixed_flat_ref.csg \
+        nf_first.csg:cube_ref.csg nf_mixed_revolve.csg:nf_mixed_revolve_ref.csg; do
+        check
+        "$bin" compare "${pair%%:*}" "${pair#*:}" -q $mode >compare.txt 2>compare.err &&
+            [ "$(tail -n 1 compare.txt)" = same ] ||
+            fail "$pair $mode: $(cat compare.err) $(tail -n 12 compare.txt | tr '\n' ' ')"
+    done
+done
 # a 2D model: the first object decides, the removed one is no object
 printf 'square(size = [1, 1], center = false);\n%s square(size = [1, 1], center = false); } }\n' "$inf_block" >nf_flat.csg
 printf 'square(size = [1, 1], center = false);\n' >nf_flat_ref.csg

@@ -95,12 +95,19 @@ sc_status twod_walk(twod_walker *w, const model_node *n, const affine2 *m, int d
 sc_status twod_walk_children(twod_walker *w, const model_node *n, const affine2 *m,
                              int depth)
 {
-    for (const model_node *k = twod_walk_first(n); k; k = twod_walk_next(k->next)) {
-        sc_status st = twod_walk(w, k, m, depth + 1, NULL);
-        if (st != SC_OK)
-            return st;
-    }
-    return SC_OK;
+    /* A multmatrix removed for a nan or inf entry (twod_walk_fold warned):
+     * its children are only checked, with nothing more said of them. */
+    const build_ctx *c = w->c;
+    build_ctx quiet = *c;
+    quiet.notes = NULL;
+    if (n->kind == MODEL_XFORM && n->not_finite)
+        w->c = &quiet;
+    sc_status st = SC_OK;
+    for (const model_node *k = twod_walk_first(n); st == SC_OK && k;
+         k = twod_walk_next(k->next))
+        st = twod_walk(w, k, m, depth + 1, NULL);
+    w->c = c;
+    return st;
 }
 
 sc_status twod_walk_fold(const twod_walker *w, const model_node *n, const affine2 *m,
@@ -140,10 +147,11 @@ static int kind_dim(const model_node *n, int in_2d)
         return 2;
     case MODEL_IMPORT:
         return drawing_of(n, in_2d) ? 2 : 3;
+    case MODEL_XFORM: /* removed for a nan or inf entry: no geometry (model.h) */
+        return n->not_finite ? 0 : -1;
     case MODEL_UNION:
     case MODEL_DIFFERENCE:
     case MODEL_INTERSECTION:
-    case MODEL_XFORM:
     case MODEL_COLOR:
     case MODEL_MATERIAL:
     case MODEL_RESIZE:
@@ -768,9 +776,17 @@ static sc_status eval_node(twod_walker *w, const model_node *n, const affine2 *u
         return st;
     if (kind == MODEL_RESIZE && n->pending)
         return pending(e, n);
+    /* A multmatrix removed for a nan or inf entry (read_matrix warned):
+     * its children are only checked, since OpenSCAD neither combines them
+     * nor checks their dimensions. */
+    build_ctx quiet = *e->c;
+    quiet.notes = NULL;
+    eval checked = *e;
+    checked.c = checked.walk.c = &quiet;
     twod_region *regions;
     uint32_t count;
-    st = eval_children(e, n, &regions, &count, depth);
+    st = eval_children(kind == MODEL_XFORM && n->not_finite ? &checked : e, n, &regions,
+                       &count, depth);
     if (st == SC_OK) {
         if (kind == MODEL_HULL)
             st = hull(e, n, regions, count, out);

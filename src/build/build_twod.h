@@ -65,7 +65,9 @@ const model_node *twod_walk_next(const model_node *k);
  * w->visit. */
 sc_status twod_walk(twod_walker *w, const model_node *n, const affine2 *m, int depth,
                     void *out);
-/* Visits the children of n that count at depth + 1, without results. */
+/* Visits the children of n that count at depth + 1, without results; those
+ * of a multmatrix removed for a nan or inf entry with no warnings (only
+ * their errors count). */
 sc_status twod_walk_children(twod_walker *w, const model_node *n, const affine2 *m,
                              int depth);
 /* The transform under multmatrix n: m times the xy part of its matrix (its
