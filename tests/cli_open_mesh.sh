@@ -2,7 +2,8 @@
 # OpenSCAD 2021.01 treats it (seen by running openscad -o on each model):
 #  - hull() takes the corners of the mesh it reads, closed or not, and
 #    prints nothing: the hull of open.stl below is the corner tetrahedron
-#    (4 facets), alone or beside a cube;
+#    (4 facets), alone or beside a cube, also under a cut projection,
+#    which cuts the hull;
 #  - projection() (cut = false) projects the faces of that mesh, closed or
 #    not, and prints nothing: the projection of open.stl is the triangle
 #    (0, 0), (1, 0), (0, 1), which only its face looking down gives;
@@ -57,6 +58,8 @@ printf 'linear_extrude(height = 1) {\n\tprojection(cut = false) {\n\t\thull() {\
     >projection-hull.csg
 printf 'linear_extrude(height = 1) {\n\tprojection(cut = true) {\n\t\tmultmatrix([[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, -0.5], [0, 0, 0, 1]]) {\n\t\t\timport(file = "open.stl");\n\t\t}\n\t\tmultmatrix([[1, 0, 0, 3], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]) {\n\t\t\tcube(size = [1, 1, 1], center = true);\n\t\t}\n\t}\n}\n' \
     >cut.csg
+printf 'linear_extrude(height = 1) {\n\tprojection(cut = true) {\n\t\tmultmatrix([[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, -0.25], [0, 0, 0, 1]]) {\n\t\t\thull() {\n\t\t\t\timport(file = "open.stl");\n\t\t\t}\n\t\t}\n\t}\n}\n' \
+    >cut-hull.csg
 
 # inside MODEL WANT OPTIONS... -- POINTS...: spancast inside MODEL at the
 # points says WANT (space-separated), exit 0, and its stderr is $want_err.
@@ -97,6 +100,10 @@ for mode in "" --faithful --strict "--faithful --strict"; do
             0.7,0.1,0.5 0.6,0.6,0.5 -0.1,0.5,0.5
         inside projection-hull.csg "in in out out" $mode -- 0.2,0.2,0.5 0.7,0.1,0.5 \
             0.6,0.6,0.5 -0.1,0.5,0.5
+        # a cut of the hull (a solid) at z = 0.25: the triangle x + y < 0.75
+        # (OpenSCAD: its DXF has the corners (0, 0), (0.75, 0), (0, 0.75))
+        inside cut-hull.csg "in in out out" $mode -- 0.2,0.2,0.5 0.7,0.02,0.5 \
+            0.4,0.4,0.5 -0.1,0.2,0.5
     }
 done
 

@@ -102,6 +102,7 @@ typedef struct pwalk {
     const model_node *proj;
     int cut;
     build_resize_cache *cache;
+    int corners; /* inside a hull: only the corners of meshes matter */
 } pwalk;
 
 static int add_tri(soup *s, vec3 a, vec3 b, vec3 c)
@@ -265,7 +266,8 @@ static int mesh_soup(const prim *p, soup *s)
  * the faces of the mesh it has without asking that it be closed. A cut
  * needs a solid: an import that is not closed is left out with OpenSCAD's
  * message as a warning (build_import), as its Nef polyhedron cannot be
- * made. */
+ * made. Inside a hull, which takes only the corners, a mesh is taken as
+ * it is in a cut too, as OpenSCAD hulls the mesh and cuts the hull. */
 static sc_status built_soup(const pwalk *w, const model_node *n, soup *s)
 {
     const build_ctx *c = w->c;
@@ -273,6 +275,7 @@ static sc_status built_soup(const pwalk *w, const model_node *n, soup *s)
         return build_pending(c, n);
     build_ctx fc = *c;
     fc.faithful = 1;
+    int solid = w->cut && !w->corners;
     build_ctx loose = *c; /* the parity rule, without a warning */
     loose.faithful = 0;
     loose.strict = 0;
@@ -285,14 +288,14 @@ static sc_status built_soup(const pwalk *w, const model_node *n, soup *s)
     case MODEL_POLYHEDRON:
         if (n->u.polyhedron.face_count == 0)
             return SC_OK;
-        st = build_mesh_prim(w->cut ? c : &loose, &n->loc, "polyhedron", 1,
+        st = build_mesh_prim(solid ? c : &loose, &n->loc, "polyhedron", 1,
                              n->u.polyhedron.points, n->u.polyhedron.point_count,
                              n->u.polyhedron.indices, n->u.polyhedron.face_start,
                              n->u.polyhedron.face_count, &p, &empty);
         break;
     case MODEL_IMPORT:
-        st = w->cut ? build_import(c, n->u.import, &p, &empty)
-                    : build_import_mesh(c, n->u.import, &p, &empty);
+        st = solid ? build_import(c, n->u.import, &p, &empty)
+                   : build_import_mesh(c, n->u.import, &p, &empty);
         break;
     case MODEL_SURFACE:
         st = build_surface(c, n->u.surface, &p, &empty);
@@ -395,7 +398,10 @@ static sc_status hull_soup(pwalk *w, const model_node *n, soup *s, int depth)
     const build_ctx *c = w->c;
     soup pts = {NULL, 0, 0, 0};
     affine id = affine_identity();
+    int corners = w->corners;
+    w->corners = 1;
     sc_status st = hull_points(w, n, &id, depth, &pts);
+    w->corners = corners;
     hull3 h;
     hull3_status hs = HULL3_FLAT;
     if (st == SC_OK && pts.count)
@@ -851,7 +857,7 @@ sc_status build_projection(const build_ctx *c, const model_node *n, twod_region 
     twod_clear(out);
     if (n->pending)
         return build_pending(c, n);
-    pwalk w = {c, n, n->u.projection.cut, NULL};
+    pwalk w = {c, n, n->u.projection.cut, NULL, 0};
     affine id = affine_identity();
     sc_status st = walk_children(&w, n, &id, 0, out);
     if (st == SC_OK)
