@@ -5,7 +5,7 @@
  * makes of it, carried into the hull node's frame by the multmatrix nodes
  * between: a cube its 8 corners; a polyhedron the points its faces use;
  * import, surface, linear_extrude and rotate_extrude (as in --faithful)
- * the vertices of their meshes; sphere
+ * the vertices of their meshes (an import's closed or not); sphere
  * and cylinder OpenSCAD's polyhedra for their $fn, $fa, $fs (faithful.c's
  * rings and circles), in default mode as in --faithful, since OpenSCAD
  * hulls those polygons; a nested hull its children's points; a nested
@@ -367,7 +367,9 @@ static sc_status polyhedron_points(const walk *w, const model_node *n, const aff
 /* import, linear_extrude, rotate_extrude, surface: their mesh's corners
  * through m, and its volume. Extrusions are built as in --faithful, in
  * both modes: OpenSCAD hulls the vertices of its polygons, and the exact
- * leaves of default mode have none. */
+ * leaves of default mode have none. A hull takes an imported mesh closed
+ * or not, silently, as OpenSCAD 2021.01 hulls the corners of the mesh it
+ * reads (build_import_mesh); minkowski needs a solid (build_import_summand). */
 static sc_status mesh_prim(const walk *w, const model_node *n, prim *out,
                            const char **empty)
 {
@@ -375,10 +377,14 @@ static sc_status mesh_prim(const walk *w, const model_node *n, prim *out,
     build_ctx fc = *w->c;
     fc.faithful = 1;
     model_kind kind = n->kind;
-    if (kind == MODEL_IMPORT || kind == MODEL_SURFACE)
-        return n->pending             ? build_pending(w->c, n)
-               : kind == MODEL_IMPORT ? build_import(w->c, n->u.import, out, empty)
-                                      : build_surface(w->c, n->u.surface, out, empty);
+    if ((kind == MODEL_IMPORT || kind == MODEL_SURFACE) && n->pending)
+        return build_pending(w->c, n);
+    if (kind == MODEL_SURFACE)
+        return build_surface(w->c, n->u.surface, out, empty);
+    if (kind == MODEL_IMPORT && w->convex)
+        return build_import_summand(w->c, n->u.import, out, empty);
+    if (kind == MODEL_IMPORT)
+        return build_import_mesh(w->c, n->u.import, out, empty);
     if (kind == MODEL_ROTATE_EXTRUDE)
         return build_rotate_extrude(&fc, n, 1, out, empty);
     return build_linear_extrude(&fc, n, 1, out, empty);

@@ -13,14 +13,18 @@
  * operations, or in exact mode built with the parity rule (prim_mesh.h),
  * so the user still sees it; with --strict it is an error. The meshes
  * other builders make (extrusions, surface, hull: build_mesh_prim) are
- * treated the same way. Which way the faces wind does not matter: OpenSCAD lists them
- * clockwise seen from outside, STL and OFF files usually the other way, so
- * the sign of the enclosed volume (divergence theorem, sum of a . (b x c)
- * / 6 over the triangles, about the centre of the bounds for accuracy)
- * decides, and a mesh whose volume is negative is turned inside out. A
- * mesh without volume is empty, with a warning. Where a fan of a
- * non-convex face overlaps itself, the winding number of prim_mesh.c
- * cancels the overlap.
+ * treated the same way. The builders that take only an import's corners
+ * or faces (hull, projection without cut: build_import_mesh) take one
+ * that is not closed as it is, silently, as OpenSCAD hulls and projects
+ * the mesh it reads; a cut or CGAL boolean, which needs a solid, leaves it
+ * out with the warning in both modes (build_import). Which way the faces
+ * wind does not matter: OpenSCAD lists them clockwise seen from outside,
+ * STL and OFF files usually the other way, so the sign of the enclosed
+ * volume (divergence theorem, sum of a . (b x c) / 6 over the triangles,
+ * about the centre of the bounds for accuracy) decides, and a mesh whose
+ * volume is negative is turned inside out. A mesh without volume is
+ * empty, with a warning. Where a fan of a non-convex face overlaps itself,
+ * the winding number of prim_mesh.c cancels the overlap.
  *
  * Files: binary STL is recognised by its size (84 + 50 n bytes for the n
  * triangles its header announces), anything else starting with "solid" is
@@ -1840,26 +1844,42 @@ static sc_status push_part(const build_ctx *c, const sc_location *loc, build_pri
     return SC_OK;
 }
 
+/* How import_solid treats an object that is not closed, beyond what its
+ * mode says (flags). */
+enum {
+    /* one of several that build_import makes one mesh of: left out in both
+     * modes, with a warning even where the builder takes no note (hull,
+     * minkowski), as in --faithful: OpenSCAD 2021.01 leaves such an object
+     * out of the union of the file's objects, under hull and projection as
+     * anywhere, and a part drawn by the parity rule could not keep its
+     * overlaps with the others in one mesh */
+    IMPORT_JOINED = 1,
+    /* an object alone, the same: OpenSCAD cannot make the Nef polyhedron a
+     * cut or a CGAL boolean needs of it */
+    IMPORT_ALONE = 2,
+    /* an object alone, for the builders that take only its corners or
+     * faces: taken as it is, by the parity rule, without a warning and
+     * never an error, as OpenSCAD hulls and projects the mesh it reads
+     * without asking that it be closed */
+    IMPORT_LOOSE = 4
+};
+
 /* One solid of a mesh file on its own points (build_mesh_merge, then
  * build_mesh_solid) appended to out; what names it in messages. With
  * several objects (note set), the warning each leaves in c->note goes to
- * c->notes at once, so that every object's is kept, in file order. With
- * joined (one of several objects that build_import makes one mesh of), a
- * mesh that is not closed is left out in both modes, with a warning even
- * where the builder takes no note (hull, minkowski), as in --faithful:
- * OpenSCAD 2021.01 leaves such an object out of the union of the file's
- * objects, under hull and projection as anywhere, and a part drawn by the
- * parity rule could not keep its overlaps with the others in one mesh. */
+ * c->notes at once, so that every object's is kept, in file order. how:
+ * the IMPORT_ flags. */
 static sc_status import_solid(const build_ctx *c, const sc_location *loc,
-                              const char *what, int strict, int several, int joined,
+                              const char *what, int strict, int several, unsigned how,
                               const vec3 *points, uint32_t point_count,
                               const uint32_t *indices, const uint32_t *face_start,
                               uint32_t face_count, build_prims *out,
                               const char **left_out, build_mesh_faces *faces)
 {
+    int joined = (how & (several ? IMPORT_JOINED : IMPORT_ALONE)) != 0;
     build_ctx oc = *c;
-    sc_error note = {SC_OK, "", 0, 0, ""};
-    if (several && (c->note || joined))
+    sc_error note = {SC_OK, "", 0, 0, ""}, unsaid = {SC_OK, "", 0, 0, ""};
+    if ((several && c->note) || joined)
         oc.note = &note;
     build_mesh_faces f;
     const char *empty = NULL;
@@ -1868,6 +1888,11 @@ static sc_status import_solid(const build_ctx *c, const sc_location *loc,
                                     face_count, &f);
     build_ctx sc = oc; /* the check only: the points merge as the mode says */
     sc.faithful |= joined;
+    if ((how & IMPORT_LOOSE) && !several) {
+        sc.faithful = 0;
+        sc.note = &unsaid;
+        strict = 0;
+    }
     if (st == SC_OK)
         st = build_mesh_solid(&sc, loc, what, 0, strict, &f, &p, &empty);
     if (st == SC_OK && faces && !empty) {
@@ -1875,8 +1900,11 @@ static sc_status import_solid(const build_ctx *c, const sc_location *loc,
         memset(&f, 0, sizeof f);
     }
     build_mesh_faces_free(&f);
+    /* an object alone left out (joined) counts as an import left out: its
+     * parent does not add that it is empty (build_notes) */
     if (st == SC_OK && note.message[0])
-        st = build_note(c, loc, "%s", note.message);
+        st = joined && !several && empty ? build_note_left_out(c, loc, "%s", note.message)
+                                         : build_note(c, loc, "%s", note.message);
     if (st == SC_OK && empty && empty[0] && several)
         st = build_note(c, loc, "%s is empty: it has no volume", what);
     if (st == SC_OK && empty && !several)
@@ -1888,10 +1916,10 @@ static sc_status import_solid(const build_ctx *c, const sc_location *loc,
 
 /* The objects of an AMF or 3MF file a, each its own solid (OpenSCAD
  * unites them with CGAL), an object without triangles left out as
- * OpenSCAD's empty PolySet. One object is built as an STL is. joined:
+ * OpenSCAD's empty PolySet. One object is built as an STL is. how:
  * import_solid's. */
 static sc_status import_objects(const build_ctx *c, const model_import *import,
-                                int strict, int joined, const amf_mesh *a,
+                                int strict, unsigned how, const amf_mesh *a,
                                 build_prims *out, const char **empty,
                                 build_mesh_faces *faces)
 {
@@ -1900,7 +1928,7 @@ static sc_status import_objects(const build_ctx *c, const model_import *import,
     for (uint32_t o = 0; o < a->object_count; o++)
         with_faces += a->object_faces[o + 1] > a->object_faces[o];
     if (with_faces <= 1)
-        return import_solid(c, loc, "imported mesh", strict, 0, 0, a->points,
+        return import_solid(c, loc, "imported mesh", strict, 0, how, a->points,
                             a->point_count, a->indices, a->face_start, a->face_count, out,
                             empty, faces);
     sc_status st = SC_OK;
@@ -1921,7 +1949,7 @@ static sc_status import_objects(const build_ctx *c, const model_import *import,
                 start[f] = 3 * f;
             char what[64];
             snprintf(what, sizeof what, "object %u of the imported file", o + 1);
-            st = import_solid(c, loc, what, strict, 1, joined, a->points + first,
+            st = import_solid(c, loc, what, strict, 1, how, a->points + first,
                               a->object_points[o + 1] - first, indices, start, count, out,
                               empty, NULL);
         }
@@ -1949,9 +1977,9 @@ sc_status build_import_unsupported(const build_ctx *c, const sc_location *loc,
 
 /* build_import_parts; with faces, also the merged faces of a file of one
  * object in *faces (empty when *empty is set, and for several objects);
- * joined: import_solid's. */
+ * how: import_solid's. */
 static sc_status import_parts(const build_ctx *c, const model_import *import, int strict,
-                              int joined, build_prims *out, const char **empty,
+                              unsigned how, build_prims *out, const char **empty,
                               build_mesh_faces *faces)
 {
     memset(out, 0, sizeof *out);
@@ -2026,10 +2054,11 @@ static sc_status import_parts(const build_ctx *c, const model_import *import, in
     else if (objects ? a.face_count == 0 : m.face_count == 0)
         *empty = "import without faces is empty";
     else if (objects)
-        st = import_objects(c, import, strict, joined, &a, out, empty, faces);
+        st = import_objects(c, import, strict, how, &a, out, empty, faces);
     else
-        st = import_solid(c, &loc, "imported mesh", strict, 0, 0, m.points, m.point_count,
-                          m.indices, m.face_start, m.face_count, out, empty, faces);
+        st = import_solid(c, &loc, "imported mesh", strict, 0, how, m.points,
+                          m.point_count, m.indices, m.face_start, m.face_count, out,
+                          empty, faces);
     /* several objects, every one left out or without volume: their
      * warnings were given, and the import counts as left out, so that
      * its parent does not add that it is empty (build_notes) */
@@ -2050,7 +2079,7 @@ static sc_status import_parts(const build_ctx *c, const model_import *import, in
 
 /* The union of parts as one mesh leaf, for the builders that take an
  * import's triangles (hull's corners, projection's faces): each part
- * closed and turned outward (import_solid leaves out the others, joined),
+ * closed and turned outward (import_solid leaves out the others, IMPORT_JOINED),
  * so that winding numbers add up to the union. */
 static sc_status join_parts(const build_ctx *c, const sc_location *loc,
                             const build_prims *parts, prim *out)
@@ -2098,7 +2127,8 @@ sc_status build_import_parts(const build_ctx *c, const model_import *import, int
 sc_status build_import_solids(const build_ctx *c, const model_import *import,
                               build_prims *out, const char **empty)
 {
-    return import_parts(c, import, c->strict, 1, out, empty, NULL);
+    return import_parts(c, import, c->strict, IMPORT_JOINED | IMPORT_ALONE, out, empty,
+                        NULL);
 }
 
 sc_status build_import_faces(const build_ctx *c, const model_import *import,
@@ -2111,14 +2141,33 @@ sc_status build_import_faces(const build_ctx *c, const model_import *import,
     return st;
 }
 
-sc_status build_import(const build_ctx *c, const model_import *import, prim *out,
-                       const char **empty)
+/* build_import_solids' objects as one leaf (join_parts); how: import_solid's. */
+static sc_status import_one(const build_ctx *c, const model_import *import, unsigned how,
+                            prim *out, const char **empty)
 {
     build_prims parts;
-    sc_status st = build_import_solids(c, import, &parts, empty);
+    sc_status st = import_parts(c, import, c->strict, how, &parts, empty, NULL);
     if (st == SC_OK && !*empty)
         st = parts.count == 1 ? (*out = parts.items[0], SC_OK)
                               : join_parts(c, &import->file_loc, &parts, out);
     free(parts.items);
     return st;
+}
+
+sc_status build_import(const build_ctx *c, const model_import *import, prim *out,
+                       const char **empty)
+{
+    return import_one(c, import, IMPORT_JOINED | IMPORT_ALONE, out, empty);
+}
+
+sc_status build_import_summand(const build_ctx *c, const model_import *import, prim *out,
+                               const char **empty)
+{
+    return import_one(c, import, IMPORT_JOINED, out, empty);
+}
+
+sc_status build_import_mesh(const build_ctx *c, const model_import *import, prim *out,
+                            const char **empty)
+{
+    return import_one(c, import, IMPORT_JOINED | IMPORT_LOOSE, out, empty);
 }

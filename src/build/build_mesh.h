@@ -126,17 +126,34 @@ sc_status build_import_unsupported(const build_ctx *c, const sc_location *loc,
 sc_status build_import_parts(const build_ctx *c, const model_import *import, int strict,
                              struct build_prims *out, const char **empty);
 /* The same, strict as c->strict, for the builders that need closed
- * solids (CGAL; the joined mesh of build_import): of several objects, one
- * that is not closed is left out with its warning in both modes, as
- * OpenSCAD 2021.01 leaves it out of the objects' union (a CGAL union),
- * also where c takes no note. */
+ * solids (CGAL; the joined mesh of build_import): an object that is not
+ * closed, one of several or alone, is left out with its warning in both
+ * modes, as OpenSCAD 2021.01 leaves it out of the objects' union (a CGAL
+ * union) and of the Nef polyhedron a cut or boolean makes of it, also
+ * where c takes no note. */
 sc_status build_import_solids(const build_ctx *c, const model_import *import,
                               struct build_prims *out, const char **empty);
 /* build_import_solids as one leaf: several objects' leaves joined into one
  * mesh (winding numbers add up to their union), for the builders that
- * take an import's triangles (hull, projection). */
+ * take an import's triangles as a solid (projection's cut). */
 sc_status build_import(const build_ctx *c, const model_import *import, prim *out,
                        const char **empty);
+/* build_import for minkowski, as before the cut and boolean rule: a file
+ * of one object that is not closed is an error where c takes no note.
+ * OpenSCAD 2021.01 prints its "not closed" error there and its whole
+ * minkowski comes out empty, which is not matched yet; an error says so
+ * rather than draw something else. */
+sc_status build_import_summand(const build_ctx *c, const model_import *import, prim *out,
+                               const char **empty);
+/* build_import for the builders that take only an import's corners or
+ * faces (hull, projection without cut): a file of one object gives its
+ * mesh closed or not, one that is not closed as the parity rule takes it
+ * (its triangles as they come), without a warning and never an error, as
+ * OpenSCAD 2021.01 hulls and projects the mesh it reads without asking
+ * that it be closed; several objects are build_import's union, as
+ * OpenSCAD's is a CGAL union. */
+sc_status build_import_mesh(const build_ctx *c, const model_import *import, prim *out,
+                            const char **empty);
 /* build_import_parts, not strict, for a file of one object (STL, OFF),
  * which hands its merged faces to *faces (for CGAL, whose faces must not
  * overlap as the leaf's fans of a face that is not convex do), with the

@@ -9,6 +9,10 @@
  * (faithful.c's rule); a polyhedron its faces (build_mesh.c's fans); an
  * import, surface and the extrusions their --faithful meshes. A
  * transform with a negative determinant turns the triangles back outward.
+ * A polyhedron or import that is not closed is projected as it is, every
+ * face (it has no outward side), silently, as OpenSCAD projects any
+ * mesh; a cut needs its Nef polyhedron, so an import that is not closed
+ * is left out there with OpenSCAD's message as a warning (built_soup).
  *
  * cut = false: the union of every face projected onto z = 0, each turned
  * counter-clockwise (down-facing faces project clockwise), with non-zero
@@ -90,6 +94,7 @@ static int flat(const model_node *n)
 typedef struct soup {
     vec3 *v;
     uint32_t count, cap; /* in triangles */
+    int open;            /* from a mesh that is not closed: not outward */
 } soup;
 
 typedef struct pwalk {
@@ -97,6 +102,7 @@ typedef struct pwalk {
     const model_node *proj;
     int cut;
     build_resize_cache *cache;
+    int corners; /* inside a hull: only the corners of meshes matter */
 } pwalk;
 
 static int add_tri(soup *s, vec3 a, vec3 b, vec3 c)
@@ -245,6 +251,7 @@ static int mesh_soup(const prim *p, soup *s)
     if (p->kind != PRIM_MESH)
         return 1;
     const prim_mesh *mesh = p->u.mesh.mesh;
+    s->open |= mesh->parity;
     for (uint32_t t = 0; t < mesh->tri_count; t++) {
         if (!add_tri(s, mesh->v[3 * t], mesh->v[3 * t + 1], mesh->v[3 * t + 2]))
             return 0;
@@ -253,7 +260,14 @@ static int mesh_soup(const prim *p, soup *s)
 }
 
 /* polyhedron, import, surface, linear_extrude, rotate_extrude: their
- * meshes, the extrusions' as in --faithful (OpenSCAD's polygons). */
+ * meshes, the extrusions' as in --faithful (OpenSCAD's polygons). Without
+ * cut, a polyhedron or import that is not closed is projected as it is,
+ * silently, in both modes (and with --strict): OpenSCAD 2021.01 projects
+ * the faces of the mesh it has without asking that it be closed. A cut
+ * needs a solid: an import that is not closed is left out with OpenSCAD's
+ * message as a warning (build_import), as its Nef polyhedron cannot be
+ * made. Inside a hull, which takes only the corners, a mesh is taken as
+ * it is in a cut too, as OpenSCAD hulls the mesh and cuts the hull. */
 static sc_status built_soup(const pwalk *w, const model_node *n, soup *s)
 {
     const build_ctx *c = w->c;
@@ -261,6 +275,11 @@ static sc_status built_soup(const pwalk *w, const model_node *n, soup *s)
         return build_pending(c, n);
     build_ctx fc = *c;
     fc.faithful = 1;
+    int solid = w->cut && !w->corners;
+    build_ctx loose = *c; /* the parity rule, without a warning */
+    loose.faithful = 0;
+    loose.strict = 0;
+    loose.notes = NULL;
     prim p;
     memset(&p, 0, sizeof p);
     const char *empty = NULL;
@@ -269,13 +288,14 @@ static sc_status built_soup(const pwalk *w, const model_node *n, soup *s)
     case MODEL_POLYHEDRON:
         if (n->u.polyhedron.face_count == 0)
             return SC_OK;
-        st = build_mesh_prim(c, &n->loc, "polyhedron", 1, n->u.polyhedron.points,
-                             n->u.polyhedron.point_count, n->u.polyhedron.indices,
-                             n->u.polyhedron.face_start, n->u.polyhedron.face_count, &p,
-                             &empty);
+        st = build_mesh_prim(solid ? c : &loose, &n->loc, "polyhedron", 1,
+                             n->u.polyhedron.points, n->u.polyhedron.point_count,
+                             n->u.polyhedron.indices, n->u.polyhedron.face_start,
+                             n->u.polyhedron.face_count, &p, &empty);
         break;
     case MODEL_IMPORT:
-        st = build_import(c, n->u.import, &p, &empty);
+        st = solid ? build_import(c, n->u.import, &p, &empty)
+                   : build_import_mesh(c, n->u.import, &p, &empty);
         break;
     case MODEL_SURFACE:
         st = build_surface(c, n->u.surface, &p, &empty);
@@ -356,7 +376,7 @@ static sc_status hull_points(pwalk *w, const model_node *parent, const affine *m
             st = build_twod_main(c, n, &r);
             twod_free(&r);
         } else {
-            soup s = {NULL, 0, 0};
+            soup s = {NULL, 0, 0, 0};
             st = leaf_soup(w, n, &s, depth + 1);
             for (uint32_t i = 0; st == SC_OK && i < 3 * s.count; i += 3) {
                 if (!add_tri(pts, affine_point(m, s.v[i]), affine_point(m, s.v[i + 1]),
@@ -378,9 +398,12 @@ static sc_status hull_points(pwalk *w, const model_node *parent, const affine *m
 static sc_status hull_soup(pwalk *w, const model_node *n, soup *s, int depth)
 {
     const build_ctx *c = w->c;
-    soup pts = {NULL, 0, 0};
+    soup pts = {NULL, 0, 0, 0};
     affine id = affine_identity();
+    int corners = w->corners;
+    w->corners = 1;
     sc_status st = hull_points(w, n, &id, depth, &pts);
+    w->corners = corners;
     hull3 h;
     hull3_status hs = HULL3_FLAT;
     if (st == SC_OK && pts.count)
@@ -575,6 +598,29 @@ static int section_loops(const soup *s, int up, twod_region *out)
     return ok;
 }
 
+/* Adds every face of s with area seen along z to out, turned
+ * counter-clockwise: OpenSCAD's union of the projected faces, for a mesh
+ * that is not closed (no face looks up over every point of it). 0 when
+ * memory runs out or out is full. */
+static int open_faces(const soup *s, twod_region *out)
+{
+    for (uint32_t t = 0; t < s->count; t++) {
+        const vec3 *v = &s->v[3 * t];
+        double z = v3_cross(v3_sub(v[1], v[0]), v3_sub(v[2], v[0])).z;
+        if (!(z != 0))
+            continue;
+        if (!twod_begin_contour(out))
+            return 0;
+        for (int k = 0; k < 3; k++) {
+            const vec3 *q = &v[z > 0 ? k : 2 - k];
+            if (!twod_add_point(out, q->x, q->y))
+                return 0;
+        }
+        twod_end_contour(out);
+    }
+    return 1;
+}
+
 /* Adds the outline of s seen along z to out. The union of every face's
  * projection (OpenSCAD's) is, for a closed mesh, the union of its faces
  * that look up (a vertical line through the solid meets its top at such a
@@ -583,6 +629,8 @@ static int section_loops(const soup *s, int up, twod_region *out)
  * leaf (convex set) is the 2D hull of its corners, the same region. */
 static int projected_faces(const soup *s, int convex, twod_region *out)
 {
+    if (s->open) /* no outward side: every face, turned counter-clockwise */
+        return open_faces(s, out);
     if (convex) {
         double *xy = s->count ? malloc((size_t)s->count * 6 * sizeof *xy) : NULL;
         if (s->count && !xy)
@@ -667,7 +715,7 @@ static int convex_leaf(model_kind kind)
 static sc_status leaf(pwalk *w, const model_node *n, const affine *m, int depth,
                       twod_region *out)
 {
-    soup s = {NULL, 0, 0};
+    soup s = {NULL, 0, 0, 0};
     sc_status st = leaf_soup(w, n, &s, depth);
     if (st == SC_OK && s.count) {
         int flip = affine_det(m) < 0;
@@ -812,7 +860,7 @@ sc_status build_projection(const build_ctx *c, const model_node *n, twod_region 
     twod_clear(out);
     if (n->pending)
         return build_pending(c, n);
-    pwalk w = {c, n, n->u.projection.cut, NULL};
+    pwalk w = {c, n, n->u.projection.cut, NULL, 0};
     affine id = affine_identity();
     sc_status st = walk_children(&w, n, &id, 0, out);
     if (st == SC_OK)

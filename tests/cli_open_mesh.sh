@@ -1,0 +1,140 @@
+# An imported mesh that is not closed under hull() and projection(), as
+# OpenSCAD 2021.01 treats it (seen by running openscad -o on each model):
+#  - hull() takes the corners of the mesh it reads, closed or not, and
+#    prints nothing: the hull of open.stl below is the corner tetrahedron
+#    (4 facets), alone or beside a cube, also under a cut projection,
+#    which cuts the hull;
+#  - projection() (cut = false) projects the faces of that mesh, closed or
+#    not, and prints nothing: the projection of open.stl is the triangle
+#    (0, 0), (1, 0), (0, 1), which only its face looking down gives;
+#  - projection(cut = true) needs a CGAL Nef polyhedron: it prints "ERROR:
+#    The given mesh is not closed! Unable to convert to
+#    CGAL_Nef_Polyhedron." and leaves the mesh out of the section (a cube
+#    beside it is cut as ever).
+# So spancast hulls and projects the mesh silently in both modes, also with
+# --strict (there is no warning to make an error), and leaves it out of a
+# cut with OpenSCAD's message as a warning in both modes (a section needs a
+# solid), an error with --strict. Before, each of these was an error.
+# The same holds for a polyhedron that is not closed under projection().
+#
+# Run as: bash cli_open_mesh.sh <path-to-spancast> <source-dir> <work-dir>
+. "$(dirname "$0")/testlib.sh"
+
+# The corner of a tetrahedron without its slanted face: the faces at
+# x = 0, y = 0 and z = 0 of the hull of the origin and the unit points.
+cat >open.stl <<'STL'
+solid open
+facet normal 0 0 -1
+outer loop
+vertex 0 0 0
+vertex 0 1 0
+vertex 1 0 0
+endloop
+endfacet
+facet normal 0 -1 0
+outer loop
+vertex 0 0 0
+vertex 1 0 0
+vertex 0 0 1
+endloop
+endfacet
+facet normal -1 0 0
+outer loop
+vertex 0 0 0
+vertex 0 0 1
+vertex 0 1 0
+endloop
+endfacet
+endsolid open
+STL
+printf 'hull() {\n\timport(file = "open.stl");\n}\n' >hull.csg
+printf 'hull() {\n\timport(file = "open.stl");\n\tmultmatrix([[1, 0, 0, 2], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]) {\n\t\tcube(size = [0.5, 0.5, 0.5], center = false);\n\t}\n}\n' \
+    >hull-cube.csg
+printf 'linear_extrude(height = 1) {\n\tprojection(cut = false) {\n\t\timport(file = "open.stl");\n\t}\n}\n' \
+    >projection.csg
+printf 'linear_extrude(height = 1) {\n\tprojection(cut = false) {\n\t\tpolyhedron(points = [[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1]], faces = [[0, 1, 2], [0, 3, 1], [0, 2, 3]]);\n\t}\n}\n' \
+    >projection-polyhedron.csg
+printf 'linear_extrude(height = 1) {\n\tprojection(cut = false) {\n\t\thull() {\n\t\t\timport(file = "open.stl");\n\t\t}\n\t}\n}\n' \
+    >projection-hull.csg
+printf 'linear_extrude(height = 1) {\n\tprojection(cut = true) {\n\t\tmultmatrix([[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, -0.5], [0, 0, 0, 1]]) {\n\t\t\timport(file = "open.stl");\n\t\t}\n\t\tmultmatrix([[1, 0, 0, 3], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]) {\n\t\t\tcube(size = [1, 1, 1], center = true);\n\t\t}\n\t}\n}\n' \
+    >cut.csg
+printf 'linear_extrude(height = 1) {\n\tprojection(cut = true) {\n\t\tmultmatrix([[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, -0.25], [0, 0, 0, 1]]) {\n\t\t\thull() {\n\t\t\t\timport(file = "open.stl");\n\t\t\t}\n\t\t}\n\t}\n}\n' \
+    >cut-hull.csg
+
+# inside MODEL WANT OPTIONS... -- POINTS...: spancast inside MODEL at the
+# points says WANT (space-separated), exit 0, and its stderr is $want_err.
+want_err=
+inside() {
+    local model=$1 want=$2
+    shift 2
+    local opts=()
+    while [ "$1" != -- ]; do
+        opts+=("$1")
+        shift
+    done
+    shift
+    local points=()
+    for p in "$@"; do points+=(--point="$p"); done
+    check
+    "$bin" inside "$model" "${points[@]}" "${opts[@]}" >in.txt 2>err.txt ||
+        fail "inside $model ${opts[*]}: exit $?: $(cat err.txt)"
+    [ "$(tr '\n' ' ' <in.txt)" = "$want " ] ||
+        fail "inside $model ${opts[*]}: $(tr '\n' ' ' <in.txt), want $want"
+    [ "$(cat err.txt)" = "$want_err" ] ||
+        fail "inside $model ${opts[*]}: stderr '$(cat err.txt)', want '$want_err'"
+}
+
+for mode in "" --faithful --strict "--faithful --strict"; do
+    # shellcheck disable=SC2086
+    {
+        # the corner tetrahedron: x + y + z < 1 in the positive octant
+        inside hull.csg "in in out out" $mode -- 0.2,0.2,0.2 0.1,0.1,0.7 0.4,0.4,0.4 \
+            -0.1,0.2,0.2
+        # with the cube [2, 2.5] x [0, 0.5]^2: the segment from (1, 0, 0)
+        # to (2, 0.2, 0.2) is in, (1.5, 0.9, 0.1) beyond both
+        inside hull-cube.csg "in in out" $mode -- 1.5,0.1,0.1 2.2,0.2,0.2 1.5,0.9,0.1
+        # the triangle x + y < 1 in the positive quadrant, 1 thick
+        inside projection.csg "in in out out" $mode -- 0.2,0.2,0.5 0.7,0.1,0.5 \
+            0.6,0.6,0.5 -0.1,0.5,0.5
+        inside projection-polyhedron.csg "in in out out" $mode -- 0.2,0.2,0.5 \
+            0.7,0.1,0.5 0.6,0.6,0.5 -0.1,0.5,0.5
+        inside projection-hull.csg "in in out out" $mode -- 0.2,0.2,0.5 0.7,0.1,0.5 \
+            0.6,0.6,0.5 -0.1,0.5,0.5
+        # a cut of the hull (a solid) at z = 0.25: the triangle x + y < 0.75
+        # (OpenSCAD: its DXF has the corners (0, 0), (0.75, 0), (0, 0.75))
+        inside cut-hull.csg "in in out out" $mode -- 0.2,0.2,0.5 0.7,0.02,0.5 \
+            0.4,0.4,0.5 -0.1,0.2,0.5
+    }
+done
+
+# the cut: the open mesh left out with OpenSCAD's message, the cube's
+# square [2.5, 3.5] x [-0.5, 0.5] kept
+left='left out, as OpenSCAD leaves it out ("The given mesh is not closed! Unable to convert to CGAL_Nef_Polyhedron.")'
+edge="imported mesh is not closed (edge (0, 1, 0)-(1, 0, 0) is used by 1 face)"
+want_err="cut.csg:4:18: warning: $edge; $left"
+for mode in "" --faithful; do
+    # shellcheck disable=SC2086
+    inside cut.csg "out out in" $mode -- 0.1,0.1,0.5 0.3,0.3,0.5 3,0,0.5
+done
+# the open mesh alone: its warning and the model's emptiness, and nothing
+# of the empty section or extrusion (it follows from the warning), as
+# after any import left out
+printf 'linear_extrude(height = 1) {\n\tprojection(cut = true) {\n\t\tmultmatrix([[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, -0.5], [0, 0, 0, 1]]) {\n\t\t\timport(file = "open.stl");\n\t\t}\n\t}\n}\n' \
+    >cut-alone.csg
+want_err="cut-alone.csg:4:18: warning: $edge; $left
+cut-alone.csg: warning: the model is empty (nothing to render)"
+for mode in "" --faithful; do
+    # shellcheck disable=SC2086
+    inside cut-alone.csg "out" $mode -- 0.1,0.1,0.5
+done
+for mode in --strict "--strict --faithful"; do
+    check
+    # shellcheck disable=SC2086
+    "$bin" inside cut.csg --point=3,0,0.5 $mode >in.txt 2>err.txt &&
+        fail "inside cut.csg $mode: exit 0"
+    w="cut.csg:4:18: error: $edge"
+    [ "$(cat err.txt)" = "$w" ] || fail "cut.csg $mode: stderr '$(cat err.txt)', want '$w'"
+done
+
+echo "$checks checks, $fails failures"
+[ "$fails" = 0 ]
