@@ -182,7 +182,7 @@ fi
 # ---- import() of a file that does not open: empty, the rest rendered ----
 printf 'cube(size = [1, 1, 1], center = false);\nimport(file = "missing.stl");\n' >import.csg
 printf 'cube(size = [1, 1, 1], center = false);\n' >cube_ref.csg
-warns import.csg "import.csg:2:1: warning: Can't open import file 'missing.stl': No such file or directory (the import is empty)"
+warns import.csg "import.csg:2:1: warning: Can't open import file 'missing.stl': No such file or directory; the import is empty, as OpenSCAD leaves it out (--strict makes it an error)"
 same import.csg cube_ref.csg
 cat >dxf.csg <<'M'
 linear_extrude(height = 3) {
@@ -190,8 +190,27 @@ linear_extrude(height = 3) {
 	import(file = "missing.dxf");
 }
 M
-warns dxf.csg "dxf.csg:3:2: warning: Can't open DXF file 'missing.dxf': No such file or directory (the import is empty)"
+warns dxf.csg "dxf.csg:3:2: warning: Can't open DXF file 'missing.dxf': No such file or directory; the import is empty, as OpenSCAD leaves it out (--strict makes it an error)"
 same dxf.csg extrude_ref.csg
+printf 'linear_extrude(height = 3) {\n\tsquare(size = [10, 6], center = false);\n\timport(file = "missing.svg");\n}\n' >svg.csg
+warns svg.csg "svg.csg:3:2: warning: Can't open SVG file 'missing.svg': No such file or directory; the import is empty, as OpenSCAD leaves it out (--strict makes it an error)"
+same svg.csg extrude_ref.csg
+# --strict: a file that cannot be opened is the error, in both modes
+# (exit 1, no image)
+for case in "import.csg:2:1: error: Can't open import file 'missing.stl'" \
+    "dxf.csg:3:2: error: Can't open DXF file 'missing.dxf'" \
+    "svg.csg:3:2: error: Can't open SVG file 'missing.svg'"; do
+    model=${case%%:*}
+    for mode in "" --faithful; do
+        check
+        rm -f strict.png
+        "$bin" render "$model" -o strict.png -q --strict $mode 2>err.txt &&
+            fail "$model --strict $mode: exit 0"
+        [ "$(cat err.txt)" = "$case: No such file or directory" ] ||
+            fail "$model --strict $mode: $(cat err.txt)"
+        [ -e strict.png ] && fail "$model --strict $mode: an image was written"
+    done
+done
 # a file that opens and is not a mesh stays an error (as OpenSCAD's parse
 # error)
 printf 'solid x\nfacet normal 0 0 1\nouter loop\nvertex 0 0\n' >bad.stl
@@ -352,7 +371,7 @@ warns bad_flat.csg "bad_flat.csg:1:15: warning: import: bad.svg:4: Premature end
 bad_flat.csg: warning: the model is empty (nothing to render)"
 printf 'union() {\n\tcube(size = [1, 1, 1]);\n\trotate_extrude() import(file = "bad.svg");\n\tlinear_extrude(height = 1) import(file = "missing.svg");\n}\n' >bad_revolve.csg
 warns bad_revolve.csg "bad_revolve.csg:3:33: warning: import: bad.svg:4: Premature end of data in tag svg line 1; the import is empty, as OpenSCAD leaves it out (--strict makes it an error)
-bad_revolve.csg:4:29: warning: Can't open SVG file 'missing.svg': No such file or directory (the import is empty)"
+bad_revolve.csg:4:29: warning: Can't open SVG file 'missing.svg': No such file or directory; the import is empty, as OpenSCAD leaves it out (--strict makes it an error)"
 same bad_revolve.csg cube_ref.csg
 # an import of an extension no reader takes: OpenSCAD's "Unsupported file
 # format", and in a 2D operation its "Ignoring 3D child object" too

@@ -700,7 +700,8 @@ static void test_import(void **state)
      * the rest rendered */
     snprintf(expected, sizeof expected,
              "%s:2:1: Can't open import file '%s/none.off': No such file or "
-             "directory (the import is empty)",
+             "directory; the import is empty, as OpenSCAD leaves it out (--strict makes "
+             "it an error)",
              model, dir);
     const char *const missing[] = {expected};
     sc_scene *rest =

@@ -479,7 +479,7 @@ static void test_import(void **state)
     /* as OpenSCAD: a warning, and nothing imported */
     assert_true(strstr(message, "m.csg:1:30: Can't open DXF file '") == message);
     assert_non_null(
-        strstr(message, "missing.dxf': No such file or directory (the import is empty)"));
+        strstr(message, "missing.dxf': No such file or directory; the import is empty"));
     assert_int_equal(r.contour_count, 0);
     twod_free(&r);
     /* a missing SVG file too */

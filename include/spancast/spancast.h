@@ -134,9 +134,11 @@ typedef struct sc_scene sc_scene;
 typedef struct sc_load_options {
     size_t size;  /* sizeof (sc_load_options) as compiled: set by the init call */
     int faithful; /* spheres and cylinders as OpenSCAD's polyhedra for $fn, $fa, $fs */
-    int strict;   /* a polyhedron or imported mesh that is not closed is an error
-                     (by default a warning: left out with faithful, else rendered
-                     by the parity rule) */
+    int strict;   /* a warning that leaves a part out or renders it otherwise is an
+                     error: a polyhedron or imported mesh that is not closed (by
+                     default left out with faithful, else rendered by the parity
+                     rule), a file that cannot be read, a matrix that is not
+                     finite */
 } sc_load_options;
 
 /* Sets size and the defaults (faithful 0, strict 0). Never fails. */

@@ -501,9 +501,7 @@ static sc_status import_opens(builder *b, const model_node *n, int *opened)
     if (f)
         fclose(f);
     else
-        st = build_note_left_out(&c, &n->loc,
-                                 "Can't open import file '%s': %s (the import is empty)",
-                                 path, strerror(errno));
+        st = build_file_not_opened(&c, &n->loc, "import", path, strerror(errno));
     free(path);
     return st;
 }

@@ -53,6 +53,18 @@ sc_status build_note_left_out(const build_ctx *c, const sc_location *loc,
     return st;
 }
 
+sc_status build_file_not_opened(const build_ctx *c, const sc_location *loc,
+                                const char *what, const char *path, const char *why)
+{
+    if (c->strict)
+        return err_set(c->error, SC_ERR_IO, loc, "Can't open %s file '%s': %s", what,
+                       path, why);
+    return build_note_left_out(c, loc,
+                               "Can't open %s file '%s': %s; the import is empty, as "
+                               "OpenSCAD leaves it out (--strict makes it an error)",
+                               what, path, why);
+}
+
 sc_status build_xform_not_finite(const build_ctx *c, const model_node *n)
 {
     if (n->kind != MODEL_XFORM || !n->not_finite || !c->notes)

@@ -55,6 +55,14 @@ sc_status build_note(const build_ctx *c, const sc_location *loc, const char *for
 sc_status build_note_left_out(const build_ctx *c, const sc_location *loc,
                               const char *format, ...) SC_PRINTF(3, 4);
 
+/* A file at path that does not open (errno's reason in why), read as
+ * "what" ("import", "DXF", "SVG"): OpenSCAD 2021.01 (import.cc) logs
+ * "Can't open ... file" and imports nothing, and so does this, with the
+ * warning, counted as left out; with --strict (c->strict) the error
+ * SC_ERR_IO. */
+sc_status build_file_not_opened(const build_ctx *c, const sc_location *loc,
+                                const char *what, const char *path, const char *why);
+
 /* A multmatrix n with a nan or inf entry (model.h, not_finite), met where
  * it is built (c->notes set): with --strict the error, else OpenSCAD
  * 2021.01's warning, as it removes the subtree; its matrix is the zero

@@ -662,9 +662,7 @@ static sc_status read_svg(const eval *e, const model_node *n, twod_region *out)
     sc_status st;
     FILE *f = fopen(path, "rb");
     if (!f) {
-        st = build_note_left_out(e->c, &n->loc,
-                                 "Can't open SVG file '%s': %s (the import is empty)",
-                                 path, strerror(errno));
+        st = build_file_not_opened(e->c, &n->loc, "SVG", path, strerror(errno));
     } else {
         fclose(f);
         svg_options o = {d->dpi, d->center};
@@ -711,9 +709,7 @@ static sc_status read_import(const eval *e, const model_node *n, twod_region *ou
      * open as nothing, with a warning. */
     FILE *f = fopen(path, "rb");
     if (!f) {
-        st = build_note_left_out(e->c, &n->loc,
-                                 "Can't open DXF file '%s': %s (the import is empty)",
-                                 path, strerror(errno));
+        st = build_file_not_opened(e->c, &n->loc, "DXF", path, strerror(errno));
         free(path);
         return st;
     }
