@@ -195,11 +195,26 @@ same dxf.csg extrude_ref.csg
 printf 'linear_extrude(height = 3) {\n\tsquare(size = [10, 6], center = false);\n\timport(file = "missing.svg");\n}\n' >svg.csg
 warns svg.csg "svg.csg:3:2: warning: Can't open SVG file 'missing.svg': No such file or directory; the import is empty, as OpenSCAD leaves it out (--strict makes it an error)"
 same svg.csg extrude_ref.csg
+# the same inside hull, minkowski and projection (OpenSCAD: hull() {
+# import("missing.stl"); cube(1); } is the cube, with the warning)
+printf 'hull() {\n\timport(file = "missing.stl");\n\tcube(size = [1, 1, 1], center = false);\n}\n' >hull-missing.csg
+printf 'minkowski() {\n\timport(file = "missing.stl");\n\tcube(size = [1, 1, 1], center = false);\n}\n' >mink-missing.csg
+printf 'linear_extrude(height = 1) {\n\tprojection(cut = false) {\n\t\timport(file = "missing.stl");\n\t\tcube(size = [1, 1, 1], center = false);\n\t}\n}\n' >proj-missing.csg
+printf 'linear_extrude(height = 1) {\n\tsquare(size = [1, 1], center = false);\n}\n' >square_ref.csg
+warns hull-missing.csg "hull-missing.csg:2:16: warning: Can't open import file 'missing.stl': No such file or directory; the import is empty, as OpenSCAD leaves it out (--strict makes it an error)"
+same hull-missing.csg cube_ref.csg
+warns mink-missing.csg "mink-missing.csg:2:16: warning: Can't open import file 'missing.stl': No such file or directory; the import is empty, as OpenSCAD leaves it out (--strict makes it an error)"
+same mink-missing.csg cube_ref.csg
+warns proj-missing.csg "proj-missing.csg:3:17: warning: Can't open import file 'missing.stl': No such file or directory; the import is empty, as OpenSCAD leaves it out (--strict makes it an error)"
+same proj-missing.csg square_ref.csg
 # --strict: a file that cannot be opened is the error, in both modes
 # (exit 1, no image)
 for case in "import.csg:2:1: error: Can't open import file 'missing.stl'" \
     "dxf.csg:3:2: error: Can't open DXF file 'missing.dxf'" \
-    "svg.csg:3:2: error: Can't open SVG file 'missing.svg'"; do
+    "svg.csg:3:2: error: Can't open SVG file 'missing.svg'" \
+    "hull-missing.csg:2:16: error: Can't open import file 'missing.stl'" \
+    "mink-missing.csg:2:16: error: Can't open import file 'missing.stl'" \
+    "proj-missing.csg:3:17: error: Can't open import file 'missing.stl'"; do
     model=${case%%:*}
     for mode in "" --faithful; do
         check

@@ -136,5 +136,59 @@ for mode in --strict "--strict --faithful"; do
     [ "$(cat err.txt)" = "$w" ] || fail "cut.csg $mode: stderr '$(cat err.txt)', want '$w'"
 done
 
+# minkowski(): OpenSCAD 2021.01 sums meshes on CGAL's Nef polyhedra, which
+# an open mesh cannot become: it prints "ERROR: The given mesh is not
+# closed! ..." and the whole minkowski is empty (minkowski() { open;
+# cube(1); } beside a cube gives the cube alone, also for a polyhedron);
+# an open mesh in a union inside it is left out of that union, and the rest
+# is summed (minkowski() { union() { open; translate([3, 0, 0]) cube(1); }
+# cube(0.5); } is the box [3, 4.5] x [0, 1.5] x [0, 1.5]).
+printf 'minkowski() {\n\timport(file = "open.stl");\n\tcube(size = [1, 1, 1], center = false);\n}\nmultmatrix([[1, 0, 0, 5], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]) {\n\tcube(size = [1, 1, 1], center = false);\n}\n' \
+    >mink.csg
+printf 'minkowski() {\n\tpolyhedron(points = [[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1]], faces = [[0, 1, 2], [0, 3, 1], [0, 2, 3]]);\n\tcube(size = [1, 1, 1], center = false);\n}\nmultmatrix([[1, 0, 0, 5], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]) {\n\tcube(size = [1, 1, 1], center = false);\n}\n' \
+    >mink-poly.csg
+printf 'minkowski() {\n\tunion() {\n\t\timport(file = "open.stl");\n\t\tmultmatrix([[1, 0, 0, 3], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]) {\n\t\t\tcube(size = [1, 1, 1], center = false);\n\t\t}\n\t}\n\tcube(size = [0.5, 0.5, 0.5], center = false);\n}\n' \
+    >mink-union.csg
+empty_mink='the minkowski is empty, as OpenSCAD leaves it out ("The given mesh is not closed! Unable to convert to CGAL_Nef_Polyhedron.")'
+poly_edge="polyhedron is not closed (edge 1-2 is used by 1 face)"
+for mode in "" --faithful; do
+    want_err="mink.csg:2:16: warning: $edge; $empty_mink"
+    # shellcheck disable=SC2086
+    inside mink.csg "out out in" $mode -- 0.5,0.5,0.5 1.5,0.2,0.2 5.5,0.5,0.5
+    want_err="mink-poly.csg:2:2: warning: $poly_edge; $empty_mink"
+    # shellcheck disable=SC2086
+    inside mink-poly.csg "out out in" $mode -- 0.5,0.5,0.5 1.5,0.2,0.2 5.5,0.5,0.5
+    want_err="mink-union.csg:3:17: warning: $edge; $left"
+    # shellcheck disable=SC2086
+    inside mink-union.csg "out out in in out" $mode -- 0.2,0.2,0.2 1.5,0.2,0.2 \
+        3.1,0.1,0.1 4.4,1.4,1.4 4.6,0.5,0.5
+done
+# a union inside a hull is a CGAL union too: the open mesh is left out of
+# it (OpenSCAD: hull() { union() { open; translate([3, 0, 0]) cube(1); } }
+# is the cube alone), also when a transform unites several children
+printf 'hull() {\n\tunion() {\n\t\timport(file = "open.stl");\n\t\tmultmatrix([[1, 0, 0, 3], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]) {\n\t\t\tcube(size = [1, 1, 1], center = false);\n\t\t}\n\t}\n}\n' \
+    >hull-union.csg
+printf 'hull() {\n\tmultmatrix([[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]) {\n\t\timport(file = "open.stl");\n\t\tmultmatrix([[1, 0, 0, 3], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]) {\n\t\t\tcube(size = [1, 1, 1], center = false);\n\t\t}\n\t}\n}\n' \
+    >hull-xform.csg
+for mode in "" --faithful; do
+    for model in hull-union.csg hull-xform.csg; do
+        want_err="$model:3:17: warning: $edge; $left"
+        # shellcheck disable=SC2086
+        inside "$model" "out out in" $mode -- 0.2,0.2,0.2 2,0.2,0.2 3.5,0.5,0.5
+    done
+done
+for case in "mink.csg:2:16: error: $edge" "mink-poly.csg:2:2: error: $poly_edge" \
+    "mink-union.csg:3:17: error: $edge" "hull-union.csg:3:17: error: $edge"; do
+    model=${case%%:*}
+    for mode in --strict "--strict --faithful"; do
+        check
+        # shellcheck disable=SC2086
+        "$bin" inside "$model" --point=5.5,0.5,0.5 $mode >in.txt 2>err.txt &&
+            fail "inside $model $mode: exit 0"
+        [ "$(cat err.txt)" = "$case" ] ||
+            fail "$model $mode: stderr '$(cat err.txt)', want '$case'"
+    done
+done
+
 echo "$checks checks, $fails failures"
 [ "$fails" = 0 ]

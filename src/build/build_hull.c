@@ -91,6 +91,11 @@ typedef struct walk {
     build_resize_cache **cache;
     nef_plugin *nef; /* the CGAL plugin, opened on first use (handle NULL before) */
     int check;       /* only check the children: no mesh booleans */
+    /* inside a union of several solids (a group's or a transform's
+     * children), which OpenSCAD makes a CGAL Nef polyhedron of */
+    int in_union;
+    /* a minkowski's: set when a mesh among its children is not closed */
+    int *not_closed;
 } walk;
 
 /* Each resize node's matrix, computed once per build: a resize inside a
@@ -412,6 +417,68 @@ static sc_status mesh_points(const walk *w, const model_node *n, const affine *m
     return SC_OK;
 }
 
+/* OpenSCAD 2021.01 takes a mesh into a CGAL Nef polyhedron in a union of
+ * several solids and in a minkowski sum, and cannot when the mesh is not
+ * closed: it prints "The given mesh is not closed! ..." and leaves the
+ * mesh out of the union, or the whole minkowski empty. A hull takes the
+ * corners of the mesh as they are. Whether n, a polyhedron or an import
+ * of one object, is such a mesh in such a place: then its warning is
+ * given (the error with --strict), *open is set, and for a minkowski
+ * *w->not_closed. Reads the file once more for an import. */
+static sc_status closed_check(const walk *w, const model_node *n, int *open)
+{
+    const build_ctx *c = w->c;
+    *open = 0;
+    if ((!w->in_union && !w->not_closed) || n->pending)
+        return SC_OK;
+    /* the faces as the leaf merges them; their warnings, and a file that
+     * does not open, are the leaf's (mesh_points) */
+    sc_error sink = {SC_OK, "", 0, 0, ""};
+    build_ctx quiet = *c;
+    quiet.note = &sink;
+    quiet.notes = NULL;
+    quiet.strict = 0;
+    quiet.faithful = 0;
+    build_mesh_faces f;
+    memset(&f, 0, sizeof f);
+    const char *empty = NULL, *what = "polyhedron";
+    const sc_location *loc = &n->loc;
+    sc_status st;
+    if (n->kind == MODEL_POLYHEDRON) {
+        st = build_mesh_merge(&quiet, loc, 1, n->u.polyhedron.points,
+                              n->u.polyhedron.point_count, n->u.polyhedron.indices,
+                              n->u.polyhedron.face_start, n->u.polyhedron.face_count, &f);
+    } else {
+        what = "imported mesh";
+        loc = &n->u.import->file_loc;
+        st = build_import_faces(&quiet, n->u.import, &empty, &f);
+    }
+    char why[SC_ERROR_MESSAGE_MAX - 160];
+    int sound =
+        st != SC_OK || empty || !f.face_count
+            ? 1
+            : build_mesh_sound(&f, what, n->kind == MODEL_POLYHEDRON, why, sizeof why);
+    build_mesh_faces_free(&f);
+    if (st != SC_OK) { /* the leaf's own error, found again where it is built */
+        err_clear(c->error);
+        return SC_OK;
+    }
+    if (sound < 0)
+        return err_nomem(c->error, loc);
+    if (sound)
+        return SC_OK;
+    *open = 1;
+    if (c->strict)
+        return err_set(c->error, SC_ERR_SEMANTIC, loc, "%s", why);
+    if (w->in_union)
+        return build_note_left_out(c, loc,
+                                   "%s; left out, as OpenSCAD leaves it out (\"%s\")",
+                                   why, build_openscad_not_closed);
+    *w->not_closed = 1;
+    return build_note(c, loc, "%s; the %s is empty, as OpenSCAD leaves it out (\"%s\")",
+                      why, w->owner, build_openscad_not_closed);
+}
+
 /* ---- the walk ---- */
 
 /* multmatrix(m): the matrix, or 0 in *ok for a singular one (no geometry). */
@@ -500,7 +567,8 @@ static sc_status depth_error(const walk *w, const model_node *n)
 }
 
 static sc_status minkowski_parts(const walk *w, const model_node *n, const affine *m,
-                                 int depth, partlist *out);
+                                 int depth, partlist *out, int *not_closed);
+static int solids(const model_node *n);
 static sc_status resize_matrix(const walk *w, const model_node *n, int depth, affine *out,
                                const char **warning);
 static sc_status solid_parts(const walk *w, const model_node *n, const affine *m,
@@ -540,13 +608,17 @@ static sc_status collect(const walk *w, const model_node *parent, const affine *
             st = check_2d(w, n);
             any_2d = 1;
         } else if (is_group(kind)) {
-            st = collect(w, n, m, depth + 1, out);
+            walk sub = *w;
+            sub.in_union |= solids(n) > 1;
+            st = collect(&sub, n, m, depth + 1, out);
         } else if (kind == MODEL_XFORM || kind == MODEL_RESIZE) {
             affine inner;
             int ok;
+            walk sub = *w;
+            sub.in_union |= solids(n) > 1;
             st = inner_frame(w, n, m, depth + 1, &inner, &ok);
             if (st == SC_OK && ok)
-                st = collect(w, n, &inner, depth + 1, out);
+                st = collect(&sub, n, &inner, depth + 1, out);
         } else if (kind == MODEL_CUBE || kind == MODEL_SPHERE || kind == MODEL_CYLINDER) {
             shape s;
             if ((st = read_shape(c, n, &s)) == SC_OK && s.kind != SHAPE_NONE) {
@@ -557,8 +629,12 @@ static sc_status collect(const walk *w, const model_node *parent, const affine *
         } else if (kind == MODEL_POLYHEDRON || is_mesh(kind)) {
             pointset set = {NULL, 0, 0};
             double volume = 0;
-            st = kind == MODEL_POLYHEDRON ? polyhedron_points(w, n, m, &set, &volume)
-                                          : mesh_points(w, n, m, &set, &volume);
+            int open = 0;
+            if (kind == MODEL_POLYHEDRON || kind == MODEL_IMPORT)
+                st = closed_check(w, n, &open);
+            if (st == SC_OK && !open)
+                st = kind == MODEL_POLYHEDRON ? polyhedron_points(w, n, m, &set, &volume)
+                                              : mesh_points(w, n, m, &set, &volume);
             if (st == SC_OK && w->convex && set.count) {
                 hull3 h;
                 hull3_status hs = hull3_compute(set.p, set.count, &h);
@@ -581,7 +657,7 @@ static sc_status collect(const walk *w, const model_node *parent, const affine *
             }
             free(set.p);
         } else if (kind == MODEL_HULL) {
-            walk inner = {c, "hull", 0, w->cache, w->nef, w->check};
+            walk inner = {c, "hull", 0, w->cache, w->nef, w->check, 0, NULL};
             partlist sub = {NULL, 0, 0};
             st = collect(&inner, n, m, depth + 1, &sub);
             pointset *part = NULL;
@@ -595,7 +671,8 @@ static sc_status collect(const walk *w, const model_node *parent, const affine *
             }
             parts_free(&sub);
         } else if (kind == MODEL_MINKOWSKI) {
-            st = minkowski_parts(w, n, m, depth + 1, out);
+            int emptied; /* then it adds nothing, as an empty child adds nothing */
+            st = minkowski_parts(w, n, m, depth + 1, out, &emptied);
         } else if (kind == MODEL_DIFFERENCE || kind == MODEL_INTERSECTION) {
             st = solid_parts(w, n, m, depth + 1, out);
         } else {
@@ -631,11 +708,14 @@ static sc_status reduce(const walk *w, const model_node *n, partlist *l)
     return SC_OK;
 }
 
-/* The parts of minkowski node n (through m) appended to out. */
+/* The parts of minkowski node n (through m) appended to out; none, with
+ * *not_closed set, when a mesh among its children is not closed
+ * (closed_check). */
 static sc_status minkowski_parts(const walk *w, const model_node *n, const affine *m,
-                                 int depth, partlist *out)
+                                 int depth, partlist *out, int *not_closed)
 {
-    walk inner = {w->c, "minkowski", 1, w->cache, w->nef, w->check};
+    *not_closed = 0;
+    walk inner = {w->c, "minkowski", 1, w->cache, w->nef, w->check, 0, not_closed};
     partlist acc = {NULL, 0, 0};
     sc_status st = SC_OK;
     int first = 1;
@@ -708,6 +788,8 @@ static sc_status minkowski_parts(const walk *w, const model_node *n, const affin
         if (st == SC_OK)
             st = reduce(&inner, n, &acc);
     }
+    if (*not_closed)
+        parts_free(&acc);
     for (uint32_t i = 0; i < acc.count && st == SC_OK; i++) {
         pointset *s = new_part(out);
         if (!s) {
@@ -1027,7 +1109,7 @@ static sc_status nef_node(const walk *w, const model_node *n, const affine *m, i
             st = part ? shape_points(w, n, &s, m, part) : err_nomem(c->error, &n->loc);
         }
     } else if (kind == MODEL_HULL) {
-        walk inner = {c, "hull", 0, w->cache, w->nef, w->check};
+        walk inner = {c, "hull", 0, w->cache, w->nef, w->check, 0, NULL};
         partlist sub = {NULL, 0, 0};
         st = collect(&inner, n, m, depth + 1, &sub);
         pointset *part = NULL;
@@ -1041,7 +1123,8 @@ static sc_status nef_node(const walk *w, const model_node *n, const affine *m, i
         }
         parts_free(&sub);
     } else if (kind == MODEL_MINKOWSKI) {
-        st = minkowski_parts(w, n, m, depth + 1, &parts);
+        int emptied; /* then nothing, as closed_check said */
+        st = minkowski_parts(w, n, m, depth + 1, &parts, &emptied);
     } else {
         st = err_set(c->error, SC_ERR_UNSUPPORTED, &n->loc,
                      "'%s' inside %s is not supported yet", n->name, w->owner);
@@ -1103,7 +1186,7 @@ sc_status build_nef_triangles(const build_ctx *c, const model_node *n, const cha
     *tris = NULL;
     *tri_count = 0;
     nef_plugin nef = {0};
-    walk w = {c, owner, 0, cache, &nef, 0};
+    walk w = {c, owner, 0, cache, &nef, 0, 0, NULL};
     nef_solid *solid = NULL;
     affine id = affine_identity();
     sc_status st = nef_ready(&w, n);
@@ -1207,7 +1290,7 @@ sc_status build_hull(const build_ctx *c, const model_node *n, int emit,
 {
     memset(out, 0, sizeof *out);
     nef_plugin nef = {0};
-    walk w = {c, "hull", 0, cache, &nef, !emit};
+    walk w = {c, "hull", 0, cache, &nef, !emit, 0, NULL};
     partlist parts = {NULL, 0, 0};
     affine id = affine_identity();
     sc_status st = collect(&w, n, &id, 0, &parts);
@@ -1235,17 +1318,18 @@ sc_status build_minkowski(const build_ctx *c, const model_node *n, int emit,
 {
     memset(out, 0, sizeof *out);
     nef_plugin nef = {0};
-    walk w = {c, "minkowski", 1, cache, &nef, !emit};
+    walk w = {c, "minkowski", 1, cache, &nef, !emit, 0, NULL};
     partlist parts = {NULL, 0, 0};
     affine id = affine_identity();
-    sc_status st = minkowski_parts(&w, n, &id, 0, &parts);
+    int not_closed;
+    sc_status st = minkowski_parts(&w, n, &id, 0, &parts, &not_closed);
     nef_plugin_close(&nef);
     int flat = 0;
     for (uint32_t i = 0; i < parts.count && st == SC_OK && emit; i++)
         st = emit_hull(c, n, &parts.items[i], out, &flat);
     parts_free(&parts);
-    if (st == SC_OK && emit && out->count == 0)
-        *empty = "minkowski without volume is empty";
+    if (st == SC_OK && emit && out->count == 0) /* "": its warning was given */
+        *empty = not_closed ? "" : "minkowski without volume is empty";
     return st;
 }
 
@@ -1543,7 +1627,7 @@ sc_status build_resize(const build_ctx *c, const model_node *n,
                        build_resize_cache **cache, affine *out, const char **warning)
 {
     nef_plugin nef = {0};
-    walk w = {c, "resize", 0, cache, &nef, 0};
+    walk w = {c, "resize", 0, cache, &nef, 0, 0, NULL};
     const model_node *measured = n->u.resize->measured ? n->u.resize->measured : n;
     sc_status st = resize_matrix(&w, measured, 0, out, warning);
     nef_plugin_close(&nef);

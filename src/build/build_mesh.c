@@ -184,8 +184,7 @@ static sc_status finish_mesh(const build_ctx *c, const sc_location *loc, int num
     return SC_OK;
 }
 
-/* OpenSCAD's message for a mesh it cannot take into CGAL. */
-static const char openscad_not_closed[] =
+const char build_openscad_not_closed[] =
     "The given mesh is not closed! Unable to convert to CGAL_Nef_Polyhedron.";
 
 sc_status build_mesh_prim(const build_ctx *c, const sc_location *loc, const char *what,
@@ -203,7 +202,7 @@ sc_status build_mesh_prim(const build_ctx *c, const sc_location *loc, const char
     if (!sound && c->faithful) {
         *empty = ""; /* the reason is the warning */
         return build_note(c, loc, "%s; left out, as OpenSCAD leaves it out (\"%s\")", why,
-                          openscad_not_closed);
+                          build_openscad_not_closed);
     }
     size_t tri_count = 0;
     for (uint32_t f = 0; f < face_count; f++)
@@ -1458,7 +1457,7 @@ sc_status build_mesh_solid(const build_ctx *c, const sc_location *loc, const cha
         return err_set(c->error, SC_ERR_SEMANTIC, loc, "%s", why);
     if (!sound && c->faithful) {
         err_set(c->note, SC_OK, loc, "%s; left out, as OpenSCAD leaves it out (\"%s\")",
-                why, openscad_not_closed);
+                why, build_openscad_not_closed);
         *empty = "";
         return SC_OK;
     }
@@ -2008,8 +2007,13 @@ static sc_status import_parts(const build_ctx *c, const model_import *import, in
         why = strerror(errno);
     }
     if (!text) {
-        sc_status st =
-            err_set(c->error, SC_ERR_IO, &loc, "import: cannot read '%s': %s", path, why);
+        int opened = !strcmp(why, "out of memory") || !strcmp(why, "file is too large") ||
+                     !strcmp(why, "read error");
+        if (!opened) /* empty, with OpenSCAD's warning, as at the top level */
+            *empty = "";
+        sc_status st = opened ? err_set(c->error, SC_ERR_IO, &loc,
+                                        "import: cannot read '%s': %s", path, why)
+                              : build_file_not_opened(c, &loc, "import", path, why);
         free(path);
         return st;
     }

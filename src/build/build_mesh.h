@@ -107,6 +107,9 @@ int build_mesh_face_triangles(const vec3 *p, uint32_t n, int reversed, uint32_t 
 char *build_file_path(const build_ctx *c, const char *name);
 struct build_prims; /* build_hull.h */
 
+/* OpenSCAD 2021.01's message for a mesh it cannot take into CGAL. */
+extern const char build_openscad_not_closed[];
+
 /* An import of a file whose extension no reader takes (model.h,
  * MODEL_MESH_UNSUPPORTED), as OpenSCAD 2021.01 logs it, before it opens
  * anything: "Unsupported file format while trying to import file 'NAME'",
@@ -139,10 +142,9 @@ sc_status build_import_solids(const build_ctx *c, const model_import *import,
 sc_status build_import(const build_ctx *c, const model_import *import, prim *out,
                        const char **empty);
 /* build_import for minkowski, as before the cut and boolean rule: a file
- * of one object that is not closed is an error where c takes no note.
- * OpenSCAD 2021.01 prints its "not closed" error there and its whole
- * minkowski comes out empty, which is not matched yet; an error says so
- * rather than draw something else. */
+ * of one object that is not closed is an error where c takes no note
+ * (build_hull.c's minkowski checks its meshes first, and empties itself
+ * with a warning as OpenSCAD 2021.01 does). */
 sc_status build_import_summand(const build_ctx *c, const model_import *import, prim *out,
                                const char **empty);
 /* build_import for the builders that take only an import's corners or
