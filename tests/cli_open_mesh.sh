@@ -177,8 +177,23 @@ for mode in "" --faithful; do
         inside "$model" "out out in" $mode -- 0.2,0.2,0.2 2,0.2,0.2 3.5,0.5,0.5
     done
 done
+# a boolean inside a hull is CGAL's too: the open mesh is left out of it
+# (OpenSCAD: hull() { difference() { cube(6); open; } } is the whole cube)
+printf 'hull() {\n\tdifference() {\n\t\tcube(size = [2, 2, 2], center = false);\n\t\timport(file = "open.stl");\n\t}\n}\n' \
+    >hull-diff.csg
+printf 'hull() {\n\tdifference() {\n\t\tcube(size = [2, 2, 2], center = false);\n\t\tpolyhedron(points = [[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1]], faces = [[0, 1, 2], [0, 3, 1], [0, 2, 3]]);\n\t}\n}\n' \
+    >hull-diff-poly.csg
+for mode in "" --faithful; do
+    want_err="hull-diff.csg:4:17: warning: $edge; $left"
+    # shellcheck disable=SC2086
+    inside hull-diff.csg "in in out" $mode -- 0.05,0.05,0.05 1.9,1.9,1.9 2.1,1,1
+    want_err="hull-diff-poly.csg:4:3: warning: $poly_edge; $left"
+    # shellcheck disable=SC2086
+    inside hull-diff-poly.csg "in in out" $mode -- 0.05,0.05,0.05 1.9,1.9,1.9 2.1,1,1
+done
 for case in "mink.csg:2:16: error: $edge" "mink-poly.csg:2:2: error: $poly_edge" \
-    "mink-union.csg:3:17: error: $edge" "hull-union.csg:3:17: error: $edge"; do
+    "mink-union.csg:3:17: error: $edge" "hull-union.csg:3:17: error: $edge" \
+    "hull-diff.csg:4:17: error: $edge" "hull-diff-poly.csg:4:3: error: $poly_edge"; do
     model=${case%%:*}
     for mode in --strict "--strict --faithful"; do
         check

@@ -423,8 +423,9 @@ static sc_status mesh_points(const walk *w, const model_node *n, const affine *m
  * mesh out of the union, or the whole minkowski empty. A hull takes the
  * corners of the mesh as they are. Whether n, a polyhedron or an import
  * of one object, is such a mesh in such a place: then its warning is
- * given (the error with --strict), *open is set, and for a minkowski
- * *w->not_closed. Reads the file once more for an import. */
+ * given (the error with --strict; nothing where the walk only checks),
+ * *open is set, and for a minkowski *w->not_closed. Reads the file once
+ * more for an import. */
 static sc_status closed_check(const walk *w, const model_node *n, int *open)
 {
     const build_ctx *c = w->c;
@@ -468,6 +469,8 @@ static sc_status closed_check(const walk *w, const model_node *n, int *open)
     if (sound)
         return SC_OK;
     *open = 1;
+    if (w->check) /* only checked: said where it is built */
+        return SC_OK;
     if (c->strict)
         return err_set(c->error, SC_ERR_SEMANTIC, loc, "%s", why);
     if (w->in_union)
@@ -1052,6 +1055,15 @@ static sc_status nef_node(const walk *w, const model_node *n, const affine *m, i
         if (st != SC_OK || !ok)
             return st;
         return nef_children(w, n, &inner, depth + 1, NEF_UNION, out);
+    }
+    /* CGAL takes every mesh here, so one that is not closed is left out
+     * as from a union (closed_check) */
+    walk cgal = *w;
+    cgal.in_union = 1;
+    int open = 0;
+    if (kind == MODEL_POLYHEDRON || (kind == MODEL_IMPORT && !n->pending)) {
+        if ((st = closed_check(&cgal, n, &open)) != SC_OK || open)
+            return st;
     }
     if (kind == MODEL_POLYHEDRON) {
         if (n->pending)
