@@ -470,6 +470,21 @@ surface_empty.csg:4:17: warning: surface: illegal value in 'notpng.png' line 1: 
         [ -e strict.png ] && fail "$model --strict $mode: an image was written"
     done
 done
+# an illegal value on a last line without its newline: OpenSCAD 2021.01
+# warns only when its stream is not at the end, so it keeps the same
+# values silently (the same 34 facets as with the newline), also with
+# --strict here, as there is no warning to make an error
+printf '1 2 3\n4 5 6\n7 x 9' >unterminated.dat
+printf '1 2 3\n4 5 6\n7\n' >unterminated_kept.dat
+printf 'surface(file = "unterminated.dat", center = false, invert = false);\n' >surface_unterminated.csg
+printf 'surface(file = "unterminated_kept.dat", center = false, invert = false);\n' >surface_unterminated_kept.csg
+for mode in "" --faithful --strict; do
+    warns surface_unterminated.csg "" $mode
+    check
+    "$bin" compare surface_unterminated.csg surface_unterminated_kept.csg -q $mode \
+        >compare.txt 2>compare.err && [ "$(tail -n 1 compare.txt)" = same ] ||
+        fail "surface_unterminated.csg $mode: $(cat compare.err) $(tail -n 12 compare.txt | tr '\n' ' ')"
+done
 
 # ---- multmatrix with nan or inf: OpenSCAD removes the object ----
 # OpenSCAD 2021.01 exports multmatrix([[0/0, ...]]) and [[1/0, ...]] with

@@ -101,7 +101,9 @@ static sc_status too_large(const build_ctx *c, const sc_location *loc, const cha
 
 /* Parses .dat text into g. A token that is not a number ends the reading
  * there: its error in c->error, 1 in *stopped, and g holds what came
- * before (the status stays SC_OK). */
+ * before (the status stays SC_OK). On a last line without its newline it
+ * is 2: OpenSCAD 2021.01 warns of an illegal value only where its stream
+ * is not at the end, and keeps the same values silently there. */
 static sc_status read_dat(const build_ctx *c, const sc_location *loc, const char *path,
                           char *text, size_t size, grid *g, int *stopped)
 {
@@ -140,7 +142,7 @@ static sc_status read_dat(const build_ctx *c, const sc_location *loc, const char
                             "surface: illegal value in '%s' line %u: '%.40s' is not a "
                             "number",
                             path, line_no, tok);
-                    *stopped = 1;
+                    *stopped = eol == end ? 2 : 1;
                     break;
                 }
                 *q = saved;
@@ -388,6 +390,10 @@ static sc_status surface(const build_ctx *c, const model_surface *s, prim *out,
     else
         st = read_dat(c, &loc, path, (char *)bytes, size, &g, &stopped);
     free(bytes);
+    if (st == SC_OK && stopped == 2) { /* silent, as OpenSCAD is */
+        err_clear(c->error);
+        stopped = 0;
+    }
     if (st == SC_ERR_IO && !c->strict) { /* not opened, or not decoded */
         sc_error reason = *c->error;
         err_clear(c->error);
