@@ -9,13 +9,14 @@
 . "$(dirname "$0")/testlib.sh"
 require_tools oiiotool
 
-# same A B: spancast compare finds the two models the same.
+# same A B [OPTIONS]: spancast compare (with OPTIONS) finds the two models
+# the same.
 same() {
     check
-    "$bin" compare "$1" "$2" -q >compare.txt 2>compare.err ||
-        fail "compare $1 $2: exit $? $(cat compare.err)"
+    "$bin" compare "$1" "$2" -q "${@:3}" >compare.txt 2>compare.err ||
+        fail "compare $* : exit $? $(cat compare.err)"
     [ "$(tail -n 1 compare.txt)" = same ] ||
-        fail "$1 and $2 differ: $(tail -n 12 compare.txt | tr '\n' ' ')"
+        fail "$1 and $2 differ ${*:3}: $(tail -n 12 compare.txt | tr '\n' ' ')"
 }
 
 # warns MODEL EXPECTED [render options]: spancast render MODEL prints
@@ -436,10 +437,8 @@ printf 'surface(file = "kept.dat", center = false, invert = false);\n' >surface_
 for mode in "" --faithful; do
     warns surface_empty.csg "surface_empty.csg:3:17: warning: surface: the file 'missing.png' couldn't be opened: No such file or directory$left_out
 surface_empty.csg:4:17: warning: surface: illegal value in 'notpng.png' line 1: 'not' is not a number$stopped" $mode
-    check
-    "$bin" compare surface_empty.csg cube_ref.csg -q $mode >compare.txt 2>compare.err &&
-        [ "$(tail -n 1 compare.txt)" = same ] ||
-        fail "surface_empty.csg $mode: $(cat compare.err) $(tail -n 12 compare.txt | tr '\n' ' ')"
+    # shellcheck disable=SC2086
+    same surface_empty.csg cube_ref.csg $mode
     check
     "$bin" render surface_broken.csg -o out.png --imgsize=64,48 -q $mode 2>err.txt ||
         fail "surface_broken.csg $mode: exit $?: $(cat err.txt)"
@@ -447,14 +446,11 @@ surface_empty.csg:4:17: warning: surface: illegal value in 'notpng.png' line 1: 
     "surface_broken.csg:3:17: warning: surface: can't read PNG image 'broken.png': "*"$left_out") ;;
     *) fail "surface_broken.csg $mode: stderr '$(cat err.txt)'" ;;
     esac
-    "$bin" compare surface_broken.csg cube_ref.csg -q $mode >compare.txt 2>compare.err &&
-        [ "$(tail -n 1 compare.txt)" = same ] ||
-        fail "surface_broken.csg $mode: $(cat compare.err) $(tail -n 12 compare.txt | tr '\n' ' ')"
+    # shellcheck disable=SC2086
+    same surface_broken.csg cube_ref.csg $mode
     warns surface_illegal.csg "surface_illegal.csg:1:16: warning: surface: illegal value in 'illegal.dat' line 2: 'x' is not a number$stopped" $mode
-    check
-    "$bin" compare surface_illegal.csg surface_kept.csg -q $mode >compare.txt 2>compare.err &&
-        [ "$(tail -n 1 compare.txt)" = same ] ||
-        fail "surface_illegal.csg $mode: $(cat compare.err) $(tail -n 12 compare.txt | tr '\n' ' ')"
+    # shellcheck disable=SC2086
+    same surface_illegal.csg surface_kept.csg $mode
     for model in surface_empty.csg surface_broken.csg surface_illegal.csg; do
         check
         rm -f strict.png
@@ -480,10 +476,8 @@ printf 'surface(file = "unterminated.dat", center = false, invert = false);\n' >
 printf 'surface(file = "unterminated_kept.dat", center = false, invert = false);\n' >surface_unterminated_kept.csg
 for mode in "" --faithful --strict; do
     warns surface_unterminated.csg "" $mode
-    check
-    "$bin" compare surface_unterminated.csg surface_unterminated_kept.csg -q $mode \
-        >compare.txt 2>compare.err && [ "$(tail -n 1 compare.txt)" = same ] ||
-        fail "surface_unterminated.csg $mode: $(cat compare.err) $(tail -n 12 compare.txt | tr '\n' ' ')"
+    # shellcheck disable=SC2086
+    same surface_unterminated.csg surface_unterminated_kept.csg $mode
 done
 
 # ---- multmatrix with nan or inf: OpenSCAD removes the object ----
@@ -507,10 +501,8 @@ removed="warning: Transformation matrix contains Not-a-Number and/or Infinity - 
 for mode in "" --faithful; do
     warns not_finite.csg "not_finite.csg:1:1: $removed
 not_finite.csg:7:2: $removed" $mode
-    check
-    "$bin" compare not_finite.csg cube_ref.csg -q $mode >compare.txt 2>compare.err &&
-        [ "$(tail -n 1 compare.txt)" = same ] ||
-        fail "not_finite.csg $mode: $(cat compare.err) $(tail -n 12 compare.txt | tr '\n' ' ')"
+    # shellcheck disable=SC2086
+    same not_finite.csg cube_ref.csg $mode
     check
     rm -f strict.png
     "$bin" render not_finite.csg -o strict.png -q --strict $mode 2>err.txt &&
@@ -531,10 +523,8 @@ while IFS='|' read -r name head leaf tail; do
     printf '%s\n%s\n' "$head" "$tail" >"nf_${name}_ref.csg"
     for mode in "" --faithful; do
         warns "nf_$name.csg" "nf_$name.csg:2:2: $removed" $mode
-        check
-        "$bin" compare "nf_$name.csg" "nf_${name}_ref.csg" -q $mode >compare.txt 2>compare.err &&
-            [ "$(tail -n 1 compare.txt)" = same ] ||
-            fail "nf_$name.csg $mode: $(cat compare.err) $(tail -n 12 compare.txt | tr '\n' ' ')"
+        # shellcheck disable=SC2086
+        same "nf_$name.csg" "nf_${name}_ref.csg" $mode
     done
     check
     "$bin" render "nf_$name.csg" -o strict.png -q --strict 2>err.txt &&
@@ -566,10 +556,8 @@ for mode in "" --faithful; do
     warns nf_mixed_revolve.csg "nf_mixed_revolve.csg:3:2: $removed" $mode
     for pair in nf_mixed.csg:cube_ref.csg nf_mixed_flat.csg:nf_mixed_flat_ref.csg \
         nf_first.csg:cube_ref.csg nf_mixed_revolve.csg:nf_mixed_revolve_ref.csg; do
-        check
-        "$bin" compare "${pair%%:*}" "${pair#*:}" -q $mode >compare.txt 2>compare.err &&
-            [ "$(tail -n 1 compare.txt)" = same ] ||
-            fail "$pair $mode: $(cat compare.err) $(tail -n 12 compare.txt | tr '\n' ' ')"
+        # shellcheck disable=SC2086
+        same "${pair%%:*}" "${pair#*:}" $mode
     done
 done
 # a 2D model: the first object decides, the removed one is no object
@@ -577,10 +565,8 @@ printf 'square(size = [1, 1], center = false);\n%s square(size = [1, 1], center 
 printf 'square(size = [1, 1], center = false);\n' >nf_flat_ref.csg
 for mode in "" --faithful; do
     warns nf_flat.csg "nf_flat.csg:2:1: $removed" $mode
-    check
-    "$bin" compare nf_flat.csg nf_flat_ref.csg -q $mode >compare.txt 2>compare.err &&
-        [ "$(tail -n 1 compare.txt)" = same ] ||
-        fail "nf_flat.csg $mode: $(cat compare.err) $(tail -n 12 compare.txt | tr '\n' ' ')"
+    # shellcheck disable=SC2086
+    same nf_flat.csg nf_flat_ref.csg $mode
 done
 
 # ---- a lossy mask ----
