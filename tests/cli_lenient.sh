@@ -480,6 +480,33 @@ for mode in "" --faithful --strict; do
     same surface_unterminated.csg surface_unterminated_kept.csg $mode
 done
 
+# ---- polyhedron faces as OpenSCAD reads them ----
+# OpenSCAD 2021.01 leaves a point index out of range out of its face with
+# "Point index 7 is out of bounds (from faces[3][3])", in a hull or a
+# projection as anywhere: here the tetrahedron keeps its four faces.
+tetra='polyhedron(points = [[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1]], faces = [[0, 1, 2], [0, 3, 1], [0, 2, 3], [1, 3, 2, 7]], convexity = 1);'
+tetra_ref='polyhedron(points = [[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1]], faces = [[0, 1, 2], [0, 3, 1], [0, 2, 3], [1, 3, 2]], convexity = 1);'
+printf '%s\n' "$tetra" >tetra_bad.csg
+printf 'hull() {\n\t%s\n}\n' "$tetra" >tetra_hull.csg
+printf 'linear_extrude(height = 1) {\n\tprojection(cut = false) {\n\t\t%s\n\t}\n}\n' "$tetra" >tetra_projection.csg
+printf '%s\n' "$tetra_ref" >tetra_ref.csg
+printf 'linear_extrude(height = 1) {\n\tprojection(cut = false) {\n\t\t%s\n\t}\n}\n' "$tetra_ref" >tetra_projection_ref.csg
+for mode in "" --faithful; do
+    # shellcheck disable=SC2086
+    {
+        warns tetra_bad.csg "tetra_bad.csg:1:119: warning: Point index 7 is out of bounds (from faces[3][3])" $mode
+        same tetra_bad.csg tetra_ref.csg $mode
+        warns tetra_hull.csg "tetra_hull.csg:2:120: warning: Point index 7 is out of bounds (from faces[3][3])" $mode
+        same tetra_hull.csg tetra_ref.csg $mode
+        warns tetra_projection.csg "tetra_projection.csg:3:121: warning: Point index 7 is out of bounds (from faces[3][3])" $mode
+        same tetra_projection.csg tetra_projection_ref.csg $mode
+    }
+done
+check
+"$bin" render tetra_hull.csg -o strict.png -q --strict 2>err.txt && fail "tetra_hull.csg --strict: exit 0"
+[ "$(cat err.txt)" = "tetra_hull.csg:2:120: error: polyhedron face 3: point index 7 is out of range (4 points)" ] ||
+    fail "tetra_hull.csg --strict: $(cat err.txt)"
+
 # ---- multmatrix with nan or inf: OpenSCAD removes the object ----
 # OpenSCAD 2021.01 exports multmatrix([[0/0, ...]]) and [[1/0, ...]] with
 # nan and inf; rendering the .scad (openscad -o x.stl) it warns

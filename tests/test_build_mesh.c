@@ -259,6 +259,27 @@ static void append_copies(char *text, size_t size, const char *const *corners,
     snprintf(text + at, size - at, "]);");
 }
 
+/* OpenSCAD 2021.01 leaves an index out of range out of its face with a
+ * warning, truncates a fraction and drops a face of fewer than 3 points:
+ * the faces left here are those of the closed tetrahedron, and only the
+ * indices out of range are warned of (--strict: test_build.c). */
+static void test_bad_indices(void **state)
+{
+    (void)state;
+    const char *const out_of_range[] = {
+        "m.csg:1:129: Point index 4 is out of bounds (from faces[4][2])",
+        "m.csg:1:134: Point index -1 is out of bounds (from faces[5][0])"};
+    const char *text =
+        "polyhedron(points = [[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1]], faces = "
+        "[[0, 1, 2], [0, 3, 1], [0, 2, 3], [1, 3, 2.5], [0, 1, 4], [-1, 2], [3]]);";
+    for (int faithful = 0; faithful <= 1; faithful++) {
+        sc_scene *s = test_check_warnings("m.csg", text, faithful, out_of_range, 2);
+        assert_true(inside(s, 0.1, 0.1, 0.1));
+        assert_false(inside(s, 0.5, 0.5, 0.5));
+        sc_scene_release(s);
+    }
+}
+
 static void test_merged_copies(void **state)
 {
     (void)state;
@@ -820,6 +841,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_nonconvex_polyhedron),
         cmocka_unit_test(test_mesh_errors),
+        cmocka_unit_test(test_bad_indices),
         cmocka_unit_test(test_merged_copies),
         cmocka_unit_test(test_quad_diagonal),
         cmocka_unit_test(test_bowtie),

@@ -98,6 +98,30 @@ static void test_polyhedron(void **state)
     assert_int_equal(n->u.polyhedron.face_count, 1);
     assert_int_equal(n->u.polyhedron.face_start[1], 4);
     assert_int_equal(n->u.polyhedron.indices[0], 2);
+    assert_int_equal(n->u.polyhedron.bad_count, 0);
+    release(&l);
+    /* as OpenSCAD 2021.01 reads faces: an index truncated toward zero, one
+     * out of range left out of its face (and listed), then a face of
+     * fewer than 3 points left out */
+    l = lower("polyhedron([[0, 0, 0], [1, 0, 0], [0, 1, 0]],\n"
+              "  [[0, 1, 2.9], [0, 1, 3], [2, -0.5, 1, -1], [1, 0], []]);\n");
+    n = l.m->first;
+    assert_int_equal(n->u.polyhedron.face_count, 2);
+    assert_int_equal(n->u.polyhedron.face_start[0], 0);
+    assert_int_equal(n->u.polyhedron.face_start[1], 3);
+    assert_int_equal(n->u.polyhedron.face_start[2], 6);
+    const uint32_t want[6] = {0, 1, 2, 2, 0, 1};
+    for (int i = 0; i < 6; i++)
+        assert_int_equal(n->u.polyhedron.indices[i], want[i]);
+    assert_int_equal(n->u.polyhedron.bad_count, 2);
+    assert_true(n->u.polyhedron.bad[0].value == 3);
+    assert_int_equal(n->u.polyhedron.bad[0].face, 1);
+    assert_int_equal(n->u.polyhedron.bad[0].place, 2);
+    assert_int_equal(n->u.polyhedron.bad[0].loc.line, 2);
+    assert_int_equal(n->u.polyhedron.bad[0].loc.column, 24);
+    assert_true(n->u.polyhedron.bad[1].value == -1);
+    assert_int_equal(n->u.polyhedron.bad[1].face, 2);
+    assert_int_equal(n->u.polyhedron.bad[1].place, 3);
     release(&l);
 }
 
@@ -196,8 +220,16 @@ static void test_points_context(void **state)
     assert_true(n->first_child->u.cube.size[2] == 2);
     n = n->next;
     assert_int_equal(n->kind, MODEL_POLYHEDRON);
-    assert_string_equal(n->pending->message,
-                        "polyhedron face 0: point index is not one of the 3 points");
+    /* an index out of range is left out, for the builder to warn of, as
+     * OpenSCAD leaves it out; the face keeps its two points for the hull */
+    assert_null(n->pending);
+    assert_int_equal(n->u.polyhedron.face_count, 1);
+    assert_int_equal(n->u.polyhedron.face_start[1], 2);
+    assert_int_equal(n->u.polyhedron.bad_count, 1);
+    assert_true(n->u.polyhedron.bad[0].value == 5);
+    assert_int_equal(n->u.polyhedron.bad[0].face, 0);
+    assert_int_equal(n->u.polyhedron.bad[0].place, 2);
+    assert_int_equal(n->u.polyhedron.bad[0].loc.line, 3);
     n = n->next;
     assert_int_equal(n->kind, MODEL_CIRCLE);
     /* read as in the 2D context: a 2D hull takes it, a 3D one checks it */
@@ -388,9 +420,6 @@ static void test_errors(void **state)
     check_error("color([1, \"x\"]) { cube(); }", SC_ERR_SEMANTIC,
                 "m.csg:1:11: error: wrong type for argument 'c' of 'color' (expected a "
                 "vector of numbers or a colour name)");
-    check_error("polyhedron([[0, 0, 0]], [[0, 0, 1]]);", SC_ERR_SEMANTIC,
-                "m.csg:1:33: error: polyhedron face 0: point index 1 is out of range (1 "
-                "points)");
     check_error("light(position = [0, 0, 0], direction = [0, 0, 1]);", SC_ERR_SEMANTIC,
                 "m.csg:1:1: error: 'light' needs either position or direction");
     check_error("material(reflect = 0.6, transmit = 0.6) { cube(); }", SC_ERR_SEMANTIC,

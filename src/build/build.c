@@ -369,14 +369,16 @@ static sc_status warn_note(builder *b, const sc_error *note)
 static sc_status build_polyhedron(builder *b, const model_node *n, const frame *state,
                                   uint32_t *id)
 {
-    sc_status st = SC_OK;
+    sc_error note = {SC_OK, "", 0, 0, ""};
+    build_ctx c = context(b, state->emit, &note);
+    sc_status st = build_polyhedron_bad(&c, n);
+    if (st != SC_OK)
+        return st;
     if (n->u.polyhedron.face_count == 0) {
         if (state->emit)
             st = warn(b, &n->loc, "polyhedron without faces is empty");
         return st;
     }
-    sc_error note = {SC_OK, "", 0, 0, ""};
-    build_ctx c = context(b, state->emit, &note);
     build_mesh_faces f;
     st = build_mesh_merge(&c, &n->loc, 1, n->u.polyhedron.points,
                           n->u.polyhedron.point_count, n->u.polyhedron.indices,

@@ -1,6 +1,7 @@
 /* What the builders of 2D subtrees share (build_ctx.h): the pending
  * argument error of a node, the warnings of a walk, a multmatrix removed
  * for a nan or inf entry, and the 2D part of a multmatrix. */
+#include <math.h>
 #include <stdarg.h>
 #include <stdio.h>
 #include <string.h>
@@ -63,6 +64,26 @@ sc_status build_file_not_opened(const build_ctx *c, const sc_location *loc,
                                "Can't open %s file '%s': %s; the import is empty, as "
                                "OpenSCAD leaves it out (--strict makes it an error)",
                                what, path, why);
+}
+
+sc_status build_polyhedron_bad(const build_ctx *c, const model_node *n)
+{
+    if (n->kind != MODEL_POLYHEDRON || n->pending || !c->notes)
+        return SC_OK;
+    sc_status st = SC_OK;
+    for (uint32_t i = 0; i < n->u.polyhedron.bad_count && st == SC_OK; i++) {
+        const model_bad_index *b = &n->u.polyhedron.bad[i];
+        double x = isfinite(b->value) ? trunc(b->value) : b->value;
+        if (c->strict)
+            return err_set(
+                c->error, SC_ERR_SEMANTIC, &b->loc,
+                "polyhedron face %u: point index %g is out of range (%u points)", b->face,
+                x, n->u.polyhedron.point_count);
+        st =
+            build_note(c, &b->loc, "Point index %g is out of bounds (from faces[%u][%u])",
+                       x, b->face, b->place);
+    }
+    return st;
 }
 
 sc_status build_xform_not_finite(const build_ctx *c, const model_node *n)

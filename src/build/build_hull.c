@@ -633,7 +633,9 @@ static sc_status collect(const walk *w, const model_node *parent, const affine *
             pointset set = {NULL, 0, 0};
             double volume = 0;
             int open = 0;
-            if (kind == MODEL_POLYHEDRON || kind == MODEL_IMPORT)
+            if (kind == MODEL_POLYHEDRON && !w->check)
+                st = build_polyhedron_bad(c, n);
+            if (st == SC_OK && (kind == MODEL_POLYHEDRON || kind == MODEL_IMPORT))
                 st = closed_check(w, n, &open);
             if (st == SC_OK && !open)
                 st = kind == MODEL_POLYHEDRON ? polyhedron_points(w, n, m, &set, &volume)
@@ -1061,6 +1063,9 @@ static sc_status nef_node(const walk *w, const model_node *n, const affine *m, i
     walk cgal = *w;
     cgal.in_union = 1;
     int open = 0;
+    if (kind == MODEL_POLYHEDRON && !w->check &&
+        (st = build_polyhedron_bad(c, n)) != SC_OK)
+        return st;
     if (kind == MODEL_POLYHEDRON || (kind == MODEL_IMPORT && !n->pending)) {
         if ((st = closed_check(&cgal, n, &open)) != SC_OK || open)
             return st;

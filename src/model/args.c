@@ -252,6 +252,66 @@ sc_status model_cube(const model_reader *c, const parse_node *n, double size[3],
     return model_bool(c, n, "center", 1, center);
 }
 
+static const char faces_expected[] = "a vector of faces, each a vector of point indices";
+
+sc_status model_read_faces(const model_reader *r, arena *mem, const parse_node *n,
+                           const char *param, const parse_value *v, uint32_t point_count,
+                           uint32_t min_points, model_node *out)
+{
+    if (v->kind != PARSE_VECTOR)
+        return model_wrong_type(r, n, param, v, faces_expected);
+    uint32_t count = v->u.vector.count, bad_count = 0;
+    size_t total = 0;
+    for (uint32_t f = 0; f < count; f++) {
+        const parse_value *fv = &v->u.vector.items[f];
+        if (fv->kind != PARSE_VECTOR)
+            return model_wrong_type(r, n, param, fv, faces_expected);
+        for (uint32_t i = 0; i < fv->u.vector.count; i++) {
+            const parse_value *iv = &fv->u.vector.items[i];
+            if (iv->kind != PARSE_NUMBER)
+                return model_wrong_type(r, n, param, iv, faces_expected);
+            double x = trunc(iv->u.number);
+            bad_count += !(x >= 0 && x < (double)point_count);
+        }
+        total += fv->u.vector.count;
+    }
+    if (total > UINT32_MAX)
+        return err_nomem(r->error, NULL);
+    uint32_t *start = arena_calloc(mem, (size_t)count + 1, sizeof *start);
+    uint32_t *indices = arena_calloc(mem, total ? total : 1, sizeof *indices);
+    model_bad_index *bad = bad_count ? arena_calloc(mem, bad_count, sizeof *bad) : NULL;
+    if (!start || !indices || (bad_count && !bad))
+        return err_nomem(r->error, NULL);
+    uint32_t k = 0, kept = 0, b = 0;
+    for (uint32_t f = 0; f < count; f++) {
+        const parse_value *fv = &v->u.vector.items[f];
+        uint32_t first = k;
+        for (uint32_t i = 0; i < fv->u.vector.count; i++) {
+            const parse_value *iv = &fv->u.vector.items[i];
+            double x = trunc(iv->u.number);
+            if (x >= 0 && x < (double)point_count) {
+                indices[k++] = (uint32_t)x;
+            } else {
+                bad[b].value = iv->u.number;
+                bad[b].face = f;
+                bad[b].place = i;
+                bad[b++].loc = model_loc(r, iv);
+            }
+        }
+        if (k - first < min_points)
+            k = first; /* left out */
+        else
+            start[kept++] = first;
+    }
+    start[kept] = k;
+    out->u.polyhedron.indices = indices;
+    out->u.polyhedron.face_start = start;
+    out->u.polyhedron.face_count = kept;
+    out->u.polyhedron.bad = bad;
+    out->u.polyhedron.bad_count = bad_count;
+    return SC_OK;
+}
+
 sc_status model_polygon_index(const model_reader *c, const parse_value *v, uint32_t path,
                               uint32_t count, uint32_t *index)
 {

@@ -76,6 +76,15 @@ sc_status model_read_xform(const model_reader *r, arena *mem, const parse_node *
  * set, or st says so). */
 sc_status model_keep_pending(arena *mem, sc_status st, int nomem, const sc_error *pending,
                              model_node *out, sc_error *error);
+/* polyhedron's faces (the argument param, value v) over point_count
+ * points into out->u.polyhedron, as OpenSCAD 2021.01 reads them: each
+ * index a number, truncated toward zero (its conversion to an unsigned
+ * integer); one out of range left out of its face and listed in bad (the
+ * builders warn of it); then a face of fewer than min_points points left
+ * out (OpenSCAD's triangulation drops it). Allocates from mem. */
+sc_status model_read_faces(const model_reader *r, arena *mem, const parse_node *n,
+                           const char *param, const parse_value *v, uint32_t point_count,
+                           uint32_t min_points, model_node *out);
 /* polygon(points, paths)'s arguments: points (NULL when absent) a vector
  * of finite [x, y], paths (NULL when absent) a vector of vectors; the
  * indices in the paths are the caller's to check. */

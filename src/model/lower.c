@@ -101,7 +101,6 @@ static sc_status lower_cylinder(lowerer *l, const parse_node *n, model_node *out
 }
 
 static const char points_expected[] = "a vector of [x, y, z] points";
-static const char faces_expected[] = "a vector of faces, each a vector of point indices";
 
 static sc_status read_points(lowerer *l, const parse_node *n, const parse_value *v,
                              model_node *out)
@@ -137,74 +136,6 @@ static sc_status read_points(lowerer *l, const parse_node *n, const parse_value 
     return SC_OK;
 }
 
-/* One face's point indices into indices: whole numbers below count. */
-static sc_status read_face(lowerer *l, const parse_node *n, const char *param,
-                           const parse_value *fv, uint32_t f, uint32_t count,
-                           uint32_t *indices)
-{
-    if (fv->u.vector.count < 3) {
-        sc_location loc = model_loc(&l->r, fv);
-        return err_set(l->r.error, SC_ERR_SEMANTIC, &loc,
-                       "polyhedron face %u has fewer than 3 points", f);
-    }
-    for (uint32_t i = 0; i < fv->u.vector.count; i++) {
-        const parse_value *iv = &fv->u.vector.items[i];
-        if (iv->kind != PARSE_NUMBER)
-            return model_wrong_type(&l->r, n, param, iv, faces_expected);
-        double x = iv->u.number;
-        sc_location loc = model_loc(&l->r, iv);
-        if (!(x == floor(x)))
-            return err_set(l->r.error, SC_ERR_SEMANTIC, &loc,
-                           "polyhedron face %u: point index %g is not a whole number", f,
-                           x);
-        if (x < 0 || x >= (double)count)
-            return err_set(
-                l->r.error, SC_ERR_SEMANTIC, &loc,
-                "polyhedron face %u: point index %g is out of range (%u points)", f, x,
-                count);
-        indices[i] = (uint32_t)x;
-    }
-    return SC_OK;
-}
-
-static sc_status read_faces(lowerer *l, const parse_node *n, const char *param,
-                            const parse_value *v, model_node *out)
-{
-    if (!v)
-        return SC_OK;
-    if (v->kind != PARSE_VECTOR)
-        return model_wrong_type(&l->r, n, param, v, faces_expected);
-    uint32_t count = v->u.vector.count;
-    size_t total = 0;
-    for (uint32_t f = 0; f < count; f++) {
-        const parse_value *fv = &v->u.vector.items[f];
-        if (fv->kind != PARSE_VECTOR)
-            return model_wrong_type(&l->r, n, param, fv, faces_expected);
-        total += fv->u.vector.count;
-    }
-    if (total > UINT32_MAX)
-        return err_nomem(l->r.error, NULL);
-    uint32_t *start = arena_calloc(&l->m->mem, (size_t)count + 1, sizeof *start);
-    uint32_t *indices = total ? arena_calloc(&l->m->mem, total, sizeof *indices) : NULL;
-    if (!start || (total && !indices))
-        return err_nomem(l->r.error, NULL);
-    uint32_t k = 0;
-    for (uint32_t f = 0; f < count; f++) {
-        const parse_value *fv = &v->u.vector.items[f];
-        start[f] = k;
-        sc_status st =
-            read_face(l, n, param, fv, f, out->u.polyhedron.point_count, indices + k);
-        if (st != SC_OK)
-            return st;
-        k += fv->u.vector.count;
-    }
-    start[count] = k;
-    out->u.polyhedron.indices = indices;
-    out->u.polyhedron.face_start = start;
-    out->u.polyhedron.face_count = count;
-    return SC_OK;
-}
-
 /* polyhedron(points, faces, convexity), faces also as the older
  * `triangles`. */
 static sc_status lower_polyhedron(lowerer *l, const parse_node *n, model_node *out)
@@ -214,7 +145,10 @@ static sc_status lower_polyhedron(lowerer *l, const parse_node *n, model_node *o
     if (!faces && (faces = model_arg(n, "triangles", -1)))
         faces_name = "triangles";
     sc_status st = read_points(l, n, model_arg(n, "points", 0), out);
-    return st != SC_OK ? st : read_faces(l, n, faces_name, faces, out);
+    if (st != SC_OK || !faces)
+        return st;
+    return model_read_faces(&l->r, &l->m->mem, n, faces_name, faces,
+                            out->u.polyhedron.point_count, 3, out);
 }
 
 /* import(file = "x.stl" | "x.off" | "x.amf" | "x.3mf") of a mesh, or of a

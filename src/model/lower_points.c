@@ -33,7 +33,6 @@
 #include "model/lower_twod.h"
 
 static const char points_expected[] = "a vector of [x, y, z] points";
-static const char faces_expected[] = "a vector of faces, each a vector of point indices";
 
 static sc_status lower_polyhedron(model_lowerer *l, const parse_node *n, model_node *out)
 {
@@ -46,19 +45,9 @@ static sc_status lower_polyhedron(model_lowerer *l, const parse_node *n, model_n
         return SC_OK;
     if (pts->kind != PARSE_VECTOR)
         return model_wrong_type(&l->r, n, "points", pts, points_expected);
-    if (faces->kind != PARSE_VECTOR)
-        return model_wrong_type(&l->r, n, faces_name, faces, faces_expected);
-    uint32_t np = pts->u.vector.count, nf = faces->u.vector.count;
-    size_t total = 0;
-    for (uint32_t f = 0; f < nf; f++) {
-        const parse_value *fv = &faces->u.vector.items[f];
-        total += fv->kind == PARSE_VECTOR ? fv->u.vector.count : 0;
-    }
+    uint32_t np = pts->u.vector.count;
     vec3 *p = model_lowerer_alloc(l, (size_t)np * sizeof *p);
-    uint32_t *start = model_lowerer_alloc(l, ((size_t)nf + 1) * sizeof *start);
-    uint32_t *index =
-        total <= UINT32_MAX ? model_lowerer_alloc(l, total * sizeof *index) : NULL;
-    if (!p || !start || !index) {
+    if (!p) {
         l->nomem = 1;
         return SC_ERR_NOMEM;
     }
@@ -76,31 +65,12 @@ static sc_status lower_polyhedron(model_lowerer *l, const parse_node *n, model_n
             return model_wrong_type(&l->r, n, "points", pv, points_expected);
         p[i] = v3(xyz[0], xyz[1], xyz[2]);
     }
-    uint32_t at = 0;
-    for (uint32_t f = 0; f < nf; f++) {
-        const parse_value *fv = &faces->u.vector.items[f];
-        if (fv->kind != PARSE_VECTOR)
-            return model_wrong_type(&l->r, n, faces_name, fv, faces_expected);
-        start[f] = at;
-        for (uint32_t i = 0; i < fv->u.vector.count; i++) {
-            const parse_value *iv = &fv->u.vector.items[i];
-            double x = iv->kind == PARSE_NUMBER ? iv->u.number : -1;
-            if (!(x >= 0 && x < (double)np && x == floor(x))) {
-                sc_location loc = model_loc(&l->r, iv);
-                return err_set(
-                    l->r.error, SC_ERR_SEMANTIC, &loc,
-                    "polyhedron face %u: point index is not one of the %u points", f, np);
-            }
-            index[at++] = (uint32_t)x;
-        }
-    }
-    start[nf] = at;
     out->u.polyhedron.points = p;
     out->u.polyhedron.point_count = np;
-    out->u.polyhedron.indices = index;
-    out->u.polyhedron.face_start = start;
-    out->u.polyhedron.face_count = nf;
-    return SC_OK;
+    sc_status st = model_read_faces(&l->r, l->mem, n, faces_name, faces, np, 0, out);
+    if (st == SC_ERR_NOMEM)
+        l->nomem = 1;
+    return st;
 }
 
 /* A vector of up to 3 numbers (newsize) or flags (auto: true/false or

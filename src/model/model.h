@@ -206,6 +206,14 @@ typedef struct model_surface {
 
 typedef struct model_node model_node;
 
+/* A polyhedron's point index out of range: its value as written, its
+ * face and place in the face as written, and its position. */
+typedef struct model_bad_index {
+    double value;
+    uint32_t face, place;
+    sc_location loc;
+} model_bad_index;
+
 /* The 2D nodes below an extrusion, and a 2D shape in a 3D model, are
  * lowered in the 2D context: every builder of 2D subtrees (the 2D engine,
  * the exact region and revolve profiles, text) reads them, each at its own
@@ -348,7 +356,13 @@ struct model_node {
             uint32_t point_count;
             const uint32_t *indices;    /* every face's point indices, in range */
             const uint32_t *face_start; /* face f: indices[face_start[f] .. [f + 1]) */
-            uint32_t face_count;        /* each face has 3 points or more */
+            uint32_t face_count;        /* each face has 3 points or more (not
+                                           below hull, minkowski and resize) */
+            /* the indices out of range, left out of their faces as
+             * OpenSCAD 2021.01 leaves them out with a warning, which the
+             * builders give where they build the node */
+            const model_bad_index *bad;
+            uint32_t bad_count;
         } polyhedron;
         /* multmatrix: rows of the 3x4 affine part; the zero map when an
          * entry is nan or inf (not_finite), which OpenSCAD 2021.01 removes
