@@ -345,7 +345,7 @@ static void test_errors(void **state)
                 "(expected a number)");
     check_error(
         "rotate_extrude() { polygon(points = [[0, 0], [1, 0], [1, 1]], paths = "
-        "[[0, 1, 3]]); }",
+        "[[0, 1, \"x\"]]); }",
         SC_ERR_SEMANTIC,
         "m.csg:1:79: error: polygon path 0: point index is not one of the 3 points");
     /* the file form reads the drawing's arguments as import() does */

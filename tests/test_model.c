@@ -250,19 +250,22 @@ static void test_points_context(void **state)
 }
 
 /* The 2D context: an argument error stays in its node, for the builder
- * that reads it, and lowering goes on; color takes no arguments there;
- * a bad polygon index ends the paths before it. */
+ * that reads it, and lowering goes on; color takes no arguments there; a
+ * polygon index out of range is left out of its path and listed, and one
+ * that is not a number ends the paths before it. */
 static void test_twod_context(void **state)
 {
     (void)state;
-    lowered l = lower(
-        "linear_extrude(1) {\n"
-        "  offset(r = \"x\") { square([2, 3], true); }\n"
-        "  color(c = 7) { polygon([[0, 0], [1, 0], [0, 1]], [[0, 1], [2, 9, 1]]); }\n"
-        "  multmatrix([[1, 0, 0, 2], [0, 1, 0, 3], [0, 0, 1, 0], [0, 0, 0, 1]])\n"
-        "    { text(\"ab\", size = 5); }\n"
-        "}\n"
-        "cube(size = \"no\");\n");
+    lowered l =
+        lower("linear_extrude(1) {\n"
+              "  offset(r = \"x\") { square([2, 3], true); }\n"
+              "  color(c = 7) { polygon([[0, 0], [1, 0], [0, 1]], [[0, 1], [2, 9, 1], "
+              "[0, \"x\"]]); "
+              "}\n"
+              "  multmatrix([[1, 0, 0, 2], [0, 1, 0, 3], [0, 0, 1, 0], [0, 0, 0, 1]])\n"
+              "    { text(\"ab\", size = 5); }\n"
+              "}\n"
+              "cube(size = \"no\");\n");
     const model_node *e = l.m->first, *n = e->first_child;
     assert_int_equal(n->kind, MODEL_OFFSET);
     assert_non_null(n->pending);
@@ -279,13 +282,20 @@ static void test_twod_context(void **state)
     const model_polygon *p = n->first_child->u.polygon;
     assert_int_equal(p->point_count, 3);
     assert_true(p->has_points && p->has_paths);
-    assert_int_equal(p->path_count, 2);
+    assert_int_equal(p->path_count, 3);
     assert_int_equal(p->path_start[1], 2);
-    assert_int_equal(p->path_start[2], 3); /* cut before the 9 */
+    assert_int_equal(p->path_start[2], 4); /* without the 9 */
+    assert_int_equal(p->path_start[3], 5); /* cut before the "x" */
     assert_int_equal(p->index[2], 2);
+    assert_int_equal(p->index[3], 1);
+    assert_int_equal(p->bad_count, 1);
+    assert_true(p->bad[0].value == 9);
+    assert_int_equal(p->bad[0].face, 1);
+    assert_int_equal(p->bad[0].place, 1);
     assert_non_null(p->bad_index);
+    assert_int_equal(p->bad_index->line, 3);
     assert_string_equal(p->bad_index->message,
-                        "polygon path 1: point index is not one of the 3 points");
+                        "polygon path 2: point index is not one of the 3 points");
     n = n->next;
     assert_int_equal(n->kind, MODEL_XFORM);
     assert_true(n->u.xform->m[0][3] == 2 && n->u.xform->m[1][3] == 3);

@@ -754,7 +754,7 @@ static void test_build_errors(void **state)
                 "(expected a vector of [x, y] points)");
     check_error(
         "linear_extrude(height = 1) {\n  polygon(points = [[0, 0], [1, 0], [1, 1]], "
-        "paths = [[0, 1, 3]]);\n}",
+        "paths = [[0, 1, \"x\"]]);\n}",
         SC_ERR_SEMANTIC,
         "m.csg:2:62: error: polygon path 0: point index is not one of the 3 "
         "points");
@@ -764,12 +764,20 @@ static void test_build_errors(void **state)
         SC_ERR_SEMANTIC,
         "m.csg:2:66: error: wrong type for argument 'paths' of 'polygon' "
         "(expected a vector of paths, each a vector of point indices)");
-    check_error(
-        "linear_extrude(height = 1) {\n  polygon(points = [[0, 0], [1, 0], [1, 1]], "
-        "paths = [[0, 1, 1.5]]);\n}",
-        SC_ERR_SEMANTIC,
-        "m.csg:2:62: error: polygon path 0: point index is not one of the 3 "
-        "points");
+    /* as OpenSCAD 2021.01: an index out of range left out with its
+     * warning, a fraction truncated (the triangle 0, 1, 2) */
+    const char *const bounds[] = {
+        "m.csg:2:67: Point index 3 is out of bounds (from paths[0][3])"};
+    for (int faithful = 0; faithful <= 1; faithful++) {
+        sc_scene *s = test_check_warnings(
+            "m.csg",
+            "linear_extrude(height = 1) {\n  polygon(points = [[0, 0], [1, 0], [1, 1]], "
+            "paths = [[0, 1, 2.5, 3]]);\n}",
+            faithful, bounds, 1);
+        assert_true(inside(s, 0.7, 0.3, 0.5));
+        assert_false(inside(s, 0.3, 0.7, 0.5));
+        sc_scene_release(s);
+    }
     check_error("linear_extrude(height = \"x\") { square(); }", SC_ERR_SEMANTIC,
                 "m.csg:1:25: error: wrong type for argument 'height' of 'linear_extrude' "
                 "(expected a number)");

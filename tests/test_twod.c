@@ -320,7 +320,7 @@ static void test_errors(void **state)
                 "m.csg:2:17: error: wrong type for argument 'size' of 'square' (expected "
                 "a number or [x, y])");
     check_error("group() { polygon(points = [[0, 0], [1, 0], [0, 1]], paths = [[0, 1, "
-                "3]]); }",
+                "\"x\"]]); }",
                 SC_ERR_SEMANTIC,
                 "m.csg:1:70: error: polygon path 0: point index is not one of the 3 "
                 "points");

@@ -371,7 +371,7 @@ static sc_status build_polyhedron(builder *b, const model_node *n, const frame *
 {
     sc_error note = {SC_OK, "", 0, 0, ""};
     build_ctx c = context(b, state->emit, &note);
-    sc_status st = build_polyhedron_bad(&c, n);
+    sc_status st = build_bad_indices(&c, n);
     if (st != SC_OK)
         return st;
     if (n->u.polyhedron.face_count == 0) {

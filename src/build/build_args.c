@@ -66,22 +66,28 @@ sc_status build_file_not_opened(const build_ctx *c, const sc_location *loc,
                                what, path, why);
 }
 
-sc_status build_polyhedron_bad(const build_ctx *c, const model_node *n)
+sc_status build_bad_indices(const build_ctx *c, const model_node *n)
 {
-    if (n->kind != MODEL_POLYHEDRON || n->pending || !c->notes)
+    int polygon = n->kind == MODEL_POLYGON;
+    if ((!polygon && n->kind != MODEL_POLYHEDRON) || n->pending || !c->notes)
         return SC_OK;
+    const model_bad_index *bad = polygon ? n->u.polygon->bad : n->u.polyhedron.bad;
+    uint32_t count = polygon ? n->u.polygon->bad_count : n->u.polyhedron.bad_count;
+    uint32_t points = polygon ? n->u.polygon->point_count : n->u.polyhedron.point_count;
     sc_status st = SC_OK;
-    for (uint32_t i = 0; i < n->u.polyhedron.bad_count && st == SC_OK; i++) {
-        const model_bad_index *b = &n->u.polyhedron.bad[i];
+    for (uint32_t i = 0; i < count && st == SC_OK; i++) {
+        const model_bad_index *b = &bad[i];
         double x = isfinite(b->value) ? trunc(b->value) : b->value;
         if (c->strict)
-            return err_set(
-                c->error, SC_ERR_SEMANTIC, &b->loc,
-                "polyhedron face %u: point index %g is out of range (%u points)", b->face,
-                x, n->u.polyhedron.point_count);
-        st =
-            build_note(c, &b->loc, "Point index %g is out of bounds (from faces[%u][%u])",
-                       x, b->face, b->place);
+            return err_set(c->error, SC_ERR_SEMANTIC, &b->loc,
+                           "%s %u: point index %g is out of range (%u points)",
+                           polygon ? "polygon path" : "polyhedron face", b->face, x,
+                           points);
+        /* counted as left out: a shape it leaves without area is not
+         * warned of again, as OpenSCAD prints only this */
+        st = build_note_left_out(c, &b->loc,
+                                 "Point index %g is out of bounds (from %s[%u][%u])", x,
+                                 polygon ? "paths" : "faces", b->face, b->place);
     }
     return st;
 }

@@ -63,11 +63,12 @@ sc_status build_note_left_out(const build_ctx *c, const sc_location *loc,
 sc_status build_file_not_opened(const build_ctx *c, const sc_location *loc,
                                 const char *what, const char *path, const char *why);
 
-/* The point indices out of range of a polyhedron n (model.h, bad), met
- * where it is built: OpenSCAD 2021.01's warning for each, "Point index 7
- * is out of bounds (from faces[3][3])", as it leaves the index out of its
- * face; with --strict the error. SC_OK for any other node. */
-sc_status build_polyhedron_bad(const build_ctx *c, const model_node *n);
+/* The point indices out of range of a polyhedron's faces or a polygon's
+ * paths n (model.h, bad), met where it is built: OpenSCAD 2021.01's
+ * warning for each, "Point index 7 is out of bounds (from faces[3][3])"
+ * (or paths[...]), as it leaves the index out; with --strict the error.
+ * SC_OK for any other node. */
+sc_status build_bad_indices(const build_ctx *c, const model_node *n);
 
 /* A multmatrix n with a nan or inf entry (model.h, not_finite), met where
  * it is built (c->notes set): with --strict the error, else OpenSCAD

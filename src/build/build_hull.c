@@ -634,7 +634,7 @@ static sc_status collect(const walk *w, const model_node *parent, const affine *
             double volume = 0;
             int open = 0;
             if (kind == MODEL_POLYHEDRON && !w->check)
-                st = build_polyhedron_bad(c, n);
+                st = build_bad_indices(c, n);
             if (st == SC_OK && (kind == MODEL_POLYHEDRON || kind == MODEL_IMPORT))
                 st = closed_check(w, n, &open);
             if (st == SC_OK && !open)
@@ -1063,8 +1063,7 @@ static sc_status nef_node(const walk *w, const model_node *n, const affine *m, i
     walk cgal = *w;
     cgal.in_union = 1;
     int open = 0;
-    if (kind == MODEL_POLYHEDRON && !w->check &&
-        (st = build_polyhedron_bad(c, n)) != SC_OK)
+    if (kind == MODEL_POLYHEDRON && !w->check && (st = build_bad_indices(c, n)) != SC_OK)
         return st;
     if (kind == MODEL_POLYHEDRON || (kind == MODEL_IMPORT && !n->pending)) {
         if ((st = closed_check(&cgal, n, &open)) != SC_OK || open)

@@ -286,7 +286,7 @@ static sc_status built_soup(const pwalk *w, const model_node *n, soup *s)
     sc_status st;
     switch (n->kind) {
     case MODEL_POLYHEDRON:
-        if ((st = build_polyhedron_bad(c, n)) != SC_OK || n->u.polyhedron.face_count == 0)
+        if ((st = build_bad_indices(c, n)) != SC_OK || n->u.polyhedron.face_count == 0)
             return st;
         st = build_mesh_prim(solid ? c : &loose, &n->loc, "polyhedron", 1,
                              n->u.polyhedron.points, n->u.polyhedron.point_count,

@@ -317,8 +317,9 @@ sc_status build_twod_polygon(const build_ctx *c, const model_node *n, const affi
     if (n->pending)
         return build_pending(c, n);
     const model_polygon *p = n->u.polygon;
-    if (!p->has_points)
-        return SC_OK;
+    sc_status st = build_bad_indices(c, n);
+    if (st != SC_OK || !p->has_points)
+        return st;
     int paths = p->has_paths && (p->path_count > 0 || p->bad_index || !empty_is_all);
     uint32_t count = paths ? p->path_count : 1;
     for (uint32_t k = 0; k < count; k++) {

@@ -315,14 +315,14 @@ sc_status model_read_faces(const model_reader *r, arena *mem, const parse_node *
 sc_status model_polygon_index(const model_reader *c, const parse_value *v, uint32_t path,
                               uint32_t count, uint32_t *index)
 {
-    if (v->kind != PARSE_NUMBER || v->u.number != floor(v->u.number) || v->u.number < 0 ||
-        v->u.number >= count) {
+    if (v->kind != PARSE_NUMBER) {
         sc_location loc = model_loc(c, v);
         return err_set(c->error, SC_ERR_SEMANTIC, &loc,
                        "polygon path %u: point index is not one of the %u points", path,
                        count);
     }
-    *index = (uint32_t)v->u.number;
+    double x = trunc(v->u.number);
+    *index = x >= 0 && x < count ? (uint32_t)x : UINT32_MAX;
     return SC_OK;
 }
 

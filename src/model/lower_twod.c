@@ -51,7 +51,8 @@ static sc_status lower_circle(model_lowerer *l, const parse_node *n, model_node 
     return model_read_circle(&l->r, n, c);
 }
 
-/* The paths' indices, in path order, up to the first bad one. */
+/* The paths' indices, in path order, up to the first that is not a
+ * number; those out of range left out, and listed in p->bad. */
 static sc_status read_paths(model_lowerer *l, const parse_value *paths, model_polygon *p)
 {
     uint32_t count = paths->u.vector.count;
@@ -60,25 +61,35 @@ static sc_status read_paths(model_lowerer *l, const parse_value *paths, model_po
         total += paths->u.vector.items[k].u.vector.count;
     uint32_t *start = arena_calloc(l->mem, (size_t)count + 1, sizeof *start);
     uint32_t *index = arena_calloc(l->mem, total ? total : 1, sizeof *index);
-    if (!start || !index || total > UINT32_MAX) {
+    model_bad_index *bad = arena_calloc(l->mem, total ? total : 1, sizeof *bad);
+    if (!start || !index || !bad || total > UINT32_MAX) {
         l->nomem = 1;
         return SC_ERR_NOMEM;
     }
     p->path_start = start;
     p->index = index;
+    p->bad = bad;
     uint32_t at = 0;
     for (uint32_t k = 0; k < count; k++) {
         const parse_value *path = &paths->u.vector.items[k];
         start[k] = at;
         p->path_count = k + 1;
         for (uint32_t i = 0; i < path->u.vector.count; i++) {
-            sc_status st = model_polygon_index(&l->r, &path->u.vector.items[i], k,
-                                               p->point_count, &index[at]);
+            const parse_value *v = &path->u.vector.items[i];
+            sc_status st = model_polygon_index(&l->r, v, k, p->point_count, &index[at]);
             if (st != SC_OK) {
                 start[k + 1] = at;
                 return st;
             }
-            at++;
+            if (index[at] != UINT32_MAX) {
+                at++;
+                continue;
+            }
+            model_bad_index *b = &bad[p->bad_count++];
+            b->value = v->u.number;
+            b->face = k;
+            b->place = i;
+            b->loc = model_loc(&l->r, v);
         }
     }
     start[count] = at;

@@ -231,9 +231,12 @@ typedef struct model_square {
 } model_square;
 
 /* polygon(points, paths): the paths' point indices checked in file order.
- * An index that is not one of the points ends the paths there: path_count
- * paths, the last of them cut before that entry, and bad_index the error
- * at it, which the builder reports once it has read what comes before. */
+ * An index that is not a number ends the paths there: path_count paths,
+ * the last of them cut before that entry, and bad_index the error at it,
+ * which the builder reports once it has read what comes before. An index
+ * is truncated toward zero, and one out of range left out of its path and
+ * listed in bad, as OpenSCAD 2021.01 leaves it out with a warning, which
+ * the builder gives. */
 typedef struct model_polygon {
     const double *xy; /* points, 2 per point, finite */
     uint32_t point_count;
@@ -243,6 +246,8 @@ typedef struct model_polygon {
     const uint32_t *path_start; /* path k: index[path_start[k] .. [k + 1]) */
     const uint32_t *index;
     const sc_error *bad_index; /* or NULL */
+    const model_bad_index *bad;
+    uint32_t bad_count;
 } model_polygon;
 
 /* offset(r | delta, chamfer, $fn, $fa, $fs) */
