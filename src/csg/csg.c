@@ -123,7 +123,7 @@ uint32_t csg_builder_leaf(csg_builder *b, const prim *p, const affine *to_world,
     memcpy(l->color, color, sizeof l->color);
     l->object_id = b->leaf_count;
     l->loc = loc;
-    csg_node n = {CSG_LEAF, b->leaf_count, 0, 0, CSG_NO_BVH, bbox_empty()};
+    csg_node n = {CSG_LEAF, b->leaf_count, 0, 0, CSG_NO_BVH, bbox_empty(), 0};
     uint32_t id = add_node(b, &n);
     if (id != CSG_EMPTY)
         b->leaf_count++;
@@ -239,7 +239,7 @@ uint32_t csg_builder_op(csg_builder *b, csg_op op, const uint32_t *children,
         if (children[i] != CSG_EMPTY)
             b->child_ids[b->child_count++] = children[i];
     }
-    csg_node n = {op, 0, first, kept, CSG_NO_BVH, bbox_empty()};
+    csg_node n = {op, 0, first, kept, CSG_NO_BVH, bbox_empty(), 0};
     return add_node(b, &n);
 }
 
@@ -353,7 +353,7 @@ static uint32_t compile_op(compiler *c, const csg_node *n, const uint32_t *map)
         return CSG_EMPTY;
     if (c->operands.n == 1)
         return c->operands.v[0];
-    csg_node out = {n->op, 0, c->kids.n, c->operands.n, CSG_NO_BVH, bounds};
+    csg_node out = {n->op, 0, c->kids.n, c->operands.n, CSG_NO_BVH, bounds, 0};
     for (uint32_t k = 0; k < c->operands.n; k++) {
         if (!id_push(&c->kids, c->operands.v[k])) {
             c->failed = 1;
@@ -429,6 +429,55 @@ static int build_bvhs(csg_tree *t, bvh_nodes *out)
     }
     free(boxes);
     return 1;
+}
+
+/* A flat union: one without a BVH whose operands are leaves of at most
+ * FLAT_LEAF_SPANS spans each, FLAT_SPANS in all (the root of a small
+ * scene, a handful of bosses or ribs), or booleans of leaves alone (a
+ * chamfered plate: a box cut by boxes). eval's union path for it, step for
+ * step (the same box tests, merges, regularisations and narrowing, so the
+ * same spans), with the leaves' and the running result's spans in local
+ * arrays: no call through for_operands, and one allocation from scratch,
+ * for the result, instead of three per operand. A boolean operand is
+ * evaluated by eval; the recursion below stays one level deep, so the
+ * local arrays sit once on the stack of a deep tree's query. Should the
+ * running result outgrow FLAT_SPANS, the union starts again by the general
+ * path. */
+#define FLAT_LEAF_SPANS 2
+#define FLAT_SPANS 16
+
+static int is_flat_union(const csg_tree *t, const csg_node *n)
+{
+    if (n->bvh != CSG_NO_BVH)
+        return 0;
+    const uint32_t *ids = &t->child_ids[n->first_child];
+    uint32_t total = 0;
+    for (uint32_t k = 0; k < n->child_count; k++) {
+        const csg_node *child = &t->nodes[ids[k]];
+        if (child->op != CSG_LEAF) {
+            const uint32_t *below = &t->child_ids[child->first_child];
+            for (uint32_t j = 0; j < child->child_count; j++)
+                if (t->nodes[below[j]].op != CSG_LEAF)
+                    return 0;
+            continue;
+        }
+        uint32_t cap = prim_max_spans(&t->leaves[child->leaf].prim);
+        if (cap > FLAT_LEAF_SPANS)
+            return 0;
+        total += cap;
+    }
+    return total <= FLAT_SPANS;
+}
+
+/* Marks the unions that take the flat path, once: the queries test the
+ * mark instead of walking the operands of every union they meet. Runs
+ * after build_bvhs, since a union with a BVH is never flat. */
+static void mark_flat_unions(csg_tree *t)
+{
+    for (uint32_t i = 0; i < t->node_count; i++) {
+        csg_node *n = &t->nodes[i];
+        n->flat = n->op == CSG_UNION && is_flat_union(t, n);
+    }
 }
 
 /* Takes a malloc'd array, shrunk to count elements of size elem; NULL
@@ -554,6 +603,8 @@ static int freeze(csg_tree *t, compiler *c, csg_builder *b, uint32_t root)
     free(renumber);
     if (ok)
         ok = build_bvhs(t, &bvh);
+    if (ok)
+        mark_flat_unions(t);
     if (ok) {
         uint32_t *depth = calloc(count ? count : 1, sizeof *depth);
         unsigned char *all = malloc(count ? count : 1);
@@ -920,44 +971,6 @@ static int visit_union(eval_ctx *c, void *state, uint32_t id, double *lo, double
         u->narrowed = 1;
     }
     return 1;
-}
-
-/* A flat union: one without a BVH whose operands are leaves of at most
- * FLAT_LEAF_SPANS spans each, FLAT_SPANS in all (the root of a small
- * scene, a handful of bosses or ribs), or booleans of leaves alone (a
- * chamfered plate: a box cut by boxes). eval's union path for it, step for
- * step (the same box tests, merges, regularisations and narrowing, so the
- * same spans), with the leaves' and the running result's spans in local
- * arrays: no call through for_operands, and one allocation from scratch,
- * for the result, instead of three per operand. A boolean operand is
- * evaluated by eval; the recursion below stays one level deep, so the
- * local arrays sit once on the stack of a deep tree's query. Should the
- * running result outgrow FLAT_SPANS, the union starts again by the general
- * path. */
-#define FLAT_LEAF_SPANS 2
-#define FLAT_SPANS 16
-
-static int is_flat_union(const eval_ctx *c, const csg_node *n)
-{
-    if (n->bvh != CSG_NO_BVH)
-        return 0;
-    const uint32_t *ids = &c->tree->child_ids[n->first_child];
-    uint32_t total = 0;
-    for (uint32_t k = 0; k < n->child_count; k++) {
-        const csg_node *child = &c->tree->nodes[ids[k]];
-        if (child->op != CSG_LEAF) {
-            const uint32_t *below = &c->tree->child_ids[child->first_child];
-            for (uint32_t j = 0; j < child->child_count; j++)
-                if (c->tree->nodes[below[j]].op != CSG_LEAF)
-                    return 0;
-            continue;
-        }
-        uint32_t cap = prim_max_spans(&c->tree->leaves[child->leaf].prim);
-        if (cap > FLAT_LEAF_SPANS)
-            return 0;
-        total += cap;
-    }
-    return total <= FLAT_SPANS;
 }
 
 /* One pass of the flat union over [lo, hi] in mode (EVAL_ALL, EVAL_FIRST
@@ -1360,7 +1373,7 @@ static span_list eval(eval_ctx *c, uint32_t id, double lo, double hi, eval_mode 
         return eval_leaf(c, n, lo, hi, mode);
     if (n->op == CSG_UNION) {
         span_list flat;
-        if (is_flat_union(c, n) && eval_flat_union(c, n, lo, hi, mode, &flat))
+        if (n->flat && eval_flat_union(c, n, lo, hi, mode, &flat))
             return flat;
         union_state u = {no_spans, mode, 0, arena_save(c->scratch)};
         for_operands(c, n, 0, lo, hi, visit_union, &u);
