@@ -973,6 +973,31 @@ static int visit_union(eval_ctx *c, void *state, uint32_t id, double *lo, double
     return 1;
 }
 
+/* The regularised union of acc's count spans and s into acc (room for
+ * FLAT_SPANS), merged as scratch; returns the new count. Both lists are
+ * regularised already (leaf_spans and every boolean regularise, and a
+ * regularised list is its own regularisation), so when s lies wholly
+ * after or wholly before acc with a gap longer than eps, the merge would
+ * only lay them end to end and the regularisation would change nothing:
+ * the two are joined without either. */
+static uint32_t union_into(span *acc, uint32_t count, span_list s, double eps,
+                           span *merged)
+{
+    if (s.v[0].in.t - acc[count - 1].out.t > eps) {
+        memcpy(acc + count, s.v, s.n * sizeof(span));
+        return count + s.n;
+    }
+    if (acc[0].in.t - s.v[s.n - 1].out.t > eps) {
+        memmove(acc + s.n, acc, count * sizeof(span));
+        memcpy(acc, s.v, s.n * sizeof(span));
+        return count + s.n;
+    }
+    count = span_merge(SPAN_UNION, (span_list){acc, count}, s, merged);
+    count = span_regularize(merged, count, eps);
+    memcpy(acc, merged, count * sizeof(span));
+    return count;
+}
+
 /* One pass of the flat union over [lo, hi] in mode (EVAL_ALL, EVAL_FIRST
  * or EVAL_ANY, as visit_union), its result in acc (room for FLAT_SPANS);
  * returns its count, 0 with c->blocked set when EVAL_ANY met a blocker,
@@ -1019,9 +1044,7 @@ static uint32_t flat_union_pass(eval_ctx *c, const csg_node *n, double lo, doubl
             count = s.n;
         } else {
             c->counters->span_ops++;
-            count = span_merge(SPAN_UNION, (span_list){acc, count}, s, merged);
-            count = span_regularize(merged, count, c->eps);
-            memcpy(acc, merged, count * sizeof(span));
+            count = union_into(acc, count, s, c->eps, merged);
         }
         arena_restore(c->scratch, mark); /* s, if eval's, is copied */
         const span *first =
