@@ -34,7 +34,15 @@ static inline int combined(span_op op, int in_a, int in_b)
     return 0;
 }
 
-uint32_t span_merge(span_op op, span_list a, span_list b, span *out)
+/* span_merge's sweep for one op: always inlined, so that each call below
+ * gets its own copy with combined() folded for that op. */
+#if defined(__GNUC__)
+#define ALWAYS_INLINE inline __attribute__((always_inline))
+#else
+#define ALWAYS_INLINE inline
+#endif
+
+static ALWAYS_INLINE uint32_t merge(span_op op, span_list a, span_list b, span *out)
 {
     uint32_t n = 0;
     uint32_t na = 2 * a.n, nb = 2 * b.n, ia = 0, ib = 0;
@@ -64,6 +72,19 @@ uint32_t span_merge(span_op op, span_list a, span_list b, span *out)
         in_r = now;
     }
     return n;
+}
+
+uint32_t span_merge(span_op op, span_list a, span_list b, span *out)
+{
+    switch (op) {
+    case SPAN_UNION:
+        return merge(SPAN_UNION, a, b, out);
+    case SPAN_INTERSECTION:
+        return merge(SPAN_INTERSECTION, a, b, out);
+    case SPAN_DIFFERENCE:
+        return merge(SPAN_DIFFERENCE, a, b, out);
+    }
+    return 0;
 }
 
 span_list span_combine(span_op op, span_list a, span_list b, double eps, arena *scratch,
