@@ -807,6 +807,16 @@ typedef enum eval_mode {
     EVAL_ANY    /* stop as soon as the solid is seen inside the range */
 } eval_mode;
 
+/* A leaf's regularised spans, kept for the rest of a query (see
+ * leaf_spans). */
+#define LEAF_MEMO 16 /* entries, a power of two; leaf l goes to l % LEAF_MEMO */
+
+typedef struct leaf_memo {
+    uint32_t leaf;
+    uint32_t n;
+    span v[1];
+} leaf_memo;
+
 typedef struct eval_ctx {
     const csg_tree *tree;
     vec3 o, d, inv_d;
@@ -815,7 +825,9 @@ typedef struct eval_ctx {
     arena *scratch;
     csg_counters *counters; /* never NULL inside a query */
     int oom;
-    int blocked; /* EVAL_ANY found the solid in the range */
+    int blocked;        /* EVAL_ANY found the solid in the range */
+    uint32_t memo_full; /* bit k: memo[k] holds a leaf's spans */
+    leaf_memo memo[LEAF_MEMO];
 } eval_ctx;
 
 static const span_list no_spans = {NULL, 0};
@@ -861,12 +873,34 @@ static COLD_PATH void moving_leaf_ray(const csg_leaf *l, double time, vec3 o, ve
     *ld = affine_vector(to_local, d);
 }
 
+/* Whether a leaf's spans depend on the ray alone: the convex kinds, whose
+ * prim_spans ignores the range and the mode (only a mesh's walk uses
+ * them), spends no budget and gives at most one span. */
+static int memo_kind(prim_kind kind)
+{
+    return kind == PRIM_SPHERE || kind == PRIM_BOX || kind == PRIM_CYLINDER ||
+           kind == PRIM_CONVEX;
+}
+
 /* The regularised spans of leaf n's primitive over [lo, hi] into out, which
- * has room for its prim_max_spans; returns their count. */
+ * has room for its prim_max_spans; returns their count. A query may ask
+ * for one leaf several times (a difference asked for its first crossing
+ * evaluates its first operand once to find where to look, then again in
+ * a window there); a convex leaf's spans are a function of the query's
+ * ray, time and eps, so the first answer is kept in c->memo and copied on
+ * the next request, the same spans without the primitive test. */
 static uint32_t leaf_spans(eval_ctx *c, const csg_node *n, double lo, double hi,
                            eval_mode mode, span *out, uint32_t cap)
 {
     const csg_leaf *l = &c->tree->leaves[n->leaf];
+    uint32_t slot = n->leaf & (LEAF_MEMO - 1);
+    leaf_memo *m = &c->memo[slot];
+    int memo = memo_kind(l->prim.kind);
+    if (memo && (c->memo_full >> slot & 1) && m->leaf == n->leaf) {
+        if (m->n)
+            out[0] = m->v[0];
+        return m->n;
+    }
     vec3 o, d;
     if (l->motion) {
         moving_leaf_ray(l, c->time, c->o, c->d, &o, &d);
@@ -877,7 +911,15 @@ static uint32_t leaf_spans(eval_ctx *c, const csg_node *n, double lo, double hi,
     c->counters->prim_tests++;
     uint32_t count = prim_spans_range(&l->prim, n->leaf, o, d, lo, hi, c->eps,
                                       mode != EVAL_ALL, out, cap);
-    return span_regularize(out, count, c->eps);
+    count = span_regularize(out, count, c->eps);
+    if (memo && count <= 1) {
+        c->memo_full |= 1u << slot;
+        m->leaf = n->leaf;
+        m->n = count;
+        if (count)
+            m->v[0] = out[0];
+    }
+    return count;
 }
 
 static span_list eval_leaf(eval_ctx *c, const csg_node *n, double lo, double hi,
@@ -1456,6 +1498,7 @@ static int run(const csg_tree *t, const csg_ray *r, double time, arena *scratch,
     c.counters = counters ? counters : &unused;
     c.oom = 0;
     c.blocked = 0;
+    c.memo_full = 0;
     c.counters->queries++;
     *out = no_spans;
     *blocked = 0;
