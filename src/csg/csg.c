@@ -1565,19 +1565,45 @@ int csg_spans(const csg_tree *t, const csg_ray *r, arena *scratch, span_list *ou
     return csg_spans_counted(t, r, scratch, NULL, out);
 }
 
+/* The first span of clip(all, r), without the copy: 1 and *out, or 0
+ * when the clipped list is empty. Only the last span of the clipped list
+ * can reach past tmax, and a span before another ends before that one's
+ * entry (below tmax), so the first span's exit is clipped exactly when it
+ * lies beyond tmax. */
+static int first_clipped(span_list all, const csg_ray *r, span *out)
+{
+    uint32_t first = 0;
+    while (first < all.n && all.v[first].out.t <= r->tmin)
+        first++;
+    if (first == all.n || all.v[first].in.t >= r->tmax)
+        return 0;
+    *out = all.v[first];
+    span_end none = {0, SPAN_NO_LEAF, 0, 0};
+    if (out->in.t < r->tmin) {
+        out->in = none;
+        out->in.t = r->tmin;
+    }
+    if (out->out.t > r->tmax) {
+        out->out = none;
+        out->out.t = r->tmax;
+    }
+    return 1;
+}
+
 int csg_first_hit_at(const csg_tree *t, const csg_ray *r, double time, arena *scratch,
                      csg_counters *counters, csg_hit *hit)
 {
-    span_list all, s;
+    span_list all;
+    span s;
     int blocked;
     if (!run(t, r, time, scratch, counters, EVAL_FIRST, &all, &blocked) ||
-        !clip(all, r, scratch, &s) || s.n == 0)
+        !first_clipped(all, r, &s))
         return 0;
-    const span_end *e = &s.v[0].in;
+    const span_end *e = &s.in;
     int exiting = 0;
     if (e->leaf == SPAN_NO_LEAF) {
         /* The ray starts inside the solid: the first crossing is the exit. */
-        e = &s.v[0].out;
+        e = &s.out;
         exiting = 1;
         if (e->leaf == SPAN_NO_LEAF)
             return 0;
