@@ -2317,6 +2317,56 @@ static void test_ray_in_face_plane(void **state)
     csg_tree_free(t);
 }
 
+/* A first-hit query on difference() { union() { box, box }; cylinder }
+ * evaluates the union once to find where the solid starts, then again in
+ * a window there: a convex leaf met twice in one query is tested once
+ * (its spans depend on the ray alone). A ray beside the hole meets one
+ * leaf, a ray through it two; the hits and spans agree with brute force. */
+static void test_first_hit_tests_each_leaf_once(void **state)
+{
+    (void)state;
+    csg_builder *b = csg_builder_new();
+    assert_non_null(b);
+    affine id = affine_identity(), shift = translation(v3(20, 0, 0));
+    uint32_t boxes[2] = {add_box(b, v3(0, 0, 0), v3(10, 10, 10), &id),
+                         add_box(b, v3(0, 0, 0), v3(10, 10, 10), &shift)};
+    prim hole = {.kind = PRIM_CYLINDER};
+    hole.u.cylinder.z0 = -1;
+    hole.u.cylinder.z1 = 11;
+    hole.u.cylinder.r0 = hole.u.cylinder.r1 = 1;
+    affine at = translation(v3(5, 5, 0));
+    uint32_t kids[2] = {csg_builder_op(b, CSG_UNION, boxes, 2),
+                        csg_builder_leaf(b, &hole, &at, white, no_loc)};
+    csg_tree *t = finish(b, csg_builder_op(b, CSG_DIFFERENCE, kids, 2));
+    arena scratch, ref;
+    arena_init(&scratch, 0);
+    arena_init(&ref, 0);
+    const struct {
+        vec3 o;
+        uint64_t leaves; /* distinct leaves the ray meets */
+    } cases[2] = {{v3(3, -10, 5), 1}, {v3(5, -10, 5), 2}};
+    for (int i = 0; i < 2; i++) {
+        csg_ray ray = {cases[i].o, v3(0, 1, 0), 0, INFINITY};
+        csg_counters counters = {0, 0, 0, 0, 0};
+        csg_hit hit;
+        assert_true(csg_first_hit_counted(t, &ray, &scratch, &counters, &hit));
+        assert_true(hit.t == 10);
+        assert_int_equal(hit.leaf, 0);
+        if (counters.prim_tests != cases[i].leaves)
+            fail_msg("ray %d: %llu primitive tests for %llu leaves", i,
+                     (unsigned long long)counters.prim_tests,
+                     (unsigned long long)cases[i].leaves);
+        span_list s, want = brute_spans(t, &ray, &ref, NULL);
+        assert_true(csg_spans(t, &ray, &scratch, &s));
+        assert_true(same_lists(s, want));
+        arena_reset(&scratch);
+        arena_reset(&ref);
+    }
+    arena_free(&scratch);
+    arena_free(&ref);
+    csg_tree_free(t);
+}
+
 /* A ray onto the face that a box cuts into a wide union: difference() {
  * union() { 200 overlapping spheres in a row along x }; a box over the
  * first half }. Along the row the union is one long span, so a ray that
@@ -2436,6 +2486,7 @@ int main(void)
         cmocka_unit_test(test_eps_near_and_far),
         cmocka_unit_test(test_flat_union),
         cmocka_unit_test(test_cut_face_first_hit),
+        cmocka_unit_test(test_first_hit_tests_each_leaf_once),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

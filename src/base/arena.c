@@ -106,15 +106,3 @@ void *arena_calloc(arena *a, size_t count, size_t size)
         memset(p, 0, count * size);
     return p;
 }
-
-arena_mark arena_save(const arena *a)
-{
-    arena_mark m = {a->head, a->used};
-    return m;
-}
-
-void arena_restore(arena *a, arena_mark mark)
-{
-    a->head = mark.block;
-    a->used = mark.used;
-}

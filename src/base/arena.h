@@ -78,7 +78,17 @@ typedef struct arena_mark {
     size_t used;
 } arena_mark;
 
-arena_mark arena_save(const arena *a);
-void arena_restore(arena *a, arena_mark mark);
+/* Inline: the render loop saves and restores around every operand. */
+static inline arena_mark arena_save(const arena *a)
+{
+    arena_mark m = {a->head, a->used};
+    return m;
+}
+
+static inline void arena_restore(arena *a, arena_mark mark)
+{
+    a->head = mark.block;
+    a->used = mark.used;
+}
 
 #endif

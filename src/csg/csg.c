@@ -123,7 +123,7 @@ uint32_t csg_builder_leaf(csg_builder *b, const prim *p, const affine *to_world,
     memcpy(l->color, color, sizeof l->color);
     l->object_id = b->leaf_count;
     l->loc = loc;
-    csg_node n = {CSG_LEAF, b->leaf_count, 0, 0, CSG_NO_BVH, bbox_empty()};
+    csg_node n = {CSG_LEAF, b->leaf_count, 0, 0, CSG_NO_BVH, bbox_empty(), 0};
     uint32_t id = add_node(b, &n);
     if (id != CSG_EMPTY)
         b->leaf_count++;
@@ -239,7 +239,7 @@ uint32_t csg_builder_op(csg_builder *b, csg_op op, const uint32_t *children,
         if (children[i] != CSG_EMPTY)
             b->child_ids[b->child_count++] = children[i];
     }
-    csg_node n = {op, 0, first, kept, CSG_NO_BVH, bbox_empty()};
+    csg_node n = {op, 0, first, kept, CSG_NO_BVH, bbox_empty(), 0};
     return add_node(b, &n);
 }
 
@@ -353,7 +353,7 @@ static uint32_t compile_op(compiler *c, const csg_node *n, const uint32_t *map)
         return CSG_EMPTY;
     if (c->operands.n == 1)
         return c->operands.v[0];
-    csg_node out = {n->op, 0, c->kids.n, c->operands.n, CSG_NO_BVH, bounds};
+    csg_node out = {n->op, 0, c->kids.n, c->operands.n, CSG_NO_BVH, bounds, 0};
     for (uint32_t k = 0; k < c->operands.n; k++) {
         if (!id_push(&c->kids, c->operands.v[k])) {
             c->failed = 1;
@@ -429,6 +429,55 @@ static int build_bvhs(csg_tree *t, bvh_nodes *out)
     }
     free(boxes);
     return 1;
+}
+
+/* A flat union: one without a BVH whose operands are leaves of at most
+ * FLAT_LEAF_SPANS spans each, FLAT_SPANS in all (the root of a small
+ * scene, a handful of bosses or ribs), or booleans of leaves alone (a
+ * chamfered plate: a box cut by boxes). eval's union path for it, step for
+ * step (the same box tests, merges, regularisations and narrowing, so the
+ * same spans), with the leaves' and the running result's spans in local
+ * arrays: no call through for_operands, and one allocation from scratch,
+ * for the result, instead of three per operand. A boolean operand is
+ * evaluated by eval; the recursion below stays one level deep, so the
+ * local arrays sit once on the stack of a deep tree's query. Should the
+ * running result outgrow FLAT_SPANS, the union starts again by the general
+ * path. */
+#define FLAT_LEAF_SPANS 2
+#define FLAT_SPANS 16
+
+static int is_flat_union(const csg_tree *t, const csg_node *n)
+{
+    if (n->bvh != CSG_NO_BVH)
+        return 0;
+    const uint32_t *ids = &t->child_ids[n->first_child];
+    uint32_t total = 0;
+    for (uint32_t k = 0; k < n->child_count; k++) {
+        const csg_node *child = &t->nodes[ids[k]];
+        if (child->op != CSG_LEAF) {
+            const uint32_t *below = &t->child_ids[child->first_child];
+            for (uint32_t j = 0; j < child->child_count; j++)
+                if (t->nodes[below[j]].op != CSG_LEAF)
+                    return 0;
+            continue;
+        }
+        uint32_t cap = prim_max_spans(&t->leaves[child->leaf].prim);
+        if (cap > FLAT_LEAF_SPANS)
+            return 0;
+        total += cap;
+    }
+    return total <= FLAT_SPANS;
+}
+
+/* Marks the unions that take the flat path, once: the queries test the
+ * mark instead of walking the operands of every union they meet. Runs
+ * after build_bvhs, since a union with a BVH is never flat. */
+static void mark_flat_unions(csg_tree *t)
+{
+    for (uint32_t i = 0; i < t->node_count; i++) {
+        csg_node *n = &t->nodes[i];
+        n->flat = n->op == CSG_UNION && is_flat_union(t, n);
+    }
 }
 
 /* Takes a malloc'd array, shrunk to count elements of size elem; NULL
@@ -554,6 +603,8 @@ static int freeze(csg_tree *t, compiler *c, csg_builder *b, uint32_t root)
     free(renumber);
     if (ok)
         ok = build_bvhs(t, &bvh);
+    if (ok)
+        mark_flat_unions(t);
     if (ok) {
         uint32_t *depth = calloc(count ? count : 1, sizeof *depth);
         unsigned char *all = malloc(count ? count : 1);
@@ -756,6 +807,16 @@ typedef enum eval_mode {
     EVAL_ANY    /* stop as soon as the solid is seen inside the range */
 } eval_mode;
 
+/* A leaf's regularised spans, kept for the rest of a query (see
+ * leaf_spans). */
+#define LEAF_MEMO 16 /* entries, a power of two; leaf l goes to l % LEAF_MEMO */
+
+typedef struct leaf_memo {
+    uint32_t leaf;
+    uint32_t n;
+    span v[1];
+} leaf_memo;
+
 typedef struct eval_ctx {
     const csg_tree *tree;
     vec3 o, d, inv_d;
@@ -764,7 +825,9 @@ typedef struct eval_ctx {
     arena *scratch;
     csg_counters *counters; /* never NULL inside a query */
     int oom;
-    int blocked; /* EVAL_ANY found the solid in the range */
+    int blocked;        /* EVAL_ANY found the solid in the range */
+    uint32_t memo_full; /* bit k: memo[k] holds a leaf's spans */
+    leaf_memo memo[LEAF_MEMO];
 } eval_ctx;
 
 static const span_list no_spans = {NULL, 0};
@@ -810,12 +873,34 @@ static COLD_PATH void moving_leaf_ray(const csg_leaf *l, double time, vec3 o, ve
     *ld = affine_vector(to_local, d);
 }
 
+/* Whether a leaf's spans depend on the ray alone: the convex kinds, whose
+ * prim_spans ignores the range and the mode (only a mesh's walk uses
+ * them), spends no budget and gives at most one span. */
+static int memo_kind(prim_kind kind)
+{
+    return kind == PRIM_SPHERE || kind == PRIM_BOX || kind == PRIM_CYLINDER ||
+           kind == PRIM_CONVEX;
+}
+
 /* The regularised spans of leaf n's primitive over [lo, hi] into out, which
- * has room for its prim_max_spans; returns their count. */
+ * has room for its prim_max_spans; returns their count. A query may ask
+ * for one leaf several times (a difference asked for its first crossing
+ * evaluates its first operand once to find where to look, then again in
+ * a window there); a convex leaf's spans are a function of the query's
+ * ray, time and eps, so the first answer is kept in c->memo and copied on
+ * the next request, the same spans without the primitive test. */
 static uint32_t leaf_spans(eval_ctx *c, const csg_node *n, double lo, double hi,
                            eval_mode mode, span *out, uint32_t cap)
 {
     const csg_leaf *l = &c->tree->leaves[n->leaf];
+    uint32_t slot = n->leaf & (LEAF_MEMO - 1);
+    leaf_memo *m = &c->memo[slot];
+    int memo = memo_kind(l->prim.kind);
+    if (memo && (c->memo_full >> slot & 1) && m->leaf == n->leaf) {
+        if (m->n)
+            out[0] = m->v[0];
+        return m->n;
+    }
     vec3 o, d;
     if (l->motion) {
         moving_leaf_ray(l, c->time, c->o, c->d, &o, &d);
@@ -826,7 +911,15 @@ static uint32_t leaf_spans(eval_ctx *c, const csg_node *n, double lo, double hi,
     c->counters->prim_tests++;
     uint32_t count = prim_spans_range(&l->prim, n->leaf, o, d, lo, hi, c->eps,
                                       mode != EVAL_ALL, out, cap);
-    return span_regularize(out, count, c->eps);
+    count = span_regularize(out, count, c->eps);
+    if (memo && count <= 1) {
+        c->memo_full |= 1u << slot;
+        m->leaf = n->leaf;
+        m->n = count;
+        if (count)
+            m->v[0] = out[0];
+    }
+    return count;
 }
 
 static span_list eval_leaf(eval_ctx *c, const csg_node *n, double lo, double hi,
@@ -922,42 +1015,29 @@ static int visit_union(eval_ctx *c, void *state, uint32_t id, double *lo, double
     return 1;
 }
 
-/* A flat union: one without a BVH whose operands are leaves of at most
- * FLAT_LEAF_SPANS spans each, FLAT_SPANS in all (the root of a small
- * scene, a handful of bosses or ribs), or booleans of leaves alone (a
- * chamfered plate: a box cut by boxes). eval's union path for it, step for
- * step (the same box tests, merges, regularisations and narrowing, so the
- * same spans), with the leaves' and the running result's spans in local
- * arrays: no call through for_operands, and one allocation from scratch,
- * for the result, instead of three per operand. A boolean operand is
- * evaluated by eval; the recursion below stays one level deep, so the
- * local arrays sit once on the stack of a deep tree's query. Should the
- * running result outgrow FLAT_SPANS, the union starts again by the general
- * path. */
-#define FLAT_LEAF_SPANS 2
-#define FLAT_SPANS 16
-
-static int is_flat_union(const eval_ctx *c, const csg_node *n)
+/* The regularised union of acc's count spans and s into acc (room for
+ * FLAT_SPANS), merged as scratch; returns the new count. Both lists are
+ * regularised already (leaf_spans and every boolean regularise, and a
+ * regularised list is its own regularisation), so when s lies wholly
+ * after or wholly before acc with a gap longer than eps, the merge would
+ * only lay them end to end and the regularisation would change nothing:
+ * the two are joined without either. */
+static uint32_t union_into(span *acc, uint32_t count, span_list s, double eps,
+                           span *merged)
 {
-    if (n->bvh != CSG_NO_BVH)
-        return 0;
-    const uint32_t *ids = &c->tree->child_ids[n->first_child];
-    uint32_t total = 0;
-    for (uint32_t k = 0; k < n->child_count; k++) {
-        const csg_node *child = &c->tree->nodes[ids[k]];
-        if (child->op != CSG_LEAF) {
-            const uint32_t *below = &c->tree->child_ids[child->first_child];
-            for (uint32_t j = 0; j < child->child_count; j++)
-                if (c->tree->nodes[below[j]].op != CSG_LEAF)
-                    return 0;
-            continue;
-        }
-        uint32_t cap = prim_max_spans(&c->tree->leaves[child->leaf].prim);
-        if (cap > FLAT_LEAF_SPANS)
-            return 0;
-        total += cap;
+    if (s.v[0].in.t - acc[count - 1].out.t > eps) {
+        memcpy(acc + count, s.v, s.n * sizeof(span));
+        return count + s.n;
     }
-    return total <= FLAT_SPANS;
+    if (acc[0].in.t - s.v[s.n - 1].out.t > eps) {
+        memmove(acc + s.n, acc, count * sizeof(span));
+        memcpy(acc, s.v, s.n * sizeof(span));
+        return count + s.n;
+    }
+    count = span_merge(SPAN_UNION, (span_list){acc, count}, s, merged);
+    count = span_regularize(merged, count, eps);
+    memcpy(acc, merged, count * sizeof(span));
+    return count;
 }
 
 /* One pass of the flat union over [lo, hi] in mode (EVAL_ALL, EVAL_FIRST
@@ -1006,9 +1086,7 @@ static uint32_t flat_union_pass(eval_ctx *c, const csg_node *n, double lo, doubl
             count = s.n;
         } else {
             c->counters->span_ops++;
-            count = span_merge(SPAN_UNION, (span_list){acc, count}, s, merged);
-            count = span_regularize(merged, count, c->eps);
-            memcpy(acc, merged, count * sizeof(span));
+            count = union_into(acc, count, s, c->eps, merged);
         }
         arena_restore(c->scratch, mark); /* s, if eval's, is copied */
         const span *first =
@@ -1360,7 +1438,7 @@ static span_list eval(eval_ctx *c, uint32_t id, double lo, double hi, eval_mode 
         return eval_leaf(c, n, lo, hi, mode);
     if (n->op == CSG_UNION) {
         span_list flat;
-        if (is_flat_union(c, n) && eval_flat_union(c, n, lo, hi, mode, &flat))
+        if (n->flat && eval_flat_union(c, n, lo, hi, mode, &flat))
             return flat;
         union_state u = {no_spans, mode, 0, arena_save(c->scratch)};
         for_operands(c, n, 0, lo, hi, visit_union, &u);
@@ -1420,6 +1498,7 @@ static int run(const csg_tree *t, const csg_ray *r, double time, arena *scratch,
     c.counters = counters ? counters : &unused;
     c.oom = 0;
     c.blocked = 0;
+    c.memo_full = 0;
     c.counters->queries++;
     *out = no_spans;
     *blocked = 0;
@@ -1486,19 +1565,45 @@ int csg_spans(const csg_tree *t, const csg_ray *r, arena *scratch, span_list *ou
     return csg_spans_counted(t, r, scratch, NULL, out);
 }
 
+/* The first span of clip(all, r), without the copy: 1 and *out, or 0
+ * when the clipped list is empty. Only the last span of the clipped list
+ * can reach past tmax, and a span before another ends before that one's
+ * entry (below tmax), so the first span's exit is clipped exactly when it
+ * lies beyond tmax. */
+static int first_clipped(span_list all, const csg_ray *r, span *out)
+{
+    uint32_t first = 0;
+    while (first < all.n && all.v[first].out.t <= r->tmin)
+        first++;
+    if (first == all.n || all.v[first].in.t >= r->tmax)
+        return 0;
+    *out = all.v[first];
+    span_end none = {0, SPAN_NO_LEAF, 0, 0};
+    if (out->in.t < r->tmin) {
+        out->in = none;
+        out->in.t = r->tmin;
+    }
+    if (out->out.t > r->tmax) {
+        out->out = none;
+        out->out.t = r->tmax;
+    }
+    return 1;
+}
+
 int csg_first_hit_at(const csg_tree *t, const csg_ray *r, double time, arena *scratch,
                      csg_counters *counters, csg_hit *hit)
 {
-    span_list all, s;
+    span_list all;
+    span s;
     int blocked;
     if (!run(t, r, time, scratch, counters, EVAL_FIRST, &all, &blocked) ||
-        !clip(all, r, scratch, &s) || s.n == 0)
+        !first_clipped(all, r, &s))
         return 0;
-    const span_end *e = &s.v[0].in;
+    const span_end *e = &s.in;
     int exiting = 0;
     if (e->leaf == SPAN_NO_LEAF) {
         /* The ray starts inside the solid: the first crossing is the exit. */
-        e = &s.v[0].out;
+        e = &s.out;
         exiting = 1;
         if (e->leaf == SPAN_NO_LEAF)
             return 0;

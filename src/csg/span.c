@@ -34,7 +34,15 @@ static inline int combined(span_op op, int in_a, int in_b)
     return 0;
 }
 
-uint32_t span_merge(span_op op, span_list a, span_list b, span *out)
+/* span_merge's sweep for one op: always inlined, so that each call below
+ * gets its own copy with combined() folded for that op. */
+#if defined(__GNUC__)
+#define ALWAYS_INLINE inline __attribute__((always_inline))
+#else
+#define ALWAYS_INLINE inline
+#endif
+
+static ALWAYS_INLINE uint32_t merge(span_op op, span_list a, span_list b, span *out)
 {
     uint32_t n = 0;
     uint32_t na = 2 * a.n, nb = 2 * b.n, ia = 0, ib = 0;
@@ -66,6 +74,50 @@ uint32_t span_merge(span_op op, span_list a, span_list b, span *out)
     return n;
 }
 
+uint32_t span_merge(span_op op, span_list a, span_list b, span *out)
+{
+    switch (op) {
+    case SPAN_UNION:
+        return merge(SPAN_UNION, a, b, out);
+    case SPAN_INTERSECTION:
+        return merge(SPAN_INTERSECTION, a, b, out);
+    case SPAN_DIFFERENCE:
+        return merge(SPAN_DIFFERENCE, a, b, out);
+    }
+    return 0;
+}
+
+/* span_combine of two single spans by intersection (two convex leaves),
+ * without the sweep. Only [later entry, earlier exit] can come out of it.
+ * When that is longer than eps, both entries come before both exits: the
+ * sweep is inside both from the second entry it takes (on a tie, b's,
+ * since it takes a's boundary first) to the first exit (on a tie, a's),
+ * and regularisation keeps the span. Otherwise whatever the sweep emits is
+ * no longer than eps and regularisation removes it. A result that is one
+ * of the operands is returned as it is, like span_combine's shortcuts. */
+static span_list intersect_one(span_list a, span_list b, double eps, arena *scratch,
+                               int *oom)
+{
+    span_list r = {NULL, 0};
+    const span_end *in = a.v[0].in.t <= b.v[0].in.t ? &b.v[0].in : &a.v[0].in;
+    const span_end *out = a.v[0].out.t <= b.v[0].out.t ? &a.v[0].out : &b.v[0].out;
+    if (!(out->t - in->t > eps))
+        return r;
+    if (in == &a.v[0].in && out == &a.v[0].out)
+        return a;
+    if (in == &b.v[0].in && out == &b.v[0].out)
+        return b;
+    r.v = arena_alloc(scratch, sizeof(span));
+    if (!r.v) {
+        *oom = 1;
+        return r;
+    }
+    r.v[0].in = *in;
+    r.v[0].out = *out;
+    r.n = 1;
+    return r;
+}
+
 span_list span_combine(span_op op, span_list a, span_list b, double eps, arena *scratch,
                        int *oom)
 {
@@ -75,6 +127,8 @@ span_list span_combine(span_op op, span_list a, span_list b, double eps, arena *
         return op == SPAN_UNION ? b : r;
     if (b.n == 0)
         return op == SPAN_INTERSECTION ? r : a;
+    if (op == SPAN_INTERSECTION && a.n == 1 && b.n == 1)
+        return intersect_one(a, b, eps, scratch, oom);
 
     uint32_t cap = a.n + b.n;
     r.v = arena_alloc(scratch, (size_t)cap * sizeof(span));

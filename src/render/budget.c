@@ -20,8 +20,9 @@
  * render as a whole, proportional to its rays: RENDER_MIN_IMPLICIT_EVALS
  * up front, and RENDER_IMPLICIT_EVALS_PER_RAY more for each camera ray,
  * edge neighbour and ambient occlusion ray of each pixel sample done
- * (shadow, reflection and refraction rays share that allowance). Since
- * the credit comes as pixels are done, a field that costs more than the
+ * (shadow, reflection and refraction rays share that allowance), credited
+ * as each row of a tile is done. Since the credit comes as pixels are
+ * done, a field that costs more than the
  * average fails after the allowance, within a second, at any image size. A smooth field
  * needs tens to a few thousand evaluations a ray (docs/limits.md), so only a field that
  * is unresolvable at the image's scale meets either limit.

@@ -477,13 +477,17 @@ static void render_tile(const render_ctx *c, render_thread *th, int tile, int ti
     int x1 = x0 + RENDER_TILE_SIZE < c->fb->width ? x0 + RENDER_TILE_SIZE : c->fb->width;
     int y1 =
         y0 + RENDER_TILE_SIZE < c->fb->height ? y0 + RENDER_TILE_SIZE : c->fb->height;
-    for (int j = y0; j < y1; j++)
+    /* The work budget is credited a row of the tile at a time: one atomic
+     * addition on the token, which every thread shares, per row instead
+     * of per pixel. */
+    for (int j = y0; j < y1; j++) {
         for (int i = x0; i < x1; i++) {
             if (cancel_check(c->cancel))
                 return; /* stopped: the rest is skipped */
             render_pixel(c, th, i, j);
-            cancel_credit(c->cancel, c->pixel_credit);
         }
+        cancel_credit(c->cancel, (uint64_t)(x1 - x0) * c->pixel_credit);
+    }
 }
 
 void sc_framebuffer_release(sc_framebuffer *fb)
