@@ -87,11 +87,11 @@ check
 
 # --max-memory: a load past the limit fails with the limit's message, a
 # render whose image buffers do not fit is refused before any work, and a
-# generous limit changes nothing in the image. 300000 positioned spheres
-# take about 400 MB to load.
+# generous limit changes nothing in the image. 500000 positioned spheres
+# take 400 to 450 MiB of address space to load (what the limit counts).
 awk 'BEGIN {
     print "union() {"
-    for (i = 0; i < 300000; i++)
+    for (i = 0; i < 500000; i++)
         printf "  multmatrix([[1, 0, 0, %d], [0, 1, 0, %d], [0, 0, 1, 0], [0, 0, 0, 1]]) { sphere(r = 0.4); }\n",
             i % 500, int(i / 500)
     print "}"

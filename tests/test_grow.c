@@ -3,8 +3,11 @@
  * array that grows past MEM_HUGE_MIN moves to a new buffer and keeps every
  * item, a failed growth leaves the array as it was, and on a Linux kernel
  * with transparent huge pages the large buffer's mapping carries the
- * advice (the "hg" flag of /proc/self/smaps).
+ * advice (the "hg" flag of /proc/self/smaps), while a buffer so advised
+ * can still be moved by remapping, its pages kept.
  */
+#define _DEFAULT_SOURCE /* getrusage */
+
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>
@@ -18,6 +21,12 @@
 #include "base/grow.h"
 #include "base/mem.h"
 #include "test_util.h"
+
+#include <sys/resource.h>
+#include <unistd.h>
+#if defined(__linux__)
+#include <sys/prctl.h>
+#endif
 
 /* Items appended one at a time, past MEM_HUGE_MIN bytes (3 Mi items of 8
  * bytes is 24 MiB), all kept through every move. */
@@ -118,11 +127,63 @@ static void test_large_array_advised(void **state)
     mem_advise_huge(NULL, MEM_HUGE_MIN);
 }
 
+/* Faults of first touch (minor page faults) of the process so far. */
+static long minor_faults(void)
+{
+    struct rusage u;
+    return getrusage(RUSAGE_SELF, &u) == 0 ? u.ru_minflt : 0;
+}
+
+/* A large buffer advised for huge pages and written keeps its pages when
+ * realloc grows it: the C library moves a block this large by remapping
+ * its mapping, which works only while the advice has not split the
+ * mapping in parts. Growing 48 MiB to 96 MiB and writing all of it then
+ * faults in about the new half (counted with huge pages off, one fault a
+ * page); a copy into a new mapping faults in all of it. AddressSanitizer's
+ * realloc always copies: there only the contents are checked. */
+static void test_advised_buffer_remaps(void **state)
+{
+    (void)state;
+    size_t n = (size_t)48 << 20, page = (size_t)sysconf(_SC_PAGESIZE);
+#if defined(__linux__)
+    int counted = prctl(PR_SET_THP_DISABLE, 1, 0, 0, 0) == 0;
+#else
+    int counted = 0;
+#endif
+    unsigned char *v = malloc(n);
+    assert_non_null(v);
+    mem_advise_huge(v, n);
+    memset(v, 3, n);
+    long before = minor_faults();
+    unsigned char *w = realloc(v, 2 * n);
+    assert_non_null(w);
+    mem_advise_huge(w, 2 * n);
+    for (size_t i = 0; i < n; i += page)
+        assert_int_equal(w[i], 3);
+    memset(w + n, 4, n);
+    long faults = minor_faults() - before;
+    free(w);
+#if defined(__linux__)
+    if (counted)
+        assert_int_equal(prctl(PR_SET_THP_DISABLE, 0, 0, 0, 0), 0);
+#endif
+#if defined(__GLIBC__) && !defined(__SANITIZE_ADDRESS__)
+    assert_true(counted);
+    long pages = (long)(2 * n / page);
+    assert_true(faults > pages / 4);     /* the new half is fresh */
+    assert_true(faults < pages * 3 / 4); /* the old half is not */
+#else
+    (void)faults;
+    (void)counted;
+#endif
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_grow_keeps_items),
         cmocka_unit_test(test_grow_failure_keeps_array),
+        cmocka_unit_test(test_advised_buffer_remaps),
     };
     const struct CMUnitTest advised[] = {
         cmocka_unit_test(test_large_array_advised),

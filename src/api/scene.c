@@ -88,15 +88,18 @@ static sc_status load(const char *name, const char *text, size_t length, char *o
         else
             model_stream_free(lowering);
     }
-    free(owned_text);
     /* The model goes during the build, once walked and before the tree is
-     * compiled (build_scene_take). */
-    if (st == SC_OK)
-        st = build_scene_take(
-            typed, (own.faithful ? BUILD_FAITHFUL : 0) | (own.strict ? BUILD_STRICT : 0),
-            &s->tree, &s->look, &s->warnings, &s->warning_count, error);
-    else
+     * compiled (build_scene_take); the text, read and no longer needed,
+     * goes at its start, its pages kept for the leaves where they serve. */
+    if (st == SC_OK) {
+        st = build_scene_take(typed, owned_text, owned_text ? length : 0,
+                              (own.faithful ? BUILD_FAITHFUL : 0) |
+                                  (own.strict ? BUILD_STRICT : 0),
+                              &s->tree, &s->look, &s->warnings, &s->warning_count, error);
+    } else {
+        free(owned_text);
         model_free(typed);
+    }
     parse_tree_free(syntax);
     if (st != SC_OK) {
         char what[64];

@@ -1,5 +1,5 @@
 /* The process's memory limit: see mem.h. */
-#define _DEFAULT_SOURCE /* getrlimit, madvise */
+#define _DEFAULT_SOURCE /* getrlimit, madvise, sysconf */
 
 #include "base/mem.h"
 
@@ -8,6 +8,7 @@
 #include <stdint.h>
 #include <sys/mman.h>
 #include <sys/resource.h>
+#include <unistd.h>
 
 #include "base/error.h"
 
@@ -36,13 +37,13 @@ uint64_t mem_in_use(void)
 void mem_advise_huge(void *p, size_t bytes)
 {
 #ifdef MADV_HUGEPAGE
-    const uintptr_t huge = (uintptr_t)2 << 20; /* the x86-64 and arm64 size */
     if (!p || bytes < MEM_HUGE_MIN)
         return;
-    uintptr_t start = ((uintptr_t)p + huge - 1) & ~(huge - 1);
-    uintptr_t end = ((uintptr_t)p + bytes) & ~(huge - 1);
-    if (end > start)
-        (void)madvise((void *)start, end - start, MADV_HUGEPAGE); /* advice only */
+    long size = sysconf(_SC_PAGESIZE);
+    uintptr_t page = size > 0 ? (uintptr_t)size : 4096;
+    uintptr_t start = (uintptr_t)p & ~(page - 1);
+    uintptr_t end = ((uintptr_t)p + bytes + page - 1) & ~(page - 1);
+    (void)madvise((void *)start, end - start, MADV_HUGEPAGE); /* advice only */
 #else
     (void)p;
     (void)bytes;

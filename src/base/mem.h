@@ -48,10 +48,14 @@ void mem_blame(sc_error *error, const char *what);
  * pages where the system offers them on request (Linux transparent huge
  * pages in "madvise" mode): its first touch then costs one fault per 2 MiB
  * instead of one per 4 KiB page, which is most of the system time of
- * loading a million-leaf model. Only the 2 MiB-aligned interior of a
- * buffer of at least MEM_HUGE_MIN bytes is advised, so nothing outside the
- * buffer changes; smaller buffers, other systems and a refusal leave
- * everything as it was. The buffer stays the caller's. */
+ * loading a million-leaf model. A buffer of at least MEM_HUGE_MIN bytes is
+ * advised whole, from the start of its first page to the end of its last:
+ * the C library keeps so large a block in a mapping of its own, and advice
+ * on part of a mapping splits it, after which realloc can no longer move
+ * the block by remapping its pages and copies it into fresh ones instead.
+ * The kernel backs only the 2 MiB-aligned parts with huge pages; smaller
+ * buffers, other systems and a refusal leave everything as it was. The
+ * buffer stays the caller's. */
 #define MEM_HUGE_MIN ((size_t)8 << 20)
 void mem_advise_huge(void *p, size_t bytes);
 

@@ -1144,8 +1144,10 @@ static sc_status build_parts(builder *b)
 }
 
 /* build_scene and build_scene_take: owned, when not NULL, is m, freed as
- * soon as the walk is done. */
-static sc_status build_scene_of(const model *m, model *owned, int flags, csg_tree **out,
+ * soon as the walk is done; spare (or NULL) is freed or given to the
+ * builder. */
+static sc_status build_scene_of(const model *m, model *owned, void *spare,
+                                size_t spare_size, int flags, csg_tree **out,
                                 shading **look, sc_error **warnings,
                                 size_t *warning_count, sc_error *error)
 {
@@ -1168,12 +1170,18 @@ static sc_status build_scene_of(const model *m, model *owned, int flags, csg_tre
         csg_builder_free(b.csg);
         shading_free(b.shading);
         model_free(owned);
+        free(spare);
         return err_nomem(error, NULL);
     }
-    /* Room for the model's leaves up front; running out of memory here
-     * fails the builder, which the walk reports as any other failure. */
-    if (m->leaf_count && m->leaf_count < UINT32_MAX / 2)
+    /* Room for the model's leaves up front, in the spare buffer where it
+     * serves; running out of memory here fails the builder, which the
+     * walk reports as any other failure. */
+    if (m->leaf_count && m->leaf_count < UINT32_MAX / 2) {
+        csg_builder_give(b.csg, spare, spare_size);
         (void)csg_builder_reserve(b.csg, (uint32_t)m->leaf_count);
+    } else {
+        free(spare);
+    }
     uint32_t root = CSG_EMPTY;
     sc_status st = walk(&b, &root);
     free(b.ids);
@@ -1210,11 +1218,14 @@ static sc_status build_scene_of(const model *m, model *owned, int flags, csg_tre
 sc_status build_scene(const model *m, int flags, csg_tree **out, shading **look,
                       sc_error **warnings, size_t *warning_count, sc_error *error)
 {
-    return build_scene_of(m, NULL, flags, out, look, warnings, warning_count, error);
+    return build_scene_of(m, NULL, NULL, 0, flags, out, look, warnings, warning_count,
+                          error);
 }
 
-sc_status build_scene_take(model *m, int flags, csg_tree **out, shading **look,
-                           sc_error **warnings, size_t *warning_count, sc_error *error)
+sc_status build_scene_take(model *m, void *spare, size_t spare_size, int flags,
+                           csg_tree **out, shading **look, sc_error **warnings,
+                           size_t *warning_count, sc_error *error)
 {
-    return build_scene_of(m, m, flags, out, look, warnings, warning_count, error);
+    return build_scene_of(m, m, spare, spare_size, flags, out, look, warnings,
+                          warning_count, error);
 }

@@ -78,8 +78,12 @@ sc_status build_scene(const model *m, int flags, csg_tree **out, shading **look,
 /* build_scene that takes m and frees it in every case, as soon as the walk
  * over it is done and before the tree is compiled, so that the typed model
  * and the compiled leaves never take memory at once (a million positioned
- * spheres: 350 MB of model, 330 MB of leaves). */
-sc_status build_scene_take(model *m, int flags, csg_tree **out, shading **look,
-                           sc_error **warnings, size_t *warning_count, sc_error *error);
+ * spheres: 350 MB of model, 330 MB of leaves). It takes spare too, spare_size
+ * bytes from malloc (or NULL) that the caller is done with, the text the
+ * model was read from: the leaves' array is made of it where that saves
+ * touching fresh memory (csg_builder_give), else it is freed first. */
+sc_status build_scene_take(model *m, void *spare, size_t spare_size, int flags,
+                           csg_tree **out, shading **look, sc_error **warnings,
+                           size_t *warning_count, sc_error *error);
 
 #endif

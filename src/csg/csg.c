@@ -31,6 +31,7 @@
 
 #include "base/error.h"
 #include "base/grow.h"
+#include "base/mem.h"
 #include "csg/bvh.h"
 
 struct csg_builder {
@@ -41,6 +42,8 @@ struct csg_builder {
     uint32_t child_count, child_cap;
     csg_leaf *leaves;
     uint32_t leaf_count, leaf_cap;
+    void *spare; /* csg_builder_give's buffer, until the leaves take it */
+    size_t spare_size;
     int failed;
 };
 
@@ -60,6 +63,7 @@ void csg_builder_free(csg_builder *b)
     free(b->nodes);
     free(b->child_ids);
     free(b->leaves);
+    free(b->spare);
     free(b);
 }
 
@@ -82,6 +86,23 @@ int csg_builder_reserve(csg_builder *b, uint32_t leaves)
      * few in a large model (a sixteenth more, as room). */
     uint64_t nodes = (uint64_t)b->node_count + leaves + leaves / 16 + 16;
     uint64_t all_leaves = (uint64_t)b->leaf_count + leaves;
+    size_t bytes = (size_t)all_leaves * sizeof *b->leaves; /* < 2^32 * 328 */
+    if (!b->failed && b->spare && !b->leaves && b->spare_size >= MEM_HUGE_MIN &&
+        bytes >= MEM_HUGE_MIN && all_leaves < UINT32_MAX) {
+        /* The given buffer becomes the leaves' array; its bytes are
+         * garbage to the leaves, each written whole when added. */
+        void *p = realloc(b->spare, bytes);
+        if (!p) {
+            b->failed = 1;
+            return 0;
+        }
+        b->spare = NULL;
+        mem_advise_huge(p, bytes);
+        b->leaves = p;
+        b->leaf_cap = (uint32_t)all_leaves;
+    }
+    free(b->spare); /* too small to be worth keeping, or not needed */
+    b->spare = NULL;
     if (b->failed || nodes >= UINT32_MAX ||
         !grow_array32((void **)&b->leaves, &b->leaf_cap, (uint32_t)all_leaves,
                       sizeof *b->leaves) ||
@@ -91,6 +112,13 @@ int csg_builder_reserve(csg_builder *b, uint32_t leaves)
         return 0;
     }
     return 1;
+}
+
+void csg_builder_give(csg_builder *b, void *buffer, size_t size)
+{
+    free(b->spare);
+    b->spare = buffer;
+    b->spare_size = size;
 }
 
 static uint32_t add_node(csg_builder *b, const csg_node *n)

@@ -1,6 +1,9 @@
 /* Affine transforms and boxes: see vec.h. */
 #include "math/vec.h"
 
+#include <stdint.h>
+#include <string.h>
+
 affine affine_identity(void)
 {
     affine a = {{{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}}};
@@ -34,9 +37,40 @@ double affine_det(const affine *a)
  * row lengths): by Hadamard's inequality |det| never exceeds that product,
  * so the ratio is a scale-free measure of how flat the map is, and 1e-14
  * leaves the inverse's entries well inside double precision. */
+/* The identity's linear part bit for bit (positive zeros), for
+ * affine_invert's shortcut; the bits compared as integers (memcpy of one
+ * double compiles to a move). */
+static int linear_is_identity(const double (*m)[4])
+{
+    const uint64_t one = 0x3ff0000000000000u; /* 1.0 */
+    uint64_t differ = 0;
+    for (int i = 0; i < 3; i++) {
+        for (int j = 0; j < 3; j++) {
+            uint64_t bits;
+            memcpy(&bits, &m[i][j], sizeof bits);
+            differ |= bits ^ (i == j ? one : 0);
+        }
+    }
+    return differ == 0;
+}
+
+/* A map that only moves (an identity linear part, bit for bit: every
+ * positioned leaf of an export that only translates it) takes a shortcut
+ * with the general path's result: its determinant and row lengths are 1
+ * and its cofactors 1 and +0 exactly, so only the translation's formula
+ * below is left, evaluated as it stands (0 * t is not folded away: it
+ * keeps the sign of a zero and the NaN of an infinite t). */
 int affine_invert(const affine *a, affine *out)
 {
     const double(*m)[4] = a->m;
+    if (linear_is_identity(m)) {
+        affine r = affine_identity();
+        for (int i = 0; i < 3; i++)
+            r.m[i][3] =
+                -(r.m[i][0] * m[0][3] + r.m[i][1] * m[1][3] + r.m[i][2] * m[2][3]);
+        *out = r;
+        return 1;
+    }
     double det = affine_det(a);
     double rows = 1.0;
     for (int i = 0; i < 3; i++)
