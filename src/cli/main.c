@@ -1160,24 +1160,38 @@ int cli_apply_camera_option(sc_render_options *options, const char *name, size_t
  * the same arguments: the ranks other than 0 print nothing, so that the
  * command's output and its first error come once, from rank 0, whether the
  * command shares its work (mpi_dist.c) or not, and also for an error found
- * before the ranks join the job. */
-static void quiet_other_ranks(void)
+ * before the ranks join the job. Returns whether this is such a rank. */
+static int quiet_other_ranks(void)
 {
     const char *size = getenv("OMPI_COMM_WORLD_SIZE");
     const char *rank = getenv("OMPI_COMM_WORLD_RANK");
     if (!size || atoi(size) <= 1 || !rank || atoi(rank) == 0)
-        return;
+        return 0;
     int null = open("/dev/null", O_WRONLY);
     if (null >= 0) {
         dup2(null, STDOUT_FILENO);
         dup2(null, STDERR_FILENO);
         close(null);
     }
+    return 1;
 }
+
+static int run(int argc, char **argv);
 
 int main(int argc, char **argv)
 {
-    quiet_other_ranks();
+    int other = quiet_other_ranks();
+    int st = run(argc, argv);
+    /* An error found before the ranks join the job (a bad command line) is
+     * found by every rank, and rank 0 reports it. mpirun aborts the job as
+     * soon as a rank exits with a failure, which could stop rank 0 before
+     * its message is out; so the other ranks leave quietly with 0, and the
+     * job's status is rank 0's. */
+    return other && st && dist_size() <= 1 ? 0 : st;
+}
+
+static int run(int argc, char **argv)
+{
     int limited = cli_take_max_memory(&argc, argv);
     if (limited)
         return limited;
