@@ -267,7 +267,7 @@ static int meshes_main(int argc, char **argv)
     if (st == SC_OK)
         st = model_lower(syntax, &typed, &err);
     if (st == SC_OK)
-        st = build_scene(typed, 0, &tree, NULL, &warnings, &warning_count, &err);
+        st = build_scene(typed, 0, 0, &tree, NULL, &warnings, &warning_count, &err);
     double load = cpu_seconds() - load_start;
     free(warnings);
     model_free(typed);

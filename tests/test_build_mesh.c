@@ -836,6 +836,73 @@ static void test_linear_extrude(void **state)
     sc_scene_release(s);
 }
 
+/* Loads text with sc_load_options.max_triangles at limit: the status. */
+static sc_status load_budget(const char *text, size_t limit, int faithful, char *message,
+                             size_t size)
+{
+    sc_scene *s = NULL;
+    sc_error e;
+    sc_load_options o;
+    sc_load_options_init(&o);
+    o.faithful = faithful;
+    o.max_triangles = limit;
+    sc_status st = sc_scene_load_string("m.csg", text, strlen(text), &o, &s, &e);
+    if (st == SC_OK) {
+        assert_non_null(s);
+        message[0] = 0;
+    } else {
+        assert_null(s);
+        sc_error_format(&e, message, size);
+    }
+    sc_scene_release(s);
+    return st;
+}
+
+/* A load's meshes share one budget of triangles (sc_load_options
+ * .max_triangles): a twisted extrusion of a square in s slices is 8 s side
+ * triangles and two caps of 2; a mesh past what is left fails at its own
+ * node, before it is checked or indexed. */
+static void test_triangle_budget(void **state)
+{
+    (void)state;
+    const char *twisted =
+        "linear_extrude(height = 10, center = false, convexity = 1, twist = 30, slices = "
+        "10, scale = [1, 1], $fn = 0, $fa = 12, $fs = 2) {\n"
+        "  square(size = [4, 4], center = true);\n}\n";
+    size_t need = 8 * 10 + 4;
+    char message[1024], expected[256];
+    for (int faithful = 0; faithful < 2; faithful++) {
+        assert_int_equal(load_budget(twisted, need, faithful, message, sizeof message),
+                         SC_OK);
+        assert_int_equal(load_budget(twisted, 0, faithful, message, sizeof message),
+                         SC_OK);
+        assert_int_equal(
+            load_budget(twisted, need - 1, faithful, message, sizeof message),
+            SC_ERR_LIMIT);
+        snprintf(expected, sizeof expected,
+                 "m.csg:1:1: error: linear_extrude: too many mesh triangles (%zu more, "
+                 "past the limit of %zu in one model)",
+                 need, need - 1);
+        assert_string_equal(message, expected);
+    }
+    /* two non-convex polyhedra: the second passes the budget, at its node */
+    char two[4096];
+    snprintf(two, sizeof two, "group() {\n%s\n%s\n}\n", TURNED_NOTCH, TURNED_NOTCH);
+    size_t notch = 0;
+    for (size_t limit = 1; limit < 200 && !notch; limit++)
+        if (load_budget(TURNED_NOTCH, limit, 0, message, sizeof message) == SC_OK)
+            notch = limit;
+    assert_true(notch > 4);
+    assert_int_equal(load_budget(two, 2 * notch, 0, message, sizeof message), SC_OK);
+    assert_int_equal(load_budget(two, 2 * notch - 1, 0, message, sizeof message),
+                     SC_ERR_LIMIT);
+    snprintf(expected, sizeof expected,
+             "m.csg:3:1: error: polyhedron: too many mesh triangles (%zu more, past the "
+             "limit of %zu in one model)",
+             notch, 2 * notch - 1);
+    assert_string_equal(message, expected);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -849,6 +916,7 @@ int main(void)
         cmocka_unit_test(test_builder_open_mesh),
         cmocka_unit_test(test_import),
         cmocka_unit_test(test_linear_extrude),
+        cmocka_unit_test(test_triangle_budget),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

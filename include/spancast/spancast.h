@@ -139,9 +139,18 @@ typedef struct sc_load_options {
                      default left out with faithful, else rendered by the parity
                      rule), a file that cannot be read, a matrix that is not
                      finite */
+    /* the most triangles that the meshes of one load may have, all together:
+       polyhedra, imports and surfaces built as meshes, twisted, scaled and
+       faithful extrusions, hulls built as meshes. A load past it fails with
+       SC_ERR_LIMIT at the mesh that passes it, before that mesh is checked
+       or indexed, so that a small file cannot ask for unbounded work. 0
+       means the default, 67108864 (2^26); a program that loads untrusted
+       models may set less (the fuzzer sets 65536) */
+    size_t max_triangles;
 } sc_load_options;
 
-/* Sets size and the defaults (faithful 0, strict 0). Never fails. */
+/* Sets size and the defaults (faithful 0, strict 0, max_triangles 0). Never
+ * fails. */
 void sc_load_options_init_size(sc_load_options *options, size_t size);
 #define sc_load_options_init(options)                                                    \
     sc_load_options_init_size((options), sizeof *(options))

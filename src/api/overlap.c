@@ -131,7 +131,8 @@ static void choose_root(sc_objects *o)
 
 /* Builds object k alone: every other object disabled for the build, as
  * the '*' modifier would disable it. */
-static sc_status build_object(sc_objects *o, size_t k, int flags, sc_error *error)
+static sc_status build_object(sc_objects *o, size_t k, int flags, size_t max_triangles,
+                              sc_error *error)
 {
     unsigned *saved = malloc(o->count * sizeof *saved);
     if (!saved)
@@ -147,7 +148,7 @@ static sc_status build_object(sc_objects *o, size_t k, int flags, sc_error *erro
     if (!s || !(s->path = strdup(o->path)))
         st = err_nomem(error, NULL);
     else
-        st = build_scene(o->typed, flags, &s->tree, &s->look, &s->warnings,
+        st = build_scene(o->typed, flags, max_triangles, &s->tree, &s->look, &s->warnings,
                          &s->warning_count, error);
     for (size_t j = 0; j < o->count; j++)
         o->nodes[j]->modifiers = saved[j];
@@ -210,7 +211,7 @@ static sc_status load_text(const char *path, const char *text, size_t length, in
     for (size_t k = 0; k < o->count; k++) {
         st = build_object(
             o, k, (lo.faithful ? BUILD_FAITHFUL : 0) | (lo.strict ? BUILD_STRICT : 0),
-            error);
+            lo.max_triangles, error);
         if (st) {
             if (mesh)
                 mesh_model_unplace(error, path);

@@ -95,7 +95,8 @@ static sc_status load(const char *name, const char *text, size_t length, char *o
         st = build_scene_take(typed, owned_text, owned_text ? length : 0,
                               (own.faithful ? BUILD_FAITHFUL : 0) |
                                   (own.strict ? BUILD_STRICT : 0),
-                              &s->tree, &s->look, &s->warnings, &s->warning_count, error);
+                              own.max_triangles, &s->tree, &s->look, &s->warnings,
+                              &s->warning_count, error);
     } else {
         free(owned_text);
         model_free(typed);

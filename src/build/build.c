@@ -98,7 +98,8 @@ typedef struct builder {
     shading *shading; /* lights, materials, camera, background */
     int faithful;     /* OpenSCAD's polyhedra for spheres and cylinders */
     int strict;       /* a mesh OpenSCAD would leave out is an error */
-    uint32_t root_id; /* the result of the first '!' node */
+    size_t max_triangles, triangles_left; /* the meshes' budget, what is left of it */
+    uint32_t root_id;                     /* the result of the first '!' node */
     /* resize matrices measured so far (build_hull.h) */
     build_resize_cache *resize_cache;
     /* 2D children ignored in 3D operations, warned of when their parent
@@ -131,7 +132,9 @@ static build_ctx context(builder *b, int emit, sc_error *note)
                    .faithful = b->faithful,
                    .note = note,
                    .notes = emit ? &b->warnings : NULL,
-                   .strict = b->strict};
+                   .strict = b->strict,
+                   .triangles_left = &b->triangles_left,
+                   .max_triangles = b->max_triangles};
     return c;
 }
 
@@ -1147,8 +1150,8 @@ static sc_status build_parts(builder *b)
  * soon as the walk is done; spare (or NULL) is freed or given to the
  * builder. */
 static sc_status build_scene_of(const model *m, model *owned, void *spare,
-                                size_t spare_size, int flags, csg_tree **out,
-                                shading **look, sc_error **warnings,
+                                size_t spare_size, int flags, size_t max_triangles,
+                                csg_tree **out, shading **look, sc_error **warnings,
                                 size_t *warning_count, sc_error *error)
 {
     *out = NULL;
@@ -1163,6 +1166,8 @@ static sc_status build_scene_of(const model *m, model *owned, void *spare,
     b.error = error;
     b.faithful = (flags & BUILD_FAITHFUL) != 0;
     b.strict = (flags & BUILD_STRICT) != 0;
+    b.max_triangles = max_triangles ? max_triangles : BUILD_MAX_TRIANGLES;
+    b.triangles_left = b.max_triangles;
     b.root_id = CSG_EMPTY;
     b.csg = csg_builder_new();
     b.shading = shading_new();
@@ -1215,17 +1220,18 @@ static sc_status build_scene_of(const model *m, model *owned, void *spare,
     return SC_OK;
 }
 
-sc_status build_scene(const model *m, int flags, csg_tree **out, shading **look,
-                      sc_error **warnings, size_t *warning_count, sc_error *error)
+sc_status build_scene(const model *m, int flags, size_t max_triangles, csg_tree **out,
+                      shading **look, sc_error **warnings, size_t *warning_count,
+                      sc_error *error)
 {
-    return build_scene_of(m, NULL, NULL, 0, flags, out, look, warnings, warning_count,
-                          error);
+    return build_scene_of(m, NULL, NULL, 0, flags, max_triangles, out, look, warnings,
+                          warning_count, error);
 }
 
 sc_status build_scene_take(model *m, void *spare, size_t spare_size, int flags,
-                           csg_tree **out, shading **look, sc_error **warnings,
-                           size_t *warning_count, sc_error *error)
+                           size_t max_triangles, csg_tree **out, shading **look,
+                           sc_error **warnings, size_t *warning_count, sc_error *error)
 {
-    return build_scene_of(m, m, spare, spare_size, flags, out, look, warnings,
-                          warning_count, error);
+    return build_scene_of(m, m, spare, spare_size, flags, max_triangles, out, look,
+                          warnings, warning_count, error);
 }

@@ -58,6 +58,10 @@
         249 / 255.0f, 215 / 255.0f, 44 / 255.0f, 1.0f                                    \
     }
 
+/* The default of sc_load_options.max_triangles (build_scene's
+ * max_triangles 0): the mesh triangles of one model, all meshes together. */
+#define BUILD_MAX_TRIANGLES ((size_t)1 << 26)
+
 /* build_scene's flags. */
 #define BUILD_FAITHFUL 1 /* OpenSCAD's polygons and polyhedra (--faithful) */
 #define BUILD_STRICT 2   /* bad meshes are errors (--strict) */
@@ -71,9 +75,12 @@
  * there are none; free with free()). On failure nothing is returned and error says where
  * and why: the first error in file order, which may be one the lowering found (a
  * MODEL_ERROR node). With BUILD_STRICT, a polyhedron or imported mesh that is not closed
- * is an error rather than a warning (build_mesh.h). */
-sc_status build_scene(const model *m, int flags, csg_tree **out, shading **look,
-                      sc_error **warnings, size_t *warning_count, sc_error *error);
+ * is an error rather than a warning (build_mesh.h). The meshes the build makes have at
+ * most max_triangles triangles in all (0: BUILD_MAX_TRIANGLES); past it the build
+ * fails with SC_ERR_LIMIT at the mesh that passes it (build_charge_triangles). */
+sc_status build_scene(const model *m, int flags, size_t max_triangles, csg_tree **out,
+                      shading **look, sc_error **warnings, size_t *warning_count,
+                      sc_error *error);
 
 /* build_scene that takes m and frees it in every case, as soon as the walk
  * over it is done and before the tree is compiled, so that the typed model
@@ -83,7 +90,7 @@ sc_status build_scene(const model *m, int flags, csg_tree **out, shading **look,
  * model was read from: the leaves' array is made of it where that saves
  * touching fresh memory (csg_builder_give), else it is freed first. */
 sc_status build_scene_take(model *m, void *spare, size_t spare_size, int flags,
-                           csg_tree **out, shading **look, sc_error **warnings,
-                           size_t *warning_count, sc_error *error);
+                           size_t max_triangles, csg_tree **out, shading **look,
+                           sc_error **warnings, size_t *warning_count, sc_error *error);
 
 #endif

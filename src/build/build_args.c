@@ -41,6 +41,20 @@ sc_status build_note(const build_ctx *c, const sc_location *loc, const char *for
     return st;
 }
 
+sc_status build_charge_triangles(const build_ctx *c, const sc_location *loc,
+                                 const char *what, size_t count)
+{
+    if (!c->triangles_left)
+        return SC_OK;
+    if (count > *c->triangles_left)
+        return err_set(c->error, SC_ERR_LIMIT, loc,
+                       "%s: too many mesh triangles (%zu more, past the limit of %zu in "
+                       "one model)",
+                       what, count, c->max_triangles);
+    *c->triangles_left -= count;
+    return SC_OK;
+}
+
 sc_status build_note_left_out(const build_ctx *c, const sc_location *loc,
                               const char *format, ...)
 {

@@ -38,7 +38,20 @@ typedef struct build_ctx {
     /* --strict: a mesh a builder makes that is not closed is an error, not a
      * warning (build_mesh_prim) */
     int strict;
+    /* the triangles the load's meshes may still have, of max_triangles
+     * (sc_load_options.max_triangles), shared by every context of a load;
+     * NULL: no budget */
+    size_t *triangles_left;
+    size_t max_triangles;
 } build_ctx;
+
+/* Charges count mesh triangles that what (a node's name) is about to build
+ * to c's budget: SC_OK while they fit, else the SC_ERR_LIMIT error at loc
+ * "what: too many mesh triangles (N more, past the limit of M in one
+ * model)". Called before the mesh is checked or indexed, so that the work
+ * of one load stays within the budget and one node's faces. */
+sc_status build_charge_triangles(const build_ctx *c, const sc_location *loc,
+                                 const char *what, size_t count);
 
 /* Adds the warning format/args at loc to notes (nothing when it comes out
  * empty); fails only when memory runs out (an error in *error). */

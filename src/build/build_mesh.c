@@ -192,6 +192,14 @@ sc_status build_mesh_prim(const build_ctx *c, const sc_location *loc, const char
                           const uint32_t *indices, const uint32_t *face_start,
                           uint32_t face_count, prim *out, const char **empty)
 {
+    size_t tri_count = 0;
+    for (uint32_t f = 0; f < face_count; f++)
+        tri_count += face_start[f + 1] - face_start[f] - 2;
+    if (tri_count > UINT32_MAX / 3)
+        return err_set(c->error, SC_ERR_LIMIT, loc, "%s has too many faces", what);
+    sc_status st = build_charge_triangles(c, loc, what, tri_count);
+    if (st != SC_OK)
+        return st;
     char why[SC_ERROR_MESSAGE_MAX];
     int sound = mesh_sound(what, numbered, points, NULL, indices, face_start, face_count,
                            why, sizeof why);
@@ -204,11 +212,6 @@ sc_status build_mesh_prim(const build_ctx *c, const sc_location *loc, const char
         return build_note(c, loc, "%s; left out, as OpenSCAD leaves it out (\"%s\")", why,
                           build_openscad_not_closed);
     }
-    size_t tri_count = 0;
-    for (uint32_t f = 0; f < face_count; f++)
-        tri_count += face_start[f + 1] - face_start[f] - 2;
-    if (tri_count > UINT32_MAX / 3)
-        return err_set(c->error, SC_ERR_LIMIT, loc, "%s has too many faces", what);
     uint32_t *tris = malloc((tri_count ? tri_count : 1) * 3 * sizeof *tris);
     if (!tris)
         return err_nomem(c->error, loc);
@@ -222,8 +225,7 @@ sc_status build_mesh_prim(const build_ctx *c, const sc_location *loc, const char
             k++;
         }
     }
-    sc_status st =
-        finish_mesh(c, loc, numbered, points, point_count, tris, k, !sound, out, empty);
+    st = finish_mesh(c, loc, numbered, points, point_count, tris, k, !sound, out, empty);
     free(tris);
     if (st == SC_OK && !sound && !*empty)
         st = build_note(
@@ -1449,6 +1451,14 @@ sc_status build_mesh_solid(const build_ctx *c, const sc_location *loc, const cha
                            int numbered, int strict, const build_mesh_faces *f, prim *out,
                            const char **empty)
 {
+    size_t triangles = 0;
+    for (uint32_t k = 0; k < f->face_count; k++) {
+        uint32_t n = f->face_start[k + 1] - f->face_start[k];
+        triangles += n > 2 ? n - 2 : 0;
+    }
+    sc_status charged = build_charge_triangles(c, loc, what, triangles);
+    if (charged != SC_OK)
+        return charged;
     char why[SC_ERROR_MESSAGE_MAX - 160];
     int sound = build_mesh_sound(f, what, numbered, why, sizeof why);
     if (sound < 0)
@@ -2093,9 +2103,11 @@ static sc_status join_parts(const build_ctx *c, const sc_location *loc,
         tris += parts->items[i].u.mesh.mesh->tri_count;
     if (tris > UINT32_MAX / 3)
         return err_set(c->error, SC_ERR_LIMIT, loc, "imported mesh has too many faces");
+    sc_status st = build_charge_triangles(c, loc, "import", tris);
+    if (st != SC_OK)
+        return st;
     vec3 *v = malloc(3 * tris * sizeof *v);
     uint32_t *index = malloc(3 * tris * sizeof *index);
-    sc_status st = SC_OK;
     if (!v || !index) {
         st = err_nomem(c->error, loc);
     } else {
