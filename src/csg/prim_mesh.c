@@ -55,10 +55,11 @@
  * a parity mesh, an odd count of those crossings.
  *
  * Hierarchy: a binary tree over the triangles, built by binned surface
- * area heuristic (16 bins along the widest axis of the centroids, the plane
- * that minimises area(left) count(left) + area(right) count(right)) down to
- * 4 triangles a leaf; where no plane separates the centroids, or past depth
- * 48, the median splits instead, so the depth stays below 48 + log2(n).
+ * area heuristic (16 bins along the widest axis of the centres of the
+ * triangles' boxes, the plane that minimises area(left) count(left) +
+ * area(right) count(right)) down to 4 triangles a leaf; where no plane
+ * separates the centres, or past depth 48, the median splits instead, so
+ * the depth stays below 48 + log2(n).
  * Each node holds both children's boxes (one cache line), as floats
  * relative to the centre of the mesh. A box test that rounds the wrong way
  * must not drop a triangle the ray touches, so every box is rounded outward
@@ -111,24 +112,32 @@ static inline double max2(double a, double b)
 
 /* ---- building ---- */
 
-/* A triangle's box and centroid, computed once. */
+/* A triangle's box, relative to the mesh's origin, padded and rounded
+ * outward to float, as its nodes will hold it; the items are sorted in
+ * place into leaf order. Rounding is monotone, so the union of the items'
+ * boxes is the box of the union, rounded and padded once: every node box
+ * is exact in float arithmetic from here on. */
 typedef struct item {
-    double lo[3], hi[3], c[3];
+    float lo[3], hi[3];
+    uint32_t tri; /* the triangle's index in the caller's array */
 } item;
 
+/* A box and the box of its items' centres. */
+typedef struct bounds2 {
+    float lo[3], hi[3];
+    float clo[3], chi[3];
+} bounds2;
+
 typedef struct builder_state {
-    const item *items; /* per triangle id */
-    uint32_t *order;   /* triangle ids, permuted into leaf order */
+    item *items;
     prim_mesh_node *nodes;
     uint32_t node_count;
-    vec3 origin;
-    double pad;
 } builder_state;
 
 /* A built subtree as its parent sees it. */
 typedef struct child_ref {
     uint32_t index, count; /* count > 0: a leaf of triangles index .. */
-    double lo[3], hi[3];
+    float lo[3], hi[3];
 } child_ref;
 
 static float round_down(double x)
@@ -147,15 +156,71 @@ static float round_up(double x)
     return f;
 }
 
-static void set_child(const builder_state *s, prim_mesh_node *n, int k,
-                      const child_ref *r)
+static inline float minf2(float a, float b)
+{
+    return a < b ? a : b;
+}
+
+static inline float maxf2(float a, float b)
+{
+    return a > b ? a : b;
+}
+
+static float centre(const item *it, int axis)
+{
+    return 0.5f * (it->lo[axis] + it->hi[axis]);
+}
+
+static void bounds_empty(bounds2 *b)
+{
+    for (int a = 0; a < 3; a++) {
+        b->lo[a] = b->clo[a] = INFINITY;
+        b->hi[a] = b->chi[a] = -INFINITY;
+    }
+}
+
+static void bounds_add_item(bounds2 *b, const item *it)
+{
+    for (int a = 0; a < 3; a++) {
+        b->lo[a] = minf2(b->lo[a], it->lo[a]);
+        b->hi[a] = maxf2(b->hi[a], it->hi[a]);
+        float c = centre(it, a);
+        b->clo[a] = minf2(b->clo[a], c);
+        b->chi[a] = maxf2(b->chi[a], c);
+    }
+}
+
+static void bounds_add(bounds2 *b, const bounds2 *o)
+{
+    for (int a = 0; a < 3; a++) {
+        b->lo[a] = minf2(b->lo[a], o->lo[a]);
+        b->hi[a] = maxf2(b->hi[a], o->hi[a]);
+        b->clo[a] = minf2(b->clo[a], o->clo[a]);
+        b->chi[a] = maxf2(b->chi[a], o->chi[a]);
+    }
+}
+
+static void bounds_of(const builder_state *s, uint32_t lo, uint32_t hi, bounds2 *b)
+{
+    bounds_empty(b);
+    for (uint32_t i = lo; i < hi; i++)
+        bounds_add_item(b, &s->items[i]);
+}
+
+static double half_area(const bounds2 *b)
+{
+    double x = (double)b->hi[0] - b->lo[0], y = (double)b->hi[1] - b->lo[1],
+           z = (double)b->hi[2] - b->lo[2];
+    return x * y + y * z + z * x;
+}
+
+static void set_child(prim_mesh_node *n, int k, const child_ref *r)
 {
     n->child[k] = r->index;
     n->count[k] = r->count;
-    const double *o = &s->origin.x;
     for (int a = 0; a < 3; a++) {
-        n->box[0][a][k] = round_down(r->lo[a] - o[a] - s->pad);
-        n->box[1][a][k] = round_up(r->hi[a] - o[a] + s->pad);
+        n->box[0][a][k] = r->lo[a];
+        n->box[1][a][k] = r->hi[a];
     }
 }
 
@@ -169,43 +234,34 @@ static void set_empty(prim_mesh_node *n, int k)
     }
 }
 
-static double half_area(const double lo[3], const double hi[3])
-{
-    double x = hi[0] - lo[0], y = hi[1] - lo[1], z = hi[2] - lo[2];
-    return x * y + y * z + z * x;
-}
-
-static void grow(double lo[3], double hi[3], const double plo[3], const double phi[3])
-{
-    for (int a = 0; a < 3; a++) {
-        lo[a] = min2(lo[a], plo[a]);
-        hi[a] = max2(hi[a], phi[a]);
-    }
-}
-
-static int bin_of(double c, double lo, double scale)
+static int bin_of(float c, float lo, float scale)
 {
     int b = (int)((c - lo) * scale);
     return b < 0 ? 0 : b >= BINS ? BINS - 1 : b;
 }
 
-/* Moves the k-th smallest centroid (along axis) of order[lo .. hi) to
+static void swap_items(item *a, item *b)
+{
+    item t = *a;
+    *a = *b;
+    *b = t;
+}
+
+/* Moves the k-th smallest centre (along axis) of items[lo .. hi) to
  * position k, smaller ones before it (Hoare's selection, iterative). */
 static void select_kth(builder_state *s, uint32_t lo, uint32_t hi, uint32_t k, int axis)
 {
-    uint32_t *order = s->order;
+    item *items = s->items;
     while (hi - lo > 1) {
-        double pivot = s->items[order[lo + (hi - lo) / 2]].c[axis];
+        float pivot = centre(&items[lo + (hi - lo) / 2], axis);
         uint32_t i = lo, j = hi - 1;
         while (i <= j) {
-            while (s->items[order[i]].c[axis] < pivot)
+            while (centre(&items[i], axis) < pivot)
                 i++;
-            while (s->items[order[j]].c[axis] > pivot)
+            while (centre(&items[j], axis) > pivot)
                 j--;
             if (i <= j) {
-                uint32_t t = order[i];
-                order[i] = order[j];
-                order[j] = t;
+                swap_items(&items[i], &items[j]);
                 i++;
                 if (j == 0)
                     break;
@@ -221,50 +277,45 @@ static void select_kth(builder_state *s, uint32_t lo, uint32_t hi, uint32_t k, i
     }
 }
 
-/* The split position of order[lo .. hi) (more than LEAF_SIZE triangles)
- * by binned SAH along axis, after which the items are partitioned; 0 when
- * no plane separates them. */
-static uint32_t sah_split(builder_state *s, uint32_t lo, uint32_t hi, int axis,
-                          double clo, double width)
+/* The split position of items[lo .. hi) (more than LEAF_SIZE triangles,
+ * centres spread over [clo, clo + width) along axis) by binned SAH, after
+ * which the items are partitioned and left and right hold the two sides'
+ * bounds; 0 when no plane separates them. */
+static uint32_t sah_split(builder_state *s, uint32_t lo, uint32_t hi, int axis, float clo,
+                          float width, bounds2 *left, bounds2 *right)
 {
     uint32_t count[BINS] = {0};
-    double blo[BINS][3], bhi[BINS][3];
+    bounds2 bin[BINS];
     for (int b = 0; b < BINS; b++)
-        for (int a = 0; a < 3; a++) {
-            blo[b][a] = INFINITY;
-            bhi[b][a] = -INFINITY;
-        }
-    double scale = BINS / width;
+        bounds_empty(&bin[b]);
+    float scale = BINS / width;
     for (uint32_t i = lo; i < hi; i++) {
-        const item *it = &s->items[s->order[i]];
-        int b = bin_of(it->c[axis], clo, scale);
+        const item *it = &s->items[i];
+        int b = bin_of(centre(it, axis), clo, scale);
         count[b]++;
-        grow(blo[b], bhi[b], it->lo, it->hi);
+        bounds_add_item(&bin[b], it);
     }
     double right_area[BINS];
     uint32_t right_count[BINS];
-    double alo[3] = {INFINITY, INFINITY, INFINITY},
-           ahi[3] = {-INFINITY, -INFINITY, -INFINITY};
+    bounds2 acc;
+    bounds_empty(&acc);
     uint32_t n = 0;
     for (int b = BINS - 1; b > 0; b--) {
-        grow(alo, ahi, blo[b], bhi[b]);
+        bounds_add(&acc, &bin[b]);
         n += count[b];
-        right_area[b] = n ? half_area(alo, ahi) : 0;
+        right_area[b] = n ? half_area(&acc) : 0;
         right_count[b] = n;
     }
     double best = INFINITY;
     int best_bin = 0;
-    for (int a = 0; a < 3; a++) {
-        alo[a] = INFINITY;
-        ahi[a] = -INFINITY;
-    }
+    bounds_empty(&acc);
     n = 0;
     for (int b = 1; b < BINS; b++) {
-        grow(alo, ahi, blo[b - 1], bhi[b - 1]);
+        bounds_add(&acc, &bin[b - 1]);
         n += count[b - 1];
         if (n == 0 || right_count[b] == 0)
             continue;
-        double cost = half_area(alo, ahi) * n + right_area[b] * right_count[b];
+        double cost = half_area(&acc) * n + right_area[b] * right_count[b];
         if (cost < best) {
             best = cost;
             best_bin = b;
@@ -272,57 +323,57 @@ static uint32_t sah_split(builder_state *s, uint32_t lo, uint32_t hi, int axis,
     }
     if (best_bin == 0)
         return 0;
+    bounds_empty(left);
+    bounds_empty(right);
+    for (int b = 0; b < BINS; b++)
+        bounds_add(b < best_bin ? left : right, &bin[b]);
     uint32_t i = lo, j = hi;
     while (i < j) {
-        if (bin_of(s->items[s->order[i]].c[axis], clo, scale) < best_bin) {
+        if (bin_of(centre(&s->items[i], axis), clo, scale) < best_bin) {
             i++;
         } else {
             j--;
-            uint32_t t = s->order[i];
-            s->order[i] = s->order[j];
-            s->order[j] = t;
+            swap_items(&s->items[i], &s->items[j]);
         }
     }
     return i > lo && i < hi ? i : 0;
 }
 
-/* Builds the subtree over order[lo .. hi) and returns it; inner nodes are
- * appended to s->nodes (at most one per split, so fewer than the
- * triangles). */
-static child_ref build_subtree(builder_state *s, uint32_t lo, uint32_t hi, int depth)
+/* Builds the subtree over items[lo .. hi), whose bounds are b, and returns
+ * it; inner nodes are appended to s->nodes (at most one per split, so
+ * fewer than the triangles). */
+static child_ref build_subtree(builder_state *s, uint32_t lo, uint32_t hi, int depth,
+                               const bounds2 *b)
 {
     child_ref r;
-    double clo[3] = {INFINITY, INFINITY, INFINITY},
-           chi[3] = {-INFINITY, -INFINITY, -INFINITY};
     for (int a = 0; a < 3; a++) {
-        r.lo[a] = INFINITY;
-        r.hi[a] = -INFINITY;
-    }
-    for (uint32_t i = lo; i < hi; i++) {
-        const item *it = &s->items[s->order[i]];
-        grow(r.lo, r.hi, it->lo, it->hi);
-        grow(clo, chi, it->c, it->c);
+        r.lo[a] = b->lo[a];
+        r.hi[a] = b->hi[a];
     }
     if (hi - lo <= LEAF_SIZE) {
         r.index = lo;
         r.count = hi - lo;
         return r;
     }
-    double ex = chi[0] - clo[0], ey = chi[1] - clo[1], ez = chi[2] - clo[2];
+    float ex = b->chi[0] - b->clo[0], ey = b->chi[1] - b->clo[1],
+          ez = b->chi[2] - b->clo[2];
     int axis = ex >= ey && ex >= ez ? 0 : ey >= ez ? 1 : 2;
-    double width = axis == 0 ? ex : axis == 1 ? ey : ez;
+    float width = axis == 0 ? ex : axis == 1 ? ey : ez;
     uint32_t mid = 0;
+    bounds2 left, right;
     if (depth < SAH_DEPTH && width > 0)
-        mid = sah_split(s, lo, hi, axis, clo[axis], width);
+        mid = sah_split(s, lo, hi, axis, b->clo[axis], width, &left, &right);
     if (mid == 0) {
         mid = lo + (hi - lo) / 2;
         select_kth(s, lo, hi, mid, axis);
+        bounds_of(s, lo, mid, &left);
+        bounds_of(s, mid, hi, &right);
     }
     uint32_t index = s->node_count++;
-    child_ref left = build_subtree(s, lo, mid, depth + 1);
-    child_ref right = build_subtree(s, mid, hi, depth + 1);
-    set_child(s, &s->nodes[index], 0, &left);
-    set_child(s, &s->nodes[index], 1, &right);
+    child_ref l = build_subtree(s, lo, mid, depth + 1, &left);
+    child_ref g = build_subtree(s, mid, hi, depth + 1, &right);
+    set_child(&s->nodes[index], 0, &l);
+    set_child(&s->nodes[index], 1, &g);
     r.index = index;
     r.count = 0;
     return r;
@@ -334,6 +385,15 @@ const prim_mesh *prim_mesh_create(struct csg_builder *b, const vec3 *points,
     return prim_mesh_create_rule(b, points, tris, tri_count, 0);
 }
 
+/* Whether triangle i of tris has area: one without is crossed by no ray. */
+static int has_area(const vec3 *points, const uint32_t *tris, uint32_t i)
+{
+    vec3 a = points[tris[3 * i]], bb = points[tris[3 * i + 1]],
+         c = points[tris[3 * i + 2]];
+    vec3 n = v3_cross(v3_sub(bb, a), v3_sub(c, a));
+    return v3_dot(n, n) > 0;
+}
+
 const prim_mesh *prim_mesh_create_rule(struct csg_builder *b, const vec3 *points,
                                        const uint32_t *tris, uint32_t tri_count,
                                        int parity)
@@ -341,45 +401,49 @@ const prim_mesh *prim_mesh_create_rule(struct csg_builder *b, const vec3 *points
     builder_state s;
     memset(&s, 0, sizeof s);
     const prim_mesh *result = NULL;
-    size_t slots = tri_count ? tri_count : 1;
-    item *items = malloc(slots * sizeof *items);
-    s.items = items;
-    s.order = malloc(slots * sizeof *s.order);
-    if (!items || !s.order)
-        goto done;
     bbox bounds = bbox_empty();
     uint32_t kept = 0;
     for (uint32_t i = 0; i < tri_count; i++) {
-        vec3 a = points[tris[3 * i]], bb = points[tris[3 * i + 1]],
-             c = points[tris[3 * i + 2]];
-        vec3 n = v3_cross(v3_sub(bb, a), v3_sub(c, a));
-        if (!(v3_dot(n, n) > 0))
-            continue; /* no area: no ray crosses it */
-        s.order[kept++] = i;
-        vec3 cen = v3_scale(v3_add(v3_add(a, bb), c), 1.0 / 3);
-        for (int k = 0; k < 3; k++) {
-            items[i].lo[k] = min2(min2(v3_get(a, k), v3_get(bb, k)), v3_get(c, k));
-            items[i].hi[k] = max2(max2(v3_get(a, k), v3_get(bb, k)), v3_get(c, k));
-            items[i].c[k] = v3_get(cen, k);
-        }
-        bounds = bbox_add_point(bbox_add_point(bbox_add_point(bounds, a), bb), c);
+        if (!has_area(points, tris, i))
+            continue;
+        kept++;
+        for (int k = 0; k < 3; k++)
+            bounds = bbox_add_point(bounds, points[tris[3 * i + k]]);
     }
     if (kept == 0)
-        goto done;
+        return NULL;
     vec3 ext = v3_sub(bounds.hi, bounds.lo);
-    s.pad = 1e-9 * fmax(fmax(ext.x, ext.y), fmax(ext.z, v3_max_abs(bounds.lo))) + 1e-300;
-    s.pad = fmax(s.pad, 1e-9 * v3_max_abs(bounds.hi));
-    s.origin = bbox_center(&bounds);
+    double pad =
+        1e-9 * fmax(fmax(ext.x, ext.y), fmax(ext.z, v3_max_abs(bounds.lo))) + 1e-300;
+    pad = fmax(pad, 1e-9 * v3_max_abs(bounds.hi));
+    vec3 origin = bbox_center(&bounds);
+    const double *o = &origin.x;
     /* A split makes one inner node and never an empty side, so a tree over
      * kept triangles has fewer than kept inner nodes; a single leaf still
      * needs node 0. */
-    s.nodes = malloc(slots * sizeof *s.nodes);
-    if (!s.nodes)
+    s.items = malloc((size_t)kept * sizeof *s.items);
+    s.nodes = malloc((size_t)kept * sizeof *s.nodes);
+    if (!s.items || !s.nodes)
         goto done;
-    child_ref root = build_subtree(&s, 0, kept, 0);
+    bounds2 all;
+    bounds_empty(&all);
+    for (uint32_t i = 0, k = 0; i < tri_count; i++) {
+        if (!has_area(points, tris, i))
+            continue;
+        item *it = &s.items[k++];
+        it->tri = i;
+        for (int a = 0; a < 3; a++) {
+            double p = (&points[tris[3 * i]].x)[a], q = (&points[tris[3 * i + 1]].x)[a],
+                   r = (&points[tris[3 * i + 2]].x)[a];
+            it->lo[a] = round_down(min2(min2(p, q), r) - o[a] - pad);
+            it->hi[a] = round_up(max2(max2(p, q), r) - o[a] + pad);
+        }
+        bounds_add_item(&all, it);
+    }
+    child_ref root = build_subtree(&s, 0, kept, 0, &all);
     if (root.count > 0) {
         s.node_count = 1;
-        set_child(&s, &s.nodes[0], 0, &root);
+        set_child(&s.nodes[0], 0, &root);
         set_empty(&s.nodes[0], 1);
     }
     prim_mesh *m = csg_builder_alloc(b, sizeof *m);
@@ -392,7 +456,7 @@ const prim_mesh *prim_mesh_create_rule(struct csg_builder *b, const vec3 *points
         goto done;
     prim_mesh_node *nodes = (prim_mesh_node *)(raw + ((64 - (uintptr_t)raw % 64) % 64));
     for (uint32_t i = 0; i < kept; i++) {
-        const uint32_t *t = &tris[3 * s.order[i]];
+        const uint32_t *t = &tris[3 * s.items[i].tri];
         for (int k = 0; k < 3; k++)
             v[3 * i + k] = points[t[k]];
         nrm[i] = v3_cross(v3_sub(v[3 * i + 1], v[3 * i]), v3_sub(v[3 * i + 2], v[3 * i]));
@@ -405,11 +469,10 @@ const prim_mesh *prim_mesh_create_rule(struct csg_builder *b, const vec3 *points
     m->parity = parity;
     m->node_count = s.node_count;
     m->bounds = bounds;
-    m->origin = s.origin;
+    m->origin = origin;
     result = m;
 done:
-    free(items);
-    free(s.order);
+    free(s.items);
     free(s.nodes);
     return result;
 }
