@@ -183,7 +183,7 @@ fi
 # ---- import() of a file that does not open: empty, the rest rendered ----
 printf 'cube(size = [1, 1, 1], center = false);\nimport(file = "missing.stl");\n' >import.csg
 printf 'cube(size = [1, 1, 1], center = false);\n' >cube_ref.csg
-warns import.csg "import.csg:2:1: warning: Can't open import file 'missing.stl': No such file or directory; the import is empty, as OpenSCAD leaves it out (--strict makes it an error)"
+warns import.csg "import.csg:2:15: warning: Can't open import file 'missing.stl': No such file or directory; the import is empty, as OpenSCAD leaves it out (--strict makes it an error)"
 same import.csg cube_ref.csg
 cat >dxf.csg <<'M'
 linear_extrude(height = 3) {
@@ -210,7 +210,7 @@ warns proj-missing.csg "proj-missing.csg:3:17: warning: Can't open import file '
 same proj-missing.csg square_ref.csg
 # --strict: a file that cannot be opened is the error, in both modes
 # (exit 1, no image)
-for case in "import.csg:2:1: error: Can't open import file 'missing.stl'" \
+for case in "import.csg:2:15: error: Can't open import file 'missing.stl'" \
     "dxf.csg:3:2: error: Can't open DXF file 'missing.dxf'" \
     "svg.csg:3:2: error: Can't open SVG file 'missing.svg'" \
     "hull-missing.csg:2:16: error: Can't open import file 'missing.stl'" \

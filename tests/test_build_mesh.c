@@ -720,7 +720,7 @@ static void test_import(void **state)
     /* a file that cannot be opened: OpenSCAD's warning, an empty part,
      * the rest rendered */
     snprintf(expected, sizeof expected,
-             "%s:2:1: Can't open import file '%s/none.off': No such file or "
+             "%s:2:8: Can't open import file '%s/none.off': No such file or "
              "directory; the import is empty, as OpenSCAD leaves it out (--strict makes "
              "it an error)",
              model, dir);

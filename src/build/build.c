@@ -487,30 +487,6 @@ static sc_status build_curved(builder *b, const model_node *n, const frame *stat
     return add_leaf(b, n, &p, state, id);
 }
 
-/* OpenSCAD 2021.01 (import.cc) imports a file it cannot open as nothing,
- * with a warning, and renders the rest: so does the import n here.
- * *opened says whether the file opens; a file that opens and is bad is
- * build_import's error. */
-static sc_status import_opens(builder *b, const model_node *n, int *opened)
-{
-    build_ctx c = context(b, 1, NULL);
-    *opened = 1;
-    if (n->u.import->format == MODEL_MESH_UNSUPPORTED)
-        return SC_OK; /* OpenSCAD opens nothing: build_import_unsupported */
-    char *path = build_file_path(&c, n->u.import->file);
-    if (!path)
-        return err_nomem(b->error, &n->loc);
-    FILE *f = fopen(path, "rb");
-    *opened = f != NULL;
-    sc_status st = SC_OK;
-    if (f)
-        fclose(f);
-    else
-        st = build_file_not_opened(&c, &n->loc, "import", path, strerror(errno));
-    free(path);
-    return st;
-}
-
 /* The leaves of node n united: none is the empty solid, one is itself. */
 static sc_status add_leaves(builder *b, const model_node *n, const build_prims *leaves,
                             const frame *state, uint32_t *id)
@@ -544,12 +520,11 @@ static sc_status build_import_leaf(builder *b, const model_node *n, const frame 
     build_prims leaves = {NULL, 0, 0};
     size_t left_out = b->warnings.left_out;
     sc_status st = SC_OK;
-    if (n->kind == MODEL_IMPORT && state->emit) {
-        int opened = 1;
-        if ((st = import_opens(b, n, &opened)) != SC_OK || !opened)
-            return st;
+    /* an import of a file that does not open is empty, with OpenSCAD's
+     * warning at the file's name (build_file_not_opened) */
+    if (n->kind == MODEL_IMPORT && state->emit)
         st = build_import_parts(&c, n->u.import, b->strict, &leaves, &empty);
-    } else if (n->kind == MODEL_LINEAR_EXTRUDE)
+    else if (n->kind == MODEL_LINEAR_EXTRUDE)
         st = build_linear_extrude(&c, n, state->emit, &p, &empty);
     else if (n->kind == MODEL_ROTATE_EXTRUDE)
         st = build_rotate_extrude(&c, n, state->emit, &p, &empty);
