@@ -2017,8 +2017,7 @@ static sc_status import_parts(const build_ctx *c, const model_import *import, in
         why = strerror(errno);
     }
     if (!text) {
-        int opened = !strcmp(why, "out of memory") || !strcmp(why, "file is too large") ||
-                     !strcmp(why, "read error");
+        int opened = !file_not_opened(why);
         if (!opened) /* empty, with OpenSCAD's warning, as at the top level */
             *empty = "";
         sc_status st = opened ? err_set(c->error, SC_ERR_IO, &loc,

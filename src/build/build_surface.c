@@ -377,9 +377,9 @@ static sc_status surface(const build_ctx *c, const model_surface *s, prim *out,
     grid g = {NULL, 0, 0, 0};
     sc_status st = SC_OK;
     int stopped = 0;
-    if (!bytes && !strcmp(why, "out of memory"))
+    if (!bytes && why == file_no_memory)
         st = err_nomem(c->error, &loc);
-    else if (!bytes && !strcmp(why, "file is too large")) /* our limit, not the file's */
+    else if (!bytes && why == file_too_large) /* our limit, not the file's */
         st = err_set(c->error, SC_ERR_LIMIT, &loc, "surface: cannot read '%s': %s", path,
                      why);
     else if (!bytes)

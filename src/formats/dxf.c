@@ -846,7 +846,7 @@ sc_status dxf_read_file(const char *path, const sc_location *at, const dxf_optio
     char *buf = file_read(path, DXF_MAX_FILE, &len, &why);
     sc_status st;
     if (!buf)
-        st = err_set(error, strcmp(why, "out of memory") ? SC_ERR_IO : SC_ERR_NOMEM, at,
+        st = err_set(error, why == file_no_memory ? SC_ERR_NOMEM : SC_ERR_IO, at,
                      "import: cannot read '%s': %s", path, why);
     else
         st = dxf_read(buf, len, path, o, out, unsupported, error);

@@ -15,6 +15,15 @@
 #include <string.h>
 #include <unistd.h>
 
+const char file_too_large[] = "file is too large";
+const char file_no_memory[] = "out of memory";
+const char file_read_error[] = "read error";
+
+int file_not_opened(const char *why)
+{
+    return why != file_too_large && why != file_no_memory && why != file_read_error;
+}
+
 char *file_read(const char *path, size_t limit, size_t *size, const char **why)
 {
     FILE *f = fopen(path, "rb");
@@ -27,7 +36,7 @@ char *file_read(const char *path, size_t limit, size_t *size, const char **why)
     for (;;) {
         if (len == cap) {
             if (cap >= limit) {
-                *why = "file is too large";
+                *why = file_too_large;
                 free(buf);
                 fclose(f);
                 return NULL;
@@ -35,7 +44,7 @@ char *file_read(const char *path, size_t limit, size_t *size, const char **why)
             cap = cap ? 2 * cap : 65536;
             char *next = realloc(buf, cap + 1);
             if (!next) {
-                *why = "out of memory";
+                *why = file_no_memory;
                 free(buf);
                 fclose(f);
                 return NULL;
@@ -50,7 +59,7 @@ char *file_read(const char *path, size_t limit, size_t *size, const char **why)
     int failed = ferror(f);
     fclose(f);
     if (failed) {
-        *why = "read error";
+        *why = file_read_error;
         free(buf);
         return NULL;
     }

@@ -7,9 +7,17 @@
 
 /* Reads a whole file of at most about limit bytes into a malloc'd,
  * NUL-terminated buffer (the caller frees it); returns NULL and sets *why
- * (strerror's text, "file is too large", "out of memory" or "read error")
- * on failure. */
+ * on failure: strerror's text when the file does not open, else one of
+ * the three reasons below, which a caller tells apart by the pointer. */
 char *file_read(const char *path, size_t limit, size_t *size, const char **why);
+
+extern const char file_too_large[];  /* "file is too large": past limit */
+extern const char file_no_memory[];  /* "out of memory" */
+extern const char file_read_error[]; /* "read error": opened, not read */
+
+/* Whether file_read's why says that the file did not open (strerror's
+ * text), rather than that it opened and could not be read whole. */
+int file_not_opened(const char *why);
 
 /* Writes into path (size bytes) the path of the helper file called name
  * (spancast-oiio.so, spancast-bench): the first that exists of the folder
