@@ -49,17 +49,12 @@
 
 #include "base/error.h"
 #include "base/grow.h"
+#include "base/sort.h"
 #include "build/build_hull.h"
 #include "csg/prim_mesh.h"
 #include "formats/amf.h"
 #include "formats/file.h"
 #include "formats/threemf.h"
-
-static int compare_u64(const void *a, const void *b)
-{
-    uint64_t x = *(const uint64_t *)a, y = *(const uint64_t *)b;
-    return x < y ? -1 : x > y;
-}
 
 /* An edge for messages: point numbers, or for a file (whose points an STL
  * does not number) the coordinates of its ends. */
@@ -109,8 +104,11 @@ static int mesh_sound(const char *what, int numbered, const vec3 *points,
             undirected[count++] = p < q ? (uint64_t)p << 32 | q : (uint64_t)q << 32 | p;
         }
     }
-    qsort(directed, count, sizeof *directed, compare_u64);
-    qsort(undirected, count, sizeof *undirected, compare_u64);
+    if (!sort_u64(directed, count) || !sort_u64(undirected, count)) {
+        free(directed);
+        free(undirected);
+        return -1;
+    }
     int sound = 1;
     for (size_t i = 0; i < count && sound;) {
         size_t j = i;
