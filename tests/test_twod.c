@@ -310,6 +310,63 @@ static void test_offset_hull_minkowski(void **state)
                      14) < 16 * GRID);
 }
 
+/* "multmatrix(translate [x, y]) { inner }" into buf. */
+static const char *moved(char *buf, size_t size, double x, double y, const char *inner)
+{
+    snprintf(
+        buf, size,
+        "multmatrix([[1, 0, 0, %.17g], [0, 1, 0, %.17g], [0, 0, 1, 0], [0, 0, 0, 1]]) "
+        "{ %s }",
+        x, y, inner);
+    return buf;
+}
+
+/* The sum of two convex contours is one convex polygon, made by merging
+ * their edges (twod_clip.cpp) instead of uniting their quads: it must be
+ * the hull of one moved to each corner of the other, and where one side
+ * has two contours (the quads' path) the result must be the union of the
+ * sums of each. */
+static void test_minkowski_convex(void **state)
+{
+    (void)state;
+    int outers, holes;
+    char text[8192], part[512];
+    const char *heptagon = "circle(r = 1, $fn = 7);";
+    int len = snprintf(text, sizeof text, "group() { hull() { ");
+    for (int i = 0; i < 5; i++) {
+        double a = 2 * PI * i / 5;
+        len += snprintf(text + len, sizeof text - (size_t)len, "%s ",
+                        moved(part, sizeof part, 2 * cos(a), 2 * sin(a), heptagon));
+    }
+    snprintf(text + len, sizeof text - (size_t)len, "} }");
+    double hull = area_of(text, &outers, &holes);
+    double sum = area_of("group() { minkowski() { circle(r = 1, $fn = 7); circle(r = 2, "
+                         "$fn = 5); } }",
+                         &outers, &holes);
+    assert_int_equal(outers, 1);
+    assert_int_equal(holes, 0);
+    assert_true(hull > 9);
+    assert_true(fabs(sum - hull) < 64 * GRID);
+
+    /* two squares apart (two contours: the quads) against each square's
+     * convex sum, united */
+    const char *disc = "circle(r = 0.75, $fn = 9);";
+    char left[512], right[512];
+    moved(left, sizeof left, 0, 0, "square(2);");
+    moved(right, sizeof right, 5, 1, "square([1, 3]);");
+    snprintf(text, sizeof text, "group() { minkowski() { union() { %s %s } %s } }", left,
+             right, disc);
+    double both = area_of(text, &outers, &holes);
+    assert_int_equal(outers, 2);
+    snprintf(text, sizeof text,
+             "group() { union() { minkowski() { %s %s } minkowski() { %s %s } } }", left,
+             disc, right, disc);
+    double each = area_of(text, &outers, &holes);
+    assert_int_equal(outers, 2);
+    assert_true(both > 10);
+    assert_true(fabs(both - each) < 64 * GRID);
+}
+
 static void test_errors(void **state)
 {
     (void)state;
@@ -603,6 +660,7 @@ int main(void)
         cmocka_unit_test(test_polygons),
         cmocka_unit_test(test_text),
         cmocka_unit_test(test_offset_hull_minkowski),
+        cmocka_unit_test(test_minkowski_convex),
         cmocka_unit_test(test_errors),
         cmocka_unit_test(test_extrude_volumes),
         cmocka_unit_test(test_extrude_slices),

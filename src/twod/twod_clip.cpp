@@ -19,7 +19,12 @@
  *   - minkowski: the sum of each pair of contours as quads (one per pair of
  *     edges, each turned counter-clockwise), plus each child's contours
  *     moved to the first point of each counter-clockwise contour of the
- *     other, united with non-zero fill; more than two children fold left;
+ *     other, united with non-zero fill; more than two children fold left.
+ *     Where both sides are one convex contour, the union of those quads is
+ *     the convex polygon whose edges are both contours' edges merged by
+ *     direction, in exact integer arithmetic: that polygon goes into the
+ *     union instead of the n m quads (two circles of 4000 fragments: 16
+ *     million quads, whose union took minutes);
  *   - out of the clipper, the result tree's contours in its own order, each
  *     cleaned (CleanPolygon: points within 1.415 grid units of their
  *     neighbours' line are dropped), those of fewer than 3 points left out,
@@ -150,6 +155,101 @@ void minkowski_quads(const Path &poly, const Path &path, Paths &quads)
     }
 }
 
+/* Convex sums. Edge directions are compared by angle from +x in [0, 2 pi),
+ * exactly: coordinates stay below 2^62, so cross products of differences
+ * fit in 128 bits. */
+typedef __int128 wide;
+
+wide cross(const IntPoint &u, const IntPoint &v)
+{
+    return (wide)u.X * v.Y - (wide)u.Y * v.X;
+}
+
+int half_of(const IntPoint &v)
+{
+    return v.Y < 0 || (v.Y == 0 && v.X < 0);
+}
+
+/* Whether direction u comes strictly before v. */
+bool angle_less(const IntPoint &u, const IntPoint &v)
+{
+    int hu = half_of(u), hv = half_of(v);
+    return hu != hv ? hu < hv : cross(u, v) > 0;
+}
+
+/* path as a counter-clockwise convex polygon's edge vectors, starting at
+ * the edge of least angle, with that edge's start in *start: true, or
+ * false where it is not convex (a reflex corner, a spike, more than one
+ * turn, or no area). Repeated points are skipped. */
+bool convex_edges(const Path &path, std::vector<IntPoint> &edges, IntPoint *start)
+{
+    Path p;
+    p.reserve(path.size());
+    for (const IntPoint &q : path)
+        if (p.empty() || !(q == p.back()))
+            p.push_back(q);
+    while (p.size() > 1 && p.front() == p.back())
+        p.pop_back();
+    size_t n = p.size();
+    if (n < 3)
+        return false;
+    if (!ClipperLib::Orientation(p))
+        std::reverse(p.begin(), p.end());
+    edges.resize(n);
+    for (size_t i = 0; i < n; i++) {
+        const IntPoint &a = p[i], &b = p[(i + 1) % n];
+        edges[i] = IntPoint(b.X - a.X, b.Y - a.Y);
+    }
+    size_t first = 0, descents = 0;
+    bool turned = false;
+    for (size_t i = 0; i < n; i++) {
+        const IntPoint &u = edges[i], &v = edges[(i + 1) % n];
+        wide c = cross(u, v);
+        if (c < 0 || (c == 0 && (wide)u.X * v.X + (wide)u.Y * v.Y <= 0))
+            return false; /* reflex, or a spike back along itself */
+        turned = turned || c > 0;
+        if (angle_less(v, u)) {
+            descents++;
+            first = (i + 1) % n;
+        }
+    }
+    if (descents != 1 || !turned)
+        return false; /* wound more than once, or flat */
+    std::rotate(edges.begin(), edges.begin() + (std::ptrdiff_t)first, edges.end());
+    *start = p[first];
+    return true;
+}
+
+/* The sum of two convex contours a and b, where both are (convex_edges):
+ * true and the polygon in sum, else false. */
+bool convex_sum(const Path &a, const Path &b, Path &sum)
+{
+    std::vector<IntPoint> ea, eb;
+    IntPoint sa, sb;
+    if (!convex_edges(a, ea, &sa) || !convex_edges(b, eb, &sb))
+        return false;
+    sum.clear();
+    sum.reserve(ea.size() + eb.size());
+    IntPoint p(sa.X + sb.X, sa.Y + sb.Y);
+    size_t i = 0, j = 0;
+    while (i < ea.size() || j < eb.size()) {
+        sum.push_back(p);
+        bool take_a = j == eb.size() || (i < ea.size() && !angle_less(eb[j], ea[i]));
+        bool take_b = i == ea.size() || (j < eb.size() && !angle_less(ea[i], eb[j]));
+        if (take_a) {
+            p.X += ea[i].X;
+            p.Y += ea[i].Y;
+            i++;
+        }
+        if (take_b) {
+            p.X += eb[j].X;
+            p.Y += eb[j].Y;
+            j++;
+        }
+    }
+    return true;
+}
+
 /* a moved to the first point of each counter-clockwise contour of b. */
 void minkowski_insides(const Paths &a, const Paths &b, Paths &target)
 {
@@ -278,13 +378,17 @@ extern "C" int twod_clip_minkowski(twod_region *const *children, uint32_t count,
         for (uint32_t i = 1; i < count; i++) {
             if (!children[i])
                 continue;
-            Paths terms;
+            Paths terms(1);
             Paths rhs = to_paths(*children[i]);
-            for (const Path &rhs_path : rhs)
-                for (const Path &lhs_path : lhs)
-                    minkowski_quads(lhs_path, rhs_path, terms);
-            minkowski_insides(lhs, rhs, terms);
-            minkowski_insides(rhs, lhs, terms);
+            if (lhs.size() != 1 || rhs.size() != 1 ||
+                !convex_sum(lhs[0], rhs[0], terms[0])) {
+                terms.clear();
+                for (const Path &rhs_path : rhs)
+                    for (const Path &lhs_path : lhs)
+                        minkowski_quads(lhs_path, rhs_path, terms);
+                minkowski_insides(lhs, rhs, terms);
+                minkowski_insides(rhs, lhs, terms);
+            }
             clipper.Clear();
             clipper.AddPaths(terms, ClipperLib::ptSubject, true);
             if (i + 1 != count)
