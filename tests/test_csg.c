@@ -42,11 +42,6 @@
 #include <string.h>
 #include <time.h>
 
-#include <sys/resource.h>
-#if defined(__linux__)
-#include <sys/prctl.h>
-#endif
-
 #include <cmocka.h>
 
 #include "csg/csg.h"
@@ -56,6 +51,7 @@
 #include "csg/prim_revolve.h"
 #include "implicit/expr.h"
 #include "implicit/solve.h"
+#include "test_faults.h"
 
 static const double PI = 3.14159265358979323846;
 
@@ -2484,13 +2480,6 @@ static void test_eps_near_and_far(void **state)
     }
 }
 
-/* Faults of first touch (minor page faults) of the process so far. */
-static long minor_faults(void)
-{
-    struct rusage u;
-    return getrusage(RUSAGE_SELF, &u) == 0 ? u.ru_minflt : 0;
-}
-
 /* Builds a union of count boxes in a row after csg_builder_give(spare,
  * spare_size) (none when spare is NULL), checks every leaf of the tree,
  * and returns the page faults that reserving and filling the leaves took. */
@@ -2503,13 +2492,13 @@ static long build_row(void *spare, size_t spare_size, uint32_t count)
     memset(ids, 0, count * sizeof *ids);
     if (spare)
         csg_builder_give(b, spare, spare_size);
-    long before = minor_faults();
+    long before = test_minor_faults();
     assert_int_equal(csg_builder_reserve(b, count), 1);
     for (uint32_t i = 0; i < count; i++) {
         affine at = translation(v3(2.0 * i, 0, 0));
         ids[i] = add_box(b, v3(0, 0, 0), v3(1, 1, 1), &at);
     }
-    long faults = minor_faults() - before;
+    long faults = test_minor_faults() - before;
     csg_tree *t = finish(b, csg_builder_op(b, CSG_UNION, ids, count));
     free(ids);
     assert_int_equal(t->leaf_count, count);
@@ -2542,11 +2531,7 @@ static void test_builder_takes_buffer(void **state)
     size_t sizes[3] = {(size_t)count * sizeof(csg_leaf) / 2,
                        (size_t)count * sizeof(csg_leaf) * 2, 1000};
     long given[3];
-#if defined(__linux__)
-    int counted = prctl(PR_SET_THP_DISABLE, 1, 0, 0, 0) == 0;
-#else
-    int counted = 0;
-#endif
+    int counted = test_huge_pages_off();
     for (int k = 0; k < 3; k++) {
         unsigned char *spare = malloc(sizes[k]);
         assert_non_null(spare);
@@ -2554,10 +2539,7 @@ static void test_builder_takes_buffer(void **state)
         given[k] = build_row(spare, sizes[k], count);
     }
     long fresh = build_row(NULL, 0, count);
-#if defined(__linux__)
-    if (counted)
-        assert_int_equal(prctl(PR_SET_THP_DISABLE, 0, 0, 0, 0), 0);
-#endif
+    test_huge_pages_on(counted);
 #if defined(__GLIBC__) && !defined(__SANITIZE_ADDRESS__)
     assert_true(counted);
     assert_true(given[2] > fresh / 2);     /* too small to serve: fresh leaves */

@@ -20,13 +20,10 @@
 
 #include "base/grow.h"
 #include "base/mem.h"
+#include "test_faults.h"
 #include "test_util.h"
 
-#include <sys/resource.h>
 #include <unistd.h>
-#if defined(__linux__)
-#include <sys/prctl.h>
-#endif
 
 /* Items appended one at a time, past MEM_HUGE_MIN bytes (3 Mi items of 8
  * bytes is 24 MiB), all kept through every move. */
@@ -127,13 +124,6 @@ static void test_large_array_advised(void **state)
     mem_advise_huge(NULL, MEM_HUGE_MIN);
 }
 
-/* Faults of first touch (minor page faults) of the process so far. */
-static long minor_faults(void)
-{
-    struct rusage u;
-    return getrusage(RUSAGE_SELF, &u) == 0 ? u.ru_minflt : 0;
-}
-
 /* A large buffer advised for huge pages and written keeps its pages when
  * realloc grows it: the C library moves a block this large by remapping
  * its mapping, which works only while the advice has not split the
@@ -145,28 +135,21 @@ static void test_advised_buffer_remaps(void **state)
 {
     (void)state;
     size_t n = (size_t)48 << 20, page = (size_t)sysconf(_SC_PAGESIZE);
-#if defined(__linux__)
-    int counted = prctl(PR_SET_THP_DISABLE, 1, 0, 0, 0) == 0;
-#else
-    int counted = 0;
-#endif
+    int counted = test_huge_pages_off();
     unsigned char *v = malloc(n);
     assert_non_null(v);
     mem_advise_huge(v, n);
     memset(v, 3, n);
-    long before = minor_faults();
+    long before = test_minor_faults();
     unsigned char *w = realloc(v, 2 * n);
     assert_non_null(w);
     mem_advise_huge(w, 2 * n);
     for (size_t i = 0; i < n; i += page)
         assert_int_equal(w[i], 3);
     memset(w + n, 4, n);
-    long faults = minor_faults() - before;
+    long faults = test_minor_faults() - before;
     free(w);
-#if defined(__linux__)
-    if (counted)
-        assert_int_equal(prctl(PR_SET_THP_DISABLE, 0, 0, 0, 0), 0);
-#endif
+    test_huge_pages_on(counted);
 #if defined(__GLIBC__) && !defined(__SANITIZE_ADDRESS__)
     assert_true(counted);
     long pages = (long)(2 * n / page);
