@@ -861,7 +861,8 @@ static sc_status load_budget(const char *text, size_t limit, int faithful, char 
 /* A load's meshes share one budget of triangles (sc_load_options
  * .max_triangles): a twisted extrusion of a square in s slices is 8 s side
  * triangles and two caps of 2; a mesh past what is left fails at its own
- * node, before it is checked or indexed. */
+ * node, before it is checked or indexed, and an extrusion whose 4 s side
+ * faces alone pass it fails before it makes them. */
 static void test_triangle_budget(void **state)
 {
     (void)state;
@@ -884,6 +885,12 @@ static void test_triangle_budget(void **state)
                  "past the limit of %zu in one model)",
                  need, need - 1);
         assert_string_equal(message, expected);
+        /* below its 40 side faces, before any face is made */
+        assert_int_equal(load_budget(twisted, 39, faithful, message, sizeof message),
+                         SC_ERR_LIMIT);
+        assert_string_equal(message, "m.csg:1:1: error: linear_extrude: too many mesh "
+                                     "triangles (at least 40 more, past the limit of 39 "
+                                     "in one model)");
     }
     /* two non-convex polyhedra: the second passes the budget, at its node */
     char two[4096];

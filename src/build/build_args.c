@@ -41,18 +41,32 @@ sc_status build_note(const build_ctx *c, const sc_location *loc, const char *for
     return st;
 }
 
-sc_status build_charge_triangles(const build_ctx *c, const sc_location *loc,
-                                 const char *what, size_t count)
+static sc_status charge(const build_ctx *c, const sc_location *loc, const char *what,
+                        size_t count, int bound)
 {
     if (!c->triangles_left)
         return SC_OK;
     if (count > *c->triangles_left)
-        return err_set(c->error, SC_ERR_LIMIT, loc,
-                       "%s: too many mesh triangles (%zu more, past the limit of %zu in "
-                       "one model)",
-                       what, count, c->max_triangles);
-    *c->triangles_left -= count;
+        return err_set(
+            c->error, SC_ERR_LIMIT, loc,
+            "%s: too many mesh triangles (%s%zu more, past the limit of %zu in "
+            "one model)",
+            what, bound ? "at least " : "", count, c->max_triangles);
+    if (!bound)
+        *c->triangles_left -= count;
     return SC_OK;
+}
+
+sc_status build_charge_triangles(const build_ctx *c, const sc_location *loc,
+                                 const char *what, size_t count)
+{
+    return charge(c, loc, what, count, 0);
+}
+
+sc_status build_check_triangles(const build_ctx *c, const sc_location *loc,
+                                const char *what, size_t count)
+{
+    return charge(c, loc, what, count, 1);
 }
 
 sc_status build_note_left_out(const build_ctx *c, const sc_location *loc,

@@ -53,6 +53,13 @@ typedef struct build_ctx {
 sc_status build_charge_triangles(const build_ctx *c, const sc_location *loc,
                                  const char *what, size_t count);
 
+/* The same check for at least count triangles, before they are made,
+ * without charging them: "what: too many mesh triangles (at least N more,
+ * ...)". For a builder that knows a lower bound of its mesh before it
+ * makes the faces (linear_extrude's side faces). */
+sc_status build_check_triangles(const build_ctx *c, const sc_location *loc,
+                                const char *what, size_t count);
+
 /* Adds the warning format/args at loc to notes (nothing when it comes out
  * empty); fails only when memory runs out (an error in *error). */
 sc_status build_notes_add(build_notes *notes, sc_error *error, const sc_location *loc,

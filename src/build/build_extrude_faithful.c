@@ -489,7 +489,10 @@ static sc_status linear_extrude(const build_ctx *c, const model_node *n, int emi
                              "linear_extrude: %g slices of %u points are too many (limit "
                              "is %u side faces)",
                              slices, r.point_count, BUILD_EXTRUDE_MAX_QUADS);
-            else
+            else if (!faces) /* a mesh: each side face is a triangle or two */
+                st = build_check_triangles(c, &n->loc, "linear_extrude",
+                                           (size_t)slices * r.point_count);
+            if (st == SC_OK)
                 st = extrude(c, &n->loc, &p, &r, (uint32_t)slices, out, empty, faces);
         }
     }
