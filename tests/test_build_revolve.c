@@ -343,11 +343,13 @@ static void test_errors(void **state)
     check_error("rotate_extrude(angle = \"x\") { square(size = 1); }", SC_ERR_SEMANTIC,
                 "m.csg:1:24: error: wrong type for argument 'angle' of 'rotate_extrude' "
                 "(expected a number)");
-    check_error(
-        "rotate_extrude() { polygon(points = [[0, 0], [1, 0], [1, 1]], paths = "
-        "[[0, 1, \"x\"]]); }",
-        SC_ERR_SEMANTIC,
-        "m.csg:1:79: error: polygon path 0: point index is not one of the 3 points");
+    /* a path index that is not a number is 0, as OpenSCAD reads it: the
+     * square [1, 2] x [0, 1] revolved */
+    sc_scene *ring = load("rotate_extrude($fn = 64) { polygon(points = [[1, 0], [2, 0], "
+                          "[2, 1], [1, 1]], paths = [[\"x\", 1, 2, 3]]); }");
+    assert_true(inside(ring, 1.5, 0, 0.5));
+    assert_false(inside(ring, 0.5, 0, 0.5));
+    sc_scene_release(ring);
     /* the file form reads the drawing's arguments as import() does */
     check_error("rotate_extrude(file = \"a.dxf\", origin = 3);", SC_ERR_SEMANTIC,
                 "m.csg:1:41: error: wrong type for argument 'origin' of 'rotate_extrude' "

@@ -752,12 +752,14 @@ static void test_build_errors(void **state)
                 SC_ERR_SEMANTIC,
                 "m.csg:2:37: error: wrong type for argument 'points' of 'polygon' "
                 "(expected a vector of [x, y] points)");
-    check_error(
-        "linear_extrude(height = 1) {\n  polygon(points = [[0, 0], [1, 0], [1, 1]], "
-        "paths = [[0, 1, \"x\"]]);\n}",
-        SC_ERR_SEMANTIC,
-        "m.csg:2:62: error: polygon path 0: point index is not one of the 3 "
-        "points");
+    /* a path index that is not a number is 0, as OpenSCAD reads it */
+    sc_scene *unit =
+        load_with("linear_extrude(height = 1) {\n  polygon(points = [[0, 0], "
+                  "[1, 0], [1, 1], [0, 1]], paths = [[0, 1, 2, true]]);\n}",
+                  0);
+    assert_true(inside(unit, 0.9, 0.1, 0.5));
+    assert_false(inside(unit, 0.1, 0.9, 0.5)); /* [0, 1, 2, 0]: the lower triangle */
+    sc_scene_release(unit);
     check_error(
         "linear_extrude(height = 1) {\n  polygon(points = [[0, 0], [1, 0], [1, 1]], "
         "paths = [[0, 1, 2], 1.5]);\n}",

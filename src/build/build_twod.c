@@ -320,7 +320,7 @@ sc_status build_twod_polygon(const build_ctx *c, const model_node *n, const affi
     sc_status st = build_bad_indices(c, n);
     if (st != SC_OK || !p->has_points)
         return st;
-    int paths = p->has_paths && (p->path_count > 0 || p->bad_index || !empty_is_all);
+    int paths = p->has_paths && (p->path_count > 0 || !empty_is_all);
     uint32_t count = paths ? p->path_count : 1;
     for (uint32_t k = 0; k < count; k++) {
         uint32_t first = paths ? p->path_start[k] : 0;
@@ -339,10 +339,6 @@ sc_status build_twod_polygon(const build_ctx *c, const model_node *n, const affi
                 return build_twod_add_error(c, n, out);
         }
     }
-    if (p->bad_index) {
-        *c->error = *p->bad_index;
-        return p->bad_index->status;
-    }
     return SC_OK;
 }
 
@@ -353,8 +349,7 @@ static sc_status read_polygon(const eval *e, const model_node *n, twod_region *o
     const model_polygon *p = n->u.polygon;
     /* OpenSCAD: an empty paths list means all points; fewer than 3 are
      * nothing */
-    if (!p->has_points ||
-        (!(p->has_paths && (p->path_count > 0 || p->bad_index)) && p->point_count < 3))
+    if (!p->has_points || (!(p->has_paths && p->path_count > 0) && p->point_count < 3))
         return SC_OK;
     sc_status st = build_twod_polygon(e->c, n, &unmoved, 1, 1, out);
     if (st != SC_OK)

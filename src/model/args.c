@@ -267,10 +267,7 @@ sc_status model_read_faces(const model_reader *r, arena *mem, const parse_node *
         if (fv->kind != PARSE_VECTOR)
             return model_wrong_type(r, n, param, fv, faces_expected);
         for (uint32_t i = 0; i < fv->u.vector.count; i++) {
-            const parse_value *iv = &fv->u.vector.items[i];
-            if (iv->kind != PARSE_NUMBER)
-                return model_wrong_type(r, n, param, iv, faces_expected);
-            double x = trunc(iv->u.number);
+            double x = model_index_value(&fv->u.vector.items[i]);
             bad_count += !(x >= 0 && x < (double)point_count);
         }
         total += fv->u.vector.count;
@@ -288,11 +285,11 @@ sc_status model_read_faces(const model_reader *r, arena *mem, const parse_node *
         uint32_t first = k;
         for (uint32_t i = 0; i < fv->u.vector.count; i++) {
             const parse_value *iv = &fv->u.vector.items[i];
-            double x = trunc(iv->u.number);
+            double x = model_index_value(iv);
             if (x >= 0 && x < (double)point_count) {
                 indices[k++] = (uint32_t)x;
             } else {
-                bad[b].value = iv->u.number;
+                bad[b].value = iv->kind == PARSE_NUMBER ? iv->u.number : 0;
                 bad[b].face = f;
                 bad[b].place = i;
                 bad[b++].loc = model_loc(r, iv);
@@ -312,18 +309,9 @@ sc_status model_read_faces(const model_reader *r, arena *mem, const parse_node *
     return SC_OK;
 }
 
-sc_status model_polygon_index(const model_reader *c, const parse_value *v, uint32_t path,
-                              uint32_t count, uint32_t *index)
+double model_index_value(const parse_value *v)
 {
-    if (v->kind != PARSE_NUMBER) {
-        sc_location loc = model_loc(c, v);
-        return err_set(c->error, SC_ERR_SEMANTIC, &loc,
-                       "polygon path %u: point index is not one of the %u points", path,
-                       count);
-    }
-    double x = trunc(v->u.number);
-    *index = x >= 0 && x < count ? (uint32_t)x : UINT32_MAX;
-    return SC_OK;
+    return v->kind == PARSE_NUMBER ? trunc(v->u.number) : 0;
 }
 
 int model_has_suffix(const char *s, const char *suffix)

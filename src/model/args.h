@@ -91,12 +91,10 @@ sc_status model_read_faces(const model_reader *r, arena *mem, const parse_node *
 #define MODEL_POLYGON_PATHS "a vector of paths, each a vector of point indices"
 sc_status model_read_polygon(const model_reader *r, const parse_node *n,
                              const parse_value **points, const parse_value **paths);
-/* Entry of path number path of a polygon with count points: a number,
- * truncated toward zero as OpenSCAD 2021.01 converts it, into *index;
- * UINT32_MAX there when it is out of range (OpenSCAD leaves it out with a
- * warning); the error at the entry when it is not a number. */
-sc_status model_polygon_index(const model_reader *r, const parse_value *v, uint32_t path,
-                              uint32_t count, uint32_t *index);
+/* A point index v of a polygon's path or a polyhedron's face, as OpenSCAD
+ * 2021.01 converts it (Value::toDouble, then an unsigned integer): a number
+ * truncated toward zero, anything else 0. */
+double model_index_value(const parse_value *v);
 /* cube(size = s | [x, y, z], center = false)'s arguments. */
 sc_status model_cube(const model_reader *r, const parse_node *n, double size[3],
                      int *center);

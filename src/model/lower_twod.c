@@ -6,8 +6,8 @@
  *
  * The checks, their order and their messages are the ones the 2D readers
  * have always made: model/args.c's readers, then per kind
- *   polygon   each path entry one of the points (model_polygon_index), in
- *             path order; the first bad entry ends the paths (model.h)
+ *   polygon   each path entry one of the points (model_index_value), in
+ *             path order; one out of range is listed (model.h)
  *   offset    r, then $fn, $fa, $fs, then (without r) delta and chamfer;
  *             the size must be finite
  *   import    a file name, .dxf or .svg (otherwise the builder names the
@@ -51,8 +51,8 @@ static sc_status lower_circle(model_lowerer *l, const parse_node *n, model_node 
     return model_read_circle(&l->r, n, c);
 }
 
-/* The paths' indices, in path order, up to the first that is not a
- * number; those out of range left out, and listed in p->bad. */
+/* The paths' indices, in path order; those out of range left out, and
+ * listed in p->bad. */
 static sc_status read_paths(model_lowerer *l, const parse_value *paths, model_polygon *p)
 {
     uint32_t count = paths->u.vector.count;
@@ -76,17 +76,13 @@ static sc_status read_paths(model_lowerer *l, const parse_value *paths, model_po
         p->path_count = k + 1;
         for (uint32_t i = 0; i < path->u.vector.count; i++) {
             const parse_value *v = &path->u.vector.items[i];
-            sc_status st = model_polygon_index(&l->r, v, k, p->point_count, &index[at]);
-            if (st != SC_OK) {
-                start[k + 1] = at;
-                return st;
-            }
-            if (index[at] != UINT32_MAX) {
-                at++;
+            double x = model_index_value(v);
+            if (x >= 0 && x < (double)p->point_count) {
+                index[at++] = (uint32_t)x;
                 continue;
             }
             model_bad_index *b = &bad[p->bad_count++];
-            b->value = v->u.number;
+            b->value = x;
             b->face = k;
             b->place = i;
             b->loc = model_loc(&l->r, v);
@@ -123,18 +119,7 @@ static sc_status lower_polygon(model_lowerer *l, const parse_node *n, model_node
     if (!paths)
         return SC_OK;
     p->has_paths = 1;
-    sc_error *bad = arena_alloc(l->mem, sizeof *bad);
-    if (!bad) {
-        l->nomem = 1;
-        return SC_ERR_NOMEM;
-    }
-    sc_error *outer = l->r.error;
-    l->r.error = bad;
-    st = read_paths(l, paths, p);
-    l->r.error = outer;
-    if (st != SC_OK && !l->nomem)
-        p->bad_index = bad;
-    return l->nomem ? SC_ERR_NOMEM : SC_OK;
+    return read_paths(l, paths, p);
 }
 
 static sc_status number(model_lowerer *l, const parse_node *n, const char *name,

@@ -230,22 +230,19 @@ typedef struct model_square {
     int center;
 } model_square;
 
-/* polygon(points, paths): the paths' point indices checked in file order.
- * An index that is not a number ends the paths there: path_count paths,
- * the last of them cut before that entry, and bad_index the error at it,
- * which the builder reports once it has read what comes before. An index
- * is truncated toward zero, and one out of range left out of its path and
- * listed in bad, as OpenSCAD 2021.01 leaves it out with a warning, which
- * the builder gives. */
+/* polygon(points, paths): the paths' point indices in file order. An index
+ * is read as OpenSCAD 2021.01 reads it (model_index_value: truncated toward
+ * zero, 0 when it is not a number), and one out of range is left out of
+ * its path and listed in bad, as OpenSCAD leaves it out with a warning,
+ * which the builder gives. */
 typedef struct model_polygon {
     const double *xy; /* points, 2 per point, finite */
     uint32_t point_count;
     int has_points;             /* points given */
     int has_paths;              /* paths given (maybe an empty vector) */
-    uint32_t path_count;        /* paths read (all unless bad_index) */
+    uint32_t path_count;        /* paths */
     const uint32_t *path_start; /* path k: index[path_start[k] .. [k + 1]) */
     const uint32_t *index;
-    const sc_error *bad_index; /* or NULL */
     const model_bad_index *bad;
     uint32_t bad_count;
 } model_polygon;
