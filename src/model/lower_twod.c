@@ -82,7 +82,7 @@ static sc_status read_paths(model_lowerer *l, const parse_value *paths, model_po
                 continue;
             }
             model_bad_index *b = &bad[p->bad_count++];
-            b->value = x;
+            b->value = v->kind == PARSE_NUMBER ? v->u.number : 0; /* as written */
             b->face = k;
             b->place = i;
             b->loc = model_loc(&l->r, v);
