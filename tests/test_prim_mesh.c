@@ -319,6 +319,30 @@ static void test_normals_of_large_meshes(void **state)
     csg_builder_free(b);
 }
 
+/* A sphere so small that its boxes, as floats relative to its centre,
+ * are subnormal: the hierarchy's bins must still split it (a float scale
+ * of 16 over such a width is infinite, and 0 times it NaN, whose cast to
+ * int is undefined), and every ray through it meets it once. */
+static void test_subnormal_extent(void **state)
+{
+    (void)state;
+    csg_builder *b = csg_builder_new();
+    soup s = {0};
+    double r = 1e-40;
+    soup_sphere(&s, r, 8, 16);
+    prim p = make(b, &s);
+    for (int k = 0; k < 16; k++) {
+        double a = 2 * PI * k / 16;
+        vec3 d = v3(cos(a), sin(a), 0.25);
+        vec3 o = v3_scale(d, -4 * r / v3_length(d));
+        span out[4];
+        uint32_t n = prim_spans(&p, 0, o, d, out, 4);
+        assert_int_equal(n, 1);
+        assert_true(out[0].in.t < out[0].out.t);
+    }
+    csg_builder_free(b);
+}
+
 /* A triangle without area makes no mesh; a zero direction gives nothing;
  * a ray along a face's plane meets only the faces across it. */
 static void test_degenerate(void **state)
@@ -503,6 +527,7 @@ int main(void)
         cmocka_unit_test(test_caps),
         cmocka_unit_test(test_normals_of_large_meshes),
         cmocka_unit_test(test_degenerate),
+        cmocka_unit_test(test_subnormal_extent),
         cmocka_unit_test(test_range_walk),
         cmocka_unit_test(test_parity_rule),
     };

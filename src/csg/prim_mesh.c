@@ -234,9 +234,11 @@ static void set_empty(prim_mesh_node *n, int k)
     }
 }
 
-static int bin_of(float c, float lo, float scale)
+/* In double: a width of a few subnormal floats would make a float scale
+ * infinite, and 0 times it NaN. */
+static int bin_of(float c, float lo, double scale)
 {
-    int b = (int)((c - lo) * scale);
+    int b = (int)(((double)c - lo) * scale);
     return b < 0 ? 0 : b >= BINS ? BINS - 1 : b;
 }
 
@@ -288,7 +290,7 @@ static uint32_t sah_split(builder_state *s, uint32_t lo, uint32_t hi, int axis, 
     bounds2 bin[BINS];
     for (int b = 0; b < BINS; b++)
         bounds_empty(&bin[b]);
-    float scale = BINS / width;
+    double scale = BINS / (double)width;
     for (uint32_t i = lo; i < hi; i++) {
         const item *it = &s->items[i];
         int b = bin_of(centre(it, axis), clo, scale);
