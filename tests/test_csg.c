@@ -2322,10 +2322,12 @@ static void test_ray_in_face_plane(void **state)
 }
 
 /* A first-hit query on difference() { union() { box, box }; cylinder }
- * evaluates the union once to find where the solid starts, then again in
- * a window there: a convex leaf met twice in one query is tested once
- * (its spans depend on the ray alone). A ray beside the hole meets one
- * leaf, a ray through it two; the hits and spans agree with brute force. */
+ * tests each leaf once, and each node's box once: a first operand as small
+ * as this flat union is evaluated once, in full, and the window where the
+ * first crossing lies cuts its spans (asking it first for its first
+ * crossing, then again in the window, tested every box twice and merged
+ * the union twice). A ray beside the hole meets one leaf, a ray through it
+ * two; the hits and spans agree with brute force. */
 static void test_first_hit_tests_each_leaf_once(void **state)
 {
     (void)state;
@@ -2360,6 +2362,9 @@ static void test_first_hit_tests_each_leaf_once(void **state)
             fail_msg("ray %d: %llu primitive tests for %llu leaves", i,
                      (unsigned long long)counters.prim_tests,
                      (unsigned long long)cases[i].leaves);
+        if (counters.nodes > t->node_count)
+            fail_msg("ray %d: %llu node boxes tested for %u nodes", i,
+                     (unsigned long long)counters.nodes, t->node_count);
         span_list s, want = brute_spans(t, &ray, &ref, NULL);
         assert_true(csg_spans(t, &ray, &scratch, &s));
         assert_true(same_lists(s, want));

@@ -1329,15 +1329,13 @@ COLD_PATH static span_list eval_cut_free(eval_ctx *c, const csg_node *n, double 
     return keep(c, start, combine(c, SPAN_DIFFERENCE, acc, cut));
 }
 
-/* Intersection or difference n over [lo, hi]: the first operand in full,
- * the others only where it lies. */
-static span_list eval_cut(eval_ctx *c, const csg_node *n, double lo, double hi)
+/* Intersection or difference n over [lo, hi], given its first operand's
+ * spans there (from scratch mark start on, or before it): the others only
+ * where the first lies. */
+static span_list cut_operands(eval_ctx *c, const csg_node *n, span_list first,
+                              arena_mark start, double lo, double hi)
 {
-    if (cuts_first(c, n))
-        return eval_cut_free(c, n, lo, hi);
-    arena_mark start = arena_save(c->scratch);
-    cut_state s = {eval(c, c->tree->child_ids[n->first_child], lo, hi, EVAL_ALL),
-                   n->op == CSG_INTERSECTION ? SPAN_INTERSECTION : SPAN_DIFFERENCE,
+    cut_state s = {first, n->op == CSG_INTERSECTION ? SPAN_INTERSECTION : SPAN_DIFFERENCE,
                    start};
     if (c->oom || s.acc.n == 0)
         return no_spans;
@@ -1346,6 +1344,17 @@ static span_list eval_cut(eval_ctx *c, const csg_node *n, double lo, double hi)
     double first_hi = fmin(hi, s.acc.v[s.acc.n - 1].out.t);
     for_operands(c, n, 1, first_lo, first_hi, visit_cut, &s);
     return c->oom ? no_spans : s.acc;
+}
+
+/* Intersection or difference n over [lo, hi]: the first operand in full,
+ * the others only where it lies. */
+static span_list eval_cut(eval_ctx *c, const csg_node *n, double lo, double hi)
+{
+    if (cuts_first(c, n))
+        return eval_cut_free(c, n, lo, hi);
+    arena_mark start = arena_save(c->scratch);
+    span_list first = eval(c, c->tree->child_ids[n->first_child], lo, hi, EVAL_ALL);
+    return cut_operands(c, n, first, start, lo, hi);
 }
 
 /* The first crossing after lo of a span list, or INFINITY. */
@@ -1395,7 +1404,14 @@ static INLINE_PATH span_list eval_cut_first(eval_ctx *c, const csg_node *n, doub
 {
     if (!plain && cuts_first(c, n))
         return eval_cut_first_free(c, n, lo, hi);
-    span_list a = eval(c, c->tree->child_ids[n->first_child], lo, hi, EVAL_FIRST);
+    /* A first operand that is one leaf or a flat union costs about as much
+     * in full as asked for its first crossing: it is evaluated once, in
+     * full, and each window cuts its spans there, rather than evaluating
+     * it again per window. */
+    const csg_node *first = &c->tree->nodes[c->tree->child_ids[n->first_child]];
+    int whole = first->op == CSG_LEAF || first->flat;
+    span_list a = eval(c, c->tree->child_ids[n->first_child], lo, hi,
+                       whole ? EVAL_ALL : EVAL_FIRST);
     const span *f = first_after(a, lo);
     if (c->oom || !f)
         return no_spans;
@@ -1403,9 +1419,11 @@ static INLINE_PATH span_list eval_cut_first(eval_ctx *c, const csg_node *n, doub
     int outside = entry.t > lo; /* the ray starts outside the first operand */
     double start = outside ? entry.t : lo;
     double step = fmax(f->out.t - start, 16 * c->eps);
+    arena_mark mark = arena_save(c->scratch);
     for (;;) {
         double end = fmin(hi, start + step);
-        span_list r = eval_cut(c, n, start, end);
+        span_list r =
+            whole ? cut_operands(c, n, a, mark, start, end) : eval_cut(c, n, start, end);
         if (outside)
             r = from_entry(c, r, &entry);
         if (c->oom || end >= hi || first_crossing(r, lo) < end - c->eps)
