@@ -2376,6 +2376,50 @@ static void test_first_hit_tests_each_leaf_once(void **state)
     csg_tree_free(t);
 }
 
+/* difference() { cube(10); a sphere of radius 3 at [12, 12, 5] }: the
+ * sphere's box reaches into the cube, so a ray along x at y = 9.5, z = 5
+ * meets both boxes, but it leaves the cube at x = 10 and meets the sphere
+ * only from x = 12 - sqrt(2.75) on. A subtrahend beside what is left
+ * changes nothing and costs no span operation: the spans are the cube's,
+ * as brute force says, in every query. */
+static void test_subtrahend_beside_costs_no_merge(void **state)
+{
+    (void)state;
+    csg_builder *b = csg_builder_new();
+    assert_non_null(b);
+    affine id = affine_identity(), at = translation(v3(12, 12, 5));
+    prim ball = {.kind = PRIM_SPHERE};
+    ball.u.sphere.r = 3;
+    uint32_t kids[2] = {add_box(b, v3(0, 0, 0), v3(10, 10, 10), &id),
+                        csg_builder_leaf(b, &ball, &at, white, no_loc)};
+    csg_tree *t = finish(b, csg_builder_op(b, CSG_DIFFERENCE, kids, 2));
+    arena scratch, ref;
+    arena_init(&scratch, 0);
+    arena_init(&ref, 0);
+    csg_ray ray = {v3(-5, 9.5, 5), v3(1, 0, 0), 0, INFINITY};
+    span_list s, want = brute_spans(t, &ray, &ref, NULL);
+    assert_int_equal(want.n, 1);
+    assert_true(want.v[0].in.t == 5 && want.v[0].out.t == 15);
+    for (int first = 0; first < 2; first++) {
+        csg_counters counters = {0, 0, 0, 0, 0};
+        if (first) {
+            csg_hit hit;
+            assert_true(csg_first_hit_counted(t, &ray, &scratch, &counters, &hit));
+            assert_true(hit.t == 5);
+        } else {
+            assert_true(csg_spans_counted(t, &ray, &scratch, &counters, &s));
+            assert_true(same_lists(s, want));
+        }
+        assert_int_equal(counters.prim_tests, 2);
+        if (counters.span_ops != 0)
+            fail_msg("%s: %llu span operations", first ? "first hit" : "spans",
+                     (unsigned long long)counters.span_ops);
+    }
+    arena_free(&scratch);
+    arena_free(&ref);
+    csg_tree_free(t);
+}
+
 /* A ray onto the face that a box cuts into a wide union: difference() {
  * union() { 200 overlapping spheres in a row along x }; a box over the
  * first half }. Along the row the union is one long span, so a ray that
@@ -2568,6 +2612,7 @@ int main(void)
         cmocka_unit_test(test_flat_union),
         cmocka_unit_test(test_cut_face_first_hit),
         cmocka_unit_test(test_first_hit_tests_each_leaf_once),
+        cmocka_unit_test(test_subtrahend_beside_costs_no_merge),
         cmocka_unit_test(test_builder_takes_buffer),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

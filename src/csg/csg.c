@@ -1205,12 +1205,44 @@ typedef struct cut_state {
     arena_mark start; /* scratch before the first operand (see keep) */
 } cut_state;
 
+/* Whether the spans of b lie wholly before or after those of a, apart by
+ * a gap: subtracting b then gives a itself (a regularised list is its own
+ * regularisation). A tie is not apart: the sweep would take b's exit as
+ * the result's entry. */
+static int apart(span_list a, span_list b)
+{
+    return b.v[b.n - 1].out.t < a.v[0].in.t || b.v[0].in.t > a.v[a.n - 1].out.t;
+}
+
+/* Subtracts convex leaf n (a hole, a slot) from acc over [lo, hi], tested
+ * into a local span first: when it misses, or lies beside acc, acc stands
+ * as it is, without the copy that combining and keeping it would cost.
+ * Out of the recursion's frames (COLD_PATH), as eval's rarer paths. */
+static COLD_PATH span_list subtract_leaf(eval_ctx *c, const csg_node *n, span_list acc,
+                                         arena_mark start, double lo, double hi)
+{
+    c->counters->nodes++;
+    double t0 = lo - c->eps, t1 = hi + c->eps;
+    if (!bbox_ray(&n->bounds, c->o, c->inv_d, &t0, &t1))
+        return acc;
+    span one[1];
+    span_list b = {one, leaf_spans(c, n, lo, hi, EVAL_ALL, one, 1)};
+    if (b.n == 0 || apart(acc, b))
+        return acc;
+    return keep(c, start, combine(c, SPAN_DIFFERENCE, acc, b));
+}
+
 /* Intersects or subtracts operand id; narrows [lo, hi] to what is left. */
 static int visit_cut(eval_ctx *c, void *state, uint32_t id, double *lo, double *hi)
 {
     cut_state *s = state;
-    s->acc =
-        keep(c, s->start, combine(c, s->op, s->acc, eval(c, id, *lo, *hi, EVAL_ALL)));
+    const csg_node *n = &c->tree->nodes[id];
+    if (s->op == SPAN_DIFFERENCE && n->op == CSG_LEAF &&
+        memo_kind(c->tree->leaves[n->leaf].prim.kind))
+        s->acc = subtract_leaf(c, n, s->acc, s->start, *lo, *hi);
+    else
+        s->acc =
+            keep(c, s->start, combine(c, s->op, s->acc, eval(c, id, *lo, *hi, EVAL_ALL)));
     if (c->oom || s->acc.n == 0)
         return 0;
     *lo = fmax(*lo, s->acc.v[0].in.t);
@@ -1399,8 +1431,8 @@ static span_list from_entry(eval_ctx *c, span_list r, const span_end *entry)
 static span_list eval_cut_first_free(eval_ctx *c, const csg_node *n, double lo,
                                      double hi);
 
-static INLINE_PATH span_list eval_cut_first(eval_ctx *c, const csg_node *n, double lo,
-                                            double hi, int plain)
+static COLD_PATH span_list eval_cut_first(eval_ctx *c, const csg_node *n, double lo,
+                                          double hi, int plain)
 {
     if (!plain && cuts_first(c, n))
         return eval_cut_first_free(c, n, lo, hi);
