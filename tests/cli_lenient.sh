@@ -507,6 +507,67 @@ check
 [ "$(cat err.txt)" = "tetra_hull.csg:2:120: error: polyhedron face 3: point index 7 is out of range (4 points)" ] ||
     fail "tetra_hull.csg --strict: $(cat err.txt)"
 
+# ---- malformed polyhedron and polygon points, faces and paths ----
+# OpenSCAD 2021.01 reads a point only where a face reads it: the first it
+# cannot convert is its error "Unable to convert points[3] = [0, 0, "a"]
+# to a vec3 of numbers", and the polyhedron keeps the faces before it
+# (here one triangle, not closed: left out of the CGAL union with the
+# cube, so --faithful renders the cube alone, and exact mode draws the
+# triangle by the parity rule). A polygon point it cannot convert empties
+# the polygon. A face or path that is not a vector is an empty one, faces
+# that are not a vector none, paths that are not a vector none (all the
+# points): read silently. --strict makes each warning the error.
+shift3='multmatrix([[1, 0, 0, 3], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]])'
+tetra_faces='[[0, 1, 2], [0, 3, 1], [0, 2, 3], [1, 3, 2]]'
+printf 'polyhedron(points = [[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, "a"]], faces = %s, convexity = 1);\n%s {\n\tcube(size = [1, 1, 1], center = false);\n}\n' \
+    "$tetra_faces" "$shift3" >bad_point.csg
+printf '%s {\n\tcube(size = [1, 1, 1], center = false);\n}\n' "$shift3" >shifted_cube.csg
+printf 'polyhedron(points = [[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1], "x"], faces = [[0, 1, 2], 7, [0, 3, 1], [0, 2, 3], [1, 3, 2], []], convexity = 1);\n%s {\n\tcube(size = [1, 1, 1], center = false);\n}\n' \
+    "$shift3" >bad_face.csg
+printf 'polyhedron(points = [[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1]], faces = %s, convexity = 1);\n%s {\n\tcube(size = [1, 1, 1], center = false);\n}\n' \
+    "$tetra_faces" "$shift3" >bad_face_ref.csg
+square_shift='multmatrix([[1, 0, 0, 3], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]) {
+	square(size = [1, 1], center = false);
+}'
+printf 'polygon(points = [[0, 0], [1, 0], [0, 1], [1, "a"]], paths = [[0, 1, 2]], convexity = 1);\n%s\n' "$square_shift" >bad_polygon.csg
+printf '%s\n' "$square_shift" >bad_polygon_ref.csg
+printf 'polygon(points = [[0, 0], [1, 0], [0, 1], [1, 1]], paths = [[0, 1, 2], 5], convexity = 1);\n%s\n' "$square_shift" >bad_path.csg
+printf 'polygon(points = [[0, 0], [1, 0], [0, 1], [1, 1]], paths = [[0, 1, 2]], convexity = 1);\n%s\n' "$square_shift" >bad_path_ref.csg
+printf 'polygon(points = [[0, 0], [1, 0], [0, 1]], paths = 5, convexity = 1);\n%s\n' "$square_shift" >bad_paths.csg
+printf 'polygon(points = [[0, 0], [1, 0], [0, 1]], convexity = 1);\n%s\n' "$square_shift" >bad_paths_ref.csg
+unable_vec3='bad_point.csg:1:55: warning: Unable to convert points[3] = [0, 0, "a"] to a vec3 of numbers; the polyhedron keeps the faces before it, as OpenSCAD does (--strict makes it an error)'
+warns bad_point.csg "$unable_vec3
+bad_point.csg:1:1: warning: polyhedron is not closed (edge 0-1 is used by 1 face); rendered by the parity rule (--strict makes it an error)"
+warns bad_point.csg "$unable_vec3
+bad_point.csg:1:1: warning: polyhedron is not closed (edge 0-1 is used by 1 face); left out, as OpenSCAD leaves it out (\"The given mesh is not closed! Unable to convert to CGAL_Nef_Polyhedron.\")" --faithful
+same bad_point.csg shifted_cube.csg --faithful
+for mode in "" --faithful; do
+    # shellcheck disable=SC2086
+    {
+        warns bad_face.csg "" $mode
+        same bad_face.csg bad_face_ref.csg $mode
+        warns bad_polygon.csg "bad_polygon.csg:1:43: warning: Unable to convert points[3] = [1, \"a\"] to a vec2 of numbers; the polygon is empty, as OpenSCAD leaves it out (--strict makes it an error)" $mode
+        same bad_polygon.csg bad_polygon_ref.csg $mode
+        warns bad_path.csg "" $mode
+        same bad_path.csg bad_path_ref.csg $mode
+        warns bad_paths.csg "" $mode
+        same bad_paths.csg bad_paths_ref.csg $mode
+    }
+done
+for mode in "" --faithful; do
+    for pair in "bad_point.csg|bad_point.csg:1:55: error: wrong type for argument 'points' of 'polyhedron' (expected a vector of [x, y, z] points)" \
+        "bad_polygon.csg|bad_polygon.csg:1:43: error: wrong type for argument 'points' of 'polygon' (expected a vector of [x, y] points)"; do
+        model=${pair%%|*}
+        check
+        rm -f strict.png
+        # shellcheck disable=SC2086
+        "$bin" render "$model" -o strict.png -q --strict $mode 2>err.txt &&
+            fail "$model --strict $mode: exit 0"
+        [ "$(cat err.txt)" = "${pair#*|}" ] || fail "$model --strict $mode: $(cat err.txt)"
+        [ -e strict.png ] && fail "$model --strict $mode: an image was written"
+    done
+done
+
 # ---- multmatrix with nan or inf: OpenSCAD removes the object ----
 # OpenSCAD 2021.01 exports multmatrix([[0/0, ...]]) and [[1/0, ...]] with
 # nan and inf; rendering the .scad (openscad -o x.stl) it warns

@@ -910,6 +910,92 @@ static void test_triangle_budget(void **state)
     assert_string_equal(message, expected);
 }
 
+/* Malformed polyhedron points and faces (how the model reads them:
+ * test_model.c), built as OpenSCAD 2021.01 builds them: a point it cannot
+ * convert is its error "Unable to convert points[3] = [0, 0, "a"] to a
+ * vec3 of numbers", here a warning at the point, and the faces read
+ * before it are kept: here one triangle, which is not closed, so exact
+ * mode draws it by the parity rule and faithful mode leaves it out, each
+ * with its warning; with --strict the point is the error. A face that is
+ * not a vector, and faces that are not a vector, are read silently; a
+ * polyhedron left without faces by a warning is not warned of again. */
+static void test_polyhedron_malformed(void **state)
+{
+    (void)state;
+    const char *bad_point =
+        "polyhedron(points = [[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, \"a\"]], faces = "
+        "[[0, 1, 2], [0, 3, 1], [0, 2, 3], [1, 3, 2]]);";
+    const char *unable = "m.csg:1:55: Unable to convert points[3] = [0, 0, \"a\"] to a "
+                         "vec3 of numbers; the polyhedron keeps the faces before it, as "
+                         "OpenSCAD does (--strict makes it an error)";
+    const char *const exact[] = {
+        unable, "m.csg:1:1: polyhedron is not closed (edge 0-1 is used "
+                "by 1 face); rendered by the parity rule (--strict makes "
+                "it an error)"};
+    sc_scene *s = test_check_warnings("m.csg", bad_point, 0, exact, 2);
+    assert_int_equal(scene_tree(s)->leaf_count, 1);
+    sc_scene_release(s);
+    const char *const faithful[] = {
+        unable, "m.csg:1:1: polyhedron is not closed (edge 0-1 is used by 1 face); left "
+                "out, as OpenSCAD leaves it out (\"The given mesh is not closed! Unable "
+                "to convert to CGAL_Nef_Polyhedron.\")"};
+    s = test_check_warnings("m.csg", bad_point, 1, faithful, 2);
+    assert_int_equal(scene_tree(s)->leaf_count, 0);
+    sc_scene_release(s);
+    for (int mode = 0; mode <= 1; mode++) {
+        check_error_strict("m.csg", bad_point, SC_ERR_SEMANTIC,
+                           "m.csg:1:55: error: wrong type for argument 'points' of "
+                           "'polyhedron' (expected a vector of [x, y, z] points)",
+                           mode);
+        check_error_strict(
+            "m.csg",
+            "polyhedron(points = [[0, 0, 0], [1, 0, 0], [0, 1, inf], [0, 0, 1]], faces = "
+            "[[0, 1, 2], [0, 3, 1], [0, 2, 3], [1, 3, 2]]);",
+            SC_ERR_SEMANTIC, "m.csg:1:44: error: polyhedron point 2 is not finite", mode);
+        /* a bad point no face reads is never read */
+        s = test_check_warnings(
+            "m.csg",
+            "polyhedron(points = [[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1], \"x\"], "
+            "faces = [[0, 1, 2], [0, 3, 1], [0, 2, 3], [1, 3, 2], 7, []]);",
+            mode, NULL, 0);
+        assert_int_equal(scene_tree(s)->leaf_count, 1);
+        assert_true(inside(s, 0.2, 0.2, 0.2));
+        sc_scene_release(s);
+        /* [x, y] is [x, y, 0]: the apex at the origin */
+        s = test_check_warnings("m.csg",
+                                "polyhedron(points = [[0, 0, 1], [1, 0, 1], [0, 1, 1], "
+                                "[0, 0]], faces = [[0, 1, 2], [0, 3, 1], [0, 2, 3], [1, "
+                                "3, 2]]);",
+                                mode, NULL, 0);
+        assert_true(inside(s, 0.1, 0.1, 0.8));
+        assert_false(inside(s, 0.1, 0.1, 0.05));
+        sc_scene_release(s);
+        /* no face left: only the warning that emptied it */
+        const char *const only[] = {
+            "m.csg:1:22: Unable to convert points[0] = [0, 0, inf] to a vec3 of numbers; "
+            "the polyhedron keeps the faces before it, as OpenSCAD does (--strict makes "
+            "it an error)"};
+        s = test_check_warnings(
+            "m.csg", "polyhedron(points = [[0, 0, inf]], faces = [[0, 0, 0]]);", mode,
+            only, 1);
+        sc_scene_release(s);
+        const char *const bounds[] = {
+            "m.csg:1:34: Point index 0 is out of bounds (from faces[0][0])",
+            "m.csg:1:37: Point index 1 is out of bounds (from faces[0][1])",
+            "m.csg:1:40: Point index 2 is out of bounds (from faces[0][2])"};
+        s = test_check_warnings("m.csg", "polyhedron(points = 5, faces = [[0, 1, 2]]);",
+                                mode, bounds, 3);
+        assert_int_equal(scene_tree(s)->leaf_count, 0);
+        sc_scene_release(s);
+        const char *const none[] = {"m.csg:1:1: polyhedron without faces is empty"};
+        s = test_check_warnings("m.csg",
+                                "polyhedron(points = [[0, 0, 0], [1, 0, 0], [0, 1, 0]], "
+                                "faces = \"x\");",
+                                mode, none, 1);
+        sc_scene_release(s);
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -924,6 +1010,7 @@ int main(void)
         cmocka_unit_test(test_import),
         cmocka_unit_test(test_linear_extrude),
         cmocka_unit_test(test_triangle_budget),
+        cmocka_unit_test(test_polyhedron_malformed),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -125,6 +125,157 @@ static void test_polyhedron(void **state)
     release(&l);
 }
 
+/* Malformed points and faces, read as OpenSCAD 2021.01 reads them
+ * (primitives.cc): a point is read only where a face reads it, a vector
+ * of 2 numbers with z = 0; the first one it cannot convert ends the
+ * faces there (the partial face kept, then left out for its fewer than 3
+ * points) and is kept in bad_point, with its echo text, for the builder's
+ * warning; points that are not a vector are none, faces that are not a
+ * vector none, and a face that is not a vector an empty one. */
+static void test_polyhedron_malformed(void **state)
+{
+    (void)state;
+    lowered l = lower(
+        "polyhedron(points = [[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, \"a\"], 5], faces "
+        "= "
+        "[[0, 1, 2], [0, 3, 1], [0, 2, 3], [1, 3, 2]]);\n"
+        "polyhedron(points = [[0, 0, 1], [1, 0, 1], [0, 1, 1], [0.25, 0.25], \"x\"], "
+        "faces = [[0, 1, 2], 7, [0, 3, 1], [0, 2, 3], [1, 3, 2], [0, 1]]);\n"
+        "polyhedron(points = 5, faces = [[0, 1, 2]]);\n"
+        "polyhedron(points = [[0, 0, 0], [1, 0, 0], [0, 1, 0]], faces = 7);\n"
+        "polyhedron(points = [[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, inf]], faces = "
+        "[[0, 1, 2], [0, 1, 3, 2]]);\n"
+        "polyhedron(points = [[0, 0, 0], [1, 0, 0], [0, 1, 0], [0.1, 1e6, "
+        "0.333333333333, "
+        "-0, 1e-7, 123456789, true, undef, \"q\\\"x\\\\y\", [], [[1]], 1e21, 12345.678, "
+        "-2.5e-5, -inf, nan]], faces = [[3]]);\n");
+    const model_node *n = l.m->first;
+    assert_int_equal(n->kind, MODEL_POLYHEDRON);
+    assert_null(n->pending);
+    const model_bad_point *b = n->u.polyhedron.bad_point;
+    assert_non_null(b);
+    assert_int_equal(b->index, 3);
+    assert_false(b->not_finite);
+    assert_int_equal(b->loc.line, 1);
+    assert_int_equal(b->loc.column, 55);
+    assert_string_equal(b->text, "[0, 0, \"a\"]");
+    assert_int_equal(n->u.polyhedron.face_count, 1); /* [0, 1, 2]; [0] left out */
+    assert_int_equal(n->u.polyhedron.face_start[1], 3);
+    assert_int_equal(n->u.polyhedron.bad_count, 0);
+    n = n->next; /* [x, y] is [x, y, 0]; "x" is never read */
+    assert_null(n->pending);
+    assert_null(n->u.polyhedron.bad_point);
+    assert_int_equal(n->u.polyhedron.face_count, 4);
+    assert_true(n->u.polyhedron.points[3].x == 0.25 && n->u.polyhedron.points[3].z == 0);
+    assert_int_equal(n->u.polyhedron.indices[3], 0);
+    assert_int_equal(n->u.polyhedron.indices[4], 3);
+    n = n->next; /* no points: every index out of range */
+    assert_null(n->pending);
+    assert_null(n->u.polyhedron.bad_point);
+    assert_int_equal(n->u.polyhedron.point_count, 0);
+    assert_int_equal(n->u.polyhedron.face_count, 0);
+    assert_int_equal(n->u.polyhedron.bad_count, 3);
+    assert_int_equal(n->u.polyhedron.bad[2].place, 2);
+    n = n->next; /* faces = 7: no faces */
+    assert_null(n->pending);
+    assert_null(n->u.polyhedron.bad_point);
+    assert_int_equal(n->u.polyhedron.face_count, 0);
+    n = n->next; /* inf: the first face kept, the second ends at [0, 1] */
+    assert_null(n->pending);
+    b = n->u.polyhedron.bad_point;
+    assert_non_null(b);
+    assert_int_equal(b->index, 3);
+    assert_true(b->not_finite);
+    assert_string_equal(b->text, "[0, 0, inf]");
+    assert_int_equal(n->u.polyhedron.face_count, 1);
+    n = n->next; /* OpenSCAD's echo of values */
+    b = n->u.polyhedron.bad_point;
+    assert_non_null(b);
+    assert_string_equal(b->text,
+                        "[0.1, 1e+6, 0.333333, 0, 1e-7, 1.23457e+8, true, undef, "
+                        "\"q\"x\\y\", [], [[1]], 1e+21, 12345.7, -0.000025, "
+                        "-inf, nan]");
+    assert_int_equal(n->u.polyhedron.face_count, 0);
+    assert_null(n->next);
+    release(&l);
+    /* below a hull, the same reading (faces of any size kept) */
+    l = lower("hull() {\n"
+              "  polyhedron(points = [[0, 0, 0], [1, 0, 0], 5], faces = [[0, 1, 2], "
+              "[1, 0]]);\n"
+              "  polyhedron(points = \"x\", faces = [[0, 1]]);\n"
+              "  polyhedron(points = [[0, 0, 0]], faces = [7, [0]]);\n"
+              "}\n");
+    n = l.m->first->first_child;
+    assert_null(n->pending);
+    b = n->u.polyhedron.bad_point;
+    assert_non_null(b);
+    assert_int_equal(b->index, 2);
+    assert_string_equal(b->text, "5");
+    assert_int_equal(n->u.polyhedron.face_count, 1); /* [0, 1] */
+    assert_int_equal(n->u.polyhedron.face_start[1], 2);
+    n = n->next;
+    assert_null(n->pending);
+    assert_int_equal(n->u.polyhedron.bad_count, 2);
+    n = n->next;
+    assert_null(n->pending);
+    assert_null(n->u.polyhedron.bad_point);
+    assert_int_equal(n->u.polyhedron.face_count, 2); /* [] and [0] */
+    assert_int_equal(n->u.polyhedron.face_start[2], 1);
+    release(&l);
+}
+
+/* A polygon's malformed points and paths, as OpenSCAD 2021.01 reads
+ * them: a point that is not [x, y] of numbers (not inf) empties the
+ * polygon (kept in bad_point for the warning); points that are not a
+ * vector are none; paths that are not a vector are no paths (all the
+ * points), and a path that is not a vector an empty path. */
+static void test_polygon_malformed(void **state)
+{
+    (void)state;
+    lowered l =
+        lower("polygon(points = [[0, 0], [1, 0], [0, 1], [1, \"a\"]], paths = "
+              "[[0, 1, 2]]);\n"
+              "polygon(points = [[0, 0], [1, 0], [0, 1]], paths = [[0, 1, 2], 5]);\n"
+              "polygon(points = [[0, 0], [1, 0], [0, 1]], paths = 5);\n"
+              "polygon(points = \"x\", paths = [[0, 1]]);\n"
+              "polygon(points = [[0, 0], [1, 0], [0, 1], [1, 1, 1]]);\n");
+    const model_node *n = l.m->first;
+    assert_int_equal(n->kind, MODEL_POLYGON);
+    assert_null(n->pending);
+    const model_polygon *p = n->u.polygon;
+    assert_non_null(p->bad_point);
+    assert_int_equal(p->bad_point->index, 3);
+    assert_int_equal(p->bad_point->loc.column, 43);
+    assert_string_equal(p->bad_point->text, "[1, \"a\"]");
+    assert_false(p->has_points); /* empty */
+    n = n->next;
+    assert_null(n->pending);
+    p = n->u.polygon;
+    assert_null(p->bad_point);
+    assert_true(p->has_points && p->has_paths);
+    assert_int_equal(p->path_count, 2);
+    assert_int_equal(p->path_start[1], 3);
+    assert_int_equal(p->path_start[2], 3); /* the 5: an empty path */
+    n = n->next;
+    assert_null(n->pending);
+    p = n->u.polygon;
+    assert_true(p->has_points);
+    assert_false(p->has_paths);
+    assert_int_equal(p->point_count, 3);
+    n = n->next;
+    assert_null(n->pending);
+    p = n->u.polygon;
+    assert_true(p->has_points && p->has_paths);
+    assert_int_equal(p->point_count, 0);
+    assert_int_equal(p->bad_count, 2);
+    n = n->next;
+    assert_null(n->pending);
+    p = n->u.polygon;
+    assert_non_null(p->bad_point);
+    assert_string_equal(p->bad_point->text, "[1, 1, 1]");
+    release(&l);
+}
+
 static void test_operations(void **state)
 {
     (void)state;
@@ -437,8 +588,6 @@ static void test_errors(void **state)
                 "major radius r1 = 1");
     check_error("implicit(\"x $\", [[0, 0, 0], [1, 1, 1]]);", SC_ERR_SYNTAX,
                 "m.csg:1:13: error: unexpected character '$' in expression");
-    check_error("polyhedron([[0, 0, inf]], []);", SC_ERR_SEMANTIC,
-                "m.csg:1:13: error: polyhedron point 0 is not finite");
 }
 
 /* Two models are the same node for node: kind, name, position, flags,
@@ -523,6 +672,8 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_leaves),
         cmocka_unit_test(test_polyhedron),
+        cmocka_unit_test(test_polyhedron_malformed),
+        cmocka_unit_test(test_polygon_malformed),
         cmocka_unit_test(test_operations),
         cmocka_unit_test(test_what_is_lowered),
         cmocka_unit_test(test_twod_context),

@@ -742,16 +742,34 @@ static void test_build_errors(void **state)
     check_error("linear_extrude(height = 1) { square(1, center = 1); }", SC_ERR_SEMANTIC,
                 "m.csg:1:49: error: wrong type for argument 'center' of 'square' "
                 "(expected true or false)");
-    check_error(
-        "linear_extrude(height = 1) {\n  polygon(points = [[0, 0], [1, 0], [1]]);\n}",
-        SC_ERR_SEMANTIC,
-        "m.csg:2:37: error: wrong type for argument 'points' of 'polygon' "
-        "(expected a vector of [x, y] points)");
-    check_error("linear_extrude(height = 1) {\n  polygon(points = [[0, 0], [1, 0], [1, "
-                "inf]]);\n}",
-                SC_ERR_SEMANTIC,
-                "m.csg:2:37: error: wrong type for argument 'points' of 'polygon' "
-                "(expected a vector of [x, y] points)");
+    /* a point OpenSCAD 2021.01 cannot convert empties the polygon, with
+     * its message as the warning (--strict: the error) */
+    const char *bad_point =
+        "linear_extrude(height = 1) {\n  polygon(points = [[0, 0], [1, 0], [1]]);\n  "
+        "square(1);\n}";
+    const char *bad_inf =
+        "linear_extrude(height = 1) {\n  polygon(points = [[0, 0], [1, 0], [1, "
+        "inf]]);\n  square(1);\n}";
+    const char *const unable[] = {
+        "m.csg:2:37: Unable to convert points[2] = [1] to a vec2 of numbers; the polygon "
+        "is empty, as OpenSCAD leaves it out (--strict makes it an error)"};
+    const char *const unable_inf[] = {
+        "m.csg:2:37: Unable to convert points[2] = [1, inf] to a vec2 of numbers; the "
+        "polygon is empty, as OpenSCAD leaves it out (--strict makes it an error)"};
+    for (int faithful = 0; faithful <= 1; faithful++) {
+        sc_scene *s = test_check_warnings("m.csg", bad_point, faithful, unable, 1);
+        assert_true(inside(s, 0.5, 0.5, 0.5)); /* the square */
+        assert_false(inside(s, 1.5, 0.5, 0.5));
+        sc_scene_release(s);
+        s = test_check_warnings("m.csg", bad_inf, faithful, unable_inf, 1);
+        sc_scene_release(s);
+        test_check_strict_error("m.csg", bad_point, faithful, SC_ERR_SEMANTIC,
+                                "m.csg:2:37: error: wrong type for argument 'points' of "
+                                "'polygon' (expected a vector of [x, y] points)");
+        test_check_strict_error("m.csg", bad_inf, faithful, SC_ERR_SEMANTIC,
+                                "m.csg:2:37: error: wrong type for argument 'points' of "
+                                "'polygon' (expected a vector of [x, y] points)");
+    }
     /* a path index that is not a number is 0, as OpenSCAD reads it */
     sc_scene *unit =
         load_with("linear_extrude(height = 1) {\n  polygon(points = [[0, 0], "
@@ -760,12 +778,20 @@ static void test_build_errors(void **state)
     assert_true(inside(unit, 0.9, 0.1, 0.5));
     assert_false(inside(unit, 0.1, 0.9, 0.5)); /* [0, 1, 2, 0]: the lower triangle */
     sc_scene_release(unit);
-    check_error(
-        "linear_extrude(height = 1) {\n  polygon(points = [[0, 0], [1, 0], [1, 1]], "
-        "paths = [[0, 1, 2], 1.5]);\n}",
-        SC_ERR_SEMANTIC,
-        "m.csg:2:66: error: wrong type for argument 'paths' of 'polygon' "
-        "(expected a vector of paths, each a vector of point indices)");
+    /* a path that is not a vector is an empty one, paths that are not a
+     * vector none (all the points), as OpenSCAD reads them */
+    for (int k = 0; k < 2; k++) {
+        sc_scene *s = test_check_warnings(
+            "m.csg",
+            k ? "linear_extrude(height = 1) {\n  polygon(points = [[0, 0], [1, 0], [1, "
+                "1]], paths = [[0, 1, 2], 1.5]);\n}"
+              : "linear_extrude(height = 1) {\n  polygon(points = [[0, 0], [1, 0], [1, "
+                "1]], paths = \"x\");\n}",
+            0, NULL, 0);
+        assert_true(inside(s, 0.7, 0.3, 0.5));
+        assert_false(inside(s, 0.3, 0.7, 0.5));
+        sc_scene_release(s);
+    }
     /* as OpenSCAD 2021.01: an index out of range left out with its
      * warning, a fraction truncated (the triangle 0, 1, 2) */
     const char *const bounds[] = {

@@ -59,6 +59,25 @@ static inline void test_check_error(const char *name, const char *text, sc_statu
     assert_string_equal(sc_error_format(&e, buf, sizeof buf), expected);
 }
 
+/* Loading text as the file name with --strict (sc_load_options.strict),
+ * faithful or not, fails with status and exactly the message expected,
+ * and gives no scene. */
+static inline void test_check_strict_error(const char *name, const char *text,
+                                           int faithful, sc_status status,
+                                           const char *expected)
+{
+    sc_scene *s = (sc_scene *)1;
+    sc_error e;
+    sc_load_options o;
+    sc_load_options_init(&o);
+    o.faithful = faithful;
+    o.strict = 1;
+    assert_int_equal(sc_scene_load_string(name, text, strlen(text), &o, &s, &e), status);
+    assert_null(s);
+    char buf[1024];
+    assert_string_equal(sc_error_format(&e, buf, sizeof buf), expected);
+}
+
 /* Loading text as the file name succeeds with exactly the warnings
  * expected, in order, each written "file:line:col: message"; returns the
  * scene for more checks. */

@@ -374,11 +374,14 @@ static sc_status build_polyhedron(builder *b, const model_node *n, const frame *
 {
     sc_error note = {SC_OK, "", 0, 0, ""};
     build_ctx c = context(b, state->emit, &note);
+    size_t left_out = b->warnings.left_out;
     sc_status st = build_bad_indices(&c, n);
     if (st != SC_OK)
         return st;
     if (n->u.polyhedron.face_count == 0) {
-        if (state->emit)
+        /* not again after a warning that left its faces out, as OpenSCAD
+         * prints only that */
+        if (state->emit && b->warnings.left_out == left_out)
             st = warn(b, &n->loc, "polyhedron without faces is empty");
         return st;
     }

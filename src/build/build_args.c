@@ -117,7 +117,28 @@ sc_status build_bad_indices(const build_ctx *c, const model_node *n)
                                  "Point index %g is out of bounds (from %s[%u][%u])", x,
                                  polygon ? "paths" : "faces", b->face, b->place);
     }
-    return st;
+    const model_bad_point *p =
+        polygon ? n->u.polygon->bad_point : n->u.polyhedron.bad_point;
+    if (st != SC_OK || !p)
+        return st;
+    if (c->strict && p->not_finite && !polygon)
+        return err_set(c->error, SC_ERR_SEMANTIC, &p->loc,
+                       "polyhedron point %u is not finite", p->index);
+    if (c->strict)
+        return err_set(c->error, SC_ERR_SEMANTIC, &p->loc,
+                       "wrong type for argument 'points' of '%s' (expected a vector of "
+                       "[x, y%s] points)",
+                       n->name, polygon ? "" : ", z");
+    /* OpenSCAD's error, after which it renders the rest; counted as left
+     * out, as the index warnings are */
+    return build_note_left_out(
+        c, &p->loc,
+        "Unable to convert points[%u] = %s to a vec%d of numbers; %s "
+        "(--strict makes it an error)",
+        p->index, p->text, polygon ? 2 : 3,
+        polygon ? "the polygon is empty, as OpenSCAD leaves it out"
+                : "the polyhedron keeps the faces before it, as "
+                  "OpenSCAD does");
 }
 
 sc_status build_xform_not_finite(const build_ctx *c, const model_node *n)

@@ -86,8 +86,11 @@ sc_status build_file_not_opened(const build_ctx *c, const sc_location *loc,
 /* The point indices out of range of a polyhedron's faces or a polygon's
  * paths n (model.h, bad), met where it is built: OpenSCAD 2021.01's
  * warning for each, "Point index 7 is out of bounds (from faces[3][3])"
- * (or paths[...]), as it leaves the index out; with --strict the error.
- * SC_OK for any other node. */
+ * (or paths[...]), as it leaves the index out; then the point it could
+ * not convert (bad_point), with its error "Unable to convert points[3] =
+ * [0, 0, "a"] to a vec3 of numbers" as a warning, as it renders the rest;
+ * with --strict the first of them is the error. Each counts as left out
+ * (c->notes->left_out). SC_OK for any other node. */
 sc_status build_bad_indices(const build_ctx *c, const model_node *n);
 
 /* A multmatrix n with a nan or inf entry (model.h, not_finite), met where

@@ -185,17 +185,33 @@ static sc_status finish_mesh(const build_ctx *c, const sc_location *loc, int num
 const char build_openscad_not_closed[] =
     "The given mesh is not closed! Unable to convert to CGAL_Nef_Polyhedron.";
 
+/* The triangles of the fans over faces (face_start, face_count: n - 2 for
+ * a face of n points; every face here has 3 or more) into *count, as a
+ * mesh leaf holds them: more than fit in its uint32 indices is the error
+ * "what has too many faces"; else they are charged to c's triangle budget
+ * (build_charge_triangles), whose error it returns. */
+static sc_status charge_fans(const build_ctx *c, const sc_location *loc, const char *what,
+                             const uint32_t *face_start, uint32_t face_count,
+                             size_t *count)
+{
+    size_t triangles = 0;
+    for (uint32_t f = 0; f < face_count; f++) {
+        uint32_t n = face_start[f + 1] - face_start[f];
+        triangles += n > 2 ? n - 2 : 0;
+    }
+    *count = triangles;
+    if (triangles > UINT32_MAX / 3)
+        return err_set(c->error, SC_ERR_LIMIT, loc, "%s has too many faces", what);
+    return build_charge_triangles(c, loc, what, triangles);
+}
+
 sc_status build_mesh_prim(const build_ctx *c, const sc_location *loc, const char *what,
                           int numbered, const vec3 *points, uint32_t point_count,
                           const uint32_t *indices, const uint32_t *face_start,
                           uint32_t face_count, prim *out, const char **empty)
 {
-    size_t tri_count = 0;
-    for (uint32_t f = 0; f < face_count; f++)
-        tri_count += face_start[f + 1] - face_start[f] - 2;
-    if (tri_count > UINT32_MAX / 3)
-        return err_set(c->error, SC_ERR_LIMIT, loc, "%s has too many faces", what);
-    sc_status st = build_charge_triangles(c, loc, what, tri_count);
+    size_t tri_count;
+    sc_status st = charge_fans(c, loc, what, face_start, face_count, &tri_count);
     if (st != SC_OK)
         return st;
     char why[SC_ERROR_MESSAGE_MAX];
@@ -1449,12 +1465,9 @@ sc_status build_mesh_solid(const build_ctx *c, const sc_location *loc, const cha
                            int numbered, int strict, const build_mesh_faces *f, prim *out,
                            const char **empty)
 {
-    size_t triangles = 0;
-    for (uint32_t k = 0; k < f->face_count; k++) {
-        uint32_t n = f->face_start[k + 1] - f->face_start[k];
-        triangles += n > 2 ? n - 2 : 0;
-    }
-    sc_status charged = build_charge_triangles(c, loc, what, triangles);
+    size_t tri_count;
+    sc_status charged =
+        charge_fans(c, loc, what, f->face_start, f->face_count, &tri_count);
     if (charged != SC_OK)
         return charged;
     char why[SC_ERROR_MESSAGE_MAX - 160];
@@ -1469,11 +1482,6 @@ sc_status build_mesh_solid(const build_ctx *c, const sc_location *loc, const cha
         *empty = "";
         return SC_OK;
     }
-    size_t tri_count = 0;
-    for (uint32_t i = 0; i < f->face_count; i++)
-        tri_count += f->face_start[i + 1] - f->face_start[i] - 2;
-    if (tri_count > UINT32_MAX / 3)
-        return err_set(c->error, SC_ERR_LIMIT, loc, "%s has too many faces", what);
     uint32_t *tris = malloc((tri_count ? tri_count : 1) * 3 * sizeof *tris);
     if (!tris)
         return err_nomem(c->error, loc);

@@ -141,9 +141,10 @@ static sc_status read_polygon(walker *w, const model_node *n, const affine2 *m,
         return build_pending(c, n);
     twod_region *poly = &w->poly;
     twod_clear(poly);
-    if (!n->u.polygon->has_points)
-        return SC_OK;
-    sc_status st = build_twod_polygon(c, n, m, 1, 0, poly);
+    sc_status st = build_bad_indices(c, n);
+    if (st != SC_OK || !n->u.polygon->has_points)
+        return st;
+    st = build_twod_polygon(c, n, m, 1, 0, poly);
     if (st != SC_OK)
         return st;
     st = add_poly(w, n, pushed);

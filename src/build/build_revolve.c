@@ -237,12 +237,13 @@ static sc_status read_polygon(const build_ctx *c, const model_node *n, const aff
 {
     if (n->pending)
         return build_pending(c, n);
-    if (!n->u.polygon->has_points)
-        return SC_OK;
+    sc_status st = build_bad_indices(c, n);
+    if (st != SC_OK || !n->u.polygon->has_points)
+        return st;
     begin_region(p);
     uint32_t first = p->pts.contour_count;
     /* an empty vector of paths is no path here */
-    sc_status st = build_twod_polygon(c, n, m, 0, 0, &p->pts);
+    st = build_twod_polygon(c, n, m, 0, 0, &p->pts);
     if (st != SC_OK)
         return st;
     if (!note_paths(p))

@@ -317,9 +317,8 @@ sc_status build_twod_polygon(const build_ctx *c, const model_node *n, const affi
     if (n->pending)
         return build_pending(c, n);
     const model_polygon *p = n->u.polygon;
-    sc_status st = build_bad_indices(c, n);
-    if (st != SC_OK || !p->has_points)
-        return st;
+    if (!p->has_points)
+        return SC_OK;
     int paths = p->has_paths && (p->path_count > 0 || !empty_is_all);
     uint32_t count = paths ? p->path_count : 1;
     for (uint32_t k = 0; k < count; k++) {
@@ -347,11 +346,13 @@ static sc_status read_polygon(const eval *e, const model_node *n, twod_region *o
     if (n->pending)
         return pending(e, n);
     const model_polygon *p = n->u.polygon;
+    sc_status st = build_bad_indices(e->c, n);
     /* OpenSCAD: an empty paths list means all points; fewer than 3 are
      * nothing */
-    if (!p->has_points || (!(p->has_paths && p->path_count > 0) && p->point_count < 3))
-        return SC_OK;
-    sc_status st = build_twod_polygon(e->c, n, &unmoved, 1, 1, out);
+    if (st != SC_OK || !p->has_points ||
+        (!(p->has_paths && p->path_count > 0) && p->point_count < 3))
+        return st;
+    st = build_twod_polygon(e->c, n, &unmoved, 1, 1, out);
     if (st != SC_OK)
         return st;
     out->sanitized = 0;

@@ -79,8 +79,8 @@ sc_status twod_walk_fold(const twod_walker *w, const model_node *n, const affine
  * added to out (the caller's contours kept): one per path, or one through
  * all the points without paths, and, with empty_is_all (OpenSCAD's rule),
  * with an empty vector of them. With check_range a point past
- * TWOD_MAX_COORD is an error. Its argument error (a bad path index) comes
- * after the points before it are read. */
+ * TWOD_MAX_COORD is an error. The caller gives the polygon's warnings
+ * first (build_bad_indices), also for one without points. */
 sc_status build_twod_polygon(const build_ctx *c, const model_node *n, const affine2 *m,
                              int empty_is_all, int check_range, twod_region *out);
 

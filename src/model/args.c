@@ -2,6 +2,8 @@
 #include "model/args.h"
 
 #include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "base/error.h"
@@ -200,37 +202,6 @@ sc_status model_bool(const model_reader *c, const parse_node *n, const char *nam
     return SC_OK;
 }
 
-static const char polygon_points[] = "a vector of [x, y] points";
-
-sc_status model_read_polygon(const model_reader *c, const parse_node *n,
-                             const parse_value **points, const parse_value **paths)
-{
-    const parse_value *pts = model_arg(n, "points", 0), *ps = model_arg(n, "paths", 1);
-    *points = pts;
-    *paths = ps;
-    if (!pts)
-        return SC_OK;
-    if (pts->kind != PARSE_VECTOR)
-        return model_wrong_type(c, n, "points", pts, polygon_points);
-    for (uint32_t i = 0; i < pts->u.vector.count; i++) {
-        const parse_value *v = &pts->u.vector.items[i];
-        if (v->kind != PARSE_VECTOR || v->u.vector.count != 2 ||
-            v->u.vector.items[0].kind != PARSE_NUMBER ||
-            v->u.vector.items[1].kind != PARSE_NUMBER ||
-            !isfinite(v->u.vector.items[0].u.number) ||
-            !isfinite(v->u.vector.items[1].u.number))
-            return model_wrong_type(c, n, "points", v, polygon_points);
-    }
-    if (ps && ps->kind != PARSE_VECTOR)
-        return model_wrong_type(c, n, "paths", ps, MODEL_POLYGON_PATHS);
-    for (uint32_t k = 0; ps && k < ps->u.vector.count; k++) {
-        if (ps->u.vector.items[k].kind != PARSE_VECTOR)
-            return model_wrong_type(c, n, "paths", &ps->u.vector.items[k],
-                                    MODEL_POLYGON_PATHS);
-    }
-    return SC_OK;
-}
-
 sc_status model_cube(const model_reader *c, const parse_node *n, double size[3],
                      int *center)
 {
@@ -252,61 +223,262 @@ sc_status model_cube(const model_reader *c, const parse_node *n, double size[3],
     return model_bool(c, n, "center", 1, center);
 }
 
-static const char faces_expected[] = "a vector of faces, each a vector of point indices";
+/* ---- OpenSCAD's echo of a value (value.cc, toEchoString) ---- */
 
-sc_status model_read_faces(const model_reader *r, arena *mem, const parse_node *n,
-                           const char *param, const parse_value *v, uint32_t point_count,
-                           uint32_t min_points, model_node *out)
+typedef struct echo_text {
+    char *buf;
+    size_t size, len; /* len < size; buf[len] is the NUL */
+    int full;         /* cut: ends in "..." */
+} echo_text;
+
+static void echo_put(echo_text *t, const char *s, size_t n)
 {
-    if (v->kind != PARSE_VECTOR)
-        return model_wrong_type(r, n, param, v, faces_expected);
-    uint32_t count = v->u.vector.count, bad_count = 0;
-    size_t total = 0;
-    for (uint32_t f = 0; f < count; f++) {
-        const parse_value *fv = &v->u.vector.items[f];
-        if (fv->kind != PARSE_VECTOR)
-            return model_wrong_type(r, n, param, fv, faces_expected);
-        for (uint32_t i = 0; i < fv->u.vector.count; i++) {
-            double x = model_index_value(&fv->u.vector.items[i]);
-            bad_count += !(x >= 0 && x < (double)point_count);
-        }
-        total += fv->u.vector.count;
+    static const char cut[] = "...";
+    if (t->full)
+        return;
+    if (t->len + n + sizeof cut > t->size) {
+        memcpy(t->buf + t->len, cut, sizeof cut);
+        t->len += sizeof cut - 1;
+        t->full = 1;
+        return;
     }
-    if (total > UINT32_MAX)
-        return err_nomem(r->error, NULL);
-    uint32_t *start = arena_calloc(mem, (size_t)count + 1, sizeof *start);
-    uint32_t *indices = arena_calloc(mem, total ? total : 1, sizeof *indices);
-    model_bad_index *bad = bad_count ? arena_calloc(mem, bad_count, sizeof *bad) : NULL;
-    if (!start || !indices || (bad_count && !bad))
-        return err_nomem(r->error, NULL);
-    uint32_t k = 0, kept = 0, b = 0;
-    for (uint32_t f = 0; f < count; f++) {
-        const parse_value *fv = &v->u.vector.items[f];
-        uint32_t first = k;
-        for (uint32_t i = 0; i < fv->u.vector.count; i++) {
-            const parse_value *iv = &fv->u.vector.items[i];
+    memcpy(t->buf + t->len, s, n);
+    t->len += n;
+    t->buf[t->len] = 0;
+}
+
+/* Drops the trailing zeros of a decimal fraction, and its point when
+ * nothing follows. */
+static void trim_zeros(char *s)
+{
+    if (!strchr(s, '.'))
+        return;
+    size_t n = strlen(s);
+    while (n && s[n - 1] == '0')
+        s[--n] = 0;
+    if (n && s[n - 1] == '.')
+        s[--n] = 0;
+}
+
+/* A number as OpenSCAD 2021.01 writes it (DoubleConvert: double-conversion's
+ * ToPrecision with 6 digits, trailing zeros dropped): positional from 1e-5
+ * up to 1e6, else d.ddddde+X with the exponent's sign and no padding; -0
+ * is 0. printf's %.5e rounds as ToPrecision does (correctly), and its
+ * exponent is that of the rounded value, which decides the form. */
+static void echo_number(echo_text *t, double x)
+{
+    char m[64];
+    if (isnan(x) || isinf(x) || x == 0) {
+        const char *name = isnan(x) ? "nan" : x == 0 ? "0" : x > 0 ? "inf" : "-inf";
+        echo_put(t, name, strlen(name));
+        return;
+    }
+    snprintf(m, sizeof m, "%.5e", x);
+    char *e = strchr(m, 'e');
+    int exponent = atoi(e + 1);
+    if (exponent < -5 || exponent >= 6) {
+        *e = 0;
+        trim_zeros(m);
+        size_t n = strlen(m);
+        snprintf(m + n, sizeof m - n, "e%c%d", exponent < 0 ? '-' : '+', abs(exponent));
+    } else {
+        snprintf(m, sizeof m, "%.*f", 5 - exponent, x);
+        trim_zeros(m);
+    }
+    echo_put(t, m, strlen(m));
+}
+
+static void echo_value(echo_text *t, const parse_value *v)
+{
+    switch (v->kind) {
+    case PARSE_UNDEF:
+        echo_put(t, "undef", 5);
+        break;
+    case PARSE_BOOL:
+        echo_put(t, v->u.boolean ? "true" : "false", v->u.boolean ? 4 : 5);
+        break;
+    case PARSE_NUMBER:
+        echo_number(t, v->u.number);
+        break;
+    case PARSE_STRING: /* quoted, its characters as they are */
+        echo_put(t, "\"", 1);
+        echo_put(t, v->u.string.chars, v->u.string.length);
+        echo_put(t, "\"", 1);
+        break;
+    case PARSE_VECTOR:
+        echo_put(t, "[", 1);
+        /* the nesting is bounded by the text's size: each level is a '[' */
+        for (uint32_t i = 0; i < v->u.vector.count && !t->full; i++) {
+            if (i)
+                echo_put(t, ", ", 2);
+            echo_value(t, &v->u.vector.items[i]);
+        }
+        echo_put(t, "]", 1);
+        break;
+    }
+}
+
+const char *model_echo_value(arena *mem, const parse_value *v)
+{
+    char buf[MODEL_ECHO_MAX + 1] = "";
+    echo_text t = {buf, sizeof buf, 0, 0};
+    echo_value(&t, v);
+    char *copy = arena_alloc(mem, t.len + 1);
+    if (copy)
+        memcpy(copy, buf, t.len + 1);
+    return copy;
+}
+
+/* ---- polyhedron(points, faces) ---- */
+
+/* Point i of pts as OpenSCAD 2021.01 converts it where a face reads it
+ * (Value::getVec3 with z = 0 for [x, y], then every coordinate finite): 1
+ * with the point in *out, else 0 (*not_finite: numbers, one not finite).
+ * A pair that is not two numbers, which OpenSCAD's getVec3 takes without
+ * setting x and y, is not one either. */
+static int polyhedron_point(const parse_value *pv, vec3 *out, int *not_finite)
+{
+    *not_finite = 0;
+    uint32_t count = pv->kind == PARSE_VECTOR ? pv->u.vector.count : 0;
+    if (count != 2 && count != 3)
+        return 0;
+    double c[3] = {0, 0, 0};
+    for (uint32_t k = 0; k < count; k++) {
+        const parse_value *cv = &pv->u.vector.items[k];
+        if (cv->kind != PARSE_NUMBER)
+            return 0;
+        c[k] = cv->u.number;
+    }
+    vec3 q = v3(c[0], c[1], c[2]);
+    *not_finite = !v3_is_finite(q);
+    if (!*not_finite)
+        *out = q;
+    return !*not_finite;
+}
+
+/* What one pass over the faces finds (polyhedron_walk). */
+typedef struct face_walk {
+    uint32_t kept, bad_count; /* faces kept, indices out of range */
+    size_t total;             /* indices kept */
+} face_walk;
+
+/* Reads the faces fv (NULL: none) over the points pts (count np; ok[i]
+ * says whether point i converts) as OpenSCAD 2021.01 does, up to the
+ * first point it cannot convert that a face reads; with out NULL only
+ * counts (w), else fills out's faces and bad indices (allocated for w's
+ * counts) and bad point. Returns 0, or 1 when it stopped at a bad point,
+ * -1 when memory ran out. */
+static int polyhedron_walk(const model_reader *r, arena *mem, const parse_value *fv,
+                           const parse_value *pts, uint32_t np, const unsigned char *ok,
+                           uint32_t min_points, face_walk *w, model_node *out)
+{
+    uint32_t count = fv ? fv->u.vector.count : 0, k = 0, kept = 0, b = 0;
+    uint32_t *indices = out ? (uint32_t *)out->u.polyhedron.indices : NULL;
+    uint32_t *start = out ? (uint32_t *)out->u.polyhedron.face_start : NULL;
+    model_bad_index *bad = out ? (model_bad_index *)out->u.polyhedron.bad : NULL;
+    int stopped = 0;
+    for (uint32_t f = 0; f < count && !stopped; f++) {
+        const parse_value *face = &fv->u.vector.items[f];
+        uint32_t first = k, n = face->kind == PARSE_VECTOR ? face->u.vector.count : 0;
+        for (uint32_t i = 0; i < n && !stopped; i++) {
+            const parse_value *iv = &face->u.vector.items[i];
             double x = model_index_value(iv);
-            if (x >= 0 && x < (double)point_count) {
-                indices[k++] = (uint32_t)x;
-            } else {
-                bad[b].value = iv->kind == PARSE_NUMBER ? iv->u.number : 0;
-                bad[b].face = f;
-                bad[b].place = i;
-                bad[b++].loc = model_loc(r, iv);
+            if (!(x >= 0 && x < (double)np)) {
+                if (bad) {
+                    bad[b].value = iv->kind == PARSE_NUMBER ? iv->u.number : 0;
+                    bad[b].face = f;
+                    bad[b].place = i;
+                    bad[b].loc = model_loc(r, iv);
+                }
+                b++;
+                continue;
             }
+            uint32_t at = (uint32_t)x;
+            if (!ok[at]) {
+                stopped = 1;
+                if (!out)
+                    break;
+                model_bad_point *bp = arena_alloc(mem, sizeof *bp);
+                vec3 unused;
+                if (!bp)
+                    return -1;
+                bp->index = at;
+                polyhedron_point(&pts->u.vector.items[at], &unused, &bp->not_finite);
+                bp->loc = model_loc(r, &pts->u.vector.items[at]);
+                bp->text = model_echo_value(mem, &pts->u.vector.items[at]);
+                if (!bp->text)
+                    return -1;
+                out->u.polyhedron.bad_point = bp;
+                break;
+            }
+            if (indices)
+                indices[k] = at;
+            k++;
         }
-        if (k - first < min_points)
+        if (k - first < min_points) {
             k = first; /* left out */
-        else
-            start[kept++] = first;
+        } else {
+            if (start)
+                start[kept] = first;
+            kept++;
+        }
     }
-    start[kept] = k;
+    if (start)
+        start[kept] = k;
+    w->kept = kept;
+    w->bad_count = b;
+    w->total = k;
+    return stopped;
+}
+
+sc_status model_read_polyhedron(const model_reader *r, arena *mem, const parse_node *n,
+                                uint32_t min_points, model_node *out)
+{
+    const parse_value *pts = model_arg(n, "points", 0);
+    const parse_value *fv = model_arg(n, "faces", 1);
+    if (!fv)
+        fv = model_arg(n, "triangles", -1);
+    if (pts && pts->kind != PARSE_VECTOR)
+        pts = NULL; /* none */
+    if (fv && fv->kind != PARSE_VECTOR)
+        fv = NULL;
+    uint32_t np = pts ? pts->u.vector.count : 0;
+    vec3 *p = arena_calloc(mem, np ? np : 1, sizeof *p);
+    unsigned char *ok = calloc(np ? np : 1, 1);
+    if (!p || !ok) {
+        free(ok);
+        return err_nomem(r->error, NULL);
+    }
+    for (uint32_t i = 0; i < np; i++) {
+        int not_finite;
+        ok[i] =
+            (unsigned char)polyhedron_point(&pts->u.vector.items[i], &p[i], &not_finite);
+    }
+    face_walk w;
+    polyhedron_walk(r, mem, fv, pts, np, ok, min_points, &w, NULL);
+    if (w.total > UINT32_MAX) {
+        free(ok);
+        return err_nomem(r->error, NULL);
+    }
+    uint32_t *start = arena_calloc(mem, (size_t)w.kept + 1, sizeof *start);
+    uint32_t *indices = arena_calloc(mem, w.total ? w.total : 1, sizeof *indices);
+    model_bad_index *bad =
+        w.bad_count ? arena_calloc(mem, w.bad_count, sizeof *bad) : NULL;
+    if (!start || !indices || (w.bad_count && !bad)) {
+        free(ok);
+        return err_nomem(r->error, NULL);
+    }
+    out->u.polyhedron.points = p;
+    out->u.polyhedron.point_count = np;
     out->u.polyhedron.indices = indices;
     out->u.polyhedron.face_start = start;
-    out->u.polyhedron.face_count = kept;
     out->u.polyhedron.bad = bad;
-    out->u.polyhedron.bad_count = bad_count;
-    return SC_OK;
+    out->u.polyhedron.bad_count = w.bad_count;
+    out->u.polyhedron.face_count = w.kept;
+    out->u.polyhedron.bad_point = NULL;
+    int st = polyhedron_walk(r, mem, fv, pts, np, ok, min_points, &w, out);
+    free(ok);
+    return st < 0 ? err_nomem(r->error, NULL) : SC_OK;
 }
 
 double model_index_value(const parse_value *v)

@@ -76,21 +76,26 @@ sc_status model_read_xform(const model_reader *r, arena *mem, const parse_node *
  * set, or st says so). */
 sc_status model_keep_pending(arena *mem, sc_status st, int nomem, const sc_error *pending,
                              model_node *out, sc_error *error);
-/* polyhedron's faces (the argument param, value v) over point_count
- * points into out->u.polyhedron, as OpenSCAD 2021.01 reads them: each
- * index a number, truncated toward zero (its conversion to an unsigned
- * integer); one out of range left out of its face and listed in bad (the
- * builders warn of it); then a face of fewer than min_points points left
- * out (OpenSCAD's triangulation drops it). Allocates from mem. */
-sc_status model_read_faces(const model_reader *r, arena *mem, const parse_node *n,
-                           const char *param, const parse_value *v, uint32_t point_count,
-                           uint32_t min_points, model_node *out);
-/* polygon(points, paths)'s arguments: points (NULL when absent) a vector
- * of finite [x, y], paths (NULL when absent) a vector of vectors; the
- * indices in the paths are the caller's to check. */
-#define MODEL_POLYGON_PATHS "a vector of paths, each a vector of point indices"
-sc_status model_read_polygon(const model_reader *r, const parse_node *n,
-                             const parse_value **points, const parse_value **paths);
+/* polyhedron(points, faces | triangles)'s arguments into out->u.polyhedron
+ * (allocated from mem), as OpenSCAD 2021.01 reads them (primitives.cc):
+ * points that are not a vector are none, faces that are not a vector none,
+ * and a face that is not a vector an empty one; each index a number,
+ * truncated toward zero (model_index_value), one out of range left out of
+ * its face and listed in bad (the builders warn of it); a point is read
+ * where a face reads it, [x, y] as [x, y, 0], and the first that is not
+ * [x, y, z] of finite numbers ends the faces there (bad_point: the face
+ * it is in keeps the indices before it); then a face of fewer than
+ * min_points points is left out (OpenSCAD's triangulation drops it).
+ * Fails only when memory runs out (SC_ERR_NOMEM in r->error). */
+sc_status model_read_polyhedron(const model_reader *r, arena *mem, const parse_node *n,
+                                uint32_t min_points, model_node *out);
+/* The longest text of model_echo_value, "..." included. */
+#define MODEL_ECHO_MAX 200
+/* Value v as OpenSCAD 2021.01 echoes it in a message (Value::toEchoString:
+ * numbers with 6 significant digits, "1e+6", strings quoted as they are,
+ * vectors "[a, b]"), cut to MODEL_ECHO_MAX bytes ending in "...";
+ * allocated from mem, NULL when memory runs out. */
+const char *model_echo_value(arena *mem, const parse_value *v);
 /* A point index v of a polygon's path or a polyhedron's face, as OpenSCAD
  * 2021.01 converts it (Value::toDouble, then an unsigned integer): a number
  * truncated toward zero, anything else 0. */

@@ -100,55 +100,12 @@ static sc_status lower_cylinder(lowerer *l, const parse_node *n, model_node *out
                                &out->u.cylinder.res);
 }
 
-static const char points_expected[] = "a vector of [x, y, z] points";
-
-static sc_status read_points(lowerer *l, const parse_node *n, const parse_value *v,
-                             model_node *out)
-{
-    if (!v)
-        return SC_OK;
-    if (v->kind != PARSE_VECTOR)
-        return model_wrong_type(&l->r, n, "points", v, points_expected);
-    uint32_t count = v->u.vector.count;
-    vec3 *points = NULL;
-    if (count && !(points = arena_alloc(&l->m->mem, (size_t)count * sizeof *points)))
-        return err_nomem(l->r.error, NULL);
-    for (uint32_t i = 0; i < count; i++) {
-        const parse_value *pv = &v->u.vector.items[i];
-        if (pv->kind != PARSE_VECTOR || pv->u.vector.count != 3)
-            return model_wrong_type(&l->r, n, "points", pv, points_expected);
-        double c[3];
-        for (int k = 0; k < 3; k++) {
-            const parse_value *cv = &pv->u.vector.items[k];
-            if (cv->kind != PARSE_NUMBER)
-                return model_wrong_type(&l->r, n, "points", cv, points_expected);
-            c[k] = cv->u.number;
-        }
-        points[i] = v3(c[0], c[1], c[2]);
-        if (!v3_is_finite(points[i])) {
-            sc_location loc = model_loc(&l->r, pv);
-            return err_set(l->r.error, SC_ERR_SEMANTIC, &loc,
-                           "polyhedron point %u is not finite", i);
-        }
-    }
-    out->u.polyhedron.points = points;
-    out->u.polyhedron.point_count = count;
-    return SC_OK;
-}
-
 /* polyhedron(points, faces, convexity), faces also as the older
- * `triangles`. */
+ * `triangles`, read as OpenSCAD 2021.01 reads them (model_read_polyhedron):
+ * a face of fewer than 3 points is left out. */
 static sc_status lower_polyhedron(lowerer *l, const parse_node *n, model_node *out)
 {
-    const char *faces_name = "faces";
-    const parse_value *faces = model_arg(n, "faces", 1);
-    if (!faces && (faces = model_arg(n, "triangles", -1)))
-        faces_name = "triangles";
-    sc_status st = read_points(l, n, model_arg(n, "points", 0), out);
-    if (st != SC_OK || !faces)
-        return st;
-    return model_read_faces(&l->r, &l->m->mem, n, faces_name, faces,
-                            out->u.polyhedron.point_count, 3, out);
+    return model_read_polyhedron(&l->r, &l->m->mem, n, 3, out);
 }
 
 /* import(file = "x.stl" | "x.off" | "x.amf" | "x.3mf") of a mesh, or of a

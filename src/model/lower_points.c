@@ -8,9 +8,8 @@
  *   cube, sphere, cylinder, multmatrix, import, surface, torus, quadric,
  *                implicit      as in the main model (model/args.c,
  *                              lower_curved.c)
- *   polyhedron   nothing without both points and faces; else points a
- *                vector of finite [x, y, z], then each face a vector of
- *                indices of the points, in file order
+ *   polyhedron   as in the main model (model_read_polyhedron), every
+ *                face kept whatever its size
  *   resize       newsize a vector of up to 3 finite numbers (a negative
  *                one kept), auto true, false or a vector of them (or
  *                numbers)
@@ -32,42 +31,9 @@
 #include "model/lower_curved.h"
 #include "model/lower_twod.h"
 
-static const char points_expected[] = "a vector of [x, y, z] points";
-
 static sc_status lower_polyhedron(model_lowerer *l, const parse_node *n, model_node *out)
 {
-    const parse_value *pts = model_arg(n, "points", 0);
-    const char *faces_name = "faces";
-    const parse_value *faces = model_arg(n, "faces", 1);
-    if (!faces && (faces = model_arg(n, "triangles", -1)))
-        faces_name = "triangles";
-    if (!pts || !faces)
-        return SC_OK;
-    if (pts->kind != PARSE_VECTOR)
-        return model_wrong_type(&l->r, n, "points", pts, points_expected);
-    uint32_t np = pts->u.vector.count;
-    vec3 *p = model_lowerer_alloc(l, (size_t)np * sizeof *p);
-    if (!p) {
-        l->nomem = 1;
-        return SC_ERR_NOMEM;
-    }
-    for (uint32_t i = 0; i < np; i++) {
-        const parse_value *pv = &pts->u.vector.items[i];
-        int ok = pv->kind == PARSE_VECTOR && pv->u.vector.count == 3;
-        double xyz[3] = {0, 0, 0};
-        for (int k = 0; ok && k < 3; k++) {
-            ok = pv->u.vector.items[k].kind == PARSE_NUMBER &&
-                 isfinite(pv->u.vector.items[k].u.number);
-            if (ok)
-                xyz[k] = pv->u.vector.items[k].u.number;
-        }
-        if (!ok)
-            return model_wrong_type(&l->r, n, "points", pv, points_expected);
-        p[i] = v3(xyz[0], xyz[1], xyz[2]);
-    }
-    out->u.polyhedron.points = p;
-    out->u.polyhedron.point_count = np;
-    sc_status st = model_read_faces(&l->r, l->mem, n, faces_name, faces, np, 0, out);
+    sc_status st = model_read_polyhedron(&l->r, l->mem, n, 0, out);
     if (st == SC_ERR_NOMEM)
         l->nomem = 1;
     return st;

@@ -6,8 +6,10 @@
  *
  * The checks, their order and their messages are the ones the 2D readers
  * have always made: model/args.c's readers, then per kind
- *   polygon   each path entry one of the points (model_index_value), in
- *             path order; one out of range is listed (model.h)
+ *   polygon   points as OpenSCAD 2021.01 reads them (lower_polygon: a
+ *             bad one empties it, for the builder to warn of); each path
+ *             entry one of the points (model_index_value), in path
+ *             order; one out of range is listed (model.h)
  *   offset    r, then $fn, $fa, $fs, then (without r) delta and chamfer;
  *             the size must be finite
  *   import    a file name, .dxf or .svg (otherwise the builder names the
@@ -51,14 +53,16 @@ static sc_status lower_circle(model_lowerer *l, const parse_node *n, model_node 
     return model_read_circle(&l->r, n, c);
 }
 
-/* The paths' indices, in path order; those out of range left out, and
- * listed in p->bad. */
+/* The paths' indices, in path order (a path that is not a vector is an
+ * empty one); those out of range left out, and listed in p->bad. */
 static sc_status read_paths(model_lowerer *l, const parse_value *paths, model_polygon *p)
 {
     uint32_t count = paths->u.vector.count;
     size_t total = 0;
-    for (uint32_t k = 0; k < count; k++)
-        total += paths->u.vector.items[k].u.vector.count;
+    for (uint32_t k = 0; k < count; k++) {
+        const parse_value *path = &paths->u.vector.items[k];
+        total += path->kind == PARSE_VECTOR ? path->u.vector.count : 0;
+    }
     uint32_t *start = arena_calloc(l->mem, (size_t)count + 1, sizeof *start);
     uint32_t *index = arena_calloc(l->mem, total ? total : 1, sizeof *index);
     model_bad_index *bad = arena_calloc(l->mem, total ? total : 1, sizeof *bad);
@@ -72,9 +76,10 @@ static sc_status read_paths(model_lowerer *l, const parse_value *paths, model_po
     uint32_t at = 0;
     for (uint32_t k = 0; k < count; k++) {
         const parse_value *path = &paths->u.vector.items[k];
+        uint32_t n = path->kind == PARSE_VECTOR ? path->u.vector.count : 0;
         start[k] = at;
         p->path_count = k + 1;
-        for (uint32_t i = 0; i < path->u.vector.count; i++) {
+        for (uint32_t i = 0; i < n; i++) {
             const parse_value *v = &path->u.vector.items[i];
             double x = model_index_value(v);
             if (x >= 0 && x < (double)p->point_count) {
@@ -92,17 +97,38 @@ static sc_status read_paths(model_lowerer *l, const parse_value *paths, model_po
     return SC_OK;
 }
 
+/* Point v of a polygon as OpenSCAD 2021.01 converts it (Value::getVec2,
+ * then not infinite; a nan, which spancast cannot draw, is no point
+ * either): 1 with x, y in xy, else 0 (*not_finite: numbers, one not
+ * finite). */
+static int polygon_point(const parse_value *v, double xy[2], int *not_finite)
+{
+    *not_finite = 0;
+    if (v->kind != PARSE_VECTOR || v->u.vector.count != 2 ||
+        v->u.vector.items[0].kind != PARSE_NUMBER ||
+        v->u.vector.items[1].kind != PARSE_NUMBER)
+        return 0;
+    double x = v->u.vector.items[0].u.number, y = v->u.vector.items[1].u.number;
+    *not_finite = !isfinite(x) || !isfinite(y);
+    xy[0] = x;
+    xy[1] = y;
+    return !*not_finite;
+}
+
+/* polygon(points, paths) as OpenSCAD 2021.01 reads it (primitives.cc):
+ * points that are not a vector are none; the first point that is not
+ * [x, y] of numbers empties the polygon (bad_point, for the builder's
+ * warning); paths that are not a vector are none (all the points). */
 static sc_status lower_polygon(model_lowerer *l, const parse_node *n, model_node *out)
 {
     model_polygon *p = model_lowerer_alloc(l, sizeof *p);
     if (!p)
         return SC_ERR_NOMEM;
     out->u.polygon = p;
-    const parse_value *pts, *paths;
-    sc_status st = model_read_polygon(&l->r, n, &pts, &paths);
-    if (st != SC_OK || !pts)
-        return st;
-    uint32_t np = pts->u.vector.count;
+    const parse_value *pts = model_arg(n, "points", 0), *paths = model_arg(n, "paths", 1);
+    if (!pts)
+        return SC_OK;
+    uint32_t np = pts->kind == PARSE_VECTOR ? pts->u.vector.count : 0;
     double *xy = arena_alloc(l->mem, (np ? np : 1) * 2 * sizeof *xy);
     if (!xy) {
         l->nomem = 1;
@@ -110,13 +136,26 @@ static sc_status lower_polygon(model_lowerer *l, const parse_node *n, model_node
     }
     for (uint32_t i = 0; i < np; i++) {
         const parse_value *v = &pts->u.vector.items[i];
-        xy[2 * i] = v->u.vector.items[0].u.number;
-        xy[2 * i + 1] = v->u.vector.items[1].u.number;
+        int not_finite;
+        if (polygon_point(v, &xy[2 * i], &not_finite))
+            continue;
+        model_bad_point *bp = model_lowerer_alloc(l, sizeof *bp);
+        const char *text = bp ? model_echo_value(l->mem, v) : NULL;
+        if (!text) {
+            l->nomem = 1;
+            return SC_ERR_NOMEM;
+        }
+        bp->index = i;
+        bp->not_finite = not_finite;
+        bp->loc = model_loc(&l->r, v);
+        bp->text = text;
+        p->bad_point = bp; /* and no points: empty */
+        return SC_OK;
     }
     p->xy = xy;
     p->point_count = np;
     p->has_points = 1;
-    if (!paths)
+    if (!paths || paths->kind != PARSE_VECTOR)
         return SC_OK;
     p->has_paths = 1;
     return read_paths(l, paths, p);

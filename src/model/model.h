@@ -214,6 +214,20 @@ typedef struct model_bad_index {
     sc_location loc;
 } model_bad_index;
 
+/* A point that OpenSCAD 2021.01 cannot convert where a polyhedron's face
+ * or a polygon reads it: not a vector of 3 numbers (or 2: z is then 0) for
+ * a polyhedron, of 2 numbers for a polygon, or a number in it not finite
+ * (for a polygon: infinite; spancast takes no nan there either). OpenSCAD
+ * logs "Unable to convert points[3] = [0, 0, "a"] to a vec3 of numbers"
+ * and stops reading there: a polyhedron keeps the faces before it, a
+ * polygon is empty. The builders give the message as a warning. */
+typedef struct model_bad_point {
+    uint32_t index;   /* its place in points */
+    int not_finite;   /* numbers, one of them nan or inf */
+    sc_location loc;  /* the point's */
+    const char *text; /* the point as OpenSCAD echoes it (model_echo_value) */
+} model_bad_point;
+
 /* The 2D nodes below an extrusion, and a 2D shape in a 3D model, are
  * lowered in the 2D context: every builder of 2D subtrees (the 2D engine,
  * the exact region and revolve profiles, text) reads them, each at its own
@@ -245,6 +259,7 @@ typedef struct model_polygon {
     const uint32_t *index;
     const model_bad_index *bad;
     uint32_t bad_count;
+    const model_bad_point *bad_point; /* the polygon is then empty; or NULL */
 } model_polygon;
 
 /* offset(r | delta, chamfer, $fn, $fa, $fs) */
@@ -365,6 +380,8 @@ struct model_node {
              * builders give where they build the node */
             const model_bad_index *bad;
             uint32_t bad_count;
+            /* the point the faces ended at, or NULL */
+            const model_bad_point *bad_point;
         } polyhedron;
         /* multmatrix: rows of the 3x4 affine part; the zero map when an
          * entry is nan or inf (not_finite), which OpenSCAD 2021.01 removes
