@@ -2420,6 +2420,42 @@ static void test_subtrahend_beside_costs_no_merge(void **state)
     csg_tree_free(t);
 }
 
+/* Whether a segment is blocked, on a sphere of radius 1: from outside
+ * through it, from inside out of it (a shadow ray from the inner face of
+ * glass), from inside and staying in, and beside it. The answer is the
+ * solid's surface crossing the segment, and no segment costs more than two
+ * queries: one for whether the solid meets it, one for its first crossing
+ * (a third, for whether the start lies inside, is not needed). */
+static void test_any_hit_queries(void **state)
+{
+    (void)state;
+    csg_builder *b = csg_builder_new();
+    assert_non_null(b);
+    affine id = affine_identity();
+    prim ball = {.kind = PRIM_SPHERE};
+    ball.u.sphere.r = 1;
+    csg_tree *t = finish(b, csg_builder_leaf(b, &ball, &id, white, no_loc));
+    arena scratch;
+    arena_init(&scratch, 0);
+    const struct {
+        csg_ray ray;
+        int blocked;
+    } cases[4] = {{{v3(-5, 0, 0), v3(1, 0, 0), 0, 10}, 1},
+                  {{v3(0, 0, 0), v3(1, 0, 0), 0, 5}, 1},
+                  {{v3(0, 0, 0), v3(1, 0, 0), 0, 0.5}, 0},
+                  {{v3(-5, 2, 0), v3(1, 0, 0), 0, 10}, 0}};
+    for (int i = 0; i < 4; i++) {
+        csg_counters counters = {0, 0, 0, 0, 0};
+        assert_int_equal(csg_any_hit_counted(t, &cases[i].ray, &scratch, &counters),
+                         cases[i].blocked);
+        if (counters.queries > 2)
+            fail_msg("segment %d: %llu queries", i, (unsigned long long)counters.queries);
+        arena_reset(&scratch);
+    }
+    arena_free(&scratch);
+    csg_tree_free(t);
+}
+
 /* A ray onto the face that a box cuts into a wide union: difference() {
  * union() { 200 overlapping spheres in a row along x }; a box over the
  * first half }. Along the row the union is one long span, so a ray that
@@ -2613,6 +2649,7 @@ int main(void)
         cmocka_unit_test(test_cut_face_first_hit),
         cmocka_unit_test(test_first_hit_tests_each_leaf_once),
         cmocka_unit_test(test_subtrahend_beside_costs_no_merge),
+        cmocka_unit_test(test_any_hit_queries),
         cmocka_unit_test(test_builder_takes_buffer),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

@@ -1714,19 +1714,13 @@ int csg_any_hit_at(const csg_tree *t, const csg_ray *r, double time, arena *scra
         return 0;
     if (!blocked && !overlaps(all, r->tmin, r->tmax))
         return 0;
-    /* The solid meets the segment. From a start outside it, that means a
-     * surface lies in between; from a start inside (rare for shadow rays,
-     * which leave a surface on its outer side), only if the segment gets
-     * out. Membership at the start needs only the operands around it. */
-    csg_ray start = *r;
-    start.tmax = r->tmin;
-    if (!run(t, &start, time, scratch, counters, EVAL_ALL, &all, &blocked))
-        return 0;
-    int inside = 0;
-    for (uint32_t k = 0; k < all.n && !inside; k++)
-        inside = all.v[k].in.t <= r->tmin && all.v[k].out.t > r->tmin;
-    if (!inside)
-        return 1;
+    /* The solid meets the segment. From a start outside it, a surface lies
+     * in between: the segment's first crossing, where it enters. From a
+     * start inside (a shadow ray from the inner face of a glass solid, on
+     * the side the ray came from), only if the segment gets out: its first
+     * crossing is then the exit. Either way the segment is blocked when it
+     * has a first crossing, one query, where asking first whether the start
+     * lies inside cost a second. */
     csg_hit hit;
     return csg_first_hit_at(t, r, time, scratch, counters, &hit);
 }
