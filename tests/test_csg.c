@@ -2420,6 +2420,58 @@ static void test_subtrahend_beside_costs_no_merge(void **state)
     csg_tree_free(t);
 }
 
+/* csg_mechanical's chamfered plate: cube([60, 40, 10], center = true)
+ * cut by three boxes turned 45 degrees about x, y and z, an intersection
+ * of convex leaves alone, which the queries compute in place. The mark is
+ * set there and not on an intersection with a torus in it, and on 2000
+ * rays (through the plate, along its edges, from inside it) the spans
+ * agree with brute force, and the first hit and the blocked segment with
+ * the spans. */
+static void test_flat_intersection(void **state)
+{
+    (void)state;
+    for (int with_torus = 0; with_torus < 2; with_torus++) {
+        csg_builder *b = csg_builder_new();
+        assert_non_null(b);
+        affine id = affine_identity();
+        affine turn[3] = {rotation(v3(1, 0, 0), 0.7853981633974483),
+                          rotation(v3(0, 1, 0), 0.7853981633974483),
+                          rotation(v3(0, 0, 1), 0.7853981633974483)};
+        const vec3 half[3] = {v3(50, 16.2635, 16.2635), v3(23.3345, 50, 23.3345),
+                              v3(32.527, 32.527, 50)};
+        uint32_t kids[4] = {add_box(b, v3(-30, -20, -5), v3(30, 20, 5), &id)};
+        for (int k = 0; k < 3; k++)
+            kids[k + 1] = add_box(b, v3_neg(half[k]), half[k], &turn[k]);
+        if (with_torus) {
+            prim ring = {.kind = PRIM_TORUS};
+            ring.u.torus.major = 30;
+            ring.u.torus.minor = 15;
+            kids[3] = csg_builder_leaf(b, &ring, &id, white, no_loc);
+        }
+        csg_tree *t = finish(b, csg_builder_op(b, CSG_INTERSECTION, kids, 4));
+        assert_int_equal(t->nodes[t->root].op, CSG_INTERSECTION);
+        assert_int_equal(t->nodes[t->root].flat, !with_torus);
+        arena scratch, ref;
+        arena_init(&scratch, 0);
+        arena_init(&ref, 0);
+        rng r = {0x2545f4914f6cdd1dULL + (uint64_t)with_torus};
+        for (int i = 0; i < 2000; i++) {
+            csg_ray ray = random_ray(&r, t);
+            span_list s, want = brute_spans(t, &ray, &ref, NULL);
+            assert_true(csg_spans(t, &ray, &scratch, &s));
+            if (!same_lists(s, want))
+                fail_msg("ray %d: the spans differ from brute force", i);
+            if (!first_hit_agrees(t, &ray, s, &scratch))
+                fail_msg("ray %d: the first hit or the blocked segment disagrees", i);
+            arena_reset(&scratch);
+            arena_reset(&ref);
+        }
+        arena_free(&scratch);
+        arena_free(&ref);
+        csg_tree_free(t);
+    }
+}
+
 /* Whether a segment is blocked, on a sphere of radius 1: from outside
  * through it, from inside out of it (a shadow ray from the inner face of
  * glass), from inside and staying in, and beside it. The answer is the
@@ -2650,6 +2702,7 @@ int main(void)
         cmocka_unit_test(test_first_hit_tests_each_leaf_once),
         cmocka_unit_test(test_subtrahend_beside_costs_no_merge),
         cmocka_unit_test(test_any_hit_queries),
+        cmocka_unit_test(test_flat_intersection),
         cmocka_unit_test(test_builder_takes_buffer),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

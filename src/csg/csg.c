@@ -497,14 +497,43 @@ static int is_flat_union(const csg_tree *t, const csg_node *n)
     return total <= FLAT_SPANS;
 }
 
-/* Marks the unions that take the flat path, once: the queries test the
- * mark instead of walking the operands of every union they meet. Runs
- * after build_bvhs, since a union with a BVH is never flat. */
+/* Whether a leaf's spans depend on the ray alone: the convex kinds, whose
+ * prim_spans ignores the range and the mode (only a mesh's walk uses
+ * them), spends no budget and gives at most one span. */
+static int memo_kind(prim_kind kind)
+{
+    return kind == PRIM_SPHERE || kind == PRIM_BOX || kind == PRIM_CYLINDER ||
+           kind == PRIM_CONVEX;
+}
+
+/* A flat intersection: one without a BVH whose operands are all convex
+ * leaves (a chamfered plate: a box cut by rotated boxes; a rounded boss:
+ * a sphere cut by a box). Its result is at most one span, which the
+ * queries compute in place (eval_convex_cut). */
+static int is_flat_intersection(const csg_tree *t, const csg_node *n)
+{
+    if (n->bvh != CSG_NO_BVH)
+        return 0;
+    const uint32_t *ids = &t->child_ids[n->first_child];
+    for (uint32_t k = 0; k < n->child_count; k++) {
+        const csg_node *child = &t->nodes[ids[k]];
+        if (child->op != CSG_LEAF || !memo_kind(t->leaves[child->leaf].prim.kind))
+            return 0;
+    }
+    return 1;
+}
+
+/* Marks the unions and intersections that take the flat paths, once: the
+ * queries test the mark instead of walking the operands of every node
+ * they meet. Runs after build_bvhs, since a node with a BVH is never
+ * flat. */
 static void mark_flat_unions(csg_tree *t)
 {
     for (uint32_t i = 0; i < t->node_count; i++) {
         csg_node *n = &t->nodes[i];
-        n->flat = n->op == CSG_UNION && is_flat_union(t, n);
+        n->flat = n->op == CSG_UNION          ? is_flat_union(t, n)
+                  : n->op == CSG_INTERSECTION ? is_flat_intersection(t, n)
+                                              : 0;
     }
 }
 
@@ -853,7 +882,7 @@ typedef struct eval_ctx {
     arena *scratch;
     csg_counters *counters; /* never NULL inside a query */
     int oom;
-    int blocked;        /* EVAL_ANY found the solid in the range */
+    int blocked;        /* EVAL_ANY found the solid in the range: BLOCKED_AT or _START */
     uint32_t memo_full; /* bit k: memo[k] holds a leaf's spans */
     leaf_memo memo[LEAF_MEMO];
 } eval_ctx;
@@ -899,15 +928,6 @@ static COLD_PATH void moving_leaf_ray(const csg_leaf *l, double time, vec3 o, ve
     const affine *to_local = leaf_to_local(l, time, &moved);
     *lo = affine_point(to_local, o);
     *ld = affine_vector(to_local, d);
-}
-
-/* Whether a leaf's spans depend on the ray alone: the convex kinds, whose
- * prim_spans ignores the range and the mode (only a mesh's walk uses
- * them), spends no budget and gives at most one span. */
-static int memo_kind(prim_kind kind)
-{
-    return kind == PRIM_SPHERE || kind == PRIM_BOX || kind == PRIM_CYLINDER ||
-           kind == PRIM_CONVEX;
 }
 
 /* The regularised spans of leaf n's primitive over [lo, hi] into out, which
@@ -963,11 +983,18 @@ static span_list eval_leaf(eval_ctx *c, const csg_node *n, double lo, double hi,
     return r;
 }
 
-static int overlaps(span_list s, double lo, double hi)
+/* What EVAL_ANY found: an operand of a union (of the root, or of a union
+ * below it: the mode passes through unions alone) with solid in the range,
+ * and whether that solid holds the range start. Then so does the root: a
+ * union holds what its operands hold, and its regularisation drops only
+ * spans no longer than eps, which an operand's regularised span is not. */
+enum { BLOCKED_AT = 1, BLOCKED_START = 2 };
+
+static int blocker(span_list s, double lo, double hi)
 {
     for (uint32_t k = 0; k < s.n; k++)
         if (s.v[k].out.t > lo && s.v[k].in.t < hi)
-            return 1;
+            return s.v[k].in.t <= lo ? BLOCKED_START : BLOCKED_AT;
     return 0;
 }
 
@@ -1028,10 +1055,8 @@ static int visit_union(eval_ctx *c, void *state, uint32_t id, double *lo, double
     span_list s = eval(c, id, *lo, *hi, u->mode == EVAL_ANY ? EVAL_ANY : EVAL_ALL);
     if (c->blocked || c->oom)
         return 0;
-    if (u->mode == EVAL_ANY && overlaps(s, *lo, *hi)) {
-        c->blocked = 1;
+    if (u->mode == EVAL_ANY && (c->blocked = blocker(s, *lo, *hi)))
         return 0;
-    }
     u->acc = keep(c, u->start, combine(c, SPAN_UNION, u->acc, s));
     if (c->oom)
         return 0;
@@ -1096,10 +1121,8 @@ static uint32_t flat_union_pass(eval_ctx *c, const csg_node *n, double lo, doubl
             if (c->oom || c->blocked)
                 return 0;
         }
-        if (mode == EVAL_ANY && overlaps(s, lo, hi)) {
-            c->blocked = 1;
+        if (mode == EVAL_ANY && (c->blocked = blocker(s, lo, hi)))
             return 0;
-        }
         if (s.n == 0) {
             arena_restore(c->scratch, mark);
             continue;
@@ -1378,10 +1401,52 @@ static span_list cut_operands(eval_ctx *c, const csg_node *n, span_list first,
     return c->oom ? no_spans : s.acc;
 }
 
+/* A flat intersection n over [lo, hi] (is_flat_intersection): eval_cut's
+ * steps, box test for box test and leaf for leaf, with the running span in
+ * place of a list in scratch. Each step is span_combine's intersection of
+ * two single spans (intersect_one): the later entry, the earlier exit (on
+ * a tie, the running span's exit and the operand's entry), empty unless
+ * longer than eps; then the range narrows to it, as visit_cut's does. */
+static COLD_PATH span_list eval_convex_cut(eval_ctx *c, const csg_node *n, double lo,
+                                           double hi)
+{
+    const uint32_t *ids = &c->tree->child_ids[n->first_child];
+    span acc, b;
+    for (uint32_t k = 0; k < n->child_count; k++) {
+        const csg_node *child = &c->tree->nodes[ids[k]];
+        c->counters->nodes++;
+        double t0 = lo - c->eps, t1 = hi + c->eps;
+        if (!bbox_ray(&child->bounds, c->o, c->inv_d, &t0, &t1))
+            return no_spans;
+        if (!leaf_spans(c, child, lo, hi, EVAL_ALL, k ? &b : &acc, 1))
+            return no_spans;
+        if (k > 0) {
+            c->counters->span_ops++;
+            span_end in = acc.in.t <= b.in.t ? b.in : acc.in;
+            span_end out = acc.out.t <= b.out.t ? acc.out : b.out;
+            if (!(out.t - in.t > c->eps))
+                return no_spans;
+            acc.in = in;
+            acc.out = out;
+        }
+        lo = fmax(lo, acc.in.t);
+        hi = fmin(hi, acc.out.t);
+    }
+    span_list r = {arena_alloc(c->scratch, sizeof(span)), 1};
+    if (!r.v) {
+        c->oom = 1;
+        return no_spans;
+    }
+    r.v[0] = acc;
+    return r;
+}
+
 /* Intersection or difference n over [lo, hi]: the first operand in full,
  * the others only where it lies. */
 static span_list eval_cut(eval_ctx *c, const csg_node *n, double lo, double hi)
 {
+    if (n->flat)
+        return eval_convex_cut(c, n, lo, hi);
     if (cuts_first(c, n))
         return eval_cut_free(c, n, lo, hi);
     arena_mark start = arena_save(c->scratch);
@@ -1712,15 +1777,26 @@ int csg_any_hit_at(const csg_tree *t, const csg_ray *r, double time, arena *scra
     int blocked;
     if (!run(t, r, time, scratch, counters, EVAL_ANY, &all, &blocked))
         return 0;
-    if (!blocked && !overlaps(all, r->tmin, r->tmax))
+    if (!blocked)
+        blocked = blocker(all, r->tmin, r->tmax);
+    if (!blocked)
         return 0;
-    /* The solid meets the segment. From a start outside it, a surface lies
-     * in between: the segment's first crossing, where it enters. From a
-     * start inside (a shadow ray from the inner face of a glass solid, on
-     * the side the ray came from), only if the segment gets out: its first
-     * crossing is then the exit. Either way the segment is blocked when it
-     * has a first crossing, one query, where asking first whether the start
-     * lies inside cost a second. */
+    /* The solid meets the segment. From a start outside it, that means a
+     * surface lies in between; from a start inside (a shadow ray from the
+     * inner face of a glass solid, on the side the ray came from), only if
+     * the segment gets out. Membership at the start needs only the
+     * operands around it, unless the blocker already holds the start. */
+    int inside = blocked == BLOCKED_START;
+    if (!inside) {
+        csg_ray start = *r;
+        start.tmax = r->tmin;
+        if (!run(t, &start, time, scratch, counters, EVAL_ALL, &all, &blocked))
+            return 0;
+        for (uint32_t k = 0; k < all.n && !inside; k++)
+            inside = all.v[k].in.t <= r->tmin && all.v[k].out.t > r->tmin;
+        if (!inside)
+            return 1;
+    }
     csg_hit hit;
     return csg_first_hit_at(t, r, time, scratch, counters, &hit);
 }

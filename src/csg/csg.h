@@ -60,7 +60,7 @@ typedef struct csg_node {
     uint32_t bvh; /* root in bvh_nodes over the union's children or the
                      difference's subtrahends; CSG_NO_BVH when none */
     bbox bounds;  /* world bounds */
-    int flat;     /* CSG_UNION: small enough for the queries' flat path (csg.c) */
+    int flat;     /* CSG_UNION, CSG_INTERSECTION: takes the queries' flat path (csg.c) */
 } csg_node;
 
 #define CSG_NO_BVH UINT32_MAX
