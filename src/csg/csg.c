@@ -959,7 +959,11 @@ static uint32_t leaf_spans(eval_ctx *c, const csg_node *n, double lo, double hi,
     c->counters->prim_tests++;
     uint32_t count = prim_spans_range(&l->prim, n->leaf, o, d, lo, hi, c->eps,
                                       mode != EVAL_ALL, out, cap);
-    count = span_regularize(out, count, c->eps);
+    /* One span (every convex leaf's) regularises to itself or to nothing. */
+    if (count == 1)
+        count = out[0].out.t - out[0].in.t > c->eps;
+    else
+        count = span_regularize(out, count, c->eps);
     if (memo && count <= 1) {
         c->memo_full |= 1u << slot;
         m->leaf = n->leaf;
@@ -1115,7 +1119,9 @@ static uint32_t flat_union_pass(eval_ctx *c, const csg_node *n, double lo, doubl
             double t0 = lo - c->eps, t1 = hi + c->eps;
             if (!bbox_ray(&child->bounds, c->o, c->inv_d, &t0, &t1))
                 continue;
-            s.n = leaf_spans(c, child, lo, hi, operand_mode, leaf, FLAT_LEAF_SPANS);
+            /* The first operand with spans writes them in place. */
+            s.v = count == 0 ? acc : leaf;
+            s.n = leaf_spans(c, child, lo, hi, operand_mode, s.v, FLAT_LEAF_SPANS);
         } else {
             s = eval(c, ids[k], lo, hi, operand_mode);
             if (c->oom || c->blocked)
@@ -1133,7 +1139,8 @@ static uint32_t flat_union_pass(eval_ctx *c, const csg_node *n, double lo, doubl
             return 0;
         }
         if (count == 0) {
-            memcpy(acc, s.v, s.n * sizeof(span));
+            if (s.v != acc)
+                memcpy(acc, s.v, s.n * sizeof(span));
             count = s.n;
         } else {
             c->counters->span_ops++;
