@@ -1192,16 +1192,11 @@ static COLD_PATH int eval_flat_union(eval_ctx *c, const csg_node *n, double lo, 
 typedef int (*operand_visit)(eval_ctx *c, void *state, uint32_t id, double *lo,
                              double *hi);
 
-static void for_operands(eval_ctx *c, const csg_node *n, uint32_t skip, double lo,
-                         double hi, operand_visit visit, void *state)
+/* for_operands through n's BVH. */
+static INLINE_PATH void walk_operands(eval_ctx *c, const csg_node *n, double lo,
+                                      double hi, operand_visit visit, void *state)
 {
     const uint32_t *ids = c->tree->child_ids;
-    if (n->bvh == CSG_NO_BVH) {
-        for (uint32_t k = skip; k < n->child_count; k++)
-            if (!visit(c, state, ids[n->first_child + k], &lo, &hi))
-                return;
-        return;
-    }
     uint32_t stack[BVH_MAX_DEPTH];
     uint32_t sp = 0;
     stack[sp++] = n->bvh;
@@ -1227,6 +1222,42 @@ static void for_operands(eval_ctx *c, const csg_node *n, uint32_t skip, double l
         stack[sp++] = far;
         stack[sp++] = near;
     }
+}
+
+static int visit_cut(eval_ctx *c, void *state, uint32_t id, double *lo, double *hi);
+
+/* The BVH walks, one per visitor, which each inlines. Each has its own
+ * frame (COLD_PATH, though they are not rare): the walk's stack of
+ * BVH_MAX_DEPTH entries then sits in the query recursion only at the
+ * nodes that have a BVH, not in the frames of eval and eval_cut at every
+ * level of a deep tree. */
+static COLD_PATH void walk_union_operands(eval_ctx *c, const csg_node *n, double lo,
+                                          double hi, void *state)
+{
+    walk_operands(c, n, lo, hi, visit_union, state);
+}
+
+static COLD_PATH void walk_cut_operands(eval_ctx *c, const csg_node *n, double lo,
+                                        double hi, void *state)
+{
+    walk_operands(c, n, lo, hi, visit_cut, state);
+}
+
+static INLINE_PATH void for_operands(eval_ctx *c, const csg_node *n, uint32_t skip,
+                                     double lo, double hi, operand_visit visit,
+                                     void *state)
+{
+    if (n->bvh != CSG_NO_BVH) {
+        if (visit == visit_union)
+            walk_union_operands(c, n, lo, hi, state);
+        else
+            walk_cut_operands(c, n, lo, hi, state);
+        return;
+    }
+    const uint32_t *ids = c->tree->child_ids;
+    for (uint32_t k = skip; k < n->child_count; k++)
+        if (!visit(c, state, ids[n->first_child + k], &lo, &hi))
+            return;
 }
 
 typedef struct cut_state {
