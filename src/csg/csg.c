@@ -1442,9 +1442,8 @@ static span_list cut_operands(eval_ctx *c, const csg_node *n, span_list first,
 /* A flat intersection n over [lo, hi] (is_flat_intersection): eval_cut's
  * steps, box test for box test and leaf for leaf, with the running span in
  * place of a list in scratch. Each step is span_combine's intersection of
- * two single spans (intersect_one): the later entry, the earlier exit (on
- * a tie, the running span's exit and the operand's entry), empty unless
- * longer than eps; then the range narrows to it, as visit_cut's does. */
+ * two single spans (span_intersect_pair); then the range narrows to it, as
+ * visit_cut's does. */
 static COLD_PATH span_list eval_convex_cut(eval_ctx *c, const csg_node *n, double lo,
                                            double hi)
 {
@@ -1460,12 +1459,10 @@ static COLD_PATH span_list eval_convex_cut(eval_ctx *c, const csg_node *n, doubl
             return no_spans;
         if (k > 0) {
             c->counters->span_ops++;
-            span_end in = acc.in.t <= b.in.t ? b.in : acc.in;
-            span_end out = acc.out.t <= b.out.t ? acc.out : b.out;
-            if (!(out.t - in.t > c->eps))
+            const span_end *in, *out;
+            if (!span_intersect_pair(&acc, &b, c->eps, &in, &out))
                 return no_spans;
-            acc.in = in;
-            acc.out = out;
+            acc = (span){*in, *out};
         }
         lo = fmax(lo, acc.in.t);
         hi = fmin(hi, acc.out.t);
@@ -1539,10 +1536,10 @@ static COLD_PATH span_list eval_cut_first(eval_ctx *c, const csg_node *n, double
 {
     if (!plain && cuts_first(c, n))
         return eval_cut_first_free(c, n, lo, hi);
-    /* A first operand that is one leaf or a flat union costs about as much
-     * in full as asked for its first crossing: it is evaluated once, in
-     * full, and each window cuts its spans there, rather than evaluating
-     * it again per window. */
+    /* A first operand that is one leaf, or a flat union or intersection,
+     * costs about as much in full as asked for its first crossing: it is
+     * evaluated once, in full, and each window cuts its spans there,
+     * rather than evaluating it again per window. */
     const csg_node *first = &c->tree->nodes[c->tree->child_ids[n->first_child]];
     int whole = first->op == CSG_LEAF || first->flat;
     span_list a = eval(c, c->tree->child_ids[n->first_child], lo, hi,

@@ -87,21 +87,15 @@ uint32_t span_merge(span_op op, span_list a, span_list b, span *out)
     return 0;
 }
 
-/* span_combine of two single spans by intersection (two convex leaves),
- * without the sweep. Only [later entry, earlier exit] can come out of it.
- * When that is longer than eps, both entries come before both exits: the
- * sweep is inside both from the second entry it takes (on a tie, b's,
- * since it takes a's boundary first) to the first exit (on a tie, a's),
- * and regularisation keeps the span. Otherwise whatever the sweep emits is
- * no longer than eps and regularisation removes it. A result that is one
- * of the operands is returned as it is, like span_combine's shortcuts. */
+/* span_combine of two single spans by intersection (span_intersect_pair).
+ * A result that is one of the operands is returned as it is, like
+ * span_combine's shortcuts. */
 static span_list intersect_one(span_list a, span_list b, double eps, arena *scratch,
                                int *oom)
 {
     span_list r = {NULL, 0};
-    const span_end *in = a.v[0].in.t <= b.v[0].in.t ? &b.v[0].in : &a.v[0].in;
-    const span_end *out = a.v[0].out.t <= b.v[0].out.t ? &a.v[0].out : &b.v[0].out;
-    if (!(out->t - in->t > eps))
+    const span_end *in, *out;
+    if (!span_intersect_pair(&a.v[0], &b.v[0], eps, &in, &out))
         return r;
     if (in == &a.v[0].in && out == &a.v[0].out)
         return a;

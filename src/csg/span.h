@@ -56,6 +56,24 @@ span_list span_combine(span_op op, span_list a, span_list b, double eps, arena *
  * a or b; returns their count. Ties may leave zero-length spans or gaps. */
 uint32_t span_merge(span_op op, span_list a, span_list b, span *out);
 
+/* span_combine's intersection of two single spans a and b (two convex
+ * leaves), without the sweep: sets *in to the later entry and *out to the
+ * earlier exit and returns 1, or returns 0 when that is no longer than eps.
+ * Only [later entry, earlier exit] can come out of the sweep. When that is
+ * longer than eps, both entries come before both exits: the sweep is
+ * inside both from the second entry it takes (on a tie, b's, since it
+ * takes a's boundary first) to the first exit (on a tie, a's), and
+ * regularisation keeps the span. Otherwise whatever the sweep emits is no
+ * longer than eps and regularisation removes it. Inline: the queries'
+ * flat intersections call it per operand. */
+static inline int span_intersect_pair(const span *a, const span *b, double eps,
+                                      const span_end **in, const span_end **out)
+{
+    *in = a->in.t <= b->in.t ? &b->in : &a->in;
+    *out = a->out.t <= b->out.t ? &a->out : &b->out;
+    return (*out)->t - (*in)->t > eps;
+}
+
 /* Applies the regularisation rule above in place; returns the new count. */
 uint32_t span_regularize(span *v, uint32_t n, double eps);
 
