@@ -102,6 +102,7 @@ typedef struct builder {
     uint32_t root_id;                     /* the result of the first '!' node */
     /* resize matrices measured so far (build_hull.h) */
     build_resize_cache *resize_cache;
+    build_imports imports; /* the files the imports read so far */
     /* 2D children ignored in 3D operations, warned of when their parent
      * ends (flush_ignored) */
     const model_node **ignored;
@@ -134,7 +135,8 @@ static build_ctx context(builder *b, int emit, sc_error *note)
                    .notes = emit ? &b->warnings : NULL,
                    .strict = b->strict,
                    .triangles_left = &b->triangles_left,
-                   .max_triangles = b->max_triangles};
+                   .max_triangles = b->max_triangles,
+                   .imports = &b->imports};
     return c;
 }
 
@@ -1077,6 +1079,7 @@ static sc_status build_parts(builder *b)
         sub.error = &error;
         sub.faithful = b->faithful;
         sub.resize_cache = b->resize_cache;
+        sub.imports = b->imports;
         sub.csg = csg_builder_new();
         sub.shading = shading_new();
         uint32_t *results = calloc(count, sizeof *results);
@@ -1097,6 +1100,7 @@ static sc_status build_parts(builder *b)
                 done++;
         }
         b->resize_cache = sub.resize_cache;
+        b->imports = sub.imports;
         free(sub.ids);
         free(sub.frames);
         free(sub.ignored);
@@ -1174,6 +1178,7 @@ static sc_status build_scene_of(const model *m, model *owned, void *spare,
         st = build_parts(&b);
     free(b.marks);
     build_resize_cache_free(b.resize_cache);
+    build_imports_free(&b.imports);
     /* Nothing below reads the model: the builder, the shading record and
      * the warnings hold copies of what they need. */
     model_free(owned);
