@@ -568,6 +568,26 @@ for mode in "" --faithful; do
     done
 done
 
+# ---- a bad polygon that a 3D operation ignores ----
+# OpenSCAD 2021.01 (openscad -o /abs/x.stl x.csg) prints a polygon's error
+# "Unable to convert points[2] = [1, "a"] to a vec2 of numbers" also where
+# a 3D operation ignores the polygon, before "Ignoring 2D child object for
+# 3D operation", and no "Mixing 2D and 3D objects": the polygon is empty.
+printf 'union() {\n\tcube(size = [1, 1, 1], center = false);\n\tpolygon(points = [[0, 0], [1, 0], [1, "a"]]);\n}\n' >empty2d_bad.csg
+for mode in "" --faithful; do
+    # shellcheck disable=SC2086
+    {
+        warns empty2d_bad.csg 'empty2d_bad.csg:3:36: warning: Unable to convert points[2] = [1, "a"] to a vec2 of numbers; the polygon is empty, as OpenSCAD leaves it out (--strict makes it an error)
+empty2d_bad.csg:3:2: warning: Ignoring 2D child object for 3D operation' $mode
+        same empty2d_bad.csg cube_ref.csg $mode
+        check
+        "$bin" render empty2d_bad.csg -o strict.png -q --strict $mode 2>err.txt &&
+            fail "empty2d_bad.csg --strict $mode: exit 0"
+        [ "$(cat err.txt)" = "empty2d_bad.csg:3:36: error: wrong type for argument 'points' of 'polygon' (expected a vector of [x, y] points)" ] ||
+            fail "empty2d_bad.csg --strict $mode: $(cat err.txt)"
+    }
+done
+
 # ---- multmatrix with nan or inf: OpenSCAD removes the object ----
 # OpenSCAD 2021.01 exports multmatrix([[0/0, ...]]) and [[1/0, ...]] with
 # nan and inf; rendering the .scad (openscad -o x.stl) it warns
