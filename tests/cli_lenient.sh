@@ -588,6 +588,25 @@ empty2d_bad.csg:3:2: warning: Ignoring 2D child object for 3D operation' $mode
     }
 done
 
+# The same polygon as a 2D child of projection, which leaves it out:
+# OpenSCAD 2021.01 still prints its error (and, for a direct child of
+# projection without cut, nothing else); --strict makes it the error.
+printf 'linear_extrude(height = 1) {\n\tprojection(cut = false) {\n\t\tcube(size = [1, 1, 1], center = false);\n\t\tpolygon(points = [[0, 0], [1, 0], [1, "a"]]);\n\t}\n}\n' >proj_bad2d.csg
+printf 'linear_extrude(height = 1) {\n\tprojection(cut = false) {\n\t\tcube(size = [1, 1, 1], center = false);\n\t}\n}\n' >proj_bad2d_ref.csg
+for mode in "" --faithful; do
+    # shellcheck disable=SC2086
+    {
+        warns proj_bad2d.csg 'proj_bad2d.csg:4:37: warning: Unable to convert points[2] = [1, "a"] to a vec2 of numbers; the polygon is empty, as OpenSCAD leaves it out (--strict makes it an error)
+proj_bad2d.csg:4:3: warning: 2D object '"'"'polygon'"'"' inside projection is ignored (as in OpenSCAD)' $mode
+        same proj_bad2d.csg proj_bad2d_ref.csg $mode
+        check
+        "$bin" render proj_bad2d.csg -o strict.png -q --strict $mode 2>err.txt &&
+            fail "proj_bad2d.csg --strict $mode: exit 0"
+        [ "$(cat err.txt)" = "proj_bad2d.csg:4:37: error: wrong type for argument 'points' of 'polygon' (expected a vector of [x, y] points)" ] ||
+            fail "proj_bad2d.csg --strict $mode: $(cat err.txt)"
+    }
+done
+
 # ---- multmatrix with nan or inf: OpenSCAD removes the object ----
 # OpenSCAD 2021.01 exports multmatrix([[0/0, ...]]) and [[1/0, ...]] with
 # nan and inf; rendering the .scad (openscad -o x.stl) it warns

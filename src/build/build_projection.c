@@ -816,6 +816,15 @@ static sc_status walk_node(pwalk *w, const model_node *n, const affine *m, int d
     if (n->pending && !flat(n))
         return build_pending(c, n);
     if (flat(n)) {
+        /* checked through the 2D engine for its warnings (a polygon's bad
+         * point, which OpenSCAD 2021.01 prints as it evaluates the child
+         * it then leaves out), then left out */
+        twod_region r;
+        twod_init(&r);
+        sc_status st = build_twod_main(c, n, &r);
+        twod_free(&r);
+        if (st != SC_OK)
+            return st;
         if (c->note && !c->note->message[0])
             err_set(c->note, SC_OK, &n->loc,
                     "2D object '%s' inside projection is ignored (as in OpenSCAD)",
