@@ -781,8 +781,8 @@ static void test_import(void **state)
 
 /* An import is read once per build, in both modes, also where a hull or
  * minkowski checks that it is closed before it takes it (a union of
- * several solids, a minkowski); what is built and warned of is as
- * before. */
+ * several solids, a minkowski) and where resize measures it before it is
+ * built; what is built and warned of is as before. */
 static void test_import_read_once(void **state)
 {
     (void)state;
@@ -808,6 +808,12 @@ static void test_import_read_once(void **state)
          "minkowski() { import(\"tet.off\"); cube(1); }",
          {2, 1, 0.5},
          {2.5, 2.5, 2.5}},
+        /* measured (in the model's own copy of resize's children), then
+         * built */
+        {"notch.stl",
+         "resize(newsize = [4, 4, 4]) import(\"notch.stl\");",
+         {3, 1, 1},
+         {2, 2, 3}},
         /* at the top: read where it is built */
         {"notch.off", "import(\"notch.off\");", {1, 1, 0.5}, {1, 1, 1.5}},
     };

@@ -25,12 +25,13 @@ typedef struct build_notes {
     size_t left_out;
 } build_notes;
 
-/* The files a build's imports read, by import node (build_mesh.c): each
- * file read and parsed once, and a file of one object merged once in each
- * mode, however many builders take the import (a hull's or minkowski's
- * check that it is closed, then its leaf, then CGAL's faces). The leaf
- * built where an import stands lets its file go. Zeroed to start; freed
- * with build_imports_free (build_mesh.h). */
+/* The files a build's imports read, by import (its node, or the copy a
+ * resize's measure walks: build_mesh.c): each file read and parsed once,
+ * and a file of one object merged once in each mode, however many
+ * builders take the import (a hull's or minkowski's check that it is
+ * closed, then its leaf, then CGAL's faces; resize's measure, then the
+ * leaf). The leaf built where an import stands lets its file go. Zeroed to
+ * start; freed with build_imports_free (build_mesh.h). */
 typedef struct build_imports {
     struct build_import_file *items; /* open addressing on the import's address */
     size_t count, cap;               /* cap is 0 or a power of two */

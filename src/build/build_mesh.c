@@ -2036,7 +2036,7 @@ sc_status build_import_unsupported(const build_ctx *c, const sc_location *loc,
 /* A file an import read: parsed, and for one object its faces merged as
  * each mode merges them. */
 struct build_import_file {
-    const model_import *import; /* the key; NULL in a free slot */
+    const model_import *import; /* the key (same_import); NULL in a free slot */
     int read;                   /* m or a holds the file */
     mesh_file m;                /* STL, OFF */
     amf_mesh a;                 /* AMF, 3MF */
@@ -2063,14 +2063,27 @@ void build_imports_free(build_imports *imports)
     memset(imports, 0, sizeof *imports);
 }
 
+/* Whether a and b are one import of the model file: the same node, or the
+ * copy of it the lowering makes in another context (resize's children
+ * are lowered again to be measured: model.h), which keeps its position
+ * and file name. */
+static int same_import(const model_import *a, const model_import *b)
+{
+    const sc_location *p = &a->file_loc, *q = &b->file_loc;
+    return a == b ||
+           (p->line == q->line && p->column == q->column &&
+            (p->file == q->file || (p->file && q->file && !strcmp(p->file, q->file))) &&
+            !strcmp(a->file, b->file) && a->format == b->format);
+}
+
 static size_t import_slot(const struct build_import_file *items, size_t cap,
                           const model_import *import)
 {
-    size_t h = (size_t)(uintptr_t)import;
+    size_t h = (size_t)import->file_loc.line * 1000003u + (size_t)import->file_loc.column;
     h ^= h >> 17;
     h *= (size_t)0x9e3779b97f4a7c15ull;
     size_t i = (h ^ (h >> 29)) & (cap - 1);
-    while (items[i].import && items[i].import != import)
+    while (items[i].import && !same_import(items[i].import, import))
         i = (i + 1) & (cap - 1);
     return i;
 }
