@@ -568,6 +568,89 @@ for mode in "" --faithful; do
     done
 done
 
+# ---- a bad polygon that a 3D operation ignores ----
+# OpenSCAD 2021.01 (openscad -o /abs/x.stl x.csg) prints a polygon's error
+# "Unable to convert points[2] = [1, "a"] to a vec2 of numbers" also where
+# a 3D operation ignores the polygon, before "Ignoring 2D child object for
+# 3D operation", and no "Mixing 2D and 3D objects": the polygon is empty.
+printf 'union() {\n\tcube(size = [1, 1, 1], center = false);\n\tpolygon(points = [[0, 0], [1, 0], [1, "a"]]);\n}\n' >empty2d_bad.csg
+for mode in "" --faithful; do
+    # shellcheck disable=SC2086
+    {
+        warns empty2d_bad.csg 'empty2d_bad.csg:3:36: warning: Unable to convert points[2] = [1, "a"] to a vec2 of numbers; the polygon is empty, as OpenSCAD leaves it out (--strict makes it an error)
+empty2d_bad.csg:3:2: warning: Ignoring 2D child object for 3D operation' $mode
+        same empty2d_bad.csg cube_ref.csg $mode
+        check
+        "$bin" render empty2d_bad.csg -o strict.png -q --strict $mode 2>err.txt &&
+            fail "empty2d_bad.csg --strict $mode: exit 0"
+        [ "$(cat err.txt)" = "empty2d_bad.csg:3:36: error: wrong type for argument 'points' of 'polygon' (expected a vector of [x, y] points)" ] ||
+            fail "empty2d_bad.csg --strict $mode: $(cat err.txt)"
+    }
+done
+
+# OpenSCAD 2021.01 says that an operation mixes 2D and 3D objects at its
+# first ignored 2D child that is not empty (isValidDim), before every
+# "Ignoring": not for square(0) nor for a polygon emptied by a bad point;
+# the same in a hull, in a boolean CGAL evaluates for it, and in a hull
+# inside projection (openscad -o /abs/x.stl x.csg prints exactly these).
+cube1='cube(size = [1, 1, 1], center = false);'
+bad2d='polygon(points = [[0, 0], [1, 0], [1, "a"]]);'
+printf 'union() {\n\t%s\n\tsquare(size = [0, 0], center = false);\n}\n' "$cube1" >e_zero.csg
+printf 'union() {\n\t%s\n\t%s\n\tsquare(size = [1, 1], center = false);\n}\n' "$cube1" "$bad2d" >e_then.csg
+printf 'hull() {\n\t%s\n\t%s\n}\n' "$cube1" "$bad2d" >e_hull.csg
+printf 'hull() {\n\t%s\n\t%s\n\tsquare(size = [1, 1], center = false);\n}\n' "$cube1" "$bad2d" >e_hull_then.csg
+printf 'hull() {\n\tintersection() {\n\t\t%s\n\t\t%s\n\t}\n}\n' "$cube1" "$bad2d" >e_nef.csg
+printf 'linear_extrude(height = 1) {\n\tprojection(cut = false) {\n\t\thull() {\n\t\t\t%s\n\t\t\t%s\n\t\t}\n\t}\n}\n' "$cube1" "$bad2d" >e_proj_hull.csg
+printf 'linear_extrude(height = 1) {\n\tprojection(cut = false) {\n\t\t%s\n\t}\n}\n' "$cube1" >e_proj_hull_ref.csg
+unable() { # unable MODEL LINE COLUMN: the bad point's warning
+    printf '%s:%s:%s: warning: Unable to convert points[2] = [1, "a"] to a vec2 of numbers; the polygon is empty, as OpenSCAD leaves it out (--strict makes it an error)' "$@"
+}
+for mode in "" --faithful; do
+    # shellcheck disable=SC2086
+    {
+        warns e_zero.csg "e_zero.csg:3:2: warning: Ignoring 2D child object for 3D operation" $mode
+        same e_zero.csg cube_ref.csg $mode
+        warns e_then.csg "$(unable e_then.csg 3 36)
+e_then.csg:4:2: warning: Mixing 2D and 3D objects is not supported
+e_then.csg:3:2: warning: Ignoring 2D child object for 3D operation
+e_then.csg:4:2: warning: Ignoring 2D child object for 3D operation" $mode
+        same e_then.csg cube_ref.csg $mode
+        warns e_hull.csg "$(unable e_hull.csg 3 36)
+e_hull.csg:3:2: warning: Ignoring 2D child object for 3D operation" $mode
+        same e_hull.csg cube_ref.csg $mode
+        warns e_hull_then.csg "$(unable e_hull_then.csg 3 36)
+e_hull_then.csg:4:2: warning: Mixing 2D and 3D objects is not supported
+e_hull_then.csg:3:2: warning: Ignoring 2D child object for 3D operation
+e_hull_then.csg:4:2: warning: Ignoring 2D child object for 3D operation" $mode
+        same e_hull_then.csg cube_ref.csg $mode
+        warns e_nef.csg "$(unable e_nef.csg 4 37)
+e_nef.csg:4:3: warning: Ignoring 2D child object for 3D operation
+e_nef.csg: warning: the model is empty (nothing to render)" $mode
+        warns e_proj_hull.csg "$(unable e_proj_hull.csg 5 38)
+e_proj_hull.csg:5:4: warning: Ignoring 2D child object for 3D operation" $mode
+        same e_proj_hull.csg e_proj_hull_ref.csg $mode
+    }
+done
+
+# The same polygon as a 2D child of projection, which leaves it out:
+# OpenSCAD 2021.01 still prints its error (and, for a direct child of
+# projection without cut, nothing else); --strict makes it the error.
+printf 'linear_extrude(height = 1) {\n\tprojection(cut = false) {\n\t\tcube(size = [1, 1, 1], center = false);\n\t\tpolygon(points = [[0, 0], [1, 0], [1, "a"]]);\n\t}\n}\n' >proj_bad2d.csg
+printf 'linear_extrude(height = 1) {\n\tprojection(cut = false) {\n\t\tcube(size = [1, 1, 1], center = false);\n\t}\n}\n' >proj_bad2d_ref.csg
+for mode in "" --faithful; do
+    # shellcheck disable=SC2086
+    {
+        warns proj_bad2d.csg 'proj_bad2d.csg:4:37: warning: Unable to convert points[2] = [1, "a"] to a vec2 of numbers; the polygon is empty, as OpenSCAD leaves it out (--strict makes it an error)
+proj_bad2d.csg:4:3: warning: 2D object '"'"'polygon'"'"' inside projection is ignored (as in OpenSCAD)' $mode
+        same proj_bad2d.csg proj_bad2d_ref.csg $mode
+        check
+        "$bin" render proj_bad2d.csg -o strict.png -q --strict $mode 2>err.txt &&
+            fail "proj_bad2d.csg --strict $mode: exit 0"
+        [ "$(cat err.txt)" = "proj_bad2d.csg:4:37: error: wrong type for argument 'points' of 'polygon' (expected a vector of [x, y] points)" ] ||
+            fail "proj_bad2d.csg --strict $mode: $(cat err.txt)"
+    }
+done
+
 # ---- multmatrix with nan or inf: OpenSCAD removes the object ----
 # OpenSCAD 2021.01 exports multmatrix([[0/0, ...]]) and [[1/0, ...]] with
 # nan and inf; rendering the .scad (openscad -o x.stl) it warns

@@ -20,7 +20,24 @@
 #include "build/build.h"
 #include "build/build_mesh.h"
 #include "build/scene.h"
+#include "formats/file.h"
 #include "test_util.h"
+
+/* Every file_read of the library comes through here (the test links with
+ * -Wl,--wrap=file_read): reads counts the reads of files whose name ends
+ * in counted. */
+char *__real_file_read(const char *path, size_t limit, size_t *size, const char **why);
+char *__wrap_file_read(const char *path, size_t limit, size_t *size, const char **why);
+static const char *counted = "";
+static int reads;
+
+char *__wrap_file_read(const char *path, size_t limit, size_t *size, const char **why)
+{
+    size_t n = strlen(path), k = strlen(counted);
+    if (k && n >= k && strcmp(path + n - k, counted) == 0)
+        reads++;
+    return __real_file_read(path, limit, size, why);
+}
 
 static sc_scene *load_with(const char *name, const char *text, int faithful)
 {
@@ -762,6 +779,78 @@ static void test_import(void **state)
     sc_scene_release(s);
 }
 
+/* An import is read once per build, in both modes, also where a hull or
+ * minkowski checks that it is closed before it takes it (a union of
+ * several solids, a minkowski) and where resize measures it before it is
+ * built; what is built and warned of is as before. */
+static void test_import_read_once(void **state)
+{
+    (void)state;
+    char dir[512], model[600];
+    snprintf(dir, sizeof dir, "%s", work());
+    write_notch_files();
+    /* a convex file: a tetrahedron */
+    static const char tet[] = "OFF\n4 4 0\n0 0 0\n2 0 0\n0 2 0\n0 0 2\n"
+                              "3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n";
+    write_file("tet.off", tet, strlen(tet));
+    snprintf(model, sizeof model, "%s/m.csg", dir);
+    static const struct {
+        const char *file, *text;
+        double inside[3], outside[3];
+    } cases[] = {
+        /* checked as a part of a union, then its corners taken */
+        {"notch.stl",
+         "hull() { group() { import(\"notch.stl\"); cube(1); } }",
+         {1, 1, 1.5},
+         {3, 1, 1}},
+        /* checked as a summand, then summed */
+        {"tet.off",
+         "minkowski() { import(\"tet.off\"); cube(1); }",
+         {2, 1, 0.5},
+         {2.5, 2.5, 2.5}},
+        /* measured (in the model's own copy of resize's children), then
+         * built */
+        {"notch.stl",
+         "resize(newsize = [4, 4, 4]) import(\"notch.stl\");",
+         {3, 1, 1},
+         {2, 2, 3}},
+        /* at the top: read where it is built */
+        {"notch.off", "import(\"notch.off\");", {1, 1, 0.5}, {1, 1, 1.5}},
+    };
+    for (int faithful = 0; faithful < 2; faithful++) {
+        for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+            counted = cases[i].file;
+            reads = 0;
+            sc_scene *s = load_with(model, cases[i].text, faithful);
+            counted = "";
+            assert_int_equal(sc_scene_warning_count(s), 0);
+            assert_true(
+                inside(s, cases[i].inside[0], cases[i].inside[1], cases[i].inside[2]));
+            assert_false(
+                inside(s, cases[i].outside[0], cases[i].outside[1], cases[i].outside[2]));
+            sc_scene_release(s);
+            if (reads != 1)
+                fail_msg("%s (faithful %d): '%s' read %d times", cases[i].text, faithful,
+                         cases[i].file, reads);
+        }
+        /* not closed, in a union under hull: read once, left out with its
+         * warning */
+        counted = "open.stl";
+        reads = 0;
+        char expected[2400];
+        snprintf(expected, sizeof expected,
+                 "imported mesh is not closed (edge (0, 0, 2)-(0, 2, 2) is used by 1 "
+                 "face); left out, as OpenSCAD leaves it out (\"The given mesh is not "
+                 "closed! Unable to convert to CGAL_Nef_Polyhedron.\")");
+        sc_scene *s = load_one_warning(
+            model, "hull() { group() { import(\"open.stl\"); cube(1); } }", faithful, 1,
+            27, expected, 1);
+        counted = "";
+        sc_scene_release(s);
+        assert_int_equal(reads, 1);
+    }
+}
+
 /* linear_extrude in faithful mode of square, circle and polygon children:
  * holes by nesting, circles as OpenSCAD's polygons, unions of children, 2D
  * transforms, centring; a scale builds OpenSCAD's slices, a 2D difference
@@ -1008,6 +1097,7 @@ int main(void)
         cmocka_unit_test(test_face_triangles),
         cmocka_unit_test(test_builder_open_mesh),
         cmocka_unit_test(test_import),
+        cmocka_unit_test(test_import_read_once),
         cmocka_unit_test(test_linear_extrude),
         cmocka_unit_test(test_triangle_budget),
         cmocka_unit_test(test_polyhedron_malformed),

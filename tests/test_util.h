@@ -6,6 +6,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "build/scene.h"
+#include "csg/csg.h"
 #include "spancast/spancast.h"
 
 /* The whole file at path, NUL-terminated (the terminator is not counted in
@@ -96,6 +98,31 @@ static inline sc_scene *test_check_warnings(const char *name, const char *text,
         assert_string_equal(got, i < count ? expected[i] : "(no more warnings)");
     }
     return s;
+}
+
+/* A point, and whether it lies in a scene's solid (csg_inside). */
+typedef struct test_point {
+    double x, y, z;
+    int in;
+} test_point;
+
+/* test_check_warnings in exact and then in faithful mode: in both, exactly
+ * the count warnings expected, and each of the point_count points in the
+ * solid or not as it says. */
+static inline void test_check_warnings_both(const char *name, const char *text,
+                                            const char *const *expected, size_t count,
+                                            const test_point *points, size_t point_count)
+{
+    for (int faithful = 0; faithful <= 1; faithful++) {
+        sc_scene *s = test_check_warnings(name, text, faithful, expected, count);
+        for (size_t i = 0; i < point_count; i++) {
+            const test_point *p = &points[i];
+            if (!csg_inside(scene_tree(s), v3(p->x, p->y, p->z)) != !p->in)
+                fail_msg("faithful %d: (%g, %g, %g) should be %s", faithful, p->x, p->y,
+                         p->z, p->in ? "inside" : "outside");
+        }
+        sc_scene_release(s);
+    }
 }
 
 #endif

@@ -85,6 +85,12 @@ typedef struct part_mark {
     frame parent;
 } part_mark;
 
+/* A 2D child a 3D operation ignores (build_twod_ignored). */
+typedef struct ignored_child {
+    const model_node *node;
+    int empty; /* no outline: OpenSCAD does not say that it mixes 2D and 3D */
+} ignored_child;
+
 typedef struct builder {
     const model *model;
     const char *file; /* for positions */
@@ -102,9 +108,10 @@ typedef struct builder {
     uint32_t root_id;                     /* the result of the first '!' node */
     /* resize matrices measured so far (build_hull.h) */
     build_resize_cache *resize_cache;
+    build_imports imports; /* the files the imports read so far */
     /* 2D children ignored in 3D operations, warned of when their parent
      * ends (flush_ignored) */
-    const model_node **ignored;
+    ignored_child *ignored;
     size_t ignored_count, ignored_cap;
     part_mark *marks; /* the modifier parts met, in file order */
     size_t mark_count, mark_cap;
@@ -134,7 +141,8 @@ static build_ctx context(builder *b, int emit, sc_error *note)
                    .notes = emit ? &b->warnings : NULL,
                    .strict = b->strict,
                    .triangles_left = &b->triangles_left,
-                   .max_triangles = b->max_triangles};
+                   .max_triangles = b->max_triangles,
+                   .imports = &b->imports};
     return c;
 }
 
@@ -559,29 +567,35 @@ static sc_status build_twod_ignored(builder *b, const model_node *n, const frame
     twod_region r;
     twod_init(&r);
     sc_status st = build_twod_main(&c, n, &r);
+    int empty = r.contour_count == 0;
     twod_free(&r);
     if (st != SC_OK || !state->emit)
         return st;
     if (!grow_array((void **)&b->ignored, &b->ignored_cap, b->ignored_count + 1,
                     sizeof *b->ignored))
         return err_nomem(b->error, NULL);
-    b->ignored[b->ignored_count++] = n;
+    b->ignored[b->ignored_count++] = (ignored_child){n, empty};
     return SC_OK;
 }
 
 /* The warnings for the 2D children that frame f ignored, once all its
  * children are built, as OpenSCAD checks dimensions after evaluating the
- * children: the first also says that f mixes them. */
+ * children: first that f mixes them, at the first that is not empty (an
+ * empty one, such as a polygon emptied by a bad point, mixes nothing for
+ * OpenSCAD 2021.01's isValidDim), then each ignored. */
 static sc_status flush_ignored(builder *b, const frame *f)
 {
     sc_status st = SC_OK;
-    for (size_t k = f->first_ignored; st == SC_OK && k < b->ignored_count; k++) {
-        const model_node *n = b->ignored[k];
-        if (k == f->first_ignored)
-            st = warn(b, &n->loc, "Mixing 2D and 3D objects is not supported");
-        if (st == SC_OK)
-            st = warn(b, &n->loc, "Ignoring 2D child object for 3D operation");
+    for (size_t k = f->first_ignored; k < b->ignored_count; k++) {
+        if (!b->ignored[k].empty) {
+            st = warn(b, &b->ignored[k].node->loc,
+                      "Mixing 2D and 3D objects is not supported");
+            break;
+        }
     }
+    for (size_t k = f->first_ignored; st == SC_OK && k < b->ignored_count; k++)
+        st = warn(b, &b->ignored[k].node->loc,
+                  "Ignoring 2D child object for 3D operation");
     b->ignored_count = f->first_ignored;
     return st;
 }
@@ -1077,6 +1091,7 @@ static sc_status build_parts(builder *b)
         sub.error = &error;
         sub.faithful = b->faithful;
         sub.resize_cache = b->resize_cache;
+        sub.imports = b->imports;
         sub.csg = csg_builder_new();
         sub.shading = shading_new();
         uint32_t *results = calloc(count, sizeof *results);
@@ -1097,6 +1112,7 @@ static sc_status build_parts(builder *b)
                 done++;
         }
         b->resize_cache = sub.resize_cache;
+        b->imports = sub.imports;
         free(sub.ids);
         free(sub.frames);
         free(sub.ignored);
@@ -1174,6 +1190,7 @@ static sc_status build_scene_of(const model *m, model *owned, void *spare,
         st = build_parts(&b);
     free(b.marks);
     build_resize_cache_free(b.resize_cache);
+    build_imports_free(&b.imports);
     /* Nothing below reads the model: the builder, the shading record and
      * the warnings hold copies of what they need. */
     model_free(owned);

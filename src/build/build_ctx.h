@@ -25,6 +25,18 @@ typedef struct build_notes {
     size_t left_out;
 } build_notes;
 
+/* The files a build's imports read, by import (its node, or the copy a
+ * resize's measure walks: build_mesh.c): each file read and parsed once,
+ * and a file of one object merged once in each mode, however many
+ * builders take the import (a hull's or minkowski's check that it is
+ * closed, then its leaf, then CGAL's faces; resize's measure, then the
+ * leaf). The leaf built where an import stands lets its file go. Zeroed to
+ * start; freed with build_imports_free (build_mesh.h). */
+typedef struct build_imports {
+    struct build_import_file *items; /* open addressing on the import's address */
+    size_t count, cap;               /* cap is 0 or a power of two */
+} build_imports;
+
 typedef struct build_ctx {
     const char *file; /* for positions */
     csg_builder *csg; /* owner of the bytecode */
@@ -43,6 +55,9 @@ typedef struct build_ctx {
      * NULL: no budget */
     size_t *triangles_left;
     size_t max_triangles;
+    /* the load's files read so far, shared by every context of a load;
+     * NULL: an import reads its file wherever it is built */
+    build_imports *imports;
 } build_ctx;
 
 /* Charges count mesh triangles that what (a node's name) is about to build

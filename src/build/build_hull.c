@@ -530,36 +530,36 @@ static int is_2d(const model_node *n)
 }
 
 /* A 2D child n: checked through the 2D engine, for its errors (and the
- * warnings of its own subtree), and left out. */
-static sc_status check_2d(const walk *w, const model_node *n)
+ * warnings of its own subtree), and left out. *mixing (when mixing is not
+ * NULL and *mixing is) becomes n when n is not empty. */
+static sc_status check_2d(const walk *w, const model_node *n, const model_node **mixing)
 {
     twod_region r;
     twod_init(&r);
     sc_status st = build_twod_main(w->c, n, &r);
+    if (mixing && !*mixing && r.contour_count)
+        *mixing = n;
     twod_free(&r);
     return st;
 }
 
 /* OpenSCAD's warnings for the 2D children of parent, a 3D operation: after
  * the children's own, as it checks dimensions once its children are
- * evaluated, the first also saying that parent mixes them (build.c's
- * flush_ignored). */
-static sc_status warn_2d(const walk *w, const model_node *parent)
+ * evaluated, first that parent mixes them, at mixing (its first 2D child
+ * that is not empty, or NULL: an empty one mixes nothing for OpenSCAD
+ * 2021.01's isValidDim), then each ignored (build.c's flush_ignored). */
+static sc_status warn_2d(const walk *w, const model_node *parent,
+                         const model_node *mixing)
 {
-    int first = 1;
-    for (const model_node *n = parent->first_child; n; n = n->next) {
+    sc_status st = SC_OK;
+    if (mixing)
+        st = build_note(w->c, &mixing->loc, "Mixing 2D and 3D objects is not supported");
+    for (const model_node *n = parent->first_child; n && st == SC_OK; n = n->next) {
         if (skipped(n) || is_shading(n->kind) || !is_2d(n))
             continue;
-        sc_status st = SC_OK;
-        if (first)
-            st = build_note(w->c, &n->loc, "Mixing 2D and 3D objects is not supported");
-        first = 0;
-        if (st == SC_OK)
-            st = build_note(w->c, &n->loc, "Ignoring 2D child object for 3D operation");
-        if (st != SC_OK)
-            return st;
+        st = build_note(w->c, &n->loc, "Ignoring 2D child object for 3D operation");
     }
-    return SC_OK;
+    return st;
 }
 
 static sc_status depth_error(const walk *w, const model_node *n)
@@ -602,13 +602,14 @@ static sc_status collect(const walk *w, const model_node *parent, const affine *
     if (depth > BUILD_HULL_MAX_DEPTH)
         return depth_error(w, parent);
     int any_2d = 0;
+    const model_node *mixing = NULL; /* the first 2D child that is not empty */
     for (const model_node *n = parent->first_child; n; n = n->next) {
         model_kind kind = n->kind;
         if (skipped(n) || is_shading(kind))
             continue;
         sc_status st = SC_OK;
         if (is_2d(n)) {
-            st = check_2d(w, n);
+            st = check_2d(w, n, &mixing);
             any_2d = 1;
         } else if (is_group(kind)) {
             walk sub = *w;
@@ -687,7 +688,7 @@ static sc_status collect(const walk *w, const model_node *parent, const affine *
         if (st != SC_OK)
             return st;
     }
-    return any_2d ? warn_2d(w, parent) : SC_OK;
+    return any_2d ? warn_2d(w, parent, mixing) : SC_OK;
 }
 
 /* Replaces each part by the vertices of its hull (flat parts keep their
@@ -1007,11 +1008,12 @@ static sc_status nef_children(const walk *w, const model_node *parent, const aff
     if (depth > BUILD_HULL_MAX_DEPTH)
         return depth_error(w, parent);
     int first = 1;
+    const model_node *mixing = NULL; /* the first 2D child that is not empty */
     for (const model_node *n = parent->first_child; n; n = n->next) {
         if (skipped(n) || is_shading(n->kind))
             continue;
-        nef_solid *s = NULL;
-        sc_status st = nef_node(w, n, m, depth, &s);
+        nef_solid *s = NULL; /* a 2D child: the empty solid, as OpenSCAD ignores it */
+        sc_status st = is_2d(n) ? check_2d(w, n, &mixing) : nef_node(w, n, m, depth, &s);
         if (st == SC_OK)
             st = nef_combine(w, n, out, first ? NEF_UNION : op, s);
         first = 0;
@@ -1022,7 +1024,7 @@ static sc_status nef_children(const walk *w, const model_node *parent, const aff
             return st;
         }
     }
-    sc_status st = warn_2d(w, parent);
+    sc_status st = warn_2d(w, parent, mixing);
     if (st != SC_OK && *out) {
         w->nef->release(*out);
         *out = NULL;
@@ -1043,7 +1045,7 @@ static sc_status nef_node(const walk *w, const model_node *n, const affine *m, i
     model_kind kind = n->kind;
     sc_status st = SC_OK;
     if (is_2d(n))
-        return check_2d(w, n); /* the empty solid, as OpenSCAD ignores it */
+        return check_2d(w, n, NULL); /* the empty solid, as OpenSCAD ignores it */
     if (is_group(kind))
         return nef_children(w, n, m, depth + 1, NEF_UNION, out);
     if (kind == MODEL_DIFFERENCE)
@@ -1411,7 +1413,7 @@ static sc_status support_node(const walk *w, const model_node *n, const affine *
     sc_status st = SC_OK;
     model_kind kind = n->kind;
     if (is_2d(n))
-        return check_2d(w, n); /* ignored, as the walk that builds it warns */
+        return check_2d(w, n, NULL); /* ignored, as the walk that builds it warns */
     if (is_group(kind))
         return support(w, n, m, depth + 1, out);
     if (kind == MODEL_XFORM || kind == MODEL_RESIZE) {

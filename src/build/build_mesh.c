@@ -43,6 +43,7 @@
 #include <errno.h>
 #include <float.h>
 #include <math.h>
+#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -1859,6 +1860,31 @@ static sc_status push_part(const build_ctx *c, const sc_location *loc, build_pri
     return SC_OK;
 }
 
+/* A copy of f in *out (malloc'd arrays); 0 when memory runs out. */
+static int faces_copy(const build_mesh_faces *f, build_mesh_faces *out)
+{
+    memset(out, 0, sizeof *out);
+    uint32_t total = f->face_start[f->face_count];
+    size_t points = f->point_count ? f->point_count : 1;
+    out->points = malloc(points * sizeof *out->points);
+    out->names = f->names ? malloc(points * sizeof *out->names) : NULL;
+    out->indices = malloc((size_t)(total ? total : 1) * sizeof *out->indices);
+    out->face_start = malloc(((size_t)f->face_count + 1) * sizeof *out->face_start);
+    if (!out->points || (f->names && !out->names) || !out->indices || !out->face_start) {
+        build_mesh_faces_free(out);
+        return 0;
+    }
+    memcpy(out->points, f->points, (size_t)f->point_count * sizeof *out->points);
+    if (f->names)
+        memcpy(out->names, f->names, (size_t)f->point_count * sizeof *out->names);
+    memcpy(out->indices, f->indices, (size_t)total * sizeof *out->indices);
+    memcpy(out->face_start, f->face_start,
+           ((size_t)f->face_count + 1) * sizeof *out->face_start);
+    out->point_count = f->point_count;
+    out->face_count = f->face_count;
+    return 1;
+}
+
 /* How import_solid treats an object that is not closed, beyond what its
  * mode says (flags). */
 enum {
@@ -1883,13 +1909,16 @@ enum {
  * build_mesh_solid) appended to out; what names it in messages. With
  * several objects (note set), the warning each leaves in c->note goes to
  * c->notes at once, so that every object's is kept, in file order. how:
- * the IMPORT_ flags. */
+ * the IMPORT_ flags. merged (or NULL): where the file's faces are kept
+ * merged in c's mode (build_imports): taken from there when they are, put
+ * there when not. */
 static sc_status import_solid(const build_ctx *c, const sc_location *loc,
                               const char *what, int strict, int several, unsigned how,
                               const vec3 *points, uint32_t point_count,
                               const uint32_t *indices, const uint32_t *face_start,
                               uint32_t face_count, build_prims *out,
-                              const char **left_out, build_mesh_faces *faces)
+                              const char **left_out, build_mesh_faces *faces,
+                              build_mesh_faces *merged)
 {
     int joined = (how & (several ? IMPORT_JOINED : IMPORT_ALONE)) != 0;
     build_ctx oc = *c;
@@ -1897,10 +1926,20 @@ static sc_status import_solid(const build_ctx *c, const sc_location *loc,
     if ((several && c->note) || joined)
         oc.note = &note;
     build_mesh_faces f;
+    memset(&f, 0, sizeof f);
+    const build_mesh_faces *use = merged && merged->face_start ? merged : &f;
     const char *empty = NULL;
     prim p;
-    sc_status st = build_mesh_merge(&oc, loc, 0, points, point_count, indices, face_start,
-                                    face_count, &f);
+    sc_status st = SC_OK;
+    if (use == &f) {
+        st = build_mesh_merge(&oc, loc, 0, points, point_count, indices, face_start,
+                              face_count, &f);
+        if (st == SC_OK && merged) { /* kept for the import's next builder */
+            *merged = f;
+            memset(&f, 0, sizeof f);
+            use = merged;
+        }
+    }
     build_ctx sc = oc; /* the check only: the points merge as the mode says */
     sc.faithful |= joined;
     if ((how & IMPORT_LOOSE) && !several) {
@@ -1909,10 +1948,12 @@ static sc_status import_solid(const build_ctx *c, const sc_location *loc,
         strict = 0;
     }
     if (st == SC_OK)
-        st = build_mesh_solid(&sc, loc, what, 0, strict, &f, &p, &empty);
-    if (st == SC_OK && faces && !empty) {
+        st = build_mesh_solid(&sc, loc, what, 0, strict, use, &p, &empty);
+    if (st == SC_OK && faces && !empty && use == &f) {
         *faces = f;
         memset(&f, 0, sizeof f);
+    } else if (st == SC_OK && faces && !empty && !faces_copy(use, faces)) {
+        st = err_nomem(c->error, loc);
     }
     build_mesh_faces_free(&f);
     /* an object alone left out (joined) counts as an import left out: its
@@ -1931,12 +1972,12 @@ static sc_status import_solid(const build_ctx *c, const sc_location *loc,
 
 /* The objects of an AMF or 3MF file a, each its own solid (OpenSCAD
  * unites them with CGAL), an object without triangles left out as
- * OpenSCAD's empty PolySet. One object is built as an STL is. how:
- * import_solid's. */
+ * OpenSCAD's empty PolySet. One object is built as an STL is. how and
+ * merged (for one object): import_solid's. */
 static sc_status import_objects(const build_ctx *c, const model_import *import,
                                 int strict, unsigned how, const amf_mesh *a,
                                 build_prims *out, const char **empty,
-                                build_mesh_faces *faces)
+                                build_mesh_faces *faces, build_mesh_faces *merged)
 {
     const sc_location *loc = &import->file_loc;
     uint32_t with_faces = 0;
@@ -1945,7 +1986,7 @@ static sc_status import_objects(const build_ctx *c, const model_import *import,
     if (with_faces <= 1)
         return import_solid(c, loc, "imported mesh", strict, 0, how, a->points,
                             a->point_count, a->indices, a->face_start, a->face_count, out,
-                            empty, faces);
+                            empty, faces, merged);
     sc_status st = SC_OK;
     for (uint32_t o = 0; o < a->object_count && st == SC_OK; o++) {
         uint32_t first = a->object_points[o], faces = a->object_faces[o];
@@ -1966,7 +2007,7 @@ static sc_status import_objects(const build_ctx *c, const model_import *import,
             snprintf(what, sizeof what, "object %u of the imported file", o + 1);
             st = import_solid(c, loc, what, strict, 1, how, a->points + first,
                               a->object_points[o + 1] - first, indices, start, count, out,
-                              empty, NULL);
+                              empty, NULL, NULL);
         }
         free(indices);
         free(start);
@@ -1990,18 +2031,109 @@ sc_status build_import_unsupported(const build_ctx *c, const sc_location *loc,
                                why);
 }
 
-/* build_import_parts; with faces, also the merged faces of a file of one
- * object in *faces (empty when *empty is set, and for several objects);
- * how: import_solid's. */
-static sc_status import_parts(const build_ctx *c, const model_import *import, int strict,
-                              unsigned how, build_prims *out, const char **empty,
-                              build_mesh_faces *faces)
+/* ---- the files read, by import (build_imports) ---- */
+
+/* A file an import read: parsed, and for one object its faces merged as
+ * each mode merges them. */
+struct build_import_file {
+    const model_import *import; /* the key (same_import); NULL in a free slot */
+    int read;                   /* m or a holds the file */
+    mesh_file m;                /* STL, OFF */
+    amf_mesh a;                 /* AMF, 3MF */
+    build_mesh_faces merged[2]; /* exact, faithful; face_start NULL until merged */
+};
+
+static void import_file_free(struct build_import_file *f)
 {
-    memset(out, 0, sizeof *out);
-    if (import->format == MODEL_MESH_UNSUPPORTED) {
-        *empty = "";
-        return build_import_unsupported(c, &import->file_loc, import->file, strict);
+    mesh_file_free(&f->m);
+    amf_mesh_free(&f->a);
+    build_mesh_faces_free(&f->merged[0]);
+    build_mesh_faces_free(&f->merged[1]);
+    memset(&f->m, 0, sizeof f->m);
+    memset(&f->a, 0, sizeof f->a);
+    f->read = 0;
+}
+
+void build_imports_free(build_imports *imports)
+{
+    for (size_t i = 0; i < imports->cap; i++)
+        if (imports->items[i].import)
+            import_file_free(&imports->items[i]);
+    free(imports->items);
+    memset(imports, 0, sizeof *imports);
+}
+
+/* Whether a and b are one import of the model file: the same node, or the
+ * copy of it the lowering makes in another context (resize's children
+ * are lowered again to be measured: model.h), which keeps its position
+ * and file name. */
+static int same_import(const model_import *a, const model_import *b)
+{
+    const sc_location *p = &a->file_loc, *q = &b->file_loc;
+    return a == b ||
+           (p->line == q->line && p->column == q->column &&
+            (p->file == q->file || (p->file && q->file && !strcmp(p->file, q->file))) &&
+            !strcmp(a->file, b->file) && a->format == b->format);
+}
+
+static size_t import_slot(const struct build_import_file *items, size_t cap,
+                          const model_import *import)
+{
+    size_t h = (size_t)import->file_loc.line * 1000003u + (size_t)import->file_loc.column;
+    h ^= h >> 17;
+    h *= (size_t)0x9e3779b97f4a7c15ull;
+    size_t i = (h ^ (h >> 29)) & (cap - 1);
+    while (items[i].import && !same_import(items[i].import, import))
+        i = (i + 1) & (cap - 1);
+    return i;
+}
+
+/* import's entry in imports, or NULL. */
+static struct build_import_file *imports_find(const build_imports *imports,
+                                              const model_import *import)
+{
+    if (!imports || !imports->cap)
+        return NULL;
+    size_t i = import_slot(imports->items, imports->cap, import);
+    return imports->items[i].import ? &imports->items[i] : NULL;
+}
+
+/* import's entry in imports, made (empty) when there is none; NULL when
+ * memory runs out. Entries move when the table grows. */
+static struct build_import_file *imports_put(build_imports *imports,
+                                             const model_import *import)
+{
+    struct build_import_file *found = imports_find(imports, import);
+    if (found)
+        return found;
+    if (2 * (imports->count + 1) > imports->cap) {
+        size_t cap = imports->cap ? 2 * imports->cap : 16;
+        if (cap > SIZE_MAX / 2 / sizeof *imports->items)
+            return NULL;
+        struct build_import_file *items = calloc(cap, sizeof *items);
+        if (!items)
+            return NULL;
+        for (size_t i = 0; i < imports->cap; i++)
+            if (imports->items[i].import)
+                items[import_slot(items, cap, imports->items[i].import)] =
+                    imports->items[i];
+        free(imports->items);
+        imports->items = items;
+        imports->cap = cap;
     }
+    size_t i = import_slot(imports->items, imports->cap, import);
+    imports->items[i].import = import;
+    imports->count++;
+    return &imports->items[i];
+}
+
+/* Reads and parses import's file into *file (file->read set); or, as
+ * import_parts says, the error, or *empty set with the warning given (a
+ * file that does not open, or that OpenSCAD cannot parse), file->read
+ * unset. */
+static sc_status import_read(const build_ctx *c, const model_import *import, int strict,
+                             struct build_import_file *file, const char **empty)
+{
     const char *name = import->file;
     const sc_location loc = import->file_loc;
     int stl = import->format == MODEL_MESH_STL;
@@ -2032,14 +2164,10 @@ static sc_status import_parts(const build_ctx *c, const model_import *import, in
         free(path);
         return st;
     }
-    mesh_file m;
-    memset(&m, 0, sizeof m);
-    amf_mesh a;
-    memset(&a, 0, sizeof a);
     int oom = 0;
     sc_status st = SC_OK;
     if (objects) {
-        st = read_amf(c, text, size, path, import, &a);
+        st = read_amf(c, text, size, path, import, &file->a);
         free(text);
         /* OpenSCAD 2021.01 logs a file it cannot parse ("Failed to parse
          * file", "Could not read file") and renders the rest: a warning
@@ -2055,11 +2183,12 @@ static sc_status import_parts(const build_ctx *c, const model_import *import, in
             if (st == SC_OK)
                 *empty = "";
             free(path);
-            amf_mesh_free(&a);
+            import_file_free(file);
             return st;
         }
     } else {
-        why = stl ? read_stl(text, size, &m, &oom) : read_off(text, size, &m, &oom);
+        why = stl ? read_stl(text, size, &file->m, &oom)
+                  : read_off(text, size, &file->m, &oom);
         free(text);
     }
     if (st != SC_OK)
@@ -2070,14 +2199,61 @@ static sc_status import_parts(const build_ctx *c, const model_import *import, in
         st = err_set(c->error, SC_ERR_SEMANTIC, &loc,
                      "import: '%s' is not a valid %s file (%s)", path,
                      stl ? "STL" : "OFF", why);
-    else if (objects ? a.face_count == 0 : m.face_count == 0)
+    free(path);
+    if (st == SC_OK)
+        file->read = 1;
+    else
+        import_file_free(file);
+    return st;
+}
+
+/* build_import_parts; with faces, also the merged faces of a file of one
+ * object in *faces (empty when *empty is set, and for several objects);
+ * how: import_solid's. The file is read once per build: taken from
+ * c->imports where a builder before read it, else read and kept there;
+ * last (the leaf built where the import stands, which no builder takes
+ * after it), it is let go from there after use. */
+static sc_status import_parts(const build_ctx *c, const model_import *import, int strict,
+                              unsigned how, build_prims *out, const char **empty,
+                              build_mesh_faces *faces, int last)
+{
+    memset(out, 0, sizeof *out);
+    if (import->format == MODEL_MESH_UNSUPPORTED) {
+        *empty = "";
+        return build_import_unsupported(c, &import->file_loc, import->file, strict);
+    }
+    const sc_location loc = import->file_loc;
+    int objects = import->format == MODEL_MESH_AMF || import->format == MODEL_MESH_3MF;
+    struct build_import_file here, *file = imports_find(c->imports, import);
+    memset(&here, 0, sizeof here);
+    sc_status st = SC_OK;
+    if (!file || !file->read) {
+        file = &here;
+        if ((st = import_read(c, import, strict, &here, empty)) != SC_OK || *empty)
+            return st;
+        struct build_import_file *kept =
+            c->imports && !last ? imports_put(c->imports, import) : NULL;
+        if (c->imports && !last && !kept) {
+            import_file_free(&here);
+            return err_nomem(c->error, (&loc));
+        }
+        if (kept) {
+            kept->read = 1;
+            kept->m = here.m;
+            kept->a = here.a;
+            memset(&here, 0, sizeof here);
+            file = kept;
+        }
+    }
+    build_mesh_faces *merged = file == &here ? NULL : &file->merged[c->faithful != 0];
+    if (objects ? file->a.face_count == 0 : file->m.face_count == 0)
         *empty = "import without faces is empty";
     else if (objects)
-        st = import_objects(c, import, strict, how, &a, out, empty, faces);
+        st = import_objects(c, import, strict, how, &file->a, out, empty, faces, merged);
     else
-        st = import_solid(c, &loc, "imported mesh", strict, 0, how, m.points,
-                          m.point_count, m.indices, m.face_start, m.face_count, out,
-                          empty, faces);
+        st = import_solid(c, &loc, "imported mesh", strict, 0, how, file->m.points,
+                          file->m.point_count, file->m.indices, file->m.face_start,
+                          file->m.face_count, out, empty, faces, merged);
     /* several objects, every one left out or without volume: their
      * warnings were given, and the import counts as left out, so that
      * its parent does not add that it is empty (build_notes) */
@@ -2090,9 +2266,8 @@ static sc_status import_parts(const build_ctx *c, const model_import *import, in
         free(out->items);
         memset(out, 0, sizeof *out);
     }
-    free(path);
-    mesh_file_free(&m);
-    amf_mesh_free(&a);
+    if (file == &here || last)
+        import_file_free(file);
     return st;
 }
 
@@ -2142,14 +2317,14 @@ static sc_status join_parts(const build_ctx *c, const sc_location *loc,
 sc_status build_import_parts(const build_ctx *c, const model_import *import, int strict,
                              build_prims *out, const char **empty)
 {
-    return import_parts(c, import, strict, 0, out, empty, NULL);
+    return import_parts(c, import, strict, 0, out, empty, NULL, 1);
 }
 
 sc_status build_import_solids(const build_ctx *c, const model_import *import,
                               build_prims *out, const char **empty)
 {
     return import_parts(c, import, c->strict, IMPORT_JOINED | IMPORT_ALONE, out, empty,
-                        NULL);
+                        NULL, 0);
 }
 
 sc_status build_import_faces(const build_ctx *c, const model_import *import,
@@ -2157,7 +2332,7 @@ sc_status build_import_faces(const build_ctx *c, const model_import *import,
 {
     memset(faces, 0, sizeof *faces);
     build_prims parts;
-    sc_status st = import_parts(c, import, 0, 0, &parts, empty, faces);
+    sc_status st = import_parts(c, import, 0, 0, &parts, empty, faces, 0);
     free(parts.items);
     return st;
 }
@@ -2167,7 +2342,7 @@ static sc_status import_one(const build_ctx *c, const model_import *import, unsi
                             prim *out, const char **empty)
 {
     build_prims parts;
-    sc_status st = import_parts(c, import, c->strict, how, &parts, empty, NULL);
+    sc_status st = import_parts(c, import, c->strict, how, &parts, empty, NULL, 0);
     if (st == SC_OK && !*empty)
         st = parts.count == 1 ? (*out = parts.items[0], SC_OK)
                               : join_parts(c, &import->file_loc, &parts, out);

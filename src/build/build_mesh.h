@@ -107,6 +107,9 @@ int build_mesh_face_triangles(const vec3 *p, uint32_t n, int reversed, uint32_t 
 char *build_file_path(const build_ctx *c, const char *name);
 struct build_prims; /* build_hull.h */
 
+/* Frees what imports holds (build_ctx.h) and zeroes it. */
+void build_imports_free(build_imports *imports);
+
 /* OpenSCAD 2021.01's message for a mesh it cannot take into CGAL. */
 extern const char build_openscad_not_closed[];
 

@@ -316,24 +316,21 @@ static sc_status leaf_soup(pwalk *w, const model_node *n, soup *s, int depth);
 
 /* OpenSCAD 2021.01's warnings for the 2D children of parent, a hull
  * inside projection (a 3D operation there), which it leaves out: after the
- * children, as it checks dimensions once they are evaluated, the first
- * also saying that parent mixes them (as build_hull.c's). */
-static sc_status ignored_2d(const build_ctx *c, const model_node *parent)
+ * children, as it checks dimensions once they are evaluated, first that
+ * parent mixes them, at mixing (the first 2D child that is not empty; NULL
+ * when none is), then each ignored (as build_hull.c's). */
+static sc_status ignored_2d(const build_ctx *c, const model_node *parent,
+                            const model_node *mixing)
 {
-    int first = 1;
-    for (const model_node *n = parent->first_child; n; n = n->next) {
+    sc_status st = SC_OK;
+    if (mixing)
+        st = build_note(c, &mixing->loc, "Mixing 2D and 3D objects is not supported");
+    for (const model_node *n = parent->first_child; n && st == SC_OK; n = n->next) {
         if ((n->modifiers & (MODEL_MOD_DISABLE | MODEL_MOD_BACKGROUND)) || !flat(n))
             continue;
-        sc_status st = SC_OK;
-        if (first)
-            st = build_note(c, &n->loc, "Mixing 2D and 3D objects is not supported");
-        first = 0;
-        if (st == SC_OK)
-            st = build_note(c, &n->loc, "Ignoring 2D child object for 3D operation");
-        if (st != SC_OK)
-            return st;
+        st = build_note(c, &n->loc, "Ignoring 2D child object for 3D operation");
     }
-    return SC_OK;
+    return st;
 }
 
 /* The corners of the meshes below hull node parent (through m, in the
@@ -348,6 +345,7 @@ static sc_status hull_points(pwalk *w, const model_node *parent, const affine *m
         return err_set(c->error, SC_ERR_LIMIT, &parent->loc,
                        "too many nested nodes inside projection (limit is %d)",
                        BUILD_PROJECTION_MAX_DEPTH);
+    const model_node *mixing = NULL; /* the first 2D child that is not empty */
     for (const model_node *n = parent->first_child; n; n = n->next) {
         model_kind kind = n->kind;
         if ((n->modifiers & (MODEL_MOD_DISABLE | MODEL_MOD_BACKGROUND)) ||
@@ -374,6 +372,8 @@ static sc_status hull_points(pwalk *w, const model_node *parent, const affine *m
             twod_region r;
             twod_init(&r);
             st = build_twod_main(c, n, &r);
+            if (!mixing && r.contour_count)
+                mixing = n;
             twod_free(&r);
         } else {
             soup s = {NULL, 0, 0, 0};
@@ -388,7 +388,7 @@ static sc_status hull_points(pwalk *w, const model_node *parent, const affine *m
         if (st != SC_OK)
             return st;
     }
-    return ignored_2d(c, parent);
+    return ignored_2d(c, parent, mixing);
 }
 
 /* hull(): the triangles of the convex hull of its children's mesh
@@ -816,6 +816,15 @@ static sc_status walk_node(pwalk *w, const model_node *n, const affine *m, int d
     if (n->pending && !flat(n))
         return build_pending(c, n);
     if (flat(n)) {
+        /* checked through the 2D engine for its warnings (a polygon's bad
+         * point, which OpenSCAD 2021.01 prints as it evaluates the child
+         * it then leaves out), then left out */
+        twod_region r;
+        twod_init(&r);
+        sc_status st = build_twod_main(c, n, &r);
+        twod_free(&r);
+        if (st != SC_OK)
+            return st;
         if (c->note && !c->note->message[0])
             err_set(c->note, SC_OK, &n->loc,
                     "2D object '%s' inside projection is ignored (as in OpenSCAD)",
