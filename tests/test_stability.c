@@ -535,11 +535,11 @@ static void *deep_query_memory(void *unused)
     return NULL;
 }
 
-/* Queries recurse once per level of the compiled tree: about 500 bytes of
- * stack a level in the optimised build (10000 levels run in 8 MB, not in
- * 4 MB), several times that under the sanitizers. The deep cases run on a
- * thread with a 256 MB stack so both builds test the full 10000 levels;
- * docs/stability.md states the stack a deep tree needs. */
+/* Queries recurse once per level of the compiled tree: about 200 bytes of
+ * stack a level in the optimised build, several times that under the
+ * sanitizers. The deep cases run on a thread with a 256 MB stack so both
+ * builds test the full 10000 levels; docs/stability.md states the stack a
+ * deep tree needs. */
 static void run_with_stack(void *(*body)(void *))
 {
     pthread_attr_t attr;
