@@ -134,6 +134,9 @@ static RTCScene embree_scene(RTCDevice dev, const csg_tree *t, int robust,
         if (l->prim.kind != PRIM_MESH || !l->prim.u.mesh.mesh)
             continue;
         const prim_mesh *m = l->prim.u.mesh.mesh;
+        affine to_world; /* the leaf keeps only its inverse */
+        if (!affine_invert(&l->to_local, &to_world))
+            continue;
         RTCGeometry geom = rtcNewGeometry(dev, RTC_GEOMETRY_TYPE_TRIANGLE);
         float *v =
             rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
@@ -142,7 +145,7 @@ static RTCScene embree_scene(RTCDevice dev, const csg_tree *t, int robust,
             rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
                                     3 * sizeof(unsigned), m->tri_count);
         for (uint32_t k = 0; k < 3 * m->tri_count; k++) {
-            vec3 p = affine_point(&l->to_world, m->v[k]);
+            vec3 p = affine_point(&to_world, m->v[k]);
             v[3 * k] = (float)p.x;
             v[3 * k + 1] = (float)p.y;
             v[3 * k + 2] = (float)p.z;

@@ -19,6 +19,7 @@
 #include "build/build.h"
 #include "model/colors.h"
 #include "build/scene.h"
+#include "test_util.h"
 
 static sc_scene *load(const char *text)
 {
@@ -347,9 +348,10 @@ static void test_multmatrix(void **state)
              "}\n");
     const csg_leaf *l = only_leaf(s);
     /* to_world = outer * inner: x' = 2x + 10, z' = z + 5. */
-    assert_near(l->to_world.m[0][0], 2);
-    assert_near(l->to_world.m[0][3], 10);
-    assert_near(l->to_world.m[2][3], 5);
+    affine to_world = test_leaf_to_world(l);
+    assert_near(to_world.m[0][0], 2);
+    assert_near(to_world.m[0][3], 10);
+    assert_near(to_world.m[2][3], 5);
     assert_near(l->to_local.m[0][0], 0.5);
     assert_int_equal(l->loc.line, 3);
     assert_int_equal(l->loc.column, 5);
@@ -364,7 +366,7 @@ static void test_multmatrix(void **state)
 
     /* No matrix is the identity. */
     s = load("multmatrix() { cube(1); }");
-    assert_near(only_leaf(s)->to_world.m[0][0], 1);
+    assert_near(test_leaf_to_world(only_leaf(s)).m[0][0], 1);
     sc_scene_release(s);
 }
 
@@ -713,8 +715,9 @@ static void test_root_modifier(void **state)
              "sphere(20);\n");
     const csg_leaf *l = only_leaf(s);
     assert_int_equal(l->prim.kind, PRIM_BOX);
-    assert_near(l->to_world.m[0][3], 0);
-    assert_near(l->to_world.m[1][3], 7);
+    affine to_world = test_leaf_to_world(l);
+    assert_near(to_world.m[0][3], 0);
+    assert_near(to_world.m[1][3], 7);
     assert_true(fabsf(l->color[0] - 249 / 255.0f) < 1e-6f);
     assert_int_equal(sc_scene_warning_count(s), 0);
     sc_scene_release(s);
@@ -1008,7 +1011,7 @@ static void test_deep_nesting(void **state)
     char *text = nested_groups(PARSE_MAX_DEPTH - 1);
     sc_scene *s = load(text);
     const csg_leaf *l = only_leaf(s);
-    assert_true(fabs(l->to_world.m[0][3] - 9.999) < 1e-9);
+    assert_true(fabs(test_leaf_to_world(l).m[0][3] - 9.999) < 1e-9);
     sc_scene_info info;
     sc_scene_info_init(&info);
     assert_int_equal(sc_scene_get_info(s, &info, NULL), SC_OK);

@@ -388,14 +388,14 @@ static void test_grazing_face(void **state)
     for (int m = 0; m < 2; m++) {
         sc_scene *s = load_text(models[m]);
         const csg_tree *t = scene_tree(s);
-        const csg_leaf *leaf = &t->leaves[0];
+        affine to_world = test_leaf_to_world(&t->leaves[0]);
         for (int k = -3; k <= 3; k++) {
             for (int up = -1; up <= 1; up += 2) {
                 /* In the box's own frame: start above or below the top plane
                  * by k * 1e-13 and climb or dive at 1e-12 rad. */
                 vec3 o = v3(-0.5, 0.5, 1 + k * 1e-13), d = v3(1, 0, up * 1e-12);
-                csg_ray r = {affine_point(&leaf->to_world, o),
-                             affine_vector(&leaf->to_world, d), 0, INFINITY};
+                csg_ray r = {affine_point(&to_world, o), affine_vector(&to_world, d), 0,
+                             INFINITY};
                 check_spans(t, &r);
             }
         }

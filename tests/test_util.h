@@ -10,6 +10,15 @@
 #include "csg/csg.h"
 #include "spancast/spancast.h"
 
+/* A leaf's world transform (the leaf keeps only its inverse); fails the
+ * test when it cannot be inverted back. */
+static inline affine test_leaf_to_world(const csg_leaf *l)
+{
+    affine to_world;
+    assert_true(affine_invert(&l->to_local, &to_world));
+    return to_world;
+}
+
 /* The whole file at path, NUL-terminated (the terminator is not counted in
  * *length, which may be NULL); fails the test when it cannot be read. */
 static inline char *test_read_file(const char *path, size_t *length)

@@ -132,6 +132,9 @@ static uint32_t add_node(csg_builder *b, const csg_node *n)
     return b->node_count++;
 }
 
+static bbox world_box(const affine *w, bbox local);
+static bbox motion_bounds(const csg_leaf *l);
+
 uint32_t csg_builder_leaf(csg_builder *b, const prim *p, const affine *to_world,
                           const float color[4], sc_location loc)
 {
@@ -146,12 +149,13 @@ uint32_t csg_builder_leaf(csg_builder *b, const prim *p, const affine *to_world,
     csg_leaf *l = &b->leaves[b->leaf_count];
     memset(l, 0, sizeof *l);
     l->prim = *p;
-    l->to_world = *to_world;
     l->to_local = to_local;
     memcpy(l->color, color, sizeof l->color);
     l->object_id = b->leaf_count;
     l->loc = loc;
-    csg_node n = {CSG_LEAF, b->leaf_count, 0, 0, CSG_NO_BVH, bbox_empty(), 0};
+    csg_node n = {CSG_LEAF, b->leaf_count, 0,
+                  0,        CSG_NO_BVH,    world_box(to_world, prim_bounds(p)),
+                  0};
     uint32_t id = add_node(b, &n);
     if (id != CSG_EMPTY)
         b->leaf_count++;
@@ -192,7 +196,9 @@ int csg_builder_set_motion(csg_builder *b, uint32_t id, const csg_motion *m)
         return 1;
     }
     *copy = *m;
-    b->leaves[b->nodes[id].leaf].motion = copy;
+    csg_leaf *l = &b->leaves[b->nodes[id].leaf];
+    l->motion = copy;
+    b->nodes[id].bounds = motion_bounds(l);
     return 1;
 }
 
@@ -717,17 +723,10 @@ static bbox world_box(const affine *w, bbox local)
     return r;
 }
 
-/* Source statistics and world bounds of the builder's nodes. */
+/* Source statistics of the builder's nodes (a leaf's world bounds were set
+ * when it was added). */
 static int measure_source(csg_builder *b, uint32_t root, csg_tree *t)
 {
-    for (uint32_t i = 0; i < b->node_count; i++) {
-        csg_node *n = &b->nodes[i];
-        if (n->op != CSG_LEAF)
-            continue;
-        const csg_leaf *l = &b->leaves[n->leaf];
-        n->bounds =
-            l->motion ? motion_bounds(l) : world_box(&l->to_world, prim_bounds(&l->prim));
-    }
     unsigned char *marks;
     t->source_node_count =
         mark_reachable(b->nodes, b->child_ids, b->node_count, root, &marks);

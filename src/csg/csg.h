@@ -42,10 +42,12 @@ typedef struct csg_motion {
 
 typedef struct csg_leaf {
     prim prim;
-    affine to_world;
-    affine to_local;          /* inverse of to_world */
-    const csg_motion *motion; /* NULL for a leaf that stands still; to_world is
-                                 then its transform at time 0 */
+    /* world to local: the inverse of the leaf's transform (at time 0 for a
+     * moving leaf). The transform itself is not kept: the builder takes
+     * the leaf's world bounds from it when the leaf is added, and nothing
+     * after reads it (a leaf fewer 96 bytes, at 10^6 leaves 96 MB). */
+    affine to_local;
+    const csg_motion *motion; /* NULL for a leaf that stands still */
     float color[4];           /* RGBA, 0..1 */
     uint32_t object_id;       /* index of the leaf in source order, for the id AOV */
     uint32_t material;        /* index into the scene's material table; 0: the default */
