@@ -648,6 +648,23 @@ static void write_notch_files(void)
     }
     p += sprintf(p, "endsolid notch\n");
     write_file("notch.stl", text, (size_t)(p - text));
+    /* the same with every 0 of every other triangle written -0: equal
+     * corners, which the import merges all the same */
+    p = text;
+    p += sprintf(p, "solid notch\n");
+    for (int t = 0; t < NOTCH_TRIS; t++) {
+        p += sprintf(p, "  facet normal 0 0 0\n    outer loop\n");
+        for (int k = 0; k < 3; k++) {
+            const float *v = notch_pts[notch_tris[t][k]];
+            p += sprintf(p, "      vertex");
+            for (int c = 0; c < 3; c++)
+                p += sprintf(p, t % 2 && v[c] == 0 ? " -0" : " %g", v[c]);
+            p += sprintf(p, "\n");
+        }
+        p += sprintf(p, "    endloop\n  endfacet\n");
+    }
+    p += sprintf(p, "endsolid notch\n");
+    write_file("notch_negative_zero.stl", text, (size_t)(p - text));
     /* binary STL: the header may start with "solid", as some writers do */
     unsigned char bin[84 + 50 * NOTCH_TRIS];
     memset(bin, 0, sizeof bin);
@@ -694,8 +711,9 @@ static void test_import(void **state)
     mkdir(sub, 0777);
     write_notch_files();
     snprintf(model, sizeof model, "%s/m.csg", dir);
-    static const char *files[] = {"notch.stl", "sub/notch_bin.stl", "notch.off"};
-    for (int i = 0; i < 3; i++) {
+    static const char *files[] = {"notch.stl", "sub/notch_bin.stl", "notch.off",
+                                  "notch_negative_zero.stl"};
+    for (int i = 0; i < 4; i++) {
         char text[256];
         snprintf(text, sizeof text,
                  "import(file = \"%s\", layer = \"\", origin = [0, 0], scale = 1, "

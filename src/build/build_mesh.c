@@ -1629,38 +1629,80 @@ static int compare_points(const void *a, const void *b)
     return x->index < y->index ? -1 : x->index > y->index;
 }
 
-/* STL corners 3i, 3i + 1, 3i + 2 become triangle i; equal corners are
- * merged into one point. */
+/* A coordinate's bits for hashing, with -0 as 0 (the two are equal). */
+static uint64_t coordinate_bits(double v)
+{
+    if (v == 0)
+        v = 0;
+    uint64_t u;
+    memcpy(&u, &v, sizeof u);
+    return u;
+}
+
+static size_t point_hash(vec3 p)
+{
+    uint64_t h = coordinate_bits(p.x) * 0x9e3779b97f4a7c15u;
+    h ^= coordinate_bits(p.y) * 0xc2b2ae3d27d4eb4fu + (h << 6) + (h >> 2);
+    h ^= coordinate_bits(p.z) * 0x165667b19e3779f9u + (h << 6) + (h >> 2);
+    return (size_t)(h ^ (h >> 29));
+}
+
+/* STL corners 3i, 3i + 1, 3i + 2 become triangle i; equal corners (==, so
+ * -0 and 0 are one) are merged into one point, the first of them, and the
+ * points are numbered in (x, y, z) order. Equal corners are found through
+ * a hash table, each corner looked up once, and only the distinct points
+ * are sorted: an STL of n triangles has 3n corners and about n / 2 points,
+ * and sorting every corner took a third of the load of a 10^5-triangle
+ * file. */
 static int merge_corners(mesh_file *m)
 {
     uint32_t n = m->point_count;
+    size_t slots = 16;
+    while (slots < 2 * (size_t)n + 2)
+        slots *= 2;
+    uint32_t *table = malloc(slots * sizeof *table); /* a point's number, or empty */
     keyed_point *k = malloc((size_t)(n ? n : 1) * sizeof *k);
     uint32_t *map = malloc((size_t)(n ? n : 1) * sizeof *map);
-    if (!k || !map) {
+    if (!table || !k || !map) {
+        free(table);
         free(k);
         free(map);
         return 0;
     }
-    for (uint32_t i = 0; i < n; i++)
-        k[i] = (keyed_point){m->points[i], i};
-    qsort(k, n, sizeof *k, compare_points);
+    memset(table, 0xff, slots * sizeof *table);
     uint32_t unique = 0;
     for (uint32_t i = 0; i < n; i++) {
-        if (i == 0 || compare_points(&(keyed_point){k[i].p, 0},
-                                     &(keyed_point){k[unique - 1].p, 0}) != 0)
-            k[unique++].p = k[i].p;
-        map[k[i].index] = unique - 1;
+        vec3 p = m->points[i];
+        for (size_t h = point_hash(p) & (slots - 1);; h = (h + 1) & (slots - 1)) {
+            uint32_t u = table[h];
+            if (u == UINT32_MAX) {
+                table[h] = unique;
+                k[unique] = (keyed_point){p, unique};
+                map[i] = unique++;
+                break;
+            }
+            if (k[u].p.x == p.x && k[u].p.y == p.y && k[u].p.z == p.z) {
+                map[i] = u;
+                break;
+            }
+        }
     }
+    /* The distinct points in (x, y, z) order; rank[u] is point u's place. */
+    qsort(k, unique, sizeof *k, compare_points);
+    uint32_t *rank = table;
+    for (uint32_t r = 0; r < unique; r++)
+        rank[k[r].index] = r;
     int ok = 1;
     for (uint32_t t = 0; ok && t < n / 3; t++) {
         ok = start_face(m);
         for (int j = 0; ok && j < 3; j++)
-            ok = add_index(m, map[3 * t + (uint32_t)j]);
+            ok = add_index(m, rank[map[3 * t + (uint32_t)j]]);
     }
     ok = ok && finish_faces(m);
     for (uint32_t i = 0; ok && i < unique; i++)
         m->points[i] = k[i].p;
     m->point_count = unique;
+    free(table);
     free(k);
     free(map);
     return ok;
