@@ -1241,9 +1241,14 @@ typedef struct grid_slot {
     uint32_t point; /* UINT32_MAX: empty */
 } grid_slot;
 
+/* occupied: one bit per hashed block of 16 x 16 x 16 cells, set once a
+ * cell in the block is taken, so that a point whose neighbourhood lies in
+ * blocks without a taken cell skips the 26 lookups around it (a bit shared
+ * by two blocks only costs those lookups). */
 typedef struct grid {
     grid_slot *slots;
     size_t mask;
+    uint64_t *occupied; /* 8 (mask + 1) bits: at most one in 16 set */
 } grid;
 
 static size_t grid_hash(const int64_t k[3])
@@ -1252,6 +1257,36 @@ static size_t grid_hash(const int64_t k[3])
     h ^= (uint64_t)k[1] * 0xc2b2ae3d27d4eb4fu + (h << 6) + (h >> 2);
     h ^= (uint64_t)k[2] * 0x165667b19e3779f9u + (h << 6) + (h >> 2);
     return (size_t)(h ^ (h >> 29));
+}
+
+/* The block of cell coordinate k: floor(k / 16). */
+static int64_t grid_block(int64_t k)
+{
+    return k >= 0 ? k / 16 : -1 - (-1 - k) / 16;
+}
+
+static size_t grid_block_bit(const grid *g, int64_t bx, int64_t by, int64_t bz)
+{
+    const int64_t b[3] = {bx, by, bz};
+    return grid_hash(b) & (8 * g->mask + 7);
+}
+
+/* Whether a cell next to k (or k) may be taken: 0 when none is. */
+static int grid_near_taken(const grid *g, const int64_t k[3])
+{
+    int64_t lo[3], hi[3];
+    for (int a = 0; a < 3; a++) {
+        lo[a] = grid_block(k[a] - 1);
+        hi[a] = grid_block(k[a] + 1);
+    }
+    for (int64_t x = lo[0]; x <= hi[0]; x++)
+        for (int64_t y = lo[1]; y <= hi[1]; y++)
+            for (int64_t z = lo[2]; z <= hi[2]; z++) {
+                size_t bit = grid_block_bit(g, x, y, z);
+                if (g->occupied[bit / 64] >> (bit % 64) & 1)
+                    return 1;
+            }
+    return 0;
 }
 
 static grid_slot *grid_find(const grid *g, const int64_t k[3])
@@ -1290,7 +1325,11 @@ static int grid_point(grid *g, build_mesh_faces *f, const vec3 *points, uint32_t
         k[1] = (int64_t)(p.y / cell);
         k[2] = (int64_t)(p.z / cell);
         slot = grid_find(g, k);
-        if (slot->point == UINT32_MAX) {
+        if (slot->point != UINT32_MAX) {
+            *merged = slot->point;
+            return 1;
+        }
+        if (grid_near_taken(g, k)) {
             int best = 10;
             grid_slot *near = NULL;
             for (int64_t dx = -1; dx <= 1; dx++)
@@ -1310,9 +1349,6 @@ static int grid_point(grid *g, build_mesh_faces *f, const vec3 *points, uint32_t
                 *merged = near->point;
                 return 1;
             }
-        } else {
-            *merged = slot->point;
-            return 1;
         }
     }
     uint32_t u = f->point_count++;
@@ -1325,6 +1361,9 @@ static int grid_point(grid *g, build_mesh_faces *f, const vec3 *points, uint32_t
     if (slot) {
         memcpy(slot->key, k, sizeof k);
         slot->point = u;
+        size_t bit =
+            grid_block_bit(g, grid_block(k[0]), grid_block(k[1]), grid_block(k[2]));
+        g->occupied[bit / 64] |= (uint64_t)1 << (bit % 64);
     }
     *merged = u;
     return 1;
@@ -1340,14 +1379,17 @@ sc_status build_mesh_merge(const build_ctx *c, const sc_location *loc, int rever
     size_t slots = 16;
     while (slots < 2 * (size_t)point_count + 2)
         slots *= 2;
-    grid g = {malloc(slots * sizeof *g.slots), slots - 1};
+    grid g = {malloc(slots * sizeof *g.slots), slots - 1,
+              calloc(slots / 8, sizeof(uint64_t))};
     uint32_t *map = malloc((size_t)(point_count ? point_count : 1) * sizeof *map);
     f->points = malloc((size_t)(point_count ? point_count : 1) * sizeof *f->points);
     f->names = malloc((size_t)(point_count ? point_count : 1) * sizeof *f->names);
     f->indices = malloc((size_t)(total ? total : 1) * sizeof *f->indices);
     f->face_start = malloc(((size_t)face_count + 1) * sizeof *f->face_start);
-    if (!g.slots || !map || !f->points || !f->names || !f->indices || !f->face_start) {
+    if (!g.slots || !g.occupied || !map || !f->points || !f->names || !f->indices ||
+        !f->face_start) {
         free(g.slots);
+        free(g.occupied);
         free(map);
         build_mesh_faces_free(f);
         return err_nomem(c->error, loc);
@@ -1401,6 +1443,7 @@ sc_status build_mesh_merge(const build_ctx *c, const sc_location *loc, int rever
     }
     f->face_start[f->face_count] = at;
     free(g.slots);
+    free(g.occupied);
     free(map);
     return SC_OK;
 }
