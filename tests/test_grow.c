@@ -161,12 +161,46 @@ static void test_advised_buffer_remaps(void **state)
 #endif
 }
 
+/* A grown array that is already large keeps its pages when it grows
+ * again: grow_array moves it by remapping (as realloc does for a block
+ * with a mapping of its own) rather than copying it into a new buffer.
+ * Growing 48 MiB to 96 MiB and writing all of it faults in about the new
+ * half (huge pages off, one fault a page). */
+static void test_large_array_grows_in_place(void **state)
+{
+    (void)state;
+    size_t n = (size_t)48 << 20, page = (size_t)sysconf(_SC_PAGESIZE);
+    int counted = test_huge_pages_off();
+    unsigned char *v = NULL;
+    size_t cap = 0;
+    assert_int_equal(grow_array((void **)&v, &cap, n, 1), 1);
+    memset(v, 3, n);
+    long before = test_minor_faults();
+    assert_int_equal(grow_array((void **)&v, &cap, 2 * n, 1), 1);
+    for (size_t i = 0; i < n; i += page)
+        assert_int_equal(v[i], 3);
+    memset(v + n, 4, n);
+    long faults = test_minor_faults() - before;
+    free(v);
+    test_huge_pages_on(counted);
+#if defined(__GLIBC__) && !defined(__SANITIZE_ADDRESS__)
+    assert_true(counted);
+    long pages = (long)(2 * n / page);
+    assert_true(faults > pages / 4);     /* the new half is fresh */
+    assert_true(faults < pages * 3 / 4); /* the old half is not */
+#else
+    (void)faults;
+    (void)counted;
+#endif
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_grow_keeps_items),
         cmocka_unit_test(test_grow_failure_keeps_array),
         cmocka_unit_test(test_advised_buffer_remaps),
+        cmocka_unit_test(test_large_array_grows_in_place),
     };
     const struct CMUnitTest advised[] = {
         cmocka_unit_test(test_large_array_advised),

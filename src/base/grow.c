@@ -7,16 +7,19 @@
 #include "base/mem.h"
 
 /* Reallocates *array of old items to n items of elem bytes; 0 on
- * failure. A large array moves into a new buffer advised for huge pages
- * before the copy (mem_advise_huge): realloc would copy it into fresh 4 KiB
- * pages first, one fault each, and most large arrays grow by doubling,
- * each time into such a buffer. */
+ * failure. A large array is advised for huge pages (mem_advise_huge). One
+ * that becomes large here moves into a new buffer advised before the copy:
+ * realloc would copy it into fresh 4 KiB pages first, one fault each. One
+ * that is large already grows by realloc, which moves a block with a
+ * mapping of its own by remapping it, its pages kept, instead of copying
+ * it into fresh ones (the advice covers the whole mapping, which keeps it
+ * whole: mem_advise_huge). */
 static int resize(void **array, uint64_t old, uint64_t n, size_t elem)
 {
     if (n > SIZE_MAX / elem)
         return 0;
     size_t bytes = (size_t)n * elem;
-    if (bytes < MEM_HUGE_MIN || !*array) {
+    if (bytes < MEM_HUGE_MIN || !*array || (size_t)old * elem >= MEM_HUGE_MIN) {
         void *p = realloc(*array, bytes);
         if (!p)
             return 0;
