@@ -140,11 +140,30 @@ typedef struct child_ref {
     float lo[3], hi[3];
 } child_ref;
 
+/* The float next to f (not NaN) toward -infinity (down) or +infinity, as
+ * nextafterf gives it, by a step of its bits: zero's neighbours are the
+ * smallest subnormals, and a step away from zero makes a number's bits
+ * (sign aside) one larger. Inline: the library call took a third of the
+ * time of rounding a mesh's boxes. */
+static float float_step(float f, int down)
+{
+    uint32_t u;
+    memcpy(&u, &f, sizeof u);
+    if ((u & 0x7fffffffu) == 0)
+        u = down ? 0x80000001u : 1u;
+    else if ((u >> 31) == (uint32_t)down) /* away from zero */
+        u++;
+    else
+        u--;
+    memcpy(&f, &u, sizeof f);
+    return f;
+}
+
 static float round_down(double x)
 {
     float f = (float)x;
     if ((double)f > x)
-        f = nextafterf(f, -INFINITY);
+        f = float_step(f, 1);
     return f;
 }
 
@@ -152,7 +171,7 @@ static float round_up(double x)
 {
     float f = (float)x;
     if ((double)f < x)
-        f = nextafterf(f, INFINITY);
+        f = float_step(f, 0);
     return f;
 }
 
