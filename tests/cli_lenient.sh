@@ -89,6 +89,59 @@ warns cut.csg "cut.csg:4:3: warning: Mixing 2D and 3D objects is not supported
 cut.csg:4:3: warning: Ignoring 3D child object for 2D operation"
 same cut.csg cut_ref.csg
 
+# An empty 3D child (cube(0), sphere(0), a difference from an empty one)
+# mixes nothing, as OpenSCAD 2021.01's isValidDim passes over empty
+# geometry: it is only ignored. One that is no geometry at all (an empty
+# group; a union or hull with nothing in it; an intersection with an empty
+# child) is not even ignored. The first warning is at the first 3D child
+# that is not empty, before the others.
+cat >empty3d.csg <<'M'
+union() {
+	square(size = [10, 6], center = false);
+	cube(size = [0, 1, 1], center = false);
+	sphere(r = 0);
+	group() {
+		cube(size = [0, 0, 0], center = false);
+		cylinder(h = 0, r1 = 1, r2 = 1, center = false);
+	}
+	group();
+	intersection() {
+		cube(size = [1, 1, 1], center = false);
+		cube(size = [0, 1, 1], center = false);
+	}
+	difference() {
+		polyhedron(points = [], faces = []);
+		cube(size = [1, 1, 1], center = false);
+	}
+	cube(size = [1, 1, 1], center = false);
+}
+M
+printf 'square(size = [10, 6], center = false);\n' >empty3d_ref.csg
+cat >empty3d_flat.csg <<'M'
+linear_extrude(height = 3) {
+	difference() {
+		square(size = [10, 6], center = false);
+		cube(size = [3, 3, 0], center = false);
+		hull() {
+			sphere(r = 0);
+		}
+	}
+}
+M
+printf 'linear_extrude(height = 3) { square(size = [10, 6], center = false); }\n' >empty3d_flat_ref.csg
+for mode in "" --faithful; do
+    warns empty3d.csg "empty3d.csg:18:2: warning: Mixing 2D and 3D objects is not supported
+empty3d.csg:3:2: warning: Ignoring 3D child object for 2D operation
+empty3d.csg:4:2: warning: Ignoring 3D child object for 2D operation
+empty3d.csg:14:2: warning: Ignoring 3D child object for 2D operation
+empty3d.csg:18:2: warning: Ignoring 3D child object for 2D operation" $mode
+    warns empty3d_flat.csg "empty3d_flat.csg:4:3: warning: Ignoring 3D child object for 2D operation" $mode
+    # shellcheck disable=SC2086
+    same empty3d.csg empty3d_ref.csg $mode
+    # shellcheck disable=SC2086
+    same empty3d_flat.csg empty3d_flat_ref.csg $mode
+done
+
 # The first object decides, as in OpenSCAD: a file that starts with a 2D
 # object is a 2D model, its 3D objects left out.
 printf 'square(size = [10, 4], center = false);\ncube(size = [3, 3, 3], center = false);\n' >first2d.csg

@@ -43,8 +43,10 @@
  * own, an operation's that of its first child that has one) is the empty
  * region, as in OpenSCAD (an intersection with it is empty), with
  * OpenSCAD's warnings, "Mixing 2D and 3D objects is not supported"
- * (once per operation, not from offset and the extrusions) and "Ignoring
- * 3D child object for 2D operation". The recursion over the children is the one 2D walk
+ * (once per operation, at the first 3D child whose geometry is not empty,
+ * not from offset and the extrusions) and "Ignoring 3D child object for
+ * 2D operation" (not for a child with no geometry at all:
+ * build_presence_3d). The recursion over the children is the one 2D walk
  * (twod_walk, below), with its depth guard (TWOD_WALK_MAX_DEPTH).
  */
 #include "build/build_twod.h"
@@ -206,6 +208,91 @@ int build_dim(const model_node *n, int in_2d)
 int build_list_dim(const model_node *first, int in_2d)
 {
     return list_dim(twod_walk_next(first), in_2d, 0);
+}
+
+static int positive_finite(double x)
+{
+    return x > 0 && isfinite(x);
+}
+
+static build_presence presence(const model_node *n, int in_2d, int depth);
+
+/* A 3D operation over the children that count (neither '%' nor '*', nor
+ * 2D, which it ignores, nor shading nodes): none without any; a hull is
+ * none unless a child is some; one child is itself; then union-like
+ * operations are some when a child is, else none; a difference is its
+ * first child; an intersection none when a child is empty or none. A
+ * minkowski is taken as a union. */
+static build_presence operation(const model_node *n, int in_2d, int depth)
+{
+    uint32_t count = 0;
+    build_presence first = BUILD_NONE;
+    int some = 0, missing = 0;
+    for (const model_node *k = twod_walk_first(n); k; k = twod_walk_next(k->next)) {
+        if (k->kind == MODEL_LIGHT || k->kind == MODEL_CAMERA ||
+            k->kind == MODEL_BACKGROUND || build_dim(k, in_2d) == 2)
+            continue;
+        build_presence p = presence(k, in_2d, depth + 1);
+        if (count++ == 0)
+            first = p;
+        some |= p == BUILD_SOME;
+        missing |= p != BUILD_SOME;
+    }
+    if (count == 0)
+        return BUILD_NONE;
+    if (n->kind == MODEL_HULL)
+        return some ? BUILD_SOME : BUILD_NONE;
+    if (count == 1 || n->kind == MODEL_DIFFERENCE)
+        return first;
+    if (n->kind == MODEL_INTERSECTION)
+        return missing ? BUILD_NONE : BUILD_SOME;
+    return some ? BUILD_SOME : BUILD_NONE;
+}
+
+/* Past the walk's depth limit some: the walks report that depth. */
+static build_presence presence(const model_node *n, int in_2d, int depth)
+{
+    if (depth > TWOD_WALK_MAX_DEPTH || n->unsized)
+        return BUILD_SOME;
+    switch (n->kind) {
+    case MODEL_CUBE: {
+        const double *size = n->u.cube.size;
+        return positive_finite(size[0]) && positive_finite(size[1]) &&
+                       positive_finite(size[2])
+                   ? BUILD_SOME
+                   : BUILD_EMPTY;
+    }
+    case MODEL_SPHERE:
+        return positive_finite(n->u.sphere.r) ? BUILD_SOME : BUILD_EMPTY;
+    case MODEL_CYLINDER: {
+        double r1 = n->u.cylinder.r1, r2 = n->u.cylinder.r2;
+        int radii = r1 >= 0 && r2 >= 0 && isfinite(r1) && isfinite(r2) && (r1 || r2);
+        return positive_finite(n->u.cylinder.h) && radii ? BUILD_SOME : BUILD_EMPTY;
+    }
+    case MODEL_POLYHEDRON:
+        return n->u.polyhedron.face_count ? BUILD_SOME : BUILD_EMPTY;
+    case MODEL_XFORM:
+        if (n->not_finite) /* removed: no geometry (model.h) */
+            return BUILD_NONE;
+        return operation(n, in_2d, depth);
+    case MODEL_UNION:
+    case MODEL_DIFFERENCE:
+    case MODEL_INTERSECTION:
+    case MODEL_COLOR:
+    case MODEL_MATERIAL:
+    case MODEL_RESIZE:
+    case MODEL_MOTION:
+    case MODEL_HULL:
+    case MODEL_MINKOWSKI:
+        return operation(n, in_2d, depth);
+    default:
+        return BUILD_SOME;
+    }
+}
+
+build_presence build_presence_3d(const model_node *n, int in_2d)
+{
+    return presence(n, in_2d, 0);
 }
 
 /* ---- OpenSCAD's evaluation ---- */
@@ -386,6 +473,28 @@ static sc_status ignore_3d(const eval *e, const model_node *k, int mixing)
     return st;
 }
 
+/* The warnings for the 3D children among the nodes from first on, once
+ * they are all evaluated: that the operation mixes (when mixing is set),
+ * at the first 3D child whose geometry is not empty, then each ignored,
+ * but those with no geometry (build_presence_3d). */
+static sc_status ignore_3d_children(const eval *e, const model_node *first, int mixing)
+{
+    sc_status st = SC_OK;
+    for (const model_node *k = twod_walk_next(first); mixing && k;
+         k = twod_walk_next(k->next)) {
+        if (build_dim(k, e->in_2d) == 3 && build_presence_3d(k, e->in_2d) == BUILD_SOME) {
+            st = build_note(e->c, &k->loc, "Mixing 2D and 3D objects is not supported");
+            break;
+        }
+    }
+    for (const model_node *k = twod_walk_next(first); st == SC_OK && k;
+         k = twod_walk_next(k->next)) {
+        if (build_dim(k, e->in_2d) == 3 && build_presence_3d(k, e->in_2d) != BUILD_NONE)
+            st = ignore_3d(e, k, 0);
+    }
+    return st;
+}
+
 /* The regions of the nodes from first on, the children of an operation of
  * this kind ('%' and '*' left out; 3D ones ignored with a warning, as
  * OpenSCAD ignores them). *regions holds
@@ -424,14 +533,7 @@ static sc_status eval_list(eval *e, const model_node *first, model_kind kind,
     }
     /* After the children's own warnings, as OpenSCAD checks the
      * dimensions once its children are evaluated. */
-    for (const model_node *k = twod_walk_next(first); st == SC_OK && k;
-         k = twod_walk_next(k->next)) {
-        if (build_dim(k, e->in_2d) == 3) {
-            st = ignore_3d(e, k, mixing);
-            mixing = 0;
-        }
-    }
-    return st;
+    return st == SC_OK ? ignore_3d_children(e, first, mixing) : st;
 }
 
 static sc_status eval_children(eval *e, const model_node *n, twod_region **regions,
