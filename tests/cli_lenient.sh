@@ -693,8 +693,7 @@ printf 'linear_extrude(height = 1) {\n\tprojection(cut = false) {\n\t\tcube(size
 for mode in "" --faithful; do
     # shellcheck disable=SC2086
     {
-        warns proj_bad2d.csg 'proj_bad2d.csg:4:37: warning: Unable to convert points[2] = [1, "a"] to a vec2 of numbers; the polygon is empty, as OpenSCAD leaves it out (--strict makes it an error)
-proj_bad2d.csg:4:3: warning: 2D object '"'"'polygon'"'"' inside projection is ignored (as in OpenSCAD)' $mode
+        warns proj_bad2d.csg 'proj_bad2d.csg:4:37: warning: Unable to convert points[2] = [1, "a"] to a vec2 of numbers; the polygon is empty, as OpenSCAD leaves it out (--strict makes it an error)' $mode
         same proj_bad2d.csg proj_bad2d_ref.csg $mode
         check
         "$bin" render proj_bad2d.csg -o strict.png -q --strict $mode 2>err.txt &&
@@ -791,6 +790,79 @@ for mode in "" --faithful; do
     warns nf_flat.csg "nf_flat.csg:2:1: $removed" $mode
     # shellcheck disable=SC2086
     same nf_flat.csg nf_flat_ref.csg $mode
+done
+
+# ---- 2D children of projection ----
+# As OpenSCAD 2021.01: projection(cut = false) passes over a child that is
+# 2D (a shape, or a group or transform whose first child is) without a
+# word; projection(cut = true) unites its children as a 3D operation, so
+# each 2D child is 'Ignoring 2D child object for 3D operation', after all
+# of them, with no 'Mixing' (it does not check that). The 2D child still
+# gives its own warnings first. A 3D operation deeper inside is one like
+# any other. A projection with no 3D child is no geometry at all: no
+# dimension, no warning in a 3D operation, and a file that starts with one
+# is not a 2D model.
+cat >proj_cut2d.csg <<'M'
+union() {
+	cube(size = [2, 2, 2], center = false);
+	projection(cut = true) {
+		square(size = [1, 1], center = false);
+	}
+	projection(cut = false) {
+		square(size = [1, 1], center = false);
+	}
+}
+M
+printf 'cube(size = [2, 2, 2], center = false);\n' >proj_cube_ref.csg
+cat >proj_group2d.csg <<'M'
+linear_extrude(height = 1) {
+	projection(cut = false) {
+		group() {
+			square(size = [5, 5], center = false);
+			cube(size = [4, 4, 1], center = false);
+		}
+		multmatrix([[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]) {
+			square(size = [1, 1], center = false);
+		}
+		multmatrix([[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, -0.5], [0, 0, 0, 1]]) { cube(size = [2, 3, 1], center = false); }
+	}
+}
+M
+sed 's/cut = false/cut = true/' proj_group2d.csg >proj_group2d_cut.csg
+printf 'linear_extrude(height = 1) { square(size = [2, 3], center = false); }\n' >proj_group2d_ref.csg
+cat >proj_nested2d.csg <<'M'
+projection(cut = true) {
+	union() {
+		multmatrix([[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, -1], [0, 0, 0, 1]]) {
+			cube(size = [2, 2, 2], center = false);
+		}
+		square(size = [0, 1], center = false);
+		square(size = [5, 5], center = false);
+	}
+}
+M
+printf 'square(size = [2, 2], center = false);\n' >proj_nested2d_ref.csg
+printf 'projection(cut = true) {\n\tsquare(size = [1, 1], center = false);\n}\ncube(size = [2, 2, 2], center = false);\n' >proj_first.csg
+printf 'projection(cut = false) {\n\tsquare(size = [1, 1], center = false);\n}\n' >proj_only.csg
+for mode in "" --faithful; do
+    warns proj_cut2d.csg "proj_cut2d.csg:4:3: warning: Ignoring 2D child object for 3D operation" $mode
+    warns proj_group2d.csg "proj_group2d.csg:5:4: warning: Mixing 2D and 3D objects is not supported
+proj_group2d.csg:5:4: warning: Ignoring 3D child object for 2D operation" $mode
+    warns proj_group2d_cut.csg "proj_group2d_cut.csg:5:4: warning: Mixing 2D and 3D objects is not supported
+proj_group2d_cut.csg:5:4: warning: Ignoring 3D child object for 2D operation
+proj_group2d_cut.csg:3:3: warning: Ignoring 2D child object for 3D operation
+proj_group2d_cut.csg:7:3: warning: Ignoring 2D child object for 3D operation" $mode
+    warns proj_nested2d.csg "proj_nested2d.csg:7:3: warning: Mixing 2D and 3D objects is not supported
+proj_nested2d.csg:6:3: warning: Ignoring 2D child object for 3D operation
+proj_nested2d.csg:7:3: warning: Ignoring 2D child object for 3D operation" $mode
+    warns proj_first.csg "proj_first.csg:2:2: warning: Ignoring 2D child object for 3D operation" $mode
+    warns proj_only.csg "proj_only.csg: warning: the model is empty (nothing to render)" $mode
+    for pair in proj_cut2d.csg:proj_cube_ref.csg proj_first.csg:proj_cube_ref.csg \
+        proj_group2d.csg:proj_group2d_ref.csg proj_group2d_cut.csg:proj_group2d_ref.csg \
+        proj_nested2d.csg:proj_nested2d_ref.csg; do
+        # shellcheck disable=SC2086
+        same "${pair%%:*}" "${pair#*:}" $mode
+    done
 done
 
 # ---- a lossy mask ----

@@ -843,6 +843,17 @@ static sc_status visit_leaf(builder *b, const model_node *n, const frame *f)
     case MODEL_POLYHEDRON:
         st = build_polyhedron(b, n, f, &id);
         break;
+    case MODEL_PROJECTION: {
+        /* without a 3D child (build_projects): no geometry, as in OpenSCAD,
+         * so neither 2D nor ignored; its children still give their
+         * warnings */
+        build_ctx c = context(b, f->emit, NULL);
+        twod_region r;
+        twod_init(&r);
+        st = build_twod_main(&c, n, &r);
+        twod_free(&r);
+        break;
+    }
     default: /* the 2D shapes, taken before */
         st = SC_OK;
         break;
@@ -871,8 +882,9 @@ static sc_status visit(builder *b, const model_node *n, int *opened)
         return st;
     if (plain_leaf(b, n, parent))
         return visit_leaf(b, n, parent);
+    int flat = build_dim(n, 0) == 2 && (kind != MODEL_PROJECTION || build_projects(n));
     if (model_is_leaf(kind) || kind == MODEL_LIGHT || kind == MODEL_CAMERA ||
-        kind == MODEL_BACKGROUND || build_dim(n, 0) == 2) {
+        kind == MODEL_BACKGROUND || flat) {
         frame f;
         inherit(b, n, parent, &f);
         if (kind == MODEL_LIGHT)
@@ -885,7 +897,7 @@ static sc_status visit(builder *b, const model_node *n, int *opened)
             build_background(b->shading, n, f.emit);
             return SC_OK;
         }
-        if (build_dim(n, 0) == 2) {
+        if (flat) {
             /* ignored, it is the empty solid, which empties an intersection
              * as in OpenSCAD */
             uint32_t id = CSG_EMPTY;

@@ -145,7 +145,7 @@ static int kind_dim(const model_node *n, int in_2d)
     case MODEL_POLYGON:
     case MODEL_TEXT:
     case MODEL_OFFSET:
-    case MODEL_PROJECTION:
+    case MODEL_PROJECTION: /* without a 3D child, it decides none (list_dim) */
         return 2;
     case MODEL_IMPORT:
         return drawing_of(n, in_2d) ? 2 : 3;
@@ -179,6 +179,21 @@ static int kind_dim(const model_node *n, int in_2d)
 }
 
 static int list_dim(const model_node *first, int in_2d, int depth);
+static int node_dim(const model_node *n, int in_2d, int depth);
+
+/* Whether projection n has a child that is 3D (its children are lowered
+ * in the points context, model.h): without one OpenSCAD 2021.01 makes no
+ * geometry of it, so it decides no dimension. */
+static int projects(const model_node *n, int depth)
+{
+    if (depth > TWOD_WALK_MAX_DEPTH)
+        return 1;
+    for (const model_node *k = twod_walk_first(n); k; k = twod_walk_next(k->next)) {
+        if (node_dim(k, 0, depth + 1) == 3)
+            return 1;
+    }
+    return 0;
+}
 
 static int node_dim(const model_node *n, int in_2d, int depth)
 {
@@ -193,7 +208,9 @@ static int list_dim(const model_node *first, int in_2d, int depth)
     if (depth > TWOD_WALK_MAX_DEPTH)
         return 0;
     for (const model_node *k = first; k; k = twod_walk_next(k->next)) {
-        int d = node_dim(k, in_2d, depth);
+        int d = k->kind == MODEL_PROJECTION && !projects(k, depth)
+                    ? 0
+                    : node_dim(k, in_2d, depth);
         if (d)
             return d;
     }
@@ -208,6 +225,11 @@ int build_dim(const model_node *n, int in_2d)
 int build_list_dim(const model_node *first, int in_2d)
 {
     return list_dim(twod_walk_next(first), in_2d, 0);
+}
+
+int build_projects(const model_node *n)
+{
+    return projects(n, 0);
 }
 
 static int positive_finite(double x)

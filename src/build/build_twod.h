@@ -33,11 +33,16 @@ sc_status build_twod_top(const build_ctx *c, const model_node *first, twod_regio
  * below it has one (an empty group, a light). A shape has its own; an
  * operation (group, union, difference, intersection, multmatrix, color,
  * and hull and minkowski in the 2D context) has that of its first child
- * with one ('%' and '*' children do not count). in_2d: n was lowered in
+ * with one ('%' and '*' children do not count; nor a projection without
+ * a 3D child, which OpenSCAD makes no geometry: build_projects). in_2d: n
+ * was lowered in
  * the 2D context (model.h). build_list_dim: the same over a list of
  * nodes from first on, the top level of a file. */
 int build_dim(const model_node *n, int in_2d);
 int build_list_dim(const model_node *first, int in_2d);
+/* Whether projection n has a child that is 3D, so that OpenSCAD 2021.01
+ * makes geometry of it. */
+int build_projects(const model_node *n);
 
 /* What OpenSCAD 2021.01's geometry of the 3D node n is, which decides its
  * warnings in a 2D operation: some (or not known to be empty), empty (a
