@@ -865,6 +865,14 @@ proj_nested2d.csg:7:3: warning: Ignoring 2D child object for 3D operation" $mode
     done
 done
 
+# ---- '%' subtrees ----
+# A '%' mesh (an extrusion, a polyhedron) is drawn by the preview like any
+# other part: the parts have the model's budget of mesh triangles.
+printf 'cube(size = [2, 2, 2], center = false);\n%%linear_extrude(height = 1) { square(size = [1, 1], center = false); }\n%%polyhedron(points = [[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1]], faces = [[0, 1, 2], [0, 3, 1], [0, 2, 3], [1, 3, 2]]);\n' >pct_mesh.csg
+for mode in "" --faithful --preview; do
+    warns pct_mesh.csg "" $mode
+done
+
 # ---- a lossy mask ----
 warns cube_ref.csg "spancast: warning: --mask=m.jpg: JPEG is lossy, so the mask is no longer exactly 0 and 255 at the model's edges (.png, .tif and .exr are exact)" --mask=m.jpg
 check

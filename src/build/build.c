@@ -1102,6 +1102,9 @@ static sc_status build_parts(builder *b)
         sub.file = b->file;
         sub.error = &error;
         sub.faithful = b->faithful;
+        /* the parts' meshes have what is left of the model's budget */
+        sub.max_triangles = b->max_triangles;
+        sub.triangles_left = b->triangles_left;
         sub.resize_cache = b->resize_cache;
         sub.imports = b->imports;
         sub.csg = csg_builder_new();
@@ -1125,6 +1128,7 @@ static sc_status build_parts(builder *b)
         }
         b->resize_cache = sub.resize_cache;
         b->imports = sub.imports;
+        b->triangles_left = sub.triangles_left;
         free(sub.ids);
         free(sub.frames);
         free(sub.ignored);
