@@ -873,6 +873,73 @@ for mode in "" --faithful --preview; do
     warns pct_mesh.csg "" $mode
 done
 
+# OpenSCAD 2021.01's render evaluates a '%' subtree before it leaves it
+# out: its nodes give their warnings (a 3D operation mixing, a polygon's
+# point, an import that does not open, a removed transform), in file
+# order; the '%' node itself is no operand of its parent, which says
+# nothing of it (the 2D square at line 7). None of it is rendered.
+cat >pct.csg <<'M'
+union() {
+	cube(size = [2, 2, 2], center = false);
+	%union() {
+		cube(size = [1, 1, 1], center = false);
+		square(size = [1, 1], center = false);
+	}
+	%square(size = [1, 1], center = false);
+	%linear_extrude(height = 1) { union() { square(size = [1, 1], center = false); cube(size = [1, 1, 1], center = false); } }
+	%polygon(points = [[0, 0], [1, 0], [1, "a"]]);
+	%import(file = "missing.stl");
+	%multmatrix([[nan, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]) { cube(size = [1, 1, 1], center = false); }
+}
+M
+cat >pct_top.csg <<'M'
+%union() {
+	cube(size = [1, 1, 1], center = false);
+	polygon(points = [[0, 0], [1, 0], [1, "a"]]);
+}
+cube(size = [2, 2, 2], center = false);
+M
+# the same for a singular transform, whose subtree OpenSCAD evaluates too
+cat >pct_singular.csg <<'M'
+union() {
+	cube(size = [2, 2, 2], center = false);
+	multmatrix([[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 0, 0], [0, 0, 0, 1]]) {
+		union() {
+			cube(size = [1, 1, 1], center = false);
+			square(size = [1, 1], center = false);
+		}
+	}
+}
+M
+printf 'cube(size = [2, 2, 2], center = false);\n' >pct_ref.csg
+for mode in "" --faithful; do
+    warns pct.csg 'pct.csg:5:3: warning: Mixing 2D and 3D objects is not supported
+pct.csg:5:3: warning: Ignoring 2D child object for 3D operation
+pct.csg:8:81: warning: Mixing 2D and 3D objects is not supported
+pct.csg:8:81: warning: Ignoring 3D child object for 2D operation
+pct.csg:9:37: warning: Unable to convert points[2] = [1, "a"] to a vec2 of numbers; the polygon is empty, as OpenSCAD leaves it out (--strict makes it an error)
+pct.csg:10:17: warning: Can'"'"'t open import file '"'"'missing.stl'"'"': No such file or directory; the import is empty, as OpenSCAD leaves it out (--strict makes it an error)
+pct.csg:11:3: warning: Transformation matrix contains Not-a-Number and/or Infinity - removing object.' $mode
+    warns pct_top.csg 'pct_top.csg:3:36: warning: Unable to convert points[2] = [1, "a"] to a vec2 of numbers; the polygon is empty, as OpenSCAD leaves it out (--strict makes it an error)
+pct_top.csg:3:2: warning: Ignoring 2D child object for 3D operation' $mode
+    warns pct_singular.csg "pct_singular.csg:3:2: warning: singular transform: subtree is empty
+pct_singular.csg:6:4: warning: Mixing 2D and 3D objects is not supported
+pct_singular.csg:6:4: warning: Ignoring 2D child object for 3D operation" $mode
+    for model in pct.csg pct_top.csg pct_singular.csg; do
+        # shellcheck disable=SC2086
+        same "$model" pct_ref.csg $mode
+    done
+    # --strict: the polygon's point is the error
+    check
+    rm -f strict.png
+    # shellcheck disable=SC2086
+    "$bin" render pct.csg -o strict.png -q --strict $mode 2>err.txt &&
+        fail "pct.csg --strict $mode: exit 0"
+    [ "$(cat err.txt)" = "pct.csg:9:37: error: wrong type for argument 'points' of 'polygon' (expected a vector of [x, y] points)" ] ||
+        fail "pct.csg --strict $mode: $(cat err.txt)"
+    [ -e strict.png ] && fail "pct.csg --strict $mode: an image was written"
+done
+
 # ---- a lossy mask ----
 warns cube_ref.csg "spancast: warning: --mask=m.jpg: JPEG is lossy, so the mask is no longer exactly 0 and 255 at the model's edges (.png, .tif and .exr are exact)" --mask=m.jpg
 check
