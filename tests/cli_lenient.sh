@@ -783,6 +783,56 @@ for mode in "" --faithful; do
         same "${pair%%:*}" "${pair#*:}" $mode
     done
 done
+# OpenSCAD evaluates the removed object's children before it removes it:
+# their own warnings come first (a polygon's point, a 2D union with a 3D
+# child), then the removal; the removed object does not check its own
+# children's dimensions (no word of the 2D ones in a 3D multmatrix). In a
+# 2D operation (an extrusion) the same, in both modes. --strict: the first
+# of them is the error.
+cat >nf_warn.csg <<'M'
+union() {
+	cube(size = [1, 1, 1], center = false);
+	multmatrix([[nan, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]) {
+		cube(size = [1, 1, 1], center = false);
+		polygon(points = [[0, 0], [1, 0], [1, "a"]]);
+		square(size = [1, 1], center = false);
+		linear_extrude(height = 1) { union() { square(size = [1, 1], center = false); cube(size = [1, 1, 1], center = false); } }
+	}
+}
+M
+cat >nf_warn_flat.csg <<'M'
+linear_extrude(height = 1) {
+	square(size = [1, 1], center = false);
+	multmatrix([[nan, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]) {
+		polygon(points = [[0, 0], [1, 0], [1, "a"]]);
+		cube(size = [1, 1, 1], center = false);
+		union() { square(size = [1, 1], center = false); cube(size = [1, 1, 1], center = false); }
+	}
+}
+M
+printf 'linear_extrude(height = 1) { square(size = [1, 1], center = false); }\n' >nf_warn_flat_ref.csg
+for mode in "" --faithful; do
+    warns nf_warn.csg 'nf_warn.csg:5:37: warning: Unable to convert points[2] = [1, "a"] to a vec2 of numbers; the polygon is empty, as OpenSCAD leaves it out (--strict makes it an error)
+nf_warn.csg:7:81: warning: Mixing 2D and 3D objects is not supported
+nf_warn.csg:7:81: warning: Ignoring 3D child object for 2D operation
+nf_warn.csg:3:2: '"$removed" $mode
+    warns nf_warn_flat.csg 'nf_warn_flat.csg:4:37: warning: Unable to convert points[2] = [1, "a"] to a vec2 of numbers; the polygon is empty, as OpenSCAD leaves it out (--strict makes it an error)
+nf_warn_flat.csg:6:52: warning: Mixing 2D and 3D objects is not supported
+nf_warn_flat.csg:6:52: warning: Ignoring 3D child object for 2D operation
+nf_warn_flat.csg:3:2: '"$removed" $mode
+    # shellcheck disable=SC2086
+    same nf_warn.csg cube_ref.csg $mode
+    # shellcheck disable=SC2086
+    same nf_warn_flat.csg nf_warn_flat_ref.csg $mode
+    for model in nf_warn.csg:5 nf_warn_flat.csg:4; do
+        check
+        # shellcheck disable=SC2086
+        "$bin" render "${model%%:*}" -o strict.png -q --strict $mode 2>err.txt &&
+            fail "$model --strict $mode: exit 0"
+        [ "$(cat err.txt)" = "${model%%:*}:${model#*:}:37: error: wrong type for argument 'points' of 'polygon' (expected a vector of [x, y] points)" ] ||
+            fail "$model --strict $mode: $(cat err.txt)"
+    done
+done
 # a 2D model: the first object decides, the removed one is no object
 printf 'square(size = [1, 1], center = false);\n%s square(size = [1, 1], center = false); } }\n' "$inf_block" >nf_flat.csg
 printf 'square(size = [1, 1], center = false);\n' >nf_flat_ref.csg

@@ -16,12 +16,14 @@
  *            counted as the empty solid, since OpenSCAD gives its subtree
  *            no geometry, which empties an enclosing intersection);
  *   warns    the nodes under it give their warnings: where they are built,
- *            and also under '%' and under a singular transform, whose
- *            subtrees OpenSCAD 2021.01's render evaluates (with their
- *            warnings) before it leaves them out; off outside the '!'
- *            subtree and under a transform removed for a nan or inf
- *            entry. A '%' child is no operand of its parent there, so its
- *            parent does not warn that it mixes 2D and 3D or ignores it.
+ *            and also under '%', under a singular transform and under a
+ *            transform removed for a nan or inf entry, whose subtrees
+ *            OpenSCAD 2021.01's render evaluates (with their warnings)
+ *            before it leaves them out; off outside the '!' subtree. A
+ *            '%' child is no operand of its parent there, so its parent
+ *            does not warn that it mixes 2D and 3D or ignores it; a
+ *            removed transform warns of neither for its own children,
+ *            and says that it is removed after their warnings.
  * Nodes that are not built are still checked, so an error is an error
  * wherever it is written; only '*' subtrees are skipped unread. What
  * warns without being built is only checked, as any node that is not
@@ -751,7 +753,16 @@ static sc_status pop_frame(builder *b)
      * below pushes a frame, so the slot stays as it is. */
     const frame *f = &b->frames[--b->frame_count];
     uint32_t id = CSG_EMPTY;
-    sc_status st = flush_ignored(b, f);
+    sc_status st;
+    if (f->node && f->node->kind == MODEL_XFORM && f->node->not_finite) {
+        /* removed after its children's warnings, without checking their
+         * dimensions */
+        build_ctx c = context(b, f->warns, NULL);
+        b->ignored_count = f->first_ignored;
+        st = build_xform_not_finite(&c, f->node);
+    } else {
+        st = flush_ignored(b, f);
+    }
     if (st != SC_OK)
         return st;
     if (f->emit) {
@@ -943,16 +954,11 @@ static sc_status visit(builder *b, const model_node *n, int *opened)
     if (kind == MODEL_XFORM) {
         affine inverse;
         f->to_world = affine_mul(&f->to_world, n->u.xform);
-        if (f->warns && n->not_finite) {
+        if (n->not_finite) {
             /* OpenSCAD 2021.01 removes the subtree, in the render and the
-             * preview alike */
-            build_ctx c = context(b, 1, NULL);
-            if ((st = build_xform_not_finite(&c, n)) != SC_OK)
-                return st;
+             * preview alike, once its children are evaluated: the warning
+             * comes when it ends (pop_frame) */
             f->emit = 0; /* still counted: the empty solid */
-            f->warns = 0;
-        } else if (n->not_finite) {
-            f->warns = 0;
         } else if (f->emit && !affine_invert(&f->to_world, &inverse)) {
             if ((st = warn(b, &n->loc, "singular transform: subtree is empty")) != SC_OK)
                 return st;

@@ -97,19 +97,13 @@ sc_status twod_walk(twod_walker *w, const model_node *n, const affine2 *m, int d
 sc_status twod_walk_children(twod_walker *w, const model_node *n, const affine2 *m,
                              int depth)
 {
-    /* A multmatrix removed for a nan or inf entry (twod_walk_fold warned):
-     * its children are only checked, with nothing more said of them. */
-    const build_ctx *c = w->c;
-    build_ctx quiet = *c;
-    quiet.notes = NULL;
-    if (n->kind == MODEL_XFORM && n->not_finite)
-        w->c = &quiet;
     sc_status st = SC_OK;
     for (const model_node *k = twod_walk_first(n); st == SC_OK && k;
          k = twod_walk_next(k->next))
         st = twod_walk(w, k, m, depth + 1, NULL);
-    w->c = c;
-    return st;
+    /* A multmatrix removed for a nan or inf entry: OpenSCAD 2021.01 says so
+     * once its children are evaluated, with their warnings. */
+    return st == SC_OK ? build_xform_not_finite(w->c, n) : st;
 }
 
 sc_status twod_walk_fold(const twod_walker *w, const model_node *n, const affine2 *m,
@@ -118,7 +112,7 @@ sc_status twod_walk_fold(const twod_walker *w, const model_node *n, const affine
     if (n->pending)
         return build_pending(w->c, n);
     build_matrix_xy(n->u.xform, m->m, inner->m);
-    return build_xform_not_finite(w->c, n);
+    return SC_OK;
 }
 
 /* ---- dimensions ---- */
@@ -519,9 +513,10 @@ static sc_status ignore_3d_children(const eval *e, const model_node *first, int 
 
 /* The regions of the nodes from first on, the children of an operation of
  * this kind ('%' and '*' left out; 3D ones ignored with a warning, as
- * OpenSCAD ignores them). *regions holds
- * *count initialised regions, to be freed by free_children. */
-static sc_status eval_list(eval *e, const model_node *first, model_kind kind,
+ * OpenSCAD ignores them, unless removed: the operation is a multmatrix
+ * removed for a nan or inf entry). *regions holds *count initialised
+ * regions, to be freed by free_children. */
+static sc_status eval_list(eval *e, const model_node *first, model_kind kind, int removed,
                            twod_region **regions, uint32_t *count, int depth)
 {
     *regions = NULL;
@@ -554,8 +549,9 @@ static sc_status eval_list(eval *e, const model_node *first, model_kind kind,
             st = unsupported_import(e, k);
     }
     /* After the children's own warnings, as OpenSCAD checks the
-     * dimensions once its children are evaluated. */
-    return st == SC_OK ? ignore_3d_children(e, first, mixing) : st;
+     * dimensions once its children are evaluated; not those of a
+     * multmatrix it removes for a nan or inf entry. */
+    return st == SC_OK && !removed ? ignore_3d_children(e, first, mixing) : st;
 }
 
 static sc_status eval_children(eval *e, const model_node *n, twod_region **regions,
@@ -567,7 +563,9 @@ static sc_status eval_children(eval *e, const model_node *n, twod_region **regio
     int outer_2d = e->in_2d;
     e->in_2d = outer_2d || model_is_2d(n->kind) || n->kind == MODEL_LINEAR_EXTRUDE ||
                n->kind == MODEL_ROTATE_EXTRUDE;
-    sc_status st = eval_list(e, n->first_child, n->kind, regions, count, depth);
+    sc_status st =
+        eval_list(e, n->first_child, n->kind, n->kind == MODEL_XFORM && n->not_finite,
+                  regions, count, depth);
     e->in_2d = outer_2d;
     return st;
 }
@@ -620,7 +618,7 @@ static sc_status read_matrix(const eval *e, const model_node *n, double m[2][3])
     if (n->pending)
         return pending(e, n);
     build_matrix_xy(n->u.xform, id, m);
-    return build_xform_not_finite(e->c, n);
+    return SC_OK;
 }
 
 static sc_status transform(const eval *e, const model_node *n, double m[2][3],
@@ -893,17 +891,17 @@ static sc_status eval_node(twod_walker *w, const model_node *n, const affine2 *u
         return st;
     if (kind == MODEL_RESIZE && n->pending)
         return pending(e, n);
-    /* A multmatrix removed for a nan or inf entry (read_matrix warned):
-     * its children are only checked, since OpenSCAD neither combines them
-     * nor checks their dimensions. */
-    build_ctx quiet = *e->c;
-    quiet.notes = NULL;
-    eval checked = *e;
-    checked.c = checked.walk.c = &quiet;
     twod_region *regions;
     uint32_t count;
-    st = eval_children(kind == MODEL_XFORM && n->not_finite ? &checked : e, n, &regions,
-                       &count, depth);
+    st = eval_children(e, n, &regions, &count, depth);
+    if (st == SC_OK && kind == MODEL_XFORM && n->not_finite) {
+        /* removed for a nan or inf entry: OpenSCAD 2021.01 evaluates the
+         * children (their warnings, not its check of their dimensions,
+         * eval_list), then says so */
+        free_children(regions, count);
+        twod_clear(out);
+        return build_xform_not_finite(e->c, n);
+    }
     if (st == SC_OK) {
         if (kind == MODEL_HULL)
             st = hull(e, n, regions, count, out);
@@ -969,7 +967,7 @@ sc_status build_twod_top(const build_ctx *c, const model_node *first, twod_regio
     e.in_2d = 0;
     twod_region *regions;
     uint32_t count;
-    sc_status st = eval_list(&e, first, MODEL_UNION, &regions, &count, 0);
+    sc_status st = eval_list(&e, first, MODEL_UNION, 0, &regions, &count, 0);
     if (st == SC_OK && count)
         st = combine(&e, first, regions, count, TWOD_UNION, out);
     free_children(regions, count);

@@ -81,13 +81,15 @@ const model_node *twod_walk_next(const model_node *k);
  * w->visit. */
 sc_status twod_walk(twod_walker *w, const model_node *n, const affine2 *m, int depth,
                     void *out);
-/* Visits the children of n that count at depth + 1, without results; those
- * of a multmatrix removed for a nan or inf entry with no warnings (only
- * their errors count). */
+/* Visits the children of n that count at depth + 1, without results; then,
+ * for a multmatrix removed for a nan or inf entry, OpenSCAD 2021.01's
+ * warning that it is removed (build_xform_not_finite), after its
+ * children's, as OpenSCAD evaluates them first. */
 sc_status twod_walk_children(twod_walker *w, const model_node *n, const affine2 *m,
                              int depth);
 /* The transform under multmatrix n: m times the xy part of its matrix (its
- * argument error, if any, first). */
+ * argument error, if any, first). A visitor that walks the children itself
+ * says that a removed one is removed after them (build_xform_not_finite). */
 sc_status twod_walk_fold(const twod_walker *w, const model_node *n, const affine2 *m,
                          affine2 *inner);
 
