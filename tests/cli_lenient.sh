@@ -89,6 +89,59 @@ warns cut.csg "cut.csg:4:3: warning: Mixing 2D and 3D objects is not supported
 cut.csg:4:3: warning: Ignoring 3D child object for 2D operation"
 same cut.csg cut_ref.csg
 
+# An empty 3D child (cube(0), sphere(0), a difference from an empty one)
+# mixes nothing, as OpenSCAD 2021.01's isValidDim passes over empty
+# geometry: it is only ignored. One that is no geometry at all (an empty
+# group; a union or hull with nothing in it; an intersection with an empty
+# child) is not even ignored. The first warning is at the first 3D child
+# that is not empty, before the others.
+cat >empty3d.csg <<'M'
+union() {
+	square(size = [10, 6], center = false);
+	cube(size = [0, 1, 1], center = false);
+	sphere(r = 0);
+	group() {
+		cube(size = [0, 0, 0], center = false);
+		cylinder(h = 0, r1 = 1, r2 = 1, center = false);
+	}
+	group();
+	intersection() {
+		cube(size = [1, 1, 1], center = false);
+		cube(size = [0, 1, 1], center = false);
+	}
+	difference() {
+		polyhedron(points = [], faces = []);
+		cube(size = [1, 1, 1], center = false);
+	}
+	cube(size = [1, 1, 1], center = false);
+}
+M
+printf 'square(size = [10, 6], center = false);\n' >empty3d_ref.csg
+cat >empty3d_flat.csg <<'M'
+linear_extrude(height = 3) {
+	difference() {
+		square(size = [10, 6], center = false);
+		cube(size = [3, 3, 0], center = false);
+		hull() {
+			sphere(r = 0);
+		}
+	}
+}
+M
+printf 'linear_extrude(height = 3) { square(size = [10, 6], center = false); }\n' >empty3d_flat_ref.csg
+for mode in "" --faithful; do
+    warns empty3d.csg "empty3d.csg:18:2: warning: Mixing 2D and 3D objects is not supported
+empty3d.csg:3:2: warning: Ignoring 3D child object for 2D operation
+empty3d.csg:4:2: warning: Ignoring 3D child object for 2D operation
+empty3d.csg:14:2: warning: Ignoring 3D child object for 2D operation
+empty3d.csg:18:2: warning: Ignoring 3D child object for 2D operation" $mode
+    warns empty3d_flat.csg "empty3d_flat.csg:4:3: warning: Ignoring 3D child object for 2D operation" $mode
+    # shellcheck disable=SC2086
+    same empty3d.csg empty3d_ref.csg $mode
+    # shellcheck disable=SC2086
+    same empty3d_flat.csg empty3d_flat_ref.csg $mode
+done
+
 # The first object decides, as in OpenSCAD: a file that starts with a 2D
 # object is a 2D model, its 3D objects left out.
 printf 'square(size = [10, 4], center = false);\ncube(size = [3, 3, 3], center = false);\n' >first2d.csg
@@ -640,8 +693,7 @@ printf 'linear_extrude(height = 1) {\n\tprojection(cut = false) {\n\t\tcube(size
 for mode in "" --faithful; do
     # shellcheck disable=SC2086
     {
-        warns proj_bad2d.csg 'proj_bad2d.csg:4:37: warning: Unable to convert points[2] = [1, "a"] to a vec2 of numbers; the polygon is empty, as OpenSCAD leaves it out (--strict makes it an error)
-proj_bad2d.csg:4:3: warning: 2D object '"'"'polygon'"'"' inside projection is ignored (as in OpenSCAD)' $mode
+        warns proj_bad2d.csg 'proj_bad2d.csg:4:37: warning: Unable to convert points[2] = [1, "a"] to a vec2 of numbers; the polygon is empty, as OpenSCAD leaves it out (--strict makes it an error)' $mode
         same proj_bad2d.csg proj_bad2d_ref.csg $mode
         check
         "$bin" render proj_bad2d.csg -o strict.png -q --strict $mode 2>err.txt &&
@@ -731,6 +783,56 @@ for mode in "" --faithful; do
         same "${pair%%:*}" "${pair#*:}" $mode
     done
 done
+# OpenSCAD evaluates the removed object's children before it removes it:
+# their own warnings come first (a polygon's point, a 2D union with a 3D
+# child), then the removal; the removed object does not check its own
+# children's dimensions (no word of the 2D ones in a 3D multmatrix). In a
+# 2D operation (an extrusion) the same, in both modes. --strict: the first
+# of them is the error.
+cat >nf_warn.csg <<'M'
+union() {
+	cube(size = [1, 1, 1], center = false);
+	multmatrix([[nan, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]) {
+		cube(size = [1, 1, 1], center = false);
+		polygon(points = [[0, 0], [1, 0], [1, "a"]]);
+		square(size = [1, 1], center = false);
+		linear_extrude(height = 1) { union() { square(size = [1, 1], center = false); cube(size = [1, 1, 1], center = false); } }
+	}
+}
+M
+cat >nf_warn_flat.csg <<'M'
+linear_extrude(height = 1) {
+	square(size = [1, 1], center = false);
+	multmatrix([[nan, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]) {
+		polygon(points = [[0, 0], [1, 0], [1, "a"]]);
+		cube(size = [1, 1, 1], center = false);
+		union() { square(size = [1, 1], center = false); cube(size = [1, 1, 1], center = false); }
+	}
+}
+M
+printf 'linear_extrude(height = 1) { square(size = [1, 1], center = false); }\n' >nf_warn_flat_ref.csg
+for mode in "" --faithful; do
+    warns nf_warn.csg 'nf_warn.csg:5:37: warning: Unable to convert points[2] = [1, "a"] to a vec2 of numbers; the polygon is empty, as OpenSCAD leaves it out (--strict makes it an error)
+nf_warn.csg:7:81: warning: Mixing 2D and 3D objects is not supported
+nf_warn.csg:7:81: warning: Ignoring 3D child object for 2D operation
+nf_warn.csg:3:2: '"$removed" $mode
+    warns nf_warn_flat.csg 'nf_warn_flat.csg:4:37: warning: Unable to convert points[2] = [1, "a"] to a vec2 of numbers; the polygon is empty, as OpenSCAD leaves it out (--strict makes it an error)
+nf_warn_flat.csg:6:52: warning: Mixing 2D and 3D objects is not supported
+nf_warn_flat.csg:6:52: warning: Ignoring 3D child object for 2D operation
+nf_warn_flat.csg:3:2: '"$removed" $mode
+    # shellcheck disable=SC2086
+    same nf_warn.csg cube_ref.csg $mode
+    # shellcheck disable=SC2086
+    same nf_warn_flat.csg nf_warn_flat_ref.csg $mode
+    for model in nf_warn.csg:5 nf_warn_flat.csg:4; do
+        check
+        # shellcheck disable=SC2086
+        "$bin" render "${model%%:*}" -o strict.png -q --strict $mode 2>err.txt &&
+            fail "$model --strict $mode: exit 0"
+        [ "$(cat err.txt)" = "${model%%:*}:${model#*:}:37: error: wrong type for argument 'points' of 'polygon' (expected a vector of [x, y] points)" ] ||
+            fail "$model --strict $mode: $(cat err.txt)"
+    done
+done
 # a 2D model: the first object decides, the removed one is no object
 printf 'square(size = [1, 1], center = false);\n%s square(size = [1, 1], center = false); } }\n' "$inf_block" >nf_flat.csg
 printf 'square(size = [1, 1], center = false);\n' >nf_flat_ref.csg
@@ -738,6 +840,154 @@ for mode in "" --faithful; do
     warns nf_flat.csg "nf_flat.csg:2:1: $removed" $mode
     # shellcheck disable=SC2086
     same nf_flat.csg nf_flat_ref.csg $mode
+done
+
+# ---- 2D children of projection ----
+# As OpenSCAD 2021.01: projection(cut = false) passes over a child that is
+# 2D (a shape, or a group or transform whose first child is) without a
+# word; projection(cut = true) unites its children as a 3D operation, so
+# each 2D child is 'Ignoring 2D child object for 3D operation', after all
+# of them, with no 'Mixing' (it does not check that). The 2D child still
+# gives its own warnings first. A 3D operation deeper inside is one like
+# any other. A projection with no 3D child is no geometry at all: no
+# dimension, no warning in a 3D operation, and a file that starts with one
+# is not a 2D model.
+cat >proj_cut2d.csg <<'M'
+union() {
+	cube(size = [2, 2, 2], center = false);
+	projection(cut = true) {
+		square(size = [1, 1], center = false);
+	}
+	projection(cut = false) {
+		square(size = [1, 1], center = false);
+	}
+}
+M
+printf 'cube(size = [2, 2, 2], center = false);\n' >proj_cube_ref.csg
+cat >proj_group2d.csg <<'M'
+linear_extrude(height = 1) {
+	projection(cut = false) {
+		group() {
+			square(size = [5, 5], center = false);
+			cube(size = [4, 4, 1], center = false);
+		}
+		multmatrix([[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]) {
+			square(size = [1, 1], center = false);
+		}
+		multmatrix([[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, -0.5], [0, 0, 0, 1]]) { cube(size = [2, 3, 1], center = false); }
+	}
+}
+M
+sed 's/cut = false/cut = true/' proj_group2d.csg >proj_group2d_cut.csg
+printf 'linear_extrude(height = 1) { square(size = [2, 3], center = false); }\n' >proj_group2d_ref.csg
+cat >proj_nested2d.csg <<'M'
+projection(cut = true) {
+	union() {
+		multmatrix([[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, -1], [0, 0, 0, 1]]) {
+			cube(size = [2, 2, 2], center = false);
+		}
+		square(size = [0, 1], center = false);
+		square(size = [5, 5], center = false);
+	}
+}
+M
+printf 'square(size = [2, 2], center = false);\n' >proj_nested2d_ref.csg
+printf 'projection(cut = true) {\n\tsquare(size = [1, 1], center = false);\n}\ncube(size = [2, 2, 2], center = false);\n' >proj_first.csg
+printf 'projection(cut = false) {\n\tsquare(size = [1, 1], center = false);\n}\n' >proj_only.csg
+for mode in "" --faithful; do
+    warns proj_cut2d.csg "proj_cut2d.csg:4:3: warning: Ignoring 2D child object for 3D operation" $mode
+    warns proj_group2d.csg "proj_group2d.csg:5:4: warning: Mixing 2D and 3D objects is not supported
+proj_group2d.csg:5:4: warning: Ignoring 3D child object for 2D operation" $mode
+    warns proj_group2d_cut.csg "proj_group2d_cut.csg:5:4: warning: Mixing 2D and 3D objects is not supported
+proj_group2d_cut.csg:5:4: warning: Ignoring 3D child object for 2D operation
+proj_group2d_cut.csg:3:3: warning: Ignoring 2D child object for 3D operation
+proj_group2d_cut.csg:7:3: warning: Ignoring 2D child object for 3D operation" $mode
+    warns proj_nested2d.csg "proj_nested2d.csg:7:3: warning: Mixing 2D and 3D objects is not supported
+proj_nested2d.csg:6:3: warning: Ignoring 2D child object for 3D operation
+proj_nested2d.csg:7:3: warning: Ignoring 2D child object for 3D operation" $mode
+    warns proj_first.csg "proj_first.csg:2:2: warning: Ignoring 2D child object for 3D operation" $mode
+    warns proj_only.csg "proj_only.csg: warning: the model is empty (nothing to render)" $mode
+    for pair in proj_cut2d.csg:proj_cube_ref.csg proj_first.csg:proj_cube_ref.csg \
+        proj_group2d.csg:proj_group2d_ref.csg proj_group2d_cut.csg:proj_group2d_ref.csg \
+        proj_nested2d.csg:proj_nested2d_ref.csg; do
+        # shellcheck disable=SC2086
+        same "${pair%%:*}" "${pair#*:}" $mode
+    done
+done
+
+# ---- '%' subtrees ----
+# A '%' mesh (an extrusion, a polyhedron) is drawn by the preview like any
+# other part: the parts have the model's budget of mesh triangles.
+printf 'cube(size = [2, 2, 2], center = false);\n%%linear_extrude(height = 1) { square(size = [1, 1], center = false); }\n%%polyhedron(points = [[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1]], faces = [[0, 1, 2], [0, 3, 1], [0, 2, 3], [1, 3, 2]]);\n' >pct_mesh.csg
+for mode in "" --faithful --preview; do
+    warns pct_mesh.csg "" $mode
+done
+
+# OpenSCAD 2021.01's render evaluates a '%' subtree before it leaves it
+# out: its nodes give their warnings (a 3D operation mixing, a polygon's
+# point, an import that does not open, a removed transform), in file
+# order; the '%' node itself is no operand of its parent, which says
+# nothing of it (the 2D square at line 7). None of it is rendered.
+cat >pct.csg <<'M'
+union() {
+	cube(size = [2, 2, 2], center = false);
+	%union() {
+		cube(size = [1, 1, 1], center = false);
+		square(size = [1, 1], center = false);
+	}
+	%square(size = [1, 1], center = false);
+	%linear_extrude(height = 1) { union() { square(size = [1, 1], center = false); cube(size = [1, 1, 1], center = false); } }
+	%polygon(points = [[0, 0], [1, 0], [1, "a"]]);
+	%import(file = "missing.stl");
+	%multmatrix([[nan, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]) { cube(size = [1, 1, 1], center = false); }
+}
+M
+cat >pct_top.csg <<'M'
+%union() {
+	cube(size = [1, 1, 1], center = false);
+	polygon(points = [[0, 0], [1, 0], [1, "a"]]);
+}
+cube(size = [2, 2, 2], center = false);
+M
+# the same for a singular transform, whose subtree OpenSCAD evaluates too
+cat >pct_singular.csg <<'M'
+union() {
+	cube(size = [2, 2, 2], center = false);
+	multmatrix([[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 0, 0], [0, 0, 0, 1]]) {
+		union() {
+			cube(size = [1, 1, 1], center = false);
+			square(size = [1, 1], center = false);
+		}
+	}
+}
+M
+printf 'cube(size = [2, 2, 2], center = false);\n' >pct_ref.csg
+for mode in "" --faithful; do
+    warns pct.csg 'pct.csg:5:3: warning: Mixing 2D and 3D objects is not supported
+pct.csg:5:3: warning: Ignoring 2D child object for 3D operation
+pct.csg:8:81: warning: Mixing 2D and 3D objects is not supported
+pct.csg:8:81: warning: Ignoring 3D child object for 2D operation
+pct.csg:9:37: warning: Unable to convert points[2] = [1, "a"] to a vec2 of numbers; the polygon is empty, as OpenSCAD leaves it out (--strict makes it an error)
+pct.csg:10:17: warning: Can'"'"'t open import file '"'"'missing.stl'"'"': No such file or directory; the import is empty, as OpenSCAD leaves it out (--strict makes it an error)
+pct.csg:11:3: warning: Transformation matrix contains Not-a-Number and/or Infinity - removing object.' $mode
+    warns pct_top.csg 'pct_top.csg:3:36: warning: Unable to convert points[2] = [1, "a"] to a vec2 of numbers; the polygon is empty, as OpenSCAD leaves it out (--strict makes it an error)
+pct_top.csg:3:2: warning: Ignoring 2D child object for 3D operation' $mode
+    warns pct_singular.csg "pct_singular.csg:3:2: warning: singular transform: subtree is empty
+pct_singular.csg:6:4: warning: Mixing 2D and 3D objects is not supported
+pct_singular.csg:6:4: warning: Ignoring 2D child object for 3D operation" $mode
+    for model in pct.csg pct_top.csg pct_singular.csg; do
+        # shellcheck disable=SC2086
+        same "$model" pct_ref.csg $mode
+    done
+    # --strict: the polygon's point is the error
+    check
+    rm -f strict.png
+    # shellcheck disable=SC2086
+    "$bin" render pct.csg -o strict.png -q --strict $mode 2>err.txt &&
+        fail "pct.csg --strict $mode: exit 0"
+    [ "$(cat err.txt)" = "pct.csg:9:37: error: wrong type for argument 'points' of 'polygon' (expected a vector of [x, y] points)" ] ||
+        fail "pct.csg --strict $mode: $(cat err.txt)"
+    [ -e strict.png ] && fail "pct.csg --strict $mode: an image was written"
 done
 
 # ---- a lossy mask ----

@@ -30,6 +30,7 @@ static sc_status region_of(const char *text, twod_region *r, char *error, size_t
     parse_tree *tree = NULL;
     sc_error e, warning;
     memset(&warning, 0, sizeof warning);
+    build_notes notes = {0};
     sc_status st = parse_text("m.csg", text, strlen(text), &tree, &e);
     assert_int_equal(st, SC_OK);
     csg_builder *csg = csg_builder_new();
@@ -39,15 +40,22 @@ static sc_status region_of(const char *text, twod_region *r, char *error, size_t
                    .error = &e,
                    .faithful = 0,
                    .note = &warning,
-                   .notes = NULL};
+                   .notes = &notes};
     twod_init(r);
     model *lowered = NULL;
     assert_int_equal(model_lower_twod("m.csg", tree->first, &lowered, &e), SC_OK);
     st = build_twod_children(&c, lowered->first, r);
     if (st != SC_OK)
         sc_error_format(&e, error, size);
-    if (note)
-        snprintf(note, note_size, "%s", warning.message[0] ? warning.message : "");
+    if (note) {
+        /* the note first, then the warnings, one a line, each "line:col: " */
+        size_t at = (size_t)snprintf(note, note_size, "%s", warning.message);
+        for (size_t k = 0; k < notes.count && at < note_size; k++)
+            at += (size_t)snprintf(note + at, note_size - at, "%s%d:%d: %s",
+                                   at ? "\n" : "", notes.items[k].line,
+                                   notes.items[k].column, notes.items[k].message);
+    }
+    free(notes.items);
     model_free(lowered);
     csg_builder_free(csg);
     parse_tree_free(tree);
@@ -266,7 +274,10 @@ static void test_outline(void **state)
     assert_true(area("group() { projection() { %cube(3); } }") == 0);
 }
 
-/* A 2D child is ignored with a warning, as OpenSCAD ignores it. */
+/* A 2D child is ignored as OpenSCAD 2021.01 ignores it: without a word by
+ * projection(cut = false), with "Ignoring 2D child object for 3D
+ * operation" by projection(cut = true), which unites its children as a 3D
+ * operation (with no "Mixing"), and as any 3D operation deeper inside. */
 static void test_2d_child(void **state)
 {
     (void)state;
@@ -276,8 +287,25 @@ static void test_2d_child(void **state)
                                message, sizeof message, note, sizeof note),
                      SC_OK);
     NEAR(twod_area(&r), 4, 10);
-    assert_string_equal(note, "2D object 'circle' inside projection is ignored (as in "
-                              "OpenSCAD)");
+    assert_string_equal(note, "");
+    twod_free(&r);
+    assert_int_equal(region_of("group() { projection(cut = true) { circle(r = 5);\n"
+                               "multmatrix([[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, -1], "
+                               "[0, 0, 0, 1]]) { cube(2); } group() { square(1); } } }",
+                               &r, message, sizeof message, note, sizeof note),
+                     SC_OK);
+    NEAR(twod_area(&r), 4, 10);
+    assert_string_equal(note, "1:36: Ignoring 2D child object for 3D operation\n"
+                              "2:84: Ignoring 2D child object for 3D operation");
+    twod_free(&r);
+    assert_int_equal(region_of("group() { projection() { union() { cube(2);\n"
+                               "square(0); circle(r = 5); } } }",
+                               &r, message, sizeof message, note, sizeof note),
+                     SC_OK);
+    NEAR(twod_area(&r), 4, 10);
+    assert_string_equal(note, "2:12: Mixing 2D and 3D objects is not supported\n"
+                              "2:1: Ignoring 2D child object for 3D operation\n"
+                              "2:12: Ignoring 2D child object for 3D operation");
     twod_free(&r);
 }
 

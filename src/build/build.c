@@ -14,9 +14,22 @@
  *   counted  the node's result is an operand of its parent's operation (off
  *            under '%' and outside the '!' subtree; a singular transform is
  *            counted as the empty solid, since OpenSCAD gives its subtree
- *            no geometry, which empties an enclosing intersection).
+ *            no geometry, which empties an enclosing intersection);
+ *   warns    the nodes under it give their warnings: where they are built,
+ *            and also under '%', under a singular transform and under a
+ *            transform removed for a nan or inf entry, whose subtrees
+ *            OpenSCAD 2021.01's render evaluates (with their warnings)
+ *            before it leaves them out; off outside the '!' subtree. A
+ *            '%' child is no operand of its parent there, so its parent
+ *            does not warn that it mixes 2D and 3D or ignores it; a
+ *            removed transform warns of neither for its own children,
+ *            and says that it is removed after their warnings.
  * Nodes that are not built are still checked, so an error is an error
- * wherever it is written; only '*' subtrees are skipped unread.
+ * wherever it is written; only '*' subtrees are skipped unread. What
+ * warns without being built is only checked, as any node that is not
+ * built: its leaves are not added, and a leaf whose warnings would need
+ * its geometry (a curved leaf, a surface, a hull or minkowski's CGAL
+ * result) says nothing.
  *
  * The preview's modifier parts: the walk notes every '#' and '%' node it
  * meets inside the design (not outside the '!' subtree), with the state its
@@ -67,6 +80,7 @@ typedef struct frame {
     const model_node *node; /* NULL for the file itself */
     csg_op op;
     int emit;        /* leaves below are built */
+    int warns;       /* the nodes below give their warnings (see above) */
     int counted;     /* the result is an operand of the parent */
     size_t first_id; /* children's results start here on the id stack */
     float color[4];
@@ -381,7 +395,7 @@ static sc_status build_polyhedron(builder *b, const model_node *n, const frame *
                                   uint32_t *id)
 {
     sc_error note = {SC_OK, "", 0, 0, ""};
-    build_ctx c = context(b, state->emit, &note);
+    build_ctx c = context(b, state->warns, &note);
     size_t left_out = b->warnings.left_out;
     sc_status st = build_bad_indices(&c, n);
     if (st != SC_OK)
@@ -389,7 +403,7 @@ static sc_status build_polyhedron(builder *b, const model_node *n, const frame *
     if (n->u.polyhedron.face_count == 0) {
         /* not again after a warning that left its faces out, as OpenSCAD
          * prints only that */
-        if (state->emit && b->warnings.left_out == left_out)
+        if (state->warns && b->warnings.left_out == left_out)
             st = warn(b, &n->loc, "polyhedron without faces is empty");
         return st;
     }
@@ -422,16 +436,17 @@ static sc_status build_polyhedron(builder *b, const model_node *n, const frame *
         const char *empty = NULL;
         prim p;
         st = build_mesh_solid(&c, &n->loc, "polyhedron", 1, b->strict, &f, &p, &empty);
-        if (st == SC_OK && state->emit)
+        if (st == SC_OK && state->warns)
             st = warn_note(b, &note);
-        if (st == SC_OK && state->emit)
-            st = empty ? (empty[0] ? warn(b, &n->loc, "%s", empty) : SC_OK)
-                       : add_leaf(b, n, &p, state, id);
+        if (st == SC_OK && state->warns && empty)
+            st = empty[0] ? warn(b, &n->loc, "%s", empty) : SC_OK;
+        else if (st == SC_OK && state->emit && !empty)
+            st = add_leaf(b, n, &p, state, id);
         mesh_free(&m);
         build_mesh_faces_free(&f);
         return st;
     }
-    if (st == SC_OK && state->emit && count == 0)
+    if (st == SC_OK && state->warns && count == 0)
         st = warn(b, &n->loc, "polyhedron without volume is empty");
     if (st == SC_OK && state->emit && count > 0) {
         plane *planes = csg_builder_alloc(b->csg, (size_t)count * sizeof *planes);
@@ -525,26 +540,32 @@ static sc_status build_import_leaf(builder *b, const model_node *n, const frame 
                                    uint32_t *id)
 {
     sc_error note = {SC_OK, "", 0, 0, ""}; /* a warning, e.g. a font fallback */
-    build_ctx c = context(b, state->emit, &note);
+    build_ctx c = context(b, state->warns, &note);
     const char *empty = NULL;
     prim p;
     build_prims leaves = {NULL, 0, 0};
     size_t left_out = b->warnings.left_out;
     sc_status st = SC_OK;
     /* an import of a file that does not open is empty, with OpenSCAD's
-     * warning at the file's name (build_file_not_opened) */
-    if (n->kind == MODEL_IMPORT && state->emit)
+     * warning at the file's name (build_file_not_opened); read for its
+     * warnings where it is not built */
+    if (n->kind == MODEL_IMPORT && state->warns)
         st = build_import_parts(&c, n->u.import, b->strict, &leaves, &empty);
     else if (n->kind == MODEL_LINEAR_EXTRUDE)
         st = build_linear_extrude(&c, n, state->emit, &p, &empty);
     else if (n->kind == MODEL_ROTATE_EXTRUDE)
         st = build_rotate_extrude(&c, n, state->emit, &p, &empty);
-    if (st == SC_OK && state->emit && note.message[0]) {
+    if (st == SC_OK && state->warns && note.message[0]) {
         sc_location at = {b->file, note.line, note.column};
         st = warn(b, &at, "%s", note.message);
     }
-    if (st != SC_OK || !state->emit)
+    if (st != SC_OK || !state->warns)
         ;
+    else if (!state->emit) /* only warned of */
+        st = empty && empty[0] && n->kind == MODEL_IMPORT &&
+                     b->warnings.left_out == left_out
+                 ? warn(b, &n->loc, "%s", empty)
+                 : SC_OK;
     else if (empty) /* "": left out, the warning was the note; nor is an
                      * extrusion of an import left out (build_notes) */
         st = empty[0] && b->warnings.left_out == left_out ? warn(b, &n->loc, "%s", empty)
@@ -563,13 +584,15 @@ static sc_status build_import_leaf(builder *b, const model_node *n, const frame 
  * collectChildren3D in its GeometryEvaluator.cc) when its parent ends. */
 static sc_status build_twod_ignored(builder *b, const model_node *n, const frame *state)
 {
-    build_ctx c = context(b, state->emit, NULL);
+    build_ctx c = context(b, state->warns, NULL);
     twod_region r;
     twod_init(&r);
     sc_status st = build_twod_main(&c, n, &r);
     int empty = r.contour_count == 0;
     twod_free(&r);
-    if (st != SC_OK || !state->emit)
+    /* a '%' child is no operand of its parent's, which says nothing of it */
+    if (st != SC_OK || !state->warns ||
+        ((n->modifiers & MODEL_MOD_BACKGROUND) && n != b->part))
         return st;
     if (!grow_array((void **)&b->ignored, &b->ignored_cap, b->ignored_count + 1,
                     sizeof *b->ignored))
@@ -675,7 +698,7 @@ static sc_status build_surface_leaf(builder *b, const model_node *n, const frame
 /* color(c, alpha) (model.h): the colour its children get, each component
  * clamped to 0..1 with a warning where the node is built; an unknown name
  * is ignored with a warning. */
-static sc_status apply_color(builder *b, const model_node *n, int emit, float color[4])
+static sc_status apply_color(builder *b, const model_node *n, int warns, float color[4])
 {
     float rgba[4];
     double c[4];
@@ -684,24 +707,24 @@ static sc_status apply_color(builder *b, const model_node *n, int emit, float co
     int set = n->u.color->set;
     for (int i = 0; set && i < 4; i++) {
         if (!(c[i] >= 0 && c[i] <= 1)) {
-            if (emit && (st = warn(b, &n->u.color->c_loc[i],
-                                   "colour component %g is out of range 0..1 (clamped)",
-                                   c[i])) != SC_OK)
+            if (warns && (st = warn(b, &n->u.color->c_loc[i],
+                                    "colour component %g is out of range 0..1 (clamped)",
+                                    c[i])) != SC_OK)
                 return st;
             c[i] = c[i] > 1 ? 1 : 0;
         }
         rgba[i] = (float)c[i];
     }
-    if (n->u.color->unknown && emit &&
+    if (n->u.color->unknown && warns &&
         (st = warn(b, &n->u.color->unknown_loc, "unknown colour '%s' is ignored",
                    n->u.color->unknown)) != SC_OK)
         return st;
     double alpha = n->u.color->alpha;
     if (n->u.color->has_alpha && set) {
         if (!(alpha >= 0 && alpha <= 1)) {
-            if (emit && (st = warn(b, &n->u.color->alpha_loc,
-                                   "colour component %g is out of range 0..1 (clamped)",
-                                   alpha)) != SC_OK)
+            if (warns && (st = warn(b, &n->u.color->alpha_loc,
+                                    "colour component %g is out of range 0..1 (clamped)",
+                                    alpha)) != SC_OK)
                 return st;
             alpha = alpha > 1 ? 1 : 0;
         }
@@ -730,7 +753,16 @@ static sc_status pop_frame(builder *b)
      * below pushes a frame, so the slot stays as it is. */
     const frame *f = &b->frames[--b->frame_count];
     uint32_t id = CSG_EMPTY;
-    sc_status st = flush_ignored(b, f);
+    sc_status st;
+    if (f->node && f->node->kind == MODEL_XFORM && f->node->not_finite) {
+        /* removed after its children's warnings, without checking their
+         * dimensions */
+        build_ctx c = context(b, f->warns, NULL);
+        b->ignored_count = f->first_ignored;
+        st = build_xform_not_finite(&c, f->node);
+    } else {
+        st = flush_ignored(b, f);
+    }
     if (st != SC_OK)
         return st;
     if (f->emit) {
@@ -779,6 +811,7 @@ static void inherit(const builder *b, const model_node *n, const frame *parent, 
     if (n->is_root) {
         static const float default_color[4] = BUILD_DEFAULT_COLOR;
         f->emit = 1;
+        f->warns = 1;
         f->shown = 1;
         f->to_world = affine_identity();
         memcpy(f->color, default_color, sizeof f->color);
@@ -843,6 +876,17 @@ static sc_status visit_leaf(builder *b, const model_node *n, const frame *f)
     case MODEL_POLYHEDRON:
         st = build_polyhedron(b, n, f, &id);
         break;
+    case MODEL_PROJECTION: {
+        /* without a 3D child (build_projects): no geometry, as in OpenSCAD,
+         * so neither 2D nor ignored; its children still give their
+         * warnings */
+        build_ctx c = context(b, f->emit, NULL);
+        twod_region r;
+        twod_init(&r);
+        st = build_twod_main(&c, n, &r);
+        twod_free(&r);
+        break;
+    }
     default: /* the 2D shapes, taken before */
         st = SC_OK;
         break;
@@ -871,8 +915,9 @@ static sc_status visit(builder *b, const model_node *n, int *opened)
         return st;
     if (plain_leaf(b, n, parent))
         return visit_leaf(b, n, parent);
+    int flat = build_dim(n, 0) == 2 && (kind != MODEL_PROJECTION || build_projects(n));
     if (model_is_leaf(kind) || kind == MODEL_LIGHT || kind == MODEL_CAMERA ||
-        kind == MODEL_BACKGROUND || build_dim(n, 0) == 2) {
+        kind == MODEL_BACKGROUND || flat) {
         frame f;
         inherit(b, n, parent, &f);
         if (kind == MODEL_LIGHT)
@@ -885,7 +930,7 @@ static sc_status visit(builder *b, const model_node *n, int *opened)
             build_background(b->shading, n, f.emit);
             return SC_OK;
         }
-        if (build_dim(n, 0) == 2) {
+        if (flat) {
             /* ignored, it is the empty solid, which empties an intersection
              * as in OpenSCAD */
             uint32_t id = CSG_EMPTY;
@@ -909,12 +954,10 @@ static sc_status visit(builder *b, const model_node *n, int *opened)
     if (kind == MODEL_XFORM) {
         affine inverse;
         f->to_world = affine_mul(&f->to_world, n->u.xform);
-        if (f->emit && n->not_finite) {
+        if (n->not_finite) {
             /* OpenSCAD 2021.01 removes the subtree, in the render and the
-             * preview alike */
-            build_ctx c = context(b, 1, NULL);
-            if ((st = build_xform_not_finite(&c, n)) != SC_OK)
-                return st;
+             * preview alike, once its children are evaluated: the warning
+             * comes when it ends (pop_frame) */
             f->emit = 0; /* still counted: the empty solid */
         } else if (f->emit && !affine_invert(&f->to_world, &inverse)) {
             if ((st = warn(b, &n->loc, "singular transform: subtree is empty")) != SC_OK)
@@ -927,7 +970,7 @@ static sc_status visit(builder *b, const model_node *n, int *opened)
         affine m;
         if ((st = build_resize(&c, n, &b->resize_cache, &m, &warning)) != SC_OK)
             return st;
-        if (warning && f->emit && (st = warn(b, &n->loc, "%s", warning)) != SC_OK)
+        if (warning && f->warns && (st = warn(b, &n->loc, "%s", warning)) != SC_OK)
             return st;
         f->to_world = affine_mul(&f->to_world, &m);
     } else if (kind == MODEL_MOTION) {
@@ -935,7 +978,7 @@ static sc_status visit(builder *b, const model_node *n, int *opened)
             return st;
         f->moving = 1;
     } else if (kind == MODEL_COLOR) {
-        if ((st = apply_color(b, n, f->emit, f->color)) != SC_OK)
+        if ((st = apply_color(b, n, f->warns, f->color)) != SC_OK)
             return st;
     } else if (kind == MODEL_MATERIAL) {
         if ((st = build_material(b->shading, n, f->emit, &f->material, f->color,
@@ -993,6 +1036,7 @@ static sc_status walk(builder *b, uint32_t *root)
     memset(&top, 0, sizeof top);
     top.op = CSG_UNION;
     top.emit = !b->model->has_root;
+    top.warns = top.emit;
     top.shown = top.emit;
     top.to_world = affine_identity();
     memcpy(top.color, default_color, sizeof top.color);
@@ -1040,7 +1084,7 @@ static sc_status walk_part(builder *sub, const part_mark *mark, uint32_t *id)
     frame top = mark->parent;
     top.node = NULL;
     top.op = CSG_UNION;
-    top.emit = top.counted = top.shown = 1;
+    top.emit = top.warns = top.counted = top.shown = 1;
     top.first_id = top.first_ignored = 0;
     sub->part = mark->node;
     sub->root_id = CSG_EMPTY;
@@ -1090,6 +1134,9 @@ static sc_status build_parts(builder *b)
         sub.file = b->file;
         sub.error = &error;
         sub.faithful = b->faithful;
+        /* the parts' meshes have what is left of the model's budget */
+        sub.max_triangles = b->max_triangles;
+        sub.triangles_left = b->triangles_left;
         sub.resize_cache = b->resize_cache;
         sub.imports = b->imports;
         sub.csg = csg_builder_new();
@@ -1113,6 +1160,7 @@ static sc_status build_parts(builder *b)
         }
         b->resize_cache = sub.resize_cache;
         b->imports = sub.imports;
+        b->triangles_left = sub.triangles_left;
         free(sub.ids);
         free(sub.frames);
         free(sub.ignored);

@@ -57,14 +57,19 @@
  * child's loops; the union of a group is one non-zero union of all its
  * leaves' loops.
  *
- * A 2D child is ignored with a warning (OpenSCAD: "Ignoring 2D child
- * object for 3D operation"); '%' and '*' children are left out, as
- * OpenSCAD leaves out background children. torus, quadric and implicit
- * have no OpenSCAD mesh: errors at their position, never a silent skip.
- * A minkowski is, in both modes, the triangles of its CGAL result (the
- * union of the sums of convex parts, as build_hull.c computes it). A hull
- * is the convex hull of the corners of its children's meshes (OpenSCAD
- * hulls their vertices), as triangles like any other leaf; a boolean or
+ * A 2D child (build_dim) is left out as OpenSCAD 2021.01 leaves it out:
+ * projection(cut = false) passes over it without a word, projection(cut =
+ * true) and the 3D operations inside say "Ignoring 2D child object for 3D
+ * operation" (and an operation inside first "Mixing 2D and 3D objects is
+ * not supported", at its first 2D child that is not empty), once all the
+ * children are walked; the child's own warnings come first. A projection
+ * without a 3D child has no geometry, as in OpenSCAD (build_projects):
+ * nothing is said of it, after its children's own warnings. '%' and '*' children are left
+ * out, as OpenSCAD leaves out background children. torus, quadric and implicit have no
+ * OpenSCAD mesh: errors at their position, never a silent skip. A minkowski is, in both
+ * modes, the triangles of its CGAL result (the union of the sums of convex parts, as
+ * build_hull.c computes it). A hull is the convex hull of the corners of its children's
+ * meshes (OpenSCAD hulls their vertices), as triangles like any other leaf; a boolean or
  * minkowski inside that hull gives the vertices of its CGAL result.
  */
 #include "build/build_projection.h"
@@ -83,11 +88,29 @@
 #include "csg/prim_mesh.h"
 #include "model/faithful.h"
 
-/* Whether n is a 2D leaf: a 2D shape, or an import of a .dxf or .svg
- * drawing, which OpenSCAD makes 2D wherever it stands. */
+/* Whether n is 2D, as OpenSCAD 2021.01 gives it a dimension (build_dim):
+ * a 2D shape, an import of a .dxf or .svg drawing (2D wherever it stands),
+ * or an operation whose first child with a dimension is 2D; not a
+ * projection without a 3D child, which is no geometry (build_projects).
+ * Such a child of a 3D operation is left out. */
 static int flat(const model_node *n)
 {
-    return model_is_2d(n->kind) || (n->kind == MODEL_IMPORT && n->u.import->drawing);
+    return build_dim(n, 0) == 2 && (n->kind != MODEL_PROJECTION || build_projects(n));
+}
+
+/* The 2D node n checked through the 2D engine for its warnings and errors
+ * (a polygon's point it cannot convert, a 3D child of a 2D group), which
+ * OpenSCAD gives as it evaluates the child it then leaves out; *empty
+ * tells whether its region is empty, which decides whether its parent
+ * mixes 2D and 3D (ignored_2d). */
+static sc_status check_flat(const build_ctx *c, const model_node *n, int *empty)
+{
+    twod_region r;
+    twod_init(&r);
+    sc_status st = build_twod_main(c, n, &r);
+    *empty = r.contour_count == 0;
+    twod_free(&r);
+    return st;
 }
 
 /* Triangles, 3 corners each. */
@@ -354,7 +377,14 @@ static sc_status hull_points(pwalk *w, const model_node *parent, const affine *m
         if (n->pending && !flat(n))
             return build_pending(c, n);
         sc_status st = SC_OK;
-        if (kind == MODEL_UNION || kind == MODEL_COLOR || kind == MODEL_MATERIAL) {
+        if (flat(n) || kind == MODEL_PROJECTION) {
+            /* checked, then left out (ignored_2d); a projection that is not
+             * flat is no geometry */
+            int empty;
+            st = check_flat(c, n, &empty);
+            if (!mixing && !empty && flat(n))
+                mixing = n;
+        } else if (kind == MODEL_UNION || kind == MODEL_COLOR || kind == MODEL_MATERIAL) {
             st = hull_points(w, n, m, depth + 1, pts);
         } else if (kind == MODEL_XFORM || kind == MODEL_RESIZE) {
             affine local = kind == MODEL_XFORM ? *n->u.xform : affine_identity();
@@ -366,15 +396,6 @@ static sc_status hull_points(pwalk *w, const model_node *parent, const affine *m
             affine inner = affine_mul(m, &local), inverse;
             if (st == SC_OK && affine_invert(&inner, &inverse))
                 st = hull_points(w, n, &inner, depth + 1, pts);
-        } else if (flat(n)) {
-            /* checked through the 2D engine for its errors, then left out
-             * (ignored_2d) */
-            twod_region r;
-            twod_init(&r);
-            st = build_twod_main(c, n, &r);
-            if (!mixing && r.contour_count)
-                mixing = n;
-            twod_free(&r);
         } else {
             soup s = {NULL, 0, 0, 0};
             st = leaf_soup(w, n, &s, depth + 1);
@@ -746,17 +767,35 @@ static int skipped(const model_node *n)
            n->kind == MODEL_BACKGROUND;
 }
 
+/* The children of n, the projection itself or a 3D operation in it,
+ * walked into out. Its 2D children are checked (check_flat) and left out,
+ * with OpenSCAD 2021.01's warnings once all are walked: a 3D operation's
+ * (ignored_2d); none from projection(cut = false), which passes over a 2D
+ * child; from projection(cut = true), which unites its children as a 3D
+ * operation without checking that they mix, each ignored. */
 static sc_status walk_children(pwalk *w, const model_node *n, const affine *m, int depth,
                                twod_region *out)
 {
+    const model_node *mixing = NULL; /* the first 2D child that is not empty */
     for (const model_node *k = n->first_child; k; k = k->next) {
         if (skipped(k))
             continue;
-        sc_status st = walk_node(w, k, m, depth + 1, out);
+        sc_status st;
+        if (flat(k) || k->kind == MODEL_PROJECTION) {
+            /* a projection that is not flat is no geometry */
+            int empty;
+            st = check_flat(w->c, k, &empty);
+            if (!mixing && !empty && flat(k))
+                mixing = k;
+        } else {
+            st = walk_node(w, k, m, depth + 1, out);
+        }
         if (st != SC_OK)
             return st;
     }
-    return SC_OK;
+    if (n == w->proj)
+        return w->cut ? ignored_2d(w->c, n, NULL) : SC_OK;
+    return ignored_2d(w->c, n, mixing);
 }
 
 /* difference or intersection n (cut only): each child's loops united on
@@ -775,11 +814,15 @@ static sc_status boolean(pwalk *w, const model_node *n, const affine *m, int dep
     twod_region **list = calloc(count, sizeof *list);
     sc_status st = parts && list ? SC_OK : err_nomem(w->c->error, &n->loc);
     uint32_t i = 0;
+    const model_node *mixing = NULL; /* the first 2D child that is not empty */
     for (const model_node *k = n->first_child; k && st == SC_OK; k = k->next) {
         if (skipped(k))
             continue;
         if (flat(k)) {
-            st = walk_node(w, k, m, depth + 1, out); /* the warning */
+            int empty;
+            st = check_flat(w->c, k, &empty);
+            if (!mixing && !empty)
+                mixing = k;
             continue;
         }
         twod_region *part = &parts[i];
@@ -789,6 +832,8 @@ static sc_status boolean(pwalk *w, const model_node *n, const affine *m, int dep
         if (st == SC_OK)
             st = clip_error(w, k, twod_clip_union_nonzero(part, 0), part);
     }
+    if (st == SC_OK)
+        st = ignored_2d(w->c, n, mixing);
     twod_op op = n->kind == MODEL_DIFFERENCE ? TWOD_DIFFERENCE : TWOD_INTERSECTION;
     twod_region result;
     twod_init(&result);
@@ -815,21 +860,9 @@ static sc_status walk_node(pwalk *w, const model_node *n, const affine *m, int d
     model_kind kind = n->kind;
     if (n->pending && !flat(n))
         return build_pending(c, n);
-    if (flat(n)) {
-        /* checked through the 2D engine for its warnings (a polygon's bad
-         * point, which OpenSCAD 2021.01 prints as it evaluates the child
-         * it then leaves out), then left out */
-        twod_region r;
-        twod_init(&r);
-        sc_status st = build_twod_main(c, n, &r);
-        twod_free(&r);
-        if (st != SC_OK)
-            return st;
-        if (c->note && !c->note->message[0])
-            err_set(c->note, SC_OK, &n->loc,
-                    "2D object '%s' inside projection is ignored (as in OpenSCAD)",
-                    n->name);
-        return SC_OK;
+    if (flat(n) || kind == MODEL_PROJECTION) { /* its parent warns (walk_children) */
+        int empty;
+        return check_flat(c, n, &empty);
     }
     switch (kind) {
     case MODEL_UNION:

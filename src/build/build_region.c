@@ -208,6 +208,8 @@ static sc_status walk(twod_walker *walk, const model_node *n, const affine2 *m, 
         uint32_t nodes = r->node_count, edges = r->edge_count,
                  ellipses = r->ellipse_count;
         st = walk_children(w, n, &inner, PRIM_REGION_UNION, depth, pushed);
+        if (st == SC_OK) /* removed for a nan or inf entry: said after its children */
+            st = build_xform_not_finite(w->c, n);
         double det = inner.m[0][0] * inner.m[1][1] - inner.m[0][1] * inner.m[1][0];
         if (st == SC_OK && *pushed && !(det != 0)) {
             /* flattened onto a line or a point: no area (the children were

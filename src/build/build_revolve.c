@@ -307,6 +307,10 @@ static sc_status gather(twod_walker *walk, const model_node *n, const affine2 *m
         return read_circle(c, n, m, p);
     if (kind == MODEL_POLYGON)
         return read_polygon(c, n, m, p);
+    /* removed for a nan or inf entry: the 2D engine says what OpenSCAD
+     * says of it and of its children (no geometry) */
+    if (kind == MODEL_XFORM && n->not_finite)
+        return gather_other(c, n, m, p);
     affine2 inner = *m;
     if (kind == MODEL_XFORM) {
         sc_status st = twod_walk_fold(walk, n, m, &inner);

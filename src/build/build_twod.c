@@ -43,8 +43,10 @@
  * own, an operation's that of its first child that has one) is the empty
  * region, as in OpenSCAD (an intersection with it is empty), with
  * OpenSCAD's warnings, "Mixing 2D and 3D objects is not supported"
- * (once per operation, not from offset and the extrusions) and "Ignoring
- * 3D child object for 2D operation". The recursion over the children is the one 2D walk
+ * (once per operation, at the first 3D child whose geometry is not empty,
+ * not from offset and the extrusions) and "Ignoring 3D child object for
+ * 2D operation" (not for a child with no geometry at all:
+ * build_presence_3d). The recursion over the children is the one 2D walk
  * (twod_walk, below), with its depth guard (TWOD_WALK_MAX_DEPTH).
  */
 #include "build/build_twod.h"
@@ -95,19 +97,13 @@ sc_status twod_walk(twod_walker *w, const model_node *n, const affine2 *m, int d
 sc_status twod_walk_children(twod_walker *w, const model_node *n, const affine2 *m,
                              int depth)
 {
-    /* A multmatrix removed for a nan or inf entry (twod_walk_fold warned):
-     * its children are only checked, with nothing more said of them. */
-    const build_ctx *c = w->c;
-    build_ctx quiet = *c;
-    quiet.notes = NULL;
-    if (n->kind == MODEL_XFORM && n->not_finite)
-        w->c = &quiet;
     sc_status st = SC_OK;
     for (const model_node *k = twod_walk_first(n); st == SC_OK && k;
          k = twod_walk_next(k->next))
         st = twod_walk(w, k, m, depth + 1, NULL);
-    w->c = c;
-    return st;
+    /* A multmatrix removed for a nan or inf entry: OpenSCAD 2021.01 says so
+     * once its children are evaluated, with their warnings. */
+    return st == SC_OK ? build_xform_not_finite(w->c, n) : st;
 }
 
 sc_status twod_walk_fold(const twod_walker *w, const model_node *n, const affine2 *m,
@@ -116,7 +112,7 @@ sc_status twod_walk_fold(const twod_walker *w, const model_node *n, const affine
     if (n->pending)
         return build_pending(w->c, n);
     build_matrix_xy(n->u.xform, m->m, inner->m);
-    return build_xform_not_finite(w->c, n);
+    return SC_OK;
 }
 
 /* ---- dimensions ---- */
@@ -143,7 +139,7 @@ static int kind_dim(const model_node *n, int in_2d)
     case MODEL_POLYGON:
     case MODEL_TEXT:
     case MODEL_OFFSET:
-    case MODEL_PROJECTION:
+    case MODEL_PROJECTION: /* without a 3D child, it decides none (list_dim) */
         return 2;
     case MODEL_IMPORT:
         return drawing_of(n, in_2d) ? 2 : 3;
@@ -177,6 +173,21 @@ static int kind_dim(const model_node *n, int in_2d)
 }
 
 static int list_dim(const model_node *first, int in_2d, int depth);
+static int node_dim(const model_node *n, int in_2d, int depth);
+
+/* Whether projection n has a child that is 3D (its children are lowered
+ * in the points context, model.h): without one OpenSCAD 2021.01 makes no
+ * geometry of it, so it decides no dimension. */
+static int projects(const model_node *n, int depth)
+{
+    if (depth > TWOD_WALK_MAX_DEPTH)
+        return 1;
+    for (const model_node *k = twod_walk_first(n); k; k = twod_walk_next(k->next)) {
+        if (node_dim(k, 0, depth + 1) == 3)
+            return 1;
+    }
+    return 0;
+}
 
 static int node_dim(const model_node *n, int in_2d, int depth)
 {
@@ -191,7 +202,9 @@ static int list_dim(const model_node *first, int in_2d, int depth)
     if (depth > TWOD_WALK_MAX_DEPTH)
         return 0;
     for (const model_node *k = first; k; k = twod_walk_next(k->next)) {
-        int d = node_dim(k, in_2d, depth);
+        int d = k->kind == MODEL_PROJECTION && !projects(k, depth)
+                    ? 0
+                    : node_dim(k, in_2d, depth);
         if (d)
             return d;
     }
@@ -206,6 +219,96 @@ int build_dim(const model_node *n, int in_2d)
 int build_list_dim(const model_node *first, int in_2d)
 {
     return list_dim(twod_walk_next(first), in_2d, 0);
+}
+
+int build_projects(const model_node *n)
+{
+    return projects(n, 0);
+}
+
+static int positive_finite(double x)
+{
+    return x > 0 && isfinite(x);
+}
+
+static build_presence presence(const model_node *n, int in_2d, int depth);
+
+/* A 3D operation over the children that count (neither '%' nor '*', nor
+ * 2D, which it ignores, nor shading nodes): none without any; a hull is
+ * none unless a child is some; one child is itself; then union-like
+ * operations are some when a child is, else none; a difference is its
+ * first child; an intersection none when a child is empty or none. A
+ * minkowski is taken as a union. */
+static build_presence operation(const model_node *n, int in_2d, int depth)
+{
+    uint32_t count = 0;
+    build_presence first = BUILD_NONE;
+    int some = 0, missing = 0;
+    for (const model_node *k = twod_walk_first(n); k; k = twod_walk_next(k->next)) {
+        if (k->kind == MODEL_LIGHT || k->kind == MODEL_CAMERA ||
+            k->kind == MODEL_BACKGROUND || build_dim(k, in_2d) == 2)
+            continue;
+        build_presence p = presence(k, in_2d, depth + 1);
+        if (count++ == 0)
+            first = p;
+        some |= p == BUILD_SOME;
+        missing |= p != BUILD_SOME;
+    }
+    if (count == 0)
+        return BUILD_NONE;
+    if (n->kind == MODEL_HULL)
+        return some ? BUILD_SOME : BUILD_NONE;
+    if (count == 1 || n->kind == MODEL_DIFFERENCE)
+        return first;
+    if (n->kind == MODEL_INTERSECTION)
+        return missing ? BUILD_NONE : BUILD_SOME;
+    return some ? BUILD_SOME : BUILD_NONE;
+}
+
+/* Past the walk's depth limit some: the walks report that depth. */
+static build_presence presence(const model_node *n, int in_2d, int depth)
+{
+    if (depth > TWOD_WALK_MAX_DEPTH || n->unsized)
+        return BUILD_SOME;
+    switch (n->kind) {
+    case MODEL_CUBE: {
+        const double *size = n->u.cube.size;
+        return positive_finite(size[0]) && positive_finite(size[1]) &&
+                       positive_finite(size[2])
+                   ? BUILD_SOME
+                   : BUILD_EMPTY;
+    }
+    case MODEL_SPHERE:
+        return positive_finite(n->u.sphere.r) ? BUILD_SOME : BUILD_EMPTY;
+    case MODEL_CYLINDER: {
+        double r1 = n->u.cylinder.r1, r2 = n->u.cylinder.r2;
+        int radii = r1 >= 0 && r2 >= 0 && isfinite(r1) && isfinite(r2) && (r1 || r2);
+        return positive_finite(n->u.cylinder.h) && radii ? BUILD_SOME : BUILD_EMPTY;
+    }
+    case MODEL_POLYHEDRON:
+        return n->u.polyhedron.face_count ? BUILD_SOME : BUILD_EMPTY;
+    case MODEL_XFORM:
+        if (n->not_finite) /* removed: no geometry (model.h) */
+            return BUILD_NONE;
+        return operation(n, in_2d, depth);
+    case MODEL_UNION:
+    case MODEL_DIFFERENCE:
+    case MODEL_INTERSECTION:
+    case MODEL_COLOR:
+    case MODEL_MATERIAL:
+    case MODEL_RESIZE:
+    case MODEL_MOTION:
+    case MODEL_HULL:
+    case MODEL_MINKOWSKI:
+        return operation(n, in_2d, depth);
+    default:
+        return BUILD_SOME;
+    }
+}
+
+build_presence build_presence_3d(const model_node *n, int in_2d)
+{
+    return presence(n, in_2d, 0);
 }
 
 /* ---- OpenSCAD's evaluation ---- */
@@ -386,11 +489,34 @@ static sc_status ignore_3d(const eval *e, const model_node *k, int mixing)
     return st;
 }
 
+/* The warnings for the 3D children among the nodes from first on, once
+ * they are all evaluated: that the operation mixes (when mixing is set),
+ * at the first 3D child whose geometry is not empty, then each ignored,
+ * but those with no geometry (build_presence_3d). */
+static sc_status ignore_3d_children(const eval *e, const model_node *first, int mixing)
+{
+    sc_status st = SC_OK;
+    for (const model_node *k = twod_walk_next(first); mixing && k;
+         k = twod_walk_next(k->next)) {
+        if (build_dim(k, e->in_2d) == 3 && build_presence_3d(k, e->in_2d) == BUILD_SOME) {
+            st = build_note(e->c, &k->loc, "Mixing 2D and 3D objects is not supported");
+            break;
+        }
+    }
+    for (const model_node *k = twod_walk_next(first); st == SC_OK && k;
+         k = twod_walk_next(k->next)) {
+        if (build_dim(k, e->in_2d) == 3 && build_presence_3d(k, e->in_2d) != BUILD_NONE)
+            st = ignore_3d(e, k, 0);
+    }
+    return st;
+}
+
 /* The regions of the nodes from first on, the children of an operation of
  * this kind ('%' and '*' left out; 3D ones ignored with a warning, as
- * OpenSCAD ignores them). *regions holds
- * *count initialised regions, to be freed by free_children. */
-static sc_status eval_list(eval *e, const model_node *first, model_kind kind,
+ * OpenSCAD ignores them, unless removed: the operation is a multmatrix
+ * removed for a nan or inf entry). *regions holds *count initialised
+ * regions, to be freed by free_children. */
+static sc_status eval_list(eval *e, const model_node *first, model_kind kind, int removed,
                            twod_region **regions, uint32_t *count, int depth)
 {
     *regions = NULL;
@@ -423,15 +549,9 @@ static sc_status eval_list(eval *e, const model_node *first, model_kind kind,
             st = unsupported_import(e, k);
     }
     /* After the children's own warnings, as OpenSCAD checks the
-     * dimensions once its children are evaluated. */
-    for (const model_node *k = twod_walk_next(first); st == SC_OK && k;
-         k = twod_walk_next(k->next)) {
-        if (build_dim(k, e->in_2d) == 3) {
-            st = ignore_3d(e, k, mixing);
-            mixing = 0;
-        }
-    }
-    return st;
+     * dimensions once its children are evaluated; not those of a
+     * multmatrix it removes for a nan or inf entry. */
+    return st == SC_OK && !removed ? ignore_3d_children(e, first, mixing) : st;
 }
 
 static sc_status eval_children(eval *e, const model_node *n, twod_region **regions,
@@ -443,7 +563,9 @@ static sc_status eval_children(eval *e, const model_node *n, twod_region **regio
     int outer_2d = e->in_2d;
     e->in_2d = outer_2d || model_is_2d(n->kind) || n->kind == MODEL_LINEAR_EXTRUDE ||
                n->kind == MODEL_ROTATE_EXTRUDE;
-    sc_status st = eval_list(e, n->first_child, n->kind, regions, count, depth);
+    sc_status st =
+        eval_list(e, n->first_child, n->kind, n->kind == MODEL_XFORM && n->not_finite,
+                  regions, count, depth);
     e->in_2d = outer_2d;
     return st;
 }
@@ -496,7 +618,7 @@ static sc_status read_matrix(const eval *e, const model_node *n, double m[2][3])
     if (n->pending)
         return pending(e, n);
     build_matrix_xy(n->u.xform, id, m);
-    return build_xform_not_finite(e->c, n);
+    return SC_OK;
 }
 
 static sc_status transform(const eval *e, const model_node *n, double m[2][3],
@@ -769,17 +891,17 @@ static sc_status eval_node(twod_walker *w, const model_node *n, const affine2 *u
         return st;
     if (kind == MODEL_RESIZE && n->pending)
         return pending(e, n);
-    /* A multmatrix removed for a nan or inf entry (read_matrix warned):
-     * its children are only checked, since OpenSCAD neither combines them
-     * nor checks their dimensions. */
-    build_ctx quiet = *e->c;
-    quiet.notes = NULL;
-    eval checked = *e;
-    checked.c = checked.walk.c = &quiet;
     twod_region *regions;
     uint32_t count;
-    st = eval_children(kind == MODEL_XFORM && n->not_finite ? &checked : e, n, &regions,
-                       &count, depth);
+    st = eval_children(e, n, &regions, &count, depth);
+    if (st == SC_OK && kind == MODEL_XFORM && n->not_finite) {
+        /* removed for a nan or inf entry: OpenSCAD 2021.01 evaluates the
+         * children (their warnings, not its check of their dimensions,
+         * eval_list), then says so */
+        free_children(regions, count);
+        twod_clear(out);
+        return build_xform_not_finite(e->c, n);
+    }
     if (st == SC_OK) {
         if (kind == MODEL_HULL)
             st = hull(e, n, regions, count, out);
@@ -845,7 +967,7 @@ sc_status build_twod_top(const build_ctx *c, const model_node *first, twod_regio
     e.in_2d = 0;
     twod_region *regions;
     uint32_t count;
-    sc_status st = eval_list(&e, first, MODEL_UNION, &regions, &count, 0);
+    sc_status st = eval_list(&e, first, MODEL_UNION, 0, &regions, &count, 0);
     if (st == SC_OK && count)
         st = combine(&e, first, regions, count, TWOD_UNION, out);
     free_children(regions, count);

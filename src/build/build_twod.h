@@ -33,11 +33,27 @@ sc_status build_twod_top(const build_ctx *c, const model_node *first, twod_regio
  * below it has one (an empty group, a light). A shape has its own; an
  * operation (group, union, difference, intersection, multmatrix, color,
  * and hull and minkowski in the 2D context) has that of its first child
- * with one ('%' and '*' children do not count). in_2d: n was lowered in
+ * with one ('%' and '*' children do not count; nor a projection without
+ * a 3D child, which OpenSCAD makes no geometry: build_projects). in_2d: n
+ * was lowered in
  * the 2D context (model.h). build_list_dim: the same over a list of
  * nodes from first on, the top level of a file. */
 int build_dim(const model_node *n, int in_2d);
 int build_list_dim(const model_node *first, int in_2d);
+/* Whether projection n has a child that is 3D, so that OpenSCAD 2021.01
+ * makes geometry of it. */
+int build_projects(const model_node *n);
+
+/* What OpenSCAD 2021.01's geometry of the 3D node n is, which decides its
+ * warnings in a 2D operation: some (or not known to be empty), empty (a
+ * solid of no size: "Ignoring" it, but no "Mixing"), or none (nothing
+ * below it, or a 3D operation that CGAL ends with nothing: no warning at
+ * all). Its rules are those of OpenSCAD's 3D operations on empty and
+ * missing children (GeometryEvaluator.cc: applyToChildren3D, CGALUtils'
+ * applyOperator3D and applyHull), seen on OpenSCAD 2021.01 runs; a
+ * boolean, extrusion or import that turns out empty is taken as some. */
+typedef enum build_presence { BUILD_SOME, BUILD_EMPTY, BUILD_NONE } build_presence;
+build_presence build_presence_3d(const model_node *n, int in_2d);
 
 /* The one walk over a 2D model subtree, for every builder of 2D children:
  * the exact region of linear_extrude (build_region.c), the revolve
@@ -65,13 +81,15 @@ const model_node *twod_walk_next(const model_node *k);
  * w->visit. */
 sc_status twod_walk(twod_walker *w, const model_node *n, const affine2 *m, int depth,
                     void *out);
-/* Visits the children of n that count at depth + 1, without results; those
- * of a multmatrix removed for a nan or inf entry with no warnings (only
- * their errors count). */
+/* Visits the children of n that count at depth + 1, without results; then,
+ * for a multmatrix removed for a nan or inf entry, OpenSCAD 2021.01's
+ * warning that it is removed (build_xform_not_finite), after its
+ * children's, as OpenSCAD evaluates them first. */
 sc_status twod_walk_children(twod_walker *w, const model_node *n, const affine2 *m,
                              int depth);
 /* The transform under multmatrix n: m times the xy part of its matrix (its
- * argument error, if any, first). */
+ * argument error, if any, first). A visitor that walks the children itself
+ * says that a removed one is removed after them (build_xform_not_finite). */
 sc_status twod_walk_fold(const twod_walker *w, const model_node *n, const affine2 *m,
                          affine2 *inner);
 

@@ -21,6 +21,9 @@
  *             node's only child (extrude_file)
  *   projection  cut (true or false, by name or first), convexity a number
  *   resize    as in the points context (lower_points.c)
+ *   cube, sphere, cylinder, polyhedron
+ *             as in the points context, for their size only (lower_solid):
+ *             an argument error leaves the node unsized, not pending
  *   text      text, size, font, direction, language, script, halign,
  *             valign, spacing, $fn, $fa, $fs; at most
  *             MODEL_MAX_TEXT_BYTES bytes without a NUL; size and spacing
@@ -524,6 +527,25 @@ sc_status model_import_drawing(arena *mem, const char *file, const parse_node *n
     return SC_OK;
 }
 
+/* A solid among 2D nodes, which the 2D builders leave out: its size read as
+ * in the points context, only to tell whether OpenSCAD's geometry of it is
+ * empty (build_presence). An argument error is no error here, as the node
+ * is never built: the node is then unsized, its size unknown. */
+static sc_status lower_solid(arena *mem, const char *file, const parse_node *n,
+                             model_node *out, sc_error *error)
+{
+    model_node read = *out;
+    sc_status st = model_points_args(mem, file, n, &read, error);
+    if (st != SC_OK)
+        return st;
+    if (read.pending) {
+        out->unsized = 1;
+        return SC_OK;
+    }
+    *out = read;
+    return SC_OK;
+}
+
 sc_status model_twod_args(arena *mem, const char *file, const parse_node *n,
                           model_node *out, sc_error *error)
 {
@@ -563,6 +585,11 @@ sc_status model_twod_args(arena *mem, const char *file, const parse_node *n,
     case MODEL_ROTATE_EXTRUDE:
         st = lower_rotate_extrude(&l, n, out);
         break;
+    case MODEL_CUBE:
+    case MODEL_SPHERE:
+    case MODEL_CYLINDER:
+    case MODEL_POLYHEDRON:
+        return lower_solid(mem, file, n, out, error);
     default:
         break;
     }

@@ -344,12 +344,13 @@ typedef struct model_text {
 
 struct model_node {
     model_kind kind;
-    unsigned modifiers;             /* MODEL_MOD_* */
-    int is_root;                    /* the first '!' node: its subtree is the design */
-    int not_finite;                 /* multmatrix with a nan or inf entry (xform) */
-    const char *name;               /* as the file writes it, for messages */
-    sc_location loc;                /* of the name */
-    uint32_t child_count;           /* children written in the file (lowered or not) */
+    unsigned modifiers;   /* MODEL_MOD_* */
+    int is_root;          /* the first '!' node: its subtree is the design */
+    int not_finite;       /* multmatrix with a nan or inf entry (xform) */
+    int unsized;          /* a solid in the 2D context whose size could not be read */
+    const char *name;     /* as the file writes it, for messages */
+    sc_location loc;      /* of the name */
+    uint32_t child_count; /* children written in the file (lowered or not) */
     model_node *first_child, *next; /* lowered children, in file order */
     /* 2D context (above): the node's argument error, for its builder to
      * report where it reads the arguments; NULL when they are good. */
