@@ -925,9 +925,10 @@ static void test_linear_extrude(void **state)
     sc_scene_release(s);
 }
 
-/* Loads text with sc_load_options.max_triangles at limit: the status. */
-static sc_status load_budget(const char *text, size_t limit, int faithful, char *message,
-                             size_t size)
+/* Loads text as the file name with sc_load_options.max_triangles at
+ * limit: the status, and the error in message (empty on success). */
+static sc_status load_budget_at(const char *name, const char *text, size_t limit,
+                                int faithful, char *message, size_t size)
 {
     sc_scene *s = NULL;
     sc_error e;
@@ -935,7 +936,7 @@ static sc_status load_budget(const char *text, size_t limit, int faithful, char 
     sc_load_options_init(&o);
     o.faithful = faithful;
     o.max_triangles = limit;
-    sc_status st = sc_scene_load_string("m.csg", text, strlen(text), &o, &s, &e);
+    sc_status st = sc_scene_load_string(name, text, strlen(text), &o, &s, &e);
     if (st == SC_OK) {
         assert_non_null(s);
         message[0] = 0;
@@ -945,6 +946,12 @@ static sc_status load_budget(const char *text, size_t limit, int faithful, char 
     }
     sc_scene_release(s);
     return st;
+}
+
+static sc_status load_budget(const char *text, size_t limit, int faithful, char *message,
+                             size_t size)
+{
+    return load_budget_at("m.csg", text, limit, faithful, message, size);
 }
 
 /* A load's meshes share one budget of triangles (sc_load_options
@@ -997,6 +1004,80 @@ static void test_triangle_budget(void **state)
              "limit of %zu in one model)",
              notch, 2 * notch - 1);
     assert_string_equal(message, expected);
+}
+
+/* An import's triangles are charged to the budget once per import
+ * statement, however many builders take them (a hull's or minkowski's
+ * check that the mesh is closed, its corners, CGAL's faces of a summand
+ * that is not convex, resize's measure, the objects of an AMF file joined
+ * into one mesh): a model of T imported triangles loads with a budget of
+ * T, and with T - 1 fails at the import with the message it always had.
+ * Two statements importing one file are two meshes, charged twice, as two
+ * polyhedra are. */
+static void test_import_budget_once(void **state)
+{
+    (void)state;
+    char dir[512], model[600];
+    snprintf(dir, sizeof dir, "%s", work());
+    snprintf(model, sizeof model, "%s/m.csg", dir);
+    write_notch_files();
+    static const char tet[] = "OFF\n4 4 0\n0 0 0\n2 0 0\n0 2 0\n0 0 2\n"
+                              "3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n";
+    write_file("tet.off", tet, strlen(tet));
+#define TET_AMF(x)                                                                       \
+    "<object id='" #x "'><mesh><vertices>"                                               \
+    "<vertex><coordinates><x>" #x "</x><y>0</y><z>0</z></coordinates></vertex>"          \
+    "<vertex><coordinates><x>" #x ".5</x><y>0</y><z>0</z></coordinates></vertex>"        \
+    "<vertex><coordinates><x>" #x "</x><y>1</y><z>0</z></coordinates></vertex>"          \
+    "<vertex><coordinates><x>" #x "</x><y>0</y><z>1</z></coordinates></vertex>"          \
+    "</vertices><volume><triangle><v1>0</v1><v2>2</v2><v3>1</v3></triangle>"             \
+    "<triangle><v1>0</v1><v2>1</v2><v3>3</v3></triangle>"                                \
+    "<triangle><v1>0</v1><v2>3</v2><v3>2</v3></triangle>"                                \
+    "<triangle><v1>1</v1><v2>2</v2><v3>3</v3></triangle></volume></mesh></object>"
+    static const char two[] = "<?xml version='1.0'?><amf>" TET_AMF(0) TET_AMF(3) "</amf>";
+#undef TET_AMF
+    write_file("two.amf", two, strlen(two));
+    static const struct {
+        const char *text;
+        size_t triangles, more; /* in all; what the mesh that fails asks for */
+        int column;             /* of the file name, where the import fails */
+        const char *what;       /* the mesh named in the error */
+    } cases[] = {
+        /* checked as a part of a union, then its corners taken */
+        {"hull() { group() { import(\"notch.stl\"); cube(1); } }", 14, 14, 27,
+         "imported mesh"},
+        /* checked as a summand, then summed */
+        {"minkowski() { import(\"tet.off\"); cube(1); }", 4, 4, 22, "imported mesh"},
+        /* a summand that is not convex: also CGAL's check and faces */
+        {"minkowski() { import(\"notch.stl\"); cube(1); }", 14, 14, 22, "imported mesh"},
+        /* measured, then built */
+        {"resize(newsize = [4, 4, 4]) import(\"notch.stl\");", 14, 14, 36,
+         "imported mesh"},
+        /* two objects joined into one mesh for the hull: the second passes */
+        {"hull() { import(\"two.amf\"); }", 8, 4, 17, "object 2 of the imported file"},
+        /* two statements of one file: each its own mesh */
+        {"hull() { import(\"tet.off\"); import(\"tet.off\"); }", 8, 4, 36,
+         "imported mesh"},
+    };
+    char message[1024], expected[1400];
+    for (int faithful = 0; faithful < 2; faithful++) {
+        for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+            size_t t = cases[i].triangles;
+            sc_status st = load_budget_at(model, cases[i].text, t, faithful, message,
+                                          sizeof message);
+            if (st != SC_OK)
+                fail_msg("%s (faithful %d, budget %zu): %s", cases[i].text, faithful, t,
+                         message);
+            assert_int_equal(load_budget_at(model, cases[i].text, t - 1, faithful,
+                                            message, sizeof message),
+                             SC_ERR_LIMIT);
+            snprintf(expected, sizeof expected,
+                     "%s:1:%d: error: %s: too many mesh triangles (%zu more, past the "
+                     "limit of %zu in one model)",
+                     model, cases[i].column, cases[i].what, cases[i].more, t - 1);
+            assert_string_equal(message, expected);
+        }
+    }
 }
 
 /* Malformed polyhedron points and faces (how the model reads them:
@@ -1100,6 +1181,7 @@ int main(void)
         cmocka_unit_test(test_import_read_once),
         cmocka_unit_test(test_linear_extrude),
         cmocka_unit_test(test_triangle_budget),
+        cmocka_unit_test(test_import_budget_once),
         cmocka_unit_test(test_polyhedron_malformed),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

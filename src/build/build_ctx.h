@@ -30,7 +30,8 @@ typedef struct build_notes {
  * and a file of one object merged once in each mode, however many
  * builders take the import (a hull's or minkowski's check that it is
  * closed, then its leaf, then CGAL's faces; resize's measure, then the
- * leaf). The leaf built where an import stands lets its file go. Zeroed to
+ * leaf), and its triangles charged to the budget once (triangles_left).
+ * The leaf built where an import stands lets its file go. Zeroed to
  * start; freed with build_imports_free (build_mesh.h). */
 typedef struct build_imports {
     struct build_import_file *items; /* open addressing on the import's address */
@@ -52,7 +53,9 @@ typedef struct build_ctx {
     int strict;
     /* the triangles the load's meshes may still have, of max_triangles
      * (sc_load_options.max_triangles), shared by every context of a load;
-     * NULL: no budget */
+     * NULL: no budget. An import's are charged once per import statement,
+     * by the first builder that takes them (imports records it), a
+     * polyhedron's at most once, by its leaf (a hull takes its points) */
     size_t *triangles_left;
     size_t max_triangles;
     /* the load's files read so far, shared by every context of a load;

@@ -2041,6 +2041,10 @@ struct build_import_file {
     mesh_file m;                /* STL, OFF */
     amf_mesh a;                 /* AMF, 3MF */
     build_mesh_faces merged[2]; /* exact, faithful; face_start NULL until merged */
+    /* the budget (build_ctx.triangles_left) the import's triangles were
+     * charged to, or NULL: kept when the file is let go, so that a later
+     * reader of the import does not charge them again */
+    const size_t *charged;
 };
 
 static void import_file_free(struct build_import_file *f)
@@ -2212,7 +2216,9 @@ static sc_status import_read(const build_ctx *c, const model_import *import, int
  * how: import_solid's. The file is read once per build: taken from
  * c->imports where a builder before read it, else read and kept there;
  * last (the leaf built where the import stands, which no builder takes
- * after it), it is let go from there after use. */
+ * after it), it is let go from there after use. Its triangles are
+ * charged to c's budget once per import statement, by the first builder
+ * that takes them (build_ctx.h); the builders after it take them free. */
 static sc_status import_parts(const build_ctx *c, const model_import *import, int strict,
                               unsigned how, build_prims *out, const char **empty,
                               build_mesh_faces *faces, int last)
@@ -2246,14 +2252,23 @@ static sc_status import_parts(const build_ctx *c, const model_import *import, in
         }
     }
     build_mesh_faces *merged = file == &here ? NULL : &file->merged[c->faithful != 0];
+    /* charged already: the entry stays in the table after its file is let
+     * go, and the budget is the load's (a preview's parts have their own) */
+    struct build_import_file *entry = imports_find(c->imports, import);
+    build_ctx bc = *c;
+    if (entry && c->triangles_left && entry->charged == c->triangles_left)
+        bc.triangles_left = NULL;
     if (objects ? file->a.face_count == 0 : file->m.face_count == 0)
         *empty = "import without faces is empty";
     else if (objects)
-        st = import_objects(c, import, strict, how, &file->a, out, empty, faces, merged);
+        st =
+            import_objects(&bc, import, strict, how, &file->a, out, empty, faces, merged);
     else
-        st = import_solid(c, &loc, "imported mesh", strict, 0, how, file->m.points,
+        st = import_solid(&bc, &loc, "imported mesh", strict, 0, how, file->m.points,
                           file->m.point_count, file->m.indices, file->m.face_start,
                           file->m.face_count, out, empty, faces, merged);
+    if (st == SC_OK && entry)
+        entry->charged = c->triangles_left;
     /* several objects, every one left out or without volume: their
      * warnings were given, and the import counts as left out, so that
      * its parent does not add that it is empty (build_notes) */
@@ -2274,7 +2289,9 @@ static sc_status import_parts(const build_ctx *c, const model_import *import, in
 /* The union of parts as one mesh leaf, for the builders that take an
  * import's triangles (hull's corners, projection's faces): each part
  * closed and turned outward (import_solid leaves out the others, IMPORT_JOINED),
- * so that winding numbers add up to the union. */
+ * so that winding numbers add up to the union. The parts' triangles were
+ * charged to the budget as the parts were built; their join is the same
+ * triangles, not charged again. */
 static sc_status join_parts(const build_ctx *c, const sc_location *loc,
                             const build_prims *parts, prim *out)
 {
@@ -2283,9 +2300,7 @@ static sc_status join_parts(const build_ctx *c, const sc_location *loc,
         tris += parts->items[i].u.mesh.mesh->tri_count;
     if (tris > UINT32_MAX / 3)
         return err_set(c->error, SC_ERR_LIMIT, loc, "imported mesh has too many faces");
-    sc_status st = build_charge_triangles(c, loc, "import", tris);
-    if (st != SC_OK)
-        return st;
+    sc_status st = SC_OK;
     vec3 *v = malloc(3 * tris * sizeof *v);
     uint32_t *index = malloc(3 * tris * sizeof *index);
     if (!v || !index) {
