@@ -851,6 +851,72 @@ static void test_import_read_once(void **state)
     }
 }
 
+/* The merged faces of an import that the build's table holds are lent to
+ * the builders that want them (a hull's or minkowski's check that the
+ * mesh is closed, CGAL's faces), not copied: two readers get the same
+ * arrays, which hold the faces a build without the table merges, and
+ * build_mesh_faces_free leaves them to the table, which frees them once
+ * (build_imports_free). */
+static void test_import_faces_lent(void **state)
+{
+    (void)state;
+    write_notch_files();
+    char model[600];
+    snprintf(model, sizeof model, "%s/m.csg", work());
+    model_import import = {"notch.off", {model, 1, 8}, MODEL_MESH_OFF, NULL};
+    for (int faithful = 0; faithful < 2; faithful++) {
+        csg_builder *csg = csg_builder_new();
+        assert_non_null(csg);
+        sc_error e, note;
+        memset(&e, 0, sizeof e);
+        memset(&note, 0, sizeof note);
+        build_imports imports;
+        memset(&imports, 0, sizeof imports);
+        build_ctx c = {.file = model,
+                       .csg = csg,
+                       .error = &e,
+                       .faithful = faithful,
+                       .note = &note,
+                       .imports = &imports};
+        build_ctx alone = c;
+        alone.imports = NULL;
+        build_mesh_faces first, second, own;
+        const char *empty = NULL;
+        counted = "notch.off";
+        reads = 0;
+        assert_int_equal(build_import_faces(&c, &import, &empty, &first), SC_OK);
+        assert_null(empty);
+        assert_int_equal(build_import_faces(&c, &import, &empty, &second), SC_OK);
+        assert_null(empty);
+        assert_int_equal(reads, 1);
+        assert_ptr_equal(second.points, first.points);
+        assert_ptr_equal(second.names, first.names);
+        assert_ptr_equal(second.indices, first.indices);
+        assert_ptr_equal(second.face_start, first.face_start);
+        assert_int_equal(build_import_faces(&alone, &import, &empty, &own), SC_OK);
+        counted = "";
+        assert_null(empty);
+        assert_int_equal(reads, 2);
+        assert_true(own.points != first.points);
+        assert_int_equal(own.point_count, first.point_count);
+        assert_int_equal(own.face_count, first.face_count);
+        assert_int_equal(own.face_count, 9);
+        assert_memory_equal(own.points, first.points,
+                            own.point_count * sizeof *own.points);
+        assert_memory_equal(own.names, first.names, own.point_count * sizeof *own.names);
+        assert_memory_equal(own.face_start, first.face_start,
+                            (own.face_count + 1) * sizeof *own.face_start);
+        assert_memory_equal(own.indices, first.indices,
+                            own.face_start[own.face_count] * sizeof *own.indices);
+        assert_null(first.face_loops);
+        build_mesh_faces_free(&first);
+        build_mesh_faces_free(&second);
+        build_mesh_faces_free(&own);
+        build_imports_free(&imports);
+        csg_builder_free(csg);
+    }
+}
+
 /* linear_extrude in faithful mode of square, circle and polygon children:
  * holes by nesting, circles as OpenSCAD's polygons, unions of children, 2D
  * transforms, centring; a scale builds OpenSCAD's slices, a 2D difference
@@ -1179,6 +1245,7 @@ int main(void)
         cmocka_unit_test(test_builder_open_mesh),
         cmocka_unit_test(test_import),
         cmocka_unit_test(test_import_read_once),
+        cmocka_unit_test(test_import_faces_lent),
         cmocka_unit_test(test_linear_extrude),
         cmocka_unit_test(test_triangle_budget),
         cmocka_unit_test(test_import_budget_once),

@@ -1266,6 +1266,10 @@ static grid_slot *grid_find(const grid *g, const int64_t k[3])
 
 void build_mesh_faces_free(build_mesh_faces *f)
 {
+    if (f->lent) { /* the build's files own them */
+        memset(f, 0, sizeof *f);
+        return;
+    }
     free(f->points);
     free(f->names);
     free(f->indices);
@@ -1860,31 +1864,6 @@ static sc_status push_part(const build_ctx *c, const sc_location *loc, build_pri
     return SC_OK;
 }
 
-/* A copy of f in *out (malloc'd arrays); 0 when memory runs out. */
-static int faces_copy(const build_mesh_faces *f, build_mesh_faces *out)
-{
-    memset(out, 0, sizeof *out);
-    uint32_t total = f->face_start[f->face_count];
-    size_t points = f->point_count ? f->point_count : 1;
-    out->points = malloc(points * sizeof *out->points);
-    out->names = f->names ? malloc(points * sizeof *out->names) : NULL;
-    out->indices = malloc((size_t)(total ? total : 1) * sizeof *out->indices);
-    out->face_start = malloc(((size_t)f->face_count + 1) * sizeof *out->face_start);
-    if (!out->points || (f->names && !out->names) || !out->indices || !out->face_start) {
-        build_mesh_faces_free(out);
-        return 0;
-    }
-    memcpy(out->points, f->points, (size_t)f->point_count * sizeof *out->points);
-    if (f->names)
-        memcpy(out->names, f->names, (size_t)f->point_count * sizeof *out->names);
-    memcpy(out->indices, f->indices, (size_t)total * sizeof *out->indices);
-    memcpy(out->face_start, f->face_start,
-           ((size_t)f->face_count + 1) * sizeof *out->face_start);
-    out->point_count = f->point_count;
-    out->face_count = f->face_count;
-    return 1;
-}
-
 /* How import_solid treats an object that is not closed, beyond what its
  * mode says (flags). */
 enum {
@@ -1911,7 +1890,7 @@ enum {
  * c->notes at once, so that every object's is kept, in file order. how:
  * the IMPORT_ flags. merged (or NULL): where the file's faces are kept
  * merged in c's mode (build_imports): taken from there when they are, put
- * there when not. */
+ * there when not, and lent from there to *faces. */
 static sc_status import_solid(const build_ctx *c, const sc_location *loc,
                               const char *what, int strict, int several, unsigned how,
                               const vec3 *points, uint32_t point_count,
@@ -1949,11 +1928,10 @@ static sc_status import_solid(const build_ctx *c, const sc_location *loc,
     }
     if (st == SC_OK)
         st = build_mesh_solid(&sc, loc, what, 0, strict, use, &p, &empty);
-    if (st == SC_OK && faces && !empty && use == &f) {
-        *faces = f;
+    if (st == SC_OK && faces && !empty) { /* merged here, or lent from merged */
+        *faces = *use;
+        faces->lent = use != &f;
         memset(&f, 0, sizeof f);
-    } else if (st == SC_OK && faces && !empty && !faces_copy(use, faces)) {
-        st = err_nomem(c->error, loc);
     }
     build_mesh_faces_free(&f);
     /* an object alone left out (joined) counts as an import left out: its
@@ -2216,9 +2194,11 @@ static sc_status import_read(const build_ctx *c, const model_import *import, int
  * how: import_solid's. The file is read once per build: taken from
  * c->imports where a builder before read it, else read and kept there;
  * last (the leaf built where the import stands, which no builder takes
- * after it), it is let go from there after use. Its triangles are
- * charged to c's budget once per import statement, by the first builder
- * that takes them (build_ctx.h); the builders after it take them free. */
+ * after it), it is let go from there after use; so faces are asked for
+ * only without last, as they may be lent from the file kept (import_solid).
+ * Its triangles are charged to c's budget once per import statement, by
+ * the first builder that takes them (build_ctx.h); the builders after it
+ * take them free. */
 static sc_status import_parts(const build_ctx *c, const model_import *import, int strict,
                               unsigned how, build_prims *out, const char **empty,
                               build_mesh_faces *faces, int last)
