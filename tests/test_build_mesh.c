@@ -18,9 +18,11 @@
 #include <sys/stat.h>
 
 #include "build/build.h"
+#include "build/build_hull.h"
 #include "build/build_mesh.h"
 #include "build/scene.h"
 #include "formats/file.h"
+#include "syntax/parse.h"
 #include "test_util.h"
 
 /* Every file_read of the library comes through here (the test links with
@@ -917,6 +919,77 @@ static void test_import_faces_lent(void **state)
     }
 }
 
+/* A hull, a minkowski or a boolean that CGAL evaluates is the last reader
+ * of the imports below it: once it is built, the build's table lets their
+ * files go (build_imports_held), the meshes built the same as before. */
+static void test_import_let_go(void **state)
+{
+    (void)state;
+    write_notch_files();
+    static const char tet[] = "OFF\n4 4 0\n0 0 0\n2 0 0\n0 2 0\n0 0 2\n"
+                              "3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n";
+    write_file("tet.off", tet, strlen(tet));
+    char model_path[600];
+    snprintf(model_path, sizeof model_path, "%s/m.csg", work());
+    static const struct {
+        const char *text;
+        uint32_t leaves;
+    } cases[] = {
+        {"hull() { group() { import(\"notch.stl\"); cube(1); } }", 1},
+        {"minkowski() { import(\"tet.off\"); cube(1); }", 1},
+        /* not convex: CGAL's convex parts, each summed with the cube */
+        {"minkowski() { import(\"notch.off\"); cube(1); }", 0},
+        {"hull() { difference() { import(\"notch.stl\"); cube(1); } }", 1},
+    };
+    for (int faithful = 0; faithful < 2; faithful++) {
+        for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+            const char *text = cases[i].text;
+            sc_error e;
+            memset(&e, 0, sizeof e);
+            parse_tree *tree = NULL;
+            assert_int_equal(parse_text(model_path, text, strlen(text), &tree, &e),
+                             SC_OK);
+            model *m = NULL;
+            assert_int_equal(model_lower(tree, &m, &e), SC_OK);
+            csg_builder *csg = csg_builder_new();
+            assert_non_null(csg);
+            build_imports imports;
+            memset(&imports, 0, sizeof imports);
+            build_notes notes = {NULL, 0, 0, 0};
+            build_resize_cache *cache = NULL;
+            build_ctx c = {.file = model_path,
+                           .csg = csg,
+                           .error = &e,
+                           .faithful = faithful,
+                           .notes = &notes,
+                           .imports = &imports};
+            build_prims out;
+            const char *empty = NULL;
+            sc_status st = m->first->kind == MODEL_HULL
+                               ? build_hull(&c, m->first, 1, &cache, &out, &empty)
+                               : build_minkowski(&c, m->first, 1, &cache, &out, &empty);
+            if (st != SC_OK)
+                fail_msg("%s: %s", text, e.message);
+            assert_null(empty);
+            assert_int_equal(notes.count, 0);
+            if (cases[i].leaves)
+                assert_int_equal(out.count, cases[i].leaves);
+            else
+                assert_true(out.count > 1);
+            if (build_imports_held(&imports) != 0)
+                fail_msg("%s (faithful %d): %zu files held after the build", text,
+                         faithful, build_imports_held(&imports));
+            free(out.items);
+            free(notes.items);
+            build_resize_cache_free(cache);
+            build_imports_free(&imports);
+            csg_builder_free(csg);
+            model_free(m);
+            parse_tree_free(tree);
+        }
+    }
+}
+
 /* linear_extrude in faithful mode of square, circle and polygon children:
  * holes by nesting, circles as OpenSCAD's polygons, unions of children, 2D
  * transforms, centring; a scale builds OpenSCAD's slices, a 2D difference
@@ -1246,6 +1319,7 @@ int main(void)
         cmocka_unit_test(test_import),
         cmocka_unit_test(test_import_read_once),
         cmocka_unit_test(test_import_faces_lent),
+        cmocka_unit_test(test_import_let_go),
         cmocka_unit_test(test_linear_extrude),
         cmocka_unit_test(test_triangle_budget),
         cmocka_unit_test(test_import_budget_once),

@@ -31,8 +31,10 @@ typedef struct build_notes {
  * builders take the import (a hull's or minkowski's check that it is
  * closed, then its leaf, then CGAL's faces; resize's measure, then the
  * leaf), and its triangles charged to the budget once (triangles_left).
- * The leaf built where an import stands lets its file go. Zeroed to
- * start; freed with build_imports_free (build_mesh.h). */
+ * The leaf built where an import stands lets its file go, and so does a
+ * hull, minkowski or CGAL solid for the imports below it, once built
+ * (build_imports_done). Zeroed to start; freed with build_imports_free
+ * (build_mesh.h). */
 typedef struct build_imports {
     struct build_import_file *items; /* open addressing on the import's address */
     size_t count, cap;               /* cap is 0 or a power of two */

@@ -2045,6 +2045,14 @@ void build_imports_free(build_imports *imports)
     memset(imports, 0, sizeof *imports);
 }
 
+size_t build_imports_held(const build_imports *imports)
+{
+    size_t held = 0;
+    for (size_t i = 0; i < imports->cap; i++)
+        held += imports->items[i].import && imports->items[i].read;
+    return held;
+}
+
 /* Whether a and b are one import of the model file: the same node, or the
  * copy of it the lowering makes in another context (resize's children
  * are lowered again to be measured: model.h), which keeps its position
@@ -2107,6 +2115,30 @@ static struct build_import_file *imports_put(build_imports *imports,
     imports->items[i].import = import;
     imports->count++;
     return &imports->items[i];
+}
+
+/* Lets go of the files of the imports among n and its siblings, and below
+ * them down to the walks' depth (build_hull.h); deeper files stay until
+ * the build ends. */
+static void imports_let_go(build_imports *imports, const model_node *n, int depth)
+{
+    for (; n; n = n->next) {
+        if (n->modifiers & (MODEL_MOD_DISABLE | MODEL_MOD_BACKGROUND))
+            continue;
+        if (n->kind == MODEL_IMPORT && !n->pending && n->u.import) {
+            struct build_import_file *file = imports_find(imports, n->u.import);
+            if (file && file->read)
+                import_file_free(file);
+        } else if (depth < BUILD_HULL_MAX_DEPTH) {
+            imports_let_go(imports, n->first_child, depth + 1);
+        }
+    }
+}
+
+void build_imports_done(const build_ctx *c, const model_node *n)
+{
+    if (c->imports && c->imports->count)
+        imports_let_go(c->imports, n->first_child, 1);
 }
 
 /* Reads and parses import's file into *file (file->read set); or, as

@@ -113,6 +113,18 @@ struct build_prims; /* build_hull.h */
 /* Frees what imports holds (build_ctx.h) and zeroes it. */
 void build_imports_free(build_imports *imports);
 
+/* How many files imports holds (read, and not yet let go). */
+size_t build_imports_held(const build_imports *imports);
+
+/* The builder of n (a hull, a minkowski, the solid CGAL makes of a subtree)
+ * is done with the imports below it, the last of their readers: their
+ * files are let go from c->imports, which still knows their triangles
+ * were charged. The measure of a resize is not such a builder (its leaf
+ * comes after), and a subtree skipped ('*', '%') is not looked into, as
+ * the builders do not read it. A preview's part ('#') built afterwards
+ * reads its files again. */
+void build_imports_done(const build_ctx *c, const model_node *n);
+
 /* OpenSCAD 2021.01's message for a mesh it cannot take into CGAL. */
 extern const char build_openscad_not_closed[];
 
