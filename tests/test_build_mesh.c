@@ -687,6 +687,28 @@ static void write_notch_files(void)
     write_file("bad.stl", "solid x\nvertex 1 2\n", 19);
 }
 
+/* tet.off, a tetrahedron; two.amf, two tetrahedra (objects 1 and 2) of 4
+ * triangles each. */
+static void write_object_files(void)
+{
+    static const char tet[] = "OFF\n4 4 0\n0 0 0\n2 0 0\n0 2 0\n0 0 2\n"
+                              "3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n";
+    write_file("tet.off", tet, strlen(tet));
+#define TET_AMF(x)                                                                       \
+    "<object id='" #x "'><mesh><vertices>"                                               \
+    "<vertex><coordinates><x>" #x "</x><y>0</y><z>0</z></coordinates></vertex>"          \
+    "<vertex><coordinates><x>" #x ".5</x><y>0</y><z>0</z></coordinates></vertex>"        \
+    "<vertex><coordinates><x>" #x "</x><y>1</y><z>0</z></coordinates></vertex>"          \
+    "<vertex><coordinates><x>" #x "</x><y>0</y><z>1</z></coordinates></vertex>"          \
+    "</vertices><volume><triangle><v1>0</v1><v2>2</v2><v3>1</v3></triangle>"             \
+    "<triangle><v1>0</v1><v2>1</v2><v3>3</v3></triangle>"                                \
+    "<triangle><v1>0</v1><v2>3</v2><v3>2</v3></triangle>"                                \
+    "<triangle><v1>1</v1><v2>2</v2><v3>3</v3></triangle></volume></mesh></object>"
+    static const char two[] = "<?xml version='1.0'?><amf>" TET_AMF(0) TET_AMF(3) "</amf>";
+#undef TET_AMF
+    write_file("two.amf", two, strlen(two));
+}
+
 static void test_import(void **state)
 {
     (void)state;
@@ -926,9 +948,7 @@ static void test_import_let_go(void **state)
 {
     (void)state;
     write_notch_files();
-    static const char tet[] = "OFF\n4 4 0\n0 0 0\n2 0 0\n0 2 0\n0 0 2\n"
-                              "3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n";
-    write_file("tet.off", tet, strlen(tet));
+    write_object_files();
     char model_path[600];
     snprintf(model_path, sizeof model_path, "%s/m.csg", work());
     static const struct {
@@ -987,6 +1007,168 @@ static void test_import_let_go(void **state)
             model_free(m);
             parse_tree_free(tree);
         }
+    }
+}
+
+/* Each mesh of an import is merged once per build (build_imports.merges),
+ * however many builders take it: each object of a file of several, and in
+ * --faithful a file of one object, whose closed check merges as exact
+ * mode does, so that its warning names an edge by the file's coordinates
+ * where the leaf names it by OpenSCAD's. */
+static void test_import_merged_once(void **state)
+{
+    (void)state;
+    write_notch_files();
+    write_object_files();
+    static const char open[] = "solid o\n"
+                               "facet normal 0 0 0\nouter loop\nvertex 0 0 0\n"
+                               "vertex 0 0.1 0\nvertex 0.1 0 0\nendloop\nendfacet\n"
+                               "facet normal 0 0 0\nouter loop\nvertex 0 0 0\n"
+                               "vertex 0.1 0 0\nvertex 0 0 0.1\nendloop\nendfacet\n"
+                               "facet normal 0 0 0\nouter loop\nvertex 0 0 0\n"
+                               "vertex 0 0 0.1\nvertex 0 0.1 0\nendloop\nendfacet\n"
+                               "endsolid o\n";
+    write_file("open01.stl", open, strlen(open));
+    char model_path[600];
+    snprintf(model_path, sizeof model_path, "%s/m.csg", work());
+    static const struct {
+        const char *text;
+        size_t merges;
+    } cases[] = {
+        {"hull() { group() { import(\"notch.stl\"); cube(1); } }", 1},
+        {"hull() { group() { import(\"two.amf\"); cube(1); } }", 2},
+        {"minkowski() { import(\"two.amf\"); cube(1); }", 2},
+        {"minkowski() { import(\"notch.off\"); cube(1); }", 1},
+        {"hull() { group() { import(\"open01.stl\"); cube(1); } }", 1},
+    };
+    for (int faithful = 0; faithful < 2; faithful++) {
+        for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+            const char *text = cases[i].text;
+            sc_error e;
+            memset(&e, 0, sizeof e);
+            parse_tree *tree = NULL;
+            assert_int_equal(parse_text(model_path, text, strlen(text), &tree, &e),
+                             SC_OK);
+            model *m = NULL;
+            assert_int_equal(model_lower(tree, &m, &e), SC_OK);
+            csg_builder *csg = csg_builder_new();
+            assert_non_null(csg);
+            build_imports imports;
+            memset(&imports, 0, sizeof imports);
+            build_notes notes = {NULL, 0, 0, 0};
+            build_resize_cache *cache = NULL;
+            build_ctx c = {.file = model_path,
+                           .csg = csg,
+                           .error = &e,
+                           .faithful = faithful,
+                           .notes = &notes,
+                           .imports = &imports};
+            build_prims out;
+            const char *empty = NULL;
+            sc_status st = m->first->kind == MODEL_HULL
+                               ? build_hull(&c, m->first, 1, &cache, &out, &empty)
+                               : build_minkowski(&c, m->first, 1, &cache, &out, &empty);
+            if (st != SC_OK)
+                fail_msg("%s: %s", text, e.message);
+            if (imports.merges != cases[i].merges)
+                fail_msg("%s (faithful %d): %zu merges, not %zu", text, faithful,
+                         imports.merges, cases[i].merges);
+            free(out.items);
+            free(notes.items);
+            build_resize_cache_free(cache);
+            build_imports_free(&imports);
+            csg_builder_free(csg);
+            model_free(m);
+            parse_tree_free(tree);
+        }
+    }
+    /* the check's edge in the file's coordinates, the leaf's in OpenSCAD's */
+    static const char *const left_out =
+        "; left out, as OpenSCAD leaves it out (\"The given mesh is not closed! "
+        "Unable to convert to CGAL_Nef_Polyhedron.\")";
+    char expected[600];
+    snprintf(expected, sizeof expected,
+             "imported mesh is not closed (edge (0, 0.1, 0)-(0.1, 0, 0) is used by 1 "
+             "face)%s",
+             left_out);
+    for (int faithful = 0; faithful < 2; faithful++) {
+        sc_scene *s = load_one_warning(
+            model_path, "hull() { group() { import(\"open01.stl\"); cube(1); } }",
+            faithful, 1, 27, expected, 1);
+        sc_scene_release(s);
+    }
+    snprintf(expected, sizeof expected,
+             "imported mesh is not closed (edge (0, 0.0999994, 0)-(0.0999994, 0, 0) is "
+             "used by 1 face)%s",
+             left_out);
+    sc_scene *s = load_with(model_path, "import(\"open01.stl\");", 1);
+    assert_int_equal(sc_scene_warning_count(s), 1);
+    assert_string_equal(sc_scene_warning(s, 0)->message, expected);
+    sc_scene_release(s);
+}
+
+/* A builder of the other mode (the closed check, exact in --faithful,
+ * then the faithful leaf) gets the faces merged once: the same faces, and
+ * the points of its mode, equal to those a merge in that mode makes. */
+static void test_import_modes_share(void **state)
+{
+    (void)state;
+    static const char tet[] = "OFF\n4 4 0\n0 0 0\n0.1 0 0\n0 0.1 0\n0 0 0.1\n"
+                              "3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n";
+    write_file("tet01.off", tet, strlen(tet));
+    char model[600];
+    snprintf(model, sizeof model, "%s/m.csg", work());
+    model_import import = {"tet01.off", {model, 1, 8}, MODEL_MESH_OFF, NULL};
+    for (int first_mode = 0; first_mode < 2; first_mode++) {
+        csg_builder *csg = csg_builder_new();
+        assert_non_null(csg);
+        sc_error e, note;
+        memset(&e, 0, sizeof e);
+        memset(&note, 0, sizeof note);
+        build_imports imports;
+        memset(&imports, 0, sizeof imports);
+        build_ctx c[2];
+        for (int mode = 0; mode < 2; mode++)
+            c[mode] = (build_ctx){.file = model,
+                                  .csg = csg,
+                                  .error = &e,
+                                  .faithful = mode,
+                                  .note = &note,
+                                  .imports = &imports};
+        build_mesh_faces f[2], own;
+        const char *empty = NULL;
+        assert_int_equal(
+            build_import_faces(&c[first_mode], &import, &empty, &f[first_mode]), SC_OK);
+        assert_int_equal(
+            build_import_faces(&c[!first_mode], &import, &empty, &f[!first_mode]), SC_OK);
+        assert_null(empty);
+        assert_int_equal(imports.merges, 1);
+        assert_ptr_equal(f[0].indices, f[1].indices);
+        assert_ptr_equal(f[0].face_start, f[1].face_start);
+        assert_int_equal(f[0].point_count, 4);
+        /* the file's 0.1, and OpenSCAD's point of its cell, as float */
+        double tenth = (double)(float)(104857.0 / 1048576.0);
+        for (uint32_t u = 0; u < 4; u++) {
+            uint32_t name = f[0].names[u];
+            assert_int_equal(f[1].names[u], name);
+            assert_true(f[0].points[u].x == (name == 1 ? 0.1 : 0));
+            assert_true(f[1].points[u].x == (name == 1 ? tenth : 0));
+        }
+        for (int mode = 0; mode < 2; mode++) {
+            build_ctx alone = c[mode];
+            alone.imports = NULL;
+            assert_int_equal(build_import_faces(&alone, &import, &empty, &own), SC_OK);
+            assert_int_equal(own.point_count, f[mode].point_count);
+            assert_memory_equal(own.points, f[mode].points,
+                                own.point_count * sizeof *own.points);
+            assert_memory_equal(own.indices, f[mode].indices,
+                                own.face_start[own.face_count] * sizeof *own.indices);
+            build_mesh_faces_free(&own);
+        }
+        build_mesh_faces_free(&f[0]);
+        build_mesh_faces_free(&f[1]);
+        build_imports_free(&imports);
+        csg_builder_free(csg);
     }
 }
 
@@ -1160,22 +1342,7 @@ static void test_import_budget_once(void **state)
     snprintf(dir, sizeof dir, "%s", work());
     snprintf(model, sizeof model, "%s/m.csg", dir);
     write_notch_files();
-    static const char tet[] = "OFF\n4 4 0\n0 0 0\n2 0 0\n0 2 0\n0 0 2\n"
-                              "3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n";
-    write_file("tet.off", tet, strlen(tet));
-#define TET_AMF(x)                                                                       \
-    "<object id='" #x "'><mesh><vertices>"                                               \
-    "<vertex><coordinates><x>" #x "</x><y>0</y><z>0</z></coordinates></vertex>"          \
-    "<vertex><coordinates><x>" #x ".5</x><y>0</y><z>0</z></coordinates></vertex>"        \
-    "<vertex><coordinates><x>" #x "</x><y>1</y><z>0</z></coordinates></vertex>"          \
-    "<vertex><coordinates><x>" #x "</x><y>0</y><z>1</z></coordinates></vertex>"          \
-    "</vertices><volume><triangle><v1>0</v1><v2>2</v2><v3>1</v3></triangle>"             \
-    "<triangle><v1>0</v1><v2>1</v2><v3>3</v3></triangle>"                                \
-    "<triangle><v1>0</v1><v2>3</v2><v3>2</v3></triangle>"                                \
-    "<triangle><v1>1</v1><v2>2</v2><v3>3</v3></triangle></volume></mesh></object>"
-    static const char two[] = "<?xml version='1.0'?><amf>" TET_AMF(0) TET_AMF(3) "</amf>";
-#undef TET_AMF
-    write_file("two.amf", two, strlen(two));
+    write_object_files();
     static const struct {
         const char *text;
         size_t triangles, more; /* in all; what the mesh that fails asks for */
@@ -1320,6 +1487,8 @@ int main(void)
         cmocka_unit_test(test_import_read_once),
         cmocka_unit_test(test_import_faces_lent),
         cmocka_unit_test(test_import_let_go),
+        cmocka_unit_test(test_import_merged_once),
+        cmocka_unit_test(test_import_modes_share),
         cmocka_unit_test(test_linear_extrude),
         cmocka_unit_test(test_triangle_budget),
         cmocka_unit_test(test_import_budget_once),

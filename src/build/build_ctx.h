@@ -27,7 +27,7 @@ typedef struct build_notes {
 
 /* The files a build's imports read, by import (its node, or the copy a
  * resize's measure walks: build_mesh.c): each file read and parsed once,
- * and a file of one object merged once in each mode, however many
+ * and each of its objects merged once for both modes, however many
  * builders take the import (a hull's or minkowski's check that it is
  * closed, then its leaf, then CGAL's faces; resize's measure, then the
  * leaf), and its triangles charged to the budget once (triangles_left).
@@ -38,6 +38,7 @@ typedef struct build_notes {
 typedef struct build_imports {
     struct build_import_file *items; /* open addressing on the import's address */
     size_t count, cap;               /* cap is 0 or a power of two */
+    size_t merges; /* meshes merged so far (each object of a file is one) */
 } build_imports;
 
 typedef struct build_ctx {
