@@ -949,6 +949,10 @@ static void test_import_let_go(void **state)
     (void)state;
     write_notch_files();
     write_object_files();
+    static const char square[] = "0\nSECTION\n2\nENTITIES\n0\nLWPOLYLINE\n8\n0\n90\n4\n"
+                                 "70\n1\n10\n0\n20\n0\n10\n1\n20\n0\n10\n1\n20\n1\n"
+                                 "10\n0\n20\n1\n0\nENDSEC\n0\nEOF\n";
+    write_file("sq.dxf", square, strlen(square));
     char model_path[600];
     snprintf(model_path, sizeof model_path, "%s/m.csg", work());
     static const struct {
@@ -960,6 +964,10 @@ static void test_import_let_go(void **state)
         /* not convex: CGAL's convex parts, each summed with the cube */
         {"minkowski() { import(\"notch.off\"); cube(1); }", 0},
         {"hull() { difference() { import(\"notch.stl\"); cube(1); } }", 1},
+        /* the extrusions' imports are drawings, not meshes */
+        {"hull() { import(\"tet.off\"); linear_extrude(height = 5) { "
+         "import(\"sq.dxf\"); } linear_extrude(file = \"sq.dxf\", height = 3); }",
+         1},
     };
     for (int faithful = 0; faithful < 2; faithful++) {
         for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {

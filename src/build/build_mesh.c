@@ -2178,11 +2178,14 @@ static struct build_import_file *imports_put(build_imports *imports,
 
 /* Lets go of the files of the imports among n and its siblings, and below
  * them down to the walks' depth (build_hull.h); deeper files stay until
- * the build ends. */
+ * the build ends. The nodes are lowered in the points context (model.h),
+ * where an import holds its import; the extrusions' children are in the
+ * 2D context, where an import is a drawing, not a mesh, and are passed by. */
 static void imports_let_go(build_imports *imports, const model_node *n, int depth)
 {
     for (; n; n = n->next) {
-        if (n->modifiers & (MODEL_MOD_DISABLE | MODEL_MOD_BACKGROUND))
+        if ((n->modifiers & (MODEL_MOD_DISABLE | MODEL_MOD_BACKGROUND)) ||
+            n->kind == MODEL_LINEAR_EXTRUDE || n->kind == MODEL_ROTATE_EXTRUDE)
             continue;
         if (n->kind == MODEL_IMPORT && !n->pending && n->u.import) {
             struct build_import_file *file = imports_find(imports, n->u.import);
