@@ -5,7 +5,9 @@
  * exact mode, errors with strict), equal points are merged as OpenSCAD
  * merges them, quads are split along OpenSCAD's diagonal, import reads ASCII STL, binary
  * STL and OFF files relative to the model file, with exact messages for what it cannot
- * read, and linear_extrude (build_extrude.c) builds prisms. */
+ * read, a build reads, merges and charges an import once however many builders take
+ * it, lends its faces and lets its file go after the last of them, and linear_extrude
+ * (build_extrude.c) builds prisms. */
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>
