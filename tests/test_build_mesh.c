@@ -5,7 +5,9 @@
  * exact mode, errors with strict), equal points are merged as OpenSCAD
  * merges them, quads are split along OpenSCAD's diagonal, import reads ASCII STL, binary
  * STL and OFF files relative to the model file, with exact messages for what it cannot
- * read, and linear_extrude (build_extrude.c) builds prisms. */
+ * read, a build reads, merges and charges an import once however many builders take
+ * it, lends its faces and lets its file go after the last of them, and linear_extrude
+ * (build_extrude.c) builds prisms. */
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>
@@ -18,9 +20,11 @@
 #include <sys/stat.h>
 
 #include "build/build.h"
+#include "build/build_hull.h"
 #include "build/build_mesh.h"
 #include "build/scene.h"
 #include "formats/file.h"
+#include "syntax/parse.h"
 #include "test_util.h"
 
 /* Every file_read of the library comes through here (the test links with
@@ -702,6 +706,28 @@ static void write_notch_files(void)
     write_file("bad.stl", "solid x\nvertex 1 2\n", 19);
 }
 
+/* tet.off, a tetrahedron; two.amf, two tetrahedra (objects 1 and 2) of 4
+ * triangles each. */
+static void write_object_files(void)
+{
+    static const char tet[] = "OFF\n4 4 0\n0 0 0\n2 0 0\n0 2 0\n0 0 2\n"
+                              "3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n";
+    write_file("tet.off", tet, strlen(tet));
+#define TET_AMF(x)                                                                       \
+    "<object id='" #x "'><mesh><vertices>"                                               \
+    "<vertex><coordinates><x>" #x "</x><y>0</y><z>0</z></coordinates></vertex>"          \
+    "<vertex><coordinates><x>" #x ".5</x><y>0</y><z>0</z></coordinates></vertex>"        \
+    "<vertex><coordinates><x>" #x "</x><y>1</y><z>0</z></coordinates></vertex>"          \
+    "<vertex><coordinates><x>" #x "</x><y>0</y><z>1</z></coordinates></vertex>"          \
+    "</vertices><volume><triangle><v1>0</v1><v2>2</v2><v3>1</v3></triangle>"             \
+    "<triangle><v1>0</v1><v2>1</v2><v3>3</v3></triangle>"                                \
+    "<triangle><v1>0</v1><v2>3</v2><v3>2</v3></triangle>"                                \
+    "<triangle><v1>1</v1><v2>2</v2><v3>3</v3></triangle></volume></mesh></object>"
+    static const char two[] = "<?xml version='1.0'?><amf>" TET_AMF(0) TET_AMF(3) "</amf>";
+#undef TET_AMF
+    write_file("two.amf", two, strlen(two));
+}
+
 static void test_import(void **state)
 {
     (void)state;
@@ -869,6 +895,311 @@ static void test_import_read_once(void **state)
     }
 }
 
+/* The merged faces of an import that the build's table holds are lent to
+ * the builders that want them (a hull's or minkowski's check that the
+ * mesh is closed, CGAL's faces), not copied: two readers get the same
+ * arrays, which hold the faces a build without the table merges, and
+ * build_mesh_faces_free leaves them to the table, which frees them once
+ * (build_imports_free). */
+static void test_import_faces_lent(void **state)
+{
+    (void)state;
+    write_notch_files();
+    char model[600];
+    snprintf(model, sizeof model, "%s/m.csg", work());
+    model_import import = {"notch.off", {model, 1, 8}, MODEL_MESH_OFF, NULL};
+    for (int faithful = 0; faithful < 2; faithful++) {
+        csg_builder *csg = csg_builder_new();
+        assert_non_null(csg);
+        sc_error e, note;
+        memset(&e, 0, sizeof e);
+        memset(&note, 0, sizeof note);
+        build_imports imports;
+        memset(&imports, 0, sizeof imports);
+        build_ctx c = {.file = model,
+                       .csg = csg,
+                       .error = &e,
+                       .faithful = faithful,
+                       .note = &note,
+                       .imports = &imports};
+        build_ctx alone = c;
+        alone.imports = NULL;
+        build_mesh_faces first, second, own;
+        const char *empty = NULL;
+        counted = "notch.off";
+        reads = 0;
+        assert_int_equal(build_import_faces(&c, &import, &empty, &first), SC_OK);
+        assert_null(empty);
+        assert_int_equal(build_import_faces(&c, &import, &empty, &second), SC_OK);
+        assert_null(empty);
+        assert_int_equal(reads, 1);
+        assert_ptr_equal(second.points, first.points);
+        assert_ptr_equal(second.names, first.names);
+        assert_ptr_equal(second.indices, first.indices);
+        assert_ptr_equal(second.face_start, first.face_start);
+        assert_int_equal(build_import_faces(&alone, &import, &empty, &own), SC_OK);
+        counted = "";
+        assert_null(empty);
+        assert_int_equal(reads, 2);
+        assert_true(own.points != first.points);
+        assert_int_equal(own.point_count, first.point_count);
+        assert_int_equal(own.face_count, first.face_count);
+        assert_int_equal(own.face_count, 9);
+        assert_memory_equal(own.points, first.points,
+                            own.point_count * sizeof *own.points);
+        assert_memory_equal(own.names, first.names, own.point_count * sizeof *own.names);
+        assert_memory_equal(own.face_start, first.face_start,
+                            (own.face_count + 1) * sizeof *own.face_start);
+        assert_memory_equal(own.indices, first.indices,
+                            own.face_start[own.face_count] * sizeof *own.indices);
+        assert_null(first.face_loops);
+        build_mesh_faces_free(&first);
+        build_mesh_faces_free(&second);
+        build_mesh_faces_free(&own);
+        build_imports_free(&imports);
+        csg_builder_free(csg);
+    }
+}
+
+/* A hull, a minkowski or a boolean that CGAL evaluates is the last reader
+ * of the imports below it: once it is built, the build's table lets their
+ * files go (build_imports_held), the meshes built the same as before. */
+static void test_import_let_go(void **state)
+{
+    (void)state;
+    write_notch_files();
+    write_object_files();
+    static const char square[] = "0\nSECTION\n2\nENTITIES\n0\nLWPOLYLINE\n8\n0\n90\n4\n"
+                                 "70\n1\n10\n0\n20\n0\n10\n1\n20\n0\n10\n1\n20\n1\n"
+                                 "10\n0\n20\n1\n0\nENDSEC\n0\nEOF\n";
+    write_file("sq.dxf", square, strlen(square));
+    char model_path[600];
+    snprintf(model_path, sizeof model_path, "%s/m.csg", work());
+    static const struct {
+        const char *text;
+        uint32_t leaves;
+    } cases[] = {
+        {"hull() { group() { import(\"notch.stl\"); cube(1); } }", 1},
+        {"minkowski() { import(\"tet.off\"); cube(1); }", 1},
+        /* not convex: CGAL's convex parts, each summed with the cube */
+        {"minkowski() { import(\"notch.off\"); cube(1); }", 0},
+        {"hull() { difference() { import(\"notch.stl\"); cube(1); } }", 1},
+        /* the extrusions' imports are drawings, not meshes */
+        {"hull() { import(\"tet.off\"); linear_extrude(height = 5) { "
+         "import(\"sq.dxf\"); } linear_extrude(file = \"sq.dxf\", height = 3); }",
+         1},
+    };
+    for (int faithful = 0; faithful < 2; faithful++) {
+        for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+            const char *text = cases[i].text;
+            sc_error e;
+            memset(&e, 0, sizeof e);
+            parse_tree *tree = NULL;
+            assert_int_equal(parse_text(model_path, text, strlen(text), &tree, &e),
+                             SC_OK);
+            model *m = NULL;
+            assert_int_equal(model_lower(tree, &m, &e), SC_OK);
+            csg_builder *csg = csg_builder_new();
+            assert_non_null(csg);
+            build_imports imports;
+            memset(&imports, 0, sizeof imports);
+            build_notes notes = {NULL, 0, 0, 0};
+            build_resize_cache *cache = NULL;
+            build_ctx c = {.file = model_path,
+                           .csg = csg,
+                           .error = &e,
+                           .faithful = faithful,
+                           .notes = &notes,
+                           .imports = &imports};
+            build_prims out;
+            const char *empty = NULL;
+            sc_status st = m->first->kind == MODEL_HULL
+                               ? build_hull(&c, m->first, 1, &cache, &out, &empty)
+                               : build_minkowski(&c, m->first, 1, &cache, &out, &empty);
+            if (st != SC_OK)
+                fail_msg("%s: %s", text, e.message);
+            assert_null(empty);
+            assert_int_equal(notes.count, 0);
+            if (cases[i].leaves)
+                assert_int_equal(out.count, cases[i].leaves);
+            else
+                assert_true(out.count > 1);
+            if (build_imports_held(&imports) != 0)
+                fail_msg("%s (faithful %d): %zu files held after the build", text,
+                         faithful, build_imports_held(&imports));
+            free(out.items);
+            free(notes.items);
+            build_resize_cache_free(cache);
+            build_imports_free(&imports);
+            csg_builder_free(csg);
+            model_free(m);
+            parse_tree_free(tree);
+        }
+    }
+}
+
+/* Each mesh of an import is merged once per build (build_imports.merges),
+ * however many builders take it: each object of a file of several, and in
+ * --faithful a file of one object, whose closed check merges as exact
+ * mode does, so that its warning names an edge by the file's coordinates
+ * where the leaf names it by OpenSCAD's. */
+static void test_import_merged_once(void **state)
+{
+    (void)state;
+    write_notch_files();
+    write_object_files();
+    static const char open[] = "solid o\n"
+                               "facet normal 0 0 0\nouter loop\nvertex 0 0 0\n"
+                               "vertex 0 0.1 0\nvertex 0.1 0 0\nendloop\nendfacet\n"
+                               "facet normal 0 0 0\nouter loop\nvertex 0 0 0\n"
+                               "vertex 0.1 0 0\nvertex 0 0 0.1\nendloop\nendfacet\n"
+                               "facet normal 0 0 0\nouter loop\nvertex 0 0 0\n"
+                               "vertex 0 0 0.1\nvertex 0 0.1 0\nendloop\nendfacet\n"
+                               "endsolid o\n";
+    write_file("open01.stl", open, strlen(open));
+    char model_path[600];
+    snprintf(model_path, sizeof model_path, "%s/m.csg", work());
+    static const struct {
+        const char *text;
+        size_t merges;
+    } cases[] = {
+        {"hull() { group() { import(\"notch.stl\"); cube(1); } }", 1},
+        {"hull() { group() { import(\"two.amf\"); cube(1); } }", 2},
+        {"minkowski() { import(\"two.amf\"); cube(1); }", 2},
+        {"minkowski() { import(\"notch.off\"); cube(1); }", 1},
+        {"hull() { group() { import(\"open01.stl\"); cube(1); } }", 1},
+    };
+    for (int faithful = 0; faithful < 2; faithful++) {
+        for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+            const char *text = cases[i].text;
+            sc_error e;
+            memset(&e, 0, sizeof e);
+            parse_tree *tree = NULL;
+            assert_int_equal(parse_text(model_path, text, strlen(text), &tree, &e),
+                             SC_OK);
+            model *m = NULL;
+            assert_int_equal(model_lower(tree, &m, &e), SC_OK);
+            csg_builder *csg = csg_builder_new();
+            assert_non_null(csg);
+            build_imports imports;
+            memset(&imports, 0, sizeof imports);
+            build_notes notes = {NULL, 0, 0, 0};
+            build_resize_cache *cache = NULL;
+            build_ctx c = {.file = model_path,
+                           .csg = csg,
+                           .error = &e,
+                           .faithful = faithful,
+                           .notes = &notes,
+                           .imports = &imports};
+            build_prims out;
+            const char *empty = NULL;
+            sc_status st = m->first->kind == MODEL_HULL
+                               ? build_hull(&c, m->first, 1, &cache, &out, &empty)
+                               : build_minkowski(&c, m->first, 1, &cache, &out, &empty);
+            if (st != SC_OK)
+                fail_msg("%s: %s", text, e.message);
+            if (imports.merges != cases[i].merges)
+                fail_msg("%s (faithful %d): %zu merges, not %zu", text, faithful,
+                         imports.merges, cases[i].merges);
+            free(out.items);
+            free(notes.items);
+            build_resize_cache_free(cache);
+            build_imports_free(&imports);
+            csg_builder_free(csg);
+            model_free(m);
+            parse_tree_free(tree);
+        }
+    }
+    /* the check's edge in the file's coordinates, the leaf's in OpenSCAD's */
+    static const char *const left_out =
+        "; left out, as OpenSCAD leaves it out (\"The given mesh is not closed! "
+        "Unable to convert to CGAL_Nef_Polyhedron.\")";
+    char expected[600];
+    snprintf(expected, sizeof expected,
+             "imported mesh is not closed (edge (0, 0.1, 0)-(0.1, 0, 0) is used by 1 "
+             "face)%s",
+             left_out);
+    for (int faithful = 0; faithful < 2; faithful++) {
+        sc_scene *s = load_one_warning(
+            model_path, "hull() { group() { import(\"open01.stl\"); cube(1); } }",
+            faithful, 1, 27, expected, 1);
+        sc_scene_release(s);
+    }
+    snprintf(expected, sizeof expected,
+             "imported mesh is not closed (edge (0, 0.0999994, 0)-(0.0999994, 0, 0) is "
+             "used by 1 face)%s",
+             left_out);
+    sc_scene *s = load_with(model_path, "import(\"open01.stl\");", 1);
+    assert_int_equal(sc_scene_warning_count(s), 1);
+    assert_string_equal(sc_scene_warning(s, 0)->message, expected);
+    sc_scene_release(s);
+}
+
+/* A builder of the other mode (the closed check, exact in --faithful,
+ * then the faithful leaf) gets the faces merged once: the same faces, and
+ * the points of its mode, equal to those a merge in that mode makes. */
+static void test_import_modes_share(void **state)
+{
+    (void)state;
+    static const char tet[] = "OFF\n4 4 0\n0 0 0\n0.1 0 0\n0 0.1 0\n0 0 0.1\n"
+                              "3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n";
+    write_file("tet01.off", tet, strlen(tet));
+    char model[600];
+    snprintf(model, sizeof model, "%s/m.csg", work());
+    model_import import = {"tet01.off", {model, 1, 8}, MODEL_MESH_OFF, NULL};
+    for (int first_mode = 0; first_mode < 2; first_mode++) {
+        csg_builder *csg = csg_builder_new();
+        assert_non_null(csg);
+        sc_error e, note;
+        memset(&e, 0, sizeof e);
+        memset(&note, 0, sizeof note);
+        build_imports imports;
+        memset(&imports, 0, sizeof imports);
+        build_ctx c[2];
+        for (int mode = 0; mode < 2; mode++)
+            c[mode] = (build_ctx){.file = model,
+                                  .csg = csg,
+                                  .error = &e,
+                                  .faithful = mode,
+                                  .note = &note,
+                                  .imports = &imports};
+        build_mesh_faces f[2], own;
+        const char *empty = NULL;
+        assert_int_equal(
+            build_import_faces(&c[first_mode], &import, &empty, &f[first_mode]), SC_OK);
+        assert_int_equal(
+            build_import_faces(&c[!first_mode], &import, &empty, &f[!first_mode]), SC_OK);
+        assert_null(empty);
+        assert_int_equal(imports.merges, 1);
+        assert_ptr_equal(f[0].indices, f[1].indices);
+        assert_ptr_equal(f[0].face_start, f[1].face_start);
+        assert_int_equal(f[0].point_count, 4);
+        /* the file's 0.1, and OpenSCAD's point of its cell, as float */
+        double tenth = (double)(float)(104857.0 / 1048576.0);
+        for (uint32_t u = 0; u < 4; u++) {
+            uint32_t name = f[0].names[u];
+            assert_int_equal(f[1].names[u], name);
+            assert_true(f[0].points[u].x == (name == 1 ? 0.1 : 0));
+            assert_true(f[1].points[u].x == (name == 1 ? tenth : 0));
+        }
+        for (int mode = 0; mode < 2; mode++) {
+            build_ctx alone = c[mode];
+            alone.imports = NULL;
+            assert_int_equal(build_import_faces(&alone, &import, &empty, &own), SC_OK);
+            assert_int_equal(own.point_count, f[mode].point_count);
+            assert_memory_equal(own.points, f[mode].points,
+                                own.point_count * sizeof *own.points);
+            assert_memory_equal(own.indices, f[mode].indices,
+                                own.face_start[own.face_count] * sizeof *own.indices);
+            build_mesh_faces_free(&own);
+        }
+        build_mesh_faces_free(&f[0]);
+        build_mesh_faces_free(&f[1]);
+        build_imports_free(&imports);
+        csg_builder_free(csg);
+    }
+}
+
 /* linear_extrude in faithful mode of square, circle and polygon children:
  * holes by nesting, circles as OpenSCAD's polygons, unions of children, 2D
  * transforms, centring; a scale builds OpenSCAD's slices, a 2D difference
@@ -943,9 +1274,10 @@ static void test_linear_extrude(void **state)
     sc_scene_release(s);
 }
 
-/* Loads text with sc_load_options.max_triangles at limit: the status. */
-static sc_status load_budget(const char *text, size_t limit, int faithful, char *message,
-                             size_t size)
+/* Loads text as the file name with sc_load_options.max_triangles at
+ * limit: the status, and the error in message (empty on success). */
+static sc_status load_budget_at(const char *name, const char *text, size_t limit,
+                                int faithful, char *message, size_t size)
 {
     sc_scene *s = NULL;
     sc_error e;
@@ -953,7 +1285,7 @@ static sc_status load_budget(const char *text, size_t limit, int faithful, char 
     sc_load_options_init(&o);
     o.faithful = faithful;
     o.max_triangles = limit;
-    sc_status st = sc_scene_load_string("m.csg", text, strlen(text), &o, &s, &e);
+    sc_status st = sc_scene_load_string(name, text, strlen(text), &o, &s, &e);
     if (st == SC_OK) {
         assert_non_null(s);
         message[0] = 0;
@@ -963,6 +1295,12 @@ static sc_status load_budget(const char *text, size_t limit, int faithful, char 
     }
     sc_scene_release(s);
     return st;
+}
+
+static sc_status load_budget(const char *text, size_t limit, int faithful, char *message,
+                             size_t size)
+{
+    return load_budget_at("m.csg", text, limit, faithful, message, size);
 }
 
 /* A load's meshes share one budget of triangles (sc_load_options
@@ -1015,6 +1353,65 @@ static void test_triangle_budget(void **state)
              "limit of %zu in one model)",
              notch, 2 * notch - 1);
     assert_string_equal(message, expected);
+}
+
+/* An import's triangles are charged to the budget once per import
+ * statement, however many builders take them (a hull's or minkowski's
+ * check that the mesh is closed, its corners, CGAL's faces of a summand
+ * that is not convex, resize's measure, the objects of an AMF file joined
+ * into one mesh): a model of T imported triangles loads with a budget of
+ * T, and with T - 1 fails at the import with the message it always had.
+ * Two statements importing one file are two meshes, charged twice, as two
+ * polyhedra are. */
+static void test_import_budget_once(void **state)
+{
+    (void)state;
+    char dir[512], model[600];
+    snprintf(dir, sizeof dir, "%s", work());
+    snprintf(model, sizeof model, "%s/m.csg", dir);
+    write_notch_files();
+    write_object_files();
+    static const struct {
+        const char *text;
+        size_t triangles, more; /* in all; what the mesh that fails asks for */
+        int column;             /* of the file name, where the import fails */
+        const char *what;       /* the mesh named in the error */
+    } cases[] = {
+        /* checked as a part of a union, then its corners taken */
+        {"hull() { group() { import(\"notch.stl\"); cube(1); } }", 14, 14, 27,
+         "imported mesh"},
+        /* checked as a summand, then summed */
+        {"minkowski() { import(\"tet.off\"); cube(1); }", 4, 4, 22, "imported mesh"},
+        /* a summand that is not convex: also CGAL's check and faces */
+        {"minkowski() { import(\"notch.stl\"); cube(1); }", 14, 14, 22, "imported mesh"},
+        /* measured, then built */
+        {"resize(newsize = [4, 4, 4]) import(\"notch.stl\");", 14, 14, 36,
+         "imported mesh"},
+        /* two objects joined into one mesh for the hull: the second passes */
+        {"hull() { import(\"two.amf\"); }", 8, 4, 17, "object 2 of the imported file"},
+        /* two statements of one file: each its own mesh */
+        {"hull() { import(\"tet.off\"); import(\"tet.off\"); }", 8, 4, 36,
+         "imported mesh"},
+    };
+    char message[1024], expected[1400];
+    for (int faithful = 0; faithful < 2; faithful++) {
+        for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+            size_t t = cases[i].triangles;
+            sc_status st = load_budget_at(model, cases[i].text, t, faithful, message,
+                                          sizeof message);
+            if (st != SC_OK)
+                fail_msg("%s (faithful %d, budget %zu): %s", cases[i].text, faithful, t,
+                         message);
+            assert_int_equal(load_budget_at(model, cases[i].text, t - 1, faithful,
+                                            message, sizeof message),
+                             SC_ERR_LIMIT);
+            snprintf(expected, sizeof expected,
+                     "%s:1:%d: error: %s: too many mesh triangles (%zu more, past the "
+                     "limit of %zu in one model)",
+                     model, cases[i].column, cases[i].what, cases[i].more, t - 1);
+            assert_string_equal(message, expected);
+        }
+    }
 }
 
 /* Malformed polyhedron points and faces (how the model reads them:
@@ -1116,8 +1513,13 @@ int main(void)
         cmocka_unit_test(test_builder_open_mesh),
         cmocka_unit_test(test_import),
         cmocka_unit_test(test_import_read_once),
+        cmocka_unit_test(test_import_faces_lent),
+        cmocka_unit_test(test_import_let_go),
+        cmocka_unit_test(test_import_merged_once),
+        cmocka_unit_test(test_import_modes_share),
         cmocka_unit_test(test_linear_extrude),
         cmocka_unit_test(test_triangle_budget),
+        cmocka_unit_test(test_import_budget_once),
         cmocka_unit_test(test_polyhedron_malformed),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

@@ -27,14 +27,18 @@ typedef struct build_notes {
 
 /* The files a build's imports read, by import (its node, or the copy a
  * resize's measure walks: build_mesh.c): each file read and parsed once,
- * and a file of one object merged once in each mode, however many
+ * and each of its objects merged once for both modes, however many
  * builders take the import (a hull's or minkowski's check that it is
  * closed, then its leaf, then CGAL's faces; resize's measure, then the
- * leaf). The leaf built where an import stands lets its file go. Zeroed to
- * start; freed with build_imports_free (build_mesh.h). */
+ * leaf), and its triangles charged to the budget once (triangles_left).
+ * The leaf built where an import stands lets its file go, and so does a
+ * hull, minkowski or CGAL solid for the imports below it, once built
+ * (build_imports_done). Zeroed to start; freed with build_imports_free
+ * (build_mesh.h). */
 typedef struct build_imports {
     struct build_import_file *items; /* open addressing on the import's address */
     size_t count, cap;               /* cap is 0 or a power of two */
+    size_t merges; /* meshes merged so far (each object of a file is one) */
 } build_imports;
 
 typedef struct build_ctx {
@@ -52,7 +56,9 @@ typedef struct build_ctx {
     int strict;
     /* the triangles the load's meshes may still have, of max_triangles
      * (sc_load_options.max_triangles), shared by every context of a load;
-     * NULL: no budget */
+     * NULL: no budget. An import's are charged once per import statement,
+     * by the first builder that takes them (imports records it), a
+     * polyhedron's at most once, by its leaf (a hull takes its points) */
     size_t *triangles_left;
     size_t max_triangles;
     /* the load's files read so far, shared by every context of a load;

@@ -1210,6 +1210,7 @@ sc_status build_nef_triangles(const build_ctx *c, const model_node *n, const cha
     sc_status st = nef_ready(&w, n);
     if (st == SC_OK)
         st = nef_node(&w, n, &id, 0, &solid);
+    build_imports_done(c, n);
     if (st == SC_OK && solid) {
         nef_parts got = {NULL, NULL, 0};
         char why[512] = "";
@@ -1313,6 +1314,7 @@ sc_status build_hull(const build_ctx *c, const model_node *n, int emit,
     affine id = affine_identity();
     sc_status st = collect(&w, n, &id, 0, &parts);
     nef_plugin_close(&nef);
+    build_imports_done(c, n);
     pointset all = {NULL, 0, 0};
     for (uint32_t i = 0; i < parts.count && st == SC_OK; i++) {
         for (uint32_t k = 0; k < parts.items[i].count && st == SC_OK; k++) {
@@ -1342,6 +1344,7 @@ sc_status build_minkowski(const build_ctx *c, const model_node *n, int emit,
     int not_closed;
     sc_status st = minkowski_parts(&w, n, &id, 0, &parts, &not_closed);
     nef_plugin_close(&nef);
+    build_imports_done(c, n);
     int flat = 0;
     for (uint32_t i = 0; i < parts.count && st == SC_OK && emit; i++)
         st = emit_hull(c, n, &parts.items[i], out, &flat);

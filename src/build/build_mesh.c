@@ -1301,6 +1301,10 @@ static grid_slot *grid_find(const grid *g, const int64_t k[3])
 
 void build_mesh_faces_free(build_mesh_faces *f)
 {
+    if (f->lent) { /* the build's files own them */
+        memset(f, 0, sizeof *f);
+        return;
+    }
     free(f->points);
     free(f->names);
     free(f->indices);
@@ -1309,21 +1313,34 @@ void build_mesh_faces_free(build_mesh_faces *f)
     memset(f, 0, sizeof *f);
 }
 
+/* Where the merged point of a point p goes: p itself in exact mode, and
+ * in faithful mode (snap_float) OpenSCAD's snapped point, its cell's
+ * corner as float; a point past 2^40 (a million million), whose cell does
+ * not fit an integer comfortably, stays as it is. k gets the cell; 0 is
+ * returned for a point that is not gridded. */
+static int grid_place(vec3 p, int snap_float, int64_t k[3], vec3 *q)
+{
+    const double cell = 1.0 / 1048576.0; /* OpenSCAD's GRID_FINE, 2^-20 */
+    *q = p;
+    if (!(fabs(p.x) < 0x1p40 && fabs(p.y) < 0x1p40 && fabs(p.z) < 0x1p40))
+        return 0;
+    k[0] = (int64_t)(p.x / cell);
+    k[1] = (int64_t)(p.y / cell);
+    k[2] = (int64_t)(p.z / cell);
+    if (snap_float)
+        *q = v3((float)((double)k[0] * cell), (float)((double)k[1] * cell),
+                (float)((double)k[2] * cell));
+    return 1;
+}
+
 /* The merged point of point i (grid above): its index in f. */
 static int grid_point(grid *g, build_mesh_faces *f, const vec3 *points, uint32_t i,
                       int snap_float, uint32_t *merged)
 {
-    const double cell = 1.0 / 1048576.0; /* OpenSCAD's GRID_FINE, 2^-20 */
-    vec3 p = points[i];
     int64_t k[3];
+    vec3 q;
     grid_slot *slot = NULL;
-    /* Past 2^40 (a million million) the cells do not fit an integer
-     * comfortably: such a point stays as it is. */
-    int gridded = fabs(p.x) < 0x1p40 && fabs(p.y) < 0x1p40 && fabs(p.z) < 0x1p40;
-    if (gridded) {
-        k[0] = (int64_t)(p.x / cell);
-        k[1] = (int64_t)(p.y / cell);
-        k[2] = (int64_t)(p.z / cell);
+    if (grid_place(points[i], snap_float, k, &q)) {
         slot = grid_find(g, k);
         if (slot->point != UINT32_MAX) {
             *merged = slot->point;
@@ -1352,10 +1369,6 @@ static int grid_point(grid *g, build_mesh_faces *f, const vec3 *points, uint32_t
         }
     }
     uint32_t u = f->point_count++;
-    vec3 q = p;
-    if (gridded && snap_float) /* OpenSCAD's snapped point, as float */
-        q = v3((float)((double)k[0] * cell), (float)((double)k[1] * cell),
-               (float)((double)k[2] * cell));
     f->points[u] = q;
     f->names[u] = i;
     if (slot) {
@@ -1945,29 +1958,37 @@ static sc_status push_part(const build_ctx *c, const sc_location *loc, build_pri
     return SC_OK;
 }
 
-/* A copy of f in *out (malloc'd arrays); 0 when memory runs out. */
-static int faces_copy(const build_mesh_faces *f, build_mesh_faces *out)
+/* An object of a file an import read, merged once for every mode: its
+ * faces as build_mesh_merge made them in the first mode asked for (points
+ * NULL), and its points as each mode places them, made from the file's
+ * points by names (grid_place) when a builder of the other mode asks:
+ * which points merge does not depend on the mode, only where they go. */
+typedef struct merged_object {
+    build_mesh_faces faces; /* face_start NULL until merged */
+    vec3 *points[2];        /* exact, faithful; NULL until asked for */
+} merged_object;
+
+static void merged_free(merged_object *m)
 {
-    memset(out, 0, sizeof *out);
-    uint32_t total = f->face_start[f->face_count];
-    size_t points = f->point_count ? f->point_count : 1;
-    out->points = malloc(points * sizeof *out->points);
-    out->names = f->names ? malloc(points * sizeof *out->names) : NULL;
-    out->indices = malloc((size_t)(total ? total : 1) * sizeof *out->indices);
-    out->face_start = malloc(((size_t)f->face_count + 1) * sizeof *out->face_start);
-    if (!out->points || (f->names && !out->names) || !out->indices || !out->face_start) {
-        build_mesh_faces_free(out);
-        return 0;
+    build_mesh_faces_free(&m->faces);
+    free(m->points[0]);
+    free(m->points[1]);
+    memset(m, 0, sizeof *m);
+}
+
+/* The merged points of f in a mode (snap_float as grid_point's): each
+ * from the file's point it was merged from (f->names). malloc'd; NULL
+ * when memory runs out. */
+static vec3 *merged_points(const vec3 *points, const build_mesh_faces *f, int snap_float)
+{
+    vec3 *out = malloc((size_t)(f->point_count ? f->point_count : 1) * sizeof *out);
+    if (!out)
+        return NULL;
+    for (uint32_t u = 0; u < f->point_count; u++) {
+        int64_t k[3];
+        grid_place(points[f->names[u]], snap_float, k, &out[u]);
     }
-    memcpy(out->points, f->points, (size_t)f->point_count * sizeof *out->points);
-    if (f->names)
-        memcpy(out->names, f->names, (size_t)f->point_count * sizeof *out->names);
-    memcpy(out->indices, f->indices, (size_t)total * sizeof *out->indices);
-    memcpy(out->face_start, f->face_start,
-           ((size_t)f->face_count + 1) * sizeof *out->face_start);
-    out->point_count = f->point_count;
-    out->face_count = f->face_count;
-    return 1;
+    return out;
 }
 
 /* How import_solid treats an object that is not closed, beyond what its
@@ -1994,36 +2015,49 @@ enum {
  * build_mesh_solid) appended to out; what names it in messages. With
  * several objects (note set), the warning each leaves in c->note goes to
  * c->notes at once, so that every object's is kept, in file order. how:
- * the IMPORT_ flags. merged (or NULL): where the file's faces are kept
- * merged in c's mode (build_imports): taken from there when they are, put
- * there when not. */
+ * the IMPORT_ flags. merged (or NULL): where the object's faces are kept
+ * merged (build_imports): taken from there when they are, with the
+ * points of c's mode, put there when not, and lent from there to *faces. */
 static sc_status import_solid(const build_ctx *c, const sc_location *loc,
                               const char *what, int strict, int several, unsigned how,
                               const vec3 *points, uint32_t point_count,
                               const uint32_t *indices, const uint32_t *face_start,
                               uint32_t face_count, build_prims *out,
                               const char **left_out, build_mesh_faces *faces,
-                              build_mesh_faces *merged)
+                              merged_object *merged)
 {
     int joined = (how & (several ? IMPORT_JOINED : IMPORT_ALONE)) != 0;
     build_ctx oc = *c;
     sc_error note = {SC_OK, "", 0, 0, ""}, unsaid = {SC_OK, "", 0, 0, ""};
     if ((several && c->note) || joined)
         oc.note = &note;
-    build_mesh_faces f;
+    build_mesh_faces f, kept; /* merged here; or lent from merged */
     memset(&f, 0, sizeof f);
-    const build_mesh_faces *use = merged && merged->face_start ? merged : &f;
+    memset(&kept, 0, sizeof kept);
+    const build_mesh_faces *use = &f;
     const char *empty = NULL;
     prim p;
     sc_status st = SC_OK;
-    if (use == &f) {
+    int mode = c->faithful != 0;
+    if (!merged || !merged->faces.face_start) {
         st = build_mesh_merge(&oc, loc, 0, points, point_count, indices, face_start,
                               face_count, &f);
-        if (st == SC_OK && merged) { /* kept for the import's next builder */
-            *merged = f;
+        if (st == SC_OK && c->imports)
+            c->imports->merges++;
+        if (st == SC_OK && merged) { /* kept for the import's next builders */
+            merged->points[mode] = f.points;
+            merged->faces = f;
+            merged->faces.points = NULL;
             memset(&f, 0, sizeof f);
-            use = merged;
         }
+    }
+    if (st == SC_OK && merged) {
+        if (!merged->points[mode] &&
+            !(merged->points[mode] = merged_points(points, &merged->faces, mode)))
+            st = err_nomem(c->error, loc);
+        kept = merged->faces;
+        kept.points = merged->points[mode];
+        use = &kept;
     }
     build_ctx sc = oc; /* the check only: the points merge as the mode says */
     sc.faithful |= joined;
@@ -2034,11 +2068,10 @@ static sc_status import_solid(const build_ctx *c, const sc_location *loc,
     }
     if (st == SC_OK)
         st = build_mesh_solid(&sc, loc, what, 0, strict, use, &p, &empty);
-    if (st == SC_OK && faces && !empty && use == &f) {
-        *faces = f;
+    if (st == SC_OK && faces && !empty) {
+        *faces = *use;
+        faces->lent = use == &kept;
         memset(&f, 0, sizeof f);
-    } else if (st == SC_OK && faces && !empty && !faces_copy(use, faces)) {
-        st = err_nomem(c->error, loc);
     }
     build_mesh_faces_free(&f);
     /* an object alone left out (joined) counts as an import left out: its
@@ -2057,12 +2090,13 @@ static sc_status import_solid(const build_ctx *c, const sc_location *loc,
 
 /* The objects of an AMF or 3MF file a, each its own solid (OpenSCAD
  * unites them with CGAL), an object without triangles left out as
- * OpenSCAD's empty PolySet. One object is built as an STL is. how and
- * merged (for one object): import_solid's. */
+ * OpenSCAD's empty PolySet. One object is built as an STL is. how:
+ * import_solid's; merged (or NULL): import_solid's, for each object of
+ * a (a->object_count of them, at least one). */
 static sc_status import_objects(const build_ctx *c, const model_import *import,
                                 int strict, unsigned how, const amf_mesh *a,
                                 build_prims *out, const char **empty,
-                                build_mesh_faces *faces, build_mesh_faces *merged)
+                                build_mesh_faces *faces, merged_object *merged)
 {
     const sc_location *loc = &import->file_loc;
     uint32_t with_faces = 0;
@@ -2092,7 +2126,7 @@ static sc_status import_objects(const build_ctx *c, const model_import *import,
             snprintf(what, sizeof what, "object %u of the imported file", o + 1);
             st = import_solid(c, loc, what, strict, 1, how, a->points + first,
                               a->object_points[o + 1] - first, indices, start, count, out,
-                              empty, NULL, NULL);
+                              empty, NULL, merged ? &merged[o] : NULL);
         }
         free(indices);
         free(start);
@@ -2118,22 +2152,29 @@ sc_status build_import_unsupported(const build_ctx *c, const sc_location *loc,
 
 /* ---- the files read, by import (build_imports) ---- */
 
-/* A file an import read: parsed, and for one object its faces merged as
- * each mode merges them. */
+/* A file an import read: parsed, and its objects merged. */
 struct build_import_file {
     const model_import *import; /* the key (same_import); NULL in a free slot */
     int read;                   /* m or a holds the file */
     mesh_file m;                /* STL, OFF */
     amf_mesh a;                 /* AMF, 3MF */
-    build_mesh_faces merged[2]; /* exact, faithful; face_start NULL until merged */
+    merged_object *merged;      /* one per object (at least one); NULL until asked for */
+    uint32_t merged_count;
+    /* the budget (build_ctx.triangles_left) the import's triangles were
+     * charged to, or NULL: kept when the file is let go, so that a later
+     * reader of the import does not charge them again */
+    const size_t *charged;
 };
 
 static void import_file_free(struct build_import_file *f)
 {
     mesh_file_free(&f->m);
     amf_mesh_free(&f->a);
-    build_mesh_faces_free(&f->merged[0]);
-    build_mesh_faces_free(&f->merged[1]);
+    for (uint32_t i = 0; i < f->merged_count; i++)
+        merged_free(&f->merged[i]);
+    free(f->merged);
+    f->merged = NULL;
+    f->merged_count = 0;
     memset(&f->m, 0, sizeof f->m);
     memset(&f->a, 0, sizeof f->a);
     f->read = 0;
@@ -2146,6 +2187,14 @@ void build_imports_free(build_imports *imports)
             import_file_free(&imports->items[i]);
     free(imports->items);
     memset(imports, 0, sizeof *imports);
+}
+
+size_t build_imports_held(const build_imports *imports)
+{
+    size_t held = 0;
+    for (size_t i = 0; i < imports->cap; i++)
+        held += imports->items[i].import && imports->items[i].read;
+    return held;
 }
 
 /* Whether a and b are one import of the model file: the same node, or the
@@ -2210,6 +2259,33 @@ static struct build_import_file *imports_put(build_imports *imports,
     imports->items[i].import = import;
     imports->count++;
     return &imports->items[i];
+}
+
+/* Lets go of the files of the imports among n and its siblings, and below
+ * them down to the walks' depth (build_hull.h); deeper files stay until
+ * the build ends. The nodes are lowered in the points context (model.h),
+ * where an import holds its import; the extrusions' children are in the
+ * 2D context, where an import is a drawing, not a mesh, and are passed by. */
+static void imports_let_go(build_imports *imports, const model_node *n, int depth)
+{
+    for (; n; n = n->next) {
+        if ((n->modifiers & (MODEL_MOD_DISABLE | MODEL_MOD_BACKGROUND)) ||
+            n->kind == MODEL_LINEAR_EXTRUDE || n->kind == MODEL_ROTATE_EXTRUDE)
+            continue;
+        if (n->kind == MODEL_IMPORT && !n->pending && n->u.import) {
+            struct build_import_file *file = imports_find(imports, n->u.import);
+            if (file && file->read)
+                import_file_free(file);
+        } else if (depth < BUILD_HULL_MAX_DEPTH) {
+            imports_let_go(imports, n->first_child, depth + 1);
+        }
+    }
+}
+
+void build_imports_done(const build_ctx *c, const model_node *n)
+{
+    if (c->imports && c->imports->count)
+        imports_let_go(c->imports, n->first_child, 1);
 }
 
 /* Reads and parses import's file into *file (file->read set); or, as
@@ -2297,7 +2373,11 @@ static sc_status import_read(const build_ctx *c, const model_import *import, int
  * how: import_solid's. The file is read once per build: taken from
  * c->imports where a builder before read it, else read and kept there;
  * last (the leaf built where the import stands, which no builder takes
- * after it), it is let go from there after use. */
+ * after it), it is let go from there after use; so faces are asked for
+ * only without last, as they may be lent from the file kept (import_solid).
+ * Its triangles are charged to c's budget once per import statement, by
+ * the first builder that takes them (build_ctx.h); the builders after it
+ * take them free. */
 static sc_status import_parts(const build_ctx *c, const model_import *import, int strict,
                               unsigned how, build_prims *out, const char **empty,
                               build_mesh_faces *faces, int last)
@@ -2330,15 +2410,35 @@ static sc_status import_parts(const build_ctx *c, const model_import *import, in
             file = kept;
         }
     }
-    build_mesh_faces *merged = file == &here ? NULL : &file->merged[c->faithful != 0];
-    if (objects ? file->a.face_count == 0 : file->m.face_count == 0)
+    merged_object *merged = NULL;
+    if (file != &here && !file->merged) {
+        uint32_t count = objects && file->a.object_count > 1 ? file->a.object_count : 1;
+        file->merged = calloc(count, sizeof *file->merged);
+        file->merged_count = file->merged ? count : 0;
+        if (!file->merged)
+            st = err_nomem(c->error, &loc);
+    }
+    if (file != &here)
+        merged = file->merged;
+    /* charged already: the entry stays in the table after its file is let
+     * go, and the budget is the load's (a preview's parts have their own) */
+    struct build_import_file *entry = imports_find(c->imports, import);
+    build_ctx bc = *c;
+    if (entry && c->triangles_left && entry->charged == c->triangles_left)
+        bc.triangles_left = NULL;
+    if (st != SC_OK)
+        ;
+    else if (objects ? file->a.face_count == 0 : file->m.face_count == 0)
         *empty = "import without faces is empty";
     else if (objects)
-        st = import_objects(c, import, strict, how, &file->a, out, empty, faces, merged);
+        st =
+            import_objects(&bc, import, strict, how, &file->a, out, empty, faces, merged);
     else
-        st = import_solid(c, &loc, "imported mesh", strict, 0, how, file->m.points,
+        st = import_solid(&bc, &loc, "imported mesh", strict, 0, how, file->m.points,
                           file->m.point_count, file->m.indices, file->m.face_start,
                           file->m.face_count, out, empty, faces, merged);
+    if (st == SC_OK && entry)
+        entry->charged = c->triangles_left;
     /* several objects, every one left out or without volume: their
      * warnings were given, and the import counts as left out, so that
      * its parent does not add that it is empty (build_notes) */
@@ -2359,7 +2459,9 @@ static sc_status import_parts(const build_ctx *c, const model_import *import, in
 /* The union of parts as one mesh leaf, for the builders that take an
  * import's triangles (hull's corners, projection's faces): each part
  * closed and turned outward (import_solid leaves out the others, IMPORT_JOINED),
- * so that winding numbers add up to the union. */
+ * so that winding numbers add up to the union. The parts' triangles were
+ * charged to the budget as the parts were built; their join is the same
+ * triangles, not charged again. */
 static sc_status join_parts(const build_ctx *c, const sc_location *loc,
                             const build_prims *parts, prim *out)
 {
@@ -2368,9 +2470,7 @@ static sc_status join_parts(const build_ctx *c, const sc_location *loc,
         tris += parts->items[i].u.mesh.mesh->tri_count;
     if (tris > UINT32_MAX / 3)
         return err_set(c->error, SC_ERR_LIMIT, loc, "imported mesh has too many faces");
-    sc_status st = build_charge_triangles(c, loc, "import", tris);
-    if (st != SC_OK)
-        return st;
+    sc_status st = SC_OK;
     vec3 *v = malloc(3 * tris * sizeof *v);
     uint32_t *index = malloc(3 * tris * sizeof *index);
     if (!v || !index) {

@@ -37,7 +37,9 @@ sc_status build_mesh_prim(const build_ctx *c, const sc_location *loc, const char
  * points. Without face_loops, face f is loop f; with it, face f is the loops
  * face_loops[f] .. face_loops[f + 1], an outline and its holes in one plane
  * (build_mesh_sound and build_mesh_solid take faces of one loop only). All
- * malloc'd, freed with build_mesh_faces_free. */
+ * malloc'd, freed with build_mesh_faces_free; or, lent, the arrays of an
+ * import's faces that the build's files (build_imports) hold, which
+ * build_mesh_faces_free leaves to them. */
 typedef struct build_mesh_faces {
     vec3 *points;
     uint32_t *names; /* NULL, or names[i]: the number in the file of merged point i */
@@ -46,6 +48,7 @@ typedef struct build_mesh_faces {
     uint32_t *face_start; /* loop starts: one more than the loops */
     uint32_t *face_loops; /* NULL, or face_count + 1 entries */
     uint32_t face_count;
+    int lent; /* the arrays belong to the build's files (build_import_faces) */
 } build_mesh_faces;
 
 /* Merges the points as OpenSCAD does before it checks a mesh: snapped to
@@ -110,6 +113,18 @@ struct build_prims; /* build_hull.h */
 /* Frees what imports holds (build_ctx.h) and zeroes it. */
 void build_imports_free(build_imports *imports);
 
+/* How many files imports holds (read, and not yet let go). */
+size_t build_imports_held(const build_imports *imports);
+
+/* The builder of n (a hull, a minkowski, the solid CGAL makes of a subtree)
+ * is done with the imports below it, the last of their readers: their
+ * files are let go from c->imports, which still knows their triangles
+ * were charged. The measure of a resize is not such a builder (its leaf
+ * comes after), and a subtree skipped ('*', '%') is not looked into, as
+ * the builders do not read it. A preview's part ('#') built afterwards
+ * reads its files again. */
+void build_imports_done(const build_ctx *c, const model_node *n);
+
 /* OpenSCAD 2021.01's message for a mesh it cannot take into CGAL. */
 extern const char build_openscad_not_closed[];
 
@@ -164,7 +179,10 @@ sc_status build_import_mesh(const build_ctx *c, const model_import *import, prim
  * overlap as the leaf's fans of a face that is not convex do), with the
  * leaf's warnings; *faces empty when *empty is set and for several
  * objects (each a leaf of triangles, build_import_parts); free with
- * build_mesh_faces_free. */
+ * build_mesh_faces_free. Where c->imports keeps the file, the faces are
+ * lent from there, not copied (faces->lent): read them before anything
+ * else reads an import or lets the files go (build_imports_free, the leaf
+ * built where the import stands). */
 sc_status build_import_faces(const build_ctx *c, const model_import *import,
                              const char **empty, build_mesh_faces *faces);
 
