@@ -961,6 +961,54 @@ static void test_import_faces_lent(void **state)
     }
 }
 
+/* A hull or minkowski model built alone through build_hull or
+ * build_minkowski, with a table of imports of its own (hull_run_start),
+ * then freed (hull_run_end). */
+typedef struct hull_run {
+    parse_tree *tree;
+    model *m;
+    csg_builder *csg;
+    build_imports imports;
+    build_notes notes;
+    build_resize_cache *cache;
+    build_prims out;
+    const char *empty;
+    sc_error e;
+} hull_run;
+
+static void hull_run_start(hull_run *r, const char *model_path, const char *text,
+                           int faithful)
+{
+    memset(r, 0, sizeof *r);
+    assert_int_equal(parse_text(model_path, text, strlen(text), &r->tree, &r->e), SC_OK);
+    assert_int_equal(model_lower(r->tree, &r->m, &r->e), SC_OK);
+    r->csg = csg_builder_new();
+    assert_non_null(r->csg);
+    build_ctx c = {.file = model_path,
+                   .csg = r->csg,
+                   .error = &r->e,
+                   .faithful = faithful,
+                   .notes = &r->notes,
+                   .imports = &r->imports};
+    const model_node *n = r->m->first;
+    sc_status st = n->kind == MODEL_HULL
+                       ? build_hull(&c, n, 1, &r->cache, &r->out, &r->empty)
+                       : build_minkowski(&c, n, 1, &r->cache, &r->out, &r->empty);
+    if (st != SC_OK)
+        fail_msg("%s: %s", text, r->e.message);
+}
+
+static void hull_run_end(hull_run *r)
+{
+    free(r->out.items);
+    free(r->notes.items);
+    build_resize_cache_free(r->cache);
+    build_imports_free(&r->imports);
+    csg_builder_free(r->csg);
+    model_free(r->m);
+    parse_tree_free(r->tree);
+}
+
 /* A hull, a minkowski or a boolean that CGAL evaluates is the last reader
  * of the imports below it: once it is built, the build's table lets their
  * files go (build_imports_held), the meshes built the same as before. */
@@ -992,48 +1040,18 @@ static void test_import_let_go(void **state)
     for (int faithful = 0; faithful < 2; faithful++) {
         for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
             const char *text = cases[i].text;
-            sc_error e;
-            memset(&e, 0, sizeof e);
-            parse_tree *tree = NULL;
-            assert_int_equal(parse_text(model_path, text, strlen(text), &tree, &e),
-                             SC_OK);
-            model *m = NULL;
-            assert_int_equal(model_lower(tree, &m, &e), SC_OK);
-            csg_builder *csg = csg_builder_new();
-            assert_non_null(csg);
-            build_imports imports;
-            memset(&imports, 0, sizeof imports);
-            build_notes notes = {NULL, 0, 0, 0};
-            build_resize_cache *cache = NULL;
-            build_ctx c = {.file = model_path,
-                           .csg = csg,
-                           .error = &e,
-                           .faithful = faithful,
-                           .notes = &notes,
-                           .imports = &imports};
-            build_prims out;
-            const char *empty = NULL;
-            sc_status st = m->first->kind == MODEL_HULL
-                               ? build_hull(&c, m->first, 1, &cache, &out, &empty)
-                               : build_minkowski(&c, m->first, 1, &cache, &out, &empty);
-            if (st != SC_OK)
-                fail_msg("%s: %s", text, e.message);
-            assert_null(empty);
-            assert_int_equal(notes.count, 0);
+            hull_run r;
+            hull_run_start(&r, model_path, text, faithful);
+            assert_null(r.empty);
+            assert_int_equal(r.notes.count, 0);
             if (cases[i].leaves)
-                assert_int_equal(out.count, cases[i].leaves);
+                assert_int_equal(r.out.count, cases[i].leaves);
             else
-                assert_true(out.count > 1);
-            if (build_imports_held(&imports) != 0)
+                assert_true(r.out.count > 1);
+            if (build_imports_held(&r.imports) != 0)
                 fail_msg("%s (faithful %d): %zu files held after the build", text,
-                         faithful, build_imports_held(&imports));
-            free(out.items);
-            free(notes.items);
-            build_resize_cache_free(cache);
-            build_imports_free(&imports);
-            csg_builder_free(csg);
-            model_free(m);
-            parse_tree_free(tree);
+                         faithful, build_imports_held(&r.imports));
+            hull_run_end(&r);
         }
     }
 }
@@ -1072,42 +1090,12 @@ static void test_import_merged_once(void **state)
     for (int faithful = 0; faithful < 2; faithful++) {
         for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
             const char *text = cases[i].text;
-            sc_error e;
-            memset(&e, 0, sizeof e);
-            parse_tree *tree = NULL;
-            assert_int_equal(parse_text(model_path, text, strlen(text), &tree, &e),
-                             SC_OK);
-            model *m = NULL;
-            assert_int_equal(model_lower(tree, &m, &e), SC_OK);
-            csg_builder *csg = csg_builder_new();
-            assert_non_null(csg);
-            build_imports imports;
-            memset(&imports, 0, sizeof imports);
-            build_notes notes = {NULL, 0, 0, 0};
-            build_resize_cache *cache = NULL;
-            build_ctx c = {.file = model_path,
-                           .csg = csg,
-                           .error = &e,
-                           .faithful = faithful,
-                           .notes = &notes,
-                           .imports = &imports};
-            build_prims out;
-            const char *empty = NULL;
-            sc_status st = m->first->kind == MODEL_HULL
-                               ? build_hull(&c, m->first, 1, &cache, &out, &empty)
-                               : build_minkowski(&c, m->first, 1, &cache, &out, &empty);
-            if (st != SC_OK)
-                fail_msg("%s: %s", text, e.message);
-            if (imports.merges != cases[i].merges)
+            hull_run r;
+            hull_run_start(&r, model_path, text, faithful);
+            if (r.imports.merges != cases[i].merges)
                 fail_msg("%s (faithful %d): %zu merges, not %zu", text, faithful,
-                         imports.merges, cases[i].merges);
-            free(out.items);
-            free(notes.items);
-            build_resize_cache_free(cache);
-            build_imports_free(&imports);
-            csg_builder_free(csg);
-            model_free(m);
-            parse_tree_free(tree);
+                         r.imports.merges, cases[i].merges);
+            hull_run_end(&r);
         }
     }
     /* the check's edge in the file's coordinates, the leaf's in OpenSCAD's */
