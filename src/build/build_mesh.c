@@ -1695,12 +1695,12 @@ static uint64_t coordinate_bits(double v)
     return u;
 }
 
+/* A point's hash: the grid's hash (grid_hash) of its coordinates' bits. */
 static size_t point_hash(vec3 p)
 {
-    uint64_t h = coordinate_bits(p.x) * 0x9e3779b97f4a7c15u;
-    h ^= coordinate_bits(p.y) * 0xc2b2ae3d27d4eb4fu + (h << 6) + (h >> 2);
-    h ^= coordinate_bits(p.z) * 0x165667b19e3779f9u + (h << 6) + (h >> 2);
-    return (size_t)(h ^ (h >> 29));
+    const int64_t k[3] = {(int64_t)coordinate_bits(p.x), (int64_t)coordinate_bits(p.y),
+                          (int64_t)coordinate_bits(p.z)};
+    return grid_hash(k);
 }
 
 /* STL corners 3i, 3i + 1, 3i + 2 become triangle i; equal corners (==, so

@@ -153,9 +153,10 @@ uint32_t csg_builder_leaf(csg_builder *b, const prim *p, const affine *to_world,
     memcpy(l->color, color, sizeof l->color);
     l->object_id = b->leaf_count;
     l->loc = loc;
-    csg_node n = {CSG_LEAF, b->leaf_count, 0,
-                  0,        CSG_NO_BVH,    world_box(to_world, prim_bounds(p)),
-                  0};
+    csg_node n = {.op = CSG_LEAF,
+                  .leaf = b->leaf_count,
+                  .bvh = CSG_NO_BVH,
+                  .bounds = world_box(to_world, prim_bounds(p))};
     uint32_t id = add_node(b, &n);
     if (id != CSG_EMPTY)
         b->leaf_count++;
