@@ -585,11 +585,8 @@ static sc_status build_import_leaf(builder *b, const model_node *n, const frame 
 static sc_status build_twod_ignored(builder *b, const model_node *n, const frame *state)
 {
     build_ctx c = context(b, state->warns, NULL);
-    twod_region r;
-    twod_init(&r);
-    sc_status st = build_twod_main(&c, n, &r);
-    int empty = r.contour_count == 0;
-    twod_free(&r);
+    int empty;
+    sc_status st = build_twod_check(&c, n, &empty);
     /* a '%' child is no operand of its parent's, which says nothing of it */
     if (st != SC_OK || !state->warns ||
         ((n->modifiers & MODEL_MOD_BACKGROUND) && n != b->part))
@@ -881,10 +878,7 @@ static sc_status visit_leaf(builder *b, const model_node *n, const frame *f)
          * so neither 2D nor ignored; its children still give their
          * warnings */
         build_ctx c = context(b, f->emit, NULL);
-        twod_region r;
-        twod_init(&r);
-        st = build_twod_main(&c, n, &r);
-        twod_free(&r);
+        st = build_twod_check(&c, n, NULL);
         break;
     }
     default: /* the 2D shapes, taken before */

@@ -534,12 +534,10 @@ static int is_2d(const model_node *n)
  * NULL and *mixing is) becomes n when n is not empty. */
 static sc_status check_2d(const walk *w, const model_node *n, const model_node **mixing)
 {
-    twod_region r;
-    twod_init(&r);
-    sc_status st = build_twod_main(w->c, n, &r);
-    if (mixing && !*mixing && r.contour_count)
+    int empty;
+    sc_status st = build_twod_check(w->c, n, &empty);
+    if (mixing && !*mixing && !empty)
         *mixing = n;
-    twod_free(&r);
     return st;
 }
 

@@ -98,21 +98,6 @@ static int flat(const model_node *n)
     return build_dim(n, 0) == 2 && (n->kind != MODEL_PROJECTION || build_projects(n));
 }
 
-/* The 2D node n checked through the 2D engine for its warnings and errors
- * (a polygon's point it cannot convert, a 3D child of a 2D group), which
- * OpenSCAD gives as it evaluates the child it then leaves out; *empty
- * tells whether its region is empty, which decides whether its parent
- * mixes 2D and 3D (ignored_2d). */
-static sc_status check_flat(const build_ctx *c, const model_node *n, int *empty)
-{
-    twod_region r;
-    twod_init(&r);
-    sc_status st = build_twod_main(c, n, &r);
-    *empty = r.contour_count == 0;
-    twod_free(&r);
-    return st;
-}
-
 /* Triangles, 3 corners each. */
 typedef struct soup {
     vec3 *v;
@@ -381,7 +366,7 @@ static sc_status hull_points(pwalk *w, const model_node *parent, const affine *m
             /* checked, then left out (ignored_2d); a projection that is not
              * flat is no geometry */
             int empty;
-            st = check_flat(c, n, &empty);
+            st = build_twod_check(c, n, &empty);
             if (!mixing && !empty && flat(n))
                 mixing = n;
         } else if (kind == MODEL_UNION || kind == MODEL_COLOR || kind == MODEL_MATERIAL) {
@@ -768,7 +753,7 @@ static int skipped(const model_node *n)
 }
 
 /* The children of n, the projection itself or a 3D operation in it,
- * walked into out. Its 2D children are checked (check_flat) and left out,
+ * walked into out. Its 2D children are checked (build_twod_check) and left out,
  * with OpenSCAD 2021.01's warnings once all are walked: a 3D operation's
  * (ignored_2d); none from projection(cut = false), which passes over a 2D
  * child; from projection(cut = true), which unites its children as a 3D
@@ -784,7 +769,7 @@ static sc_status walk_children(pwalk *w, const model_node *n, const affine *m, i
         if (flat(k) || k->kind == MODEL_PROJECTION) {
             /* a projection that is not flat is no geometry */
             int empty;
-            st = check_flat(w->c, k, &empty);
+            st = build_twod_check(w->c, k, &empty);
             if (!mixing && !empty && flat(k))
                 mixing = k;
         } else {
@@ -820,7 +805,7 @@ static sc_status boolean(pwalk *w, const model_node *n, const affine *m, int dep
             continue;
         if (flat(k)) {
             int empty;
-            st = check_flat(w->c, k, &empty);
+            st = build_twod_check(w->c, k, &empty);
             if (!mixing && !empty)
                 mixing = k;
             continue;
@@ -860,10 +845,8 @@ static sc_status walk_node(pwalk *w, const model_node *n, const affine *m, int d
     model_kind kind = n->kind;
     if (n->pending && !flat(n))
         return build_pending(c, n);
-    if (flat(n) || kind == MODEL_PROJECTION) { /* its parent warns (walk_children) */
-        int empty;
-        return check_flat(c, n, &empty);
-    }
+    if (flat(n) || kind == MODEL_PROJECTION) /* its parent warns (walk_children) */
+        return build_twod_check(c, n, NULL);
     switch (kind) {
     case MODEL_UNION:
     case MODEL_COLOR:

@@ -961,6 +961,17 @@ sc_status build_twod_main(const build_ctx *c, const model_node *n, twod_region *
     return twod_walk(&e.walk, n, &unmoved, 1, out);
 }
 
+sc_status build_twod_check(const build_ctx *c, const model_node *n, int *empty)
+{
+    twod_region r;
+    twod_init(&r);
+    sc_status st = build_twod_main(c, n, &r);
+    if (empty)
+        *empty = r.contour_count == 0;
+    twod_free(&r);
+    return st;
+}
+
 sc_status build_twod_top(const build_ctx *c, const model_node *first, twod_region *out)
 {
     eval e = evaluator(c, "the 2D model");

@@ -25,6 +25,10 @@ sc_status build_twod_node(const build_ctx *c, const model_node *n, const char *o
 /* The main-model node n (a 2D shape, or an operation whose first child
  * with a dimension is 2D), evaluated as OpenSCAD evaluates it. */
 sc_status build_twod_main(const build_ctx *c, const model_node *n, twod_region *out);
+/* The 2D node n read through the 2D engine (build_twod_main) only for its
+ * errors and warnings, where a 3D operation or a projection leaves it out;
+ * *empty (when empty is not NULL) tells whether its outline is empty. */
+sc_status build_twod_check(const build_ctx *c, const model_node *n, int *empty);
 /* The top level of a file from first on, a 2D model: the union of its
  * nodes, 3D ones ignored as a 2D operation ignores them. */
 sc_status build_twod_top(const build_ctx *c, const model_node *first, twod_region *out);
