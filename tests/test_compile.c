@@ -14,7 +14,9 @@
 #include <cmocka.h>
 
 #include <math.h>
+#include <omp.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include "csg/bvh.h"
 #include "csg/csg.h"
@@ -335,6 +337,76 @@ static void bvh_matches_plain_binning(void **state)
     }
 }
 
+/* A hierarchy over enough operands is built in OpenMP tasks, each large
+ * right subtree into nodes of its own, appended when its left sibling is
+ * done. It must be the hierarchy one thread builds: the same nodes in the
+ * same order, the same operand order, and the indices right when the
+ * nodes are appended after others (a tree's second BVH). */
+static void bvh_tasks_match_one_thread(void **state)
+{
+    (void)state;
+    enum { COUNT = 150000, BEFORE = 3 };
+    uint64_t r = 0x2545f4914f6cdd1dULL;
+    uint32_t *ids[2];
+    bbox *boxes[2];
+    for (int k = 0; k < 2; k++) {
+        ids[k] = malloc(COUNT * sizeof *ids[k]);
+        boxes[k] = malloc(COUNT * sizeof *boxes[k]);
+        assert_non_null(ids[k]);
+        assert_non_null(boxes[k]);
+    }
+    for (uint32_t i = 0; i < COUNT; i++) {
+        double c[4];
+        for (int k = 0; k < 4; k++) {
+            r ^= r << 13;
+            r ^= r >> 7;
+            r ^= r << 17;
+            c[k] = (double)(r >> 11) / 9007199254740992.0;
+        }
+        /* a grid of spheres, as a large union comes, and scattered boxes */
+        vec3 p = i % 5 ? v3(i % 53, (i / 53) % 53, i / 2809)
+                       : v3(60 * c[0], 60 * c[1], 60 * c[2]);
+        double size = 0.3 + c[3];
+        boxes[0][i] = (bbox){p, v3_add(p, v3(size, size, size))};
+        ids[0][i] = i;
+    }
+    memcpy(boxes[1], boxes[0], COUNT * sizeof *boxes[0]);
+    memcpy(ids[1], ids[0], COUNT * sizeof *ids[0]);
+    bvh_nodes out[2] = {{0}, {0}};
+    uint32_t root[2];
+    int threads = omp_get_max_threads();
+    for (int k = 0; k < 2; k++) {
+        omp_set_num_threads(k ? 2 : 1);
+        /* nodes of an earlier hierarchy before this one */
+        for (int i = 0; i < BEFORE; i++) {
+            uint32_t one = 7;
+            bbox b = {v3(i, 0, 0), v3(i + 1, 1, 1)};
+            assert_int_equal(bvh_build(&out[k], &one, &b, 1, 0), (uint32_t)i);
+        }
+        root[k] = bvh_build(&out[k], ids[k], boxes[k], COUNT, 10);
+    }
+    omp_set_num_threads(threads);
+    assert_int_equal(root[0], BEFORE);
+    assert_int_equal(root[1], BEFORE);
+    assert_int_equal(out[1].count, out[0].count);
+    assert_true(out[0].count > COUNT / 8);
+    for (uint32_t i = 0; i < out[0].count; i++) {
+        const csg_bvh_node *a = &out[0].v[i], *b = &out[1].v[i];
+        assert_memory_equal(&a->bounds, &b->bounds, sizeof a->bounds);
+        assert_int_equal(a->index, b->index);
+        assert_int_equal(a->count, b->count);
+        if (!a->count)
+            assert_int_equal(a->axis, b->axis);
+    }
+    assert_memory_equal(ids[0], ids[1], COUNT * sizeof *ids[0]);
+    assert_memory_equal(boxes[0], boxes[1], COUNT * sizeof *boxes[0]);
+    for (int k = 0; k < 2; k++) {
+        free(out[k].v);
+        free(ids[k]);
+        free(boxes[k]);
+    }
+}
+
 /* A leaf's world box is the box of its local box's eight transformed
  * corners (bbox_transform), bit for bit, for random boxes under random
  * affine maps, including zero and negative entries. */
@@ -402,6 +474,7 @@ int main(void)
         cmocka_unit_test(disjoint_intersection_is_empty),
         cmocka_unit_test(wide_union_gets_a_bvh),
         cmocka_unit_test(bvh_matches_plain_binning),
+        cmocka_unit_test(bvh_tasks_match_one_thread),
         cmocka_unit_test(leaf_bounds_are_transformed_corners),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

@@ -1,6 +1,7 @@
 /* Binned-SAH BVH construction: see bvh.h. */
 #include "csg/bvh.h"
 
+#include <omp.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -129,29 +130,36 @@ static void extent_of(extent *e, const bbox *boxes, uint32_t count)
     }
 }
 
-/* Builds the node over [0, count); known is the extent of those operands
- * when the caller measured it while partitioning (a pass over them saved
- * at every level), NULL otherwise. */
-static uint32_t build(bvh_nodes *out, uint32_t *ids, bbox *boxes, uint32_t count,
-                      uint32_t base, int depth, const extent *known)
+/* How a node splits its operands: at split (0 for a leaf) along axis,
+ * with the extents of both sides when measured while partitioning. */
+typedef struct plan {
+    uint32_t split;
+    int axis;
+    int measured;
+    extent sides[2];
+} plan;
+
+/* Fills node's bounds and chooses its split over [0, count), reordering
+ * the operands so the first split of them are the left side; known is the
+ * extent of those operands when the caller measured it while partitioning
+ * (a pass over them saved at every level), NULL otherwise. */
+static void plan_node(csg_bvh_node *node, uint32_t *ids, bbox *boxes, uint32_t count,
+                      int depth, const extent *known, plan *p)
 {
-    uint32_t node = push_node(out);
-    if (node == CSG_NO_BVH)
-        return CSG_NO_BVH;
     extent own;
     if (!known) {
         extent_of(&own, boxes, count);
         known = &own;
     }
     bbox bounds = known->bounds, centres = known->centres;
-    out->v[node].bounds = bounds;
+    node->bounds = bounds;
     vec3 ext = bbox_extent(&centres);
     int axis = ext.x >= ext.y && ext.x >= ext.z ? 0 : ext.y >= ext.z ? 1 : 2;
     double lo = v3_get(centres.lo, axis), width = v3_get(ext, axis);
 
     uint32_t split = 0;
-    extent sides[2]; /* of the two children, when measured */
-    int measured = 0;
+    p->axis = axis;
+    p->measured = 0;
     if (count > LEAF_SIZE && width > 0 && depth < SAH_DEPTH) {
         uint32_t bin_count[BINS] = {0};
         bbox bin_box[BINS];
@@ -193,13 +201,13 @@ static uint32_t build(bvh_nodes *out, uint32_t *ids, bbox *boxes, uint32_t count
         }
         if (best_bin > 0) {
             /* Partition, measuring both sides as each operand is placed. */
-            extent_of(&sides[0], NULL, 0);
-            extent_of(&sides[1], NULL, 0);
+            extent_of(&p->sides[0], NULL, 0);
+            extent_of(&p->sides[1], NULL, 0);
             uint32_t i = 0, j = count;
             while (i < j) {
                 int b = (int)((centre_on(&boxes[i], axis) - lo) * scale);
                 b = b < 0 ? 0 : b >= BINS ? BINS - 1 : b;
-                extent *side = &sides[b >= best_bin];
+                extent *side = &p->sides[b >= best_bin];
                 box_grow(&side->bounds, &boxes[i]);
                 box_add(&side->centres, bbox_center(&boxes[i]));
                 if (b < best_bin)
@@ -208,7 +216,7 @@ static uint32_t build(bvh_nodes *out, uint32_t *ids, bbox *boxes, uint32_t count
                     swap_items(ids, boxes, i, --j);
             }
             split = i;
-            measured = 1;
+            p->measured = 1;
         } else if (count > 4 * LEAF_SIZE) {
             /* Even a leaf this large is cheaper by area; split anyway so a
              * ray never tests dozens of operands in one go. */
@@ -219,19 +227,111 @@ static uint32_t build(bvh_nodes *out, uint32_t *ids, bbox *boxes, uint32_t count
         median_split(ids, boxes, count, axis);
         split = count / 2;
     }
+    /* At most 4 * LEAF_SIZE operands stay together: larger sets split. */
+    p->split = split == count ? 0 : split;
+}
 
-    if (split == 0 || split == count) {
-        /* At most 4 * LEAF_SIZE operands reach here: larger sets split. */
+/* Builds the node over [0, count) and its subtree, nodes in depth-first
+ * order (a node, its left subtree, its right subtree). */
+static uint32_t build(bvh_nodes *out, uint32_t *ids, bbox *boxes, uint32_t count,
+                      uint32_t base, int depth, const extent *known)
+{
+    uint32_t node = push_node(out);
+    if (node == CSG_NO_BVH)
+        return CSG_NO_BVH;
+    plan p;
+    plan_node(&out->v[node], ids, boxes, count, depth, known, &p);
+    uint32_t split = p.split;
+    if (split == 0) {
         out->v[node].index = base;
         out->v[node].count = (uint16_t)count;
         return node;
     }
-    out->v[node].axis = (uint8_t)axis;
-    if (build(out, ids, boxes, split, base, depth + 1, measured ? &sides[0] : NULL) ==
+    out->v[node].axis = (uint8_t)p.axis;
+    if (build(out, ids, boxes, split, base, depth + 1, p.measured ? &p.sides[0] : NULL) ==
         CSG_NO_BVH)
         return CSG_NO_BVH;
     uint32_t right = build(out, ids + split, boxes + split, count - split, base + split,
-                           depth + 1, measured ? &sides[1] : NULL);
+                           depth + 1, p.measured ? &p.sides[1] : NULL);
+    if (right == CSG_NO_BVH)
+        return CSG_NO_BVH;
+    out->v[node].index = right;
+    out->v[node].count = 0;
+    return node;
+}
+
+/* A subtree of at least this many operands is built as a task of its own
+ * (a million operands: about 30 tasks). */
+enum { TASK_MIN = 1u << 15 };
+
+/* Appends the nodes of a subtree built on its own (root at from->v[0]) to
+ * out; its interior nodes' indices move with it. Returns the subtree's
+ * root in out, or CSG_NO_BVH when memory ran out. */
+static uint32_t append_nodes(bvh_nodes *out, const bvh_nodes *from)
+{
+    uint32_t at = out->count;
+    if (from->count == 0 || from->count > UINT32_MAX - at)
+        return CSG_NO_BVH;
+    uint32_t need = at + from->count;
+    if (need > out->cap) {
+        uint32_t cap = out->cap ? out->cap : 64;
+        while (cap < need)
+            cap = cap > UINT32_MAX / 2 ? need : cap * 2;
+        csg_bvh_node *v = realloc(out->v, (size_t)cap * sizeof *v);
+        if (!v)
+            return CSG_NO_BVH;
+        out->v = v;
+        out->cap = cap;
+    }
+    for (uint32_t i = 0; i < from->count; i++) {
+        csg_bvh_node n = from->v[i];
+        if (n.count == 0)
+            n.index += at;
+        out->v[at + i] = n;
+    }
+    out->count = need;
+    return at;
+}
+
+/* build, with every right subtree of TASK_MIN operands or more built as an
+ * OpenMP task into nodes of its own, appended once the left one is done:
+ * the same nodes in the same order as build makes them. */
+static uint32_t build_tasks(bvh_nodes *out, uint32_t *ids, bbox *boxes, uint32_t count,
+                            uint32_t base, int depth, const extent *known)
+{
+    uint32_t node = push_node(out);
+    if (node == CSG_NO_BVH)
+        return CSG_NO_BVH;
+    plan p;
+    plan_node(&out->v[node], ids, boxes, count, depth, known, &p);
+    uint32_t split = p.split;
+    if (split == 0) {
+        out->v[node].index = base;
+        out->v[node].count = (uint16_t)count;
+        return node;
+    }
+    out->v[node].axis = (uint8_t)p.axis;
+    const extent *left_known = p.measured ? &p.sides[0] : NULL;
+    const extent *right_known = p.measured ? &p.sides[1] : NULL;
+    uint32_t right;
+    if (count - split < TASK_MIN) {
+        if (build_tasks(out, ids, boxes, split, base, depth + 1, left_known) ==
+            CSG_NO_BVH)
+            return CSG_NO_BVH;
+        right = build(out, ids + split, boxes + split, count - split, base + split,
+                      depth + 1, right_known);
+    } else {
+        bvh_nodes own = {NULL, 0, 0};
+        uint32_t own_root = 0, left;
+#pragma omp task shared(own, own_root)
+        own_root = build_tasks(&own, ids + split, boxes + split, count - split,
+                               base + split, depth + 1, right_known);
+        left = build_tasks(out, ids, boxes, split, base, depth + 1, left_known);
+#pragma omp taskwait
+        right = left == CSG_NO_BVH || own_root == CSG_NO_BVH ? CSG_NO_BVH
+                                                             : append_nodes(out, &own);
+        free(own.v);
+    }
     if (right == CSG_NO_BVH)
         return CSG_NO_BVH;
     out->v[node].index = right;
@@ -244,5 +344,11 @@ uint32_t bvh_build(bvh_nodes *out, uint32_t *ids, bbox *boxes, uint32_t count,
 {
     if (count == 0)
         return CSG_NO_BVH;
-    return build(out, ids, boxes, count, items_base, 0, NULL);
+    if (count < 2 * TASK_MIN || omp_in_parallel() || omp_get_max_threads() < 2)
+        return build(out, ids, boxes, count, items_base, 0, NULL);
+    uint32_t root = CSG_NO_BVH;
+#pragma omp parallel
+#pragma omp single
+    root = build_tasks(out, ids, boxes, count, items_base, 0, NULL);
+    return root;
 }

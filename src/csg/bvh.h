@@ -7,6 +7,11 @@
  * where no split beats keeping them together, is a leaf. Past depth 40 the
  * split falls back to the median, so no hierarchy is deeper than 40 +
  * log2(count) levels and traversal can use a fixed stack.
+ *
+ * Over 65,536 operands or more, outside a parallel region, the build runs
+ * on OpenMP's threads: every right subtree of 32,768 operands or more is
+ * a task that builds into nodes of its own, appended once its left
+ * sibling is done, so the nodes come out as one thread makes them.
  */
 #ifndef SPANCAST_CSG_BVH_H
 #define SPANCAST_CSG_BVH_H
