@@ -10,6 +10,7 @@
 #include <stddef.h>
 #include <stdint.h>
 #include <cmocka.h>
+#include <omp.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -518,6 +519,65 @@ static void test_parity_rule(void **state)
     csg_builder_free(b);
 }
 
+/* A mesh of enough triangles has its hierarchy built in OpenMP tasks,
+ * each large right subtree into nodes of its own, appended once its left
+ * sibling is done. It must be the hierarchy one thread builds: the same
+ * nodes in the same order, and the triangles in the same order. */
+static void test_tasks_build_one_thread_tree(void **state)
+{
+    (void)state;
+    enum { RINGS = 180, SEGMENTS = 400 };
+    uint32_t np = (RINGS - 1) * SEGMENTS + 2, nt = 2 * SEGMENTS * (RINGS - 1);
+    vec3 *p = malloc(np * sizeof *p);
+    uint32_t *t = malloc((size_t)3 * nt * sizeof *t);
+    assert_non_null(p);
+    assert_non_null(t);
+    /* a sphere, its radius rippled so no two rings are alike */
+    p[0] = v3(0, 0, -1);
+    for (int i = 1; i < RINGS; i++) {
+        double th = PI * i / RINGS - PI / 2;
+        for (int j = 0; j < SEGMENTS; j++) {
+            double ph = 2 * PI * j / SEGMENTS, r = 1 + 0.05 * sin(7 * ph + 3 * th);
+            p[1 + (i - 1) * SEGMENTS + j] =
+                v3(r * cos(th) * cos(ph), r * cos(th) * sin(ph), r * sin(th));
+        }
+    }
+    p[np - 1] = v3(0, 0, 1);
+    uint32_t k = 0;
+#define RING(i, j) (1 + (uint32_t)((i)-1) * SEGMENTS + (uint32_t)((j) % SEGMENTS))
+    for (int j = 0; j < SEGMENTS; j++) {
+        uint32_t tri[][3] = {{0, RING(1, j + 1), RING(1, j)},
+                             {np - 1, RING(RINGS - 1, j), RING(RINGS - 1, j + 1)}};
+        memcpy(&t[3 * k], tri, sizeof tri);
+        k += 2;
+        for (int i = 1; i + 1 < RINGS; i++) {
+            uint32_t quad[][3] = {{RING(i, j), RING(i, j + 1), RING(i + 1, j + 1)},
+                                  {RING(i, j), RING(i + 1, j + 1), RING(i + 1, j)}};
+            memcpy(&t[3 * k], quad, sizeof quad);
+            k += 2;
+        }
+    }
+#undef RING
+    assert_int_equal(k, nt);
+    const prim_mesh *m[2];
+    csg_builder *b = csg_builder_new();
+    int threads = omp_get_max_threads();
+    for (int i = 0; i < 2; i++) {
+        omp_set_num_threads(i ? 2 : 1);
+        m[i] = prim_mesh_create(b, p, t, nt);
+        assert_non_null(m[i]);
+    }
+    omp_set_num_threads(threads);
+    assert_int_equal(m[0]->tri_count, nt);
+    assert_int_equal(m[1]->tri_count, nt);
+    assert_int_equal(m[1]->node_count, m[0]->node_count);
+    assert_memory_equal(m[1]->nodes, m[0]->nodes, m[0]->node_count * sizeof *m[0]->nodes);
+    assert_memory_equal(m[1]->v, m[0]->v, (size_t)3 * nt * sizeof *m[0]->v);
+    csg_builder_free(b);
+    free(p);
+    free(t);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -530,6 +590,7 @@ int main(void)
         cmocka_unit_test(test_subnormal_extent),
         cmocka_unit_test(test_range_walk),
         cmocka_unit_test(test_parity_rule),
+        cmocka_unit_test(test_tasks_build_one_thread_tree),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

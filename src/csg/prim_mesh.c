@@ -59,7 +59,11 @@
  * triangles' boxes, the plane that minimises area(left) count(left) +
  * area(right) count(right)) down to 4 triangles a leaf; where no plane
  * separates the centres, or past depth 48, the median splits instead, so
- * the depth stays below 48 + log2(n).
+ * the depth stays below 48 + log2(n). A mesh of 65,536 triangles or
+ * more is built on OpenMP's threads (outside a parallel region): every
+ * right subtree of 32,768 triangles or more is a task with nodes of its
+ * own, appended once its left sibling is done, so the nodes come out as
+ * one thread makes them.
  * Each node holds both children's boxes (one cache line), as floats
  * relative to the centre of the mesh. A box test that rounds the wrong way
  * must not drop a triangle the ray touches, so every box is rounded outward
@@ -89,6 +93,7 @@
 #include "csg/prim_mesh.h"
 
 #include <math.h>
+#include <omp.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -360,44 +365,112 @@ static uint32_t sah_split(builder_state *s, uint32_t lo, uint32_t hi, int axis, 
     return i > lo && i < hi ? i : 0;
 }
 
-/* Builds the subtree over items[lo .. hi), whose bounds are b, and returns
- * it; inner nodes are appended to s->nodes (at most one per split, so
- * fewer than the triangles). */
-static child_ref build_subtree(builder_state *s, uint32_t lo, uint32_t hi, int depth,
-                               const bounds2 *b)
+/* Splits items[lo .. hi), whose bounds are b, for a node: returns the
+ * split position, after which left and right hold the two sides' bounds,
+ * or 0 for a leaf (at most LEAF_SIZE triangles). */
+static uint32_t split_items(builder_state *s, uint32_t lo, uint32_t hi, int depth,
+                            const bounds2 *b, bounds2 *left, bounds2 *right)
+{
+    if (hi - lo <= LEAF_SIZE)
+        return 0;
+    float ex = b->chi[0] - b->clo[0], ey = b->chi[1] - b->clo[1],
+          ez = b->chi[2] - b->clo[2];
+    int axis = ex >= ey && ex >= ez ? 0 : ey >= ez ? 1 : 2;
+    float width = axis == 0 ? ex : axis == 1 ? ey : ez;
+    uint32_t mid = 0;
+    if (depth < SAH_DEPTH && width > 0)
+        mid = sah_split(s, lo, hi, axis, b->clo[axis], width, left, right);
+    if (mid == 0) {
+        mid = lo + (hi - lo) / 2;
+        select_kth(s, lo, hi, mid, axis);
+        bounds_of(s, lo, mid, left);
+        bounds_of(s, mid, hi, right);
+    }
+    return mid;
+}
+
+/* A subtree with bounds b as its parent sees it: a leaf of count
+ * triangles from index, or (count 0) inner node index. */
+static child_ref ref_of(uint32_t index, uint32_t count, const bounds2 *b)
 {
     child_ref r;
     for (int a = 0; a < 3; a++) {
         r.lo[a] = b->lo[a];
         r.hi[a] = b->hi[a];
     }
-    if (hi - lo <= LEAF_SIZE) {
-        r.index = lo;
-        r.count = hi - lo;
-        return r;
-    }
-    float ex = b->chi[0] - b->clo[0], ey = b->chi[1] - b->clo[1],
-          ez = b->chi[2] - b->clo[2];
-    int axis = ex >= ey && ex >= ez ? 0 : ey >= ez ? 1 : 2;
-    float width = axis == 0 ? ex : axis == 1 ? ey : ez;
-    uint32_t mid = 0;
+    r.index = index;
+    r.count = count;
+    return r;
+}
+
+/* The inner node index over children l and g, as its parent sees it. */
+static child_ref inner_ref(builder_state *s, uint32_t index, const child_ref *l,
+                           const child_ref *g, const bounds2 *b)
+{
+    set_child(&s->nodes[index], 0, l);
+    set_child(&s->nodes[index], 1, g);
+    return ref_of(index, 0, b);
+}
+
+/* Builds the subtree over items[lo .. hi), whose bounds are b, and returns
+ * it; inner nodes are appended to s->nodes (at most one per split, so
+ * fewer than the triangles), each before its left subtree's, which come
+ * before its right subtree's. */
+static child_ref build_subtree(builder_state *s, uint32_t lo, uint32_t hi, int depth,
+                               const bounds2 *b)
+{
     bounds2 left, right;
-    if (depth < SAH_DEPTH && width > 0)
-        mid = sah_split(s, lo, hi, axis, b->clo[axis], width, &left, &right);
-    if (mid == 0) {
-        mid = lo + (hi - lo) / 2;
-        select_kth(s, lo, hi, mid, axis);
-        bounds_of(s, lo, mid, &left);
-        bounds_of(s, mid, hi, &right);
-    }
+    uint32_t mid = split_items(s, lo, hi, depth, b, &left, &right);
+    if (mid == 0)
+        return ref_of(lo, hi - lo, b);
     uint32_t index = s->node_count++;
     child_ref l = build_subtree(s, lo, mid, depth + 1, &left);
     child_ref g = build_subtree(s, mid, hi, depth + 1, &right);
-    set_child(&s->nodes[index], 0, &l);
-    set_child(&s->nodes[index], 1, &g);
-    r.index = index;
-    r.count = 0;
-    return r;
+    return inner_ref(s, index, &l, &g, b);
+}
+
+/* A right subtree of at least this many triangles is built as a task of
+ * its own (a million triangles: about 30 tasks). */
+enum { TASK_MIN = 1u << 15 };
+
+/* build_subtree, with every right subtree of TASK_MIN triangles or more
+ * built as an OpenMP task into nodes of its own, appended (their inner
+ * references moved with them) once the left one is done: the same nodes
+ * in the same order as build_subtree makes them. */
+static child_ref build_subtree_tasks(builder_state *s, uint32_t lo, uint32_t hi,
+                                     int depth, const bounds2 *b)
+{
+    bounds2 left, right;
+    uint32_t mid = split_items(s, lo, hi, depth, b, &left, &right);
+    if (mid == 0)
+        return ref_of(lo, hi - lo, b);
+    uint32_t index = s->node_count++;
+    builder_state own = {s->items, NULL, 0};
+    if (hi - mid >= TASK_MIN)
+        own.nodes = malloc((size_t)(hi - mid) * sizeof *own.nodes);
+    if (!own.nodes) {
+        child_ref l = build_subtree_tasks(s, lo, mid, depth + 1, &left);
+        child_ref g = build_subtree(s, mid, hi, depth + 1, &right);
+        return inner_ref(s, index, &l, &g, b);
+    }
+    child_ref l, g;
+#pragma omp task shared(own, g, right)
+    g = build_subtree_tasks(&own, mid, hi, depth + 1, &right);
+    l = build_subtree_tasks(s, lo, mid, depth + 1, &left);
+#pragma omp taskwait
+    uint32_t at = s->node_count;
+    for (uint32_t i = 0; i < own.node_count; i++) {
+        prim_mesh_node n = own.nodes[i];
+        for (int k = 0; k < 2; k++)
+            if (n.count[k] == 0)
+                n.child[k] += at;
+        s->nodes[at + i] = n;
+    }
+    s->node_count += own.node_count;
+    if (g.count == 0)
+        g.index += at;
+    free(own.nodes);
+    return inner_ref(s, index, &l, &g, b);
 }
 
 const prim_mesh *prim_mesh_create(struct csg_builder *b, const vec3 *points,
@@ -461,7 +534,14 @@ const prim_mesh *prim_mesh_create_rule(struct csg_builder *b, const vec3 *points
         }
         bounds_add_item(&all, it);
     }
-    child_ref root = build_subtree(&s, 0, kept, 0, &all);
+    child_ref root;
+    if (kept < 2 * TASK_MIN || omp_in_parallel() || omp_get_max_threads() < 2) {
+        root = build_subtree(&s, 0, kept, 0, &all);
+    } else {
+#pragma omp parallel
+#pragma omp single
+        root = build_subtree_tasks(&s, 0, kept, 0, &all);
+    }
     if (root.count > 0) {
         s.node_count = 1;
         set_child(&s.nodes[0], 0, &root);
