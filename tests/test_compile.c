@@ -193,6 +193,15 @@ static void wide_union_gets_a_bvh(void **state)
     csg_tree_free(t);
 }
 
+/* The next of xorshift64's numbers in r, as a double in [0, 1). */
+static double next_unit(uint64_t *r)
+{
+    *r ^= *r << 13;
+    *r ^= *r >> 7;
+    *r ^= *r << 17;
+    return (double)(*r >> 11) / 9007199254740992.0;
+}
+
 /* The binned SAH split, recomputed the plain way (one set of bins, each
  * box added in turn) at every interior node of a hierarchy built over
  * random boxes: the node's box is the exact union of its operands' boxes,
@@ -312,12 +321,8 @@ static void bvh_matches_plain_binning(void **state)
         assert_non_null(boxes);
         for (uint32_t i = 0; i < count; i++) {
             double c[4];
-            for (int k = 0; k < 4; k++) {
-                r ^= r << 13;
-                r ^= r >> 7;
-                r ^= r << 17;
-                c[k] = (double)(r >> 11) / 9007199254740992.0;
-            }
+            for (int k = 0; k < 4; k++)
+                c[k] = next_unit(&r);
             /* Clustered along a row, as a model's leaves come, and random. */
             double x = i % 3 ? (double)i * 0.01 : 100 * c[0];
             vec3 p = v3(x, 10 * c[1], round % 2 ? 10 * c[2] : 0.5);
@@ -357,12 +362,8 @@ static void bvh_tasks_match_one_thread(void **state)
     }
     for (uint32_t i = 0; i < COUNT; i++) {
         double c[4];
-        for (int k = 0; k < 4; k++) {
-            r ^= r << 13;
-            r ^= r >> 7;
-            r ^= r << 17;
-            c[k] = (double)(r >> 11) / 9007199254740992.0;
-        }
+        for (int k = 0; k < 4; k++)
+            c[k] = next_unit(&r);
         /* a grid of spheres, as a large union comes, and scattered boxes */
         vec3 p = i % 5 ? v3(i % 53, (i / 53) % 53, i / 2809)
                        : v3(60 * c[0], 60 * c[1], 60 * c[2]);
@@ -422,12 +423,8 @@ static void leaf_bounds_are_transformed_corners(void **state)
         uint32_t made = 0;
         for (int i = 0; i < 10; i++) {
             double c[18];
-            for (int k = 0; k < 18; k++) {
-                r ^= r << 13;
-                r ^= r >> 7;
-                r ^= r << 17;
-                c[k] = (double)(r >> 11) / 9007199254740992.0 * 20 - 10;
-            }
+            for (int k = 0; k < 18; k++)
+                c[k] = next_unit(&r) * 20 - 10;
             affine m = affine_identity();
             for (int row = 0; row < 3; row++)
                 for (int col = 0; col < 4; col++)

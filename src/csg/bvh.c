@@ -231,37 +231,8 @@ static void plan_node(csg_bvh_node *node, uint32_t *ids, bbox *boxes, uint32_t c
     p->split = split == count ? 0 : split;
 }
 
-/* Builds the node over [0, count) and its subtree, nodes in depth-first
- * order (a node, its left subtree, its right subtree). */
-static uint32_t build(bvh_nodes *out, uint32_t *ids, bbox *boxes, uint32_t count,
-                      uint32_t base, int depth, const extent *known)
-{
-    uint32_t node = push_node(out);
-    if (node == CSG_NO_BVH)
-        return CSG_NO_BVH;
-    plan p;
-    plan_node(&out->v[node], ids, boxes, count, depth, known, &p);
-    uint32_t split = p.split;
-    if (split == 0) {
-        out->v[node].index = base;
-        out->v[node].count = (uint16_t)count;
-        return node;
-    }
-    out->v[node].axis = (uint8_t)p.axis;
-    if (build(out, ids, boxes, split, base, depth + 1, p.measured ? &p.sides[0] : NULL) ==
-        CSG_NO_BVH)
-        return CSG_NO_BVH;
-    uint32_t right = build(out, ids + split, boxes + split, count - split, base + split,
-                           depth + 1, p.measured ? &p.sides[1] : NULL);
-    if (right == CSG_NO_BVH)
-        return CSG_NO_BVH;
-    out->v[node].index = right;
-    out->v[node].count = 0;
-    return node;
-}
-
-/* A subtree of at least this many operands is built as a task of its own
- * (a million operands: about 30 tasks). */
+/* A right subtree of at least this many operands is built as a task of
+ * its own (a million operands: about 30 tasks). */
 enum { TASK_MIN = 1u << 15 };
 
 /* Appends the nodes of a subtree built on its own (root at from->v[0]) to
@@ -293,11 +264,13 @@ static uint32_t append_nodes(bvh_nodes *out, const bvh_nodes *from)
     return at;
 }
 
-/* build, with every right subtree of TASK_MIN operands or more built as an
- * OpenMP task into nodes of its own, appended once the left one is done:
- * the same nodes in the same order as build makes them. */
-static uint32_t build_tasks(bvh_nodes *out, uint32_t *ids, bbox *boxes, uint32_t count,
-                            uint32_t base, int depth, const extent *known)
+/* Builds the node over [0, count) and its subtree, nodes in depth-first
+ * order (a node, its left subtree, its right subtree). With tasks (inside
+ * a parallel region), a right subtree of TASK_MIN operands or more is an
+ * OpenMP task that builds into nodes of its own, appended once the left
+ * one is done: the same nodes in the same order as without. */
+static uint32_t build(bvh_nodes *out, uint32_t *ids, bbox *boxes, uint32_t count,
+                      uint32_t base, int depth, const extent *known, int tasks)
 {
     uint32_t node = push_node(out);
     if (node == CSG_NO_BVH)
@@ -313,20 +286,19 @@ static uint32_t build_tasks(bvh_nodes *out, uint32_t *ids, bbox *boxes, uint32_t
     out->v[node].axis = (uint8_t)p.axis;
     const extent *left_known = p.measured ? &p.sides[0] : NULL;
     const extent *right_known = p.measured ? &p.sides[1] : NULL;
-    uint32_t right;
-    if (count - split < TASK_MIN) {
-        if (build_tasks(out, ids, boxes, split, base, depth + 1, left_known) ==
-            CSG_NO_BVH)
-            return CSG_NO_BVH;
-        right = build(out, ids + split, boxes + split, count - split, base + split,
-                      depth + 1, right_known);
+    uint32_t left, right;
+    if (!tasks || count - split < TASK_MIN) {
+        left = build(out, ids, boxes, split, base, depth + 1, left_known, tasks);
+        right = left == CSG_NO_BVH ? CSG_NO_BVH
+                                   : build(out, ids + split, boxes + split, count - split,
+                                           base + split, depth + 1, right_known, tasks);
     } else {
         bvh_nodes own = {NULL, 0, 0};
-        uint32_t own_root = 0, left;
+        uint32_t own_root = 0;
 #pragma omp task shared(own, own_root)
-        own_root = build_tasks(&own, ids + split, boxes + split, count - split,
-                               base + split, depth + 1, right_known);
-        left = build_tasks(out, ids, boxes, split, base, depth + 1, left_known);
+        own_root = build(&own, ids + split, boxes + split, count - split, base + split,
+                         depth + 1, right_known, tasks);
+        left = build(out, ids, boxes, split, base, depth + 1, left_known, tasks);
 #pragma omp taskwait
         right = left == CSG_NO_BVH || own_root == CSG_NO_BVH ? CSG_NO_BVH
                                                              : append_nodes(out, &own);
@@ -345,10 +317,10 @@ uint32_t bvh_build(bvh_nodes *out, uint32_t *ids, bbox *boxes, uint32_t count,
     if (count == 0)
         return CSG_NO_BVH;
     if (count < 2 * TASK_MIN || omp_in_parallel() || omp_get_max_threads() < 2)
-        return build(out, ids, boxes, count, items_base, 0, NULL);
+        return build(out, ids, boxes, count, items_base, 0, NULL, 0);
     uint32_t root = CSG_NO_BVH;
 #pragma omp parallel
 #pragma omp single
-    root = build_tasks(out, ids, boxes, count, items_base, 0, NULL);
+    root = build(out, ids, boxes, count, items_base, 0, NULL, 1);
     return root;
 }

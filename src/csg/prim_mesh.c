@@ -412,33 +412,19 @@ static child_ref inner_ref(builder_state *s, uint32_t index, const child_ref *l,
     return ref_of(index, 0, b);
 }
 
-/* Builds the subtree over items[lo .. hi), whose bounds are b, and returns
- * it; inner nodes are appended to s->nodes (at most one per split, so
- * fewer than the triangles), each before its left subtree's, which come
- * before its right subtree's. */
-static child_ref build_subtree(builder_state *s, uint32_t lo, uint32_t hi, int depth,
-                               const bounds2 *b)
-{
-    bounds2 left, right;
-    uint32_t mid = split_items(s, lo, hi, depth, b, &left, &right);
-    if (mid == 0)
-        return ref_of(lo, hi - lo, b);
-    uint32_t index = s->node_count++;
-    child_ref l = build_subtree(s, lo, mid, depth + 1, &left);
-    child_ref g = build_subtree(s, mid, hi, depth + 1, &right);
-    return inner_ref(s, index, &l, &g, b);
-}
-
 /* A right subtree of at least this many triangles is built as a task of
  * its own (a million triangles: about 30 tasks). */
 enum { TASK_MIN = 1u << 15 };
 
-/* build_subtree, with every right subtree of TASK_MIN triangles or more
- * built as an OpenMP task into nodes of its own, appended (their inner
- * references moved with them) once the left one is done: the same nodes
- * in the same order as build_subtree makes them. */
-static child_ref build_subtree_tasks(builder_state *s, uint32_t lo, uint32_t hi,
-                                     int depth, const bounds2 *b)
+/* Builds the subtree over items[lo .. hi), whose bounds are b, and returns
+ * it; inner nodes are appended to s->nodes (at most one per split, so
+ * fewer than the triangles), each before its left subtree's, which come
+ * before its right subtree's. With tasks (inside a parallel region), a
+ * right subtree of TASK_MIN triangles or more is an OpenMP task with nodes
+ * of its own, appended (their inner references moved) once the left one
+ * is done: the same nodes in the same order as without. */
+static child_ref build_subtree(builder_state *s, uint32_t lo, uint32_t hi, int depth,
+                               const bounds2 *b, int tasks)
 {
     bounds2 left, right;
     uint32_t mid = split_items(s, lo, hi, depth, b, &left, &right);
@@ -446,17 +432,17 @@ static child_ref build_subtree_tasks(builder_state *s, uint32_t lo, uint32_t hi,
         return ref_of(lo, hi - lo, b);
     uint32_t index = s->node_count++;
     builder_state own = {s->items, NULL, 0};
-    if (hi - mid >= TASK_MIN)
+    if (tasks && hi - mid >= TASK_MIN)
         own.nodes = malloc((size_t)(hi - mid) * sizeof *own.nodes);
+    child_ref l, g;
     if (!own.nodes) {
-        child_ref l = build_subtree_tasks(s, lo, mid, depth + 1, &left);
-        child_ref g = build_subtree(s, mid, hi, depth + 1, &right);
+        l = build_subtree(s, lo, mid, depth + 1, &left, tasks);
+        g = build_subtree(s, mid, hi, depth + 1, &right, tasks);
         return inner_ref(s, index, &l, &g, b);
     }
-    child_ref l, g;
 #pragma omp task shared(own, g, right)
-    g = build_subtree_tasks(&own, mid, hi, depth + 1, &right);
-    l = build_subtree_tasks(s, lo, mid, depth + 1, &left);
+    g = build_subtree(&own, mid, hi, depth + 1, &right, tasks);
+    l = build_subtree(s, lo, mid, depth + 1, &left, tasks);
 #pragma omp taskwait
     uint32_t at = s->node_count;
     for (uint32_t i = 0; i < own.node_count; i++) {
@@ -536,11 +522,11 @@ const prim_mesh *prim_mesh_create_rule(struct csg_builder *b, const vec3 *points
     }
     child_ref root;
     if (kept < 2 * TASK_MIN || omp_in_parallel() || omp_get_max_threads() < 2) {
-        root = build_subtree(&s, 0, kept, 0, &all);
+        root = build_subtree(&s, 0, kept, 0, &all, 0);
     } else {
 #pragma omp parallel
 #pragma omp single
-        root = build_subtree_tasks(&s, 0, kept, 0, &all);
+        root = build_subtree(&s, 0, kept, 0, &all, 1);
     }
     if (root.count > 0) {
         s.node_count = 1;
