@@ -147,10 +147,14 @@ typedef struct sc_load_options {
        means the default, 67108864 (2^26); a program that loads untrusted
        models may set less (the fuzzer sets 65536) */
     size_t max_triangles;
+    /* the threads that build a large model's hierarchies (65,536 operands
+       or triangles and more): 0 (default): all cores, as OpenMP counts
+       them; the scene does not depend on it */
+    int threads;
 } sc_load_options;
 
-/* Sets size and the defaults (faithful 0, strict 0, max_triangles 0). Never
- * fails. */
+/* Sets size and the defaults (faithful 0, strict 0, max_triangles 0,
+ * threads 0). Never fails. */
 void sc_load_options_init_size(sc_load_options *options, size_t size);
 #define sc_load_options_init(options)                                                    \
     sc_load_options_init_size((options), sizeof *(options))

@@ -3,8 +3,10 @@
  * appended since are the ones an older caller's struct ends before. */
 #include "api/options.h"
 
+#include <omp.h>
 #include <stddef.h>
 
+#include "base/error.h"
 #include "base/sized.h"
 
 sc_status options_load(const sc_load_options *in, sc_load_options *out, sc_error *error)
@@ -12,8 +14,12 @@ sc_status options_load(const sc_load_options *in, sc_load_options *out, sc_error
     sc_load_options_init(out);
     if (!in)
         return SC_OK;
-    return sized_read(out, sizeof *out, in, SIZED_MIN(sc_load_options, faithful),
-                      "sc_load_options", error);
+    sc_status st = sized_read(out, sizeof *out, in, SIZED_MIN(sc_load_options, faithful),
+                              "sc_load_options", error);
+    if (st == SC_OK && out->threads < 0)
+        return err_set(error, SC_ERR_ARGUMENT, NULL,
+                       "thread count must not be negative (got %d)", out->threads);
+    return st;
 }
 
 sc_status options_measure(const sc_measure_options *in, sc_measure_options *out,
@@ -33,4 +39,19 @@ sc_status options_ray_query(const sc_ray_query *in, sc_ray_query *out, sc_error 
         return SC_OK;
     return sized_read(out, sizeof *out, in, SIZED_MIN(sc_ray_query, both_ways),
                       "sc_ray_query", error);
+}
+
+int options_threads_begin(int threads)
+{
+    if (threads <= 0)
+        return 0;
+    int saved = omp_get_max_threads();
+    omp_set_num_threads(threads);
+    return saved;
+}
+
+void options_threads_end(int saved)
+{
+    if (saved > 0)
+        omp_set_num_threads(saved);
 }

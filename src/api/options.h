@@ -15,4 +15,11 @@ sc_status options_measure(const sc_measure_options *in, sc_measure_options *out,
                           sc_error *error);
 sc_status options_ray_query(const sc_ray_query *in, sc_ray_query *out, sc_error *error);
 
+/* Runs the calling thread's parallel regions (the builds of a large
+ * model's hierarchies) on threads threads, 0 leaving them as they are, until
+ * options_threads_end(the value returned). Only the calling thread's
+ * setting changes (OpenMP's nthreads-var is per thread). */
+int options_threads_begin(int threads);
+void options_threads_end(int saved);
+
 #endif

@@ -208,16 +208,17 @@ static sc_status load_text(const char *path, const char *text, size_t length, in
     for (model_node *c = first; c; c = c->next)
         if (counts(c))
             o->nodes[o->count++] = c;
-    for (size_t k = 0; k < o->count; k++) {
+    int threads = options_threads_begin(lo.threads);
+    for (size_t k = 0; k < o->count && st == SC_OK; k++)
         st = build_object(
             o, k, (lo.faithful ? BUILD_FAITHFUL : 0) | (lo.strict ? BUILD_STRICT : 0),
             lo.max_triangles, error);
-        if (st) {
-            if (mesh)
-                mesh_model_unplace(error, path);
-            sc_objects_release(o);
-            return st;
-        }
+    options_threads_end(threads);
+    if (st) {
+        if (mesh)
+            mesh_model_unplace(error, path);
+        sc_objects_release(o);
+        return st;
     }
     *out = o;
     return SC_OK;

@@ -106,7 +106,7 @@ static int apply_check_option(check_args *a, const char *name, const char *value
         if (!cli_parse_number(value, &v) || v != floor(v) || v < 0 || v > 4096)
             return cli_usage_error("--threads expects a non-negative integer (0: all "
                                    "cores)");
-        a->options.threads = (int)v;
+        a->options.threads = cli_load_threads = (int)v;
     } else if (!strcmp(name, "--density")) {
         if (!cli_parse_number(value, &v) || !(v > 0))
             return cli_usage_error("--density expects a positive number");

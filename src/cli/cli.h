@@ -91,11 +91,18 @@ int cli_apply_preview_option(sc_render_options *options, sc_view_preset *preset,
 #define CLI_LOAD_FAITHFUL 1
 #define CLI_LOAD_STRICT 2
 
-/* Sets lo's faithful and strict from CLI_LOAD_* flags. */
+/* The threads a load builds a large model's hierarchies on: the
+ * command's --threads (0, the default: all cores). Set while the options
+ * are read, before any load (render_options.c). */
+extern int cli_load_threads;
+
+/* Sets lo's faithful and strict from CLI_LOAD_* flags, and its threads
+ * from cli_load_threads. */
 static inline void cli_load_options(sc_load_options *lo, int flags)
 {
     lo->faithful = (flags & CLI_LOAD_FAITHFUL) != 0;
     lo->strict = (flags & CLI_LOAD_STRICT) != 0;
+    lo->threads = cli_load_threads;
 }
 
 /* Loads a .csg or .scad model and prints its warnings; NULL (after printing

@@ -454,7 +454,7 @@ static int apply_option(cli_args *a, const opt_spec *spec, const char *value)
         if (!cli_parse_int(value, 0, 4096, &n))
             return cli_usage_error(
                 "--threads expects a non-negative integer (0: all cores)");
-        o->threads = (int)n;
+        o->threads = cli_load_threads = (int)n;
         return 0;
     }
     case OPT_QUIET:

@@ -21,6 +21,8 @@
 #include "render/render.h"
 #include "spancast/spancast.h"
 
+int cli_load_threads;
+
 /* ---- messages and values ---- */
 
 /* The message is written in one piece: under mpirun, a line written in

@@ -265,7 +265,7 @@ static int parse_args(viewer *v, int argc, char **argv)
         } else if (!strncmp(arg, "--threads", len)) {
             if (!cli_parse_int(value, 0, 4096, &n))
                 return cli_usage_error("--threads expects a non-negative integer");
-            v->threads = (int)n;
+            v->threads = cli_load_threads = (int)n;
         } else {
             char wtext[32];
             const char *comma = strchr(value, ',');
