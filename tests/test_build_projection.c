@@ -446,6 +446,38 @@ static void test_nef_cache(void **state)
     NEAR(cached, 12, 14);
 }
 
+/* OpenSCAD 2021.01 looks a projection's child up in its cache but does not
+ * put it there (it collects its children itself): a difference that is a
+ * projection's child is evaluated again at the next projection of it, and
+ * warns again; below a group, it is cached, and a later projection of it
+ * takes it without a warning. */
+static void test_nef_cache_projection_child(void **state)
+{
+    (void)state;
+    build_nef_cache *nefs = build_nef_cache_new();
+    assert_non_null(nefs);
+    twod_region r;
+    char message[1024], note[1024];
+    assert_int_equal(
+        region_with(
+            "group() { projection() { difference() { cube(2); square(1); cube(1); } }\n"
+            "projection() { group() { difference() { cube(2); square(1); cube(1); } } }\n"
+            "projection() { difference() { cube(2); square(1); cube(1); } } }",
+            &r, message, sizeof message, note, sizeof note, nefs),
+        SC_OK);
+    size_t evaluated, reused;
+    build_nef_cache_counts(nefs, &evaluated, &reused);
+    build_nef_cache_free(nefs);
+    assert_int_equal(evaluated, 2);
+    assert_int_equal(reused, 1);
+    assert_string_equal(note, "1:50: Mixing 2D and 3D objects is not supported\n"
+                              "1:50: Ignoring 2D child object for 3D operation\n"
+                              "2:50: Mixing 2D and 3D objects is not supported\n"
+                              "2:50: Ignoring 2D child object for 3D operation");
+    NEAR(twod_area(&r), 4, 10);
+    twod_free(&r);
+}
+
 static void test_errors(void **state)
 {
     (void)state;
@@ -500,10 +532,15 @@ static void test_top_level(void **state)
 int main(void)
 {
     const struct CMUnitTest tests[] = {
-        cmocka_unit_test(test_cut),           cmocka_unit_test(test_cut_in_plane),
-        cmocka_unit_test(test_outline),       cmocka_unit_test(test_2d_child),
-        cmocka_unit_test(test_mesh_booleans), cmocka_unit_test(test_nef_cache),
-        cmocka_unit_test(test_errors),        cmocka_unit_test(test_top_level),
+        cmocka_unit_test(test_cut),
+        cmocka_unit_test(test_cut_in_plane),
+        cmocka_unit_test(test_outline),
+        cmocka_unit_test(test_2d_child),
+        cmocka_unit_test(test_mesh_booleans),
+        cmocka_unit_test(test_nef_cache),
+        cmocka_unit_test(test_nef_cache_projection_child),
+        cmocka_unit_test(test_errors),
+        cmocka_unit_test(test_top_level),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -1064,9 +1064,10 @@ static sc_status nef_moved(const walk *w, const model_node *n, const nef_solid *
  * own frame once per build (build_nef_cache.h), then carried by m, in
  * OpenSCAD's order: the boolean's Nef polyhedron first, then the
  * transforms above it. A subtree the cache does not key is evaluated
- * through m, as everywhere else. */
+ * through m, as everywhere else. Without keep, a solid evaluated here is
+ * not kept (a projection's own child). */
 static sc_status nef_cached(const walk *w, const model_node *n, const affine *m,
-                            int depth, nef_op op, nef_solid **out)
+                            int depth, nef_op op, int keep, nef_solid **out)
 {
     build_nef_cache *cache = w->c->nefs;
     uint64_t hash;
@@ -1085,7 +1086,7 @@ static sc_status nef_cached(const walk *w, const model_node *n, const affine *m,
             w->nef->release(solid);
         return st;
     }
-    if (!build_nef_cache_put(cache, n, hash, solid, w->nef)) {
+    if (!build_nef_cache_put(cache, n, hash, solid, keep, w->nef)) {
         if (*out)
             w->nef->release(*out);
         *out = NULL;
@@ -1112,7 +1113,7 @@ static sc_status nef_node(const walk *w, const model_node *n, const affine *m, i
         return nef_children(w, n, m, depth + 1, NEF_UNION, out);
     if ((kind == MODEL_DIFFERENCE || kind == MODEL_INTERSECTION) && c->nefs && !w->check)
         return nef_cached(w, n, m, depth + 1,
-                          kind == MODEL_DIFFERENCE ? NEF_DIFFERENCE : NEF_INTERSECTION,
+                          kind == MODEL_DIFFERENCE ? NEF_DIFFERENCE : NEF_INTERSECTION, 1,
                           out);
     if (kind == MODEL_DIFFERENCE)
         return nef_children(w, n, m, depth + 1, NEF_DIFFERENCE, out);
@@ -1273,7 +1274,7 @@ static sc_status solid_parts(const walk *w, const model_node *n, const affine *m
 }
 
 sc_status build_nef_triangles(const build_ctx *c, const model_node *n, const char *owner,
-                              build_resize_cache **cache, vec3 **tris,
+                              build_resize_cache **cache, int own, vec3 **tris,
                               uint32_t *tri_count)
 {
     *tris = NULL;
@@ -1283,7 +1284,12 @@ sc_status build_nef_triangles(const build_ctx *c, const model_node *n, const cha
     nef_solid *solid = NULL;
     affine id = affine_identity();
     sc_status st = nef_ready(&w, n);
-    if (st == SC_OK)
+    int boolean = n->kind == MODEL_DIFFERENCE || n->kind == MODEL_INTERSECTION;
+    if (st == SC_OK && own && boolean && c->nefs)
+        st = nef_cached(&w, n, &id, 1,
+                        n->kind == MODEL_DIFFERENCE ? NEF_DIFFERENCE : NEF_INTERSECTION,
+                        0, &solid);
+    else if (st == SC_OK)
         st = nef_node(&w, n, &id, 0, &solid);
     nef_publish(c);
     build_imports_done(c, n);

@@ -442,9 +442,14 @@ static int grow(build_nef_cache *cache)
 }
 
 int build_nef_cache_put(build_nef_cache *cache, const model_node *n, uint64_t hash,
-                        nef_solid *solid, const nef_plugin *plugin)
+                        nef_solid *solid, int keep, const nef_plugin *plugin)
 {
     cache->evaluated++;
+    if (!keep) {
+        if (solid)
+            plugin->release(solid);
+        return 1;
+    }
     if (!cache->plugin.handle) {
         char why[600];
         if (!nef_plugin_open(&cache->plugin, why, sizeof why)) {

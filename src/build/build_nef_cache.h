@@ -39,13 +39,14 @@ int build_nef_cache_key(const model_node *n, uint64_t *hash);
 int build_nef_cache_find(build_nef_cache *cache, const model_node *n, uint64_t hash,
                          const nef_solid **solid);
 
-/* Records solid (NULL: empty) as the solid of n (key hash), not yet
- * found until published; the cache takes solid, and releases it at once
- * when an equal subtree is recorded already. plugin is the caller's open
- * plugin. Returns 0 when memory runs out or the plugin does not load
- * again (solid released then). */
+/* Counts one evaluation of n (key hash) and, with keep, records solid
+ * (NULL: empty) as its solid, not found until published. The cache takes
+ * solid, and releases it at once without keep or when an equal subtree
+ * is recorded already. plugin is the caller's open plugin. Returns 0 when
+ * memory runs out or the plugin does not load again (solid released
+ * then). */
 int build_nef_cache_put(build_nef_cache *cache, const model_node *n, uint64_t hash,
-                        nef_solid *solid, const nef_plugin *plugin);
+                        nef_solid *solid, int keep, const nef_plugin *plugin);
 
 /* The number of solids recorded so far: the mark of a parent's start. */
 size_t build_nef_cache_mark(const build_nef_cache *cache);
