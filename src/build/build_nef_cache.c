@@ -105,10 +105,24 @@ static int same_string(const char *a, const char *b)
     return a == b || (a && b && strcmp(a, b) == 0);
 }
 
+/* n bytes at a and b equal (either may be NULL when n is 0). */
+static int same_bytes(const void *a, const void *b, size_t n)
+{
+    return n == 0 || memcmp(a, b, n) == 0;
+}
+
 /* The bits of n numbers equal. */
 static int same_bits(const double *a, const double *b, size_t n)
 {
-    return memcmp(a, b, n * sizeof *a) == 0;
+    return same_bytes(a, b, n * sizeof *a);
+}
+
+/* The point indices of a polyhedron's faces (face_start may be NULL
+ * without faces). */
+static size_t face_indices(const model_node *p)
+{
+    uint32_t faces = p->u.polyhedron.face_count;
+    return faces && p->u.polyhedron.face_start ? p->u.polyhedron.face_start[faces] : 0;
 }
 
 static int same_res(const model_resolution *a, const model_resolution *b)
@@ -167,10 +181,10 @@ static int key_args(const model_node *n, uint64_t *h)
         uint32_t faces = p->u.polyhedron.face_count;
         k = mix_bytes(k, p->u.polyhedron.points,
                       (size_t)p->u.polyhedron.point_count * sizeof(vec3));
-        k = mix_bytes(k, p->u.polyhedron.face_start,
-                      ((size_t)faces + 1) * sizeof(uint32_t));
-        k = mix_bytes(k, p->u.polyhedron.indices,
-                      (size_t)p->u.polyhedron.face_start[faces] * sizeof(uint32_t));
+        if (faces)
+            k = mix_bytes(k, p->u.polyhedron.face_start,
+                          ((size_t)faces + 1) * sizeof(uint32_t));
+        k = mix_bytes(k, p->u.polyhedron.indices, face_indices(p) * sizeof(uint32_t));
         break;
     }
     case MODEL_LINEAR_EXTRUDE: {
@@ -298,12 +312,13 @@ static int same_args(const model_node *a, const model_node *b)
         uint32_t faces = a->u.polyhedron.face_count;
         return a->u.polyhedron.point_count == b->u.polyhedron.point_count &&
                faces == b->u.polyhedron.face_count &&
-               memcmp(a->u.polyhedron.points, b->u.polyhedron.points,
-                      (size_t)a->u.polyhedron.point_count * sizeof(vec3)) == 0 &&
-               memcmp(a->u.polyhedron.face_start, b->u.polyhedron.face_start,
-                      ((size_t)faces + 1) * sizeof(uint32_t)) == 0 &&
-               memcmp(a->u.polyhedron.indices, b->u.polyhedron.indices,
-                      (size_t)a->u.polyhedron.face_start[faces] * sizeof(uint32_t)) == 0;
+               same_bytes(a->u.polyhedron.points, b->u.polyhedron.points,
+                          (size_t)a->u.polyhedron.point_count * sizeof(vec3)) &&
+               (!faces ||
+                same_bytes(a->u.polyhedron.face_start, b->u.polyhedron.face_start,
+                           ((size_t)faces + 1) * sizeof(uint32_t))) &&
+               same_bytes(a->u.polyhedron.indices, b->u.polyhedron.indices,
+                          face_indices(a) * sizeof(uint32_t));
     }
     case MODEL_LINEAR_EXTRUDE: {
         const model_linear_extrude *x = a->u.linear_extrude, *y = b->u.linear_extrude;
@@ -333,10 +348,10 @@ static int same_args(const model_node *a, const model_node *b)
             !same_bits(x->xy, y->xy, (size_t)x->point_count * 2))
             return 0;
         return !x->path_start ||
-               (memcmp(x->path_start, y->path_start,
-                       ((size_t)x->path_count + 1) * sizeof(uint32_t)) == 0 &&
-                memcmp(x->index, y->index,
-                       (size_t)x->path_start[x->path_count] * sizeof(uint32_t)) == 0);
+               (same_bytes(x->path_start, y->path_start,
+                           ((size_t)x->path_count + 1) * sizeof(uint32_t)) &&
+                same_bytes(x->index, y->index,
+                           (size_t)x->path_start[x->path_count] * sizeof(uint32_t)));
     }
     case MODEL_OFFSET: {
         const model_offset *x = a->u.offset, *y = b->u.offset;
@@ -346,7 +361,7 @@ static int same_args(const model_node *a, const model_node *b)
     }
     case MODEL_TEXT: {
         const model_text *x = a->u.text, *y = b->u.text;
-        return x->length == y->length && memcmp(x->text, y->text, x->length) == 0 &&
+        return x->length == y->length && same_bytes(x->text, y->text, x->length) &&
                same_bits(&x->size, &y->size, 1) &&
                same_bits(&x->spacing, &y->spacing, 1) && same_res(&x->res, &y->res) &&
                same_string(x->font, y->font) && same_string(x->direction, y->direction) &&
