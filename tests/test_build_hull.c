@@ -244,6 +244,44 @@ static void test_hull_booleans(void **state)
                   "hull without volume is empty");
 }
 
+/* One difference with a 2D child under two hulls: OpenSCAD 2021.01
+ * evaluates it once, and so warns once (its second hull takes the solid
+ * from its cache, warnings and all); under one hull, twice, as OpenSCAD
+ * caches a child only when its parent has all its children. */
+static void test_hull_boolean_once(void **state)
+{
+    (void)state;
+    static const char *const once[] = {
+        "m.csg:1:34: Mixing 2D and 3D objects is not supported",
+        "m.csg:1:34: Ignoring 2D child object for 3D operation"};
+    sc_scene *s = test_check_warnings(
+        "m.csg",
+        "hull() { difference() { cube(2); square(1); cube(1); } }\n"
+        "multmatrix([[1, 0, 0, 0], [0, 1, 0, 5], [0, 0, 1, 0], [0, 0, 0, 1]]) { hull() { "
+        "difference() { cube(2); square(1); cube(1); } } }\n"
+        "hull() { multmatrix([[1, 0, 0, 0], [0, 1, 0, 10], [0, 0, 1, 0], [0, 0, 0, 1]]) "
+        "{ difference() { cube(2); square(1); cube(1); } } }",
+        0, once, 2);
+    assert_true(inside(s, 1.5, 1.5, 1.5));
+    assert_true(inside(s, 1.5, 6.5, 1.5));
+    assert_true(inside(s, 1.5, 11.5, 1.5));
+    assert_false(inside(s, 0.2, 10.2, 0.2));
+    sc_scene_release(s);
+    static const char *const twice[] = {
+        "m.csg:1:34: Mixing 2D and 3D objects is not supported",
+        "m.csg:1:34: Ignoring 2D child object for 3D operation",
+        "m.csg:2:96: Mixing 2D and 3D objects is not supported",
+        "m.csg:2:96: Ignoring 2D child object for 3D operation"};
+    s = test_check_warnings(
+        "m.csg",
+        "hull() { difference() { cube(2); square(1); cube(1); }\n"
+        "multmatrix([[1, 0, 0, 5], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]) { "
+        "difference() { cube(2); square(1); cube(1); } } }",
+        0, twice, 4);
+    assert_true(inside(s, 3.5, 1, 1));
+    sc_scene_release(s);
+}
+
 static void test_hull_empty(void **state)
 {
     (void)state;
@@ -901,6 +939,7 @@ int main(void)
         cmocka_unit_test(test_hull_extrusions),
         cmocka_unit_test(test_hull_errors),
         cmocka_unit_test(test_hull_booleans),
+        cmocka_unit_test(test_hull_boolean_once),
         cmocka_unit_test(test_hull_empty),
         cmocka_unit_test(test_minkowski),
         cmocka_unit_test(test_minkowski_union),

@@ -16,6 +16,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "build/build_nef_cache.h"
 #include "build/build_twod.h"
 #include "build/scene.h"
 #include "syntax/parse.h"
@@ -23,9 +24,10 @@
 
 /* The region of the children of the first node of text ("group() {...}"),
  * or the status of the failure with its message in error; a warning left
- * by the builder goes to note (when given). */
-static sc_status region_of(const char *text, twod_region *r, char *error, size_t size,
-                           char *note, size_t note_size)
+ * by the builder goes to note (when given). CGAL's solids go to nefs (or
+ * are evaluated where they occur, when it is NULL). */
+static sc_status region_with(const char *text, twod_region *r, char *error, size_t size,
+                             char *note, size_t note_size, build_nef_cache *nefs)
 {
     parse_tree *tree = NULL;
     sc_error e, warning;
@@ -40,7 +42,8 @@ static sc_status region_of(const char *text, twod_region *r, char *error, size_t
                    .error = &e,
                    .faithful = 0,
                    .note = &warning,
-                   .notes = &notes};
+                   .notes = &notes,
+                   .nefs = nefs};
     twod_init(r);
     model *lowered = NULL;
     assert_int_equal(model_lower_twod("m.csg", tree->first, &lowered, &e), SC_OK);
@@ -60,6 +63,12 @@ static sc_status region_of(const char *text, twod_region *r, char *error, size_t
     csg_builder_free(csg);
     parse_tree_free(tree);
     return st;
+}
+
+static sc_status region_of(const char *text, twod_region *r, char *error, size_t size,
+                           char *note, size_t note_size)
+{
+    return region_with(text, r, error, size, note, note_size, NULL);
 }
 
 /* Area of text's region; outers and holes count the contours each way. */
@@ -360,6 +369,115 @@ static void test_mesh_booleans(void **state)
     NEAR(area(text), 16, 40);
 }
 
+/* The area of text's region with CGAL's solids cached in a cache of its
+ * own, and the solids it evaluated and reused. */
+static double cached_area(const char *text, size_t *evaluated, size_t *reused)
+{
+    build_nef_cache *nefs = build_nef_cache_new();
+    assert_non_null(nefs);
+    twod_region r;
+    char message[1024];
+    if (region_with(text, &r, message, sizeof message, NULL, 0, nefs) != SC_OK)
+        fail_msg("unexpected error: %s", message);
+    build_nef_cache_counts(nefs, evaluated, reused);
+    build_nef_cache_free(nefs);
+    double a = twod_area(&r);
+    twod_free(&r);
+    return a;
+}
+
+/* One difference (a 4 x 3 x 2 box with a unit square hole along z),
+ * projected three times, as OpenSCAD's GEB example projects one
+ * intersection: as it is, and turned by two quarter turns. CGAL evaluates
+ * it once, in its own frame, and each projection takes its solid moved
+ * by the transform above it (OpenSCAD's order). Quarter turns are exact,
+ * so the region is the one of evaluating each copy through its
+ * transform: 11 (12 less the hole) united with two 4 x 2 outlines, one
+ * touching it along a side, the other over 5 of it and over the hole:
+ * 11 + 8 + 8 - 5 = 22. An inexact turn (30 degrees about z) moves the
+ * solid as OpenSCAD moves it, each matrix entry taken exactly: the area
+ * stays 11. Equal subtrees that are not booleans, or that differ in one
+ * argument, are not shared. */
+static void test_nef_cache(void **state)
+{
+    (void)state;
+    static const char boolean[] =
+        "group() { difference() { cube(size = [4, 3, 2], center = false); "
+        "multmatrix([[1, 0, 0, 1], [0, 1, 0, 1], [0, 0, 1, -1], [0, 0, 0, 1]]) { "
+        "cube(size = [1, 1, 4], center = false); } } }";
+    char text[4096];
+    snprintf(
+        text, sizeof text,
+        "group() { projection() { %s }\n"
+        "projection() { multmatrix([[1, 0, 0, 0], [0, 0, -1, 0], [0, 1, 0, 0], [0, 0, "
+        "0, 1]]) { %s } }\n"
+        "projection() { multmatrix([[0, 0, 1, 0], [1, 0, 0, 0], [0, 1, 0, 0], [0, 0, "
+        "0, 1]]) { %s } } }",
+        boolean, boolean, boolean);
+    size_t evaluated, reused;
+    double cached = cached_area(text, &evaluated, &reused);
+    assert_int_equal(evaluated, 1);
+    assert_int_equal(reused, 2);
+    assert_true(cached == area(text));
+    NEAR(cached, 22, 40);
+
+    double c = cos(30 * PI / 180), s = sin(30 * PI / 180);
+    snprintf(
+        text, sizeof text,
+        "group() { projection() { %s }\n"
+        "projection() { multmatrix([[%.17g, %.17g, 0, 10], [%.17g, %.17g, 0, 0], [0, 0, "
+        "1, 0], [0, 0, 0, 1]]) { %s } } }",
+        boolean, c, -s, s, c, boolean);
+    cached = cached_area(text, &evaluated, &reused);
+    assert_int_equal(evaluated, 1);
+    assert_int_equal(reused, 1);
+    NEAR(cached, 22, 60);
+    NEAR(cached, area(text), 60);
+
+    /* a cube's side differs in its last bit: two evaluations */
+    snprintf(
+        text, sizeof text,
+        "group() { projection() { difference() { cube(size = [4, 3, 2]); cube(1); } }\n"
+        "projection() { difference() { cube(size = [4, 3, 2.0000000000000004]); "
+        "cube(1); } } }");
+    cached = cached_area(text, &evaluated, &reused);
+    assert_int_equal(evaluated, 2);
+    assert_int_equal(reused, 0);
+    NEAR(cached, 12, 14);
+}
+
+/* OpenSCAD 2021.01 looks a projection's child up in its cache but does not
+ * put it there (it collects its children itself): a difference that is a
+ * projection's child is evaluated again at the next projection of it, and
+ * warns again; below a group, it is cached, and a later projection of it
+ * takes it without a warning. */
+static void test_nef_cache_projection_child(void **state)
+{
+    (void)state;
+    build_nef_cache *nefs = build_nef_cache_new();
+    assert_non_null(nefs);
+    twod_region r;
+    char message[1024], note[1024];
+    assert_int_equal(
+        region_with(
+            "group() { projection() { difference() { cube(2); square(1); cube(1); } }\n"
+            "projection() { group() { difference() { cube(2); square(1); cube(1); } } }\n"
+            "projection() { difference() { cube(2); square(1); cube(1); } } }",
+            &r, message, sizeof message, note, sizeof note, nefs),
+        SC_OK);
+    size_t evaluated, reused;
+    build_nef_cache_counts(nefs, &evaluated, &reused);
+    build_nef_cache_free(nefs);
+    assert_int_equal(evaluated, 2);
+    assert_int_equal(reused, 1);
+    assert_string_equal(note, "1:50: Mixing 2D and 3D objects is not supported\n"
+                              "1:50: Ignoring 2D child object for 3D operation\n"
+                              "2:50: Mixing 2D and 3D objects is not supported\n"
+                              "2:50: Ignoring 2D child object for 3D operation");
+    NEAR(twod_area(&r), 4, 10);
+    twod_free(&r);
+}
+
 static void test_errors(void **state)
 {
     (void)state;
@@ -414,9 +532,14 @@ static void test_top_level(void **state)
 int main(void)
 {
     const struct CMUnitTest tests[] = {
-        cmocka_unit_test(test_cut),           cmocka_unit_test(test_cut_in_plane),
-        cmocka_unit_test(test_outline),       cmocka_unit_test(test_2d_child),
-        cmocka_unit_test(test_mesh_booleans), cmocka_unit_test(test_errors),
+        cmocka_unit_test(test_cut),
+        cmocka_unit_test(test_cut_in_plane),
+        cmocka_unit_test(test_outline),
+        cmocka_unit_test(test_2d_child),
+        cmocka_unit_test(test_mesh_booleans),
+        cmocka_unit_test(test_nef_cache),
+        cmocka_unit_test(test_nef_cache_projection_child),
+        cmocka_unit_test(test_errors),
         cmocka_unit_test(test_top_level),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

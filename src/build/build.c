@@ -68,6 +68,7 @@
 #include "build/build_ctx.h"
 #include "build/build_extrude_faithful.h"
 #include "build/build_hull.h"
+#include "build/build_nef_cache.h"
 #include "build/build_mesh.h"
 #include "build/build_motion.h"
 #include "build/build_revolve.h"
@@ -123,6 +124,7 @@ typedef struct builder {
     /* resize matrices measured so far (build_hull.h) */
     build_resize_cache *resize_cache;
     build_imports imports; /* the files the imports read so far */
+    build_nef_cache *nefs; /* CGAL's solids so far (build_nef_cache.h) */
     /* 2D children ignored in 3D operations, warned of when their parent
      * ends (flush_ignored) */
     ignored_child *ignored;
@@ -156,7 +158,8 @@ static build_ctx context(builder *b, int emit, sc_error *note)
                    .strict = b->strict,
                    .triangles_left = &b->triangles_left,
                    .max_triangles = b->max_triangles,
-                   .imports = &b->imports};
+                   .imports = &b->imports,
+                   .nefs = b->nefs};
     return c;
 }
 
@@ -1133,6 +1136,7 @@ static sc_status build_parts(builder *b)
         sub.triangles_left = b->triangles_left;
         sub.resize_cache = b->resize_cache;
         sub.imports = b->imports;
+        sub.nefs = b->nefs;
         sub.csg = csg_builder_new();
         sub.shading = shading_new();
         uint32_t *results = calloc(count, sizeof *results);
@@ -1207,7 +1211,9 @@ static sc_status build_scene_of(const model *m, model *owned, void *spare,
     b.root_id = CSG_EMPTY;
     b.csg = csg_builder_new();
     b.shading = shading_new();
-    if (!b.csg || !b.shading) {
+    b.nefs = build_nef_cache_new();
+    if (!b.csg || !b.shading || !b.nefs) {
+        build_nef_cache_free(b.nefs);
         csg_builder_free(b.csg);
         shading_free(b.shading);
         model_free(owned);
@@ -1232,6 +1238,7 @@ static sc_status build_scene_of(const model *m, model *owned, void *spare,
         st = build_parts(&b);
     free(b.marks);
     build_resize_cache_free(b.resize_cache);
+    build_nef_cache_free(b.nefs);
     build_imports_free(&b.imports);
     /* Nothing below reads the model: the builder, the shading record and
      * the warnings hold copies of what they need. */

@@ -64,6 +64,9 @@ typedef struct build_ctx {
     /* the load's files read so far, shared by every context of a load;
      * NULL: an import reads its file wherever it is built */
     build_imports *imports;
+    /* the load's CGAL solids by subtree (build_nef_cache.h), shared by
+     * every context of a load; NULL: each is evaluated where it occurs */
+    struct build_nef_cache *nefs;
 } build_ctx;
 
 /* Charges count mesh triangles that what (a node's name) is about to build

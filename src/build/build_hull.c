@@ -62,6 +62,7 @@
 #include "base/grow.h"
 #include "build/build_extrude_faithful.h"
 #include "build/build_mesh.h"
+#include "build/build_nef_cache.h"
 #include "build/build_revolve.h"
 #include "build/build_twod.h"
 #include "build/nef.h"
@@ -1007,6 +1008,7 @@ static sc_status nef_children(const walk *w, const model_node *parent, const aff
         return depth_error(w, parent);
     int first = 1;
     const model_node *mixing = NULL; /* the first 2D child that is not empty */
+    size_t mark = w->c->nefs ? build_nef_cache_mark(w->c->nefs) : 0;
     for (const model_node *n = parent->first_child; n; n = n->next) {
         if (skipped(n) || is_shading(n->kind))
             continue;
@@ -1023,11 +1025,74 @@ static sc_status nef_children(const walk *w, const model_node *parent, const aff
         }
     }
     sc_status st = warn_2d(w, parent, mixing);
+    if (w->c->nefs) /* the parent has all its children */
+        build_nef_cache_publish(w->c->nefs, mark);
     if (st != SC_OK && *out) {
         w->nef->release(*out);
         *out = NULL;
     }
     return st;
+}
+
+/* *out = a copy of solid (NULL: empty) through m, as OpenSCAD transforms
+ * a Nef polyhedron (CGAL_Nef_polyhedron::transform); NULL when empty. */
+static sc_status nef_moved(const walk *w, const model_node *n, const nef_solid *solid,
+                           const affine *m, nef_solid **out)
+{
+    *out = NULL;
+    if (!solid)
+        return SC_OK;
+    char why[512] = "";
+    nef_status ns = w->nef->copy(solid, out, why, sizeof why);
+    affine id = affine_identity();
+    if (ns == NEF_OK && memcmp(m, &id, sizeof id) != 0)
+        ns = w->nef->transform(*out, &m->m[0][0], why, sizeof why);
+    if (ns != NEF_OK) {
+        if (*out)
+            w->nef->release(*out);
+        *out = NULL;
+        return nef_error(w, n, ns, why);
+    }
+    if (w->nef->is_empty(*out)) {
+        w->nef->release(*out);
+        *out = NULL;
+    }
+    return SC_OK;
+}
+
+/* The solid of difference or intersection n through m, evaluated in n's
+ * own frame once per build (build_nef_cache.h), then carried by m, in
+ * OpenSCAD's order: the boolean's Nef polyhedron first, then the
+ * transforms above it. A subtree the cache does not key is evaluated
+ * through m, as everywhere else. Without keep, a solid evaluated here is
+ * not kept (a projection's own child). */
+static sc_status nef_cached(const walk *w, const model_node *n, const affine *m,
+                            int depth, nef_op op, int keep, nef_solid **out)
+{
+    build_nef_cache *cache = w->c->nefs;
+    uint64_t hash;
+    if (!build_nef_cache_key(n, &hash))
+        return nef_children(w, n, m, depth, op, out);
+    const nef_solid *found;
+    if (build_nef_cache_find(cache, n, hash, &found))
+        return nef_moved(w, n, found, m, out);
+    nef_solid *solid = NULL;
+    affine id = affine_identity();
+    sc_status st = nef_children(w, n, &id, depth, op, &solid);
+    if (st == SC_OK)
+        st = nef_moved(w, n, solid, m, out);
+    if (st != SC_OK) {
+        if (solid)
+            w->nef->release(solid);
+        return st;
+    }
+    if (!build_nef_cache_put(cache, n, hash, solid, keep, w->nef)) {
+        if (*out)
+            w->nef->release(*out);
+        *out = NULL;
+        return err_nomem(w->c->error, &n->loc);
+    }
+    return SC_OK;
 }
 
 /* The solid of node n through m, as OpenSCAD evaluates a child of a hull
@@ -1046,6 +1111,10 @@ static sc_status nef_node(const walk *w, const model_node *n, const affine *m, i
         return check_2d(w, n, NULL); /* the empty solid, as OpenSCAD ignores it */
     if (is_group(kind))
         return nef_children(w, n, m, depth + 1, NEF_UNION, out);
+    if ((kind == MODEL_DIFFERENCE || kind == MODEL_INTERSECTION) && c->nefs && !w->check)
+        return nef_cached(w, n, m, depth + 1,
+                          kind == MODEL_DIFFERENCE ? NEF_DIFFERENCE : NEF_INTERSECTION, 1,
+                          out);
     if (kind == MODEL_DIFFERENCE)
         return nef_children(w, n, m, depth + 1, NEF_DIFFERENCE, out);
     if (kind == MODEL_INTERSECTION)
@@ -1158,6 +1227,15 @@ static sc_status nef_node(const walk *w, const model_node *n, const affine *m, i
     return st;
 }
 
+/* Makes every solid the cache recorded found: called where a hull's,
+ * minkowski's or projection's walk ends, when every node below has all
+ * its children. */
+static void nef_publish(const build_ctx *c)
+{
+    if (c->nefs)
+        build_nef_cache_publish(c->nefs, 0);
+}
+
 /* Appends to out what a hull or minkowski takes of node n (a boolean, or a
  * polyhedron or mesh that is not convex) through m: for a hull the
  * vertices of its solid, as one part; for a minkowski the vertices of each
@@ -1196,7 +1274,7 @@ static sc_status solid_parts(const walk *w, const model_node *n, const affine *m
 }
 
 sc_status build_nef_triangles(const build_ctx *c, const model_node *n, const char *owner,
-                              build_resize_cache **cache, vec3 **tris,
+                              build_resize_cache **cache, int own, vec3 **tris,
                               uint32_t *tri_count)
 {
     *tris = NULL;
@@ -1206,8 +1284,14 @@ sc_status build_nef_triangles(const build_ctx *c, const model_node *n, const cha
     nef_solid *solid = NULL;
     affine id = affine_identity();
     sc_status st = nef_ready(&w, n);
-    if (st == SC_OK)
+    int boolean = n->kind == MODEL_DIFFERENCE || n->kind == MODEL_INTERSECTION;
+    if (st == SC_OK && own && boolean && c->nefs)
+        st = nef_cached(&w, n, &id, 1,
+                        n->kind == MODEL_DIFFERENCE ? NEF_DIFFERENCE : NEF_INTERSECTION,
+                        0, &solid);
+    else if (st == SC_OK)
         st = nef_node(&w, n, &id, 0, &solid);
+    nef_publish(c);
     build_imports_done(c, n);
     if (st == SC_OK && solid) {
         nef_parts got = {NULL, NULL, 0};
@@ -1311,6 +1395,7 @@ sc_status build_hull(const build_ctx *c, const model_node *n, int emit,
     partlist parts = {NULL, 0, 0};
     affine id = affine_identity();
     sc_status st = collect(&w, n, &id, 0, &parts);
+    nef_publish(c);
     nef_plugin_close(&nef);
     build_imports_done(c, n);
     pointset all = {NULL, 0, 0};
@@ -1341,6 +1426,7 @@ sc_status build_minkowski(const build_ctx *c, const model_node *n, int emit,
     affine id = affine_identity();
     int not_closed;
     sc_status st = minkowski_parts(&w, n, &id, 0, &parts, &not_closed);
+    nef_publish(c);
     nef_plugin_close(&nef);
     build_imports_done(c, n);
     int flat = 0;

@@ -54,9 +54,12 @@ sc_status build_minkowski(const build_ctx *c, const model_node *n, int emit,
  * booleans, hulls and minkowski sums as Nef polyhedra), in n's parent's
  * frame: *tris gets 3 * *tri_count corners, each triangle turned away from
  * the solid (malloc'd; NULL and 0 for the empty solid). Loads the CGAL
- * plugin; messages begin with owner ("projection"). */
+ * plugin; messages begin with owner ("projection"). With own (n is the
+ * projection's own child), n's solid is looked for in c->nefs but not
+ * kept there, as OpenSCAD caches a child only where its parent collects
+ * its children, which projection does not. */
 sc_status build_nef_triangles(const build_ctx *c, const model_node *n, const char *owner,
-                              build_resize_cache **cache, vec3 **tris,
+                              build_resize_cache **cache, int own, vec3 **tris,
                               uint32_t *tri_count);
 
 /* resize(newsize, auto): the scale (a diagonal matrix in *out) that

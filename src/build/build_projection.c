@@ -438,7 +438,11 @@ static sc_status nef_soup(pwalk *w, const model_node *n, soup *s)
 {
     vec3 *tris = NULL;
     uint32_t count = 0;
-    sc_status st = build_nef_triangles(w->c, n, "projection", &w->cache, &tris, &count);
+    int own = 0; /* the projection's own child, which OpenSCAD does not cache */
+    for (const model_node *k = w->proj->first_child; k && !own; k = k->next)
+        own = k == n;
+    sc_status st =
+        build_nef_triangles(w->c, n, "projection", &w->cache, own, &tris, &count);
     for (uint32_t t = 0; st == SC_OK && t < count; t++) {
         if (!add_tri(s, tris[3 * t], tris[3 * t + 1], tris[3 * t + 2]))
             st = err_nomem(w->c->error, &n->loc);

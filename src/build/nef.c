@@ -26,7 +26,8 @@ int nef_plugin_open(nef_plugin *plugin, char *err, size_t err_size)
     static const char *const names[] = {
         "spancast_nef_from_mesh", "spancast_nef_empty",    "spancast_nef_apply",
         "spancast_nef_is_empty",  "spancast_nef_vertices", "spancast_nef_convex_parts",
-        "spancast_nef_triangles", "spancast_nef_release"};
+        "spancast_nef_triangles", "spancast_nef_release",  "spancast_nef_copy",
+        "spancast_nef_transform"};
     enum { COUNT = sizeof names / sizeof names[0] };
     memset(plugin, 0, sizeof *plugin);
     pthread_mutex_lock(&nef_lock);
@@ -45,6 +46,8 @@ int nef_plugin_open(nef_plugin *plugin, char *err, size_t err_size)
     *(void **)&plugin->convex_parts = fns[5];
     *(void **)&plugin->triangles = fns[6];
     *(void **)&plugin->release = fns[7];
+    *(void **)&plugin->copy = fns[8];
+    *(void **)&plugin->transform = fns[9];
     plugin->handle = handle;
     return 1;
 }

@@ -68,6 +68,13 @@ typedef struct nef_plugin {
     /* *a = *a op b; b is left as it is. */
     nef_status (*apply)(nef_solid *a, nef_op op, const nef_solid *b, char *err,
                         size_t err_size);
+    /* *out = a copy of s (CGAL shares the two until one changes). */
+    nef_status (*copy)(const nef_solid *s, nef_solid **out, char *err, size_t err_size);
+    /* s = the image of s under x -> A x + t, m the rows of [A | t] (12
+     * numbers), as OpenSCAD 2021.01 transforms a Nef polyhedron
+     * (CGAL_Nef_polyhedron::transform): exactly, each entry the rational
+     * its double is; a singular A (determinant 0 in doubles) empties s. */
+    nef_status (*transform)(nef_solid *s, const double m[12], char *err, size_t err_size);
     /* Whether the solid has no volume. */
     int (*is_empty)(const nef_solid *s);
     /* The vertices of the solid, rounded to doubles, as one part. */

@@ -357,6 +357,37 @@ spancast_nef_apply(nef_solid *a, nef_op op, const nef_solid *b, char *err,
         err, err_size);
 }
 
+__attribute__((visibility("default"))) nef_status
+spancast_nef_copy(const nef_solid *s, nef_solid **out, char *err, size_t err_size)
+{
+    *out = nullptr;
+    return guarded([&] { *out = new nef_solid{s->nef}; }, err, err_size);
+}
+
+// As CGAL_Nef_polyhedron::transform: a matrix whose determinant (in
+// doubles) is 0 empties the solid; any other is taken exactly, each entry
+// the rational number its double is, and maps the solid exactly.
+__attribute__((visibility("default"))) nef_status
+spancast_nef_transform(nef_solid *s, const double m[12], char *err, size_t err_size)
+{
+    return guarded(
+        [&] {
+            if (s->nef.is_empty())
+                return;
+            double det = m[0] * (m[5] * m[10] - m[6] * m[9]) -
+                         m[1] * (m[4] * m[10] - m[6] * m[8]) +
+                         m[2] * (m[4] * m[9] - m[5] * m[8]);
+            if (det == 0) {
+                s->nef = Nef(Nef::EMPTY);
+                return;
+            }
+            Kernel::Aff_transformation_3 t(m[0], m[1], m[2], m[3], m[4], m[5], m[6], m[7],
+                                           m[8], m[9], m[10], m[11], 1);
+            s->nef.transform(t);
+        },
+        err, err_size);
+}
+
 __attribute__((visibility("default"))) int spancast_nef_is_empty(const nef_solid *s)
 {
     return s->nef.is_empty();
