@@ -370,36 +370,48 @@ static void test_multmatrix(void **state)
     sc_scene_release(s);
 }
 
-static void test_multmatrix_errors(void **state)
+/* Matrices of other shapes render as OpenSCAD 2021.01 reads them, without
+ * a word (test_model has the rule): the cube where the identity, filled
+ * in, puts it, and scaled down by a bottom right entry other than 1. */
+static void test_multmatrix_shapes(void **state)
 {
     (void)state;
-    const char *shape = "m.csg:2:3: error: multmatrix: matrix must be 4x4 numbers";
-    check_error(
-        "group() {\n  multmatrix([[1, 0, 0], [0, 1, 0], [0, 0, 1]]) { cube(); }\n}",
-        SC_ERR_SEMANTIC, shape);
-    check_error("\n  multmatrix([[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0]]) { cube(); }",
-                SC_ERR_SEMANTIC, shape);
-    check_error(
-        "\n  multmatrix(m = [[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0]]) {"
-        "cube(); }",
-        SC_ERR_SEMANTIC, shape);
-    check_error(
-        "\n  multmatrix([[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, true]]) {"
-        "cube(); }",
-        SC_ERR_SEMANTIC, shape);
-    check_error("\n  multmatrix(m = 1) { cube(); }", SC_ERR_SEMANTIC, shape);
-    check_error(
-        "\n  multmatrix([[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1], [0, 0, "
-        "0, 1]]) { cube(); }",
-        SC_ERR_SEMANTIC, shape);
-    check_error("multmatrix([[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0.5, 0, 1]]) "
-                "{ cube(); }",
-                SC_ERR_SEMANTIC,
-                "m.csg:1:1: error: multmatrix: bottom row must be [0, 0, 0, 1]");
-    check_error("multmatrix([[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 2]]) { "
-                "cube(); }",
-                SC_ERR_SEMANTIC,
-                "m.csg:1:1: error: multmatrix: bottom row must be [0, 0, 0, 1]");
+    static const struct {
+        const char *text;
+        double x, scale;
+    } cases[] = {
+        {"group() {\n  multmatrix([[1, 0, 0], [0, 1, 0], [0, 0, 1]]) { cube(); }\n}", 0,
+         1},
+        {"multmatrix([[1, 0, 0, 4], [0, 1, 0, 0], [0, 0, 1, 0]]) { cube(); }", 4, 1},
+        {"multmatrix(m = [[1, 0, 0, 4], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0]]) { "
+         "cube(); }",
+         4, 1},
+        {"multmatrix([[1, 0, 0, 4], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, true]]) { "
+         "cube(); }",
+         4, 1},
+        {"multmatrix(m = 1) { cube(); }", 0, 1},
+        {"multmatrix([[1, 0, 0, 4], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1], [0, 0, 0, "
+         "1]]) "
+         "{ cube(); }",
+         4, 1},
+        {"multmatrix([[1, 0, 0, 4], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0.5, 0, 1]]) { "
+         "cube(); }",
+         4, 1},
+        {"multmatrix([[1, 0, 0, 4], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 2]]) { cube(); "
+         "}",
+         2, 0.5},
+    };
+    for (size_t i = 0; i < sizeof cases / sizeof *cases; i++) {
+        sc_scene *s = load(cases[i].text);
+        double lo[3], hi[3];
+        assert_true(sc_scene_bounds(s, lo, hi));
+        assert_near(lo[0], cases[i].x);
+        assert_near(hi[0], cases[i].x + cases[i].scale);
+        assert_near(lo[1], 0);
+        assert_near(hi[2], cases[i].scale);
+        assert_int_equal(sc_scene_warning_count(s), 0);
+        sc_scene_release(s);
+    }
 }
 
 /* A nan or inf entry (OpenSCAD 2021.01 exports 0/0 as nan, 1/0 as inf):
@@ -1196,7 +1208,7 @@ int main(void)
         cmocka_unit_test(test_wrong_types),
         cmocka_unit_test(test_booleans),
         cmocka_unit_test(test_multmatrix),
-        cmocka_unit_test(test_multmatrix_errors),
+        cmocka_unit_test(test_multmatrix_shapes),
         cmocka_unit_test(test_multmatrix_not_finite),
         cmocka_unit_test(test_singular),
         cmocka_unit_test(test_colors),

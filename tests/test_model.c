@@ -10,6 +10,7 @@
 #include <cmocka.h>
 
 #include <math.h>
+#include <stdio.h>
 #include <string.h>
 
 #include "model/model.h"
@@ -319,6 +320,64 @@ static void test_operations(void **state)
     release(&l);
 }
 
+/* multmatrix(m) as OpenSCAD 2021.01 reads it (transform.cc), without a
+ * word: the identity, each entry that m has as a number replacing the
+ * identity's (missing rows and columns, extra ones and entries that are
+ * not numbers leave it), then everything divided by the bottom right
+ * entry when that is not 1, and the rest of the bottom row dropped; an
+ * entry that is not finite after the division removes the subtree. Each
+ * was checked with openscad -o x.stl on the same line. */
+static void test_matrix_as_openscad_reads_it(void **state)
+{
+    (void)state;
+    static const struct {
+        const char *m;
+        double want[3][4];
+        int not_finite;
+    } cases[] = {
+        {"5", {{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}}, 0},
+        {"[]", {{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}}, 0},
+        {"[1, 2, 3]", {{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}}, 0},
+        {"[[1, 0, 0, 5], [0, 1, 0, 0], [0, 0, 1, 0]]",
+         {{1, 0, 0, 5}, {0, 1, 0, 0}, {0, 0, 1, 0}},
+         0},
+        {"[[1, 0, 0, \"a\"], [0, 1, 0, 2]]",
+         {{1, 0, 0, 0}, {0, 1, 0, 2}, {0, 0, 1, 0}},
+         0},
+        {"[[2, 0, 0, 1, 7], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1], [1, 1, 1, 1]]",
+         {{2, 0, 0, 1}, {0, 1, 0, 0}, {0, 0, 1, 0}},
+         0},
+        {"[[1, 0, 0, 3], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 2]]",
+         {{0.5, 0, 0, 1.5}, {0, 0.5, 0, 0}, {0, 0, 0.5, 0}},
+         0},
+        {"[[1, 0, 0, 3], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, -1]]",
+         {{-1, 0, 0, -3}, {0, -1, 0, 0}, {0, 0, -1, 0}},
+         0},
+        {"[[1, 0, 0, 3], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0.5, 1]]",
+         {{1, 0, 0, 3}, {0, 1, 0, 0}, {0, 0, 1, 0}},
+         0},
+        {"[[1, 0, 0, 3], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, true]]",
+         {{1, 0, 0, 3}, {0, 1, 0, 0}, {0, 0, 1, 0}},
+         0},
+        {"[[1, 0, 0, 3], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 0]]", {{0}}, 1},
+        {"[[1, 0, 0, 3], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, nan, 1]]", {{0}}, 1},
+    };
+    for (size_t i = 0; i < sizeof cases / sizeof *cases; i++) {
+        char text[256];
+        snprintf(text, sizeof text, "multmatrix(%s) cube();", cases[i].m);
+        lowered l = lower(text);
+        const model_node *x = l.m->first;
+        assert_int_equal(x->kind, MODEL_XFORM);
+        assert_int_equal(x->not_finite, cases[i].not_finite);
+        for (int r = 0; r < 3 && !cases[i].not_finite; r++)
+            for (int k = 0; k < 4; k++)
+                if (x->u.xform->m[r][k] != cases[i].want[r][k])
+                    fail_msg("multmatrix(%s): entry [%d][%d] is %g, OpenSCAD's is %g",
+                             cases[i].m, r, k, x->u.xform->m[r][k], cases[i].want[r][k]);
+        release(&l);
+    }
+}
+
 static void test_what_is_lowered(void **state)
 {
     (void)state;
@@ -574,8 +633,6 @@ static void test_errors(void **state)
                 "m.csg:1:11: error: 'roof' is not supported yet");
     check_error("sphere($fn = 1e9);", SC_ERR_LIMIT,
                 "m.csg:1:14: error: $fn 1e+09 is too large (limit is 10000)");
-    check_error("multmatrix([[1, 0], [0, 1]]) { cube(); }", SC_ERR_SEMANTIC,
-                "m.csg:1:1: error: multmatrix: matrix must be 4x4 numbers");
     check_error("color([1, \"x\"]) { cube(); }", SC_ERR_SEMANTIC,
                 "m.csg:1:11: error: wrong type for argument 'c' of 'color' (expected a "
                 "vector of numbers or a colour name)");
@@ -675,6 +732,7 @@ int main(void)
         cmocka_unit_test(test_polyhedron_malformed),
         cmocka_unit_test(test_polygon_malformed),
         cmocka_unit_test(test_operations),
+        cmocka_unit_test(test_matrix_as_openscad_reads_it),
         cmocka_unit_test(test_what_is_lowered),
         cmocka_unit_test(test_twod_context),
         cmocka_unit_test(test_points_context),

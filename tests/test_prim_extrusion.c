@@ -805,9 +805,6 @@ static void test_build_errors(void **state)
     check_error("linear_extrude(height = 1, center = 0) { square(); }", SC_ERR_SEMANTIC,
                 "m.csg:1:37: error: wrong type for argument 'center' of 'linear_extrude' "
                 "(expected true or false)");
-    check_error(
-        "linear_extrude(height = 1) { multmatrix([[1, 0], [0, 1]]) { square(); } }",
-        SC_ERR_SEMANTIC, "m.csg:1:30: error: multmatrix: matrix must be 4x4 numbers");
 
     /* the depth guard: 1001 nested 2D groups */
     size_t levels = 1001;

@@ -431,10 +431,6 @@ static void test_errors(void **state)
                 "m.csg:1:11: error: 'roof' inside group is not supported yet");
     check_error("group() { square(1e13); }", SC_ERR_LIMIT,
                 "m.csg:1:11: error: square: coordinates out of range (limit is 1e+12)");
-    check_error("group() { multmatrix([[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0]]) { "
-                "square(1); } }",
-                SC_ERR_SEMANTIC,
-                "m.csg:1:11: error: multmatrix: matrix must be 4x4 numbers");
     /* the depth guard: 1001 nested groups under the outer one */
     size_t depth = 1001, len = 0;
     char *text = malloc(depth * 12 + 64);

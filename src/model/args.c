@@ -106,32 +106,28 @@ sc_status model_read_cylinder(const model_reader *r, const parse_node *n, double
 sc_status model_matrix(const model_reader *c, const parse_node *n, double a[4][4],
                        int *not_finite)
 {
+    (void)c;
     static const double id[4][4] = {
         {1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}, {0, 0, 0, 1}};
     memcpy(a, id, sizeof id);
     const parse_value *v = model_arg(n, "m", 0);
-    int ok = !v || (v->kind == PARSE_VECTOR && v->u.vector.count == 4);
-    for (uint32_t r = 0; v && ok && r < 4; r++) {
+    uint32_t rows = v && v->kind == PARSE_VECTOR ? v->u.vector.count : 0;
+    for (uint32_t r = 0; r < 4 && r < rows; r++) {
         const parse_value *row = &v->u.vector.items[r];
-        ok = row->kind == PARSE_VECTOR && row->u.vector.count == 4;
-        for (uint32_t k = 0; ok && k < 4; k++) {
-            ok = row->u.vector.items[k].kind == PARSE_NUMBER;
-            if (ok)
+        uint32_t cols = row->kind == PARSE_VECTOR ? row->u.vector.count : 0;
+        for (uint32_t k = 0; k < 4 && k < cols; k++)
+            if (row->u.vector.items[k].kind == PARSE_NUMBER)
                 a[r][k] = row->u.vector.items[k].u.number;
-        }
     }
-    if (!ok)
-        return err_set(c->error, SC_ERR_SEMANTIC, &n->loc,
-                       "multmatrix: matrix must be 4x4 numbers");
+    double w = a[3][3];
+    if (w != 1)
+        for (int r = 0; r < 4; r++)
+            for (int k = 0; k < 4; k++)
+                a[r][k] /= w;
     *not_finite = 0;
     for (int r = 0; r < 4; r++)
         for (int k = 0; k < 4; k++)
             *not_finite |= !isfinite(a[r][k]);
-    if (*not_finite)
-        return SC_OK;
-    if (a[3][0] != 0 || a[3][1] != 0 || a[3][2] != 0 || a[3][3] != 1)
-        return err_set(c->error, SC_ERR_SEMANTIC, &n->loc,
-                       "multmatrix: bottom row must be [0, 0, 0, 1]");
     return SC_OK;
 }
 

@@ -59,10 +59,15 @@ sc_status model_read_sphere(const model_reader *r, const parse_node *n, double *
  * r, d, d1, d2: r1/d1 and r2/d2 win over r/d, a diameter over a radius. */
 sc_status model_read_cylinder(const model_reader *r, const parse_node *n, double *h,
                               double *r1, double *r2, int *center, model_resolution *res);
-/* multmatrix(m): a row-major 4x4 affine matrix with the bottom row [0, 0,
- * 0, 1]; no argument is the identity. An entry that is nan or inf (what
- * OpenSCAD writes for 0/0 and 1/0) sets *not_finite, the rest unchecked:
- * OpenSCAD 2021.01 removes such a multmatrix's subtree (model.h). */
+/* multmatrix(m), row-major, as OpenSCAD 2021.01 reads it (transform.cc),
+ * without a word: the identity, each entry m has as a number replacing the
+ * identity's (missing rows and columns, extra ones, and entries that are
+ * not numbers leave it; m not a vector, or none, is the identity), then
+ * all of it divided by the bottom right entry when that is not 1; the
+ * rest of the bottom row is then dropped (the affine part is rows 0 to
+ * 2). An entry that is nan or inf after the division (what OpenSCAD
+ * writes for 0/0 and 1/0; a bottom right 0) sets *not_finite: OpenSCAD
+ * removes such a multmatrix's subtree (model.h). Never fails. */
 sc_status model_matrix(const model_reader *r, const parse_node *n, double m[4][4],
                        int *not_finite);
 /* multmatrix(m) as model_matrix reads it, its 3x4 affine part allocated
