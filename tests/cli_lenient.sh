@@ -32,6 +32,21 @@ warns() {
         fail "$model: stderr '$(cat err.txt)', want '$expected'"
 }
 
+# refuses MODEL EXPECTED [render options]: spancast render MODEL --strict
+# prints exactly EXPECTED on stderr, exits 1 and writes no image.
+refuses() {
+    local model=$1 expected=$2
+    shift 2
+    check
+    rm -f strict.png
+    "$bin" render "$model" -o strict.png --imgsize=64,48 -q --strict "$@" 2>err.txt
+    local rc=$?
+    [ "$rc" = 1 ] || fail "$model --strict $*: exit $rc: $(cat err.txt)"
+    [ "$(cat err.txt)" = "$expected" ] ||
+        fail "$model --strict $*: stderr '$(cat err.txt)', want '$expected'"
+    [ -e strict.png ] && fail "$model --strict $*: an image was written"
+}
+
 # pixel IMAGE X Y: the 8-bit values of one pixel ("R G B").
 pixel() {
     oiiotool "$1" --cut "1x1+$2+$3" -d uint8 -o px.png &&
@@ -979,15 +994,74 @@ pct_singular.csg:6:4: warning: Ignoring 2D child object for 3D operation" $mode
         # shellcheck disable=SC2086
         same "$model" pct_ref.csg $mode
     done
-    # --strict: the polygon's point is the error
-    check
-    rm -f strict.png
+    # --strict: the first warning is the error
     # shellcheck disable=SC2086
-    "$bin" render pct.csg -o strict.png -q --strict $mode 2>err.txt &&
-        fail "pct.csg --strict $mode: exit 0"
-    [ "$(cat err.txt)" = "pct.csg:9:37: error: wrong type for argument 'points' of 'polygon' (expected a vector of [x, y] points)" ] ||
-        fail "pct.csg --strict $mode: $(cat err.txt)"
-    [ -e strict.png ] && fail "pct.csg --strict $mode: an image was written"
+    {
+        refuses pct.csg "pct.csg:5:3: error: 2D child object in a 3D operation" $mode
+        refuses pct_top.csg "pct_top.csg:3:36: error: wrong type for argument 'points' of 'polygon' (expected a vector of [x, y] points)" $mode
+    }
+done
+
+# ---- --strict: a child of the other dimension is the error ----
+# OpenSCAD 2021.01 ignores a 2D child of a 3D operation and a 3D child of
+# a 2D one with its warnings "Mixing 2D and 3D objects is not supported"
+# and "Ignoring 2D child object for 3D operation" (or 3D ... 2D), at the
+# top level, in 2D operations and extrusions, in hull, minkowski and
+# projection (openscad -o /abs/x.stl x.csg, -o /abs/x.dxf for 2D). With
+# --strict the first of them is the error, at its position.
+square1='square(size = [1, 1], center = false);'
+printf '%s\n%s\n' "$cube1" "$square1" >dim_top.csg
+printf '%s\n%s\n' "$square1" "$cube1" >dim_top2d.csg
+printf 'hull() {\n\t%s\n\t%s\n}\n' "$cube1" "$square1" >dim_hull.csg
+printf 'minkowski() {\n\t%s\n\t%s\n}\n' "$cube1" "$square1" >dim_mink.csg
+printf 'projection(cut = true) {\n\t%s\n\t%s\n}\n' "$cube1" "$square1" >dim_cut.csg
+printf 'projection(cut = false) {\n\tunion() {\n\t\t%s\n\t\t%s\n\t}\n}\n' "$cube1" "$square1" >dim_proj.csg
+printf 'projection(cut = false) {\n\thull() {\n\t\t%s\n\t\t%s\n\t}\n}\n' "$cube1" "$square1" >dim_proj_hull.csg
+printf 'projection(cut = true) {\n\tdifference() {\n\t\t%s\n\t\t%s\n\t}\n}\n' "$cube1" "$square1" >dim_proj_cut.csg
+printf 'hull() {\n\tunion() {\n\t\t%s\n\t\t%s\n\t}\n}\n' "$cube1" "$square1" >dim_hull_union.csg
+printf 'linear_extrude(height = 1) {\n\thull() {\n\t\t%s\n\t\t%s\n\t}\n}\n' "$square1" "$cube1" >dim_hull2d.csg
+printf 'resize(newsize = [2, 2, 2]) {\n\t%s\n\t%s\n}\n' "$cube1" "$square1" >dim_resize.csg
+for mode in "" --faithful; do
+    # shellcheck disable=SC2086
+    {
+        warns dim_top.csg "dim_top.csg:2:1: warning: Mixing 2D and 3D objects is not supported
+dim_top.csg:2:1: warning: Ignoring 2D child object for 3D operation" $mode
+        warns dim_top2d.csg "dim_top2d.csg:2:1: warning: Mixing 2D and 3D objects is not supported
+dim_top2d.csg:2:1: warning: Ignoring 3D child object for 2D operation" $mode
+        warns dim_hull.csg "dim_hull.csg:3:2: warning: Mixing 2D and 3D objects is not supported
+dim_hull.csg:3:2: warning: Ignoring 2D child object for 3D operation" $mode
+        warns dim_mink.csg "dim_mink.csg:3:2: warning: Mixing 2D and 3D objects is not supported
+dim_mink.csg:3:2: warning: Ignoring 2D child object for 3D operation" $mode
+        warns dim_cut.csg "dim_cut.csg:3:2: warning: Ignoring 2D child object for 3D operation" $mode
+        warns dim_proj.csg "dim_proj.csg:4:3: warning: Mixing 2D and 3D objects is not supported
+dim_proj.csg:4:3: warning: Ignoring 2D child object for 3D operation" $mode
+        warns dim_proj_hull.csg "dim_proj_hull.csg:4:3: warning: Mixing 2D and 3D objects is not supported
+dim_proj_hull.csg:4:3: warning: Ignoring 2D child object for 3D operation" $mode
+        warns dim_proj_cut.csg "dim_proj_cut.csg:4:3: warning: Mixing 2D and 3D objects is not supported
+dim_proj_cut.csg:4:3: warning: Ignoring 2D child object for 3D operation" $mode
+        warns dim_hull_union.csg "dim_hull_union.csg:4:3: warning: Mixing 2D and 3D objects is not supported
+dim_hull_union.csg:4:3: warning: Ignoring 2D child object for 3D operation" $mode
+        warns dim_hull2d.csg "dim_hull2d.csg:4:3: warning: Mixing 2D and 3D objects is not supported
+dim_hull2d.csg:4:3: warning: Ignoring 3D child object for 2D operation" $mode
+        refuses dim_top.csg "dim_top.csg:2:1: error: 2D child object in a 3D operation" $mode
+        refuses dim_top2d.csg "dim_top2d.csg:2:1: error: 3D child object in a 2D operation" $mode
+        refuses dim_hull.csg "dim_hull.csg:3:2: error: 2D child object in a 3D operation" $mode
+        refuses dim_mink.csg "dim_mink.csg:3:2: error: 2D child object in a 3D operation" $mode
+        refuses dim_cut.csg "dim_cut.csg:3:2: error: 2D child object in a 3D operation" $mode
+        refuses dim_proj.csg "dim_proj.csg:4:3: error: 2D child object in a 3D operation" $mode
+        refuses dim_proj_hull.csg "dim_proj_hull.csg:4:3: error: 2D child object in a 3D operation" $mode
+        refuses dim_proj_cut.csg "dim_proj_cut.csg:4:3: error: 2D child object in a 3D operation" $mode
+        refuses dim_hull_union.csg "dim_hull_union.csg:4:3: error: 2D child object in a 3D operation" $mode
+        refuses dim_hull2d.csg "dim_hull2d.csg:4:3: error: 3D child object in a 2D operation" $mode
+        warns dim_resize.csg "dim_resize.csg:3:2: warning: Mixing 2D and 3D objects is not supported
+dim_resize.csg:3:2: warning: Ignoring 2D child object for 3D operation" $mode
+        refuses dim_resize.csg "dim_resize.csg:3:2: error: 2D child object in a 3D operation" $mode
+        refuses extrude.csg "extrude.csg:3:2: error: 3D child object in a 2D operation" $mode
+        refuses union.csg "union.csg:6:3: error: 3D child object in a 2D operation" $mode
+        refuses cut.csg "cut.csg:4:3: error: 3D child object in a 2D operation" $mode
+        # an empty child mixes nothing: its "Ignoring" is the error
+        refuses e_zero.csg "e_zero.csg:3:2: error: 2D child object in a 3D operation" $mode
+    }
 done
 
 # ---- a lossy mask ----

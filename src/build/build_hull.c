@@ -551,11 +551,11 @@ static sc_status warn_2d(const walk *w, const model_node *parent,
 {
     sc_status st = SC_OK;
     if (mixing)
-        st = build_note(w->c, &mixing->loc, "Mixing 2D and 3D objects is not supported");
+        st = build_mixing(w->c, &mixing->loc, 0);
     for (const model_node *n = parent->first_child; n && st == SC_OK; n = n->next) {
         if (skipped(n) || is_shading(n->kind) || !is_2d(n))
             continue;
-        st = build_note(w->c, &n->loc, "Ignoring 2D child object for 3D operation");
+        st = build_ignoring(w->c, &n->loc, 0);
     }
     return st;
 }

@@ -332,11 +332,11 @@ static sc_status ignored_2d(const build_ctx *c, const model_node *parent,
 {
     sc_status st = SC_OK;
     if (mixing)
-        st = build_note(c, &mixing->loc, "Mixing 2D and 3D objects is not supported");
+        st = build_mixing(c, &mixing->loc, 0);
     for (const model_node *n = parent->first_child; n && st == SC_OK; n = n->next) {
         if ((n->modifiers & (MODEL_MOD_DISABLE | MODEL_MOD_BACKGROUND)) || !flat(n))
             continue;
-        st = build_note(c, &n->loc, "Ignoring 2D child object for 3D operation");
+        st = build_ignoring(c, &n->loc, 0);
     }
     return st;
 }

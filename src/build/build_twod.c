@@ -483,9 +483,9 @@ static sc_status ignore_3d(const eval *e, const model_node *k, int mixing)
 {
     sc_status st = SC_OK;
     if (mixing)
-        st = build_note(e->c, &k->loc, "Mixing 2D and 3D objects is not supported");
+        st = build_mixing(e->c, &k->loc, 1);
     if (st == SC_OK)
-        st = build_note(e->c, &k->loc, "Ignoring 3D child object for 2D operation");
+        st = build_ignoring(e->c, &k->loc, 1);
     return st;
 }
 
@@ -499,7 +499,7 @@ static sc_status ignore_3d_children(const eval *e, const model_node *first, int 
     for (const model_node *k = twod_walk_next(first); mixing && k;
          k = twod_walk_next(k->next)) {
         if (build_dim(k, e->in_2d) == 3 && build_presence_3d(k, e->in_2d) == BUILD_SOME) {
-            st = build_note(e->c, &k->loc, "Mixing 2D and 3D objects is not supported");
+            st = build_mixing(e->c, &k->loc, 1);
             break;
         }
     }
