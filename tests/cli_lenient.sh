@@ -1064,6 +1064,39 @@ dim_resize.csg:3:2: warning: Ignoring 2D child object for 3D operation" $mode
     }
 done
 
+# ---- a projection without a 3D child in a 3D operation ----
+# OpenSCAD 2021.01 makes no geometry of a projection whose children are
+# all 2D, so a hull or minkowski (or a union or difference in them) says
+# nothing of it; only projection(cut = true) ignores its own 2D child
+# (openscad -o /abs/x.stl x.csg prints exactly these).
+printf 'hull() {\n\t%s\n\tprojection(cut = false) {\n\t\t%s\n\t}\n}\n' "$cube1" "$square1" >nop_hull.csg
+printf 'hull() {\n\t%s\n\tprojection(cut = true) {\n\t\t%s\n\t}\n}\n' "$cube1" "$square1" >nop_hull_cut.csg
+printf 'minkowski() {\n\t%s\n\tprojection(cut = false) {\n\t\t%s\n\t}\n}\n' "$cube1" "$square1" >nop_mink.csg
+printf 'hull() {\n\t%s\n\tunion() {\n\t\tprojection(cut = false) {\n\t\t\t%s\n\t\t}\n\t}\n}\n' "$cube1" "$square1" >nop_hull_union.csg
+printf 'minkowski() {\n\t%s\n\tdifference() {\n\t\t%s\n\t\tprojection(cut = true) {\n\t\t\t%s\n\t\t}\n\t}\n}\n' "$cube1" "$cube1" "$square1" >nop_mink_diff.csg
+printf 'hull() {\n\t%s\n\tprojection(cut = false) {\n\t\t%s\n\t}\n\t%s\n}\n' "$cube1" "$square1" "$square1" >nop_hull_then.csg
+printf 'hull() {\n\t%s\n}\n' "$cube1" >nop_ref.csg
+printf 'minkowski() {\n\t%s\n\t%s\n}\n' "$cube1" "$cube1" >nop_mink_ref.csg
+for mode in "" --faithful; do
+    # shellcheck disable=SC2086
+    {
+        warns nop_hull.csg "" $mode
+        same nop_hull.csg nop_ref.csg $mode
+        warns nop_hull_cut.csg "nop_hull_cut.csg:4:3: warning: Ignoring 2D child object for 3D operation" $mode
+        same nop_hull_cut.csg nop_ref.csg $mode
+        warns nop_mink.csg "" $mode
+        same nop_mink.csg nop_ref.csg $mode
+        warns nop_hull_union.csg "" $mode
+        same nop_hull_union.csg nop_ref.csg $mode
+        warns nop_mink_diff.csg "nop_mink_diff.csg:6:4: warning: Ignoring 2D child object for 3D operation" $mode
+        same nop_mink_diff.csg nop_mink_ref.csg $mode
+        warns nop_hull_then.csg "nop_hull_then.csg:6:2: warning: Mixing 2D and 3D objects is not supported
+nop_hull_then.csg:6:2: warning: Ignoring 2D child object for 3D operation" $mode
+        same nop_hull_then.csg nop_ref.csg $mode
+        warns nop_hull.csg "" --strict $mode
+    }
+done
+
 # ---- a lossy mask ----
 warns cube_ref.csg "spancast: warning: --mask=m.jpg: JPEG is lossy, so the mask is no longer exactly 0 and 255 at the model's edges (.png, .tif and .exr are exact)" --mask=m.jpg
 check

@@ -523,10 +523,21 @@ static int skipped(const model_node *n)
 
 /* Whether n is 2D (a 2D shape, or an operation whose first child with a
  * dimension is 2D: build_dim), which a 3D hull, minkowski or resize
- * ignores as OpenSCAD 2021.01 does (its collectChildren3D). */
+ * ignores as OpenSCAD 2021.01 does (its collectChildren3D); a projection
+ * is, also one without a 3D child (no_geometry), so that check_2d reads
+ * its children. */
 static int is_2d(const model_node *n)
 {
     return build_dim(n, 0) == 2;
+}
+
+/* Whether n is a projection without a 3D child (build_projects), of which
+ * OpenSCAD 2021.01 makes no geometry: its children give their own
+ * warnings, but it neither mixes nor is ignored, as in the 3D walk
+ * (build.c). */
+static int no_geometry(const model_node *n)
+{
+    return n->kind == MODEL_PROJECTION && !build_projects(n);
 }
 
 /* A 2D child n: checked through the 2D engine, for its errors (and the
@@ -536,7 +547,7 @@ static sc_status check_2d(const walk *w, const model_node *n, const model_node *
 {
     int empty;
     sc_status st = build_twod_check(w->c, n, &empty);
-    if (mixing && !*mixing && !empty)
+    if (mixing && !*mixing && !empty && !no_geometry(n))
         *mixing = n;
     return st;
 }
@@ -553,7 +564,7 @@ static sc_status warn_2d(const walk *w, const model_node *parent,
     if (mixing)
         st = build_mixing(w->c, &mixing->loc, 0);
     for (const model_node *n = parent->first_child; n && st == SC_OK; n = n->next) {
-        if (skipped(n) || is_shading(n->kind) || !is_2d(n))
+        if (skipped(n) || is_shading(n->kind) || !is_2d(n) || no_geometry(n))
             continue;
         st = build_ignoring(w->c, &n->loc, 0);
     }
