@@ -1097,6 +1097,61 @@ nop_hull_then.csg:6:2: warning: Ignoring 2D child object for 3D operation" $mode
     }
 done
 
+# ---- '%' children in 2D operations, projection and hull ----
+# OpenSCAD 2021.01's render evaluates a background child before it leaves
+# it out, also in a 2D operation, an extrusion, a 2D model, a projection
+# and a hull: its subtree's own warnings are printed (a polygon's point, a
+# union that mixes), nothing of the '%' node itself (openscad -o
+# /abs/x.stl x.csg; -o /abs/x.dxf for the 2D models).
+bad2d='polygon(points = [[0, 0], [1, 0], [1, "a"]]);'
+printf 'linear_extrude(height = 1) {\n\t%s\n\t%%union() {\n\t\t%s\n\t\t%s\n\t}\n}\n' "$square1" "$square1" "$bad2d" >bg_extrude.csg
+printf 'union() {\n\t%s\n\t%%union() {\n\t\t%s\n\t\t%s\n\t}\n}\n' "$square1" "$square1" "$bad2d" >bg_flat.csg
+printf 'linear_extrude(height = 1) {\n\tprojection(cut = false) {\n\t\t%s\n\t\t%%union() {\n\t\t\t%s\n\t\t\t%s\n\t\t}\n\t}\n}\n' "$cube1" "$cube1" "$bad2d" >bg_proj.csg
+printf 'linear_extrude(height = 1) {\n\t%s\n\t%%%s\n\t%%union() {\n\t\t%s\n\t\t%s\n\t}\n}\n' "$square1" "$cube1" "$square1" "$cube1" >bg_mixed.csg
+printf 'union() {\n\t%s\n\t%%%s\n\t%%union() {\n\t\t%s\n\t\t%s\n\t}\n\t%%%s\n}\n' "$square1" "$cube1" "$square1" "$cube1" "$bad2d" >bg_flat_mixed.csg
+printf 'linear_extrude(height = 1) {\n\tprojection(cut = %s) {\n\t\t%s\n\t\t%%%s\n\t\t%%union() {\n\t\t\t%s\n\t\t\t%s\n\t\t}\n\t}\n}\n' false "$cube1" "$bad2d" "$cube1" "$square1" >bg_proj2.csg
+printf 'linear_extrude(height = 1) {\n\tprojection(cut = %s) {\n\t\t%s\n\t\t%%%s\n\t\t%%union() {\n\t\t\t%s\n\t\t\t%s\n\t\t}\n\t}\n}\n' true "$cube1" "$bad2d" "$cube1" "$square1" >bg_cut2.csg
+printf 'linear_extrude(height = 1) {\n\t%s\n\t%%union() {\n\t\t%s\n\t\t%s\n\t}\n}\n' "$square1" "$cube1" "$square1" >bg_3d.csg
+printf 'hull() {\n\t%s\n\t%%%s\n\t%%union() {\n\t\t%s\n\t\t%s\n\t}\n}\n' "$cube1" "$bad2d" "$cube1" "$square1" >bg_hull.csg
+printf 'linear_extrude(height = 1) {\n\t%s\n}\n' "$square1" >bg_extrude_ref.csg
+printf '%s\n' "$square1" >bg_flat_ref.csg
+printf 'linear_extrude(height = 1) {\n\tprojection(cut = false) {\n\t\t%s\n\t}\n}\n' "$cube1" >bg_proj_ref.csg
+printf 'hull() {\n\t%s\n}\n' "$cube1" >bg_hull_ref.csg
+for mode in "" --faithful; do
+    # shellcheck disable=SC2086
+    {
+        warns bg_extrude.csg "$(unable bg_extrude.csg 5 37)" $mode
+        same bg_extrude.csg bg_extrude_ref.csg $mode
+        warns bg_flat.csg "$(unable bg_flat.csg 5 37)" $mode
+        same bg_flat.csg bg_flat_ref.csg $mode
+        warns bg_proj.csg "$(unable bg_proj.csg 6 38)
+bg_proj.csg:6:4: warning: Ignoring 2D child object for 3D operation" $mode
+        same bg_proj.csg bg_proj_ref.csg $mode
+        warns bg_mixed.csg "bg_mixed.csg:6:3: warning: Mixing 2D and 3D objects is not supported
+bg_mixed.csg:6:3: warning: Ignoring 3D child object for 2D operation" $mode
+        same bg_mixed.csg bg_extrude_ref.csg $mode
+        warns bg_flat_mixed.csg "bg_flat_mixed.csg:6:3: warning: Mixing 2D and 3D objects is not supported
+bg_flat_mixed.csg:6:3: warning: Ignoring 3D child object for 2D operation
+$(unable bg_flat_mixed.csg 8 37)" $mode
+        same bg_flat_mixed.csg bg_flat_ref.csg $mode
+        for model in bg_proj2.csg bg_cut2.csg; do
+            warns $model "$(unable $model 4 38)
+$model:7:4: warning: Mixing 2D and 3D objects is not supported
+$model:7:4: warning: Ignoring 2D child object for 3D operation" $mode
+            same $model bg_proj_ref.csg $mode
+        done
+        warns bg_3d.csg "bg_3d.csg:5:3: warning: Mixing 2D and 3D objects is not supported
+bg_3d.csg:5:3: warning: Ignoring 2D child object for 3D operation" $mode
+        same bg_3d.csg bg_extrude_ref.csg $mode
+        warns bg_hull.csg "$(unable bg_hull.csg 3 37)
+bg_hull.csg:6:3: warning: Mixing 2D and 3D objects is not supported
+bg_hull.csg:6:3: warning: Ignoring 2D child object for 3D operation" $mode
+        same bg_hull.csg bg_hull_ref.csg $mode
+        refuses bg_extrude.csg "bg_extrude.csg:5:37: error: wrong type for argument 'points' of 'polygon' (expected a vector of [x, y] points)" $mode
+        refuses bg_mixed.csg "bg_mixed.csg:6:3: error: 3D child object in a 2D operation" $mode
+    }
+done
+
 # ---- a lossy mask ----
 warns cube_ref.csg "spancast: warning: --mask=m.jpg: JPEG is lossy, so the mask is no longer exactly 0 and 255 at the model's edges (.png, .tif and .exr are exact)" --mask=m.jpg
 check

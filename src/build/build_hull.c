@@ -602,6 +602,36 @@ static sc_status inner_frame(const walk *w, const model_node *n, const affine *m
     return st;
 }
 
+static sc_status collect(const walk *w, const model_node *parent, const affine *m,
+                         int depth, partlist *out);
+
+/* A '%' child n (nothing for any other): no operand, but walked for the
+ * warnings of its subtree, as OpenSCAD 2021.01's render evaluates a
+ * background child before it leaves it out; its parent says nothing of
+ * it. */
+static sc_status background(const walk *w, const model_node *n, const affine *m,
+                            int depth)
+{
+    if ((n->modifiers & (MODEL_MOD_DISABLE | MODEL_MOD_BACKGROUND)) !=
+            MODEL_MOD_BACKGROUND ||
+        is_shading(n->kind))
+        return SC_OK;
+    if (is_2d(n))
+        return check_2d(w, n, NULL);
+    /* n alone, as the child of a view of its parent (as minkowski_parts
+     * walks each child) */
+    model_node view = *n;
+    model_node lone = *n;
+    lone.next = NULL;
+    lone.modifiers &= ~MODEL_MOD_BACKGROUND;
+    view.first_child = &lone;
+    view.child_count = 1;
+    partlist parts = {NULL, 0, 0};
+    sc_status st = collect(w, &view, m, depth + 1, &parts);
+    parts_free(&parts);
+    return st;
+}
+
 /* Appends the convex parts (or, for a hull, point sets) of the children of
  * parent, through m, to out. */
 static sc_status collect(const walk *w, const model_node *parent, const affine *m,
@@ -614,9 +644,12 @@ static sc_status collect(const walk *w, const model_node *parent, const affine *
     const model_node *mixing = NULL; /* the first 2D child that is not empty */
     for (const model_node *n = parent->first_child; n; n = n->next) {
         model_kind kind = n->kind;
-        if (skipped(n) || is_shading(kind))
-            continue;
         sc_status st = SC_OK;
+        if (skipped(n) || is_shading(kind)) {
+            if ((st = background(w, n, m, depth)) != SC_OK)
+                return st;
+            continue;
+        }
         if (is_2d(n)) {
             st = check_2d(w, n, &mixing);
             any_2d = 1;

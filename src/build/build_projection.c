@@ -321,6 +321,7 @@ static sc_status built_soup(const pwalk *w, const model_node *n, soup *s)
 }
 
 static sc_status leaf_soup(pwalk *w, const model_node *n, soup *s, int depth);
+static sc_status background(pwalk *w, const model_node *k, const affine *m, int depth);
 
 /* OpenSCAD 2021.01's warnings for the 2D children of parent, a hull
  * inside projection (a 3D operation there), which it leaves out: after the
@@ -356,12 +357,15 @@ static sc_status hull_points(pwalk *w, const model_node *parent, const affine *m
     const model_node *mixing = NULL; /* the first 2D child that is not empty */
     for (const model_node *n = parent->first_child; n; n = n->next) {
         model_kind kind = n->kind;
+        sc_status st = SC_OK;
         if ((n->modifiers & (MODEL_MOD_DISABLE | MODEL_MOD_BACKGROUND)) ||
-            kind == MODEL_LIGHT || kind == MODEL_CAMERA || kind == MODEL_BACKGROUND)
+            kind == MODEL_LIGHT || kind == MODEL_CAMERA || kind == MODEL_BACKGROUND) {
+            if ((st = background(w, n, m, depth)) != SC_OK)
+                return st;
             continue;
+        }
         if (n->pending && !flat(n))
             return build_pending(c, n);
-        sc_status st = SC_OK;
         if (flat(n) || kind == MODEL_PROJECTION) {
             /* checked, then left out (ignored_2d); a projection that is not
              * flat is no geometry */
@@ -752,6 +756,25 @@ static int skipped(const model_node *n)
            n->kind == MODEL_BACKGROUND;
 }
 
+/* A '%' child k (nothing for any other): no operand, but walked for the
+ * warnings of its subtree, as OpenSCAD 2021.01's render evaluates a
+ * background child before it leaves it out; its parent says nothing of
+ * it. */
+static sc_status background(pwalk *w, const model_node *k, const affine *m, int depth)
+{
+    if ((k->modifiers & (MODEL_MOD_DISABLE | MODEL_MOD_BACKGROUND)) !=
+            MODEL_MOD_BACKGROUND ||
+        k->kind == MODEL_LIGHT || k->kind == MODEL_CAMERA || k->kind == MODEL_BACKGROUND)
+        return SC_OK;
+    if (flat(k) || k->kind == MODEL_PROJECTION)
+        return build_twod_check(w->c, k, NULL);
+    twod_region scratch;
+    twod_init(&scratch);
+    sc_status st = walk_node(w, k, m, depth + 1, &scratch);
+    twod_free(&scratch);
+    return st;
+}
+
 /* The children of n, the projection itself or a 3D operation in it,
  * walked into out. Its 2D children are checked (build_twod_check) and left out,
  * with OpenSCAD 2021.01's warnings once all are walked: a 3D operation's
@@ -763,9 +786,12 @@ static sc_status walk_children(pwalk *w, const model_node *n, const affine *m, i
 {
     const model_node *mixing = NULL; /* the first 2D child that is not empty */
     for (const model_node *k = n->first_child; k; k = k->next) {
-        if (skipped(k))
-            continue;
         sc_status st;
+        if (skipped(k)) {
+            if ((st = background(w, k, m, depth)) != SC_OK)
+                return st;
+            continue;
+        }
         if (flat(k) || k->kind == MODEL_PROJECTION) {
             /* a projection that is not flat is no geometry */
             int empty;
@@ -801,8 +827,10 @@ static sc_status boolean(pwalk *w, const model_node *n, const affine *m, int dep
     uint32_t i = 0;
     const model_node *mixing = NULL; /* the first 2D child that is not empty */
     for (const model_node *k = n->first_child; k && st == SC_OK; k = k->next) {
-        if (skipped(k))
+        if (skipped(k)) {
+            st = background(w, k, m, depth);
             continue;
+        }
         if (flat(k)) {
             int empty;
             st = build_twod_check(w->c, k, &empty);
