@@ -1152,6 +1152,52 @@ bg_hull.csg:6:3: warning: Ignoring 2D child object for 3D operation" $mode
     }
 done
 
+# ---- a removed transform under hull, minkowski and projection ----
+# OpenSCAD 2021.01 evaluates the children of a multmatrix with a nan or
+# inf entry before it removes it, here as elsewhere: their own warnings
+# (a polygon's point; a union inside that mixes) come first, then the
+# removal, and not its own check of their dimensions (openscad -o
+# /abs/x.stl x.scad, with 0/0 in the matrix, prints exactly these).
+nan_m='multmatrix([[nan, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]])'
+printf 'hull() {\n\t%s\n\t%s {\n\t\t%s\n\t\t%s\n\t}\n}\n' "$cube1" "$nan_m" "$cube1" "$bad2d" >nan_hull.csg
+printf 'minkowski() {\n\t%s\n\t%s {\n\t\t%s\n\t\t%s\n\t}\n}\n' "$cube1" "$nan_m" "$cube1" "$bad2d" >nan_mink.csg
+printf 'hull() {\n\t%s\n\t%s {\n\t\tunion() {\n\t\t\t%s\n\t\t\t%s\n\t\t}\n\t}\n}\n' "$cube1" "$nan_m" "$cube1" "$square1" >nan_hull_mixed.csg
+for cut in false true; do
+    printf 'linear_extrude(height = 1) {\n\tprojection(cut = %s) {\n\t\t%s\n\t\t%s {\n\t\t\t%s\n\t\t\t%s\n\t\t}\n\t}\n}\n' "$cut" "$cube1" "$nan_m" "$cube1" "$bad2d" >nan_proj_$cut.csg
+done
+printf 'linear_extrude(height = 1) {\n\tprojection(cut = false) {\n\t\thull() {\n\t\t\t%s\n\t\t\t%s {\n\t\t\t\t%s\n\t\t\t\t%s\n\t\t\t}\n\t\t}\n\t}\n}\n' "$cube1" "$nan_m" "$cube1" "$bad2d" >nan_proj_hull.csg
+printf 'linear_extrude(height = 1) {\n\tprojection(cut = true) {\n\t\tdifference() {\n\t\t\t%s\n\t\t\t%s {\n\t\t\t\t%s\n\t\t\t\t%s\n\t\t\t}\n\t\t}\n\t}\n}\n' "$cube1" "$nan_m" "$cube1" "$bad2d" >nan_cut_diff.csg
+printf 'linear_extrude(height = 1) {\n\tprojection(cut = true) {\n\t\t%s\n\t}\n}\n' "$cube1" >nan_cut_ref.csg
+removing="warning: Transformation matrix contains Not-a-Number and/or Infinity - removing object."
+for mode in "" --faithful; do
+    # shellcheck disable=SC2086
+    {
+        warns nan_hull.csg "$(unable nan_hull.csg 5 37)
+nan_hull.csg:3:2: $removing" $mode
+        same nan_hull.csg bg_hull_ref.csg $mode
+        warns nan_mink.csg "$(unable nan_mink.csg 5 37)
+nan_mink.csg:3:2: $removing" $mode
+        same nan_mink.csg bg_hull_ref.csg $mode
+        warns nan_hull_mixed.csg "nan_hull_mixed.csg:6:4: warning: Mixing 2D and 3D objects is not supported
+nan_hull_mixed.csg:6:4: warning: Ignoring 2D child object for 3D operation
+nan_hull_mixed.csg:3:2: $removing" $mode
+        same nan_hull_mixed.csg bg_hull_ref.csg $mode
+        for model in nan_proj_false.csg nan_proj_true.csg; do
+            warns $model "$(unable $model 6 38)
+$model:4:3: $removing" $mode
+        done
+        same nan_proj_false.csg bg_proj_ref.csg $mode
+        same nan_proj_true.csg nan_cut_ref.csg $mode
+        warns nan_proj_hull.csg "$(unable nan_proj_hull.csg 7 39)
+nan_proj_hull.csg:5:4: $removing" $mode
+        same nan_proj_hull.csg bg_proj_ref.csg $mode
+        warns nan_cut_diff.csg "$(unable nan_cut_diff.csg 7 39)
+nan_cut_diff.csg:5:4: $removing" $mode
+        same nan_cut_diff.csg nan_cut_ref.csg $mode
+        refuses nan_hull.csg "nan_hull.csg:5:37: error: wrong type for argument 'points' of 'polygon' (expected a vector of [x, y] points)" $mode
+    }
+done
+
 # ---- a lossy mask ----
 warns cube_ref.csg "spancast: warning: --mask=m.jpg: JPEG is lossy, so the mask is no longer exactly 0 and 255 at the model's edges (.png, .tif and .exr are exact)" --mask=m.jpg
 check

@@ -484,7 +484,8 @@ static sc_status closed_check(const walk *w, const model_node *n, int *open)
 
 /* ---- the walk ---- */
 
-/* multmatrix(m): the matrix, or 0 in *ok for a singular one (no geometry). */
+/* multmatrix(m): the matrix, or 0 in *ok for a singular one (no geometry;
+ * one removed for a nan or inf entry is the zero map: inner_frame). */
 static sc_status read_matrix(const build_ctx *c, const model_node *n, affine *out,
                              int *ok)
 {
@@ -494,7 +495,13 @@ static sc_status read_matrix(const build_ctx *c, const model_node *n, affine *ou
     *out = *n->u.xform;
     affine inverse;
     *ok = affine_invert(out, &inverse);
-    return build_xform_not_finite(c, n);
+    return SC_OK;
+}
+
+/* Whether n is a multmatrix removed for a nan or inf entry (model.h). */
+static int removed(const model_node *n)
+{
+    return n->kind == MODEL_XFORM && n->not_finite;
 }
 
 /* group, union, render, color, material: the union of their children. */
@@ -585,6 +592,8 @@ static sc_status resize_matrix(const walk *w, const model_node *n, int depth, af
                                const char **warning);
 static sc_status solid_parts(const walk *w, const model_node *n, const affine *m,
                              int depth, partlist *out);
+static sc_status collect(const walk *w, const model_node *parent, const affine *m,
+                         int depth, partlist *out);
 
 /* The frame of the children of a multmatrix or resize n under m: m after
  * n's own matrix, in *inner; 0 in *ok for a singular multmatrix (the
@@ -597,13 +606,24 @@ static sc_status inner_frame(const walk *w, const model_node *n, const affine *m
     *ok = 1;
     sc_status st = n->kind == MODEL_XFORM ? read_matrix(w->c, n, &local, ok)
                                           : resize_matrix(w, n, depth, &local, &warning);
+    if (st == SC_OK && removed(n)) {
+        /* OpenSCAD 2021.01 evaluates the children first: their warnings
+         * (not its check of their dimensions: collect), then the removal;
+         * a minkowski inside them empties nothing out here */
+        walk sub = *w;
+        int not_closed = 0;
+        if (sub.not_closed)
+            sub.not_closed = &not_closed;
+        partlist scratch = {NULL, 0, 0};
+        st = collect(&sub, n, m, depth, &scratch);
+        parts_free(&scratch);
+        *ok = 0;
+        return st == SC_OK ? build_xform_not_finite(w->c, n) : st;
+    }
     if (st == SC_OK && *ok)
         *inner = affine_mul(m, &local);
     return st;
 }
-
-static sc_status collect(const walk *w, const model_node *parent, const affine *m,
-                         int depth, partlist *out);
 
 /* A '%' child n (nothing for any other): no operand, but walked for the
  * warnings of its subtree, as OpenSCAD 2021.01's render evaluates a
@@ -730,7 +750,7 @@ static sc_status collect(const walk *w, const model_node *parent, const affine *
         if (st != SC_OK)
             return st;
     }
-    return any_2d ? warn_2d(w, parent, mixing) : SC_OK;
+    return any_2d && !removed(parent) ? warn_2d(w, parent, mixing) : SC_OK;
 }
 
 /* Replaces each part by the vertices of its hull (flat parts keep their

@@ -380,11 +380,18 @@ static sc_status hull_points(pwalk *w, const model_node *parent, const affine *m
             const char *warning = NULL;
             if (kind == MODEL_RESIZE)
                 st = build_resize(c, n, &w->cache, &local, &warning);
-            else
-                st = build_xform_not_finite(c, n);
             affine inner = affine_mul(m, &local), inverse;
-            if (st == SC_OK && affine_invert(&inner, &inverse))
+            if (kind == MODEL_XFORM && n->not_finite) {
+                /* removed: its children's warnings first, without its
+                 * check of their dimensions, then the removal (walk_node) */
+                soup scratch = {NULL, 0, 0, 0};
+                st = hull_points(w, n, m, depth + 1, &scratch);
+                free(scratch.v);
+                if (st == SC_OK)
+                    st = build_xform_not_finite(c, n);
+            } else if (st == SC_OK && affine_invert(&inner, &inverse)) {
                 st = hull_points(w, n, &inner, depth + 1, pts);
+            }
         } else {
             soup s = {NULL, 0, 0, 0};
             st = leaf_soup(w, n, &s, depth + 1);
@@ -398,6 +405,8 @@ static sc_status hull_points(pwalk *w, const model_node *parent, const affine *m
         if (st != SC_OK)
             return st;
     }
+    if (parent->kind == MODEL_XFORM && parent->not_finite) /* removed: not checked */
+        return SC_OK;
     return ignored_2d(c, parent, mixing);
 }
 
@@ -806,6 +815,8 @@ static sc_status walk_children(pwalk *w, const model_node *n, const affine *m, i
     }
     if (n == w->proj)
         return w->cut ? ignored_2d(w->c, n, NULL) : SC_OK;
+    if (n->kind == MODEL_XFORM && n->not_finite) /* removed: not checked (walk_node) */
+        return SC_OK;
     return ignored_2d(w->c, n, mixing);
 }
 
@@ -884,9 +895,18 @@ static sc_status walk_node(pwalk *w, const model_node *n, const affine *m, int d
     case MODEL_RESIZE: {
         affine local;
         sc_status st = SC_OK;
+        if (kind == MODEL_XFORM && n->not_finite) {
+            /* removed for a nan or inf entry: OpenSCAD 2021.01 evaluates
+             * the children first (their warnings, not its check of their
+             * dimensions: walk_children), then says so */
+            twod_region scratch;
+            twod_init(&scratch);
+            st = walk_children(w, n, m, depth, &scratch);
+            twod_free(&scratch);
+            return st == SC_OK ? build_xform_not_finite(c, n) : st;
+        }
         if (kind == MODEL_XFORM) {
             local = *n->u.xform;
-            st = build_xform_not_finite(c, n);
         } else {
             const char *warning = NULL;
             st = build_resize(c, n, &w->cache, &local, &warning);
