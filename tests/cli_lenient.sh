@@ -1198,6 +1198,58 @@ nan_cut_diff.csg:5:4: $removing" $mode
     }
 done
 
+# ---- the warnings inside a 3D child that a 2D operation ignores ----
+# OpenSCAD 2021.01 evaluates a 3D child of a 2D operation before it
+# ignores it, so the warnings of its subtree come first (a polygon's
+# point, its own 3D operation's "Ignoring 2D child object for 3D
+# operation", a polyhedron's index; a '%' child below it too), then the
+# 2D operation's own (openscad -o /abs/x.stl x.csg, -o /abs/x.dxf for the
+# 2D model, prints exactly these).
+tetra_bad='polyhedron(points = [[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1]], faces = [[0, 1, 2], [0, 3, 1], [0, 2, 3], [1, 3, 7]], convexity = 1);'
+printf 'linear_extrude(height = 1) {\n\tunion() {\n\t\t%s\n\t\tunion() {\n\t\t\t%s\n\t\t\t%s\n\t\t}\n\t}\n}\n' "$square1" "$cube1" "$bad2d" >in3d_extrude.csg
+printf 'union() {\n\t%s\n\tunion() {\n\t\t%s\n\t\t%s\n\t}\n}\n' "$square1" "$cube1" "$bad2d" >in3d_flat.csg
+printf 'linear_extrude(height = 1) {\n\t%s\n\t%s\n}\n' "$square1" "$tetra_bad" >in3d_faces.csg
+printf 'linear_extrude(height = 1) {\n\t%s\n\tunion() {\n\t\t%s\n\t\t%%%s\n\t}\n}\n' "$square1" "$cube1" "$bad2d" >in3d_bg.csg
+printf 'linear_extrude(height = 1) {\n\t%s\n\thull() {\n\t\t%s\n\t\t%s\n\t}\n}\n' "$square1" "$cube1" "$bad2d" >in3d_hull.csg
+printf 'rotate_extrude(angle = 360, $fn = 8, $fa = 12, $fs = 2) {\n\tmultmatrix([[1, 0, 0, 2], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]) {\n\t\t%s\n\t}\n\tunion() {\n\t\t%s\n\t\t%s\n\t}\n}\n' "$square1" "$cube1" "$bad2d" >in3d_revolve.csg
+printf 'rotate_extrude(angle = 360, $fn = 8, $fa = 12, $fs = 2) {\n\tmultmatrix([[1, 0, 0, 2], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]) {\n\t\t%s\n\t}\n}\n' "$square1" >in3d_revolve_ref.csg
+# the square in the 3D union is no part of the profile, in exact mode too
+printf 'rotate_extrude(angle = 360, $fn = 8, $fa = 12, $fs = 2) {\n\tmultmatrix([[1, 0, 0, 2], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]) {\n\t\t%s\n\t}\n\tunion() {\n\t\t%s\n\t\tmultmatrix([[1, 0, 0, 5], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]) {\n\t\t\t%s\n\t\t}\n\t}\n}\n' "$square1" "$cube1" "$square1" >in3d_revolve_far.csg
+for mode in "" --faithful; do
+    # shellcheck disable=SC2086
+    {
+        warns in3d_extrude.csg "$(unable in3d_extrude.csg 6 38)
+in3d_extrude.csg:6:4: warning: Ignoring 2D child object for 3D operation
+in3d_extrude.csg:4:3: warning: Mixing 2D and 3D objects is not supported
+in3d_extrude.csg:4:3: warning: Ignoring 3D child object for 2D operation" $mode
+        same in3d_extrude.csg bg_extrude_ref.csg $mode
+        warns in3d_flat.csg "$(unable in3d_flat.csg 5 37)
+in3d_flat.csg:5:3: warning: Ignoring 2D child object for 3D operation
+in3d_flat.csg:3:2: warning: Mixing 2D and 3D objects is not supported
+in3d_flat.csg:3:2: warning: Ignoring 3D child object for 2D operation" $mode
+        same in3d_flat.csg bg_flat_ref.csg $mode
+        warns in3d_faces.csg "in3d_faces.csg:3:117: warning: Point index 7 is out of bounds (from faces[3][2])
+in3d_faces.csg:3:2: warning: Ignoring 3D child object for 2D operation" $mode
+        same in3d_faces.csg bg_extrude_ref.csg $mode
+        warns in3d_bg.csg "$(unable in3d_bg.csg 5 38)
+in3d_bg.csg:3:2: warning: Ignoring 3D child object for 2D operation" $mode
+        same in3d_bg.csg bg_extrude_ref.csg $mode
+        warns in3d_hull.csg "$(unable in3d_hull.csg 5 37)
+in3d_hull.csg:5:3: warning: Ignoring 2D child object for 3D operation
+in3d_hull.csg:3:2: warning: Ignoring 3D child object for 2D operation" $mode
+        same in3d_hull.csg bg_extrude_ref.csg $mode
+        warns in3d_revolve.csg "$(unable in3d_revolve.csg 7 37)
+in3d_revolve.csg:7:3: warning: Ignoring 2D child object for 3D operation
+in3d_revolve.csg:5:2: warning: Ignoring 3D child object for 2D operation" $mode
+        same in3d_revolve.csg in3d_revolve_ref.csg $mode
+        warns in3d_revolve_far.csg "in3d_revolve_far.csg:7:3: warning: Mixing 2D and 3D objects is not supported
+in3d_revolve_far.csg:7:3: warning: Ignoring 2D child object for 3D operation
+in3d_revolve_far.csg:5:2: warning: Ignoring 3D child object for 2D operation" $mode
+        same in3d_revolve_far.csg in3d_revolve_ref.csg $mode
+        refuses in3d_extrude.csg "in3d_extrude.csg:6:38: error: wrong type for argument 'points' of 'polygon' (expected a vector of [x, y] points)" $mode
+    }
+done
+
 # ---- a lossy mask ----
 warns cube_ref.csg "spancast: warning: --mask=m.jpg: JPEG is lossy, so the mask is no longer exactly 0 and 255 at the model's edges (.png, .tif and .exr are exact)" --mask=m.jpg
 check

@@ -541,9 +541,9 @@ static int flat_child(const eval *e, const model_node *n)
            (n->kind != MODEL_PROJECTION || build_projects(n));
 }
 
-/* The warnings of a 3D subtree n that is left out here (a '%' child of a
- * 2D operation), as OpenSCAD 2021.01 evaluates it before it leaves it
- * out: its 2D parts through this engine (a polygon's point), a 3D
+/* The warnings of a 3D subtree n that is left out here (a child of a 2D
+ * operation, or a '%' one), as OpenSCAD 2021.01 evaluates it before it
+ * leaves it out: its 2D parts through this engine (a polygon's point), a 3D
  * operation's own check of its children's dimensions once they are
  * evaluated (build_mixing, build_ignoring, as build.c's flush_ignored:
  * not under a multmatrix removed for a nan or inf entry, which is said
@@ -654,11 +654,12 @@ static sc_status eval_list(eval *e, const model_node *first, model_kind kind, in
         twod_init(&r[*count]);
         (*count)++;
         /* a 3D child is an empty operand, as in OpenSCAD: it empties an
-         * intersection */
+         * intersection; OpenSCAD evaluates it first, with the warnings of
+         * its subtree */
         if (build_dim(k, e->in_2d) != 3)
             st = twod_walk(&e->walk, k, &unmoved, depth + 1, &r[*count - 1]);
         else
-            st = unsupported_import(e, k);
+            st = warn_3d(e, k, depth + 1);
     }
     /* After the children's own warnings, as OpenSCAD checks the
      * dimensions once its children are evaluated; not those of a
@@ -987,8 +988,10 @@ static sc_status eval_node(twod_walker *w, const model_node *n, const affine2 *u
     default:
         break;
     }
-    if (build_dim(n, e->in_2d) == 3)
-        return ignore_3d(e, n, 0);
+    if (build_dim(n, e->in_2d) == 3) { /* evaluated, then ignored */
+        sc_status st = warn_3d(e, n, depth);
+        return st == SC_OK ? ignore_3d(e, n, 0) : st;
+    }
     twod_op op = kind == MODEL_DIFFERENCE     ? TWOD_DIFFERENCE
                  : kind == MODEL_INTERSECTION ? TWOD_INTERSECTION
                                               : TWOD_UNION;
