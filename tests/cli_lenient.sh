@@ -1250,6 +1250,21 @@ in3d_revolve_far.csg:5:2: warning: Ignoring 3D child object for 2D operation" $m
     }
 done
 
+# The same for a '%' child of minkowski, and of a boolean inside hull.
+printf 'minkowski() {\n\t%s\n\t%%%s\n\t%%union() {\n\t\t%s\n\t\t%s\n\t}\n}\n' "$cube1" "$bad2d" "$cube1" "$square1" >bg_mink.csg
+printf 'hull() {\n\tdifference() {\n\t\t%s\n\t\t%%%s\n\t}\n}\n' "$cube1" "$bad2d" >bg_hull_diff.csg
+for mode in "" --faithful; do
+    # shellcheck disable=SC2086
+    {
+        warns bg_mink.csg "$(unable bg_mink.csg 3 37)
+bg_mink.csg:6:3: warning: Mixing 2D and 3D objects is not supported
+bg_mink.csg:6:3: warning: Ignoring 2D child object for 3D operation" $mode
+        same bg_mink.csg bg_hull_ref.csg $mode
+        warns bg_hull_diff.csg "$(unable bg_hull_diff.csg 4 38)" $mode
+        same bg_hull_diff.csg bg_hull_ref.csg $mode
+    }
+done
+
 # ---- a lossy mask ----
 warns cube_ref.csg "spancast: warning: --mask=m.jpg: JPEG is lossy, so the mask is no longer exactly 0 and 255 at the model's edges (.png, .tif and .exr are exact)" --mask=m.jpg
 check

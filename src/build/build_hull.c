@@ -639,15 +639,20 @@ static sc_status background(const walk *w, const model_node *n, const affine *m,
     if (is_2d(n))
         return check_2d(w, n, NULL);
     /* n alone, as the child of a view of its parent (as minkowski_parts
-     * walks each child) */
+     * walks each child), evaluated on its own: no part of the parent's
+     * union or minkowski, so a mesh in it that is not closed is not
+     * taken into CGAL there (nor empties the minkowski) */
     model_node view = *n;
     model_node lone = *n;
     lone.next = NULL;
     lone.modifiers &= ~MODEL_MOD_BACKGROUND;
     view.first_child = &lone;
     view.child_count = 1;
+    walk sub = *w;
+    sub.in_union = 0;
+    sub.not_closed = NULL;
     partlist parts = {NULL, 0, 0};
-    sc_status st = collect(w, &view, m, depth + 1, &parts);
+    sc_status st = collect(&sub, &view, m, depth + 1, &parts);
     parts_free(&parts);
     return st;
 }
@@ -791,8 +796,10 @@ static sc_status minkowski_parts(const walk *w, const model_node *n, const affin
         return depth_error(w, n);
     for (const model_node *child = n->first_child; child && st == SC_OK;
          child = child->next) {
-        if (skipped(child))
+        if (skipped(child)) {
+            st = background(&inner, child, m, depth);
             continue;
+        }
         partlist parts = {NULL, 0, 0};
         /* Each child alone: collect walks the children of its argument, so
          * walk a one-child view of the minkowski node. */
@@ -1072,8 +1079,16 @@ static sc_status nef_children(const walk *w, const model_node *parent, const aff
     int first = 1;
     const model_node *mixing = NULL; /* the first 2D child that is not empty */
     for (const model_node *n = parent->first_child; n; n = n->next) {
-        if (skipped(n) || is_shading(n->kind))
+        if (skipped(n) || is_shading(n->kind)) {
+            sc_status st = background(w, n, m, depth);
+            if (st != SC_OK) {
+                if (*out)
+                    w->nef->release(*out);
+                *out = NULL;
+                return st;
+            }
             continue;
+        }
         nef_solid *s = NULL; /* a 2D child: the empty solid, as OpenSCAD ignores it */
         sc_status st = is_2d(n) ? check_2d(w, n, &mixing) : nef_node(w, n, m, depth, &s);
         if (st == SC_OK)
