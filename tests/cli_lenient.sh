@@ -32,6 +32,21 @@ warns() {
         fail "$model: stderr '$(cat err.txt)', want '$expected'"
 }
 
+# refuses MODEL EXPECTED [render options]: spancast render MODEL --strict
+# prints exactly EXPECTED on stderr, exits 1 and writes no image.
+refuses() {
+    local model=$1 expected=$2
+    shift 2
+    check
+    rm -f strict.png
+    "$bin" render "$model" -o strict.png --imgsize=64,48 -q --strict "$@" 2>err.txt
+    local rc=$?
+    [ "$rc" = 1 ] || fail "$model --strict $*: exit $rc: $(cat err.txt)"
+    [ "$(cat err.txt)" = "$expected" ] ||
+        fail "$model --strict $*: stderr '$(cat err.txt)', want '$expected'"
+    [ -e strict.png ] && fail "$model --strict $*: an image was written"
+}
+
 # pixel IMAGE X Y: the 8-bit values of one pixel ("R G B").
 pixel() {
     oiiotool "$1" --cut "1x1+$2+$3" -d uint8 -o px.png &&
@@ -979,15 +994,275 @@ pct_singular.csg:6:4: warning: Ignoring 2D child object for 3D operation" $mode
         # shellcheck disable=SC2086
         same "$model" pct_ref.csg $mode
     done
-    # --strict: the polygon's point is the error
-    check
-    rm -f strict.png
+    # --strict: the first warning is the error
     # shellcheck disable=SC2086
-    "$bin" render pct.csg -o strict.png -q --strict $mode 2>err.txt &&
-        fail "pct.csg --strict $mode: exit 0"
-    [ "$(cat err.txt)" = "pct.csg:9:37: error: wrong type for argument 'points' of 'polygon' (expected a vector of [x, y] points)" ] ||
-        fail "pct.csg --strict $mode: $(cat err.txt)"
-    [ -e strict.png ] && fail "pct.csg --strict $mode: an image was written"
+    {
+        refuses pct.csg "pct.csg:5:3: error: 2D child object in a 3D operation" $mode
+        refuses pct_top.csg "pct_top.csg:3:36: error: wrong type for argument 'points' of 'polygon' (expected a vector of [x, y] points)" $mode
+    }
+done
+
+# ---- --strict: a child of the other dimension is the error ----
+# OpenSCAD 2021.01 ignores a 2D child of a 3D operation and a 3D child of
+# a 2D one with its warnings "Mixing 2D and 3D objects is not supported"
+# and "Ignoring 2D child object for 3D operation" (or 3D ... 2D), at the
+# top level, in 2D operations and extrusions, in hull, minkowski and
+# projection (openscad -o /abs/x.stl x.csg, -o /abs/x.dxf for 2D). With
+# --strict the first of them is the error, at its position.
+square1='square(size = [1, 1], center = false);'
+printf '%s\n%s\n' "$cube1" "$square1" >dim_top.csg
+printf '%s\n%s\n' "$square1" "$cube1" >dim_top2d.csg
+printf 'hull() {\n\t%s\n\t%s\n}\n' "$cube1" "$square1" >dim_hull.csg
+printf 'minkowski() {\n\t%s\n\t%s\n}\n' "$cube1" "$square1" >dim_mink.csg
+printf 'projection(cut = true) {\n\t%s\n\t%s\n}\n' "$cube1" "$square1" >dim_cut.csg
+printf 'projection(cut = false) {\n\tunion() {\n\t\t%s\n\t\t%s\n\t}\n}\n' "$cube1" "$square1" >dim_proj.csg
+printf 'projection(cut = false) {\n\thull() {\n\t\t%s\n\t\t%s\n\t}\n}\n' "$cube1" "$square1" >dim_proj_hull.csg
+printf 'projection(cut = true) {\n\tdifference() {\n\t\t%s\n\t\t%s\n\t}\n}\n' "$cube1" "$square1" >dim_proj_cut.csg
+printf 'hull() {\n\tunion() {\n\t\t%s\n\t\t%s\n\t}\n}\n' "$cube1" "$square1" >dim_hull_union.csg
+printf 'linear_extrude(height = 1) {\n\thull() {\n\t\t%s\n\t\t%s\n\t}\n}\n' "$square1" "$cube1" >dim_hull2d.csg
+printf 'resize(newsize = [2, 2, 2]) {\n\t%s\n\t%s\n}\n' "$cube1" "$square1" >dim_resize.csg
+for mode in "" --faithful; do
+    # shellcheck disable=SC2086
+    {
+        warns dim_top.csg "dim_top.csg:2:1: warning: Mixing 2D and 3D objects is not supported
+dim_top.csg:2:1: warning: Ignoring 2D child object for 3D operation" $mode
+        warns dim_top2d.csg "dim_top2d.csg:2:1: warning: Mixing 2D and 3D objects is not supported
+dim_top2d.csg:2:1: warning: Ignoring 3D child object for 2D operation" $mode
+        warns dim_hull.csg "dim_hull.csg:3:2: warning: Mixing 2D and 3D objects is not supported
+dim_hull.csg:3:2: warning: Ignoring 2D child object for 3D operation" $mode
+        warns dim_mink.csg "dim_mink.csg:3:2: warning: Mixing 2D and 3D objects is not supported
+dim_mink.csg:3:2: warning: Ignoring 2D child object for 3D operation" $mode
+        warns dim_cut.csg "dim_cut.csg:3:2: warning: Ignoring 2D child object for 3D operation" $mode
+        warns dim_proj.csg "dim_proj.csg:4:3: warning: Mixing 2D and 3D objects is not supported
+dim_proj.csg:4:3: warning: Ignoring 2D child object for 3D operation" $mode
+        warns dim_proj_hull.csg "dim_proj_hull.csg:4:3: warning: Mixing 2D and 3D objects is not supported
+dim_proj_hull.csg:4:3: warning: Ignoring 2D child object for 3D operation" $mode
+        warns dim_proj_cut.csg "dim_proj_cut.csg:4:3: warning: Mixing 2D and 3D objects is not supported
+dim_proj_cut.csg:4:3: warning: Ignoring 2D child object for 3D operation" $mode
+        warns dim_hull_union.csg "dim_hull_union.csg:4:3: warning: Mixing 2D and 3D objects is not supported
+dim_hull_union.csg:4:3: warning: Ignoring 2D child object for 3D operation" $mode
+        warns dim_hull2d.csg "dim_hull2d.csg:4:3: warning: Mixing 2D and 3D objects is not supported
+dim_hull2d.csg:4:3: warning: Ignoring 3D child object for 2D operation" $mode
+        refuses dim_top.csg "dim_top.csg:2:1: error: 2D child object in a 3D operation" $mode
+        refuses dim_top2d.csg "dim_top2d.csg:2:1: error: 3D child object in a 2D operation" $mode
+        refuses dim_hull.csg "dim_hull.csg:3:2: error: 2D child object in a 3D operation" $mode
+        refuses dim_mink.csg "dim_mink.csg:3:2: error: 2D child object in a 3D operation" $mode
+        refuses dim_cut.csg "dim_cut.csg:3:2: error: 2D child object in a 3D operation" $mode
+        refuses dim_proj.csg "dim_proj.csg:4:3: error: 2D child object in a 3D operation" $mode
+        refuses dim_proj_hull.csg "dim_proj_hull.csg:4:3: error: 2D child object in a 3D operation" $mode
+        refuses dim_proj_cut.csg "dim_proj_cut.csg:4:3: error: 2D child object in a 3D operation" $mode
+        refuses dim_hull_union.csg "dim_hull_union.csg:4:3: error: 2D child object in a 3D operation" $mode
+        refuses dim_hull2d.csg "dim_hull2d.csg:4:3: error: 3D child object in a 2D operation" $mode
+        warns dim_resize.csg "dim_resize.csg:3:2: warning: Mixing 2D and 3D objects is not supported
+dim_resize.csg:3:2: warning: Ignoring 2D child object for 3D operation" $mode
+        refuses dim_resize.csg "dim_resize.csg:3:2: error: 2D child object in a 3D operation" $mode
+        refuses extrude.csg "extrude.csg:3:2: error: 3D child object in a 2D operation" $mode
+        refuses union.csg "union.csg:6:3: error: 3D child object in a 2D operation" $mode
+        refuses cut.csg "cut.csg:4:3: error: 3D child object in a 2D operation" $mode
+        # an empty child mixes nothing: its "Ignoring" is the error
+        refuses e_zero.csg "e_zero.csg:3:2: error: 2D child object in a 3D operation" $mode
+    }
+done
+
+# ---- a projection without a 3D child in a 3D operation ----
+# OpenSCAD 2021.01 makes no geometry of a projection whose children are
+# all 2D, so a hull or minkowski (or a union or difference in them) says
+# nothing of it; only projection(cut = true) ignores its own 2D child
+# (openscad -o /abs/x.stl x.csg prints exactly these).
+printf 'hull() {\n\t%s\n\tprojection(cut = false) {\n\t\t%s\n\t}\n}\n' "$cube1" "$square1" >nop_hull.csg
+printf 'hull() {\n\t%s\n\tprojection(cut = true) {\n\t\t%s\n\t}\n}\n' "$cube1" "$square1" >nop_hull_cut.csg
+printf 'minkowski() {\n\t%s\n\tprojection(cut = false) {\n\t\t%s\n\t}\n}\n' "$cube1" "$square1" >nop_mink.csg
+printf 'hull() {\n\t%s\n\tunion() {\n\t\tprojection(cut = false) {\n\t\t\t%s\n\t\t}\n\t}\n}\n' "$cube1" "$square1" >nop_hull_union.csg
+printf 'minkowski() {\n\t%s\n\tdifference() {\n\t\t%s\n\t\tprojection(cut = true) {\n\t\t\t%s\n\t\t}\n\t}\n}\n' "$cube1" "$cube1" "$square1" >nop_mink_diff.csg
+printf 'hull() {\n\t%s\n\tprojection(cut = false) {\n\t\t%s\n\t}\n\t%s\n}\n' "$cube1" "$square1" "$square1" >nop_hull_then.csg
+printf 'hull() {\n\t%s\n}\n' "$cube1" >nop_ref.csg
+printf 'minkowski() {\n\t%s\n\t%s\n}\n' "$cube1" "$cube1" >nop_mink_ref.csg
+for mode in "" --faithful; do
+    # shellcheck disable=SC2086
+    {
+        warns nop_hull.csg "" $mode
+        same nop_hull.csg nop_ref.csg $mode
+        warns nop_hull_cut.csg "nop_hull_cut.csg:4:3: warning: Ignoring 2D child object for 3D operation" $mode
+        same nop_hull_cut.csg nop_ref.csg $mode
+        warns nop_mink.csg "" $mode
+        same nop_mink.csg nop_ref.csg $mode
+        warns nop_hull_union.csg "" $mode
+        same nop_hull_union.csg nop_ref.csg $mode
+        warns nop_mink_diff.csg "nop_mink_diff.csg:6:4: warning: Ignoring 2D child object for 3D operation" $mode
+        same nop_mink_diff.csg nop_mink_ref.csg $mode
+        warns nop_hull_then.csg "nop_hull_then.csg:6:2: warning: Mixing 2D and 3D objects is not supported
+nop_hull_then.csg:6:2: warning: Ignoring 2D child object for 3D operation" $mode
+        same nop_hull_then.csg nop_ref.csg $mode
+        warns nop_hull.csg "" --strict $mode
+    }
+done
+
+# ---- '%' children in 2D operations, projection and hull ----
+# OpenSCAD 2021.01's render evaluates a background child before it leaves
+# it out, also in a 2D operation, an extrusion, a 2D model, a projection
+# and a hull: its subtree's own warnings are printed (a polygon's point, a
+# union that mixes), nothing of the '%' node itself (openscad -o
+# /abs/x.stl x.csg; -o /abs/x.dxf for the 2D models).
+bad2d='polygon(points = [[0, 0], [1, 0], [1, "a"]]);'
+printf 'linear_extrude(height = 1) {\n\t%s\n\t%%union() {\n\t\t%s\n\t\t%s\n\t}\n}\n' "$square1" "$square1" "$bad2d" >bg_extrude.csg
+printf 'union() {\n\t%s\n\t%%union() {\n\t\t%s\n\t\t%s\n\t}\n}\n' "$square1" "$square1" "$bad2d" >bg_flat.csg
+printf 'linear_extrude(height = 1) {\n\tprojection(cut = false) {\n\t\t%s\n\t\t%%union() {\n\t\t\t%s\n\t\t\t%s\n\t\t}\n\t}\n}\n' "$cube1" "$cube1" "$bad2d" >bg_proj.csg
+printf 'linear_extrude(height = 1) {\n\t%s\n\t%%%s\n\t%%union() {\n\t\t%s\n\t\t%s\n\t}\n}\n' "$square1" "$cube1" "$square1" "$cube1" >bg_mixed.csg
+printf 'union() {\n\t%s\n\t%%%s\n\t%%union() {\n\t\t%s\n\t\t%s\n\t}\n\t%%%s\n}\n' "$square1" "$cube1" "$square1" "$cube1" "$bad2d" >bg_flat_mixed.csg
+printf 'linear_extrude(height = 1) {\n\tprojection(cut = %s) {\n\t\t%s\n\t\t%%%s\n\t\t%%union() {\n\t\t\t%s\n\t\t\t%s\n\t\t}\n\t}\n}\n' false "$cube1" "$bad2d" "$cube1" "$square1" >bg_proj2.csg
+printf 'linear_extrude(height = 1) {\n\tprojection(cut = %s) {\n\t\t%s\n\t\t%%%s\n\t\t%%union() {\n\t\t\t%s\n\t\t\t%s\n\t\t}\n\t}\n}\n' true "$cube1" "$bad2d" "$cube1" "$square1" >bg_cut2.csg
+printf 'linear_extrude(height = 1) {\n\t%s\n\t%%union() {\n\t\t%s\n\t\t%s\n\t}\n}\n' "$square1" "$cube1" "$square1" >bg_3d.csg
+printf 'hull() {\n\t%s\n\t%%%s\n\t%%union() {\n\t\t%s\n\t\t%s\n\t}\n}\n' "$cube1" "$bad2d" "$cube1" "$square1" >bg_hull.csg
+printf 'linear_extrude(height = 1) {\n\t%s\n}\n' "$square1" >bg_extrude_ref.csg
+printf '%s\n' "$square1" >bg_flat_ref.csg
+printf 'linear_extrude(height = 1) {\n\tprojection(cut = false) {\n\t\t%s\n\t}\n}\n' "$cube1" >bg_proj_ref.csg
+printf 'hull() {\n\t%s\n}\n' "$cube1" >bg_hull_ref.csg
+for mode in "" --faithful; do
+    # shellcheck disable=SC2086
+    {
+        warns bg_extrude.csg "$(unable bg_extrude.csg 5 37)" $mode
+        same bg_extrude.csg bg_extrude_ref.csg $mode
+        warns bg_flat.csg "$(unable bg_flat.csg 5 37)" $mode
+        same bg_flat.csg bg_flat_ref.csg $mode
+        warns bg_proj.csg "$(unable bg_proj.csg 6 38)
+bg_proj.csg:6:4: warning: Ignoring 2D child object for 3D operation" $mode
+        same bg_proj.csg bg_proj_ref.csg $mode
+        warns bg_mixed.csg "bg_mixed.csg:6:3: warning: Mixing 2D and 3D objects is not supported
+bg_mixed.csg:6:3: warning: Ignoring 3D child object for 2D operation" $mode
+        same bg_mixed.csg bg_extrude_ref.csg $mode
+        warns bg_flat_mixed.csg "bg_flat_mixed.csg:6:3: warning: Mixing 2D and 3D objects is not supported
+bg_flat_mixed.csg:6:3: warning: Ignoring 3D child object for 2D operation
+$(unable bg_flat_mixed.csg 8 37)" $mode
+        same bg_flat_mixed.csg bg_flat_ref.csg $mode
+        for model in bg_proj2.csg bg_cut2.csg; do
+            warns $model "$(unable $model 4 38)
+$model:7:4: warning: Mixing 2D and 3D objects is not supported
+$model:7:4: warning: Ignoring 2D child object for 3D operation" $mode
+            same $model bg_proj_ref.csg $mode
+        done
+        warns bg_3d.csg "bg_3d.csg:5:3: warning: Mixing 2D and 3D objects is not supported
+bg_3d.csg:5:3: warning: Ignoring 2D child object for 3D operation" $mode
+        same bg_3d.csg bg_extrude_ref.csg $mode
+        warns bg_hull.csg "$(unable bg_hull.csg 3 37)
+bg_hull.csg:6:3: warning: Mixing 2D and 3D objects is not supported
+bg_hull.csg:6:3: warning: Ignoring 2D child object for 3D operation" $mode
+        same bg_hull.csg bg_hull_ref.csg $mode
+        refuses bg_extrude.csg "bg_extrude.csg:5:37: error: wrong type for argument 'points' of 'polygon' (expected a vector of [x, y] points)" $mode
+        refuses bg_mixed.csg "bg_mixed.csg:6:3: error: 3D child object in a 2D operation" $mode
+    }
+done
+
+# ---- a removed transform under hull, minkowski and projection ----
+# OpenSCAD 2021.01 evaluates the children of a multmatrix with a nan or
+# inf entry before it removes it, here as elsewhere: their own warnings
+# (a polygon's point; a union inside that mixes) come first, then the
+# removal, and not its own check of their dimensions (openscad -o
+# /abs/x.stl x.scad, with 0/0 in the matrix, prints exactly these).
+nan_m='multmatrix([[nan, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]])'
+printf 'hull() {\n\t%s\n\t%s {\n\t\t%s\n\t\t%s\n\t}\n}\n' "$cube1" "$nan_m" "$cube1" "$bad2d" >nan_hull.csg
+printf 'minkowski() {\n\t%s\n\t%s {\n\t\t%s\n\t\t%s\n\t}\n}\n' "$cube1" "$nan_m" "$cube1" "$bad2d" >nan_mink.csg
+printf 'hull() {\n\t%s\n\t%s {\n\t\tunion() {\n\t\t\t%s\n\t\t\t%s\n\t\t}\n\t}\n}\n' "$cube1" "$nan_m" "$cube1" "$square1" >nan_hull_mixed.csg
+for cut in false true; do
+    printf 'linear_extrude(height = 1) {\n\tprojection(cut = %s) {\n\t\t%s\n\t\t%s {\n\t\t\t%s\n\t\t\t%s\n\t\t}\n\t}\n}\n' "$cut" "$cube1" "$nan_m" "$cube1" "$bad2d" >nan_proj_$cut.csg
+done
+printf 'linear_extrude(height = 1) {\n\tprojection(cut = false) {\n\t\thull() {\n\t\t\t%s\n\t\t\t%s {\n\t\t\t\t%s\n\t\t\t\t%s\n\t\t\t}\n\t\t}\n\t}\n}\n' "$cube1" "$nan_m" "$cube1" "$bad2d" >nan_proj_hull.csg
+printf 'linear_extrude(height = 1) {\n\tprojection(cut = true) {\n\t\tdifference() {\n\t\t\t%s\n\t\t\t%s {\n\t\t\t\t%s\n\t\t\t\t%s\n\t\t\t}\n\t\t}\n\t}\n}\n' "$cube1" "$nan_m" "$cube1" "$bad2d" >nan_cut_diff.csg
+printf 'linear_extrude(height = 1) {\n\tprojection(cut = true) {\n\t\t%s\n\t}\n}\n' "$cube1" >nan_cut_ref.csg
+removing="warning: Transformation matrix contains Not-a-Number and/or Infinity - removing object."
+for mode in "" --faithful; do
+    # shellcheck disable=SC2086
+    {
+        warns nan_hull.csg "$(unable nan_hull.csg 5 37)
+nan_hull.csg:3:2: $removing" $mode
+        same nan_hull.csg bg_hull_ref.csg $mode
+        warns nan_mink.csg "$(unable nan_mink.csg 5 37)
+nan_mink.csg:3:2: $removing" $mode
+        same nan_mink.csg bg_hull_ref.csg $mode
+        warns nan_hull_mixed.csg "nan_hull_mixed.csg:6:4: warning: Mixing 2D and 3D objects is not supported
+nan_hull_mixed.csg:6:4: warning: Ignoring 2D child object for 3D operation
+nan_hull_mixed.csg:3:2: $removing" $mode
+        same nan_hull_mixed.csg bg_hull_ref.csg $mode
+        for model in nan_proj_false.csg nan_proj_true.csg; do
+            warns $model "$(unable $model 6 38)
+$model:4:3: $removing" $mode
+        done
+        same nan_proj_false.csg bg_proj_ref.csg $mode
+        same nan_proj_true.csg nan_cut_ref.csg $mode
+        warns nan_proj_hull.csg "$(unable nan_proj_hull.csg 7 39)
+nan_proj_hull.csg:5:4: $removing" $mode
+        same nan_proj_hull.csg bg_proj_ref.csg $mode
+        warns nan_cut_diff.csg "$(unable nan_cut_diff.csg 7 39)
+nan_cut_diff.csg:5:4: $removing" $mode
+        same nan_cut_diff.csg nan_cut_ref.csg $mode
+        refuses nan_hull.csg "nan_hull.csg:5:37: error: wrong type for argument 'points' of 'polygon' (expected a vector of [x, y] points)" $mode
+    }
+done
+
+# ---- the warnings inside a 3D child that a 2D operation ignores ----
+# OpenSCAD 2021.01 evaluates a 3D child of a 2D operation before it
+# ignores it, so the warnings of its subtree come first (a polygon's
+# point, its own 3D operation's "Ignoring 2D child object for 3D
+# operation", a polyhedron's index; a '%' child below it too), then the
+# 2D operation's own (openscad -o /abs/x.stl x.csg, -o /abs/x.dxf for the
+# 2D model, prints exactly these).
+tetra_bad='polyhedron(points = [[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1]], faces = [[0, 1, 2], [0, 3, 1], [0, 2, 3], [1, 3, 7]], convexity = 1);'
+printf 'linear_extrude(height = 1) {\n\tunion() {\n\t\t%s\n\t\tunion() {\n\t\t\t%s\n\t\t\t%s\n\t\t}\n\t}\n}\n' "$square1" "$cube1" "$bad2d" >in3d_extrude.csg
+printf 'union() {\n\t%s\n\tunion() {\n\t\t%s\n\t\t%s\n\t}\n}\n' "$square1" "$cube1" "$bad2d" >in3d_flat.csg
+printf 'linear_extrude(height = 1) {\n\t%s\n\t%s\n}\n' "$square1" "$tetra_bad" >in3d_faces.csg
+printf 'linear_extrude(height = 1) {\n\t%s\n\tunion() {\n\t\t%s\n\t\t%%%s\n\t}\n}\n' "$square1" "$cube1" "$bad2d" >in3d_bg.csg
+printf 'linear_extrude(height = 1) {\n\t%s\n\thull() {\n\t\t%s\n\t\t%s\n\t}\n}\n' "$square1" "$cube1" "$bad2d" >in3d_hull.csg
+printf 'rotate_extrude(angle = 360, $fn = 8, $fa = 12, $fs = 2) {\n\tmultmatrix([[1, 0, 0, 2], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]) {\n\t\t%s\n\t}\n\tunion() {\n\t\t%s\n\t\t%s\n\t}\n}\n' "$square1" "$cube1" "$bad2d" >in3d_revolve.csg
+printf 'rotate_extrude(angle = 360, $fn = 8, $fa = 12, $fs = 2) {\n\tmultmatrix([[1, 0, 0, 2], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]) {\n\t\t%s\n\t}\n}\n' "$square1" >in3d_revolve_ref.csg
+# the square in the 3D union is no part of the profile, in exact mode too
+printf 'rotate_extrude(angle = 360, $fn = 8, $fa = 12, $fs = 2) {\n\tmultmatrix([[1, 0, 0, 2], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]) {\n\t\t%s\n\t}\n\tunion() {\n\t\t%s\n\t\tmultmatrix([[1, 0, 0, 5], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]) {\n\t\t\t%s\n\t\t}\n\t}\n}\n' "$square1" "$cube1" "$square1" >in3d_revolve_far.csg
+for mode in "" --faithful; do
+    # shellcheck disable=SC2086
+    {
+        warns in3d_extrude.csg "$(unable in3d_extrude.csg 6 38)
+in3d_extrude.csg:6:4: warning: Ignoring 2D child object for 3D operation
+in3d_extrude.csg:4:3: warning: Mixing 2D and 3D objects is not supported
+in3d_extrude.csg:4:3: warning: Ignoring 3D child object for 2D operation" $mode
+        same in3d_extrude.csg bg_extrude_ref.csg $mode
+        warns in3d_flat.csg "$(unable in3d_flat.csg 5 37)
+in3d_flat.csg:5:3: warning: Ignoring 2D child object for 3D operation
+in3d_flat.csg:3:2: warning: Mixing 2D and 3D objects is not supported
+in3d_flat.csg:3:2: warning: Ignoring 3D child object for 2D operation" $mode
+        same in3d_flat.csg bg_flat_ref.csg $mode
+        warns in3d_faces.csg "in3d_faces.csg:3:117: warning: Point index 7 is out of bounds (from faces[3][2])
+in3d_faces.csg:3:2: warning: Ignoring 3D child object for 2D operation" $mode
+        same in3d_faces.csg bg_extrude_ref.csg $mode
+        warns in3d_bg.csg "$(unable in3d_bg.csg 5 38)
+in3d_bg.csg:3:2: warning: Ignoring 3D child object for 2D operation" $mode
+        same in3d_bg.csg bg_extrude_ref.csg $mode
+        warns in3d_hull.csg "$(unable in3d_hull.csg 5 37)
+in3d_hull.csg:5:3: warning: Ignoring 2D child object for 3D operation
+in3d_hull.csg:3:2: warning: Ignoring 3D child object for 2D operation" $mode
+        same in3d_hull.csg bg_extrude_ref.csg $mode
+        warns in3d_revolve.csg "$(unable in3d_revolve.csg 7 37)
+in3d_revolve.csg:7:3: warning: Ignoring 2D child object for 3D operation
+in3d_revolve.csg:5:2: warning: Ignoring 3D child object for 2D operation" $mode
+        same in3d_revolve.csg in3d_revolve_ref.csg $mode
+        warns in3d_revolve_far.csg "in3d_revolve_far.csg:7:3: warning: Mixing 2D and 3D objects is not supported
+in3d_revolve_far.csg:7:3: warning: Ignoring 2D child object for 3D operation
+in3d_revolve_far.csg:5:2: warning: Ignoring 3D child object for 2D operation" $mode
+        same in3d_revolve_far.csg in3d_revolve_ref.csg $mode
+        refuses in3d_extrude.csg "in3d_extrude.csg:6:38: error: wrong type for argument 'points' of 'polygon' (expected a vector of [x, y] points)" $mode
+    }
+done
+
+# The same for a '%' child of minkowski, and of a boolean inside hull.
+printf 'minkowski() {\n\t%s\n\t%%%s\n\t%%union() {\n\t\t%s\n\t\t%s\n\t}\n}\n' "$cube1" "$bad2d" "$cube1" "$square1" >bg_mink.csg
+printf 'hull() {\n\tdifference() {\n\t\t%s\n\t\t%%%s\n\t}\n}\n' "$cube1" "$bad2d" >bg_hull_diff.csg
+for mode in "" --faithful; do
+    # shellcheck disable=SC2086
+    {
+        warns bg_mink.csg "$(unable bg_mink.csg 3 37)
+bg_mink.csg:6:3: warning: Mixing 2D and 3D objects is not supported
+bg_mink.csg:6:3: warning: Ignoring 2D child object for 3D operation" $mode
+        same bg_mink.csg bg_hull_ref.csg $mode
+        warns bg_hull_diff.csg "$(unable bg_hull_diff.csg 4 38)" $mode
+        same bg_hull_diff.csg bg_hull_ref.csg $mode
+    }
 done
 
 # ---- a lossy mask ----

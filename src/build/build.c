@@ -605,20 +605,20 @@ static sc_status build_twod_ignored(builder *b, const model_node *n, const frame
  * children are built, as OpenSCAD checks dimensions after evaluating the
  * children: first that f mixes them, at the first that is not empty (an
  * empty one, such as a polygon emptied by a bad point, mixes nothing for
- * OpenSCAD 2021.01's isValidDim), then each ignored. */
+ * OpenSCAD 2021.01's isValidDim), then each ignored; with --strict the
+ * first of them is the error. */
 static sc_status flush_ignored(builder *b, const frame *f)
 {
+    build_ctx c = context(b, 1, NULL); /* only children that warn are kept */
     sc_status st = SC_OK;
     for (size_t k = f->first_ignored; k < b->ignored_count; k++) {
         if (!b->ignored[k].empty) {
-            st = warn(b, &b->ignored[k].node->loc,
-                      "Mixing 2D and 3D objects is not supported");
+            st = build_mixing(&c, &b->ignored[k].node->loc, 0);
             break;
         }
     }
     for (size_t k = f->first_ignored; st == SC_OK && k < b->ignored_count; k++)
-        st = warn(b, &b->ignored[k].node->loc,
-                  "Ignoring 2D child object for 3D operation");
+        st = build_ignoring(&c, &b->ignored[k].node->loc, 0);
     b->ignored_count = f->first_ignored;
     return st;
 }

@@ -1,6 +1,7 @@
 /* What the builders of 2D subtrees share (build_ctx.h): the pending
  * argument error of a node, the warnings of a walk, a multmatrix removed
- * for a nan or inf entry, and the 2D part of a multmatrix. */
+ * for a nan or inf entry, a child of the other dimension left out, and the
+ * 2D part of a multmatrix. */
 #include <math.h>
 #include <stdarg.h>
 #include <stdio.h>
@@ -151,6 +152,35 @@ sc_status build_xform_not_finite(const build_ctx *c, const model_node *n)
     return build_note(c, &n->loc,
                       "Transformation matrix contains Not-a-Number and/or Infinity - "
                       "removing object.");
+}
+
+/* With --strict the error for a child of the other dimension, which
+ * OpenSCAD 2021.01 leaves out with its warnings: spancast's words, as for
+ * the other strict errors (OpenSCAD's "Ignoring ..." says what it does,
+ * not what is wrong). */
+static sc_status other_dim(const build_ctx *c, const sc_location *loc, int in_2d)
+{
+    return err_set(c->error, SC_ERR_SEMANTIC, loc, "%s child object in a %s operation",
+                   in_2d ? "3D" : "2D", in_2d ? "2D" : "3D");
+}
+
+sc_status build_mixing(const build_ctx *c, const sc_location *loc, int in_2d)
+{
+    if (!c->notes)
+        return SC_OK;
+    if (c->strict)
+        return other_dim(c, loc, in_2d);
+    return build_note(c, loc, "Mixing 2D and 3D objects is not supported");
+}
+
+sc_status build_ignoring(const build_ctx *c, const sc_location *loc, int in_2d)
+{
+    if (!c->notes)
+        return SC_OK;
+    if (c->strict)
+        return other_dim(c, loc, in_2d);
+    return build_note(c, loc, "Ignoring %s child object for %s operation",
+                      in_2d ? "3D" : "2D", in_2d ? "2D" : "3D");
 }
 
 void build_matrix_xy(const affine *a, const double outer[2][3], double inner[2][3])

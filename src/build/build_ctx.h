@@ -124,6 +124,17 @@ sc_status build_bad_indices(const build_ctx *c, const model_node *n);
  * and where the subtree is only checked. */
 sc_status build_xform_not_finite(const build_ctx *c, const model_node *n);
 
+/* OpenSCAD 2021.01's warnings for a child at loc of the other dimension,
+ * which its operation leaves out (GeometryEvaluator.cc: isValidDim,
+ * collectChildren2D and collectChildren3D): "Mixing 2D and 3D objects is
+ * not supported" (build_mixing) and "Ignoring 3D child object for 2D
+ * operation" (build_ignoring; in_2d: the operation is 2D, else "2D ... for
+ * 3D"), where it is built (c->notes set); with --strict each is the error
+ * "3D child object in a 2D operation" (or 2D in 3D), so that the first
+ * warning the walk would give is the error. */
+sc_status build_mixing(const build_ctx *c, const sc_location *loc, int in_2d);
+sc_status build_ignoring(const build_ctx *c, const sc_location *loc, int in_2d);
+
 /* A nested node's argument error, kept by the lowering (model.h, pending):
  * copied into c->error, its status returned. */
 sc_status build_pending(const build_ctx *c, const model_node *n);

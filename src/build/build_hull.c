@@ -485,7 +485,8 @@ static sc_status closed_check(const walk *w, const model_node *n, int *open)
 
 /* ---- the walk ---- */
 
-/* multmatrix(m): the matrix, or 0 in *ok for a singular one (no geometry). */
+/* multmatrix(m): the matrix, or 0 in *ok for a singular one (no geometry;
+ * one removed for a nan or inf entry is the zero map: inner_frame). */
 static sc_status read_matrix(const build_ctx *c, const model_node *n, affine *out,
                              int *ok)
 {
@@ -495,7 +496,13 @@ static sc_status read_matrix(const build_ctx *c, const model_node *n, affine *ou
     *out = *n->u.xform;
     affine inverse;
     *ok = affine_invert(out, &inverse);
-    return build_xform_not_finite(c, n);
+    return SC_OK;
+}
+
+/* Whether n is a multmatrix removed for a nan or inf entry (model.h). */
+static int removed(const model_node *n)
+{
+    return n->kind == MODEL_XFORM && n->not_finite;
 }
 
 /* group, union, render, color, material: the union of their children. */
@@ -524,10 +531,21 @@ static int skipped(const model_node *n)
 
 /* Whether n is 2D (a 2D shape, or an operation whose first child with a
  * dimension is 2D: build_dim), which a 3D hull, minkowski or resize
- * ignores as OpenSCAD 2021.01 does (its collectChildren3D). */
+ * ignores as OpenSCAD 2021.01 does (its collectChildren3D); a projection
+ * is, also one without a 3D child (no_geometry), so that check_2d reads
+ * its children. */
 static int is_2d(const model_node *n)
 {
     return build_dim(n, 0) == 2;
+}
+
+/* Whether n is a projection without a 3D child (build_projects), of which
+ * OpenSCAD 2021.01 makes no geometry: its children give their own
+ * warnings, but it neither mixes nor is ignored, as in the 3D walk
+ * (build.c). */
+static int no_geometry(const model_node *n)
+{
+    return n->kind == MODEL_PROJECTION && !build_projects(n);
 }
 
 /* A 2D child n: checked through the 2D engine, for its errors (and the
@@ -537,7 +555,7 @@ static sc_status check_2d(const walk *w, const model_node *n, const model_node *
 {
     int empty;
     sc_status st = build_twod_check(w->c, n, &empty);
-    if (mixing && !*mixing && !empty)
+    if (mixing && !*mixing && !empty && !no_geometry(n))
         *mixing = n;
     return st;
 }
@@ -552,11 +570,11 @@ static sc_status warn_2d(const walk *w, const model_node *parent,
 {
     sc_status st = SC_OK;
     if (mixing)
-        st = build_note(w->c, &mixing->loc, "Mixing 2D and 3D objects is not supported");
+        st = build_mixing(w->c, &mixing->loc, 0);
     for (const model_node *n = parent->first_child; n && st == SC_OK; n = n->next) {
-        if (skipped(n) || is_shading(n->kind) || !is_2d(n))
+        if (skipped(n) || is_shading(n->kind) || !is_2d(n) || no_geometry(n))
             continue;
-        st = build_note(w->c, &n->loc, "Ignoring 2D child object for 3D operation");
+        st = build_ignoring(w->c, &n->loc, 0);
     }
     return st;
 }
@@ -575,6 +593,8 @@ static sc_status resize_matrix(const walk *w, const model_node *n, int depth, af
                                const char **warning);
 static sc_status solid_parts(const walk *w, const model_node *n, const affine *m,
                              int depth, partlist *out);
+static sc_status collect(const walk *w, const model_node *parent, const affine *m,
+                         int depth, partlist *out);
 
 /* The frame of the children of a multmatrix or resize n under m: m after
  * n's own matrix, in *inner; 0 in *ok for a singular multmatrix (the
@@ -587,8 +607,54 @@ static sc_status inner_frame(const walk *w, const model_node *n, const affine *m
     *ok = 1;
     sc_status st = n->kind == MODEL_XFORM ? read_matrix(w->c, n, &local, ok)
                                           : resize_matrix(w, n, depth, &local, &warning);
+    if (st == SC_OK && removed(n)) {
+        /* OpenSCAD 2021.01 evaluates the children first: their warnings
+         * (not its check of their dimensions: collect), then the removal;
+         * a minkowski inside them empties nothing out here */
+        walk sub = *w;
+        int not_closed = 0;
+        if (sub.not_closed)
+            sub.not_closed = &not_closed;
+        partlist scratch = {NULL, 0, 0};
+        st = collect(&sub, n, m, depth, &scratch);
+        parts_free(&scratch);
+        *ok = 0;
+        return st == SC_OK ? build_xform_not_finite(w->c, n) : st;
+    }
     if (st == SC_OK && *ok)
         *inner = affine_mul(m, &local);
+    return st;
+}
+
+/* A '%' child n (nothing for any other): no operand, but walked for the
+ * warnings of its subtree, as OpenSCAD 2021.01's render evaluates a
+ * background child before it leaves it out; its parent says nothing of
+ * it. */
+static sc_status background(const walk *w, const model_node *n, const affine *m,
+                            int depth)
+{
+    if ((n->modifiers & (MODEL_MOD_DISABLE | MODEL_MOD_BACKGROUND)) !=
+            MODEL_MOD_BACKGROUND ||
+        is_shading(n->kind))
+        return SC_OK;
+    if (is_2d(n))
+        return check_2d(w, n, NULL);
+    /* n alone, as the child of a view of its parent (as minkowski_parts
+     * walks each child), evaluated on its own: no part of the parent's
+     * union or minkowski, so a mesh in it that is not closed is not
+     * taken into CGAL there (nor empties the minkowski) */
+    model_node view = *n;
+    model_node lone = *n;
+    lone.next = NULL;
+    lone.modifiers &= ~MODEL_MOD_BACKGROUND;
+    view.first_child = &lone;
+    view.child_count = 1;
+    walk sub = *w;
+    sub.in_union = 0;
+    sub.not_closed = NULL;
+    partlist parts = {NULL, 0, 0};
+    sc_status st = collect(&sub, &view, m, depth + 1, &parts);
+    parts_free(&parts);
     return st;
 }
 
@@ -604,9 +670,12 @@ static sc_status collect(const walk *w, const model_node *parent, const affine *
     const model_node *mixing = NULL; /* the first 2D child that is not empty */
     for (const model_node *n = parent->first_child; n; n = n->next) {
         model_kind kind = n->kind;
-        if (skipped(n) || is_shading(kind))
-            continue;
         sc_status st = SC_OK;
+        if (skipped(n) || is_shading(kind)) {
+            if ((st = background(w, n, m, depth)) != SC_OK)
+                return st;
+            continue;
+        }
         if (is_2d(n)) {
             st = check_2d(w, n, &mixing);
             any_2d = 1;
@@ -687,7 +756,7 @@ static sc_status collect(const walk *w, const model_node *parent, const affine *
         if (st != SC_OK)
             return st;
     }
-    return any_2d ? warn_2d(w, parent, mixing) : SC_OK;
+    return any_2d && !removed(parent) ? warn_2d(w, parent, mixing) : SC_OK;
 }
 
 /* Replaces each part by the vertices of its hull (flat parts keep their
@@ -728,8 +797,10 @@ static sc_status minkowski_parts(const walk *w, const model_node *n, const affin
         return depth_error(w, n);
     for (const model_node *child = n->first_child; child && st == SC_OK;
          child = child->next) {
-        if (skipped(child))
+        if (skipped(child)) {
+            st = background(&inner, child, m, depth);
             continue;
+        }
         partlist parts = {NULL, 0, 0};
         /* Each child alone: collect walks the children of its argument, so
          * walk a one-child view of the minkowski node. */
@@ -1010,8 +1081,16 @@ static sc_status nef_children(const walk *w, const model_node *parent, const aff
     const model_node *mixing = NULL; /* the first 2D child that is not empty */
     size_t mark = w->c->nefs ? build_nef_cache_mark(w->c->nefs) : 0;
     for (const model_node *n = parent->first_child; n; n = n->next) {
-        if (skipped(n) || is_shading(n->kind))
+        if (skipped(n) || is_shading(n->kind)) {
+            sc_status st = background(w, n, m, depth);
+            if (st != SC_OK) {
+                if (*out)
+                    w->nef->release(*out);
+                *out = NULL;
+                return st;
+            }
             continue;
+        }
         nef_solid *s = NULL; /* a 2D child: the empty solid, as OpenSCAD ignores it */
         sc_status st = is_2d(n) ? check_2d(w, n, &mixing) : nef_node(w, n, m, depth, &s);
         if (st == SC_OK)

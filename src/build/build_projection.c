@@ -321,6 +321,7 @@ static sc_status built_soup(const pwalk *w, const model_node *n, soup *s)
 }
 
 static sc_status leaf_soup(pwalk *w, const model_node *n, soup *s, int depth);
+static sc_status background(pwalk *w, const model_node *k, const affine *m, int depth);
 
 /* OpenSCAD 2021.01's warnings for the 2D children of parent, a hull
  * inside projection (a 3D operation there), which it leaves out: after the
@@ -332,11 +333,11 @@ static sc_status ignored_2d(const build_ctx *c, const model_node *parent,
 {
     sc_status st = SC_OK;
     if (mixing)
-        st = build_note(c, &mixing->loc, "Mixing 2D and 3D objects is not supported");
+        st = build_mixing(c, &mixing->loc, 0);
     for (const model_node *n = parent->first_child; n && st == SC_OK; n = n->next) {
         if ((n->modifiers & (MODEL_MOD_DISABLE | MODEL_MOD_BACKGROUND)) || !flat(n))
             continue;
-        st = build_note(c, &n->loc, "Ignoring 2D child object for 3D operation");
+        st = build_ignoring(c, &n->loc, 0);
     }
     return st;
 }
@@ -356,12 +357,15 @@ static sc_status hull_points(pwalk *w, const model_node *parent, const affine *m
     const model_node *mixing = NULL; /* the first 2D child that is not empty */
     for (const model_node *n = parent->first_child; n; n = n->next) {
         model_kind kind = n->kind;
+        sc_status st = SC_OK;
         if ((n->modifiers & (MODEL_MOD_DISABLE | MODEL_MOD_BACKGROUND)) ||
-            kind == MODEL_LIGHT || kind == MODEL_CAMERA || kind == MODEL_BACKGROUND)
+            kind == MODEL_LIGHT || kind == MODEL_CAMERA || kind == MODEL_BACKGROUND) {
+            if ((st = background(w, n, m, depth)) != SC_OK)
+                return st;
             continue;
+        }
         if (n->pending && !flat(n))
             return build_pending(c, n);
-        sc_status st = SC_OK;
         if (flat(n) || kind == MODEL_PROJECTION) {
             /* checked, then left out (ignored_2d); a projection that is not
              * flat is no geometry */
@@ -376,11 +380,18 @@ static sc_status hull_points(pwalk *w, const model_node *parent, const affine *m
             const char *warning = NULL;
             if (kind == MODEL_RESIZE)
                 st = build_resize(c, n, &w->cache, &local, &warning);
-            else
-                st = build_xform_not_finite(c, n);
             affine inner = affine_mul(m, &local), inverse;
-            if (st == SC_OK && affine_invert(&inner, &inverse))
+            if (kind == MODEL_XFORM && n->not_finite) {
+                /* removed: its children's warnings first, without its
+                 * check of their dimensions, then the removal (walk_node) */
+                soup scratch = {NULL, 0, 0, 0};
+                st = hull_points(w, n, m, depth + 1, &scratch);
+                free(scratch.v);
+                if (st == SC_OK)
+                    st = build_xform_not_finite(c, n);
+            } else if (st == SC_OK && affine_invert(&inner, &inverse)) {
                 st = hull_points(w, n, &inner, depth + 1, pts);
+            }
         } else {
             soup s = {NULL, 0, 0, 0};
             st = leaf_soup(w, n, &s, depth + 1);
@@ -394,6 +405,8 @@ static sc_status hull_points(pwalk *w, const model_node *parent, const affine *m
         if (st != SC_OK)
             return st;
     }
+    if (parent->kind == MODEL_XFORM && parent->not_finite) /* removed: not checked */
+        return SC_OK;
     return ignored_2d(c, parent, mixing);
 }
 
@@ -756,6 +769,25 @@ static int skipped(const model_node *n)
            n->kind == MODEL_BACKGROUND;
 }
 
+/* A '%' child k (nothing for any other): no operand, but walked for the
+ * warnings of its subtree, as OpenSCAD 2021.01's render evaluates a
+ * background child before it leaves it out; its parent says nothing of
+ * it. */
+static sc_status background(pwalk *w, const model_node *k, const affine *m, int depth)
+{
+    if ((k->modifiers & (MODEL_MOD_DISABLE | MODEL_MOD_BACKGROUND)) !=
+            MODEL_MOD_BACKGROUND ||
+        k->kind == MODEL_LIGHT || k->kind == MODEL_CAMERA || k->kind == MODEL_BACKGROUND)
+        return SC_OK;
+    if (flat(k) || k->kind == MODEL_PROJECTION)
+        return build_twod_check(w->c, k, NULL);
+    twod_region scratch;
+    twod_init(&scratch);
+    sc_status st = walk_node(w, k, m, depth + 1, &scratch);
+    twod_free(&scratch);
+    return st;
+}
+
 /* The children of n, the projection itself or a 3D operation in it,
  * walked into out. Its 2D children are checked (build_twod_check) and left out,
  * with OpenSCAD 2021.01's warnings once all are walked: a 3D operation's
@@ -767,9 +799,12 @@ static sc_status walk_children(pwalk *w, const model_node *n, const affine *m, i
 {
     const model_node *mixing = NULL; /* the first 2D child that is not empty */
     for (const model_node *k = n->first_child; k; k = k->next) {
-        if (skipped(k))
-            continue;
         sc_status st;
+        if (skipped(k)) {
+            if ((st = background(w, k, m, depth)) != SC_OK)
+                return st;
+            continue;
+        }
         if (flat(k) || k->kind == MODEL_PROJECTION) {
             /* a projection that is not flat is no geometry */
             int empty;
@@ -784,6 +819,8 @@ static sc_status walk_children(pwalk *w, const model_node *n, const affine *m, i
     }
     if (n == w->proj)
         return w->cut ? ignored_2d(w->c, n, NULL) : SC_OK;
+    if (n->kind == MODEL_XFORM && n->not_finite) /* removed: not checked (walk_node) */
+        return SC_OK;
     return ignored_2d(w->c, n, mixing);
 }
 
@@ -805,8 +842,10 @@ static sc_status boolean(pwalk *w, const model_node *n, const affine *m, int dep
     uint32_t i = 0;
     const model_node *mixing = NULL; /* the first 2D child that is not empty */
     for (const model_node *k = n->first_child; k && st == SC_OK; k = k->next) {
-        if (skipped(k))
+        if (skipped(k)) {
+            st = background(w, k, m, depth);
             continue;
+        }
         if (flat(k)) {
             int empty;
             st = build_twod_check(w->c, k, &empty);
@@ -860,9 +899,18 @@ static sc_status walk_node(pwalk *w, const model_node *n, const affine *m, int d
     case MODEL_RESIZE: {
         affine local;
         sc_status st = SC_OK;
+        if (kind == MODEL_XFORM && n->not_finite) {
+            /* removed for a nan or inf entry: OpenSCAD 2021.01 evaluates
+             * the children first (their warnings, not its check of their
+             * dimensions: walk_children), then says so */
+            twod_region scratch;
+            twod_init(&scratch);
+            st = walk_children(w, n, m, depth, &scratch);
+            twod_free(&scratch);
+            return st == SC_OK ? build_xform_not_finite(c, n) : st;
+        }
         if (kind == MODEL_XFORM) {
             local = *n->u.xform;
-            st = build_xform_not_finite(c, n);
         } else {
             const char *warning = NULL;
             st = build_resize(c, n, &w->cache, &local, &warning);

@@ -19,7 +19,8 @@
  *   intersection                  the intersection of the children
  * A child without area (a zero radius or size, no points) is empty as in
  * OpenSCAD's 2D evaluator: a union drops it, an intersection with it and a
- * difference from it are empty. '%' and '*' children are left out.
+ * difference from it are empty. '%' and '*' children are left out ('%'
+ * ones give their warnings: build_twod_background).
  *
  * build_region_covers says beforehand whether a linear_extrude is this
  * path's; anything else (twist, scale, offset, text, 3D nodes, ...) goes
@@ -163,11 +164,17 @@ static sc_status walk_children(walker *w, const model_node *n, const affine2 *m,
     prim_region *r = &w->region;
     uint32_t nodes = r->node_count, edges = r->edge_count, ellipses = r->ellipse_count;
     int operands = 0, seen = 0, empty = 0;
-    for (const model_node *k = twod_walk_first(n); k; k = twod_walk_next(k->next)) {
+    for (const model_node *k = n->first_child; k; k = k->next) {
+        if (k->modifiers & MODEL_MOD_DISABLE)
+            continue;
         int p = 0;
-        sc_status st = twod_walk(&w->walk, k, m, depth + 1, &p);
+        sc_status st = k->modifiers & MODEL_MOD_BACKGROUND
+                           ? build_twod_background(w->c, k, "linear_extrude")
+                           : twod_walk(&w->walk, k, m, depth + 1, &p);
         if (st != SC_OK)
             return st;
+        if (k->modifiers & MODEL_MOD_BACKGROUND)
+            continue; /* no operand, only its warnings */
         if (!p && (op == PRIM_REGION_INTERSECTION ||
                    (op == PRIM_REGION_DIFFERENCE && seen == 0)))
             empty = 1;

@@ -307,9 +307,10 @@ static sc_status gather(twod_walker *walk, const model_node *n, const affine2 *m
         return read_circle(c, n, m, p);
     if (kind == MODEL_POLYGON)
         return read_polygon(c, n, m, p);
-    /* removed for a nan or inf entry: the 2D engine says what OpenSCAD
-     * says of it and of its children (no geometry) */
-    if (kind == MODEL_XFORM && n->not_finite)
+    /* removed for a nan or inf entry, or 3D (a union of a cube and a
+     * square): the 2D engine says what OpenSCAD says of it and of its
+     * children (no geometry) */
+    if ((kind == MODEL_XFORM && n->not_finite) || build_dim(n, 1) == 3)
         return gather_other(c, n, m, p);
     affine2 inner = *m;
     if (kind == MODEL_XFORM) {

@@ -98,9 +98,12 @@ sc_status twod_walk_children(twod_walker *w, const model_node *n, const affine2 
                              int depth)
 {
     sc_status st = SC_OK;
-    for (const model_node *k = twod_walk_first(n); st == SC_OK && k;
-         k = twod_walk_next(k->next))
-        st = twod_walk(w, k, m, depth + 1, NULL);
+    for (const model_node *k = n->first_child; st == SC_OK && k; k = k->next) {
+        if (k->modifiers & MODEL_MOD_BACKGROUND)
+            st = build_twod_background(w->c, k, w->outer);
+        else if (!(k->modifiers & MODEL_MOD_DISABLE))
+            st = twod_walk(w, k, m, depth + 1, NULL);
+    }
     /* A multmatrix removed for a nan or inf entry: OpenSCAD 2021.01 says so
      * once its children are evaluated, with their warnings. */
     return st == SC_OK ? build_xform_not_finite(w->c, n) : st;
@@ -483,9 +486,9 @@ static sc_status ignore_3d(const eval *e, const model_node *k, int mixing)
 {
     sc_status st = SC_OK;
     if (mixing)
-        st = build_note(e->c, &k->loc, "Mixing 2D and 3D objects is not supported");
+        st = build_mixing(e->c, &k->loc, 1);
     if (st == SC_OK)
-        st = build_note(e->c, &k->loc, "Ignoring 3D child object for 2D operation");
+        st = build_ignoring(e->c, &k->loc, 1);
     return st;
 }
 
@@ -499,7 +502,7 @@ static sc_status ignore_3d_children(const eval *e, const model_node *first, int 
     for (const model_node *k = twod_walk_next(first); mixing && k;
          k = twod_walk_next(k->next)) {
         if (build_dim(k, e->in_2d) == 3 && build_presence_3d(k, e->in_2d) == BUILD_SOME) {
-            st = build_note(e->c, &k->loc, "Mixing 2D and 3D objects is not supported");
+            st = build_mixing(e->c, &k->loc, 1);
             break;
         }
     }
@@ -511,8 +514,111 @@ static sc_status ignore_3d_children(const eval *e, const model_node *first, int 
     return st;
 }
 
+static sc_status eval_children(eval *e, const model_node *n, twod_region **regions,
+                               uint32_t *count, int depth);
+static void free_children(twod_region *regions, uint32_t count);
+
+/* n's region, evaluated for its warnings (and errors) only, as OpenSCAD
+ * evaluates what it then leaves out; *empty (when empty is not NULL)
+ * says whether it has no outline. */
+static sc_status eval_only(eval *e, const model_node *n, int depth, int *empty)
+{
+    twod_region r;
+    twod_init(&r);
+    sc_status st = twod_walk(&e->walk, n, &unmoved, depth, &r);
+    if (empty)
+        *empty = r.contour_count == 0;
+    twod_free(&r);
+    return st;
+}
+
+/* Whether OpenSCAD 2021.01 ignores n as a 2D child of a 3D operation: 2D
+ * (build_dim), and not a projection without a 3D child, which is no
+ * geometry (build_projects). */
+static int flat_child(const eval *e, const model_node *n)
+{
+    return build_dim(n, e->in_2d) == 2 &&
+           (n->kind != MODEL_PROJECTION || build_projects(n));
+}
+
+/* The warnings of a 3D subtree n that is left out here (a child of a 2D
+ * operation, or a '%' one), as OpenSCAD 2021.01 evaluates it before it
+ * leaves it out: its 2D parts through this engine (a polygon's point), a 3D
+ * operation's own check of its children's dimensions once they are
+ * evaluated (build_mixing, build_ignoring, as build.c's flush_ignored:
+ * not under a multmatrix removed for a nan or inf entry, which is said
+ * instead), an extrusion's 2D children, a polyhedron's indices and
+ * points, an import of a file no reader takes. '%' children below give
+ * their warnings too, and are not operands. What needs the solid's
+ * geometry (a mesh that is not closed) says nothing, as in the 3D walk's
+ * subtrees that are only warned of. */
+static sc_status warn_3d(eval *e, const model_node *n, int depth)
+{
+    if (depth > TWOD_WALK_MAX_DEPTH)
+        return err_set(e->c->error, SC_ERR_LIMIT, &n->loc,
+                       "too many nested %s in %s (limit is %d)", e->walk.nested,
+                       e->walk.outer, TWOD_WALK_MAX_DEPTH);
+    switch (n->kind) {
+    case MODEL_POLYHEDRON:
+        return build_bad_indices(e->c, n);
+    case MODEL_IMPORT:
+        return unsupported_import(e, n);
+    case MODEL_LINEAR_EXTRUDE:
+    case MODEL_ROTATE_EXTRUDE: {
+        twod_region *regions;
+        uint32_t count;
+        sc_status st = eval_children(e, n, &regions, &count, depth);
+        free_children(regions, count);
+        return st;
+    }
+    case MODEL_UNION:
+    case MODEL_DIFFERENCE:
+    case MODEL_INTERSECTION:
+    case MODEL_COLOR:
+    case MODEL_MATERIAL:
+    case MODEL_XFORM:
+    case MODEL_RESIZE:
+    case MODEL_MOTION:
+    case MODEL_HULL:
+    case MODEL_MINKOWSKI:
+        break;
+    default:
+        return SC_OK;
+    }
+    const model_node *mixing = NULL; /* the first 2D child that is not empty */
+    for (const model_node *k = n->first_child; k; k = k->next) {
+        if (k->modifiers & MODEL_MOD_DISABLE)
+            continue;
+        int empty = 1;
+        sc_status st = build_dim(k, e->in_2d) == 2 ? eval_only(e, k, depth + 1, &empty)
+                                                   : warn_3d(e, k, depth + 1);
+        if (st != SC_OK)
+            return st;
+        if (!mixing && !empty && !(k->modifiers & MODEL_MOD_BACKGROUND) &&
+            flat_child(e, k))
+            mixing = k;
+    }
+    if (n->kind == MODEL_XFORM && n->not_finite)
+        return build_xform_not_finite(e->c, n);
+    sc_status st = mixing ? build_mixing(e->c, &mixing->loc, 0) : SC_OK;
+    for (const model_node *k = twod_walk_first(n); st == SC_OK && k;
+         k = twod_walk_next(k->next)) {
+        if (flat_child(e, k))
+            st = build_ignoring(e->c, &k->loc, 0);
+    }
+    return st;
+}
+
+/* A '%' child k (build_twod_background). */
+static sc_status background(eval *e, const model_node *k, int depth)
+{
+    return build_dim(k, e->in_2d) == 2 ? eval_only(e, k, depth, NULL)
+                                       : warn_3d(e, k, depth);
+}
+
 /* The regions of the nodes from first on, the children of an operation of
- * this kind ('%' and '*' left out; 3D ones ignored with a warning, as
+ * this kind ('*' left out, '%' evaluated for its warnings only; 3D ones
+ * ignored with a warning, as
  * OpenSCAD ignores them, unless removed: the operation is a multmatrix
  * removed for a nan or inf entry). *regions holds *count initialised
  * regions, to be freed by free_children. */
@@ -537,16 +643,23 @@ static sc_status eval_list(eval *e, const model_node *first, model_kind kind, in
     int mixing = kind != MODEL_OFFSET && kind != MODEL_LINEAR_EXTRUDE &&
                  kind != MODEL_ROTATE_EXTRUDE;
     sc_status st = SC_OK;
-    for (const model_node *k = twod_walk_next(first); st == SC_OK && k;
-         k = twod_walk_next(k->next)) {
+    for (const model_node *k = first; st == SC_OK && k; k = k->next) {
+        if (k->modifiers & MODEL_MOD_DISABLE)
+            continue;
+        if (k->modifiers & MODEL_MOD_BACKGROUND) {
+            /* its parent says nothing of it (ignore_3d_children) */
+            st = background(e, k, depth + 1);
+            continue;
+        }
         twod_init(&r[*count]);
         (*count)++;
         /* a 3D child is an empty operand, as in OpenSCAD: it empties an
-         * intersection */
+         * intersection; OpenSCAD evaluates it first, with the warnings of
+         * its subtree */
         if (build_dim(k, e->in_2d) != 3)
             st = twod_walk(&e->walk, k, &unmoved, depth + 1, &r[*count - 1]);
         else
-            st = unsupported_import(e, k);
+            st = warn_3d(e, k, depth + 1);
     }
     /* After the children's own warnings, as OpenSCAD checks the
      * dimensions once its children are evaluated; not those of a
@@ -875,8 +988,10 @@ static sc_status eval_node(twod_walker *w, const model_node *n, const affine2 *u
     default:
         break;
     }
-    if (build_dim(n, e->in_2d) == 3)
-        return ignore_3d(e, n, 0);
+    if (build_dim(n, e->in_2d) == 3) { /* evaluated, then ignored */
+        sc_status st = warn_3d(e, n, depth);
+        return st == SC_OK ? ignore_3d(e, n, 0) : st;
+    }
     twod_op op = kind == MODEL_DIFFERENCE     ? TWOD_DIFFERENCE
                  : kind == MODEL_INTERSECTION ? TWOD_INTERSECTION
                                               : TWOD_UNION;
@@ -970,6 +1085,13 @@ sc_status build_twod_check(const build_ctx *c, const model_node *n, int *empty)
         *empty = r.contour_count == 0;
     twod_free(&r);
     return st;
+}
+
+sc_status build_twod_background(const build_ctx *c, const model_node *k,
+                                const char *outer)
+{
+    eval e = evaluator(c, outer);
+    return background(&e, k, 1);
 }
 
 sc_status build_twod_top(const build_ctx *c, const model_node *first, twod_region *out)

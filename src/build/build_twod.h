@@ -32,6 +32,15 @@ sc_status build_twod_check(const build_ctx *c, const model_node *n, int *empty);
 /* The top level of a file from first on, a 2D model: the union of its
  * nodes, 3D ones ignored as a 2D operation ignores them. */
 sc_status build_twod_top(const build_ctx *c, const model_node *first, twod_region *out);
+/* A '%' child k of a 2D operation, lowered in the 2D context: no operand,
+ * but evaluated for the warnings of its subtree (and its errors), as
+ * OpenSCAD 2021.01's render evaluates a background child before it leaves
+ * it out; its parent says nothing of it. A 3D subtree gives what OpenSCAD
+ * says as it evaluates it: its 2D parts' warnings, its operations' check
+ * of their children's dimensions, a removed multmatrix, a polyhedron's
+ * indices, not what needs its geometry. */
+sc_status build_twod_background(const build_ctx *c, const model_node *k,
+                                const char *outer);
 
 /* The dimension OpenSCAD 2021.01 gives node n: 2 or 3, 0 when nothing
  * below it has one (an empty group, a light). A shape has its own; an
@@ -85,9 +94,10 @@ const model_node *twod_walk_next(const model_node *k);
  * w->visit. */
 sc_status twod_walk(twod_walker *w, const model_node *n, const affine2 *m, int depth,
                     void *out);
-/* Visits the children of n that count at depth + 1, without results; then,
- * for a multmatrix removed for a nan or inf entry, OpenSCAD 2021.01's
- * warning that it is removed (build_xform_not_finite), after its
+/* Visits the children of n that count at depth + 1, without results, and
+ * gives the warnings of its '%' children (build_twod_background) in their
+ * place; then, for a multmatrix removed for a nan or inf entry, OpenSCAD
+ * 2021.01's warning that it is removed (build_xform_not_finite), after its
  * children's, as OpenSCAD evaluates them first. */
 sc_status twod_walk_children(twod_walker *w, const model_node *n, const affine2 *m,
                              int depth);
