@@ -345,7 +345,8 @@ static int plot(const char *csv, const char *png)
 int bench_main(int argc, char **argv)
 {
     if (argc < 1 || strcmp(argv[0], "accuracy") != 0) {
-        fprintf(stderr, "spancast: error: %s (expected 'bench accuracy')\n",
+        fprintf(stderr,
+                "spancast: error: %s (expected 'bench accuracy' or 'bench stability')\n",
                 argc < 1 ? "missing benchmark" : "unknown benchmark");
         return 2;
     }

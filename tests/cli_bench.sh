@@ -40,7 +40,7 @@ ls ./*.tmp* >/dev/null 2>&1 && fail "temporary files left behind"
 grep -qx "spancast: error: missing --csv FILE" err.txt || fail "message: $(cat err.txt)"
 "$bin" bench speed --csv x.csv 2>err.txt
 [ $? = 2 ] || fail "unknown benchmark should exit 2"
-grep -qx "spancast: error: unknown benchmark (expected 'bench accuracy')" err.txt ||
+grep -qx "spancast: error: unknown benchmark (expected 'bench accuracy' or 'bench stability')" err.txt ||
     fail "message: $(cat err.txt)"
 "$bin" bench accuracy --csv x.csv --rays 0 2>err.txt
 [ $? = 2 ] || fail "--rays 0 should exit 2"

@@ -51,7 +51,7 @@ printf 'sphere(r = 1);\n' >m.csg
 
 # commands
 expect_usage "missing command (try 'spancast --help')"
-expect_usage "unknown command 'frobnicate' (expected 'render', 'info', 'spans', 'inside', 'measure', 'overlaps', 'compare', 'view' or 'batch')" frobnicate
+expect_usage "unknown command 'frobnicate' (expected 'render', 'info', 'spans', 'inside', 'measure', 'overlaps', 'compare', 'view', 'batch' or 'bench')" frobnicate
 expect_usage "missing command before '-o' (try 'spancast --help')" -o x.png m.csg
 expect_usage "missing input file" render
 expect_usage "missing input file" info

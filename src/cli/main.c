@@ -1269,7 +1269,8 @@ static int run(int argc, char **argv)
     else
         return cli_usage_error(
             "unknown command '%s' (expected 'render', 'info', "
-            "'spans', 'inside', 'measure', 'overlaps', 'compare', 'view' or 'batch')",
+            "'spans', 'inside', 'measure', 'overlaps', 'compare', 'view', 'batch' or "
+            "'bench')",
             command);
     int st = parse_args(&a, argc, argv);
     if (st)
