@@ -35,6 +35,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 #include <time.h>
 
 #include "build/scene.h"
@@ -386,6 +387,18 @@ int bench_stability_main(int argc, char **argv)
     if (!csv) {
         fprintf(stderr, "spancast: error: missing --csv FILE\n");
         return 2;
+    }
+    /* Without the cases every row would be empty: say so, and write
+     * nothing. */
+    char cases[4096];
+    struct stat info;
+    snprintf(cases, sizeof cases, "%s/tests/stability", b.dir);
+    if (stat(cases, &info) != 0 || !S_ISDIR(info.st_mode)) {
+        fprintf(stderr,
+                "spancast: error: no stability cases in '%s' (run it in the source "
+                "folder, or give it with --dir DIR)\n",
+                cases);
+        return 1;
     }
     run_cases(&b);
     int bad = b.failed;

@@ -40,6 +40,15 @@ grep -q "missing --csv FILE" err.txt || fail "message: $(cat err.txt)"
 [ $? = 2 ] || fail "unknown option should exit 2"
 "$bin" bench stability --csv out.csv --dir /nonexistent 2>err.txt
 [ $? = 1 ] || fail "a missing folder should exit 1"
+grep -qx "spancast: error: no stability cases in '/nonexistent/tests/stability' (run it in the source folder, or give it with --dir DIR)" \
+    err.txt || fail "message: $(cat err.txt)"
+[ -e out.csv ] && fail "out.csv written without cases"
+# outside the source folder without --dir: the same, not a table of empty rows
+"$bin" bench stability --csv out.csv 2>err.txt
+[ $? = 1 ] || fail "no cases in . should exit 1"
+grep -qx "spancast: error: no stability cases in './tests/stability' (run it in the source folder, or give it with --dir DIR)" \
+    err.txt || fail "message: $(cat err.txt)"
+[ -e out.csv ] && fail "out.csv written without cases"
 
 [ "$fails" = 0 ] && echo "all passed"
 exit "$fails"
