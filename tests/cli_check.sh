@@ -9,17 +9,13 @@
 . "$(dirname "$0")/testlib.sh"
 require_tools python3
 
-# A 10 mm cube drilled along z through (5, 5) with radius 2.
-cat >drilled.csg <<'CSG'
-difference() {
-  cube(size = [10, 10, 10], center = false);
-  multmatrix([[1, 0, 0, 5], [0, 1, 0, 5], [0, 0, 1, -1], [0, 0, 0, 1]]) {
-    cylinder(h = 12, r1 = 2, r2 = 2, center = false);
-  }
-}
-CSG
-# The same with the hole moved 0.1 mm along x.
-sed 's/\[1, 0, 0, 5\], \[0, 1, 0, 5\]/[1, 0, 0, 5.1], [0, 1, 0, 5]/' drilled.csg >moved.csg
+# The README's models (docs/examples): a 10 mm cube drilled along z through
+# (5, 5) with radius 2; the same with the hole moved 0.1 mm along x; a
+# drilled plate with three bolts.
+cp "$src/docs/examples/drilled.csg" "$src/docs/examples/moved.csg" \
+    "$src/docs/examples/assembly.csg" . || fail "the README's models are missing"
+cmp -s moved.csg <(sed 's/\[1, 0, 0, 5\], \[0, 1, 0, 5\]/[1, 0, 0, 5.1], [0, 1, 0, 5]/' drilled.csg) ||
+    fail "moved.csg is not drilled.csg with the hole moved 0.1 mm"
 
 # pycheck 'PYTHON' FILE: runs the Python statements with j = the JSON in
 # FILE; a failed assert is a failure of this test. holds(e, x) says that
@@ -150,30 +146,6 @@ holds(o[0]["volume"], 1000)' roots.json
 # A drilled plate (a module call: one group) with three bolts: one with
 # clearance in its hole, one resting on the plate's top face, one 0.1 mm
 # too thick for its hole, which overlaps the plate by pi (2.1^2 - 2^2) 5.
-cat >assembly.csg <<'CSG'
-group() {
-  group() {
-    difference() {
-      cube(size = [30, 10, 5]);
-      multmatrix([[1, 0, 0, 5], [0, 1, 0, 5], [0, 0, 1, -1], [0, 0, 0, 1]]) {
-        cylinder(h = 7, r1 = 2, r2 = 2);
-      }
-      multmatrix([[1, 0, 0, 25], [0, 1, 0, 5], [0, 0, 1, -1], [0, 0, 0, 1]]) {
-        cylinder(h = 7, r1 = 2, r2 = 2);
-      }
-    }
-  }
-  multmatrix([[1, 0, 0, 5], [0, 1, 0, 5], [0, 0, 1, -3], [0, 0, 0, 1]]) {
-    cylinder(h = 12, r1 = 1.9, r2 = 1.9);
-  }
-  multmatrix([[1, 0, 0, 15], [0, 1, 0, 5], [0, 0, 1, 5], [0, 0, 0, 1]]) {
-    cylinder(h = 4, r1 = 2, r2 = 2);
-  }
-  multmatrix([[1, 0, 0, 25], [0, 1, 0, 5], [0, 0, 1, -3], [0, 0, 0, 1]]) {
-    cylinder(h = 12, r1 = 2.1, r2 = 2.1);
-  }
-}
-CSG
 run 1 assembly.json overlaps assembly.csg --json -q --tolerance=1e-2
 pycheck '
 o = j["overlaps"]
