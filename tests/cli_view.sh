@@ -457,5 +457,40 @@ if command -v openscad >/dev/null; then
     fi
 fi
 
+# A .scad with -D: the screenshot's command carries the settings, and
+# running it writes the same image (without them it would not: r is 1 in
+# the file).
+if command -v openscad >/dev/null; then
+    checks=$((checks + 1))
+    printf 'r = 1;\nsphere(r, $fn = 24);\n' >d.scad
+    "$bin" view d.scad -D 'r=3' --imgsize=$W,$H --spp=1 --verbose >dview.out 2>dview.err &
+    pid=$!
+    wid=$(timeout 60 xdotool search --sync --name '^spancast view: d.scad' | head -n 1)
+    if [ -n "$wid" ]; then
+        wait_title "* - done - load #1 *" 300 || fail "-D: the model never done"
+        xdotool key ctrl+s
+        if wait_file dview.out "^screenshot: " 120; then
+            line=$(grep "^screenshot: " dview.out | head -n 1)
+            shot=$(echo "$line" | sed 's/^screenshot: \([^:]*\): .*/\1/')
+            command=$(echo "$line" | sed 's/^screenshot: [^:]*: spancast render //')
+            case "$command" in
+            "d.scad -o $shot "*" -D r=3") ;;
+            *) fail "-D: the screenshot's command has no -D r=3: $line" ;;
+            esac
+            # shellcheck disable=SC2086 # the printed options, split as a shell would
+            eval "\"\$bin\" render $command -q -o dreference.png"
+            n=$(differ "$shot" dreference.png)
+            [ "$n" = 0 ] || fail "-D: $n pixels differ from spancast render ($line)"
+        else
+            fail "-D: no 'screenshot:' line in 120 s: $(cat dview.err)"
+        fi
+        xdotool key ctrl+q
+        wait "$pid" || fail "-D: exit $?: $(cat dview.err)"
+    else
+        fail "-D: no viewer window in 60 s: $(cat dview.err)"
+        kill "$pid" 2>/dev/null
+    fi
+fi
+
 echo "$checks checks, $fails failures"
 [ "$fails" = 0 ]

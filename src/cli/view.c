@@ -797,9 +797,27 @@ static void request_shot(viewer *v)
     view_format(v, options, sizeof options);
     shell_quote(v->path, model, sizeof model);
     shell_quote(v->shot_path, out, sizeof out);
-    snprintf(v->shot_command, sizeof v->shot_command, "spancast render %s -o %s %s%s%s",
-             model, out, options, v->faithful & CLI_LOAD_FAITHFUL ? " --faithful" : "",
-             v->faithful & CLI_LOAD_STRICT ? " --strict" : "");
+    int len = snprintf(v->shot_command, sizeof v->shot_command,
+                       "spancast render %s -o %s %s%s%s", model, out, options,
+                       v->faithful & CLI_LOAD_FAITHFUL ? " --faithful" : "",
+                       v->faithful & CLI_LOAD_STRICT ? " --strict" : "");
+    if (len >= (int)sizeof v->shot_command)
+        len = -1;
+    /* the model's -D settings, in order, as the model was converted */
+    for (int i = 0; i < scad_define_count() && len > 0; i++) {
+        char define[PATH_MAX];
+        if (strlen(scad_define(i)) * 4 + 3 > sizeof define) { /* quoting could cut it */
+            len = -1;
+            break;
+        }
+        shell_quote(scad_define(i), define, sizeof define);
+        size_t at = (size_t)len, room = sizeof v->shot_command - at;
+        int k = snprintf(v->shot_command + at, room, " -D %s", define);
+        len = k > 0 && (size_t)k < room ? len + k : -1;
+    }
+    if (len < 0) /* cut: say so rather than print a command that differs */
+        snprintf(v->shot_command, sizeof v->shot_command,
+                 "(the render command, with its -D settings, is too long to print)");
     v->shot_busy = 1;
     v->shot_requested = 1;
     snprintf(v->note, sizeof v->note, "writing %s", v->shot_path);
