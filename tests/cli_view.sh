@@ -141,6 +141,8 @@ if [ -z "${SPANCAST_VIEW_XVFB:-}" ]; then
         printf 'size = 4;\n' >inc.scad
         poll 60 changed s.png "$first" ||
             fail "render --watch .scad: no new image 60 s after inc.scad changed"
+        grep -q "^spancast: .*inc\.scad changed, rendering again$" w.scad.err ||
+            fail "render --watch .scad: the change not put on inc.scad: $(cat w.scad.err)"
         kill -INT "$pid"
         wait "$pid"
 

@@ -1092,8 +1092,11 @@ static int run_render_watched(cli_args *a, int argc, char **argv)
         fflush(stdout);
         if (!watch_wait(a->watched, &cli_stop))
             break;
-        if (!a->quiet)
-            fprintf(stderr, "spancast: %s changed, rendering again\n", a->input);
+        if (!a->quiet) {
+            const char *what = watch_last_change(a->watched);
+            fprintf(stderr, "spancast: %s changed, rendering again\n",
+                    what ? what : a->input);
+        }
     }
     watch_close(a->watched);
     if (cli_stop)

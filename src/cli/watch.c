@@ -33,12 +33,14 @@
 typedef struct watch_entry {
     int wd;     /* the folder's watch descriptor */
     char *name; /* the file's name in that folder */
+    char *path; /* as it was added, for messages */
 } watch_entry;
 
 struct watch_set {
     int fd;
     watch_entry *entries;
     size_t count, capacity;
+    const char *changed; /* the path of the file the last change was to, or NULL */
 };
 
 static sc_status fail(sc_error *error, const char *format, const char *path, int code)
@@ -69,8 +71,10 @@ void watch_close(watch_set *set)
 {
     if (!set)
         return;
-    for (size_t k = 0; k < set->count; k++)
+    for (size_t k = 0; k < set->count; k++) {
         free(set->entries[k].name);
+        free(set->entries[k].path);
+    }
     free(set->entries);
     close(set->fd);
     free(set);
@@ -114,11 +118,15 @@ sc_status watch_add(watch_set *set, const char *path, sc_error *error)
         set->entries = grown;
         set->capacity = capacity;
     }
-    char *copy = strdup(name);
-    if (!copy)
+    char *copy = strdup(name), *whole = strdup(path);
+    if (!copy || !whole) {
+        free(copy);
+        free(whole);
         return fail(error, "cannot watch '%s': %s", path, ENOMEM);
+    }
     set->entries[set->count].wd = wd;
     set->entries[set->count].name = copy;
+    set->entries[set->count].path = whole;
     set->count++;
     return SC_OK;
 }
@@ -129,15 +137,22 @@ void watch_add_file(void *set, const char *path)
     (void)watch_add(set, path, &ignored);
 }
 
-static int concerns_set(const watch_set *set, const struct inotify_event *event)
+/* Whether the event is a change to a file of the set; set->changed
+ * becomes that file's path (NULL when events were lost). */
+static int concerns_set(watch_set *set, const struct inotify_event *event)
 {
-    if (event->mask & IN_Q_OVERFLOW)
+    if (event->mask & IN_Q_OVERFLOW) {
+        set->changed = NULL;
         return 1; /* events were lost: one of them may have been ours */
+    }
     if (!event->len)
         return 0;
     for (size_t k = 0; k < set->count; k++)
-        if (set->entries[k].wd == event->wd && !strcmp(set->entries[k].name, event->name))
+        if (set->entries[k].wd == event->wd &&
+            !strcmp(set->entries[k].name, event->name)) {
+            set->changed = set->entries[k].path;
             return 1;
+        }
     return 0;
 }
 
@@ -193,4 +208,9 @@ int watch_wait(watch_set *set, const volatile sig_atomic_t *stop)
         if (ready > 0)
             (void)watch_changed(set);
     }
+}
+
+const char *watch_last_change(const watch_set *set)
+{
+    return set->changed;
 }

@@ -42,4 +42,8 @@ int watch_changed(watch_set *set);
  * descriptor fails. */
 int watch_wait(watch_set *set, const volatile sig_atomic_t *stop);
 
+/* The file of the set the last change seen was to, as it was added; NULL
+ * when none was seen, or events were lost. */
+const char *watch_last_change(const watch_set *set);
+
 #endif
