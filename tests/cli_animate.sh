@@ -48,6 +48,17 @@ check
 cmp -s turn00001.png one.png || fail "turntable frame 1 is not the view turned by 90 degrees"
 cmp -s turn00000.png turn00001.png && fail "turntable frames 0 and 1 are the same"
 
+# ---- --animate alone on a .csg: the frames are written, with a warning
+# that they are all the same ----
+"$bin" render "$src/models/knob_part.csg" -o same.png --animate=2 --imgsize=16,12 \
+    --threads=1 -q 2>err.txt
+rc=$?
+check
+[ "$rc" = 0 ] || fail "--animate on a .csg: exit $rc: $(cat err.txt)"
+want="spancast: warning: --animate: $src/models/knob_part.csg is not a .scad, so \$t changes nothing and every frame is the same image (--turntable turns the camera)"
+[ "$(cat err.txt)" = "$want" ] || fail "--animate on a .csg: got '$(cat err.txt)'"
+cmp -s same00000.png same00001.png || fail "--animate on a .csg: the frames differ"
+
 # ---- video ----
 if command -v ffmpeg >/dev/null && command -v ffprobe >/dev/null; then
     "$bin" render "$src/models/knob_part.csg" -o v.png --turntable=5 --video=turn.mp4 \

@@ -183,6 +183,12 @@ int frames_run(const frames_job *job)
         fixed = cli_load(job->input, job->faithful);
         if (!fixed)
             return CLI_EXIT_FAILED;
+        if (!job->turntable)
+            fprintf(stderr,
+                    "spancast: warning: --animate: %s is not a .scad, so $t changes "
+                    "nothing and every frame is the same image (--turntable turns the "
+                    "camera)\n",
+                    job->input);
     }
     int status = 0;
     float *sum = NULL;
