@@ -281,13 +281,15 @@ grep -q "^frame coarse " view.out || fail "drag: no coarse frame"
 # O switches to orthographic, P back; Ctrl+3 draws the crosshairs
 checks=$((checks + 1))
 xdotool key o
-wait_title "* - done - *--projection=o *" 120 || fail "O: not orthographic"
+wait_title "* - done - *--projection=o * - orthographic" 120 || fail "O: not orthographic"
+grep -q "^orthographic$" view.out || fail "O: no 'orthographic' line"
 capture c.png
 n=$(differ b.png c.png)
 [ "$n" -gt 50 ] || fail "O: only $n pixels changed"
 xdotool key p
-wait_title "* - done - *--projection=p --fov=22.5 --spp=2" 120 ||
+wait_title "* - done - *--projection=p --fov=22.5 --spp=2 - perspective" 120 ||
     fail "P: not perspective"
+grep -q "^perspective$" view.out || fail "P: no 'perspective' line"
 capture c0.png
 
 # toggle KEY OPTION NAME: the key puts OPTION into the title's render

@@ -117,7 +117,7 @@ static const char usage_text[] =
     "       + / -               samples per pixel when still (x4 / /4)\n"
     "       Ctrl+S              screenshot (NAME-view-N.png, with its render command)\n"
     "       Ctrl+R, F4, F5      reload now\n"
-    "       Q, Esc, Ctrl+Q      quit\n";
+    "       Q, Esc, Ctrl+Q/W    quit\n";
 
 /* Coarse frames divide the window's sides by one of these. */
 static const double coarse_scales[] = {1, 1.5, 2, 2.5, 3, 4, 5, 6, 8, 10, 12, 16, 24, 32};
@@ -911,6 +911,7 @@ static int key(viewer *v, const SDL_KeyboardEvent *e)
             toggle_overlay(v, SC_VIEW_CROSSHAIRS, SC_VIEW_CROSSHAIRS, "crosshairs");
         } else {
             view_camera_preset(&v->cam, presets[digit]);
+            say(v, "view %s", sc_view_preset_name(presets[digit]));
             view_changed(v);
         }
         return 1;
@@ -918,29 +919,36 @@ static int key(viewer *v, const SDL_KeyboardEvent *e)
     if (ctrl && shift && sym == SDLK_v) {
         if (v->model)
             view_camera_view_all(&v->cam, v->model->scene);
+        say(v, "view all");
         view_changed(v);
     } else if (ctrl && (sym == SDLK_RIGHTBRACKET || sym == SDLK_LEFTBRACKET)) {
         view_camera_zoom(&v->cam, sym == SDLK_RIGHTBRACKET ? 120 : -120);
+        say(v, "zoom %s", sym == SDLK_RIGHTBRACKET ? "in" : "out");
         view_changed(v);
     } else if (sym == SDLK_HOME && v->model) {
         sc_render_options file;
         sc_render_options_init(&file);
         sc_render_options_from_scene(&file, v->model->scene);
         view_camera_reset(&v->cam, v->model->scene, &file);
+        say(v, "view reset");
         view_changed(v);
     } else if (!ctrl && (sym == SDLK_p || sym == SDLK_o)) {
         v->cam.projection =
             sym == SDLK_p ? SC_PROJECTION_PERSPECTIVE : SC_PROJECTION_ORTHOGRAPHIC;
+        say(v, "%s", sym == SDLK_p ? "perspective" : "orthographic");
         view_changed(v);
     } else if (ctrl && sym == SDLK_s) {
         request_shot(v);
     } else if ((ctrl && sym == SDLK_r) || sym == SDLK_F4 || sym == SDLK_F5) {
+        say(v, "reloading");
         view_loader_request(v->loader);
     } else if (sym == SDLK_PLUS || sym == SDLK_EQUALS || sym == SDLK_KP_PLUS) {
         v->spp = v->spp * 4 > MAX_SPP ? MAX_SPP : v->spp * 4;
+        say(v, "%d samples per pixel", v->spp);
         view_changed(v);
     } else if (sym == SDLK_MINUS || sym == SDLK_KP_MINUS) {
         v->spp = v->spp / 4 < 1 ? 1 : v->spp / 4;
+        say(v, "%d samples per pixel", v->spp);
         view_changed(v);
     } else if (!ctrl && sym == SDLK_c) {
         next_scheme(v);
