@@ -321,6 +321,14 @@ xdotool key c
 wait_title "* - done - *--spp=2 *--colorscheme=* - *" 120 || fail "C: no scheme in the title"
 grep -q "^colour scheme " view.out || fail "C: no 'colour scheme' line"
 
+# screenshot_line FILE: the first 'screenshot:' line of FILE as $line, its
+# image as $shot and the arguments of its render command as $command.
+screenshot_line() {
+    line=$(grep "^screenshot: " "$1" | head -n 1)
+    shot=$(echo "$line" | sed 's/^screenshot: \([^:]*\): .*/\1/')
+    command=$(echo "$line" | sed 's/^screenshot: [^:]*: spancast render //')
+}
+
 # Ctrl+S: the screenshot, with edges, the scheme and a hatched section, is
 # what `spancast render` writes with the printed options
 checks=$((checks + 1))
@@ -330,9 +338,7 @@ wait_title "* - done - *--view=edges --section=* --section-style=hatch - *" 120 
     fail "screenshot: edges and section not on: $(title)"
 xdotool key ctrl+s
 if wait_file view.out "^screenshot: " 120; then
-    line=$(grep "^screenshot: " view.out | head -n 1)
-    shot=$(echo "$line" | sed 's/^screenshot: \([^:]*\): .*/\1/')
-    command=$(echo "$line" | sed 's/^screenshot: [^:]*: spancast render //')
+    screenshot_line view.out
     case "$command" in
     "m.csg -o $shot --camera="*"--colorscheme="*" --view=edges --section="*) ;;
     *) fail "screenshot: unexpected command: $line" ;;
@@ -474,9 +480,7 @@ if command -v openscad >/dev/null; then
         wait_title "* - done - load #1 *" 300 || fail "-D: the model never done"
         xdotool key ctrl+s
         if wait_file dview.out "^screenshot: " 120; then
-            line=$(grep "^screenshot: " dview.out | head -n 1)
-            shot=$(echo "$line" | sed 's/^screenshot: \([^:]*\): .*/\1/')
-            command=$(echo "$line" | sed 's/^screenshot: [^:]*: spancast render //')
+            screenshot_line dview.out
             case "$command" in
             "d.scad -o $shot "*" -D r=3") ;;
             *) fail "-D: the screenshot's command has no -D r=3: $line" ;;
