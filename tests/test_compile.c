@@ -408,6 +408,48 @@ static void bvh_tasks_match_one_thread(void **state)
     }
 }
 
+/* Operands whose centres lie further apart than a double reaches (at
+ * -1e308 and 1e308), or are not numbers (a box unbounded both ways), still
+ * get a hierarchy over all of them: binning them must not turn an infinite
+ * or NaN position into a bin number (undefined behaviour, found by the
+ * fuzzer; the sanitised suite checks float-to-int casts). */
+static void bvh_takes_centres_beyond_double(void **state)
+{
+    (void)state;
+    enum { COUNT = 64 };
+    uint32_t ids[COUNT];
+    bbox boxes[COUNT];
+    for (uint32_t i = 0; i < COUNT; i++) {
+        vec3 p = v3(i, i % 7, 0);
+        if (i % 4 == 0)
+            p.x = i % 8 ? 1e308 : -1e308;
+        boxes[i] = (bbox){p, v3_add(p, v3(1, 1, 1))};
+        if (i % 4 == 0)
+            boxes[i].hi.x = p.x;
+        if (i % 16 == 1) {
+            boxes[i].lo.x = -INFINITY;
+            boxes[i].hi.x = INFINITY;
+        }
+        ids[i] = i;
+    }
+    bvh_nodes out = {0};
+    uint32_t root = bvh_build(&out, ids, boxes, COUNT, 0);
+    assert_int_equal(root, 0);
+    /* every operand once, under leaves whose counts add up */
+    int seen[COUNT] = {0};
+    for (uint32_t i = 0; i < COUNT; i++)
+        seen[ids[i]]++;
+    for (uint32_t i = 0; i < COUNT; i++)
+        assert_int_equal(seen[i], 1);
+    uint32_t leaves = 0;
+    for (uint32_t i = 0; i < out.count; i++)
+        leaves += out.v[i].count;
+    assert_int_equal(leaves, COUNT);
+    assert_true(out.v[root].bounds.lo.x == -INFINITY);
+    assert_true(out.v[root].bounds.hi.x == INFINITY);
+    free(out.v);
+}
+
 /* A leaf's world box is the box of its local box's eight transformed
  * corners (bbox_transform), bit for bit, for random boxes under random
  * affine maps, including zero and negative entries. */
@@ -472,6 +514,7 @@ int main(void)
         cmocka_unit_test(wide_union_gets_a_bvh),
         cmocka_unit_test(bvh_matches_plain_binning),
         cmocka_unit_test(bvh_tasks_match_one_thread),
+        cmocka_unit_test(bvh_takes_centres_beyond_double),
         cmocka_unit_test(leaf_bounds_are_transformed_corners),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

@@ -85,6 +85,17 @@ static double centre_on(const bbox *b, int axis)
     return 0.5 * (v3_get(b->lo, axis) + v3_get(b->hi, axis));
 }
 
+/* The bin of a box whose centre is c, for bins from lo, scale bins per
+ * unit. The product is tested before the cast: centres further apart than
+ * a double reaches make width infinite and scale 0, and a centre that is
+ * infinite or NaN (a box unbounded both ways) makes the product NaN. Those
+ * go to the first or last bin, never through an undefined cast. */
+static int bin_of(double c, double lo, double scale)
+{
+    double t = (c - lo) * scale;
+    return t >= BINS ? BINS - 1 : t > 0 ? (int)t : 0;
+}
+
 /* Reorders [0, count) so the first half has the smaller centres along axis
  * (quickselect on the middle position). */
 static void median_split(uint32_t *ids, bbox *boxes, uint32_t count, int axis)
@@ -167,8 +178,7 @@ static void plan_node(csg_bvh_node *node, uint32_t *ids, bbox *boxes, uint32_t c
             bin_box[b] = box_none();
         double scale = BINS / width;
         for (uint32_t i = 0; i < count; i++) {
-            int b = (int)((centre_on(&boxes[i], axis) - lo) * scale);
-            b = b < 0 ? 0 : b >= BINS ? BINS - 1 : b;
+            int b = bin_of(centre_on(&boxes[i], axis), lo, scale);
             bin_count[b]++;
             box_grow(&bin_box[b], &boxes[i]);
         }
@@ -205,8 +215,7 @@ static void plan_node(csg_bvh_node *node, uint32_t *ids, bbox *boxes, uint32_t c
             extent_of(&p->sides[1], NULL, 0);
             uint32_t i = 0, j = count;
             while (i < j) {
-                int b = (int)((centre_on(&boxes[i], axis) - lo) * scale);
-                b = b < 0 ? 0 : b >= BINS ? BINS - 1 : b;
+                int b = bin_of(centre_on(&boxes[i], axis), lo, scale);
                 extent *side = &p->sides[b >= best_bin];
                 box_grow(&side->bounds, &boxes[i]);
                 box_add(&side->centres, bbox_center(&boxes[i]));

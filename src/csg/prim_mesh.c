@@ -259,11 +259,13 @@ static void set_empty(prim_mesh_node *n, int k)
 }
 
 /* In double: a width of a few subnormal floats would make a float scale
- * infinite, and 0 times it NaN. */
+ * infinite, and 0 times it NaN. The product is tested before the cast, so
+ * that an infinite or NaN one goes to an end bin rather than through an
+ * undefined cast. */
 static int bin_of(float c, float lo, double scale)
 {
-    int b = (int)(((double)c - lo) * scale);
-    return b < 0 ? 0 : b >= BINS ? BINS - 1 : b;
+    double t = ((double)c - lo) * scale;
+    return t >= BINS ? BINS - 1 : t > 0 ? (int)t : 0;
 }
 
 static void swap_items(item *a, item *b)
