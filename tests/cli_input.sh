@@ -101,7 +101,7 @@ fails_with modifier-block.csg 1 "modifier-block.csg:1:2: error: expected a node 
 printf 'cube(1) sphere(2);\n' >leaf-child.csg
 check
 "$bin" info leaf-child.csg >/dev/null 2>err.txt || fail "leaf-child.csg did not load"
-[ "$(cat err.txt)" = "leaf-child.csg:1:1: warning: 'cube' takes no children; they are ignored" ] ||
+[ "$(cat err.txt)" = "leaf-child.csg:1:1: warning: module cube() does not support child modules" ] ||
     fail "leaf-child.csg: got '$(cat err.txt)'"
 
 # OpenSCAD's language beyond the CSG export, without OpenSCAD: the note,

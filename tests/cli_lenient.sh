@@ -1265,6 +1265,75 @@ bg_mink.csg:6:3: warning: Ignoring 2D child object for 3D operation" $mode
     }
 done
 
+# ---- arguments that are no parameter ----
+# OpenSCAD 2021.01 warns of a call's arguments as it instantiates the tree,
+# before any geometry: a name that is no parameter, a name given twice,
+# positional arguments past the last; not under '*', and silently for the
+# timestamp its own export writes. Then, for a primitive: children (not
+# instantiated, so not warned of in turn), $fs below 0.01, a radius given
+# with its diameter, a cylinder's r with r2; for a colour: a name it does
+# not know, components out of range (not alpha; c = 5 silently). spancast
+# gives the same warnings in the same order: compared here with what
+# openscad prints for the same file (openscad -o x.csg evaluates no
+# geometry), message and line. The model renders as it does without them
+# (the $fn that multmatrix passes down to its sphere included); --strict
+# refuses it at the first.
+cat >args.csg <<'M'
+union() {
+	cube(size = [2, 2, 2], centre = true);
+	multmatrix([[1, 0, 0, 4], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]], 2) sphere(r = 1, r = 2);
+	%cylinder(h = 1, r = 1, convexity = 2);
+	*cube(zz = 1);
+	linear_extrude(height = 1, v = [0, 0, 1], timestamp = 0) square(size = 1, center = true, size = 3);
+	import(file = "args_part.stl", timestamp = 0, id = 1);
+	multmatrix([[1, 0, 0, 0], [0, 1, 0, 6], [0, 0, 1, 0], [0, 0, 0, 1]]) sphere(r = 1, d = 3, $fs = 0.001);
+	cylinder(h = 1, r = 1, r2 = 2);
+	multmatrix([[1, 0, 0, 30], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]], $fn = 6) sphere(r = 10);
+	multmatrix([[1, 0, 0, -10], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]) cube(size = 1) sphere(r = 5, zz = 1);
+	color("nosuchcolour") multmatrix([[1, 0, 0, 0], [0, 1, 0, -10], [0, 0, 1, 0], [0, 0, 0, 1]]) cube(size = 1);
+	color([1.25, 0, -0.5], alpha = 7) multmatrix([[1, 0, 0, 0], [0, 1, 0, -14], [0, 0, 1, 0], [0, 0, 0, 1]]) cube(size = 1);
+	color(5) multmatrix([[1, 0, 0, 0], [0, 1, 0, -18], [0, 0, 1, 0], [0, 0, 0, 1]]) cube(size = 1);
+}
+M
+cat >args_ref.csg <<'M'
+union() {
+	cube(size = [2, 2, 2]);
+	multmatrix([[1, 0, 0, 4], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]) sphere(r = 2);
+	%cylinder(h = 1, r = 1);
+	linear_extrude(height = 1) square(size = 3, center = true);
+	import(file = "args_part.stl");
+	multmatrix([[1, 0, 0, 0], [0, 1, 0, 6], [0, 0, 1, 0], [0, 0, 0, 1]]) sphere(r = 1.5, $fs = 0.01);
+	cylinder(h = 1, r1 = 1, r2 = 2);
+	multmatrix([[1, 0, 0, 30], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]) sphere(r = 10, $fn = 6);
+	multmatrix([[1, 0, 0, -10], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]) cube(size = 1);
+	multmatrix([[1, 0, 0, 0], [0, 1, 0, -10], [0, 0, 1, 0], [0, 0, 0, 1]]) cube(size = 1);
+	multmatrix([[1, 0, 0, 0], [0, 1, 0, -14], [0, 0, 1, 0], [0, 0, 0, 1]]) cube(size = 1);
+	multmatrix([[1, 0, 0, 0], [0, 1, 0, -18], [0, 0, 1, 0], [0, 0, 0, 1]]) cube(size = 1);
+}
+M
+printf 'solid t\nfacet normal 0 0 -1\nouter loop\nvertex 0 0 -3\nvertex 0 1 -3\nvertex 1 0 -3\nendloop\nendfacet\nfacet normal 0 -1 0\nouter loop\nvertex 0 0 -3\nvertex 1 0 -3\nvertex 0 0 -2\nendloop\nendfacet\nfacet normal -1 0 0\nouter loop\nvertex 0 0 -3\nvertex 0 0 -2\nvertex 0 1 -3\nendloop\nendfacet\nfacet normal 1 1 1\nouter loop\nvertex 1 0 -3\nvertex 0 1 -3\nvertex 0 0 -2\nendloop\nendfacet\nendsolid t\n' >args_part.stl
+check
+openscad -o args_os.csg args.csg 2>os_args.err || fail "openscad -o args_os.csg args.csg: exit $?"
+# "WARNING: M in file args.csg, line N" and "args.csg:N:C: warning: M" as "N: M";
+# OpenSCAD warns of timestamp, which spancast takes silently (params.h)
+sed -n 's/^WARNING: \(.*\) in file args\.csg, line \([0-9]*\)$/\2: \1/p' os_args.err |
+    grep -v 'variable timestamp' >os_args.txt
+[ "$(wc -l <os_args.txt)" = 14 ] || fail "openscad's warnings: $(cat os_args.err)"
+for mode in "" --faithful; do
+    # shellcheck disable=SC2086
+    {
+        check
+        "$bin" render args.csg -o out.png --imgsize=64,48 -q $mode 2>err.txt ||
+            fail "args.csg $mode: exit $?: $(cat err.txt)"
+        sed -n 's/^args\.csg:\([0-9]*\):[0-9]*: warning: \(.*\)$/\1: \2/p' err.txt >sc_args.txt
+        cmp -s os_args.txt sc_args.txt ||
+            fail "args.csg $mode: spancast warns '$(cat err.txt)', openscad '$(cat os_args.txt)'"
+        [ "$(wc -l <err.txt)" = 14 ] || fail "args.csg $mode: other messages: $(cat err.txt)"
+        same args.csg args_ref.csg $mode
+        refuses args.csg "args.csg:2:25: error: variable centre not specified as parameter" $mode
+    }
+done
+
 # ---- a lossy mask ----
 warns cube_ref.csg "spancast: warning: --mask=m.jpg: JPEG is lossy, so the mask is no longer exactly 0 and 255 at the model's edges (.png, .tif and .exr are exact)" --mask=m.jpg
 check

@@ -410,9 +410,9 @@ esac
 # a model with a warning: on stderr as render prints it, and in the title
 checks=$((checks + 1))
 printf 'cube([20, 20, 30]) sphere(r = 8);\n' >m.csg
-want="m.csg:1:1: 'cube' takes no children; they are ignored"
+want="m.csg:1:1: module cube() does not support child modules"
 wait_title "* - WARNING $want - done - load #4 *" 30 || fail "warning: not in the title"
-grep -qxF "m.csg:1:1: warning: 'cube' takes no children; they are ignored" view.err ||
+grep -qxF "m.csg:1:1: warning: module cube() does not support child modules" view.err ||
     fail "warning: not on stderr: $(cat view.err)"
 
 # Ctrl+Q quits

@@ -256,8 +256,9 @@ static void test_errors(void **state)
     check_error("group() {\n  sphere($fn = 5000, r = 1);\n}\n",
                 "m.csg:2:3: error: faithful mode: $fn, $fa and $fs of radius 1 give "
                 "too many fragments (limit is 4096)");
-    check_error("cylinder($fn = 0, $fa = 0, $fs = 0, h = 1, r1 = 2, r2 = 0.5);",
-                "m.csg:1:1: error: faithful mode: $fn, $fa and $fs of radius 2 give "
+    /* $fa and $fs clamped to 0.01, as OpenSCAD clamps them: 6284 */
+    check_error("cylinder($fn = 0, $fa = 0, $fs = 0, h = 1, r1 = 10, r2 = 0.5);",
+                "m.csg:1:1: error: faithful mode: $fn, $fa and $fs of radius 10 give "
                 "too many fragments (limit is 4096)");
 }
 

@@ -696,43 +696,16 @@ static sc_status build_surface_leaf(builder *b, const model_node *n, const frame
 /* ---- boolean nodes with arguments ---- */
 
 /* color(c, alpha) (model.h): the colour its children get, each component
- * clamped to 0..1 with a warning where the node is built; an unknown name
- * is ignored with a warning. */
-static sc_status apply_color(builder *b, const model_node *n, int warns, float color[4])
+ * clamped to 0..1 (its warnings are the model's). */
+static void apply_color(const model_node *n, float color[4])
 {
-    float rgba[4];
-    double c[4];
-    sc_status st;
-    memcpy(c, n->u.color->c, sizeof c);
-    int set = n->u.color->set;
-    for (int i = 0; set && i < 4; i++) {
-        if (!(c[i] >= 0 && c[i] <= 1)) {
-            if (warns && (st = warn(b, &n->u.color->c_loc[i],
-                                    "colour component %g is out of range 0..1 (clamped)",
-                                    c[i])) != SC_OK)
-                return st;
-            c[i] = c[i] > 1 ? 1 : 0;
-        }
-        rgba[i] = (float)c[i];
+    const model_color *mc = n->u.color;
+    if (!mc->set)
+        return;
+    for (int i = 0; i < 4; i++) {
+        double c = i == 3 && mc->has_alpha ? mc->alpha : mc->c[i];
+        color[i] = c >= 0 && c <= 1 ? (float)c : c > 1 ? 1.0f : 0.0f;
     }
-    if (n->u.color->unknown && warns &&
-        (st = warn(b, &n->u.color->unknown_loc, "unknown colour '%s' is ignored",
-                   n->u.color->unknown)) != SC_OK)
-        return st;
-    double alpha = n->u.color->alpha;
-    if (n->u.color->has_alpha && set) {
-        if (!(alpha >= 0 && alpha <= 1)) {
-            if (warns && (st = warn(b, &n->u.color->alpha_loc,
-                                    "colour component %g is out of range 0..1 (clamped)",
-                                    alpha)) != SC_OK)
-                return st;
-            alpha = alpha > 1 ? 1 : 0;
-        }
-        rgba[3] = (float)alpha;
-    }
-    if (set)
-        memcpy(color, rgba, sizeof rgba);
-    return SC_OK;
 }
 
 /* ---- the walk ---- */
@@ -839,9 +812,11 @@ static sc_status visit_leaf(builder *b, const model_node *n, const frame *f)
 {
     sc_status st;
     model_kind kind = n->kind;
-    if (n->child_count > 0 && f->emit && kind != MODEL_LINEAR_EXTRUDE &&
-        kind != MODEL_ROTATE_EXTRUDE && !model_is_2d(kind) && kind != MODEL_HULL &&
-        kind != MODEL_MINKOWSKI &&
+    /* OpenSCAD's primitives warn of their children as OpenSCAD words it,
+     * with the arguments' warnings (model.h), and its import and surface
+     * ignore them silently; spancast's own leaves warn here. */
+    if (n->child_count > 0 && f->emit &&
+        (kind == MODEL_TORUS || kind == MODEL_QUADRIC || kind == MODEL_IMPLICIT) &&
         (st = warn(b, &n->loc, "'%s' takes no children; they are ignored", n->name)) !=
             SC_OK)
         return st;
@@ -975,8 +950,7 @@ static sc_status visit(builder *b, const model_node *n, int *opened)
             return st;
         f->moving = 1;
     } else if (kind == MODEL_COLOR) {
-        if ((st = apply_color(b, n, f->warns, f->color)) != SC_OK)
-            return st;
+        apply_color(n, f->color);
     } else if (kind == MODEL_MATERIAL) {
         if ((st = build_material(b->shading, n, f->emit, &f->material, f->color,
                                  b->error)) != SC_OK)
@@ -1189,6 +1163,27 @@ static sc_status build_parts(builder *b)
 /* build_scene and build_scene_take: owned, when not NULL, is m, freed as
  * soon as the walk is done; spare (or NULL) is freed or given to the
  * builder. */
+/* The model's warnings of arguments (model.h), first, as OpenSCAD gives
+ * them when it instantiates the tree; with --strict the first is the
+ * error (an argument that is not a parameter is most often a misspelt one,
+ * which leaves the part as it would be without it). */
+static sc_status argument_notes(builder *b)
+{
+    const model_notes *notes = &b->model->notes;
+    for (size_t i = 0; i < notes->count; i++) {
+        const sc_error *note = &notes->items[i];
+        if (b->strict) {
+            *b->error = *note;
+            b->error->status = SC_ERR_SEMANTIC;
+            return SC_ERR_SEMANTIC;
+        }
+        sc_status st = warn_note(b, note);
+        if (st != SC_OK)
+            return st;
+    }
+    return SC_OK;
+}
+
 static sc_status build_scene_of(const model *m, model *owned, void *spare,
                                 size_t spare_size, int flags, size_t max_triangles,
                                 csg_tree **out, shading **look, sc_error **warnings,
@@ -1230,7 +1225,9 @@ static sc_status build_scene_of(const model *m, model *owned, void *spare,
         free(spare);
     }
     uint32_t root = CSG_EMPTY;
-    sc_status st = walk(&b, &root);
+    sc_status st = argument_notes(&b);
+    if (st == SC_OK)
+        st = walk(&b, &root);
     free(b.ids);
     free(b.frames);
     free(b.ignored);

@@ -158,7 +158,6 @@ static int key_args(const model_node *n, uint64_t *h)
         k = mix(k, (uint64_t)c->set * 2 + (uint64_t)c->has_alpha);
         k = mix_bytes(k, c->c, sizeof c->c);
         k = mix_bytes(k, &c->alpha, sizeof c->alpha);
-        k = mix_string(k, c->unknown);
         break;
     }
     case MODEL_CUBE:
@@ -293,8 +292,7 @@ static int same_args(const model_node *a, const model_node *b)
     case MODEL_COLOR: {
         const model_color *x = a->u.color, *y = b->u.color;
         return x->set == y->set && x->has_alpha == y->has_alpha &&
-               same_bits(x->c, y->c, 4) && same_bits(&x->alpha, &y->alpha, 1) &&
-               same_string(x->unknown, y->unknown);
+               same_bits(x->c, y->c, 4) && same_bits(&x->alpha, &y->alpha, 1);
     }
     case MODEL_CUBE:
         return same_bits(a->u.cube.size, b->u.cube.size, 3) &&

@@ -2,6 +2,7 @@
 #include "model/args.h"
 
 #include <math.h>
+#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -75,7 +76,7 @@ sc_status model_read_sphere(const model_reader *r, const parse_node *n, double *
 {
     int given;
     *radius = 1;
-    parse_node_resolution(n, &res->fn, &res->fa, &res->fs);
+    model_resolution_of(n, 1, &res->fn, &res->fa, &res->fs);
     return model_radius(r, n, "d", "r", 0, radius, &given);
 }
 
@@ -86,7 +87,7 @@ sc_status model_read_cylinder(const model_reader *r, const parse_node *n, double
     int has_r = 0, has_r1 = 0, has_r2 = 0;
     *h = *r1 = *r2 = 1;
     *center = 0;
-    parse_node_resolution(n, &res->fn, &res->fa, &res->fs);
+    model_resolution_of(n, 1, &res->fn, &res->fa, &res->fs);
     sc_status st = model_number(r, n, "h", 0, h);
     if (st == SC_OK)
         st = model_radius(r, n, "d1", "r1", 1, r1, &has_r1);
@@ -558,14 +559,26 @@ sc_status model_read_surface(const model_reader *r, const parse_node *n,
 sc_status model_read_resolution(const model_reader *r, const parse_node *n, double *fn,
                                 double *fa, double *fs)
 {
+    static const char *const names[3] = {"$fn", "$fa", "$fs"};
+    double *outs[3] = {fn, fa, fs};
     *fn = 0;
     *fa = 12;
     *fs = 2;
-    sc_status st;
-    if ((st = model_number(r, n, "$fn", -1, fn)) != SC_OK ||
-        (st = model_number(r, n, "$fa", -1, fa)) != SC_OK)
-        return st;
-    return model_number(r, n, "$fs", -1, fs);
+    const parse_arg *a[3];
+    model_special_args(n, a);
+    for (int k = 0; k < 3; k++) {
+        if (!a[k])
+            continue;
+        uintptr_t at = (uintptr_t)a[k], first = (uintptr_t)n->args;
+        if (at >= first && at < first + n->arg_count * sizeof *n->args) { /* n's own */
+            sc_status st = model_number(r, n, names[k], -1, outs[k]);
+            if (st != SC_OK)
+                return st;
+        } else if (a[k]->value.kind == PARSE_NUMBER) {
+            *outs[k] = a[k]->value.u.number;
+        }
+    }
+    return SC_OK;
 }
 
 sc_status model_read_circle(const model_reader *r, const parse_node *n, model_circle *out)
@@ -577,5 +590,9 @@ sc_status model_read_circle(const model_reader *r, const parse_node *n, model_ci
     if ((st = model_number(r, n, "r", 0, &out->r)) != SC_OK ||
         (st = model_number(r, n, "d", -1, &out->d)) != SC_OK)
         return st;
-    return model_read_resolution(r, n, &out->res.fn, &out->res.fa, &out->res.fs);
+    st = model_read_resolution(r, n, &out->res.fn, &out->res.fa, &out->res.fs);
+    /* a primitive: OpenSCAD clamps them (model_check_params warns) */
+    out->res.fa = out->res.fa < MODEL_F_MINIMUM ? MODEL_F_MINIMUM : out->res.fa;
+    out->res.fs = out->res.fs < MODEL_F_MINIMUM ? MODEL_F_MINIMUM : out->res.fs;
+    return st;
 }

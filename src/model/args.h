@@ -52,7 +52,8 @@ sc_status model_radius(const model_reader *r, const parse_node *n, const char *d
 /* A true/false argument into *out (left alone when absent). */
 sc_status model_bool(const model_reader *r, const parse_node *n, const char *name,
                      int position, int *out);
-/* sphere(r = 1 | d, $fn, $fa, $fs)'s arguments. */
+/* sphere(r = 1 | d, $fn, $fa, $fs)'s arguments ($fn, $fa, $fs as
+ * model_resolution_of reads them, clamped as for every primitive). */
 sc_status model_read_sphere(const model_reader *r, const parse_node *n, double *radius,
                             model_resolution *res);
 /* cylinder(h = 1, r1 = 1, r2 = 1, center = false, $fn, $fa, $fs), also with
@@ -124,8 +125,9 @@ sc_status model_read_import(const model_reader *r, const parse_node *n,
 /* surface(file, center = false, invert = false) into *out. */
 sc_status model_read_surface(const model_reader *r, const parse_node *n,
                              model_surface *out);
-/* $fn, $fa, $fs of a 2D shape or an extrusion, each a number where given
- * (OpenSCAD's defaults 0, 12, 2 where not). */
+/* $fn, $fa, $fs of a 2D shape or an extrusion, each a number where the
+ * node gives it, else an ancestor's number as OpenSCAD passes it down
+ * (model_special_args), else OpenSCAD's defaults 0, 12, 2. */
 sc_status model_read_resolution(const model_reader *r, const parse_node *n, double *fn,
                                 double *fa, double *fs);
 /* circle(r = 1 | d, $fn, $fa, $fs)'s arguments, in that order (model.h). */

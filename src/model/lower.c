@@ -49,7 +49,9 @@ enum { KIND_CACHE = 8 };
 
 typedef struct kind_cache {
     const char *name[KIND_CACHE];
-    size_t index[KIND_CACHE]; /* into kinds, or KIND_UNKNOWN */
+    size_t index[KIND_CACHE];               /* into kinds, or KIND_UNKNOWN */
+    const model_params *params[KIND_CACHE]; /* model_params_of the name */
+    model_params_memo memo[KIND_CACHE];     /* of the name's calls */
 } kind_cache;
 
 typedef struct lowerer {
@@ -153,7 +155,6 @@ static sc_status lower_xform(lowerer *l, const parse_node *n, model_node *out)
  * it did not know): the children keep the colour they inherit. */
 static sc_status lower_color(lowerer *l, const parse_node *n, model_node *out)
 {
-    static const char expected[] = "a vector of numbers or a colour name";
     float rgba[4] = {1, 1, 1, 1};
     model_color *color = arena_calloc(&l->m->mem, 1, sizeof *color);
     if (!color)
@@ -163,32 +164,20 @@ static sc_status lower_color(lowerer *l, const parse_node *n, model_node *out)
     c[0] = c[1] = c[2] = c[3] = 1;
     const parse_value *v = model_arg(n, "c", 0);
     if (v && v->kind == PARSE_VECTOR) {
-        for (uint32_t i = 0; i < v->u.vector.count; i++) {
+        for (uint32_t i = 0; i < v->u.vector.count && i < 4; i++) {
             const parse_value *item = &v->u.vector.items[i];
-            if (item->kind != PARSE_NUMBER)
-                return model_wrong_type(&l->r, n, "c", item, expected);
-            if (i < 4) {
-                c[i] = item->u.number;
-                color->c_loc[i] = model_loc(&l->r, item);
-            }
+            c[i] = item->kind == PARSE_NUMBER ? item->u.number : 0;
         }
         color->set = !(c[0] < 0);
     } else if (v && v->kind == PARSE_STRING) {
         color->set = colors_lookup(v->u.string.chars, v->u.string.length, rgba);
         for (int i = 0; i < 4; i++)
             c[i] = rgba[i];
-        if (!color->set) {
-            color->unknown = v->u.string.chars;
-            color->unknown_loc = model_loc(&l->r, v);
-        }
-    } else if (v) {
-        return model_wrong_type(&l->r, n, "c", v, expected);
     }
-    color->has_alpha = model_arg(n, "alpha", 1) != NULL;
-    sc_status st = model_number(&l->r, n, "alpha", 1, &color->alpha);
-    if (st == SC_OK && color->has_alpha)
-        color->alpha_loc = model_loc(&l->r, model_arg(n, "alpha", 1));
-    return st;
+    const parse_value *alpha = model_arg(n, "alpha", 1);
+    color->has_alpha = alpha && alpha->kind == PARSE_NUMBER;
+    color->alpha = color->has_alpha ? alpha->u.number : 1;
+    return SC_OK;
 }
 
 /* ---- spancast's curved leaves (lower_curved.c) ---- */
@@ -365,15 +354,96 @@ static int root_search_enters(const char *name)
     return root_search_enters_kind(kind_index(name));
 }
 
-/* kind_index of a name of the tree l lowers, through l's cache. */
-static size_t lowerer_kind(lowerer *l, const char *name)
+/* The cache slot of a name of the tree l lowers, filled. */
+static size_t lowerer_slot(lowerer *l, const char *name)
 {
     size_t slot = ((uintptr_t)name >> 3) & (KIND_CACHE - 1);
     if (l->seen.name[slot] != name) {
         l->seen.name[slot] = name;
         l->seen.index[slot] = kind_index(name);
+        l->seen.params[slot] = model_params_of(name);
+        l->seen.memo[slot].p = NULL;
     }
-    return l->seen.index[slot];
+    return slot;
+}
+
+/* kind_index of a name of the tree l lowers, through l's cache. */
+static size_t lowerer_kind(lowerer *l, const char *name)
+{
+    return l->seen.index[lowerer_slot(l, name)];
+}
+
+/* Whether OpenSCAD instantiates the children of a node of this kind: not
+ * those of its primitives (nor of spancast's leaves and shading nodes,
+ * which take none, nor of a name it does not know). */
+static int instantiates_children(size_t kind)
+{
+    if (kind == KIND_UNKNOWN)
+        return 0;
+    switch (kinds[kind].kind) {
+    case MODEL_UNION:
+    case MODEL_DIFFERENCE:
+    case MODEL_INTERSECTION:
+    case MODEL_XFORM:
+    case MODEL_COLOR:
+    case MODEL_MATERIAL:
+    case MODEL_RESIZE:
+    case MODEL_MOTION:
+    case MODEL_LINEAR_EXTRUDE:
+    case MODEL_ROTATE_EXTRUDE:
+    case MODEL_OFFSET:
+    case MODEL_PROJECTION:
+    case MODEL_HULL:
+    case MODEL_MINKOWSKI:
+        return 1;
+    default:
+        return 0;
+    }
+}
+
+/* Adds OpenSCAD's warnings of n's arguments to the model's notes, when n
+ * is a builtin module of OpenSCAD's (params.h); *instantiates is then
+ * whether n's children are instantiated in turn, *primitive whether n is
+ * one of OpenSCAD's primitives (which warn of children). */
+static sc_status check_params(lowerer *l, const parse_node *n, int *instantiates,
+                              int *primitive, sc_error *error)
+{
+    size_t slot = lowerer_slot(l, n->name);
+    *instantiates = instantiates_children(l->seen.index[slot]);
+    const model_params *p = l->seen.params[slot];
+    *primitive = p && p->primitive;
+    return p ? model_check_params(l->r.file, n, p, &l->seen.memo[slot], &l->m->notes,
+                                  error)
+             : SC_OK;
+}
+
+/* Whether n has a child that is not '*' (OpenSCAD never reads those). */
+static int has_live_child(const parse_node *n)
+{
+    for (const parse_node *c = n->first_child; c; c = c->next)
+        if (!(c->modifiers & PARSE_MOD_DISABLE))
+            return 1;
+    return 0;
+}
+
+/* The warnings of the arguments of every node OpenSCAD instantiates, in
+ * file order: outside '*' subtrees and the children of primitives. */
+static sc_status check_tree(lowerer *l, const parse_tree *syntax, sc_error *error)
+{
+    const parse_node *n = syntax->first;
+    while (n) {
+        int instantiates = 0, primitive;
+        if (!(n->modifiers & PARSE_MOD_DISABLE)) {
+            size_t at = l->m->notes.count;
+            sc_status st = check_params(l, n, &instantiates, &primitive, error);
+            if (st == SC_OK && primitive && has_live_child(n))
+                st = model_note_children(l->r.file, n, &l->m->notes, at, error);
+            if (st != SC_OK)
+                return st;
+        }
+        n = parse_next_node(n, !instantiates);
+    }
+    return SC_OK;
 }
 
 static const parse_node *find_root(const parse_tree *syntax)
@@ -638,7 +708,9 @@ sc_status model_lower(const parse_tree *syntax, model **out, sc_error *error)
     lowerer l = {.m = m, .r = {syntax->file, NULL}};
     const parse_node *root = find_root(syntax);
     m->has_root = root != NULL;
-    sc_status st = walk(&l, syntax->first, NULL, IN_MAIN, root, &m->first, NULL, error);
+    sc_status st = check_tree(&l, syntax, error);
+    if (st == SC_OK)
+        st = walk(&l, syntax->first, NULL, IN_MAIN, root, &m->first, NULL, error);
     free(l.resizes);
     if (st != SC_OK) {
         model_free(m);
@@ -673,6 +745,7 @@ void model_free(model *m)
     if (!m)
         return;
     arena_free(&m->mem);
+    free(m->notes.items);
     free(m);
 }
 
@@ -680,11 +753,15 @@ void model_free(model *m)
 
 /* What the stream knows of an open syntax node, by its depth. */
 typedef struct stream_frame {
-    model_node *node; /* its model node; NULL when not lowered */
-    uint8_t descend;  /* its children are lowered, in ctx */
-    uint8_t ctx;      /* context of its children */
-    uint8_t searched; /* the root search enters its children */
-    uint8_t deferred; /* its subtree is kept and walked when it closes */
+    model_node *node;     /* its model node; NULL when not lowered */
+    uint8_t descend;      /* its children are lowered, in ctx */
+    uint8_t ctx;          /* context of its children */
+    uint8_t searched;     /* the root search enters its children */
+    uint8_t deferred;     /* its subtree is kept and walked when it closes */
+    uint8_t instantiates; /* OpenSCAD instantiates its children (check_tree) */
+    uint8_t primitive;    /* an instantiated primitive of OpenSCAD's */
+    uint8_t live_child;   /* it has a child that is not '*' (so far) */
+    size_t notes_from;    /* where its warnings start in the notes */
 } stream_frame;
 
 struct model_stream {
@@ -727,6 +804,18 @@ static sc_status stream_open(void *user, parse_node *n, int *keep, sc_error *err
     }
     size_t kind = lowerer_kind(&s->l, n->name);
     f->searched = searched && root_search_enters_kind(kind);
+    /* The argument warnings of check_tree, in the same order. */
+    if (parent && parent->primitive && !disabled)
+        s->frames[depth - 2].live_child = 1;
+    if ((!parent || parent->instantiates) && !disabled) {
+        int instantiates, primitive;
+        f->notes_from = s->l.m->notes.count;
+        sc_status st = check_params(&s->l, n, &instantiates, &primitive, error);
+        if (st != SC_OK)
+            return st;
+        f->instantiates = (uint8_t)instantiates;
+        f->primitive = (uint8_t)primitive;
+    }
     if (s->kept_depth)
         return SC_OK; /* inside a kept subtree: walked when it closes */
     int visited = !s->l.stopped && (!parent || parent->descend) && !disabled;
@@ -759,10 +848,14 @@ static sc_status stream_close(void *user, parse_node *n, sc_error *error)
 {
     model_stream *s = user;
     uint32_t depth = n->depth;
-    if (s->kept_depth && depth > s->kept_depth)
-        return SC_OK;
     const stream_frame *f = &s->frames[depth - 1];
     sc_status st = SC_OK;
+    /* its children are known now: the warning goes before its others */
+    if (f->live_child && (st = model_note_children(s->l.r.file, n, &s->l.m->notes,
+                                                   f->notes_from, error)) != SC_OK)
+        return st;
+    if (s->kept_depth && depth > s->kept_depth)
+        return SC_OK;
     if (f->deferred) {
         /* n is not linked to a sibling: the walk ends after its subtree. */
         s->kept_depth = 0;

@@ -47,6 +47,7 @@
 #include "base/arena.h"
 #include "implicit/expr.h"
 #include "math/vec.h"
+#include "model/params.h"
 #include "model/shading.h"
 #include "spancast/spancast.h"
 #include "syntax/parse.h"
@@ -108,25 +109,24 @@ enum {
     MODEL_MOD_BACKGROUND = PARSE_MOD_BACKGROUND
 };
 
-/* $fn, $fa, $fs of a curved leaf: OpenSCAD's defaults (0, 12, 2) where the
- * node does not set them to numbers. */
+/* $fn, $fa, $fs of a curved leaf: its own numbers, else those an ancestor
+ * passes down (model_special_args), else OpenSCAD's defaults (0, 12, 2). */
 typedef struct model_resolution {
     double fn, fa, fs;
 } model_resolution;
 
-/* color(c, alpha): c = [r, g, b, a] (missing components 1) unless c[0] < 0,
- * or a known colour name, sets the colour (set), with the components as
- * written and their positions: the builder clamps them, with a warning,
- * where the node is built. */
+/* color(c, alpha) as OpenSCAD 2021.01 reads it (color.cc): c = [r, g, b,
+ * a] (a component that is not a number 0, a missing one 1) unless c[0] <
+ * 0, or a known colour name, sets the colour (set), with the components
+ * as written (the builder clamps them to 0..1 silently, as OpenGL does
+ * OpenSCAD's); an unknown name, and a c of another type, leave it unset; a
+ * number alpha replaces c[3], any other is ignored. Its warnings are the
+ * instantiation's (params.h). */
 typedef struct model_color {
     int set;
     double c[4];
-    sc_location c_loc[4];
-    const char *unknown; /* a colour name not known, or NULL */
-    sc_location unknown_loc;
     int has_alpha; /* alpha given: it replaces c[3] when set */
     double alpha;
-    sc_location alpha_loc;
 } model_color;
 
 /* material(): the material its children get, and the base colour it sets
@@ -425,6 +425,11 @@ typedef struct model {
     int has_root;      /* some node (maybe after an error) has the '!' */
     size_t leaf_count; /* leaf nodes of the main model: what the builder
                           reserves room for (csg_builder_reserve) */
+    /* OpenSCAD's warnings of the arguments of every node it instantiates
+     * (params.h): outside '*' subtrees and the children of its primitives,
+     * in file order. The builder gives them before its own, as OpenSCAD
+     * gives them before it evaluates any geometry. */
+    model_notes notes;
 } model;
 
 /* Lowers syntax into *out (free with model_free). Returns SC_OK with a
