@@ -245,6 +245,17 @@ if command -v mpirun >/dev/null && [ -x "$(dirname "$bin")/spancast-mpi" ]; then
     [ "$(grep -c "error" out.txt)" = 1 ] || fail "mpirun bad.stl: not one error: $(cat out.txt)"
 fi
 
+# An output whose extension names no format spancast writes is a bad
+# command line (exit 2, as --help says), refused before the model is read:
+# the model here does not exist.
+check
+"$bin" render no-such-model.csg -o out.xyz -q 2>err.txt
+rc=$?
+[ "$rc" = 2 ] || fail "-o out.xyz: exit $rc (want 2)"
+[ "$(cat err.txt)" = "spancast: error: cannot write 'out.xyz': unknown image format" ] ||
+    fail "-o out.xyz: got '$(cat err.txt)'"
+[ -e out.xyz ] && fail "-o out.xyz: a file was written"
+
 if [ "$fails" != 0 ]; then
     echo "$fails failure(s) in $checks checks"
     exit 1

@@ -238,7 +238,8 @@ static const char usage_text[] =
     "A value may also follow its option as the next argument: --fov 30.\n"
     "\n"
     "Exit status: 0 success; 1 the model could not be loaded, or an image not\n"
-    "rendered or written; 2 a bad command line.\n";
+    "rendered or written; 2 a bad command line (an output named with an\n"
+    "extension spancast cannot write, -o x.xyz, is one).\n";
 
 /* ---- messages ---- */
 
