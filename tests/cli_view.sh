@@ -447,6 +447,11 @@ if command -v openscad >/dev/null; then
             fail "broken .scad: no error on stderr: $(cat sview.err)"
         wait_title "* - ERROR s.scad:3:1: error: Parser error: syntax error*" 30 ||
             fail "broken .scad: no error in the title"
+        # no model yet: the title's command has OpenSCAD's default view
+        case "$(title)" in
+        *" --camera=0,0,0,55,0,25,140 "*" --fov=22.5 "*) ;;
+        *) fail "broken .scad: the title's camera is not the default: $(title)" ;;
+        esac
         grep -q "spancast-\|\.csg" sview.err && fail "broken .scad: a temporary name"
         printf 'size = 6;\n' >part.scad
         wait_title "* - done - load #1 *" 300 || fail "broken .scad: the fix not loaded"

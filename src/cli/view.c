@@ -1124,6 +1124,7 @@ int main(int argc, char **argv)
         return status;
     }
     v->ao_on = v->look.ao_samples ? v->look.ao_samples : DEFAULT_AO;
+    view_camera_init(&v->cam, &v->look);
     find_schemes(v);
     struct stat st;
     int code = stat(v->path, &st) != 0 ? errno : S_ISDIR(st.st_mode) ? EISDIR : 0;

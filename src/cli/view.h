@@ -49,6 +49,10 @@ typedef struct view_camera {
     sc_projection projection;
 } view_camera;
 
+/* The camera before any model is loaded: options' field of view and
+ * projection, OpenSCAD's default view (rotation 55, 0, 25 at distance 140
+ * from the origin), so that the title's command is one render takes. */
+void view_camera_init(view_camera *cam, const sc_render_options *options);
 /* The view `render` gives the scene without a camera option: the file's
  * camera() when it has one (as a gimbal camera looking the same way),
  * else OpenSCAD's diagonal view of the whole model. options holds the

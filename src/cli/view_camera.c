@@ -22,6 +22,7 @@
 
 #include <math.h>
 #include <stdio.h>
+#include <string.h>
 
 static const double pi = 3.14159265358979323846;
 
@@ -70,6 +71,16 @@ void view_camera_view_all(view_camera *cam, const sc_scene *scene)
     /* The sphere around the box fills the vertical field of view. */
     double distance = sqrt(diagonal) / 2 / sin(radians(cam->fov_deg / 2));
     cam->distance = distance > 0 && isfinite(distance) ? distance : 140;
+}
+
+void view_camera_init(view_camera *cam, const sc_render_options *options)
+{
+    memset(cam, 0, sizeof *cam);
+    cam->fov_deg = options->fov_deg;
+    cam->projection = options->projection;
+    cam->rotate[0] = 55; /* OpenSCAD's default view */
+    cam->rotate[2] = 25;
+    cam->distance = 140; /* and distance */
 }
 
 void view_camera_reset(view_camera *cam, const sc_scene *scene,
