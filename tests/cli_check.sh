@@ -68,6 +68,21 @@ grep -q '^volume  *874\.[0-9]* +- ' measure.txt || fail "measure text: $(cat mea
 check
 grep -q '^spancast: measured drilled.csg in [0-9.]* s ([0-9]* threads)$' err.txt ||
     fail "measure summary line: $(cat err.txt)"
+grep -q 'note' err.txt && fail "measure of a solid: a note: $(cat err.txt)"
+
+# A 2D model is measured as the slab OpenSCAD draws it, with a note that
+# says so (also with -q: it explains the numbers); info says it too.
+printf 'square(size = [10, 5]);\n' >flat.csg
+run 0 flat.txt measure flat.csg -q
+grep -q '^volume  *50 +- ' flat.txt || fail "2D measure: $(cat flat.txt)"
+check
+[ "$(cat err.txt)" = "spancast: note: flat.csg is a 2D model, measured as the slab OpenSCAD draws it: 1 unit thick (z from -0.5 to 0.5), so its volume is its area" ] ||
+    fail "2D measure: note '$(cat err.txt)'"
+run 0 flat_info.txt info flat.csg
+grep -qx '2D: the slab OpenSCAD draws, 1 unit thick (z from -0.5 to 0.5)' flat_info.txt ||
+    fail "2D info: $(cat flat_info.txt)"
+run 0 solid_info.txt info drilled.csg
+grep -q '^2D' solid_info.txt && fail "info of a solid says 2D"
 
 # Density scales mass and inertia; one thread or three give the same bytes.
 run 0 dense.json measure drilled.csg --json -q --density=7.85e-3 --tolerance=1e-3 --threads=1

@@ -213,6 +213,9 @@ typedef struct sc_scene_info {
     size_t mirror_leaves;  /* leaves whose material reflects */
     size_t glass_leaves;   /* leaves whose material transmits */
     size_t checker_leaves; /* leaves with a checkerboard material */
+    /* 1 for a 2D model, built as the slab OpenSCAD draws a 2D result: 1
+     * unit thick, from z = -0.5 to 0.5 (so its volume is its area) */
+    size_t flat_2d;
 } sc_scene_info;
 
 /* Name of leaf kind index k ("sphere", "box", ...), NULL past the last or

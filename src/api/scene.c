@@ -271,6 +271,7 @@ static void scene_info(const sc_scene *scene, sc_scene_info *info)
     info->bvh_node_count = t->bvh_node_count;
     const shading *look = scene->look;
     info->lights = look ? look->light_count : 0;
+    info->flat_2d = look && look->flat_2d;
     for (uint32_t i = 0; i < t->leaf_count; i++) {
         const csg_leaf *l = &t->leaves[i];
         if ((int)l->prim.kind < SC_LEAF_KINDS)

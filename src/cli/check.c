@@ -316,7 +316,16 @@ static int run_measure(check_args *a)
     sc_measure_init(&m);
     sc_error error;
     sc_status st = sc_scene_measure(scene, &a->options, &m, &error);
+    sc_scene_info info;
+    sc_scene_info_init(&info);
+    sc_scene_get_info(scene, &info, NULL);
     sc_scene_release(scene);
+    /* the numbers below are the slab's: say so, quiet or not */
+    if (st == SC_OK && info.flat_2d)
+        fprintf(stderr,
+                "spancast: note: %s is a 2D model, measured as the slab OpenSCAD draws "
+                "it: 1 unit thick (z from -0.5 to 0.5), so its volume is its area\n",
+                a->inputs[0]);
     if (st)
         return call_failed(&error,
                            st == SC_ERR_ARGUMENT ? CLI_EXIT_USAGE : CLI_EXIT_FAILED);

@@ -784,6 +784,8 @@ static int run_info(const cli_args *a)
                hi[1], hi[2]);
     else
         printf("bounds: empty\n");
+    if (info.flat_2d)
+        printf("2D: the slab OpenSCAD draws, 1 unit thick (z from -0.5 to 0.5)\n");
     sc_scene_release(scene);
     return 0;
 }
