@@ -39,6 +39,17 @@ check
 out=$("$bin" render drilled.csg -o x.png --view=edges,bogus 2>&1)
 [ "$out" = "spancast: error: --view: unknown name 'bogus' (expected edges, axes, scales, crosshairs)" ] ||
     fail "--view: message was: $out"
+# scales without axes draw nothing, as in OpenSCAD: said once, and the
+# render goes on; with axes, or given in two options, no word
+check
+out=$("$bin" render drilled.csg -o x.png --imgsize=32,24 -q --view=scales 2>&1)
+[ "$out" = "spancast: warning: --view=scales marks the axes, which are not drawn: add axes (--view=axes,scales)" ] ||
+    fail "--view=scales alone: message was: $out"
+[ -s x.png ] || fail "--view=scales alone: no image"
+check
+out=$("$bin" render drilled.csg -o x.png --imgsize=32,24 -q --view=scales --view=axes 2>&1)
+[ -z "$out" ] || fail "--view=scales --view=axes: message was: $out"
+rm -f x.png
 check
 out=$("$bin" render drilled.csg -o x.png --section=0,0,0,1 2>&1)
 echo "$out" | grep -q "^spancast: error: --section expects NX,NY,NZ,D with a non-zero normal" ||

@@ -913,6 +913,13 @@ static int run_render(cli_args *a, int argc, char **argv)
             "spancast: warning: --mask=%s: JPEG is lossy, so the mask is no longer "
             "exactly 0 and 255 at the model's edges (.png, .tif and .exr are exact)\n",
             a->mask);
+    /* OpenSCAD's scale markers belong to its axes (View > Show Scale
+     * Markers is greyed out without Show Axes) */
+    if ((a->options.view & SC_VIEW_SCALES) && !(a->options.view & SC_VIEW_AXES) &&
+        dist_rank() == 0)
+        fputs("spancast: warning: --view=scales marks the axes, which are not drawn: "
+              "add axes (--view=axes,scales)\n",
+              stderr);
     int unwritable = /* rank 0 writes the files; every rank learns the outcome */
         dist_rank() == 0 &&
         (!output_writable(a->output) || (a->mask && !output_writable(a->mask)) ||
