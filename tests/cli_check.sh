@@ -75,6 +75,10 @@ grep -q 'note' err.txt && fail "measure of a solid: a note: $(cat err.txt)"
 printf 'square(size = [10, 5]);\n' >flat.csg
 run 0 flat.txt measure flat.csg -q
 grep -q '^volume  *50 +- ' flat.txt || fail "2D measure: $(cat flat.txt)"
+# its faces on the tree's box: hits rounded past it are on it, and no error
+# bound is negative
+grep -qx 'box min  *(0, 0, -0.5) +- (0, 0, 0)' flat.txt || fail "2D box: $(cat flat.txt)"
+grep -q -- '+- (*-' flat.txt && fail "2D measure: a negative error bound: $(cat flat.txt)"
 check
 [ "$(cat err.txt)" = "spancast: note: flat.csg is a 2D model, measured as the slab OpenSCAD draws it: 1 unit thick (z from -0.5 to 0.5), so its volume is its area" ] ||
     fail "2D measure: note '$(cat err.txt)'"

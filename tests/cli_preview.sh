@@ -43,7 +43,7 @@ out=$("$bin" render drilled.csg -o x.png --view=edges,bogus 2>&1)
 # render goes on; with axes, or given in two options, no word
 check
 out=$("$bin" render drilled.csg -o x.png --imgsize=32,24 -q --view=scales 2>&1)
-[ "$out" = "spancast: warning: --view=scales marks the axes, which are not drawn: add axes (--view=axes,scales)" ] ||
+[ "$out" = "spancast: warning: --view=scales marks the axes, which are not drawn: add axes to --view" ] ||
     fail "--view=scales alone: message was: $out"
 [ -s x.png ] || fail "--view=scales alone: no image"
 check

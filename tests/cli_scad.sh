@@ -109,6 +109,13 @@ printf 'group();\n' >empty.csg
 warns_with empty.csg "empty.csg: warning: the model is empty (nothing to render)"
 [ -z "$(ls -A "$work/tmp")" ] || fail "temporary files left: $(ls -A "$work/tmp")"
 
+# OpenSCAD gives the warnings of the arguments as it converts; the export's
+# own (an alpha it folds into the colour, a component it warned of, the
+# timestamp of an import) are not given again.
+printf 'color([1.5, 0, 0]) sphere(3);\ncolor("red", alpha = 3) cube(1);\ncube(2, centre = true);\n' >args.scad
+warns_with args.scad "args.scad:1:1: warning: color() expects numbers between 0.0 and 1.0. Value of 1.5 is out of range
+args.scad:3:1: warning: variable centre not specified as parameter"
+
 # Warnings at the converted text are put on the source, as its errors are.
 printf 'cube(1);\nscale([1, 1, 0]) cube(1);\n' >flat.scad
 warns_with flat.scad "flat.scad: warning: singular transform: subtree is empty (line 2 of OpenSCAD's export)"

@@ -571,6 +571,19 @@ static void test_colors(void **state)
     /* what OpenSCAD reads silently: c of another type sets no colour, a
      * component that is not a number is 0, an alpha that is not one is
      * left out */
+    /* OpenSCAD's export of a .scad it converted: the warnings of its
+     * arguments were OpenSCAD's to give */
+    sc_load_options o;
+    sc_load_options_init(&o);
+    o.openscad_export = 1;
+    sc_error e;
+    static const char export[] = "color([1.5, 0, 0, 3]) { cube(1, zz = 1); }";
+    assert_int_equal(sc_scene_load_string("m.csg", export, strlen(export), &o, &s, &e), SC_OK);
+    assert_int_equal(sc_scene_warning_count(s), 0);
+    sc_scene_release(s);
+    s = load(export);
+    assert_int_equal(sc_scene_warning_count(s), 3);
+    sc_scene_release(s);
     s = load("color(c = 5) { cube(); }");
     assert_int_equal(sc_scene_warning_count(s), 0);
     assert_true(fabsf(only_leaf(s)->color[0] - cr) < 1e-6f);

@@ -789,6 +789,16 @@ static void test_primitive_warnings(void **state)
         "1:24: color() expects numbers between 0.0 and 1.0. Value of 2.0 is out of "
         "range\n"
         "1:43: Unable to parse color \"nosuch\"\n");
+    /* a call over several lines: OpenSCAD's line, the statement's, and
+     * the column of what is wrong only on it; the colour name in lower
+     * case, as OpenSCAD looked it up; a component as the float OpenSCAD
+     * holds (1.00000001 is 1) */
+    check_notes("cube(\n  size = 1, centre = true,\n  zz = 2\n) sphere(r = 1);\ncolor(\n  "
+                "\"BluRple\"\n) cube(1); color([0, 1.00000001, 0]) cube(1);",
+                "1:1: module cube() does not support child modules\n"
+                "1:1: variable centre not specified as parameter\n"
+                "1:1: variable zz not specified as parameter\n"
+                "5:1: Unable to parse color \"blurple\"\n");
     check_notes("circle(r = 1, d = 4, $fs = 0);",
                 "1:1: $fs too small - clamping to 0.010000\n"
                 "1:8: Ignoring radius variable 'r' as diameter 'd' is defined too.\n");

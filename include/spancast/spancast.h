@@ -151,10 +151,15 @@ typedef struct sc_load_options {
        or triangles and more): 0 (default): all cores, as OpenMP counts
        them; the scene does not depend on it */
     int threads;
+    /* the text is OpenSCAD's export of a file it converted (a .scad):
+       OpenSCAD gave the warnings of its arguments as it converted it, and
+       the export's own (its timestamp, an alpha it folded into the colour)
+       are not the user's, so they are not given again (default 0) */
+    int openscad_export;
 } sc_load_options;
 
 /* Sets size and the defaults (faithful 0, strict 0, max_triangles 0,
- * threads 0). Never fails. */
+ * threads 0, openscad_export 0). Never fails. */
 void sc_load_options_init_size(sc_load_options *options, size_t size);
 #define sc_load_options_init(options)                                                    \
     sc_load_options_init_size((options), sizeof *(options))

@@ -358,6 +358,10 @@ static sc_status measure_scene(const sc_scene *scene, const sc_measure_options *
         for (int i = 0; i < 3; i++) {
             if (!(seen[i] <= seen[3 + i])) /* nothing seen: the tree's box */
                 seen[i] = lo[i], seen[3 + i] = hi[i];
+            /* a hit rounded past the tree's box (a face on it, as a 2D
+             * model's slab has) is on it: the error bounds stay >= 0 */
+            seen[i] = fmax(seen[i], lo[i]);
+            seen[3 + i] = fmin(seen[3 + i], hi[i]);
             out->box_lo[i].value = seen[i];
             out->box_lo[i].error = seen[i] - lo[i];
             out->box_hi[i].value = seen[3 + i];

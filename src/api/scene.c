@@ -91,6 +91,8 @@ static sc_status load(const char *name, const char *text, size_t length, char *o
     /* The model goes during the build, once walked and before the tree is
      * compiled (build_scene_take); the text, read and no longer needed,
      * goes at its start, its pages kept for the leaves where they serve. */
+    if (st == SC_OK && own.openscad_export)
+        typed->notes.count = 0;
     if (st == SC_OK) {
         int threads = options_threads_begin(own.threads);
         st = build_scene_take(typed, owned_text, owned_text ? length : 0,

@@ -131,9 +131,9 @@ static const char usage_text[] =
     "  --strict               a warning that leaves a part out or renders it\n"
     "                         otherwise (a mesh that is not closed, a file that\n"
     "                         cannot be read, a matrix that is not finite, a child\n"
-    "                         of the other dimension, an argument that is no\n"
-    "                         parameter) is an error (default: a warning, as for\n"
-    "                         render)\n"
+    "                         of the other dimension, OpenSCAD's warnings of a\n"
+    "                         node's arguments) is an error (default: a warning,\n"
+    "                         as for render)\n"
     "  -q, --quiet            no progress on stderr\n"
     "\n"
     "render options:\n"
@@ -169,8 +169,9 @@ static const char usage_text[] =
     "                         --faithful as OpenSCAD does), a file that cannot be\n"
     "                         read, a matrix that is not finite, a child of the\n"
     "                         other dimension (a 2D one in a 3D operation, or the\n"
-    "                         reverse), an argument that is no parameter of its\n"
-    "                         node (centre for center) or given twice\n"
+    "                         reverse), OpenSCAD's warnings of a node's arguments\n"
+    "                         (centre for center, a name given twice, a colour\n"
+    "                         it cannot parse, $fs clamped, a primitive's children)\n"
     "  --tiled                write tiled .exr or .tif files, each tile as soon as it\n"
     "                         is rendered, never holding the whole image (the default\n"
     "                         for images whose buffers do not fit in memory)\n"
@@ -918,7 +919,7 @@ static int run_render(cli_args *a, int argc, char **argv)
     if ((a->options.view & SC_VIEW_SCALES) && !(a->options.view & SC_VIEW_AXES) &&
         dist_rank() == 0)
         fputs("spancast: warning: --view=scales marks the axes, which are not drawn: "
-              "add axes (--view=axes,scales)\n",
+              "add axes to --view\n",
               stderr);
     int unwritable = /* rank 0 writes the files; every rank learns the outcome */
         dist_rank() == 0 &&

@@ -478,7 +478,13 @@ static sc_status convert_and_load(const char *path, const double *time,
     if (st == SC_OK) {
         if (stop && stop->loading)
             *stop->loading = 1;
-        st = sc_scene_load_string(name, text, size, options, scene, error);
+        sc_load_options export;
+        if (options)
+            export = *options; /* built here: the current size */
+        else
+            sc_load_options_init(&export);
+        export.openscad_export = 1;
+        st = sc_scene_load_string(name, text, size, &export, scene, error);
         if (stop && stop->loading)
             *stop->loading = 0;
         if (st != SC_OK)

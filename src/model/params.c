@@ -2,6 +2,7 @@
  * of a call's arguments (params.h). */
 #include "model/params.h"
 
+#include <ctype.h>
 #include <stdarg.h>
 #include <stdint.h>
 #include <stdio.h>
@@ -144,6 +145,15 @@ static int listed(const char *const *list, size_t count, const char *name)
     return 0;
 }
 
+/* Where a warning of node n about what stands at loc goes: there when it
+ * is on the node's line, else at the node. OpenSCAD names the line of the
+ * statement, so a call written over several lines gets its line, and one
+ * line the column of what is wrong. */
+static sc_location at_node_line(const parse_node *n, sc_location loc)
+{
+    return loc.line == n->loc.line ? loc : n->loc;
+}
+
 static sc_status note_at(model_notes *notes, sc_error *error, const char *file,
                          sc_location loc, const char *format, ...) SC_PRINTF(5, 6);
 
@@ -222,7 +232,7 @@ static sc_status radius(const char *file, const parse_node *n, const char *diame
     *given = has_d || has_r;
     if (!has_d || !has_r)
         return SC_OK;
-    return note_at(notes, error, file, r->loc,
+    return note_at(notes, error, file, at_node_line(n, r->loc),
                    "Ignoring radius variable '%s' as diameter '%s' is defined too.", name,
                    diameter);
 }
@@ -326,22 +336,30 @@ static sc_status check_color(const char *file, const parse_node *n, model_notes 
         float rgba[4];
         if (colors_lookup(v->u.string.chars, v->u.string.length, rgba))
             return SC_OK;
+        /* OpenSCAD names it in lower case, as it looked it up */
+        char name[128];
+        size_t k = 0;
+        for (; k + 1 < sizeof name && v->u.string.chars[k]; k++)
+            name[k] = (char)tolower((unsigned char)v->u.string.chars[k]);
+        name[k] = '\0';
         sc_location at = {file, v->line, v->column};
-        return note_at(notes, error, file, at, "Unable to parse color \"%s\"",
-                       v->u.string.chars);
+        return note_at(notes, error, file, at_node_line(n, at),
+                       "Unable to parse color \"%s%s\"", name,
+                       v->u.string.chars[k] ? "..." : "");
     }
     if (v->kind != PARSE_VECTOR || exported_no_color(v))
         return SC_OK;
     for (uint32_t i = 0; i < v->u.vector.count && i < 4; i++) {
         const parse_value *item = &v->u.vector.items[i];
-        double c = item->kind == PARSE_NUMBER ? item->u.number : 0;
+        /* as OpenSCAD holds it: a float */
+        float c = item->kind == PARSE_NUMBER ? (float)item->u.number : 0;
         if (!(c > 1 || c < 0))
             continue;
         sc_location at = {file, item->line, item->column};
-        sc_status st = note_at(notes, error, file, at,
+        sc_status st = note_at(notes, error, file, at_node_line(n, at),
                                "color() expects numbers between 0.0 and 1.0. Value of "
                                "%.1f is out of range",
-                               (float)c);
+                               (double)c);
         if (st != SC_OK)
             return st;
     }
@@ -377,7 +395,7 @@ sc_status model_check_params(const char *file, const parse_node *n, const model_
                 taken++;
             else if (!too_many) {
                 too_many = 1;
-                st = note_at(notes, error, file, a->loc,
+                st = note_at(notes, error, file, at_node_line(n, a->loc),
                              "Too many unnamed arguments supplied");
             }
             continue;
@@ -388,14 +406,14 @@ sc_status model_check_params(const char *file, const parse_node *n, const model_
         } else if (name[0] != '$') {
             if (!listed(p->positional, positional, name) &&
                 !listed(p->named, sizeof p->named / sizeof p->named[0], name))
-                st = note_at(notes, error, file, a->loc,
+                st = note_at(notes, error, file, at_node_line(n, a->loc),
                              "variable %s not specified as parameter", name);
             found.diameter |= name[0] == 'd';
             found.radius |= name[0] == 'r' && !name[1];
         }
         int twice = named_before(&seen, i) || listed(p->positional, taken, name);
         if (st == SC_OK && twice)
-            st = note_at(notes, error, file, a->loc,
+            st = note_at(notes, error, file, at_node_line(n, a->loc),
                          "argument %s supplied more than once", name);
     }
     free(seen.slots);
