@@ -793,15 +793,46 @@ static void test_primitive_warnings(void **state)
      * the column of what is wrong only on it; the colour name in lower
      * case, as OpenSCAD looked it up; a component as the float OpenSCAD
      * holds (1.00000001 is 1) */
-    check_notes("cube(\n  size = 1, centre = true,\n  zz = 2\n) sphere(r = 1);\ncolor(\n  "
-                "\"BluRple\"\n) cube(1); color([0, 1.00000001, 0]) cube(1);",
-                "1:1: module cube() does not support child modules\n"
-                "1:1: variable centre not specified as parameter\n"
-                "1:1: variable zz not specified as parameter\n"
-                "5:1: Unable to parse color \"blurple\"\n");
+    check_notes(
+        "cube(\n  size = 1, centre = true,\n  zz = 2\n) sphere(r = 1);\ncolor(\n  "
+        "\"BluRple\"\n) cube(1); color([0, 1.00000001, 0]) cube(1);",
+        "1:1: module cube() does not support child modules\n"
+        "1:1: variable centre not specified as parameter\n"
+        "1:1: variable zz not specified as parameter\n"
+        "5:1: Unable to parse color \"blurple\"\n");
     check_notes("circle(r = 1, d = 4, $fs = 0);",
                 "1:1: $fs too small - clamping to 0.010000\n"
                 "1:8: Ignoring radius variable 'r' as diameter 'd' is defined too.\n");
+}
+
+/* A node's own $fn, $fa and $fs (model_resolution_of): the last of each
+ * wins, names that only start like them do not count, a value that is not
+ * a number is the default; clamped only when asked. */
+static void test_own_resolution(void **state)
+{
+    (void)state;
+    static const struct {
+        const char *text;
+        double fn, fa, fs;
+    } cases[] = {
+        {"cylinder(h = 1, r1 = 1, r2 = 9, center = true);", 0, 12, 2},
+        {"sphere($fn = 64, $fs = 0.5, $fa = \"x\", r = 1);", 64, 12, 0.5},
+        {"sphere($fn = 3, $fnx = 7, $f = 1, $fz = 2, $fs = 4, $fn = 5, $fs = [1]);", 5,
+         12, 2},
+        {"sphere($fs = 0, $fa = -1);", 0, -1, 0},
+    };
+    for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+        lowered l = lower(cases[i].text);
+        double fn, fa, fs;
+        model_resolution_of(l.syntax->first, 0, &fn, &fa, &fs);
+        assert_true(fn == cases[i].fn && fa == cases[i].fa && fs == cases[i].fs);
+        model_resolution_of(l.syntax->first, 1, &fn, &fa, &fs);
+        assert_true(fa ==
+                    (cases[i].fa < MODEL_F_MINIMUM ? MODEL_F_MINIMUM : cases[i].fa));
+        assert_true(fs ==
+                    (cases[i].fs < MODEL_F_MINIMUM ? MODEL_F_MINIMUM : cases[i].fs));
+        release(&l);
+    }
 }
 
 /* $fn, $fa and $fs as OpenSCAD 2021.01 looks them up in a hand-written
@@ -952,6 +983,7 @@ int main(void)
         cmocka_unit_test(test_errors),
         cmocka_unit_test(test_argument_warnings),
         cmocka_unit_test(test_primitive_warnings),
+        cmocka_unit_test(test_own_resolution),
         cmocka_unit_test(test_resolution_passed_down),
         cmocka_unit_test(test_stream),
     };

@@ -164,9 +164,6 @@ static void test_openscad_export(void **state)
     assert_string_equal(cyl->args[6].name, "center");
     assert_int_equal(cyl->args[6].value.kind, PARSE_BOOL);
     assert_false(cyl->args[6].value.u.boolean);
-    double fn, fa, fs;
-    parse_node_resolution(cyl, &fn, &fa, &fs);
-    assert_true(fn == 0 && fa == 12 && fs == 2);
 
     const parse_node *col = mm->next;
     assert_string_equal(col->name, "color");
@@ -294,21 +291,6 @@ static void test_arg_lookup(void **state)
     assert_null(parse_node_arg(n, "r", -1));
     assert_null(parse_node_arg(n, "x", 5));
     assert_true(parse_node_arg(n, "center", 3)->value.u.boolean);
-    double fn, fa, fs;
-    parse_node_resolution(n, &fn, &fa, &fs);
-    assert_true(fn == 0 && fa == 12 && fs == 2);
-    parse_tree_free(t);
-
-    t = parse_ok("sphere($fn = 64, $fs = 0.5, $fa = \"x\", r = 1);");
-    parse_node_resolution(t->first, &fn, &fa, &fs);
-    assert_true(fn == 64 && fa == 12 && fs == 0.5);
-    parse_tree_free(t);
-
-    /* The last of each wins; names that only start like them do not count. */
-    t = parse_ok(
-        "sphere($fn = 3, $fnx = 7, $f = 1, $fz = 2, $fs = 4, $fn = 5, $fs = [1]);");
-    parse_node_resolution(t->first, &fn, &fa, &fs);
-    assert_true(fn == 5 && fa == 12 && fs == 2);
     parse_tree_free(t);
 }
 

@@ -999,27 +999,6 @@ const parse_arg *parse_node_arg(const parse_node *node, const char *name, int po
     return found;
 }
 
-/* One pass over the arguments rather than a lookup for each of the
- * three: every curved leaf OpenSCAD writes has all three. */
-void parse_node_resolution(const parse_node *node, double *fn, double *fa, double *fs)
-{
-    const parse_arg *set[3] = {NULL, NULL, NULL}; /* $fn, $fa, $fs: the last wins */
-    for (uint32_t i = 0; i < node->arg_count; i++) {
-        const char *name = node->args[i].name;
-        if (!name || name[0] != '$' || name[1] != 'f' || !name[2] || name[3])
-            continue;
-        int k = name[2] == 'n' ? 0 : name[2] == 'a' ? 1 : name[2] == 's' ? 2 : -1;
-        if (k >= 0)
-            set[k] = &node->args[i];
-    }
-    double *outs[3] = {fn, fa, fs};
-    const double defaults[3] = {0, 12, 2};
-    for (int i = 0; i < 3; i++) {
-        const parse_arg *a = set[i];
-        *outs[i] = a && a->value.kind == PARSE_NUMBER ? a->value.u.number : defaults[i];
-    }
-}
-
 const parse_node *parse_next_node(const parse_node *node, int skip_children)
 {
     if (!skip_children && node->first_child)

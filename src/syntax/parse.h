@@ -182,10 +182,6 @@ void parse_tree_release_nodes(parse_tree *tree);
  * the last in source order wins, as in OpenSCAD. NULL when none does. */
 const parse_arg *parse_node_arg(const parse_node *node, const char *name, int position);
 
-/* The node's $fn, $fa and $fs, with OpenSCAD's defaults (0, 12, 2) for the
- * ones it does not set to a number. */
-void parse_node_resolution(const parse_node *node, double *fn, double *fa, double *fs);
-
 /* The next node after `node` in file order (depth-first, children first),
  * not descending into node's children when skip_children is set; NULL at
  * the end. Walks the tree without a stack. */
