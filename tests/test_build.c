@@ -578,7 +578,8 @@ static void test_colors(void **state)
     o.openscad_export = 1;
     sc_error e;
     static const char export[] = "color([1.5, 0, 0, 3]) { cube(1, zz = 1); }";
-    assert_int_equal(sc_scene_load_string("m.csg", export, strlen(export), &o, &s, &e), SC_OK);
+    assert_int_equal(sc_scene_load_string("m.csg", export, strlen(export), &o, &s, &e),
+                     SC_OK);
     assert_int_equal(sc_scene_warning_count(s), 0);
     sc_scene_release(s);
     s = load(export);
