@@ -1160,9 +1160,6 @@ static sc_status build_parts(builder *b)
     return st;
 }
 
-/* build_scene and build_scene_take: owned, when not NULL, is m, freed as
- * soon as the walk is done; spare (or NULL) is freed or given to the
- * builder. */
 /* The model's warnings of arguments (model.h), first, as OpenSCAD gives
  * them when it instantiates the tree; with --strict the first is the
  * error (an argument that is not a parameter is most often a misspelt one,
@@ -1184,6 +1181,9 @@ static sc_status argument_notes(builder *b)
     return SC_OK;
 }
 
+/* build_scene and build_scene_take: owned, when not NULL, is m, freed as
+ * soon as the walk is done; spare (or NULL) is freed or given to the
+ * builder. */
 static sc_status build_scene_of(const model *m, model *owned, void *spare,
                                 size_t spare_size, int flags, size_t max_triangles,
                                 csg_tree **out, shading **look, sc_error **warnings,
