@@ -2,7 +2,6 @@
 #include "model/args.h"
 
 #include <math.h>
-#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -567,14 +566,11 @@ sc_status model_read_resolution(const model_reader *r, const parse_node *n, doub
     const parse_arg *a[3];
     model_special_args(n, a);
     for (int k = 0; k < 3; k++) {
-        if (!a[k])
-            continue;
-        uintptr_t at = (uintptr_t)a[k], first = (uintptr_t)n->args;
-        if (at >= first && at < first + n->arg_count * sizeof *n->args) { /* n's own */
+        if (parse_node_arg(n, names[k], -1)) { /* n's own: checked */
             sc_status st = model_number(r, n, names[k], -1, outs[k]);
             if (st != SC_OK)
                 return st;
-        } else if (a[k]->value.kind == PARSE_NUMBER) {
+        } else if (a[k] && a[k]->value.kind == PARSE_NUMBER) { /* passed down */
             *outs[k] = a[k]->value.u.number;
         }
     }
