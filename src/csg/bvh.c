@@ -54,18 +54,39 @@ static double half_area(const bbox *b)
     return x * y + y * z + z * x;
 }
 
+/* Makes room for more nodes past out->count, doubling at least. A
+ * hierarchy over n operands has at most 2n - 1 nodes; reserving that once
+ * keeps the build from growing its array by realloc as it goes, which at a
+ * million operands copied the nodes built so far again and again (an
+ * eighth of loading a million spheres). Room never written costs no
+ * memory: arrays this large are mapped, and their pages come on first
+ * touch. Returns 0 when memory ran out. */
+static int reserve_nodes(bvh_nodes *out, uint64_t more)
+{
+    uint64_t need = (uint64_t)out->count + more;
+    if (need <= out->cap)
+        return 1;
+    if (need > UINT32_MAX)
+        need = UINT32_MAX;
+    uint64_t cap = (uint64_t)out->cap * 2;
+    if (cap < need)
+        cap = need;
+    if (cap > UINT32_MAX)
+        cap = UINT32_MAX;
+    if (cap <= out->cap)
+        return 0;
+    csg_bvh_node *v = realloc(out->v, (size_t)cap * sizeof *v);
+    if (!v)
+        return 0;
+    out->v = v;
+    out->cap = (uint32_t)cap;
+    return 1;
+}
+
 static uint32_t push_node(bvh_nodes *out)
 {
-    if (out->count == out->cap) {
-        uint32_t cap = out->cap ? out->cap * 2 : 64;
-        if (cap <= out->cap)
-            return CSG_NO_BVH;
-        csg_bvh_node *v = realloc(out->v, (size_t)cap * sizeof *v);
-        if (!v)
-            return CSG_NO_BVH;
-        out->v = v;
-        out->cap = cap;
-    }
+    if (out->count == out->cap && !reserve_nodes(out, 1))
+        return CSG_NO_BVH;
     memset(&out->v[out->count], 0, sizeof out->v[0]);
     return out->count++;
 }
@@ -253,16 +274,8 @@ static uint32_t append_nodes(bvh_nodes *out, const bvh_nodes *from)
     if (from->count == 0 || from->count > UINT32_MAX - at)
         return CSG_NO_BVH;
     uint32_t need = at + from->count;
-    if (need > out->cap) {
-        uint32_t cap = out->cap ? out->cap : 64;
-        while (cap < need)
-            cap = cap > UINT32_MAX / 2 ? need : cap * 2;
-        csg_bvh_node *v = realloc(out->v, (size_t)cap * sizeof *v);
-        if (!v)
-            return CSG_NO_BVH;
-        out->v = v;
-        out->cap = cap;
-    }
+    if (!reserve_nodes(out, from->count))
+        return CSG_NO_BVH;
     for (uint32_t i = 0; i < from->count; i++) {
         csg_bvh_node n = from->v[i];
         if (n.count == 0)
@@ -305,8 +318,10 @@ static uint32_t build(bvh_nodes *out, uint32_t *ids, bbox *boxes, uint32_t count
         bvh_nodes own = {NULL, 0, 0};
         uint32_t own_root = 0;
 #pragma omp task shared(own, own_root)
-        own_root = build(&own, ids + split, boxes + split, count - split, base + split,
-                         depth + 1, right_known, tasks);
+        own_root = reserve_nodes(&own, 2 * (uint64_t)(count - split))
+                       ? build(&own, ids + split, boxes + split, count - split,
+                               base + split, depth + 1, right_known, tasks)
+                       : CSG_NO_BVH;
         left = build(out, ids, boxes, split, base, depth + 1, left_known, tasks);
 #pragma omp taskwait
         right = left == CSG_NO_BVH || own_root == CSG_NO_BVH ? CSG_NO_BVH
@@ -323,7 +338,7 @@ static uint32_t build(bvh_nodes *out, uint32_t *ids, bbox *boxes, uint32_t count
 uint32_t bvh_build(bvh_nodes *out, uint32_t *ids, bbox *boxes, uint32_t count,
                    uint32_t items_base)
 {
-    if (count == 0)
+    if (count == 0 || !reserve_nodes(out, 2 * (uint64_t)count))
         return CSG_NO_BVH;
     if (count < 2 * TASK_MIN || omp_in_parallel() || omp_get_max_threads() < 2)
         return build(out, ids, boxes, count, items_base, 0, NULL, 0);
