@@ -134,6 +134,42 @@ head -n 1 stdout.txt | grep -q '^usage: spancast render MODEL -o OUT.png \[optio
     fails=$((fails + 1))
 }
 expect 0 "" render m.csg --help
+# Each command's --help is its own: it opens with that command's usage
+# line, names no other command's, and every option it lists is one the
+# command takes (never "unknown option" or "does not apply"); options of
+# render alone are not in the others'.
+for command in render info spans inside measure overlaps compare batch bench; do
+    expect 0 "" "$command" --help
+    head -n 1 stdout.txt | grep -q "^usage: spancast $command " || {
+        echo "FAIL: spancast $command --help starts with '$(head -n 1 stdout.txt)'"
+        fails=$((fails + 1))
+    }
+    if grep -v "^usage: spancast $command \|^       spancast $command " stdout.txt |
+        grep -q '^ *spancast [a-z]'; then
+        echo "FAIL: spancast $command --help shows another command's usage"
+        fails=$((fails + 1))
+    fi
+    [ "$command" = bench ] && continue # its options start a benchmark
+    cp stdout.txt help.txt
+    for option in $(grep -oE -- '(^|[ [|])(--[a-z][a-z-]*|-[a-zA-Z])([^A-Za-z0-9_-]|$)' help.txt |
+        sed -E 's/^[ [|]//; s/[^A-Za-z0-9_-]$//' | sort -u); do
+        checks=$((checks + 1))
+        "$bin" "$command" "$option" >/dev/null 2>stderr.txt </dev/null
+        if grep -q "unknown option\|does not apply" stderr.txt; then
+            echo "FAIL: spancast $command --help lists $option, which it refuses: $(cat stderr.txt)"
+            fails=$((fails + 1))
+        fi
+    done
+    if [ "$command" != render ]; then
+        for option in --output --mask --spp --colorscheme --stats --watch; do
+            checks=$((checks + 1))
+            if grep -q -- "$option\b" help.txt; then
+                echo "FAIL: spancast $command --help lists render's $option"
+                fails=$((fails + 1))
+            fi
+        done
+    fi
+done
 expect 0 "" -h
 expect 0 "" --version
 grep -Eq '^spancast [0-9]+\.[0-9]+\.[0-9]+$' stdout.txt || {

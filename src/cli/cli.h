@@ -9,6 +9,7 @@
 
 #include <signal.h>
 #include <stddef.h>
+#include <stdio.h>
 
 #include "spancast/spancast.h"
 
@@ -17,6 +18,10 @@ enum { CLI_EXIT_FAILED = 1, CLI_EXIT_USAGE = 2 };
 /* Prints "spancast: error: ..." on stderr; returns CLI_EXIT_USAGE.
  * (render_options.c, linked into spancast-view too) */
 int cli_usage_error(const char *format, ...);
+
+/* Prints the help (help.c): every command's for command NULL (or a name
+ * that is no command), else that command's alone. */
+void cli_print_help(FILE *out, const char *command);
 
 /* Prints a library error, with its source position when it has one. */
 void cli_print_error(const sc_error *error);
