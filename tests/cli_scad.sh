@@ -115,6 +115,21 @@ warns_with empty.csg "empty.csg: warning: the model is empty (nothing to render)
 printf 'color([1.5, 0, 0]) sphere(3);\ncolor("red", alpha = 3) cube(1);\ncube(2, centre = true);\n' >args.scad
 warns_with args.scad "args.scad:1:1: warning: color() expects numbers between 0.0 and 1.0. Value of 1.5 is out of range
 args.scad:3:1: warning: variable centre not specified as parameter"
+# With --strict the first of them is the error, as OpenSCAD's --hardwarnings
+# makes it, in every command; nothing is written.
+rm -f args.scad.png
+fails_with args.scad "args.scad:1:1: error: color() expects numbers between 0.0 and 1.0. Value of 1.5 is out of range" --strict
+"$bin" measure args.scad --strict -q >m.txt 2>err.txt
+rc=$?
+[ "$rc" = 1 ] || fail "measure --strict args.scad: exit $rc (want 1)"
+grep -q "^args.scad:1:1: error: color() expects" err.txt || fail "measure --strict args.scad: $(cat err.txt)"
+# OpenSCAD names the source in its warnings relative to the source's
+# folder; spancast names it as the user did.
+mkdir -p elsewhere
+(cd elsewhere && "$bin" info ../unknown.scad >/dev/null 2>../err.txt) ||
+    fail "info ../unknown.scad failed"
+[ "$(cat err.txt)" = "../unknown.scad:2:1: warning: Ignoring unknown module 'foo'" ] ||
+    fail "info ../unknown.scad: got '$(cat err.txt)'"
 
 # Warnings at the converted text are put on the source, as its errors are.
 printf 'cube(1);\nscale([1, 1, 0]) cube(1);\n' >flat.scad
@@ -178,6 +193,17 @@ for bad in "-D" "-D size" "-D =2"; do
     *) fail "info d.scad $bad: got '$(cat err.txt)'" ;;
     esac
 done
+# OpenSCAD reads the -D settings after the source's end; what it says of
+# one is said of the setting on the command line.
+"$bin" info d.scad -D 'size=' >/dev/null 2>err.txt
+rc=$?
+[ "$rc" = 1 ] || fail "info d.scad -D 'size=': exit $rc (want 1)"
+[ "$(cat err.txt)" = "<command-line>: error: -D 'size=': Parser error: syntax error" ] ||
+    fail "info d.scad -D 'size=': got '$(cat err.txt)'"
+"$bin" info d.scad -D h=1 -D 'other=nothing' >/dev/null 2>err.txt ||
+    fail "info d.scad -D 'other=nothing' failed"
+[ "$(cat err.txt)" = "<command-line>: warning: -D 'other=nothing': Ignoring unknown variable 'nothing'" ] ||
+    fail "info d.scad -D 'other=nothing': got '$(cat err.txt)'"
 [ -z "$(ls -A "$work/tmp")" ] || fail "temporary files left: $(ls -A "$work/tmp")"
 
 # spancast-mpi converts once: -D reaches it, the .csg beyond the export is
@@ -195,6 +221,11 @@ if command -v mpirun >/dev/null && [ -x "$(dirname "$bin")/spancast-mpi" ]; then
     grep -qF "$want" out.txt ||
         fail "mpirun proj.scad: $(cat out.txt)"
     grep -q "\.csg" out.txt && fail "mpirun proj.scad: names a .csg: $(cat out.txt)"
+    mpirun_test -np 2 "$bin" render args.scad --strict -o np2s.png -q >out.txt 2>&1 &&
+        fail "mpirun --strict args.scad: exit 0"
+    grep -q "^args.scad:1:1: error: color() expects" out.txt ||
+        fail "mpirun --strict args.scad: $(cat out.txt)"
+    [ -e np2s.png ] && fail "mpirun --strict args.scad: an image was written"
 fi
 
 if [ "$fails" != 0 ]; then

@@ -156,8 +156,9 @@ static const section sections[] = {
      "                         otherwise (a mesh that is not closed, a file that\n"
      "                         cannot be read, a matrix that is not finite, a child\n"
      "                         of the other dimension, OpenSCAD's warnings of a\n"
-     "                         node's arguments) is an error (default: a warning,\n"
-     "                         as for render)\n"},
+     "                         node's arguments, for a .scad model OpenSCAD's first\n"
+     "                         warning) is an error (default: a warning, as for\n"
+     "                         render)\n"},
     {C_CHECKS, B_QUERY, NULL, NULL, "  -q, --quiet            no progress on stderr\n"},
     {C_RENDER, B_RENDER, "render options:\n", NULL,
      "  -o, --output=FILE      colour image; the format follows the extension\n"
@@ -196,7 +197,8 @@ static const section sections[] = {
      "                         other dimension (a 2D one in a 3D operation, or the\n"
      "                         reverse), OpenSCAD's warnings of a node's arguments\n"
      "                         (centre for center, a name given twice, a colour\n"
-     "                         it cannot parse, $fs clamped, a primitive's children)\n"
+     "                         it cannot parse, $fs clamped, a primitive's children),\n"
+     "                         and for a .scad model OpenSCAD's first warning\n"
      "  --tiled                write tiled .exr or .tif files, each tile as soon as it\n"
      "                         is rendered, never holding the whole image (the default\n"
      "                         for images whose buffers do not fit in memory)\n"

@@ -141,10 +141,10 @@ static void broadcast_bytes(void *data, size_t size)
 
 /* Rank 0's part of loading: the text and the name to load it under, as
  * the commands take MODEL (scad_read_model). */
-static sc_status read_model(const char *path, char **text, size_t *size, char *name,
-                            size_t name_size, sc_error *error)
+static sc_status read_model(const char *path, int strict, char **text, size_t *size,
+                            char *name, size_t name_size, sc_error *error)
 {
-    return scad_read_model(path, text, size, name, name_size, error,
+    return scad_read_model(path, strict, text, size, name, name_size, error,
                            &(scad_stop){&cli_stop, NULL});
 }
 
@@ -160,7 +160,8 @@ sc_status dist_load(const char *path, const sc_load_options *options, sc_scene *
     int64_t head[3] = {SC_OK, 0, 0}; /* status, text bytes, name bytes */
     memset(error, 0, sizeof *error);
     if (rank == 0) {
-        head[0] = read_model(path, &text, &size, name, sizeof name, error);
+        head[0] = read_model(path, options && options->strict, &text, &size, name,
+                             sizeof name, error);
         head[1] = (int64_t)size;
         head[2] = (int64_t)strlen(name);
     }
@@ -181,9 +182,17 @@ sc_status dist_load(const char *path, const sc_load_options *options, sc_scene *
     broadcast_bytes(text, size);
     /* A mesh's one-line model is loaded as one process loads it, for the
      * same messages (each rank reads the mesh, as it reads an import). */
+    /* Text OpenSCAD wrote (loaded under another name than the file's) is
+     * its export, whose arguments OpenSCAD has already warned of. */
+    sc_load_options export;
+    if (options)
+        export = *options;
+    else
+        sc_load_options_init(&export);
+    export.openscad_export = strcmp(name, path) != 0;
     sc_status st = scad_is_mesh(path)
                        ? sc_scene_load_mesh(path, options, scene, error)
-                       : sc_scene_load_string(name, text, size, options, scene, error);
+                       : sc_scene_load_string(name, text, size, &export, scene, error);
     free(text);
     /* Agree: the first rank that failed, if any, says why. */
     int mine = st == SC_OK ? ranks : rank, first = ranks;

@@ -165,21 +165,79 @@ static int openscad_position(const char *text, sc_error *error)
     return 1;
 }
 
+/* Where OpenSCAD's messages about the source (source: its real path;
+ * path: as the user named it) point. OpenSCAD 2021.01 appends the -D
+ * settings to the source's text, after a line of their own, one per line
+ * ("\n\x03\n" then "NAME=VALUE;\n" each): the first is on line
+ * newlines + 3, where newlines counts the source's line breaks. */
+typedef struct source_lines {
+    const char *source, *path;
+    long first_define; /* 0 until counted; -1 when the source cannot be read */
+} source_lines;
+
+/* Puts a position OpenSCAD gave in the source on it as the user named it
+ * (path), or, past the source's end, on the -D setting there, as a
+ * command-line error. OpenSCAD names a file relative to the working
+ * directory in its parser's errors, but relative to the file's folder in
+ * its warnings; other files keep the name OpenSCAD gave. */
+static void place_position(source_lines *at, sc_error *error)
+{
+    char real[PATH_MAX], beside[PATH_MAX + SC_ERROR_FILE_MAX];
+    const char *slash = strrchr(at->source, '/'); /* realpath is absolute */
+    snprintf(beside, sizeof beside, "%.*s/%s", (int)(slash - at->source), at->source,
+             error->file);
+    int source =
+        (realpath(error->file, real) && !strcmp(real, at->source)) ||
+        (error->file[0] != '/' && realpath(beside, real) && !strcmp(real, at->source));
+    if (!source)
+        return;
+    if (at->first_define == 0) {
+        at->first_define = -1;
+        FILE *f = fopen(at->source, "rb");
+        if (f) {
+            long newlines = 0;
+            int c;
+            while ((c = getc(f)) != EOF)
+                newlines += c == '\n';
+            fclose(f);
+            at->first_define = newlines + 3;
+        }
+    }
+    long k = at->first_define > 0 ? error->line - at->first_define : -1;
+    if (k >= 0 && k < define_count) {
+        char message[SC_ERROR_MESSAGE_MAX];
+        snprintf(message, sizeof message, "%s", error->message);
+        snprintf(error->message, sizeof error->message, "-D '%.100s': %.400s", defines[k],
+                 message);
+        snprintf(error->file, sizeof error->file, "<command-line>");
+        error->line = 0;
+        error->column = 0;
+        return;
+    }
+    snprintf(error->file, sizeof error->file, "%s", at->path);
+}
+
 /* OpenSCAD's report on the conversion of path, from its log at log_path.
  * OpenSCAD 2021.01 exits 0 after many errors (a failing assert(), a syntax
  * error in a use <...> file) and leaves the failed part out, so its log
  * decides, not only its exit status (failed: it exited non-zero). Each
  * "WARNING: " line is printed on stderr as a compiler's warning, at
  * OpenSCAD's position when the line has one, else against path (the render
- * goes on, as OpenSCAD's does). The first "ERROR: " line becomes the error,
- * at its position when it has one, else against path; a failure without an
+ * goes on, as OpenSCAD's does). The first "ERROR: " line becomes the error
+ * (with strict, the first "WARNING: " line too, as OpenSCAD's
+ * --hardwarnings makes it one; nothing after it is printed), at its
+ * position when it has one, else against path; a failure without an
  * ERROR line is told by OpenSCAD's last non-empty line. File names are as
- * OpenSCAD prints them: relative to the working directory, which it shares
- * with us. Returns SC_OK when OpenSCAD reported no error. */
-static sc_status openscad_log(const char *log_path, const char *path, int failed,
-                              sc_error *error)
+ * OpenSCAD prints them (relative to the working directory, which it shares
+ * with us), except the source's, which is named as the user named it, and
+ * the -D settings' (place_position). Returns SC_OK when OpenSCAD reported
+ * no error. */
+static sc_status openscad_log(const char *log_path, source_lines *at, int failed,
+                              int strict, sc_error *error)
 {
+    const char *path = at->path;
     char first[SC_ERROR_MESSAGE_MAX] = "", last[SC_ERROR_MESSAGE_MAX] = "";
+    sc_status status = SC_ERR_SYNTAX; /* of the first: an error, or a warning */
     FILE *f = fopen(log_path, "r");
     if (f) {
         char line[SC_ERROR_MESSAGE_MAX];
@@ -187,15 +245,22 @@ static sc_status openscad_log(const char *log_path, const char *path, int failed
             size_t n = strlen(line);
             while (n > 0 && (line[n - 1] == '\n' || line[n - 1] == '\r'))
                 line[--n] = 0;
-            if (!first[0] && !strncmp(line, "ERROR: ", 7) && line[7])
-                snprintf(first, sizeof first, "%s", line + 7);
-            if (!strncmp(line, "WARNING: ", 9) && line[9]) {
+            int is_error = !strncmp(line, "ERROR: ", 7) && line[7];
+            int is_warning = !strncmp(line, "WARNING: ", 9) && line[9];
+            if (!first[0] && (is_error || (strict && is_warning))) {
+                snprintf(first, sizeof first, "%s", line + (is_error ? 7 : 9));
+                status = is_error ? SC_ERR_SYNTAX : SC_ERR_SEMANTIC;
+            } else if (is_warning && !strict) {
                 sc_error w;
                 memset(&w, 0, sizeof w);
-                if (openscad_position(line + 9, &w))
-                    fprintf(stderr, "%s:%d:%d: warning: %s\n", w.file, w.line, w.column,
-                            w.message);
-                else
+                if (openscad_position(line + 9, &w)) {
+                    place_position(at, &w);
+                    if (w.line > 0)
+                        fprintf(stderr, "%s:%d:%d: warning: %s\n", w.file, w.line,
+                                w.column, w.message);
+                    else
+                        fprintf(stderr, "%s: warning: %s\n", w.file, w.message);
+                } else
                     fprintf(stderr, "%s: warning: %s\n", path, line + 9);
             }
             if (n > 0)
@@ -205,12 +270,14 @@ static sc_status openscad_log(const char *log_path, const char *path, int failed
     }
     if (first[0]) {
         memset(error, 0, sizeof *error);
-        error->status = SC_ERR_SYNTAX;
-        if (!openscad_position(first, error)) {
+        error->status = status;
+        if (openscad_position(first, error)) {
+            place_position(at, error);
+        } else {
             snprintf(error->file, sizeof error->file, "%s", path);
             snprintf(error->message, sizeof error->message, "%s", first);
         }
-        return SC_ERR_SYNTAX;
+        return status;
     }
     if (!failed)
         return SC_OK;
@@ -436,8 +503,8 @@ static int wait_child(pid_t pid, int *status, const volatile sig_atomic_t *stop)
     return 0;
 }
 
-static sc_status convert(const char *path, const double *time, char **text, size_t *size,
-                         char *name, size_t name_size, sc_error *error,
+static sc_status convert(const char *path, const double *time, int strict, char **text,
+                         size_t *size, char *name, size_t name_size, sc_error *error,
                          void (*depend)(void *user, const char *file), void *user,
                          const scad_stop *stop);
 
@@ -473,8 +540,8 @@ static sc_status convert_and_load(const char *path, const double *time,
     *scene = NULL;
     char *text = NULL, name[PATH_MAX + 16];
     size_t size = 0;
-    sc_status st =
-        convert(path, time, &text, &size, name, sizeof name, error, depend, user, stop);
+    sc_status st = convert(path, time, options && options->strict, &text, &size, name,
+                           sizeof name, error, depend, user, stop);
     if (st == SC_OK) {
         if (stop && stop->loading)
             *stop->loading = 1;
@@ -505,8 +572,8 @@ sc_status scad_load_files(const char *path, const sc_load_options *options,
 /* The conversion, with OpenSCAD's $t set to *time when time is not NULL
  * (a top-level assignment that -D appends to the source, which is how a
  * file's own $t = ... would set it). */
-static sc_status convert(const char *path, const double *time, char **text, size_t *size,
-                         char *name, size_t name_size, sc_error *error,
+static sc_status convert(const char *path, const double *time, int strict, char **text,
+                         size_t *size, char *name, size_t name_size, sc_error *error,
                          void (*depend)(void *user, const char *file), void *user,
                          const scad_stop *stop)
 {
@@ -569,8 +636,9 @@ static sc_status convert(const char *path, const double *time, char **text, size
             error->status = st = SC_ERR_CANCELLED;
             snprintf(error->message, sizeof error->message, "interrupted");
         } else {
-            st = openscad_log(log, path, !WIFEXITED(status) || WEXITSTATUS(status) != 0,
-                              error);
+            source_lines at = {source, path, 0};
+            st = openscad_log(log, &at, !WIFEXITED(status) || WEXITSTATUS(status) != 0,
+                              strict, error);
         }
     }
     if (st == SC_OK && depend)
@@ -588,14 +656,6 @@ static sc_status convert(const char *path, const double *time, char **text, size
     unlink(deps);
     rmdir(dir);
     return st;
-}
-
-sc_status scad_convert(const char *path, char **text, size_t *size, char *name,
-                       size_t name_size, sc_error *error,
-                       void (*depend)(void *user, const char *file), void *user,
-                       const scad_stop *stop)
-{
-    return convert(path, NULL, text, size, name, name_size, error, depend, user, stop);
 }
 
 sc_status scad_load_at(const char *path, const sc_load_options *options, double t,
@@ -720,7 +780,8 @@ sc_status scad_load_objects(const char *path, const sc_load_options *options,
     *converted = 1;
     char *text = NULL, name[PATH_MAX + 16];
     size_t size = 0;
-    st = convert(path, NULL, &text, &size, name, sizeof name, error, NULL, NULL, stop);
+    st = convert(path, NULL, options && options->strict, &text, &size, name, sizeof name,
+                 error, NULL, NULL, stop);
     if (st == SC_OK) {
         if (stop && stop->loading)
             *stop->loading = 1;
@@ -747,13 +808,15 @@ static sc_status skip_close(void *user, parse_node *node, sc_error *error)
     return SC_OK;
 }
 
-sc_status scad_read_model(const char *path, char **text, size_t *size, char *name,
-                          size_t name_size, sc_error *error, const scad_stop *stop)
+sc_status scad_read_model(const char *path, int strict, char **text, size_t *size,
+                          char *name, size_t name_size, sc_error *error,
+                          const scad_stop *stop)
 {
     *text = NULL;
     *size = 0;
     if (scad_is_source(path))
-        return convert(path, NULL, text, size, name, name_size, error, NULL, NULL, stop);
+        return convert(path, NULL, strict, text, size, name, name_size, error, NULL, NULL,
+                       stop);
     snprintf(name, name_size, "%s", path);
     if (scad_is_mesh(path))
         return mesh_model(path, text, size, error);
@@ -776,7 +839,8 @@ sc_status scad_read_model(const char *path, char **text, size_t *size, char *nam
     free(*text);
     *text = NULL;
     *size = 0;
-    return convert(path, NULL, text, size, name, name_size, error, NULL, NULL, stop);
+    return convert(path, NULL, strict, text, size, name, name_size, error, NULL, NULL,
+                   stop);
 }
 
 void scad_blame(sc_error *error, const char *name, const char *path)

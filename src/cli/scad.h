@@ -47,16 +47,6 @@ sc_status scad_load_files(const char *path, const sc_load_options *options,
                           void (*depend)(void *user, const char *file), void *user,
                           const scad_stop *stop);
 
-/* The conversion alone: OpenSCAD's CSG text for path into *text
- * (malloc'd and NUL-terminated, *size bytes; the caller frees it) and the
- * name to load it under (DIR/NAME.csg) into name; depend and stop as above. On
- * failure *text is NULL and error says why. (spancast-mpi converts once
- * and sends the text to its other ranks.) */
-sc_status scad_convert(const char *path, char **text, size_t *size, char *name,
-                       size_t name_size, sc_error *error,
-                       void (*depend)(void *user, const char *file), void *user,
-                       const scad_stop *stop);
-
 /* scad_load at OpenSCAD's animation time $t = t: the model as OpenSCAD's
  * --animate evaluates it for that frame; stop as for scad_load_files. */
 sc_status scad_load_at(const char *path, const sc_load_options *options, double t,
@@ -93,9 +83,12 @@ sc_status scad_load_objects(const char *path, const sc_load_options *options,
  * conversion, the one-line import of a mesh, or the .csg file itself,
  * after a streamed parse that finds OpenSCAD's language in it (then
  * converted, with the note). Errors other than that one are left to the
- * load of the text. *text is malloc'd; NULL on failure. */
-sc_status scad_read_model(const char *path, char **text, size_t *size, char *name,
-                          size_t name_size, sc_error *error, const scad_stop *stop);
+ * load of the text. strict: OpenSCAD's first warning is the conversion's
+ * error, as --strict makes it (scad_load_model does the same when its
+ * options are strict). *text is malloc'd; NULL on failure. */
+sc_status scad_read_model(const char *path, int strict, char **text, size_t *size,
+                          char *name, size_t name_size, sc_error *error,
+                          const scad_stop *stop);
 
 /* The name the converted text of path is loaded under (DIR/NAME.csg, DIR
  * the source's real directory) into name: 1, or 0 when path cannot be
