@@ -41,6 +41,9 @@ grep -q "^ *broken.csg:2:3: error: 'roof' is not supported yet$" table.txt ||
 grep -Eq "^3 +5 +0 +[0-9.]+  render part\.csg -o 'part two\.png' --imgsize=32,24 '--mask=part mask\.png'$" table.txt ||
     fail "job 3 (quoted words) in the table: $(cat table.txt)"
 grep -Eq '^4 +6 +0 ' table.txt || fail "job 4 (info): $(cat table.txt)"
+# What a job that succeeded printed is under its row too: info's report.
+sed -n '/^4 /,/^4 jobs/p' table.txt | grep -Eq '^ +\| bounds: \[' ||
+    fail "job 4's report is not in the table: $(cat table.txt)"
 grep -Eq '^4 jobs: 3 succeeded, 1 failed, in [0-9.]+ s$' table.txt ||
     fail "the summary line: $(tail -n 1 table.txt)"
 
@@ -59,6 +62,7 @@ assert jobs[1]["exit"] == 1
 assert jobs[1]["message"] == "broken.csg:2:3: error: 'roof' is not supported yet", jobs[1]
 assert jobs[2]["args"][3] == "part two.png" and jobs[2]["args"][5] == "--mask=part mask.png", jobs[2]
 assert d["succeeded"] == 3 and d["failed"] == 1, d
+assert "\nbounds: [" in jobs[3]["output"], jobs[3]
 PY
 
 # A failed job's whole output, not only its last line, bounded: a model
@@ -129,9 +133,11 @@ if command -v mpirun >/dev/null && [ -x "$(dirname "$bin")/spancast-mpi" ]; then
     rm -f lib/*.png
     mpirun_test -np 3 "$bin" batch lib/jobs.txt --json >mpi.json 2>err.txt
     python3 - mpi.json batch.json <<'PY' || fail "mpi.json: $(cat mpi.json) $(cat err.txt)"
-import json, sys
+import json, re, sys
 a, b = (json.load(open(p)) for p in sys.argv[1:])
-strip = lambda d: [(j["line"], j["exit"], j["message"], j["output"]) for j in d["jobs"]]
+# The outputs alike but for the times they report.
+untimed = lambda s: re.sub(r" in [0-9.]+ s\b", " in (time) s", s)
+strip = lambda d: [(j["line"], j["exit"], j["message"], untimed(j["output"])) for j in d["jobs"]]
 assert strip(a) == strip(b), (strip(a), strip(b))
 PY
     cmp -s ref.png lib/part.png || fail "part.png from the batch on 3 ranks differs"

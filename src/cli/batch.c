@@ -17,11 +17,13 @@
  * (stdout and stderr) captured; a job that fails does not stop the
  * others. Under mpirun the jobs are the pieces of dist.h's queue, spread
  * over the ranks, and rank 0 prints the summary. At the end: a table of
- * every job (its line, exit status, time, command, and for a failure the
- * last line it printed, its message, and the whole of what it printed,
- * stdout and stderr as they came, bounded by BATCH_OUTPUT: the first
- * BATCH_OUTPUT_HEAD bytes and the last ones, with what was left out
- * counted between), or with --json the same as JSON.
+ * every job (its line, exit status, time, command, for a failure the last
+ * line it printed, its message, and for every job the whole of what it
+ * printed, stdout and stderr as they came, bounded by BATCH_OUTPUT: the
+ * first BATCH_OUTPUT_HEAD bytes and the last ones, with what was left out
+ * counted between), or with --json the same as JSON. What jobs that
+ * succeeded printed (a measure's report, a query's answers) is kept up to
+ * BATCH_KEPT bytes in all; a failed job's always.
  * Exit status: 0 when every job succeeded, 1 when one failed or the jobs
  * file cannot be read, 2 for a bad command line or a malformed jobs file
  * (file:line:col: error: ...).
@@ -53,6 +55,7 @@ extern char **environ;
 #define BATCH_MESSAGE 512
 #define BATCH_OUTPUT ((size_t)16 << 10)     /* bytes of a failed job's output kept */
 #define BATCH_OUTPUT_HEAD ((size_t)4 << 10) /* of them, from its beginning */
+#define BATCH_KEPT ((size_t)64 << 20)       /* of succeeded jobs' output, in all */
 
 typedef struct batch_job {
     int line;
@@ -66,9 +69,10 @@ typedef struct batch_result {
     int32_t signal;              /* the signal that ended it, or 0 */
     double seconds;              /* wall time */
     char message[BATCH_MESSAGE]; /* the last line it printed */
-    /* a failed job's output (NUL-terminated, malloc'd), or NULL; travels
-     * after the struct (pack_result) */
+    /* the job's output (NUL-terminated, malloc'd), or NULL; travels after
+     * the struct (pack_result) */
     char *output;
+    int32_t dropped; /* rank 0: output left out past BATCH_KEPT */
 } batch_result;
 
 typedef struct batch {
@@ -80,6 +84,7 @@ typedef struct batch {
     batch_result *results; /* rank 0: one per job */
     char **env;            /* environ without the MPI variables */
     int strict;            /* --strict: passed on to every job but bench */
+    size_t kept;           /* rank 0: bytes of succeeded jobs' output kept */
 } batch;
 
 static double seconds_now(void)
@@ -345,7 +350,7 @@ static sc_status run_job(void *user, int k, void **result, sc_error *error)
         }
         if (fd >= 0)
             last_line(fd, r->message, sizeof r->message);
-        if (fd >= 0 && r->exit_status != 0)
+        if (fd >= 0)
             r->output = bounded_output(fd);
         if (r->signal && !r->message[0])
             snprintf(r->message, sizeof r->message, "killed by signal %d (%s)", r->signal,
@@ -398,13 +403,26 @@ static void *unpack_result(void *user, const void *bytes, size_t size)
     return r;
 }
 
-/* Takes the result's output (the result is released after). */
+/* Takes the result's output (the result is released after); a succeeded
+ * job's past BATCH_KEPT bytes of such output in all is left out. */
 static sc_status deliver_result(void *user, int k, const void *result, sc_error *error)
 {
     (void)error;
     batch *b = user;
-    b->results[k] = *(const batch_result *)result;
+    batch_result *r = &b->results[k];
+    *r = *(const batch_result *)result;
     ((batch_result *)result)->output = NULL;
+    r->dropped = 0;
+    if (r->exit_status == 0 && r->output) {
+        size_t n = strlen(r->output);
+        if (n > BATCH_KEPT - b->kept) {
+            free(r->output);
+            r->output = NULL;
+            r->dropped = 1;
+        } else {
+            b->kept += n;
+        }
+    }
     return SC_OK;
 }
 
@@ -452,9 +470,9 @@ static void print_json_string(FILE *out, const char *s)
     fputc('"', out);
 }
 
-/* A failed job's output under its line in the table, each line marked,
- * when it is more than the one line of its message. */
-static void print_output(const char *output)
+/* A job's output under its line in the table, each line marked; for a
+ * failed job only when it is more than the one line of its message. */
+static void print_output(const char *output, int failed)
 {
     if (!output)
         return;
@@ -462,7 +480,7 @@ static void print_output(const char *output)
     while (n > 0 &&
            (output[n - 1] == '\n' || output[n - 1] == '\r' || output[n - 1] == ' '))
         n--;
-    if (!memchr(output, '\n', n))
+    if (failed && !memchr(output, '\n', n))
         return; /* the message alone */
     for (size_t at = 0; at < n;) {
         const char *end = memchr(output + at, '\n', n - at);
@@ -483,8 +501,10 @@ static void print_table(const batch *b, int failed, double seconds)
         putchar('\n');
         if (r->exit_status != 0)
             printf("%-30s%s\n", "", r->message[0] ? r->message : "(no message)");
-        if (r->exit_status != 0)
-            print_output(r->output);
+        print_output(r->output, r->exit_status != 0);
+        if (r->dropped)
+            printf("%-30s| [... output left out: the batch keeps %zu MiB of it ...]\n",
+                   "", BATCH_KEPT >> 20);
     }
     printf("%d job%s: %d succeeded, %d failed, in %.3f s\n", b->count,
            b->count == 1 ? "" : "s", b->count - failed, failed, seconds);
@@ -504,7 +524,7 @@ static void print_json(const batch *b, int failed, double seconds)
                r->exit_status, r->exit_status == 0 ? "true" : "false", r->seconds);
         print_json_string(stdout, r->exit_status ? r->message : "");
         fputs(", \"output\": ", stdout);
-        print_json_string(stdout, r->exit_status && r->output ? r->output : "");
+        print_json_string(stdout, r->output ? r->output : "");
         putchar('}');
     }
     printf("],\n \"succeeded\": %d, \"failed\": %d, \"seconds\": %.6f}\n",

@@ -120,8 +120,8 @@ static const section sections[] = {
      "'batch' runs the spancast command of each line of JOBS (shell quoting, '#'\n"
      "comments, paths relative to JOBS' folder), each once, across the ranks\n"
      "under mpirun; a failed job does not stop the others; it prints a table of\n"
-     "every job, or JSON with --json, and exits 1 when a job failed; --strict\n"
-     "passes --strict on to every job.\n"},
+     "every job with what it printed, or JSON with --json, and exits 1 when a\n"
+     "job failed; --strict passes --strict on to every job.\n"},
     {C_BENCH, B_BENCH, NULL, NULL,
      "'bench accuracy' measures the implicit-surface root finders against time\n"
      "on scenes with known answers, one CSV row per method and tolerance, on an\n"
