@@ -96,6 +96,9 @@ warns_with() {
 }
 printf 'include <nope.scad>\ncube(1);\n' >noinc.scad
 warns_with noinc.scad "noinc.scad: warning: Can't open include file 'nope.scad'."
+# OpenSCAD's notes of a deprecated form are warnings too.
+printf 'module m() child(0);\nm() cube(1);\n' >deprecated.scad
+warns_with deprecated.scad "deprecated.scad: warning: child() will be removed in future releases. Use children() instead."
 printf 'cube(1);\nfoo();\n' >unknown.scad
 warns_with unknown.scad "unknown.scad:2:1: warning: Ignoring unknown module 'foo'"
 

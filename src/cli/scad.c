@@ -221,10 +221,10 @@ static void place_position(source_lines *at, sc_error *error)
  * OpenSCAD 2021.01 exits 0 after many errors (a failing assert(), a syntax
  * error in a use <...> file) and leaves the failed part out, so its log
  * decides, not only its exit status (failed: it exited non-zero). Each
- * "WARNING: " line is printed on stderr as a compiler's warning, at
- * OpenSCAD's position when the line has one, else against path (the render
- * goes on, as OpenSCAD's does). The first "ERROR: " line becomes the error
- * (with strict, the first "WARNING: " line too, as OpenSCAD's
+ * "WARNING: " or "DEPRECATED: " line is printed on stderr as a compiler's
+ * warning, at OpenSCAD's position when the line has one, else against
+ * path (the render goes on, as OpenSCAD's does). The first "ERROR: " line becomes the
+ * error (with strict, the first "WARNING: " line too, as OpenSCAD's
  * --hardwarnings makes it one; nothing after it is printed), at its
  * position when it has one, else against path; a failure without an
  * ERROR line is told by OpenSCAD's last non-empty line. File names are as
@@ -247,13 +247,17 @@ static sc_status openscad_log(const char *log_path, source_lines *at, int failed
                 line[--n] = 0;
             int is_error = !strncmp(line, "ERROR: ", 7) && line[7];
             int is_warning = !strncmp(line, "WARNING: ", 9) && line[9];
+            /* OpenSCAD's notes of a deprecated form are warnings that
+             * --hardwarnings leaves alone. */
+            int is_deprecated = !strncmp(line, "DEPRECATED: ", 12) && line[12];
+            const char *text = line + (is_error ? 7 : is_warning ? 9 : 12);
             if (!first[0] && (is_error || (strict && is_warning))) {
-                snprintf(first, sizeof first, "%s", line + (is_error ? 7 : 9));
+                snprintf(first, sizeof first, "%s", text);
                 status = is_error ? SC_ERR_SYNTAX : SC_ERR_SEMANTIC;
-            } else if (is_warning && !strict) {
+            } else if ((is_warning && !strict) || (is_deprecated && !first[0])) {
                 sc_error w;
                 memset(&w, 0, sizeof w);
-                if (openscad_position(line + 9, &w)) {
+                if (openscad_position(text, &w)) {
                     place_position(at, &w);
                     if (w.line > 0)
                         fprintf(stderr, "%s:%d:%d: warning: %s\n", w.file, w.line,
@@ -261,7 +265,7 @@ static sc_status openscad_log(const char *log_path, source_lines *at, int failed
                     else
                         fprintf(stderr, "%s: warning: %s\n", w.file, w.message);
                 } else
-                    fprintf(stderr, "%s: warning: %s\n", path, line + 9);
+                    fprintf(stderr, "%s: warning: %s\n", path, text);
             }
             if (n > 0)
                 snprintf(last, sizeof last, "%s", line);
