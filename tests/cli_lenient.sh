@@ -363,12 +363,15 @@ hull2d.csg:6:3: warning: Ignoring 2D child object for 3D operation
 hull2d.csg:3:2: warning: Mixing 2D and 3D objects is not supported
 hull2d.csg:3:2: warning: Ignoring 2D child object for 3D operation"
 same hull2d.csg hull2d_ref.csg
-# their arguments are still checked
+# their arguments are still checked: a size OpenSCAD cannot convert is
+# warned of first (openscad -o x.stl on the same file prints these)
 printf 'resize(newsize = [10, 0, 0]) { cube(size = 5); square(size = "big"); }\n' >bad2d.csg
-check
-"$bin" render bad2d.csg -o bad2d.png -q 2>err.txt && fail "bad2d.csg rendered"
-grep -qx "bad2d.csg:1:62: error: wrong type for argument 'size' of 'square' (expected a number or \[x, y\])" err.txt ||
-    fail "bad2d.csg: $(cat err.txt)"
+printf 'resize(newsize = [10, 0, 0]) { cube(size = 5); }\n' >bad2d_ref.csg
+warns bad2d.csg 'bad2d.csg:1:62: warning: Unable to convert square(size="big", ...) parameter to a number or a vec2 of numbers
+bad2d.csg:1:48: warning: Mixing 2D and 3D objects is not supported
+bad2d.csg:1:48: warning: Ignoring 2D child object for 3D operation'
+same bad2d.csg bad2d_ref.csg
+refuses bad2d.csg 'bad2d.csg:1:62: error: Unable to convert square(size="big", ...) parameter to a number or a vec2 of numbers'
 
 # ---- 2D hull, minkowski and resize in a 2D model: drawn as the slab ----
 printf 'hull() { square(size = [1, 4]); multmatrix([[1, 0, 0, 9], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]) { square(size = [1, 4]); } }\n' >hull_flat.csg
@@ -1331,6 +1334,59 @@ for mode in "" --faithful; do
         [ "$(wc -l <err.txt)" = 14 ] || fail "args.csg $mode: other messages: $(cat err.txt)"
         same args.csg args_ref.csg $mode
         refuses args.csg "args.csg:2:25: error: variable centre not specified as parameter" $mode
+    }
+done
+
+# ---- arguments of the wrong kind ----
+# OpenSCAD 2021.01 takes an argument of its modules that is of the wrong
+# kind as the parameter's default: with a warning for the size of a cube
+# or square, silently for the rest (radii, heights, center, scale, twist,
+# slices, angle, cut, offset's r and delta, text's, resize's entries, a
+# matrix that is no matrix); a $fs or $fa that is not a number is 0,
+# which a primitive clamps with its warning, also where it is passed
+# down. spancast does the same: its warnings are compared with what
+# openscad prints for the same file, message and line, and the model with
+# OpenSCAD's export of it, which writes the values OpenSCAD settled on.
+# --strict refuses it at the first warning. (spancast's own nodes keep
+# their errors: tests/bad-input.)
+cat >types.csg <<'M'
+union() {
+	cube(size = "a");
+	multmatrix([[1, 0, 0, 3], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]) cube([1, 2], center = 1);
+	multmatrix([[1, 0, 0, 6], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]) sphere(r = "a", $fs = "b", $fa = true, $fn = [3]);
+	multmatrix([[1, 0, 0, 9], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]) cylinder(h = "a", r = 2, r1 = [1], d2 = true, center = "yes");
+	multmatrix([[1, 0, 0, 14], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]) cylinder(h = 3, r = undef, d = 2, d1 = "x");
+	multmatrix([[1, 0, 0, 0], [0, 1, 0, 5], [0, 0, 1, 0], [0, 0, 0, 1]], $fs = "x") sphere(r = 2, d = [1]);
+	multmatrix([[1, 0, 0, 0], [0, 1, 0, 9], [0, 0, 1, 0], [0, 0, 0, 1]]) cube(
+		[1, true, 3]);
+	multmatrix("m") resize(newsize = [2, "a", 3], auto = [1, "a", 0]) multmatrix([[1, 0, 0, 0], [0, 1, 0, -6], [0, 0, 1, 0], [0, 0, 0, 1]]) cube(size = [1, 2, 4]);
+	linear_extrude(height = [1], scale = "b", twist = "t", slices = true, center = 1, convexity = "c") {
+		multmatrix([[1, 0, 0, 0], [0, 1, 0, -12], [0, 0, 1, 0], [0, 0, 0, 1]]) circle(r = "a", d = [2]);
+		multmatrix([[1, 0, 0, 4], [0, 1, 0, -12], [0, 0, 1, 0], [0, 0, 0, 1]]) square(size = [1, 2, 3], center = 1);
+		offset(r = "a", delta = 0.5, chamfer = 1) multmatrix([[1, 0, 0, 8], [0, 1, 0, -12], [0, 0, 1, 0], [0, 0, 0, 1]]) square(size = 1);
+		projection(cut = "yes", convexity = "x") multmatrix([[1, 0, 0, 12], [0, 1, 0, -12], [0, 0, 1, 0], [0, 0, 0, 1]]) cube(size = 2);
+		text(5, size = "a");
+	}
+	multmatrix([[1, 0, 0, 0], [0, 1, 0, 20], [0, 0, 1, 0], [0, 0, 0, 1]]) rotate_extrude(angle = "a", convexity = "b", $fa = "c", $fn = 8) multmatrix([[1, 0, 0, 2], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]) square(size = "q");
+}
+M
+check
+openscad -o "$PWD/types_os.csg" types.csg 2>os_types.err ||
+    fail "openscad -o types_os.csg types.csg: exit $?"
+sed -n 's/^WARNING: \(.*\) in file types\.csg, line \([0-9]*\)$/\2: \1/p' os_types.err >os_types.txt
+[ "$(wc -l <os_types.txt)" = 9 ] || fail "openscad's warnings: $(cat os_types.err)"
+for mode in "" --faithful; do
+    # shellcheck disable=SC2086
+    {
+        check
+        "$bin" render types.csg -o out.png --imgsize=64,48 -q $mode 2>err.txt ||
+            fail "types.csg $mode: exit $?: $(cat err.txt)"
+        sed -n 's/^types\.csg:\([0-9]*\):[0-9]*: warning: \(.*\)$/\1: \2/p' err.txt >sc_types.txt
+        cmp -s os_types.txt sc_types.txt ||
+            fail "types.csg $mode: spancast warns '$(cat err.txt)', openscad '$(cat os_types.txt)'"
+        [ "$(wc -l <err.txt)" = 9 ] || fail "types.csg $mode: other messages: $(cat err.txt)"
+        same types.csg types_os.csg $mode
+        refuses types.csg 'types.csg:2:14: error: Unable to convert cube(size="a", ...) parameter to a number or a vec3 of numbers' $mode
     }
 done
 

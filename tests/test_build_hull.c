@@ -185,9 +185,12 @@ static void test_hull_errors(void **state)
         open, 1, whole, 1);
     check_error("m.csg", "hull() { torus(r1 = 2, r2 = 1); }", SC_ERR_UNSUPPORTED,
                 "m.csg:1:10: error: 'torus' inside hull is not supported yet");
-    check_error("m.csg", "hull() { sphere(r = \"x\"); }", SC_ERR_SEMANTIC,
-                "m.csg:1:21: error: wrong type for argument 'r' of 'sphere' (expected a "
-                "number)");
+    /* a radius of the wrong kind is 1, silently, as OpenSCAD takes it */
+    sc_scene *one = load("hull() { sphere(r = \"x\"); }");
+    assert_int_equal(sc_scene_warning_count(one), 0);
+    assert_true(inside(one, 0, 0, 0) && inside(one, 0, 0, 0.8));
+    assert_false(inside(one, 1.01, 0, 0) || inside(one, 0, 0, 1.01));
+    sc_scene_release(one);
     /* $fa and $fs clamped to 0.01, as OpenSCAD clamps them: 6284 */
     check_error("m.csg", "hull() { sphere(r = 10, $fn = 0, $fa = 0, $fs = 0); }",
                 SC_ERR_LIMIT,
@@ -512,17 +515,28 @@ static void test_resize_errors(void **state)
         "[0, 1, 0, 2], [0, 0, 1, 3], [0, 0, 0, 1]]) { cube(5); } }");
     check_bounds(neg, v3(2, 2, 6), v3(12, 7, 16), 1e-12);
     sc_scene_release(neg);
-    check_error("m.csg", "resize(newsize = 3) { cube(); }", SC_ERR_SEMANTIC,
-                "m.csg:1:18: error: wrong type for argument 'newsize' of 'resize' "
-                "(expected a vector of numbers)");
-    check_error("m.csg", "resize([1, 1, 1], auto = \"yes\") { cube(); }", SC_ERR_SEMANTIC,
-                "m.csg:1:26: error: wrong type for argument 'auto' of 'resize' (expected "
-                "true, false or a vector of them)");
-    /* a bad argument of an ignored 2D child is still an error */
-    check_error("m.csg", "resize([2, 0, 0]) { cube(); circle(r = \"x\"); }",
-                SC_ERR_SEMANTIC,
-                "m.csg:1:40: error: wrong type for argument 'r' of 'circle' (expected a "
-                "number)");
+    /* arguments of the wrong kind, as OpenSCAD 2021.01 reads them: a
+     * newsize that is no vector is [0, 0, 0], an entry that is no number
+     * 0; an auto that is neither true, false nor a vector all false */
+    sc_scene *odd = load("resize(newsize = 3) { cube([1, 2, 4]); }");
+    check_bounds(odd, v3(0, 0, 0), v3(1, 2, 4), 1e-12);
+    sc_scene_release(odd);
+    odd = load("resize([2, \"a\", 0], auto = \"yes\") { cube([1, 2, 4]); }");
+    check_bounds(odd, v3(0, 0, 0), v3(2, 2, 4), 1e-12);
+    sc_scene_release(odd);
+    odd = load("resize([2, 0, 0], auto = [0, \"y\", []]) { cube([1, 2, 4]); }");
+    check_bounds(odd, v3(0, 0, 0), v3(2, 4, 4), 1e-12);
+    sc_scene_release(odd);
+    /* an ignored 2D child with an argument of the wrong kind: only
+     * OpenSCAD's warnings of the child (openscad -o x.stl prints these) */
+    odd = load("resize([2, 0, 0]) { cube(); circle(r = \"x\"); }");
+    assert_int_equal(sc_scene_warning_count(odd), 2);
+    assert_string_equal(sc_scene_warning(odd, 0)->message,
+                        "Mixing 2D and 3D objects is not supported");
+    assert_string_equal(sc_scene_warning(odd, 1)->message,
+                        "Ignoring 2D child object for 3D operation");
+    check_bounds(odd, v3(0, 0, 0), v3(2, 1, 1), 1e-12);
+    sc_scene_release(odd);
     /* a revolved square ring (z 0 to 1) stretched to height 2 */
     sc_scene *r =
         load("resize([0, 0, 2]) { rotate_extrude($fn = 4) { "

@@ -340,9 +340,14 @@ static void test_errors(void **state)
         assert_false(inside(s, 0.5, 0.5, 0.5));
         sc_scene_release(s);
     }
-    check_error("rotate_extrude(angle = \"x\") { square(size = 1); }", SC_ERR_SEMANTIC,
-                "m.csg:1:24: error: wrong type for argument 'angle' of 'rotate_extrude' "
-                "(expected a number)");
+    /* an angle that is not a number is 360, as OpenSCAD 2021.01 takes it */
+    sc_scene *full = load("rotate_extrude(angle = \"x\", convexity = [2]) { "
+                          "multmatrix([[1, 0, 0, 1], [0, 1, 0, 0], [0, 0, 1, 0], "
+                          "[0, 0, 0, 1]]) { square(size = 1); } }");
+    assert_int_equal(sc_scene_warning_count(full), 0);
+    assert_true(inside(full, 1.5, 0, 0.5) && inside(full, -1.5, 0, 0.5) &&
+                inside(full, 0, -1.5, 0.5));
+    sc_scene_release(full);
     /* a path index that is not a number is 0, as OpenSCAD reads it: the
      * square [1, 2] x [0, 1] revolved */
     sc_scene *ring = load("rotate_extrude($fn = 64) { polygon(points = [[1, 0], [2, 0], "

@@ -421,6 +421,7 @@ static void test_points_context(void **state)
                       "  polyhedron(points = [[0, 0, 0], [1, 0, 0], [0, 1, 0]], faces = "
                       "[[0, 1, 5]]);\n"
                       "  circle(r = \"x\");\n"
+                      "  torus(r1 = \"x\");\n"
                       "}\n"
                       "resize([2, 0, 0]) { resize(newsize = [3, 3, 3], auto = true) "
                       "{ sphere(1); } }\n");
@@ -443,9 +444,15 @@ static void test_points_context(void **state)
     assert_int_equal(n->u.polyhedron.bad[0].loc.line, 3);
     n = n->next;
     assert_int_equal(n->kind, MODEL_CIRCLE);
-    /* read as in the 2D context: a 2D hull takes it, a 3D one checks it */
+    /* read as in the 2D context, as OpenSCAD reads it: r of another kind
+     * is the default, without a word */
+    assert_null(n->pending);
+    assert_true(n->u.circle->r == 1 && !n->u.circle->has_d);
+    n = n->next;
+    /* spancast's own nodes keep their errors, for the builder */
+    assert_int_equal(n->kind, MODEL_TORUS);
     assert_string_equal(n->pending->message,
-                        "wrong type for argument 'r' of 'circle' (expected a number)");
+                        "wrong type for argument 'r1' of 'torus' (expected a number)");
     const model_node *outer = h->next, *inner = outer->first_child;
     assert_int_equal(outer->kind, MODEL_RESIZE);
     assert_true(outer->u.resize->size[0] == 2 && outer->u.resize->size[1] == 0);
@@ -461,7 +468,9 @@ static void test_points_context(void **state)
 }
 
 /* The 2D context: an argument error stays in its node, for the builder
- * that reads it, and lowering goes on; color takes no arguments there; a
+ * that reads it, and lowering goes on; an argument of OpenSCAD's of the
+ * wrong kind is its default, as OpenSCAD 2021.01 reads it (a size with a
+ * warning: test_wrong_types); color takes no arguments there; a
  * polygon index out of range is left out of its path and listed, and one
  * that is not a number ends the paths before it. */
 static void test_twod_context(void **state)
@@ -476,14 +485,13 @@ static void test_twod_context(void **state)
               "  multmatrix([[1, 0, 0, 2], [0, 1, 0, 3], [0, 0, 1, 0], [0, 0, 0, 1]])\n"
               "    { text(\"ab\", size = 5); }\n"
               "}\n"
-              "cube(size = \"no\");\n");
+              "cube(size = \"no\");\n"
+              "torus(r1 = \"no\");\n");
     const model_node *e = l.m->first, *n = e->first_child;
     assert_int_equal(n->kind, MODEL_OFFSET);
-    assert_non_null(n->pending);
-    assert_int_equal(n->pending->line, 2);
-    assert_int_equal(n->pending->column, 14);
-    assert_string_equal(n->pending->message,
-                        "wrong type for argument 'r' of 'offset' (expected a number)");
+    assert_null(n->pending); /* neither r nor delta: r = 1, as OpenSCAD */
+    assert_true(!n->u.offset->has_r && !n->u.offset->has_delta);
+    assert_true(n->u.offset->delta == 1);
     const model_node *k = n->first_child;
     assert_int_equal(k->kind, MODEL_SQUARE);
     assert_true(k->u.square->sx == 2 && k->u.square->sy == 3 && k->u.square->center);
@@ -514,18 +522,22 @@ static void test_twod_context(void **state)
     /* the exact builders read height and center, the faithful one all */
     assert_null(e->pending);
     assert_null(e->u.linear_extrude->exact_error);
-    /* the 3D model after it still stops at its own error */
-    assert_int_equal(e->next->kind, MODEL_ERROR);
-    assert_null(e->next->next);
+    /* the 3D model after it: the cube of size 1, then its own error */
+    assert_int_equal(e->next->kind, MODEL_CUBE);
+    assert_true(e->next->u.cube.size[0] == 1 && e->next->u.cube.size[2] == 1);
+    assert_int_equal(e->next->next->kind, MODEL_ERROR);
+    assert_null(e->next->next->next);
     release(&l);
-    l = lower("linear_extrude(center = 1, slices = \"x\") { circle(); }\n"
+    l = lower("linear_extrude(center = 1, slices = \"x\", twist = [1], scale = [2]) "
+              "{ circle(); }\n"
               "rotate_extrude(file = \"a.dxf\") { circle(); }\n");
     e = l.m->first;
-    assert_string_equal(e->u.linear_extrude->exact_error->message,
-                        "wrong type for argument 'center' of 'linear_extrude' (expected "
-                        "true or false)");
-    assert_string_equal(e->pending->message, "wrong type for argument 'slices' of "
-                                             "'linear_extrude' (expected a number)");
+    assert_null(e->u.linear_extrude->exact_error);
+    assert_null(e->pending);
+    assert_true(e->u.linear_extrude->plain && !e->u.linear_extrude->center);
+    assert_true(e->u.linear_extrude->height == 100 && e->u.linear_extrude->slices == 0);
+    assert_true(e->u.linear_extrude->twist == 0 && e->u.linear_extrude->sx == 1 &&
+                e->u.linear_extrude->sy == 1);
     /* the file form: the drawing is the only child, the written ones left
      * out as OpenSCAD leaves them out */
     assert_null(e->next->pending);
@@ -622,12 +634,11 @@ static void check_error(const char *text, sc_status status, const char *expected
 static void test_errors(void **state)
 {
     (void)state;
-    check_error("cube();\ncube(size = \"a\");\nnosuch();\n", SC_ERR_SEMANTIC,
-                "m.csg:2:13: error: wrong type for argument 'size' of 'cube' (expected a "
-                "number or a vector of 3 numbers)");
-    check_error("group() { sphere(r = [1]); }", SC_ERR_SEMANTIC,
-                "m.csg:1:22: error: wrong type for argument 'r' of 'sphere' (expected a "
+    check_error("cube();\ntorus(r1 = \"a\");\nnosuch();\n", SC_ERR_SEMANTIC,
+                "m.csg:2:12: error: wrong type for argument 'r1' of 'torus' (expected a "
                 "number)");
+    check_error("group() { sphere(r = [1]); nosuch(); }", SC_ERR_SEMANTIC,
+                "m.csg:1:28: error: unknown node 'nosuch'");
     check_error("frobnicate();", SC_ERR_SEMANTIC,
                 "m.csg:1:1: error: unknown node 'frobnicate'");
     check_error("union() { roof(); }", SC_ERR_UNSUPPORTED,
@@ -805,9 +816,134 @@ static void test_primitive_warnings(void **state)
                 "1:8: Ignoring radius variable 'r' as diameter 'd' is defined too.\n");
 }
 
+/* Arguments of OpenSCAD's modules of the wrong kind, as OpenSCAD 2021.01
+ * reads them (openscad -o x.csg on the same calls exports these values
+ * and prints these warnings): the default, with a warning for the size of
+ * a cube or square (at it, on the statement's line), silently for the
+ * rest; a $fs or $fa that is not a number is 0, clamped with the warning;
+ * a $fn that is not a number is 0. */
+static void test_wrong_types(void **state)
+{
+    (void)state;
+    check_notes(
+        "cube(size = \"a\"); cube([1, 2]); cube([1, true, 3], center = 1);\n"
+        "cube(size = [1, 2, 3]); cube(undef); cube(7); square([1, 2, 3]);\n"
+        "square(size = [\"a\", 1]); square([3, 4]);\n"
+        "cube(\n  [1, [2], 3]);",
+        "1:13: Unable to convert cube(size=\"a\", ...) parameter to a number or a "
+        "vec3 of numbers\n"
+        "1:24: Unable to convert cube(size=[1, 2], ...) parameter to a number or a "
+        "vec3 of numbers\n"
+        "1:38: Unable to convert cube(size=[1, true, 3], ...) parameter to a "
+        "number or a vec3 of numbers\n"
+        "2:54: Unable to convert square(size=[1, 2, 3], ...) parameter to a "
+        "number or a vec2 of numbers\n"
+        "3:15: Unable to convert square(size=[\"a\", 1], ...) parameter to a "
+        "number or a vec2 of numbers\n"
+        "4:1: Unable to convert cube(size=[1, [2], 3], ...) parameter to a "
+        "number or a vec3 of numbers\n");
+    check_notes("sphere(1, $fs = \"a\", $fa = true, $fn = [3]); circle(1, $fs = undef);\n"
+                "multmatrix($fa = [1]) { sphere(1); }",
+                "1:1: $fs too small - clamping to 0.010000\n"
+                "1:1: $fa too small - clamping to 0.010000\n"
+                "1:46: $fs too small - clamping to 0.010000\n"
+                "2:25: $fa too small - clamping to 0.010000\n");
+    /* radii and heights of another kind: the defaults, the other radius
+     * where one is a number, no "ambiguous" with one that is not */
+    check_notes("sphere(r = \"a\"); sphere(r = 2, d = [4]); cylinder(h = 1, r = 5, r1 = "
+                "\"a\", d2 = true);",
+                "");
+    lowered l =
+        lower("cube([1, 2], center = 1);\n"
+              "cube(2, center = true);\n"
+              "sphere(r = \"a\", $fs = \"b\", $fn = true);\n"
+              "sphere(r = 2, d = [4]);\n"
+              "sphere(r = undef, d = 6);\n"
+              "cylinder(h = \"a\", r = 5, r1 = \"b\", d2 = true, center = \"c\");\n"
+              "cylinder(h = 2, r = [1], d1 = 4);\n");
+    const model_node *n = l.m->first;
+    assert_int_equal(n->kind, MODEL_CUBE);
+    assert_true(n->u.cube.size[0] == 1 && n->u.cube.size[1] == 1 &&
+                n->u.cube.size[2] == 1 && !n->u.cube.center);
+    n = n->next;
+    assert_true(n->u.cube.size[1] == 2 && n->u.cube.center);
+    n = n->next;
+    assert_int_equal(n->kind, MODEL_SPHERE);
+    assert_true(n->u.sphere.r == 1 && n->u.sphere.res.fn == 0 &&
+                n->u.sphere.res.fa == 12 && n->u.sphere.res.fs == MODEL_F_MINIMUM);
+    n = n->next;
+    assert_true(n->u.sphere.r == 2);
+    n = n->next;
+    assert_true(n->u.sphere.r == 3);
+    n = n->next;
+    assert_int_equal(n->kind, MODEL_CYLINDER);
+    assert_true(n->u.cylinder.h == 1 && n->u.cylinder.r1 == 5 && n->u.cylinder.r2 == 5 &&
+                !n->u.cylinder.center);
+    n = n->next;
+    assert_true(n->u.cylinder.h == 2 && n->u.cylinder.r1 == 2 && n->u.cylinder.r2 == 1);
+    assert_null(n->next);
+    release(&l);
+    /* in the 2D context: circle, square, offset, text, the extrusions and
+     * projection; each node's values as OpenSCAD exports them */
+    l = lower("rotate_extrude(angle = \"a\", convexity = \"b\", $fa = \"c\") {\n"
+              "  circle(r = 2, d = \"a\");\n"
+              "  square(size = \"a\", center = 1);\n"
+              "  offset(r = \"a\", delta = 2, chamfer = 1) square(1);\n"
+              "  text(5, size = \"a\", font = 3, halign = true, spacing = [1]);\n"
+              "  projection(cut = \"yes\", convexity = \"a\") cube(1);\n"
+              "}\n"
+              "linear_extrude(height = [1], scale = [2, \"a\"], twist = \"t\") "
+              "circle(d = \"a\");\n"
+              "linear_extrude(2, scale = [2, 3]) resize(newsize = [2, \"a\", 3], auto = "
+              "[1, \"a\", 0]) circle(1);\n");
+    const model_node *e = l.m->first;
+    assert_int_equal(e->kind, MODEL_ROTATE_EXTRUDE);
+    assert_null(e->pending);
+    assert_true(e->u.rotate_extrude->angle == 360 && e->u.rotate_extrude->res.fa == 0);
+    n = e->first_child;
+    assert_null(n->pending);
+    assert_true(n->u.circle->r == 2 && !n->u.circle->has_d);
+    n = n->next;
+    assert_null(n->pending);
+    assert_true(n->u.square->sx == 1 && n->u.square->sy == 1 && !n->u.square->center);
+    n = n->next;
+    assert_null(n->pending);
+    assert_true(!n->u.offset->has_r && n->u.offset->has_delta &&
+                n->u.offset->delta == 2 && !n->u.offset->chamfer);
+    n = n->next;
+    assert_int_equal(n->kind, MODEL_TEXT);
+    assert_null(n->pending);
+    assert_string_equal(n->u.text->text, "");
+    assert_int_equal(n->u.text->length, 0);
+    assert_true(n->u.text->size == 10 && n->u.text->spacing == 1);
+    assert_string_equal(n->u.text->font, "");
+    assert_string_equal(n->u.text->halign, "left");
+    n = n->next;
+    assert_int_equal(n->kind, MODEL_PROJECTION);
+    assert_null(n->pending);
+    assert_false(n->u.projection.cut);
+    e = e->next;
+    assert_int_equal(e->kind, MODEL_LINEAR_EXTRUDE);
+    assert_null(e->pending);
+    assert_null(e->u.linear_extrude->exact_error);
+    assert_true(e->u.linear_extrude->height == 100 && e->u.linear_extrude->plain);
+    assert_true(e->first_child->u.circle->r == 1);
+    e = e->next;
+    assert_false(e->u.linear_extrude->plain);
+    assert_true(e->u.linear_extrude->sx == 2 && e->u.linear_extrude->sy == 3);
+    n = e->first_child;
+    assert_int_equal(n->kind, MODEL_RESIZE);
+    assert_null(n->pending);
+    assert_true(n->u.resize->size[0] == 2 && n->u.resize->size[1] == 0 &&
+                n->u.resize->size[2] == 3);
+    assert_true(n->u.resize->autosize[0] == 1 && n->u.resize->autosize[1] == 1 &&
+                n->u.resize->autosize[2] == 0);
+    release(&l);
+}
+
 /* A node's own $fn, $fa and $fs (model_resolution_of): the last of each
  * wins, names that only start like them do not count, a value that is not
- * a number is the default; clamped only when asked. */
+ * a number is 0, as OpenSCAD takes it; clamped only when asked. */
 static void test_own_resolution(void **state)
 {
     (void)state;
@@ -816,9 +952,10 @@ static void test_own_resolution(void **state)
         double fn, fa, fs;
     } cases[] = {
         {"cylinder(h = 1, r1 = 1, r2 = 9, center = true);", 0, 12, 2},
-        {"sphere($fn = 64, $fs = 0.5, $fa = \"x\", r = 1);", 64, 12, 0.5},
+        {"sphere($fn = 64, $fs = 0.5, $fa = \"x\", r = 1);", 64, 0, 0.5},
         {"sphere($fn = 3, $fnx = 7, $f = 1, $fz = 2, $fs = 4, $fn = 5, $fs = [1]);", 5,
-         12, 2},
+         12, 0},
+        {"sphere($fn = true, $fa = undef, $fs = \"2\");", 0, 0, 0},
         {"sphere($fs = 0, $fa = -1);", 0, -1, 0},
     };
     for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
@@ -983,6 +1120,7 @@ int main(void)
         cmocka_unit_test(test_errors),
         cmocka_unit_test(test_argument_warnings),
         cmocka_unit_test(test_primitive_warnings),
+        cmocka_unit_test(test_wrong_types),
         cmocka_unit_test(test_own_resolution),
         cmocka_unit_test(test_resolution_passed_down),
         cmocka_unit_test(test_stream),

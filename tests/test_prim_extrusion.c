@@ -726,22 +726,30 @@ static void test_build_empty(void **state)
 static void test_build_errors(void **state)
 {
     (void)state;
-    check_error("linear_extrude(height = 1) { circle(r = \"a\"); }", SC_ERR_SEMANTIC,
-                "m.csg:1:41: error: wrong type for argument 'r' of 'circle' (expected a "
-                "number)");
-    check_error("linear_extrude(height = 1) { circle(d = [1]); }", SC_ERR_SEMANTIC,
-                "m.csg:1:41: error: wrong type for argument 'd' of 'circle' (expected a "
-                "number)");
-    check_error(
-        "linear_extrude(height = 1) { circle($fn = true); }", SC_ERR_SEMANTIC,
-        "m.csg:1:43: error: wrong type for argument '$fn' of 'circle' (expected a "
-        "number)");
-    check_error("linear_extrude(height = 1) { square(size = [1]); }", SC_ERR_SEMANTIC,
-                "m.csg:1:44: error: wrong type for argument 'size' of 'square' (expected "
-                "a number or [x, y])");
-    check_error("linear_extrude(height = 1) { square(1, center = 1); }", SC_ERR_SEMANTIC,
-                "m.csg:1:49: error: wrong type for argument 'center' of 'square' "
-                "(expected true or false)");
+    /* arguments of the wrong kind are their defaults, as OpenSCAD 2021.01
+     * takes them: silently (a radius 1, a center false, a $fn 0), but for
+     * a square's size */
+    static const char *const silent[] = {
+        "linear_extrude(height = 1) { circle(r = \"a\"); }",
+        "linear_extrude(height = 1) { circle(r = 2, d = [1], $fn = true); }",
+        "linear_extrude(height = 1) { square(1, center = 1); }",
+    };
+    static const double reach[] = {1, 2, 1}; /* the shape's extent in +x */
+    for (size_t i = 0; i < sizeof silent / sizeof silent[0]; i++) {
+        sc_scene *s = load_with(silent[i], 0);
+        assert_int_equal(sc_scene_warning_count(s), 0);
+        assert_true(inside(s, reach[i] - 0.05, 0.01, 0.5));
+        assert_false(inside(s, reach[i] + 0.05, 0.01, 0.5));
+        sc_scene_release(s);
+    }
+    sc_scene *sq = load_with("linear_extrude(height = 1) { square(size = [3]); }", 0);
+    assert_int_equal(sc_scene_warning_count(sq), 1);
+    assert_string_equal(
+        sc_scene_warning(sq, 0)->message,
+        "Unable to convert square(size=[3], ...) parameter to a number or "
+        "a vec2 of numbers");
+    assert_true(inside(sq, 0.9, 0.9, 0.5) && !inside(sq, 1.1, 0.5, 0.5));
+    sc_scene_release(sq);
     /* a point OpenSCAD 2021.01 cannot convert empties the polygon, with
      * its message as the warning (--strict: the error) */
     const char *bad_point =
@@ -799,12 +807,13 @@ static void test_build_errors(void **state)
         "linear_extrude(height = 1) {\n  polygon(points = [[0, 0], [1, 0], [1, 1]], "
         "paths = [[0, 1, 2.5, 3]]);\n}",
         bounds, 1, triangle, 2);
-    check_error("linear_extrude(height = \"x\") { square(); }", SC_ERR_SEMANTIC,
-                "m.csg:1:25: error: wrong type for argument 'height' of 'linear_extrude' "
-                "(expected a number)");
-    check_error("linear_extrude(height = 1, center = 0) { square(); }", SC_ERR_SEMANTIC,
-                "m.csg:1:37: error: wrong type for argument 'center' of 'linear_extrude' "
-                "(expected true or false)");
+    /* a height that is not a number is 100, a center that is not true
+     * false, as OpenSCAD 2021.01 exports them */
+    sc_scene *tall =
+        load_with("linear_extrude(height = \"x\", center = 0) { square(); }", 0);
+    assert_int_equal(sc_scene_warning_count(tall), 0);
+    assert_true(inside(tall, 0.5, 0.5, 99.5) && !inside(tall, 0.5, 0.5, -0.5));
+    sc_scene_release(tall);
 
     /* the depth guard: 1001 nested 2D groups */
     size_t levels = 1001;

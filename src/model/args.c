@@ -39,12 +39,10 @@ sc_status model_wrong_type(const model_reader *c, const parse_node *n, const cha
 sc_status model_number(const model_reader *c, const parse_node *n, const char *name,
                        int position, double *out)
 {
+    (void)c;
     const parse_value *v = model_arg(n, name, position);
-    if (!v)
-        return SC_OK;
-    if (v->kind != PARSE_NUMBER)
-        return model_wrong_type(c, n, name, v, "a number");
-    *out = v->u.number;
+    if (v && v->kind == PARSE_NUMBER)
+        *out = v->u.number;
     return SC_OK;
 }
 
@@ -52,19 +50,16 @@ sc_status model_radius(const model_reader *r, const parse_node *n, const char *d
                        const char *radius, int radius_position, double *out, int *given)
 {
     /* Each argument looked up once (this runs for every sphere and three
-     * times for every cylinder); the diameter's type is checked first. */
+     * times for every cylinder). */
+    (void)r;
     const parse_value *d = model_arg(n, diameter, -1);
     const parse_value *rv = model_arg(n, radius, radius_position);
-    *given = rv != NULL;
-    if (d && d->kind != PARSE_NUMBER)
-        return model_wrong_type(r, n, diameter, d, "a number");
-    if (rv) {
-        if (rv->kind != PARSE_NUMBER)
-            return model_wrong_type(r, n, radius, rv, "a number");
-        *out = rv->u.number;
-    }
-    if (d) {
+    *given = 0;
+    if (d && d->kind == PARSE_NUMBER) {
         *out = d->u.number / 2;
+        *given = 1;
+    } else if (rv && rv->kind == PARSE_NUMBER) {
+        *out = rv->u.number;
         *given = 1;
     }
     return SC_OK;
@@ -163,38 +158,43 @@ sc_status model_keep_pending(arena *mem, sc_status st, int nomem, const sc_error
     return SC_OK;
 }
 
+int model_size_value(const parse_value *v, uint32_t dims, double *out)
+{
+    if (v->kind == PARSE_NUMBER) {
+        for (uint32_t i = 0; i < dims; i++)
+            out[i] = v->u.number;
+        return 1;
+    }
+    if (v->kind != PARSE_VECTOR || v->u.vector.count != dims)
+        return 0;
+    for (uint32_t i = 0; i < dims; i++)
+        if (v->u.vector.items[i].kind != PARSE_NUMBER)
+            return 0;
+    for (uint32_t i = 0; i < dims; i++)
+        out[i] = v->u.vector.items[i].u.number;
+    return 1;
+}
+
 sc_status model_read_square(const model_reader *c, const parse_node *n, double *sx,
                             double *sy, int *center)
 {
-    *sx = *sy = 1;
-    *center = 0;
+    double size[2] = {1, 1};
     const parse_value *v = model_arg(n, "size", 0);
-    if (v && v->kind == PARSE_NUMBER) {
-        *sx = *sy = v->u.number;
-    } else if (v && v->kind == PARSE_VECTOR && v->u.vector.count == 2 &&
-               v->u.vector.items[0].kind == PARSE_NUMBER &&
-               v->u.vector.items[1].kind == PARSE_NUMBER) {
-        *sx = v->u.vector.items[0].u.number;
-        *sy = v->u.vector.items[1].u.number;
-    } else if (v) {
-        return model_wrong_type(c, n, "size", v, "a number or [x, y]");
-    }
-    const parse_value *cv = model_arg(n, "center", 1);
-    if (cv && cv->kind != PARSE_BOOL)
-        return model_wrong_type(c, n, "center", cv, "true or false");
-    *center = cv ? cv->u.boolean : 0;
-    return SC_OK;
+    if (v)
+        model_size_value(v, 2, size); /* else 1: model_check_params warns */
+    *sx = size[0];
+    *sy = size[1];
+    *center = 0;
+    return model_bool(c, n, "center", 1, center);
 }
 
 sc_status model_bool(const model_reader *c, const parse_node *n, const char *name,
                      int position, int *out)
 {
+    (void)c;
     const parse_value *v = model_arg(n, name, position);
-    if (!v)
-        return SC_OK;
-    if (v->kind != PARSE_BOOL)
-        return model_wrong_type(c, n, name, v, "true or false");
-    *out = v->u.boolean;
+    if (v && v->kind == PARSE_BOOL)
+        *out = v->u.boolean;
     return SC_OK;
 }
 
@@ -204,18 +204,8 @@ sc_status model_cube(const model_reader *c, const parse_node *n, double size[3],
     size[0] = size[1] = size[2] = 1;
     *center = 0;
     const parse_value *v = model_arg(n, "size", 0);
-    if (v && v->kind == PARSE_NUMBER) {
-        size[0] = size[1] = size[2] = v->u.number;
-    } else if (v) {
-        int ok = v->kind == PARSE_VECTOR && v->u.vector.count == 3;
-        for (uint32_t i = 0; ok && i < 3; i++) {
-            ok = v->u.vector.items[i].kind == PARSE_NUMBER;
-            if (ok)
-                size[i] = v->u.vector.items[i].u.number;
-        }
-        if (!ok)
-            return model_wrong_type(c, n, "size", v, "a number or a vector of 3 numbers");
-    }
+    if (v)
+        model_size_value(v, 3, size); /* else 1: model_check_params warns */
     return model_bool(c, n, "center", 1, center);
 }
 
@@ -314,14 +304,21 @@ static void echo_value(echo_text *t, const parse_value *v)
     }
 }
 
+size_t model_echo_into(char buf[MODEL_ECHO_MAX + 1], const parse_value *v)
+{
+    buf[0] = 0;
+    echo_text t = {buf, MODEL_ECHO_MAX + 1, 0, 0};
+    echo_value(&t, v);
+    return t.len;
+}
+
 const char *model_echo_value(arena *mem, const parse_value *v)
 {
-    char buf[MODEL_ECHO_MAX + 1] = "";
-    echo_text t = {buf, sizeof buf, 0, 0};
-    echo_value(&t, v);
-    char *copy = arena_alloc(mem, t.len + 1);
+    char buf[MODEL_ECHO_MAX + 1];
+    size_t len = model_echo_into(buf, v);
+    char *copy = arena_alloc(mem, len + 1);
     if (copy)
-        memcpy(copy, buf, t.len + 1);
+        memcpy(copy, buf, len + 1);
     return copy;
 }
 
@@ -558,22 +555,8 @@ sc_status model_read_surface(const model_reader *r, const parse_node *n,
 sc_status model_read_resolution(const model_reader *r, const parse_node *n, double *fn,
                                 double *fa, double *fs)
 {
-    static const char *const names[3] = {"$fn", "$fa", "$fs"};
-    double *outs[3] = {fn, fa, fs};
-    *fn = 0;
-    *fa = 12;
-    *fs = 2;
-    const parse_arg *a[3];
-    model_special_args(n, a);
-    for (int k = 0; k < 3; k++) {
-        if (parse_node_arg(n, names[k], -1)) { /* n's own: checked */
-            sc_status st = model_number(r, n, names[k], -1, outs[k]);
-            if (st != SC_OK)
-                return st;
-        } else if (a[k] && a[k]->value.kind == PARSE_NUMBER) { /* passed down */
-            *outs[k] = a[k]->value.u.number;
-        }
-    }
+    (void)r;
+    model_resolution_of(n, 0, fn, fa, fs);
     return SC_OK;
 }
 
@@ -581,7 +564,8 @@ sc_status model_read_circle(const model_reader *r, const parse_node *n, model_ci
 {
     out->r = 1;
     out->d = NAN;
-    out->has_d = model_arg(n, "d", -1) != NULL;
+    const parse_value *d = model_arg(n, "d", -1);
+    out->has_d = d && d->kind == PARSE_NUMBER;
     sc_status st;
     if ((st = model_number(r, n, "r", 0, &out->r)) != SC_OK ||
         (st = model_number(r, n, "d", -1, &out->d)) != SC_OK)

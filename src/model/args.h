@@ -1,9 +1,12 @@
 /* Readers of a syntax node's arguments, shared by the lowering pass and
  * the builders that still read their own node: each finds an argument by
- * name or position (the last one given wins, as in OpenSCAD), checks its
- * type and value, and reports an error at the value with the message the
- * corpus in tests/bad-input expects ("wrong type for argument 'size' of
- * 'cube' (expected ...)").
+ * name or position (the last one given wins, as in OpenSCAD). An argument
+ * of OpenSCAD's builtin modules of the wrong kind is read as OpenSCAD
+ * 2021.01 reads it, as the parameter's default, without an error (the
+ * warnings OpenSCAD gives of some are model_check_params'); spancast's
+ * own nodes report an error at the value with the message the corpus in
+ * tests/bad-input expects ("wrong type for argument 'r1' of 'torus'
+ * (expected ...)", model_wrong_type).
  */
 #ifndef SPANCAST_MODEL_ARGS_H
 #define SPANCAST_MODEL_ARGS_H
@@ -41,15 +44,17 @@ sc_location model_loc(const model_reader *r, const parse_value *v);
 /* The error for argument param of n having the wrong type. */
 sc_status model_wrong_type(const model_reader *r, const parse_node *n, const char *param,
                            const parse_value *v, const char *expected);
-/* A number argument into *out (left alone when absent). */
+/* A number argument into *out (left alone when absent or not a number, as
+ * OpenSCAD takes it). Never fails. */
 sc_status model_number(const model_reader *r, const parse_node *n, const char *name,
                        int position, double *out);
 /* OpenSCAD's radius lookup: the diameter (named only) wins over the
- * radius, halved; *given says either was given; *out is left alone when
- * neither is. */
+ * radius, halved; one that is not a number is not given; *given says
+ * either was given; *out is left alone when neither is. Never fails. */
 sc_status model_radius(const model_reader *r, const parse_node *n, const char *diameter,
                        const char *radius, int radius_position, double *out, int *given);
-/* A true/false argument into *out (left alone when absent). */
+/* A true/false argument into *out (left alone when absent or not true or
+ * false: OpenSCAD's center is true only when it is true). Never fails. */
 sc_status model_bool(const model_reader *r, const parse_node *n, const char *name,
                      int position, int *out);
 /* sphere(r = 1 | d, $fn, $fa, $fs)'s arguments ($fn, $fa, $fs as
@@ -102,14 +107,22 @@ sc_status model_read_polyhedron(const model_reader *r, arena *mem, const parse_n
  * vectors "[a, b]"), cut to MODEL_ECHO_MAX bytes ending in "...";
  * allocated from mem, NULL when memory runs out. */
 const char *model_echo_value(arena *mem, const parse_value *v);
+/* The same text in buf; returns its length. */
+size_t model_echo_into(char buf[MODEL_ECHO_MAX + 1], const parse_value *v);
 /* A point index v of a polygon's path or a polyhedron's face, as OpenSCAD
  * 2021.01 converts it (Value::toDouble, then an unsigned integer): a number
  * truncated toward zero, anything else 0. */
 double model_index_value(const parse_value *v);
-/* cube(size = s | [x, y, z], center = false)'s arguments. */
+/* Whether v is a size of dims numbers as OpenSCAD 2021.01 takes it: a
+ * number (each of them) or a vector of exactly dims numbers, then in out;
+ * else out is left alone. */
+int model_size_value(const parse_value *v, uint32_t dims, double *out);
+/* cube(size = s | [x, y, z], center = false)'s arguments, as OpenSCAD
+ * 2021.01 reads them: a size of another kind is 1 (model_check_params
+ * warns of it), a center that is not true or false false. */
 sc_status model_cube(const model_reader *r, const parse_node *n, double size[3],
                      int *center);
-/* square(size = s | [x, y], center = false)'s arguments. */
+/* square(size = s | [x, y], center = false)'s arguments, read as cube's. */
 sc_status model_read_square(const model_reader *r, const parse_node *n, double *sx,
                             double *sy, int *center);
 /* Whether import(file) names a drawing: a string ending in .dxf or .svg
@@ -125,9 +138,10 @@ sc_status model_read_import(const model_reader *r, const parse_node *n,
 /* surface(file, center = false, invert = false) into *out. */
 sc_status model_read_surface(const model_reader *r, const parse_node *n,
                              model_surface *out);
-/* $fn, $fa, $fs of a 2D shape or an extrusion, each a number where the
- * node gives it, else an ancestor's number as OpenSCAD passes it down
- * (model_special_args), else OpenSCAD's defaults 0, 12, 2. */
+/* $fn, $fa, $fs of a 2D shape or an extrusion, each the node's where it
+ * gives it, else an ancestor's as OpenSCAD passes it down
+ * (model_special_args), 0 where that is not a number; else OpenSCAD's
+ * defaults 0, 12, 2 (model_resolution_of, unclamped). Never fails. */
 sc_status model_read_resolution(const model_reader *r, const parse_node *n, double *fn,
                                 double *fa, double *fs);
 /* circle(r = 1 | d, $fn, $fa, $fs)'s arguments, in that order (model.h). */

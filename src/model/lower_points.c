@@ -39,14 +39,34 @@ static sc_status lower_polyhedron(model_lowerer *l, const parse_node *n, model_n
     return st;
 }
 
-/* A vector of up to 3 numbers (newsize) or flags (auto: true/false or
- * numbers, as OpenSCAD writes them). */
+/* v as OpenSCAD 2021.01's Value::toBool takes it: true, a number other
+ * than 0, a string or a vector that is not empty. */
+static int truth(const parse_value *v)
+{
+    switch (v->kind) {
+    case PARSE_BOOL:
+        return v->u.boolean;
+    case PARSE_NUMBER:
+        return v->u.number != 0;
+    case PARSE_STRING:
+        return v->u.string.length != 0;
+    case PARSE_VECTOR:
+        return v->u.vector.count != 0;
+    default:
+        return 0;
+    }
+}
+
+/* A vector of up to 3 numbers (newsize) or flags (auto), as OpenSCAD
+ * 2021.01 reads them without a word: newsize's entries that are not
+ * numbers are 0, as is all of it when it is not a vector; auto is all
+ * true or false when it is true or false, else each entry's truth
+ * (truth), and all false when it is not a vector either. A number that is
+ * not finite is an error. */
 static sc_status read_triple(model_lowerer *l, const parse_node *n, const char *name,
                              int position, int flags, double out[3])
 {
     const parse_value *v = model_arg(n, name, position);
-    static const char numbers[] = "a vector of numbers";
-    static const char bools[] = "true, false or a vector of them";
     if (!v)
         return SC_OK;
     if (flags && v->kind == PARSE_BOOL) {
@@ -54,15 +74,15 @@ static sc_status read_triple(model_lowerer *l, const parse_node *n, const char *
         return SC_OK;
     }
     if (v->kind != PARSE_VECTOR)
-        return model_wrong_type(&l->r, n, name, v, flags ? bools : numbers);
+        return SC_OK;
     for (uint32_t i = 0; i < v->u.vector.count && i < 3; i++) {
         const parse_value *item = &v->u.vector.items[i];
-        if (flags && item->kind == PARSE_BOOL)
-            out[i] = item->u.boolean;
-        else if (item->kind == PARSE_NUMBER && isfinite(item->u.number))
-            out[i] = flags ? item->u.number != 0 : item->u.number;
-        else
-            return model_wrong_type(&l->r, n, name, item, flags ? bools : numbers);
+        if (!flags && item->kind == PARSE_NUMBER && !isfinite(item->u.number))
+            return model_wrong_type(&l->r, n, name, item, "a vector of finite numbers");
+        if (flags)
+            out[i] = truth(item);
+        else if (item->kind == PARSE_NUMBER)
+            out[i] = item->u.number;
     }
     return SC_OK;
 }

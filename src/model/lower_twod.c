@@ -5,7 +5,9 @@
  * offset after its children, a square before them).
  *
  * The checks, their order and their messages are the ones the 2D readers
- * have always made: model/args.c's readers, then per kind
+ * have always made: model/args.c's readers (an argument of OpenSCAD's of
+ * the wrong kind is its default, as OpenSCAD 2021.01 reads it, with no
+ * error: model_check_params gives OpenSCAD's warnings), then per kind
  *   polygon   points as OpenSCAD 2021.01 reads them (lower_polygon: a
  *             bad one empties it, for the builder to warn of); each path
  *             entry one of the points (model_index_value), in path
@@ -19,13 +21,14 @@
  *   linear_extrude, rotate_extrude with file: the arguments above, then
  *             file, $fn, $fa, $fs, layer, origin; the drawing becomes the
  *             node's only child (extrude_file)
- *   projection  cut (true or false, by name or first), convexity a number
+ *   projection  cut (true only when true, by name or first)
  *   resize    as in the points context (lower_points.c)
  *   cube, sphere, cylinder, polyhedron
  *             as in the points context, for their size only (lower_solid):
  *             an argument error leaves the node unsized, not pending
  *   text      text, size, font, direction, language, script, halign,
- *             valign, spacing, $fn, $fa, $fs; at most
+ *             valign, spacing, $fn, $fa, $fs (each of another kind its
+ *             default); at most
  *             MODEL_MAX_TEXT_BYTES bytes without a NUL; size and spacing
  *             finite
  */
@@ -167,8 +170,10 @@ static sc_status lower_polygon(model_lowerer *l, const parse_node *n, model_node
 static sc_status number(model_lowerer *l, const parse_node *n, const char *name,
                         int position, double *out, int *given)
 {
-    if (given)
-        *given = model_arg(n, name, position) != NULL;
+    if (given) {
+        const parse_value *v = model_arg(n, name, position);
+        *given = v && v->kind == PARSE_NUMBER; /* else OpenSCAD passes over it */
+    }
     return model_number(&l->r, n, name, position, out);
 }
 
@@ -304,15 +309,15 @@ static sc_status extrude_file(model_lowerer *l, const parse_node *n,
     return SC_OK;
 }
 
+/* A string argument into *out, left alone (OpenSCAD's default) when it is
+ * absent or not a string, as OpenSCAD 2021.01 reads text()'s. */
 static sc_status string(model_lowerer *l, const parse_node *n, const char *name,
                         int position, const char **out)
 {
+    (void)l;
     const parse_value *v = model_arg(n, name, position);
-    if (!v)
-        return SC_OK;
-    if (v->kind != PARSE_STRING)
-        return model_wrong_type(&l->r, n, name, v, "a string");
-    *out = v->u.string.chars;
+    if (v && v->kind == PARSE_STRING)
+        *out = v->u.string.chars;
     return SC_OK;
 }
 
@@ -344,7 +349,7 @@ static sc_status lower_text(model_lowerer *l, const parse_node *n, model_node *o
         (st = model_read_resolution(&l->r, n, &res->fn, &res->fa, &res->fs)) != SC_OK)
         return st;
     const parse_value *tv = model_arg(n, "text", 0);
-    a->length = tv ? tv->u.string.length : 0;
+    a->length = tv && tv->kind == PARSE_STRING ? tv->u.string.length : 0;
     if (a->length > MODEL_MAX_TEXT_BYTES) {
         sc_location loc = model_loc(&l->r, tv);
         return err_set(l->r.error, SC_ERR_LIMIT, &loc,
@@ -386,17 +391,13 @@ static sc_status faithful_extrude_args(model_lowerer *l, const parse_node *n,
         (st = model_read_resolution(&l->r, n, &res->fn, &res->fa, &res->fs)) != SC_OK ||
         (st = model_bool(&l->r, n, "center", 1, &e->center)) != SC_OK)
         return st;
+    /* a scale of another kind is [1, 1], without a word (OpenSCAD 2021.01) */
     const parse_value *sv = model_arg(n, "scale", -1);
-    if (sv && sv->kind == PARSE_NUMBER) {
-        e->sx = e->sy = sv->u.number;
-    } else if (sv && sv->kind == PARSE_VECTOR && sv->u.vector.count == 2 &&
-               sv->u.vector.items[0].kind == PARSE_NUMBER &&
-               sv->u.vector.items[1].kind == PARSE_NUMBER) {
-        e->sx = sv->u.vector.items[0].u.number;
-        e->sy = sv->u.vector.items[1].u.number;
-    } else if (sv) {
-        return model_wrong_type(&l->r, n, "scale", sv, "a number or [x, y]");
-    }
+    double scale[2] = {1, 1};
+    if (sv)
+        model_size_value(sv, 2, scale);
+    e->sx = scale[0];
+    e->sy = scale[1];
     if (!isfinite(e->sx) || !isfinite(e->sy)) {
         sc_location loc = model_loc(&l->r, sv);
         return err_set(l->r.error, SC_ERR_SEMANTIC, &loc,
@@ -421,19 +422,19 @@ static sc_status faithful_extrude_args(model_lowerer *l, const parse_node *n,
     return SC_OK;
 }
 
-/* Twist absent or 0, scale absent, 1 or [1, 1], whatever else is wrong. */
+/* Twist absent or 0, scale absent, 1 or [1, 1] (as OpenSCAD reads them),
+ * whatever else is wrong. */
 static int plain_extrude(const parse_node *n)
 {
+    /* a twist or scale that is not one is the default (0, [1, 1]) */
     const parse_value *twist = model_arg(n, "twist", -1);
-    if (twist && !(twist->kind == PARSE_NUMBER && twist->u.number == 0))
+    if (twist && twist->kind == PARSE_NUMBER && twist->u.number != 0)
         return 0;
     const parse_value *sv = model_arg(n, "scale", -1);
-    return !sv || (sv->kind == PARSE_NUMBER && sv->u.number == 1) ||
-           (sv->kind == PARSE_VECTOR && sv->u.vector.count == 2 &&
-            sv->u.vector.items[0].kind == PARSE_NUMBER &&
-            sv->u.vector.items[0].u.number == 1 &&
-            sv->u.vector.items[1].kind == PARSE_NUMBER &&
-            sv->u.vector.items[1].u.number == 1);
+    double scale[2] = {1, 1};
+    if (sv)
+        model_size_value(sv, 2, scale);
+    return scale[0] == 1 && scale[1] == 1;
 }
 
 static sc_status lower_linear_extrude(model_lowerer *l, const parse_node *n,
@@ -476,9 +477,6 @@ static sc_status lower_rotate_extrude(model_lowerer *l, const parse_node *n,
     if ((st = model_number(&l->r, n, "angle", -1, &e->angle)) != SC_OK ||
         (st = model_read_resolution(&l->r, n, &res->fn, &res->fa, &res->fs)) != SC_OK)
         return st;
-    const parse_value *cv = model_arg(n, "convexity", -1);
-    if (cv && cv->kind != PARSE_NUMBER)
-        return model_wrong_type(&l->r, n, "convexity", cv, "a number");
     const parse_value *file = model_arg(n, "file", -1);
     if (!file)
         return SC_OK;
@@ -490,15 +488,12 @@ static sc_status lower_rotate_extrude(model_lowerer *l, const parse_node *n,
 }
 
 /* projection(cut = false, convexity): OpenSCAD takes cut by name or
- * first; convexity is a number when given (spancast has no use for it). */
+ * first, true only when it is true; convexity, of any kind, is of no use
+ * to spancast. */
 static sc_status lower_projection(model_lowerer *l, const parse_node *n, model_node *out)
 {
     out->u.projection.cut = 0;
-    sc_status st = model_bool(&l->r, n, "cut", 0, &out->u.projection.cut);
-    const parse_value *cv = model_arg(n, "convexity", -1);
-    if (st == SC_OK && cv && cv->kind != PARSE_NUMBER)
-        return model_wrong_type(&l->r, n, "convexity", cv, "a number");
-    return st;
+    return model_bool(&l->r, n, "cut", 0, &out->u.projection.cut);
 }
 
 /* multmatrix(m) below an extrusion: the builders take its xy part. */

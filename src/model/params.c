@@ -11,6 +11,7 @@
 
 #include "base/error.h"
 #include "base/grow.h"
+#include "model/args.h"
 #include "model/colors.h"
 
 /* timestamp is not a parameter, but OpenSCAD's export writes it for the
@@ -18,16 +19,17 @@
  * export back, which would make every exported model with an import warn
  * of a word the user never wrote. spancast takes it silently. */
 static const model_params table[] = {
-    {"cube", {"size", "center"}, {NULL}, 1, 0, 0},
-    {"sphere", {"r"}, {"d"}, 1, 1, 0},
-    {"cylinder", {"h", "r1", "r2", "center"}, {"r", "d", "d1", "d2"}, 1, 3, 0},
-    {"polyhedron", {"points", "faces", "convexity"}, {"triangles"}, 1, 0, 0},
-    {"square", {"size", "center"}, {NULL}, 1, 0, 0},
-    {"circle", {"r"}, {"d"}, 1, 1, 0},
-    {"polygon", {"points", "paths", "convexity"}, {NULL}, 1, 0, 0},
+    {"cube", {"size", "center"}, {NULL}, 1, 0, 0, 3},
+    {"sphere", {"r"}, {"d"}, 1, 1, 0, 0},
+    {"cylinder", {"h", "r1", "r2", "center"}, {"r", "d", "d1", "d2"}, 1, 3, 0, 0},
+    {"polyhedron", {"points", "faces", "convexity"}, {"triangles"}, 1, 0, 0, 0},
+    {"square", {"size", "center"}, {NULL}, 1, 0, 0, 2},
+    {"circle", {"r"}, {"d"}, 1, 1, 0, 0},
+    {"polygon", {"points", "paths", "convexity"}, {NULL}, 1, 0, 0, 0},
     {"text",
      {"text", "size", "font"},
      {"direction", "language", "script", "halign", "valign", "spacing"},
+     0,
      0,
      0,
      0},
@@ -36,28 +38,31 @@ static const model_params table[] = {
      {"convexity", "timestamp"},
      0,
      0,
+     0,
      0},
     {"rotate_extrude",
      {"file", "layer", "origin", "scale"},
      {"convexity", "angle", "timestamp"},
      0,
      0,
+     0,
      0},
-    {"projection", {"cut"}, {"convexity"}, 0, 0, 0},
-    {"offset", {"r"}, {"delta", "chamfer"}, 0, 0, 0},
-    {"resize", {"newsize", "auto", "convexity"}, {NULL}, 0, 0, 0},
-    {"hull", {NULL}, {NULL}, 0, 0, 0},
-    {"minkowski", {"convexity"}, {NULL}, 0, 0, 0},
-    {"render", {"convexity"}, {NULL}, 0, 0, 0},
-    {"multmatrix", {"m"}, {NULL}, 0, 0, 0},
+    {"projection", {"cut"}, {"convexity"}, 0, 0, 0, 0},
+    {"offset", {"r"}, {"delta", "chamfer"}, 0, 0, 0, 0},
+    {"resize", {"newsize", "auto", "convexity"}, {NULL}, 0, 0, 0, 0},
+    {"hull", {NULL}, {NULL}, 0, 0, 0, 0},
+    {"minkowski", {"convexity"}, {NULL}, 0, 0, 0, 0},
+    {"render", {"convexity"}, {NULL}, 0, 0, 0, 0},
+    {"multmatrix", {"m"}, {NULL}, 0, 0, 0, 0},
     {"import",
      {"file", "layer", "convexity", "origin", "scale"},
      {"width", "height", "filename", "center", "dpi", "timestamp"},
      0,
      0,
+     0,
      0},
-    {"surface", {"file", "center", "convexity"}, {"invert", "timestamp"}, 0, 0, 0},
-    {"color", {"c", "alpha"}, {NULL}, 0, 0, 1},
+    {"surface", {"file", "center", "convexity"}, {"invert", "timestamp"}, 0, 0, 0, 0},
+    {"color", {"c", "alpha"}, {NULL}, 0, 0, 1, 0},
 };
 
 const model_params *model_params_of(const char *name)
@@ -122,8 +127,11 @@ void model_resolution_of(const parse_node *n, int clamp, double *fn, double *fa,
     double *outs[3] = {fn, fa, fs};
     const double defaults[3] = {0, 12, 2};
     for (int k = 0; k < 3; k++) {
-        *outs[k] =
-            a[k] && a[k]->value.kind == PARSE_NUMBER ? a[k]->value.u.number : defaults[k];
+        /* OpenSCAD takes a value that is not a number (undef included) as
+         * 0, which a primitive then clamps */
+        *outs[k] = !a[k]                              ? defaults[k]
+                   : a[k]->value.kind == PARSE_NUMBER ? a[k]->value.u.number
+                                                      : 0;
         if (clamp && k > 0 && *outs[k] < MODEL_F_MINIMUM)
             *outs[k] = MODEL_F_MINIMUM;
     }
@@ -244,6 +252,24 @@ typedef struct scanned {
     int radius;                  /* r is given by name */
 } scanned;
 
+/* The warning of a size that is neither a number nor a vector of
+ * p->size numbers (model_params.size). */
+static sc_status check_size(const char *file, const parse_node *n, const model_params *p,
+                            model_notes *notes, sc_error *error)
+{
+    const parse_value *v = model_arg(n, "size", 0);
+    double unused[3];
+    if (!v || model_size_value(v, p->size, unused))
+        return SC_OK;
+    char text[MODEL_ECHO_MAX + 1];
+    model_echo_into(text, v);
+    sc_location at = {file, v->line, v->column};
+    return note_at(notes, error, file, at_node_line(n, at),
+                   "Unable to convert %s(size=%s, ...) parameter to a number or a vec%d "
+                   "of numbers",
+                   n->name, text, (int)p->size);
+}
+
 /* The warnings of a primitive's instantiation after its arguments'. The
  * radii are looked up only where a diameter or r is given, which
  * OpenSCAD's export never writes with another radius. */
@@ -255,10 +281,12 @@ static sc_status check_primitive(const char *file, const parse_node *n,
     sc_status st = SC_OK;
     for (int k = 2; k >= 1 && st == SC_OK; k--) {
         const parse_arg *s = a->special[k];
-        if (s && s->value.kind == PARSE_NUMBER && s->value.u.number < MODEL_F_MINIMUM)
+        if (s && (s->value.kind != PARSE_NUMBER || s->value.u.number < MODEL_F_MINIMUM))
             st = note_at(notes, error, file, n->loc, "%s too small - clamping to %f",
                          k == 2 ? "$fs" : "$fa", MODEL_F_MINIMUM);
     }
+    if (st == SC_OK && p->size)
+        st = check_size(file, n, p, notes, error);
     if (!p->radii || (!a->diameter && !(a->radius && p->radii == 3)))
         return st;
     int r = 0, r1 = 0, r2 = 0;

@@ -48,6 +48,10 @@ typedef struct model_params {
      * at the component, and "Unable to parse color "x"" at a name it does
      * not know */
     unsigned char color;
+    /* cube (3) and square (2): "Unable to convert cube(size=[1, 2], ...)
+     * parameter to a number or a vec3 of numbers" (vec2 for square) for a
+     * size that is neither (model_size_value; undef is no size), at it */
+    unsigned char size;
 } model_params;
 
 /* The parameters of OpenSCAD's builtin module name; NULL for a node that
@@ -70,8 +74,9 @@ const model_params *model_params_of(const char *name);
 void model_special_args(const parse_node *n, const parse_arg *out[3]);
 
 /* n's $fn, $fa and $fs (model_special_args; an argument that is not a
- * number gives the default), $fa and $fs clamped to MODEL_F_MINIMUM when
- * clamp is set (OpenSCAD's primitives). */
+ * number, undef included, is 0 as OpenSCAD takes it, none the default),
+ * $fa and $fs clamped to MODEL_F_MINIMUM when clamp is set (OpenSCAD's
+ * primitives). */
 void model_resolution_of(const parse_node *n, int clamp, double *fn, double *fa,
                          double *fs);
 
@@ -101,7 +106,10 @@ typedef struct model_params_memo {
  * $fa; at the node), "Ignoring radius variable 'r' as diameter 'd' is
  * defined too." (at r, for each pair a sphere, circle or cylinder looks
  * up, when both are numbers) and, for a cylinder given r and r1 or r2
- * (by radius or diameter), "Cylinder parameters ambiguous" (at the node).
+ * (by radius or diameter), "Cylinder parameters ambiguous" (at the node);
+ * the size warning of cube and square (model_params.size). A $fs or $fa
+ * that is not a number (undef too) is 0 to OpenSCAD, so it is clamped
+ * with the warning as well.
  * Fails only when memory runs out (SC_ERR_NOMEM in error). */
 sc_status model_check_params(const char *file, const parse_node *n, const model_params *p,
                              model_params_memo *memo, model_notes *notes,
