@@ -1390,6 +1390,40 @@ for mode in "" --faithful; do
     }
 done
 
+# The same for what names a file and where a drawing goes (import,
+# surface, the extrusions' origin): a file name or layer that is not a
+# string is its text, center and invert true only when true, and an
+# origin that is not [x, y] (with it, linear_extrude's scale) is warned
+# of as OpenSCAD warns; args_part.stl is the tetrahedron above.
+printf '1 2 3\n2 3 1\n0 1 2\n' >types.dat
+cat >types_import.csg <<'M'
+union() {
+	import(file = "args_part.stl", origin = "a", convexity = [1]);
+	multmatrix([[1, 0, 0, 5], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]) linear_extrude(height = 2, origin = [0, 0], scale = [1, "a"]) square(size = 1);
+	multmatrix([[1, 0, 0, 10], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]) linear_extrude(height = 2, origin = [0, 0]) square(size = 1);
+	multmatrix([[1, 0, 0, -8], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]) surface(file = "types.dat", center = "a", invert = 1, convexity = "c");
+	multmatrix([[1, 0, 0, 0], [0, 1, 0, 6], [0, 0, 1, 0], [0, 0, 0, 1]]) linear_extrude(file = 5, height = 1) square(size = 2);
+}
+M
+check
+openscad -o "$PWD/types_import_os.csg" types_import.csg 2>os_types.err ||
+    fail "openscad -o types_import_os.csg types_import.csg: exit $?"
+sed -n 's/^WARNING: \(.*\) in file types_import\.csg, line \([0-9]*\)$/\2: \1/p' os_types.err >os_types.txt
+[ "$(wc -l <os_types.txt)" = 3 ] || fail "openscad's warnings: $(cat os_types.err)"
+for mode in "" --faithful; do
+    # shellcheck disable=SC2086
+    {
+        check
+        "$bin" render types_import.csg -o out.png --imgsize=64,48 -q $mode 2>err.txt ||
+            fail "types_import.csg $mode: exit $?: $(cat err.txt)"
+        sed -n 's/^types_import\.csg:\([0-9]*\):[0-9]*: warning: \(.*\)$/\1: \2/p' err.txt >sc_types.txt
+        cmp -s os_types.txt sc_types.txt ||
+            fail "types_import.csg $mode: spancast warns '$(cat err.txt)', openscad '$(cat os_types.txt)'"
+        [ "$(wc -l <err.txt)" = 3 ] || fail "types_import.csg $mode: other messages: $(cat err.txt)"
+        same types_import.csg types_import_os.csg $mode
+    }
+done
+
 # ---- a lossy mask ----
 warns cube_ref.csg "spancast: warning: --mask=m.jpg: JPEG is lossy, so the mask is no longer exactly 0 and 255 at the model's edges (.png, .tif and .exr are exact)" --mask=m.jpg
 check

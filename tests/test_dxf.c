@@ -497,13 +497,24 @@ static void test_import(void **state)
     assert_string_equal(message, "m.csg:1:20: Ignoring 3D child object for 2D operation");
     assert_int_equal(r.contour_count, 0);
     twod_free(&r);
+    /* a layer that is not a string is its text, as OpenSCAD 2021.01 takes
+     * it: layer = 3 is layer "3" */
+    twod_region named;
+    char named_message[1024];
     assert_int_equal(
         import_region(
             "linear_extrude(height = 1) { import(file = \"d.dxf\", layer = 3); }", &r,
             message, sizeof message),
-        SC_ERR_SEMANTIC);
-    assert_string_equal(message, "m.csg:1:61: error: wrong type for argument 'layer' of "
-                                 "'import' (expected a layer name)");
+        SC_OK);
+    assert_int_equal(
+        import_region(
+            "linear_extrude(height = 1) { import(file = \"d.dxf\", layer = \"3\"); }",
+            &named, named_message, sizeof named_message),
+        SC_OK);
+    assert_string_equal(message, named_message);
+    assert_int_equal(r.contour_count, named.contour_count);
+    assert_true(twod_area(&r) == twod_area(&named));
+    twod_free(&named);
     twod_free(&r);
 }
 

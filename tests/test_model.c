@@ -848,6 +848,24 @@ static void test_wrong_types(void **state)
                 "1:1: $fa too small - clamping to 0.010000\n"
                 "1:46: $fs too small - clamping to 0.010000\n"
                 "2:25: $fa too small - clamping to 0.010000\n");
+    /* an origin that is not [x, y] of numbers (naming linear_extrude for
+     * import, as OpenSCAD does); linear_extrude's scale, which OpenSCAD
+     * checks only where an origin is given (openscad -o x.csg prints these
+     * for the same text) */
+    check_notes(
+        "import(file = \"a.stl\", origin = \"a\"); import(\"b.dxf\", origin = [1, "
+        "2]);\nimport(\"c.svg\", origin = [1, [2]]); import(\"d.dxf\", origin = "
+        "undef);\nrotate_extrude(file = \"e.dxf\", origin = 3); linear_extrude("
+        "origin = 3) square(1);",
+        "1:33: linear_extrude(..., origin=\"a\") could not be converted\n"
+        "2:26: linear_extrude(..., origin=[1, [2]]) could not be converted\n"
+        "3:41: rotate_extrude(..., origin=3) could not be converted\n"
+        "3:69: linear_extrude(..., origin=3) could not be converted\n"
+        "3:45: linear_extrude(..., scale=undef) could not be converted\n");
+    check_notes("linear_extrude(origin = [0, 0], scale = 2) square(1);\n"
+                "linear_extrude(origin = [0, 0], scale = [1, \"a\"]) square(1);\n"
+                "linear_extrude(1, scale = \"a\") square(1);",
+                "2:41: linear_extrude(..., scale=[1, \"a\"]) could not be converted\n");
     /* radii and heights of another kind: the defaults, the other radius
      * where one is a number, no "ambiguous" with one that is not */
     check_notes("sphere(r = \"a\"); sphere(r = 2, d = [4]); cylinder(h = 1, r = 5, r1 = "

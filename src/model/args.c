@@ -512,17 +512,22 @@ int model_import_is_drawing(const parse_node *n)
     return model_has_suffix(name, ".dxf") || model_has_suffix(name, ".svg");
 }
 
-sc_status model_read_import(const model_reader *r, const parse_node *n, model_import *out)
+const char *model_string_value(arena *mem, const parse_value *v)
+{
+    return v->kind == PARSE_STRING ? v->u.string.chars : model_echo_value(mem, v);
+}
+
+sc_status model_read_import(const model_reader *r, arena *mem, const parse_node *n,
+                            model_import *out)
 {
     out->drawing = NULL; /* a mesh, also when the arguments are bad */
     const parse_arg *a = parse_node_arg(n, "file", 0);
-    if (!a || a->value.kind != PARSE_STRING) {
-        if (a && a->value.kind != PARSE_UNDEF)
-            return model_wrong_type(r, n, "file", &a->value, "a file name");
+    if (!a || a->value.kind == PARSE_UNDEF)
         return err_set(r->error, SC_ERR_SEMANTIC, &n->loc,
                        "missing argument 'file' of 'import'");
-    }
-    const char *name = a->value.u.string.chars;
+    const char *name = model_string_value(mem, &a->value);
+    if (!name)
+        return err_nomem(r->error, NULL);
     sc_location loc = model_loc(r, &a->value);
     out->file = name;
     out->file_loc = loc;
@@ -530,24 +535,19 @@ sc_status model_read_import(const model_reader *r, const parse_node *n, model_im
     return SC_OK;
 }
 
-sc_status model_read_surface(const model_reader *r, const parse_node *n,
+sc_status model_read_surface(const model_reader *r, arena *mem, const parse_node *n,
                              model_surface *out)
 {
     const parse_value *file = model_arg(n, "file", 0);
     if (!file)
         return err_set(r->error, SC_ERR_SEMANTIC, &n->loc,
                        "missing argument 'file' of 'surface'");
-    if (file->kind != PARSE_STRING)
-        return model_wrong_type(r, n, "file", file, "a file name");
-    const parse_value *v = model_arg(n, "center", 1);
-    if (v && v->kind != PARSE_BOOL)
-        return model_wrong_type(r, n, "center", v, "true or false");
-    out->center = v ? v->u.boolean : 0;
-    v = model_arg(n, "invert", -1);
-    if (v && v->kind != PARSE_BOOL)
-        return model_wrong_type(r, n, "invert", v, "true or false");
-    out->invert = v ? v->u.boolean : 0;
-    out->file = file->u.string.chars;
+    out->center = out->invert = 0;
+    model_bool(r, n, "center", 1, &out->center);
+    model_bool(r, n, "invert", -1, &out->invert);
+    out->file = model_string_value(mem, file);
+    if (!out->file)
+        return err_nomem(r->error, NULL);
     out->file_loc = model_loc(r, file);
     return SC_OK;
 }

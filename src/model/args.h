@@ -130,13 +130,20 @@ sc_status model_read_square(const model_reader *r, const parse_node *n, double *
 int model_import_is_drawing(const parse_node *n);
 /* The mesh format a file name's extension (any case) makes. */
 model_mesh_format model_mesh_format_of(const char *name);
-/* import(file = "x.stl" | "x.off" | "x.amf" | "x.3mf") of a mesh into *out;
- * any other extension is MODEL_MESH_UNSUPPORTED, for the builder to warn
- * of as OpenSCAD does. */
-sc_status model_read_import(const model_reader *r, const parse_node *n,
+/* A file name or layer v as OpenSCAD 2021.01 takes it (Value::toString):
+ * a string's characters, any other value as model_echo_value writes it
+ * ("5", "[1, \"a\"]"), allocated from mem (NULL when memory runs out). */
+const char *model_string_value(arena *mem, const parse_value *v);
+/* import(file = "x.stl" | "x.off" | "x.amf" | "x.3mf") of a mesh into *out
+ * (a file that is not a string as model_string_value names it, allocated
+ * from mem); any other extension is MODEL_MESH_UNSUPPORTED, for the
+ * builder to warn of as OpenSCAD does. */
+sc_status model_read_import(const model_reader *r, arena *mem, const parse_node *n,
                             model_import *out);
-/* surface(file, center = false, invert = false) into *out. */
-sc_status model_read_surface(const model_reader *r, const parse_node *n,
+/* surface(file, center = false, invert = false) into *out, as OpenSCAD
+ * 2021.01 reads them: the file as model_string_value names it (from mem),
+ * center and invert true only when they are true. */
+sc_status model_read_surface(const model_reader *r, arena *mem, const parse_node *n,
                              model_surface *out);
 /* $fn, $fa, $fs of a 2D shape or an extrusion, each the node's where it
  * gives it, else an ancestor's as OpenSCAD passes it down

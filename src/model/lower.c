@@ -126,7 +126,7 @@ static sc_status lower_import(lowerer *l, const parse_node *n, model_node *out)
     if (!import)
         return err_nomem(l->r.error, NULL);
     out->u.import = import;
-    return model_read_import(&l->r, n, import);
+    return model_read_import(&l->r, &l->m->mem, n, import);
 }
 
 /* surface(file, center, invert). */
@@ -136,7 +136,7 @@ static sc_status lower_surface(lowerer *l, const parse_node *n, model_node *out)
     if (!surface)
         return err_nomem(l->r.error, NULL);
     out->u.surface = surface;
-    return model_read_surface(&l->r, n, surface);
+    return model_read_surface(&l->r, &l->m->mem, n, surface);
 }
 
 /* ---- boolean nodes with arguments ---- */

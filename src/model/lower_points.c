@@ -122,14 +122,14 @@ static sc_status lower_leaf(model_lowerer *l, const parse_node *n, model_node *o
         if (!import)
             return SC_ERR_NOMEM;
         out->u.import = import;
-        return model_read_import(&l->r, n, import);
+        return model_read_import(&l->r, l->mem, n, import);
     }
     case MODEL_SURFACE: {
         model_surface *surface = model_lowerer_alloc(l, sizeof *surface);
         if (!surface)
             return SC_ERR_NOMEM;
         out->u.surface = surface;
-        return model_read_surface(&l->r, n, surface);
+        return model_read_surface(&l->r, l->mem, n, surface);
     }
     case MODEL_TORUS: {
         model_torus *t = model_lowerer_alloc(l, sizeof *t);

@@ -207,30 +207,30 @@ static sc_status drawing_options(model_lowerer *l, const parse_node *n, model_dr
     sc_status st = model_read_resolution(&l->r, n, &res->fn, &res->fa, &res->fs);
     if (st != SC_OK)
         return st;
+    /* as OpenSCAD 2021.01 reads them: a layer of another kind as its text,
+     * an origin that is not [x, y] of numbers [0, 0] (model_check_params
+     * warns of it) */
     const parse_value *layer = model_arg(n, "layer", -1);
-    if (layer && layer->kind != PARSE_STRING)
-        return model_wrong_type(&l->r, n, "layer", layer, "a layer name");
-    d->layer = layer ? layer->u.string.chars : NULL;
-    const parse_value *origin = model_arg(n, "origin", -1);
-    if (origin) {
-        if (origin->kind != PARSE_VECTOR || origin->u.vector.count != 2 ||
-            origin->u.vector.items[0].kind != PARSE_NUMBER ||
-            origin->u.vector.items[1].kind != PARSE_NUMBER)
-            return model_wrong_type(&l->r, n, "origin", origin, "[x, y]");
-        d->origin[0] = origin->u.vector.items[0].u.number;
-        d->origin[1] = origin->u.vector.items[1].u.number;
+    d->layer = layer ? model_string_value(l->mem, layer) : NULL;
+    if (layer && !d->layer) {
+        l->nomem = 1;
+        return SC_ERR_NOMEM;
     }
+    const parse_value *origin = model_arg(n, "origin", -1);
+    if (origin && origin->kind == PARSE_VECTOR)
+        model_size_value(origin, 2, d->origin);
     return SC_OK;
 }
 
-/* The file argument of n, a string, into d->file and d->file_loc; the
- * drawing's format from its suffix. */
-static sc_status drawing_file(model_lowerer *l, const parse_node *n,
-                              const parse_value *file, model_drawing *d)
+/* The file argument, as OpenSCAD 2021.01 takes it (model_string_value),
+ * into d->file and d->file_loc; the drawing's format from its suffix. */
+static sc_status drawing_file(model_lowerer *l, const parse_value *file, model_drawing *d)
 {
-    if (file->kind != PARSE_STRING)
-        return model_wrong_type(&l->r, n, "file", file, "a file name");
-    d->file = file->u.string.chars;
+    d->file = model_string_value(l->mem, file); /* as OpenSCAD takes it */
+    if (!d->file) {
+        l->nomem = 1;
+        return SC_ERR_NOMEM;
+    }
     d->file_loc = model_loc(&l->r, file);
     d->format = model_has_suffix(d->file, ".svg") ? MODEL_DRAWING_SVG : MODEL_DRAWING_DXF;
     return SC_OK;
@@ -248,7 +248,7 @@ static sc_status lower_drawing(model_lowerer *l, const parse_node *n, model_node
     if (!file)
         return err_set(l->r.error, SC_ERR_SEMANTIC, &n->loc,
                        "missing argument 'file' of 'import'");
-    sc_status st = drawing_file(l, n, file, d);
+    sc_status st = drawing_file(l, file, d);
     if (st != SC_OK)
         return st;
     if (!model_has_suffix(d->file, ".dxf") && !model_has_suffix(d->file, ".svg")) {
@@ -290,7 +290,7 @@ static sc_status extrude_file(model_lowerer *l, const parse_node *n,
         return SC_ERR_NOMEM;
     d->scale = 1;
     d->dpi = MODEL_SVG_DPI;
-    sc_status st = drawing_file(l, n, file, d);
+    sc_status st = drawing_file(l, file, d);
     if (st == SC_OK)
         st = drawing_options(l, n, d);
     if (st != SC_OK)
@@ -457,8 +457,10 @@ static sc_status lower_linear_extrude(model_lowerer *l, const parse_node *n,
         e->exact_error = exact;
     l->r.error = outer;
     sc_status st = faithful_extrude_args(l, n, e);
+    /* a file that is not a string is none to linear_extrude (OpenSCAD
+     * 2021.01 extrudes the children), unlike rotate_extrude's */
     const parse_value *file = model_arg(n, "file", -1);
-    if (st == SC_OK && file)
+    if (st == SC_OK && file && file->kind == PARSE_STRING)
         st = extrude_file(l, n, file, e->sx, out);
     return st;
 }

@@ -394,14 +394,65 @@ static sc_status check_color(const char *file, const parse_node *n, model_notes 
     return SC_OK;
 }
 
+/* "NAME(..., ARG=VALUE) could not be converted", at the argument a (the
+ * node when it is absent: VALUE is then undef). */
+static sc_status not_converted(const char *file, const parse_node *n, const char *name,
+                               const char *arg, const parse_arg *a, model_notes *notes,
+                               sc_error *error)
+{
+    static const parse_value undef = {.kind = PARSE_UNDEF};
+    char text[MODEL_ECHO_MAX + 1];
+    model_echo_into(text, a ? &a->value : &undef);
+    sc_location at = a ? (sc_location){file, a->value.line, a->value.column} : n->loc;
+    return note_at(notes, error, file, at_node_line(n, at),
+                   "%s(..., %s=%s) could not be converted", name, arg, text);
+}
+
+/* The origin of import and the extrusions, given (not undef): one that is
+ * not [x, y] of numbers is [0, 0], with OpenSCAD 2021.01's warning, which
+ * names linear_extrude for import too; then linear_extrude's warning of a
+ * scale that is neither a number nor [x, y] of numbers, which OpenSCAD
+ * gives whenever an origin is given (undef too: no scale). */
+static sc_status check_origin(const char *file, const parse_node *n, model_notes *notes,
+                              sc_error *error)
+{
+    int import = strcmp(n->name, "import") == 0;
+    int linear = !import && strcmp(n->name, "linear_extrude") == 0;
+    if (!import && !linear && strcmp(n->name, "rotate_extrude") != 0)
+        return SC_OK;
+    const parse_value *origin = model_arg(n, "origin", -1);
+    if (!origin)
+        return SC_OK;
+    double unused[2];
+    sc_status st = SC_OK;
+    if (!(origin->kind == PARSE_VECTOR && model_size_value(origin, 2, unused)))
+        st = not_converted(file, n, import ? "linear_extrude" : n->name, "origin",
+                           parse_node_arg(n, "origin", -1), notes, error);
+    const parse_value *scale = model_arg(n, "scale", -1);
+    if (st == SC_OK && linear && !(scale && model_size_value(scale, 2, unused)))
+        st = not_converted(file, n, n->name, "scale", parse_node_arg(n, "scale", -1),
+                           notes, error);
+    return st;
+}
+
+/* The warnings after those of the arguments' names. */
+static sc_status check_values(const char *file, const parse_node *n,
+                              const model_params *p, scanned *found, model_notes *notes,
+                              sc_error *error)
+{
+    if (p->primitive)
+        return check_primitive(file, n, p, found, notes, error);
+    if (p->color)
+        return check_color(file, n, notes, error);
+    return check_origin(file, n, notes, error);
+}
+
 sc_status model_check_params(const char *file, const parse_node *n, const model_params *p,
                              model_params_memo *memo, model_notes *notes, sc_error *error)
 {
     scanned found = {{NULL, NULL, NULL}, 0, 0};
     if (memo_matches(memo, p, n, &found))
-        return p->primitive ? check_primitive(file, n, p, &found, notes, error)
-               : p->color   ? check_color(file, n, notes, error)
-                            : SC_OK;
+        return check_values(file, n, p, &found, notes, error);
     seen_names seen = {n, NULL, 0};
     if (n->arg_count > FEW_ARGS) {
         seen.cap = 2 * FEW_ARGS;
@@ -447,10 +498,8 @@ sc_status model_check_params(const char *file, const parse_node *n, const model_
     free(seen.slots);
     if (st == SC_OK && notes->count == before)
         memo_keep(memo, p, n, &found);
-    if (st == SC_OK && p->primitive)
-        st = check_primitive(file, n, p, &found, notes, error);
-    if (st == SC_OK && p->color)
-        st = check_color(file, n, notes, error);
+    if (st == SC_OK)
+        st = check_values(file, n, p, &found, notes, error);
     return st;
 }
 

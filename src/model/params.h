@@ -107,7 +107,13 @@ typedef struct model_params_memo {
  * defined too." (at r, for each pair a sphere, circle or cylinder looks
  * up, when both are numbers) and, for a cylinder given r and r1 or r2
  * (by radius or diameter), "Cylinder parameters ambiguous" (at the node);
- * the size warning of cube and square (model_params.size). A $fs or $fa
+ * the size warning of cube and square (model_params.size); for import,
+ * linear_extrude and rotate_extrude, an origin that is not [x, y] of
+ * numbers: "linear_extrude(..., origin=\"a\") could not be converted"
+ * (OpenSCAD's text, linear_extrude for import too), at it, and for
+ * linear_extrude with an origin, a scale that is neither a number nor
+ * [x, y] of numbers, absent included ("linear_extrude(..., scale=undef)
+ * could not be converted"). A $fs or $fa
  * that is not a number (undef too) is 0 to OpenSCAD, so it is clamped
  * with the warning as well.
  * Fails only when memory runs out (SC_ERR_NOMEM in error). */
