@@ -10,9 +10,9 @@
  *                              lower_curved.c)
  *   polyhedron   as in the main model (model_read_polyhedron), every
  *                face kept whatever its size
- *   resize       newsize a vector of up to 3 finite numbers (a negative
- *                one kept), auto true, false or a vector of them (or
- *                numbers)
+ *   resize       as OpenSCAD 2021.01 reads it (read_triple): newsize's
+ *                entries numbers, finite (a negative one kept), others 0;
+ *                auto true, false or a vector read by truth
  *   linear_extrude, rotate_extrude, the 2D shapes (not import)
  *                as in the 2D context (lower_twod.c): a hull,
  *                minkowski or resize of 2D children is 2D
