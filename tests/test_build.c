@@ -786,8 +786,9 @@ static void test_root_modifier(void **state)
     sc_scene_release(s);
 
     /* The rest of the file is still checked. */
-    check_error("!cube(); frobnicate();", SC_ERR_SEMANTIC,
-                "m.csg:1:10: error: unknown node 'frobnicate'");
+    check_error("!cube(); torus(r1 = \"a\");", SC_ERR_SEMANTIC,
+                "m.csg:1:21: error: wrong type for argument 'r1' of 'torus' (expected a "
+                "number)");
 }
 
 /* ---- node names ---- */
@@ -810,9 +811,15 @@ static void test_unsupported(void **state)
                 "$fn = 0, $fa = 12, $fs = 2) {\n  roof() { square(); }\n}",
                 SC_ERR_UNSUPPORTED,
                 "m.csg:2:3: error: 'roof' inside linear_extrude is not supported yet");
-    check_error("group() { foo(); }", SC_ERR_SEMANTIC,
-                "m.csg:1:11: error: unknown node 'foo'");
-    check_error("Cube();", SC_ERR_SEMANTIC, "m.csg:1:1: error: unknown node 'Cube'");
+    /* A name OpenSCAD does not know is left out with OpenSCAD's warning
+     * (an error with --strict), and so are its children. */
+    sc_scene *s = load_warned("group() { foo() { sphere(2); } } cube(1);",
+                              "m.csg:1:11: Ignoring unknown module 'foo'");
+    assert_int_equal(only_leaf(s)->prim.kind, PRIM_BOX);
+    assert_int_equal(sc_scene_warning_count(s), 1);
+    sc_scene_release(s);
+    check_error_strict("Cube();", SC_ERR_SEMANTIC,
+                       "m.csg:1:1: error: Ignoring unknown module 'Cube'");
 }
 
 static void test_leaf_children(void **state)

@@ -341,12 +341,13 @@ model_kind model_kind_of(const char *name)
     return i == KIND_UNKNOWN ? MODEL_UNKNOWN : kinds[i].kind;
 }
 
-/* Whether the builder walks into the children of the node named name: the
- * root search does, except under leaves (under an unknown node too: the
- * error there comes later, in file order). */
+/* Whether the root search walks into the children of the node named
+ * name: it does, except under leaves and unknown nodes (OpenSCAD looks for
+ * '!' among the nodes it instantiated, and it instantiates neither's
+ * children). */
 static int root_search_enters_kind(size_t i)
 {
-    return i == KIND_UNKNOWN || !model_is_leaf(kinds[i].kind);
+    return i != KIND_UNKNOWN && !model_is_leaf(kinds[i].kind);
 }
 
 static int root_search_enters(const char *name)
@@ -412,6 +413,8 @@ static sc_status check_params(lowerer *l, const parse_node *n, int *instantiates
     *instantiates = instantiates_children(l->seen.index[slot]);
     const model_params *p = l->seen.params[slot];
     *primitive = p && p->primitive;
+    if (l->seen.index[slot] == KIND_UNKNOWN)
+        return model_note_unknown(l->r.file, n, &l->m->notes, error);
     return p ? model_check_params(l->r.file, n, p, &l->seen.memo[slot], &l->m->notes,
                                   error)
              : SC_OK;
@@ -456,7 +459,7 @@ static const parse_node *find_root(const parse_tree *syntax)
         return NULL;
     n = syntax->first;
     while (n) {
-        if (n->modifiers & PARSE_MOD_DISABLE) {
+        if ((n->modifiers & PARSE_MOD_DISABLE) || kind_index(n->name) == KIND_UNKNOWN) {
             n = parse_next_node(n, 1);
             continue;
         }
@@ -646,8 +649,9 @@ static sc_status walk(lowerer *l, const parse_node *first, const parse_node *end
             ctx = done.ctx;
             continue;
         }
-        if (n->modifiers & PARSE_MOD_DISABLE) {
-            n = n->next;
+        if ((n->modifiers & PARSE_MOD_DISABLE) ||
+            lowerer_kind(l, n->name) == KIND_UNKNOWN) {
+            n = n->next; /* OpenSCAD leaves both out, and an unknown node with a note */
             continue;
         }
         model_node *node;
@@ -796,13 +800,13 @@ static sc_status stream_open(void *user, parse_node *n, int *keep, sc_error *err
     stream_frame *f = &s->frames[depth - 1];
     memset(f, 0, sizeof *f);
     int disabled = (n->modifiers & PARSE_MOD_DISABLE) != 0;
+    size_t kind = lowerer_kind(&s->l, n->name);
     /* The root search of find_root, in the same order. */
-    int searched = (!parent || parent->searched) && !disabled;
+    int searched = (!parent || parent->searched) && !disabled && kind != KIND_UNKNOWN;
     if (searched && !s->has_root && (n->modifiers & PARSE_MOD_ROOT)) {
         s->has_root = 1;
         s->root = n;
     }
-    size_t kind = lowerer_kind(&s->l, n->name);
     f->searched = searched && root_search_enters_kind(kind);
     /* The argument warnings of check_tree, in the same order. */
     if (parent && parent->primitive && !disabled)
@@ -818,7 +822,8 @@ static sc_status stream_open(void *user, parse_node *n, int *keep, sc_error *err
     }
     if (s->kept_depth)
         return SC_OK; /* inside a kept subtree: walked when it closes */
-    int visited = !s->l.stopped && (!parent || parent->descend) && !disabled;
+    int visited = !s->l.stopped && (!parent || parent->descend) && !disabled &&
+                  kind != KIND_UNKNOWN;
     if (!visited)
         return SC_OK;
     context ctx = parent ? (context)parent->ctx : IN_MAIN;

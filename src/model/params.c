@@ -503,6 +503,12 @@ sc_status model_check_params(const char *file, const parse_node *n, const model_
     return st;
 }
 
+sc_status model_note_unknown(const char *file, const parse_node *n, model_notes *notes,
+                             sc_error *error)
+{
+    return note_at(notes, error, file, n->loc, "Ignoring unknown module '%s'", n->name);
+}
+
 sc_status model_note_children(const char *file, const parse_node *n, model_notes *notes,
                               size_t at, sc_error *error)
 {

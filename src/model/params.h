@@ -121,6 +121,12 @@ sc_status model_check_params(const char *file, const parse_node *n, const model_
                              model_params_memo *memo, model_notes *notes,
                              sc_error *error);
 
+/* OpenSCAD's warning that n names no module it knows ("Ignoring unknown
+ * module 'foo'", at the node), which it leaves out with its children,
+ * never instantiated. Fails only when memory runs out. */
+sc_status model_note_unknown(const char *file, const parse_node *n, model_notes *notes,
+                             sc_error *error);
+
 /* OpenSCAD's warning that primitive n (p->primitive) has children, which
  * it ignores without instantiating them ("module cube() does not support
  * child modules", at the node), inserted in notes at index at: OpenSCAD
