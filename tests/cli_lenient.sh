@@ -1370,25 +1370,35 @@ union() {
 	multmatrix([[1, 0, 0, 0], [0, 1, 0, 20], [0, 0, 1, 0], [0, 0, 0, 1]]) rotate_extrude(angle = "a", convexity = "b", $fa = "c", $fn = 8) multmatrix([[1, 0, 0, 2], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]) square(size = "q");
 }
 M
-check
-openscad -o "$PWD/types_os.csg" types.csg 2>os_types.err ||
-    fail "openscad -o types_os.csg types.csg: exit $?"
-sed -n 's/^WARNING: \(.*\) in file types\.csg, line \([0-9]*\)$/\2: \1/p' os_types.err >os_types.txt
-[ "$(wc -l <os_types.txt)" = 9 ] || fail "openscad's warnings: $(cat os_types.err)"
-for mode in "" --faithful; do
-    # shellcheck disable=SC2086
-    {
-        check
-        "$bin" render types.csg -o out.png --imgsize=64,48 -q $mode 2>err.txt ||
-            fail "types.csg $mode: exit $?: $(cat err.txt)"
-        sed -n 's/^types\.csg:\([0-9]*\):[0-9]*: warning: \(.*\)$/\1: \2/p' err.txt >sc_types.txt
-        cmp -s os_types.txt sc_types.txt ||
-            fail "types.csg $mode: spancast warns '$(cat err.txt)', openscad '$(cat os_types.txt)'"
-        [ "$(wc -l <err.txt)" = 9 ] || fail "types.csg $mode: other messages: $(cat err.txt)"
-        same types.csg types_os.csg $mode
-        refuses types.csg 'types.csg:2:14: error: Unable to convert cube(size="a", ...) parameter to a number or a vec3 of numbers' $mode
-    }
-done
+# like_openscad MODEL COUNT [REFUSAL]: OpenSCAD's export of MODEL warns
+# COUNT times; spancast's render warns the same, at the same lines, and
+# nothing else, exact and --faithful, and renders what OpenSCAD exports;
+# with REFUSAL, --strict stops at that error.
+like_openscad() {
+    local model=$1 count=$2 refusal=${3:-} stem=${1%.csg} mode
+    check
+    openscad -o "$PWD/${stem}_os.csg" "$model" 2>os_types.err ||
+        fail "openscad -o ${stem}_os.csg $model: exit $?"
+    sed -n "s/^WARNING: \(.*\) in file ${stem}\.csg, line \([0-9]*\)\$/\2: \1/p" os_types.err \
+        >os_types.txt
+    [ "$(wc -l <os_types.txt)" = "$count" ] || fail "openscad's warnings: $(cat os_types.err)"
+    for mode in "" --faithful; do
+        # shellcheck disable=SC2086
+        {
+            check
+            "$bin" render "$model" -o out.png --imgsize=64,48 -q $mode 2>err.txt ||
+                fail "$model $mode: exit $?: $(cat err.txt)"
+            sed -n "s/^${stem}\.csg:\([0-9]*\):[0-9]*: warning: \(.*\)\$/\1: \2/p" err.txt \
+                >sc_types.txt
+            cmp -s os_types.txt sc_types.txt ||
+                fail "$model $mode: spancast warns '$(cat err.txt)', openscad '$(cat os_types.txt)'"
+            [ "$(wc -l <err.txt)" = "$count" ] || fail "$model $mode: other messages: $(cat err.txt)"
+            same "$model" "${stem}_os.csg" $mode
+            [ -z "$refusal" ] || refuses "$model" "$refusal" $mode
+        }
+    done
+}
+like_openscad types.csg 9 'types.csg:2:14: error: Unable to convert cube(size="a", ...) parameter to a number or a vec3 of numbers'
 
 # The same for what names a file and where a drawing goes (import,
 # surface, the extrusions' origin): a file name or layer that is not a
@@ -1405,24 +1415,7 @@ union() {
 	multmatrix([[1, 0, 0, 0], [0, 1, 0, 6], [0, 0, 1, 0], [0, 0, 0, 1]]) linear_extrude(file = 5, height = 1) square(size = 2);
 }
 M
-check
-openscad -o "$PWD/types_import_os.csg" types_import.csg 2>os_types.err ||
-    fail "openscad -o types_import_os.csg types_import.csg: exit $?"
-sed -n 's/^WARNING: \(.*\) in file types_import\.csg, line \([0-9]*\)$/\2: \1/p' os_types.err >os_types.txt
-[ "$(wc -l <os_types.txt)" = 3 ] || fail "openscad's warnings: $(cat os_types.err)"
-for mode in "" --faithful; do
-    # shellcheck disable=SC2086
-    {
-        check
-        "$bin" render types_import.csg -o out.png --imgsize=64,48 -q $mode 2>err.txt ||
-            fail "types_import.csg $mode: exit $?: $(cat err.txt)"
-        sed -n 's/^types_import\.csg:\([0-9]*\):[0-9]*: warning: \(.*\)$/\1: \2/p' err.txt >sc_types.txt
-        cmp -s os_types.txt sc_types.txt ||
-            fail "types_import.csg $mode: spancast warns '$(cat err.txt)', openscad '$(cat os_types.txt)'"
-        [ "$(wc -l <err.txt)" = 3 ] || fail "types_import.csg $mode: other messages: $(cat err.txt)"
-        same types_import.csg types_import_os.csg $mode
-    }
-done
+like_openscad types_import.csg 3
 
 # ---- a lossy mask ----
 warns cube_ref.csg "spancast: warning: --mask=m.jpg: JPEG is lossy, so the mask is no longer exactly 0 and 255 at the model's edges (.png, .tif and .exr are exact)" --mask=m.jpg
