@@ -522,9 +522,14 @@ sc_status model_read_import(const model_reader *r, arena *mem, const parse_node 
 {
     out->drawing = NULL; /* a mesh, also when the arguments are bad */
     const parse_arg *a = parse_node_arg(n, "file", 0);
-    if (!a || a->value.kind == PARSE_UNDEF)
-        return err_set(r->error, SC_ERR_SEMANTIC, &n->loc,
-                       "missing argument 'file' of 'import'");
+    if (!a || a->value.kind == PARSE_UNDEF) {
+        /* OpenSCAD imports the file "" (its export writes file = ""): an
+         * unsupported format, warned of where the import is built */
+        out->file = "";
+        out->file_loc = n->loc;
+        out->format = model_mesh_format_of("");
+        return SC_OK;
+    }
     const char *name = model_string_value(mem, &a->value);
     if (!name)
         return err_nomem(r->error, NULL);
@@ -539,16 +544,14 @@ sc_status model_read_surface(const model_reader *r, arena *mem, const parse_node
                              model_surface *out)
 {
     const parse_value *file = model_arg(n, "file", 0);
-    if (!file)
-        return err_set(r->error, SC_ERR_SEMANTIC, &n->loc,
-                       "missing argument 'file' of 'surface'");
     out->center = out->invert = 0;
     model_bool(r, n, "center", 1, &out->center);
     model_bool(r, n, "invert", -1, &out->invert);
-    out->file = model_string_value(mem, file);
+    /* no file: OpenSCAD reads the file "", which cannot be opened */
+    out->file = file ? model_string_value(mem, file) : "";
     if (!out->file)
         return err_nomem(r->error, NULL);
-    out->file_loc = model_loc(r, file);
+    out->file_loc = file ? model_loc(r, file) : n->loc;
     return SC_OK;
 }
 

@@ -245,9 +245,13 @@ static sc_status lower_drawing(model_lowerer *l, const parse_node *n, model_node
     d->scale = 1;
     d->dpi = MODEL_SVG_DPI;
     const parse_value *file = model_arg(n, "file", 0);
-    if (!file)
-        return err_set(l->r.error, SC_ERR_SEMANTIC, &n->loc,
-                       "missing argument 'file' of 'import'");
+    if (!file) {
+        /* OpenSCAD imports the file "": no drawing, so a 3D child */
+        d->file = "";
+        d->file_loc = n->loc;
+        d->not_2d = 1;
+        return SC_OK;
+    }
     sc_status st = drawing_file(l, file, d);
     if (st != SC_OK)
         return st;
