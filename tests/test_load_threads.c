@@ -111,6 +111,88 @@ static void loads_use_the_threads_asked(void **state)
     free(text);
 }
 
+/* A union of n^3 positioned spheres as OpenSCAD exports it, some with an
+ * argument OpenSCAD warns of, in both halves of the text: 1.3 MB at 22. */
+static char *union_csg(int n, size_t *length)
+{
+    size_t cap = (size_t)n * n * n * 200 + 64, used = 0;
+    char *s = malloc(cap);
+    assert_non_null(s);
+    used += (size_t)snprintf(s + used, cap - used, "union() {\n");
+    for (int i = 0; i < n; i++)
+        for (int j = 0; j < n; j++)
+            for (int k = 0; k < n; k++)
+                used += (size_t)snprintf(
+                    s + used, cap - used,
+                    "\tmultmatrix([[1, 0, 0, %d], [0, 1, 0, %d], [0, 0, 1, %d], [0, 0, "
+                    "0, "
+                    "1]]) {\n\t\tsphere($fn = 0, $fa = 12, $fs = 2, r = 0.6%s);\n\t}\n",
+                    2 * i, 2 * j, 2 * k, (i * n + j) % 7 == 3 && k == 1 ? ", q = 1" : "");
+    used += (size_t)snprintf(s + used, cap - used, "}\n");
+    assert_true(used < cap);
+    *length = used;
+    return s;
+}
+
+/* The warnings of a scene, one per line. */
+static char *warnings_text(const sc_scene *scene)
+{
+    size_t count = sc_scene_warning_count(scene), cap = count * 600 + 1, used = 0;
+    char *out = malloc(cap);
+    assert_non_null(out);
+    out[0] = '\0';
+    for (size_t i = 0; i < count; i++) {
+        char line[512];
+        used += (size_t)snprintf(
+            out + used, cap - used, "%s\n",
+            sc_error_format(sc_scene_warning(scene, i), line, sizeof line));
+    }
+    return out;
+}
+
+/* A text past PARSE_SPLIT_MIN loaded on two threads is read in two parts
+ * (src/syntax/parse.c): the scene, its statistics and its warnings are
+ * those of the load on one thread. */
+static void a_large_text_read_in_two_parts_is_the_same_model(void **state)
+{
+    (void)state;
+    size_t length;
+    char *text = union_csg(22, &length);
+    assert_true(length > (1u << 20));
+    sc_scene *scenes[2];
+    sc_scene_info infos[2];
+    char *warnings[2];
+    for (int t = 0; t < 2; t++) {
+        sc_load_options lo;
+        sc_load_options_init(&lo);
+        lo.threads = t + 1;
+        sc_error error;
+        assert_int_equal(
+            sc_scene_load_string("union.csg", text, length, &lo, &scenes[t], &error),
+            SC_OK);
+        sc_scene_info_init(&infos[t]);
+        assert_int_equal(sc_scene_get_info(scenes[t], &infos[t], &error), SC_OK);
+        warnings[t] = warnings_text(scenes[t]);
+    }
+    assert_int_equal(infos[0].leaf_count, 22 * 22 * 22);
+    assert_int_equal(infos[1].leaf_count, infos[0].leaf_count);
+    assert_int_equal(infos[1].node_count, infos[0].node_count);
+    assert_int_equal(infos[1].source_node_count, infos[0].source_node_count);
+    assert_int_equal(infos[1].bvh_node_count, infos[0].bvh_node_count);
+    double lo[2][3], hi[2][3];
+    for (int t = 0; t < 2; t++)
+        assert_int_equal(sc_scene_bounds(scenes[t], lo[t], hi[t]), 1);
+    assert_memory_equal(lo[0], lo[1], sizeof lo[0]);
+    assert_memory_equal(hi[0], hi[1], sizeof hi[0]);
+    assert_true(sc_scene_warning_count(scenes[0]) > 20);
+    assert_string_equal(warnings[1], warnings[0]);
+    for (int t = 0; t < 2; t++) {
+        free(warnings[t]);
+        sc_scene_release(scenes[t]);
+    }
+    free(text);
+}
+
 static void negative_thread_count_is_refused(void **state)
 {
     (void)state;
@@ -123,6 +205,7 @@ int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(loads_use_the_threads_asked),
+        cmocka_unit_test(a_large_text_read_in_two_parts_is_the_same_model),
         cmocka_unit_test(negative_thread_count_is_refused),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

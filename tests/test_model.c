@@ -1156,6 +1156,110 @@ static void test_stream(void **state)
     }
 }
 
+/* A streamed parse and lowering of text, split at the boundary nearest
+ * split_at when split_at is not 0 (parse_sink's split). Returns the
+ * parse's status; *m and *names are the results on success, *split
+ * whether the parse was read in two joined parts. */
+static sc_status stream_model(const char *text, size_t split_at, model **m,
+                              parse_tree **names, int *split, sc_error *e)
+{
+    model_stream *s;
+    assert_int_equal(model_stream_new("m.csg", &s, e), SC_OK);
+    parse_sink sink = model_stream_sink(s);
+    sink.split_min = split_at ? 1 : 0;
+    sink.split_at = split_at;
+    sc_status st = parse_stream("m.csg", text, strlen(text), &sink, names, e);
+    *split = st == SC_OK && (*names)->split;
+    if (st != SC_OK) {
+        model_stream_free(s);
+        *m = NULL;
+        return st;
+    }
+    assert_int_equal(model_stream_finish(s, m), SC_OK);
+    return st;
+}
+
+/* A parse split in two threads (parse_sink's fork) at every place in the
+ * text makes the model, the warnings and the error a whole streamed parse
+ * makes: the second part's nodes, warnings, counts and names joined after
+ * the first's, and a part that cannot be joined (an error in it, a root,
+ * a lowering stopped, a boundary the scan misread) read again by the
+ * first thread. */
+static void test_stream_split(void **state)
+{
+    (void)state;
+    static const char *const texts[] = {
+        "union() { multmatrix([[1, 0, 0, 1], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]])"
+        " { sphere(1); } cube(2); sphere(3); cylinder(h = 1, r = 2); cube([1, 2, 3]); }",
+        "cube(1); sphere(2); cylinder(h = 2, r1 = 1, r2 = 0); cube(3); sphere(4);",
+        "group() { cube(1); sphere(2); !cube(2); sphere(5); cube(4); } !sphere(3);",
+        "difference() { cube(9); sphere(1); { sphere(2); cube(1); } sphere(3); cube(2); "
+        "}",
+        "union() { cube(1); sphere(r = \"a\"); cube(2); sphere(1); cube(3); }",
+        "union() { cube(1); sphere(2); cube(3); sphere(4); cube(\"x\"); sphere(5); }",
+        "cube(1) { sphere(1); sphere(2); sphere(3); sphere(4); }\nsphere(1, q = 2);",
+        "union() { cube(1, zz = 1); sphere(q = 1); cube(a = 2); frobnicate(); sphere(2); "
+        "*cube(3); %sphere(3); #cube(4); }",
+        "union() { resize([2, 2, 2]) { cube(1); sphere(1); } cube(2); resize([1, 1, 1]) "
+        "sphere(2); cube(3); }",
+        "linear_extrude(height = 1) { circle(1); square(2); circle(3); square(4); } "
+        "sphere(3);",
+        "union() { light(position = [1, 2, 3]) { cube(1); } cube(2); sphere(1); cube(3); "
+        "}",
+        "union() {\n\tcube(1);\n\t// a comment; with a } brace\n\tsphere(2);\n"
+        "\t/* another { one; */ cube(3);\n\tcolor(\"a;b}c\") sphere(4);\n\tcube(5);\n}\n",
+        "union() { multmatrix([[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]) "
+        "cube(1); multmatrix([[1, 0, 0, 1], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]) "
+        "cube(2); ; ; cube(3); }",
+        "union() { cube(1); sphere(2); cube(3) sphere(; cube(4); }",
+        "union() { cube(1); sphere(2); cube(3); } } cube(4); sphere(5);",
+        "union() { cube(1); sphere(2); cube(3); sphere(4); cube(5);",
+        "union() { cube(1); sphere(2); \"open; string } cube(3); }",
+        "union() { cube(1); sphere(2); /* open comment; } cube(3); }",
+        "union() { cube(1); sphere(2); cube(3); x = 1; sphere(4); }",
+    };
+    size_t splits = 0, places = 0;
+    for (size_t i = 0; i < sizeof texts / sizeof texts[0]; i++) {
+        const char *text = texts[i];
+        model *whole;
+        parse_tree *whole_names = NULL;
+        sc_error we;
+        int split;
+        sc_status ws = stream_model(text, 0, &whole, &whole_names, &split, &we);
+        assert_false(split);
+        char wm[1024], pm[1024];
+        for (size_t at = 1; at < strlen(text); at++) {
+            model *m;
+            parse_tree *names = NULL;
+            sc_error pe;
+            sc_status ps = stream_model(text, at, &m, &names, &split, &pe);
+            assert_int_equal(ps, ws);
+            if (ws != SC_OK) {
+                assert_string_equal(sc_error_format(&pe, pm, sizeof pm),
+                                    sc_error_format(&we, wm, sizeof wm));
+                continue;
+            }
+            splits += (size_t)split;
+            places++;
+            assert_int_equal(m->has_root, whole->has_root);
+            assert_int_equal(m->leaf_count, whole->leaf_count);
+            same_nodes(m->first, whole->first);
+            char a[4096], b[4096];
+            notes_text(m, a, sizeof a);
+            notes_text(whole, b, sizeof b);
+            assert_string_equal(a, b);
+            assert_int_equal(names->count, whole_names->count);
+            assert_int_equal(names->node_count, whole_names->node_count);
+            model_free(m);
+            parse_tree_free(names);
+        }
+        model_free(whole);
+        parse_tree_free(whole_names);
+    }
+    /* most places of the good texts split: the test reads both paths */
+    assert_true(2 * splits > places);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -1173,6 +1277,7 @@ int main(void)
         cmocka_unit_test(test_errors),
         cmocka_unit_test(test_unknown_left_out),
         cmocka_unit_test(test_argument_warnings),
+        cmocka_unit_test(test_stream_split),
         cmocka_unit_test(test_primitive_warnings),
         cmocka_unit_test(test_wrong_types),
         cmocka_unit_test(test_own_resolution),

@@ -71,7 +71,7 @@ static sc_status on_close(void *user, parse_node *node, sc_error *error)
 
 static parse_tree *stream(const char *text, events *ev, sc_status *st, sc_error *e)
 {
-    parse_sink sink = {ev, on_open, on_close};
+    parse_sink sink = {.user = ev, .open = on_open, .close = on_close};
     parse_tree *t = (parse_tree *)1;
     *st = parse_stream("m.csg", text, strlen(text), &sink, &t, e);
     return t;

@@ -50,6 +50,11 @@ int options_threads_begin(int threads)
     return saved;
 }
 
+int options_thread_count(int threads)
+{
+    return threads > 0 ? threads : omp_get_max_threads();
+}
+
 void options_threads_end(int saved)
 {
     if (saved > 0)

@@ -20,6 +20,8 @@ sc_status options_ray_query(const sc_ray_query *in, sc_ray_query *out, sc_error 
  * options_threads_end(the value returned). Only the calling thread's
  * setting changes (OpenMP's nthreads-var is per thread). */
 int options_threads_begin(int threads);
+/* The threads a stage given `threads` (0: the default) runs on. */
+int options_thread_count(int threads);
 void options_threads_end(int saved);
 
 #endif

@@ -82,6 +82,9 @@ static sc_status load(const char *name, const char *text, size_t length, char *o
     st = model_stream_new(s->path, &lowering, error);
     if (st == SC_OK) {
         parse_sink sink = model_stream_sink(lowering);
+        /* a large text is read in two threads where there are two */
+        if (options_thread_count(own.threads) >= 2)
+            sink.split_min = PARSE_SPLIT_MIN;
         st = parse_stream(s->path, text ? text : "", length, &sink, &syntax, error);
         if (st == SC_OK)
             st = model_stream_finish(lowering, &typed);

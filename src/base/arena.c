@@ -14,17 +14,38 @@ void arena_init(arena *a, size_t block_size)
     a->block_size = block_size ? block_size : 64 * 1024;
 }
 
-void arena_free(arena *a)
+static void free_blocks(arena_block *b)
 {
-    arena_block *b = a->first;
     while (b) {
         arena_block *next = b->next;
         free(b);
         b = next;
     }
-    a->first = a->head = NULL;
+}
+
+void arena_free(arena *a)
+{
+    free_blocks(a->first);
+    free_blocks(a->adopted);
+    a->first = a->head = a->adopted = NULL;
     a->used = 0;
     a->owned = 0;
+}
+
+static void append_blocks(arena_block **list, arena_block *blocks)
+{
+    while (*list)
+        list = &(*list)->next;
+    *list = blocks;
+}
+
+void arena_adopt(arena *a, arena *from)
+{
+    append_blocks(&a->adopted, from->first);
+    append_blocks(&a->adopted, from->adopted);
+    a->owned += from->owned;
+    a->block_allocs += from->block_allocs;
+    arena_init(from, from->block_size);
 }
 
 void arena_reset(arena *a)

@@ -42,11 +42,18 @@ typedef struct arena {
     size_t used;           /* bytes handed out in head */
     uint64_t block_allocs; /* malloc calls made, for the no-malloc-in-loop check */
     size_t owned;          /* bytes in all blocks */
+    arena_block *adopted;  /* blocks taken from other arenas (arena_adopt):
+                              freed with this one, never reused */
 } arena;
 
 void arena_init(arena *a, size_t block_size);
 /* Frees every block. */
 void arena_free(arena *a);
+/* Moves every block of from into a, whose allocations they stay: they
+ * are freed with a and never handed out again (a reset keeps them full).
+ * from is then empty, as after arena_init with its block size. A model
+ * lowered in two parts takes the second part's memory this way. */
+void arena_adopt(arena *a, arena *from);
 /* Forgets every allocation but keeps the blocks for reuse. */
 void arena_reset(arena *a);
 /* arena_alloc's general case: a request of no size or of a huge one, or

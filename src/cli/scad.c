@@ -830,7 +830,7 @@ sc_status scad_read_model(const char *path, int strict, char **text, size_t *siz
         return fail(error, SC_ERR_IO, "cannot open '%s': %s", path, why);
     /* The syntax alone, streamed (the memory of the open nodes only), to
      * find OpenSCAD's language before the ranks load the text. */
-    parse_sink sink = {NULL, skip_open, skip_close};
+    parse_sink sink = {.open = skip_open, .close = skip_close};
     parse_tree *tree = NULL;
     sc_status st = parse_stream(path, *text, *size, &sink, &tree, error);
     parse_tree_free(tree);

@@ -770,6 +770,8 @@ typedef struct stream_frame {
 
 struct model_stream {
     lowerer l;
+    uint32_t fork_depth;    /* a second part's (model_stream_sink's fork): the
+                               depth of its list's node, 0 at the top level */
     model_node **link;      /* where the next lowered node goes */
     const parse_node *root; /* the root ('!') while its syntax lives */
     int has_root;           /* the root search found it */
@@ -898,9 +900,72 @@ sc_status model_stream_new(const char *file, model_stream **out, sc_error *error
     return SC_OK;
 }
 
+/* A split parse's second part (parse_sink's fork): a stream of its own,
+ * lowering into a model of its own, that starts with the open frames of
+ * the first part's (copies: what it sets in them, live_child, is joined).
+ * None while a subtree is kept whole or the lowering has stopped. */
+static void *stream_fork(void *user, uint32_t depth)
+{
+    model_stream *s = user, *t;
+    if (s->kept_depth || s->l.stopped || model_stream_new(s->l.r.file, &t, NULL) != SC_OK)
+        return NULL;
+    if (depth &&
+        !grow_array((void **)&t->frames, &t->frame_cap, depth, sizeof *t->frames)) {
+        model_stream_free(t);
+        return NULL;
+    }
+    if (depth)
+        memcpy(t->frames, s->frames, depth * sizeof *t->frames);
+    t->fork_depth = depth;
+    return t;
+}
+
+/* Appends the second part t to s, as one stream would have lowered both:
+ * its nodes after s's last, its warnings after s's, its memory s's.
+ * Parts that one stream would have lowered otherwise are not joined: a
+ * root ('!') in t (s's search may have found one first), a lowering
+ * stopped by an argument error in either (s's would not lower t's nodes,
+ * and t's warnings would come after its error). */
+static int stream_join(void *user, void *forked)
+{
+    model_stream *s = user, *t = forked;
+    model *m = s->l.m, *part = t->l.m;
+    if (s->kept_depth || s->l.stopped || t->l.stopped || t->has_root || t->kept_depth)
+        return 0;
+    if (part->notes.count) {
+        if (!grow_array((void **)&m->notes.items, &m->notes.cap,
+                        m->notes.count + part->notes.count, sizeof *m->notes.items))
+            return 0;
+        memcpy(m->notes.items + m->notes.count, part->notes.items,
+               part->notes.count * sizeof *m->notes.items);
+        m->notes.count += part->notes.count;
+    }
+    if (part->first) {
+        *s->link = part->first;
+        s->link = t->link;
+    }
+    m->leaf_count += part->leaf_count;
+    if (t->fork_depth)
+        s->frames[t->fork_depth - 1].live_child |=
+            t->frames[t->fork_depth - 1].live_child;
+    arena_adopt(&m->mem, &part->mem);
+    model_stream_free(t);
+    return 1;
+}
+
+static void stream_drop(void *forked)
+{
+    model_stream_free(forked);
+}
+
 parse_sink model_stream_sink(model_stream *s)
 {
-    parse_sink sink = {s, stream_open, stream_close};
+    parse_sink sink = {.user = s,
+                       .open = stream_open,
+                       .close = stream_close,
+                       .fork = stream_fork,
+                       .join = stream_join,
+                       .drop = stream_drop};
     return sink;
 }
 

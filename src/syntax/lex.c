@@ -40,6 +40,13 @@ void lex_init(lexer *lx, const char *file, const char *text, size_t length,
     lx->strings = strings;
 }
 
+void lex_seek(lexer *lx, const char *p, int line, const char *line_start)
+{
+    lx->p = p;
+    lx->line = line;
+    lx->line_start = line_start;
+}
+
 const char *lex_kind_name(lex_kind kind)
 {
     switch (kind) {

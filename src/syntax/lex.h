@@ -69,6 +69,10 @@ typedef struct lexer {
 void lex_init(lexer *lx, const char *file, const char *text, size_t length,
               arena *strings);
 
+/* Moves the lexer to p, a token's first byte or the whitespace before
+ * it, on the given line, which starts at line_start. */
+void lex_seek(lexer *lx, const char *p, int line, const char *line_start);
+
 /* Reads the next token into *tok. Returns SC_OK, SC_ERR_SYNTAX (with the
  * position of the offending character), SC_ERR_LIMIT (a string longer than
  * LEX_MAX_STRING, at its opening quote) or SC_ERR_NOMEM. At the end of the

@@ -21,7 +21,9 @@
  */
 #include "syntax/parse.h"
 
+#include <pthread.h>
 #include <stdarg.h>
+#include <stdatomic.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -66,7 +68,10 @@ typedef struct parser {
     const parse_sink *sink; /* a streamed parse (parse_stream); NULL: keep the tree */
     arena_mark *marks;      /* streamed: the arena before each open node, by depth */
     size_t mark_cap;
-    uint32_t kept_depth; /* streamed: depth of the kept subtree's node, 0 if none */
+    uint32_t kept_depth;  /* streamed: depth of the kept subtree's node, 0 if none */
+    struct split *split;  /* the first part of a split parse: the second's state */
+    atomic_int *cancel;   /* the second part of one: set when it is not wanted */
+    const char *prev_end; /* the end of the token before the current one */
 } parser;
 
 static sc_location token_loc(const parser *ps)
@@ -101,6 +106,7 @@ static int operator_char(int c)
  * OpenSCAD's operators is the language beyond the CSG export. */
 static sc_status advance(parser *ps)
 {
+    ps->prev_end = ps->tok.start + ps->tok.length;
     sc_status st = lex_next(&ps->lx, &ps->tok, ps->error);
     static const char unexpected[] = "unexpected character '";
     const char *m = ps->error->message;
@@ -731,12 +737,16 @@ typedef struct frame {
     parse_node *node; /* NULL for FRAME_BARE */
     int line;         /* FRAME_BARE: the line of its '{' */
     frame_kind kind;
+    const char *brace; /* FRAME_BLOCK, FRAME_BARE: its '{' */
 } frame;
 
 typedef struct walk {
     frame *frames;
     size_t count, cap;
     parse_node *parent; /* the innermost frame's node, NULL at top level */
+    size_t base;        /* the second part of a split parse: the frames below
+                           it are the first part's, and its list ends at the
+                           '}' that would close frames[base - 1] */
 } walk;
 
 static sc_status push_frame(parser *ps, walk *w, parse_node *node, frame_kind kind,
@@ -749,7 +759,7 @@ static sc_status push_frame(parser *ps, walk *w, parse_node *node, frame_kind ki
     }
     if (!grow_array((void **)&w->frames, &w->cap, w->count + 1, sizeof *w->frames))
         return err_nomem(ps->error, NULL);
-    w->frames[w->count++] = (frame){node, line, kind};
+    w->frames[w->count++] = (frame){node, line, kind, ps->tok.start};
     if (node)
         w->parent = node;
     return SC_OK;
@@ -860,11 +870,17 @@ static sc_status parse_node_head(parser *ps, walk *w, parse_node **top_tail)
  * follows no node holds statements of the enclosing node (or of the
  * file). The walk keeps the open statements on a stack of frames (walk)
  * rather than recursing. */
+static sc_status split_poll(parser *ps, walk *w);
+
 static sc_status parse_statements(parser *ps, walk *w)
 {
     sc_status st;
     parse_node *top_tail = NULL;
     for (;;) {
+        if (ps->split && (st = split_poll(ps, w)) != SC_OK)
+            return st;
+        if (ps->cancel && atomic_load_explicit(ps->cancel, memory_order_relaxed))
+            return SC_ERR_CANCELLED;
         lex_kind kind = ps->tok.kind;
         frame *top = w->count ? &w->frames[w->count - 1] : NULL;
         if (top && top->kind == FRAME_AWAIT && kind != LEX_SEMICOLON &&
@@ -872,12 +888,14 @@ static sc_status parse_statements(parser *ps, walk *w)
             return syntax_error(ps, "expected ';', '{' or a child node after node '%s'",
                                 top->node->name);
         if (kind == LEX_EOF) {
-            if (top)
+            if (top && w->count > w->base)
                 return syntax_error(ps, "expected '}' (to close '{' at line %d)",
                                     top->node ? top->node->block_line : top->line);
             return SC_OK;
         }
         if (kind == LEX_RBRACE) {
+            if (w->base && w->count == w->base)
+                return SC_OK; /* the end of a second part: the first reads on */
             if (!top)
                 return syntax_error(ps, "unmatched '}'");
             if ((st = pop_frame(ps, w)) != SC_OK || (st = advance(ps)) != SC_OK ||
@@ -893,6 +911,7 @@ static sc_status parse_statements(parser *ps, walk *w)
         if (kind == LEX_LBRACE) {
             if (top && top->kind == FRAME_AWAIT) {
                 top->kind = FRAME_BLOCK;
+                top->brace = ps->tok.start;
                 top->node->has_block = 1;
                 top->node->block_line = ps->tok.line;
             } else if ((st = push_frame(ps, w, NULL, FRAME_BARE, ps->tok.line)) !=
@@ -906,6 +925,397 @@ static sc_status parse_statements(parser *ps, walk *w)
         if ((st = parse_node_head(ps, w, &top_tail)) != SC_OK)
             return st;
     }
+}
+
+/* A split parse (parse_sink's fork): the first thread reads the text up
+ * to a statement boundary, a second one from there to the end of that
+ * statement list, and the first joins the second's result and reads on.
+ *
+ * The second thread first scans the text for a boundary near the target
+ * (split_scan), without parsing: braces, strings and comments are enough
+ * to know the depth. It publishes the boundary and the '{' of its list;
+ * the first thread, once it has that list open and has not yet passed the
+ * boundary, hands it the consumer (fork) and its open frames, and the
+ * second parses on its own tree and lexer. When the first reaches the
+ * boundary at the list's own level, exactly at the byte the scan chose,
+ * the scan was right: it joins the second part (its names, counts and
+ * consumer) and moves its lexer to where the second stopped, the list's
+ * '}' or the end. Whatever else happens (a scan that misread the text, an
+ * error in the second part, a consumer that cannot join) the first thread
+ * drops the second part and reads it itself, so that errors are found
+ * and reported exactly as by a whole parse. */
+typedef enum split_state {
+    SPLIT_SCANNING, /* the second thread looks for a boundary */
+    SPLIT_FOUND,    /* it has one and waits for the first thread */
+    SPLIT_NONE,     /* it found none and has ended */
+    SPLIT_GO,       /* the first thread has forked: the second parses */
+    SPLIT_CANCEL    /* the first thread does not want the second part */
+} split_state;
+
+typedef struct split {
+    pthread_t thread;
+    pthread_mutex_t lock;
+    pthread_cond_t changed;
+    atomic_int state;  /* split_state, changed under lock */
+    atomic_int cancel; /* the second part is not wanted any more */
+    const char *file, *text;
+    size_t length, target;
+    int wait; /* the target was given: the first thread awaits the scan */
+    /* The boundary (SPLIT_FOUND): the '{' of its list (NULL: the top
+     * level), the byte after the ';' or '}' that ends the statement
+     * before it, and the lexer's line there. */
+    const char *brace, *at, *line_start;
+    int line;
+    /* Given by the first thread (SPLIT_GO). */
+    parse_sink sink;       /* the forked consumer's */
+    parse_node parent;     /* a copy of the list's node, whose children the
+                              second part counts */
+    parse_node *list_node; /* the first part's node itself (NULL: top level) */
+    frame *frames;         /* the first part's open frames, the last one the
+                              list's, its node the copy */
+    size_t frame_count;
+    /* The second part's result. */
+    sc_status status;
+    sc_error error;
+    int first_line, first_column; /* its first token's, which the first
+                                     thread checks against its own */
+    parse_tree *tree;
+    lexer lx;
+    lex_token tok;
+} split;
+
+/* The bytes the boundary scan must look at: the ones that open or close
+ * a block, a string or a comment, end a statement, or a line. */
+static int scan_stop(unsigned char c)
+{
+    return c == '{' || c == '}' || c == ';' || c == '"' || c == '/' || c == '\n' ||
+           c == '\\';
+}
+
+/* Scans the text for the boundary: the first statement end (a ';', or a
+ * '}' that closes a block) after target in the shallowest list that has
+ * one within a window past target. Returns 1 with sp's boundary set. */
+static int split_scan(split *sp)
+{
+    unsigned char stop[256];
+    for (int c = 0; c < 256; c++)
+        stop[c] = (unsigned char)scan_stop((unsigned char)c);
+    const char *p = sp->text, *end = sp->text + sp->length;
+    const char *target = sp->text + sp->target;
+    size_t window = sp->length / 8 > 4096 ? sp->length / 8 : 4096;
+    const char *limit = (size_t)(end - target) > window ? target + window : end;
+    const char **braces = NULL;
+    size_t depth = 0, cap = 0, at_target = SIZE_MAX, best = SIZE_MAX;
+    const char *line_start = p;
+    int line = 1, found = 0;
+    while (p < end) {
+        if (p >= target && at_target == SIZE_MAX)
+            at_target = depth;
+        if (at_target != SIZE_MAX && p >= limit)
+            break;
+        if (((uintptr_t)p & 0xfffff) == 0 &&
+            atomic_load_explicit(&sp->cancel, memory_order_relaxed))
+            break;
+        unsigned char c = (unsigned char)*p;
+        if (!stop[c]) {
+            p++;
+            continue;
+        }
+        if (c == '\n') {
+            line++;
+            line_start = ++p;
+            continue;
+        }
+        if (c == '"') {
+            for (p++; p < end && *p != '"'; p++) {
+                if (*p == '\\' && p + 1 < end)
+                    p++;
+                if (*p == '\n') {
+                    line++;
+                    line_start = p + 1;
+                }
+            }
+            if (p >= end)
+                break;
+            p++;
+            continue;
+        }
+        if (c == '/' && p + 1 < end && p[1] == '/') {
+            while (p < end && *p != '\n')
+                p++;
+            continue;
+        }
+        if (c == '/' && p + 1 < end && p[1] == '*') {
+            for (p += 2; p + 1 < end && !(p[0] == '*' && p[1] == '/'); p++)
+                if (*p == '\n') {
+                    line++;
+                    line_start = p + 1;
+                }
+            if (p + 1 >= end)
+                break;
+            p += 2;
+            continue;
+        }
+        if (c == '{') {
+            if (!grow_array((void **)&braces, &cap, depth + 1, sizeof *braces))
+                break;
+            braces[depth++] = p++;
+            continue;
+        }
+        if (c == '}') {
+            if (!depth)
+                break; /* unmatched: the parse stops there */
+            depth--;
+        }
+        p++;
+        /* A statement ends at p in the list at this depth. */
+        if ((c == ';' || c == '}') && at_target != SIZE_MAX && depth <= at_target &&
+            depth < best) {
+            best = depth;
+            sp->brace = depth ? braces[depth - 1] : NULL;
+            sp->at = p;
+            sp->line = line;
+            sp->line_start = line_start;
+            found = 1;
+            if (depth == 0)
+                break;
+        }
+    }
+    free(braces);
+    return found;
+}
+
+static void split_parse(split *sp);
+
+static void set_state(split *sp, split_state state)
+{
+    pthread_mutex_lock(&sp->lock);
+    atomic_store_explicit(&sp->state, state, memory_order_release);
+    pthread_cond_broadcast(&sp->changed);
+    pthread_mutex_unlock(&sp->lock);
+}
+
+static void *split_main(void *arg)
+{
+    split *sp = arg;
+    if (!split_scan(sp)) {
+        set_state(sp, SPLIT_NONE);
+        return NULL;
+    }
+    pthread_mutex_lock(&sp->lock);
+    if (atomic_load_explicit(&sp->state, memory_order_relaxed) == SPLIT_SCANNING) {
+        atomic_store_explicit(&sp->state, SPLIT_FOUND, memory_order_release);
+        pthread_cond_broadcast(&sp->changed);
+    }
+    while (atomic_load_explicit(&sp->state, memory_order_relaxed) == SPLIT_FOUND)
+        pthread_cond_wait(&sp->changed, &sp->lock);
+    int go = atomic_load_explicit(&sp->state, memory_order_relaxed) == SPLIT_GO;
+    pthread_mutex_unlock(&sp->lock);
+    if (go)
+        split_parse(sp);
+    return NULL;
+}
+
+/* The second part: the statements of the list from the boundary to its
+ * '}' (or the end), on a tree of its own. */
+static void split_parse(split *sp)
+{
+    sp->status = SC_ERR_NOMEM;
+    parse_tree *tree = calloc(1, sizeof *tree);
+    if (!tree)
+        return;
+    arena_init(&tree->mem, 64 * 1024);
+    arena_init(&tree->strings, 16 * 1024);
+    tree->file = sp->file;
+    sp->tree = tree;
+    parser ps;
+    memset(&ps, 0, sizeof ps);
+    ps.tree = tree;
+    ps.error = &sp->error;
+    ps.sink = &sp->sink;
+    ps.cancel = &sp->cancel;
+    ps.tok.start = sp->at;
+    lex_init(&ps.lx, sp->file, sp->text, sp->length, &tree->strings);
+    lex_seek(&ps.lx, sp->at, sp->line, sp->line_start);
+    walk w = {sp->frames, sp->frame_count, sp->frame_count,
+              sp->list_node ? &sp->parent : NULL, sp->frame_count};
+    sc_status st = advance(&ps);
+    sp->first_line = ps.tok.line;
+    sp->first_column = ps.tok.column;
+    if (st == SC_OK)
+        st = parse_statements(&ps, &w);
+    sp->frames = w.frames;
+    free(ps.values);
+    free(ps.open);
+    free(ps.args);
+    free(ps.names);
+    free(ps.marks);
+    sp->status = st;
+    sp->lx = ps.lx;
+    sp->tok = ps.tok;
+}
+
+/* Starts the second thread when the sink can take a split parse of a
+ * text this long. */
+static void split_start(parser *ps, const char *file, const char *text, size_t length)
+{
+    const parse_sink *sink = ps->sink;
+    if (!sink || !sink->fork || !sink->split_min || length < sink->split_min ||
+        length < 2)
+        return;
+    split *sp = calloc(1, sizeof *sp);
+    if (!sp)
+        return;
+    sp->file = file;
+    sp->text = text;
+    sp->length = length;
+    /* a little past the middle: the second thread scans up to it first */
+    sp->wait = sink->split_at && sink->split_at < length;
+    sp->target = sp->wait ? sink->split_at : length / 32 * 17;
+    atomic_init(&sp->state, SPLIT_SCANNING);
+    atomic_init(&sp->cancel, 0);
+    if (pthread_mutex_init(&sp->lock, NULL) != 0) {
+        free(sp);
+        return;
+    }
+    if (pthread_cond_init(&sp->changed, NULL) != 0 ||
+        pthread_create(&sp->thread, NULL, split_main, sp) != 0) {
+        pthread_cond_destroy(&sp->changed);
+        pthread_mutex_destroy(&sp->lock);
+        free(sp);
+        return;
+    }
+    ps->split = sp;
+}
+
+/* Ends the split: the second thread told to stop, waited for, its part
+ * dropped unless joined; the first thread reads on alone. */
+static void split_end(parser *ps)
+{
+    split *sp = ps->split;
+    if (!sp)
+        return;
+    ps->split = NULL;
+    atomic_store_explicit(&sp->cancel, 1, memory_order_relaxed);
+    pthread_mutex_lock(&sp->lock);
+    int state = atomic_load_explicit(&sp->state, memory_order_relaxed);
+    if (state == SPLIT_SCANNING || state == SPLIT_FOUND)
+        atomic_store_explicit(&sp->state, SPLIT_CANCEL, memory_order_release);
+    pthread_cond_broadcast(&sp->changed);
+    pthread_mutex_unlock(&sp->lock);
+    pthread_join(sp->thread, NULL);
+    if (state == SPLIT_GO)
+        ps->sink->drop(sp->sink.user);
+    parse_tree_free(sp->tree);
+    free(sp->frames);
+    pthread_cond_destroy(&sp->changed);
+    pthread_mutex_destroy(&sp->lock);
+    free(sp);
+}
+
+/* Whether the walk is at the boundary's list, between its statements. */
+static int at_list(const walk *w, const char *brace)
+{
+    if (!brace)
+        return w->count == 0;
+    const frame *top = w->count ? &w->frames[w->count - 1] : NULL;
+    return top && top->kind == FRAME_BLOCK && top->brace == brace;
+}
+
+/* Hands the second thread its part, once the list is open here. */
+static void split_fork(parser *ps, walk *w)
+{
+    split *sp = ps->split;
+    const frame *top = w->count ? &w->frames[w->count - 1] : NULL;
+    uint32_t depth = top ? top->node->depth : 0;
+    if (ps->kept_depth || !(sp->frames = malloc((w->count + 1) * sizeof *sp->frames))) {
+        split_end(ps);
+        return;
+    }
+    void *user = ps->sink->fork(ps->sink->user, depth);
+    if (!user) {
+        split_end(ps);
+        return;
+    }
+    if (w->count)
+        memcpy(sp->frames, w->frames, w->count * sizeof *sp->frames);
+    sp->frame_count = w->count;
+    sp->list_node = top ? top->node : NULL;
+    if (top) {
+        sp->parent = *top->node;
+        sp->parent.child_count = 0;
+        sp->frames[w->count - 1].node = &sp->parent;
+    }
+    sp->sink = *ps->sink;
+    sp->sink.user = user;
+    sp->sink.split_min = 0;
+    set_state(sp, SPLIT_GO);
+}
+
+/* The first thread at the boundary: the second part joined, and the
+ * lexer moved past it, when it is whole and the consumer takes it. */
+static sc_status split_join(parser *ps)
+{
+    split *sp = ps->split;
+    pthread_join(sp->thread, NULL);
+    ps->split = NULL;
+    parse_tree *tree = ps->tree, *part = sp->tree;
+    int joined = sp->status == SC_OK && part && sp->first_line == ps->tok.line &&
+                 sp->first_column == ps->tok.column &&
+                 (uint64_t)tree->node_count + part->node_count <= PARSE_MAX_NODES &&
+                 ps->sink->join(ps->sink->user, sp->sink.user);
+    if (joined) {
+        if (sp->list_node)
+            sp->list_node->child_count += sp->parent.child_count;
+        else
+            tree->count += part->count;
+        tree->node_count += part->node_count;
+        tree->split = 1;
+        arena_adopt(&tree->strings, &part->strings);
+        lex_seek(&ps->lx, sp->lx.p, sp->lx.line, sp->lx.line_start);
+        ps->tok = sp->tok;
+    } else {
+        ps->sink->drop(sp->sink.user);
+    }
+    parse_tree_free(part);
+    free(sp->frames);
+    pthread_cond_destroy(&sp->changed);
+    pthread_mutex_destroy(&sp->lock);
+    free(sp);
+    return SC_OK;
+}
+
+/* The first thread, between two statements: fork when the boundary's
+ * list is open and the boundary still ahead, join at the boundary, and
+ * give up the split when the walk passes it elsewhere or the scan found
+ * none. */
+static sc_status split_poll(parser *ps, walk *w)
+{
+    split *sp = ps->split;
+    int state = atomic_load_explicit(&sp->state, memory_order_acquire);
+    if (state == SPLIT_SCANNING && sp->wait) {
+        /* a boundary asked for: the scan's answer is awaited */
+        pthread_mutex_lock(&sp->lock);
+        while ((state = atomic_load_explicit(&sp->state, memory_order_relaxed)) ==
+               SPLIT_SCANNING)
+            pthread_cond_wait(&sp->changed, &sp->lock);
+        pthread_mutex_unlock(&sp->lock);
+    }
+    if (state == SPLIT_SCANNING)
+        return SC_OK;
+    if (state == SPLIT_FOUND) {
+        if (ps->prev_end >= sp->at)
+            split_end(ps);
+        else if (at_list(w, sp->brace))
+            split_fork(ps, w);
+        return SC_OK;
+    }
+    if (state == SPLIT_GO && ps->prev_end < sp->at)
+        return SC_OK;
+    if (state == SPLIT_GO && ps->prev_end == sp->at && at_list(w, sp->brace))
+        return split_join(ps);
+    split_end(ps);
+    return SC_OK;
 }
 
 static sc_status parse(const char *file, const char *text, size_t length,
@@ -923,12 +1333,15 @@ static sc_status parse(const char *file, const char *text, size_t length,
     ps.tree = tree;
     ps.error = error;
     ps.sink = sink;
+    ps.tok.start = text;
     lex_init(&ps.lx, file, text, length, &tree->strings);
     walk w;
     memset(&w, 0, sizeof w);
+    split_start(&ps, file, text, length);
     sc_status st = advance(&ps);
     if (st == SC_OK)
         st = parse_statements(&ps, &w);
+    split_end(&ps);
     free(w.frames);
     free(ps.values);
     free(ps.open);

@@ -47,6 +47,9 @@
 
 #define PARSE_MAX_NODES 4000000  /* nodes in a file */
 #define PARSE_MAX_VECTOR 1000000 /* items in one vector */
+/* The smallest text loading reads in two threads (parse_sink's split_min):
+ * below it, the second thread's start and scan cost more than they save. */
+#define PARSE_SPLIT_MIN ((size_t)1 << 20)
 
 typedef enum parse_value_kind {
     PARSE_UNDEF,
@@ -123,6 +126,7 @@ typedef struct parse_tree {
     parse_node *first; /* top-level statements, linked by next */
     uint32_t count;
     uint32_t node_count; /* all nodes */
+    int split;           /* a streamed parse read it in two joined parts */
 } parse_tree;
 
 /* Parses text[0 .. length). file names the text in positions and must
@@ -159,6 +163,30 @@ typedef struct parse_sink {
      * unless the node lies inside a kept subtree (below the kept node),
      * which is freed with the kept node. */
     sc_status (*close)(void *user, parse_node *node, sc_error *error);
+    /* Optional: a split parse. When fork is set and the text has at least
+     * split_min bytes (0: never), parse_stream reads it in two threads: a
+     * second one finds a statement boundary near split_at (0: the middle)
+     * in the list of some open node P (or at the top level) and reads
+     * from there to P's '}' while the first reads up to the boundary.
+     * fork makes the second part's consumer once the first thread has
+     * opened P (depth: P's, 0 at the top level), or returns NULL when it
+     * cannot (the first part's state does not allow it); the second
+     * part's calls then go to it, with the same nodes and depths a whole
+     * parse would give, P's syntax standing in as a copy. When the first
+     * thread reaches the boundary, join appends the second part to user
+     * and returns 1, or returns 0 when the two cannot be joined as one
+     * parse would have made them; drop then frees the second consumer,
+     * and the first thread reads the second part again itself. drop also
+     * frees a part that failed or was never reached. So a split parse
+     * calls the sink, in each part, as a whole parse would, and its
+     * result and errors are a whole parse's. A split_at given is awaited:
+     * the first thread reads on once the scan has found the boundary, so
+     * that the split is made there (the tests' way to split at every
+     * place). */
+    void *(*fork)(void *user, uint32_t depth);
+    int (*join)(void *user, void *forked);
+    void (*drop)(void *forked);
+    size_t split_min, split_at;
 } parse_sink;
 
 /* Parses text[0 .. length) as parse_text does, with the same errors at
