@@ -23,6 +23,7 @@
 #include "test_faults.h"
 #include "test_util.h"
 
+#include <sys/mman.h>
 #include <unistd.h>
 
 /* Items appended one at a time, past MEM_HUGE_MIN bytes (3 Mi items of 8
@@ -196,6 +197,62 @@ static void test_large_array_grows_in_place(void **state)
     check_new_half_faulted(faults, n, page, counted);
 }
 
+/* mem_prefault: a range faulted in on a thread of its own while the
+ * caller fills it keeps what the caller writes, and once it ends, the rest
+ * of the range is resident, so writing it faults no more (counted with
+ * huge pages off, one fault a page). Where the kernel lacks the advice
+ * (before Linux 5.14), only the contents are checked. */
+static void test_prefault(void **state)
+{
+    (void)state;
+    size_t n = (size_t)32 << 20, page = (size_t)sysconf(_SC_PAGESIZE);
+    int counted = test_huge_pages_off();
+    unsigned char *v = malloc(n);
+    assert_non_null(v);
+    int advice = 0;
+#ifdef MADV_POPULATE_WRITE
+    advice = madvise((void *)(((uintptr_t)v + page - 1) & ~(uintptr_t)(page - 1)), page,
+                     MADV_POPULATE_WRITE) == 0;
+#endif
+    mem_prefault *f = mem_prefault_start(v, n);
+    for (size_t i = 0; i < n / 2; i++) /* meanwhile, the first half */
+        v[i] = (unsigned char)(i * 7);
+    mem_prefault_end(f);
+    size_t pages = n / page;
+    unsigned char *resident = malloc(pages + 1);
+    assert_non_null(resident);
+    uintptr_t second = ((uintptr_t)v + n / 2 + page - 1) & ~(uintptr_t)(page - 1);
+    size_t second_pages = ((uintptr_t)v + n - second) / page;
+    assert_int_equal(mincore((void *)second, second_pages * page, resident), 0);
+    size_t in = 0;
+    for (size_t i = 0; i < second_pages; i++)
+        in += resident[i] & 1;
+    long before = test_minor_faults();
+    for (size_t i = n / 2; i < n; i++)
+        v[i] = (unsigned char)(i * 7);
+    long faults = test_minor_faults() - before;
+    for (size_t i = 0; i < n; i++)
+        if (v[i] != (unsigned char)(i * 7))
+            fail_msg("byte %zu changed", i);
+    test_huge_pages_on(counted);
+    if (advice) {
+        assert_int_equal(in, second_pages);
+#if defined(__SANITIZE_ADDRESS__)
+        (void)faults; /* its shadow's pages fault too */
+#else
+        if (counted)
+            assert_true(faults < (long)second_pages / 16);
+#endif
+    }
+    free(resident);
+    free(v);
+    /* Nothing to do: a small range, none at all. */
+    char small[64];
+    assert_null(mem_prefault_start(small, sizeof small));
+    assert_null(mem_prefault_start(NULL, MEM_HUGE_MIN));
+    mem_prefault_end(NULL);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -203,6 +260,7 @@ int main(void)
         cmocka_unit_test(test_grow_failure_keeps_array),
         cmocka_unit_test(test_advised_buffer_remaps),
         cmocka_unit_test(test_large_array_grows_in_place),
+        cmocka_unit_test(test_prefault),
     };
     const struct CMUnitTest advised[] = {
         cmocka_unit_test(test_large_array_advised),

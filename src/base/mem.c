@@ -3,9 +3,11 @@
 
 #include "base/mem.h"
 
-#include <stdio.h>
-#include <string.h>
+#include <pthread.h>
 #include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
 #include <sys/mman.h>
 #include <sys/resource.h>
 #include <unistd.h>
@@ -48,6 +50,57 @@ void mem_advise_huge(void *p, size_t bytes)
     (void)p;
     (void)bytes;
 #endif
+}
+
+struct mem_prefault {
+    pthread_t thread;
+    void *start;
+    size_t length;
+};
+
+static void *prefault_main(void *arg)
+{
+#ifdef MADV_POPULATE_WRITE
+    mem_prefault *f = arg;
+    (void)madvise(f->start, f->length, MADV_POPULATE_WRITE); /* a hint: errors are moot */
+#else
+    (void)arg;
+#endif
+    return NULL;
+}
+
+mem_prefault *mem_prefault_start(void *p, size_t bytes)
+{
+#ifdef MADV_POPULATE_WRITE
+    long size = sysconf(_SC_PAGESIZE);
+    uintptr_t page = size > 0 ? (uintptr_t)size : 4096;
+    uintptr_t start = ((uintptr_t)p + page - 1) & ~(page - 1);
+    uintptr_t end = ((uintptr_t)p + bytes) & ~(page - 1);
+    if (!p || bytes < MEM_HUGE_MIN || end <= start)
+        return NULL;
+    mem_prefault *f = malloc(sizeof *f);
+    if (!f)
+        return NULL;
+    f->start = (void *)start;
+    f->length = end - start;
+    if (pthread_create(&f->thread, NULL, prefault_main, f) != 0) {
+        free(f);
+        return NULL;
+    }
+    return f;
+#else
+    (void)p;
+    (void)bytes;
+    return NULL;
+#endif
+}
+
+void mem_prefault_end(mem_prefault *f)
+{
+    if (!f)
+        return;
+    pthread_join(f->thread, NULL);
+    free(f);
 }
 
 const char *mem_format(uint64_t bytes, char *buf, int n)

@@ -59,6 +59,18 @@ void mem_blame(sc_error *error, const char *what);
 #define MEM_HUGE_MIN ((size_t)8 << 20)
 void mem_advise_huge(void *p, size_t bytes);
 
+/* Faults in the whole pages of [p, p + bytes) for writing, on a thread of
+ * its own (madvise MADV_POPULATE_WRITE), leaving their contents as they
+ * are: memory that the caller is about to fill front to back is cleared
+ * by the kernel on another core meanwhile, and the caller's writes find
+ * it mapped (a million leaves: 190 MB that the builder's walk would fault
+ * in one page at a time). Returns NULL where it does nothing (a kernel
+ * without the advice, a range under MEM_HUGE_MIN, no thread); the memory
+ * must stay mapped until mem_prefault_end, which waits for the thread. */
+typedef struct mem_prefault mem_prefault;
+mem_prefault *mem_prefault_start(void *p, size_t bytes);
+void mem_prefault_end(mem_prefault *f);
+
 /* Writes bytes as "12.3 MiB" (or KiB, GiB) into buf of size n; returns
  * buf. */
 const char *mem_format(uint64_t bytes, char *buf, int n);

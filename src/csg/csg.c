@@ -44,6 +44,7 @@ struct csg_builder {
     uint32_t leaf_count, leaf_cap;
     void *spare; /* csg_builder_give's buffer, until the leaves take it */
     size_t spare_size;
+    mem_prefault *prefault; /* of the leaves' array past the buffer's pages */
     int failed;
 };
 
@@ -59,6 +60,7 @@ void csg_builder_free(csg_builder *b)
 {
     if (!b)
         return;
+    mem_prefault_end(b->prefault);
     arena_free(&b->mem);
     free(b->nodes);
     free(b->child_ids);
@@ -87,6 +89,8 @@ int csg_builder_reserve(csg_builder *b, uint32_t leaves)
     uint64_t nodes = (uint64_t)b->node_count + leaves + leaves / 16 + 16;
     uint64_t all_leaves = (uint64_t)b->leaf_count + leaves;
     size_t bytes = (size_t)all_leaves * sizeof *b->leaves; /* < 2^32 * 328 */
+    mem_prefault_end(b->prefault);                         /* before the array may move */
+    b->prefault = NULL;
     if (!b->failed && b->spare && !b->leaves && b->spare_size >= MEM_HUGE_MIN &&
         bytes >= MEM_HUGE_MIN && all_leaves < UINT32_MAX) {
         /* The given buffer becomes the leaves' array; its bytes are
@@ -100,6 +104,11 @@ int csg_builder_reserve(csg_builder *b, uint32_t leaves)
         mem_advise_huge(p, bytes);
         b->leaves = p;
         b->leaf_cap = (uint32_t)all_leaves;
+        /* the pages past the buffer's are new: faulted in on another core
+         * while the builder fills the leaves from the front */
+        if (bytes > b->spare_size)
+            b->prefault =
+                mem_prefault_start((char *)p + b->spare_size, bytes - b->spare_size);
     }
     free(b->spare); /* too small to be worth keeping, or not needed */
     b->spare = NULL;
@@ -141,6 +150,10 @@ uint32_t csg_builder_leaf(csg_builder *b, const prim *p, const affine *to_world,
     affine to_local;
     if (b->failed || !affine_invert(to_world, &to_local))
         return CSG_EMPTY;
+    if (b->leaf_count + 1 > b->leaf_cap && b->prefault) {
+        mem_prefault_end(b->prefault); /* before the array moves */
+        b->prefault = NULL;
+    }
     if (!grow_array32((void **)&b->leaves, &b->leaf_cap, b->leaf_count + 1,
                       sizeof *b->leaves)) {
         b->failed = 1;
@@ -820,6 +833,8 @@ sc_status csg_builder_finish(csg_builder *b, uint32_t root, csg_tree **out,
         csg_builder_free(b);
         return err_nomem(error, NULL);
     }
+    mem_prefault_end(b->prefault); /* its thread is done by now */
+    b->prefault = NULL;
     t->mem = b->mem;
     memset(&b->mem, 0, sizeof b->mem);
     int ok = compile(b, root, t);
