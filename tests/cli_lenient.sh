@@ -463,13 +463,13 @@ same bad_revolve.csg cube_ref.csg
 # an import of an extension no reader takes: OpenSCAD's "Unsupported file
 # format", and in a 2D operation its "Ignoring 3D child object" too
 printf 'union() {\n\tcube(size = [1, 1, 1]);\n\timport(file = "x.obj");\n\tlinear_extrude(height = 1) import(file = "x.obj");\n}\n' >obj.csg
-warns obj.csg "obj.csg:3:16: warning: Unsupported file format while trying to import file 'x.obj' (import() reads .stl, .off, .amf, .3mf, .dxf and .svg files); the import is empty, as OpenSCAD leaves it out (--strict makes it an error)
-obj.csg:4:43: warning: Unsupported file format while trying to import file 'x.obj' (import() reads .stl, .off, .amf, .3mf, .dxf and .svg files); the import is empty, as OpenSCAD leaves it out (--strict makes it an error)
+warns obj.csg "obj.csg:3:16: warning: Unsupported file format while trying to import file '\"x.obj\"' (import() reads .stl, .off, .amf, .3mf, .dxf and .svg files); the import is empty, as OpenSCAD leaves it out (--strict makes it an error)
+obj.csg:4:43: warning: Unsupported file format while trying to import file '\"x.obj\"' (import() reads .stl, .off, .amf, .3mf, .dxf and .svg files); the import is empty, as OpenSCAD leaves it out (--strict makes it an error)
 obj.csg:4:29: warning: Ignoring 3D child object for 2D operation"
 same obj.csg cube_ref.csg
 check
 "$bin" render obj.csg -o strict.png -q --strict 2>err.txt && fail "obj.csg --strict: exit 0"
-[ "$(cat err.txt)" = "obj.csg:3:16: error: Unsupported file format while trying to import file 'x.obj' (import() reads .stl, .off, .amf, .3mf, .dxf and .svg files)" ] ||
+[ "$(cat err.txt)" = "obj.csg:3:16: error: Unsupported file format while trying to import file '\"x.obj\"' (import() reads .stl, .off, .amf, .3mf, .dxf and .svg files)" ] ||
     fail "obj.csg --strict: $(cat err.txt)"
 # an extrusion empty for its own reason is still warned of
 printf 'union() {\n\tcube(size = [1, 1, 1]);\n\tlinear_extrude(height = 1) square(size = [0, 0]);\n}\n' >zero_extrude.csg

@@ -795,7 +795,7 @@ static void test_import(void **state)
      * to import file" and an empty import, whether the file is there or
      * not (--strict: an error) */
     const char *const unsupported[] = {
-        "m.csg:2:8: Unsupported file format while trying to import file 'a.obj' "
+        "m.csg:2:8: Unsupported file format while trying to import file '\"a.obj\"' "
         "(import() reads .stl, .off, .amf, .3mf, .dxf and .svg files); the import is "
         "empty, as OpenSCAD leaves it out (--strict makes it an error)"};
     for (int faithful = 0; faithful < 2; faithful++) {
@@ -808,13 +808,14 @@ static void test_import(void **state)
     check_error_strict(
         "m.csg", "import(\"a.obj\");", SC_ERR_UNSUPPORTED,
         "m.csg:1:8: error: Unsupported file format while trying to import "
-        "file 'a.obj' (import() reads .stl, .off, .amf, .3mf, .dxf and .svg "
+        "file '\"a.obj\"' (import() reads .stl, .off, .amf, .3mf, .dxf and .svg "
         "files)",
         0);
     /* no file: OpenSCAD imports the file "" (its export writes file = "") */
     sc_scene_release(load_one_warning(
         "m.csg", "import(); cube();", 0, 1, 1,
-        "Unsupported file format while trying to import file '' (import() reads .stl, "
+        "Unsupported file format while trying to import file '\"\"' (import() reads "
+        ".stl, "
         ".off, .amf, .3mf, .dxf and .svg files); the import is empty, as OpenSCAD leaves "
         "it out (--strict makes it an error)",
         1));
@@ -822,10 +823,21 @@ static void test_import(void **state)
      * takes it (its "Unsupported file format" for import(3)) */
     sc_scene_release(load_one_warning(
         "m.csg", "import(file = 3);", 0, 1, 15,
-        "Unsupported file format while trying to import file '3' (import() reads .stl, "
+        "Unsupported file format while trying to import file '\"3\"' (import() reads "
+        ".stl, "
         ".off, .amf, .3mf, .dxf and .svg files); the import is empty, as OpenSCAD leaves "
         "it out (--strict makes it an error)",
         0));
+    /* the name quoted as OpenSCAD 2021.01 prints it: '"', '\\', tab, line
+     * feed and carriage return escaped */
+    sc_scene_release(
+        load_one_warning("m.csg", "import(\"a \\\"b\\\\c\\td\\ne\\rf.obj\");", 0, 1, 8,
+                         "Unsupported file format while trying to import file '\"a "
+                         "\\\"b\\\\c\\td\\ne\\rf.obj\"' "
+                         "(import() reads .stl, .off, .amf, .3mf, .dxf and .svg files); "
+                         "the import is empty, "
+                         "as OpenSCAD leaves it out (--strict makes it an error)",
+                         0));
     /* under '%' it is checked but not read */
     s = load("m.csg", "%import(\"none.stl\"); cube();");
     assert_int_equal(only_kind(s), PRIM_BOX);

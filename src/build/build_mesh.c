@@ -2134,14 +2134,40 @@ static sc_status import_objects(const build_ctx *c, const model_import *import,
     return st;
 }
 
+/* s in double quotes, as OpenSCAD 2021.01 prints a file name: '"', '\\',
+ * tab, line feed and carriage return escaped, the rest as it is; cut
+ * short at size. */
+static const char *quoted_name(const char *s, char *out, size_t size)
+{
+    size_t n = 0;
+    out[n++] = '"';
+    for (; *s && n + 4 < size; s++) {
+        const char *escape = *s == '"'    ? "\\\""
+                             : *s == '\\' ? "\\\\"
+                             : *s == '\t' ? "\\t"
+                             : *s == '\n' ? "\\n"
+                             : *s == '\r' ? "\\r"
+                                          : NULL;
+        if (escape) {
+            out[n++] = escape[0];
+            out[n++] = escape[1];
+        } else {
+            out[n++] = *s;
+        }
+    }
+    out[n++] = '"';
+    out[n] = '\0';
+    return out;
+}
+
 sc_status build_import_unsupported(const build_ctx *c, const sc_location *loc,
                                    const char *name, int strict)
 {
     static const char what[] = "Unsupported file format while trying to import file "
                                "'%s' (import() reads .stl, .off, .amf, .3mf, .dxf and "
                                ".svg files)";
-    char why[SC_ERROR_MESSAGE_MAX - 160];
-    snprintf(why, sizeof why, what, name);
+    char why[SC_ERROR_MESSAGE_MAX - 160], quoted[SC_ERROR_MESSAGE_MAX / 2];
+    snprintf(why, sizeof why, what, quoted_name(name, quoted, sizeof quoted));
     if (strict || c->strict)
         return err_set(c->error, SC_ERR_UNSUPPORTED, loc, "%s", why);
     return build_note_left_out(c, loc,
