@@ -1,5 +1,7 @@
 /* Replays every fuzzer finding in tests/fuzz-regressions/ through the same
- * load path the fuzzer drives (fuzz/harness.h: load, compile, 8 x 8 render).
+ * load path the fuzzer drives (fuzz/harness.h: load, compile, 8 x 8 render),
+ * and through the split parse's check (fuzz/split_harness.h) at the place
+ * its fuzzer picks.
  *
  * Each file is an input that once crashed, leaked or tripped a sanitizer;
  * here it must load or fail with a message, render or fail with a message,
@@ -18,6 +20,7 @@
 #include <cmocka.h>
 
 #include "../fuzz/harness.h"
+#include "../fuzz/split_harness.h"
 
 static const char folder[] = SPANCAST_SOURCE_DIR "/tests/fuzz-regressions";
 
@@ -65,6 +68,12 @@ static void test_replay_all(void **state)
         int result = fuzz_one((const uint8_t *)text, length);
         if (result != 0)
             fail_msg("%s: the library broke a promise on this input", entry->d_name);
+        /* the split parse where fuzz_split splits it */
+        int split;
+        if (length >= 2 &&
+            split_one(text, length, split_place(text, length), &split) != 0)
+            fail_msg("%s: split in two, the parse differs from a whole one",
+                     entry->d_name);
         free(text);
         replayed++;
     }
