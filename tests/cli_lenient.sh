@@ -489,6 +489,22 @@ for model in bad_files.csg bad_flat.csg; do
     [ -e strict.png ] && fail "$model --strict: an image was written"
 done
 
+# ---- a size that is not finite: a .scad's 1/0, which OpenSCAD's export
+# writes as inf (0/0 as nan) ----
+# OpenSCAD 2021.01 draws nothing for text() of such a size, or an offset()
+# by such an amount, and no warning: its own STL of this file is the cube
+# alone (12 triangles), and so is spancast's model, in both modes.
+# (offset(r = -1/0) aborts OpenSCAD 2021.01 with an uncaught exception;
+# spancast draws nothing for it either: test_twod.)
+printf 'cube(1);\nlinear_extrude(height = 1) text("a", size = 1/0);\nlinear_extrude(height = 1) offset(r = 1/0) square(5);\nlinear_extrude(height = 1) offset(delta = 0/0) square(5);\n' >nonfinite.scad
+check
+openscad -o nonfinite_os.stl nonfinite.scad >/dev/null 2>&1 || fail "openscad -o nonfinite_os.stl: exit $?"
+[ "$(grep -c 'facet normal' nonfinite_os.stl)" = 12 ] ||
+    fail "OpenSCAD's STL of nonfinite.scad is not the cube alone"
+for mode in "" --faithful; do
+    same nonfinite.scad cube_ref.csg $mode
+done
+
 # ---- surface(): a file that cannot be opened or read, an illegal value ----
 # OpenSCAD 2021.01 (openscad -o x.stl x.scad) warns "The file '...'
 # couldn't be opened.", "Can't read PNG image '...'" or "Illegal value in

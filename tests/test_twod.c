@@ -389,8 +389,14 @@ static void test_errors(void **state)
                      "paths = [[\"x\", 1, 2, 3]]); }",
                      &outers, &holes) -
              1) < 4 * GRID);
-    check_error("group() { offset(r = inf) { square(1); } }", SC_ERR_SEMANTIC,
-                "m.csg:1:11: error: offset: r must be finite");
+    /* an offset that is not finite (a .scad's 1/0, written as inf) draws
+     * nothing, as in OpenSCAD 2021.01 (tests/cli_lenient.sh) */
+    assert_true(area_of("group() { offset(r = inf) { square(1); } }", &outers, &holes) ==
+                0);
+    assert_true(area_of("group() { offset(r = -inf) { square(1); } }", &outers, &holes) ==
+                0);
+    assert_true(
+        area_of("group() { offset(delta = nan) { square(1); } }", &outers, &holes) == 0);
     check_error("group() { offset(r = 1e6, $fa = 0.01, $fs = 0.01) { square(1); } }",
                 SC_ERR_LIMIT,
                 "m.csg:1:11: error: offset: $fn, $fa and $fs of radius 1e+06 give too "

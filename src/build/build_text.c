@@ -110,6 +110,12 @@ static sc_status build_shape(const build_ctx *c, const model_node *n, text_shape
     if (n->pending)
         return build_pending(c, n);
     const model_text *a = n->u.text;
+    if (!isfinite(a->size)) {
+        /* OpenSCAD 2021.01 draws nothing for a size of inf or nan (a
+         * .scad's 1/0, which its export writes as inf): no glyphs */
+        out->curve_points = 2;
+        return SC_OK;
+    }
     long fragments = faithful_fragments(a->size, a->res.fn, a->res.fs, a->res.fa);
     out->curve_points = fragments < 0 ? 0 : (uint32_t)fmax(floor(fragments / 8.0) + 1, 2);
     out->size = a->size;

@@ -766,6 +766,12 @@ static sc_status offset(const eval *e, const model_node *n, twod_region *r)
         join = o->chamfer ? TWOD_JOIN_SQUARE : TWOD_JOIN_MITER;
     if (!r->contour_count)
         return SC_OK;
+    if (!isfinite(delta)) {
+        /* OpenSCAD 2021.01 draws nothing for an offset of inf or nan (a
+         * .scad's 1/0, which its export writes as inf) */
+        twod_clear(r);
+        return SC_OK;
+    }
     double arc_tolerance = 0;
     if (join == TWOD_JOIN_ROUND) {
         long f = faithful_fragments(fabs(delta), fn, fs, fa);

@@ -12,8 +12,7 @@
  *             bad one empties it, for the builder to warn of); each path
  *             entry one of the points (model_index_value), in path
  *             order; one out of range is listed (model.h)
- *   offset    r, then $fn, $fa, $fs, then (without r) delta and chamfer;
- *             the size must be finite
+ *   offset    r, then $fn, $fa, $fs, then (without r) delta and chamfer
  *   import    a file name, .dxf or .svg (otherwise the builder names the
  *             operation that asked), then $fn, $fa, $fs, layer, origin
  *             [x, y], scale, center and dpi (as OpenSCAD: center true only
@@ -29,8 +28,7 @@
  *   text      text, size, font, direction, language, script, halign,
  *             valign, spacing, $fn, $fa, $fs (each of another kind its
  *             default); at most
- *             MODEL_MAX_TEXT_BYTES bytes without a NUL; size and spacing
- *             finite
+ *             MODEL_MAX_TEXT_BYTES bytes without a NUL; spacing finite
  */
 #include "model/lower_twod.h"
 
@@ -193,10 +191,7 @@ static sc_status lower_offset(model_lowerer *l, const parse_node *n, model_node 
         ((st = number(l, n, "delta", -1, &o->delta, &o->has_delta)) != SC_OK ||
          (st = model_bool(&l->r, n, "chamfer", -1, &o->chamfer)) != SC_OK))
         return st;
-    if (!isfinite(o->delta))
-        return err_set(l->r.error, SC_ERR_SEMANTIC, &n->loc, "offset: %s must be finite",
-                       o->has_r ? "r" : "delta");
-    return SC_OK;
+    return SC_OK; /* a size that is not finite draws nothing (build_twod.c) */
 }
 
 /* layer, origin [x, y], $fn, $fa, $fs of a drawing read from n (an import,
@@ -364,9 +359,7 @@ static sc_status lower_text(model_lowerer *l, const parse_node *n, model_node *o
         sc_location loc = model_loc(&l->r, tv);
         return err_set(l->r.error, SC_ERR_SEMANTIC, &loc, "text must not contain a NUL");
     }
-    if (!isfinite(a->size))
-        return err_set(l->r.error, SC_ERR_SEMANTIC, &n->loc,
-                       "text: size must be a finite number (got %g)", a->size);
+    /* a size that is not finite draws nothing (build_text.c) */
     if (!isfinite(a->spacing))
         return err_set(l->r.error, SC_ERR_SEMANTIC, &n->loc,
                        "text: spacing must be a finite number (got %g)", a->spacing);
