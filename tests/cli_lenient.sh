@@ -504,6 +504,21 @@ openscad -o nonfinite_os.stl nonfinite.scad >/dev/null 2>&1 || fail "openscad -o
 for mode in "" --faithful; do
     same nonfinite.scad cube_ref.csg $mode
 done
+# A spacing of 1/0 or 0/0 puts every glyph after the first at no finite
+# place: OpenSCAD draws the first glyph alone (its SVG of "abc" so spaced
+# is byte for byte its SVG of "a"), and so does spancast.
+printf 'text("abc", spacing = 1/0);\n' >spacing_inf.scad
+printf 'text("abc", spacing = 0/0);\n' >spacing_nan.scad
+printf 'text("a");\n' >spacing_one.scad
+for f in spacing_inf spacing_nan spacing_one; do
+    openscad -o "${f}_os.svg" "$f.scad" >/dev/null 2>&1 || fail "openscad -o ${f}_os.svg: exit $?"
+done
+cmp -s spacing_inf_os.svg spacing_one_os.svg || fail "OpenSCAD draws more than one glyph at spacing 1/0"
+cmp -s spacing_nan_os.svg spacing_one_os.svg || fail "OpenSCAD draws more than one glyph at spacing 0/0"
+for mode in "" --faithful; do
+    same spacing_inf.scad spacing_one.scad $mode
+    same spacing_nan.scad spacing_one.scad $mode
+done
 
 # ---- surface(): a file that cannot be opened or read, an illegal value ----
 # OpenSCAD 2021.01 (openscad -o x.stl x.scad) warns "The file '...'

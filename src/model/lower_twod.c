@@ -28,7 +28,7 @@
  *   text      text, size, font, direction, language, script, halign,
  *             valign, spacing, $fn, $fa, $fs (each of another kind its
  *             default); at most
- *             MODEL_MAX_TEXT_BYTES bytes without a NUL; spacing finite
+ *             MODEL_MAX_TEXT_BYTES bytes without a NUL
  */
 #include "model/lower_twod.h"
 
@@ -359,10 +359,8 @@ static sc_status lower_text(model_lowerer *l, const parse_node *n, model_node *o
         sc_location loc = model_loc(&l->r, tv);
         return err_set(l->r.error, SC_ERR_SEMANTIC, &loc, "text must not contain a NUL");
     }
-    /* a size that is not finite draws nothing (build_text.c) */
-    if (!isfinite(a->spacing))
-        return err_set(l->r.error, SC_ERR_SEMANTIC, &n->loc,
-                       "text: spacing must be a finite number (got %g)", a->spacing);
+    /* a size that is not finite draws nothing (build_text.c), a spacing
+     * that is not finite no glyph after the first (text_freetype.c) */
     return SC_OK;
 }
 

@@ -390,6 +390,17 @@ static sc_status shape_text(layout_ctx *c, const model_text *a, FT_Face face,
         out->advance[2 * gi + 1] = adv[1];
         adv[0] += g[i].x_advance * a->spacing;
         adv[1] += g[i].y_advance * a->spacing;
+        /* A glyph at a place that is not finite is not drawn, as OpenSCAD
+         * 2021.01 draws none there: a spacing of inf or nan (a .scad's
+         * 1/0) leaves the first glyph of left-aligned text, and none of
+         * centred or right-aligned text (whose width is then not finite;
+         * OpenSCAD aborts on those). */
+        if (!(isfinite(out->offset[2 * gi]) && isfinite(out->offset[2 * gi + 1]) &&
+              isfinite(out->advance[2 * gi]) && isfinite(out->advance[2 * gi + 1])) &&
+            out->contour_count > out->glyph_start[gi]) {
+            out->contour_count = out->glyph_start[gi];
+            out->seg_count = out->contour_start[out->contour_count];
+        }
         if (out->contour_count > out->glyph_start[gi]) {
             out->glyph_count++;
             out->glyph_start[out->glyph_count] = out->contour_count;
