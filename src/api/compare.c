@@ -23,7 +23,6 @@
 #include <errno.h>
 #include <limits.h>
 #include <math.h>
-#include <omp.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -178,7 +177,7 @@ static sc_status compare_scenes(const sc_scene *a, const sc_scene *b,
         if (!(hi[i] > lo[i]))
             return SC_OK;
     }
-    int threads = options->threads > 0 ? options->threads : omp_get_max_threads();
+    int threads = options_thread_count(options->threads);
     compare_shared shared = {ta, tb, {0}};
     if (!lines_scratch_init(&shared.work, threads, 0))
         return err_nomem(error, NULL);

@@ -36,7 +36,6 @@
  * distance to the tree's bounds (outside it) as error.
  */
 #include <math.h>
-#include <omp.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -312,7 +311,7 @@ static sc_status measure_scene(const sc_scene *scene, const sc_measure_options *
     if (!isfinite(options->density))
         return err_set(error, SC_ERR_ARGUMENT, NULL, "density must be finite");
     const csg_tree *t = scene_tree(scene);
-    out->threads = options->threads > 0 ? options->threads : omp_get_max_threads();
+    out->threads = options_thread_count(options->threads);
     out->converged = 1;
     if (t->root == CSG_EMPTY || bbox_is_empty(&t->bounds))
         return SC_OK;

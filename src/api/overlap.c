@@ -18,7 +18,6 @@
  */
 #define _POSIX_C_SOURCE 200809L /* strdup */
 #include <math.h>
-#include <omp.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -392,7 +391,7 @@ static sc_status find_overlaps(const sc_objects *objects,
     if (!(options->tolerance > 0 && options->tolerance < 1))
         return err_set(error, SC_ERR_ARGUMENT, NULL,
                        "tolerance must lie between 0 and 1 (got %g)", options->tolerance);
-    int threads = options->threads > 0 ? options->threads : omp_get_max_threads();
+    int threads = options_thread_count(options->threads);
     size_t n = objects->count, cap = 0, total = n * (n - (n > 0)) / 2, done = 0;
     sc_overlap *list = NULL;
     for (size_t i = 0; i < n; i++)

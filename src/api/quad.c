@@ -7,6 +7,7 @@
  * sampled on five new lines (its centre is sampled again rather than kept:
  * a fifth more lines, a cell record half the size).
  */
+#include "api/options.h"
 #include "api/quad.h"
 
 #include <float.h>
@@ -577,7 +578,7 @@ sc_status quad_integrate3(const double lo[3], const double hi[3], int nvalues,
     for (int a = 0; a < 3; a++)
         memset(&grids[a], 0, sizeof grids[a]);
     *converged = 0;
-    int threads = options->threads > 0 ? options->threads : omp_get_max_threads();
+    int threads = options_thread_count(options->threads);
     sc_status st = SC_OK;
     for (int a = 0; a < 3 && !st; a++) {
         int u = (a + 1) % 3, v = (a + 2) % 3;
