@@ -379,6 +379,33 @@ static int same_end(span_end a, span_end b)
     return a.t == b.t && a.leaf == b.leaf && a.part == b.part && a.flip == b.flip;
 }
 
+/* A first-crossing answer (part, np) against the whole line's spans (full,
+ * nf), both regularised: the first span after lo within [lo, hi] has the
+ * same in end when it begins at or after lo, the same out end (and an in
+ * end before lo) when it begins before; nothing there in one is nothing in
+ * the other. Returns 1 when there was a span to compare. */
+static int same_first(const span *full, uint32_t nf, const span *part, uint32_t np,
+                      double lo, double hi)
+{
+    uint32_t a = 0, g = 0;
+    while (a < nf && !(full[a].out.t > lo))
+        a++;
+    while (g < np && !(part[g].out.t > lo))
+        g++;
+    if (a == nf || !(full[a].in.t < hi)) {
+        /* nothing after lo within the range: the answer shows nothing
+         * there either */
+        assert_true(g == np || !(part[g].in.t < hi));
+        return 0;
+    }
+    assert_true(g < np);
+    if (full[a].in.t >= lo)
+        assert_true(same_end(part[g].in, full[a].in));
+    else
+        assert_true(same_end(part[g].out, full[a].out) && part[g].in.t < lo);
+    return 1;
+}
+
 /* prim_spans_range against the whole line's spans (prim_spans), both
  * regularised, on random rays and ranges through a mesh of many pieces,
  * some touching (gaps that regularisation closes) and some thin (slivers
@@ -432,27 +459,73 @@ static void test_range_walk(void **state)
                 checked += nw;
                 continue;
             }
-            uint32_t a = 0, g = 0;
-            while (a < nf && !(full[a].out.t > lo))
-                a++;
-            while (g < np && !(part[g].out.t > lo))
-                g++;
-            if (a == nf || !(full[a].in.t < hi)) {
-                /* nothing after lo within the range: the answer shows
-                 * nothing there either */
-                assert_true(g == np || !(part[g].in.t < hi));
-                continue;
-            }
-            assert_true(g < np);
-            if (full[a].in.t >= lo)
-                assert_true(same_end(part[g].in, full[a].in));
-            else
-                assert_true(same_end(part[g].out, full[a].out) && part[g].in.t < lo);
-            first_checked++;
+            first_checked += same_first(full, nf, part, np, lo, hi);
         }
     }
     assert_true(checked > 5000);
     assert_true(first_checked > 3000);
+    csg_builder_free(b);
+}
+
+/* A prism over a star of 2 n corners (radii 1 and 0.4, z from z0 to z1),
+ * each cap a fan from one corner: the fan's triangles overlap and some face
+ * the other way, and cancel by winding number. */
+static void soup_star(soup *s, int n, double z0, double z1)
+{
+    uint32_t b = s->np, m = 2 * (uint32_t)n;
+    for (int k = 0; k < 2; k++)
+        for (uint32_t i = 0; i < m; i++) {
+            double r = i % 2 ? 0.4 : 1, a = 2 * PI * i / m;
+            soup_point(s, v3(r * cos(a), r * sin(a), k ? z1 : z0));
+        }
+    for (uint32_t i = 1; i + 1 < m; i++) {
+        soup_tri(s, b, b + i + 1, b + i);
+        soup_tri(s, b + m, b + m + i, b + m + i + 1);
+    }
+    for (uint32_t i = 0; i < m; i++) {
+        uint32_t j = (i + 1) % m;
+        soup_tri(s, b + i, b + j, b + m + j);
+        soup_tri(s, b + i, b + m + j, b + m + i);
+    }
+}
+
+/* First-crossing queries whose range starts inside the mesh's box, where a
+ * closed mesh may take the winding at the start from the crossings after
+ * it instead of before: a star prism with fan caps, two boxes that
+ * overlap and a sphere through the prism (winding 2 where they overlap).
+ * Every answer against the whole line's spans, from origins all over the
+ * box, in every direction and along the caps' planes. */
+static void test_first_from_inside(void **state)
+{
+    (void)state;
+    csg_builder *b = csg_builder_new();
+    soup s = {0};
+    soup_star(&s, 7, -1, 1);
+    soup_box(&s, v3(1.5, -1, -1), v3(3, 1, 0.5));
+    soup_box(&s, v3(2, -0.5, -0.5), v3(3.5, 0.5, 1));
+    soup_sphere(&s, 0.9, 9, 13);
+    prim p = make(b, &s);
+    const double epsilons[] = {1e-9, 1e-3, 0.05};
+    uint64_t rng = 23;
+    uint32_t cap = prim_max_spans(&p), checked = 0, inside = 0;
+    for (int r = 0; r < 30000; r++) {
+        vec3 o = v3(uniform(&rng, -1.2, 3.7), uniform(&rng, -1.2, 1.2),
+                    uniform(&rng, -1.2, 1.2));
+        vec3 d = v3(uniform(&rng, -1, 1), uniform(&rng, -1, 1), uniform(&rng, -1, 1));
+        if (r % 5 == 0)
+            d.z = 0; /* along the caps' planes */
+        double eps = epsilons[r % 3];
+        double lo = r % 4 ? 0 : uniform(&rng, -0.5, 0.5);
+        double hi = r % 2 ? INFINITY : lo + uniform(&rng, 0, 3);
+        span full[PRIM_MESH_MAX_SPANS], part[PRIM_MESH_MAX_SPANS];
+        uint32_t nf = span_regularize(full, prim_spans(&p, 3, o, d, full, cap), eps);
+        uint32_t np = prim_spans_range(&p, 3, o, d, lo, hi, eps, 1, part, cap);
+        np = span_regularize(part, np, eps);
+        checked += same_first(full, nf, part, np, lo, hi);
+        inside += prim_inside(&p, v3_madd(o, d, lo));
+    }
+    assert_true(checked > 10000);
+    assert_true(inside > 3000);
     csg_builder_free(b);
 }
 
@@ -589,6 +662,7 @@ int main(void)
         cmocka_unit_test(test_degenerate),
         cmocka_unit_test(test_subnormal_extent),
         cmocka_unit_test(test_range_walk),
+        cmocka_unit_test(test_first_from_inside),
         cmocka_unit_test(test_parity_rule),
         cmocka_unit_test(test_tasks_build_one_thread_tree),
     };

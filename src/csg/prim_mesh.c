@@ -79,7 +79,11 @@
  * the range holds no crossing the range wants. With the mesh entirely
  * after the range start, the line before it holds no crossing and the walk
  * starts there; otherwise it starts at the line's beginning, since the
- * winding at the range start needs every crossing before it. A query that
+ * winding at the range start needs every crossing before it. A closed
+ * mesh's entries and exits along any line cancel, so when a first-crossing
+ * query starts nearer the far end of the mesh's box, the winding at its
+ * start is minus the sum of the crossings after it, and only that shorter
+ * part is walked (a shadow ray from a surface towards the outside). A query that
  * wants only the first crossing after lo also stops at the first crossing
  * found past lo plus a few eps, which it must see to tell a span from a
  * sliver (regularisation), and falls back to the whole range when that is
@@ -690,6 +694,8 @@ typedef struct crossings {
     int parity;     /* the mesh's inside rule is parity (prim_mesh.parity) */
     int wind;       /* count_only: exits minus entries (parity: crossings) */
     int on_surface; /* count_only: a crossing at t = 0 */
+    int wind0;      /* the winding before the first crossing kept */
+    double t0;      /* where a span open there begins, before every crossing */
 } crossings;
 
 static void crossings_init(crossings *cs, const prim_mesh *m, int count_only)
@@ -701,6 +707,8 @@ static void crossings_init(crossings *cs, const prim_mesh *m, int count_only)
     cs->count_only = count_only;
     cs->wind = 0;
     cs->on_surface = 0;
+    cs->wind0 = 0;
+    cs->t0 = 0;
 }
 
 /* 1 when a sorts before b: by t, at equal t exits first (so touching
@@ -964,8 +972,8 @@ static int wind_step(const crossing *c, uint32_t leaf, int parity, int *wind,
 static uint32_t spans_of(const crossings *cs, uint32_t leaf, span *out, uint32_t cap)
 {
     uint32_t n = 0;
-    int wind = 0, full = 0;
-    span_end start = {0, leaf, 0, 0};
+    int wind = cs->wind0, full = 0;
+    span_end start = {cs->t0, leaf, 0, 0};
     for (uint32_t i = 0; i < cs->n && !full; i++) {
         if (wind_step(&cs->v[i], leaf, cs->parity, &wind, &start, &out[n])) {
             n++;
@@ -1009,8 +1017,8 @@ static uint32_t partial_spans(const crossings *cs, double t_end, double eps,
                               uint32_t leaf, span *tmp, uint32_t cap)
 {
     uint32_t n = 0;
-    int wind = 0;
-    span_end start = {0, leaf, 0, 0};
+    int wind = cs->wind0;
+    span_end start = {cs->t0, leaf, 0, 0};
     for (uint32_t i = 0; i < cs->n; i++) {
         span closed;
         if (wind_step(&cs->v[i], leaf, cs->parity, &wind, &start, &closed)) {
@@ -1070,6 +1078,30 @@ static uint32_t first_answer(const crossings *cs, double t_end, double lo, doubl
     return s + 1;
 }
 
+/* The crossings at or after a of a line that starts inside the box of a
+ * closed, consistently oriented mesh (z0 < a, where its kz slab begins),
+ * with the winding before a: along any line such a mesh's entries and
+ * exits cancel (its faces bound the solid, and the perturbed line of the
+ * header crosses them in general position), so the winding at a is minus
+ * the sum of what comes after it. A query whose start lies nearer the
+ * box's far end than its near one walks that shorter part instead of
+ * everything before a. Returns 0 (cs to be reset) when the crossings
+ * overflow or the sum is not a winding. */
+static int closed_after(const prim_mesh *m, const ray_frame *f, const slab_ray *r,
+                        double a, double z0, crossings *cs)
+{
+    walk w = {a, INFINITY, 0, 0, 0, 0};
+    gather(m, f, r, &w, cs);
+    if (cs->overflow)
+        return 0;
+    int sum = 0;
+    for (uint32_t i = 0; i < cs->n; i++)
+        sum += cs->v[i].exit ? -1 : 1;
+    cs->wind0 = -sum;
+    cs->t0 = z0;
+    return sum <= 0;
+}
+
 uint32_t prim_mesh_spans_range(const prim *p, uint32_t leaf, vec3 o, vec3 d, double lo,
                                double hi, double eps, int first, span *out, uint32_t cap)
 {
@@ -1100,6 +1132,13 @@ uint32_t prim_mesh_spans_range(const prim *p, uint32_t leaf, vec3 o, vec3 d, dou
     double from = z0 > a ? a : -INFINITY;
     crossings cs;
     crossings_init(&cs, m, 0);
+    if (first && from == -INFINITY && !m->parity && z1 - a < a - z0 &&
+        closed_after(m, &f, &r, a, z0, &cs)) {
+        uint32_t n = first_answer(&cs, INFINITY, lo, eps, z1, leaf, out, cap, 1);
+        if (n != UINT32_MAX)
+            return n;
+        crossings_init(&cs, m, 0);
+    }
     if (first) {
         walk w = {from, b, 0, 1, lo, 4 * eps};
         gather(m, &f, &r, &w, &cs);
