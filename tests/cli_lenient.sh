@@ -504,6 +504,43 @@ openscad -o nonfinite_os.stl nonfinite.scad >/dev/null 2>&1 || fail "openscad -o
 for mode in "" --faithful; do
     same nonfinite.scad cube_ref.csg $mode
 done
+# A DXF drawing at no finite place: an origin of 1/0 or 0/0 is not
+# converted, with OpenSCAD's warning, and the drawing is empty; so is one
+# scaled by 1/0 or 0/0, without a word (the export writes linear_extrude's
+# own scale of 1/0 as the default). OpenSCAD's STL of such a file is the
+# cube alone, and so is spancast's model. (OpenSCAD's clipper may also say
+# "Range check failed for polygon. skipping", depending on how its DXF
+# reader joined the outlines there: not for this drawing.)
+printf 'cube(1);
+linear_extrude(height = 1) import(file = "rect.dxf", origin = [1/0, 0]);
+linear_extrude(height = 1) import(file = "rect.dxf", origin = [0, 0/0]);
+linear_extrude(height = 1) import(file = "rect.dxf", scale = 1/0);
+linear_extrude(height = 1) import(file = "rect.dxf", scale = 0/0);
+rotate_extrude(file = "rect.dxf", origin = [-1/0, 0]);
+' >far_dxf.scad
+check
+openscad -o far_dxf_os.stl far_dxf.scad >/dev/null 2>far_dxf_os.err ||
+    fail "openscad -o far_dxf_os.stl: exit $?"
+[ "$(grep -c 'facet normal' far_dxf_os.stl)" = 12 ] ||
+    fail "OpenSCAD's STL of far_dxf.scad is not the cube alone"
+[ "$(grep -c '^WARNING: ' far_dxf_os.err)" = 3 ] ||
+    fail "OpenSCAD's warnings of far_dxf.scad: $(cat far_dxf_os.err)"
+for mode in "" --faithful; do
+    same far_dxf.scad cube_ref.csg $mode
+done
+cat >far_dxf.csg <<'M'
+cube(size = [1, 1, 1], center = false);
+linear_extrude(height = 1) {
+	import(file = "rect.dxf", origin = [inf, 0], scale = 1);
+}
+linear_extrude(height = 1) {
+	import(file = "rect.dxf", origin = [0, 0], scale = nan);
+}
+M
+warns far_dxf.csg "far_dxf.csg:3:37: warning: linear_extrude(..., origin=[inf, 0]) could not be converted
+far_dxf.csg:2:1: warning: linear_extrude without height or area is empty
+far_dxf.csg:5:1: warning: linear_extrude without height or area is empty"
+same far_dxf.csg cube_ref.csg
 # A spacing of 1/0 or 0/0 puts every glyph after the first at no finite
 # place: OpenSCAD draws the first glyph alone (its SVG of "abc" so spaced
 # is byte for byte its SVG of "a"), and so does spancast.

@@ -937,8 +937,13 @@ static sc_status read_import(const eval *e, const model_node *n, twod_region *ou
     sc_location loc = d->file_loc;
     if (d->format == MODEL_DRAWING_SVG)
         return read_svg(e, n, out);
-    dxf_options o = {d->res.fn,    d->res.fa,    d->res.fs, d->layer,
-                     d->origin[0], d->origin[1], d->scale};
+    /* a drawing at no finite place is read where it is, then dropped */
+    dxf_options o = {d->res.fn, d->res.fa, d->res.fs, d->layer, 0, 0, 1};
+    if (!d->far) {
+        o.origin_x = d->origin[0];
+        o.origin_y = d->origin[1];
+        o.scale = d->scale;
+    }
     sc_status st;
     char *path = build_file_path(e->c, name);
     if (!path)
@@ -959,6 +964,11 @@ static sc_status read_import(const eval *e, const model_node *n, twod_region *ou
                 "import: DXF entities '%s' in '%s' are ignored, as OpenSCAD ignores them",
                 unsupported, path);
     free(path);
+    /* every point at no finite place (model_drawing.far): OpenSCAD 2021.01
+     * draws nothing (whether its clipper also says "Range check failed for
+     * polygon" depends on how its DXF reader joined the outlines there) */
+    if (st == SC_OK && d->far)
+        twod_clear(out);
     if (st == SC_OK && out->contour_count)
         st = clip_status(e, n, twod_clip_sanitize(out));
     return st;

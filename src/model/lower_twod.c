@@ -231,6 +231,20 @@ static sc_status drawing_file(model_lowerer *l, const parse_value *file, model_d
     return SC_OK;
 }
 
+/* A DXF drawing's origin or scale that is not finite (a .scad's 1/0 or 0/0,
+ * which OpenSCAD's export writes as inf or nan) into d->far; an SVG reads
+ * neither. */
+static void far_drawing(model_drawing *d)
+{
+    d->far = 0;
+    if (d->format != MODEL_DRAWING_DXF)
+        return;
+    if (!isfinite(d->origin[0]) || !isfinite(d->origin[1]))
+        d->far |= MODEL_DRAWING_FAR_ORIGIN;
+    if (!isfinite(d->scale))
+        d->far |= MODEL_DRAWING_FAR_SCALE;
+}
+
 static sc_status lower_drawing(model_lowerer *l, const parse_node *n, model_node *out)
 {
     model_drawing *d = model_lowerer_alloc(l, sizeof *d);
@@ -264,12 +278,12 @@ static sc_status lower_drawing(model_lowerer *l, const parse_node *n, model_node
     const parse_value *dpi = model_arg(n, "dpi", -1);
     if (dpi && dpi->kind == PARSE_NUMBER && dpi->u.number >= 0.001)
         d->dpi = dpi->u.number;
-    if (!isfinite(d->scale) || !isfinite(d->origin[0]) || !isfinite(d->origin[1]) ||
-        !isfinite(d->dpi))
+    if (d->format == MODEL_DRAWING_SVG && !isfinite(d->dpi))
         return err_set(l->r.error, SC_ERR_SEMANTIC, &n->loc,
-                       "import: origin and scale must be finite");
+                       "import: dpi must be finite");
     if (d->scale <= 0)
         d->scale = 1;
+    far_drawing(d);
     return SC_OK;
 }
 
@@ -296,9 +310,7 @@ static sc_status extrude_file(model_lowerer *l, const parse_node *n,
         return st;
     d->format = MODEL_DRAWING_DXF;
     d->scale = scale;
-    if (!isfinite(d->scale) || !isfinite(d->origin[0]) || !isfinite(d->origin[1]))
-        return err_set(l->r.error, SC_ERR_SEMANTIC, &n->loc,
-                       "%s: origin and scale must be finite", n->name);
+    far_drawing(d);
     child->kind = MODEL_IMPORT;
     child->name = n->name;
     child->loc = n->loc;

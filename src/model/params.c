@@ -3,6 +3,7 @@
 #include "model/params.h"
 
 #include <ctype.h>
+#include <math.h>
 #include <stdarg.h>
 #include <stdint.h>
 #include <stdio.h>
@@ -423,13 +424,14 @@ static sc_status check_origin(const char *file, const parse_node *n, model_notes
     const parse_value *origin = model_arg(n, "origin", -1);
     if (!origin)
         return SC_OK;
-    double unused[2];
+    double xy[2];
     sc_status st = SC_OK;
-    if (!(origin->kind == PARSE_VECTOR && model_size_value(origin, 2, unused)))
+    if (!(origin->kind == PARSE_VECTOR && model_size_value(origin, 2, xy) &&
+          isfinite(xy[0]) && isfinite(xy[1])))
         st = not_converted(file, n, import ? "linear_extrude" : n->name, "origin",
                            parse_node_arg(n, "origin", -1), notes, error);
     const parse_value *scale = model_arg(n, "scale", -1);
-    if (st == SC_OK && linear && !(scale && model_size_value(scale, 2, unused)))
+    if (st == SC_OK && linear && !(scale && model_size_value(scale, 2, xy)))
         st = not_converted(file, n, n->name, "scale", parse_node_arg(n, "scale", -1),
                            notes, error);
     return st;

@@ -109,7 +109,7 @@ typedef struct model_params_memo {
  * (by radius or diameter), "Cylinder parameters ambiguous" (at the node);
  * the size warning of cube and square (model_params.size); for import,
  * linear_extrude and rotate_extrude, an origin that is not [x, y] of
- * numbers: "linear_extrude(..., origin=\"a\") could not be converted"
+ * finite numbers: "linear_extrude(..., origin=\"a\") could not be converted"
  * (OpenSCAD's text, linear_extrude for import too), at it, and for
  * linear_extrude with an origin, a scale that is neither a number nor
  * [x, y] of numbers, absent included ("linear_extrude(..., scale=undef)
