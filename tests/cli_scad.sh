@@ -133,6 +133,24 @@ mkdir -p elsewhere
     fail "info ../unknown.scad failed"
 [ "$(cat err.txt)" = "../unknown.scad:2:1: warning: Ignoring unknown module 'foo'" ] ||
     fail "info ../unknown.scad: got '$(cat err.txt)'"
+# A use'd library's warnings (and a library that one uses, beside it):
+# OpenSCAD names their files relative to the source's folder too (from
+# elsewhere/, "lib/sub/x.scad"); spancast names them from the working
+# directory, where the user can open them, as OpenSCAD's parser errors
+# already are.
+mkdir -p lib/sub
+printf 'use <y.scad>\nmodule m() { sphere(r = 1, d = 2); n(); }\n' >lib/sub/x.scad
+printf 'module n() { cylinder(r = 1, d = 2, h = 1); }\n' >lib/sub/y.scad
+printf 'use <lib/sub/x.scad>\nm();\n' >uselib.scad
+(cd elsewhere && openscad -o ../uselib_os.csg ../uselib.scad >/dev/null 2>../os_err.txt) ||
+    fail "openscad -o uselib_os.csg: exit $?"
+grep -q "^WARNING: .* in file lib/sub/x.scad, line 2$" os_err.txt ||
+    fail "OpenSCAD's warnings of uselib.scad: $(cat os_err.txt)"
+(cd elsewhere && "$bin" info ../uselib.scad >/dev/null 2>../err.txt) ||
+    fail "info ../uselib.scad failed"
+[ "$(cat err.txt)" = "../lib/sub/x.scad:2:1: warning: Ignoring radius variable 'r' as diameter 'd' is defined too.
+../lib/sub/y.scad:1:1: warning: Ignoring radius variable 'r' as diameter 'd' is defined too." ] ||
+    fail "info ../uselib.scad: got '$(cat err.txt)'"
 
 # Warnings at the converted text are put on the source, as its errors are.
 printf 'cube(1);\nscale([1, 1, 0]) cube(1);\n' >flat.scad

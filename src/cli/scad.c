@@ -175,11 +175,30 @@ typedef struct source_lines {
     long first_define; /* 0 until counted; -1 when the source cannot be read */
 } source_lines;
 
+/* Names another file (a use'd or include'd library) at OpenSCAD's position
+ * as the working directory reaches it: OpenSCAD 2021.01 names a file
+ * relative to the working directory in its parser's errors, but relative to
+ * the source's folder in its other messages ("lib/x.scad" for the library
+ * beside a source named "models/main.scad", which is "models/lib/x.scad"
+ * from here). */
+static void place_other(const source_lines *at, sc_error *error)
+{
+    const char *slash = strrchr(at->path, '/');
+    if (!slash || error->file[0] == '/' || !strncmp(error->message, "Parser error", 12))
+        return;
+    char name[SC_ERROR_FILE_MAX];
+    snprintf(name, sizeof name, "%s", error->file);
+    if ((size_t)snprintf(error->file, sizeof error->file, "%.*s/%s",
+                         (int)(slash - at->path), at->path, name) >= sizeof error->file)
+        snprintf(error->file, sizeof error->file, "%s", name); /* too long: as given */
+}
+
 /* Puts a position OpenSCAD gave in the source on it as the user named it
  * (path), or, past the source's end, on the -D setting there, as a
  * command-line error. OpenSCAD names a file relative to the working
  * directory in its parser's errors, but relative to the file's folder in
- * its warnings; other files keep the name OpenSCAD gave. */
+ * its warnings; other files are named from the working directory too
+ * (place_other). */
 static void place_position(source_lines *at, sc_error *error)
 {
     char real[PATH_MAX], beside[PATH_MAX + SC_ERROR_FILE_MAX];
@@ -189,8 +208,10 @@ static void place_position(source_lines *at, sc_error *error)
     int source =
         (realpath(error->file, real) && !strcmp(real, at->source)) ||
         (error->file[0] != '/' && realpath(beside, real) && !strcmp(real, at->source));
-    if (!source)
+    if (!source) {
+        place_other(at, error);
         return;
+    }
     if (at->first_define == 0) {
         at->first_define = -1;
         FILE *f = fopen(at->source, "rb");
@@ -228,10 +249,9 @@ static void place_position(source_lines *at, sc_error *error)
  * --hardwarnings makes it one; nothing after it is printed), at its
  * position when it has one, else against path; a failure without an
  * ERROR line is told by OpenSCAD's last non-empty line. File names are as
- * OpenSCAD prints them (relative to the working directory, which it shares
- * with us), except the source's, which is named as the user named it, and
- * the -D settings' (place_position). Returns SC_OK when OpenSCAD reported
- * no error. */
+ * the working directory reaches them (place_other), the source as the
+ * user named it, and the -D settings as such (place_position). Returns SC_OK when
+ * OpenSCAD reported no error. */
 static sc_status openscad_log(const char *log_path, source_lines *at, int failed,
                               int strict, sc_error *error)
 {
