@@ -295,8 +295,8 @@ typedef struct model_drawing {
      * that is not finite puts every point at no finite place, so the drawing is
      * empty, as OpenSCAD 2021.01 draws it; 0 when both are finite */
     int far;
-    int center;              /* SVG: centre the drawing's bounds on the origin */
-    double dpi;              /* SVG: user units to the inch, >= 0.001 */
+    int center; /* SVG: centre the drawing's bounds on the origin */
+    double dpi; /* SVG: user units to the inch, >= 0.001 */
     model_resolution res;
 } model_drawing;
 
