@@ -145,5 +145,24 @@ EOF
 cmp -s info.txt want.txt || fail "info printed: $(cat info.txt)"
 [ -s stderr.txt ] && fail "info printed on stderr"
 
+# info --threads: a union of 1.3 MB (past the 1 MiB at which a load parses
+# in two parts), with a warning in each half, loaded on one thread and on
+# two, prints the same tree, bounds and warnings
+check
+awk 'BEGIN { print "union() {"
+    for (i = 0; i < 12000; i++) {
+        printf "multmatrix([[1, 0, 0, %d], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]) { sphere(r = 0.6); }\n", i
+        if (i == 100 || i == 11000) print "cube(size = [1, 1, 1], centre = true);"
+    }
+    print "}" }' >wide.csg
+[ "$(wc -c <wide.csg)" -gt 1048576 ] || fail "wide.csg is smaller than 1 MiB"
+"$bin" info wide.csg --threads=1 >one.txt 2>one.err || fail "info --threads=1 failed"
+"$bin" info wide.csg --threads=2 >two.txt 2>two.err || fail "info --threads=2 failed"
+grep -q "^leaves: 12002 " one.txt || fail "info --threads=1 printed: $(cat one.txt)"
+cmp -s one.txt two.txt || fail "info on two threads printed: $(cat two.txt)"
+[ "$(grep -c "warning: variable centre not specified as parameter" one.err)" = 2 ] ||
+    fail "info --threads=1 warned: $(cat one.err)"
+cmp -s one.err two.err || fail "info on two threads warned: $(cat two.err)"
+
 echo "$checks groups of checks, $fails failed"
 [ "$fails" = 0 ]

@@ -36,13 +36,19 @@ uint64_t mem_in_use(void)
     return (uint64_t)kib * 1024;
 }
 
+/* The system's page size (4096 when it will not say). */
+static inline uintptr_t page_size(void)
+{
+    long size = sysconf(_SC_PAGESIZE);
+    return size > 0 ? (uintptr_t)size : 4096;
+}
+
 void mem_advise_huge(void *p, size_t bytes)
 {
 #ifdef MADV_HUGEPAGE
     if (!p || bytes < MEM_HUGE_MIN)
         return;
-    long size = sysconf(_SC_PAGESIZE);
-    uintptr_t page = size > 0 ? (uintptr_t)size : 4096;
+    uintptr_t page = page_size();
     uintptr_t start = (uintptr_t)p & ~(page - 1);
     uintptr_t end = ((uintptr_t)p + bytes + page - 1) & ~(page - 1);
     (void)madvise((void *)start, end - start, MADV_HUGEPAGE); /* advice only */
@@ -72,8 +78,7 @@ static void *prefault_main(void *arg)
 mem_prefault *mem_prefault_start(void *p, size_t bytes)
 {
 #ifdef MADV_POPULATE_WRITE
-    long size = sysconf(_SC_PAGESIZE);
-    uintptr_t page = size > 0 ? (uintptr_t)size : 4096;
+    uintptr_t page = page_size();
     uintptr_t start = ((uintptr_t)p + page - 1) & ~(page - 1);
     uintptr_t end = ((uintptr_t)p + bytes) & ~(page - 1);
     if (!p || bytes < MEM_HUGE_MIN || end <= start)

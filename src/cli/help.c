@@ -42,7 +42,7 @@ static const struct {
     const char *text;
 } usages[] = {
     {C_RENDER, "spancast render MODEL -o OUT.png [options]\n"},
-    {C_INFO, "spancast info MODEL [--faithful] [--strict]\n"},
+    {C_INFO, "spancast info MODEL [--faithful] [--strict] [--threads=N]\n"},
     {C_SPANS,
      "spancast spans MODEL --ray=OX,OY,OZ,DX,DY,DZ | --rays=FILE | --pixel=I,J\n"
      "                      [--both-ways] [--json] [--strict] [camera options]\n"},
@@ -150,6 +150,9 @@ static const section sections[] = {
      "  --threads=N            worker threads (default 0: all cores)\n"},
     {C_CHECKS | C_SPANS | C_INSIDE, B_QUERY, NULL, "options:\n",
      "  --json                 the report as JSON on stdout\n"},
+    {C_INFO | C_ALONE, B_QUERY, NULL, "options:\n",
+     "  --threads=N            threads to load with (default 0: all cores; a file\n"
+     "                         of 1 MiB or more is parsed in two parts at once)\n"},
     {C_CHECKS | C_SPANS | C_INSIDE | C_INFO, B_QUERY, NULL, "options:\n",
      "  --faithful             the polyhedra OpenSCAD makes (default: exact solids)\n"
      "  --strict               a warning that leaves a part out or renders it\n"

@@ -164,7 +164,7 @@ static const opt_spec options_table[] = {
     {"--projection", OPT_PROJECTION, 1, 1},
     {"--viewall", OPT_VIEWALL, 0, 1},
     {"--autocenter", OPT_AUTOCENTER, 0, 1},
-    {"--threads", OPT_THREADS, 1, 1},
+    {"--threads", OPT_THREADS, 1, 0},
     {"--quiet", OPT_QUIET, 0, 0},
     {"--normal", OPT_NORMAL, 1, 1},
     {"--id", OPT_ID, 1, 1},

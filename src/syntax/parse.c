@@ -988,8 +988,7 @@ typedef struct split {
  * a block, a string or a comment, end a statement, or a line. */
 static int scan_stop(unsigned char c)
 {
-    return c == '{' || c == '}' || c == ';' || c == '"' || c == '/' || c == '\n' ||
-           c == '\\';
+    return c == '{' || c == '}' || c == ';' || c == '"' || c == '/' || c == '\n';
 }
 
 /* Scans the text for the boundary: the first statement end (a ';', or a
