@@ -229,6 +229,82 @@ static csg_tree *finish(csg_builder *b, uint32_t root)
     return t;
 }
 
+/* tree's leaf counts (t->leaf_counts: kinds and materials, counted as the
+ * builder made the leaves) against a walk over its leaves. */
+static void check_leaf_counts(const csg_tree *t)
+{
+    assert_true(t->leaf_counts);
+    uint32_t kinds[PRIM_KIND_COUNT] = {0};
+    for (uint32_t i = 0; i < t->leaf_count; i++) {
+        kinds[t->leaves[i].prim.kind]++;
+        assert_true(t->leaves[i].material < t->material_slots);
+    }
+    for (int k = 0; k < PRIM_KIND_COUNT; k++)
+        assert_int_equal(t->kind_leaves[k], kinds[k]);
+    for (uint32_t m = 0; m < t->material_slots; m++) {
+        uint32_t n = 0;
+        for (uint32_t i = 0; i < t->leaf_count; i++)
+            n += t->leaves[i].material == m;
+        assert_int_equal(t->material_leaves[m], n);
+    }
+}
+
+/* A sphere leaf of radius r at c, with material m. */
+static uint32_t add_sphere_in(csg_builder *b, vec3 c, double r, uint32_t m)
+{
+    prim p = {.kind = PRIM_SPHERE};
+    p.u.sphere.r = r;
+    affine w = affine_identity();
+    w.m[0][3] = c.x;
+    w.m[1][3] = c.y;
+    w.m[2][3] = c.z;
+    uint32_t id = csg_builder_leaf(b, &p, &w, white, no_loc);
+    assert_int_not_equal(id, CSG_EMPTY);
+    csg_builder_set_material(b, id, m);
+    return id;
+}
+
+/* The counts statistics read instead of every leaf (sc_scene_get_info):
+ * every leaf kept in order (the builder's counts, a material set twice);
+ * leaves the compile drops (a subtrahend whose box misses, an
+ * intersection of disjoint boxes), so the kept ones are copied and
+ * counted; and a material index past those counted, where no counts are
+ * kept and statistics read the leaves. */
+static void test_leaf_counts(void **state)
+{
+    (void)state;
+    affine id = affine_identity();
+    for (int drop = 0; drop < 2; drop++) {
+        csg_builder *b = csg_builder_new();
+        uint32_t kids[6], n = 0;
+        kids[n++] = add_box(b, v3(0, 0, 0), v3(1, 1, 1), &id);
+        kids[n++] = add_sphere_in(b, v3(3, 0, 0), 1, 2);
+        kids[n++] = add_sphere_in(b, v3(6, 0, 0), 1, 5);
+        csg_builder_set_material(b, kids[1], 3); /* counted once, as 3 */
+        if (drop) {
+            uint32_t cut[2] = {add_sphere_in(b, v3(9, 0, 0), 1, 1),
+                               add_box(b, v3(50, 50, 50), v3(51, 51, 51), &id)};
+            kids[n++] = csg_builder_op(b, CSG_DIFFERENCE, cut, 2);
+            uint32_t apart[2] = {add_box(b, v3(0, 5, 0), v3(1, 6, 1), &id),
+                                 add_sphere_in(b, v3(20, 5, 0), 1, 4)};
+            kids[n++] = csg_builder_op(b, CSG_INTERSECTION, apart, 2);
+        }
+        csg_tree *t = finish(b, csg_builder_op(b, CSG_UNION, kids, n));
+        check_leaf_counts(t);
+        assert_int_equal(t->leaf_count, drop ? 4 : 3);
+        assert_int_equal(t->kind_leaves[PRIM_SPHERE], drop ? 3 : 2);
+        assert_int_equal(t->material_leaves[3], 1);
+        assert_int_equal(t->material_leaves[2], 0);
+        csg_tree_free(t);
+    }
+    csg_builder *b = csg_builder_new();
+    uint32_t kids[2] = {add_box(b, v3(0, 0, 0), v3(1, 1, 1), &id),
+                        add_sphere_in(b, v3(3, 0, 0), 1, UINT32_MAX - 1)};
+    csg_tree *t = finish(b, csg_builder_op(b, CSG_UNION, kids, 2));
+    assert_false(t->leaf_counts);
+    csg_tree_free(t);
+}
+
 /* The scenes, under the model-to-world map m:
  *   0 difference() { cube(10); cube([10, 10, 5]); }       -> [0,10]^2 x [5,10]
  *   1 the same with the subtrahend written as
@@ -2705,6 +2781,7 @@ int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_coincident_faces),
+        cmocka_unit_test(test_leaf_counts),
         cmocka_unit_test(test_random_trees),
         cmocka_unit_test(test_bounds_culling),
         cmocka_unit_test(test_ray_in_face_plane),

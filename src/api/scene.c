@@ -277,6 +277,19 @@ static void scene_info(const sc_scene *scene, sc_scene_info *info)
     const shading *look = scene->look;
     info->lights = look ? look->light_count : 0;
     info->flat_2d = look && look->flat_2d;
+    if (t->leaf_counts) { /* counted as the leaves were made */
+        for (int k = 0; k < PRIM_KIND_COUNT && k < SC_LEAF_KINDS; k++)
+            info->leaf_kinds[k] = t->kind_leaves[k];
+        uint32_t materials = look ? look->material_count : 0;
+        for (uint32_t m = 0; m < t->material_slots && m < materials; m++) {
+            const shading_material *s = &look->materials[m];
+            uint32_t n = t->material_leaves[m];
+            info->mirror_leaves += s->reflect > 0 ? n : 0;
+            info->glass_leaves += s->transmit > 0 ? n : 0;
+            info->checker_leaves += s->checker > 0 ? n : 0;
+        }
+        return;
+    }
     for (uint32_t i = 0; i < t->leaf_count; i++) {
         const csg_leaf *l = &t->leaves[i];
         if ((int)l->prim.kind < SC_LEAF_KINDS)

@@ -48,8 +48,38 @@ struct csg_builder {
      * in on another core while the builder fills them (mem_prefault) */
     mem_prefault *prefault[2];
     uint32_t moving; /* leaves given a motion */
+    /* the leaves per kind and per material index (the tree's leaf_counts);
+     * counts_lost once an index could not be counted */
+    uint32_t kind_leaves[PRIM_KIND_COUNT];
+    uint32_t *material_leaves; /* malloc'd, material_slots of them */
+    uint32_t material_slots;
+    int counts_lost;
     int failed;
 };
+
+/* Material indices counted per leaf at most (the counts of a file with more
+ * materials are not kept). */
+#define MATERIAL_SLOTS_MAX (1u << 20)
+
+/* Adds delta to the leaves of material index m. */
+static void count_material(csg_builder *b, uint32_t m, int delta)
+{
+    if (b->counts_lost)
+        return;
+    if (m >= b->material_slots) {
+        uint32_t old = b->material_slots, cap = old;
+        if (delta < 0 || m >= MATERIAL_SLOTS_MAX ||
+            !grow_array32((void **)&b->material_leaves, &cap, m + 1,
+                          sizeof *b->material_leaves)) {
+            b->counts_lost = 1;
+            return;
+        }
+        memset(b->material_leaves + old, 0,
+               (size_t)(cap - old) * sizeof *b->material_leaves);
+        b->material_slots = cap;
+    }
+    b->material_leaves[m] += (uint32_t)delta;
+}
 
 /* Waits for the faulting-in of the arrays' pages: before they may move,
  * or are read. */
@@ -79,6 +109,7 @@ void csg_builder_free(csg_builder *b)
     free(b->child_ids);
     free(b->leaves);
     free(b->spare);
+    free(b->material_leaves);
     free(b);
 }
 
@@ -186,15 +217,25 @@ uint32_t csg_builder_leaf(csg_builder *b, const prim *p, const affine *to_world,
                   .bvh = CSG_NO_BVH,
                   .bounds = world_box(to_world, prim_bounds(p))};
     uint32_t id = add_node(b, &n);
-    if (id != CSG_EMPTY)
+    if (id != CSG_EMPTY) {
         b->leaf_count++;
+        if ((unsigned)p->kind < PRIM_KIND_COUNT)
+            b->kind_leaves[p->kind]++;
+        else
+            b->counts_lost = 1;
+        count_material(b, 0, 1);
+    }
     return id;
 }
 
 void csg_builder_set_material(csg_builder *b, uint32_t id, uint32_t material)
 {
-    if (id < b->node_count && b->nodes[id].op == CSG_LEAF)
-        b->leaves[b->nodes[id].leaf].material = material;
+    if (id < b->node_count && b->nodes[id].op == CSG_LEAF) {
+        csg_leaf *l = &b->leaves[b->nodes[id].leaf];
+        count_material(b, l->material, -1);
+        count_material(b, material, 1);
+        l->material = material;
+    }
 }
 
 /* Samples of a motion's time taken for its bounds, and steps between two
@@ -596,6 +637,17 @@ static void *take_array(void **v, size_t count, size_t elem)
  * behind by flattening), the compiled nodes and child lists keep their
  * places and become the tree's, and so does the BVH's array: at 10^6
  * leaves, 150 MB neither copied nor touched for the first time. */
+/* Counts leaf l, copied into tree t, in t's kinds and in materials (the
+ * tree's material counts, the builder's size; NULL when it has none). */
+static void count_copied(csg_tree *t, uint32_t *materials, const csg_builder *b,
+                         const csg_leaf *l)
+{
+    if ((unsigned)l->prim.kind < PRIM_KIND_COUNT)
+        t->kind_leaves[l->prim.kind]++;
+    if (materials && l->material < b->material_slots)
+        materials[l->material]++;
+}
+
 static int freeze(csg_tree *t, compiler *c, csg_builder *b, uint32_t root)
 {
     unsigned char *marks;
@@ -647,13 +699,28 @@ static int freeze(csg_tree *t, compiler *c, csg_builder *b, uint32_t root)
             ok = (leaves = arena_calloc(&t->mem, leaf_total, sizeof *leaves)) != NULL;
         }
     }
+    /* The leaves' counts: the builder's when every leaf is kept in order,
+     * else those of the leaves copied. */
+    uint32_t *materials = NULL;
+    int counted = ok && !b->counts_lost;
+    if (counted && b->material_slots) {
+        materials = arena_calloc(&t->mem, b->material_slots, sizeof *materials);
+        counted = materials != NULL;
+    }
+    if (counted && in_order) {
+        memcpy(t->kind_leaves, b->kind_leaves, sizeof t->kind_leaves);
+        if (b->material_slots)
+            memcpy(materials, b->material_leaves, b->material_slots * sizeof *materials);
+    }
     uint32_t count = 0, leaf_count = 0, kid_count = 0;
     for (uint32_t i = 0; ok && whole && i < reached; i++) {
         /* In place: the numbering and the child lists stay as they are. */
         csg_node *n = &nodes[i];
         if (n->op == CSG_LEAF) {
-            if (!in_order)
+            if (!in_order) {
                 leaves[leaf_count] = b->leaves[n->leaf];
+                count_copied(t, materials, b, &leaves[leaf_count]);
+            }
             n->leaf = leaf_count++;
         }
         renumber[i] = count++;
@@ -663,8 +730,10 @@ static int freeze(csg_tree *t, compiler *c, csg_builder *b, uint32_t root)
             continue;
         csg_node n = c->nodes[i];
         if (n.op == CSG_LEAF) {
-            if (!in_order)
+            if (!in_order) {
                 leaves[leaf_count] = b->leaves[n.leaf];
+                count_copied(t, materials, b, &leaves[leaf_count]);
+            }
             n.leaf = leaf_count++;
         } else {
             uint32_t first = kid_count;
@@ -692,6 +761,9 @@ static int freeze(csg_tree *t, compiler *c, csg_builder *b, uint32_t root)
         t->nodes = nodes;
         t->child_ids = kids;
         t->leaves = leaves;
+        t->leaf_counts = counted;
+        t->material_leaves = counted ? materials : NULL;
+        t->material_slots = counted ? b->material_slots : 0;
     }
     free(renumber);
     if (ok)

@@ -117,6 +117,15 @@ typedef struct csg_tree {
     int has_motion;    /* some leaf moves (its transform depends on the ray's time) */
     /* The tree as described, before simplification (reachable part). */
     uint32_t source_node_count, source_leaf_count, source_depth;
+    /* The leaves per primitive kind and per material index
+     * (material_leaves[m] for m < material_slots, in mem), counted as they
+     * were made, so that statistics need not read every leaf; leaf_counts
+     * is 0 where they were not kept (a tree made otherwise, an index too
+     * large to count): read the leaves then. */
+    int leaf_counts;
+    uint32_t kind_leaves[PRIM_KIND_COUNT];
+    uint32_t *material_leaves;
+    uint32_t material_slots;
 } csg_tree;
 
 /* ---- building ---- */
