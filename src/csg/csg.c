@@ -49,7 +49,7 @@ struct csg_builder {
     mem_prefault *prefault[2];
     uint32_t moving; /* leaves given a motion */
     /* the leaves per kind and per material index (the tree's leaf_counts);
-     * counts_lost once an index could not be counted */
+     * counts_lost once an index was too large to count */
     uint32_t kind_leaves[PRIM_KIND_COUNT];
     uint32_t *material_leaves; /* malloc'd, material_slots of them */
     uint32_t material_slots;
@@ -68,10 +68,13 @@ static void count_material(csg_builder *b, uint32_t m, int delta)
         return;
     if (m >= b->material_slots) {
         uint32_t old = b->material_slots, cap = old;
-        if (delta < 0 || m >= MATERIAL_SLOTS_MAX ||
-            !grow_array32((void **)&b->material_leaves, &cap, m + 1,
-                          sizeof *b->material_leaves)) {
+        if (delta < 0 || m >= MATERIAL_SLOTS_MAX) {
             b->counts_lost = 1;
+            return;
+        }
+        if (!grow_array32((void **)&b->material_leaves, &cap, m + 1,
+                          sizeof *b->material_leaves)) {
+            b->failed = 1; /* as for any of the builder's arrays */
             return;
         }
         memset(b->material_leaves + old, 0,
@@ -703,10 +706,9 @@ static int freeze(csg_tree *t, compiler *c, csg_builder *b, uint32_t root)
      * else those of the leaves copied. */
     uint32_t *materials = NULL;
     int counted = ok && !b->counts_lost;
-    if (counted && b->material_slots) {
-        materials = arena_calloc(&t->mem, b->material_slots, sizeof *materials);
-        counted = materials != NULL;
-    }
+    if (counted && b->material_slots)
+        ok = counted = (materials = arena_calloc(&t->mem, b->material_slots,
+                                                 sizeof *materials)) != NULL;
     if (counted && in_order) {
         memcpy(t->kind_leaves, b->kind_leaves, sizeof t->kind_leaves);
         if (b->material_slots)

@@ -120,8 +120,8 @@ typedef struct csg_tree {
     /* The leaves per primitive kind and per material index
      * (material_leaves[m] for m < material_slots, in mem), counted as they
      * were made, so that statistics need not read every leaf; leaf_counts
-     * is 0 where they were not kept (a tree made otherwise, an index too
-     * large to count): read the leaves then. */
+     * is 0 where they were not kept (a tree made otherwise, a material
+     * index too large to count): read the leaves then. */
     int leaf_counts;
     uint32_t kind_leaves[PRIM_KIND_COUNT];
     uint32_t *material_leaves;
