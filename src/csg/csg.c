@@ -629,17 +629,6 @@ static void *take_array(void **v, size_t count, size_t elem)
     return p;
 }
 
-/* Freezes the compiled nodes that root reaches into t, taking the
- * builder's leaves; returns 0 when memory ran out. Every array is written
- * once, in its final place: a million leaves of 368 bytes copied through
- * two temporaries made loading a million spheres touch three times their
- * size. When the tree keeps every leaf in source order (the usual case: a
- * leaf is dropped only when simplification removes it), the builder's own
- * array becomes the tree's, shrunk to size, and nothing is copied. In the
- * same way, when root reaches every compiled node (nothing was left
- * behind by flattening), the compiled nodes and child lists keep their
- * places and become the tree's, and so does the BVH's array: at 10^6
- * leaves, 150 MB neither copied nor touched for the first time. */
 /* Counts leaf l, copied into tree t, in t's kinds and in materials (the
  * tree's material counts, the builder's size; NULL when it has none). */
 static void count_copied(csg_tree *t, uint32_t *materials, const csg_builder *b,
@@ -651,6 +640,17 @@ static void count_copied(csg_tree *t, uint32_t *materials, const csg_builder *b,
         materials[l->material]++;
 }
 
+/* Freezes the compiled nodes that root reaches into t, taking the
+ * builder's leaves; returns 0 when memory ran out. Every array is written
+ * once, in its final place: a million leaves of 368 bytes copied through
+ * two temporaries made loading a million spheres touch three times their
+ * size. When the tree keeps every leaf in source order (the usual case: a
+ * leaf is dropped only when simplification removes it), the builder's own
+ * array becomes the tree's, shrunk to size, and nothing is copied. In the
+ * same way, when root reaches every compiled node (nothing was left
+ * behind by flattening), the compiled nodes and child lists keep their
+ * places and become the tree's, and so does the BVH's array: at 10^6
+ * leaves, 150 MB neither copied nor touched for the first time. */
 static int freeze(csg_tree *t, compiler *c, csg_builder *b, uint32_t root)
 {
     unsigned char *marks;

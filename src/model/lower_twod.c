@@ -236,13 +236,8 @@ static sc_status drawing_file(model_lowerer *l, const parse_value *file, model_d
  * neither. */
 static void far_drawing(model_drawing *d)
 {
-    d->far = 0;
-    if (d->format != MODEL_DRAWING_DXF)
-        return;
-    if (!isfinite(d->origin[0]) || !isfinite(d->origin[1]))
-        d->far |= MODEL_DRAWING_FAR_ORIGIN;
-    if (!isfinite(d->scale))
-        d->far |= MODEL_DRAWING_FAR_SCALE;
+    d->far = d->format == MODEL_DRAWING_DXF &&
+             !(isfinite(d->origin[0]) && isfinite(d->origin[1]) && isfinite(d->scale));
 }
 
 static sc_status lower_drawing(model_lowerer *l, const parse_node *n, model_node *out)

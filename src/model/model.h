@@ -282,8 +282,6 @@ typedef enum model_drawing_format {
 /* import(file = "x.dxf", layer, origin, scale, $fn, $fa, $fs) and
  * import(file = "x.svg", center, dpi) in 2D; also the drawing of an
  * extrusion's file form (lower_twod.c), lowered as its only child. */
-enum { MODEL_DRAWING_FAR_ORIGIN = 1, MODEL_DRAWING_FAR_SCALE = 2 };
-
 typedef struct model_drawing {
     const char *file; /* as written */
     sc_location file_loc;
@@ -291,9 +289,9 @@ typedef struct model_drawing {
     int not_2d;              /* not a .dxf nor .svg: the builder names its context */
     const char *layer;       /* or NULL (DXF) */
     double origin[2], scale; /* DXF: scale > 0, or not finite */
-    /* DXF: an origin (MODEL_DRAWING_FAR_ORIGIN) or scale (MODEL_DRAWING_FAR_SCALE)
-     * that is not finite puts every point at no finite place, so the drawing is
-     * empty, as OpenSCAD 2021.01 draws it; 0 when both are finite */
+    /* DXF: 1 when the origin or the scale is not finite, which puts every
+     * point at no finite place, so the drawing is empty, as OpenSCAD
+     * 2021.01 draws it */
     int far;
     int center; /* SVG: centre the drawing's bounds on the origin */
     double dpi; /* SVG: user units to the inch, >= 0.001 */
