@@ -157,6 +157,61 @@ empty3d.csg:18:2: warning: Ignoring 3D child object for 2D operation" $mode
     same empty3d_flat.csg empty3d_flat_ref.csg $mode
 done
 
+# A difference, intersection or minkowski among those 3D children is
+# evaluated with CGAL first (openscad -o /abs/x.stl x.csg prints exactly
+# these): one that comes out empty mixes nothing and is only ignored; an
+# intersection with an empty operand, and a hull of nothing, are no
+# geometry at all, not even ignored; a mesh in one that is not closed gets
+# CGAL's error (the warning here, the error with --strict), in a '%' child
+# too, and so does one in a union of two or more solids, which CGAL
+# unites. Boxes that touch meet in a face, which CGAL's solid keeps: that one
+# mixes.
+sq='square(size = [10, 6], center = false);'
+apart='intersection() {
+		cube(size = [1, 1, 1], center = false);
+		multmatrix([[1, 0, 0, 5], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]) {
+			cube(size = [1, 1, 1], center = false);
+		}
+	}'
+open='polyhedron(points = [[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1]], faces = [[0, 1, 2], [0, 3, 1], [1, 3, 2]], convexity = 1);'
+printf 'union() {\n\t%s\n\t%s\n}\n' "$sq" "$apart" >cgal_apart.csg
+sed 's/\[\[1, 0, 0, 5\]/[[1, 0, 0, 1]/' cgal_apart.csg >cgal_touch.csg
+printf 'union() {\n\t%s\n\thull() {\n\t%s\n\t}\n}\n' "$sq" "$apart" >cgal_hull.csg
+printf 'union() {\n\t%s\n\tdifference() {\n\t\tcube(size = [1, 1, 1], center = false);\n\t\tcube(size = [3, 3, 3], center = true);\n\t}\n}\n' "$sq" >cgal_cut.csg
+printf 'union() {\n\t%s\n\tintersection() {\n\t\tcube(size = [0, 1, 1], center = false);\n\t\tcube(size = [1, 1, 1], center = false);\n\t}\n}\n' "$sq" >cgal_first.csg
+printf 'linear_extrude(height = 3) {\n\t%s\n\tintersection() {\n\t\tcube(size = [0, 1, 1], center = false);\n\t\tcube(size = [1, 0, 1], center = false);\n\t}\n}\n' "$sq" >cgal_extrude.csg
+for op in intersection minkowski; do
+    printf 'union() {\n\t%s\n\t%s() {\n\t\tcube(size = [1, 1, 1], center = false);\n\t\t%s\n\t}\n}\n' "$sq" "$op" "$open" >"cgal_open_$op.csg"
+done
+printf 'union() {\n\t%s\n\tmultmatrix([[1, 0, 0, 3], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]) {\n\t\tcube(size = [1, 1, 1], center = false);\n\t\t%s\n\t}\n}\n' "$sq" "$open" >cgal_open_union.csg
+printf 'union() {\n\t%s\n\t%%intersection() {\n\t\tcube(size = [1, 1, 1], center = false);\n\t\t%s\n\t}\n}\n' "$sq" "$open" >cgal_open_bg.csg
+not_closed='polyhedron is not closed (edge 0-2 is used by 1 face)'
+cgal_said='as OpenSCAD leaves it out ("The given mesh is not closed! Unable to convert to CGAL_Nef_Polyhedron.")'
+for mode in "" --faithful; do
+    # shellcheck disable=SC2086
+    {
+        warns cgal_apart.csg "cgal_apart.csg:3:2: warning: Ignoring 3D child object for 2D operation" $mode
+        warns cgal_touch.csg "cgal_touch.csg:3:2: warning: Mixing 2D and 3D objects is not supported
+cgal_touch.csg:3:2: warning: Ignoring 3D child object for 2D operation" $mode
+        warns cgal_hull.csg "" $mode
+        warns cgal_cut.csg "cgal_cut.csg:3:2: warning: Ignoring 3D child object for 2D operation" $mode
+        warns cgal_first.csg "cgal_first.csg:3:2: warning: Ignoring 3D child object for 2D operation" $mode
+        warns cgal_extrude.csg "" $mode
+        warns cgal_open_intersection.csg "cgal_open_intersection.csg:5:3: warning: $not_closed; left out, $cgal_said" $mode
+        warns cgal_open_minkowski.csg "cgal_open_minkowski.csg:5:3: warning: $not_closed; the minkowski is empty, $cgal_said
+cgal_open_minkowski.csg:3:2: warning: Ignoring 3D child object for 2D operation" $mode
+        warns cgal_open_union.csg "cgal_open_union.csg:5:3: warning: $not_closed; left out, $cgal_said
+cgal_open_union.csg:3:2: warning: Mixing 2D and 3D objects is not supported
+cgal_open_union.csg:3:2: warning: Ignoring 3D child object for 2D operation" $mode
+        warns cgal_open_bg.csg "cgal_open_bg.csg:5:3: warning: $not_closed; left out, $cgal_said" $mode
+        refuses cgal_open_intersection.csg "cgal_open_intersection.csg:5:3: error: $not_closed" $mode
+        for f in apart touch hull cut first open_intersection open_minkowski open_union open_bg; do
+            same "cgal_$f.csg" empty3d_ref.csg $mode
+        done
+        same cgal_extrude.csg extrude_ref.csg $mode
+    }
+done
+
 # The first object decides, as in OpenSCAD: a file that starts with a 2D
 # object is a 2D model, its 3D objects left out.
 printf 'square(size = [10, 4], center = false);\ncube(size = [3, 3, 3], center = false);\n' >first2d.csg

@@ -97,6 +97,10 @@ typedef struct walk {
     int in_union;
     /* a minkowski's: set when a mesh among its children is not closed */
     int *not_closed;
+    /* the node build_nef_evaluate evaluates, and what it says of its
+     * operands (NULL elsewhere) */
+    const model_node *top;
+    build_nef_state *state;
 } walk;
 
 /* Each resize node's matrix, computed once per build: a resize inside a
@@ -731,7 +735,7 @@ static sc_status collect(const walk *w, const model_node *parent, const affine *
             }
             free(set.p);
         } else if (kind == MODEL_HULL) {
-            walk inner = {c, "hull", 0, w->cache, w->nef, w->check, 0, NULL};
+            walk inner = {c, "hull", 0, w->cache, w->nef, w->check, 0, NULL, NULL, NULL};
             partlist sub = {NULL, 0, 0};
             st = collect(&inner, n, m, depth + 1, &sub);
             pointset *part = NULL;
@@ -789,7 +793,8 @@ static sc_status minkowski_parts(const walk *w, const model_node *n, const affin
                                  int depth, partlist *out, int *not_closed)
 {
     *not_closed = 0;
-    walk inner = {w->c, "minkowski", 1, w->cache, w->nef, w->check, 0, not_closed};
+    walk inner = {w->c,     "minkowski", 1,          w->cache, w->nef,
+                  w->check, 0,           not_closed, NULL,     NULL};
     partlist acc = {NULL, 0, 0};
     sc_status st = SC_OK;
     int first = 1;
@@ -1093,6 +1098,12 @@ static sc_status nef_children(const walk *w, const model_node *parent, const aff
         }
         nef_solid *s = NULL; /* a 2D child: the empty solid, as OpenSCAD ignores it */
         sc_status st = is_2d(n) ? check_2d(w, n, &mixing) : nef_node(w, n, m, depth, &s);
+        if (parent == w->top && w->state) {
+            if (first)
+                w->state->first_empty = !s;
+            else
+                w->state->later_empty |= !s;
+        }
         if (st == SC_OK)
             st = nef_combine(w, n, out, first ? NEF_UNION : op, s);
         first = 0;
@@ -1273,7 +1284,7 @@ static sc_status nef_node(const walk *w, const model_node *n, const affine *m, i
             st = part ? shape_points(w, n, &s, m, part) : err_nomem(c->error, &n->loc);
         }
     } else if (kind == MODEL_HULL) {
-        walk inner = {c, "hull", 0, w->cache, w->nef, w->check, 0, NULL};
+        walk inner = {c, "hull", 0, w->cache, w->nef, w->check, 0, NULL, NULL, NULL};
         partlist sub = {NULL, 0, 0};
         st = collect(&inner, n, m, depth + 1, &sub);
         pointset *part = NULL;
@@ -1359,7 +1370,7 @@ sc_status build_nef_triangles(const build_ctx *c, const model_node *n, const cha
     *tris = NULL;
     *tri_count = 0;
     nef_plugin nef = {0};
-    walk w = {c, owner, 0, cache, &nef, 0, 0, NULL};
+    walk w = {c, owner, 0, cache, &nef, 0, 0, NULL, NULL, NULL};
     nef_solid *solid = NULL;
     affine id = affine_identity();
     sc_status st = nef_ready(&w, n);
@@ -1396,6 +1407,71 @@ sc_status build_nef_triangles(const build_ctx *c, const model_node *n, const cha
     }
     if (solid)
         nef.release(solid);
+    nef_plugin_close(&nef);
+    return st;
+}
+
+/* Whether the walk takes every node of 3D subtree n as OpenSCAD's: its
+ * kinds (not spancast's own leaves, which OpenSCAD has no mesh of), none
+ * with a pending argument error. A 2D subtree goes whole to the 2D
+ * engine, which takes every 2D node. */
+static int nef_walkable(const model_node *n, int depth)
+{
+    if (depth > BUILD_HULL_MAX_DEPTH)
+        return 0;
+    if ((n->modifiers & MODEL_MOD_DISABLE) || is_shading(n->kind) || is_2d(n))
+        return 1;
+    if (n->pending)
+        return 0;
+    switch (n->kind) {
+    case MODEL_CUBE:
+    case MODEL_SPHERE:
+    case MODEL_CYLINDER:
+    case MODEL_POLYHEDRON:
+    case MODEL_IMPORT:
+    case MODEL_LINEAR_EXTRUDE:
+    case MODEL_ROTATE_EXTRUDE:
+    case MODEL_SURFACE:
+        return 1;
+    case MODEL_UNION:
+    case MODEL_COLOR:
+    case MODEL_MATERIAL:
+    case MODEL_XFORM:
+    case MODEL_RESIZE:
+    case MODEL_DIFFERENCE:
+    case MODEL_INTERSECTION:
+    case MODEL_HULL:
+    case MODEL_MINKOWSKI:
+        for (const model_node *k = n->first_child; k; k = k->next)
+            if (!nef_walkable(k, depth + 1))
+                return 0;
+        return 1;
+    default:
+        return 0;
+    }
+}
+
+sc_status build_nef_evaluate(const build_ctx *c, const model_node *n,
+                             build_nef_state *out)
+{
+    memset(out, 0, sizeof *out);
+    nef_plugin nef = {0};
+    char why[600];
+    if (!nef_walkable(n, 0) || !nef_plugin_open(&nef, why, sizeof why))
+        return SC_OK;
+    build_ctx own = *c;
+    own.nefs = NULL; /* each operand evaluated here, for out's flags */
+    build_resize_cache *cache = NULL;
+    walk w = {&own, n->name, 0, &cache, &nef, 0, 0, NULL, n, out};
+    nef_solid *solid = NULL;
+    affine id = affine_identity();
+    sc_status st = nef_node(&w, n, &id, 0, &solid);
+    build_imports_done(c, n);
+    out->walked = st == SC_OK;
+    out->empty = !solid;
+    if (solid)
+        nef.release(solid);
+    build_resize_cache_free(cache);
     nef_plugin_close(&nef);
     return st;
 }
@@ -1470,7 +1546,7 @@ sc_status build_hull(const build_ctx *c, const model_node *n, int emit,
 {
     memset(out, 0, sizeof *out);
     nef_plugin nef = {0};
-    walk w = {c, "hull", 0, cache, &nef, !emit, 0, NULL};
+    walk w = {c, "hull", 0, cache, &nef, !emit, 0, NULL, NULL, NULL};
     partlist parts = {NULL, 0, 0};
     affine id = affine_identity();
     sc_status st = collect(&w, n, &id, 0, &parts);
@@ -1500,7 +1576,7 @@ sc_status build_minkowski(const build_ctx *c, const model_node *n, int emit,
 {
     memset(out, 0, sizeof *out);
     nef_plugin nef = {0};
-    walk w = {c, "minkowski", 1, cache, &nef, !emit, 0, NULL};
+    walk w = {c, "minkowski", 1, cache, &nef, !emit, 0, NULL, NULL, NULL};
     partlist parts = {NULL, 0, 0};
     affine id = affine_identity();
     int not_closed;
@@ -1811,7 +1887,7 @@ sc_status build_resize(const build_ctx *c, const model_node *n,
                        build_resize_cache **cache, affine *out, const char **warning)
 {
     nef_plugin nef = {0};
-    walk w = {c, "resize", 0, cache, &nef, 0, 0, NULL};
+    walk w = {c, "resize", 0, cache, &nef, 0, 0, NULL, NULL, NULL};
     const model_node *measured = n->u.resize->measured ? n->u.resize->measured : n;
     sc_status st = resize_matrix(&w, measured, 0, out, warning);
     nef_plugin_close(&nef);

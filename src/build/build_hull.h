@@ -62,6 +62,25 @@ sc_status build_nef_triangles(const build_ctx *c, const model_node *n, const cha
                               build_resize_cache **cache, int own, vec3 **tris,
                               uint32_t *tri_count);
 
+/* What OpenSCAD 2021.01's CGAL evaluation makes of a 3D subtree
+ * (build_nef_evaluate). */
+typedef struct build_nef_state {
+    int walked;      /* 0: not evaluated (a node CGAL does not take here, or
+                      * no plugin) */
+    int empty;       /* the solid has no volume */
+    int first_empty; /* the first operand of n (a boolean) has none */
+    int later_empty; /* another operand has none */
+} build_nef_state;
+
+/* Evaluates 3D subtree n as OpenSCAD 2021.01 does with CGAL (its booleans,
+ * hulls and minkowski sums as Nef polyhedra), for its warnings (a mesh that
+ * is not closed: c->notes, or the error with --strict) and what *out says,
+ * where OpenSCAD evaluates a subtree it then leaves out. A subtree with a
+ * node the walk does not take, or a build without the CGAL plugin, is not
+ * evaluated (walked 0, SC_OK). */
+sc_status build_nef_evaluate(const build_ctx *c, const model_node *n,
+                             build_nef_state *out);
+
 /* resize(newsize, auto): the scale (a diagonal matrix in *out) that
  * OpenSCAD 2021.01 applies to the children, from their bounding box in the
  * resize node's frame. *warning is set (and *out the identity) when a

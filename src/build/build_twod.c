@@ -46,7 +46,7 @@
  * (once per operation, at the first 3D child whose geometry is not empty,
  * not from offset and the extrusions) and "Ignoring 3D child object for
  * 2D operation" (not for a child with no geometry at all:
- * build_presence_3d). The recursion over the children is the one 2D walk
+ * warn_3d). The recursion over the children is the one 2D walk
  * (twod_walk, below), with its depth guard (TWOD_WALK_MAX_DEPTH).
  */
 #include "build/build_twod.h"
@@ -58,6 +58,7 @@
 #include <string.h>
 
 #include "base/error.h"
+#include "build/build_hull.h"
 #include "build/build_mesh.h"
 #include "build/build_projection.h"
 #include "build/build_text.h"
@@ -234,38 +235,69 @@ static int positive_finite(double x)
     return x > 0 && isfinite(x);
 }
 
+/* What OpenSCAD 2021.01's geometry of the 3D node n is, which decides its
+ * warnings in a 2D operation: some (or not known to be empty), empty (a
+ * solid of no size: "Ignoring" it, but no "Mixing"), or none (nothing
+ * below it, or a 3D operation that CGAL ends with nothing: no warning at
+ * all). Its rules are those of OpenSCAD's 3D operations on empty and
+ * missing children (GeometryEvaluator.cc: applyToChildren3D, CGALUtils'
+ * applyOperator3D and applyHull), seen on OpenSCAD 2021.01 runs: the
+ * static rules (presence), and CGAL's solid where OpenSCAD evaluates a
+ * boolean or minkowski with it (warn_3d); an extrusion or import that
+ * turns out empty, or a union whose meshes CGAL would leave out, is taken
+ * as some. */
+typedef enum build_presence { BUILD_SOME, BUILD_EMPTY, BUILD_NONE } build_presence;
+
 static build_presence presence(const model_node *n, int in_2d, int depth);
 
-/* A 3D operation over the children that count (neither '%' nor '*', nor
- * 2D, which it ignores, nor shading nodes): none without any; a hull is
- * none unless a child is some; one child is itself; then union-like
- * operations are some when a child is, else none; a difference is its
- * first child; an intersection none when a child is empty or none. A
- * minkowski is taken as a union. */
+/* A 3D operation's children that count (neither '%' nor '*', nor 2D,
+ * which it ignores, nor shading nodes), folded one by one. */
+typedef struct presence_fold {
+    uint32_t count;
+    build_presence first;
+    int some, later_missing;
+} presence_fold;
+
+static int counts_3d(const model_node *k, int in_2d)
+{
+    return k->kind != MODEL_LIGHT && k->kind != MODEL_CAMERA &&
+           k->kind != MODEL_BACKGROUND && build_dim(k, in_2d) != 2;
+}
+
+static void fold_add(presence_fold *f, build_presence p)
+{
+    if (f->count++ == 0)
+        f->first = p;
+    else
+        f->later_missing |= p != BUILD_SOME;
+    f->some |= p == BUILD_SOME;
+}
+
+/* None without any; a hull is none unless a child is some; one child is
+ * itself; then union-like operations are some when a child is, else none;
+ * a difference is its first child; an intersection is its first child
+ * unless a later one is empty or none, which makes it none (CGALUtils'
+ * applyOperator3D). A minkowski is taken as a union. */
+static build_presence fold_result(const presence_fold *f, model_kind kind)
+{
+    if (f->count == 0)
+        return BUILD_NONE;
+    if (kind == MODEL_HULL)
+        return f->some ? BUILD_SOME : BUILD_NONE;
+    if (f->count == 1 || kind == MODEL_DIFFERENCE)
+        return f->first;
+    if (kind == MODEL_INTERSECTION)
+        return f->later_missing ? BUILD_NONE : f->first;
+    return f->some ? BUILD_SOME : BUILD_NONE;
+}
+
 static build_presence operation(const model_node *n, int in_2d, int depth)
 {
-    uint32_t count = 0;
-    build_presence first = BUILD_NONE;
-    int some = 0, missing = 0;
-    for (const model_node *k = twod_walk_first(n); k; k = twod_walk_next(k->next)) {
-        if (k->kind == MODEL_LIGHT || k->kind == MODEL_CAMERA ||
-            k->kind == MODEL_BACKGROUND || build_dim(k, in_2d) == 2)
-            continue;
-        build_presence p = presence(k, in_2d, depth + 1);
-        if (count++ == 0)
-            first = p;
-        some |= p == BUILD_SOME;
-        missing |= p != BUILD_SOME;
-    }
-    if (count == 0)
-        return BUILD_NONE;
-    if (n->kind == MODEL_HULL)
-        return some ? BUILD_SOME : BUILD_NONE;
-    if (count == 1 || n->kind == MODEL_DIFFERENCE)
-        return first;
-    if (n->kind == MODEL_INTERSECTION)
-        return missing ? BUILD_NONE : BUILD_SOME;
-    return some ? BUILD_SOME : BUILD_NONE;
+    presence_fold f = {0, BUILD_NONE, 0, 0};
+    for (const model_node *k = twod_walk_first(n); k; k = twod_walk_next(k->next))
+        if (counts_3d(k, in_2d))
+            fold_add(&f, presence(k, in_2d, depth + 1));
+    return fold_result(&f, n->kind);
 }
 
 /* Past the walk's depth limit some: the walks report that depth. */
@@ -307,11 +339,6 @@ static build_presence presence(const model_node *n, int in_2d, int depth)
     default:
         return BUILD_SOME;
     }
-}
-
-build_presence build_presence_3d(const model_node *n, int in_2d)
-{
-    return presence(n, in_2d, 0);
 }
 
 /* ---- OpenSCAD's evaluation ---- */
@@ -495,20 +522,24 @@ static sc_status ignore_3d(const eval *e, const model_node *k, int mixing)
 /* The warnings for the 3D children among the nodes from first on, once
  * they are all evaluated: that the operation mixes (when mixing is set),
  * at the first 3D child whose geometry is not empty, then each ignored,
- * but those with no geometry (build_presence_3d). */
-static sc_status ignore_3d_children(const eval *e, const model_node *first, int mixing)
+ * but those with no geometry. states[i] is what OpenSCAD's geometry of
+ * the i-th child that counts (not '*' or '%') is (warn_3d). */
+static sc_status ignore_3d_children(const eval *e, const model_node *first, int mixing,
+                                    const build_presence *states)
 {
     sc_status st = SC_OK;
+    uint32_t i = 0;
     for (const model_node *k = twod_walk_next(first); mixing && k;
-         k = twod_walk_next(k->next)) {
-        if (build_dim(k, e->in_2d) == 3 && build_presence_3d(k, e->in_2d) == BUILD_SOME) {
+         k = twod_walk_next(k->next), i++) {
+        if (build_dim(k, e->in_2d) == 3 && states[i] == BUILD_SOME) {
             st = build_mixing(e->c, &k->loc, 1);
             break;
         }
     }
+    i = 0;
     for (const model_node *k = twod_walk_next(first); st == SC_OK && k;
-         k = twod_walk_next(k->next)) {
-        if (build_dim(k, e->in_2d) == 3 && build_presence_3d(k, e->in_2d) != BUILD_NONE)
+         k = twod_walk_next(k->next), i++) {
+        if (build_dim(k, e->in_2d) == 3 && states[i] != BUILD_NONE)
             st = ignore_3d(e, k, 0);
     }
     return st;
@@ -541,25 +572,95 @@ static int flat_child(const eval *e, const model_node *n)
            (n->kind != MODEL_PROJECTION || build_projects(n));
 }
 
+/* Whether 3D subtree n has a polyhedron or a mesh import, which CGAL may
+ * find is not closed. */
+static int has_mesh(const model_node *n, int in_2d, int depth)
+{
+    if (depth > TWOD_WALK_MAX_DEPTH || build_dim(n, in_2d) == 2)
+        return 0;
+    if (n->kind == MODEL_POLYHEDRON || n->kind == MODEL_IMPORT)
+        return 1;
+    for (const model_node *k = n->first_child; k; k = k->next)
+        if (!(k->modifiers & MODEL_MOD_DISABLE) && has_mesh(k, in_2d, depth + 1))
+            return 1;
+    return 0;
+}
+
+/* Whether OpenSCAD 2021.01 evaluates 3D operation n with CGAL (as Nef
+ * polyhedra): a difference or intersection of two or more children (2D
+ * ones among them, which are empty operands), a minkowski or union of two
+ * or more that are not empty. A union is taken there only with a mesh
+ * below it, the one thing CGAL can find wrong in it. */
+static int cgal_operation(const eval *e, const model_node *n)
+{
+    int boolean = n->kind == MODEL_DIFFERENCE || n->kind == MODEL_INTERSECTION;
+    int sum = n->kind == MODEL_MINKOWSKI;
+    int unites = n->kind == MODEL_UNION || n->kind == MODEL_COLOR ||
+                 n->kind == MODEL_MATERIAL || n->kind == MODEL_XFORM ||
+                 n->kind == MODEL_RESIZE;
+    if (!boolean && !sum && !(unites && has_mesh(n, e->in_2d, 0)))
+        return 0;
+    uint32_t count = 0;
+    for (const model_node *k = twod_walk_first(n); k; k = twod_walk_next(k->next)) {
+        if (k->kind == MODEL_LIGHT || k->kind == MODEL_CAMERA ||
+            k->kind == MODEL_BACKGROUND)
+            continue;
+        if (boolean)
+            count++;
+        else
+            count += counts_3d(k, e->in_2d) && presence(k, e->in_2d, 0) == BUILD_SOME;
+    }
+    return count >= 2;
+}
+
+/* What OpenSCAD's geometry of n is after CGAL evaluated it (s): a boolean
+ * whose first operand has no geometry at all (2D, or none) has none; an
+ * intersection with a later operand that is empty has none
+ * (applyOperator3D); otherwise empty or some as the solid is. */
+static build_presence cgal_presence(const eval *e, const model_node *n,
+                                    const build_nef_state *s)
+{
+    if (n->kind == MODEL_DIFFERENCE || n->kind == MODEL_INTERSECTION) {
+        const model_node *first = twod_walk_first(n);
+        while (first && (first->kind == MODEL_LIGHT || first->kind == MODEL_CAMERA ||
+                         first->kind == MODEL_BACKGROUND))
+            first = twod_walk_next(first->next);
+        if (s->first_empty && first &&
+            (build_dim(first, e->in_2d) == 2 ||
+             presence(first, e->in_2d, 0) == BUILD_NONE))
+            return BUILD_NONE;
+        if (n->kind == MODEL_INTERSECTION && s->later_empty)
+            return BUILD_NONE;
+    }
+    return s->empty ? BUILD_EMPTY : BUILD_SOME;
+}
+
 /* The warnings of a 3D subtree n that is left out here (a child of a 2D
  * operation, or a '%' one), as OpenSCAD 2021.01 evaluates it before it
- * leaves it out: its 2D parts through this engine (a polygon's point), a 3D
- * operation's own check of its children's dimensions once they are
- * evaluated (build_mixing, build_ignoring, as build.c's flush_ignored:
- * not under a multmatrix removed for a nan or inf entry, which is said
- * instead), an extrusion's 2D children, a polyhedron's indices and
- * points, an import of a file no reader takes. '%' children below give
- * their warnings too, and are not operands. What needs the solid's
- * geometry (a mesh that is not closed) says nothing, as in the 3D walk's
- * subtrees that are only warned of. */
-static sc_status warn_3d(eval *e, const model_node *n, int depth)
+ * leaves it out, and in *state (when not NULL) what its geometry is, which
+ * decides its parent's warnings: its 2D parts through this engine (a
+ * polygon's point), a 3D operation's own check of its children's
+ * dimensions once they are evaluated (build_mixing, build_ignoring, as
+ * build.c's flush_ignored: not under a multmatrix removed for a nan or inf
+ * entry, which is said instead), an extrusion's 2D children, a
+ * polyhedron's indices and points, an import of a file no reader takes.
+ * '%' children below give their warnings too, and are not operands. A
+ * boolean or minkowski that OpenSCAD evaluates with CGAL is evaluated so
+ * (build_nef_evaluate): the warnings of its subtree, a mesh in it that is
+ * not closed among them, and whether it comes out empty. */
+static sc_status warn_3d(eval *e, const model_node *n, int depth, build_presence *state)
 {
+    build_presence unused;
+    if (!state)
+        state = &unused;
+    *state = BUILD_SOME;
     if (depth > TWOD_WALK_MAX_DEPTH)
         return err_set(e->c->error, SC_ERR_LIMIT, &n->loc,
                        "too many nested %s in %s (limit is %d)", e->walk.nested,
                        e->walk.outer, TWOD_WALK_MAX_DEPTH);
     switch (n->kind) {
     case MODEL_POLYHEDRON:
+        *state = presence(n, e->in_2d, depth);
         return build_bad_indices(e->c, n);
     case MODEL_IMPORT:
         return unsupported_import(e, n);
@@ -583,23 +684,39 @@ static sc_status warn_3d(eval *e, const model_node *n, int depth)
     case MODEL_MINKOWSKI:
         break;
     default:
+        *state = presence(n, e->in_2d, depth);
         return SC_OK;
     }
+    if (e->c->notes && cgal_operation(e, n)) {
+        build_nef_state cgal;
+        sc_status st = build_nef_evaluate(e->c, n, &cgal);
+        if (st != SC_OK || cgal.walked) {
+            *state = cgal_presence(e, n, &cgal);
+            return st;
+        }
+    }
     const model_node *mixing = NULL; /* the first 2D child that is not empty */
+    presence_fold fold = {0, BUILD_NONE, 0, 0};
     for (const model_node *k = n->first_child; k; k = k->next) {
         if (k->modifiers & MODEL_MOD_DISABLE)
             continue;
-        int empty = 1;
+        int empty = 1, operand = !(k->modifiers & MODEL_MOD_BACKGROUND);
+        build_presence p = BUILD_NONE;
         sc_status st = build_dim(k, e->in_2d) == 2 ? eval_only(e, k, depth + 1, &empty)
-                                                   : warn_3d(e, k, depth + 1);
+                                                   : warn_3d(e, k, depth + 1, &p);
         if (st != SC_OK)
             return st;
-        if (!mixing && !empty && !(k->modifiers & MODEL_MOD_BACKGROUND) &&
-            flat_child(e, k))
+        if (operand && counts_3d(k, e->in_2d))
+            fold_add(&fold, p);
+        if (!mixing && !empty && operand && flat_child(e, k))
             mixing = k;
     }
-    if (n->kind == MODEL_XFORM && n->not_finite)
+    if (!n->unsized)
+        *state = fold_result(&fold, n->kind);
+    if (n->kind == MODEL_XFORM && n->not_finite) {
+        *state = BUILD_NONE;
         return build_xform_not_finite(e->c, n);
+    }
     sc_status st = mixing ? build_mixing(e->c, &mixing->loc, 0) : SC_OK;
     for (const model_node *k = twod_walk_first(n); st == SC_OK && k;
          k = twod_walk_next(k->next)) {
@@ -613,7 +730,7 @@ static sc_status warn_3d(eval *e, const model_node *n, int depth)
 static sc_status background(eval *e, const model_node *k, int depth)
 {
     return build_dim(k, e->in_2d) == 2 ? eval_only(e, k, depth, NULL)
-                                       : warn_3d(e, k, depth);
+                                       : warn_3d(e, k, depth, NULL);
 }
 
 /* The regions of the nodes from first on, the children of an operation of
@@ -633,8 +750,12 @@ static sc_status eval_list(eval *e, const model_node *first, model_kind kind, in
     if (total == 0)
         return SC_OK;
     twod_region *r = calloc(total, sizeof *r);
-    if (!r)
+    build_presence *states = malloc(total * sizeof *states);
+    if (!r || !states) {
+        free(r);
+        free(states);
         return err_nomem(e->c->error, &first->loc);
+    }
     *regions = r;
     /* OpenSCAD's operations on children (applyToChildren: the booleans,
      * multmatrix, color, hull, minkowski, a file's top level) say once
@@ -656,15 +777,19 @@ static sc_status eval_list(eval *e, const model_node *first, model_kind kind, in
         /* a 3D child is an empty operand, as in OpenSCAD: it empties an
          * intersection; OpenSCAD evaluates it first, with the warnings of
          * its subtree */
+        states[*count - 1] = BUILD_NONE;
         if (build_dim(k, e->in_2d) != 3)
             st = twod_walk(&e->walk, k, &unmoved, depth + 1, &r[*count - 1]);
         else
-            st = warn_3d(e, k, depth + 1);
+            st = warn_3d(e, k, depth + 1, &states[*count - 1]);
     }
     /* After the children's own warnings, as OpenSCAD checks the
      * dimensions once its children are evaluated; not those of a
      * multmatrix it removes for a nan or inf entry. */
-    return st == SC_OK && !removed ? ignore_3d_children(e, first, mixing) : st;
+    if (st == SC_OK && !removed)
+        st = ignore_3d_children(e, first, mixing, states);
+    free(states);
+    return st;
 }
 
 static sc_status eval_children(eval *e, const model_node *n, twod_region **regions,
@@ -1005,8 +1130,9 @@ static sc_status eval_node(twod_walker *w, const model_node *n, const affine2 *u
         break;
     }
     if (build_dim(n, e->in_2d) == 3) { /* evaluated, then ignored */
-        sc_status st = warn_3d(e, n, depth);
-        return st == SC_OK ? ignore_3d(e, n, 0) : st;
+        build_presence state;
+        sc_status st = warn_3d(e, n, depth, &state);
+        return st == SC_OK && state != BUILD_NONE ? ignore_3d(e, n, 0) : st;
     }
     twod_op op = kind == MODEL_DIFFERENCE     ? TWOD_DIFFERENCE
                  : kind == MODEL_INTERSECTION ? TWOD_INTERSECTION

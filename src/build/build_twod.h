@@ -57,17 +57,6 @@ int build_list_dim(const model_node *first, int in_2d);
  * makes geometry of it. */
 int build_projects(const model_node *n);
 
-/* What OpenSCAD 2021.01's geometry of the 3D node n is, which decides its
- * warnings in a 2D operation: some (or not known to be empty), empty (a
- * solid of no size: "Ignoring" it, but no "Mixing"), or none (nothing
- * below it, or a 3D operation that CGAL ends with nothing: no warning at
- * all). Its rules are those of OpenSCAD's 3D operations on empty and
- * missing children (GeometryEvaluator.cc: applyToChildren3D, CGALUtils'
- * applyOperator3D and applyHull), seen on OpenSCAD 2021.01 runs; a
- * boolean, extrusion or import that turns out empty is taken as some. */
-typedef enum build_presence { BUILD_SOME, BUILD_EMPTY, BUILD_NONE } build_presence;
-build_presence build_presence_3d(const model_node *n, int in_2d);
-
 /* The one walk over a 2D model subtree, for every builder of 2D children:
  * the exact region of linear_extrude (build_region.c), the revolve
  * profile (build_revolve.c), the text outlines (build_text.c) and
