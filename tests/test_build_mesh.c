@@ -523,6 +523,18 @@ static void test_face_triangles(void **state)
         {0, 1, 11}, {1, 2, 3},  {1, 3, 11}, {3, 4, 5},  {3, 5, 11},
         {5, 6, 7},  {5, 7, 11}, {7, 8, 9},  {7, 9, 11}, {9, 10, 11}};
     check_triangles("six star", six_star, 12, six_star_tris, 1);
+    /* A regular octagon with two points pulled in (2 and 5), lifted a
+     * little: after a flip, libtess2 (as OpenSCAD 2021.01 bundles it)
+     * stacks three of the four edges around the flipped one, not all
+     * four, so edge 2-4 stays where the Delaunay rule would go on to
+     * flip it to 3-5. */
+    static const double two_notches[8][3] = {
+        {-0.1194, -0.9928, 0.0113}, {0.6176, -0.7865, 0.0711}, {0.3671, -0.0442, 0.0108},
+        {0.7865, 0.6176, 0.0671},   {0.1194, 0.9928, -0.0714}, {-0.1401, 0.1785, 0.0777},
+        {-0.9928, 0.1194, -0.0112}, {-0.7865, -0.6176, 0.0154}};
+    static const uint32_t two_notches_tris[6][3] = {{0, 1, 2}, {0, 2, 5}, {0, 5, 7},
+                                                    {2, 3, 4}, {2, 4, 5}, {5, 6, 7}};
+    check_triangles("two notches", two_notches, 8, two_notches_tris, 1);
     /* points 2 and 3 on one point of the projection: libtess2 keeps 3
      * (listed first), OpenSCAD mends the sliver 1 2 3 */
     static const double pinched[6][3] = {

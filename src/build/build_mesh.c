@@ -545,32 +545,33 @@ int build_mesh_quad_crosses(const vec3 q[4], int reversed)
  * as above (tess_project), its contour turned counter-clockwise, then
  * swept into monotone regions, each region triangulated
  * (tessMeshTessellateMonoRegion), and the triangles refined by edge flips
- * (tessMeshRefineDelaunay). The flips go on until every inner edge passes
- * libtess2's test (the two angles facing it sum to less than pi + 0.01),
- * so where no four points lie within that tolerance of one circle the
- * result is the constrained Delaunay triangulation, which is unique
- * whatever the first triangulation was. Where four points do, the first
- * triangulation and the order of the flips decide, so both are followed
- * as libtess2 does them: a small half-edge mesh with libtess2's own
- * operations (tessMeshConnect, tessMeshFlipEdge), its order of faces (a
- * new face goes just before the face it was cut from) and its stack of
- * edges.
+ * (tessMeshRefineDelaunay). An edge is flipped when the two angles
+ * facing it sum to pi + 0.01 or more, and three of the four edges around
+ * it go back on the stack (the copy OpenSCAD 2021.01 bundles stops its
+ * loop at three). Where no four points lie within that tolerance of one
+ * circle and the loop leaves no edge behind, the result is the
+ * constrained Delaunay triangulation, whatever the first triangulation
+ * was. Elsewhere the first triangulation and the order of the flips
+ * decide, so both are followed as libtess2 does them: a small half-edge
+ * mesh with libtess2's own operations (tessMeshConnect,
+ * tessMeshFlipEdge), its order of faces (a new face goes just before the
+ * face it was cut from) and its stack of edges.
  *
  * A projection that is monotone along s (one leftmost and one rightmost
  * point in (s, t) order, which every convex one is) is a single region:
  * libtess2's sweep adds no edge inside it, and the region is split by
  * libtess2's monotone rule, exactly. Any other simple projection is
  * split into monotone regions as libtess2's sweep splits it (tess_sweep:
- * its connections at left and right vertices and its temporary edges,
- * made and removed in its order, so that its faces come in its order),
- * then each region as above. Checked against OpenSCAD 2021.01's STL
- * export of 1,300 faces of 5 to 14 points (792 of them not monotone,
- * most with four points on one circle): 30 differ, all not monotone,
- * where 288 did when such faces were cut into ears; the 30 are ties
- * whose cause was not found (the sweep's splices and its dictionary's
- * order of edges are not followed). A projection that crosses or touches itself, or
- * has two points on one point of the plane, is split as a fan about its
- * first point (docs/meshes.md). */
+ * its connections at left and right vertices and its temporary edges
+ * inside the polygon, made and removed in its order), then each region
+ * as above. Checked against libtess2's own source (docs/meshes.md) on
+ * 60,000 random non-planar faces of 5 to 14 points: the first
+ * triangulation is libtess2's for all, the final one for all but 181
+ * (0.3 %), every one of them a tie in a face that is not monotone. There
+ * the order of libtess2's faces decides, which its temporary edges
+ * outside the polygon also move; those are not followed. A projection
+ * that crosses or touches itself, or has two points on one point of the
+ * plane, is split as a fan about its first point (docs/meshes.md). */
 
 #define TESS_MAX_POINTS 4096u /* larger non-planar faces are fans */
 
@@ -980,7 +981,9 @@ static void tess_flip(tess_mesh *m, uint32_t a0)
     m->face_edge[fb] = b0;
 }
 
-/* tessMeshRefineDelaunay, its stack and its bound on the flips. */
+/* tessMeshRefineDelaunay, its stack, and a bound on the flips that
+ * OpenSCAD 2021.01's copy does not have (later libtess2 added the same,
+ * to end loops that would not). */
 static void tess_refine(tess_mesh *m, uint32_t *stack)
 {
     uint32_t top = 0;
@@ -1003,9 +1006,11 @@ static void tess_refine(tess_mesh *m, uint32_t *stack)
         if (tess_locally_delaunay(m, e))
             continue;
         tess_flip(m, e);
-        uint32_t around[4] = {m->lnext[e], m->lprev[e], m->lnext[e ^ 1u],
-                              m->lprev[e ^ 1u]};
-        for (int i = 0; i < 4; i++) {
+        /* the edges around the flipped one go back on the stack, but the
+         * copy OpenSCAD 2021.01 bundles stops at three of the four: not
+         * the last, e->Sym->Lprev */
+        uint32_t around[3] = {m->lnext[e], m->lprev[e], m->lnext[e ^ 1u]};
+        for (int i = 0; i < 3; i++) {
             if (!m->mark[around[i]] && tess_internal(m, around[i])) {
                 m->mark[around[i]] = m->mark[around[i] ^ 1u] = 1;
                 stack[top++] = around[i];
