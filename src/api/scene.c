@@ -260,6 +260,14 @@ sc_status sc_scene_get_info(const sc_scene *scene, sc_scene_info *out, sc_error 
                        "sc_scene_info", error);
 }
 
+/* Counts n leaves of material m as mirror, glass and checkered. */
+static void count_material(sc_scene_info *info, const shading_material *m, uint32_t n)
+{
+    info->mirror_leaves += m->reflect > 0 ? n : 0;
+    info->glass_leaves += m->transmit > 0 ? n : 0;
+    info->checker_leaves += m->checker > 0 ? n : 0;
+}
+
 /* The statistics of sc_scene_get_info, into the library's full struct. */
 static void scene_info(const sc_scene *scene, sc_scene_info *info)
 {
@@ -281,24 +289,15 @@ static void scene_info(const sc_scene *scene, sc_scene_info *info)
         for (int k = 0; k < PRIM_KIND_COUNT && k < SC_LEAF_KINDS; k++)
             info->leaf_kinds[k] = t->kind_leaves[k];
         uint32_t materials = look ? look->material_count : 0;
-        for (uint32_t m = 0; m < t->material_slots && m < materials; m++) {
-            const shading_material *s = &look->materials[m];
-            uint32_t n = t->material_leaves[m];
-            info->mirror_leaves += s->reflect > 0 ? n : 0;
-            info->glass_leaves += s->transmit > 0 ? n : 0;
-            info->checker_leaves += s->checker > 0 ? n : 0;
-        }
+        for (uint32_t m = 0; m < t->material_slots && m < materials; m++)
+            count_material(info, &look->materials[m], t->material_leaves[m]);
         return;
     }
     for (uint32_t i = 0; i < t->leaf_count; i++) {
         const csg_leaf *l = &t->leaves[i];
         if ((int)l->prim.kind < SC_LEAF_KINDS)
             info->leaf_kinds[l->prim.kind]++;
-        if (!look || l->material >= look->material_count)
-            continue;
-        const shading_material *m = &look->materials[l->material];
-        info->mirror_leaves += m->reflect > 0;
-        info->glass_leaves += m->transmit > 0;
-        info->checker_leaves += m->checker > 0;
+        if (look && l->material < look->material_count)
+            count_material(info, &look->materials[l->material], 1);
     }
 }
