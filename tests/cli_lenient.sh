@@ -283,7 +283,7 @@ if command -v openscad >/dev/null && command -v xvfb-run >/dev/null &&
     openscad --version 2>&1 | grep -q '2021\.01'; then
     printf 'square([10, 4]);\n' >flat.scad
     for mode in render preview; do
-        timeout 300 xvfb-run -a -s "-screen 0 1024x768x24" \
+        timeout 300 xvfb-run -a -n 110 -s "-screen 0 1024x768x24" \
             openscad --$mode -o "os_$mode.png" --imgsize=80,60 --camera=5,2,50,5,2,0 \
             flat.scad >/dev/null 2>&1
     done

@@ -28,7 +28,7 @@ limit=5 # pixels of 320 x 240 that may differ along edges (1 seen)
 
 # Whether OpenSCAD can render offscreen here at all (a machine without a
 # working GL under Xvfb cannot): if not, nothing below can be checked.
-timeout 300 xvfb-run -a -s "-screen 0 1024x768x24" \
+timeout 300 xvfb-run -a -n 120 -s "-screen 0 1024x768x24" \
     openscad -o probe.png --imgsize=32,24 boxes.scad >probe.log 2>&1
 [ -s probe.png ] || skip "openscad cannot render offscreen: $(tail -n 1 probe.log)"
 
@@ -37,7 +37,7 @@ compare() {
     local name=$1
     shift
     checks=$((checks + 1))
-    timeout 300 xvfb-run -a -s "-screen 0 1024x768x24" \
+    timeout 300 xvfb-run -a -n 120 -s "-screen 0 1024x768x24" \
         openscad -o "os_$name.png" --imgsize=320,240 "$@" boxes.scad >/dev/null 2>&1
     if [ ! -s "os_$name.png" ]; then
         fail "$name: openscad wrote no image"

@@ -112,7 +112,7 @@ cat >drilled.scad <<'EOF'
 difference() { cube([20, 14, 10], center = true); cylinder(r = 3, h = 12, center = true); }
 EOF
 openscad_png() {
-    timeout 300 xvfb-run -a -s "-screen 0 1024x768x24" openscad "$@" >/dev/null 2>&1
+    timeout 300 xvfb-run -a -n 130 -s "-screen 0 1024x768x24" openscad "$@" >/dev/null 2>&1
 }
 openscad -o "$work/drilled_os.csg" drilled.scad >/dev/null 2>&1 || {
     echo "FAIL: openscad could not export drilled_os.csg"

@@ -172,7 +172,7 @@ if [ -z "${SPANCAST_VIEW_XVFB:-}" ]; then
     # ---- the window, under Xvfb
     require_tools xvfb-run xdotool import compare convert
     SPANCAST_VIEW_XVFB=1 SPANCAST_VIEW_FAILS=$fails SPANCAST_VIEW_CHECKS=$checks \
-        xvfb-run -a -s "-screen 0 1024x768x24" bash "$src/tests/cli_view.sh" "$bin" "$src" \
+        xvfb-run -a -n 140 -s "-screen 0 1024x768x24" bash "$src/tests/cli_view.sh" "$bin" "$src" \
         "$work.xvfb"
     exit $?
 fi
