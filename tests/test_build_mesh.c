@@ -535,6 +535,17 @@ static void test_face_triangles(void **state)
     static const uint32_t two_notches_tris[6][3] = {{0, 1, 2}, {0, 2, 5}, {0, 5, 7},
                                                     {2, 3, 4}, {2, 4, 5}, {5, 6, 7}};
     check_triangles("two notches", two_notches, 8, two_notches_tris, 1);
+    /* Not monotone (points 1 and 6 dent it), with a tie: which edge the
+     * Delaunay stack flips first follows the order of libtess2's faces,
+     * which its sweep's temporary edges outside the polygon (to its
+     * sentinels, too) also move (tess_sweep.c). */
+    static const double dented[8][3] = {
+        {0.019, -0.5219, -0.7032},  {-0.068, 0.06, -0.6446},   {-0.0102, 0.3209, -0.2815},
+        {-0.0042, 0.2986, 0.0675},  {-0.0705, 0.4288, 0.4767}, {0.0903, -0.0786, 0.9341},
+        {-0.0407, -0.2476, 0.1919}, {0.0957, -0.4974, -0.0726}};
+    static const uint32_t dented_tris[6][3] = {{0, 1, 7}, {1, 2, 7}, {2, 3, 6},
+                                               {2, 6, 7}, {3, 4, 6}, {4, 5, 6}};
+    check_triangles("dented", dented, 8, dented_tris, 1);
     /* points 2 and 3 on one point of the projection: libtess2 keeps 3
      * (listed first), OpenSCAD mends the sliver 1 2 3 */
     static const double pinched[6][3] = {

@@ -52,6 +52,7 @@
 #include "base/grow.h"
 #include "base/sort.h"
 #include "build/build_hull.h"
+#include "build/tess_sweep.h"
 #include "csg/prim_mesh.h"
 #include "formats/amf.h"
 #include "formats/file.h"
@@ -561,17 +562,15 @@ int build_mesh_quad_crosses(const vec3 q[4], int reversed)
  * point in (s, t) order, which every convex one is) is a single region:
  * libtess2's sweep adds no edge inside it, and the region is split by
  * libtess2's monotone rule, exactly. Any other simple projection is
- * split into monotone regions as libtess2's sweep splits it (tess_sweep:
- * its connections at left and right vertices and its temporary edges
- * inside the polygon, made and removed in its order), then each region
- * as above. Checked against libtess2's own source (docs/meshes.md) on
- * 60,000 random non-planar faces of 5 to 14 points: the first
- * triangulation is libtess2's for all, the final one for all but 181
- * (0.3 %), every one of them a tie in a face that is not monotone. There
- * the order of libtess2's faces decides, which its temporary edges
- * outside the polygon also move; those are not followed. A projection
- * that crosses or touches itself, or has two points on one point of the
- * plane, is split as a fan about its first point (docs/meshes.md). */
+ * swept as libtess2 sweeps it, on its own mesh (tess_sweep.c), so that
+ * its faces come in libtess2's order; where that sweep gives up (a point
+ * on another edge, edges that meet in float), the diagonals inside the
+ * polygon are made in libtess2's order (tess_sweep, below). Then each
+ * region as above. Checked against libtess2's own source
+ * (docs/meshes.md) on 60,000 random non-planar faces of 5 to 14 points:
+ * every one gets libtess2's triangles. A projection that crosses or
+ * touches itself, or has two points on one point of the plane, is split
+ * as a fan about its first point (docs/meshes.md). */
 
 #define TESS_MAX_POINTS 4096u /* larger non-planar faces are fans */
 
@@ -795,11 +794,12 @@ static int tess_fix(tess_mesh *m, tess_active *act, uint32_t k, uint32_t v, int 
     return 1;
 }
 
-/* libtess2's sweep over a simple polygon (contour 0 .. n - 1, counter-
- * clockwise, no two points equal): the diagonals its ConnectLeftVertex,
- * ConnectRightVertex and FixUpperEdge add to the inside, in its order, so
- * that the faces split off come in its order too. Each face left is
- * monotone. Returns 0 on failure, -1 when out of memory. */
+/* Where libtess2's own sweep (tess_sweep.c) gives up: over a simple
+ * polygon (contour 0 .. n - 1, counter-clockwise, no two points equal),
+ * the diagonals its ConnectLeftVertex, ConnectRightVertex and
+ * FixUpperEdge add to the inside, in its order; its temporary edges
+ * outside, which also move faces in its list, are not made. Each face
+ * left is monotone. Returns 0 on failure, -1 when out of memory. */
 static int tess_sweep(tess_mesh *m, uint32_t n)
 {
     uint32_t *order = malloc(n * sizeof *order);
@@ -924,18 +924,61 @@ static int tess_sweep(tess_mesh *m, uint32_t n)
     return ok;
 }
 
-/* The sweep, then each of its faces split by the monotone rule, in the
- * order of libtess2's face list (tessMeshTessellateInterior). */
-static int tess_sweep_regions(tess_mesh *m, uint32_t n)
+/* Each inside face split by the monotone rule, in the order of
+ * libtess2's face list (tessMeshTessellateInterior). */
+static int tess_mono_regions(tess_mesh *m, uint32_t n)
 {
-    int ok = tess_sweep(m, n);
-    for (uint32_t f = m->face_next[TESS_HEAD]; ok > 0 && f != TESS_HEAD;) {
+    for (uint32_t f = m->face_next[TESS_HEAD]; f != TESS_HEAD;) {
         uint32_t next = m->face_next[f];
-        if (!tess_mono_region(m, f, n))
-            ok = 0;
+        if (m->inside[f] && !tess_mono_region(m, f, n))
+            return 0;
         f = next;
     }
-    return ok;
+    return 1;
+}
+
+/* libtess2's own sweep (tess_sweep.h) in m, when the polygon is in
+ * general position for it and m has room: 1, or 0 (m as it was), or -1
+ * when memory runs out. */
+static int tess_sweep_libtess(tess_mesh *m, uint32_t n)
+{
+    tess_swept w;
+    int got = tess_sweep_faithful(m->s, m->t, n, &w);
+    if (got <= 0)
+        return got;
+    /* the monotone splits add at most n - 3 edges and faces */
+    if (w.edges + 2 * n > m->edge_cap || w.faces + n > m->face_cap) {
+        tess_swept_free(&w);
+        return 0;
+    }
+    for (uint32_t e = 0; e < w.edges; e++) {
+        m->org[e] = w.org[e] < n ? w.org[e] : 0; /* a sentinel's: outside */
+        m->lnext[e] = w.lnext[e];
+        m->lprev[w.lnext[e]] = e;
+        m->lface[e] = w.lface[e];
+        m->mark[e] = 0;
+    }
+    for (uint32_t f = 0; f < w.faces; f++) {
+        m->face_next[f] = w.face_next[f];
+        m->face_prev[f] = w.face_prev[f];
+        m->face_edge[f] = w.face_edge[f];
+        m->inside[f] = w.inside[f];
+    }
+    m->edges = w.edges;
+    m->faces = w.faces;
+    tess_swept_free(&w);
+    return 1;
+}
+
+/* The sweep, libtess2's own where it can be followed (own: the contour is
+ * the face's, no point merged away), else the diagonals inside the
+ * polygon in its order; then each region by the monotone rule. */
+static int tess_sweep_regions(tess_mesh *m, uint32_t n, int own)
+{
+    int ok = own ? tess_sweep_libtess(m, n) : 0;
+    if (ok == 0)
+        ok = tess_sweep(m, n);
+    return ok > 0 ? tess_mono_regions(m, n) : ok;
 }
 
 static int tess_internal(const tess_mesh *m, uint32_t e)
@@ -1109,7 +1152,7 @@ int build_mesh_face_triangles(const vec3 *p, uint32_t n, int reversed, uint32_t 
         }
         return 1;
     }
-    uint32_t half_edges = 6 * n, faces = 2 * n + 4;
+    uint32_t half_edges = 10 * n + 32, faces = 4 * n + 16;
     /* one block: s, t by face position, then by vertex (float); the
      * uint32_t arrays; the marks */
     size_t words = 5 * (size_t)n + 5 * (size_t)half_edges + 3 * (size_t)faces;
@@ -1197,10 +1240,10 @@ int build_mesh_face_triangles(const vec3 *p, uint32_t n, int reversed, uint32_t 
         else if (tess_monotone(&m, count))
             ok = tess_mono_region(&m, TESS_REGION, count);
         else
-            ok = tess_sweep_regions(&m, count);
+            ok = tess_sweep_regions(&m, count, pairs == 0);
         uint32_t live = 0;
         for (uint32_t f = m.face_next[TESS_HEAD]; f != TESS_HEAD; f = m.face_next[f])
-            live++;
+            live += m.inside[f];
         if (ok < 0) {
             free(block);
             return -1;
@@ -1211,6 +1254,8 @@ int build_mesh_face_triangles(const vec3 *p, uint32_t n, int reversed, uint32_t 
         tess_refine(&m, stack);
         uint32_t k = 0;
         for (uint32_t f = m.face_next[TESS_HEAD]; f != TESS_HEAD; f = m.face_next[f]) {
+            if (!m.inside[f])
+                continue;
             uint32_t e = m.face_edge[f], v[3];
             for (int i = 0; i < 3; i++, e = m.lnext[e])
                 v[i] = AT(contour[m.org[e]]);
