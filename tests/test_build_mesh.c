@@ -20,6 +20,7 @@
 #include <sys/stat.h>
 
 #include "build/build.h"
+#include "build/tess_sweep.h"
 #include "build/build_hull.h"
 #include "build/build_mesh.h"
 #include "build/scene.h"
@@ -563,6 +564,39 @@ static void test_face_triangles(void **state)
         {6.87558, 2.27837, -1.0461},   {6.79716, 1.45703, -0.949727}};
     static const uint32_t fan[4][3] = {{0, 1, 2}, {0, 2, 3}, {0, 3, 4}, {0, 4, 5}};
     check_triangles("folded", folded, 6, fan, 0);
+}
+
+/* libtess2's sweep (tess_sweep.c) follows a simple polygon in general
+ * position, and gives up where libtess2 would splice a point into an edge
+ * or cut two edges where they cross. */
+static void test_sweep_gives_up(void **state)
+{
+    (void)state;
+    /* a C opening to the right, not monotone: two regions inside */
+    static const float ws[8] = {0, 4, 4.5f, 1, 1.2f, 4.2f, 4, 0.2f};
+    static const float wt[8] = {0, 0, 1, 1.2f, 3, 3, 4, 4};
+    tess_swept out;
+    assert_int_equal(tess_sweep_faithful(ws, wt, 8, &out), 1);
+    uint32_t inside = 0, listed = 0;
+    for (uint32_t f = out.face_next[0]; f != 0 && listed < out.faces;
+         f = out.face_next[f]) {
+        listed++;
+        inside += out.inside[f];
+        uint32_t e = out.face_edge[f];
+        assert_int_equal(out.lface[e], f);
+    }
+    assert_int_equal(listed + 1, out.faces);
+    assert_int_equal(inside, 2);
+    tess_swept_free(&out);
+    /* point 3 on the edge from 0 to 1 */
+    static const float ts[5] = {0, 4, 4, 2, 0}, tt[5] = {0, 0, 4, 0, 4};
+    assert_int_equal(tess_sweep_faithful(ts, tt, 5, &out), 0);
+    /* edges 0-1 and 2-3 cross */
+    static const float xs[5] = {0, 4, 4, 0, 2}, xt[5] = {0, 4, 0, 4, 6};
+    assert_int_equal(tess_sweep_faithful(xs, xt, 5, &out), 0);
+    /* two points on one */
+    static const float ds[5] = {0, 4, 4, 4, 0}, dt[5] = {0, 0, 4, 4, 4};
+    assert_int_equal(tess_sweep_faithful(ds, dt, 5, &out), 0);
 }
 
 /* A mesh a builder makes that is not closed (here a cube without its
@@ -1542,6 +1576,7 @@ int main(void)
         cmocka_unit_test(test_quad_diagonal),
         cmocka_unit_test(test_bowtie),
         cmocka_unit_test(test_face_triangles),
+        cmocka_unit_test(test_sweep_gives_up),
         cmocka_unit_test(test_builder_open_mesh),
         cmocka_unit_test(test_import),
         cmocka_unit_test(test_import_read_once),

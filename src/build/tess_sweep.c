@@ -56,7 +56,7 @@ static int vert_eq(const sweep *w, int u, int v)
     return w->vs[u] == w->vs[v] && w->vt[u] == w->vt[v];
 }
 
-/* tesedgeEval: the t distance of v above the edge u-w */
+/* tesedgeEval: how far v lies above the edge u-x, in t */
 static float edge_eval(const sweep *w, int u, int v, int x)
 {
     float gap_l = w->vs[v] - w->vs[u], gap_r = w->vs[x] - w->vs[v];
@@ -69,7 +69,7 @@ static float edge_eval(const sweep *w, int u, int v, int x)
     return 0;
 }
 
-/* tesedgeSign: the sign of edge_eval, cheaper */
+/* tesedgeSign: the sign of edge_eval, computed more cheaply */
 static float edge_sign(const sweep *w, int u, int v, int x)
 {
     float gap_l = w->vs[v] - w->vs[u], gap_r = w->vs[x] - w->vs[v];
