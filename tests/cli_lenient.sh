@@ -212,6 +212,51 @@ cgal_open_union.csg:3:2: warning: Ignoring 3D child object for 2D operation" $mo
     }
 done
 
+# An extrusion or import among them is evaluated first too (openscad -o
+# /abs/x.stl x.csg prints exactly these): an extrusion of one empty child,
+# of no child, or by an angle of 0 is no geometry; one of two empty
+# children, or of height 0, is an empty solid, only ignored. An import is
+# read: a file that does not open, one without faces, or one whose format
+# no reader takes is empty, with its warning; a mesh that is not closed is
+# taken as it comes, and mixes. Offset, in whose 2D context an import is
+# read as a drawing, says only that it ignores them.
+ext='linear_extrude(height = 1, center = false, convexity = 1, scale = [1, 1], $fn = 0, $fa = 12, $fs = 2)'
+imp() { printf 'import(file = "%s", layer = "", origin = [0, 0], scale = 1, convexity = 1, $fn = 0, $fa = 12, $fs = 2);' "$1"; }
+printf 'union() {\n\t%s\n\t%s {\n\t\tsquare(size = [0, 1], center = false);\n\t}\n\t%s {\n\t\tsquare(size = [0, 1], center = false);\n\t\tsquare(size = [1, 0], center = false);\n\t}\n\trotate_extrude(angle = 0, convexity = 1, $fn = 0, $fa = 12, $fs = 2) {\n\t\tsquare(size = [1, 1], center = false);\n\t}\n\t%s;\n}\n' \
+    "$sq" "$ext" "$ext" "$ext" >left_extrude.csg
+printf 'union() {\n\t%s\n\t%s {\n\t\tsquare(size = [1, 1], center = false);\n\t}\n}\n' "$sq" "${ext/height = 1/height = 0}" >left_flat.csg
+printf 'solid e\nendsolid e\n' >faceless.stl
+printf 'solid t\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 0 1 0\nendloop\nendfacet\nendsolid t\n' >triangle.stl
+printf 'x\n' >thing.obj
+for f in missing.stl faceless.stl triangle.stl thing.obj; do
+    printf 'union() {\n\t%s\n\t%s\n}\n' "$sq" "$(imp $f)" >"left_${f%.*}.csg"
+done
+printf 'offset(r = 1, $fn = 0, $fa = 12, $fs = 2) {\n\t%s\n\t%s\n\t%s\n}\n' "$sq" "$(imp missing.stl)" "$(imp triangle.stl)" >left_offset.csg
+printf 'offset(r = 1, $fn = 0, $fa = 12, $fs = 2) { %s }\n' "$sq" >offset_ref.csg
+opened="Can't open import file 'missing.stl': No such file or directory"
+for mode in "" --faithful; do
+    # shellcheck disable=SC2086
+    {
+        warns left_extrude.csg "left_extrude.csg:6:2: warning: Ignoring 3D child object for 2D operation" $mode
+        warns left_flat.csg "left_flat.csg:3:2: warning: Ignoring 3D child object for 2D operation" $mode
+        warns left_missing.csg "left_missing.csg:3:16: warning: $opened; the import is empty, as OpenSCAD leaves it out (--strict makes it an error)
+left_missing.csg:3:2: warning: Ignoring 3D child object for 2D operation" $mode
+        warns left_faceless.csg "left_faceless.csg:3:2: warning: Ignoring 3D child object for 2D operation" $mode
+        warns left_triangle.csg "left_triangle.csg:3:2: warning: Mixing 2D and 3D objects is not supported
+left_triangle.csg:3:2: warning: Ignoring 3D child object for 2D operation" $mode
+        warns left_thing.csg "left_thing.csg:3:16: warning: Unsupported file format while trying to import file '\"thing.obj\"' (import() reads .stl, .off, .amf, .3mf, .dxf and .svg files); the import is empty, as OpenSCAD leaves it out (--strict makes it an error)
+left_thing.csg:3:2: warning: Ignoring 3D child object for 2D operation" $mode
+        warns left_offset.csg "left_offset.csg:3:16: warning: $opened; the import is empty, as OpenSCAD leaves it out (--strict makes it an error)
+left_offset.csg:3:2: warning: Ignoring 3D child object for 2D operation
+left_offset.csg:4:2: warning: Ignoring 3D child object for 2D operation" $mode
+        refuses left_offset.csg "left_offset.csg:3:16: error: $opened" $mode
+        for f in extrude flat missing faceless triangle thing; do
+            same "left_$f.csg" empty3d_ref.csg $mode
+        done
+        same left_offset.csg offset_ref.csg $mode
+    }
+done
+
 # The first object decides, as in OpenSCAD: a file that starts with a 2D
 # object is a 2D model, its 3D objects left out.
 printf 'square(size = [10, 4], center = false);\ncube(size = [3, 3, 3], center = false);\n' >first2d.csg

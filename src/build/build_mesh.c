@@ -2581,6 +2581,16 @@ sc_status build_import_parts(const build_ctx *c, const model_import *import, int
     return import_parts(c, import, strict, 0, out, empty, NULL, 1);
 }
 
+sc_status build_import_left_out(const build_ctx *c, const model_import *import,
+                                const char **empty)
+{
+    build_prims parts;
+    sc_status st = import_parts(c, import, c->strict, IMPORT_JOINED | IMPORT_LOOSE,
+                                &parts, empty, NULL, 1);
+    free(parts.items);
+    return st;
+}
+
 sc_status build_import_solids(const build_ctx *c, const model_import *import,
                               build_prims *out, const char **empty)
 {

@@ -174,6 +174,15 @@ sc_status build_import_summand(const build_ctx *c, const model_import *import, p
  * OpenSCAD's is a CGAL union. */
 sc_status build_import_mesh(const build_ctx *c, const model_import *import, prim *out,
                             const char **empty);
+/* An import that is left out (a 3D child of a 2D operation), read as
+ * OpenSCAD 2021.01 reads it before it ignores it: its warnings (a file
+ * that does not open or parse, a format no reader takes; an object of
+ * several that is not closed, left out of their union) or, strict as
+ * c->strict, the error; a single mesh closed or not, silently
+ * (build_import_mesh). *empty is set when it makes nothing. The file is
+ * not kept in c->imports. */
+sc_status build_import_left_out(const build_ctx *c, const model_import *import,
+                                const char **empty);
 /* build_import_parts, not strict, for a file of one object (STL, OFF),
  * which hands its merged faces to *faces (for CGAL, whose faces must not
  * overlap as the leaf's fans of a face that is not convex do), with the

@@ -243,10 +243,32 @@ static int positive_finite(double x)
  * missing children (GeometryEvaluator.cc: applyToChildren3D, CGALUtils'
  * applyOperator3D and applyHull), seen on OpenSCAD 2021.01 runs: the
  * static rules (presence), and CGAL's solid where OpenSCAD evaluates a
- * boolean or minkowski with it (warn_3d); an extrusion or import that
- * turns out empty, or a union whose meshes CGAL would leave out, is taken
- * as some. */
+ * boolean or minkowski with it (warn_3d), which also reads an import's
+ * file (import_3d) and evaluates an extrusion's children (extrusion). */
 typedef enum build_presence { BUILD_SOME, BUILD_EMPTY, BUILD_NONE } build_presence;
+
+/* What OpenSCAD 2021.01's extrusion n of count children that count (not
+ * '*' nor '%') is, all of them empty or not (empty): its visits of
+ * LinearExtrudeNode and RotateExtrudeNode take the children's union
+ * (applyToChildren2D), which is no polygon without children or with one
+ * that is empty (or 3D), and an empty polygon of two or more; no polygon,
+ * or a rotation by 0, is none; a polygon is extruded, empty when it is,
+ * or when the height is not positive (extrudePolygon). */
+static build_presence extrusion(const model_node *n, uint32_t count, int empty)
+{
+    if (n->pending)
+        return BUILD_SOME;
+    if (count == 0 || (count == 1 && empty))
+        return BUILD_NONE;
+    if (n->kind == MODEL_ROTATE_EXTRUDE) {
+        double a = n->u.rotate_extrude->angle; /* as build_revolve.c reads it */
+        if (a == 0)
+            return BUILD_NONE;
+    } else if (n->u.linear_extrude->height <= 0) {
+        return BUILD_EMPTY;
+    }
+    return empty ? BUILD_EMPTY : BUILD_SOME;
+}
 
 static build_presence presence(const model_node *n, int in_2d, int depth);
 
@@ -322,6 +344,13 @@ static build_presence presence(const model_node *n, int in_2d, int depth)
     }
     case MODEL_POLYHEDRON:
         return n->u.polyhedron.face_count ? BUILD_SOME : BUILD_EMPTY;
+    case MODEL_LINEAR_EXTRUDE:
+    case MODEL_ROTATE_EXTRUDE: {
+        uint32_t count = 0; /* its children taken as not empty */
+        for (const model_node *k = n->first_child; k; k = k->next)
+            count += !(k->modifiers & (MODEL_MOD_DISABLE | MODEL_MOD_BACKGROUND));
+        return extrusion(n, count, 0);
+    }
     case MODEL_XFORM:
         if (n->not_finite) /* removed: no geometry (model.h) */
             return BUILD_NONE;
@@ -563,6 +592,31 @@ static sc_status eval_only(eval *e, const model_node *n, int depth, int *empty)
     return st;
 }
 
+/* The import n of a mesh (not a drawing), left out: OpenSCAD 2021.01
+ * reads its file first (ImportNode::createGeometry), with the warnings of
+ * a file it cannot open or parse or whose format it does not take, which
+ * make it empty, as a file without faces is; it takes the mesh as it
+ * comes, closed or not, as no CGAL operation follows. In the 2D context
+ * the node holds the file as a drawing that is not one, read as the same
+ * import (build_import_left_out finds the file by name and position). */
+static sc_status import_3d(const eval *e, const model_node *n, build_presence *state)
+{
+    if (n->pending || !e->c->notes)
+        return unsupported_import(e, n);
+    model_import here;
+    const model_import *import = n->u.import;
+    if (e->in_2d) {
+        const model_drawing *d = n->u.drawing;
+        here = (model_import){d->file, d->file_loc, model_mesh_format_of(d->file), NULL};
+        import = &here;
+    }
+    const char *empty = NULL;
+    sc_status st = build_import_left_out(e->c, import, &empty);
+    if (st == SC_OK && empty)
+        *state = BUILD_EMPTY;
+    return st;
+}
+
 /* Whether OpenSCAD 2021.01 ignores n as a 2D child of a 3D operation: 2D
  * (build_dim), and not a projection without a 3D child, which is no
  * geometry (build_projects). */
@@ -598,19 +652,22 @@ static int cgal_operation(const eval *e, const model_node *n)
     int unites = n->kind == MODEL_UNION || n->kind == MODEL_COLOR ||
                  n->kind == MODEL_MATERIAL || n->kind == MODEL_XFORM ||
                  n->kind == MODEL_RESIZE;
-    if (!boolean && !sum && !(unites && has_mesh(n, e->in_2d, 0)))
+    if (!boolean && !sum && !unites)
         return 0;
-    uint32_t count = 0;
-    for (const model_node *k = twod_walk_first(n); k; k = twod_walk_next(k->next)) {
-        if (k->kind == MODEL_LIGHT || k->kind == MODEL_CAMERA ||
-            k->kind == MODEL_BACKGROUND)
-            continue;
-        if (boolean)
-            count++;
-        else
-            count += counts_3d(k, e->in_2d) && presence(k, e->in_2d, 0) == BUILD_SOME;
-    }
-    return count >= 2;
+    /* the children counted first, and the subtrees scanned (presence,
+     * has_mesh) only where two or more may count, so that a chain of
+     * transforms is not scanned once per level */
+    uint32_t count = 0, some = 0;
+    for (const model_node *k = twod_walk_first(n); k; k = twod_walk_next(k->next))
+        count += boolean ? k->kind != MODEL_LIGHT && k->kind != MODEL_CAMERA &&
+                               k->kind != MODEL_BACKGROUND
+                         : counts_3d(k, e->in_2d);
+    if (count < 2 || boolean)
+        return count >= 2;
+    for (const model_node *k = twod_walk_first(n); some < 2 && k;
+         k = twod_walk_next(k->next))
+        some += counts_3d(k, e->in_2d) && presence(k, e->in_2d, 0) == BUILD_SOME;
+    return some >= 2 && (sum || has_mesh(n, e->in_2d, 0));
 }
 
 /* What OpenSCAD's geometry of n is after CGAL evaluated it (s): a boolean
@@ -663,12 +720,17 @@ static sc_status warn_3d(eval *e, const model_node *n, int depth, build_presence
         *state = presence(n, e->in_2d, depth);
         return build_bad_indices(e->c, n);
     case MODEL_IMPORT:
-        return unsupported_import(e, n);
+        return import_3d(e, n, state);
     case MODEL_LINEAR_EXTRUDE:
     case MODEL_ROTATE_EXTRUDE: {
         twod_region *regions;
         uint32_t count;
         sc_status st = eval_children(e, n, &regions, &count, depth);
+        int empty = 1;
+        for (uint32_t i = 0; i < count; i++)
+            empty &= regions[i].contour_count == 0;
+        if (st == SC_OK)
+            *state = extrusion(n, count, empty);
         free_children(regions, count);
         return st;
     }
