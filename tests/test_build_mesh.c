@@ -556,6 +556,27 @@ static void test_face_triangles(void **state)
     static const uint32_t pinched_tris[4][3] = {
         {0, 1, 5}, {1, 2, 3}, {1, 3, 4}, {1, 4, 5}};
     check_triangles("pinched", pinched, 6, pinched_tris, 1);
+    /* Points 4 and 5 above one another (one point of the projection),
+     * in a polygon that is not monotone: libtess2 removes the edge
+     * between them from its mesh before it sweeps (RemoveDegenerateEdges),
+     * keeping 5, and the sweep and the Delaunay stack follow the mesh
+     * that leaves, not that of the polygon without 4; OpenSCAD mends the
+     * sliver 3 4 5. */
+    static const double above[10][3] = {
+        {3, -0.0018, 0}, {1, 0.0042, 1},  {0, 0.0027, 1},   {-1, 0, 2},
+        {-1, -0.006, 0}, {-1, 0.0064, 0}, {-1, 0.0007, -1}, {0, -0.0045, -2},
+        {1, 0.0001, -3}, {2, -0.0017, -1}};
+    static const uint32_t above_tris[8][3] = {{0, 1, 9}, {1, 2, 9}, {2, 3, 5}, {2, 5, 9},
+                                              {3, 4, 5}, {5, 6, 9}, {6, 7, 9}, {7, 8, 9}};
+    check_triangles("above", above, 10, above_tris, 1);
+    /* the same with 4 and 5 in another polygon */
+    static const double above_too[9][3] = {
+        {-0.0466, 1, 0},  {0.0324, 2, 2},  {0.0494, 0, 2},
+        {-0.0168, -2, 2}, {0.0057, -1, 0}, {0.0519, -1, 0},
+        {0.0042, 0, -2},  {0.0121, 0, -1}, {-0.0094, 1, -1}};
+    static const uint32_t above_too_tris[7][3] = {
+        {0, 1, 2}, {0, 2, 5}, {0, 5, 7}, {0, 7, 8}, {2, 3, 5}, {3, 4, 5}, {5, 6, 7}};
+    check_triangles("above too", above_too, 9, above_too_tris, 1);
     /* A projection that crosses itself (edges 0-1 and 4-5, in the plane
      * libtess2 picks): not libtess2's split, a fan about point 0. */
     static const double folded[6][3] = {
@@ -567,8 +588,9 @@ static void test_face_triangles(void **state)
 }
 
 /* libtess2's sweep (tess_sweep.c) follows a simple polygon in general
- * position, and gives up where libtess2 would splice a point into an edge
- * or cut two edges where they cross. */
+ * position, with two neighbours on one point merged as libtess2 merges
+ * them, and gives up where libtess2 would splice a point into an edge,
+ * cut two edges where they cross, or merge two points in its sweep. */
 static void test_sweep_gives_up(void **state)
 {
     (void)state;
@@ -594,9 +616,25 @@ static void test_sweep_gives_up(void **state)
     /* edges 0-1 and 2-3 cross */
     static const float xs[5] = {0, 4, 4, 0, 2}, xt[5] = {0, 4, 0, 4, 6};
     assert_int_equal(tess_sweep_faithful(xs, xt, 5, &out), 0);
-    /* two points on one */
-    static const float ds[5] = {0, 4, 4, 4, 0}, dt[5] = {0, 0, 4, 4, 4};
-    assert_int_equal(tess_sweep_faithful(ds, dt, 5, &out), 0);
+    /* two points on one, not neighbours: the polygon touches itself */
+    static const float ds[6] = {0, 2, 4, 4, 2, 0}, dt[6] = {0, 2, 0, 4, 2, 4};
+    assert_int_equal(tess_sweep_faithful(ds, dt, 6, &out), 0);
+    /* two neighbours on one point (2 and 3): the edge between them goes
+     * first, as libtess2 removes it, 3 merged into 2; the square left is
+     * one region */
+    static const float ns[5] = {0, 4, 4, 4, 0}, nt[5] = {0, 0, 4, 4, 4};
+    assert_int_equal(tess_sweep_faithful(ns, nt, 5, &out), 1);
+    inside = 0;
+    for (uint32_t f = out.face_next[0]; f != 0; f = out.face_next[f])
+        inside += out.inside[f];
+    assert_int_equal(inside, 1);
+    int seen[5] = {0};
+    for (uint32_t e = 0; e < out.edges; e++)
+        if (out.org[e] < 5)
+            seen[out.org[e]] = 1;
+    assert_int_equal(seen[0] + seen[1] + seen[2] + seen[4], 4);
+    assert_int_equal(seen[3], 0);
+    tess_swept_free(&out);
 }
 
 /* A mesh a builder makes that is not closed (here a cube without its

@@ -1134,6 +1134,32 @@ static void sort3(uint32_t v[3])
             }
 }
 
+/* The whole contour of a face with two neighbours on one point
+ * (projected to ps, pt; contour point j is vertex n - 1 - j when
+ * reversed; t times sign, so that it runs counter-clockwise) into m's
+ * arrays s, t and contour, swept by libtess2's own sweep, which merges
+ * the two as libtess2 does, and each region split by the monotone rule:
+ * 1 with the n - 3 regions in m, 0 where that sweep gives up or the
+ * regions are not as many, -1 when memory runs out. */
+static int tess_whole(tess_mesh *m, const float *ps, const float *pt, uint32_t n,
+                      int reversed, float sign, float *s, float *t, uint32_t *contour)
+{
+    for (uint32_t j = 0; j < n; j++) {
+        uint32_t a = reversed ? n - 1 - j : j;
+        contour[j] = j;
+        s[j] = ps[a];
+        t[j] = sign * pt[a];
+    }
+    int ok = tess_sweep_libtess(m, n);
+    if (ok > 0)
+        ok = tess_mono_regions(m, n);
+    uint32_t live = 0;
+    for (uint32_t f = m->face_next[TESS_HEAD]; ok > 0 && f != TESS_HEAD;
+         f = m->face_next[f])
+        live += m->inside[f];
+    return ok > 0 ? live == n - 3 : ok;
+}
+
 int build_mesh_face_triangles(const vec3 *p, uint32_t n, int reversed, uint32_t *tris)
 {
     for (uint32_t j = 1; j + 1 < n; j++) { /* the fan, unless replaced below */
@@ -1202,8 +1228,17 @@ int build_mesh_face_triangles(const vec3 *p, uint32_t n, int reversed, uint32_t 
     }
     if (pairs == 1)
         dropped = merged == 0 ? 0 : (merged + 1) % n; /* 0 is listed last */
-    uint32_t count = 0;
-    for (uint32_t j = 0; ok && j < n; j++) {
+    /* First libtess2's own sweep of the whole contour, which merges the
+     * two as libtess2 does (tess_sweep.h); where it gives up, the contour
+     * without the one dropped, swept as below. */
+    int whole =
+        ok && pairs == 1 ? tess_whole(&m, ps, pt, n, reversed, sign, s, t, contour) : 0;
+    if (whole < 0) {
+        free(block);
+        return -1;
+    }
+    uint32_t count = whole ? n - 1 : 0;
+    for (uint32_t j = 0; ok && !whole && j < n; j++) {
         if (j == dropped)
             continue;
         contour[count] = j;
@@ -1211,8 +1246,8 @@ int build_mesh_face_triangles(const vec3 *p, uint32_t n, int reversed, uint32_t 
         t[count] = sign * pt[AT(j)];
         count++;
     }
-    ok = ok && pairs <= 1 && count >= 3 && tess_simple(&m, count);
-    if (ok) {
+    ok = whole || (ok && pairs <= 1 && count >= 3 && tess_simple(&m, count));
+    if (ok && !whole) {
         for (uint32_t j = 0; j < count; j++) {
             uint32_t e = 2 * j, next = 2 * ((j + 1) % count);
             uint32_t prev = 2 * ((j + count - 1) % count);

@@ -734,6 +734,31 @@ static void sweep_free(sweep *w)
     free(w->reg);
 }
 
+/* RemoveDegenerateEdges: each edge of the contour between two points
+ * that are one (two neighbours on one point) goes, in libtess2's order of
+ * its edge list (the contour's last edge first), the origin of its first
+ * half merged into that of the next edge round its loop (which vertex
+ * stays decides where the triangles meet); gone marks the vertices merged
+ * away. A loop left with one or two edges gives up. */
+static void remove_degenerate_edges(sweep *w, uint32_t n, unsigned char *gone)
+{
+    for (int k = (int)n - 1; k >= 0 && !w->fail; k--) {
+        int e = 2 * k;
+        if (w->dead[e])
+            continue;
+        int e_lnext = w->lnext[e];
+        if (vert_eq(w, w->org[e], DST(w, e)) && w->lnext[e_lnext] != e) {
+            gone[w->org[e]] = 1;
+            mesh_splice(w, e_lnext, e);
+            mesh_delete(w, e);
+            e = e_lnext;
+            e_lnext = w->lnext[e];
+        }
+        if (w->lnext[e_lnext] == e)
+            w->fail = 1;
+    }
+}
+
 /* The vertices of the contour in (s, t) order (insertion sort: faces are
  * small); 0 when two are equal. */
 static int event_order(const sweep *w, int *order, uint32_t n)
@@ -840,7 +865,20 @@ int tess_sweep_faithful(const float *s, const float *t, uint32_t n, tess_swept *
         w.winding[e] = 1;
         w.winding[e ^ 1] = -1;
     }
-    int ok = !w.fail && event_order(&w, order, n);
+    unsigned char *gone = w.fail ? NULL : calloc((size_t)w.vert_cap, 1);
+    if (!w.fail && !gone) {
+        free(order);
+        sweep_free(&w);
+        return -1;
+    }
+    if (!w.fail)
+        remove_degenerate_edges(&w, n, gone);
+    uint32_t live = 0;
+    for (uint32_t i = 0; i < n && !w.fail; i++)
+        if (!gone[order[i]])
+            order[live++] = order[i];
+    free(gone);
+    int ok = !w.fail && live >= 3 && event_order(&w, order, live);
     if (ok) {
         /* the sentinels, about the bounds enlarged as libtess2 does */
         float s_lo = s[0], s_hi = s[0], t_lo = t[0], t_hi = t[0];
@@ -854,7 +892,7 @@ int tess_sweep_faithful(const float *s, const float *t, uint32_t n, tess_swept *
         float ds = wide > 0.01f ? wide : 0.01f, dt = high > 0.01f ? high : 0.01f;
         add_sentinel(&w, s_lo - ds, s_hi + ds, t_lo - dt);
         add_sentinel(&w, s_lo - ds, s_hi + ds, t_hi + dt);
-        for (uint32_t i = 0; i < n && !w.fail; i++)
+        for (uint32_t i = 0; i < live && !w.fail; i++)
             sweep_event(&w, order[i]);
         /* RemoveDegenerateFaces */
         for (int f = w.fnext[0], next; !w.fail && f != 0; f = next) {

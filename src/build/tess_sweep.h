@@ -10,10 +10,12 @@
  * which half-edge each starts from, decide the order of its Delaunay
  * flips, and so the triangles where four points lie on one circle.
  *
- * Only the sweep of a simple polygon in general position is followed: a
- * point on another edge, edges that meet or cross, and the splices that
- * mend them, end it (tess_sweep_faithful returns 0), and the caller
- * takes its own sweep.
+ * Only the sweep of a simple polygon in general position is followed,
+ * after libtess2's removal of an edge between two neighbours on one point
+ * (RemoveDegenerateEdges): a point on another edge, two points on one
+ * that are not neighbours, edges that meet or cross, and the splices that
+ * mend them, end it (tess_sweep_faithful returns 0), and the caller takes
+ * its own sweep.
  */
 #ifndef SPANCAST_BUILD_TESS_SWEEP_H
 #define SPANCAST_BUILD_TESS_SWEEP_H
@@ -33,7 +35,10 @@ typedef struct tess_swept {
 } tess_swept;
 
 /* Sweeps the contour (s[i], t[i]), i = 0 .. n - 1, counter-clockwise,
- * every point distinct, as libtess2 does with TESS_WINDING_ODD. Returns 1
+ * as libtess2 does with TESS_WINDING_ODD: first the edges between two
+ * neighbours that are one point go, as libtess2 removes them, one of the
+ * two points merged into the other (org never names it); every other
+ * point must be distinct. Returns 1
  * with *out set; 0 where the polygon is not in general position for the
  * sweep (above); -1 when memory runs out. */
 int tess_sweep_faithful(const float *s, const float *t, uint32_t n, tess_swept *out);
