@@ -577,6 +577,15 @@ static void test_face_triangles(void **state)
     static const uint32_t above_too_tris[7][3] = {
         {0, 1, 2}, {0, 2, 5}, {0, 5, 7}, {0, 7, 8}, {2, 3, 5}, {3, 4, 5}, {5, 6, 7}};
     check_triangles("above too", above_too, 9, above_too_tris, 1);
+    /* two such pairs (1 and 2, 7 and 8), each merged and mended on its own */
+    static const double above_twice[10][3] = {
+        {1, 0, -0.0199},  {1, 2, 0.005},   {1, 2, -0.0083},  {-1, 3, 0.0157},
+        {-1, 1, 0.0254},  {-1, 0, 0.0229}, {-2, -2, 0.0254}, {0, -1, 0.0194},
+        {0, -1, -0.0054}, {1, -1, -0.0053}};
+    static const uint32_t above_twice_tris[8][3] = {{0, 1, 2}, {0, 2, 4}, {0, 4, 5},
+                                                    {0, 5, 8}, {0, 8, 9}, {2, 3, 4},
+                                                    {5, 6, 8}, {6, 7, 8}};
+    check_triangles("above twice", above_twice, 10, above_twice_tris, 1);
     /* A projection that crosses itself (edges 0-1 and 4-5, in the plane
      * libtess2 picks): not libtess2's split, a fan about point 0. */
     static const double folded[6][3] = {

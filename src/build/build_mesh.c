@@ -1134,15 +1134,16 @@ static void sort3(uint32_t v[3])
             }
 }
 
-/* The whole contour of a face with two neighbours on one point
+/* The whole contour of a face with pairs of neighbours on one point
  * (projected to ps, pt; contour point j is vertex n - 1 - j when
  * reversed; t times sign, so that it runs counter-clockwise) into m's
  * arrays s, t and contour, swept by libtess2's own sweep, which merges
- * the two as libtess2 does, and each region split by the monotone rule:
- * 1 with the n - 3 regions in m, 0 where that sweep gives up or the
- * regions are not as many, -1 when memory runs out. */
+ * each pair as libtess2 does, and each region split by the monotone rule:
+ * 1 with the n - 2 - pairs regions in m, 0 where that sweep gives up or
+ * the regions are not as many, -1 when memory runs out. */
 static int tess_whole(tess_mesh *m, const float *ps, const float *pt, uint32_t n,
-                      int reversed, float sign, float *s, float *t, uint32_t *contour)
+                      uint32_t pairs, int reversed, float sign, float *s, float *t,
+                      uint32_t *contour)
 {
     for (uint32_t j = 0; j < n; j++) {
         uint32_t a = reversed ? n - 1 - j : j;
@@ -1157,7 +1158,28 @@ static int tess_whole(tess_mesh *m, const float *ps, const float *pt, uint32_t n
     for (uint32_t f = m->face_next[TESS_HEAD]; ok > 0 && f != TESS_HEAD;
          f = m->face_next[f])
         live += m->inside[f];
-    return ok > 0 ? live == n - 3 : ok;
+    return ok > 0 ? live == n - 2 - pairs : ok;
+}
+
+/* Whether contour points j and j + 1 of the face are one point of the
+ * projection ps, pt (contour point j is vertex n - 1 - j when reversed). */
+static int tess_pair(const float *ps, const float *pt, uint32_t n, int reversed,
+                     uint32_t j)
+{
+    uint32_t a = reversed ? n - 1 - j : j,
+             b = reversed ? n - 1 - (j + 1) % n : (j + 1) % n;
+    return ps[a] == ps[b] && pt[a] == pt[b];
+}
+
+/* The sliver OpenSCAD mends where libtess2 merged contour points j and
+ * j + 1 (the later into the earlier, but 0 into 1, as its list runs from
+ * point 1 round to 0): the two and the other neighbour of the one kept,
+ * as contour points. */
+static void tess_sliver(uint32_t n, uint32_t j, uint32_t v[3])
+{
+    v[0] = j;
+    v[1] = (j + 1) % n;
+    v[2] = j == 0 ? n - 1 : (j + 2) % n;
 }
 
 int build_mesh_face_triangles(const vec3 *p, uint32_t n, int reversed, uint32_t *tris)
@@ -1182,7 +1204,7 @@ int build_mesh_face_triangles(const vec3 *p, uint32_t n, int reversed, uint32_t 
     /* one block: s, t by face position, then by vertex (float); the
      * uint32_t arrays; the marks */
     size_t words = 5 * (size_t)n + 5 * (size_t)half_edges + 3 * (size_t)faces;
-    uint32_t *block = malloc(words * sizeof(uint32_t) + half_edges + faces);
+    uint32_t *block = malloc(words * sizeof(uint32_t) + half_edges + faces + n);
     if (!block)
         return -1;
     float *ps = (float *)block, *pt = ps + n; /* float and uint32_t: both 4 bytes */
@@ -1200,6 +1222,7 @@ int build_mesh_face_triangles(const vec3 *p, uint32_t n, int reversed, uint32_t 
     m.face_edge = m.face_prev + faces;
     m.mark = (unsigned char *)(block + words);
     m.inside = m.mark + half_edges;
+    unsigned char *in_sliver = m.inside + faces; /* by contour point */
     /* contour point j is p[n - 1 - j] when reversed */
 #define AT(j) (reversed ? n - 1 - (j) : (j))
     int ok = tess_project(p, n, reversed, ps, pt);
@@ -1217,27 +1240,37 @@ int build_mesh_face_triangles(const vec3 *p, uint32_t n, int reversed, uint32_t 
      * merged, merged + 1): libtess2 merges them into the one it lists
      * first (its list runs from contour point 1 round to 0), triangulates
      * the rest, and OpenSCAD mends the sliver left between the two and
-     * the other neighbour of the one that stays. */
+     * the other neighbour of the one that stays (tess_sliver), a loop of
+     * three edges of its EdgeDict. Several such pairs are followed where
+     * their slivers share no point, so that each loop stays its own. */
     uint32_t merged = UINT32_MAX, pairs = 0, dropped = UINT32_MAX;
+    int apart = 1;
+    memset(in_sliver, 0, n);
     for (uint32_t j = 0; ok && j < n; j++) {
-        uint32_t a = AT(j), b = AT((j + 1) % n);
-        if (ps[a] == ps[b] && pt[a] == pt[b]) {
-            merged = j;
-            pairs++;
+        if (!tess_pair(ps, pt, n, reversed, j))
+            continue;
+        merged = j;
+        pairs++;
+        uint32_t v[3];
+        tess_sliver(n, j, v);
+        for (int i = 0; i < 3; i++) {
+            apart &= !in_sliver[v[i]];
+            in_sliver[v[i]] = 1;
         }
     }
     if (pairs == 1)
         dropped = merged == 0 ? 0 : (merged + 1) % n; /* 0 is listed last */
     /* First libtess2's own sweep of the whole contour, which merges the
-     * two as libtess2 does (tess_sweep.h); where it gives up, the contour
-     * without the one dropped, swept as below. */
-    int whole =
-        ok && pairs == 1 ? tess_whole(&m, ps, pt, n, reversed, sign, s, t, contour) : 0;
+     * pairs as libtess2 does (tess_sweep.h); where it gives up, the
+     * contour without the one dropped of a single pair, swept as below. */
+    int whole = ok && pairs >= 1 && apart
+                    ? tess_whole(&m, ps, pt, n, pairs, reversed, sign, s, t, contour)
+                    : 0;
     if (whole < 0) {
         free(block);
         return -1;
     }
-    uint32_t count = whole ? n - 1 : 0;
+    uint32_t count = whole ? n - pairs : 0;
     for (uint32_t j = 0; ok && !whole && j < n; j++) {
         if (j == dropped)
             continue;
@@ -1297,10 +1330,13 @@ int build_mesh_face_triangles(const vec3 *p, uint32_t n, int reversed, uint32_t 
             sort3(v);
             memcpy(&tris[3 * k++], v, sizeof v);
         }
-        if (pairs == 1) { /* the sliver: the pair and its neighbour */
-            uint32_t v[3] = {AT(merged), AT((merged + 1) % n),
-                             dropped == merged ? AT((merged + n - 1) % n)
-                                               : AT((merged + 2) % n)};
+        for (uint32_t j = 0; j < n; j++) { /* the slivers */
+            if (!tess_pair(ps, pt, n, reversed, j))
+                continue;
+            uint32_t v[3];
+            tess_sliver(n, j, v);
+            for (int i = 0; i < 3; i++)
+                v[i] = AT(v[i]);
             sort3(v);
             memcpy(&tris[3 * k++], v, sizeof v);
         }
