@@ -364,6 +364,22 @@ same dxf.csg extrude_ref.csg
 printf 'linear_extrude(height = 3) {\n\tsquare(size = [10, 6], center = false);\n\timport(file = "missing.svg");\n}\n' >svg.csg
 warns svg.csg "svg.csg:3:2: warning: Can't open SVG file 'missing.svg': No such file or directory; the import is empty, as OpenSCAD leaves it out (--strict makes it an error)"
 same svg.csg extrude_ref.csg
+
+# An SVG at dpi = inf, as OpenSCAD writes it into a .csg (dpi = 1/0 in the
+# .scad), is no error: a length without unit is 0 mm (import_svg.cc's
+# to_mm), so a page with a viewBox scales to nothing, and one without keeps
+# its user units, at a height of 0 (openscad -o x.stl: an empty model, and
+# the rectangle at x 10 to 40, y -30 to -10).
+for box in 'viewBox="0 0 100 50"' ''; do
+    name=dpi_inf${box:+_box}
+    printf '<svg xmlns="http://www.w3.org/2000/svg" width="100" height="50" %s><rect x="10" y="10" width="30" height="20"/></svg>\n' "$box" >$name.svg
+    printf 'linear_extrude(height = 1) {\n\timport(file = "%s.svg", layer = "", origin = [0, 0], center = false, dpi = inf, scale = 1, convexity = 1, $fn = 0, $fa = 12, $fs = 2, timestamp = 0);\n}\n' $name >$name.csg
+done
+warns dpi_inf_box.csg "dpi_inf_box.csg:1:1: warning: linear_extrude without height or area is empty
+dpi_inf_box.csg: warning: the model is empty (nothing to render)"
+warns dpi_inf.csg ""
+printf 'linear_extrude(height = 1) { multmatrix([[1, 0, 0, 10], [0, 1, 0, -30], [0, 0, 1, 0], [0, 0, 0, 1]]) { square(size = [30, 20], center = false); } }\n' >dpi_inf_ref.csg
+same dpi_inf.csg dpi_inf_ref.csg
 # the same inside hull, minkowski and projection (OpenSCAD: hull() {
 # import("missing.stl"); cube(1); } is the cube, with the warning)
 printf 'hull() {\n\timport(file = "missing.stl");\n\tcube(size = [1, 1, 1], center = false);\n}\n' >hull-missing.csg

@@ -1116,8 +1116,10 @@ static sc_status read_import(const eval *e, const model_node *n, twod_region *ou
     if (n->pending)
         return pending(e, n);
     const model_drawing *d = drawing_of(n, e->in_2d);
-    if (!d) { /* a 3D file, or one of no format OpenSCAD's import() reads */
-        sc_status st = unsupported_import(e, n);
+    if (!d) { /* a 3D file, or one of no format OpenSCAD's import() reads:
+               * read, then ignored */
+        build_presence state = BUILD_SOME;
+        sc_status st = import_3d(e, n, &state);
         return st != SC_OK ? st : ignore_3d(e, n, 0);
     }
     const char *name = d->file;

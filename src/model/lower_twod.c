@@ -267,15 +267,13 @@ static sc_status lower_drawing(model_lowerer *l, const parse_node *n, model_node
         (st = number(l, n, "scale", -1, &d->scale, NULL)) != SC_OK)
         return st;
     /* OpenSCAD 2021.01 (import.cc): center is true only when given true,
-     * a scale <= 0 is 1, a dpi below 0.001 the default */
+     * a scale <= 0 is 1, a dpi below 0.001 (or nan) the default; an
+     * infinite one makes a length without unit 0 (import_svg.cc) */
     const parse_value *center = model_arg(n, "center", -1);
     d->center = center && center->kind == PARSE_BOOL && center->u.boolean;
     const parse_value *dpi = model_arg(n, "dpi", -1);
     if (dpi && dpi->kind == PARSE_NUMBER && dpi->u.number >= 0.001)
         d->dpi = dpi->u.number;
-    if (d->format == MODEL_DRAWING_SVG && !isfinite(d->dpi))
-        return err_set(l->r.error, SC_ERR_SEMANTIC, &n->loc,
-                       "import: dpi must be finite");
     if (d->scale <= 0)
         d->scale = 1;
     far_drawing(d);
