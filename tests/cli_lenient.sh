@@ -380,6 +380,40 @@ dpi_inf_box.csg: warning: the model is empty (nothing to render)"
 warns dpi_inf.csg ""
 printf 'linear_extrude(height = 1) { multmatrix([[1, 0, 0, 10], [0, 1, 0, -30], [0, 0, 1, 0], [0, 0, 0, 1]]) { square(size = [30, 20], center = false); } }\n' >dpi_inf_ref.csg
 same dpi_inf.csg dpi_inf_ref.csg
+
+# A polygon outline with a coordinate past Clipper's range (2^62 over
+# OpenSCAD's 2^16 scale: about 7.04e13, and past the conversion's range,
+# 1e20, as well) is refused by OpenSCAD's clipper, and that outline and
+# those after it are left out (openscad -o x.stl prints exactly this
+# warning, and draws the rest). A path of fewer than three points after
+# Clipper drops its trailing repeats is not tested.
+ext1='linear_extrude(height = 1)'
+unit="$ext1 square(size = [1, 1], center = false);"
+range_case() {
+    printf '%s polygon(points = %s, paths = %s, convexity = 1);\n%s\n' "$ext1" "$2" "$3" "$unit" >"$1.csg"
+}
+range_case range_one '[[0, 0], [1e14, 0], [0, 1e14]]' undef
+range_case range_last '[[2, 0], [3, 0], [2, 1], [10, 10], [1e14, 10], [10, 11]]' '[[0, 1, 2], [3, 4, 5]]'
+range_case range_first '[[2, 0], [3, 0], [2, 1], [10, 10], [1e14, 10], [10, 11]]' '[[3, 4, 5], [0, 1, 2]]'
+range_case range_far '[[0, 0], [-1e20, 0], [0, 1]]' undef
+range_case range_repeat '[[0, 0], [0, 0], [7.1e13, 0]]' undef
+printf '%s\n' "$unit" >range_unit_ref.csg
+printf '%s polygon(points = [[2, 0], [3, 0], [2, 1]], paths = undef, convexity = 1);\n%s\n' "$ext1" "$unit" >range_last_ref.csg
+range_said='warning: Range check failed for polygon. skipping (the outline and those after it, as OpenSCAD leaves them out; --strict makes it an error)'
+for mode in "" --faithful; do
+    # shellcheck disable=SC2086
+    {
+        for f in range_one range_last range_first range_far range_repeat; do
+            warns $f.csg "$f.csg:1:28: $range_said" $mode
+        done
+        refuses range_one.csg "range_one.csg:1:28: error: polygon: coordinates out of the clipper's range" $mode
+        same range_one.csg range_unit_ref.csg $mode
+        same range_first.csg range_unit_ref.csg $mode
+        same range_far.csg range_unit_ref.csg $mode
+        same range_repeat.csg range_unit_ref.csg $mode
+        same range_last.csg range_last_ref.csg $mode
+    }
+done
 # the same inside hull, minkowski and projection (OpenSCAD: hull() {
 # import("missing.stl"); cube(1); } is the cube, with the warning)
 printf 'hull() {\n\timport(file = "missing.stl");\n\tcube(size = [1, 1, 1], center = false);\n}\n' >hull-missing.csg

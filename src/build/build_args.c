@@ -120,6 +120,17 @@ sc_status build_bad_indices(const build_ctx *c, const model_node *n)
     }
     const model_bad_point *p =
         polygon ? n->u.polygon->bad_point : n->u.polyhedron.bad_point;
+    if (st == SC_OK && polygon && n->u.polygon->range_bad) {
+        /* the outlines OpenSCAD's clipper refuses (model.h), after the
+         * indices, as it sanitizes the polygon it made */
+        if (c->strict)
+            return err_set(c->error, SC_ERR_LIMIT, &n->loc,
+                           "polygon: coordinates out of the clipper's range");
+        st = build_note_left_out(c, &n->loc,
+                                 "Range check failed for polygon. skipping (the outline "
+                                 "and those after it, as OpenSCAD leaves them out; "
+                                 "--strict makes it an error)");
+    }
     if (st != SC_OK || !p)
         return st;
     if (c->strict && p->not_finite && !polygon)

@@ -484,6 +484,8 @@ sc_status build_twod_polygon(const build_ctx *c, const model_node *n, const affi
     int paths = p->has_paths && (p->path_count > 0 || !empty_is_all);
     uint32_t count = paths ? p->path_count : 1;
     for (uint32_t k = 0; k < count; k++) {
+        if (p->range_bad && k + 1 >= p->range_bad) /* OpenSCAD's clipper refuses it */
+            break;
         uint32_t first = paths ? p->path_start[k] : 0;
         uint32_t len = paths ? p->path_start[k + 1] - first : p->point_count;
         if (!twod_begin_contour(out))

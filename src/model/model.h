@@ -260,6 +260,11 @@ typedef struct model_polygon {
     const model_bad_index *bad;
     uint32_t bad_count;
     const model_bad_point *bad_point; /* the polygon is then empty; or NULL */
+    /* 1 + the first contour (path k, or 0: all the points) that OpenSCAD
+     * 2021.01's clipper refuses (lower_twod.c: a coordinate past about
+     * 7.04e13 in magnitude): it and those after it are left out with
+     * "Range check failed for polygon. skipping"; 0: none */
+    uint32_t range_bad;
 } model_polygon;
 
 /* offset(r | delta, chamfer, $fn, $fa, $fs) */
