@@ -97,3 +97,49 @@ require_mpi() {
         skip "spancast-mpi was not built (no MPI development files at configure time)"
     export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 }
+
+# ---- the leniency tests' checks (cli_lenient*.sh) ----
+
+# same A B [OPTIONS]: spancast compare (with OPTIONS) finds the two models
+# the same.
+same() {
+    check
+    "$bin" compare "$1" "$2" -q "${@:3}" >compare.txt 2>compare.err ||
+        fail "compare $* : exit $? $(cat compare.err)"
+    [ "$(tail -n 1 compare.txt)" = same ] ||
+        fail "$1 and $2 differ ${*:3}: $(tail -n 12 compare.txt | tr '\n' ' ')"
+}
+
+# warns MODEL EXPECTED [render options]: spancast render MODEL prints
+# exactly EXPECTED on stderr and exits 0.
+warns() {
+    local model=$1 expected=$2
+    shift 2
+    check
+    "$bin" render "$model" -o out.png --imgsize=64,48 -q "$@" 2>err.txt
+    local rc=$?
+    [ "$rc" = 0 ] || fail "$model: exit $rc: $(cat err.txt)"
+    [ "$(cat err.txt)" = "$expected" ] ||
+        fail "$model: stderr '$(cat err.txt)', want '$expected'"
+}
+
+# refuses MODEL EXPECTED [render options]: spancast render MODEL --strict
+# prints exactly EXPECTED on stderr, exits 1 and writes no image.
+refuses() {
+    local model=$1 expected=$2
+    shift 2
+    check
+    rm -f strict.png
+    "$bin" render "$model" -o strict.png --imgsize=64,48 -q --strict "$@" 2>err.txt
+    local rc=$?
+    [ "$rc" = 1 ] || fail "$model --strict $*: exit $rc: $(cat err.txt)"
+    [ "$(cat err.txt)" = "$expected" ] ||
+        fail "$model --strict $*: stderr '$(cat err.txt)', want '$expected'"
+    [ -e strict.png ] && fail "$model --strict $*: an image was written"
+}
+
+# unable MODEL LINE COLUMN: the warning for the point [1, "a"] of the
+# third point of a polygon, which OpenSCAD cannot convert.
+unable() {
+    printf '%s:%s:%s: warning: Unable to convert points[2] = [1, "a"] to a vec2 of numbers; the polygon is empty, as OpenSCAD leaves it out (--strict makes it an error)' "$@"
+}
