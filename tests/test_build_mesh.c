@@ -433,16 +433,18 @@ static void test_bowtie(void **state)
     sc_scene_release(s);
 }
 
-/* The triangles of face p[0..n) (a polyhedron's: reversed) against the
- * expected ones, each a set of three positions, in any order. */
-static void check_triangles(const char *name, const double (*p)[3], uint32_t n,
-                            const uint32_t (*expected)[3], int split)
+/* The triangles of face p[0..n) (a polyhedron's: reversed; numbers as for
+ * build_mesh_face_triangles) against the expected ones, each a set of
+ * three positions, in any order. */
+static void check_numbered(const char *name, const double (*p)[3], uint32_t n,
+                           const uint32_t *numbers, const uint32_t (*expected)[3],
+                           int split)
 {
     vec3 q[16];
     uint32_t tris[3 * 14];
     for (uint32_t k = 0; k < n; k++)
         q[k] = v3(p[k][0], p[k][1], p[k][2]);
-    assert_int_equal(build_mesh_face_triangles(q, n, 1, tris), split);
+    assert_int_equal(build_mesh_face_triangles(q, n, 1, numbers, tris), split);
     for (uint32_t i = 0; i < n - 2; i++) {
         /* wound as the face: positions ascending up to a turn */
         uint32_t *t = &tris[3 * i];
@@ -461,6 +463,14 @@ static void check_triangles(const char *name, const double (*p)[3], uint32_t n,
         if (!found)
             fail_msg("%s: triangle %u %u %u is not OpenSCAD's", name, t[0], t[1], t[2]);
     }
+}
+
+/* check_numbered for a polyhedron of the one face: OpenSCAD numbers its
+ * points as it holds the face. */
+static void check_triangles(const char *name, const double (*p)[3], uint32_t n,
+                            const uint32_t (*expected)[3], int split)
+{
+    check_numbered(name, p, n, NULL, expected, split);
 }
 
 /* Faces of more than four points: the triangles of each are OpenSCAD
@@ -586,6 +596,28 @@ static void test_face_triangles(void **state)
                                                     {0, 5, 8}, {0, 8, 9}, {2, 3, 4},
                                                     {5, 6, 8}, {6, 7, 8}};
     check_triangles("above twice", above_twice, 10, above_twice_tris, 1);
+    /* Four points above one another (1 to 4): libtess2 merges them into
+     * one, and OpenSCAD cuts the loop of five edges it leaves into ears,
+     * in the order of its hash tables (tess_mend.h). */
+    static const double above_four[8][3] = {
+        {-0.011243023, 5, 0},   {0.00594063103, 1, 4},  {-0.00521628279, 1, 4},
+        {-0.00539857475, 1, 4}, {0.0147352293, 1, 4},   {0.00807262212, -4, 0},
+        {0.0131502459, -1, -1}, {0.000512888422, 3, -3}};
+    static const uint32_t above_four_tris[6][3] = {{0, 1, 2}, {0, 2, 4}, {0, 4, 6},
+                                                   {0, 6, 7}, {2, 3, 4}, {4, 5, 6}};
+    check_triangles("above four", above_four, 8, above_four_tris, 1);
+    /* Three above one another (0 to 2) in a polyhedron whose face
+     * [1, 0, 3] comes first, so that OpenSCAD numbers the points 1, 2, 6,
+     * 0, 5, 4, 3: the ears of the loop of four edges follow the numbers. */
+    static const double above_three[7][3] = {
+        {5, 1, 0.0483537167}, {5, 1, -0.0591212958}, {5, 1, 0.00969020277},
+        {0, 3, 0.0143731963}, {-3, 2, 0.0692786723}, {-5, -5, 0.0524260812},
+        {2, -5, 0.0648107082}};
+    static const uint32_t above_three_numbers[7] = {1, 2, 6, 0, 5, 4, 3};
+    static const uint32_t above_three_tris[5][3] = {
+        {0, 1, 2}, {0, 2, 6}, {2, 3, 6}, {3, 4, 6}, {4, 5, 6}};
+    check_numbered("above three", above_three, 7, above_three_numbers, above_three_tris,
+                   1);
     /* A projection that crosses itself (edges 0-1 and 4-5, in the plane
      * libtess2 picks): not libtess2's split, a fan about point 0. */
     static const double folded[6][3] = {

@@ -52,6 +52,7 @@
 #include "base/grow.h"
 #include "base/sort.h"
 #include "build/build_hull.h"
+#include "build/tess_mend.h"
 #include "build/tess_sweep.h"
 #include "csg/prim_mesh.h"
 #include "formats/amf.h"
@@ -456,66 +457,21 @@ int build_mesh_quad_diagonal(const vec3 q[4], int reversed)
  * returns has the new point, and OpenSCAD 2021.01
  * (GeometryUtils::tessellatePolygonWithHoles) drops them all. It then
  * fills the face's four edges, left in its edge table, with ears
- * (EdgeDict::triangulateLoops): the ear is cut at the first point of its
- * table of points by outgoing edge, and the diagonal is the one that
- * point is not on. Both tables are hash tables, so the first point is set
- * by their iteration order, which is reproduced here: OpenSCAD's number
- * of each point (the order in which its tessellation first meets the
- * points, face by face, each face as OpenSCAD holds it), the edges
- * (a, b) of the face keyed by boost::hash of the pair (1.74, 64-bit:
- * hash_combine's multiply-xorshift mix), the points keyed by their
- * number, and libstdc++'s unordered_map: 13 buckets from the first
- * insertion (up to 13 entries), a key going to the front of the list, or
- * just before the first key of its bucket when that bucket is taken.
- * Checked against OpenSCAD 2021.01's STL export: 268 of 268 bow ties of
- * five seeded twisted rings. */
-
-static uint64_t boost_hash_combine(uint64_t seed, uint64_t k)
-{
-    const uint64_t m = 0xc6a4a7935bd1e995u;
-    k *= m;
-    k ^= k >> 47;
-    k *= m;
-    seed ^= k;
-    seed *= m;
-    return seed + 0xe6546b64u;
-}
-
-/* The order in which libstdc++'s unordered_map lists count (<= 13) keys
- * with hash codes hash[], inserted in index order: order[] gets indices. */
-static void unordered_order(const uint64_t *hash, int count, int *order)
-{
-    int listed = 0;
-    for (int i = 0; i < count; i++) {
-        int at = 0;
-        for (int j = 0; j < listed; j++)
-            if (hash[order[j]] % 13 == hash[i] % 13) {
-                at = j;
-                break;
-            }
-        memmove(&order[at + 1], &order[at], (size_t)(listed - at) * sizeof *order);
-        order[at] = i;
-        listed++;
-    }
-}
+ * (tess_mend.h), in the order of its hash tables. Checked against
+ * OpenSCAD 2021.01's STL export: 268 of 268 bow ties of five seeded
+ * twisted rings. */
 
 /* The point of a bow tie (its position in g, OpenSCAD's numbers of the
  * quad's points in the order OpenSCAD holds the face) at which OpenSCAD
- * cuts its ear: the diagonal is the one not through it. */
+ * cuts its first ear, whose diagonal is the one not through it; -1 when
+ * memory runs out. */
 static int bowtie_ear(const uint32_t g[4])
 {
-    uint64_t hash[4];
-    int order[4];
-    for (int i = 0; i < 4; i++) /* edge i: g[i] -> g[i + 1] */
-        hash[i] = boost_hash_combine(boost_hash_combine(0, g[i]), g[(i + 1) % 4]);
-    unordered_order(hash, 4, order);
-    /* the points by outgoing edge, in the edge table's order */
-    uint64_t keys[4];
-    for (int i = 0; i < 4; i++)
-        keys[i] = g[order[i]];
-    int points[4];
-    unordered_order(keys, 4, points);
-    return order[points[0]];
+    uint32_t ears[6];
+    long made = tess_mend(g, 4, NULL, 0, ears, 2);
+    if (made < 0)
+        return made == -1 ? -1 : 0; /* the loop of four always closes */
+    return (int)ears[1];
 }
 
 int build_mesh_quad_crosses(const vec3 q[4], int reversed)
@@ -568,9 +524,11 @@ int build_mesh_quad_crosses(const vec3 q[4], int reversed)
  * polygon are made in libtess2's order (tess_sweep, below). Then each
  * region as above. Checked against libtess2's own source
  * (docs/meshes.md) on 60,000 random non-planar faces of 5 to 14 points:
- * every one gets libtess2's triangles. A projection that crosses or
- * touches itself, or has two points on one point of the plane, is split
- * as a fan about its first point (docs/meshes.md). */
+ * every one gets libtess2's triangles. Neighbours on one point of the
+ * plane are merged as libtess2 merges them, and the loops they leave
+ * mended as OpenSCAD mends them (tess_mend.h). A projection that crosses
+ * or touches itself is split as a fan about its first point
+ * (docs/meshes.md). */
 
 #define TESS_MAX_POINTS 4096u /* larger non-planar faces are fans */
 
@@ -1171,18 +1129,38 @@ static int tess_pair(const float *ps, const float *pt, uint32_t n, int reversed,
     return ps[a] == ps[b] && pt[a] == pt[b];
 }
 
-/* The sliver OpenSCAD mends where libtess2 merged contour points j and
- * j + 1 (the later into the earlier, but 0 into 1, as its list runs from
- * point 1 round to 0): the two and the other neighbour of the one kept,
- * as contour points. */
-static void tess_sliver(uint32_t n, uint32_t j, uint32_t v[3])
+/* The contour point libtess2 drops where it merges contour points j and
+ * j + 1: the later into the earlier, but 0 into 1, as its list runs from
+ * point 1 round to 0. */
+static uint32_t tess_dropped(uint32_t n, uint32_t j)
 {
-    v[0] = j;
-    v[1] = (j + 1) % n;
-    v[2] = j == 0 ? n - 1 : (j + 2) % n;
+    return j == 0 ? 0 : (j + 1) % n;
 }
 
-int build_mesh_face_triangles(const vec3 *p, uint32_t n, int reversed, uint32_t *tris)
+/* The triangles of the face, in OpenSCAD's order of edges (tess_mend.h):
+ * the count triangles in tris (contour points, each from its face's
+ * anEdge, as libtess2 lists them) mended with the loops OpenSCAD cuts
+ * into ears, where number (NULL: the contour points) gives OpenSCAD's
+ * number of each contour point. 1 with the n - 2 triangles in tris, 0
+ * where OpenSCAD's loops make other than n - 2, -1 when memory runs out. */
+static int tess_mended(const uint32_t *number, uint32_t n, uint32_t count, uint32_t *tris)
+{
+    uint32_t *face = malloc((size_t)n * sizeof *face);
+    uint32_t *out = malloc(3 * (size_t)(n - 2) * sizeof *out);
+    long made = face && out ? 0 : -1;
+    for (uint32_t j = 0; face && j < n; j++)
+        face[j] = number ? number[j] : j;
+    if (made == 0)
+        made = tess_mend(face, n, tris, count, out, n - 2);
+    if (made == (long)(n - 2))
+        memcpy(tris, out, 3 * (size_t)(n - 2) * sizeof *tris);
+    free(face);
+    free(out);
+    return made == -1 ? -1 : made == (long)(n - 2);
+}
+
+int build_mesh_face_triangles(const vec3 *p, uint32_t n, int reversed,
+                              const uint32_t *numbers, uint32_t *tris)
 {
     for (uint32_t j = 1; j + 1 < n; j++) { /* the fan, unless replaced below */
         tris[3 * (j - 1)] = 0;
@@ -1202,9 +1180,10 @@ int build_mesh_face_triangles(const vec3 *p, uint32_t n, int reversed, uint32_t 
     }
     uint32_t half_edges = 10 * n + 32, faces = 4 * n + 16;
     /* one block: s, t by face position, then by vertex (float); the
-     * uint32_t arrays; the marks */
-    size_t words = 5 * (size_t)n + 5 * (size_t)half_edges + 3 * (size_t)faces;
-    uint32_t *block = malloc(words * sizeof(uint32_t) + half_edges + faces + n);
+     * uint32_t arrays (the last OpenSCAD's numbers by contour point); the
+     * marks */
+    size_t words = 6 * (size_t)n + 5 * (size_t)half_edges + 3 * (size_t)faces;
+    uint32_t *block = malloc(words * sizeof(uint32_t) + half_edges + faces);
     if (!block)
         return -1;
     float *ps = (float *)block, *pt = ps + n; /* float and uint32_t: both 4 bytes */
@@ -1220,11 +1199,13 @@ int build_mesh_face_triangles(const vec3 *p, uint32_t n, int reversed, uint32_t 
     m.face_next = w + 5 * half_edges;
     m.face_prev = m.face_next + faces;
     m.face_edge = m.face_prev + faces;
+    uint32_t *number = m.face_edge + faces;
     m.mark = (unsigned char *)(block + words);
     m.inside = m.mark + half_edges;
-    unsigned char *in_sliver = m.inside + faces; /* by contour point */
     /* contour point j is p[n - 1 - j] when reversed */
 #define AT(j) (reversed ? n - 1 - (j) : (j))
+    for (uint32_t j = 0; numbers && j < n; j++)
+        number[j] = numbers[AT(j)];
     int ok = tess_project(p, n, reversed, ps, pt);
     float sign = 1;
     if (ok) {
@@ -1236,34 +1217,21 @@ int build_mesh_face_triangles(const vec3 *p, uint32_t n, int reversed, uint32_t 
         sign = area < 0 ? -1.0f : 1.0f;
         ok = area != 0;
     }
-    /* Two neighbours on one point of the projection (contour points
-     * merged, merged + 1): libtess2 merges them into the one it lists
-     * first (its list runs from contour point 1 round to 0), triangulates
-     * the rest, and OpenSCAD mends the sliver left between the two and
-     * the other neighbour of the one that stays (tess_sliver), a loop of
-     * three edges of its EdgeDict. Several such pairs are followed where
-     * their slivers share no point, so that each loop stays its own. */
-    uint32_t merged = UINT32_MAX, pairs = 0, dropped = UINT32_MAX;
-    int apart = 1;
-    memset(in_sliver, 0, n);
-    for (uint32_t j = 0; ok && j < n; j++) {
-        if (!tess_pair(ps, pt, n, reversed, j))
-            continue;
-        merged = j;
-        pairs++;
-        uint32_t v[3];
-        tess_sliver(n, j, v);
-        for (int i = 0; i < 3; i++) {
-            apart &= !in_sliver[v[i]];
-            in_sliver[v[i]] = 1;
+    /* Neighbours on one point of the projection (contour points j, j + 1):
+     * libtess2 merges them, one into the other (tess_dropped), and
+     * triangulates the rest; OpenSCAD mends the loops left between the
+     * merged points and their neighbours (tess_mend.h). */
+    uint32_t pairs = 0, merged = UINT32_MAX;
+    for (uint32_t j = 0; ok && j < n; j++)
+        if (tess_pair(ps, pt, n, reversed, j)) {
+            merged = j;
+            pairs++;
         }
-    }
-    if (pairs == 1)
-        dropped = merged == 0 ? 0 : (merged + 1) % n; /* 0 is listed last */
+    uint32_t dropped = pairs == 1 ? tess_dropped(n, merged) : UINT32_MAX;
     /* First libtess2's own sweep of the whole contour, which merges the
      * pairs as libtess2 does (tess_sweep.h); where it gives up, the
      * contour without the one dropped of a single pair, swept as below. */
-    int whole = ok && pairs >= 1 && apart
+    int whole = ok && pairs >= 1
                     ? tess_whole(&m, ps, pt, n, pairs, reversed, sign, s, t, contour)
                     : 0;
     if (whole < 0) {
@@ -1320,29 +1288,37 @@ int build_mesh_face_triangles(const vec3 *p, uint32_t n, int reversed, uint32_t 
     }
     if (ok) {
         tess_refine(&m, stack);
-        uint32_t k = 0;
+        uint32_t k = 0; /* libtess2's triangles, as it lists them */
         for (uint32_t f = m.face_next[TESS_HEAD]; f != TESS_HEAD; f = m.face_next[f]) {
             if (!m.inside[f])
                 continue;
-            uint32_t e = m.face_edge[f], v[3];
+            uint32_t e = m.face_edge[f];
             for (int i = 0; i < 3; i++, e = m.lnext[e])
-                v[i] = AT(contour[m.org[e]]);
-            sort3(v);
-            memcpy(&tris[3 * k++], v, sizeof v);
+                tris[3 * k + i] = contour[m.org[e]];
+            k++;
         }
-        for (uint32_t j = 0; j < n; j++) { /* the slivers */
-            if (!tess_pair(ps, pt, n, reversed, j))
-                continue;
-            uint32_t v[3];
-            tess_sliver(n, j, v);
+        if (whole) {
+            ok = tess_mended(numbers ? number : NULL, n, k, tris);
+        } else if (pairs == 1) { /* the one sliver, a loop of three edges */
+            tris[3 * k] = merged;
+            tris[3 * k + 1] = (merged + 1) % n;
+            tris[3 * k + 2] =
+                dropped == merged ? (merged + n - 1) % n : (dropped + 1) % n;
+        }
+        for (uint32_t j = 0; ok > 0 && j < n - 2; j++) {
             for (int i = 0; i < 3; i++)
-                v[i] = AT(v[i]);
-            sort3(v);
-            memcpy(&tris[3 * k++], v, sizeof v);
+                tris[3 * j + i] = AT(tris[3 * j + i]);
+            sort3(&tris[3 * j]);
         }
     }
 #undef AT
     free(block);
+    if (ok <= 0)
+        for (uint32_t j = 1; j + 1 < n; j++) { /* the fan */
+            tris[3 * (j - 1)] = 0;
+            tris[3 * (j - 1) + 1] = j;
+            tris[3 * (j - 1) + 2] = j + 1;
+        }
     return ok;
 }
 
@@ -1666,7 +1642,7 @@ sc_status build_mesh_solid(const build_ctx *c, const sc_location *loc, const cha
     size_t k = 0;
     vec3 *corners = NULL; /* a face's points, for the larger faces */
     uint32_t *local = NULL, corner_cap = 0;
-    uint32_t *numbers = NULL; /* OpenSCAD's numbers of the points, for bow ties */
+    uint32_t *numbers = NULL; /* OpenSCAD's numbers of the points (tess_mend.h) */
     int oom = 0;
     for (uint32_t i = 0; i < f->face_count && !oom; i++) {
         const uint32_t *v = &f->indices[f->face_start[i]];
@@ -1686,6 +1662,10 @@ sc_status build_mesh_solid(const build_ctx *c, const sc_location *loc, const cha
                 for (int j = 0; j < 4; j++)
                     g[j] = numbers[v[numbered ? 3 - j : j]];
                 int ear = bowtie_ear(g);
+                if (ear < 0) {
+                    oom = 1;
+                    break;
+                }
                 first = (uint32_t)((numbered ? 3 - ear : ear) + 1) % 2;
             }
         } else if (n > 4 && !face_planar(f->points, v, n)) {
@@ -1693,16 +1673,24 @@ sc_status build_mesh_solid(const build_ctx *c, const sc_location *loc, const cha
                 free(corners);
                 free(local);
                 corners = malloc((size_t)n * sizeof *corners);
-                local = malloc(3 * (size_t)n * sizeof *local);
+                local = malloc(4 * (size_t)n * sizeof *local); /* and numbers */
                 corner_cap = n;
                 if (!corners || !local) {
                     oom = 1;
                     break;
                 }
             }
-            for (uint32_t j = 0; j < n; j++)
+            if (!numbers && !(numbers = openscad_numbers(f, numbered))) {
+                oom = 1;
+                break;
+            }
+            uint32_t *face_numbers = local + 3 * n;
+            for (uint32_t j = 0; j < n; j++) {
                 corners[j] = f->points[v[j]];
-            if (build_mesh_face_triangles(corners, n, numbered, local) < 0) {
+                face_numbers[j] = numbers[v[j]];
+            }
+            if (build_mesh_face_triangles(corners, n, numbered, face_numbers, local) <
+                0) {
                 oom = 1;
                 break;
             }
