@@ -279,6 +279,28 @@ static void test_polygon_malformed(void **state)
     release(&l);
 }
 
+/* The outline OpenSCAD 2021.01's clipper refuses (range_bad, 1-based):
+ * a coordinate of 2^46 or more in magnitude is past its range at the
+ * scale of 2^16; the double below 2^46 is not; a point in no outline is
+ * not tested; the first outline refused ends the polygon. */
+static void test_polygon_range(void **state)
+{
+    (void)state;
+    lowered l = lower("polygon([[0, 0], [70368744177664, 0], [0, 1]]);\n"
+                      "polygon([[0, 0], [70368744177663.99, 0], [0, 1]]);\n"
+                      "polygon([[0, 0], [0, -70368744177664], [1, 1]]);\n"
+                      "polygon([[0, 0], [1, 0], [0, 1], [1e14, 0]], [[0, 1, 2]]);\n"
+                      "polygon([[0, 0], [1, 0], [0, 1], [1e14, 0], [5, 5], [5, 6]],\n"
+                      "        [[0, 1, 2], [3, 4, 5], [0, 2, 1]]);\n");
+    static const uint32_t expected[5] = {1, 0, 1, 0, 2};
+    const model_node *n = l.m->first;
+    for (int i = 0; i < 5; i++, n = n->next) {
+        assert_int_equal(n->kind, MODEL_POLYGON);
+        assert_int_equal(n->u.polygon->range_bad, expected[i]);
+    }
+    release(&l);
+}
+
 static void test_operations(void **state)
 {
     (void)state;
@@ -1195,6 +1217,7 @@ int main(void)
         cmocka_unit_test(test_polyhedron),
         cmocka_unit_test(test_polyhedron_malformed),
         cmocka_unit_test(test_polygon_malformed),
+        cmocka_unit_test(test_polygon_range),
         cmocka_unit_test(test_operations),
         cmocka_unit_test(test_matrix_as_openscad_reads_it),
         cmocka_unit_test(test_what_is_lowered),

@@ -191,6 +191,13 @@ static int clipper_refuses(const double *xy, const uint32_t *index, uint32_t n,
  * without paths or with an empty vector of them, one of all the points. */
 static sc_status polygon_range(model_lowerer *l, model_polygon *p)
 {
+    /* Only a coordinate of 2^46 or more (2^62 at the scale of 2^16) can be
+     * refused: a polygon without one needs no conversion. */
+    int large = 0;
+    for (size_t i = 0; i < 2 * (size_t)p->point_count && !large; i++)
+        large = !(fabs(p->xy[i]) < 0x1p46);
+    if (!large)
+        return SC_OK;
     int paths = p->has_paths && p->path_count > 0;
     uint32_t count = paths ? p->path_count : 1, longest = paths ? 0 : p->point_count;
     for (uint32_t k = 0; paths && k < count; k++)
