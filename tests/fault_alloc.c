@@ -104,7 +104,8 @@ static void test_models(void **state)
 }
 
 /* A model that reaches every allocating path of the builder: warnings, a
- * polyhedron (points, faces, edges, planes), colours, modifiers, nested
+ * polyhedron (points, faces, edges, planes, a face split as OpenSCAD splits
+ * it), colours, modifiers, nested
  * vectors and strings, and enough nodes to grow every array. */
 static void test_every_path(void **state)
 {
@@ -124,7 +125,17 @@ static void test_every_path(void **state)
                          "difference() { cube(2); intersection() { sphere(1.5); "
                          "cube(1.9, center = true); } }\n"
                          "polyhedron(points = [[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, "
-                         "1]], faces = [[0, 1, 2], [0, 3, 1], [0, 2, 3], [1, 3, 2]]);\n");
+                         "1]], faces = [[0, 1, 2], [0, 3, 1], [0, 2, 3], [1, 3, 2]]);\n"
+                         /* a non-planar face with points above one another
+                          * (tess_mend.c) */
+                         "polyhedron(points = [[7.5, 0, 0.6], [7.5, 0, 1.4], [7.5, 0, "
+                         "2.2], [4.4, 3.2, 1.1], [1.4, 4.5, 0.1], [-2.2, 6.8, -1], "
+                         "[-5.2, 3.7, -0.8], [-4.5, 0, 0.6], [-4.5, 0, 1.4], [-5.2, "
+                         "-3.7, 1.1], [-2.2, -6.8, 0.1], [1.4, -4.5, -1], [4.4, -3.2, "
+                         "-0.8], [0, 0, -4]], faces = [[12, 11, 10, 9, 8, 7, 6, 5, 4, 3, "
+                         "2, 1, 0], [13, 0, 1], [13, 1, 2], [13, 2, 3], [13, 3, 4], [13, "
+                         "4, 5], [13, 5, 6], [13, 6, 7], [13, 7, 8], [13, 8, 9], [13, 9, "
+                         "10], [13, 10, 11], [13, 11, 12], [13, 12, 0]]);\n");
     for (int i = 0; i < 300; i++)
         n +=
             (size_t)snprintf(text + n, sizeof text - n,
