@@ -13,6 +13,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "base/grow.h"
+
 #define NIL UINT32_MAX
 
 /* libstdc++'s bucket counts for a table grown one key at a time (max
@@ -22,11 +24,19 @@ static const uint32_t bucket_counts[] = {13,   29,   59,    127,   257,   541,  
                                          2357, 5087, 10273, 20753, 42043, 85229, 172933};
 #define BUCKET_GRADES (sizeof bucket_counts / sizeof bucket_counts[0])
 
+typedef struct node {
+    uint64_t key, hash;
+    uint32_t next; /* the next in the list, NIL at the end */
+    uint32_t val;  /* a count, or the first cell of a list */
+    uint32_t last; /* the last cell of its list, NIL: empty */
+} node;
+
+typedef struct cell {
+    uint32_t value, next;
+} cell;
+
 typedef struct table {
-    uint64_t *key, *hash; /* by node; node 0 is the head, before the first */
-    uint32_t *next;       /* by node: the next in the list, NIL at the end */
-    uint32_t *val;        /* by node: a count, or the first cell of a list */
-    uint32_t *last;       /* by node: the last cell of its list */
+    node *node; /* node 0 is the head, before the first */
     uint32_t nodes, node_cap;
     uint32_t *before; /* by bucket: the node before its first, NIL: empty */
     uint32_t buckets; /* 0 before the first key */
@@ -35,8 +45,8 @@ typedef struct table {
 } table;
 
 typedef struct mend {
-    table edges, out_of, into;        /* EdgeDict's edges, v2e, v2e_reverse */
-    uint32_t *cell_value, *cell_next; /* the lists' cells */
+    table edges, out_of, into; /* EdgeDict's edges, v2e, v2e_reverse */
+    cell *cell;                /* the lists' cells */
     uint32_t cells, cell_cap;
     int nomem, broken;
 } mend;
@@ -44,32 +54,22 @@ typedef struct mend {
 static int table_init(table *t)
 {
     memset(t, 0, sizeof *t);
-    t->node_cap = 64;
-    t->key = malloc(t->node_cap * sizeof *t->key);
-    t->hash = malloc(t->node_cap * sizeof *t->hash);
-    t->next = malloc(t->node_cap * sizeof *t->next);
-    t->val = malloc(t->node_cap * sizeof *t->val);
-    t->last = malloc(t->node_cap * sizeof *t->last);
-    if (!t->key || !t->hash || !t->next || !t->val || !t->last)
+    if (!grow_array32((void **)&t->node, &t->node_cap, 1, sizeof *t->node))
         return 0;
-    t->next[0] = NIL;
+    t->node[0].next = NIL;
     t->nodes = 1;
     return 1;
 }
 
 static void table_free(table *t)
 {
-    free(t->key);
-    free(t->hash);
-    free(t->next);
-    free(t->val);
-    free(t->last);
+    free(t->node);
     free(t->before);
 }
 
 static uint32_t bucket(const table *t, uint32_t node)
 {
-    return (uint32_t)(t->hash[node] % t->buckets);
+    return (uint32_t)(t->node[node].hash % t->buckets);
 }
 
 /* Links node x into the list at its bucket (libstdc++'s
@@ -78,14 +78,14 @@ static void table_link(table *t, uint32_t x)
 {
     uint32_t b = bucket(t, x);
     if (t->before[b] != NIL) {
-        t->next[x] = t->next[t->before[b]];
-        t->next[t->before[b]] = x;
+        t->node[x].next = t->node[t->before[b]].next;
+        t->node[t->before[b]].next = x;
         return;
     }
-    t->next[x] = t->next[0];
-    t->next[0] = x;
-    if (t->next[x] != NIL)
-        t->before[bucket(t, t->next[x])] = x;
+    t->node[x].next = t->node[0].next;
+    t->node[0].next = x;
+    if (t->node[x].next != NIL)
+        t->before[bucket(t, t->node[x].next)] = x;
     t->before[b] = 0;
 }
 
@@ -96,39 +96,11 @@ static uint32_t table_find(const table *t, uint64_t key, uint64_t hash)
     uint32_t b = (uint32_t)(hash % t->buckets);
     if (t->before[b] == NIL)
         return NIL;
-    for (uint32_t q = t->next[t->before[b]]; q != NIL && bucket(t, q) == b;
-         q = t->next[q])
-        if (t->key[q] == key)
+    for (uint32_t q = t->node[t->before[b]].next; q != NIL && bucket(t, q) == b;
+         q = t->node[q].next)
+        if (t->node[q].key == key)
             return q;
     return NIL;
-}
-
-static int table_grow(mend *m, table *t)
-{
-    if (t->nodes < t->node_cap)
-        return 1;
-    uint32_t cap = t->node_cap * 2;
-    uint64_t *key = realloc(t->key, cap * sizeof *key);
-    if (key)
-        t->key = key;
-    uint64_t *hash = realloc(t->hash, cap * sizeof *hash);
-    if (hash)
-        t->hash = hash;
-    uint32_t *next = realloc(t->next, cap * sizeof *next);
-    if (next)
-        t->next = next;
-    uint32_t *val = realloc(t->val, cap * sizeof *val);
-    if (val)
-        t->val = val;
-    uint32_t *last = realloc(t->last, cap * sizeof *last);
-    if (last)
-        t->last = last;
-    if (!key || !hash || !next || !val || !last) {
-        m->nomem = 1;
-        return 0;
-    }
-    t->node_cap = cap;
-    return 1;
 }
 
 /* The table's node for key, made (count 0, empty list) when it has none,
@@ -139,6 +111,10 @@ static uint32_t table_get(mend *m, table *t, uint64_t key, uint64_t hash)
     uint32_t x = table_find(t, key, hash);
     if (x != NIL)
         return x;
+    if (!grow_array32((void **)&t->node, &t->node_cap, t->nodes + 1, sizeof *t->node)) {
+        m->nomem = 1;
+        return NIL;
+    }
     if (t->size + 1 > t->buckets) {
         if (t->grade == BUCKET_GRADES) {
             m->broken = 1;
@@ -155,21 +131,19 @@ static uint32_t table_get(mend *m, table *t, uint64_t key, uint64_t hash)
         t->buckets = count;
         for (uint32_t b = 0; b < count; b++)
             before[b] = NIL;
-        uint32_t p = t->next[0];
-        t->next[0] = NIL;
+        uint32_t p = t->node[0].next;
+        t->node[0].next = NIL;
         while (p != NIL) {
-            uint32_t after = t->next[p];
+            uint32_t after = t->node[p].next;
             table_link(t, p);
             p = after;
         }
     }
-    if (!table_grow(m, t))
-        return NIL;
     x = t->nodes++;
-    t->key[x] = key;
-    t->hash[x] = hash;
-    t->val[x] = 0;
-    t->last[x] = NIL;
+    t->node[x].key = key;
+    t->node[x].hash = hash;
+    t->node[x].val = 0;
+    t->node[x].last = NIL;
     table_link(t, x);
     t->size++;
     return x;
@@ -179,9 +153,9 @@ static uint32_t table_get(mend *m, table *t, uint64_t key, uint64_t hash)
 static void table_erase(table *t, uint32_t x)
 {
     uint32_t b = bucket(t, x), p = t->before[b];
-    while (t->next[p] != x)
-        p = t->next[p];
-    uint32_t after = t->next[x];
+    while (t->node[p].next != x)
+        p = t->node[p].next;
+    uint32_t after = t->node[x].next;
     if (p == t->before[b]) {
         if (after == NIL || bucket(t, after) != b) { /* the bucket empties */
             if (after != NIL)
@@ -191,7 +165,7 @@ static void table_erase(table *t, uint32_t x)
     } else if (after != NIL && bucket(t, after) != b) {
         t->before[bucket(t, after)] = p;
     }
-    t->next[p] = after;
+    t->node[p].next = after;
     t->size--;
 }
 
@@ -222,20 +196,20 @@ static uint64_t edge_hash(uint32_t a, uint32_t b)
 static uint32_t edge_count(const mend *m, uint32_t a, uint32_t b)
 {
     uint32_t x = table_find(&m->edges, edge_key(a, b), edge_hash(a, b));
-    return x == NIL ? 0 : m->edges.val[x];
+    return x == NIL ? 0 : m->edges.node[x].val;
 }
 
 static void edge_add(mend *m, uint32_t a, uint32_t b)
 {
     uint32_t x = table_get(m, &m->edges, edge_key(a, b), edge_hash(a, b));
     if (x != NIL)
-        m->edges.val[x]++;
+        m->edges.node[x].val++;
 }
 
 static void edge_remove(mend *m, uint32_t a, uint32_t b)
 {
     uint32_t x = table_get(m, &m->edges, edge_key(a, b), edge_hash(a, b));
-    if (x != NIL && --m->edges.val[x] == 0)
+    if (x != NIL && --m->edges.node[x].val == 0)
         table_erase(&m->edges, x);
 }
 
@@ -259,34 +233,25 @@ static void list_push(mend *m, table *t, uint32_t at, uint32_t value)
     uint32_t x = table_get(m, t, at, at);
     if (x == NIL)
         return;
-    if (m->cells == m->cell_cap) {
-        uint32_t cap = m->cell_cap ? 2 * m->cell_cap : 64;
-        uint32_t *v = realloc(m->cell_value, cap * sizeof *v);
-        if (v)
-            m->cell_value = v;
-        uint32_t *n = realloc(m->cell_next, cap * sizeof *n);
-        if (n)
-            m->cell_next = n;
-        if (!v || !n) {
-            m->nomem = 1;
-            return;
-        }
-        m->cell_cap = cap;
+    if (!grow_array32((void **)&m->cell, &m->cell_cap, m->cells + 1, sizeof *m->cell)) {
+        m->nomem = 1;
+        return;
     }
     uint32_t c = m->cells++;
-    m->cell_value[c] = value;
-    m->cell_next[c] = NIL;
-    if (t->last[x] == NIL)
-        t->val[x] = c;
+    m->cell[c].value = value;
+    m->cell[c].next = NIL;
+    if (t->node[x].last == NIL)
+        t->node[x].val = c;
     else
-        m->cell_next[t->last[x]] = c;
-    t->last[x] = c;
+        m->cell[t->node[x].last].next = c;
+    t->node[x].last = c;
 }
 
 static int list_has(const mend *m, const table *t, uint32_t x, uint32_t value)
 {
-    for (uint32_t c = t->last[x] == NIL ? NIL : t->val[x]; c != NIL; c = m->cell_next[c])
-        if (m->cell_value[c] == value)
+    for (uint32_t c = t->node[x].last == NIL ? NIL : t->node[x].val; c != NIL;
+         c = m->cell[c].next)
+        if (m->cell[c].value == value)
             return 1;
     return 0;
 }
@@ -299,19 +264,19 @@ static void list_remove(mend *m, table *t, uint32_t at, uint32_t value)
     if (x == NIL)
         return;
     uint32_t prev = NIL;
-    for (uint32_t c = t->last[x] == NIL ? NIL : t->val[x]; c != NIL;
-         prev = c, c = m->cell_next[c]) {
-        if (m->cell_value[c] != value)
+    for (uint32_t c = t->node[x].last == NIL ? NIL : t->node[x].val; c != NIL;
+         prev = c, c = m->cell[c].next) {
+        if (m->cell[c].value != value)
             continue;
         if (prev == NIL)
-            t->val[x] = m->cell_next[c];
+            t->node[x].val = m->cell[c].next;
         else
-            m->cell_next[prev] = m->cell_next[c];
-        if (t->last[x] == c)
-            t->last[x] = prev;
+            m->cell[prev].next = m->cell[c].next;
+        if (t->node[x].last == c)
+            t->node[x].last = prev;
         break;
     }
-    if (t->last[x] == NIL)
+    if (t->node[x].last == NIL)
         table_erase(t, x);
 }
 
@@ -319,11 +284,11 @@ static void list_remove(mend *m, table *t, uint32_t at, uint32_t value)
 static void extract(mend *m, uint32_t v, uint32_t next, uint32_t tri[3])
 {
     uint32_t r = table_get(m, &m->into, v, v);
-    if (r == NIL || m->into.last[r] == NIL) {
+    if (r == NIL || m->into.node[r].last == NIL) {
         m->broken = 1; /* OpenSCAD asserts here */
         return;
     }
-    uint32_t prev = m->cell_value[m->into.val[r]];
+    uint32_t prev = m->cell[m->into.node[r].val].value;
     tri[0] = prev;
     tri[1] = v;
     tri[2] = next;
@@ -415,27 +380,30 @@ long tess_mend(const uint32_t *face, uint32_t n, const uint32_t *tris, uint32_t 
         memcpy(&out[3 * made++], v, sizeof v);
     }
     /* EdgeDict::triangulateLoops */
-    for (uint32_t e = m.edges.next[0]; e != NIL && !m.nomem && !m.broken;
-         e = m.edges.next[e])
-        for (uint32_t c = 0; c < m.edges.val[e]; c++) {
-            uint32_t a = (uint32_t)(m.edges.key[e] >> 32), b = (uint32_t)m.edges.key[e];
+    for (uint32_t e = m.edges.node[0].next; e != NIL && !m.nomem && !m.broken;
+         e = m.edges.node[e].next)
+        for (uint32_t c = 0; c < m.edges.node[e].val; c++) {
+            uint32_t a = (uint32_t)(m.edges.node[e].key >> 32),
+                     b = (uint32_t)m.edges.node[e].key;
             list_push(&m, &m.out_of, a, b);
             list_push(&m, &m.into, b, a);
         }
     uint32_t steps = m.cells; /* each ear takes at least one edge */
     while (m.out_of.size && !m.nomem && !m.broken) {
-        uint32_t x = m.out_of.next[0];
-        for (uint32_t q = x; q != NIL; q = m.out_of.next[q])
-            if (m.out_of.last[q] != NIL && m.out_of.last[q] == m.out_of.val[q]) {
+        uint32_t x = m.out_of.node[0].next;
+        for (uint32_t q = x; q != NIL; q = m.out_of.node[q].next)
+            if (m.out_of.node[q].last != NIL &&
+                m.out_of.node[q].last == m.out_of.node[q].val) {
                 x = q;
                 break;
             }
-        if (steps-- == 0 || (uint32_t)made == out_cap || m.out_of.last[x] == NIL) {
+        if (steps-- == 0 || (uint32_t)made == out_cap || m.out_of.node[x].last == NIL) {
             m.broken = 1;
             break;
         }
         uint32_t *tri = &out[3 * made];
-        extract(&m, (uint32_t)m.out_of.key[x], m.cell_value[m.out_of.val[x]], tri);
+        extract(&m, (uint32_t)m.out_of.node[x].key, m.cell[m.out_of.node[x].val].value,
+                tri);
         if (tri[0] == tri[1] || tri[1] == tri[2] || tri[0] == tri[2])
             m.broken = 1;
         made++;
@@ -451,8 +419,7 @@ done:
     table_free(&m.edges);
     table_free(&m.out_of);
     table_free(&m.into);
-    free(m.cell_value);
-    free(m.cell_next);
+    free(m.cell);
     free(sorted);
     return m.nomem ? -1 : m.broken ? -2 : made;
 }
