@@ -434,34 +434,40 @@ static void test_bowtie(void **state)
 }
 
 /* The triangles of face p[0..n) (a polyhedron's: reversed; numbers as for
- * build_mesh_face_triangles) against the expected ones, each a set of
- * three positions, in any order. */
+ * build_mesh_face_triangles) against the count expected ones (n - 2, or
+ * more where OpenSCAD's mending of a face that crosses itself makes
+ * more), each a set of three positions, in any order. */
 static void check_numbered(const char *name, const double (*p)[3], uint32_t n,
                            const uint32_t *numbers, const uint32_t (*expected)[3],
-                           int split)
+                           uint32_t count, int split)
 {
     vec3 q[16];
-    uint32_t tris[3 * 14];
+    uint32_t tris[3 * 32], written;
+    int used[32] = {0};
     for (uint32_t k = 0; k < n; k++)
         q[k] = v3(p[k][0], p[k][1], p[k][2]);
-    assert_int_equal(build_mesh_face_triangles(q, n, 1, numbers, tris), split);
-    for (uint32_t i = 0; i < n - 2; i++) {
+    assert_int_equal(build_mesh_face_triangles(q, n, 1, numbers, tris, 32, &written),
+                     split);
+    assert_int_equal(written, count);
+    for (uint32_t i = 0; i < count; i++) {
         /* wound as the face: positions ascending up to a turn */
         uint32_t *t = &tris[3 * i];
         int turns = (t[0] > t[1]) + (t[1] > t[2]) + (t[2] > t[0]);
         if (turns != 1)
             fail_msg("%s: triangle %u %u %u is not wound as the face", name, t[0], t[1],
                      t[2]);
-        int found = 0;
-        for (uint32_t j = 0; j < n - 2 && !found; j++) {
+        uint32_t j = 0;
+        for (; j < count; j++) {
             const uint32_t *e = expected[j];
             int hits = 0;
             for (int a = 0; a < 3; a++)
                 hits += t[a] == e[0] || t[a] == e[1] || t[a] == e[2];
-            found = hits == 3;
+            if (hits == 3 && !used[j])
+                break;
         }
-        if (!found)
+        if (j == count)
             fail_msg("%s: triangle %u %u %u is not OpenSCAD's", name, t[0], t[1], t[2]);
+        used[j] = 1;
     }
 }
 
@@ -470,7 +476,7 @@ static void check_numbered(const char *name, const double (*p)[3], uint32_t n,
 static void check_triangles(const char *name, const double (*p)[3], uint32_t n,
                             const uint32_t (*expected)[3], int split)
 {
-    check_numbered(name, p, n, NULL, expected, split);
+    check_numbered(name, p, n, NULL, expected, n - 2, split);
 }
 
 /* Faces of more than four points: the triangles of each are OpenSCAD
@@ -617,22 +623,62 @@ static void test_face_triangles(void **state)
     static const uint32_t above_three_tris[5][3] = {
         {0, 1, 2}, {0, 2, 6}, {2, 3, 6}, {3, 4, 6}, {4, 5, 6}};
     check_numbered("above three", above_three, 7, above_three_numbers, above_three_tris,
-                   1);
+                   5, 1);
+    /* A projection that touches itself: point 3 on the edge from 0 to 1,
+     * which libtess2 splices into it (the sliver 0 1 3 is OpenSCAD's
+     * mending), and points 1 and 4 on one point, which it merges */
+    static const double on_edge[5][3] = {
+        {0, 0, 0.01}, {4, 0, -0.02}, {4, 4, 0.03}, {2, 0, 0.05}, {0, 4, -0.01}};
+    static const uint32_t on_edge_tris[3][3] = {{0, 3, 4}, {1, 2, 3}, {0, 1, 3}};
+    check_triangles("on an edge", on_edge, 5, on_edge_tris, 1);
+    static const double touching[6][3] = {{0, 0, 0.01}, {2, 2, -0.02}, {4, 0, 0.03},
+                                          {4, 4, 0.02}, {2, 2, 0.04},  {0, 4, -0.03}};
+    static const uint32_t touching_tris[4][3] = {
+        {0, 4, 5}, {2, 3, 4}, {0, 1, 4}, {1, 2, 4}};
+    check_triangles("touching", touching, 6, touching_tris, 1);
     /* A projection that crosses itself (edges 0-1 and 4-5, in the plane
-     * libtess2 picks): not libtess2's split, a fan about point 0. */
+     * libtess2 picks): libtess2 cuts the two at a new point, OpenSCAD drops
+     * its triangles with that point and mends the loops they leave. */
     static const double folded[6][3] = {
         {7.07732, 1.51709, -0.172382}, {6.4757, 2.14586, -0.558831},
         {6.18934, 2.85873, -0.681548}, {7.13314, 3.29466, -0.928364},
         {6.87558, 2.27837, -1.0461},   {6.79716, 1.45703, -0.949727}};
-    static const uint32_t fan[4][3] = {{0, 1, 2}, {0, 2, 3}, {0, 3, 4}, {0, 4, 5}};
-    check_triangles("folded", folded, 6, fan, 0);
+    static const uint32_t folded_tris[4][3] = {
+        {2, 3, 4}, {1, 2, 4}, {0, 4, 5}, {0, 1, 4}};
+    check_triangles("folded", folded, 6, folded_tris, 1);
+    /* one whose mending makes more than n - 2 triangles: 8 of 8 points */
+    static const double folded_more[8][3] = {{-0.536078572, -0.844168067, 1.89432597},
+                                             {0.0537296385, -0.240709752, 1.21096659},
+                                             {0.844168067, -0.536078572, 1.53439569},
+                                             {0.975981772, 0.21785219, 1.28362119},
+                                             {0.536078572, 0.844168067, 0.861151755},
+                                             {-0.126651302, 0.567400098, -0.818307459},
+                                             {-0.844168067, 0.536078572, -1.49674737},
+                                             {-0.975981772, -0.21785219, -1.60354924}};
+    static const uint32_t folded_more_tris[8][3] = {{0, 1, 2}, {0, 2, 7}, {1, 2, 3},
+                                                    {1, 2, 7}, {1, 3, 4}, {1, 4, 5},
+                                                    {1, 5, 7}, {5, 6, 7}};
+    check_numbered("folded more", folded_more, 8, NULL, folded_more_tris, 8, 1);
 }
 
-/* libtess2's sweep (tess_sweep.c) follows a simple polygon in general
- * position, with two neighbours on one point merged as libtess2 merges
- * them, and gives up where libtess2 would splice a point into an edge,
- * cut two edges where they cross, or merge two points in its sweep. */
-static void test_sweep_gives_up(void **state)
+/* Inside faces of a swept mesh, and which of the first n contour points
+ * its edges start from (seen, may be NULL). */
+static uint32_t swept_inside(const tess_swept *out, uint32_t n, int *seen)
+{
+    uint32_t inside = 0;
+    for (uint32_t f = out->face_next[0]; f != 0; f = out->face_next[f])
+        inside += out->inside[f];
+    for (uint32_t e = 0; seen && e < out->edges; e++)
+        if (out->org[e] < n)
+            seen[out->org[e]] = 1;
+    return inside;
+}
+
+/* libtess2's sweep (tess_sweep.c) follows a polygon as libtess2 sweeps
+ * it: two neighbours on one point merged first, points on one point
+ * merged as the sweep reaches them, a point on another edge spliced into
+ * it, and two edges that cross cut at a new point. */
+static void test_sweep_degenerate(void **state)
 {
     (void)state;
     /* a C opening to the right, not monotone: two regions inside */
@@ -651,28 +697,41 @@ static void test_sweep_gives_up(void **state)
     assert_int_equal(listed + 1, out.faces);
     assert_int_equal(inside, 2);
     tess_swept_free(&out);
-    /* point 3 on the edge from 0 to 1 */
+    /* point 3 on the edge from 0 to 1: spliced into it, which parts the
+     * polygon into two triangles, every point kept */
     static const float ts[5] = {0, 4, 4, 2, 0}, tt[5] = {0, 0, 4, 0, 4};
-    assert_int_equal(tess_sweep_faithful(ts, tt, 5, &out), 0);
-    /* edges 0-1 and 2-3 cross */
+    assert_int_equal(tess_sweep_faithful(ts, tt, 5, &out), 1);
+    int on_edge[5] = {0};
+    assert_int_equal(swept_inside(&out, 5, on_edge), 2);
+    assert_int_equal(on_edge[0] + on_edge[1] + on_edge[2] + on_edge[3] + on_edge[4], 5);
+    tess_swept_free(&out);
+    /* edge 2-3 crosses 0-1 at (2, 2) and 4-0 at (1, 3): each pair cut at
+     * a new point, n + 1 and n + 2, in the order the sweep meets them */
     static const float xs[5] = {0, 4, 4, 0, 2}, xt[5] = {0, 4, 0, 4, 6};
-    assert_int_equal(tess_sweep_faithful(xs, xt, 5, &out), 0);
-    /* two points on one, not neighbours: the polygon touches itself */
+    assert_int_equal(tess_sweep_faithful(xs, xt, 5, &out), 1);
+    assert_int_equal(out.extra, 2);
+    assert_true(out.extra_s[0] == 1 && out.extra_t[0] == 3);
+    assert_true(out.extra_s[1] == 2 && out.extra_t[1] == 2);
+    int crossing[8] = {0};
+    swept_inside(&out, 8, crossing);
+    assert_true(crossing[6] && crossing[7]);
+    tess_swept_free(&out);
+    /* two points on one, not neighbours (1 and 4): the polygon touches
+     * itself; merged into the one the sweep reaches first, which parts it
+     * into two triangles */
     static const float ds[6] = {0, 2, 4, 4, 2, 0}, dt[6] = {0, 2, 0, 4, 2, 4};
-    assert_int_equal(tess_sweep_faithful(ds, dt, 6, &out), 0);
+    assert_int_equal(tess_sweep_faithful(ds, dt, 6, &out), 1);
+    int touching[6] = {0};
+    assert_int_equal(swept_inside(&out, 6, touching), 2);
+    assert_int_equal(touching[1] + touching[4], 1);
+    tess_swept_free(&out);
     /* two neighbours on one point (2 and 3): the edge between them goes
      * first, as libtess2 removes it, 3 merged into 2; the square left is
      * one region */
     static const float ns[5] = {0, 4, 4, 4, 0}, nt[5] = {0, 0, 4, 4, 4};
     assert_int_equal(tess_sweep_faithful(ns, nt, 5, &out), 1);
-    inside = 0;
-    for (uint32_t f = out.face_next[0]; f != 0; f = out.face_next[f])
-        inside += out.inside[f];
-    assert_int_equal(inside, 1);
     int seen[5] = {0};
-    for (uint32_t e = 0; e < out.edges; e++)
-        if (out.org[e] < 5)
-            seen[out.org[e]] = 1;
+    assert_int_equal(swept_inside(&out, 5, seen), 1);
     assert_int_equal(seen[0] + seen[1] + seen[2] + seen[4], 4);
     assert_int_equal(seen[3], 0);
     tess_swept_free(&out);
@@ -1655,7 +1714,7 @@ int main(void)
         cmocka_unit_test(test_quad_diagonal),
         cmocka_unit_test(test_bowtie),
         cmocka_unit_test(test_face_triangles),
-        cmocka_unit_test(test_sweep_gives_up),
+        cmocka_unit_test(test_sweep_degenerate),
         cmocka_unit_test(test_builder_open_mesh),
         cmocka_unit_test(test_import),
         cmocka_unit_test(test_import_read_once),

@@ -517,24 +517,23 @@ int build_mesh_quad_crosses(const vec3 q[4], int reversed)
  * A projection that is monotone along s (one leftmost and one rightmost
  * point in (s, t) order, which every convex one is) is a single region:
  * libtess2's sweep adds no edge inside it, and the region is split by
- * libtess2's monotone rule, exactly. Any other simple projection is
- * swept as libtess2 sweeps it, on its own mesh (tess_sweep.c), so that
- * its faces come in libtess2's order; where that sweep gives up (a point
- * on another edge, edges that meet in float), the diagonals inside the
- * polygon are made in libtess2's order (tess_sweep, below). Then each
- * region as above. Checked against libtess2's own source
- * (docs/meshes.md) on 60,000 random non-planar faces of 5 to 14 points:
- * every one gets libtess2's triangles. Neighbours on one point of the
- * plane are merged as libtess2 merges them, and the loops they leave
- * mended as OpenSCAD mends them (tess_mend.h). A projection that crosses
- * or touches itself is split as a fan about its first point
- * (docs/meshes.md). */
+ * libtess2's monotone rule, exactly. Any other projection is swept as
+ * libtess2 sweeps it, on its own mesh (tess_sweep.c), so that its faces
+ * come in libtess2's order, points on one point merged, points on other
+ * edges spliced into them and edges that cross cut at a new point, as
+ * libtess2 does; where that sweep gives up on a simple polygon, the
+ * diagonals inside the polygon are made in libtess2's order (tess_sweep,
+ * below). Then each region as above, OpenSCAD's dropping of the
+ * triangles with a new point, and its mending of the loops left
+ * (tess_mend.h). Checked against libtess2's own source and OpenSCAD's
+ * mending (docs/meshes.md). */
 
 #define TESS_MAX_POINTS 4096u /* larger non-planar faces are fans */
 
 typedef struct tess_mesh {
-    const float *s, *t; /* the points, by contour position */
-    uint32_t *org;      /* per half-edge; the other half of e is e ^ 1 */
+    float *s, *t;  /* the points, by contour position (then those libtess2
+                    * makes where edges cross, up to n) */
+    uint32_t *org; /* per half-edge; the other half of e is e ^ 1 */
     uint32_t *lnext, *lprev, *lface;
     unsigned char *mark;
     uint32_t edges;      /* half-edges in use */
@@ -543,6 +542,7 @@ typedef struct tess_mesh {
     unsigned char *inside;
     uint32_t faces;
     uint32_t edge_cap, face_cap; /* the arrays' sizes */
+    uint32_t point_cap;          /* room in s and t */
     int full;                    /* a cut found no room: not a simple polygon */
 } tess_mesh;
 
@@ -904,13 +904,19 @@ static int tess_sweep_libtess(tess_mesh *m, uint32_t n)
     int got = tess_sweep_faithful(m->s, m->t, n, &w);
     if (got <= 0)
         return got;
-    /* the monotone splits add at most n - 3 edges and faces */
-    if (w.edges + 2 * n > m->edge_cap || w.faces + n > m->face_cap) {
+    /* the monotone splits add at most one edge and face per point */
+    if (n + w.extra > m->point_cap || w.edges + 2 * n > m->edge_cap ||
+        w.faces + n > m->face_cap) {
         tess_swept_free(&w);
         return 0;
     }
+    for (uint32_t k = 0; k < w.extra; k++) { /* point n + 1 + k: n + k here */
+        m->s[n + k] = w.extra_s[k];
+        m->t[n + k] = w.extra_t[k];
+    }
     for (uint32_t e = 0; e < w.edges; e++) {
-        m->org[e] = w.org[e] < n ? w.org[e] : 0; /* a sentinel's: outside */
+        /* a sentinel's point: outside; a point made where edges cross */
+        m->org[e] = w.org[e] < n ? w.org[e] : w.org[e] == n ? 0 : w.org[e] - 1;
         m->lnext[e] = w.lnext[e];
         m->lprev[w.lnext[e]] = e;
         m->lface[e] = w.lface[e];
@@ -1092,16 +1098,15 @@ static void sort3(uint32_t v[3])
             }
 }
 
-/* The whole contour of a face with pairs of neighbours on one point
- * (projected to ps, pt; contour point j is vertex n - 1 - j when
- * reversed; t times sign, so that it runs counter-clockwise) into m's
- * arrays s, t and contour, swept by libtess2's own sweep, which merges
- * each pair as libtess2 does, and each region split by the monotone rule:
- * 1 with the n - 2 - pairs regions in m, 0 where that sweep gives up or
- * the regions are not as many, -1 when memory runs out. */
+/* The whole contour of a face that is not a simple polygon in projection
+ * (ps, pt; contour point j is vertex n - 1 - j when reversed; t times
+ * sign, so that it runs counter-clockwise) into m's arrays s, t and
+ * contour, swept by libtess2's own sweep, which merges points that are
+ * one, splices points on other edges and cuts edges that cross as
+ * libtess2 does, and each region split by the monotone rule: 1 with the
+ * regions in m, 0 where that sweep gives up, -1 when memory runs out. */
 static int tess_whole(tess_mesh *m, const float *ps, const float *pt, uint32_t n,
-                      uint32_t pairs, int reversed, float sign, float *s, float *t,
-                      uint32_t *contour)
+                      int reversed, float sign, float *s, float *t, uint32_t *contour)
 {
     for (uint32_t j = 0; j < n; j++) {
         uint32_t a = reversed ? n - 1 - j : j;
@@ -1110,13 +1115,7 @@ static int tess_whole(tess_mesh *m, const float *ps, const float *pt, uint32_t n
         t[j] = sign * pt[a];
     }
     int ok = tess_sweep_libtess(m, n);
-    if (ok > 0)
-        ok = tess_mono_regions(m, n);
-    uint32_t live = 0;
-    for (uint32_t f = m->face_next[TESS_HEAD]; ok > 0 && f != TESS_HEAD;
-         f = m->face_next[f])
-        live += m->inside[f];
-    return ok > 0 ? live == n - 2 - pairs : ok;
+    return ok > 0 ? tess_mono_regions(m, n) : ok;
 }
 
 /* Whether contour points j and j + 1 of the face are one point of the
@@ -1141,27 +1140,31 @@ static uint32_t tess_dropped(uint32_t n, uint32_t j)
  * the count triangles in tris (contour points, each from its face's
  * anEdge, as libtess2 lists them) mended with the loops OpenSCAD cuts
  * into ears, where number (NULL: the contour points) gives OpenSCAD's
- * number of each contour point. 1 with the n - 2 triangles in tris, 0
- * where OpenSCAD's loops make other than n - 2, -1 when memory runs out. */
-static int tess_mended(const uint32_t *number, uint32_t n, uint32_t count, uint32_t *tris)
+ * number of each contour point: how many into tris (room for cap), n - 2
+ * or, where edges cross, more; 0 where OpenSCAD's loops do not close or
+ * make fewer or more than cap; -1 when memory runs out. */
+static long tess_mended(const uint32_t *number, uint32_t n, uint32_t count,
+                        uint32_t *tris, uint32_t cap)
 {
     uint32_t *face = malloc((size_t)n * sizeof *face);
-    uint32_t *out = malloc(3 * (size_t)(n - 2) * sizeof *out);
+    uint32_t *out = malloc(3 * (size_t)cap * sizeof *out);
     long made = face && out ? 0 : -1;
     for (uint32_t j = 0; face && j < n; j++)
         face[j] = number ? number[j] : j;
     if (made == 0)
-        made = tess_mend(face, n, tris, count, out, n - 2);
-    if (made == (long)(n - 2))
-        memcpy(tris, out, 3 * (size_t)(n - 2) * sizeof *tris);
+        made = tess_mend(face, n, tris, count, out, cap);
+    if (made >= (long)(n - 2))
+        memcpy(tris, out, 3 * (size_t)made * sizeof *tris);
     free(face);
     free(out);
-    return made == -1 ? -1 : made == (long)(n - 2);
+    return made == -1 ? -1 : made >= (long)(n - 2) ? made : 0;
 }
 
 int build_mesh_face_triangles(const vec3 *p, uint32_t n, int reversed,
-                              const uint32_t *numbers, uint32_t *tris)
+                              const uint32_t *numbers, uint32_t *tris, uint32_t cap,
+                              uint32_t *written)
 {
+    *written = n >= 3 ? n - 2 : 0;
     for (uint32_t j = 1; j + 1 < n; j++) { /* the fan, unless replaced below */
         tris[3 * (j - 1)] = 0;
         tris[3 * (j - 1) + 1] = j;
@@ -1178,19 +1181,23 @@ int build_mesh_face_triangles(const vec3 *p, uint32_t n, int reversed,
         }
         return 1;
     }
-    uint32_t half_edges = 10 * n + 32, faces = 4 * n + 16;
+    /* room for 4 n points made where edges cross, and their edges */
+    uint32_t points = 5 * n, half_edges = 10 * points + 32, faces = 4 * points + 16;
     /* one block: s, t by face position, then by vertex (float); the
      * uint32_t arrays (the last OpenSCAD's numbers by contour point); the
      * marks */
-    size_t words = 6 * (size_t)n + 5 * (size_t)half_edges + 3 * (size_t)faces;
+    size_t words =
+        4 * (size_t)n + 2 * (size_t)points + 5 * (size_t)half_edges + 3 * (size_t)faces;
     uint32_t *block = malloc(words * sizeof(uint32_t) + half_edges + faces);
     if (!block)
         return -1;
     float *ps = (float *)block, *pt = ps + n; /* float and uint32_t: both 4 bytes */
-    float *s = pt + n, *t = s + n;
-    uint32_t *contour = block + 4 * n; /* vertex k: contour point contour[k] */
-    tess_mesh m = {.s = s, .t = t, .edge_cap = half_edges, .face_cap = faces};
-    uint32_t *w = block + 5 * n;
+    float *s = pt + n, *t = s + points;
+    uint32_t *contour =
+        block + 2 * n + 2 * points; /* vertex k: contour point contour[k] */
+    tess_mesh m = {
+        .s = s, .t = t, .edge_cap = half_edges, .face_cap = faces, .point_cap = points};
+    uint32_t *w = contour + n;
     m.org = w;
     m.lnext = w + half_edges;
     m.lprev = w + 2 * half_edges;
@@ -1231,9 +1238,8 @@ int build_mesh_face_triangles(const vec3 *p, uint32_t n, int reversed,
     /* First libtess2's own sweep of the whole contour, which merges the
      * pairs as libtess2 does (tess_sweep.h); where it gives up, the
      * contour without the one dropped of a single pair, swept as below. */
-    int whole = ok && pairs >= 1
-                    ? tess_whole(&m, ps, pt, n, pairs, reversed, sign, s, t, contour)
-                    : 0;
+    int whole =
+        ok && pairs >= 1 ? tess_whole(&m, ps, pt, n, reversed, sign, s, t, contour) : 0;
     if (whole < 0) {
         free(block);
         return -1;
@@ -1247,7 +1253,17 @@ int build_mesh_face_triangles(const vec3 *p, uint32_t n, int reversed,
         t[count] = sign * pt[AT(j)];
         count++;
     }
-    ok = whole || (ok && pairs <= 1 && count >= 3 && tess_simple(&m, count));
+    int simple = !whole && ok && pairs <= 1 && count >= 3 && tess_simple(&m, count);
+    if (!whole && !simple && ok && pairs == 0) {
+        /* a projection that touches itself: libtess2's sweep merges the
+         * points that are one */
+        whole = tess_whole(&m, ps, pt, n, reversed, sign, s, t, contour);
+        if (whole < 0) {
+            free(block);
+            return -1;
+        }
+    }
+    ok = whole || simple;
     if (ok && !whole) {
         for (uint32_t j = 0; j < count; j++) {
             uint32_t e = 2 * j, next = 2 * ((j + 1) % count);
@@ -1288,24 +1304,36 @@ int build_mesh_face_triangles(const vec3 *p, uint32_t n, int reversed,
     }
     if (ok) {
         tess_refine(&m, stack);
-        uint32_t k = 0; /* libtess2's triangles, as it lists them */
-        for (uint32_t f = m.face_next[TESS_HEAD]; f != TESS_HEAD; f = m.face_next[f]) {
-            if (!m.inside[f])
-                continue;
-            uint32_t e = m.face_edge[f];
+        /* libtess2's triangles, as it lists them, but those with a point
+         * made where edges cross, which OpenSCAD drops */
+        uint32_t k = 0, points = whole ? n : count;
+        for (uint32_t f = m.face_next[TESS_HEAD]; ok && f != TESS_HEAD;
+             f = m.face_next[f]) {
+            uint32_t e = m.face_edge[f], v[3];
             for (int i = 0; i < 3; i++, e = m.lnext[e])
-                tris[3 * k + i] = contour[m.org[e]];
+                v[i] = m.org[e];
+            if (!m.inside[f] || v[0] >= points || v[1] >= points || v[2] >= points)
+                continue;
+            if (k == cap) {
+                ok = 0;
+                break;
+            }
+            for (int i = 0; i < 3; i++)
+                tris[3 * k + i] = contour[v[i]];
             k++;
         }
-        if (whole) {
-            ok = tess_mended(numbers ? number : NULL, n, k, tris);
+        if (ok && whole) {
+            long made = tess_mended(numbers ? number : NULL, n, k, tris, cap);
+            ok = made > 0 ? 1 : (int)made;
+            if (made > 0)
+                *written = (uint32_t)made;
         } else if (pairs == 1) { /* the one sliver, a loop of three edges */
             tris[3 * k] = merged;
             tris[3 * k + 1] = (merged + 1) % n;
             tris[3 * k + 2] =
                 dropped == merged ? (merged + n - 1) % n : (dropped + 1) % n;
         }
-        for (uint32_t j = 0; ok > 0 && j < n - 2; j++) {
+        for (uint32_t j = 0; ok > 0 && j < *written; j++) {
             for (int i = 0; i < 3; i++)
                 tris[3 * j + i] = AT(tris[3 * j + i]);
             sort3(&tris[3 * j]);
@@ -1313,12 +1341,14 @@ int build_mesh_face_triangles(const vec3 *p, uint32_t n, int reversed,
     }
 #undef AT
     free(block);
-    if (ok <= 0)
+    if (ok <= 0) {
+        *written = n - 2;
         for (uint32_t j = 1; j + 1 < n; j++) { /* the fan */
             tris[3 * (j - 1)] = 0;
             tris[3 * (j - 1) + 1] = j;
             tris[3 * (j - 1) + 2] = j + 1;
         }
+    }
     return ok;
 }
 
@@ -1636,18 +1666,22 @@ sc_status build_mesh_solid(const build_ctx *c, const sc_location *loc, const cha
         *empty = "";
         return SC_OK;
     }
-    uint32_t *tris = malloc((tri_count ? tri_count : 1) * 3 * sizeof *tris);
+    size_t tri_cap = (tri_count ? tri_count : 1) * 3; /* in indices */
+    uint32_t *tris = malloc(tri_cap * sizeof *tris);
     if (!tris)
         return err_nomem(c->error, loc);
     size_t k = 0;
+    sc_status st = SC_OK;
     vec3 *corners = NULL; /* a face's points, for the larger faces */
     uint32_t *local = NULL, corner_cap = 0;
     uint32_t *numbers = NULL; /* OpenSCAD's numbers of the points (tess_mend.h) */
     int oom = 0;
+    size_t planned = 0; /* the triangles charged for the faces so far */
     for (uint32_t i = 0; i < f->face_count && !oom; i++) {
         const uint32_t *v = &f->indices[f->face_start[i]];
         uint32_t n = f->face_start[i + 1] - f->face_start[i];
         uint32_t first = 0;
+        planned += n > 2 ? n - 2 : 0;
         if (n == 4) {
             vec3 q[4] = {f->points[v[0]], f->points[v[1]], f->points[v[2]],
                          f->points[v[3]]};
@@ -1673,7 +1707,10 @@ sc_status build_mesh_solid(const build_ctx *c, const sc_location *loc, const cha
                 free(corners);
                 free(local);
                 corners = malloc((size_t)n * sizeof *corners);
-                local = malloc(4 * (size_t)n * sizeof *local); /* and numbers */
+                /* room for the triangles (more than n - 2 where
+                 * OpenSCAD mends a face that crosses itself), then the
+                 * numbers */
+                local = malloc(13 * (size_t)n * sizeof *local);
                 corner_cap = n;
                 if (!corners || !local) {
                     oom = 1;
@@ -1684,19 +1721,29 @@ sc_status build_mesh_solid(const build_ctx *c, const sc_location *loc, const cha
                 oom = 1;
                 break;
             }
-            uint32_t *face_numbers = local + 3 * n;
+            uint32_t *face_numbers = local + 12 * n, made;
             for (uint32_t j = 0; j < n; j++) {
                 corners[j] = f->points[v[j]];
                 face_numbers[j] = numbers[v[j]];
             }
-            if (build_mesh_face_triangles(corners, n, numbered, face_numbers, local) <
-                0) {
+            if (build_mesh_face_triangles(corners, n, numbered, face_numbers, local,
+                                          4 * n, &made) < 0) {
                 oom = 1;
                 break;
             }
-            for (uint32_t j = 0; j < 3 * (n - 2); j++)
+            if (made > n - 2) { /* charged as n - 2 above */
+                st = build_charge_triangles(c, loc, what, made - (n - 2));
+                if (st != SC_OK)
+                    break;
+                if (!grow_array((void **)&tris, &tri_cap,
+                                3 * (k + made + tri_count - planned), sizeof *tris)) {
+                    oom = 1;
+                    break;
+                }
+            }
+            for (uint32_t j = 0; j < 3 * made; j++)
                 tris[3 * k + j] = v[local[j]];
-            k += n - 2;
+            k += made;
             continue;
         }
         /* a fan about point `first`: for a quad, its diagonal */
@@ -1710,12 +1757,12 @@ sc_status build_mesh_solid(const build_ctx *c, const sc_location *loc, const cha
     free(corners);
     free(local);
     free(numbers);
-    if (oom) {
+    if (oom || st != SC_OK) {
         free(tris);
-        return err_nomem(c->error, loc);
+        return oom ? err_nomem(c->error, loc) : st;
     }
-    sc_status st = finish_mesh(c, loc, numbered, f->points, f->point_count, tris, k,
-                               !sound, out, empty);
+    st = finish_mesh(c, loc, numbered, f->points, f->point_count, tris, k, !sound, out,
+                     empty);
     free(tris);
     if (st == SC_OK && !sound && !*empty)
         err_set(c->note, SC_OK, loc,

@@ -94,19 +94,23 @@ int build_mesh_quad_diagonal(const vec3 q[4], int reversed);
  * build_mesh_solid follows (see build_mesh.c). */
 int build_mesh_quad_crosses(const vec3 q[4], int reversed);
 
-/* Splits the face p[0..n) into n - 2 triangles as OpenSCAD 2021.01 does
+/* Splits the face p[0..n) into triangles as OpenSCAD 2021.01 does
  * (libtess2's constrained Delaunay triangulation, see build_mesh.c),
- * writing 3 (n - 2) positions in p into tris, each triangle wound as the
- * face. reversed: a polyhedron's face, which OpenSCAD hands to libtess2
- * back to front. numbers: OpenSCAD's number of each point of p, in the
- * order its tessellation first meets them (NULL: the order in which it
- * holds this face), which sets how it mends points that lie above one
- * another (tess_mend.h). Returns 1 for OpenSCAD's triangles; 0 for a fan
- * about p[0], written when the face's projection crosses or touches
- * itself, has no area, or has more than 4096 points (and for fewer than
- * 3); -1 when memory ran out. */
+ * writing 3 positions in p per triangle into tris, which has room for cap
+ * (at least n - 2) triangles, and how many into *written: n - 2, or more
+ * where the projection crosses itself and OpenSCAD's mending makes more.
+ * Each triangle is wound as the face. reversed: a polyhedron's face,
+ * which OpenSCAD hands to libtess2 back to front. numbers: OpenSCAD's
+ * number of each point of p, in the order its tessellation first meets
+ * them (NULL: the order in which it holds this face), which sets how it
+ * mends points that lie above one another (tess_mend.h). Returns 1 for
+ * OpenSCAD's triangles; 0 for a fan about p[0] (n - 2 triangles), written
+ * where libtess2's sweep is not followed (docs/meshes.md), the face has
+ * no area, OpenSCAD makes more than cap triangles, or it has more than
+ * 4096 points (and for fewer than 3); -1 when memory ran out. */
 int build_mesh_face_triangles(const vec3 *p, uint32_t n, int reversed,
-                              const uint32_t *numbers, uint32_t *tris);
+                              const uint32_t *numbers, uint32_t *tris, uint32_t cap,
+                              uint32_t *written);
 
 /* The path of a file a model names: relative names are relative to the
  * directory of the file being read (c->file). malloc'd; NULL when memory

@@ -34,8 +34,17 @@ typedef struct sweep {
     region *reg;
     int regions, region_cap;
     int event;
-    int again; /* sweep_event runs a second time for a left vertex it joined */
-    int fail;  /* not in general position, or out of room: give up */
+    /* the event queue, as libtess2's: the contour's points sorted by
+     * pqInit (order[0 .. sorted), the next at the end; queued: by vertex,
+     * not yet taken or deleted), and a heap of the points the sweep
+     * makes where edges cross (heap[1 .. heap_size]; heap_at: by vertex,
+     * its node, 0 when none) */
+    int *order, sorted;
+    unsigned char *queued;
+    int *heap, *heap_at, heap_size;
+    unsigned char *killed; /* by vertex: merged into another */
+    int depth;             /* of sweep_event's recursion */
+    int fail;              /* not in general position, or out of room: give up */
 } sweep;
 
 #define DST(w, e) ((w)->org[(e) ^ 1])
@@ -76,6 +85,124 @@ static float edge_sign(const sweep *w, int u, int v, int x)
     if (gap_l + gap_r > 0)
         return (w->vt[v] - w->vt[x]) * gap_l + (w->vt[v] - w->vt[u]) * gap_r;
     return 0;
+}
+
+/* The same on points that need not be vertices (an intersection). */
+typedef struct point {
+    float s, t;
+} point;
+
+static point at(const sweep *w, int v)
+{
+    return (point){w->vs[v], w->vt[v]};
+}
+
+static int point_leq(point u, point v)
+{
+    return u.s < v.s || (u.s == v.s && u.t <= v.t);
+}
+
+static int point_eq(point u, point v)
+{
+    return u.s == v.s && u.t == v.t;
+}
+
+/* TransLeq: the order by t first */
+static int trans_leq(point u, point v)
+{
+    return u.t < v.t || (u.t == v.t && u.s <= v.s);
+}
+
+static float point_eval(point u, point v, point x)
+{
+    float gap_l = v.s - u.s, gap_r = x.s - v.s;
+    if (gap_l + gap_r > 0) {
+        if (gap_l < gap_r)
+            return (v.t - u.t) + (u.t - x.t) * (gap_l / (gap_l + gap_r));
+        return (v.t - x.t) + (x.t - u.t) * (gap_r / (gap_l + gap_r));
+    }
+    return 0;
+}
+
+static float point_sign(point u, point v, point x)
+{
+    float gap_l = v.s - u.s, gap_r = x.s - v.s;
+    if (gap_l + gap_r > 0)
+        return (v.t - x.t) * gap_l + (v.t - u.t) * gap_r;
+    return 0;
+}
+
+/* testransEval and testransSign: the same with s and t exchanged */
+static point swap_st(point p)
+{
+    return (point){p.t, p.s};
+}
+
+/* Interpolate: x and y weighted by b and a, each at least 0 */
+static float interpolate(float a, float x, float b, float y)
+{
+    a = a < 0 ? 0 : a;
+    b = b < 0 ? 0 : b;
+    if (a <= b)
+        return b == 0 ? (x + y) / 2 : x + (y - x) * (a / (a + b));
+    return y + (x - y) * (b / (a + b));
+}
+
+/* One coordinate of tesedgeIntersect, in the order leq (by s: the s;
+ * by t, with the points' s and t exchanged: the t). */
+static float intersect_along(point *o1, point *d1, point *o2, point *d2,
+                             int (*leq)(point, point), int by_t)
+{
+    point x;
+    if (!leq(*o1, *d1)) {
+        x = *o1;
+        *o1 = *d1;
+        *d1 = x;
+    }
+    if (!leq(*o2, *d2)) {
+        x = *o2;
+        *o2 = *d2;
+        *d2 = x;
+    }
+    if (!leq(*o1, *o2)) {
+        x = *o1;
+        *o1 = *o2;
+        *o2 = x;
+        x = *d1;
+        *d1 = *d2;
+        *d2 = x;
+    }
+    point a = by_t ? swap_st(*o1) : *o1, b = by_t ? swap_st(*d1) : *d1;
+    point c = by_t ? swap_st(*o2) : *o2, d = by_t ? swap_st(*d2) : *d2;
+    if (!leq(*o2, *d1))
+        return (c.s + b.s) / 2; /* no intersection: the best guess */
+    float z1, z2;
+    if (leq(*d1, *d2)) {
+        z1 = point_eval(a, c, b);
+        z2 = point_eval(c, b, d);
+        if (z1 + z2 < 0) {
+            z1 = -z1;
+            z2 = -z2;
+        }
+        return interpolate(z1, c.s, z2, b.s);
+    }
+    z1 = point_sign(a, c, b);
+    z2 = -point_sign(a, d, b);
+    if (z1 + z2 < 0) {
+        z1 = -z1;
+        z2 = -z2;
+    }
+    return interpolate(z1, c.s, z2, d.s);
+}
+
+/* tesedgeIntersect: where the edges o1-d1 and o2-d2 cross, within both
+ * bounding boxes. */
+static point edge_intersect(point o1, point d1, point o2, point d2)
+{
+    point v;
+    v.s = intersect_along(&o1, &d1, &o2, &d2, point_leq, 0);
+    v.t = intersect_along(&o1, &d1, &o2, &d2, trans_leq, 1);
+    return v;
 }
 
 /* ---- the mesh ---- */
@@ -159,6 +286,8 @@ static int make_face(sweep *w, int e, int next)
 
 static void kill_vertex(sweep *w, int v, int to)
 {
+    if (v >= 0)
+        w->killed[v] = 1;
     int e = w->an[v], x = e, steps = 0;
     do {
         w->org[x] = to;
@@ -373,36 +502,164 @@ static void fix_upper_edge(sweep *w, int r, int e)
     w->active[e] = r;
 }
 
-/* ---- the checks, which here only look: a splice or a crossing they
- * would make ends the sweep (w->fail) ---- */
+/* ---- the event queue (priorityq.c) ---- */
 
+static void heap_place(sweep *w, int node, int v)
+{
+    w->heap[node] = v;
+    w->heap_at[v] = node;
+}
+
+static void float_down(sweep *w, int node)
+{
+    int v = w->heap[node];
+    for (;;) {
+        int child = node << 1;
+        if (child < w->heap_size && vert_leq(w, w->heap[child + 1], w->heap[child]))
+            ++child;
+        if (child > w->heap_size || vert_leq(w, v, w->heap[child])) {
+            heap_place(w, node, v);
+            return;
+        }
+        heap_place(w, node, w->heap[child]);
+        node = child;
+    }
+}
+
+static void float_up(sweep *w, int node)
+{
+    int v = w->heap[node];
+    for (;;) {
+        int parent = node >> 1;
+        if (parent == 0 || vert_leq(w, w->heap[parent], v)) {
+            heap_place(w, node, v);
+            return;
+        }
+        heap_place(w, node, w->heap[parent]);
+        node = parent;
+    }
+}
+
+static void heap_insert(sweep *w, int v)
+{
+    int node = ++w->heap_size;
+    heap_place(w, node, v);
+    float_up(w, node);
+}
+
+static int heap_extract(sweep *w)
+{
+    int v = w->heap[1];
+    heap_place(w, 1, w->heap[w->heap_size]);
+    w->heap_at[v] = 0;
+    if (--w->heap_size > 0)
+        float_down(w, 1);
+    return v;
+}
+
+/* pqDelete: v out of the queue, wherever it is */
+static void queue_delete(sweep *w, int v)
+{
+    int node = w->heap_at[v];
+    if (node) {
+        heap_place(w, node, w->heap[w->heap_size]);
+        w->heap_at[v] = 0;
+        if (node <= --w->heap_size) {
+            if (node <= 1 || vert_leq(w, w->heap[node >> 1], w->heap[node]))
+                float_down(w, node);
+            else
+                float_up(w, node);
+        }
+        return;
+    }
+    w->queued[v] = 0;
+    while (w->sorted > 0 && !w->queued[w->order[w->sorted - 1]])
+        w->sorted--;
+}
+
+/* pqMinimum and pqExtractMin: the least point, the heap's on a tie; -1
+ * when the queue is empty */
+static int queue_minimum(const sweep *w)
+{
+    if (w->sorted == 0)
+        return w->heap_size ? w->heap[1] : -1;
+    int v = w->order[w->sorted - 1];
+    if (w->heap_size && vert_leq(w, w->heap[1], v))
+        return w->heap[1];
+    return v;
+}
+
+static int queue_extract(sweep *w)
+{
+    if (w->sorted == 0)
+        return w->heap_size ? heap_extract(w) : -1;
+    int v = w->order[w->sorted - 1];
+    if (w->heap_size && vert_leq(w, w->heap[1], v))
+        return heap_extract(w);
+    w->queued[v] = 0;
+    while (w->sorted > 0 && !w->queued[w->order[w->sorted - 1]])
+        w->sorted--;
+    return v;
+}
+
+/* ---- the checks: splices where a point lies on another edge; a
+ * crossing they would cut ends the sweep (w->fail) ---- */
+
+/* CheckForRightSplice: the right ends of the edges of r_up and the region
+ * below it out of order: the one spliced into the other edge (or the two
+ * merged where they are one point, the upper taken out of the queue). */
 static int check_right_splice(sweep *w, int r_up)
 {
-    int e_up = w->reg[r_up].up, e_lo = w->reg[below(w, r_up)].up;
+    int r_lo = below(w, r_up);
+    int e_up = w->reg[r_up].up, e_lo = w->reg[r_lo].up;
     int o_up = w->org[e_up], o_lo = w->org[e_lo];
     if (vert_leq(w, o_up, o_lo)) {
         if (edge_sign(w, DST(w, e_lo), o_up, o_lo) > 0)
             return 0;
-        if (o_up != o_lo) /* a splice */
-            w->fail = 1;
+        if (!vert_eq(w, o_up, o_lo)) { /* o_up into e_lo */
+            if (mesh_split_edge(w, e_lo ^ 1) < 0)
+                return 1;
+            mesh_splice(w, e_up, OPREV(w, e_lo));
+            w->reg[r_up].dirty = w->reg[r_lo].dirty = 1;
+        } else if (o_up != o_lo) {
+            queue_delete(w, o_up);
+            mesh_splice(w, OPREV(w, e_lo), e_up);
+        }
     } else {
         if (edge_sign(w, DST(w, e_up), o_lo, o_up) < 0)
             return 0;
-        w->fail = 1;
+        w->reg[above(w, r_up)].dirty = w->reg[r_up].dirty = 1; /* o_lo into e_up */
+        if (mesh_split_edge(w, e_up ^ 1) < 0)
+            return 1;
+        mesh_splice(w, OPREV(w, e_lo), e_up);
     }
     return 1;
 }
 
+/* CheckForLeftSplice: the same for the left ends, the one not the other
+ * spliced into the other's edge. */
 static int check_left_splice(sweep *w, int r_up)
 {
-    int e_up = w->reg[r_up].up, e_lo = w->reg[below(w, r_up)].up;
+    int r_lo = below(w, r_up);
+    int e_up = w->reg[r_up].up, e_lo = w->reg[r_lo].up;
+    int e;
     if (vert_leq(w, DST(w, e_up), DST(w, e_lo))) {
         if (edge_sign(w, DST(w, e_up), DST(w, e_lo), w->org[e_up]) < 0)
             return 0;
-    } else if (edge_sign(w, DST(w, e_lo), DST(w, e_up), w->org[e_lo]) > 0) {
-        return 0;
+        w->reg[above(w, r_up)].dirty = w->reg[r_up].dirty = 1;
+        if ((e = mesh_split_edge(w, e_up)) < 0)
+            return 1;
+        mesh_splice(w, e_lo ^ 1, e);
+        w->finside[w->lface[e]] = (unsigned char)w->reg[r_up].inside;
+    } else {
+        if (edge_sign(w, DST(w, e_lo), DST(w, e_up), w->org[e_lo]) > 0)
+            return 0;
+        w->reg[r_up].dirty = w->reg[r_lo].dirty = 1;
+        if ((e = mesh_split_edge(w, e_lo)) < 0)
+            return 1;
+        mesh_splice(w, w->lnext[e_up], e_lo ^ 1);
+        w->finside[w->lface[e ^ 1]] = (unsigned char)w->reg[r_up].inside;
     }
-    w->fail = 1;
     return 1;
 }
 
@@ -423,8 +680,35 @@ static int check_intersect(sweep *w, int r_up)
     } else if (edge_sign(w, d_up, o_lo, o_up) < 0) {
         return 0;
     }
-    w->fail = 1; /* they meet */
-    return 1;
+    /* they meet: where, kept right of the event and left of both right
+     * ends */
+    point isect = edge_intersect(at(w, d_up), at(w, o_up), at(w, d_lo), at(w, o_lo));
+    if (point_leq(isect, at(w, w->event)))
+        isect = at(w, w->event);
+    int o_min = vert_leq(w, o_up, o_lo) ? o_up : o_lo;
+    if (point_leq(at(w, o_min), isect))
+        isect = at(w, o_min);
+    if (point_eq(isect, at(w, o_up)) || point_eq(isect, at(w, o_lo))) {
+        check_right_splice(w, r_up); /* at a right end */
+        return 0;
+    }
+    point ev = at(w, w->event);
+    if ((!vert_eq(w, d_up, w->event) && point_sign(at(w, d_up), ev, isect) >= 0) ||
+        (!vert_eq(w, d_lo, w->event) && point_sign(at(w, d_lo), ev, isect) <= 0)) {
+        w->fail = 1; /* the new edges would pass the event on the wrong side */
+        return 1;
+    }
+    /* they cross: both cut at a new point, which joins the queue */
+    int r_lo = below(w, r_up);
+    if (mesh_split_edge(w, e_up ^ 1) < 0 || mesh_split_edge(w, e_lo ^ 1) < 0)
+        return 1;
+    mesh_splice(w, OPREV(w, e_lo), e_up);
+    int x = w->org[e_up];
+    w->vs[x] = isect.s;
+    w->vt[x] = isect.t;
+    heap_insert(w, x);
+    w->reg[above(w, r_up)].dirty = w->reg[r_up].dirty = w->reg[r_lo].dirty = 1;
+    return 0;
 }
 
 static void walk_dirty_regions(sweep *w, int r_up)
@@ -447,8 +731,22 @@ static void walk_dirty_regions(sweep *w, int r_up)
         }
         w->reg[r_up].dirty = 0;
         int e_up = w->reg[r_up].up, e_lo = w->reg[r_lo].up;
-        if (DST(w, e_up) != DST(w, e_lo) && check_left_splice(w, r_up))
-            return;
+        if (DST(w, e_up) != DST(w, e_lo) && check_left_splice(w, r_up)) {
+            if (w->fail)
+                return;
+            /* a fixable edge is needed no more */
+            if (w->reg[r_lo].fix) {
+                delete_region(w, r_lo);
+                mesh_delete(w, e_lo);
+                r_lo = below(w, r_up);
+                e_lo = w->reg[r_lo].up;
+            } else if (w->reg[r_up].fix) {
+                delete_region(w, r_up);
+                mesh_delete(w, e_up);
+                r_up = above(w, r_lo);
+                e_up = w->reg[r_up].up;
+            }
+        }
         if (w->org[e_up] != w->org[e_lo]) {
             if (DST(w, e_up) != DST(w, e_lo) && !w->reg[r_up].fix && !w->reg[r_lo].fix &&
                 (DST(w, e_up) == w->event || DST(w, e_lo) == w->event)) {
@@ -575,10 +873,12 @@ static void connect_right_vertex(sweep *w, int r_up, int e_bottom_left)
 {
     int r_lo = below(w, r_up);
     int e_up = w->reg[r_up].up, e_lo = w->reg[r_lo].up;
-    if (DST(w, e_up) != DST(w, e_lo) && check_intersect(w, r_up))
+    if (DST(w, e_up) != DST(w, e_lo))
+        check_intersect(w, r_up);
+    if (w->fail)
         return;
     if (vert_eq(w, w->org[e_up], w->event) || vert_eq(w, w->org[e_lo], w->event)) {
-        w->fail = 1; /* the degenerate cases */
+        w->fail = 1; /* the degenerate cases, after a cut at the event */
         return;
     }
     int e_new = vert_leq(w, w->org[e_lo], w->org[e_up]) ? OPREV(w, e_lo) : e_up;
@@ -606,7 +906,20 @@ static void connect_left_vertex(sweep *w, int v)
     }
     int e_up = w->reg[r_up].up, e_lo = w->reg[r_lo].up;
     if (edge_sign(w, DST(w, e_up), v, w->org[e_up]) == 0) {
-        w->fail = 1; /* ConnectLeftDegenerate */
+        /* ConnectLeftDegenerate: v on the edge above, spliced into it
+         * (its ends are not v's point: such points are merged) */
+        if (vert_eq(w, w->org[e_up], v) || vert_eq(w, DST(w, e_up), v)) {
+            w->fail = 1;
+            return;
+        }
+        if (mesh_split_edge(w, e_up ^ 1) < 0)
+            return;
+        if (w->reg[r_up].fix) { /* the rest of a fixable edge goes */
+            mesh_delete(w, w->onext[e_up]);
+            w->reg[r_up].fix = 0;
+        }
+        mesh_splice(w, w->an[v], e_up);
+        sweep_event(w, v);
         return;
     }
     int r = vert_leq(w, DST(w, e_lo), DST(w, e_up)) ? r_up : r_lo;
@@ -628,22 +941,30 @@ static void connect_left_vertex(sweep *w, int v)
                 return;
             compute_winding(w, made);
         }
-        if (w->again) { /* it has a left edge now: never twice */
-            w->fail = 1;
-            return;
-        }
-        w->again = 1;
-        sweep_event(w, v);
-        w->again = 0;
+        sweep_event(w, v); /* it has a left edge now */
     } else {
         add_right_edges(w, r_up, w->an[v], w->an[v], -1, 1);
     }
 }
 
+static void sweep_event_at(sweep *w, int v);
+
+/* SweepEvent, which recurses for a point it joined to an edge; a deeper
+ * recursion than a few steps is not libtess2's, and ends the sweep. */
 static void sweep_event(sweep *w, int v)
 {
     if (w->fail)
         return;
+    if (++w->depth > 8) {
+        w->fail = 1;
+        return;
+    }
+    sweep_event_at(w, v);
+    w->depth--;
+}
+
+static void sweep_event_at(sweep *w, int v)
+{
     w->event = v;
     int e = w->an[v], steps = 0;
     while (w->active[e] == 0) {
@@ -681,6 +1002,7 @@ static void add_sentinel(sweep *w, float s_min, float s_max, float t)
     w->vs[DST(w, e)] = s_min;
     w->vt[DST(w, e)] = t;
     w->event = DST(w, e);
+    w->idx[w->org[e]] = w->idx[DST(w, e)] = -2; /* not a point of the polygon */
     int r = new_region(w, e);
     if (!r)
         return;
@@ -697,7 +1019,7 @@ static int sweep_alloc(sweep *w, uint32_t n)
     w->vert_cap = w->face_cap = w->region_cap = (int)room;
     size_t e = (size_t)w->edge_cap, v = (size_t)w->vert_cap, f = (size_t)w->face_cap;
     w->onext = malloc(6 * e * sizeof(int));
-    w->dead = malloc(e + f);
+    w->dead = malloc(e + f + 2 * v);
     w->vs = malloc(2 * v * sizeof(float));
     w->an = malloc((2 * v + 3 * f) * sizeof(int));
     w->reg = malloc((size_t)w->region_cap * sizeof *w->reg);
@@ -709,6 +1031,14 @@ static int sweep_alloc(sweep *w, uint32_t n)
     w->winding = w->lface + e;
     w->active = w->winding + e;
     w->finside = w->dead + e;
+    w->queued = w->finside + f;
+    w->killed = w->queued + v;
+    memset(w->queued, 0, 2 * v);
+    w->heap = malloc(2 * (v + 1) * sizeof(int));
+    if (!w->heap)
+        return 0;
+    w->heap_at = w->heap + v + 1;
+    memset(w->heap_at, 0, v * sizeof(int));
     w->vt = w->vs + v;
     w->idx = w->an + v;
     w->fprev = w->idx + v;
@@ -727,6 +1057,7 @@ static int sweep_alloc(sweep *w, uint32_t n)
 
 static void sweep_free(sweep *w)
 {
+    free(w->heap);
     free(w->onext);
     free(w->dead);
     free(w->vs);
@@ -759,20 +1090,61 @@ static void remove_degenerate_edges(sweep *w, uint32_t n, unsigned char *gone)
     }
 }
 
-/* The vertices of the contour in (s, t) order (insertion sort: faces are
- * small); 0 when two are equal. */
-static int event_order(const sweep *w, int *order, uint32_t n)
+/* libtess2's pqInit: the vertices a[0 .. n) (in the order it inserts
+ * them) sorted in descending (s, t) order by its randomized quicksort,
+ * then insertion sort, which decide the order of equal vertices; the
+ * sweep takes them from the end. */
+static void event_order(const sweep *w, int *a, int n)
 {
-    for (uint32_t i = 1; i < n; i++)
-        for (uint32_t j = i; j > 0 && !vert_leq(w, order[j - 1], order[j]); j--) {
-            int x = order[j];
-            order[j] = order[j - 1];
-            order[j - 1] = x;
+    struct {
+        int p, r;
+    } stack[50], *top = stack;
+    unsigned int seed = 2016473283u;
+    top->p = 0;
+    top->r = n - 1;
+    ++top;
+    while (--top >= stack) {
+        int p = top->p, r = top->r;
+        while (r > p + 10) {
+            seed = seed * 1539415821u + 1;
+            int i = p + (int)(seed % (unsigned int)(r - p + 1)), j = r + 1;
+            int piv = a[i];
+            a[i] = a[p];
+            a[p] = piv;
+            i = p - 1;
+            do {
+                do
+                    ++i;
+                while (!vert_leq(w, a[i], piv));
+                do
+                    --j;
+                while (!vert_leq(w, piv, a[j]));
+                int x = a[i];
+                a[i] = a[j];
+                a[j] = x;
+            } while (i < j);
+            int x = a[i]; /* undo the last swap */
+            a[i] = a[j];
+            a[j] = x;
+            if (i - p < r - j) {
+                top->p = j + 1;
+                top->r = r;
+                ++top;
+                r = i - 1;
+            } else {
+                top->p = p;
+                top->r = i - 1;
+                ++top;
+                p = j + 1;
+            }
         }
-    for (uint32_t i = 1; i < n; i++)
-        if (vert_eq(w, order[i - 1], order[i]))
-            return 0;
-    return 1;
+        for (int i = p + 1; i <= r; ++i) {
+            int piv = a[i], j;
+            for (j = i; j > p && !vert_leq(w, piv, a[j - 1]); --j)
+                a[j] = a[j - 1];
+            a[j] = piv;
+        }
+    }
 }
 
 /* The mesh, compact and in libtess2's order of faces, into out. */
@@ -780,6 +1152,21 @@ static int export_mesh(const sweep *w, uint32_t n, tess_swept *out)
 {
     int *edge_id = malloc((size_t)w->edges * sizeof *edge_id);
     int *face_id = malloc((size_t)w->faces * sizeof *face_id);
+    int *made = malloc((size_t)(w->verts ? w->verts : 1) * sizeof *made);
+    /* the points made where edges cross, by vertex: their numbers past n */
+    uint32_t extra = 0;
+    for (int v = 0; made && v < w->verts; v++)
+        made[v] = w->idx[v] == -1 && !w->killed[v] ? (int)(n + 1 + extra++) : -1;
+    out->extra = extra;
+    out->extra_s = malloc(2 * (size_t)(extra ? extra : 1) * sizeof(float));
+    if (out->extra_s) {
+        out->extra_t = out->extra_s + extra;
+        for (int v = 0; made && v < w->verts; v++)
+            if (made[v] >= 0) {
+                out->extra_s[made[v] - (int)n - 1] = w->vs[v];
+                out->extra_t[made[v] - (int)n - 1] = w->vt[v];
+            }
+    }
     uint32_t edges = 0, faces = 1;
     for (int e = 0; edge_id && e < w->edges; e += 2)
         if (!w->dead[e]) {
@@ -793,9 +1180,11 @@ static int export_mesh(const sweep *w, uint32_t n, tess_swept *out)
     out->org = malloc(3 * (size_t)edges * sizeof(uint32_t));
     out->face_next = malloc(3 * (size_t)faces * sizeof(uint32_t));
     out->inside = malloc(faces);
-    if (!edge_id || !face_id || !out->org || !out->face_next || !out->inside) {
+    if (!edge_id || !face_id || !made || !out->extra_s || !out->org || !out->face_next ||
+        !out->inside) {
         free(edge_id);
         free(face_id);
+        free(made);
         tess_swept_free(out);
         return -1;
     }
@@ -810,7 +1199,10 @@ static int export_mesh(const sweep *w, uint32_t n, tess_swept *out)
             continue;
         uint32_t k = (uint32_t)edge_id[e];
         int v = w->org[e];
-        out->org[k] = v >= 0 && w->idx[v] >= 0 ? (uint32_t)w->idx[v] : n;
+        out->org[k] = v < 0            ? n
+                      : w->idx[v] >= 0 ? (uint32_t)w->idx[v]
+                      : made[v] >= 0   ? (uint32_t)made[v]
+                                       : n;
         out->lnext[k] = (uint32_t)edge_id[w->lnext[e]];
         out->lface[k] = w->lface[e] > 0 ? (uint32_t)face_id[w->lface[e]] : 0;
     }
@@ -829,6 +1221,7 @@ static int export_mesh(const sweep *w, uint32_t n, tess_swept *out)
     out->face_prev[0] = prev;
     free(edge_id);
     free(face_id);
+    free(made);
     return 1;
 }
 
@@ -873,12 +1266,19 @@ int tess_sweep_faithful(const float *s, const float *t, uint32_t n, tess_swept *
     }
     if (!w.fail)
         remove_degenerate_edges(&w, n, gone);
+    /* the vertices in libtess2's list: from the contour's second point
+     * round to its first */
     uint32_t live = 0;
-    for (uint32_t i = 0; i < n && !w.fail; i++)
-        if (!gone[order[i]])
-            order[live++] = order[i];
+    int first = order[0];
+    for (uint32_t k = 1; k < n && !w.fail; k++)
+        if (!gone[order[k]])
+            order[live++] = order[k];
+    if (!w.fail && !gone[first])
+        order[live++] = first;
     free(gone);
-    int ok = !w.fail && live >= 3 && event_order(&w, order, live);
+    int ok = !w.fail && live >= 3;
+    if (ok)
+        event_order(&w, order, (int)live);
     if (ok) {
         /* the sentinels, about the bounds enlarged as libtess2 does */
         float s_lo = s[0], s_hi = s[0], t_lo = t[0], t_hi = t[0];
@@ -892,8 +1292,23 @@ int tess_sweep_faithful(const float *s, const float *t, uint32_t n, tess_swept *
         float ds = wide > 0.01f ? wide : 0.01f, dt = high > 0.01f ? high : 0.01f;
         add_sentinel(&w, s_lo - ds, s_hi + ds, t_lo - dt);
         add_sentinel(&w, s_lo - ds, s_hi + ds, t_hi + dt);
-        for (uint32_t i = 0; i < live && !w.fail; i++)
-            sweep_event(&w, order[i]);
+        /* each vertex from the end, with those on its point merged into
+         * it first (SpliceMergeVertices) */
+        /* tessComputeInterior: each point, least first, with those on
+         * its point merged into it first (SpliceMergeVertices) */
+        for (uint32_t i = 0; i < live; i++)
+            w.queued[order[i]] = 1;
+        w.order = order;
+        w.sorted = (int)live;
+        for (int v; !w.fail && (v = queue_extract(&w)) >= 0;) {
+            for (int next; (next = queue_minimum(&w)) >= 0 && vert_eq(&w, next, v);)
+                mesh_splice(&w, w.an[v], w.an[queue_extract(&w)]);
+            if (w.killed[v]) { /* a point the sweep merged away, still queued */
+                w.fail = 1;
+                break;
+            }
+            sweep_event(&w, v);
+        }
         /* RemoveDegenerateFaces */
         for (int f = w.fnext[0], next; !w.fail && f != 0; f = next) {
             next = w.fnext[f];
@@ -914,6 +1329,7 @@ int tess_sweep_faithful(const float *s, const float *t, uint32_t n, tess_swept *
 
 void tess_swept_free(tess_swept *out)
 {
+    free(out->extra_s);
     free(out->org);
     free(out->face_next);
     free(out->inside);
