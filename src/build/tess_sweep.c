@@ -55,39 +55,7 @@ typedef struct sweep {
 
 /* ---- geometry, in float as libtess2 computes ---- */
 
-static int vert_leq(const sweep *w, int u, int v)
-{
-    return w->vs[u] < w->vs[v] || (w->vs[u] == w->vs[v] && w->vt[u] <= w->vt[v]);
-}
-
-static int vert_eq(const sweep *w, int u, int v)
-{
-    return w->vs[u] == w->vs[v] && w->vt[u] == w->vt[v];
-}
-
-/* tesedgeEval: how far v lies above the edge u-x, in t */
-static float edge_eval(const sweep *w, int u, int v, int x)
-{
-    float gap_l = w->vs[v] - w->vs[u], gap_r = w->vs[x] - w->vs[v];
-    if (gap_l + gap_r > 0) {
-        if (gap_l < gap_r)
-            return (w->vt[v] - w->vt[u]) +
-                   (w->vt[u] - w->vt[x]) * (gap_l / (gap_l + gap_r));
-        return (w->vt[v] - w->vt[x]) + (w->vt[x] - w->vt[u]) * (gap_r / (gap_l + gap_r));
-    }
-    return 0;
-}
-
-/* tesedgeSign: the sign of edge_eval, computed more cheaply */
-static float edge_sign(const sweep *w, int u, int v, int x)
-{
-    float gap_l = w->vs[v] - w->vs[u], gap_r = w->vs[x] - w->vs[v];
-    if (gap_l + gap_r > 0)
-        return (w->vt[v] - w->vt[x]) * gap_l + (w->vt[v] - w->vt[u]) * gap_r;
-    return 0;
-}
-
-/* The same on points that need not be vertices (an intersection). */
+/* Points of the plane, which need not be vertices (an intersection). */
 typedef struct point {
     float s, t;
 } point;
@@ -113,6 +81,7 @@ static int trans_leq(point u, point v)
     return u.t < v.t || (u.t == v.t && u.s <= v.s);
 }
 
+/* tesedgeEval: how far v lies above the edge u-x, in t */
 static float point_eval(point u, point v, point x)
 {
     float gap_l = v.s - u.s, gap_r = x.s - v.s;
@@ -124,12 +93,33 @@ static float point_eval(point u, point v, point x)
     return 0;
 }
 
+/* tesedgeSign: the sign of point_eval, computed more cheaply */
 static float point_sign(point u, point v, point x)
 {
     float gap_l = v.s - u.s, gap_r = x.s - v.s;
     if (gap_l + gap_r > 0)
         return (v.t - x.t) * gap_l + (v.t - u.t) * gap_r;
     return 0;
+}
+
+static int vert_leq(const sweep *w, int u, int v)
+{
+    return point_leq(at(w, u), at(w, v));
+}
+
+static int vert_eq(const sweep *w, int u, int v)
+{
+    return point_eq(at(w, u), at(w, v));
+}
+
+static float edge_eval(const sweep *w, int u, int v, int x)
+{
+    return point_eval(at(w, u), at(w, v), at(w, x));
+}
+
+static float edge_sign(const sweep *w, int u, int v, int x)
+{
+    return point_sign(at(w, u), at(w, v), at(w, x));
 }
 
 /* testransEval and testransSign: the same with s and t exchanged */
@@ -602,8 +592,8 @@ static int queue_extract(sweep *w)
     return v;
 }
 
-/* ---- the checks: splices where a point lies on another edge; a
- * crossing they would cut ends the sweep (w->fail) ---- */
+/* ---- the checks: splices where a point lies on another edge, cuts
+ * where two edges cross ---- */
 
 /* CheckForRightSplice: the right ends of the edges of r_up and the region
  * below it out of order: the one spliced into the other edge (or the two
