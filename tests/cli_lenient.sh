@@ -566,7 +566,11 @@ check
 # triangle by the parity rule). A polygon point it cannot convert empties
 # the polygon. A face or path that is not a vector is an empty one, faces
 # that are not a vector none, paths that are not a vector none (all the
-# points): read silently. --strict makes each warning the error.
+# points). A face left with fewer than 3 points (the one the bad point
+# stops, or an empty one) is OpenSCAD's "PolySet has degenerate polygons",
+# as its preview says it (its render says it only of a polyhedron that is
+# not in a boolean); a path of fewer than 3 points is read silently.
+# --strict makes each warning the error.
 shift3='multmatrix([[1, 0, 0, 3], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]])'
 tetra_faces='[[0, 1, 2], [0, 3, 1], [0, 2, 3], [1, 3, 2]]'
 printf 'polyhedron(points = [[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, "a"]], faces = %s, convexity = 1);\n%s {\n\tcube(size = [1, 1, 1], center = false);\n}\n' \
@@ -585,7 +589,8 @@ printf 'polygon(points = [[0, 0], [1, 0], [0, 1], [1, 1]], paths = [[0, 1, 2], 5
 printf 'polygon(points = [[0, 0], [1, 0], [0, 1], [1, 1]], paths = [[0, 1, 2]], convexity = 1);\n%s\n' "$square_shift" >bad_path_ref.csg
 printf 'polygon(points = [[0, 0], [1, 0], [0, 1]], paths = 5, convexity = 1);\n%s\n' "$square_shift" >bad_paths.csg
 printf 'polygon(points = [[0, 0], [1, 0], [0, 1]], convexity = 1);\n%s\n' "$square_shift" >bad_paths_ref.csg
-unable_vec3='bad_point.csg:1:55: warning: Unable to convert points[3] = [0, 0, "a"] to a vec3 of numbers; the polyhedron keeps the faces before it, as OpenSCAD does (--strict makes it an error)'
+unable_vec3='bad_point.csg:1:55: warning: Unable to convert points[3] = [0, 0, "a"] to a vec3 of numbers; the polyhedron keeps the faces before it, as OpenSCAD does (--strict makes it an error)
+bad_point.csg:1:89: warning: PolySet has degenerate polygons (faces[1] has fewer than 3 points; left out, as OpenSCAD leaves it out)'
 warns bad_point.csg "$unable_vec3
 bad_point.csg:1:1: warning: polyhedron is not closed (edge 0-1 is used by 1 face); rendered by the parity rule (--strict makes it an error)"
 warns bad_point.csg "$unable_vec3
@@ -594,7 +599,7 @@ same bad_point.csg shifted_cube.csg --faithful
 for mode in "" --faithful; do
     # shellcheck disable=SC2086
     {
-        warns bad_face.csg "" $mode
+        warns bad_face.csg "bad_face.csg:1:92: warning: PolySet has degenerate polygons (faces[1] and 1 more have fewer than 3 points; left out, as OpenSCAD leaves them out)" $mode
         same bad_face.csg bad_face_ref.csg $mode
         warns bad_polygon.csg "bad_polygon.csg:1:43: warning: Unable to convert points[3] = [1, \"a\"] to a vec2 of numbers; the polygon is empty, as OpenSCAD leaves it out (--strict makes it an error)" $mode
         same bad_polygon.csg bad_polygon_ref.csg $mode

@@ -564,7 +564,9 @@ done
 # point, its own 3D operation's "Ignoring 2D child object for 3D
 # operation", a polyhedron's index; a '%' child below it too), then the
 # 2D operation's own (openscad -o /abs/x.stl x.csg, -o /abs/x.dxf for the
-# 2D model, prints exactly these).
+# 2D model, prints exactly these; its preview, -o x.png, adds "PolySet has
+# degenerate polygons" after a polyhedron's index warning, as spancast
+# does: see meshes.md).
 tetra_bad='polyhedron(points = [[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1]], faces = [[0, 1, 2], [0, 3, 1], [0, 2, 3], [1, 3, 7]], convexity = 1);'
 printf 'linear_extrude(height = 1) {\n\tunion() {\n\t\t%s\n\t\tunion() {\n\t\t\t%s\n\t\t\t%s\n\t\t}\n\t}\n}\n' "$square1" "$cube1" "$bad2d" >in3d_extrude.csg
 printf 'union() {\n\t%s\n\tunion() {\n\t\t%s\n\t\t%s\n\t}\n}\n' "$square1" "$cube1" "$bad2d" >in3d_flat.csg
@@ -589,6 +591,7 @@ in3d_flat.csg:3:2: warning: Mixing 2D and 3D objects is not supported
 in3d_flat.csg:3:2: warning: Ignoring 3D child object for 2D operation" $mode
         same in3d_flat.csg bg_flat_ref.csg $mode
         warns in3d_faces.csg "in3d_faces.csg:3:117: warning: Point index 7 is out of bounds (from faces[3][2])
+in3d_faces.csg:3:110: warning: PolySet has degenerate polygons (faces[3] has fewer than 3 points; left out, as OpenSCAD leaves it out)
 in3d_faces.csg:3:2: warning: Ignoring 3D child object for 2D operation" $mode
         same in3d_faces.csg bg_extrude_ref.csg $mode
         warns in3d_bg.csg "$(unable in3d_bg.csg 5 38)

@@ -937,6 +937,12 @@ static void test_polyhedron_errors(void **state)
         tetra_bad, SC_ERR_SEMANTIC,
         "m.csg:1:129: error: polyhedron face 4: point index 4 is out of range "
         "(4 points)");
+    /* a face of fewer than 3 points is a warning (test_build_mesh.c), and
+     * with --strict the error, at the first such face */
+    check_error_strict(
+        "polyhedron(points = [[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1]], faces = "
+        "[[0, 1, 2], [0, 3, 1], [0, 2, 3], [1, 3, 2], [], [0, 1]]);",
+        SC_ERR_SEMANTIC, "m.csg:1:120: error: polyhedron face 4 has fewer than 3 points");
     /* a point OpenSCAD cannot convert is a warning (test_build_mesh.c),
      * and with --strict the error */
     check_error_strict(
@@ -959,10 +965,15 @@ static void test_polyhedron_errors(void **state)
              "faces = [[0, 2, 1], [0, 1, 3], [1, 2, 3], [\"x\", 3, 2]]);");
     assert_false(is_empty(s));
     sc_scene_release(s);
-    /* a face that is not a vector is an empty one, faces that are not a
-     * vector none, as OpenSCAD 2021.01 reads them (Value::toVector) */
-    s = load_warned("polyhedron(points = [[0, 0, 0]], faces = [0]);",
-                    "m.csg:1:1: polyhedron without faces is empty");
+    /* a face that is not a vector is an empty one (OpenSCAD warns of it
+     * as it tessellates), faces that are not a vector none, as OpenSCAD
+     * 2021.01 reads them (Value::toVector) */
+    const char *const empty_face[] = {
+        "m.csg:1:43: PolySet has degenerate polygons (faces[0] has fewer than 3 points; "
+        "left out, as OpenSCAD leaves it out)",
+        "m.csg:1:1: polyhedron without faces is empty"};
+    s = test_check_warnings("m.csg", "polyhedron(points = [[0, 0, 0]], faces = [0]);", 0,
+                            empty_face, 2);
     sc_scene_release(s);
     s = load_warned("polyhedron(points = [[0, 0, 0]], triangles = 7);",
                     "m.csg:1:1: polyhedron without faces is empty");

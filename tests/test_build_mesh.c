@@ -283,19 +283,26 @@ static void append_copies(char *text, size_t size, const char *const *corners,
 
 /* OpenSCAD 2021.01 leaves an index out of range out of its face with a
  * warning, truncates a fraction and drops a face of fewer than 3 points:
- * the faces left here are those of the closed tetrahedron, and only the
- * indices out of range are warned of (--strict: test_build.c). */
+ * the faces left here are those of the closed tetrahedron. The indices out
+ * of range are warned of, each with its value (the last face's, read
+ * before the points it drops, kept its value), and then, once, the faces
+ * of fewer than 3 points, as OpenSCAD's tessellation warns of them
+ * (--strict: test_build.c). */
 static void test_bad_indices(void **state)
 {
     (void)state;
     const char *const out_of_range[] = {
         "m.csg:1:129: Point index 4 is out of bounds (from faces[4][2])",
-        "m.csg:1:134: Point index -1 is out of bounds (from faces[5][0])"};
+        "m.csg:1:134: Point index -1 is out of bounds (from faces[5][0])",
+        "m.csg:1:148: Point index 9 is out of bounds (from faces[7][0])",
+        "m.csg:1:122: PolySet has degenerate polygons (faces[4] and 3 more have fewer "
+        "than 3 points; left out, as OpenSCAD leaves them out)"};
     const char *text =
         "polyhedron(points = [[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1]], faces = "
-        "[[0, 1, 2], [0, 3, 1], [0, 2, 3], [1, 3, 2.5], [0, 1, 4], [-1, 2], [3]]);";
+        "[[0, 1, 2], [0, 3, 1], [0, 2, 3], [1, 3, 2.5], [0, 1, 4], [-1, 2], [3], [9, 0, "
+        "1]]);";
     for (int faithful = 0; faithful <= 1; faithful++) {
-        sc_scene *s = test_check_warnings("m.csg", text, faithful, out_of_range, 2);
+        sc_scene *s = test_check_warnings("m.csg", text, faithful, out_of_range, 4);
         assert_true(inside(s, 0.1, 0.1, 0.1));
         assert_false(inside(s, 0.5, 0.5, 0.5));
         sc_scene_release(s);
@@ -1636,18 +1643,24 @@ static void test_polyhedron_malformed(void **state)
     const char *unable = "m.csg:1:55: Unable to convert points[3] = [0, 0, \"a\"] to a "
                          "vec3 of numbers; the polyhedron keeps the faces before it, as "
                          "OpenSCAD does (--strict makes it an error)";
+    /* the face it stops in keeps the point before the bad one, and OpenSCAD
+     * warns of that degenerate face as it tessellates */
+    const char *degenerate = "m.csg:1:89: PolySet has degenerate polygons (faces[1] has "
+                             "fewer than 3 points; left out, as OpenSCAD leaves it out)";
     const char *const exact[] = {
-        unable, "m.csg:1:1: polyhedron is not closed (edge 0-1 is used "
-                "by 1 face); rendered by the parity rule (--strict makes "
-                "it an error)"};
-    sc_scene *s = test_check_warnings("m.csg", bad_point, 0, exact, 2);
+        unable, degenerate,
+        "m.csg:1:1: polyhedron is not closed (edge 0-1 is used "
+        "by 1 face); rendered by the parity rule (--strict makes "
+        "it an error)"};
+    sc_scene *s = test_check_warnings("m.csg", bad_point, 0, exact, 3);
     assert_int_equal(scene_tree(s)->leaf_count, 1);
     sc_scene_release(s);
     const char *const faithful[] = {
-        unable, "m.csg:1:1: polyhedron is not closed (edge 0-1 is used by 1 face); left "
-                "out, as OpenSCAD leaves it out (\"The given mesh is not closed! Unable "
-                "to convert to CGAL_Nef_Polyhedron.\")"};
-    s = test_check_warnings("m.csg", bad_point, 1, faithful, 2);
+        unable, degenerate,
+        "m.csg:1:1: polyhedron is not closed (edge 0-1 is used by 1 face); left "
+        "out, as OpenSCAD leaves it out (\"The given mesh is not closed! Unable "
+        "to convert to CGAL_Nef_Polyhedron.\")"};
+    s = test_check_warnings("m.csg", bad_point, 1, faithful, 3);
     assert_int_equal(scene_tree(s)->leaf_count, 0);
     sc_scene_release(s);
     for (int mode = 0; mode <= 1; mode++) {
@@ -1660,12 +1673,17 @@ static void test_polyhedron_malformed(void **state)
             "polyhedron(points = [[0, 0, 0], [1, 0, 0], [0, 1, inf], [0, 0, 1]], faces = "
             "[[0, 1, 2], [0, 3, 1], [0, 2, 3], [1, 3, 2]]);",
             SC_ERR_SEMANTIC, "m.csg:1:44: error: polyhedron point 2 is not finite", mode);
-        /* a bad point no face reads is never read */
+        /* a bad point no face reads is never read; the faces without
+         * points are warned of */
+        const char *const no_points[] = {
+            "m.csg:1:125: PolySet has degenerate polygons (faces[4] and 1 more have "
+            "fewer "
+            "than 3 points; left out, as OpenSCAD leaves them out)"};
         s = test_check_warnings(
             "m.csg",
             "polyhedron(points = [[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1], \"x\"], "
             "faces = [[0, 1, 2], [0, 3, 1], [0, 2, 3], [1, 3, 2], 7, []]);",
-            mode, NULL, 0);
+            mode, no_points, 1);
         assert_int_equal(scene_tree(s)->leaf_count, 1);
         assert_true(inside(s, 0.2, 0.2, 0.2));
         sc_scene_release(s);
@@ -1678,21 +1696,28 @@ static void test_polyhedron_malformed(void **state)
         assert_true(inside(s, 0.1, 0.1, 0.8));
         assert_false(inside(s, 0.1, 0.1, 0.05));
         sc_scene_release(s);
-        /* no face left: only the warning that emptied it */
+        /* no face left: the warning that emptied it, and OpenSCAD's of the
+         * face it stopped in, but not that the polyhedron is empty */
         const char *const only[] = {
             "m.csg:1:22: Unable to convert points[0] = [0, 0, inf] to a vec3 of numbers; "
             "the polyhedron keeps the faces before it, as OpenSCAD does (--strict makes "
-            "it an error)"};
+            "it an error)",
+            "m.csg:1:45: PolySet has degenerate polygons (faces[0] has fewer than 3 "
+            "points; "
+            "left out, as OpenSCAD leaves it out)"};
         s = test_check_warnings(
             "m.csg", "polyhedron(points = [[0, 0, inf]], faces = [[0, 0, 0]]);", mode,
-            only, 1);
+            only, 2);
         sc_scene_release(s);
         const char *const bounds[] = {
             "m.csg:1:34: Point index 0 is out of bounds (from faces[0][0])",
             "m.csg:1:37: Point index 1 is out of bounds (from faces[0][1])",
-            "m.csg:1:40: Point index 2 is out of bounds (from faces[0][2])"};
+            "m.csg:1:40: Point index 2 is out of bounds (from faces[0][2])",
+            "m.csg:1:33: PolySet has degenerate polygons (faces[0] has fewer than 3 "
+            "points; "
+            "left out, as OpenSCAD leaves it out)"};
         s = test_check_warnings("m.csg", "polyhedron(points = 5, faces = [[0, 1, 2]]);",
-                                mode, bounds, 3);
+                                mode, bounds, 4);
         assert_int_equal(scene_tree(s)->leaf_count, 0);
         sc_scene_release(s);
         const char *const none[] = {"m.csg:1:1: polyhedron without faces is empty"};

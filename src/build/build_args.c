@@ -95,11 +95,9 @@ sc_status build_file_not_opened(const build_ctx *c, const sc_location *loc,
                                what, path, why);
 }
 
-sc_status build_bad_indices(const build_ctx *c, const model_node *n)
+static sc_status bad_indices(const build_ctx *c, const model_node *n)
 {
     int polygon = n->kind == MODEL_POLYGON;
-    if ((!polygon && n->kind != MODEL_POLYHEDRON) || n->pending || !c->notes)
-        return SC_OK;
     const model_bad_index *bad = polygon ? n->u.polygon->bad : n->u.polyhedron.bad;
     uint32_t count = polygon ? n->u.polygon->bad_count : n->u.polyhedron.bad_count;
     uint32_t points = polygon ? n->u.polygon->point_count : n->u.polyhedron.point_count;
@@ -151,6 +149,33 @@ sc_status build_bad_indices(const build_ctx *c, const model_node *n)
         polygon ? "the polygon is empty, as OpenSCAD leaves it out"
                 : "the polyhedron keeps the faces before it, as "
                   "OpenSCAD does");
+}
+
+sc_status build_bad_indices(const build_ctx *c, const model_node *n)
+{
+    if ((n->kind != MODEL_POLYGON && n->kind != MODEL_POLYHEDRON) || n->pending ||
+        !c->notes)
+        return SC_OK;
+    sc_status st = bad_indices(c, n);
+    uint32_t degenerate = n->kind == MODEL_POLYHEDRON ? n->u.polyhedron.degenerate : 0;
+    if (st != SC_OK || degenerate == 0)
+        return st;
+    /* OpenSCAD's warning, as its tessellation meets them (tessellate_faces),
+     * after those of the indices and points, where the first is */
+    const sc_location *loc = &n->u.polyhedron.degenerate_loc;
+    uint32_t face = n->u.polyhedron.degenerate_face;
+    if (c->strict)
+        return err_set(c->error, SC_ERR_SEMANTIC, loc,
+                       "polyhedron face %u has fewer than 3 points", face);
+    if (degenerate == 1)
+        return build_note(c, loc,
+                          "PolySet has degenerate polygons (faces[%u] has fewer than 3 "
+                          "points; left out, as OpenSCAD leaves it out)",
+                          face);
+    return build_note(c, loc,
+                      "PolySet has degenerate polygons (faces[%u] and %u more have fewer "
+                      "than 3 points; left out, as OpenSCAD leaves them out)",
+                      face, degenerate - 1);
 }
 
 sc_status build_xform_not_finite(const build_ctx *c, const model_node *n)

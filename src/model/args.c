@@ -352,7 +352,9 @@ static int polyhedron_point(const parse_value *pv, vec3 *out, int *not_finite)
 /* What one pass over the faces finds (polyhedron_walk). */
 typedef struct face_walk {
     uint32_t kept, bad_count; /* faces kept, indices out of range */
+    uint32_t degenerate;      /* faces of fewer than 3 points */
     size_t total;             /* indices kept */
+    size_t room;              /* indices written: those kept, then a face left out */
 } face_walk;
 
 /* Reads the faces fv (NULL: none) over the points pts (count np; ok[i]
@@ -365,7 +367,8 @@ static int polyhedron_walk(const model_reader *r, arena *mem, const parse_value 
                            const parse_value *pts, uint32_t np, const unsigned char *ok,
                            uint32_t min_points, face_walk *w, model_node *out)
 {
-    uint32_t count = fv ? fv->u.vector.count : 0, k = 0, kept = 0, b = 0;
+    uint32_t count = fv ? fv->u.vector.count : 0, k = 0, kept = 0, b = 0, degenerate = 0;
+    size_t room = 0;
     uint32_t *indices = out ? (uint32_t *)out->u.polyhedron.indices : NULL;
     uint32_t *start = out ? (uint32_t *)out->u.polyhedron.face_start : NULL;
     model_bad_index *bad = out ? (model_bad_index *)out->u.polyhedron.bad : NULL;
@@ -408,6 +411,12 @@ static int polyhedron_walk(const model_reader *r, arena *mem, const parse_value 
                 indices[k] = at;
             k++;
         }
+        if (k > room)
+            room = k;
+        if (k - first < 3 && degenerate++ == 0 && out) {
+            out->u.polyhedron.degenerate_face = f;
+            out->u.polyhedron.degenerate_loc = model_loc(r, face);
+        }
         if (k - first < min_points) {
             k = first; /* left out */
         } else {
@@ -420,7 +429,9 @@ static int polyhedron_walk(const model_reader *r, arena *mem, const parse_value 
         start[kept] = k;
     w->kept = kept;
     w->bad_count = b;
+    w->degenerate = degenerate;
     w->total = k;
+    w->room = room;
     return stopped;
 }
 
@@ -449,12 +460,13 @@ sc_status model_read_polyhedron(const model_reader *r, arena *mem, const parse_n
     }
     face_walk w;
     polyhedron_walk(r, mem, fv, pts, np, ok, min_points, &w, NULL);
-    if (w.total > UINT32_MAX) {
+    if (w.room > UINT32_MAX) {
         free(ok);
         return err_nomem(r->error, NULL);
     }
     uint32_t *start = arena_calloc(mem, (size_t)w.kept + 1, sizeof *start);
-    uint32_t *indices = arena_calloc(mem, w.total ? w.total : 1, sizeof *indices);
+    /* room for the points of a face read before it is left out */
+    uint32_t *indices = arena_calloc(mem, w.room ? w.room : 1, sizeof *indices);
     model_bad_index *bad =
         w.bad_count ? arena_calloc(mem, w.bad_count, sizeof *bad) : NULL;
     if (!start || !indices || (w.bad_count && !bad)) {
@@ -468,6 +480,7 @@ sc_status model_read_polyhedron(const model_reader *r, arena *mem, const parse_n
     out->u.polyhedron.bad = bad;
     out->u.polyhedron.bad_count = w.bad_count;
     out->u.polyhedron.face_count = w.kept;
+    out->u.polyhedron.degenerate = w.degenerate;
     out->u.polyhedron.bad_point = NULL;
     int st = polyhedron_walk(r, mem, fv, pts, np, ok, min_points, &w, out);
     free(ok);

@@ -392,6 +392,13 @@ struct model_node {
             uint32_t bad_count;
             /* the point the faces ended at, or NULL */
             const model_bad_point *bad_point;
+            /* the faces of fewer than 3 points (after the indices out of
+             * range), left out (kept where face_count's note says):
+             * OpenSCAD 2021.01 warns of them once, as it tessellates the
+             * polyhedron ("PolySet has degenerate polygons"); the first
+             * is faces[degenerate_face], at degenerate_loc */
+            uint32_t degenerate, degenerate_face;
+            sc_location degenerate_loc;
         } polyhedron;
         /* multmatrix: rows of the 3x4 affine part; the zero map when an
          * entry is nan or inf (not_finite), which OpenSCAD 2021.01 removes
