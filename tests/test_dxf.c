@@ -233,9 +233,9 @@ static void test_errors(void **state)
         "0\nSECTION\n2\nENTITIES\n0\nARC\n10\n0\n20\n0\n40\n1\n50\n0\n51\n1e9\n"
         "0\nEOF\n",
         "d.dxf:6:1: error: too many line segments in a DXF drawing (limit is 50000)");
-    check_error(
-        "0\nSECTION\n2\nENTITIES\n0\nLINE\n10\n0\n20\n0\n11\n1e13\n21\n0\n0\nEOF\n",
-        "d.dxf:6:1: error: DXF coordinates out of range (limit is 1e+12)");
+    check_error("0\nSECTION\n2\nENTITIES\n0\nLINE\n10\n0\n20\n0\n11\n70368744177664\n21\n"
+                "0\n0\nEOF\n",
+                "d.dxf:6:1: error: DXF coordinates out of range (limit is 7.03687e+13)");
     /* blank lines at the end are the end */
     twod_region r;
     assert_int_equal(read("0\nSECTION\n2\nENTITIES\n0\nENDSEC\n0\nEOF\n\n\n \n", NULL, 0,

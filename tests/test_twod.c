@@ -434,8 +434,11 @@ static void test_errors(void **state)
     }
     check_error("group() { roof() { square(1); } }", SC_ERR_UNSUPPORTED,
                 "m.csg:1:11: error: 'roof' inside group is not supported yet");
-    check_error("group() { square(1e13); }", SC_ERR_LIMIT,
-                "m.csg:1:11: error: square: coordinates out of range (limit is 1e+12)");
+    /* past the clipper's range (2^46 at its scale), where OpenSCAD's union
+     * stops on Clipper's exception */
+    check_error(
+        "group() { square(1); square(70368744177664); }", SC_ERR_LIMIT,
+        "m.csg:1:22: error: square: coordinates out of range (limit is 7.03687e+13)");
     /* the depth guard: 1001 nested groups under the outer one */
     size_t depth = 1001, len = 0;
     char *text = malloc(depth * 12 + 64);

@@ -411,7 +411,7 @@ static sc_status read_square(const eval *e, const model_node *n, twod_region *ou
     int center = n->u.square->center;
     if (!(sx > 0 && sy > 0 && isfinite(sx) && isfinite(sy)))
         return SC_OK;
-    if (sx > TWOD_MAX_COORD || sy > TWOD_MAX_COORD)
+    if (!twod_in_range(sx) || !twod_in_range(sy))
         return clip_status(e, n, TWOD_CLIP_RANGE);
     double x0 = 0, y0 = 0, x1 = sx, y1 = sy;
     if (center) {
@@ -439,7 +439,7 @@ static sc_status read_circle(const eval *e, const model_node *n, twod_region *ou
     out->sanitized = 1;
     if (!(r > 0 && isfinite(r)))
         return SC_OK;
-    if (r > TWOD_MAX_COORD)
+    if (!twod_in_range(r))
         return clip_status(e, n, TWOD_CLIP_RANGE);
     long f = faithful_fragments(r, fn, fs, fa);
     if (f < 0)
@@ -493,8 +493,7 @@ sc_status build_twod_polygon(const build_ctx *c, const model_node *n, const affi
         for (uint32_t i = 0; i < len; i++) {
             uint32_t index = paths ? p->index[first + i] : i;
             double x = p->xy[2 * index], y = p->xy[2 * index + 1];
-            if (check_range &&
-                !(fabs(x) <= TWOD_MAX_COORD && fabs(y) <= TWOD_MAX_COORD)) {
+            if (check_range && !(twod_in_range(x) && twod_in_range(y))) {
                 eval e = evaluator(c, n->name);
                 return clip_status(&e, n, TWOD_CLIP_RANGE);
             }
@@ -935,8 +934,7 @@ static sc_status transform(const eval *e, const model_node *n, double m[2][3],
         double x = r->xy[2 * i], y = r->xy[2 * i + 1];
         r->xy[2 * i] = m[0][0] * x + m[0][1] * y + m[0][2];
         r->xy[2 * i + 1] = m[1][0] * x + m[1][1] * y + m[1][2];
-        if (!(fabs(r->xy[2 * i]) <= TWOD_MAX_COORD &&
-              fabs(r->xy[2 * i + 1]) <= TWOD_MAX_COORD))
+        if (!(twod_in_range(r->xy[2 * i]) && twod_in_range(r->xy[2 * i + 1])))
             return clip_status(e, n, TWOD_CLIP_RANGE);
     }
     if (r->sanitized && det <= 0 && r->contour_count)

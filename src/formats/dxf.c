@@ -277,8 +277,8 @@ static sc_status add_line(reader *r, double x1, double y1, double x2, double y2)
         return SC_OK;
     if (r->in_entities && !layer_ok(r))
         return SC_OK;
-    if (!(fabs(x1) <= TWOD_MAX_COORD && fabs(y1) <= TWOD_MAX_COORD &&
-          fabs(x2) <= TWOD_MAX_COORD && fabs(y2) <= TWOD_MAX_COORD)) {
+    if (!(twod_in_range(x1) && twod_in_range(y1) && twod_in_range(x2) &&
+          twod_in_range(y2))) {
         sc_location loc = {r->path, r->line, 1};
         return err_set(r->error, SC_ERR_LIMIT, &loc,
                        "DXF coordinates out of range (limit is %g)", TWOD_MAX_COORD);

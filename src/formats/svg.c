@@ -154,8 +154,7 @@ static int commit_point(reader *r, twod_region *shape, const mat3 *m, double x, 
         r->box[2] = sx;
     if (sy > r->box[3])
         r->box[3] = sy;
-    if (!isfinite(tx) || !isfinite(ty) || fabs(tx) > TWOD_MAX_COORD ||
-        fabs(ty) > TWOD_MAX_COORD) {
+    if (!twod_in_range(tx) || !twod_in_range(ty)) {
         r->range = 1;
         return 0;
     }
@@ -1143,8 +1142,7 @@ sc_status svg_read(const char *text, size_t size, const char *name, const sc_loc
                 double *p = shape->xy + 2 * k;
                 p[0] = r.scale[0] * (-r.viewbox[0] + p[0]) - cx;
                 p[1] = r.scale[1] * (-r.viewbox[1] - p[1]) + cy;
-                if (!isfinite(p[0]) || !isfinite(p[1]) || fabs(p[0]) > TWOD_MAX_COORD ||
-                    fabs(p[1]) > TWOD_MAX_COORD) {
+                if (!twod_in_range(p[0]) || !twod_in_range(p[1])) {
                     st = fail(&r, SC_ERR_LIMIT, 0,
                               "the page's scale makes coordinates out of range");
                     break;

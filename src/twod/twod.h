@@ -20,9 +20,18 @@
 /* OpenSCAD's clipper grid: coordinates are scaled by 2^16 and truncated to
  * integers (ClipperUtils' CLIPPER_SCALE). */
 #define TWOD_CLIPPER_SCALE 65536.0
-/* Largest coordinate the engine accepts: Clipper's integer range (2^62)
- * over the scale, with room for offsets and sums. */
-#define TWOD_MAX_COORD 1e12
+/* Clipper's range over the scale: a coordinate goes in as an integer of
+ * magnitude 2^62 - 1 at most (Clipper's hiRange), so its magnitude must be
+ * below 2^46, as OpenSCAD's clipper takes it; a sum that leaves the range
+ * (an offset, a translation, a minkowski sum) is Clipper's range error. */
+#define TWOD_MAX_COORD 0x1p46
+
+/* Whether v is within the clipper's range (finite and below 2^46 in
+ * magnitude). */
+static inline int twod_in_range(double v)
+{
+    return v > -TWOD_MAX_COORD && v < TWOD_MAX_COORD;
+}
 /* Most points in one region. */
 #define TWOD_MAX_POINTS 10000000u
 

@@ -69,7 +69,7 @@ Paths to_paths(const twod_region &r, bool keep_orientation)
         p.reserve(r.start[k + 1] - r.start[k]);
         for (uint32_t i = r.start[k]; i < r.start[k + 1]; i++) {
             double x = r.xy[2 * i], y = r.xy[2 * i + 1];
-            if (!(std::fabs(x) <= TWOD_MAX_COORD && std::fabs(y) <= TWOD_MAX_COORD))
+            if (!(twod_in_range(x) && twod_in_range(y)))
                 throw range_error();
             p.emplace_back(static_cast<cInt>(x * TWOD_CLIPPER_SCALE),
                            static_cast<cInt>(y * TWOD_CLIPPER_SCALE));
@@ -356,7 +356,7 @@ extern "C" int twod_clip_offset(const twod_region *in, double delta, twod_join j
                                 double arc_tolerance, twod_region *out)
 {
     return guarded([&] {
-        if (!(std::fabs(delta) <= TWOD_MAX_COORD))
+        if (!twod_in_range(delta))
             throw range_error();
         ClipperLib::JoinType type = join == TWOD_JOIN_ROUND   ? ClipperLib::jtRound
                                     : join == TWOD_JOIN_MITER ? ClipperLib::jtMiter
