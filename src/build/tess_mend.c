@@ -14,6 +14,7 @@
 #include <string.h>
 
 #include "base/grow.h"
+#include "base/sort.h"
 
 #define NIL UINT32_MAX
 
@@ -27,7 +28,7 @@ static const uint32_t bucket_counts[] = {13,   29,   59,    127,   257,   541,  
 typedef struct node {
     uint64_t key, hash;
     uint32_t next; /* the next in the list, NIL at the end */
-    uint32_t val;  /* a count, or the first cell of a list */
+    uint32_t val;  /* a count, or the first cell of a list (NIL: empty) */
     uint32_t last; /* the last cell of its list, NIL: empty */
 } node;
 
@@ -42,6 +43,7 @@ typedef struct table {
     uint32_t buckets; /* 0 before the first key */
     uint32_t grade;   /* of the next bucket count */
     uint32_t size;
+    uint32_t empty; /* a new node's val: 0 (a count) or NIL (an empty list) */
 } table;
 
 typedef struct mend {
@@ -51,9 +53,10 @@ typedef struct mend {
     int nomem, broken;
 } mend;
 
-static int table_init(table *t)
+static int table_init(table *t, uint32_t empty)
 {
     memset(t, 0, sizeof *t);
+    t->empty = empty;
     if (!grow_array32((void **)&t->node, &t->node_cap, 1, sizeof *t->node))
         return 0;
     t->node[0].next = NIL;
@@ -142,7 +145,7 @@ static uint32_t table_get(mend *m, table *t, uint64_t key, uint64_t hash)
     x = t->nodes++;
     t->node[x].key = key;
     t->node[x].hash = hash;
-    t->node[x].val = 0;
+    t->node[x].val = t->empty;
     t->node[x].last = NIL;
     table_link(t, x);
     t->size++;
@@ -249,8 +252,7 @@ static void list_push(mend *m, table *t, uint32_t at, uint32_t value)
 
 static int list_has(const mend *m, const table *t, uint32_t x, uint32_t value)
 {
-    for (uint32_t c = t->node[x].last == NIL ? NIL : t->node[x].val; c != NIL;
-         c = m->cell[c].next)
+    for (uint32_t c = t->node[x].val; c != NIL; c = m->cell[c].next)
         if (m->cell[c].value == value)
             return 1;
     return 0;
@@ -264,8 +266,7 @@ static void list_remove(mend *m, table *t, uint32_t at, uint32_t value)
     if (x == NIL)
         return;
     uint32_t prev = NIL;
-    for (uint32_t c = t->node[x].last == NIL ? NIL : t->node[x].val; c != NIL;
-         prev = c, c = m->cell[c].next) {
+    for (uint32_t c = t->node[x].val; c != NIL; prev = c, c = m->cell[c].next) {
         if (m->cell[c].value != value)
             continue;
         if (prev == NIL)
@@ -307,40 +308,29 @@ static void extract(mend *m, uint32_t v, uint32_t next, uint32_t tri[3])
     list_remove(m, &m->into, next, v);
 }
 
-typedef struct numbered {
-    uint32_t number, position;
-} numbered;
-
-static int by_number(const void *a, const void *b)
-{
-    const numbered *x = a, *y = b;
-    if (x->number != y->number)
-        return x->number < y->number ? -1 : 1;
-    return x->position < y->position ? -1 : x->position > y->position;
-}
-
-/* The first position in face of number (present: it comes from face). */
-static uint32_t position_of(const numbered *sorted, uint32_t n, uint32_t number)
+/* The first position in the face of number (present: it comes from the
+ * face), from the face's points sorted as number << 32 | position. */
+static uint32_t position_of(const uint64_t *sorted, uint32_t n, uint32_t number)
 {
     uint32_t lo = 0, hi = n;
     while (lo < hi) {
         uint32_t mid = lo + (hi - lo) / 2;
-        if (sorted[mid].number < number)
+        if (sorted[mid] >> 32 < number)
             lo = mid + 1;
         else
             hi = mid;
     }
-    return sorted[lo].position;
+    return (uint32_t)sorted[lo];
 }
 
 long tess_mend(const uint32_t *face, uint32_t n, const uint32_t *tris, uint32_t count,
                uint32_t *out, uint32_t out_cap)
 {
     mend m = {0};
-    numbered *sorted = malloc((n ? n : 1) * sizeof *sorted);
+    uint64_t *sorted = malloc((n ? n : 1) * sizeof *sorted);
     long made = 0;
-    if (!sorted || !table_init(&m.edges) || !table_init(&m.out_of) ||
-        !table_init(&m.into)) {
+    if (!sorted || !table_init(&m.edges, 0) || !table_init(&m.out_of, NIL) ||
+        !table_init(&m.into, NIL)) {
         m.nomem = 1;
         goto done;
     }
@@ -411,8 +401,11 @@ long tess_mend(const uint32_t *face, uint32_t n, const uint32_t *tris, uint32_t 
     if (m.nomem || m.broken)
         goto done;
     for (uint32_t i = 0; i < n; i++)
-        sorted[i] = (numbered){face[i], i};
-    qsort(sorted, n, sizeof *sorted, by_number);
+        sorted[i] = (uint64_t)face[i] << 32 | i;
+    if (!sort_u64(sorted, n)) {
+        m.nomem = 1;
+        goto done;
+    }
     for (long k = 0; k < 3 * made; k++)
         out[k] = position_of(sorted, n, out[k]);
 done:
