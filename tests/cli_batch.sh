@@ -122,6 +122,22 @@ rc=$?
 [ "$rc" = 1 ] || fail "a missing jobs file exited $rc"
 grep -qx "spancast: error: cannot read 'lib/none.txt': No such file or directory" err.txt ||
     fail "a missing jobs file: '$(cat err.txt)'"
+# The jobs file's limit, 64 MiB (limits.md): one job, then comments up to
+# exactly the limit, runs; one byte more is refused before any job runs.
+check
+{ printf 'info part.csg\n'; yes '# padding' | head -c $((64 * 1048576 - 14)); } >lib/full.txt
+[ "$(wc -c <lib/full.txt)" = $((64 * 1048576)) ] || fail "full.txt is $(wc -c <lib/full.txt) bytes"
+"$bin" batch lib/full.txt >out.txt 2>err.txt
+rc=$?
+[ "$rc" = 0 ] || fail "a jobs file of 64 MiB exited $rc: $(cat err.txt)"
+grep -Eq '^1 +1 +0 ' out.txt || fail "a jobs file of 64 MiB: $(cat out.txt)"
+printf '#' >>lib/full.txt
+"$bin" batch lib/full.txt >out.txt 2>err.txt
+rc=$?
+[ "$rc" = 1 ] || fail "a jobs file past 64 MiB exited $rc"
+grep -qx "spancast: error: cannot read 'lib/full.txt': file is too large" err.txt ||
+    fail "a jobs file past 64 MiB: '$(cat err.txt)'"
+rm -f lib/full.txt
 check
 "$bin" batch >out.txt 2>err.txt
 [ $? = 2 ] && grep -qx "spancast: error: missing jobs file" err.txt ||

@@ -4,9 +4,13 @@
  * in a vector, bytes in a string and $fn are checked through the public
  * loader; the size of a render's buffers through sc_render, which must fail
  * before it allocates anything (a 32768 x 32768 render with every buffer
- * would need 29 GiB), and the size of a polyhedron the convex path takes.
+ * would need 29 GiB), the size of a polyhedron the convex path takes, and
+ * the size of a file read whole (file_read: the jobs, DXF, SVG, mesh and
+ * height-map files).
  * Nesting depth has its own tests in test_parse.c and
  * test_build.c. */
+#define _DEFAULT_SOURCE /* mkstemp */
+
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>
@@ -17,8 +21,10 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
 #include "build/build.h"
+#include "formats/file.h"
 #include "render/render.h"
 #include "syntax/lex.h"
 #include "syntax/parse.h"
@@ -254,13 +260,52 @@ static void test_render_memory(void **state)
     sc_scene_release(scene);
 }
 
+/* Writes a file of size bytes (a repeated digit) at path. */
+static void write_bytes(const char *path, size_t size)
+{
+    FILE *f = fopen(path, "wb");
+    assert_non_null(f);
+    for (size_t i = 0; i < size; i++)
+        assert_int_equal(fputc('0' + (int)(i % 10), f), '0' + (int)(i % 10));
+    assert_int_equal(fclose(f), 0);
+}
+
+/* file_read takes a file of exactly its limit whole, and refuses one byte
+ * more, whether or not the limit is a power of two times its first
+ * buffer (64 KiB). */
+static void test_file_limit(void **state)
+{
+    (void)state;
+    char path[] = "/tmp/spancast-limit-XXXXXX";
+    int fd = mkstemp(path);
+    assert_true(fd >= 0);
+    close(fd);
+    static const size_t limits[] = {1, 65535, 65536, 100000, 131072, 300001};
+    for (size_t k = 0; k < sizeof limits / sizeof limits[0]; k++) {
+        size_t limit = limits[k], size = 0;
+        const char *why = NULL;
+        write_bytes(path, limit);
+        char *text = file_read(path, limit, &size, &why);
+        if (!text)
+            fail_msg("a file of %zu bytes, limit %zu: %s", limit, limit, why);
+        assert_int_equal(size, limit);
+        assert_int_equal(text[limit - 1], '0' + (int)((limit - 1) % 10));
+        assert_int_equal(text[limit], 0);
+        free(text);
+        write_bytes(path, limit + 1);
+        assert_null(file_read(path, limit, &size, &why));
+        assert_ptr_equal(why, file_too_large);
+    }
+    unlink(path);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_node_count),    cmocka_unit_test(test_vector_length),
         cmocka_unit_test(test_string_length), cmocka_unit_test(test_fn),
         cmocka_unit_test(test_deep_render),   cmocka_unit_test(test_polyhedron_work),
-        cmocka_unit_test(test_render_memory),
+        cmocka_unit_test(test_render_memory), cmocka_unit_test(test_file_limit),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

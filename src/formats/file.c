@@ -31,23 +31,22 @@ char *file_read(const char *path, size_t limit, size_t *size, const char **why)
         *why = strerror(errno);
         return NULL;
     }
-    char *buf = NULL;
-    size_t len = 0, cap = 0;
-    for (;;) {
+    size_t len = 0, cap = limit < 65536 ? limit : 65536;
+    char *buf = malloc(cap + 1);
+    *why = buf ? NULL : file_no_memory;
+    while (!*why) {
         if (len == cap) {
-            if (cap >= limit) {
-                *why = file_too_large;
-                free(buf);
-                fclose(f);
-                return NULL;
+            char past; /* a full buffer of limit bytes is whole if nothing follows */
+            if (cap == limit) {
+                if (fread(&past, 1, 1, f) == 1)
+                    *why = file_too_large;
+                break;
             }
-            cap = cap ? 2 * cap : 65536;
+            cap = cap <= limit / 2 ? 2 * cap : limit;
             char *next = realloc(buf, cap + 1);
             if (!next) {
                 *why = file_no_memory;
-                free(buf);
-                fclose(f);
-                return NULL;
+                break;
             }
             buf = next;
         }
@@ -56,10 +55,10 @@ char *file_read(const char *path, size_t limit, size_t *size, const char **why)
         if (got == 0)
             break;
     }
-    int failed = ferror(f);
-    fclose(f);
-    if (failed) {
+    if (!*why && ferror(f))
         *why = file_read_error;
+    fclose(f);
+    if (*why) {
         free(buf);
         return NULL;
     }

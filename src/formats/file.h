@@ -5,7 +5,7 @@
 
 #include <stddef.h>
 
-/* Reads a whole file of at most about limit bytes into a malloc'd,
+/* Reads a whole file of at most limit bytes into a malloc'd,
  * NUL-terminated buffer (the caller frees it); returns NULL and sets *why
  * on failure: strerror's text when the file does not open, else one of
  * the three reasons below, which a caller tells apart by the pointer. */
