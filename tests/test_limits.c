@@ -260,6 +260,64 @@ static void test_render_memory(void **state)
     sc_scene_release(scene);
 }
 
+/* The model's extent: a model within 1e30 of the origin loads, in both
+ * modes, and is drawn as the same model at scale 1 (a sphere's mask is
+ * the same image), and one that reaches past it is the error, wherever
+ * the shape lies below transforms; past about 1e77 products of a few
+ * coordinates leave double's range, and OpenSCAD's triangulation works in
+ * float. */
+static void test_extent(void **state)
+{
+    (void)state;
+    char buf[512], text[512];
+    for (int faithful = 0; faithful <= 1; faithful++) {
+        sc_load_options o;
+        sc_load_options_init(&o);
+        o.faithful = faithful;
+        uint8_t *masks[2] = {NULL, NULL};
+        for (int k = 0; k < 2; k++) {
+            /* the same sphere of 8 fragments, at scale 1 and at 1e29 */
+            const char *f = k ? "1e29" : "1";
+            snprintf(text, sizeof text,
+                     "multmatrix([[%s, 0, 0, 0], [0, %s, 0, 0], [0, 0, %s, 0], [0, 0, 0, "
+                     "1]]) sphere(r = 10, $fn = 8);",
+                     f, f, f);
+            sc_scene *s = NULL;
+            sc_error e;
+            sc_status st = sc_scene_load_string("m.csg", text, strlen(text), &o, &s, &e);
+            if (st != SC_OK)
+                fail_msg("%s", sc_error_format(&e, buf, sizeof buf));
+            sc_render_options r;
+            sc_render_options_init(&r);
+            r.width = 64;
+            r.height = 48;
+            r.want_color = 0;
+            r.want_mask = 1;
+            sc_framebuffer *fb = NULL;
+            assert_int_equal(sc_render(s, &r, &fb, &e), SC_OK);
+            masks[k] = malloc(64 * 48);
+            assert_non_null(masks[k]);
+            memcpy(masks[k], sc_framebuffer_mask(fb), 64 * 48);
+            sc_framebuffer_release(fb);
+            sc_scene_release(s);
+        }
+        size_t hits = 0;
+        for (int i = 0; i < 64 * 48; i++)
+            hits += masks[0][i] != 0;
+        assert_true(hits > 64 * 48 / 20);
+        assert_memory_equal(masks[0], masks[1], 64 * 48);
+        free(masks[0]);
+        free(masks[1]);
+    }
+    const char *within = "cube(1e30);";
+    assert_int_equal(load(within, strlen(within), buf, sizeof buf), SC_OK);
+    const char *past = "group() {\n  multmatrix([[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, "
+                       "-2e30], [0, 0, 0, 1]]) cube(1);\n  cube(1);\n}";
+    assert_int_equal(load(past, strlen(past), buf, sizeof buf), SC_ERR_LIMIT);
+    assert_string_equal(buf, "m.csg: error: the model reaches 2e+30 from the origin "
+                             "(limit is 1e+30)");
+}
+
 /* Writes a file of size bytes (a repeated digit) at path. */
 static void write_bytes(const char *path, size_t size)
 {
@@ -306,6 +364,7 @@ int main(void)
         cmocka_unit_test(test_string_length), cmocka_unit_test(test_fn),
         cmocka_unit_test(test_deep_render),   cmocka_unit_test(test_polyhedron_work),
         cmocka_unit_test(test_render_memory), cmocka_unit_test(test_file_limit),
+        cmocka_unit_test(test_extent),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -1184,6 +1184,27 @@ static sc_status argument_notes(builder *b)
 /* build_scene and build_scene_take: owned, when not NULL, is m, freed as
  * soon as the walk is done; spare (or NULL) is freed or given to the
  * builder. */
+/* SC_ERR_LIMIT where the tree t reaches past BUILD_MAX_EXTENT from the
+ * origin (or its bounds are not finite): "FILE: error: the model reaches
+ * 2e+30 from the origin (limit is 1e+30)". */
+static sc_status check_extent(const csg_tree *t, const char *file, sc_error *error)
+{
+    if (t->root == CSG_EMPTY || bbox_is_empty(&t->bounds))
+        return SC_OK;
+    const double c[6] = {t->bounds.lo.x, t->bounds.lo.y, t->bounds.lo.z,
+                         t->bounds.hi.x, t->bounds.hi.y, t->bounds.hi.z};
+    double reach = 0;
+    for (int i = 0; i < 6; i++)
+        if (!(fabs(c[i]) <= reach))
+            reach = fabs(c[i]); /* nan too */
+    if (reach <= BUILD_MAX_EXTENT)
+        return SC_OK;
+    sc_location loc = {file, 0, 0};
+    return err_set(error, SC_ERR_LIMIT, &loc,
+                   "the model reaches %g from the origin (limit is %g)", reach,
+                   BUILD_MAX_EXTENT);
+}
+
 static sc_status build_scene_of(const model *m, model *owned, void *spare,
                                 size_t spare_size, int flags, size_t max_triangles,
                                 csg_tree **out, shading **look, sc_error **warnings,
@@ -1238,7 +1259,11 @@ static sc_status build_scene_of(const model *m, model *owned, void *spare,
     build_nef_cache_free(b.nefs);
     build_imports_free(&b.imports);
     /* Nothing below reads the model: the builder, the shading record and
-     * the warnings hold copies of what they need. */
+     * the warnings hold copies of what they need, and the extent's error
+     * the file's name. */
+    char file[SC_ERROR_FILE_MAX];
+    const char *named = m->file ? file : NULL;
+    snprintf(file, sizeof file, "%s", m->file ? m->file : "");
     model_free(owned);
     if (st != SC_OK) {
         csg_builder_free(b.csg);
@@ -1247,7 +1272,12 @@ static sc_status build_scene_of(const model *m, model *owned, void *spare,
         return st;
     }
     st = csg_builder_finish(b.csg, root, out, error);
+    if (st == SC_OK)
+        st = check_extent(*out, named, error);
     if (st != SC_OK) {
+        if (*out)
+            csg_tree_free(*out);
+        *out = NULL;
         shading_free(b.shading);
         free(b.warnings.items);
         return st;

@@ -62,6 +62,12 @@
  * max_triangles 0): the mesh triangles of one model, all meshes together. */
 #define BUILD_MAX_TRIANGLES ((size_t)1 << 26)
 
+/* How far from the origin a model may reach, in every coordinate of its
+ * bounds (past it the load is SC_ERR_LIMIT): products of a few
+ * coordinates stay within double's range, and OpenSCAD's triangulation,
+ * which faithful mode follows, works in float. */
+#define BUILD_MAX_EXTENT 1e30
+
 /* build_scene's flags. */
 #define BUILD_FAITHFUL 1 /* OpenSCAD's polygons and polyhedra (--faithful) */
 #define BUILD_STRICT 2   /* bad meshes are errors (--strict) */
