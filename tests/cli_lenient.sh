@@ -63,6 +63,16 @@ nefmeet.csg: warning: the model is empty (nothing to render)"
 printf 'square(size = [10, 4], center = false);\n' >flat.csg
 warns flat.csg ""
 same flat.csg slab_ref.csg
+# A 2D model past 1e6 across is drawn 1e-6 of its width or height thick
+# (the larger), so that the slab stays far above the rays' tolerance (1e-9
+# of the extent): a rectangle 1e12 across is the slab 1e6 thick, where one
+# 1 thick had no area.
+printf 'square(size = [1e12, 4e11], center = false);\n' >flat_big.csg
+printf 'linear_extrude(height = 1e6, center = true) { square(size = [1e12, 4e11]); }\n' >flat_big_ref.csg
+for mode in "" --faithful; do
+    # shellcheck disable=SC2086
+    { warns flat_big.csg "" $mode; same flat_big.csg flat_big_ref.csg $mode; }
+done
 # A projection alone is a 2D model too: its section drawn as the slab.
 printf 'projection(cut = true) { multmatrix([[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, -1], [0, 0, 0, 1]]) { cube(size = [10, 4, 2], center = false); } }\n' >projected.csg
 warns projected.csg ""

@@ -516,8 +516,19 @@ sc_status build_linear_extrude_faces(const build_ctx *c, const model_node *n,
 sc_status build_flat_slab(const build_ctx *c, const sc_location *loc,
                           const twod_region *r, prim *out, const char **empty)
 {
-    /* height 1 centred, one slice, no twist or scale */
+    /* height 1 centred, one slice, no twist or scale; past 1e6 across,
+     * 1e-6 of the larger of its width and height, far above the rays'
+     * tolerance (1e-9 of the extent: csg.h) */
     params p = {1, 0, 1, 1, 0, 12, 2, 1, 1};
+    double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
+    for (uint32_t i = 0; i < r->point_count; i++)
+        for (int a = 0; a < 2; a++) {
+            lo[a] = fmin(lo[a], r->xy[2 * i + a]);
+            hi[a] = fmax(hi[a], r->xy[2 * i + a]);
+        }
+    double across = fmax(hi[0] - lo[0], hi[1] - lo[1]);
+    if (across > 1e6)
+        p.height = 1e-6 * across;
     if (!(fabs(twod_area(r)) > 0)) {
         *empty = "the 2D model has no area";
         return SC_OK;
