@@ -1181,9 +1181,6 @@ static sc_status argument_notes(builder *b)
     return SC_OK;
 }
 
-/* build_scene and build_scene_take: owned, when not NULL, is m, freed as
- * soon as the walk is done; spare (or NULL) is freed or given to the
- * builder. */
 /* SC_ERR_LIMIT where the tree t reaches past BUILD_MAX_EXTENT from the
  * origin (or its bounds are not finite): "FILE: error: the model reaches
  * 2e+30 from the origin (limit is 1e+30)". */
@@ -1205,6 +1202,9 @@ static sc_status check_extent(const csg_tree *t, const char *file, sc_error *err
                    BUILD_MAX_EXTENT);
 }
 
+/* build_scene and build_scene_take: owned, when not NULL, is m, freed as
+ * soon as the walk is done; spare (or NULL) is freed or given to the
+ * builder. */
 static sc_status build_scene_of(const model *m, model *owned, void *spare,
                                 size_t spare_size, int flags, size_t max_triangles,
                                 csg_tree **out, shading **look, sc_error **warnings,

@@ -83,7 +83,8 @@
  * MODEL_ERROR node). With BUILD_STRICT, a polyhedron or imported mesh that is not closed
  * is an error rather than a warning (build_mesh.h). The meshes the build makes have at
  * most max_triangles triangles in all (0: BUILD_MAX_TRIANGLES); past it the build
- * fails with SC_ERR_LIMIT at the mesh that passes it (build_charge_triangles). */
+ * fails with SC_ERR_LIMIT at the mesh that passes it (build_charge_triangles), as
+ * it does for a model whose bounds reach past BUILD_MAX_EXTENT. */
 sc_status build_scene(const model *m, int flags, size_t max_triangles, csg_tree **out,
                       shading **look, sc_error **warnings, size_t *warning_count,
                       sc_error *error);
