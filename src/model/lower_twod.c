@@ -40,6 +40,7 @@
 #include "base/error.h"
 #include "model/args.h"
 #include "model/lower_points.h"
+#include "twod/twod.h"
 
 static sc_status lower_square(model_lowerer *l, const parse_node *n, model_node *out)
 {
@@ -195,7 +196,7 @@ static sc_status polygon_range(model_lowerer *l, model_polygon *p)
      * refused: a polygon without one needs no conversion. */
     int large = 0;
     for (size_t i = 0; i < 2 * (size_t)p->point_count && !large; i++)
-        large = !(fabs(p->xy[i]) < 0x1p46);
+        large = !twod_in_range(p->xy[i]);
     if (!large)
         return SC_OK;
     int paths = p->has_paths && p->path_count > 0;
