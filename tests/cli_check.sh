@@ -124,10 +124,17 @@ holds(o[0]["volume"], 24)
 holds(o[1]["volume"], 36)
 assert max(abs(a - b) for a, b in zip(o[0]["box_min"] + o[0]["box_max"], [8, 7, 6, 10, 10, 10])) < 1e-9, o[0]
 assert j["above_min_volume"] == 2' boxes.json
+# texthold FILE PREFIX X: FILE has a line that starts with PREFIX (a
+# Python regular expression) and goes on "volume V +- E", where V holds X.
+texthold() {
+    check
+    python3 -c "import re, sys
+m = re.search('^' + sys.argv[2] + r'volume (\S+) \+- ([^,\s]+)', open(sys.argv[1]).read(), re.M)
+assert m and abs(float(m.group(1)) - float(sys.argv[3])) <= float(m.group(2))" "$@" ||
+        fail "no overlap line '$2' holding $3 in $1: $(cat "$1")"
+}
 run 1 boxes.txt overlaps boxes.csg -q
-check
-grep -q '^overlap: boxes.csg:2:3 (cube, object 1) and boxes.csg:3:3 (multmatrix, object 2): volume 24 +- ' boxes.txt ||
-    fail "overlaps text: $(cat boxes.txt)"
+texthold boxes.txt 'overlap: boxes\.csg:2:3 \(cube, object 1\) and boxes\.csg:3:3 \(multmatrix, object 2\): ' 24
 # Below --min-volume: listed, exit 0.
 run 0 boxes-min.txt overlaps boxes.csg -q --min-volume=40
 
@@ -142,6 +149,31 @@ run 0 touching.txt overlaps touching.csg -q
 check
 [ "$(cat touching.txt)" = "$(printf '2 top-level objects\nno overlaps')" ] ||
     fail "touching cubes: $(cat touching.txt)"
+
+# Two pairs of wedges that meet on a diagonal face, one pair along each
+# diagonal. The lines of a grid laid on the box the pair shares cross a
+# face through opposite corners of that box, and lie in it; such a line is
+# on the boundary of both wedges, so it must not count as inside both.
+cat >wedges.csg <<'CSG'
+group() {
+  linear_extrude(height = 5, center = false, convexity = 1, scale = [1, 1], $fn = 0, $fa = 12, $fs = 2) {
+    polygon(points = [[0, 0], [10, 0], [0, 10]], paths = undef, convexity = 1);
+  }
+  linear_extrude(height = 5, center = false, convexity = 1, scale = [1, 1], $fn = 0, $fa = 12, $fs = 2) {
+    polygon(points = [[10, 0], [10, 10], [0, 10]], paths = undef, convexity = 1);
+  }
+  linear_extrude(height = 5, center = false, convexity = 1, scale = [1, 1], $fn = 0, $fa = 12, $fs = 2) {
+    polygon(points = [[20, 0], [30, 0], [30, 10]], paths = undef, convexity = 1);
+  }
+  linear_extrude(height = 5, center = false, convexity = 1, scale = [1, 1], $fn = 0, $fa = 12, $fs = 2) {
+    polygon(points = [[20, 0], [30, 10], [20, 10]], paths = undef, convexity = 1);
+  }
+}
+CSG
+run 0 wedges.txt overlaps wedges.csg -q
+check
+[ "$(cat wedges.txt)" = "$(printf '4 top-level objects\nno overlaps')" ] ||
+    fail "wedges that meet on a diagonal: $(cat wedges.txt)"
 
 # A '!' in each of two objects: each object is built with the other
 # disabled, so each is its own root (the first '!' outside the disabled
@@ -178,6 +210,34 @@ assert o[0]["volume"]["error"] < 2e-2 * o[0]["volume"]["value"], o[0]' assembly.
 run 0 self.txt compare drilled.csg drilled.csg -q
 check
 tail -n 1 self.txt | grep -qx same || fail "compare with itself: $(cat self.txt)"
+
+# A prism with a face through opposite corners of its box against the STL
+# OpenSCAD 2021.01 exports of it: the same solid, though the lines in the
+# plane of that face meet the mesh on its triangles' edges.
+cat >prism.csg <<'CSG'
+linear_extrude(height = 1, center = true, convexity = 1, scale = [1, 1], $fn = 0, $fa = 12, $fs = 2) {
+  polygon(points = [[0, 0], [10, 0], [0, 10]], paths = undef, convexity = 1);
+}
+CSG
+python3 - <<'PY' || fail "writing prism.stl"
+tris = [((0, 0, -.5), (0, 10, -.5), (10, 0, -.5)), ((10, 0, .5), (0, 10, .5), (0, 0, .5)),
+        ((0, 0, -.5), (0, 10, .5), (0, 10, -.5)), ((0, 0, -.5), (0, 0, .5), (0, 10, .5)),
+        ((10, 0, -.5), (0, 0, .5), (0, 0, -.5)), ((10, 0, -.5), (10, 0, .5), (0, 0, .5)),
+        ((0, 10, -.5), (10, 0, .5), (10, 0, -.5)), ((0, 10, -.5), (0, 10, .5), (10, 0, .5))]
+with open("prism.stl", "w") as f:
+    f.write("solid OpenSCAD_Model\n")
+    for t in tris:
+        f.write("  facet normal 0 0 0\n    outer loop\n")
+        for v in t:
+            f.write("      vertex %g %g %g\n" % v)
+        f.write("    endloop\n  endfacet\n")
+    f.write("endsolid OpenSCAD_Model\n")
+PY
+run 0 prism.json compare prism.csg prism.stl --json -q
+pycheck '
+holds(j["only_a"], 0)
+holds(j["only_b"], 0)
+assert j["symmetric_difference"]["value"] <= 1e-6 * 50 and j["same"], j' prism.json
 
 # The hole moved 0.1 mm: the symmetric difference is twice the circle less
 # the lens two circles of radius 2 with centres 0.1 apart share, over the
@@ -269,9 +329,7 @@ assert [(p["a"]["index"], p["b"]["index"]) for p in o] == [(1, 2), (2, 3)], o
 holds(o[0]["volume"], 24)
 holds(o[1]["volume"], 36)' scad.json
 run 1 scad.txt overlaps boxes.scad -q
-check
-grep -q "^overlap: boxes.scad (line [0-9]* of OpenSCAD's export) (cube, object 1) and boxes.scad (line [0-9]* of OpenSCAD's export) (group, object 2): volume 24 +- " scad.txt ||
-    fail "overlaps of a .scad, text: $(cat scad.txt)"
+texthold scad.txt "overlap: boxes\\.scad \\(line [0-9]* of OpenSCAD's export\\) \\(cube, object 1\\) and boxes\\.scad \\(line [0-9]* of OpenSCAD's export\\) \\(group, object 2\\): " 24
 grep -q "csg" scad.txt && fail "overlaps of a .scad names a .csg: $(cat scad.txt)"
 # A .csg in OpenSCAD's language is converted the same way, with the note.
 cp boxes.scad language.csg

@@ -177,6 +177,7 @@ static sc_status compare_scenes(const sc_scene *a, const sc_scene *b,
         if (!(hi[i] > lo[i]))
             return SC_OK;
     }
+    quad_widen_box(lo, hi); /* no line in a face the two may share */
     int threads = options_thread_count(options->threads);
     compare_shared shared = {ta, tb, {0}};
     if (!lines_scratch_init(&shared.work, threads, 0))

@@ -628,6 +628,17 @@ sc_status quad_integrate3(const double lo[3], const double hi[3], int nvalues,
     return SC_OK;
 }
 
+void quad_widen_box(double lo[3], double hi[3])
+{
+    static const double below[3] = {0.0213599377, 0.0179442718, 0.0247108021};
+    static const double above[3] = {0.0158312973, 0.0271866549, 0.0193390875};
+    for (int i = 0; i < 3; i++) {
+        double w = hi[i] - lo[i];
+        lo[i] -= below[i] * w;
+        hi[i] += above[i] * w;
+    }
+}
+
 sc_estimate quad_combine(const quad_grid grids[3], int k)
 {
     sc_estimate e;

@@ -171,6 +171,22 @@ sc_status quad_integrate3(const double lo[3], const double hi[3], int nvalues,
                           void *const contexts[3], const sc_measure_options *options,
                           quad_grid grids[3], int *converged);
 
+/* Widens the box lo..hi in place by margins of 1.6 % to 2.7 % of its size
+ * on each side, a different fraction with all the bits of a double on
+ * each side of each axis, for an integral over two solids that must break
+ * ties alike. The lines of a grid on the box itself lie on the planes
+ * through its corners and its edges' halves, quarters, and so on: every
+ * face through opposite corners of the box holds lines of every level
+ * (a chamfer at 45 degrees, two wedges that meet on the diagonal). A line
+ * in a face is on the boundary of both solids, where each breaks the tie
+ * in its own way (an exact plane, a mesh's edge), so it counted a
+ * difference or an overlap where there is none. On the widened box the
+ * lines keep away from such planes: their positions are no small
+ * fractions of the box, and the axes' spacings have no small ratio. The
+ * margins hold no solid, and cost what a grid's empty cells cost; the
+ * measures keep the box itself, whose faces then fall between the lines. */
+void quad_widen_box(double lo[3], double hi[3]);
+
 /* Combines the three axes' estimates of value k (rule QUAD_EACH) into their
  * mean, with an error of the largest axis's own error estimate plus the
  * largest distance of an axis's estimate from the mean. */
