@@ -1109,6 +1109,27 @@ static sc_status read_svg(const eval *e, const model_node *n, twod_region *out)
     return st;
 }
 
+/* The outlines of a drawing that OpenSCAD's sanitize takes
+ * (twod_clipper_admit): from the first one with a point past Clipper's
+ * range on, none, with OpenSCAD's warning. */
+static sc_status admit_outlines(const eval *e, const model_node *n, twod_region *out)
+{
+    long refused = twod_clipper_admit(out);
+    if (refused < 0)
+        return err_nomem(e->c->error, &n->loc);
+    if (!refused)
+        return SC_OK;
+    if (e->c->strict)
+        return err_set(e->c->error, SC_ERR_LIMIT, &n->loc,
+                       "import: outline %ld has coordinates out of the clipper's range",
+                       refused);
+    return build_note_left_out(e->c, &n->loc,
+                               "Range check failed for polygon. skipping (outline %ld of "
+                               "the drawing and those after it, as OpenSCAD leaves them "
+                               "out; --strict makes it an error)",
+                               refused);
+}
+
 /* import of a DXF drawing (dxf.c), sanitized as OpenSCAD sanitizes a leaf's
  * polygons. */
 static sc_status read_import(const eval *e, const model_node *n, twod_region *out)
@@ -1158,6 +1179,8 @@ static sc_status read_import(const eval *e, const model_node *n, twod_region *ou
      * polygon" depends on how its DXF reader joined the outlines there) */
     if (st == SC_OK && d->far)
         twod_clear(out);
+    if (st == SC_OK && out->contour_count)
+        st = admit_outlines(e, n, out);
     if (st == SC_OK && out->contour_count)
         st = clip_status(e, n, twod_clip_sanitize(out));
     return st;

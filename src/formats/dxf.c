@@ -205,12 +205,25 @@ static uint32_t grid_cell(reader *r, int64_t x, int64_t y)
     return c;
 }
 
+/* OpenSCAD's grid index of v: round(v / GRID_COARSE) converted to a
+ * 64-bit integer as C++ converts on x86-64 (cvttsd2si: a value past the
+ * range, or not a number, gives INT64_MIN), for coordinates past 2^53. */
+static int64_t grid_index(double v)
+{
+    double d = round(v / DXF_GRID);
+    if (!(d >= -9223372036854775808.0 && d < 9223372036854775808.0))
+        return INT64_MIN;
+    return (int64_t)d;
+}
+
 /* OpenSCAD's Grid2d::align: snaps (*x, *y) and returns its cell. */
 static uint32_t grid_align(reader *r, double *x, double *y)
 {
-    int64_t ix = (int64_t)round(*x / DXF_GRID);
-    int64_t iy = (int64_t)round(*y / DXF_GRID);
-    if (grid_find(r, ix, iy) == UINT32_MAX) {
+    int64_t ix = grid_index(*x);
+    int64_t iy = grid_index(*y);
+    /* At INT64_MIN OpenSCAD's loops start at the index minus 1, which
+     * wraps round on x86-64 to past their end: they find nothing. */
+    if (ix != INT64_MIN && iy != INT64_MIN && grid_find(r, ix, iy) == UINT32_MAX) {
         /* OpenSCAD moves ix and iy inside its search loops, which changes
          * their bounds and later distances; this does the same. */
         int dist = 10;
@@ -277,12 +290,6 @@ static sc_status add_line(reader *r, double x1, double y1, double x2, double y2)
         return SC_OK;
     if (r->in_entities && !layer_ok(r))
         return SC_OK;
-    if (!(twod_in_range(x1) && twod_in_range(y1) && twod_in_range(x2) &&
-          twod_in_range(y2))) {
-        sc_location loc = {r->path, r->line, 1};
-        return err_set(r->error, SC_ERR_LIMIT, &loc,
-                       "DXF coordinates out of range (limit is %g)", TWOD_MAX_COORD);
-    }
     if (r->added >= DXF_MAX_SEGMENTS) {
         sc_location loc = {r->path, r->line, 1};
         return err_set(r->error, SC_ERR_LIMIT, &loc,

@@ -122,72 +122,8 @@ static int polygon_point(const parse_value *v, double xy[2], int *not_finite)
     return !*not_finite;
 }
 
-/* A coordinate as OpenSCAD 2021.01 hands it to Clipper: times 2^16
- * (CLIPPER_SCALE), converted to a 64-bit integer as C++ converts on
- * x86-64 (cvttsd2si: a value out of range gives INT64_MIN). */
-static int64_t clipper_coord(double v)
-{
-    double d = v * 65536.0;
-    if (!(d >= -9223372036854775808.0 && d < 9223372036854775808.0))
-        return INT64_MIN;
-    return (int64_t)d;
-}
-
-/* Clipper 6.4's RangeTest: past hiRange (2^62 - 1) in magnitude throws.
- * Its test of -X > hiRange is compiled as X < -hiRange, so INT64_MIN (any
- * coordinate past the conversion's range) throws too: OpenSCAD 2021.01
- * refuses 1e20 as it refuses 1e14. */
-static int clipper_out_of_range(int64_t c)
-{
-    const int64_t hi = INT64_C(0x3FFFFFFFFFFFFFFF);
-    return c > hi || c < -hi;
-}
-
-/* Whether Clipper refuses the outline of the n points xy[2 * index[i]]
- * (index NULL: the points in order) as OpenSCAD's ClipperUtils::sanitize
- * adds it (fromOutline2d, AddPath): the points converted (clipper_coord)
- * into pt, turned round when Clipper's Orientation (its Area in double)
- * finds them clockwise, repeats at the end dropped (those equal to the
- * first, then those equal to the one before), an outline of fewer than 3
- * points left untested, then each point's RangeTest. */
-static int clipper_refuses(const double *xy, const uint32_t *index, uint32_t n,
-                           int64_t *pt)
-{
-    for (uint32_t i = 0; i < n; i++) {
-        uint32_t k = index ? index[i] : i;
-        pt[2 * i] = clipper_coord(xy[2 * k]);
-        pt[2 * i + 1] = clipper_coord(xy[2 * k + 1]);
-    }
-    if (n >= 3) {
-        double a = 0;
-        for (uint32_t i = 0, j = n - 1; i < n; j = i++)
-            a += ((double)pt[2 * j] + (double)pt[2 * i]) *
-                 ((double)pt[2 * j + 1] - (double)pt[2 * i + 1]);
-        if (-a * 0.5 < 0) /* not Orientation: reversed */
-            for (uint32_t i = 0, j = n - 1; i < j; i++, j--)
-                for (int c = 0; c < 2; c++) {
-                    int64_t t = pt[2 * i + c];
-                    pt[2 * i + c] = pt[2 * j + c];
-                    pt[2 * j + c] = t;
-                }
-    }
-    long high = (long)n - 1;
-#define SAME(a, b) (pt[2 * (a)] == pt[2 * (b)] && pt[2 * (a) + 1] == pt[2 * (b) + 1])
-    while (high > 0 && SAME(high, 0))
-        high--;
-    while (high > 0 && SAME(high, high - 1))
-        high--;
-#undef SAME
-    if (high < 2)
-        return 0;
-    for (long i = 0; i <= high; i++)
-        if (clipper_out_of_range(pt[2 * i]) || clipper_out_of_range(pt[2 * i + 1]))
-            return 1;
-    return 0;
-}
-
 /* p->range_bad: the first outline, in OpenSCAD's order, that Clipper
- * refuses (clipper_refuses), which ends its AddPaths: that outline and
+ * refuses (twod_clipper_outline), which ends its AddPaths: that outline and
  * those after it are left out. OpenSCAD's outlines: one per path, or,
  * without paths or with an empty vector of them, one of all the points. */
 static sc_status polygon_range(model_lowerer *l, model_polygon *p)
@@ -212,7 +148,7 @@ static sc_status polygon_range(model_lowerer *l, model_polygon *p)
     for (uint32_t k = 0; k < count && !p->range_bad; k++) {
         const uint32_t *index = paths ? &p->index[p->path_start[k]] : NULL;
         uint32_t n = paths ? p->path_start[k + 1] - p->path_start[k] : p->point_count;
-        if (clipper_refuses(p->xy, index, n, pt))
+        if (twod_clipper_outline(p->xy, index, n, pt) == TWOD_OUTLINE_REFUSED)
             p->range_bad = k + 1;
     }
     free(pt);

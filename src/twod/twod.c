@@ -1,6 +1,7 @@
 /* Regions of the 2D engine (twod.h): growable arrays of contours, their
- * signed areas (the shoelace formula, positive counter-clockwise), and the
- * convex hull of a point set.
+ * signed areas (the shoelace formula, positive counter-clockwise), the
+ * convex hull of a point set, and which outlines OpenSCAD's clipper takes
+ * when some lie past its range.
  *
  * The hull is Andrew's monotone chain: the points sorted by x then y, a
  * lower and an upper chain built by dropping every point that does not
@@ -9,11 +10,111 @@
  * 2D hull (CGAL's convex_hull_2 on double points) makes it; where the
  * contour starts does not change the region.
  */
+#include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "base/grow.h"
 #include "twod/twod.h"
+
+/* A coordinate as OpenSCAD 2021.01 hands it to Clipper: times 2^16
+ * (CLIPPER_SCALE), converted to a 64-bit integer as C++ converts on
+ * x86-64 (cvttsd2si: a value out of range gives INT64_MIN). */
+static int64_t clipper_coord(double v)
+{
+    double d = v * TWOD_CLIPPER_SCALE;
+    if (!(d >= -9223372036854775808.0 && d < 9223372036854775808.0))
+        return INT64_MIN;
+    return (int64_t)d;
+}
+
+/* Clipper 6.4's RangeTest: past hiRange (2^62 - 1) in magnitude throws.
+ * Its test of -X > hiRange is compiled as X < -hiRange, so INT64_MIN (any
+ * coordinate past the conversion's range) throws too: OpenSCAD 2021.01
+ * refuses 1e20 as it refuses 1e14. */
+static int clipper_out_of_range(int64_t c)
+{
+    const int64_t hi = INT64_C(0x3FFFFFFFFFFFFFFF);
+    return c > hi || c < -hi;
+}
+
+/* The points converted (clipper_coord) into pt, turned round when
+ * Clipper's Orientation (its Area in double) finds them clockwise, repeats
+ * at the end dropped (those equal to the first, then those equal to the
+ * one before), an outline of fewer than 3 points left untested, then each
+ * point's RangeTest. */
+int twod_clipper_outline(const double *xy, const uint32_t *index, uint32_t n, int64_t *pt)
+{
+    for (uint32_t i = 0; i < n; i++) {
+        uint32_t k = index ? index[i] : i;
+        pt[2 * i] = clipper_coord(xy[2 * k]);
+        pt[2 * i + 1] = clipper_coord(xy[2 * k + 1]);
+    }
+    if (n >= 3) {
+        double a = 0;
+        for (uint32_t i = 0, j = n - 1; i < n; j = i++)
+            a += ((double)pt[2 * j] + (double)pt[2 * i]) *
+                 ((double)pt[2 * j + 1] - (double)pt[2 * i + 1]);
+        if (-a * 0.5 < 0) /* not Orientation: reversed */
+            for (uint32_t i = 0, j = n - 1; i < j; i++, j--)
+                for (int c = 0; c < 2; c++) {
+                    int64_t t = pt[2 * i + c];
+                    pt[2 * i + c] = pt[2 * j + c];
+                    pt[2 * j + c] = t;
+                }
+    }
+    long high = (long)n - 1;
+#define SAME(a, b) (pt[2 * (a)] == pt[2 * (b)] && pt[2 * (a) + 1] == pt[2 * (b) + 1])
+    while (high > 0 && SAME(high, 0))
+        high--;
+    while (high > 0 && SAME(high, high - 1))
+        high--;
+#undef SAME
+    if (high < 2)
+        return TWOD_OUTLINE_SKIPPED;
+    for (long i = 0; i <= high; i++)
+        if (clipper_out_of_range(pt[2 * i]) || clipper_out_of_range(pt[2 * i + 1]))
+            return TWOD_OUTLINE_REFUSED;
+    return TWOD_OUTLINE_TAKEN;
+}
+
+long twod_clipper_admit(twod_region *r)
+{
+    int large = 0;
+    for (size_t i = 0; i < 2 * (size_t)r->point_count && !large; i++)
+        large = !twod_in_range(r->xy[i]);
+    if (!large)
+        return 0;
+    uint32_t longest = 1;
+    for (uint32_t k = 0; k < r->contour_count; k++)
+        if (r->start[k + 1] - r->start[k] > longest)
+            longest = r->start[k + 1] - r->start[k];
+    int64_t *pt = malloc(2 * (size_t)longest * sizeof *pt);
+    if (!pt)
+        return -1;
+    long refused = 0;
+    uint32_t kept = 0, at = 0;
+    for (uint32_t k = 0; k < r->contour_count && !refused; k++) {
+        uint32_t first = r->start[k], n = r->start[k + 1] - first;
+        int how = twod_clipper_outline(r->xy + 2 * (size_t)first, NULL, n, pt);
+        int drop = how == TWOD_OUTLINE_REFUSED;
+        for (uint32_t i = 0; i < 2 * n && how == TWOD_OUTLINE_SKIPPED && !drop; i++)
+            drop = !twod_in_range(r->xy[2 * (size_t)first + i]);
+        if (how == TWOD_OUTLINE_REFUSED)
+            refused = (long)k + 1;
+        if (drop)
+            continue;
+        memmove(r->xy + 2 * (size_t)at, r->xy + 2 * (size_t)first,
+                2 * (size_t)n * sizeof *r->xy);
+        r->start[kept++] = at;
+        at += n;
+    }
+    free(pt);
+    r->start[kept] = at;
+    r->contour_count = kept;
+    r->point_count = at;
+    return refused;
+}
 
 void twod_init(twod_region *r)
 {
