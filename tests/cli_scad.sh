@@ -68,7 +68,7 @@ printf 'solid o\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nver
 fails_with open.scad "open.scad: error: imported mesh is not closed (edge (0, 0, 0)-(1, 0, 0) is used by 1 face) (line 1 of OpenSCAD's export)" --strict
 [ -e open.csg ] && fail "open.scad: a .csg was left beside the source"
 printf '\nresize([5, 5]) union() { square(1); square(1e14); }\n' >proj.scad
-want="proj.scad: error: square: coordinates out of range (limit is 7.03687e+13) (line 4 of OpenSCAD's export)"
+want="proj.scad: error: union: coordinates out of range (limit is 7.03687e+13) (line 2 of OpenSCAD's export)"
 fails_with proj.scad "$want"
 for cmd in info measure; do
     "$bin" $cmd proj.scad -q >/dev/null 2>err.txt
@@ -176,7 +176,7 @@ fails_with badlang.csg "badlang.csg: note: uses OpenSCAD's language beyond its C
 badlang.csg:2:1: error: Parser error: syntax error"
 printf 'd = 1e14;\nresize([5, 5]) union() { square(1); square(d); }\n' >projlang.csg
 fails_with projlang.csg "projlang.csg: note: uses OpenSCAD's language beyond its CSG export (line 1); converting it with openscad
-projlang.csg: error: square: coordinates out of range (limit is 7.03687e+13) (line 4 of OpenSCAD's export)"
+projlang.csg: error: union: coordinates out of range (limit is 7.03687e+13) (line 2 of OpenSCAD's export)"
 [ -z "$(ls -A "$work/tmp")" ] || fail "temporary files left: $(ls -A "$work/tmp")"
 
 # -D NAME=VALUE passes through to OpenSCAD, as OpenSCAD's -D: in order (the

@@ -49,6 +49,33 @@ static sc_status region_of(const char *text, twod_region *r, char *error, size_t
     return st;
 }
 
+/* region_of with the builder's warnings into *notes (free notes->items)
+ * and strict as --strict. */
+static sc_status region_noted(const char *text, int strict, twod_region *r,
+                              build_notes *notes, char *error, size_t size)
+{
+    parse_tree *tree = NULL;
+    sc_error e;
+    assert_int_equal(parse_text("m.csg", text, strlen(text), &tree, &e), SC_OK);
+    memset(notes, 0, sizeof *notes);
+    build_ctx c = {.file = "m.csg",
+                   .csg = NULL,
+                   .error = &e,
+                   .faithful = 1,
+                   .strict = strict,
+                   .note = NULL,
+                   .notes = notes};
+    twod_init(r);
+    model *lowered = NULL;
+    assert_int_equal(model_lower_twod("m.csg", tree->first, &lowered, &e), SC_OK);
+    sc_status st = build_twod_children(&c, lowered->first, r);
+    if (st != SC_OK)
+        sc_error_format(&e, error, size);
+    model_free(lowered);
+    parse_tree_free(tree);
+    return st;
+}
+
 static void region(const char *text, twod_region *r)
 {
     char message[1024];
@@ -435,10 +462,11 @@ static void test_errors(void **state)
     check_error("group() { roof() { square(1); } }", SC_ERR_UNSUPPORTED,
                 "m.csg:1:11: error: 'roof' inside group is not supported yet");
     /* past the clipper's range (2^46 at its scale), where OpenSCAD's union
-     * stops on Clipper's exception */
+     * stops on Clipper's exception: the union's error (the square alone is
+     * drawn, test_range) */
     check_error(
         "group() { square(1); square(70368744177664); }", SC_ERR_LIMIT,
-        "m.csg:1:22: error: square: coordinates out of range (limit is 7.03687e+13)");
+        "m.csg:1:1: error: group: coordinates out of range (limit is 7.03687e+13)");
     /* the depth guard: 1001 nested groups under the outer one */
     size_t depth = 1001, len = 0;
     char *text = malloc(depth * 12 + 64);
@@ -641,6 +669,84 @@ static void test_extrude_errors(void **state)
     }
 }
 
+/* Past the clipper's range (2^46 at its scale), as OpenSCAD 2021.01 draws
+ * it, each case checked against its STL or DXF export: a square or circle
+ * is born sanitized and is moved as it is, so it is drawn while no clipper
+ * takes it; a sanitized region turned over is sanitized again, where the
+ * clipper refuses it with its warning; a union of two stops on Clipper's
+ * exception in OpenSCAD, and is an error here (test_errors). */
+static void test_range(void **state)
+{
+    (void)state;
+    twod_region r;
+    build_notes notes;
+    char message[1024];
+    region("group() { square(size = [1e14, 1e14]); }", &r);
+    assert_true(twod_area(&r) == 1e28);
+    twod_free(&r);
+    region("group() { circle(r = 1e14, $fn = 12); }", &r);
+    assert_true(fabs(twod_area(&r) - 3e28) < 1e16);
+    twod_free(&r);
+    /* out of the range and back: a square of side 1 at (10000, 0) */
+    region("group() { multmatrix([[1e-10, 0, 0, 0], [0, 1e-10, 0, 0], [0, 0, 1, 0], "
+           "[0, 0, 0, 1]]) { multmatrix([[1, 0, 0, 1e14], [0, 1, 0, 0], [0, 0, 1, 0], "
+           "[0, 0, 0, 1]]) { square(size = [1e10, 1e10]); } } }",
+           &r);
+    assert_int_equal(r.contour_count, 1);
+    assert_true(fabs(twod_area(&r) - 1) < 1e-12);
+    for (uint32_t i = 0; i < r.point_count; i++)
+        assert_true(fabs(r.xy[2 * i] - 10000.5) <= 0.5 + 1e-12);
+    twod_free(&r);
+    /* turned over: sanitized again, refused */
+    static const char mirrored[] =
+        "group() { multmatrix([[-1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]) "
+        "{ square(size = [1e14, 1e14]); } }";
+    assert_int_equal(region_noted(mirrored, 0, &r, &notes, message, sizeof message),
+                     SC_OK);
+    assert_int_equal(r.contour_count, 0);
+    assert_int_equal(notes.count, 1);
+    assert_string_equal(
+        notes.items[0].message,
+        "Range check failed for polygon. skipping (outline 1 of the shape "
+        "and those after it, as OpenSCAD leaves them out; --strict makes "
+        "it an error)");
+    assert_int_equal(notes.items[0].column, 11);
+    free(notes.items);
+    twod_free(&r);
+    assert_int_equal(region_noted(mirrored, 1, &r, &notes, message, sizeof message),
+                     SC_ERR_LIMIT);
+    assert_string_equal(message, "m.csg:1:11: error: multmatrix: outline 1 has "
+                                 "coordinates out of the clipper's range");
+    free(notes.items);
+    twod_free(&r);
+    /* a polygon's outline past the range that the clipper skips untested
+     * (two points): nothing, with no warning, and the rest drawn */
+    assert_int_equal(
+        region_noted("group() { polygon(points = [[0, 0], [10, 0], [0, 10], "
+                     "[1e14, 0], [1e14, 5]], paths = [[3, 4], [0, 1, 2]]); }",
+                     0, &r, &notes, message, sizeof message),
+        SC_OK);
+    assert_true(twod_area(&r) == 50);
+    assert_int_equal(notes.count, 0);
+    free(notes.items);
+    twod_free(&r);
+    /* extruded (faithful) and twisted: the unit model scaled by 1e14 */
+    uint32_t tris, unit_tris;
+    double v = extrude_volume("linear_extrude(height = 1e14, twist = 30, slices = 2) { "
+                              "square(size = [1e14, 1e14], center = true); }",
+                              1, &tris);
+    double unit = extrude_volume("linear_extrude(height = 1, twist = 30, slices = 2) { "
+                                 "square(size = [1, 1], center = true); }",
+                                 1, &unit_tris);
+    assert_int_equal(tris, unit_tris);
+    assert_true(unit > 1 && fabs(v / 1e42 - unit) < 1e-12);
+    /* a coordinate past any number */
+    check_error("group() { multmatrix([[1e300, 0, 0, 0], [0, 1e300, 0, 0], [0, 0, 1, 0], "
+                "[0, 0, 0, 1]]) { square(size = [1e10, 1e10]); } }",
+                SC_ERR_LIMIT,
+                "m.csg:1:11: error: multmatrix: coordinates are not finite");
+}
+
 /* 2D objects among 3D objects: OpenSCAD's warnings, the empty solid; a
  * model whose first object is 2D is a 2D model, drawn as a slab. */
 static void test_2d_in_3d(void **state)
@@ -683,6 +789,7 @@ int main(void)
         cmocka_unit_test(test_offset_hull_minkowski),
         cmocka_unit_test(test_minkowski_convex),
         cmocka_unit_test(test_errors),
+        cmocka_unit_test(test_range),
         cmocka_unit_test(test_extrude_volumes),
         cmocka_unit_test(test_extrude_slices),
         cmocka_unit_test(test_extrude_errors),

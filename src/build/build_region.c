@@ -145,7 +145,7 @@ static sc_status read_polygon(walker *w, const model_node *n, const affine2 *m,
     sc_status st = build_bad_indices(c, n);
     if (st != SC_OK || !n->u.polygon->has_points)
         return st;
-    st = build_twod_polygon(c, n, m, 1, 0, poly);
+    st = build_twod_polygon(c, n, m, 1, poly);
     if (st != SC_OK)
         return st;
     st = add_poly(w, n, pushed);

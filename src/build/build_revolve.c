@@ -243,7 +243,7 @@ static sc_status read_polygon(const build_ctx *c, const model_node *n, const aff
     begin_region(p);
     uint32_t first = p->pts.contour_count;
     /* an empty vector of paths is no path here */
-    st = build_twod_polygon(c, n, m, 0, 0, &p->pts);
+    st = build_twod_polygon(c, n, m, 0, &p->pts);
     if (st != SC_OK)
         return st;
     if (!note_paths(p))

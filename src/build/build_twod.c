@@ -397,6 +397,28 @@ static sc_status clip_status(const eval *e, const model_node *n, int code)
                    "%s: coordinates out of range (limit is %g)", n->name, TWOD_MAX_COORD);
 }
 
+/* The outlines of a region that OpenSCAD's sanitize takes
+ * (twod_clipper_admit): from the first one with a point past Clipper's
+ * range on, none, with OpenSCAD's warning. */
+static sc_status admit_outlines(const eval *e, const model_node *n, twod_region *out)
+{
+    long refused = twod_clipper_admit(out);
+    if (refused < 0)
+        return err_nomem(e->c->error, &n->loc);
+    if (!refused)
+        return SC_OK;
+    if (e->c->strict)
+        return err_set(e->c->error, SC_ERR_LIMIT, &n->loc,
+                       "%s: outline %ld has coordinates out of the clipper's range",
+                       n->name, refused);
+    return build_note_left_out(e->c, &n->loc,
+                               "Range check failed for polygon. skipping (outline %ld of "
+                               "%s and those after it, as OpenSCAD leaves them out; "
+                               "--strict makes it an error)",
+                               refused,
+                               n->kind == MODEL_IMPORT ? "the drawing" : "the shape");
+}
+
 /* The node's argument error, kept by the lowering (model.h). */
 static sc_status pending(const eval *e, const model_node *n)
 {
@@ -409,10 +431,10 @@ static sc_status read_square(const eval *e, const model_node *n, twod_region *ou
         return pending(e, n);
     double sx = n->u.square->sx, sy = n->u.square->sy;
     int center = n->u.square->center;
+    /* past the clipper's range it is drawn while no clipper takes it, as
+     * OpenSCAD's square is born sanitized (transform, below) */
     if (!(sx > 0 && sy > 0 && isfinite(sx) && isfinite(sy)))
         return SC_OK;
-    if (!twod_in_range(sx) || !twod_in_range(sy))
-        return clip_status(e, n, TWOD_CLIP_RANGE);
     double x0 = 0, y0 = 0, x1 = sx, y1 = sy;
     if (center) {
         x0 -= sx / 2;
@@ -437,10 +459,8 @@ static sc_status read_circle(const eval *e, const model_node *n, twod_region *ou
     double r = args->has_d ? args->d / 2 : args->r, fn = args->res.fn, fa = args->res.fa,
            fs = args->res.fs;
     out->sanitized = 1;
-    if (!(r > 0 && isfinite(r)))
+    if (!(r > 0 && isfinite(r))) /* past the range, as a square */
         return SC_OK;
-    if (!twod_in_range(r))
-        return clip_status(e, n, TWOD_CLIP_RANGE);
     long f = faithful_fragments(r, fn, fs, fa);
     if (f < 0)
         return err_set(e->c->error, SC_ERR_LIMIT, &n->loc,
@@ -474,7 +494,7 @@ static sc_status read_text(const eval *e, const model_node *n, twod_region *out)
 }
 
 sc_status build_twod_polygon(const build_ctx *c, const model_node *n, const affine2 *m,
-                             int empty_is_all, int check_range, twod_region *out)
+                             int empty_is_all, twod_region *out)
 {
     if (n->pending)
         return build_pending(c, n);
@@ -493,10 +513,6 @@ sc_status build_twod_polygon(const build_ctx *c, const model_node *n, const affi
         for (uint32_t i = 0; i < len; i++) {
             uint32_t index = paths ? p->index[first + i] : i;
             double x = p->xy[2 * index], y = p->xy[2 * index + 1];
-            if (check_range && !(twod_in_range(x) && twod_in_range(y))) {
-                eval e = evaluator(c, n->name);
-                return clip_status(&e, n, TWOD_CLIP_RANGE);
-            }
             if (!twod_add_moved(out, m, x, y))
                 return build_twod_add_error(c, n, out);
         }
@@ -515,11 +531,16 @@ static sc_status read_polygon(const eval *e, const model_node *n, twod_region *o
     if (st != SC_OK || !p->has_points ||
         (!(p->has_paths && p->path_count > 0) && p->point_count < 3))
         return st;
-    st = build_twod_polygon(e->c, n, &unmoved, 1, 1, out);
+    st = build_twod_polygon(e->c, n, &unmoved, 1, out);
     if (st != SC_OK)
         return st;
     out->sanitized = 0;
-    return clip_status(e, n, twod_clip_sanitize(out));
+    /* the outline the clipper refuses is left out already (range_bad, with
+     * its warning); before it, those it skips (fewer than 3 points) that
+     * reach past its range add nothing, and it could not take them */
+    if (twod_clipper_admit(out) < 0)
+        return err_nomem(e->c->error, &n->loc);
+    return out->contour_count ? clip_status(e, n, twod_clip_sanitize(out)) : SC_OK;
 }
 
 /* A 3D child k of a 2D operation: nothing, with OpenSCAD 2021.01's
@@ -934,12 +955,18 @@ static sc_status transform(const eval *e, const model_node *n, double m[2][3],
         double x = r->xy[2 * i], y = r->xy[2 * i + 1];
         r->xy[2 * i] = m[0][0] * x + m[0][1] * y + m[0][2];
         r->xy[2 * i + 1] = m[1][0] * x + m[1][1] * y + m[1][2];
-        if (!(twod_in_range(r->xy[2 * i]) && twod_in_range(r->xy[2 * i + 1])))
-            return clip_status(e, n, TWOD_CLIP_RANGE);
+        if (!(isfinite(r->xy[2 * i]) && isfinite(r->xy[2 * i + 1])))
+            return err_set(e->c->error, SC_ERR_LIMIT, &n->loc,
+                           "%s: coordinates are not finite", n->name);
     }
-    if (r->sanitized && det <= 0 && r->contour_count)
-        return clip_status(e, n, twod_clip_sanitize(r));
-    return SC_OK;
+    /* OpenSCAD sanitizes a sanitized region turned over; outside the
+     * clipper's range it moves it as it is, and so does the next node
+     * unless that is a clipper's (which refuses it: range_error) */
+    if (!(r->sanitized && det <= 0 && r->contour_count))
+        return SC_OK;
+    sc_status st = admit_outlines(e, n, r);
+    return st != SC_OK || !r->contour_count ? st
+                                            : clip_status(e, n, twod_clip_sanitize(r));
 }
 
 static sc_status offset(const eval *e, const model_node *n, twod_region *r)
@@ -1107,27 +1134,6 @@ static sc_status read_svg(const eval *e, const model_node *n, twod_region *out)
     }
     free(path);
     return st;
-}
-
-/* The outlines of a drawing that OpenSCAD's sanitize takes
- * (twod_clipper_admit): from the first one with a point past Clipper's
- * range on, none, with OpenSCAD's warning. */
-static sc_status admit_outlines(const eval *e, const model_node *n, twod_region *out)
-{
-    long refused = twod_clipper_admit(out);
-    if (refused < 0)
-        return err_nomem(e->c->error, &n->loc);
-    if (!refused)
-        return SC_OK;
-    if (e->c->strict)
-        return err_set(e->c->error, SC_ERR_LIMIT, &n->loc,
-                       "import: outline %ld has coordinates out of the clipper's range",
-                       refused);
-    return build_note_left_out(e->c, &n->loc,
-                               "Range check failed for polygon. skipping (outline %ld of "
-                               "the drawing and those after it, as OpenSCAD leaves them "
-                               "out; --strict makes it an error)",
-                               refused);
 }
 
 /* import of a DXF drawing (dxf.c), sanitized as OpenSCAD sanitizes a leaf's

@@ -99,11 +99,12 @@ sc_status twod_walk_fold(const twod_walker *w, const model_node *n, const affine
 /* The one reader of polygon(points, paths) n: its contours moved by m,
  * added to out (the caller's contours kept): one per path, or one through
  * all the points without paths, and, with empty_is_all (OpenSCAD's rule),
- * with an empty vector of them. With check_range a point past
- * TWOD_MAX_COORD is an error. The caller gives the polygon's warnings
- * first (build_bad_indices), also for one without points. */
+ * with an empty vector of them; from the outline OpenSCAD's clipper
+ * refuses on (model_polygon.range_bad), none. The caller gives the
+ * polygon's warnings first (build_bad_indices), also for one without
+ * points. */
 sc_status build_twod_polygon(const build_ctx *c, const model_node *n, const affine2 *m,
-                             int empty_is_all, int check_range, twod_region *out);
+                             int empty_is_all, twod_region *out);
 
 /* The error of a failed twod_add_point into r for node n: the limit of
  * TWOD_MAX_POINTS points of every 2D shape when r is full, else memory. */

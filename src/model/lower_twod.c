@@ -148,7 +148,7 @@ static sc_status polygon_range(model_lowerer *l, model_polygon *p)
     for (uint32_t k = 0; k < count && !p->range_bad; k++) {
         const uint32_t *index = paths ? &p->index[p->path_start[k]] : NULL;
         uint32_t n = paths ? p->path_start[k + 1] - p->path_start[k] : p->point_count;
-        if (twod_clipper_outline(p->xy, index, n, pt) == TWOD_OUTLINE_REFUSED)
+        if (twod_clipper_outline(p->xy, index, n, 0, pt) == TWOD_OUTLINE_REFUSED)
             p->range_bad = k + 1;
     }
     free(pt);

@@ -38,19 +38,21 @@ static int clipper_out_of_range(int64_t c)
     return c > hi || c < -hi;
 }
 
-/* The points converted (clipper_coord) into pt, turned round when
- * Clipper's Orientation (its Area in double) finds them clockwise, repeats
+/* The points converted (clipper_coord) into pt, turned round when the
+ * polygon is not sanitized and Clipper's Orientation (its Area in double)
+ * finds them clockwise, repeats
  * at the end dropped (those equal to the first, then those equal to the
  * one before), an outline of fewer than 3 points left untested, then each
  * point's RangeTest. */
-int twod_clipper_outline(const double *xy, const uint32_t *index, uint32_t n, int64_t *pt)
+int twod_clipper_outline(const double *xy, const uint32_t *index, uint32_t n,
+                         int sanitized, int64_t *pt)
 {
     for (uint32_t i = 0; i < n; i++) {
         uint32_t k = index ? index[i] : i;
         pt[2 * i] = clipper_coord(xy[2 * k]);
         pt[2 * i + 1] = clipper_coord(xy[2 * k + 1]);
     }
-    if (n >= 3) {
+    if (n >= 3 && !sanitized) {
         double a = 0;
         for (uint32_t i = 0, j = n - 1; i < n; j = i++)
             a += ((double)pt[2 * j] + (double)pt[2 * i]) *
@@ -96,7 +98,8 @@ long twod_clipper_admit(twod_region *r)
     uint32_t kept = 0, at = 0;
     for (uint32_t k = 0; k < r->contour_count && !refused; k++) {
         uint32_t first = r->start[k], n = r->start[k + 1] - first;
-        int how = twod_clipper_outline(r->xy + 2 * (size_t)first, NULL, n, pt);
+        int how =
+            twod_clipper_outline(r->xy + 2 * (size_t)first, NULL, n, r->sanitized, pt);
         int drop = how == TWOD_OUTLINE_REFUSED;
         for (uint32_t i = 0; i < 2 * n && how == TWOD_OUTLINE_SKIPPED && !drop; i++)
             drop = !twod_in_range(r->xy[2 * (size_t)first + i]);

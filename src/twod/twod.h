@@ -67,20 +67,21 @@ double twod_ring_area(const double *xy, uint32_t first, uint32_t end);
 double twod_contour_area(const twod_region *r, uint32_t k);
 double twod_area(const twod_region *r);
 /* How OpenSCAD 2021.01's clipper takes the outline of the n points
- * xy[2 * index[i]] (index NULL: the points in order) of a polygon it has
- * not sanitized, as ClipperUtils::sanitize adds it (fromOutline2d, then
- * Clipper 6.4's AddPath): taken; skipped untested, as fewer than 3
+ * xy[2 * index[i]] (index NULL: the points in order) of a polygon, as
+ * ClipperUtils::sanitize adds it (fromOutline2d, which turns the outline
+ * of a polygon not yet sanitized round when it is clockwise, then Clipper
+ * 6.4's AddPath): taken; skipped untested, as fewer than 3
  * points once the repeats at its end are dropped; or refused, a point
  * past Clipper's range (RangeTest throws, which ends AddPaths: OpenSCAD's
  * "Range check failed for polygon. skipping", and the outline and those
  * after it are left out). pt: room for 2 n integers. */
 enum { TWOD_OUTLINE_TAKEN, TWOD_OUTLINE_SKIPPED, TWOD_OUTLINE_REFUSED };
 int twod_clipper_outline(const double *xy, const uint32_t *index, uint32_t n,
-                         int64_t *pt);
-/* Leaves out of r, a region not yet sanitized, what OpenSCAD's sanitize
- * leaves out of the same outlines: the first one the clipper refuses and
- * those after it, and those it skips that have a point past the range
- * (they add nothing, and past the range the clipper cannot take them).
+                         int sanitized, int64_t *pt);
+/* Leaves out of r what OpenSCAD's sanitize leaves out of the same
+ * outlines (r->sanitized is OpenSCAD's flag): the first one the clipper
+ * refuses and those after it, and those it skips that have a point past
+ * the range (they add nothing, and the clipper cannot take them).
  * Returns the refused outline's number + 1, 0 when none, -1 when memory
  * runs out (r unchanged). */
 long twod_clipper_admit(twod_region *r);
