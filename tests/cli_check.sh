@@ -175,6 +175,23 @@ check
 [ "$(cat wedges.txt)" = "$(printf '4 top-level objects\nno overlaps')" ] ||
     fail "wedges that meet on a diagonal: $(cat wedges.txt)"
 
+# A thin overlap on the face of a thin plate: 0.01 x 100 x 1. The grid's
+# box is widened beyond the plates' shared box, and its cells there must
+# count only their part within: the lines of a cell in the margin all lie
+# inside the plates, and counted the margin as overlap (1.039 +- 0.0053).
+cat >thin.csg <<'CSG'
+cube(size = [100, 100, 1]);
+multmatrix([[1, 0, 0, 99.99], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]) {
+  cube(size = [100, 100, 1]);
+}
+CSG
+run 1 thin.json overlaps thin.csg --json -q
+pycheck '
+o = j["overlaps"]
+assert len(o) == 1, o
+holds(o[0]["volume"], 0.01 * 100 * 1)' thin.json
+run 0 thin-min.txt overlaps thin.csg -q --min-volume=1.01
+
 # A '!' in each of two objects: each object is built with the other
 # disabled, so each is its own root (the first '!' outside the disabled
 # parts, as with '*'). A root drops the transforms above it, so both are

@@ -177,7 +177,6 @@ static sc_status compare_scenes(const sc_scene *a, const sc_scene *b,
         if (!(hi[i] > lo[i]))
             return SC_OK;
     }
-    quad_widen_box(lo, hi); /* no line in a face the two may share */
     int threads = options_thread_count(options->threads);
     compare_shared shared = {ta, tb, {0}};
     if (!lines_scratch_init(&shared.work, threads, 0))
@@ -195,7 +194,7 @@ static sc_status compare_scenes(const sc_scene *a, const sc_scene *b,
     int converged = 0;
     sc_measure_options o = *options;
     o.threads = threads;
-    sc_status st = quad_integrate3(lo, hi, C_VALUES, rule, floor, sample_compare,
+    sc_status st = quad_integrate3(lo, hi, 1, C_VALUES, rule, floor, sample_compare,
                                    contexts, &o, grids, &converged);
     if (st == SC_OK) {
         out->volume_a = quad_combine(grids, C_A);

@@ -345,7 +345,7 @@ static sc_status measure_scene(const sc_scene *scene, const sc_measure_options *
     floor[V_AREA] = floor[V_AREA2] = 1e-6 * extent * extent;
     quad_grid grids[3];
     int converged = 0;
-    sc_status st = quad_integrate3(lo, hi, VALUE_COUNT, rule, floor, sample_line,
+    sc_status st = quad_integrate3(lo, hi, 0, VALUE_COUNT, rule, floor, sample_line,
                                    contexts, options, grids, &converged);
     if (st == SC_OK) {
         derive(grids, &shared, options->density, out);

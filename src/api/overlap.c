@@ -348,14 +348,12 @@ static sc_status overlap_pair(const csg_tree *ta, const csg_tree *tb, const doub
     lines_axes(axes, &shared, contexts);
     int rule[1] = {QUAD_EACH};
     double floor[1] = {1e-6 * (hi[0] - lo[0]) * (hi[1] - lo[1]) * (hi[2] - lo[2])};
-    double wlo[3] = {lo[0], lo[1], lo[2]}, whi[3] = {hi[0], hi[1], hi[2]};
-    quad_widen_box(wlo, whi); /* no line in a face where the two meet */
     quad_grid grids[3];
     int converged;
     sc_measure_options o = *options;
     o.threads = threads;
     o.progress = NULL;
-    sc_status st = quad_integrate3(wlo, whi, 1, rule, floor, sample_pair, contexts, &o,
+    sc_status st = quad_integrate3(lo, hi, 1, 1, rule, floor, sample_pair, contexts, &o,
                                    grids, &converged);
     *found = 0;
     if (st == SC_OK) {

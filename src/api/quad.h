@@ -98,6 +98,8 @@ typedef struct quad_grid {
     double *error;       /* nvalues per cell: its error estimate (>= 0) */
     double *jump;        /* nvalues per cell: the bound from neighbours that
                             cross other surfaces (see above) */
+    double support[4];   /* lo0, lo1, hi0, hi1: the integrand is 0 outside
+                            (infinite: no bound); see quad_integrate3 */
     uint64_t *signature; /* per cell: its five lines' signature when they
                             agree, 0 when they do not */
     size_t count, cap;   /* cells */
@@ -124,13 +126,17 @@ int quad_limit_error(const quad_grid grids[3], const csg_tree *ta, const csg_tre
                      sc_error *error);
 
 /* Starts the integration over [lo0, hi0] x [lo1, hi1] with about base
- * cells of nearly square shape (at least 4 a side) and samples them; share
+ * cells of nearly square shape (at least 4 a side) and samples them;
+ * support (lo0, lo1, hi0, hi1; NULL: none) bounds where the integrand may
+ * be other than 0, and a cell reaching past it counts only its part
+ * within; share
  * (may be NULL) says which processes share the lines, and must outlive g.
  * Returns SC_OK, SC_ERR_NOMEM, SC_ERR_CANCELLED (cancel set) or
  * SC_ERR_ARGUMENT when the sampler failed; free with quad_free in every
  * case. */
-sc_status quad_init(quad_grid *g, const double lo[2], const double hi[2], int nvalues,
-                    size_t base, quad_sample_fn sample, void *context, int threads,
+sc_status quad_init(quad_grid *g, const double lo[2], const double hi[2],
+                    const double *support, int nvalues, size_t base,
+                    quad_sample_fn sample, void *context, int threads,
                     const sc_measure_options *share, const volatile sig_atomic_t *cancel);
 
 /* One round of refinement towards target[k] (the allowed total error of
@@ -162,30 +168,32 @@ enum { QUAD_FREE, QUAD_EACH, QUAD_SUM };
 /* Integrates along lines parallel to each axis a over the box's cross
  * section, coordinates (u, v) = (x[(a+1)%3], x[(a+2)%3]) as absolute
  * positions, with sample getting contexts[a]; rule[k] and floor[k] (the
- * smallest magnitude a target is made from) set the targets. Refines the
+ * smallest magnitude a target is made from) set the targets.
+ *
+ * widen, for an integral over two solids that must break ties alike (a
+ * difference, an overlap), lays the grids on the box widened by margins
+ * of 1.6 % to 2.7 % of its size on each side, a different fraction with
+ * all the bits of a double on each side of each axis, with the box itself
+ * as the support (quad_init). The lines of a grid on the box itself lie
+ * on the planes through its corners and its edges' halves, quarters, and
+ * so on: every face through opposite corners of the box holds lines of
+ * every level (a chamfer at 45 degrees, two wedges that meet on the
+ * diagonal). A line in a face is on the boundary of both solids, where
+ * each breaks the tie its own way (an exact plane, a mesh's edge), so it
+ * counted a difference or an overlap where there is none. On the widened
+ * box the lines keep away from such planes: their positions are no small
+ * fractions of the box, and the axes' spacings have no small ratio. The
+ * cells that reach into the margins count only their part within the box,
+ * where the solids are, so a face on the box costs no refinement. A
+ * measure of one solid has no second way to break a tie and keeps the
+ * box. Refines the
  * three grids in turn until their targets are met or options->max_lines is
  * spent, and reports progress. The grids belong to the caller (quad_free
  * each, also on failure). *converged says whether every target was met. */
-sc_status quad_integrate3(const double lo[3], const double hi[3], int nvalues,
+sc_status quad_integrate3(const double lo[3], const double hi[3], int widen, int nvalues,
                           const int *rule, const double *floor, quad_sample_fn sample,
                           void *const contexts[3], const sc_measure_options *options,
                           quad_grid grids[3], int *converged);
-
-/* Widens the box lo..hi in place by margins of 1.6 % to 2.7 % of its size
- * on each side, a different fraction with all the bits of a double on
- * each side of each axis, for an integral over two solids that must break
- * ties alike. The lines of a grid on the box itself lie on the planes
- * through its corners and its edges' halves, quarters, and so on: every
- * face through opposite corners of the box holds lines of every level
- * (a chamfer at 45 degrees, two wedges that meet on the diagonal). A line
- * in a face is on the boundary of both solids, where each breaks the tie
- * in its own way (an exact plane, a mesh's edge), so it counted a
- * difference or an overlap where there is none. On the widened box the
- * lines keep away from such planes: their positions are no small
- * fractions of the box, and the axes' spacings have no small ratio. The
- * margins hold no solid, and cost what a grid's empty cells cost; the
- * measures keep the box itself, whose faces then fall between the lines. */
-void quad_widen_box(double lo[3], double hi[3]);
 
 /* Combines the three axes' estimates of value k (rule QUAD_EACH) into their
  * mean, with an error of the largest axis's own error estimate plus the
