@@ -208,5 +208,25 @@ expect 2 "short.txt:1: error: expected 3 numbers (x, y, z), got 5" inside sphere
 expect 1 "spancast: error: cannot open 'missing.csg': No such file or directory" spans missing.csg --ray=0,0,0,1,0,0
 expect 1 "bad.csg:1:7: error: expected ')' (to close '(' at line 1)" inside bad.csg --point=0,0,0
 
+# ---- a model OpenSCAD converts ----
+
+# Positions in OpenSCAD's export are put on the source with the export's
+# line, as messages are: never the export's own name, which is no file of
+# the user's (here a .csg of the same name beside the source is another
+# model).
+command -v openscad >/dev/null || skip "openscad is not installed"
+printf 'difference() { cube([30, 20, 10]); translate([10, -1, 5]) cube([30, 22, 10]); }\n' >step.scad
+printf 'sphere(1);\n' >step.csg
+check
+"$bin" spans step.scad --ray=-1,5,7,1,0,0 >step.txt 2>err.txt || fail "spans step.scad: $(cat err.txt)"
+grep -q "in t=1 (0, 5, 7) box#0@step.scad (line [0-9]* of OpenSCAD's export) normal (-1, 0, 0); out t=11 (10, 5, 7) box#1@step.scad (line [0-9]* of OpenSCAD's export) normal (1, 0, 0) subtracted; distance 10" step.txt ||
+    fail "spans of a .scad: $(cat step.txt)"
+grep -q "csg" step.txt && fail "spans of a .scad names a .csg: $(cat step.txt)"
+"$bin" spans step.scad --ray=-1,5,7,1,0,0 --json >step.json 2>err.txt || fail "spans --json step.scad: $(cat err.txt)"
+pycheck '
+e = j["rays"][0]["spans"][0]["in"]
+assert e["file"] == "step.scad" and e["line"] is None and e["column"] is None, e
+assert e["export_line"] > 0 and e["kind"] == "box", e' step.json
+
 echo "$checks checks, $fails failures"
 [ "$fails" = 0 ]

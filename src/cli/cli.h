@@ -113,6 +113,9 @@ static inline void cli_load_options(sc_load_options *lo, int flags)
 /* Loads a .csg or .scad model and prints its warnings; NULL (after printing
  * the error) when it cannot be loaded. flags: CLI_LOAD_*. */
 sc_scene *cli_load(const char *path, int faithful);
+/* cli_load, and *converted set when the text loaded came from OpenSCAD
+ * (positions in the scene then name scad_converted_name). */
+sc_scene *cli_load_converted(const char *path, int faithful, int *converted);
 
 /* Whether the option named by the len bytes at name is one of render's
  * camera options (--camera, --imgsize, --fov, --projection, --viewall,

@@ -533,7 +533,8 @@ static double seconds_now(void)
 
 /* watched: NULL, or a set that gets the model's files (render --watch);
  * faithful: CLI_LOAD_* flags. */
-static sc_scene *load(const char *path, int faithful, watch_set *watched)
+static sc_scene *load(const char *path, int faithful, watch_set *watched,
+                      int *was_converted)
 {
     sc_load_options lo;
     sc_load_options_init(&lo);
@@ -572,6 +573,8 @@ static sc_scene *load(const char *path, int faithful, watch_set *watched)
     double lo3[3], hi3[3];
     if (dist_rank() == 0 && !sc_scene_bounds(scene, lo3, hi3))
         fprintf(stderr, "%s: warning: the model is empty (nothing to render)\n", path);
+    if (was_converted)
+        *was_converted = converted;
     return scene;
 }
 
@@ -579,7 +582,7 @@ static int run_info(const cli_args *a)
 {
     cli_catch_interrupts();
     cli_start_clock();
-    sc_scene *scene = load(a->input, a->faithful, NULL);
+    sc_scene *scene = load(a->input, a->faithful, NULL, NULL);
     cli_stop_clock();
     if (cli_stop) {
         sc_scene_release(scene);
@@ -764,7 +767,7 @@ static int run_render(cli_args *a, int argc, char **argv)
     double start = seconds_now();
     cli_catch_interrupts();
     cli_start_clock();
-    sc_scene *scene = load(a->input, a->faithful, a->watched);
+    sc_scene *scene = load(a->input, a->faithful, a->watched, NULL);
     if (cli_stop) {
         sc_scene_release(scene);
         return cli_die_stopped();
@@ -975,7 +978,12 @@ void cli_print_error(const sc_error *error)
 
 sc_scene *cli_load(const char *path, int faithful)
 {
-    return load(path, faithful, NULL);
+    return load(path, faithful, NULL, NULL);
+}
+
+sc_scene *cli_load_converted(const char *path, int faithful, int *converted)
+{
+    return load(path, faithful, NULL, converted);
 }
 
 static int is_camera_option(opt_id id)

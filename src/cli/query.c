@@ -31,12 +31,14 @@
 #define _POSIX_C_SOURCE 200809L
 
 #include <errno.h>
+#include <limits.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "cli/cli.h"
+#include "cli/scad.h"
 #include "spancast/spancast.h"
 
 /* ---- what to query ---- */
@@ -56,7 +58,17 @@ typedef struct query_args {
     const char *camera_args[64]; /* render's camera options, as given (argv) */
     const char *camera_values[64];
     int camera_count;
+    /* a model OpenSCAD converted: its positions name export (the name of
+     * its export, scad_converted_name), which is not the user's text, so
+     * they are put on the input as scad_blame puts messages; "" otherwise */
+    char export[PATH_MAX + 16];
 } query_args;
+
+/* Whether a span end is at a position in OpenSCAD's export of the input. */
+static int in_export(const query_args *a, const sc_span_end *e)
+{
+    return a->export[0] && e->location.file && strcmp(e->location.file, a->export) == 0;
+}
 
 static int add_item(query_args *a, const query_item *item)
 {
@@ -285,7 +297,7 @@ static void json_string(const char *s)
     putchar('"');
 }
 
-static void json_end(const sc_span_end *e)
+static void json_end(const query_args *a, const sc_span_end *e)
 {
     fputs("{\"t\": ", stdout);
     json_number(e->t);
@@ -298,9 +310,16 @@ static void json_end(const sc_span_end *e)
     printf(", \"leaf\": %d, \"kind\": ", e->leaf);
     json_string(e->leaf_kind);
     fputs(", \"file\": ", stdout);
-    json_string(e->location.file);
-    printf(", \"line\": %d, \"column\": %d, \"normal\": ", e->location.line,
-           e->location.column);
+    if (in_export(a, e))
+        json_string(a->input);
+    else
+        json_string(e->location.file);
+    if (in_export(a, e))
+        printf(", \"line\": null, \"column\": null, \"export_line\": %d, \"normal\": ",
+               e->location.line);
+    else
+        printf(", \"line\": %d, \"column\": %d, \"normal\": ", e->location.line,
+               e->location.column);
     json_vector(e->normal);
     printf(", \"subtracted\": %s}", e->subtracted ? "true" : "false");
 }
@@ -310,7 +329,7 @@ static void text_vector(const double *v)
     printf("(%.10g, %.10g, %.10g)", v[0], v[1], v[2]);
 }
 
-static void text_end(const char *label, const sc_span_end *e)
+static void text_end(const query_args *a, const char *label, const sc_span_end *e)
 {
     printf("%s t=%.10g ", label, e->t);
     text_vector(e->point);
@@ -318,9 +337,13 @@ static void text_end(const char *label, const sc_span_end *e)
         fputs(isfinite(e->t) ? " (ray start)" : " (unbounded)", stdout);
         return;
     }
-    printf(" %s#%d@%s:%d:%d normal ", e->leaf_kind ? e->leaf_kind : "leaf", e->leaf,
-           e->location.file ? e->location.file : "?", e->location.line,
-           e->location.column);
+    if (in_export(a, e))
+        printf(" %s#%d@%s (line %d of OpenSCAD's export) normal ",
+               e->leaf_kind ? e->leaf_kind : "leaf", e->leaf, a->input, e->location.line);
+    else
+        printf(" %s#%d@%s:%d:%d normal ", e->leaf_kind ? e->leaf_kind : "leaf", e->leaf,
+               e->location.file ? e->location.file : "?", e->location.line,
+               e->location.column);
     text_vector(e->normal);
     if (e->subtracted)
         fputs(" subtracted", stdout);
@@ -342,9 +365,9 @@ static void print_spans(const query_args *a, const query_item *item, size_t inde
         for (size_t k = 0; k < n; k++) {
             const sc_span *s = sc_span_list_get(list, k);
             fputs(k ? ",\n    {\"in\": " : "\n    {\"in\": ", stdout);
-            json_end(&s->in);
+            json_end(a, &s->in);
             fputs(", \"out\": ", stdout);
-            json_end(&s->out);
+            json_end(a, &s->out);
             fputs(", \"distance\": ", stdout);
             json_number(s->distance);
             putchar('}');
@@ -365,9 +388,9 @@ static void print_spans(const query_args *a, const query_item *item, size_t inde
     for (size_t k = 0; k < n; k++) {
         const sc_span *s = sc_span_list_get(list, k);
         fputs("  ", stdout);
-        text_end("in", &s->in);
+        text_end(a, "in", &s->in);
         fputs("; ", stdout);
-        text_end("out", &s->out);
+        text_end(a, "out", &s->out);
         printf("; distance %.10g\n", s->distance);
     }
 }
@@ -448,7 +471,10 @@ static int run_query(int spans, int argc, char **argv)
     a.spans = spans;
     int status = parse_query_args(&a, argc, argv);
     if (!status) {
-        sc_scene *scene = cli_load(a.input, a.faithful);
+        int converted = 0;
+        sc_scene *scene = cli_load_converted(a.input, a.faithful, &converted);
+        if (converted && !scad_converted_name(a.input, a.export, sizeof a.export))
+            a.export[0] = '\0';
         if (!scene) {
             status = CLI_EXIT_FAILED;
         } else {
