@@ -459,6 +459,16 @@ if command -v openscad >/dev/null; then
             grep -q "^frame refine ${W}x$H spp $samples: " sview.out ||
                 fail "refining: no pass to $samples samples: $(grep '^frame' sview.out)"
         done
+        # a pick names the source with the line of OpenSCAD's export, never
+        # the export's own name
+        xdotool mousemove --window "$wid" $((W / 2)) $((H / 2)) click 1
+        if wait_file sview.out "^pick $((W / 2)),$((H / 2)): " 30; then
+            grep -Eq "^pick $((W / 2)),$((H / 2)): sphere \(leaf 0\) at s\.scad \(line [0-9]+ of OpenSCAD's export\), distance " sview.out ||
+                fail "pick in a .scad: $(grep '^pick' sview.out)"
+            grep -q "\.csg" sview.out && fail "pick in a .scad names a .csg: $(grep -A2 '^pick' sview.out)"
+        else
+            fail "pick in a .scad: no 'pick' line"
+        fi
         xdotool key ctrl+1 # a new view: the screenshot renders all 64 samples
         xdotool key ctrl+s
         wait_file sview.err "time limit of 0.01 s exceeded \(--max-time\); s-view-1\.png not written" 60 ||

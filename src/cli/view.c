@@ -175,6 +175,9 @@ typedef struct viewer {
     int press_x, press_y, dragged;
     double last_motion;
     char pick[512]; /* the last pick, for the title, until the view changes */
+    /* the name of OpenSCAD's export when the model is converted (positions
+     * there are put on the source, as its messages are); "" otherwise */
+    char export_name[PATH_MAX + 16];
     char note[SC_ERROR_MESSAGE_MAX + SC_ERROR_FILE_MAX + PATH_MAX + 64]; /* passing */
     /* screenshots */
     int shot_busy, shot_requested, shot_number;
@@ -640,6 +643,7 @@ static void take_load(viewer *v)
     char name[PATH_MAX + 16] = "";
     if (load.converted && !scad_converted_name(v->path, name, sizeof name))
         name[0] = '\0';
+    snprintf(v->export_name, sizeof v->export_name, "%s", name);
     size_t warnings = sc_scene_warning_count(v->model->scene);
     for (size_t k = 0; k < warnings; k++) {
         sc_error w = *sc_scene_warning(v->model->scene, k);
@@ -827,6 +831,21 @@ static void request_shot(viewer *v)
     /* A refinement in flight goes on: the screenshot continues its sums. */
 }
 
+/* Where a span end's surface is written: file:line:col, or for a model
+ * OpenSCAD converted, the source with the line of its export; short: the
+ * file's base name (for the title). */
+static void place(const viewer *v, const sc_span_end *e, int short_name, char *out,
+                  size_t size)
+{
+    const char *file = e->location.file ? e->location.file : "?";
+    if (v->export_name[0] && strcmp(file, v->export_name) == 0)
+        snprintf(out, size, "%s (line %d of OpenSCAD's export)",
+                 short_name ? base_name(v->path) : v->path, e->location.line);
+    else
+        snprintf(out, size, "%s:%d:%d", short_name ? base_name(file) : file,
+                 e->location.line, e->location.column);
+}
+
 static void pick(viewer *v, int x, int y)
 {
     if (!v->model || x < 0 || y < 0 || x >= v->width || y >= v->height)
@@ -854,14 +873,14 @@ static void pick(viewer *v, int x, int y)
     } else {
         const sc_span_end *hit = &sc_span_list_get(spans, 0)->in;
         if (hit->leaf >= 0) {
-            printf("pick %d,%d: %s (leaf %d) at %s:%d:%d, distance %.9g, %zu span%s\n", x,
-                   y, hit->leaf_kind, hit->leaf,
-                   hit->location.file ? hit->location.file : "?", hit->location.line,
-                   hit->location.column, hit->t * length, count, count == 1 ? "" : "s");
-            snprintf(v->pick, sizeof v->pick, "pick %d,%d: %s (leaf %d) at %s:%d:%d", x,
-                     y, hit->leaf_kind, hit->leaf,
-                     base_name(hit->location.file ? hit->location.file : "?"),
-                     hit->location.line, hit->location.column);
+            char where[PATH_MAX + 64];
+            place(v, hit, 0, where, sizeof where);
+            printf("pick %d,%d: %s (leaf %d) at %s, distance %.9g, %zu span%s\n", x, y,
+                   hit->leaf_kind, hit->leaf, where, hit->t * length, count,
+                   count == 1 ? "" : "s");
+            place(v, hit, 1, where, sizeof where);
+            snprintf(v->pick, sizeof v->pick, "pick %d,%d: %s (leaf %d) at %.400s", x, y,
+                     hit->leaf_kind, hit->leaf, where);
         } else {
             printf("pick %d,%d: the ray starts inside the solid, %zu span%s\n", x, y,
                    count, count == 1 ? "" : "s");
@@ -874,11 +893,12 @@ static void pick(viewer *v, int x, int y)
             for (int e = 0; e < 2; e++) {
                 const sc_span_end *end = ends[e];
                 printf(", %s t=%.17g", e ? "out" : "in", end->t);
-                if (end->leaf >= 0)
-                    printf(" %s (leaf %d) at %s:%d:%d%s", end->leaf_kind, end->leaf,
-                           end->location.file ? end->location.file : "?",
-                           end->location.line, end->location.column,
+                if (end->leaf >= 0) {
+                    char where[PATH_MAX + 64];
+                    place(v, end, 0, where, sizeof where);
+                    printf(" %s (leaf %d) at %s%s", end->leaf_kind, end->leaf, where,
                            end->subtracted ? " (subtracted)" : "");
+                }
             }
             printf("\n");
         }
