@@ -189,7 +189,8 @@ run 1 thin.json overlaps thin.csg --json -q
 pycheck '
 o = j["overlaps"]
 assert len(o) == 1, o
-holds(o[0]["volume"], 0.01 * 100 * 1)' thin.json
+holds(o[0]["volume"], 0.01 * 100 * 1)
+assert o[0]["converged"], o[0]' thin.json
 run 0 thin-min.txt overlaps thin.csg -q --min-volume=1.01
 
 # A '!' in each of two objects: each object is built with the other
@@ -227,6 +228,24 @@ assert o[0]["volume"]["error"] < 2e-2 * o[0]["volume"]["value"], o[0]' assembly.
 run 0 self.txt compare drilled.csg drilled.csg -q
 check
 tail -n 1 self.txt | grep -qx same || fail "compare with itself: $(cat self.txt)"
+
+# A plate against the same plate 1e-6 higher: the difference is two sheets
+# 1e-6 thick, 0.01 each, 2e-6 of the volume; the lines along x and y lie
+# between them and see nothing, those along z cross them. The estimate is
+# the largest of the axes', not their mean (a third: "same").
+cat >plate.csg <<'CSG'
+cube(size = [100, 100, 1]);
+CSG
+cat >plate-up.csg <<'CSG'
+multmatrix([[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 1e-06], [0, 0, 0, 1]]) {
+  cube(size = [100, 100, 1]);
+}
+CSG
+run 1 plate.json compare plate.csg plate-up.csg --json -q
+pycheck '
+holds(j["only_a"], 0.01)
+holds(j["only_b"], 0.01)
+assert not j["same"] and j["converged"], j' plate.json
 
 # A prism with a face through opposite corners of its box against the STL
 # OpenSCAD 2021.01 exports of it: the same solid, though the lines in the

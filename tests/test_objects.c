@@ -79,7 +79,16 @@ static void check_objects(const sc_objects *o, const char *name)
         double v = shared((int)p->a, (int)p->b);
         assert_true(v > 0);
         assert_true(fabs(p->volume.value - v) <= fmax(p->volume.error, 1e-9 * v));
+        assert_int_equal(p->converged, 1);
     }
+    sc_overlap_list_release(pairs);
+    /* A line budget too small for the tolerance: the same pairs, each
+     * saying that its volume did not reach it. */
+    mo.max_lines = 100;
+    assert_int_equal(sc_objects_overlaps(o, &mo, &pairs, &e), SC_OK);
+    assert_int_equal(sc_overlap_list_count(pairs), want);
+    for (size_t k = 0; k < want; k++)
+        assert_int_equal(sc_overlap_list_get(pairs, k)->converged, 0);
     sc_overlap_list_release(pairs);
 }
 

@@ -730,6 +730,8 @@ typedef struct sc_overlap {
     sc_estimate volume; /* volume of the intersection */
     double box_lo[3];   /* box of the intersection, as sampled */
     double box_hi[3];
+    int converged; /* 1: the volume reached the tolerance (0: the line budget
+                      ran out first) */
 } sc_overlap;
 
 /* The top-level objects of a model (opaque). */
@@ -807,6 +809,8 @@ typedef struct sc_comparison {
     sc_estimate only_a, only_b; /* volume of a minus b, of b minus a */
     sc_estimate difference;     /* the symmetric difference: only_a + only_b */
     uint64_t lines;
+    int converged; /* 1: the differences reached the tolerance (0: the line
+                      budget ran out first) */
 } sc_comparison;
 
 /* Sets size and zeroes the rest. Never fails. */

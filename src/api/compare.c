@@ -199,11 +199,14 @@ static sc_status compare_scenes(const sc_scene *a, const sc_scene *b,
     if (st == SC_OK) {
         out->volume_a = quad_combine(grids, C_A);
         out->volume_b = quad_combine(grids, C_B);
-        out->only_a = quad_combine(grids, C_ONLY_A);
-        out->only_b = quad_combine(grids, C_ONLY_B);
+        /* a difference that is a sheet parallel to two axes lies between
+         * their lines; the third axis's lines cross it */
+        out->only_a = quad_combine_largest(grids, C_ONLY_A);
+        out->only_b = quad_combine_largest(grids, C_ONLY_B);
         out->difference.value = out->only_a.value + out->only_b.value;
         out->difference.error = out->only_a.error + out->only_b.error;
         out->lines = grids[0].lines + grids[1].lines + grids[2].lines;
+        out->converged = converged;
     }
     int failed = grids[0].failed || grids[1].failed || grids[2].failed;
     int limited = st == SC_ERR_LIMIT && quad_limit_error(grids, ta, tb, error);

@@ -362,6 +362,7 @@ static sc_status overlap_pair(const csg_tree *ta, const csg_tree *tb, const doub
         if (!lines_scratch_box(&shared.work, &o, seen))
             st = SC_ERR_NOMEM; /* the exchange with the other processes failed */
         *found = out->volume.value > 0 && seen[0] <= seen[3];
+        out->converged = converged;
         for (int i = 0; i < 3; i++) {
             out->box_lo[i] = *found ? seen[i] : 0;
             out->box_hi[i] = *found ? seen[3 + i] : 0;

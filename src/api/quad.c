@@ -102,6 +102,13 @@ static double within(double c, double h, double lo, double hi)
     return b > a ? b - a : 0;
 }
 
+/* The middle of [c - h, c + h] within [lo, hi]; c when they do not meet. */
+static double middle_within(double c, double h, double lo, double hi)
+{
+    double a = fmax(c - h, lo), b = fmin(c + h, hi);
+    return b > a ? (a + b) / 2 : c;
+}
+
 /* Whether the rectangle of centre (u, v) and half sizes hu, hv reaches
  * past the support (g->support), and its area within it. */
 static int clipped(const quad_grid *g, double u, double v, double hu, double hv)
@@ -159,10 +166,18 @@ static sc_status sample_cells(quad_grid *g, quad_cell *cells, double *estimate,
             continue;
         const quad_cell *c = &cells[line / 5];
         int which = (int)(line % 5);
-        double u = c->u, v = c->v;
+        double u = c->u, v = c->v, hu = c->hu, hv = c->hv;
         if (which) { /* the four quarters */
             u += (which & 1 ? 0.5 : -0.5) * c->hu;
             v += (which > 2 ? 0.5 : -0.5) * c->hv;
+            hu /= 2;
+            hv /= 2;
+        }
+        /* a rectangle past the support: the line through the middle of its
+         * part within, which stands for that part alone */
+        if (clipped(g, u, v, hu, hv)) {
+            u = middle_within(u, hu, g->support[0], g->support[2]);
+            v = middle_within(v, hv, g->support[1], g->support[3]);
         }
         cancel_scope scope;
         cancel_enter(&scope, &token);
@@ -188,8 +203,9 @@ static sc_status sample_cells(quad_grid *g, quad_cell *cells, double *estimate,
         const quad_cell *c = &cells[i];
         double area = 4 * c->hu * c->hv;
         /* A cell past the support (in the margins of a widened box) weighs
-         * each line by the area of its part within: the integrand is 0
-         * outside, where the line may not be. */
+         * each line, drawn through the middle of its rectangle's part
+         * within (above), by the area of that part: the integrand is 0
+         * outside. */
         int clip = clipped(g, c->u, c->v, c->hu, c->hv);
         double quarter_area[5] = {0, area / 4, area / 4, area / 4, area / 4};
         if (clip) {
@@ -711,6 +727,20 @@ sc_estimate quad_combine(const quad_grid grids[3], int k)
         spread = fmax(spread, fabs(grids[a].total[k] - e.value));
     }
     e.error = own + spread;
+    return e;
+}
+
+sc_estimate quad_combine_largest(const quad_grid grids[3], int k)
+{
+    sc_estimate e;
+    double lo = grids[0].total[k], hi = lo, own = 0;
+    for (int a = 0; a < 3; a++) {
+        lo = fmin(lo, grids[a].total[k]);
+        hi = fmax(hi, grids[a].total[k]);
+        own = fmax(own, grids[a].total_error[k]);
+    }
+    e.value = hi;
+    e.error = own + (hi - lo);
     return e;
 }
 

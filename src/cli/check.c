@@ -414,18 +414,20 @@ static int run_overlaps(check_args *a)
                    lb.column);
             json_estimate("volume", p->volume);
             printf(", \"box_min\": [%.17g, %.17g, %.17g], \"box_max\": [%.17g, %.17g, "
-                   "%.17g]}",
+                   "%.17g], \"converged\": %s}",
                    p->box_lo[0], p->box_lo[1], p->box_lo[2], p->box_hi[0], p->box_hi[1],
-                   p->box_hi[2]);
+                   p->box_hi[2], p->converged ? "true" : "false");
         } else {
             char wa[PATH_MAX + 64], wb[PATH_MAX + 64];
             object_place(wa, sizeof wa, la, converted ? path : NULL);
             object_place(wb, sizeof wb, lb, converted ? path : NULL);
-            printf("overlap: %s (%s, object %zu) and %s (%s, object %zu): "
-                   "volume %.8g +- %.2g, box (%.6g, %.6g, %.6g) to (%.6g, %.6g, %.6g)\n",
-                   wa, na, p->a + 1, wb, nb, p->b + 1, p->volume.value, p->volume.error,
-                   p->box_lo[0], p->box_lo[1], p->box_lo[2], p->box_hi[0], p->box_hi[1],
-                   p->box_hi[2]);
+            printf(
+                "overlap: %s (%s, object %zu) and %s (%s, object %zu): "
+                "volume %.8g +- %.2g%s, box (%.6g, %.6g, %.6g) to (%.6g, %.6g, %.6g)\n",
+                wa, na, p->a + 1, wb, nb, p->b + 1, p->volume.value, p->volume.error,
+                p->converged ? "" : " (tolerance not reached: the line budget ran out)",
+                p->box_lo[0], p->box_lo[1], p->box_lo[2], p->box_hi[0], p->box_hi[1],
+                p->box_hi[2]);
         }
     }
     if (a->json)
@@ -662,8 +664,10 @@ static int run_compare(check_args *a)
         json_estimate("only_b", c.only_b);
         fputs(", ", stdout);
         json_estimate("symmetric_difference", c.difference);
-        printf(",\n \"relative_difference\": %.17g, \"tolerance\": %.17g, \"views\": [",
-               larger > 0 ? c.difference.value / larger : 0, a->options.tolerance);
+        printf(",\n \"relative_difference\": %.17g, \"tolerance\": %.17g, \"converged\": "
+               "%s, \"lines\": %llu, \"views\": [",
+               larger > 0 ? c.difference.value / larger : 0, a->options.tolerance,
+               c.converged ? "true" : "false", (unsigned long long)c.lines);
         for (size_t k = 0; k < view_count; k++)
             printf("%s\n  {\"view\": \"%s\", \"mask_mismatch\": %ld, \"depth_mismatch\": "
                    "%ld, \"edge_mismatch\": %ld}",
@@ -675,9 +679,10 @@ static int run_compare(check_args *a)
         text_estimate("volume B", c.volume_b);
         text_estimate("A not B", c.only_a);
         text_estimate("B not A", c.only_b);
-        printf("%-18s %.10g +- %.2g (%.3g of the larger volume, tolerance %g)\n",
+        printf("%-18s %.10g +- %.2g (%.3g of the larger volume, tolerance %g%s)\n",
                "symmetric diff", c.difference.value, c.difference.error,
-               larger > 0 ? c.difference.value / larger : 0, a->options.tolerance);
+               larger > 0 ? c.difference.value / larger : 0, a->options.tolerance,
+               c.converged ? "" : "; not reached: the line budget ran out");
         printf("views %dx%d, pixels that differ (mask away from edges, depth away from "
                "edges, mask at edges):\n",
                a->width, a->height);
