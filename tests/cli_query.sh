@@ -208,6 +208,29 @@ expect 2 "short.txt:1: error: expected 3 numbers (x, y, z), got 5" inside sphere
 expect 1 "spancast: error: cannot open 'missing.csg': No such file or directory" spans missing.csg --ray=0,0,0,1,0,0
 expect 1 "bad.csg:1:7: error: expected ')' (to close '(' at line 1)" inside bad.csg --point=0,0,0
 
+# inside on the edges and corners of a mesh: every axis line through such a
+# point lies in a face or along an edge, where the mesh counts no crossing
+# (they were all "out"); an oblique line crosses there.
+python3 - <<'PY' || fail "writing cube.stl"
+c = [(x, y, z) for x in (0, 10) for y in (0, 10) for z in (0, 10)]
+quads = [(0, 1, 3, 2), (4, 6, 7, 5), (0, 4, 5, 1), (2, 3, 7, 6), (0, 2, 6, 4), (1, 5, 7, 3)]
+with open("cube.stl", "w") as f:
+    f.write("solid cube\n")
+    for a, b, d, e in quads:
+        for t in ((a, b, d), (a, d, e)):
+            f.write("facet normal 0 0 0\nouter loop\n")
+            for i in t:
+                f.write("vertex %g %g %g\n" % c[i])
+            f.write("endloop\nendfacet\n")
+    f.write("endsolid cube\n")
+PY
+check
+"$bin" inside cube.stl --point=10,10,5 --point=5,10,10 --point=0,10,10 --point=10,10,10 \
+    --point=0,0,0 --point=5,5,10 --point=5,5,5 --point=10.001,10,5 >cube.txt 2>err.txt ||
+    fail "inside cube.stl: $(cat err.txt)"
+[ "$(tr '\n' ' ' <cube.txt)" = "on on on on on on in out " ] ||
+    fail "inside on a mesh's edges and corners: $(tr '\n' ' ' <cube.txt)"
+
 # ---- a model OpenSCAD converts ----
 
 # Positions in OpenSCAD's export are put on the source with the export's

@@ -623,7 +623,11 @@ typedef enum sc_where { SC_OUTSIDE = 0, SC_INSIDE = 1, SC_ON = 2 } sc_where;
  * at least the perpendicular one, and one axis makes an angle of at most
  * acos(1/sqrt(3)) with the normal, so a point on a face or within
  * eps / sqrt(3) of one is SC_ON, and a point farther than eps from every
- * surface never is. Otherwise SC_INSIDE when p lies inside a span of at
+ * surface never is. Where no axis line finds it so (a point on an edge or a
+ * corner of a mesh, where each axis line lies in a face or along the edge
+ * and the mesh breaks the tie as a miss), four oblique lines through p,
+ * whose directions and their opposites cover the eight octants, are asked
+ * the same. Otherwise SC_INSIDE when p lies inside a span of at
  * least two of the three lines (they agree except where a line grazes a
  * surface), else SC_OUTSIDE. Returns SC_ERR_ARGUMENT for a coordinate that
  * is not finite, SC_ERR_NOMEM, and SC_ERR_LIMIT as sc_scene_spans does for

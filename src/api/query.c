@@ -211,11 +211,25 @@ sc_status sc_scene_inside(const sc_scene *scene, const double p[3], int *where,
     if (!finite3(p))
         return err_set(error, SC_ERR_ARGUMENT, NULL, "point coordinates must be finite");
     const csg_tree *t = scene_tree(scene);
+    /* The three axes vote, and any of them finds p on the surface when a
+     * span ends there. A point on an edge or a corner of a mesh (or of a
+     * polygon's extrusion) has each axis line in a face's plane or along
+     * an edge, where the mesh breaks the tie as a miss: then four oblique
+     * lines, whose directions and their opposites cover the eight
+     * octants, so that one of them crosses into every right-angled edge
+     * and corner through p, say whether a span ends at p. */
+    static const double oblique[4][3] = {{0.61923, 0.43762, 0.65189},
+                                         {0.61923, -0.43762, 0.65189},
+                                         {0.61923, 0.43762, -0.65189},
+                                         {-0.61923, 0.43762, 0.65189}};
     int votes = 0;
-    for (int axis = 0; axis < 3; axis++) {
+    for (int line = 0; line < 7; line++) {
+        int axis = line;
         csg_ray r;
         r.o = v3(p[0], p[1], p[2]);
-        r.d = v3(axis == 0, axis == 1, axis == 2);
+        r.d = line < 3
+                  ? v3(axis == 0, axis == 1, axis == 2)
+                  : v3(oblique[line - 3][0], oblique[line - 3][1], oblique[line - 3][2]);
         r.tmin = -INFINITY; /* the whole line: no clipped ends near p */
         r.tmax = INFINITY;
         double eps = csg_eps(t, r.o, r.d);
@@ -238,7 +252,7 @@ sc_status sc_scene_inside(const sc_scene *scene, const double p[3], int *where,
             *where = SC_ON;
             return SC_OK;
         }
-        votes += in;
+        votes += line < 3 && in;
     }
     *where = votes >= 2 ? SC_INSIDE : SC_OUTSIDE;
     return SC_OK;
