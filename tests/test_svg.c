@@ -27,7 +27,7 @@ static sc_status read_svg(const char *text, int center, double dpi, twod_region 
 {
     twod_init(r);
     svg_options o = {dpi, center};
-    return svg_read(text, strlen(text), "x.svg", &at, &o, r, e);
+    return svg_read(text, strlen(text), "x.svg", &at, &o, r, NULL, e);
 }
 
 static double area_of(const char *text)
@@ -248,7 +248,7 @@ static void test_bad_input(void **state)
     for (size_t n = 0; n < strlen(full); n++) {
         twod_init(&r);
         svg_options o = {72, 0};
-        sc_status st = svg_read(full, n, "x.svg", &at, &o, &r, &e);
+        sc_status st = svg_read(full, n, "x.svg", &at, &o, &r, NULL, &e);
         assert_true(st == SC_OK || st == SC_ERR_SYNTAX);
         twod_free(&r);
     }
@@ -262,7 +262,7 @@ static void test_bad_input(void **state)
             memcpy(text, "<svg><path d='", 14); /* garbage in a path's data */
         twod_init(&r);
         svg_options o = {72, 0};
-        sc_status st = svg_read(text, sizeof text, "x.svg", &at, &o, &r, &e);
+        sc_status st = svg_read(text, sizeof text, "x.svg", &at, &o, &r, NULL, &e);
         assert_true(st == SC_OK || st == SC_ERR_SYNTAX);
         twod_free(&r);
     }
@@ -288,10 +288,46 @@ static void test_bad_input(void **state)
     /* a missing file */
     twod_init(&r);
     svg_options o = {72, 0};
-    assert_int_equal(svg_read_file("/nonexistent/x.svg", "x.svg", &at, &o, &r, &e),
+    assert_int_equal(svg_read_file("/nonexistent/x.svg", "x.svg", &at, &o, &r, NULL, &e),
                      SC_ERR_IO);
     assert_string_equal(e.message,
                         "import: x.svg: cannot open: No such file or directory");
+    twod_free(&r);
+}
+
+/* Outlines past Clipper's range (2^46 at OpenSCAD's scale of 2^16), as
+ * OpenSCAD 2021.01 imports them (checked with its STL export): each shape
+ * is sanitized on its own, where the clipper refuses the outline with such
+ * a point and those after it in the shape, and the shapes are then united:
+ * three squares of 100 here. */
+static void test_range(void **state)
+{
+    (void)state;
+    static const char text[] =
+        "<svg width='100mm' height='100mm' viewBox='0 0 100 100'>"
+        "<path d='M 0 0 L 10 0 L 10 10 L 0 10 Z'/>"
+        "<path d='M 20 0 L 30 0 L 30 10 L 20 10 Z "
+        "M 100000000000000 0 L 100000000000010 0 L 100000000000010 10 Z "
+        "M 60 0 L 70 0 L 70 10 L 60 10 Z'/>"
+        "<path d='M 40 0 L 50 0 L 50 10 L 40 10 Z'/></svg>";
+    twod_region r;
+    twod_init(&r);
+    sc_error e;
+    svg_options o = {72, 0};
+    svg_refused refused = {7, 7};
+    assert_int_equal(svg_read(text, strlen(text), "x.svg", &at, &o, &r, &refused, &e),
+                     SC_OK);
+    assert_int_equal(refused.shapes, 1);
+    assert_int_equal(refused.first, 2);
+    assert_true(fabs(twod_area(&r) - 300) < 1e-9);
+    twod_free(&r);
+    /* none refused */
+    twod_init(&r);
+    assert_int_equal(svg_read("<svg><rect width='1' height='1'/></svg>", 39, "x.svg", &at,
+                              &o, &r, &refused, &e),
+                     SC_OK);
+    assert_int_equal(refused.shapes, 0);
+    assert_int_equal(refused.first, 0);
     twod_free(&r);
 }
 
@@ -301,6 +337,7 @@ int main(void)
         cmocka_unit_test(test_page),    cmocka_unit_test(test_shapes),
         cmocka_unit_test(test_strokes), cmocka_unit_test(test_transforms),
         cmocka_unit_test(test_numbers), cmocka_unit_test(test_bad_input),
+        cmocka_unit_test(test_range),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -1118,7 +1118,20 @@ static sc_status read_svg(const eval *e, const model_node *n, twod_region *out)
     } else {
         fclose(f);
         svg_options o = {d->dpi, d->center};
-        st = svg_read_file(path, d->file, &d->file_loc, &o, out, e->c->error);
+        svg_refused refused;
+        st = svg_read_file(path, d->file, &d->file_loc, &o, out, &refused, e->c->error);
+        if (st == SC_OK && refused.shapes && e->c->strict)
+            st = err_set(e->c->error, SC_ERR_LIMIT, &n->loc,
+                         "import: shape %u of '%s' has coordinates out of the clipper's "
+                         "range",
+                         refused.first, d->file);
+        else if (st == SC_OK && refused.shapes)
+            st = build_note_left_out(
+                e->c, &n->loc,
+                "Range check failed for polygon. skipping (%u shape%s of '%s', the first "
+                "shape %u: the outline past the clipper's range and those after it in "
+                "the shape, as OpenSCAD leaves them out; --strict makes it an error)",
+                refused.shapes, refused.shapes == 1 ? "" : "s", d->file, refused.first);
         /* OpenSCAD 2021.01 logs a drawing it cannot parse as an error and
          * renders the rest: a warning with the file's own line, and the
          * import empty, unless --strict */

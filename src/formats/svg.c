@@ -154,7 +154,7 @@ static int commit_point(reader *r, twod_region *shape, const mat3 *m, double x, 
         r->box[2] = sx;
     if (sy > r->box[3])
         r->box[3] = sy;
-    if (!twod_in_range(tx) || !twod_in_range(ty)) {
+    if (!isfinite(tx) || !isfinite(ty)) { /* past the range: svg_read */
         r->range = 1;
         return 0;
     }
@@ -1099,9 +1099,12 @@ static sc_status fail(reader *r, sc_status status, int line, const char *why)
 }
 
 sc_status svg_read(const char *text, size_t size, const char *name, const sc_location *at,
-                   const svg_options *o, twod_region *out, sc_error *error)
+                   const svg_options *o, twod_region *out, svg_refused *refused_shapes,
+                   sc_error *error)
 {
     twod_clear(out);
+    if (refused_shapes)
+        refused_shapes->shapes = refused_shapes->first = 0;
     reader r;
     memset(&r, 0, sizeof r);
     r.name = name;
@@ -1142,12 +1145,22 @@ sc_status svg_read(const char *text, size_t size, const char *name, const sc_loc
                 double *p = shape->xy + 2 * k;
                 p[0] = r.scale[0] * (-r.viewbox[0] + p[0]) - cx;
                 p[1] = r.scale[1] * (-r.viewbox[1] - p[1]) + cy;
-                if (!twod_in_range(p[0]) || !twod_in_range(p[1])) {
+                if (!isfinite(p[0]) || !isfinite(p[1])) {
                     st = fail(&r, SC_ERR_LIMIT, 0,
                               "the page's scale makes coordinates out of range");
                     break;
                 }
             }
+        }
+        /* OpenSCAD sanitizes each shape, where its clipper refuses an
+         * outline past its range with those after it */
+        for (size_t i = 0; i < r.shape_count && st == SC_OK; i++) {
+            r.shapes[i]->sanitized = 0;
+            long refused = twod_clipper_admit(r.shapes[i]);
+            if (refused < 0)
+                st = fail(&r, SC_ERR_NOMEM, 0, "out of memory");
+            else if (refused > 0 && refused_shapes && !refused_shapes->shapes++)
+                refused_shapes->first = (uint32_t)i + 1;
         }
         if (st == SC_OK) {
             int clip =
@@ -1168,8 +1181,11 @@ sc_status svg_read(const char *text, size_t size, const char *name, const sc_loc
 }
 
 sc_status svg_read_file(const char *path, const char *name, const sc_location *at,
-                        const svg_options *o, twod_region *out, sc_error *error)
+                        const svg_options *o, twod_region *out, svg_refused *refused,
+                        sc_error *error)
 {
+    if (refused)
+        refused->shapes = refused->first = 0;
     FILE *f = fopen(path, "rb");
     if (!f)
         return err_set(error, SC_ERR_IO, at, "import: %s: cannot open: %s", name,
@@ -1190,7 +1206,7 @@ sc_status svg_read_file(const char *path, const char *name, const sc_location *a
                      "import: %s: file too large (limit is %u MiB)", name,
                      SVG_MAX_FILE / (1024u * 1024u));
     else
-        st = svg_read(text, size, name, at, o, out, error);
+        st = svg_read(text, size, name, at, o, out, refused, error);
     free(text);
     return st;
 }
