@@ -145,10 +145,14 @@ multmatrix([[1, 0, 0, 10], [0, 1, 0, 2], [0, 0, 1, 3], [0, 0, 0, 1]]) {
   cube(size = [4, 4, 4]);
 }
 CSG
-run 0 touching.txt overlaps touching.csg -q
-check
-[ "$(cat touching.txt)" = "$(printf '2 top-level objects\nno overlaps')" ] ||
-    fail "touching cubes: $(cat touching.txt)"
+# no_overlaps MODEL N WHAT: overlaps finds N objects and no overlap.
+no_overlaps() {
+    run 0 "$1.txt" overlaps "$1" -q
+    check
+    [ "$(cat "$1.txt")" = "$(printf '%s top-level objects\nno overlaps' "$2")" ] ||
+        fail "$3: $(cat "$1.txt")"
+}
+no_overlaps touching.csg 2 "touching cubes"
 
 # Two pairs of wedges that meet on a diagonal face, one pair along each
 # diagonal. The lines of a grid laid on the box the pair shares cross a
@@ -170,10 +174,7 @@ group() {
   }
 }
 CSG
-run 0 wedges.txt overlaps wedges.csg -q
-check
-[ "$(cat wedges.txt)" = "$(printf '4 top-level objects\nno overlaps')" ] ||
-    fail "wedges that meet on a diagonal: $(cat wedges.txt)"
+no_overlaps wedges.csg 4 "wedges that meet on a diagonal"
 
 # A thin overlap on the face of a thin plate: 0.01 x 100 x 1. The grid's
 # box is widened beyond the plates' shared box, and its cells there must
