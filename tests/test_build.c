@@ -546,8 +546,12 @@ static void test_colors(void **state)
     check_color("color(\"#f008\") { cube(); }", 1, 0, 0, 0x88 / 255.0f);
     check_color("color(\"blue\", 0.5) { cube(); }", 0, 0, 1, 0.5f);
     check_color("color([1, 0, 0, 0.5], alpha = 0.7) { cube(); }", 1, 0, 0, 0.7f);
-    /* Inner wins over outer; siblings and ancestors keep their own. */
-    check_color("color(\"red\") { color(\"blue\") { cube(); } }", 0, 0, 1, 1);
+    /* Outer wins over inner, as in OpenSCAD 2021.01's preview (a colour is
+     * set only where none is); siblings and ancestors keep their own. */
+    check_color("color(\"red\") { color(\"blue\") { cube(); } }", 1, 0, 0, 1);
+    check_color("color([1, 0, 0, 0.5]) { color(alpha = 1, c = \"yellow\") { cube(); } }",
+                1, 0, 0, 0.5f);
+    check_color("color([-1, -1, -1, 1]) { color(\"blue\") { cube(); } }", 0, 0, 1, 1);
     check_color("color(\"red\") { multmatrix() { group() { cube(); } } }", 1, 0, 0, 1);
     /* OpenSCAD's "no colour": the inherited one stays. */
     check_color("color(\"red\") { color([-1, -1, -1, 1]) { cube(); } }", 1, 0, 0, 1);

@@ -70,8 +70,9 @@ static void test_lights(void **state)
 }
 
 /* Materials: leaves outside any material() get material 0; nesting gives
- * the inner material; color() inside a material() wins over its colour and
- * a material() colour inside color() wins over that. */
+ * the inner material; a material()'s colour wins over a color() inside it,
+ * and a color() over a material() colour inside it: the outermost colour
+ * wins, as OpenSCAD 2021.01's preview keeps the outermost color(). */
 static void test_materials(void **state)
 {
     (void)state;
@@ -93,14 +94,14 @@ static void test_materials(void **state)
     assert_true(look->materials[1].reflect == 0.5);
     assert_true(t->leaves[1].color[2] == 1 && t->leaves[1].color[0] == 0);
     assert_int_equal(t->leaves[2].material, 1);
-    assert_true(t->leaves[2].color[0] == 1 &&
-                t->leaves[2].color[2] == 0); /* inner color */
+    assert_true(t->leaves[2].color[0] == 0 &&
+                t->leaves[2].color[2] == 1); /* the material's, outer */
     assert_int_equal(t->leaves[3].material, 2);
     assert_true(look->materials[2].transmit == 0.8 && look->materials[2].ior == 1.33);
     assert_true(look->materials[2].reflect == 0); /* not inherited */
     assert_true(t->leaves[3].color[2] == 1);      /* the colour is inherited */
     assert_int_equal(t->leaves[4].material, 3);
-    assert_true(t->leaves[4].color[1] == 1 && t->leaves[4].color[0] == 1); /* inner */
+    assert_true(t->leaves[4].color[1] == 1 && t->leaves[4].color[0] == 0); /* outer */
     assert_true(look->materials[3].checker == 2);
     sc_scene_release(s);
 }

@@ -85,6 +85,8 @@ typedef struct frame {
     int counted;     /* the result is an operand of the parent */
     size_t first_id; /* children's results start here on the id stack */
     float color[4];
+    int color_set;     /* a color() or material(color) above has set it: OpenSCAD
+                          2021.01's preview keeps the outermost colour */
     uint32_t material; /* index into the shading record's materials */
     affine to_world;
     int moving;           /* inside a motion node: leaves carry motion */
@@ -696,12 +698,17 @@ static sc_status build_surface_leaf(builder *b, const model_node *n, const frame
 /* ---- boolean nodes with arguments ---- */
 
 /* color(c, alpha) (model.h): the colour its children get, each component
- * clamped to 0..1 (its warnings are the model's). */
-static void apply_color(const model_node *n, float color[4])
+ * clamped to 0..1 (its warnings are the model's), unless a colour above it
+ * is set: OpenSCAD 2021.01's preview sets a colour only where none is
+ * (CSGTreeEvaluator, visit(ColorNode)), so the outermost wins and a
+ * library part is recoloured from outside. */
+static void apply_color(const model_node *n, frame *f)
 {
     const model_color *mc = n->u.color;
-    if (!mc->set)
+    if (!mc->set || f->color_set)
         return;
+    f->color_set = 1;
+    float *color = f->color;
     for (int i = 0; i < 4; i++) {
         double c = i == 3 && mc->has_alpha ? mc->alpha : mc->c[i];
         color[i] = c >= 0 && c <= 1 ? (float)c : c > 1 ? 1.0f : 0.0f;
@@ -788,6 +795,7 @@ static void inherit(const builder *b, const model_node *n, const frame *parent, 
         f->shown = 1;
         f->to_world = affine_identity();
         memcpy(f->color, default_color, sizeof f->color);
+        f->color_set = 0;
         f->material = 0;
     }
     if ((n->modifiers & MODEL_MOD_BACKGROUND) && n != b->part)
@@ -950,11 +958,12 @@ static sc_status visit(builder *b, const model_node *n, int *opened)
             return st;
         f->moving = 1;
     } else if (kind == MODEL_COLOR) {
-        apply_color(n, f->color);
+        apply_color(n, f);
     } else if (kind == MODEL_MATERIAL) {
-        if ((st = build_material(b->shading, n, f->emit, &f->material, f->color,
-                                 b->error)) != SC_OK)
+        if ((st = build_material(b->shading, n, f->emit, &f->material,
+                                 f->color_set ? NULL : f->color, b->error)) != SC_OK)
             return st;
+        f->color_set |= n->u.material->has_color;
     }
     *opened = 1;
     b->frame_count++;

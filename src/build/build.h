@@ -15,7 +15,8 @@
  *   torus, quadric, implicit                  spancast's curved leaves
  *                                             (model/lower_curved.c)
  * Transforms (multmatrix, row-major 4x4) nest and accumulate into each
- * leaf's to_world; an inner colour wins over an outer one; leaves without a
+ * leaf's to_world; an outer colour wins over an inner one (OpenSCAD's
+ * preview); leaves without a
  * colour get OpenSCAD's default face colour (Cornfield, #f9d72c).
  *
  * Modifiers: '*' drops the node (its subtree is not looked at); '%' keeps

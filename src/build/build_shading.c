@@ -64,7 +64,7 @@ sc_status build_material(shading *s, const model_node *n, int emit, uint32_t *ma
     if (index == UINT32_MAX)
         return err_nomem(error, NULL);
     *material = index;
-    if (n->u.material->has_color) {
+    if (color && n->u.material->has_color) {
         memcpy(color, n->u.material->color, sizeof n->u.material->color);
         color[3] = 1;
     }

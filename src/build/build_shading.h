@@ -34,7 +34,8 @@ void build_camera(shading *s, const model_node *n, int emit);
 void build_background(shading *s, const model_node *n, int emit);
 
 /* material: adds a material (when emit) and makes it the one its children
- * inherit (*material); a given colour replaces color (RGBA, alpha 1). */
+ * inherit (*material); a given colour replaces color (RGBA, alpha 1),
+ * unless color is NULL (a colour above it is set and wins). */
 sc_status build_material(shading *s, const model_node *n, int emit, uint32_t *material,
                          float color[4], sc_error *error);
 

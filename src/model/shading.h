@@ -9,7 +9,7 @@
  * (csg_leaf.material). Index 0 is the default material, the one leaves
  * outside any material() node get. A material's base colour is not here: it
  * is the leaf's colour, so that material(color = ...) and OpenSCAD's
- * color() set the same thing and the innermost of them wins.
+ * color() set the same thing and the outermost of them wins.
  *
  * The record also carries the parts OpenSCAD's preview draws besides the
  * solid: the '#' (highlight) and '%' (background) subtrees, as trees of
