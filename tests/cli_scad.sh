@@ -43,6 +43,12 @@ fails_with() {
 
 printf 'cube(;\n' >bad.scad
 fails_with bad.scad "bad.scad:1:1: error: Parser error: syntax error"
+# An error at the end of the source: OpenSCAD puts it on the line it
+# appends (two past the end); it is the source's last line.
+printf 'cube(5);\ntranslate([1, 2, 3]) sphere(2)\ncube(3)\n' >unended.scad
+fails_with unended.scad "unended.scad:3:1: error: Parser error: syntax error at the end of the file"
+printf 'cube(5);\nsphere(2)' >unended2.scad
+fails_with unended2.scad "unended2.scad:2:1: error: Parser error: syntax error at the end of the file"
 
 # OpenSCAD's first error at its own position: in an included file, a lexer
 # error before the parser's, and from another directory a path relative to
@@ -54,7 +60,7 @@ fails_with main.scad "sub/part.scad:5:1: error: Parser error: syntax error"
 printf 'cube(1);\nname = "open;\n' >string.scad
 (cd sub && "$bin" render ../string.scad -o ../string.png -q 2>../err.txt)
 case "$(cat err.txt)" in
-"../string.scad:"*": error: Parser error: Unterminated string") ;;
+"../string.scad:2:1: error: Parser error: Unterminated string at the end of the file") ;;
 *) fail "string.scad: got '$(cat err.txt)'" ;;
 esac
 grep -q "spancast-\|\.csg" err.txt && fail "string.scad: a temporary name: $(cat err.txt)"
@@ -94,6 +100,10 @@ warns_with() {
     [ "$(cat err.txt)" = "$2" ] || fail "$1: got '$(cat err.txt)'"
     [ -e "$1.png" ] || fail "$1: no image was written"
 }
+# echo() output, as OpenSCAD prints it.
+printf 'echo("hello", 42);\ncube(1);\necho(size = 3);\n' >echo.scad
+warns_with echo.scad 'ECHO: "hello", 42
+ECHO: size = 3'
 printf 'include <nope.scad>\ncube(1);\n' >noinc.scad
 warns_with noinc.scad "noinc.scad: warning: Can't open include file 'nope.scad'."
 # OpenSCAD's notes of a deprecated form are warnings too.
@@ -225,6 +235,15 @@ rc=$?
     fail "info d.scad -D 'other=nothing' failed"
 [ "$(cat err.txt)" = "<command-line>: warning: -D 'other=nothing': Ignoring unknown variable 'nothing'" ] ||
     fail "info d.scad -D 'other=nothing': got '$(cat err.txt)'"
+# OpenSCAD appends the settings to each use'd library too, and says so for
+# each time it evaluates one, past the library's end: said once, of the
+# setting.
+printf 'module peg() cylinder(h = 1, r = 1);\nfunction gap() = 8;\n' >lib.scad
+printf 'use <lib.scad>\nfor (i = [0:4]) translate([i * gap(), 0, 0]) peg();\n' >uses.scad
+"$bin" info uses.scad -D 'other=nothing' >/dev/null 2>err.txt ||
+    fail "info uses.scad -D 'other=nothing' failed"
+[ "$(cat err.txt)" = "<command-line>: warning: -D 'other=nothing': Ignoring unknown variable 'nothing'" ] ||
+    fail "info uses.scad -D 'other=nothing': got '$(cat err.txt)'"
 [ -z "$(ls -A "$work/tmp")" ] || fail "temporary files left: $(ls -A "$work/tmp")"
 
 # spancast-mpi converts once: -D reaches it, the .csg beyond the export is

@@ -169,11 +169,66 @@ static int openscad_position(const char *text, sc_error *error)
  * path: as the user named it) point. OpenSCAD 2021.01 appends the -D
  * settings to the source's text, after a line of their own, one per line
  * ("\n\x03\n" then "NAME=VALUE;\n" each): the first is on line
- * newlines + 3, where newlines counts the source's line breaks. */
+ * newlines + 3, where newlines counts the source's line breaks. It does so
+ * for each use'd library too, whose messages about the settings then
+ * point past its end, once for each time it is evaluated. */
 typedef struct source_lines {
     const char *source, *path;
     long first_define; /* 0 until counted; -1 when the source cannot be read */
+    long last_line;    /* the source's last line (at least 1) */
+    /* the settings' messages printed from the libraries, printed once */
+    char said[8][SC_ERROR_MESSAGE_MAX];
+    int said_count;
 } source_lines;
+
+/* The line breaks of the file at path, and its last line (at least 1);
+ * 0 when it cannot be read. */
+static int count_lines(const char *path, long *newlines, long *last_line)
+{
+    FILE *f = fopen(path, "rb");
+    if (!f)
+        return 0;
+    long n = 0;
+    int c, last = '\n';
+    while ((c = getc(f)) != EOF) {
+        n += c == '\n';
+        last = c;
+    }
+    fclose(f);
+    *newlines = n;
+    *last_line = n + (last != '\n');
+    if (*last_line < 1)
+        *last_line = 1;
+    return 1;
+}
+
+/* Puts a position past the end of a file whose text OpenSCAD gave the -D
+ * settings (newlines: its line breaks; last_line: its last line) on the
+ * setting there, as a command-line error, or, on the lines OpenSCAD adds
+ * before them, at the end of the file: returns 1 when moved. */
+static int place_past_end(long newlines, long last_line, sc_error *error)
+{
+    long k = error->line - (newlines + 3);
+    if (k >= 0 && k < define_count) {
+        char message[SC_ERROR_MESSAGE_MAX];
+        snprintf(message, sizeof message, "%s", error->message);
+        snprintf(error->message, sizeof error->message, "-D '%.100s': %.400s", defines[k],
+                 message);
+        snprintf(error->file, sizeof error->file, "<command-line>");
+        error->line = 0;
+        error->column = 0;
+        return 1;
+    }
+    if (error->line > last_line) {
+        size_t n = strlen(error->message);
+        snprintf(error->message + n, sizeof error->message - n,
+                 " at the end of the file");
+        error->line = (int)last_line;
+        error->column = 1;
+        return 1;
+    }
+    return 0;
+}
 
 /* Names another file (a use'd or include'd library) at OpenSCAD's position
  * as the working directory reaches it: OpenSCAD 2021.01 names a file
@@ -184,13 +239,18 @@ typedef struct source_lines {
 static void place_other(const source_lines *at, sc_error *error)
 {
     const char *slash = strrchr(at->path, '/');
-    if (!slash || error->file[0] == '/' || !strncmp(error->message, "Parser error", 12))
-        return;
-    char name[SC_ERROR_FILE_MAX];
-    snprintf(name, sizeof name, "%s", error->file);
-    if ((size_t)snprintf(error->file, sizeof error->file, "%.*s/%s",
-                         (int)(slash - at->path), at->path, name) >= sizeof error->file)
-        snprintf(error->file, sizeof error->file, "%s", name); /* too long: as given */
+    if (slash && error->file[0] != '/' && strncmp(error->message, "Parser error", 12)) {
+        char name[SC_ERROR_FILE_MAX];
+        snprintf(name, sizeof name, "%s", error->file);
+        if ((size_t)snprintf(error->file, sizeof error->file, "%.*s/%s",
+                             (int)(slash - at->path), at->path,
+                             name) >= sizeof error->file)
+            snprintf(error->file, sizeof error->file, "%s",
+                     name); /* too long: as given */
+    }
+    long newlines, last_line;
+    if (count_lines(error->file, &newlines, &last_line))
+        place_past_end(newlines, last_line, error);
 }
 
 /* Puts a position OpenSCAD gave in the source on it as the user named it
@@ -213,29 +273,29 @@ static void place_position(source_lines *at, sc_error *error)
         return;
     }
     if (at->first_define == 0) {
-        at->first_define = -1;
-        FILE *f = fopen(at->source, "rb");
-        if (f) {
-            long newlines = 0;
-            int c;
-            while ((c = getc(f)) != EOF)
-                newlines += c == '\n';
-            fclose(f);
-            at->first_define = newlines + 3;
-        }
+        long newlines;
+        at->first_define =
+            count_lines(at->source, &newlines, &at->last_line) ? newlines + 3 : -1;
     }
-    long k = at->first_define > 0 ? error->line - at->first_define : -1;
-    if (k >= 0 && k < define_count) {
-        char message[SC_ERROR_MESSAGE_MAX];
-        snprintf(message, sizeof message, "%s", error->message);
-        snprintf(error->message, sizeof error->message, "-D '%.100s': %.400s", defines[k],
-                 message);
-        snprintf(error->file, sizeof error->file, "<command-line>");
-        error->line = 0;
-        error->column = 0;
-        return;
-    }
-    snprintf(error->file, sizeof error->file, "%s", at->path);
+    if (at->first_define > 0)
+        place_past_end(at->first_define - 3, at->last_line, error);
+    if (strcmp(error->file, "<command-line>") != 0)
+        snprintf(error->file, sizeof error->file, "%s", at->path);
+}
+
+/* Whether a warning put on the -D settings was printed already (OpenSCAD
+ * gives it again for each library and each time it is evaluated); notes
+ * it when not. */
+static int said_before(source_lines *at, const sc_error *w)
+{
+    if (strcmp(w->file, "<command-line>") != 0)
+        return 0;
+    for (int i = 0; i < at->said_count; i++)
+        if (!strcmp(at->said[i], w->message))
+            return 1;
+    if (at->said_count < (int)(sizeof at->said / sizeof at->said[0]))
+        snprintf(at->said[at->said_count++], sizeof at->said[0], "%s", w->message);
+    return 0;
 }
 
 /* OpenSCAD's report on the conversion of path, from its log at log_path.
@@ -270,6 +330,12 @@ static sc_status openscad_log(const char *log_path, source_lines *at, int failed
             /* OpenSCAD's notes of a deprecated form are warnings that
              * --hardwarnings leaves alone. */
             int is_deprecated = !strncmp(line, "DEPRECATED: ", 12) && line[12];
+            /* echo() output, as OpenSCAD prints it, in order with the
+             * warnings; none after the error that stops the conversion */
+            if (!strncmp(line, "ECHO: ", 6) && !first[0]) {
+                fprintf(stderr, "%s\n", line);
+                continue;
+            }
             const char *text = line + (is_error ? 7 : is_warning ? 9 : 12);
             if (!first[0] && (is_error || (strict && is_warning))) {
                 snprintf(first, sizeof first, "%s", text);
@@ -279,6 +345,8 @@ static sc_status openscad_log(const char *log_path, source_lines *at, int failed
                 memset(&w, 0, sizeof w);
                 if (openscad_position(text, &w)) {
                     place_position(at, &w);
+                    if (said_before(at, &w))
+                        continue;
                     if (w.line > 0)
                         fprintf(stderr, "%s:%d:%d: warning: %s\n", w.file, w.line,
                                 w.column, w.message);
@@ -660,7 +728,7 @@ static sc_status convert(const char *path, const double *time, int strict, char 
             error->status = st = SC_ERR_CANCELLED;
             snprintf(error->message, sizeof error->message, "interrupted");
         } else {
-            source_lines at = {source, path, 0};
+            source_lines at = {source, path, 0, 1, {{0}}, 0};
             st = openscad_log(log, &at, !WIFEXITED(status) || WEXITSTATUS(status) != 0,
                               strict, error);
         }
