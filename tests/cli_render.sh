@@ -91,6 +91,24 @@ rc=$?
 [ "$rc" = 2 ] || fail "bad mask name exited $rc"
 cmp -s out.png keep.png || fail "a rejected command changed out.png"
 
+# an existing output keeps its mode, and a symbolic link stays one: the
+# file it names is replaced
+check
+mkdir -p real
+cp keep.png real/target.png
+chmod 600 real/target.png
+ln -sf real/target.png link.png
+"$bin" render m.csg -o link.png --imgsize=9,7 -q || fail "render through a link"
+[ -L link.png ] || fail "the output link was replaced by a file"
+cmp -s real/target.png keep.png && fail "the file the link names was not written"
+[ "$(stat -c %a real/target.png)" = 600 ] ||
+    fail "the linked file's mode became $(stat -c %a real/target.png)"
+[ "$(ls -A real)" = target.png ] || fail "the link's folder holds $(ls -A real)"
+cp keep.png private.png
+chmod 640 private.png
+"$bin" render m.csg -o private.png --imgsize=9,7 -q || fail "render over private.png"
+[ "$(stat -c %a private.png)" = 640 ] || fail "private.png's mode became $(stat -c %a private.png)"
+
 # unwritable destinations
 check
 "$bin" render m.csg -o nodir/out.png --imgsize=8,8 2>stderr.txt

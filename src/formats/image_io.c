@@ -10,8 +10,10 @@
  * so that OpenImageIO still picks the format from the extension, and only a
  * complete file is renamed over the target. On any failure the temporary is
  * removed and an existing target is left as it was. The temporary is created
- * with O_EXCL and mode 0666 (less the umask), so the final file has the
- * permissions a plain create would give it.
+ * with O_EXCL and mode 0666 (less the umask), so a new file has the
+ * permissions a plain create would give it; an existing one keeps its own.
+ * A target that is a symbolic link to a file is written through: the file
+ * it names is replaced, and the link stays (output_target).
  *
  * Cancellation: the framebuffer carries the caller's cancel flag (set, for
  * instance, by the command line's SIGINT handler). The writer polls it before
@@ -24,17 +26,19 @@
  * Tiled outputs (image_stream.h) take the same temporary and rename, with
  * the tiles written into the temporary as they arrive.
  */
-#define _POSIX_C_SOURCE 200809L
+#define _XOPEN_SOURCE 700
 
 #include "formats/image_io.h"
 
 #include <errno.h>
 #include <fcntl.h>
+#include <limits.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <time.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include "base/error.h"
@@ -142,16 +146,42 @@ static sc_status check(const char *path, imgio_kind kind, sc_error *error)
     return SC_OK;
 }
 
-/* Creates an empty temporary file next to path; returns its name (malloc'd,
- * the caller frees it), or NULL with errno set. */
-static char *create_temporary(const char *path)
+/* The file a write to path replaces (malloc'd; NULL when memory runs
+ * out): the file a symbolic link names, so that the link stays a link,
+ * else path itself. */
+static char *output_target(const char *path)
 {
-    const char *slash = strrchr(path, '/');
-    size_t folder_len = slash ? (size_t)(slash + 1 - path) : 0;
-    const char *name = path + folder_len;
-    const char *dot = strrchr(name, '.'); /* check() made sure there is one */
-    size_t stem_len = (size_t)(dot - name);
-    size_t size = strlen(path) + sizeof "/..tmp-123456";
+    struct stat st;
+    char *real = NULL;
+    if (lstat(path, &st) == 0 && S_ISLNK(st.st_mode))
+        real = realpath(path, NULL); /* NULL for a dangling link: replaced */
+    return real ? real : strdup(path);
+}
+
+/* Moves the complete temporary tmp over target, with the mode of the file
+ * it replaces; 0 with errno set on failure. */
+static int replace_target(const char *tmp, const char *target)
+{
+    struct stat st;
+    if (stat(target, &st) == 0 && S_ISREG(st.st_mode) &&
+        chmod(tmp, st.st_mode & 07777) != 0)
+        return 0;
+    return rename(tmp, target) == 0;
+}
+
+/* Creates an empty temporary file next to target, with the extension of
+ * path (the name the user gave, which picks the format); returns its name
+ * (malloc'd, the caller frees it), or NULL with errno set. */
+static char *create_temporary(const char *target, const char *path)
+{
+    const char *slash = strrchr(target, '/');
+    size_t folder_len = slash ? (size_t)(slash + 1 - target) : 0;
+    const char *name = target + folder_len;
+    const char *name_dot = strrchr(name, '.');
+    size_t stem_len = name_dot ? (size_t)(name_dot - name) : strlen(name);
+    const char *user_name = strrchr(path, '/') ? strrchr(path, '/') + 1 : path;
+    const char *dot = strrchr(user_name, '.'); /* check() made sure there is one */
+    size_t size = strlen(target) + strlen(dot) + sizeof "/..tmp-123456";
     char *tmp = malloc(size);
     if (!tmp) {
         errno = ENOMEM;
@@ -176,7 +206,7 @@ static char *create_temporary(const char *path)
             z /= 36;
         }
         tag[6] = '\0';
-        snprintf(tmp, size, "%.*s.%.*s.tmp-%s%s", (int)folder_len, path, (int)stem_len,
+        snprintf(tmp, size, "%.*s.%.*s.tmp-%s%s", (int)folder_len, target, (int)stem_len,
                  name, tag, dot);
         int fd = open(tmp, O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
         if (fd >= 0) {
@@ -215,11 +245,14 @@ static sc_status write_image(const char *path, imgio_kind kind, const imgio_imag
     if (back == BACKEND_PLUGIN && !imgio_plugin_open(&plugin, failure, sizeof failure))
         return err_set(error, SC_ERR_IO, NULL, "cannot write '%s': %s", path, failure);
 
-    char *tmp = create_temporary(path);
+    char *target = output_target(path);
+    char *tmp = target ? create_temporary(target, path) : NULL;
     if (!tmp) {
+        int code = target ? errno : ENOMEM;
+        free(target);
         imgio_plugin_close(&plugin);
         return err_set(error, SC_ERR_IO, NULL, "cannot write '%s': %s", path,
-                       strerror(errno));
+                       strerror(code));
     }
     /* Loading a format's library may take a while: look at the flag again
      * before starting a file that would have to be finished. */
@@ -236,12 +269,14 @@ static sc_status write_image(const char *path, imgio_kind kind, const imgio_imag
     if (cancelled(cancel)) {
         remove(tmp);
         free(tmp);
+        free(target);
         return err_set(error, SC_ERR_CANCELLED, NULL, "interrupted");
     }
-    if (ok && rename(tmp, path) != 0) {
+    if (ok && !replace_target(tmp, target)) {
         ok = 0;
         snprintf(failure, sizeof failure, "%s", strerror(errno));
     }
+    free(target);
     if (!ok) {
         remove(tmp);
         free(tmp);
@@ -384,6 +419,7 @@ sc_status sc_framebuffer_write_id(const sc_framebuffer *fb, const char *path,
 struct imgio_stream {
     imgio_kind kind;
     char *path, *tmp;
+    char *target;           /* the file replaced (output_target) */
     imgio_exr_tiles *tiles; /* a tiled EXR, or */
     imgio_tiff_tiles *tiff; /* a tiled TIFF, through */
     imgio_tiff_plugin tiff_plugin;
@@ -411,6 +447,7 @@ void imgio_stream_abandon(imgio_stream *s)
         remove(s->tmp);
     free(s->tmp);
     free(s->path);
+    free(s->target);
     free(s->ids);
     free(s);
 }
@@ -429,7 +466,7 @@ sc_status imgio_stream_open(const char *path, imgio_kind kind, int width, int he
                        "that way",
                        path);
     imgio_stream *s = calloc(1, sizeof *s);
-    if (!s || !(s->path = strdup(path)) ||
+    if (!s || !(s->path = strdup(path)) || !(s->target = output_target(path)) ||
         (kind == IMGIO_ID &&
          !(s->ids = malloc((size_t)tile * (size_t)tile * sizeof *s->ids)))) {
         imgio_stream_abandon(s);
@@ -437,7 +474,7 @@ sc_status imgio_stream_open(const char *path, imgio_kind kind, int width, int he
     }
     s->kind = kind;
     s->tile = tile;
-    s->tmp = create_temporary(path);
+    s->tmp = create_temporary(s->target, path);
     if (!s->tmp) {
         int code = errno;
         imgio_stream_abandon(s);
@@ -519,7 +556,7 @@ sc_status imgio_stream_finish(imgio_stream *s, const volatile sig_atomic_t *canc
         st = err_set(error, SC_ERR_CANCELLED, NULL, "interrupted");
     else if (!ok)
         st = err_set(error, SC_ERR_IO, NULL, "cannot write '%s': %s", s->path, failure);
-    else if (rename(s->tmp, s->path) != 0)
+    else if (!replace_target(s->tmp, s->target))
         st = err_set(error, SC_ERR_IO, NULL, "cannot write '%s': %s", s->path,
                      strerror(errno));
     else {
