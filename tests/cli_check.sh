@@ -230,6 +230,14 @@ run 0 self.txt compare drilled.csg drilled.csg -q
 check
 tail -n 1 self.txt | grep -qx same || fail "compare with itself: $(cat self.txt)"
 
+# Two empty models: the same, with nothing to integrate and nothing that
+# fell short of the tolerance.
+printf '' >empty.csg
+run 0 empty.txt compare empty.csg empty.csg -q
+check
+tail -n 1 empty.txt | grep -qx same || fail "compare empty models: $(cat empty.txt)"
+grep -q "not reached" empty.txt && fail "compare empty models: $(cat empty.txt)"
+
 # A plate against the same plate 1e-6 higher: the difference is two sheets
 # 1e-6 thick, 0.01 each, 2e-6 of the volume; the lines along x and y lie
 # between them and see nothing, those along z cross them. The estimate is

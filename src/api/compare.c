@@ -158,6 +158,7 @@ static sc_status compare_scenes(const sc_scene *a, const sc_scene *b,
     if (!a || !b || !options || !out)
         return err_set(error, SC_ERR_ARGUMENT, NULL, "no scenes, options or result");
     memset(out, 0, sizeof *out);
+    out->converged = 1; /* nothing to integrate: nothing falls short */
     if (!(options->tolerance > 0 && options->tolerance < 1))
         return err_set(error, SC_ERR_ARGUMENT, NULL,
                        "tolerance must lie between 0 and 1 (got %g)", options->tolerance);

@@ -110,13 +110,14 @@ static double middle_within(double c, double h, double lo, double hi)
 }
 
 /* Whether the rectangle of centre (u, v) and half sizes hu, hv reaches
- * past the support (g->support), and its area within it. */
+ * past the support (g->support). */
 static int clipped(const quad_grid *g, double u, double v, double hu, double hv)
 {
     return u - hu < g->support[0] || v - hv < g->support[1] || u + hu > g->support[2] ||
            v + hv > g->support[3];
 }
 
+/* The area of that rectangle within the support. */
 static double support_area(const quad_grid *g, double u, double v, double hu, double hv)
 {
     return within(u, hu, g->support[0], g->support[2]) *
