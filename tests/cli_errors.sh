@@ -106,6 +106,8 @@ expect_usage "camera distance must be positive (got -80)" \
 # output names are checked before the model is read
 expect_usage "cannot write 'x.foo': unknown image format" render missing.csg -o x.foo
 expect_usage "cannot write 'x': unknown image format" render m.csg -o x
+mkdir -p somedir
+expect_usage "cannot write 'somedir': it is a folder (an image is a file with an extension: .png, .exr, ...)" render m.csg -o somedir
 expect_usage "cannot write 'm.foo': unknown image format" render m.csg -o x.png --mask m.foo
 expect_usage "cannot write depth to 'd.png': depth needs a floating-point format (.exr or .tif)" \
     render m.csg -o x.png --depth=d.png

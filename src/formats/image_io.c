@@ -134,6 +134,12 @@ static sc_status check(const char *path, imgio_kind kind, sc_error *error)
         known = plugin.writable(path);
         imgio_plugin_close(&plugin);
     }
+    struct stat st;
+    if (!known && stat(path, &st) == 0 && S_ISDIR(st.st_mode))
+        return err_set(error, SC_ERR_ARGUMENT, NULL,
+                       "cannot write '%s': it is a folder (an image is a file with an "
+                       "extension: .png, .exr, ...)",
+                       path);
     if (!known)
         return err_set(error, SC_ERR_ARGUMENT, NULL,
                        "cannot write '%s': unknown image format", path);

@@ -40,10 +40,9 @@ static int clipper_out_of_range(int64_t c)
 
 /* The points converted (clipper_coord) into pt, turned round when the
  * polygon is not sanitized and Clipper's Orientation (its Area in double)
- * finds them clockwise, repeats
- * at the end dropped (those equal to the first, then those equal to the
- * one before), an outline of fewer than 3 points left untested, then each
- * point's RangeTest. */
+ * finds them clockwise, repeats at the end dropped (those equal to the
+ * first, then those equal to the one before), an outline of fewer than 3
+ * points left untested, then each point's RangeTest. */
 int twod_clipper_outline(const double *xy, const uint32_t *index, uint32_t n,
                          int sanitized, int64_t *pt)
 {
