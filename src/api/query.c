@@ -224,11 +224,10 @@ sc_status sc_scene_inside(const sc_scene *scene, const double p[3], int *where,
                                          {-0.61923, 0.43762, 0.65189}};
     int votes = 0;
     for (int line = 0; line < 7; line++) {
-        int axis = line;
         csg_ray r;
         r.o = v3(p[0], p[1], p[2]);
         r.d = line < 3
-                  ? v3(axis == 0, axis == 1, axis == 2)
+                  ? v3(line == 0, line == 1, line == 2)
                   : v3(oblique[line - 3][0], oblique[line - 3][1], oblique[line - 3][2]);
         r.tmin = -INFINITY; /* the whole line: no clipped ends near p */
         r.tmax = INFINITY;

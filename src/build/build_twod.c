@@ -961,7 +961,7 @@ static sc_status transform(const eval *e, const model_node *n, double m[2][3],
     }
     /* OpenSCAD sanitizes a sanitized region turned over; outside the
      * clipper's range it moves it as it is, and so does the next node
-     * unless that is a clipper's (which refuses it: range_error) */
+     * unless that is a clipper's (which refuses it: clip_status) */
     if (!(r->sanitized && det <= 0 && r->contour_count))
         return SC_OK;
     sc_status st = admit_outlines(e, n, r);

@@ -179,34 +179,38 @@ typedef struct source_lines {
     /* the settings' messages printed from the libraries, printed once */
     char said[8][SC_ERROR_MESSAGE_MAX];
     int said_count;
+    /* the last other file counted (place_other): its name, its line
+     * breaks and last line, or counted_ok 0 when it could not be read */
+    char counted[SC_ERROR_FILE_MAX];
+    long counted_newlines, counted_last_line;
+    int counted_ok;
 } source_lines;
 
 /* The line breaks of the file at path, and its last line (at least 1);
  * 0 when it cannot be read. */
 static int count_lines(const char *path, long *newlines, long *last_line)
 {
-    FILE *f = fopen(path, "rb");
-    if (!f)
+    size_t size;
+    const char *why;
+    char *text = file_read(path, SIZE_MAX / 2, &size, &why);
+    if (!text)
         return 0;
     long n = 0;
-    int c, last = '\n';
-    while ((c = getc(f)) != EOF) {
-        n += c == '\n';
-        last = c;
-    }
-    fclose(f);
+    for (size_t i = 0; i < size; i++)
+        n += text[i] == '\n';
     *newlines = n;
-    *last_line = n + (last != '\n');
+    *last_line = n + (size > 0 && text[size - 1] != '\n');
     if (*last_line < 1)
         *last_line = 1;
+    free(text);
     return 1;
 }
 
 /* Puts a position past the end of a file whose text OpenSCAD gave the -D
  * settings (newlines: its line breaks; last_line: its last line) on the
  * setting there, as a command-line error, or, on the lines OpenSCAD adds
- * before them, at the end of the file: returns 1 when moved. */
-static int place_past_end(long newlines, long last_line, sc_error *error)
+ * before them, at the end of the file. */
+static void place_past_end(long newlines, long last_line, sc_error *error)
 {
     long k = error->line - (newlines + 3);
     if (k >= 0 && k < define_count) {
@@ -217,7 +221,7 @@ static int place_past_end(long newlines, long last_line, sc_error *error)
         snprintf(error->file, sizeof error->file, "<command-line>");
         error->line = 0;
         error->column = 0;
-        return 1;
+        return;
     }
     if (error->line > last_line) {
         size_t n = strlen(error->message);
@@ -225,9 +229,7 @@ static int place_past_end(long newlines, long last_line, sc_error *error)
                  " at the end of the file");
         error->line = (int)last_line;
         error->column = 1;
-        return 1;
     }
-    return 0;
 }
 
 /* Names another file (a use'd or include'd library) at OpenSCAD's position
@@ -236,7 +238,7 @@ static int place_past_end(long newlines, long last_line, sc_error *error)
  * the source's folder in its other messages ("lib/x.scad" for the library
  * beside a source named "models/main.scad", which is "models/lib/x.scad"
  * from here). */
-static void place_other(const source_lines *at, sc_error *error)
+static void place_other(source_lines *at, sc_error *error)
 {
     const char *slash = strrchr(at->path, '/');
     if (slash && error->file[0] != '/' && strncmp(error->message, "Parser error", 12)) {
@@ -248,9 +250,13 @@ static void place_other(const source_lines *at, sc_error *error)
             snprintf(error->file, sizeof error->file, "%s",
                      name); /* too long: as given */
     }
-    long newlines, last_line;
-    if (count_lines(error->file, &newlines, &last_line))
-        place_past_end(newlines, last_line, error);
+    if (strcmp(at->counted, error->file) != 0) { /* a library's warnings come in a row */
+        snprintf(at->counted, sizeof at->counted, "%s", error->file);
+        at->counted_ok =
+            count_lines(error->file, &at->counted_newlines, &at->counted_last_line);
+    }
+    if (at->counted_ok)
+        place_past_end(at->counted_newlines, at->counted_last_line, error);
 }
 
 /* Puts a position OpenSCAD gave in the source on it as the user named it
@@ -728,7 +734,7 @@ static sc_status convert(const char *path, const double *time, int strict, char 
             error->status = st = SC_ERR_CANCELLED;
             snprintf(error->message, sizeof error->message, "interrupted");
         } else {
-            source_lines at = {source, path, 0, 1, {{0}}, 0};
+            source_lines at = {source, path, 0, 1, {{0}}, 0, "", 0, 0, 0};
             st = openscad_log(log, &at, !WIFEXITED(status) || WEXITSTATUS(status) != 0,
                               strict, error);
         }
