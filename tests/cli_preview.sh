@@ -159,5 +159,42 @@ while IFS= read -r name; do
 done < <(echo "$names" | sed "s/', '/\n/g; s/^'//; s/'$//")
 [ "$count" -ge 11 ] || fail "only $count colour schemes found (OpenSCAD ships 11)"
 
+# ---- translucent parts against OpenSCAD's preview ----
+# OpenSCAD 2021.01 draws a translucent lone object (a '#' or '%' part, a
+# colour with alpha) rear faces first, then front faces; a product of
+# several objects only where OpenCSG's depth pass keeps it. Each scene is
+# converted by OpenSCAD and compared with its own preview image.
+scenes=(
+    'difference() { cube(20, center = true); #cylinder(r = 5, h = 30, center = true); }'
+    'cube(5); %translate([8, 0, 0]) cube(5);'
+    'color([1, 0, 0, 0.5]) cube(5); translate([8, 0, 0]) cube(5);'
+    '%cube(5); %translate([0, 10, 0]) cube(5); translate([0, -12, 0]) sphere(3);'
+    'difference() { color([0, 0, 1, 0.4]) cube(10, center = true); sphere(6); }'
+    '#cylinder(r = 5, h = 10);'
+)
+for k in "${!scenes[@]}"; do
+    check
+    echo "${scenes[$k]}" >"part$k.scad"
+    openscad -o "part$k.csg" "part$k.scad" >/dev/null 2>&1 || {
+        fail "scene $k: openscad could not export it"
+        continue
+    }
+    openscad_png -o "os_part$k.png" --imgsize=160,120 "part$k.scad"
+    [ -s "os_part$k.png" ] || {
+        fail "scene $k: openscad wrote no image"
+        continue
+    }
+    "$bin" render "part$k.csg" -o "sc_part$k.png" -q --imgsize=160,120 --faithful \
+        --lighting=openscad --preview || {
+        fail "scene $k: spancast failed"
+        continue
+    }
+    report=$(idiff -fail 0.004 "os_part$k.png" "sc_part$k.png" 2>&1)
+    differ=$(echo "$report" | grep -Eo '[0-9]+ pixels .* over 0\.004' | grep -Eo '^[0-9]+')
+    differ=${differ:-0}
+    [ "$differ" -le "$limit" ] ||
+        fail "scene $k (${scenes[$k]}): $differ pixels differ from OpenSCAD's by more than 1/255"
+done
+
 echo "$checks checks, $fails failures"
 [ "$fails" = 0 ]

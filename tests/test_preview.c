@@ -8,6 +8,11 @@
  * from other renders of the same camera (the same file without the
  * modifier, or with the colour opaque) and the blending rule (display
  * values, c = a part + (1 - a) behind), never written down as numbers.
+ * A lone leaf (its own product in OpenSCAD's normal form) is drawn rear
+ * faces first, then front faces, as OpenSCAD 2021.01 draws a translucent
+ * one: seen from above through a box or a cylinder, its bottom, then its
+ * top, both lit alike by OpenSCAD's light (which does not tell a normal
+ * from its opposite), so that what lies behind keeps (1 - a)^2.
  */
 #include <setjmp.h>
 #include <stdarg.h>
@@ -132,10 +137,10 @@ static const char drilled[] =
 /* Rounding of float buffers and the sRGB conversions, display values. */
 #define BLEND_TOLERANCE 1e-4
 
-/* A '#' cylinder subtracted from a box: with --preview its top cap
- * (above the box) tints the hole translucent red, blended over what the
- * hole shows without it; nothing else changes, the AOVs not at all; and
- * without --preview the '#' changes nothing. */
+/* A '#' cylinder subtracted from a box: with --preview its bottom and
+ * top caps (below and above the box) tint the hole translucent red,
+ * blended over what the hole shows without it; nothing else changes, the
+ * AOVs not at all; and without --preview the '#' changes nothing. */
 static void test_highlight_in_hole(void **state)
 {
     (void)state;
@@ -143,10 +148,12 @@ static void test_highlight_in_hole(void **state)
     render_variants(drilled, "#", "", &v);
     const sc_framebuffer *shown = v.a, *without = v.b;
 
-    /* OpenSCAD's highlight: (255, 81, 81), alpha 128/255. The lit colour
-     * is 255/255 f and 81/255 f for an unknown light factor f, clamped to
-     * 1; green gives f, and red and blue must follow. */
+    /* OpenSCAD's highlight: (255, 81, 81), alpha 128/255, twice (the
+     * caps). The lit colour is 255/255 f and 81/255 f for an unknown light
+     * factor f, clamped to 1; green gives f, and red and blue must
+     * follow. */
     double a = 128 / 255.0, hr = 1, hg = 81 / 255.0;
+    double cover = a + (1 - a) * a; /* of the two caps; (1 - a)^2 shows through */
     double radius = 5 / pixel_size();
     int inside = 0;
     for (int j = 0; j < SIZE; j++)
@@ -167,10 +174,10 @@ static void test_highlight_in_hole(void **state)
                 under[k] = display(without, p, k);
                 got[k] = display(shown, p, k);
             }
-            double f = (got[1] - (1 - a) * under[1]) / (a * hg);
+            double f = (got[1] - (1 - cover) * under[1]) / (cover * hg);
             assert_true(f > 0.2 - 1e-3 && f < 1.2 + 1e-3);
-            double want_r = a * fmin(1.0, hr * f) + (1 - a) * under[0];
-            double want_b = a * fmin(1.0, hg * f) + (1 - a) * under[2];
+            double want_r = cover * fmin(1.0, hr * f) + (1 - cover) * under[0];
+            double want_b = cover * fmin(1.0, hg * f) + (1 - cover) * under[2];
             if (fabs(got[0] - want_r) > BLEND_TOLERANCE ||
                 fabs(got[2] - want_b) > BLEND_TOLERANCE)
                 fail_msg("pixel %d,%d: %.5f %.5f %.5f, expected %.5f %.5f (over %.5f "
@@ -191,7 +198,9 @@ static const char sphere_part[] =
 
 /* A '%' sphere half over a box changes no mask, depth or id pixel, and is
  * drawn translucent where it is: grey (OpenSCAD's 180, 180, 180, alpha
- * 128/255, lit) over what the pixel shows without it. */
+ * 128/255, lit) over what the pixel shows without it. Over the box its top
+ * alone is in front of the solid; beyond the box its bottom shows through
+ * its top, so the two grey layers leave (1 - a)^2 of the background. */
 static void test_background_changes_no_aov(void **state)
 {
     (void)state;
@@ -210,17 +219,28 @@ static void test_background_changes_no_aov(void **state)
     sc_framebuffer_release(solid);
 
     double a = 128 / 255.0, grey = 180 / 255.0;
-    /* Over the box (x = 8) and beyond it (x = 10.5): the sphere's top. */
-    const double xs[2] = {8, 10.5};
-    for (int k = 0; k < 2; k++) {
-        size_t p = pixel_at(xs[k], 0);
-        double f = (display(shown, p, 0) - (1 - a) * display(without, p, 0)) / (a * grey);
-        assert_true(f > 0.2 && f < 1.2 + 1e-3);
-        for (int c = 1; c < 3; c++) {
-            double want = a * fmin(1.0, grey * f) + (1 - a) * display(without, p, c);
-            assert_true(fabs(display(shown, p, c) - want) < BLEND_TOLERANCE);
-        }
+    /* Over the box (x = 8): the sphere's top. */
+    size_t p = pixel_at(8, 0);
+    double f = (display(shown, p, 0) - (1 - a) * display(without, p, 0)) / (a * grey);
+    assert_true(f > 0.2 && f < 1.2 + 1e-3);
+    for (int c = 1; c < 3; c++) {
+        double want = a * fmin(1.0, grey * f) + (1 - a) * display(without, p, c);
+        assert_true(fabs(display(shown, p, c) - want) < BLEND_TOLERANCE);
     }
+    /* Beyond it (x = 10.5): grey layers, whatever their light, add the
+     * same to each channel of the background's (1 - a)^2, which is not
+     * grey (Cornfield's). */
+    p = pixel_at(10.5, 0);
+    assert_true(fabs(display(without, p, 0) - display(without, p, 2)) > 0.05);
+    double added[3];
+    for (int c = 0; c < 3; c++)
+        added[c] = display(shown, p, c) - (1 - a) * (1 - a) * display(without, p, c);
+    for (int c = 1; c < 3; c++)
+        assert_true(fabs(added[c] - added[0]) < BLEND_TOLERANCE);
+    /* each layer lit by 0.2 to 1.2 of grey, clamped to 1 */
+    double cover = a + (1 - a) * a;
+    assert_true(added[0] > cover * 0.2 * grey - BLEND_TOLERANCE &&
+                added[0] < cover * fmin(1.0, 1.2 * grey) + BLEND_TOLERANCE);
     /* Away from the sphere nothing changes. */
     size_t far = pixel_at(-8, -8);
     assert_memory_equal(&shown->color[3 * far], &without->color[3 * far],
@@ -232,25 +252,46 @@ static const char alpha_cube[] = "color([0.2, 0.4, 0.9, %s]) {\n"
                                  "  cube(size = [20, 20, 10], center = true);\n"
                                  "}\n";
 
-/* A 50 % transparent cube over the background shows 0.5 of its opaque
- * colour and 0.5 of the background, on display values; without --preview
- * (OpenSCAD's render) it is opaque. */
+/* A 50 % transparent cube over the background, in OpenSCAD's light:
+ * alone, it shows its bottom behind its top, both in its opaque colour,
+ * over 0.25 of the background; subtracted from (a product with another
+ * leaf), OpenCSG keeps only its top, over 0.5 of the background. On
+ * display values. Without --preview (OpenSCAD's render) it is opaque. */
 static void test_alpha_blends(void **state)
 {
     (void)state;
     variants v;
-    render_variants(alpha_cube, "0.5", "1", &v);
-    const sc_framebuffer *blended = v.a, *solid = v.b;
-    size_t bg = pixel_at(-15, -15), centre = pixel_at(1, 1);
-    assert_int_equal(solid->mask[bg], 0);
-    assert_int_equal(solid->mask[centre], 255);
-    for (int k = 0; k < 3; k++) {
-        double want = 0.5 * display(solid, centre, k) + 0.5 * display(solid, bg, k);
-        double got = display(blended, centre, k);
-        if (fabs(got - want) > BLEND_TOLERANCE)
-            fail_msg("channel %d: %.6f, expected %.6f", k, got, want);
-    }
+    render_variants(alpha_cube, "0.5", "1", &v); /* checks the render */
     release_variants(&v);
+    static const char cut[] = "difference() {\n%s"
+                              "  cube(size = [1, 1, 1]);\n"
+                              "}\n";
+    const char *forms[2] = {"%s", cut};
+    const double behind[2] = {0.25, 0.5};
+    for (int form = 0; form < 2; form++) {
+        char text[1024], inner[512];
+        sc_render_options o;
+        options_above(&o, 1);
+        o.lighting = SC_LIGHTING_OPENSCAD;
+        snprintf(inner, sizeof inner, alpha_cube, "1");
+        snprintf(text, sizeof text, forms[form], inner);
+        sc_framebuffer *solid = render_options(text, &o);
+        snprintf(inner, sizeof inner, alpha_cube, "0.5");
+        snprintf(text, sizeof text, forms[form], inner);
+        sc_framebuffer *blended = render_options(text, &o);
+        size_t bg = pixel_at(-15, -15), centre = pixel_at(-3, -3);
+        assert_int_equal(solid->mask[bg], 0);
+        assert_int_equal(solid->mask[centre], 255);
+        for (int k = 0; k < 3; k++) {
+            double want = (1 - behind[form]) * display(solid, centre, k) +
+                          behind[form] * display(solid, bg, k);
+            double got = display(blended, centre, k);
+            if (fabs(got - want) > BLEND_TOLERANCE)
+                fail_msg("form %d, channel %d: %.6f, expected %.6f", form, k, got, want);
+        }
+        sc_framebuffer_release(solid);
+        sc_framebuffer_release(blended);
+    }
 }
 
 /* Parts and alpha at several samples a pixel, under a section cut: the

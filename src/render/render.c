@@ -34,21 +34,26 @@
  * the solid, then the '%' (background) and '#' (highlight) parts with
  * OpenGL blending, depth-tested against the solid (OpenCSGRenderer: the
  * parts are CSG products of their own drawn after the root's). Here the
- * parts are trees of their own (shading.overlay), each of which a sample's
- * ray meets at its first surface no farther than the solid's first hit
- * (within the query tolerance, so a '#' part that is also a face of the
- * solid shows on it); their surfaces, lit by OpenSCAD's preview light,
+ * parts are trees of their own (shading.overlay), whose surfaces a
+ * sample's ray meets no farther than the solid's first hit (within the
+ * query tolerance, so a '#' part that is also a face of the solid shows
+ * on it); those surfaces (chosen as below), lit by OpenSCAD's preview light,
  * are blended over the sample's colour from the back to the front: c =
  * a part + (1 - a) c. A '#' part is drawn in OpenSCAD's highlight colour
  * (255, 81, 81, alpha 128), a '%' part in its background colour (180, 180,
  * 180, alpha 128) unless the file coloured it (Renderer::getColor,
  * setColor). A solid whose leaves have colour alpha below 1 is drawn as
- * layers: every surface where the ray enters the solid, front to back,
- * each with its leaf's alpha, the background behind the last; surfaces
- * where the ray leaves are not drawn, as OpenCSG's depth pass keeps only
- * the nearest surface of each product. OpenSCAD blends in the order it
- * draws, which depends on the product; this front-to-back rule is the one
- * a depth-sorted draw would give, and does not depend on the file's order.
+ * layers, front to back, each with its leaf's alpha, the background
+ * behind the last. Which surfaces are layers follows OpenSCAD's draw of
+ * its products (the children of the top-level unions, shade.h's
+ * leaf_product): a lone leaf is drawn rear faces first, then front faces,
+ * so every surface of it is a layer; of a product of several leaves,
+ * OpenCSG's depth pass keeps the nearest, so the first surface where the
+ * ray enters it is. Parts take the same rule. OpenSCAD blends in the
+ * order it draws, which depends on the file; this front-to-back rule is
+ * the one a depth-sorted draw would give, and does not depend on the
+ * file's order. Tracing one tree, the rule misses the surfaces of one
+ * translucent leaf inside another, which OpenGL draws.
  * Blending, as OpenGL does it, is on display (sRGB) values. The AOVs are
  * the solid's first hit, untouched by either.
  *
@@ -280,25 +285,72 @@ static double hit_alpha(const shade_scene *s, const shade_hit *h)
     return s->leaf_alpha[h->hit.leaf];
 }
 
-/* The linear colour of a translucent solid along r (found): its entry
- * surfaces blended front to back on display values, the background
- * behind (see the file's comment). */
+/* A surface that a translucent walk draws: where, how opaque, and its
+ * lit colour on display values. */
+typedef struct layer {
+    double t, alpha, display[3];
+} layer;
+
+/* Most surfaces of one modifier part a sample blends. */
+#define RENDER_PART_LAYERS 16
+
+/* Walks the surfaces of s along ray from its first hit (hit; none when
+ * !found) up to the ray's tmax, front to back, and keeps in out (at most
+ * max) those OpenSCAD's preview draws (see the file's comment): every
+ * surface of a lone leaf, which OpenSCAD draws rear faces first, then
+ * front faces; of a product of several leaves, the first surface where
+ * the ray enters it, which OpenCSG's depth pass keeps. Stops once what it
+ * kept is opaque. Returns the count kept. */
+static int walk_layers(const render_ctx *c, const shade_scene *s, shade_thread *st,
+                       csg_ray ray, shade_hit hit, int found, layer *out, int max)
+{
+    uint32_t drawn[RENDER_MAX_LAYERS]; /* the products drawn */
+    int drawn_count = 0, n = 0;
+    double cover = 0;
+    for (int k = 0; k < RENDER_MAX_LAYERS && found && cover < 1 && n < max; k++) {
+        uint32_t product = s->leaf_product ? s->leaf_product[hit.hit.leaf] : CSG_EMPTY;
+        int draw;
+        if (product == CSG_EMPTY)
+            draw = !hit.hit.exiting;
+        else if (s->tree->nodes[product].op == CSG_LEAF)
+            draw = 1; /* a lone leaf: its rear faces too */
+        else {
+            draw = !hit.hit.exiting;
+            for (int q = 0; q < drawn_count && draw; q++)
+                draw = drawn[q] != product;
+            if (draw)
+                drawn[drawn_count++] = product;
+        }
+        if (draw) {
+            double lit[3];
+            shade_ray(s, st, &ray, &hit, 0, 1.0 / c->spp, lit);
+            out[n].t = hit.hit.t;
+            out[n].alpha = hit_alpha(s, &hit);
+            for (int q = 0; q < 3; q++)
+                out[n].display[q] = color_linear_to_srgb(lit[q]);
+            cover += (1 - cover) * out[n].alpha;
+            n++;
+        }
+        double t = hit.hit.t;
+        ray.tmin = t + hit_tolerance(s, &ray, t);
+        found = shade_first_hit(s, st, &ray, &hit);
+    }
+    return n;
+}
+
+/* The linear colour of a translucent solid along r (found): the surfaces
+ * walk_layers keeps blended front to back on display values, the
+ * background behind (see the file's comment). */
 static void translucent_color(const render_ctx *c, const render_view *v, shade_thread *st,
                               const view_ray *r, double rgb[3])
 {
+    layer layers[RENDER_MAX_LAYERS];
+    int n = walk_layers(c, &v->shade, st, r->ray, r->hit, 1, layers, RENDER_MAX_LAYERS);
     double sum[3] = {0, 0, 0}, cover = 0; /* premultiplied display values */
-    view_ray layer = *r;
-    for (int k = 0; k < RENDER_MAX_LAYERS && layer.found && cover < 1; k++) {
-        if (!layer.hit.hit.exiting) {
-            double a = hit_alpha(&v->shade, &layer.hit), lit[3];
-            shade_ray(&v->shade, st, &layer.ray, &layer.hit, 0, 1.0 / c->spp, lit);
-            for (int q = 0; q < 3; q++)
-                sum[q] += (1 - cover) * a * color_linear_to_srgb(lit[q]);
-            cover += (1 - cover) * a;
-        }
-        double t = layer.hit.hit.t;
-        layer.ray.tmin = t + hit_tolerance(&v->shade, &layer.ray, t);
-        layer.found = shade_first_hit(&v->shade, st, &layer.ray, &layer.hit);
+    for (int k = 0; k < n; k++) {
+        for (int q = 0; q < 3; q++)
+            sum[q] += (1 - cover) * layers[k].alpha * layers[k].display[q];
+        cover += (1 - cover) * layers[k].alpha;
     }
     for (int q = 0; q < 3; q++) {
         if (cover < 1)
@@ -307,39 +359,37 @@ static void translucent_color(const render_ctx *c, const render_view *v, shade_t
     }
 }
 
-/* Blends the view's modifier parts that r meets in front of the solid
- * over rgb (linear), from the back to the front. */
+/* Blends the surfaces of the view's modifier parts that r meets in front
+ * of the solid (walk_layers) over rgb (linear), from the back to the
+ * front. */
 static void blend_parts(const render_ctx *c, const render_view *v, shade_thread *st,
                         const view_ray *r, double rgb[3])
 {
     double tmax = INFINITY;
     if (r->found)
         tmax = r->hit.hit.t + hit_tolerance(&v->shade, &r->ray, r->hit.hit.t);
-    double t[SHADING_OVERLAYS], color[SHADING_OVERLAYS][3], alpha[SHADING_OVERLAYS];
+    layer layers[SHADING_OVERLAYS * RENDER_PART_LAYERS];
     int n = 0;
     for (int k = 0; k < v->part_count; k++) {
         csg_ray ray = r->ray;
         ray.tmax = tmax;
         shade_hit hit;
-        if (!shade_first_hit(&v->part[k], st, &ray, &hit))
-            continue;
-        shade_ray(&v->part[k], st, &ray, &hit, 0, 1.0 / c->spp, color[n]);
-        t[n] = hit.hit.t;
-        alpha[n] = hit_alpha(&v->part[k], &hit);
-        n++;
+        int found = shade_first_hit(&v->part[k], st, &ray, &hit);
+        n += walk_layers(c, &v->part[k], st, ray, hit, found, layers + n,
+                         RENDER_PART_LAYERS);
     }
     double out[3];
     for (int q = 0; q < 3; q++)
         out[q] = color_linear_to_srgb(rgb[q]);
     for (int done = 0; done < n; done++) {
-        int far = -1; /* the farthest part not blended yet */
+        int far = -1; /* the farthest layer not blended yet */
         for (int k = 0; k < n; k++)
-            if (alpha[k] >= 0 && (far < 0 || t[k] > t[far]))
+            if (layers[k].alpha >= 0 && (far < 0 || layers[k].t > layers[far].t))
                 far = k;
         for (int q = 0; q < 3; q++)
-            out[q] = alpha[far] * color_linear_to_srgb(color[far][q]) +
-                     (1 - alpha[far]) * out[q];
-        alpha[far] = -1;
+            out[q] = layers[far].alpha * layers[far].display[q] +
+                     (1 - layers[far].alpha) * out[q];
+        layers[far].alpha = -1;
     }
     if (n)
         for (int q = 0; q < 3; q++)

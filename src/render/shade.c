@@ -63,6 +63,46 @@ static int is_default_color(const float c[4])
     return c[0] == def[0] && c[1] == def[1] && c[2] == def[2];
 }
 
+/* Fills product (one per leaf; see shade_scene.leaf_product): OpenSCAD
+ * normalises the tree into a list of products, one for each child of the
+ * unions at its top (CSGTreeNormalizer), and draws each by itself. Nodes
+ * come children first, so going down the array meets a node's parents
+ * before it. Returns 0 when out of memory. */
+static int find_products(const csg_tree *tree, uint32_t *product)
+{
+    for (uint32_t i = 0; i < tree->leaf_count; i++)
+        product[i] = CSG_EMPTY;
+    if (tree->root == CSG_EMPTY)
+        return 1;
+    /* of each node: CSG_EMPTY unreached, top for a top-level union, else
+     * its product */
+    const uint32_t top = CSG_EMPTY - 1;
+    uint32_t *of = malloc(((size_t)tree->node_count + 1) * sizeof *of);
+    if (!of)
+        return 0;
+    for (uint32_t i = 0; i < tree->node_count; i++)
+        of[i] = CSG_EMPTY;
+    of[tree->root] = tree->nodes[tree->root].op == CSG_UNION ? top : tree->root;
+    for (uint32_t i = tree->node_count; i-- > 0;) {
+        const csg_node *n = &tree->nodes[i];
+        if (of[i] == CSG_EMPTY)
+            continue;
+        if (n->op == CSG_LEAF) {
+            product[n->leaf] = of[i];
+            continue;
+        }
+        for (uint32_t k = 0; k < n->child_count; k++) {
+            uint32_t c = tree->child_ids[n->first_child + k];
+            if (of[i] != top)
+                of[c] = of[i];
+            else
+                of[c] = tree->nodes[c].op == CSG_UNION ? top : c;
+        }
+    }
+    free(of);
+    return 1;
+}
+
 sc_status shade_prepare(shade_scene *s, const csg_tree *tree, const shading *look,
                         const camera *cam, const sc_render_options *o, sc_error *error)
 {
@@ -76,8 +116,16 @@ sc_status shade_prepare(shade_scene *s, const csg_tree *tree, const shading *loo
     s->leaf_color = calloc((size_t)tree->leaf_count * 3 + 3, sizeof *s->leaf_color);
     s->leaf_back = calloc((size_t)tree->leaf_count * 3 + 3, sizeof *s->leaf_back);
     s->leaf_alpha = calloc((size_t)tree->leaf_count + 1, sizeof *s->leaf_alpha);
+    if (o->preview) {
+        s->leaf_product =
+            malloc(((size_t)tree->leaf_count + 1) * sizeof *s->leaf_product);
+        if (s->leaf_product && !find_products(tree, s->leaf_product)) {
+            free(s->leaf_product);
+            s->leaf_product = NULL;
+        }
+    }
     if (!s->materials || !s->lights || !s->leaf_color || !s->leaf_back ||
-        !s->leaf_alpha) {
+        !s->leaf_alpha || (o->preview && !s->leaf_product)) {
         shade_release(s);
         return err_nomem(error, NULL);
     }
@@ -194,6 +242,7 @@ void shade_release(shade_scene *s)
     free(s->leaf_color);
     free(s->leaf_back);
     free(s->leaf_alpha);
+    free(s->leaf_product);
     memset(s, 0, sizeof *s);
 }
 

@@ -114,6 +114,12 @@ typedef struct shade_scene {
     double *leaf_alpha; /* one per leaf: its colour's opacity */
     int translucent;    /* a preview with some leaf's alpha below 1 (render.c
                            composites its surfaces) */
+    /* The preview only (else NULL), one per leaf: the node of the tree
+     * that is the leaf's product in OpenSCAD's normal form, which OpenGL
+     * draws as a unit: the child of the top-level unions the leaf lies
+     * under, the leaf's own node where it is such a child (a lone leaf,
+     * whose rear faces OpenSCAD draws too); CSG_EMPTY for none. */
+    uint32_t *leaf_product;
     shade_light *lights;
     uint32_t light_count;
     double background[3]; /* linear */
