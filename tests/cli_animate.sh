@@ -68,6 +68,20 @@ if command -v ffmpeg >/dev/null && command -v ffprobe >/dev/null; then
     check
     [ "$frames" = 5 ] || fail "video: $frames frames (want 5)"
     ls turn.tmp* >/dev/null 2>&1 && fail "video: a temporary file was left"
+    # through a symbolic link into another folder, over a private file: the
+    # link stays, the file it names is replaced and keeps its mode
+    mkdir -p videos
+    printf 'old' >videos/private.mp4
+    chmod 600 videos/private.mp4
+    ln -sf videos/private.mp4 linked.mp4
+    "$bin" render "$src/models/knob_part.csg" -o l.png --turntable=2 --video=linked.mp4 \
+        --fps=10 --imgsize=16,12 --threads=1 -q || fail "video through a link: exit $?"
+    check
+    [ -L linked.mp4 ] || fail "video through a link: the link was replaced"
+    [ "$(cat videos/private.mp4)" != old ] || fail "video through a link: not written"
+    [ "$(stat -c %a videos/private.mp4)" = 600 ] ||
+        fail "video over a 0600 file: mode $(stat -c %a videos/private.mp4)"
+    ls videos/*.tmp* linked.tmp* >/dev/null 2>&1 && fail "video through a link: a temporary was left"
 fi
 printf 'old' >kept.mp4
 PATH=/nonexistent "$bin" render "$src/models/knob_part.csg" -o nv.png --turntable=1 \

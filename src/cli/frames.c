@@ -22,7 +22,8 @@
  * all written: H.264 in yuv420p at --fps (default 24), the size padded to
  * even numbers as that format needs. ffmpeg writes a temporary file beside
  * the target, renamed into place when it succeeds, so a failure never
- * destroys an earlier video.
+ * destroys an earlier video; as for images, the target keeps its mode, and
+ * a symbolic link stays one (the file it names is replaced).
  */
 #define _POSIX_C_SOURCE 200809L
 
@@ -39,6 +40,7 @@
 
 #include "cli/cli.h"
 #include "cli/scad.h"
+#include "formats/file.h"
 #include "formats/framebuffer.h"
 
 extern char **environ;
@@ -124,16 +126,23 @@ static void turn_camera(sc_render_options *o, double deg)
 static int encode_video(const frames_job *job)
 {
     char pattern[4096], temp[4096], rate[32];
-    const char *slash = strrchr(job->video, '/');
-    const char *ext = strrchr(job->video, '.');
+    /* the file replaced: through a symbolic link, which stays */
+    char *target = file_output_target(job->video);
+    if (!target) {
+        fprintf(stderr, "spancast: error: cannot encode '%s': out of memory\n",
+                job->video);
+        return CLI_EXIT_FAILED;
+    }
+    const char *slash = strrchr(target, '/');
+    const char *ext = strrchr(target, '.');
     if (!ext || (slash && ext < slash))
         ext = "";
     if (!frames_pattern(job->output, pattern, sizeof pattern) ||
-        snprintf(temp, sizeof temp, "%.*s.tmp%ld%s",
-                 (int)(strlen(job->video) - strlen(ext)), job->video, (long)getpid(),
-                 ext) >= (int)sizeof temp) {
+        snprintf(temp, sizeof temp, "%.*s.tmp%ld%s", (int)(strlen(target) - strlen(ext)),
+                 target, (long)getpid(), ext) >= (int)sizeof temp) {
         fprintf(stderr, "spancast: error: cannot encode '%s': the name is too long\n",
                 job->video);
+        free(target);
         return CLI_EXIT_FAILED;
     }
     snprintf(rate, sizeof rate, "%.17g", job->fps);
@@ -149,6 +158,7 @@ static int encode_video(const frames_job *job)
                 "('ffmpeg' %s); the frames are written\n",
                 job->video,
                 spawned == ENOENT ? "was not found in PATH" : strerror(spawned));
+        free(target);
         return CLI_EXIT_FAILED;
     }
     int status = 0;
@@ -157,11 +167,14 @@ static int encode_video(const frames_job *job)
     if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) {
         unlink(temp);
         fprintf(stderr, "spancast: error: ffmpeg could not encode '%s'\n", job->video);
+        free(target);
         return CLI_EXIT_FAILED;
     }
-    if (rename(temp, job->video) != 0) {
+    int replaced = file_replace(temp, target), why = errno;
+    free(target);
+    if (!replaced) {
         fprintf(stderr, "spancast: error: cannot write '%s': %s\n", job->video,
-                strerror(errno));
+                strerror(why));
         unlink(temp);
         return CLI_EXIT_FAILED;
     }

@@ -2,9 +2,10 @@
  * one bounded read into memory, with the reason of a failure as text. And
  * the path of a helper file (the OpenImageIO plugin, spancast-bench): beside
  * the running program in the build tree, in the helpers' folder
- * (LIBDIR/spancast) where installed.
+ * (LIBDIR/spancast) where installed. And the replacement of an output by
+ * its complete temporary, through a symbolic link, keeping the mode.
  */
-#define _GNU_SOURCE /* dladdr; readlink */
+#define _GNU_SOURCE /* dladdr; readlink; realpath */
 
 #include "formats/file.h"
 
@@ -13,6 +14,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 const char file_too_large[] = "file is too large";
@@ -147,4 +149,22 @@ int file_beside_program(const char *name, char *path, size_t size)
         return 1;
     errno = readlink_errno;
     return 0;
+}
+
+char *file_output_target(const char *path)
+{
+    struct stat st;
+    char *real = NULL;
+    if (lstat(path, &st) == 0 && S_ISLNK(st.st_mode))
+        real = realpath(path, NULL); /* NULL for a dangling link: replaced */
+    return real ? real : strdup(path);
+}
+
+int file_replace(const char *tmp, const char *target)
+{
+    struct stat st;
+    if (stat(target, &st) == 0 && S_ISREG(st.st_mode) &&
+        chmod(tmp, st.st_mode & 07777) != 0)
+        return 0;
+    return rename(tmp, target) == 0;
 }

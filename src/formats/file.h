@@ -19,6 +19,15 @@ extern const char file_read_error[]; /* "read error": opened, not read */
  * text), rather than that it opened and could not be read whole. */
 int file_not_opened(const char *why);
 
+/* The file a write to path replaces (malloc'd; NULL when memory runs
+ * out): the file a symbolic link names, so that the link stays a link,
+ * else path itself (a dangling link is replaced). */
+char *file_output_target(const char *path);
+
+/* Moves the complete temporary tmp over target (file_output_target), with
+ * the mode of the regular file it replaces; 0 with errno set on failure. */
+int file_replace(const char *tmp, const char *target);
+
 /* Writes into path (size bytes) the path of the helper file called name
  * (spancast-oiio.so, spancast-bench): the first that exists of the folder
  * of the running executable (/proc/self/exe; the build tree), the helpers'

@@ -13,7 +13,7 @@
  * with O_EXCL and mode 0666 (less the umask), so a new file has the
  * permissions a plain create would give it; an existing one keeps its own.
  * A target that is a symbolic link to a file is written through: the file
- * it names is replaced, and the link stays (output_target).
+ * it names is replaced, and the link stays (file_output_target).
  *
  * Cancellation: the framebuffer carries the caller's cancel flag (set, for
  * instance, by the command line's SIGINT handler). The writer polls it before
@@ -43,6 +43,7 @@
 
 #include "base/error.h"
 #include "formats/color.h"
+#include "formats/file.h"
 #include "formats/image_backend.h"
 #include "formats/image_stream.h"
 
@@ -152,29 +153,6 @@ static sc_status check(const char *path, imgio_kind kind, sc_error *error)
     return SC_OK;
 }
 
-/* The file a write to path replaces (malloc'd; NULL when memory runs
- * out): the file a symbolic link names, so that the link stays a link,
- * else path itself. */
-static char *output_target(const char *path)
-{
-    struct stat st;
-    char *real = NULL;
-    if (lstat(path, &st) == 0 && S_ISLNK(st.st_mode))
-        real = realpath(path, NULL); /* NULL for a dangling link: replaced */
-    return real ? real : strdup(path);
-}
-
-/* Moves the complete temporary tmp over target, with the mode of the file
- * it replaces; 0 with errno set on failure. */
-static int replace_target(const char *tmp, const char *target)
-{
-    struct stat st;
-    if (stat(target, &st) == 0 && S_ISREG(st.st_mode) &&
-        chmod(tmp, st.st_mode & 07777) != 0)
-        return 0;
-    return rename(tmp, target) == 0;
-}
-
 /* Creates an empty temporary file next to target, with the extension of
  * path (the name the user gave, which picks the format); returns its name
  * (malloc'd, the caller frees it), or NULL with errno set. */
@@ -251,7 +229,7 @@ static sc_status write_image(const char *path, imgio_kind kind, const imgio_imag
     if (back == BACKEND_PLUGIN && !imgio_plugin_open(&plugin, failure, sizeof failure))
         return err_set(error, SC_ERR_IO, NULL, "cannot write '%s': %s", path, failure);
 
-    char *target = output_target(path);
+    char *target = file_output_target(path);
     char *tmp = target ? create_temporary(target, path) : NULL;
     if (!tmp) {
         int code = target ? errno : ENOMEM;
@@ -278,7 +256,7 @@ static sc_status write_image(const char *path, imgio_kind kind, const imgio_imag
         free(target);
         return err_set(error, SC_ERR_CANCELLED, NULL, "interrupted");
     }
-    if (ok && !replace_target(tmp, target)) {
+    if (ok && !file_replace(tmp, target)) {
         ok = 0;
         snprintf(failure, sizeof failure, "%s", strerror(errno));
     }
@@ -425,7 +403,7 @@ sc_status sc_framebuffer_write_id(const sc_framebuffer *fb, const char *path,
 struct imgio_stream {
     imgio_kind kind;
     char *path, *tmp;
-    char *target;           /* the file replaced (output_target) */
+    char *target;           /* the file replaced (file_output_target) */
     imgio_exr_tiles *tiles; /* a tiled EXR, or */
     imgio_tiff_tiles *tiff; /* a tiled TIFF, through */
     imgio_tiff_plugin tiff_plugin;
@@ -472,7 +450,7 @@ sc_status imgio_stream_open(const char *path, imgio_kind kind, int width, int he
                        "that way",
                        path);
     imgio_stream *s = calloc(1, sizeof *s);
-    if (!s || !(s->path = strdup(path)) || !(s->target = output_target(path)) ||
+    if (!s || !(s->path = strdup(path)) || !(s->target = file_output_target(path)) ||
         (kind == IMGIO_ID &&
          !(s->ids = malloc((size_t)tile * (size_t)tile * sizeof *s->ids)))) {
         imgio_stream_abandon(s);
@@ -562,7 +540,7 @@ sc_status imgio_stream_finish(imgio_stream *s, const volatile sig_atomic_t *canc
         st = err_set(error, SC_ERR_CANCELLED, NULL, "interrupted");
     else if (!ok)
         st = err_set(error, SC_ERR_IO, NULL, "cannot write '%s': %s", s->path, failure);
-    else if (!replace_target(s->tmp, s->target))
+    else if (!file_replace(s->tmp, s->target))
         st = err_set(error, SC_ERR_IO, NULL, "cannot write '%s': %s", s->path,
                      strerror(errno));
     else {
