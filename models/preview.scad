@@ -1,7 +1,10 @@
 // A preview example: OpenSCAD's modifiers and colour alpha as its preview
 // (F5) shows them (README, "Preview renders"; docs/preview.md).
-// A flanged hub: the '#' marks the bore and one bolt hole, so their
-// subtracted cylinders show translucent red where they were cut; the '%'
+// A flanged hub: the '#' marks the bore and one bolt hole, so the bore's
+// subtracted cylinder shows translucent red where it was cut; the bolt
+// hole's is one of four in a for(), a union, which OpenSCAD's preview
+// leaves a '#' operand out of, so that hole is drilled in the render only,
+// and the preview shows its cylinder red over the flange; the '%'
 // shaft is a mating part drawn translucent grey, not part of the solid; the
 // guard over the flange is coloured with alpha 0.4, so the hub shows
 // through it. Exported to preview.csg with:

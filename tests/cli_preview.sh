@@ -162,8 +162,12 @@ done < <(echo "$names" | sed "s/', '/\n/g; s/^'//; s/'$//")
 # ---- translucent parts against OpenSCAD's preview ----
 # OpenSCAD 2021.01 draws a translucent lone object (a '#' or '%' part, a
 # colour with alpha) rear faces first, then front faces; a product of
-# several objects only where OpenCSG's depth pass keeps it. Each scene is
-# converted by OpenSCAD and compared with its own preview image.
+# several objects only where OpenCSG's depth pass keeps it; the '%' parts
+# before the '#' parts, with depth writes. A '#' operand of a union with
+# others is left out of the solid, and the highlight is the term where it
+# stops (a difference whose first operand is '#'). An intersection is
+# framed by its operands' boxes. Each scene is converted by OpenSCAD and
+# compared with its own preview image.
 scenes=(
     'difference() { cube(20, center = true); #cylinder(r = 5, h = 30, center = true); }'
     'cube(5); %translate([8, 0, 0]) cube(5);'
@@ -171,6 +175,12 @@ scenes=(
     '%cube(5); %translate([0, 10, 0]) cube(5); translate([0, -12, 0]) sphere(3);'
     'difference() { color([0, 0, 1, 0.4]) cube(10, center = true); sphere(6); }'
     '#cylinder(r = 5, h = 10);'
+    'cube(8); #difference() { translate([4, 4, 4]) cube(8); translate([8, 8, 0]) cylinder(r = 2, h = 20); }'
+    'difference() { #cube(10); sphere(6); } translate([15, 0, 0]) cube(5);'
+    'intersection() { #cube(10); sphere(7); } translate([15, 0, 0]) cube(5);'
+    'translate([0, 0, 0]) { #cube(5); } sphere(2);'
+    'cube(1); %translate([0, 8, 0]) #cube(4);'
+    '#cube(5); #translate([8, 0, 0]) cube(5);'
 )
 for k in "${!scenes[@]}"; do
     check

@@ -172,11 +172,9 @@ static void test_extrusions(void **state)
     assert_true(count > 20);
 }
 
-/* sc_render: every allocation of its buffers, in turn. */
-static void test_render(void **state)
+/* sc_render of text: every allocation, in turn; returns their count. */
+static long fail_each_render(const char *text, int preview)
 {
-    (void)state;
-    const char *text = "sphere(r = 1);";
     sc_scene *scene = NULL;
     sc_error e;
     assert_int_equal(sc_scene_load_string("m.csg", text, strlen(text), NULL, &scene, &e),
@@ -185,6 +183,7 @@ static void test_render(void **state)
     sc_render_options_init(&o);
     o.width = o.height = 8;
     o.threads = 1;
+    o.preview = preview;
     o.want_color = o.want_depth = o.want_mask = o.want_normal = 1;
     long n = 1;
     for (;; n++) {
@@ -202,9 +201,26 @@ static void test_render(void **state)
             fail_msg("render: allocation %ld failed, sc_render returned %d (%s)", n,
                      (int)st, e.message);
     }
-    print_message("render: %ld allocations, each failed in turn\n", n - 1);
-    assert_true(n - 1 >= 5); /* the framebuffer, four buffers, the scratch arena */
     sc_scene_release(scene);
+    return n - 1;
+}
+
+/* sc_render: every allocation of its buffers, in turn; and of the
+ * preview's: its products, the boxes it frames, its parts and the solid
+ * without a '#' operand of a union. */
+static void test_render(void **state)
+{
+    (void)state;
+    long n = fail_each_render("sphere(r = 1);", 0);
+    print_message("render: %ld allocations, each failed in turn\n", n);
+    assert_true(n >= 5); /* the framebuffer, four buffers, the scratch arena */
+    long p =
+        fail_each_render("intersection() { sphere(r = 1); cube(size = [1, 1, 1]); }\n"
+                         "#cube(size = [1, 1, 1]); %sphere(r = 0.5);\n"
+                         "color([1, 0, 0, 0.5]) { cube(size = [2, 1, 1]); }\n",
+                         1);
+    print_message("preview: %ld allocations, each failed in turn\n", p);
+    assert_true(p > n);
 }
 
 int main(void)

@@ -294,6 +294,43 @@ static void test_alpha_blends(void **state)
     }
 }
 
+/* OpenSCAD's preview leaves a '#' operand of a union with other operands
+ * out of the solid (CSGTreeEvaluator: it draws it as a part only), and
+ * keeps one that is alone or whose siblings are all '#'; its render keeps
+ * both. The highlighted sphere beside a box: with --preview, no mask where
+ * it is, and the highlight over the background there; alone, in the
+ * mask. */
+static void test_highlight_leaves_union(void **state)
+{
+    (void)state;
+    static const char beside[] =
+        "cube(size = [20, 20, 10], center = true);\n"
+        "%smultmatrix([[1, 0, 0, 16], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]])\n"
+        "{ sphere(r = 4); }\n";
+    char text[512];
+    size_t sphere = pixel_at(16, 0), box = pixel_at(0, 0), bg = pixel_at(-15, -15);
+    snprintf(text, sizeof text, beside, "#");
+    sc_framebuffer *preview = render_text(text, 1), *render = render_text(text, 0);
+    assert_int_equal(preview->mask[sphere], 0);
+    assert_int_equal(preview->mask[box], 255);
+    assert_int_equal(render->mask[sphere], 255);
+    /* red over the background: more red than green, and not the box's
+     * colour */
+    assert_true(display(preview, sphere, 0) > display(preview, sphere, 1) + 0.2);
+    assert_true(fabs(display(preview, sphere, 2) - display(preview, bg, 2)) > 0.05);
+    sc_framebuffer_release(preview);
+    sc_framebuffer_release(render);
+    /* both operands highlighted: the union is, and stays in the solid */
+    snprintf(text, sizeof text,
+             "#cube(size = [20, 20, 10], center = true);\n"
+             "#multmatrix([[1, 0, 0, 16], [0, 1, 0, 0], [0, 0, 1, 0], "
+             "[0, 0, 0, 1]])\n{ sphere(r = 4); }\n");
+    preview = render_text(text, 1);
+    assert_int_equal(preview->mask[sphere], 255);
+    assert_int_equal(preview->mask[box], 255);
+    sc_framebuffer_release(preview);
+}
+
 /* Parts and alpha at several samples a pixel, under a section cut: the
  * thread count changes nothing, and a crop is the whole image's pixels. */
 static void test_crop_and_threads(void **state)
@@ -355,6 +392,7 @@ int main(void)
         cmocka_unit_test(test_highlight_in_hole),
         cmocka_unit_test(test_background_changes_no_aov),
         cmocka_unit_test(test_alpha_blends),
+        cmocka_unit_test(test_highlight_leaves_union),
         cmocka_unit_test(test_crop_and_threads),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

@@ -93,6 +93,7 @@ typedef struct frame {
     csg_motion motion;    /* its motion (build_motion.h) */
     int shown;            /* inside the design: not outside the '!' subtree */
     size_t first_ignored; /* its ignored 2D children start here on that stack */
+    int highlighted;      /* a '#' node or inside one */
 } frame;
 
 /* A '#' or '%' node and the state its parent hands it. */
@@ -116,6 +117,14 @@ typedef struct builder {
     build_notes warnings; /* every warning of the build, in order */
     uint32_t *ids;        /* results waiting for their parent's operation */
     size_t id_count, id_cap;
+    /* one per id, grown with ids (id_cap): the result is a highlighted term
+     * (highlight_operands), and the node whose result it is */
+    unsigned char *id_highlighted;
+    const model_node **id_nodes;
+    /* the preview's solid (build_preview_solid): a union leaves out its
+     * highlighted operands unless all are, as OpenSCAD's preview does */
+    int drop_highlighted;
+    size_t drops; /* unions that have such operands to leave out */
     frame *frames;
     size_t frame_count, frame_cap;
     shading *shading; /* lights, materials, camera, background */
@@ -165,23 +174,115 @@ static build_ctx context(builder *b, int emit, sc_error *note)
     return c;
 }
 
-static sc_status push_id(builder *b, uint32_t id)
+static sc_status push_id(builder *b, uint32_t id, int highlighted, const model_node *node)
 {
+    size_t cap = b->id_cap;
     if (!grow_array((void **)&b->ids, &b->id_cap, b->id_count + 1, sizeof *b->ids))
         return err_nomem(b->error, NULL);
+    if (b->id_cap != cap || !b->id_highlighted || !b->id_nodes) {
+        unsigned char *flags = realloc(b->id_highlighted, b->id_cap);
+        if (flags)
+            b->id_highlighted = flags;
+        const model_node **nodes = realloc(b->id_nodes, b->id_cap * sizeof *nodes);
+        if (nodes)
+            b->id_nodes = nodes;
+        if (!flags || !nodes)
+            return err_nomem(b->error, NULL);
+    }
+    b->id_highlighted[b->id_count] = (unsigned char)(highlighted != 0);
+    b->id_nodes[b->id_count] = node;
     b->ids[b->id_count++] = id;
     return SC_OK;
 }
 
+/* Notes the subtree of n, with the state its parent hands it, as a part of
+ * the preview of kind (SHADING_OVERLAY_*): walk_part builds it. */
+static sc_status add_mark(builder *b, const model_node *n, int kind, const frame *parent)
+{
+    if (!grow_array((void **)&b->marks, &b->mark_cap, b->mark_count + 1,
+                    sizeof *b->marks))
+        return err_nomem(b->error, NULL);
+    part_mark *m = &b->marks[b->mark_count++];
+    m->node = n;
+    m->kind = kind;
+    m->parent = *parent;
+    return SC_OK;
+}
+
 /* Hands a node's result to whoever takes it: the design when the node is
- * the root, else its parent when it is counted. */
-static sc_status deliver(builder *b, const model_node *node, int counted, uint32_t id)
+ * the root, else its parent when it is counted. highlighted: the result is
+ * a highlighted term (highlight_operands); a root that is one is a part of
+ * the preview too, as OpenSCAD's buildCSGTree makes it (unless its own '#'
+ * made it one already: mark_part). */
+static sc_status deliver(builder *b, const model_node *node, int counted, uint32_t id,
+                         int highlighted)
 {
     if (node && node->is_root) {
         b->root_id = id;
+        if (highlighted && !(node->modifiers & MODEL_MOD_HIGHLIGHT) && !b->part &&
+            !b->drop_highlighted && id != CSG_EMPTY)
+            return add_mark(b, node, SHADING_OVERLAY_HIGHLIGHT,
+                            &b->frames[b->frame_count - 1]);
         return SC_OK;
     }
-    return counted ? push_id(b, id) : SC_OK;
+    return counted ? push_id(b, id, highlighted, node) : SC_OK;
+}
+
+/* Sets *highlighted to whether the result of f's operation over its
+ * children (on the id stack from f->first_id) is a highlighted term, as
+ * OpenSCAD 2021.01's CSGTreeEvaluator::applyToChildren marks it: a '#'
+ * node or one inside '#'; a union all of whose operands are; a difference
+ * whose first operand is; an intersection all of whose operands are. The
+ * empty solid is no operand. Where the highlight stops, OpenSCAD's preview
+ * draws the highlighted operands as parts (its highlightNodes): a union's
+ * or an intersection's with operands of both kinds, a difference's
+ * subtrahends unless its first operand is highlighted, and (top, for the
+ * file's own list) the whole when it is highlighted. Those are noted as
+ * parts (add_mark, the main walk only, inside the design); and a union
+ * with operands of both kinds leaves its highlighted ones out of
+ * OpenSCAD's preview solid: counted in drops, and done in the preview's
+ * solid (drop_highlighted). An intersection of several highlighted
+ * operands and others is noted operand by operand, where OpenSCAD draws
+ * the intersection of the highlighted ones. */
+static sc_status highlight_operands(builder *b, const frame *f, int top, int *highlighted)
+{
+    size_t marked = 0, plain = 0;
+    for (size_t k = f->first_id; k < b->id_count; k++) {
+        if (b->ids[k] == CSG_EMPTY)
+            continue;
+        if (b->id_highlighted[k])
+            marked++;
+        else
+            plain++;
+    }
+    int first = f->first_id < b->id_count && b->id_highlighted[f->first_id];
+    int whole = f->op == CSG_DIFFERENCE ? first : !plain && marked > 0;
+    *highlighted = f->highlighted || whole;
+    int noting = !b->part && !b->drop_highlighted && f->shown && f->emit;
+    /* which operands become parts: a union's or intersection's mixed
+     * ones, a difference's subtrahends, or all at the top */
+    int parts = (top && whole) || (f->op == CSG_DIFFERENCE ? !first : plain && marked);
+    for (size_t k = f->first_id; noting && parts && k < b->id_count; k++) {
+        if (b->ids[k] == CSG_EMPTY || !b->id_highlighted[k])
+            continue;
+        sc_status st = add_mark(b, b->id_nodes[k], SHADING_OVERLAY_HIGHLIGHT, f);
+        if (st != SC_OK)
+            return st;
+    }
+    if (f->op == CSG_UNION && plain && marked) {
+        b->drops++;
+        if (b->drop_highlighted) {
+            size_t kept = f->first_id;
+            for (size_t k = f->first_id; k < b->id_count; k++)
+                if (!b->id_highlighted[k]) {
+                    b->ids[kept] = b->ids[k];
+                    b->id_highlighted[kept] = b->id_highlighted[k];
+                    b->id_nodes[kept++] = b->id_nodes[k];
+                }
+            b->id_count = kept;
+        }
+    }
+    return SC_OK;
 }
 
 static int positive_finite(double x)
@@ -745,6 +846,9 @@ static sc_status pop_frame(builder *b)
     }
     if (st != SC_OK)
         return st;
+    int highlighted;
+    if ((st = highlight_operands(b, f, 0, &highlighted)) != SC_OK)
+        return st;
     if (f->emit) {
         size_t count = b->id_count - f->first_id;
         if (count > UINT32_MAX)
@@ -756,29 +860,24 @@ static sc_status pop_frame(builder *b)
             return err_nomem(b->error, NULL);
     }
     b->id_count = f->first_id;
-    return deliver(b, f->node, f->counted, id);
+    return deliver(b, f->node, f->counted, id, highlighted);
 }
 
 /* Notes n for the preview when it carries '#' or '%' inside the design
  * (the main walk only: walk_part builds what was noted). */
 static sc_status mark_part(builder *b, const model_node *n, const frame *parent)
 {
-    if (b->part || !(parent->shown || n->is_root))
+    if (b->part || b->drop_highlighted || !(parent->shown || n->is_root))
         return SC_OK;
-    for (int kind = 0; kind < SHADING_OVERLAYS; kind++) {
-        unsigned modifier = kind == SHADING_OVERLAY_HIGHLIGHT ? MODEL_MOD_HIGHLIGHT
-                                                              : MODEL_MOD_BACKGROUND;
-        if (!(n->modifiers & modifier))
-            continue;
-        if (!grow_array((void **)&b->marks, &b->mark_cap, b->mark_count + 1,
-                        sizeof *b->marks))
-            return err_nomem(b->error, NULL);
-        part_mark *m = &b->marks[b->mark_count++];
-        m->node = n;
-        m->kind = kind;
-        m->parent = *parent;
-    }
-    return SC_OK;
+    sc_status st = SC_OK;
+    if (n->modifiers & MODEL_MOD_BACKGROUND)
+        st = add_mark(b, n, SHADING_OVERLAY_BACKGROUND, parent);
+    /* a '#' where nothing is built (below a '%') or on the root; others
+     * where the highlight stops (highlight_operands) */
+    if (st == SC_OK && (n->modifiers & MODEL_MOD_HIGHLIGHT) &&
+        (!parent->emit || n->is_root))
+        st = add_mark(b, n, SHADING_OVERLAY_HIGHLIGHT, parent);
+    return st;
 }
 
 /* The state node n hands its children (or, for a leaf, builds with),
@@ -797,7 +896,10 @@ static void inherit(const builder *b, const model_node *n, const frame *parent, 
         memcpy(f->color, default_color, sizeof f->color);
         f->color_set = 0;
         f->material = 0;
+        f->highlighted = 0;
     }
+    if (n->modifiers & MODEL_MOD_HIGHLIGHT)
+        f->highlighted = 1;
     if ((n->modifiers & MODEL_MOD_BACKGROUND) && n != b->part)
         f->emit = 0;
     f->counted = f->emit;
@@ -871,7 +973,9 @@ static sc_status visit_leaf(builder *b, const model_node *n, const frame *f)
         st = SC_OK;
         break;
     }
-    return st != SC_OK ? st : deliver(b, n, f->counted, id);
+    return st != SC_OK ? st
+                       : deliver(b, n, f->counted, id,
+                                 f->highlighted || (n->modifiers & MODEL_MOD_HIGHLIGHT));
 }
 
 /* Visits one node: a leaf delivers its result; a boolean node opens a
@@ -915,7 +1019,7 @@ static sc_status visit(builder *b, const model_node *n, int *opened)
              * as in OpenSCAD */
             uint32_t id = CSG_EMPTY;
             st = n->is_root ? build_flat(b, n, &f, &id) : build_twod_ignored(b, n, &f);
-            return st != SC_OK ? st : deliver(b, n, f.counted, id);
+            return st != SC_OK ? st : deliver(b, n, f.counted, id, f.highlighted);
         }
         return visit_leaf(b, n, &f);
     }
@@ -1049,6 +1153,9 @@ static sc_status walk(builder *b, uint32_t *root)
         *root = b->root_id;
         return SC_OK;
     }
+    int highlighted;
+    if ((st = highlight_operands(b, &b->frames[0], 1, &highlighted)) != SC_OK)
+        return st;
     if (b->id_count > UINT32_MAX)
         return err_nomem(b->error, NULL);
     *root = csg_builder_op(b->csg, CSG_UNION, b->ids, (uint32_t)b->id_count);
@@ -1143,6 +1250,8 @@ static sc_status build_parts(builder *b)
         b->imports = sub.imports;
         b->triangles_left = sub.triangles_left;
         free(sub.ids);
+        free(sub.id_highlighted);
+        free(sub.id_nodes);
         free(sub.frames);
         free(sub.ignored);
         free(sub.warnings.items);
@@ -1167,6 +1276,65 @@ static sc_status build_parts(builder *b)
                       modifier[kind], error.message);
     }
     return st;
+}
+
+/* Builds the preview's solid (shading.preview_solid) where it differs
+ * from the solid: where a union has highlighted operands and others
+ * (b->drops), OpenSCAD 2021.01's preview leaves the highlighted ones out
+ * of its solid and draws them as parts only (CSGTreeEvaluator), so that
+ * `cube(10); #sphere(3);` shows the sphere translucent red, not the solid
+ * sphere through red. The model is walked again into a tree of its own
+ * with those operands left out (highlight_operands); the walk's warnings
+ * are the main walk's, and are not given again. When it cannot be built,
+ * a warning says so and the preview shows the solid. */
+static sc_status build_preview_solid(builder *b)
+{
+    if (!b->drops)
+        return SC_OK;
+    sc_error error;
+    builder sub;
+    memset(&sub, 0, sizeof sub);
+    sub.model = b->model;
+    sub.file = b->file;
+    sub.error = &error;
+    sub.faithful = b->faithful;
+    sub.strict = b->strict;
+    sub.max_triangles = b->max_triangles;
+    sub.triangles_left = b->max_triangles; /* the same meshes as the solid's */
+    sub.resize_cache = b->resize_cache;
+    sub.imports = b->imports;
+    sub.nefs = b->nefs;
+    sub.root_id = CSG_EMPTY;
+    sub.drop_highlighted = 1;
+    sub.csg = csg_builder_new();
+    sub.shading = shading_new();
+    uint32_t root = CSG_EMPTY;
+    sc_status st = sub.csg && sub.shading ? walk(&sub, &root) : SC_ERR_NOMEM;
+    b->resize_cache = sub.resize_cache;
+    b->imports = sub.imports;
+    free(sub.ids);
+    free(sub.id_highlighted);
+    free(sub.id_nodes);
+    free(sub.frames);
+    free(sub.ignored);
+    free(sub.marks);
+    free(sub.warnings.items);
+    shading_free(sub.shading);
+    if (st != SC_OK || !sub.csg) {
+        csg_builder_free(sub.csg);
+        if (st == SC_ERR_NOMEM)
+            return err_nomem(b->error, NULL);
+        return warn(b, NULL, "the preview shows the '#' parts inside the solid: %s",
+                    error.message);
+    }
+    /* The builder is freed here whatever happens. */
+    st = csg_builder_finish(sub.csg, root, &b->shading->preview_solid, &error);
+    if (st == SC_ERR_NOMEM)
+        return err_nomem(b->error, NULL);
+    if (st != SC_OK)
+        return warn(b, NULL, "the preview shows the '#' parts inside the solid: %s",
+                    error.message);
+    return SC_OK;
 }
 
 /* The model's warnings of arguments (model.h), first, as OpenSCAD gives
@@ -1259,10 +1427,19 @@ static sc_status build_scene_of(const model *m, model *owned, void *spare,
     if (st == SC_OK)
         st = walk(&b, &root);
     free(b.ids);
+    free(b.id_highlighted);
+    free(b.id_nodes);
     free(b.frames);
     free(b.ignored);
+    b.ids = NULL;
+    b.id_highlighted = NULL;
+    b.id_nodes = NULL;
+    b.frames = NULL;
+    b.ignored = NULL;
     if (st == SC_OK)
         st = build_parts(&b);
+    if (st == SC_OK && look)
+        st = build_preview_solid(&b);
     free(b.marks);
     build_resize_cache_free(b.resize_cache);
     build_nef_cache_free(b.nefs);

@@ -39,6 +39,7 @@ void shading_free(shading *s)
     free(s->materials);
     for (int k = 0; k < SHADING_OVERLAYS; k++)
         csg_tree_free(s->overlay[k]);
+    csg_tree_free(s->preview_solid);
     free(s);
 }
 

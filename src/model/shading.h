@@ -85,6 +85,10 @@ typedef struct shading {
      * the '%' subtrees united, each a tree of its own with its ancestors'
      * transforms and colours; NULL when the file has none. */
     csg_tree *overlay[SHADING_OVERLAYS];
+    /* The solid as OpenSCAD's preview shows it, where it differs: without
+     * the '#' operands of unions that have others (build.c's
+     * build_preview_solid); NULL when it is the solid. */
+    csg_tree *preview_solid;
     /* A 2D model, drawn as the slab OpenSCAD draws a 2D result: its render
      * (not the preview) shows it unlit in the colour scheme's 2D face
      * colour, as OpenSCAD's render does. */

@@ -154,6 +154,7 @@ typedef struct render_view {
     int prepared; /* shade and over hold memory */
     /* the preview's modifier parts (shading.overlay): part_count of them */
     shade_scene part[SHADING_OVERLAYS];
+    int part_kind[SHADING_OVERLAYS]; /* SHADING_OVERLAY_* of each */
     int part_count;
 } render_view;
 
@@ -360,38 +361,43 @@ static void translucent_color(const render_ctx *c, const render_view *v, shade_t
 }
 
 /* Blends the surfaces of the view's modifier parts that r meets in front
- * of the solid (walk_layers) over rgb (linear), from the back to the
- * front. */
+ * of the solid (walk_layers) over rgb (linear), as OpenSCAD draws them:
+ * the '%' parts, then the '#' parts, each from the back to the front,
+ * with the depth test and depth writes on, so that a '#' surface behind
+ * the nearest '%' surface drawn is hidden. */
 static void blend_parts(const render_ctx *c, const render_view *v, shade_thread *st,
                         const view_ray *r, double rgb[3])
 {
     double tmax = INFINITY;
     if (r->found)
         tmax = r->hit.hit.t + hit_tolerance(&v->shade, &r->ray, r->hit.hit.t);
-    layer layers[SHADING_OVERLAYS * RENDER_PART_LAYERS];
-    int n = 0;
-    for (int k = 0; k < v->part_count; k++) {
-        csg_ray ray = r->ray;
-        ray.tmax = tmax;
-        shade_hit hit;
-        int found = shade_first_hit(&v->part[k], st, &ray, &hit);
-        n += walk_layers(c, &v->part[k], st, ray, hit, found, layers + n,
-                         RENDER_PART_LAYERS);
-    }
     double out[3];
     for (int q = 0; q < 3; q++)
         out[q] = color_linear_to_srgb(rgb[q]);
-    for (int done = 0; done < n; done++) {
-        int far = -1; /* the farthest layer not blended yet */
-        for (int k = 0; k < n; k++)
-            if (layers[k].alpha >= 0 && (far < 0 || layers[k].t > layers[far].t))
-                far = k;
-        for (int q = 0; q < 3; q++)
-            out[q] = layers[far].alpha * layers[far].display[q] +
-                     (1 - layers[far].alpha) * out[q];
-        layers[far].alpha = -1;
-    }
-    if (n)
+    static const int order[SHADING_OVERLAYS] = {SHADING_OVERLAY_BACKGROUND,
+                                                SHADING_OVERLAY_HIGHLIGHT};
+    int blended = 0;
+    for (int pass = 0; pass < SHADING_OVERLAYS; pass++)
+        for (int k = 0; k < v->part_count; k++) {
+            if (v->part_kind[k] != order[pass])
+                continue;
+            const shade_scene *part = &v->part[k];
+            csg_ray ray = r->ray;
+            ray.tmax = tmax;
+            shade_hit hit;
+            int found = shade_first_hit(part, st, &ray, &hit);
+            layer layers[RENDER_PART_LAYERS];
+            int n = walk_layers(c, part, st, ray, hit, found, layers, RENDER_PART_LAYERS);
+            for (int q = n; q-- > 0;) /* from the back */
+                for (int ch = 0; ch < 3; ch++)
+                    out[ch] = layers[q].alpha * layers[q].display[ch] +
+                              (1 - layers[q].alpha) * out[ch];
+            /* the nearest surface drawn is in the depth buffer */
+            if (n)
+                tmax = layers[0].t + hit_tolerance(part, &ray, layers[0].t);
+            blended |= n > 0;
+        }
+    if (blended)
         for (int q = 0; q < 3; q++)
             rgb[q] = color_srgb_to_linear(out[q]);
 }
@@ -704,7 +710,7 @@ static sc_status prepare_parts(render_view *v, const shading *look,
         sc_status st = shade_prepare(s, tree, NULL, &v->cam, &part_options, error);
         if (st)
             return st;
-        v->part_count++;
+        v->part_kind[v->part_count++] = k;
         int highlight = k == SHADING_OVERLAY_HIGHLIGHT;
         shade_paint_part(s, highlight ? highlight_rgba : background_rgba, !highlight);
     }
@@ -792,6 +798,40 @@ static void describe_camera(const camera *cam, double fov_deg, char *out, size_t
                                                            : "perspective");
 }
 
+/* The box OpenSCAD's preview frames for tree (OpenCSGRenderer::
+ * getBoundingBox): each product's is the union of the boxes of the
+ * objects it intersects, not their overlap (CSGProduct::getBoundingBox),
+ * so an intersection spans all its operands' boxes; a difference its
+ * first operand's. Without intersections, the tree's bounds. */
+static sc_status preview_bounds(const csg_tree *t, bbox *out, sc_error *error)
+{
+    *out = t->root == CSG_EMPTY ? bbox_empty() : t->bounds;
+    int intersects = 0;
+    for (uint32_t i = 0; t->root != CSG_EMPTY && i < t->node_count; i++)
+        intersects |= t->nodes[i].op == CSG_INTERSECTION;
+    if (!intersects)
+        return SC_OK;
+    bbox *box = malloc((size_t)t->node_count * sizeof *box);
+    if (!box)
+        return err_nomem(error, NULL);
+    for (uint32_t i = 0; i < t->node_count; i++) { /* children first */
+        const csg_node *n = &t->nodes[i];
+        const uint32_t *child = t->child_ids + n->first_child;
+        if (n->op == CSG_LEAF) {
+            box[i] = n->bounds;
+        } else if (n->op == CSG_DIFFERENCE) {
+            box[i] = n->child_count ? box[child[0]] : bbox_empty();
+        } else {
+            box[i] = bbox_empty();
+            for (uint32_t k = 0; k < n->child_count; k++)
+                box[i] = bbox_union(box[i], box[child[k]]);
+        }
+    }
+    *out = box[t->root];
+    free(box);
+    return SC_OK;
+}
+
 sc_status render_scene(const csg_tree *tree, const shading *look,
                        const sc_render_options *options, sc_framebuffer **framebuffer,
                        sc_error *error)
@@ -811,6 +851,8 @@ sc_status render_scene(const csg_tree *tree, const shading *look,
     sc_status st = check_options(options, error);
     if (st)
         return st;
+    if (options->preview && look && look->preview_solid)
+        tree = look->preview_solid; /* without the '#' operands OpenSCAD leaves out */
 
     render_ctx c;
     memset(&c, 0, sizeof c);
@@ -842,10 +884,18 @@ sc_status render_scene(const csg_tree *tree, const shading *look,
     for (int k = 0; k < 3; k++)
         c.edge_color[k] = color_srgb_to_linear(options->scheme.edge[k]);
     bbox bounds = tree->root == CSG_EMPTY ? bbox_empty() : tree->bounds;
-    /* The preview frames its modifier parts too, as OpenSCAD's does. */
-    for (int k = 0; options->preview && look && k < SHADING_OVERLAYS; k++)
-        if (look->overlay[k] && look->overlay[k]->root != CSG_EMPTY)
-            bounds = bbox_union(bounds, look->overlay[k]->bounds);
+    /* The preview frames its modifier parts too, as OpenSCAD's does, and
+     * the boxes OpenSCAD's products have. */
+    if (options->preview && (st = preview_bounds(tree, &bounds, error)) != SC_OK)
+        return st;
+    for (int k = 0; options->preview && look && k < SHADING_OVERLAYS; k++) {
+        const csg_tree *part = look->overlay[k];
+        bbox box;
+        if (part && (st = preview_bounds(part, &box, error)) != SC_OK)
+            return st;
+        if (part && part->root != CSG_EMPTY)
+            bounds = bbox_union(bounds, box);
+    }
     c.views = calloc((size_t)c.view_count, sizeof *c.views);
     if (!c.views)
         return err_nomem(error, NULL);
