@@ -94,6 +94,8 @@ typedef struct frame {
     int shown;            /* inside the design: not outside the '!' subtree */
     size_t first_ignored; /* its ignored 2D children start here on that stack */
     int highlighted;      /* a '#' node or inside one */
+    int negative;         /* subtracted in OpenSCAD's normal form: below an odd
+                             number of differences' later operands */
 } frame;
 
 /* A '#' or '%' node and the state its parent hands it. */
@@ -117,14 +119,24 @@ typedef struct builder {
     build_notes warnings; /* every warning of the build, in order */
     uint32_t *ids;        /* results waiting for their parent's operation */
     size_t id_count, id_cap;
-    /* one per id, grown with ids (id_cap): the result is a highlighted term
-     * (highlight_operands), and the node whose result it is */
-    unsigned char *id_highlighted;
+    /* one per id, grown with ids (id_cap): ID_* flags, and the node whose
+     * result it is */
+    unsigned char *id_flags;
     const model_node **id_nodes;
     /* the preview's solid (build_preview_solid): a union leaves out its
      * highlighted operands unless all are, as OpenSCAD's preview does */
     int drop_highlighted;
     size_t drops; /* unions that have such operands to leave out */
+    /* the walk notes the preview's parts (mark_part, highlight_operands):
+     * the main walk, or the preview's of a 2D model (whose main walk does
+     * not visit nodes) */
+    int notes_parts;
+    /* a walk for the preview (its solid, its parts): 2D objects in a 3D
+     * model are the slabs OpenSCAD's preview draws (build_preview_slab) */
+    int preview;
+    size_t flat_parts; /* 2D objects the main walk left out of a 3D model, or
+                          something more in a 2D model (flat_preview_differs) */
+    int flat_model;    /* the main walk was a 2D model's */
     frame *frames;
     size_t frame_count, frame_cap;
     shading *shading; /* lights, materials, camera, background */
@@ -174,22 +186,28 @@ static build_ctx context(builder *b, int emit, sc_error *note)
     return c;
 }
 
-static sc_status push_id(builder *b, uint32_t id, int highlighted, const model_node *node)
+/* What push_id records of a result besides its id. */
+enum {
+    ID_HIGHLIGHTED = 1, /* a highlighted term (highlight_operands) */
+    ID_SLAB = 2         /* a 2D object left out of a 3D model, which the preview draws */
+};
+
+static sc_status push_id(builder *b, uint32_t id, int flags, const model_node *node)
 {
     size_t cap = b->id_cap;
     if (!grow_array((void **)&b->ids, &b->id_cap, b->id_count + 1, sizeof *b->ids))
         return err_nomem(b->error, NULL);
-    if (b->id_cap != cap || !b->id_highlighted || !b->id_nodes) {
-        unsigned char *flags = realloc(b->id_highlighted, b->id_cap);
+    if (b->id_cap != cap || !b->id_flags || !b->id_nodes) {
+        unsigned char *flags = realloc(b->id_flags, b->id_cap);
         if (flags)
-            b->id_highlighted = flags;
+            b->id_flags = flags;
         const model_node **nodes = realloc(b->id_nodes, b->id_cap * sizeof *nodes);
         if (nodes)
             b->id_nodes = nodes;
         if (!flags || !nodes)
             return err_nomem(b->error, NULL);
     }
-    b->id_highlighted[b->id_count] = (unsigned char)(highlighted != 0);
+    b->id_flags[b->id_count] = (unsigned char)flags;
     b->id_nodes[b->id_count] = node;
     b->ids[b->id_count++] = id;
     return SC_OK;
@@ -215,17 +233,24 @@ static sc_status add_mark(builder *b, const model_node *n, int kind, const frame
  * the preview too, as OpenSCAD's buildCSGTree makes it (unless its own '#'
  * made it one already: mark_part). */
 static sc_status deliver(builder *b, const model_node *node, int counted, uint32_t id,
-                         int highlighted)
+                         int flags)
 {
     if (node && node->is_root) {
         b->root_id = id;
-        if (highlighted && !(node->modifiers & MODEL_MOD_HIGHLIGHT) && !b->part &&
-            !b->drop_highlighted && id != CSG_EMPTY)
+        if ((flags & ID_HIGHLIGHTED) && !(node->modifiers & MODEL_MOD_HIGHLIGHT) &&
+            b->notes_parts && id != CSG_EMPTY)
             return add_mark(b, node, SHADING_OVERLAY_HIGHLIGHT,
                             &b->frames[b->frame_count - 1]);
         return SC_OK;
     }
-    return counted ? push_id(b, id, highlighted, node) : SC_OK;
+    return counted ? push_id(b, id, flags, node) : SC_OK;
+}
+
+/* Whether the result at k on the id stack is an operand in OpenSCAD's
+ * preview: not the empty solid, or a 2D object there drawn as a slab. */
+static int operand(const builder *b, size_t k)
+{
+    return b->ids[k] != CSG_EMPTY || (b->id_flags[k] & ID_SLAB);
 }
 
 /* Sets *highlighted to whether the result of f's operation over its
@@ -248,22 +273,22 @@ static sc_status highlight_operands(builder *b, const frame *f, int top, int *hi
 {
     size_t marked = 0, plain = 0;
     for (size_t k = f->first_id; k < b->id_count; k++) {
-        if (b->ids[k] == CSG_EMPTY)
+        if (!operand(b, k))
             continue;
-        if (b->id_highlighted[k])
+        if (b->id_flags[k] & ID_HIGHLIGHTED)
             marked++;
         else
             plain++;
     }
-    int first = f->first_id < b->id_count && b->id_highlighted[f->first_id];
+    int first = f->first_id < b->id_count && (b->id_flags[f->first_id] & ID_HIGHLIGHTED);
     int whole = f->op == CSG_DIFFERENCE ? first : !plain && marked > 0;
     *highlighted = f->highlighted || whole;
-    int noting = !b->part && !b->drop_highlighted && f->shown && f->emit;
+    int noting = b->notes_parts && f->shown && f->emit;
     /* which operands become parts: a union's or intersection's mixed
      * ones, a difference's subtrahends, or all at the top */
     int parts = (top && whole) || (f->op == CSG_DIFFERENCE ? !first : plain && marked);
     for (size_t k = f->first_id; noting && parts && k < b->id_count; k++) {
-        if (b->ids[k] == CSG_EMPTY || !b->id_highlighted[k])
+        if (!operand(b, k) || !(b->id_flags[k] & ID_HIGHLIGHTED))
             continue;
         sc_status st = add_mark(b, b->id_nodes[k], SHADING_OVERLAY_HIGHLIGHT, f);
         if (st != SC_OK)
@@ -274,9 +299,9 @@ static sc_status highlight_operands(builder *b, const frame *f, int top, int *hi
         if (b->drop_highlighted) {
             size_t kept = f->first_id;
             for (size_t k = f->first_id; k < b->id_count; k++)
-                if (!b->id_highlighted[k]) {
+                if (!(b->id_flags[k] & ID_HIGHLIGHTED)) {
                     b->ids[kept] = b->ids[k];
-                    b->id_highlighted[kept] = b->id_highlighted[k];
+                    b->id_flags[kept] = b->id_flags[k];
                     b->id_nodes[kept++] = b->id_nodes[k];
                 }
             b->id_count = kept;
@@ -746,7 +771,7 @@ static sc_status build_flat(builder *b, const model_node *n, const frame *state,
     prim p;
     const char *empty = NULL;
     if (st == SC_OK)
-        st = build_flat_slab(&c, &at->loc, &r, &p, &empty);
+        st = build_flat_slab(&c, &at->loc, &r, 1, &p, &empty);
     twod_free(&r);
     if (st != SC_OK)
         return st;
@@ -754,6 +779,32 @@ static sc_status build_flat(builder *b, const model_node *n, const frame *state,
     if (empty) /* not warned of after an import left out (build_notes) */
         return b->warnings.left_out > left_out ? SC_OK : warn(b, &at->loc, "%s", empty);
     return add_leaf(b, at, &p, state, id);
+}
+
+/* A 2D leaf of the preview's walk (a shape, or an operation OpenSCAD
+ * evaluates to a polygon: offset, hull, minkowski, projection, resize, an
+ * import, text) as OpenSCAD's preview draws it (Renderer::render_surface):
+ * the slab of its region 1 thick, or 1.1 where it is subtracted, in its
+ * own coordinates, with f's transform and colour. Nothing where its region
+ * has no area. */
+static sc_status build_preview_slab(builder *b, const model_node *n, const frame *f,
+                                    uint32_t *id)
+{
+    *id = CSG_EMPTY;
+    if (!f->emit)
+        return SC_OK;
+    build_ctx c = context(b, 1, NULL);
+    twod_region r;
+    twod_init(&r);
+    sc_status st = build_twod_main(&c, n, &r);
+    prim p;
+    const char *empty = NULL;
+    if (st == SC_OK)
+        st = build_flat_slab(&c, &n->loc, &r, f->negative ? 1.1 : 1, &p, &empty);
+    twod_free(&r);
+    if (st != SC_OK || empty)
+        return st;
+    return add_leaf(b, n, &p, f, id);
 }
 
 /* hull and minkowski (build_hull.c): one or several convex leaves, united
@@ -860,14 +911,14 @@ static sc_status pop_frame(builder *b)
             return err_nomem(b->error, NULL);
     }
     b->id_count = f->first_id;
-    return deliver(b, f->node, f->counted, id, highlighted);
+    return deliver(b, f->node, f->counted, id, highlighted ? ID_HIGHLIGHTED : 0);
 }
 
 /* Notes n for the preview when it carries '#' or '%' inside the design
  * (the main walk only: walk_part builds what was noted). */
 static sc_status mark_part(builder *b, const model_node *n, const frame *parent)
 {
-    if (b->part || b->drop_highlighted || !(parent->shown || n->is_root))
+    if (!b->notes_parts || !(parent->shown || n->is_root))
         return SC_OK;
     sc_status st = SC_OK;
     if (n->modifiers & MODEL_MOD_BACKGROUND)
@@ -900,6 +951,8 @@ static void inherit(const builder *b, const model_node *n, const frame *parent, 
     }
     if (n->modifiers & MODEL_MOD_HIGHLIGHT)
         f->highlighted = 1;
+    if (parent->node && parent->op == CSG_DIFFERENCE && parent->node->first_child != n)
+        f->negative = !parent->negative;
     if ((n->modifiers & MODEL_MOD_BACKGROUND) && n != b->part)
         f->emit = 0;
     f->counted = f->emit;
@@ -975,7 +1028,9 @@ static sc_status visit_leaf(builder *b, const model_node *n, const frame *f)
     }
     return st != SC_OK ? st
                        : deliver(b, n, f->counted, id,
-                                 f->highlighted || (n->modifiers & MODEL_MOD_HIGHLIGHT));
+                                 f->highlighted || (n->modifiers & MODEL_MOD_HIGHLIGHT)
+                                     ? ID_HIGHLIGHTED
+                                     : 0);
 }
 
 /* Visits one node: a leaf delivers its result; a boolean node opens a
@@ -1000,6 +1055,12 @@ static sc_status visit(builder *b, const model_node *n, int *opened)
     if (plain_leaf(b, n, parent))
         return visit_leaf(b, n, parent);
     int flat = build_dim(n, 0) == 2 && (kind != MODEL_PROJECTION || build_projects(n));
+    /* OpenSCAD's preview draws 2D booleans, transforms and colours as CSG
+     * of its 2D leaves' slabs */
+    if (flat && b->preview &&
+        (kind == MODEL_UNION || kind == MODEL_DIFFERENCE || kind == MODEL_INTERSECTION ||
+         kind == MODEL_XFORM || kind == MODEL_COLOR || kind == MODEL_MATERIAL))
+        flat = 0;
     if (model_is_leaf(kind) || kind == MODEL_LIGHT || kind == MODEL_CAMERA ||
         kind == MODEL_BACKGROUND || flat) {
         frame f;
@@ -1018,8 +1079,17 @@ static sc_status visit(builder *b, const model_node *n, int *opened)
             /* ignored, it is the empty solid, which empties an intersection
              * as in OpenSCAD */
             uint32_t id = CSG_EMPTY;
-            st = n->is_root ? build_flat(b, n, &f, &id) : build_twod_ignored(b, n, &f);
-            return st != SC_OK ? st : deliver(b, n, f.counted, id, f.highlighted);
+            int flags = f.highlighted ? ID_HIGHLIGHTED : 0;
+            if (b->preview) {
+                st = build_preview_slab(b, n, &f, &id);
+            } else if (n->is_root) {
+                st = build_flat(b, n, &f, &id);
+            } else {
+                b->flat_parts += f.emit && f.shown;
+                flags |= ID_SLAB;
+                st = build_twod_ignored(b, n, &f);
+            }
+            return st != SC_OK ? st : deliver(b, n, f.counted, id, flags);
         }
         return visit_leaf(b, n, &f);
     }
@@ -1113,6 +1183,55 @@ static sc_status walk_flat(builder *b, const frame *top, uint32_t *root)
     return st;
 }
 
+/* Whether the transform m keeps the plane z = 0 where it is, as the 2D
+ * result of OpenSCAD's render does any transform. */
+static int in_plane(const affine *m)
+{
+    return m->m[0][2] == 0 && m->m[1][2] == 0 && m->m[2][0] == 0 && m->m[2][1] == 0 &&
+           m->m[2][3] == 0;
+}
+
+/* Whether OpenSCAD's preview of the 2D model m shows more than its
+ * render: a 3D object, which the render leaves out (a leaf, not below a
+ * projection, which reads its 3D children), a transform out of the plane
+ * (which the render flattens), or a '#' or '%' part (the render's walk of
+ * a 2D model notes none). 1 or 0; -1 when out of memory. */
+static int flat_preview_differs(const model *m)
+{
+    const model_node **stack = NULL;
+    size_t count = 0, cap = 0;
+    int found = 0;
+    for (const model_node *n = m->first; n && !found; n = n->next) {
+        if (!grow_array((void **)&stack, &cap, count + 1, sizeof *stack)) {
+            free(stack);
+            return -1;
+        }
+        stack[count++] = n;
+        while (count && !found) {
+            const model_node *k = stack[--count];
+            if (k->modifiers & MODEL_MOD_DISABLE)
+                continue;
+            if ((k->modifiers & (MODEL_MOD_HIGHLIGHT | MODEL_MOD_BACKGROUND)) ||
+                (model_is_leaf(k->kind) && build_dim(k, 0) == 3) ||
+                (k->kind == MODEL_XFORM && !in_plane(k->u.xform))) {
+                found = 1;
+                break;
+            }
+            if (model_is_leaf(k->kind) || k->kind == MODEL_PROJECTION)
+                continue;
+            for (const model_node *c = k->first_child; c; c = c->next) {
+                if (!grow_array((void **)&stack, &cap, count + 1, sizeof *stack)) {
+                    free(stack);
+                    return -1;
+                }
+                stack[count++] = c;
+            }
+        }
+    }
+    free(stack);
+    return found;
+}
+
 static sc_status walk(builder *b, uint32_t *root)
 {
     static const float default_color[4] = BUILD_DEFAULT_COLOR;
@@ -1125,8 +1244,18 @@ static sc_status walk(builder *b, uint32_t *root)
     top.to_world = affine_identity();
     memcpy(top.color, default_color, sizeof top.color);
     sc_status st = push_frame(b, &top);
-    if (st == SC_OK && !b->model->has_root && build_list_dim(b->model->first, 0) == 2)
+    if (st == SC_OK && !b->preview && !b->model->has_root &&
+        build_list_dim(b->model->first, 0) == 2) {
+        /* the preview draws the 2D model as it draws a 3D one, with what
+         * the render leaves out, and notes its parts then */
+        int differs = flat_preview_differs(b->model);
+        if (differs < 0)
+            return err_nomem(b->error, NULL);
+        b->flat_parts += (size_t)differs;
+        b->notes_parts = 0;
+        b->flat_model = 1;
         return walk_flat(b, &top, root);
+    }
     const model_node *n = b->model->first;
     while (st == SC_OK) {
         if (!n) {
@@ -1173,6 +1302,7 @@ static sc_status walk_part(builder *sub, const part_mark *mark, uint32_t *id)
     top.op = CSG_UNION;
     top.emit = top.warns = top.counted = top.shown = 1;
     top.first_id = top.first_ignored = 0;
+    top.negative = 0; /* a part is a product of its own */
     sub->part = mark->node;
     sub->root_id = CSG_EMPTY;
     sub->frame_count = sub->id_count = sub->ignored_count = 0;
@@ -1227,6 +1357,7 @@ static sc_status build_parts(builder *b)
         sub.resize_cache = b->resize_cache;
         sub.imports = b->imports;
         sub.nefs = b->nefs;
+        sub.preview = 1;
         sub.csg = csg_builder_new();
         sub.shading = shading_new();
         uint32_t *results = calloc(count, sizeof *results);
@@ -1250,7 +1381,7 @@ static sc_status build_parts(builder *b)
         b->imports = sub.imports;
         b->triangles_left = sub.triangles_left;
         free(sub.ids);
-        free(sub.id_highlighted);
+        free(sub.id_flags);
         free(sub.id_nodes);
         free(sub.frames);
         free(sub.ignored);
@@ -1279,17 +1410,19 @@ static sc_status build_parts(builder *b)
 }
 
 /* Builds the preview's solid (shading.preview_solid) where it differs
- * from the solid: where a union has highlighted operands and others
+ * from the solid. Where a union has highlighted operands and others
  * (b->drops), OpenSCAD 2021.01's preview leaves the highlighted ones out
  * of its solid and draws them as parts only (CSGTreeEvaluator), so that
  * `cube(10); #sphere(3);` shows the sphere translucent red, not the solid
- * sphere through red. The model is walked again into a tree of its own
- * with those operands left out (highlight_operands); the walk's warnings
- * are the main walk's, and are not given again. When it cannot be built,
- * a warning says so and the preview shows the solid. */
+ * sphere through red. And where the render leaves out 2D objects of a 3D
+ * model, or 3D objects of a 2D one (b->flat_parts), the preview draws
+ * both, each 2D object as a slab (build_preview_slab). The model is walked
+ * again into a tree of its own, so (highlight_operands, b->preview); the
+ * walk's warnings are the main walk's, and are not given again. When it
+ * cannot be built, a warning says so and the preview shows the solid. */
 static sc_status build_preview_solid(builder *b)
 {
-    if (!b->drops)
+    if (!b->drops && !b->flat_parts)
         return SC_OK;
     sc_error error;
     builder sub;
@@ -1306,14 +1439,23 @@ static sc_status build_preview_solid(builder *b)
     sub.nefs = b->nefs;
     sub.root_id = CSG_EMPTY;
     sub.drop_highlighted = 1;
+    sub.preview = 1;
+    sub.notes_parts = b->flat_model; /* the main walk noted none */
     sub.csg = csg_builder_new();
     sub.shading = shading_new();
     uint32_t root = CSG_EMPTY;
     sc_status st = sub.csg && sub.shading ? walk(&sub, &root) : SC_ERR_NOMEM;
     b->resize_cache = sub.resize_cache;
     b->imports = sub.imports;
+    if (b->flat_model) { /* its parts: none were noted */
+        free(b->marks);
+        b->marks = sub.marks;
+        b->mark_count = sub.mark_count;
+        b->mark_cap = sub.mark_cap;
+        sub.marks = NULL;
+    }
     free(sub.ids);
-    free(sub.id_highlighted);
+    free(sub.id_flags);
     free(sub.id_nodes);
     free(sub.frames);
     free(sub.ignored);
@@ -1324,16 +1466,14 @@ static sc_status build_preview_solid(builder *b)
         csg_builder_free(sub.csg);
         if (st == SC_ERR_NOMEM)
             return err_nomem(b->error, NULL);
-        return warn(b, NULL, "the preview shows the '#' parts inside the solid: %s",
-                    error.message);
+        return warn(b, NULL, "the preview shows the render's solid: %s", error.message);
     }
     /* The builder is freed here whatever happens. */
     st = csg_builder_finish(sub.csg, root, &b->shading->preview_solid, &error);
     if (st == SC_ERR_NOMEM)
         return err_nomem(b->error, NULL);
     if (st != SC_OK)
-        return warn(b, NULL, "the preview shows the '#' parts inside the solid: %s",
-                    error.message);
+        return warn(b, NULL, "the preview shows the render's solid: %s", error.message);
     return SC_OK;
 }
 
@@ -1402,6 +1542,7 @@ static sc_status build_scene_of(const model *m, model *owned, void *spare,
     b.max_triangles = max_triangles ? max_triangles : BUILD_MAX_TRIANGLES;
     b.triangles_left = b.max_triangles;
     b.root_id = CSG_EMPTY;
+    b.notes_parts = 1;
     b.csg = csg_builder_new();
     b.shading = shading_new();
     b.nefs = build_nef_cache_new();
@@ -1427,19 +1568,19 @@ static sc_status build_scene_of(const model *m, model *owned, void *spare,
     if (st == SC_OK)
         st = walk(&b, &root);
     free(b.ids);
-    free(b.id_highlighted);
+    free(b.id_flags);
     free(b.id_nodes);
     free(b.frames);
     free(b.ignored);
     b.ids = NULL;
-    b.id_highlighted = NULL;
+    b.id_flags = NULL;
     b.id_nodes = NULL;
     b.frames = NULL;
     b.ignored = NULL;
-    if (st == SC_OK)
-        st = build_parts(&b);
     if (st == SC_OK && look)
         st = build_preview_solid(&b);
+    if (st == SC_OK)
+        st = build_parts(&b);
     free(b.marks);
     build_resize_cache_free(b.resize_cache);
     build_nef_cache_free(b.nefs);

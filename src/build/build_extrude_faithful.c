@@ -514,12 +514,14 @@ sc_status build_linear_extrude_faces(const build_ctx *c, const model_node *n,
 }
 
 sc_status build_flat_slab(const build_ctx *c, const sc_location *loc,
-                          const twod_region *r, prim *out, const char **empty)
+                          const twod_region *r, double height, prim *out,
+                          const char **empty)
 {
-    /* height 1 centred, one slice, no twist or scale; past 1e6 across,
-     * 1e-6 of the larger of its width and height, far above the rays'
-     * tolerance (1e-9 of the extent: csg.h) */
+    /* height centred, one slice, no twist or scale; past 1e6 across,
+     * height 1e-6 of the larger of its width and height, far above the
+     * rays' tolerance (1e-9 of the extent: csg.h) */
     params p = {1, 0, 1, 1, 0, 12, 2, 1, 1};
+    p.height = height;
     double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
     for (uint32_t i = 0; i < r->point_count; i++)
         for (int a = 0; a < 2; a++) {
@@ -528,7 +530,7 @@ sc_status build_flat_slab(const build_ctx *c, const sc_location *loc,
         }
     double across = fmax(hi[0] - lo[0], hi[1] - lo[1]);
     if (across > 1e6)
-        p.height = 1e-6 * across;
+        p.height = height * 1e-6 * across;
     if (!(fabs(twod_area(r)) > 0)) {
         *empty = "the 2D model has no area";
         return SC_OK;

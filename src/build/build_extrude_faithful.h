@@ -30,9 +30,11 @@ sc_status build_linear_extrude_faces(const build_ctx *c, const model_node *n,
 
 /* A 2D model as OpenSCAD 2021.01 draws a 2D result (its
  * PolySet::render_surface, in the preview and the render alike): the
- * region r between z = -0.5 and 0.5, as a closed mesh leaf; a region
+ * region r between z = -height / 2 and height / 2 (1, or 1.1 for the
+ * preview's subtracted 2D objects), as a closed mesh leaf; a region
  * without area sets *empty instead. loc is the model's position. */
 sc_status build_flat_slab(const build_ctx *c, const sc_location *loc,
-                          const twod_region *r, prim *out, const char **empty);
+                          const twod_region *r, double height, prim *out,
+                          const char **empty);
 
 #endif

@@ -86,8 +86,9 @@ typedef struct shading {
      * transforms and colours; NULL when the file has none. */
     csg_tree *overlay[SHADING_OVERLAYS];
     /* The solid as OpenSCAD's preview shows it, where it differs: without
-     * the '#' operands of unions that have others (build.c's
-     * build_preview_solid); NULL when it is the solid. */
+     * the '#' operands of unions that have others, with the 2D objects of
+     * a 3D model as slabs (build.c's build_preview_solid); NULL when it is
+     * the solid. */
     csg_tree *preview_solid;
     /* A 2D model, drawn as the slab OpenSCAD draws a 2D result: its render
      * (not the preview) shows it unlit in the colour scheme's 2D face
