@@ -185,6 +185,27 @@ for mode in "" --faithful; do
         same range_last.csg range_last_ref.csg $mode
     }
 done
+# A square past the range is drawn where OpenSCAD draws it without its
+# clipper, but turned over (a mirror) OpenSCAD sanitizes it again and its
+# clipper refuses it, and a union of two stops on Clipper's exception: the
+# exact extrusion, which reads squares without a clipper, follows OpenSCAD
+# there too.
+printf '%s { multmatrix([[-1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]) { square(size = [1e14, 1e14], center = false); } }\n%s\n' "$ext1" "$unit" >range_mirror.csg
+printf '%s { union() { square(size = [1e14, 1e14], center = false); circle(r = 1e14); } }\n' "$ext1" >range_union.csg
+printf 'linear_extrude(height = 1e12) { multmatrix([[1, 0, 0, 5e13], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]) { circle(r = 3e13); } }\n' >range_circle.csg
+printf 'rotate_extrude() { union() { square(size = [1e14, 1e14], center = false); square(size = [1, 1e14], center = false); } }\n' >range_revolve_union.csg
+printf 'rotate_extrude() { square(size = [1e14, 1e14], center = false); }\n' >range_revolve.csg
+for mode in "" --faithful; do
+    # shellcheck disable=SC2086
+    {
+        warns range_mirror.csg "range_mirror.csg:1:30: warning: Range check failed for polygon. skipping (outline 1 of the shape and those after it, as OpenSCAD leaves them out; --strict makes it an error)" $mode
+        same range_mirror.csg range_unit_ref.csg $mode
+        refuses range_union.csg "range_union.csg:1:30: error: union: coordinates out of range (limit is 7.03687e+13)" $mode
+        warns range_circle.csg "" $mode
+        refuses range_revolve_union.csg "range_revolve_union.csg:1:20: error: union: coordinates out of range (limit is 7.03687e+13)" $mode
+        warns range_revolve.csg "" $mode
+    }
+done
 # the same inside hull, minkowski and projection (OpenSCAD: hull() {
 # import("missing.stl"); cube(1); } is the cube, with the warning)
 printf 'hull() {\n\timport(file = "missing.stl");\n\tcube(size = [1, 1, 1], center = false);\n}\n' >hull-missing.csg

@@ -31,6 +31,24 @@ sc_status build_notes_add(build_notes *notes, sc_error *error, const sc_location
     return SC_OK;
 }
 
+build_notes_place build_notes_here(const build_ctx *c)
+{
+    build_notes_place at = {0, 0};
+    if (c->notes) {
+        at.count = c->notes->count;
+        at.left_out = c->notes->left_out;
+    }
+    return at;
+}
+
+void build_notes_rewind(const build_ctx *c, build_notes_place at)
+{
+    if (c->notes) {
+        c->notes->count = at.count;
+        c->notes->left_out = at.left_out;
+    }
+}
+
 sc_status build_note(const build_ctx *c, const sc_location *loc, const char *format, ...)
 {
     if (!c->notes)

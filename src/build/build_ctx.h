@@ -89,6 +89,15 @@ sc_status build_check_triangles(const build_ctx *c, const sc_location *loc,
 sc_status build_notes_add(build_notes *notes, sc_error *error, const sc_location *loc,
                           const char *format, va_list args) SC_PRINTF(4, 0);
 
+/* A place in c->notes, to go back to (build_notes_rewind) when a builder
+ * drops what it read to read it again another way. */
+typedef struct build_notes_place {
+    size_t count, left_out;
+} build_notes_place;
+
+build_notes_place build_notes_here(const build_ctx *c);
+void build_notes_rewind(const build_ctx *c, build_notes_place at);
+
 /* Adds a warning at loc to c->notes (nothing when that is NULL); fails
  * only when memory runs out (an error in c->error). */
 sc_status build_note(const build_ctx *c, const sc_location *loc, const char *format, ...)

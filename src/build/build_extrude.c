@@ -7,7 +7,8 @@
  * prim_extrusion.c): circles stay circles. One whose 2D children are all
  * text is an exact outline prism (build_text.c, prim_outline.c): the
  * glyphs' Bezier curves. Everything else (--faithful, twist, scale,
- * offset, 2D hull and minkowski, text beside other shapes) is built as
+ * offset, 2D hull and minkowski, text beside other shapes, a square or
+ * circle past the clipper's range) is built as
  * OpenSCAD 2021.01 builds it: the 2D engine (src/twod/) evaluates the
  * children and build_extrude_faithful.c makes OpenSCAD's slices into a
  * closed mesh. Without twist or scale that mesh is the exact prism of the
@@ -35,10 +36,20 @@ sc_status build_linear_extrude(const build_ctx *c, const model_node *n, int emit
 {
     if (!c->faithful) {
         const model_node *miss = NULL;
-        if (build_region_covers(n, &miss))
-            return build_region_extrude(c, n, emit, out, empty);
+        if (build_region_covers(n, &miss)) {
+            build_notes_place notes = build_notes_here(c);
+            int far;
+            sc_status st = build_region_extrude(c, n, emit, out, empty, &far);
+            if (st != SC_OK || !far)
+                return st;
+            /* Past the clipper's range OpenSCAD draws a square or circle
+             * alone but refuses one turned over or combined: its own path
+             * decides, and gives the warnings again. */
+            build_notes_rewind(c, notes);
+            *empty = NULL;
+        }
         /* only text, without twist or scale: the exact outline prism */
-        if (miss && build_text_only(n))
+        else if (miss && build_text_only(n))
             return text_extrude(c, n, emit, out, empty);
     }
     return build_linear_extrude_faithful(c, n, emit, out, empty);

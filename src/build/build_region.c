@@ -43,6 +43,7 @@ typedef struct walker {
     const build_ctx *c;
     prim_region region;
     twod_region poly; /* the polygon being read, under the transforms */
+    int far;          /* a square or circle reaches past the clipper's range */
 } walker;
 
 /* The 2D leaves the walk reads. */
@@ -114,6 +115,8 @@ static sc_status read_square(walker *w, const model_node *n, const affine2 *m,
         !twod_add_moved(p, m, x0 + sx, y0) || !twod_add_moved(p, m, x0 + sx, y0 + sy) ||
         !twod_add_moved(p, m, x0, y0 + sy))
         return build_twod_add_error(w->c, n, p);
+    for (uint32_t i = 0; i < 2 * p->point_count; i++)
+        w->far |= !twod_in_range(p->xy[i]);
     return add_poly(w, n, pushed);
 }
 
@@ -128,6 +131,12 @@ static sc_status read_circle(walker *w, const model_node *n, const affine2 *m,
     double r = isnan(args->d) ? args->r : args->d / 2;
     if (!(r > 0 && isfinite(r)))
         return SC_OK;
+    /* the ellipse's box: its centre, plus r times each row's length */
+    for (int a = 0; a < 2; a++) {
+        double reach = r * hypot(m->m[a][0], m->m[a][1]);
+        w->far |=
+            !twod_in_range(m->m[a][2] - reach) || !twod_in_range(m->m[a][2] + reach);
+    }
     return prim_region_add_ellipse(&w->region, m->m, r, pushed)
                ? SC_OK
                : err_nomem(w->c->error, &n->loc);
@@ -239,8 +248,9 @@ static sc_status walk(twod_walker *walk, const model_node *n, const affine2 *m, 
 }
 
 sc_status build_region_extrude(const build_ctx *c, const model_node *n, int emit,
-                               prim *out, const char **empty)
+                               prim *out, const char **empty, int *far)
 {
+    *far = 0;
     const model_linear_extrude *args = n->u.linear_extrude;
     if (args->exact_error) {
         *c->error = *args->exact_error;
@@ -256,7 +266,8 @@ sc_status build_region_extrude(const build_ctx *c, const model_node *n, int emit
     affine2 id = affine2_identity();
     int pushed = 0;
     sc_status st = walk_children(&w, n, &id, PRIM_REGION_UNION, 0, &pushed);
-    if (st == SC_OK && emit) {
+    *far = st == SC_OK && w.far;
+    if (st == SC_OK && emit && !w.far) {
         double z0 = center ? -height / 2 : 0, z1 = z0 + height;
         if (!(height > 0 && isfinite(height)) || !pushed || !(z0 < z1)) {
             *empty = "linear_extrude without height or area is empty";

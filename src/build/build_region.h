@@ -19,8 +19,10 @@ int build_region_covers(const model_node *n, const model_node **miss);
 /* Builds the exact extrusion of n: height (default 100) and center are
  * read and checked, and the 2D subtree is walked with exact positions for
  * bad arguments. A zero height or an empty region sets *empty to a warning
- * instead; with emit unset only the checks run. */
+ * instead; with emit unset only the checks run. *far says that a square
+ * or circle reaches past the clipper's range (TWOD_MAX_COORD), where
+ * OpenSCAD's clipper decides what is drawn: then nothing is built. */
 sc_status build_region_extrude(const build_ctx *c, const model_node *n, int emit,
-                               prim *out, const char **empty);
+                               prim *out, const char **empty, int *far);
 
 #endif

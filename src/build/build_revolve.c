@@ -38,7 +38,9 @@
  * circle under a transform that is not a similarity (an ellipse, whose
  * revolution is a quartic that is no torus) and a circle whose exact disc
  * would reach across the axis (its polygon does not) are their OpenSCAD
- * polygon. Faithful mode builds OpenSCAD's mesh through build_mesh_prim.
+ * polygon. A profile with a point past the clipper's range is OpenSCAD's
+ * 2D union of the children, which decides what is drawn there. Faithful
+ * mode builds OpenSCAD's mesh through build_mesh_prim.
  * The walk over the children recurses with a depth guard.
  */
 #include "build/build_revolve.h"
@@ -591,8 +593,25 @@ static sc_status rotate_extrude(const build_ctx *c, const model_node *n, int emi
             st = add_twod(c, n, &r, &id, &p);
         twod_free(&r);
     } else {
+        build_notes_place notes = build_notes_here(c);
         gatherer g = {{c, "rotate_extrude", "nodes", gather}, &p};
         st = twod_walk_children(&g.walk, n, &id, 0);
+        int far = 0;
+        for (uint32_t i = 0; st == SC_OK && i < 2 * p.pts.point_count; i++)
+            far |= !twod_in_range(p.pts.xy[i]);
+        if (far) {
+            /* past the clipper's range, OpenSCAD's 2D union decides what
+             * it draws, refuses or leaves out (and says so again) */
+            build_notes_rewind(c, notes);
+            profile_free(&p);
+            memset(&p, 0, sizeof p);
+            twod_region r;
+            twod_init(&r);
+            st = build_twod_children(c, n, &r);
+            if (st == SC_OK)
+                st = add_twod(c, n, &r, &id, &p);
+            twod_free(&r);
+        }
     }
     /* OpenSCAD's check, in its order, with its running range. */
     double min_x = 0, max_x = 0;
