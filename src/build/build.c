@@ -1331,6 +1331,22 @@ static sc_status walk_part(builder *sub, const part_mark *mark, uint32_t *id)
     return SC_OK;
 }
 
+/* Sets up sub, a builder of the preview's (its parts, its solid) for b's
+ * model, with b's caches, its errors into error. */
+static void preview_builder(const builder *b, builder *sub, sc_error *error)
+{
+    memset(sub, 0, sizeof *sub);
+    sub->model = b->model;
+    sub->file = b->file;
+    sub->error = error;
+    sub->faithful = b->faithful;
+    sub->max_triangles = b->max_triangles;
+    sub->resize_cache = b->resize_cache;
+    sub->imports = b->imports;
+    sub->nefs = b->nefs;
+    sub->preview = 1;
+}
+
 /* Builds the preview's modifier parts of each kind that b noted into a
  * tree (shading.overlay). A part that cannot be built is left out with a
  * warning at its node; only running out of memory fails. */
@@ -1346,18 +1362,9 @@ static sc_status build_parts(builder *b)
             continue;
         sc_error error;
         builder sub;
-        memset(&sub, 0, sizeof sub);
-        sub.model = b->model;
-        sub.file = b->file;
-        sub.error = &error;
-        sub.faithful = b->faithful;
+        preview_builder(b, &sub, &error);
         /* the parts' meshes have what is left of the model's budget */
-        sub.max_triangles = b->max_triangles;
         sub.triangles_left = b->triangles_left;
-        sub.resize_cache = b->resize_cache;
-        sub.imports = b->imports;
-        sub.nefs = b->nefs;
-        sub.preview = 1;
         sub.csg = csg_builder_new();
         sub.shading = shading_new();
         uint32_t *results = calloc(count, sizeof *results);
@@ -1426,20 +1433,11 @@ static sc_status build_preview_solid(builder *b)
         return SC_OK;
     sc_error error;
     builder sub;
-    memset(&sub, 0, sizeof sub);
-    sub.model = b->model;
-    sub.file = b->file;
-    sub.error = &error;
-    sub.faithful = b->faithful;
+    preview_builder(b, &sub, &error);
     sub.strict = b->strict;
-    sub.max_triangles = b->max_triangles;
     sub.triangles_left = b->max_triangles; /* the same meshes as the solid's */
-    sub.resize_cache = b->resize_cache;
-    sub.imports = b->imports;
-    sub.nefs = b->nefs;
     sub.root_id = CSG_EMPTY;
     sub.drop_highlighted = 1;
-    sub.preview = 1;
     sub.notes_parts = b->flat_model; /* the main walk noted none */
     sub.csg = csg_builder_new();
     sub.shading = shading_new();

@@ -570,6 +570,19 @@ done:
 }
 
 /* build_rotate_extrude, or with faces build_rotate_extrude_faces. */
+/* Adds to p the children of n as OpenSCAD's 2D union makes them. */
+static sc_status united_profile(const build_ctx *c, const model_node *n, profile *p)
+{
+    affine2 id = affine2_identity();
+    twod_region r;
+    twod_init(&r);
+    sc_status st = build_twod_children(c, n, &r);
+    if (st == SC_OK)
+        st = add_twod(c, n, &r, &id, p);
+    twod_free(&r);
+    return st;
+}
+
 static sc_status rotate_extrude(const build_ctx *c, const model_node *n, int emit,
                                 prim *out, const char **empty, build_mesh_faces *faces)
 {
@@ -586,12 +599,7 @@ static sc_status rotate_extrude(const build_ctx *c, const model_node *n, int emi
     if (c->faithful) {
         /* OpenSCAD unites the children in 2D first: its rings follow the
          * united outline's points. */
-        twod_region r;
-        twod_init(&r);
-        st = build_twod_children(c, n, &r);
-        if (st == SC_OK)
-            st = add_twod(c, n, &r, &id, &p);
-        twod_free(&r);
+        st = united_profile(c, n, &p);
     } else {
         build_notes_place notes = build_notes_here(c);
         gatherer g = {{c, "rotate_extrude", "nodes", gather}, &p};
@@ -605,12 +613,7 @@ static sc_status rotate_extrude(const build_ctx *c, const model_node *n, int emi
             build_notes_rewind(c, notes);
             profile_free(&p);
             memset(&p, 0, sizeof p);
-            twod_region r;
-            twod_init(&r);
-            st = build_twod_children(c, n, &r);
-            if (st == SC_OK)
-                st = add_twod(c, n, &r, &id, &p);
-            twod_free(&r);
+            st = united_profile(c, n, &p);
         }
     }
     /* OpenSCAD's check, in its order, with its running range. */
