@@ -165,8 +165,9 @@ done < <(echo "$names" | sed "s/', '/\n/g; s/^'//; s/'$//")
 # several objects only where OpenCSG's depth pass keeps it; the '%' parts
 # before the '#' parts, with depth writes. A '#' operand of a union with
 # others is left out of the solid, and the highlight is the term where it
-# stops (a difference whose first operand is '#'). An intersection is
-# framed by its operands' boxes. Each scene is converted by OpenSCAD and
+# stops (a difference whose first operand is '#'); a '#' on a '%' node,
+# and the '#' and '%' children of a hull, are parts too. An intersection
+# is framed by its operands' boxes. Each scene is converted by OpenSCAD and
 # compared with its own preview image.
 scenes=(
     'difference() { cube(20, center = true); #cylinder(r = 5, h = 30, center = true); }'
@@ -181,11 +182,15 @@ scenes=(
     'translate([0, 0, 0]) { #cube(5); } sphere(2);'
     'cube(1); %translate([0, 8, 0]) #cube(4);'
     '#cube(5); #translate([8, 0, 0]) cube(5);'
+    '%#cube(10);'
+    'hull() { cube(5, center = true); %translate([20, 0, 0]) sphere(4, $fn = 20); }'
 )
 # 2D objects in a 3D model (and 3D ones in a 2D model), which the render
 # leaves out, are slabs 1 thick in the preview (1.1 where subtracted), as
 # are a 2D model's objects moved out of its plane. The camera is given:
-# OpenSCAD frames a slab by its flat box.
+# OpenSCAD frames a slab by its flat box. A 2D model is drawn so too: its
+# leaves in their colours, the walls of a 2D difference in the cut-out
+# colour.
 slab_scenes=(
     'cube(5); translate([8, 0, 0]) square(4);'
     'rotate([90, 0, 0]) circle(3); translate([8, 0, 0]) cube(3);'
@@ -193,6 +198,8 @@ slab_scenes=(
     'cube(3); %translate([6, 0, 0]) square(3); #translate([0, 6, 0]) circle(2);'
     'difference() { square(10); translate([5, 5, 0]) cube(3, center = true); }'
     'translate([0, 0, 5]) square(4); rotate([90, 0, 0]) square(3);'
+    'color("red") square(10); color("blue") translate([16, 0]) circle(4);'
+    'difference() { square(20, center = true); square(8, center = true); }'
 )
 compare_scene() { # name, scene, then options of both
     local name=$1 scene=$2

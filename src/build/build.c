@@ -923,11 +923,31 @@ static sc_status mark_part(builder *b, const model_node *n, const frame *parent)
     sc_status st = SC_OK;
     if (n->modifiers & MODEL_MOD_BACKGROUND)
         st = add_mark(b, n, SHADING_OVERLAY_BACKGROUND, parent);
-    /* a '#' where nothing is built (below a '%') or on the root; others
-     * where the highlight stops (highlight_operands) */
+    /* a '#' where nothing is built (below a '%', or with one), or on the
+     * root; others where the highlight stops (highlight_operands) */
     if (st == SC_OK && (n->modifiers & MODEL_MOD_HIGHLIGHT) &&
-        (!parent->emit || n->is_root))
+        (!parent->emit || n->is_root || (n->modifiers & MODEL_MOD_BACKGROUND)))
         st = add_mark(b, n, SHADING_OVERLAY_HIGHLIGHT, parent);
+    return st;
+}
+
+/* Notes the '#' and '%' children of hull or minkowski n (state f) as
+ * parts: OpenSCAD's CSGTreeEvaluator draws them
+ * (applyBackgroundAndHighlight), though the builder reads them as the
+ * operation's operands and does not walk them. */
+static sc_status mark_operands(builder *b, const model_node *n, const frame *f)
+{
+    sc_status st = SC_OK;
+    if (!b->notes_parts || !f->shown)
+        return st;
+    for (const model_node *k = n->first_child; st == SC_OK && k; k = k->next) {
+        if (k->modifiers & MODEL_MOD_DISABLE)
+            continue;
+        if (k->modifiers & MODEL_MOD_BACKGROUND)
+            st = add_mark(b, k, SHADING_OVERLAY_BACKGROUND, f);
+        if (st == SC_OK && (k->modifiers & MODEL_MOD_HIGHLIGHT))
+            st = add_mark(b, k, SHADING_OVERLAY_HIGHLIGHT, f);
+    }
     return st;
 }
 
@@ -1091,6 +1111,9 @@ static sc_status visit(builder *b, const model_node *n, int *opened)
             }
             return st != SC_OK ? st : deliver(b, n, f.counted, id, flags);
         }
+        if ((kind == MODEL_HULL || kind == MODEL_MINKOWSKI) &&
+            (st = mark_operands(b, n, &f)) != SC_OK)
+            return st;
         return visit_leaf(b, n, &f);
     }
     /* A boolean node: its frame is made in place, in the next slot, and
@@ -1183,55 +1206,6 @@ static sc_status walk_flat(builder *b, const frame *top, uint32_t *root)
     return st;
 }
 
-/* Whether the transform m keeps the plane z = 0 where it is, as the 2D
- * result of OpenSCAD's render does any transform. */
-static int in_plane(const affine *m)
-{
-    return m->m[0][2] == 0 && m->m[1][2] == 0 && m->m[2][0] == 0 && m->m[2][1] == 0 &&
-           m->m[2][3] == 0;
-}
-
-/* Whether OpenSCAD's preview of the 2D model m shows more than its
- * render: a 3D object, which the render leaves out (a leaf, not below a
- * projection, which reads its 3D children), a transform out of the plane
- * (which the render flattens), or a '#' or '%' part (the render's walk of
- * a 2D model notes none). 1 or 0; -1 when out of memory. */
-static int flat_preview_differs(const model *m)
-{
-    const model_node **stack = NULL;
-    size_t count = 0, cap = 0;
-    int found = 0;
-    for (const model_node *n = m->first; n && !found; n = n->next) {
-        if (!grow_array((void **)&stack, &cap, count + 1, sizeof *stack)) {
-            free(stack);
-            return -1;
-        }
-        stack[count++] = n;
-        while (count && !found) {
-            const model_node *k = stack[--count];
-            if (k->modifiers & MODEL_MOD_DISABLE)
-                continue;
-            if ((k->modifiers & (MODEL_MOD_HIGHLIGHT | MODEL_MOD_BACKGROUND)) ||
-                (model_is_leaf(k->kind) && build_dim(k, 0) == 3) ||
-                (k->kind == MODEL_XFORM && !in_plane(k->u.xform))) {
-                found = 1;
-                break;
-            }
-            if (model_is_leaf(k->kind) || k->kind == MODEL_PROJECTION)
-                continue;
-            for (const model_node *c = k->first_child; c; c = c->next) {
-                if (!grow_array((void **)&stack, &cap, count + 1, sizeof *stack)) {
-                    free(stack);
-                    return -1;
-                }
-                stack[count++] = c;
-            }
-        }
-    }
-    free(stack);
-    return found;
-}
-
 static sc_status walk(builder *b, uint32_t *root)
 {
     static const float default_color[4] = BUILD_DEFAULT_COLOR;
@@ -1246,12 +1220,10 @@ static sc_status walk(builder *b, uint32_t *root)
     sc_status st = push_frame(b, &top);
     if (st == SC_OK && !b->preview && !b->model->has_root &&
         build_list_dim(b->model->first, 0) == 2) {
-        /* the preview draws the 2D model as it draws a 3D one, with what
-         * the render leaves out, and notes its parts then */
-        int differs = flat_preview_differs(b->model);
-        if (differs < 0)
-            return err_nomem(b->error, NULL);
-        b->flat_parts += (size_t)differs;
+        /* the preview draws the 2D model as it draws a 3D one: the CSG of
+         * its leaves' slabs, each in its colour, with what the render
+         * leaves out, and notes its parts then */
+        b->flat_parts++;
         b->notes_parts = 0;
         b->flat_model = 1;
         return walk_flat(b, &top, root);
