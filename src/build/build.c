@@ -135,7 +135,7 @@ typedef struct builder {
      * model are the slabs OpenSCAD's preview draws (build_preview_slab) */
     int preview;
     size_t flat_parts; /* 2D objects the main walk left out of a 3D model, or
-                          something more in a 2D model (flat_preview_differs) */
+                          1 for a 2D model, which the preview draws as slabs */
     int flat_model;    /* the main walk was a 2D model's */
     frame *frames;
     size_t frame_count, frame_cap;

@@ -816,10 +816,12 @@ static sc_status preview_bounds(const csg_tree *t, bbox *out, sc_error *error)
         return err_nomem(error, NULL);
     for (uint32_t i = 0; i < t->node_count; i++) { /* children first */
         const csg_node *n = &t->nodes[i];
-        const uint32_t *child = t->child_ids + n->first_child;
         if (n->op == CSG_LEAF) {
             box[i] = n->bounds;
-        } else if (n->op == CSG_DIFFERENCE) {
+            continue;
+        }
+        const uint32_t *child = t->child_ids + n->first_child; /* a leaf has none */
+        if (n->op == CSG_DIFFERENCE) {
             box[i] = n->child_count ? box[child[0]] : bbox_empty();
         } else {
             box[i] = bbox_empty();
