@@ -2,7 +2,8 @@
  * on the key shapes the builders sort: packed pairs of small point
  * indices (whose high digits are all the same, so their passes are
  * skipped), full 64-bit keys, repeats, sorted and reversed runs, and the
- * sizes 0, 1 and 2.
+ * sizes 0, 1 and 2; and every size each way of sorting takes (insertion
+ * for a few keys, 8-bit digits below 65,536, 16-bit ones from there).
  */
 #include <setjmp.h>
 #include <stdarg.h>
@@ -83,8 +84,36 @@ static void test_shapes(void **unused)
     free(k);
 }
 
+/* The sizes around each change of method, each with full keys, packed
+ * index pairs and repeats. */
+static void test_sizes(void **unused)
+{
+    (void)unused;
+    static const size_t sizes[] = {3,  15,  16,   17,    31,    32,
+                                   33, 100, 1000, 65535, 65536, 65537};
+    uint64_t *k = malloc(65537 * sizeof *k);
+    assert_non_null(k);
+    for (size_t s = 0; s < sizeof sizes / sizeof sizes[0]; s++) {
+        size_t n = sizes[s];
+        for (size_t i = 0; i < n; i++)
+            k[i] = next();
+        check(k, n);
+        for (size_t i = 0; i < n; i++)
+            k[i] = (next() % 300) << 32 | next() % 300;
+        check(k, n);
+        for (size_t i = 0; i < n; i++)
+            k[i] = next() % 3;
+        check(k, n);
+        for (size_t i = 0; i < n; i++)
+            k[i] = (uint64_t)(n - i);
+        check(k, n);
+    }
+    free(k);
+}
+
 int main(void)
 {
-    const struct CMUnitTest tests[] = {cmocka_unit_test(test_shapes)};
+    const struct CMUnitTest tests[] = {cmocka_unit_test(test_shapes),
+                                       cmocka_unit_test(test_sizes)};
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
