@@ -59,17 +59,24 @@ static void options_above(sc_render_options *o, int preview)
     o->threads = 2;
 }
 
-static sc_framebuffer *render_options(const char *text, const sc_render_options *o)
+/* Loads text with lo (NULL: the defaults) and renders it with o. */
+static sc_framebuffer *render_loaded(const char *text, const sc_load_options *lo,
+                                     const sc_render_options *o)
 {
     sc_scene *scene = NULL;
     sc_error error;
-    if (sc_scene_load_string("test.csg", text, strlen(text), NULL, &scene, &error))
+    if (sc_scene_load_string("test.csg", text, strlen(text), lo, &scene, &error))
         fail_msg("load: %s", error.message);
     sc_framebuffer *fb = NULL;
     if (sc_render(scene, o, &fb, &error))
         fail_msg("render: %s", error.message);
     sc_scene_release(scene);
     return fb;
+}
+
+static sc_framebuffer *render_options(const char *text, const sc_render_options *o)
+{
+    return render_loaded(text, NULL, o);
 }
 
 static sc_framebuffer *render_text(const char *text, int preview)
@@ -331,6 +338,44 @@ static void test_highlight_leaves_union(void **state)
     sc_framebuffer_release(preview);
 }
 
+/* A scene loaded with no_preview has neither the preview's parts nor its
+ * own solid: its preview is the render's solid in the preview's colours,
+ * as if the file had no modifiers; loaded by default, it differs. */
+static void test_no_preview(void **state)
+{
+    (void)state;
+    static const char beside[] =
+        "cube(size = [20, 20, 10], center = true);\n"
+        "%smultmatrix([[1, 0, 0, 16], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]])\n"
+        "{ sphere(r = 4); }\n"
+        "%smultmatrix([[1, 0, 0, -16], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]])\n"
+        "{ cube(size = 6, center = true); }\n";
+    char text[768], plain[768];
+    snprintf(text, sizeof text, beside, "#", "%");
+    snprintf(plain, sizeof plain, beside, "", "");
+    sc_render_options o;
+    options_above(&o, 1);
+    sc_load_options lo;
+    sc_load_options_init(&lo);
+    lo.no_preview = 1;
+    sc_framebuffer *bare = render_loaded(text, &lo, &o),
+                   *full = render_loaded(text, NULL, &o);
+    /* without modifiers, the '%' cube is part of the solid: cut it off */
+    snprintf(plain, sizeof plain, beside, "", "*");
+    sc_framebuffer *expected = render_loaded(plain, NULL, &o);
+    assert_same_aovs(bare, expected);
+    assert_same_color(bare, expected);
+    size_t sphere = pixel_at(16, 0), part = pixel_at(-16, 0);
+    assert_int_equal(full->mask[sphere], 0); /* the '#' operand left the union */
+    assert_int_equal(bare->mask[sphere], 255);
+    assert_true(fabs(display(full, part, 0) - display(bare, part, 0)) +
+                    fabs(display(full, part, 2) - display(bare, part, 2)) >
+                0.05); /* the '%' part is drawn */
+    sc_framebuffer_release(bare);
+    sc_framebuffer_release(full);
+    sc_framebuffer_release(expected);
+}
+
 /* Parts and alpha at several samples a pixel, under a section cut: the
  * thread count changes nothing, and a crop is the whole image's pixels. */
 static void test_crop_and_threads(void **state)
@@ -393,6 +438,7 @@ int main(void)
         cmocka_unit_test(test_background_changes_no_aov),
         cmocka_unit_test(test_alpha_blends),
         cmocka_unit_test(test_highlight_leaves_union),
+        cmocka_unit_test(test_no_preview),
         cmocka_unit_test(test_crop_and_threads),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

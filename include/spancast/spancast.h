@@ -156,10 +156,17 @@ typedef struct sc_load_options {
        the export's own (its timestamp, an alpha it folded into the colour)
        are not the user's, so they are not given again (default 0) */
     int openscad_export;
+    /* 1: the scene will not be rendered with sc_render_options.preview, so
+       what only the preview draws is not built: its '#' and '%' parts, and
+       its own solid where that differs from the render's (a '#' operand of
+       a union, the 2D objects of a 3D model, every 2D model), which is a
+       second walk of the model. A preview of such a scene shows the
+       render's solid without parts. 0 (default): both are built */
+    int no_preview;
 } sc_load_options;
 
 /* Sets size and the defaults (faithful 0, strict 0, max_triangles 0,
- * threads 0, openscad_export 0). Never fails. */
+ * threads 0, openscad_export 0, no_preview 0). Never fails. */
 void sc_load_options_init_size(sc_load_options *options, size_t size);
 #define sc_load_options_init(options)                                                    \
     sc_load_options_init_size((options), sizeof *(options))

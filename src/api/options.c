@@ -8,6 +8,7 @@
 
 #include "base/error.h"
 #include "base/sized.h"
+#include "build/build.h"
 
 sc_status options_load(const sc_load_options *in, sc_load_options *out, sc_error *error)
 {
@@ -59,4 +60,10 @@ void options_threads_end(int saved)
 {
     if (saved > 0)
         omp_set_num_threads(saved);
+}
+
+int options_build_flags(const sc_load_options *o)
+{
+    return (o->faithful ? BUILD_FAITHFUL : 0) | (o->strict ? BUILD_STRICT : 0) |
+           (o->no_preview ? BUILD_NO_PREVIEW : 0);
 }

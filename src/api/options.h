@@ -15,6 +15,9 @@ sc_status options_measure(const sc_measure_options *in, sc_measure_options *out,
                           sc_error *error);
 sc_status options_ray_query(const sc_ray_query *in, sc_ray_query *out, sc_error *error);
 
+/* build_scene's BUILD_* flags for the load options o. */
+int options_build_flags(const sc_load_options *o);
+
 /* Runs the calling thread's parallel regions (the builds of a large
  * model's hierarchies) on threads threads, 0 leaving them as they are, until
  * options_threads_end(the value returned). Only the calling thread's

@@ -99,10 +99,8 @@ static sc_status load(const char *name, const char *text, size_t length, char *o
     if (st == SC_OK) {
         int threads = options_threads_begin(own.threads);
         st = build_scene_take(typed, owned_text, owned_text ? length : 0,
-                              (own.faithful ? BUILD_FAITHFUL : 0) |
-                                  (own.strict ? BUILD_STRICT : 0),
-                              own.max_triangles, &s->tree, &s->look, &s->warnings,
-                              &s->warning_count, error);
+                              options_build_flags(&own), own.max_triangles, &s->tree,
+                              &s->look, &s->warnings, &s->warning_count, error);
         options_threads_end(threads);
     } else {
         free(owned_text);

@@ -1547,9 +1547,11 @@ static sc_status build_scene_of(const model *m, model *owned, void *spare,
     b.id_nodes = NULL;
     b.frames = NULL;
     b.ignored = NULL;
-    if (st == SC_OK && look)
+    /* what only the preview draws, unless the scene is not for one */
+    int preview = look && !(flags & BUILD_NO_PREVIEW);
+    if (st == SC_OK && preview)
         st = build_preview_solid(&b);
-    if (st == SC_OK)
+    if (st == SC_OK && preview)
         st = build_parts(&b);
     free(b.marks);
     build_resize_cache_free(b.resize_cache);

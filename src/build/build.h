@@ -70,8 +70,9 @@
 #define BUILD_MAX_EXTENT 1e30
 
 /* build_scene's flags. */
-#define BUILD_FAITHFUL 1 /* OpenSCAD's polygons and polyhedra (--faithful) */
-#define BUILD_STRICT 2   /* bad meshes are errors (--strict) */
+#define BUILD_FAITHFUL 1   /* OpenSCAD's polygons and polyhedra (--faithful) */
+#define BUILD_STRICT 2     /* bad meshes are errors (--strict) */
+#define BUILD_NO_PREVIEW 4 /* not the preview's parts and solid (sc_load_options) */
 
 /* Builds the CSG tree of the model m and the scene's shading record
  * (lights, materials, camera, background: build_shading.h); with
@@ -82,7 +83,9 @@
  * there are none; free with free()). On failure nothing is returned and error says where
  * and why: the first error in file order, which may be one the lowering found (a
  * MODEL_ERROR node). With BUILD_STRICT, a polyhedron or imported mesh that is not closed
- * is an error rather than a warning (build_mesh.h). The meshes the build makes have at
+ * is an error rather than a warning (build_mesh.h). With BUILD_NO_PREVIEW, *look has
+ * neither the preview's parts (shading.overlay) nor its solid (shading.preview_solid).
+ * The meshes the build makes have at
  * most max_triangles triangles in all (0: BUILD_MAX_TRIANGLES); past it the build
  * fails with SC_ERR_LIMIT at the mesh that passes it (build_charge_triangles), as
  * it does for a model whose bounds reach past BUILD_MAX_EXTENT. */

@@ -92,21 +92,24 @@ int cli_apply_preview_option(sc_render_options *options, sc_view_preset *preset,
                              const char *name, size_t len, const char *value);
 
 /* The load options the commands keep in one int (their `faithful`
- * field): --faithful and --strict. */
+ * field): --faithful, --strict, and --preview (without it the load
+ * builds nothing that only the preview draws: sc_load_options.no_preview). */
 #define CLI_LOAD_FAITHFUL 1
 #define CLI_LOAD_STRICT 2
+#define CLI_LOAD_PREVIEW 4
 
 /* The threads a load builds a large model's hierarchies on: the
  * command's --threads (0, the default: all cores). Set while the options
  * are read, before any load (render_options.c). */
 extern int cli_load_threads;
 
-/* Sets lo's faithful and strict from CLI_LOAD_* flags, and its threads
+/* Sets lo's faithful, strict and no_preview from CLI_LOAD_* flags, and its threads
  * from cli_load_threads. */
 static inline void cli_load_options(sc_load_options *lo, int flags)
 {
     lo->faithful = (flags & CLI_LOAD_FAITHFUL) != 0;
     lo->strict = (flags & CLI_LOAD_STRICT) != 0;
+    lo->no_preview = !(flags & CLI_LOAD_PREVIEW);
     lo->threads = cli_load_threads;
 }
 

@@ -519,7 +519,11 @@ static int parse_args(cli_args *a, int argc, char **argv)
     if (frames && (a->mask || a->depth || a->normal || a->id || a->watch))
         return cli_usage_error("--animate and --turntable write colour frames only (no "
                                "--mask, --depth, --normal, --id or --watch)");
-    return finish_views(a);
+    int st = finish_views(a);
+    /* without --preview, the load leaves out what only the preview draws */
+    if (!st && a->options.preview)
+        a->faithful |= CLI_LOAD_PREVIEW;
+    return st;
 }
 
 /* ---- commands ---- */

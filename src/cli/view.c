@@ -287,6 +287,8 @@ static int parse_args(viewer *v, int argc, char **argv)
     }
     if (!v->path)
         return cli_usage_error("missing input file");
+    if (v->look.preview)
+        v->faithful |= CLI_LOAD_PREVIEW;
     return 0;
 }
 
