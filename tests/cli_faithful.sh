@@ -32,7 +32,7 @@ grep -q '^bounds: \[-1\.41421, -1\.41421, -1\.41421\] to \[1\.41421, 1\.41421, 1
     info.txt || fail "faithful bounds: $(cat info.txt)"
 "$bin" --help | grep -q -- '--faithful' || fail "--help does not name --faithful"
 
-# 5000 fragments: inside the parser's $fn limit (10000), past faithful mode's (4096)
+# 5000 fragments: inside the parser's $fn limit (65536), past a faithful sphere's (4096)
 printf 'sphere($fn = 5000, r = 1);\n' >big.csg
 "$bin" render big.csg --faithful -o big.png -q 2>err.txt
 [ $? = 1 ] || fail "too many fragments should exit 1"

@@ -191,7 +191,8 @@ static void test_hull_errors(void **state)
     assert_true(inside(one, 0, 0, 0) && inside(one, 0, 0, 0.8));
     assert_false(inside(one, 1.01, 0, 0) || inside(one, 0, 0, 1.01));
     sc_scene_release(one);
-    /* $fa and $fs clamped to 0.01, as OpenSCAD clamps them: 6284 */
+    /* $fa and $fs clamped to 0.01, as OpenSCAD clamps them: 6284, past a
+     * sphere's limit */
     check_error("m.csg", "hull() { sphere(r = 10, $fn = 0, $fa = 0, $fs = 0); }",
                 SC_ERR_LIMIT,
                 "m.csg:1:10: error: hull: $fn, $fa and $fs of radius 10 give too many "

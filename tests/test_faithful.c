@@ -30,31 +30,40 @@ static void test_fragments(void **state)
         double r, fn, fs, fa;
         long expected;
     } cases[] = {
-        {10, 0, 2, 12, 30},         /* defaults: min(360 / 12, 31.4) = 30 */
-        {4, 0, 2, 12, 13},          /* 2 pi 4 / 2 = 12.57 -> 13 */
-        {3, 0, 0.5, 1, 38},         /* 37.7 -> 38 */
-        {20, 0, 0.1, 20, 18},       /* 360 / 20 */
-        {0.2, 0, 2, 12, 5},         /* at least 5 */
-        {8, 0, 1, 5, 51},           /* min(72, 50.27) -> 51 */
-        {10, 5.7, 2, 12, 5},        /* $fn truncates */
-        {10, 1, 2, 12, 3},          /* at least 3 */
-        {10, 2.9, 2, 12, 3},        /* at least 3 */
-        {10, -4, 2, 12, 30},        /* $fn <= 0 is off */
-        {1e-7, 0, 2, 12, 3},        /* below OpenSCAD's grid */
-        {1e-7, 64, 2, 12, 3},       /* ... even with $fn */
-        {10, INFINITY, 2, 12, 3},   /* non-finite $fn */
-        {10, NAN, 2, 12, 3},        /* non-finite $fn */
-        {10, 0, 0, 0, -1},          /* no finite count */
-        {10, 1e9, 2, 12, -1},       /* over the limit */
-        {10, 4096, 2, 12, 4096},    /* at the limit */
-        {10, 0, 0.001, 0.01, -1},   /* 36000 fragments */
-        {1000, 0, 0.5, 1e-300, -1}, /* 2 pi 1000 / 0.5 = 12566 */
+        {10, 0, 2, 12, 30},            /* defaults: min(360 / 12, 31.4) = 30 */
+        {4, 0, 2, 12, 13},             /* 2 pi 4 / 2 = 12.57 -> 13 */
+        {3, 0, 0.5, 1, 38},            /* 37.7 -> 38 */
+        {20, 0, 0.1, 20, 18},          /* 360 / 20 */
+        {0.2, 0, 2, 12, 5},            /* at least 5 */
+        {8, 0, 1, 5, 51},              /* min(72, 50.27) -> 51 */
+        {10, 5.7, 2, 12, 5},           /* $fn truncates */
+        {10, 1, 2, 12, 3},             /* at least 3 */
+        {10, 2.9, 2, 12, 3},           /* at least 3 */
+        {10, -4, 2, 12, 30},           /* $fn <= 0 is off */
+        {1e-7, 0, 2, 12, 3},           /* below OpenSCAD's grid */
+        {1e-7, 64, 2, 12, 3},          /* ... even with $fn */
+        {10, INFINITY, 2, 12, 3},      /* non-finite $fn */
+        {10, NAN, 2, 12, 3},           /* non-finite $fn */
+        {10, 0, 0, 0, -1},             /* no finite count */
+        {10, 1e9, 2, 12, -1},          /* over the limit */
+        {10, 65536, 2, 12, 65536},     /* at the limit */
+        {10, 65537, 2, 12, -1},        /* past it */
+        {10, 0, 0.001, 0.01, 36000},   /* 360 / 0.01 */
+        {1000, 0, 0.5, 1e-300, 12567}, /* 2 pi 1000 / 0.5 = 12566.4 */
     };
     for (size_t k = 0; k < sizeof cases / sizeof cases[0]; k++) {
         long got = faithful_fragments(cases[k].r, cases[k].fn, cases[k].fs, cases[k].fa);
         if (got != cases[k].expected)
             fail_msg("case %zu: %ld fragments, expected %ld", k, got, cases[k].expected);
+        /* a sphere's limit is lower: its faces grow as the square */
+        long sphere =
+            faithful_sphere_fragments(cases[k].r, cases[k].fn, cases[k].fs, cases[k].fa);
+        long expected = cases[k].expected > 4096 ? -1 : cases[k].expected;
+        if (sphere != expected)
+            fail_msg("case %zu: %ld sphere fragments, expected %ld", k, sphere, expected);
     }
+    assert_int_equal(faithful_sphere_fragments(10, 4096, 2, 12), 4096);
+    assert_int_equal(faithful_sphere_fragments(10, 4097, 2, 12), -1);
 }
 
 static void test_degrees(void **state)
@@ -231,6 +240,88 @@ static void test_scene(void **state)
     sc_scene_release(faithful);
 }
 
+/* A faithful sphere's normal at a hit is its face's: within the angle
+ * between neighbouring rings of the direction to the hit, here for rays
+ * from all sides down to the centre, and for a sphere of more faces
+ * than a convex leaf numbers (80,000 at $fn = 400), whose normals were
+ * another face's past the 65,536th. */
+static void check_sphere_normals(double fn)
+{
+    char text[128];
+    snprintf(text, sizeof text, "sphere($fn = %g, $fa = 12, $fs = 2, r = 3);\n", fn);
+    sc_scene *s = load(text, 1);
+    const csg_tree *t = scene_tree(s);
+    arena scratch;
+    arena_init(&scratch, 4096);
+    double limit = cos(2 * 360 / fn * pi / 180); /* two rings apart */
+    for (int k = 0; k < 400; k++) {
+        double theta = 2 * pi * k / 400.0 * 7, z = -0.995 + 1.99 * k / 399.0;
+        vec3 dir = v3(sqrt(1 - z * z) * cos(theta), sqrt(1 - z * z) * sin(theta), z);
+        csg_ray ray = {v3_scale(dir, 10), v3_neg(dir), 0, INFINITY};
+        csg_hit hit;
+        assert_true(csg_first_hit(t, &ray, &scratch, &hit));
+        vec3 n = csg_hit_normal(t, &ray, &hit);
+        if (!(v3_dot(n, dir) > limit))
+            fail_msg("$fn = %g, ray %d: normal (%g, %g, %g) against (%g, %g, %g)", fn, k,
+                     n.x, n.y, n.z, dir.x, dir.y, dir.z);
+        arena_reset(&scratch);
+    }
+    arena_free(&scratch);
+    sc_scene_release(s);
+}
+
+static void test_sphere_normals(void **state)
+{
+    (void)state;
+    check_sphere_normals(24);
+    check_sphere_normals(400);
+}
+
+/* Past PRIM_CONVEX_MAX_PLANES faces, spheres, cylinders and cones are
+ * mesh leaves of the same polyhedra, closed (no warning), hit where the
+ * plane sets are. */
+static void test_mesh_leaves(void **state)
+{
+    (void)state;
+    const char *text = "cylinder($fn = 300, $fa = 12, $fs = 2, h = 3, r1 = 2, r2 = 2, "
+                       "center = false);\n"
+                       "cylinder($fn = 300, $fa = 12, $fs = 2, h = 3, r1 = 0, r2 = 2, "
+                       "center = false);\n"
+                       "cylinder($fn = 300, $fa = 12, $fs = 2, h = 3, r1 = 2, r2 = 0, "
+                       "center = false);\n"
+                       "sphere($fn = 100, $fa = 12, $fs = 2, r = 2);\n";
+    static const double fns[] = {254, 255, 300};
+    static const int kinds[] = {PRIM_CONVEX, PRIM_MESH, PRIM_MESH};
+    for (size_t k = 0; k < 3; k++) {
+        char one[256];
+        snprintf(one, sizeof one,
+                 "cylinder($fn = %g, $fa = 12, $fs = 2, h = 3, r1 = 2, r2 = 1);", fns[k]);
+        sc_scene *s = load(one, 1);
+        assert_int_equal(scene_tree(s)->leaves[0].prim.kind, kinds[k]);
+        sc_scene_release(s);
+    }
+    /* each alone, along -x at y = 0 through the edge from point 0: the
+     * prism's at x = 2, the cones' half way up at x = 1, the sphere's
+     * between the rings beside the equator at 2 sin(phi) */
+    const char *line = text;
+    double phi = 180.0 * (24 + 0.5) / 50;
+    const double expected[4] = {8, 9, 9, 10 - 2 * sin(phi * pi / 180)};
+    for (int k = 0; k < 4; k++) {
+        const char *end = strchr(line, '\n');
+        char one[256];
+        snprintf(one, sizeof one, "%.*s", (int)(end - line), line);
+        line = end + 1;
+        sc_scene *s = load(one, 1);
+        const csg_tree *t = scene_tree(s);
+        assert_int_equal(t->leaves[0].prim.kind, PRIM_MESH);
+        assert_int_equal(sc_scene_warning_count(s), 0);
+        double t_hit = first_hit(s, v3(10, 0, k == 3 ? 0 : 1.5), v3(-1, 0, 0));
+        if (!(fabs(t_hit - expected[k]) < 1e-9))
+            fail_msg("model %d: hit at %.12g, expected %.12g", k, t_hit, expected[k]);
+        sc_scene_release(s);
+    }
+}
+
 static void check_error(const char *text, const char *expected)
 {
     sc_load_options o;
@@ -256,9 +347,10 @@ static void test_errors(void **state)
     check_error("group() {\n  sphere($fn = 5000, r = 1);\n}\n",
                 "m.csg:2:3: error: faithful mode: $fn, $fa and $fs of radius 1 give "
                 "too many fragments (limit is 4096)");
-    /* $fa and $fs clamped to 0.01, as OpenSCAD clamps them: 6284 */
-    check_error("cylinder($fn = 0, $fa = 0, $fs = 0, h = 1, r1 = 10, r2 = 0.5);",
-                "m.csg:1:1: error: faithful mode: $fn, $fa and $fs of radius 10 give "
+    /* $fa and $fs clamped to 0.01, as OpenSCAD clamps them: 36,000 for a
+     * sphere; a cylinder of as many is drawn */
+    check_error("sphere($fn = 0, $fa = 0, $fs = 0, r = 100);",
+                "m.csg:1:1: error: faithful mode: $fn, $fa and $fs of radius 100 give "
                 "too many fragments (limit is 4096)");
 }
 
@@ -267,7 +359,8 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_fragments),     cmocka_unit_test(test_degrees),
         cmocka_unit_test(test_sphere_planes), cmocka_unit_test(test_cylinder_planes),
-        cmocka_unit_test(test_scene),         cmocka_unit_test(test_errors),
+        cmocka_unit_test(test_scene),         cmocka_unit_test(test_sphere_normals),
+        cmocka_unit_test(test_mesh_leaves),   cmocka_unit_test(test_errors),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -114,20 +114,20 @@ static void test_fn(void **state)
 {
     (void)state;
     char buf[1024];
-    const char *ok = "sphere(r = 1, $fn = 10000); cylinder(h = 1, $fn = -1e300);";
+    const char *ok = "sphere(r = 1, $fn = 65536); cylinder(h = 1, $fn = -1e300);";
     assert_int_equal(load(ok, strlen(ok), buf, sizeof buf), SC_OK);
-    const char *big = "group() {\n  sphere(r = 1, $fn = 10001);\n}";
+    const char *big = "group() {\n  sphere(r = 1, $fn = 65537);\n}";
     assert_int_equal(load(big, strlen(big), buf, sizeof buf), SC_ERR_LIMIT);
     assert_string_equal(buf,
-                        "m.csg:2:23: error: $fn 10001 is too large (limit is 10000)");
+                        "m.csg:2:23: error: $fn 65537 is too large (limit is 65536)");
     const char *inf = "cylinder(h = 1, $fn = inf);";
     assert_int_equal(load(inf, strlen(inf), buf, sizeof buf), SC_ERR_LIMIT);
-    assert_string_equal(buf, "m.csg:1:23: error: $fn inf is too large (limit is 10000)");
+    assert_string_equal(buf, "m.csg:1:23: error: $fn inf is too large (limit is 65536)");
     /* Checked in subtrees that are not built too, like every error. */
     const char *background = "%sphere(r = 1, $fn = 1e6);";
     assert_int_equal(load(background, strlen(background), buf, sizeof buf), SC_ERR_LIMIT);
     assert_string_equal(buf,
-                        "m.csg:1:22: error: $fn 1e+06 is too large (limit is 10000)");
+                        "m.csg:1:22: error: $fn 1e+06 is too large (limit is 65536)");
 }
 
 /* The deepest tree the nesting limit allows, rendered on worker threads:

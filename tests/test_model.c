@@ -667,7 +667,7 @@ static void test_errors(void **state)
     check_error("union() { roof(); }", SC_ERR_UNSUPPORTED,
                 "m.csg:1:11: error: 'roof' is not supported yet");
     check_error("sphere($fn = 1e9);", SC_ERR_LIMIT,
-                "m.csg:1:14: error: $fn 1e+09 is too large (limit is 10000)");
+                "m.csg:1:14: error: $fn 1e+09 is too large (limit is 65536)");
     check_error("light(position = [0, 0, 0], direction = [0, 0, 1]);", SC_ERR_SEMANTIC,
                 "m.csg:1:1: error: 'light' needs either position or direction");
     check_error("material(reflect = 0.6, transmit = 0.6) { cube(); }", SC_ERR_SEMANTIC,

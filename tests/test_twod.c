@@ -424,10 +424,13 @@ static void test_errors(void **state)
                 0);
     assert_true(
         area_of("group() { offset(delta = nan) { square(1); } }", &outers, &holes) == 0);
-    check_error("group() { offset(r = 1e6, $fa = 0.01, $fs = 0.01) { square(1); } }",
-                SC_ERR_LIMIT,
-                "m.csg:1:11: error: offset: $fn, $fa and $fs of radius 1e+06 give too "
-                "many fragments (limit is 4096)");
+    /* the finest $fa (36,000 fragments), as OpenSCAD draws it: the rounded
+     * square's area, its corners a circle of radius 1e6 */
+    double fine =
+        area_of("group() { offset(r = 1e6, $fa = 0.01, $fs = 0.01) { square(1); } }",
+                &outers, &holes);
+    double rounded = 1 + 4e6 + PI * 1e12;
+    assert_true(fabs(fine - rounded) < 1e-6 * rounded);
     {
         /* a 3D child of a 2D operation is left out (OpenSCAD's warnings) */
         const char *text = "group() { difference() { square(1); cube(1); } }";

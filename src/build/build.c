@@ -348,7 +348,26 @@ static sc_status build_cube(builder *b, const model_node *n, const frame *state,
     return add_leaf(b, n, &p, state, id);
 }
 
-/* sphere(r): exact, or OpenSCAD's polyhedron in faithful mode. */
+/* A faithful sphere or cylinder of more than PRIM_CONVEX_MAX_PLANES
+ * faces, as a mesh leaf of its faces (freed here). */
+static sc_status faithful_mesh_leaf(builder *b, const model_node *n,
+                                    faithful_faces *faces, const frame *state,
+                                    uint32_t *id)
+{
+    build_ctx c = context(b, state->emit, NULL);
+    prim p;
+    const char *empty = NULL;
+    sc_status st =
+        build_mesh_prim(&c, &n->loc, n->name, 0, faces->points, faces->point_count,
+                        faces->indices, faces->face_start, faces->face_count, &p, &empty);
+    faithful_faces_free(faces);
+    if (st != SC_OK || empty)
+        return st;
+    return add_leaf(b, n, &p, state, id);
+}
+
+/* sphere(r): exact, or OpenSCAD's polyhedron in faithful mode (a mesh
+ * leaf past PRIM_CONVEX_MAX_PLANES). */
 static sc_status build_sphere(builder *b, const model_node *n, const frame *state,
                               uint32_t *id)
 {
@@ -363,11 +382,18 @@ static sc_status build_sphere(builder *b, const model_node *n, const frame *stat
     p.kind = PRIM_SPHERE;
     p.u.sphere.r = r;
     const model_resolution *res = &n->u.sphere.res;
-    sc_status st;
-    if (b->faithful && (st = faithful_sphere(b->csg, r, res->fn, res->fa, res->fs,
-                                             &n->loc, &p, b->error)) != SC_OK)
-        return st;
-    return add_leaf(b, n, &p, state, id);
+    sc_status st = SC_OK;
+    if (b->faithful) {
+        long f = faithful_sphere_fragments(r, res->fn, res->fs, res->fa);
+        if (f > 0 && faithful_sphere_face_count(f) > PRIM_CONVEX_MAX_PLANES) {
+            faithful_faces faces;
+            st = faithful_sphere_faces(r, res->fn, res->fa, res->fs, &n->loc, &faces,
+                                       b->error);
+            return st == SC_OK ? faithful_mesh_leaf(b, n, &faces, state, id) : st;
+        }
+        st = faithful_sphere(b->csg, r, res->fn, res->fa, res->fs, &n->loc, &p, b->error);
+    }
+    return st == SC_OK ? add_leaf(b, n, &p, state, id) : st;
 }
 
 /* cylinder(h, r1, r2, center): a frustum, or OpenSCAD's polyhedron in
@@ -393,12 +419,20 @@ static sc_status build_cylinder(builder *b, const model_node *n, const frame *st
     p.u.cylinder.r0 = r1;
     p.u.cylinder.r1 = r2;
     const model_resolution *res = &n->u.cylinder.res;
-    sc_status st;
-    if (b->faithful &&
-        (st = faithful_cylinder(b->csg, p.u.cylinder.z0, p.u.cylinder.z1, r1, r2, res->fn,
-                                res->fa, res->fs, &n->loc, &p, b->error)) != SC_OK)
-        return st;
-    return add_leaf(b, n, &p, state, id);
+    sc_status st = SC_OK;
+    double z0 = p.u.cylinder.z0, z1 = p.u.cylinder.z1;
+    if (b->faithful) {
+        long f = faithful_fragments(fmax(r1, r2), res->fn, res->fs, res->fa);
+        if (f > 0 && (size_t)f + 2 > PRIM_CONVEX_MAX_PLANES) {
+            faithful_faces faces;
+            st = faithful_cylinder_faces(z0, z1, r1, r2, res->fn, res->fa, res->fs,
+                                         &n->loc, &faces, b->error);
+            return st == SC_OK ? faithful_mesh_leaf(b, n, &faces, state, id) : st;
+        }
+        st = faithful_cylinder(b->csg, z0, z1, r1, r2, res->fn, res->fa, res->fs, &n->loc,
+                               &p, b->error);
+    }
+    return st == SC_OK ? add_leaf(b, n, &p, state, id) : st;
 }
 
 /* ---- polyhedron ---- */

@@ -18,7 +18,7 @@
  *
  * hull: the convex hull of all the points (hull3.c, exact orientation
  * tests), as a plane set, or as a mesh of its triangles when it has more
- * than HULL_MAX_PLANES planes (the mesh leaf's box hierarchy keeps large
+ * than PRIM_CONVEX_MAX_PLANES planes (the mesh leaf's box hierarchy keeps large
  * hulls fast). A flat or empty hull is the empty solid with a warning.
  *
  * minkowski: each child is a list of convex parts (a leaf or hull is one
@@ -71,9 +71,6 @@
 #include "model/lower_curved.h"
 #include "model/args.h"
 #include "model/faithful.h"
-
-/* Above this many planes a hull is built as a triangle mesh. */
-enum { HULL_MAX_PLANES = 256 };
 
 typedef struct pointset {
     vec3 *p;
@@ -300,13 +297,16 @@ static sc_status shape_points(const walk *w, const model_node *n, const shape *s
         }
         return SC_OK;
     }
-    double rmax = s->kind == SHAPE_SPHERE ? s->r : fmax(s->r0, s->r1);
-    long f = faithful_fragments(rmax, s->fn, s->fs, s->fa);
+    int sphere = s->kind == SHAPE_SPHERE;
+    double rmax = sphere ? s->r : fmax(s->r0, s->r1);
+    long f = sphere ? faithful_sphere_fragments(rmax, s->fn, s->fs, s->fa)
+                    : faithful_fragments(rmax, s->fn, s->fs, s->fa);
     if (f < 0)
         return err_set(w->c->error, SC_ERR_LIMIT, &n->loc,
                        "%s: $fn, $fa and $fs of radius %g give too many fragments (limit "
                        "is %d)",
-                       w->owner, rmax, FAITHFUL_MAX_FRAGMENTS);
+                       w->owner, rmax,
+                       sphere ? FAITHFUL_MAX_SPHERE_FRAGMENTS : FAITHFUL_MAX_FRAGMENTS);
     if (s->kind == SHAPE_SPHERE) {
         long rings = (f + 1) / 2;
         for (long i = 0; i < rings; i++) {
@@ -1507,7 +1507,7 @@ static sc_status emit_hull(const build_ctx *c, const model_node *n, const points
     prim p;
     memset(&p, 0, sizeof p);
     sc_status st = SC_OK;
-    if (h.plane_count <= HULL_MAX_PLANES) {
+    if (h.plane_count <= PRIM_CONVEX_MAX_PLANES) {
         plane *planes = csg_builder_alloc(c->csg, (size_t)h.plane_count * sizeof *planes);
         if (!planes) {
             hull3_free(&h);

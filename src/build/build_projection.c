@@ -180,12 +180,12 @@ static vec3 circle_point(double r, long k, long f, double z)
     return v3(r * faithful_cos_deg(phi), r * faithful_sin_deg(phi), z);
 }
 
-static sc_status fragments_error(const pwalk *w, const model_node *n, double r)
+static sc_status fragments_error(const pwalk *w, const model_node *n, double r, int limit)
 {
     return err_set(w->c->error, SC_ERR_LIMIT, &n->loc,
                    "projection: $fn, $fa and $fs of radius %g give too many fragments "
                    "(limit is %d)",
-                   r, FAITHFUL_MAX_FRAGMENTS);
+                   r, limit);
 }
 
 /* The rings of radii[i] at heights z[i] (i < rings, top first), each of f
@@ -220,9 +220,9 @@ static sc_status sphere_soup(const pwalk *w, const model_node *n, soup *s)
     if (!positive_finite(r))
         return SC_OK;
     const model_resolution *res = &n->u.sphere.res;
-    long f = faithful_fragments(r, res->fn, res->fs, res->fa);
+    long f = faithful_sphere_fragments(r, res->fn, res->fs, res->fa);
     if (f < 0)
-        return fragments_error(w, n, r);
+        return fragments_error(w, n, r, FAITHFUL_MAX_SPHERE_FRAGMENTS);
     long rings = (f + 1) / 2;
     double *radii = malloc((size_t)rings * 2 * sizeof *radii);
     if (!radii)
@@ -247,7 +247,7 @@ static sc_status cylinder_soup(const pwalk *w, const model_node *n, soup *s)
     const model_resolution *res = &n->u.cylinder.res;
     long f = faithful_fragments(fmax(r1, r2), res->fn, res->fs, res->fa);
     if (f < 0)
-        return fragments_error(w, n, fmax(r1, r2));
+        return fragments_error(w, n, fmax(r1, r2), FAITHFUL_MAX_FRAGMENTS);
     double z0 = n->u.cylinder.center ? -h / 2 : 0;
     double radii[2] = {r2, r1}, z[2] = {z0 + h, z0};
     return rings_soup(radii, z, 2, f, s) ? SC_OK : err_nomem(w->c->error, &n->loc);

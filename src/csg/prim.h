@@ -59,6 +59,15 @@ struct prim_revolve;
 struct prim_extrusion;
 struct prim_outline;
 
+/* The most planes a builder makes a convex leaf (PRIM_CONVEX) of: a ray
+ * tests them one by one, so a larger convex solid (a hull, a faithful
+ * sphere or cylinder) is a mesh leaf, whose box hierarchy a ray descends.
+ * Measured on one faithful sphere at 1600x1200: 114 planes 0.38 s against
+ * 0.47 s as a mesh, 422 planes 1.0 s against 0.53 s; a cylinder of 258
+ * planes 0.59 s against 0.77 s. (A leaf's part numbers are 16-bit, so
+ * 65,536 planes is a hard limit.) */
+#define PRIM_CONVEX_MAX_PLANES 256
+
 /* Spans an implicit leaf gives one ray at most; see prim_implicit.c for
  * what happens to a ray that crosses its surface more often. */
 #define PRIM_IMPLICIT_MAX_SPANS 16

@@ -62,6 +62,17 @@ long faithful_fragments(double r, double fn, double fs, double fa)
     return (long)count;
 }
 
+long faithful_sphere_fragments(double r, double fn, double fs, double fa)
+{
+    long f = faithful_fragments(r, fn, fs, fa);
+    return f > FAITHFUL_MAX_SPHERE_FRAGMENTS ? -1 : f;
+}
+
+size_t faithful_sphere_face_count(long f)
+{
+    return (size_t)((f + 1) / 2 - 1) * (size_t)f + 2;
+}
+
 /* Reduces degrees to [0, 360) as OpenSCAD does (finite inputs only). */
 static double reduce_degrees(double x)
 {
@@ -142,12 +153,47 @@ static plane face_plane(const vec3 *p, int count, vec3 inside_point)
     return pl;
 }
 
-static sc_status fragment_error(double r, const sc_location *loc, sc_error *error)
+static sc_status fragment_error(double r, int limit, const sc_location *loc,
+                                sc_error *error)
 {
     return err_set(error, SC_ERR_LIMIT, loc,
                    "faithful mode: $fn, $fa and $fs of radius %g give too many fragments "
                    "(limit is %d)",
-                   r, FAITHFUL_MAX_FRAGMENTS);
+                   r, limit);
+}
+
+/* The rings of OpenSCAD's sphere of radius r with f fragments, top first:
+ * point k of ring i in points[i * f + k]; returns their bounds. */
+static bbox sphere_points(double r, long f, vec3 *points)
+{
+    long rings = (f + 1) / 2;
+    bbox bounds = bbox_empty();
+    for (long i = 0; i < rings; i++) {
+        double phi = (180.0 * ((double)i + 0.5)) / (double)rings;
+        double radius = r * faithful_sin_deg(phi);
+        double z = r * faithful_cos_deg(phi);
+        for (long k = 0; k < f; k++) {
+            vec3 p = circle_point(radius, k, f, z);
+            points[i * f + k] = p;
+            bounds = bbox_add_point(bounds, p);
+        }
+    }
+    return bounds;
+}
+
+/* The circles of OpenSCAD's cylinder: at z0 in points[k], at z1 in
+ * points[f + k]; returns their bounds. */
+static bbox cylinder_points(double z0, double z1, double r0, double r1, long f,
+                            vec3 *points)
+{
+    bbox bounds = bbox_empty();
+    for (long k = 0; k < f; k++) {
+        points[k] = circle_point(r0, k, f, z0);
+        points[f + k] = circle_point(r1, k, f, z1);
+        bounds = bbox_add_point(bounds, points[k]);
+        bounds = bbox_add_point(bounds, points[f + k]);
+    }
+    return bounds;
 }
 
 static void fill_convex(prim *out, plane *planes, uint32_t count, bbox bounds)
@@ -162,28 +208,18 @@ static void fill_convex(prim *out, plane *planes, uint32_t count, bbox bounds)
 sc_status faithful_sphere(csg_builder *csg, double r, double fn, double fa, double fs,
                           const sc_location *loc, prim *out, sc_error *error)
 {
-    long f = faithful_fragments(r, fn, fs, fa);
+    long f = faithful_sphere_fragments(r, fn, fs, fa);
     if (f < 0)
-        return fragment_error(r, loc, error);
+        return fragment_error(r, FAITHFUL_MAX_SPHERE_FRAGMENTS, loc, error);
     long rings = (f + 1) / 2;
-    size_t count = (size_t)(rings - 1) * (size_t)f + 2;
+    size_t count = faithful_sphere_face_count(f);
     plane *planes = csg_builder_alloc(csg, count * sizeof *planes);
     vec3 *points = malloc((size_t)rings * (size_t)f * sizeof *points);
     if (!planes || !points) {
         free(points);
         return err_nomem(error, NULL);
     }
-    bbox bounds = bbox_empty();
-    for (long i = 0; i < rings; i++) {
-        double phi = (180.0 * ((double)i + 0.5)) / (double)rings;
-        double radius = r * faithful_sin_deg(phi);
-        double z = r * faithful_cos_deg(phi);
-        for (long k = 0; k < f; k++) {
-            vec3 p = circle_point(radius, k, f, z);
-            points[i * f + k] = p;
-            bounds = bbox_add_point(bounds, p);
-        }
-    }
+    bbox bounds = sphere_points(r, f, points);
     vec3 centre = v3(0, 0, 0);
     size_t n = 0;
     planes[n++] = (plane){v3(0, 0, 1), points[0].z};
@@ -208,7 +244,7 @@ sc_status faithful_cylinder(csg_builder *csg, double z0, double z1, double r0, d
     double rmax = fmax(r0, r1);
     long f = faithful_fragments(rmax, fn, fs, fa);
     if (f < 0)
-        return fragment_error(rmax, loc, error);
+        return fragment_error(rmax, FAITHFUL_MAX_FRAGMENTS, loc, error);
     size_t count = (size_t)f + 2;
     plane *planes = csg_builder_alloc(csg, count * sizeof *planes);
     vec3 *points = malloc(2 * (size_t)f * sizeof *points);
@@ -216,13 +252,7 @@ sc_status faithful_cylinder(csg_builder *csg, double z0, double z1, double r0, d
         free(points);
         return err_nomem(error, NULL);
     }
-    bbox bounds = bbox_empty();
-    for (long k = 0; k < f; k++) {
-        points[k] = circle_point(r0, k, f, z0);
-        points[f + k] = circle_point(r1, k, f, z1);
-        bounds = bbox_add_point(bounds, points[k]);
-        bounds = bbox_add_point(bounds, points[f + k]);
-    }
+    bbox bounds = cylinder_points(z0, z1, r0, r1, f, points);
     vec3 axis = v3(0, 0, 0.5 * (z0 + z1));
     size_t n = 0;
     if (r0 > 0)
@@ -236,5 +266,135 @@ sc_status faithful_cylinder(csg_builder *csg, double z0, double z1, double r0, d
     }
     free(points);
     fill_convex(out, planes, (uint32_t)n, bounds);
+    return SC_OK;
+}
+
+/* ---- the same polyhedra as faces ---- */
+
+void faithful_faces_free(faithful_faces *f)
+{
+    free(f->points);
+    free(f->indices);
+    free(f->face_start);
+    memset(f, 0, sizeof *f);
+}
+
+/* Room for points, and faces of index_count indices in all. */
+static int faces_alloc(faithful_faces *out, size_t points, size_t faces,
+                       size_t index_count)
+{
+    memset(out, 0, sizeof *out);
+    out->points = malloc(points * sizeof *out->points);
+    out->indices = malloc(index_count * sizeof *out->indices);
+    out->face_start = malloc((faces + 1) * sizeof *out->face_start);
+    if (out->points && out->indices && out->face_start) {
+        out->point_count = (uint32_t)points;
+        out->face_start[0] = 0;
+        return 1;
+    }
+    faithful_faces_free(out);
+    return 0;
+}
+
+/* Appends the face of points a[0 .. n). */
+static void add_face(faithful_faces *out, const uint32_t *a, int n)
+{
+    uint32_t start = out->face_start[out->face_count];
+    memcpy(out->indices + start, a, (size_t)n * sizeof *a);
+    out->face_start[++out->face_count] = start + (uint32_t)n;
+}
+
+/* Triangles of the arc of points lo .. hi (k up to f - 1: position k is
+ * point first + k, or first + f - 1 - k when not up), closed by the chord
+ * from hi to lo: the triangle lo, mid, hi and the arcs on either side.
+ * Small triangles along the rim and a few large ones inside, where a fan
+ * from one point would be slivers that all span the cap, each in the way
+ * of every ray the hierarchy sends near it. */
+static void add_arc(faithful_faces *out, uint32_t first, long f, int up, long lo, long hi)
+{
+    while (hi - lo >= 2) {
+        long mid = lo + (hi - lo) / 2;
+        uint32_t tri[3];
+        const long at[3] = {lo, mid, hi};
+        for (int j = 0; j < 3; j++)
+            tri[j] = first + (uint32_t)(up ? at[j] : f - 1 - at[j]);
+        add_face(out, tri, 3);
+        add_arc(out, first, f, up, lo, mid);
+        lo = mid;
+    }
+}
+
+/* The circle of f points from first, as f - 2 triangles wound
+ * counter-clockwise seen from above (up) or from below. */
+static void add_cap(faithful_faces *out, uint32_t first, long f, int up)
+{
+    add_arc(out, first, f, up, 0, f - 1);
+}
+
+sc_status faithful_sphere_faces(double r, double fn, double fa, double fs,
+                                const sc_location *loc, faithful_faces *out,
+                                sc_error *error)
+{
+    memset(out, 0, sizeof *out);
+    long f = faithful_sphere_fragments(r, fn, fs, fa);
+    if (f < 0)
+        return fragment_error(r, FAITHFUL_MAX_SPHERE_FRAGMENTS, loc, error);
+    long rings = (f + 1) / 2;
+    size_t quads = faithful_sphere_face_count(f) - 2, caps = 2 * ((size_t)f - 2);
+    if (!faces_alloc(out, (size_t)rings * (size_t)f, quads + caps, 4 * quads + 3 * caps))
+        return err_nomem(error, NULL);
+    sphere_points(r, f, out->points);
+    add_cap(out, 0, f, 1);
+    add_cap(out, (uint32_t)((rings - 1) * f), f, 0);
+    for (long i = 0; i + 1 < rings; i++) {
+        for (long k = 0; k < f; k++) {
+            uint32_t k1 = (uint32_t)((k + 1) % f), top = (uint32_t)(i * f),
+                     below = (uint32_t)((i + 1) * f);
+            uint32_t quad[4] = {top + (uint32_t)k, below + (uint32_t)k, below + k1,
+                                top + k1};
+            add_face(out, quad, 4);
+        }
+    }
+    return SC_OK;
+}
+
+sc_status faithful_cylinder_faces(double z0, double z1, double r0, double r1, double fn,
+                                  double fa, double fs, const sc_location *loc,
+                                  faithful_faces *out, sc_error *error)
+{
+    memset(out, 0, sizeof *out);
+    double rmax = fmax(r0, r1);
+    long f = faithful_fragments(rmax, fn, fs, fa);
+    if (f < 0)
+        return fragment_error(rmax, FAITHFUL_MAX_FRAGMENTS, loc, error);
+    size_t caps = 2 * ((size_t)f - 2);
+    if (!faces_alloc(out, 2 * (size_t)f + 1, (size_t)f + caps, 4 * (size_t)f + 3 * caps))
+        return err_nomem(error, NULL);
+    cylinder_points(z0, z1, r0, r1, f, out->points);
+    /* a cone's apex: one point, the last, so that no edge has no length */
+    uint32_t apex = (uint32_t)(2 * f), n = (uint32_t)f;
+    if (r0 == 0)
+        out->points[apex] = v3(0, 0, z0);
+    else if (r1 == 0)
+        out->points[apex] = v3(0, 0, z1);
+    else
+        out->point_count = apex;
+    if (r0 > 0)
+        add_cap(out, 0, f, 0);
+    if (r1 > 0)
+        add_cap(out, n, f, 1);
+    for (uint32_t k = 0; k < n; k++) {
+        uint32_t k1 = (k + 1) % n;
+        if (r0 == 0) {
+            uint32_t tri[3] = {apex, n + k1, n + k};
+            add_face(out, tri, 3);
+        } else if (r1 == 0) {
+            uint32_t tri[3] = {k, k1, apex};
+            add_face(out, tri, 3);
+        } else {
+            uint32_t quad[4] = {k, k1, n + k1, n + k};
+            add_face(out, quad, 4);
+        }
+    }
     return SC_OK;
 }

@@ -54,8 +54,9 @@
 
 /* The largest $fn a node may set: it is the number of polygon sides that
  * OpenSCAD-faithful rendering builds, so an absurd value must not reach it.
- * A larger or non-finite $fn is an error at the value (docs/limits.md). */
-#define MODEL_MAX_FN 10000
+ * A larger or non-finite $fn is an error at the value (docs/limits.md).
+ * The same as FAITHFUL_MAX_FRAGMENTS, the most fragments of a circle. */
+#define MODEL_MAX_FN 65536
 
 typedef enum model_kind {
     MODEL_UNION, /* group, union, render */
