@@ -167,8 +167,11 @@ done < <(echo "$names" | sed "s/', '/\n/g; s/^'//; s/'$//")
 # others is left out of the solid, and the highlight is the term where it
 # stops (a difference whose first operand is '#'); a '#' on a '%' node,
 # and the '#' and '%' children of a hull, are parts too. An intersection
-# is framed by its operands' boxes. Each scene is converted by OpenSCAD and
-# compared with its own preview image.
+# is framed by its operands' boxes. A render() is one mesh: in the colour
+# from above it, the walls of holes cut inside it in the face colour, all
+# of it in the cut-out colour where it is subtracted (with the convexity
+# its shape needs, or OpenCSG's own image is wrong). Each scene is
+# converted by OpenSCAD and compared with its own preview image.
 scenes=(
     'difference() { cube(20, center = true); #cylinder(r = 5, h = 30, center = true); }'
     'cube(5); %translate([8, 0, 0]) cube(5);'
@@ -184,6 +187,11 @@ scenes=(
     '#cube(5); #translate([8, 0, 0]) cube(5);'
     '%#cube(10);'
     'hull() { cube(5, center = true); %translate([20, 0, 0]) sphere(4, $fn = 20); }'
+    'render() difference() { cube(10, center = true); cylinder(r = 3, h = 12, center = true); }'
+    'render() color("red", 0.5) cube(10);'
+    'color("blue") render() difference() { cube(10, center = true); color("red") sphere(6); }'
+    'difference() { cube(12, center = true); render(convexity = 2) difference() { cylinder(r = 4, h = 14, center = true); cylinder(r = 2, h = 16, center = true); } }'
+    'difference() { render(convexity = 2) difference() { cube(10, center = true); translate([0, 0, 5]) sphere(4); } translate([5, 5, 0]) cylinder(r = 3, h = 20, center = true); }'
 )
 # 2D objects in a 3D model (and 3D ones in a 2D model), which the render
 # leaves out, are slabs 1 thick in the preview (1.1 where subtracted), as

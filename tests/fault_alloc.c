@@ -105,7 +105,7 @@ static void test_models(void **state)
 
 /* A model that reaches every allocating path of the builder: warnings, a
  * polyhedron (points, faces, edges, planes, a face split as OpenSCAD splits
- * it), colours, modifiers, nested
+ * it), colours, modifiers, a render() (the preview's solid), nested
  * vectors and strings, and enough nodes to grow every array. */
 static void test_every_path(void **state)
 {
@@ -124,6 +124,8 @@ static void test_every_path(void **state)
                          "0, 1]]) { cube(1); }\n"
                          "difference() { cube(2); intersection() { sphere(1.5); "
                          "cube(1.9, center = true); } }\n"
+                         /* the preview's solid, with a render()'s own hole */
+                         "render() { difference() { cube(3); sphere(1); } }\n"
                          "polyhedron(points = [[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, "
                          "1]], faces = [[0, 1, 2], [0, 3, 1], [0, 2, 3], [1, 3, 2]]);\n"
                          /* a non-planar face with points above one another

@@ -96,6 +96,8 @@ typedef struct frame {
     int highlighted;      /* a '#' node or inside one */
     int negative;         /* subtracted in OpenSCAD's normal form: below an odd
                              number of differences' later operands */
+    int in_render;        /* the preview's walk, inside a render() */
+    int render_negative;  /* then the render()'s own negative */
 } frame;
 
 /* A '#' or '%' node and the state its parent hands it. */
@@ -136,7 +138,14 @@ typedef struct builder {
     int preview;
     size_t flat_parts; /* 2D objects the main walk left out of a 3D model, or
                           1 for a 2D model, which the preview draws as slabs */
-    int flat_model;    /* the main walk was a 2D model's */
+    size_t renders;    /* render() nodes the main walk met, which the preview
+                          draws each as one mesh (enter_render) */
+    uint32_t leaves;   /* leaves added so far: the next one's object_id */
+    /* the preview's walk: the object ids of the leaves subtracted inside a
+       render() (shading.preview_swapped) */
+    uint32_t *swapped;
+    size_t swapped_count, swapped_cap;
+    int flat_model; /* the main walk was a 2D model's */
     frame *frames;
     size_t frame_count, frame_cap;
     shading *shading; /* lights, materials, camera, background */
@@ -321,6 +330,15 @@ static sc_status add_leaf(builder *b, const model_node *n, const prim *p,
                           const frame *state, uint32_t *id)
 {
     *id = csg_builder_leaf(b->csg, p, &state->to_world, state->color, n->loc);
+    if (*id == CSG_EMPTY)
+        return csg_builder_failed(b->csg) ? err_nomem(b->error, NULL) : SC_OK;
+    uint32_t object = b->leaves++;
+    if (state->in_render && state->negative != state->render_negative) {
+        if (!grow_array((void **)&b->swapped, &b->swapped_cap, b->swapped_count + 1,
+                        sizeof *b->swapped))
+            return err_nomem(b->error, NULL);
+        b->swapped[b->swapped_count++] = object;
+    }
     csg_builder_set_material(b->csg, *id, state->material);
     if (state->moving && *id != CSG_EMPTY)
         return build_motion_leaf(b->csg, *id, &state->motion, &state->to_world, n,
@@ -1021,6 +1039,7 @@ static int plain_leaf(const builder *b, const model_node *n, const frame *parent
     model_kind kind = n->kind;
     return (kind == MODEL_SPHERE || kind == MODEL_CUBE || kind == MODEL_CYLINDER) &&
            !n->is_root && parent->counted == parent->emit &&
+           !(parent->in_render && parent->op == CSG_DIFFERENCE) && /* negative */
            !((n->modifiers & MODEL_MOD_BACKGROUND) && n != b->part);
 }
 
@@ -1085,6 +1104,24 @@ static sc_status visit_leaf(builder *b, const model_node *n, const frame *f)
                                  f->highlighted || (n->modifiers & MODEL_MOD_HIGHLIGHT)
                                      ? ID_HIGHLIGHTED
                                      : 0);
+}
+
+/* render(): OpenSCAD 2021.01's preview draws it as one mesh
+ * (CSGTreeEvaluator evaluates its geometry into one leaf), in the colour its
+ * ancestors give it, or the face colours where none do; the walls of holes
+ * cut inside it are that mesh's own faces, in the front colour. The main
+ * walk counts it, so that the preview's solid is walked; the preview's
+ * walk keeps the colour from above (the colours inside are not applied)
+ * and notes where the render()'s own subtraction starts. */
+static void enter_render(builder *b, frame *f)
+{
+    if (!b->preview) {
+        b->renders += f->emit && f->shown;
+    } else if (!f->in_render) {
+        f->in_render = 1;
+        f->render_negative = f->negative;
+        f->color_set = 1;
+    }
 }
 
 /* Visits one node: a leaf delivers its result; a boolean node opens a
@@ -1162,6 +1199,8 @@ static sc_status visit(builder *b, const model_node *n, int *opened)
                                          : CSG_UNION;
     f->first_id = b->id_count;
     f->first_ignored = b->ignored_count;
+    if (kind == MODEL_UNION && n->name && !strcmp(n->name, "render"))
+        enter_render(b, f);
     if (kind == MODEL_XFORM) {
         affine inverse;
         f->to_world = affine_mul(&f->to_world, n->u.xform);
@@ -1398,6 +1437,7 @@ static sc_status build_parts(builder *b)
         free(sub.id_nodes);
         free(sub.frames);
         free(sub.ignored);
+        free(sub.swapped);
         free(sub.warnings.items);
         shading_free(sub.shading);
         uint32_t root = CSG_EMPTY;
@@ -1435,7 +1475,7 @@ static sc_status build_parts(builder *b)
  * cannot be built, a warning says so and the preview shows the solid. */
 static sc_status build_preview_solid(builder *b)
 {
-    if (!b->drops && !b->flat_parts)
+    if (!b->drops && !b->flat_parts && !b->renders)
         return SC_OK;
     sc_error error;
     builder sub;
@@ -1466,6 +1506,12 @@ static sc_status build_preview_solid(builder *b)
     free(sub.marks);
     free(sub.warnings.items);
     shading_free(sub.shading);
+    if (st == SC_OK) {
+        b->shading->preview_swapped = sub.swapped;
+        b->shading->preview_swapped_count = sub.swapped_count;
+        sub.swapped = NULL;
+    }
+    free(sub.swapped);
     if (st != SC_OK || !sub.csg) {
         csg_builder_free(sub.csg);
         if (st == SC_ERR_NOMEM)
@@ -1588,6 +1634,7 @@ static sc_status build_scene_of(const model *m, model *owned, void *spare,
     if (st == SC_OK && preview)
         st = build_parts(&b);
     free(b.marks);
+    free(b.swapped);
     build_resize_cache_free(b.resize_cache);
     build_nef_cache_free(b.nefs);
     build_imports_free(&b.imports);

@@ -40,6 +40,8 @@ void shading_free(shading *s)
     for (int k = 0; k < SHADING_OVERLAYS; k++)
         csg_tree_free(s->overlay[k]);
     csg_tree_free(s->preview_solid);
+    free(s->preview_swapped);
+
     free(s);
 }
 

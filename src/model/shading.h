@@ -90,6 +90,12 @@ typedef struct shading {
      * a 3D model as slabs (build.c's build_preview_solid); NULL when it is
      * the solid. */
     csg_tree *preview_solid;
+    /* The object ids of preview_solid's leaves subtracted inside a render(),
+     * ascending: OpenSCAD's preview draws a render() as one mesh, so the
+     * walls of its holes take the front colour and its other faces the back
+     * colour (the two swap). */
+    uint32_t *preview_swapped;
+    size_t preview_swapped_count;
     /* A 2D model, drawn as the slab OpenSCAD draws a 2D result: its render
      * (not the preview) shows it unlit in the colour scheme's 2D face
      * colour, as OpenSCAD's render does. */

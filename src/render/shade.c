@@ -103,6 +103,33 @@ static int find_products(const csg_tree *tree, uint32_t *product)
     return 1;
 }
 
+/* The leaves subtracted inside a render() (shading.preview_swapped), which
+ * OpenSCAD's preview draws as one mesh: the walls of their holes in the
+ * front colour, their faces cut from something else in the back colour. */
+static void swap_render_faces(shade_scene *s, const csg_tree *tree, const shading *look)
+{
+    const uint32_t *ids = look->preview_swapped;
+    size_t count = look->preview_swapped_count;
+    for (uint32_t i = 0; i < tree->leaf_count && count; i++) {
+        uint32_t id = tree->leaves[i].object_id;
+        size_t lo = 0, hi = count; /* the first of ids at or past id */
+        while (lo < hi) {
+            size_t mid = lo + (hi - lo) / 2;
+            if (ids[mid] < id)
+                lo = mid + 1;
+            else
+                hi = mid;
+        }
+        if (lo == count || ids[lo] != id)
+            continue;
+        for (int k = 0; k < 3; k++) {
+            double t = s->leaf_color[3 * i + k];
+            s->leaf_color[3 * i + k] = s->leaf_back[3 * i + k];
+            s->leaf_back[3 * i + k] = t;
+        }
+    }
+}
+
 sc_status shade_prepare(shade_scene *s, const csg_tree *tree, const shading *look,
                         const camera *cam, const sc_render_options *o, sc_error *error)
 {
@@ -174,6 +201,8 @@ sc_status shade_prepare(shade_scene *s, const csg_tree *tree, const shading *loo
         /* Only the preview shows alpha, as OpenSCAD's render (F6) does not. */
         s->translucent |= o->preview && c[3] < 1;
     }
+    if (look && tree == look->preview_solid && s->scheme_faces)
+        swap_render_faces(s, tree, look);
     s->light_count = lights;
     if (look && look->light_count) {
         for (uint32_t i = 0; i < lights; i++) {
