@@ -195,10 +195,10 @@ scenes=(
 )
 # 2D objects in a 3D model (and 3D ones in a 2D model), which the render
 # leaves out, are slabs 1 thick in the preview (1.1 where subtracted), as
-# are a 2D model's objects moved out of its plane. The camera is given:
-# OpenSCAD frames a slab by its flat box. A 2D model is drawn so too: its
-# leaves in their colours, the walls of a 2D difference in the cut-out
-# colour.
+# are a 2D model's objects moved out of its plane. With a given camera and
+# with the default one, which frames a slab by its polygons' flat box, as
+# OpenSCAD does. A 2D model is drawn so too: its leaves in their colours,
+# the walls of a 2D difference in the cut-out colour.
 slab_scenes=(
     'cube(5); translate([8, 0, 0]) square(4);'
     'rotate([90, 0, 0]) circle(3); translate([8, 0, 0]) cube(3);'
@@ -239,6 +239,7 @@ for k in "${!scenes[@]}"; do
 done
 for k in "${!slab_scenes[@]}"; do
     compare_scene "slab$k" "${slab_scenes[$k]}" --camera=20,-30,25,4,2,0
+    compare_scene "framed$k" "${slab_scenes[$k]}"
 done
 
 echo "$checks checks, $fails failures"

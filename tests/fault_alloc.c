@@ -124,8 +124,11 @@ static void test_every_path(void **state)
                          "0, 1]]) { cube(1); }\n"
                          "difference() { cube(2); intersection() { sphere(1.5); "
                          "cube(1.9, center = true); } }\n"
-                         /* the preview's solid, with a render()'s own hole */
+                         /* the preview's solid, with a render()'s own hole,
+                          * and slabs in it and in a part */
                          "render() { difference() { cube(3); sphere(1); } }\n"
+                         "square(1); %%multmatrix([[1, 0, 0, 0], [0, 1, 0, 9], [0, 0, "
+                         "1, 0], [0, 0, 0, 1]]) { square(1); }\n"
                          "polyhedron(points = [[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, "
                          "1]], faces = [[0, 1, 2], [0, 3, 1], [0, 2, 3], [1, 3, 2]]);\n"
                          /* a non-planar face with points above one another

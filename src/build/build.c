@@ -145,6 +145,9 @@ typedef struct builder {
        render() (shading.preview_swapped) */
     uint32_t *swapped;
     size_t swapped_count, swapped_cap;
+    /* the preview's walk: its slabs (shading.preview_slabs) */
+    shading_slab *slabs;
+    size_t slab_count, slab_cap;
     int flat_model; /* the main walk was a 2D model's */
     frame *frames;
     size_t frame_count, frame_cap;
@@ -856,7 +859,19 @@ static sc_status build_preview_slab(builder *b, const model_node *n, const frame
     twod_free(&r);
     if (st != SC_OK || empty)
         return st;
-    return add_leaf(b, n, &p, f, id);
+    st = add_leaf(b, n, &p, f, id);
+    if (st != SC_OK || *id == CSG_EMPTY)
+        return st;
+    /* framed by its polygons' box, not the slab's (OpenSCAD's
+     * PolySet::getBoundingBox of the flat polygons) */
+    bbox flat = prim_bounds(&p);
+    flat.lo.z = flat.hi.z = 0;
+    if (!grow_array((void **)&b->slabs, &b->slab_cap, b->slab_count + 1,
+                    sizeof *b->slabs))
+        return err_nomem(b->error, NULL);
+    b->slabs[b->slab_count++] =
+        (shading_slab){b->leaves - 1, bbox_transform(&f->to_world, flat)};
+    return SC_OK;
 }
 
 /* hull and minkowski (build_hull.c): one or several convex leaves, united
@@ -1440,6 +1455,7 @@ static sc_status build_parts(builder *b)
         free(sub.swapped);
         free(sub.warnings.items);
         shading_free(sub.shading);
+        shading_slabs slabs = {sub.slabs, sub.slab_count};
         uint32_t root = CSG_EMPTY;
         if (st == SC_OK) {
             root = csg_builder_op(sub.csg, CSG_UNION, results, done);
@@ -1448,9 +1464,11 @@ static sc_status build_parts(builder *b)
         }
         free(results);
         if (st != SC_OK) {
+            free(slabs.items);
             csg_builder_free(sub.csg);
             break;
         }
+        b->shading->overlay_slabs[kind] = slabs;
         /* The builder is freed here whatever happens. */
         st = csg_builder_finish(sub.csg, root, &b->shading->overlay[kind], &error);
         if (st == SC_ERR_NOMEM)
@@ -1509,9 +1527,12 @@ static sc_status build_preview_solid(builder *b)
     if (st == SC_OK) {
         b->shading->preview_swapped = sub.swapped;
         b->shading->preview_swapped_count = sub.swapped_count;
+        b->shading->preview_slabs = (shading_slabs){sub.slabs, sub.slab_count};
         sub.swapped = NULL;
+        sub.slabs = NULL;
     }
     free(sub.swapped);
+    free(sub.slabs);
     if (st != SC_OK || !sub.csg) {
         csg_builder_free(sub.csg);
         if (st == SC_ERR_NOMEM)
@@ -1635,6 +1656,7 @@ static sc_status build_scene_of(const model *m, model *owned, void *spare,
         st = build_parts(&b);
     free(b.marks);
     free(b.swapped);
+    free(b.slabs);
     build_resize_cache_free(b.resize_cache);
     build_nef_cache_free(b.nefs);
     build_imports_free(&b.imports);

@@ -41,7 +41,9 @@ void shading_free(shading *s)
         csg_tree_free(s->overlay[k]);
     csg_tree_free(s->preview_solid);
     free(s->preview_swapped);
-
+    free(s->preview_slabs.items);
+    for (int k = 0; k < SHADING_OVERLAYS; k++)
+        free(s->overlay_slabs[k].items);
     free(s);
 }
 

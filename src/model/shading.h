@@ -72,6 +72,20 @@ typedef struct shading_camera {
 /* The kinds of modifier parts shading.overlay holds. */
 enum { SHADING_OVERLAY_HIGHLIGHT, SHADING_OVERLAY_BACKGROUND, SHADING_OVERLAYS };
 
+/* A slab of the preview's trees (a 2D object drawn 1 thick), and the box
+ * OpenSCAD's preview frames it by: its polygons', at z = 0 in its own
+ * frame, without the slab's thickness. */
+typedef struct shading_slab {
+    uint32_t object; /* the leaf's object_id */
+    bbox flat;
+} shading_slab;
+
+/* The slabs of one tree, ascending by object id. */
+typedef struct shading_slabs {
+    shading_slab *items;
+    size_t count;
+} shading_slabs;
+
 typedef struct shading {
     shading_light *lights;
     uint32_t light_count, light_cap;
@@ -96,6 +110,10 @@ typedef struct shading {
      * colour (the two swap). */
     uint32_t *preview_swapped;
     size_t preview_swapped_count;
+    /* The slabs (2D objects) of preview_solid and of each overlay tree,
+     * each with the box OpenSCAD's preview frames it by. */
+    shading_slabs preview_slabs;
+    shading_slabs overlay_slabs[SHADING_OVERLAYS];
     /* A 2D model, drawn as the slab OpenSCAD draws a 2D result: its render
      * (not the preview) shows it unlit in the colour scheme's 2D face
      * colour, as OpenSCAD's render does. */

@@ -802,14 +802,16 @@ static void describe_camera(const camera *cam, double fov_deg, char *out, size_t
  * getBoundingBox): each product's is the union of the boxes of the
  * objects it intersects, not their overlap (CSGProduct::getBoundingBox),
  * so an intersection spans all its operands' boxes; a difference its
- * first operand's. Without intersections, the tree's bounds. */
-static sc_status preview_bounds(const csg_tree *t, bbox *out, sc_error *error)
+ * first operand's. A slab (slabs: those of t, or NULL) is framed by its
+ * polygons' box. Without intersections or slabs, the tree's bounds. */
+static sc_status preview_bounds(const csg_tree *t, const shading_slabs *slabs, bbox *out,
+                                sc_error *error)
 {
     *out = t->root == CSG_EMPTY ? bbox_empty() : t->bounds;
-    int intersects = 0;
+    int intersects = slabs && slabs->count;
     for (uint32_t i = 0; t->root != CSG_EMPTY && i < t->node_count; i++)
         intersects |= t->nodes[i].op == CSG_INTERSECTION;
-    if (!intersects)
+    if (!intersects || t->root == CSG_EMPTY)
         return SC_OK;
     bbox *box = malloc((size_t)t->node_count * sizeof *box);
     if (!box)
@@ -818,6 +820,17 @@ static sc_status preview_bounds(const csg_tree *t, bbox *out, sc_error *error)
         const csg_node *n = &t->nodes[i];
         if (n->op == CSG_LEAF) {
             box[i] = n->bounds;
+            uint32_t id = t->leaves[n->leaf].object_id;
+            size_t lo = 0, hi = slabs ? slabs->count : 0; /* the first at or past id */
+            while (lo < hi) {
+                size_t mid = lo + (hi - lo) / 2;
+                if (slabs->items[mid].object < id)
+                    lo = mid + 1;
+                else
+                    hi = mid;
+            }
+            if (slabs && lo < slabs->count && slabs->items[lo].object == id)
+                box[i] = slabs->items[lo].flat;
             continue;
         }
         const uint32_t *child = t->child_ids + n->first_child; /* a leaf has none */
@@ -888,12 +901,15 @@ sc_status render_scene(const csg_tree *tree, const shading *look,
     bbox bounds = tree->root == CSG_EMPTY ? bbox_empty() : tree->bounds;
     /* The preview frames its modifier parts too, as OpenSCAD's does, and
      * the boxes OpenSCAD's products have. */
-    if (options->preview && (st = preview_bounds(tree, &bounds, error)) != SC_OK)
+    const shading_slabs *slabs =
+        look && tree == look->preview_solid ? &look->preview_slabs : NULL;
+    if (options->preview && (st = preview_bounds(tree, slabs, &bounds, error)) != SC_OK)
         return st;
     for (int k = 0; options->preview && look && k < SHADING_OVERLAYS; k++) {
         const csg_tree *part = look->overlay[k];
         bbox box;
-        if (part && (st = preview_bounds(part, &box, error)) != SC_OK)
+        if (part &&
+            (st = preview_bounds(part, &look->overlay_slabs[k], &box, error)) != SC_OK)
             return st;
         if (part && part->root != CSG_EMPTY)
             bounds = bbox_union(bounds, box);
