@@ -23,8 +23,11 @@
  * directions); inward or outward winding are both taken (the signed volume decides).
  * One that is not sound is treated as build_mesh_solid treats a polyhedron: an error
  * with c->strict; else, with a warning in c->notes, left out in faithful mode (*empty
- * = "") and drawn by the parity rule in exact mode. Polygons are split into fans of
- * triangles. A mesh without volume sets *empty to a warning and fills nothing. */
+ * = "") and drawn by the parity rule in exact mode. Triangles and quads are split
+ * into fans, larger polygons (a builder's caps) in halves, from end to end and
+ * then each side, and a polyhedron's (numbered) into fans; a polygon that is not
+ * convex gives triangles whose signed areas sum to it either way. A mesh without
+ * volume sets *empty to a warning and fills nothing. */
 sc_status build_mesh_prim(const build_ctx *c, const sc_location *loc, const char *what,
                           int numbered, const vec3 *points, uint32_t point_count,
                           const uint32_t *indices, const uint32_t *face_start,

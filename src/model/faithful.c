@@ -304,31 +304,14 @@ static void add_face(faithful_faces *out, const uint32_t *a, int n)
     out->face_start[++out->face_count] = start + (uint32_t)n;
 }
 
-/* Triangles of the arc of points lo .. hi (k up to f - 1: position k is
- * point first + k, or first + f - 1 - k when not up), closed by the chord
- * from hi to lo: the triangle lo, mid, hi and the arcs on either side.
- * Small triangles along the rim and a few large ones inside, where a fan
- * from one point would be slivers that all span the cap, each in the way
- * of every ray the hierarchy sends near it. */
-static void add_arc(faithful_faces *out, uint32_t first, long f, int up, long lo, long hi)
-{
-    while (hi - lo >= 2) {
-        long mid = lo + (hi - lo) / 2;
-        uint32_t tri[3];
-        const long at[3] = {lo, mid, hi};
-        for (int j = 0; j < 3; j++)
-            tri[j] = first + (uint32_t)(up ? at[j] : f - 1 - at[j]);
-        add_face(out, tri, 3);
-        add_arc(out, first, f, up, lo, mid);
-        lo = mid;
-    }
-}
-
-/* The circle of f points from first, as f - 2 triangles wound
- * counter-clockwise seen from above (up) or from below. */
+/* The circle of f points from first, as a face wound counter-clockwise
+ * seen from above (up) or from below. */
 static void add_cap(faithful_faces *out, uint32_t first, long f, int up)
 {
-    add_arc(out, first, f, up, 0, f - 1);
+    uint32_t start = out->face_start[out->face_count];
+    for (long k = 0; k < f; k++)
+        out->indices[start + (uint32_t)k] = first + (uint32_t)(up ? k : f - 1 - k);
+    out->face_start[++out->face_count] = start + (uint32_t)f;
 }
 
 sc_status faithful_sphere_faces(double r, double fn, double fa, double fs,
@@ -340,8 +323,9 @@ sc_status faithful_sphere_faces(double r, double fn, double fa, double fs,
     if (f < 0)
         return fragment_error(r, FAITHFUL_MAX_SPHERE_FRAGMENTS, loc, error);
     long rings = (f + 1) / 2;
-    size_t quads = faithful_sphere_face_count(f) - 2, caps = 2 * ((size_t)f - 2);
-    if (!faces_alloc(out, (size_t)rings * (size_t)f, quads + caps, 4 * quads + 3 * caps))
+    size_t faces = faithful_sphere_face_count(f);
+    if (!faces_alloc(out, (size_t)rings * (size_t)f, faces,
+                     4 * (faces - 2) + 2 * (size_t)f))
         return err_nomem(error, NULL);
     sphere_points(r, f, out->points);
     add_cap(out, 0, f, 1);
@@ -367,8 +351,7 @@ sc_status faithful_cylinder_faces(double z0, double z1, double r0, double r1, do
     long f = faithful_fragments(rmax, fn, fs, fa);
     if (f < 0)
         return fragment_error(rmax, FAITHFUL_MAX_FRAGMENTS, loc, error);
-    size_t caps = 2 * ((size_t)f - 2);
-    if (!faces_alloc(out, 2 * (size_t)f + 1, (size_t)f + caps, 4 * (size_t)f + 3 * caps))
+    if (!faces_alloc(out, 2 * (size_t)f + 1, (size_t)f + 2, 6 * (size_t)f))
         return err_nomem(error, NULL);
     cylinder_points(z0, z1, r0, r1, f, out->points);
     /* a cone's apex: one point, the last, so that no edge has no length */

@@ -51,8 +51,7 @@ sc_status faithful_cylinder(csg_builder *csg, double z0, double z1, double r0, d
 /* OpenSCAD's polyhedron as polygons, for a mesh leaf: face f is
  * points[indices[face_start[f] .. face_start[f + 1])], every face wound the
  * same way (outward, counter-clockwise seen from outside), a cone's apex
- * one point, the caps cut into triangles (in halves, not fans). All
- * malloc'd: free with faithful_faces_free. */
+ * one point. All malloc'd: free with faithful_faces_free. */
 typedef struct faithful_faces {
     vec3 *points;
     uint32_t point_count;
