@@ -14,6 +14,7 @@
 #include <stdint.h>
 #include <cmocka.h>
 
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -152,6 +153,31 @@ static void check_notch(const sc_scene *s)
     assert_false(inside(s, 3, 1, 1));
 }
 
+/* A prism of n sides (n < 1000) about the z axis, radius 1, z from 0 to 1,
+ * as a polyhedron: n + 2 faces (static text, rewritten each call). */
+static const char *prism_text(int n)
+{
+    static char text[120000];
+    size_t at = (size_t)snprintf(text, sizeof text, "polyhedron(points = [");
+    for (int z = 0; z < 2; z++)
+        for (int k = 0; k < n; k++) {
+            double a = 2 * 3.14159265358979323846 * k / n;
+            at += (size_t)snprintf(text + at, sizeof text - at, "%s[%.17g, %.17g, %d]",
+                                   z || k ? ", " : "", cos(a), sin(a), z);
+        }
+    at += (size_t)snprintf(text + at, sizeof text - at, "], faces = [[");
+    for (int k = 0; k < n; k++) /* the bottom, seen from below */
+        at += (size_t)snprintf(text + at, sizeof text - at, "%s%d", k ? ", " : "", k);
+    at += (size_t)snprintf(text + at, sizeof text - at, "], [");
+    for (int k = n; k-- > 0;)
+        at += (size_t)snprintf(text + at, sizeof text - at, "%d%s", n + k, k ? ", " : "");
+    for (int k = 0; k < n; k++)
+        at += (size_t)snprintf(text + at, sizeof text - at, "], [%d, %d, %d, %d", k,
+                               n + k, n + (k + 1) % n, (k + 1) % n);
+    snprintf(text + at, sizeof text - at, "]]);");
+    return text;
+}
+
 static void test_nonconvex_polyhedron(void **state)
 {
     (void)state;
@@ -180,6 +206,19 @@ static void test_nonconvex_polyhedron(void **state)
                       "faces = [[0, 1, 2], [0, 3, 1], [0, 2, 3], [1, 3, 2]]);");
     assert_int_equal(only_kind(s), PRIM_CONVEX);
     sc_scene_release(s);
+    /* up to PRIM_CONVEX_MAX_PLANES planes: a prism of n sides has n + 2;
+     * past it a convex polyhedron is a mesh, which a ray descends rather
+     * than testing every plane, with the same inside */
+    static const int sides[] = {254, 255};
+    for (int k = 0; k < 2; k++) {
+        s = load("m.csg", prism_text(sides[k]));
+        assert_int_equal(only_kind(s), k ? PRIM_MESH : PRIM_CONVEX);
+        assert_true(inside(s, 0, 0, 0.5));
+        assert_true(inside(s, 0.99, 0, 0.5));
+        assert_false(inside(s, 1.01, 0, 0.5));
+        assert_false(inside(s, 0, 0, 1.01));
+        sc_scene_release(s);
+    }
 }
 
 /* A notch whose last face is wound the wrong way, and a cube without its

@@ -336,6 +336,15 @@ static void test_highlight_leaves_union(void **state)
     assert_int_equal(preview->mask[sphere], 255);
     assert_int_equal(preview->mask[box], 255);
     sc_framebuffer_release(preview);
+    /* inside a render(), whose mesh OpenSCAD builds of all its children,
+     * the '#' operand stays in the solid, highlighted */
+    char inside[600];
+    snprintf(text, sizeof text, beside, "#");
+    snprintf(inside, sizeof inside, "render(convexity = 2) { union() { %s } }", text);
+    preview = render_text(inside, 1);
+    assert_int_equal(preview->mask[sphere], 255);
+    assert_true(display(preview, sphere, 0) > display(preview, sphere, 2) + 0.2);
+    sc_framebuffer_release(preview);
 }
 
 /* A scene loaded with no_preview has neither the preview's parts nor its

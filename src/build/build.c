@@ -306,9 +306,12 @@ static sc_status highlight_operands(builder *b, const frame *f, int top, int *hi
         if (st != SC_OK)
             return st;
     }
+    /* not inside a render(), whose mesh OpenSCAD builds of all its
+     * children (the main walk does not know it is inside one: the
+     * preview's walk is done, and keeps them) */
     if (f->op == CSG_UNION && plain && marked) {
         b->drops++;
-        if (b->drop_highlighted) {
+        if (b->drop_highlighted && !f->in_render) {
             size_t kept = f->first_id;
             for (size_t k = f->first_id; k < b->id_count; k++)
                 if (!(b->id_flags[k] & ID_HIGHLIGHTED)) {
@@ -612,12 +615,16 @@ static sc_status build_polyhedron(builder *b, const model_node *n, const frame *
         st = err_nomem(b->error, &n->loc);
     /* The plane-set path compares every face with every point (and every
      * plane with the others), so larger polyhedra go to the mesh path
-     * (build_mesh.c), as do the ones that are not convex or not closed. */
+     * (build_mesh.c), as do the ones that are not convex or not closed, and
+     * convex ones of more than PRIM_CONVEX_MAX_PLANES planes, each of which
+     * a ray would test. */
     uint32_t count = UINT32_MAX;
     bbox bounds;
     if (st == SC_OK && sound > 0 &&
         (uint64_t)m.face_count * m.point_count <= BUILD_MAX_POLYHEDRON_WORK)
         st = convex_planes(b, &m, &count, &bounds);
+    if (count != UINT32_MAX && count > PRIM_CONVEX_MAX_PLANES)
+        count = UINT32_MAX;
     if (st == SC_OK && count == UINT32_MAX) {
         const char *empty = NULL;
         prim p;
