@@ -170,8 +170,13 @@ done < <(echo "$names" | sed "s/', '/\n/g; s/^'//; s/'$//")
 # is framed by its operands' boxes. A render() is one mesh: in the colour
 # from above it, the walls of holes cut inside it in the face colour, all
 # of it in the cut-out colour where it is subtracted (with the convexity
-# its shape needs, or OpenCSG's own image is wrong). Each scene is
-# converted by OpenSCAD and compared with its own preview image.
+# its shape needs, or OpenCSG's own image is wrong). A translucent
+# render() is one lone object: its rear faces, and its front faces before
+# the nearest rear one, which the depth test keeps. A '#' or '%' term that
+# reaches a render() without meeting another operand is lost, as
+# OpenSCAD's RenderNode collects none; one that a union inside it meets is
+# drawn. Each scene is converted by OpenSCAD and compared with its own
+# preview image.
 scenes=(
     'difference() { cube(20, center = true); #cylinder(r = 5, h = 30, center = true); }'
     'cube(5); %translate([8, 0, 0]) cube(5);'
@@ -192,6 +197,14 @@ scenes=(
     'color("blue") render() difference() { cube(10, center = true); color("red") sphere(6); }'
     'difference() { cube(12, center = true); render(convexity = 2) difference() { cylinder(r = 4, h = 14, center = true); cylinder(r = 2, h = 16, center = true); } }'
     'difference() { render(convexity = 2) difference() { cube(10, center = true); translate([0, 0, 5]) sphere(4); } translate([5, 5, 0]) cylinder(r = 3, h = 20, center = true); }'
+    'color("green", 0.4) render() difference() { cube(10, center = true); sphere(6.5); }'
+    '%render() difference() { cube(10, center = true); cylinder(r = 3, h = 20, center = true); } cube(4);'
+    'render() #cube(10);'
+    'render() translate([2, 0, 0]) #cube(5); sphere(2);'
+    'render() %sphere(5); cube(3);'
+    'render() { cube(4); %translate([6, 0, 0]) sphere(3); }'
+    'render() union() { cube(4); %translate([6, 0, 0]) sphere(3); }'
+    'cube(5); render() { #translate([8, 0, 0]) cube(4); translate([0, 8, 0]) cube(4); }'
 )
 # 2D objects in a 3D model (and 3D ones in a 2D model), which the render
 # leaves out, are slabs 1 thick in the preview (1.1 where subtracted), as

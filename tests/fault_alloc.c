@@ -212,7 +212,7 @@ static long fail_each_render(const char *text, int preview)
 
 /* sc_render: every allocation of its buffers, in turn; and of the
  * preview's: its products, the boxes it frames, its parts and the solid
- * without a '#' operand of a union. */
+ * without a '#' operand of a union, and its render()s, each one product. */
 static void test_render(void **state)
 {
     (void)state;
@@ -222,7 +222,9 @@ static void test_render(void **state)
     long p =
         fail_each_render("intersection() { sphere(r = 1); cube(size = [1, 1, 1]); }\n"
                          "#cube(size = [1, 1, 1]); %sphere(r = 0.5);\n"
-                         "color([1, 0, 0, 0.5]) { cube(size = [2, 1, 1]); }\n",
+                         "color([1, 0, 0, 0.5]) { cube(size = [2, 1, 1]); }\n"
+                         "render() { difference() { cube(2); sphere(1); } }\n"
+                         "%render() { difference() { cube(2); sphere(1); } }\n",
                          1);
     print_message("preview: %ld allocations, each failed in turn\n", p);
     assert_true(p > n);

@@ -347,6 +347,48 @@ static void test_highlight_leaves_union(void **state)
     sc_framebuffer_release(preview);
 }
 
+/* OpenSCAD's RenderNode collects none of its children's terms: a '#' or
+ * '%' that reaches a render() without meeting another operand is lost.
+ * So a '#' sphere there is drawn as the plain sphere, and a '%' one not at
+ * all, as if it were not in the file; one that a union inside the
+ * render() meets is still a part. */
+static void test_render_loses_terms(void **state)
+{
+    (void)state;
+    static const char scene[] =
+        "cube(size = [20, 20, 10], center = true);\n"
+        "render(convexity = 2) { %smultmatrix([[1, 0, 0, 16], [0, 1, 0, 0], "
+        "[0, 0, 1, 0], [0, 0, 0, 1]]) { sphere(r = 4); } }\n";
+    char text[512], plain[512];
+    snprintf(plain, sizeof plain, scene, "");
+    sc_framebuffer *expected = render_text(plain, 1);
+    snprintf(text, sizeof text, scene, "#");
+    sc_framebuffer *got = render_text(text, 1);
+    assert_same_aovs(got, expected);
+    assert_same_color(got, expected);
+    sc_framebuffer_release(got);
+    sc_framebuffer_release(expected);
+    snprintf(plain, sizeof plain, scene, "*");
+    expected = render_text(plain, 1);
+    snprintf(text, sizeof text, scene, "%");
+    got = render_text(text, 1);
+    assert_same_aovs(got, expected);
+    assert_same_color(got, expected);
+    sc_framebuffer_release(got);
+    /* met by a union inside the render(): the '%' sphere is drawn */
+    static const char met[] =
+        "cube(size = [20, 20, 10], center = true);\n"
+        "render(convexity = 2) { union() { cube(size = 2); %smultmatrix([[1, 0, 0, 16], "
+        "[0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]) { sphere(r = 4); } } }\n";
+    snprintf(text, sizeof text, met, "%");
+    got = render_text(text, 1);
+    size_t sphere = pixel_at(16, 0);
+    assert_int_equal(got->mask[sphere], 0);
+    assert_true(fabs(display(got, sphere, 0) - display(expected, sphere, 0)) > 0.05);
+    sc_framebuffer_release(got);
+    sc_framebuffer_release(expected);
+}
+
 /* A scene loaded with no_preview has neither the preview's parts nor its
  * own solid: its preview is the render's solid in the preview's colours,
  * as if the file had no modifiers; loaded by default, it differs. */
@@ -448,6 +490,7 @@ int main(void)
         cmocka_unit_test(test_alpha_blends),
         cmocka_unit_test(test_highlight_leaves_union),
         cmocka_unit_test(test_no_preview),
+        cmocka_unit_test(test_render_loses_terms),
         cmocka_unit_test(test_crop_and_threads),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

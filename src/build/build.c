@@ -89,15 +89,19 @@ typedef struct frame {
                           2021.01's preview keeps the outermost colour */
     uint32_t material; /* index into the shading record's materials */
     affine to_world;
-    int moving;           /* inside a motion node: leaves carry motion */
-    csg_motion motion;    /* its motion (build_motion.h) */
-    int shown;            /* inside the design: not outside the '!' subtree */
-    size_t first_ignored; /* its ignored 2D children start here on that stack */
-    int highlighted;      /* a '#' node or inside one */
-    int negative;         /* subtracted in OpenSCAD's normal form: below an odd
-                             number of differences' later operands */
-    int in_render;        /* the preview's walk, inside a render() */
-    int render_negative;  /* then the render()'s own negative */
+    int moving;            /* inside a motion node: leaves carry motion */
+    csg_motion motion;     /* its motion (build_motion.h) */
+    int shown;             /* inside the design: not outside the '!' subtree */
+    size_t first_ignored;  /* its ignored 2D children start here on that stack */
+    int highlighted;       /* a '#' node or inside one */
+    int negative;          /* subtracted in OpenSCAD's normal form: below an odd
+                              number of differences' later operands */
+    int in_render;         /* the preview's walk, inside a render() */
+    int render_negative;   /* then the render()'s own negative */
+    uint32_t render_first; /* then the object id of its first leaf */
+    /* a '#' or '%' term of a child is lost: it reaches a render() without
+     * meeting another operand (OpenSCAD's RenderNode collects none) */
+    int children_lost;
 } frame;
 
 /* A '#' or '%' node and the state its parent hands it. */
@@ -145,6 +149,10 @@ typedef struct builder {
        render() (shading.preview_swapped) */
     uint32_t *swapped;
     size_t swapped_count, swapped_cap;
+    /* the preview's walk: the leaves of each outermost render(), by object
+     * id (shading.preview_renders) */
+    shading_ids *lone;
+    size_t lone_count, lone_cap;
     /* the preview's walk: its slabs (shading.preview_slabs) */
     shading_slab *slabs;
     size_t slab_count, slab_cap;
@@ -258,6 +266,12 @@ static sc_status deliver(builder *b, const model_node *node, int counted, uint32
     return counted ? push_id(b, id, flags, node) : SC_OK;
 }
 
+/* Whether n is a render(), a union by another name. */
+static int is_render(const model_node *n)
+{
+    return n->kind == MODEL_UNION && n->name && !strcmp(n->name, "render");
+}
+
 /* Whether the result at k on the id stack is an operand in OpenSCAD's
  * preview: not the empty solid, or a 2D object there drawn as a slab. */
 static int operand(const builder *b, size_t k)
@@ -283,6 +297,13 @@ static int operand(const builder *b, size_t k)
  * the intersection of the highlighted ones. */
 static sc_status highlight_operands(builder *b, const frame *f, int top, int *highlighted)
 {
+    if (f->node && is_render(f->node)) {
+        /* OpenSCAD's RenderNode is one leaf of its own geometry, which
+         * ignores the modifiers inside, and collects no operand's term:
+         * nothing is noted, and only a '#' on it or above highlights it */
+        *highlighted = f->highlighted;
+        return SC_OK;
+    }
     size_t marked = 0, plain = 0;
     for (size_t k = f->first_id; k < b->id_count; k++) {
         if (!operand(b, k))
@@ -985,6 +1006,13 @@ static sc_status pop_frame(builder *b)
             return err_nomem(b->error, NULL);
     }
     b->id_count = f->first_id;
+    int outermost = b->frame_count == 0 || !b->frames[b->frame_count - 1].in_render;
+    if (f->in_render && outermost && b->leaves > f->render_first) {
+        if (!grow_array((void **)&b->lone, &b->lone_cap, b->lone_count + 1,
+                        sizeof *b->lone))
+            return err_nomem(b->error, NULL);
+        b->lone[b->lone_count++] = (shading_ids){f->render_first, b->leaves};
+    }
     return deliver(b, f->node, f->counted, id, highlighted ? ID_HIGHLIGHTED : 0);
 }
 
@@ -992,7 +1020,8 @@ static sc_status pop_frame(builder *b)
  * (the main walk only: walk_part builds what was noted). */
 static sc_status mark_part(builder *b, const model_node *n, const frame *parent)
 {
-    if (!b->notes_parts || !(parent->shown || n->is_root))
+    if (!b->notes_parts || !(parent->shown || n->is_root) ||
+        (parent->children_lost && !n->is_root))
         return SC_OK;
     sc_status st = SC_OK;
     if (n->modifiers & MODEL_MOD_BACKGROUND)
@@ -1050,6 +1079,7 @@ static void inherit(const builder *b, const model_node *n, const frame *parent, 
     if ((n->modifiers & MODEL_MOD_BACKGROUND) && n != b->part)
         f->emit = 0;
     f->counted = f->emit;
+    f->children_lost = parent->children_lost && n->child_count == 1 && !n->is_root;
 }
 
 /* Whether leaf n builds with its parent's state as it is (inherit would
@@ -1137,11 +1167,13 @@ static sc_status visit_leaf(builder *b, const model_node *n, const frame *f)
  * and notes where the render()'s own subtraction starts. */
 static void enter_render(builder *b, frame *f)
 {
+    f->children_lost = 1;
     if (!b->preview) {
         b->renders += f->emit && f->shown;
     } else if (!f->in_render) {
         f->in_render = 1;
         f->render_negative = f->negative;
+        f->render_first = b->leaves;
         f->color_set = 1;
     }
 }
@@ -1221,7 +1253,7 @@ static sc_status visit(builder *b, const model_node *n, int *opened)
                                          : CSG_UNION;
     f->first_id = b->id_count;
     f->first_ignored = b->ignored_count;
-    if (kind == MODEL_UNION && n->name && !strcmp(n->name, "render"))
+    if (is_render(n))
         enter_render(b, f);
     if (kind == MODEL_XFORM) {
         affine inverse;
@@ -1463,6 +1495,7 @@ static sc_status build_parts(builder *b)
         free(sub.warnings.items);
         shading_free(sub.shading);
         shading_slabs slabs = {sub.slabs, sub.slab_count};
+        shading_renders renders = {sub.lone, sub.lone_count};
         uint32_t root = CSG_EMPTY;
         if (st == SC_OK) {
             root = csg_builder_op(sub.csg, CSG_UNION, results, done);
@@ -1472,10 +1505,12 @@ static sc_status build_parts(builder *b)
         free(results);
         if (st != SC_OK) {
             free(slabs.items);
+            free(renders.items);
             csg_builder_free(sub.csg);
             break;
         }
         b->shading->overlay_slabs[kind] = slabs;
+        b->shading->overlay_renders[kind] = renders;
         /* The builder is freed here whatever happens. */
         st = csg_builder_finish(sub.csg, root, &b->shading->overlay[kind], &error);
         if (st == SC_ERR_NOMEM)
@@ -1535,11 +1570,14 @@ static sc_status build_preview_solid(builder *b)
         b->shading->preview_swapped = sub.swapped;
         b->shading->preview_swapped_count = sub.swapped_count;
         b->shading->preview_slabs = (shading_slabs){sub.slabs, sub.slab_count};
+        b->shading->preview_renders = (shading_renders){sub.lone, sub.lone_count};
         sub.swapped = NULL;
         sub.slabs = NULL;
+        sub.lone = NULL;
     }
     free(sub.swapped);
     free(sub.slabs);
+    free(sub.lone);
     if (st != SC_OK || !sub.csg) {
         csg_builder_free(sub.csg);
         if (st == SC_ERR_NOMEM)
@@ -1663,6 +1701,7 @@ static sc_status build_scene_of(const model *m, model *owned, void *spare,
         st = build_parts(&b);
     free(b.marks);
     free(b.swapped);
+    free(b.lone);
     free(b.slabs);
     build_resize_cache_free(b.resize_cache);
     build_nef_cache_free(b.nefs);

@@ -42,8 +42,11 @@ void shading_free(shading *s)
     csg_tree_free(s->preview_solid);
     free(s->preview_swapped);
     free(s->preview_slabs.items);
-    for (int k = 0; k < SHADING_OVERLAYS; k++)
+    free(s->preview_renders.items);
+    for (int k = 0; k < SHADING_OVERLAYS; k++) {
         free(s->overlay_slabs[k].items);
+        free(s->overlay_renders[k].items);
+    }
     free(s);
 }
 

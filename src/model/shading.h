@@ -80,6 +80,20 @@ typedef struct shading_slab {
     bbox flat;
 } shading_slab;
 
+/* Object ids first <= id < end: the leaves of one render(). */
+typedef struct shading_ids {
+    uint32_t first, end;
+} shading_ids;
+
+/* The leaves of each outermost render() of one tree, ascending and
+ * disjoint: OpenSCAD's preview draws a render() as one mesh, so where it
+ * is a product by itself (shade.h's leaf_product) every face of it is
+ * drawn, as a lone leaf's are. */
+typedef struct shading_renders {
+    shading_ids *items;
+    size_t count;
+} shading_renders;
+
 /* The slabs of one tree, ascending by object id. */
 typedef struct shading_slabs {
     shading_slab *items;
@@ -114,6 +128,9 @@ typedef struct shading {
      * each with the box OpenSCAD's preview frames it by. */
     shading_slabs preview_slabs;
     shading_slabs overlay_slabs[SHADING_OVERLAYS];
+    /* The render()s of preview_solid and of each overlay tree. */
+    shading_renders preview_renders;
+    shading_renders overlay_renders[SHADING_OVERLAYS];
     /* A 2D model, drawn as the slab OpenSCAD draws a 2D result: its render
      * (not the preview) shows it unlit in the colour scheme's 2D face
      * colour, as OpenSCAD's render does. */

@@ -46,8 +46,10 @@
  * layers, front to back, each with its leaf's alpha, the background
  * behind the last. Which surfaces are layers follows OpenSCAD's draw of
  * its products (the children of the top-level unions, shade.h's
- * leaf_product): a lone leaf is drawn rear faces first, then front faces,
- * so every surface of it is a layer; of a product of several leaves,
+ * leaf_product): a lone leaf, or a render() by itself (one mesh), is
+ * drawn rear faces first, then front faces, with the depth test and
+ * depth writes on, so every rear surface of it is a layer, and the front
+ * surfaces before its nearest rear one; of a product of several leaves,
  * OpenCSG's depth pass keeps the nearest, so the first surface where the
  * ray enters it is. Parts take the same rule. OpenSCAD blends in the
  * order it draws, which depends on the file; this front-to-back rule is
@@ -297,25 +299,34 @@ typedef struct layer {
 
 /* Walks the surfaces of s along ray from its first hit (hit; none when
  * !found) up to the ray's tmax, front to back, and keeps in out (at most
- * max) those OpenSCAD's preview draws (see the file's comment): every
- * surface of a lone leaf, which OpenSCAD draws rear faces first, then
- * front faces; of a product of several leaves, the first surface where
- * the ray enters it, which OpenCSG's depth pass keeps. Stops once what it
- * kept is opaque. Returns the count kept. */
+ * max) those OpenSCAD's preview draws (see the file's comment): of a
+ * lone leaf or render(), which OpenSCAD draws rear faces first, then
+ * front faces with the depth test, every rear surface and the front
+ * surfaces before the first rear one; of a product of several leaves, the first surface
+ * where the ray enters it, which OpenCSG's depth pass keeps. Stops once what it kept is
+ * opaque. Returns the count kept. */
 static int walk_layers(const render_ctx *c, const shade_scene *s, shade_thread *st,
                        csg_ray ray, shade_hit hit, int found, layer *out, int max)
 {
     uint32_t drawn[RENDER_MAX_LAYERS]; /* the products drawn */
-    int drawn_count = 0, n = 0;
+    uint32_t rear[RENDER_MAX_LAYERS];  /* the whole products met leaving */
+    int drawn_count = 0, rear_count = 0, n = 0;
     double cover = 0;
     for (int k = 0; k < RENDER_MAX_LAYERS && found && cover < 1 && n < max; k++) {
         uint32_t product = s->leaf_product ? s->leaf_product[hit.hit.leaf] : CSG_EMPTY;
         int draw;
         if (product == CSG_EMPTY)
             draw = !hit.hit.exiting;
-        else if (s->tree->nodes[product].op == CSG_LEAF)
-            draw = 1; /* a lone leaf: its rear faces too */
-        else {
+        else if (s->leaf_whole[hit.hit.leaf]) {
+            /* a lone leaf or render(): its rear faces, and its front faces
+             * before the depth its nearest rear face leaves */
+            int behind = 0;
+            for (int q = 0; q < rear_count && !behind; q++)
+                behind = rear[q] == product;
+            draw = hit.hit.exiting || !behind;
+            if (hit.hit.exiting && !behind)
+                rear[rear_count++] = product;
+        } else {
             draw = !hit.hit.exiting;
             for (int q = 0; q < drawn_count && draw; q++)
                 draw = drawn[q] != product;
@@ -708,6 +719,8 @@ static sc_status prepare_parts(render_view *v, const shading *look,
             continue;
         shade_scene *s = &v->part[v->part_count];
         sc_status st = shade_prepare(s, tree, NULL, &v->cam, &part_options, error);
+        if (st == SC_OK && (st = shade_mark_renders(s, &look->overlay_renders[k], error)))
+            shade_release(s);
         if (st)
             return st;
         v->part_kind[v->part_count++] = k;

@@ -68,7 +68,7 @@ static int is_default_color(const float c[4])
  * unions at its top (CSGTreeNormalizer), and draws each by itself. Nodes
  * come children first, so going down the array meets a node's parents
  * before it. Returns 0 when out of memory. */
-static int find_products(const csg_tree *tree, uint32_t *product)
+static int find_products(const csg_tree *tree, uint32_t *product, unsigned char *whole)
 {
     for (uint32_t i = 0; i < tree->leaf_count; i++)
         product[i] = CSG_EMPTY;
@@ -89,6 +89,7 @@ static int find_products(const csg_tree *tree, uint32_t *product)
             continue;
         if (n->op == CSG_LEAF) {
             product[n->leaf] = of[i];
+            whole[n->leaf] = of[i] == i; /* a lone leaf */
             continue;
         }
         for (uint32_t k = 0; k < n->child_count; k++) {
@@ -130,6 +131,76 @@ static void swap_render_faces(shade_scene *s, const csg_tree *tree, const shadin
     }
 }
 
+/* The index of the item of renders that holds object id, or
+ * renders->count. */
+static size_t render_of(const shading_renders *renders, uint32_t id)
+{
+    size_t lo = 0, hi = renders->count; /* the first that starts past id */
+    while (lo < hi) {
+        size_t mid = lo + (hi - lo) / 2;
+        if (renders->items[mid].first <= id)
+            lo = mid + 1;
+        else
+            hi = mid;
+    }
+    return lo && id < renders->items[lo - 1].end ? lo - 1 : renders->count;
+}
+
+sc_status shade_mark_renders(shade_scene *s, const shading_renders *renders,
+                             sc_error *error)
+{
+    const csg_tree *tree = s->tree;
+    if (!s->leaf_product || !renders->count)
+        return SC_OK;
+    /* of each product node, the render() of its first leaf, and whether
+     * all its leaves share it */
+    size_t *in = malloc(((size_t)tree->node_count + 1) * sizeof *in);
+    unsigned char *one = malloc((size_t)tree->node_count + 1);
+    if (!in || !one) {
+        free(in);
+        free(one);
+        return err_nomem(error, NULL);
+    }
+    const size_t unseen = SIZE_MAX;
+    for (uint32_t i = 0; i < tree->node_count; i++)
+        in[i] = unseen;
+    for (uint32_t i = 0; i < tree->leaf_count; i++) {
+        uint32_t p = s->leaf_product[i];
+        if (p == CSG_EMPTY)
+            continue;
+        size_t r = render_of(renders, tree->leaves[i].object_id);
+        if (in[p] == unseen) {
+            in[p] = r;
+            one[p] = r < renders->count;
+        } else if (in[p] != r) {
+            one[p] = 0;
+        }
+    }
+    /* the products inside one render() become one, its first: OpenSCAD
+     * draws the render()'s mesh, not the products of its leaves */
+    uint32_t *first = malloc((renders->count + 1) * sizeof *first);
+    if (!first) {
+        free(in);
+        free(one);
+        return err_nomem(error, NULL);
+    }
+    for (size_t r = 0; r < renders->count; r++)
+        first[r] = CSG_EMPTY;
+    for (uint32_t i = 0; i < tree->leaf_count; i++) {
+        uint32_t p = s->leaf_product[i];
+        if (p == CSG_EMPTY || !one[p])
+            continue;
+        if (first[in[p]] == CSG_EMPTY)
+            first[in[p]] = p;
+        s->leaf_product[i] = first[in[p]];
+        s->leaf_whole[i] = 1;
+    }
+    free(first);
+    free(in);
+    free(one);
+    return SC_OK;
+}
+
 sc_status shade_prepare(shade_scene *s, const csg_tree *tree, const shading *look,
                         const camera *cam, const sc_render_options *o, sc_error *error)
 {
@@ -146,13 +217,15 @@ sc_status shade_prepare(shade_scene *s, const csg_tree *tree, const shading *loo
     if (o->preview) {
         s->leaf_product =
             malloc(((size_t)tree->leaf_count + 1) * sizeof *s->leaf_product);
-        if (s->leaf_product && !find_products(tree, s->leaf_product)) {
+        s->leaf_whole = calloc((size_t)tree->leaf_count + 1, 1);
+        if (s->leaf_product && s->leaf_whole &&
+            !find_products(tree, s->leaf_product, s->leaf_whole)) {
             free(s->leaf_product);
             s->leaf_product = NULL;
         }
     }
     if (!s->materials || !s->lights || !s->leaf_color || !s->leaf_back ||
-        !s->leaf_alpha || (o->preview && !s->leaf_product)) {
+        !s->leaf_alpha || (o->preview && (!s->leaf_product || !s->leaf_whole))) {
         shade_release(s);
         return err_nomem(error, NULL);
     }
@@ -203,6 +276,13 @@ sc_status shade_prepare(shade_scene *s, const csg_tree *tree, const shading *loo
     }
     if (look && tree == look->preview_solid && s->scheme_faces)
         swap_render_faces(s, tree, look);
+    if (look && tree == look->preview_solid && o->preview) {
+        sc_status st = shade_mark_renders(s, &look->preview_renders, error);
+        if (st != SC_OK) {
+            shade_release(s);
+            return st;
+        }
+    }
     s->light_count = lights;
     if (look && look->light_count) {
         for (uint32_t i = 0; i < lights; i++) {
@@ -272,6 +352,7 @@ void shade_release(shade_scene *s)
     free(s->leaf_back);
     free(s->leaf_alpha);
     free(s->leaf_product);
+    free(s->leaf_whole);
     memset(s, 0, sizeof *s);
 }
 

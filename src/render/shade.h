@@ -120,6 +120,11 @@ typedef struct shade_scene {
      * under, the leaf's own node where it is such a child (a lone leaf,
      * whose rear faces OpenSCAD draws too); CSG_EMPTY for none. */
     uint32_t *leaf_product;
+    /* The preview only, one per leaf: its product is drawn whole, rear
+     * faces first, then front faces, so that each of its surfaces shows: a
+     * lone leaf, or a render() by itself (shade_mark_renders), which
+     * OpenSCAD draws as one mesh. */
+    unsigned char *leaf_whole;
     shade_light *lights;
     uint32_t light_count;
     double background[3]; /* linear */
@@ -178,6 +183,15 @@ void shade_release(shade_scene *s);
  * keep_own, leaves whose file gave them a colour: those keep it and its
  * alpha, as OpenSCAD draws a coloured '%' part. */
 void shade_paint_part(shade_scene *s, const float rgba[4], int keep_own);
+
+/* Marks as drawn whole (leaf_whole) the leaves of each product of the
+ * preview s whose leaves all lie in one of renders (a render() that is a
+ * product by itself, or several products where the render() is a union),
+ * and makes the products of each render() one (leaf_product), as
+ * OpenSCAD draws the render()'s mesh. Returns SC_OK, or SC_ERR_NOMEM with
+ * error filled. */
+sc_status shade_mark_renders(shade_scene *s, const shading_renders *renders,
+                             sc_error *error);
 
 /* FIRST_HIT with the section cuts applied: 1 and *hit when the ray sees
  * the solid within [tmin, tmax]. Without sections it is csg_first_hit;
