@@ -240,6 +240,45 @@ static void test_scene(void **state)
     sc_scene_release(faithful);
 }
 
+/* An infinite or nan $fn is OpenSCAD 2021.01's 3 fragments (its
+ * primitive-inf-tests, which it renders): the same solids as $fn = 3. */
+static void test_infinite_fn(void **state)
+{
+    (void)state;
+    static const char format[] =
+        "sphere($fn = %s, $fa = 12, $fs = 2, r = 2);\n"
+        "multmatrix([[1, 0, 0, 10], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]) {\n"
+        "  cylinder($fn = %s, $fa = 12, $fs = 2, h = 3, r1 = 2, r2 = 1, center = true);\n"
+        "}\n";
+    char three[512], text[512];
+    snprintf(three, sizeof three, format, "3", "3");
+    sc_scene *expected = load(three, 1);
+    const csg_tree *e = scene_tree(expected);
+    assert_int_equal(e->leaf_count, 2);
+    static const char *const values[] = {"inf", "-inf", "nan"};
+    for (size_t k = 0; k < 3; k++) {
+        snprintf(text, sizeof text, format, values[k], values[k]);
+        sc_scene *got = load(text, 1);
+        const csg_tree *t = scene_tree(got);
+        assert_int_equal(t->leaf_count, 2);
+        for (uint32_t i = 0; i < 2; i++) {
+            assert_int_equal(t->leaves[i].prim.kind, PRIM_CONVEX);
+            assert_int_equal(t->leaves[i].prim.u.convex.count,
+                             e->leaves[i].prim.u.convex.count);
+        }
+        for (int y = -4; y <= 4; y++) {
+            vec3 o = v3(-5, 0.3 * y, 0.25 * y), d = v3_normalize(v3(1, 0.01, 0.02));
+            assert_true(first_hit(got, o, d) == first_hit(expected, o, d));
+        }
+        sc_scene_release(got);
+        /* exact mode draws the true shapes, whatever $fn is */
+        got = load(text, 0);
+        assert_int_equal(scene_tree(got)->leaves[0].prim.kind, PRIM_SPHERE);
+        sc_scene_release(got);
+    }
+    sc_scene_release(expected);
+}
+
 /* A faithful sphere's normal at a hit is its face's: within the angle
  * between neighbouring rings of the direction to the hit, here for rays
  * from all sides down to the centre, and for a sphere of more faces
@@ -361,6 +400,7 @@ int main(void)
         cmocka_unit_test(test_sphere_planes), cmocka_unit_test(test_cylinder_planes),
         cmocka_unit_test(test_scene),         cmocka_unit_test(test_sphere_normals),
         cmocka_unit_test(test_mesh_leaves),   cmocka_unit_test(test_errors),
+        cmocka_unit_test(test_infinite_fn),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

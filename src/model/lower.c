@@ -470,17 +470,17 @@ static const parse_node *find_root(const parse_tree *syntax)
     return NULL;
 }
 
-/* $fn, where a node sets it to a number, must be finite and at most
- * MODEL_MAX_FN (zero or negative means "use $fa and $fs", as in OpenSCAD). */
+/* $fn, where a node sets it to a finite number, must be at most
+ * MODEL_MAX_FN (zero or negative means "use $fa and $fs", as in OpenSCAD).
+ * An infinite or nan $fn is OpenSCAD 2021.01's 3 fragments
+ * (get_fragments_from_r; faithful_fragments). */
 static sc_status check_fn(lowerer *l, const parse_node *n)
 {
     const parse_value *v = model_arg(n, "$fn", -1);
-    if (!v || v->kind != PARSE_NUMBER || v->u.number <= MODEL_MAX_FN)
+    if (!v || v->kind != PARSE_NUMBER || !isfinite(v->u.number) ||
+        v->u.number <= MODEL_MAX_FN)
         return SC_OK;
     sc_location loc = model_loc(&l->r, v);
-    if (isnan(v->u.number))
-        return err_set(l->r.error, SC_ERR_SEMANTIC, &loc,
-                       "$fn must be a number (got nan)");
     return err_set(l->r.error, SC_ERR_LIMIT, &loc, "$fn %g is too large (limit is %d)",
                    v->u.number, MODEL_MAX_FN);
 }
