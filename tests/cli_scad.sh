@@ -210,6 +210,18 @@ cmp -s d1.png d2.png && fail "render -D: the same image with and without -D"
 printf 'render d.scad -o b1.png -q\n' >jobs.txt
 "$bin" batch jobs.txt -D size=2 >/dev/null 2>&1 || fail "batch -D failed"
 cmp -s b1.png d2.png || fail "batch -D: the job did not get -D"
+# $preview is false as OpenSCAD renders (F6, or an export of a mesh) and
+# true as it previews: OpenSCAD's own export to .csg would say true. A -D
+# of it wins.
+printf 'if ($preview) cube([1, 2, 3]); else cube([4, 5, 6]);\n' >pv.scad
+[ "$(bounds pv.scad)" = "[0, 0, 0] to [4, 5, 6]" ] || fail "\$preview in a render: $(bounds pv.scad)"
+[ "$(bounds pv.scad -D '$preview=true')" = "[0, 0, 0] to [1, 2, 3]" ] ||
+    fail "-D \$preview=true: $(bounds pv.scad -D '$preview=true')"
+printf 'cube([1, 2, 3]);\n' >pv_small.csg
+"$bin" render pv.scad --preview -o pv_preview.png -q --imgsize=80,60 &&
+    "$bin" render pv_small.csg --preview -o pv_small.png -q --imgsize=80,60 ||
+    fail "render --preview of pv.scad failed"
+cmp -s pv_preview.png pv_small.png || fail "\$preview in the preview: not the small cube"
 # -D for a file spancast reads itself has no effect, and says so.
 printf 'cube(1);\n' >plain.csg
 "$bin" info plain.csg -D size=2 >/dev/null 2>err.txt || fail "info plain.csg -D failed"

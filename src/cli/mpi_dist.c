@@ -141,10 +141,10 @@ static void broadcast_bytes(void *data, size_t size)
 
 /* Rank 0's part of loading: the text and the name to load it under, as
  * the commands take MODEL (scad_read_model). */
-static sc_status read_model(const char *path, int strict, char **text, size_t *size,
-                            char *name, size_t name_size, sc_error *error)
+static sc_status read_model(const char *path, const sc_load_options *options, char **text,
+                            size_t *size, char *name, size_t name_size, sc_error *error)
 {
-    return scad_read_model(path, strict, text, size, name, name_size, error,
+    return scad_read_model(path, options, text, size, name, name_size, error,
                            &(scad_stop){&cli_stop, NULL});
 }
 
@@ -160,8 +160,7 @@ sc_status dist_load(const char *path, const sc_load_options *options, sc_scene *
     int64_t head[3] = {SC_OK, 0, 0}; /* status, text bytes, name bytes */
     memset(error, 0, sizeof *error);
     if (rank == 0) {
-        head[0] = read_model(path, options && options->strict, &text, &size, name,
-                             sizeof name, error);
+        head[0] = read_model(path, options, &text, &size, name, sizeof name, error);
         head[1] = (int64_t)size;
         head[2] = (int64_t)strlen(name);
     }

@@ -601,8 +601,9 @@ static int wait_child(pid_t pid, int *status, const volatile sig_atomic_t *stop)
     return 0;
 }
 
-static sc_status convert(const char *path, const double *time, int strict, char **text,
-                         size_t *size, char *name, size_t name_size, sc_error *error,
+static sc_status convert(const char *path, const double *time,
+                         const sc_load_options *options, char **text, size_t *size,
+                         char *name, size_t name_size, sc_error *error,
                          void (*depend)(void *user, const char *file), void *user,
                          const scad_stop *stop);
 
@@ -638,8 +639,8 @@ static sc_status convert_and_load(const char *path, const double *time,
     *scene = NULL;
     char *text = NULL, name[PATH_MAX + 16];
     size_t size = 0;
-    sc_status st = convert(path, time, options && options->strict, &text, &size, name,
-                           sizeof name, error, depend, user, stop);
+    sc_status st = convert(path, time, options, &text, &size, name, sizeof name, error,
+                           depend, user, stop);
     if (st == SC_OK) {
         if (stop && stop->loading)
             *stop->loading = 1;
@@ -667,14 +668,31 @@ sc_status scad_load_files(const char *path, const sc_load_options *options,
     return convert_and_load(path, NULL, options, scene, error, depend, user, stop);
 }
 
+/* Whether the -D setting d (NAME=VALUE) sets $preview. */
+static int sets_preview(const char *d)
+{
+    d += strspn(d, " \t");
+    if (strncmp(d, "$preview", 8) != 0)
+        return 0;
+    d += 8;
+    d += strspn(d, " \t");
+    return *d == '=';
+}
+
 /* The conversion, with OpenSCAD's $t set to *time when time is not NULL
  * (a top-level assignment that -D appends to the source, which is how a
- * file's own $t = ... would set it). */
-static sc_status convert(const char *path, const double *time, int strict, char **text,
-                         size_t *size, char *name, size_t name_size, sc_error *error,
+ * file's own $t = ... would set it), and $preview false unless options ask
+ * for the preview (not no_preview): OpenSCAD's export to .csg evaluates
+ * with $preview true, its render (F6, or an export of a mesh) with false.
+ * options->strict: OpenSCAD's first warning is the error. */
+static sc_status convert(const char *path, const double *time,
+                         const sc_load_options *options, char **text, size_t *size,
+                         char *name, size_t name_size, sc_error *error,
                          void (*depend)(void *user, const char *file), void *user,
                          const scad_stop *stop)
 {
+    int strict = options && options->strict;
+    int preview = options && !options->no_preview;
     *text = NULL;
     *size = 0;
     name[0] = '\0';
@@ -702,11 +720,16 @@ static sc_status convert(const char *path, const double *time, int strict, char 
                                      0600);
     posix_spawn_file_actions_adddup2(&actions, 1, 2);
     char define[64];
-    char *argv[10 + 2 * SCAD_MAX_DEFINES] = {"openscad", "-o", csg};
+    char *argv[12 + 2 * SCAD_MAX_DEFINES] = {"openscad", "-o", csg};
     int argc = 3;
     for (int k = 0; k < define_count; k++) {
         argv[argc++] = "-D";
-        argv[argc++] = (char *)defines[k]; /* posix_spawn does not write argv */
+        argv[argc++] = (char *)defines[k];   /* posix_spawn does not write argv */
+        preview |= sets_preview(defines[k]); /* the user's own wins */
+    }
+    if (!preview) { /* after the user's, which place_past_end counts */
+        argv[argc++] = "-D";
+        argv[argc++] = "$preview=false";
     }
     if (time) {
         snprintf(define, sizeof define, "$t=%.17g", *time);
@@ -878,8 +901,8 @@ sc_status scad_load_objects(const char *path, const sc_load_options *options,
     *converted = 1;
     char *text = NULL, name[PATH_MAX + 16];
     size_t size = 0;
-    st = convert(path, NULL, options && options->strict, &text, &size, name, sizeof name,
-                 error, NULL, NULL, stop);
+    st = convert(path, NULL, options, &text, &size, name, sizeof name, error, NULL, NULL,
+                 stop);
     if (st == SC_OK) {
         if (stop && stop->loading)
             *stop->loading = 1;
@@ -906,15 +929,15 @@ static sc_status skip_close(void *user, parse_node *node, sc_error *error)
     return SC_OK;
 }
 
-sc_status scad_read_model(const char *path, int strict, char **text, size_t *size,
-                          char *name, size_t name_size, sc_error *error,
+sc_status scad_read_model(const char *path, const sc_load_options *options, char **text,
+                          size_t *size, char *name, size_t name_size, sc_error *error,
                           const scad_stop *stop)
 {
     *text = NULL;
     *size = 0;
     if (scad_is_source(path))
-        return convert(path, NULL, strict, text, size, name, name_size, error, NULL, NULL,
-                       stop);
+        return convert(path, NULL, options, text, size, name, name_size, error, NULL,
+                       NULL, stop);
     snprintf(name, name_size, "%s", path);
     if (scad_is_mesh(path))
         return mesh_model(path, text, size, error);
@@ -937,7 +960,7 @@ sc_status scad_read_model(const char *path, int strict, char **text, size_t *siz
     free(*text);
     *text = NULL;
     *size = 0;
-    return convert(path, NULL, strict, text, size, name, name_size, error, NULL, NULL,
+    return convert(path, NULL, options, text, size, name, name_size, error, NULL, NULL,
                    stop);
 }
 

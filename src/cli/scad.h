@@ -83,11 +83,12 @@ sc_status scad_load_objects(const char *path, const sc_load_options *options,
  * conversion, the one-line import of a mesh, or the .csg file itself,
  * after a streamed parse that finds OpenSCAD's language in it (then
  * converted, with the note). Errors other than that one are left to the
- * load of the text. strict: OpenSCAD's first warning is the conversion's
- * error, as --strict makes it (scad_load_model does the same when its
- * options are strict). *text is malloc'd; NULL on failure. */
-sc_status scad_read_model(const char *path, int strict, char **text, size_t *size,
-                          char *name, size_t name_size, sc_error *error,
+ * load of the text. options (may be NULL) as scad_load_model reads them
+ * for the conversion: strict makes OpenSCAD's first warning its error,
+ * and $preview is true only where no_preview is not set. *text is
+ * malloc'd; NULL on failure. */
+sc_status scad_read_model(const char *path, const sc_load_options *options, char **text,
+                          size_t *size, char *name, size_t name_size, sc_error *error,
                           const scad_stop *stop);
 
 /* The name the converted text of path is loaded under (DIR/NAME.csg, DIR
