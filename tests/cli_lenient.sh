@@ -245,6 +245,21 @@ check
 "$bin" render bad_import.csg -o bad.png -q 2>err.txt && fail "a bad STL rendered"
 grep -q "^bad_import.csg:1:15: error: import: 'bad.stl' is not a valid STL file" err.txt ||
     fail "bad STL: $(cat err.txt)"
+# a file that is neither binary nor ASCII STL (empty, another format):
+# OpenSCAD 2021.01 imports nothing from it, silently, and renders the
+# rest; as the model itself it is an error
+: >empty.stl
+printf 'import(file = "empty.stl");\ncube(size = [1, 2, 3]);\n' >empty_import.csg
+printf 'cube(size = [1, 2, 3]);\n' >empty_ref.csg
+why="neither binary STL (its size does not match its triangle count) nor ASCII STL (it does not start with 'solid')"
+warns empty_import.csg "empty_import.csg:1:15: warning: import: 'empty.stl' is not a valid STL file ($why); the import is empty, as OpenSCAD leaves it out (--strict makes it an error)"
+same empty_import.csg empty_ref.csg
+refuses empty_import.csg "empty_import.csg:1:15: error: import: 'empty.stl' is not a valid STL file ($why)"
+check
+"$bin" render empty.stl -o empty.png -q 2>err.txt && fail "an empty STL model rendered"
+[ "$(cat err.txt)" = "empty.stl: error: 'empty.stl' is not a valid STL file ($why)" ] ||
+    fail "empty STL model: $(cat err.txt)"
+[ -e empty.png ] && fail "empty STL model: an image was written"
 
 # ---- resize() with a negative size: as 0 ----
 cat >resize.csg <<'M'

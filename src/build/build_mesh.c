@@ -1954,31 +1954,47 @@ static float read_f32(const unsigned char *p)
     return f;
 }
 
+/* The triangle count a binary STL file of size bytes announces in head,
+ * where its size matches it; else -1. */
+static int64_t stl_binary_count(const unsigned char *head, uint64_t size)
+{
+    if (size < 84)
+        return -1;
+    uint32_t n = (uint32_t)head[80] | (uint32_t)head[81] << 8 | (uint32_t)head[82] << 16 |
+                 (uint32_t)head[83] << 24;
+    return (uint64_t)n * 50 + 84 == size ? (int64_t)n : -1;
+}
+
+const char *build_stl_unknown(const unsigned char *head, uint64_t size)
+{
+    if (stl_binary_count(head, size) >= 0 || (size >= 5 && memcmp(head, "solid", 5) == 0))
+        return NULL;
+    return "neither binary STL (its size does not match its triangle count) nor "
+           "ASCII STL (it does not start with 'solid')";
+}
+
 /* Returns NULL on success, else what is wrong. */
 static const char *read_stl(const char *text, size_t size, mesh_file *m, int *oom)
 {
     const unsigned char *u = (const unsigned char *)text;
-    if (size >= 84) {
-        uint32_t n = (uint32_t)u[80] | (uint32_t)u[81] << 8 | (uint32_t)u[82] << 16 |
-                     (uint32_t)u[83] << 24;
-        if ((uint64_t)n * 50 + 84 == size) {
-            for (uint32_t t = 0; t < n; t++) {
-                const unsigned char *f = u + 84 + (size_t)t * 50 + 12;
-                for (int j = 0; j < 3; j++) {
-                    vec3 p = v3(read_f32(f + 12 * j), read_f32(f + 12 * j + 4),
-                                read_f32(f + 12 * j + 8));
-                    if (!v3_is_finite(p))
-                        return "a corner is not finite";
-                    if (!add_point(m, p))
-                        return *oom = 1, "out of memory";
-                }
+    const char *unknown = build_stl_unknown(u, size);
+    if (unknown)
+        return unknown;
+    int64_t n = stl_binary_count(u, size);
+    if (n >= 0) {
+        for (int64_t t = 0; t < n; t++) {
+            const unsigned char *f = u + 84 + (size_t)t * 50 + 12;
+            for (int j = 0; j < 3; j++) {
+                vec3 p = v3(read_f32(f + 12 * j), read_f32(f + 12 * j + 4),
+                            read_f32(f + 12 * j + 8));
+                if (!v3_is_finite(p))
+                    return "a corner is not finite";
+                if (!add_point(m, p))
+                    return *oom = 1, "out of memory";
             }
-            return merge_corners(m) ? NULL : (*oom = 1, "out of memory");
         }
+        return merge_corners(m) ? NULL : (*oom = 1, "out of memory");
     }
-    if (size < 5 || strncmp(text, "solid", 5) != 0)
-        return "neither binary STL (its size does not match its triangle count) nor "
-               "ASCII STL (it does not start with 'solid')";
     const char *p = text, *end = text + size;
     while (p < end) {
         while (p < end && (*p == ' ' || *p == '\t' || *p == '\r' || *p == '\n'))
@@ -2532,7 +2548,7 @@ static sc_status import_read(const build_ctx *c, const model_import *import, int
         free(path);
         return st;
     }
-    int oom = 0;
+    int oom = 0, unknown = 0;
     sc_status st = SC_OK;
     if (objects) {
         st = read_amf(c, text, size, path, import, &file->a);
@@ -2555,18 +2571,37 @@ static sc_status import_read(const build_ctx *c, const model_import *import, int
             return st;
         }
     } else {
+        unknown = stl && build_stl_unknown((const unsigned char *)text, size);
         why = stl ? read_stl(text, size, &file->m, &oom)
                   : read_off(text, size, &file->m, &oom);
         free(text);
     }
-    if (st != SC_OK)
+    if (st != SC_OK) {
         ;
-    else if (oom)
+    } else if (oom) {
         st = err_nomem(c->error, (&loc));
-    else if (why)
+    } else if (why && unknown && !strict && !c->strict) {
+        /* OpenSCAD 2021.01 imports nothing, silently, from an STL file
+         * that is neither binary nor ASCII STL (an empty file, another
+         * format), and renders the rest: a warning, and the import left
+         * out, unless --strict. (A line of an ASCII STL it cannot parse
+         * is its error, and stays one.) */
+        st =
+            build_note_left_out(c, &loc,
+                                "import: '%s' is not a valid %s file (%s); the import is "
+                                "empty, as OpenSCAD leaves it out (--strict makes it an "
+                                "error)",
+                                path, stl ? "STL" : "OFF", why);
+        if (st == SC_OK)
+            *empty = "";
+        free(path);
+        import_file_free(file);
+        return st;
+    } else if (why) {
         st = err_set(c->error, SC_ERR_SEMANTIC, &loc,
                      "import: '%s' is not a valid %s file (%s)", path,
                      stl ? "STL" : "OFF", why);
+    }
     free(path);
     if (st == SC_OK)
         file->read = 1;
