@@ -175,8 +175,9 @@ done < <(echo "$names" | sed "s/', '/\n/g; s/^'//; s/'$//")
 # the nearest rear one, which the depth test keeps. A '#' or '%' term that
 # reaches a render() without meeting another operand is lost, as
 # OpenSCAD's RenderNode collects none; one that a union inside it meets is
-# drawn. Each scene is converted by OpenSCAD and compared with its own
-# preview image.
+# drawn. A colour with a negative component (color(alpha = 0.5)) is not
+# set, and its negative components are the face colour's. Each scene is
+# converted by OpenSCAD and compared with its own preview image.
 scenes=(
     'difference() { cube(20, center = true); #cylinder(r = 5, h = 30, center = true); }'
     'cube(5); %translate([8, 0, 0]) cube(5);'
@@ -205,6 +206,8 @@ scenes=(
     'render() { cube(4); %translate([6, 0, 0]) sphere(3); }'
     'render() union() { cube(4); %translate([6, 0, 0]) sphere(3); }'
     'cube(5); render() { #translate([8, 0, 0]) cube(4); translate([0, 8, 0]) cube(4); }'
+    'color(alpha = 0.5) cube(10, center = true);'
+    'color([1, 0, 0, -1]) color("blue") cube(10, center = true);'
 )
 # 2D objects in a 3D model (and 3D ones in a 2D model), which the render
 # leaves out, are slabs 1 thick in the preview (1.1 where subtracted), as

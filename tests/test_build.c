@@ -553,10 +553,15 @@ static void test_colors(void **state)
                 1, 0, 0, 0.5f);
     check_color("color([-1, -1, -1, 1]) { color(\"blue\") { cube(); } }", 0, 0, 1, 1);
     check_color("color(\"red\") { multmatrix() { group() { cube(); } } }", 1, 0, 0, 1);
-    /* OpenSCAD's "no colour": the inherited one stays. */
+    /* A negative component is OpenSCAD's "none" for it: the colour is not
+     * set (a colour inside still applies, the inherited one stays), and
+     * where none applies the default fills it in (Renderer::setColor). */
     check_color("color(\"red\") { color([-1, -1, -1, 1]) { cube(); } }", 1, 0, 0, 1);
-    check_color("color([-1, -1, -1, 0.3]) { cube(); }", cr, cg, cb, 1);
-    check_color("color(alpha = 0.3) { cube(); }", cr, cg, cb, 1);
+    check_color("color([-1, -1, -1, 0.3]) { cube(); }", cr, cg, cb, 0.3f);
+    check_color("color(alpha = 0.3) { cube(); }", cr, cg, cb, 0.3f);
+    check_color("color(alpha = 0.3) { color(\"red\") { cube(); } }", 1, 0, 0, 1);
+    check_color("color([1, 0, 0, -1]) { cube(); }", 1, 0, 0, 1);
+    check_color("color([1, 0, 0, -1]) { color(\"blue\") { cube(); } }", 0, 0, 1, 1);
 
     sc_scene *s = load("group() { color(\"lime\") { cube(); } cube(); }");
     assert_true(scene_tree(s)->leaves[0].color[1] == 1.0f);
@@ -575,9 +580,10 @@ static void test_colors(void **state)
         "out of range");
     assert_true(only_leaf(s)->color[0] == 1.0f);
     sc_scene_release(s);
+    /* a negative alpha is "none": the default colour's, opaque */
     s = load("color(\"red\", alpha = -0.5) { cube(); }");
     assert_int_equal(sc_scene_warning_count(s), 0);
-    assert_true(only_leaf(s)->color[3] == 0.0f);
+    assert_true(only_leaf(s)->color[3] == 1.0f);
     sc_scene_release(s);
     /* what OpenSCAD reads silently: c of another type sets no colour, a
      * component that is not a number is 0, an alpha that is not one is

@@ -948,18 +948,27 @@ static sc_status build_surface_leaf(builder *b, const model_node *n, const frame
  * clamped to 0..1 (its warnings are the model's), unless a colour above it
  * is set: OpenSCAD 2021.01's preview sets a colour only where none is
  * (CSGTreeEvaluator, visit(ColorNode)), so the outermost wins and a
- * library part is recoloured from outside. */
+ * library part is recoloured from outside. A colour with a negative
+ * component (OpenSCAD's "none", [-1, -1, -1, 1], for a name it does not
+ * know; [-1, -1, -1, a] for color(alpha = a)) is not set (Color4f's
+ * isValid), so a colour inside it still applies; where none does, its
+ * negative components are the default colour's and the others its own,
+ * as OpenSCAD's Renderer::setColor fills them in: color(alpha = 0.5) is
+ * the face colour at half opacity. */
 static void apply_color(const model_node *n, frame *f)
 {
+    static const float def[4] = BUILD_DEFAULT_COLOR;
     const model_color *mc = n->u.color;
-    if (!mc->set || f->color_set)
+    if (f->color_set)
         return;
-    f->color_set = 1;
+    int valid = 1;
     float *color = f->color;
     for (int i = 0; i < 4; i++) {
         double c = i == 3 && mc->has_alpha ? mc->alpha : mc->c[i];
-        color[i] = c >= 0 && c <= 1 ? (float)c : c > 1 ? 1.0f : 0.0f;
+        valid &= !(c < 0);
+        color[i] = c < 0 ? def[i] : c <= 1 ? (float)c : c > 1 ? 1.0f : 0.0f;
     }
+    f->color_set = valid;
 }
 
 /* ---- the walk ---- */

@@ -150,9 +150,9 @@ static sc_status lower_xform(lowerer *l, const parse_node *n, model_node *out)
 }
 
 /* color(c, alpha): c is [r, g, b, a] (missing components are 1, as in
- * OpenSCAD), a colour name or "#hex"; alpha replaces the alpha. A negative
- * red is OpenSCAD's "no colour" (it writes color([-1, -1, -1, 1]) for a name
- * it did not know): the children keep the colour they inherit. */
+ * OpenSCAD), a colour name or "#hex"; alpha replaces the alpha. Without
+ * c, or with a name OpenSCAD does not know, c is its ColorNode's
+ * [-1, -1, -1, 1] (build.c's apply_color reads negative components). */
 static sc_status lower_color(lowerer *l, const parse_node *n, model_node *out)
 {
     float rgba[4] = {1, 1, 1, 1};
@@ -161,17 +161,19 @@ static sc_status lower_color(lowerer *l, const parse_node *n, model_node *out)
         return err_nomem(l->r.error, NULL);
     out->u.color = color;
     double *c = color->c;
-    c[0] = c[1] = c[2] = c[3] = 1;
+    c[0] = c[1] = c[2] = -1;
+    c[3] = 1;
     const parse_value *v = model_arg(n, "c", 0);
     if (v && v->kind == PARSE_VECTOR) {
-        for (uint32_t i = 0; i < v->u.vector.count && i < 4; i++) {
-            const parse_value *item = &v->u.vector.items[i];
-            c[i] = item->kind == PARSE_NUMBER ? item->u.number : 0;
+        for (uint32_t i = 0; i < 4; i++) {
+            const parse_value *item =
+                i < v->u.vector.count ? &v->u.vector.items[i] : NULL;
+            c[i] = !item ? 1 : item->kind == PARSE_NUMBER ? item->u.number : 0;
         }
-        color->set = !(c[0] < 0);
+        color->set = 1;
     } else if (v && v->kind == PARSE_STRING) {
         color->set = colors_lookup(v->u.string.chars, v->u.string.length, rgba);
-        for (int i = 0; i < 4; i++)
+        for (int i = 0; color->set && i < 4; i++)
             c[i] = rgba[i];
     }
     const parse_value *alpha = model_arg(n, "alpha", 1);

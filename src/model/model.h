@@ -124,7 +124,7 @@ typedef struct model_resolution {
  * number alpha replaces c[3], any other is ignored. Its warnings are the
  * instantiation's (params.h). */
 typedef struct model_color {
-    int set;
+    int set; /* c was read: a vector, or a name or "#hex" it knows */
     double c[4];
     int has_alpha; /* alpha given: it replaces c[3] when set */
     double alpha;
