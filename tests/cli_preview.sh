@@ -225,6 +225,25 @@ slab_scenes=(
     'color("red") square(10); color("blue") translate([16, 0]) circle(4);'
     'difference() { square(20, center = true); square(8, center = true); }'
 )
+# Meshes that are not closed: OpenSCAD draws one as it is where nothing
+# hands it to CGAL (alone, or the one operand of an operation), in its
+# render and its preview, in the face colour whichever way its faces
+# wind; beside another object its render leaves it out, as CGAL cannot
+# take it. (Beside another object in the preview, spancast's parity rule
+# leaves out the far wall seen through the box's opening, which OpenSCAD
+# draws: that scene is compared in the render only.)
+open_box='polyhedron(points = [[0, 0, 0], [10, 0, 0], [10, 10, 0], [0, 10, 0], [0, 0, 10], [10, 0, 10], [10, 10, 10], [0, 10, 10]], faces = [[0, 1, 2, 3], [0, 4, 5, 1], [1, 5, 6, 2], [2, 6, 7, 3], [3, 7, 4, 0]]);'
+open_scenes=(
+    "$open_box"
+    'polyhedron(points = [[1, 0, 0], [-1, 0, 0], [0, 1, 0], [0, -1, 0], [0, 0, 1], [0, 0, -1]], faces = [[0, 4, 2], [0, 2, 5], [0, 3, 4], [0, 5, 3], [1, 2, 4], [1, 5, 2], [1, 3, 4], [1, 3, 5]]);'
+    'linear_extrude(height = 3, scale = [0, 1]) difference() { square(2, center = true); square(1, center = true); }'
+    "translate([0, 0, 5]) { $open_box }"
+    "$open_box translate([15, 0, 0]) cube(4);"
+)
+# the options of OpenSCAD's and spancast's images: the preview, or with
+# --render OpenSCAD's render and spancast's in its colour scheme
+os_mode=()
+sc_mode=(--preview)
 compare_scene() { # name, scene, then options of both
     local name=$1 scene=$2
     shift 2
@@ -234,13 +253,13 @@ compare_scene() { # name, scene, then options of both
         fail "$name: openscad could not export it"
         return
     }
-    openscad_png -o "os_$name.png" --imgsize=160,120 "$@" "$name.scad"
+    openscad_png "${os_mode[@]}" -o "os_$name.png" --imgsize=160,120 "$@" "$name.scad"
     [ -s "os_$name.png" ] || {
         fail "$name: openscad wrote no image"
         return
     }
     "$bin" render "$name.csg" -o "sc_$name.png" -q --imgsize=160,120 --faithful \
-        --lighting=openscad --preview "$@" 2>/dev/null || {
+        --lighting=openscad "${sc_mode[@]}" "$@" 2>/dev/null || {
         fail "$name: spancast failed"
         return
     }
@@ -256,6 +275,14 @@ done
 for k in "${!slab_scenes[@]}"; do
     compare_scene "slab$k" "${slab_scenes[$k]}" --camera=20,-30,25,4,2,0
     compare_scene "framed$k" "${slab_scenes[$k]}"
+done
+for k in 0 1 2 3; do
+    compare_scene "open$k" "${open_scenes[$k]}"
+done
+os_mode=(--render)
+sc_mode=(--colorscheme=Cornfield)
+for k in "${!open_scenes[@]}"; do
+    compare_scene "open_render$k" "${open_scenes[$k]}"
 done
 
 echo "$checks checks, $fails failures"

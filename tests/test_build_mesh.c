@@ -1007,12 +1007,20 @@ static void test_import(void **state)
              "used by 1 face)",
              model);
     check_error_strict(model, "import(\"open.stl\");", SC_ERR_SEMANTIC, expected, 0);
+    /* faithful: left out where OpenSCAD hands it to CGAL (beside another
+     * object), drawn as it is, by the parity rule, where nothing does */
     s = load_one_warning(
-        model, "import(\"open.stl\");", 1, 1, 8,
+        model, "import(\"open.stl\"); cube(1);", 1, 1, 8,
         "imported mesh is not closed (edge (0, 0, 2)-(0, 2, 2) is used by "
         "1 face); left out, as OpenSCAD leaves it out (\"The given mesh is "
         "not closed! Unable to convert to CGAL_Nef_Polyhedron.\")",
-        0);
+        1);
+    sc_scene_release(s);
+    s = load_one_warning(
+        model, "import(\"open.stl\");", 1, 1, 8,
+        "imported mesh is not closed (edge (0, 0, 2)-(0, 2, 2) is used by "
+        "1 face); rendered by the parity rule (--strict makes it an error)",
+        1);
     sc_scene_release(s);
     snprintf(expected, sizeof expected,
              "%s:1:8: error: import: '%s/bad.stl' is not a valid STL file (a 'vertex' "
@@ -1379,7 +1387,7 @@ static void test_import_merged_once(void **state)
              "imported mesh is not closed (edge (0, 0.0999994, 0)-(0.0999994, 0, 0) is "
              "used by 1 face)%s",
              left_out);
-    sc_scene *s = load_with(model_path, "import(\"open01.stl\");", 1);
+    sc_scene *s = load_with(model_path, "import(\"open01.stl\"); cube(1);", 1);
     assert_int_equal(sc_scene_warning_count(s), 1);
     assert_string_equal(sc_scene_warning(s, 0)->message, expected);
     sc_scene_release(s);
@@ -1694,13 +1702,20 @@ static void test_polyhedron_malformed(void **state)
     sc_scene *s = test_check_warnings("m.csg", bad_point, 0, exact, 3);
     assert_int_equal(scene_tree(s)->leaf_count, 1);
     sc_scene_release(s);
+    /* faithful: alone, drawn as it is (OpenSCAD hands it to no CGAL
+     * operation); beside another object, left out */
+    s = test_check_warnings("m.csg", bad_point, 1, exact, 3);
+    assert_int_equal(scene_tree(s)->leaf_count, 1);
+    sc_scene_release(s);
     const char *const faithful[] = {
         unable, degenerate,
         "m.csg:1:1: polyhedron is not closed (edge 0-1 is used by 1 face); left "
         "out, as OpenSCAD leaves it out (\"The given mesh is not closed! Unable "
         "to convert to CGAL_Nef_Polyhedron.\")"};
-    s = test_check_warnings("m.csg", bad_point, 1, faithful, 3);
-    assert_int_equal(scene_tree(s)->leaf_count, 0);
+    char beside[512];
+    snprintf(beside, sizeof beside, "%s cube(1);", bad_point);
+    s = test_check_warnings("m.csg", beside, 1, faithful, 3);
+    assert_int_equal(scene_tree(s)->leaf_count, 1);
     sc_scene_release(s);
     for (int mode = 0; mode <= 1; mode++) {
         check_error_strict("m.csg", bad_point, SC_ERR_SEMANTIC,

@@ -102,6 +102,9 @@ typedef struct frame {
     /* a '#' or '%' term of a child is lost: it reaches a render() without
      * meeting another operand (OpenSCAD's RenderNode collects none) */
     int children_lost;
+    /* its result reaches a CGAL operation in OpenSCAD's render: an
+     * operation of two or more operands, or a render() (to_cgal) */
+    int cgal;
 } frame;
 
 /* A '#' or '%' node and the state its parent hands it. */
@@ -144,6 +147,9 @@ typedef struct builder {
                           1 for a 2D model, which the preview draws as slabs */
     size_t renders;    /* render() nodes the main walk met, which the preview
                           draws each as one mesh (enter_render) */
+    size_t cgal_drops; /* polyhedra that are not closed, which the main walk
+                          left out of a CGAL operation in faithful mode and
+                          OpenSCAD's preview draws as they are */
     uint32_t leaves;   /* leaves added so far: the next one's object_id */
     /* the preview's walk: the object ids of the leaves subtracted inside a
        render() (shading.preview_swapped) */
@@ -606,6 +612,7 @@ static sc_status build_polyhedron(builder *b, const model_node *n, const frame *
 {
     sc_error note = {SC_OK, "", 0, 0, ""};
     build_ctx c = context(b, state->warns, &note);
+    c.drawn_as_is = !state->cgal || b->preview; /* OpenCSG takes any mesh */
     size_t left_out = b->warnings.left_out;
     sc_status st = build_bad_indices(&c, n);
     if (st != SC_OK)
@@ -634,6 +641,8 @@ static sc_status build_polyhedron(builder *b, const model_node *n, const frame *
     int sound = f.face_count ? build_mesh_sound(&f, "polyhedron", 1, why, sizeof why) : 1;
     if (sound < 0)
         st = err_nomem(b->error, &n->loc);
+    b->cgal_drops +=
+        !sound && b->faithful && !c.drawn_as_is && state->emit && state->shown;
     /* The plane-set path compares every face with every point (and every
      * plane with the others), so larger polyhedra go to the mesh path
      * (build_mesh.c), as do the ones that are not convex or not closed, and
@@ -755,6 +764,7 @@ static sc_status build_import_leaf(builder *b, const model_node *n, const frame 
 {
     sc_error note = {SC_OK, "", 0, 0, ""}; /* a warning, e.g. a font fallback */
     build_ctx c = context(b, state->warns, &note);
+    c.drawn_as_is = !state->cgal || b->preview; /* OpenCSG takes any mesh */
     const char *empty = NULL;
     prim p;
     build_prims leaves = {NULL, 0, 0};
@@ -1063,6 +1073,19 @@ static sc_status mark_operands(builder *b, const model_node *n, const frame *f)
     return st;
 }
 
+/* Whether OpenSCAD 2021.01's render hands the results of the nodes first
+ * (a list of siblings) to CGAL: where two or more of them are operands,
+ * not '%' (its applyToChildren3D is a no-op for one), or under a
+ * render(), whose mesh it builds with CGAL. A mesh that is not closed is
+ * left out there, and drawn as it is where nothing hands it to CGAL. */
+static int to_cgal(const model_node *first)
+{
+    int operands = 0;
+    for (const model_node *c = first; c; c = c->next)
+        operands += !(c->modifiers & (MODEL_MOD_BACKGROUND | MODEL_MOD_DISABLE));
+    return operands > 1;
+}
+
 /* The state node n hands its children (or, for a leaf, builds with),
  * from its parent's: written into *f, which may be the next free slot of
  * b->frames. */
@@ -1089,6 +1112,7 @@ static void inherit(const builder *b, const model_node *n, const frame *parent, 
         f->emit = 0;
     f->counted = f->emit;
     f->children_lost = parent->children_lost && n->child_count == 1 && !n->is_root;
+    f->cgal = (!n->is_root && parent->cgal) || to_cgal(n->first_child);
 }
 
 /* Whether leaf n builds with its parent's state as it is (inherit would
@@ -1177,6 +1201,7 @@ static sc_status visit_leaf(builder *b, const model_node *n, const frame *f)
 static void enter_render(builder *b, frame *f)
 {
     f->children_lost = 1;
+    f->cgal = 1;
     if (!b->preview) {
         b->renders += f->emit && f->shown;
     } else if (!f->in_render) {
@@ -1352,6 +1377,7 @@ static sc_status walk(builder *b, uint32_t *root)
     top.warns = top.emit;
     top.shown = top.emit;
     top.to_world = affine_identity();
+    top.cgal = to_cgal(b->model->first);
     memcpy(top.color, default_color, sizeof top.color);
     sc_status st = push_frame(b, &top);
     if (st == SC_OK && !b->preview && !b->model->has_root &&
@@ -1544,7 +1570,7 @@ static sc_status build_parts(builder *b)
  * cannot be built, a warning says so and the preview shows the solid. */
 static sc_status build_preview_solid(builder *b)
 {
-    if (!b->drops && !b->flat_parts && !b->renders)
+    if (!b->drops && !b->flat_parts && !b->renders && !b->cgal_drops)
         return SC_OK;
     sc_error error;
     builder sub;

@@ -54,6 +54,10 @@ typedef struct build_ctx {
     /* --strict: a mesh a builder makes that is not closed is an error, not a
      * warning (build_mesh_prim) */
     int strict;
+    /* the leaf's mesh reaches no CGAL operation in OpenSCAD's render (it
+     * draws the mesh as it is): one that is not closed is drawn by the
+     * parity rule in faithful mode too, not left out */
+    int drawn_as_is;
     /* the triangles the load's meshes may still have, of max_triangles
      * (sc_load_options.max_triangles), shared by every context of a load;
      * NULL: no budget. An import's are charged once per import statement,

@@ -9,9 +9,12 @@
  * that is closed (every undirected edge in exactly two faces) and
  * consistently oriented (those two faces run along the edge in opposite
  * directions). One that is not is a warning naming an offending edge, and
- * then left out in faithful mode, as OpenSCAD leaves it out of its CGAL
- * operations, or in exact mode built with the parity rule (prim_mesh.h),
- * so the user still sees it; with --strict it is an error. The meshes
+ * then left out in faithful mode where OpenSCAD hands it to CGAL (an
+ * operation of two or more operands, a render(): build_ctx.drawn_as_is),
+ * as OpenSCAD leaves it out of its CGAL operations, or built with the
+ * parity rule (prim_mesh.h) in exact mode, and in faithful mode where
+ * OpenSCAD draws it as it is, so the user still sees it; with --strict it
+ * is an error. The meshes
  * other builders make (extrusions, surface, hull: build_mesh_prim) are
  * treated the same way. The builders that take only an import's corners
  * or faces (hull, projection without cut: build_import_mesh) take one
@@ -245,7 +248,7 @@ sc_status build_mesh_prim(const build_ctx *c, const sc_location *loc, const char
         return err_nomem(c->error, loc);
     if (!sound && c->strict)
         return err_set(c->error, SC_ERR_SEMANTIC, loc, "%s", why);
-    if (!sound && c->faithful) {
+    if (!sound && c->faithful && !c->drawn_as_is) {
         *empty = ""; /* the reason is the warning */
         return build_note(c, loc, "%s; left out, as OpenSCAD leaves it out (\"%s\")", why,
                           build_openscad_not_closed);
@@ -1685,7 +1688,7 @@ sc_status build_mesh_solid(const build_ctx *c, const sc_location *loc, const cha
         return err_nomem(c->error, loc);
     if (!sound && (strict || !c->note))
         return err_set(c->error, SC_ERR_SEMANTIC, loc, "%s", why);
-    if (!sound && c->faithful) {
+    if (!sound && c->faithful && !c->drawn_as_is) {
         err_set(c->note, SC_OK, loc, "%s; left out, as OpenSCAD leaves it out (\"%s\")",
                 why, build_openscad_not_closed);
         *empty = "";
@@ -2258,6 +2261,7 @@ static sc_status import_solid(const build_ctx *c, const sc_location *loc,
     }
     build_ctx sc = oc; /* the check only: the points merge as the mode says */
     sc.faithful |= joined;
+    sc.drawn_as_is &= !joined && !several; /* OpenSCAD unites objects with CGAL */
     if ((how & IMPORT_LOOSE) && !several) {
         sc.faithful = 0;
         sc.note = &unsaid;

@@ -20,6 +20,7 @@
 #include "base/error.h"
 #include "formats/color.h"
 #include "build/build.h"
+#include "csg/prim_mesh.h"
 #include "render/render.h"
 
 /* The default rig, as directions towards the lights in camera coordinates
@@ -101,6 +102,46 @@ static int find_products(const csg_tree *tree, uint32_t *product, unsigned char 
         }
     }
     free(of);
+    return 1;
+}
+
+static int parity_mesh(const prim *p)
+{
+    return p->kind == PRIM_MESH && p->u.mesh.mesh && p->u.mesh.mesh->parity;
+}
+
+/* Sets s->leaf_side where a leaf is a mesh drawn by the parity rule (see
+ * SHADE_SIDE_*): the front colour, or the back one where the leaf lies
+ * under an odd number of differences' later operands. Nodes come
+ * children first, so going down the array meets a node's parents before
+ * it. Returns 0 when out of memory. */
+static int shade_sides(shade_scene *s, const csg_tree *tree)
+{
+    int any = 0;
+    for (uint32_t i = 0; i < tree->leaf_count && !any; i++)
+        any = parity_mesh(&tree->leaves[i].prim);
+    if (!any || tree->root == CSG_EMPTY)
+        return 1;
+    unsigned char *negative = calloc((size_t)tree->node_count + 1, 1);
+    s->leaf_side = calloc((size_t)tree->leaf_count + 1, 1);
+    if (!negative || !s->leaf_side) {
+        free(negative);
+        return 0;
+    }
+    for (uint32_t i = tree->node_count; i-- > 0;) {
+        const csg_node *n = &tree->nodes[i];
+        if (n->op == CSG_LEAF) {
+            const prim *p = &tree->leaves[n->leaf].prim;
+            if (parity_mesh(p))
+                s->leaf_side[n->leaf] = negative[i] ? SHADE_SIDE_BACK : SHADE_SIDE_FRONT;
+            continue;
+        }
+        for (uint32_t k = 0; k < n->child_count; k++) {
+            uint32_t c = tree->child_ids[n->first_child + k];
+            negative[c] = negative[i] ^ (n->op == CSG_DIFFERENCE && k > 0);
+        }
+    }
+    free(negative);
     return 1;
 }
 
@@ -276,6 +317,10 @@ sc_status shade_prepare(shade_scene *s, const csg_tree *tree, const shading *loo
     }
     if (look && tree == look->preview_solid && s->scheme_faces)
         swap_render_faces(s, tree, look);
+    if (s->scheme_faces && !shade_sides(s, tree)) {
+        shade_release(s);
+        return err_nomem(error, NULL);
+    }
     if (look && tree == look->preview_solid && o->preview) {
         sc_status st = shade_mark_renders(s, &look->preview_renders, error);
         if (st != SC_OK) {
@@ -353,6 +398,7 @@ void shade_release(shade_scene *s)
     free(s->leaf_alpha);
     free(s->leaf_product);
     free(s->leaf_whole);
+    free(s->leaf_side);
     memset(s, 0, sizeof *s);
 }
 
@@ -681,7 +727,10 @@ void shade_ray(const shade_scene *s, shade_thread *th, const csg_ray *ray,
         double dim = s->hatch && on_hatch(s, hit->cap_normal, p) ? 0.25 : 1.0;
         for (int k = 0; k < 3; k++)
             base[k] = dim * s->cap_color[k];
-    } else if (hit->hit.flip && s->scheme_faces) {
+    } else if (s->scheme_faces &&
+               (s->leaf_side && s->leaf_side[hit->hit.leaf] != SHADE_SIDE_FLIP
+                    ? s->leaf_side[hit->hit.leaf] == SHADE_SIDE_BACK
+                    : hit->hit.flip)) {
         memcpy(base, &s->leaf_back[3 * hit->hit.leaf], sizeof base);
     } else {
         base_color(s, m, hit->hit.leaf, v3_madd(p, outward, -1e-6 * m->checker), base);

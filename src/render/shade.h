@@ -103,6 +103,13 @@ typedef enum shade_lighting {
     SHADE_LIGHTING_OPENSCAD_PREVIEW /* OpenSCAD's preview shader: one light */
 } shade_lighting;
 
+/* Which face colour a leaf's hits take: the back one where the hit's
+ * normal is flipped (a subtracted surface), or, for a mesh drawn by the
+ * parity rule, whose flips only follow its triangles' winding, the front
+ * one, or the back one where the leaf is subtracted (OpenSCAD colours a
+ * subtracted object's faces, whichever way they wind). */
+enum { SHADE_SIDE_FLIP, SHADE_SIDE_FRONT, SHADE_SIDE_BACK };
+
 /* Everything shading needs, prepared once per render (shade_prepare) and
  * read-only while rendering. */
 typedef struct shade_scene {
@@ -125,6 +132,9 @@ typedef struct shade_scene {
      * lone leaf, or a render() by itself (shade_mark_renders), which
      * OpenSCAD draws as one mesh. */
     unsigned char *leaf_whole;
+    /* With scheme_faces, one per leaf (NULL where no leaf needs it): which
+     * face colour a hit takes, SHADE_SIDE_* (shade_sides). */
+    unsigned char *leaf_side;
     shade_light *lights;
     uint32_t light_count;
     double background[3]; /* linear */
