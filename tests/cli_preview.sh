@@ -176,7 +176,9 @@ done < <(echo "$names" | sed "s/', '/\n/g; s/^'//; s/'$//")
 # reaches a render() without meeting another operand is lost, as
 # OpenSCAD's RenderNode collects none; one that a union inside it meets is
 # drawn. A colour with a negative component (color(alpha = 0.5)) is not
-# set, and its negative components are the face colour's. Each scene is
+# set, and its negative components are the face colour's. A mesh that is
+# not closed is drawn, as OpenCSG takes any mesh, though --faithful leaves
+# it out of the render's union. Each scene is
 # converted by OpenSCAD and compared with its own preview image.
 scenes=(
     'difference() { cube(20, center = true); #cylinder(r = 5, h = 30, center = true); }'
@@ -208,6 +210,7 @@ scenes=(
     'cube(5); render() { #translate([8, 0, 0]) cube(4); translate([0, 8, 0]) cube(4); }'
     'color(alpha = 0.5) cube(10, center = true);'
     'color([1, 0, 0, -1]) color("blue") cube(10, center = true);'
+    'linear_extrude(height = 3, scale = [0, 1]) difference() { square(2, center = true); square(1, center = true); } translate([4, 0, 0]) cube(1);'
 )
 # 2D objects in a 3D model (and 3D ones in a 2D model), which the render
 # leaves out, are slabs 1 thick in the preview (1.1 where subtracted), as

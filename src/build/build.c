@@ -147,9 +147,10 @@ typedef struct builder {
                           1 for a 2D model, which the preview draws as slabs */
     size_t renders;    /* render() nodes the main walk met, which the preview
                           draws each as one mesh (enter_render) */
-    size_t cgal_drops; /* polyhedra that are not closed, which the main walk
-                          left out of a CGAL operation in faithful mode and
-                          OpenSCAD's preview draws as they are */
+    size_t cgal_drops; /* meshes that are not closed (polyhedra, imports,
+                          extrusions), which the main walk left out of a
+                          CGAL operation in faithful mode and OpenSCAD's
+                          preview draws as they are */
     uint32_t leaves;   /* leaves added so far: the next one's object_id */
     /* the preview's walk: the object ids of the leaves subtracted inside a
        render() (shading.preview_swapped) */
@@ -783,6 +784,9 @@ static sc_status build_import_leaf(builder *b, const model_node *n, const frame 
         sc_location at = {b->file, note.line, note.column};
         st = warn(b, &at, "%s", note.message);
     }
+    /* left out of a CGAL operation (or not read): the preview draws it */
+    b->cgal_drops += st == SC_OK && empty && !empty[0] && b->faithful && !c.drawn_as_is &&
+                     state->emit && state->shown;
     if (st != SC_OK || !state->warns)
         ;
     else if (!state->emit) /* only warned of */
