@@ -232,7 +232,7 @@ slab_scenes=(
 # hands it to CGAL (alone, or the one operand of an operation), in its
 # render and its preview, in the face colour whichever way its faces
 # wind; beside another object its render leaves it out, as CGAL cannot
-# take it. (Beside another object in the preview, spancast's parity rule
+# take it. An extrusion's 2D children are united by Clipper, not CGAL. (Beside another object in the preview, spancast's parity rule
 # leaves out the far wall seen through the box's opening, which OpenSCAD
 # draws: that scene is compared in the render only.)
 open_box='polyhedron(points = [[0, 0, 0], [10, 0, 0], [10, 10, 0], [0, 10, 0], [0, 0, 10], [10, 0, 10], [10, 10, 10], [0, 10, 10]], faces = [[0, 1, 2, 3], [0, 4, 5, 1], [1, 5, 6, 2], [2, 6, 7, 3], [3, 7, 4, 0]]);'
@@ -242,6 +242,7 @@ open_scenes=(
     'linear_extrude(height = 3, scale = [0, 1]) difference() { square(2, center = true); square(1, center = true); }'
     "translate([0, 0, 5]) { $open_box }"
     "$open_box translate([15, 0, 0]) cube(4);"
+    'linear_extrude(height = 3, scale = [0, 1]) { translate([-1.5, -1]) square([1, 2]); translate([0.5, -1]) square([1, 2]); }'
 )
 # the options of OpenSCAD's and spancast's images: the preview, or with
 # --render OpenSCAD's render and spancast's in its colour scheme
@@ -279,7 +280,7 @@ for k in "${!slab_scenes[@]}"; do
     compare_scene "slab$k" "${slab_scenes[$k]}" --camera=20,-30,25,4,2,0
     compare_scene "framed$k" "${slab_scenes[$k]}"
 done
-for k in 0 1 2 3; do
+for k in 0 1 2 3 5; do
     compare_scene "open$k" "${open_scenes[$k]}"
 done
 os_mode=(--render)

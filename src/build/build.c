@@ -1116,7 +1116,9 @@ static void inherit(const builder *b, const model_node *n, const frame *parent, 
         f->emit = 0;
     f->counted = f->emit;
     f->children_lost = parent->children_lost && n->child_count == 1 && !n->is_root;
-    f->cgal = (!n->is_root && parent->cgal) || to_cgal(n->first_child);
+    /* a leaf's children (an extrusion's 2D ones) are united by Clipper */
+    f->cgal = (!n->is_root && parent->cgal) ||
+              (!model_is_leaf(n->kind) && to_cgal(n->first_child));
 }
 
 /* Whether leaf n builds with its parent's state as it is (inherit would
