@@ -70,7 +70,8 @@ grep -q '^spancast: measured drilled.csg in [0-9.]* s ([0-9]* threads)$' err.txt
     fail "measure summary line: $(cat err.txt)"
 grep -q 'note' err.txt && fail "measure of a solid: a note: $(cat err.txt)"
 
-# A 2D model is measured as the slab OpenSCAD draws it, with a note that
+# A 2D model is measured as the slab OpenSCAD's preview draws it (its
+# render draws it flat), with a note that
 # says so (also with -q: it explains the numbers); info says it too.
 printf 'square(size = [10, 5]);\n' >flat.csg
 run 0 flat.txt measure flat.csg -q
@@ -80,10 +81,10 @@ grep -q '^volume  *50 +- ' flat.txt || fail "2D measure: $(cat flat.txt)"
 grep -qx 'box min  *(0, 0, -0.5) +- (0, 0, 0)' flat.txt || fail "2D box: $(cat flat.txt)"
 grep -q -- '+- (*-' flat.txt && fail "2D measure: a negative error bound: $(cat flat.txt)"
 check
-[ "$(cat err.txt)" = "spancast: note: flat.csg is a 2D model, measured as the slab OpenSCAD draws it: 1 unit thick (z from -0.5 to 0.5), so its volume is its area" ] ||
+[ "$(cat err.txt)" = "spancast: note: flat.csg is a 2D model, measured as the slab OpenSCAD's preview draws it: 1 unit thick (z from -0.5 to 0.5), so its volume is its area" ] ||
     fail "2D measure: note '$(cat err.txt)'"
 run 0 flat_info.txt info flat.csg
-grep -qx '2D: the slab OpenSCAD draws, 1 unit thick (z from -0.5 to 0.5)' flat_info.txt ||
+grep -qx "2D: drawn flat at z = 0, as OpenSCAD's render draws it; measured as the slab its preview draws, 1 unit thick (z from -0.5 to 0.5)" flat_info.txt ||
     fail "2D info: $(cat flat_info.txt)"
 run 0 solid_info.txt info drilled.csg
 grep -q '^2D' solid_info.txt && fail "info of a solid says 2D"

@@ -2,8 +2,8 @@
 # warning, spancast leaves out with the same warning, at the node, and
 # renders the rest with exit 0; the result is checked against the model
 # written without what was left out (spancast compare: volumes, masks and
-# depths from seven views). A 2D model is the slab OpenSCAD draws, in its
-# 2D face colour in the render. A lossy --mask format gets a warning.
+# depths from seven views). A 2D model is drawn flat at z = 0 in its 2D
+# face colour in the render. A lossy --mask format gets a warning.
 # Children of the other dimension, left out of an operation with their
 # own warnings first, are cli_lenient_dims.sh's.
 #
@@ -20,10 +20,10 @@ pixel() {
 # The first object decides, as in OpenSCAD: a file that starts with a 2D
 # object is a 2D model, its 3D objects left out.
 printf 'square(size = [10, 4], center = false);\ncube(size = [3, 3, 3], center = false);\n' >first2d.csg
-printf 'linear_extrude(height = 1, center = true) { square(size = [10, 4]); }\n' >slab_ref.csg
+printf 'polygon(points = [[0, 0], [10, 0], [10, 4], [0, 4]]);\n' >flat_ref.csg
 warns first2d.csg "first2d.csg:2:1: warning: Mixing 2D and 3D objects is not supported
 first2d.csg:2:1: warning: Ignoring 3D child object for 2D operation"
-same first2d.csg slab_ref.csg
+same first2d.csg flat_ref.csg
 
 # The same inside a boolean that OpenSCAD evaluates with CGAL (the mesh a
 # projection takes): the 2D child is the empty operand, so it subtracts
@@ -59,24 +59,33 @@ nefmeet.csg:4:3: warning: Ignoring 2D child object for 3D operation
 nefmeet.csg:1:1: warning: the 2D model has no area
 nefmeet.csg: warning: the model is empty (nothing to render)"
 
-# ---- a 2D model: flat, 1 thick about z = 0, in colour, mask and depth ----
+# ---- a 2D model: flat at z = 0 in the render, in colour, mask and depth ----
+# (the slab 1 thick about z = 0 that OpenSCAD's preview draws is what
+# measure and the preview see: cli_check.sh, cli_preview.sh)
 printf 'square(size = [10, 4], center = false);\n' >flat.csg
 warns flat.csg ""
-same flat.csg slab_ref.csg
-# A 2D model past 1e6 across is drawn 1e-6 of its width or height thick
-# (the larger), so that the slab stays far above the rays' tolerance (1e-9
-# of the extent): a rectangle 1e12 across is the slab 1e6 thick, where one
-# 1 thick had no area.
+same flat.csg flat_ref.csg
+# A 2D model past 1e6 across is a slab 1e-6 of its width or height thick
+# (the larger), so that the slab the render finds its plane in stays far
+# above the rays' tolerance (1e-9 of the extent): a rectangle 1e12 across,
+# seen from above, fills the middle of the image, where a slab 1 thick had
+# no area.
 printf 'square(size = [1e12, 4e11], center = false);\n' >flat_big.csg
-printf 'linear_extrude(height = 1e6, center = true) { square(size = [1e12, 4e11]); }\n' >flat_big_ref.csg
+printf 'polygon(points = [[0, 0], [1e12, 0], [1e12, 4e11], [0, 4e11]]);\n' >flat_big_ref.csg
 for mode in "" --faithful; do
     # shellcheck disable=SC2086
     { warns flat_big.csg "" $mode; same flat_big.csg flat_big_ref.csg $mode; }
+    check
+    # shellcheck disable=SC2086
+    "$bin" render flat_big.csg -o big.png --mask=big_mask.png --imgsize=80,60 \
+        --camera=5e11,2e11,2e12,5e11,2e11,0 -q $mode &&
+        [ "$(pixel big_mask.png 40 30)" = 255 ] ||
+        fail "flat_big.csg $mode: mask '$(pixel big_mask.png 40 30)' at the centre"
 done
-# A projection alone is a 2D model too: its section drawn as the slab.
+# A projection alone is a 2D model too: its section drawn flat.
 printf 'projection(cut = true) { multmatrix([[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, -1], [0, 0, 0, 1]]) { cube(size = [10, 4, 2], center = false); } }\n' >projected.csg
 warns projected.csg ""
-same projected.csg slab_ref.csg
+same projected.csg flat_ref.csg
 check
 "$bin" render flat.csg -o flat.png --imgsize=80,60 --camera=5,2,50,5,2,0 -q &&
     [ "$(pixel flat.png 40 30)" = "0 191 153" ] ||
@@ -85,6 +94,7 @@ check
 check
 "$bin" render flat.csg -o flat_preview.png --preview --imgsize=80,60 \
     --camera=5,2,50,5,2,0 -q &&
+    printf 'linear_extrude(height = 1, center = true) { square(size = [10, 4]); }\n' >slab_ref.csg &&
     "$bin" render slab_ref.csg -o slab_preview.png --preview --imgsize=80,60 \
         --camera=5,2,50,5,2,0 -q &&
     [ "$(pixel flat_preview.png 40 30)" = "$(pixel slab_preview.png 40 30)" ] &&
@@ -330,25 +340,25 @@ bad2d.csg:1:48: warning: Ignoring 2D child object for 3D operation'
 same bad2d.csg bad2d_ref.csg
 refuses bad2d.csg 'bad2d.csg:1:62: error: Unable to convert square(size="big", ...) parameter to a number or a vec2 of numbers'
 
-# ---- 2D hull, minkowski and resize in a 2D model: drawn as the slab ----
+# ---- 2D hull, minkowski and resize in a 2D model: drawn flat ----
 printf 'hull() { square(size = [1, 4]); multmatrix([[1, 0, 0, 9], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]) { square(size = [1, 4]); } }\n' >hull_flat.csg
 warns hull_flat.csg ""
-same hull_flat.csg slab_ref.csg
+same hull_flat.csg flat_ref.csg
 printf 'minkowski() { square(size = [8, 2]); square(size = [2, 2]); }\n' >minkowski_flat.csg
 warns minkowski_flat.csg ""
-same minkowski_flat.csg slab_ref.csg
+same minkowski_flat.csg flat_ref.csg
 printf 'resize(newsize = [10, 0, 0], auto = [0, 1, 0]) { square(size = [5, 2]); }\n' >resize_flat.csg
 warns resize_flat.csg ""
-same resize_flat.csg slab_ref.csg
+same resize_flat.csg flat_ref.csg
 # a negative size is as 0 for a 2D shape: y keeps its size
 printf 'resize(newsize = [10, -1, 0]) { square(size = [5, 4]); }\n' >resize_neg_flat.csg
 warns resize_neg_flat.csg ""
-same resize_neg_flat.csg slab_ref.csg
+same resize_neg_flat.csg flat_ref.csg
 # a 3D child there is ignored with OpenSCAD's warnings
 printf 'hull() { square(size = [1, 4]); cube(size = 30); multmatrix([[1, 0, 0, 9], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]) { square(size = [1, 4]); } }\n' >hull_mixed.csg
 warns hull_mixed.csg "hull_mixed.csg:1:33: warning: Mixing 2D and 3D objects is not supported
 hull_mixed.csg:1:33: warning: Ignoring 3D child object for 2D operation"
-same hull_mixed.csg slab_ref.csg
+same hull_mixed.csg flat_ref.csg
 
 # ---- 2D imports outside an extrusion: 2D by their extension, as OpenSCAD ----
 # a drawing 10 x 4 from the origin (SVG: millimetres, y down; DXF: a
@@ -357,29 +367,29 @@ printf '<svg xmlns="http://www.w3.org/2000/svg" width="10mm" height="4mm" viewBo
 printf '0\nSECTION\n2\nENTITIES\n0\nLWPOLYLINE\n8\n0\n90\n4\n70\n1\n10\n0\n20\n0\n10\n10\n20\n0\n10\n10\n20\n4\n10\n0\n20\n4\n0\nENDSEC\n0\nEOF\n' >rect.dxf
 printf 'import(file = "rect.svg");\n' >svg_flat.csg
 warns svg_flat.csg ""
-same svg_flat.csg slab_ref.csg
+same svg_flat.csg flat_ref.csg
 printf 'multmatrix([[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]) { import(file = "rect.dxf"); }\n' >dxf_flat.csg
 warns dxf_flat.csg ""
-same dxf_flat.csg slab_ref.csg
+same dxf_flat.csg flat_ref.csg
 # under 2D booleans, offset, hull, minkowski and resize
 printf 'difference() { import(file = "rect.svg"); multmatrix([[1, 0, 0, 2], [0, 1, 0, 1], [0, 0, 1, 0], [0, 0, 0, 1]]) { square(size = [3, 2]); } }\n' >svg_cut.csg
-printf 'linear_extrude(height = 1, center = true) { difference() { square(size = [10, 4]); multmatrix([[1, 0, 0, 2], [0, 1, 0, 1], [0, 0, 1, 0], [0, 0, 0, 1]]) { square(size = [3, 2]); } } }\n' >svg_cut_ref.csg
+printf 'difference() { square(size = [10, 4]); multmatrix([[1, 0, 0, 2], [0, 1, 0, 1], [0, 0, 1, 0], [0, 0, 0, 1]]) { square(size = [3, 2]); } }\n' >svg_cut_ref.csg
 warns svg_cut.csg ""
 same svg_cut.csg svg_cut_ref.csg
 printf 'offset(delta = 1) { import(file = "rect.dxf"); }\n' >dxf_offset.csg
-printf 'linear_extrude(height = 1, center = true) { offset(delta = 1) { square(size = [10, 4]); } }\n' >dxf_offset_ref.csg
+printf 'offset(delta = 1) { square(size = [10, 4]); }\n' >dxf_offset_ref.csg
 warns dxf_offset.csg ""
 same dxf_offset.csg dxf_offset_ref.csg
 printf 'hull() { import(file = "rect.svg"); multmatrix([[1, 0, 0, 0], [0, 1, 0, 9], [0, 0, 1, 0], [0, 0, 0, 1]]) { square(size = [1, 1]); } }\n' >svg_hull.csg
-printf 'linear_extrude(height = 1, center = true) { hull() { square(size = [10, 4]); multmatrix([[1, 0, 0, 0], [0, 1, 0, 9], [0, 0, 1, 0], [0, 0, 0, 1]]) { square(size = [1, 1]); } } }\n' >svg_hull_ref.csg
+printf 'hull() { square(size = [10, 4]); multmatrix([[1, 0, 0, 0], [0, 1, 0, 9], [0, 0, 1, 0], [0, 0, 0, 1]]) { square(size = [1, 1]); } }\n' >svg_hull_ref.csg
 warns svg_hull.csg ""
 same svg_hull.csg svg_hull_ref.csg
 printf 'minkowski() { import(file = "rect.dxf"); square(size = [2, 2]); }\n' >dxf_minkowski.csg
-printf 'linear_extrude(height = 1, center = true) { square(size = [12, 6]); }\n' >dxf_minkowski_ref.csg
+printf 'square(size = [12, 6]);\n' >dxf_minkowski_ref.csg
 warns dxf_minkowski.csg ""
 same dxf_minkowski.csg dxf_minkowski_ref.csg
 printf 'resize(newsize = [20, 0, 0], auto = [0, 1, 0]) { import(file = "rect.svg"); }\n' >svg_resize.csg
-printf 'linear_extrude(height = 1, center = true) { square(size = [20, 8]); }\n' >svg_resize_ref.csg
+printf 'square(size = [20, 8]);\n' >svg_resize_ref.csg
 warns svg_resize.csg ""
 same svg_resize.csg svg_resize_ref.csg
 # in a 3D tree: ignored with OpenSCAD's warnings

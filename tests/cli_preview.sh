@@ -288,6 +288,18 @@ sc_mode=(--colorscheme=Cornfield)
 for k in "${!open_scenes[@]}"; do
     compare_scene "open_render$k" "${open_scenes[$k]}"
 done
+# A 2D model in the render, as OpenSCAD's render draws a 2D result
+# (CGALRenderer::draw): flat at z = 0, unlit in the scheme's 2D face
+# colour, the outlines (the hole's too) 2 pixels wide in its 2D edge
+# colour over it, framed by the flat box; at the default camera, at one
+# that cuts the outlines at the image's right edge, and in a scheme of
+# other 2D colours.
+flat_scene='difference() { circle(10); square(8, center = true); } translate([12, 0]) polygon([[0, 0], [8, 2], [3, 9], [4, 3]]);'
+compare_scene flat "$flat_scene"
+compare_scene flat_cut "$flat_scene" --camera=20,-30,25,4,2,0
+os_mode=(--render --colorscheme=Solarized)
+sc_mode=(--colorscheme=Solarized)
+compare_scene flat_solarized "$flat_scene"
 
 echo "$checks checks, $fails failures"
 [ "$fails" = 0 ]

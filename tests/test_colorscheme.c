@@ -2,9 +2,9 @@
  * folders written here: Cornfield's built-in colours, a file read as
  * OpenSCAD reads it, files OpenSCAD would pass over (a colour missing, a
  * colour in another form, not JSON, not *.json), the first of two files
- * with one name winning, names listed in index order in the error, and
- * Debian's folder (scripts/deps installs openscad; without it the last
- * test fails).
+ * with one name winning, names listed in index order in the error, the
+ * render options' scheme with its 2D colours, and Debian's folder (scripts/deps installs
+ * openscad; without it the last test fails).
  */
 #include <setjmp.h>
 #include <stdarg.h>
@@ -41,8 +41,8 @@ static void write_scheme(const char *file, const char *name, int index,
         "cgal-face-front", "cgal-face-2d", "cgal-face-back",     "cgal-edge-front",
         "cgal-edge-back",  "cgal-edge-2d", "crosshair"};
     static const char *const values[] = {"",        "#010203", "#102030", "#405060",
-                                         "#708090", "#00bf99", "#a0b0c0", "#d0e0f0",
-                                         "#ff0000", "#ff0000", "#800000"};
+                                         "#708090", "#0a0b0c", "#a0b0c0", "#d0e0f0",
+                                         "#ff0000", "#0d0e0f", "#800000"};
     char text[2048];
     int n = snprintf(text, sizeof text,
                      "{ \"name\": \"%s\", \"index\": %d, \"show-in-gui\": true,\n"
@@ -126,6 +126,38 @@ static void test_read(void **state)
     check_rgb(s.crosshair, 0x800000);
 }
 
+/* sc_render_options_set_scheme: the scheme and its two 2D colours, which
+ * sc_color_scheme has no room for; Cornfield's by default; options kept
+ * on failure; options from a header without them refused. */
+static void test_set_scheme(void **state)
+{
+    (void)state;
+    sc_render_options o;
+    sc_render_options_init(&o);
+    check_rgb(o.face_2d, 0x00bf99);
+    check_rgb(o.edge_2d, 0xff0000);
+    sc_error e;
+    assert_int_equal(sc_render_options_set_scheme(&o, "Alpha", folder, &e), SC_OK);
+    assert_string_equal(o.scheme.name, "Alpha");
+    check_rgb(o.scheme.background, 0x112233);
+    check_rgb(o.face_2d, 0x0a0b0c);
+    check_rgb(o.edge_2d, 0x0d0e0f);
+    sc_render_options kept = o;
+    assert_int_equal(sc_render_options_set_scheme(&o, "Missing", folder, &e),
+                     SC_ERR_ARGUMENT);
+    assert_memory_equal(&o, &kept, sizeof o);
+    assert_int_equal(sc_render_options_set_scheme(&o, "Cornfield", folder, &e), SC_OK);
+    check_rgb(o.face_2d, 0x00bf99);
+    check_rgb(o.edge_2d, 0xff0000);
+    o.size = offsetof(sc_render_options, face_2d);
+    kept = o;
+    assert_int_equal(sc_render_options_set_scheme(&o, "Alpha", folder, &e),
+                     SC_ERR_ARGUMENT);
+    assert_memory_equal(&o, &kept, sizeof o);
+    assert_int_equal(sc_render_options_set_scheme(NULL, "Alpha", folder, &e),
+                     SC_ERR_ARGUMENT);
+}
+
 /* The files OpenSCAD passes over are not schemes; the names are listed by
  * index, Cornfield (1000) among them; of two files named Zed only one
  * counts. */
@@ -166,14 +198,18 @@ static void test_debian_folder(void **state)
     assert_int_equal(sc_color_scheme_find("Metallic", NULL, &s, &e), SC_OK);
     check_rgb(s.background, 0xaaaaff);
     check_rgb(s.edge, 0xff0000);
+    sc_render_options o;
+    sc_render_options_init(&o);
+    assert_int_equal(sc_render_options_set_scheme(&o, "Solarized", NULL, &e), SC_OK);
+    check_rgb(o.face_2d, 0x6c71c4);
+    check_rgb(o.edge_2d, 0xb58800);
 }
 
 int main(void)
 {
     const struct CMUnitTest tests[] = {
-        cmocka_unit_test(test_cornfield),
-        cmocka_unit_test(test_read),
-        cmocka_unit_test(test_unknown_lists_names),
+        cmocka_unit_test(test_cornfield),     cmocka_unit_test(test_read),
+        cmocka_unit_test(test_set_scheme),    cmocka_unit_test(test_unknown_lists_names),
         cmocka_unit_test(test_debian_folder),
     };
     return cmocka_run_group_tests(tests, setup, NULL);

@@ -427,6 +427,47 @@ static void test_no_preview(void **state)
     sc_framebuffer_release(expected);
 }
 
+/* A 2D model in the render, as OpenSCAD's render draws a 2D result: flat
+ * at z = 0 in colour, mask and depth, unlit in the options' 2D face
+ * colour, its outlines (the hole's too) 2 pixels wide in the 2D edge
+ * colour over it; its preview is the slab 1 thick, lit, without them. */
+static void test_flat_2d(void **state)
+{
+    (void)state;
+    static const char text[] = "difference() {\n"
+                               "  square(size = [30, 30], center = true);\n"
+                               "  square(size = [10, 10], center = true);\n"
+                               "}\n";
+    sc_render_options o;
+    options_above(&o, 0);
+    const float face[3] = {0.2f, 0.4f, 0.6f}, edge[3] = {0.9f, 0.1f, 0.3f};
+    memcpy(o.face_2d, face, sizeof face);
+    memcpy(o.edge_2d, edge, sizeof edge);
+    sc_framebuffer *flat = render_options(text, &o);
+    o.preview = 1;
+    sc_framebuffer *slab = render_options(text, &o);
+    double px = pixel_size();
+    size_t inside = pixel_at(10, 10), hole = pixel_at(0, 0), outside = pixel_at(18, 18);
+    size_t outer = pixel_at(15, 10), inner = pixel_at(5, 0);
+    assert_int_equal(flat->mask[inside], 255);
+    assert_int_equal(flat->mask[hole], 0);
+    assert_int_equal(flat->mask[outside], 0);
+    assert_true(flat->id[inside] >= 0);
+    assert_true(fabs(flat->depth[inside] - 100) < 1e-5);
+    assert_true(fabs(slab->depth[inside] - 99.5) < 1e-5);
+    for (int k = 0; k < 3; k++) {
+        assert_true(fabs(display(flat, inside, k) - face[k]) < 1e-4);
+        assert_true(fabs(display(flat, outer, k) - edge[k]) < 1e-4);
+        assert_true(fabs(display(flat, inner, k) - edge[k]) < 1e-4);
+        /* 3 pixels in from the outline: the face */
+        assert_true(fabs(display(flat, pixel_at(15 - 3 * px, 10), k) - face[k]) < 1e-4);
+    }
+    assert_true(fabs(display(slab, outer, 0) - edge[0]) > 0.1);
+    assert_true(fabs(display(slab, inside, 2) - face[2]) > 0.05);
+    sc_framebuffer_release(flat);
+    sc_framebuffer_release(slab);
+}
+
 /* Parts and alpha at several samples a pixel, under a section cut: the
  * thread count changes nothing, and a crop is the whole image's pixels. */
 static void test_crop_and_threads(void **state)
@@ -492,6 +533,7 @@ int main(void)
         cmocka_unit_test(test_no_preview),
         cmocka_unit_test(test_render_loses_terms),
         cmocka_unit_test(test_crop_and_threads),
+        cmocka_unit_test(test_flat_2d),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -429,12 +429,29 @@ typedef struct sc_render_options {
     int sample_start;
     int sample_count;
     double *sample_sum;
+
+    /* The colour scheme's 2D colours ("cgal-face-2d", "cgal-edge-2d"), in
+     * which the render (not the preview) of a 2D model draws its polygons,
+     * where the file gives them no colour, and their outlines, as OpenSCAD's
+     * render draws a 2D result (docs/extrusions.md); Cornfield's by default
+     * (#00bf99, #ff0000). sc_render_options_set_scheme sets them with
+     * scheme. */
+    float face_2d[3];
+    float edge_2d[3];
 } sc_render_options;
 
 /* Sets size and the defaults written beside each field. Never fails. */
 void sc_render_options_init_size(sc_render_options *options, size_t size);
 #define sc_render_options_init(options)                                                  \
     sc_render_options_init_size((options), sizeof *(options))
+
+/* Sets options->scheme and the scheme's 2D colours (options->face_2d and
+ * edge_2d, which the fixed record sc_color_scheme has no room for) to the
+ * scheme called name, found as sc_color_scheme_find finds it. Options
+ * from a header without edge_2d are SC_ERR_ARGUMENT. On failure options is
+ * left as it was. Reads the folder's files; thread safe. */
+sc_status sc_render_options_set_scheme(sc_render_options *options, const char *name,
+                                       const char *folder, sc_error *error);
 
 /* Applies the scene's own settings to options: a camera() node in the file
  * sets camera_mode (SC_CAMERA_VECTOR), camera, up, fov_deg, projection,

@@ -855,6 +855,47 @@ static sc_status flush_ignored(builder *b, const frame *f)
  * result as (build_flat_slab), with state's colour; the shading record
  * says that the model is flat, so that the render draws it as OpenSCAD's
  * render draws 2D (shading.h). */
+/* Records where OpenSCAD's render draws the 2D model of region r, in
+ * state's frame: the plane z = 0, the region's box in it and its outlines,
+ * all in the world (shading.h). */
+static sc_status note_flat(builder *b, const twod_region *r, const frame *state)
+{
+    shading *s = b->shading;
+    const affine *m = &state->to_world;
+    vec3 origin = affine_point(m, v3(0, 0, 0));
+    vec3 n = v3_cross(affine_vector(m, v3(1, 0, 0)), affine_vector(m, v3(0, 1, 0)));
+    double len = v3_length(n);
+    /* a flattened frame leaves n zero: no ray meets the plane */
+    n = len > 0 ? v3_scale(n, 1 / len) : v3(0, 0, 0);
+    s->flat_plane[0] = n.x;
+    s->flat_plane[1] = n.y;
+    s->flat_plane[2] = n.z;
+    s->flat_plane[3] = v3_dot(n, origin);
+    free(s->flat_points);
+    free(s->flat_start);
+    s->flat_points = NULL;
+    s->flat_start = NULL;
+    s->flat_outlines = 0;
+    s->flat_box = bbox_empty();
+    if (r->contour_count == 0)
+        return SC_OK;
+    s->flat_points = malloc((size_t)r->point_count * 3 * sizeof *s->flat_points);
+    s->flat_start = malloc(((size_t)r->contour_count + 1) * sizeof *s->flat_start);
+    if (!s->flat_points || !s->flat_start)
+        return err_nomem(b->error, NULL);
+    for (uint32_t i = 0; i < r->point_count; i++) {
+        vec3 p = affine_point(m, v3(r->xy[2 * i], r->xy[2 * i + 1], 0));
+        s->flat_points[3 * i] = p.x;
+        s->flat_points[3 * i + 1] = p.y;
+        s->flat_points[3 * i + 2] = p.z;
+        s->flat_box = bbox_add_point(s->flat_box, p);
+    }
+    memcpy(s->flat_start, r->start,
+           ((size_t)r->contour_count + 1) * sizeof *s->flat_start);
+    s->flat_outlines = r->contour_count;
+    return SC_OK;
+}
+
 static sc_status build_flat(builder *b, const model_node *n, const frame *state,
                             uint32_t *id)
 {
@@ -869,6 +910,8 @@ static sc_status build_flat(builder *b, const model_node *n, const frame *state,
     const char *empty = NULL;
     if (st == SC_OK)
         st = build_flat_slab(&c, &at->loc, &r, 1, &p, &empty);
+    if (st == SC_OK && !empty)
+        st = note_flat(b, &r, state);
     twod_free(&r);
     if (st != SC_OK)
         return st;

@@ -624,7 +624,8 @@ static int run_info(const cli_args *a)
     else
         printf("bounds: empty\n");
     if (info.flat_2d)
-        printf("2D: the slab OpenSCAD draws, 1 unit thick (z from -0.5 to 0.5)\n");
+        printf("2D: drawn flat at z = 0, as OpenSCAD's render draws it; measured as the "
+               "slab its preview draws, 1 unit thick (z from -0.5 to 0.5)\n");
     sc_scene_release(scene);
     return 0;
 }

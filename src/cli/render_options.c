@@ -200,7 +200,7 @@ int cli_apply_preview_option(sc_render_options *o, sc_view_preset *preset,
     switch (spec->id) {
     case PREVIEW_COLORSCHEME: {
         sc_error error;
-        if (sc_color_scheme_find(value, NULL, &o->scheme, &error) != SC_OK)
+        if (sc_render_options_set_scheme(o, value, NULL, &error) != SC_OK)
             return cli_usage_error("--colorscheme: %s", error.message);
         o->use_scheme = 1;
         return 0;

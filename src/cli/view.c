@@ -715,8 +715,8 @@ static void next_scheme(viewer *v)
         return;
     v->scheme_index = (v->scheme_index + 1) % v->scheme_count;
     sc_error error;
-    if (sc_color_scheme_find(v->schemes[v->scheme_index], NULL, &v->look.scheme,
-                             &error) != SC_OK) {
+    if (sc_render_options_set_scheme(&v->look, v->schemes[v->scheme_index], NULL,
+                                     &error) != SC_OK) {
         say(v, "colour scheme: %s", error.message);
         return;
     }

@@ -21,6 +21,7 @@
 #include <string.h>
 
 #include "base/error.h"
+#include "base/sized.h"
 #include "formats/file.h"
 #include "spancast/spancast.h"
 
@@ -74,11 +75,22 @@ static long parse_hex_color(const char *text)
     return v;
 }
 
-/* A scheme read from one file. */
+/* A scheme read from one file, with the two 2D colours the fixed record
+ * sc_color_scheme has no room for. */
 typedef struct scheme_entry {
     int index;
     sc_color_scheme scheme;
+    float face_2d[3], edge_2d[3];
 } scheme_entry;
+
+/* Cornfield, built in. */
+static void default_entry(scheme_entry *e)
+{
+    e->index = 1000;
+    sc_color_scheme_default(&e->scheme);
+    set_rgb(e->face_2d, 0x00bf99);
+    set_rgb(e->edge_2d, 0xff0000);
+}
 
 /* Reads the scheme file at path into *out; returns 1, or 0 when the file
  * is not a valid scheme. */
@@ -121,6 +133,8 @@ static int read_scheme(const char *path, scheme_entry *out)
             set_rgb(s->render_face_back, (unsigned)rgb[6]);
             set_rgb(s->edge, (unsigned)rgb[7]);
             set_rgb(s->crosshair, (unsigned)rgb[10]);
+            set_rgb(out->face_2d, (unsigned)rgb[5]);
+            set_rgb(out->edge_2d, (unsigned)rgb[9]);
         }
     }
     cJSON_Delete(root);
@@ -141,20 +155,18 @@ static int has_json_suffix(const char *name)
     return n > 5 && !strcmp(name + n - 5, ".json");
 }
 
-sc_status sc_color_scheme_find(const char *name, const char *folder,
-                               sc_color_scheme *scheme, sc_error *error)
+/* Finds the scheme called name in folder (sc_color_scheme_find) and copies
+ * it to *out. */
+static sc_status find_entry(const char *name, const char *folder, scheme_entry *out,
+                            sc_error *error)
 {
-    if (!name || !scheme)
-        return err_set(error, SC_ERR_ARGUMENT, NULL,
-                       "sc_color_scheme_find needs a name and a scheme");
     if (!folder)
         folder = SC_COLOR_SCHEME_FOLDER;
     scheme_entry *entries = calloc(SCHEME_MAX_FILES + 1, sizeof *entries);
     if (!entries)
         return err_nomem(error, NULL);
     size_t count = 1;
-    entries[0].index = 1000;
-    sc_color_scheme_default(&entries[0].scheme);
+    default_entry(&entries[0]);
     DIR *dir = opendir(folder);
     if (dir) {
         struct dirent *e;
@@ -179,7 +191,7 @@ sc_status sc_color_scheme_find(const char *name, const char *folder,
     qsort(entries, count, sizeof *entries, by_index);
     for (size_t k = 0; k < count; k++) {
         if (!strcmp(entries[k].scheme.name, name)) {
-            *scheme = entries[k].scheme;
+            *out = entries[k];
             free(entries);
             return SC_OK;
         }
@@ -197,4 +209,37 @@ sc_status sc_color_scheme_find(const char *name, const char *folder,
     free(entries);
     return err_set(error, SC_ERR_ARGUMENT, NULL,
                    "unknown colour scheme '%.64s' (known: %s)", name, names);
+}
+
+sc_status sc_color_scheme_find(const char *name, const char *folder,
+                               sc_color_scheme *scheme, sc_error *error)
+{
+    if (!name || !scheme)
+        return err_set(error, SC_ERR_ARGUMENT, NULL,
+                       "sc_color_scheme_find needs a name and a scheme");
+    scheme_entry found;
+    sc_status st = find_entry(name, folder, &found, error);
+    if (st == SC_OK)
+        *scheme = found.scheme;
+    return st;
+}
+
+sc_status sc_render_options_set_scheme(sc_render_options *options, const char *name,
+                                       const char *folder, sc_error *error)
+{
+    if (!name || !options)
+        return err_set(error, SC_ERR_ARGUMENT, NULL,
+                       "sc_render_options_set_scheme needs options and a name");
+    if (options->size < SIZED_MIN(sc_render_options, edge_2d))
+        return err_set(error, SC_ERR_ARGUMENT, NULL,
+                       "sc_render_options_set_scheme needs options from a header with "
+                       "edge_2d (sc_render_options_init)");
+    scheme_entry found;
+    sc_status st = find_entry(name, folder, &found, error);
+    if (st != SC_OK)
+        return st;
+    options->scheme = found.scheme;
+    memcpy(options->face_2d, found.face_2d, sizeof options->face_2d);
+    memcpy(options->edge_2d, found.edge_2d, sizeof options->edge_2d);
+    return SC_OK;
 }

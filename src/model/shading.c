@@ -43,6 +43,8 @@ void shading_free(shading *s)
     free(s->preview_swapped);
     free(s->preview_slabs.items);
     free(s->preview_renders.items);
+    free(s->flat_points);
+    free(s->flat_start);
     for (int k = 0; k < SHADING_OVERLAYS; k++) {
         free(s->overlay_slabs[k].items);
         free(s->overlay_renders[k].items);

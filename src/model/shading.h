@@ -135,6 +135,17 @@ typedef struct shading {
      * (not the preview) shows it unlit in the colour scheme's 2D face
      * colour, as OpenSCAD's render does. */
     int flat_2d;
+    /* With flat_2d, the model as OpenSCAD's render draws it: the plane its
+     * polygons lie in (world points p with n.p = d: n, d), the slab's
+     * middle, where the render sees them; their box in it, which frames
+     * them; and their outlines, which the render draws over them (world
+     * points, 3 doubles each; outline k is points flat_start[k] to
+     * flat_start[k + 1] - 1). */
+    double flat_plane[4];
+    bbox flat_box;
+    double *flat_points;
+    uint32_t *flat_start; /* flat_outlines + 1 entries when flat_outlines > 0 */
+    uint32_t flat_outlines;
 } shading;
 
 /* A record with the default material only; NULL when out of memory. */

@@ -115,6 +115,11 @@ void render_options_defaults(sc_render_options *options)
     options->spp = 1;
     options->max_depth = 5;
     sc_color_scheme_default(&options->scheme);
+    /* Cornfield's cgal-face-2d and cgal-edge-2d (ColorMap.cc) */
+    options->face_2d[0] = 0x00 / 255.0f;
+    options->face_2d[1] = 0xbf / 255.0f;
+    options->face_2d[2] = 0x99 / 255.0f;
+    options->edge_2d[0] = 1;
     options->edge_angle_deg = RENDER_DEFAULT_EDGE_ANGLE;
     options->edge_width = 1;
     options->ao_radius = RENDER_DEFAULT_AO_RADIUS;
@@ -765,7 +770,15 @@ static sc_status prepare_view(render_ctx *c, int k, const shading *look,
     st = shade_prepare(&v->shade, c->tree, look, &v->cam, options, error);
     if (st)
         return st;
-    st = overlay_prepare(&v->over, &v->cam, options->view, &options->scheme, label,
+    /* a 2D model's outlines, which OpenSCAD's render draws over it */
+    overlay_outlines outlines = {NULL, NULL, 0, options->edge_2d};
+    if (v->shade.flat && look) {
+        outlines.points = look->flat_points;
+        outlines.start = look->flat_start;
+        outlines.count = look->flat_outlines;
+    }
+    st = overlay_prepare(&v->over, &v->cam, options->view, &options->scheme,
+                         outlines.count ? &outlines : NULL, label,
                          options->sheet_count > 0, error);
     if (st) {
         shade_release(&v->shade);
@@ -912,6 +925,9 @@ sc_status render_scene(const csg_tree *tree, const shading *look,
     for (int k = 0; k < 3; k++)
         c.edge_color[k] = color_srgb_to_linear(options->scheme.edge[k]);
     bbox bounds = tree->root == CSG_EMPTY ? bbox_empty() : tree->bounds;
+    /* OpenSCAD's render frames a 2D model by its flat polygons */
+    if (!options->preview && look && look->flat_2d && look->flat_outlines)
+        bounds = look->flat_box;
     /* The preview frames its modifier parts too, as OpenSCAD's does, and
      * the boxes OpenSCAD's products have. */
     const shading_slabs *slabs =

@@ -301,11 +301,12 @@ sc_status shade_prepare(shade_scene *s, const csg_tree *tree, const shading *loo
     s->scheme_faces = o->use_scheme || o->preview;
     /* A 2D model in the render: OpenSCAD's render draws a 2D result
      * without lighting, in CGAL_FACE_2D_COLOR where the file gives no
-     * colour (Cornfield's #00bf99, ColorMap.cc), on both sides. */
-    static const float face_2d[3] = {0x00 / 255.0f, 0xbf / 255.0f, 0x99 / 255.0f};
+     * colour, on both sides. */
     s->flat = look && look->flat_2d && !o->preview;
-    if (s->flat)
-        scheme_front = scheme_back = face_2d;
+    if (s->flat) {
+        scheme_front = scheme_back = o->face_2d;
+        memcpy(s->flat_plane, look->flat_plane, sizeof s->flat_plane);
+    }
     for (uint32_t i = 0; i < tree->leaf_count; i++) {
         const float *c = tree->leaves[i].color;
         int plain = (s->scheme_faces || s->flat) && is_default_color(c);
@@ -469,11 +470,48 @@ static int section_interval(const shade_scene *s, const csg_ray *ray, double *ta
     return *ta < *tb;
 }
 
+/* shade_first_hit for a 2D model in the render (flat): the point where
+ * the ray crosses the plane of its polygons, when the slab holds it (the
+ * polygons' inside) and the sections keep it; a cap with the plane's
+ * normal turned to the ray. */
+static int flat_first_hit(const shade_scene *s, shade_thread *th, const csg_ray *ray,
+                          shade_hit *hit)
+{
+    vec3 n = v3(s->flat_plane[0], s->flat_plane[1], s->flat_plane[2]);
+    double nd = v3_dot(n, ray->d);
+    double t = (s->flat_plane[3] - v3_dot(n, ray->o)) / nd;
+    double ta, tb;
+    int plane;
+    if (!(nd != 0 && section_interval(s, ray, &ta, &tb, &plane) && t >= ta && t <= tb))
+        return 0;
+    csg_ray clipped = *ray;
+    clipped.tmin = ta;
+    clipped.tmax = tb;
+    span_list spans;
+    if (!csg_spans_at(s->tree, &clipped, th->time, th->scratch, th->csg, &spans))
+        return 0;
+    for (uint32_t k = 0; k < spans.n; k++) {
+        const span *sp = &spans.v[k];
+        if (!(sp->in.t <= t && t <= sp->out.t))
+            continue;
+        hit->cap = 1;
+        hit->cap_normal = nd < 0 ? n : v3_neg(n);
+        hit->hit.t = t;
+        hit->hit.leaf = sp->in.leaf != SPAN_NO_LEAF    ? sp->in.leaf
+                        : sp->out.leaf != SPAN_NO_LEAF ? sp->out.leaf
+                                                       : 0;
+        return 1;
+    }
+    return 0;
+}
+
 int shade_first_hit(const shade_scene *s, shade_thread *th, const csg_ray *ray,
                     shade_hit *hit)
 {
     memset(hit, 0, sizeof *hit);
     hit->time = th->time;
+    if (s->flat)
+        return flat_first_hit(s, th, ray, hit);
     if (s->section_count == 0)
         return csg_first_hit_at(s->tree, ray, th->time, th->scratch, th->csg, &hit->hit);
     double ta, tb;
@@ -723,7 +761,7 @@ void shade_ray(const shade_scene *s, shade_thread *th, const csg_ray *ray,
     vec3 below = v3_madd(p, n, -offset);
 
     double base[3];
-    if (hit->cap) {
+    if (hit->cap && !s->flat) {
         double dim = s->hatch && on_hatch(s, hit->cap_normal, p) ? 0.25 : 1.0;
         for (int k = 0; k < 3; k++)
             base[k] = dim * s->cap_color[k];

@@ -142,6 +142,7 @@ typedef struct shade_scene {
     shade_lighting lighting;
     int scheme_faces;       /* subtracted faces take leaf_back */
     int flat;               /* a 2D model in the render: unlit (shading.h) */
+    double flat_plane[4];   /* with flat, where rays see it: n, d (shading.h) */
     vec3 openscad_light[2]; /* unit directions towards OpenSCAD's lights */
     shade_section sections[SC_MAX_SECTIONS];
     int section_count;

@@ -16,10 +16,12 @@
 #   // files: NAME...                  (optional: files beside the model,
 #                                       meshes it imports, height maps, copied
 #                                       with it so relative paths resolve)
-#   // 2d: slab                        (optional: a 2D model, which spancast
-#                                       draws as a slab 1 thick about z = 0;
-#                                       the reference mesh is OpenSCAD's 2D
-#                                       result of the .csg extruded so)
+#   // 2d: flat                        (optional: a 2D model, which
+#                                       spancast's render draws flat at
+#                                       z = 0; the reference mesh is
+#                                       OpenSCAD's 2D result of the .csg
+#                                       extruded 1e-5 thick about z = 0,
+#                                       which shows its top within 5e-6)
 # compare judges each pair and prints its row; the rows also go to
 # WORKDIR/rows, which tests/crosscheck/report gathers. Exits non-zero when
 # any check fails.
@@ -51,9 +53,9 @@ done
 openscad -o "$work/$name.csg" "$work/$name.scad" >"$work/openscad.log" 2>&1 ||
     { cat "$work/openscad.log" >&2; exit 1; }
 mesh_input=$work/$name.csg
-if [[ "$(setting 2d)" == slab ]]; then
-    mesh_input=$work/${name}_slab.csg
-    { echo "linear_extrude(height = 1, center = true) {"; cat "$work/$name.csg"; echo "}"; } \
+if [[ "$(setting 2d)" == flat ]]; then
+    mesh_input=$work/${name}_flat.csg
+    { echo "linear_extrude(height = 1e-5, center = true) {"; cat "$work/$name.csg"; echo "}"; } \
         >"$mesh_input"
 fi
 t0=$(now)

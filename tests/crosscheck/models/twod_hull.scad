@@ -1,7 +1,7 @@
 // hull() of 2D shapes in a 2D model (no extrusion): OpenSCAD's convex hull
-// of the square's and the circles' polygon points, drawn as the slab.
+// of the square's and the circles' polygon points, drawn flat.
 // camera: 6,-14,24,6,2,0
-// 2d: slab
+// 2d: flat
 hull() {
     square([3, 2], center = true);
     translate([10, 4]) circle(r = 2, $fn = 24);

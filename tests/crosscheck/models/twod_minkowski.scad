@@ -1,7 +1,7 @@
 // minkowski() of a non-convex polygon and a circle in a 2D model: Clipper's
-// Minkowski sum, as OpenSCAD's applyMinkowski2D, drawn as the slab.
+// Minkowski sum, as OpenSCAD's applyMinkowski2D, drawn flat.
 // camera: 5,-12,26,5,4,0
-// 2d: slab
+// 2d: flat
 minkowski() {
     difference() {
         square([10, 8]);
