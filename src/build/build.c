@@ -1122,9 +1122,10 @@ static sc_status mark_operands(builder *b, const model_node *n, const frame *f)
 
 /* Whether OpenSCAD 2021.01's render hands the results of the nodes first
  * (a list of siblings) to CGAL: where two or more of them are operands,
- * not '%' (its applyToChildren3D is a no-op for one), or under a
- * render(), whose mesh it builds with CGAL. A mesh that is not closed is
- * left out there, and drawn as it is where nothing hands it to CGAL. */
+ * not '%' (its applyToChildren3D is a no-op for one). (Under a render(),
+ * whose mesh OpenSCAD builds with CGAL too, enter_render sets the frame's
+ * cgal.) A mesh that is not closed is left out where its result meets
+ * CGAL, and drawn as it is where nothing hands it to CGAL. */
 static int to_cgal(const model_node *first)
 {
     int operands = 0;

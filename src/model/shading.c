@@ -31,6 +31,23 @@ shading *shading_new(void)
     return s;
 }
 
+size_t shading_find_id(const void *items, size_t count, size_t stride, size_t offset,
+                       uint32_t id)
+{
+    const unsigned char *base = items;
+    size_t lo = 0, hi = count;
+    while (lo < hi) {
+        size_t mid = lo + (hi - lo) / 2;
+        uint32_t key;
+        memcpy(&key, base + mid * stride + offset, sizeof key);
+        if (key < id)
+            lo = mid + 1;
+        else
+            hi = mid;
+    }
+    return lo;
+}
+
 void shading_free(shading *s)
 {
     if (!s)

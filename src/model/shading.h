@@ -18,6 +18,7 @@
 #ifndef SPANCAST_MODEL_SHADING_H
 #define SPANCAST_MODEL_SHADING_H
 
+#include <stddef.h>
 #include <stdint.h>
 
 #include "csg/csg.h"
@@ -147,6 +148,13 @@ typedef struct shading {
     uint32_t *flat_start; /* flat_outlines + 1 entries when flat_outlines > 0 */
     uint32_t flat_outlines;
 } shading;
+
+/* The index of the first of count items (stride bytes apart, each with a
+ * uint32_t key offset bytes in, the keys ascending) whose key is at least
+ * id; count when there is none. The object id lists above are searched
+ * with it. */
+size_t shading_find_id(const void *items, size_t count, size_t stride, size_t offset,
+                       uint32_t id);
 
 /* A record with the default material only; NULL when out of memory. */
 shading *shading_new(void);

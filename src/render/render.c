@@ -71,6 +71,7 @@
 
 #include <math.h>
 #include <omp.h>
+#include <stddef.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -302,6 +303,15 @@ typedef struct layer {
 /* Most surfaces of one modifier part a sample blends. */
 #define RENDER_PART_LAYERS 16
 
+/* Whether product is one of the count in list. */
+static int seen(const uint32_t *list, int count, uint32_t product)
+{
+    for (int q = 0; q < count; q++)
+        if (list[q] == product)
+            return 1;
+    return 0;
+}
+
 /* Walks the surfaces of s along ray from its first hit (hit; none when
  * !found) up to the ray's tmax, front to back, and keeps in out (at most
  * max) those OpenSCAD's preview draws (see the file's comment): of a
@@ -325,16 +335,12 @@ static int walk_layers(const render_ctx *c, const shade_scene *s, shade_thread *
         else if (s->leaf_whole[hit.hit.leaf]) {
             /* a lone leaf or render(): its rear faces, and its front faces
              * before the depth its nearest rear face leaves */
-            int behind = 0;
-            for (int q = 0; q < rear_count && !behind; q++)
-                behind = rear[q] == product;
+            int behind = seen(rear, rear_count, product);
             draw = hit.hit.exiting || !behind;
             if (hit.hit.exiting && !behind)
                 rear[rear_count++] = product;
         } else {
-            draw = !hit.hit.exiting;
-            for (int q = 0; q < drawn_count && draw; q++)
-                draw = drawn[q] != product;
+            draw = !hit.hit.exiting && !seen(drawn, drawn_count, product);
             if (draw)
                 drawn[drawn_count++] = product;
         }
@@ -847,14 +853,10 @@ static sc_status preview_bounds(const csg_tree *t, const shading_slabs *slabs, b
         if (n->op == CSG_LEAF) {
             box[i] = n->bounds;
             uint32_t id = t->leaves[n->leaf].object_id;
-            size_t lo = 0, hi = slabs ? slabs->count : 0; /* the first at or past id */
-            while (lo < hi) {
-                size_t mid = lo + (hi - lo) / 2;
-                if (slabs->items[mid].object < id)
-                    lo = mid + 1;
-                else
-                    hi = mid;
-            }
+            size_t lo =
+                slabs ? shading_find_id(slabs->items, slabs->count, sizeof *slabs->items,
+                                        offsetof(shading_slab, object), id)
+                      : 0;
             if (slabs && lo < slabs->count && slabs->items[lo].object == id)
                 box[i] = slabs->items[lo].flat;
             continue;

@@ -14,6 +14,7 @@
 #include "render/shade.h"
 
 #include <math.h>
+#include <stddef.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -154,14 +155,7 @@ static void swap_render_faces(shade_scene *s, const csg_tree *tree, const shadin
     size_t count = look->preview_swapped_count;
     for (uint32_t i = 0; i < tree->leaf_count && count; i++) {
         uint32_t id = tree->leaves[i].object_id;
-        size_t lo = 0, hi = count; /* the first of ids at or past id */
-        while (lo < hi) {
-            size_t mid = lo + (hi - lo) / 2;
-            if (ids[mid] < id)
-                lo = mid + 1;
-            else
-                hi = mid;
-        }
+        size_t lo = shading_find_id(ids, count, sizeof *ids, 0, id);
         if (lo == count || ids[lo] != id)
             continue;
         for (int k = 0; k < 3; k++) {
@@ -176,15 +170,11 @@ static void swap_render_faces(shade_scene *s, const csg_tree *tree, const shadin
  * renders->count. */
 static size_t render_of(const shading_renders *renders, uint32_t id)
 {
-    size_t lo = 0, hi = renders->count; /* the first that starts past id */
-    while (lo < hi) {
-        size_t mid = lo + (hi - lo) / 2;
-        if (renders->items[mid].first <= id)
-            lo = mid + 1;
-        else
-            hi = mid;
-    }
-    return lo && id < renders->items[lo - 1].end ? lo - 1 : renders->count;
+    size_t k = shading_find_id(renders->items, renders->count, sizeof *renders->items,
+                               offsetof(shading_ids, first), id);
+    if (k < renders->count && renders->items[k].first == id)
+        return k;
+    return k && id < renders->items[k - 1].end ? k - 1 : renders->count;
 }
 
 sc_status shade_mark_renders(shade_scene *s, const shading_renders *renders,
