@@ -111,6 +111,15 @@ printf 'module m() child(0);\nm() cube(1);\n' >deprecated.scad
 warns_with deprecated.scad "deprecated.scad: warning: child() will be removed in future releases. Use children() instead."
 printf 'cube(1);\nfoo();\n' >unknown.scad
 warns_with unknown.scad "unknown.scad:2:1: warning: Ignoring unknown module 'foo'"
+# A use <font.ttf> of a file that is not there: OpenSCAD logs an error,
+# goes on with fontconfig's match for the font's name and renders the
+# model, so spancast warns and renders (with --strict, OpenSCAD's first
+# warning is the error).
+printf 'use <nofont.ttf>\ntext("Ab", font = "Liberation Sans");\n' >nofont.scad
+warns_with nofont.scad "nofont.scad: warning: Can't open library 'nofont.ttf'.
+nofont.scad: warning: Can't read font with path 'nofont.ttf'"
+rm -f nofont.scad.png
+fails_with nofont.scad "nofont.scad: error: Can't open library 'nofont.ttf'." --strict
 
 # An empty model warns (the render goes on, as OpenSCAD's image export).
 printf 'foo();\n' >onlyunknown.scad

@@ -310,7 +310,8 @@ static int said_before(source_lines *at, const sc_error *w)
  * decides, not only its exit status (failed: it exited non-zero). Each
  * "WARNING: " or "DEPRECATED: " line is printed on stderr as a compiler's
  * warning, at OpenSCAD's position when the line has one, else against
- * path (the render goes on, as OpenSCAD's does). The first "ERROR: " line becomes the
+ * path (the render goes on, as OpenSCAD's does), and so is an "ERROR: "
+ * line of lenient_errors. The first other "ERROR: " line becomes the
  * error (with strict, the first "WARNING: " line too, as OpenSCAD's
  * --hardwarnings makes it one; nothing after it is printed), at its
  * position when it has one, else against path; a failure without an
@@ -318,6 +319,20 @@ static int said_before(source_lines *at, const sc_error *w)
  * the working directory reaches them (place_other), the source as the
  * user named it, and the -D settings as such (place_position). Returns SC_OK when
  * OpenSCAD reported no error. */
+/* OpenSCAD 2021.01's errors that stop nothing: it logs them and goes on
+ * evaluating the file, and renders the model. A use <font.ttf> of a file
+ * that is not there (FileModule::registerUse) leaves the font unregistered,
+ * and text() falls back to fontconfig's match for the font's name. */
+static const char *const lenient_errors[] = {"Can't read font with path "};
+
+static int is_lenient_error(const char *text)
+{
+    for (size_t k = 0; k < sizeof lenient_errors / sizeof lenient_errors[0]; k++)
+        if (!strncmp(text, lenient_errors[k], strlen(lenient_errors[k])))
+            return 1;
+    return 0;
+}
+
 static sc_status openscad_log(const char *log_path, source_lines *at, int failed,
                               int strict, sc_error *error)
 {
@@ -333,6 +348,12 @@ static sc_status openscad_log(const char *log_path, source_lines *at, int failed
                 line[--n] = 0;
             int is_error = !strncmp(line, "ERROR: ", 7) && line[7];
             int is_warning = !strncmp(line, "WARNING: ", 9) && line[9];
+            size_t skip = is_error ? 7 : 9; /* the text after the tag */
+            if (is_error &&
+                is_lenient_error(line + 7)) { /* a warning, as its effect is */
+                is_error = 0;
+                is_warning = 1;
+            }
             /* OpenSCAD's notes of a deprecated form are warnings that
              * --hardwarnings leaves alone. */
             int is_deprecated = !strncmp(line, "DEPRECATED: ", 12) && line[12];
@@ -342,7 +363,7 @@ static sc_status openscad_log(const char *log_path, source_lines *at, int failed
                 fprintf(stderr, "%s\n", line);
                 continue;
             }
-            const char *text = line + (is_error ? 7 : is_warning ? 9 : 12);
+            const char *text = line + (is_error || is_warning ? skip : 12);
             if (!first[0] && (is_error || (strict && is_warning))) {
                 snprintf(first, sizeof first, "%s", text);
                 status = is_error ? SC_ERR_SYNTAX : SC_ERR_SEMANTIC;
