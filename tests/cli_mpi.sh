@@ -69,6 +69,14 @@ if command -v openscad >/dev/null; then
     mpi 2 "$bin" render b.scad -o scad-np2.png --imgsize=64,48 -q >out.txt 2>&1 ||
         fail ".scad on 2 ranks: $(tail -n 5 out.txt)"
     cmp -s scad-one.png scad-np2.png || fail "the .scad render on 2 ranks differs"
+    # A font the .scad uses (use <font.ttf>) is registered on every rank.
+    check
+    mkdir -p fonts && cp "$src/tests/data/fonts/marvosym.ttf" fonts/
+    printf 'use <fonts/marvosym.ttf>\ntext("0123 AB", font = "MarVoSym", size = 10);\n' >sym.scad
+    "$bin" render sym.scad -o sym-one.png --imgsize=64,48 -q || fail "plain sym.scad render"
+    mpi 2 "$bin" render sym.scad -o sym-np2.png --imgsize=64,48 -q >out.txt 2>&1 ||
+        fail "sym.scad on 2 ranks: $(tail -n 5 out.txt)"
+    cmp -s sym-one.png sym-np2.png || fail "the font's render on 2 ranks differs"
 fi
 
 # A model that does not load: its message once, a failure exit, no file.

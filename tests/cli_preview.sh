@@ -300,6 +300,20 @@ compare_scene flat_cut "$flat_scene" --camera=20,-30,25,4,2,0
 os_mode=(--render --colorscheme=Solarized)
 sc_mode=(--colorscheme=Solarized)
 compare_scene flat_solarized "$flat_scene"
+# A font file the .scad uses (use <font.ttf>) is registered, as OpenSCAD
+# registers it, so that text() draws it: MarVoSym, a symbol font no Debian
+# package installs (tests/data/fonts), rendered from the .scad by both.
+mkdir -p fonts && cp "$src/tests/data/fonts/marvosym.ttf" fonts/
+printf 'use <fonts/marvosym.ttf>\ntext("0123 AB", font = "MarVoSym", size = 10);\n' >symbol.scad
+check
+openscad_png --render -o os_symbol.png --imgsize=160,120 symbol.scad
+"$bin" render symbol.scad -o sc_symbol.png -q --imgsize=160,120 --faithful \
+    --lighting=openscad --colorscheme=Cornfield 2>symbol_err.txt || fail "symbol.scad: spancast failed"
+[ -s symbol_err.txt ] && fail "symbol.scad: $(cat symbol_err.txt)"
+differ=$(idiff -fail 0.004 os_symbol.png sc_symbol.png 2>&1 |
+    grep -Eo '[0-9]+ pixels .* over 0\.004' | grep -Eo '^[0-9]+')
+[ "${differ:-0}" -le "$limit" ] ||
+    fail "symbol.scad: $differ pixels differ from OpenSCAD's render"
 
 echo "$checks checks, $fails failures"
 [ "$fails" = 0 ]

@@ -74,6 +74,40 @@ static void extent(const text_shape *s, double *x0, double *x1, double *y0, doub
             }
 }
 
+/* sc_font_register, as OpenSCAD's use <font.ttf>: MarVoSym (a symbol font
+ * no Debian package installs, tests/data/fonts) is not found by name
+ * before it, and laid out from its own glyphs after it, its characters
+ * below 0x100 taken from the 0xf000 page, where its symbol charmap has
+ * them (OpenSCAD's FreetypeRenderer): glyphs with outlines of another
+ * width, and no warning. */
+static void test_registered_font(void **state)
+{
+    (void)state;
+    static const char node[] = "text(text = \"0A\", font = \"MarVoSym\");";
+    laid before;
+    lay_out(&before, node);
+    assert_non_null(strstr(before.note.message, "'MarVoSym' was not found"));
+    sc_error e;
+    assert_int_equal(sc_font_register(NULL, &e), SC_ERR_ARGUMENT);
+    assert_int_equal(
+        sc_font_register(SPANCAST_SOURCE_DIR "/tests/data/fonts/OFL.txt", &e), SC_ERR_IO);
+    assert_int_equal(
+        sc_font_register(SPANCAST_SOURCE_DIR "/tests/data/fonts/marvosym.ttf", &e),
+        SC_OK);
+    laid after;
+    lay_out(&after, node);
+    assert_string_equal(after.note.message, "");
+    assert_int_equal(after.shape.glyph_count, 2);
+    for (uint32_t g = 0; g < 2; g++) /* both glyphs have outlines */
+        assert_true(after.shape.glyph_start[g + 1] > after.shape.glyph_start[g]);
+    double b0, b1, a0, a1, y0, y1;
+    extent(&before.shape, &b0, &b1, &y0, &y1);
+    extent(&after.shape, &a0, &a1, &y0, &y1);
+    assert_true(fabs((a1 - a0) - (b1 - b0)) > 0.05 * (b1 - b0)); /* another font */
+    done(&before);
+    done(&after);
+}
+
 /* halign = "right" shifts by the whole advance width: the first glyph's
  * offset is minus the width (its own HarfBuzz offset is 0 here). */
 static double width_of(const char *text)
@@ -536,6 +570,7 @@ static void test_long_and_fonts(void **state)
 int main(void)
 {
     const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_registered_font),
         cmocka_unit_test(test_kerning_and_alignment),
         cmocka_unit_test(test_outlines_close),
         cmocka_unit_test(test_glyph_spans_match_inside),

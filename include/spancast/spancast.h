@@ -165,6 +165,14 @@ typedef struct sc_load_options {
     int no_preview;
 } sc_load_options;
 
+/* Makes the font file at path (.ttf, .otf) one that text() finds by its
+ * family name in every later load of this process, as OpenSCAD's
+ * use <font.ttf> registers it (fontconfig's application fonts): the spancast
+ * tool registers the fonts a .scad uses before it loads the model.
+ * SC_ERR_ARGUMENT for a NULL path; SC_ERR_IO when the text plugin does not
+ * load or fontconfig cannot read the file. Thread safe. */
+sc_status sc_font_register(const char *path, sc_error *error);
+
 /* Sets size and the defaults (faithful 0, strict 0, max_triangles 0,
  * threads 0, openscad_export 0, no_preview 0). Never fails. */
 void sc_load_options_init_size(sc_load_options *options, size_t size);

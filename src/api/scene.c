@@ -24,6 +24,7 @@
 #include "base/mem.h"
 #include "base/sized.h"
 #include "build/build.h"
+#include "build/build_text.h"
 #include "model/model.h"
 #include "syntax/parse.h"
 
@@ -116,6 +117,13 @@ static sc_status load(const char *name, const char *text, size_t length, char *o
     }
     *scene = s;
     return SC_OK;
+}
+
+sc_status sc_font_register(const char *path, sc_error *error)
+{
+    if (!path)
+        return err_set(error, SC_ERR_ARGUMENT, NULL, "sc_font_register needs a path");
+    return text_register_font(path, error);
 }
 
 sc_status sc_scene_load_string(const char *name, const char *text, size_t length,

@@ -50,6 +50,7 @@
 
 #include <ctype.h>
 #include <math.h>
+#include <pthread.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -140,6 +141,31 @@ static sc_status build_shape(const build_ctx *c, const model_node *n, text_shape
     if (st != SC_OK)
         text_shape_free(out);
     return st;
+}
+
+sc_status text_register_font(const char *path, sc_error *error)
+{
+    static pthread_mutex_t lock = PTHREAD_MUTEX_INITIALIZER;
+    static void *pinned; /* the plugin's handle, never released */
+    static const char *const names[] = {"spancast_text_register"};
+    char why[512] = "";
+    void *fn = NULL, *handle = NULL;
+    if (!plugin_load(TEXT_PLUGIN_FILE, "text", names, 1, &fn, &handle, why, sizeof why))
+        return err_set(error, SC_ERR_IO, NULL, "text: %s", why);
+    text_register_fn *add;
+    /* A function pointer from dlsym: POSIX guarantees the conversion. */
+    *(void **)&add = fn;
+    pthread_mutex_lock(&lock);
+    sc_status st = add(path, why, sizeof why);
+    if (!pinned) {
+        pinned = handle;
+        handle = NULL;
+    }
+    pthread_mutex_unlock(&lock);
+    plugin_unload(&handle);
+    if (st != SC_OK)
+        return err_set(error, st, NULL, "%s", why);
+    return SC_OK;
 }
 
 sc_status text_shape_build(const build_ctx *c, const model_node *n, text_shape *out,

@@ -41,6 +41,13 @@ sc_status text_shape_build(const build_ctx *c, const model_node *n, text_shape *
                            sc_error *note);
 void text_shape_free(text_shape *s);
 
+/* Registers the font file at path with the text plugin's fontconfig
+ * (text_register_fn), for every later text() of the process; the plugin
+ * then stays loaded, as the registration lives in it. Thread safe.
+ * SC_ERR_IO when the plugin does not load or fontconfig cannot read the
+ * file. */
+sc_status text_register_font(const char *path, sc_error *error);
+
 /* OpenSCAD's polygons of a text node into out (initialised; replaced), in
  * its 2D frame: the curves flattened as its DrawingCallback does, each
  * glyph's contours oriented so that outlines run counter-clockwise and

@@ -30,4 +30,10 @@
 typedef sc_status text_layout_fn(const model_text *a, text_shape *out, char *note,
                                  size_t note_size, char *err, size_t err_size);
 
+/* spancast_text_register: adds the font file at path to fontconfig's
+ * configuration of the process (its application fonts), so that later
+ * layouts find it by its family name. Returns SC_OK, or SC_ERR_IO with a
+ * message in err when fontconfig cannot read it. */
+typedef sc_status text_register_fn(const char *path, char *err, size_t err_size);
+
 #endif

@@ -171,6 +171,9 @@ sc_status dist_load(const char *path, const sc_load_options *options, sc_scene *
         return (sc_status)head[0];
     }
     if (rank != 0) {
+        /* the fonts rank 0's conversion registered, each rank for itself */
+        if (scad_is_source(path))
+            scad_register_fonts(path);
         size = (size_t)head[1];
         text = malloc(size + 1);
         if (!text) /* this rank cannot take part: MPI_Abort ends the job */

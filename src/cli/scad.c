@@ -45,6 +45,8 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <strings.h>
+#include <sys/stat.h>
 #include <sys/wait.h>
 #include <time.h>
 #include <unistd.h>
@@ -689,6 +691,30 @@ sc_status scad_load_files(const char *path, const sc_load_options *options,
     return convert_and_load(path, NULL, options, scene, error, depend, user, stop);
 }
 
+/* A font the source uses (use <NAME.ttf> or .otf, any case), as scan_file
+ * names it: registered when it is a file, as OpenSCAD registers it
+ * (FileModule::registerUse), so that text() finds it by its family name.
+ * One that is not there is OpenSCAD's error, which openscad_log has told
+ * as a warning; one that fontconfig cannot read is OpenSCAD's message. */
+static void register_font(void *user, const char *file)
+{
+    (void)user;
+    size_t n = strlen(file);
+    if (n < 4 || (strcasecmp(file + n - 4, ".ttf") && strcasecmp(file + n - 4, ".otf")))
+        return;
+    struct stat st;
+    if (stat(file, &st) != 0 || !S_ISREG(st.st_mode))
+        return;
+    sc_error e;
+    if (sc_font_register(file, &e) != SC_OK)
+        fprintf(stderr, "%s: warning: %s\n", file, e.message);
+}
+
+void scad_register_fonts(const char *path)
+{
+    scan_uses(path, register_font, NULL);
+}
+
 /* Whether the -D setting d (NAME=VALUE) sets $preview. */
 static int sets_preview(const char *d)
 {
@@ -787,6 +813,8 @@ static sc_status convert(const char *path, const double *time,
         read_depends(deps, depend, user);
     else if (st != SC_ERR_CANCELLED && depend)
         scan_uses(source, depend, user);
+    if (st == SC_OK)
+        scad_register_fonts(source);
     if (st == SC_OK) {
         const char *why;
         *text = file_read(csg, SIZE_MAX / 2, size, &why);

@@ -13,6 +13,13 @@ int scad_is_source(const char *path);
  * the commands take as the model import(file = path). */
 int scad_is_mesh(const char *path);
 
+/* Registers the font files the OpenSCAD source at path uses (use
+ * <NAME.ttf> or .otf, in it or in a file it uses or includes, named from
+ * that file's folder) with sc_font_register, as OpenSCAD registers them,
+ * for every later load of the process; each conversion does it. A font
+ * fontconfig cannot read is a warning on stderr. */
+void scad_register_fonts(const char *path);
+
 /* Takes every -D NAME=VALUE (or -DNAME=VALUE) out of argv, before the
  * command reads it, for every conversion with OpenSCAD of this process
  * (OpenSCAD's -D, passed on in order). Called once, before any command

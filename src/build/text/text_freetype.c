@@ -6,7 +6,8 @@
  * printing; build_text.c adds the node's position.
  *
  * fontconfig's configuration is its own (the process's default, built on
- * first use); the FreeType library and face live for one node's layout.
+ * first use), with the font files spancast_text_register adds to it; the
+ * FreeType library and face live for one node's layout.
  */
 #include <ctype.h>
 #include <math.h>
@@ -20,6 +21,7 @@
 #include FT_FREETYPE_H
 #include FT_GLYPH_H
 #include FT_OUTLINE_H
+#include FT_TRUETYPE_IDS_H
 #include <hb-ft.h>
 #include <hb.h>
 
@@ -67,6 +69,50 @@ static void put_note(layout_ctx *c, const char *format, const char *x, const cha
 }
 
 /* ---- font lookup ---- */
+
+/* Whether the face's charmap is a Windows symbol font's, with its
+ * characters at 0xf000 and above, the Private Use Area of Unicode
+ * (OpenSCAD's FontCache::is_windows_symbol_font). */
+static int is_windows_symbol_font(FT_Face face)
+{
+    if (!face->charmap || face->charmap->platform_id != TT_PLATFORM_MICROSOFT ||
+        face->charmap->encoding_id != TT_MS_ID_SYMBOL_CS)
+        return 0;
+    FT_UInt glyph;
+    FT_ULong first = FT_Get_First_Char(face, &glyph);
+    return glyph != 0 && first >= 0xf000;
+}
+
+/* Sets the first charmap of the face for platform and encoding (-1: any). */
+static int try_charmap(FT_Face face, int platform, int encoding)
+{
+    for (int k = 0; k < face->num_charmaps; k++) {
+        FT_CharMap m = face->charmaps[k];
+        if (m->platform_id == platform && (encoding < 0 || m->encoding_id == encoding) &&
+            FT_Set_Charmap(face, m) == 0)
+            return 1;
+    }
+    return 0;
+}
+
+/* The face's charmap as OpenSCAD 2021.01 chooses it (FontCache::find_face):
+ * Unicode, else the first of a list that ends with symbol and 8-bit
+ * charmaps. */
+static void choose_charmap(FT_Face face)
+{
+    static const int order[][2] = {{TT_PLATFORM_MICROSOFT, TT_MS_ID_UNICODE_CS},
+                                   {TT_PLATFORM_ISO, TT_ISO_ID_10646},
+                                   {TT_PLATFORM_APPLE_UNICODE, -1},
+                                   {TT_PLATFORM_MICROSOFT, TT_MS_ID_SYMBOL_CS},
+                                   {TT_PLATFORM_MACINTOSH, TT_MAC_ID_ROMAN},
+                                   {TT_PLATFORM_ISO, TT_ISO_ID_8859_1},
+                                   {TT_PLATFORM_ISO, TT_ISO_ID_7BIT_ASCII}};
+    if (FT_Select_Charmap(face, FT_ENCODING_UNICODE) == 0)
+        return;
+    for (size_t k = 0; k < sizeof order / sizeof order[0]; k++)
+        if (try_charmap(face, order[k][0], order[k][1]))
+            return;
+}
 
 /* Opens the face fontconfig matches for name (OpenSCAD's find_face); on a
  * family fontconfig does not have, leaves a warning in note. */
@@ -119,7 +165,7 @@ static sc_status open_face(layout_ctx *c, FT_Library lib, const char *font, FT_F
     } else if (FT_New_Face(lib, (const char *)file, index, face) != 0) {
         st = fail(c, SC_ERR_IO, "text: cannot open font file '%s'", (const char *)file);
     } else {
-        FT_Select_Charmap(*face, FT_ENCODING_UNICODE);
+        choose_charmap(*face);
         if (wanted_copy) {
             int same = 0;
             FcChar8 *family = NULL;
@@ -138,6 +184,17 @@ static sc_status open_face(layout_ctx *c, FT_Library lib, const char *font, FT_F
     free(wanted_copy);
     free(name);
     return st;
+}
+
+sc_status spancast_text_register(const char *path, char *err, size_t err_size);
+
+sc_status spancast_text_register(const char *path, char *err, size_t err_size)
+{
+    if (!FcConfigAppFontAddFile(NULL, (const FcChar8 *)path)) {
+        snprintf(err, err_size, "Can't register font '%s'", path);
+        return SC_ERR_IO;
+    }
+    return SC_OK;
 }
 
 /* ---- outlines ---- */
@@ -302,6 +359,15 @@ static sc_status shape_text(layout_ctx *c, const model_text *a, FT_Face face,
     hb_buffer_set_script(buf, script);
     hb_buffer_set_language(buf, hb_language_from_string(a->language, -1));
     hb_buffer_add_utf8(buf, a->text, (int)a->length, 0, (int)a->length);
+    if (is_windows_symbol_font(face)) {
+        /* OpenSCAD moves the characters below 0x100 to the 0xf000 page,
+         * where a symbol font has them; the rest stay (FreetypeRenderer) */
+        unsigned n = 0;
+        hb_glyph_info_t *in = hb_buffer_get_glyph_infos(buf, &n);
+        for (unsigned i = 0; i < n; i++)
+            if (in[i].codepoint < 0x100)
+                in[i].codepoint += 0xf000;
+    }
     hb_shape(font, buf, NULL, 0);
     unsigned count = 0;
     hb_glyph_info_t *info = hb_buffer_get_glyph_infos(buf, &count);
