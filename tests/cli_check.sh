@@ -84,8 +84,19 @@ check
 [ "$(cat err.txt)" = "spancast: note: flat.csg is a 2D model, measured as the slab OpenSCAD's preview draws it: 1 unit thick (z from -0.5 to 0.5), so its volume is its area" ] ||
     fail "2D measure: note '$(cat err.txt)'"
 run 0 flat_info.txt info flat.csg
-grep -qx "2D: drawn flat at z = 0, as OpenSCAD's render draws it; measured as the slab its preview draws, 1 unit thick (z from -0.5 to 0.5)" flat_info.txt ||
+grep -qx "2D: drawn flat at z = 0, as OpenSCAD's render draws it; measured as the slab its preview draws: 1 unit thick (z from -0.5 to 0.5), so its volume is its area" flat_info.txt ||
     fail "2D info: $(cat flat_info.txt)"
+# Past 1e6 across the slab is 1e-6 of the model's size thick: the note
+# and info say how thick, and the volume is that times the area.
+printf 'square(size = [1e7, 5e6]);\n' >flat_big.csg
+run 0 flat_big.txt measure flat_big.csg -q
+grep -q '^volume  *5e+14 +- ' flat_big.txt || fail "big 2D measure: $(cat flat_big.txt)"
+check
+[ "$(cat err.txt)" = "spancast: note: flat_big.csg is a 2D model, measured as the slab OpenSCAD's preview draws it: 10 thick (z from -5 to 5, 1e-6 of its size past 1e6 across), so its volume is 10 times its area" ] ||
+    fail "big 2D measure: note '$(cat err.txt)'"
+run 0 flat_big_info.txt info flat_big.csg
+grep -q "its preview draws: 10 thick (z from -5 to 5," flat_big_info.txt ||
+    fail "big 2D info: $(cat flat_big_info.txt)"
 run 0 solid_info.txt info drilled.csg
 grep -q '^2D' solid_info.txt && fail "info of a solid says 2D"
 

@@ -91,6 +91,11 @@ static void test_registered_font(void **state)
     assert_int_equal(sc_font_register(NULL, &e), SC_ERR_ARGUMENT);
     assert_int_equal(
         sc_font_register(SPANCAST_SOURCE_DIR "/tests/data/fonts/OFL.txt", &e), SC_ERR_IO);
+    assert_non_null(strstr(e.message, "OFL.txt': not a font fontconfig can read"));
+    assert_int_equal(
+        sc_font_register(SPANCAST_SOURCE_DIR "/tests/data/fonts/none.ttf", &e),
+        SC_ERR_IO);
+    assert_non_null(strstr(e.message, "none.ttf': No such file or directory"));
     assert_int_equal(
         sc_font_register(SPANCAST_SOURCE_DIR "/tests/data/fonts/marvosym.ttf", &e),
         SC_OK);

@@ -137,7 +137,9 @@ static void test_set_scheme(void **state)
     check_rgb(o.face_2d, 0x00bf99);
     check_rgb(o.edge_2d, 0xff0000);
     sc_error e;
+    assert_int_equal(o.use_scheme, 0);
     assert_int_equal(sc_render_options_set_scheme(&o, "Alpha", folder, &e), SC_OK);
+    assert_int_equal(o.use_scheme, 1);
     assert_string_equal(o.scheme.name, "Alpha");
     check_rgb(o.scheme.background, 0x112233);
     check_rgb(o.face_2d, 0x0a0b0c);

@@ -430,7 +430,8 @@ static void test_no_preview(void **state)
 /* A 2D model in the render, as OpenSCAD's render draws a 2D result: flat
  * at z = 0 in colour, mask and depth, unlit in the options' 2D face
  * colour, its outlines (the hole's too) 2 pixels wide in the 2D edge
- * colour over it; its preview is the slab 1 thick, lit, without them. */
+ * colour over it, and an axis in its plane over them; its preview is the slab 1
+ * thick, lit, without them. */
 static void test_flat_2d(void **state)
 {
     (void)state;
@@ -464,6 +465,22 @@ static void test_flat_2d(void **state)
     }
     assert_true(fabs(display(slab, outer, 0) - edge[0]) > 0.1);
     assert_true(fabs(display(slab, inside, 2) - face[2]) > 0.05);
+    /* The x axis lies in the polygons' plane: OpenSCAD draws the axes
+     * first and the polygons after with GL_LESS, so it stays over them (in
+     * Cornfield's black), on one of the two rows beside y = 0. */
+    o.preview = 0;
+    o.view = SC_VIEW_AXES;
+    sc_framebuffer *axes = render_options(text, &o);
+    for (double x = 8; x <= 12; x += 2) {
+        size_t above = pixel_at(x, 0.25 * px), below = pixel_at(x, -0.25 * px);
+        double a = 0, b = 0;
+        for (int k = 0; k < 3; k++) {
+            a += display(axes, above, k);
+            b += display(axes, below, k);
+        }
+        assert_true(fmin(a, b) < 0.05);
+    }
+    sc_framebuffer_release(axes);
     sc_framebuffer_release(flat);
     sc_framebuffer_release(slab);
 }

@@ -455,7 +455,9 @@ void sc_render_options_init_size(sc_render_options *options, size_t size);
 
 /* Sets options->scheme and the scheme's 2D colours (options->face_2d and
  * edge_2d, which the fixed record sc_color_scheme has no room for) to the
- * scheme called name, found as sc_color_scheme_find finds it. Options
+ * scheme called name, found as sc_color_scheme_find finds it, and sets
+ * use_scheme, so that the render is the scheme's, as --colorscheme makes
+ * it. Options
  * from a header without edge_2d are SC_ERR_ARGUMENT. On failure options is
  * left as it was. Reads the folder's files; thread safe. */
 sc_status sc_render_options_set_scheme(sc_render_options *options, const char *name,

@@ -319,15 +319,17 @@ static int run_measure(check_args *a)
     sc_scene_info info;
     sc_scene_info_init(&info);
     sc_scene_get_info(scene, &info, NULL);
+    char slab[160] = "";
+    if (info.flat_2d)
+        cli_slab_words(scene, slab, sizeof slab);
     sc_scene_release(scene);
     /* the numbers below are the slab's: say so, quiet or not */
     if (st == SC_OK && info.flat_2d)
         fprintf(
             stderr,
             "spancast: note: %s is a 2D model, measured as the slab OpenSCAD's preview "
-            "draws it: 1 unit thick (z from -0.5 to 0.5), so its volume is its "
-            "area\n",
-            a->inputs[0]);
+            "draws it: %s\n",
+            a->inputs[0], slab);
     if (st)
         return call_failed(&error,
                            st == SC_ERR_ARGUMENT ? CLI_EXIT_USAGE : CLI_EXIT_FAILED);

@@ -26,6 +26,12 @@ void cli_print_help(FILE *out, const char *command);
 /* Prints a library error, with its source position when it has one. */
 void cli_print_error(const sc_error *error);
 
+/* The thickness of a 2D model's slab in words, from its bounds: "1 unit
+ * thick (z from -0.5 to 0.5), so its volume is its area", or, for a model
+ * past 1e6 across, drawn thicker so that the rays still find it, the
+ * thickness it has and the factor from its area to its volume. */
+void cli_slab_words(const sc_scene *scene, char *out, size_t size);
+
 /* A whole string as a finite number: 1, or 0 when it is not one.
  * (render_options.c) */
 int cli_parse_number(const char *s, double *out);

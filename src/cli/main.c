@@ -623,9 +623,13 @@ static int run_info(const cli_args *a)
                hi[1], hi[2]);
     else
         printf("bounds: empty\n");
-    if (info.flat_2d)
+    if (info.flat_2d) {
+        char slab[160];
+        cli_slab_words(scene, slab, sizeof slab);
         printf("2D: drawn flat at z = 0, as OpenSCAD's render draws it; measured as the "
-               "slab its preview draws, 1 unit thick (z from -0.5 to 0.5)\n");
+               "slab its preview draws: %s\n",
+               slab);
+    }
     sc_scene_release(scene);
     return 0;
 }
@@ -975,6 +979,24 @@ static int run_view(char **argv)
 }
 
 /* ---- shared with the query commands (cli.h) ---- */
+
+void cli_slab_words(const sc_scene *scene, char *out, size_t size)
+{
+    double lo[3], hi[3];
+    if (!sc_scene_bounds(scene, lo, hi)) {
+        snprintf(out, size, "empty");
+        return;
+    }
+    double thick = hi[2] - lo[2];
+    if (thick == 1)
+        snprintf(out, size, "1 unit thick (z from %g to %g), so its volume is its area",
+                 lo[2], hi[2]);
+    else
+        snprintf(out, size,
+                 "%g thick (z from %g to %g, 1e-6 of its size past 1e6 across), so its "
+                 "volume is %g times its area",
+                 thick, lo[2], hi[2], thick);
+}
 
 void cli_print_error(const sc_error *error)
 {

@@ -239,6 +239,7 @@ sc_status sc_render_options_set_scheme(sc_render_options *options, const char *n
     if (st != SC_OK)
         return st;
     options->scheme = found.scheme;
+    options->use_scheme = 1;
     memcpy(options->face_2d, found.face_2d, sizeof options->face_2d);
     memcpy(options->edge_2d, found.edge_2d, sizeof options->edge_2d);
     return SC_OK;

@@ -445,6 +445,10 @@ static void sample_color(const render_ctx *c, const render_view *v, shade_thread
         double depth = INFINITY;
         if (r->found)
             depth = overlay_depth(&v->cam, v3_madd(r->ray.o, r->ray.d, r->hit.hit.t));
+        /* OpenSCAD draws the axes first and a 2D model's polygons after,
+         * with GL_LESS: an axis in their plane stays over them */
+        if (r->found && v->shade.flat)
+            depth *= 1 + 1e-7;
         overlay_sample(&v->over, i + sx, j + sy, depth, rgb);
     }
 }

@@ -10,6 +10,7 @@
  * FreeType library and face live for one node's layout.
  */
 #include <ctype.h>
+#include <errno.h>
 #include <math.h>
 #include <stdarg.h>
 #include <stdio.h>
@@ -190,8 +191,15 @@ sc_status spancast_text_register(const char *path, char *err, size_t err_size);
 
 sc_status spancast_text_register(const char *path, char *err, size_t err_size)
 {
+    FILE *f = fopen(path, "rb");
+    if (!f) {
+        snprintf(err, err_size, "Can't register font '%s': %s", path, strerror(errno));
+        return SC_ERR_IO;
+    }
+    fclose(f);
     if (!FcConfigAppFontAddFile(NULL, (const FcChar8 *)path)) {
-        snprintf(err, err_size, "Can't register font '%s'", path);
+        snprintf(err, err_size,
+                 "Can't register font '%s': not a font fontconfig can read", path);
         return SC_ERR_IO;
     }
     return SC_OK;
