@@ -460,6 +460,20 @@ static int section_interval(const shade_scene *s, const csg_ray *ray, double *ta
     return *ta < *tb;
 }
 
+/* The spans of s's tree along ray, for th's time, within the sections'
+ * interval [*ta, *tb] (section_interval, which also gives *plane).
+ * Returns 0 when the interval is empty or the query fails. */
+static int section_spans(const shade_scene *s, shade_thread *th, const csg_ray *ray,
+                         double *ta, double *tb, int *plane, span_list *spans)
+{
+    if (!section_interval(s, ray, ta, tb, plane))
+        return 0;
+    csg_ray clipped = *ray;
+    clipped.tmin = *ta;
+    clipped.tmax = *tb;
+    return csg_spans_at(s->tree, &clipped, th->time, th->scratch, th->csg, spans);
+}
+
 /* shade_first_hit for a 2D model in the render (flat): the point where
  * the ray crosses the plane of its polygons, when the slab holds it (the
  * polygons' inside) and the sections keep it; a cap with the plane's
@@ -472,13 +486,9 @@ static int flat_first_hit(const shade_scene *s, shade_thread *th, const csg_ray 
     double t = (s->flat_plane[3] - v3_dot(n, ray->o)) / nd;
     double ta, tb;
     int plane;
-    if (!(nd != 0 && section_interval(s, ray, &ta, &tb, &plane) && t >= ta && t <= tb))
-        return 0;
-    csg_ray clipped = *ray;
-    clipped.tmin = ta;
-    clipped.tmax = tb;
     span_list spans;
-    if (!csg_spans_at(s->tree, &clipped, th->time, th->scratch, th->csg, &spans))
+    if (!(nd != 0 && section_spans(s, th, ray, &ta, &tb, &plane, &spans) && t >= ta &&
+          t <= tb))
         return 0;
     for (uint32_t k = 0; k < spans.n; k++) {
         const span *sp = &spans.v[k];
@@ -506,13 +516,8 @@ int shade_first_hit(const shade_scene *s, shade_thread *th, const csg_ray *ray,
         return csg_first_hit_at(s->tree, ray, th->time, th->scratch, th->csg, &hit->hit);
     double ta, tb;
     int plane;
-    if (!section_interval(s, ray, &ta, &tb, &plane))
-        return 0;
-    csg_ray clipped = *ray;
-    clipped.tmin = ta;
-    clipped.tmax = tb;
     span_list spans;
-    if (!csg_spans_at(s->tree, &clipped, th->time, th->scratch, th->csg, &spans))
+    if (!section_spans(s, th, ray, &ta, &tb, &plane, &spans))
         return 0;
     for (uint32_t k = 0; k < spans.n; k++) {
         const span *sp = &spans.v[k];
