@@ -351,10 +351,46 @@ static void test_pixel_ray_matches_depth(void **state)
     sc_scene_release(s);
 }
 
+/* A 2D model's render is flat at z = 0 and framed by its flat box: the
+ * pixel ray is the render's, so the point at the depth render writes lies
+ * on z = 0. */
+static void test_pixel_ray_flat_2d(void **state)
+{
+    (void)state;
+    static const char text[] = "square(size = [10, 4], center = false);\n";
+    sc_scene *s = test_load("flat.csg", text, 0);
+    sc_render_options o;
+    sc_render_options_init(&o);
+    o.width = 24;
+    o.height = 18;
+    o.threads = 1;
+    o.want_color = 0;
+    o.want_depth = 1;
+    sc_framebuffer *fb = NULL;
+    sc_error e;
+    assert_int_equal(sc_render(s, &o, &fb, &e), SC_OK);
+    int hits = 0;
+    for (int j = 0; j < o.height; j++)
+        for (int i = 0; i < o.width; i++) {
+            float depth = sc_framebuffer_depth(fb)[j * o.width + i];
+            if (isinf(depth))
+                continue;
+            double origin[3], dir[3];
+            assert_int_equal(sc_scene_pixel_ray(s, &o, i, j, origin, dir, &e), SC_OK);
+            double len = sqrt(dir[0] * dir[0] + dir[1] * dir[1] + dir[2] * dir[2]);
+            assert_near(origin[2] + dir[2] * depth / len, 0, 1e-4);
+            hits++;
+        }
+    assert_true(hits > 0);
+    sc_framebuffer_release(fb);
+    sc_scene_release(s);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_worked_example),
+        cmocka_unit_test(test_pixel_ray_flat_2d),
         cmocka_unit_test(test_both_ways),
         cmocka_unit_test(test_subtracted_surface),
         cmocka_unit_test(test_membership),

@@ -879,6 +879,13 @@ static sc_status preview_bounds(const csg_tree *t, const shading_slabs *slabs, b
     return SC_OK;
 }
 
+bbox render_frame_box(const csg_tree *tree, const shading *look)
+{
+    if (look && look->flat_2d && look->flat_outlines)
+        return look->flat_box;
+    return tree->root == CSG_EMPTY ? bbox_empty() : tree->bounds;
+}
+
 sc_status render_scene(const csg_tree *tree, const shading *look,
                        const sc_render_options *options, sc_framebuffer **framebuffer,
                        sc_error *error)
@@ -930,10 +937,9 @@ sc_status render_scene(const csg_tree *tree, const shading *look,
     c.edge_cos = cos(options->edge_angle_deg * 3.14159265358979323846 / 180);
     for (int k = 0; k < 3; k++)
         c.edge_color[k] = color_srgb_to_linear(options->scheme.edge[k]);
-    bbox bounds = tree->root == CSG_EMPTY ? bbox_empty() : tree->bounds;
-    /* OpenSCAD's render frames a 2D model by its flat polygons */
-    if (!options->preview && look && look->flat_2d && look->flat_outlines)
-        bounds = look->flat_box;
+    bbox bounds = options->preview
+                      ? (tree->root == CSG_EMPTY ? bbox_empty() : tree->bounds)
+                      : render_frame_box(tree, look);
     /* The preview frames its modifier parts too, as OpenSCAD's does, and
      * the boxes OpenSCAD's products have. */
     const shading_slabs *slabs =
