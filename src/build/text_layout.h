@@ -3,7 +3,8 @@
  * links. Those three bring glib, PCRE2, graphite2, Brotli, expat, libpng
  * and zlib with them: about a dozen shared objects whose loading and
  * start-up every run paid for when the tool linked them. build_text.c loads
- * the plugin on the first text node (plugin.h); no other run loads them.
+ * the plugin on the first text node (plugin.h), or for the first font file
+ * a model registers (text_register_font); no other run loads them.
  *
  * The plugin writes only plain, malloc'd arrays into a text_shape, which
  * text_shape_free releases with free(), and messages as text; the
