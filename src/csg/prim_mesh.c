@@ -978,8 +978,13 @@ static int wind_step(const crossing *c, uint32_t leaf, int parity, int *wind,
 }
 
 /* The spans of the whole line from all its crossings, by the rules of the
- * header (the bounds on crossings and spans, the fill past them). */
-static uint32_t spans_of(const crossings *cs, uint32_t leaf, span *out, uint32_t cap)
+ * header (the bounds on crossings and spans, the fill past them). A line
+ * that stays inside after its last crossing (a parity mesh crossed an odd
+ * number of times) is filled to far, where it leaves the mesh's box, so
+ * that its last crossing is still a surface: OpenSCAD draws every face of
+ * a mesh it draws as it is. */
+static uint32_t spans_of(const crossings *cs, uint32_t leaf, double far, span *out,
+                         uint32_t cap)
 {
     uint32_t n = 0;
     int wind = cs->wind0, full = 0;
@@ -998,12 +1003,32 @@ static uint32_t spans_of(const crossings *cs, uint32_t leaf, span *out, uint32_t
         if (open) {
             out[n].in = start;
             out[n].out = last;
+            if (!cs->overflow && far > last.t)
+                out[n].out.t = far;
             n++;
         } else if (n > 0) {
             out[n - 1].out = last;
         }
     }
     return n;
+}
+
+/* Where the line o + t d leaves the mesh's box (-INFINITY when it misses
+ * it), widened outwards as the hierarchy's tests are. */
+static double line_box_exit(const prim_mesh *m, vec3 o, vec3 d)
+{
+    ray_frame f = frame_of(o, d);
+    slab_ray r = slab_ray_of(m, o, d, f.kz);
+    prim_mesh_node root = m->nodes[0];
+    for (int a = 0; a < 3; a++) {
+        root.box[0][a][0] = fminf(root.box[0][a][0], root.box[0][a][1]);
+        root.box[1][a][0] = fmaxf(root.box[1][a][0], root.box[1][a][1]);
+    }
+    double key, z0;
+    if (!child_hit(&root, 0, &r, -INFINITY, INFINITY, &key, &z0))
+        return -INFINITY;
+    return widen_up(((double)root.box[1 - r.near[f.kz]][f.kz][0] - r.o[f.kz]) *
+                    r.inv[f.kz]);
 }
 
 uint32_t prim_mesh_spans(const prim *p, uint32_t leaf, vec3 o, vec3 d, span *out,
@@ -1015,7 +1040,7 @@ uint32_t prim_mesh_spans(const prim *p, uint32_t leaf, vec3 o, vec3 d, span *out
     crossings cs;
     crossings_init(&cs, m, 0);
     gather_range(m, o, d, -INFINITY, INFINITY, &cs);
-    return spans_of(&cs, leaf, out, cap);
+    return spans_of(&cs, leaf, line_box_exit(m, o, d), out, cap);
 }
 
 /* The spans of the crossings a partial walk found, complete up to t_end,
@@ -1179,7 +1204,7 @@ uint32_t prim_mesh_spans_range(const prim *p, uint32_t leaf, vec3 o, vec3 d, dou
         crossings_init(&cs, m, 0);
         gather_range(m, o, d, -INFINITY, INFINITY, &cs);
     }
-    return spans_of(&cs, leaf, out, cap);
+    return spans_of(&cs, leaf, z1, out, cap);
 }
 
 vec3 prim_mesh_normal(const prim *p, vec3 q, uint16_t part)
