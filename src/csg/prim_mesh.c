@@ -1013,22 +1013,24 @@ static uint32_t spans_of(const crossings *cs, uint32_t leaf, double far, span *o
     return n;
 }
 
-/* Where the line o + t d leaves the mesh's box (-INFINITY when it misses
- * it), widened outwards as the hierarchy's tests are. */
-static double line_box_exit(const prim_mesh *m, vec3 o, vec3 d)
+/* Where the line of f and r meets the whole mesh's box: *z0, and *z1
+ * where it reaches the far side of the box's kz slab, which holds every
+ * crossing's t, both widened outwards as the hierarchy's tests are.
+ * Returns 0 when the line misses the box. */
+static int line_box(const prim_mesh *m, const ray_frame *f, const slab_ray *r, double *z0,
+                    double *z1)
 {
-    ray_frame f = frame_of(o, d);
-    slab_ray r = slab_ray_of(m, o, d, f.kz);
     prim_mesh_node root = m->nodes[0];
     for (int a = 0; a < 3; a++) {
         root.box[0][a][0] = fminf(root.box[0][a][0], root.box[0][a][1]);
         root.box[1][a][0] = fmaxf(root.box[1][a][0], root.box[1][a][1]);
     }
-    double key, z0;
-    if (!child_hit(&root, 0, &r, -INFINITY, INFINITY, &key, &z0))
-        return -INFINITY;
-    return widen_up(((double)root.box[1 - r.near[f.kz]][f.kz][0] - r.o[f.kz]) *
-                    r.inv[f.kz]);
+    double key;
+    if (!child_hit(&root, 0, r, -INFINITY, INFINITY, &key, z0))
+        return 0;
+    *z1 = widen_up(((double)root.box[1 - r->near[f->kz]][f->kz][0] - r->o[f->kz]) *
+                   r->inv[f->kz]);
+    return 1;
 }
 
 uint32_t prim_mesh_spans(const prim *p, uint32_t leaf, vec3 o, vec3 d, span *out,
@@ -1037,10 +1039,15 @@ uint32_t prim_mesh_spans(const prim *p, uint32_t leaf, vec3 o, vec3 d, span *out
     const prim_mesh *m = p->u.mesh.mesh;
     if (!m || cap == 0)
         return 0;
+    ray_frame f = frame_of(o, d);
+    slab_ray r = slab_ray_of(m, o, d, f.kz);
+    double z0, z1;
+    if (!line_box(m, &f, &r, &z0, &z1))
+        z1 = -INFINITY; /* no crossing either */
     crossings cs;
     crossings_init(&cs, m, 0);
     gather_range(m, o, d, -INFINITY, INFINITY, &cs);
-    return spans_of(&cs, leaf, line_box_exit(m, o, d), out, cap);
+    return spans_of(&cs, leaf, z1, out, cap);
 }
 
 /* The spans of the crossings a partial walk found, complete up to t_end,
@@ -1147,16 +1154,9 @@ uint32_t prim_mesh_spans_range(const prim *p, uint32_t leaf, vec3 o, vec3 d, dou
     slab_ray r = slab_ray_of(m, o, d, f.kz);
     /* The whole mesh: where the line meets its box, and the kz slab that
      * holds every crossing's t. */
-    prim_mesh_node root = m->nodes[0];
-    for (int a = 0; a < 3; a++) {
-        root.box[0][a][0] = fminf(root.box[0][a][0], root.box[0][a][1]);
-        root.box[1][a][0] = fmaxf(root.box[1][a][0], root.box[1][a][1]);
-    }
-    double key, z0;
-    if (!child_hit(&root, 0, &r, -INFINITY, INFINITY, &key, &z0))
+    double z0, z1;
+    if (!line_box(m, &f, &r, &z0, &z1))
         return 0;
-    double z1 =
-        widen_up(((double)root.box[1 - r.near[f.kz]][f.kz][0] - r.o[f.kz]) * r.inv[f.kz]);
     double a = lo - 2 * eps, b = hi + 2 * eps;
     if (z1 < a || z0 > b)
         return 0; /* every crossing lies outside the range: so does the solid */
