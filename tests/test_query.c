@@ -305,6 +305,17 @@ static void test_ray_limit(void **state)
     sc_scene_release(s);
 }
 
+/* A small image of depth alone, on one thread. */
+static void depth_options(sc_render_options *o)
+{
+    sc_render_options_init(o);
+    o->width = 24;
+    o->height = 18;
+    o->threads = 1;
+    o->want_color = 0;
+    o->want_depth = 1;
+}
+
 /* The pixel ray is the one render shoots: its first span's t |d| is the
  * depth render writes at that pixel, for every pixel of a small image of
  * the drilled cube, in perspective and orthographic views. */
@@ -314,12 +325,7 @@ static void test_pixel_ray_matches_depth(void **state)
     sc_scene *s = test_load("drilled.csg", drilled_text, 0);
     for (int proj = 0; proj < 2; proj++) {
         sc_render_options o;
-        sc_render_options_init(&o);
-        o.width = 24;
-        o.height = 18;
-        o.threads = 1;
-        o.want_color = 0;
-        o.want_depth = 1;
+        depth_options(&o);
         o.projection = proj ? SC_PROJECTION_ORTHOGRAPHIC : SC_PROJECTION_PERSPECTIVE;
         sc_framebuffer *fb = NULL;
         sc_error e;
@@ -360,12 +366,7 @@ static void test_pixel_ray_flat_2d(void **state)
     static const char text[] = "square(size = [10, 4], center = false);\n";
     sc_scene *s = test_load("flat.csg", text, 0);
     sc_render_options o;
-    sc_render_options_init(&o);
-    o.width = 24;
-    o.height = 18;
-    o.threads = 1;
-    o.want_color = 0;
-    o.want_depth = 1;
+    depth_options(&o);
     sc_framebuffer *fb = NULL;
     sc_error e;
     assert_int_equal(sc_render(s, &o, &fb, &e), SC_OK);
