@@ -1767,8 +1767,9 @@ double csg_eps(const csg_tree *t, vec3 o, vec3 d)
 }
 
 /* Runs a query from the root; returns 0 on allocation failure. */
-static int run(const csg_tree *t, const csg_ray *r, double time, arena *scratch,
-               csg_counters *counters, eval_mode mode, span_list *out, int *blocked)
+static int run_node(const csg_tree *t, uint32_t id, const csg_ray *r, double time,
+                    arena *scratch, csg_counters *counters, eval_mode mode,
+                    span_list *out, int *blocked)
 {
     csg_counters unused = {0, 0, 0, 0, 0};
     eval_ctx c;
@@ -1786,11 +1787,17 @@ static int run(const csg_tree *t, const csg_ray *r, double time, arena *scratch,
     c.counters->queries++;
     *out = no_spans;
     *blocked = 0;
-    if (t->root == CSG_EMPTY || !(r->tmin <= r->tmax))
+    if (id == CSG_EMPTY || !(r->tmin <= r->tmax))
         return 1;
-    *out = eval(&c, t->root, r->tmin, r->tmax, mode);
+    *out = eval(&c, id, r->tmin, r->tmax, mode);
     *blocked = c.blocked;
     return !c.oom;
+}
+
+static int run(const csg_tree *t, const csg_ray *r, double time, arena *scratch,
+               csg_counters *counters, eval_mode mode, span_list *out, int *blocked)
+{
+    return run_node(t, t->root, r, time, scratch, counters, mode, out, blocked);
 }
 
 /* Clips a root span list to [tmin, tmax] into new scratch memory (the list
@@ -1847,6 +1854,16 @@ int csg_spans_counted(const csg_tree *t, const csg_ray *r, arena *scratch,
 int csg_spans(const csg_tree *t, const csg_ray *r, arena *scratch, span_list *out)
 {
     return csg_spans_counted(t, r, scratch, NULL, out);
+}
+
+int csg_spans_node(const csg_tree *t, uint32_t id, const csg_ray *r, arena *scratch,
+                   span_list *out)
+{
+    span_list all;
+    int blocked;
+    *out = no_spans;
+    return run_node(t, id, r, 0, scratch, NULL, EVAL_ALL, &all, &blocked) &&
+           clip(all, r, scratch, out);
 }
 
 /* The first span of clip(all, r), without the copy: 1 and *out, or 0

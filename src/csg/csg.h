@@ -223,6 +223,10 @@ double csg_eps(const csg_tree *t, vec3 o, vec3 d);
  * allocation failure, 1 otherwise. */
 int csg_spans(const csg_tree *t, const csg_ray *r, arena *scratch, span_list *out);
 
+/* csg_spans of the subtree under node id alone (at time 0). */
+int csg_spans_node(const csg_tree *t, uint32_t id, const csg_ray *r, arena *scratch,
+                   span_list *out);
+
 /* FIRST_HIT: 1 and *hit when a surface crosses the ray within [tmin, tmax]. */
 int csg_first_hit(const csg_tree *t, const csg_ray *r, arena *scratch, csg_hit *hit);
 
