@@ -32,19 +32,25 @@ timeout 300 xvfb-run -a -n 120 -s "-screen 0 1024x768x24" \
     openscad -o probe.png --imgsize=32,24 boxes.scad >probe.log 2>&1
 [ -s probe.png ] || skip "openscad cannot render offscreen: $(tail -n 1 probe.log)"
 
-# compare NAME OPTIONS...: the same options for both programs.
+# compare NAME OPTIONS...: the same options for both programs, on
+# $model.scad (OpenSCAD, with os_extra last: its --render takes an optional
+# argument, which would take the file) and $model.csg (spancast, with
+# sc_extra too).
+model=boxes
+os_extra=()
+sc_extra=()
 compare() {
     local name=$1
     shift
     checks=$((checks + 1))
     timeout 300 xvfb-run -a -n 120 -s "-screen 0 1024x768x24" \
-        openscad -o "os_$name.png" --imgsize=320,240 "$@" boxes.scad >/dev/null 2>&1
+        openscad "$model.scad" -o "os_$name.png" --imgsize=320,240 "$@" "${os_extra[@]}" >/dev/null 2>&1
     if [ ! -s "os_$name.png" ]; then
         fail "$name: openscad wrote no image"
         return
     fi
-    "$bin" render boxes.csg -o "sc_$name.png" --mask="mask_$name.png" \
-        --imgsize=320,240 -q "$@" || {
+    "$bin" render "$model.csg" -o "sc_$name.png" --mask="mask_$name.png" \
+        --imgsize=320,240 -q "${sc_extra[@]}" "$@" || {
         echo "FAIL: $name: spancast failed"
         fails=$((fails + 1))
         return
@@ -79,6 +85,52 @@ compare viewall_autocenter --camera=10,0,0,55,0,25,20 --viewall --autocenter
 compare autocenter_alone --camera=10,0,0,55,0,25,120 --autocenter
 compare viewall_vector --camera=40,-50,30,5,2,1 --viewall --autocenter
 compare viewall_wide --camera=1,2,3,120,10,200,50 --viewall
+
+# The default camera frames the box of the mesh OpenSCAD computed, where
+# the booleans cut parts of the boxes of what they were made of away
+# (csg/bounds.h): a sphere drilled through, whose farthest points in y are
+# corners of the hole's polygonal rim; a sphere with its top cut off; two
+# rotated cones, whose boxes are their vertices' and not their rotated
+# boxes'; and a sliver 0.01 thick, the intersection of two cubes, far
+# to the left of a cube, which the box must keep. In faithful mode, as
+# OpenSCAD's mesh, against OpenSCAD's render (its preview frames the
+# boxes of its CSG products, as spancast's --preview does).
+frames() { # NAME, then the scene on stdin
+    cat >"$1.scad"
+    openscad -o "$1.csg" "$1.scad" >/dev/null 2>&1 || {
+        echo "FAIL: openscad could not export $1.csg"
+        fails=$((fails + 1))
+        return
+    }
+    model=$1
+    compare "$1"
+    compare "$1_viewall" --camera=10,0,0,70,0,140,20 --viewall --autocenter
+}
+os_extra=(--render)
+sc_extra=(--faithful)
+frames drilled <<'EOF'
+difference() {
+  sphere(r = 10);
+  rotate([90, 0, 0]) cylinder(r = 6, h = 30, center = true);
+}
+EOF
+frames capped <<'EOF'
+difference() {
+  sphere(r = 10);
+  translate([-20, -20, 5]) cube(40);
+}
+EOF
+frames cones <<'EOF'
+translate([0, -40, 0]) rotate([90, 0, 45]) cylinder(r1 = 10, r2 = 0, h = 20);
+rotate(v = [-1, 0, 0], a = 45) cylinder(r1 = 10, r2 = 0, h = 20);
+EOF
+frames sliver <<'EOF'
+cube(2);
+translate([-12, 12, 0]) intersection() {
+  cube([10, 10, 10], center = true);
+  translate([0, -9.99, -9.99]) cube([10, 10, 10], center = true);
+}
+EOF
 
 echo "$checks views compared with OpenSCAD, $fails failed"
 [ "$fails" = 0 ]

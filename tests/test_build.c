@@ -100,6 +100,7 @@ static int is_empty(const sc_scene *s)
 }
 
 #define assert_near(a, b) assert_true(fabs((double)(a) - (double)(b)) <= 1e-9)
+#define assert_near_tol(a, b, tol) assert_true(fabs((double)(a) - (double)(b)) <= (tol))
 
 /* ---- primitives ---- */
 
@@ -844,6 +845,45 @@ static void test_leaf_children(void **state)
     sc_scene_release(s);
 }
 
+/* The solid's own box (csg/bounds.h), which frames the render: a sphere
+ * cut flat (a face square to the axis, and a sphere's equator), and a
+ * tetrahedron cut by a slab, whose farthest points in x and y are where
+ * the slab's top crosses two edges (a vertex of the result that no leaf
+ * has). The tree's box holds the cut-away parts. */
+static void check_solid_box(const char *text, const double lo[3], const double hi[3],
+                            double tree_hi_z)
+{
+    sc_scene *s = load(text);
+    const shading *look = scene_shading(s);
+    assert_true(look->has_solid_box);
+    double got[6] = {look->solid_box.lo.x, look->solid_box.lo.y, look->solid_box.lo.z,
+                     look->solid_box.hi.x, look->solid_box.hi.y, look->solid_box.hi.z};
+    for (int i = 0; i < 3; i++) {
+        assert_near_tol(got[i], lo[i], 1e-6);
+        assert_near_tol(got[3 + i], hi[i], 1e-6);
+    }
+    assert_near(s->tree->bounds.hi.z, tree_hi_z);
+    sc_scene_release(s);
+}
+
+static void test_solid_box(void **state)
+{
+    (void)state;
+    check_solid_box("difference() { sphere(r = 10); "
+                    "multmatrix([[1, 0, 0, -20], [0, 1, 0, -20], [0, 0, 1, 5], "
+                    "[0, 0, 0, 1]]) cube(size = [40, 40, 40]); }",
+                    (double[3]){-10, -10, -10}, (double[3]){10, 10, 5}, 10);
+    /* The slab's top (z = 2) is a quarter of the way to the apex (9, 7, 8):
+     * the edges from (4, 1, 0) and (1, 4, 0) cross it at (5.25, 2.5, 2) and
+     * (3, 4.75, 2). */
+    check_solid_box("intersection() { polyhedron(points = [[0, 0, 0], [4, 1, 0], "
+                    "[1, 4, 0], [9, 7, 8]], faces = [[0, 1, 2], [0, 3, 1], [0, 2, 3], "
+                    "[1, 3, 2]], convexity = 1); "
+                    "multmatrix([[1, 0, 0, -5], [0, 1, 0, -5], [0, 0, 1, 0], "
+                    "[0, 0, 0, 1]]) cube(size = [20, 20, 2]); }",
+                    (double[3]){0, 0, 0}, (double[3]){5.25, 4.75, 2}, 2);
+}
+
 /* ---- polyhedra ---- */
 
 static const char tetrahedron[] =
@@ -1282,6 +1322,7 @@ int main(void)
         cmocka_unit_test(test_deep_nesting),
         cmocka_unit_test(test_load_file),
         cmocka_unit_test(test_warning_order),
+        cmocka_unit_test(test_solid_box),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -175,12 +175,13 @@ sc_status sc_scene_pixel_ray(const sc_scene *scene, const sc_render_options *opt
         return st0;
     options = &own;
     const csg_tree *t = scene_tree(scene);
-    /* The bounds and the two calls of sc_render (render.c): the render's
-     * box (the preview's own framing, preview_bounds, is not followed) */
-    bbox bounds = options->preview ? (t->root == CSG_EMPTY ? bbox_empty() : t->bounds)
-                                   : render_frame_box(t, scene_shading(scene));
+    /* The bounds and the two calls of sc_render (render.c) */
+    bbox bounds;
+    sc_status st = render_frame_bounds(t, scene_shading(scene), options, &bounds, error);
+    if (st)
+        return st;
     cam_view view;
-    sc_status st = cam_view_from_options(options, &bounds, &view, error);
+    st = cam_view_from_options(options, &bounds, &view, error);
     if (st)
         return st;
     camera cam;

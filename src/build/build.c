@@ -74,6 +74,7 @@
 #include "build/build_revolve.h"
 #include "build/build_shading.h"
 #include "build/build_twod.h"
+#include "csg/bounds.h"
 #include "implicit/solve.h"
 #include "model/faithful.h"
 
@@ -1807,6 +1808,11 @@ static sc_status build_scene_of(const model *m, model *owned, void *spare,
     st = csg_builder_finish(b.csg, root, out, error);
     if (st == SC_OK)
         st = check_extent(*out, named, error);
+    if (st == SC_OK && look && !b.shading->flat_2d) {
+        if (!csg_solid_bounds(*out, &b.shading->solid_box))
+            st = err_nomem(error, NULL);
+        b.shading->has_solid_box = 1;
+    }
     if (st != SC_OK) {
         if (*out)
             csg_tree_free(*out);

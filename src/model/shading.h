@@ -147,6 +147,11 @@ typedef struct shading {
     double *flat_points;
     uint32_t *flat_start; /* flat_outlines + 1 entries when flat_outlines > 0 */
     uint32_t flat_outlines;
+    /* The solid's own box (csg/bounds.h), which frames the render as
+     * OpenSCAD frames its mesh; has_solid_box is 0 where it was not found
+     * (the tree's box frames it then). */
+    int has_solid_box;
+    bbox solid_box;
 } shading;
 
 /* The index of the first of count items (stride bytes apart, each with a

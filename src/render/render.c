@@ -879,11 +879,36 @@ static sc_status preview_bounds(const csg_tree *t, const shading_slabs *slabs, b
     return SC_OK;
 }
 
-bbox render_frame_box(const csg_tree *tree, const shading *look)
+sc_status render_frame_bounds(const csg_tree *tree, const shading *look,
+                              const sc_render_options *options, bbox *out,
+                              sc_error *error)
 {
-    if (look && look->flat_2d && look->flat_outlines)
-        return look->flat_box;
-    return tree->root == CSG_EMPTY ? bbox_empty() : tree->bounds;
+    if (!options->preview) {
+        if (look && look->flat_2d && look->flat_outlines)
+            *out = look->flat_box;
+        else if (tree->root == CSG_EMPTY)
+            *out = bbox_empty();
+        else
+            *out = look && look->has_solid_box ? look->solid_box : tree->bounds;
+        return SC_OK;
+    }
+    /* The preview frames its modifier parts too, as OpenSCAD's does, and
+     * the boxes OpenSCAD's products have. */
+    const shading_slabs *slabs = NULL;
+    if (look && look->preview_solid) {
+        tree = look->preview_solid; /* without the '#' operands OpenSCAD leaves out */
+        slabs = &look->preview_slabs;
+    }
+    sc_status st = preview_bounds(tree, slabs, out, error);
+    for (int k = 0; st == SC_OK && look && k < SHADING_OVERLAYS; k++) {
+        const csg_tree *part = look->overlay[k];
+        bbox box;
+        if (part &&
+            (st = preview_bounds(part, &look->overlay_slabs[k], &box, error)) == SC_OK &&
+            part->root != CSG_EMPTY)
+            *out = bbox_union(*out, box);
+    }
+    return st;
 }
 
 sc_status render_scene(const csg_tree *tree, const shading *look,
@@ -905,6 +930,7 @@ sc_status render_scene(const csg_tree *tree, const shading *look,
     sc_status st = check_options(options, error);
     if (st)
         return st;
+    const csg_tree *solid = tree;
     if (options->preview && look && look->preview_solid)
         tree = look->preview_solid; /* without the '#' operands OpenSCAD leaves out */
 
@@ -937,24 +963,9 @@ sc_status render_scene(const csg_tree *tree, const shading *look,
     c.edge_cos = cos(options->edge_angle_deg * 3.14159265358979323846 / 180);
     for (int k = 0; k < 3; k++)
         c.edge_color[k] = color_srgb_to_linear(options->scheme.edge[k]);
-    bbox bounds = options->preview
-                      ? (tree->root == CSG_EMPTY ? bbox_empty() : tree->bounds)
-                      : render_frame_box(tree, look);
-    /* The preview frames its modifier parts too, as OpenSCAD's does, and
-     * the boxes OpenSCAD's products have. */
-    const shading_slabs *slabs =
-        look && tree == look->preview_solid ? &look->preview_slabs : NULL;
-    if (options->preview && (st = preview_bounds(tree, slabs, &bounds, error)) != SC_OK)
+    bbox bounds;
+    if ((st = render_frame_bounds(solid, look, options, &bounds, error)) != SC_OK)
         return st;
-    for (int k = 0; options->preview && look && k < SHADING_OVERLAYS; k++) {
-        const csg_tree *part = look->overlay[k];
-        bbox box;
-        if (part &&
-            (st = preview_bounds(part, &look->overlay_slabs[k], &box, error)) != SC_OK)
-            return st;
-        if (part && part->root != CSG_EMPTY)
-            bounds = bbox_union(bounds, box);
-    }
     c.views = calloc((size_t)c.view_count, sizeof *c.views);
     if (!c.views)
         return err_nomem(error, NULL);

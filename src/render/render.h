@@ -42,10 +42,15 @@ sc_framebuffer *render_framebuffer_new(const sc_render_options *o, int width, in
 sc_status render_tree(const csg_tree *tree, const sc_render_options *options,
                       sc_framebuffer **framebuffer, sc_error *error);
 
-/* The box the render (not the preview) of tree under look (may be NULL)
- * frames: the tree's bounds, or a 2D model's flat box, as OpenSCAD's
- * render frames its polygons (shading.h). */
-bbox render_frame_box(const csg_tree *tree, const shading *look);
+/* The box that frames the render of tree under look (may be NULL) with
+ * options (--viewall, the default camera): for the render, the solid's
+ * own box (csg/bounds.h) as OpenSCAD frames its mesh, or a 2D model's
+ * flat box as it frames its polygons (shading.h), else the tree's; for
+ * the preview, the boxes OpenSCAD gives its CSG products, with the
+ * modifier parts. Fails only on memory. */
+sc_status render_frame_bounds(const csg_tree *tree, const shading *look,
+                              const sc_render_options *options, bbox *out,
+                              sc_error *error);
 
 /* The same with a shading record (NULL: as render_tree). */
 sc_status render_scene(const csg_tree *tree, const shading *look,
