@@ -159,6 +159,7 @@ kinds:  1 sphere, 1 box
 lights: none (the default rig)
 materials: 0 mirror, 0 glass, 0 checkered leaves
 bounds: [-5, -5, -5] to [5, 5, 5]
+frame:  [-5, -5, -5] to [5, 5, 5] (the solid's own box, which the render's default camera frames)
 EOF
 cmp -s info.txt want.txt || fail "info printed: $(cat info.txt)"
 [ -s stderr.txt ] && fail "info printed on stderr"

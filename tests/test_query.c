@@ -319,6 +319,37 @@ static void depth_options(sc_render_options *o)
 /* The pixel ray is the one render shoots: its first span's t |d| is the
  * depth render writes at that pixel, for every pixel of a small image of
  * the drilled cube, in perspective and orthographic views. */
+/* Every pixel's ray (sc_scene_pixel_ray) meets the solid first at the
+ * depth sc_render wrote there, so both frame the scene alike. */
+static void check_pixel_rays(sc_scene *s, const sc_render_options *o)
+{
+    sc_framebuffer *fb = NULL;
+    sc_error e;
+    assert_int_equal(sc_render(s, o, &fb, &e), SC_OK);
+    int hits = 0;
+    for (int j = 0; j < o->height; j++) {
+        for (int i = 0; i < o->width; i++) {
+            double origin[3], dir[3];
+            assert_int_equal(sc_scene_pixel_ray(s, o, i, j, origin, dir, &e), SC_OK);
+            sc_span_list *list =
+                spans_of(s, origin[0], origin[1], origin[2], dir[0], dir[1], dir[2], 0);
+            float depth = sc_framebuffer_depth(fb)[j * o->width + i];
+            if (sc_span_list_count(list) == 0) {
+                assert_true(isinf(depth));
+            } else {
+                const sc_span *sp = sc_span_list_get(list, 0);
+                double len = sqrt(dir[0] * dir[0] + dir[1] * dir[1] + dir[2] * dir[2]);
+                /* the depth buffer holds floats */
+                assert_near(depth, sp->in.t * len, 1e-6);
+                hits++;
+            }
+            sc_span_list_release(list);
+        }
+    }
+    assert_true(hits > 0); /* the default view shows the whole model */
+    sc_framebuffer_release(fb);
+}
+
 static void test_pixel_ray_matches_depth(void **state)
 {
     (void)state;
@@ -327,33 +358,43 @@ static void test_pixel_ray_matches_depth(void **state)
         sc_render_options o;
         depth_options(&o);
         o.projection = proj ? SC_PROJECTION_ORTHOGRAPHIC : SC_PROJECTION_PERSPECTIVE;
-        sc_framebuffer *fb = NULL;
-        sc_error e;
-        assert_int_equal(sc_render(s, &o, &fb, &e), SC_OK);
-        int hits = 0;
-        for (int j = 0; j < o.height; j++) {
-            for (int i = 0; i < o.width; i++) {
-                double origin[3], dir[3];
-                assert_int_equal(sc_scene_pixel_ray(s, &o, i, j, origin, dir, &e), SC_OK);
-                sc_span_list *list = spans_of(s, origin[0], origin[1], origin[2], dir[0],
-                                              dir[1], dir[2], 0);
-                float depth = sc_framebuffer_depth(fb)[j * o.width + i];
-                if (sc_span_list_count(list) == 0) {
-                    assert_true(isinf(depth));
-                } else {
-                    const sc_span *sp = sc_span_list_get(list, 0);
-                    double len =
-                        sqrt(dir[0] * dir[0] + dir[1] * dir[1] + dir[2] * dir[2]);
-                    /* the depth buffer holds floats */
-                    assert_near(depth, sp->in.t * len, 1e-6);
-                    hits++;
-                }
-                sc_span_list_release(list);
-            }
-        }
-        assert_true(hits > 0); /* the default view shows the whole model */
-        sc_framebuffer_release(fb);
+        check_pixel_rays(s, &o);
     }
+    sc_scene_release(s);
+}
+
+/* A sphere with its top cut off: the render frames the solid's own box
+ * (csg/bounds.h), the preview the box of its CSG product, which holds the
+ * top; sc_scene_frame_bounds gives each, and the pixel rays follow. */
+static const char capped_text[] =
+    "difference() { sphere(r = 10); multmatrix([[1, 0, 0, -20], [0, 1, 0, -20], "
+    "[0, 0, 1, 5], [0, 0, 0, 1]]) cube(size = [40, 40, 40]); }\n";
+
+static void test_frame_bounds(void **state)
+{
+    (void)state;
+    sc_scene *s = test_load("capped.csg", capped_text, 0);
+    sc_render_options o;
+    depth_options(&o);
+    double lo[3], hi[3];
+    assert_int_equal(sc_scene_frame_bounds(s, &o, lo, hi), 1);
+    for (int k = 0; k < 3; k++) {
+        assert_near(lo[k], -10, 1e-6);
+        assert_near(hi[k], k == 2 ? 5 : 10, 1e-6);
+    }
+    check_pixel_rays(s, &o);
+    o.preview = 1;
+    assert_int_equal(sc_scene_frame_bounds(s, &o, lo, hi), 1);
+    assert_near(hi[2], 10, 1e-9);
+    check_pixel_rays(s, &o);
+    /* the defaults are the render's; the whole tree's box is larger */
+    assert_int_equal(sc_scene_frame_bounds(s, NULL, lo, hi), 1);
+    assert_near(hi[2], 5, 1e-6);
+    assert_int_equal(sc_scene_bounds(s, lo, hi), 1);
+    assert_near(hi[2], 10, 1e-9);
+    o.size = 3; /* not a valid struct */
+    assert_int_equal(sc_scene_frame_bounds(s, &o, lo, hi), 0);
+    assert_true(lo[0] == 0 && hi[2] == 0);
     sc_scene_release(s);
 }
 
@@ -398,6 +439,7 @@ int main(void)
         cmocka_unit_test(test_errors),
         cmocka_unit_test(test_ray_limit),
         cmocka_unit_test(test_pixel_ray_matches_depth),
+        cmocka_unit_test(test_frame_bounds),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

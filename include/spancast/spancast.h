@@ -634,6 +634,18 @@ const sc_span *sc_span_list_get(const sc_span_list *list, size_t index);
 /* Frees the list; NULL is ignored. */
 void sc_span_list_release(sc_span_list *list);
 
+/* The box that the default camera, --viewall and --autocenter frame under
+ * options (NULL: the defaults), into lo and hi: for the render, the
+ * solid's own box, without what its booleans cut away (OpenSCAD frames
+ * the mesh it computed), and a 2D model's polygons; for options->preview,
+ * the boxes OpenSCAD's preview frames (its CSG products', with the
+ * modifier parts). The render's box is found by searching the solid along
+ * lines (docs/camera.md), so it may leave out a spike thinner than its
+ * grid; sc_scene_bounds's box holds everything. Returns 1, or 0 (lo and
+ * hi 0) when that box is empty or options are not valid. Thread safe. */
+int sc_scene_frame_bounds(const sc_scene *scene, const sc_render_options *options,
+                          double lo[3], double hi[3]);
+
 /* The ray render shoots through the centre of pixel (i, j) (column i from
  * the left, row j from the top) with these options (camera, image size,
  * field of view, projection, viewall, autocenter; the rest is ignored):

@@ -204,6 +204,28 @@ sc_status sc_scene_pixel_ray(const sc_scene *scene, const sc_render_options *opt
     return SC_OK;
 }
 
+int sc_scene_frame_bounds(const sc_scene *scene, const sc_render_options *options,
+                          double lo[3], double hi[3])
+{
+    for (int k = 0; k < 3; k++)
+        lo[k] = hi[k] = 0;
+    sc_render_options own;
+    render_options_defaults(&own);
+    sc_error error;
+    bbox box;
+    if (!scene ||
+        (options &&
+         sized_read(&own, sizeof own, options, SIZED_MIN(sc_render_options, sheet),
+                    "sc_render_options", &error) != SC_OK) ||
+        render_frame_bounds(scene_tree(scene), scene_shading(scene), &own, &box,
+                            &error) != SC_OK ||
+        bbox_is_empty(&box))
+        return 0;
+    lo[0] = box.lo.x, lo[1] = box.lo.y, lo[2] = box.lo.z;
+    hi[0] = box.hi.x, hi[1] = box.hi.y, hi[2] = box.hi.z;
+    return 1;
+}
+
 sc_status sc_scene_inside(const sc_scene *scene, const double p[3], int *where,
                           sc_error *error)
 {

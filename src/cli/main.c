@@ -623,6 +623,10 @@ static int run_info(const cli_args *a)
                hi[1], hi[2]);
     else
         printf("bounds: empty\n");
+    if (sc_scene_frame_bounds(scene, NULL, lo, hi))
+        printf("frame:  [%g, %g, %g] to [%g, %g, %g] (the solid's own box, which the "
+               "render's default camera frames)\n",
+               lo[0], lo[1], lo[2], hi[0], hi[1], hi[2]);
     if (info.flat_2d) {
         char slab[160];
         cli_slab_words(scene, slab, sizeof slab);

@@ -671,10 +671,11 @@ static void take_load(viewer *v)
         sc_render_options file;
         sc_render_options_init(&file);
         sc_render_options_from_scene(&file, v->model->scene);
+        file.preview = v->look.preview; /* framed as what is shown */
         view_camera_reset(&v->cam, v->model->scene, &file);
         if (v->preset) {
             view_camera_preset(&v->cam, v->preset);
-            view_camera_view_all(&v->cam, v->model->scene);
+            view_camera_view_all(&v->cam, v->model->scene, &v->look);
         }
     }
     printf("loaded %s in %.3f s\n", v->path, load.seconds);
@@ -942,7 +943,7 @@ static int key(viewer *v, const SDL_KeyboardEvent *e)
     }
     if (ctrl && shift && sym == SDLK_v) {
         if (v->model)
-            view_camera_view_all(&v->cam, v->model->scene);
+            view_camera_view_all(&v->cam, v->model->scene, &v->look);
         say(v, "view all");
         view_changed(v);
     } else if (ctrl && (sym == SDLK_RIGHTBRACKET || sym == SDLK_LEFTBRACKET)) {
@@ -953,6 +954,7 @@ static int key(viewer *v, const SDL_KeyboardEvent *e)
         sc_render_options file;
         sc_render_options_init(&file);
         sc_render_options_from_scene(&file, v->model->scene);
+        file.preview = v->look.preview;
         view_camera_reset(&v->cam, v->model->scene, &file);
         say(v, "view reset");
         view_changed(v);

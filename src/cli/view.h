@@ -61,8 +61,10 @@ void view_camera_reset(view_camera *cam, const sc_scene *scene,
                        const sc_render_options *options);
 
 /* Keeps the rotation and moves centre and distance to show the whole model
- * (OpenSCAD's View All). */
-void view_camera_view_all(view_camera *cam, const sc_scene *scene);
+ * (OpenSCAD's View All), by the box the render with options frames
+ * (sc_scene_frame_bounds: the solid's, or the preview's). */
+void view_camera_view_all(view_camera *cam, const sc_scene *scene,
+                          const sc_render_options *options);
 
 /* A mouse drag of dx, dy window pixels, as OpenSCAD's QGLView reads it:
  * left rotates (x and z, or x and y with shift), right pans in the view

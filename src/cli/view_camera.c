@@ -54,10 +54,11 @@ static void gimbal_rotate(const double rot[3], const double v[3], double out[3])
     out[2] = b[2];
 }
 
-void view_camera_view_all(view_camera *cam, const sc_scene *scene)
+void view_camera_view_all(view_camera *cam, const sc_scene *scene,
+                          const sc_render_options *options)
 {
     double lo[3], hi[3];
-    if (!sc_scene_bounds(scene, lo, hi)) {
+    if (!sc_scene_frame_bounds(scene, options, lo, hi)) {
         for (int k = 0; k < 3; k++)
             cam->center[k] = 0;
         cam->distance = 140; /* OpenSCAD's default distance */
@@ -112,7 +113,7 @@ void view_camera_reset(view_camera *cam, const sc_scene *scene,
     cam->rotate[0] = 55; /* OpenSCAD's default view */
     cam->rotate[1] = 0;
     cam->rotate[2] = 25;
-    view_camera_view_all(cam, scene);
+    view_camera_view_all(cam, scene, options);
 }
 
 void view_camera_orbit(view_camera *cam, double dx, double dy, int around_y)
