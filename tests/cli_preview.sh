@@ -240,7 +240,9 @@ slab_scenes=(
 # Beside another object in the preview, the far wall seen through the
 # box's opening is drawn, as OpenSCAD draws it: the line that enters the
 # box through its opening crosses it once, and that crossing opens a span
-# to the mesh's box (docs/meshes.md).
+# to the mesh's box (docs/meshes.md). A cube whose top face is listed
+# twice (as OpenSCAD's issue1876 lists one) shows its top: the copies
+# would cancel under parity, and are one face.
 open_box='polyhedron(points = [[0, 0, 0], [10, 0, 0], [10, 10, 0], [0, 10, 0], [0, 0, 10], [10, 0, 10], [10, 10, 10], [0, 10, 10]], faces = [[0, 1, 2, 3], [0, 4, 5, 1], [1, 5, 6, 2], [2, 6, 7, 3], [3, 7, 4, 0]]);'
 open_scenes=(
     "$open_box"
@@ -249,6 +251,7 @@ open_scenes=(
     "translate([0, 0, 5]) { $open_box }"
     "$open_box translate([15, 0, 0]) cube(4);"
     'linear_extrude(height = 3, scale = [0, 1]) { translate([-1.5, -1]) square([1, 2]); translate([0.5, -1]) square([1, 2]); }'
+    'polyhedron(points = [[0, 0, 0], [10, 0, 0], [10, 10, 0], [0, 10, 0], [0, 0, 10], [10, 0, 10], [10, 10, 10], [0, 10, 10]], faces = [[0, 1, 2, 3], [4, 5, 1, 0], [7, 6, 5, 4], [5, 6, 2, 1], [6, 7, 3, 2], [7, 4, 0, 3], [7, 6, 5, 4]]);'
 )
 # the options of OpenSCAD's and spancast's images: the preview, or with
 # --render OpenSCAD's render and spancast's in its colour scheme

@@ -598,6 +598,39 @@ static void test_parity_rule(void **state)
     csg_builder_free(b);
 }
 
+/* A triangle listed twice (issue1876 of OpenSCAD's tests lists a face
+ * twice) is one face of a parity mesh, whichever way each copy is wound:
+ * OpenSCAD draws it once. Counted twice, its crossings cancelled, and the
+ * line down through it saw the bottom's crossing alone. */
+static void test_parity_duplicate(void **state)
+{
+    (void)state;
+    csg_builder *b = csg_builder_new();
+    for (int turned = 0; turned < 2; turned++) {
+        soup s = {NULL, NULL, 0, 0};
+        soup_box(&s, v3(0, 0, 0), v3(1, 1, 1));
+        /* the top face (triangles 2 and 3) again, the second time turned */
+        for (uint32_t k = 2; k < 4; k++) {
+            const uint32_t *t = &s.t[3 * k];
+            uint32_t a = t[0], bb = t[1], c = t[2];
+            soup_tri(&s, a, turned ? c : bb, turned ? bb : c);
+        }
+        prim m = {.kind = PRIM_MESH};
+        m.u.mesh.mesh = prim_mesh_create_rule(b, s.p, s.t, s.nt, 1);
+        assert_non_null(m.u.mesh.mesh);
+        assert_int_equal(m.u.mesh.mesh->tri_count, 12);
+        span out[8];
+        uint32_t n = prim_mesh_spans(&m, 0, v3(0.3, 0.4, 3), v3(0, 0, -1), out, 8);
+        assert_int_equal(n, 1);
+        assert_true(near(out[0].in.t, 2) && near(out[0].out.t, 3));
+        assert_true(prim_mesh_inside(&m, v3(0.5, 0.5, 0.5)));
+        assert_false(prim_mesh_inside(&m, v3(0.5, 0.5, 1.5)));
+        free(s.p);
+        free(s.t);
+    }
+    csg_builder_free(b);
+}
+
 /* A mesh of enough triangles has its hierarchy built in OpenMP tasks,
  * each large right subtree into nodes of its own, appended once its left
  * sibling is done. It must be the hierarchy one thread builds: the same
@@ -670,6 +703,7 @@ int main(void)
         cmocka_unit_test(test_range_walk),
         cmocka_unit_test(test_first_from_inside),
         cmocka_unit_test(test_parity_rule),
+        cmocka_unit_test(test_parity_duplicate),
         cmocka_unit_test(test_tasks_build_one_thread_tree),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

@@ -47,7 +47,8 @@
  * faces, and a span end on a triangle that faces into the span gets the
  * flip bit, so its normal still points out of the span. On a closed mesh
  * the two rules agree; on an open one each line is paired up on its own
- * (see docs/meshes.md).
+ * (see docs/meshes.md). A triangle listed twice would cancel itself under
+ * parity; it is kept once, as OpenSCAD draws it once.
  *
  * Membership: the winding number of q, from the crossings of the ray
  * q + t (1, sqrt 2, sqrt 3) / 2 with t > 0 (exits minus entries); a
@@ -490,6 +491,52 @@ static int has_area(const vec3 *points, const uint32_t *tris, uint32_t i)
     return v3_dot(n, n) > 0;
 }
 
+/* A triangle by its three point indices in ascending order, and where it
+ * was listed. */
+typedef struct tri_key {
+    uint32_t v[3], index;
+} tri_key;
+
+static int tri_key_order(const void *pa, const void *pb)
+{
+    const tri_key *a = pa, *b = pb;
+    for (int k = 0; k < 3; k++)
+        if (a->v[k] != b->v[k])
+            return a->v[k] < b->v[k] ? -1 : 1;
+    return a->index < b->index ? -1 : a->index > b->index;
+}
+
+/* Which of tri_count triangles repeat one listed before them (the same
+ * three points, wound either way): a flag per triangle, or NULL when out of
+ * memory. Under parity two copies of a face cancel each other, so a face
+ * listed twice would vanish, where OpenSCAD draws it. */
+static uint8_t *repeated_triangles(const uint32_t *tris, uint32_t tri_count)
+{
+    uint8_t *repeated = calloc(tri_count ? tri_count : 1, 1);
+    tri_key *keys = malloc((size_t)(tri_count ? tri_count : 1) * sizeof *keys);
+    if (!repeated || !keys) {
+        free(repeated);
+        free(keys);
+        return NULL;
+    }
+    for (uint32_t i = 0; i < tri_count; i++) {
+        uint32_t a = tris[3 * i], b = tris[3 * i + 1], c = tris[3 * i + 2], t;
+        if (a > b)
+            t = a, a = b, b = t;
+        if (b > c)
+            t = b, b = c, c = t;
+        if (a > b)
+            t = a, a = b, b = t;
+        keys[i] = (tri_key){{a, b, c}, i};
+    }
+    qsort(keys, tri_count, sizeof *keys, tri_key_order);
+    for (uint32_t i = 1; i < tri_count; i++)
+        if (!memcmp(keys[i].v, keys[i - 1].v, sizeof keys[i].v))
+            repeated[keys[i].index] = 1;
+    free(keys);
+    return repeated;
+}
+
 const prim_mesh *prim_mesh_create_rule(struct csg_builder *b, const vec3 *points,
                                        const uint32_t *tris, uint32_t tri_count,
                                        int parity)
@@ -499,15 +546,23 @@ const prim_mesh *prim_mesh_create_rule(struct csg_builder *b, const vec3 *points
     const prim_mesh *result = NULL;
     bbox bounds = bbox_empty();
     uint32_t kept = 0;
+    uint8_t *skip = parity ? repeated_triangles(tris, tri_count)
+                           : calloc(tri_count ? tri_count : 1, 1);
+    if (!skip)
+        return NULL;
+    for (uint32_t i = 0; i < tri_count; i++)
+        skip[i] |= !has_area(points, tris, i);
     for (uint32_t i = 0; i < tri_count; i++) {
-        if (!has_area(points, tris, i))
+        if (skip[i])
             continue;
         kept++;
         for (int k = 0; k < 3; k++)
             bounds = bbox_add_point(bounds, points[tris[3 * i + k]]);
     }
-    if (kept == 0)
+    if (kept == 0) {
+        free(skip);
         return NULL;
+    }
     vec3 ext = v3_sub(bounds.hi, bounds.lo);
     double pad =
         1e-9 * fmax(fmax(ext.x, ext.y), fmax(ext.z, v3_max_abs(bounds.lo))) + 1e-300;
@@ -524,7 +579,7 @@ const prim_mesh *prim_mesh_create_rule(struct csg_builder *b, const vec3 *points
     bounds2 all;
     bounds_empty(&all);
     for (uint32_t i = 0, k = 0; i < tri_count; i++) {
-        if (!has_area(points, tris, i))
+        if (skip[i])
             continue;
         item *it = &s.items[k++];
         it->tri = i;
@@ -575,6 +630,7 @@ const prim_mesh *prim_mesh_create_rule(struct csg_builder *b, const vec3 *points
     m->origin = origin;
     result = m;
 done:
+    free(skip);
     free(s.items);
     free(s.nodes);
     return result;

@@ -49,7 +49,8 @@ const prim_mesh *prim_mesh_create(struct csg_builder *b, const vec3 *points,
                                   const uint32_t *tris, uint32_t tri_count);
 /* The same with the inside rule chosen: parity 1 for a mesh that is open,
  * non-manifold or inconsistently wound, where a winding number means
- * nothing (docs/meshes.md); the triangles may then face either way. */
+ * nothing (docs/meshes.md); the triangles may then face either way, and a
+ * triangle listed again (the same three points) is kept once. */
 const prim_mesh *prim_mesh_create_rule(struct csg_builder *b, const vec3 *points,
                                        const uint32_t *tris, uint32_t tri_count,
                                        int parity);
