@@ -6,25 +6,11 @@
 
 #include "api/quad.h"
 
-csg_ray lines_axis_ray(int a, double at, double u, double v)
-{
-    double o[3];
-    o[a] = at;
-    o[(a + 1) % 3] = u;
-    o[(a + 2) % 3] = v;
-    csg_ray r;
-    r.o = v3(o[0], o[1], o[2]);
-    r.d = v3(a == 0, a == 1, a == 2);
-    r.tmin = -INFINITY;
-    r.tmax = INFINITY;
-    return r;
-}
-
 int lines_pair_spans(int a, double u, double v, const csg_tree *ta, const csg_tree *tb,
                      arena *scratch, csg_ray *r, span_list *sa, span_list *sb,
                      double *eps)
 {
-    *r = lines_axis_ray(a, 0, u, v);
+    *r = csg_axis_line(a, 0, u, v);
     arena_reset(scratch);
     if (!csg_spans(ta, r, scratch, sa) || !csg_spans(tb, r, scratch, sb))
         return 0;

@@ -12,11 +12,7 @@
 #include "csg/span.h"
 #include "spancast/spancast.h"
 
-/* The whole line along axis a (0, 1, 2) through the point whose a-th
- * coordinate is at and whose next two (cyclically) are u and v. */
-csg_ray lines_axis_ray(int a, double at, double u, double v);
-
-/* The whole line *r along axis a through (u, v) (lines_axis_ray at 0) and
+/* The whole line *r along axis a through (u, v) (csg_axis_line at 0) and
  * the spans of the trees ta and tb along it (none for an empty tree), in
  * scratch, which is reset first; *eps is the larger of the two trees'
  * tolerances on the line. Returns 0 when out of memory. */

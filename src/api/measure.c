@@ -100,7 +100,7 @@ static int sample_line(void *context, int thread, double u, double v, double *va
     const measure_shared *s = m->shared;
     int a = m->axis, ua = (a + 1) % 3, va = (a + 2) % 3;
     double du = u - s->centre[ua], dv = v - s->centre[va];
-    csg_ray r = lines_axis_ray(a, s->centre[a], u, v);
+    csg_ray r = csg_axis_line(a, s->centre[a], u, v);
     arena *scratch = &s->work.arenas[thread];
     arena_reset(scratch);
     span_list spans;

@@ -69,15 +69,8 @@ static reach line(finder *f, int a, double u, double v, int side)
     if (f->lines_left <= 0)
         return out;
     f->lines_left--;
-    double o[3];
-    o[a] = f->centre[a];
-    o[(a + 1) % 3] = u;
-    o[(a + 2) % 3] = v;
-    csg_ray r;
-    r.o = v3(o[0], o[1], o[2]);
-    r.d = v3(a == 0, a == 1, a == 2);
-    r.tmin = -INFINITY;
-    r.tmax = INFINITY;
+    csg_ray r = csg_axis_line(a, f->centre[a], u, v);
+    const double o[3] = {r.o.x, r.o.y, r.o.z};
     arena_reset(f->scratch);
     span_list s;
     if (!csg_spans_node(f->t, f->node, &r, f->scratch, &s)) {

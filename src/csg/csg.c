@@ -1851,6 +1851,20 @@ int csg_spans_counted(const csg_tree *t, const csg_ray *r, arena *scratch,
     return csg_spans_at(t, r, 0, scratch, counters, out);
 }
 
+csg_ray csg_axis_line(int a, double at, double u, double v)
+{
+    double o[3];
+    o[a] = at;
+    o[(a + 1) % 3] = u;
+    o[(a + 2) % 3] = v;
+    csg_ray r;
+    r.o = v3(o[0], o[1], o[2]);
+    r.d = v3(a == 0, a == 1, a == 2);
+    r.tmin = -INFINITY;
+    r.tmax = INFINITY;
+    return r;
+}
+
 int csg_spans(const csg_tree *t, const csg_ray *r, arena *scratch, span_list *out)
 {
     return csg_spans_counted(t, r, scratch, NULL, out);

@@ -223,6 +223,11 @@ double csg_eps(const csg_tree *t, vec3 o, vec3 d);
  * allocation failure, 1 otherwise. */
 int csg_spans(const csg_tree *t, const csg_ray *r, arena *scratch, span_list *out);
 
+/* The whole line along axis a (0, 1, 2) through the point whose a-th
+ * coordinate is at and whose next two (cyclically) are u and v: the lines
+ * of the measures (src/api/lines.h) and of the solid's box (bounds.h). */
+csg_ray csg_axis_line(int a, double at, double u, double v);
+
 /* csg_spans of the subtree under node id alone (at time 0). */
 int csg_spans_node(const csg_tree *t, uint32_t id, const csg_ray *r, arena *scratch,
                    span_list *out);
