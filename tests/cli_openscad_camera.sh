@@ -124,6 +124,31 @@ frames cones <<'EOF'
 translate([0, -40, 0]) rotate([90, 0, 45]) cylinder(r1 = 10, r2 = 0, h = 20);
 rotate(v = [-1, 0, 0], a = 45) cylinder(r1 = 10, r2 = 0, h = 20);
 EOF
+# Parts that compete for an extreme inside a cut: the lowest point is the
+# third cylinder's rim, which a search of the whole difference missed
+# for the second's (42 pixels), and a random union of rotated, scaled
+# spheres and cylinders with a rotated box cut from it (3,532 pixels).
+frames tilted <<'EOF'
+difference() {
+  union() {
+    cylinder(r = 1, h = 8, $fn = 10);
+    translate([24, 0, 0]) rotate([0, 72, 0]) cylinder(r = 1, h = 8, $fn = 10);
+    translate([27, 0, 0]) rotate([0, 81, 0]) cylinder(r = 1, h = 8, $fn = 10);
+  }
+  translate([0, 0, 6]) cube([40, 10, 10], center = true);
+}
+EOF
+frames jumble <<'EOF'
+difference() {
+  union() {
+    translate([1.5, -7.42, -1.47]) rotate([177.27, 139.13, 274.02]) scale([0.58, 0.7, 1.73]) sphere(2.37, $fn = 20);
+    translate([-7.25, 3.16, -5.23]) rotate([89.73, 126.51, 116.06]) cylinder(r = 1.75, h = 5.8, $fn = 6);
+    translate([-0.67, 4.6, -1.26]) rotate([266.69, 329.17, 190.72]) scale([1.91, 1.9, 2.33]) sphere(2.42, $fn = 10);
+    translate([-7.27, -1.29, -1.58]) rotate([294.59, 61.95, 135.81]) cylinder(r1 = 2.76, r2 = 0.43, h = 3.69, center = true, $fn = 8);
+  }
+  translate([-6.36, -5.0, -4.57]) rotate([70.32, 123.41, 281.66]) cube([4.01, 1.93, 3.8], center = true);
+}
+EOF
 frames sliver <<'EOF'
 cube(2);
 translate([-12, 12, 0]) intersection() {

@@ -882,6 +882,34 @@ static void test_solid_box(void **state)
                     "multmatrix([[1, 0, 0, -5], [0, 1, 0, -5], [0, 0, 1, 0], "
                     "[0, 0, 0, 1]]) cube(size = [20, 20, 2]); }",
                     (double[3]){0, 0, 0}, (double[3]){5.25, 4.75, 2}, 2);
+    /* Three cylinders of radius 1, the second and third tilted by 72 and
+     * 81 degrees, the first cut by a box: the lowest point is the third's
+     * rim, at -sin 81 degrees. Searched as one, the difference's grid found
+     * the second's rim (-sin 72) and stopped there; each part is searched
+     * over its own box. The highest is the second's far rim, which the box
+     * (x up to 20) does not reach. */
+    const double pi = 3.14159265358979323846;
+    double c72 = cos(72 * pi / 180), s72 = sin(72 * pi / 180);
+    double c81 = cos(81 * pi / 180), s81 = sin(81 * pi / 180);
+    char text[1024];
+    snprintf(text, sizeof text,
+             "difference() { union() { cylinder(h = 8, r1 = 1, r2 = 1, center = false); "
+             "multmatrix([[%.17g, 0, %.17g, 24], [0, 1, 0, 0], [%.17g, 0, %.17g, 0], "
+             "[0, 0, 0, 1]]) cylinder(h = 8, r1 = 1, r2 = 1, center = false); "
+             "multmatrix([[%.17g, 0, %.17g, 27], [0, 1, 0, 0], [%.17g, 0, %.17g, 0], "
+             "[0, 0, 0, 1]]) cylinder(h = 8, r1 = 1, r2 = 1, center = false); } "
+             "multmatrix([[1, 0, 0, -20], [0, 1, 0, -5], [0, 0, 1, 1], [0, 0, 0, 1]]) "
+             "cube(size = [40, 10, 10]); }",
+             c72, s72, -s72, c72, c81, s81, -s81, c81);
+    sc_scene *s = load(text);
+    const shading *look = scene_shading(s);
+    assert_true(look->has_solid_box);
+    assert_near_tol(look->solid_box.lo.z, -s81, 1e-6);
+    /* On the round rim of an exact cylinder the search stops within 1e-6
+     * of the model's size (36 across; 1.7e-5 off here), as the ridge
+     * curves under its steps; a polygonal rim ends at its vertex. */
+    assert_near_tol(look->solid_box.hi.z, 8 * c72 + s72, 36e-6);
+    sc_scene_release(s);
 }
 
 /* ---- polyhedra ---- */

@@ -8,10 +8,10 @@
 enum {
     GRID = 32,        /* lines per side of each axis's grid */
     SEEDS = 3,        /* points each side's search starts from */
-    MAX_ROUNDS = 400, /* rounds of one search */
+    MAX_ROUNDS = 200, /* rounds of one search */
     /* lines in all: past them a node still to sample keeps its tree box
      * (a model of thousands of drilled parts on one plane) */
-    BUDGET = 60000
+    BUDGET = 400000
 };
 
 /* A point seen, as one side sees it: how far out it lies along the side's
@@ -222,59 +222,53 @@ static void climb(finder *f, int side, seed from, double hu, double hv, double t
     }
 }
 
-/* The box of node id's solid, sampled: each side's value (side & 1: hi,
- * else -lo) into value; -INFINITY for every side when no line met it. */
-static void sample(finder *f, uint32_t id, double value[6])
+static double box_side(const bbox *box, int side)
 {
-    const csg_tree *t = f->t;
-    const bbox *b = &t->nodes[id].bounds;
-    double tlo[3] = {b->lo.x, b->lo.y, b->lo.z}, thi[3] = {b->hi.x, b->hi.y, b->hi.z};
+    double lo[3] = {box->lo.x, box->lo.y, box->lo.z};
+    double hi[3] = {box->hi.x, box->hi.y, box->hi.z};
+    return side & 1 ? hi[side / 2] : -lo[side / 2];
+}
+
+/* How far node id's solid reaches on side (hi, or -lo), searched along
+ * lines of the side's axis over region (a box inside the node's, about the
+ * part searched): -INFINITY when no line met the solid; the region's side
+ * when the lines ran out. */
+static double search(finder *f, uint32_t id, bbox region, int side)
+{
+    const bbox *b = &f->t->nodes[id].bounds;
+    region = bbox_intersect(region, *b);
+    double rlo[3] = {region.lo.x, region.lo.y, region.lo.z};
+    double rhi[3] = {region.hi.x, region.hi.y, region.hi.z};
     double extent = 0;
     f->node = id;
     for (int i = 0; i < 3; i++) {
         f->lo[i] = INFINITY;
         f->hi[i] = -INFINITY;
-        f->centre[i] = (tlo[i] + thi[i]) / 2;
-        extent = fmax(extent, thi[i] - tlo[i]);
+        f->centre[i] = (rlo[i] + rhi[i]) / 2;
+        extent = fmax(extent, rhi[i] - rlo[i]);
     }
-    for (int side = 0; side < 6; side++)
-        for (int k = 0; k < SEEDS; k++)
-            f->best[side][k].value = -INFINITY;
-    double cell[3];
-    for (int i = 0; i < 3; i++)
-        cell[i] = (thi[i] - tlo[i]) / GRID;
-    for (int a = 0; a < 3 && !f->out_of_memory; a++) {
-        int ia = (a + 1) % 3, ib = (a + 2) % 3;
-        for (int i = 0; i < GRID; i++)
-            for (int j = 0; j < GRID && !f->out_of_memory; j++)
-                line(f, a, tlo[ia] + (i + 0.5) * cell[ia], tlo[ib] + (j + 0.5) * cell[ib],
-                     1);
-    }
-    /* The seeds change as the searches see more; each side starts from the
-     * ones it had when its turn came. */
-    double tol = ldexp(extent, -30);
-    for (int side = 0; side < 6 && !f->out_of_memory; side++) {
-        int a = side / 2, ia = (a + 1) % 3, ib = (a + 2) % 3;
-        seed from[SEEDS];
-        memcpy(from, f->best[side], sizeof from);
-        double limit = side & 1 ? thi[a] : -tlo[a];
-        if (from[0].value >= limit - tol)
-            continue; /* on the node's box already: nothing lies farther */
-        for (int k = 0; k < SEEDS && !f->out_of_memory; k++)
-            if (isfinite(from[k].value))
-                climb(f, side, from[k], cell[ia], cell[ib], tol);
-    }
-    for (int side = 0; side < 6; side++) {
-        int a = side / 2;
-        double limit = side & 1 ? thi[a] : -tlo[a];
-        double got = side & 1 ? f->hi[a] : -f->lo[a];
-        if (f->lines_left <= 0) {
-            value[side] = limit; /* out of lines: the box no search found */
-            continue;
-        }
-        /* A span end rounded past the node's box stays inside it. */
-        value[side] = f->lo[0] <= f->hi[0] ? fmin(got, limit) : -INFINITY;
-    }
+    for (int k = 0; k < SEEDS; k++)
+        f->best[side][k].value = -INFINITY;
+    int a = side / 2, ia = (a + 1) % 3, ib = (a + 2) % 3;
+    double limit = box_side(&region, side);
+    if (bbox_is_empty(&region))
+        return -INFINITY;
+    double cu = (rhi[ia] - rlo[ia]) / GRID, cv = (rhi[ib] - rlo[ib]) / GRID;
+    for (int i = 0; i < GRID; i++)
+        for (int j = 0; j < GRID && !f->out_of_memory; j++)
+            line(f, a, rlo[ia] + (i + 0.5) * cu, rlo[ib] + (j + 0.5) * cv, side);
+    double tol = ldexp(extent, -26);
+    seed from[SEEDS];
+    memcpy(from, f->best[side], sizeof from);
+    /* on the region's box already: nothing lies farther */
+    for (int k = 0; k < SEEDS && from[0].value < limit - tol && !f->out_of_memory; k++)
+        if (isfinite(from[k].value))
+            climb(f, side, from[k], cu, cv, tol);
+    if (f->lines_left <= 0)
+        return limit; /* out of lines: the box no search found */
+    double got = side & 1 ? f->hi[a] : -f->lo[a];
+    /* A span end rounded past the node's box stays inside it. */
+    return f->lo[0] <= f->hi[0] ? fmin(got, box_side(b, side)) : -INFINITY;
 }
 
 /* What the search knows of each node: the sides found (known[id] & 1 <<
@@ -314,18 +308,99 @@ static int exact_leaf(const csg_leaf *l)
     return 1;
 }
 
-static double tree_side(const csg_node *n, int side)
+typedef struct reach_of {
+    double reach;
+    uint32_t id;
+} reach_of;
+
+static int farther_first(const void *pa, const void *pb)
 {
-    double lo[3] = {n->bounds.lo.x, n->bounds.lo.y, n->bounds.lo.z};
-    double hi[3] = {n->bounds.hi.x, n->bounds.hi.y, n->bounds.hi.z};
-    return side & 1 ? hi[side / 2] : -lo[side / 2];
+    const reach_of *a = pa, *b = pb;
+    if (a->reach != b->reach)
+        return a->reach > b->reach ? -1 : 1;
+    return a->id < b->id ? -1 : a->id > b->id;
+}
+
+/* The operands of a union, farthest reaching on side first (by their
+ * boxes); NULL when out of memory. */
+static uint32_t *by_reach(const csg_tree *t, const csg_node *n, int side)
+{
+    size_t count = n->child_count ? n->child_count : 1;
+    reach_of *r = malloc(count * sizeof *r);
+    uint32_t *order = malloc(count * sizeof *order);
+    if (!r || !order) {
+        free(r);
+        free(order);
+        return NULL;
+    }
+    const uint32_t *kids = t->child_ids + n->first_child;
+    for (uint32_t k = 0; k < n->child_count; k++) {
+        double reach = box_side(&t->nodes[kids[k]].bounds, side);
+        r[k] = (reach_of){isnan(reach) ? -INFINITY : reach, kids[k]};
+    }
+    qsort(r, n->child_count, sizeof *r, farther_first);
+    for (uint32_t k = 0; k < n->child_count; k++)
+        order[k] = r[k].id;
+    free(r);
+    return order;
+}
+
+static double side_of(bounder *b, uint32_t id, int side);
+
+/* A difference or an intersection: the parts of its first operand (found
+ * down the first operands of cuts inside it: the operands of a union, else
+ * the operand itself), farthest first, each its own side where it is the
+ * first operand of this difference and no subtrahend's box reaches as far
+ * as the part does, else searched over the part's box, until no part left
+ * can reach farther than what was found. Searching part by part keeps a
+ * thin part and every part's extreme in the search's grid. */
+static double cut_side(bounder *b, uint32_t id, int side)
+{
+    const csg_tree *t = b->f.t;
+    const csg_node *n = &t->nodes[id];
+    const uint32_t *kids = t->child_ids + n->first_child;
+    /* down the first operands of nested cuts: ((a | b) - c) & d is
+     * (a - c) & d | (b - c) & d, searched over a's box and b's */
+    uint32_t one = kids[0];
+    int direct = 1;
+    while (t->nodes[one].op != CSG_LEAF && t->nodes[one].op != CSG_UNION)
+        one = t->child_ids[t->nodes[one].first_child], direct = 0;
+    const csg_node *first = &t->nodes[one];
+    uint32_t count = 1, *order = &one, *owned = NULL;
+    if (first->op == CSG_UNION) {
+        owned = order = by_reach(t, first, side);
+        count = first->child_count;
+        if (!order) {
+            b->f.out_of_memory = 1;
+            return box_side(&n->bounds, side);
+        }
+    }
+    double got = -INFINITY, bound = box_side(&n->bounds, side);
+    for (uint32_t k = 0; k < count && !b->f.out_of_memory; k++) {
+        const csg_node *part = &t->nodes[order[k]];
+        if (!(fmin(box_side(&part->bounds, side), bound) > got))
+            break;
+        double v = -INFINITY;
+        int cut = n->op != CSG_DIFFERENCE || !direct;
+        if (!cut) {
+            v = side_of(b, order[k], side);
+            for (uint32_t j = 1; j < n->child_count && !cut; j++)
+                cut = box_side(&t->nodes[kids[j]].bounds, side) >= v;
+        }
+        if (cut)
+            v = b->no_sampling ? fmin(box_side(&part->bounds, side), bound)
+                               : search(&b->f, id, part->bounds, side);
+        got = fmax(got, v);
+    }
+    free(owned);
+    return got;
 }
 
 /* How far node id's solid reaches on side (hi, or -lo), -INFINITY where
  * it is empty. A union's is its farthest operand's, trying the operands
  * whose boxes reach farthest first and stopping at one whose box cannot
- * beat what was found; a difference's is its first operand's where no
- * subtrahend's box reaches as far; the rest is sampled. */
+ * beat what was found; an exact leaf's its box's; a difference's or an
+ * intersection's cut_side's; the rest is searched. */
 static double side_of(bounder *b, uint32_t id, int side)
 {
     if (b->known[id] & (1u << side))
@@ -334,50 +409,27 @@ static double side_of(bounder *b, uint32_t id, int side)
     const csg_node *n = &t->nodes[id];
     const uint32_t *kids = t->child_ids + n->first_child;
     double got = -INFINITY;
-    int sampled = 0;
     if (n->op == CSG_LEAF) {
-        if (exact_leaf(&t->leaves[n->leaf]))
-            got = tree_side(n, side);
+        if (exact_leaf(&t->leaves[n->leaf]) || b->no_sampling)
+            got = box_side(&n->bounds, side);
         else
-            sampled = 1;
+            got = search(&b->f, id, n->bounds, side);
     } else if (n->op == CSG_UNION) {
-        /* operands in order of how far their boxes reach (a few passes of
-         * picking the farthest left: most unions stop after one or two) */
-        uint8_t *done = calloc(n->child_count, 1);
-        if (!done) {
+        uint32_t *order = by_reach(t, n, side);
+        if (!order) {
             b->f.out_of_memory = 1;
-            return tree_side(n, side);
+            return box_side(&n->bounds, side);
         }
-        for (;;) {
-            uint32_t pick = UINT32_MAX;
-            double reach = -INFINITY;
-            for (uint32_t k = 0; k < n->child_count; k++) {
-                double r = tree_side(&t->nodes[kids[k]], side);
-                if (!done[k] && (pick == UINT32_MAX || r > reach))
-                    pick = k, reach = r;
-            }
-            if (pick == UINT32_MAX || !(reach > got) || b->f.out_of_memory)
+        for (uint32_t k = 0; k < n->child_count && !b->f.out_of_memory; k++) {
+            if (!(box_side(&t->nodes[order[k]].bounds, side) > got))
                 break;
-            done[pick] = 1;
-            got = fmax(got, side_of(b, kids[pick], side));
+            got = fmax(got, side_of(b, order[k], side));
         }
-        free(done);
-    } else if (n->op == CSG_DIFFERENCE || n->child_count == 1) {
+        free(order);
+    } else if (n->child_count == 1) {
         got = side_of(b, kids[0], side);
-        for (uint32_t k = 1; k < n->child_count && !sampled; k++)
-            if (tree_side(&t->nodes[kids[k]], side) >= got)
-                sampled = 1;
     } else {
-        sampled = 1;
-    }
-    if (sampled && b->no_sampling) {
-        got = tree_side(n, side);
-    } else if (sampled) {
-        double value[6];
-        sample(&b->f, id, value);
-        memcpy(b->value[id], value, sizeof value);
-        b->known[id] = 0x3f;
-        return value[side];
+        got = cut_side(b, id, side);
     }
     b->value[id][side] = got;
     b->known[id] |= (uint8_t)(1u << side);
@@ -390,7 +442,7 @@ int csg_solid_bounds(const csg_tree *t, bbox *out)
     if (t->root == CSG_EMPTY || t->has_motion || bbox_is_empty(&t->bounds))
         return 1;
     for (int side = 0; side < 6; side++)
-        if (!isfinite(tree_side(&t->nodes[t->root], side)))
+        if (!isfinite(box_side(&t->bounds, side)))
             return 1;
     bounder b;
     memset(&b, 0, sizeof b);
