@@ -41,24 +41,21 @@ typedef struct finder {
     int out_of_memory;
 } finder;
 
-/* Adds a point of the surface to the box and to each side's seeds. */
-static void see(finder *f, const double p[3])
+/* Adds a point of the surface, found by a line of side's axis, to the
+ * side's reach and seeds. */
+static void see(finder *f, int side, const double p[3])
 {
-    for (int i = 0; i < 3; i++) {
-        f->lo[i] = fmin(f->lo[i], p[i]);
-        f->hi[i] = fmax(f->hi[i], p[i]);
-    }
-    for (int side = 0; side < 6; side++) {
-        int a = side / 2;
-        seed s = {side & 1 ? p[a] : -p[a], p[(a + 1) % 3], p[(a + 2) % 3]};
-        seed *best = f->best[side];
-        if (!(s.value > best[SEEDS - 1].value))
-            continue;
-        int k = SEEDS - 1;
-        for (; k > 0 && s.value > best[k - 1].value; k--)
-            best[k] = best[k - 1];
-        best[k] = s;
-    }
+    int a = side / 2;
+    f->lo[a] = fmin(f->lo[a], p[a]);
+    f->hi[a] = fmax(f->hi[a], p[a]);
+    seed s = {side & 1 ? p[a] : -p[a], p[(a + 1) % 3], p[(a + 2) % 3]};
+    seed *best = f->best[side];
+    if (!(s.value > best[SEEDS - 1].value))
+        return;
+    int k = SEEDS - 1;
+    for (; k > 0 && s.value > best[k - 1].value; k--)
+        best[k] = best[k - 1];
+    best[k] = s;
 }
 
 /* The line along axis a through (u, v): sees each span end, and returns
@@ -84,7 +81,7 @@ static reach line(finder *f, int a, double u, double v, int side)
                 continue;
             double p[3] = {o[0], o[1], o[2]};
             p[a] += ends[e]->t;
-            see(f, p);
+            see(f, side, p);
         }
     }
     if (s.n == 0)
@@ -123,7 +120,7 @@ static int wall_tangent(finder *f, int side, double u, double v, const reach *he
     double sign = side & 1 ? 1 : -1;
     double o[3], d[3] = {0, 0, 0};
     /* just inside: back along the axis by a millionth of the step */
-    o[a] = sign * here->value - sign * len * 1e-6;
+    o[a] = sign * here->value - sign * 1e-6 * hypot(wu, wv);
     o[ia] = u;
     o[ib] = v;
     d[ia] = wu;
@@ -268,7 +265,7 @@ static double search(finder *f, uint32_t id, bbox region, int side)
         return limit; /* out of lines: the box no search found */
     double got = side & 1 ? f->hi[a] : -f->lo[a];
     /* A span end rounded past the node's box stays inside it. */
-    return f->lo[0] <= f->hi[0] ? fmin(got, box_side(b, side)) : -INFINITY;
+    return f->lo[a] <= f->hi[a] ? fmin(got, box_side(b, side)) : -INFINITY;
 }
 
 /* What the search knows of each node: the sides found (known[id] & 1 <<
