@@ -404,7 +404,6 @@ static double side_of(bounder *b, uint32_t id, int side)
         return b->value[id][side];
     const csg_tree *t = b->f.t;
     const csg_node *n = &t->nodes[id];
-    const uint32_t *kids = t->child_ids + n->first_child;
     double got = -INFINITY;
     if (n->op == CSG_LEAF) {
         if (exact_leaf(&t->leaves[n->leaf]) || b->no_sampling)
@@ -424,7 +423,8 @@ static double side_of(bounder *b, uint32_t id, int side)
         }
         free(order);
     } else if (n->child_count == 1) {
-        got = side_of(b, kids[0], side);
+        /* (a leaf has no children: a tree of leaves alone has no child_ids) */
+        got = side_of(b, t->child_ids[n->first_child], side);
     } else {
         got = cut_side(b, id, side);
     }
