@@ -35,21 +35,19 @@ typedef struct finder {
     const csg_tree *t;
     uint32_t node;
     arena *scratch;
-    double lo[3], hi[3], centre[3];
-    seed best[6][SEEDS]; /* side 2a + 1: high along axis a; 2a: low; best first */
+    double centre[3];
+    seed best[SEEDS]; /* the farthest points of the side searched, farthest first */
     long lines_left;
     int out_of_memory;
 } finder;
 
 /* Adds a point of the surface, found by a line of side's axis, to the
- * side's reach and seeds. */
+ * side's seeds (the first is the farthest). */
 static void see(finder *f, int side, const double p[3])
 {
     int a = side / 2;
-    f->lo[a] = fmin(f->lo[a], p[a]);
-    f->hi[a] = fmax(f->hi[a], p[a]);
     seed s = {side & 1 ? p[a] : -p[a], p[(a + 1) % 3], p[(a + 2) % 3]};
-    seed *best = f->best[side];
+    seed *best = f->best;
     if (!(s.value > best[SEEDS - 1].value))
         return;
     int k = SEEDS - 1;
@@ -239,13 +237,11 @@ static double search(finder *f, uint32_t id, bbox region, int side)
     double extent = 0;
     f->node = id;
     for (int i = 0; i < 3; i++) {
-        f->lo[i] = INFINITY;
-        f->hi[i] = -INFINITY;
         f->centre[i] = (rlo[i] + rhi[i]) / 2;
         extent = fmax(extent, rhi[i] - rlo[i]);
     }
     for (int k = 0; k < SEEDS; k++)
-        f->best[side][k].value = -INFINITY;
+        f->best[k].value = -INFINITY;
     int a = side / 2, ia = (a + 1) % 3, ib = (a + 2) % 3;
     double limit = box_side(&region, side);
     if (bbox_is_empty(&region))
@@ -256,16 +252,16 @@ static double search(finder *f, uint32_t id, bbox region, int side)
             line(f, a, rlo[ia] + (i + 0.5) * cu, rlo[ib] + (j + 0.5) * cv, side);
     double tol = ldexp(extent, -26);
     seed from[SEEDS];
-    memcpy(from, f->best[side], sizeof from);
+    memcpy(from, f->best, sizeof from);
     /* on the region's box already: nothing lies farther */
     for (int k = 0; k < SEEDS && from[0].value < limit - tol && !f->out_of_memory; k++)
         if (isfinite(from[k].value))
             climb(f, side, from[k], cu, cv, tol);
     if (f->lines_left <= 0)
         return limit; /* out of lines: the box no search found */
-    double got = side & 1 ? f->hi[a] : -f->lo[a];
-    /* A span end rounded past the node's box stays inside it. */
-    return f->lo[a] <= f->hi[a] ? fmin(got, box_side(b, side)) : -INFINITY;
+    /* the farthest point seen (-INFINITY: none); a span end rounded past
+     * the node's box stays inside it */
+    return fmin(f->best[0].value, box_side(b, side));
 }
 
 /* What the search knows of each node: the sides found (known[id] & 1 <<
