@@ -107,5 +107,46 @@ grep -q "$strict_error" out.txt err.txt || fail "batch --strict: no error shown"
 check
 "$bin" --help 2>&1 | grep -q -- "--strict" || fail "--help does not name --strict"
 
+# A profile whose outlines touch at a point (two squares meeting at a
+# corner) extrudes to a mesh that is closed as built, but OpenSCAD 2021.01's
+# CGAL polyhedron builder merges the points by position, and the vertical
+# edge at the corner then has four faces: "not closed", and the extrusion
+# is left out of the difference (openscad -o x.stl prints that error, then
+# "Current top level object is empty."). Alone it is drawn as it is, and
+# exact mode takes the solid the profile bounds.
+cat >pinch.csg <<'CSG'
+difference() {
+	linear_extrude(height = 2, center = false, convexity = 1, scale = [1, 1], $fn = 0, $fa = 12, $fs = 2) {
+		square(size = [1, 1], center = false);
+		multmatrix([[1, 0, 0, 1], [0, 1, 0, 1], [0, 0, 1, 0], [0, 0, 0, 1]]) {
+			square(size = [1, 1], center = false);
+		}
+	}
+	multmatrix([[1, 0, 0, 0.2], [0, 1, 0, 0.2], [0, 0, 1, -1], [0, 0, 0, 1]]) {
+		cube(size = [0.3, 0.3, 0.3], center = false);
+	}
+}
+CSG
+pinch_warning='pinch.csg:2:2: warning: linear_extrude is not closed (edge (1, 1, 0)-(1, 1, 2) is used by 4 faces); left out, as OpenSCAD leaves it out ("The given mesh is not closed! Unable to convert to CGAL_Nef_Polyhedron.")'
+points=(--point=0.8,0.8,1 --point=1.5,1.5,1)
+expect 0 "$pinch_warning" inside pinch.csg --faithful "${points[@]}"
+[ "$(tr '\n' ' ' <out.txt)" = "out out " ] || fail "faithful pinch: $(tr '\n' ' ' <out.txt)"
+expect 0 "" inside pinch.csg "${points[@]}"
+[ "$(tr '\n' ' ' <out.txt)" = "in in " ] || fail "exact pinch: $(tr '\n' ' ' <out.txt)"
+sed -n '2,7p' pinch.csg >pinch-alone.csg
+expect 0 "" inside pinch-alone.csg --faithful "${points[@]}"
+[ "$(tr '\n' ' ' <out.txt)" = "in in " ] || fail "faithful pinch alone: $(tr '\n' ' ' <out.txt)"
+expect 1 "pinch.csg:2:2: error: linear_extrude is not closed (edge (1, 1, 0)-(1, 1, 2) is used by 4 faces)" \
+    inside pinch.csg --faithful --strict "${points[@]}"
+if command -v openscad >/dev/null; then
+    check
+    openscad -o "$PWD/pinch_os.stl" pinch.csg >/dev/null 2>pinch_os.err
+    grep -q '^ERROR: The given mesh is not closed! Unable to convert to CGAL_Nef_Polyhedron\.$' pinch_os.err &&
+        grep -q '^Current top level object is empty\.$' pinch_os.err ||
+        fail "openscad does not leave the pinched extrusion out: $(cat pinch_os.err)"
+else
+    fail "no openscad to check the pinched extrusion with"
+fi
+
 echo "$checks checks, $fails failed"
 [ "$fails" = 0 ]

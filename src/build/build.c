@@ -408,6 +408,7 @@ static sc_status faithful_mesh_leaf(builder *b, const model_node *n,
                                     uint32_t *id)
 {
     build_ctx c = context(b, state->emit, NULL);
+    c.drawn_as_is = 1; /* convex: OpenSCAD hulls it for CGAL, unchecked */
     prim p;
     const char *empty = NULL;
     sc_status st =

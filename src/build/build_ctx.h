@@ -55,8 +55,10 @@ typedef struct build_ctx {
      * warning (build_mesh_prim) */
     int strict;
     /* the leaf's mesh reaches no CGAL operation in OpenSCAD's render (it
-     * draws the mesh as it is): one that is not closed is drawn by the
-     * parity rule in faithful mode too, not left out */
+     * draws the mesh as it is), or reaches it convex (CGAL hulls it): one
+     * that is not closed is drawn by the parity rule in faithful mode too,
+     * not left out, and one closed as built is not checked again on
+     * OpenSCAD's grid (build_mesh_prim) */
     int drawn_as_is;
     /* the triangles the load's meshes may still have, of max_triangles
      * (sc_load_options.max_triangles), shared by every context of a load;

@@ -535,7 +535,10 @@ sc_status build_flat_slab(const build_ctx *c, const sc_location *loc,
         *empty = "the 2D model has no area";
         return SC_OK;
     }
-    sc_status st = extrude(c, loc, &p, r, 1, out, empty, NULL);
+    /* OpenSCAD draws a 2D result as it is, never through CGAL */
+    build_ctx drawn = *c;
+    drawn.drawn_as_is = 1;
+    sc_status st = extrude(&drawn, loc, &p, r, 1, out, empty, NULL);
     if (st == SC_OK && *empty)
         *empty = "the 2D model has no area";
     return st;

@@ -1527,8 +1527,11 @@ static sc_status emit_hull(const build_ctx *c, const model_node *n, const points
         for (uint32_t t = 0; t <= h.tri_count; t++)
             start[t] = 3 * t;
         const char *empty = NULL;
-        st = build_mesh_prim(c, &n->loc, n->name, 0, h.vertices, h.vertex_count, h.tris,
-                             start, h.tri_count, &p, &empty);
+        /* convex: OpenSCAD hulls a convex mesh for CGAL, unchecked */
+        build_ctx convex = *c;
+        convex.drawn_as_is = 1;
+        st = build_mesh_prim(&convex, &n->loc, n->name, 0, h.vertices, h.vertex_count,
+                             h.tris, start, h.tri_count, &p, &empty);
         free(start);
         if (st == SC_OK && empty)
             (*flat)++;

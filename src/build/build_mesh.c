@@ -14,10 +14,13 @@
  * as OpenSCAD leaves it out of its CGAL operations, or built with the
  * parity rule (prim_mesh.h) in exact mode, and in faithful mode where
  * OpenSCAD draws it as it is, so the user still sees it; with --strict it
- * is an error. The meshes
- * other builders make (extrusions, surface, hull: build_mesh_prim) are
- * treated the same way. The builders that take only an import's corners
- * or faces (hull, projection without cut: build_import_mesh) take one
+ * is an error. The meshes other builders make (extrusions, surface,
+ * hull: build_mesh_prim) are treated the same way; in faithful mode,
+ * where OpenSCAD hands such a mesh to CGAL, it is checked again with its
+ * points merged on the grid, as CGAL's polyhedron builder takes it (a
+ * profile pinched at a point extrudes to an edge of four faces there).
+ * The builders that take only an import's corners or faces (hull,
+ * projection without cut: build_import_mesh) take one
  * that is not closed as it is, silently, as OpenSCAD hulls and projects
  * the mesh it reads; a cut or CGAL boolean, which needs a solid, leaves it
  * out with the warning in both modes (build_import). Which way the faces
@@ -232,6 +235,29 @@ static void halves(const uint32_t *loop, uint32_t lo, uint32_t hi, uint32_t *tri
     }
 }
 
+/* Whether a builder's mesh, closed as built, is still closed where OpenSCAD
+ * 2021.01 hands it to CGAL: its polyhedron builder merges the points on
+ * the 2^-20 grid (build_mesh_merge) and skips a face that would make an
+ * edge of more than two faces, so a profile whose outlines touch at a
+ * point (a pinch) extrudes to a mesh that is "not closed". 1, 0 with why,
+ * or -1 when memory ran out. */
+static int sound_on_grid(const build_ctx *c, const sc_location *loc, const char *what,
+                         int numbered, const vec3 *points, uint32_t point_count,
+                         const uint32_t *indices, const uint32_t *face_start,
+                         uint32_t face_count, char *why, size_t size)
+{
+    build_mesh_faces f;
+    sc_error quiet = {SC_OK, "", 0, 0, ""};
+    build_ctx merge = *c;
+    merge.error = &quiet;
+    if (build_mesh_merge(&merge, loc, 0, points, point_count, indices, face_start,
+                         face_count, &f) != SC_OK)
+        return -1;
+    int sound = f.face_count ? build_mesh_sound(&f, what, numbered, why, size) : 1;
+    build_mesh_faces_free(&f);
+    return sound;
+}
+
 sc_status build_mesh_prim(const build_ctx *c, const sc_location *loc, const char *what,
                           int numbered, const vec3 *points, uint32_t point_count,
                           const uint32_t *indices, const uint32_t *face_start,
@@ -244,6 +270,9 @@ sc_status build_mesh_prim(const build_ctx *c, const sc_location *loc, const char
     char why[SC_ERROR_MESSAGE_MAX];
     int sound = mesh_sound(what, numbered, points, NULL, indices, face_start, face_count,
                            why, sizeof why);
+    if (sound > 0 && c->faithful && !c->drawn_as_is)
+        sound = sound_on_grid(c, loc, what, numbered, points, point_count, indices,
+                              face_start, face_count, why, sizeof why);
     if (sound < 0)
         return err_nomem(c->error, loc);
     if (!sound && c->strict)
