@@ -148,5 +148,85 @@ else
     fail "no openscad to check the pinched extrusion with"
 fi
 
+# linear_extrude scaled to 0 at its top (OpenSCAD 2021.01's own test
+# models, linear_extrude-scale-zero-tests.scad, each beside a cube so that
+# OpenSCAD unites them with CGAL): whether OpenSCAD leaves the extrusion
+# out ("not closed") depends on its own mesh, whose top is a point or a
+# segment, and not on the one spancast draws, which splits the walls over
+# the segment's points. A profile with a hole scaled to a point makes two
+# fans of faces at the apex, which CGAL's polyhedron builder does not take;
+# the same profile scaled onto a segment is closed. Each case: spancast
+# leaves it out with a warning exactly when openscad prints its error.
+if command -v openscad >/dev/null; then
+    shapes=(
+        'difference() {
+		square(size = [2, 2], center = true);
+		square(size = [1, 1], center = true);
+	}'
+        'multmatrix([[1, 0, 0, 1], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]) {
+		square(size = [1, 1], center = true);
+	}
+	multmatrix([[1, 0, 0, -1], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]) {
+		square(size = [1, 1], center = true);
+	}'
+        'difference() {
+		square(size = [2, 2], center = true);
+		multmatrix([[1, 0, 0, -0.5], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]) {
+			square(size = [1, 1], center = true);
+		}
+	}')
+    left_out=0 kept=0
+    for k in 0 1 2; do
+        for args in 'scale = [0, 1]' 'scale = [1, 0]' 'scale = [0, 0]' \
+            'twist = 180, scale = [0, 1]' 'twist = 180, scale = [1, 0]' \
+            'twist = 180, scale = [0, 0]'; do
+            printf 'union() {\n\tlinear_extrude(height = 3, center = false, convexity = 1, slices = 20, %s) {\n\t%s\n\t}\n\tmultmatrix([[1, 0, 0, 100], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]) {\n\t\tcube(size = [0.1, 0.1, 0.1], center = false);\n\t}\n}\n' \
+                "$args" "${shapes[$k]}" >zero.csg
+            check
+            openscad -o "$PWD/zero_os.stl" zero.csg >/dev/null 2>zero_os.err
+            "$bin" info zero.csg --faithful >/dev/null 2>zero.err
+            os=$(grep -c 'ERROR: The given mesh is not closed' zero_os.err)
+            sc=$(grep -c 'linear_extrude is not closed.*left out, as OpenSCAD leaves it out' zero.err)
+            if [ "$os" != "$sc" ]; then
+                fail "shape $k, $args: openscad's errors $os, spancast's warnings $sc"
+                cat zero.err
+            fi
+            [ "$os" = 0 ] && kept=$((kept + 1)) || left_out=$((left_out + 1))
+        done
+    done
+    echo "scale 0: $left_out left out, $kept kept"
+    # both outcomes are among the cases
+    [ "$left_out" -gt 0 ] && [ "$kept" -gt 0 ] ||
+        fail "scale 0: $left_out left out, $kept kept; the cases no longer tell the rules apart"
+else
+    fail "no openscad to compare the extrusions scaled to 0 with"
+fi
+
+# A polyhedron of two tetrahedra that meet only at a point: every edge has
+# two faces, but the faces at that point make two fans, which CGAL's
+# polyhedron builder does not take (openscad -o x.stl: "not closed", then
+# an empty model), so faithful mode leaves it out of the difference; exact
+# mode draws both solids.
+cat >fans.csg <<'CSG'
+difference() {
+	polyhedron(points = [[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1], [-1, 0, 0], [0, -1, 0], [0, 0, -1]], faces = [[0, 2, 1], [0, 1, 3], [0, 3, 2], [1, 2, 3], [0, 4, 5], [0, 6, 4], [0, 5, 6], [4, 6, 5]], convexity = 1);
+	multmatrix([[1, 0, 0, 5], [0, 1, 0, 5], [0, 0, 1, 5], [0, 0, 0, 1]]) {
+		cube(size = [0.1, 0.1, 0.1], center = false);
+	}
+}
+CSG
+points=(--point=0.2,0.2,0.2 --point=-0.2,-0.2,-0.2)
+expect 0 'fans.csg:2:2: warning: polyhedron is not closed (its faces at point 0 make more than one fan); left out, as OpenSCAD leaves it out ("The given mesh is not closed! Unable to convert to CGAL_Nef_Polyhedron.")' \
+    inside fans.csg --faithful "${points[@]}"
+[ "$(tr '\n' ' ' <out.txt)" = "out out " ] || fail "faithful fans: $(tr '\n' ' ' <out.txt)"
+expect 0 "" inside fans.csg "${points[@]}"
+[ "$(tr '\n' ' ' <out.txt)" = "in in " ] || fail "exact fans: $(tr '\n' ' ' <out.txt)"
+if command -v openscad >/dev/null; then
+    check
+    openscad -o "$PWD/fans_os.stl" fans.csg >/dev/null 2>fans_os.err
+    grep -q '^ERROR: The given mesh is not closed! Unable to convert to CGAL_Nef_Polyhedron\.$' fans_os.err ||
+        fail "openscad does not leave the polyhedron of two fans out: $(cat fans_os.err)"
+fi
+
 echo "$checks checks, $fails failed"
 [ "$fails" = 0 ]

@@ -641,7 +641,9 @@ static sc_status build_polyhedron(builder *b, const model_node *n, const frame *
     m.face_start = f.face_start;
     m.face_count = f.face_count;
     char why[8];
-    int sound = f.face_count ? build_mesh_sound(&f, "polyhedron", 1, why, sizeof why) : 1;
+    int sound = f.face_count
+                    ? build_mesh_cgal_closed(&c, &f, "polyhedron", 1, why, sizeof why)
+                    : 1;
     if (sound < 0)
         st = err_nomem(b->error, &n->loc);
     b->cgal_drops +=

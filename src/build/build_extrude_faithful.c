@@ -65,6 +65,10 @@ typedef struct mesh {
     uint32_t line_count;
     int line_axis; /* 0: the top is on the x axis, 1: on the y axis */
     uint32_t top;  /* first point of the top ring */
+    /* with a segment-shaped top (line): OpenSCAD's own faces, its triangles
+     * not split over the segment's points (what faithful mode checks is
+     * closed), or NULL */
+    struct mesh *raw;
 } mesh;
 
 /* The model's arguments (model.h), their error reported first. */
@@ -215,6 +219,8 @@ static int add_triangle(mesh *m, uint32_t a, uint32_t b, uint32_t c)
     if (a == b || b == c || c == a)
         return 1;
     uint32_t t[3] = {a, b, c};
+    if (m->raw && !add_face(m->raw, t, 3))
+        return 0;
     if (m->line) {
         for (int e = 0; e < 3; e++) {
             uint32_t u = t[e], v = t[(e + 1) % 3], w = t[(e + 2) % 3];
@@ -316,6 +322,10 @@ static void mesh_free(mesh *m)
     free(m->face_start);
     free(m->top_map);
     free(m->line);
+    if (m->raw) {
+        free(m->raw->indices);
+        free(m->raw->face_start);
+    }
 }
 
 /* Hands the mesh of m to faces: its side faces one loop each, then the
@@ -396,8 +406,12 @@ static sc_status extrude(const build_ctx *c, const sc_location *loc, const param
     double top_sy = 1 - (1 - p->sy) * slices / slices;
     int top_zero = top_sx == 0 || top_sy == 0;
     int ok = 1;
+    mesh raw;
+    memset(&raw, 0, sizeof raw);
     if (top_zero)
         ok = merge_top(&m, top_sx == 0 && top_sy == 0 ? -1 : top_sy == 0 ? 0 : 1);
+    if (ok && m.line && !faces)
+        m.raw = &raw;
     for (uint32_t j = 0; ok && j < slices; j++) {
         double rot1 = p->twist * j / slices, rot2 = p->twist * (j + 1) / slices;
         double s2x = 1 - (1 - p->sx) * (j + 1) / slices;
@@ -444,7 +458,7 @@ static sc_status extrude(const build_ctx *c, const sc_location *loc, const param
             continue;
         for (uint32_t i = 0; i < len; i++)
             face[i] = vertex(&m, 0, s + i);
-        ok = add_face(&m, face, len);
+        ok = add_face(&m, face, len) && (!m.raw || add_face(m.raw, face, len));
         if (ok && !top_zero) {
             for (uint32_t i = 0; i < len; i++)
                 face[i] = vertex(&m, slices, s + len - 1 - i);
@@ -459,9 +473,14 @@ static sc_status extrude(const build_ctx *c, const sc_location *loc, const param
         st = take_faces(&m, (uint32_t)total, cap_first, top_zero, faces)
                  ? SC_OK
                  : err_nomem(c->error, loc);
-    else
-        st = build_mesh_prim(c, loc, "linear_extrude", 0, m.points, (uint32_t)total,
-                             m.indices, m.face_start, (uint32_t)m.face_count, out, empty);
+    else {
+        const mesh *own = m.raw ? m.raw : &m;
+        build_mesh_checks openscad = {own->indices, own->face_start,
+                                      (uint32_t)own->face_count};
+        st = build_mesh_prim_checked(c, loc, "linear_extrude", 0, m.points,
+                                     (uint32_t)total, m.indices, m.face_start,
+                                     (uint32_t)m.face_count, &openscad, out, empty);
+    }
     if (st == SC_OK && *empty && (*empty)[0]) /* "": left out, with its warning */
         *empty = "linear_extrude without height or area is empty";
     mesh_free(&m);

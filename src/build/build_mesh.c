@@ -235,12 +235,81 @@ static void halves(const uint32_t *loop, uint32_t lo, uint32_t hi, uint32_t *tri
     }
 }
 
+/* A corner of a face at point v, between the points before and after it. */
+typedef struct corner {
+    uint32_t v, prev, next;
+} corner;
+
+static int corner_cmp(const void *a, const void *b)
+{
+    const corner *x = a, *y = b;
+    if (x->v != y->v)
+        return x->v < y->v ? -1 : 1;
+    return x->prev < y->prev ? -1 : x->prev > y->prev;
+}
+
+/* On a mesh whose edges are sound (mesh_sound): whether the faces about
+ * each point make one fan, as CGAL's polyhedron builder needs (it skips a
+ * face that would join a second fan to a point, so such a mesh comes out
+ * "not closed"): 1, 0 with the point in why, -1 when memory ran out. Going
+ * round a point, the corner whose next point is b is followed by the one
+ * whose previous point is b. */
+static int fans_whole(const build_mesh_faces *f, const char *what, int numbered,
+                      char *why, size_t size)
+{
+    uint32_t total = f->face_start[f->face_count];
+    corner *cs = malloc((size_t)(total ? total : 1) * sizeof *cs);
+    if (!cs)
+        return -1;
+    size_t n = 0;
+    for (uint32_t k = 0; k < f->face_count; k++) {
+        uint32_t s = f->face_start[k], e = f->face_start[k + 1];
+        for (uint32_t i = s; i < e; i++)
+            cs[n++] = (corner){f->indices[i], f->indices[i > s ? i - 1 : e - 1],
+                               f->indices[i + 1 < e ? i + 1 : s]};
+    }
+    qsort(cs, n, sizeof *cs, corner_cmp);
+    int whole = 1;
+    for (size_t lo = 0; lo < n && whole;) {
+        size_t hi = lo;
+        while (hi < n && cs[hi].v == cs[lo].v)
+            hi++;
+        size_t at = lo, steps = 0;
+        do {
+            corner key = {cs[lo].v, cs[at].next, 0};
+            const corner *to = bsearch(&key, cs + lo, hi - lo, sizeof *cs, corner_cmp);
+            if (!to)
+                break;
+            at = (size_t)(to - cs);
+            steps++;
+        } while (at != lo && steps <= hi - lo);
+        if (at != lo || steps != hi - lo) {
+            vec3 p = f->points[cs[lo].v];
+            if (numbered && f->names)
+                snprintf(
+                    why, size,
+                    "%s is not closed (its faces at point %u make more than one fan)",
+                    what, f->names[cs[lo].v]);
+            else
+                snprintf(why, size,
+                         "%s is not closed (its faces at (%g, %g, %g) make more than one "
+                         "fan)",
+                         what, p.x, p.y, p.z);
+            whole = 0;
+        }
+        lo = hi;
+    }
+    free(cs);
+    return whole;
+}
+
 /* Whether a builder's mesh, closed as built, is still closed where OpenSCAD
  * 2021.01 hands it to CGAL: its polyhedron builder merges the points on
- * the 2^-20 grid (build_mesh_merge) and skips a face that would make an
- * edge of more than two faces, so a profile whose outlines touch at a
- * point (a pinch) extrudes to a mesh that is "not closed". 1, 0 with why,
- * or -1 when memory ran out. */
+ * the 2^-20 grid (build_mesh_merge) and skips a face that would give an
+ * edge a third face or a point a second fan of faces, so a profile whose
+ * outlines touch at a point (a pinch) extrudes to a mesh that is "not
+ * closed", as does one scaled to a point over a profile with a hole. 1, 0
+ * with why, or -1 when memory ran out. */
 static int sound_on_grid(const build_ctx *c, const sc_location *loc, const char *what,
                          int numbered, const vec3 *points, uint32_t point_count,
                          const uint32_t *indices, const uint32_t *face_start,
@@ -254,6 +323,8 @@ static int sound_on_grid(const build_ctx *c, const sc_location *loc, const char 
                          face_count, &f) != SC_OK)
         return -1;
     int sound = f.face_count ? build_mesh_sound(&f, what, numbered, why, size) : 1;
+    if (sound > 0 && f.face_count)
+        sound = fans_whole(&f, what, numbered, why, size);
     build_mesh_faces_free(&f);
     return sound;
 }
@@ -263,21 +334,38 @@ sc_status build_mesh_prim(const build_ctx *c, const sc_location *loc, const char
                           const uint32_t *indices, const uint32_t *face_start,
                           uint32_t face_count, prim *out, const char **empty)
 {
+    build_mesh_checks as_built = {indices, face_start, face_count};
+    return build_mesh_prim_checked(c, loc, what, numbered, points, point_count, indices,
+                                   face_start, face_count, &as_built, out, empty);
+}
+
+sc_status build_mesh_prim_checked(const build_ctx *c, const sc_location *loc,
+                                  const char *what, int numbered, const vec3 *points,
+                                  uint32_t point_count, const uint32_t *indices,
+                                  const uint32_t *face_start, uint32_t face_count,
+                                  const build_mesh_checks *openscad, prim *out,
+                                  const char **empty)
+{
     size_t tri_count;
     sc_status st = charge_fans(c, loc, what, face_start, face_count, &tri_count);
     if (st != SC_OK)
         return st;
     char why[SC_ERROR_MESSAGE_MAX];
+    /* sound: the mesh drawn takes the winding rule, else parity; closed:
+     * OpenSCAD's mesh is, which a mended one is as built (its splits may
+     * give an edge four faces) */
     int sound = mesh_sound(what, numbered, points, NULL, indices, face_start, face_count,
                            why, sizeof why);
-    if (sound > 0 && c->faithful && !c->drawn_as_is)
-        sound = sound_on_grid(c, loc, what, numbered, points, point_count, indices,
-                              face_start, face_count, why, sizeof why);
-    if (sound < 0)
+    int closed = openscad->indices != indices ? (sound >= 0) : sound;
+    if (closed > 0 && c->faithful && !c->drawn_as_is)
+        closed =
+            sound_on_grid(c, loc, what, numbered, points, point_count, openscad->indices,
+                          openscad->face_start, openscad->face_count, why, sizeof why);
+    if (sound < 0 || closed < 0)
         return err_nomem(c->error, loc);
-    if (!sound && c->strict)
+    if (!closed && c->strict)
         return err_set(c->error, SC_ERR_SEMANTIC, loc, "%s", why);
-    if (!sound && c->faithful && !c->drawn_as_is) {
+    if (!closed && c->faithful && !c->drawn_as_is) {
         *empty = ""; /* the reason is the warning */
         return build_note(c, loc, "%s; left out, as OpenSCAD leaves it out (\"%s\")", why,
                           build_openscad_not_closed);
@@ -301,7 +389,7 @@ sc_status build_mesh_prim(const build_ctx *c, const sc_location *loc, const char
     }
     st = finish_mesh(c, loc, numbered, points, point_count, tris, k, !sound, out, empty);
     free(tris);
-    if (st == SC_OK && !sound && !*empty)
+    if (st == SC_OK && !closed && !*empty)
         st = build_note(
             c, loc, "%s; rendered by the parity rule (--strict makes it an error)", why);
     return st;
@@ -1652,6 +1740,15 @@ int build_mesh_sound(const build_mesh_faces *f, const char *what, int numbered, 
                       f->face_count, why, size);
 }
 
+int build_mesh_cgal_closed(const build_ctx *c, const build_mesh_faces *f,
+                           const char *what, int numbered, char *why, size_t size)
+{
+    int sound = build_mesh_sound(f, what, numbered, why, size);
+    return sound > 0 && c->faithful && !c->drawn_as_is
+               ? fans_whole(f, what, numbered, why, size)
+               : sound;
+}
+
 /* OpenSCAD's number of each point of f as its tessellation numbers them
  * (tessellate_faces): in the order it first meets them, face by face, each
  * face as OpenSCAD holds it (back to front when reversed). malloc'd; NULL
@@ -1713,11 +1810,14 @@ sc_status build_mesh_solid(const build_ctx *c, const sc_location *loc, const cha
         return charged;
     char why[SC_ERROR_MESSAGE_MAX - 160];
     int sound = build_mesh_sound(f, what, numbered, why, sizeof why);
-    if (sound < 0)
+    int closed = sound > 0 && c->faithful && !c->drawn_as_is
+                     ? fans_whole(f, what, numbered, why, sizeof why)
+                     : sound;
+    if (sound < 0 || closed < 0)
         return err_nomem(c->error, loc);
-    if (!sound && (strict || !c->note))
+    if (!closed && (strict || !c->note))
         return err_set(c->error, SC_ERR_SEMANTIC, loc, "%s", why);
-    if (!sound && c->faithful && !c->drawn_as_is) {
+    if (!closed && c->faithful && !c->drawn_as_is) {
         err_set(c->note, SC_OK, loc, "%s; left out, as OpenSCAD leaves it out (\"%s\")",
                 why, build_openscad_not_closed);
         *empty = "";

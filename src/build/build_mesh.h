@@ -33,6 +33,29 @@ sc_status build_mesh_prim(const build_ctx *c, const sc_location *loc, const char
                           const uint32_t *indices, const uint32_t *face_start,
                           uint32_t face_count, prim *out, const char **empty);
 
+/* The faces of OpenSCAD 2021.01's own mesh on a builder's points, where the
+ * builder mends it into another (a linear_extrude scaled to 0 at its top,
+ * whose collapsed walls it splits): what faithful mode checks is closed
+ * where OpenSCAD hands the mesh to CGAL. */
+typedef struct build_mesh_checks {
+    const uint32_t *indices, *face_start;
+    uint32_t face_count;
+} build_mesh_checks;
+
+/* build_mesh_prim drawing one mesh and checking another: in faithful mode,
+ * where OpenSCAD hands the mesh to CGAL (not c->drawn_as_is), a mesh
+ * closed as built is left out (or with c->strict an error) when openscad's
+ * faces, their points merged on OpenSCAD's grid, are not closed as CGAL's
+ * polyhedron builder takes them: an edge of more than two faces, or a
+ * point whose faces make more than one fan. build_mesh_prim checks its own
+ * faces so. */
+sc_status build_mesh_prim_checked(const build_ctx *c, const sc_location *loc,
+                                  const char *what, int numbered, const vec3 *points,
+                                  uint32_t point_count, const uint32_t *indices,
+                                  const uint32_t *face_start, uint32_t face_count,
+                                  const build_mesh_checks *openscad, prim *out,
+                                  const char **empty);
+
 /* A closed mesh as its faces: a polyhedron's or an imported mesh's on merged
  * points (build_mesh_merge, with names), or a builder's for CGAL (nef.h's
  * from_mesh: extrusions, surface, imports), whose faces may have holes (with
@@ -73,6 +96,13 @@ void build_mesh_faces_free(build_mesh_faces *f);
  * names the node); -1 when memory ran out. */
 int build_mesh_sound(const build_mesh_faces *f, const char *what, int numbered, char *why,
                      size_t size);
+/* build_mesh_sound, and where faithful mode hands f to CGAL (c->faithful,
+ * not c->drawn_as_is) also whole fans: the faces about each point make
+ * one fan, as CGAL's polyhedron builder needs (it skips a face that would
+ * give a point a second fan, so OpenSCAD 2021.01 finds such a mesh "not
+ * closed"). */
+int build_mesh_cgal_closed(const build_ctx *c, const build_mesh_faces *f,
+                           const char *what, int numbered, char *why, size_t size);
 
 /* The leaf of a polyhedron or an imported mesh on merged faces: faces that
  * are not planar split as OpenSCAD 2021.01 splits them
