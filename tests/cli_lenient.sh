@@ -59,6 +59,30 @@ nefmeet.csg:4:3: warning: Ignoring 2D child object for 3D operation
 nefmeet.csg:1:1: warning: the 2D model has no area
 nefmeet.csg: warning: the model is empty (nothing to render)"
 
+# A difference that cuts everything away: OpenSCAD 2021.01's render says
+# "Current top level object is empty." (openscad -o x.stl); spancast's
+# tree is not empty, but no ray of the search for the solid's box meets
+# it, which it says in both modes. One that leaves a part keeps quiet.
+cat >cutaway.csg <<'M'
+difference() {
+	cube(size = [5, 5, 5], center = false);
+	multmatrix([[1, 0, 0, -1], [0, 1, 0, -1], [0, 0, 1, -1], [0, 0, 0, 1]]) {
+		cube(size = [10, 10, 10], center = false);
+	}
+}
+M
+cutaway="cutaway.csg: warning: no ray of a search across the model's box meets the solid: its operations leave it empty, or nearly"
+warns cutaway.csg "$cutaway"
+warns cutaway.csg "$cutaway" --faithful
+sed 's/size = \[10, 10, 10\]/size = [10, 10, 5.5]/' cutaway.csg >cutpart.csg
+warns cutpart.csg ""
+if command -v openscad >/dev/null; then
+    check
+    openscad -o "$PWD/cutaway_os.stl" cutaway.csg >/dev/null 2>cutaway_os.err
+    grep -q '^Current top level object is empty\.$' cutaway_os.err ||
+        fail "openscad does not find the cut-away model empty: $(cat cutaway_os.err)"
+fi
+
 # ---- a 2D model: flat at z = 0 in the render, in colour, mask and depth ----
 # (the slab 1 thick about z = 0 that OpenSCAD's preview draws is what
 # measure and the preview see: cli_check.sh, cli_preview.sh)

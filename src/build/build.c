@@ -1812,9 +1812,16 @@ static sc_status build_scene_of(const model *m, model *owned, void *spare,
     if (st == SC_OK)
         st = check_extent(*out, named, error);
     if (st == SC_OK && look && !b.shading->flat_2d) {
-        if (!csg_solid_bounds(*out, &b.shading->solid_box))
+        int met = 1;
+        if (!csg_solid_bounds(*out, &b.shading->solid_box, &met))
             st = err_nomem(error, NULL);
         b.shading->has_solid_box = 1;
+        /* OpenSCAD: "Current top level object is empty." */
+        sc_location model = {b.file, 0, 0};
+        if (st == SC_OK && !met && (*out)->root != CSG_EMPTY)
+            st = warn(&b, &model,
+                      "no ray of a search across the model's box meets the solid: its "
+                      "operations leave it empty, or nearly");
     }
     if (st != SC_OK) {
         if (*out)

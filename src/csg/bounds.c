@@ -429,9 +429,10 @@ static double side_of(bounder *b, uint32_t id, int side)
     return got;
 }
 
-int csg_solid_bounds(const csg_tree *t, bbox *out)
+int csg_solid_bounds(const csg_tree *t, bbox *out, int *met)
 {
     *out = t->bounds;
+    *met = 1;
     if (t->root == CSG_EMPTY || t->has_motion || bbox_is_empty(&t->bounds))
         return 1;
     for (int side = 0; side < 6; side++)
@@ -460,8 +461,10 @@ int csg_solid_bounds(const csg_tree *t, bbox *out)
     if (!ok)
         return 0;
     for (int side = 0; side < 6; side++)
-        if (!isfinite(got[side]))
-            return 1; /* no line met the solid */
+        if (!isfinite(got[side])) {
+            *met = 0; /* no line met the solid */
+            return 1;
+        }
     out->lo = v3(-got[0], -got[2], -got[4]);
     out->hi = v3(got[1], got[3], got[5]);
     return 1;

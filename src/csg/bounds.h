@@ -40,7 +40,9 @@
 
 /* The solid's box into *out: the tree's box where the tree is empty, moves
  * (its box then holds every time's), is not finite, or no line met it.
- * Returns 0 when memory ran out (*out is then the tree's box). */
-int csg_solid_bounds(const csg_tree *t, bbox *out);
+ * *met is 0 where a search ran and no line met the solid (a cut that
+ * leaves nothing, or a solid thinner than the grids in two directions),
+ * else 1. Returns 0 when memory ran out (*out is then the tree's box). */
+int csg_solid_bounds(const csg_tree *t, bbox *out, int *met);
 
 #endif
