@@ -170,7 +170,9 @@ done < <(echo "$names" | sed "s/', '/\n/g; s/^'//; s/'$//")
 # before the '#' parts, with depth writes. A '#' operand of a union with
 # others is left out of the solid, and the highlight is the term where it
 # stops (a difference whose first operand is '#'); a '#' on a '%' node,
-# and the '#' and '%' children of a hull, are parts too. An intersection
+# and the '#' and '%' children of a hull, are parts too. A '#' operand of
+# a union with others inside a '%' is left out of the '%' part as out of
+# the solid: red only, not red over grey. An intersection
 # is framed by its operands' boxes. A render() is one mesh: in the colour
 # from above it, the walls of holes cut inside it in the face colour, all
 # of it in the cut-out colour where it is subtracted (with the convexity
@@ -196,6 +198,7 @@ scenes=(
     'intersection() { #cube(10); sphere(7); } translate([15, 0, 0]) cube(5);'
     'translate([0, 0, 0]) { #cube(5); } sphere(2);'
     'cube(1); %translate([0, 8, 0]) #cube(4);'
+    '%union() { cube(5); #translate([6, 0, 0]) cube(3); } sphere(2);'
     '#cube(5); #translate([8, 0, 0]) cube(5);'
     '%#cube(10);'
     'hull() { cube(5, center = true); %translate([20, 0, 0]) sphere(4, $fn = 20); }'

@@ -1553,6 +1553,11 @@ static sc_status build_parts(builder *b)
         preview_builder(b, &sub, &error);
         /* the parts' meshes have what is left of the model's budget */
         sub.triangles_left = b->triangles_left;
+        /* a '%' part is the term OpenSCAD's evaluator makes of its node, from
+         * which a union with operands of both kinds has taken its
+         * highlighted ones (drawn as '#' parts only): `%union() { a();
+         * #b(); }` draws b red, not grey under red */
+        sub.drop_highlighted = kind == SHADING_OVERLAY_BACKGROUND;
         sub.csg = csg_builder_new();
         sub.shading = shading_new();
         uint32_t *results = calloc(count, sizeof *results);
