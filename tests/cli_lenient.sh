@@ -76,6 +76,14 @@ warns cutaway.csg "$cutaway"
 warns cutaway.csg "$cutaway" --faithful
 sed 's/size = \[10, 10, 10\]/size = [10, 10, 5.5]/' cutaway.csg >cutpart.csg
 warns cutpart.csg ""
+# A slab 0.001 thick left at the bottom is met only by the lines along z:
+# no warning, and the frame is the slab's (its other sides the tree's).
+sed 's/\[0, 0, 1, -1\]/[0, 0, 1, 0.001]/' cutaway.csg >cutslab.csg
+warns cutslab.csg ""
+check
+"$bin" info cutslab.csg >info.txt 2>&1
+grep -q '^frame:  \[0, 0, 0\] to \[5, 5, 0.001\] ' info.txt ||
+    fail "cutslab.csg: $(grep frame info.txt)"
 if command -v openscad >/dev/null; then
     check
     openscad -o "$PWD/cutaway_os.stl" cutaway.csg >/dev/null 2>cutaway_os.err

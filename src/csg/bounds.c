@@ -460,11 +460,15 @@ int csg_solid_bounds(const csg_tree *t, bbox *out, int *met)
     arena_free(&scratch);
     if (!ok)
         return 0;
-    for (int side = 0; side < 6; side++)
-        if (!isfinite(got[side])) {
-            *met = 0; /* no line met the solid */
-            return 1;
-        }
+    /* a side no line met keeps the tree's (a slab thinner than the grid
+     * across it is met only by the lines along its thickness) */
+    int found = 0;
+    for (int side = 0; side < 6; side++) {
+        found += isfinite(got[side]) != 0;
+        if (!isfinite(got[side]))
+            got[side] = box_side(&t->bounds, side);
+    }
+    *met = found > 0;
     out->lo = v3(-got[0], -got[2], -got[4]);
     out->hi = v3(got[1], got[3], got[5]);
     return 1;

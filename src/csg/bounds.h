@@ -39,10 +39,12 @@
 #include "csg/csg.h"
 
 /* The solid's box into *out: the tree's box where the tree is empty, moves
- * (its box then holds every time's), is not finite, or no line met it.
- * *met is 0 where a search ran and no line met the solid (a cut that
- * leaves nothing, or a solid thinner than the grids in two directions),
- * else 1. Returns 0 when memory ran out (*out is then the tree's box). */
+ * (its box then holds every time's) or is not finite; a side that no line
+ * met keeps the tree's side (a slab thinner than the grid across it is met
+ * only by the lines along its thickness). *met is 0 where a search ran and
+ * no line met the solid on any side (a cut that leaves nothing, or a
+ * solid thinner than a grid cell in two directions), else 1. Returns 0
+ * when memory ran out (*out is then the tree's box). */
 int csg_solid_bounds(const csg_tree *t, bbox *out, int *met);
 
 #endif
