@@ -136,6 +136,31 @@ expect 0 "" inside pinch.csg "${points[@]}"
 sed -n '2,7p' pinch.csg >pinch-alone.csg
 expect 0 "" inside pinch-alone.csg --faithful "${points[@]}"
 [ "$(tr '\n' ' ' <out.txt)" = "in in " ] || fail "faithful pinch alone: $(tr '\n' ' ' <out.txt)"
+# A hull takes the pinched extrusion's corners, as OpenSCAD's does.
+printf 'hull() {\n%s\n}\n' "$(cat pinch-alone.csg)" >pinch-hull.csg
+expect 0 "" inside pinch-hull.csg --faithful --point=1.2,0.5,1 --point=3,0.5,1
+[ "$(tr '\n' ' ' <out.txt)" = "in out " ] || fail "hull of the pinch: $(tr '\n' ' ' <out.txt)"
+# A render() of one child takes its mesh as it is (OpenSCAD's RenderNode
+# unites its children as a group does: one is no CGAL operation); a
+# minkowski() makes a Nef polyhedron of each operand, and OpenSCAD's is
+# empty when one is not closed.
+printf 'render(convexity = 1) {\n%s\n}\n' "$(cat pinch-alone.csg)" >pinch-render.csg
+expect 0 "" inside pinch-render.csg --faithful --point=0.5,0.5,1
+[ "$(cat out.txt)" = in ] || fail "render() of the pinch: $(cat out.txt)"
+printf 'minkowski(convexity = 0) {\n%s\n\tcube(size = [0.1, 0.1, 0.1], center = false);\n}\n' \
+    "$(cat pinch-alone.csg)" >pinch-minkowski.csg
+expect 0 'pinch-minkowski.csg:2:2: warning: linear_extrude is not closed (edge (1, 1, 0)-(1, 1, 2) is used by 4 faces); left out, as OpenSCAD leaves it out ("The given mesh is not closed! Unable to convert to CGAL_Nef_Polyhedron.")' \
+    inside pinch-minkowski.csg --faithful --point=0.5,0.5,1 --point=0.05,0.05,0.05
+[ "$(tr '\n' ' ' <out.txt)" = "out out " ] || fail "minkowski of the pinch: $(tr '\n' ' ' <out.txt)"
+if command -v openscad >/dev/null; then
+    for m in pinch-render pinch-minkowski; do
+        check
+        openscad -o "$PWD/${m}_os.stl" $m.csg >/dev/null 2>${m}_os.err
+    done
+    grep -q 'not closed' pinch-render_os.err && fail "openscad: $(cat pinch-render_os.err)"
+    grep -q '^Current top level object is empty\.$' pinch-minkowski_os.err ||
+        fail "openscad does not empty the minkowski: $(cat pinch-minkowski_os.err)"
+fi
 expect 1 "pinch.csg:2:2: error: linear_extrude is not closed (edge (1, 1, 0)-(1, 1, 2) is used by 4 faces)" \
     inside pinch.csg --faithful --strict "${points[@]}"
 if command -v openscad >/dev/null; then
@@ -221,7 +246,28 @@ expect 0 'fans.csg:2:2: warning: polyhedron is not closed (its faces at point 0 
 [ "$(tr '\n' ' ' <out.txt)" = "out out " ] || fail "faithful fans: $(tr '\n' ' ' <out.txt)"
 expect 0 "" inside fans.csg "${points[@]}"
 [ "$(tr '\n' ' ' <out.txt)" = "in in " ] || fail "exact fans: $(tr '\n' ' ' <out.txt)"
+# A cut needs the polyhedron's Nef polyhedron, in both modes: left out.
+cat >fans-cut.csg <<'CSG'
+linear_extrude(height = 1, center = false, convexity = 1, scale = [1, 1], $fn = 0, $fa = 12, $fs = 2) {
+	projection(cut = true, convexity = 0) {
+		multmatrix([[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0.3], [0, 0, 0, 1]]) {
+			polyhedron(points = [[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1], [-1, 0, 0], [0, -1, 0], [0, 0, -1]], faces = [[0, 2, 1], [0, 1, 3], [0, 3, 2], [1, 2, 3], [0, 4, 5], [0, 6, 4], [0, 5, 6], [4, 6, 5]], convexity = 1);
+		}
+	}
+}
+CSG
+for mode in faithful exact; do
+    flags=()
+    [ $mode = faithful ] && flags=(--faithful)
+    expect 0 'fans-cut.csg:4:4: warning: polyhedron is not closed (its faces at point 0 make more than one fan); left out, as OpenSCAD leaves it out ("The given mesh is not closed! Unable to convert to CGAL_Nef_Polyhedron.")' \
+        inside fans-cut.csg "${flags[@]}" --point=-0.1,-0.1,0.5
+    [ "$(cat out.txt)" = out ] || fail "cut of the fans ($mode): $(cat out.txt)"
+done
 if command -v openscad >/dev/null; then
+    check
+    openscad -o "$PWD/fans-cut_os.stl" fans-cut.csg >/dev/null 2>fans-cut_os.err
+    grep -q '^ERROR: The given mesh is not closed' fans-cut_os.err ||
+        fail "openscad cuts the polyhedron of two fans: $(cat fans-cut_os.err)"
     check
     openscad -o "$PWD/fans_os.stl" fans.csg >/dev/null 2>fans_os.err
     grep -q '^ERROR: The given mesh is not closed! Unable to convert to CGAL_Nef_Polyhedron\.$' fans_os.err ||

@@ -1126,10 +1126,10 @@ static sc_status mark_operands(builder *b, const model_node *n, const frame *f)
 
 /* Whether OpenSCAD 2021.01's render hands the results of the nodes first
  * (a list of siblings) to CGAL: where two or more of them are operands,
- * not '%' (its applyToChildren3D is a no-op for one). (Under a render(),
- * whose mesh OpenSCAD builds with CGAL too, enter_render sets the frame's
- * cgal.) A mesh that is not closed is left out where its result meets
- * CGAL, and drawn as it is where nothing hands it to CGAL. */
+ * not '%' (its applyToChildren3D is a no-op for one): a render() unites
+ * its children so too, and takes one child's mesh as it is. A mesh that
+ * is not closed is left out where its result meets CGAL, and drawn as it
+ * is where nothing hands it to CGAL. */
 static int to_cgal(const model_node *first)
 {
     int operands = 0;
@@ -1255,7 +1255,6 @@ static sc_status visit_leaf(builder *b, const model_node *n, const frame *f)
 static void enter_render(builder *b, frame *f)
 {
     f->children_lost = 1;
-    f->cgal = 1;
     if (!b->preview) {
         b->renders += f->emit && f->shown;
     } else if (!f->in_render) {

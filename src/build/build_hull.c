@@ -386,6 +386,11 @@ static sc_status mesh_prim(const walk *w, const model_node *n, prim *out,
     memset(out, 0, sizeof *out);
     build_ctx fc = *w->c;
     fc.faithful = 1;
+    /* a hull takes an extrusion's corners, closed or not; where OpenSCAD
+     * makes a Nef polyhedron of it (a minkowski's operand, a union of
+     * several), one its builder does not take (a pinched profile) is left
+     * out, and a minkowski's empties the minkowski (closed_check) */
+    fc.drawn_as_is = !w->in_union && !w->not_closed;
     model_kind kind = n->kind;
     if ((kind == MODEL_IMPORT || kind == MODEL_SURFACE) && n->pending)
         return build_pending(w->c, n);
@@ -395,9 +400,12 @@ static sc_status mesh_prim(const walk *w, const model_node *n, prim *out,
         return build_import_summand(w->c, n->u.import, out, empty);
     if (kind == MODEL_IMPORT)
         return build_import_mesh(w->c, n->u.import, out, empty);
-    if (kind == MODEL_ROTATE_EXTRUDE)
-        return build_rotate_extrude(&fc, n, 1, out, empty);
-    return build_linear_extrude(&fc, n, 1, out, empty);
+    sc_status st = kind == MODEL_ROTATE_EXTRUDE
+                       ? build_rotate_extrude(&fc, n, 1, out, empty)
+                       : build_linear_extrude(&fc, n, 1, out, empty);
+    if (st == SC_OK && *empty && !(*empty)[0] && w->not_closed && !w->in_union)
+        *w->not_closed = 1; /* left out, with its warning */
+    return st;
 }
 
 static sc_status mesh_points(const walk *w, const model_node *n, const affine *m,
@@ -460,10 +468,10 @@ static sc_status closed_check(const walk *w, const model_node *n, int *open)
         st = build_import_faces(&quiet, n->u.import, &empty, &f);
     }
     char why[SC_ERROR_MESSAGE_MAX - 160];
-    int sound =
-        st != SC_OK || empty || !f.face_count
-            ? 1
-            : build_mesh_sound(&f, what, n->kind == MODEL_POLYHEDRON, why, sizeof why);
+    int sound = st != SC_OK || empty || !f.face_count
+                    ? 1
+                    : build_mesh_cgal_sound(&f, what, n->kind == MODEL_POLYHEDRON, why,
+                                            sizeof why);
     build_mesh_faces_free(&f);
     if (st != SC_OK) { /* the leaf's own error, found again where it is built */
         err_clear(c->error);

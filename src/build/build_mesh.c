@@ -1740,13 +1740,19 @@ int build_mesh_sound(const build_mesh_faces *f, const char *what, int numbered, 
                       f->face_count, why, size);
 }
 
+int build_mesh_cgal_sound(const build_mesh_faces *f, const char *what, int numbered,
+                          char *why, size_t size)
+{
+    int sound = build_mesh_sound(f, what, numbered, why, size);
+    return sound > 0 ? fans_whole(f, what, numbered, why, size) : sound;
+}
+
 int build_mesh_cgal_closed(const build_ctx *c, const build_mesh_faces *f,
                            const char *what, int numbered, char *why, size_t size)
 {
-    int sound = build_mesh_sound(f, what, numbered, why, size);
-    return sound > 0 && c->faithful && !c->drawn_as_is
-               ? fans_whole(f, what, numbered, why, size)
-               : sound;
+    return c->faithful && !c->drawn_as_is
+               ? build_mesh_cgal_sound(f, what, numbered, why, size)
+               : build_mesh_sound(f, what, numbered, why, size);
 }
 
 /* OpenSCAD's number of each point of f as its tessellation numbers them

@@ -96,11 +96,14 @@ void build_mesh_faces_free(build_mesh_faces *f);
  * names the node); -1 when memory ran out. */
 int build_mesh_sound(const build_mesh_faces *f, const char *what, int numbered, char *why,
                      size_t size);
-/* build_mesh_sound, and where faithful mode hands f to CGAL (c->faithful,
- * not c->drawn_as_is) also whole fans: the faces about each point make
- * one fan, as CGAL's polyhedron builder needs (it skips a face that would
- * give a point a second fan, so OpenSCAD 2021.01 finds such a mesh "not
- * closed"). */
+/* build_mesh_sound and whole fans: the faces about each point make one
+ * fan, as CGAL's polyhedron builder needs (it skips a face that would give
+ * a point a second fan, so OpenSCAD 2021.01 finds such a mesh "not
+ * closed", and a Nef polyhedron of one fails). */
+int build_mesh_cgal_sound(const build_mesh_faces *f, const char *what, int numbered,
+                          char *why, size_t size);
+/* build_mesh_cgal_sound where faithful mode hands f to CGAL (c->faithful,
+ * not c->drawn_as_is), else build_mesh_sound. */
 int build_mesh_cgal_closed(const build_ctx *c, const build_mesh_faces *f,
                            const char *what, int numbered, char *why, size_t size);
 

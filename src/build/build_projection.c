@@ -272,10 +272,12 @@ static int mesh_soup(const prim *p, soup *s)
  * cut, a polyhedron or import that is not closed is projected as it is,
  * silently, in both modes (and with --strict): OpenSCAD 2021.01 projects
  * the faces of the mesh it has without asking that it be closed. A cut
- * needs a solid: an import that is not closed is left out with OpenSCAD's
- * message as a warning (build_import), as its Nef polyhedron cannot be
- * made. Inside a hull, which takes only the corners, a mesh is taken as
- * it is in a cut too, as OpenSCAD hulls the mesh and cuts the hull. */
+ * needs a solid: a polyhedron or import that is not closed (for a
+ * polyhedron, also one whose faces at a point make two fans) is left out
+ * with OpenSCAD's message as a warning, in both modes (build_import), as
+ * its Nef polyhedron cannot be made. Inside a hull, which takes only the
+ * corners, a mesh is taken as it is in a cut too, as OpenSCAD hulls the
+ * mesh and cuts the hull. */
 static sc_status built_soup(const pwalk *w, const model_node *n, soup *s)
 {
     const build_ctx *c = w->c;
@@ -284,6 +286,10 @@ static sc_status built_soup(const pwalk *w, const model_node *n, soup *s)
     build_ctx fc = *c;
     fc.faithful = 1;
     int solid = w->cut && !w->corners;
+    build_ctx cut = *c; /* a cut needs the polyhedron's Nef polyhedron, in
+                         * both modes, as CGAL's builder takes it */
+    cut.faithful = 1;
+    cut.drawn_as_is = 0;
     build_ctx loose = *c; /* the parity rule, without a warning */
     loose.faithful = 0;
     loose.strict = 0;
@@ -296,7 +302,7 @@ static sc_status built_soup(const pwalk *w, const model_node *n, soup *s)
     case MODEL_POLYHEDRON:
         if ((st = build_bad_indices(c, n)) != SC_OK || n->u.polyhedron.face_count == 0)
             return st;
-        st = build_mesh_prim(solid ? c : &loose, &n->loc, "polyhedron", 1,
+        st = build_mesh_prim(solid ? &cut : &loose, &n->loc, "polyhedron", 1,
                              n->u.polyhedron.points, n->u.polyhedron.point_count,
                              n->u.polyhedron.indices, n->u.polyhedron.face_start,
                              n->u.polyhedron.face_count, &p, &empty);
