@@ -322,9 +322,7 @@ static int sound_on_grid(const build_ctx *c, const sc_location *loc, const char 
     if (build_mesh_merge(&merge, loc, 0, points, point_count, indices, face_start,
                          face_count, &f) != SC_OK)
         return -1;
-    int sound = f.face_count ? build_mesh_sound(&f, what, numbered, why, size) : 1;
-    if (sound > 0 && f.face_count)
-        sound = fans_whole(&f, what, numbered, why, size);
+    int sound = f.face_count ? build_mesh_cgal_sound(&f, what, numbered, why, size) : 1;
     build_mesh_faces_free(&f);
     return sound;
 }
