@@ -241,7 +241,7 @@ difference() {
 }
 CSG
 points=(--point=0.2,0.2,0.2 --point=-0.2,-0.2,-0.2)
-expect 0 'fans.csg:2:2: warning: polyhedron is not closed (its faces at point 0 make more than one fan); left out, as OpenSCAD leaves it out ("The given mesh is not closed! Unable to convert to CGAL_Nef_Polyhedron.")' \
+expect 0 "fans.csg:2:2: warning: polyhedron is not closed (a face meets point 0 where the faces before it close, and CGAL's builder skips it); left out, as OpenSCAD leaves it out (\"The given mesh is not closed! Unable to convert to CGAL_Nef_Polyhedron.\")" \
     inside fans.csg --faithful "${points[@]}"
 [ "$(tr '\n' ' ' <out.txt)" = "out out " ] || fail "faithful fans: $(tr '\n' ' ' <out.txt)"
 expect 0 "" inside fans.csg "${points[@]}"
@@ -259,7 +259,7 @@ CSG
 for mode in faithful exact; do
     flags=()
     [ $mode = faithful ] && flags=(--faithful)
-    expect 0 'fans-cut.csg:4:4: warning: polyhedron is not closed (its faces at point 0 make more than one fan); left out, as OpenSCAD leaves it out ("The given mesh is not closed! Unable to convert to CGAL_Nef_Polyhedron.")' \
+    expect 0 "fans-cut.csg:4:4: warning: polyhedron is not closed (a face meets point 0 where the faces before it close, and CGAL's builder skips it); left out, as OpenSCAD leaves it out (\"The given mesh is not closed! Unable to convert to CGAL_Nef_Polyhedron.\")" \
         inside fans-cut.csg "${flags[@]}" --point=-0.1,-0.1,0.5
     [ "$(cat out.txt)" = out ] || fail "cut of the fans ($mode): $(cat out.txt)"
 done
@@ -273,6 +273,116 @@ if command -v openscad >/dev/null; then
     grep -q '^ERROR: The given mesh is not closed! Unable to convert to CGAL_Nef_Polyhedron\.$' fans_os.err ||
         fail "openscad does not leave the polyhedron of two fans out: $(cat fans_os.err)"
 fi
+
+# CGAL's polyhedron builder takes a mesh face by face, in order, and skips
+# a face that passes through a point twice, runs an edge the way a face
+# taken runs it, or meets a point whose faces already close; what it took
+# must then leave no edge with one face ("not closed") and no point off
+# every face taken ("invalid"). OpenSCAD tessellates an extrusion's caps,
+# which splits a cap's edge at a point of that cap lying on it (the sides
+# keep the edge whole); CGAL's OFF reader builds without the test, and a
+# face it cannot take rolls the whole file back; a minkowski() of one
+# solid is that solid as it is. Each case is judged against openscad's own
+# verdict on the same file: an error, or none.
+far='multmatrix([[1, 0, 0, 100], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]) cube(size = [0.1, 0.1, 0.1], center = false);'
+cube_pts='[[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0], [0, 0, 1], [1, 0, 1], [1, 1, 1], [0, 1, 1]]'
+cube_faces='[0, 1, 2, 3], [4, 5, 1, 0], [7, 6, 5, 4], [5, 6, 2, 1], [6, 7, 3, 2], [7, 4, 0, 3]'
+cat >twice.csg <<CSG
+difference() {
+	polyhedron(points = $cube_pts, faces = [$cube_faces, [0, 1, 2, 3]], convexity = 1);
+	$far
+}
+CSG
+cat >twice-rev.csg <<CSG
+difference() {
+	polyhedron(points = $cube_pts, faces = [$cube_faces, [3, 2, 1, 0]], convexity = 1);
+	$far
+}
+CSG
+cat >tets-edge.csg <<CSG
+difference() {
+	polyhedron(points = [[0, 0, 0], [0, 0, 1], [1, 0, 0], [0, 1, 0], [-1, 0, 0], [0, -1, 0]], faces = [[0, 2, 1], [0, 1, 3], [0, 3, 2], [1, 2, 3], [0, 1, 4], [0, 5, 1], [0, 4, 5], [1, 5, 4]], convexity = 1);
+	$far
+}
+CSG
+cat >tee.csg <<CSG
+difference() {
+	linear_extrude(height = 1, center = false, convexity = 1, scale = [1, 1], \$fn = 0, \$fa = 12, \$fs = 2) polygon(points = [[0, 0], [1, 1], [0, 2], [1, 3], [0, 4]], paths = undef, convexity = 1);
+	$far
+}
+CSG
+cat >tee-revolve.csg <<CSG
+difference() {
+	rotate_extrude(angle = 180, convexity = 1, \$fn = 12, \$fa = 12, \$fs = 2) polygon(points = [[0, 0], [1, 1], [0, 2], [1, 3], [0, 4]], paths = undef, convexity = 1);
+	$far
+}
+CSG
+cat >hole-touch.csg <<CSG
+difference() {
+	linear_extrude(height = 1, center = false, convexity = 1, scale = [1, 1], \$fn = 0, \$fa = 12, \$fs = 2) polygon(points = [[0, 0], [4, 0], [4, 4], [0, 4], [2, 0], [3, 1], [1, 1]], paths = [[0, 1, 2, 3], [4, 5, 6]], convexity = 1);
+	$far
+}
+CSG
+cat >mink-one.csg <<CSG
+minkowski(convexity = 0) {
+	linear_extrude(height = 1, center = false, convexity = 1, scale = [1, 1], \$fn = 0, \$fa = 12, \$fs = 2) {
+		square(size = [1, 1], center = false);
+		multmatrix([[1, 0, 0, 1], [0, 1, 0, 1], [0, 0, 1, 0], [0, 0, 0, 1]]) square(size = [1, 1], center = false);
+	}
+}
+CSG
+cat >mink-one-cut.csg <<CSG
+difference() {
+	minkowski(convexity = 0) {
+		linear_extrude(height = 1, center = false, convexity = 1, scale = [1, 1], \$fn = 0, \$fa = 12, \$fs = 2) {
+			square(size = [1, 1], center = false);
+			multmatrix([[1, 0, 0, 1], [0, 1, 0, 1], [0, 0, 1, 0], [0, 0, 0, 1]]) square(size = [1, 1], center = false);
+		}
+	}
+	$far
+}
+CSG
+printf 'OFF\n8 7 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n0 0 1\n1 0 1\n1 1 1\n0 1 1\n4 0 1 2 3\n4 4 5 1 0\n4 7 6 5 4\n4 5 6 2 1\n4 6 7 3 2\n4 7 4 0 3\n4 0 1 2 3\n' >twice.off
+cat >off-twice.csg <<CSG
+difference() {
+	import(file = "twice.off", layer = "", origin = [0, 0], scale = 1, convexity = 1, \$fn = 0, \$fa = 12, \$fs = 2, timestamp = 0);
+	$far
+}
+CSG
+
+# file, points, faithful answers, first line of the faithful stderr, what
+# openscad prints (a pattern, or "" for no ERROR line)
+not_closed='The given mesh is not closed! Unable to convert to CGAL_Nef_Polyhedron.'
+builder_cases=(
+    "twice.csg|0.5,0.5,0.5|in||"
+    "twice-rev.csg|0.5,0.5,0.5|in||"
+    "tets-edge.csg|0.1,0.1,0.3|out|tets-edge.csg:2:2: warning: polyhedron is invalid (no face CGAL takes uses point 4); left out, as OpenSCAD leaves it out (\"The given mesh is invalid! Unable to convert to CGAL_Nef_Polyhedron.\")|^ERROR: The given mesh is invalid"
+    "tee.csg|0.3,1,0.5|out|tee.csg:2:2: warning: linear_extrude is not closed (its cap's edge (0, 4, 0)-(0, 0, 0) passes through its point (0, 2, 0), where OpenSCAD's tessellation splits the cap but not the side); left out, as OpenSCAD leaves it out (\"$not_closed\")|^ERROR: The given mesh is not closed"
+    "tee-revolve.csg|0.1,0.1,0.3|out|tee-revolve.csg:2:2: warning: rotate_extrude is not closed (its cap's edge (0, 0, 4)-(0, 0, 0) passes through its point (0, 0, 2), where OpenSCAD's tessellation splits the cap but not the side); left out, as OpenSCAD leaves it out (\"$not_closed\")|^ERROR: The given mesh is not closed"
+    "hole-touch.csg|3.5,3.5,0.5|out|hole-touch.csg:2:2: warning: linear_extrude is not closed (its cap's edge (0, 0, 0)-(4, 0, 0) passes through its point (2, 0, 0), where OpenSCAD's tessellation splits the cap but not the side); left out, as OpenSCAD leaves it out (\"$not_closed\")|^ERROR: The given mesh is not closed"
+    "off-twice.csg|0.5,0.5,0.5|out|off-twice.csg:2:16: warning: import: 'twice.off' is not a mesh CGAL's OFF reader takes (face 6 runs an edge from point 0 the way a face before it does); the import is empty, as OpenSCAD reads nothing from it (--strict makes it an error)|input error: facet 6 shares a halfedge"
+)
+for case in "${builder_cases[@]}"; do
+    IFS='|' read -r file point want warning openscad_says <<<"$case"
+    expect 0 "$warning" inside "$file" --faithful --point="$point"
+    [ "$(cat out.txt)" = "$want" ] || fail "$file (faithful) at $point: $(cat out.txt), want $want"
+    command -v openscad >/dev/null || continue
+    check
+    openscad -o "$PWD/${file%.csg}_os.stl" "$file" >/dev/null 2>"${file%.csg}_os.err"
+    if [ -n "$openscad_says" ]; then
+        grep -q "$openscad_says" "${file%.csg}_os.err" ||
+            fail "openscad on $file: $(cat "${file%.csg}_os.err")"
+    elif grep -q '^ERROR' "${file%.csg}_os.err" || [ ! -s "${file%.csg}_os.stl" ]; then
+        fail "openscad on $file: $(cat "${file%.csg}_os.err")"
+    fi
+done
+# --strict makes the OFF reader's refusal the error; exact mode draws the
+# file by the parity rule.
+expect 1 "off-twice.csg:2:16: error: import: 'twice.off' is not a mesh CGAL's OFF reader takes (face 6 runs an edge from point 0 the way a face before it does)" \
+    inside off-twice.csg --faithful --strict --point=0.5,0.5,0.5
+expect 0 "off-twice.csg:2:16: warning: imported mesh is not closed (edge (0, 0, 0)-(1, 0, 0) is used by 3 faces); rendered by the parity rule (--strict makes it an error)" \
+    inside off-twice.csg --point=0.5,0.5,0.5
+[ "$(cat out.txt)" = in ] || fail "off-twice.csg (exact): $(cat out.txt)"
 
 echo "$checks checks, $fails failed"
 [ "$fails" = 0 ]

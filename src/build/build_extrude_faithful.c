@@ -450,6 +450,7 @@ static sc_status extrude(const build_ctx *c, const sc_location *loc, const param
     /* caps, wound against the sides: the bottom as the contour runs, the
      * top the other way */
     uint32_t cap_first = (uint32_t)m.face_count;
+    uint32_t raw_cap_first = m.raw ? (uint32_t)m.raw->face_count : 0;
     uint32_t *face = malloc(((size_t)m.ring + 1) * sizeof *face);
     ok = ok && face;
     for (uint32_t k = 0; ok && k < r->contour_count; k++) {
@@ -474,12 +475,21 @@ static sc_status extrude(const build_ctx *c, const sc_location *loc, const param
                  ? SC_OK
                  : err_nomem(c->error, loc);
     else {
+        /* the caps: each contour's bottom (1), then its top (2) where the
+         * top has area; only the bottoms where OpenSCAD's own mesh differs */
         const mesh *own = m.raw ? m.raw : &m;
+        uint8_t *cap_of = calloc(own->face_count ? own->face_count : 1, 1);
+        uint32_t first = m.raw ? raw_cap_first : cap_first;
+        for (size_t k = first; cap_of && k < own->face_count; k++)
+            cap_of[k] = (uint8_t)(m.raw || top_zero ? 1 : 1 + (k - first) % 2);
         build_mesh_checks openscad = {own->indices, own->face_start,
-                                      (uint32_t)own->face_count};
-        st = build_mesh_prim_checked(c, loc, "linear_extrude", 0, m.points,
-                                     (uint32_t)total, m.indices, m.face_start,
-                                     (uint32_t)m.face_count, &openscad, out, empty);
+                                      (uint32_t)own->face_count, cap_of};
+        st = cap_of
+                 ? build_mesh_prim_checked(c, loc, "linear_extrude", 0, m.points,
+                                           (uint32_t)total, m.indices, m.face_start,
+                                           (uint32_t)m.face_count, &openscad, out, empty)
+                 : err_nomem(c->error, loc);
+        free(cap_of);
     }
     if (st == SC_OK && *empty && (*empty)[0]) /* "": left out, with its warning */
         *empty = "linear_extrude without height or area is empty";

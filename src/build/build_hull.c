@@ -468,10 +468,11 @@ static sc_status closed_check(const walk *w, const model_node *n, int *open)
         st = build_import_faces(&quiet, n->u.import, &empty, &f);
     }
     char why[SC_ERROR_MESSAGE_MAX - 160];
+    const char *refusal = build_openscad_not_closed;
     int sound = st != SC_OK || empty || !f.face_count
                     ? 1
                     : build_mesh_cgal_sound(&f, what, n->kind == MODEL_POLYHEDRON, why,
-                                            sizeof why);
+                                            sizeof why, &refusal);
     build_mesh_faces_free(&f);
     if (st != SC_OK) { /* the leaf's own error, found again where it is built */
         err_clear(c->error);
@@ -487,12 +488,11 @@ static sc_status closed_check(const walk *w, const model_node *n, int *open)
     if (c->strict)
         return err_set(c->error, SC_ERR_SEMANTIC, loc, "%s", why);
     if (w->in_union)
-        return build_note_left_out(c, loc,
-                                   "%s; left out, as OpenSCAD leaves it out (\"%s\")",
-                                   why, build_openscad_not_closed);
+        return build_note_left_out(
+            c, loc, "%s; left out, as OpenSCAD leaves it out (\"%s\")", why, refusal);
     *w->not_closed = 1;
     return build_note(c, loc, "%s; the %s is empty, as OpenSCAD leaves it out (\"%s\")",
-                      why, w->owner, build_openscad_not_closed);
+                      why, w->owner, refusal);
 }
 
 /* ---- the walk ---- */

@@ -193,6 +193,8 @@ static sc_status finish_mesh(const build_ctx *c, const sc_location *loc, int num
 
 const char build_openscad_not_closed[] =
     "The given mesh is not closed! Unable to convert to CGAL_Nef_Polyhedron.";
+const char build_openscad_invalid[] =
+    "The given mesh is invalid! Unable to convert to CGAL_Nef_Polyhedron.";
 
 /* The triangles of the fans over faces (face_start, face_count: n - 2 for
  * a face of n points; every face here has 3 or more) into *count, as a
@@ -303,6 +305,315 @@ static int fans_whole(const build_mesh_faces *f, const char *what, int numbered,
     return whole;
 }
 
+/* A set of directed edges (p << 32 | q), by open addressing. */
+typedef struct edge_set {
+    uint64_t *keys; /* UINT64_MAX: free */
+    size_t mask;
+} edge_set;
+
+static size_t edge_slot(const edge_set *s, uint64_t key)
+{
+    size_t i = (size_t)((key * 0x9e3779b97f4a7c15u) >> 17) & s->mask;
+    while (s->keys[i] != UINT64_MAX && s->keys[i] != key)
+        i = (i + 1) & s->mask;
+    return i;
+}
+
+static int edge_in(const edge_set *s, uint32_t p, uint32_t q)
+{
+    uint64_t key = (uint64_t)p << 32 | q;
+    return s->keys[edge_slot(s, key)] == key;
+}
+
+/* Why CGAL's polyhedron builder (its test_facet) refuses face k of f,
+ * given the faces it has taken: 0 when it takes it; else the point (in
+ * *at) that the face passes through twice (1), that starts an edge a face
+ * taken runs the same way (2), or where the faces taken already close
+ * round (3). used[v]: 1 when point v is on a face taken; open[v]: the edges at v
+ * with one face taken. */
+static int builder_refuses(const build_mesh_faces *f, const edge_set *edges,
+                           const uint8_t *used, const uint32_t *open, uint32_t k,
+                           uint32_t *at)
+{
+    uint32_t s = f->face_start[k], e = f->face_start[k + 1];
+    for (uint32_t i = s; i < e; i++) {
+        uint32_t p = f->indices[i], q = f->indices[i + 1 < e ? i + 1 : s];
+        *at = p;
+        for (uint32_t j = s; j < i; j++)
+            if (f->indices[j] == p)
+                return 1;
+        if (edge_in(edges, p, q))
+            return 2;
+        if (used[p] == 1 && !open[p])
+            return 3;
+    }
+    return 0;
+}
+
+/* What CGAL's polyhedron builder did with a mesh's faces (builder_whole). */
+typedef struct builder_run {
+    uint8_t *taken;       /* NULL, or 1 for each face taken */
+    int refusal;          /* the first refusal (builder_refuses), or 0 */
+    uint32_t face, point; /* its face and point */
+} builder_run;
+
+/* The first refusal of run, as "<subject> passes through point 3 twice". */
+static void refusal_text(const build_mesh_faces *f, int numbered, const builder_run *run,
+                         const char *subject, char *out, size_t size)
+{
+    static const char *const before[] = {"", "passes through point ",
+                                         "runs an edge from point ", "meets point "};
+    static const char *const after[] = {"", " twice", " the way a face before it does",
+                                        " where the faces before it close"};
+    char point[96];
+    vec3 p = f->points[run->point];
+    if (numbered)
+        snprintf(point, sizeof point, "%u", f->names ? f->names[run->point] : run->point);
+    else
+        snprintf(point, sizeof point, "(%g, %g, %g)", p.x, p.y, p.z);
+    snprintf(out, size, "%s %s%s%s", subject, before[run->refusal], point,
+             after[run->refusal]);
+}
+
+/* OpenSCAD 2021.01 hands a mesh to CGAL face by face (createPolyhedron-
+ * FromPolySet, in the order of its faces) and CGAL's builder skips a face
+ * it refuses (builder_refuses); the mesh is then "not closed" if an edge
+ * has one face, and "invalid" if a point is on no face taken. 1 when it is
+ * neither; 0 with why and the message in *openscad; -1 when memory runs
+ * out. run says which faces it took, and why it refused the first it did. After the faces
+ * taken, a point whose faces make more than one fan is not closed (fans_whole). what and
+ * numbered name the mesh and its points in why. */
+static int builder_whole(const build_mesh_faces *f, const char *what, int numbered,
+                         char *why, size_t size, builder_run *run, const char **openscad)
+{
+    uint32_t total = f->face_start[f->face_count];
+    size_t slots = 16;
+    while (slots < 2 * (size_t)total + 2)
+        slots *= 2;
+    edge_set edges = {malloc(slots * sizeof *edges.keys), slots - 1};
+    uint8_t *used = calloc(f->point_count ? f->point_count : 1, 1);
+    uint32_t *open = calloc(f->point_count ? f->point_count : 1, sizeof *open);
+    uint8_t *mine = run->taken ? NULL : malloc(f->face_count ? f->face_count : 1);
+    uint8_t *take = run->taken ? run->taken : mine;
+    if (!edges.keys || !used || !open || !take) {
+        free(edges.keys);
+        free(used);
+        free(open);
+        free(mine);
+        return -1;
+    }
+    for (size_t i = 0; i < slots; i++)
+        edges.keys[i] = UINT64_MAX;
+    for (uint32_t i = 0; i < total; i++)
+        used[f->indices[i]] = 2; /* a point of the mesh: on a face, taken or not */
+    uint32_t skipped = 0;
+    run->refusal = 0;
+    for (uint32_t k = 0; k < f->face_count; k++) {
+        uint32_t at;
+        int no = builder_refuses(f, &edges, used, open, k, &at);
+        take[k] = !no;
+        if (no) {
+            if (!run->refusal) {
+                run->refusal = no;
+                run->face = k;
+                run->point = at;
+            }
+            skipped++;
+            continue;
+        }
+        uint32_t s = f->face_start[k], e = f->face_start[k + 1];
+        for (uint32_t i = s; i < e; i++) {
+            uint32_t p = f->indices[i], q = f->indices[i + 1 < e ? i + 1 : s];
+            uint64_t key = (uint64_t)p << 32 | q;
+            edges.keys[edge_slot(&edges, key)] = key;
+            if (edge_in(&edges, q, p)) {
+                open[p]--;
+                open[q]--;
+            } else {
+                open[p]++;
+                open[q]++;
+            }
+            used[p] = 1;
+        }
+    }
+    uint32_t border = UINT32_MAX, unused = UINT32_MAX;
+    for (uint32_t v = 0; v < f->point_count; v++) {
+        if (open[v] && border == UINT32_MAX)
+            border = v;
+        if (used[v] == 2 && unused == UINT32_MAX)
+            unused = v;
+    }
+    free(edges.keys);
+    free(used);
+    free(open);
+    int whole = -1;
+    if (border != UINT32_MAX) {
+        *openscad = build_openscad_not_closed;
+        whole = build_mesh_sound(f, what, numbered, why, size);
+        if (whole > 0 && run->refusal) { /* sound, but the builder skipped a face */
+            char reason[160];
+            refusal_text(f, numbered, run, "a face", reason, sizeof reason);
+            snprintf(why, size, "%s is not closed (%s, and CGAL's builder skips it)",
+                     what, reason);
+            whole = 0;
+        } else if (whole > 0) {
+            whole = fans_whole(f, what, numbered, why, size);
+        }
+    } else if (unused != UINT32_MAX) {
+        *openscad = build_openscad_invalid;
+        vec3 p = f->points[unused];
+        if (numbered && f->names)
+            snprintf(why, size, "%s is invalid (no face CGAL takes uses point %u)", what,
+                     f->names[unused]);
+        else
+            snprintf(why, size,
+                     "%s is invalid (no face CGAL takes uses the point (%g, %g, %g))",
+                     what, p.x, p.y, p.z);
+        whole = 0;
+    } else if (!skipped) {
+        *openscad = build_openscad_not_closed;
+        whole = fans_whole(f, what, numbered, why, size);
+    } else {
+        *openscad = build_openscad_not_closed;
+        build_mesh_faces kept = *f;
+        kept.indices = malloc((size_t)(total ? total : 1) * sizeof *kept.indices);
+        kept.face_start = malloc(((size_t)f->face_count + 1) * sizeof *kept.face_start);
+        if (kept.indices && kept.face_start) {
+            uint32_t n = 0, count = 0;
+            for (uint32_t k = 0; k < f->face_count; k++) {
+                if (!take[k])
+                    continue;
+                kept.face_start[count++] = n;
+                for (uint32_t i = f->face_start[k]; i < f->face_start[k + 1]; i++)
+                    kept.indices[n++] = f->indices[i];
+            }
+            kept.face_start[count] = n;
+            kept.face_count = count;
+            whole = fans_whole(&kept, what, numbered, why, size);
+        }
+        free(kept.indices);
+        free(kept.face_start);
+    }
+    free(mine);
+    return whole;
+}
+
+/* A point keyed for caps_split: by its x (sorting a cap's points), or by
+ * where along an edge it lies; i is its number. */
+typedef struct cap_key {
+    double key;
+    uint32_t i;
+} cap_key;
+
+static int cap_key_cmp(const void *a, const void *b)
+{
+    const cap_key *p = a, *q = b;
+    return p->key < q->key ? -1 : p->key > q->key ? 1 : (p->i > q->i) - (p->i < q->i);
+}
+
+/* The points of cps[0 .. m) (a cap's, sorted by x) that lie on the
+ * edge a-b: within 2^-22 of it and more than 2^-20 (OpenSCAD's grid) from
+ * its ends, into stops in order along it; their count. */
+static size_t edge_stops(const vec3 *points, const cap_key *cps, size_t m, vec3 a, vec3 b,
+                         cap_key *stops)
+{
+    const double near = 0x1p-22, apart = 0x1p-20;
+    vec3 ab = v3_sub(b, a);
+    double len2 = v3_dot(ab, ab);
+    if (!(len2 > 0))
+        return 0;
+    double xlo = fmin(a.x, b.x) - near, xhi = fmax(a.x, b.x) + near;
+    size_t lo = 0, hi = m, count = 0;
+    while (lo < hi) { /* the first point at xlo or beyond */
+        size_t mid = lo + (hi - lo) / 2;
+        if (cps[mid].key < xlo)
+            lo = mid + 1;
+        else
+            hi = mid;
+    }
+    for (size_t q = lo; q < m && cps[q].key <= xhi; q++) {
+        if (q > lo && cps[q].i == cps[q - 1].i)
+            continue;
+        vec3 ap = v3_sub(points[cps[q].i], a);
+        double t = v3_dot(ap, ab) / len2;
+        if (t > 0 && t < 1 && v3_length(ap) > apart &&
+            v3_length(v3_sub(points[cps[q].i], b)) > apart &&
+            v3_length(v3_sub(ap, v3_scale(ab, t))) <= near)
+            stops[count++] = (cap_key){t, cps[q].i};
+    }
+    qsort(stops, count, sizeof *stops, cap_key_cmp);
+    return count;
+}
+
+/* ch's faces with each cap's edges split where OpenSCAD's tessellation of
+ * that cap splits them (build_mesh_checks): at each point of the same cap
+ * on the edge (edge_stops). Into *indices and *face_start (malloc'd), and
+ * the first edge split and the point (a, b, p) into split, or UINT32_MAX
+ * in split[0]; 0 when memory runs out. */
+static int caps_split(const vec3 *points, const build_mesh_checks *ch, uint32_t **indices,
+                      uint32_t **face_start, uint32_t split[3])
+{
+    split[0] = UINT32_MAX;
+    uint32_t total = ch->face_start[ch->face_count];
+    size_t cap = (size_t)total + 16, n = 0, counts[3] = {0, 0, 0};
+    uint32_t *out = malloc(cap * sizeof *out);
+    uint32_t *starts = malloc(((size_t)ch->face_count + 1) * sizeof *starts);
+    cap_key *cps = malloc((size_t)(total ? total : 1) * sizeof *cps);
+    cap_key *stops = malloc((size_t)(total ? total : 1) * sizeof *stops);
+    int ok = out && starts && cps && stops;
+    /* the points of cap 1, then of cap 2, each sorted by x */
+    for (uint32_t k = 0; ok && k < ch->face_count; k++)
+        if (ch->cap_of[k] == 1 || ch->cap_of[k] == 2)
+            counts[ch->cap_of[k]] += ch->face_start[k + 1] - ch->face_start[k];
+    size_t at[3] = {0, 0, counts[1]};
+    for (uint32_t k = 0; ok && k < ch->face_count; k++)
+        if (ch->cap_of[k] == 1 || ch->cap_of[k] == 2)
+            for (uint32_t j = ch->face_start[k]; j < ch->face_start[k + 1]; j++)
+                cps[at[ch->cap_of[k]]++] =
+                    (cap_key){points[ch->indices[j]].x, ch->indices[j]};
+    if (ok) {
+        qsort(cps, counts[1], sizeof *cps, cap_key_cmp);
+        qsort(cps + counts[1], counts[2], sizeof *cps, cap_key_cmp);
+    }
+    for (uint32_t k = 0; ok && k < ch->face_count; k++) {
+        uint32_t s = ch->face_start[k], e = ch->face_start[k + 1];
+        uint8_t which = ch->cap_of[k];
+        starts[k] = (uint32_t)n;
+        for (uint32_t j = s; ok && j < e; j++) {
+            uint32_t a = ch->indices[j], b = ch->indices[j + 1 < e ? j + 1 : s];
+            size_t count = which == 1 || which == 2
+                               ? edge_stops(points, cps + (which == 2 ? counts[1] : 0),
+                                            counts[which], points[a], points[b], stops)
+                               : 0;
+            if (n + 1 + count > UINT32_MAX ||
+                !grow_array((void **)&out, &cap, n + 1 + count, sizeof *out)) {
+                ok = 0;
+                break;
+            }
+            out[n++] = a;
+            for (size_t q = 0; q < count; q++)
+                out[n++] = stops[q].i;
+            if (count && split[0] == UINT32_MAX) {
+                split[0] = a;
+                split[1] = b;
+                split[2] = stops[0].i;
+            }
+        }
+    }
+    if (ok)
+        starts[ch->face_count] = (uint32_t)n;
+    free(cps);
+    free(stops);
+    if (!ok) {
+        free(out);
+        free(starts);
+        return 0;
+    }
+    *indices = out;
+    *face_start = starts;
+    return 1;
+}
+
 /* Whether a builder's mesh, closed as built, is still closed where OpenSCAD
  * 2021.01 hands it to CGAL: its polyhedron builder merges the points on
  * the 2^-20 grid (build_mesh_merge) and skips a face that would give an
@@ -313,7 +624,8 @@ static int fans_whole(const build_mesh_faces *f, const char *what, int numbered,
 static int sound_on_grid(const build_ctx *c, const sc_location *loc, const char *what,
                          int numbered, const vec3 *points, uint32_t point_count,
                          const uint32_t *indices, const uint32_t *face_start,
-                         uint32_t face_count, char *why, size_t size)
+                         uint32_t face_count, char *why, size_t size,
+                         const char **openscad)
 {
     build_mesh_faces f;
     sc_error quiet = {SC_OK, "", 0, 0, ""};
@@ -322,7 +634,8 @@ static int sound_on_grid(const build_ctx *c, const sc_location *loc, const char 
     if (build_mesh_merge(&merge, loc, 0, points, point_count, indices, face_start,
                          face_count, &f) != SC_OK)
         return -1;
-    int sound = f.face_count ? build_mesh_cgal_sound(&f, what, numbered, why, size) : 1;
+    int sound =
+        f.face_count ? build_mesh_cgal_sound(&f, what, numbered, why, size, openscad) : 1;
     build_mesh_faces_free(&f);
     return sound;
 }
@@ -332,7 +645,7 @@ sc_status build_mesh_prim(const build_ctx *c, const sc_location *loc, const char
                           const uint32_t *indices, const uint32_t *face_start,
                           uint32_t face_count, prim *out, const char **empty)
 {
-    build_mesh_checks as_built = {indices, face_start, face_count};
+    build_mesh_checks as_built = {indices, face_start, face_count, NULL};
     return build_mesh_prim_checked(c, loc, what, numbered, points, point_count, indices,
                                    face_start, face_count, &as_built, out, empty);
 }
@@ -355,10 +668,28 @@ sc_status build_mesh_prim_checked(const build_ctx *c, const sc_location *loc,
     int sound = mesh_sound(what, numbered, points, NULL, indices, face_start, face_count,
                            why, sizeof why);
     int closed = openscad->indices != indices ? (sound >= 0) : sound;
-    if (closed > 0 && c->faithful && !c->drawn_as_is)
-        closed =
-            sound_on_grid(c, loc, what, numbered, points, point_count, openscad->indices,
-                          openscad->face_start, openscad->face_count, why, sizeof why);
+    const char *refusal = build_openscad_not_closed;
+    if (closed > 0 && c->faithful && !c->drawn_as_is) {
+        uint32_t *split = NULL, *split_start = NULL, first[3] = {UINT32_MAX, 0, 0};
+        if (openscad->cap_of &&
+            !caps_split(points, openscad, &split, &split_start, first))
+            closed = -1;
+        else
+            closed = sound_on_grid(c, loc, what, numbered, points, point_count,
+                                   split ? split : openscad->indices,
+                                   split ? split_start : openscad->face_start,
+                                   openscad->face_count, why, sizeof why, &refusal);
+        free(split);
+        free(split_start);
+        if (closed == 0 && first[0] != UINT32_MAX) {
+            vec3 a = points[first[0]], b = points[first[1]], p = points[first[2]];
+            snprintf(why, sizeof why,
+                     "%s is not closed (its cap's edge (%g, %g, %g)-(%g, %g, %g) passes "
+                     "through its point (%g, %g, %g), where OpenSCAD's tessellation "
+                     "splits the cap but not the side)",
+                     what, a.x, a.y, a.z, b.x, b.y, b.z, p.x, p.y, p.z);
+        }
+    }
     if (sound < 0 || closed < 0)
         return err_nomem(c->error, loc);
     if (!closed && c->strict)
@@ -366,7 +697,7 @@ sc_status build_mesh_prim_checked(const build_ctx *c, const sc_location *loc,
     if (!closed && c->faithful && !c->drawn_as_is) {
         *empty = ""; /* the reason is the warning */
         return build_note(c, loc, "%s; left out, as OpenSCAD leaves it out (\"%s\")", why,
-                          build_openscad_not_closed);
+                          refusal);
     }
     uint32_t *tris = malloc((tri_count ? tri_count : 1) * 3 * sizeof *tris);
     if (!tris)
@@ -1739,17 +2070,18 @@ int build_mesh_sound(const build_mesh_faces *f, const char *what, int numbered, 
 }
 
 int build_mesh_cgal_sound(const build_mesh_faces *f, const char *what, int numbered,
-                          char *why, size_t size)
+                          char *why, size_t size, const char **openscad)
 {
-    int sound = build_mesh_sound(f, what, numbered, why, size);
-    return sound > 0 ? fans_whole(f, what, numbered, why, size) : sound;
+    builder_run run = {NULL, 0, 0, 0};
+    return builder_whole(f, what, numbered, why, size, &run, openscad);
 }
 
 int build_mesh_cgal_closed(const build_ctx *c, const build_mesh_faces *f,
                            const char *what, int numbered, char *why, size_t size)
 {
+    const char *openscad;
     return c->faithful && !c->drawn_as_is
-               ? build_mesh_cgal_sound(f, what, numbered, why, size)
+               ? build_mesh_cgal_sound(f, what, numbered, why, size, &openscad)
                : build_mesh_sound(f, what, numbered, why, size);
 }
 
@@ -1813,24 +2145,37 @@ sc_status build_mesh_solid(const build_ctx *c, const sc_location *loc, const cha
     if (charged != SC_OK)
         return charged;
     char why[SC_ERROR_MESSAGE_MAX - 160];
-    int sound = build_mesh_sound(f, what, numbered, why, sizeof why);
-    int closed = sound > 0 && c->faithful && !c->drawn_as_is
-                     ? fans_whole(f, what, numbered, why, sizeof why)
-                     : sound;
-    if (sound < 0 || closed < 0)
+    int cgal = c->faithful && !c->drawn_as_is;
+    /* taken: the faces CGAL's builder takes, which are all that OpenSCAD's
+     * boolean sees of a mesh it finds closed (a face given twice, say) */
+    uint8_t *taken = cgal ? malloc(f->face_count ? f->face_count : 1) : NULL;
+    builder_run run = {taken, 0, 0, 0};
+    const char *refusal = build_openscad_not_closed;
+    int sound =
+        cgal ? (taken ? builder_whole(f, what, numbered, why, sizeof why, &run, &refusal)
+                      : -1)
+             : build_mesh_sound(f, what, numbered, why, sizeof why);
+    if (sound < 0) {
+        free(taken);
         return err_nomem(c->error, loc);
-    if (!closed && (strict || !c->note))
+    }
+    if (!sound && (strict || !c->note)) {
+        free(taken);
         return err_set(c->error, SC_ERR_SEMANTIC, loc, "%s", why);
-    if (!closed && c->faithful && !c->drawn_as_is) {
+    }
+    if (!sound && cgal) {
+        free(taken);
         err_set(c->note, SC_OK, loc, "%s; left out, as OpenSCAD leaves it out (\"%s\")",
-                why, build_openscad_not_closed);
+                why, refusal);
         *empty = "";
         return SC_OK;
     }
     size_t tri_cap = (tri_count ? tri_count : 1) * 3; /* in indices */
     uint32_t *tris = malloc(tri_cap * sizeof *tris);
-    if (!tris)
+    if (!tris) {
+        free(taken);
         return err_nomem(c->error, loc);
+    }
     size_t k = 0;
     sc_status st = SC_OK;
     vec3 *corners = NULL; /* a face's points, for the larger faces */
@@ -1843,6 +2188,8 @@ sc_status build_mesh_solid(const build_ctx *c, const sc_location *loc, const cha
         uint32_t n = f->face_start[i + 1] - f->face_start[i];
         uint32_t first = 0;
         planned += n > 2 ? n - 2 : 0;
+        if (taken && !taken[i])
+            continue;
         if (n == 4) {
             vec3 q[4] = {f->points[v[0]], f->points[v[1]], f->points[v[2]],
                          f->points[v[3]]};
@@ -1918,6 +2265,7 @@ sc_status build_mesh_solid(const build_ctx *c, const sc_location *loc, const cha
     free(corners);
     free(local);
     free(numbers);
+    free(taken);
     if (oom || st != SC_OK) {
         free(tris);
         return oom ? err_nomem(c->error, loc) : st;
@@ -2245,6 +2593,28 @@ static const char *read_off(const char *text, size_t size, mesh_file *m, int *oo
             p++;
     }
     return finish_faces(m) ? NULL : (*oom = 1, "out of memory");
+}
+
+/* Whether CGAL's OFF reader, which OpenSCAD 2021.01's import() of an OFF
+ * file runs, rolls the whole file back: its polyhedron builder, given the
+ * faces by the file's point numbers and without a test first, fails on a
+ * face that builder_refuses. 1 with the reason in why, 0, or -1 when
+ * memory runs out. */
+static int off_rolled_back(const mesh_file *m, char *why, size_t size)
+{
+    build_mesh_faces f = {m->points,     NULL, m->point_count, m->indices,
+                          m->face_start, NULL, m->face_count,  1};
+    builder_run run = {NULL, 0, 0, 0};
+    char unused[8];
+    const char *openscad;
+    if (builder_whole(&f, "", 1, unused, sizeof unused, &run, &openscad) < 0)
+        return -1;
+    if (!run.refusal)
+        return 0;
+    char face[32];
+    snprintf(face, sizeof face, "face %u", run.face);
+    refusal_text(&f, 1, &run, face, why, size);
+    return 1;
 }
 
 char *build_file_path(const build_ctx *c, const char *name)
@@ -2805,11 +3175,28 @@ static sc_status import_parts(const build_ctx *c, const model_import *import, in
     build_ctx bc = *c;
     if (entry && c->triangles_left && entry->charged == c->triangles_left)
         bc.triangles_left = NULL;
+    char why[SC_ERROR_MESSAGE_MAX - 320];
+    int rolled = 0;
     if (st != SC_OK)
         ;
     else if (objects ? file->a.face_count == 0 : file->m.face_count == 0)
         *empty = "import without faces is empty";
-    else if (objects)
+    else if (!objects && c->faithful && import->format == MODEL_MESH_OFF &&
+             (rolled = off_rolled_back(&file->m, why, sizeof why)) != 0) {
+        if (rolled < 0)
+            st = err_nomem(c->error, &loc);
+        else if (strict || c->strict)
+            st = err_set(c->error, SC_ERR_SEMANTIC, &loc,
+                         "import: '%s' is not a mesh CGAL's OFF reader takes (%s)",
+                         import->file, why);
+        else if ((st = build_note_left_out(
+                      c, &loc,
+                      "import: '%s' is not a mesh CGAL's OFF reader takes (%s); the "
+                      "import is empty, as OpenSCAD reads nothing from it (--strict "
+                      "makes it an error)",
+                      import->file, why)) == SC_OK)
+            *empty = "";
+    } else if (objects)
         st =
             import_objects(&bc, import, strict, how, &file->a, out, empty, faces, merged);
     else

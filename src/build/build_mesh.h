@@ -36,10 +36,15 @@ sc_status build_mesh_prim(const build_ctx *c, const sc_location *loc, const char
 /* The faces of OpenSCAD 2021.01's own mesh on a builder's points, where the
  * builder mends it into another (a linear_extrude scaled to 0 at its top,
  * whose collapsed walls it splits): what faithful mode checks is closed
- * where OpenSCAD hands the mesh to CGAL. */
+ * where OpenSCAD hands the mesh to CGAL. cap_of (or NULL): for each face,
+ * 0, or which cap of an extrusion it belongs to (1, 2): OpenSCAD
+ * tessellates each cap's polygons (libtess2), which splits a cap's edge at
+ * any point of that cap lying on it, where the side faces keep the edge
+ * whole. */
 typedef struct build_mesh_checks {
     const uint32_t *indices, *face_start;
     uint32_t face_count;
+    const uint8_t *cap_of;
 } build_mesh_checks;
 
 /* build_mesh_prim drawing one mesh and checking another: in faithful mode,
@@ -96,12 +101,16 @@ void build_mesh_faces_free(build_mesh_faces *f);
  * names the node); -1 when memory ran out. */
 int build_mesh_sound(const build_mesh_faces *f, const char *what, int numbered, char *why,
                      size_t size);
-/* build_mesh_sound and whole fans: the faces about each point make one
- * fan, as CGAL's polyhedron builder needs (it skips a face that would give
- * a point a second fan, so OpenSCAD 2021.01 finds such a mesh "not
- * closed", and a Nef polyhedron of one fails). */
+/* Whether OpenSCAD 2021.01 finds f closed where it hands it to CGAL:
+ * CGAL's polyhedron builder takes its faces in order and skips one that
+ * passes through a point twice, runs an edge the way a face taken runs it,
+ * or meets a point whose faces already close; the faces taken must then
+ * leave no edge with one face ("not closed") and no point off them
+ * ("invalid"), and the faces about each point must make one fan. 1; 0,
+ * with what is wrong in why and OpenSCAD's message in *openscad; -1 when
+ * memory ran out. */
 int build_mesh_cgal_sound(const build_mesh_faces *f, const char *what, int numbered,
-                          char *why, size_t size);
+                          char *why, size_t size, const char **openscad);
 /* build_mesh_cgal_sound where faithful mode hands f to CGAL (c->faithful,
  * not c->drawn_as_is), else build_mesh_sound. */
 int build_mesh_cgal_closed(const build_ctx *c, const build_mesh_faces *f,
@@ -176,6 +185,8 @@ void build_imports_done(const build_ctx *c, const model_node *n);
 
 /* OpenSCAD 2021.01's message for a mesh it cannot take into CGAL. */
 extern const char build_openscad_not_closed[];
+/* Its message for a closed mesh with a point on no face its builder takes. */
+extern const char build_openscad_invalid[];
 
 /* An import of a file whose extension no reader takes (model.h,
  * MODEL_MESH_UNSUPPORTED), as OpenSCAD 2021.01 logs it, before it opens

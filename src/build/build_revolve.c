@@ -361,8 +361,9 @@ static sc_status build_faithful(const build_ctx *c, const model_node *n, const p
     uint32_t *idx = malloc((3 * ntri + 2 * (size_t)p->pts.point_count + 1) * sizeof *idx);
     uint32_t *fs = malloc((nfaces + 1) * sizeof *fs);
     uint32_t *face_loops = faces ? malloc((ntri + 3) * sizeof *face_loops) : NULL;
+    uint8_t *cap_of = faces ? NULL : calloc(nfaces + 1, 1); /* build_mesh_checks */
     sc_status st = SC_OK;
-    if (!pts || !idx || !fs || (faces && !face_loops)) {
+    if (!pts || !idx || !fs || (faces && !face_loops) || (!faces && !cap_of)) {
         st = err_nomem(c->error, &n->loc);
         goto done;
     }
@@ -401,9 +402,11 @@ static sc_status build_faithful(const build_ctx *c, const model_node *n, const p
         if (!full && !faces) {
             /* start cap: the path as oriented on ring 0; end cap: reversed on
              * ring f (opposite to the strips' edges there) */
+            cap_of[nf] = 1;
             fs[nf++] = ni;
             for (uint32_t i = 0; i < len; i++)
                 idx[ni++] = oriented(p, k, rev, i);
+            cap_of[nf] = 2;
             fs[nf++] = ni;
             for (uint32_t i = 0; i < len; i++)
                 idx[ni++] = (uint32_t)((size_t)f * p->pts.point_count) +
@@ -412,8 +415,9 @@ static sc_status build_faithful(const build_ctx *c, const model_node *n, const p
     }
     if (!faces) {
         fs[nf] = ni;
-        st = build_mesh_prim(c, &n->loc, "rotate_extrude", 0, pts, (uint32_t)np, idx, fs,
-                             nf, out, empty);
+        build_mesh_checks openscad = {idx, fs, nf, cap_of};
+        st = build_mesh_prim_checked(c, &n->loc, "rotate_extrude", 0, pts, (uint32_t)np,
+                                     idx, fs, nf, &openscad, out, empty);
         goto done;
     }
     /* faces: the side triangles, then each cap as one face of the loops of
@@ -449,6 +453,7 @@ done:
     free(idx);
     free(fs);
     free(face_loops);
+    free(cap_of);
     return st;
 }
 
