@@ -360,6 +360,8 @@ builder_cases=(
     "tee.csg|0.3,1,0.5|out|tee.csg:2:2: warning: linear_extrude is not closed (its cap's edge (0, 4, 0)-(0, 0, 0) passes through its point (0, 2, 0), where OpenSCAD's tessellation splits the cap but not the side); left out, as OpenSCAD leaves it out (\"$not_closed\")|^ERROR: The given mesh is not closed"
     "tee-revolve.csg|0.1,0.1,0.3|out|tee-revolve.csg:2:2: warning: rotate_extrude is not closed (its cap's edge (0, 0, 4)-(0, 0, 0) passes through its point (0, 0, 2), where OpenSCAD's tessellation splits the cap but not the side); left out, as OpenSCAD leaves it out (\"$not_closed\")|^ERROR: The given mesh is not closed"
     "hole-touch.csg|3.5,3.5,0.5|out|hole-touch.csg:2:2: warning: linear_extrude is not closed (its cap's edge (0, 0, 0)-(4, 0, 0) passes through its point (2, 0, 0), where OpenSCAD's tessellation splits the cap but not the side); left out, as OpenSCAD leaves it out (\"$not_closed\")|^ERROR: The given mesh is not closed"
+    "mink-one.csg|1.5,1.5,0.5|in||"
+    "mink-one-cut.csg|1.5,1.5,0.5|out|mink-one-cut.csg:3:3: warning: linear_extrude is not closed (edge (1, 1, 0)-(1, 1, 1) is used by 4 faces); left out, as OpenSCAD leaves it out (\"$not_closed\")|^ERROR: The given mesh is not closed"
     "off-twice.csg|0.5,0.5,0.5|out|off-twice.csg:2:16: warning: import: 'twice.off' is not a mesh CGAL's OFF reader takes (face 6 runs an edge from point 0 the way a face before it does); the import is empty, as OpenSCAD reads nothing from it (--strict makes it an error)|input error: facet 6 shares a halfedge"
 )
 for case in "${builder_cases[@]}"; do

@@ -397,7 +397,11 @@ static void test_minkowski_errors(void **state)
                        ", faces = " NOTCH_FACES "); }");
     assert_true(inside(s, 1, 1, 1.9));
     sc_scene_release(s);
-    check_warning("minkowski() { cube(0); }", "minkowski without volume is empty");
+    check_warning("minkowski() { cube(0); cube(0); }",
+                  "minkowski without volume is empty");
+    /* of one solid, the solid as it is (OpenSCAD's applyToChildren3D) */
+    check_warning("minkowski() { cube(0); }",
+                  "cube with a zero, negative or non-finite size is empty");
 }
 
 /* ---- resize ---- */

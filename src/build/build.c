@@ -1130,6 +1130,13 @@ static sc_status mark_operands(builder *b, const model_node *n, const frame *f)
  * its children so too, and takes one child's mesh as it is. A mesh that
  * is not closed is left out where its result meets CGAL, and drawn as it
  * is where nothing hands it to CGAL. */
+/* A minkowski() of one solid, which OpenSCAD 2021.01 passes through as it
+ * is (applyToChildren3D: no sum, no CGAL): built as a group of it. */
+static int lone_minkowski(const model_node *n)
+{
+    return n->kind == MODEL_MINKOWSKI && build_hull_solids(n) == 1;
+}
+
 static int to_cgal(const model_node *first)
 {
     int operands = 0;
@@ -1166,7 +1173,7 @@ static void inherit(const builder *b, const model_node *n, const frame *parent, 
     f->children_lost = parent->children_lost && n->child_count == 1 && !n->is_root;
     /* a leaf's children (an extrusion's 2D ones) are united by Clipper */
     f->cgal = (!n->is_root && parent->cgal) ||
-              (!model_is_leaf(n->kind) && to_cgal(n->first_child));
+              ((!model_is_leaf(n->kind) || lone_minkowski(n)) && to_cgal(n->first_child));
 }
 
 /* Whether leaf n builds with its parent's state as it is (inherit would
@@ -1293,8 +1300,8 @@ static sc_status visit(builder *b, const model_node *n, int *opened)
         (kind == MODEL_UNION || kind == MODEL_DIFFERENCE || kind == MODEL_INTERSECTION ||
          kind == MODEL_XFORM || kind == MODEL_COLOR || kind == MODEL_MATERIAL))
         flat = 0;
-    if (model_is_leaf(kind) || kind == MODEL_LIGHT || kind == MODEL_CAMERA ||
-        kind == MODEL_BACKGROUND || flat) {
+    if ((model_is_leaf(kind) && !lone_minkowski(n)) || kind == MODEL_LIGHT ||
+        kind == MODEL_CAMERA || kind == MODEL_BACKGROUND || flat) {
         frame f;
         inherit(b, n, parent, &f);
         if (kind == MODEL_LIGHT)

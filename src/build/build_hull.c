@@ -600,7 +600,6 @@ static sc_status depth_error(const walk *w, const model_node *n)
 
 static sc_status minkowski_parts(const walk *w, const model_node *n, const affine *m,
                                  int depth, partlist *out, int *not_closed);
-static int solids(const model_node *n);
 static sc_status resize_matrix(const walk *w, const model_node *n, int depth, affine *out,
                                const char **warning);
 static sc_status solid_parts(const walk *w, const model_node *n, const affine *m,
@@ -693,13 +692,13 @@ static sc_status collect(const walk *w, const model_node *parent, const affine *
             any_2d = 1;
         } else if (is_group(kind)) {
             walk sub = *w;
-            sub.in_union |= solids(n) > 1;
+            sub.in_union |= build_hull_solids(n) > 1;
             st = collect(&sub, n, m, depth + 1, out);
         } else if (kind == MODEL_XFORM || kind == MODEL_RESIZE) {
             affine inner;
             int ok;
             walk sub = *w;
-            sub.in_union |= solids(n) > 1;
+            sub.in_union |= build_hull_solids(n) > 1;
             st = inner_frame(w, n, m, depth + 1, &inner, &ok);
             if (st == SC_OK && ok)
                 st = collect(&sub, n, &inner, depth + 1, out);
@@ -1606,9 +1605,7 @@ sc_status build_minkowski(const build_ctx *c, const model_node *n, int emit,
 
 /* ---- resize ---- */
 
-/* The children of n with a 3D solid, as OpenSCAD's union and booleans
- * count them: not '%', '*', shading or 2D. */
-static int solids(const model_node *n)
+int build_hull_solids(const model_node *n)
 {
     int count = 0;
     for (const model_node *k = n->first_child; k; k = k->next)
@@ -1624,7 +1621,7 @@ static int solids(const model_node *n)
  * read as the sum of convex parts OpenSCAD makes one mesh of). */
 static int nef_result(const model_node *n, int depth)
 {
-    int count = solids(n);
+    int count = build_hull_solids(n);
     if (count != 1 || depth > BUILD_HULL_MAX_DEPTH)
         return count > 1;
     const model_node *only = n->first_child;
@@ -1678,7 +1675,7 @@ static sc_status support_node(const walk *w, const model_node *n, const affine *
         return support(w, n, &inner, depth + 1, out);
     }
     if ((kind == MODEL_DIFFERENCE || kind == MODEL_INTERSECTION) && !w->check &&
-        solids(n) > 1) {
+        build_hull_solids(n) > 1) {
         /* OpenSCAD's box: that of the CGAL result's vertices */
         partlist parts = {NULL, 0, 0};
         st = solid_parts(w, n, m, depth + 1, &parts);
