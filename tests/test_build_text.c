@@ -554,6 +554,13 @@ static void test_long_and_fonts(void **state)
                   1, 30,
                   "text: font 'No Such Font' was not found; using "
                   "'DejaVu Sans'");
+    /* a 2D model's text warns too (its walk takes no leaf's note) */
+    check_warning("text(\"a\", font = \"No Such Font\");", 0, 1,
+                  "text: font 'No Such Font' was not found; using "
+                  "'DejaVu Sans'");
+    check_warning("union() { square(1); text(\"a\", font = \"No Such Font\"); }", 1, 22,
+                  "text: font 'No Such Font' was not found; using "
+                  "'DejaVu Sans'");
     check_warning("linear_extrude(height = 1) { text(\"a\", halign = \"middle\"); }", 0,
                   30,
                   "text: unknown halign 'middle' (use \"left\", "

@@ -478,12 +478,17 @@ static sc_status read_circle(const eval *e, const model_node *n, twod_region *ou
 
 /* text: OpenSCAD's glyph polygons (build_text.c), outlines counter-clockwise
  * and holes clockwise, united with the non-zero rule as its text renderer
- * unites them. A font fallback is the caller's warning (c->note). */
+ * unites them. A font fallback is the caller's warning (c->note), or,
+ * where the caller takes none (a 2D model), one of c->notes. */
 static sc_status read_text(const eval *e, const model_node *n, twod_region *out)
 {
     twod_region glyphs;
     twod_init(&glyphs);
-    sc_status st = text_faithful_polygons(e->c, n, &glyphs, e->c->note);
+    sc_error fallback = {SC_OK, "", 0, 0, ""};
+    sc_status st =
+        text_faithful_polygons(e->c, n, &glyphs, e->c->note ? e->c->note : &fallback);
+    if (st == SC_OK && fallback.message[0])
+        st = build_note(e->c, &n->loc, "%s", fallback.message);
     if (st == SC_OK) {
         glyphs.sanitized = 1; /* already oriented: the union keeps holes */
         twod_region *one = &glyphs;
