@@ -326,6 +326,25 @@ differ=$(idiff -fail 0.004 os_symbol.png sc_symbol.png 2>&1 |
     grep -Eo '[0-9]+ pixels .* over 0\.004' | grep -Eo '^[0-9]+')
 [ "${differ:-0}" -le "$limit" ] ||
     fail "symbol.scad: $differ pixels differ from OpenSCAD's render"
+# The folders of OPENSCAD_FONT_PATH hold fonts, as OpenSCAD's FontCache
+# adds them: the same font found there, from a .csg that does not use it.
+mkdir -p fontdir && cp "$src/tests/data/fonts/marvosym.ttf" fontdir/
+printf 'text(text = "0123 AB", size = 10, font = "MarVoSym");\n' >symbol_path.csg
+check
+OPENSCAD_FONT_PATH="$PWD/nothere:$PWD/fontdir" openscad_png --render -o os_symbol_path.png \
+    --imgsize=160,120 symbol_path.csg
+OPENSCAD_FONT_PATH="$PWD/nothere:$PWD/fontdir" "$bin" render symbol_path.csg \
+    -o sc_symbol_path.png -q --imgsize=160,120 --faithful --lighting=openscad \
+    --colorscheme=Cornfield 2>symbol_path_err.txt || fail "symbol_path.csg: spancast failed"
+[ -s symbol_path_err.txt ] && fail "symbol_path.csg: $(cat symbol_path_err.txt)"
+differ=$(idiff -fail 0.004 os_symbol_path.png sc_symbol_path.png 2>&1 |
+    grep -Eo '[0-9]+ pixels .* over 0\.004' | grep -Eo '^[0-9]+')
+[ "${differ:-0}" -le "$limit" ] ||
+    fail "symbol_path.csg: $differ pixels differ from OpenSCAD's render"
+check
+"$bin" render symbol_path.csg -o sc_symbol_nopath.png -q 2>symbol_nopath_err.txt
+grep -q "font 'MarVoSym' was not found" symbol_nopath_err.txt ||
+    fail "symbol_path.csg without OPENSCAD_FONT_PATH: $(cat symbol_nopath_err.txt)"
 
 echo "$checks checks, $fails failures"
 [ "$fails" = 0 ]

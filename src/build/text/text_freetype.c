@@ -6,16 +6,19 @@
  * printing; build_text.c adds the node's position.
  *
  * fontconfig's configuration is its own (the process's default, built on
- * first use), with the font files spancast_text_register adds to it; the
+ * first use), with the font files spancast_text_register adds to it and
+ * the folders of OPENSCAD_FONT_PATH, as OpenSCAD's FontCache adds them; the
  * FreeType library and face live for one node's layout.
  */
 #include <ctype.h>
 #include <errno.h>
 #include <math.h>
 #include <stdarg.h>
+#include <stdatomic.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 
 #include <fontconfig/fontconfig.h>
 #include <ft2build.h>
@@ -115,6 +118,29 @@ static void choose_charmap(FT_Face face)
             return;
 }
 
+/* The folders of OPENSCAD_FONT_PATH (':'-separated; those that are not
+ * folders are passed over) added to fontconfig's fonts, once per process,
+ * as OpenSCAD 2021.01's FontCache adds them before its first font. */
+static void add_font_path(void)
+{
+    static atomic_int added;
+    if (atomic_exchange(&added, 1))
+        return;
+    const char *path = getenv("OPENSCAD_FONT_PATH");
+    char dir[4096];
+    while (path && *path) {
+        size_t len = strcspn(path, ":");
+        struct stat st;
+        if (len > 0 && len < sizeof dir) {
+            memcpy(dir, path, len);
+            dir[len] = 0;
+            if (stat(dir, &st) == 0 && S_ISDIR(st.st_mode))
+                FcConfigAppFontAddDir(NULL, (const FcChar8 *)dir);
+        }
+        path += len + (path[len] == ':');
+    }
+}
+
 /* Opens the face fontconfig matches for name (OpenSCAD's find_face); on a
  * family fontconfig does not have, leaves a warning in note. */
 static sc_status open_face(layout_ctx *c, FT_Library lib, const char *font, FT_Face *face)
@@ -131,6 +157,7 @@ static sc_status open_face(layout_ctx *c, FT_Library lib, const char *font, FT_F
     memcpy(name, start, len);
     name[len] = 0;
     const char *lookup = len ? name : default_font;
+    add_font_path();
     FcPattern *pattern = FcNameParse((const FcChar8 *)lookup);
     if (!pattern) {
         free(name);
