@@ -342,6 +342,16 @@ difference() {
 	$far
 }
 CSG
+cat >hull-mink.csg <<CSG
+hull() {
+	minkowski(convexity = 0) {
+		linear_extrude(height = 1, center = false, convexity = 1, scale = [1, 1], \$fn = 0, \$fa = 12, \$fs = 2) {
+			square(size = [1, 1], center = false);
+			multmatrix([[1, 0, 0, 1], [0, 1, 0, 1], [0, 0, 1, 0], [0, 0, 0, 1]]) square(size = [1, 1], center = false);
+		}
+	}
+}
+CSG
 printf 'OFF\n8 7 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n0 0 1\n1 0 1\n1 1 1\n0 1 1\n4 0 1 2 3\n4 4 5 1 0\n4 7 6 5 4\n4 5 6 2 1\n4 6 7 3 2\n4 7 4 0 3\n4 0 1 2 3\n' >twice.off
 cat >off-twice.csg <<CSG
 difference() {
@@ -361,6 +371,7 @@ builder_cases=(
     "tee-revolve.csg|0.1,0.1,0.3|out|tee-revolve.csg:2:2: warning: rotate_extrude is not closed (its cap's edge (0, 0, 4)-(0, 0, 0) passes through its point (0, 0, 2), where OpenSCAD's tessellation splits the cap but not the side); left out, as OpenSCAD leaves it out (\"$not_closed\")|^ERROR: The given mesh is not closed"
     "hole-touch.csg|3.5,3.5,0.5|out|hole-touch.csg:2:2: warning: linear_extrude is not closed (its cap's edge (0, 0, 0)-(4, 0, 0) passes through its point (2, 0, 0), where OpenSCAD's tessellation splits the cap but not the side); left out, as OpenSCAD leaves it out (\"$not_closed\")|^ERROR: The given mesh is not closed"
     "mink-one.csg|1.5,1.5,0.5|in||"
+    "hull-mink.csg|1.2,0.5,0.5|in||"
     "mink-one-cut.csg|1.5,1.5,0.5|out|mink-one-cut.csg:3:3: warning: linear_extrude is not closed (edge (1, 1, 0)-(1, 1, 1) is used by 4 faces); left out, as OpenSCAD leaves it out (\"$not_closed\")|^ERROR: The given mesh is not closed"
     "off-twice.csg|0.5,0.5,0.5|out|off-twice.csg:2:16: warning: import: 'twice.off' is not a mesh CGAL's OFF reader takes (face 6 runs an edge from point 0 the way a face before it does); the import is empty, as OpenSCAD reads nothing from it (--strict makes it an error)|input error: facet 6 shares a halfedge"
 )

@@ -690,7 +690,9 @@ static sc_status collect(const walk *w, const model_node *parent, const affine *
         if (is_2d(n)) {
             st = check_2d(w, n, &mixing);
             any_2d = 1;
-        } else if (is_group(kind)) {
+        } else if (is_group(kind) ||
+                   (kind == MODEL_MINKOWSKI && build_hull_solids(n) == 1)) {
+            /* a minkowski of one solid is that solid (build.c) */
             walk sub = *w;
             sub.in_union |= build_hull_solids(n) > 1;
             st = collect(&sub, n, m, depth + 1, out);
