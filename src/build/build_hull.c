@@ -1249,6 +1249,8 @@ static sc_status nef_node(const walk *w, const model_node *n, const affine *m, i
         st = build_mesh_merge(c, &n->loc, 1, n->u.polyhedron.points, np,
                               n->u.polyhedron.indices, n->u.polyhedron.face_start,
                               n->u.polyhedron.face_count, &f);
+        if (st == SC_OK && !build_mesh_cgal_keep(&f, 1))
+            st = err_nomem(c->error, &n->loc);
         if (st == SC_OK && f.face_count)
             st = nef_mesh(w, n, m, &f, out);
         build_mesh_faces_free(&f);

@@ -305,6 +305,90 @@ static int fans_whole(const build_mesh_faces *f, const char *what, int numbered,
     return whole;
 }
 
+/* A face's edge for approx_convex: its ends (p << 32 | q) and its face. */
+typedef struct face_edge {
+    uint64_t key;
+    uint32_t face, next; /* next: the point after q in the face */
+} face_edge;
+
+static int face_edge_cmp(const void *a, const void *b)
+{
+    const face_edge *x = a, *y = b;
+    return x->key < y->key ? -1 : x->key > y->key;
+}
+
+static uint32_t face_root(uint32_t *parent, uint32_t i)
+{
+    while (parent[i] != i)
+        i = parent[i] = parent[parent[i]];
+    return i;
+}
+
+/* Whether OpenSCAD 2021.01 finds f convex (is_approximately_convex, on
+ * the faces as its tessellation cleans them): every edge runs once each
+ * way, every fold between two faces turns outward or by less than 0.1
+ * degrees, and every face is reached from the first. Such a mesh it takes
+ * as the convex hull of its points, without CGAL's polyhedron builder.
+ * reversed: f's faces are a polyhedron's, which OpenSCAD reads back to
+ * front, so that they turn the other way. 1, 0, or -1 when memory runs
+ * out. */
+static int approx_convex(const build_mesh_faces *f, int reversed)
+{
+    uint32_t total = f->face_start[f->face_count];
+    face_edge *edges = malloc((size_t)(total ? total : 1) * sizeof *edges);
+    vec3 *normal = malloc((size_t)(f->face_count ? f->face_count : 1) * sizeof *normal);
+    uint32_t *parent =
+        malloc((size_t)(f->face_count ? f->face_count : 1) * sizeof *parent);
+    if (!edges || !normal || !parent) {
+        free(edges);
+        free(normal);
+        free(parent);
+        return -1;
+    }
+    size_t n = 0;
+    for (uint32_t k = 0; k < f->face_count; k++) {
+        uint32_t s = f->face_start[k], e = f->face_start[k + 1];
+        vec3 sum = v3(0, 0, 0);
+        for (uint32_t i = s; i < e; i++) {
+            uint32_t j = i + 1 < e ? i + 1 : s, l = j + 1 < e ? j + 1 : s;
+            vec3 a = f->points[f->indices[i]], b = f->points[f->indices[j]];
+            sum = v3_add(sum, v3((a.y - b.y) * (a.z + b.z), (a.z - b.z) * (a.x + b.x),
+                                 (a.x - b.x) * (a.y + b.y)));
+            edges[n++] = (face_edge){(uint64_t)f->indices[i] << 32 | f->indices[j], k,
+                                     f->indices[l]};
+        }
+        normal[k] = reversed ? v3_scale(sum, -1) : sum;
+        parent[k] = k;
+    }
+    qsort(edges, n, sizeof *edges, face_edge_cmp);
+    const double most = cos(0.1 * 3.14159265358979323846 / 180); /* 0.1 degrees */
+    int convex = 1;
+    for (size_t i = 0; i + 1 < n && convex; i++)
+        convex = edges[i].key != edges[i + 1].key; /* an edge run twice one way */
+    for (size_t i = 0; i < n && convex; i++) {
+        face_edge key = {edges[i].key << 32 | edges[i].key >> 32, 0, 0};
+        const face_edge *other = bsearch(&key, edges, n, sizeof *edges, face_edge_cmp);
+        if (!other) {
+            convex = 0; /* not closed */
+            break;
+        }
+        uint32_t g = other->face, k = edges[i].face;
+        vec3 u = normal[g], v = normal[k];
+        vec3 on = f->points[f->indices[f->face_start[g]]];
+        if (v3_dot(u, v3_sub(f->points[edges[i].next], on)) > 0 &&
+            v3_dot(u, v) / (v3_length(u) * v3_length(v)) < most)
+            convex = 0; /* a fold inward */
+        uint32_t a = face_root(parent, g), b = face_root(parent, k);
+        parent[a] = b;
+    }
+    for (uint32_t k = 1; k < f->face_count && convex; k++)
+        convex = face_root(parent, k) == face_root(parent, 0);
+    free(edges);
+    free(normal);
+    free(parent);
+    return convex;
+}
+
 /* A set of directed edges (p << 32 | q), by open addressing. */
 typedef struct edge_set {
     uint64_t *keys; /* UINT64_MAX: free */
@@ -336,6 +420,10 @@ static int builder_refuses(const build_mesh_faces *f, const edge_set *edges,
                            uint32_t *at)
 {
     uint32_t s = f->face_start[k], e = f->face_start[k + 1];
+    if (f->twice && f->twice[k] != UINT32_MAX) {
+        *at = f->twice[k];
+        return 1;
+    }
     for (uint32_t i = s; i < e; i++) {
         uint32_t p = f->indices[i], q = f->indices[i + 1 < e ? i + 1 : s];
         *at = p;
@@ -1911,6 +1999,7 @@ void build_mesh_faces_free(build_mesh_faces *f)
     free(f->indices);
     free(f->face_start);
     free(f->face_loops);
+    free(f->twice);
     memset(f, 0, sizeof *f);
 }
 
@@ -2000,8 +2089,9 @@ sc_status build_mesh_merge(const build_ctx *c, const sc_location *loc, int rever
     f->names = malloc((size_t)(point_count ? point_count : 1) * sizeof *f->names);
     f->indices = malloc((size_t)(total ? total : 1) * sizeof *f->indices);
     f->face_start = malloc(((size_t)face_count + 1) * sizeof *f->face_start);
+    f->twice = malloc((size_t)(face_count ? face_count : 1) * sizeof *f->twice);
     if (!g.slots || !g.occupied || !map || !f->points || !f->names || !f->indices ||
-        !f->face_start) {
+        !f->face_start || !f->twice) {
         free(g.slots);
         free(g.occupied);
         free(map);
@@ -2022,6 +2112,14 @@ sc_status build_mesh_merge(const build_ctx *c, const sc_location *loc, int rever
                 grid_point(&g, f, points, i, c->faithful, &map[i]);
         }
     }
+    uint32_t *seen = calloc(f->point_count ? f->point_count : 1, sizeof *seen);
+    if (!seen) {
+        free(g.slots);
+        free(g.occupied);
+        free(map);
+        build_mesh_faces_free(f);
+        return err_nomem(c->error, loc);
+    }
     /* Faces on the merged points, cleaned as OpenSCAD cleans them
      * (tessellatePolygonWithHoles): a point repeated next to itself and a
      * null ear (a b a) go; a face left with fewer than 3 points goes. */
@@ -2032,6 +2130,16 @@ sc_status build_mesh_merge(const build_ctx *c, const sc_location *loc, int rever
         uint32_t n = 0;
         for (uint32_t j = s; j < e; j++)
             v[n++] = map[indices[j]];
+        /* the point OpenSCAD's face, without its points repeated next to
+         * each other (quantizeVertices), passes through twice */
+        uint32_t twice = UINT32_MAX;
+        for (uint32_t j = 0; j < n && twice == UINT32_MAX; j++) {
+            if (v[j] == v[(j + n - 1) % n])
+                continue; /* its run is counted once, where it starts */
+            if (seen[v[j]] == face + 1)
+                twice = v[j];
+            seen[v[j]] = face + 1;
+        }
         uint32_t i = 0;
         while (n >= 3 && i < n) {
             if (v[i] == v[(i + 1) % n]) {
@@ -2052,10 +2160,12 @@ sc_status build_mesh_merge(const build_ctx *c, const sc_location *loc, int rever
         }
         if (n < 3)
             continue;
+        f->twice[f->face_count] = twice;
         f->face_start[f->face_count++] = at;
         at += n;
     }
     f->face_start[f->face_count] = at;
+    free(seen);
     free(g.slots);
     free(g.occupied);
     free(map);
@@ -2072,8 +2182,41 @@ int build_mesh_sound(const build_mesh_faces *f, const char *what, int numbered, 
 int build_mesh_cgal_sound(const build_mesh_faces *f, const char *what, int numbered,
                           char *why, size_t size, const char **openscad)
 {
+    int convex = approx_convex(f, numbered);
+    if (convex != 0) /* OpenSCAD takes its hull (or memory ran out) */
+        return convex;
     builder_run run = {NULL, 0, 0, 0};
     return builder_whole(f, what, numbered, why, size, &run, openscad);
+}
+
+int build_mesh_cgal_keep(build_mesh_faces *f, int reversed)
+{
+    int convex = approx_convex(f, reversed);
+    if (convex != 0)
+        return convex > 0;
+    uint8_t *taken = malloc(f->face_count ? f->face_count : 1);
+    builder_run run = {taken, 0, 0, 0};
+    char why[8];
+    const char *openscad;
+    if (!taken || builder_whole(f, "", 0, why, sizeof why, &run, &openscad) < 0) {
+        free(taken);
+        return 0;
+    }
+    uint32_t n = 0, count = 0;
+    for (uint32_t k = 0; k < f->face_count; k++) {
+        uint32_t s = f->face_start[k], e = f->face_start[k + 1];
+        if (!taken[k])
+            continue;
+        if (f->twice)
+            f->twice[count] = f->twice[k];
+        f->face_start[count++] = n;
+        for (uint32_t i = s; i < e; i++)
+            f->indices[n++] = f->indices[i];
+    }
+    f->face_start[count] = n;
+    f->face_count = count;
+    free(taken);
+    return 1;
 }
 
 int build_mesh_cgal_closed(const build_ctx *c, const build_mesh_faces *f,
@@ -2146,6 +2289,11 @@ sc_status build_mesh_solid(const build_ctx *c, const sc_location *loc, const cha
         return charged;
     char why[SC_ERROR_MESSAGE_MAX - 160];
     int cgal = c->faithful && !c->drawn_as_is;
+    int convex = cgal ? approx_convex(f, numbered) : 0;
+    if (convex < 0)
+        return err_nomem(c->error, loc);
+    if (convex) /* OpenSCAD takes its hull, without CGAL's builder */
+        cgal = 0;
     /* taken: the faces CGAL's builder takes, which are all that OpenSCAD's
      * boolean sees of a mesh it finds closed (a face given twice, say) */
     uint8_t *taken = cgal ? malloc(f->face_count ? f->face_count : 1) : NULL;
@@ -2602,8 +2750,12 @@ static const char *read_off(const char *text, size_t size, mesh_file *m, int *oo
  * memory runs out. */
 static int off_rolled_back(const mesh_file *m, char *why, size_t size)
 {
-    build_mesh_faces f = {m->points,     NULL, m->point_count, m->indices,
-                          m->face_start, NULL, m->face_count,  1};
+    build_mesh_faces f = {.points = m->points,
+                          .point_count = m->point_count,
+                          .indices = m->indices,
+                          .face_start = m->face_start,
+                          .face_count = m->face_count,
+                          .lent = 1};
     builder_run run = {NULL, 0, 0, 0};
     char unused[8];
     const char *openscad;

@@ -79,6 +79,9 @@ typedef struct build_mesh_faces {
     uint32_t *face_start; /* loop starts: one more than the loops */
     uint32_t *face_loops; /* NULL, or face_count + 1 entries */
     uint32_t face_count;
+    /* NULL, or for each face the point OpenSCAD's face passes through
+     * twice (UINT32_MAX: none), which a null ear cleaned here may hide */
+    uint32_t *twice;
     int lent; /* the arrays belong to the build's files (build_import_faces) */
 } build_mesh_faces;
 
@@ -106,11 +109,20 @@ int build_mesh_sound(const build_mesh_faces *f, const char *what, int numbered, 
  * passes through a point twice, runs an edge the way a face taken runs it,
  * or meets a point whose faces already close; the faces taken must then
  * leave no edge with one face ("not closed") and no point off them
- * ("invalid"), and the faces about each point must make one fan. 1; 0,
+ * ("invalid"), and the faces about each point must make one fan. A mesh
+ * OpenSCAD finds convex (its is_approximately_convex, the faces turned as
+ * OpenSCAD holds them: a polyhedron's, numbered, back to front) it takes
+ * as its hull, without the builder: sound. 1; 0,
  * with what is wrong in why and OpenSCAD's message in *openscad; -1 when
  * memory ran out. */
 int build_mesh_cgal_sound(const build_mesh_faces *f, const char *what, int numbered,
                           char *why, size_t size, const char **openscad);
+/* Drops from f (its own arrays, one loop a face) the faces CGAL's
+ * polyhedron builder skips (build_mesh_cgal_sound), as OpenSCAD's Nef
+ * polyhedron of it has none of them: a face given twice, say. A mesh
+ * OpenSCAD finds convex keeps them all (reversed: a polyhedron's faces,
+ * as approx_convex). 0 when memory runs out. */
+int build_mesh_cgal_keep(build_mesh_faces *f, int reversed);
 /* build_mesh_cgal_sound where faithful mode hands f to CGAL (c->faithful,
  * not c->drawn_as_is), else build_mesh_sound. */
 int build_mesh_cgal_closed(const build_ctx *c, const build_mesh_faces *f,
