@@ -401,6 +401,8 @@ builder_cases=(
     "spike.csg|0.5,0.5,0.5|out|spike.csg:2:2: warning: polyhedron is not closed (a face passes through point 0 twice, and CGAL's builder skips it); left out, as OpenSCAD leaves it out (\"$not_closed\")|^ERROR: The given mesh is not closed"
     "spike-convex.csg|0.5,0.5,0.5|in||"
     "mink-dup.csg|1.5,1.05,1.05|in||"
+    "opposite.csg|0.5,0.5,0.5|in||"
+    "opposite.csg|3.5,0.5,0.5|in||"
     "mink-one-cut.csg|1.5,1.5,0.5|out|mink-one-cut.csg:3:3: warning: linear_extrude is not closed (edge (1, 1, 0)-(1, 1, 1) is used by 4 faces); left out, as OpenSCAD leaves it out (\"$not_closed\")|^ERROR: The given mesh is not closed"
     "off-twice.csg|0.5,0.5,0.5|out|off-twice.csg:2:16: warning: import: 'twice.off' is not a mesh CGAL's OFF reader takes (face 6 runs an edge from point 0 the way a face before it does); the import is empty, as OpenSCAD reads nothing from it (--strict makes it an error)|input error: facet 6 shares a halfedge"
 )
@@ -418,8 +420,16 @@ for case in "${builder_cases[@]}"; do
         fail "openscad on $file: $(cat "${file%.csg}_os.err")"
     fi
 done
-# The spike (a face through a point twice, which a null ear hides) is
-# drawn where nothing hands it to CGAL.
+# The two cubes of opposite winding in one polyhedron are both solid, as
+# CGAL's Nef polyhedron of it keeps both (openscad's mesh reaches x = 4),
+# in exact mode too; the spike (a face through a point twice, which a
+# null ear hides) is drawn where nothing hands it to CGAL.
+if command -v openscad >/dev/null; then
+    check
+    grep -q 'vertex 4 ' opposite_os.stl || fail "openscad drops the second cube of opposite.csg"
+fi
+expect 0 "" inside opposite.csg --point=0.5,0.5,0.5 --point=3.5,0.5,0.5 --point=2,0.5,0.5
+[ "$(tr '\n' ' ' <out.txt)" = "in in out " ] || fail "opposite.csg (exact): $(tr '\n' ' ' <out.txt)"
 expect 0 "" inside spike.csg --point=0.5,0.5,0.5
 [ "$(cat out.txt)" = in ] || fail "spike.csg (exact): $(cat out.txt)"
 # --strict makes the OFF reader's refusal the error; exact mode draws the

@@ -146,11 +146,102 @@ static int mesh_sound(const char *what, int numbered, const vec3 *points,
     return sound;
 }
 
+/* An edge of a triangle, for shell_volumes: its ends (lower first) and
+ * its triangle. */
+typedef struct tri_edge {
+    uint64_t key;
+    uint32_t tri;
+} tri_edge;
+
+static int tri_edge_cmp(const void *a, const void *b)
+{
+    const tri_edge *x = a, *y = b;
+    return x->key < y->key ? -1 : x->key > y->key;
+}
+
+static uint32_t tri_root(uint32_t *parent, uint32_t i)
+{
+    while (parent[i] != i)
+        i = parent[i] = parent[parent[i]];
+    return i;
+}
+
+/* Whether box a lies within box b. */
+static int box_within(const bbox *a, const bbox *b)
+{
+    return a->lo.x >= b->lo.x && a->lo.y >= b->lo.y && a->lo.z >= b->lo.z &&
+           a->hi.x <= b->hi.x && a->hi.y <= b->hi.y && a->hi.z <= b->hi.z;
+}
+
+/* Whether the shells of a closed mesh (its triangles joined by their
+ * edges) turn different ways where a global turn cannot mend it: a shell
+ * enclosing volume of the sign opposite to the mesh's whole (whose sign
+ * is total's) that does not lie within the box of a shell of the mesh's
+ * sign, where it would be a cavity, sets *mixed; the sum of the shells'
+ * volumes, each counted positive, goes to *volume (six times the volume,
+ * about centre). 0 when memory runs out. */
+static int shell_volumes(const vec3 *points, const uint32_t *tris, size_t k, vec3 centre,
+                         double total, int *mixed, double *volume)
+{
+    tri_edge *edges = malloc((k ? k : 1) * 3 * sizeof *edges);
+    uint32_t *parent = malloc((k ? k : 1) * sizeof *parent);
+    double *shell = calloc(k ? k : 1, sizeof *shell);
+    bbox *box = malloc((k ? k : 1) * sizeof *box);
+    if (!edges || !parent || !shell || !box) {
+        free(edges);
+        free(parent);
+        free(shell);
+        free(box);
+        return 0;
+    }
+    for (size_t i = 0; i < k; i++) {
+        parent[i] = (uint32_t)i;
+        box[i] = bbox_empty();
+        for (int j = 0; j < 3; j++) {
+            uint64_t p = tris[3 * i + j], q = tris[3 * i + (j + 1) % 3];
+            edges[3 * i + j] = (tri_edge){p < q ? p << 32 | q : q << 32 | p, (uint32_t)i};
+        }
+    }
+    qsort(edges, 3 * k, sizeof *edges, tri_edge_cmp);
+    for (size_t i = 1; i < 3 * k; i++)
+        if (edges[i].key == edges[i - 1].key)
+            parent[tri_root(parent, edges[i].tri)] = tri_root(parent, edges[i - 1].tri);
+    for (size_t i = 0; i < k; i++) {
+        uint32_t r = tri_root(parent, (uint32_t)i);
+        vec3 a = v3_sub(points[tris[3 * i]], centre);
+        vec3 b = v3_sub(points[tris[3 * i + 1]], centre);
+        vec3 d = v3_sub(points[tris[3 * i + 2]], centre);
+        shell[r] += v3_dot(a, v3_cross(b, d));
+        for (int j = 0; j < 3; j++)
+            box[r] = bbox_add_point(box[r], points[tris[3 * i + j]]);
+    }
+    *volume = 0;
+    *mixed = 0;
+    for (size_t i = 0; i < k; i++) {
+        *volume += fabs(shell[i]);
+        if (!(shell[i] * total < 0) || *mixed)
+            continue;
+        int cavity = 0; /* within the box of a shell turned the mesh's way */
+        for (size_t j = 0; j < k && !cavity; j++)
+            cavity = shell[j] * total > 0 && box_within(&box[i], &box[j]);
+        *mixed = !cavity;
+    }
+    free(edges);
+    free(parent);
+    free(shell);
+    free(box);
+    return 1;
+}
+
 /* The leaf of tri_count triangles (three indices into points each, wound
  * alike): a closed mesh is turned outward by the sign of its volume, and a
  * mesh without volume is empty (*empty); parity says the mesh is not sound
  * and takes the parity rule (prim_mesh.h), its triangles as they come, and
- * is empty only without area. */
+ * is empty only without area. A closed mesh whose shells turn different
+ * ways (a cube and a copy of it wound the other way; shell_volumes) takes
+ * the parity rule too, which makes each shell solid and a shell inside
+ * another a hollow, as CGAL's Nef polyhedron of it does and as OpenSCAD
+ * draws its faces; its volume is its shells'. */
 static sc_status finish_mesh(const build_ctx *c, const sc_location *loc, int numbered,
                              const vec3 *points, uint32_t point_count, uint32_t *tris,
                              size_t k, int parity, prim *out, const char **empty)
@@ -167,10 +258,14 @@ static sc_status finish_mesh(const build_ctx *c, const sc_location *loc, int num
         volume += v3_dot(a, v3_cross(b, d)) / 6;
         area += v3_length(v3_cross(v3_sub(b, a), v3_sub(d, a)));
     }
+    int mixed = 0;
+    double shells = fabs(volume) * 6;
+    if (!parity && !shell_volumes(points, tris, k, centre, volume, &mixed, &shells))
+        return err_nomem(c->error, loc);
     vec3 ext = v3_sub(box.hi, box.lo);
     double size = fmax(ext.x, fmax(ext.y, ext.z));
     if (parity ? !(area > 1e-24 * size * size)
-               : !(fabs(volume) > 1e-12 * size * size * size)) {
+               : !(shells / 6 > 1e-12 * size * size * size)) {
         *empty = numbered ? "polyhedron without volume is empty"
                           : "imported mesh without volume is empty";
         return SC_OK;
@@ -182,7 +277,8 @@ static sc_status finish_mesh(const build_ctx *c, const sc_location *loc, int num
             tris[3 * i + 2] = t;
         }
     }
-    const prim_mesh *m = prim_mesh_create_rule(c->csg, points, tris, (uint32_t)k, parity);
+    const prim_mesh *m =
+        prim_mesh_create_rule(c->csg, points, tris, (uint32_t)k, parity || mixed);
     if (!m)
         return err_nomem(c->error, loc);
     memset(out, 0, sizeof *out);
