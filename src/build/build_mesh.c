@@ -146,20 +146,22 @@ static int mesh_sound(const char *what, int numbered, const vec3 *points,
     return sound;
 }
 
-/* An edge of a triangle, for shell_volumes: its ends (lower first) and
- * its triangle. */
-typedef struct tri_edge {
+/* An edge of a face or triangle, for shell_volumes and approx_convex:
+ * its ends (p << 32 | q), its face, and the point after q in the face. */
+typedef struct face_edge {
     uint64_t key;
-    uint32_t tri;
-} tri_edge;
+    uint32_t face, next;
+} face_edge;
 
-static int tri_edge_cmp(const void *a, const void *b)
+static int face_edge_cmp(const void *a, const void *b)
 {
-    const tri_edge *x = a, *y = b;
+    const face_edge *x = a, *y = b;
     return x->key < y->key ? -1 : x->key > y->key;
 }
 
-static uint32_t tri_root(uint32_t *parent, uint32_t i)
+/* The root of i in a union-find forest of faces (parent), halving the
+ * path on the way. */
+static uint32_t face_root(uint32_t *parent, uint32_t i)
 {
     while (parent[i] != i)
         i = parent[i] = parent[parent[i]];
@@ -183,7 +185,7 @@ static int box_within(const bbox *a, const bbox *b)
 static int shell_volumes(const vec3 *points, const uint32_t *tris, size_t k, vec3 centre,
                          double total, int *mixed, double *volume)
 {
-    tri_edge *edges = malloc((k ? k : 1) * 3 * sizeof *edges);
+    face_edge *edges = malloc((k ? k : 1) * 3 * sizeof *edges);
     uint32_t *parent = malloc((k ? k : 1) * sizeof *parent);
     double *shell = calloc(k ? k : 1, sizeof *shell);
     bbox *box = malloc((k ? k : 1) * sizeof *box);
@@ -199,15 +201,17 @@ static int shell_volumes(const vec3 *points, const uint32_t *tris, size_t k, vec
         box[i] = bbox_empty();
         for (int j = 0; j < 3; j++) {
             uint64_t p = tris[3 * i + j], q = tris[3 * i + (j + 1) % 3];
-            edges[3 * i + j] = (tri_edge){p < q ? p << 32 | q : q << 32 | p, (uint32_t)i};
+            edges[3 * i + j] =
+                (face_edge){p < q ? p << 32 | q : q << 32 | p, (uint32_t)i, 0};
         }
     }
-    qsort(edges, 3 * k, sizeof *edges, tri_edge_cmp);
+    qsort(edges, 3 * k, sizeof *edges, face_edge_cmp);
     for (size_t i = 1; i < 3 * k; i++)
         if (edges[i].key == edges[i - 1].key)
-            parent[tri_root(parent, edges[i].tri)] = tri_root(parent, edges[i - 1].tri);
+            parent[face_root(parent, edges[i].face)] =
+                face_root(parent, edges[i - 1].face);
     for (size_t i = 0; i < k; i++) {
-        uint32_t r = tri_root(parent, (uint32_t)i);
+        uint32_t r = face_root(parent, (uint32_t)i);
         vec3 a = v3_sub(points[tris[3 * i]], centre);
         vec3 b = v3_sub(points[tris[3 * i + 1]], centre);
         vec3 d = v3_sub(points[tris[3 * i + 2]], centre);
@@ -399,25 +403,6 @@ static int fans_whole(const build_mesh_faces *f, const char *what, int numbered,
     }
     free(cs);
     return whole;
-}
-
-/* A face's edge for approx_convex: its ends (p << 32 | q) and its face. */
-typedef struct face_edge {
-    uint64_t key;
-    uint32_t face, next; /* next: the point after q in the face */
-} face_edge;
-
-static int face_edge_cmp(const void *a, const void *b)
-{
-    const face_edge *x = a, *y = b;
-    return x->key < y->key ? -1 : x->key > y->key;
-}
-
-static uint32_t face_root(uint32_t *parent, uint32_t i)
-{
-    while (parent[i] != i)
-        i = parent[i] = parent[parent[i]];
-    return i;
 }
 
 /* Whether OpenSCAD 2021.01 finds f convex (is_approximately_convex, on
