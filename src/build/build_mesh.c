@@ -221,13 +221,18 @@ static int shell_volumes(const vec3 *points, const uint32_t *tris, size_t k, vec
     }
     *volume = 0;
     *mixed = 0;
-    for (size_t i = 0; i < k; i++) {
+    size_t shells = 0; /* the roots, gathered at the front of parent */
+    for (size_t i = 0; i < k; i++)
+        if (parent[i] == i)
+            parent[shells++] = (uint32_t)i;
+    for (size_t a = 0; a < shells; a++) {
+        uint32_t i = parent[a];
         *volume += fabs(shell[i]);
         if (!(shell[i] * total < 0) || *mixed)
             continue;
         int cavity = 0; /* within the box of a shell turned the mesh's way */
-        for (size_t j = 0; j < k && !cavity; j++)
-            cavity = shell[j] * total > 0 && box_within(&box[i], &box[j]);
+        for (size_t b = 0; b < shells && !cavity; b++)
+            cavity = shell[parent[b]] * total > 0 && box_within(&box[i], &box[parent[b]]);
         *mixed = !cavity;
     }
     free(edges);
@@ -495,10 +500,10 @@ static int edge_in(const edge_set *s, uint32_t p, uint32_t q)
  * *at) that the face passes through twice (1), that starts an edge a face
  * taken runs the same way (2), or where the faces taken already close
  * round (3). used[v]: 1 when point v is on a face taken; open[v]: the edges at v
- * with one face taken. */
+ * with one face taken; met[v]: k + 1 once the face has passed point v. */
 static int builder_refuses(const build_mesh_faces *f, const edge_set *edges,
-                           const uint8_t *used, const uint32_t *open, uint32_t k,
-                           uint32_t *at)
+                           const uint8_t *used, const uint32_t *open, uint32_t *met,
+                           uint32_t k, uint32_t *at)
 {
     uint32_t s = f->face_start[k], e = f->face_start[k + 1];
     if (f->twice && f->twice[k] != UINT32_MAX) {
@@ -508,9 +513,9 @@ static int builder_refuses(const build_mesh_faces *f, const edge_set *edges,
     for (uint32_t i = s; i < e; i++) {
         uint32_t p = f->indices[i], q = f->indices[i + 1 < e ? i + 1 : s];
         *at = p;
-        for (uint32_t j = s; j < i; j++)
-            if (f->indices[j] == p)
-                return 1;
+        if (met[p] == k + 1) /* met before in this face */
+            return 1;
+        met[p] = k + 1;
         if (edge_in(edges, p, q))
             return 2;
         if (used[p] == 1 && !open[p])
@@ -562,12 +567,14 @@ static int builder_whole(const build_mesh_faces *f, const char *what, int number
     edge_set edges = {malloc(slots * sizeof *edges.keys), slots - 1};
     uint8_t *used = calloc(f->point_count ? f->point_count : 1, 1);
     uint32_t *open = calloc(f->point_count ? f->point_count : 1, sizeof *open);
+    uint32_t *met = calloc(f->point_count ? f->point_count : 1, sizeof *met);
     uint8_t *mine = run->taken ? NULL : malloc(f->face_count ? f->face_count : 1);
     uint8_t *take = run->taken ? run->taken : mine;
-    if (!edges.keys || !used || !open || !take) {
+    if (!edges.keys || !used || !open || !met || !take) {
         free(edges.keys);
         free(used);
         free(open);
+        free(met);
         free(mine);
         return -1;
     }
@@ -579,7 +586,7 @@ static int builder_whole(const build_mesh_faces *f, const char *what, int number
     run->refusal = 0;
     for (uint32_t k = 0; k < f->face_count; k++) {
         uint32_t at;
-        int no = builder_refuses(f, &edges, used, open, k, &at);
+        int no = builder_refuses(f, &edges, used, open, met, k, &at);
         take[k] = !no;
         if (no) {
             if (!run->refusal) {
@@ -615,6 +622,7 @@ static int builder_whole(const build_mesh_faces *f, const char *what, int number
     free(edges.keys);
     free(used);
     free(open);
+    free(met);
     int whole = -1;
     if (border != UINT32_MAX) {
         *openscad = build_openscad_not_closed;
