@@ -640,23 +640,22 @@ static sc_status build_polyhedron(builder *b, const model_node *n, const frame *
     m.indices = f.indices;
     m.face_start = f.face_start;
     m.face_count = f.face_count;
-    char why[8];
-    int sound = f.face_count
-                    ? build_mesh_cgal_closed(&c, &f, "polyhedron", 1, why, sizeof why)
-                    : 1;
-    if (sound < 0)
-        st = err_nomem(b->error, &n->loc);
-    b->cgal_drops +=
-        !sound && b->faithful && !c.drawn_as_is && state->emit && state->shown;
     /* The plane-set path compares every face with every point (and every
      * plane with the others), so larger polyhedra go to the mesh path
      * (build_mesh.c), as do the ones that are not convex or not closed, and
      * convex ones of more than PRIM_CONVEX_MAX_PLANES planes, each of which
-     * a ray would test. */
+     * a ray would test. Only a polyhedron that may take the plane-set path
+     * is judged closed here: build_mesh_solid judges the others. */
+    int planes_path = (uint64_t)m.face_count * m.point_count <= BUILD_MAX_POLYHEDRON_WORK;
+    char why[8];
+    int sound = f.face_count && planes_path
+                    ? build_mesh_cgal_closed(&c, &f, "polyhedron", 1, why, sizeof why)
+                    : 1;
+    if (sound < 0)
+        st = err_nomem(b->error, &n->loc);
     uint32_t count = UINT32_MAX;
     bbox bounds;
-    if (st == SC_OK && sound > 0 &&
-        (uint64_t)m.face_count * m.point_count <= BUILD_MAX_POLYHEDRON_WORK)
+    if (st == SC_OK && sound > 0 && planes_path)
         st = convex_planes(b, &m, &count, &bounds);
     if (count != UINT32_MAX && count > PRIM_CONVEX_MAX_PLANES)
         count = UINT32_MAX;
@@ -664,6 +663,9 @@ static sc_status build_polyhedron(builder *b, const model_node *n, const frame *
         const char *empty = NULL;
         prim p;
         st = build_mesh_solid(&c, &n->loc, "polyhedron", 1, b->strict, &f, &p, &empty);
+        /* "": left out where CGAL leaves it out, with its warning */
+        b->cgal_drops += st == SC_OK && empty && !empty[0] && b->faithful &&
+                         !c.drawn_as_is && state->emit && state->shown;
         if (st == SC_OK && state->warns)
             st = warn_note(b, &note);
         if (st == SC_OK && state->warns && empty)

@@ -549,6 +549,27 @@ static void refusal_text(const build_mesh_faces *f, int numbered, const builder_
              after[run->refusal]);
 }
 
+/* The faces of f that taken marks, in order, into into's indices and
+ * face_start (and twice, where both have it), which have room for all of
+ * f's; into may be f. Sets into->face_count. */
+static void faces_taken(const build_mesh_faces *f, const uint8_t *taken,
+                        build_mesh_faces *into)
+{
+    uint32_t n = 0, count = 0, faces = f->face_count;
+    for (uint32_t k = 0; k < faces; k++) {
+        uint32_t s = f->face_start[k], e = f->face_start[k + 1];
+        if (!taken[k])
+            continue;
+        if (f->twice && into->twice)
+            into->twice[count] = f->twice[k];
+        into->face_start[count++] = n;
+        for (uint32_t i = s; i < e; i++)
+            into->indices[n++] = f->indices[i];
+    }
+    into->face_start[count] = n;
+    into->face_count = count;
+}
+
 /* OpenSCAD 2021.01 hands a mesh to CGAL face by face (createPolyhedron-
  * FromPolySet, in the order of its faces) and CGAL's builder skips a face
  * it refuses (builder_refuses); the mesh is then "not closed" if an edge
@@ -655,17 +676,9 @@ static int builder_whole(const build_mesh_faces *f, const char *what, int number
         build_mesh_faces kept = *f;
         kept.indices = malloc((size_t)(total ? total : 1) * sizeof *kept.indices);
         kept.face_start = malloc(((size_t)f->face_count + 1) * sizeof *kept.face_start);
+        kept.twice = NULL;
         if (kept.indices && kept.face_start) {
-            uint32_t n = 0, count = 0;
-            for (uint32_t k = 0; k < f->face_count; k++) {
-                if (!take[k])
-                    continue;
-                kept.face_start[count++] = n;
-                for (uint32_t i = f->face_start[k]; i < f->face_start[k + 1]; i++)
-                    kept.indices[n++] = f->indices[i];
-            }
-            kept.face_start[count] = n;
-            kept.face_count = count;
+            faces_taken(f, take, &kept);
             whole = fans_whole(&kept, what, numbered, why, size);
         }
         free(kept.indices);
@@ -2291,19 +2304,7 @@ int build_mesh_cgal_keep(build_mesh_faces *f, int reversed)
         free(taken);
         return 0;
     }
-    uint32_t n = 0, count = 0;
-    for (uint32_t k = 0; k < f->face_count; k++) {
-        uint32_t s = f->face_start[k], e = f->face_start[k + 1];
-        if (!taken[k])
-            continue;
-        if (f->twice)
-            f->twice[count] = f->twice[k];
-        f->face_start[count++] = n;
-        for (uint32_t i = s; i < e; i++)
-            f->indices[n++] = f->indices[i];
-    }
-    f->face_start[count] = n;
-    f->face_count = count;
+    faces_taken(f, taken, f);
     free(taken);
     return 1;
 }
