@@ -378,6 +378,27 @@ minkowski(convexity = 0) {
 	cube(size = [0.1, 0.1, 0.1], center = false);
 }
 CSG
+# The L as an STL file (each face fanned from a point that sees all of it,
+# turned outward as STL's are), its first triangle given twice: CGAL's builder skips the second copy,
+# and OpenSCAD's minkowski takes the rest.
+python3 - "$l_pts" "[[0, 1, 2, 3, 4, 5], [6, 11, 10, 9, 8, 7], ${l_sides#*], }]" <<'PY' >dup.stl
+import json, sys
+pts, faces = json.loads(sys.argv[1]), json.loads(sys.argv[2])
+tris = [(f[0], f[i + 1], f[i]) for f in faces for i in range(1, len(f) - 1)]
+print('solid dup')
+for t in tris + tris[:1]:
+    print(' facet normal 0 0 0\n  outer loop')
+    for i in t:
+        print('   vertex %g %g %g' % tuple(pts[i]))
+    print('  endloop\n endfacet')
+print('endsolid dup')
+PY
+cat >mink-dup-stl.csg <<CSG
+minkowski(convexity = 0) {
+	import(file = "dup.stl", layer = "", origin = [0, 0], scale = 1, convexity = 1, \$fn = 0, \$fa = 12, \$fs = 2, timestamp = 0);
+	cube(size = [0.1, 0.1, 0.1], center = false);
+}
+CSG
 printf 'OFF\n8 7 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n0 0 1\n1 0 1\n1 1 1\n0 1 1\n4 0 1 2 3\n4 4 5 1 0\n4 7 6 5 4\n4 5 6 2 1\n4 6 7 3 2\n4 7 4 0 3\n4 0 1 2 3\n' >twice.off
 cat >off-twice.csg <<CSG
 difference() {
@@ -401,6 +422,7 @@ builder_cases=(
     "spike.csg|0.5,0.5,0.5|out|spike.csg:2:2: warning: polyhedron is not closed (a face passes through point 0 twice, and CGAL's builder skips it); left out, as OpenSCAD leaves it out (\"$not_closed\")|^ERROR: The given mesh is not closed"
     "spike-convex.csg|0.5,0.5,0.5|in||"
     "mink-dup.csg|1.5,1.05,1.05|in||"
+    "mink-dup-stl.csg|1.5,1.05,1.05|in||"
     "opposite.csg|0.5,0.5,0.5|in||"
     "opposite.csg|3.5,0.5,0.5|in||"
     "mink-one-cut.csg|1.5,1.5,0.5|out|mink-one-cut.csg:3:3: warning: linear_extrude is not closed (edge (1, 1, 0)-(1, 1, 1) is used by 4 faces); left out, as OpenSCAD leaves it out (\"$not_closed\")|^ERROR: The given mesh is not closed"

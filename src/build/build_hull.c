@@ -1281,6 +1281,11 @@ static sc_status nef_node(const walk *w, const model_node *n, const affine *m, i
         build_mesh_faces faces;
         const char *empty = NULL;
         st = mesh_faces(w, n, &faces, &empty);
+        /* an STL or OFF file's faces, less those CGAL's builder skips, as
+         * for a polyhedron */
+        if (st == SC_OK && !empty && kind == MODEL_IMPORT && !w->check &&
+            !build_mesh_cgal_keep(&faces, 0))
+            st = err_nomem(c->error, &n->loc);
         if (st == SC_OK && !empty && faces.face_count && !w->check)
             st = nef_mesh(w, n, m, &faces, out);
         build_mesh_faces_free(&faces);

@@ -2291,6 +2291,44 @@ int build_mesh_cgal_sound(const build_mesh_faces *f, const char *what, int numbe
     return builder_whole(f, what, numbered, why, size, &run, openscad);
 }
 
+/* A copy of the n bytes at p (malloc'd; NULL for none, or when memory
+ * runs out: *ok = 0). */
+static void *copied(const void *p, size_t n, int *ok)
+{
+    if (!p)
+        return NULL;
+    void *q = malloc(n ? n : 1);
+    if (!q)
+        *ok = 0;
+    else
+        memcpy(q, p, n);
+    return q;
+}
+
+/* f, lent from the build's files, made its own (copies of its arrays),
+ * so that it may change; 0 when memory runs out, f as it was. */
+static int faces_own(build_mesh_faces *f)
+{
+    int ok = 1;
+    size_t total = f->face_start[f->face_count];
+    build_mesh_faces own = *f;
+    own.points = copied(f->points, f->point_count * sizeof *f->points, &ok);
+    own.names = copied(f->names, f->point_count * sizeof *f->names, &ok);
+    own.indices = copied(f->indices, total * sizeof *f->indices, &ok);
+    own.face_start =
+        copied(f->face_start, ((size_t)f->face_count + 1) * sizeof *f->face_start, &ok);
+    own.face_loops =
+        copied(f->face_loops, ((size_t)f->face_count + 1) * sizeof *f->face_loops, &ok);
+    own.twice = copied(f->twice, f->face_count * sizeof *f->twice, &ok);
+    own.lent = 0;
+    if (!ok) {
+        build_mesh_faces_free(&own);
+        return 0;
+    }
+    *f = own;
+    return 1;
+}
+
 int build_mesh_cgal_keep(build_mesh_faces *f, int reversed)
 {
     int convex = approx_convex(f, reversed);
@@ -2304,9 +2342,14 @@ int build_mesh_cgal_keep(build_mesh_faces *f, int reversed)
         free(taken);
         return 0;
     }
-    faces_taken(f, taken, f);
+    uint32_t kept = 0;
+    for (uint32_t k = 0; k < f->face_count; k++)
+        kept += taken[k];
+    int ok = kept == f->face_count || !f->lent || faces_own(f);
+    if (ok && kept < f->face_count)
+        faces_taken(f, taken, f);
     free(taken);
-    return 1;
+    return ok;
 }
 
 int build_mesh_cgal_closed(const build_ctx *c, const build_mesh_faces *f,

@@ -117,7 +117,7 @@ int build_mesh_sound(const build_mesh_faces *f, const char *what, int numbered, 
  * memory ran out. */
 int build_mesh_cgal_sound(const build_mesh_faces *f, const char *what, int numbered,
                           char *why, size_t size, const char **openscad);
-/* Drops from f (its own arrays, one loop a face) the faces CGAL's
+/* Drops from f (one loop a face; lent arrays are copied first) the faces CGAL's
  * polyhedron builder skips (build_mesh_cgal_sound), as OpenSCAD's Nef
  * polyhedron of it has none of them: a face given twice, say. A mesh
  * OpenSCAD finds convex keeps them all (reversed: a polyhedron's faces,
