@@ -372,6 +372,19 @@ difference() {
 	$far
 }
 CSG
+# A square with a triangular hole at its corner, scaled to a point: the
+# hole's walls and the square's meet along the edge from (0, 0, 0) to
+# the apex. OpenSCAD appends the bottom cap before the walls, so CGAL's
+# builder skips walls there and leaves borders ("not closed"); with the
+# walls first it would skip the cap and leave a point unused ("invalid").
+cat >hole-corner.csg <<CSG
+difference() {
+	linear_extrude(height = 3, center = false, convexity = 1, scale = [0, 0], \$fn = 0, \$fa = 12, \$fs = 2) {
+		polygon(points = [[0, 0], [10, 0], [10, 10], [0, 10], [0, 0], [3, 1], [1, 3]], paths = [[0, 1, 2, 3], [4, 5, 6]], convexity = 1);
+	}
+	$far
+}
+CSG
 cat >mink-dup.csg <<CSG
 minkowski(convexity = 0) {
 	polyhedron(points = $l_pts, faces = [[0, 1, 2, 3, 4, 5], $l_sides, [2, 3, 9, 8]], convexity = 1);
@@ -422,6 +435,7 @@ builder_cases=(
     "spike.csg|0.5,0.5,0.5|out|spike.csg:2:2: warning: polyhedron is not closed (a face passes through point 0 twice, and CGAL's builder skips it); left out, as OpenSCAD leaves it out (\"$not_closed\")|^ERROR: The given mesh is not closed"
     "spike-convex.csg|0.5,0.5,0.5|in||"
     "mink-dup.csg|1.5,1.05,1.05|in||"
+    "hole-corner.csg|5,5,0.5|out|hole-corner.csg:2:2: warning: linear_extrude is not closed (edge (0, 0, 0)-(0, 0, 3) is used by 4 faces); left out, as OpenSCAD leaves it out (\"$not_closed\")|^ERROR: The given mesh is not closed"
     "mink-dup-stl.csg|1.5,1.05,1.05|in||"
     "opposite.csg|0.5,0.5,0.5|in||"
     "opposite.csg|3.5,0.5,0.5|in||"

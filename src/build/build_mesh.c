@@ -737,7 +737,8 @@ static size_t edge_stops(const vec3 *points, const cap_key *cps, size_t m, vec3 
 
 /* ch's faces with each cap's edges split where OpenSCAD's tessellation of
  * that cap splits them (build_mesh_checks): at each point of the same cap
- * on the edge (edge_stops). Into *indices and *face_start (malloc'd), and
+ * on the edge (edge_stops); the caps' faces first, as OpenSCAD appends
+ * them before the sides. Into *indices and *face_start (malloc'd), and
  * the first edge split and the point (a, b, p) into split, or UINT32_MAX
  * in split[0]; 0 when memory runs out. */
 static int caps_split(const vec3 *points, const build_mesh_checks *ch, uint32_t **indices,
@@ -765,10 +766,16 @@ static int caps_split(const vec3 *points, const build_mesh_checks *ch, uint32_t 
         qsort(cps, counts[1], sizeof *cps, cap_key_cmp);
         qsort(cps + counts[1], counts[2], sizeof *cps, cap_key_cmp);
     }
-    for (uint32_t k = 0; ok && k < ch->face_count; k++) {
-        uint32_t s = ch->face_start[k], e = ch->face_start[k + 1];
+    /* the first cap's faces, then the second's, then the others, as
+     * OpenSCAD's extrusions append them */
+    uint32_t made = 0;
+    for (uint64_t step = 0; step < 3 * (uint64_t)ch->face_count; step++) {
+        uint32_t k = (uint32_t)(step % ch->face_count);
         uint8_t which = ch->cap_of[k];
-        starts[k] = (uint32_t)n;
+        if (!ok || (which == 1 || which == 2 ? which - 1u : 2u) != step / ch->face_count)
+            continue;
+        uint32_t s = ch->face_start[k], e = ch->face_start[k + 1];
+        starts[made++] = (uint32_t)n;
         for (uint32_t j = s; ok && j < e; j++) {
             uint32_t a = ch->indices[j], b = ch->indices[j + 1 < e ? j + 1 : s];
             size_t count = which == 1 || which == 2
