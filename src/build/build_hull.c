@@ -471,8 +471,8 @@ static sc_status closed_check(const walk *w, const model_node *n, int *open)
     const char *refusal = build_openscad_not_closed;
     int sound = st != SC_OK || empty || !f.face_count
                     ? 1
-                    : build_mesh_cgal_sound(&f, what, n->kind == MODEL_POLYHEDRON, why,
-                                            sizeof why, &refusal);
+                    : build_mesh_cgal_sound(&f, what, n->kind == MODEL_POLYHEDRON,
+                                            w->in_union, why, sizeof why, &refusal);
     build_mesh_faces_free(&f);
     if (st != SC_OK) { /* the leaf's own error, found again where it is built */
         err_clear(c->error);
@@ -1252,6 +1252,8 @@ static sc_status nef_node(const walk *w, const model_node *n, const affine *m, i
         if (st == SC_OK && !build_mesh_cgal_keep(&f, 1))
             st = err_nomem(c->error, &n->loc);
         if (st == SC_OK && f.face_count)
+            st = build_mesh_openscad_triangles(c, &n->loc, "polyhedron", &f, 1);
+        if (st == SC_OK && f.face_count)
             st = nef_mesh(w, n, m, &f, out);
         build_mesh_faces_free(&f);
         return st;
@@ -1286,6 +1288,10 @@ static sc_status nef_node(const walk *w, const model_node *n, const affine *m, i
         if (st == SC_OK && !empty && kind == MODEL_IMPORT && !w->check &&
             !build_mesh_cgal_keep(&faces, 0))
             st = err_nomem(c->error, &n->loc);
+        if (st == SC_OK && !empty && kind == MODEL_IMPORT && !w->check &&
+            faces.face_count)
+            st = build_mesh_openscad_triangles(c, &n->u.import->file_loc, "imported mesh",
+                                               &faces, 0);
         if (st == SC_OK && !empty && faces.face_count && !w->check)
             st = nef_mesh(w, n, m, &faces, out);
         build_mesh_faces_free(&faces);

@@ -58,6 +58,7 @@
 #include "base/grow.h"
 #include "base/sort.h"
 #include "build/build_hull.h"
+#include "build/nef.h"
 #include "build/tess_mend.h"
 #include "build/tess_sweep.h"
 #include "csg/prim_mesh.h"
@@ -300,6 +301,9 @@ const char build_openscad_not_closed[] =
     "The given mesh is not closed! Unable to convert to CGAL_Nef_Polyhedron.";
 const char build_openscad_invalid[] =
     "The given mesh is invalid! Unable to convert to CGAL_Nef_Polyhedron.";
+/* Its message where CGAL's Nef polyhedron fails an assertion (plane_lost). */
+static const char openscad_assertion[] =
+    "CGAL error in CGAL_Nef_polyhedron3(): CGAL ERROR: assertion violation!";
 
 /* The triangles of the fans over faces (face_start, face_count: n - 2 for
  * a face of n points; every face here has 3 or more) into *count, as a
@@ -410,8 +414,18 @@ static int fans_whole(const build_mesh_faces *f, const char *what, int numbered,
     return whole;
 }
 
+static uint32_t *openscad_numbers(const build_mesh_faces *f, int reversed);
+/* Where OpenSCAD's tessellation fans the quad v[0..4) of f from: 0 or 1
+ * (the diagonal from v[0] or from v[1]); numbers: OpenSCAD's numbers of
+ * f's points (openscad_numbers), made here when first needed. -1 when
+ * memory runs out. */
+static int quad_first(const build_mesh_faces *f, const uint32_t *v, int numbered,
+                      uint32_t **numbers);
+
 /* Whether OpenSCAD 2021.01 finds f convex (is_approximately_convex, on
- * the faces as its tessellation cleans them): every edge runs once each
+ * the faces as its tessellation cleans them, a quad as the two triangles
+ * it makes of it, which fold where the quad is out of its plane, and
+ * faces of more points whole): every edge runs once each
  * way, every fold between two faces turns outward or by less than 0.1
  * degrees, and every face is reached from the first. Such a mesh it takes
  * as the convex hull of its points, without CGAL's polyhedron builder.
@@ -420,35 +434,59 @@ static int fans_whole(const build_mesh_faces *f, const char *what, int numbered,
  * out. */
 static int approx_convex(const build_mesh_faces *f, int reversed)
 {
-    uint32_t total = f->face_start[f->face_count];
-    face_edge *edges = malloc((size_t)(total ? total : 1) * sizeof *edges);
-    vec3 *normal = malloc((size_t)(f->face_count ? f->face_count : 1) * sizeof *normal);
-    uint32_t *parent =
-        malloc((size_t)(f->face_count ? f->face_count : 1) * sizeof *parent);
-    if (!edges || !normal || !parent) {
-        free(edges);
-        free(normal);
-        free(parent);
-        return -1;
-    }
-    size_t n = 0;
+    /* the pieces: the faces, each quad as the two triangles OpenSCAD's
+     * tessellation makes of it (a quad out of its plane folds there) */
+    uint32_t total = f->face_start[f->face_count], pieces = 0;
+    for (uint32_t k = 0; k < f->face_count; k++)
+        pieces += f->face_start[k + 1] - f->face_start[k] == 4 ? 2 : 1;
+    size_t corners = (size_t)total + 2 * (size_t)pieces; /* a split quad has 6 */
+    face_edge *edges = malloc((corners ? corners : 1) * sizeof *edges);
+    uint32_t *piece = malloc((corners ? corners : 1) * sizeof *piece);
+    uint32_t *start = malloc(((size_t)pieces + 1) * sizeof *start);
+    vec3 *normal = malloc((size_t)(pieces ? pieces : 1) * sizeof *normal);
+    uint32_t *parent = malloc((size_t)(pieces ? pieces : 1) * sizeof *parent);
+    uint32_t *numbers = NULL;
+    int convex = -1;
+    if (!edges || !piece || !start || !normal || !parent)
+        goto done;
+    uint32_t at = 0, count = 0;
     for (uint32_t k = 0; k < f->face_count; k++) {
-        uint32_t s = f->face_start[k], e = f->face_start[k + 1];
+        const uint32_t *v = &f->indices[f->face_start[k]];
+        uint32_t n = f->face_start[k + 1] - f->face_start[k];
+        if (n != 4) {
+            start[count++] = at;
+            for (uint32_t j = 0; j < n; j++)
+                piece[at++] = v[j];
+            continue;
+        }
+        int first = quad_first(f, v, reversed, &numbers);
+        if (first < 0)
+            goto done;
+        for (uint32_t t = 0; t < 2; t++) {
+            start[count++] = at;
+            piece[at++] = v[first];
+            piece[at++] = v[(first + 1 + t) % 4];
+            piece[at++] = v[(first + 2 + t) % 4];
+        }
+    }
+    start[count] = at;
+    size_t n = 0;
+    for (uint32_t k = 0; k < count; k++) {
+        uint32_t s = start[k], e = start[k + 1];
         vec3 sum = v3(0, 0, 0);
         for (uint32_t i = s; i < e; i++) {
             uint32_t j = i + 1 < e ? i + 1 : s, l = j + 1 < e ? j + 1 : s;
-            vec3 a = f->points[f->indices[i]], b = f->points[f->indices[j]];
+            vec3 a = f->points[piece[i]], b = f->points[piece[j]];
             sum = v3_add(sum, v3((a.y - b.y) * (a.z + b.z), (a.z - b.z) * (a.x + b.x),
                                  (a.x - b.x) * (a.y + b.y)));
-            edges[n++] = (face_edge){(uint64_t)f->indices[i] << 32 | f->indices[j], k,
-                                     f->indices[l]};
+            edges[n++] = (face_edge){(uint64_t)piece[i] << 32 | piece[j], k, piece[l]};
         }
         normal[k] = reversed ? v3_scale(sum, -1) : sum;
         parent[k] = k;
     }
     qsort(edges, n, sizeof *edges, face_edge_cmp);
     const double most = cos(0.1 * 3.14159265358979323846 / 180); /* 0.1 degrees */
-    int convex = 1;
+    convex = 1;
     for (size_t i = 0; i + 1 < n && convex; i++)
         convex = edges[i].key != edges[i + 1].key; /* an edge run twice one way */
     for (size_t i = 0; i < n && convex; i++) {
@@ -460,18 +498,22 @@ static int approx_convex(const build_mesh_faces *f, int reversed)
         }
         uint32_t g = other->face, k = edges[i].face;
         vec3 u = normal[g], v = normal[k];
-        vec3 on = f->points[f->indices[f->face_start[g]]];
+        vec3 on = f->points[piece[start[g]]];
         if (v3_dot(u, v3_sub(f->points[edges[i].next], on)) > 0 &&
             v3_dot(u, v) / (v3_length(u) * v3_length(v)) < most)
             convex = 0; /* a fold inward */
         uint32_t a = face_root(parent, g), b = face_root(parent, k);
         parent[a] = b;
     }
-    for (uint32_t k = 1; k < f->face_count && convex; k++)
+    for (uint32_t k = 1; k < count && convex; k++)
         convex = face_root(parent, k) == face_root(parent, 0);
+done:
     free(edges);
+    free(piece);
+    free(start);
     free(normal);
     free(parent);
+    free(numbers);
     return convex;
 }
 
@@ -831,8 +873,9 @@ static int sound_on_grid(const build_ctx *c, const sc_location *loc, const char 
     if (build_mesh_merge(&merge, loc, 0, points, point_count, indices, face_start,
                          face_count, &f) != SC_OK)
         return -1;
-    int sound =
-        f.face_count ? build_mesh_cgal_sound(&f, what, numbered, why, size, openscad) : 1;
+    int sound = f.face_count
+                    ? build_mesh_cgal_sound(&f, what, numbered, 0, why, size, openscad)
+                    : 1;
     build_mesh_faces_free(&f);
     return sound;
 }
@@ -2288,14 +2331,119 @@ int build_mesh_sound(const build_mesh_faces *f, const char *what, int numbered, 
                       f->face_count, why, size);
 }
 
+/* Whether OpenSCAD 2021.01 loses the closed mesh f (the faces CGAL's
+ * builder takes marked in taken) on one of CGAL's assertions about a face
+ * out of its plane, which it does not answer by triangulating the faces
+ * (nef.h's plane_check): 1, with why and *openscad; 0 when it does not (a
+ * mesh of triangles, or of faces in their planes, never does); -1 when
+ * memory runs out; -2 when the plugin does not load (why in err).
+ * CGAL's builder is given the faces as OpenSCAD holds them, reversed (a
+ * polyhedron's as written, an import's back to front), and the points in
+ * the order that walk meets them. */
+static int plane_lost(const build_mesh_faces *f, const char *what, int numbered,
+                      const uint8_t *taken, char *why, size_t size, const char **openscad,
+                      char *err, size_t err_size)
+{
+    uint32_t faces = 0, total = 0, big = 0;
+    for (uint32_t k = 0; k < f->face_count; k++) {
+        uint32_t n = f->face_start[k + 1] - f->face_start[k];
+        if (!taken[k])
+            continue;
+        faces++;
+        total += n;
+        big |= n > 3;
+    }
+    if (!big)
+        return 0;
+    uint32_t *number =
+        malloc((size_t)(f->point_count ? f->point_count : 1) * sizeof *number);
+    uint32_t *point =
+        malloc((size_t)(f->point_count ? f->point_count : 1) * sizeof *point);
+    double *xyz = malloc(((size_t)f->point_count * 3 + 1) * sizeof *xyz);
+    uint32_t *indices = malloc((size_t)(total ? total : 1) * sizeof *indices);
+    uint32_t *starts = malloc(((size_t)faces + 1) * sizeof *starts);
+    int lost = -1;
+    if (!number || !point || !xyz || !indices || !starts)
+        goto done;
+    for (uint32_t i = 0; i < f->point_count; i++)
+        number[i] = UINT32_MAX;
+    uint32_t next = 0, at = 0, count = 0;
+    for (uint32_t k = 0; k < f->face_count; k++) {
+        uint32_t s = f->face_start[k], n = f->face_start[k + 1] - s;
+        if (taken[k])
+            starts[count++] = at;
+        for (uint32_t j = 0; j < n; j++) {
+            uint32_t p = f->indices[s + (numbered ? j : n - 1 - j)];
+            if (number[p] == UINT32_MAX) {
+                point[next] = p;
+                xyz[3 * next] = f->points[p].x;
+                xyz[3 * next + 1] = f->points[p].y;
+                xyz[3 * next + 2] = f->points[p].z;
+                number[p] = next++;
+            }
+            if (taken[k])
+                indices[at++] = number[p];
+        }
+    }
+    starts[count] = at;
+    nef_plugin nef;
+    if (!nef_plugin_open(&nef, err, err_size)) {
+        lost = -2;
+        goto done;
+    }
+    int verdict = 0;
+    uint32_t where[2] = {0, 0};
+    err[0] = '\0';
+    nef_status ns = nef.plane_check(xyz, next, indices, starts, count, &verdict, where,
+                                    err, err_size);
+    nef_plugin_close(&nef);
+    if (ns == NEF_NOMEM)
+        goto done;
+    lost = ns == NEF_OK && verdict == 2;
+    if (lost) {
+        uint32_t p = point[where[1] < next ? where[1] : 0];
+        vec3 at_point = f->points[p];
+        if (numbered && f->names)
+            snprintf(why, size,
+                     "%s has a face out of its plane at point %u (CGAL's assertion %s "
+                     "fails there, and OpenSCAD does not triangulate and try again)",
+                     what, f->names[p], err);
+        else
+            snprintf(
+                why, size,
+                "%s has a face out of its plane at (%g, %g, %g) (CGAL's assertion %s "
+                "fails there, and OpenSCAD does not triangulate and try again)",
+                what, at_point.x, at_point.y, at_point.z, err);
+        *openscad = openscad_assertion;
+    }
+done:
+    free(number);
+    free(point);
+    free(xyz);
+    free(indices);
+    free(starts);
+    return lost;
+}
+
 int build_mesh_cgal_sound(const build_mesh_faces *f, const char *what, int numbered,
-                          char *why, size_t size, const char **openscad)
+                          int planes, char *why, size_t size, const char **openscad)
 {
     int convex = approx_convex(f, numbered);
     if (convex != 0) /* OpenSCAD takes its hull (or memory ran out) */
         return convex;
-    builder_run run = {NULL, 0, 0, 0};
-    return builder_whole(f, what, numbered, why, size, &run, openscad);
+    uint8_t *taken = planes ? malloc(f->face_count ? f->face_count : 1) : NULL;
+    builder_run run = {taken, 0, 0, 0};
+    if (planes && !taken)
+        return -1;
+    int sound = builder_whole(f, what, numbered, why, size, &run, openscad);
+    if (sound > 0 && planes) {
+        char err[SC_ERROR_MESSAGE_MAX];
+        int lost =
+            plane_lost(f, what, numbered, taken, why, size, openscad, err, sizeof err);
+        sound = lost == -1 ? -1 : lost != 1;
+    }
+    free(taken);
+    return sound;
 }
 
 /* A copy of the n bytes at p (malloc'd; NULL for none, or when memory
@@ -2364,7 +2512,7 @@ int build_mesh_cgal_closed(const build_ctx *c, const build_mesh_faces *f,
 {
     const char *openscad;
     return c->faithful && !c->drawn_as_is
-               ? build_mesh_cgal_sound(f, what, numbered, why, size, &openscad)
+               ? build_mesh_cgal_sound(f, what, numbered, 1, why, size, &openscad)
                : build_mesh_sound(f, what, numbered, why, size);
 }
 
@@ -2390,6 +2538,21 @@ static uint32_t *openscad_numbers(const build_mesh_faces *f, int reversed)
         }
     }
     return numbers;
+}
+
+static int quad_first(const build_mesh_faces *f, const uint32_t *v, int numbered,
+                      uint32_t **numbers)
+{
+    vec3 q[4] = {f->points[v[0]], f->points[v[1]], f->points[v[2]], f->points[v[3]]};
+    if (!build_mesh_quad_crosses(q, numbered))
+        return build_mesh_quad_diagonal(q, numbered);
+    if (!*numbers && !(*numbers = openscad_numbers(f, numbered)))
+        return -1;
+    uint32_t g[4];
+    for (int j = 0; j < 4; j++)
+        g[j] = (*numbers)[v[numbered ? 3 - j : j]];
+    int ear = bowtie_ear(g);
+    return ear < 0 ? -1 : ((numbered ? 3 - ear : ear) + 1) % 2;
 }
 
 /* 1 when the face v[0..n) lies in one plane to float's resolution: every
@@ -2418,52 +2581,22 @@ static int face_planar(const vec3 *points, const uint32_t *v, uint32_t n)
     return 1;
 }
 
-sc_status build_mesh_solid(const build_ctx *c, const sc_location *loc, const char *what,
-                           int numbered, int strict, const build_mesh_faces *f, prim *out,
-                           const char **empty)
+/* The triangles OpenSCAD 2021.01 makes of f's faces (those taken marks, or
+ * all): a quad split on the diagonal its tessellation takes (quad_first),
+ * a face of more points out of its plane as the tessellation splits it
+ * (build_mesh_face_triangles), any other face fanned. tri_count: the
+ * triangles already charged for all of f's faces (n - 2 each); with
+ * charge, the triangles a mended face makes beyond those are charged too.
+ * Into *out (malloc'd, three points a triangle) and *count. */
+static sc_status openscad_triangles(const build_ctx *c, const sc_location *loc,
+                                    const char *what, const build_mesh_faces *f,
+                                    int numbered, const uint8_t *taken, size_t tri_count,
+                                    int charge, uint32_t **out, size_t *count)
 {
-    size_t tri_count;
-    sc_status charged =
-        charge_fans(c, loc, what, f->face_start, f->face_count, &tri_count);
-    if (charged != SC_OK)
-        return charged;
-    char why[SC_ERROR_MESSAGE_MAX - 160];
-    int cgal = c->faithful && !c->drawn_as_is;
-    int convex = cgal ? approx_convex(f, numbered) : 0;
-    if (convex < 0)
-        return err_nomem(c->error, loc);
-    if (convex) /* OpenSCAD takes its hull, without CGAL's builder */
-        cgal = 0;
-    /* taken: the faces CGAL's builder takes, which are all that OpenSCAD's
-     * boolean sees of a mesh it finds closed (a face given twice, say) */
-    uint8_t *taken = cgal ? malloc(f->face_count ? f->face_count : 1) : NULL;
-    builder_run run = {taken, 0, 0, 0};
-    const char *refusal = build_openscad_not_closed;
-    int sound =
-        cgal ? (taken ? builder_whole(f, what, numbered, why, sizeof why, &run, &refusal)
-                      : -1)
-             : build_mesh_sound(f, what, numbered, why, sizeof why);
-    if (sound < 0) {
-        free(taken);
-        return err_nomem(c->error, loc);
-    }
-    if (!sound && (strict || !c->note)) {
-        free(taken);
-        return err_set(c->error, SC_ERR_SEMANTIC, loc, "%s", why);
-    }
-    if (!sound && cgal) {
-        free(taken);
-        err_set(c->note, SC_OK, loc, "%s; left out, as OpenSCAD leaves it out (\"%s\")",
-                why, refusal);
-        *empty = "";
-        return SC_OK;
-    }
     size_t tri_cap = (tri_count ? tri_count : 1) * 3; /* in indices */
     uint32_t *tris = malloc(tri_cap * sizeof *tris);
-    if (!tris) {
-        free(taken);
+    if (!tris)
         return err_nomem(c->error, loc);
-    }
     size_t k = 0;
     sc_status st = SC_OK;
     vec3 *corners = NULL; /* a face's points, for the larger faces */
@@ -2479,25 +2612,12 @@ sc_status build_mesh_solid(const build_ctx *c, const sc_location *loc, const cha
         if (taken && !taken[i])
             continue;
         if (n == 4) {
-            vec3 q[4] = {f->points[v[0]], f->points[v[1]], f->points[v[2]],
-                         f->points[v[3]]};
-            if (!build_mesh_quad_crosses(q, numbered)) {
-                first = (uint32_t)build_mesh_quad_diagonal(q, numbered);
-            } else {
-                if (!numbers && !(numbers = openscad_numbers(f, numbered))) {
-                    oom = 1;
-                    break;
-                }
-                uint32_t g[4];
-                for (int j = 0; j < 4; j++)
-                    g[j] = numbers[v[numbered ? 3 - j : j]];
-                int ear = bowtie_ear(g);
-                if (ear < 0) {
-                    oom = 1;
-                    break;
-                }
-                first = (uint32_t)((numbered ? 3 - ear : ear) + 1) % 2;
+            int q = quad_first(f, v, numbered, &numbers);
+            if (q < 0) {
+                oom = 1;
+                break;
             }
+            first = (uint32_t)q;
         } else if (n > 4 && !face_planar(f->points, v, n)) {
             if (n > corner_cap) {
                 free(corners);
@@ -2528,7 +2648,8 @@ sc_status build_mesh_solid(const build_ctx *c, const sc_location *loc, const cha
                 break;
             }
             if (made > n - 2) { /* charged as n - 2 above */
-                st = build_charge_triangles(c, loc, what, made - (n - 2));
+                st =
+                    charge ? build_charge_triangles(c, loc, what, made - (n - 2)) : SC_OK;
                 if (st != SC_OK)
                     break;
                 if (!grow_array((void **)&tris, &tri_cap,
@@ -2553,11 +2674,136 @@ sc_status build_mesh_solid(const build_ctx *c, const sc_location *loc, const cha
     free(corners);
     free(local);
     free(numbers);
-    free(taken);
     if (oom || st != SC_OK) {
         free(tris);
         return oom ? err_nomem(c->error, loc) : st;
     }
+    *out = tris;
+    *count = k;
+    return SC_OK;
+}
+
+sc_status build_mesh_openscad_triangles(const build_ctx *c, const sc_location *loc,
+                                        const char *what, build_mesh_faces *f,
+                                        int numbered)
+{
+    /* split: the quads and the faces out of their planes; the others stay
+     * whole (the plugin triangulates a face in its plane, which a fan of
+     * one that is not convex would overlap) */
+    size_t tri_count = 0, whole = 0;
+    uint8_t *split = malloc(f->face_count ? f->face_count : 1);
+    if (!split)
+        return err_nomem(c->error, loc);
+    for (uint32_t i = 0; i < f->face_count; i++) {
+        const uint32_t *v = &f->indices[f->face_start[i]];
+        uint32_t n = f->face_start[i + 1] - f->face_start[i];
+        split[i] = n == 4 || (n > 4 && !face_planar(f->points, v, n));
+        tri_count += n > 2 ? n - 2 : 0;
+        whole += split[i] ? 0 : n;
+    }
+    uint32_t *tris;
+    size_t k;
+    sc_status st =
+        openscad_triangles(c, loc, what, f, numbered, split, tri_count, 0, &tris, &k);
+    if (st != SC_OK) {
+        free(split);
+        return st;
+    }
+    size_t faces = k + f->face_count, total = 3 * k + whole;
+    uint32_t *indices = total < UINT32_MAX ? malloc((total + 1) * sizeof *indices) : NULL;
+    uint32_t *starts = malloc((faces + 1) * sizeof *starts);
+    if (!indices || !starts || (f->lent && !faces_own(f))) {
+        free(split);
+        free(tris);
+        free(indices);
+        free(starts);
+        return err_nomem(c->error, loc);
+    }
+    size_t at = 0, count = 0;
+    for (uint32_t i = 0; i < f->face_count; i++) {
+        if (split[i])
+            continue;
+        starts[count++] = (uint32_t)at;
+        for (uint32_t j = f->face_start[i]; j < f->face_start[i + 1]; j++)
+            indices[at++] = f->indices[j];
+    }
+    for (size_t t = 0; t < k; t++) {
+        starts[count++] = (uint32_t)at;
+        for (int j = 0; j < 3; j++)
+            indices[at++] = tris[3 * t + j];
+    }
+    starts[count] = (uint32_t)at;
+    free(split);
+    free(tris);
+    free(f->indices);
+    free(f->face_start);
+    free(f->face_loops);
+    free(f->twice);
+    f->indices = indices;
+    f->face_start = starts;
+    f->face_loops = NULL;
+    f->twice = NULL;
+    f->face_count = (uint32_t)count;
+    return SC_OK;
+}
+
+sc_status build_mesh_solid(const build_ctx *c, const sc_location *loc, const char *what,
+                           int numbered, int strict, const build_mesh_faces *f, prim *out,
+                           const char **empty)
+{
+    size_t tri_count;
+    sc_status charged =
+        charge_fans(c, loc, what, f->face_start, f->face_count, &tri_count);
+    if (charged != SC_OK)
+        return charged;
+    char why[SC_ERROR_MESSAGE_MAX - 160];
+    int cgal = c->faithful && !c->drawn_as_is;
+    int convex = cgal ? approx_convex(f, numbered) : 0;
+    if (convex < 0)
+        return err_nomem(c->error, loc);
+    if (convex) /* OpenSCAD takes its hull, without CGAL's builder */
+        cgal = 0;
+    /* taken: the faces CGAL's builder takes, which are all that OpenSCAD's
+     * boolean sees of a mesh it finds closed (a face given twice, say) */
+    uint8_t *taken = cgal ? malloc(f->face_count ? f->face_count : 1) : NULL;
+    builder_run run = {taken, 0, 0, 0};
+    const char *refusal = build_openscad_not_closed;
+    int sound =
+        cgal ? (taken ? builder_whole(f, what, numbered, why, sizeof why, &run, &refusal)
+                      : -1)
+             : build_mesh_sound(f, what, numbered, why, sizeof why);
+    if (sound > 0 && cgal) {
+        char err[SC_ERROR_MESSAGE_MAX - 160];
+        int lost = plane_lost(f, what, numbered, taken, why, sizeof why, &refusal, err,
+                              sizeof err);
+        if (lost == -2) {
+            free(taken);
+            return err_set(c->error, SC_ERR_UNSUPPORTED, loc, "%s: %s", what, err);
+        }
+        sound = lost < 0 ? -1 : !lost;
+    }
+    if (sound < 0) {
+        free(taken);
+        return err_nomem(c->error, loc);
+    }
+    if (!sound && (strict || !c->note)) {
+        free(taken);
+        return err_set(c->error, SC_ERR_SEMANTIC, loc, "%s", why);
+    }
+    if (!sound && cgal) {
+        free(taken);
+        err_set(c->note, SC_OK, loc, "%s; left out, as OpenSCAD leaves it out (\"%s\")",
+                why, refusal);
+        *empty = "";
+        return SC_OK;
+    }
+    uint32_t *tris;
+    size_t k;
+    sc_status st =
+        openscad_triangles(c, loc, what, f, numbered, taken, tri_count, 1, &tris, &k);
+    free(taken);
+    if (st != SC_OK)
+        return st;
     st = finish_mesh(c, loc, numbered, f->points, f->point_count, tris, k, !sound, out,
                      empty);
     free(tris);

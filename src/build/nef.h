@@ -90,6 +90,23 @@ typedef struct nef_plugin {
     nef_status (*triangles)(const nef_solid *s, nef_parts *out, char *err,
                             size_t err_size);
     void (*release)(nef_solid *s);
+    /* Where OpenSCAD 2021.01, whose CGAL checks its assertions, stops
+     * making the Nef polyhedron of a closed mesh on a face out of its
+     * plane (polygon_mesh_to_nef_3's checks): CGAL's polyhedron is built
+     * from the points (x, y, z triples) in the order given and the loops
+     * indices[face_start[k] .. face_start[k + 1]) its builder takes, as
+     * OpenSCAD builds it; then at each corner, point by point and in
+     * CGAL's order about each, each face of more than three points must
+     * hold the corner's neighbours in the plane through the corner along
+     * its Newell normal. *verdict: 0 when every check holds; 1 when the
+     * first to fail is the one OpenSCAD answers by triangulating the faces
+     * and trying again (the neighbour after the corner); 2 when it is one
+     * that loses the polyhedron (CGAL's expression in err), with the face
+     * in where[0] and the corner in where[1]. */
+    nef_status (*plane_check)(const double *points, uint32_t point_count,
+                              const uint32_t *indices, const uint32_t *face_start,
+                              uint32_t face_count, int *verdict, uint32_t where[2],
+                              char *err, size_t err_size);
     void *handle; /* of dlopen */
 } nef_plugin;
 

@@ -30,11 +30,14 @@
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
 #include <CGAL/Polyhedron_3.h>
+#include <CGAL/Polyhedron_incremental_builder_3.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/Triangulation_face_base_with_info_2.h>
 #include <CGAL/Triangulation_vertex_base_with_info_2.h>
 #include <CGAL/boost/graph/convert_nef_polyhedron_to_polygon_mesh.h>
 #include <CGAL/boost/graph/helpers.h>
+#include <CGAL/boost/graph/iterator.h>
+#include <CGAL/normal_vector_newell_3.h>
 #include <CGAL/convex_decomposition_3.h>
 #pragma GCC diagnostic pop
 
@@ -254,6 +257,63 @@ void to_parts(const std::vector<std::vector<Point>> &sets, nef_parts *out)
     out->count = static_cast<uint32_t>(sets.size());
 }
 
+// ---- faces out of their planes, as OpenSCAD's CGAL meets them ----
+//
+// OpenSCAD 2021.01 makes a Nef polyhedron of a polyhedron that is not
+// convex straight from the faces as given, with CGAL's assertions on.
+// polygon_mesh_to_nef_3 then checks, at each corner of a face of more
+// than three points, that the corner's two neighbours lie in the plane
+// through the corner along the face's Newell normal. The first check to
+// fail throws; OpenSCAD triangulates the faces and tries again only for
+// the message of the first check of its loop (the neighbour after the
+// corner), and CGAL 5's messages for the other two checks are not the
+// ones it looks for, so there the polyhedron is lost.
+
+using Polyhedron_hds = Polyhedron::HalfedgeDS;
+
+// CGAL's polyhedron of the faces, built as OpenSCAD builds it
+// (CGAL_Build_PolySet): every point added in the order given, then each
+// face its builder takes; added[i] is the given face of facet i.
+class Build_faces : public CGAL::Modifier_base<Polyhedron_hds>
+{
+  public:
+    Build_faces(const double *points, uint32_t point_count, const uint32_t *indices,
+                const uint32_t *face_start, uint32_t face_count,
+                std::vector<uint32_t> &added)
+        : points_(points), point_count_(point_count), indices_(indices),
+          face_start_(face_start), face_count_(face_count), added_(added)
+    {
+    }
+    void operator()(Polyhedron_hds &hds) override
+    {
+        CGAL::Polyhedron_incremental_builder_3<Polyhedron_hds> builder(hds, false);
+        builder.begin_surface(point_count_, face_count_);
+        for (uint32_t i = 0; i < point_count_; i++)
+            builder.add_vertex(
+                Point(points_[3 * i], points_[3 * i + 1], points_[3 * i + 2]));
+        for (uint32_t f = 0; f < face_count_; f++) {
+            std::vector<std::size_t> face;
+            for (uint32_t i = face_start_[f]; i < face_start_[f + 1]; i++) {
+                if (indices_[i] >= point_count_)
+                    throw bad_mesh("a face names a point that does not exist");
+                face.push_back(indices_[i]);
+            }
+            if (face.size() >= 3 && builder.test_facet(face.begin(), face.end())) {
+                builder.add_facet(face.begin(), face.end());
+                added_.push_back(f);
+            }
+        }
+        builder.end_surface();
+    }
+
+  private:
+    const double *points_;
+    uint32_t point_count_;
+    const uint32_t *indices_, *face_start_;
+    uint32_t face_count_;
+    std::vector<uint32_t> &added_;
+};
+
 } // namespace
 
 struct nef_solid {
@@ -325,6 +385,86 @@ spancast_nef_from_mesh(const double *points, uint32_t point_count,
             if (!PMP::is_outward_oriented(mesh))
                 PMP::reverse_face_orientations(mesh);
             *out = new nef_solid{Nef(mesh)};
+        },
+        err, err_size);
+}
+
+__attribute__((visibility("default"))) nef_status
+spancast_nef_plane_check(const double *points, uint32_t point_count,
+                         const uint32_t *indices, const uint32_t *face_start,
+                         uint32_t face_count, int *verdict, uint32_t where[2], char *err,
+                         size_t err_size)
+{
+    *verdict = 0;
+    return guarded(
+        [&] {
+            Polyhedron poly;
+            std::vector<uint32_t> added;
+            Build_faces build(points, point_count, indices, face_start, face_count,
+                              added);
+            poly.delegate(build);
+            if (poly.size_of_facets() != added.size())
+                return; // the builder gave up: nothing more to check
+            std::map<Polyhedron::Facet_const_handle, std::size_t> facet_of;
+            std::vector<Kernel::Vector_3> normals;
+            std::vector<std::size_t> sizes;
+            for (auto f = poly.facets_begin(); f != poly.facets_end(); ++f) {
+                facet_of[f] = normals.size();
+                CGAL::Vertex_around_face_circulator<Polyhedron> around(f->halfedge(),
+                                                                       poly),
+                    done(around);
+                Kernel::Vector_3 normal;
+                CGAL::normal_vector_newell_3(around, done, get(CGAL::vertex_point, poly),
+                                             normal);
+                normals.push_back(normal);
+                sizes.push_back(f->facet_degree());
+            }
+            // which: 1 the neighbour after the corner, 2 the one before, 3
+            // either at the face that closes the corner's cycle
+            auto fails = [&](Polyhedron::Halfedge_const_handle in,
+                             Polyhedron::Halfedge_const_handle neighbour,
+                             Polyhedron::Vertex_const_handle corner) {
+                if (in->is_border())
+                    return false;
+                std::size_t i = facet_of[in->facet()];
+                if (sizes[i] <= 3)
+                    return false;
+                Kernel::Vector_3 d =
+                    neighbour->opposite()->vertex()->point() - corner->point();
+                if (CGAL::is_zero(normals[i] * d))
+                    return false;
+                where[0] = added[i];
+                return true;
+            };
+            static const char *const expressions[] = {
+                "", "ss_circle.has_on(sp)", "ss_circle.has_on(sv_prev->point())",
+                "ss_circle.has_on(sp_0)", "ss_circle.has_on(sv_prev->point())"};
+            uint32_t corner = 0;
+            for (auto v = poly.vertices_begin(); v != poly.vertices_end();
+                 ++v, corner++) {
+                std::vector<Polyhedron::Halfedge_const_handle> in;
+                CGAL::Halfedge_around_target_circulator<Polyhedron> h(v->halfedge(),
+                                                                      poly),
+                    end(h);
+                do
+                    in.push_back(*h);
+                while (++h != end);
+                std::size_t k = in.size(), failed = 0;
+                for (std::size_t j = 1; j < k && !failed; j++)
+                    failed = fails(in[j - 1], in[j], v)       ? 1
+                             : fails(in[j - 1], in[j - 1], v) ? 2
+                                                              : 0;
+                if (!failed)
+                    failed = fails(in[k - 1], in[0], v)       ? 3
+                             : fails(in[k - 1], in[k - 1], v) ? 4
+                                                              : 0;
+                if (failed) {
+                    *verdict = failed == 1 ? 1 : 2;
+                    where[1] = corner;
+                    std::snprintf(err, err_size, "%s", expressions[failed]);
+                    return;
+                }
+            }
         },
         err, err_size);
 }
