@@ -822,6 +822,38 @@ not_finite.csg:7:2: $removed" $mode
     [ -e strict.png ] && fail "not_finite.csg --strict $mode: an image was written"
 done
 
+# A transform of 2D geometry whose xy part is singular: OpenSCAD 2021.01
+# removes the object with "Scaling a 2D object with 0 - removing object"
+# (Polygon2d::transform), in a profile and in a 2D model alike.
+cat >flat2d.csg <<'M'
+cube(size = [1, 1, 1], center = false);
+linear_extrude(height = 1, center = false, convexity = 1, scale = [1, 1], $fn = 0, $fa = 12, $fs = 2) {
+	multmatrix([[1, 0, 0, 0], [0, 0, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]) {
+		square(size = [5, 2], center = false);
+	}
+}
+M
+cat >flat2d_only.csg <<'M'
+multmatrix([[0, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]) {
+	square(size = [5, 5], center = false);
+}
+square(size = [1, 1], center = false);
+M
+scaling="warning: Scaling a 2D object with 0 - removing object"
+for mode in "" --faithful; do
+    warns flat2d.csg "flat2d.csg:3:2: $scaling
+flat2d.csg:2:1: warning: linear_extrude without height or area is empty" $mode
+    warns flat2d_only.csg "flat2d_only.csg:1:1: $scaling" $mode
+done
+if command -v openscad >/dev/null; then
+    for m in flat2d flat2d_only; do
+        check
+        openscad -o "$PWD/${m}_os.stl" $m.csg >/dev/null 2>${m}_os.err
+        grep -q "^WARNING: Scaling a 2D object with 0 - removing object$" ${m}_os.err ||
+            fail "openscad on $m.csg: $(cat ${m}_os.err)"
+    done
+fi
+
 # The same wherever the multmatrix stands: under hull, minkowski, a hull of
 # a difference (CGAL), projection, the extrusions, and in a 2D model. Each
 # warns once (OpenSCAD: once) and is the model without that subtree.

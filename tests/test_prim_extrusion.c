@@ -712,9 +712,18 @@ static void test_build_empty(void **state)
     check_empty(
         "linear_extrude(height = 1) { difference() { circle(r = 0); square(); } }");
     check_empty("linear_extrude(height = 1) { intersection() { circle(); square(0); } }");
-    check_empty(
-        "linear_extrude(height = 1) { multmatrix([[1, 0, 0, 0], [2, 0, 0, 0], [0, "
-        "0, 1, 0], [0, 0, 0, 1]]) { square(); circle(); } }");
+    /* a singular 2D transform removes its children with OpenSCAD's warning */
+    sc_scene *flat =
+        load_with("linear_extrude(height = 1) { multmatrix([[1, 0, 0, 0], [2, "
+                  "0, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]) { square(); circle(); } }",
+                  0);
+    assert_int_equal(scene_tree(flat)->root, CSG_EMPTY);
+    assert_int_equal(sc_scene_warning_count(flat), 2);
+    assert_string_equal(sc_scene_warning(flat, 0)->message,
+                        "Scaling a 2D object with 0 - removing object");
+    assert_string_equal(sc_scene_warning(flat, 1)->message,
+                        "linear_extrude without height or area is empty");
+    sc_scene_release(flat);
     check_empty("linear_extrude(height = 1) { polygon(points = [[0, 0], [1, 1]]); }");
     /* an empty subtrahend changes nothing, an empty union member neither */
     sc_scene *s = load_with(

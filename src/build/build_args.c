@@ -208,6 +208,13 @@ sc_status build_xform_not_finite(const build_ctx *c, const model_node *n)
                       "removing object.");
 }
 
+sc_status build_xform_flat_2d(const build_ctx *c, const model_node *n)
+{
+    if (!c->notes)
+        return SC_OK;
+    return build_note(c, &n->loc, "Scaling a 2D object with 0 - removing object");
+}
+
 /* With --strict the error for a child of the other dimension, which
  * OpenSCAD 2021.01 leaves out with its warnings: spancast's words, as for
  * the other strict errors (OpenSCAD's "Ignoring ..." says what it does,

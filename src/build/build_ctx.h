@@ -138,6 +138,10 @@ sc_status build_bad_indices(const build_ctx *c, const model_node *n);
  * map, which every walk takes as no geometry. SC_OK for any other node,
  * and where the subtree is only checked. */
 sc_status build_xform_not_finite(const build_ctx *c, const model_node *n);
+/* OpenSCAD 2021.01's warning for a transform (or resize) of 2D geometry
+ * whose xy part is singular, which removes it (Polygon2d::transform):
+ * "Scaling a 2D object with 0 - removing object", at n (c->notes set). */
+sc_status build_xform_flat_2d(const build_ctx *c, const model_node *n);
 
 /* OpenSCAD 2021.01's warnings for a child at loc of the other dimension,
  * which its operation leaves out (GeometryEvaluator.cc: isValidDim,

@@ -229,11 +229,13 @@ static sc_status walk(twod_walker *walk, const model_node *n, const affine2 *m, 
         double det = inner.m[0][0] * inner.m[1][1] - inner.m[0][1] * inner.m[1][0];
         if (st == SC_OK && *pushed && !(det != 0)) {
             /* flattened onto a line or a point: no area (the children were
-             * still read, for their errors) */
+             * still read, for their errors), with OpenSCAD's warning */
             r->node_count = nodes;
             r->edge_count = edges;
             r->ellipse_count = ellipses;
             *pushed = 0;
+            if (!n->not_finite)
+                st = build_xform_flat_2d(w->c, n);
         }
         return st;
     }

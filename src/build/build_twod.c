@@ -948,13 +948,14 @@ static sc_status read_matrix(const eval *e, const model_node *n, double m[2][3])
     return SC_OK;
 }
 
+/* r, the union of a transform's (or resize's) count children, through m. */
 static sc_status transform(const eval *e, const model_node *n, double m[2][3],
-                           twod_region *r)
+                           uint32_t count, twod_region *r)
 {
     double det = m[0][0] * m[1][1] - m[0][1] * m[1][0];
     if (det == 0) {
         twod_clear(r);
-        return SC_OK;
+        return count ? build_xform_flat_2d(e->c, n) : SC_OK;
     }
     for (uint32_t i = 0; i < r->point_count; i++) {
         double x = r->xy[2 * i], y = r->xy[2 * i + 1];
@@ -1280,11 +1281,11 @@ static sc_status eval_node(twod_walker *w, const model_node *n, const affine2 *u
     }
     free_children(regions, count);
     if (st == SC_OK && kind == MODEL_XFORM)
-        st = transform(e, n, m, out);
+        st = transform(e, n, m, count, out);
     if (st == SC_OK && kind == MODEL_OFFSET)
         st = offset(e, n, out);
     if (st == SC_OK && kind == MODEL_RESIZE && resize_scale(n->u.resize, out, m))
-        st = transform(e, n, m, out);
+        st = transform(e, n, m, count, out);
     return st;
 }
 
