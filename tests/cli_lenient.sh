@@ -854,6 +854,39 @@ if command -v openscad >/dev/null; then
     done
 fi
 
+# projection(cut = true) of a solid that z = 0 misses: OpenSCAD 2021.01
+# warns "Projection() failed." (CGALUtils::project); of a difference that
+# is empty, it says nothing.
+cat >pj_miss.csg <<'M'
+cube(size = [1, 1, 1], center = false);
+linear_extrude(height = 1, center = false, convexity = 1, scale = [1, 1], $fn = 0, $fa = 12, $fs = 2) {
+	projection(cut = true, convexity = 0) {
+		multmatrix([[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 10], [0, 0, 0, 1]]) {
+			cube(size = [1, 1, 1], center = false);
+		}
+	}
+}
+linear_extrude(height = 1, center = false, convexity = 1, scale = [1, 1], $fn = 0, $fa = 12, $fs = 2) {
+	projection(cut = true, convexity = 0) {
+		difference() {
+			cube(size = [1, 1, 1], center = false);
+			cube(size = [2, 2, 2], center = false);
+		}
+	}
+}
+M
+for mode in "" --faithful; do
+    warns pj_miss.csg "pj_miss.csg:3:2: warning: Projection() failed.
+pj_miss.csg:2:1: warning: linear_extrude without height or area is empty
+pj_miss.csg:9:1: warning: linear_extrude without height or area is empty" $mode
+done
+if command -v openscad >/dev/null; then
+    check
+    openscad -o "$PWD/pj_miss_os.stl" pj_miss.csg >/dev/null 2>pj_miss_os.err
+    [ "$(grep -c '^WARNING: Projection() failed\.$' pj_miss_os.err)" = 1 ] ||
+        fail "openscad on pj_miss.csg: $(cat pj_miss_os.err)"
+fi
+
 # The same wherever the multmatrix stands: under hull, minkowski, a hull of
 # a difference (CGAL), projection, the extrusions, and in a 2D model. Each
 # warns once (OpenSCAD: once) and is the model without that subtree.

@@ -110,7 +110,9 @@ typedef struct pwalk {
     const model_node *proj;
     int cut;
     build_resize_cache *cache;
-    int corners; /* inside a hull: only the corners of meshes matter */
+    int corners;  /* inside a hull: only the corners of meshes matter */
+    int booleans; /* differences and intersections the walk is inside */
+    int solid;    /* a leaf with faces outside them: the union is not empty */
 } pwalk;
 
 static int add_tri(soup *s, vec3 a, vec3 b, vec3 c)
@@ -746,6 +748,7 @@ static sc_status leaf(pwalk *w, const model_node *n, const affine *m, int depth,
 {
     soup s = {NULL, 0, 0, 0};
     sc_status st = leaf_soup(w, n, &s, depth);
+    w->solid |= s.count && !w->booleans;
     if (st == SC_OK && s.count) {
         int flip = affine_det(m) < 0;
         for (uint32_t t = 0; t < s.count; t++) {
@@ -932,7 +935,12 @@ static sc_status walk_node(pwalk *w, const model_node *n, const affine *m, int d
     case MODEL_INTERSECTION:
         if (!w->cut)
             return leaf(w, n, m, depth, out); /* the boolean's mesh */
-        return boolean(w, n, m, depth, out);
+        {
+            w->booleans++;
+            sc_status st = boolean(w, n, m, depth, out);
+            w->booleans--;
+            return st;
+        }
     default:
         return leaf(w, n, m, depth, out);
     }
@@ -943,11 +951,15 @@ sc_status build_projection(const build_ctx *c, const model_node *n, twod_region 
     twod_clear(out);
     if (n->pending)
         return build_pending(c, n);
-    pwalk w = {c, n, n->u.projection.cut, NULL, 0};
+    pwalk w = {c, n, n->u.projection.cut, NULL, 0, 0, 0};
     affine id = affine_identity();
     sc_status st = walk_children(&w, n, &id, 0, out);
     if (st == SC_OK)
         st = clip_error(&w, n, twod_clip_union_nonzero(out, !w.cut), out);
+    /* a solid that z = 0 misses: OpenSCAD's warning (CGALUtils::project),
+     * said where the union of the children is known not to be empty */
+    if (st == SC_OK && w.cut && w.solid && !out->contour_count && c->notes)
+        st = build_note(c, &n->loc, "Projection() failed.");
     build_resize_cache_free(w.cache);
     return st;
 }
