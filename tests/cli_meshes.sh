@@ -440,8 +440,8 @@ minkowski(convexity = 0) {
 }
 CSG
 # The L as an STL file (each face fanned from a point that sees all of it,
-# turned outward as STL's are), its first triangle given twice: CGAL's builder skips the second copy,
-# and OpenSCAD's minkowski takes the rest.
+# turned outward as STL's are), its first triangle given twice: CGAL's
+# builder skips the second copy, and OpenSCAD's minkowski takes the rest.
 python3 - "$l_pts" "[[0, 1, 2, 3, 4, 5], [6, 11, 10, 9, 8, 7], ${l_sides#*], }]" <<'PY' >dup.stl
 import json, sys
 pts, faces = json.loads(sys.argv[1]), json.loads(sys.argv[2])
