@@ -31,13 +31,15 @@
 #include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
 #include <CGAL/Polyhedron_3.h>
 #include <CGAL/Polyhedron_incremental_builder_3.h>
+#include <CGAL/Polyhedron_items_with_id_3.h>
+#include <CGAL/Exact_rational.h>
+#include <CGAL/Interval_nt.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/Triangulation_face_base_with_info_2.h>
 #include <CGAL/Triangulation_vertex_base_with_info_2.h>
 #include <CGAL/boost/graph/convert_nef_polyhedron_to_polygon_mesh.h>
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
-#include <CGAL/normal_vector_newell_3.h>
 #include <CGAL/convex_decomposition_3.h>
 #pragma GCC diagnostic pop
 
@@ -269,12 +271,18 @@ void to_parts(const std::vector<std::vector<Point>> &sets, nef_parts *out)
 // corner), and CGAL 5's messages for the other two checks are not the
 // ones it looks for, so there the polyhedron is lost.
 
-using Polyhedron_hds = Polyhedron::HalfedgeDS;
+// The polyhedron's topology is all the checks need of CGAL's polyhedron,
+// so it is kept over doubles; each point's place in a plane is decided
+// exactly (a floating-point filter first, exact rationals where it cannot
+// tell), as CGAL's exact kernel decides it in OpenSCAD.
+using Fast = CGAL::Exact_predicates_inexact_constructions_kernel;
+using Plane_polyhedron = CGAL::Polyhedron_3<Fast, CGAL::Polyhedron_items_with_id_3>;
+using Plane_hds = Plane_polyhedron::HalfedgeDS;
 
 // CGAL's polyhedron of the faces, built as OpenSCAD builds it
 // (CGAL_Build_PolySet): every point added in the order given, then each
 // face its builder takes; added[i] is the given face of facet i.
-class Build_faces : public CGAL::Modifier_base<Polyhedron_hds>
+class Build_faces : public CGAL::Modifier_base<Plane_hds>
 {
   public:
     Build_faces(const double *points, uint32_t point_count, const uint32_t *indices,
@@ -284,13 +292,13 @@ class Build_faces : public CGAL::Modifier_base<Polyhedron_hds>
           face_start_(face_start), face_count_(face_count), added_(added)
     {
     }
-    void operator()(Polyhedron_hds &hds) override
+    void operator()(Plane_hds &hds) override
     {
-        CGAL::Polyhedron_incremental_builder_3<Polyhedron_hds> builder(hds, false);
+        CGAL::Polyhedron_incremental_builder_3<Plane_hds> builder(hds, false);
         builder.begin_surface(point_count_, face_count_);
         for (uint32_t i = 0; i < point_count_; i++)
             builder.add_vertex(
-                Point(points_[3 * i], points_[3 * i + 1], points_[3 * i + 2]));
+                Fast::Point_3(points_[3 * i], points_[3 * i + 1], points_[3 * i + 2]));
         for (uint32_t f = 0; f < face_count_; f++) {
             std::vector<std::size_t> face;
             for (uint32_t i = face_start_[f]; i < face_start_[f + 1]; i++) {
@@ -313,6 +321,37 @@ class Build_faces : public CGAL::Modifier_base<Polyhedron_hds>
     uint32_t face_count_;
     std::vector<uint32_t> &added_;
 };
+
+// N . (q - v) for the Newell normal N of the polygon p, in NT.
+template <class NT>
+NT newell_dot(const std::vector<Fast::Point_3> &p, const Fast::Point_3 &q,
+              const Fast::Point_3 &v)
+{
+    NT nx = 0, ny = 0, nz = 0;
+    for (std::size_t i = 0; i < p.size(); i++) {
+        const Fast::Point_3 &a = p[i], &b = p[(i + 1) % p.size()];
+        NT ax = a.x(), ay = a.y(), az = a.z(), bx = b.x(), by = b.y(), bz = b.z();
+        nx += (ay - by) * (az + bz);
+        ny += (az - bz) * (ax + bx);
+        nz += (ax - bx) * (ay + by);
+    }
+    NT dx = NT(q.x()) - NT(v.x()), dy = NT(q.y()) - NT(v.y()), dz = NT(q.z()) - NT(v.z());
+    return nx * dx + ny * dy + nz * dz;
+}
+
+// Whether q - v leaves the plane through the origin along the Newell normal
+// of the polygon p (CGAL's Sphere_circle::has_on, negated), exactly.
+bool off_plane(const std::vector<Fast::Point_3> &p, const Fast::Point_3 &q,
+               const Fast::Point_3 &v)
+{
+    {
+        CGAL::Protect_FPU_rounding<true> rounding;
+        CGAL::Interval_nt_advanced x = newell_dot<CGAL::Interval_nt_advanced>(p, q, v);
+        if (x.inf() > 0 || x.sup() < 0)
+            return true;
+    }
+    return !CGAL::is_zero(newell_dot<CGAL::Exact_rational>(p, q, v));
+}
 
 } // namespace
 
@@ -398,40 +437,37 @@ spancast_nef_plane_check(const double *points, uint32_t point_count,
     *verdict = 0;
     return guarded(
         [&] {
-            Polyhedron poly;
+            Plane_polyhedron poly;
             std::vector<uint32_t> added;
             Build_faces build(points, point_count, indices, face_start, face_count,
                               added);
             poly.delegate(build);
             if (poly.size_of_facets() != added.size())
                 return; // the builder gave up: nothing more to check
-            std::map<Polyhedron::Facet_const_handle, std::size_t> facet_of;
-            std::vector<Kernel::Vector_3> normals;
-            std::vector<std::size_t> sizes;
+            std::vector<std::vector<Fast::Point_3>> corners; // of each facet, in order
+            std::size_t id = 0;
             for (auto f = poly.facets_begin(); f != poly.facets_end(); ++f) {
-                facet_of[f] = normals.size();
-                CGAL::Vertex_around_face_circulator<Polyhedron> around(f->halfedge(),
-                                                                       poly),
-                    done(around);
-                Kernel::Vector_3 normal;
-                CGAL::normal_vector_newell_3(around, done, get(CGAL::vertex_point, poly),
-                                             normal);
-                normals.push_back(normal);
-                sizes.push_back(f->facet_degree());
+                f->id() = id++;
+                std::vector<Fast::Point_3> p;
+                auto h = f->halfedge();
+                do {
+                    p.push_back(h->vertex()->point());
+                    h = h->next();
+                } while (h != f->halfedge());
+                corners.push_back(p.size() > 3 ? std::move(p)
+                                               : std::vector<Fast::Point_3>());
             }
             // which: 1 the neighbour after the corner, 2 the one before, 3
             // either at the face that closes the corner's cycle
-            auto fails = [&](Polyhedron::Halfedge_const_handle in,
-                             Polyhedron::Halfedge_const_handle neighbour,
-                             Polyhedron::Vertex_const_handle corner) {
+            auto fails = [&](Plane_polyhedron::Halfedge_const_handle in,
+                             Plane_polyhedron::Halfedge_const_handle neighbour,
+                             Plane_polyhedron::Vertex_const_handle corner) {
                 if (in->is_border())
                     return false;
-                std::size_t i = facet_of[in->facet()];
-                if (sizes[i] <= 3)
-                    return false;
-                Kernel::Vector_3 d =
-                    neighbour->opposite()->vertex()->point() - corner->point();
-                if (CGAL::is_zero(normals[i] * d))
+                std::size_t i = in->facet()->id();
+                if (corners[i].empty() ||
+                    !off_plane(corners[i], neighbour->opposite()->vertex()->point(),
+                               corner->point()))
                     return false;
                 where[0] = added[i];
                 return true;
@@ -442,9 +478,9 @@ spancast_nef_plane_check(const double *points, uint32_t point_count,
             uint32_t corner = 0;
             for (auto v = poly.vertices_begin(); v != poly.vertices_end();
                  ++v, corner++) {
-                std::vector<Polyhedron::Halfedge_const_handle> in;
-                CGAL::Halfedge_around_target_circulator<Polyhedron> h(v->halfedge(),
-                                                                      poly),
+                std::vector<Plane_polyhedron::Halfedge_const_handle> in;
+                CGAL::Halfedge_around_target_circulator<Plane_polyhedron> h(v->halfedge(),
+                                                                            poly),
                     end(h);
                 do
                     in.push_back(*h);
