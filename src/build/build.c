@@ -644,21 +644,23 @@ static sc_status build_polyhedron(builder *b, const model_node *n, const frame *
      * plane with the others), so larger polyhedra go to the mesh path
      * (build_mesh.c), as do the ones that are not convex or not closed, and
      * convex ones of more than PRIM_CONVEX_MAX_PLANES planes, each of which
-     * a ray would test. Only a polyhedron that may take the plane-set path
+     * a ray would test. Only a polyhedron the plane-set path would take
      * is judged closed here: build_mesh_solid judges the others. */
     int planes_path = (uint64_t)m.face_count * m.point_count <= BUILD_MAX_POLYHEDRON_WORK;
-    char why[8];
-    int sound = f.face_count && planes_path
-                    ? build_mesh_cgal_closed(&c, &f, "polyhedron", 1, why, sizeof why)
-                    : 1;
-    if (sound < 0)
-        st = err_nomem(b->error, &n->loc);
     uint32_t count = UINT32_MAX;
     bbox bounds;
-    if (st == SC_OK && sound > 0 && planes_path)
+    if (planes_path)
         st = convex_planes(b, &m, &count, &bounds);
     if (count != UINT32_MAX && count > PRIM_CONVEX_MAX_PLANES)
         count = UINT32_MAX;
+    if (st == SC_OK && count != UINT32_MAX && f.face_count) {
+        char why[8];
+        int sound = build_mesh_cgal_closed(&c, &f, "polyhedron", 1, why, sizeof why);
+        if (sound < 0)
+            st = err_nomem(b->error, &n->loc);
+        else if (!sound)
+            count = UINT32_MAX;
+    }
     if (st == SC_OK && count == UINT32_MAX) {
         const char *empty = NULL;
         prim p;

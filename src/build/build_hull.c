@@ -1249,10 +1249,8 @@ static sc_status nef_node(const walk *w, const model_node *n, const affine *m, i
         st = build_mesh_merge(c, &n->loc, 1, n->u.polyhedron.points, np,
                               n->u.polyhedron.indices, n->u.polyhedron.face_start,
                               n->u.polyhedron.face_count, &f);
-        if (st == SC_OK && !build_mesh_cgal_keep(&f, 1))
-            st = err_nomem(c->error, &n->loc);
-        if (st == SC_OK && f.face_count)
-            st = build_mesh_openscad_triangles(c, &n->loc, "polyhedron", &f, 1);
+        if (st == SC_OK)
+            st = build_mesh_cgal_faces(c, &n->loc, "polyhedron", &f, 1);
         if (st == SC_OK && f.face_count)
             st = nef_mesh(w, n, m, &f, out);
         build_mesh_faces_free(&f);
@@ -1285,13 +1283,9 @@ static sc_status nef_node(const walk *w, const model_node *n, const affine *m, i
         st = mesh_faces(w, n, &faces, &empty);
         /* an STL or OFF file's faces, less those CGAL's builder skips, as
          * for a polyhedron */
-        if (st == SC_OK && !empty && kind == MODEL_IMPORT && !w->check &&
-            !build_mesh_cgal_keep(&faces, 0))
-            st = err_nomem(c->error, &n->loc);
-        if (st == SC_OK && !empty && kind == MODEL_IMPORT && !w->check &&
-            faces.face_count)
-            st = build_mesh_openscad_triangles(c, &n->u.import->file_loc, "imported mesh",
-                                               &faces, 0);
+        if (st == SC_OK && !empty && kind == MODEL_IMPORT && !w->check)
+            st = build_mesh_cgal_faces(c, &n->u.import->file_loc, "imported mesh", &faces,
+                                       0);
         if (st == SC_OK && !empty && faces.face_count && !w->check)
             st = nef_mesh(w, n, m, &faces, out);
         build_mesh_faces_free(&faces);

@@ -2425,25 +2425,46 @@ done:
     return lost;
 }
 
-int build_mesh_cgal_sound(const build_mesh_faces *f, const char *what, int numbered,
-                          int planes, char *why, size_t size, const char **openscad)
+/* OpenSCAD 2021.01's verdict on f where its CGAL path takes it (as
+ * build_mesh_cgal_sound says): 2 when OpenSCAD finds f convex and takes
+ * its hull without the builder; 1 when sound; 0 with why and *openscad;
+ * -1 when memory runs out; -2 when planes and the plugin does not load
+ * (why says so). With taken, *taken is the faces CGAL's builder takes
+ * (malloc'd; NULL unless 0 or 1). */
+static int cgal_verdict(const build_mesh_faces *f, const char *what, int numbered,
+                        int planes, uint8_t **taken, char *why, size_t size,
+                        const char **openscad)
 {
+    if (taken)
+        *taken = NULL;
     int convex = approx_convex(f, numbered);
-    if (convex != 0) /* OpenSCAD takes its hull (or memory ran out) */
-        return convex;
-    uint8_t *taken = planes ? malloc(f->face_count ? f->face_count : 1) : NULL;
-    builder_run run = {taken, 0, 0, 0};
-    if (planes && !taken)
+    if (convex != 0)
+        return convex > 0 ? 2 : -1;
+    uint8_t *mask = planes || taken ? malloc(f->face_count ? f->face_count : 1) : NULL;
+    if ((planes || taken) && !mask)
         return -1;
+    builder_run run = {mask, 0, 0, 0};
     int sound = builder_whole(f, what, numbered, why, size, &run, openscad);
     if (sound > 0 && planes) {
         char err[SC_ERROR_MESSAGE_MAX];
         int lost =
-            plane_lost(f, what, numbered, taken, why, size, openscad, err, sizeof err);
-        sound = lost == -1 ? -1 : lost != 1;
+            plane_lost(f, what, numbered, mask, why, size, openscad, err, sizeof err);
+        if (lost == -2)
+            snprintf(why, size, "%s", err);
+        sound = lost == 0 ? 1 : lost == 1 ? 0 : lost;
     }
-    free(taken);
+    if (taken && sound >= 0)
+        *taken = mask;
+    else
+        free(mask);
     return sound;
+}
+
+int build_mesh_cgal_sound(const build_mesh_faces *f, const char *what, int numbered,
+                          int planes, char *why, size_t size, const char **openscad)
+{
+    int sound = cgal_verdict(f, what, numbered, planes, NULL, why, size, openscad);
+    return sound == 2 || sound == -2 ? 1 : sound; /* no plugin: as the builder says */
 }
 
 /* A copy of the n bytes at p (malloc'd; NULL for none, or when memory
@@ -2484,19 +2505,19 @@ static int faces_own(build_mesh_faces *f)
     return 1;
 }
 
-int build_mesh_cgal_keep(build_mesh_faces *f, int reversed)
+/* Drops from f the faces CGAL's builder skips, unless OpenSCAD finds f
+ * convex (reversed: a polyhedron's faces, as approx_convex). 0 when
+ * memory runs out. */
+static int cgal_keep(build_mesh_faces *f, int reversed)
 {
-    int convex = approx_convex(f, reversed);
-    if (convex != 0)
-        return convex > 0;
-    uint8_t *taken = malloc(f->face_count ? f->face_count : 1);
-    builder_run run = {taken, 0, 0, 0};
+    uint8_t *taken;
     char why[8];
     const char *openscad;
-    if (!taken || builder_whole(f, "", 0, why, sizeof why, &run, &openscad) < 0) {
-        free(taken);
+    int sound = cgal_verdict(f, "", reversed, 0, &taken, why, sizeof why, &openscad);
+    if (sound == 2)
+        return 1;
+    if (sound < 0)
         return 0;
-    }
     uint32_t kept = 0;
     for (uint32_t k = 0; k < f->face_count; k++)
         kept += taken[k];
@@ -2683,9 +2704,10 @@ static sc_status openscad_triangles(const build_ctx *c, const sc_location *loc,
     return SC_OK;
 }
 
-sc_status build_mesh_openscad_triangles(const build_ctx *c, const sc_location *loc,
-                                        const char *what, build_mesh_faces *f,
-                                        int numbered)
+/* f's quads and faces out of their planes made OpenSCAD's triangles
+ * (build_mesh_cgal_faces). */
+static sc_status cgal_triangles(const build_ctx *c, const sc_location *loc,
+                                const char *what, build_mesh_faces *f, int numbered)
 {
     /* split: the quads and the faces out of their planes; the others stay
      * whole (the plugin triangulates a face in its plane, which a fan of
@@ -2747,6 +2769,14 @@ sc_status build_mesh_openscad_triangles(const build_ctx *c, const sc_location *l
     return SC_OK;
 }
 
+sc_status build_mesh_cgal_faces(const build_ctx *c, const sc_location *loc,
+                                const char *what, build_mesh_faces *f, int numbered)
+{
+    if (!cgal_keep(f, numbered))
+        return err_nomem(c->error, loc);
+    return f->face_count ? cgal_triangles(c, loc, what, f, numbered) : SC_OK;
+}
+
 sc_status build_mesh_solid(const build_ctx *c, const sc_location *loc, const char *what,
                            int numbered, int strict, const build_mesh_faces *f, prim *out,
                            const char **empty)
@@ -2757,31 +2787,20 @@ sc_status build_mesh_solid(const build_ctx *c, const sc_location *loc, const cha
     if (charged != SC_OK)
         return charged;
     char why[SC_ERROR_MESSAGE_MAX - 160];
-    int cgal = c->faithful && !c->drawn_as_is;
-    int convex = cgal ? approx_convex(f, numbered) : 0;
-    if (convex < 0)
-        return err_nomem(c->error, loc);
-    if (convex) /* OpenSCAD takes its hull, without CGAL's builder */
-        cgal = 0;
     /* taken: the faces CGAL's builder takes, which are all that OpenSCAD's
-     * boolean sees of a mesh it finds closed (a face given twice, say) */
-    uint8_t *taken = cgal ? malloc(f->face_count ? f->face_count : 1) : NULL;
-    builder_run run = {taken, 0, 0, 0};
+     * boolean sees of a mesh it finds closed (a face given twice, say); a
+     * mesh OpenSCAD finds convex it takes whole, as its hull */
+    uint8_t *taken = NULL;
     const char *refusal = build_openscad_not_closed;
     int sound =
-        cgal ? (taken ? builder_whole(f, what, numbered, why, sizeof why, &run, &refusal)
-                      : -1)
-             : build_mesh_sound(f, what, numbered, why, sizeof why);
-    if (sound > 0 && cgal) {
-        char err[SC_ERROR_MESSAGE_MAX - 160];
-        int lost = plane_lost(f, what, numbered, taken, why, sizeof why, &refusal, err,
-                              sizeof err);
-        if (lost == -2) {
-            free(taken);
-            return err_set(c->error, SC_ERR_UNSUPPORTED, loc, "%s: %s", what, err);
-        }
-        sound = lost < 0 ? -1 : !lost;
-    }
+        c->faithful && !c->drawn_as_is
+            ? cgal_verdict(f, what, numbered, 1, &taken, why, sizeof why, &refusal)
+            : 2;
+    int cgal = sound != 2;
+    if (sound == 2)
+        sound = build_mesh_sound(f, what, numbered, why, sizeof why);
+    if (sound == -2)
+        return err_set(c->error, SC_ERR_UNSUPPORTED, loc, "%s: %s", what, why);
     if (sound < 0) {
         free(taken);
         return err_nomem(c->error, loc);

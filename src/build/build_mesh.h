@@ -121,23 +121,18 @@ int build_mesh_sound(const build_mesh_faces *f, const char *what, int numbered, 
  * when memory ran out. */
 int build_mesh_cgal_sound(const build_mesh_faces *f, const char *what, int numbered,
                           int planes, char *why, size_t size, const char **openscad);
-/* Drops from f (one loop a face; lent arrays are copied first) the faces CGAL's
- * polyhedron builder skips (build_mesh_cgal_sound), as OpenSCAD's Nef
- * polyhedron of it has none of them: a face given twice, say. A mesh
- * OpenSCAD finds convex keeps them all (reversed: a polyhedron's faces,
- * as approx_convex). 0 when memory runs out. */
-int build_mesh_cgal_keep(build_mesh_faces *f, int reversed);
-/* f's faces (one loop a face) made the triangles OpenSCAD 2021.01's
- * tessellation makes of them, as CGAL's Nef polyhedron of a mesh that is
- * not convex takes them (a quad out of its plane split on OpenSCAD's
- * diagonal, larger faces out of their planes as libtess2 and OpenSCAD's
- * mending split them; larger faces in their planes stay whole, for the
- * plugin to triangulate); numbered: a
- * polyhedron's faces (as for build_mesh_solid). Lent arrays are copied
- * first. */
-sc_status build_mesh_openscad_triangles(const build_ctx *c, const sc_location *loc,
-                                        const char *what, build_mesh_faces *f,
-                                        int numbered);
+/* f's faces (one loop a face; lent arrays are copied first) as CGAL's Nef
+ * polyhedron of a mesh takes them from OpenSCAD 2021.01: without the
+ * faces CGAL's polyhedron builder skips (build_mesh_cgal_sound), a face
+ * given twice, say, unless OpenSCAD finds the mesh convex; then made the
+ * triangles OpenSCAD's tessellation makes of them, where the mesh is not
+ * convex (a quad out of its plane split on OpenSCAD's diagonal, larger
+ * faces out of their planes as libtess2 and OpenSCAD's mending split
+ * them; larger faces in their planes stay whole, for the plugin to
+ * triangulate). numbered: a polyhedron's faces (as for
+ * build_mesh_solid). */
+sc_status build_mesh_cgal_faces(const build_ctx *c, const sc_location *loc,
+                                const char *what, build_mesh_faces *f, int numbered);
 /* build_mesh_cgal_sound where faithful mode hands f to CGAL (c->faithful,
  * not c->drawn_as_is), else build_mesh_sound. */
 int build_mesh_cgal_closed(const build_ctx *c, const build_mesh_faces *f,
