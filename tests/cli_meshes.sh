@@ -548,5 +548,63 @@ expect 0 "off-twice.csg:2:16: warning: imported mesh is not closed (edge (0, 0, 
     inside off-twice.csg --point=0.5,0.5,0.5
 [ "$(cat out.txt)" = in ] || fail "off-twice.csg (exact): $(cat out.txt)"
 
+# A minkowski() whose operand CGAL's convex decomposition fails on (a loft
+# from a triangle to a square, its quads out of their planes): OpenSCAD's
+# own sum and its fallback, CGAL's minkowski_sum_3, both throw, and it
+# keeps the sum so far, with an error in its log but an STL written. The
+# first child as it is (the decomposition of the first or the second
+# fails), else the sum of the children before the one that failed; a hull
+# of such a minkowski hulls what it keeps.
+loft='polyhedron(points = [[7, 0, 0], [4.37524, 1.51486, 0], [1.75047, 3.02973, 0], [-0.874293, 4.54459, 0], [-3.49906, 6.05946, 0], [-3.5, 3.03054, 0], [-3.5, 8.88178e-16, 0], [-3.5, -3.03054, 0], [-3.49906, -6.05946, 0], [-0.874293, -4.54459, 0], [1.75047, -3.02973, 0], [4.37524, -1.51486, 0], [0.5, -3, 4], [1.18762, -2.24257, 4], [1.87524, -1.48514, 4], [2.56285, -0.727704, 4], [1.25047, 2.02973, 4], [1.25, 2.51527, 4], [1.25, 3, 4], [-0.75, 1.48473, 4], [-2.74953, -0.0297278, 4], [-3.43715, 0.727704, 4], [-2.12476, -0.514864, 4], [-0.812382, -1.75743, 4], [-6, -6, 8], [-2, -6, 8], [2, -6, 8], [6, -6, 8], [6, -2, 8], [6, 2, 8], [6, 6, 8], [2, 6, 8], [-2, 6, 8], [-6, 6, 8], [-6, 2, 8], [-6, -2, 8]], faces = [[0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11], [35, 34, 33, 32, 31, 30, 29, 28, 27, 26, 25, 24], [12, 13, 1, 0], [13, 14, 2, 1], [14, 15, 3, 2], [15, 16, 4, 3], [16, 17, 5, 4], [17, 18, 6, 5], [18, 19, 7, 6], [19, 20, 8, 7], [20, 21, 9, 8], [21, 22, 10, 9], [22, 23, 11, 10], [23, 12, 0, 11], [24, 25, 13, 12], [25, 26, 14, 13], [26, 27, 15, 14], [27, 28, 16, 15], [28, 29, 17, 16], [29, 30, 18, 17], [30, 31, 19, 18], [31, 32, 20, 19], [32, 33, 21, 20], [33, 34, 22, 21], [34, 35, 23, 22], [35, 24, 12, 23]], convexity = 1);'
+cat >mink-fail.csg <<CSG
+minkowski(convexity = 0) {
+	$loft
+	cube(size = [0.1, 0.1, 0.1], center = false);
+}
+CSG
+cat >mink-fail-third.csg <<CSG
+minkowski(convexity = 0) {
+	cube(size = [1, 1, 1], center = false);
+	sphere(\$fn = 8, \$fa = 12, \$fs = 2, r = 1);
+	$loft
+}
+CSG
+cat >mink-fail-hull.csg <<CSG
+hull() {
+	minkowski(convexity = 0) {
+		$loft
+		cube(size = [0.1, 0.1, 0.1], center = false);
+	}
+}
+CSG
+failed="minkowski: CGAL failed on 'polyhedron': CGAL ERROR: assertion violation!"
+# inside m, and inside the sum but not m (x is at most 7 in m)
+expect 0 "mink-fail.csg:2:2: warning: $failed" inside mink-fail.csg --faithful \
+    --point=0,0,2 --point=7.05,0.05,0.05
+[ "$(tr '\n' ' ' <out.txt)" = "in out " ] || fail "mink-fail.csg: $(tr '\n' ' ' <out.txt)"
+grep -q 'the result is its first child alone, as OpenSCAD keeps it' err.txt ||
+    fail "mink-fail.csg: $(cat err.txt)"
+expect 0 "mink-fail.csg:2:2: warning: $failed" inside mink-fail.csg --point=7.05,0.05,0.05
+[ "$(cat out.txt)" = out ] || fail "mink-fail.csg (exact): $(cat out.txt)"
+expect 1 "mink-fail.csg:2:2: error: $failed" inside mink-fail.csg --faithful --strict \
+    --point=0,0,2
+expect 0 "mink-fail-third.csg:4:2: warning: $failed" inside mink-fail-third.csg \
+    --faithful --point=-0.9,0.5,0.5
+[ "$(cat out.txt)" = in ] || fail "mink-fail-third.csg: $(cat out.txt)"
+grep -q 'the result is the sum of the children before it' err.txt ||
+    fail "mink-fail-third.csg: $(cat err.txt)"
+for m in mink-fail mink-fail-third mink-fail-hull; do
+    command -v openscad >/dev/null || {
+        fail "no openscad to check $m.csg with"
+        continue
+    }
+    check
+    openscad -o "$PWD/${m}_os.stl" --export-format binstl $m.csg >/dev/null 2>${m}_os.err
+    grep -q '^ERROR: CGAL error in CGALUtils::applyBinaryOperator UNKNOWN' ${m}_os.err ||
+        fail "openscad on $m.csg: $(cat ${m}_os.err)"
+    "$bin" compare $m.csg ${m}_os.stl --faithful >out.txt 2>err.txt ||
+        fail "$m.csg is not openscad's solid: $(tail -n 9 out.txt)"
+done
+
 echo "$checks checks, $fails failed"
 [ "$fails" = 0 ]

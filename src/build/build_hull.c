@@ -54,6 +54,7 @@
 #include "build/build_hull.h"
 
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -98,7 +99,19 @@ typedef struct walk {
      * operands (NULL elsewhere) */
     const model_node *top;
     build_nef_state *state;
+    /* a minkowski's: where CGAL's convex decomposition of an operand
+     * failed (solid_parts), for the minkowski to fall back as OpenSCAD's
+     * does (minkowski_parts); NULL elsewhere */
+    struct decompose_failure *failure;
 } walk;
+
+/* The operand whose convex decomposition CGAL failed on (its name and
+ * place: the walk's nodes may be copies), and CGAL's message. */
+typedef struct decompose_failure {
+    const char *name; /* NULL: none failed */
+    sc_location loc;
+    char why[512];
+} decompose_failure;
 
 /* Each resize node's matrix, computed once per build: a resize inside a
  * resize (or hull) would otherwise be measured again at every level above
@@ -599,7 +612,11 @@ static sc_status depth_error(const walk *w, const model_node *n)
 }
 
 static sc_status minkowski_parts(const walk *w, const model_node *n, const affine *m,
-                                 int depth, partlist *out, int *not_closed);
+                                 int depth, partlist *out, int *not_closed,
+                                 const model_node **whole);
+static sc_status collect_alone(const walk *w, const model_node *n,
+                               const model_node *child, const affine *m, int depth,
+                               partlist *out);
 static sc_status resize_matrix(const walk *w, const model_node *n, int depth, affine *out,
                                const char **warning);
 static sc_status solid_parts(const walk *w, const model_node *n, const affine *m,
@@ -744,7 +761,8 @@ static sc_status collect(const walk *w, const model_node *parent, const affine *
             }
             free(set.p);
         } else if (kind == MODEL_HULL) {
-            walk inner = {c, "hull", 0, w->cache, w->nef, w->check, 0, NULL, NULL, NULL};
+            walk inner = {c, "hull", 0,    w->cache, w->nef, w->check,
+                          0, NULL,   NULL, NULL,     NULL};
             partlist sub = {NULL, 0, 0};
             st = collect(&inner, n, m, depth + 1, &sub);
             pointset *part = NULL;
@@ -759,7 +777,10 @@ static sc_status collect(const walk *w, const model_node *parent, const affine *
             parts_free(&sub);
         } else if (kind == MODEL_MINKOWSKI) {
             int emptied; /* then it adds nothing, as an empty child adds nothing */
-            st = minkowski_parts(w, n, m, depth + 1, out, &emptied);
+            const model_node *whole;
+            st = minkowski_parts(w, n, m, depth + 1, out, &emptied, &whole);
+            if (st == SC_OK && whole) /* its first child as it is */
+                st = collect_alone(w, n, whole, m, depth + 1, out);
         } else if (kind == MODEL_DIFFERENCE || kind == MODEL_INTERSECTION) {
             st = solid_parts(w, n, m, depth + 1, out);
         } else {
@@ -795,18 +816,66 @@ static sc_status reduce(const walk *w, const model_node *n, partlist *l)
     return SC_OK;
 }
 
+/* What collect takes of child, a child of n, alone (through m). */
+static sc_status collect_alone(const walk *w, const model_node *n,
+                               const model_node *child, const affine *m, int depth,
+                               partlist *out)
+{
+    /* collect walks the children of its argument: a one-child view of n */
+    model_node view = *n;
+    model_node lone = *child;
+    lone.next = NULL;
+    view.first_child = &lone;
+    view.child_count = 1;
+    return collect(w, &view, m, depth, out);
+}
+
+/* OpenSCAD 2021.01's minkowski falls back to CGAL's Nef minkowski_sum_3
+ * when its own sum throws, and that sum decomposes both operands as the
+ * first did; where CGAL's convex decomposition of an operand fails, it
+ * keeps the sum so far ("CGAL error in CGALUtils::applyBinaryOperator
+ * UNKNOWN"): the first child as it is when the decomposition of the first
+ * or second fails, else the sum of the children before the one that
+ * failed. The warning for failure f (an error with --strict, where the
+ * walk keeps it). */
+static sc_status decompose_warning(const walk *w, const decompose_failure *f,
+                                   int first_alone)
+{
+    return build_note(w->c, &f->loc,
+                      "minkowski: CGAL failed on '%s': %s; the result is %s, as "
+                      "OpenSCAD keeps it (\"CGAL error in "
+                      "CGALUtils::applyBinaryOperator UNKNOWN\")",
+                      f->name, f->why,
+                      first_alone ? "its first child alone"
+                                  : "the sum of the children before it");
+}
+
 /* The parts of minkowski node n (through m) appended to out; none, with
  * *not_closed set, when a mesh among its children is not closed
- * (closed_check). */
+ * (closed_check). Where CGAL's convex decomposition of the first child
+ * fails (decompose_warning), *whole is that child, for the caller to take
+ * as it is, and out gets nothing. */
 static sc_status minkowski_parts(const walk *w, const model_node *n, const affine *m,
-                                 int depth, partlist *out, int *not_closed)
+                                 int depth, partlist *out, int *not_closed,
+                                 const model_node **whole)
 {
     *not_closed = 0;
-    walk inner = {w->c,     "minkowski", 1,          w->cache, w->nef,
-                  w->check, 0,           not_closed, NULL,     NULL};
+    *whole = NULL;
+    decompose_failure failure = {NULL, {NULL, 0, 0}, ""};
+    walk inner = {w->c,
+                  "minkowski",
+                  1,
+                  w->cache,
+                  w->nef,
+                  w->check,
+                  0,
+                  not_closed,
+                  NULL,
+                  NULL,
+                  w->c->strict ? NULL : &failure};
     partlist acc = {NULL, 0, 0};
     sc_status st = SC_OK;
-    int first = 1;
+    int first = 1, second = 0;
     if (depth > BUILD_HULL_MAX_DEPTH)
         return depth_error(w, n);
     for (const model_node *child = n->first_child; child && st == SC_OK;
@@ -816,17 +885,18 @@ static sc_status minkowski_parts(const walk *w, const model_node *n, const affin
             continue;
         }
         partlist parts = {NULL, 0, 0};
-        /* Each child alone: collect walks the children of its argument, so
-         * walk a one-child view of the minkowski node. */
-        model_node view = *n;
-        model_node lone = *child;
-        lone.next = NULL;
-        view.first_child = &lone;
-        view.child_count = 1;
         affine here = first ? *m : affine_identity();
-        st = collect(&inner, &view, &here, depth + 1, &parts);
+        st = collect_alone(&inner, n, child, &here, depth + 1, &parts);
         if (st == SC_OK)
             st = reduce(&inner, n, &parts);
+        if (st != SC_OK && failure.name) { /* the sum so far, as OpenSCAD's */
+            parts_free(&parts);
+            err_clear(w->c->error);
+            st = decompose_warning(&inner, &failure, first || second);
+            if (first)
+                *whole = child;
+            break;
+        }
         if (st != SC_OK || parts.count == 0) {
             parts_free(&parts);
             continue;
@@ -834,8 +904,10 @@ static sc_status minkowski_parts(const walk *w, const model_node *n, const affin
         if (first) {
             acc = parts;
             first = 0;
+            second = 1;
             continue;
         }
+        second = 0;
         /* acc ⊕ parts, part by part; the new child is through m's linear
          * part only (the translation is in acc already). */
         affine linear = *m;
@@ -1300,7 +1372,8 @@ static sc_status nef_node(const walk *w, const model_node *n, const affine *m, i
             st = part ? shape_points(w, n, &s, m, part) : err_nomem(c->error, &n->loc);
         }
     } else if (kind == MODEL_HULL) {
-        walk inner = {c, "hull", 0, w->cache, w->nef, w->check, 0, NULL, NULL, NULL};
+        walk inner = {c, "hull", 0,    w->cache, w->nef, w->check,
+                      0, NULL,   NULL, NULL,     NULL};
         partlist sub = {NULL, 0, 0};
         st = collect(&inner, n, m, depth + 1, &sub);
         pointset *part = NULL;
@@ -1315,7 +1388,10 @@ static sc_status nef_node(const walk *w, const model_node *n, const affine *m, i
         parts_free(&sub);
     } else if (kind == MODEL_MINKOWSKI) {
         int emptied; /* then nothing, as closed_check said */
-        st = minkowski_parts(w, n, m, depth + 1, &parts, &emptied);
+        const model_node *whole;
+        st = minkowski_parts(w, n, m, depth + 1, &parts, &emptied, &whole);
+        if (st == SC_OK && whole) /* its first child as it is */
+            st = nef_node(w, whole, m, depth + 1, out);
     } else {
         st = err_set(c->error, SC_ERR_UNSUPPORTED, &n->loc,
                      "'%s' inside %s is not supported yet", n->name, w->owner);
@@ -1360,6 +1436,11 @@ static sc_status solid_parts(const walk *w, const model_node *n, const affine *m
     nef_status ns = w->convex ? w->nef->convex_parts(solid, &got, why, sizeof why)
                               : w->nef->vertices(solid, &got, why, sizeof why);
     w->nef->release(solid);
+    if (ns == NEF_FAILED && w->convex && w->failure && !w->failure->name) {
+        w->failure->name = n->name; /* for the minkowski to fall back on */
+        w->failure->loc = n->loc;
+        snprintf(w->failure->why, sizeof w->failure->why, "%s", why);
+    }
     if (ns != NEF_OK)
         return nef_error(w, n, ns, why);
     for (uint32_t k = 0; k < got.count && st == SC_OK; k++) {
@@ -1386,7 +1467,7 @@ sc_status build_nef_triangles(const build_ctx *c, const model_node *n, const cha
     *tris = NULL;
     *tri_count = 0;
     nef_plugin nef = {0};
-    walk w = {c, owner, 0, cache, &nef, 0, 0, NULL, NULL, NULL};
+    walk w = {c, owner, 0, cache, &nef, 0, 0, NULL, NULL, NULL, NULL};
     nef_solid *solid = NULL;
     affine id = affine_identity();
     sc_status st = nef_ready(&w, n);
@@ -1478,7 +1559,7 @@ sc_status build_nef_evaluate(const build_ctx *c, const model_node *n,
     build_ctx own = *c;
     own.nefs = NULL; /* each operand evaluated here, for out's flags */
     build_resize_cache *cache = NULL;
-    walk w = {&own, n->name, 0, &cache, &nef, 0, 0, NULL, n, out};
+    walk w = {&own, n->name, 0, &cache, &nef, 0, 0, NULL, n, out, NULL};
     nef_solid *solid = NULL;
     affine id = affine_identity();
     sc_status st = nef_node(&w, n, &id, 0, &solid);
@@ -1565,7 +1646,7 @@ sc_status build_hull(const build_ctx *c, const model_node *n, int emit,
 {
     memset(out, 0, sizeof *out);
     nef_plugin nef = {0};
-    walk w = {c, "hull", 0, cache, &nef, !emit, 0, NULL, NULL, NULL};
+    walk w = {c, "hull", 0, cache, &nef, !emit, 0, NULL, NULL, NULL, NULL};
     partlist parts = {NULL, 0, 0};
     affine id = affine_identity();
     sc_status st = collect(&w, n, &id, 0, &parts);
@@ -1595,18 +1676,33 @@ sc_status build_minkowski(const build_ctx *c, const model_node *n, int emit,
 {
     memset(out, 0, sizeof *out);
     nef_plugin nef = {0};
-    walk w = {c, "minkowski", 1, cache, &nef, !emit, 0, NULL, NULL, NULL};
+    walk w = {c, "minkowski", 1, cache, &nef, !emit, 0, NULL, NULL, NULL, NULL};
     partlist parts = {NULL, 0, 0};
     affine id = affine_identity();
     int not_closed;
-    sc_status st = minkowski_parts(&w, n, &id, 0, &parts, &not_closed);
+    const model_node *whole;
+    sc_status st = minkowski_parts(&w, n, &id, 0, &parts, &not_closed, &whole);
     nef_publish(c);
     nef_plugin_close(&nef);
-    build_imports_done(c, n);
     int flat = 0;
     for (uint32_t i = 0; i < parts.count && st == SC_OK && emit; i++)
         st = emit_hull(c, n, &parts.items[i], out, &flat);
     parts_free(&parts);
+    if (st == SC_OK && emit && whole) { /* its first child as it is: CGAL's mesh */
+        vec3 *corners;
+        uint32_t tris;
+        build_ctx quiet = *c; /* its warnings were given as it was decomposed */
+        quiet.notes = NULL;
+        st = build_nef_triangles(&quiet, whole, "minkowski", cache, 0, &corners, &tris);
+        prim p;
+        const char *none = NULL;
+        if (st == SC_OK && tris)
+            st = build_mesh_soup(c, &n->loc, n->name, corners, tris, &p, &none);
+        if (st == SC_OK && tris && !none)
+            st = push_prim(c, n, out, &p);
+        free(corners);
+    }
+    build_imports_done(c, n);
     if (st == SC_OK && emit && out->count == 0) /* "": its warning was given */
         *empty = not_closed ? "" : "minkowski without volume is empty";
     return st;
@@ -1904,7 +2000,7 @@ sc_status build_resize(const build_ctx *c, const model_node *n,
                        build_resize_cache **cache, affine *out, const char **warning)
 {
     nef_plugin nef = {0};
-    walk w = {c, "resize", 0, cache, &nef, 0, 0, NULL, NULL, NULL};
+    walk w = {c, "resize", 0, cache, &nef, 0, 0, NULL, NULL, NULL, NULL};
     const model_node *measured = n->u.resize->measured ? n->u.resize->measured : n;
     sc_status st = resize_matrix(&w, measured, 0, out, warning);
     nef_plugin_close(&nef);

@@ -2982,6 +2982,27 @@ static int merge_corners(mesh_file *m)
     return ok;
 }
 
+sc_status build_mesh_soup(const build_ctx *c, const sc_location *loc, const char *what,
+                          const vec3 *corners, uint32_t tri_count, prim *out,
+                          const char **empty)
+{
+    mesh_file m;
+    memset(&m, 0, sizeof m);
+    if (tri_count > UINT32_MAX / 3 ||
+        !grow_array32((void **)&m.points, &m.point_cap, 3 * tri_count, sizeof(vec3)))
+        return err_nomem(c->error, loc);
+    memcpy(m.points, corners, 3 * (size_t)tri_count * sizeof *corners);
+    m.point_count = 3 * tri_count;
+    sc_status st = merge_corners(&m) ? SC_OK : err_nomem(c->error, loc);
+    build_ctx as_is = *c; /* CGAL's own closed mesh, as OpenSCAD takes it */
+    as_is.drawn_as_is = 1;
+    if (st == SC_OK)
+        st = build_mesh_prim(&as_is, loc, what, 0, m.points, m.point_count, m.indices,
+                             m.face_start, m.face_count, out, empty);
+    mesh_file_free(&m);
+    return st;
+}
+
 static float read_f32(const unsigned char *p)
 {
     uint32_t u = (uint32_t)p[0] | (uint32_t)p[1] << 8 | (uint32_t)p[2] << 16 |

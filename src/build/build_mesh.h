@@ -33,6 +33,13 @@ sc_status build_mesh_prim(const build_ctx *c, const sc_location *loc, const char
                           const uint32_t *indices, const uint32_t *face_start,
                           uint32_t face_count, prim *out, const char **empty);
 
+/* The mesh leaf of tri_count triangles, corners[3 t .. 3 t + 3) each (a
+ * CGAL Nef polyhedron's boundary), their corners merged where they are
+ * equal; drawn as it is, unchecked (build_mesh_prim otherwise). */
+sc_status build_mesh_soup(const build_ctx *c, const sc_location *loc, const char *what,
+                          const vec3 *corners, uint32_t tri_count, prim *out,
+                          const char **empty);
+
 /* The faces of OpenSCAD 2021.01's own mesh on a builder's points, where the
  * builder mends it into another (a linear_extrude scaled to 0 at its top,
  * whose collapsed walls it splits): what faithful mode checks is closed
