@@ -192,6 +192,29 @@ printf 'module part(s) { cube(s); }\nfor (i = [0 : 2]) translate([3 * i, 0, 0]) 
 warns_with loops.csg "loops.csg: note: uses OpenSCAD's language beyond its CSG export (line 1); converting it with openscad"
 "$bin" info loops.csg 2>/dev/null | grep -q 'bounds: \[0, 0, 0\] to \[9, 3, 3\]' ||
     fail "loops.csg: bounds $("$bin" info loops.csg 2>&1)"
+# OpenSCAD 2021.01's deprecated modules and intersection_for are
+# language too: its export writes the import, extrusion or intersection
+# they make, with its DEPRECATED line as a warning.
+printf 'solid t\n' >dep.stl
+for t in "0 0 0  0 2 0  2 0 0" "0 0 0  2 0 0  0 0 2" "0 0 0  0 0 2  0 2 0" "2 0 0  0 2 0  0 0 2"; do
+    printf ' facet normal 0 0 0\n  outer loop\n' >>dep.stl
+    for v in 0 3 6; do
+        set -- $t
+        shift $v
+        printf '   vertex %s %s %s\n' "$1" "$2" "$3" >>dep.stl
+    done
+    printf '  endloop\n endfacet\n' >>dep.stl
+done
+printf 'endsolid t\n' >>dep.stl
+printf 'group() {\n  import_stl("dep.stl");\n}\n' >dep.csg
+warns_with dep.csg "dep.csg: note: uses OpenSCAD's language beyond its CSG export (line 2); converting it with openscad
+dep.csg:2:1: warning: The import_stl() module will be removed in future releases. Use import() instead."
+"$bin" info dep.csg 2>/dev/null | grep -q 'bounds: \[0, 0, 0\] to \[2, 2, 2\]' ||
+    fail "dep.csg: bounds $("$bin" info dep.csg 2>&1)"
+printf 'intersection_for(i = [0, 1]) multmatrix([[1, 0, 0, i], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]) cube(2);\n' >ifor.csg
+warns_with ifor.csg "ifor.csg: note: uses OpenSCAD's language beyond its CSG export (line 1); converting it with openscad"
+"$bin" info ifor.csg 2>/dev/null | grep -q 'bounds: \[1, 0, 0\] to \[2, 2, 2\]' ||
+    fail "ifor.csg: bounds $("$bin" info ifor.csg 2>&1)"
 # OpenSCAD's own error, at its position, after the note; an error in the
 # converted text names the .csg, with the export's line.
 printf 'cube(1);\nx = ;\n' >badlang.csg

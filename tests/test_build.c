@@ -807,7 +807,7 @@ static void test_root_modifier(void **state)
 static void test_unsupported(void **state)
 {
     (void)state;
-    static const char *names[] = {"roof", "intersection_for", "halfspace"};
+    static const char *names[] = {"roof", "halfspace"};
     for (size_t i = 0; i < sizeof names / sizeof names[0]; i++) {
         char text[256], expected[256];
         snprintf(text, sizeof text, "group() {\n  cube();\n\n    %s() { cube(); }\n}",

@@ -450,6 +450,17 @@ static void test_language(void **state)
     LANGUAGE("group() for (i = [1, 2]) cube(1);", "1:9", "'for'");
     LANGUAGE("if (true) cube(1);", "1:1", "'if'");
     LANGUAGE("translate([1, 0, 0]) rotate(45) cube(1);", "1:1", "'translate'");
+    /* written by the export as the intersection, import or extrusion
+     * they make */
+    LANGUAGE("intersection_for(i = [0, 1]) cube(2);", "1:1", "'intersection_for'");
+    LANGUAGE("child(0);", "1:1", "'child'");
+    LANGUAGE("group() import_stl(\"a.stl\");", "1:9", "'import_stl'");
+    LANGUAGE("import_off(\"a.off\");", "1:1", "'import_off'");
+    LANGUAGE("linear_extrude(height = 2) import_dxf(file = \"a.dxf\");", "1:28",
+             "'import_dxf'");
+    LANGUAGE("dxf_linear_extrude(file = \"a.dxf\", height = 2);", "1:1",
+             "'dxf_linear_extrude'");
+    LANGUAGE("dxf_rotate_extrude(file = \"a.dxf\");", "1:1", "'dxf_rotate_extrude'");
     LANGUAGE("cube(size);", "1:6", "a variable or function ('size')");
     LANGUAGE("cube(size, center = true);", "1:6", "a variable or function ('size')");
     LANGUAGE("cube(size = s);", "1:13", "a variable or function ('s')");

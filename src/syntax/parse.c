@@ -181,14 +181,38 @@ static int grow_names(parser *ps)
 
 /* What a name at the start of a statement says when OpenSCAD's language
  * uses it and its CSG export never writes it: the keywords, the flow
- * control and echo modules, and the transforms (the export writes every
- * transform as multmatrix). NULL for every other name, which is a node. */
+ * control and echo modules (intersection_for is written as the
+ * intersection it makes), the transforms (the export writes every
+ * transform as multmatrix), and OpenSCAD 2021.01's deprecated modules,
+ * which it writes as the import or extrusion they are. NULL for every
+ * other name, which is a node. */
 static const char *language_word(const char *name)
 {
     static const char *const words[] = {
-        "module",   "function",  "include", "use",   "for",    "if",
-        "else",     "let",       "each",    "echo",  "assert", "assign",
-        "children", "translate", "rotate",  "scale", "mirror",
+        "module",
+        "function",
+        "include",
+        "use",
+        "for",
+        "if",
+        "else",
+        "let",
+        "each",
+        "echo",
+        "assert",
+        "assign",
+        "children",
+        "child",
+        "intersection_for",
+        "translate",
+        "rotate",
+        "scale",
+        "mirror",
+        "import_stl",
+        "import_off",
+        "import_dxf",
+        "dxf_linear_extrude",
+        "dxf_rotate_extrude",
     };
     for (size_t i = 0; i < sizeof words / sizeof words[0]; i++)
         if (strcmp(words[i], name) == 0)
