@@ -228,6 +228,29 @@ case "$(cat err.txt)" in
 *) fail "bad.off: got '$(cat err.txt)'" ;;
 esac
 fails_with missing.stl 1 "spancast: error: cannot open 'missing.stl': No such file or directory"
+# OFF's variants, as CGAL's OFF reader (OpenSCAD's import) takes them: a
+# colour (COFF), a normal (NOFF) or a homogeneous coordinate (4OFF) after
+# each point, on the point's line; the same tetrahedron as tet.off.
+off_faces='3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n'
+printf "COFF\n4 4 6\n0 0 0 255 0 0 255\n2 0 0 255 0 0 255\n0 2 0 0.5 0.5 0.5 1\n0 0 2 1 1 1 1\n$off_faces" >tet-c.off
+printf "NOFF\n4 4 6\n0 0 0 0 0 1\n2 0 0 0 0 1\n0 2 0 0 0 1\n0 0 2 0 0 1\n$off_faces" >tet-n.off
+printf "4OFF\n4 4 6\n0 0 0 2\n4 0 0 2\n0 4 0 2\n0 0 1 0.5\n$off_faces" >tet-4.off
+printf "CNOFF\n# the point's colour after its normal\n4 4 6\n0 0 0 0 0 1 1 0 0\n2 0 0 0 0 1 1 0 0\n0 2 0 0 0 1 1 0 0\n0 0 2 0 0 1 1 0 0\n$off_faces" >tet-cn.off
+"$bin" info tet.off 2>&1 | grep '^bounds' >a.txt
+for mesh in tet-c.off tet-n.off tet-4.off tet-cn.off; do
+    check
+    "$bin" info $mesh 2>err.txt | grep '^bounds' >b.txt
+    [ -s err.txt ] && fail "$mesh: stderr '$(cat err.txt)'"
+    cmp -s a.txt b.txt || fail "$mesh: $(cat b.txt), want $(cat a.txt)"
+    command -v openscad >/dev/null || continue
+    check
+    printf 'import(file = "%s");\n' $mesh >import-$mesh.csg
+    openscad -o "$PWD/$mesh.stl" --export-format binstl import-$mesh.csg >/dev/null 2>&1
+    "$bin" compare $mesh $mesh.stl --faithful >out.txt 2>&1 ||
+        fail "$mesh is not openscad's import: $(tail -n 9 out.txt)"
+done
+printf 'OFF BINARY\n' >binary.off
+fails_with binary.off 1 "binary.off: error: import: '$work/binary.off' is not a valid OFF file (it is a binary OFF file, which is not read)"
 
 # ---- spancast-mpi: the same inputs, converted or read once by rank 0 ----
 if command -v mpirun >/dev/null && [ -x "$(dirname "$bin")/spancast-mpi" ]; then

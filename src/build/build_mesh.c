@@ -46,6 +46,7 @@
  */
 #include "build/build_mesh.h"
 
+#include <ctype.h>
 #include <errno.h>
 #include <float.h>
 #include <math.h>
@@ -3125,25 +3126,91 @@ static int off_number(const char **p, const char *end, double *out)
     return *next == 0;
 }
 
+/* The numbers at the start of the line from *p (to '\n' or a '#'), into
+ * out (at most cap): how many; *p moves past the line. As CGAL's OFF
+ * reader takes a point's line, numbers until the first that is not one. */
+static int off_line(const char **p, const char *end, double *out, int cap)
+{
+    const char *e = *p;
+    while (e < end && *e != '\n')
+        e++;
+    const char *line_end = e;
+    for (const char *h = *p; h < e; h++)
+        if (*h == '#') {
+            line_end = h;
+            break;
+        }
+    int count = 0;
+    const char *q = *p;
+    while (count < cap) {
+        while (q < line_end && (*q == ' ' || *q == '\t' || *q == '\r'))
+            q++;
+        const char *t = q;
+        while (q < line_end && !(*q == ' ' || *q == '\t' || *q == '\r'))
+            q++;
+        char buf[64];
+        size_t len = (size_t)(q - t);
+        if (len == 0 || len >= sizeof buf)
+            break;
+        memcpy(buf, t, len);
+        buf[len] = 0;
+        char *next;
+        out[count] = strtod(buf, &next);
+        if (*next)
+            break;
+        count++;
+    }
+    *p = e;
+    return count;
+}
+
+/* An OFF file as CGAL's reader (CGAL 5, which OpenSCAD 2021.01's import()
+ * runs) takes it: the keyword [ST][C][N][4]OFF (texture coordinates,
+ * colours, normals and a homogeneous coordinate after each point, all
+ * but the point ignored), the counts, then each point on a line of its
+ * own, its first three numbers (over the fourth, 4OFF), then the faces. */
 static const char *read_off(const char *text, size_t size, mesh_file *m, int *oom)
 {
     const char *p = text, *end = text + size;
     int nl;
     const char *t = off_token(&p, end, &nl);
-    if (!t || p - t != 3 || strncmp(t, "OFF", 3) != 0)
-        return "it does not start with 'OFF'";
+    size_t len = 0;
+    while (t && t + len < p && isalnum((unsigned char)t[len]))
+        len++;
+    size_t j = 0;
+    int homogeneous = 0;
+    if (t && len >= 2 && t[0] == 'S' && t[1] == 'T')
+        j += 2;
+    if (t && j < len && t[j] == 'C')
+        j++;
+    if (t && j < len && t[j] == 'N')
+        j++;
+    if (t && j < len && t[j] == '4') {
+        homogeneous = 1;
+        j++;
+    }
+    if (t && j < len && t[j] == 'n')
+        return "it is an nOFF file (points of any dimension), which is not read";
+    if (!t || len != j + 3 || strncmp(t + j, "OFF", 3) != 0)
+        return "it does not start with 'OFF' (or COFF, NOFF, 4OFF, STOFF)";
+    p = t + len;
+    const char *peek = p, *word = off_token(&peek, end, &nl);
+    if (word && peek - word == 6 && strncmp(word, "BINARY", 6) == 0)
+        return "it is a binary OFF file, which is not read";
     double counts[3];
-    for (int j = 0; j < 3; j++)
-        if (!off_number(&p, end, &counts[j]) || !(counts[j] >= 0) ||
-            counts[j] != floor(counts[j]) || counts[j] > UINT32_MAX / 4)
+    for (int k = 0; k < 3; k++)
+        if (!off_number(&p, end, &counts[k]) || !(counts[k] >= 0) ||
+            counts[k] != floor(counts[k]) || counts[k] > UINT32_MAX / 4)
             return "bad point, face and edge counts";
     uint32_t nv = (uint32_t)counts[0], nf = (uint32_t)counts[1];
     for (uint32_t i = 0; i < nv; i++) {
-        double c[3];
-        for (int j = 0; j < 3; j++)
-            if (!off_number(&p, end, &c[j]))
-                return "fewer points than its header says, or a bad coordinate";
-        vec3 q = v3(c[0], c[1], c[2]);
+        double c[4] = {0, 0, 0, 1};
+        const char *line = off_token(&p, end, &nl); /* past space and comments */
+        p = line ? line : end;
+        if (!line || off_line(&p, end, c, 4) < 3 + homogeneous)
+            return "fewer points than its header says, or a bad coordinate";
+        vec3 q = homogeneous && c[3] != 1 ? v3(c[0] / c[3], c[1] / c[3], c[2] / c[3])
+                                          : v3(c[0], c[1], c[2]);
         if (!v3_is_finite(q))
             return "a point is not finite";
         if (!add_point(m, q))
