@@ -319,14 +319,37 @@ static void test_errors(void **state)
 {
     (void)state;
     /* OpenSCAD's message, with its running range: circle(r = 5) has 16
-     * points from angle 0; the 6th (x = -1.91) is the first below 0 */
-    check_error("group() {\n  rotate_extrude() { circle(r = 5); }\n}\n", SC_ERR_SEMANTIC,
-                "m.csg:2:3: error: all points for rotate_extrude() must have the same X "
-                "coordinate sign (range is -1.91 -> 5.00)");
-    check_error("rotate_extrude() { polygon(points = [[-1, 0], [2, 0], [2, 1]]); }",
-                SC_ERR_SEMANTIC,
-                "m.csg:1:1: error: all points for rotate_extrude() must have the same X "
-                "coordinate sign (range is -1.00 -> 2.00)");
+     * points from angle 0; the 6th (x = -1.91) is the first below 0. It
+     * logs it and leaves the extrusion out, the rest rendered; --strict
+     * makes it the error. */
+    test_check_strict_error("m.csg",
+                            "group() {\n  rotate_extrude() { circle(r = 5); }\n}\n", 0,
+                            SC_ERR_SEMANTIC,
+                            "m.csg:2:3: error: all points for rotate_extrude() must have "
+                            "the same X coordinate sign (range is -1.91 -> 5.00)");
+    test_check_strict_error(
+        "m.csg", "rotate_extrude() { polygon(points = [[-1, 0], [2, 0], [2, 1]]); }", 1,
+        SC_ERR_SEMANTIC,
+        "m.csg:1:1: error: all points for rotate_extrude() must have the same X "
+        "coordinate sign (range is -1.00 -> 2.00)");
+    {
+        static const char *const crossing[] = {
+            "m.csg:1:10: all points for rotate_extrude() must have the same X coordinate "
+            "sign (range is -1.00 -> 2.00); the rotate_extrude is empty, as OpenSCAD "
+            "leaves "
+            "it out"};
+        for (int faithful = 0; faithful < 2; faithful++) {
+            sc_scene *s =
+                test_check_warnings("m.csg",
+                                    "cube(1); rotate_extrude() { polygon(points = [[-1, "
+                                    "0], [2, 0], [2, 1]]); "
+                                    "}",
+                                    faithful, crossing, 1);
+            assert_true(inside(s, 0.5, 0.5, 0.5));
+            assert_false(inside(s, 1.5, 0, 0.5));
+            sc_scene_release(s);
+        }
+    }
     {
         /* a 3D child: ignored with OpenSCAD's warning, the rest revolved */
         static const char *const ignored[] = {

@@ -47,6 +47,7 @@
 
 #include <float.h>
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -621,19 +622,29 @@ static sc_status rotate_extrude(const build_ctx *c, const model_node *n, int emi
             st = united_profile(c, n, &p);
         }
     }
-    /* OpenSCAD's check, in its order, with its running range. */
+    /* OpenSCAD's check, in its order, with its running range: it logs the
+     * error and the extrusion is empty, the rest rendered */
     double min_x = 0, max_x = 0;
-    for (uint32_t i = 0; st == SC_OK && i < p.pts.point_count; i++) {
+    int crossed = 0;
+    for (uint32_t i = 0; st == SC_OK && !crossed && i < p.pts.point_count; i++) {
         min_x = fmin(min_x, p.pts.xy[2 * i]);
         max_x = fmax(max_x, p.pts.xy[2 * i]);
-        if (max_x - min_x > max_x && max_x - min_x > fabs(min_x))
-            st =
-                err_set(c->error, SC_ERR_SEMANTIC, &n->loc,
-                        "all points for rotate_extrude() must have the same X coordinate "
-                        "sign (range is %.2f -> %.2f)",
-                        min_x, max_x);
+        crossed = max_x - min_x > max_x && max_x - min_x > fabs(min_x);
     }
-    if (st == SC_OK && emit) {
+    static const char crossing[] =
+        "all points for rotate_extrude() must have the same X coordinate sign (range is "
+        "%.2f -> %.2f)";
+    if (st == SC_OK && crossed && c->strict)
+        st = err_set(c->error, SC_ERR_SEMANTIC, &n->loc, crossing, min_x, max_x);
+    else if (st == SC_OK && crossed) {
+        char why[160];
+        snprintf(why, sizeof why, crossing, min_x, max_x);
+        st =
+            build_note(c, &n->loc,
+                       "%s; the rotate_extrude is empty, as OpenSCAD leaves it out", why);
+        *empty = "";
+    }
+    if (st == SC_OK && emit && !crossed) {
         double area = 0;
         for (uint32_t k = 0; k < p.pts.contour_count; k++)
             if (p.pts.start[k + 1] - p.pts.start[k] >= 3)
