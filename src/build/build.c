@@ -144,15 +144,18 @@ typedef struct builder {
     /* a walk for the preview (its solid, its parts): 2D objects in a 3D
      * model are the slabs OpenSCAD's preview draws (build_preview_slab) */
     int preview;
-    size_t flat_parts; /* 2D objects the main walk left out of a 3D model, or
-                          1 for a 2D model, which the preview draws as slabs */
-    size_t renders;    /* render() nodes the main walk met, which the preview
-                          draws each as one mesh (enter_render) */
-    size_t cgal_drops; /* meshes that are not closed (polyhedra, imports,
-                          extrusions), which the main walk left out of a
-                          CGAL operation in faithful mode and OpenSCAD's
-                          preview draws as they are */
-    uint32_t leaves;   /* leaves added so far: the next one's object_id */
+    size_t flat_parts;   /* 2D objects the main walk left out of a 3D model, or
+                            1 for a 2D model, which the preview draws as slabs */
+    size_t renders;      /* render() nodes the main walk met, which the preview
+                            draws each as one mesh (enter_render) */
+    int background_root; /* the root ('!') carries '%': the main walk draws
+                            it, as OpenSCAD's render does, the preview as a
+                            background part only */
+    size_t cgal_drops;   /* meshes that are not closed (polyhedra, imports,
+                            extrusions), which the main walk left out of a
+                            CGAL operation in faithful mode and OpenSCAD's
+                            preview draws as they are */
+    uint32_t leaves;     /* leaves added so far: the next one's object_id */
     /* the preview's walk: the object ids of the leaves subtracted inside a
        render() (shading.preview_swapped) */
     uint32_t *swapped;
@@ -1171,7 +1174,11 @@ static void inherit(const builder *b, const model_node *n, const frame *parent, 
         f->highlighted = 1;
     if (parent->node && parent->op == CSG_DIFFERENCE && parent->node->first_child != n)
         f->negative = !parent->negative;
-    if ((n->modifiers & MODEL_MOD_BACKGROUND) && n != b->part)
+    /* '%' leaves n out of its parent's result; the root ('!') has no
+     * parent in OpenSCAD's render, which draws it all the same (its
+     * preview draws it as a background part) */
+    if ((n->modifiers & MODEL_MOD_BACKGROUND) && n != b->part &&
+        !(n->is_root && !b->preview))
         f->emit = 0;
     f->counted = f->emit;
     f->children_lost = parent->children_lost && n->child_count == 1 && !n->is_root;
@@ -1295,6 +1302,7 @@ static sc_status visit(builder *b, const model_node *n, int *opened)
     const frame *parent = &b->frames[b->frame_count - 1];
     if ((st = mark_part(b, n, parent)) != SC_OK)
         return st;
+    b->background_root |= n->is_root && (n->modifiers & MODEL_MOD_BACKGROUND);
     if (plain_leaf(b, n, parent))
         return visit_leaf(b, n, parent);
     int flat = build_dim(n, 0) == 2 && (kind != MODEL_PROJECTION || build_projects(n));
@@ -1639,7 +1647,8 @@ static sc_status build_parts(builder *b)
  * cannot be built, a warning says so and the preview shows the solid. */
 static sc_status build_preview_solid(builder *b)
 {
-    if (!b->drops && !b->flat_parts && !b->renders && !b->cgal_drops)
+    if (!b->drops && !b->flat_parts && !b->renders && !b->cgal_drops &&
+        !b->background_root)
         return SC_OK;
     sc_error error;
     builder sub;
