@@ -174,6 +174,18 @@ grep -q "^WARNING: .* in file lib/sub/x.scad, line 2$" os_err.txt ||
 [ "$(cat err.txt)" = "../lib/sub/x.scad:2:1: warning: Ignoring radius variable 'r' as diameter 'd' is defined too.
 ../lib/sub/y.scad:1:1: warning: Ignoring radius variable 'r' as diameter 'd' is defined too." ] ||
     fail "info ../uselib.scad: got '$(cat err.txt)'"
+# OpenSCAD names a use'd library by its argument warnings relative to the
+# library's own folder ("w.scad"): the library the source reaches, not a
+# file of that name beside the source.
+printf 'module lw() { cube(1, 2, 3); }\n' >lib/sub/w.scad
+printf 'cube(5);\n' >w.scad
+printf 'use <lib/sub/w.scad>\nlw();\n' >usew.scad
+openscad -o usew_os.csg usew.scad >/dev/null 2>os_err.txt || fail "openscad -o usew_os.csg: exit $?"
+grep -q "^WARNING: Too many unnamed arguments supplied in file w.scad, line 1$" os_err.txt ||
+    fail "OpenSCAD's warnings of usew.scad: $(cat os_err.txt)"
+"$bin" info usew.scad >/dev/null 2>err.txt || fail "info usew.scad failed"
+[ "$(cat err.txt)" = "lib/sub/w.scad:1:1: warning: Too many unnamed arguments supplied" ] ||
+    fail "info usew.scad: got '$(cat err.txt)'"
 
 # Warnings at the converted text are put on the source, as its errors are.
 printf 'cube(1);\nscale([1, 1, 0]) cube(1);\n' >flat.scad

@@ -186,7 +186,13 @@ typedef struct source_lines {
     char counted[SC_ERROR_FILE_MAX];
     long counted_newlines, counted_last_line;
     int counted_ok;
+    /* the files the source reaches through include and use, as
+     * scan_file names them (malloc'd; libraries_read once) */
+    char **libraries;
+    int library_count, libraries_read;
 } source_lines;
+
+static void libraries_read(source_lines *at);
 
 /* The line breaks of the file at path, and its last line (at least 1);
  * 0 when it cannot be read. */
@@ -243,14 +249,33 @@ static void place_past_end(long newlines, long last_line, sc_error *error)
 static void place_other(source_lines *at, sc_error *error)
 {
     const char *slash = strrchr(at->path, '/');
-    if (slash && error->file[0] != '/' && strncmp(error->message, "Parser error", 12)) {
+    if (error->file[0] != '/' && strncmp(error->message, "Parser error", 12)) {
         char name[SC_ERROR_FILE_MAX];
         snprintf(name, sizeof name, "%s", error->file);
-        if ((size_t)snprintf(error->file, sizeof error->file, "%.*s/%s",
-                             (int)(slash - at->path), at->path,
-                             name) >= sizeof error->file)
+        if (slash && (size_t)snprintf(error->file, sizeof error->file, "%.*s/%s",
+                                      (int)(slash - at->path), at->path,
+                                      name) >= sizeof error->file)
             snprintf(error->file, sizeof error->file, "%s",
                      name); /* too long: as given */
+        /* OpenSCAD names a use'd library's lines relative to the library's
+         * own folder ("w2.scad" for lib/sub/w2.scad): where the name from
+         * the source's folder is no file the source reaches, the one
+         * library that ends in it */
+        libraries_read(at);
+        int reached = 0, ending = 0;
+        const char *only = NULL;
+        size_t n = strlen(name);
+        for (int k = 0; k < at->library_count; k++) {
+            const char *lib = at->libraries[k];
+            size_t m = strlen(lib);
+            reached |= !strcmp(lib, error->file);
+            if (m > n && lib[m - n - 1] == '/' && !strcmp(lib + m - n, name)) {
+                ending++;
+                only = lib;
+            }
+        }
+        if (!reached && ending == 1)
+            snprintf(error->file, sizeof error->file, "%s", only);
     }
     if (strcmp(at->counted, error->file) != 0) { /* a library's warnings come in a row */
         snprintf(at->counted, sizeof at->counted, "%s", error->file);
@@ -547,6 +572,31 @@ static void scan_uses(const char *source, void (*depend)(void *user, const char 
         free(sc.seen[k]);
 }
 
+static void depend_nothing(void *user, const char *file)
+{
+    (void)user;
+    (void)file;
+}
+
+/* The .scad files the source reaches, into at->libraries (once). */
+static void libraries_read(source_lines *at)
+{
+    if (at->libraries_read)
+        return;
+    at->libraries_read = 1;
+    scan sc;
+    memset(&sc, 0, sizeof sc);
+    sc.depend = depend_nothing;
+    scan_file(&sc, at->path, 0);
+    at->libraries = malloc((size_t)(sc.count ? sc.count : 1) * sizeof *at->libraries);
+    for (int k = 0; k < sc.count; k++) {
+        if (at->libraries)
+            at->libraries[at->library_count++] = sc.seen[k];
+        else
+            free(sc.seen[k]);
+    }
+}
+
 /* Calls depend for each prerequisite in the make-style dependency file at
  * path: the words after the first unescaped ':' (a backslash before a space
  * makes the space part of a name, a backslash before a newline continues the
@@ -804,9 +854,12 @@ static sc_status convert(const char *path, const double *time,
             error->status = st = SC_ERR_CANCELLED;
             snprintf(error->message, sizeof error->message, "interrupted");
         } else {
-            source_lines at = {source, path, 0, 1, {{0}}, 0, "", 0, 0, 0};
+            source_lines at = {source, path, 0, 1, {{0}}, 0, "", 0, 0, 0, NULL, 0, 0};
             st = openscad_log(log, &at, !WIFEXITED(status) || WEXITSTATUS(status) != 0,
                               strict, error);
+            for (int k = 0; k < at.library_count; k++)
+                free(at.libraries[k]);
+            free(at.libraries);
         }
     }
     if (st == SC_OK && depend)
