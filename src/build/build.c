@@ -148,6 +148,7 @@ typedef struct builder {
                             1 for a 2D model, which the preview draws as slabs */
     size_t renders;      /* render() nodes the main walk met, which the preview
                             draws each as one mesh (enter_render) */
+    int root_warned;     /* a second '!' was warned of */
     int background_root; /* the root ('!') carries '%': the main walk draws
                             it, as OpenSCAD's render does, the preview as a
                             background part only */
@@ -1294,11 +1295,12 @@ static sc_status visit(builder *b, const model_node *n, int *opened)
         *b->error = *n->u.error;
         return n->u.error->status;
     }
-    if ((n->modifiers & MODEL_MOD_ROOT) && !n->is_root &&
-        (st = warn(b, &n->loc,
-                   "root modifier '!' is used more than once; only the first is used")) !=
-            SC_OK)
-        return st;
+    /* OpenSCAD's warning, once, at the second '!' (find_root_tag) */
+    if ((n->modifiers & MODEL_MOD_ROOT) && !n->is_root && !b->root_warned) {
+        b->root_warned = 1;
+        if ((st = warn(b, &n->loc, "More than one Root Modifier (!)")) != SC_OK)
+            return st;
+    }
     const frame *parent = &b->frames[b->frame_count - 1];
     if ((st = mark_part(b, n, parent)) != SC_OK)
         return st;
