@@ -296,6 +296,38 @@ holds(j["only_a"], 0)
 holds(j["only_b"], 0)
 assert j["symmetric_difference"]["value"] <= 1e-6 * 50 and j["same"], j' prism.json
 
+# A mesh written to 6 significant digits (as OpenSCAD's ASCII STL): a
+# plate 0.1000005 thick as 0.100001. The volumes differ by 5e-6 of the
+# volume, past the tolerance, and compare says so; rounding to 6 digits
+# moves a point by up to 5e-6 on each axis (at 1), which accounts for it,
+# and a note says that. The plate written with 17 digits has no note.
+printf 'cube(size = [1, 1, 0.1000005], center = false);\n' >third.csg
+python3 - <<'PY'
+corners = [(x, y, z) for x in (0, 1) for y in (0, 1) for z in (0, 1)]
+quads = [(0, 1, 3, 2), (4, 6, 7, 5), (0, 4, 5, 1), (2, 3, 7, 6), (0, 2, 6, 4), (1, 5, 7, 3)]
+for name, top in (("third6.stl", "0.100001"), ("third17.stl", repr(0.1000005))):
+    with open(name, "w") as f:
+        f.write("solid plate\n")
+        for q in quads:
+            for t in ((q[0], q[1], q[2]), (q[0], q[2], q[3])):
+                f.write(" facet normal 0 0 0\n  outer loop\n")
+                for i in t:
+                    x, y, z = corners[i]
+                    f.write("   vertex %d %d %s\n" % (x, y, top if z else "0"))
+                f.write("  endloop\n endfacet\n")
+        f.write("endsolid plate\n")
+PY
+run 1 third.json compare third.csg third6.stl --json -q
+check
+grep -q "^spancast: note: 'third6.stl' gives its coordinates to 6 significant digits: its surface may lie up to 8.7e-06 from the one it was written from" err.txt ||
+    fail "compare third.csg third6.stl: no note of the rounding: $(cat err.txt)"
+pycheck '
+assert not j["same"], j
+assert j["rounding"] >= j["symmetric_difference"]["value"] > 0, j' third.json
+run 0 third17.txt compare third.csg third17.stl -q
+check
+[ -s err.txt ] && fail "compare third.csg third17.stl: $(cat err.txt)"
+
 # The hole moved 0.1 mm: the symmetric difference is twice the circle less
 # the lens two circles of radius 2 with centres 0.1 apart share, over the
 # height 10.

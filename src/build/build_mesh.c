@@ -3236,6 +3236,82 @@ static const char *read_off(const char *text, size_t size, mesh_file *m, int *oo
     return finish_faces(m) ? NULL : (*oom = 1, "out of memory");
 }
 
+/* The fewest significant digits (1 to 17) that give back x, a finite
+ * double. */
+static int shortest_digits(double x)
+{
+    char buf[40];
+    for (int d = 1; d < 17; d++) {
+        snprintf(buf, sizeof buf, "%.*g", d, x);
+        if (strtod(buf, NULL) == x)
+            return d;
+    }
+    return 17;
+}
+
+int build_mesh_rounding(const char *path, build_mesh_rounding_info *out)
+{
+    memset(out, 0, sizeof *out);
+    size_t size;
+    const char *why;
+    char *text = file_read(path, BUILD_MAX_MESH_FILE, &size, &why);
+    if (!text)
+        return 0;
+    size_t n = strlen(path);
+    int off = n >= 4 && path[n - 4] == '.' &&
+              tolower((unsigned char)path[n - 3]) == 'o' &&
+              tolower((unsigned char)path[n - 2]) == 'f' &&
+              tolower((unsigned char)path[n - 1]) == 'f';
+    int binary = !off && stl_binary_count((const unsigned char *)text, size) >= 0;
+    mesh_file m;
+    memset(&m, 0, sizeof m);
+    int oom = 0;
+    const char *bad =
+        off ? read_off(text, size, &m, &oom) : read_stl(text, size, &m, &oom);
+    free(text);
+    if (bad || m.point_count == 0) {
+        mesh_file_free(&m);
+        return 0;
+    }
+    /* the digits written: the most any coordinate needs (a sample of the
+     * first 2^16 points), 9 at most for float's (binary STL) */
+    int digits = 0;
+    for (uint32_t i = 0; i < m.point_count && i < 65536u; i++) {
+        const double *c = &m.points[i].x;
+        for (int k = 0; k < 3; k++)
+            if (c[k] != 0 && digits < 17) {
+                int d = shortest_digits(c[k]);
+                digits = d > digits ? d : digits;
+            }
+    }
+    double offset = 0;
+    if (binary) {
+        for (uint32_t i = 0; i < m.point_count; i++) /* half a float's ulp */
+            offset = fmax(offset, 0x1p-24 * v3_max_abs(m.points[i]));
+    } else if (digits >= 6 && digits < 15) {
+        for (uint32_t i = 0; i < m.point_count; i++) {
+            double a = v3_max_abs(m.points[i]);
+            if (a > 0) /* half a unit in the last digit written */
+                offset = fmax(offset, 0.5 * pow(10, floor(log10(a)) - digits + 1));
+        }
+    }
+    double area = 0;
+    for (uint32_t f = 0; f < m.face_count; f++) {
+        const uint32_t *v = &m.indices[m.face_start[f]];
+        uint32_t k = m.face_start[f + 1] - m.face_start[f];
+        for (uint32_t j = 1; j + 1 < k; j++)
+            area += 0.5 * v3_length(v3_cross(v3_sub(m.points[v[j]], m.points[v[0]]),
+                                             v3_sub(m.points[v[j + 1]], m.points[v[0]])));
+    }
+    mesh_file_free(&m);
+    if (!(offset > 0))
+        return 0;
+    out->digits = binary ? 0 : digits;
+    out->offset = offset * sqrt(3.0); /* each of three coordinates */
+    out->volume = area * out->offset;
+    return 1;
+}
+
 /* Whether CGAL's OFF reader, which OpenSCAD 2021.01's import() of an OFF
  * file runs, rolls the whole file back: its polyhedron builder, given the
  * faces by the file's point numbers and without a test first, fails on a

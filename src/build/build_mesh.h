@@ -40,6 +40,21 @@ sc_status build_mesh_soup(const build_ctx *c, const sc_location *loc, const char
                           const vec3 *corners, uint32_t tri_count, prim *out,
                           const char **empty);
 
+/* How far the numbers of the mesh file at path (STL or OFF) may lie from
+ * the surface they were written from: a binary STL's floats, half a
+ * float's unit in the last place; a text file whose coordinates need 6 to
+ * 14 significant digits, half a unit in the last digit of that many (a
+ * file of fewer digits may be exact, and one of more is taken as exact).
+ * offset bounds how far a point moves, volume (its surface area times
+ * offset) the volume between the surface as written and as meant. 0 when
+ * the file cannot be read or is taken as exact. */
+typedef struct build_mesh_rounding_info {
+    int digits; /* significant digits of a text file; 0 for binary STL */
+    double offset, volume;
+} build_mesh_rounding_info;
+
+int build_mesh_rounding(const char *path, build_mesh_rounding_info *out);
+
 /* The faces of OpenSCAD 2021.01's own mesh on a builder's points, where the
  * builder mends it into another (a linear_extrude scaled to 0 at its top,
  * whose collapsed walls it splits): what faithful mode checks is closed

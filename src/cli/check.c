@@ -40,6 +40,7 @@
 #include <time.h>
 #include <unistd.h>
 
+#include "build/build_mesh.h" /* a mesh file's rounding */
 #include "cli/cli.h"
 #include "cli/dist.h"
 #include "cli/scad.h"
@@ -643,6 +644,18 @@ static int run_compare(check_args *a)
             hi[i] = hi2[i];
     double larger = fmax(fabs(c.volume_a.value), fabs(c.volume_b.value));
     int different = c.difference.value > a->options.tolerance * larger;
+    /* Where the volumes alone differ, how much of it a mesh file's
+     * rounding can account for (OpenSCAD's ASCII STL writes 6
+     * significant digits): said when it can account for all of it. */
+    build_mesh_rounding_info rounding[2];
+    int rounded[2] = {0, 0};
+    double rounding_volume = 0;
+    for (int k = 0; k < 2 && different; k++) {
+        rounded[k] =
+            scad_is_mesh(a->inputs[k]) && build_mesh_rounding(a->inputs[k], &rounding[k]);
+        rounding_volume += rounded[k] ? rounding[k].volume : 0;
+    }
+    int explained = different && rounding_volume >= c.difference.value;
     view_result results[sizeof views / sizeof views[0]];
     int status = 0;
     /* the views: rank 0's alone (under mpirun), which prints them */
@@ -677,7 +690,8 @@ static int run_compare(check_args *a)
                    "%ld, \"edge_mismatch\": %ld}",
                    k ? "," : "", views[k].name, results[k].mask_mismatch,
                    results[k].depth_mismatch, results[k].edge_mismatch);
-        printf("], \"same\": %s}\n", different ? "false" : "true");
+        printf("], \"rounding\": %.17g, \"same\": %s}\n", rounding_volume,
+               different ? "false" : "true");
     } else {
         text_estimate("volume A", c.volume_a);
         text_estimate("volume B", c.volume_b);
@@ -694,6 +708,23 @@ static int run_compare(check_args *a)
             printf("  %-9s %ld %ld %ld\n", views[k].name, results[k].mask_mismatch,
                    results[k].depth_mismatch, results[k].edge_mismatch);
         puts(different ? "different" : "same");
+    }
+    for (int k = 0; k < 2 && explained; k++) {
+        if (!rounded[k])
+            continue;
+        char written[64];
+        if (rounding[k].digits)
+            snprintf(written, sizeof written, "to %d significant digits",
+                     rounding[k].digits);
+        else
+            snprintf(written, sizeof written, "as floats (binary STL)");
+        fprintf(
+            stderr,
+            "spancast: note: '%s' gives its coordinates %s: its surface may lie up to "
+            "%.2g from the one it was written from, which can account for a "
+            "difference of up to %.3g (%.3g of the larger volume)\n",
+            a->inputs[k], written, rounding[k].offset, rounding[k].volume,
+            larger > 0 ? rounding[k].volume / larger : 0);
     }
     if (!a->quiet)
         fprintf(stderr, "spancast: compared in %.2f s (%llu lines)\n", seconds_now() - t0,
