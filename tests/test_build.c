@@ -835,6 +835,13 @@ static void test_unsupported(void **state)
     sc_scene_release(s);
     check_error_strict("Cube();", SC_ERR_SEMANTIC,
                        "m.csg:1:1: error: Ignoring unknown module 'Cube'");
+    /* polyhedron's old name for its faces, with OpenSCAD's note */
+    s = load_warned("polyhedron(points = [[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1]], "
+                    "triangles = [[0, 1, 2], [0, 3, 1], [0, 2, 3], [1, 3, 2]]);",
+                    "m.csg:1:1: polyhedron(triangles=[]) will be removed in future "
+                    "releases. Use polyhedron(faces=[]) instead.");
+    assert_int_equal(scene_tree(s)->leaf_count, 1);
+    sc_scene_release(s);
 }
 
 static void test_leaf_children(void **state)
@@ -964,13 +971,16 @@ static void test_polyhedron_convex(void **state)
     sc_scene_release(s);
 
     /* Triangles: coplanar pairs merge into one plane; the older
-     * `triangles` name is read too; unused points are fine. */
-    s = load(
+     * `triangles` name is read too (with OpenSCAD's note); unused points
+     * are fine. */
+    s = load_warned(
         "polyhedron(points = [[0, 0, 0], [2, 0, 0], [2, 2, 0], [0, 2, 0], [0, 0, 2], "
         "[2, 0, 2], [2, 2, 2], [0, 2, 2], [50, 50, 50]], triangles = [[0, 1, 2], [0, 2, "
         "3], [4, 5, 1], [4, 1, 0], [7, 6, 5], [7, 5, 4], [5, 6, 2], [5, 2, 1], [6, 7, "
         "3], "
-        "[6, 3, 2], [7, 4, 0], [7, 0, 3]]);");
+        "[6, 3, 2], [7, 4, 0], [7, 0, 3]]);",
+        "m.csg:1:1: polyhedron(triangles=[]) will be removed in future releases. Use "
+        "polyhedron(faces=[]) instead.");
     assert_int_equal(only_leaf(s)->prim.u.convex.count, 6);
     assert_true(inside(s, 1, 1, 1));
     double lo[3], hi[3];
@@ -1057,8 +1067,12 @@ static void test_polyhedron_errors(void **state)
     s = test_check_warnings("m.csg", "polyhedron(points = [[0, 0, 0]], faces = [0]);", 0,
                             empty_face, 2);
     sc_scene_release(s);
-    s = load_warned("polyhedron(points = [[0, 0, 0]], triangles = 7);",
-                    "m.csg:1:1: polyhedron without faces is empty");
+    const char *const old_name[] = {
+        "m.csg:1:1: polyhedron(triangles=[]) will be removed in future releases. Use "
+        "polyhedron(faces=[]) instead.",
+        "m.csg:1:1: polyhedron without faces is empty"};
+    s = test_check_warnings("m.csg", "polyhedron(points = [[0, 0, 0]], triangles = 7);",
+                            0, old_name, 2);
     sc_scene_release(s);
 }
 

@@ -438,10 +438,35 @@ static sc_status check_origin(const char *file, const parse_node *n, model_notes
 }
 
 /* The warnings after those of the arguments' names. */
+/* polyhedron(triangles = ...) without faces: OpenSCAD 2021.01 reads the
+ * faces from it, with its deprecation note (at no position; here at the
+ * node). */
+static sc_status check_triangles(const char *file, const parse_node *n,
+                                 model_notes *notes, sc_error *error)
+{
+    int faces = 0, triangles = 0, unnamed = 0;
+    for (uint32_t i = 0; i < n->arg_count; i++) {
+        const char *name = n->args[i].name;
+        unnamed += !name;
+        faces |= name && !strcmp(name, "faces");
+        triangles |= name && !strcmp(name, "triangles");
+    }
+    if (!triangles || faces || unnamed >= 2)
+        return SC_OK;
+    return note_at(notes, error, file, n->loc,
+                   "polyhedron(triangles=[]) will be removed in future releases. Use "
+                   "polyhedron(faces=[]) instead.");
+}
+
 static sc_status check_values(const char *file, const parse_node *n,
                               const model_params *p, scanned *found, model_notes *notes,
                               sc_error *error)
 {
+    if (!strcmp(p->name, "polyhedron")) {
+        sc_status st = check_triangles(file, n, notes, error);
+        if (st != SC_OK)
+            return st;
+    }
     if (p->primitive)
         return check_primitive(file, n, p, found, notes, error);
     if (p->color)
