@@ -210,13 +210,17 @@ range_case range_last '[[2, 0], [3, 0], [2, 1], [10, 10], [1e14, 10], [10, 11]]'
 range_case range_first '[[2, 0], [3, 0], [2, 1], [10, 10], [1e14, 10], [10, 11]]' '[[3, 4, 5], [0, 1, 2]]'
 range_case range_far '[[0, 0], [-1e20, 0], [0, 1]]' undef
 range_case range_repeat '[[0, 0], [0, 0], [7.1e13, 0]]' undef
+# a nan passes OpenSCAD's conversion of the point (an inf does not) and
+# fails the clipper's range check in the same way (openscad prints the
+# same warning for polygon(points = [[2, 0], [3, 0], [0 / 0, 1]]))
+range_case range_nan '[[2, 0], [3, 0], [2, 1], [10, 10], [nan, 10], [10, 11]]' '[[0, 1, 2], [3, 4, 5]]'
 printf '%s\n' "$unit" >range_unit_ref.csg
 printf '%s polygon(points = [[2, 0], [3, 0], [2, 1]], paths = undef, convexity = 1);\n%s\n' "$ext1" "$unit" >range_last_ref.csg
 range_said='warning: Range check failed for polygon. skipping (the outline and those after it, as OpenSCAD leaves them out; --strict makes it an error)'
 for mode in "" --faithful; do
     # shellcheck disable=SC2086
     {
-        for f in range_one range_last range_first range_far range_repeat; do
+        for f in range_one range_last range_first range_far range_repeat range_nan; do
             warns $f.csg "$f.csg:1:28: $range_said" $mode
         done
         refuses range_one.csg "range_one.csg:1:28: error: polygon: coordinates out of the clipper's range" $mode
@@ -225,6 +229,7 @@ for mode in "" --faithful; do
         same range_far.csg range_unit_ref.csg $mode
         same range_repeat.csg range_unit_ref.csg $mode
         same range_last.csg range_last_ref.csg $mode
+        same range_nan.csg range_last_ref.csg $mode
     }
 done
 # A square past the range is drawn where OpenSCAD draws it without its

@@ -105,9 +105,9 @@ static sc_status read_paths(model_lowerer *l, const parse_value *paths, model_po
 }
 
 /* Point v of a polygon as OpenSCAD 2021.01 converts it (Value::getVec2,
- * then not infinite; a nan, which spancast cannot draw, is no point
- * either): 1 with x, y in xy, else 0 (*not_finite: numbers, one not
- * finite). */
+ * then not infinite): 1 with x, y in xy (a nan among them, which the
+ * clipper's range check then refuses: polygon_range), else 0
+ * (*not_finite: numbers, one infinite). */
 static int polygon_point(const parse_value *v, double xy[2], int *not_finite)
 {
     *not_finite = 0;
@@ -116,7 +116,10 @@ static int polygon_point(const parse_value *v, double xy[2], int *not_finite)
         v->u.vector.items[1].kind != PARSE_NUMBER)
         return 0;
     double x = v->u.vector.items[0].u.number, y = v->u.vector.items[1].u.number;
-    *not_finite = !isfinite(x) || !isfinite(y);
+    /* an infinite coordinate fails OpenSCAD's conversion (getVec2 and its
+     * isinf test); a nan passes it, and the clipper refuses its outline
+     * (polygon_range) */
+    *not_finite = isinf(x) || isinf(y);
     xy[0] = x;
     xy[1] = y;
     return !*not_finite;
