@@ -262,13 +262,14 @@ static void place_other(source_lines *at, sc_error *error)
          * the source's folder is no file the source reaches, the one
          * library that ends in it */
         libraries_read(at);
-        int reached = 0, ending = 0;
+        char real[PATH_MAX], lib_real[PATH_MAX];
+        int reached = 0, ending = 0, here = realpath(error->file, real) != NULL;
         const char *only = NULL;
         size_t n = strlen(name);
         for (int k = 0; k < at->library_count; k++) {
             const char *lib = at->libraries[k];
             size_t m = strlen(lib);
-            reached |= !strcmp(lib, error->file);
+            reached |= here && realpath(lib, lib_real) && !strcmp(real, lib_real);
             if (m > n && lib[m - n - 1] == '/' && !strcmp(lib + m - n, name)) {
                 ending++;
                 only = lib;
