@@ -606,5 +606,36 @@ for m in mink-fail mink-fail-third mink-fail-hull; do
         fail "$m.csg is not openscad's solid: $(tail -n 9 out.txt)"
 done
 
+# OpenSCAD snaps a mesh's points to its 2^-20 grid only where it makes a
+# Nef polyhedron of it: an STL cube of side 0.1 alone keeps its corners
+# (openscad's export of it writes 0.1), in a difference they snap to
+# 0.0999994 (the faithful bounds say which).
+python3 - <<'PY'
+corners = [(x, y, z) for x in (0, 0.1) for y in (0, 0.1) for z in (0, 0.1)]
+quads = [(0, 1, 3, 2), (4, 6, 7, 5), (0, 4, 5, 1), (2, 3, 7, 6), (0, 2, 6, 4), (1, 5, 7, 3)]
+with open("tenth.stl", "w") as f:
+    f.write("solid tenth\n")
+    for q in quads:
+        for t in ((q[0], q[1], q[2]), (q[0], q[2], q[3])):
+            f.write(" facet normal 0 0 0\n  outer loop\n")
+            for i in t:
+                f.write("   vertex %r %r %r\n" % corners[i])
+            f.write("  endloop\n endfacet\n")
+    f.write("endsolid tenth\n")
+PY
+tenth='import(file = "tenth.stl", layer = "", origin = [0, 0], scale = 1, convexity = 1, $fn = 0, $fa = 12, $fs = 2, timestamp = 0);'
+printf '%s\n' "$tenth" >tenth.csg
+printf 'difference() {\n\t%s\n\t%s\n}\n' "$tenth" "$far" >tenth-cut.csg
+for m in tenth:0.1 tenth-cut:0.0999994; do
+    check
+    got=$("$bin" info ${m%%:*}.csg --faithful 2>&1 | sed -n 's/^bounds: *//p')
+    [ "$got" = "[0, 0, 0] to [${m#*:}, ${m#*:}, ${m#*:}]" ] || fail "${m%%:*}.csg (faithful): bounds $got"
+done
+if command -v openscad >/dev/null; then
+    check
+    openscad -o "$PWD/tenth_os.stl" tenth.csg >/dev/null 2>&1
+    grep -q 'vertex 0.1 ' tenth_os.stl || fail "openscad snaps tenth.stl alone: $(grep -m1 vertex tenth_os.stl)"
+fi
+
 echo "$checks checks, $fails failed"
 [ "$fails" = 0 ]

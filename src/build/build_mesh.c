@@ -2156,11 +2156,12 @@ void build_mesh_faces_free(build_mesh_faces *f)
     memset(f, 0, sizeof *f);
 }
 
-/* Where the merged point of a point p goes: p itself in exact mode, and
- * in faithful mode (snap_float) OpenSCAD's snapped point, its cell's
- * corner as float; a point past 2^40 (a million million), whose cell does
- * not fit an integer comfortably, stays as it is. k gets the cell; 0 is
- * returned for a point that is not gridded. */
+/* Where the merged point of a point p goes: p itself in exact mode and
+ * where OpenSCAD draws the mesh as it is (no CGAL operation takes it), and
+ * where faithful mode hands it to CGAL (snap_float) OpenSCAD's snapped
+ * point, its cell's corner as float; a point past 2^40 (a million million), whose cell
+ * does not fit an integer comfortably, stays as it is. k gets the cell; 0 is returned for
+ * a point that is not gridded. */
 static int grid_place(vec3 p, int snap_float, int64_t k[3], vec3 *q)
 {
     const double cell = 1.0 / 1048576.0; /* OpenSCAD's GRID_FINE, 2^-20 */
@@ -2262,7 +2263,7 @@ sc_status build_mesh_merge(const build_ctx *c, const sc_location *loc, int rever
         for (uint32_t j = s; j < e; j++) {
             uint32_t i = indices[reversed ? e - 1 - (j - s) : j];
             if (map[i] == UINT32_MAX)
-                grid_point(&g, f, points, i, c->faithful, &map[i]);
+                grid_point(&g, f, points, i, c->faithful && !c->drawn_as_is, &map[i]);
         }
     }
     uint32_t *seen = calloc(f->point_count ? f->point_count : 1, sizeof *seen);
@@ -3462,7 +3463,7 @@ static sc_status import_solid(const build_ctx *c, const sc_location *loc,
     const char *empty = NULL;
     prim p;
     sc_status st = SC_OK;
-    int mode = c->faithful != 0;
+    int mode = c->faithful && !c->drawn_as_is; /* snapped, as build_mesh_merge */
     if (!merged || !merged->faces.face_start) {
         st = build_mesh_merge(&oc, loc, 0, points, point_count, indices, face_start,
                               face_count, &f);

@@ -112,9 +112,11 @@ typedef struct build_mesh_faces {
  * neighbouring cell (docs/meshes.md); faces lose repeated points and
  * null ears, and faces left with fewer than 3 points go. reversed: the
  * faces are a polyhedron's, which OpenSCAD reads back to front (the order
- * points are met in). In faithful mode (c->faithful) a point becomes
- * OpenSCAD's: its cell's corner, in float; else it keeps the coordinates
- * of the first point of its cell. On success *f owns its arrays. */
+ * points are met in). In faithful mode where OpenSCAD hands the mesh to
+ * CGAL (c->faithful, not c->drawn_as_is) a point becomes OpenSCAD's: its
+ * cell's corner, in float; else it keeps the coordinates of the first
+ * point of its cell (OpenSCAD snaps only where it makes a Nef
+ * polyhedron). On success *f owns its arrays. */
 sc_status build_mesh_merge(const build_ctx *c, const sc_location *loc, int reversed,
                            const vec3 *points, uint32_t point_count,
                            const uint32_t *indices, const uint32_t *face_start,
