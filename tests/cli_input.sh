@@ -215,7 +215,7 @@ check
 "$bin" render bad.stl -o bad.png -q 2>err.txt
 rc=$?
 [ "$rc" = 1 ] || fail "bad.stl: exit $rc (want 1)"
-want="bad.stl: error: import: '$work/bad.stl' is not a valid STL file (a 'vertex' without three numbers)"
+want="bad.stl:6:1: error: import: '$work/bad.stl' is not a valid STL file (line 6: can't parse vertex line 'vertex x 1 0')"
 [ "$(cat err.txt)" = "$want" ] || fail "bad.stl: got '$(cat err.txt)'"
 [ -e bad.png ] && fail "bad.stl: an image was written"
 printf 'OFF\n3 1 0\n0 0 0\n1 0 0\n' >bad.off

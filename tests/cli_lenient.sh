@@ -284,14 +284,51 @@ for case in "import.csg:2:15: error: Can't open import file 'missing.stl'" \
         [ -e strict.png ] && fail "$model --strict $mode: an image was written"
     done
 done
-# a file that opens and is not a mesh stays an error (as OpenSCAD's parse
-# error)
-printf 'solid x\nfacet normal 0 0 1\nouter loop\nvertex 0 0\n' >bad.stl
-printf 'import(file = "bad.stl");\n' >bad_import.csg
-check
-"$bin" render bad_import.csg -o bad.png -q 2>err.txt && fail "a bad STL rendered"
-grep -q "^bad_import.csg:1:15: error: import: 'bad.stl' is not a valid STL file" err.txt ||
-    fail "bad STL: $(cat err.txt)"
+# A file with a line OpenSCAD 2021.01's STL reader cannot parse, or a
+# vertex line after a triangle's third, or an OFF file CGAL's reader stops
+# in: OpenSCAD logs its error, imports nothing, and renders the rest; as
+# the model itself it is an error at the file's line. A line with two
+# words after "vertex" it passes over, and the triangle with it.
+printf 'solid x\nfacet normal 0 0 1\nouter loop\nvertex 0 0\n' >faceless.stl
+printf 'solid x\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 0 1 0x\n' >bad.stl
+printf 'solid x\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 0 1 0\nvertex 0 0 1\n' >extra.stl
+printf 'OFF\n4 4 6\n0 0 0\n1 0 0\n0 1 0\n' >short.off
+printf 'cube(size = [1, 2, 3]);\n' >rest_ref.csg
+for mesh in faceless.stl bad.stl extra.stl short.off; do
+    printf 'import(file = "%s");\ncube(size = [1, 2, 3]);\n' $mesh >import_$mesh.csg
+    case $mesh in
+    faceless.stl) want="import_$mesh.csg:1:1: warning: import without faces is empty" ;;
+    bad.stl) why="line 6: can't parse vertex line 'vertex 0 1 0x'" ;;
+    extra.stl) why="line 7: extra vertex line 'vertex 0 0 1'" ;;
+    short.off) why="fewer points than its header says, or a bad coordinate" ;;
+    esac
+    kind=STL
+    [ $mesh = short.off ] && kind=OFF
+    [ $mesh = faceless.stl ] ||
+        want="import_$mesh.csg:1:15: warning: import: '$mesh' is not a valid $kind file ($why); the import is empty, as OpenSCAD leaves it out (--strict makes it an error)"
+    for mode in "" --faithful; do
+        warns import_$mesh.csg "$want" $mode
+        same import_$mesh.csg rest_ref.csg $mode
+        [ $mesh = faceless.stl ] ||
+            refuses import_$mesh.csg "import_$mesh.csg:1:15: error: import: '$mesh' is not a valid $kind file ($why)" $mode
+    done
+    if command -v openscad >/dev/null; then
+        check
+        openscad -o "$PWD/os_$mesh.stl" --export-format binstl import_$mesh.csg >/dev/null 2>&1 ||
+            fail "openscad did not render import_$mesh.csg"
+        same import_$mesh.csg os_$mesh.stl --faithful
+    fi
+    [ $mesh = faceless.stl ] && continue
+    check
+    "$bin" render $mesh -o bad.png -q 2>err.txt && fail "$mesh rendered as the model"
+    case $mesh in
+    *.stl) at="$mesh:$(echo "$why" | sed 's/^line \([0-9]*\):.*/\1/'):1: " ;;
+    *) at="$mesh: " ;;
+    esac
+    [ "$(cat err.txt)" = "${at}error: import: '$PWD/$mesh' is not a valid $kind file ($why)" ] ||
+        fail "$mesh as the model: $(cat err.txt)"
+    [ -e bad.png ] && fail "$mesh as the model: an image was written"
+done
 # a file that is neither binary nor ASCII STL (empty, another format):
 # OpenSCAD 2021.01 imports nothing from it, silently, and renders the
 # rest; as the model itself it is an error
@@ -304,7 +341,7 @@ same empty_import.csg empty_ref.csg
 refuses empty_import.csg "empty_import.csg:1:15: error: import: 'empty.stl' is not a valid STL file ($why)"
 check
 "$bin" render empty.stl -o empty.png -q 2>err.txt && fail "an empty STL model rendered"
-[ "$(cat err.txt)" = "empty.stl: error: 'empty.stl' is not a valid STL file ($why)" ] ||
+[ "$(cat err.txt)" = "empty.stl: error: import: '$PWD/empty.stl' is not a valid STL file ($why)" ] ||
     fail "empty STL model: $(cat err.txt)"
 [ -e empty.png ] && fail "empty STL model: an image was written"
 

@@ -89,12 +89,6 @@ static void check_error_with(const char *name, const char *text, sc_status statu
     assert_string_equal(sc_error_format(&e, buf, sizeof buf), expected);
 }
 
-static void check_error(const char *name, const char *text, sc_status status,
-                        const char *expected)
-{
-    check_error_with(name, text, status, expected, 0, 0);
-}
-
 /* With --strict (sc_load_options.strict): the error a bad mesh gives. */
 static void check_error_strict(const char *name, const char *text, sc_status status,
                                const char *expected, int faithful)
@@ -944,7 +938,9 @@ static void write_notch_files(void)
     }
     p += sprintf(p, "endsolid open\n");
     write_file("open.stl", text, (size_t)(p - text));
-    write_file("bad.stl", "solid x\nvertex 1 2\n", 19);
+    /* a line OpenSCAD's reader cannot parse (its "can't parse vertex
+     * line"), and one it passes over (two words after "vertex") */
+    write_file("bad.stl", "solid x\nouter loop\nvertex 1 2\nvertex 1 2 x\n", 43);
 }
 
 /* tet.off, a tetrahedron; two.amf, two tetrahedra (objects 1 and 2) of 4
@@ -1022,11 +1018,24 @@ static void test_import(void **state)
         "1 face); rendered by the parity rule (--strict makes it an error)",
         1);
     sc_scene_release(s);
+    /* a line OpenSCAD cannot parse: it imports nothing and renders the
+     * rest; with --strict the error */
     snprintf(expected, sizeof expected,
-             "%s:1:8: error: import: '%s/bad.stl' is not a valid STL file (a 'vertex' "
-             "without three numbers)",
+             "import: '%s/bad.stl' is not a valid STL file (line 4: can't parse vertex "
+             "line 'vertex 1 2 x'); the import is empty, as OpenSCAD leaves it out "
+             "(--strict makes it an error)",
+             dir);
+    for (int faithful = 0; faithful < 2; faithful++) {
+        s = load_one_warning(model, "cube(1);\nimport(\"bad.stl\");", faithful, 2, 8,
+                             expected, 1);
+        assert_true(inside(s, 0.5, 0.5, 0.5));
+        sc_scene_release(s);
+    }
+    snprintf(expected, sizeof expected,
+             "%s:1:8: error: import: '%s/bad.stl' is not a valid STL file (line 4: can't "
+             "parse vertex line 'vertex 1 2 x')",
              model, dir);
-    check_error(model, "import(\"bad.stl\");", SC_ERR_SEMANTIC, expected);
+    check_error_strict(model, "import(\"bad.stl\");", SC_ERR_SEMANTIC, expected, 0);
     /* a file that cannot be opened: OpenSCAD's warning, an empty part,
      * the rest rendered */
     snprintf(expected, sizeof expected,

@@ -26,8 +26,6 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <strings.h>
-#include <sys/stat.h>
 
 #include "api/lines.h"
 #include "build/build_mesh.h"
@@ -55,35 +53,6 @@ int mesh_model_is_mesh(const char *path)
            strcmp(ext, "amf") == 0 || strcmp(ext, "3mf") == 0;
 }
 
-/* SC_OK unless path ends in .stl and its start is neither binary nor
- * ASCII STL (an empty file, another format): the import of such a file is
- * left out of a model with a warning, as OpenSCAD leaves it out, but as
- * the model itself it is an error. */
-static sc_status check_stl(const char *path, const char *full, sc_error *error)
-{
-    size_t n = strlen(full);
-    if (n < 4 || strcasecmp(full + n - 4, ".stl") != 0)
-        return SC_OK;
-    FILE *f = fopen(full, "rb");
-    if (!f)
-        return err_set(error, SC_ERR_IO, NULL, "cannot open '%s': %s", path,
-                       strerror(errno));
-    unsigned char head[84];
-    size_t got = fread(head, 1, sizeof head, f);
-    struct stat st;
-    int sized = fstat(fileno(f), &st) == 0;
-    fclose(f);
-    /* a file that shrank since is read as it is later */
-    const char *why = sized && got == (size_t)fmin((double)st.st_size, sizeof head)
-                          ? build_stl_unknown(head, (uint64_t)st.st_size)
-                          : NULL;
-    if (!why)
-        return SC_OK;
-    sc_location loc = {path, 0, 0};
-    return err_set(error, SC_ERR_SEMANTIC, &loc, "'%s' is not a valid STL file (%s)",
-                   path, why);
-}
-
 sc_status mesh_model_text(const char *path, char **text, size_t *length, sc_error *error)
 {
     *text = NULL;
@@ -92,11 +61,6 @@ sc_status mesh_model_text(const char *path, char **text, size_t *length, sc_erro
     if (!full)
         return err_set(error, SC_ERR_IO, NULL, "cannot open '%s': %s", path,
                        strerror(errno));
-    sc_status checked = check_stl(path, full, error);
-    if (checked != SC_OK) {
-        free(full);
-        return checked;
-    }
     size_t n = strlen(full);
     char *t = n < SIZE_MAX / 2 - 32 ? malloc(n * 2 + 32) : NULL;
     if (!t) {
@@ -134,7 +98,7 @@ sc_status sc_scene_load_mesh(const char *path, const sc_load_options *options,
     sc_status st = mesh_model_text(path, &text, &k, error);
     if (st != SC_OK)
         return st;
-    st = sc_scene_load_string(path, text, k, options, scene, error);
+    st = mesh_model_load(path, text, k, options, scene, error);
     free(text);
     if (st != SC_OK)
         mesh_model_unplace(error, path);

@@ -18,6 +18,14 @@ int mesh_model_is_mesh(const char *path);
  * SC_ERR_NOMEM. */
 sc_status mesh_model_text(const char *path, char **text, size_t *length, sc_error *error);
 
+/* sc_scene_load_string of text, mesh_model_text's model of the mesh file
+ * name: a file that an import in a model leaves out with a warning, as
+ * OpenSCAD imports nothing from it (not STL at all, a line OpenSCAD's
+ * reader cannot parse), is the error (BUILD_MESH_MODEL). */
+sc_status mesh_model_load(const char *name, const char *text, size_t length,
+                          const sc_load_options *options, sc_scene **scene,
+                          sc_error *error);
+
 /* Drops the position of e when it points into the one-line model named
  * path (its line 1), which is no place in a file the user has: the error
  * or warning is about the mesh file as a whole. */

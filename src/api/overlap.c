@@ -209,7 +209,8 @@ static sc_status load_text(const char *path, const char *text, size_t length, in
             o->nodes[o->count++] = c;
     int threads = options_threads_begin(lo.threads);
     for (size_t k = 0; k < o->count && st == SC_OK; k++)
-        st = build_object(o, k, options_build_flags(&lo), lo.max_triangles, error);
+        st = build_object(o, k, options_build_flags(&lo) | (mesh ? BUILD_MESH_MODEL : 0),
+                          lo.max_triangles, error);
     options_threads_end(threads);
     if (st) {
         if (mesh)

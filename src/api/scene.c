@@ -53,7 +53,8 @@ static char *copy_string(const char *s)
  * it, before the tree is compiled; the names and strings it points to
  * after the build. */
 static sc_status load(const char *name, const char *text, size_t length, char *owned_text,
-                      const sc_load_options *options, sc_scene **scene, sc_error *error)
+                      const sc_load_options *options, int more_flags, sc_scene **scene,
+                      sc_error *error)
 {
     err_clear(error);
     if (!scene) {
@@ -100,8 +101,8 @@ static sc_status load(const char *name, const char *text, size_t length, char *o
     if (st == SC_OK) {
         int threads = options_threads_begin(own.threads);
         st = build_scene_take(typed, owned_text, owned_text ? length : 0,
-                              options_build_flags(&own), own.max_triangles, &s->tree,
-                              &s->look, &s->warnings, &s->warning_count, error);
+                              options_build_flags(&own) | more_flags, own.max_triangles,
+                              &s->tree, &s->look, &s->warnings, &s->warning_count, error);
         options_threads_end(threads);
     } else {
         free(owned_text);
@@ -130,7 +131,14 @@ sc_status sc_scene_load_string(const char *name, const char *text, size_t length
                                const sc_load_options *options, sc_scene **scene,
                                sc_error *error)
 {
-    return load(name, text, length, NULL, options, scene, error);
+    return load(name, text, length, NULL, options, 0, scene, error);
+}
+
+sc_status mesh_model_load(const char *name, const char *text, size_t length,
+                          const sc_load_options *options, sc_scene **scene,
+                          sc_error *error)
+{
+    return load(name, text, length, NULL, options, BUILD_MESH_MODEL, scene, error);
 }
 
 /* Reads a whole file into a malloc'd buffer. */
@@ -204,7 +212,7 @@ sc_status sc_scene_load(const char *path, const sc_load_options *options,
     sc_status st = read_file(path, &text, &length, error);
     if (st != SC_OK)
         return st;
-    return load(path, text, length, text, options, scene, error);
+    return load(path, text, length, text, options, 0, scene, error);
 }
 
 void sc_scene_release(sc_scene *scene)

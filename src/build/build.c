@@ -174,6 +174,7 @@ typedef struct builder {
     shading *shading; /* lights, materials, camera, background */
     int faithful;     /* OpenSCAD's polyhedra for spheres and cylinders */
     int strict;       /* a mesh OpenSCAD would leave out is an error */
+    int mesh_model;   /* BUILD_MESH_MODEL */
     size_t max_triangles, triangles_left; /* the meshes' budget, what is left of it */
     uint32_t root_id;                     /* the result of the first '!' node */
     /* resize matrices measured so far (build_hull.h) */
@@ -211,6 +212,7 @@ static build_ctx context(builder *b, int emit, sc_error *note)
                    .note = note,
                    .notes = emit ? &b->warnings : NULL,
                    .strict = b->strict,
+                   .mesh_model = b->mesh_model,
                    .triangles_left = &b->triangles_left,
                    .max_triangles = b->max_triangles,
                    .imports = &b->imports,
@@ -1548,6 +1550,7 @@ static void preview_builder(const builder *b, builder *sub, sc_error *error)
     sub->file = b->file;
     sub->error = error;
     sub->faithful = b->faithful;
+    sub->mesh_model = b->mesh_model;
     sub->max_triangles = b->max_triangles;
     sub->resize_cache = b->resize_cache;
     sub->imports = b->imports;
@@ -1770,6 +1773,7 @@ static sc_status build_scene_of(const model *m, model *owned, void *spare,
     b.error = error;
     b.faithful = (flags & BUILD_FAITHFUL) != 0;
     b.strict = (flags & BUILD_STRICT) != 0;
+    b.mesh_model = (flags & BUILD_MESH_MODEL) != 0;
     b.max_triangles = max_triangles ? max_triangles : BUILD_MAX_TRIANGLES;
     b.triangles_left = b.max_triangles;
     b.root_id = CSG_EMPTY;

@@ -73,6 +73,10 @@
 #define BUILD_FAITHFUL 1   /* OpenSCAD's polygons and polyhedra (--faithful) */
 #define BUILD_STRICT 2     /* bad meshes are errors (--strict) */
 #define BUILD_NO_PREVIEW 4 /* not the preview's parts and solid (sc_load_options) */
+/* the model is a mesh file's one-line import (sc_scene_load_mesh): a file
+ * OpenSCAD would import nothing from, which an import in a model leaves
+ * out with a warning, is the error */
+#define BUILD_MESH_MODEL 8
 
 /* Builds the CSG tree of the model m and the scene's shading record
  * (lights, materials, camera, background: build_shading.h); with

@@ -54,6 +54,10 @@ typedef struct build_ctx {
     /* --strict: a mesh a builder makes that is not closed is an error, not a
      * warning (build_mesh_prim) */
     int strict;
+    /* the model is a mesh file's one-line import (BUILD_MESH_MODEL): a
+     * file that an import in a model leaves out with a warning, as
+     * OpenSCAD imports nothing from it, is the error */
+    int mesh_model;
     /* the leaf's mesh reaches no CGAL operation in OpenSCAD's render (it
      * draws the mesh as it is), or reaches it convex (CGAL hulls it): one
      * that is not closed is drawn by the parity rule in faithful mode too,

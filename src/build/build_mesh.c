@@ -54,6 +54,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <strings.h>
 
 #include "base/error.h"
 #include "base/grow.h"
@@ -3025,7 +3026,10 @@ static int64_t stl_binary_count(const unsigned char *head, uint64_t size)
     return (uint64_t)n * 50 + 84 == size ? (int64_t)n : -1;
 }
 
-const char *build_stl_unknown(const unsigned char *head, uint64_t size)
+/* NULL when an STL file of size bytes whose first min(size, 84) bytes are
+ * head is binary STL (its size matches the count it announces) or starts
+ * as ASCII STL does ("solid"); else why it is neither. */
+static const char *stl_unknown(const unsigned char *head, uint64_t size)
 {
     if (stl_binary_count(head, size) >= 0 || (size >= 5 && memcmp(head, "solid", 5) == 0))
         return NULL;
@@ -3033,13 +3037,129 @@ const char *build_stl_unknown(const unsigned char *head, uint64_t size)
            "ASCII STL (it does not start with 'solid')";
 }
 
-/* Returns NULL on success, else what is wrong. */
-static const char *read_stl(const char *text, size_t size, mesh_file *m, int *oom)
+/* How reading a mesh file went, beside what read_stl and read_off return
+ * (NULL, or what is wrong): memory ran out (oom); or OpenSCAD 2021.01
+ * imports nothing from such a file and renders the rest (empty), as
+ * against a file it cannot render either (binary OFF, a point that is not
+ * finite); a message made for the file goes in text. */
+typedef struct mesh_reading {
+    int oom, empty;
+    unsigned line; /* the file's line where it went wrong, where known */
+    char text[200];
+} mesh_reading;
+
+static int stl_space(char ch)
+{
+    return ch == ' ' || ch == '\t' || ch == '\r' || ch == '\n' || ch == '\v' ||
+           ch == '\f';
+}
+
+static int has_word(const char *s, const char *e, const char *word)
+{
+    size_t n = strlen(word);
+    for (; (size_t)(e - s) >= n; s++)
+        if (memcmp(s, word, n) == 0)
+            return 1;
+    return 0;
+}
+
+/* [s, e) as boost::lexical_cast<double> reads it (OpenSCAD's STL reader):
+ * "nan", "nan(...)", "inf" or "infinity" in any case, with a sign; else a
+ * decimal number, the whole of it, that does not overflow. 0 when it is
+ * not one. */
+static int stl_number(const char *s, const char *e, double *out)
+{
+    const char *t = s + (s < e && (*s == '+' || *s == '-'));
+    size_t n = (size_t)(e - t);
+    if (n >= 3 && strncasecmp(t, "nan", 3) == 0 &&
+        (n == 3 || (n >= 5 && t[3] == '(' && e[-1] == ')'))) {
+        *out = *s == '-' ? -NAN : NAN;
+        return 1;
+    }
+    if ((n == 3 && strncasecmp(t, "inf", 3) == 0) ||
+        (n == 8 && strncasecmp(t, "infinity", 8) == 0)) {
+        *out = *s == '-' ? -INFINITY : INFINITY;
+        return 1;
+    }
+    const char *q = t;
+    size_t digits = 0;
+    for (; q < e && isdigit((unsigned char)*q); q++)
+        digits++;
+    if (q < e && *q == '.')
+        for (q++; q < e && isdigit((unsigned char)*q); q++)
+            digits++;
+    if (!digits)
+        return 0;
+    if (q < e && (*q == 'e' || *q == 'E')) {
+        q++;
+        q += q < e && (*q == '+' || *q == '-');
+        if (q == e || !isdigit((unsigned char)*q))
+            return 0;
+        while (q < e && isdigit((unsigned char)*q))
+            q++;
+    }
+    if (q != e)
+        return 0;
+    char small[128],
+        *buf = (size_t)(e - s) < sizeof small ? small : malloc((size_t)(e - s) + 1);
+    if (!buf)
+        return 0;
+    memcpy(buf, s, (size_t)(e - s));
+    buf[e - s] = 0;
+    *out = strtod(buf, NULL);
+    if (buf != small)
+        free(buf);
+    return isfinite(*out);
+}
+
+/* The three numbers after the first "vertex" in [s, e) that blanks and
+ * three words follow, as OpenSCAD's pattern \s*vertex\s+(\S+)\s+(\S+)\s+(\S+)
+ * finds them: 0 when no "vertex" has three words after it, -1 when one
+ * has and a word is not a number (stl_number), else 1. */
+static int stl_vertex(const char *s, const char *e, double c[3])
+{
+    for (const char *v = s; e - v >= 6; v++) {
+        if (memcmp(v, "vertex", 6) != 0)
+            continue;
+        const char *q = v + 6, *word[3], *stop[3];
+        int k = 0;
+        for (; k < 3; k++) {
+            const char *b = q;
+            while (q < e && stl_space(*q))
+                q++;
+            if (q == b || q == e)
+                break;
+            word[k] = q;
+            while (q < e && !stl_space(*q))
+                q++;
+            stop[k] = q;
+        }
+        if (k < 3)
+            continue;
+        for (k = 0; k < 3; k++)
+            if (!stl_number(word[k], stop[k], &c[k]))
+                return -1;
+        return 1;
+    }
+    return 0;
+}
+
+/* Returns NULL on success, else what is wrong (r). An ASCII STL file is
+ * read line by line as OpenSCAD 2021.01's import_stl reads it: the first
+ * line passed over; a line with "solid", "facet" or "endloop" in it passed
+ * over; "outer loop" starts a triangle; a line with "vertex" and three
+ * words is a corner (a word that is not a number is OpenSCAD's "can't
+ * parse vertex line"), and its third completes the triangle; any other
+ * line after a triangle's third corner is its "extra vertex line" (those
+ * two, OpenSCAD's errors, import nothing and render the rest); any other
+ * line passed over. A triangle that "outer loop" starts again before its
+ * third corner is left out, as OpenSCAD leaves it out. */
+static const char *read_stl(const char *text, size_t size, mesh_file *m, mesh_reading *r)
 {
     const unsigned char *u = (const unsigned char *)text;
-    const char *unknown = build_stl_unknown(u, size);
+    const char *unknown = stl_unknown(u, size);
     if (unknown)
-        return unknown;
+        return r->empty = 1, unknown;
     int64_t n = stl_binary_count(u, size);
     if (n >= 0) {
         for (int64_t t = 0; t < n; t++) {
@@ -3050,37 +3170,52 @@ static const char *read_stl(const char *text, size_t size, mesh_file *m, int *oo
                 if (!v3_is_finite(p))
                     return "a corner is not finite";
                 if (!add_point(m, p))
-                    return *oom = 1, "out of memory";
+                    return r->oom = 1, "out of memory";
             }
         }
-        return merge_corners(m) ? NULL : (*oom = 1, "out of memory");
+        return merge_corners(m) ? NULL : (r->oom = 1, "out of memory");
     }
-    const char *p = text, *end = text + size;
-    while (p < end) {
-        while (p < end && (*p == ' ' || *p == '\t' || *p == '\r' || *p == '\n'))
-            p++;
-        const char *word = p;
-        while (p < end && !(*p == ' ' || *p == '\t' || *p == '\r' || *p == '\n'))
-            p++;
-        if (p - word == 6 && strncmp(word, "vertex", 6) == 0) {
-            double c[3];
-            for (int j = 0; j < 3; j++) {
-                char *next;
-                c[j] = strtod(p, &next);
-                if (next == p || next > end)
-                    return "a 'vertex' without three numbers";
-                p = next;
-            }
-            vec3 q = v3(c[0], c[1], c[2]);
-            if (!v3_is_finite(q))
-                return "a corner is not finite";
-            if (!add_point(m, q))
-                return *oom = 1, "out of memory";
+    const char *p = memchr(text, '\n', size), *end = text + size;
+    p = p ? p + 1 : end;
+    vec3 corner[3];
+    int corners = 0;
+    for (unsigned line = 2; p < end; line++) {
+        const char *s = p, *e = memchr(p, '\n', (size_t)(end - p));
+        e = e ? e : end;
+        p = e < end ? e + 1 : end;
+        while (s < e && stl_space(*s))
+            s++;
+        while (e > s && stl_space(e[-1]))
+            e--;
+        if (s == e || has_word(s, e, "solid") || has_word(s, e, "facet") ||
+            has_word(s, e, "endloop"))
+            continue;
+        if (has_word(s, e, "outer loop")) {
+            corners = 0;
+            continue;
         }
+        double c[3];
+        int found = corners < 3 ? stl_vertex(s, e, c) : 0;
+        if (corners < 3 && found == 0)
+            continue;
+        if (found < 0 || corners >= 3) {
+            int cut = e - s > 60;
+            snprintf(r->text, sizeof r->text, "line %u: %s '%.*s%s'", line,
+                     found < 0 ? "can't parse vertex line" : "extra vertex line",
+                     cut ? 60 : (int)(e - s), s, cut ? "..." : "");
+            return r->line = line, r->empty = 1, r->text;
+        }
+        corner[corners] = v3(c[0], c[1], c[2]);
+        if (!v3_is_finite(corner[corners]))
+            return snprintf(r->text, sizeof r->text, "line %u: a corner is not finite",
+                            line),
+                   r->line = line, r->text;
+        if (++corners == 3)
+            for (int j = 0; j < 3; j++)
+                if (!add_point(m, corner[j]))
+                    return r->oom = 1, "out of memory";
     }
-    if (m->point_count % 3 != 0)
-        return "its vertex count is not a multiple of 3";
-    return merge_corners(m) ? NULL : (*oom = 1, "out of memory");
+    return merge_corners(m) ? NULL : (r->oom = 1, "out of memory");
 }
 
 /* The next whitespace-separated token of an OFF file, skipping '#'
@@ -3170,8 +3305,12 @@ static int off_line(const char **p, const char *end, double *out, int cap)
  * colours, normals and a homogeneous coordinate after each point, all
  * but the point ignored), the counts, then each point on a line of its
  * own, its first three numbers (over the fourth, 4OFF), then the faces. */
-static const char *read_off(const char *text, size_t size, mesh_file *m, int *oom)
+static const char *read_off(const char *text, size_t size, mesh_file *m, mesh_reading *r)
 {
+    /* OpenSCAD imports nothing from a file CGAL's reader stops in, and
+     * renders the rest; it aborts on an index out of range (CGAL's
+     * incremental builder), and reads a binary OFF file */
+    r->empty = 1;
     const char *p = text, *end = text + size;
     int nl;
     const char *t = off_token(&p, end, &nl);
@@ -3191,13 +3330,14 @@ static const char *read_off(const char *text, size_t size, mesh_file *m, int *oo
         j++;
     }
     if (t && j < len && t[j] == 'n')
-        return "it is an nOFF file (points of any dimension), which is not read";
+        return r->empty = 0,
+               "it is an nOFF file (points of any dimension), which is not read";
     if (!t || len != j + 3 || strncmp(t + j, "OFF", 3) != 0)
         return "it does not start with 'OFF' (or COFF, NOFF, 4OFF, STOFF)";
     p = t + len;
     const char *peek = p, *word = off_token(&peek, end, &nl);
     if (word && peek - word == 6 && strncmp(word, "BINARY", 6) == 0)
-        return "it is a binary OFF file, which is not read";
+        return r->empty = 0, "it is a binary OFF file, which is not read";
     double counts[3];
     for (int k = 0; k < 3; k++)
         if (!off_number(&p, end, &counts[k]) || !(counts[k] >= 0) ||
@@ -3215,26 +3355,28 @@ static const char *read_off(const char *text, size_t size, mesh_file *m, int *oo
         if (!v3_is_finite(q))
             return "a point is not finite";
         if (!add_point(m, q))
-            return *oom = 1, "out of memory";
+            return r->oom = 1, "out of memory";
     }
     for (uint32_t f = 0; f < nf; f++) {
         double k;
         if (!off_number(&p, end, &k) || k != floor(k) || k < 3 || k > nv)
             return "fewer faces than its header says, or a face with a bad point count";
         if (!start_face(m))
-            return *oom = 1, "out of memory";
+            return r->oom = 1, "out of memory";
         for (uint32_t j = 0; j < (uint32_t)k; j++) {
             double i;
-            if (!off_number(&p, end, &i) || i != floor(i) || i < 0 || i >= nv)
-                return "a face's point index is bad or out of range";
+            if (!off_number(&p, end, &i) || i != floor(i))
+                return "a face's point index is not an index";
+            if (i < 0 || i >= nv)
+                return r->empty = 0, "a face's point index is out of range";
             if (!add_index(m, (uint32_t)i))
-                return *oom = 1, "out of memory";
+                return r->oom = 1, "out of memory";
         }
         /* anything after the indices on the line is a colour */
         while (p < end && *p != '\n')
             p++;
     }
-    return finish_faces(m) ? NULL : (*oom = 1, "out of memory");
+    return finish_faces(m) ? NULL : (r->oom = 1, "out of memory");
 }
 
 /* The fewest significant digits (1 to 17) that give back x, a finite
@@ -3266,9 +3408,8 @@ int build_mesh_rounding(const char *path, build_mesh_rounding_info *out)
     int binary = !off && stl_binary_count((const unsigned char *)text, size) >= 0;
     mesh_file m;
     memset(&m, 0, sizeof m);
-    int oom = 0;
-    const char *bad =
-        off ? read_off(text, size, &m, &oom) : read_stl(text, size, &m, &oom);
+    mesh_reading r = {0};
+    const char *bad = off ? read_off(text, size, &m, &r) : read_stl(text, size, &m, &r);
     free(text);
     if (bad || m.point_count == 0) {
         mesh_file_free(&m);
@@ -3777,7 +3918,7 @@ static sc_status import_read(const build_ctx *c, const model_import *import, int
         free(path);
         return st;
     }
-    int oom = 0, unknown = 0;
+    mesh_reading reading = {0};
     sc_status st = SC_OK;
     if (objects) {
         st = read_amf(c, text, size, path, import, &file->a);
@@ -3786,7 +3927,8 @@ static sc_status import_read(const build_ctx *c, const model_import *import, int
          * file", "Could not read file") and renders the rest: a warning
          * with the file's own line, and the import left out, unless
          * --strict */
-        if ((st == SC_ERR_SYNTAX || st == SC_ERR_SEMANTIC) && !strict && !c->strict) {
+        if ((st == SC_ERR_SYNTAX || st == SC_ERR_SEMANTIC) && !strict && !c->strict &&
+            !c->mesh_model) {
             sc_error reason = *c->error;
             err_clear(c->error);
             st = build_note_left_out(c, &loc,
@@ -3800,21 +3942,20 @@ static sc_status import_read(const build_ctx *c, const model_import *import, int
             return st;
         }
     } else {
-        unknown = stl && build_stl_unknown((const unsigned char *)text, size);
-        why = stl ? read_stl(text, size, &file->m, &oom)
-                  : read_off(text, size, &file->m, &oom);
+        why = stl ? read_stl(text, size, &file->m, &reading)
+                  : read_off(text, size, &file->m, &reading);
         free(text);
     }
     if (st != SC_OK) {
         ;
-    } else if (oom) {
+    } else if (reading.oom) {
         st = err_nomem(c->error, (&loc));
-    } else if (why && unknown && !strict && !c->strict) {
-        /* OpenSCAD 2021.01 imports nothing, silently, from an STL file
-         * that is neither binary nor ASCII STL (an empty file, another
-         * format), and renders the rest: a warning, and the import left
-         * out, unless --strict. (A line of an ASCII STL it cannot parse
-         * is its error, and stays one.) */
+    } else if (why && reading.empty && !strict && !c->strict && !c->mesh_model) {
+        /* OpenSCAD 2021.01 imports nothing from an STL file that is
+         * neither binary nor ASCII STL (an empty file, another format),
+         * silently, nor from one with a line it cannot parse (its error),
+         * nor from an OFF file CGAL's reader stops in, and renders the
+         * rest: a warning, and the import left out, unless --strict */
         st =
             build_note_left_out(c, &loc,
                                 "import: '%s' is not a valid %s file (%s); the import is "
@@ -3827,9 +3968,11 @@ static sc_status import_read(const build_ctx *c, const model_import *import, int
         import_file_free(file);
         return st;
     } else if (why) {
-        st = err_set(c->error, SC_ERR_SEMANTIC, &loc,
-                     "import: '%s' is not a valid %s file (%s)", path,
-                     stl ? "STL" : "OFF", why);
+        /* the mesh as the model: its own line, where the reader knows it */
+        sc_location at = {c->file, (int)reading.line, 1};
+        st = err_set(
+            c->error, SC_ERR_SEMANTIC, c->mesh_model && reading.line > 1 ? &at : &loc,
+            "import: '%s' is not a valid %s file (%s)", path, stl ? "STL" : "OFF", why);
     }
     free(path);
     if (st == SC_OK)

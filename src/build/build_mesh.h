@@ -208,10 +208,6 @@ int build_mesh_face_triangles(const vec3 *p, uint32_t n, int reversed,
  * runs out. */
 char *build_file_path(const build_ctx *c, const char *name);
 
-/* NULL when an STL file of size bytes whose first min(size, 84) bytes are
- * head is binary STL (its size matches the count it announces) or starts
- * as ASCII STL does ("solid"); else why it is neither. */
-const char *build_stl_unknown(const unsigned char *head, uint64_t size);
 struct build_prims; /* build_hull.h */
 
 /* Frees what imports holds (build_ctx.h) and zeroes it. */
