@@ -186,6 +186,20 @@ grep -q "^WARNING: Too many unnamed arguments supplied in file w.scad, line 1$" 
 "$bin" info usew.scad >/dev/null 2>err.txt || fail "info usew.scad failed"
 [ "$(cat err.txt)" = "lib/sub/w.scad:1:1: warning: Too many unnamed arguments supplied" ] ||
     fail "info usew.scad: got '$(cat err.txt)'"
+# A library OpenSCAD finds in an OPENSCADPATH folder, not beside the
+# source: its warnings name that library, not a file of its name beside
+# the source, nor a path that does not exist.
+mkdir -p libpath/pw
+printf 'module pw() { cube(1, 2, 3); }\n' >libpath/pw/w.scad
+printf 'use <pw/w.scad>\npw();\n' >usepw.scad
+OPENSCADPATH="$PWD/none:$PWD/libpath" openscad -o usepw_os.csg usepw.scad >/dev/null 2>os_err.txt ||
+    fail "openscad -o usepw_os.csg: exit $?"
+grep -q "^WARNING: Too many unnamed arguments supplied in file w.scad, line 1$" os_err.txt ||
+    fail "OpenSCAD's warnings of usepw.scad: $(cat os_err.txt)"
+OPENSCADPATH="$PWD/none:$PWD/libpath" "$bin" info usepw.scad >/dev/null 2>err.txt ||
+    fail "info usepw.scad failed"
+[ "$(cat err.txt)" = "$PWD/libpath/pw/w.scad:1:1: warning: Too many unnamed arguments supplied" ] ||
+    fail "info usepw.scad: got '$(cat err.txt)'"
 
 # Warnings at the converted text are put on the source, as its errors are.
 printf 'cube(1);\nscale([1, 1, 0]) cube(1);\n' >flat.scad

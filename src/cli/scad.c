@@ -190,6 +190,7 @@ typedef struct source_lines {
      * scan_file names them (malloc'd; libraries_read once) */
     char **libraries;
     int library_count, libraries_read;
+    char **reals; /* each library's real path, or NULL (malloc'd) */
 } source_lines;
 
 static void libraries_read(source_lines *at);
@@ -262,14 +263,14 @@ static void place_other(source_lines *at, sc_error *error)
          * the source's folder is no file the source reaches, the one
          * library that ends in it */
         libraries_read(at);
-        char real[PATH_MAX], lib_real[PATH_MAX];
+        char real[PATH_MAX];
         int reached = 0, ending = 0, here = realpath(error->file, real) != NULL;
         const char *only = NULL;
         size_t n = strlen(name);
         for (int k = 0; k < at->library_count; k++) {
             const char *lib = at->libraries[k];
             size_t m = strlen(lib);
-            reached |= here && realpath(lib, lib_real) && !strcmp(real, lib_real);
+            reached |= here && at->reals[k] && !strcmp(real, at->reals[k]);
             if (m > n && lib[m - n - 1] == '/' && !strcmp(lib + m - n, name)) {
                 ending++;
                 only = lib;
@@ -444,8 +445,49 @@ typedef struct scan {
 
 static void scan_file(scan *sc, const char *path, int depth);
 
+/* 1 when path names a file that is there and is no folder. */
+static int is_file(const char *path)
+{
+    struct stat st;
+    return stat(path, &st) == 0 && !S_ISDIR(st.st_mode);
+}
+
+/* Into path (PATH_MAX bytes), the library file name (length bytes) as
+ * OpenSCAD 2021.01 finds one that is not beside the file that names it
+ * (parsersettings.cc): in each folder of OPENSCADPATH (separated by ':'),
+ * then the user's library folder, then OpenSCAD's own; 0 when none holds
+ * it. */
+static int library_path(const char *name, size_t length, char *path)
+{
+    const char *list = getenv("OPENSCADPATH");
+    const char *data = getenv("XDG_DATA_HOME"), *home = getenv("HOME");
+    char user[PATH_MAX];
+    if (data && data[0])
+        snprintf(user, sizeof user, "%s/OpenSCAD/libraries", data);
+    else
+        snprintf(user, sizeof user, "%s/.local/share/OpenSCAD/libraries",
+                 home ? home : "");
+    for (int stage = 0; stage < 3; stage++) {
+        const char *p = stage == 0   ? (list ? list : "")
+                        : stage == 1 ? user
+                                     : "/usr/share/openscad/libraries";
+        while (*p) {
+            const char *end = stage == 0 ? strchr(p, ':') : NULL;
+            size_t n = end ? (size_t)(end - p) : strlen(p);
+            if (n &&
+                (size_t)snprintf(path, PATH_MAX, "%.*s/%.*s", (int)n, p, (int)length,
+                                 name) < PATH_MAX &&
+                is_file(path))
+                return 1;
+            p += n + (end != NULL);
+        }
+    }
+    return 0;
+}
+
 /* Reports name, as the source at from names it, and scans it too when it
- * is OpenSCAD source (include and use). */
+ * is OpenSCAD source (include and use): beside from, or for a library
+ * (follow) that is not there, where OpenSCAD finds it (library_path). */
 static void scan_name(scan *sc, const char *from, const char *name, size_t length,
                       int follow, int depth)
 {
@@ -458,6 +500,9 @@ static void scan_name(scan *sc, const char *from, const char *name, size_t lengt
     else if ((size_t)snprintf(path, sizeof path, "%.*s/%.*s", (int)(slash - from), from,
                               (int)length, name) >= sizeof path)
         return;
+    char found[PATH_MAX];
+    if (follow && name[0] != '/' && !is_file(path) && library_path(name, length, found))
+        memcpy(path, found, sizeof path);
     sc->depend(sc->user, path);
     if (follow)
         scan_file(sc, path, depth + 1);
@@ -589,12 +634,16 @@ static void libraries_read(source_lines *at)
     memset(&sc, 0, sizeof sc);
     sc.depend = depend_nothing;
     scan_file(&sc, at->path, 0);
-    at->libraries = malloc((size_t)(sc.count ? sc.count : 1) * sizeof *at->libraries);
+    size_t room = (size_t)(sc.count ? sc.count : 1) * sizeof(char *);
+    at->libraries = malloc(room);
+    at->reals = malloc(room);
     for (int k = 0; k < sc.count; k++) {
-        if (at->libraries)
+        if (at->libraries && at->reals) {
+            at->reals[at->library_count] = realpath(sc.seen[k], NULL);
             at->libraries[at->library_count++] = sc.seen[k];
-        else
+        } else {
             free(sc.seen[k]);
+        }
     }
 }
 
@@ -855,12 +904,16 @@ static sc_status convert(const char *path, const double *time,
             error->status = st = SC_ERR_CANCELLED;
             snprintf(error->message, sizeof error->message, "interrupted");
         } else {
-            source_lines at = {source, path, 0, 1, {{0}}, 0, "", 0, 0, 0, NULL, 0, 0};
+            source_lines at = {source, path, 0, 1,    {{0}}, 0, "",
+                               0,      0,    0, NULL, 0,     0, NULL};
             st = openscad_log(log, &at, !WIFEXITED(status) || WEXITSTATUS(status) != 0,
                               strict, error);
-            for (int k = 0; k < at.library_count; k++)
+            for (int k = 0; k < at.library_count; k++) {
                 free(at.libraries[k]);
+                free(at.reals[k]);
+            }
             free(at.libraries);
+            free(at.reals);
         }
     }
     if (st == SC_OK && depend)
