@@ -1336,8 +1336,11 @@ static void test_input_forms(void **state)
     s = (sc_scene *)1;
     assert_int_equal(sc_scene_load(bad, NULL, &s, &e), SC_ERR_SEMANTIC);
     assert_null(s);
+    /* at the mesh file's own line, which OpenSCAD's reader cannot parse */
     assert_string_equal(e.file, bad);
-    assert_int_equal(e.line, 0);
+    assert_int_equal(e.line, 4);
+    assert_int_equal(e.column, 1);
+    assert_non_null(strstr(e.message, "line 4: can't parse vertex line 'vertex 0 0 x'"));
 }
 
 int main(void)
