@@ -522,7 +522,10 @@ minkowski(convexity = 0) {
 CSG
 if command -v openscad >/dev/null; then
     check
-    openscad -o "$PWD/mink-plane_os.stl" mink-plane.csg >/dev/null 2>mink-plane_os.err
+    # binary STL: the ASCII export's 6 digits move it by more than the
+    # tolerance
+    openscad -o "$PWD/mink-plane_os.stl" --export-format binstl mink-plane.csg \
+        >/dev/null 2>mink-plane_os.err
     "$bin" compare mink-plane.csg mink-plane_os.stl --faithful >out.txt 2>err.txt ||
         fail "mink-plane.csg is not openscad's solid: $(tail -n 9 out.txt)"
 else
@@ -602,6 +605,30 @@ for m in mink-fail mink-fail-third mink-fail-hull; do
     openscad -o "$PWD/${m}_os.stl" --export-format binstl $m.csg >/dev/null 2>${m}_os.err
     grep -q '^ERROR: CGAL error in CGALUtils::applyBinaryOperator UNKNOWN' ${m}_os.err ||
         fail "openscad on $m.csg: $(cat ${m}_os.err)"
+    "$bin" compare $m.csg ${m}_os.stl --faithful >out.txt 2>err.txt ||
+        fail "$m.csg is not openscad's solid: $(tail -n 9 out.txt)"
+done
+
+# OpenSCAD's minkowski puts each mesh operand on its 2^-20 grid, each
+# coordinate towards zero, in the minkowski's own frame; at unit scale
+# that moves the solid by 1.6e-6 of its volume, past compare's tolerance.
+# Two children, three (the sum of the first two is put on the grid too),
+# under a transform, under a hull, in a difference.
+sphere8='sphere($fn = 8, $fa = 12, $fs = 2, r = 1);'
+cube1='cube(size = [1, 1, 1], center = false);'
+printf 'minkowski(convexity = 0) {\n\t%s\n\t%s\n}\n' "$cube1" "$sphere8" >grid-two.csg
+printf 'minkowski(convexity = 0) {\n\t%s\n\t%s\n\tcylinder($fn = 6, $fa = 12, $fs = 2, h = 0.7, r1 = 0.3, r2 = 0.3, center = false);\n}\n' "$cube1" "$sphere8" >grid-three.csg
+printf 'multmatrix([[0.8660254037844387, -0.5, 0, 0.3], [0.5, 0.8660254037844387, 0, -0.2], [0, 0, 1, 0.1], [0, 0, 0, 1]]) {\n\tminkowski(convexity = 0) {\n\t\tmultmatrix([[1, 0, 0, -0.3], [0, 1, 0, 0.45], [0, 0, 1, 0], [0, 0, 0, 1]]) %s\n\t\t%s\n\t}\n}\n' "$cube1" "$sphere8" >grid-turned.csg
+printf 'hull() {\n\tminkowski(convexity = 0) {\n\t\t%s\n\t\t%s\n\t}\n\tmultmatrix([[1, 0, 0, 3], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]) cube(size = [0.5, 0.5, 0.5], center = false);\n}\n' "$cube1" "$sphere8" >grid-hull.csg
+printf 'difference() {\n\tminkowski(convexity = 0) {\n\t\t%s\n\t\t%s\n\t}\n\tcube(size = [1, 1, 5], center = true);\n}\n' "$cube1" "$sphere8" >grid-cut.csg
+for m in grid-two grid-three grid-turned grid-hull grid-cut; do
+    command -v openscad >/dev/null || {
+        fail "no openscad to check $m.csg with"
+        continue
+    }
+    check
+    openscad -o "$PWD/${m}_os.stl" --export-format binstl $m.csg >/dev/null 2>&1 ||
+        fail "openscad on $m.csg failed"
     "$bin" compare $m.csg ${m}_os.stl --faithful >out.txt 2>err.txt ||
         fail "$m.csg is not openscad's solid: $(tail -n 9 out.txt)"
 done

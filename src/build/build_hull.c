@@ -850,6 +850,100 @@ static sc_status decompose_warning(const walk *w, const decompose_failure *f,
                                   : "the sum of the children before it");
 }
 
+static int nef_result(const model_node *n, int depth);
+
+/* Whether OpenSCAD 2021.01 holds the geometry of child, a minkowski's
+ * child, as a mesh (PolySet): a leaf, hull or minkowski, or a group,
+ * transform or boolean of one such solid; not a union or boolean of
+ * several (a Nef polyhedron). */
+static int polyset_operand(const model_node *child)
+{
+    model_kind kind = child->kind;
+    if (is_group(kind) || kind == MODEL_XFORM || kind == MODEL_RESIZE ||
+        kind == MODEL_DIFFERENCE || kind == MODEL_INTERSECTION)
+        return !nef_result(child, 0);
+    return 1;
+}
+
+/* OpenSCAD's grid for the meshes it hands to CGAL: 2^-20 (GRID_FINE). */
+#define GRID_CELLS 1048576.0
+
+typedef struct grid_key {
+    int64_t k[3];
+} grid_key;
+
+static uint64_t grid_hash(const grid_key *g)
+{
+    uint64_t h = 0;
+    for (int i = 0; i < 3; i++)
+        h = (h ^ (uint64_t)g->k[i]) * 0x9e3779b97f4a7c15ULL;
+    return h ^ (h >> 29);
+}
+
+/* The slot of key in the table of cap (a power of two) slots, where it is
+ * or would go. */
+static size_t grid_slot(const grid_key *table, const unsigned char *used, size_t cap,
+                        const grid_key *key)
+{
+    size_t i = grid_hash(key) & (cap - 1);
+    while (used[i] && memcmp(&table[i], key, sizeof *key) != 0)
+        i = (i + 1) & (cap - 1);
+    return i;
+}
+
+/* Moves the count points p onto OpenSCAD 2021.01's grid as it takes a mesh
+ * into CGAL (CGALUtils::createPolyhedronFromPolySet and PolySet's
+ * quantizeVertices, with Grid3d's align): each coordinate to the multiple of 2^-20
+ * towards zero (its cell's corner); a point whose cell no point before it took goes to
+ * the nearest such cell among the 26 around it, if any, in Grid3d's order. A point too
+ * far out for the grid's 64-bit cells stays where it is. */
+static sc_status grid_align(const walk *w, const model_node *n, vec3 *p, uint32_t count)
+{
+    size_t cap = 16;
+    while (cap < 2 * (size_t)count)
+        cap *= 2;
+    grid_key *table = malloc(cap * sizeof *table);
+    unsigned char *used = calloc(cap, 1);
+    if (!table || !used) {
+        free(table);
+        free(used);
+        return err_nomem(w->c->error, &n->loc);
+    }
+    for (uint32_t i = 0; i < count; i++) {
+        double c[3] = {p[i].x * GRID_CELLS, p[i].y * GRID_CELLS, p[i].z * GRID_CELLS};
+        if (!(fabs(c[0]) < 0x1p62 && fabs(c[1]) < 0x1p62 && fabs(c[2]) < 0x1p62))
+            continue;
+        grid_key key = {{(int64_t)c[0], (int64_t)c[1], (int64_t)c[2]}};
+        size_t at = grid_slot(table, used, cap, &key);
+        if (!used[at]) {
+            double best = 10;
+            size_t found = cap;
+            for (int64_t jx = -1; jx <= 1; jx++)
+                for (int64_t jy = -1; jy <= 1; jy++)
+                    for (int64_t jz = -1; jz <= 1; jz++) {
+                        grid_key k = {{key.k[0] + jx, key.k[1] + jy, key.k[2] + jz}};
+                        size_t j = grid_slot(table, used, cap, &k);
+                        double d = sqrt((double)(jx * jx + jy * jy + jz * jz));
+                        if (used[j] && d < best) {
+                            best = d;
+                            found = j;
+                        }
+                    }
+            if (found < cap) {
+                key = table[found];
+            } else {
+                table[at] = key;
+                used[at] = 1;
+            }
+        }
+        p[i] = v3((double)key.k[0] / GRID_CELLS, (double)key.k[1] / GRID_CELLS,
+                  (double)key.k[2] / GRID_CELLS);
+    }
+    free(table);
+    free(used);
+    return SC_OK;
+}
+
 /* The parts of minkowski node n (through m) appended to out; none, with
  * *not_closed set, when a mesh among its children is not closed
  * (closed_check). Where CGAL's convex decomposition of the first child
@@ -875,9 +969,16 @@ static sc_status minkowski_parts(const walk *w, const model_node *n, const affin
                   w->c->strict ? NULL : &failure};
     partlist acc = {NULL, 0, 0};
     sc_status st = SC_OK;
-    int first = 1, second = 0;
+    int first = 1, second = 0, summed = 0;
     if (depth > BUILD_HULL_MAX_DEPTH)
         return depth_error(w, n);
+    /* The sum is made in n's own frame, as OpenSCAD makes it, and carried
+     * through m at the end: there (faithful) each mesh operand is put on
+     * OpenSCAD's grid (grid_align), the sum so far too when it is one part
+     * and another child follows, as OpenSCAD's next step takes it as a
+     * mesh. The parts of an operand OpenSCAD decomposes, or holds as a Nef
+     * polyhedron, are not moved. */
+    affine local = affine_identity();
     for (const model_node *child = n->first_child; child && st == SC_OK;
          child = child->next) {
         if (skipped(child)) {
@@ -885,8 +986,9 @@ static sc_status minkowski_parts(const walk *w, const model_node *n, const affin
             continue;
         }
         partlist parts = {NULL, 0, 0};
-        affine here = first ? *m : affine_identity();
-        st = collect_alone(&inner, n, child, &here, depth + 1, &parts);
+        st = collect_alone(&inner, n, child, &local, depth + 1, &parts);
+        if (st == SC_OK && w->c->faithful && parts.count == 1 && polyset_operand(child))
+            st = grid_align(w, n, parts.items[0].p, parts.items[0].count);
         if (st == SC_OK)
             st = reduce(&inner, n, &parts);
         if (st != SC_OK && failure.name) { /* the sum so far, as OpenSCAD's */
@@ -908,10 +1010,13 @@ static sc_status minkowski_parts(const walk *w, const model_node *n, const affin
             continue;
         }
         second = 0;
-        /* acc ⊕ parts, part by part; the new child is through m's linear
-         * part only (the translation is in acc already). */
-        affine linear = *m;
-        linear.m[0][3] = linear.m[1][3] = linear.m[2][3] = 0;
+        if (summed && w->c->faithful && acc.count == 1 &&
+            (st = grid_align(w, n, acc.items[0].p, acc.items[0].count)) != SC_OK) {
+            parts_free(&parts);
+            break;
+        }
+        summed = 1;
+        /* acc ⊕ parts, part by part */
         uint64_t combos = (uint64_t)acc.count * parts.count;
         if (combos > BUILD_MINKOWSKI_MAX_PARTS) {
             st = err_set(w->c->error, SC_ERR_LIMIT, &n->loc,
@@ -935,8 +1040,7 @@ static sc_status minkowski_parts(const walk *w, const model_node *n, const affin
                 }
                 for (uint32_t k = 0; k < a->count && st == SC_OK; k++) {
                     for (uint32_t l = 0; l < b->count; l++) {
-                        if (!add_point(
-                                s, v3_add(a->p[k], affine_vector(&linear, b->p[l])))) {
+                        if (!add_point(s, v3_add(a->p[k], b->p[l]))) {
                             st = err_nomem((w->c)->error, (&n->loc));
                             break;
                         }
@@ -960,6 +1064,8 @@ static sc_status minkowski_parts(const walk *w, const model_node *n, const affin
         }
         *s = acc.items[i];
         acc.items[i].p = NULL;
+        for (uint32_t k = 0; k < s->count; k++)
+            s->p[k] = affine_point(m, s->p[k]);
     }
     parts_free(&acc);
     return st;
@@ -1001,14 +1107,26 @@ static sc_status nef_mesh(const walk *w, const model_node *n, const affine *m,
     if (st != SC_OK)
         return st;
     double *xyz = malloc(((size_t)f->point_count * 3 + 1) * sizeof *xyz);
-    if (!xyz)
+    vec3 *at = malloc(((size_t)f->point_count + 1) * sizeof *at);
+    if (!xyz || !at) {
+        free(xyz);
+        free(at);
         return err_nomem(w->c->error, &n->loc);
-    for (uint32_t i = 0; i < f->point_count; i++) {
-        vec3 p = affine_point(m, f->points[i]);
-        xyz[3 * i] = p.x;
-        xyz[3 * i + 1] = p.y;
-        xyz[3 * i + 2] = p.z;
     }
+    for (uint32_t i = 0; i < f->point_count; i++)
+        at[i] = affine_point(m, f->points[i]);
+    /* faithful: on OpenSCAD's grid, as it makes the Nef polyhedron */
+    if (w->c->faithful && (st = grid_align(w, n, at, f->point_count)) != SC_OK) {
+        free(xyz);
+        free(at);
+        return st;
+    }
+    for (uint32_t i = 0; i < f->point_count; i++) {
+        xyz[3 * i] = at[i].x;
+        xyz[3 * i + 1] = at[i].y;
+        xyz[3 * i + 2] = at[i].z;
+    }
+    free(at);
     char why[512] = "";
     nef_status ns = w->nef->from_mesh(xyz, f->point_count, f->indices, f->face_start,
                                       f->face_loops, f->face_count, out, why, sizeof why);
