@@ -268,6 +268,20 @@ holds(j["only_a"], 0.01)
 holds(j["only_b"], 0.01)
 assert not j["same"] and j["converged"], j' plate.json
 
+# A box against the box grown by 3e-7 on every side: the difference is
+# three pairs of sheets, each thinner than the lines' spacing, each pair
+# crossed by one axis's lines only, 1.8e-6 of the volume in all. Each axis
+# alone sees a third of it ("same"); compare weighs each part of a
+# difference towards the axes whose lines cross it.
+printf 'cube(size = [1, 1, 1]);\n' >box.csg
+printf 'multmatrix([[1, 0, 0, -3e-07], [0, 1, 0, -3e-07], [0, 0, 1, -3e-07], [0, 0, 0, 1]]) {\n  cube(size = [1.0000006, 1.0000006, 1.0000006]);\n}\n' >grown.csg
+run 1 grown.json compare box.csg grown.csg --json -q
+pycheck '
+holds(j["only_a"], 0)
+holds(j["only_b"], 1.0000006 ** 3 - 1)
+assert j["only_b"]["error"] < 0.1 * j["only_b"]["value"], j
+assert not j["same"] and j["converged"], j' grown.json
+
 # A prism with a face through opposite corners of its box against the STL
 # OpenSCAD 2021.01 exports of it: the same solid, though the lines in the
 # plane of that face meet the mesh on its triangles' edges.
