@@ -252,8 +252,8 @@ grep -q "not reached" empty.txt && fail "compare empty models: $(cat empty.txt)"
 
 # A plate against the same plate 1e-6 higher: the difference is two sheets
 # 1e-6 thick, 0.01 each, 2e-6 of the volume; the lines along x and y lie
-# between them and see nothing, those along z cross them. The estimate is
-# the largest of the axes', not their mean (a third: "same").
+# between them and see nothing, those along z cross them, and count all of
+# them (the mean of the three axes' estimates is a third: "same").
 cat >plate.csg <<'CSG'
 cube(size = [100, 100, 1]);
 CSG
