@@ -522,8 +522,8 @@ minkowski(convexity = 0) {
 CSG
 if command -v openscad >/dev/null; then
     check
-    # binary STL: the ASCII export's 6 digits move it by more than the
-    # tolerance
+    # binary STL: the ASCII export's 6 digits move its points by up to
+    # 5e-6
     openscad -o "$PWD/mink-plane_os.stl" --export-format binstl mink-plane.csg \
         >/dev/null 2>mink-plane_os.err
     "$bin" compare mink-plane.csg mink-plane_os.stl --faithful >out.txt 2>err.txt ||
@@ -611,7 +611,7 @@ done
 
 # OpenSCAD's minkowski puts each mesh operand on its 2^-20 grid, each
 # coordinate towards zero, in the minkowski's own frame; at unit scale
-# that moves the solid by 1.6e-6 of its volume, past compare's tolerance.
+# that moves the solid by 1.6e-6 of its volume (CGAL's exact volumes).
 # Two children, three (the sum of the first two is put on the grid too),
 # under a transform, under a hull, in a difference.
 sphere8='sphere($fn = 8, $fa = 12, $fs = 2, r = 1);'
