@@ -891,9 +891,9 @@ static size_t grid_slot(const grid_key *table, const unsigned char *used, size_t
     return i;
 }
 
-/* Moves the count points p onto OpenSCAD 2021.01's grid as it takes a mesh
- * into CGAL (CGALUtils::createPolyhedronFromPolySet and PolySet's
- * quantizeVertices, with Grid3d's align): each coordinate to the multiple of 2^-20
+/* Moves the count points p onto OpenSCAD 2021.01's grid as its minkowski
+ * takes a mesh operand (CGALUtils::createPolyhedronFromPolySet, with
+ * Grid3d's align): each coordinate to the multiple of 2^-20
  * towards zero (its cell's corner); a point whose cell no point before it took goes to
  * the nearest such cell among the 26 around it, if any, in Grid3d's order. A point too
  * far out for the grid's 64-bit cells stays where it is. */
@@ -1107,26 +1107,14 @@ static sc_status nef_mesh(const walk *w, const model_node *n, const affine *m,
     if (st != SC_OK)
         return st;
     double *xyz = malloc(((size_t)f->point_count * 3 + 1) * sizeof *xyz);
-    vec3 *at = malloc(((size_t)f->point_count + 1) * sizeof *at);
-    if (!xyz || !at) {
-        free(xyz);
-        free(at);
+    if (!xyz)
         return err_nomem(w->c->error, &n->loc);
-    }
-    for (uint32_t i = 0; i < f->point_count; i++)
-        at[i] = affine_point(m, f->points[i]);
-    /* faithful: on OpenSCAD's grid, as it makes the Nef polyhedron */
-    if (w->c->faithful && (st = grid_align(w, n, at, f->point_count)) != SC_OK) {
-        free(xyz);
-        free(at);
-        return st;
-    }
     for (uint32_t i = 0; i < f->point_count; i++) {
-        xyz[3 * i] = at[i].x;
-        xyz[3 * i + 1] = at[i].y;
-        xyz[3 * i + 2] = at[i].z;
+        vec3 p = affine_point(m, f->points[i]);
+        xyz[3 * i] = p.x;
+        xyz[3 * i + 1] = p.y;
+        xyz[3 * i + 2] = p.z;
     }
-    free(at);
     char why[512] = "";
     nef_status ns = w->nef->from_mesh(xyz, f->point_count, f->indices, f->face_start,
                                       f->face_loops, f->face_count, out, why, sizeof why);
