@@ -329,6 +329,11 @@ for mesh in faceless.stl bad.stl extra.stl short.off; do
         fail "$mesh as the model: $(cat err.txt)"
     [ -e bad.png ] && fail "$mesh as the model: an image was written"
 done
+# The quoted line is shown as printable ASCII: a terminal's escape
+# sequence in the file does not reach the terminal.
+printf 'solid x\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 0 1 \033[31m\n' >esc.stl
+printf 'import(file = "esc.stl");\ncube(size = [1, 2, 3]);\n' >import_esc.csg
+warns import_esc.csg "import_esc.csg:1:15: warning: import: 'esc.stl' is not a valid STL file (line 6: can't parse vertex line 'vertex 0 1 \\x1b[31m'); the import is empty, as OpenSCAD leaves it out (--strict makes it an error)"
 # a file that is neither binary nor ASCII STL (empty, another format):
 # OpenSCAD 2021.01 imports nothing from it, silently, and renders the
 # rest; as the model itself it is an error

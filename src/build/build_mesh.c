@@ -3045,7 +3045,7 @@ static const char *stl_unknown(const unsigned char *head, uint64_t size)
 typedef struct mesh_reading {
     int oom, empty;
     unsigned line; /* the file's line where it went wrong, where known */
-    char text[200];
+    char text[320];
 } mesh_reading;
 
 static int stl_space(char ch)
@@ -3199,10 +3199,18 @@ static const char *read_stl(const char *text, size_t size, mesh_file *m, mesh_re
         if (corners < 3 && found == 0)
             continue;
         if (found < 0 || corners >= 3) {
-            int cut = e - s > 60;
-            snprintf(r->text, sizeof r->text, "line %u: %s '%.*s%s'", line,
-                     found < 0 ? "can't parse vertex line" : "extra vertex line",
-                     cut ? 60 : (int)(e - s), s, cut ? "..." : "");
+            /* the line as printable ASCII (\xNN for any other byte), its
+             * first 60 bytes */
+            char shown[4 * 60 + 4];
+            size_t k = 0;
+            for (const char *q = s; q < e && q < s + 60; q++) {
+                unsigned char ch = (unsigned char)*q;
+                k += (size_t)snprintf(shown + k, sizeof shown - k,
+                                      ch >= 0x20 && ch < 0x7f ? "%c" : "\\x%02x", ch);
+            }
+            snprintf(r->text, sizeof r->text, "line %u: %s '%s%s'", line,
+                     found < 0 ? "can't parse vertex line" : "extra vertex line", shown,
+                     e - s > 60 ? "..." : "");
             return r->line = line, r->empty = 1, r->text;
         }
         corner[corners] = v3(c[0], c[1], c[2]);
