@@ -865,85 +865,6 @@ static int polyset_operand(const model_node *child)
     return 1;
 }
 
-/* OpenSCAD's grid for the meshes it hands to CGAL: 2^-20 (GRID_FINE). */
-#define GRID_CELLS 1048576.0
-
-typedef struct grid_key {
-    int64_t k[3];
-} grid_key;
-
-static uint64_t grid_hash(const grid_key *g)
-{
-    uint64_t h = 0;
-    for (int i = 0; i < 3; i++)
-        h = (h ^ (uint64_t)g->k[i]) * 0x9e3779b97f4a7c15ULL;
-    return h ^ (h >> 29);
-}
-
-/* The slot of key in the table of cap (a power of two) slots, where it is
- * or would go. */
-static size_t grid_slot(const grid_key *table, const unsigned char *used, size_t cap,
-                        const grid_key *key)
-{
-    size_t i = grid_hash(key) & (cap - 1);
-    while (used[i] && memcmp(&table[i], key, sizeof *key) != 0)
-        i = (i + 1) & (cap - 1);
-    return i;
-}
-
-/* Moves the count points p onto OpenSCAD 2021.01's grid as its minkowski
- * takes a mesh operand (CGALUtils::createPolyhedronFromPolySet, with
- * Grid3d's align): each coordinate to the multiple of 2^-20
- * towards zero (its cell's corner); a point whose cell no point before it took goes to
- * the nearest such cell among the 26 around it, if any, in Grid3d's order. A point too
- * far out for the grid's 64-bit cells stays where it is. */
-static sc_status grid_align(const walk *w, const model_node *n, vec3 *p, uint32_t count)
-{
-    size_t cap = 16;
-    while (cap < 2 * (size_t)count)
-        cap *= 2;
-    grid_key *table = malloc(cap * sizeof *table);
-    unsigned char *used = calloc(cap, 1);
-    if (!table || !used) {
-        free(table);
-        free(used);
-        return err_nomem(w->c->error, &n->loc);
-    }
-    for (uint32_t i = 0; i < count; i++) {
-        double c[3] = {p[i].x * GRID_CELLS, p[i].y * GRID_CELLS, p[i].z * GRID_CELLS};
-        if (!(fabs(c[0]) < 0x1p62 && fabs(c[1]) < 0x1p62 && fabs(c[2]) < 0x1p62))
-            continue;
-        grid_key key = {{(int64_t)c[0], (int64_t)c[1], (int64_t)c[2]}};
-        size_t at = grid_slot(table, used, cap, &key);
-        if (!used[at]) {
-            double best = 10;
-            size_t found = cap;
-            for (int64_t jx = -1; jx <= 1; jx++)
-                for (int64_t jy = -1; jy <= 1; jy++)
-                    for (int64_t jz = -1; jz <= 1; jz++) {
-                        grid_key k = {{key.k[0] + jx, key.k[1] + jy, key.k[2] + jz}};
-                        size_t j = grid_slot(table, used, cap, &k);
-                        double d = sqrt((double)(jx * jx + jy * jy + jz * jz));
-                        if (used[j] && d < best) {
-                            best = d;
-                            found = j;
-                        }
-                    }
-            if (found < cap) {
-                key = table[found];
-            } else {
-                table[at] = key;
-                used[at] = 1;
-            }
-        }
-        p[i] = v3((double)key.k[0] / GRID_CELLS, (double)key.k[1] / GRID_CELLS,
-                  (double)key.k[2] / GRID_CELLS);
-    }
-    free(table);
-    free(used);
-    return SC_OK;
-}
-
 /* The parts of minkowski node n (through m) appended to out; none, with
  * *not_closed set, when a mesh among its children is not closed
  * (closed_check). Where CGAL's convex decomposition of the first child
@@ -974,7 +895,7 @@ static sc_status minkowski_parts(const walk *w, const model_node *n, const affin
         return depth_error(w, n);
     /* The sum is made in n's own frame, as OpenSCAD makes it, and carried
      * through m at the end: there (faithful) each mesh operand is put on
-     * OpenSCAD's grid (grid_align), the sum so far too when it is one part
+     * OpenSCAD's grid (build_mesh_grid_align), the sum so far too when it is one part
      * and another child follows, as OpenSCAD's next step takes it as a
      * mesh. The parts of an operand OpenSCAD decomposes, or holds as a Nef
      * polyhedron, are not moved. */
@@ -988,7 +909,8 @@ static sc_status minkowski_parts(const walk *w, const model_node *n, const affin
         partlist parts = {NULL, 0, 0};
         st = collect_alone(&inner, n, child, &local, depth + 1, &parts);
         if (st == SC_OK && w->c->faithful && parts.count == 1 && polyset_operand(child))
-            st = grid_align(w, n, parts.items[0].p, parts.items[0].count);
+            st = build_mesh_grid_align(w->c, &n->loc, parts.items[0].p,
+                                       parts.items[0].count);
         if (st == SC_OK)
             st = reduce(&inner, n, &parts);
         if (st != SC_OK && failure.name) { /* the sum so far, as OpenSCAD's */
@@ -1011,7 +933,8 @@ static sc_status minkowski_parts(const walk *w, const model_node *n, const affin
         }
         second = 0;
         if (summed && w->c->faithful && acc.count == 1 &&
-            (st = grid_align(w, n, acc.items[0].p, acc.items[0].count)) != SC_OK) {
+            (st = build_mesh_grid_align(w->c, &n->loc, acc.items[0].p,
+                                        acc.items[0].count)) != SC_OK) {
             parts_free(&parts);
             break;
         }

@@ -2163,7 +2163,10 @@ void build_mesh_faces_free(build_mesh_faces *f)
  * point, its cell's corner as float; a point past 2^40 (a million million), whose cell
  * does not fit an integer comfortably, stays as it is. k gets the cell; 0 is returned for
  * a point that is not gridded. */
-static int grid_place(vec3 p, int snap_float, int64_t k[3], vec3 *q)
+/* grid_place's snap: none, the cell's corner as float, or exactly. */
+enum { SNAP_NONE, SNAP_FLOAT, SNAP_EXACT };
+
+static int grid_place(vec3 p, int snap, int64_t k[3], vec3 *q)
 {
     const double cell = 1.0 / 1048576.0; /* OpenSCAD's GRID_FINE, 2^-20 */
     *q = p;
@@ -2172,9 +2175,68 @@ static int grid_place(vec3 p, int snap_float, int64_t k[3], vec3 *q)
     k[0] = (int64_t)(p.x / cell);
     k[1] = (int64_t)(p.y / cell);
     k[2] = (int64_t)(p.z / cell);
-    if (snap_float)
+    if (snap == SNAP_FLOAT)
         *q = v3((float)((double)k[0] * cell), (float)((double)k[1] * cell),
                 (float)((double)k[2] * cell));
+    else if (snap == SNAP_EXACT)
+        *q = v3((double)k[0] * cell, (double)k[1] * cell, (double)k[2] * cell);
+    return 1;
+}
+
+/* The slot of cell k's point in g, or of the nearest taken cell around k
+ * (Grid3d's order), where either is taken; else k's empty slot, for the
+ * caller to take (grid_take). */
+static grid_slot *grid_lookup(const grid *g, const int64_t k[3])
+{
+    grid_slot *slot = grid_find(g, k);
+    if (slot->point != UINT32_MAX || !grid_near_taken(g, k))
+        return slot;
+    int best = 10;
+    grid_slot *near = NULL;
+    for (int64_t dx = -1; dx <= 1; dx++)
+        for (int64_t dy = -1; dy <= 1; dy++)
+            for (int64_t dz = -1; dz <= 1; dz++) {
+                int64_t j[3] = {k[0] + dx, k[1] + dy, k[2] + dz};
+                int d = (int)(dx * dx + dy * dy + dz * dz);
+                if (d == 0 || d >= best)
+                    continue;
+                grid_slot *o = grid_find(g, j);
+                if (o->point != UINT32_MAX) {
+                    best = d;
+                    near = o;
+                }
+            }
+    return near ? near : slot;
+}
+
+/* Cell k's empty slot (grid_lookup) taken by point u. */
+static void grid_take(grid *g, grid_slot *slot, const int64_t k[3], uint32_t u)
+{
+    memcpy(slot->key, k, sizeof slot->key);
+    slot->point = u;
+    size_t bit = grid_block_bit(g, grid_block(k[0]), grid_block(k[1]), grid_block(k[2]));
+    g->occupied[bit / 64] |= (uint64_t)1 << (bit % 64);
+}
+
+/* A grid of room for count points; 0 when memory runs out (nothing to
+ * free then). */
+static int grid_init(grid *g, uint32_t count)
+{
+    size_t slots = 16;
+    while (slots < 2 * (size_t)count + 2)
+        slots *= 2;
+    g->slots = malloc(slots * sizeof *g->slots);
+    g->mask = slots - 1;
+    g->occupied = calloc(slots / 8, sizeof(uint64_t));
+    if (!g->slots || !g->occupied) {
+        free(g->slots);
+        free(g->occupied);
+        g->slots = NULL;
+        g->occupied = NULL;
+        return 0;
+    }
+    for (size_t i = 0; i < slots; i++)
+        g->slots[i].point = UINT32_MAX;
     return 1;
 }
 
@@ -2185,46 +2247,44 @@ static int grid_point(grid *g, build_mesh_faces *f, const vec3 *points, uint32_t
     int64_t k[3];
     vec3 q;
     grid_slot *slot = NULL;
-    if (grid_place(points[i], snap_float, k, &q)) {
-        slot = grid_find(g, k);
+    if (grid_place(points[i], snap_float ? SNAP_FLOAT : SNAP_NONE, k, &q)) {
+        slot = grid_lookup(g, k);
         if (slot->point != UINT32_MAX) {
             *merged = slot->point;
             return 1;
-        }
-        if (grid_near_taken(g, k)) {
-            int best = 10;
-            grid_slot *near = NULL;
-            for (int64_t dx = -1; dx <= 1; dx++)
-                for (int64_t dy = -1; dy <= 1; dy++)
-                    for (int64_t dz = -1; dz <= 1; dz++) {
-                        int64_t j[3] = {k[0] + dx, k[1] + dy, k[2] + dz};
-                        int d = (int)(dx * dx + dy * dy + dz * dz);
-                        if (d == 0 || d >= best)
-                            continue;
-                        grid_slot *o = grid_find(g, j);
-                        if (o->point != UINT32_MAX) {
-                            best = d;
-                            near = o;
-                        }
-                    }
-            if (near) {
-                *merged = near->point;
-                return 1;
-            }
         }
     }
     uint32_t u = f->point_count++;
     f->points[u] = q;
     f->names[u] = i;
-    if (slot) {
-        memcpy(slot->key, k, sizeof k);
-        slot->point = u;
-        size_t bit =
-            grid_block_bit(g, grid_block(k[0]), grid_block(k[1]), grid_block(k[2]));
-        g->occupied[bit / 64] |= (uint64_t)1 << (bit % 64);
-    }
+    if (slot)
+        grid_take(g, slot, k, u);
     *merged = u;
     return 1;
+}
+
+sc_status build_mesh_grid_align(const build_ctx *c, const sc_location *loc, vec3 *p,
+                                uint32_t count)
+{
+    grid g;
+    if (!grid_init(&g, count))
+        return err_nomem(c->error, loc);
+    for (uint32_t i = 0; i < count; i++) {
+        int64_t k[3];
+        vec3 q;
+        if (!grid_place(p[i], SNAP_EXACT, k, &q))
+            continue;
+        grid_slot *slot = grid_lookup(&g, k);
+        if (slot->point != UINT32_MAX) {
+            p[i] = p[slot->point];
+        } else {
+            p[i] = q;
+            grid_take(&g, slot, k, i);
+        }
+    }
+    free(g.slots);
+    free(g.occupied);
+    return SC_OK;
 }
 
 sc_status build_mesh_merge(const build_ctx *c, const sc_location *loc, int reversed,
@@ -2234,27 +2294,22 @@ sc_status build_mesh_merge(const build_ctx *c, const sc_location *loc, int rever
 {
     memset(f, 0, sizeof *f);
     uint32_t total = face_start[face_count];
-    size_t slots = 16;
-    while (slots < 2 * (size_t)point_count + 2)
-        slots *= 2;
-    grid g = {malloc(slots * sizeof *g.slots), slots - 1,
-              calloc(slots / 8, sizeof(uint64_t))};
+    grid g = {NULL, 0, NULL};
+    int gridded = grid_init(&g, point_count);
     uint32_t *map = malloc((size_t)(point_count ? point_count : 1) * sizeof *map);
     f->points = malloc((size_t)(point_count ? point_count : 1) * sizeof *f->points);
     f->names = malloc((size_t)(point_count ? point_count : 1) * sizeof *f->names);
     f->indices = malloc((size_t)(total ? total : 1) * sizeof *f->indices);
     f->face_start = malloc(((size_t)face_count + 1) * sizeof *f->face_start);
     f->twice = malloc((size_t)(face_count ? face_count : 1) * sizeof *f->twice);
-    if (!g.slots || !g.occupied || !map || !f->points || !f->names || !f->indices ||
-        !f->face_start || !f->twice) {
+    if (!gridded || !map || !f->points || !f->names || !f->indices || !f->face_start ||
+        !f->twice) {
         free(g.slots);
         free(g.occupied);
         free(map);
         build_mesh_faces_free(f);
         return err_nomem(c->error, loc);
     }
-    for (size_t i = 0; i < slots; i++)
-        g.slots[i].point = UINT32_MAX;
     for (uint32_t i = 0; i < point_count; i++)
         map[i] = UINT32_MAX;
     /* Points in the order OpenSCAD meets them: face by face, each face
@@ -3560,7 +3615,7 @@ static vec3 *merged_points(const vec3 *points, const build_mesh_faces *f, int sn
         return NULL;
     for (uint32_t u = 0; u < f->point_count; u++) {
         int64_t k[3];
-        grid_place(points[f->names[u]], snap_float, k, &out[u]);
+        grid_place(points[f->names[u]], snap_float ? SNAP_FLOAT : SNAP_NONE, k, &out[u]);
     }
     return out;
 }

@@ -203,6 +203,15 @@ int build_mesh_face_triangles(const vec3 *p, uint32_t n, int reversed,
                               const uint32_t *numbers, uint32_t *tris, uint32_t cap,
                               uint32_t *written);
 
+/* Moves the count points p, in order, onto OpenSCAD 2021.01's grid as
+ * Grid3d's align moves them where it hands a mesh to CGAL (the merge's
+ * rule, build_mesh.c): each coordinate to the multiple of 2^-20 towards
+ * zero, exactly; a point whose cell no point before it took goes where the
+ * nearest taken cell among the 26 around it went, if any. A point past
+ * 2^40 stays where it is. Fails only when memory runs out (at loc). */
+sc_status build_mesh_grid_align(const build_ctx *c, const sc_location *loc, vec3 *p,
+                                uint32_t count);
+
 /* The path of a file a model names: relative names are relative to the
  * directory of the file being read (c->file). malloc'd; NULL when memory
  * runs out. */
