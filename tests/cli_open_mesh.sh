@@ -191,6 +191,32 @@ for mode in "" --faithful; do
     # shellcheck disable=SC2086
     inside hull-diff-poly.csg "in in out" $mode -- 0.05,0.05,0.05 1.9,1.9,1.9 2.1,1,1
 done
+# a mesh CGAL takes though an edge has three faces (a face given twice, as
+# OpenSCAD's polyhedron(), which CGAL's builder takes): OpenSCAD 2021.01
+# sums it with no message, in both modes (minkowski() { import("dup.stl");
+# cube(0.5); } against openscad's STL of it: "same"); the default mode
+# refused it where the same polyhedron was summed
+{
+    echo "solid dup"
+    for f in "0 0 0;0 1 0;1 0 0" "0 0 0;1 0 0;0 0 1" "1 0 0;0 1 0;0 0 1" \
+        "0 0 0;0 0 1;0 1 0" "0 0 0;0 0 1;0 1 0"; do
+        echo " facet normal 0 0 0"
+        echo "  outer loop"
+        IFS=';' read -r a b c <<<"$f"
+        printf '   vertex %s\n' "$a" "$b" "$c"
+        echo "  endloop"
+        echo " endfacet"
+    done
+    echo "endsolid dup"
+} >dup.stl
+printf 'minkowski() {\n\timport(file = "dup.stl");\n\tcube(size = [0.5, 0.5, 0.5], center = false);\n}\n' \
+    >mink-dup.csg
+want_err=""
+for mode in "" --faithful; do
+    # shellcheck disable=SC2086
+    inside mink-dup.csg "in in out out" $mode -- 0.2,0.2,0.2 1.2,0.2,0.2 1.6,0.3,0.3 \
+        0.1,0.1,-0.1
+done
 for case in "mink.csg:2:16: error: $edge" "mink-poly.csg:2:2: error: $poly_edge" \
     "mink-union.csg:3:17: error: $edge" "hull-union.csg:3:17: error: $edge" \
     "hull-diff.csg:4:17: error: $edge" "hull-diff-poly.csg:4:3: error: $poly_edge"; do

@@ -392,7 +392,10 @@ static sc_status polyhedron_points(const walk *w, const model_node *n, const aff
  * both modes: OpenSCAD hulls the vertices of its polygons, and the exact
  * leaves of default mode have none. A hull takes an imported mesh closed
  * or not, silently, as OpenSCAD 2021.01 hulls the corners of the mesh it
- * reads (build_import_mesh); minkowski needs a solid (build_import_summand). */
+ * reads (build_import_mesh). A minkowski takes it as the polyhedron it
+ * would be: closed_check has emptied the minkowski where CGAL takes no Nef
+ * polyhedron of it, and CGAL takes some that are not closed (a face given
+ * twice), which OpenSCAD sums. */
 static sc_status mesh_prim(const walk *w, const model_node *n, prim *out,
                            const char **empty)
 {
@@ -409,8 +412,6 @@ static sc_status mesh_prim(const walk *w, const model_node *n, prim *out,
         return build_pending(w->c, n);
     if (kind == MODEL_SURFACE)
         return build_surface(w->c, n->u.surface, out, empty);
-    if (kind == MODEL_IMPORT && w->convex)
-        return build_import_summand(w->c, n->u.import, out, empty);
     if (kind == MODEL_IMPORT)
         return build_import_mesh(w->c, n->u.import, out, empty);
     sc_status st = kind == MODEL_ROTATE_EXTRUDE

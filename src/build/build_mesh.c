@@ -4245,12 +4245,6 @@ sc_status build_import(const build_ctx *c, const model_import *import, prim *out
     return import_one(c, import, IMPORT_JOINED | IMPORT_ALONE, out, empty);
 }
 
-sc_status build_import_summand(const build_ctx *c, const model_import *import, prim *out,
-                               const char **empty)
-{
-    return import_one(c, import, IMPORT_JOINED, out, empty);
-}
-
 sc_status build_import_mesh(const build_ctx *c, const model_import *import, prim *out,
                             const char **empty)
 {

@@ -270,14 +270,9 @@ sc_status build_import_solids(const build_ctx *c, const model_import *import,
  * take an import's triangles as a solid (projection's cut). */
 sc_status build_import(const build_ctx *c, const model_import *import, prim *out,
                        const char **empty);
-/* build_import for minkowski, as before the cut and boolean rule: a file
- * of one object that is not closed is an error where c takes no note
- * (build_hull.c's minkowski checks its meshes first, and empties itself
- * with a warning as OpenSCAD 2021.01 does). */
-sc_status build_import_summand(const build_ctx *c, const model_import *import, prim *out,
-                               const char **empty);
 /* build_import for the builders that take only an import's corners or
- * faces (hull, projection without cut): a file of one object gives its
+ * faces (hull, projection without cut, and minkowski once closed_check in
+ * build_hull.c has found CGAL takes it): a file of one object gives its
  * mesh closed or not, one that is not closed as the parity rule takes it
  * (its triangles as they come), without a warning and never an error, as
  * OpenSCAD 2021.01 hulls and projects the mesh it reads without asking
