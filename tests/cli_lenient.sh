@@ -300,7 +300,7 @@ for mesh in faceless.stl bad.stl extra.stl short.off; do
     faceless.stl) want="import_$mesh.csg:1:1: warning: import without faces is empty" ;;
     bad.stl) why="line 6: can't parse vertex line 'vertex 0 1 0x'" ;;
     extra.stl) why="line 7: extra vertex line 'vertex 0 0 1'" ;;
-    short.off) why="fewer points than its header says, or a bad coordinate" ;;
+    short.off) why="line 5: the file ends before point 4 of 4" ;;
     esac
     kind=STL
     [ $mesh = short.off ] && kind=OFF
@@ -321,14 +321,100 @@ for mesh in faceless.stl bad.stl extra.stl short.off; do
     [ $mesh = faceless.stl ] && continue
     check
     "$bin" render $mesh -o bad.png -q 2>err.txt && fail "$mesh rendered as the model"
-    case $mesh in
-    *.stl) at="$mesh:$(echo "$why" | sed 's/^line \([0-9]*\):.*/\1/'):1: " ;;
-    *) at="$mesh: " ;;
-    esac
+    at="$mesh:$(echo "$why" | sed 's/^line \([0-9]*\):.*/\1/'):1: "
     [ "$(cat err.txt)" = "${at}error: import: '$PWD/$mesh' is not a valid $kind file ($why)" ] ||
         fail "$mesh as the model: $(cat err.txt)"
     [ -e bad.png ] && fail "$mesh as the model: an image was written"
 done
+
+# An OFF file's numbers as CGAL 5's reader takes them (OpenSCAD 2021.01's
+# import): the point count starts with a digit and the counts are ints
+# ("in >> n"); each point and face is a line of its own, its numbers as
+# the stream's num_get<double> extracts them, so "1.0.5" is 1.0 then .5,
+# "1-2" is 1 then -2, and "0x1", "1e", "++1" and "1e400" end the line's
+# numbers; a face's count and indices are truncated. Each tetrahedron
+# below is read (a point in it is inside) or CGAL stops in it and nothing
+# is imported, as openscad shows (checked with --faithful against its
+# STL of the same model where it is installed).
+off_v="0 0 0
+1 0 0
+0 1 0
+0 0 1"
+off_f="3 0 2 1
+3 0 1 3
+3 1 2 3
+3 0 3 2"
+off_case() { # NAME HEADER COUNTS POINTS FACES
+    printf '%s\n%s\n%s\n%s\n' "$2" "$3" "$4" "$5" >"cg_$1.off"
+}
+off_case plain OFF "4 4 0" "$off_v" "$off_f"
+off_case face_plus OFF "4 +4 0" "$off_v" "$off_f"
+off_case same_line "OFF 4 4 0" "" "$off_v" "$off_f"
+off_case dims "nOFF
+3" "4 4 0" "$off_v" "$off_f"
+off_case glued OFF "4 4 0" "0 0 0
+1.0.5 0 0
+0 1 0
+0 0 1" "$off_f"
+off_case minus_glued OFF "4 4 0" "0 0 0
+1-2 0 0
+0 1 0
+0 0 1" "$off_f"
+off_case truncated OFF "4 4 0" "$off_v" "3.7 0 2.9 1
+3 0 1 3
+3 1 2 3
+3 0 3 2"
+off_case count_double OFF "4.0 4 0" "$off_v" "$off_f"
+off_case count_plus OFF "+4 4 0" "$off_v" "$off_f"
+off_case count_hex OFF "0x4 4 0" "$off_v" "$off_f"
+off_case no_edges OFF "4 4" "$off_v" "$off_f"
+for bad in 0x1 1e ++1 1e400 1abc; do
+    off_case "point_$bad" OFF "4 4 0" "0 0 0
+$bad 0 0
+0 1 0
+0 0 1" "$off_f"
+done
+off_case split OFF "4 4 0" "0 0 0
+1 0
+0
+0 1 0
+0 0 1" "$off_f"
+for off in cg_*.off; do
+    name=${off%.off}
+    printf 'union() {\n\timport(file = "%s");\n\tmultmatrix([[1, 0, 0, 5], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]) {\n\t\tcube(size = [1, 1, 1], center = false);\n\t}\n}\n' "$off" >"$name.csg"
+    case $name in
+    cg_plain | cg_face_plus | cg_same_line | cg_dims | cg_glued | cg_minus_glued | cg_truncated) want="in" ;;
+    *) want="out" ;;
+    esac
+    check
+    "$bin" inside "$name.csg" --point=0.1,0.1,0.1 --point=5.5,0.5,0.5 >in.txt 2>err.txt ||
+        fail "$name: exit $?: $(cat err.txt)"
+    [ "$(tr '\n' ' ' <in.txt)" = "$want in " ] || fail "$name: $(tr '\n' ' ' <in.txt), want $want in"
+    if [ $want = in ]; then
+        [ -s err.txt ] && fail "$name: $(cat err.txt)"
+    else
+        grep -q "warning: import: '$off' is not a valid OFF file (line [0-9]*: .*); the import is empty" err.txt ||
+            fail "$name: $(cat err.txt)"
+    fi
+    if command -v openscad >/dev/null; then
+        check
+        openscad -o "$PWD/os_$name.stl" --export-format binstl "$name.csg" >/dev/null 2>&1 ||
+            fail "openscad did not render $name.csg"
+        same "$name.csg" "os_$name.stl" --faithful
+    fi
+done
+# "1.0.5 0 0" is the point (1, 0.5, 0): the tetrahedron's corner moved
+check
+"$bin" inside cg_glued.csg --point=0.8,0.45,0.05 --point=0.1,0.02,0.02 >in.txt 2>&1
+[ "$(tr '\n' ' ' <in.txt)" = "in out " ] || fail "cg_glued: $(tr '\n' ' ' <in.txt)"
+# where CGAL's builder is left open (an index missing from a face's line,
+# or out of range), openscad aborts: an error at the face's line
+printf 'OFF\n4 4 0\n%s\n3 0 2\n1\n3 0 1 3\n3 1 2 3\n3 0 3 2\n' "$off_v" >cg_missing.off
+printf 'import(file = "cg_missing.off");\n' >cg_missing.csg
+check
+"$bin" render cg_missing.csg -o bad.png -q 2>err.txt && fail "cg_missing.csg rendered"
+[ "$(cat err.txt)" = "cg_missing.csg:1:15: error: import: 'cg_missing.off' is not a valid OFF file (line 7: face 1 has fewer indices than its point count)" ] ||
+    fail "cg_missing.csg: $(cat err.txt)"
 # The quoted line is shown as printable ASCII: a terminal's escape
 # sequence in the file does not reach the terminal.
 printf 'solid x\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 0 1 \033[31m\n' >esc.stl

@@ -49,6 +49,7 @@
 #include <ctype.h>
 #include <errno.h>
 #include <float.h>
+#include <limits.h>
 #include <math.h>
 #include <stdint.h>
 #include <stdio.h>
@@ -3281,164 +3282,242 @@ static const char *read_stl(const char *text, size_t size, mesh_file *m, mesh_re
     return merge_corners(m) ? NULL : (r->oom = 1, "out of memory");
 }
 
-/* The next whitespace-separated token of an OFF file, skipping '#'
- * comments; *newline is set when a line break came before it. */
-static const char *off_token(const char **p, const char *end, int *newline)
+/* Where CGAL's OFF reader is in the file: at p, on line line (1-based). */
+typedef struct off_cursor {
+    const char *start, *p, *end;
+    unsigned line;
+} off_cursor;
+
+/* isspace in the C locale, as the stream's ctype takes it. */
+static int off_space(char ch)
 {
-    *newline = 0;
-    for (;;) {
-        while (*p < end && (**p == ' ' || **p == '\t' || **p == '\r' || **p == '\n')) {
-            if (**p == '\n')
-                *newline = 1;
-            (*p)++;
+    return ch == ' ' || ch == '\t' || ch == '\n' || ch == '\v' || ch == '\f' ||
+           ch == '\r';
+}
+
+/* Past white space (CGAL's "in >> c" before a character). */
+static void off_blank(off_cursor *c)
+{
+    for (; c->p < c->end && off_space(*c->p); c->p++)
+        if (*c->p == '\n')
+            c->line++;
+}
+
+/* CGAL's skip_comment_OFF: past white space and the lines it starts with
+ * '#'. */
+static void off_skip_comment(off_cursor *c)
+{
+    for (off_blank(c); c->p < c->end && *c->p == '#'; off_blank(c))
+        while (c->p < c->end && *c->p++ != '\n')
+            ;
+    /* the '\n' ending a comment line was counted by neither loop */
+}
+
+/* A number as libstdc++'s num_get<double> extracts it from [*q, e) in the
+ * C locale ("is >> d", which CGAL's reader runs on a line): past white
+ * space, the longest run of the form [+-] digits [. digits] [(e|E) [+-]
+ * digits] (an exponent only after a digit), taken whole by strtod, or the
+ * extraction fails; so "1.5.3" is 1.5 and then .3, "1-2" is 1 and then
+ * -2, and "0x1", "1e", "inf" and "1e999" fail. 0 when it fails. */
+static int off_double(const char **q, const char *e, double *out)
+{
+    const char *s = *q;
+    while (s < e && off_space(*s))
+        s++;
+    const char *t = s;
+    int dot = 0, digits = 0;
+    if (t < e && (*t == '+' || *t == '-'))
+        t++;
+    for (; t < e; t++) {
+        if (*t >= '0' && *t <= '9') {
+            digits = 1;
+        } else if (*t == '.' && !dot) {
+            dot = 1;
+        } else if ((*t == 'e' || *t == 'E') && digits) {
+            t++;
+            if (t < e && (*t == '+' || *t == '-'))
+                t++;
+            while (t < e && *t >= '0' && *t <= '9')
+                t++;
+            break;
+        } else {
+            break;
         }
-        if (*p < end && **p == '#') {
-            while (*p < end && **p != '\n')
-                (*p)++;
-            continue;
-        }
-        break;
     }
-    if (*p >= end)
-        return NULL;
-    const char *t = *p;
-    while (*p < end &&
-           !(**p == ' ' || **p == '\t' || **p == '\r' || **p == '\n' || **p == '#'))
-        (*p)++;
-    return t;
+    *q = t;
+    char buf[128], *big = NULL, *text = buf;
+    size_t n = (size_t)(t - s);
+    if (n >= sizeof buf && !(text = big = malloc(n + 1)))
+        return 0;
+    memcpy(text, s, n);
+    text[n] = '\0';
+    char *after;
+    *out = strtod(text, &after);
+    int ok = n > 0 && *after == '\0' && !isinf(*out);
+    free(big);
+    return ok;
 }
 
-static int off_number(const char **p, const char *end, double *out)
+/* An int as num_get<long> extracts it ("in >> n" for the header's
+ * counts): past white space (counting lines), [+-] and at least one
+ * digit, within int. 0 when it fails. */
+static int off_int(off_cursor *c, long *out)
 {
-    int nl;
-    const char *t = off_token(p, end, &nl);
-    if (!t)
+    off_blank(c);
+    const char *t = c->p;
+    int negative = 0;
+    if (t < c->end && (*t == '+' || *t == '-'))
+        negative = *t++ == '-';
+    const char *digits = t;
+    long v = 0;
+    for (; t < c->end && *t >= '0' && *t <= '9'; t++)
+        if ((v = v * 10 + (*t - '0')) > (long)INT_MAX + 1)
+            v = (long)INT_MAX + 2; /* past int either way */
+    c->p = t;
+    if (t == digits || v > (long)INT_MAX + negative)
         return 0;
-    char buf[64];
-    size_t len = (size_t)(*p - t);
-    if (len >= sizeof buf)
-        return 0;
-    memcpy(buf, t, len);
-    buf[len] = 0;
-    char *next;
-    *out = strtod(buf, &next);
-    return *next == 0;
+    *out = negative ? -v : v;
+    return 1;
 }
 
-/* The numbers at the start of the line from *p (to '\n' or a '#'), into
- * out (at most cap): how many; *p moves past the line. As CGAL's OFF
- * reader takes a point's line, numbers until the first that is not one. */
-static int off_line(const char **p, const char *end, double *out, int cap)
+/* CGAL's scanner's next line of numbers (a point's or a face's): past
+ * white space and comment lines, the line to its end or its '#'; *s and
+ * *e bound it, *at is its number, and c moves to the next line. 0 at the
+ * end of the file, with the file's last line in *at. */
+static int off_next_line(off_cursor *c, const char **s, const char **e, unsigned *at)
 {
-    const char *e = *p;
-    while (e < end && *e != '\n')
-        e++;
-    const char *line_end = e;
-    for (const char *h = *p; h < e; h++)
-        if (*h == '#') {
-            line_end = h;
-            break;
-        }
-    int count = 0;
-    const char *q = *p;
-    while (count < cap) {
-        while (q < line_end && (*q == ' ' || *q == '\t' || *q == '\r'))
-            q++;
-        const char *t = q;
-        while (q < line_end && !(*q == ' ' || *q == '\t' || *q == '\r'))
-            q++;
-        char buf[64];
-        size_t len = (size_t)(q - t);
-        if (len == 0 || len >= sizeof buf)
-            break;
-        memcpy(buf, t, len);
-        buf[len] = 0;
-        char *next;
-        out[count] = strtod(buf, &next);
-        if (*next)
-            break;
-        count++;
+    off_skip_comment(c);
+    *at = c->line;
+    if (c->p >= c->end) {
+        *at -= c->p > c->start && c->p[-1] == '\n' && c->line > 1;
+        return 0;
     }
-    *p = e;
-    return count;
+    *s = c->p;
+    while (c->p < c->end && *c->p != '\n')
+        c->p++;
+    *e = memchr(*s, '#', (size_t)(c->p - *s));
+    if (!*e)
+        *e = c->p;
+    if (c->p < c->end) {
+        c->p++;
+        c->line++;
+    }
+    return 1;
 }
 
-/* An OFF file as CGAL's reader (CGAL 5, which OpenSCAD 2021.01's import()
- * runs) takes it: the keyword [ST][C][N][4]OFF (texture coordinates,
- * colours, normals and a homogeneous coordinate after each point, all
- * but the point ignored), the counts, then each point on a line of its
- * own, its first three numbers (over the fourth, 4OFF), then the faces. */
+/* An OFF file as CGAL 5's reader (which OpenSCAD 2021.01's import()
+ * runs) takes it (File_header_OFF, File_scanner_OFF, Polyhedron_scan_OFF):
+ * the keyword [ST][C][N][4][n]OFF (texture coordinates, colours, normals
+ * and a homogeneous coordinate after each point, all but the point
+ * ignored; nOFF, the dimension first, of which the first three
+ * coordinates are taken); the point count, starting with a digit, then the
+ * face and edge counts; then each point on a line of its own, its first
+ * three numbers (over the fourth, 4OFF), and each face on a line of its
+ * own, its point count and indices as numbers truncated to integers. */
 static const char *read_off(const char *text, size_t size, mesh_file *m, mesh_reading *r)
 {
     /* OpenSCAD imports nothing from a file CGAL's reader stops in, and
-     * renders the rest; it aborts on an index out of range (CGAL's
-     * incremental builder), and reads a binary OFF file */
+     * renders the rest; it aborts where a face's index is out of range or
+     * missing (CGAL's builder is left open), and reads a binary OFF file */
     r->empty = 1;
-    const char *p = text, *end = text + size;
-    int nl;
-    const char *t = off_token(&p, end, &nl);
-    size_t len = 0;
-    while (t && t + len < p && isalnum((unsigned char)t[len]))
-        len++;
-    size_t j = 0;
-    int homogeneous = 0;
-    if (t && len >= 2 && t[0] == 'S' && t[1] == 'T')
+    off_cursor c = {text, text, text + size, 1};
+    unsigned at = 1; /* the line a message names */
+    /* what is wrong, at line at; lenient unless r->empty is cleared first */
+#define OFF_FAIL(...)                                                                    \
+    return snprintf(r->text, sizeof r->text, "line %u: ", at),                           \
+           snprintf(r->text + strlen(r->text), sizeof r->text - strlen(r->text),         \
+                    __VA_ARGS__),                                                        \
+           r->line = at, r->text
+    off_skip_comment(&c);
+    at = c.line;
+    const char *t = c.p;
+    while (c.p < c.end && isalnum((unsigned char)*c.p) && c.p - t < 41)
+        c.p++;
+    size_t len = (size_t)(c.p - t), j = 0;
+    if (c.p < c.end && c.p - t < 41 && *c.p != '\n') /* the character that ends it */
+        c.p++;
+    int homogeneous = 0, dimensional = 0;
+    if (len >= 2 && t[0] == 'S' && t[1] == 'T')
         j += 2;
-    if (t && j < len && t[j] == 'C')
+    if (j < len && t[j] == 'C')
         j++;
-    if (t && j < len && t[j] == 'N')
+    if (j < len && t[j] == 'N')
         j++;
-    if (t && j < len && t[j] == '4') {
+    if (j < len && t[j] == '4') {
         homogeneous = 1;
         j++;
     }
-    if (t && j < len && t[j] == 'n')
-        return r->empty = 0,
-               "it is an nOFF file (points of any dimension), which is not read";
-    if (!t || len != j + 3 || strncmp(t + j, "OFF", 3) != 0)
-        return "it does not start with 'OFF' (or COFF, NOFF, 4OFF, STOFF)";
-    p = t + len;
-    const char *peek = p, *word = off_token(&peek, end, &nl);
-    if (word && peek - word == 6 && strncmp(word, "BINARY", 6) == 0)
-        return r->empty = 0, "it is a binary OFF file, which is not read";
-    double counts[3];
-    for (int k = 0; k < 3; k++)
-        if (!off_number(&p, end, &counts[k]) || !(counts[k] >= 0) ||
-            counts[k] != floor(counts[k]) || counts[k] > UINT32_MAX / 4)
-            return "bad point, face and edge counts";
-    uint32_t nv = (uint32_t)counts[0], nf = (uint32_t)counts[1];
-    for (uint32_t i = 0; i < nv; i++) {
-        double c[4] = {0, 0, 0, 1};
-        const char *line = off_token(&p, end, &nl); /* past space and comments */
-        p = line ? line : end;
-        if (!line || off_line(&p, end, c, 4) < 3 + homogeneous)
-            return "fewer points than its header says, or a bad coordinate";
-        vec3 q = homogeneous && c[3] != 1 ? v3(c[0] / c[3], c[1] / c[3], c[2] / c[3])
-                                          : v3(c[0], c[1], c[2]);
+    if (j < len && t[j] == 'n') {
+        dimensional = 1;
+        j++;
+    }
+    if (len < 2 || isdigit((unsigned char)t[1]) ||
+        (isdigit((unsigned char)t[0]) && t[0] != '4') || len != j + 3 ||
+        strncmp(t + j, "OFF", 3) != 0)
+        OFF_FAIL("it does not start with 'OFF' (or COFF, NOFF, 4OFF, nOFF, STOFF)");
+    off_skip_comment(&c);
+    at = c.line;
+    if (c.p < c.end && !isdigit((unsigned char)*c.p)) {
+        const char *w = c.p;
+        while (c.p < c.end && isalnum((unsigned char)*c.p))
+            c.p++;
+        if (c.p - w == 6 && strncmp(w, "BINARY", 6) == 0)
+            return r->empty = 0, "it is a binary OFF file, which is not read";
+        OFF_FAIL("the point count is not a number");
+    }
+    long nv, nf, edges;
+    if (!off_int(&c, &nv) || (dimensional && !off_int(&c, &nv)))
+        OFF_FAIL("the point count is not a number");
+    at = c.line;
+    if (!off_int(&c, &nf) || nf < 0)
+        OFF_FAIL("the face count is not a number of 0 or more");
+    at = c.line;
+    if (!off_int(&c, &edges))
+        OFF_FAIL("the edge count is not a number");
+    if (nv < 0)
+        OFF_FAIL("the point count is below 0");
+    for (long i = 0; i < nv; i++) {
+        const char *s, *e;
+        double v[4] = {0, 0, 0, 1};
+        int got = 0;
+        if (!off_next_line(&c, &s, &e, &at))
+            OFF_FAIL("the file ends before point %ld of %ld", i + 1, nv);
+        while (got < 3 + homogeneous && off_double(&s, e, &v[got]))
+            got++;
+        if (got < 3 + homogeneous)
+            OFF_FAIL("point %ld has fewer than %d numbers", i + 1, 3 + homogeneous);
+        vec3 q = homogeneous && v[3] != 1 ? v3(v[0] / v[3], v[1] / v[3], v[2] / v[3])
+                                          : v3(v[0], v[1], v[2]);
         if (!v3_is_finite(q))
-            return "a point is not finite";
+            OFF_FAIL("point %ld is not finite", i + 1);
         if (!add_point(m, q))
             return r->oom = 1, "out of memory";
     }
-    for (uint32_t f = 0; f < nf; f++) {
+    for (long f = 0; f < nf; f++) {
+        const char *s, *e;
         double k;
-        if (!off_number(&p, end, &k) || k != floor(k) || k < 3 || k > nv)
-            return "fewer faces than its header says, or a face with a bad point count";
+        if (!off_next_line(&c, &s, &e, &at))
+            OFF_FAIL("the file ends before face %ld of %ld", f + 1, nf);
+        if (!off_double(&s, e, &k) || !(k >= 3) || k > (double)nv)
+            OFF_FAIL("face %ld has fewer than 3 points, or more than the file has",
+                     f + 1);
         if (!start_face(m))
             return r->oom = 1, "out of memory";
-        for (uint32_t j = 0; j < (uint32_t)k; j++) {
+        for (uint32_t n = 0; n < (uint32_t)k; n++) {
             double i;
-            if (!off_number(&p, end, &i) || i != floor(i))
-                return "a face's point index is not an index";
-            if (i < 0 || i >= nv)
-                return r->empty = 0, "a face's point index is out of range";
+            if (!off_double(&s, e, &i)) {
+                r->empty = 0;
+                OFF_FAIL("face %ld has fewer indices than its point count", f + 1);
+            }
+            if (!(i >= 0 && i < (double)nv)) {
+                r->empty = 0;
+                OFF_FAIL("a point index of face %ld is out of range", f + 1);
+            }
             if (!add_index(m, (uint32_t)i))
                 return r->oom = 1, "out of memory";
         }
-        /* anything after the indices on the line is a colour */
-        while (p < end && *p != '\n')
-            p++;
     }
+#undef OFF_FAIL
     return finish_faces(m) ? NULL : (r->oom = 1, "out of memory");
 }
 
