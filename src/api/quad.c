@@ -731,13 +731,17 @@ sc_estimate quad_combine(const quad_grid grids[3], int k)
     return e;
 }
 
-sc_estimate quad_combine_sum(const quad_grid grids[3], int k)
+sc_estimate quad_combine_largest(const quad_grid grids[3], int k)
 {
-    sc_estimate e = {0, 0};
+    sc_estimate e;
+    double lo = grids[0].total[k], hi = lo, own = 0;
     for (int a = 0; a < 3; a++) {
-        e.value += grids[a].total[k];
-        e.error += grids[a].total_error[k];
+        lo = fmin(lo, grids[a].total[k]);
+        hi = fmax(hi, grids[a].total[k]);
+        own = fmax(own, grids[a].total_error[k]);
     }
+    e.value = hi;
+    e.error = own + (hi - lo);
     return e;
 }
 

@@ -200,9 +200,11 @@ sc_status quad_integrate3(const double lo[3], const double hi[3], int widen, int
  * largest distance of an axis's estimate from the mean. */
 sc_estimate quad_combine(const quad_grid grids[3], int k);
 
-/* Adds the three axes' estimates of value k where each estimates its own
- * share of the whole (compare's weighted differences), with the sum of
- * their own errors. */
-sc_estimate quad_combine_sum(const quad_grid grids[3], int k);
+/* Combines the three axes' estimates of a value that lines along one axis
+ * can miss where lines along another cannot (a volume of difference that
+ * is a sheet parallel to one axis: it lies between that axis's lines, and
+ * the other axes' lines cross it) into the largest, with an error of the
+ * largest own error plus the spread of the three. */
+sc_estimate quad_combine_largest(const quad_grid grids[3], int k);
 
 #endif
