@@ -327,6 +327,48 @@ for mesh in faceless.stl bad.stl extra.stl short.off; do
     [ -e bad.png ] && fail "$mesh as the model: an image was written"
 done
 
+# A corner that is nan or inf: OpenSCAD 2021.01 reads it, and leaves the
+# mesh out of its union with the rest (ASCII silently, binary with "The
+# given mesh is not closed!"): the warning, and the rest rendered.
+python3 -c '
+import struct
+P = [(0, 0, 0), (1, 0, 0), (0, 1, 0), (0, 0, 1)]
+F = [(0, 2, 1), (0, 1, 3), (1, 2, 3), (0, 3, 2)]
+for bad in ("nan", "inf"):
+    with open("corner_%s.stl" % bad, "w") as f:
+        f.write("solid t\n")
+        for k, face in enumerate(F):
+            f.write(" facet normal 0 0 0\n  outer loop\n")
+            for i in face:
+                p = ("%s" % bad, 1, 0) if (k, i) == (3, 2) else P[i]
+                f.write("   vertex %s %s %s\n" % p)
+            f.write("  endloop\n endfacet\n")
+        f.write("endsolid t\n")
+d = bytes(80) + struct.pack("<I", 4)
+for k, face in enumerate(F):
+    d += struct.pack("<3f", 0, 0, 0)
+    for i in face:
+        d += struct.pack("<3f", *((float("nan"), 1, 0) if (k, i) == (3, 2) else P[i]))
+    d += bytes(2)
+open("corner_binary.stl", "wb").write(d)'
+printf 'multmatrix([[1, 0, 0, 5], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]) {\n\tcube(size = [1, 1, 1], center = false);\n}\n' >corner_ref.csg
+for mesh in corner_nan.stl corner_inf.stl corner_binary.stl; do
+    printf 'union() {\n\timport(file = "%s");\n\tmultmatrix([[1, 0, 0, 5], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]) {\n\t\tcube(size = [1, 1, 1], center = false);\n\t}\n}\n' $mesh >import_$mesh.csg
+    why="line 27: a corner is not finite"
+    [ $mesh = corner_binary.stl ] && why="a corner is not finite"
+    for mode in "" --faithful; do
+        warns import_$mesh.csg "import_$mesh.csg:2:16: warning: import: '$mesh' is not a valid STL file ($why); the import is empty, as OpenSCAD leaves it out (--strict makes it an error)" $mode
+        same import_$mesh.csg corner_ref.csg $mode
+        refuses import_$mesh.csg "import_$mesh.csg:2:16: error: import: '$mesh' is not a valid STL file ($why)" $mode
+    done
+    if command -v openscad >/dev/null; then
+        check
+        openscad -o "$PWD/os_$mesh" --export-format binstl import_$mesh.csg >/dev/null 2>&1 ||
+            fail "openscad did not render import_$mesh.csg"
+        same import_$mesh.csg "os_$mesh" --faithful
+    fi
+done
+
 # An OFF file's numbers as CGAL 5's reader takes them (OpenSCAD 2021.01's
 # import): the point count starts with a digit and the counts are ints
 # ("in >> n"); each point and face is a line of its own, its numbers as

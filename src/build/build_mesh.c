@@ -3209,7 +3209,9 @@ static int stl_vertex(const char *s, const char *e, double c[3])
  * line after a triangle's third corner is its "extra vertex line" (those
  * two, OpenSCAD's errors, import nothing and render the rest); any other
  * line passed over. A triangle that "outer loop" starts again before its
- * third corner is left out, as OpenSCAD leaves it out. */
+ * third corner is left out, as OpenSCAD leaves it out. A corner that is
+ * nan or inf (ASCII or binary) OpenSCAD reads, and then leaves the mesh out
+ * of the union with the rest (its CGAL conversion fails): the same. */
 static const char *read_stl(const char *text, size_t size, mesh_file *m, mesh_reading *r)
 {
     const unsigned char *u = (const unsigned char *)text;
@@ -3223,8 +3225,8 @@ static const char *read_stl(const char *text, size_t size, mesh_file *m, mesh_re
             for (int j = 0; j < 3; j++) {
                 vec3 p = v3(read_f32(f + 12 * j), read_f32(f + 12 * j + 4),
                             read_f32(f + 12 * j + 8));
-                if (!v3_is_finite(p))
-                    return "a corner is not finite";
+                if (!v3_is_finite(p)) /* OpenSCAD's mesh is not closed */
+                    return r->empty = 1, "a corner is not finite";
                 if (!add_point(m, p))
                     return r->oom = 1, "out of memory";
             }
@@ -3270,10 +3272,10 @@ static const char *read_stl(const char *text, size_t size, mesh_file *m, mesh_re
             return r->line = line, r->empty = 1, r->text;
         }
         corner[corners] = v3(c[0], c[1], c[2]);
-        if (!v3_is_finite(corner[corners]))
+        if (!v3_is_finite(corner[corners])) /* OpenSCAD's CGAL leaves it out */
             return snprintf(r->text, sizeof r->text, "line %u: a corner is not finite",
                             line),
-                   r->line = line, r->text;
+                   r->line = line, r->empty = 1, r->text;
         if (++corners == 3)
             for (int j = 0; j < 3; j++)
                 if (!add_point(m, corner[j]))
