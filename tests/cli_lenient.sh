@@ -457,6 +457,14 @@ check
 "$bin" render cg_missing.csg -o bad.png -q 2>err.txt && fail "cg_missing.csg rendered"
 [ "$(cat err.txt)" = "cg_missing.csg:1:15: error: import: 'cg_missing.off' is not a valid OFF file (line 7: face 1 has fewer indices than its point count)" ] ||
     fail "cg_missing.csg: $(cat err.txt)"
+# the same where the count is more than the file's points (CGAL reads
+# indices first, and finds one missing)
+printf 'OFF\n4 4 0\n%s\n5 0 2 1\n3 0 1 3\n3 1 2 3\n3 0 3 2\n' "$off_v" >cg_more.off
+printf 'import(file = "cg_more.off");\n' >cg_more.csg
+check
+"$bin" render cg_more.csg -o bad.png -q 2>err.txt && fail "cg_more.csg rendered"
+[ "$(cat err.txt)" = "cg_more.csg:1:15: error: import: 'cg_more.off' is not a valid OFF file (line 7: face 1 has fewer indices than its point count)" ] ||
+    fail "cg_more.csg: $(cat err.txt)"
 # The quoted line is shown as printable ASCII: a terminal's escape
 # sequence in the file does not reach the terminal.
 printf 'solid x\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 0 1 \033[31m\n' >esc.stl

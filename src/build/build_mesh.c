@@ -3500,12 +3500,12 @@ static const char *read_off(const char *text, size_t size, mesh_file *m, mesh_re
         double k;
         if (!off_next_line(&c, &s, &e, &at))
             OFF_FAIL("the file ends before face %ld of %ld", f + 1, nf);
-        if (!off_double(&s, e, &k) || !(k >= 3) || k > (double)nv)
-            OFF_FAIL("face %ld has fewer than 3 points, or more than the file has",
-                     f + 1);
+        if (!off_double(&s, e, &k) || !(k >= 3))
+            OFF_FAIL("face %ld has fewer than 3 points", f + 1);
         if (!start_face(m))
             return r->oom = 1, "out of memory";
-        for (uint32_t n = 0; n < (uint32_t)k; n++) {
+        /* as many as k says: a line with fewer ends the loop */
+        for (double n = 0; n < floor(k); n++) {
             double i;
             if (!off_double(&s, e, &i)) {
                 r->empty = 0;
