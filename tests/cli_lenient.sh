@@ -284,6 +284,31 @@ for case in "import.csg:2:15: error: Can't open import file 'missing.stl'" \
         [ -e strict.png ] && fail "$model --strict $mode: an image was written"
     done
 done
+# against_openscad MODEL: MODEL is "same" in --faithful as openscad's
+# binary STL of it, where openscad is installed.
+against_openscad() {
+    command -v openscad >/dev/null || return 0
+    check
+    openscad -o "$PWD/os_$1.stl" --export-format binstl "$1" >/dev/null 2>&1 ||
+        fail "openscad did not render $1"
+    same "$1" "os_$1.stl" --faithful
+}
+
+# left_out MODEL REF AT MESH KIND WHY: in both modes MODEL warns at AT that
+# MESH is not a valid KIND file (WHY) and leaves it out, renders as REF,
+# and is that error with --strict.
+left_out() {
+    local model=$1 ref=$2 at=$3 mesh=$4 kind=$5 why=$6 mode
+    for mode in "" --faithful; do
+        # shellcheck disable=SC2086
+        warns "$model" "$model:$at: warning: import: '$mesh' is not a valid $kind file ($why); the import is empty, as OpenSCAD leaves it out (--strict makes it an error)" $mode
+        # shellcheck disable=SC2086
+        same "$model" "$ref" $mode
+        # shellcheck disable=SC2086
+        refuses "$model" "$model:$at: error: import: '$mesh' is not a valid $kind file ($why)" $mode
+    done
+}
+
 # A file with a line OpenSCAD 2021.01's STL reader cannot parse, or a
 # vertex line after a triangle's third, or an OFF file CGAL's reader stops
 # in: OpenSCAD logs its error, imports nothing, and renders the rest; as
@@ -304,21 +329,15 @@ for mesh in faceless.stl bad.stl extra.stl short.off; do
     esac
     kind=STL
     [ $mesh = short.off ] && kind=OFF
-    [ $mesh = faceless.stl ] ||
-        want="import_$mesh.csg:1:15: warning: import: '$mesh' is not a valid $kind file ($why); the import is empty, as OpenSCAD leaves it out (--strict makes it an error)"
-    for mode in "" --faithful; do
-        warns import_$mesh.csg "$want" $mode
-        same import_$mesh.csg rest_ref.csg $mode
-        [ $mesh = faceless.stl ] ||
-            refuses import_$mesh.csg "import_$mesh.csg:1:15: error: import: '$mesh' is not a valid $kind file ($why)" $mode
-    done
-    if command -v openscad >/dev/null; then
-        check
-        openscad -o "$PWD/os_$mesh.stl" --export-format binstl import_$mesh.csg >/dev/null 2>&1 ||
-            fail "openscad did not render import_$mesh.csg"
-        same import_$mesh.csg os_$mesh.stl --faithful
+    against_openscad import_$mesh.csg
+    if [ $mesh = faceless.stl ]; then
+        for mode in "" --faithful; do
+            warns import_$mesh.csg "$want" $mode
+            same import_$mesh.csg rest_ref.csg $mode
+        done
+        continue
     fi
-    [ $mesh = faceless.stl ] && continue
+    left_out import_$mesh.csg rest_ref.csg 1:15 $mesh $kind "$why"
     check
     "$bin" render $mesh -o bad.png -q 2>err.txt && fail "$mesh rendered as the model"
     at="$mesh:$(echo "$why" | sed 's/^line \([0-9]*\):.*/\1/'):1: "
@@ -356,17 +375,8 @@ for mesh in corner_nan.stl corner_inf.stl corner_binary.stl; do
     printf 'union() {\n\timport(file = "%s");\n\tmultmatrix([[1, 0, 0, 5], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]) {\n\t\tcube(size = [1, 1, 1], center = false);\n\t}\n}\n' $mesh >import_$mesh.csg
     why="line 27: a corner is not finite"
     [ $mesh = corner_binary.stl ] && why="a corner is not finite"
-    for mode in "" --faithful; do
-        warns import_$mesh.csg "import_$mesh.csg:2:16: warning: import: '$mesh' is not a valid STL file ($why); the import is empty, as OpenSCAD leaves it out (--strict makes it an error)" $mode
-        same import_$mesh.csg corner_ref.csg $mode
-        refuses import_$mesh.csg "import_$mesh.csg:2:16: error: import: '$mesh' is not a valid STL file ($why)" $mode
-    done
-    if command -v openscad >/dev/null; then
-        check
-        openscad -o "$PWD/os_$mesh" --export-format binstl import_$mesh.csg >/dev/null 2>&1 ||
-            fail "openscad did not render import_$mesh.csg"
-        same import_$mesh.csg "os_$mesh" --faithful
-    fi
+    left_out import_$mesh.csg corner_ref.csg 2:16 $mesh STL "$why"
+    against_openscad import_$mesh.csg
 done
 
 # An OFF file's numbers as CGAL 5's reader takes them (OpenSCAD 2021.01's
@@ -438,33 +448,24 @@ for off in cg_*.off; do
         grep -q "warning: import: '$off' is not a valid OFF file (line [0-9]*: .*); the import is empty" err.txt ||
             fail "$name: $(cat err.txt)"
     fi
-    if command -v openscad >/dev/null; then
-        check
-        openscad -o "$PWD/os_$name.stl" --export-format binstl "$name.csg" >/dev/null 2>&1 ||
-            fail "openscad did not render $name.csg"
-        same "$name.csg" "os_$name.stl" --faithful
-    fi
+    against_openscad "$name.csg"
 done
 # "1.0.5 0 0" is the point (1, 0.5, 0): the tetrahedron's corner moved
 check
 "$bin" inside cg_glued.csg --point=0.8,0.45,0.05 --point=0.1,0.02,0.02 >in.txt 2>&1
 [ "$(tr '\n' ' ' <in.txt)" = "in out " ] || fail "cg_glued: $(tr '\n' ' ' <in.txt)"
 # where CGAL's builder is left open (an index missing from a face's line,
-# or out of range), openscad aborts: an error at the face's line
-printf 'OFF\n4 4 0\n%s\n3 0 2\n1\n3 0 1 3\n3 1 2 3\n3 0 3 2\n' "$off_v" >cg_missing.off
-printf 'import(file = "cg_missing.off");\n' >cg_missing.csg
-check
-"$bin" render cg_missing.csg -o bad.png -q 2>err.txt && fail "cg_missing.csg rendered"
-[ "$(cat err.txt)" = "cg_missing.csg:1:15: error: import: 'cg_missing.off' is not a valid OFF file (line 7: face 1 has fewer indices than its point count)" ] ||
-    fail "cg_missing.csg: $(cat err.txt)"
-# the same where the count is more than the file's points (CGAL reads
-# indices first, and finds one missing)
-printf 'OFF\n4 4 0\n%s\n5 0 2 1\n3 0 1 3\n3 1 2 3\n3 0 3 2\n' "$off_v" >cg_more.off
-printf 'import(file = "cg_more.off");\n' >cg_more.csg
-check
-"$bin" render cg_more.csg -o bad.png -q 2>err.txt && fail "cg_more.csg rendered"
-[ "$(cat err.txt)" = "cg_more.csg:1:15: error: import: 'cg_more.off' is not a valid OFF file (line 7: face 1 has fewer indices than its point count)" ] ||
-    fail "cg_more.csg: $(cat err.txt)"
+# or out of range), openscad aborts: an error at the face's line; also
+# where the count is more than the file's points (CGAL reads the indices
+# first, and finds one missing)
+for face in "3 0 2\n1" "5 0 2 1"; do
+    printf "OFF\n4 4 0\n%s\n$face\n3 0 1 3\n3 1 2 3\n3 0 3 2\n" "$off_v" >cg_missing.off
+    printf 'import(file = "cg_missing.off");\n' >cg_missing.csg
+    check
+    "$bin" render cg_missing.csg -o bad.png -q 2>err.txt && fail "cg_missing.csg ($face) rendered"
+    [ "$(cat err.txt)" = "cg_missing.csg:1:15: error: import: 'cg_missing.off' is not a valid OFF file (line 7: face 1 has fewer indices than its point count)" ] ||
+        fail "cg_missing.csg ($face): $(cat err.txt)"
+done
 # The quoted line is shown as printable ASCII: a terminal's escape
 # sequence in the file does not reach the terminal.
 printf 'solid x\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 0 1 \033[31m\n' >esc.stl
