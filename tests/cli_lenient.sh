@@ -347,8 +347,8 @@ for mesh in faceless.stl bad.stl extra.stl short.off; do
 done
 
 # A corner that is nan or inf: OpenSCAD 2021.01 reads it, and leaves the
-# mesh out of its union with the rest (ASCII silently, binary with "The
-# given mesh is not closed!"): the warning, and the rest rendered.
+# mesh out of its union with the rest ("The given mesh is not closed!"):
+# the warning, and the rest rendered.
 python3 -c '
 import struct
 P = [(0, 0, 0), (1, 0, 0), (0, 1, 0), (0, 0, 1)]
@@ -416,7 +416,14 @@ off_case truncated OFF "4 4 0" "$off_v" "3.7 0 2.9 1
 3 0 1 3
 3 1 2 3
 3 0 3 2"
+off_case index_truncated OFF "4 4 0" "$off_v" "3 -0.5 2 1
+3 0 1 3
+3 1 2 3
+3 0 3 2"
 off_case count_double OFF "4.0 4 0" "$off_v" "$off_f"
+off_case count_comment OFF "4
+# the face count is not on this line
+4 0" "$off_v" "$off_f"
 off_case count_plus OFF "+4 4 0" "$off_v" "$off_f"
 off_case count_hex OFF "0x4 4 0" "$off_v" "$off_f"
 off_case no_edges OFF "4 4" "$off_v" "$off_f"
@@ -435,7 +442,7 @@ for off in cg_*.off; do
     name=${off%.off}
     printf 'union() {\n\timport(file = "%s");\n\tmultmatrix([[1, 0, 0, 5], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]) {\n\t\tcube(size = [1, 1, 1], center = false);\n\t}\n}\n' "$off" >"$name.csg"
     case $name in
-    cg_plain | cg_face_plus | cg_same_line | cg_dims | cg_glued | cg_minus_glued | cg_truncated) want="in" ;;
+    cg_plain | cg_face_plus | cg_same_line | cg_dims | cg_glued | cg_minus_glued | cg_truncated | cg_index_truncated) want="in" ;;
     *) want="out" ;;
     esac
     check
@@ -458,7 +465,7 @@ check
 # or out of range), openscad aborts: an error at the face's line; also
 # where the count is more than the file's points (CGAL reads the indices
 # first, and finds one missing)
-for face in "3 0 2\n1" "5 0 2 1"; do
+for face in "3 0 2\n1" "5 0 2 1" "-3 0 2 1"; do
     printf "OFF\n4 4 0\n%s\n$face\n3 0 1 3\n3 1 2 3\n3 0 3 2\n" "$off_v" >cg_missing.off
     printf 'import(file = "cg_missing.off");\n' >cg_missing.csg
     check
@@ -466,6 +473,19 @@ for face in "3 0 2\n1" "5 0 2 1"; do
     [ "$(cat err.txt)" = "cg_missing.csg:1:15: error: import: 'cg_missing.off' is not a valid OFF file (line 7: face 1 has fewer indices than its point count)" ] ||
         fail "cg_missing.csg ($face): $(cat err.txt)"
 done
+# the count's read stops at the comment line, which CGAL's int read does
+# not pass
+check
+"$bin" render cg_count_comment.off -o bad.png -q 2>err.txt && fail "cg_count_comment.off rendered"
+grep -q "^cg_count_comment.off:3:1: error: .*(line 3: the face count is not a number of 0 or more)$" err.txt ||
+    fail "cg_count_comment.off: $(cat err.txt)"
+# a 4OFF point with w = 0 makes CGAL divide by zero, and openscad aborts
+printf '4OFF\n4 4 0\n0 0 0 1\n1 0 0 0\n0 1 0 1\n0 0 1 1\n%s\n' "$off_f" >cg_w0.off
+printf 'import(file = "cg_w0.off");\n' >cg_w0.csg
+check
+"$bin" render cg_w0.csg -o bad.png -q 2>err.txt && fail "cg_w0.csg rendered"
+[ "$(cat err.txt)" = "cg_w0.csg:1:15: error: import: 'cg_w0.off' is not a valid OFF file (line 4: point 2 is not finite)" ] ||
+    fail "cg_w0.csg: $(cat err.txt)"
 # The quoted line is shown as printable ASCII: a terminal's escape
 # sequence in the file does not reach the terminal.
 printf 'solid x\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 0 1 \033[31m\n' >esc.stl

@@ -3211,7 +3211,7 @@ static int stl_vertex(const char *s, const char *e, double c[3])
  * line passed over. A triangle that "outer loop" starts again before its
  * third corner is left out, as OpenSCAD leaves it out. A corner that is
  * nan or inf (ASCII or binary) OpenSCAD reads, and then leaves the mesh out
- * of the union with the rest (its CGAL conversion fails): the same. */
+ * of the union with the rest ("The given mesh is not closed!"): the same. */
 static const char *read_stl(const char *text, size_t size, mesh_file *m, mesh_reading *r)
 {
     const unsigned char *u = (const unsigned char *)text;
@@ -3467,14 +3467,19 @@ static const char *read_off(const char *text, size_t size, mesh_file *m, mesh_re
             return r->empty = 0, "it is a binary OFF file, which is not read";
         OFF_FAIL("the point count is not a number");
     }
+    /* each count's line is where its read stops */
     long nv, nf, edges;
-    if (!off_int(&c, &nv) || (dimensional && !off_int(&c, &nv)))
+    int ok = off_int(&c, &nv) && (!dimensional || off_int(&c, &nv));
+    at = c.line;
+    if (!ok)
         OFF_FAIL("the point count is not a number");
+    ok = off_int(&c, &nf);
     at = c.line;
-    if (!off_int(&c, &nf) || nf < 0)
+    if (!ok || nf < 0)
         OFF_FAIL("the face count is not a number of 0 or more");
+    ok = off_int(&c, &edges);
     at = c.line;
-    if (!off_int(&c, &edges))
+    if (!ok)
         OFF_FAIL("the edge count is not a number");
     if (nv < 0)
         OFF_FAIL("the point count is below 0");
@@ -3490,17 +3495,25 @@ static const char *read_off(const char *text, size_t size, mesh_file *m, mesh_re
             OFF_FAIL("point %ld has fewer than %d numbers", i + 1, 3 + homogeneous);
         vec3 q = homogeneous && v[3] != 1 ? v3(v[0] / v[3], v[1] / v[3], v[2] / v[3])
                                           : v3(v[0], v[1], v[2]);
-        if (!v3_is_finite(q))
+        if (!v3_is_finite(q)) { /* 4OFF's w = 0: CGAL divides by zero and aborts */
+            r->empty = 0;
             OFF_FAIL("point %ld is not finite", i + 1);
+        }
         if (!add_point(m, q))
             return r->oom = 1, "out of memory";
     }
     for (long f = 0; f < nf; f++) {
         const char *s, *e;
-        double k;
+        double k = 0; /* no number: below 3 */
         if (!off_next_line(&c, &s, &e, &at))
             OFF_FAIL("the file ends before face %ld of %ld", f + 1, nf);
-        if (!off_double(&s, e, &k) || !(k >= 3))
+        /* CGAL converts the count to size_t: one of -1 or below wraps to a
+         * count far past the line's indices (its builder is left open) */
+        if (off_double(&s, e, &k) && k <= -1) {
+            r->empty = 0;
+            OFF_FAIL("face %ld has fewer indices than its point count", f + 1);
+        }
+        if (!(k >= 3))
             OFF_FAIL("face %ld has fewer than 3 points", f + 1);
         if (!start_face(m))
             return r->oom = 1, "out of memory";
@@ -3511,7 +3524,7 @@ static const char *read_off(const char *text, size_t size, mesh_file *m, mesh_re
                 r->empty = 0;
                 OFF_FAIL("face %ld has fewer indices than its point count", f + 1);
             }
-            if (!(i >= 0 && i < (double)nv)) {
+            if (!(i > -1 && i < (double)nv)) { /* truncated: -0.5 is 0 */
                 r->empty = 0;
                 OFF_FAIL("a point index of face %ld is out of range", f + 1);
             }
