@@ -461,17 +461,23 @@ done
 check
 "$bin" inside cg_glued.csg --point=0.8,0.45,0.05 --point=0.1,0.02,0.02 >in.txt 2>&1
 [ "$(tr '\n' ' ' <in.txt)" = "in out " ] || fail "cg_glued: $(tr '\n' ' ' <in.txt)"
+# import_error OFF WHY: a model importing OFF is refused with the OFF
+# reader's error WHY (where openscad aborts), and writes no image.
+import_error() {
+    local model=${1%.off}.csg
+    printf 'import(file = "%s");\n' "$1" >"$model"
+    check
+    "$bin" render "$model" -o bad.png -q 2>err.txt && fail "$model rendered"
+    [ "$(cat err.txt)" = "$model:1:15: error: import: '$1' is not a valid OFF file ($2)" ] ||
+        fail "$model: $(cat err.txt)"
+}
 # where CGAL's builder is left open (an index missing from a face's line,
 # or out of range), openscad aborts: an error at the face's line; also
 # where the count is more than the file's points (CGAL reads the indices
 # first, and finds one missing)
 for face in "3 0 2\n1" "5 0 2 1" "-3 0 2 1"; do
     printf "OFF\n4 4 0\n%s\n$face\n3 0 1 3\n3 1 2 3\n3 0 3 2\n" "$off_v" >cg_missing.off
-    printf 'import(file = "cg_missing.off");\n' >cg_missing.csg
-    check
-    "$bin" render cg_missing.csg -o bad.png -q 2>err.txt && fail "cg_missing.csg ($face) rendered"
-    [ "$(cat err.txt)" = "cg_missing.csg:1:15: error: import: 'cg_missing.off' is not a valid OFF file (line 7: face 1 has fewer indices than its point count)" ] ||
-        fail "cg_missing.csg ($face): $(cat err.txt)"
+    import_error cg_missing.off "line 7: face 1 has fewer indices than its point count"
 done
 # the count's read stops at the comment line, which CGAL's int read does
 # not pass
@@ -481,11 +487,7 @@ grep -q "^cg_count_comment.off:3:1: error: .*(line 3: the face count is not a nu
     fail "cg_count_comment.off: $(cat err.txt)"
 # a 4OFF point with w = 0 makes CGAL divide by zero, and openscad aborts
 printf '4OFF\n4 4 0\n0 0 0 1\n1 0 0 0\n0 1 0 1\n0 0 1 1\n%s\n' "$off_f" >cg_w0.off
-printf 'import(file = "cg_w0.off");\n' >cg_w0.csg
-check
-"$bin" render cg_w0.csg -o bad.png -q 2>err.txt && fail "cg_w0.csg rendered"
-[ "$(cat err.txt)" = "cg_w0.csg:1:15: error: import: 'cg_w0.off' is not a valid OFF file (line 4: point 2 is not finite)" ] ||
-    fail "cg_w0.csg: $(cat err.txt)"
+import_error cg_w0.off "line 4: point 2 is not finite"
 # The quoted line is shown as printable ASCII: a terminal's escape
 # sequence in the file does not reach the terminal.
 printf 'solid x\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 0 1 \033[31m\n' >esc.stl
