@@ -485,6 +485,12 @@ check
 "$bin" render cg_count_comment.off -o bad.png -q 2>err.txt && fail "cg_count_comment.off rendered"
 grep -q "^cg_count_comment.off:3:1: error: .*(line 3: the face count is not a number of 0 or more)$" err.txt ||
     fail "cg_count_comment.off: $(cat err.txt)"
+# comment lines count as lines
+printf 'OFF\n# c\n4 4 0\n# c\n0 0 0\n1 0 0\n0 1 0\n0 0 x\n%s\n' "$off_f" >cg_comments.off
+check
+"$bin" render cg_comments.off -o bad.png -q 2>err.txt && fail "cg_comments.off rendered"
+grep -q "^cg_comments.off:8:1: error: .*(line 8: point 4 has fewer than 3 numbers)$" err.txt ||
+    fail "cg_comments.off: $(cat err.txt)"
 # a 4OFF point with w = 0 makes CGAL divide by zero, and openscad aborts
 printf '4OFF\n4 4 0\n0 0 0 1\n1 0 0 0\n0 1 0 1\n0 0 1 1\n%s\n' "$off_f" >cg_w0.off
 import_error cg_w0.off "line 4: point 2 is not finite"

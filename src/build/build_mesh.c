@@ -3310,9 +3310,8 @@ static void off_blank(off_cursor *c)
 static void off_skip_comment(off_cursor *c)
 {
     for (off_blank(c); c->p < c->end && *c->p == '#'; off_blank(c))
-        while (c->p < c->end && *c->p++ != '\n')
-            ;
-    /* the '\n' ending a comment line was counted by neither loop */
+        while (c->p < c->end && *c->p != '\n')
+            c->p++; /* off_blank takes the '\n', and counts it */
 }
 
 /* A number as libstdc++'s num_get<double> extracts it from [*q, e) in the
