@@ -3104,7 +3104,9 @@ typedef struct mesh_reading {
     char text[320];
 } mesh_reading;
 
-static int stl_space(char ch)
+/* isspace in the C locale, whatever the host's locale: white space to
+ * boost's STL tokens and to the C++ stream CGAL's OFF reader runs. */
+static int mesh_space(char ch)
 {
     return ch == ' ' || ch == '\t' || ch == '\r' || ch == '\n' || ch == '\v' ||
            ch == '\f';
@@ -3181,12 +3183,12 @@ static int stl_vertex(const char *s, const char *e, double c[3])
         int k = 0;
         for (; k < 3; k++) {
             const char *b = q;
-            while (q < e && stl_space(*q))
+            while (q < e && mesh_space(*q))
                 q++;
             if (q == b || q == e)
                 break;
             word[k] = q;
-            while (q < e && !stl_space(*q))
+            while (q < e && !mesh_space(*q))
                 q++;
             stop[k] = q;
         }
@@ -3241,9 +3243,9 @@ static const char *read_stl(const char *text, size_t size, mesh_file *m, mesh_re
         const char *s = p, *e = memchr(p, '\n', (size_t)(end - p));
         e = e ? e : end;
         p = e < end ? e + 1 : end;
-        while (s < e && stl_space(*s))
+        while (s < e && mesh_space(*s))
             s++;
-        while (e > s && stl_space(e[-1]))
+        while (e > s && mesh_space(e[-1]))
             e--;
         if (s == e || has_word(s, e, "solid") || has_word(s, e, "facet") ||
             has_word(s, e, "endloop"))
@@ -3290,17 +3292,10 @@ typedef struct off_cursor {
     unsigned line;
 } off_cursor;
 
-/* isspace in the C locale, as the stream's ctype takes it. */
-static int off_space(char ch)
-{
-    return ch == ' ' || ch == '\t' || ch == '\n' || ch == '\v' || ch == '\f' ||
-           ch == '\r';
-}
-
 /* Past white space (CGAL's "in >> c" before a character). */
 static void off_blank(off_cursor *c)
 {
-    for (; c->p < c->end && off_space(*c->p); c->p++)
+    for (; c->p < c->end && mesh_space(*c->p); c->p++)
         if (*c->p == '\n')
             c->line++;
 }
@@ -3323,7 +3318,7 @@ static void off_skip_comment(off_cursor *c)
 static int off_double(const char **q, const char *e, double *out)
 {
     const char *s = *q;
-    while (s < e && off_space(*s))
+    while (s < e && mesh_space(*s))
         s++;
     const char *t = s;
     int dot = 0, digits = 0;
