@@ -427,6 +427,13 @@ off_case count_comment OFF "4
 off_case count_plus OFF "+4 4 0" "$off_v" "$off_f"
 off_case count_hex OFF "0x4 4 0" "$off_v" "$off_f"
 off_case no_edges OFF "4 4" "$off_v" "$off_f"
+# SKEL has no edge count: an OFF file's edge count is its first point's
+off_case skel SKEL "4 4" "$off_v" "$off_f"
+off_case skel_4 4SKEL "4 4" "0 0 0 1
+1 0 0 1
+0 1 0 2
+0 0 1 1" "$off_f"
+off_case skel_edges SKEL "4 4 0" "$off_v" "$off_f"
 for bad in 0x1 1e ++1 1e400 1abc; do
     off_case "point_$bad" OFF "4 4 0" "0 0 0
 $bad 0 0
@@ -442,7 +449,7 @@ for off in cg_*.off; do
     name=${off%.off}
     printf 'union() {\n\timport(file = "%s");\n\tmultmatrix([[1, 0, 0, 5], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]) {\n\t\tcube(size = [1, 1, 1], center = false);\n\t}\n}\n' "$off" >"$name.csg"
     case $name in
-    cg_plain | cg_face_plus | cg_same_line | cg_dims | cg_glued | cg_minus_glued | cg_truncated | cg_index_truncated) want="in" ;;
+    cg_plain | cg_face_plus | cg_same_line | cg_dims | cg_glued | cg_minus_glued | cg_truncated | cg_index_truncated | cg_skel | cg_skel_4) want="in" ;;
     *) want="out" ;;
     esac
     check

@@ -3407,7 +3407,8 @@ static int off_next_line(off_cursor *c, const char **s, const char **e, unsigned
  * and a homogeneous coordinate after each point, all but the point
  * ignored; nOFF, the dimension first, of which the first three
  * coordinates are taken); the point count, starting with a digit, then the
- * face and edge counts; then each point on a line of its own, its first
+ * face and edge counts (no edge count after [ST][C][N][4][n]SKEL, whose
+ * faces CGAL reads as an OFF file's); then each point on a line of its own, its first
  * three numbers (over the fourth, 4OFF), and each face on a line of its
  * own, its point count and indices as numbers truncated to integers. */
 static const char *read_off(const char *text, size_t size, mesh_file *m, mesh_reading *r)
@@ -3447,10 +3448,12 @@ static const char *read_off(const char *text, size_t size, mesh_file *m, mesh_re
         dimensional = 1;
         j++;
     }
+    /* SKEL (a skeleton: no edge count) with the same prefixes */
+    int skel = len == j + 4 && strncmp(t + j, "SKEL", 4) == 0;
     if (len < 2 || isdigit((unsigned char)t[1]) ||
-        (isdigit((unsigned char)t[0]) && t[0] != '4') || len != j + 3 ||
-        strncmp(t + j, "OFF", 3) != 0)
-        OFF_FAIL("it does not start with 'OFF' (or COFF, NOFF, 4OFF, nOFF, STOFF)");
+        (isdigit((unsigned char)t[0]) && t[0] != '4') ||
+        (!skel && (len != j + 3 || strncmp(t + j, "OFF", 3) != 0)))
+        OFF_FAIL("it does not start with 'OFF' (or COFF, NOFF, 4OFF, nOFF, STOFF, SKEL)");
     off_skip_comment(&c);
     at = c.line;
     if (c.p < c.end && !isdigit((unsigned char)*c.p)) {
@@ -3471,7 +3474,7 @@ static const char *read_off(const char *text, size_t size, mesh_file *m, mesh_re
     at = c.line;
     if (!ok || nf < 0)
         OFF_FAIL("the face count is not a number of 0 or more");
-    ok = off_int(&c, &edges);
+    ok = skel || off_int(&c, &edges);
     at = c.line;
     if (!ok)
         OFF_FAIL("the edge count is not a number");
