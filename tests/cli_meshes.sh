@@ -467,6 +467,14 @@ difference() {
 	$far
 }
 CSG
+# A face whose first point comes again at its end: CGAL's builder takes
+# it on the tetrahedron (and OpenSCAD draws it), and on the cube one of
+# its assertions fails (OpenSCAD stops).
+printf 'OFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n4 0 2 1 0\n3 0 1 3\n3 1 2 3\n3 0 3 2\n' >ends.off
+printf 'OFF\n8 6 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n0 0 1\n1 0 1\n1 1 1\n0 1 1\n4 0 3 2 1\n4 4 5 6 7\n4 0 1 5 4\n4 1 2 6 5\n5 6 2 3 7 6\n4 3 0 4 7\n' >stops.off
+for off in ends stops; do
+    sed "s/twice.off/$off.off/" off-twice.csg >off-$off.csg
+done
 
 # file, points, faithful answers, first line of the faithful stderr, what
 # openscad prints (a pattern, or "" for no ERROR line)
@@ -494,7 +502,8 @@ builder_cases=(
     "opposite.csg|0.5,0.5,0.5|in||"
     "opposite.csg|3.5,0.5,0.5|in||"
     "mink-one-cut.csg|1.5,1.5,0.5|out|mink-one-cut.csg:3:3: warning: linear_extrude is not closed (edge (1, 1, 0)-(1, 1, 1) is used by 4 faces); left out, as OpenSCAD leaves it out (\"$not_closed\")|^ERROR: The given mesh is not closed"
-    "off-twice.csg|0.5,0.5,0.5|out|off-twice.csg:2:16: warning: import: 'twice.off' is not a mesh CGAL's OFF reader takes (face 6 runs an edge from point 0 the way a face before it does); the import is empty, as OpenSCAD reads nothing from it (--strict makes it an error)|input error: facet 6 shares a halfedge"
+    "off-twice.csg|0.5,0.5,0.5|out|off-twice.csg:2:16: warning: import: 'twice.off' is not a mesh CGAL's OFF reader takes (line 17: face 7: CGAL's builder says \"facet 6 shares a halfedge from vertex 0 to vertex 1 with facet 0\"); the import is empty, as OpenSCAD reads nothing from it (--strict makes it an error)|input error: facet 6 shares a halfedge"
+    "off-ends.csg|0.1,0.1,0.1|in||"
 )
 for case in "${builder_cases[@]}"; do
     IFS='|' read -r file point want warning openscad_says <<<"$case"
@@ -545,11 +554,20 @@ expect 0 "" inside spike.csg --point=0.5,0.5,0.5
 [ "$(cat out.txt)" = in ] || fail "spike.csg (exact): $(cat out.txt)"
 # --strict makes the OFF reader's refusal the error; exact mode draws the
 # file by the parity rule.
-expect 1 "off-twice.csg:2:16: error: import: 'twice.off' is not a mesh CGAL's OFF reader takes (face 6 runs an edge from point 0 the way a face before it does)" \
+expect 1 "off-twice.csg:2:16: error: import: 'twice.off' is not a mesh CGAL's OFF reader takes (line 17: face 7: CGAL's builder says \"facet 6 shares a halfedge from vertex 0 to vertex 1 with facet 0\")" \
     inside off-twice.csg --faithful --strict --point=0.5,0.5,0.5
 expect 0 "off-twice.csg:2:16: warning: imported mesh is not closed (edge (0, 0, 0)-(1, 0, 0) is used by 3 faces); rendered by the parity rule (--strict makes it an error)" \
     inside off-twice.csg --point=0.5,0.5,0.5
 [ "$(cat out.txt)" = in ] || fail "off-twice.csg (exact): $(cat out.txt)"
+# where CGAL's assertion fails, openscad stops: an error in --faithful
+expect 1 "off-stops.csg:2:16: error: import: 'stops.off' is not a mesh CGAL's OFF reader takes (line 15: face 5: CGAL's assertion prev->is_border() fails, where OpenSCAD stops)" \
+    inside off-stops.csg --faithful --point=0.5,0.5,0.5
+if command -v openscad >/dev/null; then
+    check
+    (openscad -o "$PWD/off-stops_os.stl" off-stops.csg >/dev/null 2>off-stops_os.err) \
+        2>/dev/null && fail "openscad rendered off-stops.csg"
+    grep -q "prev->is_border()" off-stops_os.err || fail "openscad on off-stops.csg: $(cat off-stops_os.err)"
+fi
 
 # A minkowski() whose operand CGAL's convex decomposition fails on (a loft
 # from a triangle to a square, its quads out of their planes): OpenSCAD's

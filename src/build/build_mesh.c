@@ -623,8 +623,13 @@ static void faces_taken(const build_mesh_faces *f, const uint8_t *taken,
  * out. run says which faces it took, and why it refused the first it did. After the faces
  * taken, a point whose faces make more than one fan is not closed (fans_whole). what and
  * numbered name the mesh and its points in why. */
-static int builder_whole(const build_mesh_faces *f, const char *what, int numbered,
-                         char *why, size_t size, builder_run *run, const char **openscad)
+/* CGAL's polyhedron builder on f's faces in order, each face taken unless
+ * builder_refuses it: take[k] says which; run its first refusal; *border
+ * the first point on an edge with one face taken, *unused the first point
+ * on faces but none taken (UINT32_MAX: none), *skipped how many faces it
+ * refused. 0, or -1 when memory runs out. */
+static int builder_take(const build_mesh_faces *f, uint8_t *take, builder_run *run,
+                        uint32_t *border, uint32_t *unused, uint32_t *skipped)
 {
     uint32_t total = f->face_start[f->face_count];
     size_t slots = 16;
@@ -634,23 +639,14 @@ static int builder_whole(const build_mesh_faces *f, const char *what, int number
     uint8_t *used = calloc(f->point_count ? f->point_count : 1, 1);
     uint32_t *open = calloc(f->point_count ? f->point_count : 1, sizeof *open);
     uint32_t *met = calloc(f->point_count ? f->point_count : 1, sizeof *met);
-    uint8_t *mine = run->taken ? NULL : malloc(f->face_count ? f->face_count : 1);
-    uint8_t *take = run->taken ? run->taken : mine;
-    if (!edges.keys || !used || !open || !met || !take) {
-        free(edges.keys);
-        free(used);
-        free(open);
-        free(met);
-        free(mine);
-        return -1;
-    }
-    for (size_t i = 0; i < slots; i++)
+    int st = edges.keys && used && open && met ? 0 : -1;
+    for (size_t i = 0; st == 0 && i < slots; i++)
         edges.keys[i] = UINT64_MAX;
-    for (uint32_t i = 0; i < total; i++)
+    for (uint32_t i = 0; st == 0 && i < total; i++)
         used[f->indices[i]] = 2; /* a point of the mesh: on a face, taken or not */
-    uint32_t skipped = 0;
+    *skipped = 0;
     run->refusal = 0;
-    for (uint32_t k = 0; k < f->face_count; k++) {
+    for (uint32_t k = 0; st == 0 && k < f->face_count; k++) {
         uint32_t at;
         int no = builder_refuses(f, &edges, used, open, met, k, &at);
         take[k] = !no;
@@ -660,7 +656,7 @@ static int builder_whole(const build_mesh_faces *f, const char *what, int number
                 run->face = k;
                 run->point = at;
             }
-            skipped++;
+            (*skipped)++;
             continue;
         }
         uint32_t s = f->face_start[k], e = f->face_start[k + 1];
@@ -678,17 +674,31 @@ static int builder_whole(const build_mesh_faces *f, const char *what, int number
             used[p] = 1;
         }
     }
-    uint32_t border = UINT32_MAX, unused = UINT32_MAX;
-    for (uint32_t v = 0; v < f->point_count; v++) {
-        if (open[v] && border == UINT32_MAX)
-            border = v;
-        if (used[v] == 2 && unused == UINT32_MAX)
-            unused = v;
+    *border = *unused = UINT32_MAX;
+    for (uint32_t v = 0; st == 0 && v < f->point_count; v++) {
+        if (open[v] && *border == UINT32_MAX)
+            *border = v;
+        if (used[v] == 2 && *unused == UINT32_MAX)
+            *unused = v;
     }
     free(edges.keys);
     free(used);
     free(open);
     free(met);
+    return st;
+}
+
+static int builder_whole(const build_mesh_faces *f, const char *what, int numbered,
+                         char *why, size_t size, builder_run *run, const char **openscad)
+{
+    uint32_t total = f->face_start[f->face_count];
+    uint8_t *mine = run->taken ? NULL : malloc(f->face_count ? f->face_count : 1);
+    uint8_t *take = run->taken ? run->taken : mine;
+    uint32_t border, unused, skipped;
+    if (!take || builder_take(f, take, run, &border, &unused, &skipped) < 0) {
+        free(mine);
+        return -1;
+    }
     int whole = -1;
     if (border != UINT32_MAX) {
         *openscad = build_openscad_not_closed;
@@ -2898,10 +2908,12 @@ typedef struct mesh_file {
     uint32_t point_count, point_cap;
     uint32_t *indices, *face_start;
     uint32_t index_count, index_cap, face_count, face_cap;
+    uint32_t *lines; /* NULL, or each face's line in the file (OFF) */
 } mesh_file;
 
 static void mesh_file_free(mesh_file *m)
 {
+    free(m->lines);
     free(m->points);
     free(m->indices);
     free(m->face_start);
@@ -3418,7 +3430,8 @@ static const char *read_off(const char *text, size_t size, mesh_file *m, mesh_re
      * missing (CGAL's builder is left open), and reads a binary OFF file */
     r->empty = 1;
     off_cursor c = {text, text, text + size, 1};
-    unsigned at = 1; /* the line a message names */
+    uint32_t line_cap = 0; /* of m->lines */
+    unsigned at = 1;       /* the line a message names */
     /* what is wrong, at line at; lenient unless r->empty is cleared first */
 #define OFF_FAIL(...)                                                                    \
     return snprintf(r->text, sizeof r->text, "line %u: ", at),                           \
@@ -3504,6 +3517,10 @@ static const char *read_off(const char *text, size_t size, mesh_file *m, mesh_re
         double k = 0; /* no number: below 3 */
         if (!off_next_line(&c, &s, &e, &at))
             OFF_FAIL("the file ends before face %ld of %ld", f + 1, nf);
+        if (!grow_array32((void **)&m->lines, &line_cap, (uint32_t)f + 1,
+                          sizeof *m->lines))
+            return r->oom = 1, "out of memory";
+        m->lines[f] = at;
         /* CGAL converts the count to size_t: one of -1 or below wraps to a
          * count far past the line's indices (its builder is left open) */
         if (off_double(&s, e, &k) && k <= -1) {
@@ -3610,9 +3627,14 @@ int build_mesh_rounding(const char *path, build_mesh_rounding_info *out)
 
 /* Whether CGAL's OFF reader, which OpenSCAD 2021.01's import() of an OFF
  * file runs, rolls the whole file back: its polyhedron builder, given the
- * faces by the file's point numbers and without a test first, fails on a
- * face that builder_refuses. 1 with the reason in why, 0, or -1 when
- * memory runs out. */
+ * faces by the file's point numbers, each whole and without a test first
+ * (Polyhedron_scan_OFF), fails on one. Faces that run each edge one way
+ * only and make one fan about each point it takes in any order; any others
+ * are built by CGAL itself (nef.h: off_build), which is loaded for them.
+ * 1 when it rolls back, with the face's line and CGAL's reason in why; 2
+ * when one of CGAL's assertions fails, where OpenSCAD stops (why says
+ * which); 0; -1 when memory runs out; -2 when the plugin does not load
+ * (why says why). */
 static int off_rolled_back(const mesh_file *m, char *why, size_t size)
 {
     build_mesh_faces f = {.points = m->points,
@@ -3621,16 +3643,40 @@ static int off_rolled_back(const mesh_file *m, char *why, size_t size)
                           .face_start = m->face_start,
                           .face_count = m->face_count,
                           .lent = 1};
-    builder_run run = {NULL, 0, 0, 0};
-    char unused[8];
-    const char *openscad;
-    if (builder_whole(&f, "", 1, unused, sizeof unused, &run, &openscad) < 0)
+    builder_run run = {0};
+    uint32_t border, unused, skipped;
+    uint8_t *take = malloc(m->face_count ? m->face_count : 1);
+    int plain = !take || builder_take(&f, take, &run, &border, &unused, &skipped) < 0 ? -1
+                : run.refusal                                                         ? 0
+                              : fans_whole(&f, "", 1, why, size);
+    free(take);
+    if (plain)
+        return plain < 0 ? -1 : 0;
+    nef_plugin nef;
+    char err[SC_ERROR_MESSAGE_MAX / 2];
+    if (!nef_plugin_open(&nef, err, sizeof err)) {
+        snprintf(why, size, "%.150s", err);
+        return -2;
+    }
+    uint32_t refused;
+    nef_status ns = nef.off_build(m->point_count, m->indices, m->face_start,
+                                  m->face_count, &refused, err, sizeof err);
+    nef_plugin_close(&nef);
+    if (ns == NEF_NOMEM)
         return -1;
-    if (!run.refusal)
+    if (ns == NEF_OK && refused == UINT32_MAX)
         return 0;
-    char face[32];
-    snprintf(face, sizeof face, "face %u", run.face);
-    refusal_text(&f, 1, &run, face, why, size);
+    char at[64] = "";
+    if (refused < m->face_count && m->lines)
+        snprintf(at, sizeof at, "line %u: face %u: ", m->lines[refused], refused + 1);
+    if (ns != NEF_OK) {
+        snprintf(why, size, "%s%.160s, where OpenSCAD stops", at, err);
+        return 2;
+    }
+    if (refused < m->face_count)
+        snprintf(why, size, "%sCGAL's builder says \"%.160s\"", at, err);
+    else
+        snprintf(why, size, "CGAL's builder cannot remove its unused points");
     return 1;
 }
 
@@ -4202,9 +4248,11 @@ static sc_status import_parts(const build_ctx *c, const model_import *import, in
         *empty = "import without faces is empty";
     else if (!objects && c->faithful && import->format == MODEL_MESH_OFF &&
              (rolled = off_rolled_back(&file->m, why, sizeof why)) != 0) {
-        if (rolled < 0)
+        if (rolled == -1)
             st = err_nomem(c->error, &loc);
-        else if (strict || c->strict)
+        else if (rolled == -2)
+            st = err_set(c->error, SC_ERR_IO, &loc, "import: %s", why);
+        else if (rolled == 2 || strict || c->strict)
             st = err_set(c->error, SC_ERR_SEMANTIC, &loc,
                          "import: '%s' is not a mesh CGAL's OFF reader takes (%s)",
                          import->file, why);

@@ -107,6 +107,17 @@ typedef struct nef_plugin {
                               const uint32_t *indices, const uint32_t *face_start,
                               uint32_t face_count, int *verdict, uint32_t where[2],
                               char *err, size_t err_size);
+    /* CGAL's polyhedron built from an OFF file's faces as its OFF reader
+     * builds it (Polyhedron_scan_OFF, which OpenSCAD 2021.01's import
+     * runs): each face whole, in order, loops indices[face_start[k] ..
+     * face_start[k + 1]) over point_count points. *refused: UINT32_MAX when
+     * the builder takes them all; else the face it failed on (face_count:
+     * none, but its points could not be cleaned), which loses the
+     * polyhedron, with CGAL's reason in err. NEF_FAILED where one of
+     * CGAL's assertions fails (OpenSCAD stops), on face *refused. */
+    nef_status (*off_build)(uint32_t point_count, const uint32_t *indices,
+                            const uint32_t *face_start, uint32_t face_count,
+                            uint32_t *refused, char *err, size_t err_size);
     void *handle; /* of dlopen */
 } nef_plugin;
 

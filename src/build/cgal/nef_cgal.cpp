@@ -54,6 +54,8 @@
 #include <new>
 #include <queue>
 #include <set>
+#include <sstream>
+#include <iostream>
 #include <stdexcept>
 #include <vector>
 
@@ -322,6 +324,51 @@ class Build_faces : public CGAL::Modifier_base<Plane_hds>
     std::vector<uint32_t> &added_;
 };
 
+// CGAL's polyhedron of an OFF file's faces, built as its OFF reader builds
+// it (Polyhedron_scan_OFF): every point, then each face whole, without
+// test_facet; the first face the builder fails on loses the polyhedron.
+class Build_off : public CGAL::Modifier_base<Plane_hds>
+{
+  public:
+    Build_off(uint32_t point_count, const uint32_t *indices, const uint32_t *face_start,
+              uint32_t face_count)
+        : point_count_(point_count), indices_(indices), face_start_(face_start),
+          face_count_(face_count)
+    {
+    }
+    uint32_t refused = UINT32_MAX; // the face the builder failed on
+    uint32_t current = 0;          // the face it is on
+    void operator()(Plane_hds &hds) override
+    {
+        // verbose: its message is the one OpenSCAD prints
+        CGAL::Polyhedron_incremental_builder_3<Plane_hds> builder(hds, true);
+        builder.begin_surface(point_count_, face_count_);
+        for (uint32_t i = 0; i < point_count_; i++)
+            builder.add_vertex(Fast::Point_3(0, 0, 0));
+        for (uint32_t f = 0; f < face_count_ && !builder.error(); f++) {
+            current = f;
+            builder.begin_facet();
+            for (uint32_t i = face_start_[f]; i < face_start_[f + 1]; i++)
+                builder.add_vertex_to_facet(indices_[i]);
+            builder.end_facet();
+            if (builder.error())
+                refused = f;
+        }
+        if (!builder.error() && builder.check_unconnected_vertices() &&
+            !builder.remove_unconnected_vertices())
+            refused = face_count_;
+        if (builder.error() || refused != UINT32_MAX)
+            builder.rollback();
+        else
+            builder.end_surface();
+    }
+
+  private:
+    uint32_t point_count_;
+    const uint32_t *indices_, *face_start_;
+    uint32_t face_count_;
+};
+
 // N . (q - v) for the Newell normal N of the polygon p, in NT.
 template <class NT>
 NT newell_dot(const std::vector<Fast::Point_3> &p, const Fast::Point_3 &q,
@@ -500,6 +547,54 @@ spancast_nef_plane_check(const double *points, uint32_t point_count,
                     std::snprintf(err, err_size, "%s", expressions[failed]);
                     return;
                 }
+            }
+        },
+        err, err_size);
+}
+
+__attribute__((visibility("default"))) nef_status
+spancast_nef_off_build(uint32_t point_count, const uint32_t *indices,
+                       const uint32_t *face_start, uint32_t face_count, uint32_t *refused,
+                       char *err, size_t err_size)
+{
+    *refused = UINT32_MAX;
+    err[0] = '\0';
+    return guarded(
+        [&] {
+            for (uint32_t i = 0; i < face_start[face_count]; i++)
+                if (indices[i] >= point_count)
+                    throw bad_mesh("a face names a point that does not exist");
+            Plane_polyhedron poly;
+            Build_off build(point_count, indices, face_start, face_count);
+            // the builder writes its reason to std::cerr: taken from there
+            // (the plugin's lock keeps every other user of CGAL out)
+            std::ostringstream said;
+            std::streambuf *was = std::cerr.rdbuf(said.rdbuf());
+            try {
+                poly.delegate(build);
+            } catch (const CGAL::Failure_exception &e) {
+                // an assertion (OpenSCAD stops there): on the face it was on
+                std::cerr.rdbuf(was);
+                *refused = build.current;
+                throw std::runtime_error("CGAL's assertion " + e.expression() + " fails");
+            } catch (...) {
+                std::cerr.rdbuf(was);
+                throw;
+            }
+            std::cerr.rdbuf(was);
+            *refused = build.refused;
+            // its first "input error: ..." line
+            std::string text = said.str();
+            std::size_t at = text.find("error: ");
+            if (at != std::string::npos) {
+                std::size_t end = text.find('\n', at);
+                if (end != std::string::npos && end > at && text[end - 1] == '.')
+                    end--; // the sentence's stop: the message is quoted
+                std::snprintf(err, err_size, "%.300s",
+                              text.substr(at + 7, end == std::string::npos
+                                                      ? std::string::npos
+                                                      : end - at - 7)
+                                  .c_str());
             }
         },
         err, err_size);
