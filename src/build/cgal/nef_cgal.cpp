@@ -54,11 +54,10 @@
 #include <new>
 #include <queue>
 #include <set>
-#include <sstream>
-#include <iostream>
 #include <stdexcept>
 #include <vector>
 
+#include "build/cgal/guarded.h"
 #include "build/nef.h"
 
 namespace
@@ -70,33 +69,6 @@ using Nef = CGAL::Nef_polyhedron_3<Kernel>;
 using Mesh = CGAL::Surface_mesh<Point>;
 using Polyhedron = CGAL::Polyhedron_3<Kernel>;
 namespace PMP = CGAL::Polygon_mesh_processing;
-
-struct bad_mesh : std::runtime_error {
-    using std::runtime_error::runtime_error;
-};
-
-nef_status fail(nef_status status, const char *what, char *err, size_t err_size)
-{
-    std::snprintf(err, err_size, "%.400s", what);
-    return status;
-}
-
-// Runs f, turning what it throws into a status.
-template <class F> nef_status guarded(F f, char *err, size_t err_size)
-{
-    try {
-        f();
-        return NEF_OK;
-    } catch (const bad_mesh &e) {
-        return fail(NEF_BAD_MESH, e.what(), err, err_size);
-    } catch (const std::bad_alloc &) {
-        return fail(NEF_NOMEM, "out of memory", err, err_size);
-    } catch (const std::exception &e) {
-        return fail(NEF_FAILED, e.what(), err, err_size);
-    } catch (...) {
-        return fail(NEF_FAILED, "unknown failure", err, err_size);
-    }
-}
 
 // GMP's own allocator aborts the process when memory runs out (under
 // --max-memory, say). The plugin is GMP's only user in spancast, so from
@@ -324,51 +296,6 @@ class Build_faces : public CGAL::Modifier_base<Plane_hds>
     std::vector<uint32_t> &added_;
 };
 
-// CGAL's polyhedron of an OFF file's faces, built as its OFF reader builds
-// it (Polyhedron_scan_OFF): every point, then each face whole, without
-// test_facet; the first face the builder fails on loses the polyhedron.
-class Build_off : public CGAL::Modifier_base<Plane_hds>
-{
-  public:
-    Build_off(uint32_t point_count, const uint32_t *indices, const uint32_t *face_start,
-              uint32_t face_count)
-        : point_count_(point_count), indices_(indices), face_start_(face_start),
-          face_count_(face_count)
-    {
-    }
-    uint32_t refused = UINT32_MAX; // the face the builder failed on
-    uint32_t current = 0;          // the face it is on
-    void operator()(Plane_hds &hds) override
-    {
-        // verbose: its message is the one OpenSCAD prints
-        CGAL::Polyhedron_incremental_builder_3<Plane_hds> builder(hds, true);
-        builder.begin_surface(point_count_, face_count_);
-        for (uint32_t i = 0; i < point_count_; i++)
-            builder.add_vertex(Fast::Point_3(0, 0, 0));
-        for (uint32_t f = 0; f < face_count_ && !builder.error(); f++) {
-            current = f;
-            builder.begin_facet();
-            for (uint32_t i = face_start_[f]; i < face_start_[f + 1]; i++)
-                builder.add_vertex_to_facet(indices_[i]);
-            builder.end_facet();
-            if (builder.error())
-                refused = f;
-        }
-        if (!builder.error() && builder.check_unconnected_vertices() &&
-            !builder.remove_unconnected_vertices())
-            refused = face_count_;
-        if (builder.error() || refused != UINT32_MAX)
-            builder.rollback();
-        else
-            builder.end_surface();
-    }
-
-  private:
-    uint32_t point_count_;
-    const uint32_t *indices_, *face_start_;
-    uint32_t face_count_;
-};
-
 // N . (q - v) for the Newell normal N of the polygon p, in NT.
 template <class NT>
 NT newell_dot(const std::vector<Fast::Point_3> &p, const Fast::Point_3 &q,
@@ -547,54 +474,6 @@ spancast_nef_plane_check(const double *points, uint32_t point_count,
                     std::snprintf(err, err_size, "%s", expressions[failed]);
                     return;
                 }
-            }
-        },
-        err, err_size);
-}
-
-__attribute__((visibility("default"))) nef_status
-spancast_nef_off_build(uint32_t point_count, const uint32_t *indices,
-                       const uint32_t *face_start, uint32_t face_count, uint32_t *refused,
-                       char *err, size_t err_size)
-{
-    *refused = UINT32_MAX;
-    err[0] = '\0';
-    return guarded(
-        [&] {
-            for (uint32_t i = 0; i < face_start[face_count]; i++)
-                if (indices[i] >= point_count)
-                    throw bad_mesh("a face names a point that does not exist");
-            Plane_polyhedron poly;
-            Build_off build(point_count, indices, face_start, face_count);
-            // the builder writes its reason to std::cerr: taken from there
-            // (the plugin's lock keeps every other user of CGAL out)
-            std::ostringstream said;
-            std::streambuf *was = std::cerr.rdbuf(said.rdbuf());
-            try {
-                poly.delegate(build);
-            } catch (const CGAL::Failure_exception &e) {
-                // an assertion (OpenSCAD stops there): on the face it was on
-                std::cerr.rdbuf(was);
-                *refused = build.current;
-                throw std::runtime_error("CGAL's assertion " + e.expression() + " fails");
-            } catch (...) {
-                std::cerr.rdbuf(was);
-                throw;
-            }
-            std::cerr.rdbuf(was);
-            *refused = build.refused;
-            // its first "input error: ..." line
-            std::string text = said.str();
-            std::size_t at = text.find("error: ");
-            if (at != std::string::npos) {
-                std::size_t end = text.find('\n', at);
-                if (end != std::string::npos && end > at && text[end - 1] == '.')
-                    end--; // the sentence's stop: the message is quoted
-                std::snprintf(err, err_size, "%.300s",
-                              text.substr(at + 7, end == std::string::npos
-                                                      ? std::string::npos
-                                                      : end - at - 7)
-                                  .c_str());
             }
         },
         err, err_size);
