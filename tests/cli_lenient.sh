@@ -377,6 +377,18 @@ for mesh in corner_nan.stl corner_inf.stl corner_binary.stl; do
     [ $mesh = corner_binary.stl ] && why="a corner is not finite"
     left_out import_$mesh.csg corner_ref.csg 2:16 $mesh STL "$why"
     against_openscad import_$mesh.csg
+    # under a minkowski, OpenSCAD's CGAL finds the mesh it read not
+    # closed, and the whole minkowski is empty
+    printf 'union() {\n\tminkowski() {\n\t\timport(file = "%s");\n\t\tcube(size = [0.5, 0.5, 0.5], center = false);\n\t}\n\tmultmatrix([[1, 0, 0, 5], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]) {\n\t\tcube(size = [1, 1, 1], center = false);\n\t}\n}\n' $mesh >mink_$mesh.csg
+    for mode in "" --faithful; do
+        check
+        "$bin" inside mink_$mesh.csg $mode --point=1.2,0.2,0.2 --point=5.5,0.5,0.5 >in.txt 2>err.txt ||
+            fail "mink_$mesh.csg $mode: exit $?: $(cat err.txt)"
+        [ "$(tr '\n' ' ' <in.txt)" = "out in " ] || fail "mink_$mesh.csg $mode: $(tr '\n' ' ' <in.txt)"
+        [ "$(cat err.txt)" = "mink_$mesh.csg:3:17: warning: imported mesh is not closed (a corner is not finite); the minkowski is empty, as OpenSCAD leaves it out (\"The given mesh is not closed! Unable to convert to CGAL_Nef_Polyhedron.\")" ] ||
+            fail "mink_$mesh.csg $mode: $(cat err.txt)"
+    done
+    against_openscad mink_$mesh.csg
 done
 
 # An OFF file's numbers as CGAL 5's reader takes them (OpenSCAD 2021.01's

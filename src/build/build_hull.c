@@ -483,7 +483,13 @@ static sc_status closed_check(const walk *w, const model_node *n, int *open)
     }
     char why[SC_ERROR_MESSAGE_MAX - 160];
     const char *refusal = build_openscad_not_closed;
-    int sound = st != SC_OK || empty || !f.face_count
+    /* a corner that is nan or inf: OpenSCAD reads the file, and CGAL finds
+     * the mesh not closed */
+    int sound = st == SC_OK && empty == build_import_not_finite
+                    ? (snprintf(why, sizeof why,
+                                "%s is not closed (a corner is not finite)", what),
+                       0)
+                : st != SC_OK || empty || !f.face_count
                     ? 1
                     : build_mesh_cgal_sound(&f, what, n->kind == MODEL_POLYHEDRON,
                                             w->in_union, why, sizeof why, &refusal);

@@ -304,6 +304,7 @@ const char build_openscad_not_closed[] =
     "The given mesh is not closed! Unable to convert to CGAL_Nef_Polyhedron.";
 const char build_openscad_invalid[] =
     "The given mesh is invalid! Unable to convert to CGAL_Nef_Polyhedron.";
+const char build_import_not_finite[] = "";
 /* Its message where CGAL's Nef polyhedron fails an assertion (plane_lost). */
 static const char openscad_assertion[] =
     "CGAL error in CGAL_Nef_polyhedron3(): CGAL ERROR: assertion violation!";
@@ -3112,7 +3113,8 @@ static const char *stl_unknown(const unsigned char *head, uint64_t size)
  * finite); a message made for the file goes in text. */
 typedef struct mesh_reading {
     int oom, empty;
-    unsigned line; /* the file's line where it went wrong, where known */
+    int not_finite; /* empty for a corner that is nan or inf (STL) */
+    unsigned line;  /* the file's line where it went wrong, where known */
     char text[320];
 } mesh_reading;
 
@@ -3240,7 +3242,7 @@ static const char *read_stl(const char *text, size_t size, mesh_file *m, mesh_re
                 vec3 p = v3(read_f32(f + 12 * j), read_f32(f + 12 * j + 4),
                             read_f32(f + 12 * j + 8));
                 if (!v3_is_finite(p)) /* OpenSCAD's mesh is not closed */
-                    return r->empty = 1, "a corner is not finite";
+                    return r->empty = r->not_finite = 1, "a corner is not finite";
                 if (!add_point(m, p))
                     return r->oom = 1, "out of memory";
             }
@@ -3289,7 +3291,7 @@ static const char *read_stl(const char *text, size_t size, mesh_file *m, mesh_re
         if (!v3_is_finite(corner[corners])) /* OpenSCAD's CGAL leaves it out */
             return snprintf(r->text, sizeof r->text, "line %u: a corner is not finite",
                             line),
-                   r->line = line, r->empty = 1, r->text;
+                   r->line = line, r->empty = r->not_finite = 1, r->text;
         if (++corners == 3)
             for (int j = 0; j < 3; j++)
                 if (!add_point(m, corner[j]))
@@ -4163,7 +4165,7 @@ static sc_status import_read(const build_ctx *c, const model_import *import, int
                                 "error)",
                                 path, stl ? "STL" : "OFF", why);
         if (st == SC_OK)
-            *empty = "";
+            *empty = reading.not_finite ? build_import_not_finite : "";
         free(path);
         import_file_free(file);
         return st;
