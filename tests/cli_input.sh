@@ -191,10 +191,12 @@ for mesh in tet.stl tet-binary.stl tet.off TET-UPPER.STL tet.amf tet.3mf; do
     "$bin" inside "import-$mesh.csg" --point=0.25,0.25,0.25 --point=2,2,2 >b.txt 2>&1
     cmp -s a.txt b.txt || fail "inside $mesh: differs from the import"
     check
-    # The same spans; each leaf is named by the file it was loaded from.
-    "$bin" spans "$mesh" --ray=0.3,0.3,-1,0,0,1 2>&1 | sed "s/@$mesh:/@X:/g" >a.txt
+    # The same spans; each leaf is named by the file it was loaded from,
+    # the mesh's without a position (it is the whole file), the import's
+    # at the import.
+    "$bin" spans "$mesh" --ray=0.3,0.3,-1,0,0,1 2>&1 | sed "s/@$mesh /@X /g" >a.txt
     "$bin" spans "import-$mesh.csg" --ray=0.3,0.3,-1,0,0,1 2>&1 |
-        sed "s/@import-$mesh.csg:/@X:/g" >b.txt
+        sed "s/@import-$mesh.csg:1:1 /@X /g" >b.txt
     grep -q "1 span" a.txt || fail "spans $mesh: $(cat a.txt)"
     cmp -s a.txt b.txt || fail "spans $mesh: differs from the import: $(diff a.txt b.txt)"
 done
@@ -225,6 +227,18 @@ rc=$?
 [ "$rc" = 1 ] || fail "bad.off: exit $rc (want 1)"
 want_off="bad.off:4:1: error: import: '$work/bad.off' is not a valid OFF file (line 4: the file ends before point 3 of 3)"
 [ "$(cat err.txt)" = "$want_off" ] || fail "bad.off: got '$(cat err.txt)'"
+# on the file's first line too; a warning about the mesh as a whole has no
+# position (it is not at a line)
+printf 'OFF x\n' >bad1.off
+check
+"$bin" info bad1.off >/dev/null 2>err.txt && fail "bad1.off: exit 0"
+want_off="bad1.off:1:1: error: import: '$work/bad1.off' is not a valid OFF file (line 1: the point count is not a number)"
+[ "$(cat err.txt)" = "$want_off" ] || fail "bad1.off: got '$(cat err.txt)'"
+printf 'OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n' >open.off
+check
+"$bin" info open.off >/dev/null 2>err.txt || fail "open.off: exit $?"
+[ "$(head -n 1 err.txt)" = "open.off: warning: imported mesh is not closed (edge (0, 0, 0)-(1, 0, 0) is used by 1 face); rendered by the parity rule (--strict makes it an error)" ] ||
+    fail "open.off: got '$(cat err.txt)'"
 fails_with missing.stl 1 "spancast: error: cannot open 'missing.stl': No such file or directory"
 # OFF's variants, as CGAL's OFF reader (OpenSCAD's import) takes them: a
 # colour (COFF), a normal (NOFF) or a homogeneous coordinate (4OFF) after

@@ -67,7 +67,10 @@ sc_status mesh_model_text(const char *path, char **text, size_t *length, sc_erro
         free(full);
         return err_nomem(error, NULL);
     }
-    size_t k = (size_t)sprintf(t, "import(file = \"");
+    /* the leading space puts every position in the model at column 2 or
+     * later, and leaves column 1 of line 1 to the mesh file's own first
+     * line (mesh_model_unplace) */
+    size_t k = (size_t)sprintf(t, " import(file = \"");
     for (size_t i = 0; i < n; i++) {
         if (full[i] == '"' || full[i] == '\\')
             t[k++] = '\\';
@@ -82,7 +85,7 @@ sc_status mesh_model_text(const char *path, char **text, size_t *length, sc_erro
 
 void mesh_model_unplace(sc_error *e, const char *path)
 {
-    if (e->line == 1 && strcmp(e->file, path) == 0)
+    if (e->line == 1 && e->column != 1 && strcmp(e->file, path) == 0)
         e->line = e->column = 0;
 }
 

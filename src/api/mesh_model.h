@@ -27,8 +27,10 @@ sc_status mesh_model_load(const char *name, const char *text, size_t length,
                           sc_error *error);
 
 /* Drops the position of e when it points into the one-line model named
- * path (its line 1), which is no place in a file the user has: the error
- * or warning is about the mesh file as a whole. */
+ * path (its line 1, past column 1), which is no place in a file the user
+ * has: the error or warning is about the mesh file as a whole. A position
+ * at column 1 is the mesh file's own line (a reader's error on its line
+ * 1), and is kept. */
 void mesh_model_unplace(sc_error *e, const char *path);
 
 #endif

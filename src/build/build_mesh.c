@@ -4173,7 +4173,7 @@ static sc_status import_read(const build_ctx *c, const model_import *import, int
         /* the mesh as the model: its own line, where the reader knows it */
         sc_location at = {c->file, (int)reading.line, 1};
         st = err_set(
-            c->error, SC_ERR_SEMANTIC, c->mesh_model && reading.line > 1 ? &at : &loc,
+            c->error, SC_ERR_SEMANTIC, c->mesh_model && reading.line ? &at : &loc,
             "import: '%s' is not a valid %s file (%s)", path, stl ? "STL" : "OFF", why);
     }
     free(path);

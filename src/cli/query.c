@@ -70,6 +70,14 @@ static int in_export(const query_args *a, const sc_span_end *e)
     return a->export[0] && e->location.file && strcmp(e->location.file, a->export) == 0;
 }
 
+/* Whether e's leaf is the mesh file given as the model, whose position is
+ * in the one-line model that imports it: no place in the file. */
+static int in_mesh_model(const query_args *a, const sc_span_end *e)
+{
+    return scad_is_mesh(a->input) && e->location.file &&
+           strcmp(e->location.file, a->input) == 0;
+}
+
 static int add_item(query_args *a, const query_item *item)
 {
     if (a->count == a->cap) {
@@ -317,6 +325,8 @@ static void json_end(const query_args *a, const sc_span_end *e)
     if (in_export(a, e))
         printf(", \"line\": null, \"column\": null, \"export_line\": %d, \"normal\": ",
                e->location.line);
+    else if (in_mesh_model(a, e))
+        fputs(", \"line\": null, \"column\": null, \"normal\": ", stdout);
     else
         printf(", \"line\": %d, \"column\": %d, \"normal\": ", e->location.line,
                e->location.column);
@@ -340,6 +350,9 @@ static void text_end(const query_args *a, const char *label, const sc_span_end *
     if (in_export(a, e))
         printf(" %s#%d@%s (line %d of OpenSCAD's export) normal ",
                e->leaf_kind ? e->leaf_kind : "leaf", e->leaf, a->input, e->location.line);
+    else if (in_mesh_model(a, e))
+        printf(" %s#%d@%s normal ", e->leaf_kind ? e->leaf_kind : "leaf", e->leaf,
+               a->input);
     else
         printf(" %s#%d@%s:%d:%d normal ", e->leaf_kind ? e->leaf_kind : "leaf", e->leaf,
                e->location.file ? e->location.file : "?", e->location.line,

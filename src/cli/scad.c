@@ -51,6 +51,7 @@
 #include <time.h>
 #include <unistd.h>
 
+#include "api/mesh_model.h"
 #include "cli/cli.h"
 #include "formats/file.h"
 #include "syntax/parse.h"
@@ -943,29 +944,6 @@ sc_status scad_load_at(const char *path, const sc_load_options *options, double 
 
 /* ---- MODEL as the commands take it ---- */
 
-/* The one-line model that imports the mesh at path, by its absolute path,
- * as a string of the grammar (quote and backslash escaped): malloc'd. */
-static sc_status mesh_model(const char *path, char **text, size_t *size, sc_error *error)
-{
-    char full[PATH_MAX];
-    if (!realpath(path, full))
-        return fail(error, SC_ERR_IO, "cannot open '%s': %s", path, strerror(errno));
-    size_t n = strlen(full);
-    char *t = malloc(2 * n + 32);
-    if (!t)
-        return fail(error, SC_ERR_NOMEM, "out of memory%s%s", "", "");
-    size_t k = (size_t)sprintf(t, "import(file = \"");
-    for (size_t i = 0; i < n; i++) {
-        if (full[i] == '"' || full[i] == '\\')
-            t[k++] = '\\';
-        t[k++] = full[i];
-    }
-    k += (size_t)sprintf(t + k, "\");\n");
-    *text = t;
-    *size = k;
-    return SC_OK;
-}
-
 /* The note for a .csg that goes on in OpenSCAD's language, at the error
  * that says where (parse_error_is_language). */
 static void language_note(const char *path, const sc_error *error)
@@ -1096,7 +1074,7 @@ sc_status scad_read_model(const char *path, const sc_load_options *options, char
                        NULL, stop);
     snprintf(name, name_size, "%s", path);
     if (scad_is_mesh(path))
-        return mesh_model(path, text, size, error);
+        return mesh_model_text(path, text, size, error);
     const char *why;
     *text = file_read(path, SIZE_MAX / 2, size, &why);
     if (!*text)
