@@ -234,6 +234,19 @@ check
 "$bin" info bad1.off >/dev/null 2>err.txt && fail "bad1.off: exit 0"
 want_off="bad1.off:1:1: error: import: '$work/bad1.off' is not a valid OFF file (line 1: the point count is not a number)"
 [ "$(cat err.txt)" = "$want_off" ] || fail "bad1.off: got '$(cat err.txt)'"
+# a count past an int, and a file that ends before its counts, say so
+printf 'OFF\n4 3000000000 0\n' >big.off
+printf 'OFF\n4 4\n' >short.off
+for off in big short; do
+    case $off in
+    big) why="line 2: the face count is past the largest int" ;;
+    short) why="line 2: the file ends before the edge count" ;;
+    esac
+    check
+    "$bin" info $off.off >/dev/null 2>err.txt && fail "$off.off: exit 0"
+    [ "$(cat err.txt)" = "$off.off:2:1: error: import: '$work/$off.off' is not a valid OFF file ($why)" ] ||
+        fail "$off.off: got '$(cat err.txt)'"
+done
 printf 'OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n' >open.off
 check
 "$bin" info open.off >/dev/null 2>err.txt || fail "open.off: exit $?"

@@ -3370,10 +3370,13 @@ static int off_double(const char **q, const char *e, double *out)
 
 /* An int as num_get<long> extracts it ("in >> n" for the header's
  * counts): past white space (counting lines), [+-] and at least one
- * digit, within int. 0 when it fails. */
+ * digit, within int. 1 when it does; when it fails, 0 (not a number), -1
+ * (past int) or -2 (the end of the file). */
 static int off_int(off_cursor *c, long *out)
 {
     off_blank(c);
+    if (c->p >= c->end)
+        return -2;
     const char *t = c->p;
     int negative = 0;
     if (t < c->end && (*t == '+' || *t == '-'))
@@ -3384,10 +3387,30 @@ static int off_int(off_cursor *c, long *out)
         if ((v = v * 10 + (*t - '0')) > (long)INT_MAX + 1)
             v = (long)INT_MAX + 2; /* past int either way */
     c->p = t;
-    if (t == digits || v > (long)INT_MAX + negative)
+    if (t == digits)
         return 0;
+    if (v > (long)INT_MAX + negative)
+        return -1;
     *out = negative ? -v : v;
     return 1;
+}
+
+/* Why off_int's result got (not 1) fails the count named what. */
+static const char *off_count_why(int got, const char *what, char *buf, size_t size)
+{
+    snprintf(buf, size,
+             got == -2   ? "the file ends before the %s count"
+             : got == -1 ? "the %s count is past the largest int"
+                         : "the %s count is not a number",
+             what);
+    return buf;
+}
+
+/* The file's last line, for c at its end: the line before the one a
+ * final newline starts. */
+static unsigned off_last_line(const off_cursor *c)
+{
+    return c->line - (c->p > c->start && c->p[-1] == '\n' && c->line > 1);
 }
 
 /* CGAL's scanner's next line of numbers (a point's or a face's): past
@@ -3399,7 +3422,7 @@ static int off_next_line(off_cursor *c, const char **s, const char **e, unsigned
     off_skip_comment(c);
     *at = c->line;
     if (c->p >= c->end) {
-        *at -= c->p > c->start && c->p[-1] == '\n' && c->line > 1;
+        *at = off_last_line(c);
         return 0;
     }
     *s = c->p;
@@ -3471,7 +3494,12 @@ static const char *read_off(const char *text, size_t size, mesh_file *m, mesh_re
         OFF_FAIL("it does not start with 'OFF' (or COFF, NOFF, 4OFF, nOFF, STOFF, SKEL)");
     off_skip_comment(&c);
     at = c.line;
-    if (c.p < c.end && !isdigit((unsigned char)*c.p)) {
+    char count[64];
+    if (c.p >= c.end) {
+        at = off_last_line(&c);
+        OFF_FAIL("the file ends before the point count");
+    }
+    if (!isdigit((unsigned char)*c.p)) {
         const char *w = c.p;
         while (c.p < c.end && isalnum((unsigned char)*c.p))
             c.p++;
@@ -3481,18 +3509,22 @@ static const char *read_off(const char *text, size_t size, mesh_file *m, mesh_re
     }
     /* each count's line is where its read stops */
     long nv, nf, edges;
-    int ok = off_int(&c, &nv) && (!dimensional || off_int(&c, &nv));
-    at = c.line;
-    if (!ok)
-        OFF_FAIL("the point count is not a number");
-    ok = off_int(&c, &nf);
-    at = c.line;
-    if (!ok || nf < 0)
-        OFF_FAIL("the face count is not a number of 0 or more");
-    ok = skel || off_int(&c, &edges);
-    at = c.line;
-    if (!ok)
-        OFF_FAIL("the edge count is not a number");
+    int got = off_int(&c, &nv);
+    if (got == 1 && dimensional)
+        got = off_int(&c, &nv);
+    at = got == -2 ? off_last_line(&c) : c.line;
+    if (got != 1)
+        OFF_FAIL("%s", off_count_why(got, "point", count, sizeof count));
+    got = off_int(&c, &nf);
+    at = got == -2 ? off_last_line(&c) : c.line;
+    if (got != 1)
+        OFF_FAIL("%s", off_count_why(got, "face", count, sizeof count));
+    if (nf < 0)
+        OFF_FAIL("the face count is below 0");
+    got = skel ? 1 : off_int(&c, &edges);
+    at = got == -2 ? off_last_line(&c) : c.line;
+    if (got != 1)
+        OFF_FAIL("%s", off_count_why(got, "edge", count, sizeof count));
     if (nv < 0)
         OFF_FAIL("the point count is below 0");
     for (long i = 0; i < nv; i++) {
