@@ -285,6 +285,22 @@ static void test_mesh_errors(void **state)
     assert_string_equal(sc_scene_warning(s, 0)->message,
                         "polyhedron without volume is empty");
     sc_scene_release(s);
+    /* flat in a tilted plane, whose volume is rounding noise: the same */
+    s = load("m.csg", "polyhedron(points = [[0.1, 0.2, 0.7], [0.3, 0.3, 0.4], "
+                      "[0.6, 0.1, 0.3], [0.2, 0.6, 0.2]], faces = [[0, 1, 2, 3], "
+                      "[3, 2, 1, 0]]);");
+    assert_int_equal(sc_scene_warning_count(s), 1);
+    assert_string_equal(sc_scene_warning(s, 0)->message,
+                        "polyhedron without volume is empty");
+    sc_scene_release(s);
+    /* long and thin (2e6 by 2): a solid, as OpenSCAD keeps it */
+    s = load("m.csg",
+             "polyhedron(points = [[0, 0, 0], [2e6, 0, 0], [0, 2, 0], [0, 0, 2]], "
+             "faces = [[0, 2, 1], [0, 1, 3], [1, 2, 3], [0, 3, 2]]);");
+    assert_int_equal(sc_scene_warning_count(s), 0);
+    assert_true(inside(s, 1e6, 0.2, 0.2));
+    assert_false(inside(s, 1e6, 0.6, 0.6));
+    sc_scene_release(s);
 }
 
 /* BOSL's patches: every face lists its own copies of its corners. The

@@ -263,12 +263,17 @@ static sc_status finish_mesh(const build_ctx *c, const sc_location *loc, int num
     for (uint32_t i = 0; i < point_count; i++)
         box = bbox_add_point(box, points[i]);
     vec3 centre = v3_scale(v3_add(box.lo, box.hi), 0.5);
-    double volume = 0, area = 0;
+    /* magnitude: the sum of the terms' sizes, |a| |b x d|, of which a flat
+     * mesh's volume is rounding noise (a thin one's is not, however long:
+     * a tetrahedron 2e6 long and 2 wide has 1e-7 of it) */
+    double volume = 0, area = 0, magnitude = 0;
     for (size_t i = 0; i < k; i++) {
         vec3 a = v3_sub(points[tris[3 * i]], centre);
         vec3 b = v3_sub(points[tris[3 * i + 1]], centre);
         vec3 d = v3_sub(points[tris[3 * i + 2]], centre);
-        volume += v3_dot(a, v3_cross(b, d)) / 6;
+        vec3 bd = v3_cross(b, d);
+        volume += v3_dot(a, bd) / 6;
+        magnitude += v3_length(a) * v3_length(bd);
         area += v3_length(v3_cross(v3_sub(b, a), v3_sub(d, a)));
     }
     int mixed = 0;
@@ -277,8 +282,7 @@ static sc_status finish_mesh(const build_ctx *c, const sc_location *loc, int num
         return err_nomem(c->error, loc);
     vec3 ext = v3_sub(box.hi, box.lo);
     double size = fmax(ext.x, fmax(ext.y, ext.z));
-    if (parity ? !(area > 1e-24 * size * size)
-               : !(shells / 6 > 1e-12 * size * size * size)) {
+    if (parity ? !(area > 1e-24 * size * size) : !(shells > 1e-12 * magnitude)) {
         *empty = numbered ? "polyhedron without volume is empty"
                           : "imported mesh without volume is empty";
         return SC_OK;
