@@ -275,7 +275,7 @@ for mesh in tet-c.off tet-n.off tet-4.off tet-cn.off; do
         fail "$mesh is not openscad's import: $(tail -n 9 out.txt)"
 done
 printf 'OFF BINARY\n' >binary.off
-fails_with binary.off 1 "binary.off: error: import: '$work/binary.off' is not a valid OFF file (it is a binary OFF file, which is not read)"
+fails_with binary.off 1 "binary.off: error: import: '$work/binary.off' is not a valid OFF file (byte 11: the file ends before its counts)"
 
 # ---- spancast-mpi: the same inputs, converted or read once by rank 0 ----
 if command -v mpirun >/dev/null && [ -x "$(dirname "$bin")/spancast-mpi" ]; then

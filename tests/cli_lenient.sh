@@ -513,6 +513,68 @@ grep -q "^cg_comments.off:8:1: error: .*(line 8: point 4 has fewer than 3 number
 # a 4OFF point with w = 0 makes CGAL divide by zero, and openscad aborts
 printf '4OFF\n4 4 0\n0 0 0 1\n1 0 0 0\n0 1 0 1\n0 0 1 1\n%s\n' "$off_f" >cg_w0.off
 import_error cg_w0.off "line 4: point 2 is not finite"
+
+# Binary OFF ("OFF BINARY"), as CGAL's reader takes it: big-endian counts,
+# each point's floats (then a normal, NOFF; a colour's count and floats,
+# COFF), each face's count, indices, and colour count and floats. A file
+# it stops in is left out; one where openscad aborts (an index out of
+# range or missing, a point that is not finite) is an error.
+python3 -c '
+import struct
+P = [(0, 0, 0), (1, 0, 0), (0, 1, 0), (0, 0, 1)]
+F = [(0, 2, 1), (0, 1, 3), (1, 2, 3), (0, 3, 2)]
+def off(name, kw="OFF", pts=P, faces=F, after=lambda i: b"", colour=struct.pack(">i", 0), cut=None, w=None):
+    d = (kw + " BINARY\n").encode() + struct.pack(">3i", len(pts), len(faces), 0)
+    for i, p in enumerate(pts):
+        d += struct.pack(">3f", *p) + (struct.pack(">f", w[i]) if w else b"") + after(i)
+    for f in faces:
+        d += struct.pack(">i", len(f)) + b"".join(struct.pack(">i", x) for x in f) + colour
+    open("bin_" + name + ".off", "wb").write(d[:cut] if cut else d)
+off("plain")
+off("colour", "COFF", after=lambda i: struct.pack(">i3f", 3, 1, 0, 0), colour=struct.pack(">i4f", 4, 1, 1, 1, 1))
+off("normal", "NOFF", after=lambda i: struct.pack(">3f", 0, 0, 1))
+off("w", "4OFF", pts=[(0, 0, 0), (2, 0, 0), (0, 2, 0), (0, 0, 2)], w=[1, 2, 2, 2])
+off("cut", cut=60)
+off("nocolour", colour=b"")
+off("badcolour", colour=struct.pack(">i", 7))
+off("twopoints", faces=[(0, 2), (0, 1, 3), (1, 2, 3), (0, 3, 2)])
+off("index", faces=[(0, 2, 1), (0, 1, 9), (1, 2, 3), (0, 3, 2)])
+off("nan", pts=[(0, 0, 0), (float("nan"), 0, 0), (0, 1, 0), (0, 0, 1)])
+off("cutface", cut=138)
+'
+for off in bin_*.off; do
+    name=${off%.off}
+    printf 'union() {\n\timport(file = "%s");\n\tmultmatrix([[1, 0, 0, 5], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]) {\n\t\tcube(size = [1, 1, 1], center = false);\n\t}\n}\n' "$off" >"$name.csg"
+    case $name in
+    bin_plain | bin_colour | bin_normal | bin_w) want=in ;;
+    bin_cut) want="byte 59: the file ends in point 4 of 4" ;;
+    bin_nocolour) want="byte 135: the file ends before face 3 of 4" ;;
+    bin_badcolour) want="byte 91: face 1 has a colour of 7 numbers (0 to 4)" ;;
+    bin_twopoints) want="byte 75: face 1 has fewer than 3 points" ;;
+    bin_index) want="error: byte 107: a point index of face 2 is out of range" ;;
+    bin_nan) want="error: byte 47: point 2 is not finite" ;;
+    bin_cutface) want="error: byte 135: face 4 has fewer indices than its point count" ;;
+    esac
+    check
+    case $want in
+    in)
+        "$bin" inside "$name.csg" --point=0.1,0.1,0.1 --point=5.5,0.5,0.5 >in.txt 2>err.txt ||
+            fail "$name: exit $?: $(cat err.txt)"
+        [ "$(tr '\n' ' ' <in.txt)" = "in in " ] || fail "$name: $(tr '\n' ' ' <in.txt)"
+        [ -s err.txt ] && fail "$name: $(cat err.txt)"
+        against_openscad "$name.csg"
+        ;;
+    error:*)
+        "$bin" render "$name.csg" -o bad.png -q 2>err.txt && fail "$name rendered"
+        [ "$(cat err.txt)" = "$name.csg:2:16: error: import: '$off' is not a valid OFF file (${want#error: })" ] ||
+            fail "$name: $(cat err.txt)"
+        ;;
+    *)
+        left_out "$name.csg" corner_ref.csg 2:16 "$off" OFF "$want"
+        against_openscad "$name.csg"
+        ;;
+    esac
+done
 # The quoted line is shown as printable ASCII: a terminal's escape
 # sequence in the file does not reach the terminal.
 printf 'solid x\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 0 1 \033[31m\n' >esc.stl

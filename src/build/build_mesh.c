@@ -3113,11 +3113,12 @@ static const char *stl_unknown(const unsigned char *head, uint64_t size)
 /* How reading a mesh file went, beside what read_stl and read_off return
  * (NULL, or what is wrong): memory ran out (oom); or OpenSCAD 2021.01
  * imports nothing from such a file and renders the rest (empty), as
- * against a file it cannot render either (binary OFF, a point that is not
- * finite); a message made for the file goes in text. */
+ * against a file it cannot render either (an index out of range, a point
+ * that is not finite); a message made for the file goes in text. */
 typedef struct mesh_reading {
     int oom, empty;
     int not_finite; /* empty for a corner that is nan or inf (STL) */
+    int binary;     /* a binary OFF file: its points are floats */
     unsigned line;  /* the file's line where it went wrong, where known */
     char text[320];
 } mesh_reading;
@@ -3442,6 +3443,135 @@ static int off_next_line(off_cursor *c, const char **s, const char **e, unsigned
     return 1;
 }
 
+/* A binary OFF file's body as CGAL 5's reader takes it: at p (past the
+ * header's line), the keyword's variants. */
+typedef struct off_binary {
+    const unsigned char *start, *p, *end;
+    int homogeneous, dimensional, normals, colours, skel;
+} off_binary;
+
+/* The next big-endian 32-bit word; 0 at the end of the file. */
+static int off_word(off_binary *b, uint32_t *out)
+{
+    if (b->end - b->p < 4)
+        return 0;
+    *out = (uint32_t)b->p[0] << 24 | (uint32_t)b->p[1] << 16 | (uint32_t)b->p[2] << 8 |
+           b->p[3];
+    b->p += 4;
+    return 1;
+}
+
+static int off_int32(off_binary *b, int32_t *out)
+{
+    uint32_t w;
+    if (!off_word(b, &w))
+        return 0;
+    *out = w > INT32_MAX ? -(int32_t)(~w) - 1 : (int32_t)w;
+    return 1;
+}
+
+static int off_float(off_binary *b, double *out)
+{
+    uint32_t w;
+    float f;
+    if (!off_word(b, &w))
+        return 0;
+    memcpy(&f, &w, sizeof f);
+    *out = f;
+    return 1;
+}
+
+/* Binary OFF as CGAL's reader takes it (File_header_OFF, File_scanner_OFF,
+ * Polyhedron_scan_OFF): big-endian 32-bit words, the dimension (nOFF) and
+ * the point, face and edge counts (no edge count in SKEL); each point's
+ * three floats (and w, 4OFF), then a normal's (NOFF) and a colour as a
+ * count of 0 to 4 and as many floats (COFF); each face's point count, its
+ * indices, and a colour as a count of 0 to 4 and as many floats. Texture
+ * coordinates are not skipped, as CGAL does not skip them. Messages name
+ * the byte where reading stopped. */
+static const char *read_off_binary(off_binary *b, mesh_file *m, mesh_reading *r)
+{
+    /* what is wrong, at the byte reading stopped at; lenient (OpenSCAD
+     * imports nothing) unless r->empty is cleared first */
+    r->binary = 1;
+#define BIN_FAIL(...)                                                                    \
+    return snprintf(r->text, sizeof r->text, "byte %zu: ", (size_t)(b->p - b->start)),   \
+           snprintf(r->text + strlen(r->text), sizeof r->text - strlen(r->text),         \
+                    __VA_ARGS__),                                                        \
+           r->text
+    int32_t nv, nf, edges = 0;
+    if ((b->dimensional && !off_int32(b, &nv)) || !off_int32(b, &nv) ||
+        !off_int32(b, &nf) || (!b->skel && !off_int32(b, &edges)))
+        BIN_FAIL("the file ends before its counts");
+    (void)edges;
+    if (nf < 0)
+        BIN_FAIL("the face count is below 0");
+    if (nv < 0)
+        BIN_FAIL("the point count is below 0");
+    for (int32_t i = 0; i < nv; i++) {
+        double v[4] = {0, 0, 0, 1}, skip;
+        for (int k = 0; k < 3 + b->homogeneous; k++)
+            if (!off_float(b, &v[k]))
+                BIN_FAIL("the file ends in point %d of %d", (int)i + 1, (int)nv);
+        for (int k = 0; b->normals && k < 3 + b->homogeneous; k++)
+            if (!off_float(b, &skip))
+                BIN_FAIL("the file ends in point %d of %d", (int)i + 1, (int)nv);
+        int32_t n = 0;
+        if (b->colours && !off_int32(b, &n))
+            BIN_FAIL("the file ends in point %d of %d", (int)i + 1, (int)nv);
+        if (n < 0 || n > 4)
+            BIN_FAIL("point %d has a colour of %d numbers (0 to 4)", (int)i + 1, (int)n);
+        while (n-- > 0)
+            if (!off_float(b, &skip))
+                BIN_FAIL("the file ends in point %d of %d", (int)i + 1, (int)nv);
+        vec3 q = b->homogeneous && v[3] != 1 ? v3(v[0] / v[3], v[1] / v[3], v[2] / v[3])
+                                             : v3(v[0], v[1], v[2]);
+        if (!v3_is_finite(q)) {
+            r->empty = 0;
+            BIN_FAIL("point %d is not finite", (int)i + 1);
+        }
+        if (!add_point(m, q))
+            return r->oom = 1, "out of memory";
+    }
+    for (int32_t f = 0; f < nf; f++) {
+        int32_t k;
+        if (!off_int32(b, &k))
+            BIN_FAIL("the file ends before face %d of %d", (int)f + 1, (int)nf);
+        if (k < 0) { /* a count far past the file (CGAL's builder is left open) */
+            r->empty = 0;
+            BIN_FAIL("face %d has fewer indices than its point count", (int)f + 1);
+        }
+        if (k < 3)
+            BIN_FAIL("face %d has fewer than 3 points", (int)f + 1);
+        if (!start_face(m))
+            return r->oom = 1, "out of memory";
+        for (int32_t j = 0; j < k; j++) {
+            int32_t i;
+            if (!off_int32(b, &i)) {
+                r->empty = 0;
+                BIN_FAIL("face %d has fewer indices than its point count", (int)f + 1);
+            }
+            if (i < 0 || i >= nv) {
+                r->empty = 0;
+                BIN_FAIL("a point index of face %d is out of range", (int)f + 1);
+            }
+            if (!add_index(m, (uint32_t)i))
+                return r->oom = 1, "out of memory";
+        }
+        int32_t n;
+        if (!off_int32(b, &n))
+            BIN_FAIL("the file ends in face %d of %d", (int)f + 1, (int)nf);
+        if (n < 0 || n > 4)
+            BIN_FAIL("face %d has a colour of %d numbers (0 to 4)", (int)f + 1, (int)n);
+        double skip;
+        while (n-- > 0)
+            if (!off_float(b, &skip))
+                BIN_FAIL("the file ends in face %d of %d", (int)f + 1, (int)nf);
+    }
+#undef BIN_FAIL
+    return finish_faces(m) ? NULL : (r->oom = 1, "out of memory");
+}
+
 /* An OFF file as CGAL 5's reader (which OpenSCAD 2021.01's import()
  * runs) takes it (File_header_OFF, File_scanner_OFF, Polyhedron_scan_OFF):
  * the keyword [ST][C][N][4][n]OFF (texture coordinates, colours, normals
@@ -3451,12 +3581,13 @@ static int off_next_line(off_cursor *c, const char **s, const char **e, unsigned
  * face and edge counts (no edge count after [ST][C][N][4][n]SKEL, whose
  * faces CGAL reads as an OFF file's); then each point on a line of its own, its first
  * three numbers (over the fourth, 4OFF), and each face on a line of its
- * own, its point count and indices as numbers truncated to integers. */
+ * own, its point count and indices as numbers truncated to integers; after
+ * the keyword, BINARY reads the rest as read_off_binary does. */
 static const char *read_off(const char *text, size_t size, mesh_file *m, mesh_reading *r)
 {
     /* OpenSCAD imports nothing from a file CGAL's reader stops in, and
      * renders the rest; it aborts where a face's index is out of range or
-     * missing (CGAL's builder is left open), and reads a binary OFF file */
+     * missing (CGAL's builder is left open) */
     r->empty = 1;
     off_cursor c = {text, text, text + size, 1};
     uint32_t line_cap = 0; /* of m->lines */
@@ -3478,10 +3609,15 @@ static const char *read_off(const char *text, size_t size, mesh_file *m, mesh_re
     int homogeneous = 0, dimensional = 0;
     if (len >= 2 && t[0] == 'S' && t[1] == 'T')
         j += 2;
-    if (j < len && t[j] == 'C')
+    int colours = 0, normals = 0;
+    if (j < len && t[j] == 'C') {
+        colours = 1;
         j++;
-    if (j < len && t[j] == 'N')
+    }
+    if (j < len && t[j] == 'N') {
+        normals = 1;
         j++;
+    }
     if (j < len && t[j] == '4') {
         homogeneous = 1;
         j++;
@@ -3507,8 +3643,21 @@ static const char *read_off(const char *text, size_t size, mesh_file *m, mesh_re
         const char *w = c.p;
         while (c.p < c.end && isalnum((unsigned char)*c.p))
             c.p++;
-        if (c.p - w == 6 && strncmp(w, "BINARY", 6) == 0)
-            return r->empty = 0, "it is a binary OFF file, which is not read";
+        if (c.p - w == 6 && strncmp(w, "BINARY", 6) == 0) {
+            /* past the character that ends the word, and its line */
+            if (c.p < c.end && *c.p++ != '\n')
+                while (c.p < c.end && *c.p++ != '\n')
+                    ;
+            off_binary b = {(const unsigned char *)c.start,
+                            (const unsigned char *)c.p,
+                            (const unsigned char *)c.end,
+                            homogeneous,
+                            dimensional,
+                            normals,
+                            colours,
+                            skel};
+            return read_off_binary(&b, m, r);
+        }
         OFF_FAIL("the point count is not a number");
     }
     /* each count's line is where its read stops */
@@ -3620,12 +3769,13 @@ int build_mesh_rounding(const char *path, build_mesh_rounding_info *out)
     mesh_reading r = {0};
     const char *bad = off ? read_off(text, size, &m, &r) : read_stl(text, size, &m, &r);
     free(text);
+    binary |= r.binary;
     if (bad || m.point_count == 0) {
         mesh_file_free(&m);
         return 0;
     }
     /* the digits written: the most any coordinate needs (a sample of the
-     * first 2^16 points), 9 at most for float's (binary STL) */
+     * first 2^16 points), 9 at most for float's (binary STL and OFF) */
     int digits = 0;
     for (uint32_t i = 0; i < m.point_count && i < 65536u; i++) {
         const double *c = &m.points[i].x;
