@@ -158,6 +158,10 @@ static void test_shapes(void **state)
      * a fan of 9 triangles about its centre (OpenSCAD: 96.502641) */
     NEAR(area_of("<svg><rect width='10' height='10' rx='2'/></svg>"),
          100 - 16 + 4 * 9 * 0.5 * 4 * sin(M_PI / 2 / 9), 40 * GRID);
+    /* an arc that ends where it starts is left out (SVG F.6.2, and
+     * OpenSCAD draws none): the square, not a circle about its corner */
+    NEAR(area_of("<svg><path d='M 10 10 H 50 A 20 20 0 0 1 50 10 V 50 H 10 Z'/></svg>"),
+         1600, 1e-6);
     /* the defs subtree is not drawn; unknown elements are transparent */
     NEAR(area_of("<svg><defs><rect width='10' height='10'/></defs>"
                  "<a><rect width='2' height='3'/></a></svg>"),

@@ -14,7 +14,8 @@
  *     |sweep| * 10 / 180 + 4 steps per elliptical arc (SVG's
  *     implementation notes, F.6.5, radii scaled up when too small); $fn,
  *     $fa and $fs play no part. An arc with a zero radius is a line, as
- *     SVG says (OpenSCAD computes NaN there).
+ *     SVG says (OpenSCAD computes NaN there); one that ends where it
+ *     starts is left out, as SVG says and OpenSCAD does.
  *   - Strokes: line and polyline are always their stroke; an open subpath
  *     of a path (ends more than 0.1 apart) is its stroke, except the last
  *     one of a path that closed some subpath with z. The stroke is
@@ -309,6 +310,10 @@ static int arc_to(reader *r, points *p, double x1, double y1, double rx, double 
      * the output then refuses as out of range */
     if (rx == 0 || ry == 0 || !isfinite(x1 + y1 + rx + ry + x2 + y2 + angle))
         return push(r, p, x2, y2);
+    /* an arc that ends where it starts is no arc (F.6.2; OpenSCAD's steps
+     * come out of a NaN there, and it draws none) */
+    if (x1 == x2 && y1 == y2)
+        return 1;
     double cos_a = faithful_cos_deg(angle), sin_a = faithful_sin_deg(angle);
     double dx = (x1 - x2) / 2, dy = (y1 - y2) / 2;
     double x1_ = cos_a * dx + sin_a * dy, y1_ = -sin_a * dx + cos_a * dy;
