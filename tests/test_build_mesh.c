@@ -293,6 +293,30 @@ static void test_mesh_errors(void **state)
     assert_string_equal(sc_scene_warning(s, 0)->message,
                         "polyhedron without volume is empty");
     sc_scene_release(s);
+    /* two small cubes 9e6 apart, in one polyhedron: each shell's volume
+     * about a point of its own keeps its digits (about the centre of the
+     * bounds it was noise, and the solid "without volume") */
+    s = load(
+        "m.csg",
+        "polyhedron(points = [[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0], [0, 0, 1], "
+        "[1, 0, 1], [1, 1, 1], [0, 1, 1], [9e6, 9e6, 9e6], [9000001, 9e6, 9e6], "
+        "[9000001, 9000001, 9e6], [9e6, 9000001, 9e6], [9e6, 9e6, 9000001], "
+        "[9000001, 9e6, 9000001], [9000001, 9000001, 9000001], [9e6, 9000001, "
+        "9000001]], faces = [[0, 1, 2, 3], [4, 7, 6, 5], [0, 4, 5, 1], [1, 5, 6, 2], "
+        "[2, 6, 7, 3], [3, 7, 4, 0], [8, 9, 10, 11], [12, 15, 14, 13], [8, 12, 13, 9], "
+        "[9, 13, 14, 10], [10, 14, 15, 11], [11, 15, 12, 8]]);");
+    assert_int_equal(sc_scene_warning_count(s), 0);
+    assert_true(inside(s, 0.5, 0.5, 0.5));
+    assert_true(inside(s, 9000000.5, 9000000.5, 9000000.5));
+    sc_scene_release(s);
+    /* the same in 2D (a DXF drawing's squares), drawn as a flat slab */
+    s = load("m.csg", "polygon(points = [[0, 0], [5, 0], [5, 5], [0, 5], [9e6, 9e6], "
+                      "[9000010, 9e6], [9000010, 9000010], [9e6, 9000010]], paths = "
+                      "[[0, 1, 2, 3], [4, 5, 6, 7]]);");
+    assert_int_equal(sc_scene_warning_count(s), 0);
+    assert_true(inside(s, 2.5, 2.5, 0));
+    assert_true(inside(s, 9000005, 9000005, 0));
+    sc_scene_release(s);
     /* long and thin (2e6 by 2): a solid, as OpenSCAD keeps it */
     s = load("m.csg",
              "polyhedron(points = [[0, 0, 0], [2e6, 0, 0], [0, 2, 0], [0, 0, 2]], "

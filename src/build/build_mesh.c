@@ -27,7 +27,7 @@
  * wind does not matter: OpenSCAD lists them clockwise seen from outside,
  * STL and OFF files usually the other way, so the sign of the enclosed
  * volume (divergence theorem, sum of a . (b x c) / 6 over the triangles,
- * about the centre of the bounds for accuracy) decides, and a mesh whose
+ * about a point of each shell for accuracy) decides, and a mesh whose
  * volume is negative is turned inside out. A mesh without volume is
  * empty, with a warning. Where a fan of a non-convex face overlaps itself,
  * the winding number of prim_mesh.c cancels the overlap.
@@ -179,15 +179,19 @@ static int box_within(const bbox *a, const bbox *b)
            a->hi.x <= b->hi.x && a->hi.y <= b->hi.y && a->hi.z <= b->hi.z;
 }
 
-/* Whether the shells of a closed mesh (its triangles joined by their
- * edges) turn different ways where a global turn cannot mend it: a shell
- * enclosing volume of the sign opposite to the mesh's whole (whose sign
- * is total's) that does not lie within the box of a shell of the mesh's
- * sign, where it would be a cavity, sets *mixed; the sum of the shells'
- * volumes, each counted positive, goes to *volume (six times the volume,
- * about centre). 0 when memory runs out. */
-static int shell_volumes(const vec3 *points, const uint32_t *tris, size_t k, vec3 centre,
-                         double total, int *mixed, double *volume)
+/* The shells of a closed mesh (its triangles joined by their edges),
+ * each one's volume taken about a point of its own (its first triangle's
+ * first corner), so that a small shell far from another keeps its digits:
+ * six times the signed volume of the whole in *total; the sum of the
+ * shells' volumes, each counted positive, in *volume; in *magnitude the
+ * sum of the terms' sizes (|a| |b x c| over the triangles, each about its
+ * shell's point), of which a flat shell's volume is rounding noise.
+ * *mixed when they turn different ways where a global turn cannot mend
+ * it: a shell enclosing volume of the sign opposite to the whole's that
+ * does not lie within the box of a shell of the whole's sign, where it
+ * would be a cavity. 0 when memory runs out. */
+static int shell_volumes(const vec3 *points, const uint32_t *tris, size_t k,
+                         double *total, int *mixed, double *volume, double *magnitude)
 {
     face_edge *edges = malloc((k ? k : 1) * 3 * sizeof *edges);
     uint32_t *parent = malloc((k ? k : 1) * sizeof *parent);
@@ -214,15 +218,23 @@ static int shell_volumes(const vec3 *points, const uint32_t *tris, size_t k, vec
         if (edges[i].key == edges[i - 1].key)
             parent[face_root(parent, edges[i].face)] =
                 face_root(parent, edges[i - 1].face);
+    *magnitude = 0;
     for (size_t i = 0; i < k; i++) {
         uint32_t r = face_root(parent, (uint32_t)i);
-        vec3 a = v3_sub(points[tris[3 * i]], centre);
-        vec3 b = v3_sub(points[tris[3 * i + 1]], centre);
-        vec3 d = v3_sub(points[tris[3 * i + 2]], centre);
-        shell[r] += v3_dot(a, v3_cross(b, d));
+        vec3 at = points[tris[3 * r]];
+        vec3 a = v3_sub(points[tris[3 * i]], at);
+        vec3 b = v3_sub(points[tris[3 * i + 1]], at);
+        vec3 d = v3_sub(points[tris[3 * i + 2]], at);
+        vec3 bd = v3_cross(b, d);
+        shell[r] += v3_dot(a, bd);
+        *magnitude += v3_length(a) * v3_length(bd);
         for (int j = 0; j < 3; j++)
             box[r] = bbox_add_point(box[r], points[tris[3 * i + j]]);
     }
+    *total = 0;
+    for (size_t i = 0; i < k; i++)
+        if (parent[i] == i)
+            *total += shell[i];
     *volume = 0;
     *mixed = 0;
     size_t shells = 0; /* the roots, gathered at the front of parent */
@@ -232,11 +244,14 @@ static int shell_volumes(const vec3 *points, const uint32_t *tris, size_t k, vec
     for (size_t a = 0; a < shells; a++) {
         uint32_t i = parent[a];
         *volume += fabs(shell[i]);
-        if (!(shell[i] * total < 0) || *mixed)
+        /* against the whole (a whole of 0: shells that cancel, each
+         * against the other) */
+        if (!(shell[i] * *total < 0 || (*total == 0 && shell[i] != 0)) || *mixed)
             continue;
         int cavity = 0; /* within the box of a shell turned the mesh's way */
         for (size_t b = 0; b < shells && !cavity; b++)
-            cavity = shell[parent[b]] * total > 0 && box_within(&box[i], &box[parent[b]]);
+            cavity =
+                shell[parent[b]] * *total > 0 && box_within(&box[i], &box[parent[b]]);
         *mixed = !cavity;
     }
     free(edges);
@@ -263,22 +278,19 @@ static sc_status finish_mesh(const build_ctx *c, const sc_location *loc, int num
     for (uint32_t i = 0; i < point_count; i++)
         box = bbox_add_point(box, points[i]);
     vec3 centre = v3_scale(v3_add(box.lo, box.hi), 0.5);
-    /* magnitude: the sum of the terms' sizes, |a| |b x d|, of which a flat
-     * mesh's volume is rounding noise (a thin one's is not, however long:
-     * a tetrahedron 2e6 long and 2 wide has 1e-7 of it) */
-    double volume = 0, area = 0, magnitude = 0;
+    double area = 0;
     for (size_t i = 0; i < k; i++) {
         vec3 a = v3_sub(points[tris[3 * i]], centre);
         vec3 b = v3_sub(points[tris[3 * i + 1]], centre);
         vec3 d = v3_sub(points[tris[3 * i + 2]], centre);
-        vec3 bd = v3_cross(b, d);
-        volume += v3_dot(a, bd) / 6;
-        magnitude += v3_length(a) * v3_length(bd);
         area += v3_length(v3_cross(v3_sub(b, a), v3_sub(d, a)));
     }
+    /* flat: a volume that is rounding noise of its terms (a thin solid's
+     * is not, however long: a tetrahedron 2e6 long and 2 wide has 1e-7 of
+     * them) */
     int mixed = 0;
-    double shells = fabs(volume) * 6;
-    if (!parity && !shell_volumes(points, tris, k, centre, volume, &mixed, &shells))
+    double volume = 0, shells = 0, magnitude = 0;
+    if (!parity && !shell_volumes(points, tris, k, &volume, &mixed, &shells, &magnitude))
         return err_nomem(c->error, loc);
     vec3 ext = v3_sub(box.hi, box.lo);
     double size = fmax(ext.x, fmax(ext.y, ext.z));
