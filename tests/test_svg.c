@@ -77,6 +77,38 @@ static void test_page(void **state)
                               0, 72, &r, &e),
                      SC_OK);
     NEAR(twod_area(&r), 20 * 15, 1e-6);
+    twod_free(&r);
+    /* a viewBox of zero width and height draws nothing, as in OpenSCAD,
+     * where its points are not finite; with one of them zero, meet takes
+     * the other's scale, and none draws nothing */
+    assert_int_equal(read_svg("<svg width='100' height='100' viewBox='0 0 0 0'>"
+                              "<rect x='10' y='10' width='30' height='30'/></svg>",
+                              0, 72, &r, &e),
+                     SC_OK);
+    assert_int_equal(r.contour_count, 0);
+    twod_free(&r);
+    assert_int_equal(read_svg("<svg width='100' height='100' viewBox='0 0 10 0' "
+                              "preserveAspectRatio='none'>"
+                              "<rect x='1' y='1' width='3' height='3'/></svg>",
+                              0, 72, &r, &e),
+                     SC_OK);
+    assert_int_equal(r.contour_count, 0);
+    twod_free(&r);
+    /* OpenSCAD: 3.53 to 14.11 on both axes (10 units across 100 pt) */
+    assert_int_equal(read_svg("<svg width='100' height='100' viewBox='0 0 10 0'>"
+                              "<rect x='1' y='1' width='3' height='3'/></svg>",
+                              0, 72, &r, &e),
+                     SC_OK);
+    bounds(&r, b);
+    NEAR(b[0], 25.4 / 7.2, 1e-4);
+    NEAR(b[2], 4 * 25.4 / 7.2, 1e-4);
+    NEAR(b[1], 25.4 / 7.2, 1e-4);
+    NEAR(b[3], 4 * 25.4 / 7.2, 1e-4);
+    twod_free(&r);
+    assert_int_equal(read_svg("<svg width='100mm' height='50mm' viewBox='0 0 200 100'>"
+                              "<rect x='20' y='10' width='40' height='30'/></svg>",
+                              0, 72, &r, &e),
+                     SC_OK);
     bounds(&r, b);
     NEAR(b[0], 10, 1e-4);
     NEAR(b[2], 30, 1e-4);
@@ -270,10 +302,19 @@ static void test_bad_input(void **state)
         assert_true(st == SC_OK || st == SC_ERR_SYNTAX);
         twod_free(&r);
     }
-    /* a page scale out of range */
+    /* a page scale that is not finite draws nothing, as OpenSCAD (whose
+     * points are not finite there) draws nothing */
     assert_int_equal(read_svg("<svg width='1e300mm' height='1mm' viewBox='0 0 1e-300 1' "
                               "preserveAspectRatio='none'>"
                               "<rect width='1' height='1'/></svg>",
+                              0, 72, &r, &e),
+                     SC_OK);
+    assert_int_equal(r.contour_count, 0);
+    twod_free(&r);
+    /* a finite scale that takes coordinates out of range */
+    assert_int_equal(read_svg("<svg width='1e300mm' height='1mm' viewBox='0 0 1 1' "
+                              "preserveAspectRatio='none'>"
+                              "<rect width='1e10' height='1'/></svg>",
                               0, 72, &r, &e),
                      SC_ERR_LIMIT);
     assert_string_equal(e.message,

@@ -36,7 +36,10 @@
  *     user units scale to the page (preserveAspectRatio: the aligned,
  *     uniform scale of meet or slice; none: each axis its own); without
  *     one, a user unit is a millimetre. y points up: y = height - y.
- *     center = true centres the bounds on the origin instead.
+ *     center = true centres the bounds on the origin instead. A page
+ *     whose scale is not finite (a viewBox of zero width, say, unless
+ *     meet takes the other axis's scale) draws nothing: OpenSCAD's
+ *     points are not finite there, and it draws none.
  *   - Fill: each shape's own rings are combined even-odd (OpenSCAD's
  *     sanitize), then all shapes united (non-zero), through the clipper.
  */
@@ -86,6 +89,7 @@ typedef struct reader {
     double height_mm;
     double box[4]; /* min x, min y, max x, max y of scale * point; empty: min > max */
     int nomem, range;
+    int blank; /* a page whose scale is not finite */
 } reader;
 
 /* ---- numbers ---- */
@@ -1021,6 +1025,7 @@ static void read_page(reader *r, const xml_element *e, double dpi)
         r->align[0] = alignment(ax, width_mm, s, box[2]);
         r->align[1] = alignment(ay, r->height_mm, s, box[3]);
     }
+    r->blank |= !isfinite(r->scale[0]) || !isfinite(r->scale[1]);
 }
 
 /* ---- the walk ---- */
@@ -1136,7 +1141,7 @@ sc_status svg_read(const char *text, size_t size, const char *name, const sc_loc
                      : fail(&r, SC_ERR_NOMEM, 0, "out of memory");
     }
     xml_free(&doc);
-    if (st == SC_OK && r.shape_count) {
+    if (st == SC_OK && r.shape_count && !r.blank) {
         /* page units: x = scale (x - viewbox x) - cx, y = scale (-viewbox
          * y - y) + cy, OpenSCAD's formula (the viewBox's y enters with
          * the flip's sign) */
