@@ -1155,6 +1155,18 @@ static sc_status read_svg(const eval *e, const model_node *n, twod_region *out)
     return st;
 }
 
+/* A warning of the DXF reader (dxf_options.warn): OpenSCAD 2021.01 warns
+ * and reads on; --strict makes one that changes the drawing an error. */
+static sc_status dxf_warning(void *ctx, const sc_location *at, int changes,
+                             const char *message)
+{
+    const build_ctx *c = ctx;
+    if (changes && c->strict)
+        return err_set(c->error, SC_ERR_SEMANTIC, at, "%s", message);
+    return build_note(c, at, "%s%s", message,
+                      changes ? " (--strict makes it an error)" : "");
+}
+
 /* import of a DXF drawing (dxf.c), sanitized as OpenSCAD sanitizes a leaf's
  * polygons. */
 static sc_status read_import(const eval *e, const model_node *n, twod_region *out)
@@ -1173,7 +1185,9 @@ static sc_status read_import(const eval *e, const model_node *n, twod_region *ou
     if (d->format == MODEL_DRAWING_SVG)
         return read_svg(e, n, out);
     /* a drawing at no finite place is read where it is, then dropped */
-    dxf_options o = {d->res.fn, d->res.fa, d->res.fs, d->layer, 0, 0, 1};
+    dxf_options o = {d->res.fn, d->res.fa, d->res.fs, d->layer, 0, 0, 1, NULL, NULL};
+    o.warn = dxf_warning;
+    o.warn_ctx = (void *)e->c;
     if (!d->far) {
         o.origin_x = d->origin[0];
         o.origin_y = d->origin[1];

@@ -36,14 +36,32 @@
  * drawing segment will get, as OpenSCAD's do; that index can make an end
  * look shared.
  *
- * Where OpenSCAD warns and reads on (a value that is not a number, an
- * entity without its points), this reader stops with an error at the DXF
- * file's line. Sizes are limited (dxf.h).
+ * The text is read as OpenSCAD reads it: line pairs split at '\n' only,
+ * each line trimmed; codes and values parsed as boost::lexical_cast parses
+ * them (values: decimal numbers, nan, inf and infinity in any case;
+ * numbers that overflow are not numbers). Where OpenSCAD warns and reads
+ * on, so does this reader, with OpenSCAD's warning at the DXF file's line
+ * (dxf_options.warn; --strict makes it an error):
+ *   a code that is not an integer ends the reading ("Illegal ID"), with no
+ *   warning when the text has ended (a last line without its value, or
+ *   without a newline); so a blank line ends it, text after 0 EOF is
+ *   read, and a file with CR line ends is one line, read as nothing;
+ *   a value that is not a number ("Illegal value") skips its pair;
+ *   an entity short of points ("Not enough input values") is left out
+ *   where OpenSCAD's .at() throws (a LWPOLYLINE after the edges it has),
+ *   and as the exception skips the rest of OpenSCAD's case 0, the entity
+ *   being read stays the one left out, with its values and settings: the
+ *   next entity's values add to them, its name is lost.
+ * Values that are not numbers (nan) and infinities flow on as numbers,
+ * and a segment count that is one of those or past the int range draws
+ * nothing, as OpenSCAD's conversion to int gives INT_MIN. Sizes are
+ * limited (dxf.h).
  */
 #include "formats/dxf.h"
 
-#include <errno.h>
+#include <limits.h>
 #include <math.h>
+#include <stdarg.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -109,6 +127,8 @@ typedef struct reader {
     double *xs, *ys;
     uint32_t nx, ny, xs_cap, ys_cap;
     double radius, arc_start, arc_stop, ell_start, ell_stop;
+    int short_of; /* the entity lacked a value OpenSCAD reads with .at() */
+    uint32_t warnings;
     char *unsupported;
 } reader;
 
@@ -122,6 +142,24 @@ static sc_status nomem(reader *r)
 {
     sc_location loc = {r->path, r->line, 1};
     return err_nomem(r->error, &loc);
+}
+
+/* A warning at the DXF line; see dxf_options.warn. Past DXF_MAX_WARNINGS
+ * they are counted only: under --strict the first that changes the
+ * drawing has stopped the reader long before. */
+static sc_status warn(reader *r, int line, int changes, const char *format, ...)
+    SC_PRINTF(4, 5);
+static sc_status warn(reader *r, int line, int changes, const char *format, ...)
+{
+    if (!r->o->warn || ++r->warnings > DXF_MAX_WARNINGS)
+        return SC_OK;
+    char message[400];
+    va_list args;
+    va_start(args, format);
+    vsnprintf(message, sizeof message, format, args);
+    va_end(args);
+    sc_location loc = {r->path, line, 1};
+    return r->o->warn(r->o->warn_ctx, &loc, changes, message);
 }
 
 static int is(text_ref t, const char *s)
@@ -364,22 +402,30 @@ static sc_status too_many(reader *r, double n)
                    DXF_MAX_SEGMENTS);
 }
 
-static sc_status need_points(reader *r, uint32_t count, const char *entity)
+/* Whether the entity has count points: OpenSCAD reads them with .at(),
+ * whose exception leaves the entity out (read_pairs, case 0). */
+static int have(reader *r, uint32_t count)
 {
     if (r->nx >= count && r->ny >= count)
-        return SC_OK;
-    sc_location loc = {r->path, r->line, 1};
-    return err_set(r->error, SC_ERR_SEMANTIC, &loc,
-                   "DXF %s needs %u point%s (codes 10 and 20%s)", entity, count,
-                   count > 1 ? "s" : "", count > 1 ? ", 11 and 21" : "");
+        return 1;
+    r->short_of = 1;
+    return 0;
+}
+
+/* OpenSCAD's static_cast<int> of a segment count on x86-64: a count past
+ * the int range, or not a number, is INT_MIN, which draws nothing. */
+static double segment_count(double count)
+{
+    return count >= -2147483648.0 && count < 2147483648.0 ? count : 0;
 }
 
 static sc_status end_arc(reader *r)
 {
     sc_status st;
     long f;
-    if ((st = need_points(r, 1, "ARC")) != SC_OK ||
-        (st = fragments(r, r->radius, &f)) != SC_OK)
+    if (!have(r, 1))
+        return SC_OK;
+    if ((st = fragments(r, r->radius, &f)) != SC_OK)
         return st;
     int turns = 0;
     while (r->arc_start > r->arc_stop) {
@@ -388,7 +434,7 @@ static sc_status end_arc(reader *r)
         r->arc_stop += 360.0;
     }
     double sweep = r->arc_stop - r->arc_start, cx = r->xs[0], cy = r->ys[0];
-    double count = ceil((double)f * sweep / 360);
+    double count = segment_count(ceil((double)f * sweep / 360));
     if ((st = too_many(r, count)) != SC_OK)
         return st;
     int n = (int)count;
@@ -408,14 +454,16 @@ static sc_status end_arc(reader *r)
 static sc_status end_ellipse(reader *r)
 {
     sc_status st;
-    if ((st = need_points(r, 2, "ELLIPSE")) != SC_OK)
-        return st;
+    /* OpenSCAD raises the end angle before it reads the points */
     int turns = 0;
-    while (r->ell_start > r->ell_stop) {
-        if (++turns > DXF_MAX_TURNS)
-            return fail(r, "DXF %s angles are too far apart", "ELLIPSE");
+    while (r->ell_start > r->ell_stop && turns <= DXF_MAX_TURNS) {
+        turns++;
         r->ell_stop += 2 * DXF_PI;
     }
+    if (!have(r, 2))
+        return SC_OK;
+    if (turns > DXF_MAX_TURNS)
+        return fail(r, "DXF %s angles are too far apart", "ELLIPSE");
     double cx = r->xs[0], cy = r->ys[0], ex = r->xs[1], ey = r->ys[1];
     double r_major = sqrt(ex * ex + ey * ey);
     double cosval = ex / r_major;
@@ -430,7 +478,7 @@ static sc_status end_ellipse(reader *r)
     long f;
     if ((st = fragments(r, r_major, &f)) != SC_OK)
         return st;
-    double count = ceil((double)f * sweep / (2 * DXF_PI));
+    double count = segment_count(ceil((double)f * sweep / (2 * DXF_PI)));
     if ((st = too_many(r, count)) != SC_OK)
         return st;
     int n = (int)count;
@@ -451,10 +499,9 @@ static sc_status end_ellipse(reader *r)
 static sc_status end_insert(reader *r)
 {
     sc_status st;
-    if ((st = need_points(r, 1, "INSERT")) != SC_OK)
-        return st;
     block *b = find_block(r, r->iddata);
-    if (!b)
+    /* OpenSCAD reads the insert point for each block segment */
+    if (!b || !b->n || !have(r, 1))
         return SC_OK;
     uint32_t n = b->n;
     size_t index = (size_t)(b - r->blocks);
@@ -483,24 +530,32 @@ static sc_status end_entity(reader *r)
         r->in_entities = is(r->iddata, "ENTITIES");
         r->in_blocks = is(r->iddata, "BLOCKS");
     } else if (is(r->mode, "LINE")) {
-        if ((st = need_points(r, 2, "LINE")) == SC_OK)
+        if (have(r, 2))
             st = add_line(r, r->xs[0], r->ys[0], r->xs[1], r->ys[1]);
     } else if (is(r->mode, "LWPOLYLINE")) {
-        if (r->nx != r->ny)
-            return fail(r, "DXF %s does not have as many x as y values (codes 10 and 20)",
-                        "LWPOLYLINE");
-        uint32_t n = r->nx;
-        for (uint32_t i = 1; st == SC_OK && i < n; ++i)
+        /* OpenSCAD goes round max(x count, y count) vertices, adding edges
+         * until a vertex lacks a value */
+        uint32_t n = r->nx > r->ny ? r->nx : r->ny;
+        uint32_t m = r->nx < r->ny ? r->nx : r->ny;
+        for (uint32_t i = 1; st == SC_OK && i < n; ++i) {
+            if (i >= m) {
+                r->short_of = 1;
+                return SC_OK;
+            }
             st = add_line(r, r->xs[i - 1], r->ys[i - 1], r->xs[i % n], r->ys[i % n]);
+        }
         if (st == SC_OK && (r->flags & 1)) {
-            if (n == 0)
-                return fail(r, "DXF %s has no points", "closed LWPOLYLINE");
+            if (n == 0 || n != m) {
+                r->short_of = 1;
+                return SC_OK;
+            }
             st = add_line(r, r->xs[n - 1], r->ys[n - 1], r->xs[0], r->ys[0]);
         }
     } else if (is(r->mode, "CIRCLE")) {
         long n;
-        if ((st = need_points(r, 1, "CIRCLE")) != SC_OK ||
-            (st = fragments(r, r->radius, &n)) != SC_OK)
+        if (!have(r, 1))
+            return SC_OK;
+        if ((st = fragments(r, r->radius, &n)) != SC_OK)
             return st;
         double cx = r->xs[0], cy = r->ys[0], rad = r->radius;
         for (long i = 0; st == SC_OK && i < n; ++i) {
@@ -535,16 +590,24 @@ static sc_status end_entity(reader *r)
 
 /* ---- the text ---- */
 
-/* The next line of text from *pos, without surrounding white space (as
- * boost::trim). 0 at the end of the text. */
-static int next_line(const char *text, size_t size, size_t *pos, text_ref *out)
+/* std::getline then boost::trim: the next line of text from *pos, without
+ * surrounding white space. A line that reaches the end of the text without
+ * a newline sets *eof; once it is set no line is read (0, an empty line). */
+static int next_line(const char *text, size_t size, size_t *pos, int *eof, text_ref *out)
 {
-    if (*pos >= size)
+    out->s = text + *pos;
+    out->n = 0;
+    if (*eof)
         return 0;
     size_t a = *pos, b = a;
     while (b < size && text[b] != '\n')
         b++;
-    *pos = b < size ? b + 1 : b;
+    if (b < size) {
+        *pos = b + 1;
+    } else {
+        *pos = size;
+        *eof = 1;
+    }
     size_t e = b;
     while (a < e && (text[a] == ' ' || (text[a] >= '\t' && text[a] <= '\r')))
         a++;
@@ -555,47 +618,99 @@ static int next_line(const char *text, size_t size, size_t *pos, text_ref *out)
     return 1;
 }
 
-/* A decimal number (no hex, inf or nan), finite. */
+static int same_letters(const char *s, const char *lower, size_t n)
+{
+    for (size_t i = 0; i < n; i++)
+        if (s[i] != lower[i] && s[i] != lower[i] - 'a' + 'A')
+            return 0;
+    return 1;
+}
+
+/* boost::lexical_cast<double>: [+-] then nan, nan(...), inf or infinity in
+ * any case; else what libstdc++'s stream reads, all of the text: [+-],
+ * digits with at most one point (one digit at least), an exponent [eE][+-]
+ * digits; a value that overflows to infinity fails, one that underflows is
+ * read. No hex, no 'd' exponent, no spaces inside. */
 static int parse_double(text_ref t, double *out)
 {
-    char buf[64];
-    if (t.n == 0 || t.n >= sizeof buf)
+    const char *s = t.s;
+    size_t n = t.n, i = 0;
+    if (n == 0)
         return 0;
-    for (size_t i = 0; i < t.n; i++) {
-        char ch = t.s[i];
-        if (!((ch >= '0' && ch <= '9') || ch == '.' || ch == '-' || ch == '+' ||
-              ch == 'e' || ch == 'E'))
+    int minus = s[0] == '-';
+    if (minus || s[0] == '+')
+        i = 1;
+    if (n - i >= 3 && same_letters(s + i, "nan", 3)) {
+        size_t rest = n - i - 3;
+        if (rest && (rest < 2 || s[i + 3] != '(' || s[n - 1] != ')'))
+            return 0;
+        *out = copysign(NAN, minus ? -1.0 : 1.0);
+        return 1;
+    }
+    if ((n - i == 3 && same_letters(s + i, "inf", 3)) ||
+        (n - i == 8 && same_letters(s + i, "infinity", 8))) {
+        *out = minus ? -INFINITY : INFINITY;
+        return 1;
+    }
+    size_t digits = 0, point = 0;
+    for (; i < n && ((s[i] >= '0' && s[i] <= '9') || (s[i] == '.' && !point)); i++) {
+        point += s[i] == '.';
+        digits += s[i] != '.';
+    }
+    if (!digits)
+        return 0;
+    if (i < n && (s[i] == 'e' || s[i] == 'E')) {
+        i++;
+        if (i < n && (s[i] == '+' || s[i] == '-'))
+            i++;
+        size_t exponent = 0;
+        for (; i < n && s[i] >= '0' && s[i] <= '9'; i++)
+            exponent++;
+        if (!exponent)
             return 0;
     }
-    memcpy(buf, t.s, t.n);
-    buf[t.n] = 0;
-    char *end;
-    errno = 0;
-    double v = strtod(buf, &end);
-    if (*end || !isfinite(v))
+    if (i != n)
+        return 0;
+    char small[128];
+    char *buf = n < sizeof small ? small : malloc(n + 1);
+    if (!buf)
+        return 0;
+    memcpy(buf, s, n);
+    buf[n] = 0;
+    double v = strtod(buf, NULL);
+    if (buf != small)
+        free(buf);
+    if (isinf(v))
         return 0;
     *out = v;
     return 1;
 }
 
+/* boost::lexical_cast<int>: [+-] then digits, all of the text, in range. */
 static int parse_int(text_ref t, long *out)
 {
-    char buf[24];
-    if (t.n == 0 || t.n >= sizeof buf)
+    size_t i = 0;
+    if (t.n == 0)
         return 0;
-    for (size_t i = 0; i < t.n; i++) {
+    int minus = t.s[0] == '-';
+    if (minus || t.s[0] == '+')
+        i = 1;
+    if (i == t.n)
+        return 0;
+    long long v = 0;
+    for (; i < t.n; i++) {
         char ch = t.s[i];
-        if (!((ch >= '0' && ch <= '9') || (i == 0 && (ch == '-' || ch == '+'))))
+        if (ch < '0' || ch > '9')
+            return 0;
+        v = 10 * v + (ch - '0');
+        if (v > 2147483648LL)
             return 0;
     }
-    memcpy(buf, t.s, t.n);
-    buf[t.n] = 0;
-    char *end;
-    errno = 0;
-    long v = strtol(buf, &end, 10);
-    if (*end || errno || v < -2147483647L - 1 || v > 2147483647L)
+    if (minus)
+        v = -v;
+    if (v > 2147483647LL)
         return 0;
-    *out = v;
+    *out = (long)v;
     return 1;
 }
 
@@ -609,56 +724,68 @@ static sc_status push_value(reader *r, double **a, uint32_t *n, uint32_t *cap, d
     return SC_OK;
 }
 
+/* Shorter text for messages. */
+#define SHOWN(t) (int)((t).n < 40 ? (t).n : 40), (t).s
+
+/* OpenSCAD's loop over (group code, value) line pairs: a code that is not
+ * an integer ends it, with a warning unless the text has ended; a value
+ * that is not a number skips the rest of its pair, with a warning; an
+ * entity short of points is left out at the next code 0, with a warning,
+ * and as OpenSCAD's exception skips the rest of that case, the entity
+ * being read stays what it was, with its values: those that follow add to
+ * them. */
 static sc_status read_pairs(reader *r, const char *text, size_t size)
 {
     size_t pos = 0;
-    int line = 0;
+    int line = 0, eof = 0;
     text_ref code, data;
-    while (next_line(text, size, &pos, &code)) {
-        line++;
-        int code_line = line;
-        if (!next_line(text, size, &pos, &data))
-            data.n = 0, data.s = text + size;
-        else
-            line++;
+    while (!eof) {
+        size_t code_at = pos;
+        int code_line = line + 1;
+        line += next_line(text, size, &pos, &eof, &code);
+        line += next_line(text, size, &pos, &eof, &data);
         long id;
         if (!parse_int(code, &id)) {
-            /* blank lines at the end of the file end it */
-            size_t rest = pos;
-            int blank = code.n == 0 && data.n == 0;
-            while (blank && rest < size) {
-                char ch = text[rest++];
-                blank = ch == ' ' || (ch >= '\t' && ch <= '\r');
-            }
-            if (blank)
-                return SC_OK;
-            sc_location loc = {r->path, code_line, 1};
-            return err_set(r->error, SC_ERR_SEMANTIC, &loc,
-                           "DXF group code '%.*s' is not an integer",
-                           (int)(code.n < 40 ? code.n : 40), code.s);
+            if (eof)
+                break;
+            /* only blank lines left: nothing more would have been drawn */
+            int blank = 1;
+            for (size_t i = code_at; i < size && blank; i++)
+                blank = text[i] == ' ' || (text[i] >= '\t' && text[i] <= '\r');
+            return warn(r, code_line, !blank,
+                        "Illegal ID '%.*s': OpenSCAD reads no further in the DXF file",
+                        SHOWN(code));
         }
         r->line = code_line;
         double v = 0;
         long iv = 0;
         int numeric = (id >= 10 && id <= 16) || (id >= 20 && id <= 26) || id == 40 ||
                       id == 41 || id == 42 || id == 50 || id == 51;
-        if (numeric && !parse_double(data, &v)) {
-            sc_location loc = {r->path, code_line + 1, 1};
-            return err_set(r->error, SC_ERR_SEMANTIC, &loc,
-                           "DXF value of group code %ld is not a finite number", id);
-        }
-        if (id == 70 && !parse_int(data, &iv)) {
-            sc_location loc = {r->path, code_line + 1, 1};
-            return err_set(r->error, SC_ERR_SEMANTIC, &loc,
-                           "DXF value of group code 70 is not an integer");
+        if ((numeric && !parse_double(data, &v)) || (id == 70 && !parse_int(data, &iv))) {
+            sc_status st =
+                warn(r, code_line + 1, 1,
+                     "Illegal value '%.*s' (group code %ld): OpenSCAD skips it",
+                     SHOWN(data), id);
+            if (st != SC_OK)
+                return st;
+            continue;
         }
         int raw = r->in_blocks;
         sc_status st = SC_OK;
         switch (id) {
         case 0:
             r->line = r->entity_line;
+            r->short_of = 0;
             if ((st = end_entity(r)) != SC_OK)
                 return st;
+            if (r->short_of) {
+                st = warn(r, r->entity_line, 1,
+                          "Not enough input values for %.*s: OpenSCAD leaves out the "
+                          "%.*s that lacks them, and reads the values after it as more "
+                          "of it",
+                          SHOWN(data), SHOWN(r->mode));
+                break;
+            }
             r->entity_line = code_line + 1; /* the line naming the entity */
             r->mode = data;
             r->layer.n = r->iddata.n = 0;
@@ -838,6 +965,14 @@ sc_status dxf_read(const char *text, size_t size, const char *path, const dxf_op
         unsupported[0] = 0;
     twod_clear(out);
     sc_status st = read_pairs(&r, text, size);
+    if (st == SC_OK && r.warnings > DXF_MAX_WARNINGS) {
+        char message[120];
+        snprintf(message, sizeof message,
+                 "%u more warnings of the DXF file are not shown",
+                 r.warnings - DXF_MAX_WARNINGS);
+        sc_location loc = {path, 0, 0};
+        st = o->warn(o->warn_ctx, &loc, 0, message);
+    }
     if (st == SC_OK)
         st = join_paths(&r, out);
     reader_free(&r);

@@ -15,12 +15,21 @@
 #define DXF_MAX_SEGMENTS 50000u
 /* Most blocks in one drawing. */
 #define DXF_MAX_BLOCKS 10000u
+/* Most warnings passed on from one drawing; one more counts the rest. */
+#define DXF_MAX_WARNINGS 100u
 
 typedef struct dxf_options {
     double fn, fa, fs;         /* fragments of circles, arcs and ellipses */
     const char *layer;         /* only this layer's entities; NULL or "" for all */
     double origin_x, origin_y; /* subtracted from every coordinate ... */
     double scale;              /* ... before it is multiplied by this */
+    /* Each warning OpenSCAD gives where it reads on (dxf.c), at the DXF
+     * file's line: changes is 1 when what is drawn is not what the file
+     * says (a value skipped, an entity left out, the rest of the file not
+     * read). SC_OK reads on; any other status (its error set) stops the
+     * reader with it. NULL: the warnings are dropped. */
+    sc_status (*warn)(void *ctx, const sc_location *at, int changes, const char *message);
+    void *warn_ctx;
 } dxf_options;
 
 /* Reads the DXF text (size bytes, not necessarily terminated) named path
