@@ -294,6 +294,31 @@ against_openscad() {
     same "$1" "os_$1.stl" --faithful
 }
 
+# A malformed DXF drawing is read as OpenSCAD 2021.01 reads it, with its
+# warnings at the drawing's lines: a value that is not a number skipped
+# (line 8), a CIRCLE without its centre left out with the next LINE's
+# values read as its own (line 48: the circle is drawn at (20, 3)), and a
+# blank line that ends the reading (line 65: the LINE after it is not
+# drawn). --strict makes the first the error.
+printf '0\nSECTION\n2\nENTITIES\n0\nLINE\n10\n1d1\n10\n0\n20\n0\n11\n10\n21\n0\n0\nLINE\n10\n10\n20\n0\n11\n10\n21\n6\n0\nLINE\n10\n10\n20\n6\n11\n0\n21\n6\n0\nLINE\n10\n0\n20\n6\n11\n0\n21\n0\n0\nCIRCLE\n40\n2\n0\nLINE\n10\n20\n20\n3\n11\n30\n21\n30\n0\nENDSEC\n0\nEOF\n\n0\nSECTION\n2\nENTITIES\n0\nLINE\n10\n0\n20\n0\n11\n50\n21\n50\n0\nEOF\n' >bad.dxf
+printf 'linear_extrude(height = 3) {\n\timport(file = "bad.dxf");\n}\n' >bad_dxf.csg
+bad_dxf="bad.dxf:8:1: warning: Illegal value '1d1' (group code 10): OpenSCAD skips it (--strict makes it an error)
+bad.dxf:48:1: warning: Not enough input values for LINE: OpenSCAD leaves out the CIRCLE that lacks them, and reads the values after it as more of it (--strict makes it an error)
+bad.dxf:65:1: warning: Illegal ID '': OpenSCAD reads no further in the DXF file (--strict makes it an error)"
+warns bad_dxf.csg "$bad_dxf"
+warns bad_dxf.csg "$bad_dxf" --faithful
+refuses bad_dxf.csg "bad.dxf:8:1: error: Illegal value '1d1' (group code 10): OpenSCAD skips it"
+against_openscad bad_dxf.csg
+# nan and inf are numbers (an ARC whose segment count is not a number draws
+# nothing); a last code that is not an integer ends the drawing silently,
+# as does text in CR-only line ends
+printf '0\nSECTION\n2\nENTITIES\n0\nLWPOLYLINE\n70\n1\n10\n0\n20\n0\n10\n8\n20\n0\n10\n8\n20\n5\n0\nARC\n10\n0\n20\n0\n40\nINF\n50\nnan\n51\n90\n0\nENDSEC\n0\nEOF\ngarbage\n' >nan.dxf
+printf 'linear_extrude(height = 3) {\n\timport(file = "nan.dxf");\n}\n' >nan_dxf.csg
+warns nan_dxf.csg ""
+printf 'linear_extrude(height = 3) { polygon(points = [[0, 0], [8, 0], [8, 5]]); }\n' >nan_ref.csg
+same nan_dxf.csg nan_ref.csg --faithful
+against_openscad nan_dxf.csg
+
 # left_out MODEL REF AT MESH KIND WHY: in both modes MODEL warns at AT that
 # MESH is not a valid KIND file (WHY) and leaves it out, renders as REF,
 # and is that error with --strict.
