@@ -30,10 +30,11 @@
  * path from the lowest segment with an end no other remaining segment
  * shares, followed from segment to segment through shared cells; then
  * closed paths from the lowest remaining segment. Each path becomes one
- * contour (an open one closed by its last edge), in reverse order; the
- * caller sanitizes them with the even-odd rule, so orientation does not
- * matter. Grid cells also list block segments under the index the next
- * drawing segment will get, as OpenSCAD's do; that index can make an end
+ * contour (an open one closed by its last edge), in reverse order, less
+ * its first point, after OpenSCAD's fixup_path_direction has turned the
+ * closed ones where there is no open path (fixup_direction); the caller
+ * sanitizes them with the even-odd rule. Grid cells also list block segments under the
+ * index the next drawing segment will get, as OpenSCAD's do; that index can make an end
  * look shared.
  *
  * The text is read as OpenSCAD reads it: line pairs split at '\n' only,
@@ -855,8 +856,36 @@ static int shared_end(const reader *r, uint32_t idx, int j)
 /* Follows a path from segment cur's end cp, disabling the segments, and
  * adds it to out as a contour (reversed; open paths keep their first
  * point). */
-static sc_status follow(reader *r, uint32_t cur, int cp, int closed, uint32_t *path,
-                        uint32_t *count, twod_region *out)
+/* OpenSCAD's fixup_path_direction on a closed path of n points (its last
+ * the point it closes at): from the first point of the lowest x, b, with
+ * a the point before it (n - 2 before the first) and c the one after (1
+ * after the last), the path is reversed where atan2(a - b) < atan2(c - b)
+ * with x and y swapped, as OpenSCAD calls it. Which point the contour then
+ * drops (the path's first) changes the outline where the path passes a
+ * point twice. */
+static void fixup_direction(const reader *r, uint32_t *path, uint32_t n)
+{
+    if (n < 2)
+        return;
+    uint32_t b = 0;
+    for (uint32_t j = 1; j < n; j++)
+        if (r->xy[2 * (size_t)path[j]] < r->xy[2 * (size_t)path[b]])
+            b = j;
+    uint32_t a = b == 0 ? n - 2 : b - 1, c = b == n - 1 ? 1 : b + 1;
+    const double *pa = r->xy + 2 * (size_t)path[a], *pb = r->xy + 2 * (size_t)path[b],
+                 *pc = r->xy + 2 * (size_t)path[c];
+    if (atan2(pa[0] - pb[0], pa[1] - pb[1]) < atan2(pc[0] - pb[0], pc[1] - pb[1]))
+        for (uint32_t i = 0, j = n - 1; i < j; i++, j--) {
+            uint32_t t = path[i];
+            path[i] = path[j];
+            path[j] = t;
+        }
+}
+
+/* turn: a closed path OpenSCAD's fixup_path_direction reaches (it stops at
+ * the first open path, and open paths come first). */
+static sc_status follow(reader *r, uint32_t cur, int cp, int closed, int turn,
+                        uint32_t *path, uint32_t *count, twod_region *out)
 {
     uint32_t n = 0;
     path[n++] = r->segs[cur].p[cp];
@@ -882,6 +911,8 @@ static sc_status follow(reader *r, uint32_t cur, int cp, int closed, uint32_t *p
             break;
     }
     *count = n;
+    if (closed && turn)
+        fixup_direction(r, path, n);
     if (!twod_begin_contour(out))
         return nomem(r);
     for (uint32_t j = 1; j < (closed ? n : n + 1); j++) {
@@ -901,6 +932,7 @@ static sc_status join_paths(reader *r, twod_region *out)
         return nomem(r);
     sc_status st = SC_OK;
     uint32_t n;
+    int opened = 0; /* an open path was made */
     /* open paths: from the lowest segment with an unshared end. Segments
      * below the last start had no unshared end, and only those listed in
      * the cells of the path just taken can have one now, so the next
@@ -914,7 +946,8 @@ static sc_status join_paths(reader *r, twod_region *out)
                 continue;
             for (int j = 0; j < 2 && !again; j++) {
                 if (!shared_end(r, idx, j)) {
-                    st = follow(r, idx, j, 0, path, &n, out);
+                    st = follow(r, idx, j, 0, 0, path, &n, out);
+                    opened = 1;
                     again = 1;
                     start = r->block_lines ? 0 : idx;
                     for (uint32_t i = 0; i < n && start; i++) {
@@ -930,7 +963,7 @@ static sc_status join_paths(reader *r, twod_region *out)
     /* closed paths: from the lowest remaining segment */
     for (uint32_t idx = 0; idx < r->seg_count && st == SC_OK; idx++)
         if (!r->segs[idx].disabled)
-            st = follow(r, idx, 0, 1, path, &n, out);
+            st = follow(r, idx, 0, 1, !opened, path, &n, out);
     free(path);
     return st;
 }
