@@ -33,9 +33,9 @@
  * contour (an open one closed by its last edge), in reverse order, less
  * its first point, after OpenSCAD's fixup_path_direction has turned the
  * closed ones where there is no open path (fixup_direction); the caller
- * sanitizes them with the even-odd rule. Grid cells also list block segments under the
- * index the next drawing segment will get, as OpenSCAD's do; that index can make an end
- * look shared.
+ * sanitizes them with the even-odd rule. Grid cells also list block
+ * segments under the index the next drawing segment will get, as
+ * OpenSCAD's do; that index can make an end look shared.
  *
  * The text is read as OpenSCAD reads it: line pairs split at '\n' only,
  * each line trimmed; codes and values parsed as boost::lexical_cast parses
