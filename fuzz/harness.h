@@ -28,17 +28,15 @@
 
 #include "spancast/spancast.h"
 
-static int fuzz_one(const uint8_t *data, size_t size)
+/* The library's promises after a load that returned st (scene, error):
+ * a failed load gives no scene and a message; a scene's warnings have
+ * messages; its tiny render (8 x 8, one thread, every buffer) is of that
+ * size, or fails with a message and no framebuffer. Releases the scene.
+ * 0 when they hold, -1 otherwise. */
+static inline int fuzz_loaded(sc_status st, sc_scene *scene, sc_error *error)
 {
-    sc_load_options lo;
-    sc_load_options_init(&lo);
-    lo.max_triangles = (size_t)1 << 16;
-    sc_scene *scene = NULL;
-    sc_error error;
-    sc_status st =
-        sc_scene_load_string("fuzz.csg", (const char *)data, size, &lo, &scene, &error);
     if (st != SC_OK)
-        return scene == NULL && error.status == st && error.message[0] ? 0 : -1;
+        return scene == NULL && error->status == st && error->message[0] ? 0 : -1;
     int result = 0;
     size_t warnings = sc_scene_warning_count(scene);
     for (size_t k = 0; k < warnings; k++) {
@@ -51,15 +49,28 @@ static int fuzz_one(const uint8_t *data, size_t size)
     ro.threads = 1;
     ro.want_color = ro.want_depth = ro.want_mask = ro.want_normal = 1;
     sc_framebuffer *fb = NULL;
-    st = sc_render(scene, &ro, &fb, &error);
+    st = sc_render(scene, &ro, &fb, error);
     if (st == SC_OK &&
         (!fb || sc_framebuffer_width(fb) != 8 || sc_framebuffer_height(fb) != 8))
         result = -1;
-    if (st != SC_OK && (fb || !error.message[0] || st == SC_ERR_CANCELLED))
+    if (st != SC_OK && (fb || !error->message[0] || st == SC_ERR_CANCELLED))
         result = -1;
     sc_framebuffer_release(fb);
     sc_scene_release(scene);
     return result;
+}
+
+/* The whole load path on one input (above). */
+static inline int fuzz_one(const uint8_t *data, size_t size)
+{
+    sc_load_options lo;
+    sc_load_options_init(&lo);
+    lo.max_triangles = (size_t)1 << 16;
+    sc_scene *scene = NULL;
+    sc_error error;
+    sc_status st =
+        sc_scene_load_string("fuzz.csg", (const char *)data, size, &lo, &scene, &error);
+    return fuzz_loaded(st, scene, &error);
 }
 
 #endif

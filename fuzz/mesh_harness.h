@@ -7,11 +7,11 @@
  * loads it faithfully, where an OFF file that is not a plain closed mesh
  * goes to CGAL's own polyhedron builder in the CGAL plugin (which
  * scripts/fuzz does not build: CGAL is not ours to fuzz, and the load
- * fails with the plugin's error there). Then a tiny render, as fuzz_one
- * does. The file lives in a folder of the
+ * fails with the plugin's error there). Then the checks and the tiny
+ * render of fuzz_loaded (harness.h). The file lives in a folder of the
  * process's own under $TMPDIR (or /tmp), made on the first call and
- * removed at exit. Returns 0 when the library's promises hold (a failed load
- * returns no scene and a message; a render its size), -1 otherwise.
+ * removed at exit. Returns fuzz_loaded's verdict, or -1 when the file
+ * cannot be written.
  */
 #ifndef SPANCAST_FUZZ_MESH_HARNESS_H
 #define SPANCAST_FUZZ_MESH_HARNESS_H
@@ -21,6 +21,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 
+#include "harness.h"
 #include "spancast/spancast.h"
 
 /* mkdtemp and rmdir are POSIX; the harness is built as C11 */
@@ -66,27 +67,7 @@ static int fuzz_mesh_one(const uint8_t *data, size_t size)
     sc_scene *scene = NULL;
     sc_error error;
     sc_status st = sc_scene_load_mesh(path, &lo, &scene, &error);
-    if (st != SC_OK)
-        return scene == NULL && error.status == st && error.message[0] ? 0 : -1;
-    int result = 0;
-    for (size_t k = 0; k < sc_scene_warning_count(scene); k++)
-        if (!sc_scene_warning(scene, k)->message[0])
-            result = -1;
-    sc_render_options ro;
-    sc_render_options_init(&ro);
-    ro.width = ro.height = 8;
-    ro.threads = 1;
-    ro.want_color = ro.want_depth = ro.want_mask = ro.want_normal = 1;
-    sc_framebuffer *fb = NULL;
-    st = sc_render(scene, &ro, &fb, &error);
-    if (st == SC_OK &&
-        (!fb || sc_framebuffer_width(fb) != 8 || sc_framebuffer_height(fb) != 8))
-        result = -1;
-    if (st != SC_OK && (fb || !error.message[0] || st == SC_ERR_CANCELLED))
-        result = -1;
-    sc_framebuffer_release(fb);
-    sc_scene_release(scene);
-    return result;
+    return fuzz_loaded(st, scene, &error);
 }
 
 #endif
