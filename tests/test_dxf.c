@@ -300,6 +300,19 @@ static void test_errors(void **state)
         "0\nSECTION\n2\nENTITIES\n0\nARC\n10\n0\n20\n0\n40\n1\n50\n0\n51\n-1e300\n"
         "0\nEOF\n",
         "d.dxf:6:1: error: DXF ARC angles are too far apart");
+    /* a start 1e6 degrees past the end: 2778 turns added, as OpenSCAD adds
+     * them (it draws the arc) */
+    {
+        twod_region r;
+        char message[600];
+        assert_int_equal(
+            read("0\nSECTION\n2\nENTITIES\n0\nARC\n10\n0\n20\n0\n40\n1\n50\n1000000\n"
+                 "51\n0\n0\nEOF\n",
+                 NULL, 0, 1, &r, NULL, message, sizeof message),
+            SC_OK);
+        assert_true(r.point_count > 0);
+        twod_free(&r);
+    }
     check_error(
         "0\nSECTION\n2\nENTITIES\n0\nARC\n10\n0\n20\n0\n40\n1\n50\n0\n51\n1e9\n"
         "0\nEOF\n",

@@ -75,8 +75,11 @@
 
 #define DXF_GRID (1.0 / 1024.0) /* OpenSCAD's GRID_COARSE */
 #define DXF_PI 3.14159265358979323846
-/* Most turns an arc's or ellipse's end angle is raised by. */
-enum { DXF_MAX_TURNS = 1000 };
+/* Most turns an arc's or ellipse's end angle is raised by: OpenSCAD adds
+ * a turn at a time (a start of 1e6 degrees and an end of 0 is 2778 turns;
+ * 10^7 take a few milliseconds), and never ends where a turn no longer
+ * changes the angle. */
+enum { DXF_MAX_TURNS = 10000000 };
 
 typedef struct text_ref {
     const char *s;
