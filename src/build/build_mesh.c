@@ -278,8 +278,8 @@ static sc_status finish_mesh(const build_ctx *c, const sc_location *loc, int num
     for (uint32_t i = 0; i < point_count; i++)
         box = bbox_add_point(box, points[i]);
     vec3 centre = v3_scale(v3_add(box.lo, box.hi), 0.5);
-    double area = 0;
-    for (size_t i = 0; i < k; i++) {
+    double area = 0; /* the parity rule's test only */
+    for (size_t i = 0; parity && i < k; i++) {
         vec3 a = v3_sub(points[tris[3 * i]], centre);
         vec3 b = v3_sub(points[tris[3 * i + 1]], centre);
         vec3 d = v3_sub(points[tris[3 * i + 2]], centre);
