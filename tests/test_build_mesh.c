@@ -309,6 +309,23 @@ static void test_mesh_errors(void **state)
     assert_true(inside(s, 0.5, 0.5, 0.5));
     assert_true(inside(s, 9000000.5, 9000000.5, 9000000.5));
     sc_scene_release(s);
+    /* a dented prism of size 2 at 1e5: its dent (0.6 deep) is within 1e-5
+     * of the largest coordinate, so the plane test took it as convex and
+     * filled the dent; its tolerance is bounded by the solid's own size */
+    s = load(
+        "m.csg",
+        "polyhedron(points = [[1e5, 1e5, 0], [100002, 1e5, 0], [100002, 100001, 0], "
+        "[100000.5, 100000.5, 0], [100001, 100002, 0], [1e5, 100002, 0], [1e5, 1e5, "
+        "1], [100002, 1e5, 1], [100002, 100001, 1], [100000.5, 100000.5, 1], "
+        "[100001, 100002, 1], [1e5, 100002, 1]], faces = [[5, 4, 3, 2, 1, 0], [6, 7, "
+        "8, 9, 10, 11], [0, 1, 7, 6], [1, 2, 8, 7], [2, 3, 9, 8], [3, 4, 10, 9], [4, "
+        "5, 11, 10], [5, 0, 6, 11]]);");
+    assert_int_equal(sc_scene_warning_count(s), 0);
+    assert_true(inside(s, 100000.25, 100001, 0.5));
+    assert_true(inside(s, 100001.5, 100000.25, 0.5));
+    assert_false(inside(s, 100001.5, 100001.5, 0.5)); /* in the dent */
+    assert_false(inside(s, 100001, 100001, 0.5));
+    sc_scene_release(s);
     /* the same in 2D (a DXF drawing's squares), drawn as a flat slab */
     s = load("m.csg", "polygon(points = [[0, 0], [5, 0], [5, 5], [0, 5], [9e6, 9e6], "
                       "[9000010, 9e6], [9000010, 9000010], [9e6, 9000010]], paths = "

@@ -50,9 +50,11 @@
  * by exactly two faces); it takes the plane path when convex: no point may
  * lie on the outer side of a face plane by more than 1e-5 of the largest
  * coordinate, which absorbs the 6 significant digits OpenSCAD writes
- * numbers with. (The centroid of the points would orient the planes too,
- * but it can sit on a face of a non-convex mesh; the extremes of the points
- * cannot mislead.) Other polyhedra become triangle meshes (build_mesh.c).
+ * numbers with, or of the solid's size where that is smaller (a small
+ * dented solid far out is not convex). (The centroid of the points would
+ * orient the planes too, but it can sit on a face of a non-convex mesh;
+ * the extremes of the points cannot mislead.) Other polyhedra become
+ * triangle meshes (build_mesh.c).
  */
 #include "build/build.h"
 
@@ -517,7 +519,8 @@ static void mesh_free(mesh *m)
 
 /* Builds the outward face planes (duplicates merged) and checks convexity.
  * Each plane is oriented by the points themselves: all of them must lie on
- * one side, within tol, and inside is that side. A plane with every point
+ * one side, within tol (1e-5 of the largest coordinate or of the solid's
+ * size, whichever is smaller), and inside is that side. A plane with every point
  * on it means the polyhedron is flat. Returns the plane count in *count;
  * 0 means the polyhedron has no volume, UINT32_MAX that it is not convex. */
 static sc_status convex_planes(builder *b, mesh *m, uint32_t *count, bbox *bounds)
@@ -542,7 +545,10 @@ static sc_status convex_planes(builder *b, mesh *m, uint32_t *count, bbox *bound
         free(used);
         return err_nomem(b->error, NULL);
     }
-    double tol = 1e-5 * scale; /* convexity, absorbs 6-digit rounding */
+    /* convexity: absorbs 6-digit rounding, but no more than 1e-5 of the
+     * solid's own size, or a small dented solid far out passes as convex */
+    vec3 ext = v3_sub(bounds->hi, bounds->lo);
+    double tol = 1e-5 * fmin(scale, fmax(ext.x, fmax(ext.y, ext.z)));
     double flat = 1e-12 * scale;
     uint32_t planes = 0;
     sc_status st = SC_OK;
