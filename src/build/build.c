@@ -609,54 +609,19 @@ static sc_status convex_planes(builder *b, mesh *m, uint32_t *count, bbox *bound
     return st;
 }
 
-/* A face and one of its edges (lo << 32 | hi), for faces_joined. */
-typedef struct face_side {
-    uint64_t edge;
-    uint32_t face;
-} face_side;
-
-static int face_side_cmp(const void *a, const void *b)
-{
-    const face_side *p = a, *q = b;
-    return (p->edge > q->edge) - (p->edge < q->edge);
-}
-
-static uint32_t side_root(uint32_t *parent, uint32_t f)
-{
-    while (parent[f] != f)
-        f = parent[f] = parent[parent[f]];
-    return f;
-}
-
 /* Whether m's faces are one piece, joined by their edges: a convex
- * polyhedron is, where the plane test's tolerance (1e-5 of the largest
- * coordinate) can pass two small solids far apart. 1, 0, or -1 when
+ * polyhedron is, where the plane test's tolerance (1e-5 of the solid's
+ * size) can pass two small solids far apart. 1, 0, or -1 when
  * memory runs out. */
 static int faces_joined(const mesh *m)
 {
-    uint32_t total = m->face_start[m->face_count];
-    face_side *sides = malloc((total ? total : 1) * sizeof *sides);
     uint32_t *parent = malloc((m->face_count ? m->face_count : 1) * sizeof *parent);
     int joined = -1;
-    if (sides && parent) {
-        for (uint32_t f = 0; f < m->face_count; f++) {
-            parent[f] = f;
-            uint32_t s = m->face_start[f], e = m->face_start[f + 1];
-            for (uint32_t i = s; i < e; i++) {
-                uint64_t p = m->indices[i], q = m->indices[i + 1 < e ? i + 1 : s];
-                sides[i] = (face_side){p < q ? p << 32 | q : q << 32 | p, f};
-            }
-        }
-        qsort(sides, total, sizeof *sides, face_side_cmp);
-        for (uint32_t i = 1; i < total; i++)
-            if (sides[i].edge == sides[i - 1].edge)
-                parent[side_root(parent, sides[i].face)] =
-                    side_root(parent, sides[i - 1].face);
+    if (parent && build_mesh_pieces(m->indices, m->face_start, m->face_count, parent)) {
         joined = 1;
         for (uint32_t f = 1; f < m->face_count && joined; f++)
-            joined = side_root(parent, f) == side_root(parent, 0);
+            joined = build_mesh_piece(parent, f) == build_mesh_piece(parent, 0);
     }
-    free(sides);
     free(parent);
     return joined;
 }

@@ -150,7 +150,7 @@ static int mesh_sound(const char *what, int numbered, const vec3 *points,
     return sound;
 }
 
-/* An edge of a face or triangle, for shell_volumes and approx_convex:
+/* An edge of a face or triangle, for build_mesh_pieces and approx_convex:
  * its ends (p << 32 | q), its face, and the point after q in the face. */
 typedef struct face_edge {
     uint64_t key;
@@ -163,13 +163,36 @@ static int face_edge_cmp(const void *a, const void *b)
     return x->key < y->key ? -1 : x->key > y->key;
 }
 
-/* The root of i in a union-find forest of faces (parent), halving the
- * path on the way. */
-static uint32_t face_root(uint32_t *parent, uint32_t i)
+uint32_t build_mesh_piece(uint32_t *parent, uint32_t f)
 {
-    while (parent[i] != i)
-        i = parent[i] = parent[parent[i]];
-    return i;
+    while (parent[f] != f)
+        f = parent[f] = parent[parent[f]];
+    return f;
+}
+
+int build_mesh_pieces(const uint32_t *indices, const uint32_t *face_start,
+                      uint32_t face_count, uint32_t *parent)
+{
+    size_t total = face_start ? face_start[face_count] : 3 * (size_t)face_count;
+    face_edge *edges = malloc((total ? total : 1) * sizeof *edges);
+    if (!edges)
+        return 0;
+    for (uint32_t f = 0; f < face_count; f++) {
+        parent[f] = f;
+        size_t s = face_start ? face_start[f] : 3 * (size_t)f;
+        size_t e = face_start ? face_start[f + 1] : s + 3;
+        for (size_t i = s; i < e; i++) {
+            uint64_t p = indices[i], q = indices[i + 1 < e ? i + 1 : s];
+            edges[i] = (face_edge){p < q ? p << 32 | q : q << 32 | p, f, 0};
+        }
+    }
+    qsort(edges, total, sizeof *edges, face_edge_cmp);
+    for (size_t i = 1; i < total; i++)
+        if (edges[i].key == edges[i - 1].key)
+            parent[build_mesh_piece(parent, edges[i].face)] =
+                build_mesh_piece(parent, edges[i - 1].face);
+    free(edges);
+    return 1;
 }
 
 /* Whether box a lies within box b. */
@@ -193,34 +216,21 @@ static int box_within(const bbox *a, const bbox *b)
 static int shell_volumes(const vec3 *points, const uint32_t *tris, size_t k,
                          double *total, int *mixed, double *volume, double *magnitude)
 {
-    face_edge *edges = malloc((k ? k : 1) * 3 * sizeof *edges);
     uint32_t *parent = malloc((k ? k : 1) * sizeof *parent);
     double *shell = calloc(k ? k : 1, sizeof *shell);
     bbox *box = malloc((k ? k : 1) * sizeof *box);
-    if (!edges || !parent || !shell || !box) {
-        free(edges);
+    if (!parent || !shell || !box ||
+        !build_mesh_pieces(tris, NULL, (uint32_t)k, parent)) {
         free(parent);
         free(shell);
         free(box);
         return 0;
     }
-    for (size_t i = 0; i < k; i++) {
-        parent[i] = (uint32_t)i;
+    for (size_t i = 0; i < k; i++)
         box[i] = bbox_empty();
-        for (int j = 0; j < 3; j++) {
-            uint64_t p = tris[3 * i + j], q = tris[3 * i + (j + 1) % 3];
-            edges[3 * i + j] =
-                (face_edge){p < q ? p << 32 | q : q << 32 | p, (uint32_t)i, 0};
-        }
-    }
-    qsort(edges, 3 * k, sizeof *edges, face_edge_cmp);
-    for (size_t i = 1; i < 3 * k; i++)
-        if (edges[i].key == edges[i - 1].key)
-            parent[face_root(parent, edges[i].face)] =
-                face_root(parent, edges[i - 1].face);
     *magnitude = 0;
     for (size_t i = 0; i < k; i++) {
-        uint32_t r = face_root(parent, (uint32_t)i);
+        uint32_t r = build_mesh_piece(parent, (uint32_t)i);
         vec3 at = points[tris[3 * r]];
         vec3 a = v3_sub(points[tris[3 * i]], at);
         vec3 b = v3_sub(points[tris[3 * i + 1]], at);
@@ -254,7 +264,6 @@ static int shell_volumes(const vec3 *points, const uint32_t *tris, size_t k,
                 shell[parent[b]] * *total > 0 && box_within(&box[i], &box[parent[b]]);
         *mixed = !cavity;
     }
-    free(edges);
     free(parent);
     free(shell);
     free(box);
@@ -522,11 +531,11 @@ static int approx_convex(const build_mesh_faces *f, int reversed)
         if (v3_dot(u, v3_sub(f->points[edges[i].next], on)) > 0 &&
             v3_dot(u, v) / (v3_length(u) * v3_length(v)) < most)
             convex = 0; /* a fold inward */
-        uint32_t a = face_root(parent, g), b = face_root(parent, k);
+        uint32_t a = build_mesh_piece(parent, g), b = build_mesh_piece(parent, k);
         parent[a] = b;
     }
     for (uint32_t k = 1; k < count && convex; k++)
-        convex = face_root(parent, k) == face_root(parent, 0);
+        convex = build_mesh_piece(parent, k) == build_mesh_piece(parent, 0);
 done:
     free(edges);
     free(piece);

@@ -123,6 +123,17 @@ sc_status build_mesh_merge(const build_ctx *c, const sc_location *loc, int rever
                            uint32_t face_count, build_mesh_faces *f);
 void build_mesh_faces_free(build_mesh_faces *f);
 
+/* The pieces of a set of faces joined by their edges (either way round):
+ * face f of face_count, indices[face_start[f] .. face_start[f + 1]), or
+ * with face_start NULL triangle f, indices[3 f .. 3 f + 3). Fills parent
+ * (face_count entries) with a union-find forest whose roots
+ * (build_mesh_piece) name the pieces. 0 when memory runs out. */
+int build_mesh_pieces(const uint32_t *indices, const uint32_t *face_start,
+                      uint32_t face_count, uint32_t *parent);
+/* The piece of face f in build_mesh_pieces' forest: its root, halving the
+ * path on the way. */
+uint32_t build_mesh_piece(uint32_t *parent, uint32_t f);
+
 /* 1 when f is closed (every edge in exactly two faces) and consistently
  * oriented; else 0, with what is wrong, naming an edge, in why (what
  * names the node); -1 when memory ran out. */
