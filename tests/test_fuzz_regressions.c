@@ -1,7 +1,9 @@
 /* Replays every fuzzer finding in tests/fuzz-regressions/ through the same
  * load path the fuzzer drives (fuzz/harness.h: load, compile, 8 x 8 render),
  * and through the split parse's check (fuzz/split_harness.h) at the place
- * its fuzzer picks.
+ * its fuzzer picks; and every finding of the mesh readers' fuzzer, in
+ * tests/fuzz-regressions/mesh/ (its first byte picks the reader and mode,
+ * as fuzz_mesh's input does), through fuzz/mesh_harness.h.
  *
  * Each file is an input that once crashed, leaked or tripped a sanitizer;
  * here it must load or fail with a message, render or fail with a message,
@@ -20,9 +22,11 @@
 #include <cmocka.h>
 
 #include "../fuzz/harness.h"
+#include "../fuzz/mesh_harness.h"
 #include "../fuzz/split_harness.h"
 
 static const char folder[] = SPANCAST_SOURCE_DIR "/tests/fuzz-regressions";
+static const char mesh_folder[] = SPANCAST_SOURCE_DIR "/tests/fuzz-regressions/mesh";
 
 /* Reads a whole file; NULL when it cannot be read. */
 static char *read_all(const char *path, size_t *length)
@@ -58,7 +62,7 @@ static void test_replay_all(void **state)
     int replayed = 0;
     struct dirent *entry;
     while ((entry = readdir(dir)) != NULL) {
-        if (entry->d_name[0] == '.')
+        if (entry->d_name[0] == '.' || strcmp(entry->d_name, "mesh") == 0)
             continue;
         char path[4096];
         snprintf(path, sizeof path, "%s/%s", folder, entry->d_name);
@@ -82,10 +86,37 @@ static void test_replay_all(void **state)
     assert_true(replayed > 0);
 }
 
+/* The mesh readers' findings; none is no failure (that fuzzer has found
+ * nothing yet), but the folder is there for the first. */
+static void test_replay_meshes(void **state)
+{
+    (void)state;
+    DIR *dir = opendir(mesh_folder);
+    assert_non_null(dir);
+    int replayed = 0;
+    struct dirent *entry;
+    while ((entry = readdir(dir)) != NULL) {
+        if (entry->d_name[0] == '.')
+            continue;
+        char path[4096];
+        snprintf(path, sizeof path, "%s/%s", mesh_folder, entry->d_name);
+        size_t length = 0;
+        char *data = read_all(path, &length);
+        assert_non_null(data);
+        if (fuzz_mesh_one((const uint8_t *)data, length) != 0)
+            fail_msg("mesh/%s: the library broke a promise on this input", entry->d_name);
+        free(data);
+        replayed++;
+    }
+    closedir(dir);
+    print_message("replayed %d mesh reader findings\n", replayed);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_replay_all),
+        cmocka_unit_test(test_replay_meshes),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
