@@ -466,6 +466,10 @@ static void test_language(void **state)
     LANGUAGE("cube(size = s);", "1:13", "a variable or function ('s')");
     LANGUAGE("cube(f(2));", "1:6", "a variable or function ('f')");
     LANGUAGE("cube([1, 2, x]);", "1:13", "a variable or function ('x')");
+    /* OpenSCAD's names may start with digits (its lexer's longest match) */
+    LANGUAGE("cube(1e);", "1:6", "a variable or function ('1e')");
+    LANGUAGE("cube([0x10, 1, 1]);", "1:7", "a variable or function ('0x10')");
+    LANGUAGE("cube(-1e);", "1:6", "an operator ('-')");
     LANGUAGE("cube(2 * 3);", "1:8", "an expression ('*')");
     LANGUAGE("cube([1, 2] * 3);", "1:13", "an expression ('*')");
     LANGUAGE("cube([1, 2 % 3]);", "1:12", "an expression ('%')");
@@ -830,7 +834,8 @@ static void test_named_numbers(void **state)
     check_error("a(r = 1 2);", "m.csg:1:9: error: expected ')' (to close '(' at line 1)");
     check_error("a(r = 1.5.);", "m.csg:1:7: error: malformed number '1.5.'");
     check_error("a(r = 1e999);", "m.csg:1:7: error: number out of range '1e999'");
-    check_error("a(r = 1x);", "m.csg:1:7: error: malformed number '1x'");
+    check_language("a(r = 1x);", "m.csg:1:7: error: a variable or function ('1x') is "
+                                 "OpenSCAD's language beyond its CSG export");
     check_error("a(r = 1, s = 2",
                 "m.csg:1:15: error: expected ')' (to close '(' at line 1)");
     check_error("a(r = 1,, s = 2);", "m.csg:1:9: error: expected a value, found ','");

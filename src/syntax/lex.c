@@ -6,7 +6,8 @@
  * surrogate or a value past U+10FFFF is a space); a backslash before
  * anything else is dropped and the next character kept; a raw line break
  * inside a string is dropped. Whitespace is space, tab, CR, LF and the UTF-8
- * no-break space, as in OpenSCAD.
+ * no-break space, as in OpenSCAD. Names are OpenSCAD's [a-zA-Z0-9_]+, by
+ * its longest match: 1e and 0x10 are names, 1e5 a number.
  *
  * Numbers: most have at most 15 significant digits and a small decimal
  * exponent (OpenSCAD writes 6 digits), and those are converted exactly by
@@ -271,6 +272,19 @@ typedef enum number_scan {
     NUMBER_NOMEM
 } number_scan;
 
+static sc_status unexpected(lexer *lx, sc_error *error)
+{
+    sc_location loc = here(lx, lx->p, lx->line, lx->line_start);
+    unsigned char c = (unsigned char)*lx->p;
+    if (c > 0x20 && c < 0x7f)
+        return err_set(error, SC_ERR_SYNTAX, &loc, "unexpected character '%c'", c);
+    size_t n = utf8_length(lx->p, lx->end);
+    if (n)
+        return err_set(error, SC_ERR_SYNTAX, &loc, "unexpected character '%.*s'", (int)n,
+                       lx->p);
+    return err_set(error, SC_ERR_SYNTAX, &loc, "unexpected byte 0x%02x", c);
+}
+
 /* number := [+-]? ( D+ ('.' D*)? | '.' D+ ) ([eE] [+-]? D+)?
  * (without inf and nan, which lex_number reads). Any letter, digit, '_'
  * or '.' directly after a number makes it malformed. One pass reads the
@@ -439,6 +453,23 @@ static sc_status lex_number(lexer *lx, lex_token *tok, sc_error *error)
     case NUMBER_OK:
         break;
     case NUMBER_MALFORMED: {
+        /* OpenSCAD's lexer takes the longest match, and its names are
+         * [a-zA-Z0-9_]+: digits that run on into letters past the number
+         * (1e, 0x10, 12abc, 1e5x) are a name, read as one here (a name
+         * where a value goes); with a sign before them, the sign is an
+         * operator on that name. */
+        const char *digits = s + (s < end && (*s == '+' || *s == '-'));
+        const char *name_end = digits;
+        while (name_end < end && is_ident_char((unsigned char)*name_end))
+            name_end++;
+        if (name_end > p) {
+            if (digits > s)
+                return unexpected(lx, error);
+            tok->kind = LEX_IDENT;
+            tok->length = (size_t)(name_end - s);
+            lx->p = name_end;
+            return SC_OK;
+        }
         sc_location loc = here(lx, s, lx->line, lx->line_start);
         while (p < end && (is_ident_char((unsigned char)*p) || *p == '.' ||
                            ((*p == '+' || *p == '-') && (p[-1] == 'e' || p[-1] == 'E'))))
@@ -610,19 +641,6 @@ static sc_status lex_string(lexer *lx, lex_token *tok, sc_error *error)
     lx->p = close + 1;
     tok->length = (size_t)(lx->p - tok->start);
     return SC_OK;
-}
-
-static sc_status unexpected(lexer *lx, sc_error *error)
-{
-    sc_location loc = here(lx, lx->p, lx->line, lx->line_start);
-    unsigned char c = (unsigned char)*lx->p;
-    if (c > 0x20 && c < 0x7f)
-        return err_set(error, SC_ERR_SYNTAX, &loc, "unexpected character '%c'", c);
-    size_t n = utf8_length(lx->p, lx->end);
-    if (n)
-        return err_set(error, SC_ERR_SYNTAX, &loc, "unexpected character '%.*s'", (int)n,
-                       lx->p);
-    return err_set(error, SC_ERR_SYNTAX, &loc, "unexpected byte 0x%02x", c);
 }
 
 /* The one-character tokens by their character; LEX_EOF for every other
