@@ -104,6 +104,23 @@ warns_with() {
     [ "$(cat err.txt)" = "$2" ] || fail "$1: got '$(cat err.txt)'"
     [ -e "$1.png" ] || fail "$1: no image was written"
 }
+# Lines that end in CRLF: OpenSCAD 2021.01 counts a CRLF as one line in
+# its parser's errors but as two in its other messages; both are put on
+# the line an editor shows, in the source, in a library it uses and past
+# its end on a -D setting.
+printf 'cube(1);\r\ncube(1);\r\n\r\ncube(1) cube(;\r\n' >crlf_bad.scad
+fails_with crlf_bad.scad "crlf_bad.scad:4:1: error: Parser error: syntax error"
+printf 'cube(1);\r\n\r\ncube(1);\r\nassert(false);\r\n' >crlf_assert.scad
+fails_with crlf_assert.scad "crlf_assert.scad:4:1: error: Assertion 'false' failed"
+printf 'module w() {\r\n  cube(1);\r\n  sphere(foo = 1);\r\n}\r\n' >crlf_lib.scad
+printf 'use <crlf_lib.scad>\r\n\r\ncube(bar = 1);\r\nw();\r\n' >crlf_warn.scad
+warns_with crlf_warn.scad "crlf_warn.scad:3:1: warning: variable bar not specified as parameter
+crlf_lib.scad:3:1: warning: variable foo not specified as parameter"
+printf 'cube(x);\r\ncube(1);\r\n' >crlf_define.scad
+"$bin" render crlf_define.scad -o crlf_define.png -q -D 'x=foo' 2>err.txt ||
+    fail "crlf_define.scad: failed: $(cat err.txt)"
+[ "$(cat err.txt)" = "<command-line>: warning: -D 'x=foo': Ignoring unknown variable 'foo'" ] ||
+    fail "crlf_define.scad: got '$(cat err.txt)'"
 # echo() output, as OpenSCAD prints it.
 printf 'echo("hello", 42);\ncube(1);\necho(size = 3);\n' >echo.scad
 warns_with echo.scad 'ECHO: "hello", 42

@@ -168,24 +168,38 @@ static int openscad_position(const char *text, sc_error *error)
     return 1;
 }
 
+/* A file's lines as OpenSCAD 2021.01 counts them. Its parser's errors
+ * count LFs (flex's yylineno), as spancast's lexer and an editor do where
+ * lines end in LF or CRLF; the positions of its other messages count each
+ * CR and each LF, so that a CRLF is two lines there, put back on the
+ * user's line by user_line. */
+typedef struct line_map {
+    long lf_newlines, lf_last_line; /* the parser's line breaks, last line */
+    long newlines, last_line;       /* the other messages' (last line >= 1) */
+    long *crlf; /* the other messages' line of each CR an LF follows, ascending (malloc'd)
+                 */
+    size_t crlf_count;
+} line_map;
+
 /* Where OpenSCAD's messages about the source (source: its real path;
  * path: as the user named it) point. OpenSCAD 2021.01 appends the -D
  * settings to the source's text, after a line of their own, one per line
  * ("\n\x03\n" then "NAME=VALUE;\n" each): the first is on line
- * newlines + 3, where newlines counts the source's line breaks. It does so
+ * newlines + 3, where newlines counts the source's line breaks (line_map
+ * counts them as OpenSCAD does, CRLF as two). It does so
  * for each use'd library too, whose messages about the settings then
  * point past its end, once for each time it is evaluated. */
 typedef struct source_lines {
     const char *source, *path;
-    long first_define; /* 0 until counted; -1 when the source cannot be read */
-    long last_line;    /* the source's last line (at least 1) */
+    int source_counted; /* 0 until counted; -1 when the source cannot be read */
+    line_map lines;     /* the source's */
     /* the settings' messages printed from the libraries, printed once */
     char said[8][SC_ERROR_MESSAGE_MAX];
     int said_count;
-    /* the last other file counted (place_other): its name, its line
-     * breaks and last line, or counted_ok 0 when it could not be read */
+    /* the last other file counted (place_other): its name and lines, or
+     * counted_ok 0 when it could not be read */
     char counted[SC_ERROR_FILE_MAX];
-    long counted_newlines, counted_last_line;
+    line_map counted_lines;
     int counted_ok;
     /* the files the source reaches through include and use, as
      * scan_file names them (malloc'd; libraries_read once) */
@@ -196,32 +210,64 @@ typedef struct source_lines {
 
 static void libraries_read(source_lines *at);
 
-/* The line breaks of the file at path, and its last line (at least 1);
- * 0 when it cannot be read. */
-static int count_lines(const char *path, long *newlines, long *last_line)
+/* Counts the lines of the file at path into *map (its crlf the caller's to
+ * free); 0 when it cannot be read. */
+static int count_lines(const char *path, line_map *map)
 {
+    memset(map, 0, sizeof *map);
     size_t size;
     const char *why;
     char *text = file_read(path, SIZE_MAX / 2, &size, &why);
     if (!text)
         return 0;
-    long n = 0;
-    for (size_t i = 0; i < size; i++)
-        n += text[i] == '\n';
-    *newlines = n;
-    *last_line = n + (size > 0 && text[size - 1] != '\n');
-    if (*last_line < 1)
-        *last_line = 1;
+    size_t pairs = 0;
+    for (size_t i = 0; i + 1 < size; i++)
+        pairs += text[i] == '\r' && text[i + 1] == '\n';
+    map->crlf = pairs ? malloc(pairs * sizeof *map->crlf) : NULL;
+    long n = 0, lf = 0;
+    for (size_t i = 0; i < size; i++) {
+        if (text[i] == '\r' && i + 1 < size && text[i + 1] == '\n' && map->crlf)
+            map->crlf[map->crlf_count++] = n + 1;
+        n += text[i] == '\n' || text[i] == '\r';
+        lf += text[i] == '\n';
+    }
+    map->newlines = n;
+    map->last_line = n + (size > 0 && text[size - 1] != '\n' && text[size - 1] != '\r');
+    if (map->last_line < 1)
+        map->last_line = 1;
+    map->lf_newlines = lf;
+    map->lf_last_line = lf + (size > 0 && text[size - 1] != '\n');
+    if (map->lf_last_line < 1)
+        map->lf_last_line = 1;
     free(text);
     return 1;
 }
 
-/* Puts a position past the end of a file whose text OpenSCAD gave the -D
- * settings (newlines: its line breaks; last_line: its last line) on the
- * setting there, as a command-line error, or, on the lines OpenSCAD adds
- * before them, at the end of the file. */
-static void place_past_end(long newlines, long last_line, sc_error *error)
+/* The user's line of the line `line` of one of OpenSCAD's messages but its
+ * parser's, in the file map counts: one less for each CRLF before it.
+ * Without the CRLFs' places (no memory for them), the line as given. */
+static long user_line(const line_map *map, long line)
 {
+    size_t lo = 0, hi = map->crlf_count; /* the CRLFs on lines below `line` */
+    while (lo < hi) {
+        size_t mid = lo + (hi - lo) / 2;
+        if (map->crlf[mid] < line)
+            lo = mid + 1;
+        else
+            hi = mid;
+    }
+    return line - (long)lo;
+}
+
+/* Puts a position past the end of a file whose text OpenSCAD gave the -D
+ * settings (map: its lines as OpenSCAD counts them) on the setting there,
+ * as a command-line error, or, on the lines OpenSCAD adds before them, at
+ * the end of the file; then any position in the file on the user's line. */
+static void place_past_end(const line_map *map, sc_error *error)
+{
+    int parser = !strncmp(error->message, "Parser error", 12);
+    long newlines = parser ? map->lf_newlines : map->newlines;
+    long last_line = parser ? map->lf_last_line : map->last_line;
     long k = error->line - (newlines + 3);
     if (k >= 0 && k < define_count) {
         char message[SC_ERROR_MESSAGE_MAX];
@@ -240,6 +286,8 @@ static void place_past_end(long newlines, long last_line, sc_error *error)
         error->line = (int)last_line;
         error->column = 1;
     }
+    if (!parser)
+        error->line = (int)user_line(map, error->line);
 }
 
 /* Names another file (a use'd or include'd library) at OpenSCAD's position
@@ -282,11 +330,11 @@ static void place_other(source_lines *at, sc_error *error)
     }
     if (strcmp(at->counted, error->file) != 0) { /* a library's warnings come in a row */
         snprintf(at->counted, sizeof at->counted, "%s", error->file);
-        at->counted_ok =
-            count_lines(error->file, &at->counted_newlines, &at->counted_last_line);
+        free(at->counted_lines.crlf);
+        at->counted_ok = count_lines(error->file, &at->counted_lines);
     }
     if (at->counted_ok)
-        place_past_end(at->counted_newlines, at->counted_last_line, error);
+        place_past_end(&at->counted_lines, error);
 }
 
 /* Puts a position OpenSCAD gave in the source on it as the user named it
@@ -308,13 +356,10 @@ static void place_position(source_lines *at, sc_error *error)
         place_other(at, error);
         return;
     }
-    if (at->first_define == 0) {
-        long newlines;
-        at->first_define =
-            count_lines(at->source, &newlines, &at->last_line) ? newlines + 3 : -1;
-    }
-    if (at->first_define > 0)
-        place_past_end(at->first_define - 3, at->last_line, error);
+    if (at->source_counted == 0)
+        at->source_counted = count_lines(at->source, &at->lines) ? 1 : -1;
+    if (at->source_counted > 0)
+        place_past_end(&at->lines, error);
     if (strcmp(error->file, "<command-line>") != 0)
         snprintf(error->file, sizeof error->file, "%s", at->path);
 }
@@ -905,8 +950,7 @@ static sc_status convert(const char *path, const double *time,
             error->status = st = SC_ERR_CANCELLED;
             snprintf(error->message, sizeof error->message, "interrupted");
         } else {
-            source_lines at = {source, path, 0, 1,    {{0}}, 0, "",
-                               0,      0,    0, NULL, 0,     0, NULL};
+            source_lines at = {.source = source, .path = path};
             st = openscad_log(log, &at, !WIFEXITED(status) || WEXITSTATUS(status) != 0,
                               strict, error);
             for (int k = 0; k < at.library_count; k++) {
@@ -915,6 +959,8 @@ static sc_status convert(const char *path, const double *time,
             }
             free(at.libraries);
             free(at.reals);
+            free(at.lines.crlf);
+            free(at.counted_lines.crlf);
         }
     }
     if (st == SC_OK && depend)
