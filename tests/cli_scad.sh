@@ -125,6 +125,17 @@ printf 'cube(x);\r\ncube(1);\r\n' >crlf_define.scad
 printf 'echo("hello", 42);\ncube(1);\necho(size = 3);\n' >echo.scad
 warns_with echo.scad 'ECHO: "hello", 42
 ECHO: size = 3'
+# A string's line breaks, as OpenSCAD prints them: the message goes on
+# after them, in echo() and in an assert()'s message, whose position
+# follows them.
+printf 'echo("a\\nb");\necho(x = "c\\nd", 1);\ncube(1);\n' >echo_lines.scad
+warns_with echo_lines.scad 'ECHO: "a
+b"
+ECHO: x = "c
+d", 1'
+printf 'cube(1);\nassert(false, "one\\ntwo");\n' >assert_lines.scad
+fails_with assert_lines.scad 'assert_lines.scad:2:1: error: Assertion '"'false'"' failed: "one
+two"'
 printf 'include <nope.scad>\ncube(1);\n' >noinc.scad
 warns_with noinc.scad "noinc.scad: warning: Can't open include file 'nope.scad'."
 # OpenSCAD's notes of a deprecated form are warnings too.

@@ -382,8 +382,9 @@ static int said_before(source_lines *at, const sc_error *w)
 /* OpenSCAD's report on the conversion of path, from its log at log_path.
  * OpenSCAD 2021.01 exits 0 after many errors (a failing assert(), a syntax
  * error in a use <...> file) and leaves the failed part out, so its log
- * decides, not only its exit status (failed: it exited non-zero). Each
- * "WARNING: " or "DEPRECATED: " line is printed on stderr as a compiler's
+ * decides, not only its exit status (failed: it exited non-zero). It is
+ * read a message at a time (next_message: a string's line breaks do not
+ * end one). Each "WARNING: " or "DEPRECATED: " line is printed on stderr as a compiler's
  * warning, at OpenSCAD's position when the line has one, else against
  * path (the render goes on, as OpenSCAD's does), and so is an "ERROR: "
  * line of lenient_errors. The first other "ERROR: " line becomes the
@@ -408,6 +409,66 @@ static int is_lenient_error(const char *text)
     return 0;
 }
 
+/* OpenSCAD's log, read a message at a time (next_message). */
+typedef struct log_reader {
+    FILE *f;
+    char ahead[SC_ERROR_MESSAGE_MAX]; /* a line read ahead, when has_ahead */
+    int has_ahead;
+} log_reader;
+
+/* Whether a line of OpenSCAD's log starts one of its messages. */
+static int is_tagged(const char *line)
+{
+    static const char *const tags[] = {
+        "ECHO: ", "WARNING: ", "ERROR: ", "TRACE: ", "DEPRECATED: "};
+    for (size_t k = 0; k < sizeof tags / sizeof tags[0]; k++)
+        if (!strncmp(line, tags[k], strlen(tags[k])))
+            return 1;
+    return 0;
+}
+
+/* The next line of the log into line (size bytes), without its line break;
+ * 0 at the end. */
+static int next_line(log_reader *r, char *line, size_t size)
+{
+    if (r->has_ahead) {
+        snprintf(line, size, "%s", r->ahead);
+        r->has_ahead = 0;
+        return 1;
+    }
+    if (!fgets(line, (int)size, r->f))
+        return 0;
+    size_t n = strlen(line);
+    while (n > 0 && (line[n - 1] == '\n' || line[n - 1] == '\r'))
+        line[--n] = 0;
+    return 1;
+}
+
+/* The next message of the log into message (size bytes, cut to fit); 0 at
+ * the end. A message is a line and the lines after it while a string it
+ * prints is open (an odd number of '"': OpenSCAD prints a string's line
+ * breaks as they are, in echo() and in an assert()'s message, and its
+ * position after them) and the next line starts no message of its own. */
+static int next_message(log_reader *r, char *message, size_t size)
+{
+    if (!next_line(r, message, size))
+        return 0;
+    size_t n = strlen(message), quotes = 0;
+    for (size_t i = 0; i < n; i++)
+        quotes += message[i] == '"';
+    while (quotes % 2 == 1 && next_line(r, r->ahead, sizeof r->ahead)) {
+        if (is_tagged(r->ahead)) {
+            r->has_ahead = 1;
+            break;
+        }
+        for (const char *c = r->ahead; *c; c++)
+            quotes += *c == '"';
+        snprintf(message + n, size - n, "\n%s", r->ahead);
+        n += strlen(message + n);
+    }
+    return 1;
+}
+
 static sc_status openscad_log(const char *log_path, source_lines *at, int failed,
                               int strict, sc_error *error)
 {
@@ -417,10 +478,9 @@ static sc_status openscad_log(const char *log_path, source_lines *at, int failed
     FILE *f = fopen(log_path, "r");
     if (f) {
         char line[SC_ERROR_MESSAGE_MAX];
-        while (fgets(line, sizeof line, f)) {
+        log_reader reader = {.f = f};
+        while (next_message(&reader, line, sizeof line)) {
             size_t n = strlen(line);
-            while (n > 0 && (line[n - 1] == '\n' || line[n - 1] == '\r'))
-                line[--n] = 0;
             int is_error = !strncmp(line, "ERROR: ", 7) && line[7];
             int is_warning = !strncmp(line, "WARNING: ", 9) && line[9];
             size_t skip = is_error ? 7 : 9; /* the text after the tag */
