@@ -247,6 +247,12 @@ for off in big short; do
     [ "$(cat err.txt)" = "$off.off:2:1: error: import: '$work/$off.off' is not a valid OFF file ($why)" ] ||
         fail "$off.off: got '$(cat err.txt)'"
 done
+# an AMF file's error is at its line too, as an STL or OFF file's
+printf '<?xml version="1.0"?>\n<amf>\n<object id="0">\n<mesh><vertices><vertex><coordinates><x>1,5</x><y>0</y><z>0</z></coordinates></vertex></vertices></mesh>\n</object>\n</amf>\n' >bad.amf
+check
+"$bin" info bad.amf >/dev/null 2>err.txt && fail "bad.amf: exit 0"
+[ "$(cat err.txt)" = "bad.amf:4:1: error: import: $work/bad.amf:4: '1,5' is not a number" ] ||
+    fail "bad.amf: got '$(cat err.txt)'"
 printf 'OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n' >open.off
 check
 "$bin" info open.off >/dev/null 2>err.txt || fail "open.off: exit $?"

@@ -3909,6 +3909,10 @@ static sc_status read_amf(const build_ctx *c, const char *text, size_t size,
     const sc_location *loc = &import->file_loc;
     if (import->format == MODEL_MESH_3MF)
         return threemf_read_file(path, import->file, loc, a, c->error);
+    /* the file as the model: its errors at its own lines */
+    sc_location file = {c->file, 0, 0};
+    if (c->mesh_model)
+        loc = &file;
     char *unzipped = NULL, warning[SC_ERROR_MESSAGE_MAX - 160];
     size_t unzipped_size = 0;
     sc_status st =

@@ -51,9 +51,10 @@ static sc_status fail(reader *r, sc_status status, int line, const char *fmt,
 {
     char why[256];
     snprintf(why, sizeof why, fmt, arg);
+    sc_location here = {r->at->file, line, 1}; /* the file is the model */
     if (line > 0)
-        r->status =
-            err_set(r->error, status, r->at, "import: %s:%d: %s", r->name, line, why);
+        r->status = err_set(r->error, status, r->at->line ? r->at : &here,
+                            "import: %s:%d: %s", r->name, line, why);
     else
         r->status = err_set(r->error, status, r->at, "import: %s: %s", r->name, why);
     return r->status;

@@ -33,7 +33,8 @@ typedef struct amf_mesh {
  * amf_unzip) into
  * out (zeroed here; free with amf_mesh_free, also after an error). name
  * is the file as the model names it; errors are set at *at as
- * "import: NAME:LINE: why". */
+ * "import: NAME:LINE: why", or where *at has no line (the file is the
+ * model) at that line of at->file. */
 sc_status amf_read(const char *text, size_t size, const char *name, const sc_location *at,
                    amf_mesh *out, sc_error *error);
 void amf_mesh_free(amf_mesh *m);
