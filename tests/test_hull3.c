@@ -272,12 +272,36 @@ static void test_degenerate(void **state)
     assert_int_equal(hull3_compute(p, 4, &h), HULL3_RANGE);
 }
 
+/* A face whose corners are nearly collinear (a sliver): the rounded cross
+ * product of its edges points anywhere, so an offset taken over its own
+ * corners alone cut the hull in half. The five points are a part of
+ * CGAL's convex decomposition of a rotate_extrude summed with a small
+ * cube (a minkowski): points 0, 1 and 2 lie within 1e-16 of a line, and
+ * the hull is the tetrahedron 0, 1, 3, 4. */
+static void test_sliver_face(void **state)
+{
+    (void)state;
+    vec3 p[5] = {
+        {-2.4270013920603892, -1.7633061658129663, 4.530048370361328},
+        {-0.5015493397893865, -0.3643833642028818, 4.9591064453125e-05},
+        {-0.6742430592189828, -0.4898526956879091, 0.4063450048015077},
+        {-4.255496896918263, -0.20797935589567218, 0.5343694404397445},
+        {-4.38163814594173, -0.3643833642028818, -4.9591064453125e-05},
+    };
+    hull3 h;
+    assert_int_equal(hull3_compute(p, 5, &h), HULL3_OK);
+    check_hull(p, 5, &h);
+    assert_true(fabs(hull3_volume(&h) - 0.9416484848155497) <= 1e-12);
+    hull3_free(&h);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_orient),        cmocka_unit_test(test_random_cube),
         cmocka_unit_test(test_random_sphere), cmocka_unit_test(test_lattice),
         cmocka_unit_test(test_known_volumes), cmocka_unit_test(test_degenerate),
+        cmocka_unit_test(test_sliver_face),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -37,7 +37,9 @@
  * plane per set of adjacent, exactly coplanar triangles: its normal is the
  * sum of the triangles' area vectors (normalised), its offset the largest
  * n . v over the set's vertices, so every vertex, and with it every input
- * point, is inside every plane up to the rounding of n.
+ * point, is inside every plane up to the rounding of n; where that rounding
+ * can tilt n (a sliver of nearly collinear corners), the largest n . v over
+ * all the vertices.
  */
 #include "csg/hull3.h"
 
@@ -420,12 +422,14 @@ static hull3_status finish(qh *q, hull3 *out)
     out->vertices = malloc((size_t)(live + 4) * sizeof *out->vertices);
     out->planes = malloc((size_t)live * sizeof *out->planes);
     vec3 *sum = calloc(live, sizeof *sum);
+    double *err = calloc(live ? live : 1, sizeof *err); /* per plane: sum's rounding */
     if (!vmap || !parent || !group || !out->tris || !out->vertices || !out->planes ||
-        !sum) {
+        !sum || !err) {
         free(vmap);
         free(parent);
         free(group);
         free(sum);
+        free(err);
         hull3_free(out);
         return HULL3_NOMEM;
     }
@@ -476,19 +480,41 @@ static hull3_status finish(qh *q, hull3 *out)
         out->planes[g].n = v3_normalize(sum[g]);
         out->planes[g].d = -INFINITY;
     }
-    t = 0;
     for (uint32_t i = 0; i < q->face_count; i++) {
         const face *f = &q->faces[i];
         if (!f->alive)
             continue;
-        plane *pl = &out->planes[group[find(parent, i)]];
+        uint32_t g = group[find(parent, i)];
+        plane *pl = &out->planes[g];
         for (int k = 0; k < 3; k++)
             pl->d = fmax(pl->d, v3_dot(pl->n, q->p[f->v[k]]));
+        /* the rounding of f's area vector, summed into err */
+        vec3 u = v3_sub(q->p[f->v[1]], q->p[f->v[0]]);
+        vec3 v = v3_sub(q->p[f->v[2]], q->p[f->v[0]]);
+        err[g] += 16 * DBL_EPSILON * v3_max_abs(u) * v3_max_abs(v);
+    }
+    /* A plane whose rounded normal may be tilted by more than about 1e-13
+     * (a sliver: corners nearly collinear, so that its area vector is
+     * mostly rounding and may point anywhere) takes its offset from every
+     * vertex: from its own corners alone, the rest of the hull could lie
+     * outside it and the plane would cut the solid. Each component of a
+     * triangle's rounded cross product is off by at most 16 eps |u| |v|
+     * (max norms of its edges; differences, products and their difference
+     * each round once), so a group's normal tilts by about err / |sum| at
+     * most. Such a plane still holds every vertex, and the sliver has next
+     * to no area: its neighbours' planes bound the solid across it. */
+    for (uint32_t g = 0; g < out->plane_count; g++) {
+        if (!(err[g] > 1e-13 * v3_length(sum[g])))
+            continue;
+        for (uint32_t k = 0; k < out->vertex_count; k++)
+            out->planes[g].d =
+                fmax(out->planes[g].d, v3_dot(out->planes[g].n, out->vertices[k]));
     }
     free(vmap);
     free(parent);
     free(group);
     free(sum);
+    free(err);
     return HULL3_OK;
 }
 

@@ -24,7 +24,8 @@ typedef struct hull3 {
                        seen from outside */
     uint32_t tri_count;
     plane *planes; /* outward unit normals; coplanar triangles share one plane,
-                      d is the largest n . v over that plane's vertices */
+                      d is the largest n . v over that plane's vertices (over
+                      all vertices for a sliver's plane, whose n is rounding) */
     uint32_t plane_count;
     bbox bounds; /* of the vertices */
 } hull3;
