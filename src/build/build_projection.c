@@ -274,7 +274,8 @@ static int mesh_soup(const prim *p, soup *s)
  * cut, a polyhedron or import that is not closed is projected as it is,
  * silently, in both modes (and with --strict): OpenSCAD 2021.01 projects
  * the faces of the mesh it has without asking that it be closed. A cut
- * needs a solid: a polyhedron or import that is not closed (for a
+ * needs a solid: a polyhedron (its points merged first, as OpenSCAD merges
+ * them for its Nef polyhedron) or import that is not closed (for a
  * polyhedron, also one whose faces at a point make two fans) is left out
  * with OpenSCAD's message as a warning, in both modes (build_import), as
  * its Nef polyhedron cannot be made. Inside a hull, which takes only the
@@ -304,10 +305,27 @@ static sc_status built_soup(const pwalk *w, const model_node *n, soup *s)
     case MODEL_POLYHEDRON:
         if ((st = build_bad_indices(c, n)) != SC_OK || n->u.polyhedron.face_count == 0)
             return st;
-        st = build_mesh_prim(solid ? &cut : &loose, &n->loc, "polyhedron", 1,
-                             n->u.polyhedron.points, n->u.polyhedron.point_count,
-                             n->u.polyhedron.indices, n->u.polyhedron.face_start,
-                             n->u.polyhedron.face_count, &p, &empty);
+        if (solid) {
+            /* its points merged as OpenSCAD merges them for the Nef
+             * polyhedron (faces may use two copies of a point), as for
+             * the leaf (build.c) */
+            build_mesh_faces f;
+            st = build_mesh_merge(&cut, &n->loc, 1, n->u.polyhedron.points,
+                                  n->u.polyhedron.point_count, n->u.polyhedron.indices,
+                                  n->u.polyhedron.face_start, n->u.polyhedron.face_count,
+                                  &f);
+            if (st == SC_OK && f.face_count)
+                st = build_mesh_solid(&cut, &n->loc, "polyhedron", 1, c->strict, &f, &p,
+                                      &empty);
+            else if (st == SC_OK)
+                empty = ""; /* no face left */
+            build_mesh_faces_free(&f);
+            break;
+        }
+        st = build_mesh_prim(&loose, &n->loc, "polyhedron", 1, n->u.polyhedron.points,
+                             n->u.polyhedron.point_count, n->u.polyhedron.indices,
+                             n->u.polyhedron.face_start, n->u.polyhedron.face_count, &p,
+                             &empty);
         break;
     case MODEL_IMPORT:
         st = solid ? build_import(c, n->u.import, &p, &empty)
