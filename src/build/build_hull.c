@@ -405,40 +405,16 @@ static int placed_cmp(const void *a, const void *b)
     return 0;
 }
 
-/* A directed edge (its ends' numbers) and the face it runs along. */
-typedef struct face_edge_of {
-    uint64_t key;
-    uint32_t face;
-} face_edge_of;
-
-static int face_edge_of_cmp(const void *a, const void *b)
-{
-    uint64_t x = ((const face_edge_of *)a)->key, y = ((const face_edge_of *)b)->key;
-    return x < y ? -1 : x > y;
-}
-
-static uint32_t convex_root(uint32_t *parent, uint32_t x)
-{
-    while (parent[x] != x)
-        x = parent[x] = parent[parent[x]];
-    return x;
-}
-
 /* Whether OpenSCAD 2021.01 finds polyhedron n, carried into a minkowski's
  * frame by m, convex where applyMinkowski asks (PolySet::is_convex, which
  * is is_approximately_convex on the faces as written: not tessellated,
  * unlike the test before CGAL's builder, build_mesh.c's approx_convex).
  * Then OpenSCAD sums the hull of its points, though a face out of its
- * plane may make the solid itself not convex. The test, on the points
- * through m (the PolySet's, transformed before the minkowski) and each
- * face as OpenSCAD holds it (back to front, and turned again when m
- * mirrors): edges are pairs of equal coordinates; none may run twice the
- * same way, each must run back along some face; each face's plane goes
- * through its first point along its Newell normal; for every edge, the
- * point after the edge's end on its face may lie on the positive side of
- * the other face's plane only where the two normals are within 0.1
- * degrees; and every face is reached from the first across edges. Sets
- * *convex; SC_OK, or out of memory. */
+ * plane may make the solid itself not convex. The test
+ * (build_mesh_convex_as_written), on the points through m (the PolySet's,
+ * transformed before the minkowski), equal coordinates one point, and
+ * each face as OpenSCAD holds it (back to front, and turned again when m
+ * mirrors). Sets *convex; SC_OK, or out of memory. */
 static sc_status polyset_convex(const walk *w, const model_node *n, const affine *m,
                                 int *convex)
 {
@@ -448,88 +424,46 @@ static sc_status polyset_convex(const walk *w, const model_node *n, const affine
     size_t total = nf ? start[nf] : 0;
     if (!np || !nf)
         return SC_OK;
+    for (uint32_t f = 0; f < nf; f++) {
+        if (start[f + 1] - start[f] < 3)
+            return SC_OK; /* never reached from the others */
+    }
     placed_point *sorted = malloc((size_t)np * sizeof *sorted);
     uint32_t *number = malloc((size_t)np * sizeof *number);
-    face_edge_of *edges = malloc((total ? total : 1) * sizeof *edges);
-    double *planes = malloc((size_t)nf * 4 * sizeof *planes); /* a, b, c, d */
-    uint32_t *parent = malloc((size_t)nf * sizeof *parent);
+    vec3 *points = malloc((size_t)np * sizeof *points);
+    uint32_t *indices = malloc((total ? total : 1) * sizeof *indices);
     sc_status st = SC_OK;
-    if (!sorted || !number || !edges || !planes || !parent) {
+    if (!sorted || !number || !points || !indices) {
         st = err_nomem(w->c->error, &n->loc);
         goto done;
     }
     for (uint32_t i = 0; i < np; i++)
         sorted[i] = (placed_point){affine_point(m, n->u.polyhedron.points[i]), i};
     qsort(sorted, np, sizeof *sorted, placed_cmp);
-    for (uint32_t i = 0, id = 0; i < np; i++) {
+    uint32_t id = 0;
+    for (uint32_t i = 0; i < np; i++) {
         if (i && placed_cmp(&sorted[i - 1], &sorted[i]) != 0)
             id++;
         number[sorted[i].index] = id;
+        points[id] = sorted[i].p;
     }
-    /* OpenSCAD's order of face f's k-th point: PolyhedronNode inserts each
+    /* OpenSCAD's order of face f's points: PolyhedronNode inserts each
      * point at the front; a mirroring transform reverses the faces again */
     int backward = !(affine_det(m) < 0);
-#define POLYSET_POINT(f, k) index[backward ? start[(f) + 1] - 1 - (k) : start[f] + (k)]
-    size_t ne = 0;
     for (uint32_t f = 0; f < nf; f++) {
-        uint32_t count = start[f + 1] - start[f];
-        if (count < 3)
-            goto done;                 /* never reached from the others */
-        double nx = 0, ny = 0, nz = 0; /* CGAL's normal_vector_newell_3 */
-        for (uint32_t k = 0; k < count; k++) {
-            uint32_t a = POLYSET_POINT(f, k), b = POLYSET_POINT(f, (k + 1) % count);
-            vec3 p = affine_point(m, n->u.polyhedron.points[a]);
-            vec3 q = affine_point(m, n->u.polyhedron.points[b]);
-            nx += (p.y - q.y) * (p.z + q.z);
-            ny += (p.z - q.z) * (p.x + q.x);
-            nz += (p.x - q.x) * (p.y + q.y);
-            edges[ne++] = (face_edge_of){(uint64_t)number[a] << 32 | number[b], f};
-        }
-        vec3 first = affine_point(m, n->u.polyhedron.points[POLYSET_POINT(f, 0)]);
-        planes[4 * f] = nx, planes[4 * f + 1] = ny, planes[4 * f + 2] = nz;
-        planes[4 * f + 3] = -nx * first.x - ny * first.y - nz * first.z;
-        parent[f] = f;
+        for (uint32_t k = start[f]; k < start[f + 1]; k++)
+            indices[k] = number[index[backward ? start[f + 1] - 1 - (k - start[f]) : k]];
     }
-    qsort(edges, ne, sizeof *edges, face_edge_of_cmp);
-    for (size_t i = 0; i + 1 < ne; i++) {
-        if (edges[i].key == edges[i + 1].key)
-            goto done; /* an edge run twice the same way */
-    }
-    const double most = cos(.1 / 180 * 3.14159265358979323846);
-    for (uint32_t f = 0; f < nf; f++) {
-        uint32_t count = start[f + 1] - start[f];
-        const double *v = &planes[4 * f];
-        for (uint32_t k = 0; k < count; k++) {
-            uint32_t a = POLYSET_POINT(f, k), b = POLYSET_POINT(f, (k + 1) % count);
-            face_edge_of key = {(uint64_t)number[b] << 32 | number[a], 0};
-            const face_edge_of *back =
-                bsearch(&key, edges, ne, sizeof *edges, face_edge_of_cmp);
-            if (!back)
-                goto done; /* not closed */
-            const double *u = &planes[4 * back->face];
-            vec3 p = affine_point(
-                m, n->u.polyhedron.points[POLYSET_POINT(f, (k + 2) % count)]);
-            if (u[0] * p.x + u[1] * p.y + u[2] * p.z + u[3] > 0) {
-                double lu = sqrt(u[0] * u[0] + u[1] * u[1] + u[2] * u[2]);
-                double lv = sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
-                double cos_angle =
-                    (u[0] / lu * v[0] + u[1] / lu * v[1] + u[2] / lu * v[2]) / lv;
-                if (cos_angle < most)
-                    goto done; /* a fold inward */
-            }
-            parent[convex_root(parent, f)] = convex_root(parent, back->face);
-        }
-    }
-#undef POLYSET_POINT
-    *convex = 1;
-    for (uint32_t f = 1; f < nf && *convex; f++)
-        *convex = convex_root(parent, f) == convex_root(parent, 0);
+    int c = build_mesh_convex_as_written(points, id + 1, indices, start, nf);
+    if (c < 0)
+        st = err_nomem(w->c->error, &n->loc);
+    else
+        *convex = c;
 done:
     free(sorted);
     free(number);
-    free(edges);
-    free(planes);
-    free(parent);
+    free(points);
+    free(indices);
     return st;
 }
 

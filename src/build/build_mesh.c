@@ -461,13 +461,35 @@ static int quad_first(const build_mesh_faces *f, const uint32_t *v, int numbered
  * reversed: f's faces are a polyhedron's, which OpenSCAD reads back to
  * front, so that they turn the other way. 1, 0, or -1 when memory runs
  * out. */
+static int convex_faces(const build_mesh_faces *f, int reversed, int split);
+
 static int approx_convex(const build_mesh_faces *f, int reversed)
+{
+    return convex_faces(f, reversed, 1);
+}
+
+int build_mesh_convex_as_written(const vec3 *points, uint32_t point_count,
+                                 const uint32_t *indices, const uint32_t *face_start,
+                                 uint32_t face_count)
+{
+    build_mesh_faces f;
+    memset(&f, 0, sizeof f);
+    f.points = (vec3 *)points; /* read only */
+    f.point_count = point_count;
+    f.indices = (uint32_t *)indices;
+    f.face_start = (uint32_t *)face_start;
+    f.face_count = face_count;
+    return convex_faces(&f, 0, 0);
+}
+
+/* approx_convex, each quad split (split) or every face whole. */
+static int convex_faces(const build_mesh_faces *f, int reversed, int split)
 {
     /* the pieces: the faces, each quad as the two triangles OpenSCAD's
      * tessellation makes of it (a quad out of its plane folds there) */
     uint32_t total = f->face_start[f->face_count], pieces = 0;
     for (uint32_t k = 0; k < f->face_count; k++)
-        pieces += f->face_start[k + 1] - f->face_start[k] == 4 ? 2 : 1;
+        pieces += split && f->face_start[k + 1] - f->face_start[k] == 4 ? 2 : 1;
     size_t corners = (size_t)total + 2 * (size_t)pieces; /* a split quad has 6 */
     face_edge *edges = malloc((corners ? corners : 1) * sizeof *edges);
     uint32_t *piece = malloc((corners ? corners : 1) * sizeof *piece);
@@ -482,7 +504,7 @@ static int approx_convex(const build_mesh_faces *f, int reversed)
     for (uint32_t k = 0; k < f->face_count; k++) {
         const uint32_t *v = &f->indices[f->face_start[k]];
         uint32_t n = f->face_start[k + 1] - f->face_start[k];
-        if (n != 4) {
+        if (n != 4 || !split) {
             start[count++] = at;
             for (uint32_t j = 0; j < n; j++)
                 piece[at++] = v[j];

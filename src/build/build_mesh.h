@@ -123,6 +123,16 @@ sc_status build_mesh_merge(const build_ctx *c, const sc_location *loc, int rever
                            uint32_t face_count, build_mesh_faces *f);
 void build_mesh_faces_free(build_mesh_faces *f);
 
+/* Whether OpenSCAD 2021.01's is_approximately_convex takes these faces as
+ * written (not tessellated: PolySet::is_convex, which its minkowski asks),
+ * each face's points in the order OpenSCAD holds them, equal points under
+ * one number: every edge runs once each way, every fold between two faces
+ * turns outward or by less than 0.1 degrees, every face is reached from
+ * the first. 1, 0, or -1 when memory runs out. */
+int build_mesh_convex_as_written(const vec3 *points, uint32_t point_count,
+                                 const uint32_t *indices, const uint32_t *face_start,
+                                 uint32_t face_count);
+
 /* The pieces of a set of faces joined by their edges (either way round):
  * face f of face_count, indices[face_start[f] .. face_start[f + 1]), or
  * with face_start NULL triangle f, indices[3 f .. 3 f + 3). Fills parent
