@@ -18,9 +18,11 @@
  * counter-clockwise (down-facing faces project clockwise), with non-zero
  * fill (twod_clip_union_nonzero): OpenSCAD's PolysetUtils::project and
  * its Clipper union. The same region comes from fewer faces: a closed
- * mesh's up-facing ones, a convex leaf's 2D hull (projected_faces). The projection of a
- * union is the union of the projections, so the faces of every leaf below unions, groups,
- * transforms, colours and resizes go into one union. The projection of a
+ * mesh's up-facing ones, with a face that is not convex taken whole
+ * (up_faces), and a convex leaf's 2D hull (projected_faces). The
+ * projection of a union is the union of the projections, so the faces of
+ * every leaf below unions, groups, transforms, colours and resizes go into
+ * one union. The projection of a
  * difference or intersection is not a 2D boolean of the children's
  * projections (a hole through a cube does not show from above unless it
  * goes through); OpenSCAD projects the mesh of the boolean's result. So
@@ -670,6 +672,133 @@ static int open_faces(const soup *s, twod_region *out)
     return 1;
 }
 
+static int append(twod_region *dst, const twod_region *src);
+
+/* A corner of a soup's triangle, to find the triangles that share it. */
+typedef struct corner {
+    vec3 p;
+    uint32_t tri;
+} corner;
+
+static int corner_cmp(const void *a, const void *b)
+{
+    const corner *x = a, *y = b;
+    if (x->p.x != y->p.x)
+        return x->p.x < y->p.x ? -1 : 1;
+    if (x->p.y != y->p.y)
+        return x->p.y < y->p.y ? -1 : 1;
+    if (x->p.z != y->p.z)
+        return x->p.z < y->p.z ? -1 : 1;
+    return (x->tri > y->tri) - (x->tri < y->tri);
+}
+
+static uint32_t group_root(uint32_t *parent, uint32_t t)
+{
+    while (parent[t] != t)
+        t = parent[t] = parent[parent[t]];
+    return t;
+}
+
+static int add_triangle(twod_region *out, const vec3 *v)
+{
+    if (!twod_begin_contour(out))
+        return 0;
+    for (int k = 0; k < 3; k++) {
+        if (!twod_add_point(out, v[k].x, v[k].y))
+            return 0;
+    }
+    twod_end_contour(out);
+    return 1;
+}
+
+/* The faces of closed mesh s that look up, projected: each counter-
+ * clockwise, and each hole of one clockwise. A face that is not convex
+ * comes as a fan of triangles that overlap, some wound back (build_mesh.h),
+ * whose signed sum is the face; alone, the back-wound ones look down and
+ * the face would project whole over its notches. So the triangles that
+ * share a corner and lie in one plane (normals within 1e-9 of parallel,
+ * either way) are taken together: a group of triangles that all look up
+ * is projected as they are, one with some wound back by the union of its
+ * triangles where their winding number is positive. 0 when memory runs
+ * out or the clipper fails. */
+static int up_faces(const soup *s, twod_region *out)
+{
+    uint32_t n = s->count;
+    vec3 *normal = malloc((size_t)(n ? n : 1) * sizeof *normal);
+    uint32_t *parent = malloc((size_t)(n ? n : 1) * sizeof *parent);
+    corner *corners = malloc((size_t)(n ? n : 1) * 3 * sizeof *corners);
+    uint32_t *reps = malloc((size_t)(n ? n : 1) * sizeof *reps);
+    unsigned char *mixed = calloc(n ? n : 1, 1);
+    int ok = normal && parent && corners && reps && mixed;
+    for (uint32_t t = 0; ok && t < n; t++) {
+        const vec3 *v = &s->v[3 * t];
+        normal[t] = v3_normalize(v3_cross(v3_sub(v[1], v[0]), v3_sub(v[2], v[0])));
+        parent[t] = t;
+        for (int k = 0; k < 3; k++)
+            corners[3 * t + k] = (corner){v[k], t};
+    }
+    if (ok)
+        qsort(corners, 3 * (size_t)n, sizeof *corners, corner_cmp);
+    /* at each corner, each triangle joins the first one before it in its
+     * plane */
+    for (size_t i = 0; ok && i < 3 * (size_t)n;) {
+        size_t j = i, count = 0;
+        for (; j < 3 * (size_t)n && corners[j].p.x == corners[i].p.x &&
+               corners[j].p.y == corners[i].p.y && corners[j].p.z == corners[i].p.z;
+             j++) {
+            uint32_t t = corners[j].tri;
+            if (!(fabs(normal[t].z) > 0))
+                continue; /* upright: projects to nothing */
+            size_t r = 0;
+            while (r < count && !(fabs(v3_dot(normal[reps[r]], normal[t])) >= 1 - 1e-9))
+                r++;
+            if (r == count)
+                reps[count++] = t;
+            else
+                parent[group_root(parent, t)] = group_root(parent, reps[r]);
+        }
+        i = j;
+    }
+    /* a group with a triangle wound back (its normal down where another's
+     * is up) */
+    for (uint32_t t = 0; ok && t < n; t++) {
+        uint32_t g = group_root(parent, t);
+        mixed[g] |= (unsigned char)(normal[t].z > 0 ? 1 : normal[t].z < 0 ? 2 : 0);
+    }
+    for (uint32_t t = 0; ok && t < n; t++) {
+        uint32_t g = group_root(parent, t);
+        if (mixed[g] == 1)
+            ok = add_triangle(out, &s->v[3 * t]);
+    }
+    /* the mixed groups' triangles, listed from each root (reps reused) */
+    uint32_t *next = reps;
+    for (uint32_t t = 0; ok && t < n; t++)
+        next[t] = UINT32_MAX;
+    for (uint32_t t = n; ok && t-- > 0;) {
+        uint32_t g = group_root(parent, t);
+        if (mixed[g] == 3 && t != g && normal[t].z != 0) {
+            next[t] = next[g];
+            next[g] = t;
+        }
+    }
+    for (uint32_t g = 0; ok && g < n; g++) {
+        if (mixed[g] != 3 || group_root(parent, g) != g)
+            continue;
+        twod_region face;
+        twod_init(&face);
+        for (uint32_t t = g; ok && t != UINT32_MAX; t = next[t])
+            ok = add_triangle(&face, &s->v[3 * t]);
+        ok = ok && twod_clip_union_positive(&face) == TWOD_CLIP_OK && append(out, &face);
+        twod_free(&face);
+    }
+    free(normal);
+    free(parent);
+    free(corners);
+    free(reps);
+    free(mixed);
+    return ok;
+}
+
 /* Adds the outline of s seen along z to out. The union of every face's
  * projection (OpenSCAD's) is, for a closed mesh, the union of its faces
  * that look up (a vertical line through the solid meets its top at such a
@@ -702,19 +831,7 @@ static int projected_faces(const soup *s, int convex, twod_region *out)
         twod_free(&hull);
         return ok;
     }
-    for (uint32_t t = 0; t < s->count; t++) {
-        const vec3 *v = &s->v[3 * t];
-        if (!(v3_cross(v3_sub(v[1], v[0]), v3_sub(v[2], v[0])).z > 0))
-            continue;
-        if (!twod_begin_contour(out))
-            return 0;
-        for (int k = 0; k < 3; k++) {
-            if (!twod_add_point(out, v[k].x, v[k].y))
-                return 0;
-        }
-        twod_end_contour(out);
-    }
-    return 1;
+    return up_faces(s, out);
 }
 
 /* ---- the walk ---- */
@@ -973,7 +1090,7 @@ sc_status build_projection(const build_ctx *c, const model_node *n, twod_region 
     affine id = affine_identity();
     sc_status st = walk_children(&w, n, &id, 0, out);
     if (st == SC_OK)
-        st = clip_error(&w, n, twod_clip_union_nonzero(out, !w.cut), out);
+        st = clip_error(&w, n, twod_clip_union_nonzero(out, w.cut ? 0 : 2), out);
     /* a solid that z = 0 misses: OpenSCAD's warning (CGALUtils::project),
      * said where the union of the children is known not to be empty */
     if (st == SC_OK && w.cut && w.solid && !out->contour_count && c->notes)

@@ -334,7 +334,7 @@ extern "C" int twod_clip_union_nonzero(twod_region *r, int orient)
 {
     return guarded([&] {
         ClipperLib::Clipper clipper;
-        clipper.AddPaths(to_paths(*r, orient == 0), ClipperLib::ptSubject, true);
+        clipper.AddPaths(to_paths(*r, orient != 1), ClipperLib::ptSubject, true);
         PolyTree result;
         if (orient) {
             /* as OpenSCAD: the faces' union, then that union made strictly
@@ -348,6 +348,18 @@ extern "C" int twod_clip_union_nonzero(twod_region *r, int orient)
         }
         clipper.Execute(ClipperLib::ctUnion, result, ClipperLib::pftNonZero,
                         ClipperLib::pftNonZero);
+        to_region(result, r);
+    });
+}
+
+extern "C" int twod_clip_union_positive(twod_region *r)
+{
+    return guarded([&] {
+        ClipperLib::Clipper clipper;
+        clipper.AddPaths(to_paths(*r, true), ClipperLib::ptSubject, true);
+        PolyTree result;
+        clipper.Execute(ClipperLib::ctUnion, result, ClipperLib::pftPositive,
+                        ClipperLib::pftPositive);
         to_region(result, r);
     });
 }
