@@ -649,29 +649,6 @@ static int section_loops(const soup *s, int up, twod_region *out)
     return ok;
 }
 
-/* Adds every face of s with area seen along z to out, turned
- * counter-clockwise: OpenSCAD's union of the projected faces, for a mesh
- * that is not closed (no face looks up over every point of it). 0 when
- * memory runs out or out is full. */
-static int open_faces(const soup *s, twod_region *out)
-{
-    for (uint32_t t = 0; t < s->count; t++) {
-        const vec3 *v = &s->v[3 * t];
-        double z = v3_cross(v3_sub(v[1], v[0]), v3_sub(v[2], v[0])).z;
-        if (!(z != 0))
-            continue;
-        if (!twod_begin_contour(out))
-            return 0;
-        for (int k = 0; k < 3; k++) {
-            const vec3 *q = &v[z > 0 ? k : 2 - k];
-            if (!twod_add_point(out, q->x, q->y))
-                return 0;
-        }
-        twod_end_contour(out);
-    }
-    return 1;
-}
-
 static int append(twod_region *dst, const twod_region *src);
 
 /* A corner of a soup's triangle, to find the triangles that share it. */
@@ -712,16 +689,20 @@ static int add_triangle(twod_region *out, const vec3 *v)
 }
 
 /* The faces of closed mesh s that look up, projected: each counter-
- * clockwise, and each hole of one clockwise. A face that is not convex
+ * clockwise, and each hole of one clockwise; or with open, every face of
+ * a mesh that is not closed (no face looks up over every point of it),
+ * turned to look up: OpenSCAD's union of the projected faces. A face that is not convex
  * comes as a fan of triangles that overlap, some wound back (build_mesh.h),
  * whose signed sum is the face; alone, the back-wound ones look down and
  * the face would project whole over its notches. So the triangles that
  * share a corner and lie in one plane (normals within 1e-9 of parallel,
  * either way) are taken together: a group of triangles that all look up
- * is projected as they are, one with some wound back by the union of its
- * triangles where their winding number is positive. 0 when memory runs
+ * is projected as they are (open: each turned counter-clockwise), one
+ * with some wound back (open: after the group is turned to look up, by
+ * the sign of its area) by the union of its triangles where their winding
+ * number is positive. 0 when memory runs
  * out or the clipper fails. */
-static int up_faces(const soup *s, twod_region *out)
+static int up_faces(const soup *s, int open, twod_region *out)
 {
     uint32_t n = s->count;
     vec3 *normal = malloc((size_t)(n ? n : 1) * sizeof *normal);
@@ -767,8 +748,10 @@ static int up_faces(const soup *s, twod_region *out)
     }
     for (uint32_t t = 0; ok && t < n; t++) {
         uint32_t g = group_root(parent, t);
-        if (mixed[g] == 1)
-            ok = add_triangle(out, &s->v[3 * t]);
+        const vec3 *v = &s->v[3 * t];
+        if (mixed[g] == 1 || (open && mixed[g] == 2))
+            ok = add_triangle(out, (vec3[3]){v[0], normal[t].z > 0 ? v[1] : v[2],
+                                             normal[t].z > 0 ? v[2] : v[1]});
     }
     /* the mixed groups' triangles, listed from each root (reps reused) */
     uint32_t *next = reps;
@@ -784,10 +767,19 @@ static int up_faces(const soup *s, twod_region *out)
     for (uint32_t g = 0; ok && g < n; g++) {
         if (mixed[g] != 3 || group_root(parent, g) != g)
             continue;
+        /* open: the face turned to look up first (its triangles' signed
+         * areas summed) */
+        double area = 0;
+        for (uint32_t t = g; open && t != UINT32_MAX; t = next[t]) {
+            const vec3 *v = &s->v[3 * t];
+            area += v3_cross(v3_sub(v[1], v[0]), v3_sub(v[2], v[0])).z;
+        }
         twod_region face;
         twod_init(&face);
-        for (uint32_t t = g; ok && t != UINT32_MAX; t = next[t])
-            ok = add_triangle(&face, &s->v[3 * t]);
+        for (uint32_t t = g; ok && t != UINT32_MAX; t = next[t]) {
+            const vec3 *v = &s->v[3 * t];
+            ok = add_triangle(&face, area < 0 ? (vec3[3]){v[0], v[2], v[1]} : v);
+        }
         ok = ok && twod_clip_union_positive(&face) == TWOD_CLIP_OK && append(out, &face);
         twod_free(&face);
     }
@@ -808,7 +800,7 @@ static int up_faces(const soup *s, twod_region *out)
 static int projected_faces(const soup *s, int convex, twod_region *out)
 {
     if (s->open) /* no outward side: every face, turned counter-clockwise */
-        return open_faces(s, out);
+        return up_faces(s, 1, out);
     if (convex) {
         double *xy = s->count ? malloc((size_t)s->count * 6 * sizeof *xy) : NULL;
         if (s->count && !xy)
@@ -831,7 +823,7 @@ static int projected_faces(const soup *s, int convex, twod_region *out)
         twod_free(&hull);
         return ok;
     }
-    return up_faces(s, out);
+    return up_faces(s, 0, out);
 }
 
 /* ---- the walk ---- */
