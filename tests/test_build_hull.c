@@ -425,6 +425,18 @@ static void test_resize(void **state)
     s = load("resize([20, 0, 0], auto = true) { sphere(3, $fn = 24); }");
     check_bounds(s, v3(-10, -10, -10), v3(10, 10, 10), 1e-13);
     sc_scene_release(s);
+    /* inside a hull, which takes OpenSCAD's polygons in both modes, the
+     * scale is from the polygons' box (the octagon's x extent, 2 * 5 sin
+     * 67.5), not the exact sphere's (10), in default mode too */
+    for (int faithful = 0; faithful < 2; faithful++) {
+        s = load_opts("m.csg",
+                      "hull() { resize([4, 0, 0], auto = true) { sphere(5, $fn = 8); } }",
+                      faithful);
+        double k = 2 / (5 * sin(67.5 * PI / 180)); /* 4 over the x extent */
+        double top = 5 * cos(22.5 * PI / 180) * k, side = 5 * sin(67.5 * PI / 180) * k;
+        check_bounds(s, v3(-side, -side, -top), v3(side, side, top), 1e-12);
+        sc_scene_release(s);
+    }
     /* OpenSCAD's polyhedron in faithful mode: 5 fragments, 3 rings; the box
      * of its points is scaled to the asked size */
     s = load_opts("m.csg", "resize([20, 10, 6]) { sphere(3, $fn = 5); }", 1);

@@ -248,6 +248,11 @@ static void test_outline(void **state)
     double R = 5 * sin(67.5 * PI / 180);
     NEAR(area("group() { projection() { sphere(r = 5, $fn = 8); } }"),
          2 * sqrt(2) * R * R, 60);
+    /* resized to 4 across: from the octagon's box, as OpenSCAD resizes
+     * its mesh, not the exact sphere's (8 sqrt 2, not 0.16 of the octagon) */
+    NEAR(area("group() { projection() { resize([4, 0, 0], auto = true) { sphere(r = 5, "
+              "$fn = 8); } } }"),
+         8 * sqrt(2), 30);
     /* the union of two overlapping squares' prisms at different heights */
     NEAR(area("group() { projection() { cube([2, 2, 1]); multmatrix([[1, 0, 0, 1], [0, "
               "1, 0, 1], [0, 0, 1, 5], [0, 0, 0, 1]]) { cube(2); } } }"),

@@ -720,8 +720,15 @@ static sc_status inner_frame(const walk *w, const model_node *n, const affine *m
     affine local;
     const char *warning = NULL;
     *ok = 1;
-    sc_status st = n->kind == MODEL_XFORM ? read_matrix(w->c, n, &local, ok)
-                                          : resize_matrix(w, n, depth, &local, &warning);
+    /* a resize from the box of the meshes the walk takes, OpenSCAD's in
+     * both modes, not of the exact solids */
+    build_ctx meshes = *w->c;
+    meshes.faithful = 1;
+    walk measured = *w;
+    measured.c = &meshes;
+    sc_status st = n->kind == MODEL_XFORM
+                       ? read_matrix(w->c, n, &local, ok)
+                       : resize_matrix(&measured, n, depth, &local, &warning);
     if (st == SC_OK && removed(n)) {
         /* OpenSCAD 2021.01 evaluates the children first: their warnings
          * (not its check of their dimensions: collect), then the removal;

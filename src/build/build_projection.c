@@ -406,8 +406,10 @@ static sc_status hull_points(pwalk *w, const model_node *parent, const affine *m
         } else if (kind == MODEL_XFORM || kind == MODEL_RESIZE) {
             affine local = kind == MODEL_XFORM ? *n->u.xform : affine_identity();
             const char *warning = NULL;
+            build_ctx meshes = *c; /* the box of the meshes (walk_node) */
+            meshes.faithful = 1;
             if (kind == MODEL_RESIZE)
-                st = build_resize(c, n, &w->cache, &local, &warning);
+                st = build_resize(&meshes, n, &w->cache, &local, &warning);
             affine inner = affine_mul(m, &local), inverse;
             if (kind == MODEL_XFORM && n->not_finite) {
                 /* removed: its children's warnings first, without its
@@ -1048,8 +1050,12 @@ static sc_status walk_node(pwalk *w, const model_node *n, const affine *m, int d
         if (kind == MODEL_XFORM) {
             local = *n->u.xform;
         } else {
+            /* from the box of the meshes it projects, OpenSCAD's in both
+             * modes, not of the exact solids */
             const char *warning = NULL;
-            st = build_resize(c, n, &w->cache, &local, &warning);
+            build_ctx meshes = *c;
+            meshes.faithful = 1;
+            st = build_resize(&meshes, n, &w->cache, &local, &warning);
             if (st == SC_OK && warning && c->note && !c->note->message[0])
                 err_set(c->note, SC_OK, &n->loc, "%s", warning);
         }
