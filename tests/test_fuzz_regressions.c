@@ -54,10 +54,30 @@ static char *read_all(const char *path, size_t *length)
     return buf;
 }
 
-static void test_replay_all(void **state)
+/* The .csg text of a finding: the load path, and the split parse where
+ * fuzz_split splits it. */
+static void replay_csg(const char *name, const char *text, size_t length)
 {
-    (void)state;
-    DIR *dir = opendir(folder);
+    if (fuzz_one((const uint8_t *)text, length) != 0)
+        fail_msg("%s: the library broke a promise on this input", name);
+    int split;
+    if (length >= 2 && split_one(text, length, split_place(text, length), &split) != 0)
+        fail_msg("%s: split in two, the parse differs from a whole one", name);
+}
+
+/* A mesh reader's finding: its first byte picks the reader and mode. */
+static void replay_mesh(const char *name, const char *data, size_t length)
+{
+    if (fuzz_mesh_one((const uint8_t *)data, length) != 0)
+        fail_msg("mesh/%s: the library broke a promise on this input", name);
+}
+
+/* Replays every file of dir but hidden ones and the folder mesh/ through
+ * each; returns how many. */
+static int replay(const char *dir_path,
+                  void (*each)(const char *name, const char *data, size_t length))
+{
+    DIR *dir = opendir(dir_path);
     assert_non_null(dir);
     int replayed = 0;
     struct dirent *entry;
@@ -65,23 +85,22 @@ static void test_replay_all(void **state)
         if (entry->d_name[0] == '.' || strcmp(entry->d_name, "mesh") == 0)
             continue;
         char path[4096];
-        snprintf(path, sizeof path, "%s/%s", folder, entry->d_name);
+        snprintf(path, sizeof path, "%s/%s", dir_path, entry->d_name);
         size_t length = 0;
-        char *text = read_all(path, &length);
-        assert_non_null(text);
-        int result = fuzz_one((const uint8_t *)text, length);
-        if (result != 0)
-            fail_msg("%s: the library broke a promise on this input", entry->d_name);
-        /* the split parse where fuzz_split splits it */
-        int split;
-        if (length >= 2 &&
-            split_one(text, length, split_place(text, length), &split) != 0)
-            fail_msg("%s: split in two, the parse differs from a whole one",
-                     entry->d_name);
-        free(text);
+        char *data = read_all(path, &length);
+        assert_non_null(data);
+        each(entry->d_name, data, length);
+        free(data);
         replayed++;
     }
     closedir(dir);
+    return replayed;
+}
+
+static void test_replay_all(void **state)
+{
+    (void)state;
+    int replayed = replay(folder, replay_csg);
     print_message("replayed %d fuzzer findings\n", replayed);
     assert_true(replayed > 0);
 }
@@ -91,25 +110,7 @@ static void test_replay_all(void **state)
 static void test_replay_meshes(void **state)
 {
     (void)state;
-    DIR *dir = opendir(mesh_folder);
-    assert_non_null(dir);
-    int replayed = 0;
-    struct dirent *entry;
-    while ((entry = readdir(dir)) != NULL) {
-        if (entry->d_name[0] == '.')
-            continue;
-        char path[4096];
-        snprintf(path, sizeof path, "%s/%s", mesh_folder, entry->d_name);
-        size_t length = 0;
-        char *data = read_all(path, &length);
-        assert_non_null(data);
-        if (fuzz_mesh_one((const uint8_t *)data, length) != 0)
-            fail_msg("mesh/%s: the library broke a promise on this input", entry->d_name);
-        free(data);
-        replayed++;
-    }
-    closedir(dir);
-    print_message("replayed %d mesh reader findings\n", replayed);
+    print_message("replayed %d mesh reader findings\n", replay(mesh_folder, replay_mesh));
 }
 
 int main(void)

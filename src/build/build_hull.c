@@ -388,23 +388,6 @@ static sc_status polyhedron_points(const walk *w, const model_node *n, const aff
     return st;
 }
 
-/* A point and its position in a polyhedron, to number equal points alike. */
-typedef struct placed_point {
-    vec3 p;
-    uint32_t index;
-} placed_point;
-
-static int placed_cmp(const void *a, const void *b)
-{
-    const vec3 *p = &((const placed_point *)a)->p, *q = &((const placed_point *)b)->p;
-    for (int k = 0; k < 3; k++) {
-        double x = v3_get(*p, k), y = v3_get(*q, k);
-        if (x != y)
-            return x < y ? -1 : 1;
-    }
-    return 0;
-}
-
 /* Whether OpenSCAD 2021.01 finds polyhedron n, carried into a minkowski's
  * frame by m, convex where applyMinkowski asks (PolySet::is_convex, which
  * is is_approximately_convex on the faces as written: not tessellated,
@@ -428,7 +411,7 @@ static sc_status polyset_convex(const walk *w, const model_node *n, const affine
         if (start[f + 1] - start[f] < 3)
             return SC_OK; /* never reached from the others */
     }
-    placed_point *sorted = malloc((size_t)np * sizeof *sorted);
+    build_mesh_keyed *sorted = malloc((size_t)np * sizeof *sorted);
     uint32_t *number = malloc((size_t)np * sizeof *number);
     vec3 *points = malloc((size_t)np * sizeof *points);
     uint32_t *indices = malloc((total ? total : 1) * sizeof *indices);
@@ -438,11 +421,13 @@ static sc_status polyset_convex(const walk *w, const model_node *n, const affine
         goto done;
     }
     for (uint32_t i = 0; i < np; i++)
-        sorted[i] = (placed_point){affine_point(m, n->u.polyhedron.points[i]), i};
-    qsort(sorted, np, sizeof *sorted, placed_cmp);
+        sorted[i] = (build_mesh_keyed){affine_point(m, n->u.polyhedron.points[i]), i};
+    qsort(sorted, np, sizeof *sorted, build_mesh_keyed_cmp);
     uint32_t id = 0;
     for (uint32_t i = 0; i < np; i++) {
-        if (i && placed_cmp(&sorted[i - 1], &sorted[i]) != 0)
+        if (i &&
+            !(sorted[i - 1].p.x == sorted[i].p.x && sorted[i - 1].p.y == sorted[i].p.y &&
+              sorted[i - 1].p.z == sorted[i].p.z))
             id++;
         number[sorted[i].index] = id;
         points[id] = sorted[i].p;

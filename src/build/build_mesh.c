@@ -3005,14 +3005,9 @@ static int finish_faces(mesh_file *m)
     return 1;
 }
 
-typedef struct keyed_point {
-    vec3 p;
-    uint32_t index;
-} keyed_point;
-
-static int compare_points(const void *a, const void *b)
+int build_mesh_keyed_cmp(const void *a, const void *b)
 {
-    const keyed_point *x = a, *y = b;
+    const build_mesh_keyed *x = a, *y = b;
     if (x->p.x != y->p.x)
         return x->p.x < y->p.x ? -1 : 1;
     if (x->p.y != y->p.y)
@@ -3054,7 +3049,7 @@ static int merge_corners(mesh_file *m)
     while (slots < 2 * (size_t)n + 2)
         slots *= 2;
     uint32_t *table = malloc(slots * sizeof *table); /* a point's number, or empty */
-    keyed_point *k = malloc((size_t)(n ? n : 1) * sizeof *k);
+    build_mesh_keyed *k = malloc((size_t)(n ? n : 1) * sizeof *k);
     uint32_t *map = malloc((size_t)(n ? n : 1) * sizeof *map);
     if (!table || !k || !map) {
         free(table);
@@ -3070,7 +3065,7 @@ static int merge_corners(mesh_file *m)
             uint32_t u = table[h];
             if (u == UINT32_MAX) {
                 table[h] = unique;
-                k[unique] = (keyed_point){p, unique};
+                k[unique] = (build_mesh_keyed){p, unique};
                 map[i] = unique++;
                 break;
             }
@@ -3081,7 +3076,7 @@ static int merge_corners(mesh_file *m)
         }
     }
     /* The distinct points in (x, y, z) order; rank[u] is point u's place. */
-    qsort(k, unique, sizeof *k, compare_points);
+    qsort(k, unique, sizeof *k, build_mesh_keyed_cmp);
     uint32_t *rank = table;
     for (uint32_t r = 0; r < unique; r++)
         rank[k[r].index] = r;

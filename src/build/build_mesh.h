@@ -133,6 +133,14 @@ int build_mesh_convex_as_written(const vec3 *points, uint32_t point_count,
                                  const uint32_t *indices, const uint32_t *face_start,
                                  uint32_t face_count);
 
+/* A point and a number of its own (its position, a triangle's), to sort
+ * points by their coordinates, x then y then z, then by the number. */
+typedef struct build_mesh_keyed {
+    vec3 p;
+    uint32_t index;
+} build_mesh_keyed;
+int build_mesh_keyed_cmp(const void *a, const void *b);
+
 /* The pieces of a set of faces joined by their edges (either way round):
  * face f of face_count, indices[face_start[f] .. face_start[f + 1]), or
  * with face_start NULL triangle f, indices[3 f .. 3 f + 3). Fills parent

@@ -653,31 +653,6 @@ static int section_loops(const soup *s, int up, twod_region *out)
 
 static int append(twod_region *dst, const twod_region *src);
 
-/* A corner of a soup's triangle, to find the triangles that share it. */
-typedef struct corner {
-    vec3 p;
-    uint32_t tri;
-} corner;
-
-static int corner_cmp(const void *a, const void *b)
-{
-    const corner *x = a, *y = b;
-    if (x->p.x != y->p.x)
-        return x->p.x < y->p.x ? -1 : 1;
-    if (x->p.y != y->p.y)
-        return x->p.y < y->p.y ? -1 : 1;
-    if (x->p.z != y->p.z)
-        return x->p.z < y->p.z ? -1 : 1;
-    return (x->tri > y->tri) - (x->tri < y->tri);
-}
-
-static uint32_t group_root(uint32_t *parent, uint32_t t)
-{
-    while (parent[t] != t)
-        t = parent[t] = parent[parent[t]];
-    return t;
-}
-
 static int add_triangle(twod_region *out, const vec3 *v)
 {
     if (!twod_begin_contour(out))
@@ -709,7 +684,7 @@ static int up_faces(const soup *s, int open, twod_region *out)
     uint32_t n = s->count;
     vec3 *normal = malloc((size_t)(n ? n : 1) * sizeof *normal);
     uint32_t *parent = malloc((size_t)(n ? n : 1) * sizeof *parent);
-    corner *corners = malloc((size_t)(n ? n : 1) * 3 * sizeof *corners);
+    build_mesh_keyed *corners = malloc((size_t)(n ? n : 1) * 3 * sizeof *corners);
     uint32_t *reps = malloc((size_t)(n ? n : 1) * sizeof *reps);
     unsigned char *mixed = calloc(n ? n : 1, 1);
     int ok = normal && parent && corners && reps && mixed;
@@ -718,10 +693,10 @@ static int up_faces(const soup *s, int open, twod_region *out)
         normal[t] = v3_normalize(v3_cross(v3_sub(v[1], v[0]), v3_sub(v[2], v[0])));
         parent[t] = t;
         for (int k = 0; k < 3; k++)
-            corners[3 * t + k] = (corner){v[k], t};
+            corners[3 * t + k] = (build_mesh_keyed){v[k], t};
     }
     if (ok)
-        qsort(corners, 3 * (size_t)n, sizeof *corners, corner_cmp);
+        qsort(corners, 3 * (size_t)n, sizeof *corners, build_mesh_keyed_cmp);
     /* at each corner, each triangle joins the first one before it in its
      * plane */
     for (size_t i = 0; ok && i < 3 * (size_t)n;) {
@@ -729,7 +704,7 @@ static int up_faces(const soup *s, int open, twod_region *out)
         for (; j < 3 * (size_t)n && corners[j].p.x == corners[i].p.x &&
                corners[j].p.y == corners[i].p.y && corners[j].p.z == corners[i].p.z;
              j++) {
-            uint32_t t = corners[j].tri;
+            uint32_t t = corners[j].index;
             if (!(fabs(normal[t].z) > 0))
                 continue; /* upright: projects to nothing */
             size_t r = 0;
@@ -738,18 +713,18 @@ static int up_faces(const soup *s, int open, twod_region *out)
             if (r == count)
                 reps[count++] = t;
             else
-                parent[group_root(parent, t)] = group_root(parent, reps[r]);
+                parent[build_mesh_piece(parent, t)] = build_mesh_piece(parent, reps[r]);
         }
         i = j;
     }
     /* a group with a triangle wound back (its normal down where another's
      * is up) */
     for (uint32_t t = 0; ok && t < n; t++) {
-        uint32_t g = group_root(parent, t);
+        uint32_t g = build_mesh_piece(parent, t);
         mixed[g] |= (unsigned char)(normal[t].z > 0 ? 1 : normal[t].z < 0 ? 2 : 0);
     }
     for (uint32_t t = 0; ok && t < n; t++) {
-        uint32_t g = group_root(parent, t);
+        uint32_t g = build_mesh_piece(parent, t);
         const vec3 *v = &s->v[3 * t];
         if (mixed[g] == 1 || (open && mixed[g] == 2))
             ok = add_triangle(out, (vec3[3]){v[0], normal[t].z > 0 ? v[1] : v[2],
@@ -760,14 +735,14 @@ static int up_faces(const soup *s, int open, twod_region *out)
     for (uint32_t t = 0; ok && t < n; t++)
         next[t] = UINT32_MAX;
     for (uint32_t t = n; ok && t-- > 0;) {
-        uint32_t g = group_root(parent, t);
+        uint32_t g = build_mesh_piece(parent, t);
         if (mixed[g] == 3 && t != g && normal[t].z != 0) {
             next[t] = next[g];
             next[g] = t;
         }
     }
     for (uint32_t g = 0; ok && g < n; g++) {
-        if (mixed[g] != 3 || group_root(parent, g) != g)
+        if (mixed[g] != 3 || build_mesh_piece(parent, g) != g)
             continue;
         /* open: the face turned to look up first (its triangles' signed
          * areas summed) */
