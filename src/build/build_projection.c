@@ -351,6 +351,16 @@ static sc_status built_soup(const pwalk *w, const model_node *n, soup *s)
 static sc_status leaf_soup(pwalk *w, const model_node *n, soup *s, int depth);
 static sc_status background(pwalk *w, const model_node *k, const affine *m, int depth);
 
+/* resize node n's scale (build_resize) from the box of the meshes the
+ * projection takes, OpenSCAD's in both modes, not of the exact solids. */
+static sc_status meshes_resize(pwalk *w, const model_node *n, affine *local,
+                               const char **warning)
+{
+    build_ctx meshes = *w->c;
+    meshes.faithful = 1;
+    return build_resize(&meshes, n, &w->cache, local, warning);
+}
+
 /* OpenSCAD 2021.01's warnings for the 2D children of parent, a hull
  * inside projection (a 3D operation there), which it leaves out: after the
  * children, as it checks dimensions once they are evaluated, first that
@@ -406,10 +416,8 @@ static sc_status hull_points(pwalk *w, const model_node *parent, const affine *m
         } else if (kind == MODEL_XFORM || kind == MODEL_RESIZE) {
             affine local = kind == MODEL_XFORM ? *n->u.xform : affine_identity();
             const char *warning = NULL;
-            build_ctx meshes = *c; /* the box of the meshes (walk_node) */
-            meshes.faithful = 1;
             if (kind == MODEL_RESIZE)
-                st = build_resize(&meshes, n, &w->cache, &local, &warning);
+                st = meshes_resize(w, n, &local, &warning);
             affine inner = affine_mul(m, &local), inverse;
             if (kind == MODEL_XFORM && n->not_finite) {
                 /* removed: its children's warnings first, without its
@@ -1025,12 +1033,8 @@ static sc_status walk_node(pwalk *w, const model_node *n, const affine *m, int d
         if (kind == MODEL_XFORM) {
             local = *n->u.xform;
         } else {
-            /* from the box of the meshes it projects, OpenSCAD's in both
-             * modes, not of the exact solids */
             const char *warning = NULL;
-            build_ctx meshes = *c;
-            meshes.faithful = 1;
-            st = build_resize(&meshes, n, &w->cache, &local, &warning);
+            st = meshes_resize(w, n, &local, &warning);
             if (st == SC_OK && warning && c->note && !c->note->message[0])
                 err_set(c->note, SC_OK, &n->loc, "%s", warning);
         }
