@@ -407,6 +407,25 @@ difference() {
 	$far
 }
 CSG
+# A box with its top out of its plane, in a union: as written, OpenSCAD
+# finds it not convex and CGAL's check fails at point 4 (the solid is
+# lost); rotated or mirrored, OpenSCAD moves its points first
+# (PolySet::transform), its tessellation splits the top on the other
+# diagonal, it is convex and kept.
+box_points='[[0, 0, 0], [5.5, 0, 0], [5.5, 5.17, 0], [0, 5.17, 0], [0, 0, 7.31], [5.5, 0, 6.34], [5.5, 5.17, 7.31], [0, 5.17, 6.71]]'
+box_faces='[[0, 1, 2, 3], [4, 5, 1, 0], [7, 6, 5, 4], [5, 6, 2, 1], [6, 7, 3, 2], [7, 4, 0, 3]]'
+for moved in "lost group()" \
+    "turned multmatrix([[0, -1, 0, 0], [1, 0, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]])" \
+    "mirrored multmatrix([[1, 0, 0, 0], [0, -1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]])"; do
+    cat >"box-${moved%% *}.csg" <<CSG
+union() {
+	${moved#* } {
+		polyhedron(points = $box_points, faces = $box_faces, convexity = 1);
+	}
+	$far
+}
+CSG
+done
 # The same cube in a difference under hull(): OpenSCAD makes a Nef
 # polyhedron of the difference's operands, and the hull is empty. (A
 # minkowski() of it alone takes it as convex, on its whole faces.)
@@ -494,6 +513,9 @@ builder_cases=(
     "mink-dup.csg|1.5,1.05,1.05|in||"
     "plane-lost.csg|0.5,0.5,0.5|out|plane-lost.csg:2:2: warning: polyhedron has a face out of its plane at point 1 (CGAL's assertion ss_circle.has_on(sp_0) fails there, and OpenSCAD does not triangulate and try again); left out, as OpenSCAD leaves it out (\"$assertion\")|^ERROR: $assertion"
     "plane-kept.csg|0.5,0.5,0.5|in||"
+    "box-lost.csg|2.5,2.5,1|out|box-lost.csg:3:3: warning: polyhedron has a face out of its plane at point 4 (CGAL's assertion ss_circle.has_on(sp_0) fails there, and OpenSCAD does not triangulate and try again); left out, as OpenSCAD leaves it out (\"$assertion\")|^ERROR: $assertion"
+    "box-turned.csg|-2.5,2.5,1|in||"
+    "box-mirrored.csg|2.5,-2.5,1|in||"
     "plane-hull.csg|0.5,0.5,0.5|out|plane-hull.csg:3:3: warning: polyhedron has a face out of its plane at point 1 (CGAL's assertion ss_circle.has_on(sp_0) fails there, and OpenSCAD does not triangulate and try again); left out, as OpenSCAD leaves it out (\"$assertion\")|^ERROR: $assertion"
     "plane-mink.csg|0.95,0.1,0.5|in||"
     "plane-off.csg|0.5,0.5,0.5|out|plane-off.csg:2:16: warning: imported mesh has a face out of its plane at (0, 0, 1) (CGAL's assertion ss_circle.has_on(sp_0) fails there, and OpenSCAD does not triangulate and try again); left out, as OpenSCAD leaves it out (\"$assertion\")|^ERROR: $assertion"

@@ -108,6 +108,13 @@ typedef struct frame {
     /* its result reaches a CGAL operation in OpenSCAD's render: an
      * operation of two or more operands, or a render() (to_cgal) */
     int cgal;
+    /* OpenSCAD 2021.01 moves a mesh's points (PolySet::transform) until a
+     * CGAL operation, or the render's end, takes the mesh and tessellates
+     * and checks it there: the transforms since the innermost such
+     * operation (or the root), and to_world at it (to_world is
+     * cgal_world * since_cgal) */
+    affine since_cgal;
+    affine cgal_world;
 } frame;
 
 /* A '#' or '%' node and the state its parent hands it. */
@@ -635,13 +642,36 @@ static sc_status warn_note(builder *b, const sc_error *note)
     return warn(b, &at, "%s", note->message);
 }
 
+/* A mesh's leaf (a polyhedron's, an import's) in the render, as OpenSCAD
+ * 2021.01 holds its points where a CGAL operation or the render's end
+ * takes them: moved by the transforms since (state's since_cgal,
+ * returned; build_mesh_merge_moved), where its points are snapped, a
+ * face that is not planar is split and the mesh judged, and placed by the
+ * rest (*rest: state with to_world its cgal_world). NULL where nothing
+ * moved it, in the preview (OpenCSG draws the points as written) and in a
+ * motion (its leaf keeps its own). */
+static const affine *moved_leaf(const builder *b, const frame *state, frame *rest)
+{
+    affine id_map = affine_identity();
+    if (b->preview || state->moving ||
+        !memcmp(&state->since_cgal, &id_map, sizeof id_map))
+        return NULL;
+    *rest = *state;
+    rest->to_world = state->cgal_world;
+    return &state->since_cgal;
+}
+
 /* polyhedron(points, faces): its points merged as OpenSCAD merges them
- * (build_mesh_merge), then convex planes when it is closed and convex,
- * else a mesh (build_mesh_solid, which also takes the meshes that are
- * not closed). */
+ * (build_mesh_merge) where they have moved to (moved_leaf), then convex
+ * planes when it is closed and convex, else a mesh (build_mesh_solid,
+ * which also takes the meshes that are not closed). */
 static sc_status build_polyhedron(builder *b, const model_node *n, const frame *state,
                                   uint32_t *id)
 {
+    frame rest;
+    const affine *since = moved_leaf(b, state, &rest);
+    if (since)
+        state = &rest;
     sc_error note = {SC_OK, "", 0, 0, ""};
     build_ctx c = context(b, state->warns, &note);
     c.drawn_as_is = !state->cgal || b->preview; /* OpenCSG takes any mesh */
@@ -657,9 +687,10 @@ static sc_status build_polyhedron(builder *b, const model_node *n, const frame *
         return st;
     }
     build_mesh_faces f;
-    st = build_mesh_merge(&c, &n->loc, 1, n->u.polyhedron.points,
-                          n->u.polyhedron.point_count, n->u.polyhedron.indices,
-                          n->u.polyhedron.face_start, n->u.polyhedron.face_count, &f);
+    st = build_mesh_merge_moved(&c, &n->loc, 1, since, n->u.polyhedron.points,
+                                n->u.polyhedron.point_count, n->u.polyhedron.indices,
+                                n->u.polyhedron.face_start, n->u.polyhedron.face_count,
+                                &f);
     if (st != SC_OK)
         return st;
     mesh m;
@@ -802,13 +833,19 @@ static sc_status add_leaves(builder *b, const model_node *n, const build_prims *
 }
 
 /* import(file = "...") (build_mesh.c: one leaf, or one per object of an
- * AMF or 3MF file, united as OpenSCAD unites them), linear_extrude
- * (build_extrude.c) or rotate_extrude (build_revolve.c). */
+ * AMF or 3MF file, united as OpenSCAD unites them, where their points have
+ * moved to: moved_leaf), linear_extrude (build_extrude.c) or
+ * rotate_extrude (build_revolve.c). */
 static sc_status build_import_leaf(builder *b, const model_node *n, const frame *state,
                                    uint32_t *id)
 {
+    frame rest;
+    const affine *since = n->kind == MODEL_IMPORT ? moved_leaf(b, state, &rest) : NULL;
+    if (since)
+        state = &rest;
     sc_error note = {SC_OK, "", 0, 0, ""}; /* a warning, e.g. a font fallback */
     build_ctx c = context(b, state->warns, &note);
+    c.moved = since;
     c.drawn_as_is = !state->cgal || b->preview; /* OpenCSG takes any mesh */
     const char *empty = NULL;
     prim p;
@@ -1216,8 +1253,24 @@ static void inherit(const builder *b, const model_node *n, const frame *parent, 
     f->counted = f->emit;
     f->children_lost = parent->children_lost && n->child_count == 1 && !n->is_root;
     /* a leaf's children (an extrusion's 2D ones) are united by Clipper */
-    f->cgal = (!n->is_root && parent->cgal) ||
-              ((!model_is_leaf(n->kind) || lone_minkowski(n)) && to_cgal(n->first_child));
+    int operation =
+        (!model_is_leaf(n->kind) || lone_minkowski(n)) && to_cgal(n->first_child);
+    f->cgal = (!n->is_root && parent->cgal) || operation;
+    if (n->is_root || operation) {
+        f->since_cgal = affine_identity();
+        f->cgal_world = f->to_world;
+    }
+}
+
+/* f's node n transforms its children by m: for a CGAL operation of
+ * its children (a multmatrix of several), after their union (inherit). */
+static void transform_frame(const model_node *n, frame *f, const affine *m)
+{
+    f->to_world = affine_mul(&f->to_world, m);
+    if (!model_is_leaf(n->kind) && to_cgal(n->first_child))
+        f->cgal_world = f->to_world;
+    else
+        f->since_cgal = affine_mul(&f->since_cgal, m);
 }
 
 /* Whether leaf n builds with its parent's state as it is (inherit would
@@ -1397,7 +1450,7 @@ static sc_status visit(builder *b, const model_node *n, int *opened)
         enter_render(b, f);
     if (kind == MODEL_XFORM) {
         affine inverse;
-        f->to_world = affine_mul(&f->to_world, n->u.xform);
+        transform_frame(n, f, n->u.xform);
         if (n->not_finite) {
             /* OpenSCAD 2021.01 removes the subtree, in the render and the
              * preview alike, once its children are evaluated: the warning
@@ -1416,7 +1469,7 @@ static sc_status visit(builder *b, const model_node *n, int *opened)
             return st;
         if (warning && f->warns && (st = warn(b, &n->loc, "%s", warning)) != SC_OK)
             return st;
-        f->to_world = affine_mul(&f->to_world, &m);
+        transform_frame(n, f, &m);
     } else if (kind == MODEL_MOTION) {
         if ((st = build_motion_open(n, f->moving, &f->to_world, &f->motion, b->error)))
             return st;
@@ -1483,6 +1536,8 @@ static sc_status walk(builder *b, uint32_t *root)
     top.warns = top.emit;
     top.shown = top.emit;
     top.to_world = affine_identity();
+    top.since_cgal = top.to_world;
+    top.cgal_world = top.to_world;
     top.cgal = to_cgal(b->model->first);
     memcpy(top.color, default_color, sizeof top.color);
     sc_status st = push_frame(b, &top);

@@ -77,6 +77,10 @@ typedef struct build_ctx {
     /* the load's CGAL solids by subtree (build_nef_cache.h), shared by
      * every context of a load; NULL: each is evaluated where it occurs */
     struct build_nef_cache *nefs;
+    /* where an import's points have moved to before OpenSCAD takes its
+     * mesh (build_mesh_merge_moved): the import's builders read them so;
+     * NULL: as written */
+    const affine *moved;
 } build_ctx;
 
 /* Charges count mesh triangles that what (a node's name) is about to build

@@ -104,6 +104,11 @@ typedef struct walk {
      * failed (solid_parts), for the minkowski to fall back as OpenSCAD's
      * does (minkowski_parts); NULL elsewhere */
     struct decompose_failure *failure;
+    /* the transforms since the innermost union of several solids that
+     * OpenSCAD makes a Nef polyhedron of, which moved a mesh's points
+     * before it is tessellated and checked there (build_mesh_merge_moved);
+     * NULL where no such union lies between: the walk's own m */
+    const affine *since;
 } walk;
 
 /* The operand whose convex decomposition CGAL failed on (its name and
@@ -509,6 +514,25 @@ static sc_status mesh_points(const walk *w, const model_node *n, const affine *m
     return SC_OK;
 }
 
+/* The identity, for a walk's since under a union of several solids. */
+static const affine unmoved = {{{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}}};
+
+/* Where a mesh under m (the walk's frame) has moved to when a union of
+ * several, or the hull or minkowski, takes it (w->since, else m): that
+ * map, or NULL for none (or one that cannot be undone), and in *rest what
+ * takes it on to the walk's frame (m is rest * since). */
+static const affine *moved_since(const walk *w, const affine *m, affine *rest)
+{
+    const affine *since = w->since ? w->since : m;
+    affine undo;
+    if (!memcmp(since, &unmoved, sizeof unmoved) || !affine_invert(since, &undo)) {
+        *rest = *m;
+        return NULL;
+    }
+    *rest = w->since ? affine_mul(m, &undo) : unmoved;
+    return since;
+}
+
 /* OpenSCAD 2021.01 takes a mesh into a CGAL Nef polyhedron in a union of
  * several solids and in a minkowski sum, and cannot when the mesh is not
  * closed: it prints "The given mesh is not closed! ..." and leaves the
@@ -518,7 +542,8 @@ static sc_status mesh_points(const walk *w, const model_node *n, const affine *m
  * given (the error with --strict; nothing where the walk only checks),
  * *open is set, and for a minkowski *w->not_closed. Reads the file once
  * more for an import. */
-static sc_status closed_check(const walk *w, const model_node *n, int *open)
+static sc_status closed_check(const walk *w, const model_node *n, const affine *m,
+                              int *open)
 {
     const build_ctx *c = w->c;
     *open = 0;
@@ -537,10 +562,13 @@ static sc_status closed_check(const walk *w, const model_node *n, int *open)
     const char *empty = NULL, *what = "polyhedron";
     const sc_location *loc = &n->loc;
     sc_status st;
+    affine rest;
+    quiet.moved = moved_since(w, m, &rest);
     if (n->kind == MODEL_POLYHEDRON) {
-        st = build_mesh_merge(&quiet, loc, 1, n->u.polyhedron.points,
-                              n->u.polyhedron.point_count, n->u.polyhedron.indices,
-                              n->u.polyhedron.face_start, n->u.polyhedron.face_count, &f);
+        st = build_mesh_merge_moved(&quiet, loc, 1, quiet.moved, n->u.polyhedron.points,
+                                    n->u.polyhedron.point_count, n->u.polyhedron.indices,
+                                    n->u.polyhedron.face_start,
+                                    n->u.polyhedron.face_count, &f);
     } else {
         what = "imported mesh";
         loc = &n->u.import->file_loc;
@@ -696,11 +724,24 @@ static sc_status solid_parts(const walk *w, const model_node *n, const affine *m
 static sc_status collect(const walk *w, const model_node *parent, const affine *m,
                          int depth, partlist *out);
 
+/* The walk w's children of n take, in *sub: in a union of several solids
+ * where n unites them (unmoved since), else w's. */
+static void enter_union(const walk *w, const model_node *n, walk *sub)
+{
+    *sub = *w;
+    if (build_hull_solids(n) > 1) {
+        sub->in_union = 1;
+        sub->since = &unmoved;
+    }
+}
+
 /* The frame of the children of a multmatrix or resize n under m: m after
  * n's own matrix, in *inner; 0 in *ok for a singular multmatrix (the
- * subtree has no geometry). */
+ * subtree has no geometry). With sub, also the walk its children take
+ * (enter_union; where they are not united, w's since after n's matrix,
+ * kept in *since). */
 static sc_status inner_frame(const walk *w, const model_node *n, const affine *m,
-                             int depth, affine *inner, int *ok)
+                             int depth, affine *inner, walk *sub, affine *since, int *ok)
 {
     affine local;
     const char *warning = NULL;
@@ -728,8 +769,16 @@ static sc_status inner_frame(const walk *w, const model_node *n, const affine *m
         *ok = 0;
         return st == SC_OK ? build_xform_not_finite(w->c, n) : st;
     }
-    if (st == SC_OK && *ok)
+    if (st == SC_OK && *ok) {
         *inner = affine_mul(m, &local);
+        if (sub) {
+            enter_union(w, n, sub);
+            if (w->since && build_hull_solids(n) <= 1) {
+                *since = affine_mul(w->since, &local);
+                sub->since = since;
+            }
+        }
+    }
     return st;
 }
 
@@ -789,15 +838,14 @@ static sc_status collect(const walk *w, const model_node *parent, const affine *
         } else if (is_group(kind) ||
                    (kind == MODEL_MINKOWSKI && build_hull_solids(n) == 1)) {
             /* a minkowski of one solid is that solid (build.c) */
-            walk sub = *w;
-            sub.in_union |= build_hull_solids(n) > 1;
+            walk sub;
+            enter_union(w, n, &sub);
             st = collect(&sub, n, m, depth + 1, out);
         } else if (kind == MODEL_XFORM || kind == MODEL_RESIZE) {
-            affine inner;
+            affine inner, since;
             int ok;
-            walk sub = *w;
-            sub.in_union |= build_hull_solids(n) > 1;
-            st = inner_frame(w, n, m, depth + 1, &inner, &ok);
+            walk sub;
+            st = inner_frame(w, n, m, depth + 1, &inner, &sub, &since, &ok);
             if (st == SC_OK && ok)
                 st = collect(&sub, n, &inner, depth + 1, out);
         } else if (kind == MODEL_CUBE || kind == MODEL_SPHERE || kind == MODEL_CYLINDER) {
@@ -814,7 +862,7 @@ static sc_status collect(const walk *w, const model_node *parent, const affine *
             if (kind == MODEL_POLYHEDRON && !w->check)
                 st = build_bad_indices(c, n);
             if (st == SC_OK && (kind == MODEL_POLYHEDRON || kind == MODEL_IMPORT))
-                st = closed_check(w, n, &open);
+                st = closed_check(w, n, m, &open);
             if (st == SC_OK && !open)
                 st = kind == MODEL_POLYHEDRON ? polyhedron_points(w, n, m, &set, &volume)
                                               : mesh_points(w, n, m, &set, &volume);
@@ -847,7 +895,7 @@ static sc_status collect(const walk *w, const model_node *parent, const affine *
             free(set.p);
         } else if (kind == MODEL_HULL) {
             walk inner = {c, "hull", 0,    w->cache, w->nef, w->check,
-                          0, NULL,   NULL, NULL,     NULL};
+                          0, NULL,   NULL, NULL,     NULL,   NULL};
             partlist sub = {NULL, 0, 0};
             st = collect(&inner, n, m, depth + 1, &sub);
             pointset *part = NULL;
@@ -972,7 +1020,8 @@ static sc_status minkowski_parts(const walk *w, const model_node *n, const affin
                   not_closed,
                   NULL,
                   NULL,
-                  w->c->strict ? NULL : &failure};
+                  w->c->strict ? NULL : &failure,
+                  NULL};
     partlist acc = {NULL, 0, 0};
     sc_status st = SC_OK;
     int first = 1, second = 0, summed = 0;
@@ -1237,7 +1286,8 @@ static sc_status nef_node(const walk *w, const model_node *n, const affine *m, i
                           nef_solid **out);
 
 /* The faces of import, linear_extrude, rotate_extrude and surface that
- * CGAL takes, with the warnings and the empty case (*empty) of their leaf.
+ * CGAL takes, with the warnings and the empty case (*empty) of their leaf
+ * (an import's points where moved takes them, or NULL).
  * The leaves' meshes fan each face, and each contour of a cap, about a
  * point: those fans overlap (a hole over its outline, the fan of a concave
  * outline over itself) or have triangles without area (along a straight
@@ -1246,8 +1296,8 @@ static sc_status nef_node(const walk *w, const model_node *n, const affine *m, i
  * CGAL. So CGAL gets the faces themselves, each cap one face with holes,
  * as OpenSCAD tessellates them. Extrusions are built as in --faithful, in
  * both modes, as OpenSCAD's polygons. */
-static sc_status mesh_faces(const walk *w, const model_node *n, build_mesh_faces *faces,
-                            const char **empty)
+static sc_status mesh_faces(const walk *w, const model_node *n, const affine *moved,
+                            build_mesh_faces *faces, const char **empty)
 {
     memset(faces, 0, sizeof *faces);
     build_ctx fc = *w->c;
@@ -1256,7 +1306,9 @@ static sc_status mesh_faces(const walk *w, const model_node *n, build_mesh_faces
     case MODEL_IMPORT: {
         if (n->pending)
             return build_pending(w->c, n);
-        return build_import_faces(w->c, n->u.import, empty, faces);
+        build_ctx ic = *w->c;
+        ic.moved = moved;
+        return build_import_faces(&ic, n->u.import, empty, faces);
     }
     case MODEL_SURFACE:
         return n->pending ? build_pending(w->c, n)
@@ -1280,6 +1332,10 @@ static sc_status nef_children(const walk *w, const model_node *parent, const aff
     int first = 1;
     const model_node *mixing = NULL; /* the first 2D child that is not empty */
     size_t mark = w->c->nefs ? build_nef_cache_mark(w->c->nefs) : 0;
+    walk operands = *w; /* a boolean of several: OpenSCAD's Nef polyhedra */
+    if (build_hull_solids(parent) > 1)
+        operands.since = &unmoved;
+    w = &operands;
     for (const model_node *n = parent->first_child; n; n = n->next) {
         if (skipped(n) || is_shading(n->kind)) {
             sc_status st = background(w, n, m, depth);
@@ -1405,12 +1461,14 @@ static sc_status nef_node(const walk *w, const model_node *n, const affine *m, i
     if (kind == MODEL_INTERSECTION)
         return nef_children(w, n, m, depth + 1, NEF_INTERSECTION, out);
     if (kind == MODEL_XFORM || kind == MODEL_RESIZE) {
-        affine inner;
+        affine inner, since;
         int ok;
-        st = inner_frame(w, n, m, depth + 1, &inner, &ok);
+        walk sub;
+        st = inner_frame(w, n, m, depth + 1, &inner, &sub, &since, &ok);
         if (st != SC_OK || !ok)
             return st;
-        return nef_children(w, n, &inner, depth + 1, NEF_UNION, out);
+        sub.in_union = w->in_union; /* nef_children unites them */
+        return nef_children(&sub, n, &inner, depth + 1, NEF_UNION, out);
     }
     /* CGAL takes every mesh here, so one that is not closed is left out
      * as from a union (closed_check) */
@@ -1420,7 +1478,7 @@ static sc_status nef_node(const walk *w, const model_node *n, const affine *m, i
     if (kind == MODEL_POLYHEDRON && !w->check && (st = build_bad_indices(c, n)) != SC_OK)
         return st;
     if (kind == MODEL_POLYHEDRON || (kind == MODEL_IMPORT && !n->pending)) {
-        if ((st = closed_check(&cgal, n, &open)) != SC_OK || open)
+        if ((st = closed_check(&cgal, n, m, &open)) != SC_OK || open)
             return st;
     }
     if (kind == MODEL_POLYHEDRON) {
@@ -1430,15 +1488,17 @@ static sc_status nef_node(const walk *w, const model_node *n, const affine *m, i
         if (w->check || !np || !n->u.polyhedron.face_count)
             return SC_OK;
         /* its points merged as OpenSCAD merges them before CGAL sees them,
-         * as for the leaf (build_mesh_merge) */
+         * as for the leaf (build_mesh_merge), where they have moved to */
         build_mesh_faces f;
-        st = build_mesh_merge(c, &n->loc, 1, n->u.polyhedron.points, np,
-                              n->u.polyhedron.indices, n->u.polyhedron.face_start,
-                              n->u.polyhedron.face_count, &f);
+        affine rest;
+        st = build_mesh_merge_moved(c, &n->loc, 1, moved_since(w, m, &rest),
+                                    n->u.polyhedron.points, np, n->u.polyhedron.indices,
+                                    n->u.polyhedron.face_start,
+                                    n->u.polyhedron.face_count, &f);
         if (st == SC_OK)
             st = build_mesh_cgal_faces(c, &n->loc, "polyhedron", &f, 1);
         if (st == SC_OK && f.face_count)
-            st = nef_mesh(w, n, m, &f, out);
+            st = nef_mesh(w, n, &rest, &f, out);
         build_mesh_faces_free(&f);
         return st;
     }
@@ -1453,10 +1513,13 @@ static sc_status nef_node(const walk *w, const model_node *n, const affine *m, i
         build_prims parts = {NULL, 0, 0};
         const char *empty = NULL;
         *out = NULL;
-        st = build_import_solids(c, n->u.import, &parts, &empty);
+        build_ctx moved = *c; /* its points where they have moved to */
+        affine rest;
+        moved.moved = moved_since(w, m, &rest);
+        st = build_import_solids(&moved, n->u.import, &parts, &empty);
         for (uint32_t i = 0; st == SC_OK && !w->check && i < parts.count; i++) {
             nef_solid *s = NULL;
-            st = nef_leaf_mesh(w, n, m, parts.items[i].u.mesh.mesh, &s);
+            st = nef_leaf_mesh(w, n, &rest, parts.items[i].u.mesh.mesh, &s);
             if (st == SC_OK)
                 st = nef_combine(w, n, out, NEF_UNION, s);
         }
@@ -1466,14 +1529,16 @@ static sc_status nef_node(const walk *w, const model_node *n, const affine *m, i
     if (is_mesh(kind)) {
         build_mesh_faces faces;
         const char *empty = NULL;
-        st = mesh_faces(w, n, &faces, &empty);
+        affine rest = *m; /* an import's points where they have moved to */
+        const affine *moved = kind == MODEL_IMPORT ? moved_since(w, m, &rest) : NULL;
+        st = mesh_faces(w, n, moved, &faces, &empty);
         /* an STL or OFF file's faces, less those CGAL's builder skips, as
          * for a polyhedron */
         if (st == SC_OK && !empty && kind == MODEL_IMPORT && !w->check)
             st = build_mesh_cgal_faces(c, &n->u.import->file_loc, "imported mesh", &faces,
                                        0);
         if (st == SC_OK && !empty && faces.face_count && !w->check)
-            st = nef_mesh(w, n, m, &faces, out);
+            st = nef_mesh(w, n, &rest, &faces, out);
         build_mesh_faces_free(&faces);
         return st;
     }
@@ -1487,7 +1552,7 @@ static sc_status nef_node(const walk *w, const model_node *n, const affine *m, i
         }
     } else if (kind == MODEL_HULL) {
         walk inner = {c, "hull", 0,    w->cache, w->nef, w->check,
-                      0, NULL,   NULL, NULL,     NULL};
+                      0, NULL,   NULL, NULL,     NULL,   NULL};
         partlist sub = {NULL, 0, 0};
         st = collect(&inner, n, m, depth + 1, &sub);
         pointset *part = NULL;
@@ -1581,7 +1646,7 @@ sc_status build_nef_triangles(const build_ctx *c, const model_node *n, const cha
     *tris = NULL;
     *tri_count = 0;
     nef_plugin nef = {0};
-    walk w = {c, owner, 0, cache, &nef, 0, 0, NULL, NULL, NULL, NULL};
+    walk w = {c, owner, 0, cache, &nef, 0, 0, NULL, NULL, NULL, NULL, NULL};
     nef_solid *solid = NULL;
     affine id = affine_identity();
     sc_status st = nef_ready(&w, n);
@@ -1673,7 +1738,7 @@ sc_status build_nef_evaluate(const build_ctx *c, const model_node *n,
     build_ctx own = *c;
     own.nefs = NULL; /* each operand evaluated here, for out's flags */
     build_resize_cache *cache = NULL;
-    walk w = {&own, n->name, 0, &cache, &nef, 0, 0, NULL, n, out, NULL};
+    walk w = {&own, n->name, 0, &cache, &nef, 0, 0, NULL, n, out, NULL, NULL};
     nef_solid *solid = NULL;
     affine id = affine_identity();
     sc_status st = nef_node(&w, n, &id, 0, &solid);
@@ -1760,7 +1825,7 @@ sc_status build_hull(const build_ctx *c, const model_node *n, int emit,
 {
     memset(out, 0, sizeof *out);
     nef_plugin nef = {0};
-    walk w = {c, "hull", 0, cache, &nef, !emit, 0, NULL, NULL, NULL, NULL};
+    walk w = {c, "hull", 0, cache, &nef, !emit, 0, NULL, NULL, NULL, NULL, NULL};
     partlist parts = {NULL, 0, 0};
     affine id = affine_identity();
     sc_status st = collect(&w, n, &id, 0, &parts);
@@ -1790,7 +1855,7 @@ sc_status build_minkowski(const build_ctx *c, const model_node *n, int emit,
 {
     memset(out, 0, sizeof *out);
     nef_plugin nef = {0};
-    walk w = {c, "minkowski", 1, cache, &nef, !emit, 0, NULL, NULL, NULL, NULL};
+    walk w = {c, "minkowski", 1, cache, &nef, !emit, 0, NULL, NULL, NULL, NULL, NULL};
     partlist parts = {NULL, 0, 0};
     affine id = affine_identity();
     int not_closed;
@@ -1888,7 +1953,7 @@ static sc_status support_node(const walk *w, const model_node *n, const affine *
     if (kind == MODEL_XFORM || kind == MODEL_RESIZE) {
         affine inner;
         int ok;
-        st = inner_frame(w, n, m, depth + 1, &inner, &ok);
+        st = inner_frame(w, n, m, depth + 1, &inner, NULL, NULL, &ok);
         if (st != SC_OK || !ok)
             return st;
         return support(w, n, &inner, depth + 1, out);
@@ -2114,7 +2179,7 @@ sc_status build_resize(const build_ctx *c, const model_node *n,
                        build_resize_cache **cache, affine *out, const char **warning)
 {
     nef_plugin nef = {0};
-    walk w = {c, "resize", 0, cache, &nef, 0, 0, NULL, NULL, NULL, NULL};
+    walk w = {c, "resize", 0, cache, &nef, 0, 0, NULL, NULL, NULL, NULL, NULL};
     const model_node *measured = n->u.resize->measured ? n->u.resize->measured : n;
     sc_status st = resize_matrix(&w, measured, 0, out, warning);
     nef_plugin_close(&nef);

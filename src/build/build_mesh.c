@@ -69,6 +69,12 @@
 #include "formats/file.h"
 #include "formats/threemf.h"
 
+/* Point i of f as messages give it (f->written). */
+static vec3 shown_point(const build_mesh_faces *f, uint32_t i)
+{
+    return f->written ? f->written[i] : f->points[i];
+}
+
 /* An edge for messages: point numbers, or for a file (whose points an STL
  * does not number) the coordinates of its ends. */
 static const char *edge_name(char *buf, size_t size, const vec3 *points,
@@ -424,7 +430,7 @@ static int fans_whole(const build_mesh_faces *f, const char *what, int numbered,
             steps++;
         } while (at != lo && steps <= hi - lo);
         if (at != lo || steps != hi - lo) {
-            vec3 p = f->points[cs[lo].v];
+            vec3 p = shown_point(f, cs[lo].v);
             if (numbered && f->names)
                 snprintf(
                     why, size,
@@ -633,7 +639,7 @@ static void refusal_text(const build_mesh_faces *f, int numbered, const builder_
     static const char *const after[] = {"", " twice", " the way a face before it does",
                                         " where the faces before it close"};
     char point[96];
-    vec3 p = f->points[run->point];
+    vec3 p = shown_point(f, run->point);
     if (numbered)
         snprintf(point, sizeof point, "%u", f->names ? f->names[run->point] : run->point);
     else
@@ -762,7 +768,7 @@ static int builder_whole(const build_mesh_faces *f, const char *what, int number
         }
     } else if (unused != UINT32_MAX) {
         *openscad = build_openscad_invalid;
-        vec3 p = f->points[unused];
+        vec3 p = shown_point(f, unused);
         if (numbered && f->names)
             snprintf(why, size, "%s is invalid (no face CGAL takes uses point %u)", what,
                      f->names[unused]);
@@ -2213,6 +2219,7 @@ void build_mesh_faces_free(build_mesh_faces *f)
     free(f->face_start);
     free(f->face_loops);
     free(f->twice);
+    free(f->written);
     memset(f, 0, sizeof *f);
 }
 
@@ -2441,11 +2448,53 @@ sc_status build_mesh_merge(const build_ctx *c, const sc_location *loc, int rever
     return SC_OK;
 }
 
+sc_status build_mesh_merge_moved(const build_ctx *c, const sc_location *loc, int reversed,
+                                 const affine *moved, const vec3 *points,
+                                 uint32_t point_count, const uint32_t *indices,
+                                 const uint32_t *face_start, uint32_t face_count,
+                                 build_mesh_faces *f)
+{
+    if (!moved)
+        return build_mesh_merge(c, loc, reversed, points, point_count, indices,
+                                face_start, face_count, f);
+    memset(f, 0, sizeof *f);
+    uint32_t total = face_start[face_count];
+    int mirrored = affine_det(moved) < 0;
+    vec3 *p = malloc((size_t)(point_count ? point_count : 1) * sizeof *p);
+    uint32_t *turned =
+        mirrored ? malloc((size_t)(total ? total : 1) * sizeof *turned) : NULL;
+    sc_status st = SC_OK;
+    if (!p || (mirrored && !turned)) {
+        st = err_nomem(c->error, loc);
+    } else {
+        for (uint32_t k = 0; k < point_count; k++)
+            p[k] = affine_point(moved, points[k]);
+        for (uint32_t i = 0; mirrored && i < face_count; i++) {
+            uint32_t first = face_start[i], end = face_start[i + 1];
+            for (uint32_t k = first; k < end; k++)
+                turned[k] = indices[first + end - 1 - k];
+        }
+        st = build_mesh_merge(c, loc, reversed, p, point_count,
+                              mirrored ? turned : indices, face_start, face_count, f);
+        /* messages name the points where they are written */
+        if (st == SC_OK && f->names &&
+            !(f->written = malloc((f->point_count ? f->point_count : 1) * sizeof *p))) {
+            build_mesh_faces_free(f);
+            st = err_nomem(c->error, loc);
+        }
+        for (uint32_t k = 0; st == SC_OK && f->names && k < f->point_count; k++)
+            f->written[k] = points[f->names[k]];
+    }
+    free(p);
+    free(turned);
+    return st;
+}
+
 int build_mesh_sound(const build_mesh_faces *f, const char *what, int numbered, char *why,
                      size_t size)
 {
-    return mesh_sound(what, numbered, f->points, f->names, f->indices, f->face_start,
-                      f->face_count, why, size);
+    return mesh_sound(what, numbered, f->written ? f->written : f->points, f->names,
+                      f->indices, f->face_start, f->face_count, why, size);
 }
 
 /* Whether OpenSCAD 2021.01 loses the closed mesh f (the faces CGAL's
@@ -2519,7 +2568,7 @@ static int plane_lost(const build_mesh_faces *f, const char *what, int numbered,
     lost = ns == NEF_OK && verdict == 2;
     if (lost) {
         uint32_t p = point[where[1] < next ? where[1] : 0];
-        vec3 at_point = f->points[p];
+        vec3 at_point = shown_point(f, p);
         if (numbered && f->names)
             snprintf(why, size,
                      "%s has a face out of its plane at point %u (CGAL's assertion %s "
@@ -2613,6 +2662,7 @@ static int faces_own(build_mesh_faces *f)
     own.face_loops =
         copied(f->face_loops, ((size_t)f->face_count + 1) * sizeof *f->face_loops, &ok);
     own.twice = copied(f->twice, f->face_count * sizeof *f->twice, &ok);
+    own.written = copied(f->written, f->point_count * sizeof *f->written, &ok);
     own.lent = 0;
     if (!ok) {
         build_mesh_faces_free(&own);
@@ -4035,9 +4085,11 @@ static sc_status import_solid(const build_ctx *c, const sc_location *loc,
     prim p;
     sc_status st = SC_OK;
     int mode = c->faithful && !c->drawn_as_is; /* snapped, as build_mesh_merge */
+    if (c->moved)
+        merged = NULL; /* kept as written */
     if (!merged || !merged->faces.face_start) {
-        st = build_mesh_merge(&oc, loc, 0, points, point_count, indices, face_start,
-                              face_count, &f);
+        st = build_mesh_merge_moved(&oc, loc, 0, c->moved, points, point_count, indices,
+                                    face_start, face_count, &f);
         if (st == SC_OK && c->imports)
             c->imports->merges++;
         if (st == SC_OK && merged) { /* kept for the import's next builders */

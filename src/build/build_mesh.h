@@ -104,6 +104,9 @@ typedef struct build_mesh_faces {
     /* NULL, or for each face the point OpenSCAD's face passes through
      * twice (UINT32_MAX: none), which a null ear cleaned here may hide */
     uint32_t *twice;
+    /* NULL, or where merged point i is written, where the points have moved
+     * (build_mesh_merge_moved): messages name an import's points so */
+    vec3 *written;
     int lent; /* the arrays belong to the build's files (build_import_faces) */
 } build_mesh_faces;
 
@@ -121,6 +124,15 @@ sc_status build_mesh_merge(const build_ctx *c, const sc_location *loc, int rever
                            const vec3 *points, uint32_t point_count,
                            const uint32_t *indices, const uint32_t *face_start,
                            uint32_t face_count, build_mesh_faces *f);
+/* build_mesh_merge of the points moved by *moved (NULL: as they are),
+ * each face turned where it mirrors, as OpenSCAD 2021.01's
+ * PolySet::transform moves a mesh before a CGAL operation or the render
+ * takes it. */
+sc_status build_mesh_merge_moved(const build_ctx *c, const sc_location *loc, int reversed,
+                                 const affine *moved, const vec3 *points,
+                                 uint32_t point_count, const uint32_t *indices,
+                                 const uint32_t *face_start, uint32_t face_count,
+                                 build_mesh_faces *f);
 void build_mesh_faces_free(build_mesh_faces *f);
 
 /* Whether OpenSCAD 2021.01's is_approximately_convex takes these faces as

@@ -115,6 +115,10 @@ typedef struct pwalk {
     int corners;  /* inside a hull: only the corners of meshes matter */
     int booleans; /* differences and intersections the walk is inside */
     int solid;    /* a leaf with faces outside them: the union is not empty */
+    /* the transforms since the innermost boolean or union of several,
+     * which OpenSCAD makes a Nef polyhedron of, as build_hull.c's walk's
+     * (NULL where none lies between: the walk's own m) */
+    const affine *since;
 } pwalk;
 
 static int add_tri(soup *s, vec3 a, vec3 b, vec3 c)
@@ -283,7 +287,8 @@ static int mesh_soup(const prim *p, soup *s)
  * its Nef polyhedron cannot be made. Inside a hull, which takes only the
  * corners, a mesh is taken as it is in a cut too, as OpenSCAD hulls the
  * mesh and cuts the hull. */
-static sc_status built_soup(const pwalk *w, const model_node *n, soup *s)
+static sc_status built_soup(const pwalk *w, const model_node *n, const affine *moved,
+                            soup *s)
 {
     const build_ctx *c = w->c;
     if (n->pending)
@@ -312,10 +317,10 @@ static sc_status built_soup(const pwalk *w, const model_node *n, soup *s)
              * polyhedron (faces may use two copies of a point), as for
              * the leaf (build.c) */
             build_mesh_faces f;
-            st = build_mesh_merge(&cut, &n->loc, 1, n->u.polyhedron.points,
-                                  n->u.polyhedron.point_count, n->u.polyhedron.indices,
-                                  n->u.polyhedron.face_start, n->u.polyhedron.face_count,
-                                  &f);
+            st = build_mesh_merge_moved(
+                &cut, &n->loc, 1, moved, n->u.polyhedron.points,
+                n->u.polyhedron.point_count, n->u.polyhedron.indices,
+                n->u.polyhedron.face_start, n->u.polyhedron.face_count, &f);
             if (st == SC_OK && f.face_count)
                 st = build_mesh_solid(&cut, &n->loc, "polyhedron", 1, c->strict, &f, &p,
                                       &empty);
@@ -329,10 +334,13 @@ static sc_status built_soup(const pwalk *w, const model_node *n, soup *s)
                              n->u.polyhedron.face_start, n->u.polyhedron.face_count, &p,
                              &empty);
         break;
-    case MODEL_IMPORT:
-        st = solid ? build_import(c, n->u.import, &p, &empty)
+    case MODEL_IMPORT: {
+        build_ctx ic = *c;
+        ic.moved = moved;
+        st = solid ? build_import(&ic, n->u.import, &p, &empty)
                    : build_import_mesh(c, n->u.import, &p, &empty);
         break;
+    }
     case MODEL_SURFACE:
         st = build_surface(c, n->u.surface, &p, &empty);
         break;
@@ -348,7 +356,8 @@ static sc_status built_soup(const pwalk *w, const model_node *n, soup *s)
     return mesh_soup(&p, s) ? SC_OK : err_nomem(c->error, &n->loc);
 }
 
-static sc_status leaf_soup(pwalk *w, const model_node *n, soup *s, int depth);
+static sc_status leaf_soup(pwalk *w, const model_node *n, const affine *moved, soup *s,
+                           int depth);
 static sc_status background(pwalk *w, const model_node *k, const affine *m, int depth);
 
 /* resize node n's scale (build_resize) from the box of the meshes the
@@ -432,7 +441,7 @@ static sc_status hull_points(pwalk *w, const model_node *parent, const affine *m
             }
         } else {
             soup s = {NULL, 0, 0, 0};
-            st = leaf_soup(w, n, &s, depth + 1);
+            st = leaf_soup(w, n, NULL, &s, depth + 1);
             for (uint32_t i = 0; st == SC_OK && i < 3 * s.count; i += 3) {
                 if (!add_tri(pts, affine_point(m, s.v[i]), affine_point(m, s.v[i + 1]),
                              affine_point(m, s.v[i + 2])))
@@ -502,9 +511,11 @@ static sc_status nef_soup(pwalk *w, const model_node *n, soup *s)
     return st;
 }
 
-/* The soup of leaf n in its own frame; SC_ERR_UNSUPPORTED for leaves
- * without an OpenSCAD mesh. */
-static sc_status leaf_soup(pwalk *w, const model_node *n, soup *s, int depth)
+/* The soup of leaf n in its own frame (or, for a polyhedron or import a
+ * cut takes, where moved takes it: built_soup; moved NULL for none);
+ * SC_ERR_UNSUPPORTED for leaves without an OpenSCAD mesh. */
+static sc_status leaf_soup(pwalk *w, const model_node *n, const affine *moved, soup *s,
+                           int depth)
 {
     const build_ctx *c = w->c;
     switch (n->kind) {
@@ -521,7 +532,7 @@ static sc_status leaf_soup(pwalk *w, const model_node *n, soup *s, int depth)
     case MODEL_SURFACE:
     case MODEL_LINEAR_EXTRUDE:
     case MODEL_ROTATE_EXTRUDE:
-        return built_soup(w, n, s);
+        return built_soup(w, n, moved, s);
     case MODEL_HULL:
         return hull_soup(w, n, s, depth);
     case MODEL_DIFFERENCE:
@@ -859,7 +870,17 @@ static sc_status leaf(pwalk *w, const model_node *n, const affine *m, int depth,
                       twod_region *out)
 {
     soup s = {NULL, 0, 0, 0};
-    sc_status st = leaf_soup(w, n, &s, depth);
+    /* a polyhedron or import the cut takes: split and checked where it
+     * has moved to, as OpenSCAD makes its Nef polyhedron there (w->since) */
+    const affine *since = NULL;
+    affine rest = *m, undo;
+    if ((n->kind == MODEL_POLYHEDRON || n->kind == MODEL_IMPORT) && w->cut &&
+        !w->corners && affine_invert(w->since ? w->since : m, &undo)) {
+        since = w->since ? w->since : m;
+        rest = w->since ? affine_mul(m, &undo) : affine_identity();
+    }
+    m = &rest;
+    sc_status st = leaf_soup(w, n, since, &s, depth);
     w->solid |= s.count && !w->booleans;
     if (st == SC_OK && s.count) {
         int flip = affine_det(m) < 0;
@@ -998,6 +1019,9 @@ static sc_status boolean(pwalk *w, const model_node *n, const affine *m, int dep
     return st;
 }
 
+static sc_status walk_moved(pwalk *w, const model_node *n, const affine *m, int depth,
+                            twod_region *out);
+
 static sc_status walk_node(pwalk *w, const model_node *n, const affine *m, int depth,
                            twod_region *out)
 {
@@ -1011,6 +1035,22 @@ static sc_status walk_node(pwalk *w, const model_node *n, const affine *m, int d
         return build_pending(c, n);
     if (flat(n) || kind == MODEL_PROJECTION) /* its parent warns (walk_children) */
         return build_twod_check(c, n, NULL);
+    const affine *since = w->since;
+    sc_status st = walk_moved(w, n, m, depth, out);
+    w->since = since;
+    return st;
+}
+
+/* walk_node, with w->since as n leaves it for its children. */
+static sc_status walk_moved(pwalk *w, const model_node *n, const affine *m, int depth,
+                            twod_region *out)
+{
+    static const affine unmoved = {{{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}}};
+    const build_ctx *c = w->c;
+    model_kind kind = n->kind;
+    affine since;
+    if (build_hull_solids(n) > 1)
+        w->since = &unmoved; /* OpenSCAD's Nef polyhedron of them */
     switch (kind) {
     case MODEL_UNION:
     case MODEL_COLOR:
@@ -1041,6 +1081,10 @@ static sc_status walk_node(pwalk *w, const model_node *n, const affine *m, int d
         affine inner = affine_mul(m, &local), inverse;
         if (st != SC_OK || !affine_invert(&inner, &inverse))
             return st; /* singular: no geometry */
+        if (w->since && build_hull_solids(n) <= 1) {
+            since = affine_mul(w->since, &local);
+            w->since = &since;
+        }
         return walk_children(w, n, &inner, depth, out);
     }
     case MODEL_DIFFERENCE:
@@ -1063,7 +1107,7 @@ sc_status build_projection(const build_ctx *c, const model_node *n, twod_region 
     twod_clear(out);
     if (n->pending)
         return build_pending(c, n);
-    pwalk w = {c, n, n->u.projection.cut, NULL, 0, 0, 0};
+    pwalk w = {c, n, n->u.projection.cut, NULL, 0, 0, 0, NULL};
     affine id = affine_identity();
     sc_status st = walk_children(&w, n, &id, 0, out);
     if (st == SC_OK)
