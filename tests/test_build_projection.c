@@ -188,6 +188,36 @@ static void test_cut(void **state)
 
 /* Faces and vertices in the plane z = 0, as OpenSCAD 2021.01 computes
  * them (its results for these models, exported as SVG: docs/extrusions.md). */
+/* OpenSCAD 2021.01 cuts a Nef polyhedron made of the mesh snapped to its
+ * grid of 2^-20 where the transforms below the cut have moved it
+ * (PolySet::quantizeVertices), and hands the section on exactly, not
+ * through Clipper's grid of 2^-16: each corner of the section of a box
+ * 0.1 wide at 0.3 is a corner of a 2^-20 cell, truncated toward zero. */
+static void test_cut_off_grid(void **state)
+{
+    (void)state;
+    twod_region r;
+    char message[1024];
+    const char *text = "group() { projection(cut = true) { multmatrix([[1, 0, 0, 0.3], "
+                       "[0, 1, 0, -0.3], [0, 0, 1, -0.5], [0, 0, 0, 1]]) { cube(size = "
+                       "[0.1, 0.1, 1], center = false); } } }";
+    if (region_of(text, &r, message, sizeof message, NULL, 0) != SC_OK)
+        fail_msg("unexpected error: %s", message);
+    const double fine = 1048576.0; /* 2^20 */
+    double xs[2] = {trunc(0.3 * fine) / fine, trunc((0.3 + 0.1) * fine) / fine};
+    double ys[2] = {trunc(-0.3 * fine) / fine, trunc((-0.3 + 0.1) * fine) / fine};
+    assert_int_equal(r.contour_count, 1);
+    assert_int_equal(r.point_count, 4);
+    for (uint32_t i = 0; i < r.point_count; i++) {
+        double x = r.xy[2 * i], y = r.xy[2 * i + 1];
+        assert_true(x == xs[0] || x == xs[1]);
+        assert_true(y == ys[0] || y == ys[1]);
+    }
+    assert_true(fabs(twod_area(&r) - (xs[1] - xs[0]) * (ys[1] - ys[0])) <= 1e-18);
+    assert_int_equal(r.sanitized, 0);
+    twod_free(&r);
+}
+
 static void test_cut_in_plane(void **state)
 {
     (void)state;
@@ -540,6 +570,7 @@ int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_cut),
+        cmocka_unit_test(test_cut_off_grid),
         cmocka_unit_test(test_cut_in_plane),
         cmocka_unit_test(test_outline),
         cmocka_unit_test(test_2d_child),

@@ -843,6 +843,27 @@ static sc_status add_error(const pwalk *w, const twod_region *r)
     return build_twod_add_error(w->c, w->proj, r);
 }
 
+/* The union of a cut's oriented loops in r (node n's), in place, off the
+ * clipper's grid: OpenSCAD 2021.01 cuts its Nef polyhedron exactly and
+ * hands on the section's points as they are (CGALUtils::project), not
+ * passed through the clipper (the region is not sanitized), so each
+ * corner the union keeps takes back the point it had
+ * (twod_restore_points); where the union crosses two loops, the crossing
+ * stays on the grid. */
+static sc_status exact_union(const pwalk *w, const model_node *n, twod_region *r)
+{
+    twod_region from;
+    twod_init(&from);
+    sc_status st = append(&from, r) ? SC_OK : add_error(w, r);
+    if (st == SC_OK)
+        st = clip_error(w, n, twod_clip_union_nonzero(r, 0), r);
+    if (st == SC_OK && !twod_restore_points(r, &from))
+        st = err_nomem(w->c->error, &n->loc);
+    r->sanitized = 0;
+    twod_free(&from);
+    return st;
+}
+
 /* Adds contour copies of src to dst. */
 static int append(twod_region *dst, const twod_region *src)
 {
@@ -865,22 +886,65 @@ static int convex_leaf(model_kind kind)
            kind == MODEL_HULL;
 }
 
+/* Moves soup s by since and snaps its points to OpenSCAD's grid as
+ * build_mesh_merge snaps a mesh CGAL takes (PolySet::quantizeVertices, in
+ * createNefPolyhedronFromGeometry), triangles left without area dropped:
+ * a shape's, an extrusion's or a hull's mesh where a cut takes it. */
+static sc_status snap_soup(const pwalk *w, const model_node *n, const affine *since,
+                           soup *s)
+{
+    build_ctx cut = *w->c;
+    cut.faithful = 1;
+    cut.drawn_as_is = 0;
+    uint32_t corners = 3 * s->count;
+    uint32_t *indices = malloc((size_t)corners * sizeof *indices);
+    uint32_t *start = malloc(((size_t)s->count + 1) * sizeof *start);
+    sc_status st = indices && start ? SC_OK : err_nomem(w->c->error, &n->loc);
+    build_mesh_faces f;
+    memset(&f, 0, sizeof f);
+    for (uint32_t i = 0; st == SC_OK && i < corners; i++)
+        indices[i] = i;
+    for (uint32_t t = 0; st == SC_OK && t <= s->count; t++)
+        start[t] = 3 * t;
+    if (st == SC_OK)
+        st = build_mesh_merge_moved(&cut, &n->loc, 0, since, s->v, corners, indices,
+                                    start, s->count, &f);
+    if (st == SC_OK) {
+        s->count = 0;
+        for (uint32_t t = 0; t < f.face_count; t++) {
+            const uint32_t *k = &f.indices[f.face_start[t]];
+            if (f.face_start[t + 1] - f.face_start[t] == 3 &&
+                !add_tri(s, f.points[k[0]], f.points[k[1]], f.points[k[2]])) {
+                st = err_nomem(w->c->error, &n->loc);
+                break;
+            }
+        }
+    }
+    build_mesh_faces_free(&f);
+    free(indices);
+    free(start);
+    return st;
+}
+
 /* Adds leaf n's loops (cut) or projected faces to out. */
 static sc_status leaf(pwalk *w, const model_node *n, const affine *m, int depth,
                       twod_region *out)
 {
     soup s = {NULL, 0, 0, 0};
-    /* a polyhedron or import the cut takes: split and checked where it
-     * has moved to, as OpenSCAD makes its Nef polyhedron there (w->since) */
+    /* a leaf the cut takes: OpenSCAD makes its Nef polyhedron where its
+     * points have moved to (w->since), snapped there; a polyhedron or
+     * import is also split and checked there (built_soup) */
     const affine *since = NULL;
     affine rest = *m, undo;
-    if ((n->kind == MODEL_POLYHEDRON || n->kind == MODEL_IMPORT) && w->cut &&
-        !w->corners && affine_invert(w->since ? w->since : m, &undo)) {
+    if (w->cut && !w->corners && affine_invert(w->since ? w->since : m, &undo)) {
         since = w->since ? w->since : m;
         rest = w->since ? affine_mul(m, &undo) : affine_identity();
     }
     m = &rest;
-    sc_status st = leaf_soup(w, n, since, &s, depth);
+    int meshed = n->kind == MODEL_POLYHEDRON || n->kind == MODEL_IMPORT;
+    sc_status st = leaf_soup(w, n, meshed ? since : NULL, &s, depth);
+    if (st == SC_OK && since && !meshed && s.count)
+        st = snap_soup(w, n, since, &s);
     w->solid |= s.count && !w->booleans;
     if (st == SC_OK && s.count) {
         int flip = affine_det(m) < 0;
@@ -980,6 +1044,8 @@ static sc_status boolean(pwalk *w, const model_node *n, const affine *m, int dep
         return SC_OK;
     twod_region *parts = calloc(count, sizeof *parts);
     twod_region **list = calloc(count, sizeof *list);
+    twod_region from; /* the parts' loops, before the clipper's grid */
+    twod_init(&from);
     sc_status st = parts && list ? SC_OK : err_nomem(w->c->error, &n->loc);
     uint32_t i = 0;
     const model_node *mixing = NULL; /* the first 2D child that is not empty */
@@ -999,6 +1065,8 @@ static sc_status boolean(pwalk *w, const model_node *n, const affine *m, int dep
         list[i++] = part;
         twod_init(part);
         st = walk_node(w, k, m, depth + 1, part);
+        if (st == SC_OK && !append(&from, part))
+            st = add_error(w, part);
         if (st == SC_OK)
             st = clip_error(w, k, twod_clip_union_nonzero(part, 0), part);
     }
@@ -1009,6 +1077,11 @@ static sc_status boolean(pwalk *w, const model_node *n, const affine *m, int dep
     twod_init(&result);
     if (st == SC_OK)
         st = clip_error(w, n, twod_clip_apply(list, count, op, &result), &result);
+    /* OpenSCAD's boolean of Nef polyhedra is exact: the corners kept take
+     * back their points (exact_union) */
+    if (st == SC_OK && !twod_restore_points(&result, &from))
+        st = err_nomem(w->c->error, &n->loc);
+    twod_free(&from);
     if (st == SC_OK && !append(out, &result))
         st = add_error(w, out);
     twod_free(&result);
@@ -1110,8 +1183,10 @@ sc_status build_projection(const build_ctx *c, const model_node *n, twod_region 
     pwalk w = {c, n, n->u.projection.cut, NULL, 0, 0, 0, NULL};
     affine id = affine_identity();
     sc_status st = walk_children(&w, n, &id, 0, out);
-    if (st == SC_OK)
-        st = clip_error(&w, n, twod_clip_union_nonzero(out, w.cut ? 0 : 2), out);
+    if (st == SC_OK && w.cut)
+        st = exact_union(&w, n, out);
+    else if (st == SC_OK)
+        st = clip_error(&w, n, twod_clip_union_nonzero(out, 2), out);
     /* a solid that z = 0 misses: OpenSCAD's warning (CGALUtils::project),
      * said where the union of the children is known not to be empty */
     if (st == SC_OK && w.cut && w.solid && !out->contour_count && c->notes)

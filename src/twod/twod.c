@@ -28,6 +28,56 @@ static int64_t clipper_coord(double v)
     return (int64_t)d;
 }
 
+/* A point of a region and its place on the clipper's grid. */
+typedef struct grid_point {
+    int64_t gx, gy;
+    double x, y;
+} grid_point;
+
+static int grid_point_cmp(const void *a, const void *b)
+{
+    const grid_point *p = a, *q = b;
+    if (p->gx != q->gx)
+        return p->gx < q->gx ? -1 : 1;
+    if (p->gy != q->gy)
+        return p->gy < q->gy ? -1 : 1;
+    if (p->x != q->x)
+        return p->x < q->x ? -1 : 1;
+    return (p->y > q->y) - (p->y < q->y);
+}
+
+int twod_restore_points(twod_region *r, const twod_region *from)
+{
+    uint32_t n = from->point_count;
+    if (!n || !r->point_count)
+        return 1;
+    grid_point *sorted = malloc((size_t)n * sizeof *sorted);
+    if (!sorted)
+        return 0;
+    for (uint32_t i = 0; i < n; i++) {
+        double x = from->xy[2 * i], y = from->xy[2 * i + 1];
+        sorted[i] = (grid_point){clipper_coord(x), clipper_coord(y), x, y};
+    }
+    qsort(sorted, n, sizeof *sorted, grid_point_cmp);
+    for (uint32_t i = 0; i < r->point_count; i++) {
+        int64_t gx = clipper_coord(r->xy[2 * i]), gy = clipper_coord(r->xy[2 * i + 1]);
+        uint32_t lo = 0, hi = n; /* the first of sorted at or past (gx, gy) */
+        while (lo < hi) {
+            uint32_t mid = lo + (hi - lo) / 2;
+            if (sorted[mid].gx < gx || (sorted[mid].gx == gx && sorted[mid].gy < gy))
+                lo = mid + 1;
+            else
+                hi = mid;
+        }
+        if (lo < n && sorted[lo].gx == gx && sorted[lo].gy == gy) {
+            r->xy[2 * i] = sorted[lo].x;
+            r->xy[2 * i + 1] = sorted[lo].y;
+        }
+    }
+    free(sorted);
+    return 1;
+}
+
 /* Clipper 6.4's RangeTest: past hiRange (2^62 - 1) in magnitude throws.
  * Its test of -X > hiRange is compiled as X < -hiRange, so INT64_MIN (any
  * coordinate past the conversion's range) throws too: OpenSCAD 2021.01

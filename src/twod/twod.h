@@ -85,6 +85,13 @@ int twod_clipper_outline(const double *xy, const uint32_t *index, uint32_t n,
  * Returns the refused outline's number + 1, 0 when none, -1 when memory
  * runs out (r unchanged). */
 long twod_clipper_admit(twod_region *r);
+/* Puts back on r's points the coordinates they had in from, before the
+ * clipper's grid took them: each point of r on a grid point where a point
+ * of from lies (the first such, in x then y order) takes that point's
+ * coordinates; the points the clipper made (crossings) stay. For a result
+ * OpenSCAD makes without the clipper (the exact section of
+ * projection(cut = true)). 0 when memory runs out (r unchanged). */
+int twod_restore_points(twod_region *r, const twod_region *from);
 /* Moves src into dst (dst freed first); src is left empty. */
 void twod_move(twod_region *dst, twod_region *src);
 /* out = the convex hull of count points (xy, 2 per point): one
