@@ -704,9 +704,9 @@ static int up_faces(const soup *s, int open, twod_region *out)
     vec3 *normal = malloc((size_t)(n ? n : 1) * sizeof *normal);
     uint32_t *parent = malloc((size_t)(n ? n : 1) * sizeof *parent);
     build_mesh_keyed *corners = malloc((size_t)(n ? n : 1) * 3 * sizeof *corners);
-    uint32_t *reps = malloc((size_t)(n ? n : 1) * sizeof *reps);
+    uint32_t *next = malloc((size_t)(n ? n : 1) * sizeof *next);
     unsigned char *mixed = calloc(n ? n : 1, 1);
-    int ok = normal && parent && corners && reps && mixed;
+    int ok = normal && parent && corners && next && mixed;
     for (uint32_t t = 0; ok && t < n; t++) {
         const vec3 *v = &s->v[3 * t];
         normal[t] = v3_normalize(v3_cross(v3_sub(v[1], v[0]), v3_sub(v[2], v[0])));
@@ -716,26 +716,39 @@ static int up_faces(const soup *s, int open, twod_region *out)
     }
     if (ok)
         qsort(corners, 3 * (size_t)n, sizeof *corners, build_mesh_keyed_cmp);
-    /* at each corner, each triangle joins the first one before it in its
-     * plane */
+    /* at each corner, each triangle joins one in its plane: the
+     * triangles about it sorted by their normal turned up (x, then the
+     * number), each compared with those before it whose x is within the
+     * tolerance's angle (|dot| >= 1 - 1e-9 is within 4.5e-5 radians), so
+     * that the many planes about a cone's apex are not compared pairwise */
+    build_mesh_keyed *about = ok ? malloc((size_t)(n ? n : 1) * sizeof *about) : NULL;
+    ok = ok && about;
     for (size_t i = 0; ok && i < 3 * (size_t)n;) {
-        size_t j = i, count = 0;
+        size_t j = i;
+        uint32_t count = 0;
         for (; j < 3 * (size_t)n && corners[j].p.x == corners[i].p.x &&
                corners[j].p.y == corners[i].p.y && corners[j].p.z == corners[i].p.z;
              j++) {
             uint32_t t = corners[j].index;
-            if (!(fabs(normal[t].z) > 0))
-                continue; /* upright: projects to nothing */
-            size_t r = 0;
-            while (r < count && !(fabs(v3_dot(normal[reps[r]], normal[t])) >= 1 - 1e-9))
-                r++;
-            if (r == count)
-                reps[count++] = t;
-            else
-                parent[build_mesh_piece(parent, t)] = build_mesh_piece(parent, reps[r]);
+            if (fabs(normal[t].z) > 0) /* upright: projects to nothing */
+                about[count++] = (build_mesh_keyed){
+                    normal[t].z > 0 ? normal[t] : v3_scale(normal[t], -1), t};
+        }
+        if (count > 1)
+            qsort(about, count, sizeof *about, build_mesh_keyed_cmp);
+        for (uint32_t a = 1; a < count; a++) {
+            uint32_t t = about[a].index;
+            for (uint32_t b = a; b-- > 0 && about[a].p.x - about[b].p.x <= 1e-4;) {
+                if (fabs(v3_dot(normal[about[b].index], normal[t])) >= 1 - 1e-9) {
+                    parent[build_mesh_piece(parent, t)] =
+                        build_mesh_piece(parent, about[b].index);
+                    break;
+                }
+            }
         }
         i = j;
     }
+    free(about);
     /* a group with a triangle wound back (its normal down where another's
      * is up) */
     for (uint32_t t = 0; ok && t < n; t++) {
@@ -749,8 +762,7 @@ static int up_faces(const soup *s, int open, twod_region *out)
             ok = add_triangle(out, (vec3[3]){v[0], normal[t].z > 0 ? v[1] : v[2],
                                              normal[t].z > 0 ? v[2] : v[1]});
     }
-    /* the mixed groups' triangles, listed from each root (reps reused) */
-    uint32_t *next = reps;
+    /* the mixed groups' triangles, listed from each root */
     for (uint32_t t = 0; ok && t < n; t++)
         next[t] = UINT32_MAX;
     for (uint32_t t = n; ok && t-- > 0;) {
@@ -782,7 +794,7 @@ static int up_faces(const soup *s, int open, twod_region *out)
     free(normal);
     free(parent);
     free(corners);
-    free(reps);
+    free(next);
     free(mixed);
     return ok;
 }
