@@ -426,6 +426,19 @@ union() {
 }
 CSG
 done
+# The box as written beside a child that is no solid, which OpenSCAD's
+# union leaves out (applyToChildren3D's actual children): an empty cube, a
+# 2D square. The union has one solid, which it passes on as it is: no CGAL
+# operation takes the box, and it is drawn.
+for other in "empty cube(size = [0, 1, 1], center = false);" \
+    "2d square(size = [1, 1], center = false);"; do
+    cat >"box-${other%% *}.csg" <<CSG
+union() {
+	polyhedron(points = $box_points, faces = $box_faces, convexity = 1);
+	${other#* }
+}
+CSG
+done
 # The same cube in a difference under hull(): OpenSCAD makes a Nef
 # polyhedron of the difference's operands, and the hull is empty. (A
 # minkowski() of it alone takes it as convex, on its whole faces.)
@@ -516,6 +529,8 @@ builder_cases=(
     "box-lost.csg|2.5,2.5,1|out|box-lost.csg:3:3: warning: polyhedron has a face out of its plane at point 4 (CGAL's assertion ss_circle.has_on(sp_0) fails there, and OpenSCAD does not triangulate and try again); left out, as OpenSCAD leaves it out (\"$assertion\")|^ERROR: $assertion"
     "box-turned.csg|-2.5,2.5,1|in||"
     "box-mirrored.csg|2.5,-2.5,1|in||"
+    "box-empty.csg|2.5,2.5,1|in|box-empty.csg:3:2: warning: cube with a zero, negative or non-finite size is empty|"
+    "box-2d.csg|2.5,2.5,1|in|box-2d.csg:3:2: warning: Mixing 2D and 3D objects is not supported|"
     "plane-hull.csg|0.5,0.5,0.5|out|plane-hull.csg:3:3: warning: polyhedron has a face out of its plane at point 1 (CGAL's assertion ss_circle.has_on(sp_0) fails there, and OpenSCAD does not triangulate and try again); left out, as OpenSCAD leaves it out (\"$assertion\")|^ERROR: $assertion"
     "plane-mink.csg|0.95,0.1,0.5|in||"
     "plane-off.csg|0.5,0.5,0.5|out|plane-off.csg:2:16: warning: imported mesh has a face out of its plane at (0, 0, 1) (CGAL's assertion ss_circle.has_on(sp_0) fails there, and OpenSCAD does not triangulate and try again); left out, as OpenSCAD leaves it out (\"$assertion\")|^ERROR: $assertion"

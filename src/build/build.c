@@ -376,6 +376,32 @@ static int positive_finite(double x)
 
 /* ---- leaves ---- */
 
+/* Whether shape n is empty whatever its context, as OpenSCAD 2021.01
+ * makes it (its builder warns): a cube, sphere or cylinder of a zero,
+ * negative or non-finite size, a cylinder of two zero radii, a
+ * polyhedron without faces. */
+static int empty_shape(const model_node *n)
+{
+    if (n->pending)
+        return 0;
+    switch (n->kind) {
+    case MODEL_CUBE:
+        return !positive_finite(n->u.cube.size[0]) ||
+               !positive_finite(n->u.cube.size[1]) || !positive_finite(n->u.cube.size[2]);
+    case MODEL_SPHERE:
+        return !positive_finite(n->u.sphere.r);
+    case MODEL_CYLINDER: {
+        double r1 = n->u.cylinder.r1, r2 = n->u.cylinder.r2;
+        return !positive_finite(n->u.cylinder.h) || !(r1 >= 0 && r2 >= 0) ||
+               !isfinite(r1) || !isfinite(r2) || (r1 == 0 && r2 == 0);
+    }
+    case MODEL_POLYHEDRON:
+        return n->u.polyhedron.face_count == 0;
+    default:
+        return 0;
+    }
+}
+
 static sc_status add_leaf(builder *b, const model_node *n, const prim *p,
                           const frame *state, uint32_t *id)
 {
@@ -404,8 +430,7 @@ static sc_status build_cube(builder *b, const model_node *n, const frame *state,
     int center = n->u.cube.center;
     if (!state->emit)
         return SC_OK;
-    if (!positive_finite(size[0]) || !positive_finite(size[1]) ||
-        !positive_finite(size[2]))
+    if (empty_shape(n))
         return warn(b, &n->loc, "cube with a zero, negative or non-finite size is empty");
     prim p;
     memset(&p, 0, sizeof p);
@@ -443,7 +468,7 @@ static sc_status build_sphere(builder *b, const model_node *n, const frame *stat
     double r = n->u.sphere.r;
     if (!state->emit)
         return SC_OK;
-    if (!positive_finite(r))
+    if (empty_shape(n))
         return warn(b, &n->loc,
                     "sphere with a zero, negative or non-finite radius is empty");
     prim p;
@@ -474,12 +499,11 @@ static sc_status build_cylinder(builder *b, const model_node *n, const frame *st
     int center = n->u.cylinder.center;
     if (!state->emit)
         return SC_OK;
-    if (!positive_finite(h))
+    if (empty_shape(n))
         return warn(b, &n->loc,
-                    "cylinder with a zero, negative or non-finite height is empty");
-    if (!(r1 >= 0 && r2 >= 0) || !isfinite(r1) || !isfinite(r2) || (r1 == 0 && r2 == 0))
-        return warn(b, &n->loc,
-                    "cylinder with negative, non-finite or two zero radii is empty");
+                    positive_finite(h)
+                        ? "cylinder with negative, non-finite or two zero radii is empty"
+                        : "cylinder with a zero, negative or non-finite height is empty");
     prim p;
     memset(&p, 0, sizeof p);
     p.kind = PRIM_CYLINDER;
@@ -1201,12 +1225,6 @@ static sc_status mark_operands(builder *b, const model_node *n, const frame *f)
     return st;
 }
 
-/* Whether OpenSCAD 2021.01's render hands the results of the nodes first
- * (a list of siblings) to CGAL: where two or more of them are operands,
- * not '%' (its applyToChildren3D is a no-op for one): a render() unites
- * its children so too, and takes one child's mesh as it is. A mesh that
- * is not closed is left out where its result meets CGAL, and drawn as it
- * is where nothing hands it to CGAL. */
 /* A minkowski() of one solid, which OpenSCAD 2021.01 passes through as it
  * is (applyToChildren3D: no sum, no CGAL): built as a group of it. */
 static int lone_minkowski(const model_node *n)
@@ -1214,11 +1232,23 @@ static int lone_minkowski(const model_node *n)
     return n->kind == MODEL_MINKOWSKI && build_hull_solids(n) == 1;
 }
 
-static int to_cgal(const model_node *first)
+/* Whether OpenSCAD 2021.01's render hands the results of the nodes first
+ * (a list of siblings, the children of an operation of this kind) to
+ * CGAL: where two or more of them are operands (its applyToChildren3D is
+ * a no-op for one), not '%'. A union (a group, transform, colour, render
+ * or minkowski) counts the solids only, as it leaves out the empty ones
+ * (a 2D child, nothing below it, an empty shape); a difference or an
+ * intersection counts every child. A render() unites its children so
+ * too, and takes one child's mesh as it is. A mesh that is not closed is
+ * left out where its result meets CGAL, and drawn as it is where nothing
+ * hands it to CGAL. */
+static int to_cgal(model_kind kind, const model_node *first)
 {
     int operands = 0;
+    int every = kind == MODEL_DIFFERENCE || kind == MODEL_INTERSECTION;
     for (const model_node *c = first; c; c = c->next)
-        operands += !(c->modifiers & (MODEL_MOD_BACKGROUND | MODEL_MOD_DISABLE));
+        operands += !(c->modifiers & (MODEL_MOD_BACKGROUND | MODEL_MOD_DISABLE)) &&
+                    (every || (build_dim(c, 0) == 3 && !empty_shape(c)));
     return operands > 1;
 }
 
@@ -1253,8 +1283,8 @@ static void inherit(const builder *b, const model_node *n, const frame *parent, 
     f->counted = f->emit;
     f->children_lost = parent->children_lost && n->child_count == 1 && !n->is_root;
     /* a leaf's children (an extrusion's 2D ones) are united by Clipper */
-    int operation =
-        (!model_is_leaf(n->kind) || lone_minkowski(n)) && to_cgal(n->first_child);
+    int operation = (!model_is_leaf(n->kind) || lone_minkowski(n)) &&
+                    to_cgal(n->kind, n->first_child);
     f->cgal = (!n->is_root && parent->cgal) || operation;
     if (n->is_root || operation) {
         f->since_cgal = affine_identity();
@@ -1267,7 +1297,7 @@ static void inherit(const builder *b, const model_node *n, const frame *parent, 
 static void transform_frame(const model_node *n, frame *f, const affine *m)
 {
     f->to_world = affine_mul(&f->to_world, m);
-    if (!model_is_leaf(n->kind) && to_cgal(n->first_child))
+    if (!model_is_leaf(n->kind) && to_cgal(n->kind, n->first_child))
         f->cgal_world = f->to_world;
     else
         f->since_cgal = affine_mul(&f->since_cgal, m);
@@ -1538,7 +1568,7 @@ static sc_status walk(builder *b, uint32_t *root)
     top.to_world = affine_identity();
     top.since_cgal = top.to_world;
     top.cgal_world = top.to_world;
-    top.cgal = to_cgal(b->model->first);
+    top.cgal = to_cgal(MODEL_UNION, b->model->first);
     memcpy(top.color, default_color, sizeof top.color);
     sc_status st = push_frame(b, &top);
     if (st == SC_OK && !b->preview && !b->model->has_root &&
