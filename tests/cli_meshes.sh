@@ -439,6 +439,18 @@ union() {
 }
 CSG
 done
+# A cube a tenth wide at x = 0.3 in a difference: OpenSCAD snaps its
+# corners to its grid of 2^-20 where the translation puts them, before
+# CGAL takes them, so the box runs from trunc(0.3 * 2^20) / 2^20 =
+# 0.29999924 to 0.39999962, and up to 0.09999943.
+cat >snapped.csg <<CSG
+difference() {
+	multmatrix([[1, 0, 0, 0.3], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]) {
+		cube(size = [0.1, 0.1, 0.1], center = false);
+	}
+	$far
+}
+CSG
 # The same cube in a difference under hull(): OpenSCAD makes a Nef
 # polyhedron of the difference's operands, and the hull is empty. (A
 # minkowski() of it alone takes it as convex, on its whole faces.)
@@ -529,6 +541,10 @@ builder_cases=(
     "box-lost.csg|2.5,2.5,1|out|box-lost.csg:3:3: warning: polyhedron has a face out of its plane at point 4 (CGAL's assertion ss_circle.has_on(sp_0) fails there, and OpenSCAD does not triangulate and try again); left out, as OpenSCAD leaves it out (\"$assertion\")|^ERROR: $assertion"
     "box-turned.csg|-2.5,2.5,1|in||"
     "box-mirrored.csg|2.5,-2.5,1|in||"
+    "snapped.csg|0.2999995,0.05,0.05|in||"
+    "snapped.csg|0.3999998,0.05,0.05|out||"
+    "snapped.csg|0.35,0.05,0.0999997|out||"
+    "snapped.csg|0.35,0.05,0.0999993|in||"
     "box-empty.csg|2.5,2.5,1|in|box-empty.csg:3:2: warning: cube with a zero, negative or non-finite size is empty|"
     "box-2d.csg|2.5,2.5,1|in|box-2d.csg:3:2: warning: Mixing 2D and 3D objects is not supported|"
     "plane-hull.csg|0.5,0.5,0.5|out|plane-hull.csg:3:3: warning: polyhedron has a face out of its plane at point 1 (CGAL's assertion ss_circle.has_on(sp_0) fails there, and OpenSCAD does not triangulate and try again); left out, as OpenSCAD leaves it out (\"$assertion\")|^ERROR: $assertion"

@@ -184,8 +184,10 @@ done < <(echo "$names" | sed "s/', '/\n/g; s/^'//; s/'$//")
 # drawn. A colour with a negative component (color(alpha = 0.5)) is not
 # set, and its negative components are the face colour's. A mesh that is
 # not closed is drawn, as OpenCSG takes any mesh, though --faithful leaves
-# it out of the render's union. Each scene is
-# converted by OpenSCAD and compared with its own preview image.
+# it out of the render's union. A polyhedron with a quad out of its plane,
+# turned, in a union is drawn as written: OpenCSG splits the quad its own
+# way, where the render splits it as CGAL takes it, after the turn. Each
+# scene is converted by OpenSCAD and compared with its own preview image.
 scenes=(
     'difference() { cube(20, center = true); #cylinder(r = 5, h = 30, center = true); }'
     'cube(5); %translate([8, 0, 0]) cube(5);'
@@ -198,6 +200,7 @@ scenes=(
     'intersection() { #cube(10); sphere(7); } translate([15, 0, 0]) cube(5);'
     'translate([0, 0, 0]) { #cube(5); } sphere(2);'
     'cube(1); %translate([0, 8, 0]) #cube(4);'
+    'rotate([0, 0, 90]) polyhedron(points = [[0, 0, 0], [6, 0, 0], [6, 4, 0], [0, 4, 0], [0, 0, 4], [6, 0, 3], [6, 4, 3], [0, 4, 3]], faces = [[0, 1, 2, 3], [4, 5, 1, 0], [7, 6, 5, 4], [5, 6, 2, 1], [6, 7, 3, 2], [7, 4, 0, 3]]); translate([2, 2, 0]) cube(1);'
     '%union() { cube(5); #translate([6, 0, 0]) cube(3); } sphere(2);'
     '#cube(5); #translate([8, 0, 0]) cube(5);'
     '%#cube(10);'

@@ -165,6 +165,10 @@ typedef struct builder {
                             extrusions), which the main walk left out of a
                             CGAL operation in faithful mode and OpenSCAD's
                             preview draws as they are */
+    size_t cgal_built;   /* leaves the main walk built as OpenSCAD's CGAL
+                            takes them (a mesh in a CGAL operation: moved,
+                            snapped, split on libtess2's diagonals; a shape
+                            snapped), which its preview draws as written */
     uint32_t leaves;     /* leaves added so far: the next one's object_id */
     /* the preview's walk: the object ids of the leaves subtracted inside a
        render() (shading.preview_swapped) */
@@ -422,6 +426,87 @@ static sc_status add_leaf(builder *b, const model_node *n, const prim *p,
     return csg_builder_failed(b->csg) ? err_nomem(b->error, NULL) : SC_OK;
 }
 
+/* A mesh's leaf (a polyhedron's, an import's) in the render, as OpenSCAD
+ * 2021.01 holds its points where a CGAL operation or the render's end
+ * takes them: moved by the transforms since (state's since_cgal,
+ * returned; build_mesh_merge_moved), where its points are snapped, a
+ * face that is not planar is split and the mesh judged, and placed by the
+ * rest (*rest: state with to_world its cgal_world). NULL where nothing
+ * moved it, in the preview (OpenCSG draws the points as written) and in a
+ * motion (its leaf keeps its own). */
+static const affine *moved_leaf(const builder *b, const frame *state, frame *rest)
+{
+    affine id_map = affine_identity();
+    if (b->preview || state->moving ||
+        !memcmp(&state->since_cgal, &id_map, sizeof id_map))
+        return NULL;
+    *rest = *state;
+    rest->to_world = state->cgal_world;
+    return &state->since_cgal;
+}
+
+/* In faithful mode where a CGAL operation takes a shape (state->cgal),
+ * OpenSCAD 2021.01 snaps the points of its mesh to its grid of 2^-20
+ * where the transforms since that operation have moved them
+ * (build_mesh_merge_moved) and CGAL hulls them: those transforms, and in
+ * *rest the state that places the result; NULL elsewhere (the preview, a
+ * motion, a shape drawn as it is). */
+static const affine *snapped_shape(builder *b, const frame *state, frame *rest)
+{
+    if (!b->faithful || !state->cgal || b->preview || state->moving)
+        return NULL;
+    b->cgal_built += state->emit && state->shown;
+    *rest = *state;
+    rest->to_world = state->cgal_world;
+    return &state->since_cgal;
+}
+
+/* A cube's box (lo, hi) snapped so (snapped_shape) where the transforms
+ * since do not turn it: its snapped corners' box. 0 where they turn it
+ * or a corner lies past the grid (2^40): the cube is then a mesh's
+ * (faithful_hull_leaf). *lo >= *hi on an axis: empty, as OpenSCAD's hull
+ * of flat corners. */
+static int snapped_box(const affine *m, vec3 *lo, vec3 *hi)
+{
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 3; j++)
+            if (i != j && m->m[i][j] != 0)
+                return 0;
+    vec3 p = affine_point(m, *lo), q = affine_point(m, *hi);
+    double v[6] = {fmin(p.x, q.x), fmin(p.y, q.y), fmin(p.z, q.z),
+                   fmax(p.x, q.x), fmax(p.y, q.y), fmax(p.z, q.z)};
+    for (int k = 0; k < 6; k++)
+        if (!build_mesh_snap(v[k], &v[k]))
+            return 0;
+    *lo = v3(v[0], v[1], v[2]);
+    *hi = v3(v[3], v[4], v[5]);
+    return 1;
+}
+
+/* Shape n's faithful mesh (faces, freed here) snapped where it has moved
+ * to (since, snapped_shape) and hulled, as CGAL takes it: one convex leaf
+ * placed by rest, or nothing when the snapped points span no volume. */
+static sc_status faithful_hull_leaf(builder *b, const model_node *n,
+                                    faithful_faces *faces, const affine *since,
+                                    const frame *rest, uint32_t *id)
+{
+    build_ctx c = context(b, rest->emit, NULL);
+    c.drawn_as_is = 0;
+    build_mesh_faces f;
+    sc_status st =
+        build_mesh_merge_moved(&c, &n->loc, 0, since, faces->points, faces->point_count,
+                               faces->indices, faces->face_start, faces->face_count, &f);
+    faithful_faces_free(faces);
+    build_prims leaf = {NULL, 0, 0};
+    if (st == SC_OK)
+        st = build_hull_points(&c, n, f.points, f.point_count, &leaf);
+    build_mesh_faces_free(&f);
+    if (st == SC_OK && leaf.count)
+        st = add_leaf(b, n, &leaf.items[0], rest, id);
+    free(leaf.items);
+    return st;
+}
+
 /* cube(size, center): a box, or the empty solid for no size. */
 static sc_status build_cube(builder *b, const model_node *n, const frame *state,
                             uint32_t *id)
@@ -438,6 +523,36 @@ static sc_status build_cube(builder *b, const model_node *n, const frame *state,
     vec3 s = v3(size[0], size[1], size[2]);
     p.u.box.lo = center ? v3_scale(s, -0.5) : v3(0, 0, 0);
     p.u.box.hi = center ? v3_scale(s, 0.5) : s;
+    frame rest;
+    const affine *since = snapped_shape(b, state, &rest);
+    if (since && snapped_box(since, &p.u.box.lo, &p.u.box.hi)) {
+        if (!(p.u.box.lo.x < p.u.box.hi.x && p.u.box.lo.y < p.u.box.hi.y &&
+              p.u.box.lo.z < p.u.box.hi.z))
+            return SC_OK;
+        state = &rest;
+    } else if (since) {
+        /* its 8 corners and 6 faces, outward */
+        static const uint32_t quads[24] = {0, 2, 3, 1, 4, 5, 7, 6, 0, 1, 5, 4,
+                                           2, 6, 7, 3, 0, 4, 6, 2, 1, 3, 7, 5};
+        static const uint32_t starts[7] = {0, 4, 8, 12, 16, 20, 24};
+        vec3 corners[8];
+        for (int k = 0; k < 8; k++)
+            corners[k] = v3(k & 1 ? p.u.box.hi.x : p.u.box.lo.x,
+                            k & 2 ? p.u.box.hi.y : p.u.box.lo.y,
+                            k & 4 ? p.u.box.hi.z : p.u.box.lo.z);
+        faithful_faces box = {NULL, 8, NULL, NULL, 6};
+        box.points = malloc(sizeof corners);
+        box.indices = malloc(sizeof quads);
+        box.face_start = malloc(sizeof starts);
+        if (!box.points || !box.indices || !box.face_start) {
+            faithful_faces_free(&box);
+            return err_nomem(b->error, &n->loc);
+        }
+        memcpy(box.points, corners, sizeof corners);
+        memcpy(box.indices, quads, sizeof quads);
+        memcpy(box.face_start, starts, sizeof starts);
+        return faithful_hull_leaf(b, n, &box, since, &rest, id);
+    }
     return add_leaf(b, n, &p, state, id);
 }
 
@@ -477,6 +592,14 @@ static sc_status build_sphere(builder *b, const model_node *n, const frame *stat
     p.u.sphere.r = r;
     const model_resolution *res = &n->u.sphere.res;
     sc_status st = SC_OK;
+    frame rest;
+    const affine *since = snapped_shape(b, state, &rest);
+    if (since) {
+        faithful_faces faces;
+        st = faithful_sphere_faces(r, res->fn, res->fa, res->fs, &n->loc, &faces,
+                                   b->error);
+        return st == SC_OK ? faithful_hull_leaf(b, n, &faces, since, &rest, id) : st;
+    }
     if (b->faithful) {
         long f = faithful_sphere_fragments(r, res->fn, res->fs, res->fa);
         if (f > 0 && faithful_sphere_face_count(f) > PRIM_CONVEX_MAX_PLANES) {
@@ -514,6 +637,14 @@ static sc_status build_cylinder(builder *b, const model_node *n, const frame *st
     const model_resolution *res = &n->u.cylinder.res;
     sc_status st = SC_OK;
     double z0 = p.u.cylinder.z0, z1 = p.u.cylinder.z1;
+    frame rest;
+    const affine *since = snapped_shape(b, state, &rest);
+    if (since) {
+        faithful_faces faces;
+        st = faithful_cylinder_faces(z0, z1, r1, r2, res->fn, res->fa, res->fs, &n->loc,
+                                     &faces, b->error);
+        return st == SC_OK ? faithful_hull_leaf(b, n, &faces, since, &rest, id) : st;
+    }
     if (b->faithful) {
         long f = faithful_fragments(fmax(r1, r2), res->fn, res->fs, res->fa);
         if (f > 0 && (size_t)f + 2 > PRIM_CONVEX_MAX_PLANES) {
@@ -666,25 +797,6 @@ static sc_status warn_note(builder *b, const sc_error *note)
     return warn(b, &at, "%s", note->message);
 }
 
-/* A mesh's leaf (a polyhedron's, an import's) in the render, as OpenSCAD
- * 2021.01 holds its points where a CGAL operation or the render's end
- * takes them: moved by the transforms since (state's since_cgal,
- * returned; build_mesh_merge_moved), where its points are snapped, a
- * face that is not planar is split and the mesh judged, and placed by the
- * rest (*rest: state with to_world its cgal_world). NULL where nothing
- * moved it, in the preview (OpenCSG draws the points as written) and in a
- * motion (its leaf keeps its own). */
-static const affine *moved_leaf(const builder *b, const frame *state, frame *rest)
-{
-    affine id_map = affine_identity();
-    if (b->preview || state->moving ||
-        !memcmp(&state->since_cgal, &id_map, sizeof id_map))
-        return NULL;
-    *rest = *state;
-    rest->to_world = state->cgal_world;
-    return &state->since_cgal;
-}
-
 /* polyhedron(points, faces): its points merged as OpenSCAD merges them
  * (build_mesh_merge) where they have moved to (moved_leaf), then convex
  * planes when it is closed and convex, else a mesh (build_mesh_solid,
@@ -694,6 +806,7 @@ static sc_status build_polyhedron(builder *b, const model_node *n, const frame *
 {
     frame rest;
     const affine *since = moved_leaf(b, state, &rest);
+    b->cgal_built += !b->preview && state->cgal && state->emit && state->shown;
     if (since)
         state = &rest;
     sc_error note = {SC_OK, "", 0, 0, ""};
@@ -865,6 +978,8 @@ static sc_status build_import_leaf(builder *b, const model_node *n, const frame 
 {
     frame rest;
     const affine *since = n->kind == MODEL_IMPORT ? moved_leaf(b, state, &rest) : NULL;
+    b->cgal_built += n->kind == MODEL_IMPORT && !b->preview && state->cgal &&
+                     state->emit && state->shown;
     if (since)
         state = &rest;
     sc_error note = {SC_OK, "", 0, 0, ""}; /* a warning, e.g. a font fallback */
@@ -1761,14 +1876,17 @@ static sc_status build_parts(builder *b)
  * `cube(10); #sphere(3);` shows the sphere translucent red, not the solid
  * sphere through red. And where the render leaves out 2D objects of a 3D
  * model, or 3D objects of a 2D one (b->flat_parts), the preview draws
- * both, each 2D object as a slab (build_preview_slab). The model is walked
+ * both, each 2D object as a slab (build_preview_slab). And where the
+ * render's meshes and shapes are built as OpenSCAD's CGAL takes them
+ * (b->cgal_built), the preview's are drawn as they are written, as
+ * OpenCSG draws them (a quad out of its plane split on its own fan). The model is walked
  * again into a tree of its own, so (highlight_operands, b->preview); the
  * walk's warnings are the main walk's, and are not given again. When it
  * cannot be built, a warning says so and the preview shows the solid. */
 static sc_status build_preview_solid(builder *b)
 {
     if (!b->drops && !b->flat_parts && !b->renders && !b->cgal_drops &&
-        !b->background_root)
+        !b->background_root && !b->cgal_built)
         return SC_OK;
     sc_error error;
     builder sub;

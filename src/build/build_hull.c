@@ -1820,6 +1820,14 @@ static sc_status emit_hull(const build_ctx *c, const model_node *n, const points
     return push_prim(c, n, out, &p);
 }
 
+sc_status build_hull_points(const build_ctx *c, const model_node *n, const vec3 *points,
+                            uint32_t count, build_prims *out)
+{
+    pointset s = {(vec3 *)points, count, count};
+    int flat = 0;
+    return emit_hull(c, n, &s, out, &flat);
+}
+
 sc_status build_hull(const build_ctx *c, const model_node *n, int emit,
                      build_resize_cache **cache, build_prims *out, const char **empty)
 {

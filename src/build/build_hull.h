@@ -35,6 +35,12 @@ typedef struct build_resize_cache build_resize_cache;
 
 void build_resize_cache_free(build_resize_cache *cache);
 
+/* The convex hull of count points as one leaf of node n (a plane set, or a
+ * mesh of its triangles when it has many faces) appended to out; nothing
+ * when the points span no volume. */
+sc_status build_hull_points(const build_ctx *c, const model_node *n, const vec3 *points,
+                            uint32_t count, build_prims *out);
+
 /* hull() of its 3D children (booleans among them evaluated with CGAL's Nef
  * polyhedra, as OpenSCAD does): one convex leaf (a plane set, or a mesh of the
  * hull's triangles when it has many faces), in the hull node's frame. A

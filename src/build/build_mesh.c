@@ -2249,6 +2249,15 @@ static int grid_place(vec3 p, int snap, int64_t k[3], vec3 *q)
     return 1;
 }
 
+int build_mesh_snap(double v, double *out)
+{
+    int64_t k[3];
+    vec3 q;
+    int in = grid_place(v3(v, 0, 0), SNAP_FLOAT, k, &q);
+    *out = q.x;
+    return in;
+}
+
 /* The slot of cell k's point in g, or of the nearest taken cell around k
  * (Grid3d's order), where either is taken; else k's empty slot, for the
  * caller to take (grid_take). */

@@ -124,6 +124,11 @@ sc_status build_mesh_merge(const build_ctx *c, const sc_location *loc, int rever
                            const vec3 *points, uint32_t point_count,
                            const uint32_t *indices, const uint32_t *face_start,
                            uint32_t face_count, build_mesh_faces *f);
+/* v as OpenSCAD 2021.01's grid of 2^-20 snaps a coordinate of a mesh it
+ * hands to CGAL (build_mesh_merge in faithful mode): its cell's corner,
+ * toward zero, in float, into *out; 0 for one past the grid's range (2^40,
+ * where a point is not snapped), *out then v. */
+int build_mesh_snap(double v, double *out);
 /* build_mesh_merge of the points moved by *moved (NULL: as they are),
  * each face turned where it mirrors, as OpenSCAD 2021.01's
  * PolySet::transform moves a mesh before a CGAL operation or the render
