@@ -426,6 +426,15 @@ static sc_status add_leaf(builder *b, const model_node *n, const prim *p,
     return csg_builder_failed(b->csg) ? err_nomem(b->error, NULL) : SC_OK;
 }
 
+/* The transforms since the CGAL operation that takes a leaf in state,
+ * returned, with *rest the state that places it from there. */
+static const affine *at_cgal(const frame *state, frame *rest)
+{
+    *rest = *state;
+    rest->to_world = state->cgal_world;
+    return &state->since_cgal;
+}
+
 /* A mesh's leaf (a polyhedron's, an import's) in the render, as OpenSCAD
  * 2021.01 holds its points where a CGAL operation or the render's end
  * takes them: moved by the transforms since (state's since_cgal,
@@ -436,13 +445,9 @@ static sc_status add_leaf(builder *b, const model_node *n, const prim *p,
  * motion (its leaf keeps its own). */
 static const affine *moved_leaf(const builder *b, const frame *state, frame *rest)
 {
-    affine id_map = affine_identity();
-    if (b->preview || state->moving ||
-        !memcmp(&state->since_cgal, &id_map, sizeof id_map))
+    if (b->preview || state->moving || affine_is_identity(&state->since_cgal))
         return NULL;
-    *rest = *state;
-    rest->to_world = state->cgal_world;
-    return &state->since_cgal;
+    return at_cgal(state, rest);
 }
 
 /* In faithful mode where a CGAL operation takes a shape (state->cgal),
@@ -456,9 +461,7 @@ static const affine *snapped_shape(builder *b, const frame *state, frame *rest)
     if (!b->faithful || !state->cgal || b->preview || state->moving)
         return NULL;
     b->cgal_built += state->emit && state->shown;
-    *rest = *state;
-    rest->to_world = state->cgal_world;
-    return &state->since_cgal;
+    return at_cgal(state, rest);
 }
 
 /* A cube's box (lo, hi) snapped so (snapped_shape) where the transforms

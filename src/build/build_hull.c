@@ -514,23 +514,14 @@ static sc_status mesh_points(const walk *w, const model_node *n, const affine *m
     return SC_OK;
 }
 
-/* The identity, for a walk's since under a union of several solids. */
-static const affine unmoved = {{{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}}};
-
 /* Where a mesh under m (the walk's frame) has moved to when a union of
  * several, or the hull or minkowski, takes it (w->since, else m): that
  * map, or NULL for none (or one that cannot be undone), and in *rest what
- * takes it on to the walk's frame (m is rest * since). */
+ * takes it on to the walk's frame (build_mesh_since). */
 static const affine *moved_since(const walk *w, const affine *m, affine *rest)
 {
-    const affine *since = w->since ? w->since : m;
-    affine undo;
-    if (!memcmp(since, &unmoved, sizeof unmoved) || !affine_invert(since, &undo)) {
-        *rest = *m;
-        return NULL;
-    }
-    *rest = w->since ? affine_mul(m, &undo) : unmoved;
-    return since;
+    const affine *since = build_mesh_since(w->since, m, rest);
+    return since && !affine_is_identity(since) ? since : NULL;
 }
 
 /* OpenSCAD 2021.01 takes a mesh into a CGAL Nef polyhedron in a union of
@@ -731,7 +722,7 @@ static void enter_union(const walk *w, const model_node *n, walk *sub)
     *sub = *w;
     if (build_hull_solids(n) > 1) {
         sub->in_union = 1;
-        sub->since = &unmoved;
+        sub->since = &affine_unmoved;
     }
 }
 
@@ -1334,7 +1325,7 @@ static sc_status nef_children(const walk *w, const model_node *parent, const aff
     size_t mark = w->c->nefs ? build_nef_cache_mark(w->c->nefs) : 0;
     walk operands = *w; /* a boolean of several: OpenSCAD's Nef polyhedra */
     if (build_hull_solids(parent) > 1)
-        operands.since = &unmoved;
+        operands.since = &affine_unmoved;
     w = &operands;
     for (const model_node *n = parent->first_child; n; n = n->next) {
         if (skipped(n) || is_shading(n->kind)) {

@@ -2457,6 +2457,18 @@ sc_status build_mesh_merge(const build_ctx *c, const sc_location *loc, int rever
     return SC_OK;
 }
 
+const affine *build_mesh_since(const affine *since, const affine *m, affine *rest)
+{
+    const affine *at = since ? since : m;
+    affine undo;
+    if (!affine_invert(at, &undo)) {
+        *rest = *m;
+        return NULL;
+    }
+    *rest = since ? affine_mul(m, &undo) : affine_unmoved;
+    return at;
+}
+
 sc_status build_mesh_merge_moved(const build_ctx *c, const sc_location *loc, int reversed,
                                  const affine *moved, const vec3 *points,
                                  uint32_t point_count, const uint32_t *indices,

@@ -138,6 +138,12 @@ sc_status build_mesh_merge_moved(const build_ctx *c, const sc_location *loc, int
                                  uint32_t point_count, const uint32_t *indices,
                                  const uint32_t *face_start, uint32_t face_count,
                                  build_mesh_faces *f);
+/* Splits a frame m where a CGAL operation takes a leaf under it: since
+ * is the map from that operation down to m (NULL: m is all of it),
+ * returned (m where since is NULL), with *rest what takes it on to m (m
+ * is *rest after it). NULL where that map cannot be undone: *rest is
+ * then m. */
+const affine *build_mesh_since(const affine *since, const affine *m, affine *rest);
 void build_mesh_faces_free(build_mesh_faces *f);
 
 /* Whether OpenSCAD 2021.01's is_approximately_convex takes these faces as

@@ -947,11 +947,9 @@ static sc_status leaf(pwalk *w, const model_node *n, const affine *m, int depth,
      * points have moved to (w->since), snapped there; a polyhedron or
      * import is also split and checked there (built_soup) */
     const affine *since = NULL;
-    affine rest = *m, undo;
-    if (w->cut && !w->corners && affine_invert(w->since ? w->since : m, &undo)) {
-        since = w->since ? w->since : m;
-        rest = w->since ? affine_mul(m, &undo) : affine_identity();
-    }
+    affine rest = *m;
+    if (w->cut && !w->corners)
+        since = build_mesh_since(w->since, m, &rest);
     m = &rest;
     int meshed = n->kind == MODEL_POLYHEDRON || n->kind == MODEL_IMPORT;
     sc_status st = leaf_soup(w, n, meshed ? since : NULL, &s, depth);
@@ -1130,12 +1128,11 @@ static sc_status walk_node(pwalk *w, const model_node *n, const affine *m, int d
 static sc_status walk_moved(pwalk *w, const model_node *n, const affine *m, int depth,
                             twod_region *out)
 {
-    static const affine unmoved = {{{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}}};
     const build_ctx *c = w->c;
     model_kind kind = n->kind;
     affine since;
     if (build_hull_solids(n) > 1)
-        w->since = &unmoved; /* OpenSCAD's Nef polyhedron of them */
+        w->since = &affine_unmoved; /* OpenSCAD's Nef polyhedron of them */
     switch (kind) {
     case MODEL_UNION:
     case MODEL_COLOR:

@@ -4,10 +4,20 @@
 #include <stdint.h>
 #include <string.h>
 
+const affine affine_unmoved = {{{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}}};
+
 affine affine_identity(void)
 {
-    affine a = {{{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}}};
-    return a;
+    return affine_unmoved;
+}
+
+int affine_is_identity(const affine *a)
+{
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 4; j++)
+            if (a->m[i][j] != affine_unmoved.m[i][j])
+                return 0;
+    return 1;
 }
 
 affine affine_mul(const affine *a, const affine *b)

@@ -116,6 +116,10 @@ static inline void affine2_apply(const affine2 *m, double x, double y, double *o
 /* ---- affine transforms ---- */
 
 affine affine_identity(void);
+/* The identity, for a pointer to one. */
+extern const affine affine_unmoved;
+/* Whether a is the identity, entry for entry. */
+int affine_is_identity(const affine *a);
 /* a * b: apply b first, then a. */
 affine affine_mul(const affine *a, const affine *b);
 /* Determinant of the linear part. */
