@@ -428,10 +428,14 @@ CSG
 done
 # The box as written beside a child that is no solid, which OpenSCAD's
 # union leaves out (applyToChildren3D's actual children): an empty cube, a
-# 2D square. The union has one solid, which it passes on as it is: no CGAL
-# operation takes the box, and it is drawn.
+# 2D square, and operations whose geometry is empty: a group of an empty
+# cube, a difference whose first child is one. The union has one solid,
+# which it passes on as it is: no CGAL operation takes the box, and it is
+# drawn.
 for other in "empty cube(size = [0, 1, 1], center = false);" \
-    "2d square(size = [1, 1], center = false);"; do
+    "2d square(size = [1, 1], center = false);" \
+    "group group() { cube(size = [0, 1, 1], center = false); }" \
+    "diff difference() { cube(size = [1, 0, 1], center = false); cube(size = [1, 1, 1], center = false); }"; do
     cat >"box-${other%% *}.csg" <<CSG
 union() {
 	polyhedron(points = $box_points, faces = $box_faces, convexity = 1);
@@ -547,6 +551,8 @@ builder_cases=(
     "snapped.csg|0.35,0.05,0.0999993|in||"
     "box-empty.csg|2.5,2.5,1|in|box-empty.csg:3:2: warning: cube with a zero, negative or non-finite size is empty|"
     "box-2d.csg|2.5,2.5,1|in|box-2d.csg:3:2: warning: Mixing 2D and 3D objects is not supported|"
+    "box-group.csg|2.5,2.5,1|in|box-group.csg:3:12: warning: cube with a zero, negative or non-finite size is empty|"
+    "box-diff.csg|2.5,2.5,1|in|box-diff.csg:3:17: warning: cube with a zero, negative or non-finite size is empty|"
     "plane-hull.csg|0.5,0.5,0.5|out|plane-hull.csg:3:3: warning: polyhedron has a face out of its plane at point 1 (CGAL's assertion ss_circle.has_on(sp_0) fails there, and OpenSCAD does not triangulate and try again); left out, as OpenSCAD leaves it out (\"$assertion\")|^ERROR: $assertion"
     "plane-mink.csg|0.95,0.1,0.5|in||"
     "plane-off.csg|0.5,0.5,0.5|out|plane-off.csg:2:16: warning: imported mesh has a face out of its plane at (0, 0, 1) (CGAL's assertion ss_circle.has_on(sp_0) fails there, and OpenSCAD does not triangulate and try again); left out, as OpenSCAD leaves it out (\"$assertion\")|^ERROR: $assertion"

@@ -1347,27 +1347,18 @@ static sc_status mark_operands(builder *b, const model_node *n, const frame *f)
  * is (applyToChildren3D: no sum, no CGAL): built as a group of it. */
 static int lone_minkowski(const model_node *n)
 {
-    return n->kind == MODEL_MINKOWSKI && build_hull_solids(n) == 1;
+    return n->kind == MODEL_MINKOWSKI && build_operands(n->kind, n->first_child) == 1;
 }
 
 /* Whether OpenSCAD 2021.01's render hands the results of the nodes first
  * (a list of siblings, the children of an operation of this kind) to
- * CGAL: where two or more of them are operands (its applyToChildren3D is
- * a no-op for one), not '%'. A union (a group, transform, colour, render
- * or minkowski) counts the solids only, as it leaves out the empty ones
- * (a 2D child, nothing below it, an empty shape); a difference or an
- * intersection counts every child. A render() unites its children so
- * too, and takes one child's mesh as it is. A mesh that is not closed is
- * left out where its result meets CGAL, and drawn as it is where nothing
- * hands it to CGAL. */
+ * CGAL: where two or more of them are operands (build_operands). A
+ * render() unites its children so too, and takes one child's mesh as it
+ * is. A mesh that is not closed is left out where its result meets CGAL,
+ * and drawn as it is where nothing hands it to CGAL. */
 static int to_cgal(model_kind kind, const model_node *first)
 {
-    int operands = 0;
-    int every = kind == MODEL_DIFFERENCE || kind == MODEL_INTERSECTION;
-    for (const model_node *c = first; c; c = c->next)
-        operands += !(c->modifiers & (MODEL_MOD_BACKGROUND | MODEL_MOD_DISABLE)) &&
-                    (every || (build_dim(c, 0) == 3 && !empty_shape(c)));
-    return operands > 1;
+    return build_operands(kind, first) > 1;
 }
 
 /* The state node n hands its children (or, for a leaf, builds with),

@@ -720,7 +720,7 @@ static sc_status collect(const walk *w, const model_node *parent, const affine *
 static void enter_union(const walk *w, const model_node *n, walk *sub)
 {
     *sub = *w;
-    if (build_hull_solids(n) > 1) {
+    if (build_operands(n->kind, n->first_child) > 1) {
         sub->in_union = 1;
         sub->since = &affine_unmoved;
     }
@@ -764,7 +764,7 @@ static sc_status inner_frame(const walk *w, const model_node *n, const affine *m
         *inner = affine_mul(m, &local);
         if (sub) {
             enter_union(w, n, sub);
-            if (w->since && build_hull_solids(n) <= 1) {
+            if (w->since && build_operands(n->kind, n->first_child) <= 1) {
                 *since = affine_mul(w->since, &local);
                 sub->since = since;
             }
@@ -826,8 +826,8 @@ static sc_status collect(const walk *w, const model_node *parent, const affine *
         if (is_2d(n)) {
             st = check_2d(w, n, &mixing);
             any_2d = 1;
-        } else if (is_group(kind) ||
-                   (kind == MODEL_MINKOWSKI && build_hull_solids(n) == 1)) {
+        } else if (is_group(kind) || (kind == MODEL_MINKOWSKI &&
+                                      build_operands(n->kind, n->first_child) == 1)) {
             /* a minkowski of one solid is that solid (build.c) */
             walk sub;
             enter_union(w, n, &sub);
@@ -1324,7 +1324,7 @@ static sc_status nef_children(const walk *w, const model_node *parent, const aff
     const model_node *mixing = NULL; /* the first 2D child that is not empty */
     size_t mark = w->c->nefs ? build_nef_cache_mark(w->c->nefs) : 0;
     walk operands = *w; /* a boolean of several: OpenSCAD's Nef polyhedra */
-    if (build_hull_solids(parent) > 1)
+    if (build_operands(parent->kind, parent->first_child) > 1)
         operands.since = &affine_unmoved;
     w = &operands;
     for (const model_node *n = parent->first_child; n; n = n->next) {
@@ -1888,14 +1888,6 @@ sc_status build_minkowski(const build_ctx *c, const model_node *n, int emit,
 
 /* ---- resize ---- */
 
-int build_hull_solids(const model_node *n)
-{
-    int count = 0;
-    for (const model_node *k = n->first_child; k; k = k->next)
-        count += !skipped(k) && build_dim(k, 0) == 3;
-    return count;
-}
-
 /* Whether OpenSCAD 2021.01 evaluates the union of n's children to a CGAL
  * Nef polyhedron, rather than to a mesh (PolySet) or nothing: a union of
  * two or more solids is a Nef polyhedron, one solid is passed through as
@@ -1904,12 +1896,23 @@ int build_hull_solids(const model_node *n)
  * read as the sum of convex parts OpenSCAD makes one mesh of). */
 static int nef_result(const model_node *n, int depth)
 {
-    int count = build_hull_solids(n);
+    int count = build_operands(n->kind, n->first_child), solids = 0;
     if (count != 1 || depth > BUILD_HULL_MAX_DEPTH)
         return count > 1;
-    const model_node *only = n->first_child;
-    while (skipped(only) || build_dim(only, 0) != 3)
-        only = only->next;
+    const model_node *only = NULL; /* the one operand, if a solid */
+    for (const model_node *k = n->first_child; k; k = k->next) {
+        if (skipped(k) || build_dim(k, 0) != 3)
+            continue;
+        if (!only)
+            only = k;
+        solids++;
+    }
+    if (solids > 1) /* the one that is not empty (build_operands) */
+        for (only = n->first_child; only; only = only->next)
+            if (!skipped(only) && build_dim(only, 0) == 3 && !build_node_empty(only))
+                break;
+    if (!only)
+        return 0;
     model_kind kind = only->kind;
     if (is_group(kind) || kind == MODEL_XFORM || kind == MODEL_RESIZE ||
         kind == MODEL_DIFFERENCE || kind == MODEL_INTERSECTION)
@@ -1958,7 +1961,7 @@ static sc_status support_node(const walk *w, const model_node *n, const affine *
         return support(w, n, &inner, depth + 1, out);
     }
     if ((kind == MODEL_DIFFERENCE || kind == MODEL_INTERSECTION) && !w->check &&
-        build_hull_solids(n) > 1) {
+        build_operands(n->kind, n->first_child) > 1) {
         /* OpenSCAD's box: that of the CGAL result's vertices */
         partlist parts = {NULL, 0, 0};
         st = solid_parts(w, n, m, depth + 1, &parts);

@@ -52,9 +52,6 @@ sc_status build_hull(const build_ctx *c, const model_node *n, int emit,
 /* minkowski() of its children, each a union of convex parts (non-convex
  * ones split by CGAL's convex decomposition): one convex leaf per
  * combination of parts, to be united. */
-/* The children of n with a 3D solid, as OpenSCAD's union and booleans
- * count them: not '%', '*', shading or 2D. */
-int build_hull_solids(const model_node *n);
 
 sc_status build_minkowski(const build_ctx *c, const model_node *n, int emit,
                           build_resize_cache **cache, build_prims *out,

@@ -1131,7 +1131,7 @@ static sc_status walk_moved(pwalk *w, const model_node *n, const affine *m, int 
     const build_ctx *c = w->c;
     model_kind kind = n->kind;
     affine since;
-    if (build_hull_solids(n) > 1)
+    if (build_operands(n->kind, n->first_child) > 1)
         w->since = &affine_unmoved; /* OpenSCAD's Nef polyhedron of them */
     switch (kind) {
     case MODEL_UNION:
@@ -1163,7 +1163,7 @@ static sc_status walk_moved(pwalk *w, const model_node *n, const affine *m, int 
         affine inner = affine_mul(m, &local), inverse;
         if (st != SC_OK || !affine_invert(&inner, &inverse))
             return st; /* singular: no geometry */
-        if (w->since && build_hull_solids(n) <= 1) {
+        if (w->since && build_operands(n->kind, n->first_child) <= 1) {
             since = affine_mul(w->since, &local);
             w->since = &since;
         }

@@ -370,6 +370,35 @@ static build_presence presence(const model_node *n, int in_2d, int depth)
     }
 }
 
+int build_node_empty(const model_node *n)
+{
+    return !n->pending && presence(n, 0, 0) != BUILD_SOME;
+}
+
+int build_operands(model_kind kind, const model_node *first)
+{
+    int count = 0, some = 0;
+    if (kind == MODEL_DIFFERENCE || kind == MODEL_INTERSECTION) {
+        for (const model_node *k = twod_walk_next(first); count < 2 && k;
+             k = twod_walk_next(k->next))
+            count += k->kind != MODEL_LIGHT && k->kind != MODEL_CAMERA &&
+                     k->kind != MODEL_BACKGROUND;
+        return count;
+    }
+    /* the solids counted first, and their subtrees scanned (presence)
+     * only where two or more may count, so that a chain of transforms is
+     * not scanned once per level */
+    for (const model_node *k = twod_walk_next(first); count < 2 && k;
+         k = twod_walk_next(k->next))
+        count += build_dim(k, 0) == 3;
+    if (count < 2)
+        return count;
+    for (const model_node *k = twod_walk_next(first); some < 2 && k;
+         k = twod_walk_next(k->next))
+        some += build_dim(k, 0) == 3 && !build_node_empty(k);
+    return some;
+}
+
 /* ---- OpenSCAD's evaluation ---- */
 
 typedef struct eval {

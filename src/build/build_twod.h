@@ -56,6 +56,19 @@ int build_list_dim(const model_node *first, int in_2d);
 /* Whether projection n has a child that is 3D, so that OpenSCAD 2021.01
  * makes geometry of it. */
 int build_projects(const model_node *n);
+/* Whether 3D node n's geometry is empty as its nodes already say, as
+ * OpenSCAD 2021.01 makes it: a shape of no size, an extrusion of nothing,
+ * an operation of such. One that only CGAL finds empty (a difference that
+ * removes all) is not. */
+int build_node_empty(const model_node *n);
+/* How many of the nodes from first on, the children of an operation of
+ * this kind, OpenSCAD 2021.01 takes as operands: 0, 1, or 2 for two or
+ * more (its applyToChildren3D is a no-op for one). Not '%' or '*', nor
+ * shading nodes; a difference or intersection takes every other child
+ * (a 2D one as an empty operand); a union (a group, transform, colour,
+ * render or minkowski) leaves out 2D children and empty ones
+ * (build_node_empty). */
+int build_operands(model_kind kind, const model_node *first);
 
 /* The one walk over a 2D model subtree, for every builder of 2D children:
  * the exact region of linear_extrude (build_region.c), the revolve
