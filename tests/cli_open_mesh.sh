@@ -127,13 +127,27 @@ for mode in "" --faithful; do
     # shellcheck disable=SC2086
     inside cut-alone.csg "out" $mode -- 0.1,0.1,0.5
 done
-for mode in --strict "--strict --faithful"; do
-    check
+# the same cut of the mesh as a polyhedron, as the model itself, a 2D
+# one: the same warning (there is no extrusion to take it)
+printf 'projection(cut = true) {\n\tmultmatrix([[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, -0.5], [0, 0, 0, 1]]) {\n\t\tpolyhedron(points = [[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1]], faces = [[0, 1, 2], [0, 3, 1], [0, 2, 3]]);\n\t}\n\tmultmatrix([[1, 0, 0, 3], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]) {\n\t\tcube(size = [1, 1, 1], center = true);\n\t}\n}\n' \
+    >cut-2d.csg
+polyhedron_edge="polyhedron is not closed (edge 1-2 is used by 1 face)"
+want_err="cut-2d.csg:3:3: warning: $polyhedron_edge; $left"
+for mode in "" --faithful; do
     # shellcheck disable=SC2086
-    "$bin" inside cut.csg --point=3,0,0.5 $mode >in.txt 2>err.txt &&
-        fail "inside cut.csg $mode: exit 0"
-    w="cut.csg:4:18: error: $edge"
-    [ "$(cat err.txt)" = "$w" ] || fail "cut.csg $mode: stderr '$(cat err.txt)', want '$w'"
+    inside cut-2d.csg "out out in" $mode -- 0.1,0.1,0 0.3,0.3,0 3,0,0
+done
+for at in "cut:4:18:$edge" "cut-2d:3:3:$polyhedron_edge"; do
+    model=${at%%:*} where=${at#*:}
+    where=${where%%:"${at#*:*:*:}"}
+    for mode in --strict "--strict --faithful"; do
+        check
+        # shellcheck disable=SC2086
+        "$bin" inside $model.csg --point=3,0,0 $mode >in.txt 2>err.txt &&
+            fail "inside $model.csg $mode: exit 0"
+        w="$model.csg:$where: error: ${at#*:*:*:}"
+        [ "$(cat err.txt)" = "$w" ] || fail "$model.csg $mode: stderr '$(cat err.txt)', want '$w'"
+    done
 done
 
 # minkowski(): OpenSCAD 2021.01 sums meshes on CGAL's Nef polyhedra, which

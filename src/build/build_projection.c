@@ -287,10 +287,9 @@ static int mesh_soup(const prim *p, soup *s)
  * its Nef polyhedron cannot be made. Inside a hull, which takes only the
  * corners, a mesh is taken as it is in a cut too, as OpenSCAD hulls the
  * mesh and cuts the hull. */
-static sc_status built_soup(const pwalk *w, const model_node *n, const affine *moved,
-                            soup *s)
+static sc_status leaf_mesh(const pwalk *w, const build_ctx *c, const model_node *n,
+                           const affine *moved, soup *s)
 {
-    const build_ctx *c = w->c;
     if (n->pending)
         return build_pending(c, n);
     build_ctx fc = *c;
@@ -354,6 +353,24 @@ static sc_status built_soup(const pwalk *w, const model_node *n, const affine *m
     if (st != SC_OK || empty)
         return st;
     return mesh_soup(&p, s) ? SC_OK : err_nomem(c->error, &n->loc);
+}
+
+/* leaf_mesh, where a builder's warning (a mesh left out of a cut) goes to
+ * the caller's note, or, where the caller takes none (a 2D model), to
+ * c->notes. */
+static sc_status built_soup(const pwalk *w, const model_node *n, const affine *moved,
+                            soup *s)
+{
+    build_ctx c = *w->c;
+    sc_error own = {SC_OK, "", 0, 0, ""};
+    if (!c.note && c.notes)
+        c.note = &own;
+    sc_status st = leaf_mesh(w, &c, n, moved, s);
+    if (st == SC_OK && own.message[0]) {
+        sc_location at = {c.file, own.line, own.column};
+        st = build_note(&c, &at, "%s", own.message);
+    }
+    return st;
 }
 
 static sc_status leaf_soup(pwalk *w, const model_node *n, const affine *moved, soup *s,
