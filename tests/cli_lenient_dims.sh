@@ -628,6 +628,46 @@ bg_mink.csg:6:3: warning: Ignoring 2D child object for 3D operation" $mode
     }
 done
 
+# ---- a singular transform and a resize in a projection ----
+# OpenSCAD 2021.01 flattens a mesh under a singular multmatrix and projects
+# the faces of the flat mesh (crosscheck projection_flattened), but removes
+# a Nef polyhedron (here a union of two solids) with "Scaling a 3D object
+# with 0 - removing object"; a resize of a flat Nef polyhedron says "Resize
+# in direction normal to flat object is not implemented" and leaves it as
+# it is. Both warnings come as well where the projection is the model
+# itself (a 2D one) as under an extrusion.
+flat_union='union() {\n\t\t\tcube(size = [2, 2, 2], center = false);\n\t\t\tmultmatrix([[1, 0, 0, 3], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]) {\n\t\t\t\tcube(size = [1, 1, 1], center = false);\n\t\t\t}\n\t\t}'
+sheets='union() {\n\t\t\tpolyhedron(points = [[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0]], faces = [[0, 1, 2, 3], [3, 2, 1, 0]]);\n\t\t\tpolyhedron(points = [[2, 0, 0], [3, 0, 0], [3, 1, 0], [2, 1, 0]], faces = [[0, 1, 2, 3], [3, 2, 1, 0]]);\n\t\t}'
+# shellcheck disable=SC2059
+{
+    printf "projection(cut = false) {\n\tmultmatrix([[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 0, 0], [0, 0, 0, 1]]) {\n\t\t$flat_union\n\t}\n}\n$square1\n" >flat_nef.csg
+    printf "linear_extrude(height = 1) {\n\tprojection(cut = false) {\n\t\tmultmatrix([[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 0, 0], [0, 0, 0, 1]]) {\n\t\t$flat_union\n\t\t}\n\t}\n\t$square1\n}\n" >flat_nef_extruded.csg
+    printf "projection(cut = false) {\n\tresize(newsize = [4, 2, 2]) {\n\t\t$sheets\n\t}\n}\n$square1\n" >flat_resize.csg
+    printf "hull() {\n\t$cube1\n\tmultmatrix([[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 0, 0], [0, 0, 0, 1]]) {\n\t\t$flat_union\n\t}\n}\n" >flat_hull.csg
+    # an extrusion that is not convex flattened in a minkowski, which
+    # OpenSCAD finds not closed (its whole sum is empty): not followed, and
+    # said so
+    printf "minkowski() {\n\t$cube1\n\tmultmatrix([[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 0, 0], [0, 0, 0, 1]]) {\n\t\tlinear_extrude(height = 2) {\n\t\t\tpolygon(points = [[0, 0], [4, 0], [4, 1], [1, 1], [1, 4], [0, 4]]);\n\t\t}\n\t}\n}\n" >flat_mink.csg
+}
+for mode in "" --faithful; do
+    # shellcheck disable=SC2086
+    {
+        warns flat_nef.csg "flat_nef.csg:2:2: warning: Scaling a 3D object with 0 - removing object" $mode
+        warns flat_nef_extruded.csg "flat_nef_extruded.csg:3:3: warning: Scaling a 3D object with 0 - removing object" $mode
+        warns flat_resize.csg "flat_resize.csg:2:2: warning: resize in a direction normal to a flat object is not implemented" $mode
+        warns flat_hull.csg "flat_hull.csg:3:2: warning: Scaling a 3D object with 0 - removing object" $mode
+        warns flat_mink.csg "flat_mink.csg:4:3: warning: linear_extrude flattened by a singular multmatrix is not convex: left out of minkowski (not supported yet)" $mode
+    }
+done
+if command -v openscad >/dev/null; then
+    for model in flat_nef.dxf flat_resize.dxf flat_hull.stl; do
+        check
+        openscad -o "$PWD/$model" "${model%.*}.csg" >/dev/null 2>"${model%.*}_os.err"
+        grep -q "^WARNING: \(Scaling a 3D object with 0 - removing object\|Resize in direction normal to flat object is not implemented\)" "${model%.*}_os.err" ||
+            fail "openscad on ${model%.*}.csg: $(cat "${model%.*}_os.err")"
+    done
+fi
+
 # With --strict the first of these warnings is the error, at its position.
 for mode in "" --faithful; do
     # shellcheck disable=SC2086

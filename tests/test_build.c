@@ -507,6 +507,20 @@ static void test_singular(void **state)
     assert_true(is_empty(s));
     sc_scene_release(s);
 
+    /* OpenSCAD removes a Nef polyhedron (a union of two solids) with its
+     * own warning, where it flattens a mesh. */
+    s = load_warned(
+        "multmatrix([[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 0, 0], [0, 0, 0, 1]]) {\n"
+        "  union() {\n"
+        "    cube(size = [1, 1, 1], center = false);\n"
+        "    multmatrix([[1, 0, 0, 3], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]) {"
+        "cube(); }\n"
+        "  }\n"
+        "}\n",
+        "m.csg:1:1: Scaling a 3D object with 0 - removing object");
+    assert_true(is_empty(s));
+    sc_scene_release(s);
+
     /* Errors under a singular transform are still errors. */
     check_error("multmatrix([[0, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]) {"
                 "roof(); }",

@@ -1596,7 +1596,15 @@ static sc_status visit(builder *b, const model_node *n, int *opened)
              * comes when it ends (pop_frame) */
             f->emit = 0; /* still counted: the empty solid */
         } else if (f->emit && !affine_invert(&f->to_world, &inverse)) {
-            if ((st = warn(b, &n->loc, "singular transform: subtree is empty")) != SC_OK)
+            /* OpenSCAD 2021.01 flattens a mesh (PolySet::transform), a
+             * sheet this engine does not draw, and removes a Nef
+             * polyhedron that is not empty with its own warning
+             * (CGAL_Nef_polyhedron::transform) */
+            int nef = build_nef_result(n);
+            if ((!nef || !build_node_empty(n)) &&
+                (st = warn(b, &n->loc, "%s",
+                           nef ? "Scaling a 3D object with 0 - removing object"
+                               : "singular transform: subtree is empty")) != SC_OK)
                 return st;
             f->emit = 0; /* still counted: the empty solid */
         }

@@ -514,6 +514,50 @@ static sc_status mesh_points(const walk *w, const model_node *n, const affine *m
     return SC_OK;
 }
 
+/* A mesh n (an extrusion, import or surface) in a minkowski, under a
+ * frame m that flattens it (a singular multmatrix above): OpenSCAD 2021.01
+ * flattens its points and sums the hull of the flat points where it finds
+ * the flat mesh convex, as a convex mesh stays. One that is not convex,
+ * which OpenSCAD takes as CGAL finds it once flat (not closed, which
+ * empties the whole sum, where seen), is left out with a warning. */
+static sc_status flat_mesh_part(const walk *w, const model_node *n, const affine *m,
+                                partlist *out)
+{
+    pointset set = {NULL, 0, 0};
+    double volume = 0;
+    int convex = 0;
+    sc_status st = mesh_points(w, n, &affine_unmoved, &set, &volume);
+    if (st == SC_OK && set.count) {
+        hull3 h;
+        hull3_status hs = hull3_compute(set.p, set.count, &h);
+        if (hs == HULL3_NOMEM)
+            st = err_nomem(w->c->error, &n->loc);
+        else
+            convex = hs == HULL3_OK &&
+                     fabs(hull3_volume(&h) - volume) <= 1e-6 * hull3_volume(&h);
+        hull3_free(&h);
+    }
+    if (st == SC_OK && set.count && !convex && !w->check)
+        st =
+            build_note(w->c, &n->loc,
+                       "%s flattened by a singular multmatrix is not convex: left out of "
+                       "minkowski (not supported yet)",
+                       n->name);
+    if (st == SC_OK && set.count && convex) {
+        for (uint32_t i = 0; i < set.count; i++)
+            set.p[i] = affine_point(m, set.p[i]);
+        pointset *part = new_part(out);
+        if (!part) {
+            st = err_nomem(w->c->error, &n->loc);
+        } else {
+            *part = set;
+            set.p = NULL;
+        }
+    }
+    free(set.p);
+    return st;
+}
+
 /* Where a mesh under m (the walk's frame) has moved to when a union of
  * several, or the hull or minkowski, takes it (w->since, else m): that
  * map, or NULL for none (or one that cannot be undone), and in *rest what
@@ -726,13 +770,32 @@ static void enter_union(const walk *w, const model_node *n, walk *sub)
     }
 }
 
+/* Whether the frame m flattens what it carries (a singular multmatrix
+ * above, inner_frame). */
+static int flattened(const affine *m)
+{
+    affine inverse;
+    return !affine_invert(m, &inverse);
+}
+
+/* Whether w collects the corners a hull or minkowski takes, which
+ * inner_frame may flatten. */
+static int takes_corners(const walk *w)
+{
+    return !strcmp(w->owner, "hull") || !strcmp(w->owner, "minkowski");
+}
+
 /* The frame of the children of a multmatrix or resize n under m: m after
  * n's own matrix, in *inner; 0 in *ok for a singular multmatrix (the
- * subtree has no geometry). With sub, also the walk its children take
- * (enter_union; where they are not united, w's since after n's matrix,
- * kept in *since). */
+ * subtree has no geometry), but with flat where its children are a mesh,
+ * whose points OpenSCAD 2021.01 flattens (PolySet::transform; a hull takes
+ * them), where a Nef polyhedron is removed with OpenSCAD's warning
+ * (CGAL_Nef_polyhedron::transform). With sub, also the walk its children
+ * take (enter_union; where they are not united, w's since after n's
+ * matrix, kept in *since). */
 static sc_status inner_frame(const walk *w, const model_node *n, const affine *m,
-                             int depth, affine *inner, walk *sub, affine *since, int *ok)
+                             int depth, affine *inner, walk *sub, affine *since, int flat,
+                             int *ok)
 {
     affine local;
     const char *warning = NULL;
@@ -759,6 +822,13 @@ static sc_status inner_frame(const walk *w, const model_node *n, const affine *m
         parts_free(&scratch);
         *ok = 0;
         return st == SC_OK ? build_xform_not_finite(w->c, n) : st;
+    }
+    if (st == SC_OK && !*ok && n->kind == MODEL_XFORM) {
+        int nef = build_nef_result(n);
+        *ok = flat && !nef;
+        if (nef && !w->check && !build_node_empty(n))
+            st =
+                build_note(w->c, &n->loc, "Scaling a 3D object with 0 - removing object");
     }
     if (st == SC_OK && *ok) {
         *inner = affine_mul(m, &local);
@@ -836,7 +906,8 @@ static sc_status collect(const walk *w, const model_node *parent, const affine *
             affine inner, since;
             int ok;
             walk sub;
-            st = inner_frame(w, n, m, depth + 1, &inner, &sub, &since, &ok);
+            st = inner_frame(w, n, m, depth + 1, &inner, &sub, &since, takes_corners(w),
+                             &ok);
             if (st == SC_OK && ok)
                 st = collect(&sub, n, &inner, depth + 1, out);
         } else if (kind == MODEL_CUBE || kind == MODEL_SPHERE || kind == MODEL_CYLINDER) {
@@ -846,6 +917,8 @@ static sc_status collect(const walk *w, const model_node *parent, const affine *
                 st = part ? shape_points(w, n, &s, m, part)
                           : err_nomem(c->error, (&n->loc));
             }
+        } else if (is_mesh(kind) && w->convex && flattened(m)) {
+            st = flat_mesh_part(w, n, m, out);
         } else if (kind == MODEL_POLYHEDRON || is_mesh(kind)) {
             pointset set = {NULL, 0, 0};
             double volume = 0;
@@ -1455,7 +1528,7 @@ static sc_status nef_node(const walk *w, const model_node *n, const affine *m, i
         affine inner, since;
         int ok;
         walk sub;
-        st = inner_frame(w, n, m, depth + 1, &inner, &sub, &since, &ok);
+        st = inner_frame(w, n, m, depth + 1, &inner, &sub, &since, 0, &ok);
         if (st != SC_OK || !ok)
             return st;
         sub.in_union = w->in_union; /* nef_children unites them */
@@ -1920,6 +1993,11 @@ static int nef_result(const model_node *n, int depth)
     return 0;
 }
 
+int build_nef_result(const model_node *n)
+{
+    return nef_result(n, 0);
+}
+
 /* The six support values of the children of parent through m: out[2k] =
  * max x_k, out[2k + 1] = max -x_k; -inf where there is nothing. */
 static sc_status support(const walk *w, const model_node *parent, const affine *m,
@@ -1955,7 +2033,7 @@ static sc_status support_node(const walk *w, const model_node *n, const affine *
     if (kind == MODEL_XFORM || kind == MODEL_RESIZE) {
         affine inner;
         int ok;
-        st = inner_frame(w, n, m, depth + 1, &inner, NULL, NULL, &ok);
+        st = inner_frame(w, n, m, depth + 1, &inner, NULL, NULL, 0, &ok);
         if (st != SC_OK || !ok)
             return st;
         return support(w, n, &inner, depth + 1, out);

@@ -88,6 +88,14 @@ typedef struct build_nef_state {
 sc_status build_nef_evaluate(const build_ctx *c, const model_node *n,
                              build_nef_state *out);
 
+/* Whether OpenSCAD 2021.01 evaluates the union of the children of n (a
+ * multmatrix, resize or other operation) to a CGAL Nef polyhedron, not to
+ * a mesh (PolySet) or nothing: a transform then applies to the Nef
+ * polyhedron (CGAL_Nef_polyhedron::transform, which removes it under a
+ * singular matrix) rather than to the mesh's points (PolySet::transform,
+ * which flattens them). */
+int build_nef_result(const model_node *n);
+
 /* resize(newsize, auto): the scale (a diagonal matrix in *out) that
  * OpenSCAD 2021.01 applies to the children, from their bounding box in the
  * resize node's frame. *warning is set (and *out the identity) when a

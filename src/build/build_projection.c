@@ -1141,6 +1141,47 @@ static sc_status walk_node(pwalk *w, const model_node *n, const affine *m, int d
     return st;
 }
 
+/* A warning at loc: the caller's (c->note, which keeps the first), or,
+ * where the caller takes none (a 2D model), one of c->notes. */
+static sc_status say(const build_ctx *c, const sc_location *loc, const char *message)
+{
+    if (!c->note)
+        return build_note(c, loc, "%s", message);
+    if (!c->note->message[0])
+        err_set(c->note, SC_OK, loc, "%s", message);
+    return SC_OK;
+}
+
+/* A singular multmatrix n, where inner (the frame of its children) is
+ * singular: OpenSCAD 2021.01 flattens a mesh's points (PolySet::transform)
+ * and projects the faces of the flat mesh, but removes a Nef polyhedron
+ * (CGAL_Nef_polyhedron::transform, with its warning). Without cut, the
+ * outline of a flattened mesh is that of the solid under any frame with
+ * inner's x and y rows, so inner's z row becomes their cross product:
+ * 1 when that frame can be inverted, for n's children to be walked in
+ * it; 0 where the frame has no z row to give (the x and y rows are
+ * parallel, and the outline has no area), under a cut (the section of a
+ * flat mesh, a CGAL Nef polyhedron of it, is not taken) or where the
+ * children are a Nef polyhedron. */
+static int flattened(const pwalk *w, const model_node *n, affine *inner)
+{
+    affine inverse;
+    if (w->cut || build_nef_result(n))
+        return 0;
+    vec3 x = v3(inner->m[0][0], inner->m[0][1], inner->m[0][2]);
+    vec3 y = v3(inner->m[1][0], inner->m[1][1], inner->m[1][2]);
+    vec3 z = v3_cross(x, y);
+    affine repaired = *inner;
+    repaired.m[2][0] = z.x;
+    repaired.m[2][1] = z.y;
+    repaired.m[2][2] = z.z;
+    repaired.m[2][3] = 0;
+    if (!affine_invert(&repaired, &inverse))
+        return 0;
+    *inner = repaired;
+    return 1;
+}
+
 /* walk_node, with w->since as n leaves it for its children. */
 static sc_status walk_moved(pwalk *w, const model_node *n, const affine *m, int depth,
                             twod_region *out)
@@ -1174,12 +1215,16 @@ static sc_status walk_moved(pwalk *w, const model_node *n, const affine *m, int 
         } else {
             const char *warning = NULL;
             st = meshes_resize(w, n, &local, &warning);
-            if (st == SC_OK && warning && c->note && !c->note->message[0])
-                err_set(c->note, SC_OK, &n->loc, "%s", warning);
+            if (st == SC_OK && warning)
+                st = say(c, &n->loc, warning);
         }
         affine inner = affine_mul(m, &local), inverse;
-        if (st != SC_OK || !affine_invert(&inner, &inverse))
-            return st; /* singular: no geometry */
+        if (st != SC_OK)
+            return st;
+        if (!affine_invert(&inner, &inverse) && !flattened(w, n, &inner))
+            return build_nef_result(n) && !build_node_empty(n)
+                       ? say(c, &n->loc, "Scaling a 3D object with 0 - removing object")
+                       : SC_OK;
         if (w->since && build_operands(n->kind, n->first_child) <= 1) {
             since = affine_mul(w->since, &local);
             w->since = &since;
