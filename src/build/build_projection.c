@@ -955,6 +955,38 @@ static sc_status snap_soup(const pwalk *w, const model_node *n, const affine *si
     return st;
 }
 
+/* The faces of polyhedron n through m added to out, as OpenSCAD 2021.01
+ * projects a mesh (PolysetUtils::project): each face's outline, turned
+ * counter-clockwise, a face without area left out; the projection unites
+ * them. For a polyhedron without volume (a sheet given both ways), of
+ * which the mesh builder makes no triangles. 0 when memory runs out. */
+static int face_outlines(const model_node *n, const affine *m, twod_region *out)
+{
+    const vec3 *points = n->u.polyhedron.points;
+    const uint32_t *index = n->u.polyhedron.indices;
+    const uint32_t *start = n->u.polyhedron.face_start;
+    for (uint32_t f = 0; f < n->u.polyhedron.face_count; f++) {
+        uint32_t s = start[f], e = start[f + 1];
+        double area = 0; /* twice the signed area, seen from above */
+        for (uint32_t i = s; i < e; i++) {
+            vec3 a = affine_point(m, points[index[i]]);
+            vec3 b = affine_point(m, points[index[i + 1 < e ? i + 1 : s]]);
+            area += a.x * b.y - b.x * a.y;
+        }
+        if (e - s < 3 || !(area > 0 || area < 0))
+            continue;
+        if (!twod_begin_contour(out))
+            return 0;
+        for (uint32_t k = 0; k < e - s; k++) {
+            vec3 a = affine_point(m, points[index[area > 0 ? s + k : e - 1 - k]]);
+            if (!twod_add_point(out, a.x, a.y))
+                return 0;
+        }
+        twod_end_contour(out);
+    }
+    return 1;
+}
+
 /* Adds leaf n's loops (cut) or projected faces to out. */
 static sc_status leaf(pwalk *w, const model_node *n, const affine *m, int depth,
                       twod_region *out)
@@ -987,6 +1019,9 @@ static sc_status leaf(pwalk *w, const model_node *n, const affine *m, int depth,
                         : projected_faces(&s, convex_leaf(n->kind), out);
         if (!ok)
             st = add_error(w, out);
+    } else if (st == SC_OK && !w->cut && n->kind == MODEL_POLYHEDRON &&
+               n->u.polyhedron.face_count && !face_outlines(n, m, out)) {
+        st = err_nomem(w->c->error, &n->loc); /* a polyhedron without volume */
     }
     free(s.v);
     return st;
