@@ -644,6 +644,7 @@ sheets='union() {\n\t\t\tpolyhedron(points = [[0, 0, 0], [1, 0, 0], [1, 1, 0], [
     printf "linear_extrude(height = 1) {\n\tprojection(cut = false) {\n\t\tmultmatrix([[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 0, 0], [0, 0, 0, 1]]) {\n\t\t$flat_union\n\t\t}\n\t}\n\t$square1\n}\n" >flat_nef_extruded.csg
     printf "projection(cut = false) {\n\tresize(newsize = [4, 2, 2]) {\n\t\t$sheets\n\t}\n}\n$square1\n" >flat_resize.csg
     printf "hull() {\n\t$cube1\n\tmultmatrix([[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 0, 0], [0, 0, 0, 1]]) {\n\t\t$flat_union\n\t}\n}\n" >flat_hull.csg
+    printf "projection(cut = false) {\n\thull() {\n\t\t$cube1\n\t\tmultmatrix([[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 0, 0], [0, 0, 0, 1]]) {\n\t\t$flat_union\n\t\t}\n\t}\n}\n" >flat_proj_hull.csg
     # an extrusion that is not convex flattened in a minkowski, which
     # OpenSCAD finds not closed (its whole sum is empty): not followed, and
     # said so
@@ -656,11 +657,12 @@ for mode in "" --faithful; do
         warns flat_nef_extruded.csg "flat_nef_extruded.csg:3:3: warning: Scaling a 3D object with 0 - removing object" $mode
         warns flat_resize.csg "flat_resize.csg:2:2: warning: resize in a direction normal to a flat object is not implemented" $mode
         warns flat_hull.csg "flat_hull.csg:3:2: warning: Scaling a 3D object with 0 - removing object" $mode
+        warns flat_proj_hull.csg "flat_proj_hull.csg:4:3: warning: Scaling a 3D object with 0 - removing object" $mode
         warns flat_mink.csg "flat_mink.csg:4:3: warning: linear_extrude flattened by a singular multmatrix is not convex: left out of minkowski (not supported yet)" $mode
     }
 done
 if command -v openscad >/dev/null; then
-    for model in flat_nef.dxf flat_resize.dxf flat_hull.stl; do
+    for model in flat_nef.dxf flat_resize.dxf flat_hull.stl flat_proj_hull.dxf; do
         check
         openscad -o "$PWD/$model" "${model%.*}.csg" >/dev/null 2>"${model%.*}_os.err"
         grep -q "^WARNING: \(Scaling a 3D object with 0 - removing object\|Resize in direction normal to flat object is not implemented\)" "${model%.*}_os.err" ||

@@ -406,6 +406,17 @@ static sc_status ignored_2d(const build_ctx *c, const model_node *parent,
     return st;
 }
 
+/* A warning at loc: the caller's (c->note, which keeps the first), or,
+ * where the caller takes none (a 2D model), one of c->notes. */
+static sc_status say(const build_ctx *c, const sc_location *loc, const char *message)
+{
+    if (!c->note)
+        return build_note(c, loc, "%s", message);
+    if (!c->note->message[0])
+        err_set(c->note, SC_OK, loc, "%s", message);
+    return SC_OK;
+}
+
 /* The corners of the meshes below hull node parent (through m, in the
  * hull's frame) added to pts, as OpenSCAD hulls them: groups, colours,
  * transforms and resizes pass through; a boolean or minkowski gives the
@@ -444,6 +455,8 @@ static sc_status hull_points(pwalk *w, const model_node *parent, const affine *m
             const char *warning = NULL;
             if (kind == MODEL_RESIZE)
                 st = meshes_resize(w, n, &local, &warning);
+            if (st == SC_OK && warning)
+                st = say(c, &n->loc, warning);
             affine inner = affine_mul(m, &local), inverse;
             if (kind == MODEL_XFORM && n->not_finite) {
                 /* removed: its children's warnings first, without its
@@ -453,8 +466,13 @@ static sc_status hull_points(pwalk *w, const model_node *parent, const affine *m
                 free(scratch.v);
                 if (st == SC_OK)
                     st = build_xform_not_finite(c, n);
-            } else if (st == SC_OK && affine_invert(&inner, &inverse)) {
+            } else if (st == SC_OK &&
+                       (affine_invert(&inner, &inverse) || !build_nef_result(n))) {
+                /* under a singular one, the hull takes a mesh's flattened
+                 * points (flattened) */
                 st = hull_points(w, n, &inner, depth + 1, pts);
+            } else if (st == SC_OK && !build_node_empty(n)) {
+                st = say(c, &n->loc, "Scaling a 3D object with 0 - removing object");
             }
         } else {
             soup s = {NULL, 0, 0, 0};
@@ -1174,17 +1192,6 @@ static sc_status walk_node(pwalk *w, const model_node *n, const affine *m, int d
     sc_status st = walk_moved(w, n, m, depth, out);
     w->since = since;
     return st;
-}
-
-/* A warning at loc: the caller's (c->note, which keeps the first), or,
- * where the caller takes none (a 2D model), one of c->notes. */
-static sc_status say(const build_ctx *c, const sc_location *loc, const char *message)
-{
-    if (!c->note)
-        return build_note(c, loc, "%s", message);
-    if (!c->note->message[0])
-        err_set(c->note, SC_OK, loc, "%s", message);
-    return SC_OK;
 }
 
 /* A singular multmatrix n, where inner (the frame of its children) is

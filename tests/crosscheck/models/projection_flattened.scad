@@ -3,7 +3,8 @@
 // the flat mesh: the outline of the solid under that map. A box, a sphere
 // turned after the flattening, an L-shaped extrusion and polyhedron whose
 // end faces are not convex, and a hull under a shear that maps z onto
-// x + y. A union of two solids (a Nef polyhedron) is removed instead, with
+// x + y, and a hull that takes a cylinder flattened to a disc standing on
+// its edge. A union of two solids (a Nef polyhedron) is removed instead, with
 // OpenSCAD's warning, and a map of no area in the plane projects nothing.
 // camera: 6,-18,14,6,4,0
 linear_extrude(1) projection() {
@@ -19,4 +20,8 @@ linear_extrude(1) projection() {
         rotate([45, 0, 0]) hull() { cube(1); translate([2, 2, 2]) sphere(1, $fn = 8); }
     translate([0, 12, 0]) scale([1, 1, 0]) union() { cube(2); translate([3, 0, 0]) cube(1); }
     translate([6, 12, 0]) scale([1, 0, 1]) cube(2);
+    translate([10, 12, 0]) hull() {
+        cube(1);
+        translate([3, 0, 0]) scale([0, 1, 1]) cylinder(h = 3, r = 1, $fn = 12);
+    }
 }
