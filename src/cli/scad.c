@@ -427,8 +427,20 @@ static int is_tagged(const char *line)
     return 0;
 }
 
-/* The next line of the log into line (size bytes), without its line break;
- * 0 at the end. */
+/* The next line of f into line (size bytes), without its line break; 0 at
+ * the end. */
+static int read_line(FILE *f, char *line, size_t size)
+{
+    if (!fgets(line, (int)size, f))
+        return 0;
+    size_t n = strlen(line);
+    while (n > 0 && (line[n - 1] == '\n' || line[n - 1] == '\r'))
+        line[--n] = 0;
+    return 1;
+}
+
+/* The next line of the log into line (size bytes): the one read ahead
+ * first. */
 static int next_line(log_reader *r, char *line, size_t size)
 {
     if (r->has_ahead) {
@@ -436,12 +448,7 @@ static int next_line(log_reader *r, char *line, size_t size)
         r->has_ahead = 0;
         return 1;
     }
-    if (!fgets(line, (int)size, r->f))
-        return 0;
-    size_t n = strlen(line);
-    while (n > 0 && (line[n - 1] == '\n' || line[n - 1] == '\r'))
-        line[--n] = 0;
-    return 1;
+    return read_line(r->f, line, size);
 }
 
 /* The next message of the log into message (size bytes, cut to fit); 0 at
@@ -456,7 +463,7 @@ static int next_message(log_reader *r, char *message, size_t size)
     size_t n = strlen(message), quotes = 0;
     for (size_t i = 0; i < n; i++)
         quotes += message[i] == '"';
-    while (quotes % 2 == 1 && next_line(r, r->ahead, sizeof r->ahead)) {
+    while (quotes % 2 == 1 && read_line(r->f, r->ahead, sizeof r->ahead)) {
         if (is_tagged(r->ahead)) {
             r->has_ahead = 1;
             break;
