@@ -1600,11 +1600,10 @@ static sc_status visit(builder *b, const model_node *n, int *opened)
              * sheet this engine does not draw, and removes a Nef
              * polyhedron that is not empty with its own warning
              * (CGAL_Nef_polyhedron::transform) */
-            int nef = build_nef_result(n);
-            if ((!nef || !build_node_empty(n)) &&
-                (st = warn(b, &n->loc, "%s",
-                           nef ? "Scaling a 3D object with 0 - removing object"
-                               : "singular transform: subtree is empty")) != SC_OK)
+            const char *removal;
+            if (!build_singular_removes(n, &removal))
+                removal = "singular transform: subtree is empty";
+            if (removal && (st = warn(b, &n->loc, "%s", removal)) != SC_OK)
                 return st;
             f->emit = 0; /* still counted: the empty solid */
         }

@@ -772,7 +772,7 @@ static void enter_union(const walk *w, const model_node *n, walk *sub)
 
 /* Whether the frame m flattens what it carries (a singular multmatrix
  * above, inner_frame). */
-static int flattened(const affine *m)
+static int flattening(const affine *m)
 {
     affine inverse;
     return !affine_invert(m, &inverse);
@@ -824,11 +824,10 @@ static sc_status inner_frame(const walk *w, const model_node *n, const affine *m
         return st == SC_OK ? build_xform_not_finite(w->c, n) : st;
     }
     if (st == SC_OK && !*ok && n->kind == MODEL_XFORM) {
-        int nef = build_nef_result(n);
-        *ok = flat && !nef;
-        if (nef && !w->check && !build_node_empty(n))
-            st =
-                build_note(w->c, &n->loc, "Scaling a 3D object with 0 - removing object");
+        const char *removal;
+        *ok = !build_singular_removes(n, &removal) && flat;
+        if (removal && !w->check)
+            st = build_note(w->c, &n->loc, "%s", removal);
     }
     if (st == SC_OK && *ok) {
         *inner = affine_mul(m, &local);
@@ -917,7 +916,7 @@ static sc_status collect(const walk *w, const model_node *parent, const affine *
                 st = part ? shape_points(w, n, &s, m, part)
                           : err_nomem(c->error, (&n->loc));
             }
-        } else if (is_mesh(kind) && w->convex && flattened(m)) {
+        } else if (is_mesh(kind) && w->convex && flattening(m)) {
             st = flat_mesh_part(w, n, m, out);
         } else if (kind == MODEL_POLYHEDRON || is_mesh(kind)) {
             pointset set = {NULL, 0, 0};
@@ -1996,6 +1995,15 @@ static int nef_result(const model_node *n, int depth)
 int build_nef_result(const model_node *n)
 {
     return nef_result(n, 0);
+}
+
+int build_singular_removes(const model_node *n, const char **warning)
+{
+    int nef = build_nef_result(n);
+    *warning = nef && !build_node_empty(n)
+                   ? "Scaling a 3D object with 0 - removing object"
+                   : NULL;
+    return nef;
 }
 
 /* The six support values of the children of parent through m: out[2k] =

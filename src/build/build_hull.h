@@ -96,6 +96,13 @@ sc_status build_nef_evaluate(const build_ctx *c, const model_node *n,
  * which flattens them). */
 int build_nef_result(const model_node *n);
 
+/* OpenSCAD 2021.01's transform of the children of n by a singular matrix:
+ * 1 where they are a Nef polyhedron (build_nef_result), which it removes,
+ * with *warning set to its own warning where that polyhedron is not empty
+ * (else NULL); 0 where they are a mesh, whose points it flattens
+ * (*warning NULL). */
+int build_singular_removes(const model_node *n, const char **warning);
+
 /* resize(newsize, auto): the scale (a diagonal matrix in *out) that
  * OpenSCAD 2021.01 applies to the children, from their bounding box in the
  * resize node's frame. *warning is set (and *out the identity) when a

@@ -466,13 +466,15 @@ static sc_status hull_points(pwalk *w, const model_node *parent, const affine *m
                 free(scratch.v);
                 if (st == SC_OK)
                     st = build_xform_not_finite(c, n);
-            } else if (st == SC_OK &&
-                       (affine_invert(&inner, &inverse) || !build_nef_result(n))) {
+            } else if (st == SC_OK) {
                 /* under a singular one, the hull takes a mesh's flattened
-                 * points (flattened) */
-                st = hull_points(w, n, &inner, depth + 1, pts);
-            } else if (st == SC_OK && !build_node_empty(n)) {
-                st = say(c, &n->loc, "Scaling a 3D object with 0 - removing object");
+                 * points (repair_frame) */
+                const char *removal = NULL;
+                if (affine_invert(&inner, &inverse) ||
+                    !build_singular_removes(n, &removal))
+                    st = hull_points(w, n, &inner, depth + 1, pts);
+                else if (removal)
+                    st = say(c, &n->loc, removal);
             }
         } else {
             soup s = {NULL, 0, 0, 0};
@@ -1204,11 +1206,12 @@ static sc_status walk_node(pwalk *w, const model_node *n, const affine *m, int d
  * it; 0 where the frame has no z row to give (the x and y rows are
  * parallel, and the outline has no area), under a cut (the section of a
  * flat mesh, a CGAL Nef polyhedron of it, is not taken) or where the
- * children are a Nef polyhedron. */
-static int flattened(const pwalk *w, const model_node *n, affine *inner)
+ * children are a Nef polyhedron (with *removal, build_singular_removes). */
+static int repair_frame(const pwalk *w, const model_node *n, affine *inner,
+                        const char **removal)
 {
     affine inverse;
-    if (w->cut || build_nef_result(n))
+    if (build_singular_removes(n, removal) || w->cut)
         return 0;
     vec3 x = v3(inner->m[0][0], inner->m[0][1], inner->m[0][2]);
     vec3 y = v3(inner->m[1][0], inner->m[1][1], inner->m[1][2]);
@@ -1263,10 +1266,9 @@ static sc_status walk_moved(pwalk *w, const model_node *n, const affine *m, int 
         affine inner = affine_mul(m, &local), inverse;
         if (st != SC_OK)
             return st;
-        if (!affine_invert(&inner, &inverse) && !flattened(w, n, &inner))
-            return build_nef_result(n) && !build_node_empty(n)
-                       ? say(c, &n->loc, "Scaling a 3D object with 0 - removing object")
-                       : SC_OK;
+        const char *removal = NULL;
+        if (!affine_invert(&inner, &inverse) && !repair_frame(w, n, &inner, &removal))
+            return removal ? say(c, &n->loc, removal) : SC_OK;
         if (w->since && build_operands(n->kind, n->first_child) <= 1) {
             since = affine_mul(w->since, &local);
             w->since = &since;
