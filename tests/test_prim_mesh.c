@@ -531,9 +531,11 @@ static void test_first_from_inside(void **state)
 
 /* The parity rule (prim_mesh_create_rule with parity 1), for meshes that
  * are not closed or not consistently wound. A unit cube with one face
- * turned inward: by winding number that face cancels the solid behind it,
- * by parity the cube is whole, and the entry on the turned face carries
- * the flip bit so its normal still faces the ray. The same cube without
+ * turned inward: by winding number the line down through that face never
+ * comes back to zero (-1 past the top, -2 past the bottom), so the cube's
+ * membership is wrong (its centre is inside from one direction, outside
+ * from another); by parity the cube is whole, and the entry on the turned
+ * face carries the flip bit so its normal still faces the ray. The same cube without
  * its top: a line through the side walls has its span; a line down
  * through the open top crosses the bottom alone, and its unpaired
  * crossing makes no span. Membership counts crossings the same way. */
@@ -565,8 +567,12 @@ static void test_parity_rule(void **state)
     assert_int_equal(out[0].out.flip, 0); /* the bottom, as wound */
     vec3 nin = prim_mesh_normal(&parity, v3(0.3, 0.4, 1), out[0].in.part);
     assert_true((out[0].in.flip ? -1 : 1) * v3_dot(nin, d) < 0);
-    n = prim_mesh_spans(&winding, 0, o, d, out, 8);
-    assert_true(n == 0 || !near(out[0].in.t, 2)); /* winding loses the top */
+    /* by winding number, the centre is inside seen along membership's
+     * direction (one crossing, the turned top: -1) and the line down
+     * through it never closes */
+    assert_true(prim_mesh_inside(&winding, v3(0.5, 0.5, 0.5)));
+    assert_true(prim_mesh_inside(&parity, v3(0.5, 0.5, 0.5)));
+    assert_false(prim_mesh_inside(&winding, v3(0.5, 0.5, -0.5))); /* -1 + 1 */
     assert_true(prim_mesh_inside(&parity, v3(0.5, 0.5, 0.5)));
     assert_false(prim_mesh_inside(&parity, v3(0.5, 0.5, 1.5)));
     /* the cube without its top */
@@ -593,6 +599,53 @@ static void test_parity_rule(void **state)
     n = prim_mesh_spans(&open, 0, v3(0.2, 0.5, 1.2), v3(1, 0, -0.5), out, 8);
     assert_int_equal(n, 1);
     assert_true(near(out[0].in.t, 0.8) && out[0].out.t > out[0].in.t);
+    free(s.p);
+    free(s.t);
+    csg_builder_free(b);
+}
+
+/* The winding rule on a closed, consistently wound mesh that crosses
+ * itself: the line is inside where the winding number is not zero. A
+ * prism on the bow-tie (0,0) (1,1) (1,0) (0,1), its faces fans of that
+ * quad: the lobe x < 1/2 turns counter-clockwise (+1), the lobe x > 1/2
+ * clockwise (-1), as a twisted extrusion's side faces fold through one
+ * another. OpenSCAD draws such a mesh's triangles as they are, so both
+ * lobes are solid, the inverted one with its ends flipped to face out of
+ * the span; by the rule "positive", the inverted lobe was empty. */
+static void test_winding_nonzero(void **state)
+{
+    (void)state;
+    csg_builder *b = csg_builder_new();
+    soup s = {NULL, NULL, 0, 0};
+    static const double q[4][2] = {{0, 0}, {1, 1}, {1, 0}, {0, 1}};
+    for (int z = 0; z < 2; z++)
+        for (int i = 0; i < 4; i++)
+            soup_point(&s, v3(q[i][0], q[i][1], z));
+    soup_tri(&s, 0, 2, 1); /* the bottom: the fan, turned down */
+    soup_tri(&s, 0, 3, 2);
+    soup_tri(&s, 4, 5, 6); /* the top: the fan */
+    soup_tri(&s, 4, 6, 7);
+    for (uint32_t i = 0; i < 4; i++) { /* each side on edge a -> b */
+        uint32_t a = i, c = (i + 1) % 4;
+        soup_tri(&s, a, c, c + 4);
+        soup_tri(&s, a, c + 4, a + 4);
+    }
+    prim mesh = {.kind = PRIM_MESH};
+    mesh.u.mesh.mesh = prim_mesh_create(b, s.p, s.t, s.nt);
+    assert_non_null(mesh.u.mesh.mesh);
+    span out[8];
+    for (int lobe = 0; lobe < 2; lobe++) {
+        vec3 o = v3(lobe ? 0.8 : 0.2, 0.5, 3), d = v3(0, 0, -1);
+        uint32_t n = prim_mesh_spans(&mesh, 0, o, d, out, 8);
+        assert_int_equal(n, 1);
+        assert_true(near(out[0].in.t, 2) && near(out[0].out.t, 3));
+        assert_int_equal(out[0].in.flip, lobe);
+        assert_int_equal(out[0].out.flip, lobe);
+        vec3 nin = prim_mesh_normal(&mesh, v3(o.x, 0.5, 1), out[0].in.part);
+        assert_true((out[0].in.flip ? -1 : 1) * v3_dot(nin, d) < 0);
+        assert_true(prim_mesh_inside(&mesh, v3(o.x, 0.5, 0.5)));
+        assert_false(prim_mesh_inside(&mesh, v3(o.x, 0.5, 1.5)));
+    }
     free(s.p);
     free(s.t);
     csg_builder_free(b);
@@ -704,6 +757,7 @@ int main(void)
         cmocka_unit_test(test_first_from_inside),
         cmocka_unit_test(test_parity_rule),
         cmocka_unit_test(test_parity_duplicate),
+        cmocka_unit_test(test_winding_nonzero),
         cmocka_unit_test(test_tasks_build_one_thread_tree),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

@@ -30,15 +30,20 @@
  * det < 0 an entry.
  *
  * Spans: the crossings are sorted by t and walked with a winding number
- * (+1 at an entry, -1 at an exit); the line is inside where it is
- * positive. For a closed, consistently oriented mesh this is the parity
- * rule; faces split into fans of triangles (a non-convex face) cancel
- * where the fan overlaps itself. At most PRIM_MESH_MAX_CROSSINGS crossings
- * are kept, the smallest t first, and the largest t of all is remembered;
- * at most prim_max_spans spans are written. Past either bound the last
- * span written is stretched to the largest crossing: the spans before it
- * and every first hit stay exact, the far side of a very intricate mesh is
- * filled (documented in docs/meshes.md).
+ * (+1 at an entry, -1 at an exit); the line is inside where it is not
+ * zero. For a closed, consistently oriented mesh without self-overlap
+ * this is the parity rule; faces split into fans of triangles (a
+ * non-convex face) cancel where the fan overlaps itself. Where a fold
+ * turns part of the mesh inside out (a twisted extrusion in too few
+ * slices) the winding is negative there, and that part is solid too, as
+ * OpenSCAD draws the triangles: a span end on a triangle that faces into
+ * the span gets the flip bit (as under parity, below).
+ * At most PRIM_MESH_MAX_CROSSINGS crossings are kept, the smallest t
+ * first, and the largest t of all is remembered; at most prim_max_spans
+ * spans are written. Past either bound the last span written is stretched
+ * to the largest crossing: the spans before it and every first hit stay
+ * exact, the far side of a very intricate mesh is filled (documented in
+ * docs/meshes.md).
  *
  * Parity meshes (prim_mesh.parity: a mesh that is open, non-manifold or
  * inconsistently wound, built anyway in exact mode): a winding number
@@ -51,7 +56,8 @@
  * parity; it is kept once, as OpenSCAD draws it once.
  *
  * Membership: the winding number of q, from the crossings of the ray
- * q + t (1, sqrt 2, sqrt 3) / 2 with t > 0 (exits minus entries); a
+ * q + t (1, sqrt 2, sqrt 3) / 2 with t > 0 (exits minus entries), not
+ * zero; a
  * crossing at t = 0 puts q on the surface, which is inside (closed); for
  * a parity mesh, an odd count of those crossings.
  *
@@ -990,10 +996,10 @@ uint32_t prim_mesh_max_spans(const prim *p)
 /* The end of a span at crossing c; entering says which end. Under the
  * parity rule a triangle may face either way, so its normal is flipped
  * where it faces into the span. */
-static span_end end_at(const crossing *c, uint32_t leaf, int parity, int entering)
+static span_end end_at(const crossing *c, uint32_t leaf, int entering)
 {
     span_end e = {c->t, leaf, (uint16_t)(c->tri & 0xffffu), 0};
-    if (parity && c->exit == entering)
+    if (c->exit == entering)
         e.flip = 1;
     return e;
 }
@@ -1017,17 +1023,17 @@ static void gather_range(const prim_mesh *m, vec3 o, vec3 d, double lo, double h
 static int wind_step(const crossing *c, uint32_t leaf, int parity, int *wind,
                      span_end *start, span *closed)
 {
-    int was_in = *wind > 0;
+    int was_in = *wind != 0;
     if (parity)
         *wind ^= 1;
     else
         *wind += c->exit ? -1 : 1;
-    int is_in = *wind > 0;
+    int is_in = *wind != 0;
     if (!was_in && is_in) {
-        *start = end_at(c, leaf, parity, 1);
+        *start = end_at(c, leaf, 1);
     } else if (was_in && !is_in) {
         closed->in = *start;
-        closed->out = end_at(c, leaf, parity, 0);
+        closed->out = end_at(c, leaf, 0);
         return 1;
     }
     return 0;
@@ -1051,11 +1057,11 @@ static uint32_t spans_of(const crossings *cs, uint32_t leaf, double far, span *o
             full = n == cap;
         }
     }
-    int open = wind > 0 && !full;
+    int open = wind != 0 && !full;
     if (cs->overflow || full || open) {
         /* Past the bounds (or a mesh that is not closed along this line):
          * fill to the last crossing of all. */
-        span_end last = end_at(&cs->last, leaf, cs->parity, 0);
+        span_end last = end_at(&cs->last, leaf, 0);
         if (open) {
             out[n].in = start;
             out[n].out = last;
@@ -1125,7 +1131,7 @@ static uint32_t partial_spans(const crossings *cs, double t_end, double eps,
             tmp[n++] = closed;
         }
     }
-    int open = wind > 0;
+    int open = wind != 0;
     if (open) {
         if (n == cap)
             return UINT32_MAX;
@@ -1291,5 +1297,5 @@ int prim_mesh_inside(const prim *p, vec3 q)
     crossings_init(&cs, m, 1);
     vec3 d = v3(0.5, 0.70710678118654752, 0.86602540378443865);
     gather_range(m, q, d, 0, INFINITY, &cs);
-    return cs.on_surface || (m->parity ? (cs.wind & 1) : cs.wind > 0);
+    return cs.on_surface || (m->parity ? (cs.wind & 1) : cs.wind != 0);
 }
