@@ -733,9 +733,11 @@ static int add_triangle(twod_region *out, const vec3 *v)
  * is projected as they are (open: each turned counter-clockwise), one
  * with some wound back (open: after the group is turned to look up, by
  * the sign of its area) by the union of its triangles where their winding
- * number is positive. 0 when memory runs
- * out or the clipper fails. */
-static int up_faces(const soup *s, int open, twod_region *out)
+ * number is positive. With plane, triangle t is also taken with triangle
+ * plane[t] (same_plane: the faces of one plane that share no corner, a
+ * cap's outline and its holes). 0 when memory runs out or the clipper
+ * fails. */
+static int up_faces(const soup *s, int open, const uint32_t *plane, twod_region *out)
 {
     uint32_t n = s->count;
     vec3 *normal = malloc((size_t)(n ? n : 1) * sizeof *normal);
@@ -786,6 +788,9 @@ static int up_faces(const soup *s, int open, twod_region *out)
         i = j;
     }
     free(about);
+    for (uint32_t t = 0; ok && plane && t < n; t++)
+        if (plane[t] != t)
+            parent[build_mesh_piece(parent, t)] = build_mesh_piece(parent, plane[t]);
     /* a group with a triangle wound back (its normal down where another's
      * is up) */
     for (uint32_t t = 0; ok && t < n; t++) {
@@ -836,16 +841,72 @@ static int up_faces(const soup *s, int open, twod_region *out)
     return ok;
 }
 
+typedef struct plane_key {
+    double at;      /* the coordinate the triangle's corners share */
+    uint32_t axis;  /* 0, 1 or 2: x, y or z */
+    uint32_t index; /* the triangle */
+} plane_key;
+
+static int plane_key_cmp(const void *pa, const void *pb)
+{
+    const plane_key *a = pa, *b = pb;
+    if (a->axis != b->axis)
+        return a->axis < b->axis ? -1 : 1;
+    if (a->at != b->at)
+        return a->at < b->at ? -1 : 1;
+    return a->index < b->index ? -1 : a->index > b->index;
+}
+
+/* For each triangle of s, in the leaf's own frame (before it moves), the
+ * first triangle in the same plane of x, y or z equal to a constant (each
+ * triangle itself where its corners share none): the faces such a plane
+ * holds that share no corner, which up_faces must take together. A
+ * builder writes each loop of a cap as a face of its own, the outline one
+ * way and a hole the other (linear_extrude's caps, rotate_extrude's first
+ * side), so a hole in the top cap looks down and takes its part out of
+ * the outline's only in their union; in a builder's own frame such a cap
+ * lies exactly in its plane. NULL when memory runs out. */
+static uint32_t *same_plane(const soup *s)
+{
+    uint32_t n = s->count, keyed = 0;
+    uint32_t *plane = malloc((size_t)(n ? n : 1) * sizeof *plane);
+    plane_key *key = malloc((size_t)(n ? n : 1) * sizeof *key);
+    if (!plane || !key) {
+        free(plane);
+        free(key);
+        return NULL;
+    }
+    for (uint32_t t = 0; t < n; t++) {
+        const vec3 *v = &s->v[3 * t];
+        plane[t] = t;
+        for (uint32_t axis = 0; axis < 3; axis++) {
+            double a = v3_get(v[0], (int)axis);
+            if (a == v3_get(v[1], (int)axis) && a == v3_get(v[2], (int)axis)) {
+                key[keyed++] = (plane_key){a, axis, t};
+                break;
+            }
+        }
+    }
+    if (keyed > 1)
+        qsort(key, keyed, sizeof *key, plane_key_cmp);
+    for (uint32_t i = 1; i < keyed; i++)
+        if (key[i].axis == key[i - 1].axis && key[i].at == key[i - 1].at)
+            plane[key[i].index] = plane[key[i - 1].index];
+    free(key);
+    return plane;
+}
+
 /* Adds the outline of s seen along z to out. The union of every face's
  * projection (OpenSCAD's) is, for a closed mesh, the union of its faces
  * that look up (a vertical line through the solid meets its top at such a
  * face), up to sets without area: half the faces, and no front face
  * overlapping a back one, which is what makes the clipper slow. A convex
  * leaf (convex set) is the 2D hull of its corners, the same region. */
-static int projected_faces(const soup *s, int convex, twod_region *out)
+static int projected_faces(const soup *s, int convex, const uint32_t *plane,
+                           twod_region *out)
 {
     if (s->open) /* no outward side: every face, turned counter-clockwise */
-        return up_faces(s, 1, out);
+        return up_faces(s, 1, NULL, out);
     if (convex) {
         double *xy = s->count ? malloc((size_t)s->count * 6 * sizeof *xy) : NULL;
         if (s->count && !xy)
@@ -868,7 +929,7 @@ static int projected_faces(const soup *s, int convex, twod_region *out)
         twod_free(&hull);
         return ok;
     }
-    return up_faces(s, 0, out);
+    return up_faces(s, 0, plane, out);
 }
 
 /* ---- the walk ---- */
@@ -1025,6 +1086,11 @@ static sc_status leaf(pwalk *w, const model_node *n, const affine *m, int depth,
     if (st == SC_OK && since && !meshed && s.count)
         st = snap_soup(w, n, since, &s);
     w->solid |= s.count && !w->booleans;
+    /* the planes of the leaf's own frame, for a closed mesh's faces */
+    uint32_t *plane = NULL;
+    if (st == SC_OK && s.count && !w->cut && !s.open && !convex_leaf(n->kind) &&
+        !(plane = same_plane(&s)))
+        st = err_nomem(w->c->error, &n->loc);
     if (st == SC_OK && s.count) {
         int flip = affine_det(m) < 0;
         for (uint32_t t = 0; t < s.count; t++) {
@@ -1036,13 +1102,14 @@ static sc_status leaf(pwalk *w, const model_node *n, const affine *m, int depth,
             v[2] = flip ? b : c;
         }
         int ok = w->cut ? section_loops(&s, 1, out) && section_loops(&s, 0, out)
-                        : projected_faces(&s, convex_leaf(n->kind), out);
+                        : projected_faces(&s, convex_leaf(n->kind), plane, out);
         if (!ok)
             st = add_error(w, out);
     } else if (st == SC_OK && !w->cut && n->kind == MODEL_POLYHEDRON &&
                n->u.polyhedron.face_count && !face_outlines(n, m, out)) {
         st = err_nomem(w->c->error, &n->loc); /* a polyhedron without volume */
     }
+    free(plane);
     free(s.v);
     return st;
 }

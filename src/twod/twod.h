@@ -127,8 +127,8 @@ int twod_clip_offset(const twod_region *in, double delta, twod_join join,
  * outside. */
 int twod_clip_union_nonzero(twod_region *r, int orient);
 /* The union of r's contours where their winding number is positive, each
- * keeping its direction, in place: a face's fan of triangles that overlap,
- * some wound back, whose signed sum is the face. */
+ * keeping its direction, in place, strictly simple: a face's fan of
+ * triangles that overlap, some wound back, whose signed sum is the face. */
 int twod_clip_union_positive(twod_region *r);
 /* OpenSCAD's 2D minkowski of count >= 2 regions (NULL entries are empty
  * children, which it skips after the first). out is replaced. */

@@ -356,6 +356,11 @@ extern "C" int twod_clip_union_positive(twod_region *r)
 {
     return guarded([&] {
         ClipperLib::Clipper clipper;
+        /* strictly simple: a contour that touches itself (a bridge out to
+         * a hole) would lose its spikes to to_region's CleanPolygon, and a
+         * hole left without the part it took out of would fill under a
+         * later non-zero union */
+        clipper.StrictlySimple(true);
         clipper.AddPaths(to_paths(*r, true), ClipperLib::ptSubject, true);
         PolyTree result;
         clipper.Execute(ClipperLib::ctUnion, result, ClipperLib::pftPositive,
