@@ -117,14 +117,14 @@ int twod_clip_apply(twod_region *const *children, uint32_t count, twod_op op,
  * 1000000 as OpenSCAD fixes it. out is replaced. */
 int twod_clip_offset(const twod_region *in, double delta, twod_join join,
                      double arc_tolerance, twod_region *out);
-/* The non-zero union of r's contours, in place. With orient 1, each
- * contour is turned counter-clockwise first: OpenSCAD's union of a mesh's
- * faces projected onto z = 0 (down-facing faces project clockwise),
- * strictly simple as it asks; 2, the same without the turn (contours
- * counter-clockwise already, and the holes of faces: projection(cut =
- * false)). With 0, the contours keep their direction: the oriented loops
- * of a section, whose winding numbers sum to 1 inside the solid and 0
- * outside. */
+/* The non-zero union of r's contours, in place, strictly simple. With
+ * orient 1, each contour is turned counter-clockwise first: OpenSCAD's
+ * union of a mesh's faces projected onto z = 0 (down-facing faces
+ * project clockwise), strictly simple as it asks; 2, the same without the
+ * turn (contours counter-clockwise already, and the holes of faces:
+ * projection(cut = false)). With 0, the contours keep their direction:
+ * the oriented loops of a section, whose winding numbers sum to 1 inside
+ * the solid and 0 outside. */
 int twod_clip_union_nonzero(twod_region *r, int orient);
 /* The union of r's contours where their winding number is positive, each
  * keeping its direction, in place, strictly simple: a face's fan of

@@ -336,16 +336,19 @@ extern "C" int twod_clip_union_nonzero(twod_region *r, int orient)
         ClipperLib::Clipper clipper;
         clipper.AddPaths(to_paths(*r, orient != 1), ClipperLib::ptSubject, true);
         PolyTree result;
-        if (orient) {
-            /* as OpenSCAD: the faces' union, then that union made strictly
-             * simple (strict on every face at once is far slower) */
-            Paths united;
-            clipper.Execute(ClipperLib::ctUnion, united, ClipperLib::pftNonZero,
-                            ClipperLib::pftNonZero);
-            clipper.Clear();
-            clipper.StrictlySimple(true);
-            clipper.AddPaths(united, ClipperLib::ptSubject, true);
-        }
+        /* as OpenSCAD: the faces' union, then that union made strictly
+         * simple (strict on every face at once is far slower). A
+         * section's loops take the second pass too: where two loops run
+         * along one line the other way (a cap's outline and its hole, cut
+         * across), the first union can join the parts on either side of
+         * the hole by a bridge of no width, which only the second takes
+         * apart, as OpenSCAD's exact section has them */
+        Paths united;
+        clipper.Execute(ClipperLib::ctUnion, united, ClipperLib::pftNonZero,
+                        ClipperLib::pftNonZero);
+        clipper.Clear();
+        clipper.StrictlySimple(true);
+        clipper.AddPaths(united, ClipperLib::ptSubject, true);
         clipper.Execute(ClipperLib::ctUnion, result, ClipperLib::pftNonZero,
                         ClipperLib::pftNonZero);
         to_region(result, r);
