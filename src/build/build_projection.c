@@ -1040,7 +1040,9 @@ static sc_status snap_soup(const pwalk *w, const model_node *n, const affine *si
  * projects a mesh (PolysetUtils::project): each face's outline, turned
  * counter-clockwise, a face without area left out; the projection unites
  * them. For a polyhedron without volume (a sheet given both ways), of
- * which the mesh builder makes no triangles. 0 when memory runs out. */
+ * which the mesh builder makes no triangles, and one with a face out of
+ * its plane (warped_face), whose outline is not the union of the
+ * triangles it is split into. 0 when memory runs out. */
 static int face_outlines(const model_node *n, const affine *m, twod_region *out)
 {
     const vec3 *points = n->u.polyhedron.points;
@@ -1066,6 +1068,39 @@ static int face_outlines(const model_node *n, const affine *m, twod_region *out)
         twod_end_contour(out);
     }
     return 1;
+}
+
+/* Whether a face of polyhedron n (four points or more) leaves its plane:
+ * a point farther than 1e-9 of the face's size from the plane through
+ * its first point across its Newell normal. */
+static int warped_face(const model_node *n)
+{
+    const vec3 *points = n->u.polyhedron.points;
+    const uint32_t *index = n->u.polyhedron.indices;
+    const uint32_t *start = n->u.polyhedron.face_start;
+    for (uint32_t f = 0; f < n->u.polyhedron.face_count; f++) {
+        uint32_t s = start[f], e = start[f + 1];
+        if (e - s < 4)
+            continue;
+        vec3 normal = v3(0, 0, 0);
+        double size = 0;
+        for (uint32_t i = s; i < e; i++) {
+            vec3 a = points[index[i]], b = points[index[i + 1 < e ? i + 1 : s]];
+            normal =
+                v3_add(normal, v3((a.y - b.y) * (a.z + b.z), (a.z - b.z) * (a.x + b.x),
+                                  (a.x - b.x) * (a.y + b.y)));
+            size = fmax(size, v3_max_abs(v3_sub(a, points[index[s]])));
+        }
+        double length = v3_length(normal);
+        if (!(length > 0))
+            continue;
+        normal = v3_scale(normal, 1 / length);
+        for (uint32_t i = s + 1; i < e; i++)
+            if (fabs(v3_dot(normal, v3_sub(points[index[i]], points[index[s]]))) >
+                1e-9 * size)
+                return 1;
+    }
+    return 0;
 }
 
 /* Adds leaf n's loops (cut) or projected faces to out. */
@@ -1101,8 +1136,13 @@ static sc_status leaf(pwalk *w, const model_node *n, const affine *m, int depth,
             v[1] = flip ? c : b;
             v[2] = flip ? b : c;
         }
+        /* a polyhedron's face out of its plane projects as OpenSCAD
+         * projects it, its outline whole, not as the triangles it is
+         * split into: then every face's outline (face_outlines) */
         int ok = w->cut ? section_loops(&s, 1, out) && section_loops(&s, 0, out)
-                        : projected_faces(&s, convex_leaf(n->kind), plane, out);
+                 : n->kind == MODEL_POLYHEDRON && !s.open && warped_face(n)
+                     ? face_outlines(n, m, out)
+                     : projected_faces(&s, convex_leaf(n->kind), plane, out);
         if (!ok)
             st = add_error(w, out);
     } else if (st == SC_OK && !w->cut && n->kind == MODEL_POLYHEDRON &&
