@@ -429,13 +429,16 @@ done
 # The box as written beside a child that is no solid, which OpenSCAD's
 # union leaves out (applyToChildren3D's actual children): an empty cube, a
 # 2D square, and operations whose geometry is empty: a group of an empty
-# cube, a difference whose first child is one. The union has one solid,
+# cube, a difference whose first child is one, an extrusion of an empty
+# square, a revolution of a circle of no radius. The union has one solid,
 # which it passes on as it is: no CGAL operation takes the box, and it is
 # drawn.
 for other in "empty cube(size = [0, 1, 1], center = false);" \
     "2d square(size = [1, 1], center = false);" \
     "group group() { cube(size = [0, 1, 1], center = false); }" \
-    "diff difference() { cube(size = [1, 0, 1], center = false); cube(size = [1, 1, 1], center = false); }"; do
+    "diff difference() { cube(size = [1, 0, 1], center = false); cube(size = [1, 1, 1], center = false); }" \
+    "extrude linear_extrude(height = 1, center = false, convexity = 1, scale = [1, 1], \$fn = 0, \$fa = 12, \$fs = 2) { square(size = [0, 1], center = false); }" \
+    "revolve rotate_extrude(angle = 360, convexity = 1, \$fn = 0, \$fa = 12, \$fs = 2) { group() { circle(r = 0); } }"; do
     cat >"box-${other%% *}.csg" <<CSG
 union() {
 	polyhedron(points = $box_points, faces = $box_faces, convexity = 1);
@@ -553,6 +556,8 @@ builder_cases=(
     "box-2d.csg|2.5,2.5,1|in|box-2d.csg:3:2: warning: Mixing 2D and 3D objects is not supported|"
     "box-group.csg|2.5,2.5,1|in|box-group.csg:3:12: warning: cube with a zero, negative or non-finite size is empty|"
     "box-diff.csg|2.5,2.5,1|in|box-diff.csg:3:17: warning: cube with a zero, negative or non-finite size is empty|"
+    "box-extrude.csg|2.5,2.5,1|in|box-extrude.csg:3:2: warning: linear_extrude without height or area is empty|"
+    "box-revolve.csg|2.5,2.5,1|in|box-revolve.csg:3:2: warning: rotate_extrude without area is empty|"
     "plane-hull.csg|0.5,0.5,0.5|out|plane-hull.csg:3:3: warning: polyhedron has a face out of its plane at point 1 (CGAL's assertion ss_circle.has_on(sp_0) fails there, and OpenSCAD does not triangulate and try again); left out, as OpenSCAD leaves it out (\"$assertion\")|^ERROR: $assertion"
     "plane-mink.csg|0.95,0.1,0.5|in||"
     "plane-off.csg|0.5,0.5,0.5|out|plane-off.csg:2:16: warning: imported mesh has a face out of its plane at (0, 0, 1) (CGAL's assertion ss_circle.has_on(sp_0) fails there, and OpenSCAD does not triangulate and try again); left out, as OpenSCAD leaves it out (\"$assertion\")|^ERROR: $assertion"

@@ -272,6 +272,64 @@ static build_presence extrusion(const model_node *n, uint32_t count, int empty)
 
 static build_presence presence(const model_node *n, int in_2d, int depth);
 
+static int counted(const model_node *k)
+{
+    return !(k->modifiers & (MODEL_MOD_DISABLE | MODEL_MOD_BACKGROUND));
+}
+
+/* Whether OpenSCAD 2021.01's polygon of 2D node n is known from its
+ * arguments alone to be empty (primitives.cc): a square of a size that is
+ * not positive and finite, a circle of a radius that is not, a polygon
+ * of two points or fewer without paths or with one it cannot read, text
+ * without characters, a multmatrix removed for a nan or inf entry; a
+ * group, union, colour, transform, offset or hull whose children all are
+ * (none counted included), a difference whose first child is, an
+ * intersection with one that is. Anything else is not known to be. */
+static int twod_empty(const model_node *n, int depth)
+{
+    if (n->pending || depth > TWOD_WALK_MAX_DEPTH)
+        return 0;
+    switch (n->kind) {
+    case MODEL_SQUARE:
+        return !(n->u.square->sx > 0 && n->u.square->sy > 0 && !isinf(n->u.square->sx) &&
+                 !isinf(n->u.square->sy));
+    case MODEL_CIRCLE: {
+        double r = n->u.circle->has_d ? n->u.circle->d / 2 : n->u.circle->r;
+        return !(r > 0 && !isinf(r));
+    }
+    case MODEL_POLYGON: /* with no paths, a polygon of two points or fewer */
+        return n->u.polygon->bad_point ||
+               (n->u.polygon->path_count == 0 && n->u.polygon->point_count < 3);
+    case MODEL_TEXT:
+        return n->u.text->length == 0;
+    case MODEL_XFORM:
+        if (n->not_finite) /* removed (model.h) */
+            return 1;
+        /* fall through */
+    case MODEL_UNION:
+    case MODEL_COLOR:
+    case MODEL_OFFSET:
+    case MODEL_HULL:
+        for (const model_node *k = n->first_child; k; k = k->next)
+            if (counted(k) && !twod_empty(k, depth + 1))
+                return 0;
+        return 1;
+    case MODEL_DIFFERENCE:
+    case MODEL_INTERSECTION:
+        for (const model_node *k = n->first_child; k; k = k->next) {
+            if (!counted(k))
+                continue;
+            if (twod_empty(k, depth + 1))
+                return 1;
+            if (n->kind == MODEL_DIFFERENCE)
+                return 0;
+        }
+        return 1;
+    default:
+        return 0;
+    }
+}
+
 /* A 3D operation's children that count (neither '%' nor '*', nor 2D,
  * which it ignores, nor shading nodes), folded one by one. */
 typedef struct presence_fold {
@@ -346,10 +404,12 @@ static build_presence presence(const model_node *n, int in_2d, int depth)
         return n->u.polyhedron.face_count ? BUILD_SOME : BUILD_EMPTY;
     case MODEL_LINEAR_EXTRUDE:
     case MODEL_ROTATE_EXTRUDE: {
-        uint32_t count = 0; /* its children taken as not empty */
-        for (const model_node *k = n->first_child; k; k = k->next)
-            count += !(k->modifiers & (MODEL_MOD_DISABLE | MODEL_MOD_BACKGROUND));
-        return extrusion(n, count, 0);
+        uint32_t count = 0, empty = 0; /* its children, and those known empty */
+        for (const model_node *k = n->first_child; k; k = k->next) {
+            count += counted(k);
+            empty += counted(k) && twod_empty(k, depth + 1);
+        }
+        return extrusion(n, count, count && empty == count);
     }
     case MODEL_XFORM:
         if (n->not_finite) /* removed: no geometry (model.h) */
