@@ -331,6 +331,29 @@ minkowski(convexity = 0) {
 	}
 }
 CSG
+# The same pinched prism as an operand of an intersection, under hull()
+# and under projection() (extruded): OpenSCAD's CGAL takes no Nef
+# polyhedron of it, so the intersection is empty, and so are the hull and
+# the projection, which took the cube alone, without a warning.
+pinched_in_cube='intersection() {
+		linear_extrude(height = 1, center = false, convexity = 1, scale = [1, 1], $fn = 0, $fa = 12, $fs = 2) {
+			square(size = [1, 1], center = false);
+			multmatrix([[1, 0, 0, 1], [0, 1, 0, 1], [0, 0, 1, 0], [0, 0, 0, 1]]) square(size = [1, 1], center = false);
+		}
+		cube(size = [2, 2, 2], center = false);
+	}'
+cat >hull-pinched.csg <<CSG
+hull() {
+	$pinched_in_cube
+}
+CSG
+cat >projection-pinched.csg <<CSG
+linear_extrude(height = 1, center = false, convexity = 1, scale = [1, 1], \$fn = 0, \$fa = 12, \$fs = 2) {
+projection(cut = false, convexity = 0) {
+	$pinched_in_cube
+}
+}
+CSG
 cat >mink-one-cut.csg <<CSG
 difference() {
 	minkowski(convexity = 0) {
@@ -565,6 +588,8 @@ builder_cases=(
     "mink-dup-stl.csg|1.5,1.05,1.05|in||"
     "opposite.csg|0.5,0.5,0.5|in||"
     "opposite.csg|3.5,0.5,0.5|in||"
+    "hull-pinched.csg|1.5,0.5,0.5|out|hull-pinched.csg:3:3: warning: linear_extrude is not closed (edge (1, 1, 0)-(1, 1, 1) is used by 4 faces); left out, as OpenSCAD leaves it out (\"$not_closed\")|^ERROR: The given mesh is not closed"
+    "projection-pinched.csg|1.5,0.5,0.5|out|projection-pinched.csg:4:3: warning: linear_extrude is not closed (edge (1, 1, 0)-(1, 1, 1) is used by 4 faces); left out, as OpenSCAD leaves it out (\"$not_closed\")|^ERROR: The given mesh is not closed"
     "mink-one-cut.csg|1.5,1.5,0.5|out|mink-one-cut.csg:3:3: warning: linear_extrude is not closed (edge (1, 1, 0)-(1, 1, 1) is used by 4 faces); left out, as OpenSCAD leaves it out (\"$not_closed\")|^ERROR: The given mesh is not closed"
     "off-twice.csg|0.5,0.5,0.5|out|off-twice.csg:2:16: warning: import: 'twice.off' is not a mesh CGAL's OFF reader takes (line 17: face 7: CGAL's builder says \"facet 6 shares a halfedge from vertex 0 to vertex 1 with facet 0\"); the import is empty, as OpenSCAD reads nothing from it (--strict makes it an error)|input error: facet 6 shares a halfedge"
     "off-ends.csg|0.1,0.1,0.1|in||"

@@ -1589,6 +1589,16 @@ static sc_status nef_node(const walk *w, const model_node *n, const affine *m, i
         free(parts.items);
         return st;
     }
+    if ((kind == MODEL_LINEAR_EXTRUDE || kind == MODEL_ROTATE_EXTRUDE) && !w->check) {
+        /* CGAL's builder takes OpenSCAD's mesh of an extrusion, or not (a
+         * pinched profile): then it is left out, with the warning, as from
+         * a union (mesh_prim's check); the faces below are taken unchecked */
+        prim p;
+        const char *left_out = NULL;
+        if ((st = mesh_prim(&cgal, n, &p, &left_out)) != SC_OK ||
+            (left_out && !left_out[0]))
+            return st;
+    }
     if (is_mesh(kind)) {
         build_mesh_faces faces;
         const char *empty = NULL;
