@@ -279,7 +279,10 @@ static int mesh_soup(const prim *p, soup *s)
  * meshes, the extrusions' as in --faithful (OpenSCAD's polygons). Without
  * cut, a polyhedron or import that is not closed is projected as it is,
  * silently, in both modes (and with --strict): OpenSCAD 2021.01 projects
- * the faces of the mesh it has without asking that it be closed. A cut
+ * the faces of the mesh it has without asking that it be closed, except
+ * in a union of several, which it makes a Nef polyhedron of: there a mesh
+ * CGAL's builder does not take (an extrusion's too) is left out with its
+ * message as a warning, in both modes, as in a cut. A cut
  * needs a solid: a polyhedron (its points merged first, as OpenSCAD merges
  * them for its Nef polyhedron) or import that is not closed (for a
  * polyhedron, also one whose faces at a point make two fans) is left out
@@ -292,11 +295,17 @@ static sc_status leaf_mesh(const pwalk *w, const build_ctx *c, const model_node 
 {
     if (n->pending)
         return build_pending(c, n);
+    int solid = w->cut && !w->corners;
+    /* OpenSCAD makes a Nef polyhedron of the mesh for a cut, and of a
+     * union of several (w->since) without one: there CGAL's builder must
+     * take it, and one it does not is left out with its warning, in both
+     * modes; elsewhere OpenSCAD projects the mesh as it is */
+    int nef = !w->corners && (w->cut || w->since);
     build_ctx fc = *c;
     fc.faithful = 1;
-    int solid = w->cut && !w->corners;
-    build_ctx cut = *c; /* a cut needs the polyhedron's Nef polyhedron, in
-                         * both modes, as CGAL's builder takes it */
+    fc.drawn_as_is &= !nef;
+    build_ctx cut = *c; /* the polyhedron's Nef polyhedron, as CGAL's
+                         * builder takes it */
     cut.faithful = 1;
     cut.drawn_as_is = 0;
     build_ctx loose = *c; /* the parity rule, without a warning */
@@ -328,16 +337,16 @@ static sc_status leaf_mesh(const pwalk *w, const build_ctx *c, const model_node 
             build_mesh_faces_free(&f);
             break;
         }
-        st = build_mesh_prim(&loose, &n->loc, "polyhedron", 1, n->u.polyhedron.points,
-                             n->u.polyhedron.point_count, n->u.polyhedron.indices,
-                             n->u.polyhedron.face_start, n->u.polyhedron.face_count, &p,
-                             &empty);
+        st = build_mesh_prim(nef ? &cut : &loose, &n->loc, "polyhedron", 1,
+                             n->u.polyhedron.points, n->u.polyhedron.point_count,
+                             n->u.polyhedron.indices, n->u.polyhedron.face_start,
+                             n->u.polyhedron.face_count, &p, &empty);
         break;
     case MODEL_IMPORT: {
         build_ctx ic = *c;
         ic.moved = moved;
-        st = solid ? build_import(&ic, n->u.import, &p, &empty)
-                   : build_import_mesh(c, n->u.import, &p, &empty);
+        st = nef ? build_import(&ic, n->u.import, &p, &empty)
+                 : build_import_mesh(c, n->u.import, &p, &empty);
         break;
     }
     case MODEL_SURFACE:
@@ -1138,14 +1147,16 @@ static sc_status leaf(pwalk *w, const model_node *n, const affine *m, int depth,
         }
         /* a polyhedron's face out of its plane projects as OpenSCAD
          * projects it, its outline whole, not as the triangles it is
-         * split into: then every face's outline (face_outlines) */
+         * split into: then every face's outline (face_outlines); in a
+         * union of several OpenSCAD projects the triangles of CGAL's
+         * Nef polyhedron of it */
         int ok = w->cut ? section_loops(&s, 1, out) && section_loops(&s, 0, out)
-                 : n->kind == MODEL_POLYHEDRON && !s.open && warped_face(n)
+                 : n->kind == MODEL_POLYHEDRON && !w->since && !s.open && warped_face(n)
                      ? face_outlines(n, m, out)
                      : projected_faces(&s, convex_leaf(n->kind), plane, out);
         if (!ok)
             st = add_error(w, out);
-    } else if (st == SC_OK && !w->cut && n->kind == MODEL_POLYHEDRON &&
+    } else if (st == SC_OK && !w->cut && !w->since && n->kind == MODEL_POLYHEDRON &&
                n->u.polyhedron.face_count && !face_outlines(n, m, out)) {
         st = err_nomem(w->c->error, &n->loc); /* a polyhedron without volume */
     }
