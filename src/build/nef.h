@@ -55,10 +55,10 @@ typedef struct nef_plugin {
      * and holes, in one plane, none crossing another), or loop f alone
      * when face_loops is NULL. Points at the same position are merged,
      * faces are triangulated (a face of several loops by the even-odd
-     * rule) and the orientation is made outward, so either winding is
-     * taken. The faces must not overlap one another: a fan of a face that
-     * is not convex does, and so do a face and its hole given as two
-     * faces. */
+     * rule) and the orientation is made inward, as OpenSCAD hands CGAL
+     * its meshes, so either winding is taken. The faces must not overlap
+     * one another: a fan of a face that is not convex does, and so do a
+     * face and its hole given as two faces. */
     nef_status (*from_mesh)(const double *points, uint32_t point_count,
                             const uint32_t *indices, const uint32_t *loop_start,
                             const uint32_t *face_loops, uint32_t face_count,

@@ -2,16 +2,17 @@
 //
 // Solids are CGAL Nef polyhedra over the exact-constructions kernel, as
 // OpenSCAD 2021.01 builds the booleans under a hull() or minkowski(): a
-// polygon mesh becomes a surface mesh (points at one position merged, faces
-// triangulated, oriented outward) and then a Nef polyhedron; booleans are
-// Nef's; hull() takes every vertex of the result (OpenSCAD's applyHull);
-// minkowski() takes the vertices of each volume of CGAL's convex
-// decomposition (OpenSCAD's applyMinkowski). Coordinates are exact inside
+// polygon mesh becomes a surface mesh (points at one position merged,
+// faces triangulated, wound inward as OpenSCAD winds them) and then a Nef
+// polyhedron; booleans are Nef's; hull() takes every vertex of the result
+// (OpenSCAD's applyHull); minkowski() takes the vertices of each volume of
+// CGAL's convex decomposition (OpenSCAD's applyMinkowski). Coordinates are exact inside
 // and rounded to doubles only on the way out, as OpenSCAD rounds them.
 //
 // Every entry point catches what CGAL throws (failed preconditions on a
-// mesh that is not a valid solid, bad_alloc) and returns it as a status
-// with a message.
+// mesh that is not a valid solid, failed assertions, which are on in
+// every build type as in OpenSCAD's CGAL, bad_alloc) and returns it as a
+// status with a message.
 // CGAL's headers are built with our warning flags: at -O3 (a Release
 // build), GCC 12 reports -Wmaybe-uninitialized inside CGAL's
 // chained_map.h, instantiated by convex_decomposition_3, which
@@ -395,7 +396,14 @@ spancast_nef_from_mesh(const double *points, uint32_t point_count,
             if (!CGAL::is_closed(mesh) || !CGAL::is_valid_polygon_mesh(mesh))
                 throw bad_mesh("the mesh is not closed");
             PMP::triangulate_faces(mesh);
-            if (!PMP::is_outward_oriented(mesh))
+            // Wound inward, as OpenSCAD hands CGAL every mesh: its builder
+            // (CGAL_Build_PolySet) reverses each polygon of a PolySet, whose
+            // polygons face outward. The Nef polyhedron of a closed mesh that
+            // does not cross itself is the same either way; of one that does
+            // (a thin twisted extrusion), the outward one made a structure on
+            // which the next boolean crashed inside CGAL, where OpenSCAD's
+            // inward one gives the solid OpenSCAD renders.
+            if (PMP::is_outward_oriented(mesh))
                 PMP::reverse_face_orientations(mesh);
             *out = new nef_solid{Nef(mesh)};
         },
