@@ -10,6 +10,7 @@
 #include <cmocka.h>
 
 #include <math.h>
+#include <pthread.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -285,6 +286,79 @@ static void test_hull_boolean_once(void **state)
         0, twice, 4);
     assert_true(inside(s, 3.5, 1, 1));
     sc_scene_release(s);
+}
+
+/* Loads on several threads at once, each with its CGAL boolean under a
+ * hull, make the solid a load alone makes. The CGAL plugin is built
+ * without CGAL's own thread safety and lets one thread at a time in
+ * (guarded.h); a race there need not show in one run, so this checks the
+ * outcome, not the lock. */
+static const char booleans_text[] =
+    "hull() { difference() { sphere(10, $fn = 24); multmatrix([[1, 0, 0, 5], "
+    "[0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]) sphere(8, $fn = 24); } }";
+
+enum { PROBES = 9 };
+
+typedef struct booleans_result {
+    bbox bounds;
+    int inside[PROBES * PROBES];
+    int failed;
+} booleans_result;
+
+static void booleans_probe(booleans_result *r)
+{
+    /* no cmocka check on these threads: a failure is recorded for the
+     * main thread to report */
+    sc_scene *s = NULL;
+    sc_error e;
+    sc_load_options o;
+    sc_load_options_init(&o);
+    if (sc_scene_load_string("m.csg", booleans_text, strlen(booleans_text), &o, &s, &e) !=
+        SC_OK) {
+        r->failed = 1;
+        return;
+    }
+    r->bounds = scene_tree(s)->bounds;
+    for (int i = 0; i < PROBES; i++)
+        for (int j = 0; j < PROBES; j++)
+            r->inside[i * PROBES + j] = inside(s, -11 + 22.0 * i / (PROBES - 1), 0.3,
+                                               -11 + 22.0 * j / (PROBES - 1));
+    sc_scene_release(s);
+}
+
+static void *booleans_thread(void *arg)
+{
+    booleans_result *r = arg;
+    for (int k = 0; k < 2; k++)
+        booleans_probe(&r[k]);
+    return NULL;
+}
+
+static void test_hull_booleans_threads(void **state)
+{
+    (void)state;
+    booleans_result alone;
+    memset(&alone, 0, sizeof alone);
+    booleans_probe(&alone);
+    assert_false(alone.failed);
+    int in = 0;
+    for (int k = 0; k < PROBES * PROBES; k++)
+        in += alone.inside[k];
+    assert_true(in > 0 && in < PROBES * PROBES); /* the probes see the solid's side */
+    enum { THREADS = 4 };
+    booleans_result got[THREADS][2];
+    memset(got, 0, sizeof got);
+    pthread_t thread[THREADS];
+    for (int t = 0; t < THREADS; t++)
+        assert_int_equal(pthread_create(&thread[t], NULL, booleans_thread, got[t]), 0);
+    for (int t = 0; t < THREADS; t++)
+        assert_int_equal(pthread_join(thread[t], NULL), 0);
+    for (int t = 0; t < THREADS; t++)
+        for (int k = 0; k < 2; k++) {
+            assert_false(got[t][k].failed);
+            assert_memory_equal(&got[t][k].bounds, &alone.bounds, sizeof alone.bounds);
+            assert_memory_equal(got[t][k].inside, alone.inside, sizeof alone.inside);
+        }
 }
 
 static void test_hull_empty(void **state)
@@ -977,6 +1051,7 @@ int main(void)
         cmocka_unit_test(test_hull_errors),
         cmocka_unit_test(test_hull_booleans),
         cmocka_unit_test(test_hull_boolean_once),
+        cmocka_unit_test(test_hull_booleans_threads),
         cmocka_unit_test(test_hull_empty),
         cmocka_unit_test(test_minkowski),
         cmocka_unit_test(test_minkowski_union),

@@ -4,10 +4,18 @@
 #define SPANCAST_BUILD_CGAL_GUARDED_H
 
 #include <cstdio>
+#include <mutex>
 #include <new>
 #include <stdexcept>
 
 #include "build/nef.h"
+
+// The lock every entry point holds while it runs. The plugin is built
+// without CGAL's own thread safety (CGAL_HAS_NO_THREADS: its lazy exact
+// numbers otherwise take a call_once, a futex, at every exact evaluation,
+// which with CGAL's assertions on doubled the time of a boolean), so two
+// threads that load models at once take turns here instead.
+std::mutex &spancast_cgal_lock();
 
 namespace
 {
@@ -26,6 +34,7 @@ inline nef_status fail(nef_status status, const char *what, char *err, size_t er
 // Runs f, turning what it throws into a status.
 template <class F> nef_status guarded(F f, char *err, size_t err_size)
 {
+    std::lock_guard<std::mutex> hold(spancast_cgal_lock());
     try {
         f();
         return NEF_OK;

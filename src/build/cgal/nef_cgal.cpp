@@ -334,6 +334,12 @@ struct nef_solid {
     Nef nef;
 };
 
+std::mutex &spancast_cgal_lock()
+{
+    static std::mutex lock;
+    return lock;
+}
+
 extern "C" {
 
 __attribute__((visibility("default"))) nef_status
@@ -548,6 +554,7 @@ spancast_nef_transform(nef_solid *s, const double m[12], char *err, size_t err_s
 
 __attribute__((visibility("default"))) int spancast_nef_is_empty(const nef_solid *s)
 {
+    std::lock_guard<std::mutex> hold(spancast_cgal_lock());
     return s->nef.is_empty();
 }
 
@@ -625,6 +632,7 @@ spancast_nef_triangles(const nef_solid *s, nef_parts *out, char *err, size_t err
 
 __attribute__((visibility("default"))) void spancast_nef_release(nef_solid *s)
 {
+    std::lock_guard<std::mutex> hold(spancast_cgal_lock());
     delete s;
 }
 }
