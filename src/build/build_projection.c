@@ -7,7 +7,9 @@
  * outward triangles in the projection's frame: a cube its 6 quads; a
  * sphere and a cylinder the rings and circles of their $fn, $fa, $fs
  * (faithful.c's rule); a polyhedron its faces (build_mesh.c's fans); an
- * import, surface and the extrusions their --faithful meshes. A
+ * import and surface their --faithful meshes; the extrusions, projected,
+ * the faces of their --faithful meshes, each cap one face with its holes
+ * (faces_soup), and cut, their meshes. A
  * transform with a negative determinant turns the triangles back outward.
  * A polyhedron or import that is not closed is projected as it is, every
  * face (it has no outward side), silently, as OpenSCAD projects any
@@ -82,6 +84,7 @@
 
 #include "base/error.h"
 #include "base/grow.h"
+#include "build/build_extrude_faithful.h"
 #include "build/build_hull.h"
 #include "build/build_mesh.h"
 #include "build/build_revolve.h"
@@ -105,6 +108,10 @@ typedef struct soup {
     vec3 *v;
     uint32_t count, cap; /* in triangles */
     int open;            /* from a mesh that is not closed: not outward */
+    /* per triangle, the first triangle of the builder's face it was cut
+     * from (an extrusion's cap with its holes is one face), or NULL where
+     * each face is taken by its shared corners (up_faces) */
+    uint32_t *face;
 } soup;
 
 typedef struct pwalk {
@@ -262,6 +269,45 @@ static sc_status cylinder_soup(const pwalk *w, const model_node *n, soup *s)
 }
 
 /* The triangles of a mesh leaf (outward, as prim_mesh keeps them). */
+/* The faces of an extrusion (build_linear_extrude_faces,
+ * build_rotate_extrude_faces) as s's triangles: each loop in a fan, which,
+ * like the leaf's own triangles, sums to the loop's signed area; every
+ * triangle of one face, its outline and holes, keyed to the face in
+ * s->face. 0 when memory runs out. */
+static int faces_soup(const build_mesh_faces *f, soup *s)
+{
+    uint32_t loops = f->face_loops ? f->face_loops[f->face_count] : f->face_count;
+    size_t total = s->count;
+    for (uint32_t l = 0; l < loops; l++) {
+        uint32_t len = f->face_start[l + 1] - f->face_start[l];
+        total += len > 2 ? len - 2 : 0;
+    }
+    if (total > UINT32_MAX / 3)
+        return 0;
+    uint32_t *face = realloc(s->face, (total ? total : 1) * sizeof *face);
+    if (!face)
+        return 0;
+    s->face = face;
+    for (uint32_t t = 0; t < s->count; t++)
+        face[t] = t;
+    for (uint32_t k = 0; k < f->face_count; k++) {
+        uint32_t first = s->count;
+        uint32_t lo = f->face_loops ? f->face_loops[k] : k;
+        uint32_t hi = f->face_loops ? f->face_loops[k + 1] : k + 1;
+        for (uint32_t l = lo; l < hi; l++) {
+            const uint32_t *loop = f->indices + f->face_start[l];
+            uint32_t len = f->face_start[l + 1] - f->face_start[l];
+            for (uint32_t i = 1; i + 1 < len; i++) {
+                if (!add_tri(s, f->points[loop[0]], f->points[loop[i]],
+                             f->points[loop[i + 1]]))
+                    return 0;
+                face[s->count - 1] = first;
+            }
+        }
+    }
+    return 1;
+}
+
 static int mesh_soup(const prim *p, soup *s)
 {
     if (p->kind != PRIM_MESH)
@@ -304,10 +350,10 @@ static sc_status leaf_mesh(const pwalk *w, const build_ctx *c, const model_node 
     build_ctx fc = *c;
     fc.faithful = 1;
     fc.drawn_as_is &= !nef;
-    build_ctx cut = *c; /* the polyhedron's Nef polyhedron, as CGAL's
-                         * builder takes it */
-    cut.faithful = 1;
-    cut.drawn_as_is = 0;
+    build_ctx checked = *c; /* the polyhedron's Nef polyhedron, as CGAL's
+                             * builder takes it */
+    checked.faithful = 1;
+    checked.drawn_as_is = 0;
     build_ctx loose = *c; /* the parity rule, without a warning */
     loose.faithful = 0;
     loose.strict = 0;
@@ -326,18 +372,18 @@ static sc_status leaf_mesh(const pwalk *w, const build_ctx *c, const model_node 
              * the leaf (build.c) */
             build_mesh_faces f;
             st = build_mesh_merge_moved(
-                &cut, &n->loc, 1, moved, n->u.polyhedron.points,
+                &checked, &n->loc, 1, moved, n->u.polyhedron.points,
                 n->u.polyhedron.point_count, n->u.polyhedron.indices,
                 n->u.polyhedron.face_start, n->u.polyhedron.face_count, &f);
             if (st == SC_OK && f.face_count)
-                st = build_mesh_solid(&cut, &n->loc, "polyhedron", 1, c->strict, &f, &p,
-                                      &empty);
+                st = build_mesh_solid(&checked, &n->loc, "polyhedron", 1, c->strict, &f,
+                                      &p, &empty);
             else if (st == SC_OK)
                 empty = ""; /* no face left */
             build_mesh_faces_free(&f);
             break;
         }
-        st = build_mesh_prim(nef ? &cut : &loose, &n->loc, "polyhedron", 1,
+        st = build_mesh_prim(nef ? &checked : &loose, &n->loc, "polyhedron", 1,
                              n->u.polyhedron.points, n->u.polyhedron.point_count,
                              n->u.polyhedron.indices, n->u.polyhedron.face_start,
                              n->u.polyhedron.face_count, &p, &empty);
@@ -361,7 +407,21 @@ static sc_status leaf_mesh(const pwalk *w, const build_ctx *c, const model_node 
     }
     if (st != SC_OK || empty)
         return st;
-    return mesh_soup(&p, s) ? SC_OK : err_nomem(c->error, &n->loc);
+    if (w->cut || w->corners ||
+        (n->kind != MODEL_LINEAR_EXTRUDE && n->kind != MODEL_ROTATE_EXTRUDE))
+        return mesh_soup(&p, s) ? SC_OK : err_nomem(c->error, &n->loc);
+    /* projected faces: the extrusion's own, so that a cap's holes, which
+     * look the other way, are taken with its outline (up_faces), in
+     * whatever plane it lies */
+    if (p.kind == PRIM_MESH)
+        s->open |= p.u.mesh.mesh->parity;
+    build_mesh_faces f;
+    st = n->kind == MODEL_ROTATE_EXTRUDE ? build_rotate_extrude_faces(&fc, n, &f, &empty)
+                                         : build_linear_extrude_faces(&fc, n, &f, &empty);
+    if (st == SC_OK && !empty && !faces_soup(&f, s))
+        st = err_nomem(c->error, &n->loc);
+    build_mesh_faces_free(&f);
+    return st;
 }
 
 /* leaf_mesh, where a builder's warning (a mesh left out of a cut) goes to
@@ -470,9 +530,10 @@ static sc_status hull_points(pwalk *w, const model_node *parent, const affine *m
             if (kind == MODEL_XFORM && n->not_finite) {
                 /* removed: its children's warnings first, without its
                  * check of their dimensions, then the removal (walk_node) */
-                soup scratch = {NULL, 0, 0, 0};
+                soup scratch = {NULL, 0, 0, 0, NULL};
                 st = hull_points(w, n, m, depth + 1, &scratch);
                 free(scratch.v);
+                free(scratch.face);
                 if (st == SC_OK)
                     st = build_xform_not_finite(c, n);
             } else if (st == SC_OK) {
@@ -486,7 +547,7 @@ static sc_status hull_points(pwalk *w, const model_node *parent, const affine *m
                     st = say(c, &n->loc, removal);
             }
         } else {
-            soup s = {NULL, 0, 0, 0};
+            soup s = {NULL, 0, 0, 0, NULL};
             st = leaf_soup(w, n, NULL, &s, depth + 1);
             for (uint32_t i = 0; st == SC_OK && i < 3 * s.count; i += 3) {
                 if (!add_tri(pts, affine_point(m, s.v[i]), affine_point(m, s.v[i + 1]),
@@ -494,6 +555,7 @@ static sc_status hull_points(pwalk *w, const model_node *parent, const affine *m
                     st = err_nomem(c->error, &n->loc);
             }
             free(s.v);
+            free(s.face);
         }
         if (st != SC_OK)
             return st;
@@ -510,7 +572,7 @@ static sc_status hull_points(pwalk *w, const model_node *parent, const affine *m
 static sc_status hull_soup(pwalk *w, const model_node *n, soup *s, int depth)
 {
     const build_ctx *c = w->c;
-    soup pts = {NULL, 0, 0, 0};
+    soup pts = {NULL, 0, 0, 0, NULL};
     affine id = affine_identity();
     int corners = w->corners;
     w->corners = 1;
@@ -521,6 +583,7 @@ static sc_status hull_soup(pwalk *w, const model_node *n, soup *s, int depth)
     if (st == SC_OK && pts.count)
         hs = hull3_compute(pts.v, 3 * pts.count, &h);
     free(pts.v);
+    free(pts.face);
     if (st != SC_OK || hs == HULL3_FLAT)
         return st;
     if (hs == HULL3_NOMEM)
@@ -742,13 +805,13 @@ static int add_triangle(twod_region *out, const vec3 *v)
  * is projected as they are (open: each turned counter-clockwise), one
  * with some wound back (open: after the group is turned to look up, by
  * the sign of its area) by the union of its triangles where their winding
- * number is positive. With plane, triangle t is also taken with triangle
- * plane[t] (same_plane: the faces of one plane that share no corner, a
- * cap's outline and its holes). 0 when memory runs out or the clipper
- * fails. */
-static int up_faces(const soup *s, int open, const uint32_t *plane, twod_region *out)
+ * number is positive. A closed mesh's triangle t is also taken with
+ * triangle s->face[t] (an extrusion's cap, whose outline and holes share
+ * no corner). 0 when memory runs out or the clipper fails. */
+static int up_faces(const soup *s, int open, twod_region *out)
 {
     uint32_t n = s->count;
+    const uint32_t *plane = open ? NULL : s->face;
     vec3 *normal = malloc((size_t)(n ? n : 1) * sizeof *normal);
     uint32_t *parent = malloc((size_t)(n ? n : 1) * sizeof *parent);
     build_mesh_keyed *corners = malloc((size_t)(n ? n : 1) * 3 * sizeof *corners);
@@ -850,72 +913,16 @@ static int up_faces(const soup *s, int open, const uint32_t *plane, twod_region 
     return ok;
 }
 
-typedef struct plane_key {
-    double at;      /* the coordinate the triangle's corners share */
-    uint32_t axis;  /* 0, 1 or 2: x, y or z */
-    uint32_t index; /* the triangle */
-} plane_key;
-
-static int plane_key_cmp(const void *pa, const void *pb)
-{
-    const plane_key *a = pa, *b = pb;
-    if (a->axis != b->axis)
-        return a->axis < b->axis ? -1 : 1;
-    if (a->at != b->at)
-        return a->at < b->at ? -1 : 1;
-    return a->index < b->index ? -1 : a->index > b->index;
-}
-
-/* For each triangle of s, in the leaf's own frame (before it moves), the
- * first triangle in the same plane of x, y or z equal to a constant (each
- * triangle itself where its corners share none): the faces such a plane
- * holds that share no corner, which up_faces must take together. A
- * builder writes each loop of a cap as a face of its own, the outline one
- * way and a hole the other (linear_extrude's caps, rotate_extrude's first
- * side), so a hole in the top cap looks down and takes its part out of
- * the outline's only in their union; in a builder's own frame such a cap
- * lies exactly in its plane. NULL when memory runs out. */
-static uint32_t *same_plane(const soup *s)
-{
-    uint32_t n = s->count, keyed = 0;
-    uint32_t *plane = malloc((size_t)(n ? n : 1) * sizeof *plane);
-    plane_key *key = malloc((size_t)(n ? n : 1) * sizeof *key);
-    if (!plane || !key) {
-        free(plane);
-        free(key);
-        return NULL;
-    }
-    for (uint32_t t = 0; t < n; t++) {
-        const vec3 *v = &s->v[3 * t];
-        plane[t] = t;
-        for (uint32_t axis = 0; axis < 3; axis++) {
-            double a = v3_get(v[0], (int)axis);
-            if (a == v3_get(v[1], (int)axis) && a == v3_get(v[2], (int)axis)) {
-                key[keyed++] = (plane_key){a, axis, t};
-                break;
-            }
-        }
-    }
-    if (keyed > 1)
-        qsort(key, keyed, sizeof *key, plane_key_cmp);
-    for (uint32_t i = 1; i < keyed; i++)
-        if (key[i].axis == key[i - 1].axis && key[i].at == key[i - 1].at)
-            plane[key[i].index] = plane[key[i - 1].index];
-    free(key);
-    return plane;
-}
-
 /* Adds the outline of s seen along z to out. The union of every face's
  * projection (OpenSCAD's) is, for a closed mesh, the union of its faces
  * that look up (a vertical line through the solid meets its top at such a
  * face), up to sets without area: half the faces, and no front face
  * overlapping a back one, which is what makes the clipper slow. A convex
  * leaf (convex set) is the 2D hull of its corners, the same region. */
-static int projected_faces(const soup *s, int convex, const uint32_t *plane,
-                           twod_region *out)
+static int projected_faces(const soup *s, int convex, twod_region *out)
 {
     if (s->open) /* no outward side: every face, turned counter-clockwise */
-        return up_faces(s, 1, NULL, out);
+        return up_faces(s, 1, out);
     if (convex) {
         double *xy = s->count ? malloc((size_t)s->count * 6 * sizeof *xy) : NULL;
         if (s->count && !xy)
@@ -938,7 +945,7 @@ static int projected_faces(const soup *s, int convex, const uint32_t *plane,
         twod_free(&hull);
         return ok;
     }
-    return up_faces(s, 0, plane, out);
+    return up_faces(s, 0, out);
 }
 
 /* ---- the walk ---- */
@@ -1116,7 +1123,7 @@ static int warped_face(const model_node *n)
 static sc_status leaf(pwalk *w, const model_node *n, const affine *m, int depth,
                       twod_region *out)
 {
-    soup s = {NULL, 0, 0, 0};
+    soup s = {NULL, 0, 0, 0, NULL};
     /* a leaf the cut takes: OpenSCAD makes its Nef polyhedron where its
      * points have moved to (w->since), snapped there; a polyhedron or
      * import is also split and checked there (built_soup) */
@@ -1130,11 +1137,6 @@ static sc_status leaf(pwalk *w, const model_node *n, const affine *m, int depth,
     if (st == SC_OK && since && !meshed && s.count)
         st = snap_soup(w, n, since, &s);
     w->solid |= s.count && !w->booleans;
-    /* the planes of the leaf's own frame, for a closed mesh's faces */
-    uint32_t *plane = NULL;
-    if (st == SC_OK && s.count && !w->cut && !s.open && !convex_leaf(n->kind) &&
-        !(plane = same_plane(&s)))
-        st = err_nomem(w->c->error, &n->loc);
     if (st == SC_OK && s.count) {
         int flip = affine_det(m) < 0;
         for (uint32_t t = 0; t < s.count; t++) {
@@ -1153,14 +1155,14 @@ static sc_status leaf(pwalk *w, const model_node *n, const affine *m, int depth,
         int ok = w->cut ? section_loops(&s, 1, out) && section_loops(&s, 0, out)
                  : n->kind == MODEL_POLYHEDRON && !w->since && !s.open && warped_face(n)
                      ? face_outlines(n, m, out)
-                     : projected_faces(&s, convex_leaf(n->kind), plane, out);
+                     : projected_faces(&s, convex_leaf(n->kind), out);
         if (!ok)
             st = add_error(w, out);
     } else if (st == SC_OK && !w->cut && !w->since && n->kind == MODEL_POLYHEDRON &&
                n->u.polyhedron.face_count && !face_outlines(n, m, out)) {
         st = err_nomem(w->c->error, &n->loc); /* a polyhedron without volume */
     }
-    free(plane);
+    free(s.face);
     free(s.v);
     return st;
 }
