@@ -1310,9 +1310,15 @@ static sc_status nef_leaf_mesh(const walk *w, const model_node *n, const affine 
     return st;
 }
 
-/* *acc = *acc op s, releasing s; NULL stands for the empty solid. */
-static sc_status nef_combine(const walk *w, const model_node *n, nef_solid **acc,
-                             nef_op op, nef_solid *s)
+/* *acc = *acc op s, releasing s; NULL stands for the empty solid. Where
+ * gave_up is not NULL, a boolean CGAL fails on (one of its assertions) is
+ * taken as OpenSCAD 2021.01 takes it, without --strict: its error as a
+ * warning at s's node, and *gave_up set. OpenSCAD's union
+ * (CGALUtils::applyUnion3D) is then empty; its difference or intersection
+ * (applyOperator3D) keeps the result before that operand (CGAL's failed
+ * boolean leaves it as it was) and takes no later one. */
+static sc_status nef_combine_lenient(const walk *w, const model_node *n, nef_solid **acc,
+                                     nef_op op, nef_solid *s, int *gave_up)
 {
     if (op == NEF_UNION && !*acc) {
         *acc = s;
@@ -1336,6 +1342,24 @@ static sc_status nef_combine(const walk *w, const model_node *n, nef_solid **acc
     char why[512] = "";
     nef_status ns = w->nef->apply(*acc, op, s, why, sizeof why);
     w->nef->release(s);
+    if (ns == NEF_FAILED && gave_up && !w->c->strict) {
+        *gave_up = 1;
+        if (op == NEF_UNION) {
+            w->nef->release(*acc);
+            *acc = NULL;
+            return build_note(
+                w->c, &n->loc,
+                "%s: CGAL failed on '%s': %s; the union is empty, as OpenSCAD "
+                "leaves it (\"CGAL error in CGALUtils::applyUnion3D\")",
+                w->owner, n->name, why);
+        }
+        const char *name = op == NEF_DIFFERENCE ? "difference" : "intersection";
+        return build_note(w->c, &n->loc,
+                          "%s: CGAL failed on '%s': %s; the %s is what it was before it, "
+                          "as OpenSCAD keeps it (\"CGAL error in "
+                          "CGALUtils::applyBinaryOperator %s\")",
+                          w->owner, n->name, why, name, name);
+    }
     if (ns != NEF_OK)
         return nef_error(w, n, ns, why);
     if (w->nef->is_empty(*acc)) {
@@ -1343,6 +1367,12 @@ static sc_status nef_combine(const walk *w, const model_node *n, nef_solid **acc
         *acc = NULL;
     }
     return SC_OK;
+}
+
+static sc_status nef_combine(const walk *w, const model_node *n, nef_solid **acc,
+                             nef_op op, nef_solid *s)
+{
+    return nef_combine_lenient(w, n, acc, op, s, NULL);
 }
 
 static sc_status nef_node(const walk *w, const model_node *n, const affine *m, int depth,
@@ -1392,7 +1422,7 @@ static sc_status nef_children(const walk *w, const model_node *parent, const aff
     *out = NULL;
     if (depth > BUILD_HULL_MAX_DEPTH)
         return depth_error(w, parent);
-    int first = 1;
+    int first = 1, gave_up = 0;
     const model_node *mixing = NULL; /* the first 2D child that is not empty */
     size_t mark = w->c->nefs ? build_nef_cache_mark(w->c->nefs) : 0;
     walk operands = *w; /* a boolean of several: OpenSCAD's Nef polyhedra */
@@ -1418,8 +1448,10 @@ static sc_status nef_children(const walk *w, const model_node *parent, const aff
             else
                 w->state->later_empty |= !s;
         }
-        if (st == SC_OK)
-            st = nef_combine(w, n, out, first ? NEF_UNION : op, s);
+        if (st == SC_OK && gave_up) /* OpenSCAD takes no later operand */
+            w->nef->release(s);
+        else if (st == SC_OK)
+            st = nef_combine_lenient(w, n, out, first ? NEF_UNION : op, s, &gave_up);
         first = 0;
         if (st != SC_OK) {
             if (*out)
