@@ -3,7 +3,7 @@
 // triangles, which leave the hole open, and a short sweep does not cover
 // it. Its outline and hole lie in a plane of no constant x, y or z, and
 // are taken together as the one face the builder made of them.
-// camera: 4,-6,12,4,1.5,0
+// camera: 4,-10,20,4,3,0
 linear_extrude(1) {
     projection() rotate([90, 0, 0]) rotate([0, 0, -10])
         rotate_extrude(angle = 10, $fn = 36)
