@@ -1248,10 +1248,35 @@ static sc_status nef_mesh(const walk *w, const model_node *n, const affine *m,
     return SC_OK;
 }
 
+/* Moves count points p of a mesh a CGAL operation takes, given in n's
+ * frame, where OpenSCAD 2021.01 holds them as that operation takes the
+ * mesh: through the transforms since the operation (build_mesh_since),
+ * onto its grid of 2^-20 (build_mesh_grid_align: createPolyhedronFromPolySet
+ * aligns every mesh it makes a Nef polyhedron of), and on through the rest
+ * to the walk's frame (m in all). In both modes: this path is OpenSCAD's
+ * evaluation, and a projection of it is the same in both. Where the
+ * transforms cannot be undone (a flat mesh) the points are only moved. */
+static sc_status cgal_points(const walk *w, const model_node *n, const affine *m, vec3 *p,
+                             uint32_t count)
+{
+    affine rest;
+    const affine *at = build_mesh_since(w->since, m, &rest);
+    for (uint32_t i = 0; i < count; i++)
+        p[i] = affine_point(at ? at : m, p[i]);
+    if (!at)
+        return SC_OK;
+    sc_status st = build_mesh_grid_align(w->c, &n->loc, p, count);
+    for (uint32_t i = 0; i < count; i++)
+        p[i] = affine_point(&rest, p[i]);
+    return st;
+}
+
 /* The solid of a convex point set (the hull of the points); NULL when it
- * is flat. */
-static sc_status nef_convex(const walk *w, const model_node *n, const pointset *s,
-                            nef_solid **out)
+ * is flat. m: the points are n's mesh in n's frame, its hull's corners
+ * put where CGAL takes them (cgal_points) through m; NULL: they are where
+ * they go. */
+static sc_status nef_convex(const walk *w, const model_node *n, const affine *m,
+                            const pointset *s, nef_solid **out)
 {
     *out = NULL;
     hull3 h;
@@ -1270,13 +1295,15 @@ static sc_status nef_convex(const walk *w, const model_node *n, const pointset *
     }
     for (uint32_t t = 0; t <= h.tri_count; t++)
         start[t] = 3 * t;
+    sc_status st = m ? cgal_points(w, n, m, h.vertices, h.vertex_count) : SC_OK;
     affine id = affine_identity();
     build_mesh_faces f = {.points = h.vertices,
                           .point_count = h.vertex_count,
                           .indices = h.tris,
                           .face_start = start,
                           .face_count = h.tri_count};
-    sc_status st = nef_mesh(w, n, &id, &f, out);
+    if (st == SC_OK)
+        st = nef_mesh(w, n, &id, &f, out);
     free(start);
     hull3_free(&h);
     return st;
@@ -1586,7 +1613,10 @@ static sc_status nef_node(const walk *w, const model_node *n, const affine *m, i
          * as for the leaf (build_mesh_merge), where they have moved to */
         build_mesh_faces f;
         affine rest;
-        st = build_mesh_merge_moved(c, &n->loc, 1, moved_since(w, m, &rest),
+        build_ctx snapped = *c; /* on the grid in both modes (cgal_points) */
+        snapped.faithful = 1;
+        snapped.drawn_as_is = 0;
+        st = build_mesh_merge_moved(&snapped, &n->loc, 1, moved_since(w, m, &rest),
                                     n->u.polyhedron.points, np, n->u.polyhedron.indices,
                                     n->u.polyhedron.face_start,
                                     n->u.polyhedron.face_count, &f);
@@ -1642,24 +1672,44 @@ static sc_status nef_node(const walk *w, const model_node *n, const affine *m, i
         if (st == SC_OK && !empty && kind == MODEL_IMPORT && !w->check)
             st = build_mesh_cgal_faces(c, &n->u.import->file_loc, "imported mesh", &faces,
                                        0);
-        if (st == SC_OK && !empty && faces.face_count && !w->check)
+        if (st == SC_OK && !empty && faces.face_count && !w->check &&
+            kind != MODEL_IMPORT) { /* an extrusion's or surface's, on the grid */
+            vec3 *p = malloc(((size_t)faces.point_count + 1) * sizeof *p);
+            build_mesh_faces on = faces;
+            affine id = affine_identity();
+            st = p ? SC_OK : err_nomem(c->error, &n->loc);
+            if (st == SC_OK) {
+                memcpy(p, faces.points, (size_t)faces.point_count * sizeof *p);
+                on.points = p;
+                st = cgal_points(w, n, m, p, faces.point_count);
+            }
+            if (st == SC_OK)
+                st = nef_mesh(w, n, &id, &on, out);
+            free(p);
+        } else if (st == SC_OK && !empty && faces.face_count && !w->check) {
             st = nef_mesh(w, n, &rest, &faces, out);
+        }
         build_mesh_faces_free(&faces);
         return st;
     }
-    /* The convex ones: a shape, a hull, each part of a minkowski. */
+    /* The convex ones: a shape, a hull, each part of a minkowski. A shape
+     * and a hull are OpenSCAD's meshes, in their own frame (own) and put
+     * on the grid where they have moved to (nef_convex); a minkowski's
+     * parts come through m. */
     partlist parts = {NULL, 0, 0};
+    affine own = affine_identity();
+    int on_grid = kind != MODEL_MINKOWSKI;
     if (kind == MODEL_CUBE || kind == MODEL_SPHERE || kind == MODEL_CYLINDER) {
         shape s;
         if ((st = read_shape(c, n, &s)) == SC_OK && s.kind != SHAPE_NONE) {
             pointset *part = new_part(&parts);
-            st = part ? shape_points(w, n, &s, m, part) : err_nomem(c->error, &n->loc);
+            st = part ? shape_points(w, n, &s, &own, part) : err_nomem(c->error, &n->loc);
         }
     } else if (kind == MODEL_HULL) {
         walk inner = {c, "hull", 0,    w->cache, w->nef, w->check,
                       0, NULL,   NULL, NULL,     NULL,   NULL};
         partlist sub = {NULL, 0, 0};
-        st = collect(&inner, n, m, depth + 1, &sub);
+        st = collect(&inner, n, &own, depth + 1, &sub);
         pointset *part = NULL;
         if (st == SC_OK && sub.count && !(part = new_part(&parts)))
             st = err_nomem(c->error, &n->loc);
@@ -1682,7 +1732,7 @@ static sc_status nef_node(const walk *w, const model_node *n, const affine *m, i
     }
     for (uint32_t i = 0; i < parts.count && st == SC_OK && !w->check; i++) {
         nef_solid *s = NULL;
-        if ((st = nef_convex(w, n, &parts.items[i], &s)) == SC_OK)
+        if ((st = nef_convex(w, n, on_grid ? m : NULL, &parts.items[i], &s)) == SC_OK)
             st = nef_combine(w, n, out, NEF_UNION, s);
     }
     parts_free(&parts);

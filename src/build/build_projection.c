@@ -600,9 +600,17 @@ static sc_status hull_soup(pwalk *w, const model_node *n, soup *s, int depth)
     return st;
 }
 
+/* A point of a Nef polyhedron as OpenSCAD's createPolySetFromNefPolyhedron3
+ * hands it on: in single precision (its Vector3f). */
+static vec3 single(vec3 p)
+{
+    return v3((float)p.x, (float)p.y, (float)p.z);
+}
+
 /* A boolean or minkowski: the triangles of its CGAL result
  * (build_nef_triangles), as OpenSCAD projects the polygons of the Nef
- * polyhedron it evaluates the child to. */
+ * polyhedron it evaluates the child to, their points in single precision
+ * as OpenSCAD's are (single). */
 static sc_status nef_soup(pwalk *w, const model_node *n, soup *s)
 {
     vec3 *tris = NULL;
@@ -613,7 +621,8 @@ static sc_status nef_soup(pwalk *w, const model_node *n, soup *s)
     sc_status st =
         build_nef_triangles(w->c, n, "projection", &w->cache, own, &tris, &count);
     for (uint32_t t = 0; st == SC_OK && t < count; t++) {
-        if (!add_tri(s, tris[3 * t], tris[3 * t + 1], tris[3 * t + 2]))
+        if (!add_tri(s, single(tris[3 * t]), single(tris[3 * t + 1]),
+                     single(tris[3 * t + 2])))
             st = err_nomem(w->c->error, &n->loc);
     }
     free(tris);
