@@ -1236,8 +1236,12 @@ static sc_status nef_mesh(const walk *w, const model_node *n, const affine *m,
         xyz[3 * i + 2] = p.z;
     }
     char why[512] = "";
-    nef_status ns = w->nef->from_mesh(xyz, f->point_count, f->indices, f->face_start,
-                                      f->face_loops, f->face_count, out, why, sizeof why);
+    /* a polyhedron's faces reach CGAL as OpenSCAD's builder turns them,
+     * before the rest of m moves its Nef polyhedron (nef.h) */
+    int written = n->kind != MODEL_POLYHEDRON ? 0 : affine_det(m) < 0 ? 2 : 1;
+    nef_status ns =
+        w->nef->from_mesh(xyz, f->point_count, f->indices, f->face_start, f->face_loops,
+                          f->face_count, written, out, why, sizeof why);
     free(xyz);
     if (ns != NEF_OK)
         return nef_error(w, n, ns, why);
@@ -1838,6 +1842,81 @@ sc_status build_nef_triangles(const build_ctx *c, const model_node *n, const cha
     }
     if (solid)
         nef.release(solid);
+    nef_plugin_close(&nef);
+    return st;
+}
+
+sc_status build_nef_section(const build_ctx *c, const model_node *n,
+                            build_resize_cache **cache, twod_region *out, int *missed)
+{
+    *missed = 0;
+    build_ctx quiet = *c; /* the projection's walk gave the warnings */
+    quiet.notes = NULL;
+    nef_plugin nef = {0};
+    walk w = {&quiet, "projection", 0, cache, &nef, 0, 0, NULL, NULL, NULL, NULL, NULL};
+    nef_solid *solid = NULL;
+    affine id = affine_identity();
+    sc_status st = nef_ready(&w, n);
+    if (st == SC_OK)
+        st = nef_children(&w, n, &id, 0, NEF_UNION, &solid);
+    nef_publish(c);
+    build_imports_done(c, n);
+    nef_parts got = {NULL, NULL, 0};
+    if (st == SC_OK && !solid) {
+        *missed = 1;
+    } else if (st == SC_OK) {
+        char why[512] = "";
+        nef_status ns = nef.section(solid, &got, missed, why, sizeof why);
+        if (ns != NEF_OK)
+            st = nef_error(&w, n, ns, why);
+        else if (*missed == 2 && c->strict)
+            st = err_set(c->error, SC_ERR_SEMANTIC, &n->loc,
+                         "projection: CGAL error while flattening the section: %s", why);
+        else if (*missed == 2 && c->notes)
+            st = build_note(c, &n->loc,
+                            "projection: CGAL error while flattening the section: %s",
+                            why);
+    }
+    for (uint32_t k = 0; st == SC_OK && k < got.count; k++) {
+        int ok = twod_begin_contour(out);
+        for (uint32_t i = got.start[k]; ok && i < got.start[k + 1]; i++)
+            ok = twod_add_point(out, got.points[3 * i], got.points[3 * i + 1]);
+        if (ok)
+            twod_end_contour(out);
+        else
+            st = build_twod_add_error(c, n, out);
+    }
+    free(got.points);
+    free(got.start);
+    if (solid)
+        nef.release(solid);
+    nef_plugin_close(&nef);
+    return st;
+}
+
+sc_status build_self_crossing(const build_ctx *c, const sc_location *at, const vec3 *tris,
+                              uint32_t tri_count, int *crossing)
+{
+    *crossing = 0;
+    nef_plugin nef = {0};
+    char why[512] = "";
+    if (!nef_plugin_open(&nef, why, sizeof why))
+        return err_set(c->error, SC_ERR_UNSUPPORTED, at, "projection: %s", why);
+    double *xyz = malloc(((size_t)tri_count * 9 + 1) * sizeof *xyz);
+    sc_status st = xyz ? SC_OK : err_nomem(c->error, at);
+    for (size_t i = 0; xyz && i < 3 * (size_t)tri_count; i++) {
+        xyz[3 * i] = tris[i].x;
+        xyz[3 * i + 1] = tris[i].y;
+        xyz[3 * i + 2] = tris[i].z;
+    }
+    nef_status ns = NEF_OK;
+    if (st == SC_OK)
+        ns = nef.self_crossing(xyz, tri_count, crossing, why, sizeof why);
+    if (ns == NEF_NOMEM)
+        st = err_nomem(c->error, at);
+    else if (ns != NEF_OK)
+        st = err_set(c->error, SC_ERR_SEMANTIC, at, "projection: CGAL failed: %s", why);
+    free(xyz);
     nef_plugin_close(&nef);
     return st;
 }

@@ -9,6 +9,7 @@
 #include "build/build_ctx.h"
 #include "build/build_mesh.h"
 #include "math/vec.h"
+#include "twod/twod.h"
 
 /* Nesting below a hull, minkowski or resize node that their walks follow. */
 #define BUILD_HULL_MAX_DEPTH 1000
@@ -68,6 +69,21 @@ sc_status build_minkowski(const build_ctx *c, const model_node *n, int emit,
 sc_status build_nef_triangles(const build_ctx *c, const model_node *n, const char *owner,
                               build_resize_cache **cache, int own, vec3 **tris,
                               uint32_t *tri_count);
+
+/* projection(cut = true) n's section as OpenSCAD 2021.01 computes it with
+ * CGAL (GeometryEvaluator's projectionCut): the union of n's 3D children
+ * as a Nef polyhedron (their warnings not given again: c's notes are
+ * muted), cut by the plane z = 0 and flattened (nef.h's section), its
+ * loops added to out. *missed is 1 where the cut is empty, 2 where CGAL
+ * failed to flatten it (its message given here, as OpenSCAD logs it; the
+ * error with --strict). Loads the CGAL plugin. */
+sc_status build_nef_section(const build_ctx *c, const model_node *n,
+                            build_resize_cache **cache, twod_region *out, int *missed);
+/* Whether the triangles (3 * tri_count corners) pass through themselves
+ * (nef.h's self_crossing), in *crossing; loads the CGAL plugin, with
+ * owner and at in its messages. */
+sc_status build_self_crossing(const build_ctx *c, const sc_location *at, const vec3 *tris,
+                              uint32_t tri_count, int *crossing);
 
 /* What OpenSCAD 2021.01's CGAL evaluation makes of a 3D subtree
  * (build_nef_evaluate). */

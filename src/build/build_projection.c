@@ -126,6 +126,9 @@ typedef struct pwalk {
      * which OpenSCAD makes a Nef polyhedron of, as build_hull.c's walk's
      * (NULL where none lies between: the walk's own m) */
     const affine *since;
+    /* cut: a leaf's mesh passes through itself (may_cross): the section is
+     * then CGAL's, as OpenSCAD's (build_nef_section) */
+    int crossing;
 } pwalk;
 
 static int add_tri(soup *s, vec3 a, vec3 b, vec3 c)
@@ -1128,6 +1131,17 @@ static int warped_face(const model_node *n)
     return 0;
 }
 
+/* Whether leaf n's mesh can pass through itself: a twisted or scaled
+ * linear_extrude (its walls between slices can cross), a polyhedron or
+ * an import. Other leaves' meshes cannot. */
+static int may_cross(const model_node *n)
+{
+    if (n->kind == MODEL_LINEAR_EXTRUDE)
+        return n->u.linear_extrude->twist != 0 || n->u.linear_extrude->sx != 1 ||
+               n->u.linear_extrude->sy != 1;
+    return n->kind == MODEL_POLYHEDRON || n->kind == MODEL_IMPORT;
+}
+
 /* Adds leaf n's loops (cut) or projected faces to out. */
 static sc_status leaf(pwalk *w, const model_node *n, const affine *m, int depth,
                       twod_region *out)
@@ -1155,6 +1169,16 @@ static sc_status leaf(pwalk *w, const model_node *n, const affine *m, int depth,
             v[0] = a;
             v[1] = flip ? c : b;
             v[2] = flip ? b : c;
+        }
+        /* a cut through a mesh that passes through itself: OpenSCAD's
+         * CGAL section of a Nef polyhedron CGAL makes of it, whatever
+         * that is there, which no rule here follows */
+        if (w->cut && !w->corners && !w->crossing && may_cross(n) &&
+            (st = build_self_crossing(w->c, &n->loc, s.v, s.count, &w->crossing)) !=
+                SC_OK) {
+            free(s.face);
+            free(s.v);
+            return st;
         }
         /* a polyhedron's face out of its plane projects as OpenSCAD
          * projects it, its outline whole, not as the triangles it is
@@ -1424,16 +1448,21 @@ sc_status build_projection(const build_ctx *c, const model_node *n, twod_region 
     twod_clear(out);
     if (n->pending)
         return build_pending(c, n);
-    pwalk w = {c, n, n->u.projection.cut, NULL, 0, 0, 0, NULL};
+    pwalk w = {c, n, n->u.projection.cut, NULL, 0, 0, 0, NULL, 0};
     affine id = affine_identity();
     sc_status st = walk_children(&w, n, &id, 0, out);
+    int missed = w.solid && !w.crossing; /* "Projection() failed." when empty */
+    if (st == SC_OK && w.crossing) {
+        twod_clear(out);
+        st = build_nef_section(c, n, &w.cache, out, &missed);
+    }
     if (st == SC_OK && w.cut)
         st = exact_union(&w, n, out);
     else if (st == SC_OK)
         st = clip_error(&w, n, twod_clip_union_nonzero(out, 2), out);
     /* a solid that z = 0 misses: OpenSCAD's warning (CGALUtils::project),
      * said where the union of the children is known not to be empty */
-    if (st == SC_OK && w.cut && w.solid && !out->contour_count && c->notes)
+    if (st == SC_OK && w.cut && missed == 1 && !out->contour_count && c->notes)
         st = build_note(c, &n->loc, "Projection() failed.");
     build_resize_cache_free(w.cache);
     return st;

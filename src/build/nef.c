@@ -24,10 +24,13 @@ static pthread_mutex_t nef_lock = PTHREAD_RECURSIVE_MUTEX_INITIALIZER_NP;
 int nef_plugin_open(nef_plugin *plugin, char *err, size_t err_size)
 {
     static const char *const names[] = {
-        "spancast_nef_from_mesh", "spancast_nef_empty",       "spancast_nef_apply",
-        "spancast_nef_is_empty",  "spancast_nef_vertices",    "spancast_nef_convex_parts",
-        "spancast_nef_triangles", "spancast_nef_release",     "spancast_nef_copy",
-        "spancast_nef_transform", "spancast_nef_plane_check", "spancast_nef_off_build"};
+        "spancast_nef_from_mesh",   "spancast_nef_empty",
+        "spancast_nef_apply",       "spancast_nef_is_empty",
+        "spancast_nef_vertices",    "spancast_nef_convex_parts",
+        "spancast_nef_triangles",   "spancast_nef_release",
+        "spancast_nef_copy",        "spancast_nef_transform",
+        "spancast_nef_plane_check", "spancast_nef_off_build",
+        "spancast_nef_section",     "spancast_nef_self_crossing"};
     enum { COUNT = sizeof names / sizeof names[0] };
     memset(plugin, 0, sizeof *plugin);
     pthread_mutex_lock(&nef_lock);
@@ -50,6 +53,8 @@ int nef_plugin_open(nef_plugin *plugin, char *err, size_t err_size)
     *(void **)&plugin->transform = fns[9];
     *(void **)&plugin->plane_check = fns[10];
     *(void **)&plugin->off_build = fns[11];
+    *(void **)&plugin->section = fns[12];
+    *(void **)&plugin->self_crossing = fns[13];
     plugin->handle = handle;
     return 1;
 }

@@ -56,12 +56,17 @@ typedef struct nef_plugin {
      * when face_loops is NULL. Points at the same position are merged,
      * faces are triangulated (a face of several loops by the even-odd
      * rule) and the orientation is made inward, as OpenSCAD hands CGAL
-     * its meshes, so either winding is taken. The faces must not overlap
-     * one another: a fan of a face that is not convex does, and so do a
-     * face and its hole given as two faces. */
+     * its meshes, so either winding is taken; with written 1, the faces
+     * are a polyhedron's in OpenSCAD's order (its faces as written, back
+     * to front) and each is reversed, as OpenSCAD's builder reverses them,
+     * whichever way that turns the mesh (which matters only for a mesh
+     * that crosses itself); 2, the same mesh mirrored on its way here,
+     * each face kept as it comes. The faces must not overlap one another: a fan
+     * of a face that is not convex does, and so do a face and its hole
+     * given as two faces. */
     nef_status (*from_mesh)(const double *points, uint32_t point_count,
                             const uint32_t *indices, const uint32_t *loop_start,
-                            const uint32_t *face_loops, uint32_t face_count,
+                            const uint32_t *face_loops, uint32_t face_count, int written,
                             nef_solid **out, char *err, size_t err_size);
     /* The empty solid. */
     nef_status (*empty)(nef_solid **out, char *err, size_t err_size);
@@ -90,6 +95,24 @@ typedef struct nef_plugin {
     nef_status (*triangles)(const nef_solid *s, nef_parts *out, char *err,
                             size_t err_size);
     void (*release)(nef_solid *s);
+    /* The section of the solid by the plane z = 0 as OpenSCAD 2021.01's
+     * projection(cut = true) computes it (CGALUtils::project: the
+     * intersection with the plane, its up-facing facets flattened into a
+     * 2D Nef polyhedron), as loops of points with z = 0, one part each:
+     * each face's outline counter-clockwise, then its holes clockwise.
+     * *missed is 1, with no loops, where the intersection is empty
+     * (OpenSCAD's "Projection() failed.": also where CGAL fails on the
+     * plane and on OpenSCAD's thin box after it), 2 where CGAL fails as
+     * the intersection is flattened (OpenSCAD's section is then empty,
+     * with CGAL's message, in err). */
+    nef_status (*section)(const nef_solid *s, nef_parts *out, int *missed, char *err,
+                          size_t err_size);
+    /* Whether the triangles (tri_count of them, 9 numbers each) make a
+     * surface that passes through itself: *crossing 1 where two of them
+     * meet other than at an edge or corner they share, 0 where none do or
+     * the triangles are not a surface (an edge of three faces). */
+    nef_status (*self_crossing)(const double *corners, uint32_t tri_count, int *crossing,
+                                char *err, size_t err_size);
     /* Where OpenSCAD 2021.01, whose CGAL checks its assertions, stops
      * making the Nef polyhedron of a closed mesh on a face out of its
      * plane (polygon_mesh_to_nef_3's checks): CGAL's polyhedron is built

@@ -25,10 +25,16 @@
 #include <CGAL/Constrained_Delaunay_triangulation_2.h>
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Extended_cartesian.h>
+#include <CGAL/Gmpq.h>
+#include <CGAL/Nef_polyhedron_2.h>
 #include <CGAL/Nef_polyhedron_3.h>
+#include <CGAL/Polygon_mesh_processing/self_intersections.h>
+#include <CGAL/convex_hull_3.h>
 #include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
 #include <CGAL/Polygon_mesh_processing/orientation.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
+#include <CGAL/Polygon_mesh_processing/repair_polygon_soup.h>
 #include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
 #include <CGAL/Polyhedron_3.h>
 #include <CGAL/Polyhedron_incremental_builder_3.h>
@@ -330,6 +336,56 @@ bool off_plane(const std::vector<Fast::Point_3> &p, const Fast::Point_3 &q,
 
 } // namespace
 
+// CGAL's polyhedron of polygons, built as OpenSCAD builds it
+// (CGAL_Build_PolySet): each polygon's points in the order given, reversed
+// where reverse is set, the points added in the order the polygons first
+// name them, then each polygon the builder takes. Of a mesh that crosses
+// itself CGAL makes a Nef polyhedron that depends on that order (two
+// boxes that overlap, in one polyhedron: both boxes as OpenSCAD builds
+// them, one box from the same faces as CGAL's polygon soup builds them).
+class Build_polygons : public CGAL::Modifier_base<Polyhedron::HalfedgeDS>
+{
+  public:
+    Build_polygons(const std::vector<Point> &points,
+                   const std::vector<std::vector<std::size_t>> &polygons, bool reverse)
+        : points_(points), polygons_(polygons), reverse_(reverse)
+    {
+    }
+    void operator()(Polyhedron::HalfedgeDS &hds) override
+    {
+        std::vector<std::size_t> number(points_.size(), SIZE_MAX);
+        std::vector<std::size_t> order;
+        std::vector<std::vector<std::size_t>> faces;
+        for (const auto &polygon : polygons_) {
+            std::vector<std::size_t> face;
+            for (std::size_t k = 0; k < polygon.size(); k++) {
+                std::size_t i = polygon[reverse_ ? polygon.size() - 1 - k : k];
+                if (number[i] == SIZE_MAX) {
+                    number[i] = order.size();
+                    order.push_back(i);
+                }
+                face.push_back(number[i]);
+            }
+            faces.push_back(std::move(face));
+        }
+        CGAL::Polyhedron_incremental_builder_3<Polyhedron::HalfedgeDS> builder(hds,
+                                                                               false);
+        builder.begin_surface(order.size(), faces.size());
+        for (std::size_t i : order)
+            builder.add_vertex(points_[i]);
+        for (const auto &face : faces) {
+            if (face.size() >= 3 && builder.test_facet(face.begin(), face.end()))
+                builder.add_facet(face.begin(), face.end());
+        }
+        builder.end_surface();
+    }
+
+  private:
+    const std::vector<Point> &points_;
+    const std::vector<std::vector<std::size_t>> &polygons_;
+    bool reverse_;
+};
+
 struct nef_solid {
     Nef nef;
 };
@@ -345,8 +401,8 @@ extern "C" {
 __attribute__((visibility("default"))) nef_status
 spancast_nef_from_mesh(const double *points, uint32_t point_count,
                        const uint32_t *indices, const uint32_t *loop_start,
-                       const uint32_t *face_loops, uint32_t face_count, nef_solid **out,
-                       char *err, size_t err_size)
+                       const uint32_t *face_loops, uint32_t face_count, int written,
+                       nef_solid **out, char *err, size_t err_size)
 {
     *out = nullptr;
     return guarded(
@@ -396,21 +452,37 @@ spancast_nef_from_mesh(const double *points, uint32_t point_count,
                 *out = new nef_solid{Nef(Nef::EMPTY)};
                 return;
             }
-            PMP::orient_polygon_soup(unique, polygons);
-            Mesh mesh;
-            PMP::polygon_soup_to_polygon_mesh(unique, polygons, mesh);
+            if (!PMP::is_polygon_soup_a_polygon_mesh(polygons))
+                PMP::orient_polygon_soup(unique, polygons);
+            // Each face reversed, as OpenSCAD hands CGAL every mesh: its
+            // builder (CGAL_Build_PolySet) reverses each polygon of a
+            // PolySet. A shape's or an extrusion's polygons face outward,
+            // so CGAL gets them inward, whatever order they come in here;
+            // a polyhedron's (written 1) are its faces back to front
+            // (OpenSCAD's are clockwise seen from outside), so CGAL gets
+            // them in the order written, either way (written 2: mirrored
+            // on the way here, so kept as they come). The Nef polyhedron of
+            // a closed mesh that does not cross itself is the same either
+            // way; of one that does, it is not: a thin twisted extrusion
+            // outward made a structure on which the next boolean crashed
+            // inside CGAL, where inward gives the solid OpenSCAD renders; a
+            // polyhedron of two boxes that cross, written counter-clockwise,
+            // is both boxes in OpenSCAD, and inward it would be one.
+            bool reverse = written == 1;
+            if (!written) {
+                Polyhedron probe;
+                PMP::polygon_soup_to_polygon_mesh(unique, polygons, probe);
+                if (!CGAL::is_closed(probe) || !CGAL::is_valid_polygon_mesh(probe))
+                    throw bad_mesh("the mesh is not closed");
+                PMP::triangulate_faces(probe);
+                reverse = PMP::is_outward_oriented(probe);
+            }
+            Polyhedron mesh;
+            Build_polygons build(unique, polygons, reverse);
+            mesh.delegate(build);
             if (!CGAL::is_closed(mesh) || !CGAL::is_valid_polygon_mesh(mesh))
                 throw bad_mesh("the mesh is not closed");
             PMP::triangulate_faces(mesh);
-            // Wound inward, as OpenSCAD hands CGAL every mesh: its builder
-            // (CGAL_Build_PolySet) reverses each polygon of a PolySet, whose
-            // polygons face outward. The Nef polyhedron of a closed mesh that
-            // does not cross itself is the same either way; of one that does
-            // (a thin twisted extrusion), the outward one made a structure on
-            // which the next boolean crashed inside CGAL, where OpenSCAD's
-            // inward one gives the solid OpenSCAD renders.
-            if (PMP::is_outward_oriented(mesh))
-                PMP::reverse_face_orientations(mesh);
             *out = new nef_solid{Nef(mesh)};
         },
         err, err_size);
@@ -630,9 +702,174 @@ spancast_nef_triangles(const nef_solid *s, nef_parts *out, char *err, size_t err
         err, err_size);
 }
 
+// ---- the section by z = 0, as OpenSCAD cuts ----
+//
+// OpenSCAD 2021.01's CGALUtils::project(N, true): N intersected with the
+// plane z = 0 (PLANE_ONLY), or where CGAL throws there, with a box of
+// |x|, |y| <= 1e8 and |z| <= 0.001; then its ZRemover flattens every
+// facet of the result that looks up: each cycle of the facet's points
+// (the target of each edge's source, rounded to doubles) is a 2D Nef
+// polyhedron over Extended_cartesian<Gmpq>, its boundary included, the
+// facet's first cycle united with what was flattened before and each
+// later one intersected with it; the marked faces of that are the
+// section's loops, each face's outline then its holes.
+
+using Kernel2 = CGAL::Extended_cartesian<CGAL::Gmpq>;
+using Nef2 = CGAL::Nef_polyhedron_2<Kernel2>;
+
+struct Flatten {
+    Nef2 out;
+    void visit(Nef::Vertex_const_handle) {}
+    void visit(Nef::Halfedge_const_handle) {}
+    void visit(Nef::SHalfedge_const_handle) {}
+    void visit(Nef::SHalfloop_const_handle) {}
+    void visit(Nef::SFace_const_handle) {}
+    void visit(Nef::Halffacet_const_handle facet)
+    {
+        if (facet->plane().orthogonal_direction() != CGAL::Direction_3<Kernel>(0, 0, 1))
+            return;
+        int cycle = 0;
+        Nef::Halffacet_cycle_const_iterator c;
+        CGAL_forall_facet_cycles_of(c, facet)
+        {
+            if (!c.is_shalfedge())
+                continue;
+            Nef::SHalfedge_around_facet_const_circulator e(c), end(e);
+            std::vector<Nef2::Explorer::Point> contour;
+            CGAL_For_all(e, end)
+            {
+                Point p = e->source()->target()->point();
+                contour.push_back(Nef2::Explorer::Point(CGAL::to_double(p.x()),
+                                                        CGAL::to_double(p.y())));
+            }
+            if (contour.empty())
+                continue;
+            Nef2 loop(contour.begin(), contour.end(), Nef2::INCLUDED);
+            if (cycle++ == 0)
+                out += loop;
+            else
+                out *= loop;
+        }
+    }
+};
+
+// The loops of a flattened section's marked faces (the points of
+// standard vertices only), as parts of z = 0 points.
+void section_loops(const Nef2 &flat, std::vector<std::vector<Point>> &loops)
+{
+    Nef2::Explorer ex = flat.explorer();
+    auto add = [&](Nef2::Explorer::Halfedge_around_face_const_circulator e) {
+        std::vector<Point> loop;
+        Nef2::Explorer::Halfedge_around_face_const_circulator end(e);
+        CGAL_For_all(e, end)
+        {
+            if (!ex.is_standard(ex.target(e)))
+                continue;
+            Nef2::Explorer::Point q = ex.point(ex.target(e));
+            loop.push_back(Point(CGAL::to_double(q.x()), CGAL::to_double(q.y()), 0));
+        }
+        if (!loop.empty())
+            loops.push_back(std::move(loop));
+    };
+    for (auto f = ex.faces_begin(); f != ex.faces_end(); ++f) {
+        if (!f->mark())
+            continue;
+        add(ex.face_cycle(f));
+        for (auto h = ex.holes_begin(f); h != ex.holes_end(f); ++h)
+            add(Nef2::Explorer::Halfedge_around_face_const_circulator(h));
+    }
+}
+
+// s cut by z = 0 as OpenSCAD cuts it: empty where CGAL fails both ways
+// (OpenSCAD logs CGAL's error, and its cut is empty).
+Nef plane_cut(const Nef &s)
+{
+    try {
+        return s.intersection(Nef::Plane_3(0, 0, 1, 0), Nef::PLANE_ONLY);
+    } catch (const CGAL::Failure_exception &) {
+        try {
+            std::vector<Point> corners;
+            for (int k = 0; k < 8; k++)
+                corners.push_back(Point(k & 1 ? 1e8 : -1e8, k & 2 ? 1e8 : -1e8,
+                                        k & 4 ? 0.001 : -0.001));
+            Polyhedron box;
+            CGAL::convex_hull_3(corners.begin(), corners.end(), box);
+            return Nef(box).intersection(s);
+        } catch (const CGAL::Failure_exception &) {
+            return Nef();
+        }
+    }
+}
+
 __attribute__((visibility("default"))) void spancast_nef_release(nef_solid *s)
 {
     std::lock_guard<std::mutex> hold(spancast_cgal_lock());
     delete s;
+}
+
+__attribute__((visibility("default"))) nef_status
+spancast_nef_section(const nef_solid *s, nef_parts *out, int *missed, char *err,
+                     size_t err_size)
+{
+    std::memset(out, 0, sizeof *out);
+    *missed = 0;
+    return guarded(
+        [&] {
+            std::vector<std::vector<Point>> loops;
+            Nef cut = s->nef.is_empty() ? Nef() : plane_cut(s->nef);
+            if (cut.is_empty()) {
+                *missed = 1;
+            } else {
+                Flatten flat;
+                Nef::Volume_const_iterator v;
+                try {
+                    for (v = cut.volumes_begin(); v != cut.volumes_end(); ++v) {
+                        Nef::Shell_entry_const_iterator shell;
+                        for (shell = v->shells_begin(); shell != v->shells_end(); ++shell)
+                            cut.visit_shell_objects(Nef::SFace_const_handle(shell), flat);
+                    }
+                    section_loops(flat.out, loops);
+                } catch (const CGAL::Failure_exception &e) {
+                    // OpenSCAD logs it and has no section
+                    loops.clear();
+                    *missed = 2;
+                    std::snprintf(err, err_size, "%.400s", e.what());
+                }
+            }
+            to_parts(loops, out);
+        },
+        err, err_size);
+}
+
+__attribute__((visibility("default"))) nef_status
+spancast_nef_self_crossing(const double *corners, uint32_t tri_count, int *crossing,
+                           char *err, size_t err_size)
+{
+    *crossing = 0;
+    return guarded(
+        [&] {
+            using Fast = CGAL::Exact_predicates_inexact_constructions_kernel;
+            std::vector<Fast::Point_3> points;
+            std::vector<std::array<std::size_t, 3>> tris;
+            std::map<std::array<double, 3>, std::size_t> index;
+            for (uint32_t t = 0; t < tri_count; t++) {
+                std::array<std::size_t, 3> tri;
+                for (int k = 0; k < 3; k++) {
+                    const double *c = &corners[9 * (size_t)t + 3 * k];
+                    auto at = index.emplace(std::array<double, 3>{c[0], c[1], c[2]},
+                                            points.size());
+                    if (at.second)
+                        points.push_back(Fast::Point_3(c[0], c[1], c[2]));
+                    tri[k] = at.first->second;
+                }
+                tris.push_back(tri);
+            }
+            if (!PMP::is_polygon_soup_a_polygon_mesh(tris))
+                return; // not a surface: the section's own rules take it
+            CGAL::Surface_mesh<Fast::Point_3> mesh;
+            PMP::polygon_soup_to_polygon_mesh(points, tris, mesh);
+            *crossing = PMP::does_self_intersect(mesh);
+        },
+        err, err_size);
 }
 }
