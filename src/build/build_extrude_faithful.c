@@ -374,11 +374,99 @@ static int take_faces(mesh *m, uint32_t point_count, uint32_t cap_first, int top
     return 1;
 }
 
+/* Hands the mesh of m to faces as OpenSCAD 2021.01's PolySet reaches
+ * CGAL's builder (CGAL_Build_PolySet): the bottom cap's triangles, the top
+ * cap's, then the sides, each face as the builder turns it (m's sides
+ * already are: wound inward) and with corners of its own, in the order the
+ * builder meets them, so that the grid merges them as OpenSCAD's does. The
+ * caps are OpenSCAD's Polygon2d::tessellate of the profile (cdt), the top
+ * one of the profile moved by the whole twist and scale. 0 where CGAL
+ * refuses the profile (OpenSCAD's tessellation fails there too); -1 when
+ * memory runs out. */
+static int openscad_faces(mesh *m, uint32_t cap_first, const twod_region *r,
+                          const params *p, double h1, double h2, int top_zero,
+                          const nef_plugin *cdt, build_mesh_faces *faces)
+{
+    uint32_t *cap[2] = {NULL, NULL}, cap_count[2] = {0, 0};
+    double *top = malloc(((size_t)r->point_count * 2 + 1) * sizeof *top);
+    if (!top)
+        return -1;
+    double cs = faithful_cos_deg(-p->twist), sn = faithful_sin_deg(-p->twist);
+    double m00 = p->sx * cs, m01 = p->sx * -sn, m10 = p->sy * sn, m11 = p->sy * cs;
+    for (uint32_t i = 0; i < r->point_count; i++) {
+        double x = r->xy[2 * i], y = r->xy[2 * i + 1];
+        top[2 * i] = m00 * x + m01 * y;
+        top[2 * i + 1] = m10 * x + m11 * y;
+    }
+    char why[512];
+    int ok = 1;
+    for (int k = 0; ok && k < 2 - top_zero; k++) {
+        nef_status ns = cdt->tessellate(k ? top : r->xy, r->start, r->contour_count,
+                                        &cap[k], &cap_count[k], why, sizeof why);
+        ok = ns == NEF_OK ? 1 : ns == NEF_NOMEM ? -1 : 0;
+    }
+    size_t corners = 3 * ((size_t)cap_count[0] + cap_count[1]);
+    corners += m->face_start[cap_first];
+    size_t face_count = (size_t)cap_count[0] + cap_count[1] + cap_first;
+    vec3 *points = NULL;
+    uint32_t *start = NULL, *indices = NULL;
+    if (ok == 1 && (corners > UINT32_MAX || face_count >= UINT32_MAX))
+        ok = -1;
+    if (ok == 1) {
+        points = malloc((corners + 1) * sizeof *points);
+        indices = malloc((corners + 1) * sizeof *indices);
+        start = malloc((face_count + 1) * sizeof *start);
+        if (!points || !indices || !start)
+            ok = -1;
+    }
+    if (ok == 1) {
+        uint32_t k = 0, f = 0;
+        /* the bottom cap's triangles reversed in its PolySet, so as the
+         * triangulation gives them here; the top's the other way */
+        for (int c = 0; c < 2; c++)
+            for (uint32_t t = 0; t < cap_count[c]; t++) {
+                start[f++] = k;
+                for (int j = 0; j < 3; j++) {
+                    uint32_t i = cap[c][3 * t + (c ? 2 - j : j)];
+                    points[k] = c ? v3(top[2 * i], top[2 * i + 1], h2)
+                                  : v3(r->xy[2 * i], r->xy[2 * i + 1], h1);
+                    indices[k] = k;
+                    k++;
+                }
+            }
+        for (uint32_t s = 0; s < cap_first; s++) {
+            start[f++] = k;
+            for (uint32_t j = m->face_start[s]; j < m->face_start[s + 1]; j++) {
+                points[k] = m->points[m->indices[j]];
+                indices[k] = k;
+                k++;
+            }
+        }
+        start[f] = k;
+        memset(faces, 0, sizeof *faces);
+        faces->points = points;
+        faces->point_count = k;
+        faces->indices = indices;
+        faces->face_start = start;
+        faces->face_count = f;
+    } else {
+        free(points);
+        free(indices);
+        free(start);
+    }
+    free(cap[0]);
+    free(cap[1]);
+    free(top);
+    return ok;
+}
+
 /* The extrusion of r as a mesh leaf in *out, or, when faces is not NULL,
- * as faces for CGAL in *faces (out unused). */
+ * as faces for CGAL in *faces (out unused): with cdt, as OpenSCAD's
+ * PolySet (openscad_faces), else each cap one face of all its loops. */
 static sc_status extrude(const build_ctx *c, const sc_location *loc, const params *p,
                          const twod_region *r, uint32_t slices, prim *out,
-                         const char **empty, build_mesh_faces *faces)
+                         const char **empty, build_mesh_faces *faces,
+                         const nef_plugin *cdt)
 {
     double h1 = p->center ? -p->height / 2.0 : 0,
            h2 = p->center ? p->height / 2.0 : p->height;
@@ -470,11 +558,15 @@ static sc_status extrude(const build_ctx *c, const sc_location *loc, const param
     sc_status st;
     if (!ok)
         st = err_nomem(c->error, loc);
-    else if (faces)
-        st = take_faces(&m, (uint32_t)total, cap_first, top_zero, faces)
-                 ? SC_OK
-                 : err_nomem(c->error, loc);
-    else {
+    else if (faces) {
+        /* OpenSCAD's own tessellation, or where CGAL refuses the profile
+         * (which OpenSCAD 2021.01 does not survive), each cap whole */
+        int made =
+            cdt ? openscad_faces(&m, cap_first, r, p, h1, h2, top_zero, cdt, faces) : 0;
+        if (made == 0)
+            made = take_faces(&m, (uint32_t)total, cap_first, top_zero, faces) ? 1 : -1;
+        st = made == 1 ? SC_OK : err_nomem(c->error, loc);
+    } else {
         /* the caps: each contour's bottom (1), then its top (2) where the
          * top has area; only the bottoms where OpenSCAD's own mesh differs */
         const mesh *own = m.raw ? m.raw : &m;
@@ -498,7 +590,8 @@ static sc_status extrude(const build_ctx *c, const sc_location *loc, const param
 }
 
 static sc_status linear_extrude(const build_ctx *c, const model_node *n, int emit,
-                                prim *out, const char **empty, build_mesh_faces *faces)
+                                prim *out, const char **empty, build_mesh_faces *faces,
+                                const nef_plugin *cdt)
 {
     params p = {0};
     sc_status st = read_params(c, n, &p);
@@ -522,7 +615,8 @@ static sc_status linear_extrude(const build_ctx *c, const model_node *n, int emi
                 st = build_check_triangles(c, &n->loc, "linear_extrude",
                                            (size_t)slices * r.point_count);
             if (st == SC_OK)
-                st = extrude(c, &n->loc, &p, &r, (uint32_t)slices, out, empty, faces);
+                st =
+                    extrude(c, &n->loc, &p, &r, (uint32_t)slices, out, empty, faces, cdt);
         }
     }
     twod_free(&r);
@@ -532,14 +626,15 @@ static sc_status linear_extrude(const build_ctx *c, const model_node *n, int emi
 sc_status build_linear_extrude_faithful(const build_ctx *c, const model_node *n, int emit,
                                         prim *out, const char **empty)
 {
-    return linear_extrude(c, n, emit, out, empty, NULL);
+    return linear_extrude(c, n, emit, out, empty, NULL, NULL);
 }
 
 sc_status build_linear_extrude_faces(const build_ctx *c, const model_node *n,
-                                     build_mesh_faces *faces, const char **empty)
+                                     build_mesh_faces *faces, const char **empty,
+                                     const nef_plugin *cdt)
 {
     memset(faces, 0, sizeof *faces);
-    return linear_extrude(c, n, 1, NULL, empty, faces);
+    return linear_extrude(c, n, 1, NULL, empty, faces, cdt);
 }
 
 sc_status build_flat_slab(const build_ctx *c, const sc_location *loc,
@@ -567,7 +662,7 @@ sc_status build_flat_slab(const build_ctx *c, const sc_location *loc,
     /* OpenSCAD draws a 2D result as it is, never through CGAL */
     build_ctx drawn = *c;
     drawn.drawn_as_is = 1;
-    sc_status st = extrude(&drawn, loc, &p, r, 1, out, empty, NULL);
+    sc_status st = extrude(&drawn, loc, &p, r, 1, out, empty, NULL, NULL);
     if (st == SC_OK && *empty)
         *empty = "the 2D model has no area";
     return st;

@@ -7,6 +7,7 @@
 
 #include "build/build_ctx.h"
 #include "build/build_mesh.h"
+#include "build/nef.h"
 #include "twod/twod.h"
 
 /* Most side quads (slices times outline points) of one extrusion. */
@@ -20,13 +21,19 @@ sc_status build_linear_extrude_faithful(const build_ctx *c, const model_node *n,
                                         prim *out, const char **empty);
 
 /* The mesh of build_linear_extrude_faithful as faces that do not overlap,
- * for CGAL: each side triangle one face, each cap one face of all the
+ * for CGAL: each side triangle one face, and each cap one face of all the
  * outlines and holes of the region (the leaf's mesh has a face per contour,
  * fanned, which the winding rule of a leaf fills right but CGAL does not
- * take). Warnings and *empty as for build_linear_extrude_faithful (faces
- * then empty); free faces with build_mesh_faces_free. */
+ * take), or with cdt (the CGAL plugin) the caps as OpenSCAD 2021.01
+ * triangulates them and every face as its PolySet reaches CGAL's builder:
+ * caps first, wound inward, each face with corners of its own, which a
+ * grid or from_mesh merges (an extrusion that crosses itself makes the Nef
+ * polyhedron OpenSCAD's makes only so). Warnings and *empty as for
+ * build_linear_extrude_faithful (faces then empty); free faces with
+ * build_mesh_faces_free. */
 sc_status build_linear_extrude_faces(const build_ctx *c, const model_node *n,
-                                     build_mesh_faces *faces, const char **empty);
+                                     build_mesh_faces *faces, const char **empty,
+                                     const nef_plugin *cdt);
 
 /* A 2D model as OpenSCAD 2021.01 draws a 2D result (its
  * PolySet::render_surface, in the preview and the render alike): the

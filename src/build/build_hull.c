@@ -1417,9 +1417,11 @@ static sc_status nef_node(const walk *w, const model_node *n, const affine *m, i
  * outline over itself) or have triangles without area (along a straight
  * side), which a leaf's winding rule fills right but which make a Nef
  * polyhedron that is not valid, on which a later boolean crashed inside
- * CGAL. So CGAL gets the faces themselves, each cap one face with holes,
- * as OpenSCAD tessellates them. Extrusions are built as in --faithful, in
- * both modes, as OpenSCAD's polygons. */
+ * CGAL. So CGAL gets the faces themselves: a linear_extrude's as
+ * OpenSCAD's PolySet reaches CGAL, caps triangulated as OpenSCAD
+ * triangulates them; the others with each cap one face with holes.
+ * Extrusions are built as in --faithful, in both modes, as OpenSCAD's
+ * polygons. */
 static sc_status mesh_faces(const walk *w, const model_node *n, const affine *moved,
                             build_mesh_faces *faces, const char **empty)
 {
@@ -1439,8 +1441,13 @@ static sc_status mesh_faces(const walk *w, const model_node *n, const affine *mo
                           : build_surface_faces(w->c, n->u.surface, faces, empty);
     case MODEL_ROTATE_EXTRUDE:
         return build_rotate_extrude_faces(w->c, n, faces, empty);
-    default:
-        return build_linear_extrude_faces(&fc, n, faces, empty);
+    default: {
+        /* caps as OpenSCAD triangulates them, where CGAL takes them */
+        sc_status st = w->check ? SC_OK : nef_ready(w, n);
+        return st != SC_OK ? st
+                           : build_linear_extrude_faces(&fc, n, faces, empty,
+                                                        w->check ? NULL : w->nef);
+    }
     }
 }
 

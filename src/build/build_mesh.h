@@ -60,9 +60,10 @@ int build_mesh_rounding(const char *path, build_mesh_rounding_info *out);
  * whose collapsed walls it splits): what faithful mode checks is closed
  * where OpenSCAD hands the mesh to CGAL. cap_of (or NULL): for each face,
  * 0, or which cap of an extrusion it belongs to (1, 2): OpenSCAD
- * tessellates each cap's polygons (libtess2), which splits a cap's edge at
- * any point of that cap lying on it, where the side faces keep the edge
- * whole. */
+ * tessellates each cap's polygons (Polygon2d::tessellate, CGAL's
+ * constrained Delaunay triangulation), which splits a cap's edge at any
+ * point of that cap lying on it, where the side faces keep the edge whole
+ * (taken here as a point within 2^-22 of the edge: edge_stops). */
 typedef struct build_mesh_checks {
     const uint32_t *indices, *face_start;
     uint32_t face_count;

@@ -419,8 +419,9 @@ static sc_status leaf_mesh(const pwalk *w, const build_ctx *c, const model_node 
     if (p.kind == PRIM_MESH)
         s->open |= p.u.mesh.mesh->parity;
     build_mesh_faces f;
-    st = n->kind == MODEL_ROTATE_EXTRUDE ? build_rotate_extrude_faces(&fc, n, &f, &empty)
-                                         : build_linear_extrude_faces(&fc, n, &f, &empty);
+    st = n->kind == MODEL_ROTATE_EXTRUDE
+             ? build_rotate_extrude_faces(&fc, n, &f, &empty)
+             : build_linear_extrude_faces(&fc, n, &f, &empty, NULL);
     if (st == SC_OK && !empty && !faces_soup(&f, s))
         st = err_nomem(c->error, &n->loc);
     build_mesh_faces_free(&f);

@@ -141,6 +141,19 @@ typedef struct nef_plugin {
     nef_status (*off_build)(uint32_t point_count, const uint32_t *indices,
                             const uint32_t *face_start, uint32_t face_count,
                             uint32_t *refused, char *err, size_t err_size);
+    /* OpenSCAD 2021.01's triangles of a 2D region (Polygon2d::tessellate,
+     * which makes the caps of its extrusions): each contour (x, y pairs;
+     * contour k is points start[k] .. start[k + 1]) goes into CGAL's
+     * constrained Delaunay triangulation from its last point on, each
+     * point joined to the one before it unless the two are one; the
+     * triangles nested inside an odd number of contours are kept, in the
+     * triangulation's order, each counter-clockwise from its first
+     * corner. *tris: 3 point indices per triangle (malloc'd; NULL when
+     * there are none), *tri_count of them. NEF_FAILED where CGAL refuses
+     * the contours (OpenSCAD's "CGAL error in Polygon2d::tesselate()"). */
+    nef_status (*tessellate)(const double *xy, const uint32_t *start,
+                             uint32_t contour_count, uint32_t **tris, uint32_t *tri_count,
+                             char *err, size_t err_size);
     void *handle; /* of dlopen */
 } nef_plugin;
 

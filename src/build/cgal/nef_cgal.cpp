@@ -57,6 +57,7 @@
 #include <cstdlib>
 #include <cmath>
 #include <cstring>
+#include <list>
 #include <map>
 #include <new>
 #include <queue>
@@ -872,4 +873,95 @@ spancast_nef_self_crossing(const double *corners, uint32_t tri_count, int *cross
         },
         err, err_size);
 }
+}
+
+// ---- the caps of an extrusion, as OpenSCAD triangulates them ----
+//
+// OpenSCAD 2021.01's Polygon2d::tessellate, step by step: the same calls
+// on the same triangulation (CGAL's constrained Delaunay triangulation
+// over Epick with exact predicates), so that the triangles, their order
+// and their first corners are OpenSCAD's, and then its mark_domains: the
+// faces reached from the infinite face without crossing a contour are
+// nesting level 0, and each face across a contour from level k is k + 1,
+// breadth first; the odd levels are the region.
+
+extern "C" __attribute__((visibility("default"))) nef_status
+spancast_nef_tessellate(const double *xy, const uint32_t *start, uint32_t contour_count,
+                        uint32_t **tris, uint32_t *tri_count, char *err, size_t err_size)
+{
+    *tris = nullptr;
+    *tri_count = 0;
+    return guarded(
+        [&] {
+            Cdt cdt;
+            for (uint32_t k = 0; k < contour_count; k++) {
+                uint32_t first = start[k], end = start[k + 1];
+                if (end == first)
+                    continue;
+                auto put = [&](uint32_t i) {
+                    Cdt::Vertex_handle h =
+                        cdt.insert(Kernel_2::Point_2(xy[2 * i], xy[2 * i + 1]));
+                    if (h->info().k == SIZE_MAX)
+                        h->info().k = i;
+                    return h;
+                };
+                Cdt::Vertex_handle prev = put(end - 1);
+                for (uint32_t i = first; i < end; i++) {
+                    Cdt::Vertex_handle curr = put(i);
+                    if (prev != curr) {
+                        cdt.insert_constraint(prev, curr);
+                        prev = curr;
+                    }
+                }
+            }
+            for (auto f = cdt.all_faces_begin(); f != cdt.all_faces_end(); ++f)
+                f->info() = -1;
+            std::list<Cdt::Edge> border;
+            auto mark = [&](Cdt::Face_handle from, int level) {
+                if (from->info() != -1)
+                    return;
+                std::list<Cdt::Face_handle> queue{from};
+                while (!queue.empty()) {
+                    Cdt::Face_handle f = queue.front();
+                    queue.pop_front();
+                    if (f->info() != -1)
+                        continue;
+                    f->info() = level;
+                    for (int i = 0; i < 3; i++) {
+                        Cdt::Face_handle g = f->neighbor(i);
+                        if (g->info() != -1)
+                            continue;
+                        if (cdt.is_constrained(Cdt::Edge(f, i)))
+                            border.push_back(Cdt::Edge(f, i));
+                        else
+                            queue.push_back(g);
+                    }
+                }
+            };
+            mark(cdt.infinite_face(), 0);
+            while (!border.empty()) {
+                Cdt::Edge e = border.front();
+                border.pop_front();
+                Cdt::Face_handle g = e.first->neighbor(e.second);
+                if (g->info() == -1)
+                    mark(g, e.first->info() + 1);
+            }
+            std::vector<uint32_t> out;
+            for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f) {
+                if (f->info() % 2 != 1)
+                    continue;
+                for (int i = 0; i < 3; i++)
+                    out.push_back(static_cast<uint32_t>(f->vertex(i)->info().k));
+            }
+            if (out.size() / 3 > UINT32_MAX)
+                throw std::runtime_error("too many triangles");
+            if (!out.empty()) {
+                *tris = static_cast<uint32_t *>(std::malloc(out.size() * sizeof **tris));
+                if (!*tris)
+                    throw std::bad_alloc();
+                std::memcpy(*tris, out.data(), out.size() * sizeof **tris);
+            }
+            *tri_count = static_cast<uint32_t>(out.size() / 3);
+        },
+        err, err_size);
 }
