@@ -1805,6 +1805,17 @@ static sc_status solid_parts(const walk *w, const model_node *n, const affine *m
     return st;
 }
 
+/* The end of build_nef_triangles and build_nef_section: what the plugin
+ * gave back freed, the solid released, the plugin closed. */
+static void nef_done(nef_plugin *nef, nef_solid *solid, nef_parts *got)
+{
+    free(got->points);
+    free(got->start);
+    if (solid)
+        nef->release(solid);
+    nef_plugin_close(nef);
+}
+
 sc_status build_nef_triangles(const build_ctx *c, const model_node *n, const char *owner,
                               build_resize_cache **cache, int own, vec3 **tris,
                               uint32_t *tri_count)
@@ -1825,8 +1836,8 @@ sc_status build_nef_triangles(const build_ctx *c, const model_node *n, const cha
         st = nef_node(&w, n, &id, 0, &solid);
     nef_publish(c);
     build_imports_done(c, n);
+    nef_parts got = {NULL, NULL, 0};
     if (st == SC_OK && solid) {
-        nef_parts got = {NULL, NULL, 0};
         char why[512] = "";
         nef_status ns = nef.triangles(solid, &got, why, sizeof why);
         if (ns != NEF_OK) {
@@ -1844,12 +1855,8 @@ sc_status build_nef_triangles(const build_ctx *c, const model_node *n, const cha
                 *tri_count = count;
             }
         }
-        free(got.points);
-        free(got.start);
     }
-    if (solid)
-        nef.release(solid);
-    nef_plugin_close(&nef);
+    nef_done(&nef, solid, &got);
     return st;
 }
 
@@ -1893,21 +1900,16 @@ sc_status build_nef_section(const build_ctx *c, const model_node *n,
         else
             st = build_twod_add_error(c, n, out);
     }
-    free(got.points);
-    free(got.start);
-    if (solid)
-        nef.release(solid);
-    nef_plugin_close(&nef);
+    nef_done(&nef, solid, &got);
     return st;
 }
 
-sc_status build_self_crossing(const build_ctx *c, const sc_location *at, const vec3 *tris,
-                              uint32_t tri_count, int *crossing)
+sc_status build_self_crossing(const build_ctx *c, const sc_location *at, nef_plugin *nef,
+                              const vec3 *tris, uint32_t tri_count, int *crossing)
 {
     *crossing = 0;
-    nef_plugin nef = {0};
     char why[512] = "";
-    if (!nef_plugin_open(&nef, why, sizeof why))
+    if (!nef->handle && !nef_plugin_open(nef, why, sizeof why))
         return err_set(c->error, SC_ERR_UNSUPPORTED, at, "projection: %s", why);
     double *xyz = malloc(((size_t)tri_count * 9 + 1) * sizeof *xyz);
     sc_status st = xyz ? SC_OK : err_nomem(c->error, at);
@@ -1918,13 +1920,12 @@ sc_status build_self_crossing(const build_ctx *c, const sc_location *at, const v
     }
     nef_status ns = NEF_OK;
     if (st == SC_OK)
-        ns = nef.self_crossing(xyz, tri_count, crossing, why, sizeof why);
+        ns = nef->self_crossing(xyz, tri_count, crossing, why, sizeof why);
     if (ns == NEF_NOMEM)
         st = err_nomem(c->error, at);
     else if (ns != NEF_OK)
         st = err_set(c->error, SC_ERR_SEMANTIC, at, "projection: CGAL failed: %s", why);
     free(xyz);
-    nef_plugin_close(&nef);
     return st;
 }
 

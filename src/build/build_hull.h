@@ -8,6 +8,7 @@
 
 #include "build/build_ctx.h"
 #include "build/build_mesh.h"
+#include "build/nef.h"
 #include "math/vec.h"
 #include "twod/twod.h"
 
@@ -80,10 +81,11 @@ sc_status build_nef_triangles(const build_ctx *c, const model_node *n, const cha
 sc_status build_nef_section(const build_ctx *c, const model_node *n,
                             build_resize_cache **cache, twod_region *out, int *missed);
 /* Whether the triangles (3 * tri_count corners) pass through themselves
- * (nef.h's self_crossing), in *crossing; loads the CGAL plugin, with
- * owner and at in its messages. */
-sc_status build_self_crossing(const build_ctx *c, const sc_location *at, const vec3 *tris,
-                              uint32_t tri_count, int *crossing);
+ * (nef.h's self_crossing), in *crossing; through the CGAL plugin nef,
+ * loaded here if it is not yet (the caller closes it), with at in the
+ * messages. */
+sc_status build_self_crossing(const build_ctx *c, const sc_location *at, nef_plugin *nef,
+                              const vec3 *tris, uint32_t tri_count, int *crossing);
 
 /* What OpenSCAD 2021.01's CGAL evaluation makes of a 3D subtree
  * (build_nef_evaluate). */

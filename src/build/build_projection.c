@@ -127,8 +127,10 @@ typedef struct pwalk {
      * (NULL where none lies between: the walk's own m) */
     const affine *since;
     /* cut: a leaf's mesh passes through itself (may_cross): the section is
-     * then CGAL's, as OpenSCAD's (build_nef_section) */
+     * then CGAL's, as OpenSCAD's (build_nef_section), and the leaves'
+     * own sections are no longer made */
     int crossing;
+    nef_plugin nef; /* for the test (build_self_crossing), loaded then */
 } pwalk;
 
 static int add_tri(soup *s, vec3 a, vec3 b, vec3 c)
@@ -1175,8 +1177,8 @@ static sc_status leaf(pwalk *w, const model_node *n, const affine *m, int depth,
          * CGAL section of a Nef polyhedron CGAL makes of it, whatever
          * that is there, which no rule here follows */
         if (w->cut && !w->corners && !w->crossing && may_cross(n) &&
-            (st = build_self_crossing(w->c, &n->loc, s.v, s.count, &w->crossing)) !=
-                SC_OK) {
+            (st = build_self_crossing(w->c, &n->loc, &w->nef, s.v, s.count,
+                                      &w->crossing)) != SC_OK) {
             free(s.face);
             free(s.v);
             return st;
@@ -1186,7 +1188,8 @@ static sc_status leaf(pwalk *w, const model_node *n, const affine *m, int depth,
          * split into: then every face's outline (face_outlines); in a
          * union of several OpenSCAD projects the triangles of CGAL's
          * Nef polyhedron of it */
-        int ok = w->cut ? section_loops(&s, 1, out) && section_loops(&s, 0, out)
+        int ok = w->crossing ? 1
+                 : w->cut    ? section_loops(&s, 1, out) && section_loops(&s, 0, out)
                  : n->kind == MODEL_POLYHEDRON && !w->since && !s.open && warped_face(n)
                      ? face_outlines(n, m, out)
                      : projected_faces(&s, convex_leaf(n->kind), out);
@@ -1449,10 +1452,11 @@ sc_status build_projection(const build_ctx *c, const model_node *n, twod_region 
     twod_clear(out);
     if (n->pending)
         return build_pending(c, n);
-    pwalk w = {c, n, n->u.projection.cut, NULL, 0, 0, 0, NULL, 0};
+    pwalk w = {c, n, n->u.projection.cut, NULL, 0, 0, 0, NULL, 0, {0}};
     affine id = affine_identity();
     sc_status st = walk_children(&w, n, &id, 0, out);
     int missed = w.solid && !w.crossing; /* "Projection() failed." when empty */
+    nef_plugin_close(&w.nef);
     if (st == SC_OK && w.crossing) {
         twod_clear(out);
         st = build_nef_section(c, n, &w.cache, out, &missed);
