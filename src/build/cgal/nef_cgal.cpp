@@ -60,7 +60,6 @@
 #include <list>
 #include <map>
 #include <new>
-#include <queue>
 #include <set>
 #include <stdexcept>
 #include <vector>
@@ -136,6 +135,47 @@ using Tds = CGAL::Triangulation_data_structure_2<Vb, Fb>;
 using Cdt =
     CGAL::Constrained_Delaunay_triangulation_2<Kernel_2, Tds, CGAL::Exact_predicates_tag>;
 
+// Nesting level of every face, as OpenSCAD 2021.01's mark_domains
+// (Polygon2d-CGAL.cc) sets it: the faces reached from the infinite face
+// without crossing a constrained edge are level 0, and each face across a
+// constrained edge from level k is k + 1, breadth first; the odd levels
+// are the region (the even-odd rule).
+void mark_domains(Cdt &cdt)
+{
+    for (auto f = cdt.all_faces_begin(); f != cdt.all_faces_end(); ++f)
+        f->info() = -1;
+    std::list<Cdt::Edge> border;
+    auto mark = [&](Cdt::Face_handle from, int level) {
+        if (from->info() != -1)
+            return;
+        std::list<Cdt::Face_handle> queue{from};
+        while (!queue.empty()) {
+            Cdt::Face_handle f = queue.front();
+            queue.pop_front();
+            if (f->info() != -1)
+                continue;
+            f->info() = level;
+            for (int i = 0; i < 3; i++) {
+                Cdt::Face_handle g = f->neighbor(i);
+                if (g->info() != -1)
+                    continue;
+                if (cdt.is_constrained(Cdt::Edge(f, i)))
+                    border.push_back(Cdt::Edge(f, i));
+                else
+                    queue.push_back(g);
+            }
+        }
+    };
+    mark(cdt.infinite_face(), 0);
+    while (!border.empty()) {
+        Cdt::Edge e = border.front();
+        border.pop_front();
+        Cdt::Face_handle g = e.first->neighbor(e.second);
+        if (g->info() == -1)
+            mark(g, e.first->info() + 1);
+    }
+}
+
 // Appends to polygons the triangles of the face whose loops are loops
 // (indices into the points xyz), as even-odd nesting of the loops makes it.
 void triangulate_loops(const std::vector<std::array<double, 3>> &xyz,
@@ -174,34 +214,7 @@ void triangulate_loops(const std::vector<std::array<double, 3>> &xyz,
         for (std::size_t i = 0; i < corner.size(); i++)
             cdt.insert_constraint(corner[i], corner[(i + 1) % corner.size()]);
     }
-    // Nesting depth of every face, outward in: across a constrained edge
-    // one deeper.
-    for (auto f = cdt.all_faces_begin(); f != cdt.all_faces_end(); ++f)
-        f->info() = -1;
-    std::queue<std::pair<Cdt::Face_handle, int>> next;
-    next.push({cdt.infinite_face(), 0});
-    while (!next.empty()) {
-        std::queue<Cdt::Face_handle> same;
-        same.push(next.front().first);
-        int depth = next.front().second;
-        next.pop();
-        while (!same.empty()) {
-            Cdt::Face_handle f = same.front();
-            same.pop();
-            if (f->info() != -1)
-                continue;
-            f->info() = depth;
-            for (int i = 0; i < 3; i++) {
-                Cdt::Face_handle g = f->neighbor(i);
-                if (g->info() != -1)
-                    continue;
-                if (cdt.is_constrained(Cdt::Edge(f, i)))
-                    next.push({g, depth + 1});
-                else
-                    same.push(g);
-            }
-        }
-    }
+    mark_domains(cdt);
     for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f) {
         if (f->info() % 2 == 1)
             polygons.push_back(
@@ -880,10 +893,7 @@ spancast_nef_self_crossing(const double *corners, uint32_t tri_count, int *cross
 // OpenSCAD 2021.01's Polygon2d::tessellate, step by step: the same calls
 // on the same triangulation (CGAL's constrained Delaunay triangulation
 // over Epick with exact predicates), so that the triangles, their order
-// and their first corners are OpenSCAD's, and then its mark_domains: the
-// faces reached from the infinite face without crossing a contour are
-// nesting level 0, and each face across a contour from level k is k + 1,
-// breadth first; the odd levels are the region.
+// and their first corners are OpenSCAD's, and then its mark_domains.
 
 extern "C" __attribute__((visibility("default"))) nef_status
 spancast_nef_tessellate(const double *xy, const uint32_t *start, uint32_t contour_count,
@@ -914,38 +924,7 @@ spancast_nef_tessellate(const double *xy, const uint32_t *start, uint32_t contou
                     }
                 }
             }
-            for (auto f = cdt.all_faces_begin(); f != cdt.all_faces_end(); ++f)
-                f->info() = -1;
-            std::list<Cdt::Edge> border;
-            auto mark = [&](Cdt::Face_handle from, int level) {
-                if (from->info() != -1)
-                    return;
-                std::list<Cdt::Face_handle> queue{from};
-                while (!queue.empty()) {
-                    Cdt::Face_handle f = queue.front();
-                    queue.pop_front();
-                    if (f->info() != -1)
-                        continue;
-                    f->info() = level;
-                    for (int i = 0; i < 3; i++) {
-                        Cdt::Face_handle g = f->neighbor(i);
-                        if (g->info() != -1)
-                            continue;
-                        if (cdt.is_constrained(Cdt::Edge(f, i)))
-                            border.push_back(Cdt::Edge(f, i));
-                        else
-                            queue.push_back(g);
-                    }
-                }
-            };
-            mark(cdt.infinite_face(), 0);
-            while (!border.empty()) {
-                Cdt::Edge e = border.front();
-                border.pop_front();
-                Cdt::Face_handle g = e.first->neighbor(e.second);
-                if (g->info() == -1)
-                    mark(g, e.first->info() + 1);
-            }
+            mark_domains(cdt);
             std::vector<uint32_t> out;
             for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f) {
                 if (f->info() % 2 != 1)
