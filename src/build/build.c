@@ -115,6 +115,9 @@ typedef struct frame {
      * cgal_world * since_cgal) */
     affine since_cgal;
     affine cgal_world;
+    /* faithful mode: a CGAL operation above takes no mesh that passes
+     * through itself (build_cgal_crossing), so none below needs looking at */
+    int crossing_clean;
 } frame;
 
 /* A '#' or '%' node and the state its parent hands it. */
@@ -1205,6 +1208,27 @@ static sc_status build_hull_leaf(builder *b, const model_node *n, const frame *s
     return st;
 }
 
+/* Faithful mode: n, which OpenSCAD 2021.01 makes a Nef polyhedron of and
+ * which takes a mesh that passes through itself, as CGAL's solid
+ * (build_cgal_crossing): its boundary as a mesh leaf, drawn as it is. */
+static sc_status build_cgal_leaf(builder *b, const model_node *n, const frame *state,
+                                 uint32_t *id)
+{
+    build_ctx c = context(b, state->emit, NULL);
+    vec3 *tris = NULL;
+    uint32_t count = 0;
+    sc_status st =
+        build_nef_triangles(&c, n, n->name, &b->resize_cache, 0, &tris, &count);
+    const char *empty = NULL;
+    prim p;
+    if (st == SC_OK && count)
+        st = build_mesh_soup(&c, &n->loc, n->name, tris, count, &p, &empty);
+    free(tris);
+    if (st == SC_OK && count && !empty)
+        st = add_leaf(b, n, &p, state, id);
+    return st;
+}
+
 /* surface(file) (build_surface.c). */
 static sc_status build_surface_leaf(builder *b, const model_node *n, const frame *state,
                                     uint32_t *id)
@@ -1531,6 +1555,29 @@ static sc_status visit(builder *b, const model_node *n, int *opened)
     b->background_root |= n->is_root && (n->modifiers & MODEL_MOD_BACKGROUND);
     if (plain_leaf(b, n, parent))
         return visit_leaf(b, n, parent);
+    /* faithful mode: the outermost operation OpenSCAD makes a Nef
+     * polyhedron of, if it takes a mesh that passes through itself, is
+     * CGAL's solid (build_cgal_leaf); else nothing below it is */
+    int checked = 0;
+    if (b->faithful && !b->preview && parent->emit && !parent->moving &&
+        !parent->crossing_clean && !model_is_leaf(kind) && kind != MODEL_HULL &&
+        kind != MODEL_MINKOWSKI && kind != MODEL_PROJECTION && build_dim(n, 0) == 3 &&
+        to_cgal(kind, n->first_child)) {
+        build_ctx c = context(b, 0, NULL);
+        int crossing = 0;
+        if ((st = build_cgal_crossing(&c, n, &crossing)) != SC_OK)
+            return st;
+        if (crossing) {
+            frame f;
+            inherit(b, n, parent, &f);
+            uint32_t id = CSG_EMPTY;
+            st = build_cgal_leaf(b, n, &f, &id);
+            return st != SC_OK
+                       ? st
+                       : deliver(b, n, f.counted, id, f.highlighted ? ID_HIGHLIGHTED : 0);
+        }
+        checked = 1;
+    }
     int flat = build_dim(n, 0) == 2 && (kind != MODEL_PROJECTION || build_projects(n));
     /* OpenSCAD's preview draws 2D booleans, transforms and colours as CSG
      * of its 2D leaves' slabs */
@@ -1580,6 +1627,7 @@ static sc_status visit(builder *b, const model_node *n, int *opened)
         return err_nomem(b->error, NULL);
     frame *f = &b->frames[b->frame_count];
     inherit(b, n, &b->frames[b->frame_count - 1], f);
+    f->crossing_clean |= checked;
     f->op = kind == MODEL_DIFFERENCE     ? CSG_DIFFERENCE
             : kind == MODEL_INTERSECTION ? CSG_INTERSECTION
                                          : CSG_UNION;

@@ -1929,6 +1929,225 @@ sc_status build_self_crossing(const build_ctx *c, const sc_location *at, nef_plu
     return st;
 }
 
+int build_may_cross(const model_node *n)
+{
+    if (n->kind == MODEL_LINEAR_EXTRUDE)
+        return n->u.linear_extrude->twist != 0 || n->u.linear_extrude->sx != 1 ||
+               n->u.linear_extrude->sy != 1;
+    return n->kind == MODEL_POLYHEDRON || n->kind == MODEL_IMPORT;
+}
+
+/* Appends the triangles of each face of f (through its points) to
+ * *corners: a triangle as it is, a larger face (its outline and holes) as
+ * CGAL's constrained triangulation of it in the plane of its largest
+ * normal component, turned the face's way, so that the triangles overlap
+ * nowhere and keep the mesh's orientation. */
+static sc_status face_triangles(const walk *w, const model_node *n,
+                                const build_mesh_faces *f, vec3 **corners,
+                                uint32_t *count)
+{
+    size_t cap = 0;
+    double *xy = NULL;
+    uint32_t *start = NULL, *map = NULL;
+    size_t xy_cap = 0, start_cap = 0, map_cap = 0;
+    sc_status st = SC_OK;
+    for (uint32_t k = 0; st == SC_OK && k < f->face_count; k++) {
+        uint32_t lo = f->face_loops ? f->face_loops[k] : k;
+        uint32_t hi = f->face_loops ? f->face_loops[k + 1] : k + 1;
+        static const uint32_t one[3] = {0, 1, 2};
+        uint32_t *tris = NULL, tri_count = 0, points = 0;
+        const uint32_t *use = one;
+        int reverse = 0;
+        if (hi - lo == 1 && f->face_start[lo + 1] - f->face_start[lo] == 3) {
+            if (!grow_array((void **)&map, &map_cap, 3, sizeof *map)) {
+                st = err_nomem(w->c->error, &n->loc);
+                break;
+            }
+            for (uint32_t j = 0; j < 3; j++)
+                map[j] = f->indices[f->face_start[lo] + j];
+            tri_count = 1;
+        } else {
+            vec3 normal = v3(0, 0, 0); /* Newell's, of every loop */
+            for (uint32_t l = lo; l < hi; l++)
+                for (uint32_t i = f->face_start[l]; i < f->face_start[l + 1]; i++) {
+                    uint32_t j = i + 1 < f->face_start[l + 1] ? i + 1 : f->face_start[l];
+                    vec3 a = f->points[f->indices[i]], b = f->points[f->indices[j]];
+                    normal.x += (a.y - b.y) * (a.z + b.z);
+                    normal.y += (a.z - b.z) * (a.x + b.x);
+                    normal.z += (a.x - b.x) * (a.y + b.y);
+                }
+            double c[3] = {normal.x, normal.y, normal.z};
+            int axis = fabs(c[1]) > fabs(c[0]) ? 1 : 0;
+            axis = fabs(c[2]) > fabs(c[axis]) ? 2 : axis;
+            int u = (axis + 1) % 3, v = (axis + 2) % 3;
+            reverse = c[axis] < 0;
+            uint32_t total = f->face_start[hi] - f->face_start[lo];
+            if (!grow_array((void **)&xy, &xy_cap, 2 * (size_t)total, sizeof *xy) ||
+                !grow_array((void **)&map, &map_cap, total, sizeof *map) ||
+                !grow_array((void **)&start, &start_cap, (size_t)(hi - lo) + 1,
+                            sizeof *start)) {
+                st = err_nomem(w->c->error, &n->loc);
+                break;
+            }
+            for (uint32_t l = lo; l < hi; l++) {
+                start[l - lo] = points;
+                for (uint32_t i = f->face_start[l]; i < f->face_start[l + 1]; i++) {
+                    vec3 p = f->points[f->indices[i]];
+                    double q[3] = {p.x, p.y, p.z};
+                    xy[2 * points] = q[u];
+                    xy[2 * points + 1] = q[v];
+                    map[points++] = f->indices[i];
+                }
+            }
+            start[hi - lo] = points;
+            char why[512];
+            nef_status ns = w->nef->tessellate(xy, start, hi - lo, &tris, &tri_count, why,
+                                               sizeof why);
+            use = tris;
+            if (ns == NEF_NOMEM)
+                st = err_nomem(w->c->error, &n->loc);
+            else if (ns != NEF_OK)
+                tri_count = 0; /* a face CGAL refuses: left out of the test */
+        }
+        if (st == SC_OK &&
+            ((size_t)*count + tri_count > UINT32_MAX / 3 ||
+             !grow_array((void **)corners, &cap, 3 * ((size_t)*count + tri_count),
+                         sizeof **corners)))
+            st = err_nomem(w->c->error, &n->loc);
+        for (uint32_t t = 0; st == SC_OK && t < tri_count; t++) {
+            vec3 *to = *corners + 3 * (size_t)*count;
+            for (int j = 0; j < 3; j++)
+                to[j] = f->points[map[use[3 * t + (reverse ? 2 - j : j)]]];
+            ++*count;
+        }
+        free(tris);
+    }
+    free(xy);
+    free(start);
+    free(map);
+    return st;
+}
+
+/* Whether leaf n (build_may_cross) passes through itself as CGAL takes it,
+ * in its own frame: a linear_extrude's faces as OpenSCAD's PolySet (its
+ * points on the grid, as CGAL's builder merges them), a polyhedron's or an
+ * import's faces triangulated (face_triangles). A leaf that is empty or
+ * not a closed surface does not. */
+static sc_status leaf_crosses(const walk *w, const model_node *n, int *crossing)
+{
+    *crossing = 0;
+    build_mesh_faces faces;
+    memset(&faces, 0, sizeof faces);
+    const char *empty = NULL;
+    /* the node's own build gives its warnings and errors */
+    sc_error sink = {SC_OK, "", 0, 0, ""};
+    build_ctx quiet = *w->c;
+    quiet.note = &sink;
+    quiet.notes = NULL;
+    quiet.strict = 0;
+    walk q = *w;
+    q.c = &quiet;
+    if (n->pending)
+        return SC_OK;
+    /* a mesh that is not closed: CGAL never takes it */
+    walk probe = q;
+    probe.in_union = 1;
+    probe.check = 1;
+    int open = 0;
+    affine id = affine_identity();
+    sc_status st =
+        n->kind == MODEL_LINEAR_EXTRUDE ? SC_OK : closed_check(&probe, n, &id, &open);
+    if (st != SC_OK || open)
+        return st;
+    if (n->kind == MODEL_POLYHEDRON) {
+        faces.points = (vec3 *)n->u.polyhedron.points;
+        faces.point_count = n->u.polyhedron.point_count;
+        faces.indices = (uint32_t *)n->u.polyhedron.indices;
+        faces.face_start = (uint32_t *)n->u.polyhedron.face_start;
+        faces.face_count = n->u.polyhedron.face_count;
+    } else {
+        st = mesh_faces(&q, n, NULL, &faces, &empty);
+        if (st == SC_OK && !empty && n->kind == MODEL_LINEAR_EXTRUDE)
+            st = build_mesh_grid_align(&quiet, &n->loc, faces.points, faces.point_count);
+        if (st != SC_OK && st != SC_ERR_NOMEM) { /* found again where it is built */
+            build_mesh_faces_free(&faces);
+            err_clear(w->c->error);
+            return SC_OK;
+        }
+    }
+    vec3 *corners = NULL;
+    uint32_t count = 0;
+    if (st == SC_OK && !empty)
+        st = face_triangles(w, n, &faces, &corners, &count);
+    if (n->kind != MODEL_POLYHEDRON)
+        build_mesh_faces_free(&faces);
+    if (st == SC_OK && count)
+        st = build_self_crossing(w->c, &n->loc, w->nef, corners, count, crossing);
+    free(corners);
+    return st;
+}
+
+/* Whether a leaf of n that CGAL takes when it evaluates n passes through
+ * itself (leaf_crosses): below groups, colours, transforms and booleans,
+ * not below a hull, minkowski or projection (each its own CGAL solid, or
+ * 2D), nor a '%' or '*' part. */
+static sc_status crossing_below(const walk *w, const model_node *parent, int depth,
+                                int *crossing)
+{
+    if (depth > BUILD_HULL_MAX_DEPTH)
+        return depth_error(w, parent);
+    sc_status st = SC_OK;
+    for (const model_node *n = parent->first_child; n && st == SC_OK && !*crossing;
+         n = n->next) {
+        if (skipped(n) || is_shading(n->kind) || is_2d(n))
+            continue;
+        if (build_may_cross(n))
+            st = leaf_crosses(w, n, crossing);
+        else if (!model_is_leaf(n->kind) && n->kind != MODEL_HULL &&
+                 n->kind != MODEL_MINKOWSKI && n->kind != MODEL_PROJECTION)
+            st = crossing_below(w, n, depth + 1, crossing);
+    }
+    return st;
+}
+
+/* Whether a node below parent is a leaf that may cross itself, where
+ * crossing_below looks. */
+static int may_cross_below(const model_node *parent, int depth)
+{
+    if (depth > BUILD_HULL_MAX_DEPTH)
+        return 1; /* crossing_below reports the depth */
+    for (const model_node *n = parent->first_child; n; n = n->next) {
+        if (skipped(n) || is_shading(n->kind) || is_2d(n))
+            continue;
+        if (build_may_cross(n) ||
+            (!model_is_leaf(n->kind) && n->kind != MODEL_HULL &&
+             n->kind != MODEL_MINKOWSKI && n->kind != MODEL_PROJECTION &&
+             may_cross_below(n, depth + 1)))
+            return 1;
+    }
+    return 0;
+}
+
+static int nef_walkable(const model_node *n, int depth);
+
+sc_status build_cgal_crossing(const build_ctx *c, const model_node *n, int *crossing)
+{
+    *crossing = 0;
+    if (!nef_walkable(n, 0)) /* a node CGAL cannot take: drawn as it is */
+        return SC_OK;
+    /* a quick look first: no plugin for a subtree without such a leaf */
+    int candidate = may_cross_below(n, 0);
+    if (!candidate)
+        return SC_OK;
+    nef_plugin nef = {0};
+    walk w = {c, n->name, 0, NULL, &nef, 0, 0, NULL, NULL, NULL, NULL, NULL};
+    sc_status st = nef_ready(&w, n);
+    if (st == SC_OK)
+        st = crossing_below(&w, n, 0, crossing);
+    nef_plugin_close(&nef);
+    return st;
+}
+
 /* Whether the walk takes every node of 3D subtree n as OpenSCAD's: its
  * kinds (not spancast's own leaves, which OpenSCAD has no mesh of), none
  * with a pending argument error. A 2D subtree goes whole to the 2D

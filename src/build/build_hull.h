@@ -87,6 +87,20 @@ sc_status build_nef_section(const build_ctx *c, const model_node *n,
 sc_status build_self_crossing(const build_ctx *c, const sc_location *at, nef_plugin *nef,
                               const vec3 *tris, uint32_t tri_count, int *crossing);
 
+/* Whether leaf n may pass through itself: a twisted or scaled
+ * linear_extrude, a polyhedron, an import. */
+int build_may_cross(const model_node *n);
+
+/* Faithful mode: whether OpenSCAD 2021.01's CGAL evaluation of n (a
+ * boolean, or a union of several, which OpenSCAD makes a Nef polyhedron
+ * of) takes a mesh that passes through itself (build_may_cross, then
+ * nef.h's self_crossing): the Nef polyhedron CGAL makes of it, and whether
+ * its booleans with it fail, follow no rule on the mesh, so n is then drawn
+ * as CGAL's solid (build_nef_triangles). A subtree with a node CGAL does
+ * not take (spancast's own leaves) is not. Loads the CGAL plugin only
+ * where a leaf may cross. */
+sc_status build_cgal_crossing(const build_ctx *c, const model_node *n, int *crossing);
+
 /* What OpenSCAD 2021.01's CGAL evaluation makes of a 3D subtree
  * (build_nef_evaluate). */
 typedef struct build_nef_state {

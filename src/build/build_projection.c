@@ -126,7 +126,7 @@ typedef struct pwalk {
      * which OpenSCAD makes a Nef polyhedron of, as build_hull.c's walk's
      * (NULL where none lies between: the walk's own m) */
     const affine *since;
-    /* cut: a leaf's mesh passes through itself (may_cross): the section is
+    /* cut: a leaf's mesh passes through itself (build_may_cross): the section is
      * then CGAL's, as OpenSCAD's (build_nef_section), and the leaves'
      * own sections are no longer made */
     int crossing;
@@ -1134,17 +1134,6 @@ static int warped_face(const model_node *n)
     return 0;
 }
 
-/* Whether leaf n's mesh can pass through itself: a twisted or scaled
- * linear_extrude (its walls between slices can cross), a polyhedron or
- * an import. Other leaves' meshes cannot. */
-static int may_cross(const model_node *n)
-{
-    if (n->kind == MODEL_LINEAR_EXTRUDE)
-        return n->u.linear_extrude->twist != 0 || n->u.linear_extrude->sx != 1 ||
-               n->u.linear_extrude->sy != 1;
-    return n->kind == MODEL_POLYHEDRON || n->kind == MODEL_IMPORT;
-}
-
 /* Adds leaf n's loops (cut) or projected faces to out. */
 static sc_status leaf(pwalk *w, const model_node *n, const affine *m, int depth,
                       twod_region *out)
@@ -1176,7 +1165,7 @@ static sc_status leaf(pwalk *w, const model_node *n, const affine *m, int depth,
         /* a cut through a mesh that passes through itself: OpenSCAD's
          * CGAL section of a Nef polyhedron CGAL makes of it, whatever
          * that is there, which no rule here follows */
-        if (w->cut && !w->corners && !w->crossing && may_cross(n) &&
+        if (w->cut && !w->corners && !w->crossing && build_may_cross(n) &&
             (st = build_self_crossing(w->c, &n->loc, &w->nef, s.v, s.count,
                                       &w->crossing)) != SC_OK) {
             free(s.face);
