@@ -427,6 +427,41 @@ static void test_no_preview(void **state)
     sc_framebuffer_release(expected);
 }
 
+/* Faithful mode draws an intersection with a mesh that crosses itself as
+ * CGAL's solid (build_cgal_crossing): CGAL fails on it, and OpenSCAD's
+ * render keeps the twisted sliver alone; its preview (OpenCSG) draws the
+ * intersection as written, inside the cylinder. */
+static void test_faithful_cgal_as_written(void **state)
+{
+    (void)state;
+    static const char scene[] =
+        "intersection() {\n"
+        "  linear_extrude(height = 2.2, twist = 90) polygon(points = [[-0.54, 0.59], "
+        "[0.03, 0.56], [-0.27, 0.6], [-1.64, 1.14]]);\n"
+        "  cylinder(h = 1.2, r1 = 0.83, r2 = 0.83, center = false, $fn = 10);\n"
+        "}\n";
+    sc_load_options lo;
+    sc_load_options_init(&lo);
+    lo.faithful = 1;
+    sc_render_options o;
+    options_above(&o, 0);
+    o.camera[2] = 10; /* the model is 3 across */
+    sc_framebuffer *render = render_loaded(scene, &lo, &o);
+    o.preview = 1;
+    sc_framebuffer *preview = render_loaded(scene, &lo, &o);
+    size_t in_render = 0, in_preview = 0, outside = 0;
+    for (size_t p = 0; p < (size_t)SIZE * SIZE; p++) {
+        in_render += render->mask[p] != 0;
+        in_preview += preview->mask[p] != 0;
+        outside += preview->mask[p] != 0 && !render->mask[p];
+    }
+    assert_true(in_preview > 0);
+    assert_true(in_render > in_preview);
+    assert_int_equal(outside, 0); /* the intersection lies in the sliver */
+    sc_framebuffer_release(render);
+    sc_framebuffer_release(preview);
+}
+
 /* A 2D model in the render, as OpenSCAD's render draws a 2D result: flat
  * at z = 0 in colour, mask and depth, unlit in the options' 2D face
  * colour, its outlines (the hole's too) 2 pixels wide in the 2D edge
@@ -551,6 +586,7 @@ int main(void)
         cmocka_unit_test(test_render_loses_terms),
         cmocka_unit_test(test_crop_and_threads),
         cmocka_unit_test(test_flat_2d),
+        cmocka_unit_test(test_faithful_cgal_as_written),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -1568,8 +1568,10 @@ static sc_status visit(builder *b, const model_node *n, int *opened)
         if ((st = build_cgal_crossing(&c, n, &crossing)) != SC_OK)
             return st;
         if (crossing) {
+            /* OpenSCAD's preview draws the operation as written (OpenCSG) */
             frame f;
             inherit(b, n, parent, &f);
+            b->cgal_built += f.emit && f.shown;
             uint32_t id = CSG_EMPTY;
             st = build_cgal_leaf(b, n, &f, &id);
             return st != SC_OK
