@@ -2049,14 +2049,17 @@ static sc_status leaf_crosses(const walk *w, const model_node *n, int *crossing)
     q.c = &quiet;
     if (n->pending)
         return SC_OK;
+    sc_status st = nef_ready(w, n);
+    if (st != SC_OK)
+        return st;
     /* a mesh that is not closed: CGAL never takes it */
     walk probe = q;
     probe.in_union = 1;
     probe.check = 1;
     int open = 0;
     affine id = affine_identity();
-    sc_status st =
-        n->kind == MODEL_LINEAR_EXTRUDE ? SC_OK : closed_check(&probe, n, &id, &open);
+    if (n->kind != MODEL_LINEAR_EXTRUDE)
+        st = closed_check(&probe, n, &id, &open);
     if (st != SC_OK || open)
         return st;
     if (n->kind == MODEL_POLYHEDRON) {
@@ -2110,24 +2113,6 @@ static sc_status crossing_below(const walk *w, const model_node *parent, int dep
     return st;
 }
 
-/* Whether a node below parent is a leaf that may cross itself, where
- * crossing_below looks. */
-static int may_cross_below(const model_node *parent, int depth)
-{
-    if (depth > BUILD_HULL_MAX_DEPTH)
-        return 1; /* crossing_below reports the depth */
-    for (const model_node *n = parent->first_child; n; n = n->next) {
-        if (skipped(n) || is_shading(n->kind) || is_2d(n))
-            continue;
-        if (build_may_cross(n) ||
-            (!model_is_leaf(n->kind) && n->kind != MODEL_HULL &&
-             n->kind != MODEL_MINKOWSKI && n->kind != MODEL_PROJECTION &&
-             may_cross_below(n, depth + 1)))
-            return 1;
-    }
-    return 0;
-}
-
 static int nef_walkable(const model_node *n, int depth);
 
 sc_status build_cgal_crossing(const build_ctx *c, const model_node *n, int *crossing)
@@ -2135,15 +2120,10 @@ sc_status build_cgal_crossing(const build_ctx *c, const model_node *n, int *cros
     *crossing = 0;
     if (!nef_walkable(n, 0)) /* a node CGAL cannot take: drawn as it is */
         return SC_OK;
-    /* a quick look first: no plugin for a subtree without such a leaf */
-    int candidate = may_cross_below(n, 0);
-    if (!candidate)
-        return SC_OK;
+    /* the plugin is loaded at the first leaf that may cross (leaf_crosses) */
     nef_plugin nef = {0};
     walk w = {c, n->name, 0, NULL, &nef, 0, 0, NULL, NULL, NULL, NULL, NULL};
-    sc_status st = nef_ready(&w, n);
-    if (st == SC_OK)
-        st = crossing_below(&w, n, 0, crossing);
+    sc_status st = crossing_below(&w, n, 0, crossing);
     nef_plugin_close(&nef);
     return st;
 }
