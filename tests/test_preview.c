@@ -427,6 +427,15 @@ static void test_no_preview(void **state)
     sc_framebuffer_release(expected);
 }
 
+/* An intersection with a twisted sliver whose walls cross, which CGAL
+ * fails on. */
+static const char sliver_intersection[] =
+    "intersection() {\n"
+    "  linear_extrude(height = 2.2, twist = 90) polygon(points = [[-0.54, 0.59], "
+    "[0.03, 0.56], [-0.27, 0.6], [-1.64, 1.14]]);\n"
+    "  cylinder(h = 1.2, r1 = 0.83, r2 = 0.83, center = false, $fn = 10);\n"
+    "}\n";
+
 /* Faithful mode draws an intersection with a mesh that crosses itself as
  * CGAL's solid (build_cgal_crossing): CGAL fails on it, and OpenSCAD's
  * render keeps the twisted sliver alone; its preview (OpenCSG) draws the
@@ -434,12 +443,7 @@ static void test_no_preview(void **state)
 static void test_faithful_cgal_as_written(void **state)
 {
     (void)state;
-    static const char scene[] =
-        "intersection() {\n"
-        "  linear_extrude(height = 2.2, twist = 90) polygon(points = [[-0.54, 0.59], "
-        "[0.03, 0.56], [-0.27, 0.6], [-1.64, 1.14]]);\n"
-        "  cylinder(h = 1.2, r1 = 0.83, r2 = 0.83, center = false, $fn = 10);\n"
-        "}\n";
+    const char *scene = sliver_intersection;
     sc_load_options lo;
     sc_load_options_init(&lo);
     lo.faithful = 1;
@@ -460,6 +464,99 @@ static void test_faithful_cgal_as_written(void **state)
     assert_int_equal(outside, 0); /* the intersection lies in the sliver */
     sc_framebuffer_release(render);
     sc_framebuffer_release(preview);
+}
+
+/* Faithful renders of a and b (above, 3 across) draw the same mask. */
+static void assert_same_faithful_mask(const char *a, const char *b)
+{
+    sc_load_options lo;
+    sc_load_options_init(&lo);
+    lo.faithful = 1;
+    sc_render_options o;
+    options_above(&o, 0);
+    o.camera[2] = 10;
+    sc_framebuffer *fa = render_loaded(a, &lo, &o), *fb = render_loaded(b, &lo, &o);
+    size_t differ = 0, drawn = 0;
+    for (size_t p = 0; p < (size_t)SIZE * SIZE; p++) {
+        differ += (fa->mask[p] != 0) != (fb->mask[p] != 0);
+        drawn += fb->mask[p] != 0;
+    }
+    assert_true(drawn > 0);
+    assert_int_equal(differ, 0);
+    sc_framebuffer_release(fa);
+    sc_framebuffer_release(fb);
+}
+
+/* A '!' node is the design as its subtree alone would be, in faithful mode
+ * too: the root intersection CGAL fails on is the sliver alone (it was
+ * drawn as the intersection, the root's parent taking no part in the
+ * render). */
+static void test_faithful_cgal_root(void **state)
+{
+    (void)state;
+    char rooted[sizeof sliver_intersection + 64];
+    snprintf(rooted, sizeof rooted, "cube(0.2, center = true);\n!%s",
+             sliver_intersection);
+    assert_same_faithful_mask(rooted, sliver_intersection);
+}
+
+/* OpenSCAD 2021.01's render unites several objects at the file's top level
+ * with CGAL (its root group), as a union() of them: a scaled extrusion
+ * whose walls cross beside a minkowski sum that reaches into it makes that
+ * union fail (CGALUtils::applyUnion3D), and the whole model is empty. So
+ * it is in faithful mode, with OpenSCAD's error as a warning, and each
+ * object is drawn in exact mode. */
+static void test_faithful_cgal_top_level(void **state)
+{
+    (void)state;
+    static const char scene[] =
+        "resize(newsize = [1.56, 0, 2.34], auto = [1, 0, 1])\n"
+        "  linear_extrude(height = 0.55, center = true, scale = [1.5, 0.8])\n"
+        "    multmatrix([[1, 0, 0, -1.5], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]])\n"
+        "      polygon(points = [[2.34, 0.76], [2.03, -0.19], [2.65, 1.7]]);\n"
+        "minkowski() {\n"
+        "  multmatrix([[0.600094, -0.00368064, 0.799921, 0],\n"
+        "              [0.715164, 0.450463, -0.534437, 0],\n"
+        "              [-0.358368, 0.892787, 0.272953, 0], [0, 0, 0, 1]])\n"
+        "    linear_extrude(height = 2.71, center = true, scale = [1.5, 0.8])\n"
+        "      multmatrix([[1, 0, 0, -1.5], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]])\n"
+        "        polygon(points = [[2.99, 0.68], [0.95, 1.23], [2.42, 1.51]]);\n"
+        "  resize(newsize = [3.57, 0, 3.84], auto = [1, 0, 1])\n"
+        "    cube(size = [1.73, 2.55, 1.2]);\n"
+        "}\n";
+    sc_scene *scene_exact = NULL, *scene_faithful = NULL;
+    sc_error error;
+    sc_load_options lo;
+    sc_load_options_init(&lo);
+    if (sc_scene_load_string("test.csg", scene, strlen(scene), &lo, &scene_exact, &error))
+        fail_msg("load: %s", error.message);
+    lo.faithful = 1;
+    if (sc_scene_load_string("test.csg", scene, strlen(scene), &lo, &scene_faithful,
+                             &error))
+        fail_msg("load: %s", error.message);
+    int failed = 0;
+    for (size_t k = 0; k < sc_scene_warning_count(scene_faithful); k++)
+        failed |= strstr(sc_scene_warning(scene_faithful, k)->message,
+                         "CGALUtils::applyUnion3D") != NULL;
+    assert_true(failed);
+    sc_render_options o;
+    options_above(&o, 0);
+    o.camera[2] = 20;
+    sc_framebuffer *exact = NULL, *faithful = NULL;
+    if (sc_render(scene_exact, &o, &exact, &error) ||
+        sc_render(scene_faithful, &o, &faithful, &error))
+        fail_msg("render: %s", error.message);
+    size_t in_exact = 0, in_faithful = 0;
+    for (size_t p = 0; p < (size_t)SIZE * SIZE; p++) {
+        in_exact += exact->mask[p] != 0;
+        in_faithful += faithful->mask[p] != 0;
+    }
+    assert_true(in_exact > 0);
+    assert_int_equal(in_faithful, 0);
+    sc_framebuffer_release(exact);
+    sc_framebuffer_release(faithful);
+    sc_scene_release(scene_exact);
+    sc_scene_release(scene_faithful);
 }
 
 /* A 2D model in the render, as OpenSCAD's render draws a 2D result: flat
@@ -587,6 +684,8 @@ int main(void)
         cmocka_unit_test(test_crop_and_threads),
         cmocka_unit_test(test_flat_2d),
         cmocka_unit_test(test_faithful_cgal_as_written),
+        cmocka_unit_test(test_faithful_cgal_root),
+        cmocka_unit_test(test_faithful_cgal_top_level),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

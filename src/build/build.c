@@ -1229,6 +1229,25 @@ static sc_status build_cgal_leaf(builder *b, const model_node *n, const frame *s
     return st;
 }
 
+/* Faithful mode: if n, which OpenSCAD 2021.01 makes a Nef polyhedron of,
+ * takes a mesh that passes through itself (build_cgal_crossing), n drawn
+ * in state as CGAL's solid and delivered, and *crossing set. OpenSCAD's
+ * preview draws it as written (OpenCSG). */
+static sc_status cgal_crossing(builder *b, const model_node *n, const frame *state,
+                               int *crossing)
+{
+    build_ctx c = context(b, 0, NULL);
+    sc_status st = build_cgal_crossing(&c, n, crossing);
+    if (st != SC_OK || !*crossing)
+        return st;
+    b->cgal_built += state->emit && state->shown;
+    uint32_t id = CSG_EMPTY;
+    st = build_cgal_leaf(b, n, state, &id);
+    return st != SC_OK ? st
+                       : deliver(b, n, state->counted, id,
+                                 state->highlighted ? ID_HIGHLIGHTED : 0);
+}
+
 /* surface(file) (build_surface.c). */
 static sc_status build_surface_leaf(builder *b, const model_node *n, const frame *state,
                                     uint32_t *id)
@@ -1559,26 +1578,19 @@ static sc_status visit(builder *b, const model_node *n, int *opened)
      * polyhedron of, if it takes a mesh that passes through itself, is
      * CGAL's solid (build_cgal_leaf); else nothing below it is */
     int checked = 0;
-    if (b->faithful && !b->preview && parent->emit && !parent->moving &&
-        !parent->crossing_clean && !model_is_leaf(kind) && kind != MODEL_HULL &&
-        kind != MODEL_MINKOWSKI && kind != MODEL_PROJECTION && build_dim(n, 0) == 3 &&
+    if (b->faithful && !b->preview && !parent->moving && !parent->crossing_clean &&
+        !model_is_leaf(kind) && kind != MODEL_HULL && kind != MODEL_MINKOWSKI &&
+        kind != MODEL_PROJECTION && build_dim(n, 0) == 3 &&
         to_cgal(kind, n->first_child)) {
-        build_ctx c = context(b, 0, NULL);
+        /* the state n gets: a '!' node is drawn though its parent is not */
+        frame f;
+        inherit(b, n, parent, &f);
         int crossing = 0;
-        if ((st = build_cgal_crossing(&c, n, &crossing)) != SC_OK)
+        if (f.emit && (st = cgal_crossing(b, n, &f, &crossing)) != SC_OK)
             return st;
-        if (crossing) {
-            /* OpenSCAD's preview draws the operation as written (OpenCSG) */
-            frame f;
-            inherit(b, n, parent, &f);
-            b->cgal_built += f.emit && f.shown;
-            uint32_t id = CSG_EMPTY;
-            st = build_cgal_leaf(b, n, &f, &id);
-            return st != SC_OK
-                       ? st
-                       : deliver(b, n, f.counted, id, f.highlighted ? ID_HIGHLIGHTED : 0);
-        }
-        checked = 1;
+        if (crossing)
+            return SC_OK;
+        checked = f.emit;
     }
     int flat = build_dim(n, 0) == 2 && (kind != MODEL_PROJECTION || build_projects(n));
     /* OpenSCAD's preview draws 2D booleans, transforms and colours as CSG
@@ -1698,17 +1710,10 @@ static const model_node *last_node(const model *m)
     return n;
 }
 
-/* The walk of a 2D model's top level (build_flat): the shading nodes at
- * the top level are read, the rest is the 2D engine's; an argument error
- * that ended the lowering is reported as the main walk would. */
-static sc_status walk_flat(builder *b, const frame *top, uint32_t *root)
+/* The shading nodes at the top level (light, camera, background). */
+static sc_status walk_shading(builder *b, const frame *top)
 {
-    sc_status st = build_flat(b, NULL, top, root);
-    const model_node *last = last_node(b->model);
-    if (st == SC_OK && last && last->kind == MODEL_ERROR) {
-        *b->error = *last->u.error;
-        return last->u.error->status;
-    }
+    sc_status st = SC_OK;
     for (const model_node *n = b->model->first; st == SC_OK && n; n = n->next) {
         if (n->modifiers & (MODEL_MOD_DISABLE | MODEL_MOD_BACKGROUND))
             continue;
@@ -1720,6 +1725,46 @@ static sc_status walk_flat(builder *b, const frame *top, uint32_t *root)
             build_background(b->shading, n, 1);
     }
     return st;
+}
+
+/* The walk of a 2D model's top level (build_flat): the shading nodes at
+ * the top level are read, the rest is the 2D engine's; an argument error
+ * that ended the lowering is reported as the main walk would. */
+static sc_status walk_flat(builder *b, const frame *top, uint32_t *root)
+{
+    sc_status st = build_flat(b, NULL, top, root);
+    const model_node *last = last_node(b->model);
+    if (st == SC_OK && last && last->kind == MODEL_ERROR) {
+        *b->error = *last->u.error;
+        return last->u.error->status;
+    }
+    return st == SC_OK ? walk_shading(b, top) : st;
+}
+
+/* Faithful mode: where OpenSCAD 2021.01's render unites the file's
+ * objects with CGAL (its root group, a union of several) and one of them
+ * takes a mesh that passes through itself, the model is CGAL's solid of
+ * that union (cgal_crossing), as a union() of them would be; *whole says
+ * so, and the shading nodes at the top level are read. all: the union,
+ * which the id stack names until the walk ends. */
+static sc_status walk_cgal(builder *b, const frame *top, model_node *all, int *whole)
+{
+    *whole = 0;
+    if (!b->faithful || b->preview || b->model->has_root || !top->cgal ||
+        build_list_dim(b->model->first, 0) != 3)
+        return SC_OK;
+    memset(all, 0, sizeof *all);
+    all->kind = MODEL_UNION;
+    all->name = "top level";
+    all->loc = b->model->first->loc;
+    all->first_child = b->model->first;
+    for (const model_node *n = b->model->first; n; n = n->next)
+        all->child_count++;
+    frame state = *top;
+    state.node = all;
+    state.counted = 1;
+    sc_status st = cgal_crossing(b, all, &state, whole);
+    return st == SC_OK && *whole ? walk_shading(b, top) : st;
 }
 
 static sc_status walk(builder *b, uint32_t *root)
@@ -1747,7 +1792,11 @@ static sc_status walk(builder *b, uint32_t *root)
         b->flat_model = 1;
         return walk_flat(b, &top, root);
     }
-    const model_node *n = b->model->first;
+    model_node all;
+    int whole = 0;
+    if (st == SC_OK)
+        st = walk_cgal(b, &top, &all, &whole);
+    const model_node *n = whole ? NULL : b->model->first;
     while (st == SC_OK) {
         if (!n) {
             if (b->frame_count == 1)

@@ -16,6 +16,13 @@
 #   // files: NAME...                  (optional: files beside the model,
 #                                       meshes it imports, height maps, copied
 #                                       with it so relative paths resolve)
+#   // openscad: empty                 (optional: OpenSCAD's render of the
+#                                       model is empty, as its log says,
+#                                       "Current top level object is
+#                                       empty.", and it writes no mesh; the
+#                                       reference is then the empty mesh. A
+#                                       model that says so and gets a mesh
+#                                       fails)
 #   // 2d: flat                        (optional: a 2D model, which
 #                                       spancast's render draws flat at
 #                                       z = 0; the reference mesh is
@@ -59,8 +66,20 @@ if [[ "$(setting 2d)" == flat ]]; then
         >"$mesh_input"
 fi
 t0=$(now)
-openscad --export-format binstl -o "$work/$name.stl" "$mesh_input" \
-    >>"$work/openscad.log" 2>&1 || { cat "$work/openscad.log" >&2; exit 1; }
+if [[ "$(setting openscad)" == empty ]]; then
+    if openscad --export-format binstl -o "$work/$name.stl" "$mesh_input" \
+        >>"$work/openscad.log" 2>&1; then
+        echo "$model: OpenSCAD rendered a mesh, where the model says it is empty" >&2
+        exit 1
+    fi
+    grep -qx 'Current top level object is empty.' "$work/openscad.log" ||
+        { cat "$work/openscad.log" >&2; exit 1; }
+    # the empty binary STL: its header and no triangles
+    head -c 84 /dev/zero >"$work/$name.stl"
+else
+    openscad --export-format binstl -o "$work/$name.stl" "$mesh_input" \
+        >>"$work/openscad.log" 2>&1 || { cat "$work/openscad.log" >&2; exit 1; }
+fi
 t1=$(now)
 mesh_time=$(elapsed "$t0" "$t1")
 "$refcast" "$work/$name.stl" "${view[@]}" --mask="$work/ref_mask.png" \
