@@ -374,6 +374,23 @@ static int take_faces(mesh *m, uint32_t point_count, uint32_t cap_first, int top
     return 1;
 }
 
+/* The matrix OpenSCAD 2021.01 moves the profile by at a ring, by rows:
+ * Scaling(sx, sy) times rotate_degrees(-deg) (extrudePolygon, add_slice). */
+static void slice_matrix(double sx, double sy, double deg, double m[4])
+{
+    double cs = faithful_cos_deg(-deg), sn = faithful_sin_deg(-deg);
+    m[0] = sx * cs;
+    m[1] = sx * -sn;
+    m[2] = sy * sn;
+    m[3] = sy * cs;
+}
+
+/* The profile's point (x, y) moved by m, at height z. */
+static vec3 slice_point(const double m[4], double x, double y, double z)
+{
+    return v3(m[0] * x + m[1] * y, m[2] * x + m[3] * y, z);
+}
+
 /* Hands the mesh of m to faces as OpenSCAD 2021.01's PolySet reaches
  * CGAL's builder (CGAL_Build_PolySet): the bottom cap's triangles, the top
  * cap's, then the sides, each face as the builder turns it (m's sides
@@ -391,12 +408,12 @@ static int openscad_faces(mesh *m, uint32_t cap_first, const twod_region *r,
     double *top = malloc(((size_t)r->point_count * 2 + 1) * sizeof *top);
     if (!top)
         return -1;
-    double cs = faithful_cos_deg(-p->twist), sn = faithful_sin_deg(-p->twist);
-    double m00 = p->sx * cs, m01 = p->sx * -sn, m10 = p->sy * sn, m11 = p->sy * cs;
+    double mt[4];
+    slice_matrix(p->sx, p->sy, p->twist, mt);
     for (uint32_t i = 0; i < r->point_count; i++) {
-        double x = r->xy[2 * i], y = r->xy[2 * i + 1];
-        top[2 * i] = m00 * x + m01 * y;
-        top[2 * i + 1] = m10 * x + m11 * y;
+        vec3 q = slice_point(mt, r->xy[2 * i], r->xy[2 * i + 1], 0);
+        top[2 * i] = q.x;
+        top[2 * i + 1] = q.y;
     }
     char why[512];
     int ok = 1;
@@ -482,13 +499,11 @@ static sc_status extrude(const build_ctx *c, const sc_location *loc, const param
         double rot = p->twist * j / slices;
         double scx = 1 - (1 - p->sx) * j / slices, scy = 1 - (1 - p->sy) * j / slices;
         double h = h1 + (h2 - h1) * j / slices;
-        double cs = faithful_cos_deg(-rot), sn = faithful_sin_deg(-rot);
-        double m00 = scx * cs, m01 = scx * -sn, m10 = scy * sn, m11 = scy * cs;
-        for (uint32_t i = 0; i < m.ring; i++) {
-            double x = r->xy[2 * i], y = r->xy[2 * i + 1];
+        double mj[4];
+        slice_matrix(scx, scy, rot, mj);
+        for (uint32_t i = 0; i < m.ring; i++)
             m.points[(size_t)j * m.ring + i] =
-                v3(m00 * x + m01 * y, m10 * x + m11 * y, h);
-        }
+                slice_point(mj, r->xy[2 * i], r->xy[2 * i + 1], h);
     }
     double top_sx = 1 - (1 - p->sx) * slices / slices;
     double top_sy = 1 - (1 - p->sy) * slices / slices;

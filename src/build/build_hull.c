@@ -1971,10 +1971,8 @@ static sc_status face_triangles(const walk *w, const model_node *n,
             for (uint32_t l = lo; l < hi; l++)
                 for (uint32_t i = f->face_start[l]; i < f->face_start[l + 1]; i++) {
                     uint32_t j = i + 1 < f->face_start[l + 1] ? i + 1 : f->face_start[l];
-                    vec3 a = f->points[f->indices[i]], b = f->points[f->indices[j]];
-                    normal.x += (a.y - b.y) * (a.z + b.z);
-                    normal.y += (a.z - b.z) * (a.x + b.x);
-                    normal.z += (a.x - b.x) * (a.y + b.y);
+                    normal = v3_add(normal, v3_newell(f->points[f->indices[i]],
+                                                      f->points[f->indices[j]]));
                 }
             double c[3] = {normal.x, normal.y, normal.z};
             int axis = fabs(c[1]) > fabs(c[0]) ? 1 : 0;

@@ -534,8 +534,7 @@ static int convex_faces(const build_mesh_faces *f, int reversed, int split)
         for (uint32_t i = s; i < e; i++) {
             uint32_t j = i + 1 < e ? i + 1 : s, l = j + 1 < e ? j + 1 : s;
             vec3 a = f->points[piece[i]], b = f->points[piece[j]];
-            sum = v3_add(sum, v3((a.y - b.y) * (a.z + b.z), (a.z - b.z) * (a.x + b.x),
-                                 (a.x - b.x) * (a.y + b.y)));
+            sum = v3_add(sum, v3_newell(a, b));
             edges[n++] = (face_edge){(uint64_t)piece[i] << 32 | piece[j], k, piece[l]};
         }
         normal[k] = reversed ? v3_scale(sum, -1) : sum;
@@ -2774,8 +2773,7 @@ static int face_planar(const vec3 *points, const uint32_t *v, uint32_t n)
     bbox box = bbox_empty();
     for (uint32_t j = 0; j < n; j++) {
         vec3 a = points[v[j]], b = points[v[(j + 1) % n]];
-        normal = v3_add(normal, v3((a.y - b.y) * (a.z + b.z), (a.z - b.z) * (a.x + b.x),
-                                   (a.x - b.x) * (a.y + b.y)));
+        normal = v3_add(normal, v3_newell(a, b));
         box = bbox_add_point(box, a);
     }
     double length = v3_length(normal);

@@ -1117,9 +1117,7 @@ static int warped_face(const model_node *n)
         double size = 0;
         for (uint32_t i = s; i < e; i++) {
             vec3 a = points[index[i]], b = points[index[i + 1 < e ? i + 1 : s]];
-            normal =
-                v3_add(normal, v3((a.y - b.y) * (a.z + b.z), (a.z - b.z) * (a.x + b.x),
-                                  (a.x - b.x) * (a.y + b.y)));
+            normal = v3_add(normal, v3_newell(a, b));
             size = fmax(size, v3_max_abs(v3_sub(a, points[index[s]])));
         }
         double length = v3_length(normal);

@@ -55,6 +55,13 @@ static inline vec3 v3_cross(vec3 a, vec3 b)
 {
     return v3(a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x);
 }
+/* The term of the edge a -> b in Newell's normal of a polygon: the sum of
+ * the terms of its edges is the normal, twice its area long. */
+static inline vec3 v3_newell(vec3 a, vec3 b)
+{
+    return v3((a.y - b.y) * (a.z + b.z), (a.z - b.z) * (a.x + b.x),
+              (a.x - b.x) * (a.y + b.y));
+}
 static inline double v3_length(vec3 a)
 {
     return sqrt(v3_dot(a, a));

@@ -137,8 +137,7 @@ static plane face_plane(const vec3 *p, int count, vec3 inside_point)
     vec3 n = v3(0, 0, 0);
     for (int i = 0; i < count; i++) {
         vec3 a = p[i], b = p[(i + 1) % count];
-        n = v3_add(n, v3((a.y - b.y) * (a.z + b.z), (a.z - b.z) * (a.x + b.x),
-                         (a.x - b.x) * (a.y + b.y)));
+        n = v3_add(n, v3_newell(a, b));
     }
     n = v3_scale(n, 1.0 / v3_length(n));
     double d = 0;
