@@ -989,10 +989,14 @@ static sc_status collect(const walk *w, const model_node *parent, const affine *
     return any_2d && !removed(parent) ? warn_2d(w, parent, mixing) : SC_OK;
 }
 
-/* Replaces each part by the vertices of its hull (flat parts keep their
- * points). */
-static sc_status reduce(const walk *w, const model_node *n, partlist *l)
+/* Replaces each part by the vertices of its hull. A flat part keeps its
+ * points, or, where sums is set (the parts are sums of two), is dropped:
+ * OpenSCAD 2021.01's applyMinkowski keeps of each sum's hull only the
+ * corners neither on a line nor in a plane with their neighbours, and a
+ * flat hull has none. */
+static sc_status reduce(const walk *w, const model_node *n, partlist *l, int sums)
 {
+    uint32_t kept = 0;
     for (uint32_t i = 0; i < l->count; i++) {
         hull3 h;
         hull3_status hs = hull3_compute(l->items[i].p, l->items[i].count, &h);
@@ -1007,8 +1011,13 @@ static sc_status reduce(const walk *w, const model_node *n, partlist *l)
             l->items[i].count = l->items[i].cap = h.vertex_count;
             h.vertices = NULL;
             hull3_free(&h);
+        } else if (sums) {
+            free(l->items[i].p);
+            continue;
         }
+        l->items[kept++] = l->items[i];
     }
+    l->count = kept;
     return SC_OK;
 }
 
@@ -1109,7 +1118,7 @@ static sc_status minkowski_parts(const walk *w, const model_node *n, const affin
             st = build_mesh_grid_align(w->c, &n->loc, parts.items[0].p,
                                        parts.items[0].count);
         if (st == SC_OK)
-            st = reduce(&inner, n, &parts);
+            st = reduce(&inner, n, &parts, 0);
         if (st != SC_OK && failure.name) { /* the sum so far, as OpenSCAD's */
             parts_free(&parts);
             err_clear(w->c->error);
@@ -1172,7 +1181,7 @@ static sc_status minkowski_parts(const walk *w, const model_node *n, const affin
         parts_free(&acc);
         acc = next;
         if (st == SC_OK)
-            st = reduce(&inner, n, &acc);
+            st = reduce(&inner, n, &acc, 1);
     }
     if (*not_closed)
         parts_free(&acc);
