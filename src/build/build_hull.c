@@ -1226,6 +1226,28 @@ static sc_status nef_error(const walk *w, const model_node *n, nef_status ns,
                    w->owner, n->name, why);
 }
 
+/* Point k of xyz (x, y, z triples) set to p. */
+static void put_xyz(double *xyz, size_t k, vec3 p)
+{
+    xyz[3 * k] = p.x;
+    xyz[3 * k + 1] = p.y;
+    xyz[3 * k + 2] = p.z;
+}
+
+/* What the plugin made of n (ns, why) into *out: an error at n where it
+ * failed, NULL for the empty solid. */
+static sc_status nef_made(const walk *w, const model_node *n, nef_status ns,
+                          const char *why, nef_solid **out)
+{
+    if (ns != NEF_OK)
+        return nef_error(w, n, ns, why);
+    if (w->nef->is_empty(*out)) {
+        w->nef->release(*out);
+        *out = NULL;
+    }
+    return SC_OK;
+}
+
 /* The Nef polyhedron of the closed mesh f through m (its faces as nef.h's
  * from_mesh takes them); *out NULL when it has no volume. */
 static sc_status nef_mesh(const walk *w, const model_node *n, const affine *m,
@@ -1238,12 +1260,8 @@ static sc_status nef_mesh(const walk *w, const model_node *n, const affine *m,
     double *xyz = malloc(((size_t)f->point_count * 3 + 1) * sizeof *xyz);
     if (!xyz)
         return err_nomem(w->c->error, &n->loc);
-    for (uint32_t i = 0; i < f->point_count; i++) {
-        vec3 p = affine_point(m, f->points[i]);
-        xyz[3 * i] = p.x;
-        xyz[3 * i + 1] = p.y;
-        xyz[3 * i + 2] = p.z;
-    }
+    for (uint32_t i = 0; i < f->point_count; i++)
+        put_xyz(xyz, i, affine_point(m, f->points[i]));
     char why[512] = "";
     /* a polyhedron's faces reach CGAL as OpenSCAD's builder turns them,
      * before the rest of m moves its Nef polyhedron (nef.h) */
@@ -1252,13 +1270,7 @@ static sc_status nef_mesh(const walk *w, const model_node *n, const affine *m,
         w->nef->from_mesh(xyz, f->point_count, f->indices, f->face_start, f->face_loops,
                           f->face_count, written, out, why, sizeof why);
     free(xyz);
-    if (ns != NEF_OK)
-        return nef_error(w, n, ns, why);
-    if (w->nef->is_empty(*out)) {
-        w->nef->release(*out);
-        *out = NULL;
-    }
-    return SC_OK;
+    return nef_made(w, n, ns, why, out);
 }
 
 /* Moves count points p of a mesh a CGAL operation takes, given in n's
@@ -1320,6 +1332,29 @@ static sc_status nef_convex(const walk *w, const model_node *n, const affine *m,
     free(start);
     hull3_free(&h);
     return st;
+}
+
+/* The solid of a polyhedron's faces f (as written, on the grid) through m
+ * where OpenSCAD 2021.01 finds them convex (build_mesh_convex_for_cgal):
+ * the convex hull of every face's corners, each face read back to front as
+ * OpenSCAD reads it (nef.h's hull); none where they lie in one plane. */
+static sc_status nef_hull_faces(const walk *w, const model_node *n, const affine *m,
+                                const build_mesh_faces *f, nef_solid **out)
+{
+    *out = NULL;
+    uint32_t count = f->face_start[f->face_count];
+    double *xyz = malloc(((size_t)count * 3 + 1) * sizeof *xyz);
+    if (!xyz)
+        return err_nomem(w->c->error, &n->loc);
+    uint32_t k = 0;
+    for (uint32_t face = 0; face < f->face_count; face++)
+        for (uint32_t i = f->face_start[face + 1]; i-- > f->face_start[face]; k++) {
+            put_xyz(xyz, k, affine_point(m, f->points[f->indices[i]]));
+        }
+    char why[512] = "";
+    nef_status ns = w->nef->hull(xyz, count, out, why, sizeof why);
+    free(xyz);
+    return nef_made(w, n, ns, why, out);
 }
 
 /* The solid of a mesh leaf's triangles through m: for a leaf whose faces
@@ -1640,9 +1675,14 @@ static sc_status nef_node(const walk *w, const model_node *n, const affine *m, i
                                     n->u.polyhedron.points, np, n->u.polyhedron.indices,
                                     n->u.polyhedron.face_start,
                                     n->u.polyhedron.face_count, &f);
-        if (st == SC_OK)
+        int convex = st == SC_OK ? build_mesh_convex_for_cgal(&f, 1) : 0;
+        if (convex < 0)
+            st = err_nomem(c->error, &n->loc);
+        else if (convex)
+            st = nef_hull_faces(w, n, &rest, &f, out);
+        if (st == SC_OK && !convex)
             st = build_mesh_cgal_faces(c, &n->loc, "polyhedron", &f, 1);
-        if (st == SC_OK && f.face_count)
+        if (st == SC_OK && !convex && f.face_count)
             st = nef_mesh(w, n, &rest, &f, out);
         build_mesh_faces_free(&f);
         return st;
@@ -1922,11 +1962,8 @@ sc_status build_self_crossing(const build_ctx *c, const sc_location *at, nef_plu
         return err_set(c->error, SC_ERR_UNSUPPORTED, at, "projection: %s", why);
     double *xyz = malloc(((size_t)tri_count * 9 + 1) * sizeof *xyz);
     sc_status st = xyz ? SC_OK : err_nomem(c->error, at);
-    for (size_t i = 0; xyz && i < 3 * (size_t)tri_count; i++) {
-        xyz[3 * i] = tris[i].x;
-        xyz[3 * i + 1] = tris[i].y;
-        xyz[3 * i + 2] = tris[i].z;
-    }
+    for (size_t i = 0; xyz && i < 3 * (size_t)tri_count; i++)
+        put_xyz(xyz, i, tris[i]);
     nef_status ns = NEF_OK;
     if (st == SC_OK)
         ns = nef->self_crossing(xyz, tri_count, crossing, why, sizeof why);

@@ -474,6 +474,11 @@ static int approx_convex(const build_mesh_faces *f, int reversed)
     return convex_faces(f, reversed, 1);
 }
 
+int build_mesh_convex_for_cgal(const build_mesh_faces *f, int reversed)
+{
+    return approx_convex(f, reversed);
+}
+
 int build_mesh_convex_as_written(const vec3 *points, uint32_t point_count,
                                  const uint32_t *indices, const uint32_t *face_start,
                                  uint32_t face_count)

@@ -147,6 +147,14 @@ sc_status build_mesh_merge_moved(const build_ctx *c, const sc_location *loc, int
 const affine *build_mesh_since(const affine *since, const affine *m, affine *rest);
 void build_mesh_faces_free(build_mesh_faces *f);
 
+/* Whether OpenSCAD 2021.01 finds f convex where it makes a Nef
+ * polyhedron of it (createNefPolyhedronFromPolySet: is_approximately_convex
+ * on the faces as its tessellation leaves them), and so takes the convex
+ * hull of its points (nef.h's hull) rather than CGAL's polyhedron builder.
+ * reversed: f's faces are a polyhedron's, as written. 1, 0, or -1 when
+ * memory runs out. */
+int build_mesh_convex_for_cgal(const build_mesh_faces *f, int reversed);
+
 /* Whether OpenSCAD 2021.01's is_approximately_convex takes these faces as
  * written (not tessellated: PolySet::is_convex, which its minkowski asks),
  * each face's points in the order OpenSCAD holds them, equal points under

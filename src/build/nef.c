@@ -31,7 +31,7 @@ int nef_plugin_open(nef_plugin *plugin, char *err, size_t err_size)
         "spancast_nef_copy",        "spancast_nef_transform",
         "spancast_nef_plane_check", "spancast_nef_off_build",
         "spancast_nef_section",     "spancast_nef_self_crossing",
-        "spancast_nef_tessellate"};
+        "spancast_nef_tessellate",  "spancast_nef_hull"};
     enum { COUNT = sizeof names / sizeof names[0] };
     memset(plugin, 0, sizeof *plugin);
     pthread_mutex_lock(&nef_lock);
@@ -57,6 +57,7 @@ int nef_plugin_open(nef_plugin *plugin, char *err, size_t err_size)
     *(void **)&plugin->section = fns[12];
     *(void **)&plugin->self_crossing = fns[13];
     *(void **)&plugin->tessellate = fns[14];
+    *(void **)&plugin->hull = fns[15];
     plugin->handle = handle;
     return 1;
 }

@@ -154,6 +154,14 @@ typedef struct nef_plugin {
     nef_status (*tessellate)(const double *xy, const uint32_t *start,
                              uint32_t contour_count, uint32_t **tris, uint32_t *tri_count,
                              char *err, size_t err_size);
+    /* The solid OpenSCAD 2021.01 makes of a mesh it finds convex
+     * (createNefPolyhedronFromPolySet, where is_approximately_convex
+     * passes): CGAL's convex hull of the corners (count x, y, z triples:
+     * every corner of every polygon, in OpenSCAD's order), copied into an
+     * exact polyhedron and made a Nef polyhedron. 3 corners or fewer, or
+     * corners in one plane, make the empty solid. */
+    nef_status (*hull)(const double *corners, uint32_t count, nef_solid **out, char *err,
+                       size_t err_size);
     void *handle; /* of dlopen */
 } nef_plugin;
 

@@ -400,6 +400,38 @@ class Build_polygons : public CGAL::Modifier_base<Polyhedron::HalfedgeDS>
     bool reverse_;
 };
 
+// CGAL's polyhedron over inexact constructions copied into one over exact
+// ones, as OpenSCAD copies a convex hull (CGALUtils::copyPolyhedron): each
+// vertex in order, then each facet from its first halfedge on.
+class Copy_hull : public CGAL::Modifier_base<Polyhedron::HalfedgeDS>
+{
+  public:
+    explicit Copy_hull(const CGAL::Polyhedron_3<Fast> &from) : from_(from) {}
+    void operator()(Polyhedron::HalfedgeDS &hds) override
+    {
+        CGAL::Polyhedron_incremental_builder_3<Polyhedron::HalfedgeDS> builder(hds, true);
+        builder.begin_surface(from_.size_of_vertices(), from_.size_of_facets(),
+                              from_.size_of_halfedges());
+        std::map<CGAL::Polyhedron_3<Fast>::Vertex_const_handle, std::size_t> index;
+        for (auto v = from_.vertices_begin(); v != from_.vertices_end(); ++v) {
+            index.emplace(v, index.size());
+            builder.add_vertex(Point(v->point().x(), v->point().y(), v->point().z()));
+        }
+        for (auto f = from_.facets_begin(); f != from_.facets_end(); ++f) {
+            builder.begin_facet();
+            auto h = f->facet_begin(), end = h;
+            do
+                builder.add_vertex_to_facet(index.at(h->vertex()));
+            while (++h != end);
+            builder.end_facet();
+        }
+        builder.end_surface();
+    }
+
+  private:
+    const CGAL::Polyhedron_3<Fast> &from_;
+};
+
 struct nef_solid {
     Nef nef;
 };
@@ -575,6 +607,39 @@ spancast_nef_plane_check(const double *points, uint32_t point_count,
                     return;
                 }
             }
+        },
+        err, err_size);
+}
+
+// As OpenSCAD 2021.01 makes a Nef polyhedron of a mesh it finds convex
+// (createNefPolyhedronFromPolySet): CGAL's convex_hull_3 of every corner
+// of every polygon, in order, over inexact constructions, copied into an
+// exact polyhedron; 3 corners or fewer make the empty solid.
+__attribute__((visibility("default"))) nef_status
+spancast_nef_hull(const double *corners, uint32_t count, nef_solid **out, char *err,
+                  size_t err_size)
+{
+    *out = nullptr;
+    return guarded(
+        [&] {
+            if (count <= 3) {
+                *out = new nef_solid{Nef(Nef::EMPTY)};
+                return;
+            }
+            std::list<Fast::Point_3> points;
+            for (uint32_t i = 0; i < count; i++)
+                points.emplace_back(corners[3 * i], corners[3 * i + 1],
+                                    corners[3 * i + 2]);
+            CGAL::Polyhedron_3<Fast> hull;
+            CGAL::convex_hull_3(points.begin(), points.end(), hull);
+            if (hull.size_of_facets() < 4 || !hull.is_closed()) { // flat: no solid
+                *out = new nef_solid{Nef(Nef::EMPTY)};
+                return;
+            }
+            Polyhedron exact;
+            Copy_hull copy(hull);
+            exact.delegate(copy);
+            *out = new nef_solid{Nef(exact)};
         },
         err, err_size);
 }
