@@ -987,10 +987,12 @@ static sc_status add_error(const pwalk *w, const twod_region *r)
 /* The union of a cut's oriented loops in r (node n's), in place, off the
  * clipper's grid: OpenSCAD 2021.01 cuts its Nef polyhedron exactly and
  * hands on the section's points as they are (CGALUtils::project), not
- * passed through the clipper (the region is not sanitized), so each
- * corner the union keeps takes back the point it had
- * (twod_restore_points); where the union crosses two loops, the crossing
- * stays on the grid. */
+ * passed through the clipper, so each corner the union keeps takes back
+ * the point it had (twod_restore_points); where the union crosses two
+ * loops, the crossing stays on the grid. OpenSCAD marks the section
+ * sanitized all the same (convertToPolygon2d), outlines counter-clockwise
+ * and holes clockwise, so a minkowski sum or an offset of it keeps each
+ * hole's direction: a hole is not filled. */
 static sc_status exact_union(const pwalk *w, const model_node *n, twod_region *r)
 {
     twod_region from;
@@ -1000,7 +1002,7 @@ static sc_status exact_union(const pwalk *w, const model_node *n, twod_region *r
         st = clip_error(w, n, twod_clip_union_nonzero(r, 0), r);
     if (st == SC_OK && !twod_restore_points(r, &from))
         st = err_nomem(w->c->error, &n->loc);
-    r->sanitized = 0;
+    r->sanitized = 1;
     twod_free(&from);
     return st;
 }
